@@ -1,0 +1,177 @@
+#include "config/display_config.h"
+
+#include "config/json_reader.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <set>
+
+namespace cavewall::config {
+
+namespace {
+
+std::string vecString(glm::dvec3 v) {
+    return "[" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + "]";
+}
+
+StereoMode parseStereo(const JsonNode& node) {
+    const std::string s = node.oneOf(
+        {"mono", "separate", "side-by-side", "top-bottom", "anaglyph", "quad-buffer"});
+    if (s == "separate") return StereoMode::Separate;
+    if (s == "side-by-side") return StereoMode::SideBySide;
+    if (s == "top-bottom") return StereoMode::TopBottom;
+    if (s == "anaglyph") return StereoMode::Anaglyph;
+    if (s == "quad-buffer") return StereoMode::QuadBuffer;
+    return StereoMode::Mono;
+}
+
+void parseOutput(const JsonNode& node, Screen& screen) {
+    node.expectKeys({"window", "headless"});
+    if (node.has("window") == node.has("headless"))
+        node.fail("expected exactly one of 'window' or 'headless'");
+    if (auto h = node.find("headless")) {
+        h->expectKeys({"file"});
+        if (auto f = h->find("file")) screen.headless.file = f->string();
+        return;
+    }
+    const JsonNode w = node.at("window");
+    w.expectKeys({"monitor", "position", "size", "fullscreen"});
+    WindowOutput out;
+    if (auto n = w.find("monitor")) out.monitor = n->integer(0, 64);
+    if (auto n = w.find("position")) out.position = n->ivec2(-kMaxResolution * 4, kMaxResolution * 4);
+    if (auto n = w.find("size")) out.size = n->ivec2(1, kMaxResolution);
+    if (auto n = w.find("fullscreen")) out.fullscreen = n->boolean();
+    screen.window = out;
+}
+
+Screen parseScreen(const JsonNode& node) {
+    node.expectKeys({"name", "lowerLeft", "lowerRight", "upperLeft", "resolution", "output"});
+    Screen s;
+    s.name = node.at("name").string();
+    if (s.name.empty()) node.at("name").fail("expected a non-empty name");
+    s.lowerLeft = node.at("lowerLeft").vec3();
+    s.lowerRight = node.at("lowerRight").vec3();
+    s.upperLeft = node.at("upperLeft").vec3();
+    s.resolution = node.at("resolution").ivec2(1, kMaxResolution);
+    if (auto out = node.find("output")) parseOutput(*out, s);
+    return s;
+}
+
+Viewer parseViewer(const JsonNode& node) {
+    node.expectKeys({"headPosition", "headOrientation", "eyeSeparation", "near", "far"});
+    Viewer v;
+    if (auto n = node.find("headPosition")) v.headPosition = n->vec3();
+    if (auto n = node.find("headOrientation")) v.headOrientation = n->rotation();
+    if (auto n = node.find("eyeSeparation")) v.eyeSeparation = n->number(0.0, 0.2);
+    if (auto n = node.find("near")) v.near = n->number(1e-6, 1e6);
+    if (auto n = node.find("far")) {
+        if (n->raw().is_string()) {
+            n->oneOf({"infinite"});
+            v.far = std::numeric_limits<double>::infinity();
+        } else {
+            v.far = n->number(1e-6, 1e12);
+        }
+    }
+    return v;
+}
+
+Tracking parseTracking(const JsonNode& node) {
+    node.expectKeys({"caveFromTracker", "latencyMs"});
+    Tracking t;
+    if (auto n = node.find("caveFromTracker")) {
+        t.caveFromTracker = n->mat4Rows();
+        const glm::dmat3 r(t.caveFromTracker);
+        const glm::dmat3 rtr = glm::transpose(r) * r;
+        double worst = 0.0;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) worst = std::max(worst, std::abs(rtr[i][j] - (i == j)));
+        const glm::dvec4 lastRow(t.caveFromTracker[0][3], t.caveFromTracker[1][3],
+                                 t.caveFromTracker[2][3], t.caveFromTracker[3][3]);
+        if (lastRow != glm::dvec4(0, 0, 0, 1))
+            n->fail("expected the last row to be [0, 0, 0, 1] (a rigid transform)");
+        if (worst > 1e-4 || glm::determinant(r) < 0)
+            n->fail("expected a rotation in the upper 3x3 (orthonormal within 1e-4, det +1), got an "
+                    "error of " + formatNumber(worst) + " and det " + formatNumber(glm::determinant(r)));
+    }
+    if (auto n = node.find("latencyMs")) t.latencyMs = n->number(0.0, 500.0);
+    return t;
+}
+
+}  // namespace
+
+std::string_view toString(StereoMode mode) {
+    switch (mode) {
+    case StereoMode::Mono: return "mono";
+    case StereoMode::Separate: return "separate";
+    case StereoMode::SideBySide: return "side-by-side";
+    case StereoMode::TopBottom: return "top-bottom";
+    case StereoMode::Anaglyph: return "anaglyph";
+    case StereoMode::QuadBuffer: return "quad-buffer";
+    }
+    return "?";
+}
+
+DisplayConfig parseDisplayConfig(std::string_view jsonText, const std::string& source) {
+    const JsonDocument doc = JsonDocument::fromText(jsonText, source);
+    const JsonNode root = doc.root();
+    root.expectKeys({"name", "screens", "viewer", "stereo", "minEyeDistance", "tracking"});
+    DisplayConfig c;
+    c.name = root.has("name") ? root.at("name").string()
+                              : std::filesystem::path(source).stem().string();
+    for (const JsonNode& s : root.at("screens").items(1, 256)) c.screens.push_back(parseScreen(s));
+    if (auto n = root.find("viewer")) c.viewer = parseViewer(*n);
+    if (auto n = root.find("stereo")) c.stereo = parseStereo(*n);
+    if (auto n = root.find("minEyeDistance")) c.minEyeDistance = n->number(1e-9, 1.0);
+    if (auto n = root.find("tracking")) c.tracking = parseTracking(*n);
+    return c;
+}
+
+void validateDisplayConfig(const DisplayConfig& config, const std::string& source) {
+    std::set<std::string> names;
+    for (std::size_t i = 0; i < config.screens.size(); ++i) {
+        const Screen& s = config.screens[i];
+        const std::string where = source + ": screens[" + std::to_string(i) + "] '" + s.name + "'";
+        if (!names.insert(s.name).second)
+            throw Error(where + ": duplicate screen name (expected unique names)");
+        const glm::dvec3 right = s.lowerRight - s.lowerLeft;
+        const glm::dvec3 up = s.upperLeft - s.lowerLeft;
+        const double width = glm::length(right), height = glm::length(up);
+        const double area = glm::length(glm::cross(right, up));
+        if (area < kMinScreenEdge * kMinScreenEdge && width >= kMinScreenEdge && height >= kMinScreenEdge)
+            throw Error(where + ": corners are collinear (expected a non-zero area, got " +
+                        formatNumber(area) + " m²)");
+        if (width < kMinScreenEdge || height < kMinScreenEdge)
+            throw Error(where + ": screen is degenerate (expected width and height of at least " +
+                        formatNumber(kMinScreenEdge) + " m, got " + formatNumber(width) + " m × " +
+                        formatNumber(height) + " m; lowerLeft " + vecString(s.lowerLeft) +
+                        ", lowerRight " + vecString(s.lowerRight) + ", upperLeft " +
+                        vecString(s.upperLeft) + ")");
+        const double angleDeg = glm::degrees(std::acos(std::clamp(glm::dot(right, up) / (width * height), -1.0, 1.0)));
+        if (std::abs(angleDeg - 90.0) > kMaxRightAngleErrorDeg)
+            throw Error(where + ": corners are not a rectangle (expected the edges at lowerLeft to meet at 90° ± " +
+                        formatNumber(kMaxRightAngleErrorDeg) + "°, got " + formatNumber(angleDeg) + "°)");
+    }
+    const Viewer& v = config.viewer;
+    if (!(v.near < v.far))
+        throw Error(source + ": viewer: near must be less than far (got near " + formatNumber(v.near) +
+                    " m, far " + formatNumber(v.far) + " m)");
+}
+
+std::filesystem::path presetDirectory() {
+    if (const char* dir = std::getenv("CAVEWALL_CONFIG_DIR"); dir && *dir) return dir;
+    return CAVEWALL_PRESET_DIR;
+}
+
+DisplayConfig loadDisplayConfig(const std::string& nameOrPath) {
+    std::filesystem::path path(nameOrPath);
+    const bool bareName = !path.has_parent_path() && !path.has_extension();
+    if (bareName) path = presetDirectory() / (nameOrPath + ".json");
+    if (bareName && !std::filesystem::exists(path))
+        throw Error(nameOrPath + ": no such display configuration (expected a file path or one of "
+                    "the presets cave4, cave6, powerwall, desktop in " + presetDirectory().string() + ")");
+    DisplayConfig config = parseDisplayConfig(readTextFile(path), path.string());
+    validateDisplayConfig(config, path.string());
+    return config;
+}
+
+}  // namespace cavewall::config

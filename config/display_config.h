@@ -1,0 +1,115 @@
+#pragma once
+// Display configuration: the screens of a CAVE (or a power wall, or a desktop monitor), where
+// their pixels go, the viewer's defaults, stereo, and tracker calibration.
+//
+// Plain data first (these structs), then parseDisplayConfig() (JSON -> structs, with type and
+// range checks), then validateDisplayConfig() (geometric and cross-field rules). Runtime objects
+// are built from a validated config by the display library. All positions are in the cave frame
+// (config/conventions.h), in metres.
+//
+// File format (all keys except "screens" optional):
+// {
+//   "name": "cave4",
+//   "screens": [{ "name": "front",
+//                 "lowerLeft": [-1.5, 0, -1.5], "lowerRight": [1.5, 0, -1.5],
+//                 "upperLeft": [-1.5, 3, -1.5], "resolution": [1024, 1024],
+//                 "output": {"headless": {"file": "front"}}       // or:
+//                 "output": {"window": {"monitor": 0, "position": [0, 0],
+//                                       "size": [1024, 1024], "fullscreen": false}} }],
+//   "viewer": { "headPosition": [0, 1.7, 0], "headOrientation": {"yawDeg": 0},
+//               "eyeSeparation": 0.064, "near": 0.05, "far": 1000 },   // far: number or "infinite"
+//   "stereo": "mono",        // mono | separate | side-by-side | top-bottom | anaglyph | quad-buffer
+//   "minEyeDistance": 0.001, // see display/off_axis.h
+//   "tracking": { "caveFromTracker": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]],
+//                 "latencyMs": 0 }
+// }
+
+#include "config/error.h"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cavewall::config {
+
+struct WindowOutput {
+    int monitor = 0;                 // GLFW monitor index
+    glm::ivec2 position{0, 0};       // window position in screen pixels
+    glm::ivec2 size{0, 0};           // window size in pixels; {0, 0} = the screen's resolution
+    bool fullscreen = false;
+    bool operator==(const WindowOutput&) const = default;
+};
+
+struct HeadlessOutput {
+    std::string file;                // image file stem; empty = the screen's name
+    bool operator==(const HeadlessOutput&) const = default;
+};
+
+struct Screen {
+    std::string name;                // unique within the configuration
+    glm::dvec3 lowerLeft{0.0};       // corners in the cave frame, metres
+    glm::dvec3 lowerRight{0.0};
+    glm::dvec3 upperLeft{0.0};
+    glm::ivec2 resolution{0, 0};     // pixels, width x height
+    std::optional<WindowOutput> window;  // unset = headless
+    HeadlessOutput headless;
+    bool operator==(const Screen&) const = default;
+};
+
+enum class StereoMode { Mono, Separate, SideBySide, TopBottom, Anaglyph, QuadBuffer };
+
+struct Viewer {
+    glm::dvec3 headPosition{0.0, 1.7, 0.0};   // default head position, cave frame
+    glm::dquat headOrientation{1.0, 0.0, 0.0, 0.0};  // default head orientation (identity: looking down -Z)
+    double eyeSeparation = 0.064;             // metres, in [0, 0.2]
+    double near = 0.05;                       // metres, in [1e-6, 1e6]
+    double far = 1000.0;                      // metres, > near; +infinity = infinite far plane
+    bool operator==(const Viewer&) const = default;
+};
+
+struct Tracking {
+    glm::dmat4 caveFromTracker{1.0};          // rigid calibration transform (metres)
+    double latencyMs = 0.0;                   // motion-to-photon latency to predict over, [0, 500]
+    bool operator==(const Tracking&) const = default;
+};
+
+struct DisplayConfig {
+    std::string name;                         // defaults to the file stem
+    std::vector<Screen> screens;              // at least one
+    Viewer viewer;
+    StereoMode stereo = StereoMode::Mono;
+    double minEyeDistance = 1e-3;             // metres, in [1e-9, 1]; see display/off_axis.h
+    Tracking tracking;
+    bool operator==(const DisplayConfig&) const = default;
+};
+
+// Tolerances of the geometric validation rules, stated once.
+inline constexpr double kMinScreenEdge = 1e-4;         // metres: shortest screen edge (0.1 mm)
+inline constexpr double kMaxRightAngleErrorDeg = 0.1;  // corners must meet at 90° ± this
+inline constexpr int kMaxResolution = 16384;           // pixels per side
+
+// Parses JSON text into a DisplayConfig (types, ranges, unknown keys). `source` names the file
+// in messages. Throws Error. Does not run the geometric rules: call validateDisplayConfig().
+DisplayConfig parseDisplayConfig(std::string_view jsonText, const std::string& source);
+
+// Checks the rules that span fields: rectangular, non-degenerate screens; unique names;
+// near < far. Throws Error naming the source and the screen.
+void validateDisplayConfig(const DisplayConfig& config, const std::string& source);
+
+// Reads, parses and validates a file. `nameOrPath` may also be a preset name ("cave4",
+// "cave6", "powerwall", "desktop"), looked up in presetDirectory().
+DisplayConfig loadDisplayConfig(const std::string& nameOrPath);
+
+// The folder holding the preset configurations (config/ of the source tree, or
+// $CAVEWALL_CONFIG_DIR when set).
+std::filesystem::path presetDirectory();
+
+std::string_view toString(StereoMode mode);
+
+}  // namespace cavewall::config

@@ -1,0 +1,187 @@
+#include "config/display_config.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace cavewall::config {
+namespace {
+
+using ::testing::HasSubstr;
+
+// A valid one-screen configuration; the cases below break one thing at a time.
+const char* const kScreen =
+    R"({"name": "front", "lowerLeft": [-1.5, 0, -1.5], "lowerRight": [1.5, 0, -1.5],
+        "upperLeft": [-1.5, 3, -1.5], "resolution": [1024, 1024]})";
+
+std::string withScreens(const std::string& screens, const std::string& extra = "") {
+    return R"({"screens": [)" + screens + "]" + extra + "}";
+}
+
+DisplayConfig load(const std::string& text) {
+    DisplayConfig c = parseDisplayConfig(text, "lab.json");
+    validateDisplayConfig(c, "lab.json");
+    return c;
+}
+
+TEST(DisplayConfig, MinimalScreenGetsDefaults) {
+    const DisplayConfig c = load(withScreens(kScreen));
+    ASSERT_EQ(c.screens.size(), 1u);
+    EXPECT_EQ(c.name, "lab");  // the file stem
+    EXPECT_EQ(c.screens[0].resolution, glm::ivec2(1024, 1024));
+    EXPECT_FALSE(c.screens[0].window.has_value());  // headless unless a window is asked for
+    EXPECT_EQ(c.viewer.eyeSeparation, 0.064);
+    EXPECT_EQ(c.stereo, StereoMode::Mono);
+    EXPECT_EQ(c.tracking.caveFromTracker, glm::dmat4(1.0));
+}
+
+TEST(DisplayConfig, ParsesEveryField) {
+    const DisplayConfig c = load(withScreens(
+        R"({"name": "w", "lowerLeft": [0,0,0], "lowerRight": [2,0,0], "upperLeft": [0,1,0],
+            "resolution": [640, 320],
+            "output": {"window": {"monitor": 1, "position": [10, 20], "size": [320, 160], "fullscreen": true}}})",
+        R"(, "viewer": {"headPosition": [0, 1.6, 1], "headOrientation": {"yawDeg": 90},
+                        "eyeSeparation": 0.07, "near": 0.1, "far": "infinite"},
+             "stereo": "side-by-side", "minEyeDistance": 0.01,
+             "tracking": {"caveFromTracker": [[1,0,0,0.5],[0,1,0,0],[0,0,1,-2],[0,0,0,1]], "latencyMs": 20})"));
+    const Screen& s = c.screens[0];
+    ASSERT_TRUE(s.window.has_value());
+    EXPECT_EQ(*s.window, (WindowOutput{1, {10, 20}, {320, 160}, true}));
+    EXPECT_EQ(c.viewer.headPosition, glm::dvec3(0, 1.6, 1));
+    // Yaw 90° turns -Z (forward) into -X.
+    const glm::dvec3 forward = c.viewer.headOrientation * glm::dvec3(0, 0, -1);
+    EXPECT_NEAR(forward.x, -1.0, 1e-12);
+    EXPECT_TRUE(std::isinf(c.viewer.far));
+    EXPECT_EQ(c.stereo, StereoMode::SideBySide);
+    EXPECT_EQ(c.minEyeDistance, 0.01);
+    // Rows as written: the translation is the last column.
+    EXPECT_EQ(c.tracking.caveFromTracker[3], glm::dvec4(0.5, 0, -2, 1));
+    EXPECT_EQ(c.tracking.latencyMs, 20.0);
+}
+
+struct BadCase {
+    const char* name;
+    std::string json;
+    const char* message;
+};
+
+TEST(DisplayConfig, EveryRuleHasItsMessage) {
+    const BadCase cases[] = {
+        {"not JSON", "{\"screens\": [", "lab.json: not valid JSON: at line 1"},
+        {"no screens", "{}", "lab.json: missing required key 'screens'"},
+        {"empty screens", withScreens(""), "lab.json: screens: expected an array of 1 to 256 elements, got 0"},
+        {"unknown top key", withScreens(kScreen, R"(, "stero": "mono")"),
+         "lab.json: unknown key 'stero' (expected one of: name, screens, viewer"},
+        {"unknown screen key", withScreens(R"({"name": "a", "lowerleft": [0,0,0]})"),
+         "lab.json: screens[0]: unknown key 'lowerleft'"},
+        {"missing corner", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "resolution": [1,1]})"),
+         "screens[0]: missing required key 'upperLeft'"},
+        {"corner of two numbers", withScreens(R"({"name": "a", "lowerLeft": [0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
+         "screens[0].lowerLeft: expected an array of 3 elements, got 2"},
+        {"string in corner", withScreens(R"({"name": "a", "lowerLeft": [0,"x",0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
+         "screens[0].lowerLeft[1]: expected a number, got \"x\""},
+        {"number overflow", withScreens(R"({"name": "a", "lowerLeft": [0,1e999,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
+         "lab.json: not valid JSON: number overflow parsing '1e999'"},
+        {"zero resolution", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [0,768]})"),
+         "screens[0].resolution[0]: expected an integer in [1, 16384], got 0"},
+        {"negative resolution", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1024,-1]})"),
+         "screens[0].resolution[1]: expected an integer in [1, 16384], got -1"},
+        {"fractional resolution", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [10.5,1]})"),
+         "screens[0].resolution[0]: expected an integer, got 10.5"},
+        {"zero window size", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1], "output": {"window": {"size": [0, 10]}}})"),
+         "screens[0].output.window.size[0]: expected an integer in [1, 16384], got 0"},
+        {"both outputs", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1], "output": {"window": {}, "headless": {}}})"),
+         "screens[0].output: expected exactly one of 'window' or 'headless'"},
+        {"empty name", withScreens(R"({"name": "", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
+         "screens[0].name: expected a non-empty name"},
+        {"collinear corners", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [2,0,0], "resolution": [1,1]})"),
+         "lab.json: screens[0] 'a': corners are collinear (expected a non-zero area, got 0 m²)"},
+        {"zero width", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [0,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
+         "screens[0] 'a': screen is degenerate (expected width and height of at least 0.0001 m, got 0 m × 1 m"},
+        {"not a rectangle", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0.1,1,0], "resolution": [1,1]})"),
+         "screens[0] 'a': corners are not a rectangle (expected the edges at lowerLeft to meet at 90° ± 0.1°, got 84.2894°)"},
+        {"duplicate names", withScreens(std::string(kScreen) + "," + kScreen),
+         "lab.json: screens[1] 'front': duplicate screen name"},
+        {"eye separation too large", withScreens(kScreen, R"(, "viewer": {"eyeSeparation": 0.5})"),
+         "viewer.eyeSeparation: expected a number in [0, 0.2], got 0.5"},
+        {"negative eye separation", withScreens(kScreen, R"(, "viewer": {"eyeSeparation": -0.01})"),
+         "viewer.eyeSeparation: expected a number in [0, 0.2], got -0.01"},
+        {"near zero", withScreens(kScreen, R"(, "viewer": {"near": 0})"),
+         "viewer.near: expected a number in [1e-06, 1e+06], got 0"},
+        {"far as a word", withScreens(kScreen, R"(, "viewer": {"far": "forever"})"),
+         "viewer.far: expected one of \"infinite\", got \"forever\""},
+        {"near not below far", withScreens(kScreen, R"(, "viewer": {"near": 10, "far": 10})"),
+         "lab.json: viewer: near must be less than far (got near 10 m, far 10 m)"},
+        {"unknown stereo", withScreens(kScreen, R"(, "stereo": "checkerboard")"),
+         "stereo: expected one of \"mono\", \"separate\", \"side-by-side\", \"top-bottom\", \"anaglyph\", \"quad-buffer\", got \"checkerboard\""},
+        {"non-rigid calibration", withScreens(kScreen, R"(, "tracking": {"caveFromTracker": [[2,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]})"),
+         "tracking.caveFromTracker: expected a rotation in the upper 3x3"},
+        {"projective calibration", withScreens(kScreen, R"(, "tracking": {"caveFromTracker": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,1,1]]})"),
+         "tracking.caveFromTracker: expected the last row to be [0, 0, 0, 1]"},
+        {"bad quaternion", withScreens(kScreen, R"(, "viewer": {"headOrientation": [0, 0, 0, 0]})"),
+         "viewer.headOrientation: expected a unit quaternion [x, y, z, w], got length 0"},
+    };
+    for (const BadCase& c : cases) {
+        SCOPED_TRACE(c.name);
+        EXPECT_THAT([&] { load(c.json); }, ThrowsMessage<Error>(HasSubstr(c.message)));
+    }
+}
+
+TEST(DisplayConfig, NaNCannotBeWrittenInJson) {
+    // JSON has no NaN literal; the parser rejects it with a position.
+    EXPECT_THAT([] { load(withScreens(kScreen, R"(, "minEyeDistance": NaN)")); },
+                ThrowsMessage<Error>(HasSubstr("lab.json: not valid JSON: at line 2")));
+}
+
+TEST(DisplayConfig, SlightlyOffSquareScreenWithinToleranceIsAccepted) {
+    // 0.05° off square is inside the stated 0.1° tolerance.
+    const double dx = std::tan(glm::radians(0.05));
+    const std::string s = R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [)" +
+                          std::to_string(dx) + R"(,1,0], "resolution": [1,1]})";
+    EXPECT_NO_THROW(load(withScreens(s)));
+}
+
+TEST(DisplayConfig, UnreadableFileNamesTheFile) {
+    EXPECT_THAT([] { loadDisplayConfig("/nonexistent/lab.json"); },
+                ThrowsMessage<Error>(HasSubstr("/nonexistent/lab.json: cannot open the file")));
+    EXPECT_THAT([] { loadDisplayConfig("cave5"); },
+                ThrowsMessage<Error>(HasSubstr("cave5: no such display configuration")));
+}
+
+TEST(DisplayConfig, BinaryGarbageFileIsNotJson) {
+    const auto path = std::filesystem::temp_directory_path() / "cavewall_garbage.json";
+    std::ofstream(path, std::ios::binary) << std::string("\x89PNG\r\n\x1a\n\0\0", 10);
+    EXPECT_THAT([&] { loadDisplayConfig(path.string()); },
+                ThrowsMessage<Error>(HasSubstr("cavewall_garbage.json: not valid JSON")));
+    std::filesystem::remove(path);
+}
+
+TEST(DisplayConfig, PresetsLoadWithTheDocumentedGeometry) {
+    const DisplayConfig cave4 = loadDisplayConfig("cave4");
+    ASSERT_EQ(cave4.screens.size(), 4u);
+    EXPECT_EQ(cave4.screens[0].name, "front");
+    // The front wall is the 3 m x 3 m square at z = -1.5, floor to 3 m.
+    EXPECT_EQ(cave4.screens[0].lowerLeft, glm::dvec3(-1.5, 0, -1.5));
+    EXPECT_EQ(cave4.screens[0].upperLeft, glm::dvec3(-1.5, 3, -1.5));
+    for (const Screen& s : cave4.screens) {
+        SCOPED_TRACE(s.name);
+        EXPECT_EQ(s.resolution, glm::ivec2(1024, 1024));
+        // Every screen faces the centre of the cube at (0, 1.5, 0).
+        const glm::dvec3 n = glm::cross(s.lowerRight - s.lowerLeft, s.upperLeft - s.lowerLeft);
+        EXPECT_GT(glm::dot(n, glm::dvec3(0, 1.5, 0) - s.lowerLeft), 0.0);
+    }
+    EXPECT_EQ(loadDisplayConfig("cave6").screens.size(), 6u);
+    EXPECT_EQ(loadDisplayConfig("powerwall").screens.size(), 4u);
+    const DisplayConfig desk = loadDisplayConfig("desktop");
+    ASSERT_EQ(desk.screens.size(), 1u);
+    EXPECT_NEAR(glm::length(desk.screens[0].lowerRight - desk.screens[0].lowerLeft), 0.60, 1e-12);
+    EXPECT_NEAR(glm::length(desk.screens[0].upperLeft - desk.screens[0].lowerLeft), 0.34, 1e-12);
+    // The viewer sits 0.6 m in front of the monitor.
+    EXPECT_NEAR(desk.viewer.headPosition.z - desk.screens[0].lowerLeft.z, 0.6, 1e-12);
+}
+
+}  // namespace
+}  // namespace cavewall::config

@@ -1,0 +1,110 @@
+#include "tools/args.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+
+namespace cavewall::tools {
+
+Args::Args(std::vector<std::string> words, std::initializer_list<std::string_view> switches) {
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        const std::string& w = words[i];
+        if (w.size() < 3 || w.rfind("--", 0) != 0) {
+            _positional.push_back(w);
+            continue;
+        }
+        std::string name = w.substr(2), value;
+        if (auto eq = name.find('='); eq != std::string::npos) {
+            value = name.substr(eq + 1);
+            name.resize(eq);
+        } else if (std::find(switches.begin(), switches.end(), name) == switches.end()) {
+            if (i + 1 >= words.size()) throw Error("--" + name + ": expected a value after the flag, got nothing");
+            value = words[++i];
+        }
+        if (_flags.count(name)) throw Error("--" + name + ": given more than once");
+        _flags[name] = value;
+    }
+}
+
+void Args::expectFlags(std::initializer_list<std::string_view> allowed) const {
+    for (const auto& [name, _] : _flags) {
+        if (std::find(allowed.begin(), allowed.end(), name) != allowed.end()) continue;
+        std::string list;
+        for (auto a : allowed) list += (list.empty() ? "--" : ", --") + std::string(a);
+        throw Error("--" + name + ": unknown flag (expected one of: " + list + ")");
+    }
+}
+
+bool Args::has(std::string_view flag) const { return _flags.find(flag) != _flags.end(); }
+
+std::optional<std::string> Args::get(std::string_view flag) const {
+    auto it = _flags.find(flag);
+    if (it == _flags.end()) return std::nullopt;
+    return it->second;
+}
+
+std::string Args::require(std::string_view flag) const {
+    auto v = get(flag);
+    if (!v || v->empty()) throw Error("--" + std::string(flag) + ": required flag is missing");
+    return *v;
+}
+
+std::string Args::getOr(std::string_view flag, std::string fallback) const {
+    auto v = get(flag);
+    return v ? *v : fallback;
+}
+
+double parseNumber(std::string_view text, std::string_view what) {
+    double v = 0.0;
+    const char* end = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(text.data(), end, v);
+    if (ec != std::errc() || ptr != end || !std::isfinite(v))
+        throw Error(std::string(what) + ": expected a finite number, got '" + std::string(text) + "'");
+    return v;
+}
+
+double Args::number(std::string_view flag, double fallback, double lo, double hi) const {
+    auto s = get(flag);
+    if (!s) return fallback;
+    const std::string what = "--" + std::string(flag);
+    const double v = parseNumber(*s, what);
+    if (v < lo || v > hi)
+        throw Error(what + ": expected a number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                    "], got " + *s);
+    return v;
+}
+
+long Args::integer(std::string_view flag, long fallback, long lo, long hi) const {
+    auto s = get(flag);
+    if (!s) return fallback;
+    long v = 0;
+    auto [ptr, ec] = std::from_chars(s->data(), s->data() + s->size(), v);
+    if (ec != std::errc() || ptr != s->data() + s->size() || v < lo || v > hi)
+        throw Error("--" + std::string(flag) + ": expected an integer in [" + std::to_string(lo) + ", " +
+                    std::to_string(hi) + "], got '" + *s + "'");
+    return v;
+}
+
+std::optional<glm::dvec3> Args::vec3(std::string_view flag) const {
+    auto s = get(flag);
+    if (!s) return std::nullopt;
+    const std::string what = "--" + std::string(flag);
+    glm::dvec3 v;
+    std::size_t start = 0;
+    for (int i = 0; i < 3; ++i) {
+        const std::size_t comma = s->find(',', start);
+        if ((i < 2) != (comma != std::string::npos))
+            throw Error(what + ": expected three comma-separated numbers x,y,z, got '" + *s + "'");
+        v[i] = parseNumber(std::string_view(*s).substr(start, comma - start), what);
+        start = comma + 1;
+    }
+    return v;
+}
+
+const std::string& Args::positional(std::size_t i, std::string_view what) const {
+    if (i >= _positional.size()) throw Error("missing argument: expected " + std::string(what));
+    return _positional[i];
+}
+
+}  // namespace cavewall::tools

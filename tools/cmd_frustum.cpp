@@ -1,0 +1,44 @@
+#include "config/display_config.h"
+#include "display/display.h"
+#include "tools/args.h"
+#include "tools/commands.h"
+
+#include <nlohmann/json.hpp>
+
+#include <iomanip>
+#include <iostream>
+
+namespace cavewall::tools {
+
+const char* const kFrustumUsage =
+    "usage: cavewall frustum --display FILE|PRESET [--eye x,y,z] [--head-yaw DEG] [--json]\n"
+    "\n"
+    "Prints, for every screen and eye, the off-axis view and projection matrices for a head at\n"
+    "--eye (cave frame, metres; default: the display's default head position) turned by\n"
+    "--head-yaw degrees about +Y (positive turns left). Matrices are column-major with\n"
+    "clip = projection * view * cave, OpenGL NDC for x and y, reversed-Z depth in [0, 1].\n"
+    "Without --json a short table is printed.\n";
+
+int runFrustum(const std::vector<std::string>& words) {
+    const Args args(words, {"json"});
+    args.expectFlags({"display", "eye", "head-yaw", "json"});
+    const display::Display disp(config::loadDisplayConfig(args.require("display")));
+    display::HeadPose head = disp.defaultHead();
+    if (auto eye = args.vec3("eye")) head.position = *eye;
+    if (args.has("head-yaw"))
+        head.orientation = glm::angleAxis(glm::radians(args.number("head-yaw", 0.0, -360.0, 360.0)),
+                                          glm::dvec3(0, 1, 0));
+    const auto views = disp.views(head);
+    if (args.has("json")) {
+        std::cout << std::setprecision(17) << display::frustumJson(disp, views).dump(2) << "\n";
+        return 0;
+    }
+    for (const auto& v : views) {
+        const auto& f = v.frustum;
+        std::cout << disp.screens()[v.screen].name << " (" << display::toString(v.pass.eye)
+                  << "): eye distance " << f.eyeDistance << " m, guard " << display::toString(f.guard) << "\n";
+    }
+    return 0;
+}
+
+}  // namespace cavewall::tools

@@ -1,0 +1,21 @@
+#pragma once
+// The cavewall subcommands. Each lives in its own cmd_<name>.cpp and is listed in main.cpp.
+// A command's run() gets its arguments (without the subcommand word), throws cavewall::Error
+// on bad input, and returns the process exit code.
+
+#include <string>
+#include <vector>
+
+namespace cavewall::tools {
+
+struct Command {
+    const char* name;
+    const char* summary;  // one line for `cavewall --help`
+    const char* usage;    // full help for `cavewall <name> --help`
+    int (*run)(const std::vector<std::string>& args);
+};
+
+int runFrustum(const std::vector<std::string>& args);
+extern const char* const kFrustumUsage;
+
+}  // namespace cavewall::tools

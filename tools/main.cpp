@@ -1,0 +1,54 @@
+// cavewall: head-tracked CAVE rendering of large indoor CAD models with textured virtual walls.
+#include "config/error.h"
+#include "tools/commands.h"
+
+#include <cstring>
+#include <exception>
+#include <iostream>
+
+namespace cavewall::tools {
+namespace {
+
+const Command kCommands[] = {
+    {"frustum", "print every screen's and eye's off-axis view and projection", kFrustumUsage, runFrustum},
+};
+
+void printHelp() {
+    std::cout << "usage: cavewall <command> [options]\n"
+                 "       cavewall <command> --help\n\ncommands:\n";
+    for (const Command& c : kCommands) std::cout << "  " << c.name << std::string(10 - std::strlen(c.name), ' ') << c.summary << "\n";
+}
+
+int dispatch(int argc, char** argv) {
+    if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
+        printHelp();
+        return argc < 2 ? 2 : 0;
+    }
+    for (const Command& c : kCommands) {
+        if (std::strcmp(argv[1], c.name) != 0) continue;
+        std::vector<std::string> args(argv + 2, argv + argc);
+        for (const auto& a : args)
+            if (a == "--help" || a == "-h") {
+                std::cout << c.usage;
+                return 0;
+            }
+        return c.run(args);
+    }
+    std::cerr << "cavewall: unknown command '" << argv[1] << "' (see cavewall --help)\n";
+    return 2;
+}
+
+}  // namespace
+}  // namespace cavewall::tools
+
+int main(int argc, char** argv) {
+    try {
+        return cavewall::tools::dispatch(argc, argv);
+    } catch (const cavewall::Error& e) {
+        std::cerr << "cavewall: error: " << e.what() << "\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "cavewall: internal error: " << e.what() << "\n";
+        return 3;
+    }
+}
