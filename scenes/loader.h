@@ -1,0 +1,28 @@
+#pragma once
+// Loading scenes from files: a bare glTF 2.0 file (.gltf or .glb), or a scene.json that names
+// glTF files and cuts the model into cells (scene_description.h).
+//
+// Broken files throw cavewall::Error naming the file and the glTF path
+// ("x.glb: meshes[3].primitives[0].attributes.POSITION: accessor 12 is out of range ...").
+// Content that is valid but unsupported is skipped with a warning in Scene::warnings
+// ("scene 'x.glb': ignoring primitive 3 of mesh 7 because it has mode POINTS").
+
+#include "scenes/scene.h"
+#include "scenes/scene_description.h"
+
+#include <filesystem>
+
+namespace cavewall::scenes {
+
+// Loads one glTF/GLB file; objects are in the file's own frame (glTF: metres, +Y up).
+Scene loadGltf(const std::filesystem::path& file);
+
+// Loads every model of a validated description, applies units, up axis and placement, tags
+// structure objects, and assigns each object to the cell containing its centre.
+Scene loadScene(const SceneDescription& description);
+
+// Loads a scene from a path: a scene.json (or a folder holding one) or a bare glTF/GLB file
+// (then the description has no cells or walls). `description` receives the description used.
+Scene loadSceneFile(const std::filesystem::path& path, SceneDescription* description = nullptr);
+
+}  // namespace cavewall::scenes

@@ -1,0 +1,68 @@
+#pragma once
+// A scene description (scenes/<name>/scene.json) as plain data: which glTF files make the
+// scene, where they go, which objects are structure, and how the model is cut into cells by
+// virtual walls (Ebbesmeyer's textured virtual walls, seed 000) and portals (Aliaga & Lastra's
+// portal textures, seed 002). Parsing and validation live in scene_description_io.h.
+//
+// Frames: world (config/conventions.h): metres, +Y up. Floor regions are polygons in the
+// (x, z) plane seen from above, counter-clockwise when viewed from +Y (i.e. going from +x
+// towards -z). Wall quads use the lowerLeft/lowerRight/upperLeft convention; a wall's front
+// side (its normal) faces cells[0], its back faces cells[1].
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace cavewall::scenes {
+
+enum class UpAxis { Y, Z };
+
+struct ModelFile {
+    std::filesystem::path file;            // glTF/GLB, relative to the scene.json folder
+    glm::dmat4 worldFromFile{1.0};         // placement (after units and up-axis conversion)
+    double metresPerUnit = 1.0;            // units conversion of the file
+    UpAxis up = UpAxis::Y;                 // Z-up files are rotated to Y-up
+    bool structure = false;                // every object of this file is structure
+    std::vector<std::string> structureNodes;  // node-name patterns ('*' wildcard) that are structure
+};
+
+struct Cell {
+    std::string name;
+    std::vector<glm::dvec2> region;        // convex floor polygon (x, z), CCW from above
+    double floorY = 0.0;                   // floor height
+};
+
+enum class WallKind {
+    Virtual,  // a cut through open space: the cell behind shows as a texture
+    Portal,   // a doorway in a real wall: the cell behind shows through it as a texture
+};
+
+struct VirtualWall {
+    std::string name;
+    glm::dvec3 lowerLeft{0.0}, lowerRight{0.0}, upperLeft{0.0};
+    std::array<int, 2> cells{-1, -1};      // [front, back]: indices into SceneDescription::cells
+    WallKind kind = WallKind::Virtual;
+};
+
+// A real occluding wall (solid, drawn as geometry); visibility passes it only through portals.
+struct RealWall {
+    std::string name;
+    glm::dvec3 lowerLeft{0.0}, lowerRight{0.0}, upperLeft{0.0};
+};
+
+struct SceneDescription {
+    std::string name;
+    std::filesystem::path folder;          // where scene.json lives; files are relative to it
+    std::vector<ModelFile> models;
+    std::vector<Cell> cells;
+    std::vector<VirtualWall> walls;
+    std::vector<RealWall> realWalls;
+    double eyeHeight = 1.7;                // metres above the floor for a walking viewer
+    glm::dvec2 headHeightRange{1.2, 2.0};  // absolute head heights (y) the walls must serve
+    std::vector<glm::dvec3> walkPath;      // default walk path (eye positions, world frame)
+};
+
+}  // namespace cavewall::scenes
