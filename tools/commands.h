@@ -17,5 +17,7 @@ struct Command {
 
 int runFrustum(const std::vector<std::string>& args);
 extern const char* const kFrustumUsage;
+int runBench(const std::vector<std::string>& args);
+extern const char* const kBenchUsage;
 
 }  // namespace cavewall::tools
