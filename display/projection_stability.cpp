@@ -2,6 +2,7 @@
 
 #include "config/json_reader.h"
 #include "display/off_axis_precision.h"
+#include "display/warp.h"
 
 #include <algorithm>
 #include <cmath>
@@ -168,9 +169,51 @@ std::vector<StabilityRow> screenSizeCases() {
     return rows;
 }
 
+namespace {
+
+// Worst pixel error (1024-px screen) of the float warp against the double warp, for points
+// behind the wall seen by a CAVE front screen carried with an eye `distance` from the wall plane.
+double floatWarpPixelError(double distance, double& condition) {
+    const ScreenQuad wall{{-3, 0, -10}, {3, 0, -10}, {-3, 4, -10}};
+    const glm::dvec3 eye{0.3, 1.6, -10.0 + distance}, shift = eye - glm::dvec3(0, 1.6, 0);
+    const ScreenQuad screen{glm::dvec3(-1.5, 0, -1.5) + shift, glm::dvec3(1.5, 0, -1.5) + shift, glm::dvec3(-1.5, 3, -1.5) + shift};
+    const double inf = std::numeric_limits<double>::infinity();
+    const OffAxisFrustum a = offAxisFrustum(wall, {0.5, 1.7, -4.0}, {0.05, inf});
+    const glm::dmat4 warp = warpMatrix(a, wall, offAxisFrustum(screen, eye, {0.05, inf}).clipFromFrame(), 0.05);
+    condition = warpCondition(warp);
+    // As on the GPU: one float matrix, eye-relative float vertices.
+    const glm::dmat4 full = warp * a.clipFromFrame() * glm::dmat4(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 1, 0, 0),
+                                                                   glm::dvec4(0, 0, 1, 0), glm::dvec4(eye, 1));
+    const glm::mat4 fullF(full);
+    double worst = 0.0;
+    for (double x = -2.5; x <= 2.5; x += 0.5)
+        for (double y = 0.25; y <= 3.0; y += 0.5) {
+            const glm::dvec3 p = glm::dvec3(x, y, -11.0) - eye;
+            const glm::dvec4 ref = full * glm::dvec4(p, 1.0);
+            const glm::vec4 f = fullF * glm::vec4(glm::vec3(p), 1.0f);
+            if (ref.w <= 0.0) continue;
+            const double e = std::max(std::abs(f.x / f.w - ref.x / ref.w), std::abs(f.y / f.w - ref.y / ref.w));
+            worst = std::max(worst, std::isfinite(e) ? e * kPixels / 2 : std::numeric_limits<double>::infinity());
+        }
+    return worst;
+}
+
+}  // namespace
+
+std::vector<StabilityRow> warpConditionCases() {
+    std::vector<StabilityRow> rows;
+    for (double d = 1.0; d >= 0.9e-6; d /= 10) {
+        StabilityRow r{"warp, eye " + sci(d) + " m from wall plane", "px @1024", 0.0, 0.0, 0.5};
+        r.floatError = floatWarpPixelError(d, r.condition);
+        r.cavewallError = r.condition <= kMaxWarpCondition ? r.floatError : 0.0;
+        rows.push_back(r);
+    }
+    return rows;
+}
+
 std::vector<StabilityRow> projectionStability() {
     std::vector<StabilityRow> all;
-    for (auto* cases : {eyeDistanceCases, worldOffsetCases, depthOrderCases, screenSizeCases})
+    for (auto* cases : {eyeDistanceCases, worldOffsetCases, depthOrderCases, screenSizeCases, warpConditionCases})
         for (StabilityRow& r : cases()) all.push_back(std::move(r));
     return all;
 }

@@ -16,6 +16,7 @@ struct StabilityRow {
     double floatError = 0.0;   // naive float implementation (reported, not judged)
     double cavewallError = 0.0;  // cavewall's path
     double tolerance = 0.0;    // pass when cavewallError <= tolerance
+    double condition = 0.0;    // warp cases: the warp's condition number (else 0)
     bool pass() const { return cavewallError <= tolerance; }
 };
 
@@ -34,6 +35,13 @@ std::vector<StabilityRow> depthOrderCases();
 
 // Screens of 1 mm and 1 km with the eye at a proportionate distance. Tolerance 1e-6 px.
 std::vector<StabilityRow> screenSizeCases();
+
+// The geometry warp (display/warp.h) as the eye approaches a wall plane (1 m ... 1e-6 m): worst
+// pixel error of the warped image of points behind the wall when the warp runs in float on the
+// GPU, against double. "float" is the unguarded warp; cavewall's column is what it draws: the
+// warp while its condition number is below kMaxWarpCondition, else plain geometry (error 0,
+// counted as a fallback). The row's `condition` is the warp's condition number. Tolerance 0.5 px.
+std::vector<StabilityRow> warpConditionCases();
 
 // All of the above.
 std::vector<StabilityRow> projectionStability();

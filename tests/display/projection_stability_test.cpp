@@ -40,5 +40,15 @@ TEST(ProjectionStability, ReversedZKeepsDepthOrderToOneBillion) {
 
 TEST(ProjectionStability, MillimetreAndKilometreScreens) { expectAllPass(screenSizeCases()); }
 
+TEST(ProjectionStability, WarpFallsBackBeforeItsFloatErrorShows) {
+    const auto rows = warpConditionCases();
+    expectAllPass(rows);
+    // Without the guard, the float warp 1 µm from the wall plane is visibly off; with it,
+    // cavewall draws geometry there instead.
+    EXPECT_GT(rows.back().condition, 1e4);
+    EXPECT_GT(rows.back().floatError, rows.back().tolerance);
+    EXPECT_LT(rows.front().condition, 100.0);
+}
+
 }  // namespace
 }  // namespace cavewall::display
