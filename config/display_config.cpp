@@ -45,7 +45,7 @@ void parseOutput(const JsonNode& node, Screen& screen) {
 }
 
 Screen parseScreen(const JsonNode& node) {
-    node.expectKeys({"name", "lowerLeft", "lowerRight", "upperLeft", "resolution", "output"});
+    node.expectKeys({"name", "lowerLeft", "lowerRight", "upperLeft", "resolution", "output", "rank"});
     Screen s;
     s.name = node.at("name").string();
     if (s.name.empty()) node.at("name").fail("expected a non-empty name");
@@ -54,6 +54,7 @@ Screen parseScreen(const JsonNode& node) {
     s.upperLeft = node.at("upperLeft").vec3();
     s.resolution = node.at("resolution").ivec2(1, kMaxResolution);
     if (auto out = node.find("output")) parseOutput(*out, s);
+    if (auto r = node.find("rank")) s.rank = r->integer(0, 4095);
     return s;
 }
 
@@ -155,6 +156,19 @@ void validateDisplayConfig(const DisplayConfig& config, const std::string& sourc
     if (!(v.near < v.far))
         throw Error(source + ": viewer: near must be less than far (got near " + formatNumber(v.near) +
                     " m, far " + formatNumber(v.far) + " m)");
+}
+
+std::vector<int> screensOfRank(const DisplayConfig& config, int rank, int rankCount) {
+    std::vector<int> out;
+    for (int i = 0; i < static_cast<int>(config.screens.size()); ++i) {
+        const int r = config.screens[i].rank;
+        if (r >= rankCount)
+            throw Error(config.name + ": screens[" + std::to_string(i) + "] '" + config.screens[i].name +
+                        "': rank " + std::to_string(r) + " does not exist (expected a rank below " +
+                        std::to_string(rankCount) + ", the number of processes)");
+        if ((r >= 0 ? r : i % rankCount) == rank) out.push_back(i);
+    }
+    return out;
 }
 
 std::filesystem::path presetDirectory() {

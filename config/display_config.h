@@ -15,7 +15,8 @@
 //                 "upperLeft": [-1.5, 3, -1.5], "resolution": [1024, 1024],
 //                 "output": {"headless": {"file": "front"}}       // or:
 //                 "output": {"window": {"monitor": 0, "position": [0, 0],
-//                                       "size": [1024, 1024], "fullscreen": false}} }],
+//                                       "size": [1024, 1024], "fullscreen": false}},
+//                 "rank": 0 }],                                  // cluster mode only; optional
 //   "viewer": { "headPosition": [0, 1.7, 0], "headOrientation": {"yawDeg": 0},
 //               "eyeSeparation": 0.064, "near": 0.05, "far": 1000 },   // far: number or "infinite"
 //   "stereo": "mono",        // mono | separate | side-by-side | top-bottom | anaglyph | quad-buffer
@@ -59,6 +60,7 @@ struct Screen {
     glm::ivec2 resolution{0, 0};     // pixels, width x height
     std::optional<WindowOutput> window;  // unset = headless
     HeadlessOutput headless;
+    int rank = -1;                   // cluster mode: MPI rank that renders it; -1 = round-robin
     bool operator==(const Screen&) const = default;
 };
 
@@ -111,5 +113,10 @@ DisplayConfig loadDisplayConfig(const std::string& nameOrPath);
 std::filesystem::path presetDirectory();
 
 std::string_view toString(StereoMode mode);
+
+// Cluster mode: the screens rank `rank` of `rankCount` renders, in configuration order. A screen
+// with an explicit rank goes to that rank; the others are dealt round-robin by their index.
+// Throws Error when a screen names a rank >= rankCount.
+std::vector<int> screensOfRank(const DisplayConfig& config, int rank, int rankCount);
 
 }  // namespace cavewall::config

@@ -130,6 +130,17 @@ TEST(DisplayConfig, EveryRuleHasItsMessage) {
     }
 }
 
+TEST(DisplayConfig, ScreensAreDealtToClusterRanks) {
+    DisplayConfig c = loadDisplayConfig("cave4");
+    // Round-robin by index: 4 screens on 3 ranks.
+    EXPECT_EQ(screensOfRank(c, 0, 3), (std::vector<int>{0, 3}));
+    EXPECT_EQ(screensOfRank(c, 2, 3), (std::vector<int>{2}));
+    c.screens[3].rank = 1;  // an explicit rank wins
+    EXPECT_EQ(screensOfRank(c, 1, 3), (std::vector<int>{1, 3}));
+    EXPECT_THAT([&] { screensOfRank(c, 0, 1); },
+                ThrowsMessage<Error>(HasSubstr("screens[3] 'floor': rank 1 does not exist (expected a rank below 1")));
+}
+
 TEST(DisplayConfig, NaNCannotBeWrittenInJson) {
     // JSON has no NaN literal; the parser rejects it with a position.
     EXPECT_THAT([] { load(withScreens(kScreen, R"(, "minEyeDistance": NaN)")); },
