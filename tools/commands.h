@@ -17,6 +17,8 @@ struct Command {
 
 int runFrustum(const std::vector<std::string>& args);
 extern const char* const kFrustumUsage;
+int runTrack(const std::vector<std::string>& args);
+extern const char* const kTrackUsage;
 int runBench(const std::vector<std::string>& args);
 extern const char* const kBenchUsage;
 

@@ -11,6 +11,7 @@ namespace {
 
 const Command kCommands[] = {
     {"frustum", "print every screen's and eye's off-axis view and projection", kFrustumUsage, runFrustum},
+    {"track", "read a head tracker and print calibrated, filtered, predicted head poses", kTrackUsage, runTrack},
     {"bench", "measure error against run time; --stability: the numerical stability report", kBenchUsage, runBench},
 };
 
