@@ -27,12 +27,16 @@ struct ModelFile {
     UpAxis up = UpAxis::Y;                 // Z-up files are rotated to Y-up
     bool structure = false;                // every object of this file is structure
     std::vector<std::string> structureNodes;  // node-name patterns ('*' wildcard) that are structure
+
+    bool operator==(const ModelFile&) const = default;
 };
 
 struct Cell {
     std::string name;
     std::vector<glm::dvec2> region;        // convex floor polygon (x, z), CCW from above
     double floorY = 0.0;                   // floor height
+
+    bool operator==(const Cell&) const = default;
 };
 
 enum class WallKind {
@@ -45,12 +49,16 @@ struct VirtualWall {
     glm::dvec3 lowerLeft{0.0}, lowerRight{0.0}, upperLeft{0.0};
     std::array<int, 2> cells{-1, -1};      // [front, back]: indices into SceneDescription::cells
     WallKind kind = WallKind::Virtual;
+
+    bool operator==(const VirtualWall&) const = default;
 };
 
 // A real occluding wall (solid, drawn as geometry); visibility passes it only through portals.
 struct RealWall {
     std::string name;
     glm::dvec3 lowerLeft{0.0}, lowerRight{0.0}, upperLeft{0.0};
+
+    bool operator==(const RealWall&) const = default;
 };
 
 struct SceneDescription {
@@ -63,6 +71,8 @@ struct SceneDescription {
     double eyeHeight = 1.7;                // metres above the floor for a walking viewer
     glm::dvec2 headHeightRange{1.2, 2.0};  // absolute head heights (y) the walls must serve
     std::vector<glm::dvec3> walkPath;      // default walk path (eye positions, world frame)
+
+    bool operator==(const SceneDescription&) const = default;
 };
 
 }  // namespace cavewall::scenes

@@ -21,5 +21,7 @@ int runTrack(const std::vector<std::string>& args);
 extern const char* const kTrackUsage;
 int runBench(const std::vector<std::string>& args);
 extern const char* const kBenchUsage;
+int runGenerate(const std::vector<std::string>& args);
+extern const char* const kGenerateUsage;
 
 }  // namespace cavewall::tools

@@ -13,6 +13,7 @@ const Command kCommands[] = {
     {"frustum", "print every screen's and eye's off-axis view and projection", kFrustumUsage, runFrustum},
     {"track", "read a head tracker and print calibrated, filtered, predicted head poses", kTrackUsage, runTrack},
     {"bench", "measure error against run time; --stability: the numerical stability report", kBenchUsage, runBench},
+    {"generate", "write a generated plant or house (.glb + scene.json) deterministically from a seed", kGenerateUsage, runGenerate},
 };
 
 void printHelp() {

@@ -1,0 +1,39 @@
+#pragma once
+// Procedurally generated test scenes, deterministic from a seed: the same options always give
+// the same Scene, description and file bytes (no clocks, no platform-dependent distributions).
+//
+//  - plant: an 80 m x 40 m x 8 m production hall (machine tools, robots, pipe racks, conveyors,
+//    cabinets; sparsely occluding each other as in Ebbesmeyer's seed 000), cut by six virtual
+//    walls into five cells A-E like its Figure 8. Default: at least 2 M drawn triangles; meshes
+//    are shared by instances.
+//  - house: a 16 m x 12 m house of six rooms with real walls and doorways; every doorway is a
+//    portal wall (seed 002); cells are the rooms. Default: at least 200 k drawn triangles.
+// Structure (floors, outer and real walls, ceilings, columns, beams) has Role::Structure and
+// node names starting with "structure/"; the description tags it with that pattern. Both
+// scenes have a walk path through every cell at eye height (through the doors in the house).
+
+#include "scenes/scene.h"
+#include "scenes/scene_description.h"
+
+#include <cstdint>
+#include <filesystem>
+
+namespace cavewall::scenes {
+
+struct GenerateOptions {
+    std::uint64_t seed = 0;
+    std::size_t triangles = 0;  // minimum drawn triangles; 0 = the scene's default (2 M / 200 k)
+};
+
+struct GeneratedScene {
+    Scene scene;
+    SceneDescription description;  // models[0].file is "<name>.glb", folder is empty
+};
+
+GeneratedScene generatePlant(const GenerateOptions& options);
+GeneratedScene generateHouse(const GenerateOptions& options);
+
+// Writes <dir>/<name>.glb and <dir>/scene.json (creating `dir`) and returns the scene.json path.
+std::filesystem::path writeGenerated(GeneratedScene& generated, const std::filesystem::path& dir);
+
+}  // namespace cavewall::scenes

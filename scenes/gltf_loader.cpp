@@ -1,0 +1,259 @@
+// loadGltf: glTF 2.0 (.gltf/.glb) to a Scene. tinygltf parses JSON, buffers and images; every
+// index and byte range is checked here (gltf_accessors.cpp) before anything is read.
+#include "scenes/gltf_materials.h"
+#include "scenes/loader.h"
+#include "scenes/mesh_tools.h"
+
+#include "config/error.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <optional>
+
+namespace cavewall::scenes {
+namespace {
+
+const char* modeName(int mode) {
+    switch (mode) {
+    case TINYGLTF_MODE_POINTS: return "POINTS";
+    case TINYGLTF_MODE_LINE: return "LINES";
+    case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
+    case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
+    case TINYGLTF_MODE_TRIANGLES: return "TRIANGLES";
+    case TINYGLTF_MODE_TRIANGLE_STRIP: return "TRIANGLE_STRIP";
+    case TINYGLTF_MODE_TRIANGLE_FAN: return "TRIANGLE_FAN";
+    default: return "unknown";
+    }
+}
+
+template <class V, int N>
+std::vector<V> toVectors(const AccessorValues& a) {
+    std::vector<V> out(a.count, V(N == 4 ? 1.0f : 0.0f));
+    for (std::size_t i = 0; i < a.count; ++i)
+        for (int c = 0; c < std::min(N, a.components); ++c) out[i][c] = static_cast<float>(a.values[i * a.components + c]);
+    return out;
+}
+
+struct Loader {
+    GltfContext ctx;
+    Scene scene;
+    std::string label;  // "scene 'x.glb'" for warnings
+
+    void warn(const std::string& what) { scene.warnings.push_back(label + ": " + what); }
+
+    // One primitive to a triangle-list Mesh; returns false (with a warning) when skipped.
+    bool convertPrimitive(int meshIndex, int primIndex, Mesh& out) {
+        const tinygltf::Primitive& p = ctx.model.meshes[meshIndex].primitives[primIndex];
+        const std::string where = "meshes[" + std::to_string(meshIndex) + "].primitives[" + std::to_string(primIndex) + "]";
+        const std::string skip = "ignoring primitive " + std::to_string(primIndex) + " of mesh " + std::to_string(meshIndex);
+        if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != TINYGLTF_MODE_TRIANGLE_STRIP && p.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+            warn(skip + " because it has mode " + modeName(p.mode) + " (only triangles, strips and fans are drawn)");
+            return false;
+        }
+        auto pos = p.attributes.find("POSITION");
+        if (pos == p.attributes.end()) {
+            warn(skip + " because it has no POSITION");
+            return false;
+        }
+        out.positions = readPositions(pos->second, where + ".attributes.POSITION");
+        if (!p.targets.empty())
+            warn("primitive " + std::to_string(primIndex) + " of mesh " + std::to_string(meshIndex) +
+                 ": ignoring its morph targets; drawn with the base shape");
+        readAttributes(p, where, out);
+        out.indices = triangleIndices(p, out.positions.size(), where, "primitive " + std::to_string(primIndex) +
+                                                                        " of mesh " + std::to_string(meshIndex));
+        if (p.material >= static_cast<int>(ctx.model.materials.size()))
+            ctx.fail(where + ".material", "material " + std::to_string(p.material) + " is out of range (expected < " +
+                                              std::to_string(ctx.model.materials.size()) + " materials)");
+        out.material = p.material;
+        if (out.normals.empty()) generateNormals(out);
+        updateBounds(out);
+        return true;
+    }
+
+    std::vector<glm::vec3> readPositions(int accessor, const std::string& where) {
+        std::vector<glm::vec3> out = toVectors<glm::vec3, 3>(readAccessorOfType(ctx, accessor, {TINYGLTF_TYPE_VEC3}, where));
+        for (std::size_t i = 0; i < out.size(); ++i)
+            if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y) || !std::isfinite(out[i].z))
+                ctx.fail(where, "vertex " + std::to_string(i) + " is not finite (expected finite numbers, got " +
+                                    std::to_string(out[i].x) + ", " + std::to_string(out[i].y) + ", " +
+                                    std::to_string(out[i].z) + ")");
+        return out;
+    }
+
+    // The primitive's triangles as a list: indexed or not, strips and fans converted.
+    std::vector<std::uint32_t> triangleIndices(const tinygltf::Primitive& p, std::size_t vertexCount,
+                                               const std::string& where, const std::string& what) {
+        std::vector<std::uint32_t> idx;
+        if (p.indices >= 0) idx = readIndices(ctx, p.indices, vertexCount, where + ".indices");
+        else for (std::uint32_t i = 0; i < vertexCount; ++i) idx.push_back(i);
+        if (p.mode == TINYGLTF_MODE_TRIANGLE_STRIP) return stripToList(idx);
+        if (p.mode == TINYGLTF_MODE_TRIANGLE_FAN) return fanToList(idx);
+        if (idx.size() % 3 != 0) {
+            warn(what + " has " + std::to_string(idx.size()) + " indices, not a multiple of 3; dropping the last " +
+                 std::to_string(idx.size() % 3));
+            idx.resize(idx.size() - idx.size() % 3);
+        }
+        return idx;
+    }
+
+    void readAttributes(const tinygltf::Primitive& p, const std::string& where, Mesh& out) {
+        const std::size_t n = out.positions.size();
+        auto read = [&](const char* name, std::initializer_list<int> types) -> std::optional<AccessorValues> {
+            auto it = p.attributes.find(name);
+            if (it == p.attributes.end()) return std::nullopt;
+            const std::string aw = where + ".attributes." + name;
+            AccessorValues v = readAccessorOfType(ctx, it->second, types, aw);
+            if (v.count != n)
+                ctx.fail(aw, "accessor " + std::to_string(it->second) + " has " + std::to_string(v.count) +
+                                 " elements (expected " + std::to_string(n) + ", as many as POSITION)");
+            for (double d : v.values)
+                if (!std::isfinite(d)) ctx.fail(aw, "contains a value that is not finite (expected finite numbers)");
+            return v;
+        };
+        if (auto v = read("NORMAL", {TINYGLTF_TYPE_VEC3})) {
+            out.normals = toVectors<glm::vec3, 3>(*v);
+            // Unit normals stay bit for bit; only clearly wrong lengths are fixed.
+            for (glm::vec3& nrm : out.normals) {
+                const float len = glm::length(nrm);
+                if (std::abs(len - 1.0f) > 1e-4f) nrm = len > 0.0f ? nrm / len : glm::vec3(0, 1, 0);
+            }
+        }
+        if (auto v = read("TEXCOORD_0", {TINYGLTF_TYPE_VEC2})) out.texCoords0 = toVectors<glm::vec2, 2>(*v);
+        if (auto v = read("TEXCOORD_1", {TINYGLTF_TYPE_VEC2})) out.texCoords1 = toVectors<glm::vec2, 2>(*v);
+        if (auto v = read("COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4})) out.colors = toVectors<glm::vec4, 4>(*v);
+    }
+
+    // glTF mesh index -> the scene meshes made from its primitives (shared by every instance).
+    std::vector<std::vector<int>> convertMeshes() {
+        std::vector<std::vector<int>> map(ctx.model.meshes.size());
+        for (std::size_t m = 0; m < ctx.model.meshes.size(); ++m) {
+            const auto& src = ctx.model.meshes[m];
+            for (std::size_t p = 0; p < src.primitives.size(); ++p) {
+                Mesh mesh;
+                mesh.name = (src.name.empty() ? "mesh " + std::to_string(m) : src.name) +
+                            (src.primitives.size() > 1 ? "/" + std::to_string(p) : "");
+                if (!convertPrimitive(static_cast<int>(m), static_cast<int>(p), mesh)) continue;
+                scene.meshes.push_back(std::move(mesh));
+                map[m].push_back(static_cast<int>(scene.meshes.size()) - 1);
+            }
+        }
+        return map;
+    }
+
+    glm::dmat4 localMatrix(int n) const {
+        const tinygltf::Node& node = ctx.model.nodes[n];
+        const std::string where = "nodes[" + std::to_string(n) + "]";
+        auto finite = [&](const std::vector<double>& v, std::size_t size, const char* what) {
+            if (v.empty()) return false;
+            if (v.size() != size) ctx.fail(where + "." + what, "expected " + std::to_string(size) + " numbers, got " + std::to_string(v.size()));
+            for (double d : v)
+                if (!std::isfinite(d)) ctx.fail(where + "." + what, "expected finite numbers");
+            return true;
+        };
+        if (finite(node.matrix, 16, "matrix")) return glm::make_mat4(node.matrix.data());  // column-major, as glm
+        glm::dmat4 m(1.0);
+        if (finite(node.translation, 3, "translation")) m = glm::translate(m, glm::make_vec3(node.translation.data()));
+        if (finite(node.rotation, 4, "rotation")) {
+            glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+            const double len = glm::length(q);
+            m *= len > 0.0 ? glm::mat4_cast(q / len) : glm::dmat4(1.0);
+        }
+        if (finite(node.scale, 3, "scale")) m = glm::scale(m, glm::make_vec3(node.scale.data()));
+        return m;
+    }
+
+    // Recursion depth is bounded so a hostile file cannot overflow the stack.
+    static constexpr int kMaxDepth = 1000;
+
+    void addNode(int n, const glm::dmat4& parent, const std::vector<std::vector<int>>& meshMap,
+                 std::vector<char>& onPath, const std::string& where, int depth = 0) {
+        const int count = static_cast<int>(ctx.model.nodes.size());
+        if (n < 0 || n >= count)
+            ctx.fail(where, "node " + std::to_string(n) + " is out of range (expected < " + std::to_string(count) + " nodes)");
+        if (onPath[n]) ctx.fail(where, "node " + std::to_string(n) + " is its own ancestor (expected a tree, got a cycle)");
+        if (depth > kMaxDepth)
+            ctx.fail(where, "the node hierarchy is deeper than " + std::to_string(kMaxDepth) + " levels (expected a shallower tree)");
+        onPath[n] = 1;
+        const tinygltf::Node& node = ctx.model.nodes[n];
+        const glm::dmat4 world = parent * localMatrix(n);
+        const std::string nw = "nodes[" + std::to_string(n) + "]";
+        if (node.mesh >= 0) {
+            if (static_cast<std::size_t>(node.mesh) >= meshMap.size())
+                ctx.fail(nw + ".mesh", "mesh " + std::to_string(node.mesh) + " is out of range (expected < " +
+                                           std::to_string(meshMap.size()) + " meshes)");
+            const std::string name = node.name.empty() ? "node " + std::to_string(n) : node.name;
+            if (node.skin >= 0) warn("node " + std::to_string(n) + " ('" + name + "'): ignoring its skin; the mesh is drawn in its bind pose");
+            for (int mesh : meshMap[node.mesh]) addObject(scene, mesh, world, name);
+        }
+        for (std::size_t c = 0; c < node.children.size(); ++c)
+            addNode(node.children[c], world, meshMap, onPath, nw + ".children[" + std::to_string(c) + "]", depth + 1);
+        onPath[n] = 0;
+    }
+
+    void addNodes(const std::vector<std::vector<int>>& meshMap) {
+        const auto& m = ctx.model;
+        std::vector<char> onPath(m.nodes.size(), 0);
+        if (!m.scenes.empty()) {
+            const int s = m.defaultScene >= 0 ? m.defaultScene : 0;
+            if (static_cast<std::size_t>(s) >= m.scenes.size())
+                ctx.fail("scene", "scene " + std::to_string(s) + " is out of range (expected < " + std::to_string(m.scenes.size()) + " scenes)");
+            for (std::size_t i = 0; i < m.scenes[s].nodes.size(); ++i)
+                addNode(m.scenes[s].nodes[i], glm::dmat4(1.0), meshMap, onPath,
+                        "scenes[" + std::to_string(s) + "].nodes[" + std::to_string(i) + "]");
+            return;
+        }
+        // No scenes: every root node (one that is nobody's child).
+        std::vector<char> isChild(m.nodes.size(), 0);
+        for (const auto& node : m.nodes)
+            for (int c : node.children)
+                if (c >= 0 && static_cast<std::size_t>(c) < m.nodes.size()) isChild[c] = 1;
+        for (std::size_t n = 0; n < m.nodes.size(); ++n)
+            if (!isChild[n]) addNode(static_cast<int>(n), glm::dmat4(1.0), meshMap, onPath, "nodes[" + std::to_string(n) + "]");
+    }
+};
+
+bool isBinary(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    char magic[4] = {};
+    in.read(magic, 4);
+    return in.gcount() == 4 && std::string(magic, 4) == "glTF";
+}
+
+// tinygltf joins messages with newlines; keep them on one line per message.
+std::string oneLine(std::string s) {
+    while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+    for (char& c : s) if (c == '\n') c = ';';
+    return s;
+}
+
+}  // namespace
+
+Scene loadGltf(const std::filesystem::path& file) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec))
+        throw Error(file.string() + ": cannot open the glTF file (expected an existing .gltf or .glb file)");
+    tinygltf::Model model;
+    tinygltf::TinyGLTF parser;
+    std::string err, warn;
+    const bool ok = isBinary(file) ? parser.LoadBinaryFromFile(&model, &err, &warn, file.string())
+                                   : parser.LoadASCIIFromFile(&model, &err, &warn, file.string());
+    if (!ok) throw Error(file.string() + ": not a valid glTF file: " + oneLine(err.empty() ? warn : err));
+    Loader l{GltfContext{model, file.string()}, Scene{}, "scene '" + file.filename().string() + "'"};
+    l.scene.name = file.stem().string();
+    if (!warn.empty()) l.warn("glTF parser: " + oneLine(warn));
+    checkRequiredExtensions(l.ctx);
+    std::vector<std::string> warnings;
+    convertImages(l.ctx, l.scene, warnings);
+    convertMaterials(l.ctx, l.scene, warnings);
+    for (const auto& w : warnings) l.warn(w);
+    const auto meshMap = l.convertMeshes();
+    l.addNodes(meshMap);
+    return std::move(l.scene);
+}
+
+}  // namespace cavewall::scenes

@@ -1,0 +1,26 @@
+#pragma once
+// glTF images, textures and materials to scenes::Image/Material (internal to the glTF loader).
+
+#include "scenes/gltf_accessors.h"
+#include "scenes/scene.h"
+
+#include <string>
+#include <vector>
+
+namespace cavewall::scenes {
+
+// Throws when the file requires an extension we cannot ignore safely. Supported or harmless:
+// KHR_texture_transform, KHR_materials_*, KHR_mesh_quantization, KHR_texture_basisu is not.
+void checkRequiredExtensions(const GltfContext& ctx);
+
+// Decoded images (8-bit RGBA). An image that could not be decoded becomes an empty Image and a
+// warning; textures using it are dropped with a warning.
+void convertImages(const GltfContext& ctx, Scene& scene, std::vector<std::string>& warnings);
+
+// Materials in glTF order (same indices). Texture and image references are validated.
+void convertMaterials(const GltfContext& ctx, Scene& scene, std::vector<std::string>& warnings);
+
+// The 3x3 KHR_texture_transform matrix (T * R * S) for offset, rotation (radians) and scale.
+glm::mat3 textureTransform(glm::vec2 offset, float rotation, glm::vec2 scale);
+
+}  // namespace cavewall::scenes

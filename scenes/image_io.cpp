@@ -1,0 +1,98 @@
+#include "scenes/image_io.h"
+
+#include "config/error.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <atomic>
+#include <string>
+#include <system_error>
+#include <unistd.h>
+
+namespace cavewall::scenes {
+
+namespace {
+
+// A name in the same folder (so rename() is atomic) that keeps the extension, because OIIO
+// picks the writer from it. Unique per process and call, so parallel writers never collide.
+std::filesystem::path temporaryName(const std::filesystem::path& file) {
+    static std::atomic<unsigned> counter{0};
+    std::filesystem::path tmp = file;
+    tmp.replace_filename("." + file.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                         std::to_string(counter++) + file.extension().string());
+    return tmp;
+}
+
+void writeFile(const std::filesystem::path& file, const std::filesystem::path& real, const Image& image) {
+    auto out = OIIO::ImageOutput::create(real.string());
+    if (!out)
+        throw Error(real.string() + ": cannot write this image format (" + OIIO::geterror() + ")");
+    const OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+    if (!out->open(file.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.rgba.data()) ||
+        !out->close())
+        throw Error(real.string() + ": cannot write image (" + out->geterror() + ")");
+}
+
+// Expands `channels` per pixel (1 grey, 2 grey+alpha, 3 RGB, >= 4 RGBA...) to RGBA.
+std::vector<std::uint8_t> toRgba(const std::vector<std::uint8_t>& in, std::size_t pixels, int channels) {
+    std::vector<std::uint8_t> out(pixels * 4, 255);
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const std::uint8_t* p = &in[i * channels];
+        std::uint8_t* q = &out[i * 4];
+        if (channels <= 2) {
+            q[0] = q[1] = q[2] = p[0];
+            if (channels == 2) q[3] = p[1];
+        } else {
+            for (int c = 0; c < std::min(channels, 4); ++c) q[c] = p[c];
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+void writeImage(const std::filesystem::path& file, const Image& image) {
+    if (image.width <= 0 || image.height <= 0 ||
+        image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4)
+        throw Error(file.string() + ": cannot write image '" + image.name + "' (expected " +
+                    std::to_string(image.width) + " x " + std::to_string(image.height) +
+                    " RGBA pixels, got " + std::to_string(image.rgba.size()) + " bytes)");
+    std::error_code ec;
+    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
+    if (ec) throw Error(file.parent_path().string() + ": cannot create folder (" + ec.message() + ")");
+    const std::filesystem::path tmp = temporaryName(file);
+    try {
+        writeFile(tmp, file, image);
+    } catch (...) {
+        std::filesystem::remove(tmp, ec);
+        throw;
+    }
+    std::filesystem::rename(tmp, file, ec);
+    if (ec) {
+        std::filesystem::remove(tmp, ec);
+        throw Error(file.string() + ": cannot replace file (" + ec.message() + ")");
+    }
+}
+
+Image readImage(const std::filesystem::path& file) {
+    auto in = OIIO::ImageInput::open(file.string());
+    if (!in) throw Error(file.string() + ": cannot read image (" + OIIO::geterror() + ")");
+    const OIIO::ImageSpec& spec = in->spec();
+    const int channels = spec.nchannels;
+    if (spec.width <= 0 || spec.height <= 0 || channels <= 0)
+        throw Error(file.string() + ": expected a non-empty image, got " + std::to_string(spec.width) + " x " +
+                    std::to_string(spec.height) + " x " + std::to_string(channels) + " channels");
+    const std::size_t pixels = static_cast<std::size_t>(spec.width) * spec.height;
+    std::vector<std::uint8_t> raw(pixels * channels);
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data()))
+        throw Error(file.string() + ": cannot decode image (" + in->geterror() + ")");
+    Image image;
+    image.name = file.filename().string();
+    image.width = spec.width;
+    image.height = spec.height;
+    image.rgba = toRgba(raw, pixels, channels);
+    return image;
+}
+
+}  // namespace cavewall::scenes

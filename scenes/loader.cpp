@@ -1,0 +1,81 @@
+// loadScene / loadSceneFile: glTF files placed by a scene description, merged into one Scene.
+#include "scenes/loader.h"
+
+#include "config/error.h"
+#include "scenes/region.h"
+#include "scenes/scene_description_io.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace cavewall::scenes {
+namespace {
+
+// '*' matches any run of characters (also none); everything else matches itself.
+bool matchesPattern(std::string_view name, std::string_view pattern) {
+    if (pattern.empty()) return name.empty();
+    if (pattern[0] == '*')
+        for (std::size_t skip = 0; skip <= name.size(); ++skip)
+            if (matchesPattern(name.substr(skip), pattern.substr(1))) return true;
+    return !name.empty() && pattern[0] != '*' && name[0] == pattern[0] && matchesPattern(name.substr(1), pattern.substr(1));
+}
+
+glm::dmat4 fileTransform(const ModelFile& m) {
+    glm::dmat4 up(1.0);
+    // Z-up to Y-up: +Z becomes +Y and +Y becomes -Z (a -90° turn about +X), right-handed kept.
+    if (m.up == UpAxis::Z) up = glm::rotate(glm::dmat4(1.0), glm::radians(-90.0), glm::dvec3(1, 0, 0));
+    return m.worldFromFile * up * glm::scale(glm::dmat4(1.0), glm::dvec3(m.metresPerUnit));
+}
+
+// Appends `part` to `scene`, shifting its mesh, material and image indices.
+void merge(Scene& scene, Scene&& part, const glm::dmat4& worldFromFile, const ModelFile& model) {
+    const int meshBase = static_cast<int>(scene.meshes.size());
+    const int materialBase = static_cast<int>(scene.materials.size());
+    const int imageBase = static_cast<int>(scene.images.size());
+    for (Image& img : part.images) scene.images.push_back(std::move(img));
+    for (Material& m : part.materials) {
+        if (m.baseColorTexture.image >= 0) m.baseColorTexture.image += imageBase;
+        scene.materials.push_back(std::move(m));
+    }
+    for (Mesh& m : part.meshes) {
+        if (m.material >= 0) m.material += materialBase;
+        scene.meshes.push_back(std::move(m));
+    }
+    for (const Object& o : part.objects) {
+        bool structure = model.structure;
+        for (const std::string& p : model.structureNodes) structure = structure || matchesPattern(o.name, p);
+        addObject(scene, o.mesh + meshBase, worldFromFile * o.worldFromModel, o.name,
+                  structure ? Role::Structure : Role::Content);
+    }
+    for (std::string& w : part.warnings) scene.warnings.push_back(std::move(w));
+}
+
+}  // namespace
+
+Scene loadScene(const SceneDescription& description) {
+    Scene scene;
+    scene.name = description.name;
+    for (const ModelFile& m : description.models) {
+        const std::filesystem::path file = m.file.is_absolute() ? m.file : description.folder / m.file;
+        merge(scene, loadGltf(file), fileTransform(m), m);
+    }
+    for (Object& o : scene.objects) o.cell = findCell(description.cells, o.worldBounds.centre());
+    return scene;
+}
+
+Scene loadSceneFile(const std::filesystem::path& path, SceneDescription* description) {
+    std::error_code ec;
+    const bool isJson = std::filesystem::is_directory(path, ec) || path.extension() == ".json";
+    SceneDescription d;
+    if (isJson) {
+        d = loadSceneDescription(path);
+    } else {
+        d.name = path.stem().string();
+        d.folder = path.parent_path().empty() ? "." : path.parent_path();
+        d.models.push_back(ModelFile{path.filename(), glm::dmat4(1.0), 1.0, UpAxis::Y, false, {}});
+    }
+    Scene scene = loadScene(d);
+    if (description) *description = std::move(d);
+    return scene;
+}
+
+}  // namespace cavewall::scenes

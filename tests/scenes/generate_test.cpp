@@ -1,0 +1,130 @@
+// Generated plant and house: promised sizes, cells, walls, determinism, and clear walk paths.
+#include "scenes/generate.h"
+#include "scenes/glb_writer.h"
+#include "scenes/loader.h"
+#include "scenes/region.h"
+#include "scenes/scene_description_io.h"
+#include "tests/scenes/gltf_builder.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace cavewall::scenes {
+namespace {
+
+std::size_t countRole(const Scene& s, Role role) {
+    std::size_t n = 0;
+    for (const Object& o : s.objects) n += o.role == role ? 1 : 0;
+    return n;
+}
+
+// True when the segment a-b passes through the box (sampled every 5 cm).
+bool segmentHits(glm::dvec3 a, glm::dvec3 b, const Bounds& box) {
+    const int steps = static_cast<int>(glm::length(b - a) / 0.05) + 1;
+    for (int i = 0; i <= steps; ++i) {
+        const glm::dvec3 p = a + (b - a) * (static_cast<double>(i) / steps);
+        if (glm::all(glm::greaterThan(p, box.min)) && glm::all(glm::lessThan(p, box.max))) return true;
+    }
+    return false;
+}
+
+void expectWalkPathClear(const GeneratedScene& g) {
+    const auto& path = g.description.walkPath;
+    for (std::size_t i = 0; i + 1 < path.size(); ++i)
+        for (const Object& o : g.scene.objects)
+            if (o.role == Role::Content) EXPECT_FALSE(segmentHits(path[i], path[i + 1], o.worldBounds)) << o.name << " on leg " << i;
+}
+
+TEST(GeneratePlant, DefaultHasTwoMillionTrianglesFiveCellsAndSharedMeshes) {
+    const GeneratedScene g = generatePlant({});
+    EXPECT_GE(g.scene.triangleCount(), 2'000'000u);
+    std::size_t stored = 0;
+    for (const Mesh& m : g.scene.meshes) stored += m.triangleCount();
+    EXPECT_LT(stored * 5, g.scene.triangleCount());  // instancing: far fewer stored than drawn
+    EXPECT_EQ(g.description.cells.size(), 5u);        // A-E, as in seed 000's Figure 8
+    EXPECT_EQ(g.description.walls.size(), 6u);
+    for (const VirtualWall& w : g.description.walls) EXPECT_EQ(w.kind, WallKind::Virtual);
+    const Bounds b = g.scene.bounds();
+    EXPECT_GE(b.size().x, 60.0);
+    EXPECT_GE(b.size().z, 30.0);
+    EXPECT_GE(countRole(g.scene, Role::Structure), 6u + 6u);  // floor, roof, 4 walls, columns, beams
+    // The walk path visits every cell.
+    std::vector<bool> visited(5, false);
+    for (glm::dvec3 p : g.description.walkPath) visited[findCell(g.description.cells, p)] = true;
+    EXPECT_EQ(std::count(visited.begin(), visited.end(), true), 5);
+    for (glm::dvec3 p : g.description.walkPath) EXPECT_EQ(p.y, g.description.eyeHeight);
+    expectWalkPathClear(g);
+}
+
+// No content object crosses a cell boundary (so none crosses a virtual wall) and the walk
+// path never runs through content, whatever the seed.
+TEST(GeneratePlant, ContentStaysInsideOneCellForManySeeds) {
+    for (std::uint64_t seed = 0; seed < 20; ++seed) {
+        SCOPED_TRACE(seed);
+        const GeneratedScene g = generatePlant({seed, 20000});
+        expectWalkPathClear(g);
+        expectWalkPathClear(generateHouse({seed, 20000}));
+        for (const Object& o : g.scene.objects) {
+            if (o.role != Role::Content) continue;
+            SCOPED_TRACE(o.name);
+            const Bounds& b = o.worldBounds;
+            const int c = findCell(g.description.cells, {b.min.x, 0, b.min.z});
+            EXPECT_GE(c, 0);
+            EXPECT_EQ(findCell(g.description.cells, {b.max.x, 0, b.min.z}), c);
+            EXPECT_EQ(findCell(g.description.cells, {b.min.x, 0, b.max.z}), c);
+            EXPECT_EQ(findCell(g.description.cells, {b.max.x, 0, b.max.z}), c);
+        }
+    }
+}
+
+TEST(GenerateHouse, DefaultHasRoomsPortalsAndRealWalls) {
+    const GeneratedScene g = generateHouse({});
+    EXPECT_GE(g.scene.triangleCount(), 200'000u);
+    EXPECT_EQ(g.description.cells.size(), 6u);
+    EXPECT_EQ(g.description.walls.size(), 6u);  // one portal per doorway
+    for (const VirtualWall& w : g.description.walls) {
+        EXPECT_EQ(w.kind, WallKind::Portal);
+        EXPECT_NEAR(glm::length(w.lowerRight - w.lowerLeft), 0.9, 1e-12);  // door width
+    }
+    // 4 outer walls + 7 interior walls of which 6 have a door (3 pieces each): 4 + 1 + 18 = 23.
+    EXPECT_EQ(g.description.realWalls.size(), 23u);
+    std::vector<bool> visited(6, false);
+    for (glm::dvec3 p : g.description.walkPath) visited[findCell(g.description.cells, p)] = true;
+    EXPECT_EQ(std::count(visited.begin(), visited.end(), true), 6);
+    expectWalkPathClear(g);
+}
+
+TEST(Generate, SameSeedSameBytesOtherSeedOtherBytes) {
+    const auto a = glbBytes(generatePlant({5, 30000}).scene), b = glbBytes(generatePlant({5, 30000}).scene);
+    const auto c = glbBytes(generatePlant({6, 30000}).scene);
+    EXPECT_EQ(a, b);
+    EXPECT_NE(a, c);
+    EXPECT_EQ(glbBytes(generateHouse({5, 30000}).scene), glbBytes(generateHouse({5, 30000}).scene));
+}
+
+TEST(Generate, WrittenScenesValidateAndLoadBackWithTheirCells) {
+    struct Case { const char* name; GeneratedScene (*make)(const GenerateOptions&); std::size_t cells, walls; };
+    const Case cases[] = {{"plant", generatePlant, 5, 6}, {"house", generateHouse, 6, 6}};
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        GeneratedScene g = c.make({1, 20000});
+        const auto json = writeGenerated(g, testing::testOutput("generate") / c.name);
+        EXPECT_EQ(json.filename(), "scene.json");
+        SceneDescription d;
+        const Scene s = loadSceneFile(json, &d);
+        EXPECT_EQ(d.cells.size(), c.cells);
+        EXPECT_EQ(d.walls.size(), c.walls);
+        EXPECT_EQ(d, g.description);  // the file says exactly what was generated
+        EXPECT_TRUE(s.warnings.empty());
+        ASSERT_EQ(s.objects.size(), g.scene.objects.size());
+        EXPECT_EQ(s.triangleCount(), g.scene.triangleCount());
+        EXPECT_EQ(s.meshes.size(), g.scene.meshes.size());  // instancing survives the file
+        // Structure is tagged through the "structure/*" node pattern.
+        EXPECT_EQ(countRole(s, Role::Structure), countRole(g.scene, Role::Structure));
+        for (const Object& o : s.objects)
+            if (o.role == Role::Content) EXPECT_GE(o.cell, 0) << o.name;
+    }
+}
+
+}  // namespace
+}  // namespace cavewall::scenes

@@ -1,0 +1,180 @@
+// scene.json parsing and validation: one case per rule, with its message.
+#include "config/error.h"
+#include "scenes/loader.h"
+#include "scenes/region.h"
+#include "scenes/scene_description_io.h"
+#include "tests/scenes/gltf_builder.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace cavewall::scenes {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
+
+// Two 4 m x 4 m cells side by side along x, split by a virtual wall at x = 0 facing A (-x).
+const std::string kCells = R"(
+  "cells": [{"name": "A", "region": [[-4, 2], [0, 2], [0, -2], [-4, -2]]},
+            {"name": "B", "region": [[0, 2], [4, 2], [4, -2], [0, -2]]}])";
+const std::string kWall = R"({"name": "AB", "cells": ["A", "B"],
+   "lowerLeft": [0, 0, 2], "lowerRight": [0, 0, -2], "upperLeft": [0, 3, 2]})";
+
+std::filesystem::path folder() {
+    const auto dir = testing::testOutput("description");
+    testing::triangleFile().write("../description/model.gltf");
+    return dir;
+}
+
+std::string scene(const std::string& extra, const std::string& walls = kWall, const std::string& cells = kCells) {
+    return R"({"models": [{"file": "model.gltf"}],)" + cells + R"(, "walls": [)" + walls + "]" + extra + "}";
+}
+
+SceneDescription load(const std::string& text) {
+    SceneDescription d = parseSceneDescription(text, "scene.json", folder());
+    validateSceneDescription(d, "scene.json");
+    return d;
+}
+
+TEST(SceneDescription, ParsesEveryFieldAndRoundTrips) {
+    const SceneDescription d = load(scene(R"(, "name": "two", "viewer": {"eyeHeight": 1.6, "headHeightRange": [1, 2.2]},
+        "realWalls": [{"name": "north", "lowerLeft": [-4, 0, -2], "lowerRight": [4, 0, -2], "upperLeft": [-4, 3, -2]}],
+        "walkPath": [[-2, 1.6, 0], [2, 1.6, 0]])"));
+    EXPECT_EQ(d.name, "two");
+    ASSERT_EQ(d.cells.size(), 2u);
+    ASSERT_EQ(d.walls.size(), 1u);
+    EXPECT_EQ(d.walls[0].cells, (std::array<int, 2>{0, 1}));
+    EXPECT_EQ(d.walls[0].kind, WallKind::Virtual);
+    EXPECT_EQ(d.eyeHeight, 1.6);
+    EXPECT_EQ(d.headHeightRange, glm::dvec2(1, 2.2));
+    EXPECT_EQ(d.walkPath.size(), 2u);
+    // The file lists A clockwise seen from above; it is stored counter-clockwise (positive area).
+    EXPECT_EQ(regionArea(d.cells[0].region), 16.0);
+    const SceneDescription again = parseSceneDescription(writeSceneDescription(d), "again.json", d.folder);
+    EXPECT_EQ(again, d);
+    EXPECT_EQ(writeSceneDescription(again), writeSceneDescription(d));  // stable bytes
+}
+
+TEST(SceneDescription, PlacementUnitsAndUpAxisMoveObjects) {
+    const SceneDescription d = load(R"({"models": [
+        {"file": "model.gltf", "metresPerUnit": 0.5, "up": "z", "position": [10, 0, 0], "structureNodes": ["no*e 0"]}]})");
+    const Scene s = loadScene(d);
+    ASSERT_EQ(s.objects.size(), 1u);
+    // Vertex (0, 1, 0) of the triangle: halved to (0, 0.5, 0); Z-up to Y-up sends +Y to -Z:
+    // (0, 0, -0.5); then moved by (10, 0, 0).
+    const glm::dvec4 p = s.objects[0].worldFromModel * glm::dvec4(0, 1, 0, 1);
+    EXPECT_NEAR(p.x, 10.0, 1e-12); EXPECT_NEAR(p.y, 0.0, 1e-12); EXPECT_NEAR(p.z, -0.5, 1e-12);
+    EXPECT_EQ(s.objects[0].role, Role::Structure);  // "node 0" matches "no*e 0"
+    EXPECT_EQ(s.objects[0].cell, -1);               // no cells
+}
+
+TEST(SceneDescription, UnitNamesGiveMetresPerUnit) {
+    const std::pair<const char*, double> units[] = {{"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}, {"in", 0.0254}, {"ft", 0.3048}};
+    for (const auto& [name, metres] : units) {
+        SCOPED_TRACE(name);
+        const SceneDescription d = load(std::string(R"({"models": [{"file": "model.gltf", "units": ")") + name + "\"}]}");
+        EXPECT_EQ(d.models[0].metresPerUnit, metres);
+    }
+}
+
+TEST(SceneDescription, ObjectsGetTheCellOfTheirCentre) {
+    SceneDescription d = load(scene(R"(, "models": [{"file": "model.gltf", "position": [1, 0, 0]}])"));
+    // The triangle's centre (0.5, 0.5, 0) moved to x = 1.5 lies in B.
+    EXPECT_EQ(loadScene(d).objects[0].cell, 1);
+}
+
+struct BadCase {
+    const char* name;
+    std::string json;
+    const char* message;
+};
+
+TEST(SceneDescription, EveryRuleHasItsMessage) {
+    const BadCase cases[] = {
+        {"unknown key", scene(R"(, "walkpath": [])"), "scene.json: unknown key 'walkpath'"},
+        {"unknown wall key", scene("", R"({"name": "x", "cell": []})"), "scene.json: walls[0]: unknown key 'cell'"},
+        {"no models", R"({"models": []})", "scene.json: models: expected an array of at least 1 elements, got 0"},
+        {"missing file", R"({"models": [{"file": "nope.glb"}]})",
+         "scene.json: models[0].file: 'nope.glb' does not exist"},
+        {"wall names a missing cell", scene("", R"({"name": "x", "cells": ["A", "C"], "lowerLeft": [0,0,2],
+           "lowerRight": [0,0,-2], "upperLeft": [0,3,2]})"),
+         "scene.json: walls[0].cells[1]: cell 'C' does not exist (expected one of: A, B)"},
+        {"wall names one cell twice", scene("", R"({"name": "x", "cells": ["A", "A"], "lowerLeft": [0,0,2],
+           "lowerRight": [0,0,-2], "upperLeft": [0,3,2]})"),
+         "scene.json: walls[0].cells: names the same cell twice (expected two different cells, got 'A' twice)"},
+        {"wall not a rectangle", scene("", R"({"name": "x", "cells": ["A", "B"], "lowerLeft": [0,0,2],
+           "lowerRight": [0,0,-2], "upperLeft": [0,3,3]})"),
+         // right = (0, 0, -4), up = (0, 3, 1): cos = -4 / (4 * sqrt(10)), acos = 108.435°.
+         "scene.json: walls[0]: not a rectangle (expected a right angle at lowerLeft, got 108.435°)"},
+        {"wall not vertical", scene("", R"({"name": "x", "cells": ["A", "B"], "lowerLeft": [0,0,2],
+           "lowerRight": [0,0,-2], "upperLeft": [1,3,2]})"),
+         "scene.json: walls[0]: not vertical (expected a normal with no vertical component"},
+        {"wall collinear", scene("", R"({"name": "x", "cells": ["A", "B"], "lowerLeft": [0,0,2],
+           "lowerRight": [0,0,-2], "upperLeft": [0,0,4]})"),
+         "scene.json: walls[0]: corners are collinear or repeated (expected a non-zero area, got 0 m²)"},
+        {"real wall upside down", scene(R"(, "realWalls": [{"name": "r", "lowerLeft": [0,3,2], "lowerRight": [0,3,-2],
+           "upperLeft": [0,0,2]}])"), "scene.json: realWalls[0]: upperLeft is not above lowerLeft"},
+        {"cell without region", scene("", "", R"("cells": [{"name": "A"}])"),
+         "scene.json: cells[0]: missing required key 'region'"},
+        {"cell with two points", scene("", "", R"("cells": [{"name": "A", "region": [[0,0],[1,0]]}])"),
+         "scene.json: cells[0].region: expected a polygon of at least 3 points, got 2"},
+        {"degenerate cell", scene("", "", R"("cells": [{"name": "A", "region": [[0,0],[1,0],[2,0]]}])"),
+         "scene.json: cells[0].region: degenerate polygon (expected a non-zero area, got 0 m²)"},
+        {"non-convex cell", scene("", "", R"("cells": [{"name": "A", "region": [[0,0],[4,0],[4,-4],[2,-1],[0,-4]]}])"),
+         "scene.json: cells[0].region: not convex (expected every corner to turn left seen from above, got a right turn at point 3)"},
+        {"overlapping cells", scene("", "", R"("cells": [{"name": "A", "region": [[0,0],[4,0],[4,-4],[0,-4]]},
+           {"name": "B", "region": [[3,0],[6,0],[6,-4],[3,-4]]}])"),
+         "scene.json: cells[1]: overlaps cells[0] 'A' (expected cells that at most touch, got 4 m² in common)"},
+        {"duplicate cell", scene("", "", R"("cells": [{"name": "A", "region": [[0,0],[4,0],[4,-4]]},
+           {"name": "A", "region": [[5,0],[6,0],[6,-4]]}])"),
+         "scene.json: cells[1].name: duplicate cell name 'A' (expected unique names)"},
+        {"path leaves the cells", scene(R"(, "walkPath": [[0, 1.7, 0], [9, 1.7, 0]])"),
+         "scene.json: walkPath[1]: point (9, 1.7, 0) is outside every cell (expected a point inside a cell's region)"},
+        {"bad head range", scene(R"(, "viewer": {"headHeightRange": [2, 1]})"),
+         "scene.json: viewer.headHeightRange: expected [low, high] with low < high, got [2, 1]"},
+        {"bad kind", scene("", R"({"name": "x", "kind": "door"})"),
+         "scene.json: walls[0].kind: expected one of \"virtual\", \"portal\", got \"door\""},
+        {"units and metresPerUnit", R"({"models": [{"file": "model.gltf", "units": "mm", "metresPerUnit": 1}]})",
+         "scene.json: models[0]: give either 'units' or 'metresPerUnit', not both"},
+        {"unknown unit", R"({"models": [{"file": "model.gltf", "units": "yd"}]})",
+         "scene.json: models[0].units: expected one of \"m\", \"cm\", \"mm\", \"in\", \"ft\", got \"yd\""},
+        {"matrix and position", R"({"models": [{"file": "model.gltf", "matrix": [], "position": [0,0,0]}]})",
+         "scene.json: models[0]: give either 'matrix' or 'position'/'rotation'/'scale', not both"},
+    };
+    for (const BadCase& c : cases) {
+        SCOPED_TRACE(c.name);
+        EXPECT_THAT([&] { load(c.json); }, ThrowsMessage<Error>(HasSubstr(c.message)));
+    }
+}
+
+TEST(SceneDescription, LoadSceneFileAcceptsFolderJsonAndBareGltf) {
+    const auto dir = folder();
+    std::ofstream(dir / "scene.json") << scene("");
+    SceneDescription d;
+    const Scene fromFolder = loadSceneFile(dir, &d);
+    EXPECT_EQ(d.cells.size(), 2u);
+    EXPECT_EQ(d.name, "description");  // the folder's name
+    EXPECT_EQ(fromFolder.objects.size(), 1u);
+    const Scene bare = loadSceneFile(dir / "model.gltf", &d);
+    EXPECT_TRUE(d.cells.empty());
+    EXPECT_EQ(bare.triangleCount(), 1u);
+    EXPECT_THAT([&] { loadSceneFile(dir / "absent.json"); }, ThrowsMessage<Error>(HasSubstr("absent.json: cannot open")));
+}
+
+TEST(Region, ContainsOverlapAndConvexity) {
+    const std::vector<glm::dvec2> square = {{0, 0}, {2, 0}, {2, -2}, {0, -2}};  // CCW from above
+    EXPECT_EQ(regionArea(square), 4.0);
+    EXPECT_TRUE(regionContains(square, {1, -1}));
+    EXPECT_TRUE(regionContains(square, {2, -1}));  // on the boundary
+    EXPECT_FALSE(regionContains(square, {1, 1}));
+    EXPECT_EQ(firstNonConvexCorner(square), -1);
+    // Shifted by (1, -1): overlaps in a 1 x 1 square.
+    const std::vector<glm::dvec2> shifted = {{1, -1}, {3, -1}, {3, -3}, {1, -3}};
+    EXPECT_NEAR(overlapArea(square, shifted), 1.0, 1e-12);
+    const std::vector<glm::dvec2> touching = {{2, 0}, {4, 0}, {4, -2}, {2, -2}};
+    EXPECT_EQ(overlapArea(square, touching), 0.0);
+}
+
+}  // namespace
+}  // namespace cavewall::scenes
