@@ -23,5 +23,7 @@ int runBench(const std::vector<std::string>& args);
 extern const char* const kBenchUsage;
 int runGenerate(const std::vector<std::string>& args);
 extern const char* const kGenerateUsage;
+int runPlan(const std::vector<std::string>& args);
+extern const char* const kPlanUsage;
 
 }  // namespace cavewall::tools

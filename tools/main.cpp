@@ -14,6 +14,7 @@ const Command kCommands[] = {
     {"track", "read a head tracker and print calibrated, filtered, predicted head poses", kTrackUsage, runTrack},
     {"bench", "measure error against run time; --stability: the numerical stability report", kBenchUsage, runBench},
     {"generate", "write a generated plant or house (.glb + scene.json) deterministically from a seed", kGenerateUsage, runGenerate},
+    {"plan", "plan the zones and textures of every virtual wall (summary, JSON, PNG diagram)", kPlanUsage, runPlan},
 };
 
 void printHelp() {

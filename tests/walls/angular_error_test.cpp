@@ -1,0 +1,176 @@
+#include "walls/angular_error.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace cavewall::walls {
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+// A 12 m x 3 m wall in the plane z = 0, facing +z (lowerLeft, lowerRight, upperLeft).
+const ScreenQuad kWall{{-6, 0, 0}, {6, 0, 0}, {-6, 3, 0}};
+
+double sampledMax(glm::dvec3 eye, glm::dvec3 s, double depth, int n = 300) {
+    // Brute force over texels: the exact function must never be below any sample.
+    double best = 0;
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n / 4; ++j) {
+            const glm::dvec3 q(-6 + 12.0 * i / n, 3.0 * j / (n / 4), 0);
+            const double h = s.z;  // distance of S from the plane
+            const glm::dvec3 p = std::isinf(depth) ? q + 1e7 * (q - s) : q + (depth / h) * (q - s);
+            best = std::max(best, pointError(eye, s, p, kWall));
+        }
+    return best;
+}
+
+TEST(AngularError, ZeroAtTheSamplingPointAndForZeroDepth) {
+    const glm::dvec3 s(0, 1.6, 4);
+    EXPECT_EQ(maxAngularError(s, s, kWall), 0.0);
+    EXPECT_EQ(maxAngularError({1, 1.6, 4}, s, kWall, 0.0), 0.0);  // points on the wall have no parallax
+}
+
+TEST(AngularError, MatchesTheClosedFormForAnEyeBesideTheSamplingPoint) {
+    // Eye and sampling point at the same height and distance x, lateral offset delta: the
+    // segment is parallel to the wall, so the largest angle is seen from the wall point in
+    // front of its midpoint: 2 atan(delta / 2x). With depth D the segment shrinks to
+    // [E, M], M = (E + kS) / (1 + k), k = D / x, so the error is 2 atan(delta k / (2x (1 + k))).
+    const double x = 5.0, delta = 1.0;
+    const glm::dvec3 s(0, 1.5, x), e(delta, 1.5, x);
+    EXPECT_NEAR(maxAngularError(e, s, kWall), 2 * std::atan(delta / (2 * x)), 2 * kErrorTolerance);
+    for (double depth : {0.5, 2.0, 10.0}) {
+        SCOPED_TRACE(depth);
+        const double k = depth / x;
+        EXPECT_NEAR(maxAngularError(e, s, kWall, depth), 2 * std::atan(delta * k / (2 * x * (1 + k))),
+                    2 * kErrorTolerance);
+    }
+}
+
+TEST(AngularError, NeverBelowBruteForceAndCloseToIt) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> x(-7, 7), y(0.5, 2.5), z(0.3, 8), depth(0.1, 30);
+    for (int i = 0; i < 40; ++i) {
+        const glm::dvec3 e(x(rng), y(rng), z(rng)), s(x(rng), y(rng), z(rng));
+        const double d = i % 2 ? depth(rng) : kInfiniteDepth;
+        SCOPED_TRACE(i);
+        const double exact = maxAngularError(e, s, kWall, d);
+        const double brute = sampledMax(e, s, d);
+        if (exact >= 89.9 * kDeg) continue;  // the >= 90° path is a coarse bound by design
+        EXPECT_GE(exact + 1e-9, brute);
+        // A 300 x 75 grid on a 12 m x 3 m wall is 4 cm apart: its maximum is close.
+        EXPECT_LT(exact - brute, 0.01);
+    }
+}
+
+TEST(AngularError, ErrorGrowsWithDepthTowardsTheParallaxAngle) {
+    const glm::dvec3 s(0, 1.6, 4), e(1.2, 1.9, 3);
+    double previous = 0;
+    for (double depth : {0.5, 1.0, 4.0, 16.0, 64.0, 1e4}) {
+        const double v = maxAngularError(e, s, kWall, depth);
+        EXPECT_GT(v, previous);
+        previous = v;
+    }
+    EXPECT_NEAR(previous, maxAngularError(e, s, kWall), 1e-3);
+}
+
+TEST(AngularError, DecisionAgreesWithTheValue) {
+    const glm::dvec3 s(0, 1.6, 4), e(0.8, 1.3, 3.5);
+    const double v = maxAngularError(e, s, kWall);
+    EXPECT_TRUE(errorWithin(e, s, kWall, kInfiniteDepth, v + 1e-6));
+    EXPECT_FALSE(errorWithin(e, s, kWall, kInfiniteDepth, v - 1e-6));
+}
+
+TEST(AngularError, ZoneMaximumIsAtAVertexAndBoundsRandomEyesAndPoints) {
+    const ZoneVolume zone{{{-1, 4}, {1, 4}, {1, 6}, {-1, 6}}, {1.2, 2.0}};
+    const glm::dvec3 s(0, 1.6, 5);
+    const double bound = zoneMaxError(zone, s, kWall);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int i = 0; i < 2000; ++i) {
+        const glm::dvec3 eye(-1 + 2 * u(rng), 1.2 + 0.8 * u(rng), 4 + 2 * u(rng));
+        const glm::dvec3 q(-6 + 12 * u(rng), 3 * u(rng), 0);
+        const double depth = 0.01 + 50 * u(rng) * u(rng);
+        const glm::dvec3 p = q + (depth / s.z) * (q - s);  // a scene point shown at texel q
+        ASSERT_LE(pointError(eye, s, p, kWall), bound + 1e-12);
+        ASSERT_LE(maxAngularError(eye, s, kWall), bound + 1e-12);
+    }
+}
+
+TEST(AngularError, FiniteDepthZoneMaximumIsBracketedByEyes) {
+    const ZoneVolume zone{{{-1, 3}, {1, 3}, {1.5, 5}, {-1, 5}}, {1.2, 2.0}};
+    const glm::dvec3 s(0, 1.6, 4);
+    const double infinite = zoneMaxError(zone, s, kWall);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (double depth : {1.0, 5.0, 30.0}) {
+        SCOPED_TRACE(depth);
+        const double bound = zoneMaxError(zone, s, kWall, depth);
+        // A finite depth never errs more than the depth-independent bound.
+        EXPECT_LE(bound, infinite);
+        // Brute force over eyes (vertices, and random points of the zone): the bound is never
+        // below any of them and within its tolerance of the best.
+        double best = 0;
+        for (const glm::dvec2& v : zone.floor)
+            for (double y : {1.2, 2.0}) best = std::max(best, maxAngularError({v.x, y, v.y}, s, kWall, depth));
+        for (int i = 0; i < 300; ++i) {
+            const double a = u(rng), b = u(rng);
+            const glm::dvec2 f = (1 - a) * ((1 - b) * zone.floor[0] + b * zone.floor[1]) + a * ((1 - b) * zone.floor[3] + b * zone.floor[2]);
+            best = std::max(best, maxAngularError({f.x, 1.2 + 0.8 * u(rng), f.y}, s, kWall, depth));
+        }
+        EXPECT_GE(bound, best);
+        EXPECT_LE(bound - best, 2e-4);
+    }
+    EXPECT_LT(zoneMaxError(zone, s, kWall, 1.0), 0.5 * infinite);  // shallow content errs far less
+}
+
+TEST(AngularError, SeedRuleReferenceCase) {
+    // Seed 000 eq. 3-4 at alpha = 10°: a zone half-width of 1 m needs x_Tmin = 1 / tan 10° =
+    // 5.671 m, and a 12 m wide scene needs 12 / (2 * 1) = 6 textures per wall (the seed's six).
+    const double alpha = 10 * kDeg;
+    const double xMin = seedMinDistance(1.0, alpha);
+    EXPECT_NEAR(xMin, 5.67128, 1e-5);
+    EXPECT_EQ(seedTextureCount(12.0, xMin, alpha), 6);
+    EXPECT_NEAR(seedError2D(1.0, xMin), alpha, 1e-12);
+}
+
+TEST(AngularError, SeedRuleUnderestimatesTheTrue3DError) {
+    // The seed's zone: sampling point B at x_Tmin in front of the wall at eye height, the
+    // viewer B' moved 1 m (delta b) parallel to the wall. The seed predicts exactly 10°.
+    const double alpha = 10 * kDeg, xMin = seedMinDistance(1.0, alpha);
+    const glm::dvec3 b(0, 1.6, xMin);
+    struct Case {
+        const char* name;
+        glm::dvec3 eye;
+    };
+    const Case cases[] = {
+        // Even in 2D the worst wall point is in front of the midpoint of BB': 2 atan(0.5 / x) > atan(1 / x).
+        {"same height, parallel", {1.0, 1.6, xMin}},
+        {"head 0.4 m higher", {1.0, 2.0, xMin}},
+        {"0.5 m towards the wall", {1.0, 1.6, xMin - 0.5}},
+        {"0.5 m away from the wall", {1.0, 1.6, xMin + 0.5}},
+        {"lower and closer", {1.0, 1.2, xMin - 0.5}},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        EXPECT_GT(maxAngularError(c.eye, b, kWall), alpha);
+    }
+    EXPECT_NEAR(maxAngularError(cases[0].eye, b, kWall), 2 * std::atan(0.5 / xMin), 1e-6);
+    // Moving towards the wall is worse than moving away, and height adds to it.
+    EXPECT_GT(maxAngularError(cases[2].eye, b, kWall), maxAngularError(cases[3].eye, b, kWall));
+    EXPECT_GT(maxAngularError(cases[4].eye, b, kWall), maxAngularError(cases[2].eye, b, kWall));
+}
+
+TEST(AngularError, DegenerateInputsNeverGiveNaN) {
+    const glm::dvec3 s(0, 1.6, 4);
+    const double nan = std::nan("");
+    EXPECT_FALSE(std::isnan(maxAngularError({nan, 1, 1}, s, kWall)));
+    EXPECT_FALSE(std::isnan(maxAngularError({0, 1.5, 0}, s, kWall)));   // eye on the wall
+    EXPECT_FALSE(std::isnan(maxAngularError({0, 1.5, -1}, s, kWall)));  // eye behind it
+    EXPECT_FALSE(errorWithin({nan, 1, 1}, s, kWall, kInfiniteDepth, 0.1));
+    EXPECT_GE(maxAngularError({0, 1.5, 0.001}, s, kWall), 80 * kDeg);  // grazing: near 90° and more
+}
+
+}  // namespace
+}  // namespace cavewall::walls

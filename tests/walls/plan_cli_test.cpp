@@ -1,0 +1,81 @@
+#include "tests/cli/run_cli.h"
+#include "walls/angular_error.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+namespace cavewall::test {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::filesystem::path outputDir() {
+    const char* env = std::getenv("CAVEWALL_TEST_OUTPUT");
+    const std::filesystem::path dir = std::filesystem::path(env ? env : "/tmp") / "plan_cli";
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+glm::dvec3 vec3(const nlohmann::json& a) { return {a[0].get<double>(), a[1].get<double>(), a[2].get<double>()}; }
+
+TEST(PlanCli, PlansAGeneratedHouseAndTheJsonKeepsTheBound) {
+    const auto dir = outputDir();
+    const CliResult gen = runCavewall({"generate", "house", "--out", (dir / "house").string(), "--triangles", "2000"});
+    ASSERT_EQ(gen.exitCode, 0) << gen.err;
+    const CliResult r = runCavewall({"plan", (dir / "house").string(), "--alpha", "12", "--json",
+                                     (dir / "house.plan.json").string(), "--png", (dir / "house.plan.png").string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("alpha 12°"));
+    EXPECT_THAT(r.out, HasSubstr("GPU"));
+    EXPECT_TRUE(std::filesystem::file_size(dir / "house.plan.png") > 100);
+    std::ifstream in(dir / "house.plan.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["alphaDeg"], 12.0);
+    ASSERT_FALSE(j["walls"].empty());
+    for (const auto& w : j["walls"]) EXPECT_TRUE(w["depthBehind"].is_number());  // the scene is loaded
+    // Check the bound from the file alone, as an outside tool would: every texture a zone
+    // draws, at every vertex of the zone, for scene points at any depth (the vertices give the
+    // exact zone maximum in that case, angular_error.h), and at the file's depthBehind.
+    int checked = 0;
+    for (const auto& z : j["zones"]) {
+        if (z["kind"] == "geometry") continue;
+        const auto& w = j["walls"][z["wall"].get<int>()];
+        const walls::ScreenQuad quad{vec3(w["lowerLeft"]), vec3(w["lowerRight"]), vec3(w["upperLeft"])};
+        const nlohmann::json points = z["kind"] == "texture" ? nlohmann::json::array({z["samplingPoint"]}) : z["samplingPoints"];
+        for (const auto& s : points)
+            for (const auto& v : z["floorPolygon"])
+                for (double y : {z["heightRange"][0].get<double>(), z["heightRange"][1].get<double>()}) {
+                    const glm::dvec3 eye(v[0].get<double>(), y, v[1].get<double>());
+                    ASSERT_LE(walls::maxAngularError(eye, vec3(s), quad), glm::radians(12.0));
+                    ASSERT_LE(walls::maxAngularError(eye, vec3(s), quad, w["depthBehind"].get<double>()),
+                              walls::maxAngularError(eye, vec3(s), quad));
+                    ++checked;
+                }
+    }
+    EXPECT_GT(checked, 100);
+}
+
+TEST(PlanCli, BadArgumentsFailClearly) {
+    const struct {
+        std::vector<std::string> args;
+        const char* message;
+    } cases[] = {
+        {{"plan"}, "SCENE"},
+        {{"plan", "/nonexistent/scene.json"}, "/nonexistent/scene.json"},
+        {{"plan", "x", "--alpha", "0"}, "--alpha"},
+        {{"plan", "x", "--alhpa", "10"}, "alhpa"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.message);
+        const CliResult r = runCavewall(c.args);
+        EXPECT_NE(r.exitCode, 0);
+        EXPECT_THAT(r.err, HasSubstr(c.message));
+    }
+}
+
+}  // namespace
+}  // namespace cavewall::test

@@ -1,0 +1,74 @@
+#include "scenes/image_io.h"
+#include "scenes/loader.h"
+#include "tools/args.h"
+#include "tools/commands.h"
+#include "walls/plan.h"
+#include "walls/plan_diagram.h"
+#include "walls/plan_io.h"
+#include "walls/visibility.h"
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace cavewall::tools {
+
+const char* const kPlanUsage =
+    "usage: cavewall plan SCENE [--alpha DEG] [--json FILE] [--png FILE] [--min-zone M] [--blend M]\n"
+    "                           [--ppd N]\n"
+    "\n"
+    "Plans the zones of every virtual wall and portal of SCENE (a scene.json or a folder holding\n"
+    "one): geometry, texture and blend zones per cell and wall, with the angular error of every\n"
+    "texture proven <= --alpha degrees (default 10) in 3D for every eye in its zones and every\n"
+    "scene point behind the wall. Prints a summary table (zones by kind, textures, texels, memory\n"
+    "estimates), writes the plan as JSON (--json) and a top-view diagram (--png).\n"
+    "--min-zone: smallest zone width and depth in metres (default 1; nearer the wall than such a\n"
+    "zone can be proven is geometry). --blend: blend strip width in metres (default 0.2).\n"
+    "--ppd: texel density target in pixels per degree at each texture's nearest eye (default 10,\n"
+    "at most 4096 texels per side), used for the texel and memory estimates.\n";
+
+namespace {
+
+void writeText(const std::filesystem::path& file, const std::string& text) {
+    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+    std::ofstream out(file, std::ios::binary);
+    out << text;
+    if (!out) throw Error(file.string() + ": cannot write the file");
+}
+
+}  // namespace
+
+int runPlan(const std::vector<std::string>& words) {
+    const Args args(words, {});
+    args.expectFlags({"alpha", "json", "png", "min-zone", "blend", "ppd"});
+    walls::PlanOptions options;
+    options.alphaDeg = args.number("alpha", options.alphaDeg, 1e-6, 90.0);
+    options.minZoneSize = args.number("min-zone", options.minZoneSize, 0.01, 1000.0);
+    options.blendWidth = args.number("blend", options.blendWidth, 0.0, 100.0);
+    options.pixelsPerDegree = args.number("ppd", options.pixelsPerDegree, 0.01, 1000.0);
+    walls::validatePlanOptions(options);
+    const std::string& path = args.positional(0, "SCENE");
+    if (args.positional().size() > 1) throw Error("plan: expected one SCENE, got " + std::to_string(args.positional().size()) + " words");
+    scenes::SceneDescription description;
+    const scenes::Scene scene = scenes::loadSceneFile(path, &description);
+    walls::Plan plan = walls::planZones(description, options);
+    const walls::VisibilityTable table = walls::computeVisibility(description);
+    walls::assignDepthBehind(plan, scene, description, table);
+    for (const std::string& w : scene.warnings) std::cerr << "cavewall: warning: " << w << "\n";
+    walls::printPlanSummary(std::cout, plan, description);
+    if (auto json = args.get("json")) {
+        std::ostringstream text;
+        text << std::setprecision(17) << walls::planToJson(plan).dump(1) << "\n";
+        writeText(*json, text.str());
+        std::cout << "wrote " << *json << "\n";
+    }
+    if (auto png = args.get("png")) {
+        scenes::writeImage(*png, walls::planDiagram(plan, description, &scene));
+        std::cout << "wrote " << *png << "\n";
+    }
+    return 0;
+}
+
+}  // namespace cavewall::tools

@@ -1,0 +1,126 @@
+#include "walls/bake_manifest.h"
+
+#include "config/json_reader.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <unistd.h>
+
+namespace cavewall::walls {
+
+std::uint64_t fnv1a(std::string_view bytes, std::uint64_t seed) {
+    std::uint64_t h = seed;
+    for (unsigned char c : bytes) {
+        h ^= c;
+        h *= 0x100000001b3ull;
+    }
+    return h;
+}
+
+std::uint64_t hashFile(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw Error(file.string() + ": cannot open the file for reading");
+    std::uint64_t h = fnv1a("");
+    std::vector<char> buffer(1 << 16);
+    while (in) {
+        in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+        h = fnv1a(std::string_view(buffer.data(), static_cast<std::size_t>(in.gcount())), h);
+    }
+    return h;
+}
+
+std::string hex64(std::uint64_t value) {
+    char s[17];
+    std::snprintf(s, sizeof s, "%016llx", static_cast<unsigned long long>(value));
+    return s;
+}
+
+namespace {
+
+std::uint64_t parseHex64(const config::JsonNode& node) {
+    const std::string s = node.string();
+    if (s.size() != 16 || s.find_first_not_of("0123456789abcdef") != std::string::npos)
+        node.fail("expected 16 lower-case hex digits, got \"" + s + "\"");
+    return std::stoull(s, nullptr, 16);
+}
+
+}  // namespace
+
+std::string manifestToJson(const BakeManifest& m) {
+    nlohmann::json textures = nlohmann::json::array();
+    for (const BakedTexture& t : m.textures)
+        textures.push_back({{"id", t.id}, {"cell", t.cell}, {"wall", t.wall},
+                            {"samplingPoint", {t.samplingPoint.x, t.samplingPoint.y, t.samplingPoint.z}},
+                            {"resolution", {t.resolution.x, t.resolution.y}}, {"file", t.file},
+                            {"bytes", t.bytes}, {"hash", hex64(t.hash)}});
+    const nlohmann::json j{{"version", 1}, {"key", hex64(m.key)}, {"alphaDeg", m.alphaDeg}, {"textures", textures}};
+    return j.dump(1) + "\n";
+}
+
+BakeManifest manifestFromJson(std::string_view text, const std::string& source) {
+    const auto doc = config::JsonDocument::fromText(text, source);
+    const config::JsonNode root = doc.root();
+    root.expectKeys({"version", "key", "alphaDeg", "textures"});
+    root.at("version").integer(1, 1);
+    BakeManifest m;
+    m.key = parseHex64(root.at("key"));
+    m.alphaDeg = root.at("alphaDeg").number(0.0, 90.0);
+    for (const config::JsonNode& n : root.at("textures").items()) {
+        n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "file", "bytes", "hash"});
+        BakedTexture t;
+        t.id = n.at("id").integer(0, 1 << 30);
+        t.cell = n.at("cell").integer(0, 1 << 30);
+        t.wall = n.at("wall").integer(0, 1 << 30);
+        t.samplingPoint = n.at("samplingPoint").vec3();
+        t.resolution = n.at("resolution").ivec2(1, 65536);
+        t.file = n.at("file").string();
+        if (t.file.empty() || t.file.find('/') != std::string::npos || t.file.find("..") != std::string::npos)
+            n.at("file").fail("expected a plain file name in the manifest's folder, got \"" + t.file + "\"");
+        t.bytes = static_cast<std::uint64_t>(n.at("bytes").number(0.0, 1e15));
+        t.hash = parseHex64(n.at("hash"));
+        m.textures.push_back(std::move(t));
+    }
+    return m;
+}
+
+BakeManifest readManifest(const std::filesystem::path& folder) {
+    const auto file = folder / "manifest.json";
+    if (!std::filesystem::exists(file)) return {};
+    return manifestFromJson(config::readTextFile(file), file.string());
+}
+
+void writeFileAtomically(const std::filesystem::path& file, std::string_view bytes) {
+    std::filesystem::create_directories(file.parent_path().empty() ? "." : file.parent_path());
+    const auto temp = file.string() + ".tmp." + std::to_string(::getpid());
+    {
+        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        out.flush();
+        if (!out) throw Error(temp + ": write failed (disk full or no permission?)");
+    }
+    std::error_code ec;
+    std::filesystem::rename(temp, file, ec);
+    if (ec) {
+        std::filesystem::remove(temp, ec);
+        throw Error(file.string() + ": cannot replace the file: " + ec.message());
+    }
+}
+
+void writeManifest(const std::filesystem::path& folder, const BakeManifest& manifest) {
+    writeFileAtomically(folder / "manifest.json", manifestToJson(manifest));
+}
+
+bool textureFileValid(const std::filesystem::path& folder, const BakedTexture& t) {
+    std::error_code ec;
+    const auto path = folder / t.file;
+    if (std::filesystem::file_size(path, ec) != t.bytes || ec) return false;
+    try {
+        return hashFile(path) == t.hash;
+    } catch (const Error&) {
+        return false;
+    }
+}
+
+}  // namespace cavewall::walls

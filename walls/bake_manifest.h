@@ -1,0 +1,64 @@
+#pragma once
+// The baked wall textures of a scene on disk: one folder per bake key holding manifest.json and
+// one tiled, MIP-mapped image file per texture (written by walls/gl/baker.h).
+//
+// manifest.json:
+//   {"version": 1, "key": "<16 hex digits>", "alphaDeg": 10,
+//    "textures": [{"id": 0, "cell": 0, "wall": 0, "samplingPoint": [x, y, z],
+//                  "resolution": [w, h], "file": "tex_0000.tx", "bytes": 123, "hash": "<16 hex>"}]}
+// `key` is a content hash of everything the textures depend on (scene files, plan, bake
+// settings); `hash` is the FNV-1a 64 hash of the texture file's bytes. A texture is valid when
+// its file exists with exactly `bytes` bytes and hash; anything else (missing, torn, replaced)
+// is re-baked and never drawn. Manifests are written atomically (temporary file + rename), and
+// after every texture file they list, so a manifest never names a file that was not complete.
+
+#include "config/error.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cavewall::walls {
+
+struct BakedTexture {
+    int id = 0;                       // Plan texture id
+    int cell = 0, wall = 0;
+    glm::dvec3 samplingPoint{0.0};
+    glm::ivec2 resolution{0, 0};
+    std::string file;                 // relative to the manifest's folder
+    std::uint64_t bytes = 0;
+    std::uint64_t hash = 0;           // FNV-1a 64 of the file's bytes
+    bool operator==(const BakedTexture&) const = default;
+};
+
+struct BakeManifest {
+    std::uint64_t key = 0;
+    double alphaDeg = 0.0;
+    std::vector<BakedTexture> textures;  // sorted by id
+    bool operator==(const BakeManifest&) const = default;
+};
+
+// FNV-1a 64-bit hash, incremental: pass the previous result as `seed` to continue.
+std::uint64_t fnv1a(std::string_view bytes, std::uint64_t seed = 0xcbf29ce484222325ull);
+std::uint64_t hashFile(const std::filesystem::path& file);  // throws Error when unreadable
+std::string hex64(std::uint64_t value);                     // 16 lower-case hex digits
+
+std::string manifestToJson(const BakeManifest& manifest);
+// Throws Error naming `source` and the JSON path on bad input.
+BakeManifest manifestFromJson(std::string_view text, const std::string& source);
+
+// Reads <folder>/manifest.json; nullopt-like empty manifest (key 0) when there is none.
+BakeManifest readManifest(const std::filesystem::path& folder);
+// Writes <folder>/manifest.json atomically.
+void writeManifest(const std::filesystem::path& folder, const BakeManifest& manifest);
+// Writes bytes to `file` atomically (temporary file in the same folder, then rename).
+void writeFileAtomically(const std::filesystem::path& file, std::string_view bytes);
+
+// True when the texture's file exists with the recorded size and hash.
+bool textureFileValid(const std::filesystem::path& folder, const BakedTexture& texture);
+
+}  // namespace cavewall::walls

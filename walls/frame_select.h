@@ -1,0 +1,74 @@
+#pragma once
+// Per-frame selection for textured virtual walls (seed 000 §6): from the viewer's eye, which
+// cell it is in, which textures each bounding wall shows with which weights, and which cells
+// are drawn as geometry.
+//
+// One cyclopean eye per frame (the head position in the world), shared by both eyes and all
+// screens, so stereo never mixes zones and every screen agrees.
+//
+// Weights are continuous in the eye position and sum to 1 per wall (textures + geometry).
+// They follow the planner's layout (walls/zone_layout.cpp): in a wall's floor frame (s along
+// the wall, d away from it), zones are rows of columns with blend strips of width b centred on
+// every border, and a texture-to-geometry strip [dG, dG + b] in front of the geometry zone.
+// A texture's weight is the product of a row tent and a column tent,
+//   w = tau(dist_d / b) * tau(dist_s / b),  tau(x) = clamp(1 - x, 0, 1),
+// where dist_* is the distance to the texture's core (its validated region less the blend
+// strips). Rows and columns each form a partition of unity, so the weights sum to 1; they are
+// non-zero only strictly inside the texture's validated region, so the planner's error bound
+// holds for every texture drawn with non-zero weight.
+
+#include "scenes/scene_description.h"
+#include "walls/plan.h"
+#include "walls/visibility.h"
+#include "walls/zone_index.h"
+
+#include <utility>
+#include <vector>
+
+namespace cavewall::walls {
+
+struct WallBlend {
+    int wall = 0;                     // index into Plan::walls
+    int side = 0;                     // 0: the viewer is in front of the wall
+    int zone = -1;                    // zone containing the eye, -1 if none
+    std::vector<std::pair<int, double>> textures;  // (texture id, weight > 0), by id
+    double geometryWeight = 0.0;      // weight of the cell behind, drawn as geometry
+};
+
+struct FrameSelection {
+    int cell = -1;                    // the viewer's cell, -1 outside every cell (all geometry)
+    std::vector<WallBlend> walls;     // every wall bounding the cell
+    std::vector<int> geometryCells;   // cells drawn as geometry this frame, sorted
+    bool allGeometry() const { return cell < 0; }
+};
+
+class FrameSelector {
+public:
+    // Keeps references: plan, table and description must outlive the selector.
+    FrameSelector(const Plan& plan, const VisibilityTable& table, const scenes::SceneDescription& description);
+
+    FrameSelection select(glm::dvec3 eyeWorld) const;
+
+    // The weights of one side at a floor point (x, z): textures and the geometry weight.
+    // Exposed for tests and the stability report.
+    WallBlend blendAt(int sideIndex, glm::dvec2 floorPoint) const;
+
+private:
+    struct Core {
+        int texture = -1;             // -1 for the geometry core
+        glm::dvec2 s{0.0}, d{0.0};    // core ranges in the side frame (may be infinite)
+    };
+    struct SideCores {
+        glm::dvec2 origin{0.0}, along{1, 0}, inward{0, 1};
+        std::vector<Core> cores;
+    };
+    SideCores buildSide(const WallSide& side) const;
+
+    const Plan& _plan;
+    const VisibilityTable& _table;
+    const scenes::SceneDescription& _description;
+    ZoneIndex _zones;
+    std::vector<SideCores> _sides;    // parallel to Plan::sides
+};
+
+}  // namespace cavewall::walls

@@ -1,0 +1,110 @@
+#include "walls/plan.h"
+
+#include "config/error.h"
+#include "config/json_reader.h"
+#include "walls/angular_error.h"
+#include "walls/zone_layout.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cavewall::walls {
+namespace {
+
+using config::formatNumber;
+
+void require(bool ok, const std::string& what) {
+    if (!ok) throw Error("plan options: " + what);
+}
+
+SideFrame frameOf(const scenes::VirtualWall& wall, int side) {
+    const display::ScreenBasis b = display::screenBasis({wall.lowerLeft, wall.lowerRight, wall.upperLeft});
+    const glm::dvec2 n(b.normal.x, b.normal.z);
+    // A wall tilted by more than 60° has no useful floor frame.
+    if (glm::length(n) < 0.5)
+        throw Error("wall '" + wall.name + "': cannot plan zones for a wall that is not upright (expected a tilt below 60°, got a normal of " +
+                    formatNumber(b.normal.x) + ", " + formatNumber(b.normal.y) + ", " + formatNumber(b.normal.z) + ")");
+    SideFrame f;
+    f.origin = {wall.lowerLeft.x, wall.lowerLeft.z};
+    f.inward = glm::normalize(n) * (side == 0 ? 1.0 : -1.0);
+    f.along = {-f.inward.y, f.inward.x};
+    return f;
+}
+
+double nearestDistance(const Texture& t, const display::ScreenQuad& q) {
+    const glm::dvec3 n = display::screenBasis(q).normal;
+    double d = std::numeric_limits<double>::infinity();
+    for (const glm::dvec2& p : t.validRegion)
+        d = std::min(d, std::abs(glm::dot(glm::dvec3(p.x, t.samplingPoint.y, p.y) - q.lowerLeft, n)));
+    return d;
+}
+
+}  // namespace
+
+const char* toString(ZoneKind kind) {
+    switch (kind) {
+    case ZoneKind::Texture: return "texture";
+    case ZoneKind::Blend: return "blend";
+    case ZoneKind::Geometry: return "geometry";
+    }
+    return "?";
+}
+
+void validatePlanOptions(const PlanOptions& o) {
+    require(o.alphaDeg > 0 && o.alphaDeg <= 90, "alpha: expected an angle in (0, 90] degrees, got " + formatNumber(o.alphaDeg));
+    require(o.blendWidth >= 0 && std::isfinite(o.blendWidth),
+            "blendWidth: expected a finite width >= 0 m, got " + formatNumber(o.blendWidth));
+    require(o.minZoneSize > 2 * o.blendWidth && std::isfinite(o.minZoneSize),
+            "minZoneSize: expected more than twice blendWidth (" + formatNumber(2 * o.blendWidth) + " m), got " +
+                formatNumber(o.minZoneSize) + " m");
+    require(o.pixelsPerDegree > 0 && o.pixelsPerDegree <= 1000,
+            "pixelsPerDegree: expected a number in (0, 1000], got " + formatNumber(o.pixelsPerDegree));
+    require(o.maxResolution >= 1 && o.maxResolution <= 16384,
+            "maxResolution: expected an integer in [1, 16384], got " + std::to_string(o.maxResolution));
+}
+
+double texelSize(double distance, double pixelsPerDegree) {
+    return distance * std::tan(glm::radians(1.0 / pixelsPerDegree));
+}
+
+Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options) {
+    validatePlanOptions(options);
+    Plan plan;
+    plan.alphaDeg = options.alphaDeg;
+    plan.options = options;
+    for (int w = 0; w < int(d.walls.size()); ++w) {
+        const scenes::VirtualWall& wall = d.walls[w];
+        plan.walls.push_back({w, wall.name, {wall.lowerLeft, wall.lowerRight, wall.upperLeft}, wall.cells,
+                              std::numeric_limits<double>::infinity()});
+        for (int side = 0; side < 2; ++side) {
+            const int cell = wall.cells[side];
+            if (cell < 0 || cell >= int(d.cells.size())) continue;
+            SideInput in{cell, w, side, frameOf(wall, side), d.cells[cell].region, plan.walls.back().quad,
+                         d.headHeightRange};
+            plan.sides.push_back(planSide(plan, in));
+        }
+    }
+    for (Texture& t : plan.textures) {
+        const display::ScreenQuad& q = plan.walls[t.wall].quad;
+        t.maxError = zoneMaxError({t.validRegion, d.headHeightRange}, t.samplingPoint, q);
+        const double texel = texelSize(nearestDistance(t, q), options.pixelsPerDegree);
+        const display::ScreenBasis b = display::screenBasis(q);
+        auto texels = [&](double metres) {
+            if (!(texel > 1e-9)) return options.maxResolution;
+            return int(std::clamp(std::ceil(metres / texel), 1.0, double(options.maxResolution)));
+        };
+        t.resolution = {texels(b.width), texels(b.height)};
+    }
+    return plan;
+}
+
+int findZone(const Plan& plan, int cell, int wall, glm::dvec2 p) {
+    for (const WallSide& s : plan.sides) {
+        if (s.cell != cell || s.wall != wall) continue;
+        for (int z = s.firstZone; z < s.firstZone + s.zoneCount; ++z)
+            if (containsConvex(plan.zones[z].floorPolygon, p)) return z;
+    }
+    return -1;
+}
+
+}  // namespace cavewall::walls

@@ -1,0 +1,130 @@
+#pragma once
+// Zone planning for textured virtual walls (Ebbesmeyer, seed 000 §4-5), with the error bound
+// proven exactly in 3D (walls/angular_error.h).
+//
+// For every cell and every virtual wall or portal bounding it (seen from that cell), the cell's
+// floor is cut into zones, each a convex floor polygon times the scene's head height range:
+//  - geometry: too close to the wall for any texture within alpha (and any zone of at least
+//    minZoneSize); the cell behind the wall is drawn as geometry there;
+//  - texture: one texture, baked from the zone's sampling point;
+//  - blend: a strip of blendWidth around a border; it mixes every texture listed, and it lies
+//    inside the region where each of them is proven within alpha (the texture's validRegion);
+//    a texture->geometry blend strip (mixesGeometry) lies on the texture side of the geometry
+//    border.
+// Guarantee: for every eye in a zone (whole floor polygon and height range), every texture the
+// zone draws with non-zero weight and every scene point behind the wall at any depth, the
+// angle between the point's true direction and its texel's direction is <= alpha.
+//
+// Layout (per cell and wall, in the wall's floor frame: s along the wall, d away from it into
+// the cell): the geometry strip d < dG with dG found by bisection; then rows of increasing
+// distance, each cut into columns of maximal width by bisection (greedy; a row's depth is
+// chosen among candidates to cover the most depth per texture). Zones of one cell and wall
+// tile the cell's floor polygon. Sampling points: at mid head height, the centroid of the
+// zone's row/column cell, or of its part nearest the wall when that proves a wider zone.
+// The geometry distance is the smallest at which a zone of minZoneSize is proven, so the
+// texture count trades against minZoneSize (a larger alpha shrinks the geometry strip and
+// may therefore need more textures, not fewer).
+
+#include "display/off_axis.h"
+#include "scenes/scene_description.h"
+#include "walls/polygon2d.h"
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace cavewall::walls {
+
+struct PlanOptions {
+    double alphaDeg = 10.0;          // error bound, degrees, in (0, 90]
+    double blendWidth = 0.2;         // metres, width of blend strips, >= 0
+    double minZoneSize = 1.0;        // metres, smallest zone width/depth (at walking speed, at most
+                                     // about one texture switch per second); > 2 * blendWidth
+    double pixelsPerDegree = 10.0;   // texel density target at the zone's nearest distance
+    int maxResolution = 4096;        // texels per texture side (cap)
+};
+
+// Throws cavewall::Error naming the option when it is out of range.
+void validatePlanOptions(const PlanOptions& options);
+
+enum class ZoneKind { Texture, Blend, Geometry };
+const char* toString(ZoneKind kind);
+
+struct Texture {
+    int id = 0;
+    int cell = 0, wall = 0;
+    glm::dvec3 samplingPoint{0.0};   // world
+    Polygon2 validRegion;            // floor polygon (x, z) where the bound is proven
+    double maxError = 0.0;           // radians, exact depth-independent maximum over validRegion
+    glm::ivec2 resolution{0};        // texels, from pixelsPerDegree (see texelSize)
+};
+
+struct Zone {
+    int id = 0;
+    int cell = 0, wall = 0;
+    ZoneKind kind = ZoneKind::Geometry;
+    Polygon2 floorPolygon;            // convex, (x, z), orientation of the cell's region
+    glm::dvec2 heightRange{1.2, 2.0}; // absolute y
+    std::vector<int> textures;        // texture ids: one for texture zones, all mixed for blends
+    bool mixesGeometry = false;       // blend zones next to a geometry zone
+};
+
+struct PlannedWall {
+    int id = 0;                       // index into SceneDescription::walls
+    std::string name;
+    display::ScreenQuad quad;
+    std::array<int, 2> cells{-1, -1}; // [front, back]
+    // Largest distance behind the plane of geometry baked into its textures (both sides),
+    // metres; infinity until known (assignDepthBehind in walls/visibility.h).
+    double depthBehind = std::numeric_limits<double>::infinity();
+};
+
+// One row of a side's layout in the side's floor frame (s along the wall, d into the cell).
+// Column k spans s in [cuts[k-1], cuts[k]] (the first and last are open-ended); its texture is
+// proven on that span widened by blendWidth / 2 at interior cuts, times `validated` in d, all
+// clipped to the cell.
+struct PlannedRow {
+    double near = 0.0, far = 0.0;     // d range of the row (metres)
+    glm::dvec2 validated{0.0};        // d range its textures are proven for (may be infinite)
+    std::vector<double> cuts;         // column borders (s), increasing
+    std::vector<int> textures;        // texture id per column: cuts.size() + 1 entries
+};
+
+// The zones of one cell for one wall: zones[firstZone, firstZone + zoneCount).
+struct WallSide {
+    int cell = 0, wall = 0, side = 0; // side 0: the cell is in front of the wall
+    int firstZone = 0, zoneCount = 0;
+    int textureCount = 0;
+    double geometryDistance = 0.0;    // dG, metres from the wall's footprint line (no geometry
+                                      // zone when it equals the cell's nearest d)
+    bool hasGeometry = false;
+    // The floor frame: world (x, z) = origin + s * along + d * inward; inward points into the
+    // cell. Rows are ordered by distance from the wall.
+    glm::dvec2 origin{0.0}, along{1.0, 0.0}, inward{0.0, 1.0};
+    std::vector<PlannedRow> rows;
+};
+
+struct Plan {
+    double alphaDeg = 10.0;
+    PlanOptions options;
+    std::vector<PlannedWall> walls;
+    std::vector<WallSide> sides;
+    std::vector<Texture> textures;
+    std::vector<Zone> zones;
+};
+
+// Plans every cell/wall pair of a validated description. Walls must not be horizontal.
+Plan planZones(const scenes::SceneDescription& description, const PlanOptions& options = {});
+
+// The zone of (cell, wall) containing floor point p (x, z), or -1. Zones of a side are
+// searched linearly (a side has tens of zones).
+int findZone(const Plan& plan, int cell, int wall, glm::dvec2 p);
+
+// Texel edge length (metres) for a texture whose valid region's nearest point is `distance`
+// metres from the wall: one texel spans 1/pixelsPerDegree degrees there.
+double texelSize(double distance, double pixelsPerDegree);
+
+}  // namespace cavewall::walls

@@ -1,0 +1,142 @@
+#include "walls/plan_io.h"
+
+#include "config/json_reader.h"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+namespace cavewall::walls {
+namespace {
+
+nlohmann::json vec(glm::dvec3 v) { return {v.x, v.y, v.z}; }
+
+ZoneKind kindFrom(const std::string& s) {
+    return s == "texture" ? ZoneKind::Texture : s == "blend" ? ZoneKind::Blend : ZoneKind::Geometry;
+}
+
+PlannedWall wallFrom(const config::JsonNode& n, int index) {
+    n.expectKeys({"id", "lowerLeft", "lowerRight", "upperLeft", "cells", "depthBehind"});
+    PlannedWall w;
+    w.id = n.at("id").integer(index, index);
+    w.quad = {n.at("lowerLeft").vec3(), n.at("lowerRight").vec3(), n.at("upperLeft").vec3()};
+    const auto cells = n.at("cells").items(2, 2);
+    w.cells = {cells[0].integer(-1, 1 << 30), cells[1].integer(-1, 1 << 30)};
+    const config::JsonNode depth = n.at("depthBehind");
+    w.depthBehind = depth.raw().is_null() ? std::numeric_limits<double>::infinity() : depth.number(0, 1e12);
+    return w;
+}
+
+glm::dvec3 pointFrom(const config::JsonNode& n) { return n.vec3(); }
+
+int textureFor(Plan& plan, std::map<std::tuple<int, int, double, double, double>, int>& ids, const Zone& z, glm::dvec3 s) {
+    const auto key = std::make_tuple(z.cell, z.wall, s.x, s.y, s.z);
+    if (auto it = ids.find(key); it != ids.end()) return it->second;
+    Texture t;
+    t.id = int(plan.textures.size());
+    t.cell = z.cell, t.wall = z.wall, t.samplingPoint = s;
+    plan.textures.push_back(t);
+    return ids[key] = t.id;
+}
+
+}  // namespace
+
+nlohmann::json planToJson(const Plan& plan) {
+    nlohmann::json walls = nlohmann::json::array(), zones = nlohmann::json::array();
+    for (const PlannedWall& w : plan.walls)
+        walls.push_back({{"id", w.id}, {"lowerLeft", vec(w.quad.lowerLeft)}, {"lowerRight", vec(w.quad.lowerRight)},
+                         {"upperLeft", vec(w.quad.upperLeft)}, {"cells", {w.cells[0], w.cells[1]}},
+                         {"depthBehind", std::isfinite(w.depthBehind) ? nlohmann::json(w.depthBehind) : nlohmann::json()}});
+    for (const Zone& z : plan.zones) {
+        nlohmann::json polygon = nlohmann::json::array();
+        for (const glm::dvec2& p : z.floorPolygon) polygon.push_back({p.x, p.y});
+        nlohmann::json j = {{"id", z.id}, {"cell", z.cell}, {"wall", z.wall}, {"kind", toString(z.kind)},
+                            {"floorPolygon", polygon}, {"heightRange", {z.heightRange.x, z.heightRange.y}}};
+        if (z.kind == ZoneKind::Texture) j["samplingPoint"] = vec(plan.textures[z.textures.at(0)].samplingPoint);
+        if (z.kind == ZoneKind::Blend) {
+            nlohmann::json points = nlohmann::json::array();
+            for (int t : z.textures) points.push_back(vec(plan.textures[t].samplingPoint));
+            j["samplingPoints"] = points;
+            j["mixesGeometry"] = z.mixesGeometry;
+        }
+        zones.push_back(j);
+    }
+    return {{"alphaDeg", plan.alphaDeg}, {"walls", walls}, {"zones", zones}};
+}
+
+Plan planFromJson(std::string_view text, const std::string& source) {
+    const config::JsonDocument doc = config::JsonDocument::fromText(text, source);
+    const config::JsonNode root = doc.root();
+    root.expectKeys({"alphaDeg", "walls", "zones"});
+    Plan plan;
+    plan.alphaDeg = root.at("alphaDeg").number(1e-9, 90);
+    plan.options.alphaDeg = plan.alphaDeg;
+    const auto walls = root.at("walls").items();
+    for (int i = 0; i < int(walls.size()); ++i) plan.walls.push_back(wallFrom(walls[i], i));
+    std::map<std::tuple<int, int, double, double, double>, int> ids;
+    const auto zones = root.at("zones").items();
+    for (int i = 0; i < int(zones.size()); ++i) {
+        const config::JsonNode& n = zones[i];
+        n.expectKeys({"id", "cell", "wall", "kind", "floorPolygon", "heightRange", "samplingPoint", "samplingPoints", "mixesGeometry"});
+        Zone z;
+        z.id = n.at("id").integer(i, i);
+        z.cell = n.at("cell").integer(0, 1 << 30);
+        z.wall = n.at("wall").integer(0, int(plan.walls.size()) - 1);
+        z.kind = kindFrom(n.at("kind").oneOf({"texture", "blend", "geometry"}));
+        for (const auto& p : n.at("floorPolygon").items(3)) z.floorPolygon.push_back(p.vec2());
+        z.heightRange = n.at("heightRange").vec2();
+        if (z.kind == ZoneKind::Texture) z.textures.push_back(textureFor(plan, ids, z, pointFrom(n.at("samplingPoint"))));
+        if (z.kind == ZoneKind::Blend) {
+            for (const auto& p : n.at("samplingPoints").items(1)) z.textures.push_back(textureFor(plan, ids, z, pointFrom(p)));
+            z.mixesGeometry = n.at("mixesGeometry").boolean();
+        }
+        plan.zones.push_back(std::move(z));
+    }
+    return plan;
+}
+
+PlanTotals planTotals(const Plan& plan) {
+    PlanTotals t;
+    for (const Zone& z : plan.zones)
+        (z.kind == ZoneKind::Texture ? t.textureZones : z.kind == ZoneKind::Blend ? t.blendZones : t.geometryZones)++;
+    t.textures = int(plan.textures.size());
+    for (const Texture& tex : plan.textures) t.texels += double(tex.resolution.x) * tex.resolution.y;
+    t.gpuBytes = t.texels * 4.0 * 4.0 / 3.0;
+    t.diskBytes = t.gpuBytes;
+    return t;
+}
+
+void printPlanSummary(std::ostream& out, const Plan& plan, const scenes::SceneDescription& d) {
+    const PlanTotals totals = planTotals(plan);
+    char line[256];
+    std::snprintf(line, sizeof line, "plan '%s': alpha %g°, %zu cells, %zu walls, head heights %g-%g m\n", d.name.c_str(),
+                  plan.alphaDeg, d.cells.size(), plan.walls.size(), d.headHeightRange.x, d.headHeightRange.y);
+    out << line;
+    std::snprintf(line, sizeof line, "%-16s %-16s %10s %9s %9s %9s %9s %10s\n", "cell", "wall", "geometry", "texture",
+                  "blend", "geom", "textures", "Mtexels");
+    out << line;
+    for (const WallSide& s : plan.sides) {
+        int kinds[3] = {0, 0, 0};
+        double texels = 0;
+        for (int z = s.firstZone; z < s.firstZone + s.zoneCount; ++z) kinds[int(plan.zones[z].kind)]++;
+        for (const Texture& t : plan.textures)
+            if (t.cell == s.cell && t.wall == s.wall) texels += double(t.resolution.x) * t.resolution.y;
+        std::snprintf(line, sizeof line, "%-16s %-16s %8.2f m %9d %9d %9d %9d %10.2f\n", d.cells[s.cell].name.c_str(),
+                      plan.walls[s.wall].name.c_str(), s.geometryDistance, kinds[0], kinds[1], kinds[2], s.textureCount,
+                      texels * 1e-6);
+        out << line;
+    }
+    std::snprintf(line, sizeof line,
+                  "total: %d texture, %d blend, %d geometry zones; %d textures, %.2f Mtexels; GPU %.1f MiB (RGBA8 + MIP "
+                  "chain); disk <= %.1f MiB (uncompressed tiled + MIP)\n",
+                  totals.textureZones, totals.blendZones, totals.geometryZones, totals.textures, totals.texels * 1e-6,
+                  totals.gpuBytes / 1048576.0, totals.diskBytes / 1048576.0);
+    out << line;
+    std::snprintf(line, sizeof line,
+                  "texel density: %g px/degree at the nearest point of each texture's valid region, capped at %d texels "
+                  "per side\n",
+                  plan.options.pixelsPerDegree, plan.options.maxResolution);
+    out << line;
+}
+
+}  // namespace cavewall::walls

@@ -1,0 +1,46 @@
+#pragma once
+// The plan as a JSON document (for tools outside cavewall that check the bound) and as a
+// printed summary.
+//
+// JSON: {"alphaDeg": 10,
+//        "walls": [{"id", "lowerLeft", "lowerRight", "upperLeft", "cells": [front, back],
+//                   "depthBehind": metres or null when unknown}],
+//        "zones": [{"id", "cell", "wall", "kind": "texture" | "blend" | "geometry",
+//                   "floorPolygon": [[x, z], ...], "heightRange": [y0, y1],
+//                   "samplingPoint": [x, y, z]            (texture zones)
+//                   "samplingPoints": [[x, y, z], ...],   (blend zones: every texture mixed)
+//                   "mixesGeometry": bool                 (blend zones: also fades to geometry)}]}
+// Coordinates are world metres (config/conventions.h); floor polygons are (x, z).
+
+#include "scenes/scene_description.h"
+#include "walls/plan.h"
+
+#include <nlohmann/json.hpp>
+
+#include <ostream>
+#include <string>
+#include <string_view>
+
+namespace cavewall::walls {
+
+nlohmann::json planToJson(const Plan& plan);
+
+// Reads a plan document; textures are rebuilt from the distinct sampling points of each cell
+// and wall (resolution and maxError are not stored and stay 0). Throws cavewall::Error with the
+// JSON path on bad input.
+Plan planFromJson(std::string_view text, const std::string& source);
+
+struct PlanTotals {
+    int textureZones = 0, blendZones = 0, geometryZones = 0;
+    int textures = 0;
+    double texels = 0;       // base level texels over all textures
+    double gpuBytes = 0;     // RGBA8 with a full MIP chain (4/3 of the base level)
+    double diskBytes = 0;    // same, uncompressed: an upper bound for tiled MIP-mapped files
+};
+PlanTotals planTotals(const Plan& plan);
+
+// The summary table of `cavewall plan`: one line per cell and wall, then totals and the texel
+// density rule.
+void printPlanSummary(std::ostream& out, const Plan& plan, const scenes::SceneDescription& description);
+
+}  // namespace cavewall::walls

@@ -1,0 +1,139 @@
+#include "walls/texture_pager.h"
+
+#include <algorithm>
+#include <climits>
+#include <utility>
+
+namespace cavewall::walls {
+
+TexturePager::TexturePager(std::filesystem::path folder, BakeManifest manifest, double budgetMB, Decoder decoder)
+    : _folder(std::move(folder)), _budget(static_cast<std::size_t>(budgetMB * 1024 * 1024)), _decoder(std::move(decoder)) {
+    for (BakedTexture& t : manifest.textures) _textures[t.id] = std::move(t);
+    _thread = std::thread([this] { worker(); });
+}
+
+TexturePager::~TexturePager() {
+    {
+        std::lock_guard lock(_mutex);
+        _stop = true;
+    }
+    _wake.notify_all();
+    _thread.join();
+}
+
+void TexturePager::request(const std::vector<int>& now, const std::vector<int>& soon) {
+    std::lock_guard lock(_mutex);
+    ++_frame;
+    _wantedNow = std::set<int>(now.begin(), now.end());
+    std::deque<int> queue;
+    auto want = [&](int id, bool isNow) {
+        if (!_textures.count(id) || _failed.count(id)) return;
+        _lastWanted[id] = _frame;
+        if (_resident.count(id)) return;
+        _stats.misses += isNow;
+        const bool pending = _decoding.count(id) ||
+                             std::any_of(_ready.begin(), _ready.end(), [&](const DecodedTexture& r) { return r.id == id; });
+        if (!pending && std::find(queue.begin(), queue.end(), id) == queue.end()) queue.push_back(id);
+    };
+    for (int id : now) want(id, true);
+    for (int id : soon) want(id, false);
+    // Only this frame's wishes stay queued, in this frame's priority order.
+    _queue = std::move(queue);
+    _queued = std::set<int>(_queue.begin(), _queue.end());
+    if (!_queue.empty()) _wake.notify_one();
+}
+
+void TexturePager::worker() {
+    std::unique_lock lock(_mutex);
+    for (;;) {
+        _wake.wait(lock, [&] { return _stop || !_queue.empty(); });
+        if (_stop) return;
+        const int id = _queue.front();
+        _queue.pop_front();
+        _queued.erase(id);
+        _decoding.insert(id);
+        const auto path = _folder / _textures.at(id).file;
+        lock.unlock();
+        DecodedTexture d{id, {}, 0};
+        bool ok = true;
+        try {
+            d.levels = _decoder(path);
+            for (const scenes::Image& level : d.levels) d.bytes += level.rgba.size();
+            ok = !d.levels.empty();
+        } catch (const std::exception&) {
+            ok = false;
+        }
+        lock.lock();
+        _decoding.erase(id);
+        if (ok) _ready.push_back(std::move(d));
+        else if (_failed.insert(id).second) ++_stats.failures;
+        if (_queue.empty() && _decoding.empty()) _idle.notify_all();
+    }
+}
+
+std::vector<DecodedTexture> TexturePager::takeReady(std::size_t maxBytes) {
+    std::lock_guard lock(_mutex);
+    // Wanted-now first.
+    std::stable_partition(_ready.begin(), _ready.end(), [&](const DecodedTexture& d) { return _wantedNow.count(d.id) > 0; });
+    std::vector<DecodedTexture> out;
+    std::size_t bytes = 0;
+    while (!_ready.empty() && (out.empty() || bytes + _ready.front().bytes <= maxBytes)) {
+        bytes += _ready.front().bytes;
+        out.push_back(std::move(_ready.front()));
+        _ready.erase(_ready.begin());
+    }
+    return out;
+}
+
+void TexturePager::evictFor(std::size_t bytes) {
+    std::size_t used = 0;
+    for (const auto& [id, b] : _resident) used += b;
+    while (used + bytes > _budget) {
+        int victim = -1;
+        long oldest = LONG_MAX;
+        for (const auto& [id, b] : _resident)
+            if (!_wantedNow.count(id) && _lastWanted[id] < oldest) oldest = _lastWanted[id], victim = id;
+        if (victim < 0) return;  // everything resident is wanted now: over budget until the view moves
+        used -= _resident[victim];
+        _resident.erase(victim);
+        _evictions.push_back(victim);
+        ++_stats.evictions;
+    }
+}
+
+void TexturePager::markResident(int id, std::size_t bytes) {
+    std::lock_guard lock(_mutex);
+    evictFor(bytes);
+    _resident[id] = bytes;
+    ++_stats.pageIns;
+}
+
+std::vector<int> TexturePager::takeEvictions() {
+    std::lock_guard lock(_mutex);
+    return std::exchange(_evictions, {});
+}
+
+bool TexturePager::isResident(int id) const {
+    std::lock_guard lock(_mutex);
+    return _resident.count(id) > 0;
+}
+
+bool TexturePager::hasFailed(int id) const {
+    std::lock_guard lock(_mutex);
+    return _failed.count(id) > 0;
+}
+
+PagerStats TexturePager::stats() const {
+    std::lock_guard lock(_mutex);
+    PagerStats s = _stats;
+    s.resident = static_cast<int>(_resident.size());
+    for (const auto& [id, b] : _resident) s.residentMB += static_cast<double>(b) / (1024.0 * 1024.0);
+    return s;
+}
+
+void TexturePager::waitIdle() {
+    std::unique_lock lock(_mutex);
+    _idle.wait(lock, [&] { return _queue.empty() && _decoding.empty(); });
+}
+
+}  // namespace cavewall::walls

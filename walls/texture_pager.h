@@ -1,0 +1,94 @@
+#pragma once
+// Paging of baked wall textures under a GPU memory budget, GL-free: a background thread decodes
+// texture files (all MIP levels) so that a frame never waits for the disk; the GL side
+// (walls/gl) uploads what is ready and deletes what the pager evicts.
+//
+// Per frame the runtime says which textures it draws now (non-zero weight) and which it may
+// draw soon (the neighbouring zones' textures). Requests for `now` are decoded first, then
+// `soon`. Residency is counted in bytes of all MIP levels (RGBA8) against the budget; when a
+// new texture would exceed it, the least recently wanted textures that are not wanted now are
+// evicted. A texture that is not resident is a miss for that frame: the runtime keeps drawing
+// what it drew before (the previous texture, or the geometry) — never a black wall.
+// Decoding failures (a missing or torn file) mark the texture failed for good and count it.
+
+#include "scenes/scene.h"
+#include "walls/bake_manifest.h"
+
+#include <condition_variable>
+#include <deque>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <set>
+#include <thread>
+#include <vector>
+
+namespace cavewall::walls {
+
+struct DecodedTexture {
+    int id = 0;
+    std::vector<scenes::Image> levels;   // MIP levels, largest first, RGBA8 premultiplied
+    std::size_t bytes = 0;               // sum over levels
+};
+
+struct PagerStats {
+    int resident = 0;                    // textures uploaded and not evicted
+    double residentMB = 0.0;
+    long pageIns = 0;                    // textures made resident so far
+    long misses = 0;                     // wanted-now textures that were not resident, summed over frames
+    long evictions = 0;
+    long failures = 0;                   // textures whose file could not be decoded
+};
+
+class TexturePager {
+public:
+    using Decoder = std::function<std::vector<scenes::Image>(const std::filesystem::path&)>;
+
+    // `folder` holds the manifest's files. `budgetMB` > 0. `decoder` reads every MIP level of a
+    // file (throws cavewall::Error on failure).
+    TexturePager(std::filesystem::path folder, BakeManifest manifest, double budgetMB, Decoder decoder);
+    ~TexturePager();
+    TexturePager(const TexturePager&) = delete;
+    TexturePager& operator=(const TexturePager&) = delete;
+
+    // Declares this frame's wishes and counts misses among `now`. Cheap; never blocks on I/O.
+    void request(const std::vector<int>& now, const std::vector<int>& soon);
+    // Decoded textures ready for upload, at most `maxBytes` of them (at least one if any is
+    // ready), in priority order. The caller uploads them and then calls markResident for each.
+    std::vector<DecodedTexture> takeReady(std::size_t maxBytes);
+    void markResident(int id, std::size_t bytes);
+    // Textures to delete on the GPU now to stay within the budget (never one wanted now).
+    std::vector<int> takeEvictions();
+
+    bool isResident(int id) const;
+    bool hasFailed(int id) const;
+    PagerStats stats() const;
+    // Blocks until the decoder is idle (nothing queued or decoding). For tests and for the
+    // bench's warm-up; the runtime never calls it per frame.
+    void waitIdle();
+
+private:
+    void worker();
+    void evictFor(std::size_t bytes);
+
+    std::filesystem::path _folder;
+    std::map<int, BakedTexture> _textures;   // by id
+    std::size_t _budget;
+    Decoder _decoder;
+
+    mutable std::mutex _mutex;
+    std::condition_variable _wake, _idle;
+    std::deque<int> _queue;                  // ids to decode, priority order
+    std::set<int> _queued, _decoding, _failed, _wantedNow;
+    std::vector<DecodedTexture> _ready;
+    std::map<int, std::size_t> _resident;    // id -> bytes
+    std::map<int, long> _lastWanted;         // id -> frame number
+    std::vector<int> _evictions;
+    long _frame = 0;
+    PagerStats _stats;
+    bool _stop = false;
+    std::thread _thread;
+};
+
+}  // namespace cavewall::walls

@@ -1,0 +1,238 @@
+#include "walls/visibility.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+
+namespace cavewall::walls {
+namespace {
+
+constexpr double kOnLine = 1e-6;      // metres: an edge lies on another's line
+constexpr double kMinOpening = 1e-3;  // metres of open boundary that count as a connection
+
+struct Segment {
+    glm::dvec2 a, b;
+};
+
+Segment footprint(glm::dvec3 lowerLeft, glm::dvec3 lowerRight) {
+    return {{lowerLeft.x, lowerLeft.z}, {lowerRight.x, lowerRight.z}};
+}
+
+double cross2(glm::dvec2 u, glm::dvec2 v) { return u.x * v.y - u.y * v.x; }
+
+// The interval of `s` along `e` (parameters in metres from e.a) when s lies on e's line.
+bool onLine(const Segment& e, const Segment& s, glm::dvec2& interval) {
+    const glm::dvec2 dir = e.b - e.a;
+    const double len = glm::length(dir);
+    if (len == 0) return false;
+    const glm::dvec2 u = dir / len;
+    if (std::abs(cross2(u, s.a - e.a)) > kOnLine || std::abs(cross2(u, s.b - e.a)) > kOnLine) return false;
+    const double t0 = glm::dot(s.a - e.a, u), t1 = glm::dot(s.b - e.a, u);
+    interval = {std::max(0.0, std::min(t0, t1)), std::min(len, std::max(t0, t1))};
+    return interval.y > interval.x;
+}
+
+std::vector<Segment> allFootprints(const scenes::SceneDescription& d) {
+    std::vector<Segment> out;
+    for (const auto& w : d.walls) out.push_back(footprint(w.lowerLeft, w.lowerRight));
+    for (const auto& w : d.realWalls) out.push_back(footprint(w.lowerLeft, w.lowerRight));
+    return out;
+}
+
+// Length of `shared` minus the union of `covers` (intervals on one line).
+double uncovered(glm::dvec2 shared, std::vector<glm::dvec2> covers) {
+    std::sort(covers.begin(), covers.end(), [](glm::dvec2 x, glm::dvec2 y) { return x.x < y.x; });
+    double open = 0, at = shared.x;
+    for (const glm::dvec2& c : covers) {
+        if (c.x > at) open += std::min(c.x, shared.y) - at;
+        at = std::max(at, c.y);
+        if (at >= shared.y) break;
+    }
+    return open + std::max(0.0, shared.y - at);
+}
+
+double signedDistance(glm::dvec3 p, const display::ScreenQuad& wall, const display::ScreenBasis& b, int side) {
+    return glm::dot(p - wall.lowerLeft, b.normal) * (side == 0 ? 1.0 : -1.0);
+}
+
+bool partlyBehind(const scenes::Cell& cell, const scenes::VirtualWall& w, int side) {
+    const display::ScreenQuad q{w.lowerLeft, w.lowerRight, w.upperLeft};
+    const display::ScreenBasis b = display::screenBasis(q);
+    for (const glm::dvec2& p : cell.region)
+        if (signedDistance({p.x, w.lowerLeft.y, p.y}, q, b, side) < -1e-9) return true;
+    return false;
+}
+
+// Convex hull (Andrew's monotone chain) of a few points.
+Polygon2 hull(std::vector<glm::dvec2> pts) {
+    std::sort(pts.begin(), pts.end(), [](glm::dvec2 a, glm::dvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    if (pts.size() < 3) return pts;
+    Polygon2 h(2 * pts.size());
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        while (k >= 2 && cross2(h[k - 1] - h[k - 2], pts[i] - h[k - 2]) <= 0) --k;
+        h[k++] = pts[i];
+    }
+    for (std::size_t i = pts.size() - 1, t = k + 1; i > 0; --i) {
+        while (k >= t && cross2(h[k - 1] - h[k - 2], pts[i - 1] - h[k - 2]) <= 0) --k;
+        h[k++] = pts[i - 1];
+    }
+    h.resize(k - 1);
+    return h;
+}
+
+}  // namespace
+
+const char* toString(CellVisibility v) {
+    switch (v) {
+    case CellVisibility::Hidden: return "hidden";
+    case CellVisibility::Geometry: return "geometry";
+    case CellVisibility::Texture: return "texture";
+    }
+    return "?";
+}
+
+const char* toString(Placement p) {
+    switch (p) {
+    case Placement::Behind: return "behind";
+    case Placement::Intersecting: return "intersecting";
+    case Placement::InFront: return "in front";
+    case Placement::Beside: return "beside";
+    }
+    return "?";
+}
+
+double openBoundaryLength(const scenes::SceneDescription& d, int a, int b) {
+    const std::vector<Segment> walls = allFootprints(d);
+    const auto& ra = d.cells[a].region;
+    const auto& rb = d.cells[b].region;
+    double open = 0;
+    for (std::size_t i = 0; i < ra.size(); ++i) {
+        const Segment e{ra[i], ra[(i + 1) % ra.size()]};
+        for (std::size_t j = 0; j < rb.size(); ++j) {
+            glm::dvec2 shared;
+            if (!onLine(e, {rb[j], rb[(j + 1) % rb.size()]}, shared)) continue;
+            std::vector<glm::dvec2> covers;
+            for (const Segment& w : walls) {
+                glm::dvec2 c;
+                if (onLine(e, w, c)) covers.push_back(c);
+            }
+            open += uncovered(shared, covers);
+        }
+    }
+    return open;
+}
+
+VisibilityTable computeVisibility(const scenes::SceneDescription& d) {
+    const int n = int(d.cells.size());
+    VisibilityTable t;
+    t.cellCount = n;
+    t.entries.assign(std::size_t(n) * n, CellVisibility::Hidden);
+    t.walls.assign(std::size_t(n) * n, {});
+    std::vector<std::vector<int>> open(n), passable(n);
+    for (int a = 0; a < n; ++a)
+        for (int b = a + 1; b < n; ++b)
+            if (openBoundaryLength(d, a, b) > kMinOpening) open[a].push_back(b), open[b].push_back(a);
+    for (int a = 0; a < n; ++a) passable[a] = open[a];
+    for (const auto& w : d.walls)
+        if (w.cells[0] >= 0 && w.cells[1] >= 0) passable[w.cells[0]].push_back(w.cells[1]), passable[w.cells[1]].push_back(w.cells[0]);
+    auto flood = [&](int start, const std::vector<std::vector<int>>& links, const std::vector<bool>& blocked) {
+        std::vector<bool> seen(n, false);
+        std::deque<int> queue{start};
+        seen[start] = true;
+        while (!queue.empty()) {
+            const int c = queue.front();
+            queue.pop_front();
+            for (int next : links[c])
+                if (!seen[next] && !blocked[next]) seen[next] = true, queue.push_back(next);
+        }
+        return seen;
+    };
+    for (int a = 0; a < n; ++a) {
+        const std::vector<bool> group = flood(a, open, std::vector<bool>(n, false));
+        for (int b = 0; b < n; ++b)
+            if (group[b]) t.entries[std::size_t(a) * n + b] = CellVisibility::Geometry;
+        for (int w = 0; w < int(d.walls.size()); ++w)
+            for (int side = 0; side < 2; ++side) {
+                const int here = d.walls[w].cells[side], there = d.walls[w].cells[1 - side];
+                if (here < 0 || there < 0 || !group[here] || group[there]) continue;
+                const std::vector<bool> behind = flood(there, passable, group);
+                for (int b = 0; b < n; ++b) {
+                    if (!behind[b] || !partlyBehind(d.cells[b], d.walls[w], side)) continue;
+                    t.entries[std::size_t(a) * n + b] = CellVisibility::Texture;
+                    t.walls[std::size_t(a) * n + b].push_back(w);
+                }
+            }
+    }
+    return t;
+}
+
+Placement classify(const scenes::Bounds& box, const display::ScreenQuad& wall, int side) {
+    const display::ScreenBasis b = display::screenBasis(wall);
+    glm::dvec3 corners[8];
+    double dist[8], lo = INFINITY, hi = -INFINITY;
+    for (int i = 0; i < 8; ++i) {
+        corners[i] = {i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y, i & 4 ? box.max.z : box.min.z};
+        dist[i] = signedDistance(corners[i], wall, b, side);
+        lo = std::min(lo, dist[i]), hi = std::max(hi, dist[i]);
+    }
+    if (hi <= 0) return Placement::Behind;
+    if (lo >= 0) return Placement::InFront;
+    // The box's cross-section with the plane, in wall coordinates, against the rectangle.
+    std::vector<glm::dvec2> section;
+    auto toWall = [&](glm::dvec3 p) { return glm::dvec2(glm::dot(p - wall.lowerLeft, b.right), glm::dot(p - wall.lowerLeft, b.up)); };
+    for (int i = 0; i < 8; ++i) {
+        if (dist[i] == 0) section.push_back(toWall(corners[i]));
+        for (int axis = 1; axis <= 4; axis <<= 1) {
+            const int j = i | axis;
+            if (j == i || (dist[i] < 0) == (dist[j] < 0) || dist[i] == 0 || dist[j] == 0) continue;
+            section.push_back(toWall(corners[i] + (corners[j] - corners[i]) * (dist[i] / (dist[i] - dist[j]))));
+        }
+    }
+    const Polygon2 h = hull(section);
+    const Polygon2 inside = clipBox(h, {0, 0}, {b.width, b.height});
+    bool touches = !inside.empty();
+    for (const glm::dvec2& p : h)
+        touches = touches || (p.x >= 0 && p.x <= b.width && p.y >= 0 && p.y <= b.height);
+    return touches ? Placement::Intersecting : Placement::Beside;
+}
+
+WallContents wallContents(const scenes::Scene& scene, const scenes::SceneDescription& d, const VisibilityTable& table,
+                          int wall, int side) {
+    WallContents out;
+    const scenes::VirtualWall& w = d.walls[wall];
+    const display::ScreenQuad q{w.lowerLeft, w.lowerRight, w.upperLeft};
+    const display::ScreenBasis b = display::screenBasis(q);
+    const int viewer = w.cells[side];
+    for (int i = 0; i < int(scene.objects.size()); ++i) {
+        const scenes::Object& o = scene.objects[i];
+        if (o.role == scenes::Role::Structure || o.worldBounds.empty()) continue;
+        const Placement p = classify(o.worldBounds, q, side);
+        if (p == Placement::Intersecting) out.intersecting.push_back(i);
+        if (p != Placement::Behind) continue;
+        bool shown = o.cell < 0 || viewer < 0;
+        if (!shown && o.cell < table.cellCount) {
+            const auto& through = table.throughWalls(viewer, o.cell);
+            shown = std::find(through.begin(), through.end(), wall) != through.end();
+        }
+        if (!shown) continue;
+        out.baked.push_back(i);
+        for (int c = 0; c < 8; ++c) {
+            const glm::dvec3 corner{c & 1 ? o.worldBounds.max.x : o.worldBounds.min.x, c & 2 ? o.worldBounds.max.y : o.worldBounds.min.y,
+                                    c & 4 ? o.worldBounds.max.z : o.worldBounds.min.z};
+            out.depthBehind = std::max(out.depthBehind, -signedDistance(corner, q, b, side));
+        }
+    }
+    return out;
+}
+
+void assignDepthBehind(Plan& plan, const scenes::Scene& scene, const scenes::SceneDescription& d,
+                       const VisibilityTable& table) {
+    for (PlannedWall& w : plan.walls) {
+        w.depthBehind = 0.0;
+        for (int side = 0; side < 2; ++side)
+            if (w.cells[side] >= 0) w.depthBehind = std::max(w.depthBehind, wallContents(scene, d, table, w.id, side).depthBehind);
+    }
+}
+
+}  // namespace cavewall::walls

@@ -1,0 +1,64 @@
+#pragma once
+// Cell-to-cell visibility (Teller's lookup table, simplified as in seed 000 §5) and the
+// classification of scene objects against virtual walls.
+//
+// Cells joined by an open boundary (a shared floor edge not covered by any wall's footprint)
+// see each other directly and are drawn as geometry. Virtual walls and portals occlude: the
+// cells behind them (reached through further virtual walls, portals or open boundaries, and at
+// least partly behind the wall's plane) are shown by the wall's textures. Real walls occlude
+// completely; cells joined only through a real wall without a portal are hidden.
+
+#include "scenes/scene.h"
+#include "scenes/scene_description.h"
+#include "walls/plan.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace cavewall::walls {
+
+enum class CellVisibility : std::uint8_t { Hidden, Geometry, Texture };
+const char* toString(CellVisibility v);
+
+struct VisibilityTable {
+    int cellCount = 0;
+    std::vector<CellVisibility> entries;   // [from * cellCount + to]
+    std::vector<std::vector<int>> walls;   // [from * cellCount + to]: walls whose textures show `to`
+
+    CellVisibility at(int from, int to) const { return entries[std::size_t(from) * cellCount + to]; }
+    const std::vector<int>& throughWalls(int from, int to) const { return walls[std::size_t(from) * cellCount + to]; }
+};
+
+VisibilityTable computeVisibility(const scenes::SceneDescription& description);
+
+// Length (metres) of the boundary cells a and b share that no wall (virtual, portal or real)
+// covers.
+double openBoundaryLength(const scenes::SceneDescription& description, int a, int b);
+
+// Where an axis-aligned box is relative to a wall seen from `side` (0: the front, i.e. the side
+// the wall's normal points to). Exact for the box.
+enum class Placement : std::uint8_t {
+    Behind,        // entirely on the far side of the plane (touching allowed): baked
+    Intersecting,  // crosses the plane within the wall rectangle: drawn as geometry, never baked
+    InFront,       // entirely on the viewer's side
+    Beside,        // crosses the plane outside the rectangle: drawn by its own cell, not baked
+};
+const char* toString(Placement p);
+Placement classify(const scenes::Bounds& bounds, const display::ScreenQuad& wall, int side);
+
+struct WallContents {
+    std::vector<int> baked;          // object indices in the wall's texture for this side
+    std::vector<int> intersecting;   // content objects crossing the wall (drawn as geometry)
+    double depthBehind = 0.0;        // metres: deepest baked box corner behind the plane
+};
+
+// What the textures of `wall` seen from `side` show: content objects behind the plane whose
+// cell the table shows through this wall (or whose cell is unknown). Structure never.
+WallContents wallContents(const scenes::Scene& scene, const scenes::SceneDescription& description,
+                          const VisibilityTable& table, int wall, int side);
+
+// Sets every PlannedWall::depthBehind to the largest of its two sides' depths.
+void assignDepthBehind(Plan& plan, const scenes::Scene& scene, const scenes::SceneDescription& description,
+                       const VisibilityTable& table);
+
+}  // namespace cavewall::walls

@@ -1,0 +1,261 @@
+#include "walls/zone_layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace cavewall::walls {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kMinPieceArea = 1e-8;  // m²; slivers from clipping are dropped
+constexpr double kNearerSampling[] = {0.75, 0.5};  // share of the core kept, nearest the wall
+
+struct Row {
+    double a = 0, b = 0;
+    double dLo = 0, dHi = 0;            // the extended (validated) depth range
+    std::vector<double> cuts;           // column borders (s)
+    std::vector<glm::dvec3> samples;    // one per column
+};
+
+struct Context {
+    const SideInput& in;
+    Polygon2 cell;                      // local (s, d)
+    double alpha, blend, minSize;
+    double sLo, sHi, dMin, dMax;
+
+    Polygon2 world(const Polygon2& local) const {
+        Polygon2 out;
+        for (const glm::dvec2& p : local) out.push_back(in.frame.toWorld(p));
+        return out;
+    }
+    glm::dvec3 sampling(const Polygon2& local) const {
+        const glm::dvec2 w = in.frame.toWorld(centroid(local));
+        return {w.x, 0.5 * (in.heightRange.x + in.heightRange.y), w.y};
+    }
+    // Is the column [left, right] of the row valid (proven within alpha over its extension)?
+    bool valid(const Row& row, double left, double right, glm::dvec3* sample) const {
+        const Polygon2 core = clipBox(cell, {left, row.a}, {right, row.b});
+        const Polygon2 ext = clipBox(cell, {left - 0.5 * blend, row.dLo}, {right + 0.5 * blend, row.dHi});
+        *sample = sampling(core.empty() ? (ext.empty() ? cell : ext) : core);
+        if (ext.empty()) return true;
+        const ZoneVolume volume{world(ext), in.heightRange};
+        if (zoneWithin(volume, *sample, in.quad, alpha)) return true;
+        // Eyes near the wall dominate the error: a sampling point nearer the wall's side of
+        // the zone often serves the whole zone when the centroid does not.
+        for (double f : kNearerSampling) {
+            const double d = glm::dot(in.frame.toLocal({sample->x, sample->z}), glm::dvec2(0, 1));
+            const Polygon2 nearer = clipBox(core.empty() ? ext : core, {-kInf, -kInf}, {kInf, row.a + f * (d - row.a) * 2});
+            if (nearer.empty()) continue;
+            const glm::dvec3 s = sampling(nearer);
+            if (zoneWithin(volume, s, in.quad, alpha)) return *sample = s, true;
+        }
+        return false;
+    }
+};
+
+void extentOf(const Polygon2& p, glm::dvec2& lo, glm::dvec2& hi) {
+    lo = glm::dvec2(kInf), hi = glm::dvec2(-kInf);
+    for (const glm::dvec2& v : p) lo = glm::min(lo, v), hi = glm::max(hi, v);
+}
+
+// Greedy columns of maximal width (bisection to 1 mm); nullopt when it leaves a remainder
+// that is neither valid whole nor splittable into columns of minZoneSize.
+std::optional<Row> greedyColumns(const Context& c, Row row, double sLo, double sHi) {
+    double left = -kInf, leftPos = sLo;
+    for (;;) {
+        glm::dvec3 sample;
+        if (c.valid(row, left, kInf, &sample)) {
+            row.samples.push_back(sample);
+            return row;
+        }
+        double good = leftPos + c.minSize, bad = sHi - c.minSize;
+        glm::dvec3 goodSample, trial;
+        if (good > bad || !c.valid(row, left, good, &goodSample)) return std::nullopt;
+        if (c.valid(row, left, bad, &trial)) good = bad, goodSample = trial;
+        while (bad - good > 1e-3) {
+            const double mid = 0.5 * (good + bad);
+            if (c.valid(row, left, mid, &trial)) good = mid, goodSample = trial;
+            else bad = mid;
+        }
+        row.cuts.push_back(good);
+        row.samples.push_back(goodSample);
+        left = leftPos = good;
+    }
+}
+
+// n columns of equal width; nullopt when one of them is not valid.
+std::optional<Row> equalColumns(const Context& c, Row row, double sLo, double sHi, int n) {
+    for (int k = 1; k < n; ++k) row.cuts.push_back(sLo + (sHi - sLo) * k / n);
+    for (int k = 0; k < n; ++k) {
+        glm::dvec3 sample;
+        if (!c.valid(row, k == 0 ? -kInf : row.cuts[k - 1], k + 1 == n ? kInf : row.cuts[k], &sample)) return std::nullopt;
+        row.samples.push_back(sample);
+    }
+    return row;
+}
+
+// The row's columns: greedy widths, or when the greedy cut leaves an unusable remainder, the
+// fewest equal columns that are all valid.
+std::optional<Row> planRow(const Context& c, const Row& row) {
+    const Polygon2 band = clipBox(c.cell, {-kInf, row.a}, {kInf, row.b});
+    glm::dvec2 lo, hi;
+    extentOf(band, lo, hi);
+    if (band.empty()) lo.x = hi.x = 0;
+    if (auto greedy = greedyColumns(c, row, lo.x, hi.x)) return greedy;
+    for (int n = 2; n <= int((hi.x - lo.x) / c.minSize); ++n)
+        if (auto equal = equalColumns(c, row, lo.x, hi.x, n)) return equal;
+    return std::nullopt;
+}
+
+Row makeRow(const Context& c, double a, double b, bool geometryBelow, bool first) {
+    Row r;
+    r.a = a, r.b = b;
+    r.dLo = first ? (geometryBelow ? a : -kInf) : a - 0.5 * c.blend;
+    r.dHi = b >= c.dMax ? kInf : b + 0.5 * c.blend;
+    return r;
+}
+
+// Rows from `start` to dMax; each row's depth is the candidate covering the most depth per
+// texture.
+std::optional<std::vector<Row>> planRows(const Context& c, double start, bool geometryBelow) {
+    std::vector<Row> rows;
+    for (double a = start; a < c.dMax;) {
+        std::optional<Row> best;
+        double bestScore = -1;
+        for (double extent = c.minSize;; extent *= 2) {
+            double b = std::min(c.dMax, a + extent);
+            if (c.dMax - b < c.minSize) b = c.dMax;
+            auto row = planRow(c, makeRow(c, a, b, geometryBelow, rows.empty()));
+            const double score = row ? (b - a) / double(row->samples.size()) : -1;
+            if (row && score >= bestScore) best = row, bestScore = score;
+            if (b >= c.dMax) break;
+        }
+        if (!best) return std::nullopt;
+        rows.push_back(*best);
+        a = best->b;
+    }
+    return rows;
+}
+
+bool firstRowFeasible(const Context& c, double d) {
+    const double b = c.dMax - d < 2 * c.minSize ? c.dMax : d + c.minSize;
+    return planRow(c, makeRow(c, d, b, true, true)).has_value();
+}
+
+struct Layout {
+    bool geometryBelow = false;
+    double dG = 0;
+    std::vector<Row> rows;              // empty: the whole cell is geometry
+};
+
+Layout layout(const Context& c) {
+    if (auto rows = planRows(c, c.dMin, false)) return {false, c.dMin, *rows};
+    double lo = c.dMin, hi = std::max(c.dMin, c.dMax - c.minSize);
+    if (!firstRowFeasible(c, hi)) return {true, c.dMax, {}};
+    while (hi - lo > 1e-3) {
+        const double mid = 0.5 * (lo + hi);
+        (firstRowFeasible(c, mid) ? hi : lo) = mid;
+    }
+    // Validity is not strictly monotone in d; move the geometry border outwards until the
+    // rows close (at worst the whole cell becomes geometry).
+    for (double dG = hi; dG < c.dMax; dG += c.minSize)
+        if (auto rows = planRows(c, dG, true)) return {true, dG, *rows};
+    return {true, c.dMax, {}};
+}
+
+struct Emitter {
+    const Context& c;
+    Plan& plan;
+    const std::vector<Row>& rows;
+    std::vector<std::vector<int>> textureIds;  // [row][column]
+
+    void zone(ZoneKind kind, const Polygon2& local, std::vector<int> textures, bool mixesGeometry) {
+        if (local.empty() || std::abs(signedArea(local)) < kMinPieceArea) return;
+        Zone z;
+        z.id = int(plan.zones.size());
+        z.cell = c.in.cell, z.wall = c.in.wall, z.kind = kind;
+        z.floorPolygon = c.world(local);
+        z.heightRange = c.in.heightRange;
+        z.textures = std::move(textures);
+        z.mixesGeometry = mixesGeometry;
+        plan.zones.push_back(std::move(z));
+    }
+    // The column interval of row r, column k, widened by `grow` on interior borders.
+    glm::dvec2 column(const Row& r, std::size_t k, double grow) const {
+        return {k == 0 ? -kInf : r.cuts[k - 1] - grow, k == r.cuts.size() ? kInf : r.cuts[k] + grow};
+    }
+    // Cuts the depth band [d0, d1] at every column border +- blend/2 of the rows `which`; each piece mixes
+    // the textures whose validated columns contain it.
+    void band(double d0, double d1, const std::vector<int>& which, bool mixesGeometry) {
+        std::vector<double> breaks;
+        for (int r : which)
+            for (double cut : rows[r].cuts) breaks.insert(breaks.end(), {cut - 0.5 * c.blend, cut + 0.5 * c.blend});
+        std::sort(breaks.begin(), breaks.end());
+        breaks.insert(breaks.begin(), -kInf);
+        breaks.push_back(kInf);
+        for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+            const double p = breaks[i], q = breaks[i + 1];
+            if (!(q > p)) continue;
+            std::vector<int> textures;
+            for (int r : which)
+                for (std::size_t k = 0; k <= rows[r].cuts.size(); ++k) {
+                    const glm::dvec2 col = column(rows[r], k, 0.5 * c.blend);
+                    if (col.x <= p && q <= col.y) textures.push_back(textureIds[r][k]);
+                }
+            const ZoneKind kind = mixesGeometry || textures.size() > 1 ? ZoneKind::Blend : ZoneKind::Texture;
+            zone(kind, clipBox(c.cell, {p, d0}, {q, d1}), std::move(textures), mixesGeometry);
+        }
+    }
+    // Adds the textures of row r (one per column) and returns the row's public description.
+    PlannedRow textures(int r, int& count) {
+        const Row& row = rows[r];
+        textureIds.emplace_back();
+        for (std::size_t k = 0; k < row.samples.size(); ++k) {
+            Texture t;
+            t.id = int(plan.textures.size());
+            t.cell = c.in.cell, t.wall = c.in.wall;
+            t.samplingPoint = row.samples[k];
+            const glm::dvec2 col = column(row, k, 0.5 * c.blend);
+            t.validRegion = c.world(clipBox(c.cell, {col.x, row.dLo}, {col.y, row.dHi}));
+            textureIds.back().push_back(t.id);
+            plan.textures.push_back(std::move(t));
+            ++count;
+        }
+        return {row.a, row.b, {row.dLo, row.dHi}, row.cuts, textureIds.back()};
+    }
+};
+
+}  // namespace
+
+WallSide planSide(Plan& plan, const SideInput& in) {
+    Context c{in, {}, glm::radians(plan.options.alphaDeg), plan.options.blendWidth, plan.options.minZoneSize, 0, 0, 0, 0};
+    for (const glm::dvec2& p : in.cellRegion) c.cell.push_back(in.frame.toLocal(p));
+    glm::dvec2 lo, hi;
+    extentOf(c.cell, lo, hi);
+    c.sLo = lo.x, c.sHi = hi.x, c.dMin = lo.y, c.dMax = hi.y;
+
+    WallSide side;
+    side.cell = in.cell, side.wall = in.wall, side.side = in.side;
+    side.firstZone = int(plan.zones.size());
+    side.origin = in.frame.origin, side.along = in.frame.along, side.inward = in.frame.inward;
+    const Layout l = layout(c);
+    side.geometryDistance = l.geometryBelow ? l.dG : c.dMin;
+    side.hasGeometry = l.geometryBelow;
+    Emitter e{c, plan, l.rows, {}};
+    for (int r = 0; r < int(l.rows.size()); ++r) side.rows.push_back(e.textures(r, side.textureCount));
+    if (l.geometryBelow) e.zone(ZoneKind::Geometry, clipBox(c.cell, {-kInf, -kInf}, {kInf, l.dG}), {}, false);
+    const double w = c.blend;
+    for (int r = 0; r < int(l.rows.size()); ++r) {
+        const Row& row = l.rows[r];
+        const bool last = r + 1 == int(l.rows.size());
+        double low = r > 0 ? row.a + 0.5 * w : (l.geometryBelow ? row.a + w : -kInf);
+        if (r == 0 && l.geometryBelow && w > 0) e.band(row.a, row.a + w, {0}, true);
+        e.band(low, last ? kInf : row.b - 0.5 * w, {r}, false);
+        if (!last && w > 0) e.band(row.b - 0.5 * w, row.b + 0.5 * w, {r, r + 1}, false);
+    }
+    side.zoneCount = int(plan.zones.size()) - side.firstZone;
+    return side;
+}
+
+}  // namespace cavewall::walls
