@@ -25,5 +25,11 @@ int runGenerate(const std::vector<std::string>& args);
 extern const char* const kGenerateUsage;
 int runPlan(const std::vector<std::string>& args);
 extern const char* const kPlanUsage;
+#ifdef CAVEWALL_HAVE_GL
+int runRender(const std::vector<std::string>& args);
+extern const char* const kRenderUsage;
+int runDemo(const std::vector<std::string>& args);
+extern const char* const kDemoUsage;
+#endif
 
 }  // namespace cavewall::tools

@@ -15,6 +15,10 @@ const Command kCommands[] = {
     {"bench", "measure error against run time; --stability: the numerical stability report", kBenchUsage, runBench},
     {"generate", "write a generated plant or house (.glb + scene.json) deterministically from a seed", kGenerateUsage, runGenerate},
     {"plan", "plan the zones and textures of every virtual wall (summary, JSON, PNG diagram)", kPlanUsage, runPlan},
+#ifdef CAVEWALL_HAVE_GL
+    {"render", "render one frame of a scene to PNG files (one per screen and eye, plus a fold-out)", kRenderUsage, runRender},
+    {"demo", "render the built-in room on cave4 from several head positions (images and index.md)", kDemoUsage, runDemo},
+#endif
 };
 
 void printHelp() {

@@ -1,0 +1,106 @@
+#pragma once
+// OpenGL 4.5 core contexts behind one small interface, so the renderer never knows where it
+// runs. Two providers:
+//  - headless (EGL, no surface): the renderer draws into framebuffer objects only. Display
+//    choice: EGL_PLATFORM_SURFACELESS_MESA, else the first EGL device
+//    (EGL_PLATFORM_DEVICE_EXT), else eglGetDisplay(EGL_DEFAULT_DISPLAY).
+//  - windowed (GLFW, optional at build time with CAVEWALL_WITH_GLFW): one window per screen;
+//    window 0's context is the rendering context and the others share its objects, so the
+//    offscreen images the renderer made can be shown in every window.
+// GL entry points come from libepoxy. A context is made current on the calling thread when it
+// is created. Debug contexts (ContextOptions::debug, the default in debug builds) install a
+// KHR_debug callback that prints driver messages on stderr.
+
+#include "display/display.h"
+#include "scenes/scene.h"
+
+#include <glm/glm.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace cavewall::gl {
+
+// Which EGL platform a headless context uses; Auto tries them in the order above.
+enum class HeadlessPlatform { Auto, Surfaceless, Device, Default };
+
+struct ContextOptions {
+    HeadlessPlatform headless = HeadlessPlatform::Auto;  // headless contexts only
+    // A debug context with the KHR_debug callback: on in debug builds, and wherever the
+    // environment has CAVEWALL_GL_DEBUG=1.
+    bool debug = defaultDebug();
+
+    static bool defaultDebug();
+};
+
+struct ContextInfo {
+    std::string provider;            // "EGL surfaceless", "EGL device", "EGL default", "GLFW"
+    std::string renderer;            // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+    std::string version;             // GL_VERSION
+    bool stereoWindows = false;      // windows have GL_BACK_LEFT and GL_BACK_RIGHT (quad-buffer)
+};
+
+// What the renderer produced for one screen, to be shown in a window: colour textures (in the
+// rendering context's share group) of `size` pixels. `right` is the quad-buffer right eye.
+struct PresentImage {
+    unsigned left = 0;               // GL texture name
+    unsigned right = 0;              // GL texture name or 0
+    glm::ivec2 size{0, 0};
+};
+
+class Context {
+public:
+    virtual ~Context() = default;
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    const ContextInfo& info() const { return _info; }
+    // Makes the rendering context current on this thread.
+    virtual void makeCurrent() = 0;
+
+    // Windows, in the order they were requested (none for headless contexts).
+    virtual int windowCount() const { return 0; }
+    // Shows `image` in window `window`, scaled to the window, and swaps its buffers. When
+    // `capture` is given it receives what the window's back buffer held just before the swap
+    // (8-bit RGBA, rows top to bottom, the window's size). Leaves the rendering context current.
+    virtual void present(int window, const PresentImage& image, scenes::Image* capture = nullptr);
+    // Processes window events; true once the user asked to close any window.
+    virtual bool pollCloseRequested() { return false; }
+
+protected:
+    Context() = default;
+    ContextInfo _info;
+};
+
+// A headless context. Throws cavewall::Error when no EGL display offers GL 4.5 core, saying
+// which displays were tried.
+std::unique_ptr<Context> createHeadlessContext(const ContextOptions& options = {});
+
+struct WindowRequest {
+    std::string title;
+    glm::ivec2 size{0, 0};           // pixels
+    glm::ivec2 position{0, 0};       // screen pixels (ignored in fullscreen)
+    int monitor = 0;                 // GLFW monitor index, for fullscreen
+    bool fullscreen = false;
+};
+
+// One window per screen of `display`: the screen's window output when it has one, else a
+// window of the screen's resolution at a cascading position.
+std::vector<WindowRequest> windowRequests(const display::Display& display);
+
+// A windowed context with `windows` (at least one); `stereo` asks for quad-buffer windows.
+// Throws Error when GLFW cannot open them, or when the build has no GLFW.
+std::unique_ptr<Context> createWindowedContext(const std::vector<WindowRequest>& windows, bool stereo,
+                                               const ContextOptions& options = {});
+
+// Why windows cannot be opened here, or "" when they can: this build has no GLFW, or no window
+// system is reachable ($DISPLAY and $WAYLAND_DISPLAY are unset).
+std::string windowsUnavailableReason();
+inline bool windowSystemAvailable() { return windowsUnavailableReason().empty(); }
+
+// Fills renderer and version from the current context and, for debug contexts, installs the
+// KHR_debug callback. For providers.
+void initialiseCurrentContext(ContextInfo& info, const ContextOptions& options);
+
+}  // namespace cavewall::gl

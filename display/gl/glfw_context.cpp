@@ -1,0 +1,149 @@
+#include "display/gl/context.h"
+
+#include "config/error.h"
+#include "display/gl/gl_object.h"
+#include "display/gl/render_targets.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+namespace cavewall::gl {
+
+namespace {
+
+std::string glfwFailure() {
+    const char* description = nullptr;
+    glfwGetError(&description);
+    return description ? description : "no reason given";
+}
+
+// GLFW is process-wide: the first live context initialises it, the last one terminates it.
+int gLiveGlfwContexts = 0;
+
+class GlfwContext final : public Context {
+public:
+    GlfwContext(const std::vector<WindowRequest>& requests, bool stereo, const ContextOptions& options);
+    ~GlfwContext() override;
+
+    void makeCurrent() override { glfwMakeContextCurrent(_windows.front().handle); }
+    int windowCount() const override { return static_cast<int>(_windows.size()); }
+    void present(int window, const PresentImage& image, scenes::Image* capture) override;
+    bool pollCloseRequested() override;
+
+private:
+    struct Window {
+        GLFWwindow* handle = nullptr;
+        GlObject readFramebuffer;  // belongs to this window's context (framebuffers are not shared)
+    };
+    void open(const WindowRequest& request, bool stereo, const ContextOptions& options);
+    void blit(Window& w, unsigned texture, glm::ivec2 size, GLenum drawBuffer, glm::ivec2 windowSize);
+
+    std::vector<Window> _windows;
+};
+
+GlfwContext::GlfwContext(const std::vector<WindowRequest>& requests, bool stereo, const ContextOptions& options) {
+    if (requests.empty()) throw Error("windowed output: expected at least one window, got none");
+    if (gLiveGlfwContexts == 0 && !glfwInit()) throw Error("windowed output: cannot start GLFW (" + glfwFailure() + ")");
+    ++gLiveGlfwContexts;
+    _info.provider = "GLFW";
+    try {
+        for (const WindowRequest& r : requests) open(r, stereo, options);
+        makeCurrent();
+        initialiseCurrentContext(_info, options);
+        GLboolean hasStereo = GL_FALSE;
+        glGetBooleanv(GL_STEREO, &hasStereo);
+        _info.stereoWindows = hasStereo == GL_TRUE;
+    } catch (...) {
+        for (Window& w : _windows) glfwDestroyWindow(w.handle);
+        if (--gLiveGlfwContexts == 0) glfwTerminate();
+        throw;
+    }
+}
+
+GlfwContext::~GlfwContext() {
+    for (Window& w : _windows) {
+        glfwMakeContextCurrent(w.handle);
+        w.readFramebuffer.reset();
+        glfwMakeContextCurrent(nullptr);
+        glfwDestroyWindow(w.handle);
+    }
+    if (--gLiveGlfwContexts == 0) glfwTerminate();
+}
+
+void GlfwContext::open(const WindowRequest& r, bool stereo, const ContextOptions& options) {
+    glfwDefaultWindowHints();
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, options.debug ? GLFW_TRUE : GLFW_FALSE);
+    glfwWindowHint(GLFW_STEREO, stereo ? GLFW_TRUE : GLFW_FALSE);
+    GLFWmonitor* monitor = nullptr;
+    if (r.fullscreen) {
+        int count = 0;
+        GLFWmonitor** monitors = glfwGetMonitors(&count);
+        if (r.monitor < 0 || r.monitor >= count)
+            throw Error("window '" + r.title + "': expected a monitor index in [0, " + std::to_string(count - 1) +
+                        "], got " + std::to_string(r.monitor));
+        monitor = monitors[r.monitor];
+    }
+    GLFWwindow* share = _windows.empty() ? nullptr : _windows.front().handle;
+    GLFWwindow* handle = glfwCreateWindow(r.size.x, r.size.y, r.title.c_str(), monitor, share);
+    if (!handle)
+        throw Error("window '" + r.title + "': cannot open a " + std::to_string(r.size.x) + " x " +
+                    std::to_string(r.size.y) + (stereo ? " quad-buffer stereo" : "") +
+                    " window with OpenGL 4.5 core (" + glfwFailure() + ")");
+    if (!monitor) glfwSetWindowPos(handle, r.position.x, r.position.y);
+    glfwMakeContextCurrent(handle);
+    glfwSwapInterval(0);  // several windows swap in turn; waiting for vsync on each would stack up
+    _windows.push_back({handle, {}});
+}
+
+void GlfwContext::blit(Window& w, unsigned texture, glm::ivec2 size, GLenum drawBuffer, glm::ivec2 windowSize) {
+    glNamedFramebufferTexture(w.readFramebuffer.id(), GL_COLOR_ATTACHMENT0, texture, 0);
+    glNamedFramebufferReadBuffer(w.readFramebuffer.id(), GL_COLOR_ATTACHMENT0);
+    // Bind-to-edit for the window's framebuffer: Mesa 22 mishandles the DSA calls on framebuffer 0.
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, w.readFramebuffer.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glDrawBuffer(drawBuffer);
+    const GLenum filter = size == windowSize ? GL_NEAREST : GL_LINEAR;
+    glBlitFramebuffer(0, 0, size.x, size.y, 0, 0, windowSize.x, windowSize.y, GL_COLOR_BUFFER_BIT, filter);
+}
+
+void GlfwContext::present(int window, const PresentImage& image, scenes::Image* capture) {
+    if (window < 0 || window >= windowCount())
+        throw Error("present: expected a window index in [0, " + std::to_string(windowCount() - 1) + "], got " +
+                    std::to_string(window));
+    glFinish();  // the rendering context's writes must be complete before another context reads them
+    Window& w = _windows[window];
+    glfwMakeContextCurrent(w.handle);
+    if (!w.readFramebuffer) w.readFramebuffer = createFramebuffer();
+    glm::ivec2 windowSize{0, 0};
+    glfwGetFramebufferSize(w.handle, &windowSize.x, &windowSize.y);
+    // The images hold sRGB-encoded bytes and the window shows bytes as sRGB: copy them unchanged.
+    glDisable(GL_FRAMEBUFFER_SRGB);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    const bool stereo = _info.stereoWindows;
+    blit(w, image.left, image.size, stereo ? GL_BACK_LEFT : GL_BACK, windowSize);
+    if (stereo && image.right) blit(w, image.right, image.size, GL_BACK_RIGHT, windowSize);
+    if (capture) *capture = readFramebuffer(0, stereo ? GL_BACK_LEFT : GL_BACK, windowSize, "window " + std::to_string(window));
+    glfwSwapBuffers(w.handle);
+    makeCurrent();
+}
+
+bool GlfwContext::pollCloseRequested() {
+    glfwPollEvents();
+    for (const Window& w : _windows)
+        if (glfwWindowShouldClose(w.handle)) return true;
+    return false;
+}
+
+}  // namespace
+
+std::unique_ptr<Context> createWindowedContext(const std::vector<WindowRequest>& windows, bool stereo,
+                                               const ContextOptions& options) {
+    return std::make_unique<GlfwContext>(windows, stereo, options);
+}
+
+}  // namespace cavewall::gl

@@ -1,0 +1,59 @@
+#pragma once
+// A scenes::Scene uploaded to the GPU: all meshes in one vertex buffer and one index buffer
+// (each mesh a range with a base vertex), one vertex array describing them, and one sRGB
+// texture per scene image. The layout keeps geometry in large shared buffers so a later
+// change can draw it with multi-draw indirect.
+
+#include "display/gl/gl_object.h"
+#include "scenes/scene.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace cavewall::gl {
+
+// Interleaved vertex, 56 bytes. Missing attributes get neutral values: normal 0 (drawn unlit),
+// texture coordinates 0, colour white.
+struct GpuVertex {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f};
+    glm::vec2 texCoord0{0.0f};
+    glm::vec2 texCoord1{0.0f};
+    glm::vec4 color{1.0f};
+};
+
+// Where a mesh lives in the shared buffers.
+struct GpuMeshRange {
+    std::uint32_t firstIndex = 0;  // in indices, not bytes
+    std::uint32_t indexCount = 0;
+    std::int32_t baseVertex = 0;
+};
+
+class GpuScene {
+public:
+    // Uploads `scene`; needs a current GL 4.5 context. The Scene is not referenced afterwards.
+    explicit GpuScene(const scenes::Scene& scene);
+
+    GLuint vertexArray() const { return _vertexArray.id(); }
+    const GpuMeshRange& mesh(int index) const { return _meshes[index]; }
+    // The texture of scene image `index` (GL_SRGB8_ALPHA8, mipmapped); images without pixels
+    // get a 1 x 1 magenta texture.
+    GLuint texture(int index) const { return _textures[index].id(); }
+    int textureCount() const { return static_cast<int>(_textures.size()); }
+    // A sampler with the given wrap modes (trilinear filtering).
+    GLuint sampler(scenes::Wrap s, scenes::Wrap t) const { return _samplers[index(s) * 3 + index(t)].id(); }
+    std::size_t vertexBytes() const { return _vertexBytes; }
+    std::size_t indexBytes() const { return _indexBytes; }
+
+private:
+    static int index(scenes::Wrap w) { return static_cast<int>(w); }
+
+    GlObject _vertices, _indices, _vertexArray;
+    std::vector<GpuMeshRange> _meshes;
+    std::vector<GlObject> _textures;
+    std::array<GlObject, 9> _samplers;
+    std::size_t _vertexBytes = 0, _indexBytes = 0;
+};
+
+}  // namespace cavewall::gl

@@ -1,0 +1,34 @@
+#include "display/gl/snapshot.h"
+
+#include <algorithm>
+
+namespace cavewall::gl {
+
+Snapshotter::Snapshotter(const display::Display& display, const scenes::Scene& scene, Context& context,
+                         RenderSettings settings)
+    : _display(display), _context(context), _targets(display, context), _renderer(scene, settings) {}
+
+Snapshot Snapshotter::render(const display::HeadPose& head, const glm::dmat4& worldFromCave,
+                             double foldoutPixelsPerMetre) {
+    Snapshot out;
+    out.stats = _renderer.render(_display.views(head), _targets, worldFromCave);
+    out.images = readFrame(_display, _targets);
+    if (_context.windowCount() > 0) present(out.images);
+    out.foldout = foldoutOf(_display, out.images, foldoutPixelsPerMetre);
+    return out;
+}
+
+void Snapshotter::present(std::vector<ScreenImage>& images) {
+    const int windows = std::min(_context.windowCount(), _targets.screenCount());
+    for (int s = 0; s < windows; ++s) {
+        PresentImage image{_targets.colorTexture(s, 0), 0, _targets.size(s)};
+        if (_targets.imageCount(s) > 1 && _context.info().stereoWindows) image.right = _targets.colorTexture(s, 1);
+        scenes::Image shown;
+        _context.present(s, image, &shown);
+        for (ScreenImage& i : images)
+            if (i.screen == s && i.image == 0 && shown.width == i.pixels.width && shown.height == i.pixels.height)
+                i.pixels.rgba = std::move(shown.rgba);
+    }
+}
+
+}  // namespace cavewall::gl

@@ -1,0 +1,62 @@
+#include "tests/gl/gl_test_support.h"
+
+#include "config/error.h"
+#include "scenes/image_io.h"
+
+#include <cstdlib>
+#include <iostream>
+
+namespace cavewall::testing {
+
+namespace {
+
+bool envIs(const char* name, const char* value) {
+    const char* v = std::getenv(name);
+    return v && std::string(v) == value;
+}
+
+}  // namespace
+
+bool onCi() { return envIs("CI", "true"); }
+
+void GlTest::SetUp() {
+    try {
+        context = gl::createHeadlessContext();
+    } catch (const Error& e) {
+        if (onCi()) FAIL() << "CI=true: a headless OpenGL context is required: " << e.what();
+        GTEST_SKIP() << e.what();
+    }
+    std::cout << "GL_RENDERER: " << context->info().renderer << " (" << context->info().provider << ")\n";
+}
+
+std::filesystem::path testOutputFolder(const std::string& name) {
+    const char* root = std::getenv("CAVEWALL_TEST_OUTPUT");
+    return (root ? std::filesystem::path(root) : std::filesystem::temp_directory_path() / "cavewall-tests") / name;
+}
+
+std::filesystem::path testConfigFolder() { return std::filesystem::path(CAVEWALL_SOURCE_DIR) / "tests" / "gl"; }
+
+void expectMatchesGolden(const scenes::Image& actual, const std::string& name, scenes::ImageTolerance tolerance) {
+    const std::filesystem::path golden = testConfigFolder() / "golden" / (name + ".png");
+    if (envIs("CAVEWALL_UPDATE_GOLDENS", "1")) {
+        scenes::writeImage(golden, actual);
+        std::cout << "updated golden " << golden.string() << "\n";
+        return;
+    }
+    if (!std::filesystem::exists(golden)) {
+        ADD_FAILURE() << "missing golden " << golden.string() << " (run with CAVEWALL_UPDATE_GOLDENS=1 to create it)";
+        return;
+    }
+    const scenes::Image expected = scenes::readImage(golden);
+    const scenes::ImageComparison result = scenes::compareImages(actual, expected, tolerance);
+    if (result.passes()) return;
+    const std::filesystem::path out = testOutputFolder(name);
+    scenes::writeImage(out / "actual.png", actual);
+    scenes::writeImage(out / "expected.png", expected);
+    if (result.sameSize) scenes::writeImage(out / "diff.png", scenes::differenceImage(actual, expected, tolerance));
+    ADD_FAILURE() << "golden '" << name << "' differs: " << result.describe() << " (" << actual.width << " x "
+                  << actual.height << " vs " << expected.width << " x " << expected.height << "); images in "
+                  << out.string();
+}
+
+}  // namespace cavewall::testing

@@ -1,0 +1,45 @@
+#pragma once
+// Shared pieces of the GL tests: a headless context per test, and golden-image comparison.
+//
+// GlTest creates a headless EGL context in SetUp and logs GL_RENDERER. Without EGL the test is
+// skipped, except under CI (CI=true in the environment), where a missing context must fail.
+//
+// Goldens live in tests/gl/golden/<name>.png (llvmpipe only) and are compared with the
+// project's tolerance (scenes/image_compare.h). On failure the test prints max/mean/bad share
+// and the worst pixels and writes actual.png, expected.png and diff.png to
+// $CAVEWALL_TEST_OUTPUT/<name>/ in the build tree. CAVEWALL_UPDATE_GOLDENS=1 rewrites the golden
+// in the source tree instead of comparing; CI never sets it.
+
+#include "display/gl/context.h"
+#include "scenes/image_compare.h"
+#include "scenes/scene.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace cavewall::testing {
+
+bool onCi();
+
+class GlTest : public ::testing::Test {
+protected:
+    void SetUp() override;
+    void TearDown() override { context.reset(); }
+
+    std::unique_ptr<gl::Context> context;
+};
+
+// Where failure images go: $CAVEWALL_TEST_OUTPUT/<name> (or the system temp folder).
+std::filesystem::path testOutputFolder(const std::string& name);
+
+// Golden comparison as described above; records a non-fatal failure on mismatch.
+void expectMatchesGolden(const scenes::Image& actual, const std::string& name,
+                         scenes::ImageTolerance tolerance = {});
+
+// The folder of the test display configurations (tests/gl in the source tree).
+std::filesystem::path testConfigFolder();
+
+}  // namespace cavewall::testing

@@ -1,0 +1,107 @@
+// `cavewall render` and `cavewall demo` end to end (headless).
+#include "scenes/image_io.h"
+#include "tests/cli/run_cli.h"
+#include "tests/gl/gl_test_support.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <stdlib.h>
+
+namespace cavewall::test {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::string testDisplay() { return (testing::testConfigFolder() / "cave4_128.json").string(); }
+
+std::filesystem::path freshFolder(const std::string& name) {
+    const std::filesystem::path out = testing::testOutputFolder(name);
+    std::filesystem::remove_all(out);
+    return out;
+}
+
+// The fixture probes for a headless context: without one these skip (or fail under CI) like
+// every GL test, instead of failing on the command's error.
+class RenderCli : public testing::GlTest {};
+class DemoCli : public testing::GlTest {};
+
+TEST_F(RenderCli, WritesOnePngPerScreenAndAFoldoutAndNamesTheRenderer) {
+    const auto out = freshFolder("render-cli");
+    const CliResult r = runCavewall({"render", "--display", testDisplay(), "--eye", "0.3,1.5,0.2", "--out", out.string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    for (const char* stem : {"front", "left", "right", "floor", "foldout"}) {
+        SCOPED_TRACE(stem);
+        const std::string file = (out / (std::string(stem) + ".png")).string();
+        EXPECT_THAT(r.out, HasSubstr("wrote " + file + "\n"));
+        // Screens at their resolution; the fold-out is 3 x 2 screens of 128 pixels.
+        const scenes::Image image = scenes::readImage(file);
+        EXPECT_EQ(image.width, std::string(stem) == "foldout" ? 384 : 128);
+    }
+    EXPECT_THAT(r.out, HasSubstr("GL_RENDERER: "));
+}
+
+TEST_F(RenderCli, SeparateStereoWritesBothEyes) {
+    const auto out = freshFolder("render-cli-separate");
+    const CliResult r = runCavewall({"render", "--display", testDisplay(), "--stereo", "separate", "--out", out.string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(out / "front-left.png"));
+    EXPECT_TRUE(std::filesystem::exists(out / "front-right.png"));
+    EXPECT_TRUE(std::filesystem::exists(out / "foldout.png"));  // from the left eye
+}
+
+TEST_F(RenderCli, BadInputGivesAClearErrorAndNonZeroExit) {
+    const struct {
+        const char* name;
+        std::vector<std::string> args;
+        const char* message;
+    } cases[] = {
+        {"scene file", {"--scene", "lab.glb"}, "--scene lab.glb: loading scene files is not supported yet (expected 'builtin')"},
+        {"stereo", {"--stereo", "wobble"}, "--stereo: expected one of mono, separate, side-by-side, top-bottom, anaglyph, quad-buffer, got 'wobble'"},
+        {"quad-buffer headless", {"--stereo", "quad-buffer"}, "stereo mode quad-buffer needs windows with quad-buffer stereo"},
+        {"no output folder", {}, "--out: required flag is missing"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.name);
+        std::vector<std::string> args{"render", "--display", testDisplay()};
+        args.insert(args.end(), c.args.begin(), c.args.end());
+        if (std::string(c.name) != "no output folder") args.insert(args.end(), {"--out", freshFolder("render-cli-bad").string()});
+        const CliResult r = runCavewall(args);
+        EXPECT_EQ(r.exitCode, 1);
+        EXPECT_THAT(r.err, HasSubstr(c.message));
+    }
+}
+
+TEST_F(RenderCli, WindowWithoutAWindowSystemIsAClearError) {
+    // The child inherits this process' environment: take the window system away.
+    ::unsetenv("DISPLAY");
+    ::unsetenv("WAYLAND_DISPLAY");
+    const CliResult r = runCavewall({"render", "--display", testDisplay(), "--window", "--out",
+                                     freshFolder("render-cli-window").string()});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_THAT(r.err, HasSubstr("--window: cannot open windows: "));
+    EXPECT_THAT(r.err, HasSubstr("leave out --window to render headless"));
+}
+
+TEST_F(DemoCli, WritesImagesFoldoutsAndAnIndexForEveryPose) {
+    const auto out = freshFolder("demo-cli");
+    const CliResult r = runCavewall({"demo", "--out", out.string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::ifstream index(out / "index.md");
+    std::stringstream text;
+    text << index.rdbuf();
+    for (const char* pose : {"centre", "front-left", "back-right", "crouching"}) {
+        SCOPED_TRACE(pose);
+        EXPECT_TRUE(std::filesystem::exists(out / pose / "foldout.png"));
+        EXPECT_TRUE(std::filesystem::exists(out / pose / "front.png"));
+        EXPECT_THAT(text.str(), HasSubstr(std::string("](") + pose + "/foldout.png)"));
+    }
+    EXPECT_THAT(r.out, HasSubstr("GL_RENDERER: "));
+}
+
+}  // namespace
+}  // namespace cavewall::test

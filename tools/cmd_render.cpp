@@ -1,0 +1,78 @@
+#include "config/display_config.h"
+#include "display/display.h"
+#include "display/gl/context.h"
+#include "display/gl/snapshot.h"
+#include "scenes/primitives.h"
+#include "tools/args.h"
+#include "tools/commands.h"
+
+#include <iostream>
+
+namespace cavewall::tools {
+
+const char* const kRenderUsage =
+    "usage: cavewall render --display FILE|PRESET [--scene builtin] [--eye x,y,z] [--head-yaw DEG]\n"
+    "                       [--stereo MODE] [--window] --out DIR\n"
+    "\n"
+    "Renders one frame of --scene for a head at --eye (cave frame, metres; default: the display's\n"
+    "default head) turned by --head-yaw degrees about +Y (positive turns left), and writes one PNG\n"
+    "per screen and eye (DIR/<screen>.png, or <screen>-left/-right.png for separate stereo) plus\n"
+    "DIR/foldout.png, all screens folded out flat around the floor.\n"
+    "  --scene   only 'builtin' (the built-in test room) for now\n"
+    "  --stereo  mono | separate | side-by-side | top-bottom | anaglyph | quad-buffer\n"
+    "            (default: the display's; quad-buffer needs stereo windows)\n"
+    "  --window  show the frame in one window per screen (needs $DISPLAY) and write what the\n"
+    "            windows showed; without it rendering is headless (EGL)\n"
+    "Prints the files written and the OpenGL renderer.\n";
+
+namespace {
+
+// The scene to render. One call, so that scene files are one line away.
+scenes::Scene loadSceneSource(const std::string& source) {
+    if (source == "builtin") return scenes::builtinTestScene();
+    throw Error("--scene " + source + ": loading scene files is not supported yet (expected 'builtin')");
+}
+
+config::StereoMode parseStereo(const std::string& text) {
+    using config::StereoMode;
+    std::string names;
+    for (StereoMode m : {StereoMode::Mono, StereoMode::Separate, StereoMode::SideBySide, StereoMode::TopBottom,
+                         StereoMode::Anaglyph, StereoMode::QuadBuffer}) {
+        if (config::toString(m) == text) return m;
+        names += (names.empty() ? "" : ", ") + std::string(config::toString(m));
+    }
+    throw Error("--stereo: expected one of " + names + ", got '" + text + "'");
+}
+
+std::unique_ptr<gl::Context> openContext(const display::Display& disp, bool window) {
+    if (!window) return gl::createHeadlessContext();
+    if (const std::string reason = gl::windowsUnavailableReason(); !reason.empty())
+        throw Error("--window: cannot open windows: " + reason + "; leave out --window to render headless");
+    return gl::createWindowedContext(gl::windowRequests(disp), disp.config().stereo == config::StereoMode::QuadBuffer);
+}
+
+}  // namespace
+
+int runRender(const std::vector<std::string>& words) {
+    const Args args(words, {"window"});
+    args.expectFlags({"display", "scene", "eye", "head-yaw", "stereo", "window", "out"});
+    config::DisplayConfig config = config::loadDisplayConfig(args.require("display"));
+    if (auto stereo = args.get("stereo")) config.stereo = parseStereo(*stereo);
+    const std::string out = args.require("out");
+    const scenes::Scene scene = loadSceneSource(args.getOr("scene", "builtin"));
+    const display::Display disp(std::move(config));
+    display::HeadPose head = disp.defaultHead();
+    if (auto eye = args.vec3("eye")) head.position = *eye;
+    if (args.has("head-yaw"))
+        head.orientation = glm::angleAxis(glm::radians(args.number("head-yaw", 0.0, -360.0, 360.0)), glm::dvec3(0, 1, 0));
+
+    const auto context = openContext(disp, args.has("window"));
+    gl::Snapshotter snapshotter(disp, scene, *context);
+    const gl::Snapshot frame = snapshotter.render(head);
+    for (const auto& file : gl::writeFrame(out, frame.images, frame.foldout)) std::cout << "wrote " << file.string() << "\n";
+    std::cout << "GL_RENDERER: " << context->info().renderer << " (" << context->info().provider << ")\n"
+              << frame.stats.drawCalls << " draw calls, " << frame.stats.triangles << " triangles\n";
+    return 0;
+}
+
+}  // namespace cavewall::tools
