@@ -2,6 +2,8 @@
 #include "display/display.h"
 #include "display/gl/context.h"
 #include "display/gl/snapshot.h"
+#include "display/gl/view_all.h"
+#include "scenes/loader.h"
 #include "scenes/primitives.h"
 #include "tools/args.h"
 #include "tools/commands.h"
@@ -11,26 +13,33 @@
 namespace cavewall::tools {
 
 const char* const kRenderUsage =
-    "usage: cavewall render --display FILE|PRESET [--scene builtin] [--eye x,y,z] [--head-yaw DEG]\n"
-    "                       [--stereo MODE] [--window] --out DIR\n"
+    "usage: cavewall render --display FILE|PRESET [--scene builtin|FILE] [--view-all] [--eye x,y,z]\n"
+    "                       [--head-yaw DEG] [--stereo MODE] [--window] --out DIR\n"
     "\n"
     "Renders one frame of --scene for a head at --eye (cave frame, metres; default: the display's\n"
     "default head) turned by --head-yaw degrees about +Y (positive turns left), and writes one PNG\n"
     "per screen and eye (DIR/<screen>.png, or <screen>-left/-right.png for separate stereo) plus\n"
     "DIR/foldout.png, all screens folded out flat around the floor.\n"
-    "  --scene   only 'builtin' (the built-in test room) for now\n"
+    "  --scene   'builtin' (the built-in test room; default), a glTF/GLB file, or a scene.json\n"
+    "            (or a folder holding one)\n"
+    "  --view-all  move the CAVE through the world (no rotation, no scaling) so that the whole\n"
+    "            scene is in view on the screen the head faces\n"
     "  --stereo  mono | separate | side-by-side | top-bottom | anaglyph | quad-buffer\n"
     "            (default: the display's; quad-buffer needs stereo windows)\n"
     "  --window  show the frame in one window per screen (needs $DISPLAY) and write what the\n"
     "            windows showed; without it rendering is headless (EGL)\n"
-    "Prints the files written and the OpenGL renderer.\n";
+    "Prints the files written, the OpenGL renderer and the frame's statistics (objects,\n"
+    "triangles and draw calls submitted, CPU and GPU milliseconds). Scene warnings (skipped\n"
+    "content) go to stderr.\n";
 
 namespace {
 
 // The scene to render. One call, so that scene files are one line away.
 scenes::Scene loadSceneSource(const std::string& source) {
     if (source == "builtin") return scenes::builtinTestScene();
-    throw Error("--scene " + source + ": loading scene files is not supported yet (expected 'builtin')");
+    scenes::Scene scene = scenes::loadSceneFile(source);
+    for (const std::string& warning : scene.warnings) std::cerr << "warning: " << warning << "\n";
+    return scene;
 }
 
 config::StereoMode parseStereo(const std::string& text) {
@@ -54,8 +63,8 @@ std::unique_ptr<gl::Context> openContext(const display::Display& disp, bool wind
 }  // namespace
 
 int runRender(const std::vector<std::string>& words) {
-    const Args args(words, {"window"});
-    args.expectFlags({"display", "scene", "eye", "head-yaw", "stereo", "window", "out"});
+    const Args args(words, {"window", "view-all"});
+    args.expectFlags({"display", "scene", "view-all", "eye", "head-yaw", "stereo", "window", "out"});
     config::DisplayConfig config = config::loadDisplayConfig(args.require("display"));
     if (auto stereo = args.get("stereo")) config.stereo = parseStereo(*stereo);
     const std::string out = args.require("out");
@@ -66,12 +75,18 @@ int runRender(const std::vector<std::string>& words) {
     if (args.has("head-yaw"))
         head.orientation = glm::angleAxis(glm::radians(args.number("head-yaw", 0.0, -360.0, 360.0)), glm::dvec3(0, 1, 0));
 
+    glm::dmat4 worldFromCave(1.0);
+    if (args.has("view-all")) worldFromCave = gl::viewAll(disp, head, scene.bounds()).worldFromCave;
+
     const auto context = openContext(disp, args.has("window"));
     gl::Snapshotter snapshotter(disp, scene, *context);
-    const gl::Snapshot frame = snapshotter.render(head);
+    const gl::Snapshot frame = snapshotter.render(head, worldFromCave);
     for (const auto& file : gl::writeFrame(out, frame.images, frame.foldout)) std::cout << "wrote " << file.string() << "\n";
     std::cout << "GL_RENDERER: " << context->info().renderer << " (" << context->info().provider << ")\n"
-              << frame.stats.drawCalls << " draw calls, " << frame.stats.triangles << " triangles\n";
+              << frame.stats.objectsDrawn << " objects, " << frame.stats.triangles << " triangles, "
+              << frame.stats.drawCalls << " draw calls in " << frame.stats.views << " views; CPU "
+              << frame.stats.cpuMs << " ms (culling " << frame.stats.cullMs << " ms), GPU " << frame.stats.gpuMs
+              << " ms\n";
     return 0;
 }
 

@@ -1,8 +1,12 @@
 #pragma once
 // A scenes::Scene uploaded to the GPU: all meshes in one vertex buffer and one index buffer
 // (each mesh a range with a base vertex), one vertex array describing them, and one sRGB
-// texture per scene image. The layout keeps geometry in large shared buffers so a later
-// change can draw it with multi-draw indirect.
+// texture per scene image. The layout keeps geometry in large shared buffers so that a view
+// is drawn with a few glMultiDrawElementsIndirect calls (scene_renderer.h).
+//
+// Vertex array: attributes 0-4 from binding 0 (GpuVertex); attribute 5 (uint) from binding 1,
+// instanced (divisor 1), reads the identity sequence 0 .. objectCount - 1, so a draw's
+// baseInstance arrives in the shader as the index of its per-draw record.
 
 #include "display/gl/gl_object.h"
 #include "scenes/scene.h"
@@ -49,7 +53,7 @@ public:
 private:
     static int index(scenes::Wrap w) { return static_cast<int>(w); }
 
-    GlObject _vertices, _indices, _vertexArray;
+    GlObject _vertices, _indices, _drawIndices, _vertexArray;
     std::vector<GpuMeshRange> _meshes;
     std::vector<GlObject> _textures;
     std::array<GlObject, 9> _samplers;

@@ -1,17 +1,23 @@
 #include "display/gl/scene_renderer.h"
 
-#include "display/gl/scene_shaders.h"
 #include "display/gl/shader.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <chrono>
 
 namespace cavewall::gl {
 
 namespace {
 
 constexpr const char* kProgramName = "scene";
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
 
 int alphaModeIndex(scenes::AlphaMode mode) {
     switch (mode) {
@@ -22,131 +28,292 @@ int alphaModeIndex(scenes::AlphaMode mode) {
     return 0;
 }
 
+shaders::MaterialRecord materialRecord(const scenes::Material& m, int textureCount) {
+    shaders::MaterialRecord r;
+    const scenes::TextureRef& t = m.baseColorTexture;
+    r.baseColor = m.baseColorFactor;
+    for (int c = 0; c < 3; ++c) r.uvTransform[c] = glm::vec4(t.transform[c], 0.0f);
+    r.flags = {t.texCoord == 1 ? 1 : 0, alphaModeIndex(m.alphaMode), t.image >= 0 && t.image < textureCount, 0};
+    r.params.x = m.alphaCutoff;
+    return r;
+}
+
+DrawState drawState(const scenes::Material& m, bool flipWinding, bool cullBackFaces, int textureCount) {
+    const scenes::TextureRef& t = m.baseColorTexture;
+    DrawState s;
+    s.faces = faceMode(m.doubleSided || !cullBackFaces, flipWinding);
+    if (t.image >= 0 && t.image < textureCount) {
+        s.texture = t.image;
+        s.sampler = static_cast<int>(t.wrapS) * 3 + static_cast<int>(t.wrapT);
+    }
+    return s;
+}
+
+GlObject storageBuffer(std::size_t bytes, const void* data) {
+    GlObject b = createBuffer();
+    glNamedBufferStorage(b.id(), std::max<std::size_t>(bytes, 1), data, data ? 0 : GL_DYNAMIC_STORAGE_BIT);
+    return b;
+}
+
+void setViewport(const display::Viewport& vp, glm::bvec4 colorMask) {
+    glViewport(vp.x, vp.y, vp.width, vp.height);
+    glScissor(vp.x, vp.y, vp.width, vp.height);
+    glEnable(GL_SCISSOR_TEST);
+    glColorMask(colorMask.r, colorMask.g, colorMask.b, colorMask.a);
+}
+
 }  // namespace
 
+void FrameStats::add(const ViewStats& view) {
+    drawCalls += view.drawCalls;
+    triangles += view.triangles;
+    objectsDrawn += view.objectsDrawn;
+    cullMs += view.cullMs;
+    ++views;
+    perView.push_back(view);
+}
+
 SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings)
-    : _materials(scene.materials), _objects(scene.objects), _settings(settings), _gpu(scene),
-      _program(buildProgram(kProgramName, shaders::kSceneVertex, shaders::kSceneFragment)) {
-    const GLuint p = _program.id();
-    auto at = [p](const char* name) { return uniformLocation(p, kProgramName, name); };
-    _uniforms = {at("uModelView"), at("uProjection"), at("uNormalMatrix"), at("uUvTransform"), at("uTexCoordSet"),
-                 at("uBaseColor"), at("uHasTexture"), at("uAlphaMode"), at("uAlphaCutoff"), at("uAmbient")};
-    for (const scenes::Mesh& m : scene.meshes) _meshMaterials.push_back(m.material);
-    for (int i = 0; i < static_cast<int>(_objects.size()); ++i) {
-        const int material = _meshMaterials[_objects[i].mesh];
-        const bool blend = material >= 0 && _materials[material].alphaMode == scenes::AlphaMode::Blend;
-        (blend ? _blended : _opaque).push_back(i);
+    : _objects(scene.objects), _settings(settings), _gpu(scene),
+      _program(buildProgram(kProgramName, shaders::kSceneVertex, shaders::kSceneFragment)), _bvh(scene),
+      _listStamp(scene.objects.size(), 0) {
+    _projection = uniformLocation(_program.id(), kProgramName, "uProjection");
+    _ambient = uniformLocation(_program.id(), kProgramName, "uAmbient");
+    // Material records: the scene's, then the default material for meshes without one.
+    std::vector<shaders::MaterialRecord> materials;
+    for (const scenes::Material& m : scene.materials) materials.push_back(materialRecord(m, _gpu.textureCount()));
+    materials.push_back(materialRecord(scenes::Material{}, _gpu.textureCount()));
+    _materialRecords = storageBuffer(materials.size() * sizeof(shaders::MaterialRecord), materials.data());
+    const int count = static_cast<int>(scene.materials.size());
+    for (const scenes::Object& o : _objects) {
+        const int material = scene.meshes[o.mesh].material;
+        const bool valid = material >= 0 && material < count;
+        const scenes::Material& m = valid ? scene.materials[material] : scenes::Material{};
+        _objectMaterials.push_back(valid ? material : count);
+        _objectStates.push_back(drawState(m, o.flipWinding, settings.cullBackFaces, _gpu.textureCount()));
+        _blendedObject.push_back(m.alphaMode == scenes::AlphaMode::Blend);
     }
 }
 
 FrameStats SceneRenderer::render(const std::vector<display::ScreenView>& views, const RenderTargets& targets,
-                                 const glm::dmat4& worldFromCave) {
+                                 const glm::dmat4& worldFromCave, const DrawFilter& filter) {
+    const auto start = Clock::now();
+    const bool timed = _timer.begin();
     beginFrame(targets);
-    glUseProgram(_program.id());
-    glBindVertexArray(_gpu.vertexArray());
-    glUniform1f(_uniforms.ambient, _settings.ambient);
     FrameStats stats;
-    const glm::dmat4 caveFromWorld = glm::inverse(worldFromCave);
     for (const display::ScreenView& view : views) {
         targets.bind(view.screen, RenderTargets::imageOf(view.pass));
-        drawView(view, caveFromWorld, stats);
+        stats.add(renderView(view, worldFromCave, filter));
     }
     glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    if (timed) _timer.end();
+    stats.cpuMs = msSince(start);
+    stats.gpuMs = _timer.latestMs();
     return stats;
 }
 
-// Sets every piece of state the frame relies on (the context may have been used for other
-// things since), then clears all targets.
-void SceneRenderer::beginFrame(const RenderTargets& targets) {
+// Sets every piece of state drawing relies on: the context may have been used for other
+// things (another pass, the caller's own drawing) since the last call.
+void SceneRenderer::applyFrameState() {
     glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
     glEnable(GL_FRAMEBUFFER_SRGB);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
-    glDisable(GL_SCISSOR_TEST);
     glDisable(GL_BLEND);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
     glClearDepth(0.0);
-    glClearColor(_settings.clearColor.r, _settings.clearColor.g, _settings.clearColor.b, _settings.clearColor.a);
-    for (int s = 0; s < targets.screenCount(); ++s)
+    glUseProgram(_program.id());
+    glBindVertexArray(_gpu.vertexArray());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, _materialRecords.id());
+    glUniform1f(_ambient, _settings.ambient);
+}
+
+void SceneRenderer::clearTo(glm::vec4 color) {
+    glClearColor(color.r, color.g, color.b, color.a);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void SceneRenderer::beginFrame(const RenderTargets& targets, const std::vector<int>& screens) {
+    applyFrameState();
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    for (int s = 0; s < targets.screenCount(); ++s) {
+        if (!screens.empty() && std::find(screens.begin(), screens.end(), s) == screens.end()) continue;
         for (int i = 0; i < targets.imageCount(s); ++i) {
             targets.bind(s, i);
-            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+            clearTo(_settings.clearColor);
         }
+    }
 }
 
-void SceneRenderer::drawView(const display::ScreenView& view, const glm::dmat4& caveFromWorld, FrameStats& stats) {
-    const display::Viewport& vp = view.pass.viewport;
-    glViewport(vp.x, vp.y, vp.width, vp.height);
-    glScissor(vp.x, vp.y, vp.width, vp.height);
-    glEnable(GL_SCISSOR_TEST);
+ViewStats SceneRenderer::renderView(const display::ScreenView& view, const glm::dmat4& worldFromCave,
+                                    const DrawFilter& filter) {
+    const auto start = Clock::now();
+    applyFrameState();
     // Each eye gets fresh depth: anaglyph eyes share one image, side-by-side eyes one target.
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDepthMask(GL_TRUE);
+    setViewport(view.pass.viewport, glm::bvec4(true));
     glClear(GL_DEPTH_BUFFER_BIT);
-    const glm::bvec4 m = view.pass.colorMask;
-    glColorMask(m.r, m.g, m.b, m.a);
-    const glm::mat4 projection(view.frustum.clipFromView);
-    glUniformMatrix4fv(_uniforms.projection, 1, GL_FALSE, glm::value_ptr(projection));
+    glColorMask(view.pass.colorMask.r, view.pass.colorMask.g, view.pass.colorMask.b, view.pass.colorMask.a);
+    ViewStats stats = drawFrustum(view.frustum, glm::inverse(worldFromCave), filter);
+    stats.cpuMs = msSince(start);
+    return stats;
+}
 
-    glDisable(GL_BLEND);
-    for (int i : _opaque) drawObject(_objects[i], view.frustum, caveFromWorld, stats);
-    if (_blended.empty()) return;
+ViewStats SceneRenderer::renderFrustum(const display::OffAxisFrustum& frustum, const glm::dmat4& worldFromFrame,
+                                       const ViewTarget& target, const DrawFilter& filter) {
+    const auto start = Clock::now();
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.framebuffer);
+    applyFrameState();
+    setViewport(target.viewport, target.colorMask);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    if (target.clearColor) {
+        const glm::vec4 c = *target.clearColor;
+        glClearColor(c.r, c.g, c.b, c.a);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
+    ViewStats stats = drawFrustum(frustum, glm::inverse(worldFromFrame), filter);
+    stats.cpuMs = msSince(start);
+    return stats;
+}
 
-    // Back to front by the view depth of each object's bounds centre.
-    const glm::dmat4 viewFromWorld = view.frustum.viewFromFrame * caveFromWorld;
+bool SceneRenderer::passes(int object, const DrawFilter& filter) const {
+    if (filter.objects && _listStamp[object] != _stamp) return false;
+    if (filter.mask && (object >= static_cast<int>(filter.mask->size()) || !(*filter.mask)[object])) return false;
+    const bool structure = _objects[object].role == scenes::Role::Structure;
+    if (filter.skipStructure && structure) return false;
+    if (filter.onlyStructure && !structure) return false;
+    return true;
+}
+
+// Fills _opaque and _blended with the objects the view submits, in scene order.
+void SceneRenderer::select(const display::OffAxisFrustum& frustum, const glm::dmat4& frameFromWorld,
+                           const DrawFilter& filter) {
+    const int count = static_cast<int>(_objects.size());
+    if (filter.objects) {
+        if (++_stamp == 0) {  // wrapped: old stamps could collide
+            std::fill(_listStamp.begin(), _listStamp.end(), 0);
+            _stamp = 1;
+        }
+        for (int i : *filter.objects)
+            if (i >= 0 && i < count) _listStamp[i] = _stamp;
+    }
+    _visible.clear();
+    if (filter.frustumCull) {
+        _bvh.cull(frustum.clipFromView * frustum.viewFromFrame * frameFromWorld, _visible);
+    } else if (filter.objects) {
+        for (int i : *filter.objects)
+            if (i >= 0 && i < count) _visible.push_back(i);
+    } else {
+        for (int i = 0; i < count; ++i) _visible.push_back(i);
+    }
+    // Scene order whatever the culling order, so results do not depend on the tree.
+    std::sort(_visible.begin(), _visible.end());
+    _visible.erase(std::unique(_visible.begin(), _visible.end()), _visible.end());
+    _opaque.clear();
+    _blended.clear();
+    for (int i : _visible)
+        if (passes(i, filter)) (_blendedObject[i] ? _blended : _opaque).push_back(i);
+}
+
+ViewStats SceneRenderer::drawFrustum(const display::OffAxisFrustum& frustum, const glm::dmat4& frameFromWorld,
+                                     const DrawFilter& filter) {
+    ViewStats stats;
+    const auto cullStart = Clock::now();
+    select(frustum, frameFromWorld, filter);
+    stats.cullMs = msSince(cullStart);
+    // Blended objects back to front by the view depth of their bounds centre.
+    const glm::dmat4 viewFromWorld = frustum.viewFromFrame * frameFromWorld;
     auto depth = [&](int i) { return (viewFromWorld * glm::dvec4(_objects[i].worldBounds.centre(), 1.0)).z; };
-    std::vector<int> order = _blended;
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return depth(a) < depth(b); });
-    glEnable(GL_BLEND);
-    // Colour blends over; destination alpha stays (the screen is opaque).
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-    glDepthMask(GL_FALSE);
-    for (int i : order) drawObject(_objects[i], view.frustum, caveFromWorld, stats);
+    std::stable_sort(_blended.begin(), _blended.end(), [&](int a, int b) { return depth(a) < depth(b); });
+
+    _records.clear();
+    _commands.clear();
+    _batches.clear();
+    addDraws(_opaque, frustum, frameFromWorld, true);
+    const std::size_t opaqueBatches = _batches.size();
+    addDraws(_blended, frustum, frameFromWorld, false);
+    if (_batches.empty()) return stats;
+    upload(_viewBuffers[_nextViewBuffers]);
+    _nextViewBuffers = (_nextViewBuffers + 1) % kViewBufferSets;
+    const glm::mat4 projection(frustum.clipFromView);
+    glUniformMatrix4fv(_projection, 1, GL_FALSE, glm::value_ptr(projection));
+    issueBatches(opaqueBatches);
+
+    stats.drawCalls = static_cast<int>(_batches.size());
+    stats.objectsDrawn = static_cast<int>(_commands.size());
+    for (const DrawCommand& c : _commands) stats.triangles += c.count / 3;
+    return stats;
+}
+
+// One multi-draw per batch; batches from `firstBlended` on are blended.
+void SceneRenderer::issueBatches(std::size_t firstBlended) {
+    for (std::size_t b = 0; b < _batches.size(); ++b) {
+        if (b == firstBlended) {
+            glEnable(GL_BLEND);
+            // Colour blends over; alpha accumulates coverage (stays 1 on an opaque screen).
+            glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+            glDepthMask(GL_FALSE);
+        }
+        applyState(_batches[b].state);
+        const auto offset = static_cast<std::uintptr_t>(_batches[b].firstCommand) * sizeof(DrawCommand);
+        glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(offset),
+                                    _batches[b].commandCount, 0);
+    }
+    // Leave what later passes expect: depth writes on, no blending, no sampler of ours.
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
+    glBindSampler(0, 0);
 }
 
-void SceneRenderer::drawObject(const scenes::Object& object, const display::OffAxisFrustum& frustum,
-                               const glm::dmat4& caveFromWorld, FrameStats& stats) {
-    const GpuMeshRange& range = _gpu.mesh(object.mesh);
-    if (range.indexCount == 0) return;
-    const int material = _meshMaterials[object.mesh];
-    applyMaterial(material >= 0 ? _materials[material] : scenes::Material{}, object.flipWinding);
-
-    const glm::dmat4 caveFromModel = caveFromWorld * object.worldFromModel;
-    const glm::mat4 modelView = display::eyeRelativeModelView(frustum, caveFromModel);
-    const glm::mat3 normalMatrix(glm::transpose(glm::inverse(glm::dmat3(frustum.viewFromFrame * caveFromModel))));
-    glUniformMatrix4fv(_uniforms.modelView, 1, GL_FALSE, glm::value_ptr(modelView));
-    glUniformMatrix3fv(_uniforms.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
-    const auto offset = static_cast<std::uintptr_t>(range.firstIndex) * sizeof(std::uint32_t);
-    glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(range.indexCount), GL_UNSIGNED_INT,
-                             reinterpret_cast<const void*>(offset), range.baseVertex);
-    ++stats.drawCalls;
-    stats.triangles += range.indexCount / 3;
+// Appends a record per object and batches of their commands.
+void SceneRenderer::addDraws(const std::vector<int>& objects, const display::OffAxisFrustum& frustum,
+                             const glm::dmat4& frameFromWorld, bool sortByState) {
+    _items.clear();
+    for (int i : objects) {
+        const scenes::Object& o = _objects[i];
+        const glm::dmat4 frameFromModel = frameFromWorld * o.worldFromModel;
+        shaders::DrawRecord r;
+        r.modelView = display::eyeRelativeModelView(frustum, frameFromModel);
+        const glm::dmat3 normal = glm::transpose(glm::inverse(glm::dmat3(frustum.viewFromFrame * frameFromModel)));
+        for (int c = 0; c < 3; ++c) r.normalMatrix[c] = glm::vec4(glm::vec3(normal[c]), 0.0f);
+        r.info.x = _objectMaterials[i];
+        _items.push_back({_objectStates[i], _gpu.mesh(o.mesh), static_cast<std::uint32_t>(_records.size())});
+        _records.push_back(r);
+    }
+    appendBatches(_items, sortByState, _commands, _batches);
 }
 
-void SceneRenderer::applyMaterial(const scenes::Material& material, bool flipWinding) {
-    if (material.doubleSided) {
-        glDisable(GL_CULL_FACE);
-    } else {
+void SceneRenderer::upload(ViewBuffers& buffers) {
+    if (buffers.capacity < _records.size()) {
+        // Grow to the next power of two (at most the object count) so sizes settle quickly.
+        std::size_t capacity = std::max<std::size_t>(buffers.capacity, 64);
+        while (capacity < _records.size()) capacity *= 2;
+        capacity = std::min(capacity, std::max(_objects.size(), _records.size()));
+        buffers.records = storageBuffer(capacity * sizeof(shaders::DrawRecord), nullptr);
+        buffers.commands = storageBuffer(capacity * sizeof(DrawCommand), nullptr);
+        buffers.capacity = capacity;
+    }
+    glNamedBufferSubData(buffers.records.id(), 0, _records.size() * sizeof(shaders::DrawRecord), _records.data());
+    glNamedBufferSubData(buffers.commands.id(), 0, _commands.size() * sizeof(DrawCommand), _commands.data());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers.records.id());
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, buffers.commands.id());
+}
+
+void SceneRenderer::applyState(const DrawState& state) {
+    const bool cull = state.faces == FaceMode::CullCcw || state.faces == FaceMode::CullCw;
+    if (cull) {
         glEnable(GL_CULL_FACE);
         glCullFace(GL_BACK);
+    } else {
+        glDisable(GL_CULL_FACE);
     }
     // A mirroring transform turns counter-clockwise front faces clockwise.
-    glFrontFace(flipWinding ? GL_CW : GL_CCW);
-    const scenes::TextureRef& t = material.baseColorTexture;
-    const bool textured = t.image >= 0 && t.image < _gpu.textureCount();
-    glUniform4fv(_uniforms.baseColor, 1, glm::value_ptr(material.baseColorFactor));
-    glUniform1i(_uniforms.hasTexture, textured ? 1 : 0);
-    glUniform1i(_uniforms.alphaMode, alphaModeIndex(material.alphaMode));
-    glUniform1f(_uniforms.alphaCutoff, material.alphaCutoff);
-    glUniformMatrix3fv(_uniforms.uvTransform, 1, GL_FALSE, glm::value_ptr(t.transform));
-    glUniform1i(_uniforms.texCoordSet, t.texCoord == 1 ? 1 : 0);
-    if (textured) {
-        glBindTextureUnit(0, _gpu.texture(t.image));
-        glBindSampler(0, _gpu.sampler(t.wrapS, t.wrapT));
+    glFrontFace(state.faces == FaceMode::CullCw || state.faces == FaceMode::BothCw ? GL_CW : GL_CCW);
+    if (state.texture >= 0) {
+        glBindTextureUnit(0, _gpu.texture(state.texture));
+        glBindSampler(0, _gpu.sampler(static_cast<scenes::Wrap>(state.sampler / 3),
+                                      static_cast<scenes::Wrap>(state.sampler % 3)));
     }
 }
 

@@ -1,32 +1,53 @@
 #pragma once
-// Draws a scene for every screen and eye of a display into offscreen render targets.
+// Draws a scene for every screen and eye of a display into offscreen render targets, or one
+// view into a caller's framebuffer (wall baking), drawing only what a DrawFilter selects.
 //
-// Per view (display::ScreenView): the view's pass picks the target image, viewport and colour
-// mask; depth is reversed-Z (glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE), 32-bit float depth,
-// cleared to 0, GL_GREATER). Transforms compose in double and are rounded to float only as an
-// eye-relative model-view matrix:
-//   clip = clipFromView · [viewFromCave · caveFromWorld · worldFromModel]  (the bracket in double)
-// where caveFromWorld = inverse(worldFromCave), so navigation moves the CAVE through the world.
+// Per view: the viewport, scissor and colour mask come from the view; depth is reversed-Z
+// (glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE), 32-bit float depth, cleared to 0, GL_GREATER).
+// Transforms compose in double and are rounded to float only as an eye-relative model-view
+// matrix:
+//   clip = clipFromView · [viewFromFrame · frameFromWorld · worldFromModel]  (the bracket in double)
+// where the frame is the CAVE (frameFromWorld = inverse(worldFromCave): navigation moves the CAVE
+// through the world) or, for renderFrustum, whatever frame the caller's frustum is given in.
+//
+// What is submitted: the objects the DrawFilter selects, minus those whose world bounds lie
+// outside the view's frustum (CPU culling over a BVH, scenes/bvh.h, planes from the double
+// clipFromWorld; an infinite far plane never culls). Nothing outside the filter is submitted.
+//
+// Draw path: all geometry sits in GpuScene's shared buffers. Per view the submitted objects get
+// one per-draw record each (eye-relative model-view and normal matrix, composed in double and
+// rounded to float for this view; material index) in a storage buffer, and one indirect
+// command whose baseInstance names the record (scene_shaders.h). Opaque and mask objects are
+// grouped by GL state (texture + sampler, face culling + winding: draw_batches.h) and each group
+// is one glMultiDrawElementsIndirect; blended objects follow back to front, neighbours of equal
+// state merged. ViewStats::drawCalls counts these multi-draw calls.
 //
 // Shading, in linear light: baseColorFactor × vertex colour × base-colour texture (sRGB,
 // sampled at the material's texture transform of its texCoord set), lit by a headlight at the
 // eye (diffuse) plus ambient. The headlight depends only on the eye position and the surface,
 // not on the screen, so neighbouring screens shade a surface the same and seams do not show.
 // Back faces are culled unless Material::doubleSided; Object::flipWinding flips the front face.
-// Alpha: Opaque writes alpha 1, Mask discards below alphaCutoff, Blend objects are drawn after
-// all opaque ones, back to front, without depth writes.
-//
-// The per-object draw loop is deliberately plain (one glDrawElementsBaseVertex per object);
-// geometry is already in shared buffers for a later multi-draw-indirect path.
+// Alpha: Opaque writes alpha 1, Mask discards below alphaCutoff (and writes 1), Blend objects
+// are drawn after all opaque ones, back to front, without depth writes; their colour is blended
+// over (SRC_ALPHA, ONE_MINUS_SRC_ALPHA) and alpha accumulates as coverage (ONE,
+// ONE_MINUS_SRC_ALPHA), so an opaque screen stays at alpha 1 and a target cleared to alpha 0
+// (wall baking) ends with the coverage of what was drawn.
 
 #include "display/display.h"
+#include "display/gl/draw_batches.h"
 #include "display/gl/gl_object.h"
+#include "display/gl/gpu_timer.h"
 #include "display/gl/render_targets.h"
 #include "display/gl/scene_gpu.h"
+#include "display/gl/scene_shaders.h"
+#include "scenes/bvh.h"
 #include "scenes/scene.h"
 
 #include <glm/glm.hpp>
 
+#include <array>
+#include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace cavewall::gl {
@@ -34,48 +55,140 @@ namespace cavewall::gl {
 struct RenderSettings {
     glm::vec4 clearColor{0.02f, 0.02f, 0.03f, 1.0f};  // linear RGBA
     float ambient = 0.35f;                            // share of light that does not depend on the angle, [0, 1]
+    bool cullBackFaces = true;                        // false: draw both faces of everything (tests)
 };
 
+// Which objects a view draws. An object is drawn when every given criterion selects it (and
+// its bounds meet the view's frustum, unless frustumCull is false). The default draws all.
+// Pointers are borrowed for the duration of the call only.
+struct DrawFilter {
+    const std::vector<int>* objects = nullptr;  // only these Scene::objects indices (any order; duplicates
+                                                // and indices out of range are ignored); nullptr: all
+    const std::vector<bool>* mask = nullptr;    // per object index, true = may draw; indices beyond the
+                                                // mask are not drawn; nullptr: all
+    bool skipStructure = false;                 // leave out Role::Structure objects
+    bool onlyStructure = false;                 // leave out everything but structure (both flags: nothing)
+    bool frustumCull = true;                    // false: submit every selected object (tests, benchmarks)
+};
+
+// What one view cost and submitted.
+struct ViewStats {
+    int objectsDrawn = 0;        // objects submitted (after filter and culling)
+    int drawCalls = 0;           // GL draw commands issued (one multi-draw counts once)
+    std::size_t triangles = 0;   // triangles submitted
+    // Milliseconds of wall-clock time on the calling thread (the "CPU side"; drivers that shade
+    // vertices on that thread, like llvmpipe, make submission include vertex work):
+    double cullMs = 0.0;         // filtering and frustum culling
+    double cpuMs = 0.0;          // the whole view: state, culling, uploads, command submission
+};
+
+// What a frame cost: the sum over its views, plus GPU time.
 struct FrameStats {
     int drawCalls = 0;
     std::size_t triangles = 0;
+    int objectsDrawn = 0;
+    int views = 0;
+    double cullMs = 0.0;         // summed over views (wall-clock ms, as ViewStats)
+    double cpuMs = 0.0;          // render() until every command was submitted (wall-clock ms)
+    // GL_TIME_ELAPSED of the most recent frame whose timer result is available without waiting
+    // (a ring of queries; usually one or two frames old); -1 until one is available.
+    double gpuMs = -1.0;
+    std::vector<ViewStats> perView;  // in the order the views were drawn
+
+    void add(const ViewStats& view);  // adds a view's numbers to the totals and perView
+};
+
+// Where renderFrustum draws: a framebuffer the caller owns (its attachments define the
+// format; with an sRGB colour attachment the stored bytes are sRGB-encoded), a viewport and
+// an optional clear of colour (linear RGBA; alpha 0 marks "nothing drawn") within it. Depth
+// is always cleared within the viewport; the framebuffer needs a depth attachment.
+struct ViewTarget {
+    GLuint framebuffer = 0;                // 0: the default framebuffer
+    display::Viewport viewport;            // pixels, origin lower-left
+    std::optional<glm::vec4> clearColor;   // nullopt: keep the colour already there
+    glm::bvec4 colorMask{true};
 };
 
 class SceneRenderer {
 public:
-    // Uploads `scene` (the renderer keeps copies of its materials and objects, not of its
-    // geometry or images). Needs a current
-    // GL 4.5 context, in which every later call must be made. Throws Error when the shaders do
-    // not build.
+    // Uploads `scene` (the renderer keeps copies of its materials, objects and a BVH of the
+    // objects' world bounds, not of its geometry or images). Needs a current GL 4.5 context, in
+    // which every later call must be made. Throws Error when the shaders do not build.
     explicit SceneRenderer(const scenes::Scene& scene, RenderSettings settings = {});
 
-    // Clears every target and draws every view. `views` come from Display::views(head) of the
-    // display that `targets` were made for. `worldFromCave` places the CAVE in the world
-    // (metres; identity: the CAVE frame is the world frame).
+    // Clears every target and draws every view with `filter`. `views` come from
+    // Display::views(head) of the display that `targets` were made for. `worldFromCave` places
+    // the CAVE in the world (metres; identity: the CAVE frame is the world frame).
     FrameStats render(const std::vector<display::ScreenView>& views, const RenderTargets& targets,
-                      const glm::dmat4& worldFromCave = glm::dmat4(1.0));
+                      const glm::dmat4& worldFromCave = glm::dmat4(1.0), const DrawFilter& filter = {});
+
+    // For callers that interleave their own passes between views (the walkthrough): sets the
+    // frame's GL state and clears the images of `screens` (empty: all) to the clear colour.
+    void beginFrame(const RenderTargets& targets, const std::vector<int>& screens = {});
+    // Draws one view into the currently bound draw framebuffer (bind it first, e.g.
+    // targets.bind(view.screen, RenderTargets::imageOf(view.pass))): sets the GL state it needs,
+    // the view's viewport, scissor (enabled) and colour mask, clears depth within the viewport,
+    // draws, and leaves viewport, scissor and colour mask set, depth writes on, blending off and
+    // no sampler bound to unit 0, so later passes can draw into the same view. Program, vertex
+    // array, storage and indirect buffer bindings are left as the renderer set them.
+    ViewStats renderView(const display::ScreenView& view, const glm::dmat4& worldFromCave,
+                         const DrawFilter& filter = {});
+    // Draws one frustum into `target` (wall baking: screen = wall quad, eye = sampling point,
+    // both in the world, so worldFromFrame = identity). `worldFromFrame` maps the frustum's frame
+    // to the world. Binds target.framebuffer, clears as described at ViewTarget and leaves the
+    // state as renderView does.
+    ViewStats renderFrustum(const display::OffAxisFrustum& frustum, const glm::dmat4& worldFromFrame,
+                            const ViewTarget& target, const DrawFilter& filter = {});
+
+    // GPU milliseconds of the last render(), waiting for the GPU if needed (for benchmarks and
+    // one-shot renders; a frame loop reads FrameStats::gpuMs instead). -1 before any render().
+    double waitGpuMs() { return _timer.waitMs(); }
 
     const GpuScene& gpu() const { return _gpu; }
+    std::size_t objectCount() const { return _objects.size(); }
 
 private:
-    struct Uniforms {
-        GLint modelView, projection, normalMatrix, uvTransform, texCoordSet, baseColor, hasTexture, alphaMode,
-            alphaCutoff, ambient;
+    // Per-view GPU buffers: draw records and indirect commands. Views cycle through a few sets
+    // so that writing one view's data does not wait for the GPU to finish the previous view.
+    struct ViewBuffers {
+        GlObject records, commands;
+        std::size_t capacity = 0;  // draws
     };
-    void beginFrame(const RenderTargets& targets);
-    void drawView(const display::ScreenView& view, const glm::dmat4& caveFromWorld, FrameStats& stats);
-    void drawObject(const scenes::Object& object, const display::OffAxisFrustum& frustum,
-                    const glm::dmat4& caveFromWorld, FrameStats& stats);
-    void applyMaterial(const scenes::Material& material, bool flipWinding);
+    static constexpr int kViewBufferSets = 4;
 
-    std::vector<scenes::Material> _materials;
+    void applyFrameState();
+    void clearTo(glm::vec4 color);
+    void select(const display::OffAxisFrustum& frustum, const glm::dmat4& frameFromWorld, const DrawFilter& filter);
+    bool passes(int object, const DrawFilter& filter) const;
+    ViewStats drawFrustum(const display::OffAxisFrustum& frustum, const glm::dmat4& frameFromWorld,
+                          const DrawFilter& filter);
+    void addDraws(const std::vector<int>& objects, const display::OffAxisFrustum& frustum,
+                  const glm::dmat4& frameFromWorld, bool sortByState);
+    void upload(ViewBuffers& buffers);
+    void issueBatches(std::size_t firstBlended);
+    void applyState(const DrawState& state);
+
     std::vector<scenes::Object> _objects;
-    std::vector<int> _meshMaterials;     // Mesh::material per mesh
+    std::vector<DrawState> _objectStates;     // per object
+    std::vector<int> _objectMaterials;        // per object: material record index
+    std::vector<bool> _blendedObject;         // per object: its material blends
     RenderSettings _settings;
     GpuScene _gpu;
-    GlObject _program;
-    Uniforms _uniforms{};
-    std::vector<int> _opaque, _blended;  // object indices by pass
+    GlObject _program, _materialRecords;
+    GLint _projection = -1, _ambient = -1;
+    scenes::Bvh _bvh;
+    GpuTimer _timer;
+    std::array<ViewBuffers, kViewBufferSets> _viewBuffers;
+    int _nextViewBuffers = 0;
+    // Per-view scratch, kept to avoid allocating per view.
+    std::vector<int> _visible;                 // culled candidates
+    std::vector<int> _opaque, _blended;        // selected object indices by pass
+    std::vector<std::uint32_t> _listStamp;     // per object: == _stamp when in DrawFilter::objects
+    std::uint32_t _stamp = 0;
+    std::vector<shaders::DrawRecord> _records;
+    std::vector<DrawItem> _items;
+    std::vector<DrawCommand> _commands;
+    std::vector<DrawBatch> _batches;
 };
 
 }  // namespace cavewall::gl

@@ -1,7 +1,32 @@
 #pragma once
-// GLSL of the scene renderer (see scene_renderer.h for what it computes).
+// GLSL of the scene renderer (see scene_renderer.h for what it computes) and the matching
+// C++ layouts of its two storage buffers (std430).
+//
+// Every draw of a multi-draw finds its per-draw record through attribute 5, an instanced
+// attribute (divisor 1) reading the identity sequence 0, 1, 2, ...: with one instance per
+// command it yields the command's baseInstance, which the renderer sets to the record index.
+// (Core GL 4.5 has no gl_DrawID / gl_BaseInstance without ARB_shader_draw_parameters.)
+
+#include <glm/glm.hpp>
 
 namespace cavewall::gl::shaders {
+
+// Per-draw record, binding 0. Matrices are eye-relative (view origin at the eye).
+struct DrawRecord {
+    glm::mat4 modelView{1.0f};
+    glm::vec4 normalMatrix[3]{};      // columns of the model-view's inverse transpose (xyz)
+    glm::ivec4 info{0};               // x: material record index
+};
+static_assert(sizeof(DrawRecord) == 128);
+
+// Per-material record, binding 1 (one per scene material, then the default material).
+struct MaterialRecord {
+    glm::vec4 baseColor{1.0f};        // linear RGBA
+    glm::vec4 uvTransform[3]{};       // columns of the KHR_texture_transform 3x3 (xyz)
+    glm::ivec4 flags{0};              // x: texCoord set (0, 1), y: alpha mode (0 opaque, 1 mask, 2 blend), z: textured
+    glm::vec4 params{0.0f};           // x: alpha cutoff
+};
+static_assert(sizeof(MaterialRecord) == 96);
 
 inline constexpr const char* kSceneVertex = R"(#version 450 core
 layout(location = 0) in vec3 aPosition;
@@ -9,24 +34,31 @@ layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aTexCoord0;
 layout(location = 3) in vec2 aTexCoord1;
 layout(location = 4) in vec4 aColor;
+layout(location = 5) in uint aDraw;   // per instance: the draw's record index
 
-uniform mat4 uModelView;     // eye-relative: view origin at the eye
+struct Draw { mat4 modelView; vec4 normal0, normal1, normal2; ivec4 info; };
+layout(std430, binding = 0) readonly buffer Draws { Draw draws[]; };
+struct Material { vec4 baseColor; vec4 uv0, uv1, uv2; ivec4 flags; vec4 params; };
+layout(std430, binding = 1) readonly buffer Materials { Material materials[]; };
+
 uniform mat4 uProjection;    // reversed-Z off-axis projection
-uniform mat3 uNormalMatrix;  // inverse transpose of the model-view's 3x3
-uniform mat3 uUvTransform;   // KHR_texture_transform applied to (u, v, 1)
-uniform int uTexCoordSet;    // 0 or 1
 
 out vec3 vViewPosition;
 out vec3 vNormal;
 out vec2 vTexCoord;
 out vec4 vColor;
+flat out int vMaterial;
 
 void main() {
-    vec4 p = uModelView * vec4(aPosition, 1.0);
+    Draw d = draws[aDraw];
+    Material m = materials[d.info.x];
+    vec4 p = d.modelView * vec4(aPosition, 1.0);
     vViewPosition = p.xyz;
-    vNormal = uNormalMatrix * aNormal;
-    vTexCoord = (uUvTransform * vec3(uTexCoordSet == 1 ? aTexCoord1 : aTexCoord0, 1.0)).xy;
+    vNormal = mat3(d.normal0.xyz, d.normal1.xyz, d.normal2.xyz) * aNormal;
+    vec2 uv = m.flags.x == 1 ? aTexCoord1 : aTexCoord0;
+    vTexCoord = (mat3(m.uv0.xyz, m.uv1.xyz, m.uv2.xyz) * vec3(uv, 1.0)).xy;
     vColor = aColor;
+    vMaterial = d.info.x;
     gl_Position = uProjection * p;
 }
 )";
@@ -36,20 +68,20 @@ in vec3 vViewPosition;
 in vec3 vNormal;
 in vec2 vTexCoord;
 in vec4 vColor;
+flat in int vMaterial;
 
+struct Material { vec4 baseColor; vec4 uv0, uv1, uv2; ivec4 flags; vec4 params; };
+layout(std430, binding = 1) readonly buffer Materials { Material materials[]; };
 layout(binding = 0) uniform sampler2D uBaseColorTexture;  // sRGB: sampled as linear
-uniform vec4 uBaseColor;
-uniform bool uHasTexture;
-uniform int uAlphaMode;      // 0 opaque, 1 mask, 2 blend
-uniform float uAlphaCutoff;
 uniform float uAmbient;
 
 out vec4 fragColor;          // linear; the sRGB target encodes it
 
 void main() {
-    vec4 color = uBaseColor * vColor;
-    if (uHasTexture) color *= texture(uBaseColorTexture, vTexCoord);
-    if (uAlphaMode == 1 && color.a < uAlphaCutoff) discard;
+    Material m = materials[vMaterial];
+    vec4 color = m.baseColor * vColor;
+    if (m.flags.z != 0) color *= texture(uBaseColorTexture, vTexCoord);
+    if (m.flags.y == 1 && color.a < m.params.x) discard;
     // Headlight at the eye (the view origin). Meshes without normals are lit fully.
     float diffuse = 1.0;
     if (dot(vNormal, vNormal) > 1e-12) {
@@ -57,7 +89,7 @@ void main() {
         diffuse = max(dot(n, normalize(-vViewPosition)), 0.0);
     }
     float light = uAmbient + (1.0 - uAmbient) * diffuse;
-    fragColor = vec4(color.rgb * light, uAlphaMode == 2 ? color.a : 1.0);
+    fragColor = vec4(color.rgb * light, m.flags.y == 2 ? color.a : 1.0);
 }
 )";
 

@@ -13,6 +13,7 @@ Snapshot Snapshotter::render(const display::HeadPose& head, const glm::dmat4& wo
     Snapshot out;
     out.stats = _renderer.render(_display.views(head), _targets, worldFromCave);
     out.images = readFrame(_display, _targets);
+    out.stats.gpuMs = _renderer.waitGpuMs();  // the read-back has waited for the GPU already
     if (_context.windowCount() > 0) present(out.images);
     out.foldout = foldoutOf(_display, out.images, foldoutPixelsPerMetre);
     return out;
