@@ -95,4 +95,28 @@ Image readImage(const std::filesystem::path& file) {
     return image;
 }
 
+std::vector<Image> readMipLevels(const std::filesystem::path& file) {
+    auto in = OIIO::ImageInput::open(file.string());
+    if (!in) throw Error(file.string() + ": cannot read image (" + OIIO::geterror() + ")");
+    std::vector<Image> levels;
+    for (int level = 0; in->seek_subimage(0, level); ++level) {
+        const OIIO::ImageSpec& spec = in->spec();
+        const int channels = spec.nchannels;
+        if (spec.width <= 0 || spec.height <= 0 || channels <= 0)
+            throw Error(file.string() + ": MIP level " + std::to_string(level) + ": expected a non-empty image, got " +
+                        std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " +
+                        std::to_string(channels) + " channels");
+        const std::size_t pixels = static_cast<std::size_t>(spec.width) * spec.height;
+        std::vector<std::uint8_t> raw(pixels * channels);
+        if (!in->read_image(0, level, 0, channels, OIIO::TypeDesc::UINT8, raw.data()))
+            throw Error(file.string() + ": cannot decode MIP level " + std::to_string(level) + " (" +
+                        in->geterror() + ")");
+        levels.push_back({file.filename().string() + " level " + std::to_string(level), spec.width, spec.height,
+                          toRgba(raw, pixels, channels)});
+    }
+    in->geterror();  // seeking past the last level leaves an error message; it is the loop's end
+    if (levels.empty()) throw Error(file.string() + ": expected at least one image, got none");
+    return levels;
+}
+
 }  // namespace cavewall::scenes

@@ -5,6 +5,7 @@
 #include "scenes/scene.h"
 
 #include <filesystem>
+#include <vector>
 
 namespace cavewall::scenes {
 
@@ -14,5 +15,11 @@ void writeImage(const std::filesystem::path& file, const Image& image);
 
 // Reads any image OIIO can decode into 8-bit RGBA (grey and RGB are expanded, alpha = 255).
 Image readImage(const std::filesystem::path& file);
+
+// Reads every MIP level of a (tiled) MIP-mapped file such as a baked wall texture, largest
+// first, each as 8-bit RGBA like readImage. The bytes are returned as stored: no alpha
+// conversion (baked textures store premultiplied alpha, walls/gl/texture_mips.h). A file
+// without MIP levels gives one level. Throws Error naming the file and the level.
+std::vector<Image> readMipLevels(const std::filesystem::path& file);
 
 }  // namespace cavewall::scenes

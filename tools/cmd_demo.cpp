@@ -1,95 +1,103 @@
 #include "config/display_config.h"
-#include "display/display.h"
-#include "display/gl/context.h"
-#include "display/gl/snapshot.h"
-#include "scenes/primitives.h"
+#include "scenes/generate.h"
 #include "tools/args.h"
 #include "tools/commands.h"
+#include "tools/run_session.h"
 
-#include <chrono>
-#include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
-#include <thread>
 
 namespace cavewall::tools {
 
 const char* const kDemoUsage =
-    "usage: cavewall demo [--out DIR]\n"
+    "usage: cavewall demo [--out DIR] [--frames N] [--resolution PX] [--triangles N]\n"
     "\n"
-    "Renders the built-in test room on the cave4 preset from four head positions and writes, per\n"
-    "position, one PNG per screen and a fold-out into DIR/<position>/, plus DIR/index.md listing\n"
-    "them (default DIR: demo-out). With a window system ($DISPLAY) the frames are also shown in\n"
-    "one window per screen for a moment each; otherwise rendering is headless.\n";
+    "The main job: generates the default plant (once; cached in $CAVEWALL_CACHE or, without it,\n"
+    "in cache/ beside the cavewall executable), plans and bakes its virtual walls (cached too),\n"
+    "then walks cave4 along the plant's walk path at 5 m/s (crossing from cell A into B) with the\n"
+    "simulated head tracker (sim:walk) for N frames (default 240), once with the walls and\n"
+    "once with the full frustum-culled geometry. Each screen renders PX x PX pixels (default\n"
+    "256, so the demo finishes in a few minutes on llvmpipe). Prints the median frame time of\n"
+    "both runs, the speed-up and the worst angular error, and writes DIR (default demo-out):\n"
+    "walls/ and geometry/ (CSV files, frames every 60 frames) and report.md with the fold-outs.\n"
+    "Headless without $DISPLAY, windowed otherwise. Walls are planned with alpha 20 degrees,\n"
+    "zones of at least 4 m and 2 texels per degree, to keep the bake short.\n";
 
 namespace {
 
-struct DemoPose {
-    const char* name;
-    const char* description;
-    glm::dvec3 position;  // cave frame, metres
-};
-
-// Centred, then off-centre in three directions, so the corners of the CAVE have to stay
-// seamless. Mono images depend only on where the eye is, not where it looks (the screens are
-// fixed in the room), so the poses differ by position alone.
-const DemoPose kPoses[] = {
-    {"centre", "standing in the middle", {0.0, 1.7, 0.0}},
-    {"front-left", "near the front-left corner", {-0.9, 1.6, -0.7}},
-    {"back-right", "near the back-right corner", {0.9, 1.75, 0.9}},
-    {"crouching", "crouching off-centre", {0.4, 0.9, 0.3}},
-};
-
-void writeIndex(const std::filesystem::path& out, const std::string& renderer,
-                const std::vector<std::vector<std::filesystem::path>>& files) {
-    std::ofstream index(out / "index.md");
-    index << "# cavewall demo\n\nThe built-in test room on cave4, rendered by " << renderer << ".\n";
-    for (std::size_t i = 0; i < files.size(); ++i) {
-        const DemoPose& p = kPoses[i];
-        index << "\n## " << p.name << "\n\n" << p.description << ": eye at (" << p.position.x << ", " << p.position.y
-              << ", " << p.position.z << ") m.\n\n";
-        for (const auto& f : files[i])
-            index << "- [" << f.filename().string() << "](" << std::filesystem::relative(f, out).string() << ")\n";
-        index << "\n![fold-out](" << std::filesystem::relative(files[i].back(), out).string() << ")\n";
-    }
-    if (!index) throw Error((out / "index.md").string() + ": cannot write the index");
+std::filesystem::path cacheFolder() {
+    if (const char* c = std::getenv("CAVEWALL_CACHE"); c && *c) return c;
+    std::error_code ec;
+    const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    return (ec ? std::filesystem::current_path() : exe.parent_path()) / "cache";
 }
 
-// Keeps the windows up for a moment so a person can look; returns false once one was closed.
-bool holdWindows(gl::Context& context) {
-    for (int i = 0; i < 30; ++i) {
-        if (context.pollCloseRequested()) return false;
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-    return true;
+std::filesystem::path ensurePlant(const std::filesystem::path& cache, std::size_t triangles) {
+    const std::filesystem::path dir = cache / ("plant-" + std::to_string(triangles));
+    if (std::filesystem::exists(dir / "scene.json")) return dir / "scene.json";
+    std::cout << "demo: generating the plant (" << triangles << " triangles) in " << dir.string() << "\n";
+    scenes::GenerateOptions options;
+    options.triangles = triangles;
+    scenes::GeneratedScene plant = scenes::generatePlant(options);
+    return scenes::writeGenerated(plant, dir);
+}
+
+void writeReport(const std::filesystem::path& out, const RunOptions& o, const RunSummary& walls,
+                 const RunSummary& geometry) {
+    const double mw = median(walls.frameMs), mg = median(geometry.frameMs);
+    std::ofstream r(out / "report.md");
+    r << "# cavewall demo\n\nThe generated plant on cave4 (" << o.display.screens[0].resolution.x << " x "
+      << o.display.screens[0].resolution.y << " pixels per screen), guided along its walk path at " << o.guidePace
+      << " m/s with `" << o.tracker << "`, " << o.frames << " frames at 1/60 s, rendered by " << walls.renderer
+      << ".\n\n| | walls | full geometry |\n|---|---|---|\n"
+      << "| median frame time (ms) | " << mw << " | " << mg << " |\n"
+      << "| worst angular error (deg) | " << walls.worstErrorDeg << " | 0 |\n"
+      << "| worst angular error (px) | " << walls.worstErrorPx << " | 0 |\n"
+      << "| texture page-ins / misses | " << walls.pageIns << " / " << walls.misses << " | - |\n\n"
+      << "Speed-up of the median frame time: " << (mw > 0 ? mg / mw : 0.0) << "x (alpha " << o.plan.alphaDeg
+      << " deg, " << walls.textures << " textures).\n\nPer-frame data: `walls/frames.csv`, `walls/walls.csv`, "
+      << "`geometry/frames.csv`.\n\n## Fold-outs (walls | full geometry)\n\n";
+    for (std::size_t i = 0; i < walls.foldouts.size() && i < geometry.foldouts.size(); ++i)
+        r << "![walls](" << std::filesystem::relative(walls.foldouts[i], out).string() << ") ![geometry]("
+          << std::filesystem::relative(geometry.foldouts[i], out).string() << ")\n\n";
+    if (!r) throw Error((out / "report.md").string() + ": cannot write the report");
 }
 
 }  // namespace
 
 int runDemo(const std::vector<std::string>& words) {
     const Args args(words, {});
-    args.expectFlags({"out"});
+    args.expectFlags({"out", "frames", "resolution", "triangles"});
     const std::filesystem::path out = args.getOr("out", "demo-out");
-    const display::Display disp(config::loadDisplayConfig("cave4"));
-    const scenes::Scene scene = scenes::builtinTestScene();
-    const bool windowed = gl::windowSystemAvailable();
-    const auto context = windowed ? gl::createWindowedContext(gl::windowRequests(disp), false) : gl::createHeadlessContext();
-    gl::Snapshotter snapshotter(disp, scene, *context);
+    const std::filesystem::path cache = cacheFolder();
+    RunOptions o;
+    o.scene = ensurePlant(cache, static_cast<std::size_t>(args.integer("triangles", 2000000, 1000, 100000000)));
+    o.display = config::loadDisplayConfig("cave4");
+    const int px = static_cast<int>(args.integer("resolution", 256, 16, 4096));
+    for (config::Screen& s : o.display.screens) s.resolution = {px, px};
+    o.tracker = "sim:walk?seed=1";
+    o.frames = args.integer("frames", 240, 1, 1000000);
+    o.guidePace = 5.0;
+    o.window = WindowMode::Auto;
+    o.plan.alphaDeg = 20.0;
+    o.plan.minZoneSize = 4.0;
+    o.plan.pixelsPerDegree = 2.0;
+    o.cache = cache / "bakes";
+    o.saveEvery = 60;
+    o.verbose = true;
 
-    std::vector<std::vector<std::filesystem::path>> files;
-    for (const DemoPose& p : kPoses) {
-        const auto start = std::chrono::steady_clock::now();
-        const gl::Snapshot frame = snapshotter.render({p.position, glm::dquat(1, 0, 0, 0)});
-        const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
-        files.push_back(gl::writeFrame(out / p.name, frame.images, frame.foldout));
-        std::cout << p.name << ": " << frame.stats.drawCalls << " draw calls, " << frame.stats.triangles
-                  << " triangles, " << std::lround(took.count()) << " ms to render, read back and fold out -> "
-                  << (out / p.name).string() << "\n";
-        if (windowed && !holdWindows(*context)) break;
-    }
-    writeIndex(out, context->info().renderer, files);
-    std::cout << "GL_RENDERER: " << context->info().renderer << " (" << context->info().provider << ")\n"
-              << "index: " << (out / "index.md").string() << "\n";
+    o.out = out / "walls";
+    const RunSummary walls = runSession(o);
+    o.out = out / "geometry";
+    o.walls = false;
+    const RunSummary geometry = runSession(o);
+    writeReport(out, o, walls, geometry);
+    const double mw = median(walls.frameMs), mg = median(geometry.frameMs);
+    std::cout << "demo: median frame time " << mw << " ms with walls, " << mg << " ms full geometry, speed-up "
+              << (mw > 0 ? mg / mw : 0.0) << "x; worst error " << walls.worstErrorDeg << " deg ("
+              << walls.worstErrorPx << " px)\nGL_RENDERER: " << walls.renderer << "\nreport: "
+              << (out / "report.md").string() << "\n";
     return 0;
 }
 

@@ -30,6 +30,10 @@ int runRender(const std::vector<std::string>& args);
 extern const char* const kRenderUsage;
 int runDemo(const std::vector<std::string>& args);
 extern const char* const kDemoUsage;
+int runRun(const std::vector<std::string>& args);
+extern const char* const kRunUsage;
+int runBake(const std::vector<std::string>& args);
+extern const char* const kBakeUsage;
 #endif
 
 }  // namespace cavewall::tools

@@ -17,7 +17,9 @@ const Command kCommands[] = {
     {"plan", "plan the zones and textures of every virtual wall (summary, JSON, PNG diagram)", kPlanUsage, runPlan},
 #ifdef CAVEWALL_HAVE_GL
     {"render", "render one frame of a scene to PNG files (one per screen and eye, plus a fold-out)", kRenderUsage, runRender},
-    {"demo", "render the built-in room on cave4 from several head positions (images and index.md)", kDemoUsage, runDemo},
+    {"demo", "walk cave4 through the generated plant with and without virtual walls (report.md)", kDemoUsage, runDemo},
+    {"run", "walk through a scene with textured virtual walls: frames.csv, walls.csv, images", kRunUsage, runRun},
+    {"bake", "bake the textures of every virtual wall into the cache (tiled MIP-mapped files + manifest)", kBakeUsage, runBake},
 #endif
 };
 

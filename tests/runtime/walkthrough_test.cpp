@@ -1,0 +1,229 @@
+// The walkthrough runtime on a small generated plant: one selection per frame for every eye and
+// screen, golden frames in a texture, a blend and a geometry zone, and paging under a tiny
+// budget never leaving a wall missing.
+#include "tests/gl/gl_test_support.h"
+#include "tests/runtime/runtime_fixture.h"
+
+#include "display/gl/frame_images.h"
+#include "scenes/image_io.h"
+
+#include <gmock/gmock.h>
+#include <chrono>
+#include <iostream>
+#include <thread>
+#include <gtest/gtest.h>
+
+namespace cavewall::testing {
+namespace {
+
+using Blend = walls::WallBlend;
+
+class WalkthroughTest : public GlTest {
+protected:
+    const SmallPlant& plant = smallPlant();
+    const int wallAB = wallIndex(plant.walls, "A|B");
+
+    Blend blendOf(const walls::FrameSelection& s, int wall) const {
+        for (const Blend& b : s.walls)
+            if (b.wall == wall) return b;
+        return {};
+    }
+    const gl::WallState* stateOf(const gl::FrameResult& r, int wall) const {
+        for (const gl::WallState& s : r.walls)
+            if (s.wall == wall) return &s;
+        return nullptr;
+    }
+    // The first eye on the line z = -10, y = 1.7 from x = -26 towards the wall A|B (x = -12)
+    // whose blend for A|B satisfies `want`.
+    std::optional<glm::dvec3> findEye(const std::function<bool(const Blend&)>& want) const {
+        walls::FrameSelector selector(plant.walls.plan, plant.walls.table, plant.description);
+        for (double x = -26.0; x < -12.05; x += 0.05) {
+            const glm::dvec3 eye(x, 1.7, -10.0);
+            if (want(blendOf(selector.select(eye), wallAB))) return eye;
+        }
+        return std::nullopt;
+    }
+};
+
+TEST_F(WalkthroughTest, BothEyesAndAllScreensUseTheCyclopeanSelection) {
+    ASSERT_GE(wallAB, 0);
+    walls::FrameSelector selector(plant.walls.plan, plant.walls.table, plant.description);
+    // Find a head position where the two eyes (0.2 m apart along world z, the CAVE facing +X)
+    // would select different weights on A|B: a frame that used per-eye selections would show it.
+    std::optional<glm::dvec3> head;
+    for (double z = -19.0; z < -1.0 && !head; z += 0.05) {
+        const glm::dvec3 p(-20.0, 1.7, z);
+        const Blend left = blendOf(selector.select(p - glm::dvec3(0, 0, 0.1)), wallAB);
+        const Blend right = blendOf(selector.select(p + glm::dvec3(0, 0, 0.1)), wallAB);
+        if (left.textures != right.textures) head = p;
+    }
+    ASSERT_TRUE(head) << "no zone border along x = -20";
+    const display::Display display = testDisplay(32, true, 0.2);
+    gl::WalkthroughOptions options;
+    options.synchronousPaging = true;
+    gl::Walkthrough walkthrough(plant.scene, plant.description, display, *context, plant.walls, options);
+    gl::FrameInput in;
+    in.worldFromCave = cavePlacedAt(*head);
+    const gl::FrameResult r = walkthrough.renderFrame(in);
+    // The frame's walls are exactly the selection of the cyclopean eye (the head position).
+    EXPECT_NEAR(glm::distance(r.eyeWorld, *head), 0.0, 1e-9);
+    const walls::FrameSelection expected = selector.select(*head);
+    ASSERT_EQ(r.walls.size(), expected.walls.size());
+    for (std::size_t i = 0; i < r.walls.size(); ++i) {
+        SCOPED_TRACE(i);
+        EXPECT_EQ(r.walls[i].wall, expected.walls[i].wall);
+        EXPECT_EQ(r.walls[i].textures, expected.walls[i].textures);
+        EXPECT_EQ(r.walls[i].geometryWeight, expected.walls[i].geometryWeight);
+        EXPECT_FALSE(r.walls[i].fallback);  // synchronous paging: everything resident
+    }
+}
+
+TEST_F(WalkthroughTest, GoldenFramesInTextureBlendAndGeometryZones) {
+    ASSERT_GE(wallAB, 0);
+    struct Case {
+        const char* name;
+        std::function<bool(const Blend&)> want;
+    };
+    const Case cases[] = {
+        {"runtime-texture-zone", [](const Blend& b) { return b.textures.size() == 1 && b.geometryWeight == 0.0; }},
+        {"runtime-blend-zone", [](const Blend& b) { return b.geometryWeight > 0.3 && b.geometryWeight < 0.7; }},
+        {"runtime-geometry-zone", [](const Blend& b) { return b.geometryWeight == 1.0; }},
+    };
+    const display::Display display = testDisplay(96);
+    gl::WalkthroughOptions options;
+    options.synchronousPaging = true;
+    gl::Walkthrough walkthrough(plant.scene, plant.description, display, *context, plant.walls, options);
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        const auto eye = findEye(c.want);
+        ASSERT_TRUE(eye);
+        gl::FrameInput in;
+        in.worldFromCave = cavePlacedAt(*eye);
+        in.readImages = true;
+        const gl::FrameResult r = walkthrough.renderFrame(in);
+        const gl::WallState* ab = stateOf(r, wallAB);
+        ASSERT_NE(ab, nullptr);
+        EXPECT_FALSE(ab->fallback);
+        EXPECT_TRUE(c.want(Blend{wallAB, 0, -1, ab->textures, ab->geometryWeight}));
+        expectMatchesGolden(gl::foldoutOf(display, r.images), c.name);
+    }
+}
+
+// The red box of twoCells() as seen in a frame: pixels clearly red.
+bool isRed(const std::uint8_t* p) { return p[0] > 80 && p[0] > 2 * p[1] && p[0] > 2 * p[2]; }
+
+// A slow disk: every texture takes 40 ms to decode, far longer than a small frame here.
+std::vector<scenes::Image> slowDecoder(const std::filesystem::path& file) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(40));
+    return scenes::readMipLevels(file);
+}
+
+// Share of the box (red in `full`) that shows the clear colour (magenta) in `frame`.
+double missingShare(const gl::FrameResult& frame, const gl::FrameResult& full) {
+    std::size_t box = 0, missing = 0;
+    for (std::size_t i = 0; i < frame.images.size(); ++i)
+        for (std::size_t p = 0; p + 3 < frame.images[i].pixels.rgba.size(); p += 4) {
+            if (!isRed(&full.images[i].pixels.rgba[p])) continue;
+            const std::uint8_t* q = &frame.images[i].pixels.rgba[p];
+            ++box;
+            missing += q[0] == 255 && q[1] == 0 && q[2] == 255;
+        }
+    return box ? double(missing) / double(box) : 1.0;
+}
+
+TEST_F(WalkthroughTest, PagingUnderATinyBudgetNeverLeavesAWallMissing) {
+    const SmallPlant& scene = twoCells();
+    const display::Display display = testDisplay(48);
+    gl::WalkthroughOptions options;
+    options.textureBudgetMB = 1.0;        // about 4 of its 10 textures: constant eviction
+    options.uploadMBPerFrame = 0.001;     // one texture per frame at most
+    options.render.clearColor = {1.0f, 0.0f, 1.0f, 1.0f};  // magenta: nothing drawn
+    options.decoder = slowDecoder;
+    gl::Walkthrough walls(scene.scene, scene.description, display, *context, scene.walls, options);
+    gl::Walkthrough geometry(scene.scene, scene.description, display, *context, std::nullopt, options);
+    int fallbacks = 0, previous = 0, frames = 0;  // previous: walls that kept the last texture
+    double worstMissing = 0.0;
+    // Towards the wall through texture, blend and geometry zones, jumping 7 m along it every 8
+    // frames (further than the pager prefetches), so the new zone's texture is not there yet.
+    for (; frames < 96; ++frames) {
+        const double x = -9.0 + frames / 16 * 1.5, z = (frames / 8) % 2 ? 3.5 : -3.5;
+        gl::FrameInput in;
+        in.frame = frames;
+        in.worldFromCave = cavePlacedAt({x, 1.7, z});
+        in.readImages = true;
+        const gl::FrameResult r = walls.renderFrame(in);
+        const gl::FrameResult full = geometry.renderFrame(in);
+        for (const gl::WallState& s : r.walls) {
+            fallbacks += s.fallback ? 1 : 0;
+            previous += s.fallback && !s.textures.empty() ? 1 : 0;  // kept the previous texture
+        }
+        // Where the full geometry shows the box behind the wall, the walls frame must show
+        // something (texture or geometry), never the clear colour.
+        worstMissing = std::max(worstMissing, missingShare(r, full));
+    }
+    std::cout << frames << " frames, " << fallbacks << " wall fallbacks (" << previous
+              << " to the previous texture), worst share of the box missing "
+              << worstMissing << "\n";
+    // The texture's angular error (<= 10 degrees) may move the box's edges by a few pixels;
+    // a missing wall would lose all of it.
+    EXPECT_LT(worstMissing, 0.1);
+    // The slow decoder forced fallbacks: at least the first frame has nothing resident.
+    EXPECT_GT(fallbacks, 0);
+}
+
+TEST_F(WalkthroughTest, AWallWaitingForItsTextureKeepsThePreviousOneWhileItIsWithinAlpha) {
+    const SmallPlant& scene = twoCells();
+    const int wall = wallIndex(scene.walls, "A|B");
+    const display::Display display = testDisplay(48);
+    gl::WalkthroughOptions options;
+    options.render.clearColor = {1.0f, 0.0f, 1.0f, 1.0f};
+    options.decoder = slowDecoder;
+    gl::Walkthrough walls(scene.scene, scene.description, display, *context, scene.walls, options);
+    gl::Walkthrough geometry(scene.scene, scene.description, display, *context, std::nullopt, options);
+    walls::FrameSelector selector(scene.walls.plan, scene.walls.table, scene.description);
+    // `first` in a texture zone; `border` the first point along the wall where the next
+    // texture blends in (the first texture still drawn, so proven within alpha there); `far`
+    // 7 m along the wall, where the first texture is far beyond alpha.
+    // `first` sits at the low end of its zone, so the pager's 1.5 m look-ahead does not reach
+    // the next zone up.
+    glm::dvec3 first(-9.0, 1.7, -3.5);
+    const glm::dvec3 far(-9.0, 1.7, 3.5);
+    const auto firstTextures = blendOf(selector.select(first), wall).textures;
+    ASSERT_EQ(firstTextures.size(), 1u);
+    while (blendOf(selector.select(first - glm::dvec3(0, 0, 0.01)), wall).textures == firstTextures) first.z -= 0.01;
+    glm::dvec3 border = first;
+    while (blendOf(selector.select(border), wall).textures.size() < 2 && border.z < 0.0) border.z += 0.01;
+    ASSERT_LT(border.z, 0.0) << "no blend strip next to the first zone";
+    ASSERT_GT(border.z - first.z, 1.6) << "the zone is too narrow for this test";
+    auto frame = [&](glm::dvec3 eye, long n) {
+        gl::FrameInput in;
+        in.frame = n;
+        in.worldFromCave = cavePlacedAt(eye);
+        in.readImages = true;
+        const gl::FrameResult r = walls.renderFrame(in);
+        EXPECT_LT(missingShare(r, geometry.renderFrame(in)), 0.1) << "frame " << n;
+        EXPECT_NE(stateOf(r, wall), nullptr);
+        return stateOf(r, wall) ? *stateOf(r, wall) : gl::WallState{};
+    };
+    // Nothing resident yet: the wall is drawn as geometry.
+    const gl::WallState cold = frame(first, 0);
+    EXPECT_TRUE(cold.fallback);
+    EXPECT_TRUE(cold.textures.empty());
+    EXPECT_EQ(cold.geometryWeight, 1.0);
+    walls.waitForTextures();
+    const gl::WallState warm = frame(first, 1);
+    EXPECT_FALSE(warm.fallback);
+    EXPECT_EQ(warm.textures, firstTextures);
+    // The next texture is still decoding (40 ms): the wall keeps the one it drew.
+    const gl::WallState kept = frame(border, 2);
+    EXPECT_TRUE(kept.fallback);
+    EXPECT_EQ(kept.textures, firstTextures);
+    // After a jump the old texture would be wrong by far more than alpha: geometry instead.
+    const gl::WallState jumped = frame(far, 3);
+    EXPECT_TRUE(jumped.fallback);
+    EXPECT_TRUE(jumped.textures.empty());
+    EXPECT_EQ(jumped.geometryWeight, 1.0);
+}
+
+}  // namespace
+}  // namespace cavewall::testing

@@ -1,0 +1,189 @@
+// The bake cache (walls/gl/baker.h): unchanged input does no work, damaged files are re-baked
+// one by one, changed options get a new key, and a scene change re-bakes only what it touches.
+#include "config/error.h"
+#include "tests/gl/gl_test_support.h"
+#include "tests/wallsgl/bake_test_scene.h"
+#include "walls/gl/bake_cache.h"
+#include "walls/gl/baker.h"
+
+#include <gmock/gmock.h>
+
+#include <fstream>
+
+namespace cavewall::walls {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
+
+class BakeCacheTest : public cavewall::testing::GlTest {
+protected:
+    void SetUp() override {
+        cavewall::testing::GlTest::SetUp();
+        if (IsSkipped()) return;
+        const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        root = cavewall::testing::testOutputFolder("bake_cache") / info->name();
+        std::filesystem::remove_all(root);
+        request.scene = walls::testing::writeBakeTestScene(root / "scene");
+        request.cache = root / "cache";
+        request.settings.maxResolution = 32;  // small textures: the cache logic does not depend on size
+        request.context = context.get();
+    }
+
+    std::filesystem::path root;
+    BakeRequest request;
+};
+
+std::filesystem::file_time_type modified(const std::filesystem::path& p) { return std::filesystem::last_write_time(p); }
+
+TEST_F(BakeCacheTest, UnchangedSceneDoesNoWork) {
+    std::vector<BakeProgress> progress;
+    request.progress = [&](const BakeProgress& p) { progress.push_back(p); };
+    const BakeResult first = bakeScene(request);
+    const int n = static_cast<int>(first.manifest.textures.size());
+    ASSERT_GT(n, 2);
+    EXPECT_EQ(first.baked, n);  // an empty cache renders everything
+    EXPECT_EQ(first.reused, 0);
+    // Progress counts up to the whole plan, ending with everything done exactly once.
+    ASSERT_FALSE(progress.empty());
+    for (std::size_t i = 1; i < progress.size(); ++i) EXPECT_GE(progress[i].done, progress[i - 1].done);
+    EXPECT_EQ(progress.back().done, n);
+    EXPECT_EQ(progress.back().total, n);
+    EXPECT_EQ(progress.back().baked, n);
+    progress.clear();
+    const auto manifestTime = modified(first.folder / "manifest.json");
+    const auto textureTime = modified(first.folder / first.manifest.textures[0].file);
+
+    const BakeResult second = bakeScene(request);
+    EXPECT_EQ(second.folder, first.folder);
+    EXPECT_EQ(second.baked, 0);
+    EXPECT_EQ(second.reused, n);
+    EXPECT_EQ(second.bytesWritten, 0u);
+    ASSERT_EQ(progress.size(), 1u);  // one report: everything was found at once
+    EXPECT_EQ(progress[0].reused, n);
+    EXPECT_EQ(second.manifest, first.manifest);
+    // Nothing was written: neither the manifest nor a texture file.
+    EXPECT_EQ(modified(second.folder / "manifest.json"), manifestTime);
+    EXPECT_EQ(modified(second.folder / second.manifest.textures[0].file), textureTime);
+}
+
+TEST_F(BakeCacheTest, DamagedFileIsReBakedAlone) {
+    const BakeResult first = bakeScene(request);
+    const int n = static_cast<int>(first.manifest.textures.size());
+    struct Damage {
+        const char* name;
+        void (*apply)(const std::filesystem::path&);
+    };
+    const Damage damages[] = {
+        {"torn", [](const std::filesystem::path& f) { std::filesystem::resize_file(f, std::filesystem::file_size(f) / 2); }},
+        {"one byte changed",
+         [](const std::filesystem::path& f) {
+             std::fstream s(f, std::ios::in | std::ios::out | std::ios::binary);
+             const auto last = static_cast<std::streamoff>(std::filesystem::file_size(f) / 2);
+             s.seekg(last);
+             const char c = static_cast<char>(s.get());
+             s.seekp(last);
+             s.put(static_cast<char>(c ^ 0x01));
+         }},
+        {"missing", [](const std::filesystem::path& f) { std::filesystem::remove(f); }},
+    };
+    int victim = 0;
+    for (const Damage& d : damages) {
+        SCOPED_TRACE(d.name);
+        const BakedTexture& t = first.manifest.textures[victim++ % n];
+        d.apply(first.folder / t.file);
+        ASSERT_FALSE(textureFileValid(first.folder, t));
+        const BakeResult again = bakeScene(request);
+        EXPECT_EQ(again.baked, 1);  // exactly the damaged one
+        EXPECT_EQ(again.reused, n - 1);
+        EXPECT_TRUE(textureFileValid(again.folder, again.manifest.textures[t.id]));
+        // Rendering is deterministic, so the re-baked file is the original one again.
+        EXPECT_EQ(manifestToJson(again.manifest), manifestToJson(first.manifest));
+    }
+}
+
+TEST_F(BakeCacheTest, ChangedAlphaGetsANewKey) {
+    const BakeResult first = bakeScene(request);
+    request.plan.alphaDeg = 20.0;
+    const BakeResult second = bakeScene(request);
+    EXPECT_NE(second.key, first.key);
+    EXPECT_NE(second.folder, first.folder);
+    EXPECT_EQ(second.manifest.alphaDeg, 20.0);
+    EXPECT_TRUE(std::filesystem::exists(first.folder / "manifest.json"));  // the old bake stays valid
+    request.settings.maxResolution = 64;  // a bake setting is part of the key too
+    EXPECT_NE(bakeScene(request).key, second.key);
+}
+
+TEST_F(BakeCacheTest, SceneChangeReBakesOnlyTheTexturesItTouches) {
+    const BakeResult first = bakeScene(request);
+    int front = 0;  // textures seen from the front cell: they show the back cell's boxes
+    for (const BakedTexture& t : first.manifest.textures) front += t.cell == 0;
+    ASSERT_GT(front, 0);
+    ASSERT_LT(front, static_cast<int>(first.manifest.textures.size()));
+    // Move the red box (back cell): side-0 textures change, side-1 textures (the yellow box in
+    // the front cell, seen from the back) do not, and are taken over from the first bake.
+    walls::testing::writeBakeTestScene(root / "scene", 0.5);
+    const BakeResult second = bakeScene(request);
+    EXPECT_NE(second.folder, first.folder);
+    EXPECT_EQ(second.baked, front);
+    EXPECT_EQ(second.linked, static_cast<int>(first.manifest.textures.size()) - front);
+    for (const BakedTexture& t : second.manifest.textures) {
+        EXPECT_TRUE(textureFileValid(second.folder, t)) << t.file;
+        const BakedTexture& old = first.manifest.textures[t.id];
+        EXPECT_EQ(t.file == old.file, t.cell == 1) << t.file;  // same texture key exactly when untouched
+    }
+}
+
+TEST_F(BakeCacheTest, CorruptManifestIsAWarningAndEverythingIsReBaked) {
+    const BakeResult first = bakeScene(request);
+    std::ofstream(first.folder / "manifest.json") << "{\"version\": 1, \"key\":";
+    const BakeResult again = bakeScene(request);
+    EXPECT_EQ(again.baked, static_cast<int>(first.manifest.textures.size()));
+    ASSERT_EQ(again.warnings.size(), 1u);
+    EXPECT_THAT(again.warnings[0], HasSubstr("manifest.json"));
+    EXPECT_EQ(manifestToJson(again.manifest), manifestToJson(first.manifest));
+}
+
+TEST_F(BakeCacheTest, BadSettingsAndFoldersAreErrors) {
+    request.cache = "/proc/cavewall-cache";  // nobody, not even root, creates folders in /proc
+    EXPECT_THAT([&] { bakeScene(request); }, ThrowsMessage<Error>(HasSubstr("/proc/cavewall-cache/")));
+    EXPECT_THAT([&] { bakeScene(request); }, ThrowsMessage<Error>(HasSubstr(": cannot create the bake folder")));
+    request.cache = root / "cache";
+    request.settings.jobs = 0;
+    EXPECT_THAT([&] { bakeScene(request); }, ThrowsMessage<Error>(HasSubstr("bake settings: jobs: expected [1, 64], got 0")));
+    request.settings.jobs = 1;
+    request.settings.tileSize = 40;
+    EXPECT_THAT([&] { bakeScene(request); },
+                ThrowsMessage<Error>(HasSubstr("tileSize: expected a multiple of 16 in [16, 1024], got 40")));
+}
+
+TEST(BakeResolution, PlanResolutionIsCappedKeepingTheAspect) {
+    struct Case {
+        glm::ivec2 planned;
+        int cap;
+        glm::ivec2 expected;
+    };
+    const Case cases[] = {
+        {{100, 50}, 1024, {100, 50}},     // within the cap: as planned
+        {{4000, 1000}, 1024, {1024, 256}},  // scaled by 1024 / 4000, aspect 4:1 kept
+        {{300, 3000}, 64, {6, 64}},       // 300 * 64 / 3000 = 6.4 rounds to 6
+        {{5000, 1}, 16, {16, 1}},         // never below one texel
+        {{0, 0}, 16, {1, 1}},             // a plan without resolutions still bakes one texel
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(std::to_string(c.planned.x) + " x " + std::to_string(c.planned.y) + " cap " + std::to_string(c.cap));
+        EXPECT_EQ(bakeResolution(c.planned, c.cap), c.expected);
+    }
+}
+
+TEST(BakeFileNames, TextureKeyRoundTripsThroughTheFileName) {
+    EXPECT_EQ(textureFileName(7, 0x0123456789abcdefull), "tex_0007_0123456789abcdef.tx");
+    EXPECT_EQ(textureKeyOf("tex_0007_0123456789abcdef.tx"), 0x0123456789abcdefull);
+    EXPECT_EQ(textureKeyOf("tex_12345_0123456789abcdef.tx"), 0x0123456789abcdefull);  // ids beyond 4 digits
+    EXPECT_EQ(textureKeyOf("manifest.json"), std::nullopt);
+    EXPECT_EQ(textureKeyOf("tex_0007_0123456789ABCDEF.tx"), std::nullopt);  // hex64 writes lower case
+    EXPECT_EQ(textureKeyOf(".tex_0007_0123456789abcdef.tmp-1-0.tx"), std::nullopt);
+}
+
+}  // namespace
+}  // namespace cavewall::walls

@@ -1,0 +1,130 @@
+// MIP chains of baked textures (walls/gl/texture_mips.h): premultiplied in linear light before
+// downsampling, exact box filter, and the tiled MIP-mapped file round trip. GL-free.
+#include "config/error.h"
+#include "scenes/image_io.h"
+#include "walls/gl/texture_mips.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gmock/gmock.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <random>
+
+namespace cavewall::walls {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
+
+scenes::Image image(int w, int h, std::vector<std::uint8_t> rgba) { return {"test", w, h, std::move(rgba)}; }
+
+glm::dvec4 texel(const scenes::Image& i, int x, int y) {
+    const std::uint8_t* p = &i.rgba[(std::size_t(y) * i.width + x) * 4];
+    return {p[0], p[1], p[2], p[3]};
+}
+
+// Linear straight colour of a stored (premultiplied, sRGB-encoded) texel: decode, then divide by alpha.
+glm::dvec3 unpremultiplied(const scenes::Image& i, int x, int y) {
+    const glm::dvec4 t = texel(i, x, y);
+    const double a = t.a / 255.0;
+    return glm::dvec3(srgbToLinear(float(t.r / 255.0)), srgbToLinear(float(t.g / 255.0)), srgbToLinear(float(t.b / 255.0))) / a;
+}
+
+TEST(TextureMips, HalfTransparentEdgeDoesNotDarken) {
+    // One opaque white texel beside a fully transparent one: the 1 x 1 level covers half of each,
+    // so it is white at half coverage. Averaging straight sRGB values instead would give 128,
+    // i.e. linear 0.216 / 0.5 = 0.43: a dark edge.
+    const auto levels = premultipliedMipChain(image(2, 1, {255, 255, 255, 255, 0, 0, 0, 0}));
+    ASSERT_EQ(levels.size(), 2u);
+    EXPECT_EQ(texel(levels[1], 0, 0).a, 128);  // round(0.5 * 255)
+    const glm::dvec3 c = unpremultiplied(levels[1], 0, 0);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(c[k], 1.0, 0.01) << "channel " << k;  // 8-bit rounding of 0.5
+}
+
+TEST(TextureMips, TransparentTexelsDoNotBleedTheirColour) {
+    // The transparent texel carries garbage red (straight alpha 0): premultiplying removes it, so
+    // the mixed texel is pure blue at half coverage.
+    const auto levels = premultipliedMipChain(image(2, 1, {255, 0, 0, 0, 0, 0, 255, 255}));
+    const glm::dvec4 t = texel(levels[1], 0, 0);
+    EXPECT_EQ(t.r, 0);
+    EXPECT_EQ(t.g, 0);
+    EXPECT_NEAR(unpremultiplied(levels[1], 0, 0).b, 1.0, 0.01);
+}
+
+TEST(TextureMips, LevelSizesHalveDownToOneTexel) {
+    struct Case {
+        int w, h;
+        std::vector<glm::ivec2> sizes;  // floor(size / 2) per level, at least 1, as GL expects
+    };
+    const Case cases[] = {{1, 1, {{1, 1}}},
+                          {5, 3, {{5, 3}, {2, 1}, {1, 1}}},
+                          {8, 2, {{8, 2}, {4, 1}, {2, 1}, {1, 1}}},
+                          {64, 32, {{64, 32}, {32, 16}, {16, 8}, {8, 4}, {4, 2}, {2, 1}, {1, 1}}}};
+    for (const Case& c : cases) {
+        SCOPED_TRACE(std::to_string(c.w) + " x " + std::to_string(c.h));
+        const auto levels = premultipliedMipChain(image(c.w, c.h, std::vector<std::uint8_t>(std::size_t(c.w) * c.h * 4, 200)));
+        ASSERT_EQ(levels.size(), c.sizes.size());
+        for (std::size_t i = 0; i < levels.size(); ++i) EXPECT_EQ(glm::ivec2(levels[i].width, levels[i].height), c.sizes[i]);
+    }
+}
+
+TEST(TextureMips, BoxFilterKeepsMeanCoverageAndColour) {
+    // An exact area-weighted box filter conserves the mean of premultiplied linear colour and of
+    // alpha over the image, also for odd sizes; only 8-bit rounding (<= 0.5/255 per texel,
+    // averaged) and the sRGB step near black may move it.
+    std::mt19937 random(7);
+    std::uniform_int_distribution<int> byte(0, 255);
+    std::vector<std::uint8_t> rgba(7 * 5 * 4);
+    for (auto& b : rgba) b = static_cast<std::uint8_t>(byte(random));
+    const auto levels = premultipliedMipChain(image(7, 5, rgba));
+    auto mean = [](const scenes::Image& l) {
+        glm::dvec4 sum(0.0);
+        for (int y = 0; y < l.height; ++y)
+            for (int x = 0; x < l.width; ++x) {
+                const glm::dvec4 t = texel(l, x, y) / 255.0;
+                sum += glm::dvec4(srgbToLinear(float(t.r)), srgbToLinear(float(t.g)), srgbToLinear(float(t.b)), t.a);
+            }
+        return sum / double(l.width * l.height);
+    };
+    const glm::dvec4 base = mean(levels[0]);
+    for (std::size_t i = 1; i < levels.size(); ++i)
+        for (int k = 0; k < 4; ++k) EXPECT_NEAR(mean(levels[i])[k], base[k], 0.006) << "level " << i << " channel " << k;
+}
+
+TEST(TextureMips, FileRoundTripIsExactTiledAndMipMapped) {
+    std::vector<std::uint8_t> rgba(100 * 40 * 4);
+    for (std::size_t i = 0; i < rgba.size(); ++i) rgba[i] = static_cast<std::uint8_t>((i * 37) % 251);
+    const auto levels = premultipliedMipChain(image(100, 40, rgba));
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / "cavewall-mips-test" / "t.tx";
+    writeMipFile(file, levels, {32, "zip"});
+    const auto back = scenes::readMipLevels(file);
+    ASSERT_EQ(back.size(), levels.size());
+    for (std::size_t i = 0; i < levels.size(); ++i) EXPECT_EQ(back[i].rgba, levels[i].rgba) << "level " << i;  // pure data: exact
+
+    auto in = OIIO::ImageInput::open(file.string());
+    ASSERT_TRUE(in);
+    EXPECT_EQ(in->spec().tile_width, 32);
+    EXPECT_EQ(in->spec().get_int_attribute("oiio:UnassociatedAlpha", 0), 0);  // associated = premultiplied
+    EXPECT_THAT(in->spec().get_string_attribute("ImageDescription"), HasSubstr("premultiplied"));
+    // No temporary file is left beside it.
+    int files = 0;
+    for ([[maybe_unused]] const auto& f : std::filesystem::directory_iterator(file.parent_path())) ++files;
+    EXPECT_EQ(files, 1);
+}
+
+TEST(TextureMips, WriteRejectsBadInput) {
+    const auto levels = premultipliedMipChain(image(4, 4, std::vector<std::uint8_t>(64, 255)));
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / "cavewall-mips-test" / "bad.tx";
+    EXPECT_THAT([&] { writeMipFile(file, levels, {10, "zip"}); },
+                ThrowsMessage<Error>(HasSubstr("tile size: expected a multiple of 16 in [16, 1024], got 10")));
+    std::vector<scenes::Image> skipped{levels[0], levels[2]};
+    EXPECT_THAT([&] { writeMipFile(file, skipped); },
+                ThrowsMessage<Error>(HasSubstr("MIP level 1: expected half the size of level 0, got 1 x 1")));
+    EXPECT_THAT([&] { writeMipFile(file, {}); }, ThrowsMessage<Error>(HasSubstr("expected at least one MIP level")));
+    EXPECT_FALSE(std::filesystem::exists(file));
+    EXPECT_THAT([&] { scenes::readMipLevels(file); }, ThrowsMessage<Error>(HasSubstr("bad.tx: cannot read image")));
+}
+
+}  // namespace
+}  // namespace cavewall::walls

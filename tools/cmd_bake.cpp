@@ -1,0 +1,115 @@
+#include "tools/args.h"
+#include "tools/commands.h"
+#include "walls/gl/baker.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <unistd.h>
+
+namespace cavewall::tools {
+
+const char* const kBakeUsage =
+    "usage: cavewall bake SCENE [--alpha DEG] [--jobs N] [--cache DIR] [--max-res N] [--min-zone M]\n"
+    "                           [--blend M] [--ppd N] [--tile N]\n"
+    "\n"
+    "Bakes the textures of every virtual wall and portal of SCENE (a scene.json or a folder holding\n"
+    "one) as planned by `cavewall plan` with the same options: each texture is the scene content\n"
+    "behind its wall rendered from its sampling point with the display's own projection, RGBA\n"
+    "with premultiplied alpha, written as a tiled, MIP-mapped TIFF (.tx) and listed in\n"
+    "manifest.json with its size and hash.\n"
+    "The bake folder is <cache>/<key>, the key hashing the scene's files, the plan options and the\n"
+    "bake settings: baking an unchanged scene again renders nothing; a missing or corrupt file is\n"
+    "re-baked; after a change, textures it does not touch are taken from earlier bakes.\n"
+    "--cache: the cache folder (default $CAVEWALL_CACHE, else ~/.cache/cavewall).\n"
+    "--jobs: threads encoding and writing files (default 1; rendering uses one GL context).\n"
+    "--max-res: largest texture side in texels (default 1024; the plan's density target is\n"
+    "scaled down to fit). --tile: file tile size (default 64). --alpha, --min-zone, --blend, --ppd:\n"
+    "as for `cavewall plan`.\n"
+    "Progress goes to stderr (a bar with ETA on a terminal, plain lines otherwise); a summary and,\n"
+    "as the last line, the bake folder go to stdout.\n";
+
+namespace {
+
+std::string formatSeconds(double s) {
+    std::ostringstream out;
+    out.precision(s < 10 ? 2 : 0);
+    out << std::fixed << s << " s";
+    return out.str();
+}
+
+double megabytes(std::uint64_t bytes) { return double(bytes) / (1024.0 * 1024.0); }
+
+// Progress on stderr: a redrawn bar on a terminal, at most a line a second otherwise.
+class ProgressPrinter {
+public:
+    explicit ProgressPrinter(bool terminal) : _terminal(terminal) {}
+    void operator()(const walls::BakeProgress& p);
+    void end() {
+        if (_terminal && _drawn) std::cerr << "\n";
+    }
+
+private:
+    bool _terminal;
+    bool _drawn = false;
+    double _lastLine = -1.0;
+};
+
+void ProgressPrinter::operator()(const walls::BakeProgress& p) {
+    const bool last = p.done == p.total;
+    const double eta = p.baked > 0 ? p.seconds / std::max(1, p.done) * (p.total - p.done) : 0.0;
+    char line[200];
+    std::snprintf(line, sizeof line, "%d/%d textures (%d baked, %d reused), %.1f MB, %.1f s", p.done, p.total,
+                  p.baked, p.reused, megabytes(p.bytesWritten), p.seconds);
+    if (_terminal) {
+        constexpr int kWidth = 30;
+        const int filled = p.total > 0 ? kWidth * p.done / p.total : kWidth;
+        std::cerr << "\r[" << std::string(filled, '#') << std::string(kWidth - filled, '.') << "] " << line;
+        if (!last && p.baked > 0) std::cerr << ", ETA " << formatSeconds(eta);
+        std::cerr << "   " << std::flush;
+        _drawn = true;
+        return;
+    }
+    if (!last && _lastLine >= 0.0 && p.seconds - _lastLine < 1.0) return;
+    _lastLine = p.seconds;
+    std::cerr << "bake: " << line;
+    if (!last && p.baked > 0) std::cerr << ", ETA " << formatSeconds(eta);
+    std::cerr << "\n";
+}
+
+}  // namespace
+
+int runBake(const std::vector<std::string>& words) {
+    const Args args(words, {});
+    args.expectFlags({"alpha", "jobs", "cache", "max-res", "min-zone", "blend", "ppd", "tile"});
+    walls::BakeRequest request;
+    request.plan.alphaDeg = args.number("alpha", request.plan.alphaDeg, 1e-6, 90.0);
+    request.plan.minZoneSize = args.number("min-zone", request.plan.minZoneSize, 0.01, 1000.0);
+    request.plan.blendWidth = args.number("blend", request.plan.blendWidth, 0.0, 100.0);
+    request.plan.pixelsPerDegree = args.number("ppd", request.plan.pixelsPerDegree, 0.01, 1000.0);
+    walls::validatePlanOptions(request.plan);
+    request.settings.jobs = static_cast<int>(args.integer("jobs", 1, 1, 64));
+    request.settings.maxResolution = static_cast<int>(args.integer("max-res", request.settings.maxResolution, 16, 16384));
+    request.settings.tileSize = static_cast<int>(args.integer("tile", request.settings.tileSize, 16, 1024));
+    walls::validateBakeSettings(request.settings);
+    request.scene = args.positional(0, "SCENE");
+    if (args.positional().size() > 1)
+        throw Error("bake: expected one SCENE, got " + std::to_string(args.positional().size()) + " words");
+    if (auto cache = args.get("cache")) request.cache = *cache;
+
+    ProgressPrinter printer(::isatty(STDERR_FILENO) == 1);
+    request.progress = [&printer](const walls::BakeProgress& p) { printer(p); };
+    const walls::BakeResult result = walls::bakeScene(request);
+    printer.end();
+    for (const std::string& w : result.warnings) std::cerr << "cavewall: warning: " << w << "\n";
+    const int total = static_cast<int>(result.manifest.textures.size());
+    std::printf("bake: %d textures: %d baked, %d reused (%d from earlier bakes) in %s; wrote %.1f MB, folder holds %.1f MB\n",
+                total, result.baked, result.reused, result.linked, formatSeconds(result.seconds).c_str(),
+                megabytes(result.bytesWritten), megabytes(result.totalBytes));
+    std::printf("%s\n", result.folder.string().c_str());
+    return 0;
+}
+
+}  // namespace cavewall::tools

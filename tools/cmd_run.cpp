@@ -1,0 +1,82 @@
+#include "tools/args.h"
+#include "tools/commands.h"
+#include "tools/run_session.h"
+
+#include <iostream>
+
+namespace cavewall::tools {
+
+const char* const kRunUsage =
+    "usage: cavewall run --scene S --tracker SPEC --frames N --out DIR [--display D]\n"
+    "                    [--nav guided|fly|walk|none] [--pace M/S] [--headless|--window]\n"
+    "                    [--transition blend] [--no-walls] [--alpha DEG] [--min-zone M] [--ppd N]\n"
+    "                    [--save-frames none|every:K|all] [--record FILE] [--cache DIR]\n"
+    "                    [--budget MB] [--sync-paging]\n"
+    "\n"
+    "Walks through scene S (a scene.json, a folder holding one, or a bare glTF/GLB file) on the\n"
+    "display D (a file or a preset, default cave4) for N frames at a fixed step of 1/60 s. The head\n"
+    "comes from the tracker SPEC (sim:walk[?seed=N], file:PATH, replay:PATH, dtrack:udp://HOST:PORT,\n"
+    "opentrack:udp://HOST:PORT; see `cavewall track --help`) through the display's calibration,\n"
+    "the One Euro filter and prediction; navigation moves the CAVE through the scene: --nav\n"
+    "defaults to guided along the scene's walkPath at --pace m/s (default 1) when it has one, else\n"
+    "none. Scenes with virtual walls are planned (--alpha degrees, default 10; --min-zone, --ppd as\n"
+    "in `cavewall plan`) and baked into the cache (--cache, default $CAVEWALL_CACHE or\n"
+    "~/.cache/cavewall) before the first frame; near cells are drawn as geometry and the rest as\n"
+    "wall textures, blended by zone. --no-walls draws the full (frustum-culled) geometry instead.\n"
+    "--budget: GPU MB for wall textures (default 256); --sync-paging waits for textures instead of\n"
+    "falling back (reproducible frames). Writes DIR/frames.csv (one row per frame: head and eye,\n"
+    "cell, zone, frame/cpu/gpu ms, triangles, draw calls, paging, max angular error in degrees and\n"
+    "pixels), DIR/walls.csv (textures and weights per wall and frame) and, with --save-frames,\n"
+    "DIR/frames/<frame>/ with one PNG per screen and eye plus foldout.png. --record writes the\n"
+    "tracker input for `--tracker replay:FILE`. Headless unless --window. --transition warp (the\n"
+    "Aliaga-Lastra geometry warp) is not available yet and gives an error.\n";
+
+namespace {
+
+long saveEvery(const std::string& spec) {
+    if (spec == "none") return 0;
+    if (spec == "all") return 1;
+    if (spec.rfind("every:", 0) == 0) {
+        const double k = parseNumber(std::string_view(spec).substr(6), "--save-frames every:K");
+        if (k >= 1 && k <= 1e9 && k == static_cast<long>(k)) return static_cast<long>(k);
+    }
+    throw Error("--save-frames: expected none, all or every:K with an integer K >= 1, got '" + spec + "'");
+}
+
+}  // namespace
+
+int runRun(const std::vector<std::string>& words) {
+    const Args args(words, {"headless", "window", "no-walls", "sync-paging"});
+    args.expectFlags({"scene", "display", "tracker", "frames", "nav", "pace", "headless", "window", "transition",
+                      "no-walls", "alpha", "min-zone", "ppd", "save-frames", "record", "cache", "budget",
+                      "sync-paging", "out"});
+    if (args.has("headless") && args.has("window")) throw Error("--headless and --window: expected one of them, got both");
+    RunOptions o;
+    o.scene = args.require("scene");
+    o.display = config::loadDisplayConfig(args.getOr("display", "cave4"));
+    o.tracker = args.require("tracker");
+    o.frames = args.integer("frames", 0, 1, 10000000);
+    if (!args.has("frames")) throw Error("--frames: required flag is missing");
+    o.out = args.require("out");
+    o.nav = args.getOr("nav", "");
+    o.guidePace = args.number("pace", 1.0, 0.0, 100.0);
+    o.window = args.has("window") ? WindowMode::Window : WindowMode::Headless;
+    o.transition = args.getOr("transition", "blend");
+    o.walls = !args.has("no-walls");
+    o.plan.alphaDeg = args.number("alpha", o.plan.alphaDeg, 1e-3, 90.0);
+    o.plan.minZoneSize = args.number("min-zone", o.plan.minZoneSize, 1e-3, 1e4);
+    o.plan.pixelsPerDegree = args.number("ppd", o.plan.pixelsPerDegree, 0.01, 1000.0);
+    if (auto c = args.get("cache")) o.cache = *c;
+    if (auto r = args.get("record")) o.record = *r;
+    o.saveEvery = saveEvery(args.getOr("save-frames", "none"));
+    o.textureBudgetMB = args.number("budget", o.textureBudgetMB, 1e-3, 1e6);
+    o.synchronousPaging = args.has("sync-paging");
+    const RunSummary s = runSession(o);
+    std::cout << "run: " << s.frameMs.size() << " frames on " << s.renderer << (s.walls ? ", walls" : ", geometry only")
+              << "; median frame " << median(s.frameMs) << " ms; worst error " << s.worstErrorDeg << " deg ("
+              << s.worstErrorPx << " px); page-ins " << s.pageIns << ", misses " << s.misses << "\n"
+              << (o.out / "frames.csv").string() << "\n";
+    return 0;
+}
+
+}  // namespace cavewall::tools

@@ -1,0 +1,78 @@
+#include "walls/gl/bake_cache.h"
+
+#include "config/error.h"
+
+#include <set>
+#include <system_error>
+#include <unistd.h>
+
+namespace cavewall::walls {
+
+std::optional<std::uint64_t> textureKeyOf(const std::string& name) {
+    // tex_NNNN_<16 hex>.tx (the id may have more than 4 digits)
+    if (name.size() < 4 + 1 + 1 + 16 + 3 || name.rfind("tex_", 0) != 0 || name.compare(name.size() - 3, 3, ".tx") != 0)
+        return std::nullopt;
+    const std::string hex = name.substr(name.size() - 3 - 16, 16);
+    if (name[name.size() - 3 - 17] != '_' || hex.find_first_not_of("0123456789abcdef") != std::string::npos)
+        return std::nullopt;
+    return std::stoull(hex, nullptr, 16);
+}
+
+CacheIndex indexCache(const std::filesystem::path& cache, const std::filesystem::path& skip) {
+    CacheIndex index;
+    std::error_code ec;
+    for (const auto& dir : std::filesystem::directory_iterator(cache, ec)) {
+        if (!dir.is_directory(ec) || dir.path() == skip) continue;
+        BakeManifest manifest;
+        try {
+            manifest = readManifest(dir.path());
+        } catch (const Error&) {
+            continue;
+        }
+        for (const BakedTexture& t : manifest.textures)
+            if (const auto key = textureKeyOf(t.file)) index.emplace(*key, CachedTexture{dir.path(), t});
+    }
+    return index;
+}
+
+std::optional<BakedTexture> linkCachedTexture(const CacheIndex& index, const std::filesystem::path& folder,
+                                              const BakedTexture& wanted) {
+    const auto key = textureKeyOf(wanted.file);
+    if (!key) return std::nullopt;
+    const auto it = index.find(*key);
+    if (it == index.end() || !textureFileValid(it->second.folder, it->second.entry)) return std::nullopt;
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    const std::filesystem::path source = it->second.folder / it->second.entry.file;
+    const std::filesystem::path target = folder / wanted.file;
+    const std::filesystem::path tmp = folder / ("." + wanted.file + ".link-" + std::to_string(::getpid()));
+    std::filesystem::remove(tmp, ec);
+    std::filesystem::create_hard_link(source, tmp, ec);
+    if (ec) std::filesystem::copy_file(source, tmp, std::filesystem::copy_options::overwrite_existing, ec = {});
+    if (!ec) std::filesystem::rename(tmp, target, ec);
+    if (ec) {
+        std::filesystem::remove(tmp, ec);
+        return std::nullopt;
+    }
+    BakedTexture got = wanted;
+    got.bytes = it->second.entry.bytes;
+    got.hash = it->second.entry.hash;
+    // The source may have changed between the check and the link: check the copy itself.
+    if (!textureFileValid(folder, got)) return std::nullopt;
+    return got;
+}
+
+int removeUnlistedTextures(const std::filesystem::path& folder, const BakeManifest& manifest) {
+    std::set<std::string> listed;
+    for (const BakedTexture& t : manifest.textures) listed.insert(t.file);
+    int removed = 0;
+    std::error_code ec;
+    for (const auto& file : std::filesystem::directory_iterator(folder, ec)) {
+        const std::string name = file.path().filename().string();
+        if (!textureKeyOf(name) || listed.count(name)) continue;
+        if (std::filesystem::remove(file.path(), ec)) ++removed;
+    }
+    return removed;
+}
+
+}  // namespace cavewall::walls

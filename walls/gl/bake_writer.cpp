@@ -1,0 +1,76 @@
+#include "walls/gl/bake_writer.h"
+
+#include "config/error.h"
+
+#include <utility>
+
+namespace cavewall::walls {
+
+BakeWriter::BakeWriter(std::filesystem::path folder, int jobs, MipFileOptions options)
+    : _folder(std::move(folder)), _options(std::move(options)), _maxQueued(std::size_t(2 * std::max(1, jobs))) {
+    for (int i = 0; i < std::max(1, jobs); ++i) _threads.emplace_back([this] { worker(); });
+}
+
+BakeWriter::~BakeWriter() {
+    {
+        std::lock_guard lock(_mutex);
+        _stop = true;
+    }
+    _changed.notify_all();
+    for (std::thread& t : _threads) t.join();
+}
+
+void BakeWriter::submit(BakedTexture entry, scenes::Image image) {
+    std::unique_lock lock(_mutex);
+    _changed.wait(lock, [&] { return _queue.size() < _maxQueued || _error; });
+    if (_error) std::rethrow_exception(_error);
+    _queue.push_back({std::move(entry), std::move(image)});
+    _changed.notify_all();
+}
+
+std::vector<BakedTexture> BakeWriter::takeDone(bool wait) {
+    std::unique_lock lock(_mutex);
+    if (wait) _changed.wait(lock, [&] { return !_done.empty() || _error || (_queue.empty() && _busy == 0); });
+    if (_error) std::rethrow_exception(_error);
+    return std::exchange(_done, {});
+}
+
+int BakeWriter::pending() const {
+    std::lock_guard lock(_mutex);
+    return static_cast<int>(_queue.size()) + _busy;
+}
+
+void BakeWriter::worker() {
+    for (;;) {
+        Job job;
+        {
+            std::unique_lock lock(_mutex);
+            _changed.wait(lock, [&] { return _stop || !_queue.empty(); });
+            if (_queue.empty()) return;
+            job = std::move(_queue.front());
+            _queue.pop_front();
+            ++_busy;
+        }
+        _changed.notify_all();  // a submit may wait for room
+        std::exception_ptr error;
+        try {
+            const std::filesystem::path file = _folder / job.entry.file;
+            writeMipFile(file, premultipliedMipChain(job.image), _options);
+            std::error_code ec;
+            job.entry.bytes = std::filesystem::file_size(file, ec);
+            if (ec) throw Error(file.string() + ": cannot read the size of the written file (" + ec.message() + ")");
+            job.entry.hash = hashFile(file);
+        } catch (...) {
+            error = std::current_exception();
+        }
+        {
+            std::lock_guard lock(_mutex);
+            --_busy;
+            if (error && !_error) _error = error;
+            if (!error) _done.push_back(std::move(job.entry));
+        }
+        _changed.notify_all();
+    }
+}
+
+}  // namespace cavewall::walls

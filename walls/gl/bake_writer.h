@@ -1,0 +1,58 @@
+#pragma once
+// Worker threads that turn rendered wall textures into files: premultiplied MIP chain, tiled
+// MIP-mapped file (atomic), size and hash. GL-free, so the one GL context keeps rendering on
+// the caller's thread while up to `jobs` files are encoded and written in parallel.
+
+#include "scenes/scene.h"
+#include "walls/bake_manifest.h"
+#include "walls/gl/texture_mips.h"
+
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <filesystem>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace cavewall::walls {
+
+class BakeWriter {
+public:
+    // `folder` receives the files; `jobs` >= 1 threads; at most 2 * jobs rendered images wait
+    // in memory (submit blocks beyond that).
+    BakeWriter(std::filesystem::path folder, int jobs, MipFileOptions options);
+    // Joins the threads (pending work is finished first).
+    ~BakeWriter();
+    BakeWriter(const BakeWriter&) = delete;
+    BakeWriter& operator=(const BakeWriter&) = delete;
+
+    // Queues `image` (straight alpha, sRGB, as read from the render target) to be written as
+    // <folder>/<entry.file>; `entry` comes back with bytes and hash filled in.
+    void submit(BakedTexture entry, scenes::Image image);
+    // Entries finished since the last call; `wait`: block until at least one is (or none is
+    // pending). Rethrows the first worker error (cavewall::Error naming the file).
+    std::vector<BakedTexture> takeDone(bool wait);
+    int pending() const;
+
+private:
+    struct Job {
+        BakedTexture entry;
+        scenes::Image image;
+    };
+    void worker();
+
+    std::filesystem::path _folder;
+    MipFileOptions _options;
+    std::size_t _maxQueued;
+    mutable std::mutex _mutex;
+    std::condition_variable _changed;
+    std::deque<Job> _queue;
+    std::vector<BakedTexture> _done;
+    int _busy = 0;
+    bool _stop = false;
+    std::exception_ptr _error;
+    std::vector<std::thread> _threads;
+};
+
+}  // namespace cavewall::walls

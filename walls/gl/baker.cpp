@@ -1,0 +1,289 @@
+#include "walls/gl/baker.h"
+
+#include "config/error.h"
+#include "scenes/loader.h"
+#include "scenes/scene_description_io.h"
+#include "walls/gl/bake_cache.h"
+#include "walls/gl/bake_key.h"
+#include "walls/gl/bake_writer.h"
+#include "walls/gl/wall_renderer.h"
+#include "walls/visibility.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <optional>
+
+namespace cavewall::walls {
+
+void validateBakeSettings(const BakeSettings& s) {
+    auto fail = [](const char* name, const std::string& expected, const std::string& got) {
+        throw Error(std::string("bake settings: ") + name + ": expected " + expected + ", got " + got);
+    };
+    if (s.maxResolution < 16 || s.maxResolution > 16384) fail("maxResolution", "[16, 16384]", std::to_string(s.maxResolution));
+    if (s.tileSize < 16 || s.tileSize > 1024 || s.tileSize % 16 != 0)
+        fail("tileSize", "a multiple of 16 in [16, 1024]", std::to_string(s.tileSize));
+    if (s.jobs < 1 || s.jobs > 64) fail("jobs", "[1, 64]", std::to_string(s.jobs));
+    if (!(s.ambient >= 0.0f && s.ambient <= 1.0f)) fail("ambient", "[0, 1]", std::to_string(s.ambient));
+}
+
+glm::ivec2 bakeResolution(glm::ivec2 planned, int maxResolution) {
+    planned = glm::max(planned, glm::ivec2(1));
+    const int largest = std::max(planned.x, planned.y);
+    if (largest <= maxResolution) return planned;
+    const double scale = double(maxResolution) / largest;
+    return glm::max(glm::ivec2(glm::round(glm::dvec2(planned) * scale)), glm::ivec2(1));
+}
+
+std::filesystem::path defaultCacheFolder() {
+    if (const char* cache = std::getenv("CAVEWALL_CACHE"); cache && *cache) return cache;
+    if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "cavewall";
+    throw Error("bake cache: expected $CAVEWALL_CACHE or $HOME to be set, got neither (use --cache DIR)");
+}
+
+std::string textureFileName(int id, std::uint64_t textureKey) {
+    char s[16];
+    std::snprintf(s, sizeof s, "tex_%04d_", id);
+    return s + hex64(textureKey) + ".tx";
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::uint64_t settingsKey(const BakeSettings& s) {
+    KeyHasher h;
+    // Bump the text when the renderer, the MIP filter or the file layout changes.
+    h.text("cavewall bake settings v1");
+    return h.integer(s.maxResolution).integer(s.tileSize).number(s.ambient).value();
+}
+
+void ensureFolder(const std::filesystem::path& folder) {
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    if (ec) throw Error(folder.string() + ": cannot create the bake folder (" + ec.message() + ")");
+}
+
+int sideOf(const Plan& plan, const Texture& t) {
+    for (const WallSide& s : plan.sides)
+        if (s.cell == t.cell && s.wall == t.wall) return s.side;
+    return plan.walls[t.wall].cells[0] == t.cell ? 0 : 1;
+}
+
+scenes::SceneDescription loadDescription(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec) || path.extension() == ".json") return scenes::loadSceneDescription(path);
+    scenes::SceneDescription description;
+    scenes::loadSceneFile(path, &description);  // a bare glTF: no walls, so nothing to bake
+    return description;
+}
+
+// One texture of the plan and what baking it needs.
+struct Item {
+    const Texture* texture = nullptr;
+    int side = 0;
+    glm::ivec2 resolution{0};
+    BakedTexture entry;           // id, cell, wall, samplingPoint, resolution (+ file once keyed)
+};
+
+// The scene's geometry and what each wall side shows; loaded only when something is rendered.
+struct Loaded {
+    scenes::Scene scene;
+    std::map<std::pair<int, int>, WallContents> contents;   // by (wall, side)
+    std::map<std::pair<int, int>, std::uint64_t> keys;      // content key by (wall, side)
+};
+
+Loaded loadContents(const scenes::SceneDescription& description, const Plan& plan, std::vector<std::string>& warnings) {
+    Loaded l{scenes::loadScene(description), {}, {}};
+    warnings.insert(warnings.end(), l.scene.warnings.begin(), l.scene.warnings.end());
+    const VisibilityTable table = computeVisibility(description);
+    const std::vector<std::uint64_t> objects = objectKeys(l.scene);
+    for (const WallSide& s : plan.sides) {
+        const auto at = std::make_pair(s.wall, s.side);
+        if (l.contents.count(at)) continue;
+        WallContents c = wallContents(l.scene, description, table, s.wall, s.side);
+        KeyHasher h;
+        for (int i : c.baked) h.integer(static_cast<std::int64_t>(objects[i]));
+        l.keys[at] = h.value();
+        l.contents[at] = std::move(c);
+    }
+    return l;
+}
+
+std::uint64_t textureKey(const Item& item, const Plan& plan, std::uint64_t contentKey, std::uint64_t settings) {
+    const display::ScreenQuad q = quadSeenFrom(plan.walls[item.texture->wall].quad, item.side);
+    KeyHasher h;
+    h.text("cavewall texture v1").integer(static_cast<std::int64_t>(settings)).integer(static_cast<std::int64_t>(contentKey));
+    h.vec(q.lowerLeft).vec(q.lowerRight).vec(q.upperLeft).vec(item.texture->samplingPoint);
+    return h.integer(item.resolution.x).integer(item.resolution.y).value();
+}
+
+class Bake {
+public:
+    explicit Bake(const BakeRequest& request) : _request(request), _start(Clock::now()) {}
+    BakeResult run();
+
+private:
+    void planAndKey();
+    void reuseListed();
+    void keyPending(const Loaded& loaded, std::uint64_t settings);
+    void linkFromCache();
+    void render(const Loaded& loaded);
+    void finish(const BakedTexture& entry, bool baked, std::uint64_t bytes);
+    void writeManifestNow(bool force);
+    void report();
+
+    const BakeRequest& _request;
+    Clock::time_point _start, _lastManifest{};
+    scenes::SceneDescription _description;
+    Plan _plan;
+    BakeResult _result;
+    std::map<int, BakedTexture> _done;   // finished entries by id
+    std::vector<Item> _pending;
+    BakeManifest _listed;                 // what the folder held before
+};
+
+BakeResult Bake::run() {
+    validateBakeSettings(_request.settings);
+    planAndKey();
+    reuseListed();
+    if (!_pending.empty()) {
+        const Loaded loaded = loadContents(_description, _plan, _result.warnings);
+        keyPending(loaded, settingsKey(_request.settings));
+        linkFromCache();
+        if (!_pending.empty()) render(loaded);
+    }
+    writeManifestNow(true);  // only when it changed: an unchanged bake writes nothing
+    removeUnlistedTextures(_result.folder, _result.manifest);
+    _result.totalBytes = 0;
+    for (const BakedTexture& t : _result.manifest.textures) _result.totalBytes += t.bytes;
+    _result.seconds = std::chrono::duration<double>(Clock::now() - _start).count();  // progress reported done already
+    return std::move(_result);
+}
+
+void Bake::planAndKey() {
+    _description = loadDescription(_request.scene);
+    _plan = planZones(_description, _request.plan);
+    KeyHasher h;
+    h.text("cavewall bake v1").integer(static_cast<std::int64_t>(sceneFilesKey(_request.scene, _description)));
+    h.integer(static_cast<std::int64_t>(planOptionsKey(_request.plan)));
+    _result.key = h.integer(static_cast<std::int64_t>(settingsKey(_request.settings))).value();
+    const std::filesystem::path cache = _request.cache.empty() ? defaultCacheFolder() : _request.cache;
+    _result.folder = cache / hex64(_result.key);
+    _result.manifest.key = _result.key;
+    _result.manifest.alphaDeg = _request.plan.alphaDeg;
+}
+
+void Bake::reuseListed() {
+    BakeManifest listed;
+    try {
+        listed = readManifest(_result.folder);
+    } catch (const Error& e) {
+        _result.warnings.push_back(std::string(e.what()) + " (re-baking everything it listed)");
+    }
+    std::map<int, const BakedTexture*> byId;
+    _listed = listed;
+    if (listed.key == _result.key)
+        for (const BakedTexture& t : listed.textures) byId[t.id] = &t;
+    for (const Texture& t : _plan.textures) {
+        Item item{&t, sideOf(_plan, t), bakeResolution(t.resolution, _request.settings.maxResolution), {}};
+        item.entry = {t.id, t.cell, t.wall, t.samplingPoint, item.resolution, "", 0, 0};
+        const auto it = byId.find(t.id);
+        if (it != byId.end()) {
+            BakedTexture expected = *it->second;
+            const BakedTexture& got = *it->second;
+            expected.cell = t.cell, expected.wall = t.wall, expected.samplingPoint = t.samplingPoint;
+            expected.resolution = item.resolution;
+            if (expected == got && textureFileValid(_result.folder, got)) {
+                finish(got, false, 0);
+                continue;
+            }
+        }
+        _pending.push_back(item);
+    }
+    report();
+}
+
+void Bake::keyPending(const Loaded& loaded, std::uint64_t settings) {
+    for (Item& item : _pending) {
+        const std::uint64_t content = loaded.keys.at({item.texture->wall, item.side});
+        item.entry.file = textureFileName(item.texture->id, textureKey(item, _plan, content, settings));
+    }
+}
+
+void Bake::linkFromCache() {
+    const CacheIndex index = indexCache(_result.folder.parent_path(), _result.folder);
+    std::vector<Item> left;
+    for (Item& item : _pending) {
+        if (std::optional<BakedTexture> got = linkCachedTexture(index, _result.folder, item.entry)) {
+            finish(*got, false, got->bytes);
+            ++_result.linked;
+        } else {
+            left.push_back(item);
+        }
+    }
+    _pending = std::move(left);
+}
+
+void Bake::render(const Loaded& loaded) {
+    std::unique_ptr<gl::Context> own;
+    gl::Context* context = _request.context;
+    if (!context) {
+        own = gl::createHeadlessContext();
+        context = own.get();
+    }
+    context->makeCurrent();
+    ensureFolder(_result.folder);
+    WallTextureRenderer renderer(loaded.scene, _request.settings.ambient);
+    BakeWriter writer(_result.folder, _request.settings.jobs, {_request.settings.tileSize});
+    auto absorb = [&](bool wait) {
+        for (const BakedTexture& e : writer.takeDone(wait)) finish(e, true, e.bytes);
+    };
+    for (const Item& item : _pending) {
+        const WallContents& c = loaded.contents.at({item.texture->wall, item.side});
+        const display::ScreenQuad quad = quadSeenFrom(_plan.walls[item.texture->wall].quad, item.side);
+        writer.submit(item.entry, renderer.render(quad, item.texture->samplingPoint, item.resolution, c.baked));
+        absorb(false);
+    }
+    while (writer.pending() > 0) absorb(true);
+    absorb(false);
+}
+
+void Bake::finish(const BakedTexture& entry, bool baked, std::uint64_t bytes) {
+    _done[entry.id] = entry;
+    (baked ? _result.baked : _result.reused)++;
+    _result.bytesWritten += bytes;
+    if (bytes > 0) writeManifestNow(false);
+    if (bytes > 0) report();
+}
+
+// At most about once a second while baking (a manifest of a thousand textures is ~250 kB), and
+// at the end when anything changed.
+void Bake::writeManifestNow(bool force) {
+    const Clock::time_point now = Clock::now();
+    if (!force && now - _lastManifest < std::chrono::seconds(1)) return;
+    _lastManifest = now;
+    _result.manifest.textures.clear();
+    for (const auto& [id, entry] : _done) _result.manifest.textures.push_back(entry);
+    if (_result.manifest == _listed) return;
+    ensureFolder(_result.folder);
+    writeManifest(_result.folder, _result.manifest);
+}
+
+void Bake::report() {
+    _result.seconds = std::chrono::duration<double>(Clock::now() - _start).count();
+    if (!_request.progress) return;
+    _request.progress({static_cast<int>(_done.size()), static_cast<int>(_plan.textures.size()), _result.baked,
+                       _result.reused, _result.seconds, _result.bytesWritten});
+}
+
+}  // namespace
+
+BakeResult bakeScene(const BakeRequest& request) {
+    return Bake(request).run();
+}
+
+}  // namespace cavewall::walls

@@ -1,0 +1,95 @@
+#pragma once
+// Baking the textures of a scene's virtual walls and portals into the bake cache.
+//
+// Each texture of the plan (walls/plan.h) is rendered with display::offAxisFrustum — the same
+// function the CAVE screens use — with the eye at the texture's sampling point and the wall
+// quad as the screen (mirrored for textures seen from the wall's back, bake_key.h
+// quadSeenFrom), drawing only the objects walls::wallContents lists for that wall and side:
+// content behind the wall; structure and objects crossing the wall are never baked. Depth is
+// reversed-Z from 0.05 m to infinity; lighting is the display renderer's (headlight at the
+// sampling point). Texels where nothing is drawn have alpha 0.
+//
+// Image convention: texel (0, 0) of a file is the wall's upper-left corner as seen from the
+// texture's side, u runs along lowerLeft -> lowerRight; colour is premultiplied
+// (walls/gl/texture_mips.h). Files are tiled, MIP-mapped TIFF (".tx") listed with size and
+// hash in the folder's manifest.json (walls/bake_manifest.h).
+//
+// Cache (bake_key.h): the folder is <cache>/<hex bake key>/. Baking again with an unchanged
+// scene, plan and settings renders nothing (it does not even load the scene's geometry or make
+// a GL context): it checks each listed file's size and hash. A missing, torn or replaced file is
+// re-baked (only that one). After a change, textures whose texture key is unchanged are taken
+// from other folders of the same cache (hard link, else copy, then re-checked) instead of being
+// rendered. While baking, the manifest is rewritten atomically at most about once a second
+// (and at the end), listing only finished files, so an interrupted bake keeps most of its
+// progress. One bake per folder at a time; temporary files of a killed bake stay behind.
+
+#include "display/gl/context.h"
+#include "walls/bake_manifest.h"
+#include "walls/plan.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cavewall::walls {
+
+struct BakeSettings {
+    int maxResolution = 1024;   // texels per texture side at most, [16, 16384]; larger plan
+                                // resolutions are scaled down to fit, keeping the aspect
+    int tileSize = 64;          // file tile edge in texels, a multiple of 16 in [16, 1024]
+    int jobs = 1;               // threads building MIP chains and writing files, [1, 64]; GL
+                                // rendering is one context on the calling thread
+    float ambient = 0.35f;      // as gl::RenderSettings::ambient, [0, 1]
+};
+
+// Throws cavewall::Error naming the setting when it is out of range.
+void validateBakeSettings(const BakeSettings& settings);
+
+// The resolution a texture is baked at: the plan's, scaled down to fit maxResolution (at least
+// 1 texel per side).
+glm::ivec2 bakeResolution(glm::ivec2 planned, int maxResolution);
+
+struct BakeProgress {
+    int done = 0, total = 0;        // textures finished (baked or reused) of all in the plan
+    int baked = 0, reused = 0;
+    double seconds = 0.0;           // since the bake started
+    std::uint64_t bytesWritten = 0; // of files written or linked by this bake
+};
+
+struct BakeRequest {
+    std::filesystem::path scene;    // scene.json, a folder holding one, or a bare glTF/GLB
+    PlanOptions plan;
+    BakeSettings settings;
+    std::filesystem::path cache;    // empty: defaultCacheFolder()
+    // A context to render with (made current before use); null: a headless one is created
+    // only when something has to be rendered.
+    gl::Context* context = nullptr;
+    std::function<void(const BakeProgress&)> progress;  // after each texture (may be empty)
+};
+
+struct BakeResult {
+    std::filesystem::path folder;   // <cache>/<hex key>
+    BakeManifest manifest;          // every texture of the plan, by id
+    std::uint64_t key = 0;
+    int baked = 0;                  // rendered and written by this bake
+    int reused = 0;                 // valid already (in this folder or taken from another)
+    int linked = 0;                 // of `reused`: taken from another folder of the cache
+    double seconds = 0.0;
+    std::uint64_t bytesWritten = 0; // of files baked or linked by this bake
+    std::uint64_t totalBytes = 0;   // of all files in the manifest
+    std::vector<std::string> warnings;
+};
+
+// Bakes (or finds in the cache) every texture of the scene's plan. Throws cavewall::Error for
+// bad scenes, options or unwritable folders; the manifest then lists what was finished.
+BakeResult bakeScene(const BakeRequest& request);
+
+// $CAVEWALL_CACHE, else $HOME/.cache/cavewall. Throws Error when neither is set.
+std::filesystem::path defaultCacheFolder();
+
+// "tex_<id, 4 digits>_<16 hex digits of the texture key>.tx"
+std::string textureFileName(int id, std::uint64_t textureKey);
+
+}  // namespace cavewall::walls

@@ -1,0 +1,207 @@
+#include "walls/gl/texture_mips.h"
+
+#include "config/error.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cassert>
+#include <cmath>
+#include <system_error>
+#include <unistd.h>
+
+namespace cavewall::walls {
+
+float srgbToLinear(float e) {
+    return e <= 0.04045f ? e / 12.92f : std::pow((e + 0.055f) / 1.055f, 2.4f);
+}
+
+float linearToSrgb(float l) {
+    return l <= 0.0031308f ? l * 12.92f : 1.055f * std::pow(l, 1.0f / 2.4f) - 0.055f;
+}
+
+namespace {
+
+// Linear premultiplied RGBA in float, rows top to bottom.
+struct FloatImage {
+    int width = 0, height = 0;
+    std::vector<float> rgba;
+};
+
+// One destination texel's source span along an axis: texels [first, first + weights.size()).
+struct Span {
+    int first = 0;
+    std::vector<float> weights;
+};
+
+// Area weights of an exact box filter from `from` texels down to `to` (to <= from).
+std::vector<Span> boxSpans(int from, int to) {
+    std::vector<Span> spans(to);
+    const double scale = double(from) / to;
+    for (int i = 0; i < to; ++i) {
+        const double a = i * scale, b = (i + 1) * scale;
+        const int first = static_cast<int>(std::floor(a));
+        const int last = std::min(from - 1, static_cast<int>(std::ceil(b)) - 1);
+        spans[i].first = first;
+        for (int j = first; j <= last; ++j) {
+            const double overlap = std::min<double>(b, j + 1) - std::max<double>(a, j);
+            spans[i].weights.push_back(static_cast<float>(std::max(0.0, overlap) / scale));
+        }
+    }
+    return spans;
+}
+
+FloatImage downsample(const FloatImage& in) {
+    const int w = std::max(1, in.width / 2), h = std::max(1, in.height / 2);
+    const std::vector<Span> xs = boxSpans(in.width, w), ys = boxSpans(in.height, h);
+    // Horizontal pass into `rows` (w x in.height), then vertical into the result.
+    std::vector<float> rows(std::size_t(w) * in.height * 4, 0.0f);
+    for (int y = 0; y < in.height; ++y)
+        for (int x = 0; x < w; ++x) {
+            float* d = &rows[(std::size_t(y) * w + x) * 4];
+            for (std::size_t k = 0; k < xs[x].weights.size(); ++k) {
+                const float* s = &in.rgba[(std::size_t(y) * in.width + xs[x].first + k) * 4];
+                for (int c = 0; c < 4; ++c) d[c] += xs[x].weights[k] * s[c];
+            }
+        }
+    FloatImage out{w, h, std::vector<float>(std::size_t(w) * h * 4, 0.0f)};
+    for (int y = 0; y < h; ++y)
+        for (std::size_t k = 0; k < ys[y].weights.size(); ++k) {
+            const float wk = ys[y].weights[k];
+            const float* s = &rows[std::size_t(ys[y].first + k) * w * 4];
+            float* d = &out.rgba[std::size_t(y) * w * 4];
+            for (int i = 0; i < w * 4; ++i) d[i] += wk * s[i];
+        }
+    return out;
+}
+
+std::uint8_t toByte(float v) {
+    return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+}
+
+scenes::Image encode(const FloatImage& f, const std::string& name) {
+    scenes::Image image{name, f.width, f.height, std::vector<std::uint8_t>(f.rgba.size())};
+    for (std::size_t i = 0; i < f.rgba.size(); i += 4) {
+        for (int c = 0; c < 3; ++c) image.rgba[i + c] = toByte(linearToSrgb(std::clamp(f.rgba[i + c], 0.0f, 1.0f)));
+        image.rgba[i + 3] = toByte(f.rgba[i + 3]);
+    }
+    return image;
+}
+
+FloatImage premultiply(const scenes::Image& straight) {
+    std::array<float, 256> decode{};
+    for (int i = 0; i < 256; ++i) decode[i] = srgbToLinear(i / 255.0f);
+    FloatImage f{straight.width, straight.height, std::vector<float>(straight.rgba.size())};
+    for (std::size_t i = 0; i < straight.rgba.size(); i += 4) {
+        const float a = straight.rgba[i + 3] / 255.0f;
+        for (int c = 0; c < 3; ++c) f.rgba[i + c] = decode[straight.rgba[i + c]] * a;
+        f.rgba[i + 3] = a;
+    }
+    return f;
+}
+
+}  // namespace
+
+std::vector<scenes::Image> premultipliedMipChain(const scenes::Image& straight) {
+    assert(straight.width > 0 && straight.height > 0 &&
+           straight.rgba.size() == std::size_t(straight.width) * straight.height * 4);
+    std::vector<scenes::Image> levels;
+    FloatImage level = premultiply(straight);
+    levels.push_back(encode(level, straight.name + " level 0"));
+    while (level.width > 1 || level.height > 1) {
+        level = downsample(level);
+        levels.push_back(encode(level, straight.name + " level " + std::to_string(levels.size())));
+    }
+    return levels;
+}
+
+namespace {
+
+std::filesystem::path temporaryName(const std::filesystem::path& file) {
+    static std::atomic<unsigned> counter{0};
+    std::filesystem::path tmp = file;
+    tmp.replace_filename("." + file.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                         std::to_string(counter++) + file.extension().string());
+    return tmp;
+}
+
+// Tile by tile from zero-padded buffers: OIIO pads partial edge tiles with whatever memory it
+// has, which would make the file bytes (and so its hash) differ between identical bakes.
+bool writeTiles(OIIO::ImageOutput& out, const scenes::Image& l, int tile) {
+    std::vector<std::uint8_t> buffer(std::size_t(tile) * tile * 4);
+    for (int ty = 0; ty < l.height; ty += tile)
+        for (int tx = 0; tx < l.width; tx += tile) {
+            std::fill(buffer.begin(), buffer.end(), std::uint8_t(0));
+            const int w = std::min(tile, l.width - tx), h = std::min(tile, l.height - ty);
+            for (int y = 0; y < h; ++y)
+                std::copy_n(&l.rgba[(std::size_t(ty + y) * l.width + tx) * 4], std::size_t(w) * 4,
+                            &buffer[std::size_t(y) * tile * 4]);
+            if (!out.write_tile(tx, ty, 0, OIIO::TypeDesc::UINT8, buffer.data())) return false;
+        }
+    return true;
+}
+
+void writeLevels(const std::filesystem::path& tmp, const std::filesystem::path& file,
+                 const std::vector<scenes::Image>& levels, const MipFileOptions& options) {
+    auto out = OIIO::ImageOutput::create(file.string());
+    if (!out) throw Error(file.string() + ": cannot write this image format (" + OIIO::geterror() + ")");
+    // TIFF has no MIP levels of its own: OIIO (like maketx) writes them as subimages of a file
+    // tagged with a texture format, and its reader then presents those subimages as MIP levels.
+    const bool nativeMips = out->supports("mipmap");
+    if (!out->supports("tiles") || !(nativeMips || out->supports("appendsubimage")))
+        throw Error(file.string() + ": expected a format with tiles and MIP maps (.tx, .tif), got '" +
+                    std::string(out->format_name()) + "'");
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        const scenes::Image& l = levels[i];
+        OIIO::ImageSpec spec(l.width, l.height, 4, OIIO::TypeDesc::UINT8);
+        spec.tile_width = spec.tile_height = options.tileSize;
+        spec.tile_depth = 1;
+        spec.attribute("compression", options.compression);
+        spec.attribute("oiio:ColorSpace", "sRGB");
+        spec.attribute("oiio:UnassociatedAlpha", 0);
+        spec.attribute("ImageDescription", "cavewall baked wall texture: premultiplied (associated) alpha, "
+                                           "RGB = sRGB encoding of linear premultiplied colour");
+        spec.attribute("textureformat", "Plain Texture");
+        // A fixed date instead of the writer's clock: the same texture gives the same bytes.
+        spec.attribute("DateTime", "2000:01:01 00:00:00");
+        const auto append = nativeMips ? OIIO::ImageOutput::AppendMIPLevel : OIIO::ImageOutput::AppendSubimage;
+        const auto mode = i == 0 ? OIIO::ImageOutput::Create : append;
+        if (!out->open(tmp.string(), spec, mode) || !writeTiles(*out, l, options.tileSize))
+            throw Error(file.string() + ": cannot write MIP level " + std::to_string(i) + " (" + out->geterror() + ")");
+    }
+    if (!out->close()) throw Error(file.string() + ": cannot finish the file (" + out->geterror() + ")");
+}
+
+}  // namespace
+
+void writeMipFile(const std::filesystem::path& file, const std::vector<scenes::Image>& levels,
+                  const MipFileOptions& options) {
+    if (levels.empty()) throw Error(file.string() + ": expected at least one MIP level, got none");
+    if (options.tileSize < 16 || options.tileSize > 1024 || options.tileSize % 16 != 0)
+        throw Error(file.string() + ": tile size: expected a multiple of 16 in [16, 1024], got " +
+                    std::to_string(options.tileSize));
+    for (std::size_t i = 1; i < levels.size(); ++i)
+        if (levels[i].width != std::max(1, levels[i - 1].width / 2) ||
+            levels[i].height != std::max(1, levels[i - 1].height / 2))
+            throw Error(file.string() + ": MIP level " + std::to_string(i) + ": expected half the size of level " +
+                        std::to_string(i - 1) + ", got " + std::to_string(levels[i].width) + " x " +
+                        std::to_string(levels[i].height));
+    std::error_code ec;
+    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
+    const std::filesystem::path tmp = temporaryName(file);
+    try {
+        writeLevels(tmp, file, levels, options);
+    } catch (...) {
+        std::filesystem::remove(tmp, ec);
+        throw;
+    }
+    std::filesystem::rename(tmp, file, ec);
+    if (ec) {
+        std::filesystem::remove(tmp, ec);
+        throw Error(file.string() + ": cannot replace the file (" + ec.message() + ")");
+    }
+}
+
+}  // namespace cavewall::walls

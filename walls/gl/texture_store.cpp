@@ -1,0 +1,50 @@
+#include "walls/gl/texture_store.h"
+
+#include <algorithm>
+
+namespace cavewall::gl {
+
+namespace {
+
+GlObject upload(const walls::DecodedTexture& decoded) {
+    const auto& levels = decoded.levels;
+    GlObject texture = createTexture(GL_TEXTURE_2D);
+    const GLuint id = texture.id();
+    glTextureStorage2D(id, static_cast<GLsizei>(levels.size()), GL_SRGB8_ALPHA8, levels[0].width, levels[0].height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    for (std::size_t l = 0; l < levels.size(); ++l)
+        glTextureSubImage2D(id, static_cast<GLint>(l), 0, 0, levels[l].width, levels[l].height, GL_RGBA,
+                            GL_UNSIGNED_BYTE, levels[l].rgba.data());
+    glTextureParameteri(id, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(levels.size()) - 1);
+    return texture;
+}
+
+}  // namespace
+
+TextureStore::TextureStore(walls::TexturePager& pager, std::size_t uploadBytesPerFrame)
+    : _pager(pager), _uploadBytes(std::max<std::size_t>(uploadBytesPerFrame, 1)), _sampler(createSampler()) {
+    glSamplerParameteri(_sampler.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glSamplerParameteri(_sampler.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(_sampler.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(_sampler.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+std::size_t TextureStore::update() {
+    std::size_t uploaded = 0;
+    for (const walls::DecodedTexture& d : _pager.takeReady(_uploadBytes)) {
+        if (d.levels.empty() || d.levels[0].width <= 0 || d.levels[0].height <= 0) continue;
+        _textures[d.id] = upload(d);
+        _pager.markResident(d.id, d.bytes);
+        uploaded += d.bytes;
+    }
+    for (int id : _pager.takeEvictions()) _textures.erase(id);
+    return uploaded;
+}
+
+GLuint TextureStore::texture(int id) const {
+    auto it = _textures.find(id);
+    return it == _textures.end() ? 0 : it->second.id();
+}
+
+}  // namespace cavewall::gl

@@ -1,0 +1,280 @@
+#include "walls/gl/walkthrough.h"
+
+#include "scenes/image_io.h"
+#include "scenes/region.h"
+#include "walls/angular_error.h"
+#include "walls/gl/bake_key.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+
+namespace cavewall::gl {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Every MIP level of a baked texture file (walls/gl/texture_mips.h convention).
+std::vector<scenes::Image> decodeBakedTexture(const std::filesystem::path& file) {
+    return scenes::readMipLevels(file);
+}
+
+// Pixels per radian of error at the screen: see FrameResult::maxErrorPixels.
+double pixelsPerRadian(const display::Display& display, int screen, glm::dvec3 eyeCave) {
+    const display::ScreenQuad& q = display.quad(screen);
+    const display::ScreenBasis b = display::screenBasis(q);
+    const double d = std::max(std::abs(glm::dot(eyeCave - q.lowerLeft, b.normal)), 1e-3);
+    double r2 = 0.0;
+    for (glm::dvec3 c : {q.lowerLeft, q.lowerRight, q.upperLeft, q.lowerRight + q.upperLeft - q.lowerLeft})
+        r2 = std::max(r2, glm::dot(c - eyeCave, c - eyeCave));
+    const double pixelsPerMetre = display.screens()[screen].resolution.x / std::max(b.width, 1e-9);
+    return r2 / d * pixelsPerMetre;
+}
+
+}  // namespace
+
+struct Walkthrough::WallRuntime {
+    WallRuntime(WallSetup s, const scenes::SceneDescription& description, const WalkthroughOptions& options)
+        : setup(std::move(s)), selector(setup.plan, setup.table, description),
+          pager(setup.folder, setup.manifest, options.textureBudgetMB,
+                options.decoder ? options.decoder : walls::TexturePager::Decoder(decodeBakedTexture)),
+          store(pager, static_cast<std::size_t>(options.uploadMBPerFrame * 1024 * 1024)),
+          lastDrawn(setup.plan.walls.size()) {
+        for (const walls::Texture& t : setup.plan.textures) textures[t.id] = &t;
+    }
+
+    int sideOf(int cell, int wall) const {
+        for (int i = 0; i < static_cast<int>(setup.plan.sides.size()); ++i)
+            if (setup.plan.sides[i].cell == cell && setup.plan.sides[i].wall == wall) return i;
+        return -1;
+    }
+
+    WallSetup setup;
+    walls::FrameSelector selector;
+    walls::TexturePager pager;
+    TextureStore store;
+    WallPass pass;
+    std::map<int, const walls::Texture*> textures;                  // by id
+    // Per wall: the side and textures drawn last; reused only from the same side.
+    std::vector<std::pair<int, std::vector<std::pair<int, double>>>> lastDrawn;
+};
+
+Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescription& description,
+                         const display::Display& display, Context& context, std::optional<WallSetup> walls,
+                         WalkthroughOptions options, std::vector<int> screens)
+    : _scene(scene), _description(description), _display(display), _context(context), _options(options),
+      _screens(std::move(screens)), _targets(display, context), _renderer(scene, options.render) {
+    if (_screens.empty())
+        for (int s = 0; s < static_cast<int>(display.screens().size()); ++s) _screens.push_back(s);
+    if (walls && !walls->plan.walls.empty()) _walls = std::make_unique<WallRuntime>(std::move(*walls), description, options);
+    GLuint query = 0;
+    glCreateQueries(GL_TIME_ELAPSED, 1, &query);
+    _timer = GlObject(query, [](GLuint id) { glDeleteQueries(1, &id); });
+}
+
+Walkthrough::~Walkthrough() = default;
+
+void Walkthrough::waitForTextures() {
+    if (!_walls) return;
+    _walls->pager.waitIdle();
+    while (_walls->store.update() > 0) {
+    }
+}
+
+std::vector<bool> Walkthrough::geometryMask(const walls::FrameSelection& selection) const {
+    std::vector<bool> cells(_description.cells.size(), selection.allGeometry());
+    for (int c : selection.geometryCells)
+        if (c >= 0 && c < static_cast<int>(cells.size())) cells[c] = true;
+    return cells;
+}
+
+std::vector<int> Walkthrough::visibleObjects(const std::vector<bool>& cells) const {
+    std::vector<int> out;
+    for (int i = 0; i < static_cast<int>(_scene.objects.size()); ++i) {
+        const scenes::Object& o = _scene.objects[i];
+        if (o.role == scenes::Role::Structure || o.cell < 0 || o.cell >= static_cast<int>(cells.size()) || cells[o.cell])
+            out.push_back(i);
+    }
+    return out;
+}
+
+// Tells the pager what this frame draws and what nearby zones may draw soon, then uploads what
+// is ready (header, step 2).
+void Walkthrough::requestTextures(const walls::FrameSelection& selection, glm::dvec3 eyeWorld) {
+    WallRuntime& w = *_walls;
+    std::vector<int> now, soon;
+    const glm::dvec2 eye(eyeWorld.x, eyeWorld.z);
+    for (const walls::WallBlend& b : selection.walls) {
+        for (const auto& [id, weight] : b.textures) now.push_back(id);
+        const int side = w.sideOf(selection.cell, b.wall);
+        if (side < 0) continue;
+        // Neighbouring zones: what the selection would draw 1.5 m away in each direction.
+        for (int dx = -1; dx <= 1; ++dx)
+            for (int dz = -1; dz <= 1; ++dz)
+                for (const auto& [id, weight] : w.selector.blendAt(side, eye + 1.5 * glm::dvec2(dx, dz)).textures)
+                    soon.push_back(id);
+    }
+    w.pager.request(now, soon);
+    if (_options.synchronousPaging) w.pager.waitIdle();
+    // One upload round per frame; synchronous paging uploads until nothing is left.
+    while (w.store.update() > 0 && _options.synchronousPaging) {
+    }
+}
+
+// True when every texture of `set` is within the plan's alpha for `eyeWorld`: a stale texture
+// beyond the bound is worse than the geometry.
+bool Walkthrough::withinBound(const std::vector<std::pair<int, double>>& set, const walls::PlannedWall& wall,
+                              glm::dvec3 eyeWorld) const {
+    const double alpha = glm::radians(_walls->setup.plan.alphaDeg) + walls::kErrorTolerance;
+    for (const auto& [id, weight] : set) {
+        auto it = _walls->textures.find(id);
+        if (it == _walls->textures.end() ||
+            walls::maxAngularError(eyeWorld, it->second->samplingPoint, wall.quad, wall.depthBehind) > alpha)
+            return false;
+    }
+    return true;
+}
+
+// What one wall draws (header, step 3); a wall drawn as geometry adds its cell behind to
+// `cells`. Returns the quad to draw, if any.
+std::optional<WallDraw> Walkthrough::chooseWall(const walls::WallBlend& b, glm::dvec3 eyeWorld, WallState& state,
+                                                std::vector<bool>& cells) {
+    WallRuntime& w = *_walls;
+    const walls::PlannedWall& planned = w.setup.plan.walls[b.wall];
+    state = WallState{b.wall, b.textures, b.geometryWeight, false};
+    auto allResident = [&](const std::vector<std::pair<int, double>>& set) {
+        return !set.empty() && std::all_of(set.begin(), set.end(), [&](auto& t) { return w.store.resident(t.first); });
+    };
+    if (!b.textures.empty() && !allResident(b.textures)) {
+        state.fallback = true;
+        const auto& [lastSide, last] = w.lastDrawn[b.wall];
+        const bool keep = lastSide == b.side && allResident(last) && withinBound(last, planned, eyeWorld);
+        state.textures = keep ? last : std::vector<std::pair<int, double>>{};
+        if (state.textures.empty()) state.geometryWeight = 1.0;
+    }
+    const int behind = planned.cells[1 - b.side];
+    if (state.geometryWeight > 0.0 && behind >= 0 && behind < static_cast<int>(cells.size())) cells[behind] = true;
+    if (state.textures.empty()) return std::nullopt;
+    w.lastDrawn[b.wall] = {b.side, state.textures};
+    // Textures seen from the back were baked on the mirrored quad (walls/gl/baker.h).
+    WallDraw d{walls::quadSeenFrom(planned.quad, b.side), {}, {}, 0};
+    std::vector<std::pair<int, double>> set = state.textures;
+    std::sort(set.begin(), set.end(), [](auto& a, auto& c) { return a.second > c.second; });
+    double total = 0.0, kept = 0.0;
+    for (const auto& [id, weight] : set) {
+        total += weight;
+        if (d.count == kMaxWallTextures) continue;
+        kept += weight;
+        d.textures[d.count] = w.store.texture(id);
+        d.weights[d.count++] = static_cast<float>(weight);
+    }
+    // More than kMaxWallTextures (never planned): the kept ones take the dropped weight.
+    for (int i = 0; i < d.count && kept > 0.0; ++i) d.weights[i] = static_cast<float>(d.weights[i] * total / kept);
+    return d;
+}
+
+void Walkthrough::measureError(glm::dvec3 eyeCave, FrameResult& result) const {
+    double worst = 0.0;
+    for (const WallState& s : result.walls) {
+        const walls::PlannedWall& planned = _walls->setup.plan.walls[s.wall];
+        for (const auto& [id, weight] : s.textures) {
+            auto it = _walls->textures.find(id);
+            if (weight <= 0.0 || it == _walls->textures.end()) continue;
+            worst = std::max(worst, walls::maxAngularError(result.eyeWorld, it->second->samplingPoint, planned.quad,
+                                                           planned.depthBehind));
+        }
+    }
+    result.maxErrorDeg = glm::degrees(worst);
+    for (int screen : _screens)
+        result.maxErrorPixels = std::max(result.maxErrorPixels, worst * pixelsPerRadian(_display, screen, eyeCave));
+}
+
+void Walkthrough::drawViews(const FrameInput& input, const std::vector<int>& objects,
+                            const std::vector<WallDraw>& walls, FrameResult& result) {
+    const glm::dmat4 caveFromWorld = glm::inverse(input.worldFromCave);
+    auto rendered = [&](int screen) { return std::find(_screens.begin(), _screens.end(), screen) != _screens.end(); };
+    _renderer.beginFrame(_targets, _screens);
+    DrawFilter filter;
+    filter.objects = &objects;
+    for (const display::ScreenView& view : _display.views(input.head)) {
+        if (!rendered(view.screen)) continue;
+        _targets.bind(view.screen, RenderTargets::imageOf(view.pass));
+        const ViewStats geometry = _renderer.renderView(view, input.worldFromCave, filter);
+        result.stats.drawCalls += geometry.drawCalls;
+        result.stats.triangles += geometry.triangles;
+        // renderView leaves viewport, scissor and colour mask set for this view.
+        if (_walls) _walls->pass.draw(walls, view.frustum, caveFromWorld, _walls->store.sampler(), result.stats);
+        if (input.hand) {
+            if (!_cursor) _cursor = std::make_unique<HandCursorPass>();
+            _cursor->draw(*input.hand, view.frustum, result.stats);
+        }
+    }
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+// Steps 1-3 and 5 of the header: selection, paging, what each wall draws, the error.
+std::vector<WallDraw> Walkthrough::selectWalls(const FrameInput& input, FrameResult& result, std::vector<bool>& cells) {
+    const walls::FrameSelection selection = _walls->selector.select(result.eyeWorld);
+    result.cell = selection.cell;
+    for (const walls::WallBlend& b : selection.walls)
+        if (b.zone >= 0) {
+            result.zone = b.zone;
+            break;
+        }
+    cells = geometryMask(selection);
+    requestTextures(selection, result.eyeWorld);
+    std::vector<WallDraw> draws;
+    for (const walls::WallBlend& b : selection.walls) {
+        WallState state;
+        if (auto draw = chooseWall(b, result.eyeWorld, state, cells)) draws.push_back(*draw);
+        result.walls.push_back(std::move(state));
+    }
+    measureError(input.head.position, result);
+    result.pager = _walls->pager.stats();
+    return draws;
+}
+
+FrameResult Walkthrough::renderFrame(const FrameInput& input) {
+    const auto start = Clock::now();
+    FrameResult result;
+    result.eyeWorld = glm::dvec3(input.worldFromCave * glm::dvec4(input.head.position, 1.0));
+    std::vector<bool> cells(_description.cells.size(), true);
+    std::vector<WallDraw> walls;
+    if (_walls)
+        walls = selectWalls(input, result, cells);
+    else
+        result.cell = scenes::findCell(_description.cells, result.eyeWorld);  // reported only
+    const std::vector<int> objects = visibleObjects(cells);
+    glBeginQuery(GL_TIME_ELAPSED, _timer.id());
+    drawViews(input, objects, walls, result);
+    glEndQuery(GL_TIME_ELAPSED);
+    result.cpuMs = msSince(start);
+    glFinish();
+    GLuint64 elapsed = 0;
+    glGetQueryObjectui64v(_timer.id(), GL_QUERY_RESULT, &elapsed);
+    result.gpuMs = static_cast<double>(elapsed) * 1e-6;
+    result.frameMs = msSince(start);
+    if (_context.windowCount() > 0) present();
+    if (input.readImages) result.images = readFrame(_display, _targets);
+    return result;
+}
+
+void Walkthrough::present() {
+    const int windows = std::min(_context.windowCount(), _targets.screenCount());
+    for (int s = 0; s < windows; ++s) {
+        PresentImage image{_targets.colorTexture(s, 0), 0, _targets.size(s)};
+        if (_targets.imageCount(s) > 1 && _context.info().stereoWindows) image.right = _targets.colorTexture(s, 1);
+        _context.present(s, image);
+    }
+}
+
+}  // namespace cavewall::gl

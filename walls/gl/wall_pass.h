@@ -1,0 +1,49 @@
+#pragma once
+// The wall pass: every virtual wall drawn as one quad that mixes its baked textures.
+//
+// A texture of a wall is baked with the wall as its screen (display::offAxisFrustum with eye =
+// sampling point), so its image square is exactly the wall rectangle: every texture of a wall
+// uses the same texture coordinates, u along lowerLeft -> lowerRight, v from the top edge down
+// (texture rows are stored top to bottom). Texture colour is premultiplied by alpha, so the
+// weighted sum  c = sum_i w_i tex_i  is itself premultiplied and is blended over what is drawn
+// (ONE, ONE_MINUS_SRC_ALPHA; destination alpha kept). The weights sum to 1 - geometryWeight:
+// as the geometry of the cell behind fades in, the texture fades out over it. Depth-tested
+// (reversed-Z, GL_GREATER) against the geometry, without depth writes, no face culling.
+// Needs the rendering context current; the program is built by the constructor (only scenes
+// with virtual walls construct a WallPass).
+
+#include "display/gl/gl_object.h"
+#include "display/gl/scene_renderer.h"
+#include "display/off_axis.h"
+
+#include <array>
+#include <vector>
+
+namespace cavewall::gl {
+
+inline constexpr int kMaxWallTextures = 4;  // a blend zone mixes at most 2 rows x 2 columns
+
+struct WallDraw {
+    display::ScreenQuad quad;                    // world frame, metres
+    std::array<GLuint, kMaxWallTextures> textures{};
+    std::array<float, kMaxWallTextures> weights{};  // >= 0, sum <= 1
+    int count = 0;                               // textures used
+};
+
+class WallPass {
+public:
+    // Throws Error when the shaders do not build.
+    WallPass();
+
+    // Draws `walls` for one view into the bound framebuffer (viewport, scissor and colour mask
+    // already set by the caller, depth holding the view's geometry). `frustum` is the view's
+    // (cave frame); caveFromWorld places the world. Adds one draw call and 2 triangles per wall.
+    void draw(const std::vector<WallDraw>& walls, const display::OffAxisFrustum& frustum,
+              const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const;
+
+private:
+    GlObject _program, _vertexArray;
+    GLint _corners = -1, _projection = -1, _weights = -1;
+};
+
+}  // namespace cavewall::gl

@@ -1,0 +1,93 @@
+#include "walls/gl/wall_quad.h"
+
+#include "config/error.h"
+#include "display/gl/shader.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace cavewall::walls {
+
+namespace {
+
+constexpr const char* kName = "wall quad";
+
+// The quad is the unit square (u, v) of its model frame; no vertex buffer is needed.
+constexpr const char* kVertex = R"(#version 450 core
+uniform mat4 uModelView;   // eye-relative: model (u, v, 0) -> view
+uniform mat4 uProjection;
+out vec2 vTexCoord;
+void main() {
+    vec2 uv = vec2(gl_VertexID & 1, gl_VertexID >> 1);
+    vTexCoord = vec2(uv.x, 1.0 - uv.y);  // texel row 0 is the upper edge
+    gl_Position = uProjection * (uModelView * vec4(uv, 0.0, 1.0));
+}
+)";
+
+constexpr const char* kFragment = R"(#version 450 core
+layout(binding = 0) uniform sampler2D uTexture;  // sRGB: sampled as linear premultiplied
+uniform float uWeight;
+in vec2 vTexCoord;
+out vec4 fragColor;
+void main() { fragColor = uWeight * texture(uTexture, vTexCoord); }
+)";
+
+}  // namespace
+
+gl::GlObject uploadWallTexture(const std::vector<scenes::Image>& levels) {
+    if (levels.empty() || levels[0].width <= 0 || levels[0].height <= 0)
+        throw Error("wall texture: expected at least one non-empty MIP level, got none");
+    gl::GlObject t = gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(t.id(), static_cast<GLsizei>(levels.size()), GL_SRGB8_ALPHA8, levels[0].width, levels[0].height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        const scenes::Image& l = levels[i];
+        const int w = std::max(1, levels[0].width >> i), h = std::max(1, levels[0].height >> i);
+        if (l.width != w || l.height != h || l.rgba.size() != std::size_t(w) * h * 4)
+            throw Error("wall texture '" + l.name + "': MIP level " + std::to_string(i) + ": expected " +
+                        std::to_string(w) + " x " + std::to_string(h) + " RGBA, got " + std::to_string(l.width) +
+                        " x " + std::to_string(l.height));
+        glTextureSubImage2D(t.id(), static_cast<GLint>(i), 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, l.rgba.data());
+    }
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}
+
+WallQuadDrawer::WallQuadDrawer()
+    : _program(gl::buildProgram(kName, kVertex, kFragment)), _vertexArray(gl::createVertexArray()) {
+    _modelView = gl::uniformLocation(_program.id(), kName, "uModelView");
+    _projection = gl::uniformLocation(_program.id(), kName, "uProjection");
+    _weight = gl::uniformLocation(_program.id(), kName, "uWeight");
+}
+
+void WallQuadDrawer::draw(const display::OffAxisFrustum& frustum, const display::ScreenQuad& quad, unsigned texture,
+                          float weight) {
+    const glm::dvec3 right = quad.lowerRight - quad.lowerLeft, up = quad.upperLeft - quad.lowerLeft;
+    const glm::dmat4 frameFromModel(glm::dvec4(right, 0.0), glm::dvec4(up, 0.0),
+                                    glm::dvec4(glm::cross(right, up), 0.0), glm::dvec4(quad.lowerLeft, 1.0));
+    const glm::mat4 modelView = display::eyeRelativeModelView(frustum, frameFromModel);
+    const glm::mat4 projection(frustum.clipFromView);
+    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    glEnable(GL_FRAMEBUFFER_SRGB);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glUseProgram(_program.id());
+    glUniformMatrix4fv(_modelView, 1, GL_FALSE, glm::value_ptr(modelView));
+    glUniformMatrix4fv(_projection, 1, GL_FALSE, glm::value_ptr(projection));
+    glUniform1f(_weight, weight);
+    glBindTextureUnit(0, texture);
+    glBindSampler(0, 0);
+    glBindVertexArray(_vertexArray.id());
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+}
+
+}  // namespace cavewall::walls
