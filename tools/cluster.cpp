@@ -74,14 +74,14 @@ void Cluster::abortAll(const std::string& message) const {
     std::_Exit(1);  // MPI_Abort does not return; this keeps the compiler and a broken MPI honest
 }
 
-void Cluster::wait(void* request, const char* what) {
+void Cluster::wait(void* request, const char* what, double timeoutSeconds) {
     auto* r = static_cast<MPI_Request*>(request);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(_timeout);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutSeconds);
     for (int done = 0;;) {
         MPI_Test(r, &done, MPI_STATUS_IGNORE);
         if (done) return;
         if (std::chrono::steady_clock::now() > deadline)
-            abortAll(std::string(what) + ": another rank did not answer within " + std::to_string(_timeout) +
+            abortAll(std::string(what) + ": another rank did not answer within " + std::to_string(timeoutSeconds) +
                      " s (expected every rank to reach the same frame); ending all ranks");
         std::this_thread::sleep_for(std::chrono::microseconds(50));
     }
@@ -93,27 +93,49 @@ double Cluster::broadcast(FrameState& state) {
     std::uint64_t size = bytes.size();
     MPI_Request r;
     MPI_Ibcast(&size, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD, &r);
-    wait(&r, "frame broadcast (size)");
+    wait(&r, "frame broadcast (size)", _timeout);
     bytes.resize(size);
     MPI_Ibcast(bytes.data(), static_cast<int>(size), MPI_BYTE, 0, MPI_COMM_WORLD, &r);
-    wait(&r, "frame broadcast");
+    wait(&r, "frame broadcast", _timeout);
     if (_rank != 0 && !decode(bytes, state)) abortAll("frame broadcast: received a malformed frame state");
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-double Cluster::swapBarrier() {
+double Cluster::swapBarrier() { return barrier(_timeout, "swap barrier"); }
+
+double Cluster::barrier(double timeoutSeconds, const char* what) {
     const auto start = std::chrono::steady_clock::now();
     MPI_Request r;
     MPI_Ibarrier(MPI_COMM_WORLD, &r);
-    wait(&r, "swap barrier");
+    wait(&r, what, timeoutSeconds);
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::vector<std::vector<std::uint8_t>> Cluster::gatherBytes(const std::vector<std::uint8_t>& bytes) {
+    const int size = static_cast<int>(bytes.size());
+    std::vector<int> sizes(_rank == 0 ? _size : 0), offsets;
+    MPI_Request r;
+    MPI_Igather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, MPI_COMM_WORLD, &r);
+    wait(&r, "gather (sizes)", _timeout);
+    std::vector<std::uint8_t> all;
+    if (_rank == 0) {
+        int total = 0;
+        for (int s : sizes) offsets.push_back(total), total += s;
+        all.resize(static_cast<std::size_t>(total));
+    }
+    MPI_Igatherv(bytes.data(), size, MPI_BYTE, all.data(), sizes.data(), offsets.data(), MPI_BYTE, 0, MPI_COMM_WORLD, &r);
+    wait(&r, "gather", _timeout);
+    std::vector<std::vector<std::uint8_t>> out;
+    for (int i = 0; i < static_cast<int>(sizes.size()); ++i)
+        out.emplace_back(all.begin() + offsets[i], all.begin() + offsets[i] + sizes[i]);
+    return out;
 }
 
 std::vector<double> Cluster::gather(double value) {
     std::vector<double> all(_rank == 0 ? _size : 0);
     MPI_Request r;
     MPI_Igather(&value, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, 0, MPI_COMM_WORLD, &r);
-    wait(&r, "gather");
+    wait(&r, "gather", _timeout);
     return all;
 }
 

@@ -43,13 +43,17 @@ public:
     double broadcast(FrameState& state);
     // The swap lock: returns once every rank has arrived; the seconds spent waiting.
     double swapBarrier();
+    // A barrier with its own time limit (e.g. while rank 0 bakes textures for minutes).
+    double barrier(double timeoutSeconds, const char* what);
     // Gathers one double per rank on rank 0 (e.g. render times); other ranks get an empty vector.
     std::vector<double> gather(double value);
+    // Gathers every rank's bytes on rank 0 (index = rank); other ranks get an empty vector.
+    std::vector<std::vector<std::uint8_t>> gatherBytes(const std::vector<std::uint8_t>& bytes);
     // Ends every rank of the job with `message` on stderr and exit code 1.
     [[noreturn]] void abortAll(const std::string& message) const;
 
 private:
-    void wait(void* request, const char* what);
+    void wait(void* request, const char* what, double timeoutSeconds);
 
     int _rank = 0;
     int _size = 1;

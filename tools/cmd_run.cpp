@@ -9,9 +9,9 @@ namespace cavewall::tools {
 const char* const kRunUsage =
     "usage: cavewall run --scene S --tracker SPEC --frames N --out DIR [--display D]\n"
     "                    [--nav guided|fly|walk|none] [--pace M/S] [--headless|--window]\n"
-    "                    [--transition blend] [--no-walls] [--alpha DEG] [--min-zone M] [--ppd N]\n"
+    "                    [--transition blend|warp] [--no-walls] [--alpha DEG] [--min-zone M] [--ppd N]\n"
     "                    [--save-frames none|every:K|all] [--record FILE] [--cache DIR]\n"
-    "                    [--budget MB] [--sync-paging]\n"
+    "                    [--budget MB] [--sync-paging] [--cluster [--cluster-timeout S]]\n"
     "\n"
     "Walks through scene S (a scene.json, a folder holding one, or a bare glTF/GLB file) on the\n"
     "display D (a file or a preset, default cave4) for N frames at a fixed step of 1/60 s. The head\n"
@@ -28,8 +28,15 @@ const char* const kRunUsage =
     "cell, zone, frame/cpu/gpu ms, triangles, draw calls, paging, max angular error in degrees and\n"
     "pixels), DIR/walls.csv (textures and weights per wall and frame) and, with --save-frames,\n"
     "DIR/frames/<frame>/ with one PNG per screen and eye plus foldout.png. --record writes the\n"
-    "tracker input for `--tracker replay:FILE`. Headless unless --window. --transition warp (the\n"
-    "Aliaga-Lastra geometry warp) is not available yet and gives an error.\n";
+    "tracker input for `--tracker replay:FILE`. Headless unless --window. --transition warp draws\n"
+    "the structure behind textured walls through the Aliaga-Lastra geometry warp, so it lines up\n"
+    "with the textures; walls whose warp is ill-conditioned (eye near the wall plane) are drawn as\n"
+    "geometry and counted in frames.csv's warp_fallbacks.\n"
+    "--cluster (under mpirun, MPI builds): rank 0 reads the tracker and broadcasts every frame;\n"
+    "each rank renders its screens (\"rank\" in the display configuration, else round-robin); a\n"
+    "barrier before presenting is the swap lock; rank 0 writes the same files as a single process\n"
+    "(frames.csv gains the slowest rank's wait in sync_ms). A rank that fails or does not answer\n"
+    "within --cluster-timeout seconds (default 10) ends every rank with a message.\n";
 
 namespace {
 
@@ -46,10 +53,10 @@ long saveEvery(const std::string& spec) {
 }  // namespace
 
 int runRun(const std::vector<std::string>& words) {
-    const Args args(words, {"headless", "window", "no-walls", "sync-paging"});
+    const Args args(words, {"headless", "window", "no-walls", "sync-paging", "cluster"});
     args.expectFlags({"scene", "display", "tracker", "frames", "nav", "pace", "headless", "window", "transition",
                       "no-walls", "alpha", "min-zone", "ppd", "save-frames", "record", "cache", "budget",
-                      "sync-paging", "out"});
+                      "sync-paging", "out", "cluster", "cluster-timeout"});
     if (args.has("headless") && args.has("window")) throw Error("--headless and --window: expected one of them, got both");
     RunOptions o;
     o.scene = args.require("scene");
@@ -71,7 +78,10 @@ int runRun(const std::vector<std::string>& words) {
     o.saveEvery = saveEvery(args.getOr("save-frames", "none"));
     o.textureBudgetMB = args.number("budget", o.textureBudgetMB, 1e-3, 1e6);
     o.synchronousPaging = args.has("sync-paging");
+    o.cluster = args.has("cluster");
+    o.clusterTimeout = args.number("cluster-timeout", o.clusterTimeout, 0.1, 3600.0);
     const RunSummary s = runSession(o);
+    if (s.rank != 0) return 0;
     std::cout << "run: " << s.frameMs.size() << " frames on " << s.renderer << (s.walls ? ", walls" : ", geometry only")
               << "; median frame " << median(s.frameMs) << " ms; worst error " << s.worstErrorDeg << " deg ("
               << s.worstErrorPx << " px); page-ins " << s.pageIns << ", misses " << s.misses << "\n"

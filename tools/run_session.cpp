@@ -7,6 +7,8 @@
 #include "input/tracker_source.h"
 #include "input/tracking_pipeline.h"
 #include "scenes/loader.h"
+#include "tools/run_cluster.h"
+#include "tools/run_input.h"
 #include "tools/run_output.h"
 #include "tools/scene_query.h"
 #include "walls/gl/baker.h"
@@ -62,34 +64,22 @@ std::unique_ptr<gl::Context> makeContext(const RunOptions& o, const display::Dis
     return gl::createHeadlessContext();
 }
 
-// The navigation mode for --nav; "none" is an empty optional.
-std::optional<input::NavMode> navMode(const std::string& nav, const scenes::SceneDescription& d) {
-    const std::string mode = nav.empty() ? (d.walkPath.size() >= 2 ? "guided" : "none") : nav;
-    if (mode == "none") return std::nullopt;
-    if (mode == "guided") {
-        if (d.walkPath.size() < 2)
-            throw Error("--nav guided: the scene has no walkPath (expected at least 2 points, got " +
-                        std::to_string(d.walkPath.size()) + ")");
-        return input::NavMode::Guided;
+// In cluster mode rank 0 plans and bakes first and the others then find everything in the
+// cache (one bake per cache folder at a time); the wait is bounded by kBakeWaitSeconds.
+constexpr double kBakeWaitSeconds = 3600.0;
+
+gl::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
+                               gl::Context& context, Cluster* cluster) {
+    if (!cluster) return prepareWalls(o, scene, d, context);
+    std::optional<gl::WallSetup> setup;
+    if (cluster->rank() == 0) setup = prepareWalls(o, scene, d, context);
+    cluster->barrier(kBakeWaitSeconds, "waiting for rank 0 to bake the wall textures");
+    if (cluster->rank() != 0) {
+        RunOptions quiet = o;
+        quiet.verbose = false;
+        setup = prepareWalls(quiet, scene, d, context);
     }
-    if (mode == "fly") return input::NavMode::Fly;
-    if (mode == "walk") return input::NavMode::Walk;
-    throw Error("--nav: expected one of guided, fly, walk, none, got '" + nav + "'");
-}
-
-// The CAVE floor at the start of the walk path (path points are eye positions), facing along it.
-void placeAtPathStart(input::Navigator& navigator, const scenes::SceneDescription& d) {
-    if (d.walkPath.size() < 2) return;
-    const glm::dvec3 start = d.walkPath[0] - glm::dvec3(0.0, d.eyeHeight, 0.0);
-    const glm::dvec3 dir = d.walkPath[1] - d.walkPath[0];
-    // rotateY(yaw) maps the CAVE's front (-Z) to (-sin yaw, 0, -cos yaw).
-    navigator.setWorldFromCave(start, std::atan2(-dir.x, -dir.z));
-}
-
-std::vector<glm::dvec3> floorPath(const scenes::SceneDescription& d) {
-    std::vector<glm::dvec3> path;
-    for (const glm::dvec3& p : d.walkPath) path.push_back(p - glm::dvec3(0.0, d.eyeHeight, 0.0));
-    return path;
+    return std::move(*setup);
 }
 
 }  // namespace
@@ -102,74 +92,40 @@ double median(std::vector<double> values) {
 }
 
 RunSummary runSession(const RunOptions& o) {
-    if (o.transition == "warp")
-        throw Error("--transition warp: the geometry warp transition is not available in this build yet "
-                    "(expected blend)");
-    if (o.transition != "blend") throw Error("--transition: expected blend or warp, got '" + o.transition + "'");
+    if (o.transition != "blend" && o.transition != "warp") throw Error("--transition: expected blend or warp, got '" + o.transition + "'");
     if (o.frames < 1) throw Error("--frames: expected at least 1, got " + std::to_string(o.frames));
     const display::Display display(o.display);
     scenes::SceneDescription description;
     const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description);
-    const std::optional<input::NavMode> mode = navMode(o.nav, description);
-    const auto tracker = input::makeTracker(o.tracker, input::trackerContextFor(o.display));
+    std::unique_ptr<Cluster> cluster = openCluster(o);
+    const int rank = cluster ? cluster->rank() : 0;
+    // Only rank 0 reads input (a network tracker binds its port once).
+    std::unique_ptr<RunInput> input = rank == 0 ? std::make_unique<RunInput>(o, scene, description) : nullptr;
     const auto context = makeContext(o, display);
 
     std::optional<gl::WallSetup> setup;
-    if (o.walls && !description.walls.empty()) setup = prepareWalls(o, scene, description, *context);
+    if (o.walls && !description.walls.empty()) setup = prepareWallsOnce(o, scene, description, *context, cluster.get());
     const int textureCount = setup ? static_cast<int>(setup->plan.textures.size()) : 0;
     gl::WalkthroughOptions options;
     options.synchronousPaging = o.synchronousPaging;
     options.textureBudgetMB = o.textureBudgetMB;
-    gl::Walkthrough walkthrough(scene, description, display, *context, std::move(setup), options);
+    options.transition = o.transition == "warp" ? gl::Transition::Warp : gl::Transition::Blend;
+    const std::vector<int> screens = cluster ? config::screensOfRank(o.display, rank, cluster->size()) : std::vector<int>{};
+    gl::Walkthrough walkthrough(scene, description, display, *context, std::move(setup), options, screens);
 
-    input::TrackingPipeline pipeline(input::pipelineConfigFor(o.display));
-    const SceneQuery query(scene);
-    input::NavigatorConfig navConfig;
-    navConfig.guidePace = o.guidePace;
-    input::Navigator navigator(navConfig, &query);
-    placeAtPathStart(navigator, description);
-    if (mode) {
-        navigator.setMode(*mode);
-        if (*mode == input::NavMode::Guided) navigator.setGuidePath(floorPath(description));
-    }
-    std::unique_ptr<input::Recorder> recorder;
-    if (o.record) recorder = std::make_unique<input::Recorder>(*o.record, o.tracker);
-    const bool replay = dynamic_cast<input::ReplaySource*>(tracker.get()) != nullptr;
-
-    RunOutput output(o.out, description, display);
+    std::unique_ptr<RunOutput> output = rank == 0 ? std::make_unique<RunOutput>(o.out, description, display) : nullptr;
     RunSummary summary;
     summary.renderer = context->info().renderer;
     summary.walls = walkthrough.hasWalls();
-    input::WandState lastWand;
-    const auto start = std::chrono::steady_clock::now();
     for (long i = 0; i < o.frames; ++i) {
-        const double t = static_cast<double>(i) * kRunStep;
-        if (tracker->isLive()) std::this_thread::sleep_until(start + std::chrono::duration<double>(t));
-        const input::Sample sample = tracker->poll(t);
-        std::vector<input::Event> events = tracker->takeEvents();
-        if (!replay) input::appendWandEvents(lastWand, sample.wand, t, events);
-        lastWand = sample.wand;
-        if (recorder) {
-            recorder->write(sample);
-            for (const input::Event& e : events) recorder->write(e);
-        }
-        const input::TrackedFrame tracked = pipeline.update(sample);
-        navigator.setTracking(tracked.head.pose, tracked.hand.pose, tracked.wand);
-        if (mode) {
-            for (const input::Event& e : events) navigator.handle(e);
-            if (i > 0) navigator.update(kRunStep);
-        }
-        const input::HandCursor cursor = navigator.handCursor();
-        gl::FrameInput in;
-        in.frame = i;
-        in.time = t;
-        in.head = {tracked.head.pose.position, tracked.head.pose.orientation};
-        in.worldFromCave = navigator.worldFromCave();
-        in.hand = gl::HandCursorPose{cursor.hand.position, cursor.hand.orientation, cursor.rayLength};
-        in.readImages = o.saveEvery > 0 && i % o.saveEvery == 0;
-        const gl::FrameResult r = walkthrough.renderFrame(in);
-        output.writeFrame(i, t, in.head.position, r);
-        if (in.readImages) summary.foldouts.push_back(output.saveImages(i, r.images));
+        const bool save = o.saveEvery > 0 && i % o.saveEvery == 0;
+        gl::FrameInput in = input ? input->next(i, save) : gl::FrameInput{};
+        double syncMs = cluster ? receiveFrame(*cluster, in) : 0.0;
+        gl::FrameResult r = walkthrough.renderFrame(in);
+        if (cluster) syncMs = combineFrame(*cluster, r, syncMs, screens);
+        if (!output) continue;
+        output->writeFrame(i, in.time, in.head.position, r, syncMs);
+        if (in.readImages) summary.foldouts.push_back(output->saveImages(i, r.images));
         summary.frameMs.push_back(r.frameMs);
         summary.worstErrorDeg = std::max(summary.worstErrorDeg, r.maxErrorDeg);
         summary.worstErrorPx = std::max(summary.worstErrorPx, r.maxErrorPixels);
@@ -179,6 +135,7 @@ RunSummary runSession(const RunOptions& o) {
             std::cout << "frame " << i + 1 << "/" << o.frames << ": " << r.frameMs << " ms\n" << std::flush;
     }
     summary.textures = textureCount;
+    summary.rank = rank;
     return summary;
 }
 

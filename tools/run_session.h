@@ -40,6 +40,9 @@ struct RunOptions {
     double textureBudgetMB = 256.0;
     std::filesystem::path out;                  // output folder (created)
     bool verbose = true;                        // progress and summary on stdout
+    bool cluster = false;                       // --cluster: one process per screen group on MPI
+                                                // (tools/run_cluster.h); run under mpirun
+    double clusterTimeout = 10.0;               // s a rank waits for the others before ending all
 };
 
 struct RunSummary {
@@ -50,6 +53,8 @@ struct RunSummary {
     double worstErrorDeg = 0.0, worstErrorPx = 0.0;
     long misses = 0, pageIns = 0;
     std::vector<std::filesystem::path> foldouts;// saved fold-outs, in frame order
+    int rank = 0;                               // cluster mode: this process's rank (only rank 0
+                                                // fills the fields above)
 };
 
 // Runs the session; throws cavewall::Error on bad input (scene, tracker spec, nav mode...).

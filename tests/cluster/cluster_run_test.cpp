@@ -1,0 +1,183 @@
+// Cluster mode end to end: `mpirun -np 4 cavewall run --cluster` on loopback renders the same
+// frames as a single-process run, and a rank that dies or stops answering ends every rank with
+// a message within a bounded time.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+const fs::path kWork = fs::path(CAVEWALL_BINARY_DIR) / "tests" / "cluster" / "work";
+
+struct Proc {
+    pid_t pid = -1;
+    fs::path out, err;
+};
+
+// Starts argv with stdout/stderr to files; mpirun may run as root here (CI containers).
+Proc start(const std::vector<std::string>& argv, const std::string& name) {
+    Proc p{-1, kWork / (name + ".out"), kWork / (name + ".err")};
+    p.pid = fork();
+    if (p.pid == 0) {
+        FILE* o = std::fopen(p.out.c_str(), "w");
+        FILE* e = std::fopen(p.err.c_str(), "w");
+        dup2(fileno(o), 1);
+        dup2(fileno(e), 2);
+        setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+        setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+        setenv("OMPI_MCA_btl", "self,vader,tcp", 1);
+        setenv("OMPI_MCA_btl_tcp_if_include", "lo", 1);
+        setenv("OMPI_MCA_oob_tcp_if_include", "lo", 1);
+        setsid();
+        std::vector<char*> args;
+        for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+        args.push_back(nullptr);
+        execvp(args[0], args.data());
+        _exit(127);
+    }
+    return p;
+}
+
+// Waits at most `seconds`; returns the exit code, or -1 on timeout (then kills the group).
+int finish(const Proc& p, double seconds) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    int status = 0;
+    while (std::chrono::steady_clock::now() < deadline) {
+        if (waitpid(p.pid, &status, WNOHANG) == p.pid) return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    kill(-p.pid, SIGKILL);
+    waitpid(p.pid, &status, 0);
+    return -1;
+}
+
+std::string slurp(const fs::path& f) {
+    std::ifstream in(f, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::vector<std::string> column(const fs::path& csv, const std::string& name) {
+    std::istringstream in(slurp(csv));
+    std::string line, cell;
+    std::getline(in, line);
+    std::istringstream header(line);
+    int index = -1;
+    for (int i = 0; std::getline(header, cell, ','); ++i)
+        if (cell == name) index = i;
+    std::vector<std::string> out;
+    while (std::getline(in, line)) {
+        std::istringstream row(line);
+        for (int i = 0; std::getline(row, cell, ','); ++i)
+            if (i == index) out.push_back(cell);
+    }
+    return out;
+}
+
+// A small generated plant with virtual walls, made once.
+const fs::path& smallPlant() {
+    static const fs::path scene = [] {
+        fs::create_directories(kWork);
+        const Proc p = start({CAVEWALL_EXE, "generate", "plant", "--triangles", "20000", "--seed", "3", "--out",
+                              (kWork / "plant").string()}, "generate");
+        EXPECT_EQ(finish(p, 120), 0) << slurp(p.err);
+        return kWork / "plant" / "scene.json";
+    }();
+    return scene;
+}
+
+std::vector<std::string> runArgs(const fs::path& out) {
+    return {"run", "--scene", smallPlant().string(), "--display", CAVEWALL_SOURCE_DIR "/tests/gl/cave4_128.json",
+            "--tracker", "sim:walk?seed=5", "--frames", "8", "--save-frames", "every:4", "--sync-paging",
+            "--min-zone", "3", "--ppd", "2", "--cache", (kWork / "cache").string(), "--out", out.string()};
+}
+
+TEST(ClusterRun, FourRanksRenderTheSameFramesAsOneProcess) {
+    std::vector<std::string> single{CAVEWALL_EXE};
+    for (const auto& a : runArgs(kWork / "single")) single.push_back(a);
+    const Proc one = start(single, "single");
+    ASSERT_EQ(finish(one, 600), 0) << slurp(one.err);
+
+    std::vector<std::string> mpi{"mpirun", "--oversubscribe", "-np", "4", CAVEWALL_EXE};
+    for (const auto& a : runArgs(kWork / "cluster")) mpi.push_back(a);
+    mpi.push_back("--cluster");
+    const Proc four = start(mpi, "cluster");
+    ASSERT_EQ(finish(four, 600), 0) << slurp(four.err) << slurp(four.out);
+
+    // Same poses, cells and zones, frame by frame.
+    for (const char* c : {"head_x", "head_y", "head_z", "world_x", "world_z", "cell", "zone", "max_err_deg"}) {
+        SCOPED_TRACE(c);
+        EXPECT_EQ(column(kWork / "single" / "frames.csv", c), column(kWork / "cluster" / "frames.csv", c));
+    }
+    // Byte-equal images in the same layout.
+    int compared = 0;
+    for (const auto& e : fs::recursive_directory_iterator(kWork / "single" / "frames")) {
+        if (!e.is_regular_file()) continue;
+        const fs::path other = kWork / "cluster" / "frames" / fs::relative(e.path(), kWork / "single" / "frames");
+        ASSERT_TRUE(fs::exists(other)) << other;
+        EXPECT_TRUE(slurp(e.path()) == slurp(other)) << other << " differs";
+        ++compared;
+    }
+    EXPECT_EQ(compared, 2 * 5);  // 2 saved frames x (4 screens + fold-out)
+    EXPECT_FALSE(column(kWork / "cluster" / "frames.csv", "sync_ms").empty());
+}
+
+// Finds the PID of the cavewall process of MPI rank `rank` among the children of `group`.
+pid_t rankPid(int rank) {
+    for (const auto& e : fs::directory_iterator("/proc")) {
+        const std::string name = e.path().filename();
+        if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+        const std::string env = slurp(e.path() / "environ");
+        const std::string cmd = slurp(e.path() / "cmdline");
+        if (cmd.find("cavewall") == std::string::npos || cmd.find("mpirun") == 0) continue;
+        if (env.find(std::string("OMPI_COMM_WORLD_RANK=") + std::to_string(rank) + '\0') != std::string::npos &&
+            env.find(kWork.string()) != std::string::npos)
+            return std::stoi(name);
+    }
+    return -1;
+}
+
+void expectEndsAllRanks(int signal, const char* message) {
+    const fs::path out = kWork / (signal == SIGKILL ? "killed" : "stopped");
+    std::vector<std::string> mpi{"mpirun", "--oversubscribe", "-np", "3", "-x", "CAVEWALL_TEST_TAG=" + kWork.string(),
+                                 CAVEWALL_EXE};
+    auto args = runArgs(out);
+    args[std::find(args.begin(), args.end(), "8") - args.begin()] = "100000";  // long enough to be interrupted
+    for (const auto& a : args) mpi.push_back(a);
+    for (const char* a : {"--cluster", "--cluster-timeout", "3"}) mpi.push_back(a);
+    const Proc p = start(mpi, out.filename().string());
+    pid_t victim = -1;
+    for (int i = 0; i < 600 && victim < 0; ++i) {  // until rank 2 is up and frames are flowing
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        if (column(out / "frames.csv", "frame").size() >= 2) victim = rankPid(2);
+    }
+    ASSERT_GT(victim, 0) << slurp(p.err);
+    kill(victim, signal);
+    const int code = finish(p, 60);  // bounded: 3 s timeout plus MPI's own teardown
+    if (signal == SIGSTOP) kill(victim, SIGKILL);
+    EXPECT_NE(code, -1) << "mpirun did not end within 60 s";
+    EXPECT_NE(code, 0);
+    EXPECT_THAT(slurp(p.err) + slurp(p.out), HasSubstr(message));
+}
+
+TEST(ClusterRun, ARankThatDiesEndsEveryRank) { expectEndsAllRanks(SIGKILL, "rank 2"); }
+
+TEST(ClusterRun, ARankThatStopsAnsweringEndsEveryRankAfterTheTimeout) {
+    expectEndsAllRanks(SIGSTOP, "another rank did not answer within 3");
+}
+
+}  // namespace

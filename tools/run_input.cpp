@@ -1,0 +1,91 @@
+#include "tools/run_input.h"
+
+#include <cmath>
+#include <thread>
+
+namespace cavewall::tools {
+
+namespace {
+
+// The CAVE floor at the start of the walk path (path points are eye positions), facing along it.
+void placeAtPathStart(input::Navigator& navigator, const scenes::SceneDescription& d) {
+    if (d.walkPath.size() < 2) return;
+    const glm::dvec3 start = d.walkPath[0] - glm::dvec3(0.0, d.eyeHeight, 0.0);
+    const glm::dvec3 dir = d.walkPath[1] - d.walkPath[0];
+    // rotateY(yaw) maps the CAVE's front (-Z) to (-sin yaw, 0, -cos yaw).
+    navigator.setWorldFromCave(start, std::atan2(-dir.x, -dir.z));
+}
+
+std::vector<glm::dvec3> floorPath(const scenes::SceneDescription& d) {
+    std::vector<glm::dvec3> path;
+    for (const glm::dvec3& p : d.walkPath) path.push_back(p - glm::dvec3(0.0, d.eyeHeight, 0.0));
+    return path;
+}
+
+input::NavigatorConfig navigatorConfig(const RunOptions& o) {
+    input::NavigatorConfig c;
+    c.guidePace = o.guidePace;
+    return c;
+}
+
+}  // namespace
+
+std::optional<input::NavMode> navMode(const std::string& nav, const scenes::SceneDescription& d) {
+    const std::string mode = nav.empty() ? (d.walkPath.size() >= 2 ? "guided" : "none") : nav;
+    if (mode == "none") return std::nullopt;
+    if (mode == "guided") {
+        if (d.walkPath.size() < 2)
+            throw Error("--nav guided: the scene has no walkPath (expected at least 2 points, got " +
+                        std::to_string(d.walkPath.size()) + ")");
+        return input::NavMode::Guided;
+    }
+    if (mode == "fly") return input::NavMode::Fly;
+    if (mode == "walk") return input::NavMode::Walk;
+    throw Error("--nav: expected one of guided, fly, walk, none, got '" + nav + "'");
+}
+
+RunInput::RunInput(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d)
+    : _tracker(input::makeTracker(o.tracker, input::trackerContextFor(o.display))),
+      _pipeline(input::pipelineConfigFor(o.display)),
+      _query(scene),
+      _navigator(navigatorConfig(o), &_query),
+      _mode(navMode(o.nav, d)),
+      _replay(dynamic_cast<input::ReplaySource*>(_tracker.get()) != nullptr),
+      _start(std::chrono::steady_clock::now()) {
+    placeAtPathStart(_navigator, d);
+    if (_mode) {
+        _navigator.setMode(*_mode);
+        if (*_mode == input::NavMode::Guided) _navigator.setGuidePath(floorPath(d));
+    }
+    if (o.record) _recorder = std::make_unique<input::Recorder>(*o.record, o.tracker);
+}
+
+gl::FrameInput RunInput::next(long i, bool readImages) {
+    const double t = static_cast<double>(i) * kRunStep;
+    if (_tracker->isLive()) std::this_thread::sleep_until(_start + std::chrono::duration<double>(t));
+    const input::Sample sample = _tracker->poll(t);
+    std::vector<input::Event> events = _tracker->takeEvents();
+    if (!_replay) input::appendWandEvents(_lastWand, sample.wand, t, events);
+    _lastWand = sample.wand;
+    if (_recorder) {
+        _recorder->write(sample);
+        for (const input::Event& e : events) _recorder->write(e);
+    }
+    const input::TrackedFrame tracked = _pipeline.update(sample);
+    _navigator.setTracking(tracked.head.pose, tracked.hand.pose, tracked.wand);
+    if (_mode) {
+        for (const input::Event& e : events) _navigator.handle(e);
+        if (i > 0) _navigator.update(kRunStep);
+    }
+    const input::HandCursor cursor = _navigator.handCursor();
+    gl::FrameInput in;
+    in.frame = i;
+    in.time = t;
+    in.head = {tracked.head.pose.position, tracked.head.pose.orientation};
+    in.worldFromCave = _navigator.worldFromCave();
+    in.hand = gl::HandCursorPose{cursor.hand.position, cursor.hand.orientation, cursor.rayLength};
+    in.readImages = readImages;
+    return in;
+}
+
+}  // namespace cavewall::tools
