@@ -22,10 +22,23 @@ std::vector<glm::dvec3> floorPath(const scenes::SceneDescription& d) {
     return path;
 }
 
+constexpr const char* kDesktop = "desktop";
+
 input::NavigatorConfig navigatorConfig(const RunOptions& o) {
     input::NavigatorConfig c;
     c.guidePace = o.guidePace;
+    c.joystickTurns = o.tracker != kDesktop;  // desktop: A and D strafe
     return c;
+}
+
+input::PipelineConfig pipelineConfig(const RunOptions& o) {
+    input::PipelineConfig c = input::pipelineConfigFor(o.display);
+    if (o.tracker == kDesktop) c.caveFromTracker = glm::dmat4(1.0);  // the mapper works in the cave frame
+    return c;
+}
+
+std::unique_ptr<input::TrackerSource> trackerFor(const RunOptions& o) {
+    return o.tracker == kDesktop ? nullptr : input::makeTracker(o.tracker, input::trackerContextFor(o.display));
 }
 
 }  // namespace
@@ -45,13 +58,19 @@ std::optional<input::NavMode> navMode(const std::string& nav, const scenes::Scen
 }
 
 RunInput::RunInput(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d)
-    : _tracker(input::makeTracker(o.tracker, input::trackerContextFor(o.display))),
-      _pipeline(input::pipelineConfigFor(o.display)),
+    : _tracker(trackerFor(o)),
+      _pipeline(pipelineConfig(o)),
       _query(scene),
       _navigator(navigatorConfig(o), &_query),
       _mode(navMode(o.nav, d)),
       _replay(dynamic_cast<input::ReplaySource*>(_tracker.get()) != nullptr),
       _start(std::chrono::steady_clock::now()) {
+    if (!_tracker) {
+        if (o.window != WindowMode::Window)
+            throw Error("--tracker desktop: expected --window (keyboard and mouse come from the windows)");
+        const config::Viewer& v = o.display.viewer;
+        _desktop = std::make_unique<input::DesktopMapper>(input::DesktopConfig{}, input::Pose{v.headPosition, v.headOrientation});
+    }
     placeAtPathStart(_navigator, d);
     if (_mode) {
         _navigator.setMode(*_mode);
@@ -60,11 +79,16 @@ RunInput::RunInput(const RunOptions& o, const scenes::Scene& scene, const scenes
     if (o.record) _recorder = std::make_unique<input::Recorder>(*o.record, o.tracker);
 }
 
-gl::FrameInput RunInput::next(long i, bool readImages) {
+gl::FrameInput RunInput::next(long i, bool readImages, const std::vector<input::Event>& windowEvents) {
     const double t = static_cast<double>(i) * kRunStep;
-    if (_tracker->isLive()) std::this_thread::sleep_until(_start + std::chrono::duration<double>(t));
-    const input::Sample sample = _tracker->poll(t);
-    std::vector<input::Event> events = _tracker->takeEvents();
+    if (_desktop || _tracker->isLive()) std::this_thread::sleep_until(_start + std::chrono::duration<double>(t));
+    std::vector<input::Event> events;
+    for (input::Event e : _desktop ? windowEvents : std::vector<input::Event>{}) {
+        e.time = t;
+        for (const input::Event& n : _desktop->handle(e)) events.push_back(n);
+    }
+    const input::Sample sample = _desktop ? _desktop->sample(t) : _tracker->poll(t);
+    if (_tracker) events = _tracker->takeEvents();
     if (!_replay) input::appendWandEvents(_lastWand, sample.wand, t, events);
     _lastWand = sample.wand;
     if (_recorder) {

@@ -2,7 +2,12 @@
 // The input side of `cavewall run`: tracker -> tracking pipeline -> navigator (and the optional
 // recorder) turned into one gl::FrameInput per frame at the fixed step kRunStep. In cluster mode
 // only rank 0 has one; the other ranks receive its FrameInput.
+//
+// The tracker spec "desktop" is the desktop fallback: keyboard and mouse events of the windows
+// (gl::Context::takeInputEvents) go through input::DesktopMapper to head, hand and wand (cave
+// frame, no calibration), and A/D strafe instead of turning. It needs windows.
 
+#include "input/desktop.h"
 #include "input/navigator.h"
 #include "input/recording.h"
 #include "input/tracker_source.h"
@@ -29,10 +34,15 @@ public:
     RunInput(const RunOptions& options, const scenes::Scene& scene, const scenes::SceneDescription& description);
 
     // The input of frame `frame` (t = frame * kRunStep); live trackers wait for that time.
-    gl::FrameInput next(long frame, bool readImages);
+    // `windowEvents`: the windows' keyboard and mouse events since the last frame (used by the
+    // desktop fallback only).
+    gl::FrameInput next(long frame, bool readImages, const std::vector<input::Event>& windowEvents = {});
+
+    bool isDesktop() const { return _desktop != nullptr; }
 
 private:
-    std::unique_ptr<input::TrackerSource> _tracker;
+    std::unique_ptr<input::TrackerSource> _tracker;      // null for the desktop fallback
+    std::unique_ptr<input::DesktopMapper> _desktop;
     input::TrackingPipeline _pipeline;
     SceneQuery _query;
     input::Navigator _navigator;

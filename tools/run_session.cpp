@@ -119,7 +119,8 @@ RunSummary runSession(const RunOptions& o) {
     summary.walls = walkthrough.hasWalls();
     for (long i = 0; i < o.frames; ++i) {
         const bool save = o.saveEvery > 0 && i % o.saveEvery == 0;
-        gl::FrameInput in = input ? input->next(i, save) : gl::FrameInput{};
+        if (context->windowCount() > 0 && context->pollCloseRequested()) break;  // a window was closed
+        gl::FrameInput in = input ? input->next(i, save, context->takeInputEvents()) : gl::FrameInput{};
         double syncMs = cluster ? receiveFrame(*cluster, in) : 0.0;
         gl::FrameResult r = walkthrough.renderFrame(in);
         if (cluster) syncMs = combineFrame(*cluster, r, syncMs, screens);

@@ -12,6 +12,7 @@
 // KHR_debug callback that prints driver messages on stderr.
 
 #include "display/display.h"
+#include "input/sample.h"
 #include "scenes/scene.h"
 
 #include <glm/glm.hpp>
@@ -67,6 +68,12 @@ public:
     virtual void present(int window, const PresentImage& image, scenes::Image* capture = nullptr);
     // Processes window events; true once the user asked to close any window.
     virtual bool pollCloseRequested() { return false; }
+    // Keyboard and mouse events of the windows since the last call, for the desktop fallback
+    // (input/desktop.h): keys (printable keys as upper-case ASCII, Shift, Escape), mouse
+    // buttons 0 (left) and 1 (right), wheel steps, and pointer motion in pixels while the
+    // pointer is captured (a left click in a window captures it, Escape releases it). Event
+    // times are 0: the caller stamps them with its own clock. Headless contexts have none.
+    virtual std::vector<input::Event> takeInputEvents() { return {}; }
 
 protected:
     Context() = default;

@@ -4,6 +4,8 @@
 #include "display/gl/gl_object.h"
 #include "display/gl/render_targets.h"
 
+#include <utility>
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -29,8 +31,18 @@ public:
     int windowCount() const override { return static_cast<int>(_windows.size()); }
     void present(int window, const PresentImage& image, scenes::Image* capture) override;
     bool pollCloseRequested() override;
+    std::vector<input::Event> takeInputEvents() override;
 
 private:
+    static GlfwContext& of(GLFWwindow* w) { return *static_cast<GlfwContext*>(glfwGetWindowUserPointer(w)); }
+    static void onKey(GLFWwindow* w, int key, int scancode, int action, int mods);
+    static void onButton(GLFWwindow* w, int button, int action, int mods);
+    static void onCursor(GLFWwindow* w, double x, double y);
+    static void onScroll(GLFWwindow* w, double dx, double dy);
+    void push(input::EventType type, int code, glm::dvec2 value = glm::dvec2(0.0)) {
+        _events.push_back({type, 0.0, code, value});
+    }
+
     struct Window {
         GLFWwindow* handle = nullptr;
         GlObject readFramebuffer;  // belongs to this window's context (framebuffers are not shared)
@@ -39,6 +51,9 @@ private:
     void blit(Window& w, unsigned texture, glm::ivec2 size, GLenum drawBuffer, glm::ivec2 windowSize);
 
     std::vector<Window> _windows;
+    std::vector<input::Event> _events;
+    GLFWwindow* _captured = nullptr;       // the window holding the pointer, if any
+    glm::dvec2 _lastCursor{0.0};
 };
 
 GlfwContext::GlfwContext(const std::vector<WindowRequest>& requests, bool stereo, const ContextOptions& options) {
@@ -96,6 +111,11 @@ void GlfwContext::open(const WindowRequest& r, bool stereo, const ContextOptions
     if (!monitor) glfwSetWindowPos(handle, r.position.x, r.position.y);
     glfwMakeContextCurrent(handle);
     glfwSwapInterval(0);  // several windows swap in turn; waiting for vsync on each would stack up
+    glfwSetWindowUserPointer(handle, this);
+    glfwSetKeyCallback(handle, onKey);
+    glfwSetMouseButtonCallback(handle, onButton);
+    glfwSetCursorPosCallback(handle, onCursor);
+    glfwSetScrollCallback(handle, onScroll);
     _windows.push_back({handle, {}});
 }
 
@@ -137,6 +157,52 @@ bool GlfwContext::pollCloseRequested() {
     for (const Window& w : _windows)
         if (glfwWindowShouldClose(w.handle)) return true;
     return false;
+}
+
+void GlfwContext::onKey(GLFWwindow* w, int key, int, int action, int) {
+    if (action == GLFW_REPEAT) return;
+    GlfwContext& c = of(w);
+    int code = -1;
+    if ((key >= GLFW_KEY_A && key <= GLFW_KEY_Z) || (key >= GLFW_KEY_0 && key <= GLFW_KEY_9) || key == GLFW_KEY_SPACE)
+        code = key;  // GLFW's printable key codes are their upper-case ASCII codes
+    else if (key == GLFW_KEY_LEFT_SHIFT || key == GLFW_KEY_RIGHT_SHIFT)
+        code = input::kKeyShift;
+    else if (key == GLFW_KEY_ESCAPE)
+        code = input::kKeyEscape;
+    if (code < 0) return;
+    if (code == input::kKeyEscape && action == GLFW_PRESS && c._captured) {
+        glfwSetInputMode(c._captured, GLFW_CURSOR, GLFW_CURSOR_NORMAL);
+        c._captured = nullptr;
+    }
+    c.push(action == GLFW_PRESS ? input::EventType::KeyDown : input::EventType::KeyUp, code);
+}
+
+void GlfwContext::onButton(GLFWwindow* w, int button, int action, int) {
+    if (button != GLFW_MOUSE_BUTTON_LEFT && button != GLFW_MOUSE_BUTTON_RIGHT) return;
+    GlfwContext& c = of(w);
+    if (!c._captured && button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS) {
+        c._captured = w;  // the first click only captures the pointer
+        glfwSetInputMode(w, GLFW_CURSOR, GLFW_CURSOR_DISABLED);
+        glfwGetCursorPos(w, &c._lastCursor.x, &c._lastCursor.y);
+        return;
+    }
+    c.push(action == GLFW_PRESS ? input::EventType::ButtonDown : input::EventType::ButtonUp,
+           button == GLFW_MOUSE_BUTTON_LEFT ? 0 : 1);
+}
+
+void GlfwContext::onCursor(GLFWwindow* w, double x, double y) {
+    GlfwContext& c = of(w);
+    if (c._captured != w) return;
+    const glm::dvec2 p(x, y), d = p - c._lastCursor;
+    c._lastCursor = p;
+    if (d != glm::dvec2(0.0)) c.push(input::EventType::MouseMove, 0, d);
+}
+
+void GlfwContext::onScroll(GLFWwindow* w, double, double dy) { of(w).push(input::EventType::Scroll, 0, {0.0, dy}); }
+
+std::vector<input::Event> GlfwContext::takeInputEvents() {
+    glfwPollEvents();
+    return std::exchange(_events, {});
 }
 
 }  // namespace

@@ -1,0 +1,22 @@
+#!/bin/sh
+# The desktop fallback end to end, in a real window under Xvfb: `cavewall run --tracker desktop
+# --window --nav fly`, the W key held for about a second through the X server (xdotool), and
+# frames.csv must show the viewer flown forward (-Z in the world, the CAVE's front) and not
+# sideways. Usage: desktop_fallback_test.sh CAVEWALL MODEL OUT_DIR (run under xvfb-run).
+set -eu
+cavewall=$1 model=$2 out=$3
+rm -rf "$out"
+"$cavewall" run --scene "$model" --display desktop --tracker desktop --window --nav fly --frames 150 \
+  --out "$out" > "$out.log" 2>&1 &
+pid=$!
+win=$(xdotool search --sync --name monitor | head -n 1)
+xdotool windowfocus --sync "$win"
+sleep 0.5
+xdotool keydown w
+sleep 1.2
+xdotool keyup w
+wait "$pid" || { cat "$out.log"; exit 1; }
+# Last row: world_x (column 6) unchanged, world_z (column 8) at least 0.2 m ahead.
+tail -n 1 "$out/frames.csv" | awk -F, '{
+  if ($6 + 0 != 0 || $8 + 0 > -0.2) { print "expected a flight forward, got world x " $6 ", z " $8; exit 1 }
+  print "flew to z = " $8 }'
