@@ -92,7 +92,8 @@ double median(std::vector<double> values) {
 }
 
 RunSummary runSession(const RunOptions& o) {
-    if (o.transition != "blend" && o.transition != "warp") throw Error("--transition: expected blend or warp, got '" + o.transition + "'");
+    if (o.transition != "blend" && o.transition != "warp")
+        throw Error("--transition: expected blend or warp, got '" + o.transition + "'");
     if (o.frames < 1) throw Error("--frames: expected at least 1, got " + std::to_string(o.frames));
     const display::Display display(o.display);
     scenes::SceneDescription description;

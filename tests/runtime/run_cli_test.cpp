@@ -107,6 +107,38 @@ TEST(RunCli, WritesFramesWallsAndImagesOnTheSmallPlant) {
     EXPECT_THAT(r.out, HasSubstr("frames.csv"));
 }
 
+TEST(RunCli, TransitionWarpRunsAndReportsWarpFallbacks) {
+    // The same deterministic walk (seeded simulator, synchronous paging) with blend and warp.
+    std::map<std::string, std::vector<std::map<std::string, std::string>>> runs;
+    for (const char* transition : {"blend", "warp"}) {
+        const fs::path out = outputDir(std::string("transition-") + transition);
+        std::vector<std::string> args = wallRun(out, "sim:walk?seed=2", 30);
+        args.insert(args.end(), {"--pace", "3", "--sync-paging", "--transition", transition});
+        const CliResult r = runCavewall(args);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        runs[transition] = readCsv(out / "frames.csv");
+        ASSERT_EQ(runs[transition].size(), 30u);
+    }
+    long blendCalls = 0, warpCalls = 0;
+    for (std::size_t i = 0; i < 30; ++i) {
+        SCOPED_TRACE(i);
+        const auto& warp = runs["warp"][i];
+        ASSERT_EQ(warp.count("warp_fallbacks"), 1u);
+        // The walk stays metres away from every wall plane (walls are geometry within the first
+        // zone anyway), where the warp is well-conditioned: no fallback.
+        EXPECT_EQ(warp.at("warp_fallbacks"), "0");
+        EXPECT_EQ(runs["blend"][i].at("warp_fallbacks"), "0");
+        // Same walk, same selection.
+        EXPECT_EQ(warp.at("world_x"), runs["blend"][i].at("world_x"));
+        EXPECT_EQ(warp.at("zone"), runs["blend"][i].at("zone"));
+        blendCalls += std::stol(runs["blend"][i].at("draw_calls"));
+        warpCalls += std::stol(runs["warp"][i].at("draw_calls"));
+    }
+    // The path starts in a texture zone of cell A: the warp pass adds its hole and structure
+    // draws per textured wall and view.
+    EXPECT_GT(warpCalls, blendCalls);
+}
+
 TEST(RunCli, BadFlagsAndSpecsGiveClearErrors) {
     const fs::path out = outputDir("errors");
     const std::string scene = smallPlant().string();

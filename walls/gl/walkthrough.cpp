@@ -2,6 +2,7 @@
 
 #include "scenes/image_io.h"
 #include "scenes/region.h"
+#include "display/warp.h"
 #include "walls/angular_error.h"
 #include "walls/gl/bake_key.h"
 
@@ -47,7 +48,7 @@ struct Walkthrough::WallRuntime {
           pager(setup.folder, setup.manifest, options.textureBudgetMB,
                 options.decoder ? options.decoder : walls::TexturePager::Decoder(decodeBakedTexture)),
           store(pager, static_cast<std::size_t>(options.uploadMBPerFrame * 1024 * 1024)),
-          lastDrawn(setup.plan.walls.size()) {
+          lastDrawn(setup.plan.walls.size()), morphs(setup.plan.walls.size()) {
         for (const walls::Texture& t : setup.plan.textures) textures[t.id] = &t;
     }
 
@@ -65,6 +66,16 @@ struct Walkthrough::WallRuntime {
     std::map<int, const walls::Texture*> textures;                  // by id
     // Per wall: the side and textures drawn last; reused only from the same side.
     std::vector<std::pair<int, std::vector<std::pair<int, double>>>> lastDrawn;
+    // Per wall, Transition::Warp: what it drew last (kind -1: nothing yet, 0 geometry, 1 texture)
+    // and its warp-morph.
+    struct Morph {
+        int kind = -1;
+        std::optional<glm::dvec3> lastSamplingPoint;
+        bool active = false, toGeometry = false;
+        double start = 0.0;              // FrameInput::time of the switch
+        glm::dvec3 samplingPoint{0.0};   // the texture's end of the morph
+    };
+    std::vector<Morph> morphs;
 };
 
 Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescription& description,
@@ -75,6 +86,8 @@ Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescript
     if (_screens.empty())
         for (int s = 0; s < static_cast<int>(display.screens().size()); ++s) _screens.push_back(s);
     if (walls && !walls->plan.walls.empty()) _walls = std::make_unique<WallRuntime>(std::move(*walls), description, options);
+    if (_walls && options.transition == Transition::Warp)
+        _warp = std::make_unique<WarpPass>(scene, _renderer.gpu(), options.render, display.depthRange().near);
     GLuint query = 0;
     glCreateQueries(GL_TIME_ELAPSED, 1, &query);
     _timer = GlObject(query, [](GLuint id) { glDeleteQueries(1, &id); });
@@ -181,6 +194,83 @@ std::optional<WallDraw> Walkthrough::chooseWall(const walls::WallBlend& b, glm::
     return d;
 }
 
+// True when the warp of `warp` is well-conditioned for every rendered view (display/warp.h).
+bool Walkthrough::warpConditioned(const FrameInput& input, const WarpWall& warp) const {
+    const glm::dmat4 caveFromWorld = glm::inverse(input.worldFromCave);
+    for (const display::ScreenView& view : _display.views(input.head))
+        if (std::find(_screens.begin(), _screens.end(), view.screen) != _screens.end() &&
+            !(display::warpCondition(warpFor(warp, view, caveFromWorld, _display.depthRange().near)) <=
+              display::kMaxWarpCondition))
+            return false;
+    return true;
+}
+
+// Transition::Warp: a blend of textures and geometry becomes whichever has the larger weight
+// (the warp-morph replaces the fade); textures keep their relative weights.
+walls::WallBlend Walkthrough::binaryBlend(walls::WallBlend b) {
+    if (b.textures.empty() || b.geometryWeight <= 0.0 || b.geometryWeight >= 1.0) return b;
+    if (b.geometryWeight >= 0.5) {
+        b.textures.clear();
+    } else {
+        for (auto& [id, weight] : b.textures) weight /= 1.0 - b.geometryWeight;
+    }
+    b.geometryWeight = b.textures.empty() ? 1.0 : 0.0;
+    return b;
+}
+
+// Transition::Warp after chooseWall (header): starts or continues the wall's warp-morph, queues
+// its warp, or falls back to geometry. Returns the quad to draw, if any; `morphCells` collects the
+// cells drawn warped instead of by the scene renderer.
+std::optional<WallDraw> Walkthrough::warpWall(const FrameInput& input, const walls::WallBlend& b, WallState& state,
+                                              std::optional<WallDraw> draw, std::vector<bool>& cells,
+                                              std::vector<int>& morphCells, FrameResult& result) {
+    WallRuntime& w = *_walls;
+    const walls::PlannedWall& planned = w.setup.plan.walls[b.wall];
+    const int behind = planned.cells[1 - b.side];
+    std::optional<glm::dvec3> samplingPoint;
+    if (draw && !state.textures.empty()) {
+        const auto largest = std::max_element(state.textures.begin(), state.textures.end(),
+                                              [](auto& x, auto& y) { return x.second < y.second; });
+        if (auto t = w.textures.find(largest->first); t != w.textures.end()) samplingPoint = t->second->samplingPoint;
+    }
+    WallRuntime::Morph& m = w.morphs[b.wall];
+    const int kind = draw ? 1 : 0;
+    if (m.kind >= 0 && kind != m.kind && (kind == 1 ? samplingPoint.has_value() : m.lastSamplingPoint.has_value())) {
+        m.active = true;
+        m.start = input.time;
+        m.toGeometry = kind == 0;
+        m.samplingPoint = m.toGeometry ? *m.lastSamplingPoint : *samplingPoint;
+    }
+    m.kind = kind;
+    if (samplingPoint) m.lastSamplingPoint = samplingPoint;
+    const double s = (input.time - m.start) / _options.morphSeconds;
+    if (m.active && !(s >= 0.0 && s < 1.0)) m.active = false;
+    WarpWall warp{walls::quadSeenFrom(planned.quad, b.side), samplingPoint.value_or(glm::dvec3(0.0)), -1};
+    if (m.active) {
+        // The viewpoint moves from the sampling point to the eye (to geometry) or back.
+        warp.samplingPoint = m.toGeometry ? glm::mix(m.samplingPoint, result.eyeWorld, s)
+                                          : glm::mix(result.eyeWorld, m.samplingPoint, s);
+        warp.cell = behind;
+    } else if (!samplingPoint || state.geometryWeight > 0.0) {
+        return draw;
+    }
+    if (!warpConditioned(input, warp)) {
+        m.active = false;
+        state.textures.clear();
+        state.geometryWeight = 1.0;
+        state.fallback = true;
+        if (behind >= 0 && behind < static_cast<int>(cells.size())) cells[behind] = true;
+        ++result.warpFallbacks;
+        return std::nullopt;
+    }
+    _warpWalls.push_back(warp);
+    if (!m.active) return draw;
+    state.textures.clear();
+    state.geometryWeight = 1.0;
+    morphCells.push_back(behind);
+    return std::nullopt;
+}
+
 void Walkthrough::measureError(glm::dvec3 eyeCave, FrameResult& result) const {
     double worst = 0.0;
     for (const WallState& s : result.walls) {
@@ -210,6 +300,7 @@ void Walkthrough::drawViews(const FrameInput& input, const std::vector<int>& obj
         const ViewStats geometry = _renderer.renderView(view, input.worldFromCave, filter);
         result.stats.drawCalls += geometry.drawCalls;
         result.stats.triangles += geometry.triangles;
+        if (_warp) _warp->draw(_warpWalls, view, caveFromWorld, result.stats);
         // renderView leaves viewport, scissor and colour mask set for this view.
         if (_walls) _walls->pass.draw(walls, view.frustum, caveFromWorld, _walls->store.sampler(), result.stats);
         if (input.hand) {
@@ -233,11 +324,19 @@ std::vector<WallDraw> Walkthrough::selectWalls(const FrameInput& input, FrameRes
     cells = geometryMask(selection);
     requestTextures(selection, result.eyeWorld);
     std::vector<WallDraw> draws;
-    for (const walls::WallBlend& b : selection.walls) {
+    std::vector<int> morphCells;
+    _warpWalls.clear();
+    for (const walls::WallBlend& selected : selection.walls) {
+        const walls::WallBlend b = _warp ? binaryBlend(selected) : selected;
         WallState state;
-        if (auto draw = chooseWall(b, result.eyeWorld, state, cells)) draws.push_back(*draw);
+        auto draw = chooseWall(b, result.eyeWorld, state, cells);
+        if (_warp) draw = warpWall(input, b, state, draw, cells, morphCells, result);
+        if (draw) draws.push_back(*draw);
         result.walls.push_back(std::move(state));
     }
+    // A morphing wall's cell behind is drawn by the warp pass only.
+    for (int c : morphCells)
+        if (c >= 0 && c < static_cast<int>(cells.size())) cells[c] = false;
     measureError(input.head.position, result);
     result.pager = _walls->pager.stats();
     return draws;

@@ -20,6 +20,19 @@
 //     hand cursor.
 //  5. the error: maxAngularError (walls/angular_error.h) of every texture drawn with non-zero
 //     weight against the true eye, in degrees and in pixels (see FrameResult::maxErrorPixels).
+// Transition Warp (warp_pass.h): every wall drawn with textures and no geometry weight gets the
+// structure behind it warped into its texture's view (the texture of the largest weight when it
+// mixes several), between steps 4's geometry and wall quads. When the warp of such a wall is
+// ill-conditioned for any rendered screen and eye (display::warpCondition > kMaxWarpCondition:
+// the eye near the wall plane), the wall falls back to geometry (its cell behind drawn, no
+// texture, flagged `fallback`) and FrameResult::warpFallbacks counts it.
+// Warp-morph (Transition::Warp, seed 002 §2): a wall's mix of textures and geometry becomes
+// whichever weighs more (no alpha fade between texture and geometry; textures still cross-fade
+// among themselves). When a wall switches between texture and geometry, for morphSeconds of
+// FrameInput::time its cell behind (content and structure) is drawn by the warp pass through the
+// wall as seen from p = lerp(samplingPoint, eye, s) (texture -> geometry; eye -> samplingPoint
+// back), s the elapsed share: it starts as the texture's view and ends exact. During the morph
+// the wall draws no quad and reports no textures and geometryWeight 1.
 // A scene without virtual walls (or WalkthroughOptions::walls = false) draws all geometry
 // (frustum-culled) and never builds the wall program, the pager or the selector.
 //
@@ -37,6 +50,7 @@
 #include "walls/gl/hand_cursor.h"
 #include "walls/gl/texture_store.h"
 #include "walls/gl/wall_pass.h"
+#include "walls/gl/warp_pass.h"
 #include "walls/plan.h"
 #include "walls/texture_pager.h"
 #include "walls/visibility.h"
@@ -58,6 +72,9 @@ struct WallSetup {
     walls::BakeManifest manifest;
 };
 
+// How structure crossing a textured wall meets the texture (see the header comment).
+enum class Transition { Blend, Warp };
+
 struct WalkthroughOptions {
     double textureBudgetMB = 256.0;          // GPU budget of resident wall textures, MB, > 0
     double uploadMBPerFrame = 8.0;           // texture bytes uploaded per frame at most, MB
@@ -69,6 +86,8 @@ struct WalkthroughOptions {
     // Reads every MIP level of a baked texture file on the pager's thread; empty:
     // scenes::readMipLevels. Tests inject slow or failing decoders here.
     walls::TexturePager::Decoder decoder;
+    Transition transition = Transition::Blend;  // Warp: structure behind textured walls warped
+    double morphSeconds = 0.5;               // Warp: duration of a warp-morph, seconds, > 0
 };
 
 struct FrameInput {
@@ -102,6 +121,8 @@ struct FrameResult {
     // with d the eye's distance to the screen plane and r its distance to the farthest
     // screen corner (the largest pixels per radian on that screen); max over screens.
     double maxErrorPixels = 0.0;
+    int warpFallbacks = 0;                   // Transition::Warp: walls drawn as geometry because
+                                             // their warp was ill-conditioned (eye near the plane)
     std::vector<WallState> walls;
     std::vector<ScreenImage> images;         // when FrameInput::readImages
 };
@@ -134,6 +155,11 @@ private:
                                        std::vector<bool>& cells);
     bool withinBound(const std::vector<std::pair<int, double>>& set, const walls::PlannedWall& wall,
                      glm::dvec3 eyeWorld) const;
+    bool warpConditioned(const FrameInput& input, const WarpWall& warp) const;
+    static walls::WallBlend binaryBlend(walls::WallBlend blend);
+    std::optional<WallDraw> warpWall(const FrameInput& input, const walls::WallBlend& blend, WallState& state,
+                                     std::optional<WallDraw> draw, std::vector<bool>& cells,
+                                     std::vector<int>& morphCells, FrameResult& result);
     void measureError(glm::dvec3 eyeCave, FrameResult& result) const;
     void drawViews(const FrameInput& input, const std::vector<int>& objects, const std::vector<WallDraw>& walls,
                    FrameResult& result);
@@ -149,6 +175,8 @@ private:
     SceneRenderer _renderer;
     std::unique_ptr<WallRuntime> _walls;
     std::unique_ptr<HandCursorPass> _cursor;
+    std::unique_ptr<WarpPass> _warp;         // Transition::Warp with walls only
+    std::vector<WarpWall> _warpWalls;        // this frame's warped walls
     GlObject _timer;
 };
 
