@@ -3,14 +3,38 @@
 #include "display/warp.h"
 #include "tools/args.h"
 #include "tools/commands.h"
+#ifdef CAVEWALL_HAVE_GL
+#include "tools/bench_driver.h"
+#endif
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 namespace cavewall::tools {
 
 const char* const kBenchUsage =
-    "usage: cavewall bench --stability\n"
+    "usage: cavewall bench SCENE [--display D] [--path P] [--out DIR] [--frames N] [--resolution N]\n"
+    "                      [--quick] [--cache DIR] [--compare-every K] [--min-zone M] [--ppd N]\n"
+    "                      [--bake-resolution N]\n"
+    "       cavewall bench --stability\n"
+    "\n"
+    "SCENE    error against run time in one run (a scene.json, its folder, or glTF/GLB with\n"
+    "         virtual walls). One eye path (the guided navigator along the scene's walkPath,\n"
+    "         the head from --path: a tracker spec or a `cavewall run --record` file, default\n"
+    "         sim:walk) drives every mode: full geometry (frustum-culled, the reference), cell\n"
+    "         culling without textures, the near-geometry limit (the viewer's cell only), and\n"
+    "         virtual walls at alpha 2.5, 5, 10, 15 and 20 degrees with the blend transition and\n"
+    "         at 10 degrees with the warp transition (each alpha planned and baked into the\n"
+    "         cache, --cache, default $CAVEWALL_CACHE or ~/.cache/cavewall). Per mode: frame,\n"
+    "         CPU and GPU ms p50/p95/p99, speed-up, triangles, draw calls, textures, texels, disk\n"
+    "         and GPU MB, and the image error against full geometry at the same frame, eye and\n"
+    "         screen (PSNR, RMSE, SSIM) with the worst angular error in degrees and pixels.\n"
+    "         Writes DIR/bench.csv, bench_screens.csv, bench.md (also printed) and bench.png\n"
+    "         (error against frame time, Pareto front in red). Defaults: display cave4, out\n"
+    "         bench-out, 120 frames at 256 pixels per screen, images compared every 4 frames,\n"
+    "         min-zone 1 m, 10 pixels per degree, bake textures at most 512 texels. --quick: 24\n"
+    "         frames at 128 pixels, compared every 3, bakes at most 128 texels.\n"
     "\n"
     "--stability  runs the stiff and extreme numerical cases (projection at eye distances\n"
     "             1e-9 ... 1e6 m, world offsets to 1e7 m, near/far ratios to 1e9 with reversed-Z,\n"
@@ -38,13 +62,44 @@ int runStability() {
     return failed ? 1 : 0;
 }
 
+#ifdef CAVEWALL_HAVE_GL
+int runSceneBench(const Args& args) {
+    const bool quick = args.has("quick");
+    BenchOptions o;
+    o.scene = args.positional(0, "SCENE");
+    const config::DisplayConfig display = config::loadDisplayConfig(args.getOr("display", "cave4"));
+    o.resolution = static_cast<int>(args.integer("resolution", quick ? 128 : 256, 16, 4096));
+    o.display = withResolution(display, o.resolution);
+    if (auto path = args.get("path"))
+        o.tracker = std::filesystem::is_regular_file(*path) ? "replay:" + *path : *path;
+    o.frames = args.integer("frames", quick ? 24 : 120, 1, 100000);
+    o.compareEvery = static_cast<int>(args.integer("compare-every", quick ? 3 : 4, 1, 100000));
+    o.plan.minZoneSize = args.number("min-zone", o.plan.minZoneSize, 1e-3, 1e4);
+    o.plan.pixelsPerDegree = args.number("ppd", o.plan.pixelsPerDegree, 0.01, 1000.0);
+    o.bakeResolution = static_cast<int>(args.integer("bake-resolution", quick ? 128 : 512, 16, 16384));
+    if (auto cache = args.get("cache")) o.cache = *cache;
+    const std::filesystem::path out = args.getOr("out", "bench-out");
+    const BenchReport report = runBenchmark(o);
+    writeReport(out, report);
+    std::cout << "\n" << markdownReport(report) << "\n" << (out / "bench.csv").string() << "\n"
+              << (out / "bench.md").string() << "\n" << (out / "bench.png").string() << "\n";
+    return 0;
+}
+#endif
+
 }  // namespace
 
 int runBench(const std::vector<std::string>& words) {
-    const Args args(words, {"stability"});
-    args.expectFlags({"stability"});
+    const Args args(words, {"stability", "quick"});
+    args.expectFlags({"stability", "quick", "display", "path", "out", "frames", "resolution", "cache", "compare-every",
+                      "min-zone", "ppd", "bake-resolution"});
     if (args.has("stability")) return runStability();
-    throw Error("bench: expected --stability (see cavewall bench --help)");
+#ifdef CAVEWALL_HAVE_GL
+    if (!args.positional().empty()) return runSceneBench(args);
+    throw Error("bench: expected a SCENE or --stability (see cavewall bench --help)");
+#else
+    throw Error("bench: expected --stability (SCENE needs a build with OpenGL; see cavewall bench --help)");
+#endif
 }
 
 }  // namespace cavewall::tools

@@ -1,0 +1,168 @@
+#include "tools/bench_driver.h"
+
+#include "config/json_reader.h"
+#include "display/display.h"
+#include "display/gl/context.h"
+#include "scenes/loader.h"
+#include "tools/bench_modes.h"
+#include "walls/gl/baker.h"
+#include "walls/visibility.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+namespace cavewall::tools {
+
+namespace {
+
+std::string fixed(double v, int decimals = 1) {
+    std::ostringstream s;
+    s.setf(std::ios::fixed);
+    s.precision(decimals);
+    s << v;
+    return s.str();
+}
+
+struct BakedWalls {
+    gl::WallSetup setup;
+    double texels = 0.0, diskMB = 0.0;
+    std::string summary;
+};
+
+// Plans and bakes (or finds in the cache) the walls at `alphaDeg`.
+BakedWalls bakeWalls(const BenchOptions& o, double alphaDeg, const scenes::Scene& scene,
+                     const scenes::SceneDescription& d, gl::Context& context) {
+    walls::BakeRequest request;
+    request.scene = o.scene;
+    request.plan = o.plan;
+    request.plan.alphaDeg = alphaDeg;
+    request.settings.maxResolution = o.bakeResolution;
+    request.settings.jobs = 2;
+    request.context = &context;
+    if (o.cache) request.cache = *o.cache;
+    walls::BakeResult baked = walls::bakeScene(request);
+    context.makeCurrent();
+    BakedWalls out;
+    out.setup.plan = walls::planZones(d, request.plan);
+    out.setup.table = walls::computeVisibility(d);
+    walls::assignDepthBehind(out.setup.plan, scene, d, out.setup.table);
+    out.setup.folder = baked.folder;
+    for (const walls::BakedTexture& t : baked.manifest.textures)
+        out.texels += static_cast<double>(t.resolution.x) * t.resolution.y;
+    out.diskMB = static_cast<double>(baked.totalBytes) / 1e6;
+    out.setup.manifest = std::move(baked.manifest);
+    out.summary = "a=" + config::formatNumber(alphaDeg) + ": " + std::to_string(out.setup.plan.textures.size()) +
+                  " textures, " + std::to_string(baked.baked) + " baked now in " + fixed(baked.seconds) + " s, " +
+                  std::to_string(baked.reused) + " from the cache";
+    return out;
+}
+
+ModeResult namedMode(std::string mode, double alphaDeg = 0.0, std::string transition = "none") {
+    ModeResult m;
+    m.mode = std::move(mode);
+    m.alphaDeg = alphaDeg;
+    m.transition = std::move(transition);
+    return m;
+}
+
+void say(const BenchOptions& o, const std::string& line) {
+    if (o.verbose) std::cout << line << "\n" << std::flush;
+}
+
+std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene& scene, const gl::Context& context,
+                                     const EyePath& path) {
+    std::size_t triangles = 0;
+    for (const scenes::Object& object : scene.objects) triangles += scene.meshes[object.mesh].triangleCount();
+    const auto& s0 = o.display.screens.front();
+    return {"scene: " + o.scene.string() + " (" + std::to_string(scene.objects.size()) + " objects, " +
+                std::to_string(triangles) + " triangles)",
+            "display: " + o.display.name + ", " + std::to_string(o.display.screens.size()) + " screens at " +
+                std::to_string(s0.resolution.x) + "x" + std::to_string(s0.resolution.y) + " pixels, " +
+                (o.display.stereo == config::StereoMode::Mono ? "mono" : "stereo"),
+            path.description,
+            "image error against the full-geometry image of the same frame, eye and screen, every " +
+                std::to_string(o.compareEvery) + " frames; RMSE/PSNR on sRGB RGB in [0,1] (OpenImageIO compare), "
+                "SSIM on luminance (8x8 windows)",
+            "walls: plan minZoneSize " + config::formatNumber(o.plan.minZoneSize) + " m, pixelsPerDegree " +
+                config::formatNumber(o.plan.pixelsPerDegree) + ", blendWidth " + config::formatNumber(o.plan.blendWidth) +
+                " m; bake maxResolution " + std::to_string(o.bakeResolution) +
+                " texels; textures all resident (warm-up pass, synchronous paging)",
+            "machine: " + context.info().renderer + ", " + std::to_string(std::thread::hardware_concurrency()) +
+                " hardware threads",
+            "transitions: blend at every alpha; warp (structure behind textured walls warped into the texture's "
+            "view) at alpha " + config::formatNumber(o.transitionAlphaDeg)};
+}
+
+}  // namespace
+
+config::DisplayConfig withResolution(config::DisplayConfig display, int pixels) {
+    for (config::Screen& s : display.screens) {
+        const double longer = std::max(s.resolution.x, s.resolution.y);
+        const double scale = longer > 0 ? pixels / longer : 1.0;
+        s.resolution = glm::max(glm::ivec2(glm::round(glm::dvec2(s.resolution) * scale)), glm::ivec2(1));
+    }
+    return display;
+}
+
+BenchReport runBenchmark(const BenchOptions& o) {
+    if (o.compareEvery < 1) throw Error("bench: compareEvery: expected at least 1, got " + std::to_string(o.compareEvery));
+    if (o.alphasDeg.empty()) throw Error("bench: expected at least one alpha for the walls modes, got none");
+    if (o.frames < 1) throw Error("--frames: expected at least 1, got " + std::to_string(o.frames));
+    const auto start = std::chrono::steady_clock::now();
+    const display::Display display(o.display);
+    scenes::SceneDescription description;
+    const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description);
+    if (description.walls.empty()) throw Error(o.scene.string() + ": the scene has no virtual walls (expected at least 1 to bench)");
+    const EyePath path = recordEyePath(scene, description, o.display, o.tracker, o.frames);
+    const auto context = gl::createHeadlessContext();
+    BenchReport report;
+    report.header = headerLines(o, scene, *context, path);
+    const ModeContext c{scene, description, display, *context, path, o.compareEvery};
+
+    say(o, "bench: full geometry");
+    ReferenceImages reference;
+    ModeAccumulator full(namedMode("full"), display);
+    runWalkthroughMode(c, std::nullopt, full, nullptr, &reference);
+    report.modes.push_back(full.finish(0.0));
+    const double fullP50 = report.modes.front().frameMs.p50;
+
+    std::vector<BakedWalls> baked;
+    for (double alpha : o.alphasDeg) {
+        say(o, "bench: plan and bake walls at a=" + config::formatNumber(alpha) + " deg");
+        baked.push_back(bakeWalls(o, alpha, scene, description, *context));
+        say(o, "bench: " + baked.back().summary);
+        report.header.push_back("bake " + baked.back().summary);
+    }
+    const auto listed = std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg);
+    const std::size_t transitionIndex = listed != o.alphasDeg.end() ? listed - o.alphasDeg.begin() : 0;
+    const gl::WallSetup& cellPlan = baked[transitionIndex].setup;
+    for (const bool nearOnly : {false, true}) {
+        say(o, nearOnly ? "bench: near-geometry limit" : "bench: cell culling without textures");
+        ModeAccumulator acc(namedMode(nearOnly ? "near" : "cells"), display);
+        runCellMode(c, cellPlan, nearOnly, acc, reference);
+        report.modes.push_back(acc.finish(fullP50));
+    }
+    auto runWalls = [&](std::size_t i, gl::Transition transition) {
+        const bool warp = transition == gl::Transition::Warp;
+        say(o, "bench: walls at a=" + config::formatNumber(o.alphasDeg[i]) + " deg, " + (warp ? "warp" : "blend"));
+        ModeResult mode = namedMode("walls", o.alphasDeg[i], warp ? "warp" : "blend");
+        mode.textures = static_cast<int>(baked[i].setup.plan.textures.size());
+        mode.texels = baked[i].texels;
+        mode.diskMB = baked[i].diskMB;
+        ModeAccumulator acc(mode, display);
+        runWalkthroughMode(c, baked[i].setup, acc, &reference, nullptr, transition);
+        report.modes.push_back(acc.finish(fullP50));
+    };
+    for (std::size_t i = 0; i < baked.size(); ++i) runWalls(i, gl::Transition::Blend);
+    runWalls(transitionIndex, gl::Transition::Warp);
+    report.header.push_back("bench time: " +
+                            fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 0) +
+                            " s in total (all modes, bakes included)");
+    return report;
+}
+
+}  // namespace cavewall::tools

@@ -1,0 +1,142 @@
+#include "tools/bench_modes.h"
+
+#include "display/gl/render_targets.h"
+#include "display/gl/scene_renderer.h"
+#include "walls/frame_select.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace cavewall::tools {
+
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+bool compared(const ModeContext& c, long frame) { return frame % c.compareEvery == 0; }
+
+}  // namespace
+
+ModeAccumulator::ModeAccumulator(ModeResult mode, const display::Display& display)
+    : _mode(std::move(mode)), _screens(display.screens().size()) {
+    _mode.screens.clear();
+    for (const auto& s : display.screens()) _mode.screens.push_back({s.name, {}});
+}
+
+void ModeAccumulator::addFrame(const FrameCost& cost) {
+    _frame.push_back(cost.frameMs);
+    _cpu.push_back(cost.cpuMs);
+    _gpu.push_back(cost.gpuMs);
+    _triangles += cost.triangles;
+    _drawCalls += cost.drawCalls;
+    _mode.maxErrDeg = std::max(_mode.maxErrDeg, cost.errorDeg);
+    _mode.maxErrPx = std::max(_mode.maxErrPx, cost.errorPx);
+    _mode.gpuMB = std::max(_mode.gpuMB, cost.residentMB);
+    _mode.misses = std::max(_mode.misses, cost.misses);
+}
+
+void ModeAccumulator::compare(const std::vector<gl::ScreenImage>& images, const std::vector<gl::ScreenImage>& reference) {
+    if (images.size() != reference.size())
+        throw Error("bench: mode " + modeLabel(_mode) + " read " + std::to_string(images.size()) +
+                    " images, expected the reference's " + std::to_string(reference.size()));
+    for (std::size_t i = 0; i < images.size(); ++i) {
+        const ImageError e = compareForBench(images[i].pixels, reference[i].pixels);
+        _overall.add(e);
+        const int screen = images[i].screen;
+        if (screen >= 0 && screen < static_cast<int>(_screens.size())) _screens[screen].add(e);
+    }
+}
+
+ModeResult ModeAccumulator::finish(double fullP50) const {
+    ModeResult m = _mode;
+    m.frameMs = timeStats(_frame);
+    m.cpuMs = timeStats(_cpu);
+    m.gpuMs = timeStats(_gpu);
+    const double n = std::max<double>(1.0, static_cast<double>(_frame.size()));
+    m.triangles = _triangles / n;
+    m.drawCalls = _drawCalls / n;
+    m.speedup = fullP50 > 0.0 && m.frameMs.p50 > 0.0 ? fullP50 / m.frameMs.p50 : 1.0;
+    m.error = _overall.result();
+    for (std::size_t s = 0; s < _screens.size(); ++s) m.screens[s].error = _screens[s].result();
+    return m;
+}
+
+void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls, ModeAccumulator& acc,
+                        const ReferenceImages* reference, ReferenceImages* store, gl::Transition transition) {
+    gl::WalkthroughOptions options;
+    options.transition = transition;
+    options.synchronousPaging = true;
+    options.textureBudgetMB = 4096.0;  // every texture of the path stays resident after warm-up
+    options.uploadMBPerFrame = 4096.0;
+    const bool hasWalls = walls.has_value();
+    gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
+    // Warm-up: shaders, buffers and (with walls) every texture of the path made resident.
+    const long warmUp = hasWalls ? static_cast<long>(c.path.frames.size()) : std::min<long>(3, c.path.frames.size());
+    for (long i = 0; i < warmUp; ++i) walkthrough.renderFrame(c.path.frames[i]);
+    walkthrough.waitForTextures();
+    for (const gl::FrameInput& frame : c.path.frames) {
+        gl::FrameInput in = frame;
+        in.readImages = compared(c, in.frame);
+        gl::FrameResult r = walkthrough.renderFrame(in);
+        acc.addFrame({r.frameMs, r.cpuMs, r.gpuMs, static_cast<double>(r.stats.triangles),
+                      static_cast<double>(r.stats.drawCalls), r.maxErrorDeg, r.maxErrorPixels, r.pager.residentMB,
+                      r.pager.misses});
+        if (!in.readImages) continue;
+        if (store) (*store)[in.frame] = std::move(r.images);
+        else if (reference) acc.compare(r.images, reference->at(in.frame));
+    }
+}
+
+namespace {
+
+// The objects a cell mode draws: structure, objects without a cell and those of `cells`.
+std::vector<int> cellObjects(const scenes::Scene& scene, const std::vector<bool>& cells) {
+    std::vector<int> out;
+    for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
+        const scenes::Object& o = scene.objects[i];
+        if (o.role == scenes::Role::Structure || o.cell < 0 || o.cell >= static_cast<int>(cells.size()) || cells[o.cell])
+            out.push_back(i);
+    }
+    return out;
+}
+
+std::vector<bool> cellMask(const walls::FrameSelection& s, std::size_t cellCount, bool nearOnly) {
+    std::vector<bool> cells(cellCount, s.allGeometry());
+    if (!nearOnly)
+        for (int c : s.geometryCells)
+            if (c >= 0 && c < static_cast<int>(cellCount)) cells[c] = true;
+    if (s.cell >= 0 && s.cell < static_cast<int>(cellCount)) cells[s.cell] = true;
+    return cells;
+}
+
+}  // namespace
+
+void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly, ModeAccumulator& acc,
+                 const ReferenceImages& reference) {
+    const walls::FrameSelector selector(setup.plan, setup.table, c.description);
+    const gl::RenderTargets targets(c.display, c.context);
+    gl::SceneRenderer renderer(c.scene);
+    auto draw = [&](const gl::FrameInput& in, FrameCost* cost) {
+        const auto start = std::chrono::steady_clock::now();
+        const glm::dvec3 eye(in.worldFromCave * glm::dvec4(in.head.position, 1.0));
+        const std::vector<int> objects =
+            cellObjects(c.scene, cellMask(selector.select(eye), c.description.cells.size(), nearOnly));
+        gl::DrawFilter filter;
+        filter.objects = &objects;
+        const gl::FrameStats stats = renderer.render(c.display.views(in.head), targets, in.worldFromCave, filter);
+        const double gpu = renderer.waitGpuMs();
+        if (cost) *cost = {msSince(start), stats.cpuMs, gpu, static_cast<double>(stats.triangles),
+                           static_cast<double>(stats.drawCalls)};
+    };
+    for (long i = 0; i < std::min<long>(3, c.path.frames.size()); ++i) draw(c.path.frames[i], nullptr);
+    for (const gl::FrameInput& in : c.path.frames) {
+        FrameCost cost;
+        draw(in, &cost);
+        acc.addFrame(cost);
+        if (compared(c, in.frame)) acc.compare(gl::readFrame(c.display, targets), reference.at(in.frame));
+    }
+}
+
+}  // namespace cavewall::tools

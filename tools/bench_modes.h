@@ -1,0 +1,67 @@
+#pragma once
+// The per-mode machinery of `cavewall bench` (tools/bench_driver.h): running one mode over the
+// eye path and accumulating its times, counts and image errors.
+
+#include "display/gl/frame_images.h"
+#include "tools/bench_path.h"
+#include "tools/bench_report.h"
+#include "walls/gl/walkthrough.h"
+
+#include <map>
+#include <optional>
+#include <vector>
+
+namespace cavewall::tools {
+
+// Full-geometry images of the compared frames: frame index -> its screen images.
+using ReferenceImages = std::map<long, std::vector<gl::ScreenImage>>;
+
+// What one timed frame cost.
+struct FrameCost {
+    double frameMs = 0.0, cpuMs = 0.0, gpuMs = 0.0;
+    double triangles = 0.0, drawCalls = 0.0;
+    double errorDeg = 0.0, errorPx = 0.0;
+    double residentMB = 0.0;
+    long misses = 0;                    // cumulative, as the pager counts
+};
+
+// Collects one mode's frames and comparisons; finish() fills the ModeResult.
+class ModeAccumulator {
+public:
+    ModeAccumulator(ModeResult mode, const display::Display& display);
+    void addFrame(const FrameCost& cost);
+    // Compares `images` with the reference of the same frame (same screens and images).
+    void compare(const std::vector<gl::ScreenImage>& images, const std::vector<gl::ScreenImage>& reference);
+    // `fullP50`: the reference mode's median frame ms (0: this is the reference).
+    ModeResult finish(double fullP50) const;
+
+private:
+    ModeResult _mode;
+    std::vector<double> _frame, _cpu, _gpu;
+    double _triangles = 0.0, _drawCalls = 0.0;
+    ErrorPool _overall;
+    std::vector<ErrorPool> _screens;
+};
+
+// Everything a mode run needs; the context is current.
+struct ModeContext {
+    const scenes::Scene& scene;
+    const scenes::SceneDescription& description;
+    const display::Display& display;
+    gl::Context& context;
+    const EyePath& path;
+    int compareEvery = 4;
+};
+
+// Runs the walkthrough (walls: nullopt = full geometry) over the path: a warm-up pass when it
+// has walls, then the timed pass. With `reference` null the compared frames' images are stored
+// in `store` (the full-geometry reference run).
+void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls, ModeAccumulator& acc,
+                        const ReferenceImages* reference, ReferenceImages* store,
+                        gl::Transition transition = gl::Transition::Blend);
+
+// Runs the cells or near mode (bench_driver.h) with the selection of `setup`'s plan.
+void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly, ModeAccumulator& acc,
+                 const ReferenceImages& reference);
+
+}  // namespace cavewall::tools

@@ -1,0 +1,128 @@
+#include "tools/bench_report.h"
+
+#include "config/error.h"
+#include "scenes/image_io.h"
+#include "tools/bench_plot.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace cavewall::tools {
+
+namespace {
+
+std::string num(double v, int digits = 6) {
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    if (std::isnan(v)) return "nan";
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, v);
+    return buffer;
+}
+
+void writeText(const std::filesystem::path& file, const std::string& text) {
+    std::ofstream out(file, std::ios::binary);
+    out << text;
+    if (!out) throw Error(file.string() + ": could not write the file");
+}
+
+std::string screensCsv(const BenchReport& report) {
+    std::string out = "mode,alpha_deg,transition,screen,psnr_db,rmse,ssim\n";
+    for (const ModeResult& m : report.modes)
+        for (const ScreenResult& s : m.screens)
+            out += m.mode + "," + num(m.alphaDeg) + "," + m.transition + "," + s.screen + "," + num(s.error.psnrDb) + "," +
+                   num(s.error.rmse) + "," + num(s.error.ssim) + "\n";
+    return out;
+}
+
+const ModeResult* findMode(const BenchReport& report, const std::string& mode) {
+    for (const ModeResult& m : report.modes)
+        if (m.mode == mode) return &m;
+    return nullptr;
+}
+
+}  // namespace
+
+std::vector<std::string> targetLines(const BenchReport& report) {
+    const ModeResult* best = nullptr;
+    for (const ModeResult& m : report.modes)
+        if (m.mode == "walls" && m.error.psnrDb >= 30.0 && (!best || m.speedup > best->speedup)) best = &m;
+    if (!best) return {"targets: no walls mode reaches PSNR >= 30 dB"};
+    const double ratio = best->frameMs.p50 > 0 ? best->frameMs.p99 / best->frameMs.p50 : 0.0;
+    std::vector<std::string> lines = {
+        "targets: fastest walls mode with PSNR >= 30 dB: " + modeLabel(*best) + ", speed-up " + num(best->speedup, 3) +
+            (best->speedup >= 10.0 ? " (>= 10: met)" : " (>= 10: not met)") + ", PSNR " + num(best->error.psnrDb, 3) +
+            " dB, p99/p50 " + num(ratio, 3) + (ratio <= 1.3 ? " (<= 1.3: met)" : " (<= 1.3: not met)")};
+    if (const ModeResult* near = findMode(report, "near"); near && near->frameMs.p50 > 0)
+        lines.push_back("targets: its median frame time is " + num(best->frameMs.p50 / near->frameMs.p50, 3) +
+                        "x the near-geometry limit's (" + num(best->frameMs.p50, 3) + " ms against " +
+                        num(near->frameMs.p50, 3) + " ms)");
+    return lines;
+}
+
+std::string modeLabel(const ModeResult& m) {
+    if (m.mode != "walls") return m.mode;
+    return "walls a=" + num(m.alphaDeg) + " " + m.transition;
+}
+
+std::string csvHeader() {
+    return "mode,alpha_deg,transition,frame_ms_p50,frame_ms_p95,frame_ms_p99,speedup,psnr_db,rmse,ssim,max_err_deg,"
+           "max_err_px,triangles,draw_calls,textures,disk_mb,gpu_mb,cpu_ms_p50,cpu_ms_p95,cpu_ms_p99,gpu_ms_p50,"
+           "gpu_ms_p95,gpu_ms_p99,texels,misses";
+}
+
+std::string csvRow(const ModeResult& m) {
+    const double values[] = {m.frameMs.p50, m.frameMs.p95, m.frameMs.p99, m.speedup, m.error.psnrDb, m.error.rmse,
+                             m.error.ssim, m.maxErrDeg, m.maxErrPx, m.triangles, m.drawCalls,
+                             static_cast<double>(m.textures), m.diskMB, m.gpuMB, m.cpuMs.p50, m.cpuMs.p95, m.cpuMs.p99,
+                             m.gpuMs.p50, m.gpuMs.p95, m.gpuMs.p99, m.texels, static_cast<double>(m.misses)};
+    std::string row = m.mode + "," + num(m.alphaDeg) + "," + m.transition;
+    for (double v : values) row += "," + num(v);
+    return row;
+}
+
+std::string markdownReport(const BenchReport& report) {
+    std::ostringstream md;
+    for (const std::string& line : report.header) md << "- " << line << "\n";
+    md << "\n| # | mode | frame ms p50 / p95 / p99 | p99/p50 | CPU ms p50 | GPU ms p50 | speed-up | PSNR dB | RMSE | SSIM "
+          "| max err deg / px | triangles | draw calls | textures | texels M | disk MB | GPU MB |\n"
+       << "| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | "
+          "---: | ---: |\n";
+    int index = 1;
+    for (const ModeResult& m : report.modes) {
+        const double ratio = m.frameMs.p50 > 0 ? m.frameMs.p99 / m.frameMs.p50 : 0.0;
+        md << "| " << index++ << " | " << modeLabel(m) << " | " << num(m.frameMs.p50, 3) << " / " << num(m.frameMs.p95, 3)
+           << " / " << num(m.frameMs.p99, 3) << " | " << num(ratio, 3) << " | " << num(m.cpuMs.p50, 3) << " | "
+           << num(m.gpuMs.p50, 3) << " | " << num(m.speedup, 3) << " | " << num(m.error.psnrDb, 3) << " | "
+           << num(m.error.rmse, 3) << " | " << num(m.error.ssim, 3) << " | " << num(m.maxErrDeg, 3) << " / "
+           << num(m.maxErrPx, 3) << " | " << num(std::round(m.triangles), 7) << " | " << num(m.drawCalls, 3) << " | "
+           << m.textures << " | " << num(m.texels / 1e6, 3) << " | " << num(m.diskMB, 3) << " | " << num(m.gpuMB, 3)
+           << " |\n";
+    }
+    md << "\n";
+    for (const std::string& line : targetLines(report)) md << "- " << line << "\n";
+    return md.str();
+}
+
+std::vector<std::filesystem::path> writeReport(const std::filesystem::path& folder, const BenchReport& report) {
+    std::filesystem::create_directories(folder);
+    std::string csv = csvHeader() + "\n";
+    for (const ModeResult& m : report.modes) csv += csvRow(m) + "\n";
+    const std::vector<std::filesystem::path> files = {folder / "bench.csv", folder / "bench_screens.csv",
+                                                      folder / "bench.md", folder / "bench.png"};
+    writeText(files[0], csv);
+    writeText(files[1], screensCsv(report));
+    writeText(files[2], "# cavewall bench\n\n" + markdownReport(report) +
+                            "\n![error (RMSE, y) against median frame ms (x); red: Pareto front; numbers: # above]"
+                            "(bench.png)\n");
+    std::vector<TradeOff> points;
+    for (const ModeResult& m : report.modes) points.push_back({m.frameMs.p50, m.error.rmse});
+    std::vector<PlotPoint> plot;
+    for (std::size_t i = 0; i < points.size(); ++i) plot.push_back({points[i].time, points[i].error, static_cast<int>(i + 1), false});
+    for (std::size_t i : paretoFront(points)) plot[i].front = true;
+    scenes::writeImage(files[3], plotTradeOff(plot));
+    return files;
+}
+
+}  // namespace cavewall::tools

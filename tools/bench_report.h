@@ -1,0 +1,63 @@
+#pragma once
+// The results of `cavewall bench` and their writers: bench.csv, bench_screens.csv, bench.md
+// (also printed) and bench.png (tools/bench_plot.h).
+//
+// One ModeResult per mode of the run. Times are milliseconds per frame (all screens), over the
+// timed frames. Errors are against the full-geometry image of the same frame, eye and screen
+// (tools/bench_metrics.h), pooled over the compared frames. Counts are means per frame.
+
+#include "tools/bench_metrics.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace cavewall::tools {
+
+struct ScreenResult {
+    std::string screen;                // display screen name
+    ImageError error;
+};
+
+struct ModeResult {
+    std::string mode;                  // full | cells | near | walls
+    double alphaDeg = 0.0;             // walls modes; 0 otherwise
+    std::string transition = "none";   // blend | warp for walls modes
+    TimeStats frameMs, cpuMs, gpuMs;
+    double speedup = 1.0;              // full-geometry frame_ms_p50 / this mode's
+    ImageError error;                  // all screens
+    double maxErrDeg = 0.0;            // worst angular error of a drawn texture (0 without textures)
+    double maxErrPx = 0.0;             // the same in screen pixels
+    double triangles = 0.0, drawCalls = 0.0;
+    int textures = 0;                  // baked textures of the plan
+    double texels = 0.0;               // sum of their base-level texels
+    double diskMB = 0.0;               // bytes of the baked files / 1e6
+    double gpuMB = 0.0;                // peak resident texture MB (the pager's count)
+    long misses = 0;                   // wanted textures not resident, over the run
+    std::vector<ScreenResult> screens;
+};
+
+struct BenchReport {
+    std::vector<std::string> header;   // settings and machine, one line each
+    std::vector<ModeResult> modes;     // the full-geometry reference first
+};
+
+// The CSV header line (without newline), starting with the columns the issue requires.
+std::string csvHeader();
+// One CSV line (without newline); numbers in C locale, "inf" for infinite PSNR.
+std::string csvRow(const ModeResult& m);
+// Markdown: the header lines as a list, then one table row per mode.
+std::string markdownReport(const BenchReport& report);
+
+// The issue's targets read off the table: the fastest walls mode with PSNR >= 30 dB, its
+// speed-up (target >= 10), p99/p50 (target <= 1.3) and its median against the near limit's.
+std::vector<std::string> targetLines(const BenchReport& report);
+
+// Writes bench.csv, bench_screens.csv, bench.md and bench.png into `folder` (created).
+// Returns the files written.
+std::vector<std::filesystem::path> writeReport(const std::filesystem::path& folder, const BenchReport& report);
+
+// "walls a=10 blend", "full", ...: the mode's label in tables and the plot legend.
+std::string modeLabel(const ModeResult& m);
+
+}  // namespace cavewall::tools
