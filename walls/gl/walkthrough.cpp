@@ -88,9 +88,6 @@ Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescript
     if (walls && !walls->plan.walls.empty()) _walls = std::make_unique<WallRuntime>(std::move(*walls), description, options);
     if (_walls && options.transition == Transition::Warp)
         _warp = std::make_unique<WarpPass>(scene, _renderer.gpu(), options.render, display.depthRange().near);
-    GLuint query = 0;
-    glCreateQueries(GL_TIME_ELAPSED, 1, &query);
-    _timer = GlObject(query, [](GLuint id) { glDeleteQueries(1, &id); });
 }
 
 Walkthrough::~Walkthrough() = default;
@@ -353,14 +350,12 @@ FrameResult Walkthrough::renderFrame(const FrameInput& input) {
     else
         result.cell = scenes::findCell(_description.cells, result.eyeWorld);  // reported only
     const std::vector<int> objects = visibleObjects(cells);
-    glBeginQuery(GL_TIME_ELAPSED, _timer.id());
+    _timer.begin();
     drawViews(input, objects, walls, result);
-    glEndQuery(GL_TIME_ELAPSED);
+    _timer.end();
     result.cpuMs = msSince(start);
     glFinish();
-    GLuint64 elapsed = 0;
-    glGetQueryObjectui64v(_timer.id(), GL_QUERY_RESULT, &elapsed);
-    result.gpuMs = static_cast<double>(elapsed) * 1e-6;
+    result.gpuMs = _timer.waitMs();  // the GPU has finished: no stall
     result.frameMs = msSince(start);
     if (_context.windowCount() > 0) present();
     if (input.readImages) result.images = readFrame(_display, _targets);

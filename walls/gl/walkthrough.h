@@ -41,6 +41,7 @@
 #include "display/display.h"
 #include "display/gl/context.h"
 #include "display/gl/frame_images.h"
+#include "display/gl/gpu_timer.h"
 #include "display/gl/render_targets.h"
 #include "display/gl/scene_renderer.h"
 #include "scenes/scene.h"
@@ -177,7 +178,7 @@ private:
     std::unique_ptr<HandCursorPass> _cursor;
     std::unique_ptr<WarpPass> _warp;         // Transition::Warp with walls only
     std::vector<WarpWall> _warpWalls;        // this frame's warped walls
-    GlObject _timer;
+    GpuTimer _timer;                         // timestamp pairs: llvmpipe's first GL_TIME_ELAPSED is garbage
 };
 
 }  // namespace cavewall::gl
