@@ -34,7 +34,8 @@ double receiveFrame(Cluster& cluster, gl::FrameInput& input) {
 namespace {
 
 std::vector<std::uint8_t> statsBytes(const gl::FrameResult& r, double syncMs) {
-    const double values[6] = {r.frameMs, r.cpuMs, r.gpuMs, double(r.stats.triangles), double(r.stats.drawCalls), syncMs};
+    const double values[7] = {r.frameMs, r.cpuMs, r.gpuMs, double(r.stats.triangles), double(r.stats.drawCalls), syncMs,
+                              double(r.warpFallbacks)};
     std::vector<std::uint8_t> bytes(sizeof values);
     std::memcpy(bytes.data(), values, sizeof values);
     return bytes;
@@ -53,9 +54,10 @@ double combineFrame(Cluster& cluster, gl::FrameResult& r, double syncMs, const s
     if (cluster.rank() != 0) return syncMs;
     r.stats.triangles = 0;
     r.stats.drawCalls = 0;
+    r.warpFallbacks = 0;
     double slowestSync = 0.0;
     for (const auto& bytes : stats) {
-        double v[6];
+        double v[7];
         if (bytes.size() != sizeof v) cluster.abortAll("gathered malformed frame statistics");
         std::memcpy(v, bytes.data(), sizeof v);
         r.frameMs = std::max(r.frameMs, v[0]);
@@ -64,6 +66,7 @@ double combineFrame(Cluster& cluster, gl::FrameResult& r, double syncMs, const s
         r.stats.triangles += static_cast<std::size_t>(v[3]);
         r.stats.drawCalls += static_cast<int>(v[4]);
         slowestSync = std::max(slowestSync, v[5]);
+        r.warpFallbacks = std::max(r.warpFallbacks, static_cast<int>(v[6]));  // a wall counts once, on any rank
     }
     r.images.clear();
     for (const auto& bytes : images)

@@ -21,7 +21,8 @@ std::unique_ptr<Cluster> openCluster(const RunOptions& options);
 double receiveFrame(Cluster& cluster, gl::FrameInput& input);
 
 // The swap lock, then rank 0 gathers: frame/CPU/GPU times (max over ranks), triangles and draw
-// calls (sums) and the images of every rank's own `screens` (in screen order). Returns the
+// calls (sums), warp fallbacks (max: each rank counts the walls that fell back on its screens)
+// and the images of every rank's own `screens` (in screen order). Returns the
 // slowest rank's wait in milliseconds (broadcast + swap lock), `syncMs` being this rank's
 // broadcast wait.
 double combineFrame(Cluster& cluster, gl::FrameResult& result, double syncMs, const std::vector<int>& screens);
