@@ -34,8 +34,8 @@ double receiveFrame(Cluster& cluster, gl::FrameInput& input) {
 namespace {
 
 std::vector<std::uint8_t> statsBytes(const gl::FrameResult& r, double syncMs) {
-    const double values[7] = {r.frameMs, r.cpuMs, r.gpuMs, double(r.stats.triangles), double(r.stats.drawCalls), syncMs,
-                              double(r.warpFallbacks)};
+    const double values[9] = {r.frameMs, r.cpuMs, r.gpuMs, double(r.stats.triangles), double(r.stats.drawCalls), syncMs,
+                              double(r.warpFallbacks), r.maxErrorDeg, r.maxErrorPixels};
     std::vector<std::uint8_t> bytes(sizeof values);
     std::memcpy(bytes.data(), values, sizeof values);
     return bytes;
@@ -57,7 +57,7 @@ double combineFrame(Cluster& cluster, gl::FrameResult& r, double syncMs, const s
     r.warpFallbacks = 0;
     double slowestSync = 0.0;
     for (const auto& bytes : stats) {
-        double v[7];
+        double v[9];
         if (bytes.size() != sizeof v) cluster.abortAll("gathered malformed frame statistics");
         std::memcpy(v, bytes.data(), sizeof v);
         r.frameMs = std::max(r.frameMs, v[0]);
@@ -67,6 +67,8 @@ double combineFrame(Cluster& cluster, gl::FrameResult& r, double syncMs, const s
         r.stats.drawCalls += static_cast<int>(v[4]);
         slowestSync = std::max(slowestSync, v[5]);
         r.warpFallbacks = std::max(r.warpFallbacks, static_cast<int>(v[6]));  // a wall counts once, on any rank
+        r.maxErrorDeg = std::max(r.maxErrorDeg, v[7]);  // each rank measures the textures its screens show
+        r.maxErrorPixels = std::max(r.maxErrorPixels, v[8]);
     }
     r.images.clear();
     for (const auto& bytes : images)

@@ -21,7 +21,7 @@ std::unique_ptr<Cluster> openCluster(const RunOptions& options);
 double receiveFrame(Cluster& cluster, gl::FrameInput& input);
 
 // The swap lock, then rank 0 gathers: frame/CPU/GPU times (max over ranks), triangles and draw
-// calls (sums), warp fallbacks (max: each rank counts the walls that fell back on its screens)
+// calls (sums), warp fallbacks and angular errors (max: each rank counts the walls its screens show)
 // and the images of every rank's own `screens` (in screen order). Returns the
 // slowest rank's wait in milliseconds (broadcast + swap lock), `syncMs` being this rank's
 // broadcast wait.

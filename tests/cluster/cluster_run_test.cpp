@@ -107,6 +107,8 @@ std::vector<std::string> runArgs(const fs::path& out) {
 }
 
 TEST(ClusterRun, FourRanksRenderTheSameFramesAsOneProcess) {
+    fs::remove_all(kWork / "single");
+    fs::remove_all(kWork / "cluster");
     std::vector<std::string> single{CAVEWALL_EXE};
     for (const auto& a : runArgs(kWork / "single")) single.push_back(a);
     const Proc one = start(single, "single");
@@ -153,6 +155,7 @@ pid_t rankPid(int rank) {
 
 void expectEndsAllRanks(int signal, const char* message) {
     const fs::path out = kWork / (signal == SIGKILL ? "killed" : "stopped");
+    fs::remove_all(out);  // frames.csv must be this run's: rows appear once every rank renders
     std::vector<std::string> mpi{"mpirun", "--oversubscribe", "-np", "3", "-x", "CAVEWALL_TEST_TAG=" + kWork.string(),
                                  CAVEWALL_EXE};
     auto args = runArgs(out);

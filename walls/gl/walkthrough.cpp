@@ -310,6 +310,26 @@ void Walkthrough::drawViews(const FrameInput& input, const std::vector<int>& obj
 }
 
 // Steps 1-3 and 5 of the header: selection, paging, what each wall draws, the error.
+// Conservative: false only when all four corners of the wall lie outside one clip plane of
+// every view (x, y within ±w, in front of the eye).
+bool Walkthrough::wallInView(const FrameInput& input, int wall) const {
+    const display::ScreenQuad& q = _walls->setup.plan.walls[wall].quad;
+    const glm::dvec3 corners[4] = {q.lowerLeft, q.lowerRight, q.upperLeft, q.lowerRight + q.upperLeft - q.lowerLeft};
+    const glm::dmat4 caveFromWorld = glm::inverse(input.worldFromCave);
+    for (const display::ScreenView& view : _display.views(input.head)) {
+        if (std::find(_screens.begin(), _screens.end(), view.screen) == _screens.end()) continue;
+        const glm::dmat4 clipFromWorld = view.frustum.clipFromFrame() * caveFromWorld;
+        int outside[5] = {0, 0, 0, 0, 0};
+        for (const glm::dvec3& c : corners) {
+            const glm::dvec4 p = clipFromWorld * glm::dvec4(c, 1.0);
+            outside[0] += p.x < -p.w, outside[1] += p.x > p.w, outside[2] += p.y < -p.w, outside[3] += p.y > p.w;
+            outside[4] += p.w <= 0.0;
+        }
+        if (std::none_of(std::begin(outside), std::end(outside), [](int n) { return n == 4; })) return true;
+    }
+    return false;
+}
+
 std::vector<WallDraw> Walkthrough::selectWalls(const FrameInput& input, FrameResult& result, std::vector<bool>& cells) {
     const walls::FrameSelection selection = _walls->selector.select(result.eyeWorld);
     result.cell = selection.cell;
@@ -319,11 +339,19 @@ std::vector<WallDraw> Walkthrough::selectWalls(const FrameInput& input, FrameRes
             break;
         }
     cells = geometryMask(selection);
-    requestTextures(selection, result.eyeWorld);
+    // Walls outside every view this instance renders are neither paged nor drawn (a cluster
+    // rank pages only what its own screens show); they keep a row in walls.csv.
+    walls::FrameSelection seen = selection;
+    std::erase_if(seen.walls, [&](const walls::WallBlend& b) {
+        if (wallInView(input, b.wall)) return false;
+        result.walls.push_back(WallState{b.wall, {}, b.geometryWeight, false});
+        return true;
+    });
+    requestTextures(seen, result.eyeWorld);
     std::vector<WallDraw> draws;
     std::vector<int> morphCells;
     _warpWalls.clear();
-    for (const walls::WallBlend& selected : selection.walls) {
+    for (const walls::WallBlend& selected : seen.walls) {
         const walls::WallBlend b = _warp ? binaryBlend(selected) : selected;
         WallState state;
         auto draw = chooseWall(b, result.eyeWorld, state, cells);
