@@ -78,10 +78,21 @@ struct Walkthrough::WallRuntime {
     std::vector<Morph> morphs;
 };
 
+namespace {
+
+// Makes `context` current before any member touches GL: a bake that made (and dropped) its own
+// context, for one, leaves no context current on this thread.
+Context& madeCurrent(Context& context) {
+    context.makeCurrent();
+    return context;
+}
+
+}  // namespace
+
 Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescription& description,
                          const display::Display& display, Context& context, std::optional<WallSetup> walls,
                          WalkthroughOptions options, std::vector<int> screens)
-    : _scene(scene), _description(description), _display(display), _context(context), _options(options),
+    : _scene(scene), _description(description), _display(display), _context(madeCurrent(context)), _options(options),
       _screens(std::move(screens)), _targets(display, context), _renderer(scene, options.render) {
     if (_screens.empty())
         for (int s = 0; s < static_cast<int>(display.screens().size()); ++s) _screens.push_back(s);
@@ -369,6 +380,7 @@ std::vector<WallDraw> Walkthrough::selectWalls(const FrameInput& input, FrameRes
 
 FrameResult Walkthrough::renderFrame(const FrameInput& input) {
     const auto start = Clock::now();
+    _context.makeCurrent();  // callers may have used another context (a bake) in between
     FrameResult result;
     result.eyeWorld = glm::dvec3(input.worldFromCave * glm::dvec4(input.head.position, 1.0));
     std::vector<bool> cells(_description.cells.size(), true);
