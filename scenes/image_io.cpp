@@ -14,16 +14,6 @@ namespace cavewall::scenes {
 
 namespace {
 
-// A name in the same folder (so rename() is atomic) that keeps the extension, because OIIO
-// picks the writer from it. Unique per process and call, so parallel writers never collide.
-std::filesystem::path temporaryName(const std::filesystem::path& file) {
-    static std::atomic<unsigned> counter{0};
-    std::filesystem::path tmp = file;
-    tmp.replace_filename("." + file.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                         std::to_string(counter++) + file.extension().string());
-    return tmp;
-}
-
 void writeFile(const std::filesystem::path& file, const std::filesystem::path& real, const Image& image) {
     auto out = OIIO::ImageOutput::create(real.string());
     if (!out)
@@ -61,7 +51,7 @@ void writeImage(const std::filesystem::path& file, const Image& image) {
     std::error_code ec;
     if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
     if (ec) throw Error(file.parent_path().string() + ": cannot create folder (" + ec.message() + ")");
-    const std::filesystem::path tmp = temporaryName(file);
+    const std::filesystem::path tmp = temporarySibling(file);
     try {
         writeFile(tmp, file, image);
     } catch (...) {
@@ -117,6 +107,14 @@ std::vector<Image> readMipLevels(const std::filesystem::path& file) {
     in->geterror();  // seeking past the last level leaves an error message; it is the loop's end
     if (levels.empty()) throw Error(file.string() + ": expected at least one image, got none");
     return levels;
+}
+
+std::filesystem::path temporarySibling(const std::filesystem::path& file) {
+    static std::atomic<unsigned> counter{0};
+    std::filesystem::path tmp = file;
+    tmp.replace_filename("." + file.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                         std::to_string(counter++) + file.extension().string());
+    return tmp;
 }
 
 }  // namespace cavewall::scenes

@@ -13,6 +13,10 @@ namespace cavewall::scenes {
 // extension). Creates missing parent folders.
 void writeImage(const std::filesystem::path& file, const Image& image);
 
+// A temporary name beside `file` for an atomic write (same folder, so rename() is atomic), unique
+// per process and call, keeping the extension because OIIO picks the writer from it.
+std::filesystem::path temporarySibling(const std::filesystem::path& file);
+
 // Reads any image OIIO can decode into 8-bit RGBA (grey and RGB are expanded, alpha = 255).
 Image readImage(const std::filesystem::path& file);
 

@@ -19,15 +19,7 @@ namespace {
 const glm::ivec4 kRed{255, 0, 0, 255}, kGreen{0, 255, 0, 255}, kBlue{0, 0, 255, 255};
 const int kColumns[3] = {16, 32, 48};
 
-config::DisplayConfig oneScreen() {
-    config::DisplayConfig c;
-    c.name = "one";
-    c.screens.push_back({"screen", {-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}, {64, 64}, std::nullopt, {}});
-    c.viewer.near = 0.05;
-    c.viewer.far = INFINITY;
-    config::validateDisplayConfig(c, "test");
-    return c;
-}
+config::DisplayConfig oneScreen() { return testing::oneScreenDisplay(); }
 
 void addSquare(scenes::Scene& scene, glm::dvec3 centre, glm::vec4 color, scenes::Role role = scenes::Role::Content,
                scenes::AlphaMode mode = scenes::AlphaMode::Opaque) {

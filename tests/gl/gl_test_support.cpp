@@ -3,6 +3,7 @@
 #include "config/error.h"
 #include "scenes/image_io.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 
@@ -57,6 +58,16 @@ void expectMatchesGolden(const scenes::Image& actual, const std::string& name, s
     ADD_FAILURE() << "golden '" << name << "' differs: " << result.describe() << " (" << actual.width << " x "
                   << actual.height << " vs " << expected.width << " x " << expected.height << "); images in "
                   << out.string();
+}
+
+config::DisplayConfig oneScreenDisplay(int pixels, double near) {
+    config::DisplayConfig c;
+    c.name = "one";
+    c.screens.push_back({"screen", {-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}, {pixels, pixels}, std::nullopt, {}});
+    c.viewer.near = near;
+    c.viewer.far = INFINITY;
+    config::validateDisplayConfig(c, "test");
+    return c;
 }
 
 }  // namespace cavewall::testing

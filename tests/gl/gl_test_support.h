@@ -10,6 +10,7 @@
 // $CAVEWALL_TEST_OUTPUT/<name>/ in the build tree. CAVEWALL_UPDATE_GOLDENS=1 rewrites the golden
 // in the source tree instead of comparing; CI never sets it.
 
+#include "config/display_config.h"
 #include "display/gl/context.h"
 #include "scenes/image_compare.h"
 #include "scenes/scene.h"
@@ -41,5 +42,9 @@ void expectMatchesGolden(const scenes::Image& actual, const std::string& name,
 
 // The folder of the test display configurations (tests/gl in the source tree).
 std::filesystem::path testConfigFolder();
+
+// A one-screen display: a 2 m square at z = -1 facing +Z, `pixels` square, near `near`, infinite
+// far; an eye at the origin looks at its centre from 1 m.
+config::DisplayConfig oneScreenDisplay(int pixels = 64, double near = 0.05);
 
 }  // namespace cavewall::testing

@@ -19,15 +19,7 @@ namespace {
 const std::filesystem::path kReal = std::filesystem::path(CAVEWALL_SOURCE_DIR "/../shared/scenes-real");
 const display::HeadPose kEye{{0, 0, 0}, glm::dquat(1, 0, 0, 0)};
 
-config::DisplayConfig oneScreen() {
-    config::DisplayConfig c;
-    c.name = "one";
-    c.screens.push_back({"screen", {-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}, {128, 128}, std::nullopt, {}});
-    c.viewer.near = 0.01;
-    c.viewer.far = INFINITY;
-    config::validateDisplayConfig(c, "test");
-    return c;
-}
+config::DisplayConfig oneScreen() { return testing::oneScreenDisplay(128, 0.01); }
 
 glm::ivec4 pixel(const scenes::Image& image, std::size_t i) {
     const std::uint8_t* p = &image.rgba[i * 4];

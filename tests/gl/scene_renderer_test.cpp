@@ -20,15 +20,7 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
-config::DisplayConfig oneScreen() {
-    config::DisplayConfig c;
-    c.name = "one";
-    c.screens.push_back({"screen", {-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}, {64, 64}, std::nullopt, {}});
-    c.viewer.near = 0.05;
-    c.viewer.far = INFINITY;
-    config::validateDisplayConfig(c, "test");
-    return c;
-}
+config::DisplayConfig oneScreen() { return testing::oneScreenDisplay(); }
 
 const display::HeadPose kEyeAtOrigin{{0, 0, 0}, glm::dquat(1, 0, 0, 0)};
 

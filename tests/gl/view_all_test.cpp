@@ -11,15 +11,7 @@
 namespace cavewall::gl {
 namespace {
 
-config::DisplayConfig oneScreen() {
-    config::DisplayConfig c;
-    c.name = "one";
-    c.screens.push_back({"screen", {-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}, {64, 64}, std::nullopt, {}});
-    c.viewer.near = 0.05;
-    c.viewer.far = INFINITY;
-    config::validateDisplayConfig(c, "test");
-    return c;
-}
+config::DisplayConfig oneScreen() { return testing::oneScreenDisplay(); }
 
 scenes::Bounds box(glm::dvec3 min, glm::dvec3 max) {
     scenes::Bounds b;

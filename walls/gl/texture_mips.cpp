@@ -1,5 +1,7 @@
 #include "walls/gl/texture_mips.h"
 
+#include "scenes/image_io.h"
+
 #include "config/error.h"
 
 #include <OpenImageIO/imageio.h>
@@ -119,14 +121,6 @@ std::vector<scenes::Image> premultipliedMipChain(const scenes::Image& straight) 
 
 namespace {
 
-std::filesystem::path temporaryName(const std::filesystem::path& file) {
-    static std::atomic<unsigned> counter{0};
-    std::filesystem::path tmp = file;
-    tmp.replace_filename("." + file.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                         std::to_string(counter++) + file.extension().string());
-    return tmp;
-}
-
 // Tile by tile from zero-padded buffers: OIIO pads partial edge tiles with whatever memory it
 // has, which would make the file bytes (and so its hash) differ between identical bakes.
 bool writeTiles(OIIO::ImageOutput& out, const scenes::Image& l, int tile) {
@@ -190,7 +184,7 @@ void writeMipFile(const std::filesystem::path& file, const std::vector<scenes::I
                         std::to_string(levels[i].height));
     std::error_code ec;
     if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
-    const std::filesystem::path tmp = temporaryName(file);
+    const std::filesystem::path tmp = scenes::temporarySibling(file);
     try {
         writeLevels(tmp, file, levels, options);
     } catch (...) {
