@@ -1,5 +1,6 @@
 #include "config/json_reader.h"
 #include "display/projection_stability.h"
+#include "walls/stability.h"
 #include "display/warp.h"
 #include "tools/args.h"
 #include "tools/commands.h"
@@ -7,6 +8,7 @@
 #include "tools/bench_driver.h"
 #endif
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -39,14 +41,17 @@ const char* const kBenchUsage =
     "--stability  runs the stiff and extreme numerical cases (projection at eye distances\n"
     "             1e-9 ... 1e6 m, world offsets to 1e7 m, near/far ratios to 1e9 with reversed-Z,\n"
     "             1 mm and 1 km screens, the geometry warp's condition as the eye nears a\n"
-    "             wall plane) and prints, per case, the worst error of a naive float\n"
+    "             wall plane, blend weights exactly on zone borders, alpha toward 0 and 90\n"
+    "             degrees) and prints, per case, the worst error of a naive float\n"
     "             implementation and of cavewall's path against a long-double reference, the\n"
     "             tolerance and pass/fail. Exit code 1 when any case fails.\n";
 
 namespace {
 
 int runStability() {
-    const auto rows = display::projectionStability();
+    auto rows = display::projectionStability();
+    for (auto* cases : {walls::blendBorderCases, walls::alphaExtremeCases})
+        for (display::StabilityRow& r : cases()) rows.push_back(std::move(r));
     std::printf("| case | unit | naive float | cavewall | tolerance | warp condition | result |\n");
     std::printf("| --- | --- | ---: | ---: | ---: | ---: | --- |\n");
     int failed = 0;
@@ -54,7 +59,8 @@ int runStability() {
         failed += !r.pass();
         const bool fellBack = r.condition > display::kMaxWarpCondition;
         std::printf("| %s | %s | %s | %s | %s | %s | %s |\n", r.name.c_str(), r.unit.c_str(),
-                    config::formatNumber(r.floatError).c_str(), config::formatNumber(r.cavewallError).c_str(),
+                    std::isnan(r.floatError) ? "–" : config::formatNumber(r.floatError).c_str(),
+                    config::formatNumber(r.cavewallError).c_str(),
                     config::formatNumber(r.tolerance).c_str(), r.condition > 0 ? config::formatNumber(r.condition).c_str() : "",
                     !r.pass() ? "FAIL" : fellBack ? "pass (geometry fallback)" : "pass");
     }
