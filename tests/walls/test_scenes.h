@@ -2,6 +2,7 @@
 // Scene descriptions built in code for the walls tests.
 
 #include "scenes/scene_description.h"
+#include "walls/stability.h"
 
 #include <cmath>
 
@@ -9,19 +10,7 @@ namespace cavewall::walls::testing {
 
 // A 12 m x 20 m hall (x in [-6, 6], z in [-10, 10]) cut by one 3 m high virtual wall at z = 0
 // facing +z: cell 0 "front" (z > 0) and cell 1 "back" (z < 0).
-inline scenes::SceneDescription hall() {
-    scenes::SceneDescription d;
-    d.name = "hall";
-    d.cells.push_back({"front", {{6, 0}, {6, 10}, {-6, 10}, {-6, 0}}, 0.0});
-    d.cells.push_back({"back", {{6, -10}, {6, 0}, {-6, 0}, {-6, -10}}, 0.0});
-    scenes::VirtualWall w;
-    w.name = "middle";
-    w.lowerLeft = {-6, 0, 0}, w.lowerRight = {6, 0, 0}, w.upperLeft = {-6, 3, 0};
-    w.cells = {0, 1};
-    d.walls.push_back(w);
-    d.headHeightRange = {1.2, 2.0};
-    return d;
-}
+inline scenes::SceneDescription hall() { return referenceHall(); }
 
 // A 7 m wide, 3 m high virtual wall turned 30° about +Y, with a convex pentagon in front of
 // it (cell 0) and a triangle behind it (cell 1), neither aligned with the wall.
