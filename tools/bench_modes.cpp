@@ -20,7 +20,8 @@ bool compared(const ModeContext& c, long frame) { return frame % c.compareEvery 
 }  // namespace
 
 ModeAccumulator::ModeAccumulator(ModeResult mode, const display::Display& display)
-    : _mode(std::move(mode)), _screens(display.screens().size()) {
+    : _mode(std::move(mode)), _screens(display.screens().size()), _screenCpu(display.screens().size()),
+      _screenTriangles(display.screens().size()), _screenDrawCalls(display.screens().size()) {
     _mode.screens.clear();
     for (const auto& s : display.screens()) _mode.screens.push_back({s.name, {}});
 }
@@ -35,6 +36,11 @@ void ModeAccumulator::addFrame(const FrameCost& cost) {
     _mode.maxErrPx = std::max(_mode.maxErrPx, cost.errorPx);
     _mode.gpuMB = std::max(_mode.gpuMB, cost.residentMB);
     _mode.misses = std::max(_mode.misses, cost.misses);
+    for (std::size_t i = 0; i < cost.perScreen.size() && i < _screenCpu.size(); ++i) {
+        _screenCpu[i].push_back(cost.perScreen[i].cpuMs);
+        _screenTriangles[i] += static_cast<double>(cost.perScreen[i].triangles);
+        _screenDrawCalls[i] += cost.perScreen[i].drawCalls;
+    }
 }
 
 void ModeAccumulator::compare(const std::vector<gl::ScreenImage>& images, const std::vector<gl::ScreenImage>& reference) {
@@ -59,7 +65,12 @@ ModeResult ModeAccumulator::finish(double fullP50) const {
     m.drawCalls = _drawCalls / n;
     m.speedup = fullP50 > 0.0 && m.frameMs.p50 > 0.0 ? fullP50 / m.frameMs.p50 : 1.0;
     m.error = _overall.result();
-    for (std::size_t s = 0; s < _screens.size(); ++s) m.screens[s].error = _screens[s].result();
+    for (std::size_t s = 0; s < _screens.size(); ++s) {
+        m.screens[s].error = _screens[s].result();
+        m.screens[s].cpuMs = timeStats(_screenCpu[s]);
+        m.screens[s].triangles = _screenTriangles[s] / n;
+        m.screens[s].drawCalls = _screenDrawCalls[s] / n;
+    }
     return m;
 }
 
@@ -82,7 +93,7 @@ void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls
         gl::FrameResult r = walkthrough.renderFrame(in);
         acc.addFrame({r.frameMs, r.cpuMs, r.gpuMs, static_cast<double>(r.stats.triangles),
                       static_cast<double>(r.stats.drawCalls), r.maxErrorDeg, r.maxErrorPixels, r.pager.residentMB,
-                      r.pager.misses});
+                      r.pager.misses, r.perScreen});
         if (!in.readImages) continue;
         if (store) (*store)[in.frame] = std::move(r.images);
         else if (reference) acc.compare(r.images, reference->at(in.frame));
@@ -125,10 +136,19 @@ void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly
             cellObjects(c.scene, cellMask(selector.select(eye), c.description.cells.size(), nearOnly));
         gl::DrawFilter filter;
         filter.objects = &objects;
-        const gl::FrameStats stats = renderer.render(c.display.views(in.head), targets, in.worldFromCave, filter);
+        const std::vector<display::ScreenView> views = c.display.views(in.head);
+        const gl::FrameStats stats = renderer.render(views, targets, in.worldFromCave, filter);
         const double gpu = renderer.waitGpuMs();
-        if (cost) *cost = {msSince(start), stats.cpuMs, gpu, static_cast<double>(stats.triangles),
-                           static_cast<double>(stats.drawCalls)};
+        if (!cost) return;
+        *cost = {msSince(start), stats.cpuMs, gpu, static_cast<double>(stats.triangles),
+                 static_cast<double>(stats.drawCalls)};
+        cost->perScreen.assign(c.display.screens().size(), gl::ViewStats{});
+        for (std::size_t v = 0; v < stats.perView.size() && v < views.size(); ++v) {  // perView is in view order
+            gl::ViewStats& screen = cost->perScreen[views[v].screen];
+            screen.cpuMs += stats.perView[v].cpuMs;
+            screen.triangles += stats.perView[v].triangles;
+            screen.drawCalls += stats.perView[v].drawCalls;
+        }
     };
     for (long i = 0; i < std::min<long>(3, c.path.frames.size()); ++i) draw(c.path.frames[i], nullptr);
     for (const gl::FrameInput& in : c.path.frames) {

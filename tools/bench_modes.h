@@ -23,6 +23,7 @@ struct FrameCost {
     double errorDeg = 0.0, errorPx = 0.0;
     double residentMB = 0.0;
     long misses = 0;                    // cumulative, as the pager counts
+    std::vector<gl::ViewStats> perScreen;  // per display screen: CPU ms, triangles, draw calls
 };
 
 // Collects one mode's frames and comparisons; finish() fills the ModeResult.
@@ -41,6 +42,8 @@ private:
     double _triangles = 0.0, _drawCalls = 0.0;
     ErrorPool _overall;
     std::vector<ErrorPool> _screens;
+    std::vector<std::vector<double>> _screenCpu;           // per screen, per frame
+    std::vector<double> _screenTriangles, _screenDrawCalls;  // per screen, summed over frames
 };
 
 // Everything a mode run needs; the context is current.

@@ -17,6 +17,8 @@ namespace cavewall::tools {
 struct ScreenResult {
     std::string screen;                // display screen name
     ImageError error;
+    TimeStats cpuMs;                   // wall-clock CPU ms of the screen's views per frame
+    double triangles = 0.0, drawCalls = 0.0;  // means per frame
 };
 
 struct ModeResult {

@@ -69,7 +69,21 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     EXPECT_EQ(rows, expected);
     EXPECT_TRUE(fs::is_regular_file(out / "bench.png"));
     EXPECT_TRUE(fs::is_regular_file(out / "bench.md"));
-    EXPECT_TRUE(fs::is_regular_file(out / "bench_screens.csv"));
+    // Per screen: every mode times and counts each of cave4's four screens.
+    std::ifstream screens(out / "bench_screens.csv");
+    ASSERT_TRUE(std::getline(screens, line));
+    const std::vector<std::string> columns = split(line);
+    ASSERT_EQ(columns[7], "cpu_ms_p50");
+    ASSERT_EQ(columns[10], "triangles");
+    int screenRows = 0;
+    while (std::getline(screens, line)) {
+        const auto f = split(line);
+        ASSERT_EQ(f.size(), columns.size()) << line;
+        EXPECT_GT(std::strtod(f[7].c_str(), nullptr), 0.0) << line;   // every screen was drawn
+        EXPECT_TRUE(std::isfinite(std::strtod(f[10].c_str(), nullptr))) << line;
+        ++screenRows;
+    }
+    EXPECT_EQ(screenRows, 9 * 4);
 }
 
 TEST(BenchSceneCli, BadInputIsAClearError) {

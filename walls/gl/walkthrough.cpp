@@ -302,8 +302,11 @@ void Walkthrough::drawViews(const FrameInput& input, const std::vector<int>& obj
     _renderer.beginFrame(_targets, _screens);
     DrawFilter filter;
     filter.objects = &objects;
+    result.perScreen.assign(_display.screens().size(), ViewStats{});
     for (const display::ScreenView& view : _display.views(input.head)) {
         if (!rendered(view.screen)) continue;
+        const auto viewStart = Clock::now();
+        const FrameStats before = result.stats;
         _targets.bind(view.screen, RenderTargets::imageOf(view.pass));
         const ViewStats geometry = _renderer.renderView(view, input.worldFromCave, filter);
         result.stats.drawCalls += geometry.drawCalls;
@@ -315,6 +318,10 @@ void Walkthrough::drawViews(const FrameInput& input, const std::vector<int>& obj
             if (!_cursor) _cursor = std::make_unique<HandCursorPass>();
             _cursor->draw(*input.hand, view.frustum, result.stats);
         }
+        ViewStats& screen = result.perScreen[view.screen];
+        screen.cpuMs += msSince(viewStart);
+        screen.triangles += result.stats.triangles - before.triangles;
+        screen.drawCalls += result.stats.drawCalls - before.drawCalls;
     }
     glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

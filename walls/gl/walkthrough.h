@@ -125,6 +125,10 @@ struct FrameResult {
     int warpFallbacks = 0;                   // Transition::Warp: walls drawn as geometry because
                                              // their warp was ill-conditioned (eye near the plane)
     std::vector<WallState> walls;
+    // Per display screen (index = screen), summed over its eyes: wall-clock CPU ms of its views
+    // (geometry, walls, cursor), triangles and draw calls. Screens this instance does not
+    // render stay zero.
+    std::vector<ViewStats> perScreen;
     std::vector<ScreenImage> images;         // when FrameInput::readImages
 };
 
