@@ -48,21 +48,7 @@ void writeImage(const std::filesystem::path& file, const Image& image) {
         throw Error(file.string() + ": cannot write image '" + image.name + "' (expected " +
                     std::to_string(image.width) + " x " + std::to_string(image.height) +
                     " RGBA pixels, got " + std::to_string(image.rgba.size()) + " bytes)");
-    std::error_code ec;
-    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
-    if (ec) throw Error(file.parent_path().string() + ": cannot create folder (" + ec.message() + ")");
-    const std::filesystem::path tmp = temporarySibling(file);
-    try {
-        writeFile(tmp, file, image);
-    } catch (...) {
-        std::filesystem::remove(tmp, ec);
-        throw;
-    }
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        throw Error(file.string() + ": cannot replace file (" + ec.message() + ")");
-    }
+    writeAtomically(file, [&](const std::filesystem::path& tmp) { writeFile(tmp, file, image); });
 }
 
 Image readImage(const std::filesystem::path& file) {
@@ -109,12 +95,35 @@ std::vector<Image> readMipLevels(const std::filesystem::path& file) {
     return levels;
 }
 
+namespace {
+
 std::filesystem::path temporarySibling(const std::filesystem::path& file) {
     static std::atomic<unsigned> counter{0};
     std::filesystem::path tmp = file;
     tmp.replace_filename("." + file.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
                          std::to_string(counter++) + file.extension().string());
     return tmp;
+}
+
+}  // namespace
+
+void writeAtomically(const std::filesystem::path& file,
+                     const std::function<void(const std::filesystem::path& temporary)>& write) {
+    std::error_code ec;
+    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
+    if (ec) throw Error(file.parent_path().string() + ": cannot create folder (" + ec.message() + ")");
+    const std::filesystem::path tmp = temporarySibling(file);
+    try {
+        write(tmp);
+    } catch (...) {
+        std::filesystem::remove(tmp, ec);
+        throw;
+    }
+    std::filesystem::rename(tmp, file, ec);
+    if (ec) {
+        std::filesystem::remove(tmp, ec);
+        throw Error(file.string() + ": cannot replace the file (" + ec.message() + ")");
+    }
 }
 
 }  // namespace cavewall::scenes

@@ -5,6 +5,7 @@
 #include "scenes/scene.h"
 
 #include <filesystem>
+#include <functional>
 #include <vector>
 
 namespace cavewall::scenes {
@@ -13,9 +14,12 @@ namespace cavewall::scenes {
 // extension). Creates missing parent folders.
 void writeImage(const std::filesystem::path& file, const Image& image);
 
-// A temporary name beside `file` for an atomic write (same folder, so rename() is atomic), unique
-// per process and call, keeping the extension because OIIO picks the writer from it.
-std::filesystem::path temporarySibling(const std::filesystem::path& file);
+// Writes `file` atomically: `write` fills a temporary file beside it (same folder, so rename() is
+// atomic; unique per process and call; same extension, because OIIO picks the writer from it),
+// which then replaces `file`. Creates missing parent folders. On any failure the temporary file
+// is removed and the error rethrown; a failed rename throws Error naming `file`.
+void writeAtomically(const std::filesystem::path& file,
+                     const std::function<void(const std::filesystem::path& temporary)>& write);
 
 // Reads any image OIIO can decode into 8-bit RGBA (grey and RGB are expanded, alpha = 255).
 Image readImage(const std::filesystem::path& file);

@@ -23,7 +23,11 @@ ModeAccumulator::ModeAccumulator(ModeResult mode, const display::Display& displa
     : _mode(std::move(mode)), _screens(display.screens().size()), _screenCpu(display.screens().size()),
       _screenTriangles(display.screens().size()), _screenDrawCalls(display.screens().size()) {
     _mode.screens.clear();
-    for (const auto& s : display.screens()) _mode.screens.push_back({s.name, {}});
+    for (const auto& s : display.screens()) {
+        ScreenResult screen;
+        screen.screen = s.name;
+        _mode.screens.push_back(std::move(screen));
+    }
 }
 
 void ModeAccumulator::addFrame(const FrameCost& cost) {
@@ -140,8 +144,12 @@ void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly
         const gl::FrameStats stats = renderer.render(views, targets, in.worldFromCave, filter);
         const double gpu = renderer.waitGpuMs();
         if (!cost) return;
-        *cost = {msSince(start), stats.cpuMs, gpu, static_cast<double>(stats.triangles),
-                 static_cast<double>(stats.drawCalls)};
+        *cost = FrameCost{};
+        cost->frameMs = msSince(start);
+        cost->cpuMs = stats.cpuMs;
+        cost->gpuMs = gpu;
+        cost->triangles = static_cast<double>(stats.triangles);
+        cost->drawCalls = static_cast<double>(stats.drawCalls);
         cost->perScreen.assign(c.display.screens().size(), gl::ViewStats{});
         for (std::size_t v = 0; v < stats.perView.size() && v < views.size(); ++v) {  // perView is in view order
             gl::ViewStats& screen = cost->perScreen[views[v].screen];

@@ -1,12 +1,12 @@
 #include "walls/bake_manifest.h"
 
 #include "config/json_reader.h"
+#include "scenes/image_io.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <fstream>
-#include <unistd.h>
 
 namespace cavewall::walls {
 
@@ -92,20 +92,12 @@ BakeManifest readManifest(const std::filesystem::path& folder) {
 }
 
 void writeFileAtomically(const std::filesystem::path& file, std::string_view bytes) {
-    std::filesystem::create_directories(file.parent_path().empty() ? "." : file.parent_path());
-    const auto temp = file.string() + ".tmp." + std::to_string(::getpid());
-    {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    scenes::writeAtomically(file, [&](const std::filesystem::path& tmp) {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
         out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
         out.flush();
-        if (!out) throw Error(temp + ": write failed (disk full or no permission?)");
-    }
-    std::error_code ec;
-    std::filesystem::rename(temp, file, ec);
-    if (ec) {
-        std::filesystem::remove(temp, ec);
-        throw Error(file.string() + ": cannot replace the file: " + ec.message());
-    }
+        if (!out) throw Error(tmp.string() + ": write failed (disk full or no permission?)");
+    });
 }
 
 void writeManifest(const std::filesystem::path& folder, const BakeManifest& manifest) {

@@ -55,7 +55,7 @@ BakeManifest manifestFromJson(std::string_view text, const std::string& source);
 BakeManifest readManifest(const std::filesystem::path& folder);
 // Writes <folder>/manifest.json atomically.
 void writeManifest(const std::filesystem::path& folder, const BakeManifest& manifest);
-// Writes bytes to `file` atomically (temporary file in the same folder, then rename).
+// Writes bytes to `file` atomically (scenes::writeAtomically).
 void writeFileAtomically(const std::filesystem::path& file, std::string_view bytes);
 
 // True when the texture's file exists with the recorded size and hash.

@@ -34,7 +34,10 @@ ModeResult sample(std::string mode, double alpha, double p50, double rmse) {
     m.error.rmse = rmse;
     m.error.mse = rmse * rmse;
     m.error.psnrDb = rmse > 0 ? -20 * std::log10(rmse) : std::numeric_limits<double>::infinity();
-    m.screens = {{"front", m.error}};
+    ScreenResult front;
+    front.screen = "front";
+    front.error = m.error;
+    m.screens = {front};
     return m;
 }
 

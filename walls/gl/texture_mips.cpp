@@ -182,20 +182,7 @@ void writeMipFile(const std::filesystem::path& file, const std::vector<scenes::I
             throw Error(file.string() + ": MIP level " + std::to_string(i) + ": expected half the size of level " +
                         std::to_string(i - 1) + ", got " + std::to_string(levels[i].width) + " x " +
                         std::to_string(levels[i].height));
-    std::error_code ec;
-    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
-    const std::filesystem::path tmp = scenes::temporarySibling(file);
-    try {
-        writeLevels(tmp, file, levels, options);
-    } catch (...) {
-        std::filesystem::remove(tmp, ec);
-        throw;
-    }
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        throw Error(file.string() + ": cannot replace the file (" + ec.message() + ")");
-    }
+    scenes::writeAtomically(file, [&](const std::filesystem::path& tmp) { writeLevels(tmp, file, levels, options); });
 }
 
 }  // namespace cavewall::walls

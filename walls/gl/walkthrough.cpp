@@ -330,11 +330,12 @@ void Walkthrough::drawViews(const FrameInput& input, const std::vector<int>& obj
 // Steps 1-3 and 5 of the header: selection, paging, what each wall draws, the error.
 // Conservative: false only when all four corners of the wall lie outside one clip plane of
 // every view (x, y within ±w, in front of the eye).
-bool Walkthrough::wallInView(const FrameInput& input, int wall) const {
+bool Walkthrough::wallInView(const std::vector<display::ScreenView>& views, const glm::dmat4& worldFromCave,
+                             int wall) const {
     const display::ScreenQuad& q = _walls->setup.plan.walls[wall].quad;
     const glm::dvec3 corners[4] = {q.lowerLeft, q.lowerRight, q.upperLeft, q.lowerRight + q.upperLeft - q.lowerLeft};
-    const glm::dmat4 caveFromWorld = glm::inverse(input.worldFromCave);
-    for (const display::ScreenView& view : _display.views(input.head)) {
+    const glm::dmat4 caveFromWorld = glm::inverse(worldFromCave);
+    for (const display::ScreenView& view : views) {
         if (std::find(_screens.begin(), _screens.end(), view.screen) == _screens.end()) continue;
         const glm::dmat4 clipFromWorld = view.frustum.clipFromFrame() * caveFromWorld;
         int outside[5] = {0, 0, 0, 0, 0};
@@ -360,8 +361,9 @@ std::vector<WallDraw> Walkthrough::selectWalls(const FrameInput& input, FrameRes
     // Walls outside every view this instance renders are neither paged nor drawn (a cluster
     // rank pages only what its own screens show); they keep a row in walls.csv.
     walls::FrameSelection seen = selection;
+    const std::vector<display::ScreenView> views = _display.views(input.head);
     std::erase_if(seen.walls, [&](const walls::WallBlend& b) {
-        if (wallInView(input, b.wall)) return false;
+        if (wallInView(views, input.worldFromCave, b.wall)) return false;
         result.walls.push_back(WallState{b.wall, {}, b.geometryWeight, false});
         return true;
     });

@@ -156,7 +156,7 @@ private:
     std::vector<int> visibleObjects(const std::vector<bool>& cells) const;
     std::vector<WallDraw> selectWalls(const FrameInput& input, FrameResult& result, std::vector<bool>& cells);
     void requestTextures(const walls::FrameSelection& selection, glm::dvec3 eyeWorld);
-    bool wallInView(const FrameInput& input, int wall) const;
+    bool wallInView(const std::vector<display::ScreenView>& views, const glm::dmat4& worldFromCave, int wall) const;
     std::optional<WallDraw> chooseWall(const walls::WallBlend& blend, glm::dvec3 eyeWorld, WallState& state,
                                        std::vector<bool>& cells);
     bool withinBound(const std::vector<std::pair<int, double>>& set, const walls::PlannedWall& wall,
