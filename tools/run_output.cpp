@@ -35,7 +35,7 @@ RunOutput::RunOutput(std::filesystem::path folder, const scenes::SceneDescriptio
     _frames = openCsv(_folder / "frames.csv",
                       "frame,t,head_x,head_y,head_z,world_x,world_y,world_z,cell,zone,frame_ms,cpu_ms,gpu_ms,"
                       "triangles,draw_calls,textures_resident,page_ins,misses,max_err_deg,max_err_px,fallbacks,sync_ms,warp_fallbacks\n");
-    _walls = openCsv(_folder / "walls.csv", "frame,wall,textures,geometry_weight,fallback\n");
+    _walls = openCsv(_folder / "walls.csv", "frame,wall,textures,geometry_weight,fallback,beyond,err_deg\n");
 }
 
 RunOutput::~RunOutput() {
@@ -60,8 +60,8 @@ void RunOutput::writeFrame(long frame, double t, glm::dvec3 head, const gl::Fram
             textures += (textures.empty() ? "" : ";") + std::to_string(id) + ":" + exact(weight);
         const std::string name = s.wall < static_cast<int>(_description.walls.size()) ? _description.walls[s.wall].name
                                                                                        : std::to_string(s.wall);
-        std::fprintf(_walls, "%ld,%s,%s,%s,%d\n", frame, name.c_str(), textures.c_str(),
-                     exact(s.geometryWeight).c_str(), s.fallback ? 1 : 0);
+        std::fprintf(_walls, "%ld,%s,%s,%s,%d,%d,%.4f\n", frame, name.c_str(), textures.c_str(),
+                     exact(s.geometryWeight).c_str(), s.fallback ? 1 : 0, s.beyond ? 1 : 0, s.errorDeg);
     }
     if (std::ferror(_frames) || std::ferror(_walls)) throw Error(_folder.string() + ": writing the CSV files failed");
 }

@@ -93,9 +93,32 @@ FrameSelection FrameSelector::select(glm::dvec3 eye) const {
         }
         f.walls.push_back(std::move(w));
     }
+    addBeyond(eye, f);
     std::sort(f.geometryCells.begin(), f.geometryCells.end());
     f.geometryCells.erase(std::unique(f.geometryCells.begin(), f.geometryCells.end()), f.geometryCells.end());
     return f;
+}
+
+void FrameSelector::addBeyond(glm::dvec3 eye, FrameSelection& f) const {
+    const std::vector<int> neighbours(f.geometryCells.begin() + 1, f.geometryCells.end());
+    auto drawn = [&](int c) { return std::find(f.geometryCells.begin(), f.geometryCells.end(), c) != f.geometryCells.end(); };
+    std::vector<int> added;
+    for (int g : neighbours) {
+        const glm::dvec2 nearest = closestPointConvex(_description.cells[g].region, {eye.x, eye.z});
+        for (int i = 0; i < int(_plan.sides.size()); ++i) {
+            const WallSide& side = _plan.sides[i];
+            const auto& cells = _plan.walls[side.wall].cells;
+            const int behind = cells[0] == g ? cells[1] : cells[0];
+            if (side.cell != g || drawn(behind)) continue;
+            // Facing: the eye is on the neighbour's side of the wall's plane.
+            if (glm::dot(glm::dvec2(eye.x, eye.z) - side.origin, side.inward) <= 0.0) continue;
+            WallBlend w = blendAt(i, nearest);
+            w.zone = -1;
+            if (w.geometryWeight > 0.0) added.push_back(behind);
+            f.beyond.push_back(std::move(w));
+        }
+    }
+    f.geometryCells.insert(f.geometryCells.end(), added.begin(), added.end());
 }
 
 }  // namespace cavewall::walls

@@ -38,6 +38,12 @@ struct WallBlend {
 struct FrameSelection {
     int cell = -1;                    // the viewer's cell, -1 outside every cell (all geometry)
     std::vector<WallBlend> walls;     // every wall bounding the cell
+    // The far walls of the neighbours drawn as geometry (the cell behind a wall in its geometry
+    // or blend zone): what lies beyond them, selected as if the eye stood at the nearest point
+    // of that neighbour (the eye is outside it, so no zone holds it). Only walls the eye faces
+    // and whose cell behind is not drawn as geometry; a far wall in its own geometry zone adds
+    // its cell behind, one level only.
+    std::vector<WallBlend> beyond;
     std::vector<int> geometryCells;   // cells drawn as geometry this frame, sorted
     bool allGeometry() const { return cell < 0; }
 };
@@ -63,6 +69,7 @@ private:
         std::vector<Core> cores;
     };
     SideCores buildSide(const WallSide& side) const;
+    void addBeyond(glm::dvec3 eye, FrameSelection& f) const;
 
     const Plan& _plan;
     const VisibilityTable& _table;

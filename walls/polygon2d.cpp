@@ -1,5 +1,7 @@
 #include "walls/polygon2d.h"
 
+#include <algorithm>
+
 #include <cmath>
 
 namespace cavewall::walls {
@@ -64,6 +66,19 @@ bool containsConvex(const Polygon2& polygon, glm::dvec2 p, double tolerance) {
         if (side < -tolerance) return false;
     }
     return true;
+}
+
+glm::dvec2 closestPointConvex(const Polygon2& polygon, glm::dvec2 p) {
+    if (polygon.empty() || containsConvex(polygon, p, 0.0)) return p;
+    glm::dvec2 best = polygon[0];
+    double bestDistance = glm::length(p - best);
+    for (std::size_t i = 0, n = polygon.size(); i < n; ++i) {
+        const glm::dvec2 a = polygon[i], e = polygon[(i + 1) % n] - a;
+        const double ee = glm::dot(e, e);
+        const glm::dvec2 q = ee > 0.0 ? a + std::clamp(glm::dot(p - a, e) / ee, 0.0, 1.0) * e : a;
+        if (const double d = glm::length(p - q); d < bestDistance) best = q, bestDistance = d;
+    }
+    return best;
 }
 
 bool isConvex(const Polygon2& polygon) {

@@ -27,6 +27,9 @@ glm::dvec2 centroid(const Polygon2& polygon);
 // True when `p` is inside or on the boundary (within `tolerance` metres) of convex `polygon`.
 bool containsConvex(const Polygon2& polygon, glm::dvec2 p, double tolerance = 1e-9);
 
+// The point of convex `polygon` nearest to `p` (`p` itself when inside); `p` for an empty one.
+glm::dvec2 closestPointConvex(const Polygon2& polygon, glm::dvec2 p);
+
 // True when the polygon is convex (either orientation) with a non-zero area.
 bool isConvex(const Polygon2& polygon);
 

@@ -114,5 +114,57 @@ TEST(FrameSelect, CellsAndGeometryFollowTheEye) {
     EXPECT_EQ(outside.geometryCells, (std::vector<int>{0, 1}));
 }
 
+// Three 10 m x 10 m cells in a row along z: A (z in [0, 10]), B ([-10, 0]), C ([-20, -10]).
+scenes::SceneDescription threeInARow() {
+    scenes::SceneDescription d;
+    d.name = "three";
+    d.cells.push_back({"A", {{-5, 10}, {5, 10}, {5, 0}, {-5, 0}}, 0.0});
+    d.cells.push_back({"B", {{-5, 0}, {5, 0}, {5, -10}, {-5, -10}}, 0.0});
+    d.cells.push_back({"C", {{-5, -10}, {5, -10}, {5, -20}, {-5, -20}}, 0.0});
+    for (int i = 0; i < 2; ++i) {
+        scenes::VirtualWall w;
+        w.name = i == 0 ? "A|B" : "B|C";
+        const double z = -10.0 * i;
+        w.lowerLeft = {-5, 0, z}, w.lowerRight = {5, 0, z}, w.upperLeft = {-5, 4, z};
+        w.cells = {i, i + 1};
+        d.walls.push_back(w);
+    }
+    d.headHeightRange = {1.3, 1.9};
+    return d;
+}
+
+TEST(FrameSelect, ANeighbourDrawnAsGeometryShowsWhatLiesBeyondItsFarWalls) {
+    const scenes::SceneDescription d = threeInARow();
+    PlanOptions o;
+    o.alphaDeg = 20.0;
+    const Plan plan = planZones(d, o);
+    const VisibilityTable table = computeVisibility(d);
+    const FrameSelector selector(plan, table, d);
+    // In A's geometry zone of A|B: B is geometry, and B|C shows the textures of B's zone
+    // nearest to the eye (B's side of A|B, straight ahead).
+    const FrameSelection near = selector.select({0.0, 1.7, 0.05});
+    ASSERT_EQ(near.cell, 0);
+    EXPECT_EQ(near.geometryCells, (std::vector<int>{0, 1}));
+    ASSERT_EQ(near.walls.size(), 1u);
+    EXPECT_EQ(near.walls[0].geometryWeight, 1.0);
+    ASSERT_EQ(near.beyond.size(), 1u);
+    const WallBlend& bc = near.beyond[0];
+    EXPECT_EQ(bc.wall, 1);
+    EXPECT_EQ(bc.geometryWeight, 0.0);  // 10 m from B|C: a texture zone of B
+    ASSERT_FALSE(bc.textures.empty());
+    double sum = 0.0;
+    for (const auto& [id, w] : bc.textures) sum += w;
+    EXPECT_NEAR(sum, 1.0, 1e-12);
+    // Exactly what an eye just inside B at the same spot would select for B|C.
+    const FrameSelection inB = selector.select({0.0, 1.7, -1e-6});
+    ASSERT_EQ(inB.cell, 1);
+    for (const WallBlend& w : inB.walls)
+        if (w.wall == 1) {
+            EXPECT_EQ(w.textures, bc.textures);
+        }
+    // Far from A|B nothing is drawn beyond: B is a texture.
+    EXPECT_TRUE(selector.select({0.0, 1.7, 9.0}).beyond.empty());
+}
+
 }  // namespace
 }  // namespace cavewall::walls

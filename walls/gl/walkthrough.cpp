@@ -143,6 +143,8 @@ void Walkthrough::requestTextures(const walls::FrameSelection& selection, glm::d
                 for (const auto& [id, weight] : w.selector.blendAt(side, eye + 1.5 * glm::dvec2(dx, dz)).textures)
                     soon.push_back(id);
     }
+    for (const walls::WallBlend& b : selection.beyond)
+        for (const auto& [id, weight] : b.textures) now.push_back(id);
     w.pager.request(now, soon);
     if (_options.synchronousPaging) w.pager.waitIdle();
     // One upload round per frame; synchronous paging uploads until nothing is left.
@@ -281,14 +283,17 @@ std::optional<WallDraw> Walkthrough::warpWall(const FrameInput& input, const wal
 
 void Walkthrough::measureError(glm::dvec3 eyeCave, FrameResult& result) const {
     double worst = 0.0;
-    for (const WallState& s : result.walls) {
+    for (WallState& s : result.walls) {
         const walls::PlannedWall& planned = _walls->setup.plan.walls[s.wall];
+        double wall = 0.0;
         for (const auto& [id, weight] : s.textures) {
             auto it = _walls->textures.find(id);
             if (weight <= 0.0 || it == _walls->textures.end()) continue;
-            worst = std::max(worst, walls::maxAngularError(result.eyeWorld, it->second->samplingPoint, planned.quad,
-                                                           planned.depthBehind));
+            wall = std::max(wall, walls::maxAngularError(result.eyeWorld, it->second->samplingPoint, planned.quad,
+                                                         planned.depthBehind));
         }
+        s.errorDeg = glm::degrees(wall);
+        worst = std::max(worst, wall);
     }
     result.maxErrorDeg = glm::degrees(worst);
     for (int screen : _screens)
@@ -362,11 +367,13 @@ std::vector<WallDraw> Walkthrough::selectWalls(const FrameInput& input, FrameRes
     // rank pages only what its own screens show); they keep a row in walls.csv.
     walls::FrameSelection seen = selection;
     const std::vector<display::ScreenView> views = _display.views(input.head);
-    std::erase_if(seen.walls, [&](const walls::WallBlend& b) {
+    auto outOfView = [&](const walls::WallBlend& b, bool beyond) {
         if (wallInView(views, input.worldFromCave, b.wall)) return false;
-        result.walls.push_back(WallState{b.wall, {}, b.geometryWeight, false});
+        result.walls.push_back(WallState{b.wall, {}, b.geometryWeight, false, beyond});
         return true;
-    });
+    };
+    std::erase_if(seen.walls, [&](const walls::WallBlend& b) { return outOfView(b, false); });
+    std::erase_if(seen.beyond, [&](const walls::WallBlend& b) { return outOfView(b, true); });
     requestTextures(seen, result.eyeWorld);
     std::vector<WallDraw> draws;
     std::vector<int> morphCells;
@@ -377,6 +384,14 @@ std::vector<WallDraw> Walkthrough::selectWalls(const FrameInput& input, FrameRes
         auto draw = chooseWall(b, result.eyeWorld, state, cells);
         if (_warp) draw = warpWall(input, b, state, draw, cells, morphCells, result);
         if (draw) draws.push_back(*draw);
+        result.walls.push_back(std::move(state));
+    }
+    // Beyond a neighbour drawn as geometry: its far walls, faded like any other (no warp).
+    for (const walls::WallBlend& selected : seen.beyond) {
+        WallState state;
+        if (auto draw = chooseWall(_warp ? binaryBlend(selected) : selected, result.eyeWorld, state, cells))
+            draws.push_back(*draw);
+        state.beyond = true;
         result.walls.push_back(std::move(state));
     }
     // A morphing wall's cell behind is drawn by the warp pass only.

@@ -106,6 +106,9 @@ struct WallState {
     std::vector<std::pair<int, double>> textures;  // drawn (texture id, weight)
     double geometryWeight = 0.0;             // weight of the cell behind as geometry
     bool fallback = false;                   // wanted textures missing: previous or geometry drawn
+    bool beyond = false;                     // a far wall of a neighbour drawn as geometry
+                                             // (FrameSelection::beyond): not covered by alpha
+    double errorDeg = 0.0;                   // exact worst angular error of its drawn textures
 };
 
 struct FrameResult {
