@@ -1,15 +1,20 @@
 // The generated production hall. Layout (top view, x right, z down; metres):
 //
-//   z=-20 +-------------+-------------+-------------+
-//         |             |      B      |      D      |
-//         |      A      |-------------+-------------|  z = 0: virtual walls B|C and D|E
-//         |             |      C      |      E      |
-//   z=+20 +-------------+-------------+-------------+
-//        x=-40        x=-12         x=12          x=40
+//   z=-20  +----+----+----+----+----+----+----+----+
+//          | N1 | N2 | N3 | N4 | N5 | N6 | N7 | N8 |   machine row z = -17, aisle z = -10
+//   z=-7.2 +----+----+----+----+----+----+----+----+
+//          | M1 | M2 | M3 | M4 | M5 | M6 | M7 | M8 |   machine rows z = -3 and 3, conveyors
+//   z=7.2  +----+----+----+----+----+----+----+----+
+//          | S1 | S2 | S3 | S4 | S5 | S6 | S7 | S8 |   aisle z = 10, machine row z = 17
+//   z=+20  +----+----+----+----+----+----+----+----+
+//         x=-40                                   x=40
 //
-// Machine rows run along x at z = -16, -4, 4, 16 with aisles at z = -10 and 10 (the walk path)
-// and cross aisles at x = -26 and 26; cabinets line the long walls, pipe racks run overhead
-// along them, conveyors sit beside the rows next to z = 0, columns stand on z = 0.
+// 24 cells of 10 m (x) split by virtual walls at x = -30, -20, ..., 30 and z = +-7.2 (37
+// walls). The walk path runs along both aisles, in the light aisle cells (one machine row,
+// cabinets on the long wall, a pipe rack overhead), and crosses between them at x = +-37,
+// where the end cells leave a cross aisle. The middle cells hold the two inner rows and the
+// conveyors between them. Nothing crosses a virtual wall, so each object lies in one cell;
+// columns on z = 0 and roof beams are structure.
 #include "scenes/generate.h"
 #include "scenes/generate_parts.h"
 #include "scenes/primitives.h"
@@ -20,6 +25,7 @@ namespace cavewall::scenes {
 namespace {
 
 constexpr double kHalfX = 40.0, kHalfZ = 20.0, kHeight = 8.0, kEye = 1.7;
+constexpr double kOuterRow = 17.0, kInnerRow = 3.0, kConveyor = 1.0, kAisle = 10.0, kSplit = 7.2;
 
 enum Kind { Machine0, Machine1, Machine2, RobotKind, ConveyorKind, CabinetKind, RackKind, KindCount };
 
@@ -32,10 +38,9 @@ glm::dmat4 place(double x, double z, double yawDeg) {
     return glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(x, 0, z)), glm::radians(yawDeg), glm::dvec3(0, 1, 0));
 }
 
-// Station x positions per cell column, clear of the virtual walls (x = +-12) and cross aisles.
-const double kStationsA[] = {-36, -31, -21, -16};
-const double kStationsBC[] = {-7, 0, 7};
-const double kStationsDE[] = {16.5, 21.5, 31, 36};
+constexpr int kColumns = 8;  // cell columns, 10 m wide
+
+double columnCentre(int j) { return -35.0 + 10.0 * j; }
 
 void addStation(std::vector<Placement>& out, Rng& rng, double x, double rowZ, int& n) {
     const std::string id = std::to_string(n++);
@@ -43,29 +48,38 @@ void addStation(std::vector<Placement>& out, Rng& rng, double x, double rowZ, in
     const double towardsAisle = (std::abs(rowZ) > 10.0) == (rowZ < 0) ? 1.0 : -1.0;
     out.push_back({Machine0 + rng.below(3), place(x, rowZ, facingAisle ? 0.0 : 180.0), "machine-" + id});
     if (rng.chance(0.6))  // robots stand between the machine and the aisle
-        out.push_back({RobotKind, place(x + rng.uniform(-1.0, 1.0), rowZ + 2.6 * towardsAisle, rng.uniform(0, 360)),
+        out.push_back({RobotKind, place(x + rng.uniform(-0.5, 0.5), rowZ + 2.6 * towardsAisle, rng.uniform(0, 360)),
                        "robot-" + id});
     if (std::abs(rowZ) < 10.0 && rng.chance(0.5))  // conveyors between the inner rows and z = 0
-        out.push_back({ConveyorKind, place(x, rowZ > 0 ? 2.0 : -2.0, 0.0), "conveyor-" + id});
+        out.push_back({ConveyorKind, place(x, rowZ > 0 ? kConveyor : -kConveyor, 0.0), "conveyor-" + id});
 }
 
 std::vector<Placement> plantContent(Rng& rng) {
     std::vector<Placement> out;
     int n = 0;
-    for (double z : {-16.0, -4.0, 4.0, 16.0}) {
-        for (double x : kStationsA) addStation(out, rng, x, z, n);
-        for (double x : kStationsBC) addStation(out, rng, x, z, n);
-        for (double x : kStationsDE) addStation(out, rng, x, z, n);
+    // Machines reach 1 m across their row, robots 2.6 m + 1.45 m towards the aisle: the inner
+    // rows stay inside z = +-7.05, the outer rows outside +-12.95, clear of the walls at +-7.2.
+    for (double z : {-kOuterRow, -kInnerRow, kInnerRow, kOuterRow}) {
+        for (int j = 0; j < kColumns; ++j) {
+            const double c = columnCentre(j);
+            const bool endColumn = j == 0 || j == kColumns - 1, inner = std::abs(z) < 10.0;
+            // Stations at c +- 2.5 (machines reach 2.3 m, robots 2 m): clear of the walls at c +- 5.
+            // The end cells' inner rows keep only the station away from the cross aisle.
+            for (double dx : {-2.5, 2.5})
+                if (!(endColumn && inner && (j == 0) == (dx < 0))) addStation(out, rng, c + dx, z, n);
+        }
     }
     for (double side : {-1.0, 1.0}) {
-        // Cabinets against the long walls, backs to the wall, clear of x = +-12 and the racks' posts.
-        for (double x = -38.0; x <= 38.0; x += 3.0) {
-            if (std::abs(std::abs(x) - 12.0) < 1.5 || !rng.chance(0.55)) continue;
-            out.push_back({CabinetKind, place(x, side * (kHalfZ - 0.35), side < 0 ? 0.0 : 180.0),
-                           "cabinet-" + std::to_string(n++)});
+        for (int j = 0; j < kColumns; ++j) {
+            const double c = columnCentre(j);
+            // Cabinets against the long walls, backs to the wall; one 8 m pipe rack overhead.
+            for (double dx : {-3.75, -1.25, 1.25, 3.75}) {
+                if (!rng.chance(0.55)) continue;
+                out.push_back({CabinetKind, place(c + dx, side * (kHalfZ - 0.35), side < 0 ? 0.0 : 180.0),
+                               "cabinet-" + std::to_string(n++)});
+            }
+            out.push_back({RackKind, place(c, side * 18.5, 0.0), "pipe-rack-" + std::to_string(n++)});
         }
-        for (double x : {-35.5, -27.5, -19.5, -4.0, 4.0, 18.0, 26.0, 34.0})
-            out.push_back({RackKind, place(x, side * 18.5, 0.0), "pipe-rack-" + std::to_string(n++)});
     }
     return out;
 }
@@ -89,7 +103,7 @@ void plantStructure(Scene& s) {
     addStructure(s, makeTiledQuad({-hx, 0, hz}, {0, 0, -2 * hz}, {0, h, 0}, 10, 2, wallA, wallB), {id}, "wall-west");
     addStructure(s, makeTiledQuad({hx, 0, -hz}, {0, 0, 2 * hz}, {0, h, 0}, 10, 2, wallA, wallB), {id}, "wall-east");
     std::vector<glm::dmat4> columns, beams;
-    for (double x : {-34.0, -18.0, -4.0, 4.0, 18.0, 34.0})
+    for (double x = -30.0; x <= 30.0; x += 10.0)
         columns.push_back(glm::translate(id, glm::dvec3(x, 0.5 * kHeight, 0)));
     addStructure(s, makeBox({0.5f, h, 0.5f}, {0.7f, 0.7f, 0.72f, 1}), columns, "column");
     for (double x = -36.0; x <= 36.0; x += 8.0) beams.push_back(glm::translate(id, glm::dvec3(x, kHeight - 0.35, 0)));
@@ -114,16 +128,32 @@ SceneDescription plantDescription() {
     SceneDescription d;
     d.name = "plant";
     d.models.push_back(ModelFile{"plant.glb", glm::dmat4(1.0), 1.0, UpAxis::Y, false, {"structure/*"}});
-    d.cells = {{"A", rect(-40, -12, -20, 20), 0.0}, {"B", rect(-12, 12, -20, 0), 0.0}, {"C", rect(-12, 12, 0, 20), 0.0},
-               {"D", rect(12, 40, -20, 0), 0.0},    {"E", rect(12, 40, 0, 20), 0.0}};
-    d.walls = {wall("A|B", {-12, -20}, {-12, 0}, 0, 1, {-26, -10}), wall("A|C", {-12, 0}, {-12, 20}, 0, 2, {-26, 10}),
-               wall("B|C", {-12, 0}, {12, 0}, 1, 2, {0, -10}),       wall("B|D", {12, -20}, {12, 0}, 1, 3, {0, -10}),
-               wall("C|E", {12, 0}, {12, 20}, 2, 4, {0, 10}),        wall("D|E", {12, 0}, {40, 0}, 3, 4, {26, -10})};
+    const double rowEdges[4] = {-kHalfZ, -kSplit, kSplit, kHalfZ};
+    for (int r = 0; r < 3; ++r)
+        for (int j = 0; j < kColumns; ++j) {
+            const double x0 = -kHalfX + 10.0 * j;
+            d.cells.push_back({std::string(1, "NMS"[r]) + std::to_string(j + 1),
+                               rect(x0, x0 + 10.0, rowEdges[r], rowEdges[r + 1]), 0.0});
+        }
+    auto cellName = [&](int i) { return d.cells[i].name; };
+    for (int r = 0; r < 3; ++r)
+        for (int j = 0; j + 1 < kColumns; ++j) {  // x walls between neighbours in a row
+            const int a = r * kColumns + j, b = a + 1;
+            const double x = -kHalfX + 10.0 * (j + 1), z0 = rowEdges[r], z1 = rowEdges[r + 1];
+            d.walls.push_back(wall(cellName(a) + "|" + cellName(b), {x, z0}, {x, z1}, a, b, {x - 5.0, 0.5 * (z0 + z1)}));
+        }
+    for (int r = 0; r < 2; ++r)
+        for (int j = 0; j < kColumns; ++j) {  // z walls between the rows
+            const int a = r * kColumns + j, b = a + kColumns;
+            const double x0 = -kHalfX + 10.0 * j, z = rowEdges[r + 1];
+            d.walls.push_back(wall(cellName(a) + "|" + cellName(b), {x0, z}, {x0 + 10.0, z}, a, b, {x0 + 5.0, z - 1.0}));
+        }
     d.eyeHeight = kEye;
     d.headHeightRange = {1.2, 2.0};
-    // Along the aisles: A -> B -> D -> E -> C -> A, crossing z = 0 only in the cross aisles.
-    d.walkPath = {{-26, kEye, -10}, {0, kEye, -10}, {26, kEye, -10}, {26, kEye, 10},
-                  {0, kEye, 10},    {-26, kEye, 10}, {-26, kEye, -10}};
+    // Along the north aisle through N1 ... N8, across through M8, back along the south aisle,
+    // across through M1.
+    d.walkPath = {{-37, kEye, -kAisle}, {37, kEye, -kAisle}, {37, kEye, kAisle}, {-37, kEye, kAisle},
+                  {-37, kEye, -kAisle}};
     return d;
 }
 

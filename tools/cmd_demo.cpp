@@ -15,14 +15,15 @@ const char* const kDemoUsage =
     "\n"
     "The main job: generates the default plant (once; cached in $CAVEWALL_CACHE or, without it,\n"
     "in cache/ beside the cavewall executable), plans and bakes its virtual walls (cached too),\n"
-    "then walks cave4 along the plant's walk path at 5 m/s (crossing from cell A into B) with the\n"
+    "then walks cave4 along the plant's walk path at 5 m/s (along the north aisle from N1 into N3) with the\n"
     "simulated head tracker (sim:walk) for N frames (default 240), once with the walls and\n"
     "once with the full frustum-culled geometry. Each screen renders PX x PX pixels (default\n"
     "256, so the demo finishes in a few minutes on llvmpipe). Prints the median frame time of\n"
     "both runs, the speed-up and the worst angular error, and writes DIR (default demo-out):\n"
     "walls/ and geometry/ (CSV files, frames every 60 frames) and report.md with the fold-outs.\n"
-    "Headless without $DISPLAY, windowed otherwise. Walls are planned with alpha 20 degrees,\n"
-    "zones of at least 4 m and 2 texels per degree, to keep the bake short.\n";
+    "Headless without $DISPLAY, windowed otherwise. Walls are planned with alpha 30 degrees,\n"
+    "zones of at least 2 m and 2 texels per degree, to keep the bake short (about 660\n"
+    "textures: a few minutes on llvmpipe the first time).\n";
 
 namespace {
 
@@ -80,8 +81,8 @@ int runDemo(const std::vector<std::string>& words) {
     o.frames = args.integer("frames", 240, 1, 1000000);
     o.guidePace = 5.0;
     o.window = WindowMode::Auto;
-    o.plan.alphaDeg = 20.0;
-    o.plan.minZoneSize = 4.0;
+    o.plan.alphaDeg = 30.0;
+    o.plan.minZoneSize = 2.0;
     o.plan.pixelsPerDegree = 2.0;
     o.cache = cache / "bakes";
     o.saveEvery = 60;

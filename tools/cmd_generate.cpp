@@ -15,7 +15,8 @@ const char* const kGenerateUsage =
     "the same seed gives the same bytes. --triangles sets the minimum number of drawn triangles\n"
     "(default: 2000000 for the plant, 200000 for the house); smaller values give coarser round\n"
     "parts. Prints a summary and, as its last line, the path of scene.json.\n"
-    "  plant  an 80 m x 40 m production hall cut by six virtual walls into five cells A-E\n"
+    "  plant  an 80 m x 40 m production hall cut by 37 virtual walls into 24 cells (rows N, M, S\n"
+    "         of 8 cells 10 m wide; the walk path runs along the aisles in rows N and S)\n"
     "  house  six rooms with real walls; every doorway is a portal, every room a cell\n";
 
 int runGenerate(const std::vector<std::string>& words) {

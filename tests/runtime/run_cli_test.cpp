@@ -28,14 +28,16 @@ fs::path outputDir(const std::string& name) {
     return p;
 }
 
-// The small plant (20 k triangles), generated once into the test output folder.
+// The small plant (20 k triangles), generated into the test output folder once per test
+// program (never reused from an earlier build: the generator may have changed).
 fs::path smallPlant() {
     const char* dir = std::getenv("CAVEWALL_TEST_OUTPUT");
-    const fs::path folder = fs::path(dir ? dir : "/tmp") / "run_cli" / "plant20k";
-    if (!fs::exists(folder / "scene.json")) {
-        const CliResult r = runCavewall({"generate", "plant", "--triangles", "20000", "--out", folder.string()});
+    static const fs::path folder = [&] {
+        const fs::path f = fs::path(dir ? dir : "/tmp") / "run_cli" / "plant20k";
+        const CliResult r = runCavewall({"generate", "plant", "--triangles", "20000", "--out", f.string()});
         EXPECT_EQ(r.exitCode, 0) << r.err;
-    }
+        return f;
+    }();
     return folder / "scene.json";
 }
 
@@ -73,7 +75,7 @@ std::string slurp(const fs::path& file) {
 
 std::vector<std::string> wallRun(const fs::path& out, const std::string& tracker, long frames) {
     return {"run", "--scene", smallPlant().string(), "--display", testDisplay(), "--tracker", tracker,
-            "--frames", std::to_string(frames), "--alpha", "20", "--min-zone", "4", "--ppd", "2",
+            "--frames", std::to_string(frames), "--alpha", "20", "--min-zone", "3", "--ppd", "2",
             "--cache", cacheDir(), "--out", out.string()};
 }
 
@@ -91,14 +93,26 @@ TEST(RunCli, WritesFramesWallsAndImagesOnTheSmallPlant) {
         EXPECT_EQ(rows[0].count(column), 1u) << column;
     for (const auto& row : rows) {
         SCOPED_TRACE(row.at("frame"));
-        // The walk path starts in cell A; 40 frames at 3 m/s (2 m) stay in it.
-        EXPECT_EQ(row.at("cell"), "A");
-        // The planner proves every drawn texture within alpha = 20 degrees for every eye of its
-        // zones and head heights 1.2-2 m (sim:walk keeps the head in that range).
-        EXPECT_LE(std::stod(row.at("max_err_deg")), 20.0 + 1e-6);
+        // The walk path starts in cell N1 at x = -37; 40 frames at 3 m/s (2 m) stay in it.
+        EXPECT_EQ(row.at("cell"), "N1");
         EXPECT_GT(std::stoul(row.at("triangles")), 0u);
     }
-    // Guided along the path from (-26, 1.7, -10) towards +x at 3 m/s: 39 steps of 1/60 s move
+    // The planner proves every texture of the viewer's own walls within alpha = 20 degrees for
+    // every eye of its zones and head heights 1.2-2 m (sim:walk keeps the head in that range);
+    // walls beyond a neighbour drawn as geometry are measured, not bounded. The frame's
+    // max_err_deg is the worst of its walls.
+    std::map<std::string, double> worstOfFrame;
+    int own = 0;
+    for (const auto& wall : readCsv(out / "walls.csv")) {
+        const double err = std::stod(wall.at("err_deg"));
+        worstOfFrame[wall.at("frame")] = std::max(worstOfFrame[wall.at("frame")], err);
+        if (wall.at("beyond") == "1" || wall.at("textures").empty()) continue;
+        ++own;
+        EXPECT_LE(err, 20.0 + 1e-6) << "frame " << wall.at("frame") << ", wall " << wall.at("wall");
+    }
+    EXPECT_GT(own, 0) << "no textured wall of the viewer's own cell";
+    for (const auto& row : rows) EXPECT_NEAR(std::stod(row.at("max_err_deg")), worstOfFrame[row.at("frame")], 1e-3);
+    // Guided along the path from (-37, 1.7, -10) towards +x at 3 m/s: 39 steps of 1/60 s move
     // the CAVE 1.95 m; the head sways inside the CAVE by less than half a metre.
     EXPECT_NEAR(std::stod(rows.back().at("world_x")) - std::stod(rows.front().at("world_x")), 1.95, 0.5);
     EXPECT_FALSE(readCsv(out / "walls.csv").empty());

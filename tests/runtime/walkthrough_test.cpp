@@ -21,7 +21,7 @@ using Blend = walls::WallBlend;
 class WalkthroughTest : public GlTest {
 protected:
     const SmallPlant& plant = smallPlant();
-    const int wallAB = wallIndex(plant.walls, "A|B");
+    const int wallAB = wallIndex(plant.walls, "N2|N3");
 
     Blend blendOf(const walls::FrameSelection& s, int wall) const {
         for (const Blend& b : s.walls)
@@ -33,11 +33,11 @@ protected:
             if (s.wall == wall) return &s;
         return nullptr;
     }
-    // The first eye on the line z = -10, y = 1.7 from x = -26 towards the wall A|B (x = -12)
-    // whose blend for A|B satisfies `want`.
+    // The first eye on the line z = -10, y = 1.7 from x = -29.5 towards the wall N2|N3
+    // (x = -20) whose blend for N2|N3 satisfies `want`.
     std::optional<glm::dvec3> findEye(const std::function<bool(const Blend&)>& want) const {
         walls::FrameSelector selector(plant.walls.plan, plant.walls.table, plant.description);
-        for (double x = -26.0; x < -12.05; x += 0.05) {
+        for (double x = -29.5; x < -20.05; x += 0.05) {
             const glm::dvec3 eye(x, 1.7, -10.0);
             if (want(blendOf(selector.select(eye), wallAB))) return eye;
         }
@@ -49,15 +49,15 @@ TEST_F(WalkthroughTest, BothEyesAndAllScreensUseTheCyclopeanSelection) {
     ASSERT_GE(wallAB, 0);
     walls::FrameSelector selector(plant.walls.plan, plant.walls.table, plant.description);
     // Find a head position where the two eyes (0.2 m apart along world z, the CAVE facing +X)
-    // would select different weights on A|B: a frame that used per-eye selections would show it.
+    // would select different weights on N2|N3: a frame that used per-eye selections would show it.
     std::optional<glm::dvec3> head;
     for (double z = -19.0; z < -1.0 && !head; z += 0.05) {
-        const glm::dvec3 p(-20.0, 1.7, z);
+        const glm::dvec3 p(-26.0, 1.7, z);
         const Blend left = blendOf(selector.select(p - glm::dvec3(0, 0, 0.1)), wallAB);
         const Blend right = blendOf(selector.select(p + glm::dvec3(0, 0, 0.1)), wallAB);
         if (left.textures != right.textures) head = p;
     }
-    ASSERT_TRUE(head) << "no zone border along x = -20";
+    ASSERT_TRUE(head) << "no zone border along x = -26";
     const display::Display display = testDisplay(32, true, 0.2);
     gl::WalkthroughOptions options;
     options.synchronousPaging = true;
@@ -65,16 +65,20 @@ TEST_F(WalkthroughTest, BothEyesAndAllScreensUseTheCyclopeanSelection) {
     gl::FrameInput in;
     in.worldFromCave = cavePlacedAt(*head);
     const gl::FrameResult r = walkthrough.renderFrame(in);
-    // The frame's walls are exactly the selection of the cyclopean eye (the head position).
+    // The frame's walls are exactly the selection of the cyclopean eye (the head position):
+    // the cell's own walls and the far walls of neighbours drawn as geometry.
     EXPECT_NEAR(glm::distance(r.eyeWorld, *head), 0.0, 1e-9);
     const walls::FrameSelection expected = selector.select(*head);
-    ASSERT_EQ(r.walls.size(), expected.walls.size());
-    for (std::size_t i = 0; i < r.walls.size(); ++i) {
-        SCOPED_TRACE(i);
-        EXPECT_EQ(r.walls[i].wall, expected.walls[i].wall);
-        EXPECT_EQ(r.walls[i].textures, expected.walls[i].textures);
-        EXPECT_EQ(r.walls[i].geometryWeight, expected.walls[i].geometryWeight);
-        EXPECT_FALSE(r.walls[i].fallback);  // synchronous paging: everything resident
+    std::vector<Blend> all = expected.walls;
+    all.insert(all.end(), expected.beyond.begin(), expected.beyond.end());
+    ASSERT_EQ(r.walls.size(), all.size());
+    for (const Blend& want : all) {
+        SCOPED_TRACE(want.wall);
+        const gl::WallState* got = stateOf(r, want.wall);
+        ASSERT_NE(got, nullptr);
+        EXPECT_EQ(got->textures, want.textures);
+        EXPECT_EQ(got->geometryWeight, want.geometryWeight);
+        EXPECT_FALSE(got->fallback);  // synchronous paging: everything resident
     }
 }
 

@@ -32,26 +32,37 @@ void expectWalkPathClear(const GeneratedScene& g) {
     const auto& path = g.description.walkPath;
     for (std::size_t i = 0; i + 1 < path.size(); ++i)
         for (const Object& o : g.scene.objects)
-            if (o.role == Role::Content) EXPECT_FALSE(segmentHits(path[i], path[i + 1], o.worldBounds)) << o.name << " on leg " << i;
+            if (o.role == Role::Content) {
+                EXPECT_FALSE(segmentHits(path[i], path[i + 1], o.worldBounds)) << o.name << " on leg " << i;
+            }
 }
 
-TEST(GeneratePlant, DefaultHasTwoMillionTrianglesFiveCellsAndSharedMeshes) {
+TEST(GeneratePlant, DefaultHasTwoMillionTriangles24CellsAndSharedMeshes) {
     const GeneratedScene g = generatePlant({});
     EXPECT_GE(g.scene.triangleCount(), 2'000'000u);
     std::size_t stored = 0;
     for (const Mesh& m : g.scene.meshes) stored += m.triangleCount();
     EXPECT_LT(stored * 5, g.scene.triangleCount());  // instancing: far fewer stored than drawn
-    EXPECT_EQ(g.description.cells.size(), 5u);        // A-E, as in seed 000's Figure 8
-    EXPECT_EQ(g.description.walls.size(), 6u);
+    EXPECT_EQ(g.description.cells.size(), 24u);       // rows N, M, S of 8 cells, 10 m wide
+    EXPECT_EQ(g.description.walls.size(), 37u);
     for (const VirtualWall& w : g.description.walls) EXPECT_EQ(w.kind, WallKind::Virtual);
     const Bounds b = g.scene.bounds();
     EXPECT_GE(b.size().x, 60.0);
     EXPECT_GE(b.size().z, 30.0);
     EXPECT_GE(countRole(g.scene, Role::Structure), 6u + 6u);  // floor, roof, 4 walls, columns, beams
-    // The walk path visits every cell.
-    std::vector<bool> visited(5, false);
-    for (glm::dvec3 p : g.description.walkPath) visited[findCell(g.description.cells, p)] = true;
-    EXPECT_EQ(std::count(visited.begin(), visited.end(), true), 5);
+    // The walk path runs through every aisle cell (N1-N8, S1-S8) and the cross-aisle cells M1, M8.
+    std::vector<bool> visited(g.description.cells.size(), false);
+    const auto& path = g.description.walkPath;
+    for (std::size_t i = 0; i + 1 < path.size(); ++i)
+        for (double t = 0.0; t <= 1.0; t += 0.005)
+            if (const int c = findCell(g.description.cells, glm::mix(path[i], path[i + 1], t)); c >= 0) visited[c] = true;
+    EXPECT_EQ(std::count(visited.begin(), visited.end(), true), 18);
+    for (const char* name : {"N1", "N8", "S1", "S8", "M1", "M8"}) {
+        const auto it = std::find_if(g.description.cells.begin(), g.description.cells.end(),
+                                     [&](const Cell& c) { return c.name == name; });
+        ASSERT_NE(it, g.description.cells.end()) << name;
+        EXPECT_TRUE(visited[it - g.description.cells.begin()]) << name;
+    }
     for (glm::dvec3 p : g.description.walkPath) EXPECT_EQ(p.y, g.description.eyeHeight);
     expectWalkPathClear(g);
 }
@@ -104,7 +115,7 @@ TEST(Generate, SameSeedSameBytesOtherSeedOtherBytes) {
 
 TEST(Generate, WrittenScenesValidateAndLoadBackWithTheirCells) {
     struct Case { const char* name; GeneratedScene (*make)(const GenerateOptions&); std::size_t cells, walls; };
-    const Case cases[] = {{"plant", generatePlant, 5, 6}, {"house", generateHouse, 6, 6}};
+    const Case cases[] = {{"plant", generatePlant, 24, 37}, {"house", generateHouse, 6, 6}};
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
         GeneratedScene g = c.make({1, 20000});
@@ -122,7 +133,9 @@ TEST(Generate, WrittenScenesValidateAndLoadBackWithTheirCells) {
         // Structure is tagged through the "structure/*" node pattern.
         EXPECT_EQ(countRole(s, Role::Structure), countRole(g.scene, Role::Structure));
         for (const Object& o : s.objects)
-            if (o.role == Role::Content) EXPECT_GE(o.cell, 0) << o.name;
+            if (o.role == Role::Content) {
+                EXPECT_GE(o.cell, 0) << o.name;
+            }
     }
 }
 

@@ -1,5 +1,5 @@
 // `cavewall bake` end to end on a small generated plant (headless). The plan options keep the
-// bake short: alpha 30°, zones of at least 8 m and textures of at most 64 texels give 44
+// bake short: alpha 30°, zones of at least 5 m and textures of at most 64 texels give 64
 // textures (`cavewall plan` prints the same count for these options).
 #include "tests/cli/run_cli.h"
 #include "tests/gl/gl_test_support.h"
@@ -33,24 +33,24 @@ TEST_F(BakeCli, BakesAGeneratedPlantAndReusesItsCache) {
     const CliResult gen = runCavewall({"generate", "plant", "--triangles", "20000", "--out", (out / "plant").string()});
     ASSERT_EQ(gen.exitCode, 0) << gen.err;
     const std::vector<std::string> bake{"bake", (out / "plant").string(), "--cache", (out / "cache").string(),
-                                        "--alpha", "30", "--min-zone", "8", "--max-res", "64", "--jobs", "2"};
+                                        "--alpha", "30", "--min-zone", "5", "--max-res", "64", "--jobs", "2"};
     const CliResult first = runCavewall(bake);
     ASSERT_EQ(first.exitCode, 0) << first.err;
     // The last line is the bake folder, under the cache, holding a manifest of every texture.
     const std::filesystem::path folder = lastLine(first.out);
     EXPECT_EQ(folder.parent_path(), out / "cache");
     const walls::BakeManifest manifest = walls::readManifest(folder);
-    EXPECT_EQ(manifest.textures.size(), 44u);
+    EXPECT_EQ(manifest.textures.size(), 64u);
     EXPECT_EQ(manifest.alphaDeg, 30.0);
     for (const walls::BakedTexture& t : manifest.textures) EXPECT_TRUE(walls::textureFileValid(folder, t)) << t.file;
-    EXPECT_THAT(first.out, HasSubstr("bake: 44 textures: 44 baked, 0 reused"));
+    EXPECT_THAT(first.out, HasSubstr("bake: 64 textures: 64 baked, 0 reused"));
     // stderr is not a terminal here: plain progress lines, the last one complete.
-    EXPECT_THAT(first.err, HasSubstr("bake: 44/44 textures (44 baked, 0 reused)"));
+    EXPECT_THAT(first.err, HasSubstr("bake: 64/64 textures (64 baked, 0 reused)"));
     EXPECT_THAT(first.err, ::testing::Not(HasSubstr("\r")));
 
     const CliResult second = runCavewall(bake);
     ASSERT_EQ(second.exitCode, 0) << second.err;
-    EXPECT_THAT(second.out, HasSubstr("bake: 44 textures: 0 baked, 44 reused"));
+    EXPECT_THAT(second.out, HasSubstr("bake: 64 textures: 0 baked, 64 reused"));
     EXPECT_EQ(lastLine(second.out), folder.string());
 }
 
