@@ -40,8 +40,8 @@ struct BenchOptions {
     std::string tracker = "sim:walk";             // head source (input::makeTracker spec)
     long frames = 120;                            // frames of the eye path
     int compareEvery = 4;                         // frames between image comparisons, >= 1
-    std::vector<double> alphasDeg{2.5, 5, 10, 15, 20};
-    double transitionAlphaDeg = 10.0;             // plan used by the cells mode
+    std::vector<double> alphasDeg{10, 20, 30};
+    double transitionAlphaDeg = 20.0;             // warp and paged modes; plan of the cells modes
     walls::PlanOptions plan;                      // alphaDeg replaced per mode
     int bakeResolution = 512;                     // BakeSettings::maxResolution
     std::optional<std::filesystem::path> cache;   // bake cache (default: the baker's)

@@ -89,6 +89,7 @@ ImageError compareForBench(const scenes::Image& actual, const scenes::Image& ref
     e.rmse = c.rms_error;
     e.mse = e.rmse * e.rmse;
     e.psnrDb = psnrFromMse(e.mse);
+    e.meanPsnrDb = std::min(e.psnrDb, kQuantisationPsnrDb);
     e.ssim = ssimLuminance(actual, reference);
     return e;
 }
@@ -96,6 +97,7 @@ ImageError compareForBench(const scenes::Image& actual, const scenes::Image& ref
 void ErrorPool::add(const ImageError& e) {
     _mse += e.mse;
     _ssim += e.ssim;
+    _psnr += std::min(e.psnrDb, kQuantisationPsnrDb);
     ++_count;
 }
 
@@ -103,12 +105,14 @@ ImageError ErrorPool::result() const {
     ImageError e;
     if (_count == 0) {
         e.psnrDb = psnrFromMse(0.0);
+        e.meanPsnrDb = kQuantisationPsnrDb;
         return e;
     }
     e.mse = _mse / static_cast<double>(_count);
     e.rmse = std::sqrt(e.mse);
     e.psnrDb = psnrFromMse(e.mse);
     e.ssim = _ssim / static_cast<double>(_count);
+    e.meanPsnrDb = _psnr / static_cast<double>(_count);
     return e;
 }
 

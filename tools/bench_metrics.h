@@ -10,7 +10,10 @@
 //    C2 = (0.03 * 255)^2; the mean over windows. 1 for identical images. An image smaller than
 //    8 pixels on a side is one window.
 // Several comparisons pool by averaging the squared error (so RMSE/PSNR of a set is that of
-// all its pixels together) and the SSIM.
+// all its pixels together) and the SSIM. The mean PSNR of a set is the mean of its images'
+// PSNRs (the target), each capped at kQuantisationPsnrDb so that an image equal to its
+// reference counts as 8-bit quantisation noise rather than infinity; it is never below the
+// pooled PSNR (Jensen), which is the stricter figure.
 
 #include "scenes/scene.h"
 
@@ -24,7 +27,11 @@ struct ImageError {
     double rmse = 0.0;      // sqrt(mse)
     double psnrDb = 0.0;    // 20 log10(1 / rmse), +infinity when rmse == 0
     double ssim = 1.0;      // in [-1, 1], 1 = identical
+    double meanPsnrDb = 0.0;  // pooled sets: mean per-image PSNR (capped); one image: its capped PSNR
 };
+
+// PSNR of uniform 8-bit quantisation noise: 10 log10(12 * 255^2) = 58.9 dB.
+constexpr double kQuantisationPsnrDb = 58.92262;
 
 // Compares `actual` against `reference`; throws cavewall::Error naming both when the sizes
 // differ.
@@ -44,7 +51,7 @@ public:
     std::size_t count() const { return _count; }
 
 private:
-    double _mse = 0.0, _ssim = 0.0;
+    double _mse = 0.0, _ssim = 0.0, _psnr = 0.0;
     std::size_t _count = 0;
 };
 

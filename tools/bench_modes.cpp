@@ -3,6 +3,9 @@
 #include "display/gl/render_targets.h"
 #include "display/gl/scene_renderer.h"
 #include "walls/frame_select.h"
+#include "walls/gl/bake_key.h"
+#include "walls/gl/wall_pass.h"
+#include "walls/gl/wall_quad.h"
 
 #include <algorithm>
 #include <chrono>
@@ -31,6 +34,7 @@ ModeAccumulator::ModeAccumulator(ModeResult mode, const display::Display& displa
 }
 
 void ModeAccumulator::addFrame(const FrameCost& cost) {
+    _mode.frames.push_back({cost.frameMs, cost.triangles, cost.drawCalls});
     _frame.push_back(cost.frameMs);
     _cpu.push_back(cost.cpuMs);
     _gpu.push_back(cost.gpuMs);
@@ -68,6 +72,10 @@ ModeResult ModeAccumulator::finish(double fullP50) const {
     m.triangles = _triangles / n;
     m.drawCalls = _drawCalls / n;
     m.speedup = fullP50 > 0.0 && m.frameMs.p50 > 0.0 ? fullP50 / m.frameMs.p50 : 1.0;
+    std::vector<double> triangles;
+    for (const FrameSample& f : m.frames) triangles.push_back(f.triangles);
+    const TimeStats load = timeStats(triangles);
+    m.loadRatio = load.p50 > 0.0 ? load.p99 / load.p50 : 0.0;
     m.error = _overall.result();
     for (std::size_t s = 0; s < _screens.size(); ++s) {
         m.screens[s].error = _screens[s].result();
@@ -79,18 +87,22 @@ ModeResult ModeAccumulator::finish(double fullP50) const {
 }
 
 void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls, ModeAccumulator& acc,
-                        const ReferenceImages* reference, ReferenceImages* store, gl::Transition transition) {
+                        const ReferenceImages* reference, ReferenceImages* store, gl::Transition transition,
+                        bool paged) {
     gl::WalkthroughOptions options;
     options.transition = transition;
-    options.synchronousPaging = true;
-    options.textureBudgetMB = 4096.0;  // every texture of the path stays resident after warm-up
-    options.uploadMBPerFrame = 4096.0;
+    if (!paged) {
+        options.synchronousPaging = true;
+        options.textureBudgetMB = 4096.0;  // every texture of the path stays resident after warm-up
+        options.uploadMBPerFrame = 4096.0;
+    }
     const bool hasWalls = walls.has_value();
     gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
-    // Warm-up: shaders, buffers and (with walls) every texture of the path made resident.
-    const long warmUp = hasWalls ? static_cast<long>(c.path.frames.size()) : std::min<long>(3, c.path.frames.size());
+    // Warm-up: shaders, buffers and (with walls, unless paged) every texture of the path made
+    // resident.
+    const long warmUp = hasWalls && !paged ? static_cast<long>(c.path.frames.size()) : std::min<long>(3, c.path.frames.size());
     for (long i = 0; i < warmUp; ++i) walkthrough.renderFrame(c.path.frames[i]);
-    walkthrough.waitForTextures();
+    if (!paged) walkthrough.waitForTextures();
     for (const gl::FrameInput& frame : c.path.frames) {
         gl::FrameInput in = frame;
         in.readImages = compared(c, in.frame);
@@ -133,23 +145,41 @@ void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly
     const walls::FrameSelector selector(setup.plan, setup.table, c.description);
     const gl::RenderTargets targets(c.display, c.context);
     gl::SceneRenderer renderer(c.scene);
+    // The limit also draws every wall of the viewer's cell as a bare quad: one 1x1 texture
+    // through the walls' own pass, so it pays the quads' fill but no texture blending or paging.
+    std::optional<gl::WallPass> quadPass;
+    gl::GlObject bare;
+    if (nearOnly) {
+        quadPass.emplace();
+        bare = walls::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}});
+    }
     auto draw = [&](const gl::FrameInput& in, FrameCost* cost) {
         const auto start = std::chrono::steady_clock::now();
         const glm::dvec3 eye(in.worldFromCave * glm::dvec4(in.head.position, 1.0));
-        const std::vector<int> objects =
-            cellObjects(c.scene, cellMask(selector.select(eye), c.description.cells.size(), nearOnly));
+        const walls::FrameSelection selection = selector.select(eye);
+        const std::vector<int> objects = cellObjects(c.scene, cellMask(selection, c.description.cells.size(), nearOnly));
         gl::DrawFilter filter;
         filter.objects = &objects;
+        std::vector<gl::WallDraw> quads;
+        if (quadPass)
+            for (const walls::WallBlend& b : selection.walls)
+                quads.push_back({walls::quadSeenFrom(setup.plan.walls[b.wall].quad, b.side), {bare.id()}, {1.0f}, 1});
+        const glm::dmat4 caveFromWorld = glm::inverse(in.worldFromCave);
+        gl::FrameStats quadStats;
+        auto afterView = [&](const display::ScreenView& view) {
+            quadPass->draw(quads, view.frustum, caveFromWorld, 0, quadStats);
+        };
         const std::vector<display::ScreenView> views = c.display.views(in.head);
-        const gl::FrameStats stats = renderer.render(views, targets, in.worldFromCave, filter);
+        const gl::FrameStats stats = renderer.render(views, targets, in.worldFromCave, filter,
+                                                     quadPass ? std::function(afterView) : nullptr);
         const double gpu = renderer.waitGpuMs();
         if (!cost) return;
         *cost = FrameCost{};
         cost->frameMs = msSince(start);
         cost->cpuMs = stats.cpuMs;
         cost->gpuMs = gpu;
-        cost->triangles = static_cast<double>(stats.triangles);
-        cost->drawCalls = static_cast<double>(stats.drawCalls);
+        cost->triangles = static_cast<double>(stats.triangles + quadStats.triangles);
+        cost->drawCalls = static_cast<double>(stats.drawCalls + quadStats.drawCalls);
         cost->perScreen.assign(c.display.screens().size(), gl::ViewStats{});
         for (std::size_t v = 0; v < stats.perView.size() && v < views.size(); ++v) {  // perView is in view order
             gl::ViewStats& screen = cost->perScreen[views[v].screen];

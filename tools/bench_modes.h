@@ -58,10 +58,12 @@ struct ModeContext {
 
 // Runs the walkthrough (walls: nullopt = full geometry) over the path: a warm-up pass when it
 // has walls, then the timed pass. With `reference` null the compared frames' images are stored
-// in `store` (the full-geometry reference run).
+// in `store` (the full-geometry reference run). `paged`: as `cavewall run` pages, in the
+// background under the default texture budget and upload limit, from a cold start (three
+// warm-up frames), so the timed frames include every page-in, upload and fallback.
 void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls, ModeAccumulator& acc,
                         const ReferenceImages* reference, ReferenceImages* store,
-                        gl::Transition transition = gl::Transition::Blend);
+                        gl::Transition transition = gl::Transition::Blend, bool paged = false);
 
 // Runs the cells or near mode (bench_driver.h) with the selection of `setup`'s plan.
 void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly, ModeAccumulator& acc,

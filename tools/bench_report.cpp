@@ -49,17 +49,22 @@ const ModeResult* findMode(const BenchReport& report, const std::string& mode) {
 std::vector<std::string> targetLines(const BenchReport& report) {
     const ModeResult* best = nullptr;
     for (const ModeResult& m : report.modes)
-        if (m.mode == "walls" && m.error.psnrDb >= 30.0 && (!best || m.speedup > best->speedup)) best = &m;
-    if (!best) return {"targets: no walls mode reaches PSNR >= 30 dB"};
+        if (m.mode == "walls" && m.error.meanPsnrDb >= 30.0 && (!best || m.speedup > best->speedup)) best = &m;
+    if (!best) return {"targets: no walls mode reaches a mean PSNR >= 30 dB"};
     const double ratio = best->frameMs.p50 > 0 ? best->frameMs.p99 / best->frameMs.p50 : 0.0;
     std::vector<std::string> lines = {
-        "targets: fastest walls mode with PSNR >= 30 dB: " + modeLabel(*best) + ", speed-up " + num(best->speedup, 3) +
-            (best->speedup >= 10.0 ? " (>= 10: met)" : " (>= 10: not met)") + ", PSNR " + num(best->error.psnrDb, 3) +
-            " dB, p99/p50 " + num(ratio, 3) + (ratio <= 1.3 ? " (<= 1.3: met)" : " (<= 1.3: not met)")};
-    if (const ModeResult* near = findMode(report, "near"); near && near->frameMs.p50 > 0)
-        lines.push_back("targets: its median frame time is " + num(best->frameMs.p50 / near->frameMs.p50, 3) +
-                        "x the near-geometry limit's (" + num(best->frameMs.p50, 3) + " ms against " +
-                        num(near->frameMs.p50, 3) + " ms)");
+        "targets: fastest walls mode with mean PSNR >= 30 dB: " + modeLabel(*best) + ", speed-up " +
+            num(best->speedup, 3) + (best->speedup >= 10.0 ? " (>= 10: met)" : " (>= 10: not met)") + ", PSNR " +
+            num(best->error.meanPsnrDb, 3) + " dB mean (" + num(best->error.psnrDb, 3) + " dB pooled), p99/p50 " +
+            num(ratio, 3) + (ratio <= 1.3 ? " (<= 1.3: met)" : " (<= 1.3: not met)") +
+            " with the triangles drawn varying by " + num(best->loadRatio, 3) + " (p99/p50)"};
+    if (const ModeResult* near = findMode(report, "near"); near && near->frameMs.p50 > 0) {
+        const double limit = best->frameMs.p50 / near->frameMs.p50;
+        lines.push_back("targets: its median frame time is " + num(limit, 3) +
+                        "x the limit's, near geometry plus bare wall quads (" + num(best->frameMs.p50, 3) +
+                        " ms against " + num(near->frameMs.p50, 3) + " ms; <= 1.2: " +
+                        (limit <= 1.2 ? "met)" : "not met)"));
+    }
     return lines;
 }
 
@@ -71,14 +76,15 @@ std::string modeLabel(const ModeResult& m) {
 std::string csvHeader() {
     return "mode,alpha_deg,transition,frame_ms_p50,frame_ms_p95,frame_ms_p99,speedup,psnr_db,rmse,ssim,max_err_deg,"
            "max_err_px,triangles,draw_calls,textures,disk_mb,gpu_mb,cpu_ms_p50,cpu_ms_p95,cpu_ms_p99,gpu_ms_p50,"
-           "gpu_ms_p95,gpu_ms_p99,texels,misses";
+           "gpu_ms_p95,gpu_ms_p99,texels,misses,mean_psnr_db,load_p99_p50";
 }
 
 std::string csvRow(const ModeResult& m) {
     const double values[] = {m.frameMs.p50, m.frameMs.p95, m.frameMs.p99, m.speedup, m.error.psnrDb, m.error.rmse,
                              m.error.ssim, m.maxErrDeg, m.maxErrPx, m.triangles, m.drawCalls,
                              static_cast<double>(m.textures), m.diskMB, m.gpuMB, m.cpuMs.p50, m.cpuMs.p95, m.cpuMs.p99,
-                             m.gpuMs.p50, m.gpuMs.p95, m.gpuMs.p99, m.texels, static_cast<double>(m.misses)};
+                             m.gpuMs.p50, m.gpuMs.p95, m.gpuMs.p99, m.texels, static_cast<double>(m.misses),
+                             m.error.meanPsnrDb, m.loadRatio};
     std::string row = m.mode + "," + num(m.alphaDeg) + "," + m.transition;
     for (double v : values) row += "," + num(v);
     return row;
@@ -87,24 +93,37 @@ std::string csvRow(const ModeResult& m) {
 std::string markdownReport(const BenchReport& report) {
     std::ostringstream md;
     for (const std::string& line : report.header) md << "- " << line << "\n";
-    md << "\n| # | mode | frame ms p50 / p95 / p99 | p99/p50 | CPU ms p50 | GPU ms p50 | speed-up | PSNR dB | RMSE | SSIM "
-          "| max err deg / px | triangles | draw calls | textures | texels M | disk MB | GPU MB |\n"
+    md << "\n| # | mode | frame ms p50 / p95 / p99 | p99/p50 | load p99/p50 | CPU ms p50 | GPU ms p50 | speed-up | PSNR dB "
+          "(pooled / mean) | RMSE | SSIM | max err deg / px | triangles | draw calls | textures | texels M | disk MB | GPU MB |\n"
        << "| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | "
-          "---: | ---: |\n";
+          "---: | ---: | ---: |\n";
     int index = 1;
     for (const ModeResult& m : report.modes) {
         const double ratio = m.frameMs.p50 > 0 ? m.frameMs.p99 / m.frameMs.p50 : 0.0;
         md << "| " << index++ << " | " << modeLabel(m) << " | " << num(m.frameMs.p50, 3) << " / " << num(m.frameMs.p95, 3)
-           << " / " << num(m.frameMs.p99, 3) << " | " << num(ratio, 3) << " | " << num(m.cpuMs.p50, 3) << " | "
-           << num(m.gpuMs.p50, 3) << " | " << num(m.speedup, 3) << " | " << num(m.error.psnrDb, 3) << " | "
+           << " / " << num(m.frameMs.p99, 3) << " | " << num(ratio, 3) << " | " << num(m.loadRatio, 3) << " | "
+           << num(m.cpuMs.p50, 3) << " | "
+           << num(m.gpuMs.p50, 3) << " | " << num(m.speedup, 3) << " | " << num(m.error.psnrDb, 3) << " / "
+           << num(m.error.meanPsnrDb, 3) << " | "
            << num(m.error.rmse, 3) << " | " << num(m.error.ssim, 3) << " | " << num(m.maxErrDeg, 3) << " / "
            << num(m.maxErrPx, 3) << " | " << num(std::round(m.triangles), 7) << " | " << num(m.drawCalls, 3) << " | "
            << m.textures << " | " << num(m.texels / 1e6, 3) << " | " << num(m.diskMB, 3) << " | " << num(m.gpuMB, 3)
            << " |\n";
     }
-    md << "\n";
+    md << "\n- load p99/p50: p99/p50 of the triangles drawn per frame, how much the path's load alone varies "
+          "(frame time grows with it on llvmpipe); PSNR pooled: of the mean squared error of all compared "
+          "images, mean: the mean of their PSNRs (each capped at 58.9 dB, 8-bit quantisation)\n";
     for (const std::string& line : targetLines(report)) md << "- " << line << "\n";
     return md.str();
+}
+
+std::string framesCsv(const BenchReport& report) {
+    std::string out = "mode,frame,frame_ms,triangles,draw_calls\n";
+    for (const ModeResult& m : report.modes)
+        for (std::size_t i = 0; i < m.frames.size(); ++i)
+            out += modeLabel(m) + "," + std::to_string(i) + "," + num(m.frames[i].frameMs, 6) + "," +
+                   num(m.frames[i].triangles, 10) + "," + num(m.frames[i].drawCalls, 10) + "\n";
+    return out;
 }
 
 std::vector<std::filesystem::path> writeReport(const std::filesystem::path& folder, const BenchReport& report) {
@@ -112,9 +131,11 @@ std::vector<std::filesystem::path> writeReport(const std::filesystem::path& fold
     std::string csv = csvHeader() + "\n";
     for (const ModeResult& m : report.modes) csv += csvRow(m) + "\n";
     const std::vector<std::filesystem::path> files = {folder / "bench.csv", folder / "bench_screens.csv",
-                                                      folder / "bench.md", folder / "bench.png"};
+                                                      folder / "bench.md", folder / "bench.png",
+                                                      folder / "bench_frames.csv"};
     writeText(files[0], csv);
     writeText(files[1], screensCsv(report));
+    writeText(files[4], framesCsv(report));
     writeText(files[2], "# cavewall bench\n\n" + markdownReport(report) +
                             "\n![error (RMSE, y) against median frame ms (x); red: Pareto front; numbers: # above]"
                             "(bench.png)\n");

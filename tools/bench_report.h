@@ -21,6 +21,11 @@ struct ScreenResult {
     double triangles = 0.0, drawCalls = 0.0;  // means per frame
 };
 
+// One timed frame of a mode, as bench_frames.csv lists it.
+struct FrameSample {
+    double frameMs = 0.0, triangles = 0.0, drawCalls = 0.0;
+};
+
 struct ModeResult {
     std::string mode;                  // full | cells | near | walls
     double alphaDeg = 0.0;             // walls modes; 0 otherwise
@@ -37,6 +42,10 @@ struct ModeResult {
     double gpuMB = 0.0;                // peak resident texture MB (the pager's count)
     long misses = 0;                   // wanted textures not resident, over the run
     std::vector<ScreenResult> screens;
+    std::vector<FrameSample> frames;   // every timed frame, in path order
+    // p99/p50 of the triangles drawn per frame: how much the path's load alone varies, to
+    // read next to the frame time's p99/p50 (the rest is stalls and noise).
+    double loadRatio = 0.0;
 };
 
 struct BenchReport {
@@ -51,11 +60,12 @@ std::string csvRow(const ModeResult& m);
 // Markdown: the header lines as a list, then one table row per mode.
 std::string markdownReport(const BenchReport& report);
 
-// The targets read off the table: the fastest walls mode with PSNR >= 30 dB, its
+// The targets read off the table: the fastest walls mode with mean PSNR >= 30 dB, its
 // speed-up (target >= 10), p99/p50 (target <= 1.3) and its median against the near limit's.
 std::vector<std::string> targetLines(const BenchReport& report);
 
-// Writes bench.csv, bench_screens.csv, bench.md and bench.png into `folder` (created).
+// Writes bench.csv, bench_screens.csv, bench_frames.csv (every timed frame of every mode),
+// bench.md and bench.png into `folder` (created).
 // Returns the files written.
 std::vector<std::filesystem::path> writeReport(const std::filesystem::path& folder, const BenchReport& report);
 

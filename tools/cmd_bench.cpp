@@ -18,25 +18,28 @@ namespace cavewall::tools {
 const char* const kBenchUsage =
     "usage: cavewall bench SCENE [--display D] [--path P] [--out DIR] [--frames N] [--resolution N]\n"
     "                      [--quick] [--cache DIR] [--compare-every K] [--min-zone M] [--ppd N]\n"
-    "                      [--bake-resolution N]\n"
+    "                      [--bake-resolution N] [--alphas A,B,...] [--warp-alpha A]\n"
     "       cavewall bench --stability\n"
     "\n"
     "SCENE    error against run time in one run (a scene.json, its folder, or glTF/GLB with\n"
     "         virtual walls). One eye path (the guided navigator along the scene's walkPath,\n"
     "         the head from --path: a tracker spec or a `cavewall run --record` file, default\n"
     "         sim:walk) drives every mode: full geometry (frustum-culled, the reference), cell\n"
-    "         culling without textures, the near-geometry limit (the viewer's cell only), and\n"
-    "         virtual walls at alpha 2.5, 5, 10, 15 and 20 degrees with the blend transition and\n"
-    "         at 10 degrees with the warp transition (each alpha planned and baked into the\n"
-    "         cache, --cache, default $CAVEWALL_CACHE or ~/.cache/cavewall). Per mode: frame,\n"
-    "         CPU and GPU ms p50/p95/p99, speed-up, triangles, draw calls, textures, texels, disk\n"
-    "         and GPU MB, and the image error against full geometry at the same frame, eye and\n"
-    "         screen (PSNR, RMSE, SSIM) with the worst angular error in degrees and pixels.\n"
-    "         Writes DIR/bench.csv, bench_screens.csv, bench.md (also printed) and bench.png\n"
-    "         (error against frame time, Pareto front in red). Defaults: display cave4, out\n"
-    "         bench-out, 120 frames at 256 pixels per screen, images compared every 4 frames,\n"
-    "         min-zone 1 m, 10 pixels per degree, bake textures at most 512 texels. --quick: 24\n"
-    "         frames at 128 pixels, compared every 3, bakes at most 128 texels.\n"
+    "         culling without textures, the near-geometry limit (the viewer's cell plus its\n"
+    "         walls as bare quads), virtual walls at each of --alphas (default 10,20,30\n"
+    "         degrees) with the blend transition, at --warp-alpha (default 20) with the warp\n"
+    "         transition and with background paging from a cold start (each alpha planned and\n"
+    "         baked into the cache, --cache, default $CAVEWALL_CACHE or ~/.cache/cavewall).\n"
+    "         Per mode: frame, CPU and GPU ms p50/p95/p99, speed-up, the triangles' p99/p50,\n"
+    "         triangles, draw calls, textures, texels, disk and GPU MB, and the image error\n"
+    "         against full geometry at the same frame, eye and screen (PSNR pooled and mean,\n"
+    "         RMSE, SSIM) with the worst angular error in degrees and pixels.\n"
+    "         Writes DIR/bench.csv, bench_screens.csv, bench_frames.csv (every timed frame),\n"
+    "         bench.md (also printed) and bench.png (error against frame time, Pareto front in\n"
+    "         red). Defaults: display cave4, out bench-out, 120 frames at 256 pixels per screen,\n"
+    "         images compared every 4 frames, min-zone 1 m, 10 pixels per degree, bake textures\n"
+    "         at most 512 texels. --quick: 24 frames at 128 pixels, compared every 3, min-zone\n"
+    "         3 m, bakes at most 128 texels.\n"
     "\n"
     "--stability  runs the stiff and extreme numerical cases (projection at eye distances\n"
     "             1e-9 ... 1e6 m, world offsets to 1e7 m, near/far ratios to 1e9 with reversed-Z,\n"
@@ -69,6 +72,21 @@ int runStability() {
 }
 
 #ifdef CAVEWALL_HAVE_GL
+// "--alphas 10,20,30": at least one angle, each in (0, 90) degrees.
+std::vector<double> alphaList(const std::string& text) {
+    std::vector<double> out;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t end = std::min(text.find(',', start), text.size());
+        const double a = parseNumber(text.substr(start, end - start), "bench: --alphas");
+        if (!(a > 0.0 && a < 90.0))
+            throw Error("bench: --alphas: expected angles in (0, 90) degrees, got " + config::formatNumber(a));
+        out.push_back(a);
+        start = end + 1;
+    }
+    return out;
+}
+
 int runSceneBench(const Args& args) {
     const bool quick = args.has("quick");
     BenchOptions o;
@@ -80,9 +98,11 @@ int runSceneBench(const Args& args) {
         o.tracker = std::filesystem::is_regular_file(*path) ? "replay:" + *path : *path;
     o.frames = args.integer("frames", quick ? 24 : 120, 1, 100000);
     o.compareEvery = static_cast<int>(args.integer("compare-every", quick ? 3 : 4, 1, 100000));
-    o.plan.minZoneSize = args.number("min-zone", o.plan.minZoneSize, 1e-3, 1e4);
+    o.plan.minZoneSize = args.number("min-zone", quick ? 3.0 : o.plan.minZoneSize, 1e-3, 1e4);
     o.plan.pixelsPerDegree = args.number("ppd", o.plan.pixelsPerDegree, 0.01, 1000.0);
     o.bakeResolution = static_cast<int>(args.integer("bake-resolution", quick ? 128 : 512, 16, 16384));
+    if (auto list = args.get("alphas")) o.alphasDeg = alphaList(*list);
+    o.transitionAlphaDeg = args.number("warp-alpha", o.transitionAlphaDeg, 0.1, 89.0);
     if (auto cache = args.get("cache")) o.cache = *cache;
     const std::filesystem::path out = args.getOr("out", "bench-out");
     const BenchReport report = runBenchmark(o);
@@ -98,7 +118,7 @@ int runSceneBench(const Args& args) {
 int runBench(const std::vector<std::string>& words) {
     const Args args(words, {"stability", "quick"});
     args.expectFlags({"stability", "quick", "display", "path", "out", "frames", "resolution", "cache", "compare-every",
-                      "min-zone", "ppd", "bake-resolution"});
+                      "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha"});
     if (args.has("stability")) return runStability();
 #ifdef CAVEWALL_HAVE_GL
     if (!args.positional().empty()) return runSceneBench(args);

@@ -96,7 +96,8 @@ SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings
 }
 
 FrameStats SceneRenderer::render(const std::vector<display::ScreenView>& views, const RenderTargets& targets,
-                                 const glm::dmat4& worldFromCave, const DrawFilter& filter) {
+                                 const glm::dmat4& worldFromCave, const DrawFilter& filter,
+                                 const std::function<void(const display::ScreenView&)>& afterView) {
     const auto start = Clock::now();
     const bool timed = _timer.begin();
     beginFrame(targets);
@@ -104,6 +105,7 @@ FrameStats SceneRenderer::render(const std::vector<display::ScreenView>& views, 
     for (const display::ScreenView& view : views) {
         targets.bind(view.screen, RenderTargets::imageOf(view.pass));
         stats.add(renderView(view, worldFromCave, filter));
+        if (afterView) afterView(view);
     }
     glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

@@ -47,6 +47,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -119,8 +120,12 @@ public:
     // Clears every target and draws every view with `filter`. `views` come from
     // Display::views(head) of the display that `targets` were made for. `worldFromCave` places
     // the CAVE in the world (metres; identity: the CAVE frame is the world frame).
+    // `afterView`, if set, runs after each view is drawn, with that view's target bound and its
+    // viewport, scissor and colour mask still set (a caller's own pass; it restores any other
+    // state it changes) and is timed with the frame.
     FrameStats render(const std::vector<display::ScreenView>& views, const RenderTargets& targets,
-                      const glm::dmat4& worldFromCave = glm::dmat4(1.0), const DrawFilter& filter = {});
+                      const glm::dmat4& worldFromCave = glm::dmat4(1.0), const DrawFilter& filter = {},
+                      const std::function<void(const display::ScreenView&)>& afterView = {});
 
     // For callers that interleave their own passes between views (the walkthrough): sets the
     // frame's GL state and clears the images of `screens` (empty: all) to the clear colour.

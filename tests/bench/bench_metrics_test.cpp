@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 namespace cavewall::tools {
@@ -93,6 +94,21 @@ TEST(BenchMetrics, PoolAveragesSquaredError) {
     EXPECT_NEAR(e.psnrDb, 16.9897, 1e-4);
     EXPECT_NEAR(e.ssim, 0.6, 1e-15);
     EXPECT_EQ(pool.count(), 2u);
+}
+
+TEST(BenchMetrics, MeanPsnrAveragesImagesAndCapsIdenticalOnes) {
+    ErrorPool pool;
+    ImageError a;  // 20 dB
+    a.mse = 1e-2, a.psnrDb = 20.0, a.meanPsnrDb = 20.0;
+    ImageError same;  // identical images: infinite PSNR, counted at the quantisation limit
+    same.psnrDb = std::numeric_limits<double>::infinity();
+    pool.add(a);
+    pool.add(same);
+    const ImageError r = pool.result();
+    EXPECT_NEAR(r.meanPsnrDb, 0.5 * (20.0 + kQuantisationPsnrDb), 1e-12);
+    EXPECT_NEAR(r.psnrDb, -10.0 * std::log10(0.5e-2), 1e-12);  // pooled: 23 dB
+    EXPECT_GE(r.meanPsnrDb, r.psnrDb);
+    EXPECT_NEAR(kQuantisationPsnrDb, 10.0 * std::log10(12.0 * 255.0 * 255.0), 1e-4);
 }
 
 TEST(BenchMetrics, NearestRankPercentiles) {
