@@ -24,7 +24,7 @@ GlObject upload(const walls::DecodedTexture& decoded) {
 
 TextureStore::TextureStore(walls::TexturePager& pager, std::size_t uploadBytesPerFrame)
     : _pager(pager), _uploadBytes(std::max<std::size_t>(uploadBytesPerFrame, 1)), _sampler(createSampler()) {
-    glSamplerParameteri(_sampler.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glSamplerParameteri(_sampler.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
     glSamplerParameteri(_sampler.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glSamplerParameteri(_sampler.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(_sampler.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
