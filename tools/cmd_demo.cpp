@@ -13,11 +13,11 @@ namespace cavewall::tools {
 const char* const kDemoUsage =
     "usage: cavewall demo [--out DIR] [--frames N] [--resolution PX] [--triangles N]\n"
     "\n"
-    "The main job: generates the default plant (once; cached in $CAVEWALL_CACHE or, without it,\n"
-    "in cache/ beside the cavewall executable), plans and bakes its virtual walls (cached too),\n"
-    "then walks cave4 along the plant's walk path at 5 m/s (along the north aisle from N1 into N3) with the\n"
-    "simulated head tracker (sim:walk) for N frames (default 240), once with the walls and\n"
-    "once with the full frustum-culled geometry. Each screen renders PX x PX pixels (default\n"
+    "The main job: generates the default plant (into $CAVEWALL_CACHE or, without it, cache/\n"
+    "beside the cavewall executable), plans and bakes its virtual walls (cached by content),\n"
+    "then walks cave4 along the plant's walk path at 5 m/s (along the north aisle from N1 into\n"
+    "N3) with the simulated head tracker (sim:walk) for N frames (default 240), once with the\n"
+    "walls and once with the full frustum-culled geometry. Each screen renders PX x PX pixels (default\n"
     "256, so the demo finishes in a few minutes on llvmpipe). Prints the median frame time of\n"
     "both runs, the speed-up and the worst angular error, and writes DIR (default demo-out):\n"
     "walls/ and geometry/ (CSV files, frames every 60 frames) and report.md with the fold-outs.\n"
@@ -35,8 +35,10 @@ std::filesystem::path cacheFolder() {
 }
 
 std::filesystem::path ensurePlant(const std::filesystem::path& cache, std::size_t triangles) {
+    // Generated every time (half a second), never reused from disk: a plant left by an older
+    // cavewall would not match this generator. The bake cache is keyed by the files' bytes, so
+    // an unchanged plant still bakes nothing.
     const std::filesystem::path dir = cache / ("plant-" + std::to_string(triangles));
-    if (std::filesystem::exists(dir / "scene.json")) return dir / "scene.json";
     std::cout << "demo: generating the plant (" << triangles << " triangles) in " << dir.string() << "\n";
     scenes::GenerateOptions options;
     options.triangles = triangles;
