@@ -75,7 +75,9 @@ void FrameStats::add(const ViewStats& view) {
 
 SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings)
     : _objects(scene.objects), _settings(settings), _gpu(scene),
-      _program(buildProgram(kProgramName, shaders::kSceneVertex, shaders::kSceneFragment)), _bvh(scene),
+      _program(buildProgram(kProgramName, shaders::sceneShader(shaders::kSceneVertex, _gpu.textureCount() > 0),
+                            shaders::sceneShader(shaders::kSceneFragment, _gpu.textureCount() > 0))),
+      _bvh(scene),
       _listStamp(scene.objects.size(), 0) {
     _projection = uniformLocation(_program.id(), kProgramName, "uProjection");
     _ambient = uniformLocation(_program.id(), kProgramName, "uAmbient");

@@ -9,6 +9,8 @@
 
 #include <glm/glm.hpp>
 
+#include <string>
+
 namespace cavewall::gl::shaders {
 
 // Per-draw record, binding 0. Matrices are eye-relative (view origin at the eye).
@@ -28,6 +30,9 @@ struct MaterialRecord {
 };
 static_assert(sizeof(MaterialRecord) == 96);
 
+// Both stages come in two variants, built with sceneShader(): TEXTURED 1 samples base-colour
+// textures, TEXTURED 0 (a scene without any) leaves the texture path out entirely: llvmpipe runs
+// a texture fetch behind a per-material branch for every fragment.
 inline constexpr const char* kSceneVertex = R"(#version 450 core
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
@@ -55,8 +60,12 @@ void main() {
     vec4 p = d.modelView * vec4(aPosition, 1.0);
     vViewPosition = p.xyz;
     vNormal = mat3(d.normal0.xyz, d.normal1.xyz, d.normal2.xyz) * aNormal;
+#if TEXTURED
     vec2 uv = m.flags.x == 1 ? aTexCoord1 : aTexCoord0;
     vTexCoord = (mat3(m.uv0.xyz, m.uv1.xyz, m.uv2.xyz) * vec3(uv, 1.0)).xy;
+#else
+    vTexCoord = vec2(0.0);
+#endif
     vColor = aColor;
     vMaterial = d.info.x;
     gl_Position = uProjection * p;
@@ -80,7 +89,9 @@ out vec4 fragColor;          // linear; the sRGB target encodes it
 void main() {
     Material m = materials[vMaterial];
     vec4 color = m.baseColor * vColor;
+#if TEXTURED
     if (m.flags.z != 0) color *= texture(uBaseColorTexture, vTexCoord);
+#endif
     if (m.flags.y == 1 && color.a < m.params.x) discard;
     // Headlight at the eye (the view origin). Meshes without normals are lit fully.
     float diffuse = 1.0;
@@ -92,5 +103,12 @@ void main() {
     fragColor = vec4(color.rgb * light, m.flags.y == 2 ? color.a : 1.0);
 }
 )";
+
+// `source` (starting with its #version line) with "#define TEXTURED 0|1" after that line.
+inline std::string sceneShader(const char* source, bool textured) {
+    std::string s(source);
+    const std::size_t eol = s.find('\n');
+    return s.insert(eol + 1, textured ? "#define TEXTURED 1\n" : "#define TEXTURED 0\n");
+}
 
 }  // namespace cavewall::gl::shaders
