@@ -51,8 +51,9 @@ uniform mat4 uProjection;    // reversed-Z off-axis projection
 out vec3 vViewPosition;
 out vec3 vNormal;
 out vec2 vTexCoord;
-out vec4 vColor;
-flat out int vMaterial;
+out vec4 vColor;             // base colour factor x vertex colour (the factor is per draw)
+flat out ivec2 vFlags;       // x: alpha mode, y: textured
+flat out float vCutoff;
 
 void main() {
     Draw d = draws[aDraw];
@@ -66,8 +67,9 @@ void main() {
 #else
     vTexCoord = vec2(0.0);
 #endif
-    vColor = aColor;
-    vMaterial = d.info.x;
+    vColor = m.baseColor * aColor;
+    vFlags = m.flags.yz;
+    vCutoff = m.params.x;
     gl_Position = uProjection * p;
 }
 )";
@@ -77,22 +79,21 @@ in vec3 vViewPosition;
 in vec3 vNormal;
 in vec2 vTexCoord;
 in vec4 vColor;
-flat in int vMaterial;
+flat in ivec2 vFlags;
+flat in float vCutoff;
 
-struct Material { vec4 baseColor; vec4 uv0, uv1, uv2; ivec4 flags; vec4 params; };
-layout(std430, binding = 1) readonly buffer Materials { Material materials[]; };
 layout(binding = 0) uniform sampler2D uBaseColorTexture;  // sRGB: sampled as linear
 uniform float uAmbient;
 
 out vec4 fragColor;          // linear; the sRGB target encodes it
 
 void main() {
-    Material m = materials[vMaterial];
-    vec4 color = m.baseColor * vColor;
+    // Material values arrive as flat varyings: no storage-buffer load per fragment.
+    vec4 color = vColor;
 #if TEXTURED
-    if (m.flags.z != 0) color *= texture(uBaseColorTexture, vTexCoord);
+    if (vFlags.y != 0) color *= texture(uBaseColorTexture, vTexCoord);
 #endif
-    if (m.flags.y == 1 && color.a < m.params.x) discard;
+    if (vFlags.x == 1 && color.a < vCutoff) discard;
     // Headlight at the eye (the view origin). Meshes without normals are lit fully.
     float diffuse = 1.0;
     if (dot(vNormal, vNormal) > 1e-12) {
@@ -100,7 +101,7 @@ void main() {
         diffuse = max(dot(n, normalize(-vViewPosition)), 0.0);
     }
     float light = uAmbient + (1.0 - uAmbient) * diffuse;
-    fragColor = vec4(color.rgb * light, m.flags.y == 2 ? color.a : 1.0);
+    fragColor = vec4(color.rgb * light, vFlags.x == 2 ? color.a : 1.0);
 }
 )";
 
