@@ -115,6 +115,9 @@ BenchReport runBenchmark(const BenchOptions& o) {
     if (o.compareEvery < 1) throw Error("bench: compareEvery: expected at least 1, got " + std::to_string(o.compareEvery));
     if (o.alphasDeg.empty()) throw Error("bench: expected at least one alpha for the walls modes, got none");
     if (o.frames < 1) throw Error("--frames: expected at least 1, got " + std::to_string(o.frames));
+    if (std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg) == o.alphasDeg.end())
+        throw Error("bench: the warp alpha " + config::formatNumber(o.transitionAlphaDeg) +
+                    " is not one of the planned alphas");
     const auto start = std::chrono::steady_clock::now();
     const display::Display display(o.display);
     scenes::SceneDescription description;
@@ -141,7 +144,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
         report.header.push_back("bake " + baked.back().summary);
     }
     const auto listed = std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg);
-    const std::size_t transitionIndex = listed != o.alphasDeg.end() ? listed - o.alphasDeg.begin() : 0;
+    const std::size_t transitionIndex = listed - o.alphasDeg.begin();  // listed: checked on entry
     const gl::WallSetup& cellPlan = baked[transitionIndex].setup;
     for (const bool nearOnly : {false, true}) {
         say(o, nearOnly ? "bench: near-geometry limit (the viewer's cell and bare wall quads)" : "bench: cell culling without textures");

@@ -8,6 +8,7 @@
 #include "tools/bench_driver.h"
 #endif
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -103,6 +104,12 @@ int runSceneBench(const Args& args) {
     o.bakeResolution = static_cast<int>(args.integer("bake-resolution", quick ? 128 : 512, 16, 16384));
     if (auto list = args.get("alphas")) o.alphasDeg = alphaList(*list);
     o.transitionAlphaDeg = args.number("warp-alpha", o.transitionAlphaDeg, 0.1, 89.0);
+    if (std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg) == o.alphasDeg.end()) {
+        std::string list;
+        for (double a : o.alphasDeg) list += (list.empty() ? "" : ",") + config::formatNumber(a);
+        throw Error("bench: --warp-alpha " + config::formatNumber(o.transitionAlphaDeg) +
+                    " is not one of the planned alphas (" + list + "); add it to --alphas");
+    }
     if (auto cache = args.get("cache")) o.cache = *cache;
     const std::filesystem::path out = args.getOr("out", "bench-out");
     const BenchReport report = runBenchmark(o);

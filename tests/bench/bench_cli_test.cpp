@@ -98,6 +98,8 @@ TEST(BenchSceneCli, BadInputIsAClearError) {
         {{"bench", "x.json", "--alphas", "10,abc"}, "--alphas"},
         {{"bench", "x.json", "--alphas", "10,95"}, "expected angles in (0, 90) degrees, got 95"},
         {{"bench", "x.json", "--alphas", ""}, "--alphas"},
+        {{"bench", "x.json", "--alphas", "10,30", "--warp-alpha", "20"},
+         "--warp-alpha 20 is not one of the planned alphas (10,30); add it to --alphas"},
         {{"bench", (outputDir() / "missing" / "scene.json").string(), "--quick"}, "missing"},
     };
     for (const Case& c : cases) {
