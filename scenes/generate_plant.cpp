@@ -140,13 +140,15 @@ SceneDescription plantDescription() {
         for (int j = 0; j + 1 < kColumns; ++j) {  // x walls between neighbours in a row
             const int a = r * kColumns + j, b = a + 1;
             const double x = -kHalfX + 10.0 * (j + 1), z0 = rowEdges[r], z1 = rowEdges[r + 1];
-            d.walls.push_back(wall(cellName(a) + "|" + cellName(b), {x, z0}, {x, z1}, a, b, {x - 5.0, 0.5 * (z0 + z1)}));
+            d.walls.push_back(
+                wall(cellName(a) + "|" + cellName(b), {x, z0}, {x, z1}, a, b, {x - 5.0, 0.5 * (z0 + z1)}));
         }
     for (int r = 0; r < 2; ++r)
         for (int j = 0; j < kColumns; ++j) {  // z walls between the rows
             const int a = r * kColumns + j, b = a + kColumns;
             const double x0 = -kHalfX + 10.0 * j, z = rowEdges[r + 1];
-            d.walls.push_back(wall(cellName(a) + "|" + cellName(b), {x0, z}, {x0 + 10.0, z}, a, b, {x0 + 5.0, z - 1.0}));
+            d.walls.push_back(
+                wall(cellName(a) + "|" + cellName(b), {x0, z}, {x0 + 10.0, z}, a, b, {x0 + 5.0, z - 1.0}));
         }
     d.eyeHeight = kEye;
     d.headHeightRange = {1.2, 2.0};

@@ -147,7 +147,8 @@ BenchReport runBenchmark(const BenchOptions& o) {
     const std::size_t transitionIndex = listed - o.alphasDeg.begin();  // listed: checked on entry
     const gl::WallSetup& cellPlan = baked[transitionIndex].setup;
     for (const bool nearOnly : {false, true}) {
-        say(o, nearOnly ? "bench: near-geometry limit (the viewer's cell and bare wall quads)" : "bench: cell culling without textures");
+        say(o, nearOnly ? "bench: near-geometry limit (the viewer's cell and bare wall quads)"
+                        : "bench: cell culling without textures");
         ModeAccumulator acc(namedMode(nearOnly ? "near" : "cells"), display);
         runCellMode(c, cellPlan, nearOnly, acc, reference);
         report.modes.push_back(acc.finish(fullP50));

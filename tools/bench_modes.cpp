@@ -100,7 +100,8 @@ void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls
     gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
     // Warm-up: shaders, buffers and (with walls, unless paged) every texture of the path made
     // resident.
-    const long warmUp = hasWalls && !paged ? static_cast<long>(c.path.frames.size()) : std::min<long>(3, c.path.frames.size());
+    const long frames = static_cast<long>(c.path.frames.size());
+    const long warmUp = hasWalls && !paged ? frames : std::min<long>(3, frames);
     for (long i = 0; i < warmUp; ++i) walkthrough.renderFrame(c.path.frames[i]);
     if (!paged) walkthrough.waitForTextures();
     for (const gl::FrameInput& frame : c.path.frames) {
@@ -157,7 +158,8 @@ void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly
         const auto start = std::chrono::steady_clock::now();
         const glm::dvec3 eye(in.worldFromCave * glm::dvec4(in.head.position, 1.0));
         const walls::FrameSelection selection = selector.select(eye);
-        const std::vector<int> objects = cellObjects(c.scene, cellMask(selection, c.description.cells.size(), nearOnly));
+        const std::vector<int> objects =
+            cellObjects(c.scene, cellMask(selection, c.description.cells.size(), nearOnly));
         gl::DrawFilter filter;
         filter.objects = &objects;
         std::vector<gl::WallDraw> quads;

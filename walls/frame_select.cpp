@@ -101,7 +101,9 @@ FrameSelection FrameSelector::select(glm::dvec3 eye) const {
 
 void FrameSelector::addBeyond(glm::dvec3 eye, FrameSelection& f) const {
     const std::vector<int> neighbours(f.geometryCells.begin() + 1, f.geometryCells.end());
-    auto drawn = [&](int c) { return std::find(f.geometryCells.begin(), f.geometryCells.end(), c) != f.geometryCells.end(); };
+    auto drawn = [&](int c) {
+        return std::find(f.geometryCells.begin(), f.geometryCells.end(), c) != f.geometryCells.end();
+    };
     std::vector<int> added;
     for (int g : neighbours) {
         const glm::dvec2 nearest = closestPointConvex(_description.cells[g].region, {eye.x, eye.z});

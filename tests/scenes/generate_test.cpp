@@ -55,7 +55,8 @@ TEST(GeneratePlant, DefaultHasTwoMillionTriangles24CellsAndSharedMeshes) {
     const auto& path = g.description.walkPath;
     for (std::size_t i = 0; i + 1 < path.size(); ++i)
         for (double t = 0.0; t <= 1.0; t += 0.005)
-            if (const int c = findCell(g.description.cells, glm::mix(path[i], path[i + 1], t)); c >= 0) visited[c] = true;
+            if (const int c = findCell(g.description.cells, glm::mix(path[i], path[i + 1], t)); c >= 0)
+                visited[c] = true;
     EXPECT_EQ(std::count(visited.begin(), visited.end(), true), 18);
     for (const char* name : {"N1", "N8", "S1", "S8", "M1", "M8"}) {
         const auto it = std::find_if(g.description.cells.begin(), g.description.cells.end(),
