@@ -2,6 +2,7 @@
 #include "scenes/loader.h"
 
 #include "config/error.h"
+#include "scenes/mesh_optimize.h"
 #include "scenes/region.h"
 #include "scenes/scene_description_io.h"
 
@@ -49,6 +50,18 @@ void merge(Scene& scene, Scene&& part, const glm::dmat4& worldFromFile, const Mo
     for (std::string& w : part.warnings) scene.warnings.push_back(std::move(w));
 }
 
+// Welds every mesh and orders it for the vertex cache, except where the material blends
+// (there the file's triangle order is the drawing order).
+void prepareForDrawing(Scene& scene) {
+    for (Mesh& m : scene.meshes) {
+        weldVertices(m);
+        const bool blends = m.material >= 0 && m.material < static_cast<int>(scene.materials.size()) &&
+                            scene.materials[m.material].alphaMode == AlphaMode::Blend;
+        if (!blends) optimizeVertexOrder(m);
+    }
+    scene.updateObjectBounds();
+}
+
 }  // namespace
 
 Scene loadScene(const SceneDescription& description) {
@@ -58,6 +71,7 @@ Scene loadScene(const SceneDescription& description) {
         const std::filesystem::path file = m.file.is_absolute() ? m.file : description.folder / m.file;
         merge(scene, loadGltf(file), fileTransform(m), m);
     }
+    prepareForDrawing(scene);
     for (Object& o : scene.objects) o.cell = findCell(description.cells, o.worldBounds.centre());
     return scene;
 }

@@ -14,11 +14,14 @@
 
 namespace cavewall::scenes {
 
-// Loads one glTF/GLB file; objects are in the file's own frame (glTF: metres, +Y up).
+// Loads one glTF/GLB file; objects are in the file's own frame (glTF: metres, +Y up). Vertex
+// data is as the file stores it (no welding or reordering).
 Scene loadGltf(const std::filesystem::path& file);
 
 // Loads every model of a validated description, applies units, up axis and placement, tags
-// structure objects, and assigns each object to the cell containing its centre.
+// structure objects, prepares the meshes for drawing (vertices welded, triangles ordered for
+// the vertex cache unless the material blends: scenes/mesh_optimize.h; the shape and the
+// triangle count stay) and assigns each object to the cell containing its centre.
 Scene loadScene(const SceneDescription& description);
 
 // Loads a scene from a path: a scene.json (or a folder holding one) or a bare glTF/GLB file
