@@ -1,0 +1,49 @@
+#pragma once
+// How many pixels an error covers on a view's screen: the conversion behind every error "in
+// pixels" (level-of-detail tolerances, the walls' angular error).
+//
+// In view space (eye at the origin, screen plane z = -h, config/conventions.h), a ray that
+// meets the screen at distance r from the eye moves across the screen by at most r²/h metres
+// per radian it turns (when it turns in the plane through itself and the screen normal; across
+// that plane it moves by r). An angle of one radian therefore covers at most r² / (h p) pixels,
+// p the pixel size in metres: least in the screen's centre, most at its far corners.
+//
+// A point displaced by a length e at distance D from the eye turns its ray by at most e / D
+// radians, so a geometric error e of an object covers at most
+//     e * maxStretch(viewFromModel) / nearestDistance(box) * maxPixelsPerRadian(screen, box)
+// pixels on that screen: the bound the renderer's level-of-detail choice uses.
+
+#include "display/off_axis.h"
+
+#include <glm/glm.hpp>
+
+#include <span>
+
+namespace cavewall::display {
+
+// The screen rectangle of a frustum in its view space.
+struct ViewScreen {
+    double left = 0.0, right = 0.0, bottom = 0.0, top = 0.0;  // metres, on the plane z = -distance
+    double distance = 0.0;                                     // h: the eye's distance to the plane, > 0
+    double pixelSize = 0.0;                                    // metres, the smaller of width and height
+};
+
+// The screen of `frustum` (from its projection) drawn into `viewportSize` pixels.
+ViewScreen viewScreen(const OffAxisFrustum& frustum, glm::ivec2 viewportSize);
+
+// The most pixels per radian over the whole screen (at its corner farthest from the eye).
+double maxPixelsPerRadian(const ViewScreen& screen);
+
+// The most pixels per radian over the part of the screen where points inside the box around
+// `viewPoints` (view space) can appear: the screen rectangle clipped to their projections'
+// bounds; the whole screen when a point is not in front of the eye. 0 when the points project
+// entirely beside the screen.
+double maxPixelsPerRadian(const ViewScreen& screen, std::span<const glm::dvec3> viewPoints);
+
+// Distance from the origin (the eye) to the axis-aligned box around `points`; 0 inside it.
+double nearestDistance(std::span<const glm::dvec3> points);
+
+// The largest factor by which `m` stretches a vector (its spectral norm), for any matrix.
+double maxStretch(const glm::dmat3& m);
+
+}  // namespace cavewall::display
