@@ -1,3 +1,4 @@
+#include "config/json_reader.h"
 #include "tools/args.h"
 #include "tools/commands.h"
 #include "tools/run_session.h"
@@ -11,7 +12,8 @@ const char* const kRunUsage =
     "                    [--nav guided|fly|walk|none] [--pace M/S] [--headless|--window]\n"
     "                    [--transition blend|warp] [--no-walls] [--alpha DEG] [--min-zone M] [--ppd N]\n"
     "                    [--save-frames none|every:K|all] [--record FILE] [--cache DIR]\n"
-    "                    [--budget MB] [--sync-paging] [--cluster [--cluster-timeout S]]\n"
+    "                    [--budget MB] [--sync-paging] [--lod PX [--triangle-budget N]]\n"
+    "                    [--cluster [--cluster-timeout S]]\n"
     "\n"
     "Walks through scene S (a scene.json, a folder holding one, or a bare glTF/GLB file) on the\n"
     "display D (a file or a preset, default cave4) for N frames at a fixed step of 1/60 s. The head\n"
@@ -26,7 +28,12 @@ const char* const kRunUsage =
     "~/.cache/cavewall) before the first frame; near cells are drawn as geometry and the rest as\n"
     "wall textures, blended by zone. --no-walls draws the full (frustum-culled) geometry instead.\n"
     "--budget: GPU MB for wall textures (default 256); --sync-paging waits for textures instead of\n"
-    "falling back (reproducible frames). Writes DIR/frames.csv (one row per frame: head and eye,\n"
+    "falling back (reproducible frames). --lod PX draws every object at the coarsest level of detail\n"
+    "whose geometric error covers at most PX pixels on any screen it appears on (levels are built\n"
+    "when the scene loads; default 0: full detail); --triangle-budget N raises that tolerance in\n"
+    "frames whose scene geometry would submit more than N triangles, just enough to fit\n"
+    "(frames.csv: lod_px, the tolerance used; lod_err_px, the largest error drawn; lod_over_budget,\n"
+    "1 when even the coarsest levels exceed N; geometry_triangles, what the budget caps). Writes DIR/frames.csv (one row per frame: head and eye,\n"
     "cell, zone, frame/cpu/gpu ms, triangles, draw calls, paging, max angular error in degrees and\n"
     "pixels), DIR/walls.csv (textures and weights per wall and frame, whether the wall lies\n"
     "beyond a neighbour drawn as geometry, its exact error in degrees) and, with --save-frames,\n"
@@ -59,7 +66,7 @@ int runRun(const std::vector<std::string>& words) {
     const Args args(words, {"headless", "window", "no-walls", "sync-paging", "cluster"});
     args.expectFlags({"scene", "display", "tracker", "frames", "nav", "pace", "headless", "window", "transition",
                       "no-walls", "alpha", "min-zone", "ppd", "save-frames", "record", "cache", "budget",
-                      "sync-paging", "out", "cluster", "cluster-timeout"});
+                      "sync-paging", "out", "cluster", "cluster-timeout", "lod", "triangle-budget"});
     if (args.has("headless") && args.has("window")) throw Error("--headless and --window: expected one of them, got both");
     RunOptions o;
     o.scene = args.require("scene");
@@ -81,6 +88,11 @@ int runRun(const std::vector<std::string>& words) {
     o.saveEvery = saveEvery(args.getOr("save-frames", "none"));
     o.textureBudgetMB = args.number("budget", o.textureBudgetMB, 1e-3, 1e6);
     o.synchronousPaging = args.has("sync-paging");
+    o.lodPixels = args.number("lod", 0.0, 0.0, 1e4);
+    o.triangleBudget = static_cast<std::size_t>(args.integer("triangle-budget", 0, 0, 1000000000));
+    if (o.triangleBudget > 0 && !(o.lodPixels > 0.0))
+        throw Error("--triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod " +
+                    config::formatNumber(o.lodPixels));
     o.cluster = args.has("cluster");
     o.clusterTimeout = args.number("cluster-timeout", o.clusterTimeout, 0.1, 3600.0);
     const RunSummary s = runSession(o);

@@ -34,8 +34,8 @@ double receiveFrame(Cluster& cluster, gl::FrameInput& input) {
 namespace {
 
 std::vector<std::uint8_t> statsBytes(const gl::FrameResult& r, double syncMs) {
-    const double values[9] = {r.frameMs, r.cpuMs, r.gpuMs, double(r.stats.triangles), double(r.stats.drawCalls), syncMs,
-                              double(r.warpFallbacks), r.maxErrorDeg, r.maxErrorPixels};
+    const double values[10] = {r.frameMs, r.cpuMs, r.gpuMs, double(r.stats.triangles), double(r.stats.drawCalls), syncMs,
+                               double(r.warpFallbacks), r.maxErrorDeg, r.maxErrorPixels, double(r.geometryTriangles)};
     std::vector<std::uint8_t> bytes(sizeof values);
     std::memcpy(bytes.data(), values, sizeof values);
     return bytes;
@@ -54,10 +54,11 @@ double combineFrame(Cluster& cluster, gl::FrameResult& r, double syncMs, const s
     if (cluster.rank() != 0) return syncMs;
     r.stats.triangles = 0;
     r.stats.drawCalls = 0;
+    r.geometryTriangles = 0;
     r.warpFallbacks = 0;
     double slowestSync = 0.0;
     for (const auto& bytes : stats) {
-        double v[9];
+        double v[10];
         if (bytes.size() != sizeof v) cluster.abortAll("gathered malformed frame statistics");
         std::memcpy(v, bytes.data(), sizeof v);
         r.frameMs = std::max(r.frameMs, v[0]);
@@ -69,6 +70,7 @@ double combineFrame(Cluster& cluster, gl::FrameResult& r, double syncMs, const s
         r.warpFallbacks = std::max(r.warpFallbacks, static_cast<int>(v[6]));  // a wall counts once, on any rank
         r.maxErrorDeg = std::max(r.maxErrorDeg, v[7]);  // each rank measures the textures its screens show
         r.maxErrorPixels = std::max(r.maxErrorPixels, v[8]);
+        r.geometryTriangles += static_cast<std::size_t>(v[9]);
     }
     r.images.clear();
     for (const auto& bytes : images)

@@ -111,6 +111,8 @@ RunSummary runSession(const RunOptions& o) {
     options.synchronousPaging = o.synchronousPaging;
     options.textureBudgetMB = o.textureBudgetMB;
     options.transition = o.transition == "warp" ? gl::Transition::Warp : gl::Transition::Blend;
+    options.render.lodPixels = o.lodPixels;
+    options.triangleBudget = o.triangleBudget;
     const std::vector<int> screens = cluster ? config::screensOfRank(o.display, rank, cluster->size()) : std::vector<int>{};
     gl::Walkthrough walkthrough(scene, description, display, *context, std::move(setup), options, screens);
 

@@ -38,6 +38,8 @@ struct RunOptions {
     std::optional<std::filesystem::path> record;// write the input stream for replay:
     bool synchronousPaging = false;             // see WalkthroughOptions
     double textureBudgetMB = 256.0;
+    double lodPixels = 0.0;                     // --lod: level-of-detail tolerance in pixels, 0 off
+    std::size_t triangleBudget = 0;             // --triangle-budget: per frame, 0 none (needs --lod)
     std::filesystem::path out;                  // output folder (created)
     bool verbose = true;                        // progress and summary on stdout
     bool cluster = false;                       // --cluster: one process per screen group on MPI

@@ -70,16 +70,25 @@ GLint wrapMode(int w) {
 
 }  // namespace
 
-GpuScene::GpuScene(const scenes::Scene& scene)
+GpuScene::GpuScene(const scenes::Scene& scene, const std::vector<scenes::MeshLod>* lods)
     : _vertices(createBuffer()), _indices(createBuffer()), _drawIndices(createBuffer()),
       _vertexArray(createVertexArray()) {
     std::vector<GpuVertex> vertices;
     std::vector<std::uint32_t> indices;
-    for (const scenes::Mesh& m : scene.meshes) {
-        _meshes.push_back({static_cast<std::uint32_t>(indices.size()), static_cast<std::uint32_t>(m.indices.size()),
-                           static_cast<std::int32_t>(vertices.size())});
+    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+        const scenes::Mesh& m = scene.meshes[i];
+        const auto baseVertex = static_cast<std::int32_t>(vertices.size());
+        const auto first = static_cast<std::uint32_t>(indices.size());
+        std::vector<GpuMeshRange>& levels = _meshes.emplace_back();
+        if (lods && i < lods->size() && !(*lods)[i].levels.empty()) {
+            const scenes::MeshLod& lod = (*lods)[i];
+            for (const scenes::LodLevel& l : lod.levels) levels.push_back({first + l.firstIndex, l.indexCount, baseVertex});
+            indices.insert(indices.end(), lod.indices.begin(), lod.indices.end());
+        } else {
+            levels.push_back({first, static_cast<std::uint32_t>(m.indices.size()), baseVertex});
+            indices.insert(indices.end(), m.indices.begin(), m.indices.end());
+        }
         appendVertices(m, vertices);
-        indices.insert(indices.end(), m.indices.begin(), m.indices.end());
     }
     _vertexBytes = vertices.size() * sizeof(GpuVertex);
     _indexBytes = indices.size() * sizeof(std::uint32_t);

@@ -9,8 +9,10 @@
 // baseInstance arrives in the shader as the index of its per-draw record.
 
 #include "display/gl/gl_object.h"
+#include "scenes/mesh_lod.h"
 #include "scenes/scene.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -37,10 +39,18 @@ struct GpuMeshRange {
 class GpuScene {
 public:
     // Uploads `scene`; needs a current GL 4.5 context. The Scene is not referenced afterwards.
-    explicit GpuScene(const scenes::Scene& scene);
+    // With `lods` (one per mesh, scenes/mesh_lod.h) every mesh's coarser levels are uploaded
+    // too, as further index ranges over the same vertices; without, each mesh has level 0 only.
+    explicit GpuScene(const scenes::Scene& scene, const std::vector<scenes::MeshLod>* lods = nullptr);
 
     GLuint vertexArray() const { return _vertexArray.id(); }
-    const GpuMeshRange& mesh(int index) const { return _meshes[index]; }
+    const GpuMeshRange& mesh(int index) const { return _meshes[index].front(); }
+    // Level `level` of mesh `index`, clamped to its coarsest level.
+    const GpuMeshRange& mesh(int index, int level) const {
+        const std::vector<GpuMeshRange>& levels = _meshes[index];
+        return levels[std::min<std::size_t>(static_cast<std::size_t>(std::max(level, 0)), levels.size() - 1)];
+    }
+    int levelCount(int index) const { return static_cast<int>(_meshes[index].size()); }
     // The texture of scene image `index` (GL_SRGB8_ALPHA8, mipmapped); images without pixels
     // get a 1 x 1 magenta texture.
     GLuint texture(int index) const { return _textures[index].id(); }
@@ -54,7 +64,7 @@ private:
     static int index(scenes::Wrap w) { return static_cast<int>(w); }
 
     GlObject _vertices, _indices, _drawIndices, _vertexArray;
-    std::vector<GpuMeshRange> _meshes;
+    std::vector<std::vector<GpuMeshRange>> _meshes;  // per mesh, its levels (finest first)
     std::vector<GlObject> _textures;
     std::array<GlObject, 9> _samplers;
     std::size_t _vertexBytes = 0, _indexBytes = 0;

@@ -1,11 +1,14 @@
 #include "display/gl/scene_renderer.h"
 
 #include "display/gl/shader.h"
+#include "display/pixel_scale.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <limits>
 
 namespace cavewall::gl {
 
@@ -74,7 +77,9 @@ void FrameStats::add(const ViewStats& view) {
 }
 
 SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings)
-    : _objects(scene.objects), _settings(settings), _gpu(scene),
+    : _objects(scene.objects), _settings(settings),
+      _lods(settings.lodPixels > 0.0 ? scenes::buildSceneLods(scene) : std::vector<scenes::MeshLod>{}),
+      _gpu(scene, _lods.empty() ? nullptr : &_lods),
       _program(buildProgram(kProgramName, shaders::sceneShader(shaders::kSceneVertex, _gpu.textureCount() > 0),
                             shaders::sceneShader(shaders::kSceneFragment, _gpu.textureCount() > 0))),
       _bvh(scene),
@@ -94,6 +99,7 @@ SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings
         _objectMaterials.push_back(valid ? material : count);
         _objectStates.push_back(drawState(m, o.flipWinding, settings.cullBackFaces, _gpu.textureCount()));
         _blendedObject.push_back(m.alphaMode == scenes::AlphaMode::Blend);
+        _modelStretch.push_back(display::maxStretch(glm::dmat3(o.worldFromModel)));
     }
 }
 
@@ -104,9 +110,15 @@ FrameStats SceneRenderer::render(const std::vector<display::ScreenView>& views, 
     const bool timed = _timer.begin();
     beginFrame(targets);
     FrameStats stats;
+    DrawFilter drawn = filter;
+    FrameLod lod;
+    if (hasLods() && !filter.lodLevels) {
+        lod = chooseLods(views, worldFromCave, filter, _settings.lodPixels);
+        drawn.lodLevels = &lod.levels;
+    }
     for (const display::ScreenView& view : views) {
         targets.bind(view.screen, RenderTargets::imageOf(view.pass));
-        stats.add(renderView(view, worldFromCave, filter));
+        stats.add(renderView(view, worldFromCave, drawn));
         if (afterView) afterView(view);
     }
     glDisable(GL_SCISSOR_TEST);
@@ -230,13 +242,23 @@ ViewStats SceneRenderer::drawFrustum(const display::OffAxisFrustum& frustum, con
     const glm::dmat4 viewFromWorld = frustum.viewFromFrame * frameFromWorld;
     auto depth = [&](int i) { return (viewFromWorld * glm::dvec4(_objects[i].worldBounds.centre(), 1.0)).z; };
     std::stable_sort(_blended.begin(), _blended.end(), [&](int a, int b) { return depth(a) < depth(b); });
+    // Opaque objects front to back by the distance of their bounds from the eye, so that the
+    // depth test rejects what they hide before it is shaded (the batches keep this order).
+    const glm::dvec3 eye = glm::dvec3(glm::inverse(frameFromWorld) * glm::dvec4(frustum.eye, 1.0));
+    _sortKeys.resize(_objects.size());
+    for (int i : _opaque) {
+        const scenes::Bounds& b = _objects[i].worldBounds;
+        const glm::dvec3 outside = glm::max(glm::max(b.min - eye, eye - b.max), glm::dvec3(0.0));
+        _sortKeys[i] = glm::dot(outside, outside);
+    }
+    std::stable_sort(_opaque.begin(), _opaque.end(), [&](int a, int b) { return _sortKeys[a] < _sortKeys[b]; });
 
     _records.clear();
     _commands.clear();
     _batches.clear();
-    addDraws(_opaque, frustum, frameFromWorld, true);
+    addDraws(_opaque, frustum, frameFromWorld, true, filter.lodLevels);
     const std::size_t opaqueBatches = _batches.size();
-    addDraws(_blended, frustum, frameFromWorld, false);
+    addDraws(_blended, frustum, frameFromWorld, false, filter.lodLevels);
     if (_batches.empty()) return stats;
     upload(_viewBuffers[_nextViewBuffers]);
     _nextViewBuffers = (_nextViewBuffers + 1) % kViewBufferSets;
@@ -272,7 +294,7 @@ void SceneRenderer::issueBatches(std::size_t firstBlended) {
 
 // Appends a record per object and batches of their commands.
 void SceneRenderer::addDraws(const std::vector<int>& objects, const display::OffAxisFrustum& frustum,
-                             const glm::dmat4& frameFromWorld, bool sortByState) {
+                             const glm::dmat4& frameFromWorld, bool sortByState, const std::vector<int>* levels) {
     _items.clear();
     for (int i : objects) {
         const scenes::Object& o = _objects[i];
@@ -282,10 +304,61 @@ void SceneRenderer::addDraws(const std::vector<int>& objects, const display::Off
         const glm::dmat3 normal = glm::transpose(glm::inverse(glm::dmat3(frustum.viewFromFrame * frameFromModel)));
         for (int c = 0; c < 3; ++c) r.normalMatrix[c] = glm::vec4(glm::vec3(normal[c]), 0.0f);
         r.info.x = _objectMaterials[i];
-        _items.push_back({_objectStates[i], _gpu.mesh(o.mesh), static_cast<std::uint32_t>(_records.size())});
+        const int level = levels && i < static_cast<int>(levels->size()) ? (*levels)[i] : 0;
+        _items.push_back({_objectStates[i], _gpu.mesh(o.mesh, level), static_cast<std::uint32_t>(_records.size())});
         _records.push_back(r);
     }
     appendBatches(_items, sortByState, _commands, _batches);
+}
+
+// The most pixels one model unit of `object`'s error covers in `view` (display/pixel_scale.h).
+double SceneRenderer::pixelsPerUnit(int object, const display::ScreenView& view, const glm::dmat4& viewFromWorld) const {
+    const scenes::Bounds& b = _objects[object].worldBounds;
+    std::array<glm::dvec3, 8> corners;
+    for (int c = 0; c < 8; ++c) {
+        const glm::dvec3 p(c & 1 ? b.max.x : b.min.x, c & 2 ? b.max.y : b.min.y, c & 4 ? b.max.z : b.min.z);
+        corners[c] = glm::dvec3(viewFromWorld * glm::dvec4(p, 1.0));
+    }
+    const double distance = display::nearestDistance(corners);
+    if (!(distance > 0.0)) return std::numeric_limits<double>::infinity();
+    const display::ViewScreen screen =
+        display::viewScreen(view.frustum, {view.pass.viewport.width, view.pass.viewport.height});
+    const double stretch = _modelStretch[object] * display::maxStretch(glm::dmat3(viewFromWorld));
+    return display::maxPixelsPerRadian(screen, corners) * stretch / distance;
+}
+
+FrameLod SceneRenderer::chooseLods(const std::vector<display::ScreenView>& views, const glm::dmat4& worldFromCave,
+                                   const DrawFilter& filter, double tolerancePx, std::size_t triangleBudget) {
+    FrameLod out;
+    out.levels.assign(_objects.size(), 0);
+    if (!hasLods()) return out;
+    // Per object drawn by some view: the largest pixels per unit over its views, and their count.
+    std::vector<double> perUnit(_objects.size(), 0.0);
+    std::vector<int> viewCount(_objects.size(), 0);
+    const glm::dmat4 frameFromWorld = glm::inverse(worldFromCave);
+    for (const display::ScreenView& view : views) {
+        select(view.frustum, frameFromWorld, filter);
+        const glm::dmat4 viewFromWorld = view.frustum.viewFromFrame * frameFromWorld;
+        for (const std::vector<int>* list : {&_opaque, &_blended})
+            for (int i : *list) {
+                perUnit[i] = std::max(perUnit[i], pixelsPerUnit(i, view, viewFromWorld));
+                ++viewCount[i];
+            }
+    }
+    std::vector<scenes::LodCandidate> candidates;
+    std::vector<int> objects;
+    for (int i = 0; i < static_cast<int>(_objects.size()); ++i) {
+        if (viewCount[i] == 0) continue;
+        candidates.push_back({&_lods[_objects[i].mesh], perUnit[i], viewCount[i]});
+        objects.push_back(i);
+    }
+    const scenes::LodChoice choice = scenes::chooseLevels(candidates, tolerancePx, triangleBudget);
+    for (std::size_t k = 0; k < objects.size(); ++k) out.levels[objects[k]] = choice.level[k];
+    out.tolerancePx = choice.tolerancePx;
+    out.maxErrorPx = choice.maxErrorPx;
+    out.triangles = choice.triangles;
+    out.overBudget = choice.overBudget;
+    return out;
 }
 
 void SceneRenderer::upload(ViewBuffers& buffers) {

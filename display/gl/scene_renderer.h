@@ -41,6 +41,7 @@
 #include "display/gl/scene_gpu.h"
 #include "display/gl/scene_shaders.h"
 #include "scenes/bvh.h"
+#include "scenes/mesh_lod.h"
 #include "scenes/scene.h"
 
 #include <glm/glm.hpp>
@@ -57,6 +58,11 @@ struct RenderSettings {
     glm::vec4 clearColor{0.02f, 0.02f, 0.03f, 1.0f};  // linear RGBA
     float ambient = 0.35f;                            // share of light that does not depend on the angle, [0, 1]
     bool cullBackFaces = true;                        // false: draw both faces of everything (tests)
+    // Levels of detail: > 0 builds every mesh's level chain (scenes/mesh_lod.h) when the
+    // renderer is made, and render() draws each object at the coarsest level whose geometric
+    // error covers at most this many pixels on every screen it appears on (chooseLods). 0: no
+    // levels are built, everything is drawn at full detail.
+    double lodPixels = 0.0;
 };
 
 // Which objects a view draws. An object is drawn when every given criterion selects it (and
@@ -70,6 +76,18 @@ struct DrawFilter {
     bool skipStructure = false;                 // leave out Role::Structure objects
     bool onlyStructure = false;                 // leave out everything but structure (both flags: nothing)
     bool frustumCull = true;                    // false: submit every selected object (tests, benchmarks)
+    const std::vector<int>* lodLevels = nullptr; // per object index, the level of detail to draw
+                                                // (chooseLods; clamped to the mesh's levels); nullptr
+                                                // or beyond its end: level 0, full detail
+};
+
+// The frame's levels of detail (SceneRenderer::chooseLods).
+struct FrameLod {
+    std::vector<int> levels;     // per object index (DrawFilter::lodLevels); 0 where not drawn
+    double tolerancePx = 0.0;    // the pixel tolerance every drawn object meets
+    double maxErrorPx = 0.0;     // the largest geometric error drawn, in pixels on its screen
+    std::size_t triangles = 0;   // triangles the views will submit at these levels
+    bool overBudget = false;     // the coarsest levels still exceed the triangle budget
 };
 
 // What one view cost and submitted.
@@ -145,6 +163,16 @@ public:
     ViewStats renderFrustum(const display::OffAxisFrustum& frustum, const glm::dmat4& worldFromFrame,
                             const ViewTarget& target, const DrawFilter& filter = {});
 
+    // Levels of detail for one frame of `views` (Display::views): per object drawn by some view
+    // (after `filter` and culling), the coarsest level whose error covers at most `tolerancePx`
+    // pixels on every screen it is drawn on (display/pixel_scale.h), one level for all views so
+    // that neighbouring screens and both eyes draw the same shape. With `triangleBudget` > 0 the
+    // tolerance rises to the least that fits the views' triangles into the budget
+    // (scenes::chooseLevels). Without levels (RenderSettings::lodPixels = 0) everything is level 0.
+    FrameLod chooseLods(const std::vector<display::ScreenView>& views, const glm::dmat4& worldFromCave,
+                        const DrawFilter& filter, double tolerancePx, std::size_t triangleBudget = 0);
+    bool hasLods() const { return !_lods.empty(); }
+
     // GPU milliseconds of the last render(), waiting for the GPU if needed (for benchmarks and
     // one-shot renders; a frame loop reads FrameStats::gpuMs instead). -1 before any render().
     double waitGpuMs() { return _timer.waitMs(); }
@@ -168,7 +196,8 @@ private:
     ViewStats drawFrustum(const display::OffAxisFrustum& frustum, const glm::dmat4& frameFromWorld,
                           const DrawFilter& filter);
     void addDraws(const std::vector<int>& objects, const display::OffAxisFrustum& frustum,
-                  const glm::dmat4& frameFromWorld, bool sortByState);
+                  const glm::dmat4& frameFromWorld, bool sortByState, const std::vector<int>* levels);
+    double pixelsPerUnit(int object, const display::ScreenView& view, const glm::dmat4& viewFromWorld) const;
     void upload(ViewBuffers& buffers);
     void issueBatches(std::size_t firstBlended);
     void applyState(const DrawState& state);
@@ -177,7 +206,9 @@ private:
     std::vector<DrawState> _objectStates;     // per object
     std::vector<int> _objectMaterials;        // per object: material record index
     std::vector<bool> _blendedObject;         // per object: its material blends
+    std::vector<double> _modelStretch;        // per object: maxStretch of worldFromModel
     RenderSettings _settings;
+    std::vector<scenes::MeshLod> _lods;       // per mesh; empty without RenderSettings::lodPixels
     GpuScene _gpu;
     GlObject _program, _materialRecords;
     GLint _projection = -1, _ambient = -1;
@@ -188,6 +219,7 @@ private:
     // Per-view scratch, kept to avoid allocating per view.
     std::vector<int> _visible;                 // culled candidates
     std::vector<int> _opaque, _blended;        // selected object indices by pass
+    std::vector<double> _sortKeys;             // per object: squared distance of its bounds from the eye
     std::vector<std::uint32_t> _listStamp;     // per object: == _stamp when in DrawFilter::objects
     std::uint32_t _stamp = 0;
     std::vector<shaders::DrawRecord> _records;

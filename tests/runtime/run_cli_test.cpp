@@ -6,6 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <filesystem>
@@ -168,6 +169,9 @@ TEST(RunCli, BadFlagsAndSpecsGiveClearErrors) {
         {"tracker", {"--tracker", "sim:run"}, "tracker 'sim:run'"},
         {"unknown flag", {"--speed", "2"}, "--speed: unknown flag"},
         {"frames", {"--frames", "0"}, "--frames: expected an integer in [1, "},
+        {"budget without levels", {"--triangle-budget", "5000"},
+         "--triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod 0"},
+        {"negative lod", {"--lod", "-1"}, "--lod: expected a number in [0"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
@@ -180,6 +184,61 @@ TEST(RunCli, BadFlagsAndSpecsGiveClearErrors) {
         EXPECT_EQ(r.exitCode, 1);
         EXPECT_THAT(r.err, HasSubstr(c.message));
     }
+}
+
+TEST(RunCli, LevelsOfDetailReportTheirToleranceErrorAndBudget) {
+    // The same walk with full detail, with levels of detail at 1 px, and with a triangle budget
+    // of half the 1 px frames' median: frames.csv reports the tolerance used and the largest
+    // error drawn, which never exceeds it.
+    std::map<std::string, std::vector<std::map<std::string, std::string>>> runs;
+    for (const auto& [name, extra] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+             {"full", {}}, {"lod", {"--lod", "1"}}}) {
+        const fs::path out = outputDir("lod-" + name);
+        std::vector<std::string> args = wallRun(out, "sim:walk?seed=2", 12);
+        args.insert(args.end(), {"--pace", "3", "--sync-paging"});
+        args.insert(args.end(), extra.begin(), extra.end());
+        const CliResult r = runCavewall(args);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        runs[name] = readCsv(out / "frames.csv");
+    }
+    std::vector<long> lodTriangles;
+    for (std::size_t i = 0; i < 12; ++i) {
+        SCOPED_TRACE(i);
+        EXPECT_EQ(runs["full"][i].at("lod_px"), "0.000");
+        EXPECT_EQ(runs["full"][i].at("lod_err_px"), "0.000");
+        EXPECT_EQ(std::stod(runs["lod"][i].at("lod_px")), 1.0);
+        EXPECT_LE(std::stod(runs["lod"][i].at("lod_err_px")), 1.0);
+        EXPECT_LT(std::stol(runs["lod"][i].at("triangles")), std::stol(runs["full"][i].at("triangles")));
+        lodTriangles.push_back(std::stol(runs["lod"][i].at("triangles")));
+    }
+    std::sort(lodTriangles.begin(), lodTriangles.end());
+    // Below the median, but above what the coarsest levels of this small plant draw (its round
+    // parts have 6 segments, its boxes do not simplify).
+    const long budget = lodTriangles[6] * 85 / 100;
+    const fs::path out = outputDir("lod-budget");
+    std::vector<std::string> args = wallRun(out, "sim:walk?seed=2", 12);
+    args.insert(args.end(), {"--pace", "3", "--sync-paging", "--lod", "1", "--triangle-budget", std::to_string(budget)});
+    const CliResult r = runCavewall(args);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    int coarsened = 0;
+    for (const auto& row : readCsv(out / "frames.csv")) {
+        SCOPED_TRACE(row.at("frame"));
+        EXPECT_EQ(row.at("lod_over_budget"), "0");
+        // The budget covers the scene renderer's triangles (geometry_triangles); the wall quads
+        // and the hand cursor come on top.
+        EXPECT_LE(std::stol(row.at("geometry_triangles")), budget);
+        EXPECT_GT(std::stol(row.at("triangles")), std::stol(row.at("geometry_triangles")));
+        EXPECT_GE(std::stod(row.at("lod_px")), 1.0);
+        EXPECT_LE(std::stod(row.at("lod_err_px")), std::stod(row.at("lod_px")) + 1e-3);
+        coarsened += std::stod(row.at("lod_px")) > 1.0;
+    }
+    EXPECT_GE(coarsened, 6);  // at least the frames above the median
+    // A budget no level can meet: every frame is flagged and drawn at its coarsest.
+    const fs::path impossible = outputDir("lod-impossible");
+    args = wallRun(impossible, "sim:walk?seed=2", 3);
+    args.insert(args.end(), {"--pace", "3", "--sync-paging", "--lod", "1", "--triangle-budget", "10"});
+    ASSERT_EQ(runCavewall(args).exitCode, 0);
+    for (const auto& row : readCsv(impossible / "frames.csv")) EXPECT_EQ(row.at("lod_over_budget"), "1");
 }
 
 TEST(RunCli, ReplayReproducesPosesAndFramesExactly) {

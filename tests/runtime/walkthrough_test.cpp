@@ -8,6 +8,7 @@
 #include "scenes/image_io.h"
 
 #include <gmock/gmock.h>
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <thread>
@@ -111,6 +112,48 @@ TEST_F(WalkthroughTest, GoldenFramesInTextureBlendAndGeometryZones) {
         EXPECT_TRUE(c.want(Blend{wallAB, 0, -1, ab->textures, ab->geometryWeight}));
         expectMatchesGolden(gl::foldoutOf(display, r.images), c.name);
     }
+}
+
+TEST_F(WalkthroughTest, LevelsOfDetailKeepTheirToleranceAndTheTriangleBudget) {
+    const display::Display display = testDisplay(64);
+    gl::WalkthroughOptions options;
+    options.synchronousPaging = true;
+    options.render.lodPixels = 1.0;
+    gl::Walkthrough free(plant.scene, plant.description, display, *context, plant.walls, options);
+    gl::Walkthrough full(plant.scene, plant.description, display, *context, plant.walls);
+    // Eyes along the north aisle, through texture, blend and geometry zones.
+    std::vector<gl::FrameInput> frames;
+    for (double x = -36.0; x <= 36.0; x += 4.5) {
+        gl::FrameInput in;
+        in.frame = static_cast<long>(frames.size());
+        in.worldFromCave = cavePlacedAt({x, 1.7, -10.0});
+        frames.push_back(in);
+    }
+    std::vector<std::size_t> loads;
+    for (const gl::FrameInput& in : frames) {
+        const gl::FrameResult r = free.renderFrame(in), f = full.renderFrame(in);
+        EXPECT_EQ(r.lodTolerancePx, 1.0);
+        EXPECT_LE(r.lodErrorPx, 1.0);
+        EXPECT_FALSE(r.lodOverBudget);
+        EXPECT_EQ(f.lodErrorPx, 0.0);
+        // Same selection, fewer triangles: only the levels differ.
+        EXPECT_EQ(r.cell, f.cell);
+        EXPECT_LE(r.geometryTriangles, f.geometryTriangles);
+        loads.push_back(r.geometryTriangles);
+    }
+    std::sort(loads.begin(), loads.end());
+    options.triangleBudget = loads[loads.size() / 2];  // the median: the heavier half must coarsen
+    gl::Walkthrough capped(plant.scene, plant.description, display, *context, plant.walls, options);
+    int raised = 0;
+    for (const gl::FrameInput& in : frames) {
+        const gl::FrameResult r = capped.renderFrame(in);
+        EXPECT_FALSE(r.lodOverBudget);
+        EXPECT_LE(r.geometryTriangles, options.triangleBudget);
+        EXPECT_GE(r.lodTolerancePx, 1.0);
+        EXPECT_LE(r.lodErrorPx, r.lodTolerancePx);
+        raised += r.lodTolerancePx > 1.0;
+    }
+    EXPECT_GE(raised, static_cast<int>(frames.size()) / 2 - 1);
 }
 
 // The red box of twoCells() as seen in a frame: pixels clearly red.

@@ -300,22 +300,28 @@ void Walkthrough::measureError(glm::dvec3 eyeCave, FrameResult& result) const {
         result.maxErrorPixels = std::max(result.maxErrorPixels, worst * pixelsPerRadian(_display, screen, eyeCave));
 }
 
-void Walkthrough::drawViews(const FrameInput& input, const std::vector<int>& objects,
-                            const std::vector<WallDraw>& walls, FrameResult& result) {
+// The views of the screens this instance renders.
+std::vector<display::ScreenView> Walkthrough::renderedViews(const display::HeadPose& head) const {
+    std::vector<display::ScreenView> views = _display.views(head);
+    std::erase_if(views, [&](const display::ScreenView& v) {
+        return std::find(_screens.begin(), _screens.end(), v.screen) == _screens.end();
+    });
+    return views;
+}
+
+void Walkthrough::drawViews(const FrameInput& input, const DrawFilter& filter, const std::vector<WallDraw>& walls,
+                            FrameResult& result) {
     const glm::dmat4 caveFromWorld = glm::inverse(input.worldFromCave);
-    auto rendered = [&](int screen) { return std::find(_screens.begin(), _screens.end(), screen) != _screens.end(); };
     _renderer.beginFrame(_targets, _screens);
-    DrawFilter filter;
-    filter.objects = &objects;
     result.perScreen.assign(_display.screens().size(), ViewStats{});
-    for (const display::ScreenView& view : _display.views(input.head)) {
-        if (!rendered(view.screen)) continue;
+    for (const display::ScreenView& view : renderedViews(input.head)) {
         const auto viewStart = Clock::now();
         const FrameStats before = result.stats;
         _targets.bind(view.screen, RenderTargets::imageOf(view.pass));
         const ViewStats geometry = _renderer.renderView(view, input.worldFromCave, filter);
         result.stats.drawCalls += geometry.drawCalls;
         result.stats.triangles += geometry.triangles;
+        result.geometryTriangles += geometry.triangles;
         if (_warp) _warp->draw(_warpWalls, view, caveFromWorld, result.stats);
         // renderView leaves viewport, scissor and colour mask set for this view.
         if (_walls) _walls->pass.draw(walls, view.frustum, caveFromWorld, _walls->store.sampler(), result.stats);
@@ -414,8 +420,21 @@ FrameResult Walkthrough::renderFrame(const FrameInput& input) {
     else
         result.cell = scenes::findCell(_description.cells, result.eyeWorld);  // reported only
     const std::vector<int> objects = visibleObjects(cells);
+    DrawFilter filter;
+    filter.objects = &objects;
+    FrameLod lod;
+    if (_renderer.hasLods()) {
+        // Over every screen, also those of other cluster ranks: each rank then picks the same
+        // levels for what several draw, and the budget is the whole display's.
+        lod = _renderer.chooseLods(_display.views(input.head), input.worldFromCave, filter, _options.render.lodPixels,
+                                   _options.triangleBudget);
+        filter.lodLevels = &lod.levels;
+        result.lodTolerancePx = lod.tolerancePx;
+        result.lodErrorPx = lod.maxErrorPx;
+        result.lodOverBudget = lod.overBudget;
+    }
     _timer.begin();
-    drawViews(input, objects, walls, result);
+    drawViews(input, filter, walls, result);
     _timer.end();
     result.cpuMs = msSince(start);
     glFinish();

@@ -89,6 +89,12 @@ struct WalkthroughOptions {
     walls::TexturePager::Decoder decoder;
     Transition transition = Transition::Blend;  // Warp: structure behind textured walls warped
     double morphSeconds = 0.5;               // Warp: duration of a warp-morph, seconds, > 0
+    // Levels of detail (render.lodPixels > 0): the geometry of every frame is drawn at the
+    // levels SceneRenderer::chooseLods picks for render.lodPixels, over all screens and eyes
+    // at once. triangleBudget > 0 caps the triangles the scene renderer submits per frame (all
+    // views; the wall, warp and cursor passes are not counted) by raising the tolerance
+    // (seed 004's frame budget); 0: no cap.
+    std::size_t triangleBudget = 0;
 };
 
 struct FrameInput {
@@ -125,6 +131,13 @@ struct FrameResult {
     // with d the eye's distance to the screen plane and r its distance to the farthest
     // screen corner (the largest pixels per radian on that screen); max over screens.
     double maxErrorPixels = 0.0;
+    // Levels of detail (WalkthroughOptions): the pixel tolerance used this frame (raised above
+    // render.lodPixels when the triangle budget needed it), the largest geometric error drawn
+    // in pixels, and whether even the coarsest levels exceeded the budget. 0 without levels.
+    double lodTolerancePx = 0.0, lodErrorPx = 0.0;
+    bool lodOverBudget = false;
+    std::size_t geometryTriangles = 0;       // of stats.triangles, what the scene renderer submitted
+                                             // (what triangleBudget caps)
     int warpFallbacks = 0;                   // Transition::Warp: walls drawn as geometry because
                                              // their warp was ill-conditioned (eye near the plane)
     std::vector<WallState> walls;
@@ -170,8 +183,9 @@ private:
                                      std::optional<WallDraw> draw, std::vector<bool>& cells,
                                      std::vector<int>& morphCells, FrameResult& result);
     void measureError(glm::dvec3 eyeCave, FrameResult& result) const;
-    void drawViews(const FrameInput& input, const std::vector<int>& objects, const std::vector<WallDraw>& walls,
+    void drawViews(const FrameInput& input, const DrawFilter& filter, const std::vector<WallDraw>& walls,
                    FrameResult& result);
+    std::vector<display::ScreenView> renderedViews(const display::HeadPose& head) const;
     void present();
 
     const scenes::Scene& _scene;
