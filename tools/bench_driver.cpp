@@ -61,12 +61,23 @@ BakedWalls bakeWalls(const BenchOptions& o, double alphaDeg, const scenes::Scene
     return out;
 }
 
-ModeResult namedMode(std::string mode, double alphaDeg = 0.0, std::string transition = "none") {
+ModeResult namedMode(std::string mode, double alphaDeg = 0.0, std::string transition = "none", double lodPixels = 0.0,
+                     std::size_t triangleBudget = 0) {
     ModeResult m;
     m.mode = std::move(mode);
     m.alphaDeg = alphaDeg;
     m.transition = std::move(transition);
+    m.lodPixels = lodPixels;
+    m.triangleBudget = triangleBudget;
     return m;
+}
+
+double medianTriangles(const ModeResult& m) {
+    std::vector<double> t;
+    for (const FrameSample& f : m.frames) t.push_back(f.triangles);
+    if (t.empty()) return 0.0;
+    std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
+    return t[t.size() / 2];
 }
 
 void say(const BenchOptions& o, const std::string& line) {
@@ -97,7 +108,11 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
             "view) at alpha " + config::formatNumber(o.transitionAlphaDeg) + "; 'blend paged' at the same alpha pages "
             "as `cavewall run` does (background decoding, default budget and upload limit, cold start)",
             "near: the near-geometry limit, the viewer's cell plus its walls as bare quads (one 1x1 texture); "
-            "cells: the cells the walls mode draws as geometry, without textures"};
+            "cells: the cells the walls mode draws as geometry, without textures",
+            o.lodPixels > 0.0 ? "lod: levels of detail built when the mode starts (meshoptimizer, sampled Hausdorff "
+                                "error), each object drawn at the coarsest level within " +
+                                    config::formatNumber(o.lodPixels) + " px on every screen it appears on"
+                              : "lod: off (--lod 0)"};
 }
 
 }  // namespace
@@ -135,6 +150,13 @@ BenchReport runBenchmark(const BenchOptions& o) {
     runWalkthroughMode(c, std::nullopt, full, nullptr, &reference);
     report.modes.push_back(full.finish(0.0));
     const double fullP50 = report.modes.front().frameMs.p50;
+    const bool lod = o.lodPixels > 0.0;
+    if (lod) {
+        say(o, "bench: full geometry, levels of detail at " + config::formatNumber(o.lodPixels) + " px");
+        ModeAccumulator acc(namedMode("full", 0.0, "none", o.lodPixels), display);
+        runWalkthroughMode(c, std::nullopt, acc, &reference, nullptr);
+        report.modes.push_back(acc.finish(fullP50));
+    }
 
     std::vector<BakedWalls> baked;
     for (double alpha : o.alphasDeg) {
@@ -146,18 +168,23 @@ BenchReport runBenchmark(const BenchOptions& o) {
     const auto listed = std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg);
     const std::size_t transitionIndex = listed - o.alphasDeg.begin();  // listed: checked on entry
     const gl::WallSetup& cellPlan = baked[transitionIndex].setup;
-    for (const bool nearOnly : {false, true}) {
-        say(o, nearOnly ? "bench: near-geometry limit (the viewer's cell and bare wall quads)"
-                        : "bench: cell culling without textures");
-        ModeAccumulator acc(namedMode(nearOnly ? "near" : "cells"), display);
+    auto runCells = [&](bool nearOnly, double lodPixels) {
+        say(o, std::string(nearOnly ? "bench: near-geometry limit (the viewer's cell and bare wall quads)"
+                                    : "bench: cell culling without textures") +
+                   (lodPixels > 0.0 ? ", levels of detail" : ""));
+        ModeAccumulator acc(namedMode(nearOnly ? "near" : "cells", 0.0, "none", lodPixels), display);
         runCellMode(c, cellPlan, nearOnly, acc, reference);
         report.modes.push_back(acc.finish(fullP50));
-    }
-    auto runWalls = [&](std::size_t i, gl::Transition transition, bool paged) {
+    };
+    runCells(false, 0.0);
+    runCells(true, 0.0);
+    if (lod) runCells(true, o.lodPixels);
+    auto runWalls = [&](std::size_t i, gl::Transition transition, bool paged, double lodPixels = 0.0,
+                        std::size_t budget = 0) {
         const std::string label = std::string(transition == gl::Transition::Warp ? "warp" : "blend") +
                                   (paged ? " paged" : "");
-        say(o, "bench: walls at a=" + config::formatNumber(o.alphasDeg[i]) + " deg, " + label);
-        ModeResult mode = namedMode("walls", o.alphasDeg[i], label);
+        ModeResult mode = namedMode("walls", o.alphasDeg[i], label, lodPixels, budget);
+        say(o, "bench: " + modeLabel(mode));
         mode.textures = static_cast<int>(baked[i].setup.plan.textures.size());
         mode.texels = baked[i].texels;
         mode.diskMB = baked[i].diskMB;
@@ -166,8 +193,22 @@ BenchReport runBenchmark(const BenchOptions& o) {
         report.modes.push_back(acc.finish(fullP50));
     };
     for (std::size_t i = 0; i < baked.size(); ++i) runWalls(i, gl::Transition::Blend, false);
+    if (lod)
+        for (std::size_t i = 0; i < baked.size(); ++i) runWalls(i, gl::Transition::Blend, false, o.lodPixels);
     runWalls(transitionIndex, gl::Transition::Warp, false);
     runWalls(transitionIndex, gl::Transition::Blend, true);
+    if (lod) {
+        std::size_t budget = o.triangleBudget;
+        if (budget == 0) {  // the median of the same mode without a budget
+            for (const ModeResult& m : report.modes)
+                if (m.mode == "walls" && m.alphaDeg == o.transitionAlphaDeg && m.transition == "blend" &&
+                    m.lodPixels == o.lodPixels && m.triangleBudget == 0)
+                    budget = static_cast<std::size_t>(medianTriangles(m));
+            report.header.push_back("triangle budget: " + std::to_string(budget) +
+                                    " per frame, the median of the same walls mode without a budget");
+        }
+        runWalls(transitionIndex, gl::Transition::Blend, false, o.lodPixels, std::max<std::size_t>(budget, 1));
+    }
     report.header.push_back("bench time: " +
                             fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 0) +
                             " s in total (all modes, bakes included)");

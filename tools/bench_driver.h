@@ -16,6 +16,11 @@
 //           measures drawing, not decoding).
 //  - walls at `transitionAlphaDeg` (or the first alpha when it is not listed), transition warp
 //           (gl::Transition::Warp), on the same bake.
+//  - with `lodPixels` > 0, levels of detail (scenes/mesh_lod.h) at that pixel tolerance: full,
+//           near and every walls blend mode once more with them, then the walls blend mode at
+//           `transitionAlphaDeg` with them under a triangle budget (`triangleBudget`, or the
+//           median triangles of that mode without a budget), so that the levels' share of the
+//           speed-up and of the error reads apart from the walls'.
 //
 // Timing: frame ms is the walkthrough's FrameResult::frameMs (CPU submission + glFinish) or,
 // for cells/near, SceneRenderer::render + waiting for its GPU timer; every frame of the path
@@ -44,6 +49,9 @@ struct BenchOptions {
     double transitionAlphaDeg = 20.0;             // warp and paged modes; plan of the cells modes
     walls::PlanOptions plan;                      // alphaDeg replaced per mode
     int bakeResolution = 512;                     // BakeSettings::maxResolution
+    double lodPixels = 1.0;                       // level-of-detail modes' tolerance; 0: none
+    std::size_t triangleBudget = 0;               // the budget mode's; 0: the median of its mode
+                                                  // without a budget
     std::optional<std::filesystem::path> cache;   // bake cache (default: the baker's)
     bool verbose = true;                          // progress on stdout
 };

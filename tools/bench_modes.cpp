@@ -44,6 +44,9 @@ void ModeAccumulator::addFrame(const FrameCost& cost) {
     _mode.maxErrPx = std::max(_mode.maxErrPx, cost.errorPx);
     _mode.gpuMB = std::max(_mode.gpuMB, cost.residentMB);
     _mode.misses = std::max(_mode.misses, cost.misses);
+    _mode.maxLodErrPx = std::max(_mode.maxLodErrPx, cost.lodErrorPx);
+    _lodTolerance += cost.lodTolerancePx;
+    _mode.overBudgetFrames += cost.overBudget ? 1 : 0;
     for (std::size_t i = 0; i < cost.perScreen.size() && i < _screenCpu.size(); ++i) {
         _screenCpu[i].push_back(cost.perScreen[i].cpuMs);
         _screenTriangles[i] += static_cast<double>(cost.perScreen[i].triangles);
@@ -71,6 +74,7 @@ ModeResult ModeAccumulator::finish(double fullP50) const {
     const double n = std::max<double>(1.0, static_cast<double>(_frame.size()));
     m.triangles = _triangles / n;
     m.drawCalls = _drawCalls / n;
+    m.meanLodTolerancePx = _lodTolerance / n;
     m.speedup = fullP50 > 0.0 && m.frameMs.p50 > 0.0 ? fullP50 / m.frameMs.p50 : 1.0;
     std::vector<double> triangles;
     for (const FrameSample& f : m.frames) triangles.push_back(f.triangles);
@@ -91,6 +95,8 @@ void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls
                         bool paged) {
     gl::WalkthroughOptions options;
     options.transition = transition;
+    options.render.lodPixels = acc.mode().lodPixels;
+    options.triangleBudget = acc.mode().triangleBudget;
     if (!paged) {
         options.synchronousPaging = true;
         options.textureBudgetMB = 4096.0;  // every texture of the path stays resident after warm-up
@@ -110,7 +116,7 @@ void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls
         gl::FrameResult r = walkthrough.renderFrame(in);
         acc.addFrame({r.frameMs, r.cpuMs, r.gpuMs, static_cast<double>(r.stats.triangles),
                       static_cast<double>(r.stats.drawCalls), r.maxErrorDeg, r.maxErrorPixels, r.pager.residentMB,
-                      r.pager.misses, r.perScreen});
+                      r.pager.misses, r.perScreen, r.lodErrorPx, r.lodTolerancePx, r.lodOverBudget});
         if (!in.readImages) continue;
         if (store) (*store)[in.frame] = std::move(r.images);
         else if (reference) acc.compare(r.images, reference->at(in.frame));
@@ -145,7 +151,9 @@ void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly
                  const ReferenceImages& reference) {
     const walls::FrameSelector selector(setup.plan, setup.table, c.description);
     const gl::RenderTargets targets(c.display, c.context);
-    gl::SceneRenderer renderer(c.scene);
+    gl::RenderSettings settings;
+    settings.lodPixels = acc.mode().lodPixels;
+    gl::SceneRenderer renderer(c.scene, settings);
     // The limit also draws every wall of the viewer's cell as a bare quad: one 1x1 texture
     // through the walls' own pass, so it pays the quads' fill but no texture blending or paging.
     std::optional<gl::WallPass> quadPass;
@@ -172,6 +180,11 @@ void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly
             quadPass->draw(quads, view.frustum, caveFromWorld, 0, quadStats);
         };
         const std::vector<display::ScreenView> views = c.display.views(in.head);
+        gl::FrameLod lod;
+        if (renderer.hasLods()) {
+            lod = renderer.chooseLods(views, in.worldFromCave, filter, settings.lodPixels);
+            filter.lodLevels = &lod.levels;
+        }
         const gl::FrameStats stats = renderer.render(views, targets, in.worldFromCave, filter,
                                                      quadPass ? std::function(afterView) : nullptr);
         const double gpu = renderer.waitGpuMs();
@@ -182,6 +195,8 @@ void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly
         cost->gpuMs = gpu;
         cost->triangles = static_cast<double>(stats.triangles + quadStats.triangles);
         cost->drawCalls = static_cast<double>(stats.drawCalls + quadStats.drawCalls);
+        cost->lodErrorPx = lod.maxErrorPx;
+        cost->lodTolerancePx = lod.tolerancePx;
         cost->perScreen.assign(c.display.screens().size(), gl::ViewStats{});
         for (std::size_t v = 0; v < stats.perView.size() && v < views.size(); ++v) {  // perView is in view order
             gl::ViewStats& screen = cost->perScreen[views[v].screen];

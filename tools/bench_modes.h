@@ -24,6 +24,8 @@ struct FrameCost {
     double residentMB = 0.0;
     long misses = 0;                    // cumulative, as the pager counts
     std::vector<gl::ViewStats> perScreen;  // per display screen: CPU ms, triangles, draw calls
+    double lodErrorPx = 0.0, lodTolerancePx = 0.0;  // FrameResult's (0 without levels of detail)
+    bool overBudget = false;
 };
 
 // Collects one mode's frames and comparisons; finish() fills the ModeResult.
@@ -31,6 +33,7 @@ class ModeAccumulator {
 public:
     ModeAccumulator(ModeResult mode, const display::Display& display);
     void addFrame(const FrameCost& cost);
+    const ModeResult& mode() const { return _mode; }
     // Compares `images` with the reference of the same frame (same screens and images).
     void compare(const std::vector<gl::ScreenImage>& images, const std::vector<gl::ScreenImage>& reference);
     // `fullP50`: the reference mode's median frame ms (0: this is the reference).
@@ -39,7 +42,7 @@ public:
 private:
     ModeResult _mode;
     std::vector<double> _frame, _cpu, _gpu;
-    double _triangles = 0.0, _drawCalls = 0.0;
+    double _triangles = 0.0, _drawCalls = 0.0, _lodTolerance = 0.0;
     ErrorPool _overall;
     std::vector<ErrorPool> _screens;
     std::vector<std::vector<double>> _screenCpu;           // per screen, per frame
@@ -61,11 +64,14 @@ struct ModeContext {
 // in `store` (the full-geometry reference run). `paged`: as `cavewall run` pages, in the
 // background under the default texture budget and upload limit, from a cold start (three
 // warm-up frames), so the timed frames include every page-in, upload and fallback.
+// The mode's ModeResult::lodPixels and triangleBudget set the levels of detail
+// (WalkthroughOptions::render.lodPixels, triangleBudget).
 void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls, ModeAccumulator& acc,
                         const ReferenceImages* reference, ReferenceImages* store,
                         gl::Transition transition = gl::Transition::Blend, bool paged = false);
 
-// Runs the cells or near mode (bench_driver.h) with the selection of `setup`'s plan.
+// Runs the cells or near mode (bench_driver.h) with the selection of `setup`'s plan, at the
+// mode's level-of-detail tolerance (ModeResult::lodPixels; no budget).
 void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly, ModeAccumulator& acc,
                  const ReferenceImages& reference);
 

@@ -30,11 +30,17 @@ struct ModeResult {
     std::string mode;                  // full | cells | near | walls
     double alphaDeg = 0.0;             // walls modes; 0 otherwise
     std::string transition = "none";   // blend | warp for walls modes
+    double lodPixels = 0.0;            // level-of-detail tolerance in pixels; 0: full detail
+    std::size_t triangleBudget = 0;    // per frame (with levels of detail); 0: none
     TimeStats frameMs, cpuMs, gpuMs;
     double speedup = 1.0;              // full-geometry frame_ms_p50 / this mode's
     ImageError error;                  // all screens
     double maxErrDeg = 0.0;            // worst angular error of a drawn texture (0 without textures)
     double maxErrPx = 0.0;             // the same in screen pixels
+    double maxLodErrPx = 0.0;          // worst geometric error of a drawn level of detail, pixels
+    double meanLodTolerancePx = 0.0;   // the frames' mean LOD tolerance (above lodPixels where the
+                                       // budget raised it)
+    int overBudgetFrames = 0;          // frames whose coarsest levels still exceeded the budget
     double triangles = 0.0, drawCalls = 0.0;
     int textures = 0;                  // baked textures of the plan
     double texels = 0.0;               // sum of their base-level texels
@@ -69,7 +75,8 @@ std::vector<std::string> targetLines(const BenchReport& report);
 // Returns the files written.
 std::vector<std::filesystem::path> writeReport(const std::filesystem::path& folder, const BenchReport& report);
 
-// "walls a=10 blend", "full", ...: the mode's label in tables and the plot legend.
+// "walls a=10 blend", "full", "walls a=30 blend lod 1px budget 40000", ...: the mode's label in
+// tables and the plot legend.
 std::string modeLabel(const ModeResult& m);
 
 }  // namespace cavewall::tools

@@ -20,6 +20,7 @@ const char* const kBenchUsage =
     "usage: cavewall bench SCENE [--display D] [--path P] [--out DIR] [--frames N] [--resolution N]\n"
     "                      [--quick] [--cache DIR] [--compare-every K] [--min-zone M] [--ppd N]\n"
     "                      [--bake-resolution N] [--alphas A,B,...] [--warp-alpha A]\n"
+    "                      [--lod PX] [--triangle-budget N]\n"
     "       cavewall bench --stability\n"
     "\n"
     "SCENE    error against run time in one run (a scene.json, its folder, or glTF/GLB with\n"
@@ -30,7 +31,11 @@ const char* const kBenchUsage =
     "         walls as bare quads), virtual walls at each of --alphas (default 10,20,30\n"
     "         degrees) with the blend transition, at --warp-alpha (default 20) with the warp\n"
     "         transition and with background paging from a cold start (each alpha planned and\n"
-    "         baked into the cache, --cache, default $CAVEWALL_CACHE or ~/.cache/cavewall).\n"
+    "         baked into the cache, --cache, default $CAVEWALL_CACHE or ~/.cache/cavewall);\n"
+    "         then full geometry, the limit and every blend mode again with levels of detail at\n"
+    "         --lod pixels (default 1; 0 leaves these modes out), and the blend mode at\n"
+    "         --warp-alpha with levels of detail under a triangle budget (--triangle-budget,\n"
+    "         default the median triangles of that mode without a budget).\n"
     "         Per mode: frame, CPU and GPU ms p50/p95/p99, speed-up, the triangles' p99/p50,\n"
     "         triangles, draw calls, textures, texels, disk and GPU MB, and the image error\n"
     "         against full geometry at the same frame, eye and screen (PSNR pooled and mean,\n"
@@ -104,6 +109,8 @@ int runSceneBench(const Args& args) {
     o.bakeResolution = static_cast<int>(args.integer("bake-resolution", quick ? 128 : 512, 16, 16384));
     if (auto list = args.get("alphas")) o.alphasDeg = alphaList(*list);
     o.transitionAlphaDeg = args.number("warp-alpha", o.transitionAlphaDeg, 0.1, 89.0);
+    o.lodPixels = args.number("lod", o.lodPixels, 0.0, 1e4);
+    o.triangleBudget = static_cast<std::size_t>(args.integer("triangle-budget", 0, 0, 1000000000));
     if (std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg) == o.alphasDeg.end()) {
         std::string list;
         for (double a : o.alphasDeg) list += (list.empty() ? "" : ",") + config::formatNumber(a);
@@ -125,7 +132,7 @@ int runSceneBench(const Args& args) {
 int runBench(const std::vector<std::string>& words) {
     const Args args(words, {"stability", "quick"});
     args.expectFlags({"stability", "quick", "display", "path", "out", "frames", "resolution", "cache", "compare-every",
-                      "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha"});
+                      "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod", "triangle-budget"});
     if (args.has("stability")) return runStability();
 #ifdef CAVEWALL_HAVE_GL
     if (!args.positional().empty()) return runSceneBench(args);
