@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace cavewall::scenes {
 
@@ -27,8 +28,16 @@ void PartBuilder::box(glm::vec3 centre, glm::vec3 size, glm::vec4 color) {
     appendMesh(mesh, makeBox(size, color), glm::translate(glm::mat4(1.0f), centre));
 }
 
+int PartBuilder::segments(float radius) const {
+    const int refined = std::max(6, 6 * (cadLike ? std::min(detail, kFullTessellation) : detail));
+    if (!cadLike || !(radius > kChordalDeviation)) return refined;
+    // A regular n-gon inscribed in a circle of radius r deviates r (1 - cos(pi / n)) from it.
+    const double n = std::ceil(3.14159265358979 / std::acos(1.0 - kChordalDeviation / radius));
+    return std::max(6, std::min(refined, static_cast<int>(n)));
+}
+
 void PartBuilder::cylinderY(glm::vec3 base, float radius, float height, glm::vec4 color) {
-    appendMesh(mesh, makeCylinder(radius, height, std::max(6, 6 * detail), color), glm::translate(glm::mat4(1.0f), base));
+    appendMesh(mesh, makeCylinder(radius, height, segments(radius), color), glm::translate(glm::mat4(1.0f), base));
 }
 
 void PartBuilder::cylinderAlong(int axis, glm::vec3 centre, float radius, float length, glm::vec4 color) {
@@ -37,7 +46,7 @@ void PartBuilder::cylinderAlong(int axis, glm::vec3 centre, float radius, float 
     if (axis == 0) m = glm::rotate(m, glm::radians(-90.0f), glm::vec3(0, 0, 1));
     if (axis == 2) m = glm::rotate(m, glm::radians(90.0f), glm::vec3(1, 0, 0));
     m = glm::translate(m, glm::vec3(0, -0.5f * length, 0));
-    appendMesh(mesh, makeCylinder(radius, length, std::max(6, 6 * detail), color), m);
+    appendMesh(mesh, makeCylinder(radius, length, segments(radius), color), m);
 }
 
 Mesh PartBuilder::finish(std::string name) {
@@ -58,7 +67,7 @@ const glm::vec4 kWood(0.55f, 0.38f, 0.22f, 1), kFabric(0.3f, 0.4f, 0.55f, 1), kW
 
 // Machine tools: 4 m x 2 m footprint along x (variant changes proportions), up to 2.8 m tall.
 Mesh makeMachineTool(int variant, int detail) {
-    PartBuilder b{{}, detail};
+    PartBuilder b{{}, detail, true};
     const float len = 3.2f + 0.4f * static_cast<float>(variant), tall = 2.0f + 0.4f * static_cast<float>(variant);
     const glm::vec4 paint = variant == 1 ? kMachineGrey : kMachineGreen;
     b.box({0, 0.4f, 0}, {len + 0.6f, 0.8f, 2.0f}, kDark);                 // bed
@@ -68,14 +77,32 @@ Mesh makeMachineTool(int variant, int detail) {
     b.cylinderY({0.2f, 1.9f, 0}, 0.12f, 0.9f, kSteel);                    // spindle
     b.cylinderAlong(0, {-0.5f * len, 1.4f, -0.6f}, 0.25f, 0.9f, kSteel);  // motor
     b.cylinderY({-0.5f * len + 0.3f, 0, 0.75f}, 0.3f, 1.0f, kBlue);       // coolant tank
-    for (int i = 0; i < 6; ++i)  // bolts along the bed
-        b.cylinderY({-0.5f * len + 0.3f + static_cast<float>(i) * len / 5.5f, 0.8f, -0.9f}, 0.05f, 0.08f, kSteel);
+    const int d = b.density();
+    const int bolts = 6 + 6 * d;  // along the bed, front; and as many behind once there are sub-parts
+    for (int i = 0; i < bolts; ++i) {
+        const float x = -0.5f * len + 0.3f + static_cast<float>(i) * len / (static_cast<float>(bolts) - 0.5f);
+        b.cylinderY({x, 0.8f, -0.9f}, 0.05f, 0.08f, kSteel);
+        if (d > 0) b.cylinderY({x, 0.8f, 0.9f}, 0.04f, 0.06f, kSteel);
+    }
+    // Control panel buttons: a grid on the panel's front face (z = 1.0), 4 per row.
+    for (int i = 0; i < 8 * d; ++i)
+        b.cylinderAlong(2, {0.5f * len - 0.05f + 0.1f * static_cast<float>(i % 4), 1.05f + 0.7f * static_cast<float>(i / 4) / static_cast<float>(2 * d), 1.01f},
+                        0.018f, 0.02f, i % 3 == 0 ? kRed : (i % 3 == 1 ? kYellow : kMachineGreen));
+    // Tool magazine on the roof: a ring of holders around (-0.8, 0), radius 0.45.
+    const float roof = 0.8f + tall;
+    for (int i = 0; i < 12 * d; ++i) {
+        const float a = 6.2831853f * static_cast<float>(i) / static_cast<float>(12 * d);
+        b.cylinderY({-0.8f + 0.45f * std::cos(a), roof, 0.45f * std::sin(a)}, 0.025f, 0.15f, kSteel);
+    }
+    // Cable chain along the roof's back edge.
+    for (int i = 0; i < 10 * d; ++i)
+        b.box({-1.5f + 2.5f * static_cast<float>(i) / static_cast<float>(10 * d), roof + 0.03f, 0.6f}, {0.07f, 0.05f, 0.08f}, kDark);
     return b.finish("machine-tool-" + std::to_string(variant));
 }
 
 // An industrial robot on a pedestal, about 2.2 m tall, footprint 1.2 m.
 Mesh makeRobot(int detail) {
-    PartBuilder b{{}, detail};
+    PartBuilder b{{}, detail, true};
     b.cylinderY({0, 0, 0}, 0.45f, 0.4f, kDark);
     b.cylinderY({0, 0.4f, 0}, 0.35f, 0.5f, kOrange);
     b.cylinderAlong(2, {0, 1.0f, 0}, 0.22f, 0.6f, kOrange);    // shoulder
@@ -85,23 +112,39 @@ Mesh makeRobot(int detail) {
     b.cylinderAlong(0, {1.2f, 1.95f, 0}, 0.08f, 0.2f, kDark);  // wrist
     b.box({1.35f, 1.95f, 0.06f}, {0.1f, 0.12f, 0.04f}, kSteel);
     b.box({1.35f, 1.95f, -0.06f}, {0.1f, 0.12f, 0.04f}, kSteel);
+    const int d = b.density();
+    for (int i = 0; i < 8 * d; ++i) {  // bolts round the pedestal
+        const float a = 6.2831853f * static_cast<float>(i) / static_cast<float>(8 * d);
+        b.cylinderY({0.4f * std::cos(a), 0.4f, 0.4f * std::sin(a)}, 0.02f, 0.03f, kSteel);
+    }
+    for (int i = 0; i < 8 * d; ++i) {  // cable harness up the upper arm and along the forearm
+        const float t = static_cast<float>(i) / static_cast<float>(8 * d);
+        if (t < 0.5f) b.cylinderY({0.25f, 1.0f + 1.8f * t, 0.16f}, 0.02f, 0.09f, kDark);
+        else b.cylinderAlong(0, {0.25f + 1.8f * (t - 0.5f), 2.07f, 0.0f}, 0.02f, 0.09f, kDark);
+    }
     return b.finish("robot");
 }
 
 // A 3 m roller conveyor along x, 0.8 m wide, 0.9 m high.
 Mesh makeConveyor(int detail) {
-    PartBuilder b{{}, detail};
+    PartBuilder b{{}, detail, true};
     for (float z : {-0.4f, 0.4f}) b.box({0, 0.85f, z}, {3.0f, 0.12f, 0.06f}, kYellow);
     for (float x : {-1.4f, 0.0f, 1.4f})
         for (float z : {-0.4f, 0.4f}) b.box({x, 0.4f, z}, {0.06f, 0.8f, 0.06f}, kDark);
-    for (int i = 0; i < 14; ++i)
-        b.cylinderAlong(2, {-1.4f + static_cast<float>(i) * 2.8f / 13.0f, 0.85f, 0}, 0.045f, 0.74f, kSteel);
+    // Rollers at a pitch that shrinks with the sub-parts, never overlapping.
+    const int d = b.density(), rollers = 14 + 7 * d;
+    const float pitch = 2.8f / static_cast<float>(rollers - 1), radius = std::min(0.045f, 0.45f * pitch);
+    for (int i = 0; i < rollers; ++i)
+        b.cylinderAlong(2, {-1.4f + static_cast<float>(i) * pitch, 0.85f, 0}, radius, 0.74f, kSteel);
+    for (int i = 0; i < 6 * d; ++i)  // bolts along both side rails
+        for (float z : {-0.435f, 0.435f})
+            b.cylinderAlong(2, {-1.45f + 2.9f * static_cast<float>(i) / static_cast<float>(6 * d), 0.85f, z}, 0.012f, 0.01f, kDark);
     return b.finish("conveyor");
 }
 
 // An electrical cabinet, 1.2 m x 2 m x 0.6 m, back at z = -0.3.
 Mesh makeCabinet(int detail) {
-    PartBuilder b{{}, detail};
+    PartBuilder b{{}, detail, true};
     b.box({0, 1.0f, 0}, {1.2f, 2.0f, 0.6f}, kWhite);
     b.box({0, 2.05f, 0}, {1.25f, 0.1f, 0.65f}, kDark);
     for (float x : {-0.3f, 0.3f}) {
@@ -109,12 +152,18 @@ Mesh makeCabinet(int detail) {
         b.cylinderAlong(2, {x > 0 ? x - 0.22f : x + 0.22f, 1.1f, 0.34f}, 0.03f, 0.05f, kDark);
     }
     b.cylinderAlong(2, {0.3f, 1.7f, 0.34f}, 0.06f, 0.03f, kRed);  // warning lamp
+    const int d = b.density();
+    for (int i = 0; i < 6 * d; ++i)  // vent slats low on both doors
+        for (float x : {-0.3f, 0.3f})
+            b.box({x, 0.15f + 0.45f * static_cast<float>(i) / static_cast<float>(6 * d), 0.325f}, {0.4f, 0.012f, 0.012f}, kDark);
+    for (int i = 0; i < 4 * d; ++i)  // cable glands on the roof
+        b.cylinderY({-0.5f + static_cast<float>(i) / static_cast<float>(4 * d), 2.1f, -0.1f}, 0.02f, 0.04f, kDark);
     return b.finish("cabinet");
 }
 
 // An 8 m overhead pipe rack along x: posts to 6 m and four pipes with flanges every 2 m.
 Mesh makePipeRack(int detail) {
-    PartBuilder b{{}, detail};
+    PartBuilder b{{}, detail, true};
     for (float x : {-3.8f, 3.8f}) {
         b.box({x, 3.0f, 0}, {0.25f, 6.0f, 0.25f}, kSteel);
         b.box({x, 5.2f, 0}, {0.2f, 0.2f, 1.4f}, kSteel);
@@ -125,6 +174,15 @@ Mesh makePipeRack(int detail) {
         b.cylinderAlong(0, {0, 5.4f + r, z}, r, 8.0f, colors[p]);
         for (int f = 0; f < 5; ++f)
             b.cylinderAlong(0, {-4.0f + 2.0f * static_cast<float>(f), 5.4f + r, z}, r * 1.4f, 0.06f, kSteel);
+        // Per sub-part level: a valve (body, stem, handwheel) and a pair of flanges.
+        const int d = b.density();
+        for (int v = 0; v < d; ++v) {
+            const float x = -3.5f + 7.0f * (static_cast<float>(v) + 0.5f) / static_cast<float>(d);
+            b.box({x, 5.4f + r, z}, {0.2f, 2.2f * r, 2.2f * r}, kDark);
+            b.cylinderY({x, 5.4f + 2.0f * r, z}, 0.012f, 0.18f, kSteel);
+            b.cylinderY({x, 5.58f + 2.0f * r, z}, 0.1f, 0.02f, kRed);
+            for (float dx : {-0.16f, 0.16f}) b.cylinderAlong(0, {x + dx, 5.4f + r, z}, r * 1.4f, 0.04f, kSteel);
+        }
     }
     return b.finish("pipe-rack");
 }
@@ -189,14 +247,14 @@ std::vector<Mesh> meshesForTarget(const std::vector<Placement>& placements, std:
         for (const Placement& p : placements) n += meshes[p.kind].triangleCount();
         return n;
     };
-    // Triangles are a + b * detail: measure at 1 and 2, solve, then step up if rounding fell short.
-    std::vector<Mesh> one = kinds(1);
-    const std::size_t t1 = drawn(one), t2 = drawn(kinds(2));
-    if (t1 >= target || t2 <= t1) return one;
-    int detail = static_cast<int>(std::min<std::size_t>(256, 1 + (target - t1 + (t2 - t1) - 1) / (t2 - t1)));
-    std::vector<Mesh> meshes = kinds(detail);
-    while (drawn(meshes) < target && detail < 256) meshes = kinds(++detail);
-    return meshes;
+    // Triangles grow with the detail: the smallest level that reaches the target, by bisection.
+    int lo = 1, hi = 256;
+    while (lo < hi) {
+        const int mid = (lo + hi) / 2;
+        if (drawn(kinds(mid)) >= target) hi = mid;
+        else lo = mid + 1;
+    }
+    return kinds(lo);
 }
 
 }  // namespace cavewall::scenes

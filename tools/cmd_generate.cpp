@@ -13,8 +13,11 @@ const char* const kGenerateUsage =
     "Writes DIR/<plant|house>.glb (glTF 2.0, opens in any viewer) and DIR/scene.json (cells,\n"
     "virtual walls or portals, real walls, walk path), deterministically from --seed (default 0):\n"
     "the same seed gives the same bytes. --triangles sets the minimum number of drawn triangles\n"
-    "(default: 2000000 for the plant, 200000 for the house); smaller values give coarser round\n"
-    "parts. Prints a summary and, as its last line, the path of scene.json.\n"
+    "(default: 2000000 for the plant, 200000 for the house). The plant's round parts are refined\n"
+    "up to a CAD export's chordal deviation of 1 mm (smaller targets get coarser ones); beyond\n"
+    "that its machines, robots, conveyors, cabinets and pipe racks gain parts (bolts, buttons,\n"
+    "tool holders, cable links, rollers, valves, vents), as large CAD models do. The house's\n"
+    "round parts follow the target. Prints a summary and, as its last line, the scene.json path.\n"
     "  plant  an 80 m x 40 m production hall cut by 37 virtual walls into 24 cells (rows N, M, S\n"
     "         of 8 cells 10 m wide; the walk path runs along the aisles in rows N and S)\n"
     "  house  six rooms with real walls; every doorway is a portal, every room a cell\n";
