@@ -247,8 +247,10 @@ std::vector<Mesh> meshesForTarget(const std::vector<Placement>& placements, std:
         for (const Placement& p : placements) n += meshes[p.kind].triangleCount();
         return n;
     };
-    // Triangles grow with the detail: the smallest level that reaches the target, by bisection.
-    int lo = 1, hi = 256;
+    // Triangles grow with the detail: the smallest level that reaches the target, bracketed by
+    // doubling (large levels are slow to build) and then bisected.
+    int lo = 1, hi = 1;
+    while (hi < 256 && drawn(kinds(hi)) < target) lo = hi + 1, hi = std::min(256, 2 * hi);
     while (lo < hi) {
         const int mid = (lo + hi) / 2;
         if (drawn(kinds(mid)) >= target) hi = mid;
