@@ -209,6 +209,18 @@ BenchReport runBenchmark(const BenchOptions& o) {
         }
         runWalls(transitionIndex, gl::Transition::Blend, false, o.lodPixels, std::max<std::size_t>(budget, 1));
     }
+    {  // The noise floor of p99/p50 on this machine: one frame of the last walls mode again and again.
+        ModeResult last = report.modes.back();
+        last.transition = "blend";  // drawn with every texture resident, also after the paged mode
+        say(o, "bench: noise floor, one frame of " + modeLabel(last) + " repeated");
+        const long middle = static_cast<long>(path.frames.size() / 2);
+        const TimeStats steady = steadyFrameTimes(c, baked[transitionIndex].setup, last, middle);
+        report.header.push_back("noise floor: frame " + std::to_string(middle) + " of the path drawn " +
+                                std::to_string(path.frames.size()) + " times as " + modeLabel(last) + ": frame ms p50 " +
+                                fixed(steady.p50, 2) + ", p99 " + fixed(steady.p99, 2) + ", p99/p50 " +
+                                fixed(steady.p50 > 0 ? steady.p99 / steady.p50 : 0.0, 2) +
+                                " (the same work every frame: what remains is the machine's scheduling noise)");
+    }
     report.header.push_back("bench time: " +
                             fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 0) +
                             " s in total (all modes, bakes included)");

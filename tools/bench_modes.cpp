@@ -123,6 +123,26 @@ void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls
     }
 }
 
+TimeStats steadyFrameTimes(const ModeContext& c, std::optional<gl::WallSetup> walls, const ModeResult& mode,
+                           long frameIndex) {
+    gl::WalkthroughOptions options;
+    options.synchronousPaging = true;
+    options.textureBudgetMB = 4096.0;
+    options.uploadMBPerFrame = 4096.0;
+    options.render.lodPixels = mode.lodPixels;
+    options.triangleBudget = mode.triangleBudget;
+    gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
+    gl::FrameInput in = c.path.frames.at(static_cast<std::size_t>(frameIndex));
+    for (int i = 0; i < 3; ++i) walkthrough.renderFrame(in);
+    walkthrough.waitForTextures();
+    std::vector<double> ms;
+    for (std::size_t i = 0; i < c.path.frames.size(); ++i) {
+        in.frame = frameIndex + static_cast<long>(i);  // the pager's recency moves on as in a run
+        ms.push_back(walkthrough.renderFrame(in).frameMs);
+    }
+    return timeStats(ms);
+}
+
 namespace {
 
 // The objects a cell mode draws: structure, objects without a cell and those of `cells`.

@@ -70,6 +70,12 @@ void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls
                         const ReferenceImages* reference, ReferenceImages* store,
                         gl::Transition transition = gl::Transition::Blend, bool paged = false);
 
+// The machine's own frame-time noise: frame `frameIndex` of the path drawn as `mode` draws it
+// (walls or not, its levels of detail), once per frame of the path, after a warm-up. Every
+// frame draws the same thing, so their spread is scheduling and timer noise, not load.
+TimeStats steadyFrameTimes(const ModeContext& c, std::optional<gl::WallSetup> walls, const ModeResult& mode,
+                           long frameIndex);
+
 // Runs the cells or near mode (bench_driver.h) with the selection of `setup`'s plan, at the
 // mode's level-of-detail tolerance (ModeResult::lodPixels; no budget).
 void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly, ModeAccumulator& acc,

@@ -29,12 +29,13 @@ void writeText(const std::filesystem::path& file, const std::string& text) {
 
 std::string screensCsv(const BenchReport& report) {
     std::string out = "mode,alpha_deg,transition,screen,psnr_db,rmse,ssim,cpu_ms_p50,cpu_ms_p95,cpu_ms_p99,triangles,"
-                      "draw_calls\n";
+                      "draw_calls,lod_px,triangle_budget\n";
     for (const ModeResult& m : report.modes)
         for (const ScreenResult& s : m.screens)
             out += m.mode + "," + num(m.alphaDeg) + "," + m.transition + "," + s.screen + "," + num(s.error.psnrDb) + "," +
                    num(s.error.rmse) + "," + num(s.error.ssim) + "," + num(s.cpuMs.p50) + "," + num(s.cpuMs.p95) + "," +
-                   num(s.cpuMs.p99) + "," + num(s.triangles) + "," + num(s.drawCalls) + "\n";
+                   num(s.cpuMs.p99) + "," + num(s.triangles) + "," + num(s.drawCalls) + "," + num(m.lodPixels) + "," +
+                   std::to_string(m.triangleBudget) + "\n";
     return out;
 }
 

@@ -5,6 +5,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -47,25 +49,39 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     std::string line;
     ASSERT_TRUE(std::getline(csv, line));
     const std::vector<std::string> header = split(line);
+    const auto column = [&](const std::string& name) {
+        return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+    };
+    const std::size_t lodColumn = column("lod_px"), budgetColumn = column("triangle_budget");
+    ASSERT_LT(budgetColumn, header.size());
     std::map<std::string, int> rows;
     while (std::getline(csv, line)) {
         const auto f = split(line);
         ASSERT_EQ(f.size(), header.size()) << line;
-        const std::string key = f[0] + (f[0] == "walls" ? " " + f[1] + " " + f[2] : "");
+        const bool lod = std::strtod(f[lodColumn].c_str(), nullptr) > 0.0;
+        const bool budget = std::strtod(f[budgetColumn].c_str(), nullptr) > 0.0;
+        const std::string key = f[0] + (f[0] == "walls" ? " " + f[1] + " " + f[2] : "") + (lod ? " lod" : "") +
+                                (budget ? " budget" : "");
         ++rows[key];
         SCOPED_TRACE(key);
         for (std::size_t i = 3; i < f.size(); ++i) {
             const double v = std::strtod(f[i].c_str(), nullptr);
             // The reference's PSNR against itself is +infinity; every other number is finite.
-            if (header[i] == "psnr_db" && f[0] == "full") EXPECT_TRUE(std::isinf(v) && v > 0);
+            if (header[i] == "psnr_db" && f[0] == "full" && !lod) EXPECT_TRUE(std::isinf(v) && v > 0);
             else EXPECT_TRUE(std::isfinite(v)) << header[i] << " = " << f[i];
             EXPECT_GE(v, 0.0) << header[i];
         }
         EXPECT_GT(std::strtod(f[3].c_str(), nullptr), 0.0) << "frame_ms_p50";
-        if (f[0] == "walls") EXPECT_GT(std::strtod(f[14].c_str(), nullptr), 0.0) << "textures";
+        if (f[0] == "walls") {
+            EXPECT_GT(std::strtod(f[14].c_str(), nullptr), 0.0) << "textures";
+        }
     }
-    const std::map<std::string, int> expected = {{"full", 1}, {"cells", 1}, {"near", 1}, {"walls 20 blend", 1},
-        {"walls 30 blend", 1}, {"walls 30 warp", 1}, {"walls 30 blend paged", 1}};
+    // With levels of detail (--lod defaults to 1 px): full, near and every blend mode again,
+    // and the blend mode at the warp alpha under a triangle budget.
+    const std::map<std::string, int> expected = {
+        {"full", 1}, {"full lod", 1}, {"cells", 1}, {"near", 1}, {"near lod", 1}, {"walls 20 blend", 1},
+        {"walls 30 blend", 1}, {"walls 20 blend lod", 1}, {"walls 30 blend lod", 1}, {"walls 30 warp", 1},
+        {"walls 30 blend paged", 1}, {"walls 30 blend lod budget", 1}};
     EXPECT_EQ(rows, expected);
     EXPECT_TRUE(fs::is_regular_file(out / "bench.png"));
     EXPECT_TRUE(fs::is_regular_file(out / "bench.md"));
@@ -83,7 +99,7 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         EXPECT_TRUE(std::isfinite(std::strtod(f[10].c_str(), nullptr))) << line;
         ++screenRows;
     }
-    EXPECT_EQ(screenRows, 7 * 4);
+    EXPECT_EQ(screenRows, 12 * 4);
 }
 
 TEST(BenchSceneCli, BadInputIsAClearError) {
