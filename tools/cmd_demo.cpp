@@ -5,22 +5,25 @@
 #include "tools/run_session.h"
 
 #include <cstdlib>
+#include <optional>
 #include <fstream>
 #include <iostream>
 
 namespace cavewall::tools {
 
 const char* const kDemoUsage =
-    "usage: cavewall demo [--out DIR] [--frames N] [--resolution PX] [--triangles N]\n"
+    "usage: cavewall demo [--out DIR] [--frames N] [--resolution PX] [--triangles N] [--lod PX]\n"
     "\n"
     "The main job: generates the default plant (into $CAVEWALL_CACHE or, without it, cache/\n"
     "beside the cavewall executable), plans and bakes its virtual walls (cached by content),\n"
     "then walks cave4 along the plant's walk path at 5 m/s (along the north aisle from N1 into\n"
-    "N3) with the simulated head tracker (sim:walk) for N frames (default 240), once with the\n"
-    "walls and once with the full frustum-culled geometry. Each screen renders PX x PX pixels (default\n"
-    "256, so the demo finishes in a few minutes on llvmpipe). Prints the median frame time of\n"
-    "both runs, the speed-up and the worst angular error, and writes DIR (default demo-out):\n"
-    "walls/ and geometry/ (CSV files, frames every 60 frames) and report.md with the fold-outs.\n"
+    "N3) with the simulated head tracker (sim:walk) for N frames (default 240), three times: with\n"
+    "the walls and levels of detail within --lod pixels (default 1; 0: full detail), with the\n"
+    "full frustum-culled geometry at the same levels of detail, and with the full geometry at\n"
+    "full detail (the reference). Each screen renders PX x PX pixels (default 256, so the demo\n"
+    "finishes in a few minutes on llvmpipe). Prints the median frame times, the speed-ups and the\n"
+    "worst errors, and writes DIR (default demo-out): walls/, lod/ and geometry/ (CSV files,\n"
+    "frames every 60 frames) and report.md with the fold-outs.\n"
     "Headless without $DISPLAY, windowed otherwise. Walls are planned with alpha 30 degrees,\n"
     "zones of at least 2 m and 2 texels per degree, to keep the bake short (about 660\n"
     "textures: a few minutes on llvmpipe the first time).\n";
@@ -46,21 +49,39 @@ std::filesystem::path ensurePlant(const std::filesystem::path& cache, std::size_
     return scenes::writeGenerated(plant, dir);
 }
 
+// One table row: the walls run, the levels-of-detail run (when there is one), the reference.
+template <typename A, typename B, typename C>
+void row(std::ostream& r, const char* what, const A& walls, const std::optional<B>& lod, const C& geometry) {
+    r << "| " << what << " | " << walls;
+    if (lod) r << " | " << *lod;
+    r << " | " << geometry << " |\n";
+}
+
 void writeReport(const std::filesystem::path& out, const RunOptions& o, const RunSummary& walls,
-                 const RunSummary& geometry) {
+                 const std::optional<RunSummary>& lod, const RunSummary& geometry) {
     const double mw = median(walls.frameMs), mg = median(geometry.frameMs);
+    const std::optional<double> ml = lod ? std::optional(median(lod->frameMs)) : std::nullopt;
+    auto ifLod = [&](auto value) { return lod ? std::optional(value) : std::nullopt; };
     std::ofstream r(out / "report.md");
     r << "# cavewall demo\n\nThe generated plant on cave4 (" << o.display.screens[0].resolution.x << " x "
       << o.display.screens[0].resolution.y << " pixels per screen), guided along its walk path at " << o.guidePace
       << " m/s with `" << o.tracker << "`, " << o.frames << " frames at 1/60 s, rendered by " << walls.renderer
-      << ".\n\n| | walls | full geometry |\n|---|---|---|\n"
-      << "| median frame time (ms) | " << mw << " | " << mg << " |\n"
-      << "| worst angular error (deg) | " << walls.worstErrorDeg << " | 0 |\n"
-      << "| worst angular error (px) | " << walls.worstErrorPx << " | 0 |\n"
-      << "| texture page-ins / misses | " << walls.pageIns << " / " << walls.misses << " | - |\n\n"
-      << "Speed-up of the median frame time: " << (mw > 0 ? mg / mw : 0.0) << "x (alpha " << o.plan.alphaDeg
-      << " deg, " << walls.textures << " textures).\n\nPer-frame data: `walls/frames.csv`, `walls/walls.csv`, "
-      << "`geometry/frames.csv`.\n\n## Fold-outs (walls | full geometry)\n\n";
+      << ".\n\n";
+    row(r, "", lod ? "walls + levels of detail" : "walls", ifLod("full geometry + levels of detail"), "full geometry");
+    row(r, "---", "---", ifLod("---"), "---");
+    row(r, "median frame time (ms)", mw, ml, mg);
+    row(r, "speed-up", mw > 0 ? mg / mw : 0.0, ml ? std::optional(*ml > 0 ? mg / *ml : 0.0) : std::nullopt, 1);
+    row(r, "worst wall texture error (deg)", walls.worstErrorDeg, ifLod("-"), "-");
+    row(r, "worst wall texture error (px)", walls.worstErrorPx, ifLod("-"), "-");
+    row(r, "worst level-of-detail error (px)", walls.worstLodErrorPx, lod ? std::optional(lod->worstLodErrorPx) : std::nullopt, 0);
+    row(r, "texture page-ins / misses", std::to_string(walls.pageIns) + " / " + std::to_string(walls.misses),
+        ifLod("-"), "-");
+    r << "\nWalls planned at alpha " << o.plan.alphaDeg << " deg (" << walls.textures << " textures)";
+    if (o.lodPixels > 0) r << ", levels of detail within " << o.lodPixels << " px";
+    r << ". The walls' worst errors are on walls beyond a neighbour drawn as geometry, where the eye is outside "
+         "every zone of that cell (`walls/walls.csv` marks them `beyond`).\n\nPer-frame data: `walls/frames.csv`, "
+         "`walls/walls.csv`, "
+      << (lod ? "`lod/frames.csv`, " : "") << "`geometry/frames.csv`.\n\n## Fold-outs (walls | full geometry)\n\n";
     for (std::size_t i = 0; i < walls.foldouts.size() && i < geometry.foldouts.size(); ++i)
         r << "![walls](" << std::filesystem::relative(walls.foldouts[i], out).string() << ") ![geometry]("
           << std::filesystem::relative(geometry.foldouts[i], out).string() << ")\n\n";
@@ -71,7 +92,7 @@ void writeReport(const std::filesystem::path& out, const RunOptions& o, const Ru
 
 int runDemo(const std::vector<std::string>& words) {
     const Args args(words, {});
-    args.expectFlags({"out", "frames", "resolution", "triangles"});
+    args.expectFlags({"out", "frames", "resolution", "triangles", "lod"});
     const std::filesystem::path out = args.getOr("out", "demo-out");
     const std::filesystem::path cache = cacheFolder();
     RunOptions o;
@@ -90,16 +111,28 @@ int runDemo(const std::vector<std::string>& words) {
     o.saveEvery = 60;
     o.verbose = true;
 
+    o.lodPixels = args.number("lod", 1.0, 0.0, 1e4);
+
     o.out = out / "walls";
     const RunSummary walls = runSession(o);
-    o.out = out / "geometry";
     o.walls = false;
+    std::optional<RunSummary> lod;
+    if (o.lodPixels > 0.0) {
+        o.out = out / "lod";
+        lod = runSession(o);
+    }
+    o.out = out / "geometry";
+    const double lodPixels = o.lodPixels;
+    o.lodPixels = 0.0;
     const RunSummary geometry = runSession(o);
-    writeReport(out, o, walls, geometry);
+    o.lodPixels = lodPixels;
+    writeReport(out, o, walls, lod, geometry);
     const double mw = median(walls.frameMs), mg = median(geometry.frameMs);
-    std::cout << "demo: median frame time " << mw << " ms with walls, " << mg << " ms full geometry, speed-up "
-              << (mw > 0 ? mg / mw : 0.0) << "x; worst error " << walls.worstErrorDeg << " deg ("
-              << walls.worstErrorPx << " px)\nGL_RENDERER: " << walls.renderer << "\nreport: "
+    std::cout << "demo: median frame time " << mw << " ms with walls" << (lod ? " and levels of detail" : "") << ", ";
+    if (lod) std::cout << median(lod->frameMs) << " ms full geometry with levels of detail, ";
+    std::cout << mg << " ms full geometry, speed-up " << (mw > 0 ? mg / mw : 0.0) << "x; worst wall error "
+              << walls.worstErrorDeg << " deg (" << walls.worstErrorPx << " px), worst level-of-detail error "
+              << walls.worstLodErrorPx << " px\nGL_RENDERER: " << walls.renderer << "\nreport: "
               << (out / "report.md").string() << "\n";
     return 0;
 }

@@ -133,6 +133,7 @@ RunSummary runSession(const RunOptions& o) {
         summary.frameMs.push_back(r.frameMs);
         summary.worstErrorDeg = std::max(summary.worstErrorDeg, r.maxErrorDeg);
         summary.worstErrorPx = std::max(summary.worstErrorPx, r.maxErrorPixels);
+        summary.worstLodErrorPx = std::max(summary.worstLodErrorPx, r.lodErrorPx);
         summary.misses = r.pager.misses;
         summary.pageIns = r.pager.pageIns;
         if (o.verbose && (i + 1) % 60 == 0)

@@ -53,6 +53,7 @@ struct RunSummary {
     int textures = 0;                           // baked textures available
     std::vector<double> frameMs;                // per frame
     double worstErrorDeg = 0.0, worstErrorPx = 0.0;
+    double worstLodErrorPx = 0.0;               // largest level-of-detail error drawn, pixels
     long misses = 0, pageIns = 0;
     std::vector<std::filesystem::path> foldouts;// saved fold-outs, in frame order
     int rank = 0;                               // cluster mode: this process's rank (only rank 0

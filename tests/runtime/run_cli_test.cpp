@@ -307,7 +307,7 @@ TEST(RunCli, DTrackSenderOverLoopbackDrivesTheHead) {
     EXPECT_EQ(rows.back().at("world_x"), rows.back().at("head_x"));
 }
 
-TEST(RunCli, DemoWritesTheReportWithBothRuns) {
+TEST(RunCli, DemoWritesTheReportWithAllThreeRuns) {
     const fs::path out = outputDir("demo");
     ::setenv("CAVEWALL_CACHE", (out / "cache").c_str(), 1);
     ::unsetenv("DISPLAY");
@@ -316,9 +316,14 @@ TEST(RunCli, DemoWritesTheReportWithBothRuns) {
                                      "--triangles", "20000"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("speed-up"));
-    EXPECT_THAT(slurp(out / "report.md"), HasSubstr("Speed-up of the median frame time"));
-    EXPECT_EQ(readCsv(out / "walls" / "frames.csv").size(), 6u);
-    EXPECT_EQ(readCsv(out / "geometry" / "frames.csv").size(), 6u);
+    const std::string report = slurp(out / "report.md");
+    EXPECT_THAT(report, HasSubstr("| walls + levels of detail | full geometry + levels of detail | full geometry |"));
+    EXPECT_THAT(report, HasSubstr("| speed-up | "));
+    EXPECT_THAT(report, HasSubstr("| worst level-of-detail error (px) | "));
+    // Walls and levels of detail (default 1 px), full geometry with them, full geometry without.
+    for (const char* run : {"walls", "lod", "geometry"}) EXPECT_EQ(readCsv(out / run / "frames.csv").size(), 6u) << run;
+    for (const auto& frame : readCsv(out / "geometry" / "frames.csv")) EXPECT_EQ(frame.at("lod_px"), "0.000");
+    for (const auto& frame : readCsv(out / "lod" / "frames.csv")) EXPECT_EQ(frame.at("lod_px"), "1.000");
     EXPECT_TRUE(fs::exists(out / "walls" / "frames" / "00000" / "foldout.png"));
 }
 
