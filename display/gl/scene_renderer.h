@@ -13,6 +13,14 @@
 // What is submitted: the objects the DrawFilter selects, minus those whose world bounds lie
 // outside the view's frustum (CPU culling over a BVH, scenes/bvh.h, planes from the double
 // clipFromWorld; an infinite far plane never culls). Nothing outside the filter is submitted.
+// Opaque objects go front to back (by the distance of their bounds from the eye) so the depth
+// test rejects hidden fragments before they are shaded.
+//
+// Levels of detail (RenderSettings::lodPixels > 0): every mesh's level chain is built once
+// (scenes/mesh_lod.h) and uploaded beside it; each object is drawn at the level DrawFilter::
+// lodLevels names, which chooseLods picks per frame for all views together: the coarsest level
+// whose geometric error covers at most the tolerance in pixels on every screen the object
+// appears on (display/pixel_scale.h), optionally raised to fit a triangle budget.
 //
 // Draw path: all geometry sits in GpuScene's shared buffers. Per view the submitted objects get
 // one per-draw record each (eye-relative model-view and normal matrix, composed in double and
