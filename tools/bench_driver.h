@@ -17,10 +17,12 @@
 //  - walls at `transitionAlphaDeg` (or the first alpha when it is not listed), transition warp
 //           (gl::Transition::Warp), on the same bake.
 //  - with `lodPixels` > 0, levels of detail (scenes/mesh_lod.h) at that pixel tolerance: full,
-//           near and every walls blend mode once more with them, then the walls blend mode at
-//           `transitionAlphaDeg` with them under a triangle budget (`triangleBudget`, or the
-//           median triangles of that mode without a budget), so that the levels' share of the
-//           speed-up and of the error reads apart from the walls'.
+//           near and every walls blend mode once more with them, then every walls blend mode
+//           with them under a triangle budget (`triangleBudget`, or the median triangles of
+//           the same mode without a budget), so that the levels' share of the speed-up and of
+//           the error reads apart from the walls'.
+//  - last, the noise floor: the last mode again, each path frame followed by one fixed frame,
+//           whose p99/p50 is the machine's own (a header line, not a mode).
 //
 // Timing: frame ms is the walkthrough's FrameResult::frameMs (CPU submission + glFinish) or,
 // for cells/near, SceneRenderer::render + waiting for its GPU timer; every frame of the path

@@ -123,8 +123,8 @@ void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls
     }
 }
 
-TimeStats steadyFrameTimes(const ModeContext& c, std::optional<gl::WallSetup> walls, const ModeResult& mode,
-                           long frameIndex) {
+NoiseComparison interleavedNoise(const ModeContext& c, std::optional<gl::WallSetup> walls, const ModeResult& mode,
+                                 long frameIndex) {
     gl::WalkthroughOptions options;
     options.synchronousPaging = true;
     options.textureBudgetMB = 4096.0;
@@ -132,15 +132,17 @@ TimeStats steadyFrameTimes(const ModeContext& c, std::optional<gl::WallSetup> wa
     options.render.lodPixels = mode.lodPixels;
     options.triangleBudget = mode.triangleBudget;
     gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
-    gl::FrameInput in = c.path.frames.at(static_cast<std::size_t>(frameIndex));
-    for (int i = 0; i < 3; ++i) walkthrough.renderFrame(in);
+    const gl::FrameInput fixed = c.path.frames.at(static_cast<std::size_t>(frameIndex));
+    for (const gl::FrameInput& in : c.path.frames) walkthrough.renderFrame(in);
     walkthrough.waitForTextures();
-    std::vector<double> ms;
-    for (std::size_t i = 0; i < c.path.frames.size(); ++i) {
-        in.frame = frameIndex + static_cast<long>(i);  // the pager's recency moves on as in a run
-        ms.push_back(walkthrough.renderFrame(in).frameMs);
+    std::vector<double> path, repeated;
+    for (const gl::FrameInput& in : c.path.frames) {
+        path.push_back(walkthrough.renderFrame(in).frameMs);
+        gl::FrameInput again = fixed;
+        again.frame = in.frame;  // the pager's recency moves on as in a run
+        repeated.push_back(walkthrough.renderFrame(again).frameMs);
     }
-    return timeStats(ms);
+    return {timeStats(path), timeStats(repeated)};
 }
 
 namespace {

@@ -70,11 +70,15 @@ void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls
                         const ReferenceImages* reference, ReferenceImages* store,
                         gl::Transition transition = gl::Transition::Blend, bool paged = false);
 
-// The machine's own frame-time noise: frame `frameIndex` of the path drawn as `mode` draws it
-// (walls or not, its levels of detail), once per frame of the path, after a warm-up. Every
-// frame draws the same thing, so their spread is scheduling and timer noise, not load.
-TimeStats steadyFrameTimes(const ModeContext& c, std::optional<gl::WallSetup> walls, const ModeResult& mode,
-                           long frameIndex);
+// The machine's own frame-time noise beside a mode's: the path drawn as `mode` draws it (walls
+// or not, its levels of detail; every texture resident), each frame followed by frame
+// `frameIndex` of the path again. The repeated frame's work never changes, so its spread is
+// the machine's (scheduling, other tenants), measured in the same seconds as the path's.
+struct NoiseComparison {
+    TimeStats path, repeated;
+};
+NoiseComparison interleavedNoise(const ModeContext& c, std::optional<gl::WallSetup> walls, const ModeResult& mode,
+                                 long frameIndex);
 
 // Runs the cells or near mode (bench_driver.h) with the selection of `setup`'s plan, at the
 // mode's level-of-detail tolerance (ModeResult::lodPixels; no budget).

@@ -59,7 +59,10 @@ std::vector<std::string> targetLines(const BenchReport& report) {
             num(best->speedup, 3) + (best->speedup >= 10.0 ? " (>= 10: met)" : " (>= 10: not met)") + ", PSNR " +
             num(best->error.meanPsnrDb, 3) + " dB mean (" + num(best->error.psnrDb, 3) + " dB pooled), p99/p50 " +
             num(ratio, 3) + (ratio <= 1.3 ? " (<= 1.3: met)" : " (<= 1.3: not met)") +
-            " with the triangles drawn varying by " + num(best->loadRatio, 3) + " (p99/p50)"};
+            " with the triangles drawn varying by " + num(best->loadRatio, 3) + " (p99/p50)" +
+            (report.noiseFloorRatio > 0.0 ? "; one frame drawn again and again varies by " +
+                                                num(report.noiseFloorRatio, 3) + " (p99/p50) on this machine"
+                                          : std::string())};
     if (const ModeResult* near = findMode(report, "near", *best); near && near->frameMs.p50 > 0) {
         const double limit = best->frameMs.p50 / near->frameMs.p50;
         lines.push_back("targets: its median frame time is " + num(limit, 3) +

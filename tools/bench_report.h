@@ -57,6 +57,7 @@ struct ModeResult {
 struct BenchReport {
     std::vector<std::string> header;   // settings and machine, one line each
     std::vector<ModeResult> modes;     // the full-geometry reference first
+    double noiseFloorRatio = 0.0;      // p99/p50 of one frame drawn again and again (0: not measured)
 };
 
 // The CSV header line (without newline), starting with the columns the issue requires.

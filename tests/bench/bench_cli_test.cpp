@@ -77,11 +77,11 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         }
     }
     // With levels of detail (--lod defaults to 1 px): full, near and every blend mode again,
-    // and the blend mode at the warp alpha under a triangle budget.
+    // and every blend mode with them under a triangle budget.
     const std::map<std::string, int> expected = {
         {"full", 1}, {"full lod", 1}, {"cells", 1}, {"near", 1}, {"near lod", 1}, {"walls 20 blend", 1},
         {"walls 30 blend", 1}, {"walls 20 blend lod", 1}, {"walls 30 blend lod", 1}, {"walls 30 warp", 1},
-        {"walls 30 blend paged", 1}, {"walls 30 blend lod budget", 1}};
+        {"walls 30 blend paged", 1}, {"walls 20 blend lod budget", 1}, {"walls 30 blend lod budget", 1}};
     EXPECT_EQ(rows, expected);
     EXPECT_TRUE(fs::is_regular_file(out / "bench.png"));
     EXPECT_TRUE(fs::is_regular_file(out / "bench.md"));
@@ -99,7 +99,7 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         EXPECT_TRUE(std::isfinite(std::strtod(f[10].c_str(), nullptr))) << line;
         ++screenRows;
     }
-    EXPECT_EQ(screenRows, 12 * 4);
+    EXPECT_EQ(screenRows, 13 * 4);
 }
 
 TEST(BenchSceneCli, BadInputIsAClearError) {
