@@ -102,9 +102,11 @@ std::vector<MeshLod> buildSceneLods(const Scene& scene, const LodOptions& option
     return out;
 }
 
-LodChoice chooseLevels(const std::vector<LodCandidate>& candidates, double tolerancePx, std::size_t triangleBudget) {
+LodChoice chooseLevels(const std::vector<LodCandidate>& candidates, double tolerancePx, std::size_t triangleBudget,
+                       double maxTolerancePx) {
     LodChoice choice;
     choice.tolerancePx = std::max(tolerancePx, 0.0);
+    maxTolerancePx = std::max(maxTolerancePx, choice.tolerancePx);
     if (triangleBudget > 0 && trianglesWithin(candidates, choice.tolerancePx) > triangleBudget) {
         // The triangle count only changes where some level's error in pixels is crossed, and
         // falls as the tolerance grows: the smallest crossing that fits is the answer.
@@ -112,7 +114,7 @@ LodChoice chooseLevels(const std::vector<LodCandidate>& candidates, double toler
         for (const LodCandidate& c : candidates)
             for (const LodLevel& l : c.lod->levels) {
                 const double px = errorPx(l.error, c.pixelsPerUnit);
-                if (px > choice.tolerancePx && std::isfinite(px)) steps.push_back(px);
+                if (px > choice.tolerancePx && px <= maxTolerancePx && std::isfinite(px)) steps.push_back(px);
             }
         std::sort(steps.begin(), steps.end());
         steps.erase(std::unique(steps.begin(), steps.end()), steps.end());

@@ -18,6 +18,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace cavewall::scenes {
@@ -72,7 +73,10 @@ struct LodChoice {
 // Chooses for every candidate the coarsest level whose error in pixels (error *
 // pixelsPerUnit) is at most the tolerance. The tolerance is `tolerancePx`, raised to the
 // smallest value at which the frame's triangles fit `triangleBudget` (0: no budget): the
-// smallest worst-case error in pixels that meets the budget, the same for every object.
-LodChoice chooseLevels(const std::vector<LodCandidate>& candidates, double tolerancePx, std::size_t triangleBudget = 0);
+// smallest worst-case error in pixels that meets the budget, the same for every object. It
+// never rises above `maxTolerancePx` (>= tolerancePx): a budget that needs more is not met
+// (overBudget) and the levels within maxTolerancePx are drawn.
+LodChoice chooseLevels(const std::vector<LodCandidate>& candidates, double tolerancePx, std::size_t triangleBudget = 0,
+                       double maxTolerancePx = std::numeric_limits<double>::infinity());
 
 }  // namespace cavewall::scenes

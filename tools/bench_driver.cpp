@@ -62,8 +62,9 @@ BakedWalls bakeWalls(const BenchOptions& o, double alphaDeg, const scenes::Scene
 }
 
 ModeResult namedMode(std::string mode, double alphaDeg = 0.0, std::string transition = "none", double lodPixels = 0.0,
-                     std::size_t triangleBudget = 0) {
+                     std::size_t triangleBudget = 0, double frameBudgetMs = 0.0) {
     ModeResult m;
+    m.frameBudgetMs = frameBudgetMs;
     m.mode = std::move(mode);
     m.alphaDeg = alphaDeg;
     m.transition = std::move(transition);
@@ -111,7 +112,8 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
             "cells: the cells the walls mode draws as geometry, without textures",
             o.lodPixels > 0.0 ? "lod: levels of detail built when the mode starts (meshoptimizer, sampled Hausdorff "
                                 "error), each object drawn at the coarsest level within " +
-                                    config::formatNumber(o.lodPixels) + " px on every screen it appears on"
+                                    config::formatNumber(o.lodPixels) + " px on every screen it appears on; budgets "
+                                    "raise that tolerance to at most " + config::formatNumber(o.lodMaxPixels) + " px"
                               : "lod: off (--lod 0)"};
 }
 
@@ -142,7 +144,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
     const auto context = gl::createHeadlessContext();
     BenchReport report;
     report.header = headerLines(o, scene, *context, path);
-    const ModeContext c{scene, description, display, *context, path, o.compareEvery};
+    const ModeContext c{scene, description, display, *context, path, o.compareEvery, o.lodMaxPixels};
 
     say(o, "bench: full geometry");
     ReferenceImages reference;
@@ -180,10 +182,10 @@ BenchReport runBenchmark(const BenchOptions& o) {
     runCells(true, 0.0);
     if (lod) runCells(true, o.lodPixels);
     auto runWalls = [&](std::size_t i, gl::Transition transition, bool paged, double lodPixels = 0.0,
-                        std::size_t budget = 0) {
+                        std::size_t budget = 0, double frameBudgetMs = 0.0) {
         const std::string label = std::string(transition == gl::Transition::Warp ? "warp" : "blend") +
                                   (paged ? " paged" : "");
-        ModeResult mode = namedMode("walls", o.alphasDeg[i], label, lodPixels, budget);
+        ModeResult mode = namedMode("walls", o.alphasDeg[i], label, lodPixels, budget, frameBudgetMs);
         say(o, "bench: " + modeLabel(mode));
         mode.textures = static_cast<int>(baked[i].setup.plan.textures.size());
         mode.texels = baked[i].texels;
@@ -207,6 +209,9 @@ BenchReport runBenchmark(const BenchOptions& o) {
                         budget = static_cast<std::size_t>(medianTriangles(m));
             runWalls(i, gl::Transition::Blend, false, o.lodPixels, std::max<std::size_t>(budget, 1));
         }
+    if (lod && o.frameBudgetMs > 0.0)
+        for (std::size_t i = 0; i < baked.size(); ++i)
+            runWalls(i, gl::Transition::Blend, false, o.lodPixels, 0, o.frameBudgetMs);
     if (lod && o.triangleBudget == 0)
         report.header.push_back("triangle budgets: per alpha, the median triangles of the same walls mode without a "
                                 "budget");

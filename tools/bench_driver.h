@@ -21,6 +21,8 @@
 //           with them under a triangle budget (`triangleBudget`, or the median triangles of
 //           the same mode without a budget), so that the levels' share of the speed-up and of
 //           the error reads apart from the walls'.
+//  - with `lodPixels` and `frameBudgetMs` > 0, every walls blend mode with levels of detail
+//           and the frame-time controller (display/frame_budget.h) aiming at frameBudgetMs.
 //  - last, the noise floor: the last mode again, each path frame followed by one fixed frame,
 //           whose p99/p50 is the machine's own (a header line, not a mode).
 //
@@ -54,6 +56,8 @@ struct BenchOptions {
     double lodPixels = 1.0;                       // level-of-detail modes' tolerance; 0: none
     std::size_t triangleBudget = 0;               // the budget mode's; 0: the median of its mode
                                                   // without a budget
+    double frameBudgetMs = 1000.0 / 60.0;         // the frame-time modes' target; 0: none
+    double lodMaxPixels = 8.0;                    // the most a budget may raise the tolerance to
     std::optional<std::filesystem::path> cache;   // bake cache (default: the baker's)
     bool verbose = true;                          // progress on stdout
 };

@@ -1,5 +1,6 @@
 #include "tools/bench_modes.h"
 
+#include "display/frame_budget.h"
 #include "display/gl/render_targets.h"
 #include "display/gl/scene_renderer.h"
 #include "walls/frame_select.h"
@@ -97,6 +98,7 @@ void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls
     options.transition = transition;
     options.render.lodPixels = acc.mode().lodPixels;
     options.triangleBudget = acc.mode().triangleBudget;
+    options.lodMaxPixels = c.lodMaxPixels;
     if (!paged) {
         options.synchronousPaging = true;
         options.textureBudgetMB = 4096.0;  // every texture of the path stays resident after warm-up
@@ -107,13 +109,21 @@ void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls
     // Warm-up: shaders, buffers and (with walls, unless paged) every texture of the path made
     // resident.
     const long frames = static_cast<long>(c.path.frames.size());
+    std::optional<display::FrameTimeBudget> frameBudget;
+    if (acc.mode().frameBudgetMs > 0.0) frameBudget.emplace(acc.mode().frameBudgetMs);
+    auto render = [&](gl::FrameInput in) {
+        if (frameBudget) in.triangleBudget = frameBudget->budget();
+        gl::FrameResult r = walkthrough.renderFrame(in);
+        if (frameBudget) frameBudget->update(r.frameMs, r.geometryTriangles);
+        return r;
+    };
     const long warmUp = hasWalls && !paged ? frames : std::min<long>(3, frames);
-    for (long i = 0; i < warmUp; ++i) walkthrough.renderFrame(c.path.frames[i]);
+    for (long i = 0; i < warmUp; ++i) render(c.path.frames[i]);
     if (!paged) walkthrough.waitForTextures();
     for (const gl::FrameInput& frame : c.path.frames) {
         gl::FrameInput in = frame;
         in.readImages = compared(c, in.frame);
-        gl::FrameResult r = walkthrough.renderFrame(in);
+        gl::FrameResult r = render(in);
         acc.addFrame({r.frameMs, r.cpuMs, r.gpuMs, static_cast<double>(r.stats.triangles),
                       static_cast<double>(r.stats.drawCalls), r.maxErrorDeg, r.maxErrorPixels, r.pager.residentMB,
                       r.pager.misses, r.perScreen, r.lodErrorPx, r.lodTolerancePx, r.lodOverBudget});
@@ -131,6 +141,7 @@ NoiseComparison interleavedNoise(const ModeContext& c, std::optional<gl::WallSet
     options.uploadMBPerFrame = 4096.0;
     options.render.lodPixels = mode.lodPixels;
     options.triangleBudget = mode.triangleBudget;
+    options.lodMaxPixels = c.lodMaxPixels;
     gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
     const gl::FrameInput fixed = c.path.frames.at(static_cast<std::size_t>(frameIndex));
     for (const gl::FrameInput& in : c.path.frames) walkthrough.renderFrame(in);

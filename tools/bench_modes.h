@@ -57,6 +57,7 @@ struct ModeContext {
     gl::Context& context;
     const EyePath& path;
     int compareEvery = 4;
+    double lodMaxPixels = 8.0;  // WalkthroughOptions::lodMaxPixels of the budgeted modes
 };
 
 // Runs the walkthrough (walls: nullopt = full geometry) over the path: a warm-up pass when it

@@ -42,7 +42,7 @@ std::string screensCsv(const BenchReport& report) {
 // The first mode named `mode` drawing at the same level-of-detail tolerance as `like`.
 const ModeResult* findMode(const BenchReport& report, const std::string& mode, const ModeResult& like) {
     for (const ModeResult& m : report.modes)
-        if (m.mode == mode && m.lodPixels == like.lodPixels && m.triangleBudget == 0) return &m;
+        if (m.mode == mode && m.lodPixels == like.lodPixels && m.triangleBudget == 0 && m.frameBudgetMs == 0.0) return &m;
     return nullptr;
 }
 
@@ -83,6 +83,7 @@ std::string modeLabel(const ModeResult& m) {
     std::string label = m.mode == "walls" ? "walls a=" + num(m.alphaDeg) + " " + m.transition : m.mode;
     if (m.lodPixels > 0.0) label += " lod " + num(m.lodPixels) + "px";
     if (m.triangleBudget > 0) label += " budget " + std::to_string(m.triangleBudget);
+    if (m.frameBudgetMs > 0.0) label += " frame " + num(m.frameBudgetMs, 3) + "ms";
     return label;
 }
 
@@ -90,7 +91,7 @@ std::string csvHeader() {
     return "mode,alpha_deg,transition,frame_ms_p50,frame_ms_p95,frame_ms_p99,speedup,psnr_db,rmse,ssim,max_err_deg,"
            "max_err_px,triangles,draw_calls,textures,disk_mb,gpu_mb,cpu_ms_p50,cpu_ms_p95,cpu_ms_p99,gpu_ms_p50,"
            "gpu_ms_p95,gpu_ms_p99,texels,misses,mean_psnr_db,load_p99_p50,lod_px,triangle_budget,max_lod_err_px,"
-           "mean_lod_tolerance_px,over_budget_frames";
+           "mean_lod_tolerance_px,over_budget_frames,frame_budget_ms";
 }
 
 std::string csvRow(const ModeResult& m) {
@@ -99,7 +100,8 @@ std::string csvRow(const ModeResult& m) {
                              static_cast<double>(m.textures), m.diskMB, m.gpuMB, m.cpuMs.p50, m.cpuMs.p95, m.cpuMs.p99,
                              m.gpuMs.p50, m.gpuMs.p95, m.gpuMs.p99, m.texels, static_cast<double>(m.misses),
                              m.error.meanPsnrDb, m.loadRatio, m.lodPixels, static_cast<double>(m.triangleBudget),
-                             m.maxLodErrPx, m.meanLodTolerancePx, static_cast<double>(m.overBudgetFrames)};
+                             m.maxLodErrPx, m.meanLodTolerancePx, static_cast<double>(m.overBudgetFrames),
+                             m.frameBudgetMs};
     std::string row = m.mode + "," + num(m.alphaDeg) + "," + m.transition;
     for (double v : values) row += "," + num(v);
     return row;

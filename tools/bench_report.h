@@ -32,6 +32,7 @@ struct ModeResult {
     std::string transition = "none";   // blend | warp for walls modes
     double lodPixels = 0.0;            // level-of-detail tolerance in pixels; 0: full detail
     std::size_t triangleBudget = 0;    // per frame (with levels of detail); 0: none
+    double frameBudgetMs = 0.0;        // frame-time target of the budget controller; 0: none
     TimeStats frameMs, cpuMs, gpuMs;
     double speedup = 1.0;              // full-geometry frame_ms_p50 / this mode's
     ImageError error;                  // all screens

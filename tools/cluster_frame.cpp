@@ -56,6 +56,7 @@ FrameState frameStateOf(const gl::FrameInput& in) {
     s.worldFromCave = in.worldFromCave;
     Writer w;
     w.put(static_cast<std::uint8_t>(in.readImages));
+    w.put(static_cast<std::uint64_t>(in.triangleBudget));
     w.put(static_cast<std::uint8_t>(in.hand.has_value()));
     if (in.hand) {
         w.put(in.hand->position);
@@ -73,8 +74,10 @@ bool frameInputOf(const FrameState& s, gl::FrameInput& in) {
     in.worldFromCave = s.worldFromCave;
     Reader r(s.payload);
     std::uint8_t readImages = 0, hasHand = 0;
-    if (!r.get(readImages) || !r.get(hasHand)) return false;
+    std::uint64_t triangleBudget = 0;
+    if (!r.get(readImages) || !r.get(triangleBudget) || !r.get(hasHand)) return false;
     in.readImages = readImages != 0;
+    in.triangleBudget = static_cast<std::size_t>(triangleBudget);
     in.hand.reset();
     if (hasHand) {
         gl::HandCursorPose hand;

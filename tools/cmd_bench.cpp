@@ -20,7 +20,7 @@ const char* const kBenchUsage =
     "usage: cavewall bench SCENE [--display D] [--path P] [--out DIR] [--frames N] [--resolution N]\n"
     "                      [--quick] [--cache DIR] [--compare-every K] [--min-zone M] [--ppd N]\n"
     "                      [--bake-resolution N] [--alphas A,B,...] [--warp-alpha A]\n"
-    "                      [--lod PX] [--triangle-budget N]\n"
+    "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
     "       cavewall bench --stability\n"
     "\n"
     "SCENE    error against run time in one run (a scene.json, its folder, or glTF/GLB with\n"
@@ -35,7 +35,10 @@ const char* const kBenchUsage =
     "         then full geometry, the limit and every blend mode again with levels of detail at\n"
     "         --lod pixels (default 1; 0 leaves these modes out), and every blend mode with\n"
     "         levels of detail under a triangle budget (--triangle-budget, default the median\n"
-    "         triangles of the same mode without a budget). A header line gives the machine's\n"
+    "         triangles of the same mode without a budget), and every blend mode with levels of\n"
+    "         detail held to --frame-budget-ms (default 16.67, 60 Hz; 0 leaves these out) by the\n"
+    "         frame-time controller. Budgets raise the tolerance to at most --lod-max pixels\n"
+    "         (default 8). A header line gives the machine's\n"
     "         noise floor: the last mode with each frame followed by one fixed frame, whose\n"
     "         p99/p50 is noise alone.\n"
     "         Per mode: frame, CPU and GPU ms p50/p95/p99, speed-up, the triangles' p99/p50,\n"
@@ -113,6 +116,8 @@ int runSceneBench(const Args& args) {
     o.transitionAlphaDeg = args.number("warp-alpha", o.transitionAlphaDeg, 0.1, 89.0);
     o.lodPixels = args.number("lod", o.lodPixels, 0.0, 1e4);
     o.triangleBudget = static_cast<std::size_t>(args.integer("triangle-budget", 0, 0, 1000000000));
+    o.frameBudgetMs = args.number("frame-budget-ms", o.frameBudgetMs, 0.0, 1e5);
+    o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);
     if (std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg) == o.alphasDeg.end()) {
         std::string list;
         for (double a : o.alphasDeg) list += (list.empty() ? "" : ",") + config::formatNumber(a);
@@ -134,7 +139,7 @@ int runSceneBench(const Args& args) {
 int runBench(const std::vector<std::string>& words) {
     const Args args(words, {"stability", "quick"});
     args.expectFlags({"stability", "quick", "display", "path", "out", "frames", "resolution", "cache", "compare-every",
-                      "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod", "triangle-budget"});
+                      "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod", "triangle-budget", "frame-budget-ms", "lod-max"});
     if (args.has("stability")) return runStability();
 #ifdef CAVEWALL_HAVE_GL
     if (!args.positional().empty()) return runSceneBench(args);

@@ -12,7 +12,8 @@ const char* const kRunUsage =
     "                    [--nav guided|fly|walk|none] [--pace M/S] [--headless|--window]\n"
     "                    [--transition blend|warp] [--no-walls] [--alpha DEG] [--min-zone M] [--ppd N]\n"
     "                    [--save-frames none|every:K|all] [--record FILE] [--cache DIR]\n"
-    "                    [--budget MB] [--sync-paging] [--lod PX [--triangle-budget N]]\n"
+    "                    [--budget MB] [--sync-paging]\n"
+    "                    [--lod PX [--triangle-budget N|--frame-budget-ms T] [--lod-max PX]]\n"
     "                    [--cluster [--cluster-timeout S]]\n"
     "\n"
     "Walks through scene S (a scene.json, a folder holding one, or a bare glTF/GLB file) on the\n"
@@ -33,7 +34,11 @@ const char* const kRunUsage =
     "when the scene loads; default 0: full detail); --triangle-budget N raises that tolerance in\n"
     "frames whose scene geometry would submit more than N triangles, just enough to fit\n"
     "(frames.csv: lod_px, the tolerance used; lod_err_px, the largest error drawn; lod_over_budget,\n"
-    "1 when even the coarsest levels exceed N; geometry_triangles, what the budget caps). Writes DIR/frames.csv (one row per frame: head and eye,\n"
+    "1 when even the coarsest levels exceed N; geometry_triangles, what the budget caps).\n"
+    "--frame-budget-ms T sets that budget frame by frame from the frames' times instead, so that\n"
+    "frames take about T ms (16.7 for 60 Hz) however heavy the view and however busy the machine,\n"
+    "at the cost of coarser levels where needed. Budgets raise the tolerance to at most --lod-max\n"
+    "pixels (default 8); a frame that needs more is drawn over budget. Writes DIR/frames.csv (one row per frame: head and eye,\n"
     "cell, zone, frame/cpu/gpu ms, triangles, draw calls, paging, max angular error in degrees and\n"
     "pixels), DIR/walls.csv (textures and weights per wall and frame, whether the wall lies\n"
     "beyond a neighbour drawn as geometry, its exact error in degrees) and, with --save-frames,\n"
@@ -66,7 +71,7 @@ int runRun(const std::vector<std::string>& words) {
     const Args args(words, {"headless", "window", "no-walls", "sync-paging", "cluster"});
     args.expectFlags({"scene", "display", "tracker", "frames", "nav", "pace", "headless", "window", "transition",
                       "no-walls", "alpha", "min-zone", "ppd", "save-frames", "record", "cache", "budget",
-                      "sync-paging", "out", "cluster", "cluster-timeout", "lod", "triangle-budget"});
+                      "sync-paging", "out", "cluster", "cluster-timeout", "lod", "triangle-budget", "frame-budget-ms", "lod-max"});
     if (args.has("headless") && args.has("window")) throw Error("--headless and --window: expected one of them, got both");
     RunOptions o;
     o.scene = args.require("scene");
@@ -90,9 +95,16 @@ int runRun(const std::vector<std::string>& words) {
     o.synchronousPaging = args.has("sync-paging");
     o.lodPixels = args.number("lod", 0.0, 0.0, 1e4);
     o.triangleBudget = static_cast<std::size_t>(args.integer("triangle-budget", 0, 0, 1000000000));
+    o.frameBudgetMs = args.number("frame-budget-ms", 0.0, 0.0, 1e5);
+    o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);
     if (o.triangleBudget > 0 && !(o.lodPixels > 0.0))
         throw Error("--triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod " +
                     config::formatNumber(o.lodPixels));
+    if (o.frameBudgetMs > 0 && !(o.lodPixels > 0.0))
+        throw Error("--frame-budget-ms: needs levels of detail (--lod PX with PX > 0), got --lod " +
+                    config::formatNumber(o.lodPixels));
+    if (o.frameBudgetMs > 0 && o.triangleBudget > 0)
+        throw Error("--frame-budget-ms and --triangle-budget: expected one of them, got both");
     o.cluster = args.has("cluster");
     o.clusterTimeout = args.number("cluster-timeout", o.clusterTimeout, 0.1, 3600.0);
     const RunSummary s = runSession(o);

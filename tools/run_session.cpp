@@ -1,6 +1,7 @@
 #include "tools/run_session.h"
 
 #include "display/display.h"
+#include "display/frame_budget.h"
 #include "display/gl/context.h"
 #include "input/navigator.h"
 #include "input/recording.h"
@@ -113,20 +114,25 @@ RunSummary runSession(const RunOptions& o) {
     options.transition = o.transition == "warp" ? gl::Transition::Warp : gl::Transition::Blend;
     options.render.lodPixels = o.lodPixels;
     options.triangleBudget = o.triangleBudget;
+    options.lodMaxPixels = std::max(o.lodMaxPixels, o.lodPixels);
     const std::vector<int> screens = cluster ? config::screensOfRank(o.display, rank, cluster->size()) : std::vector<int>{};
     gl::Walkthrough walkthrough(scene, description, display, *context, std::move(setup), options, screens);
 
     std::unique_ptr<RunOutput> output = rank == 0 ? std::make_unique<RunOutput>(o.out, description, display) : nullptr;
     RunSummary summary;
     summary.renderer = context->info().renderer;
+    std::optional<display::FrameTimeBudget> frameBudget;
+    if (o.frameBudgetMs > 0.0) frameBudget.emplace(o.frameBudgetMs);
     summary.walls = walkthrough.hasWalls();
     for (long i = 0; i < o.frames; ++i) {
         const bool save = o.saveEvery > 0 && i % o.saveEvery == 0;
         if (context->windowCount() > 0 && context->pollCloseRequested()) break;  // a window was closed
         gl::FrameInput in = input ? input->next(i, save, context->takeInputEvents()) : gl::FrameInput{};
+        if (frameBudget) in.triangleBudget = frameBudget->budget();
         double syncMs = cluster ? receiveFrame(*cluster, in) : 0.0;
         gl::FrameResult r = walkthrough.renderFrame(in);
         if (cluster) syncMs = combineFrame(*cluster, r, syncMs, screens);
+        if (frameBudget) frameBudget->update(r.frameMs, r.geometryTriangles);  // rank 0: the slowest rank's time
         if (!output) continue;
         output->writeFrame(i, in.time, in.head.position, r, syncMs);
         if (in.readImages) summary.foldouts.push_back(output->saveImages(i, r.images));

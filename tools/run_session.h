@@ -40,6 +40,8 @@ struct RunOptions {
     double textureBudgetMB = 256.0;
     double lodPixels = 0.0;                     // --lod: level-of-detail tolerance in pixels, 0 off
     std::size_t triangleBudget = 0;             // --triangle-budget: per frame, 0 none (needs --lod)
+    double frameBudgetMs = 0.0;                 // --frame-budget-ms: frame-time target, 0 none (needs --lod)
+    double lodMaxPixels = 8.0;                  // --lod-max: the most a budget raises the tolerance to
     std::filesystem::path out;                  // output folder (created)
     bool verbose = true;                        // progress and summary on stdout
     bool cluster = false;                       // --cluster: one process per screen group on MPI

@@ -328,7 +328,8 @@ double SceneRenderer::pixelsPerUnit(int object, const display::ScreenView& view,
 }
 
 FrameLod SceneRenderer::chooseLods(const std::vector<display::ScreenView>& views, const glm::dmat4& worldFromCave,
-                                   const DrawFilter& filter, double tolerancePx, std::size_t triangleBudget) {
+                                   const DrawFilter& filter, double tolerancePx, std::size_t triangleBudget,
+                                   double maxTolerancePx) {
     FrameLod out;
     out.levels.assign(_objects.size(), 0);
     if (!hasLods()) return out;
@@ -352,7 +353,7 @@ FrameLod SceneRenderer::chooseLods(const std::vector<display::ScreenView>& views
         candidates.push_back({&_lods[_objects[i].mesh], perUnit[i], viewCount[i]});
         objects.push_back(i);
     }
-    const scenes::LodChoice choice = scenes::chooseLevels(candidates, tolerancePx, triangleBudget);
+    const scenes::LodChoice choice = scenes::chooseLevels(candidates, tolerancePx, triangleBudget, maxTolerancePx);
     for (std::size_t k = 0; k < objects.size(); ++k) out.levels[objects[k]] = choice.level[k];
     out.tolerancePx = choice.tolerancePx;
     out.maxErrorPx = choice.maxErrorPx;

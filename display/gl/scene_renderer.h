@@ -57,6 +57,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -177,8 +178,10 @@ public:
     // that neighbouring screens and both eyes draw the same shape. With `triangleBudget` > 0 the
     // tolerance rises to the least that fits the views' triangles into the budget
     // (scenes::chooseLevels). Without levels (RenderSettings::lodPixels = 0) everything is level 0.
+    // The tolerance never rises above `maxTolerancePx` (scenes::chooseLevels).
     FrameLod chooseLods(const std::vector<display::ScreenView>& views, const glm::dmat4& worldFromCave,
-                        const DrawFilter& filter, double tolerancePx, std::size_t triangleBudget = 0);
+                        const DrawFilter& filter, double tolerancePx, std::size_t triangleBudget = 0,
+                        double maxTolerancePx = std::numeric_limits<double>::infinity());
     bool hasLods() const { return !_lods.empty(); }
 
     // GPU milliseconds of the last render(), waiting for the GPU if needed (for benchmarks and

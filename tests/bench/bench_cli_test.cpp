@@ -53,15 +53,17 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
     };
     const std::size_t lodColumn = column("lod_px"), budgetColumn = column("triangle_budget");
-    ASSERT_LT(budgetColumn, header.size());
+    const std::size_t frameColumn = column("frame_budget_ms");
+    ASSERT_LT(frameColumn, header.size());
     std::map<std::string, int> rows;
     while (std::getline(csv, line)) {
         const auto f = split(line);
         ASSERT_EQ(f.size(), header.size()) << line;
         const bool lod = std::strtod(f[lodColumn].c_str(), nullptr) > 0.0;
         const bool budget = std::strtod(f[budgetColumn].c_str(), nullptr) > 0.0;
+        const bool frame = std::strtod(f[frameColumn].c_str(), nullptr) > 0.0;
         const std::string key = f[0] + (f[0] == "walls" ? " " + f[1] + " " + f[2] : "") + (lod ? " lod" : "") +
-                                (budget ? " budget" : "");
+                                (budget ? " budget" : "") + (frame ? " frame" : "");
         ++rows[key];
         SCOPED_TRACE(key);
         for (std::size_t i = 3; i < f.size(); ++i) {
@@ -77,11 +79,13 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         }
     }
     // With levels of detail (--lod defaults to 1 px): full, near and every blend mode again,
-    // and every blend mode with them under a triangle budget.
+    // every blend mode with them under a triangle budget, and every blend mode with them held
+    // to 60 Hz by the frame-time controller.
     const std::map<std::string, int> expected = {
         {"full", 1}, {"full lod", 1}, {"cells", 1}, {"near", 1}, {"near lod", 1}, {"walls 20 blend", 1},
         {"walls 30 blend", 1}, {"walls 20 blend lod", 1}, {"walls 30 blend lod", 1}, {"walls 30 warp", 1},
-        {"walls 30 blend paged", 1}, {"walls 20 blend lod budget", 1}, {"walls 30 blend lod budget", 1}};
+        {"walls 30 blend paged", 1}, {"walls 20 blend lod budget", 1}, {"walls 30 blend lod budget", 1},
+        {"walls 20 blend lod frame", 1}, {"walls 30 blend lod frame", 1}};
     EXPECT_EQ(rows, expected);
     EXPECT_TRUE(fs::is_regular_file(out / "bench.png"));
     EXPECT_TRUE(fs::is_regular_file(out / "bench.md"));
@@ -99,7 +103,7 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         EXPECT_TRUE(std::isfinite(std::strtod(f[10].c_str(), nullptr))) << line;
         ++screenRows;
     }
-    EXPECT_EQ(screenRows, 13 * 4);
+    EXPECT_EQ(screenRows, 15 * 4);
 }
 
 TEST(BenchSceneCli, BadInputIsAClearError) {

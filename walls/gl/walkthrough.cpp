@@ -427,7 +427,8 @@ FrameResult Walkthrough::renderFrame(const FrameInput& input) {
         // Over every screen, also those of other cluster ranks: each rank then picks the same
         // levels for what several draw, and the budget is the whole display's.
         lod = _renderer.chooseLods(_display.views(input.head), input.worldFromCave, filter, _options.render.lodPixels,
-                                   _options.triangleBudget);
+                                   input.triangleBudget > 0 ? input.triangleBudget : _options.triangleBudget,
+                                   _options.lodMaxPixels);
         filter.lodLevels = &lod.levels;
         result.lodTolerancePx = lod.tolerancePx;
         result.lodErrorPx = lod.maxErrorPx;

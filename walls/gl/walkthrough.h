@@ -95,6 +95,9 @@ struct WalkthroughOptions {
     // views; the wall, warp and cursor passes are not counted) by raising the tolerance
     // (seed 004's frame budget); 0: no cap.
     std::size_t triangleBudget = 0;
+    // The most a budget may raise the tolerance to, pixels (>= render.lodPixels): beyond it a
+    // frame is drawn over budget rather than with coarser shapes (FrameResult::lodOverBudget).
+    double lodMaxPixels = 8.0;
 };
 
 struct FrameInput {
@@ -104,6 +107,10 @@ struct FrameInput {
     glm::dmat4 worldFromCave{1.0};
     std::optional<HandCursorPose> hand;      // drawn when given
     bool readImages = false;                 // read every rendered image back into FrameResult
+    // This frame's triangle budget (with levels of detail), > 0 overrides
+    // WalkthroughOptions::triangleBudget: a frame-time controller (display/frame_budget.h)
+    // sets it frame by frame, the same on every cluster rank.
+    std::size_t triangleBudget = 0;
 };
 
 // One wall's state in a frame (walls.csv).

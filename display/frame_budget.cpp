@@ -1,0 +1,27 @@
+#include "display/frame_budget.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace cavewall::display {
+
+FrameTimeBudget::FrameTimeBudget(double targetMs, double gain) : _target(targetMs), _gain(gain) {
+    assert(targetMs > 0.0 && gain > 0.0 && gain <= 1.0);
+}
+
+void FrameTimeBudget::update(double frameMs, std::size_t triangles) {
+    if (!(frameMs > 0.0) || !std::isfinite(frameMs) || triangles == 0) return;
+    const double g = static_cast<double>(triangles);
+    _costs[_next] = frameMs / g;
+    _next = (_next + 1) % kWindow;
+    _count = std::min(_count + 1, kWindow);
+    double window[kWindow];
+    std::copy(_costs, _costs + _count, window);
+    std::nth_element(window, window + _count / 2, window + _count);
+    const double cost = window[_count / 2];
+    const double next = std::pow(g, 1.0 - _gain) * std::pow(_target / cost, _gain);
+    _budget = static_cast<std::size_t>(std::clamp(next, std::max(1.0, 0.5 * g), std::min(2.0 * g, 1e15)));
+}
+
+}  // namespace cavewall::display
