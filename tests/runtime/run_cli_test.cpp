@@ -172,6 +172,10 @@ TEST(RunCli, BadFlagsAndSpecsGiveClearErrors) {
         {"budget without levels", {"--triangle-budget", "5000"},
          "--triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod 0"},
         {"negative lod", {"--lod", "-1"}, "--lod: expected a number in [0"},
+        {"frame budget without levels", {"--frame-budget-ms", "16.7"},
+         "--frame-budget-ms: needs levels of detail (--lod PX with PX > 0), got --lod 0"},
+        {"both budgets", {"--lod", "1", "--frame-budget-ms", "16.7", "--triangle-budget", "5000"},
+         "--frame-budget-ms and --triangle-budget: expected one of them, got both"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
@@ -239,6 +243,29 @@ TEST(RunCli, LevelsOfDetailReportTheirToleranceErrorAndBudget) {
     args.insert(args.end(), {"--pace", "3", "--sync-paging", "--lod", "1", "--triangle-budget", "10"});
     ASSERT_EQ(runCavewall(args).exitCode, 0);
     for (const auto& row : readCsv(impossible / "frames.csv")) EXPECT_EQ(row.at("lod_over_budget"), "1");
+}
+
+TEST(RunCli, AFrameBudgetCoarsensLevelsUntilFramesFitIt) {
+    // A target far below what the small plant takes at full detail (a few ms here): the
+    // controller raises the tolerance after the first frame, up to --lod-max and no further.
+    const fs::path out = outputDir("frame-budget");
+    std::vector<std::string> args = wallRun(out, "sim:walk?seed=2", 12);
+    args.insert(args.end(), {"--pace", "3", "--sync-paging", "--lod", "1", "--frame-budget-ms", "0.01",
+                             "--lod-max", "3"});
+    const CliResult r = runCavewall(args);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto rows = readCsv(out / "frames.csv");
+    ASSERT_EQ(rows.size(), 12u);
+    EXPECT_EQ(std::stod(rows[0].at("lod_px")), 1.0);  // no budget before the first frame's time
+    for (std::size_t i = 2; i < rows.size(); ++i) {
+        SCOPED_TRACE(i);
+        // Raised to the coarsest levels within the cap (the largest error breakpoint below
+        // 3 px), and still over budget.
+        EXPECT_GT(std::stod(rows[i].at("lod_px")), 1.0);
+        EXPECT_LE(std::stod(rows[i].at("lod_px")), 3.0);
+        EXPECT_EQ(rows[i].at("lod_over_budget"), "1");
+        EXPECT_LE(std::stod(rows[i].at("lod_err_px")), std::stod(rows[i].at("lod_px")) + 1e-3);
+    }
 }
 
 TEST(RunCli, ReplayReproducesPosesAndFramesExactly) {

@@ -96,6 +96,27 @@ TEST(LodChoice, HandMadeCases) {
     }
 }
 
+TEST(LodChoice, ABudgetNeverRaisesTheToleranceAboveItsCap) {
+    // A costs 0, 0.5, 2 and 8 px at 64 px per unit (as in the hand-made cases).
+    const MeshLod a = handLod({1000, 400, 100, 20}, {0, 1.0 / 128, 1.0 / 32, 1.0 / 8});
+    const std::vector<LodCandidate> one = {{&a, 64, 1}};
+    // 50 triangles need A's 8 px level; capped at 4 px the 2 px level (100 triangles) is the
+    // coarsest allowed: over budget.
+    const LodChoice capped = chooseLevels(one, 0.3, 50, 4.0);
+    EXPECT_EQ(capped.level, std::vector<int>{2});
+    EXPECT_EQ(capped.tolerancePx, 2.0);
+    EXPECT_TRUE(capped.overBudget);
+    EXPECT_LE(capped.maxErrorPx, 4.0);
+    // A budget the cap allows is met as without a cap.
+    const LodChoice met = chooseLevels(one, 0.3, 100, 4.0);
+    EXPECT_EQ(met.level, std::vector<int>{2});
+    EXPECT_FALSE(met.overBudget);
+    // The cap never lowers the tolerance asked for.
+    const LodChoice low = chooseLevels(one, 3.0, 0, 1.0);
+    EXPECT_EQ(low.tolerancePx, 3.0);
+    EXPECT_EQ(low.level, std::vector<int>{2});
+}
+
 TEST(LodChoice, InfinitePixelsPerUnitDrawsLevelZeroEvenWhenAFinerLevelIsFree) {
     // The header: +infinity when the eye is inside the bounds, "level 0 only". A level whose
     // error is 0 (a lossless simplification: a planar patch) must not be taken then either.
