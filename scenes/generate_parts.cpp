@@ -85,9 +85,11 @@ Mesh makeMachineTool(int variant, int detail) {
         if (d > 0) b.cylinderY({x, 0.8f, 0.9f}, 0.04f, 0.06f, kSteel);
     }
     // Control panel buttons: a grid on the panel's front face (z = 1.0), 4 per row.
-    for (int i = 0; i < 8 * d; ++i)
-        b.cylinderAlong(2, {0.5f * len - 0.05f + 0.1f * static_cast<float>(i % 4), 1.05f + 0.7f * static_cast<float>(i / 4) / static_cast<float>(2 * d), 1.01f},
-                        0.018f, 0.02f, i % 3 == 0 ? kRed : (i % 3 == 1 ? kYellow : kMachineGreen));
+    for (int i = 0; i < 8 * d; ++i) {
+        const float x = 0.5f * len - 0.05f + 0.1f * static_cast<float>(i % 4);
+        const float y = 1.05f + 0.7f * static_cast<float>(i / 4) / static_cast<float>(2 * d);
+        b.cylinderAlong(2, {x, y, 1.01f}, 0.018f, 0.02f, i % 3 == 0 ? kRed : (i % 3 == 1 ? kYellow : kMachineGreen));
+    }
     // Tool magazine on the roof: a ring of holders around (-0.8, 0), radius 0.45.
     const float roof = 0.8f + tall;
     for (int i = 0; i < 12 * d; ++i) {
@@ -95,8 +97,10 @@ Mesh makeMachineTool(int variant, int detail) {
         b.cylinderY({-0.8f + 0.45f * std::cos(a), roof, 0.45f * std::sin(a)}, 0.025f, 0.15f, kSteel);
     }
     // Cable chain along the roof's back edge.
-    for (int i = 0; i < 10 * d; ++i)
-        b.box({-1.5f + 2.5f * static_cast<float>(i) / static_cast<float>(10 * d), roof + 0.03f, 0.6f}, {0.07f, 0.05f, 0.08f}, kDark);
+    for (int i = 0; i < 10 * d; ++i) {
+        const float x = -1.5f + 2.5f * static_cast<float>(i) / static_cast<float>(10 * d);
+        b.box({x, roof + 0.03f, 0.6f}, {0.07f, 0.05f, 0.08f}, kDark);
+    }
     return b.finish("machine-tool-" + std::to_string(variant));
 }
 
@@ -136,9 +140,10 @@ Mesh makeConveyor(int detail) {
     const float pitch = 2.8f / static_cast<float>(rollers - 1), radius = std::min(0.045f, 0.45f * pitch);
     for (int i = 0; i < rollers; ++i)
         b.cylinderAlong(2, {-1.4f + static_cast<float>(i) * pitch, 0.85f, 0}, radius, 0.74f, kSteel);
-    for (int i = 0; i < 6 * d; ++i)  // bolts along both side rails
-        for (float z : {-0.435f, 0.435f})
-            b.cylinderAlong(2, {-1.45f + 2.9f * static_cast<float>(i) / static_cast<float>(6 * d), 0.85f, z}, 0.012f, 0.01f, kDark);
+    for (int i = 0; i < 6 * d; ++i) {  // bolts along both side rails
+        const float x = -1.45f + 2.9f * static_cast<float>(i) / static_cast<float>(6 * d);
+        for (float z : {-0.435f, 0.435f}) b.cylinderAlong(2, {x, 0.85f, z}, 0.012f, 0.01f, kDark);
+    }
     return b.finish("conveyor");
 }
 
@@ -153,9 +158,10 @@ Mesh makeCabinet(int detail) {
     }
     b.cylinderAlong(2, {0.3f, 1.7f, 0.34f}, 0.06f, 0.03f, kRed);  // warning lamp
     const int d = b.density();
-    for (int i = 0; i < 6 * d; ++i)  // vent slats low on both doors
-        for (float x : {-0.3f, 0.3f})
-            b.box({x, 0.15f + 0.45f * static_cast<float>(i) / static_cast<float>(6 * d), 0.325f}, {0.4f, 0.012f, 0.012f}, kDark);
+    for (int i = 0; i < 6 * d; ++i) {  // vent slats low on both doors
+        const float y = 0.15f + 0.45f * static_cast<float>(i) / static_cast<float>(6 * d);
+        for (float x : {-0.3f, 0.3f}) b.box({x, y, 0.325f}, {0.4f, 0.012f, 0.012f}, kDark);
+    }
     for (int i = 0; i < 4 * d; ++i)  // cable glands on the roof
         b.cylinderY({-0.5f + static_cast<float>(i) / static_cast<float>(4 * d), 2.1f, -0.1f}, 0.02f, 0.04f, kDark);
     return b.finish("cabinet");

@@ -92,7 +92,8 @@ std::vector<MeshLod> buildSceneLods(const Scene& scene, const LodOptions& option
     std::vector<MeshLod> out(scene.meshes.size());
     std::atomic<std::size_t> next{0};
     auto work = [&] {
-        for (std::size_t m = next++; m < scene.meshes.size(); m = next++) out[m] = buildMeshLod(scene.meshes[m], options);
+        for (std::size_t m = next++; m < scene.meshes.size(); m = next++)
+            out[m] = buildMeshLod(scene.meshes[m], options);
     };
     const unsigned workers = std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
     std::vector<std::thread> threads;

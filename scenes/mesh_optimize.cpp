@@ -57,8 +57,8 @@ std::vector<std::uint32_t> positionTwins(const Mesh& mesh, double tol) {
     std::unordered_map<CellKey, std::vector<std::uint32_t>, CellHash> grid;
     std::vector<std::uint32_t> twin(mesh.positions.size());
     auto cellOf = [&](glm::vec3 p) {
-        return CellKey{static_cast<std::int64_t>(std::floor(p.x / tol)), static_cast<std::int64_t>(std::floor(p.y / tol)),
-                       static_cast<std::int64_t>(std::floor(p.z / tol))};
+        auto cell = [&](float c) { return static_cast<std::int64_t>(std::floor(c / tol)); };
+        return CellKey{cell(p.x), cell(p.y), cell(p.z)};
     };
     for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
         const glm::vec3 p = mesh.positions[v];

@@ -224,11 +224,12 @@ BenchReport runBenchmark(const BenchOptions& o) {
         const NoiseComparison n = interleavedNoise(c, baked[alpha].setup, last, middle);
         auto ratio = [](const TimeStats& t) { return fixed(t.p50 > 0 ? t.p99 / t.p50 : 0.0, 2); };
         report.noiseFloorRatio = n.repeated.p50 > 0 ? n.repeated.p99 / n.repeated.p50 : 0.0;
-        report.header.push_back("noise floor: " + modeLabel(last) + " along the path, each frame followed by frame " +
-                                std::to_string(middle) + " again: the path's frames p50 " + fixed(n.path.p50, 2) +
-                                " ms, p99/p50 " + ratio(n.path) + "; the repeated frame (the same work every time) p50 " +
-                                fixed(n.repeated.p50, 2) + " ms, p99/p50 " + ratio(n.repeated) +
-                                ": what the repeated frame shows is the machine's noise, not the renderer's");
+        report.header.push_back(
+            "noise floor: " + modeLabel(last) + " along the path, each frame followed by frame " +
+            std::to_string(middle) + " again: the path's frames p50 " + fixed(n.path.p50, 2) + " ms, p99/p50 " +
+            ratio(n.path) + "; the repeated frame (the same work every time) p50 " + fixed(n.repeated.p50, 2) +
+            " ms, p99/p50 " + ratio(n.repeated) + ": what the repeated frame shows is the machine's noise, not the "
+            "renderer's");
     }
     report.header.push_back("bench time: " +
                             fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 0) +

@@ -82,7 +82,8 @@ GpuScene::GpuScene(const scenes::Scene& scene, const std::vector<scenes::MeshLod
         std::vector<GpuMeshRange>& levels = _meshes.emplace_back();
         if (lods && i < lods->size() && !(*lods)[i].levels.empty()) {
             const scenes::MeshLod& lod = (*lods)[i];
-            for (const scenes::LodLevel& l : lod.levels) levels.push_back({first + l.firstIndex, l.indexCount, baseVertex});
+            for (const scenes::LodLevel& l : lod.levels)
+                levels.push_back({first + l.firstIndex, l.indexCount, baseVertex});
             indices.insert(indices.end(), lod.indices.begin(), lod.indices.end());
         } else {
             levels.push_back({first, static_cast<std::uint32_t>(m.indices.size()), baseVertex});

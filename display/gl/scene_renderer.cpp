@@ -312,7 +312,8 @@ void SceneRenderer::addDraws(const std::vector<int>& objects, const display::Off
 }
 
 // The most pixels one model unit of `object`'s error covers in `view` (display/pixel_scale.h).
-double SceneRenderer::pixelsPerUnit(int object, const display::ScreenView& view, const glm::dmat4& viewFromWorld) const {
+double SceneRenderer::pixelsPerUnit(int object, const display::ScreenView& view,
+                                    const glm::dmat4& viewFromWorld) const {
     const scenes::Bounds& b = _objects[object].worldBounds;
     std::array<glm::dvec3, 8> corners;
     for (int c = 0; c < 8; ++c) {

@@ -47,7 +47,9 @@ struct Frame {
     FrameLod lod;
 };
 
-bool covered(const scenes::Image& image, int x, int y) { return image.rgba[(std::size_t(y) * image.width + x) * 4] > 127; }
+bool covered(const scenes::Image& image, int x, int y) {
+    return image.rgba[(std::size_t(y) * image.width + x) * 4] > 127;
+}
 
 // Pixels where the coverage differs and no pixel within `radius` (Chebyshev) of it in the
 // reference has the other coverage, i.e. differences away from the reference's silhouette.
@@ -104,7 +106,8 @@ TEST_F(LodTest, SilhouettesMoveByAtMostTheTolerance) {
             // A silhouette moved by t pixels flips only pixels whose centres lie within t of the
             // true edge: within ceil(t) + 1 pixels of a pixel of the other coverage (the +1 for
             // the pixel-centre sampling of the rasteriser).
-            EXPECT_EQ(differencesAwayFromSilhouette(full.image, lod.image, static_cast<int>(std::ceil(tolerance)) + 1), 0);
+            const int radius = static_cast<int>(std::ceil(tolerance)) + 1;
+            EXPECT_EQ(differencesAwayFromSilhouette(full.image, lod.image, radius), 0);
             // The cylinder's 2880 triangles are far finer than a pixel here: levels save most.
             EXPECT_LT(lod.stats.triangles, full.stats.triangles / 4);
         }
