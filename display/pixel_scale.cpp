@@ -41,6 +41,19 @@ ViewScreen viewScreen(const OffAxisFrustum& frustum, glm::ivec2 viewportSize) {
     return s;
 }
 
+ViewScreen viewScreen(const ScreenQuad& screen, glm::dvec3 eye, glm::ivec2 pixels) {
+    const ScreenBasis b = screenBasis(screen);
+    const glm::dvec3 toCorner = screen.lowerLeft - eye;
+    ViewScreen s;
+    s.distance = std::max(std::abs(glm::dot(toCorner, b.normal)), 1e-3);
+    s.left = glm::dot(toCorner, b.right);
+    s.right = s.left + b.width;
+    s.bottom = glm::dot(toCorner, b.up);
+    s.top = s.bottom + b.height;
+    s.pixelSize = std::min(b.width / std::max(pixels.x, 1), b.height / std::max(pixels.y, 1));
+    return s;
+}
+
 double maxPixelsPerRadian(const ViewScreen& screen) {
     return farthestCorner(screen, screen.left, screen.right, screen.bottom, screen.top);
 }

@@ -31,6 +31,10 @@ struct ViewScreen {
 // The screen of `frustum` (from its projection) drawn into `viewportSize` pixels.
 ViewScreen viewScreen(const OffAxisFrustum& frustum, glm::ivec2 viewportSize);
 
+// The same for a screen rectangle seen from `eye` (the same frame), drawn into `pixels`; an eye
+// nearer the plane than 1 mm (or behind it) counts as 1 mm away, as offAxisFrustum's guard.
+ViewScreen viewScreen(const ScreenQuad& screen, glm::dvec3 eye, glm::ivec2 pixels);
+
 // The most pixels per radian over the whole screen (at its corner farthest from the eye).
 double maxPixelsPerRadian(const ViewScreen& screen);
 

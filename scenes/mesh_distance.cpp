@@ -45,7 +45,10 @@ public:
     explicit TriangleTree(std::vector<Triangle> triangles) : _triangles(std::move(triangles)) {
         std::vector<int> order(_triangles.size());
         std::iota(order.begin(), order.end(), 0);
-        if (!order.empty()) build(order, 0, static_cast<int>(order.size()));
+        if (!order.empty()) {
+            _nodes.push_back({});
+            build(order, 0, static_cast<int>(order.size()), 0);
+        }
         std::vector<Triangle> sorted;
         for (int i : order) sorted.push_back(_triangles[i]);
         _triangles = std::move(sorted);
@@ -97,13 +100,8 @@ private:
 
     glm::dvec3 centre(int i) const { return (_triangles[i].a + _triangles[i].b + _triangles[i].c) / 3.0; }
 
-    // Builds the node for order[begin, end) at _nodes[index] (index == _nodes.size() for the root).
-    void build(std::vector<int>& order, int begin, int end) {
-        _nodes.push_back({});
-        buildInto(order, begin, end, 0);
-    }
-
-    void buildInto(std::vector<int>& order, int begin, int end, int index) {
+    // Fills the node at _nodes[index] with order[begin, end), adding its children.
+    void build(std::vector<int>& order, int begin, int end, int index) {
         Node n;
         n.lo = glm::dvec3(std::numeric_limits<double>::infinity());
         n.hi = -n.lo;
@@ -125,8 +123,8 @@ private:
         _nodes[index] = n;
         _nodes.push_back({});
         _nodes.push_back({});
-        buildInto(order, begin, mid, n.first);
-        buildInto(order, mid, end, n.first + 1);
+        build(order, begin, mid, n.first);
+        build(order, mid, end, n.first + 1);
     }
 
     std::vector<Triangle> _triangles;

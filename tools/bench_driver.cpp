@@ -73,12 +73,11 @@ ModeResult namedMode(std::string mode, double alphaDeg = 0.0, std::string transi
     return m;
 }
 
+// The p50 of a mode's triangles per frame, as every p50 of the bench (timeStats).
 double medianTriangles(const ModeResult& m) {
     std::vector<double> t;
     for (const FrameSample& f : m.frames) t.push_back(f.triangles);
-    if (t.empty()) return 0.0;
-    std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
-    return t[t.size() / 2];
+    return timeStats(std::move(t)).p50;
 }
 
 void say(const BenchOptions& o, const std::string& line) {

@@ -60,7 +60,7 @@ void row(std::ostream& r, const char* what, const A& walls, const std::optional<
 void writeReport(const std::filesystem::path& out, const RunOptions& o, const RunSummary& walls,
                  const std::optional<RunSummary>& lod, const RunSummary& geometry) {
     const double mw = median(walls.frameMs), mg = median(geometry.frameMs);
-    const std::optional<double> ml = lod ? std::optional(median(lod->frameMs)) : std::nullopt;
+    const double ml = lod ? median(lod->frameMs) : 0.0;
     auto ifLod = [&](auto value) { return lod ? std::optional(value) : std::nullopt; };
     std::ofstream r(out / "report.md");
     r << "# cavewall demo\n\nThe generated plant on cave4 (" << o.display.screens[0].resolution.x << " x "
@@ -69,11 +69,11 @@ void writeReport(const std::filesystem::path& out, const RunOptions& o, const Ru
       << ".\n\n";
     row(r, "", lod ? "walls + levels of detail" : "walls", ifLod("full geometry + levels of detail"), "full geometry");
     row(r, "---", "---", ifLod("---"), "---");
-    row(r, "median frame time (ms)", mw, ml, mg);
-    row(r, "speed-up", mw > 0 ? mg / mw : 0.0, ml ? std::optional(*ml > 0 ? mg / *ml : 0.0) : std::nullopt, 1);
+    row(r, "median frame time (ms)", mw, ifLod(ml), mg);
+    row(r, "speed-up", mw > 0 ? mg / mw : 0.0, ifLod(ml > 0 ? mg / ml : 0.0), 1);
     row(r, "worst wall texture error (deg)", walls.worstErrorDeg, ifLod("-"), "-");
     row(r, "worst wall texture error (px)", walls.worstErrorPx, ifLod("-"), "-");
-    row(r, "worst level-of-detail error (px)", walls.worstLodErrorPx, lod ? std::optional(lod->worstLodErrorPx) : std::nullopt, 0);
+    row(r, "worst level-of-detail error (px)", walls.worstLodErrorPx, ifLod(lod ? lod->worstLodErrorPx : 0.0), 0);
     row(r, "texture page-ins / misses", std::to_string(walls.pageIns) + " / " + std::to_string(walls.misses),
         ifLod("-"), "-");
     r << "\nWalls planned at alpha " << o.plan.alphaDeg << " deg (" << walls.textures << " textures)";
@@ -113,19 +113,17 @@ int runDemo(const std::vector<std::string>& words) {
 
     o.lodPixels = args.number("lod", 1.0, 0.0, 1e4);
 
-    o.out = out / "walls";
-    const RunSummary walls = runSession(o);
-    o.walls = false;
-    std::optional<RunSummary> lod;
-    if (o.lodPixels > 0.0) {
-        o.out = out / "lod";
-        lod = runSession(o);
-    }
-    o.out = out / "geometry";
-    const double lodPixels = o.lodPixels;
-    o.lodPixels = 0.0;
-    const RunSummary geometry = runSession(o);
-    o.lodPixels = lodPixels;
+    auto run = [&](const char* folder, bool walls, double lodPixels) {
+        RunOptions r = o;
+        r.out = out / folder;
+        r.walls = walls;
+        r.lodPixels = lodPixels;
+        return runSession(r);
+    };
+    const RunSummary walls = run("walls", true, o.lodPixels);
+    const std::optional<RunSummary> lod = o.lodPixels > 0.0 ? std::optional(run("lod", false, o.lodPixels))
+                                                            : std::nullopt;
+    const RunSummary geometry = run("geometry", false, 0.0);
     writeReport(out, o, walls, lod, geometry);
     const double mw = median(walls.frameMs), mg = median(geometry.frameMs);
     std::cout << "demo: median frame time " << mw << " ms with walls" << (lod ? " and levels of detail" : "") << ", ";

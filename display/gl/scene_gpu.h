@@ -50,7 +50,6 @@ public:
         const std::vector<GpuMeshRange>& levels = _meshes[index];
         return levels[std::min<std::size_t>(static_cast<std::size_t>(std::max(level, 0)), levels.size() - 1)];
     }
-    int levelCount(int index) const { return static_cast<int>(_meshes[index].size()); }
     // The texture of scene image `index` (GL_SRGB8_ALPHA8, mipmapped); images without pixels
     // get a 1 x 1 magenta texture.
     GLuint texture(int index) const { return _textures[index].id(); }

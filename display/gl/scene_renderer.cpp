@@ -311,9 +311,10 @@ void SceneRenderer::addDraws(const std::vector<int>& objects, const display::Off
     appendBatches(_items, sortByState, _commands, _batches);
 }
 
-// The most pixels one model unit of `object`'s error covers in `view` (display/pixel_scale.h).
-double SceneRenderer::pixelsPerUnit(int object, const display::ScreenView& view,
-                                    const glm::dmat4& viewFromWorld) const {
+// The most pixels one model unit of `object`'s error covers on `screen` (display/pixel_scale.h);
+// `viewStretch` is maxStretch of viewFromWorld.
+double SceneRenderer::pixelsPerUnit(int object, const display::ViewScreen& screen, const glm::dmat4& viewFromWorld,
+                                    double viewStretch) const {
     const scenes::Bounds& b = _objects[object].worldBounds;
     std::array<glm::dvec3, 8> corners;
     for (int c = 0; c < 8; ++c) {
@@ -322,10 +323,7 @@ double SceneRenderer::pixelsPerUnit(int object, const display::ScreenView& view,
     }
     const double distance = display::nearestDistance(corners);
     if (!(distance > 0.0)) return std::numeric_limits<double>::infinity();
-    const display::ViewScreen screen =
-        display::viewScreen(view.frustum, {view.pass.viewport.width, view.pass.viewport.height});
-    const double stretch = _modelStretch[object] * display::maxStretch(glm::dmat3(viewFromWorld));
-    return display::maxPixelsPerRadian(screen, corners) * stretch / distance;
+    return display::maxPixelsPerRadian(screen, corners) * _modelStretch[object] * viewStretch / distance;
 }
 
 FrameLod SceneRenderer::chooseLods(const std::vector<display::ScreenView>& views, const glm::dmat4& worldFromCave,
@@ -341,9 +339,12 @@ FrameLod SceneRenderer::chooseLods(const std::vector<display::ScreenView>& views
     for (const display::ScreenView& view : views) {
         select(view.frustum, frameFromWorld, filter);
         const glm::dmat4 viewFromWorld = view.frustum.viewFromFrame * frameFromWorld;
+        const display::ViewScreen screen =
+            display::viewScreen(view.frustum, {view.pass.viewport.width, view.pass.viewport.height});
+        const double viewStretch = display::maxStretch(glm::dmat3(viewFromWorld));
         for (const std::vector<int>* list : {&_opaque, &_blended})
             for (int i : *list) {
-                perUnit[i] = std::max(perUnit[i], pixelsPerUnit(i, view, viewFromWorld));
+                perUnit[i] = std::max(perUnit[i], pixelsPerUnit(i, screen, viewFromWorld, viewStretch));
                 ++viewCount[i];
             }
     }

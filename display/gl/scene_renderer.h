@@ -48,6 +48,7 @@
 #include "display/gl/render_targets.h"
 #include "display/gl/scene_gpu.h"
 #include "display/gl/scene_shaders.h"
+#include "display/pixel_scale.h"
 #include "scenes/bvh.h"
 #include "scenes/mesh_lod.h"
 #include "scenes/scene.h"
@@ -208,7 +209,8 @@ private:
                           const DrawFilter& filter);
     void addDraws(const std::vector<int>& objects, const display::OffAxisFrustum& frustum,
                   const glm::dmat4& frameFromWorld, bool sortByState, const std::vector<int>* levels);
-    double pixelsPerUnit(int object, const display::ScreenView& view, const glm::dmat4& viewFromWorld) const;
+    double pixelsPerUnit(int object, const display::ViewScreen& screen, const glm::dmat4& viewFromWorld,
+                         double viewStretch) const;
     void upload(ViewBuffers& buffers);
     void issueBatches(std::size_t firstBlended);
     void applyState(const DrawState& state);

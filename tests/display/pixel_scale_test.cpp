@@ -68,6 +68,25 @@ TEST(PixelScale, ViewScreenIsTheScreenInTheViewFrame) {
     EXPECT_NEAR(s.distance, 1.8, 1e-9);
 }
 
+TEST(PixelScale, AScreenRectangleAndItsFrustumGiveTheSameScreen) {
+    // The rectangle-and-eye form (used for the walls' error in pixels) and the frustum form
+    // (used by the renderer) describe one screen; within 1 mm of the plane both keep 1 mm.
+    const ScreenQuad quads[] = {kFront, tilted(), kFront};
+    const glm::dvec3 eyes[] = {kEye, kTiltedEye, glm::dvec3(0.2, 1.4, -1.5 + 1e-4)};
+    for (int i = 0; i < 3; ++i) {
+        SCOPED_TRACE(i);
+        const ViewScreen a = viewScreen(quads[i], eyes[i], {1920, 1080});
+        const ViewScreen b = viewScreen(offAxisFrustum(quads[i], eyes[i], kDepth), {1920, 1080});
+        EXPECT_NEAR(a.left, b.left, 1e-9);
+        EXPECT_NEAR(a.right, b.right, 1e-9);
+        EXPECT_NEAR(a.bottom, b.bottom, 1e-9);
+        EXPECT_NEAR(a.top, b.top, 1e-9);
+        EXPECT_NEAR(a.distance, b.distance, 1e-12);
+        EXPECT_NEAR(a.pixelSize, b.pixelSize, 1e-15);
+        EXPECT_NEAR(maxPixelsPerRadian(a), maxPixelsPerRadian(b), 1e-9 * maxPixelsPerRadian(b));
+    }
+}
+
 TEST(PixelScale, PixelSizeIsTheSmallerOfWidthAndHeightPerPixel) {
     const OffAxisFrustum f = offAxisFrustum(kFront, kEye, kDepth);
     // 3 m over 1920 px across is finer than 3 m over 1080 px up: 1.5625 mm.

@@ -2,6 +2,7 @@
 
 #include "scenes/image_io.h"
 #include "scenes/region.h"
+#include "display/pixel_scale.h"
 #include "display/warp.h"
 #include "walls/angular_error.h"
 #include "walls/gl/bake_key.h"
@@ -26,18 +27,6 @@ double msSince(Clock::time_point start) {
 // Every MIP level of a baked texture file (walls/gl/texture_mips.h convention).
 std::vector<scenes::Image> decodeBakedTexture(const std::filesystem::path& file) {
     return scenes::readMipLevels(file);
-}
-
-// Pixels per radian of error at the screen: see FrameResult::maxErrorPixels.
-double pixelsPerRadian(const display::Display& display, int screen, glm::dvec3 eyeCave) {
-    const display::ScreenQuad& q = display.quad(screen);
-    const display::ScreenBasis b = display::screenBasis(q);
-    const double d = std::max(std::abs(glm::dot(eyeCave - q.lowerLeft, b.normal)), 1e-3);
-    double r2 = 0.0;
-    for (glm::dvec3 c : {q.lowerLeft, q.lowerRight, q.upperLeft, q.lowerRight + q.upperLeft - q.lowerLeft})
-        r2 = std::max(r2, glm::dot(c - eyeCave, c - eyeCave));
-    const double pixelsPerMetre = display.screens()[screen].resolution.x / std::max(b.width, 1e-9);
-    return r2 / d * pixelsPerMetre;
 }
 
 }  // namespace
@@ -207,9 +196,8 @@ std::optional<WallDraw> Walkthrough::chooseWall(const walls::WallBlend& b, glm::
 // True when the warp of `warp` is well-conditioned for every rendered view (display/warp.h).
 bool Walkthrough::warpConditioned(const FrameInput& input, const WarpWall& warp) const {
     const glm::dmat4 caveFromWorld = glm::inverse(input.worldFromCave);
-    for (const display::ScreenView& view : _display.views(input.head))
-        if (std::find(_screens.begin(), _screens.end(), view.screen) != _screens.end() &&
-            !(display::warpCondition(warpFor(warp, view, caveFromWorld, _display.depthRange().near)) <=
+    for (const display::ScreenView& view : renderedViews(input.head))
+        if (!(display::warpCondition(warpFor(warp, view, caveFromWorld, _display.depthRange().near)) <=
               display::kMaxWarpCondition))
             return false;
     return true;
@@ -297,7 +285,10 @@ void Walkthrough::measureError(glm::dvec3 eyeCave, FrameResult& result) const {
     }
     result.maxErrorDeg = glm::degrees(worst);
     for (int screen : _screens)
-        result.maxErrorPixels = std::max(result.maxErrorPixels, worst * pixelsPerRadian(_display, screen, eyeCave));
+        result.maxErrorPixels =
+            std::max(result.maxErrorPixels,
+                     worst * display::maxPixelsPerRadian(display::viewScreen(
+                                 _display.quad(screen), eyeCave, _display.screens()[screen].resolution)));
 }
 
 // The views of the screens this instance renders.
@@ -340,14 +331,13 @@ void Walkthrough::drawViews(const FrameInput& input, const DrawFilter& filter, c
 
 // Steps 1-3 and 5 of the header: selection, paging, what each wall draws, the error.
 // Conservative: false only when all four corners of the wall lie outside one clip plane of
-// every view (x, y within ±w, in front of the eye).
+// every view in `views` (x, y within ±w, in front of the eye).
 bool Walkthrough::wallInView(const std::vector<display::ScreenView>& views, const glm::dmat4& worldFromCave,
                              int wall) const {
     const display::ScreenQuad& q = _walls->setup.plan.walls[wall].quad;
     const glm::dvec3 corners[4] = {q.lowerLeft, q.lowerRight, q.upperLeft, q.lowerRight + q.upperLeft - q.lowerLeft};
     const glm::dmat4 caveFromWorld = glm::inverse(worldFromCave);
     for (const display::ScreenView& view : views) {
-        if (std::find(_screens.begin(), _screens.end(), view.screen) == _screens.end()) continue;
         const glm::dmat4 clipFromWorld = view.frustum.clipFromFrame() * caveFromWorld;
         int outside[5] = {0, 0, 0, 0, 0};
         for (const glm::dvec3& c : corners) {
@@ -372,7 +362,7 @@ std::vector<WallDraw> Walkthrough::selectWalls(const FrameInput& input, FrameRes
     // Walls outside every view this instance renders are neither paged nor drawn (a cluster
     // rank pages only what its own screens show); they keep a row in walls.csv.
     walls::FrameSelection seen = selection;
-    const std::vector<display::ScreenView> views = _display.views(input.head);
+    const std::vector<display::ScreenView> views = renderedViews(input.head);
     auto outOfView = [&](const walls::WallBlend& b, bool beyond) {
         if (wallInView(views, input.worldFromCave, b.wall)) return false;
         result.walls.push_back(WallState{b.wall, {}, b.geometryWeight, false, beyond});
