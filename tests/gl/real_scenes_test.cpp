@@ -16,7 +16,7 @@
 namespace cavewall::gl {
 namespace {
 
-const std::filesystem::path kReal = std::filesystem::path(CAVEWALL_SOURCE_DIR "/../shared/scenes-real");
+const std::filesystem::path kReal = std::filesystem::path(CAVEWALL_REAL_SCENES);
 const display::HeadPose kEye{{0, 0, 0}, glm::dquat(1, 0, 0, 0)};
 
 config::DisplayConfig oneScreen() { return testing::oneScreenDisplay(128, 0.01); }

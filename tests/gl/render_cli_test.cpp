@@ -45,9 +45,8 @@ TEST_F(RenderCli, WritesOnePngPerScreenAndAFoldoutAndNamesTheRenderer) {
 
 TEST_F(RenderCli, RendersAGltfFileWithViewAllAndPrintsTheFrameStatistics) {
     const auto out = freshFolder("render-cli-gltf");
-    // tests/gl -> the repository -> its parent, which holds shared/scenes-real.
-    const std::filesystem::path root = testing::testConfigFolder().parent_path().parent_path().parent_path();
-    const std::string model = (root / "shared/scenes-real/BoxInterleaved/BoxInterleaved.glb").string();
+    const std::string model =
+        (std::filesystem::path(CAVEWALL_REAL_SCENES) / "BoxInterleaved/BoxInterleaved.glb").string();
     const CliResult r = runCavewall({"render", "--display", testDisplay(), "--scene", model, "--view-all", "--out",
                                      out.string()});
     ASSERT_EQ(r.exitCode, 0) << r.err;

@@ -13,7 +13,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-const std::filesystem::path kReal = std::filesystem::path(CAVEWALL_SOURCE_DIR "/../shared/scenes-real");
+const std::filesystem::path kReal = std::filesystem::path(CAVEWALL_REAL_SCENES);
 
 struct Model {
     const char* file;
