@@ -1,4 +1,4 @@
-#include "tools/cluster.h"
+#include "app/cluster.h"
 
 #include <mpi.h>
 
@@ -7,7 +7,7 @@
 #include <cstring>
 #include <thread>
 
-namespace cavewall::tools {
+namespace cavewall::app {
 
 namespace {
 
@@ -139,4 +139,4 @@ std::vector<double> Cluster::gather(double value) {
     return all;
 }
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::app

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace cavewall::tools {
+namespace cavewall::app {
 
 // Everything a rank needs to render frame `frame` exactly as rank 0 would.
 struct FrameState {
@@ -65,4 +65,4 @@ std::vector<std::uint8_t> encode(const FrameState& state);
 // Returns false when `bytes` is not a whole FrameState.
 bool decode(const std::vector<std::uint8_t>& bytes, FrameState& state);
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::app

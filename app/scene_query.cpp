@@ -1,10 +1,10 @@
-#include "tools/scene_query.h"
+#include "app/scene_query.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace cavewall::tools {
+namespace cavewall::app {
 
 namespace {
 
@@ -93,4 +93,4 @@ std::optional<double> SceneQuery::castRay(const glm::dvec3& origin, const glm::d
     return best;
 }
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::app

@@ -11,7 +11,7 @@
 #include <array>
 #include <vector>
 
-namespace cavewall::tools {
+namespace cavewall::app {
 
 class SceneQuery : public input::WorldQuery {
 public:
@@ -38,4 +38,4 @@ private:
 std::optional<double> rayTriangle(const glm::dvec3& origin, const glm::dvec3& direction, const glm::dvec3& a,
                                   const glm::dvec3& b, const glm::dvec3& c);
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::app

@@ -1,6 +1,7 @@
-#include "tools/bench_metrics.h"
+#include "app/bench/metrics.h"
 
 #include "config/error.h"
+#include "display/timing.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -10,7 +11,7 @@
 #include <limits>
 #include <string>
 
-namespace cavewall::tools {
+namespace cavewall::bench {
 
 namespace {
 
@@ -116,15 +117,12 @@ ImageError ErrorPool::result() const {
     return e;
 }
 
-TimeStats timeStats(std::vector<double> samples) {
+TimeStats timeStats(const std::vector<double>& samples) {
     TimeStats s;
     if (samples.empty()) return s;
-    std::sort(samples.begin(), samples.end());
-    const auto rank = [&](double p) {
-        const double r = std::ceil(p * static_cast<double>(samples.size()));
-        return samples[static_cast<std::size_t>(std::clamp(r, 1.0, static_cast<double>(samples.size()))) - 1];
-    };
-    s.p50 = rank(0.50), s.p95 = rank(0.95), s.p99 = rank(0.99);
+    s.p50 = display::percentile(samples, 0.50);
+    s.p95 = display::percentile(samples, 0.95);
+    s.p99 = display::percentile(samples, 0.99);
     for (double v : samples) s.mean += v;
     s.mean /= static_cast<double>(samples.size());
     return s;
@@ -144,4 +142,4 @@ std::vector<std::size_t> paretoFront(const std::vector<TradeOff>& points) {
     return front;
 }
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::bench

@@ -1,5 +1,5 @@
 #pragma once
-// Image error and trade-off metrics of `cavewall bench` (tools/bench_driver.h).
+// Image error and trade-off metrics of `cavewall bench` (app/bench/gl/driver.h).
 //
 // Images are 8-bit RGBA (scenes::Image, rows top to bottom). Error is measured on R, G and B
 // (screens are opaque; alpha carries no picture), as stored (sRGB-encoded), in [0, 1] units:
@@ -20,7 +20,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace cavewall::tools {
+namespace cavewall::bench {
 
 struct ImageError {
     double mse = 0.0;       // mean squared error over R, G, B, [0, 1] units
@@ -55,11 +55,11 @@ private:
     std::size_t _count = 0;
 };
 
-// Frame-time percentiles (milliseconds), nearest-rank on the sorted samples; 0 for none.
+// Frame-time percentiles (milliseconds), nearest-rank (display/timing.h); 0 for none.
 struct TimeStats {
     double p50 = 0.0, p95 = 0.0, p99 = 0.0, mean = 0.0;
 };
-TimeStats timeStats(std::vector<double> samples);
+TimeStats timeStats(const std::vector<double>& samples);
 
 // A point of the error-against-time trade-off: lower is better on both axes.
 struct TradeOff {
@@ -71,4 +71,4 @@ struct TradeOff {
 // and better on one), sorted by time. Equal points are all kept.
 std::vector<std::size_t> paretoFront(const std::vector<TradeOff>& points);
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::bench

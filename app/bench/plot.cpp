@@ -1,11 +1,11 @@
-#include "tools/bench_plot.h"
+#include "app/bench/plot.h"
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <cstdio>
 
-namespace cavewall::tools {
+namespace cavewall::bench {
 
 namespace {
 
@@ -111,4 +111,4 @@ scenes::Image plotTradeOff(const std::vector<PlotPoint>& points, int width, int 
     return image;
 }
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::bench

@@ -1,15 +1,15 @@
-#include "tools/bench_report.h"
+#include "app/bench/report.h"
 
 #include "config/error.h"
 #include "scenes/image_io.h"
-#include "tools/bench_plot.h"
+#include "app/bench/plot.h"
 
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 
-namespace cavewall::tools {
+namespace cavewall::bench {
 
 namespace {
 
@@ -32,7 +32,7 @@ std::string screensCsv(const BenchReport& report) {
                       "draw_calls,lod_px,triangle_budget\n";
     for (const ModeResult& m : report.modes)
         for (const ScreenResult& s : m.screens)
-            out += m.mode + "," + num(m.alphaDeg) + "," + m.transition + "," + s.screen + "," + num(s.error.psnrDb) + "," +
+            out += std::string(toString(m.mode)) + "," + num(m.alphaDeg) + "," + transitionLabel(m) + "," + s.screen + "," + num(s.error.psnrDb) + "," +
                    num(s.error.rmse) + "," + num(s.error.ssim) + "," + num(s.cpuMs.p50) + "," + num(s.cpuMs.p95) + "," +
                    num(s.cpuMs.p99) + "," + num(s.triangles) + "," + num(s.drawCalls) + "," + num(m.lodPixels) + "," +
                    std::to_string(m.triangleBudget) + "\n";
@@ -40,7 +40,7 @@ std::string screensCsv(const BenchReport& report) {
 }
 
 // The first mode named `mode` drawing at the same level-of-detail tolerance as `like`.
-const ModeResult* findMode(const BenchReport& report, const std::string& mode, const ModeResult& like) {
+const ModeResult* findMode(const BenchReport& report, Mode mode, const ModeResult& like) {
     for (const ModeResult& m : report.modes)
         if (m.mode == mode && m.lodPixels == like.lodPixels && m.triangleBudget == 0 && m.frameBudgetMs == 0.0) return &m;
     return nullptr;
@@ -51,7 +51,7 @@ const ModeResult* findMode(const BenchReport& report, const std::string& mode, c
 std::vector<std::string> targetLines(const BenchReport& report) {
     const ModeResult* best = nullptr;
     for (const ModeResult& m : report.modes)
-        if (m.mode == "walls" && m.error.meanPsnrDb >= 30.0 && (!best || m.speedup > best->speedup)) best = &m;
+        if (m.mode == Mode::Walls && m.error.meanPsnrDb >= 30.0 && (!best || m.speedup > best->speedup)) best = &m;
     if (!best) return {"targets: no walls mode reaches a mean PSNR >= 30 dB"};
     const double ratio = best->frameMs.p50 > 0 ? best->frameMs.p99 / best->frameMs.p50 : 0.0;
     std::vector<std::string> lines = {
@@ -63,7 +63,7 @@ std::vector<std::string> targetLines(const BenchReport& report) {
             (report.noiseFloorRatio > 0.0 ? "; one frame drawn again and again varies by " +
                                                 num(report.noiseFloorRatio, 3) + " (p99/p50) on this machine"
                                           : std::string())};
-    if (const ModeResult* near = findMode(report, "near", *best); near && near->frameMs.p50 > 0) {
+    if (const ModeResult* near = findMode(report, Mode::Near, *best); near && near->frameMs.p50 > 0) {
         const double limit = best->frameMs.p50 / near->frameMs.p50;
         lines.push_back("targets: its median frame time is " + num(limit, 3) +
                         "x the limit's, near geometry plus bare wall quads at the same level of detail (" +
@@ -71,7 +71,7 @@ std::vector<std::string> targetLines(const BenchReport& report) {
                         (limit <= 1.2 ? "met)" : "not met)"));
     }
     if (best->lodPixels > 0.0)
-        if (const ModeResult* full = findMode(report, "full", *best); full && full->frameMs.p50 > 0)
+        if (const ModeResult* full = findMode(report, Mode::Full, *best); full && full->frameMs.p50 > 0)
             lines.push_back("targets: against full geometry at the same level of detail (" + modeLabel(*full) +
                             ", " + num(full->frameMs.p50, 3) + " ms) its speed-up is " +
                             num(full->frameMs.p50 / best->frameMs.p50, 3) +
@@ -79,8 +79,24 @@ std::vector<std::string> targetLines(const BenchReport& report) {
     return lines;
 }
 
+std::string_view toString(Mode mode) {
+    switch (mode) {
+    case Mode::Full: return "full";
+    case Mode::Cells: return "cells";
+    case Mode::Near: return "near";
+    case Mode::Walls: return "walls";
+    }
+    return "?";
+}
+
+std::string transitionLabel(const ModeResult& m) {
+    if (!m.transition) return "none";
+    return std::string(app::toString(*m.transition)) + (m.paged ? " paged" : "");
+}
+
 std::string modeLabel(const ModeResult& m) {
-    std::string label = m.mode == "walls" ? "walls a=" + num(m.alphaDeg) + " " + m.transition : m.mode;
+    std::string label = m.mode == Mode::Walls ? "walls a=" + num(m.alphaDeg) + " " + transitionLabel(m)
+                                              : std::string(toString(m.mode));
     if (m.lodPixels > 0.0) label += " lod " + num(m.lodPixels) + "px";
     if (m.triangleBudget > 0) label += " budget " + std::to_string(m.triangleBudget);
     if (m.frameBudgetMs > 0.0) label += " frame " + num(m.frameBudgetMs, 3) + "ms";
@@ -102,7 +118,7 @@ std::string csvRow(const ModeResult& m) {
                              m.error.meanPsnrDb, m.loadRatio, m.lodPixels, static_cast<double>(m.triangleBudget),
                              m.maxLodErrPx, m.meanLodTolerancePx, static_cast<double>(m.overBudgetFrames),
                              m.frameBudgetMs};
-    std::string row = m.mode + "," + num(m.alphaDeg) + "," + m.transition;
+    std::string row = std::string(toString(m.mode)) + "," + num(m.alphaDeg) + "," + transitionLabel(m);
     for (double v : values) row += "," + num(v);
     return row;
 }
@@ -170,4 +186,4 @@ std::vector<std::filesystem::path> writeReport(const std::filesystem::path& fold
     return files;
 }
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::bench

@@ -1,18 +1,20 @@
 #pragma once
 // The results of `cavewall bench` and their writers: bench.csv, bench_screens.csv, bench.md
-// (also printed) and bench.png (tools/bench_plot.h).
+// (also printed) and bench.png (app/bench/plot.h).
 //
 // One ModeResult per mode of the run. Times are milliseconds per frame (all screens), over the
 // timed frames. Errors are against the full-geometry image of the same frame, eye and screen
-// (tools/bench_metrics.h), pooled over the compared frames. Counts are means per frame.
+// (app/bench/metrics.h), pooled over the compared frames. Counts are means per frame.
 
-#include "tools/bench_metrics.h"
+#include "app/bench/metrics.h"
+#include "app/run_options.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
-namespace cavewall::tools {
+namespace cavewall::bench {
 
 struct ScreenResult {
     std::string screen;                // display screen name
@@ -26,10 +28,17 @@ struct FrameSample {
     double frameMs = 0.0, triangles = 0.0, drawCalls = 0.0;
 };
 
+// What a mode draws (app/bench/gl/driver.h lists the modes).
+enum class Mode { Full, Cells, Near, Walls };
+
+// "full" | "cells" | "near" | "walls", as the mode column of bench.csv.
+std::string_view toString(Mode mode);
+
 struct ModeResult {
-    std::string mode;                  // full | cells | near | walls
+    Mode mode = Mode::Full;
     double alphaDeg = 0.0;             // walls modes; 0 otherwise
-    std::string transition = "none";   // blend | warp for walls modes
+    std::optional<app::Transition> transition;  // walls modes; none otherwise
+    bool paged = false;                // walls modes: paged from a cold start (`cavewall run`'s paging)
     double lodPixels = 0.0;            // level-of-detail tolerance in pixels; 0: full detail
     std::size_t triangleBudget = 0;    // per frame (with levels of detail); 0: none
     double frameBudgetMs = 0.0;        // frame-time target of the budget controller; 0: none
@@ -77,8 +86,11 @@ std::vector<std::string> targetLines(const BenchReport& report);
 // Returns the files written.
 std::vector<std::filesystem::path> writeReport(const std::filesystem::path& folder, const BenchReport& report);
 
+// The transition column of bench.csv: "none", "blend", "warp" or "blend paged".
+std::string transitionLabel(const ModeResult& m);
+
 // "walls a=10 blend", "full", "walls a=30 blend lod 1px budget 40000", ...: the mode's label in
 // tables and the plot legend.
 std::string modeLabel(const ModeResult& m);
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::bench

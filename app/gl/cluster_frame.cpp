@@ -1,9 +1,9 @@
-#include "tools/cluster_frame.h"
+#include "app/gl/cluster_frame.h"
 
 #include <algorithm>
 #include <cstring>
 
-namespace cavewall::tools {
+namespace cavewall::gl {
 
 namespace {
 
@@ -47,8 +47,8 @@ private:
 
 }  // namespace
 
-FrameState frameStateOf(const gl::FrameInput& in) {
-    FrameState s;
+app::FrameState frameStateOf(const FrameInput& in) {
+    app::FrameState s;
     s.frame = static_cast<std::uint64_t>(in.frame);
     s.time = in.time;
     s.headPosition = in.head.position;
@@ -67,7 +67,7 @@ FrameState frameStateOf(const gl::FrameInput& in) {
     return s;
 }
 
-bool frameInputOf(const FrameState& s, gl::FrameInput& in) {
+bool frameInputOf(const app::FrameState& s, FrameInput& in) {
     in.frame = static_cast<long>(s.frame);
     in.time = s.time;
     in.head = {s.headPosition, s.headOrientation};
@@ -87,10 +87,10 @@ bool frameInputOf(const FrameState& s, gl::FrameInput& in) {
     return r.done();
 }
 
-std::vector<std::uint8_t> encodeImages(const std::vector<gl::ScreenImage>& images) {
+std::vector<std::uint8_t> encodeImages(const std::vector<ScreenImage>& images) {
     Writer w;
     w.put(static_cast<std::uint32_t>(images.size()));
-    for (const gl::ScreenImage& i : images) {
+    for (const ScreenImage& i : images) {
         w.put(static_cast<std::int32_t>(i.screen));
         w.put(static_cast<std::int32_t>(i.image));
         w.putBytes(reinterpret_cast<const std::uint8_t*>(i.stem.data()), i.stem.size());
@@ -101,12 +101,12 @@ std::vector<std::uint8_t> encodeImages(const std::vector<gl::ScreenImage>& image
     return std::move(w.bytes);
 }
 
-bool decodeImages(const std::vector<std::uint8_t>& bytes, std::vector<gl::ScreenImage>& images) {
+bool decodeImages(const std::vector<std::uint8_t>& bytes, std::vector<ScreenImage>& images) {
     Reader r(bytes);
     std::uint32_t n = 0;
     if (!r.get(n)) return false;
     for (std::uint32_t k = 0; k < n; ++k) {
-        gl::ScreenImage i;
+        ScreenImage i;
         std::int32_t screen = 0, image = 0, w = 0, h = 0;
         std::vector<std::uint8_t> stem;
         if (!r.get(screen) || !r.get(image) || !r.getBytes(stem) || !r.get(w) || !r.get(h) || !r.getBytes(i.pixels.rgba))
@@ -119,4 +119,4 @@ bool decodeImages(const std::vector<std::uint8_t>& bytes, std::vector<gl::Screen
     return r.done();
 }
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::gl

@@ -1,21 +1,21 @@
-#include "tools/run_cluster.h"
+#include "app/gl/run_cluster.h"
 
 #include "config/error.h"
 
 #ifdef CAVEWALL_HAVE_MPI
-#include "tools/cluster_frame.h"
+#include "app/gl/cluster_frame.h"
 
 #include <algorithm>
 #include <cstring>
 #endif
 
-namespace cavewall::tools {
+namespace cavewall::gl {
 
 #ifdef CAVEWALL_HAVE_MPI
 
-std::unique_ptr<Cluster> openCluster(const RunOptions& o) {
+std::unique_ptr<app::Cluster> openCluster(const app::RunOptions& o) {
     if (!o.cluster) return nullptr;
-    auto cluster = std::make_unique<Cluster>(nullptr, nullptr, o.clusterTimeout);
+    auto cluster = std::make_unique<app::Cluster>(nullptr, nullptr, o.clusterTimeout);
     const int screens = static_cast<int>(o.display.screens.size());
     if (cluster->size() > screens)
         cluster->abortAll("--cluster: " + std::to_string(cluster->size()) + " ranks for " + std::to_string(screens) +
@@ -24,8 +24,8 @@ std::unique_ptr<Cluster> openCluster(const RunOptions& o) {
     return cluster;
 }
 
-double receiveFrame(Cluster& cluster, gl::FrameInput& input) {
-    FrameState state = cluster.rank() == 0 ? frameStateOf(input) : FrameState{};
+double receiveFrame(app::Cluster& cluster, FrameInput& input) {
+    app::FrameState state = cluster.rank() == 0 ? frameStateOf(input) : app::FrameState{};
     const double seconds = cluster.broadcast(state);
     if (cluster.rank() != 0 && !frameInputOf(state, input)) cluster.abortAll("received a malformed frame input");
     return 1e3 * seconds;
@@ -33,7 +33,7 @@ double receiveFrame(Cluster& cluster, gl::FrameInput& input) {
 
 namespace {
 
-std::vector<std::uint8_t> statsBytes(const gl::FrameResult& r, double syncMs) {
+std::vector<std::uint8_t> statsBytes(const FrameResult& r, double syncMs) {
     const double values[10] = {r.frameMs, r.cpuMs, r.gpuMs, double(r.stats.triangles), double(r.stats.drawCalls), syncMs,
                                double(r.warpFallbacks), r.maxErrorDeg, r.maxErrorPixels, double(r.geometryTriangles)};
     std::vector<std::uint8_t> bytes(sizeof values);
@@ -43,10 +43,10 @@ std::vector<std::uint8_t> statsBytes(const gl::FrameResult& r, double syncMs) {
 
 }  // namespace
 
-double combineFrame(Cluster& cluster, gl::FrameResult& r, double syncMs, const std::vector<int>& screens) {
+double combineFrame(app::Cluster& cluster, FrameResult& r, double syncMs, const std::vector<int>& screens) {
     syncMs += 1e3 * cluster.swapBarrier();
     // Only this rank's screens were drawn; the read-back holds every screen's target.
-    std::erase_if(r.images, [&](const gl::ScreenImage& i) {
+    std::erase_if(r.images, [&](const ScreenImage& i) {
         return std::find(screens.begin(), screens.end(), i.screen) == screens.end();
     });
     const auto stats = cluster.gatherBytes(statsBytes(r, syncMs));
@@ -75,7 +75,7 @@ double combineFrame(Cluster& cluster, gl::FrameResult& r, double syncMs, const s
     r.images.clear();
     for (const auto& bytes : images)
         if (!bytes.empty() && !decodeImages(bytes, r.images)) cluster.abortAll("gathered malformed images");
-    std::sort(r.images.begin(), r.images.end(), [](const gl::ScreenImage& a, const gl::ScreenImage& b) {
+    std::sort(r.images.begin(), r.images.end(), [](const ScreenImage& a, const ScreenImage& b) {
         return a.screen != b.screen ? a.screen < b.screen : a.image < b.image;
     });
     return slowestSync;
@@ -83,18 +83,18 @@ double combineFrame(Cluster& cluster, gl::FrameResult& r, double syncMs, const s
 
 #else  // no MPI in this build
 
-std::unique_ptr<Cluster> openCluster(const RunOptions& o) {
+std::unique_ptr<app::Cluster> openCluster(const app::RunOptions& o) {
     if (o.cluster) throw Error("--cluster: this build has no MPI (configure with -DCAVEWALL_WITH_MPI=ON and install Open MPI)");
     return nullptr;
 }
 
-double receiveFrame(Cluster&, gl::FrameInput&) { return 0.0; }
-double combineFrame(Cluster&, gl::FrameResult&, double syncMs, const std::vector<int>&) { return syncMs; }
+double receiveFrame(app::Cluster&, FrameInput&) { return 0.0; }
+double combineFrame(app::Cluster&, FrameResult&, double syncMs, const std::vector<int>&) { return syncMs; }
 
-// openCluster never makes a Cluster here; these keep the unique_ptr and the call sites linking.
-Cluster::~Cluster() = default;
-double Cluster::barrier(double, const char*) { return 0.0; }
+// openCluster never makes a app::Cluster here; these keep the unique_ptr and the call sites linking.
+app::Cluster::~app::Cluster() = default;
+double app::Cluster::barrier(double, const char*) { return 0.0; }
 
 #endif
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::gl

@@ -1,9 +1,13 @@
-#include "tools/run_input.h"
+#include "app/gl/run_input.h"
 
 #include <cmath>
 #include <thread>
 
-namespace cavewall::tools {
+namespace cavewall::gl {
+
+using app::kRunStep;
+using app::Navigation;
+using app::RunOptions;
 
 namespace {
 
@@ -43,30 +47,34 @@ std::unique_ptr<input::TrackerSource> trackerFor(const RunOptions& o) {
 
 }  // namespace
 
-std::optional<input::NavMode> navMode(const std::string& nav, const scenes::SceneDescription& d) {
-    const std::string mode = nav.empty() ? (d.walkPath.size() >= 2 ? "guided" : "none") : nav;
-    if (mode == "none") return std::nullopt;
-    if (mode == "guided") {
+std::optional<input::NavMode> navMode(Navigation nav, const scenes::SceneDescription& d) {
+    switch (nav) {
+    case Navigation::Auto:
+        if (d.walkPath.size() < 2) return std::nullopt;
+        return input::NavMode::Guided;
+    case Navigation::Guided:
         if (d.walkPath.size() < 2)
             throw Error("--nav guided: the scene has no walkPath (expected at least 2 points, got " +
                         std::to_string(d.walkPath.size()) + ")");
         return input::NavMode::Guided;
+    case Navigation::Fly: return input::NavMode::Fly;
+    case Navigation::Walk: return input::NavMode::Walk;
+    case Navigation::None: return std::nullopt;
     }
-    if (mode == "fly") return input::NavMode::Fly;
-    if (mode == "walk") return input::NavMode::Walk;
-    throw Error("--nav: expected one of guided, fly, walk, none, got '" + nav + "'");
+    return std::nullopt;
 }
 
-RunInput::RunInput(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d)
+RunInput::RunInput(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d, bool realTime)
     : _tracker(trackerFor(o)),
       _pipeline(pipelineConfig(o)),
       _query(scene),
       _navigator(navigatorConfig(o), &_query),
       _mode(navMode(o.nav, d)),
       _replay(dynamic_cast<input::ReplaySource*>(_tracker.get()) != nullptr),
+      _realTime(realTime),
       _start(std::chrono::steady_clock::now()) {
     if (!_tracker) {
-        if (o.window != WindowMode::Window)
+        if (o.window != app::WindowMode::Window)
             throw Error("--tracker desktop: expected --window (keyboard and mouse come from the windows)");
         const config::Viewer& v = o.display.viewer;
         _desktop = std::make_unique<input::DesktopMapper>(input::DesktopConfig{}, input::Pose{v.headPosition, v.headOrientation});
@@ -79,9 +87,9 @@ RunInput::RunInput(const RunOptions& o, const scenes::Scene& scene, const scenes
     if (o.record) _recorder = std::make_unique<input::Recorder>(*o.record, o.tracker);
 }
 
-gl::FrameInput RunInput::next(long i, bool readImages, const std::vector<input::Event>& windowEvents) {
+FrameInput RunInput::next(long i, bool readImages, const std::vector<input::Event>& windowEvents) {
     const double t = static_cast<double>(i) * kRunStep;
-    if (_desktop || _tracker->isLive()) std::this_thread::sleep_until(_start + std::chrono::duration<double>(t));
+    if (_realTime && (_desktop || _tracker->isLive())) std::this_thread::sleep_until(_start + std::chrono::duration<double>(t));
     std::vector<input::Event> events;
     for (input::Event e : _desktop ? windowEvents : std::vector<input::Event>{}) {
         e.time = t;
@@ -102,14 +110,14 @@ gl::FrameInput RunInput::next(long i, bool readImages, const std::vector<input::
         if (i > 0) _navigator.update(kRunStep);
     }
     const input::HandCursor cursor = _navigator.handCursor();
-    gl::FrameInput in;
+    FrameInput in;
     in.frame = i;
     in.time = t;
     in.head = {tracked.head.pose.position, tracked.head.pose.orientation};
     in.worldFromCave = _navigator.worldFromCave();
-    in.hand = gl::HandCursorPose{cursor.hand.position, cursor.hand.orientation, cursor.rayLength};
+    in.hand = HandCursorPose{cursor.hand.position, cursor.hand.orientation, cursor.rayLength};
     in.readImages = readImages;
     return in;
 }
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::gl

@@ -1,4 +1,4 @@
-#include "tools/run_output.h"
+#include "app/gl/run_output.h"
 
 #include "config/error.h"
 
@@ -7,7 +7,7 @@
 #include <cstring>
 #include <string>
 
-namespace cavewall::tools {
+namespace cavewall::gl {
 
 namespace {
 
@@ -76,4 +76,4 @@ std::filesystem::path RunOutput::saveImages(long frame, const std::vector<gl::Sc
     return files.back();
 }
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::gl

@@ -23,7 +23,7 @@
 #include <filesystem>
 #include <vector>
 
-namespace cavewall::tools {
+namespace cavewall::gl {
 
 class RunOutput {
 public:
@@ -47,4 +47,4 @@ private:
     std::FILE* _walls = nullptr;
 };
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::gl

@@ -1,4 +1,4 @@
-#include "tools/run_session.h"
+#include "app/gl/run_session.h"
 
 #include "display/display.h"
 #include "display/frame_budget.h"
@@ -8,10 +8,10 @@
 #include "input/tracker_source.h"
 #include "input/tracking_pipeline.h"
 #include "scenes/loader.h"
-#include "tools/run_cluster.h"
-#include "tools/run_input.h"
-#include "tools/run_output.h"
-#include "tools/scene_query.h"
+#include "app/gl/run_cluster.h"
+#include "app/gl/run_input.h"
+#include "app/gl/run_output.h"
+#include "app/scene_query.h"
 #include "walls/gl/baker.h"
 #include "walls/gl/walkthrough.h"
 #include "walls/visibility.h"
@@ -22,7 +22,11 @@
 #include <iostream>
 #include <thread>
 
-namespace cavewall::tools {
+namespace cavewall::gl {
+
+using app::RunOptions;
+using app::RunSummary;
+using app::WindowMode;
 
 namespace {
 
@@ -70,7 +74,7 @@ std::unique_ptr<gl::Context> makeContext(const RunOptions& o, const display::Dis
 constexpr double kBakeWaitSeconds = 3600.0;
 
 gl::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
-                               gl::Context& context, Cluster* cluster) {
+                               gl::Context& context, app::Cluster* cluster) {
     if (!cluster) return prepareWalls(o, scene, d, context);
     std::optional<gl::WallSetup> setup;
     if (cluster->rank() == 0) setup = prepareWalls(o, scene, d, context);
@@ -85,21 +89,16 @@ gl::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scene, 
 
 }  // namespace
 
-double median(std::vector<double> values) {
-    if (values.empty()) return 0.0;
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+Transition walkthroughTransition(app::Transition transition) {
+    return transition == app::Transition::Warp ? Transition::Warp : Transition::Blend;
 }
 
 RunSummary runSession(const RunOptions& o) {
-    if (o.transition != "blend" && o.transition != "warp")
-        throw Error("--transition: expected blend or warp, got '" + o.transition + "'");
-    if (o.frames < 1) throw Error("--frames: expected at least 1, got " + std::to_string(o.frames));
+    app::validate(o);
     const display::Display display(o.display);
     scenes::SceneDescription description;
     const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description);
-    std::unique_ptr<Cluster> cluster = openCluster(o);
+    std::unique_ptr<app::Cluster> cluster = openCluster(o);
     const int rank = cluster ? cluster->rank() : 0;
     // Only rank 0 reads input (a network tracker binds its port once).
     std::unique_ptr<RunInput> input = rank == 0 ? std::make_unique<RunInput>(o, scene, description) : nullptr;
@@ -111,7 +110,7 @@ RunSummary runSession(const RunOptions& o) {
     gl::WalkthroughOptions options;
     options.synchronousPaging = o.synchronousPaging;
     options.textureBudgetMB = o.textureBudgetMB;
-    options.transition = o.transition == "warp" ? gl::Transition::Warp : gl::Transition::Blend;
+    options.transition = walkthroughTransition(o.transition);
     options.render.lodPixels = o.lodPixels;
     options.triangleBudget = o.triangleBudget;
     options.lodMaxPixels = std::max(o.lodMaxPixels, o.lodPixels);
@@ -150,4 +149,4 @@ RunSummary runSession(const RunOptions& o) {
     return summary;
 }
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::gl

@@ -1,10 +1,12 @@
-#include "tools/bench_driver.h"
+#include "app/bench/gl/driver.h"
 
 #include "config/json_reader.h"
 #include "display/display.h"
+#include "display/timing.h"
 #include "display/gl/context.h"
 #include "scenes/loader.h"
-#include "tools/bench_modes.h"
+#include "app/bench/gl/modes.h"
+#include "app/gl/run_session.h"
 #include "walls/gl/baker.h"
 #include "walls/visibility.h"
 
@@ -15,7 +17,9 @@
 #include <sstream>
 #include <thread>
 
-namespace cavewall::tools {
+namespace cavewall::gl {
+
+using namespace bench;
 
 namespace {
 
@@ -61,13 +65,21 @@ BakedWalls bakeWalls(const BenchOptions& o, double alphaDeg, const scenes::Scene
     return out;
 }
 
-ModeResult namedMode(std::string mode, double alphaDeg = 0.0, std::string transition = "none", double lodPixels = 0.0,
-                     std::size_t triangleBudget = 0, double frameBudgetMs = 0.0) {
+ModeResult namedMode(Mode mode, double lodPixels = 0.0) {
+    ModeResult m;
+    m.mode = mode;
+    m.lodPixels = lodPixels;
+    return m;
+}
+
+ModeResult wallsMode(double alphaDeg, app::Transition transition, bool paged, double lodPixels,
+                     std::size_t triangleBudget, double frameBudgetMs) {
     ModeResult m;
     m.frameBudgetMs = frameBudgetMs;
-    m.mode = std::move(mode);
+    m.mode = Mode::Walls;
     m.alphaDeg = alphaDeg;
-    m.transition = std::move(transition);
+    m.transition = transition;
+    m.paged = paged;
     m.lodPixels = lodPixels;
     m.triangleBudget = triangleBudget;
     return m;
@@ -77,7 +89,7 @@ ModeResult namedMode(std::string mode, double alphaDeg = 0.0, std::string transi
 double medianTriangles(const ModeResult& m) {
     std::vector<double> t;
     for (const FrameSample& f : m.frames) t.push_back(f.triangles);
-    return timeStats(std::move(t)).p50;
+    return display::median(t);
 }
 
 void say(const BenchOptions& o, const std::string& line) {
@@ -147,14 +159,14 @@ BenchReport runBenchmark(const BenchOptions& o) {
 
     say(o, "bench: full geometry");
     ReferenceImages reference;
-    ModeAccumulator full(namedMode("full"), display);
+    ModeAccumulator full(namedMode(Mode::Full), display);
     runWalkthroughMode(c, std::nullopt, full, nullptr, &reference);
     report.modes.push_back(full.finish(0.0));
     const double fullP50 = report.modes.front().frameMs.p50;
     const bool lod = o.lodPixels > 0.0;
     if (lod) {
         say(o, "bench: full geometry, levels of detail at " + config::formatNumber(o.lodPixels) + " px");
-        ModeAccumulator acc(namedMode("full", 0.0, "none", o.lodPixels), display);
+        ModeAccumulator acc(namedMode(Mode::Full, o.lodPixels), display);
         runWalkthroughMode(c, std::nullopt, acc, &reference, nullptr);
         report.modes.push_back(acc.finish(fullP50));
     }
@@ -173,50 +185,48 @@ BenchReport runBenchmark(const BenchOptions& o) {
         say(o, std::string(nearOnly ? "bench: near-geometry limit (the viewer's cell and bare wall quads)"
                                     : "bench: cell culling without textures") +
                    (lodPixels > 0.0 ? ", levels of detail" : ""));
-        ModeAccumulator acc(namedMode(nearOnly ? "near" : "cells", 0.0, "none", lodPixels), display);
+        ModeAccumulator acc(namedMode(nearOnly ? Mode::Near : Mode::Cells, lodPixels), display);
         runCellMode(c, cellPlan, nearOnly, acc, reference);
         report.modes.push_back(acc.finish(fullP50));
     };
     runCells(false, 0.0);
     runCells(true, 0.0);
     if (lod) runCells(true, o.lodPixels);
-    auto runWalls = [&](std::size_t i, gl::Transition transition, bool paged, double lodPixels = 0.0,
+    auto runWalls = [&](std::size_t i, app::Transition transition, bool paged, double lodPixels = 0.0,
                         std::size_t budget = 0, double frameBudgetMs = 0.0) {
-        const std::string label = std::string(transition == gl::Transition::Warp ? "warp" : "blend") +
-                                  (paged ? " paged" : "");
-        ModeResult mode = namedMode("walls", o.alphasDeg[i], label, lodPixels, budget, frameBudgetMs);
+        ModeResult mode = wallsMode(o.alphasDeg[i], transition, paged, lodPixels, budget, frameBudgetMs);
         say(o, "bench: " + modeLabel(mode));
         mode.textures = static_cast<int>(baked[i].setup.plan.textures.size());
         mode.texels = baked[i].texels;
         mode.diskMB = baked[i].diskMB;
         ModeAccumulator acc(mode, display);
-        runWalkthroughMode(c, baked[i].setup, acc, &reference, nullptr, transition, paged);
+        runWalkthroughMode(c, baked[i].setup, acc, &reference, nullptr, walkthroughTransition(transition), paged);
         report.modes.push_back(acc.finish(fullP50));
     };
-    for (std::size_t i = 0; i < baked.size(); ++i) runWalls(i, gl::Transition::Blend, false);
+    for (std::size_t i = 0; i < baked.size(); ++i) runWalls(i, app::Transition::Blend, false);
     if (lod)
-        for (std::size_t i = 0; i < baked.size(); ++i) runWalls(i, gl::Transition::Blend, false, o.lodPixels);
-    runWalls(transitionIndex, gl::Transition::Warp, false);
-    runWalls(transitionIndex, gl::Transition::Blend, true);
+        for (std::size_t i = 0; i < baked.size(); ++i) runWalls(i, app::Transition::Blend, false, o.lodPixels);
+    runWalls(transitionIndex, app::Transition::Warp, false);
+    runWalls(transitionIndex, app::Transition::Blend, true);
     if (lod)
         for (std::size_t i = 0; i < baked.size(); ++i) {
             std::size_t budget = o.triangleBudget;
             if (budget == 0)  // the median of the same mode without a budget
                 for (const ModeResult& m : report.modes)
-                    if (m.mode == "walls" && m.alphaDeg == o.alphasDeg[i] && m.transition == "blend" &&
+                    if (m.mode == Mode::Walls && m.alphaDeg == o.alphasDeg[i] && m.transition == app::Transition::Blend && !m.paged &&
                         m.lodPixels == o.lodPixels && m.triangleBudget == 0)
                         budget = static_cast<std::size_t>(medianTriangles(m));
-            runWalls(i, gl::Transition::Blend, false, o.lodPixels, std::max<std::size_t>(budget, 1));
+            runWalls(i, app::Transition::Blend, false, o.lodPixels, std::max<std::size_t>(budget, 1));
         }
     if (lod && o.frameBudgetMs > 0.0)
         for (std::size_t i = 0; i < baked.size(); ++i)
-            runWalls(i, gl::Transition::Blend, false, o.lodPixels, 0, o.frameBudgetMs);
+            runWalls(i, app::Transition::Blend, false, o.lodPixels, 0, o.frameBudgetMs);
     if (lod && o.triangleBudget == 0)
         report.header.push_back("triangle budgets: per alpha, the median triangles of the same walls mode without a "
                                 "budget");
     {  // The noise floor of p99/p50 on this machine, beside a walls mode's, in the same seconds.
         ModeResult last = report.modes.back();  // the budget mode at the last alpha, or the paged one
-        last.transition = "blend";  // drawn with every texture resident, also after the paged mode
+        last.paged = false;  // drawn with every texture resident, also after the paged mode
         say(o, "bench: noise floor, " + modeLabel(last) + " interleaved with one of its frames");
         const long middle = static_cast<long>(path.frames.size() / 2);
         const std::size_t alpha = lod ? baked.size() - 1 : transitionIndex;
@@ -236,4 +246,4 @@ BenchReport runBenchmark(const BenchOptions& o) {
     return report;
 }
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::gl

@@ -29,10 +29,10 @@
 // Timing: frame ms is the walkthrough's FrameResult::frameMs (CPU submission + glFinish) or,
 // for cells/near, SceneRenderer::render + waiting for its GPU timer; every frame of the path
 // is timed. Every `compareEvery`-th frame is read back (after timing) and compared per screen
-// and eye with the full-geometry image of that frame (tools/bench_metrics.h).
+// and eye with the full-geometry image of that frame (app/bench/metrics.h).
 
 #include "config/display_config.h"
-#include "tools/bench_report.h"
+#include "app/bench/report.h"
 #include "walls/plan.h"
 
 #include <filesystem>
@@ -40,7 +40,7 @@
 #include <string>
 #include <vector>
 
-namespace cavewall::tools {
+namespace cavewall::gl {
 
 struct BenchOptions {
     std::filesystem::path scene;                  // scene.json, its folder, or glTF/GLB
@@ -63,9 +63,9 @@ struct BenchOptions {
 };
 
 // Runs every mode; throws cavewall::Error on bad input (scene, tracker spec, options).
-BenchReport runBenchmark(const BenchOptions& options);
+bench::BenchReport runBenchmark(const BenchOptions& options);
 
 // `display` with every screen's resolution scaled so that its longer side is `pixels`.
 config::DisplayConfig withResolution(config::DisplayConfig display, int pixels);
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::gl

@@ -1,4 +1,4 @@
-#include "tools/bench_modes.h"
+#include "app/bench/gl/modes.h"
 
 #include "display/frame_budget.h"
 #include "display/gl/render_targets.h"
@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <chrono>
 
-namespace cavewall::tools {
+namespace cavewall::gl {
+
+using namespace bench;
 
 namespace {
 
@@ -247,4 +249,4 @@ void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly
     }
 }
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::gl

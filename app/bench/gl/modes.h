@@ -1,17 +1,17 @@
 #pragma once
-// The per-mode machinery of `cavewall bench` (tools/bench_driver.h): running one mode over the
+// The per-mode machinery of `cavewall bench` (app/bench/gl/driver.h): running one mode over the
 // eye path and accumulating its times, counts and image errors.
 
 #include "display/gl/frame_images.h"
-#include "tools/bench_path.h"
-#include "tools/bench_report.h"
+#include "app/bench/gl/path.h"
+#include "app/bench/report.h"
 #include "walls/gl/walkthrough.h"
 
 #include <map>
 #include <optional>
 #include <vector>
 
-namespace cavewall::tools {
+namespace cavewall::gl {
 
 // Full-geometry images of the compared frames: frame index -> its screen images.
 using ReferenceImages = std::map<long, std::vector<gl::ScreenImage>>;
@@ -28,23 +28,23 @@ struct FrameCost {
     bool overBudget = false;
 };
 
-// Collects one mode's frames and comparisons; finish() fills the ModeResult.
+// Collects one mode's frames and comparisons; finish() fills the bench::ModeResult.
 class ModeAccumulator {
 public:
-    ModeAccumulator(ModeResult mode, const display::Display& display);
+    ModeAccumulator(bench::ModeResult mode, const display::Display& display);
     void addFrame(const FrameCost& cost);
-    const ModeResult& mode() const { return _mode; }
+    const bench::ModeResult& mode() const { return _mode; }
     // Compares `images` with the reference of the same frame (same screens and images).
     void compare(const std::vector<gl::ScreenImage>& images, const std::vector<gl::ScreenImage>& reference);
     // `fullP50`: the reference mode's median frame ms (0: this is the reference).
-    ModeResult finish(double fullP50) const;
+    bench::ModeResult finish(double fullP50) const;
 
 private:
-    ModeResult _mode;
+    bench::ModeResult _mode;
     std::vector<double> _frame, _cpu, _gpu;
     double _triangles = 0.0, _drawCalls = 0.0, _lodTolerance = 0.0;
-    ErrorPool _overall;
-    std::vector<ErrorPool> _screens;
+    bench::ErrorPool _overall;
+    std::vector<bench::ErrorPool> _screens;
     std::vector<std::vector<double>> _screenCpu;           // per screen, per frame
     std::vector<double> _screenTriangles, _screenDrawCalls;  // per screen, summed over frames
 };
@@ -65,7 +65,7 @@ struct ModeContext {
 // in `store` (the full-geometry reference run). `paged`: as `cavewall run` pages, in the
 // background under the default texture budget and upload limit, from a cold start (three
 // warm-up frames), so the timed frames include every page-in, upload and fallback.
-// The mode's ModeResult::lodPixels and triangleBudget set the levels of detail
+// The mode's bench::ModeResult::lodPixels and triangleBudget set the levels of detail
 // (WalkthroughOptions::render.lodPixels, triangleBudget).
 void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls, ModeAccumulator& acc,
                         const ReferenceImages* reference, ReferenceImages* store,
@@ -76,14 +76,14 @@ void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls
 // `frameIndex` of the path again. The repeated frame's work never changes, so its spread is
 // the machine's (scheduling, other tenants), measured in the same seconds as the path's.
 struct NoiseComparison {
-    TimeStats path, repeated;
+    bench::TimeStats path, repeated;
 };
-NoiseComparison interleavedNoise(const ModeContext& c, std::optional<gl::WallSetup> walls, const ModeResult& mode,
+NoiseComparison interleavedNoise(const ModeContext& c, std::optional<gl::WallSetup> walls, const bench::ModeResult& mode,
                                  long frameIndex);
 
 // Runs the cells or near mode (bench_driver.h) with the selection of `setup`'s plan, at the
-// mode's level-of-detail tolerance (ModeResult::lodPixels; no budget).
+// mode's level-of-detail tolerance (bench::ModeResult::lodPixels; no budget).
 void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly, ModeAccumulator& acc,
                  const ReferenceImages& reference);
 
-}  // namespace cavewall::tools
+}  // namespace cavewall::gl
