@@ -3,7 +3,7 @@
 // and the distance to the first wall along a ray. A small CPU query: the structure objects'
 // triangles in the world frame, grouped per object and tested only when the object's world
 // bounds are hit. Content (machines, furniture) neither carries nor blocks the viewer.
-// Lives in tools/ because input may not depend on scenes.
+// Lives in app/, above both, because input may not depend on scenes.
 
 #include "input/navigator.h"
 #include "scenes/scene.h"

@@ -32,7 +32,8 @@ std::string screensCsv(const BenchReport& report) {
                       "draw_calls,lod_px,triangle_budget\n";
     for (const ModeResult& m : report.modes)
         for (const ScreenResult& s : m.screens)
-            out += std::string(toString(m.mode)) + "," + num(m.alphaDeg) + "," + transitionLabel(m) + "," + s.screen + "," + num(s.error.psnrDb) + "," +
+            out += std::string(toString(m.mode)) + "," + num(m.alphaDeg) + "," + transitionLabel(m) + "," + s.screen +
+                   "," + num(s.error.psnrDb) + "," +
                    num(s.error.rmse) + "," + num(s.error.ssim) + "," + num(s.cpuMs.p50) + "," + num(s.cpuMs.p95) + "," +
                    num(s.cpuMs.p99) + "," + num(s.triangles) + "," + num(s.drawCalls) + "," + num(m.lodPixels) + "," +
                    std::to_string(m.triangleBudget) + "\n";

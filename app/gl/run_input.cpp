@@ -89,7 +89,8 @@ RunInput::RunInput(const RunOptions& o, const scenes::Scene& scene, const scenes
 
 FrameInput RunInput::next(long i, bool readImages, const std::vector<input::Event>& windowEvents) {
     const double t = static_cast<double>(i) * kRunStep;
-    if (_realTime && (_desktop || _tracker->isLive())) std::this_thread::sleep_until(_start + std::chrono::duration<double>(t));
+    if (_realTime && (_desktop || _tracker->isLive()))
+        std::this_thread::sleep_until(_start + std::chrono::duration<double>(t));
     std::vector<input::Event> events;
     for (input::Event e : _desktop ? windowEvents : std::vector<input::Event>{}) {
         e.time = t;

@@ -213,8 +213,9 @@ BenchReport runBenchmark(const BenchOptions& o) {
             std::size_t budget = o.triangleBudget;
             if (budget == 0)  // the median of the same mode without a budget
                 for (const ModeResult& m : report.modes)
-                    if (m.mode == Mode::Walls && m.alphaDeg == o.alphasDeg[i] && m.transition == app::Transition::Blend && !m.paged &&
-                        m.lodPixels == o.lodPixels && m.triangleBudget == 0)
+                    if (m.mode == Mode::Walls && m.alphaDeg == o.alphasDeg[i] &&
+                        m.transition == app::Transition::Blend && !m.paged && m.lodPixels == o.lodPixels &&
+                        m.triangleBudget == 0)
                         budget = static_cast<std::size_t>(medianTriangles(m));
             runWalls(i, app::Transition::Blend, false, o.lodPixels, std::max<std::size_t>(budget, 1));
         }

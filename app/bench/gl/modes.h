@@ -78,8 +78,8 @@ void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls
 struct NoiseComparison {
     bench::TimeStats path, repeated;
 };
-NoiseComparison interleavedNoise(const ModeContext& c, std::optional<gl::WallSetup> walls, const bench::ModeResult& mode,
-                                 long frameIndex);
+NoiseComparison interleavedNoise(const ModeContext& c, std::optional<gl::WallSetup> walls,
+                                 const bench::ModeResult& mode, long frameIndex);
 
 // Runs the cells or near mode (bench_driver.h) with the selection of `setup`'s plan, at the
 // mode's level-of-detail tolerance (bench::ModeResult::lodPixels; no budget).
