@@ -1,5 +1,7 @@
 #include "app/cluster.h"
 
+#include "display/timing.h"
+
 #include <mpi.h>
 
 #include <chrono>
@@ -98,7 +100,7 @@ double Cluster::broadcast(FrameState& state) {
     MPI_Ibcast(bytes.data(), static_cast<int>(size), MPI_BYTE, 0, MPI_COMM_WORLD, &r);
     wait(&r, "frame broadcast", _timeout);
     if (_rank != 0 && !decode(bytes, state)) abortAll("frame broadcast: received a malformed frame state");
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return display::msSince(start) / 1000.0;
 }
 
 double Cluster::swapBarrier() { return barrier(_timeout, "swap barrier"); }
@@ -108,7 +110,7 @@ double Cluster::barrier(double timeoutSeconds, const char* what) {
     MPI_Request r;
     MPI_Ibarrier(MPI_COMM_WORLD, &r);
     wait(&r, what, timeoutSeconds);
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return display::msSince(start) / 1000.0;
 }
 
 std::vector<std::vector<std::uint8_t>> Cluster::gatherBytes(const std::vector<std::uint8_t>& bytes) {

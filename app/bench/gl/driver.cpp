@@ -242,7 +242,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
             "renderer's");
     }
     report.header.push_back("bench time: " +
-                            fixed(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 0) +
+                            fixed(display::msSince(start) / 1000.0, 0) +
                             " s in total (all modes, bakes included)");
     return report;
 }

@@ -1,6 +1,7 @@
 #include "app/bench/gl/modes.h"
 
 #include "display/frame_budget.h"
+#include "display/timing.h"
 #include "display/gl/render_targets.h"
 #include "display/gl/scene_renderer.h"
 #include "walls/frame_select.h"
@@ -16,10 +17,6 @@ namespace cavewall::gl {
 using namespace bench;
 
 namespace {
-
-double msSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 bool compared(const ModeContext& c, long frame) { return frame % c.compareEvery == 0; }
 
@@ -225,7 +222,7 @@ void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly
         const double gpu = renderer.waitGpuMs();
         if (!cost) return;
         *cost = FrameCost{};
-        cost->frameMs = msSince(start);
+        cost->frameMs = display::msSince(start);
         cost->cpuMs = stats.cpuMs;
         cost->gpuMs = gpu;
         cost->triangles = static_cast<double>(stats.triangles + quadStats.triangles);
