@@ -6,7 +6,7 @@
 #include "scenes/loader.h"
 #include "tools/bench_modes.h"
 #include "walls/gl/baker.h"
-#include "walls/visibility.h"
+#include "walls/wall_setup.h"
 
 #include <algorithm>
 #include <chrono>
@@ -28,7 +28,7 @@ std::string fixed(double v, int decimals = 1) {
 }
 
 struct BakedWalls {
-    gl::WallSetup setup;
+    walls::WallSetup setup;
     double texels = 0.0, diskMB = 0.0;
     std::string summary;
 };
@@ -36,20 +36,17 @@ struct BakedWalls {
 // Plans and bakes (or finds in the cache) the walls at `alphaDeg`.
 BakedWalls bakeWalls(const BenchOptions& o, double alphaDeg, const scenes::Scene& scene,
                      const scenes::SceneDescription& d, gl::Context& context) {
-    walls::BakeRequest request;
+    walls::PlanOptions plan = o.plan;
+    plan.alphaDeg = alphaDeg;
+    BakedWalls out;
+    out.setup = walls::prepareWalls(scene, d, plan);
+    gl::BakeRequest request;
     request.scene = o.scene;
-    request.plan = o.plan;
-    request.plan.alphaDeg = alphaDeg;
     request.settings.maxResolution = o.bakeResolution;
     request.settings.jobs = 2;
     request.context = &context;
     if (o.cache) request.cache = *o.cache;
-    walls::BakeResult baked = walls::bakeScene(request);
-    context.makeCurrent();
-    BakedWalls out;
-    out.setup.plan = walls::planZones(d, request.plan);
-    out.setup.table = walls::computeVisibility(d);
-    walls::assignDepthBehind(out.setup.plan, scene, d, out.setup.table);
+    gl::BakeResult baked = gl::bakeWalls(scene, d, out.setup, request);
     out.setup.folder = baked.folder;
     for (const walls::BakedTexture& t : baked.manifest.textures)
         out.texels += static_cast<double>(t.resolution.x) * t.resolution.y;
@@ -168,7 +165,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
     }
     const auto listed = std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg);
     const std::size_t transitionIndex = listed - o.alphasDeg.begin();  // listed: checked on entry
-    const gl::WallSetup& cellPlan = baked[transitionIndex].setup;
+    const walls::WallSetup& cellPlan = baked[transitionIndex].setup;
     auto runCells = [&](bool nearOnly, double lodPixels) {
         say(o, std::string(nearOnly ? "bench: near-geometry limit (the viewer's cell and bare wall quads)"
                                     : "bench: cell culling without textures") +
@@ -180,9 +177,9 @@ BenchReport runBenchmark(const BenchOptions& o) {
     runCells(false, 0.0);
     runCells(true, 0.0);
     if (lod) runCells(true, o.lodPixels);
-    auto runWalls = [&](std::size_t i, gl::Transition transition, bool paged, double lodPixels = 0.0,
+    auto runWalls = [&](std::size_t i, walls::Transition transition, bool paged, double lodPixels = 0.0,
                         std::size_t budget = 0, double frameBudgetMs = 0.0) {
-        const std::string label = std::string(transition == gl::Transition::Warp ? "warp" : "blend") +
+        const std::string label = std::string(transition == walls::Transition::Warp ? "warp" : "blend") +
                                   (paged ? " paged" : "");
         ModeResult mode = namedMode("walls", o.alphasDeg[i], label, lodPixels, budget, frameBudgetMs);
         say(o, "bench: " + modeLabel(mode));
@@ -193,11 +190,11 @@ BenchReport runBenchmark(const BenchOptions& o) {
         runWalkthroughMode(c, baked[i].setup, acc, &reference, nullptr, transition, paged);
         report.modes.push_back(acc.finish(fullP50));
     };
-    for (std::size_t i = 0; i < baked.size(); ++i) runWalls(i, gl::Transition::Blend, false);
+    for (std::size_t i = 0; i < baked.size(); ++i) runWalls(i, walls::Transition::Blend, false);
     if (lod)
-        for (std::size_t i = 0; i < baked.size(); ++i) runWalls(i, gl::Transition::Blend, false, o.lodPixels);
-    runWalls(transitionIndex, gl::Transition::Warp, false);
-    runWalls(transitionIndex, gl::Transition::Blend, true);
+        for (std::size_t i = 0; i < baked.size(); ++i) runWalls(i, walls::Transition::Blend, false, o.lodPixels);
+    runWalls(transitionIndex, walls::Transition::Warp, false);
+    runWalls(transitionIndex, walls::Transition::Blend, true);
     if (lod)
         for (std::size_t i = 0; i < baked.size(); ++i) {
             std::size_t budget = o.triangleBudget;
@@ -206,11 +203,11 @@ BenchReport runBenchmark(const BenchOptions& o) {
                     if (m.mode == "walls" && m.alphaDeg == o.alphasDeg[i] && m.transition == "blend" &&
                         m.lodPixels == o.lodPixels && m.triangleBudget == 0)
                         budget = static_cast<std::size_t>(medianTriangles(m));
-            runWalls(i, gl::Transition::Blend, false, o.lodPixels, std::max<std::size_t>(budget, 1));
+            runWalls(i, walls::Transition::Blend, false, o.lodPixels, std::max<std::size_t>(budget, 1));
         }
     if (lod && o.frameBudgetMs > 0.0)
         for (std::size_t i = 0; i < baked.size(); ++i)
-            runWalls(i, gl::Transition::Blend, false, o.lodPixels, 0, o.frameBudgetMs);
+            runWalls(i, walls::Transition::Blend, false, o.lodPixels, 0, o.frameBudgetMs);
     if (lod && o.triangleBudget == 0)
         report.header.push_back("triangle budgets: per alpha, the median triangles of the same walls mode without a "
                                 "budget");

@@ -45,7 +45,7 @@ EyePath recordEyePath(const scenes::Scene& scene, const scenes::SceneDescription
         const input::TrackedFrame tracked = pipeline.update(sample);
         navigator.setTracking(tracked.head.pose, tracked.hand.pose, tracked.wand);
         if (guided && i > 0) navigator.update(kRunStep);
-        gl::FrameInput in;
+        walls::FrameInput in;
         in.frame = i;
         in.time = t;
         in.head = {tracked.head.pose.position, tracked.head.pose.orientation};

@@ -18,7 +18,7 @@
 namespace cavewall::tools {
 
 struct EyePath {
-    std::vector<gl::FrameInput> frames;  // readImages false; no hand cursor
+    std::vector<walls::FrameInput> frames;  // readImages false; no hand cursor
     std::string description;             // one line for the report header
 };
 

@@ -5,19 +5,19 @@
 // same layout as a single-process run. Byte layouts are this build's own (all ranks run the
 // same binary); decoding checks every length and returns false on malformed bytes.
 
-#include "display/gl/frame_images.h"
+#include "scenes/screen_image.h"
 #include "tools/cluster.h"
-#include "walls/gl/walkthrough.h"
+#include "walls/frame_types.h"
 
 #include <cstdint>
 #include <vector>
 
 namespace cavewall::tools {
 
-FrameState frameStateOf(const gl::FrameInput& input);
-bool frameInputOf(const FrameState& state, gl::FrameInput& input);
+FrameState frameStateOf(const walls::FrameInput& input);
+bool frameInputOf(const FrameState& state, walls::FrameInput& input);
 
-std::vector<std::uint8_t> encodeImages(const std::vector<gl::ScreenImage>& images);
-bool decodeImages(const std::vector<std::uint8_t>& bytes, std::vector<gl::ScreenImage>& images);
+std::vector<std::uint8_t> encodeImages(const std::vector<scenes::ScreenImage>& images);
+bool decodeImages(const std::vector<std::uint8_t>& bytes, std::vector<scenes::ScreenImage>& images);
 
 }  // namespace cavewall::tools

@@ -24,7 +24,7 @@ std::unique_ptr<Cluster> openCluster(const RunOptions& o) {
     return cluster;
 }
 
-double receiveFrame(Cluster& cluster, gl::FrameInput& input) {
+double receiveFrame(Cluster& cluster, walls::FrameInput& input) {
     FrameState state = cluster.rank() == 0 ? frameStateOf(input) : FrameState{};
     const double seconds = cluster.broadcast(state);
     if (cluster.rank() != 0 && !frameInputOf(state, input)) cluster.abortAll("received a malformed frame input");
@@ -33,7 +33,7 @@ double receiveFrame(Cluster& cluster, gl::FrameInput& input) {
 
 namespace {
 
-std::vector<std::uint8_t> statsBytes(const gl::FrameResult& r, double syncMs) {
+std::vector<std::uint8_t> statsBytes(const walls::FrameResult& r, double syncMs) {
     const double values[10] = {r.frameMs, r.cpuMs, r.gpuMs, double(r.stats.triangles), double(r.stats.drawCalls), syncMs,
                                double(r.warpFallbacks), r.maxErrorDeg, r.maxErrorPixels, double(r.geometryTriangles)};
     std::vector<std::uint8_t> bytes(sizeof values);
@@ -43,7 +43,7 @@ std::vector<std::uint8_t> statsBytes(const gl::FrameResult& r, double syncMs) {
 
 }  // namespace
 
-double combineFrame(Cluster& cluster, gl::FrameResult& r, double syncMs, const std::vector<int>& screens) {
+double combineFrame(Cluster& cluster, walls::FrameResult& r, double syncMs, const std::vector<int>& screens) {
     syncMs += 1e3 * cluster.swapBarrier();
     // Only this rank's screens were drawn; the read-back holds every screen's target.
     std::erase_if(r.images, [&](const gl::ScreenImage& i) {
@@ -88,8 +88,8 @@ std::unique_ptr<Cluster> openCluster(const RunOptions& o) {
     return nullptr;
 }
 
-double receiveFrame(Cluster&, gl::FrameInput&) { return 0.0; }
-double combineFrame(Cluster&, gl::FrameResult&, double syncMs, const std::vector<int>&) { return syncMs; }
+double receiveFrame(Cluster&, walls::FrameInput&) { return 0.0; }
+double combineFrame(Cluster&, walls::FrameResult&, double syncMs, const std::vector<int>&) { return syncMs; }
 
 // openCluster never makes a Cluster here; these keep the unique_ptr and the call sites linking.
 Cluster::~Cluster() = default;

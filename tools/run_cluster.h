@@ -1,6 +1,6 @@
 #pragma once
 // Cluster mode of `cavewall run` (tools/cluster.h): rank 0 reads input and broadcasts each
-// frame's gl::FrameInput; every rank renders its own screens (config::screensOfRank); after the
+// frame's walls::FrameInput; every rank renders its own screens (config::screensOfRank); after the
 // swap lock, rank 0 gathers the other ranks' statistics and images so that frames.csv and the
 // saved frames have the same layout as a single-process run. Without MPI in the build,
 // --cluster is a clear error.
@@ -18,13 +18,13 @@ namespace cavewall::tools {
 std::unique_ptr<Cluster> openCluster(const RunOptions& options);
 
 // Rank 0's `input` is sent to every rank; the others' is replaced. Returns milliseconds waited.
-double receiveFrame(Cluster& cluster, gl::FrameInput& input);
+double receiveFrame(Cluster& cluster, walls::FrameInput& input);
 
 // The swap lock, then rank 0 gathers: frame/CPU/GPU times (max over ranks), triangles and draw
 // calls (sums), warp fallbacks and angular errors (max: each rank counts the walls its screens show)
 // and the images of every rank's own `screens` (in screen order). Returns the
 // slowest rank's wait in milliseconds (broadcast + swap lock), `syncMs` being this rank's
 // broadcast wait.
-double combineFrame(Cluster& cluster, gl::FrameResult& result, double syncMs, const std::vector<int>& screens);
+double combineFrame(Cluster& cluster, walls::FrameResult& result, double syncMs, const std::vector<int>& screens);
 
 }  // namespace cavewall::tools
