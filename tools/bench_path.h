@@ -10,7 +10,7 @@
 #include "config/display_config.h"
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
-#include "walls/gl/walkthrough.h"
+#include "walls/frame_types.h"
 
 #include <string>
 #include <vector>

@@ -46,7 +46,7 @@ std::vector<std::uint8_t> statsBytes(const walls::FrameResult& r, double syncMs)
 double combineFrame(Cluster& cluster, walls::FrameResult& r, double syncMs, const std::vector<int>& screens) {
     syncMs += 1e3 * cluster.swapBarrier();
     // Only this rank's screens were drawn; the read-back holds every screen's target.
-    std::erase_if(r.images, [&](const gl::ScreenImage& i) {
+    std::erase_if(r.images, [&](const scenes::ScreenImage& i) {
         return std::find(screens.begin(), screens.end(), i.screen) == screens.end();
     });
     const auto stats = cluster.gatherBytes(statsBytes(r, syncMs));
@@ -75,7 +75,7 @@ double combineFrame(Cluster& cluster, walls::FrameResult& r, double syncMs, cons
     r.images.clear();
     for (const auto& bytes : images)
         if (!bytes.empty() && !decodeImages(bytes, r.images)) cluster.abortAll("gathered malformed images");
-    std::sort(r.images.begin(), r.images.end(), [](const gl::ScreenImage& a, const gl::ScreenImage& b) {
+    std::sort(r.images.begin(), r.images.end(), [](const scenes::ScreenImage& a, const scenes::ScreenImage& b) {
         return a.screen != b.screen ? a.screen < b.screen : a.image < b.image;
     });
     return slowestSync;

@@ -7,7 +7,7 @@
 
 #include "tools/cluster.h"
 #include "tools/run_session.h"
-#include "walls/gl/walkthrough.h"
+#include "walls/frame_types.h"
 
 #include <memory>
 

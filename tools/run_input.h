@@ -16,7 +16,7 @@
 #include "scenes/scene_description.h"
 #include "tools/run_session.h"
 #include "tools/scene_query.h"
-#include "walls/gl/walkthrough.h"
+#include "walls/frame_types.h"
 
 #include <chrono>
 #include <memory>
