@@ -35,7 +35,7 @@ TEST(GltfLoader, BrokenFilesNameTheFileAndTheGltfPath) {
              b.j["meshes"][0]["primitives"][0]["indices"] = b.addIndices(std::vector<std::uint16_t>{0, 1, 3}); },
          "broken.gltf: meshes[0].primitives[0].indices: index 3 at position 2 is out of range (expected < 3 vertices)"},
         {"accessor past its view", [](GltfBuilder& b) { b.j["accessors"][0]["count"] = 4; },
-         "broken.gltf: accessors[0]: 4 elements need 48 bytes of bufferView 0 (expected at most 36)"},
+         "broken.gltf: accessors[0]: 4 elements of 12 bytes, 12 apart from byte 0, need 48 bytes of bufferView 0 (expected at most 36)"},
         {"truncated buffer", [](GltfBuilder& b) { b.j["bufferViews"][0]["byteLength"] = 400; },
          "broken.gltf: bufferViews[0]: byte range 0 + 400 exceeds buffer 0"},
         {"NaN position", [nan](GltfBuilder& b) { std::memcpy(b.bin.data() + 4, &nan, 4); },
