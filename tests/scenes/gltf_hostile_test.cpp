@@ -111,20 +111,22 @@ TEST(GltfHostile, DeepJsonIsRefusedBeforeTheParserRecurses) {
 struct GlbCase {
     const char* name;
     std::function<void(std::string&)> breakIt;
-    const char* message;
+    std::string message;
 };
 
 TEST(GltfHostile, GlbHeadersSayWhichChunkAndOffset) {
     const std::string good = glb(triangleFile());
     const std::uint32_t jsonLength = [&] { std::uint32_t v; std::memcpy(&v, good.data() + 12, 4); return v; }();
     const std::size_t binAt = 20 + jsonLength;
-    const std::string total = std::to_string(good.size());
+    const std::string at = std::to_string(binAt), at4 = std::to_string(binAt + 4);
     const GlbCase cases[] = {
         {"short header", [](std::string& s) { s.resize(7); },
          "GLB header at byte 0: the file is truncated (expected 12 bytes of header, got 7)"},
         {"version 1", [](std::string& s) { put32(s, 4, 1); }, "GLB header at byte 4: unsupported version (expected 2, got 1)"},
         {"truncated file", [](std::string& s) { s.resize(s.size() - 10); },
-         "GLB header at byte 8: total length is " /* then the declared and real sizes */},
+         "GLB header at byte 8: total length is " + std::to_string(good.size()) + " but the file has " +
+             std::to_string(good.size() - 10) + " bytes (expected at most " + std::to_string(good.size() - 10) +
+             "; the file is truncated)"},
         {"JSON type", [](std::string& s) { put32(s, 16, 0x12345678u); },
          "GLB chunk 0 at byte 16: wrong chunk type (expected 0x4E4F534A, JSON, got 0x12345678)"},
         {"empty JSON", [](std::string& s) { put32(s, 12, 0); },
@@ -132,20 +134,21 @@ TEST(GltfHostile, GlbHeadersSayWhichChunkAndOffset) {
         {"JSON too long", [](std::string& s) { put32(s, 12, 0xFFFFFFF0u); },
          "GLB chunk 0 (JSON) at byte 12: length 4294967280 runs past the end"},
         {"BIN type", [binAt](std::string& s) { put32(s, binAt + 4, 0x41414141u); },
-         "GLB chunk 1 at byte "},
+         "GLB chunk 1 at byte " + at4 + ": wrong chunk type (expected 0x004E4942, BIN, got 0x41414141)"},
         {"BIN length odd", [binAt](std::string& s) { put32(s, binAt, 3); },
-         "(BIN) at byte "},
+         "GLB chunk 1 (BIN) at byte " + at + ": bad length (expected a multiple of 4 of at least 4, got 3)"},
         // tinygltf compared the BIN length without its 8-byte header: 8 bytes past the end.
         {"BIN length 8 too long", [binAt](std::string& s) {
              std::uint32_t n; std::memcpy(&n, s.data() + binAt, 4); put32(s, binAt, n + 8); },
-         "runs past the end (expected at most 36 bytes after the chunk header)"},
+         "GLB chunk 1 (BIN) at byte " + at + ": length 44 runs past the end (expected at most 36 bytes after the "
+         "chunk header)"},
     };
     for (const GlbCase& c : cases) {
         SCOPED_TRACE(c.name);
         std::string bytes = good;
         c.breakIt(bytes);
         const auto file = writeBytes("broken.glb", bytes);
-        EXPECT_THAT([&] { loadGltf(file); }, ThrowsMessage<Error>(HasSubstr(std::string("broken.glb: ") + c.message)));
+        EXPECT_THAT([&] { loadGltf(file); }, ThrowsMessage<Error>(HasSubstr("broken.glb: " + c.message)));
     }
     EXPECT_NO_THROW(loadGltf(writeBytes("good.glb", good)));
 }
