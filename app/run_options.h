@@ -5,6 +5,7 @@
 // several options together, so every caller of the session gets the same messages.
 
 #include "config/display_config.h"
+#include "walls/frame_types.h"
 #include "walls/plan.h"
 
 #include <array>
@@ -22,8 +23,8 @@ inline constexpr double kRunStep = 1.0 / 60.0;  // seconds per frame
 enum class WindowMode { Auto, Headless, Window };
 
 // How a wall's textures hand over to geometry: cross-fade, or geometry warped onto the
-// textures (gl::Transition).
-enum class Transition { Blend, Warp };
+// textures (walls/frame_types.h).
+using Transition = walls::Transition;
 
 // --nav. Auto: guided along the scene's walkPath when it has one, else None (the CAVE stays
 // where the path starts, or at the origin).

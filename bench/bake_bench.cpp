@@ -59,7 +59,7 @@ void BM_BakeTexture(benchmark::State& state) {
     const scenes::Scene scene = scenes::loadSceneFile(plantScene(), &d);
     const walls::Plan plan = walls::planZones(d);
     const walls::VisibilityTable table = walls::computeVisibility(d);
-    walls::WallTextureRenderer renderer(scene, 0.35f);
+    gl::WallTextureRenderer renderer(scene, 0.35f);
     const int cap = static_cast<int>(state.range(0));
     double renderMs = 0, fileMs = 0, texels = 0;
     std::size_t i = 0;
@@ -67,11 +67,11 @@ void BM_BakeTexture(benchmark::State& state) {
         const walls::Texture& t = plan.textures[i++ % plan.textures.size()];
         const int side = plan.walls[t.wall].cells[0] == t.cell ? 0 : 1;
         const walls::WallContents c = walls::wallContents(scene, d, table, t.wall, side);
-        const glm::ivec2 res = walls::bakeResolution(t.resolution, cap);
+        const glm::ivec2 res = gl::bakeResolution(t.resolution, cap);
         const Clock::time_point a = Clock::now();
         const scenes::Image image = renderer.render(walls::quadSeenFrom(plan.walls[t.wall].quad, side), t.samplingPoint, res, c.baked);
         const Clock::time_point b = Clock::now();
-        walls::writeMipFile(benchFolder() / "one.tx", walls::premultipliedMipChain(image));
+        gl::writeMipFile(benchFolder() / "one.tx", gl::premultipliedMipChain(image));
         renderMs += ms(b - a);
         fileMs += ms(Clock::now() - b);
         texels += double(res.x) * res.y;
@@ -86,18 +86,18 @@ BENCHMARK(BM_BakeTexture)->Arg(256)->Arg(1024)->Unit(benchmark::kMillisecond)->I
 
 // The whole plan into an empty cache, once; then the same bake again (cache hit, no work).
 void BM_BakeWholePlant(benchmark::State& state) {
-    walls::BakeRequest request;
+    gl::BakeRequest request;
     request.scene = plantScene();
     request.cache = benchFolder() / "cache";
     request.settings.maxResolution = static_cast<int>(envSize("CAVEWALL_BENCH_MAX_RES", 256));
     request.settings.jobs = 2;
     request.context = &context();
-    walls::BakeResult result, again;
+    gl::BakeResult result, again;
     for (auto _ : state) {
         std::filesystem::remove_all(request.cache);
-        result = walls::bakeScene(request);
+        result = gl::bakeScene(request);
         const Clock::time_point a = Clock::now();
-        again = walls::bakeScene(request);
+        again = gl::bakeScene(request);
         state.counters["rebake_unchanged_s"] = std::chrono::duration<double>(Clock::now() - a).count();
     }
     state.counters["textures"] = double(result.baked);

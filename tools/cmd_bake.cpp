@@ -46,7 +46,7 @@ double megabytes(std::uint64_t bytes) { return double(bytes) / (1024.0 * 1024.0)
 class ProgressPrinter {
 public:
     explicit ProgressPrinter(bool terminal) : _terminal(terminal) {}
-    void operator()(const walls::BakeProgress& p);
+    void operator()(const gl::BakeProgress& p);
     void end() {
         if (_terminal && _drawn) std::cerr << "\n";
     }
@@ -57,7 +57,7 @@ private:
     double _lastLine = -1.0;
 };
 
-void ProgressPrinter::operator()(const walls::BakeProgress& p) {
+void ProgressPrinter::operator()(const gl::BakeProgress& p) {
     const bool last = p.done == p.total;
     const double eta = p.baked > 0 ? p.seconds / std::max(1, p.done) * (p.total - p.done) : 0.0;
     char line[200];
@@ -84,7 +84,7 @@ void ProgressPrinter::operator()(const walls::BakeProgress& p) {
 int runBake(const std::vector<std::string>& words) {
     const Args args(words, {});
     args.expectFlags({"alpha", "jobs", "cache", "max-res", "min-zone", "blend", "ppd", "tile"});
-    walls::BakeRequest request;
+    gl::BakeRequest request;
     request.plan.alphaDeg = args.number("alpha", request.plan.alphaDeg, 1e-6, 90.0);
     request.plan.minZoneSize = args.number("min-zone", request.plan.minZoneSize, 0.01, 1000.0);
     request.plan.blendWidth = args.number("blend", request.plan.blendWidth, 0.0, 100.0);
@@ -93,15 +93,15 @@ int runBake(const std::vector<std::string>& words) {
     request.settings.jobs = static_cast<int>(args.integer("jobs", 1, 1, 64));
     request.settings.maxResolution = static_cast<int>(args.integer("max-res", request.settings.maxResolution, 16, 16384));
     request.settings.tileSize = static_cast<int>(args.integer("tile", request.settings.tileSize, 16, 1024));
-    walls::validateBakeSettings(request.settings);
+    gl::validateBakeSettings(request.settings);
     request.scene = args.positional(0, "SCENE");
     if (args.positional().size() > 1)
         throw Error("bake: expected one SCENE, got " + std::to_string(args.positional().size()) + " words");
     if (auto cache = args.get("cache")) request.cache = *cache;
 
     ProgressPrinter printer(::isatty(STDERR_FILENO) == 1);
-    request.progress = [&printer](const walls::BakeProgress& p) { printer(p); };
-    const walls::BakeResult result = walls::bakeScene(request);
+    request.progress = [&printer](const gl::BakeProgress& p) { printer(p); };
+    const gl::BakeResult result = gl::bakeScene(request);
     printer.end();
     for (const std::string& w : result.warnings) std::cerr << "cavewall: warning: " << w << "\n";
     const int total = static_cast<int>(result.manifest.textures.size());

@@ -118,4 +118,10 @@ int findZone(const Plan& plan, int cell, int wall, glm::dvec2 p) {
     return -1;
 }
 
+display::ScreenQuad quadSeenFrom(const display::ScreenQuad& wall, int side) {
+    if (side == 0) return wall;
+    const glm::dvec3 up = wall.upperLeft - wall.lowerLeft;
+    return {wall.lowerRight, wall.lowerLeft, wall.lowerRight + up};
+}
+
 }  // namespace cavewall::walls

@@ -127,4 +127,9 @@ int findZone(const Plan& plan, int cell, int wall, glm::dvec2 p);
 // metres from the wall: one texel spans 1/pixelsPerDegree degrees there.
 double texelSize(double distance, double pixelsPerDegree);
 
+// The wall quad as seen from `side` (0: front, 1: back): for side 1 the quad is mirrored so its
+// normal points to the back side and the image is not mirrored for a viewer there. Textures
+// seen from the back are baked and drawn on this quad.
+display::ScreenQuad quadSeenFrom(const display::ScreenQuad& wall, int side);
+
 }  // namespace cavewall::walls

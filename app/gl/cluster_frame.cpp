@@ -47,7 +47,7 @@ private:
 
 }  // namespace
 
-app::FrameState frameStateOf(const FrameInput& in) {
+app::FrameState frameStateOf(const walls::FrameInput& in) {
     app::FrameState s;
     s.frame = static_cast<std::uint64_t>(in.frame);
     s.time = in.time;
@@ -67,7 +67,7 @@ app::FrameState frameStateOf(const FrameInput& in) {
     return s;
 }
 
-bool frameInputOf(const app::FrameState& s, FrameInput& in) {
+bool frameInputOf(const app::FrameState& s, walls::FrameInput& in) {
     in.frame = static_cast<long>(s.frame);
     in.time = s.time;
     in.head = {s.headPosition, s.headOrientation};
@@ -80,17 +80,17 @@ bool frameInputOf(const app::FrameState& s, FrameInput& in) {
     in.triangleBudget = static_cast<std::size_t>(triangleBudget);
     in.hand.reset();
     if (hasHand) {
-        gl::HandCursorPose hand;
+        walls::HandCursorPose hand;
         if (!r.get(hand.position) || !r.get(hand.orientation) || !r.get(hand.rayLength)) return false;
         in.hand = hand;
     }
     return r.done();
 }
 
-std::vector<std::uint8_t> encodeImages(const std::vector<ScreenImage>& images) {
+std::vector<std::uint8_t> encodeImages(const std::vector<scenes::ScreenImage>& images) {
     Writer w;
     w.put(static_cast<std::uint32_t>(images.size()));
-    for (const ScreenImage& i : images) {
+    for (const scenes::ScreenImage& i : images) {
         w.put(static_cast<std::int32_t>(i.screen));
         w.put(static_cast<std::int32_t>(i.image));
         w.putBytes(reinterpret_cast<const std::uint8_t*>(i.stem.data()), i.stem.size());
@@ -101,12 +101,12 @@ std::vector<std::uint8_t> encodeImages(const std::vector<ScreenImage>& images) {
     return std::move(w.bytes);
 }
 
-bool decodeImages(const std::vector<std::uint8_t>& bytes, std::vector<ScreenImage>& images) {
+bool decodeImages(const std::vector<std::uint8_t>& bytes, std::vector<scenes::ScreenImage>& images) {
     Reader r(bytes);
     std::uint32_t n = 0;
     if (!r.get(n)) return false;
     for (std::uint32_t k = 0; k < n; ++k) {
-        ScreenImage i;
+        scenes::ScreenImage i;
         std::int32_t screen = 0, image = 0, w = 0, h = 0;
         std::vector<std::uint8_t> stem;
         if (!r.get(screen) || !r.get(image) || !r.getBytes(stem) || !r.get(w) || !r.get(h) || !r.getBytes(i.pixels.rgba))

@@ -5,19 +5,19 @@
 // same layout as a single-process run. Byte layouts are this build's own (all ranks run the
 // same binary); decoding checks every length and returns false on malformed bytes.
 
-#include "display/gl/frame_images.h"
+#include "scenes/screen_image.h"
 #include "app/cluster.h"
-#include "walls/gl/walkthrough.h"
+#include "walls/frame_types.h"
 
 #include <cstdint>
 #include <vector>
 
 namespace cavewall::gl {
 
-app::FrameState frameStateOf(const FrameInput& input);
-bool frameInputOf(const app::FrameState& state, FrameInput& input);
+app::FrameState frameStateOf(const walls::FrameInput& input);
+bool frameInputOf(const app::FrameState& state, walls::FrameInput& input);
 
-std::vector<std::uint8_t> encodeImages(const std::vector<ScreenImage>& images);
-bool decodeImages(const std::vector<std::uint8_t>& bytes, std::vector<ScreenImage>& images);
+std::vector<std::uint8_t> encodeImages(const std::vector<scenes::ScreenImage>& images);
+bool decodeImages(const std::vector<std::uint8_t>& bytes, std::vector<scenes::ScreenImage>& images);
 
 }  // namespace cavewall::gl

@@ -24,7 +24,7 @@ std::unique_ptr<app::Cluster> openCluster(const app::RunOptions& o) {
     return cluster;
 }
 
-double receiveFrame(app::Cluster& cluster, FrameInput& input) {
+double receiveFrame(app::Cluster& cluster, walls::FrameInput& input) {
     app::FrameState state = cluster.rank() == 0 ? frameStateOf(input) : app::FrameState{};
     const double seconds = cluster.broadcast(state);
     if (cluster.rank() != 0 && !frameInputOf(state, input)) cluster.abortAll("received a malformed frame input");
@@ -33,7 +33,7 @@ double receiveFrame(app::Cluster& cluster, FrameInput& input) {
 
 namespace {
 
-std::vector<std::uint8_t> statsBytes(const FrameResult& r, double syncMs) {
+std::vector<std::uint8_t> statsBytes(const walls::FrameResult& r, double syncMs) {
     const double values[10] = {r.frameMs, r.cpuMs, r.gpuMs, double(r.stats.triangles), double(r.stats.drawCalls), syncMs,
                                double(r.warpFallbacks), r.maxErrorDeg, r.maxErrorPixels, double(r.geometryTriangles)};
     std::vector<std::uint8_t> bytes(sizeof values);
@@ -43,10 +43,10 @@ std::vector<std::uint8_t> statsBytes(const FrameResult& r, double syncMs) {
 
 }  // namespace
 
-double combineFrame(app::Cluster& cluster, FrameResult& r, double syncMs, const std::vector<int>& screens) {
+double combineFrame(app::Cluster& cluster, walls::FrameResult& r, double syncMs, const std::vector<int>& screens) {
     syncMs += 1e3 * cluster.swapBarrier();
     // Only this rank's screens were drawn; the read-back holds every screen's target.
-    std::erase_if(r.images, [&](const ScreenImage& i) {
+    std::erase_if(r.images, [&](const scenes::ScreenImage& i) {
         return std::find(screens.begin(), screens.end(), i.screen) == screens.end();
     });
     const auto stats = cluster.gatherBytes(statsBytes(r, syncMs));
@@ -75,7 +75,7 @@ double combineFrame(app::Cluster& cluster, FrameResult& r, double syncMs, const 
     r.images.clear();
     for (const auto& bytes : images)
         if (!bytes.empty() && !decodeImages(bytes, r.images)) cluster.abortAll("gathered malformed images");
-    std::sort(r.images.begin(), r.images.end(), [](const ScreenImage& a, const ScreenImage& b) {
+    std::sort(r.images.begin(), r.images.end(), [](const scenes::ScreenImage& a, const scenes::ScreenImage& b) {
         return a.screen != b.screen ? a.screen < b.screen : a.image < b.image;
     });
     return slowestSync;
@@ -88,11 +88,11 @@ std::unique_ptr<app::Cluster> openCluster(const app::RunOptions& o) {
     return nullptr;
 }
 
-double receiveFrame(app::Cluster&, FrameInput&) { return 0.0; }
-double combineFrame(app::Cluster&, FrameResult&, double syncMs, const std::vector<int>&) { return syncMs; }
+double receiveFrame(app::Cluster&, walls::FrameInput&) { return 0.0; }
+double combineFrame(app::Cluster&, walls::FrameResult&, double syncMs, const std::vector<int>&) { return syncMs; }
 
-// openCluster never makes a app::Cluster here; these keep the unique_ptr and the call sites linking.
-app::Cluster::~app::Cluster() = default;
+// openCluster never makes an app::Cluster here; these keep the unique_ptr and the call sites linking.
+app::Cluster::~Cluster() = default;
 double app::Cluster::barrier(double, const char*) { return 0.0; }
 
 #endif

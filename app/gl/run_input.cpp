@@ -87,7 +87,7 @@ RunInput::RunInput(const RunOptions& o, const scenes::Scene& scene, const scenes
     if (o.record) _recorder = std::make_unique<input::Recorder>(*o.record, o.tracker);
 }
 
-FrameInput RunInput::next(long i, bool readImages, const std::vector<input::Event>& windowEvents) {
+walls::FrameInput RunInput::next(long i, bool readImages, const std::vector<input::Event>& windowEvents) {
     const double t = static_cast<double>(i) * kRunStep;
     if (_realTime && (_desktop || _tracker->isLive()))
         std::this_thread::sleep_until(_start + std::chrono::duration<double>(t));
@@ -111,12 +111,12 @@ FrameInput RunInput::next(long i, bool readImages, const std::vector<input::Even
         if (i > 0) _navigator.update(kRunStep);
     }
     const input::HandCursor cursor = _navigator.handCursor();
-    FrameInput in;
+    walls::FrameInput in;
     in.frame = i;
     in.time = t;
     in.head = {tracked.head.pose.position, tracked.head.pose.orientation};
     in.worldFromCave = _navigator.worldFromCave();
-    in.hand = HandCursorPose{cursor.hand.position, cursor.hand.orientation, cursor.rayLength};
+    in.hand = walls::HandCursorPose{cursor.hand.position, cursor.hand.orientation, cursor.rayLength};
     in.readImages = readImages;
     return in;
 }

@@ -14,7 +14,7 @@
 #include "app/scene_query.h"
 #include "walls/gl/baker.h"
 #include "walls/gl/walkthrough.h"
-#include "walls/visibility.h"
+#include "walls/wall_setup.h"
 
 #include <algorithm>
 #include <chrono>
@@ -30,26 +30,21 @@ using app::WindowMode;
 
 namespace {
 
-// Plans and bakes (or finds in the cache) the scene's wall textures.
-gl::WallSetup prepareWalls(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
-                           gl::Context& context) {
-    walls::BakeRequest request;
+// Prepares the walls and bakes (or finds in the cache) their textures.
+walls::WallSetup prepareWalls(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
+                              gl::Context& context) {
+    walls::WallSetup setup = walls::prepareWalls(scene, d, o.plan);
+    gl::BakeRequest request;
     request.scene = o.scene;
-    request.plan = o.plan;
     request.context = &context;
     if (o.cache) request.cache = *o.cache;
     if (o.verbose)
-        request.progress = [](const walls::BakeProgress& p) {
+        request.progress = [](const gl::BakeProgress& p) {
             if (p.baked > 0 && (p.done % 10 == 0 || p.done == p.total))
                 std::cout << "bake: " << p.done << "/" << p.total << " textures (" << p.baked << " baked) "
                           << std::lround(p.seconds) << " s\n" << std::flush;
         };
-    walls::BakeResult baked = walls::bakeScene(request);
-    context.makeCurrent();
-    gl::WallSetup setup;
-    setup.plan = walls::planZones(d, o.plan);
-    setup.table = walls::computeVisibility(d);
-    walls::assignDepthBehind(setup.plan, scene, d, setup.table);
+    gl::BakeResult baked = gl::bakeWalls(scene, d, setup, request);
     setup.folder = baked.folder;
     setup.manifest = std::move(baked.manifest);
     if (o.verbose)
@@ -73,10 +68,10 @@ std::unique_ptr<gl::Context> makeContext(const RunOptions& o, const display::Dis
 // cache (one bake per cache folder at a time); the wait is bounded by kBakeWaitSeconds.
 constexpr double kBakeWaitSeconds = 3600.0;
 
-gl::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
+walls::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
                                gl::Context& context, app::Cluster* cluster) {
     if (!cluster) return prepareWalls(o, scene, d, context);
-    std::optional<gl::WallSetup> setup;
+    std::optional<walls::WallSetup> setup;
     if (cluster->rank() == 0) setup = prepareWalls(o, scene, d, context);
     cluster->barrier(kBakeWaitSeconds, "waiting for rank 0 to bake the wall textures");
     if (cluster->rank() != 0) {
@@ -89,10 +84,6 @@ gl::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scene, 
 
 }  // namespace
 
-Transition walkthroughTransition(app::Transition transition) {
-    return transition == app::Transition::Warp ? Transition::Warp : Transition::Blend;
-}
-
 RunSummary runSession(const RunOptions& o) {
     app::validate(o);
     const display::Display display(o.display);
@@ -104,13 +95,13 @@ RunSummary runSession(const RunOptions& o) {
     std::unique_ptr<RunInput> input = rank == 0 ? std::make_unique<RunInput>(o, scene, description) : nullptr;
     const auto context = makeContext(o, display);
 
-    std::optional<gl::WallSetup> setup;
+    std::optional<walls::WallSetup> setup;
     if (o.walls && !description.walls.empty()) setup = prepareWallsOnce(o, scene, description, *context, cluster.get());
     const int textureCount = setup ? static_cast<int>(setup->plan.textures.size()) : 0;
     gl::WalkthroughOptions options;
     options.synchronousPaging = o.synchronousPaging;
     options.textureBudgetMB = o.textureBudgetMB;
-    options.transition = walkthroughTransition(o.transition);
+    options.transition = o.transition;
     options.render.lodPixels = o.lodPixels;
     options.triangleBudget = o.triangleBudget;
     options.lodMaxPixels = std::max(o.lodMaxPixels, o.lodPixels);
@@ -126,10 +117,10 @@ RunSummary runSession(const RunOptions& o) {
     for (long i = 0; i < o.frames; ++i) {
         const bool save = o.saveEvery > 0 && i % o.saveEvery == 0;
         if (context->windowCount() > 0 && context->pollCloseRequested()) break;  // a window was closed
-        gl::FrameInput in = input ? input->next(i, save, context->takeInputEvents()) : gl::FrameInput{};
+        walls::FrameInput in = input ? input->next(i, save, context->takeInputEvents()) : walls::FrameInput{};
         if (frameBudget) in.triangleBudget = frameBudget->budget();
         double syncMs = cluster ? receiveFrame(*cluster, in) : 0.0;
-        gl::FrameResult r = walkthrough.renderFrame(in);
+        walls::FrameResult r = walkthrough.renderFrame(in);
         if (cluster) syncMs = combineFrame(*cluster, r, syncMs, screens);
         if (frameBudget) frameBudget->update(r.frameMs, r.geometryTriangles);  // rank 0: the slowest rank's time
         if (!output) continue;

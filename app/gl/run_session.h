@@ -16,7 +16,4 @@ namespace cavewall::gl {
 // Runs the session; throws cavewall::Error on bad input (options, scene, tracker spec...).
 app::RunSummary runSession(const app::RunOptions& options);
 
-// The walkthrough's transition for the option's.
-Transition walkthroughTransition(app::Transition transition);
-
 }  // namespace cavewall::gl

@@ -6,6 +6,7 @@
 #include "display/foldout.h"
 #include "display/gl/render_targets.h"
 #include "scenes/scene.h"
+#include "scenes/screen_image.h"
 
 #include <filesystem>
 #include <string>
@@ -13,12 +14,7 @@
 
 namespace cavewall::gl {
 
-struct ScreenImage {
-    int screen = 0;
-    int image = 0;           // RenderTargets image index (separate stereo: 0 left, 1 right)
-    std::string stem;        // file name without extension (display::imageStem)
-    scenes::Image pixels;
-};
+using scenes::ScreenImage;  // scenes/screen_image.h
 
 // Reads every output image back, screens in configuration order, images in order. Needs the
 // rendering context current.

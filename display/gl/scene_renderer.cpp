@@ -66,15 +66,6 @@ void setViewport(const display::Viewport& vp, glm::bvec4 colorMask) {
 
 }  // namespace
 
-void FrameStats::add(const ViewStats& view) {
-    drawCalls += view.drawCalls;
-    triangles += view.triangles;
-    objectsDrawn += view.objectsDrawn;
-    cullMs += view.cullMs;
-    ++views;
-    perView.push_back(view);
-}
-
 SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings)
     : _objects(scene.objects), _settings(settings),
       _lods(settings.lodPixels > 0.0 ? scenes::buildSceneLods(scene) : std::vector<scenes::MeshLod>{}),

@@ -5,9 +5,10 @@
 #include "scenes/primitives.h"
 #include "walls/gl/baker.h"
 
+#include "walls/wall_setup.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/constants.hpp>
-#include "walls/gl/baker.h"
 
 #include <cstdlib>
 #include <memory>
@@ -56,14 +57,11 @@ std::unique_ptr<SmallPlant> makeBaked(const std::string& name, const walls::Plan
     }
     p->sceneFile = folder / "scene.json";
     p->scene = scenes::loadSceneFile(p->sceneFile, &p->description);
-    walls::BakeRequest request;
+    p->walls = walls::prepareWalls(p->scene, p->description, plan);
+    gl::BakeRequest request;
     request.scene = p->sceneFile;
-    request.plan = plan;
     request.cache = outputFolder() / "cache";
-    walls::BakeResult baked = walls::bakeScene(request);
-    p->walls.plan = walls::planZones(p->description, request.plan);
-    p->walls.table = walls::computeVisibility(p->description);
-    walls::assignDepthBehind(p->walls.plan, p->scene, p->description, p->walls.table);
+    gl::BakeResult baked = gl::bakeWalls(p->scene, p->description, p->walls, request);
     p->walls.folder = baked.folder;
     p->walls.manifest = baked.manifest;
     return p;
@@ -103,7 +101,7 @@ glm::dmat4 cavePlacedAt(glm::dvec3 eye) {
                        glm::dvec3(0.0, 1.0, 0.0));
 }
 
-int wallIndex(const gl::WallSetup& walls, const std::string& name) {
+int wallIndex(const walls::WallSetup& walls, const std::string& name) {
     for (const walls::PlannedWall& w : walls.plan.walls)
         if (w.name == name) return w.id;
     return -1;

@@ -17,7 +17,7 @@ struct SmallPlant {
     std::filesystem::path sceneFile;
     scenes::Scene scene;
     scenes::SceneDescription description;
-    gl::WallSetup walls;          // planned with alpha 20°, zones >= 4 m, 2 texels/degree
+    walls::WallSetup walls;          // planned with alpha 20°, zones >= 4 m, 2 texels/degree
 };
 
 // Generated, planned and baked on first use (bakes with its own headless context).
@@ -37,6 +37,6 @@ display::Display testDisplay(int pixels, bool stereo = false, double eyeSeparati
 glm::dmat4 cavePlacedAt(glm::dvec3 eye);
 
 // Index of the wall named `name` in the plan.
-int wallIndex(const gl::WallSetup& walls, const std::string& name);
+int wallIndex(const walls::WallSetup& walls, const std::string& name);
 
 }  // namespace cavewall::testing

@@ -1,6 +1,7 @@
-// The walkthrough runtime on a small generated plant: one selection per frame for every eye and
+// The walkthrough executor on a small generated plant: one selection per frame for every eye and
 // screen, golden frames in a texture, a blend and a geometry zone, and paging under a tiny
-// budget never leaving a wall missing.
+// budget never leaving a wall missing in the pixels. Which texture a wall keeps while another
+// is paged in is the planner's logic, tested without GL in tests/walls/frame_planner_test.cpp.
 #include "tests/gl/gl_test_support.h"
 #include "tests/runtime/runtime_fixture.h"
 
@@ -29,8 +30,8 @@ protected:
             if (b.wall == wall) return b;
         return {};
     }
-    const gl::WallState* stateOf(const gl::FrameResult& r, int wall) const {
-        for (const gl::WallState& s : r.walls)
+    const walls::WallState* stateOf(const walls::FrameResult& r, int wall) const {
+        for (const walls::WallState& s : r.walls)
             if (s.wall == wall) return &s;
         return nullptr;
     }
@@ -63,9 +64,9 @@ TEST_F(WalkthroughTest, BothEyesAndAllScreensUseTheCyclopeanSelection) {
     gl::WalkthroughOptions options;
     options.synchronousPaging = true;
     gl::Walkthrough walkthrough(plant.scene, plant.description, display, *context, plant.walls, options);
-    gl::FrameInput in;
+    walls::FrameInput in;
     in.worldFromCave = cavePlacedAt(*head);
-    const gl::FrameResult r = walkthrough.renderFrame(in);
+    const walls::FrameResult r = walkthrough.renderFrame(in);
     // The frame's walls are exactly the selection of the cyclopean eye (the head position):
     // the cell's own walls and the far walls of neighbours drawn as geometry.
     EXPECT_NEAR(glm::distance(r.eyeWorld, *head), 0.0, 1e-9);
@@ -75,7 +76,7 @@ TEST_F(WalkthroughTest, BothEyesAndAllScreensUseTheCyclopeanSelection) {
     ASSERT_EQ(r.walls.size(), all.size());
     for (const Blend& want : all) {
         SCOPED_TRACE(want.wall);
-        const gl::WallState* got = stateOf(r, want.wall);
+        const walls::WallState* got = stateOf(r, want.wall);
         ASSERT_NE(got, nullptr);
         EXPECT_EQ(got->textures, want.textures);
         EXPECT_EQ(got->geometryWeight, want.geometryWeight);
@@ -102,11 +103,11 @@ TEST_F(WalkthroughTest, GoldenFramesInTextureBlendAndGeometryZones) {
         SCOPED_TRACE(c.name);
         const auto eye = findEye(c.want);
         ASSERT_TRUE(eye);
-        gl::FrameInput in;
+        walls::FrameInput in;
         in.worldFromCave = cavePlacedAt(*eye);
         in.readImages = true;
-        const gl::FrameResult r = walkthrough.renderFrame(in);
-        const gl::WallState* ab = stateOf(r, wallAB);
+        const walls::FrameResult r = walkthrough.renderFrame(in);
+        const walls::WallState* ab = stateOf(r, wallAB);
         ASSERT_NE(ab, nullptr);
         EXPECT_FALSE(ab->fallback);
         EXPECT_TRUE(c.want(Blend{wallAB, 0, -1, ab->textures, ab->geometryWeight}));
@@ -122,16 +123,16 @@ TEST_F(WalkthroughTest, LevelsOfDetailKeepTheirToleranceAndTheTriangleBudget) {
     gl::Walkthrough free(plant.scene, plant.description, display, *context, plant.walls, options);
     gl::Walkthrough full(plant.scene, plant.description, display, *context, plant.walls);
     // Eyes along the north aisle, through texture, blend and geometry zones.
-    std::vector<gl::FrameInput> frames;
+    std::vector<walls::FrameInput> frames;
     for (double x = -36.0; x <= 36.0; x += 4.5) {
-        gl::FrameInput in;
+        walls::FrameInput in;
         in.frame = static_cast<long>(frames.size());
         in.worldFromCave = cavePlacedAt({x, 1.7, -10.0});
         frames.push_back(in);
     }
     std::vector<std::size_t> loads;
-    for (const gl::FrameInput& in : frames) {
-        const gl::FrameResult r = free.renderFrame(in), f = full.renderFrame(in);
+    for (const walls::FrameInput& in : frames) {
+        const walls::FrameResult r = free.renderFrame(in), f = full.renderFrame(in);
         EXPECT_EQ(r.lodTolerancePx, 1.0);
         EXPECT_LE(r.lodErrorPx, 1.0);
         EXPECT_FALSE(r.lodOverBudget);
@@ -145,8 +146,8 @@ TEST_F(WalkthroughTest, LevelsOfDetailKeepTheirToleranceAndTheTriangleBudget) {
     options.triangleBudget = loads[loads.size() / 2];  // the median: the heavier half must coarsen
     gl::Walkthrough capped(plant.scene, plant.description, display, *context, plant.walls, options);
     int raised = 0;
-    for (const gl::FrameInput& in : frames) {
-        const gl::FrameResult r = capped.renderFrame(in);
+    for (const walls::FrameInput& in : frames) {
+        const walls::FrameResult r = capped.renderFrame(in);
         EXPECT_FALSE(r.lodOverBudget);
         EXPECT_LE(r.geometryTriangles, options.triangleBudget);
         EXPECT_GE(r.lodTolerancePx, 1.0);
@@ -166,7 +167,7 @@ std::vector<scenes::Image> slowDecoder(const std::filesystem::path& file) {
 }
 
 // Share of the box (red in `full`) that shows the clear colour (magenta) in `frame`.
-double missingShare(const gl::FrameResult& frame, const gl::FrameResult& full) {
+double missingShare(const walls::FrameResult& frame, const walls::FrameResult& full) {
     std::size_t box = 0, missing = 0;
     for (std::size_t i = 0; i < frame.images.size(); ++i)
         for (std::size_t p = 0; p + 3 < frame.images[i].pixels.rgba.size(); p += 4) {
@@ -194,13 +195,13 @@ TEST_F(WalkthroughTest, PagingUnderATinyBudgetNeverLeavesAWallMissing) {
     // frames (further than the pager prefetches), so the new zone's texture is not there yet.
     for (; frames < 96; ++frames) {
         const double x = -9.0 + frames / 16 * 1.5, z = (frames / 8) % 2 ? 3.5 : -3.5;
-        gl::FrameInput in;
+        walls::FrameInput in;
         in.frame = frames;
         in.worldFromCave = cavePlacedAt({x, 1.7, z});
         in.readImages = true;
-        const gl::FrameResult r = walls.renderFrame(in);
-        const gl::FrameResult full = geometry.renderFrame(in);
-        for (const gl::WallState& s : r.walls) {
+        const walls::FrameResult r = walls.renderFrame(in);
+        const walls::FrameResult full = geometry.renderFrame(in);
+        for (const walls::WallState& s : r.walls) {
             fallbacks += s.fallback ? 1 : 0;
             previous += s.fallback && !s.textures.empty() ? 1 : 0;  // kept the previous texture
         }
@@ -216,60 +217,6 @@ TEST_F(WalkthroughTest, PagingUnderATinyBudgetNeverLeavesAWallMissing) {
     EXPECT_LT(worstMissing, 0.1);
     // The slow decoder forced fallbacks: at least the first frame has nothing resident.
     EXPECT_GT(fallbacks, 0);
-}
-
-TEST_F(WalkthroughTest, AWallWaitingForItsTextureKeepsThePreviousOneWhileItIsWithinAlpha) {
-    const SmallPlant& scene = twoCells();
-    const int wall = wallIndex(scene.walls, "A|B");
-    const display::Display display = testDisplay(48);
-    gl::WalkthroughOptions options;
-    options.render.clearColor = {1.0f, 0.0f, 1.0f, 1.0f};
-    options.decoder = slowDecoder;
-    gl::Walkthrough walls(scene.scene, scene.description, display, *context, scene.walls, options);
-    gl::Walkthrough geometry(scene.scene, scene.description, display, *context, std::nullopt, options);
-    walls::FrameSelector selector(scene.walls.plan, scene.walls.table, scene.description);
-    // `first` in a texture zone; `border` the first point along the wall where the next
-    // texture blends in (the first texture still drawn, so proven within alpha there); `far`
-    // 7 m along the wall, where the first texture is far beyond alpha.
-    // `first` sits at the low end of its zone, so the pager's 1.5 m look-ahead does not reach
-    // the next zone up.
-    glm::dvec3 first(-9.0, 1.7, -3.5);
-    const glm::dvec3 far(-9.0, 1.7, 3.5);
-    const auto firstTextures = blendOf(selector.select(first), wall).textures;
-    ASSERT_EQ(firstTextures.size(), 1u);
-    while (blendOf(selector.select(first - glm::dvec3(0, 0, 0.01)), wall).textures == firstTextures) first.z -= 0.01;
-    glm::dvec3 border = first;
-    while (blendOf(selector.select(border), wall).textures.size() < 2 && border.z < 0.0) border.z += 0.01;
-    ASSERT_LT(border.z, 0.0) << "no blend strip next to the first zone";
-    ASSERT_GT(border.z - first.z, 1.6) << "the zone is too narrow for this test";
-    auto frame = [&](glm::dvec3 eye, long n) {
-        gl::FrameInput in;
-        in.frame = n;
-        in.worldFromCave = cavePlacedAt(eye);
-        in.readImages = true;
-        const gl::FrameResult r = walls.renderFrame(in);
-        EXPECT_LT(missingShare(r, geometry.renderFrame(in)), 0.1) << "frame " << n;
-        EXPECT_NE(stateOf(r, wall), nullptr);
-        return stateOf(r, wall) ? *stateOf(r, wall) : gl::WallState{};
-    };
-    // Nothing resident yet: the wall is drawn as geometry.
-    const gl::WallState cold = frame(first, 0);
-    EXPECT_TRUE(cold.fallback);
-    EXPECT_TRUE(cold.textures.empty());
-    EXPECT_EQ(cold.geometryWeight, 1.0);
-    walls.waitForTextures();
-    const gl::WallState warm = frame(first, 1);
-    EXPECT_FALSE(warm.fallback);
-    EXPECT_EQ(warm.textures, firstTextures);
-    // The next texture is still decoding (40 ms): the wall keeps the one it drew.
-    const gl::WallState kept = frame(border, 2);
-    EXPECT_TRUE(kept.fallback);
-    EXPECT_EQ(kept.textures, firstTextures);
-    // After a jump the old texture would be wrong by far more than alpha: geometry instead.
-    const gl::WallState jumped = frame(far, 3);
-    EXPECT_TRUE(jumped.fallback);
-    EXPECT_TRUE(jumped.textures.empty());
-    EXPECT_EQ(jumped.geometryWeight, 1.0);
 }
 
 }  // namespace

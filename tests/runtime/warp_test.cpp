@@ -66,16 +66,15 @@ const SmallPlant& stripes(double alphaDeg) {
     }
     p->sceneFile = folder / "scene.json";
     p->scene = scenes::loadSceneFile(p->sceneFile, &p->description);
-    walls::BakeRequest request;
+    walls::PlanOptions plan;
+    plan.alphaDeg = alphaDeg;
+    plan.minZoneSize = 2.0;
+    plan.pixelsPerDegree = 4.0;
+    p->walls = walls::prepareWalls(p->scene, p->description, plan);
+    gl::BakeRequest request;
     request.scene = p->sceneFile;
-    request.plan.alphaDeg = alphaDeg;
-    request.plan.minZoneSize = 2.0;
-    request.plan.pixelsPerDegree = 4.0;
     request.cache = out / "cache";
-    const walls::BakeResult result = walls::bakeScene(request);
-    p->walls.plan = walls::planZones(p->description, request.plan);
-    p->walls.table = walls::computeVisibility(p->description);
-    walls::assignDepthBehind(p->walls.plan, p->scene, p->description, p->walls.table);
+    const gl::BakeResult result = gl::bakeWalls(p->scene, p->description, p->walls, request);
     p->walls.folder = result.folder;
     p->walls.manifest = result.manifest;
     return *p;
@@ -111,7 +110,7 @@ protected:
     double rowOf(glm::dvec3 eye, glm::dvec3 p) const {
         for (const display::ScreenView& v : display.views({glm::dvec3(0, 1.7, 0)}))
             if (v.screen == frontScreen()) {
-                const glm::dvec4 c = gl::clipFromWorldOf(v, glm::inverse(cavePlacedAt(eye))) * glm::dvec4(p, 1.0);
+                const glm::dvec4 c = walls::clipFromWorldOf(v, glm::inverse(cavePlacedAt(eye))) * glm::dvec4(p, 1.0);
                 return (1.0 - c.y / c.w) * 0.5 * display.screens()[v.screen].resolution.y;
             }
         return std::nan("");
@@ -132,20 +131,20 @@ protected:
                 }
         return std::nullopt;
     }
-    gl::FrameResult render(const SmallPlant& s, glm::dvec3 eye, gl::Transition transition) {
+    walls::FrameResult render(const SmallPlant& s, glm::dvec3 eye, walls::Transition transition) {
         return render(s, s.walls, eye, transition);
     }
-    gl::FrameResult render(const SmallPlant& s, const gl::WallSetup& walls, glm::dvec3 eye, gl::Transition transition) {
+    walls::FrameResult render(const SmallPlant& s, const walls::WallSetup& walls, glm::dvec3 eye, walls::Transition transition) {
         gl::WalkthroughOptions options;
         options.synchronousPaging = true;
         options.transition = transition;
         gl::Walkthrough walkthrough(s.scene, s.description, display, *context, walls, options);
-        gl::FrameInput in;
+        walls::FrameInput in;
         in.worldFromCave = cavePlacedAt(eye);
         in.readImages = true;
         return walkthrough.renderFrame(in);
     }
-    const scenes::Image& front(const gl::FrameResult& r) const {
+    const scenes::Image& front(const walls::FrameResult& r) const {
         for (const gl::ScreenImage& i : r.images)
             if (i.screen == frontScreen()) return i.pixels;
         return r.images.front().pixels;
@@ -171,8 +170,8 @@ TEST_F(WarpTest, StructureCrossingTheWallLinesUpWithTheTextureWithinOnePixel) {
     ASSERT_TRUE(found) << "no eye 0.5 m beside a sampling point with one texture on A|B";
     const auto [eye, samplingPoint] = *found;
     SCOPED_TRACE("eye " + std::to_string(eye.x) + " " + std::to_string(eye.z));
-    const gl::FrameResult warped = render(s, eye, gl::Transition::Warp);
-    const gl::FrameResult blended = render(s, eye, gl::Transition::Blend);
+    const walls::FrameResult warped = render(s, eye, walls::Transition::Warp);
+    const walls::FrameResult blended = render(s, eye, walls::Transition::Blend);
     EXPECT_EQ(warped.warpFallbacks, 0);
     std::cout << "eye " << eye.x << " " << eye.y << " " << eye.z << ", sampling point " << samplingPoint.x << " "
               << samplingPoint.y << " " << samplingPoint.z << "\n";
@@ -214,22 +213,22 @@ TEST_F(WarpTest, AnEyeAtTheWallPlaneFallsBackToGeometryWithoutNaNOrBlackPixels) 
     // Even at alpha 90° the plan keeps a 0.5 m geometry zone in front of A|B. Without it (every
     // side's geometry zone removed), the texture zone reaches the wall plane, as for a wall seen
     // edge-on from afar, and only the guard stands between the eye and a singular warp.
-    gl::WallSetup walls = stripes90.walls;
+    walls::WallSetup walls = stripes90.walls;
     for (walls::WallSide& side : walls.plan.sides) side.hasGeometry = false;
     struct Case {
         const char* name;
         double distance;              // eye in front of the wall plane, metres
-        gl::Transition transition;
+        walls::Transition transition;
         int fallbacks;
     };
     // The warp's condition grows like 3 m / distance (display/warp.h): about 3e4 at 0.1 mm, over
     // kMaxWarpCondition = 1e4; about 60 at 5 cm, well under it. Blend never warps.
-    const Case cases[] = {{"warp at 0.1 mm", 1e-4, gl::Transition::Warp, 1},
-                          {"warp at 5 cm", 0.05, gl::Transition::Warp, 0},
-                          {"blend at 0.1 mm", 1e-4, gl::Transition::Blend, 0}};
+    const Case cases[] = {{"warp at 0.1 mm", 1e-4, walls::Transition::Warp, 1},
+                          {"warp at 5 cm", 0.05, walls::Transition::Warp, 0},
+                          {"blend at 0.1 mm", 1e-4, walls::Transition::Blend, 0}};
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
-        const gl::FrameResult r = render(stripes90, walls, {-c.distance, 1.6, kStripeZ}, c.transition);
+        const walls::FrameResult r = render(stripes90, walls, {-c.distance, 1.6, kStripeZ}, c.transition);
         EXPECT_EQ(r.warpFallbacks, c.fallbacks);
         ASSERT_EQ(r.walls.size(), 1u);
         // The fallback draws the cell behind as geometry instead of the texture.
@@ -272,27 +271,27 @@ TEST_F(WarpTest, WarpMorphMovesTheViewpointFromTheSamplingPointToTheEyeAndEndsEx
     const glm::dvec3 textured(-3.0, 1.6, 1.5), geometry(-1.5, 1.6, 1.5);
     gl::WalkthroughOptions options;
     options.synchronousPaging = true;
-    options.transition = gl::Transition::Warp;
+    options.transition = walls::Transition::Warp;
     options.morphSeconds = 0.5;
     gl::Walkthrough walkthrough(s.scene, s.description, display, *context, s.walls, options);
     auto frame = [&](double t, glm::dvec3 eye) {
-        gl::FrameInput in;
+        walls::FrameInput in;
         in.time = t;
         in.worldFromCave = cavePlacedAt(eye);
         in.readImages = true;
         return walkthrough.renderFrame(in);
     };
-    const gl::FrameResult before = frame(0.0, textured);
+    const walls::FrameResult before = frame(0.0, textured);
     ASSERT_EQ(before.walls.size(), 1u);
     ASSERT_EQ(before.walls[0].textures.size(), 1u);
-    const gl::FrameResult start = frame(0.1, geometry), middle = frame(0.35, geometry), end = frame(0.7, geometry);
-    for (const gl::FrameResult* r : {&start, &middle, &end}) {
+    const walls::FrameResult start = frame(0.1, geometry), middle = frame(0.35, geometry), end = frame(0.7, geometry);
+    for (const walls::FrameResult* r : {&start, &middle, &end}) {
         EXPECT_EQ(r->warpFallbacks, 0);
         EXPECT_TRUE(r->walls[0].textures.empty());
         EXPECT_EQ(r->walls[0].geometryWeight, 1.0);
     }
     // After morphSeconds the wall is plain geometry: exactly what Blend draws in a geometry zone.
-    const gl::FrameResult reference = render(s, geometry, gl::Transition::Blend);
+    const walls::FrameResult reference = render(s, geometry, walls::Transition::Blend);
     EXPECT_EQ(front(end).rgba, front(reference).rgba);
     // The red stripe (behind the wall) moves from where the sampling point sees it to where the
     // eye does, and is in between halfway (s = 0.5).
@@ -303,7 +302,7 @@ TEST_F(WarpTest, WarpMorphMovesTheViewpointFromTheSamplingPointToTheEyeAndEndsEx
     EXPECT_GT(std::min(c1 - std::min(c0, c2), std::max(c0, c2) - c1), 1.0);
 
     // Back into the texture zone: a morph from the eye to the sampling point, then the texture.
-    const gl::FrameResult back = frame(1.0, textured), after = frame(1.6, textured);
+    const walls::FrameResult back = frame(1.0, textured), after = frame(1.6, textured);
     EXPECT_TRUE(back.walls[0].textures.empty());
     EXPECT_EQ(after.walls[0].textures, before.walls[0].textures);
 }

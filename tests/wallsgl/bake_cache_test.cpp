@@ -10,7 +10,7 @@
 
 #include <fstream>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 namespace {
 
 using ::testing::HasSubstr;
@@ -24,7 +24,7 @@ protected:
         const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
         root = cavewall::testing::testOutputFolder("bake_cache") / info->name();
         std::filesystem::remove_all(root);
-        request.scene = walls::testing::writeBakeTestScene(root / "scene");
+        request.scene = gl::testing::writeBakeTestScene(root / "scene");
         request.cache = root / "cache";
         request.settings.maxResolution = 32;  // small textures: the cache logic does not depend on size
         request.context = context.get();
@@ -90,13 +90,13 @@ TEST_F(BakeCacheTest, DamagedFileIsReBakedAlone) {
     int victim = 0;
     for (const Damage& d : damages) {
         SCOPED_TRACE(d.name);
-        const BakedTexture& t = first.manifest.textures[victim++ % n];
+        const walls::BakedTexture& t = first.manifest.textures[victim++ % n];
         d.apply(first.folder / t.file);
-        ASSERT_FALSE(textureFileValid(first.folder, t));
+        ASSERT_FALSE(walls::textureFileValid(first.folder, t));
         const BakeResult again = bakeScene(request);
         EXPECT_EQ(again.baked, 1);  // exactly the damaged one
         EXPECT_EQ(again.reused, n - 1);
-        EXPECT_TRUE(textureFileValid(again.folder, again.manifest.textures[t.id]));
+        EXPECT_TRUE(walls::textureFileValid(again.folder, again.manifest.textures[t.id]));
         // Rendering is deterministic, so the re-baked file is the original one again.
         EXPECT_EQ(manifestToJson(again.manifest), manifestToJson(first.manifest));
     }
@@ -117,19 +117,19 @@ TEST_F(BakeCacheTest, ChangedAlphaGetsANewKey) {
 TEST_F(BakeCacheTest, SceneChangeReBakesOnlyTheTexturesItTouches) {
     const BakeResult first = bakeScene(request);
     int front = 0;  // textures seen from the front cell: they show the back cell's boxes
-    for (const BakedTexture& t : first.manifest.textures) front += t.cell == 0;
+    for (const walls::BakedTexture& t : first.manifest.textures) front += t.cell == 0;
     ASSERT_GT(front, 0);
     ASSERT_LT(front, static_cast<int>(first.manifest.textures.size()));
     // Move the red box (back cell): side-0 textures change, side-1 textures (the yellow box in
     // the front cell, seen from the back) do not, and are taken over from the first bake.
-    walls::testing::writeBakeTestScene(root / "scene", 0.5);
+    gl::testing::writeBakeTestScene(root / "scene", 0.5);
     const BakeResult second = bakeScene(request);
     EXPECT_NE(second.folder, first.folder);
     EXPECT_EQ(second.baked, front);
     EXPECT_EQ(second.linked, static_cast<int>(first.manifest.textures.size()) - front);
-    for (const BakedTexture& t : second.manifest.textures) {
-        EXPECT_TRUE(textureFileValid(second.folder, t)) << t.file;
-        const BakedTexture& old = first.manifest.textures[t.id];
+    for (const walls::BakedTexture& t : second.manifest.textures) {
+        EXPECT_TRUE(walls::textureFileValid(second.folder, t)) << t.file;
+        const walls::BakedTexture& old = first.manifest.textures[t.id];
         EXPECT_EQ(t.file == old.file, t.cell == 1) << t.file;  // same texture key exactly when untouched
     }
 }
@@ -181,9 +181,9 @@ TEST(BakeFileNames, TextureKeyRoundTripsThroughTheFileName) {
     EXPECT_EQ(textureKeyOf("tex_0007_0123456789abcdef.tx"), 0x0123456789abcdefull);
     EXPECT_EQ(textureKeyOf("tex_12345_0123456789abcdef.tx"), 0x0123456789abcdefull);  // ids beyond 4 digits
     EXPECT_EQ(textureKeyOf("manifest.json"), std::nullopt);
-    EXPECT_EQ(textureKeyOf("tex_0007_0123456789ABCDEF.tx"), std::nullopt);  // hex64 writes lower case
+    EXPECT_EQ(textureKeyOf("tex_0007_0123456789ABCDEF.tx"), std::nullopt);  // walls::hex64 writes lower case
     EXPECT_EQ(textureKeyOf(".tex_0007_0123456789abcdef.tmp-1-0.tx"), std::nullopt);
 }
 
 }  // namespace
-}  // namespace cavewall::walls
+}  // namespace cavewall::gl

@@ -22,7 +22,7 @@
 
 #include <limits>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 namespace {
 
 int objectNamed(const scenes::Scene& scene, const std::string& name) {
@@ -46,7 +46,7 @@ constexpr glm::vec4 kClear{0.18f, 0.18f, 0.18f, 1.0f};  // linear grey, opaque
 TEST_F(BakeGoldenTest, BakedTextureMatchesGeometryFromItsSamplingPoint) {
     const std::filesystem::path root = folder("golden");
     BakeRequest request;
-    request.scene = walls::testing::writeBakeTestScene(root / "scene");
+    request.scene = gl::testing::writeBakeTestScene(root / "scene");
     request.cache = root / "cache";
     request.settings.maxResolution = 128;
     request.context = context.get();
@@ -55,7 +55,7 @@ TEST_F(BakeGoldenTest, BakedTextureMatchesGeometryFromItsSamplingPoint) {
 
     scenes::SceneDescription description;
     const scenes::Scene scene = scenes::loadSceneFile(request.scene, &description);
-    const Plan plan = planZones(description, request.plan);
+    const walls::Plan plan = walls::planZones(description, request.plan);
     // What each side shows, by construction (bake_test_scene.h): the back cell's boxes from the
     // front (side 0), the yellow box from the back (side 1).
     const std::vector<int> shown[2] = {
@@ -64,12 +64,12 @@ TEST_F(BakeGoldenTest, BakedTextureMatchesGeometryFromItsSamplingPoint) {
     gl::SceneRenderer renderer(scene, gl::RenderSettings{kClear, BakeSettings{}.ambient});
     WallQuadDrawer drawer;
     int checked[2] = {0, 0};
-    for (const BakedTexture& baked : result.manifest.textures) {
+    for (const walls::BakedTexture& baked : result.manifest.textures) {
         const int side = description.walls[baked.wall].cells[0] == baked.cell ? 0 : 1;
         if (checked[side] >= 2) continue;  // two textures per side keep the test short
         ++checked[side];
         SCOPED_TRACE("texture " + std::to_string(baked.id) + " side " + std::to_string(side));
-        const display::ScreenQuad quad = quadSeenFrom(plan.walls[baked.wall].quad, side);
+        const display::ScreenQuad quad = walls::quadSeenFrom(plan.walls[baked.wall].quad, side);
         const display::OffAxisFrustum frustum =
             display::offAxisFrustum(quad, baked.samplingPoint, {0.05, std::numeric_limits<double>::infinity()});
         ASSERT_EQ(frustum.guard, display::EyeGuard::None);  // the sampling point is in front of its side
@@ -81,7 +81,7 @@ TEST_F(BakeGoldenTest, BakedTextureMatchesGeometryFromItsSamplingPoint) {
         renderer.renderFrustum(frustum, glm::dmat4(1.0), view, filter);
         const scenes::Image geometry = target.read("geometry");
 
-        const std::vector<scenes::Image> levels = scenes::readMipLevels(request.cache / hex64(result.key) / baked.file);
+        const std::vector<scenes::Image> levels = scenes::readMipLevels(request.cache / walls::hex64(result.key) / baked.file);
         ASSERT_EQ(levels[0].width, baked.resolution.x);
         const gl::GlObject texture = uploadWallTexture(levels);
         target.bindAndClear(kClear);
@@ -110,4 +110,4 @@ TEST_F(BakeGoldenTest, BakedTextureMatchesGeometryFromItsSamplingPoint) {
 }
 
 }  // namespace
-}  // namespace cavewall::walls
+}  // namespace cavewall::gl

@@ -15,7 +15,7 @@
 #include <filesystem>
 #include <string>
 
-namespace cavewall::walls::testing {
+namespace cavewall::gl::testing {
 
 struct BakeTestObjects {
     int floor, red, green, blue, yellow, magenta;  // Scene::objects indices
@@ -66,4 +66,4 @@ inline std::filesystem::path writeBakeTestScene(const std::filesystem::path& dir
     return scenes::writeGenerated(g, dir);
 }
 
-}  // namespace cavewall::walls::testing
+}  // namespace cavewall::gl::testing

@@ -11,7 +11,7 @@
 #include <cstdlib>
 #include <random>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 namespace {
 
 using ::testing::HasSubstr;
@@ -127,4 +127,4 @@ TEST(TextureMips, WriteRejectsBadInput) {
 }
 
 }  // namespace
-}  // namespace cavewall::walls
+}  // namespace cavewall::gl

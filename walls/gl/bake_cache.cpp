@@ -6,7 +6,7 @@
 #include <system_error>
 #include <unistd.h>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 
 std::optional<std::uint64_t> textureKeyOf(const std::string& name) {
     // tex_NNNN_<16 hex>.tx (the id may have more than 4 digits)
@@ -23,24 +23,24 @@ CacheIndex indexCache(const std::filesystem::path& cache, const std::filesystem:
     std::error_code ec;
     for (const auto& dir : std::filesystem::directory_iterator(cache, ec)) {
         if (!dir.is_directory(ec) || dir.path() == skip) continue;
-        BakeManifest manifest;
+        walls::BakeManifest manifest;
         try {
-            manifest = readManifest(dir.path());
+            manifest = walls::readManifest(dir.path());
         } catch (const Error&) {
             continue;
         }
-        for (const BakedTexture& t : manifest.textures)
+        for (const walls::BakedTexture& t : manifest.textures)
             if (const auto key = textureKeyOf(t.file)) index.emplace(*key, CachedTexture{dir.path(), t});
     }
     return index;
 }
 
-std::optional<BakedTexture> linkCachedTexture(const CacheIndex& index, const std::filesystem::path& folder,
-                                              const BakedTexture& wanted) {
+std::optional<walls::BakedTexture> linkCachedTexture(const CacheIndex& index, const std::filesystem::path& folder,
+                                              const walls::BakedTexture& wanted) {
     const auto key = textureKeyOf(wanted.file);
     if (!key) return std::nullopt;
     const auto it = index.find(*key);
-    if (it == index.end() || !textureFileValid(it->second.folder, it->second.entry)) return std::nullopt;
+    if (it == index.end() || !walls::textureFileValid(it->second.folder, it->second.entry)) return std::nullopt;
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
     const std::filesystem::path source = it->second.folder / it->second.entry.file;
@@ -54,17 +54,17 @@ std::optional<BakedTexture> linkCachedTexture(const CacheIndex& index, const std
         std::filesystem::remove(tmp, ec);
         return std::nullopt;
     }
-    BakedTexture got = wanted;
+    walls::BakedTexture got = wanted;
     got.bytes = it->second.entry.bytes;
     got.hash = it->second.entry.hash;
     // The source may have changed between the check and the link: check the copy itself.
-    if (!textureFileValid(folder, got)) return std::nullopt;
+    if (!walls::textureFileValid(folder, got)) return std::nullopt;
     return got;
 }
 
-int removeUnlistedTextures(const std::filesystem::path& folder, const BakeManifest& manifest) {
+int removeUnlistedTextures(const std::filesystem::path& folder, const walls::BakeManifest& manifest) {
     std::set<std::string> listed;
-    for (const BakedTexture& t : manifest.textures) listed.insert(t.file);
+    for (const walls::BakedTexture& t : manifest.textures) listed.insert(t.file);
     int removed = 0;
     std::error_code ec;
     for (const auto& file : std::filesystem::directory_iterator(folder, ec)) {
@@ -75,4 +75,4 @@ int removeUnlistedTextures(const std::filesystem::path& folder, const BakeManife
     return removed;
 }
 
-}  // namespace cavewall::walls
+}  // namespace cavewall::gl

@@ -10,11 +10,11 @@
 #include <map>
 #include <optional>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 
 struct CachedTexture {
     std::filesystem::path folder;
-    BakedTexture entry;
+    walls::BakedTexture entry;
 };
 
 // Texture key -> a texture listed in another folder's manifest.
@@ -30,11 +30,11 @@ CacheIndex indexCache(const std::filesystem::path& cache, const std::filesystem:
 // When `index` holds a texture with the key in `wanted.file` whose file is valid, links it (hard
 // link, else copy) atomically into `folder` under `wanted.file`, checks it again and returns
 // `wanted` with its bytes and hash; nullopt otherwise.
-std::optional<BakedTexture> linkCachedTexture(const CacheIndex& index, const std::filesystem::path& folder,
-                                              const BakedTexture& wanted);
+std::optional<walls::BakedTexture> linkCachedTexture(const CacheIndex& index, const std::filesystem::path& folder,
+                                              const walls::BakedTexture& wanted);
 
 // Removes texture files (textureFileName pattern) in `folder` that `manifest` does not list.
 // Returns how many were removed.
-int removeUnlistedTextures(const std::filesystem::path& folder, const BakeManifest& manifest);
+int removeUnlistedTextures(const std::filesystem::path& folder, const walls::BakeManifest& manifest);
 
-}  // namespace cavewall::walls
+}  // namespace cavewall::gl

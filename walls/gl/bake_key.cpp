@@ -9,10 +9,10 @@
 #include <fstream>
 #include <iterator>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 
 KeyHasher& KeyHasher::bytes(const void* data, std::size_t size) {
-    _h = fnv1a(std::string_view(static_cast<const char*>(data), size), _h);
+    _h = walls::fnv1a(std::string_view(static_cast<const char*>(data), size), _h);
     return *this;
 }
 
@@ -25,7 +25,7 @@ KeyHasher& KeyHasher::file(const std::filesystem::path& file) {
     text(file.filename().string());
     std::error_code ec;
     if (!std::filesystem::is_regular_file(file, ec)) return text("missing");
-    return integer(static_cast<std::int64_t>(hashFile(file)));
+    return integer(static_cast<std::int64_t>(walls::hashFile(file)));
 }
 
 namespace {
@@ -86,7 +86,7 @@ std::uint64_t sceneFilesKey(const std::filesystem::path& scenePath, const scenes
     return h.value();
 }
 
-std::uint64_t planOptionsKey(const PlanOptions& o) {
+std::uint64_t planOptionsKey(const walls::PlanOptions& o) {
     KeyHasher h;
     h.text("cavewall plan options v1");
     h.number(o.alphaDeg).number(o.blendWidth).number(o.minZoneSize).number(o.pixelsPerDegree).integer(o.maxResolution);
@@ -135,10 +135,4 @@ std::vector<std::uint64_t> objectKeys(const scenes::Scene& scene) {
     return keys;
 }
 
-display::ScreenQuad quadSeenFrom(const display::ScreenQuad& wall, int side) {
-    if (side == 0) return wall;
-    const glm::dvec3 up = wall.upperLeft - wall.lowerLeft;
-    return {wall.lowerRight, wall.lowerLeft, wall.lowerRight + up};
-}
-
-}  // namespace cavewall::walls
+}  // namespace cavewall::gl

@@ -21,7 +21,7 @@
 #include <string_view>
 #include <vector>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 
 // Incremental FNV-1a 64 over typed values.
 class KeyHasher {
@@ -51,14 +51,10 @@ std::vector<std::filesystem::path> externalGltfFiles(const std::filesystem::path
 std::uint64_t sceneFilesKey(const std::filesystem::path& scenePath, const scenes::SceneDescription& description);
 
 // Key of every plan option (all of them change zones, sampling points or resolutions).
-std::uint64_t planOptionsKey(const PlanOptions& options);
+std::uint64_t planOptionsKey(const walls::PlanOptions& options);
 
 // Per-object content keys: mesh data, material, base-colour image bytes, placement, winding.
 // Computed once per scene; meshes and images shared by many objects are hashed once.
 std::vector<std::uint64_t> objectKeys(const scenes::Scene& scene);
 
-// The wall quad as seen from `side` (0: front, 1: back): for side 1 the quad is mirrored so its
-// normal points to the back side and the image is not mirrored for a viewer there.
-display::ScreenQuad quadSeenFrom(const display::ScreenQuad& wall, int side);
-
-}  // namespace cavewall::walls
+}  // namespace cavewall::gl

@@ -4,7 +4,7 @@
 
 #include <utility>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 
 BakeWriter::BakeWriter(std::filesystem::path folder, int jobs, MipFileOptions options)
     : _folder(std::move(folder)), _options(std::move(options)), _maxQueued(std::size_t(2 * std::max(1, jobs))) {
@@ -20,7 +20,7 @@ BakeWriter::~BakeWriter() {
     for (std::thread& t : _threads) t.join();
 }
 
-void BakeWriter::submit(BakedTexture entry, scenes::Image image) {
+void BakeWriter::submit(walls::BakedTexture entry, scenes::Image image) {
     std::unique_lock lock(_mutex);
     _changed.wait(lock, [&] { return _queue.size() < _maxQueued || _error; });
     if (_error) std::rethrow_exception(_error);
@@ -28,7 +28,7 @@ void BakeWriter::submit(BakedTexture entry, scenes::Image image) {
     _changed.notify_all();
 }
 
-std::vector<BakedTexture> BakeWriter::takeDone(bool wait) {
+std::vector<walls::BakedTexture> BakeWriter::takeDone(bool wait) {
     std::unique_lock lock(_mutex);
     if (wait) _changed.wait(lock, [&] { return !_done.empty() || _error || (_queue.empty() && _busy == 0); });
     if (_error) std::rethrow_exception(_error);
@@ -59,7 +59,7 @@ void BakeWriter::worker() {
             std::error_code ec;
             job.entry.bytes = std::filesystem::file_size(file, ec);
             if (ec) throw Error(file.string() + ": cannot read the size of the written file (" + ec.message() + ")");
-            job.entry.hash = hashFile(file);
+            job.entry.hash = walls::hashFile(file);
         } catch (...) {
             error = std::current_exception();
         }
@@ -73,4 +73,4 @@ void BakeWriter::worker() {
     }
 }
 
-}  // namespace cavewall::walls
+}  // namespace cavewall::gl

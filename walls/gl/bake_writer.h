@@ -15,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 
 class BakeWriter {
 public:
@@ -29,15 +29,15 @@ public:
 
     // Queues `image` (straight alpha, sRGB, as read from the render target) to be written as
     // <folder>/<entry.file>; `entry` comes back with bytes and hash filled in.
-    void submit(BakedTexture entry, scenes::Image image);
+    void submit(walls::BakedTexture entry, scenes::Image image);
     // Entries finished since the last call; `wait`: block until at least one is (or none is
     // pending). Rethrows the first worker error (cavewall::Error naming the file).
-    std::vector<BakedTexture> takeDone(bool wait);
+    std::vector<walls::BakedTexture> takeDone(bool wait);
     int pending() const;
 
 private:
     struct Job {
-        BakedTexture entry;
+        walls::BakedTexture entry;
         scenes::Image image;
     };
     void worker();
@@ -48,11 +48,11 @@ private:
     mutable std::mutex _mutex;
     std::condition_variable _changed;
     std::deque<Job> _queue;
-    std::vector<BakedTexture> _done;
+    std::vector<walls::BakedTexture> _done;
     int _busy = 0;
     bool _stop = false;
     std::exception_ptr _error;
     std::vector<std::thread> _threads;
 };
 
-}  // namespace cavewall::walls
+}  // namespace cavewall::gl

@@ -8,6 +8,7 @@
 #include "walls/gl/bake_writer.h"
 #include "walls/gl/wall_renderer.h"
 #include "walls/visibility.h"
+#include "walls/wall_setup.h"
 
 #include <algorithm>
 #include <chrono>
@@ -17,7 +18,7 @@
 #include <map>
 #include <optional>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 
 void validateBakeSettings(const BakeSettings& s) {
     auto fail = [](const char* name, const std::string& expected, const std::string& got) {
@@ -47,7 +48,7 @@ std::filesystem::path defaultCacheFolder() {
 std::string textureFileName(int id, std::uint64_t textureKey) {
     char s[16];
     std::snprintf(s, sizeof s, "tex_%04d_", id);
-    return s + hex64(textureKey) + ".tx";
+    return s + walls::hex64(textureKey) + ".tx";
 }
 
 namespace {
@@ -67,54 +68,36 @@ void ensureFolder(const std::filesystem::path& folder) {
     if (ec) throw Error(folder.string() + ": cannot create the bake folder (" + ec.message() + ")");
 }
 
-int sideOf(const Plan& plan, const Texture& t) {
-    for (const WallSide& s : plan.sides)
+int sideOf(const walls::Plan& plan, const walls::Texture& t) {
+    for (const walls::WallSide& s : plan.sides)
         if (s.cell == t.cell && s.wall == t.wall) return s.side;
     return plan.walls[t.wall].cells[0] == t.cell ? 0 : 1;
 }
 
-scenes::SceneDescription loadDescription(const std::filesystem::path& path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec) || path.extension() == ".json") return scenes::loadSceneDescription(path);
-    scenes::SceneDescription description;
-    scenes::loadSceneFile(path, &description);  // a bare glTF: no walls, so nothing to bake
-    return description;
-}
-
 // One texture of the plan and what baking it needs.
 struct Item {
-    const Texture* texture = nullptr;
+    const walls::Texture* texture = nullptr;
     int side = 0;
     glm::ivec2 resolution{0};
-    BakedTexture entry;           // id, cell, wall, samplingPoint, resolution (+ file once keyed)
+    walls::BakedTexture entry;           // id, cell, wall, samplingPoint, resolution (+ file once keyed)
 };
 
-// The scene's geometry and what each wall side shows; loaded only when something is rendered.
-struct Loaded {
-    scenes::Scene scene;
-    std::map<std::pair<int, int>, WallContents> contents;   // by (wall, side)
-    std::map<std::pair<int, int>, std::uint64_t> keys;      // content key by (wall, side)
-};
-
-Loaded loadContents(const scenes::SceneDescription& description, const Plan& plan, std::vector<std::string>& warnings) {
-    Loaded l{scenes::loadScene(description), {}, {}};
-    warnings.insert(warnings.end(), l.scene.warnings.begin(), l.scene.warnings.end());
-    const VisibilityTable table = computeVisibility(description);
-    const std::vector<std::uint64_t> objects = objectKeys(l.scene);
-    for (const WallSide& s : plan.sides) {
+// The content key of every wall side: the keys of the objects its textures show.
+std::map<std::pair<int, int>, std::uint64_t> contentKeys(const scenes::Scene& scene, const walls::WallSetup& walls) {
+    const std::vector<std::uint64_t> objects = objectKeys(scene);
+    std::map<std::pair<int, int>, std::uint64_t> keys;
+    for (const walls::WallSide& s : walls.plan.sides) {
         const auto at = std::make_pair(s.wall, s.side);
-        if (l.contents.count(at)) continue;
-        WallContents c = wallContents(l.scene, description, table, s.wall, s.side);
+        if (keys.count(at)) continue;
         KeyHasher h;
-        for (int i : c.baked) h.integer(static_cast<std::int64_t>(objects[i]));
-        l.keys[at] = h.value();
-        l.contents[at] = std::move(c);
+        for (int i : walls.contents.at(at).baked) h.integer(static_cast<std::int64_t>(objects[i]));
+        keys[at] = h.value();
     }
-    return l;
+    return keys;
 }
 
-std::uint64_t textureKey(const Item& item, const Plan& plan, std::uint64_t contentKey, std::uint64_t settings) {
-    const display::ScreenQuad q = quadSeenFrom(plan.walls[item.texture->wall].quad, item.side);
+std::uint64_t textureKey(const Item& item, const walls::Plan& plan, std::uint64_t contentKey, std::uint64_t settings) {
+    const display::ScreenQuad q = walls::quadSeenFrom(plan.walls[item.texture->wall].quad, item.side);
     KeyHasher h;
     h.text("cavewall texture v1").integer(static_cast<std::int64_t>(settings)).integer(static_cast<std::int64_t>(contentKey));
     h.vec(q.lowerLeft).vec(q.lowerRight).vec(q.upperLeft).vec(item.texture->samplingPoint);
@@ -123,81 +106,84 @@ std::uint64_t textureKey(const Item& item, const Plan& plan, std::uint64_t conte
 
 class Bake {
 public:
-    explicit Bake(const BakeRequest& request) : _request(request), _start(Clock::now()) {}
+    Bake(const scenes::Scene& scene, const scenes::SceneDescription& description, const walls::WallSetup& walls,
+         const BakeRequest& request)
+        : _request(request), _start(Clock::now()), _scene(scene), _description(description), _walls(walls),
+          _plan(walls.plan) {}
     BakeResult run();
 
 private:
-    void planAndKey();
+    void key();
     void reuseListed();
-    void keyPending(const Loaded& loaded, std::uint64_t settings);
+    void keyPending(std::uint64_t settings);
     void linkFromCache();
-    void render(const Loaded& loaded);
-    void finish(const BakedTexture& entry, bool baked, std::uint64_t bytes);
+    void render();
+    void finish(const walls::BakedTexture& entry, bool baked, std::uint64_t bytes);
     void writeManifestNow(bool force);
     void report();
 
     const BakeRequest& _request;
     Clock::time_point _start, _lastManifest{};
-    scenes::SceneDescription _description;
-    Plan _plan;
+    const scenes::Scene& _scene;
+    const scenes::SceneDescription& _description;
+    const walls::WallSetup& _walls;
+    const walls::Plan& _plan;
     BakeResult _result;
-    std::map<int, BakedTexture> _done;   // finished entries by id
+    std::map<int, walls::BakedTexture> _done;   // finished entries by id
     std::vector<Item> _pending;
-    BakeManifest _listed;                 // what the folder held before
+    walls::BakeManifest _listed;                 // what the folder held before
 };
 
 BakeResult Bake::run() {
     validateBakeSettings(_request.settings);
-    planAndKey();
+    key();
     reuseListed();
     if (!_pending.empty()) {
-        const Loaded loaded = loadContents(_description, _plan, _result.warnings);
-        keyPending(loaded, settingsKey(_request.settings));
+        _result.warnings.insert(_result.warnings.end(), _scene.warnings.begin(), _scene.warnings.end());
+        keyPending(settingsKey(_request.settings));
         linkFromCache();
-        if (!_pending.empty()) render(loaded);
+        if (!_pending.empty()) render();
     }
     writeManifestNow(true);  // only when it changed: an unchanged bake writes nothing
     removeUnlistedTextures(_result.folder, _result.manifest);
     _result.totalBytes = 0;
-    for (const BakedTexture& t : _result.manifest.textures) _result.totalBytes += t.bytes;
+    for (const walls::BakedTexture& t : _result.manifest.textures) _result.totalBytes += t.bytes;
     _result.seconds = std::chrono::duration<double>(Clock::now() - _start).count();  // progress reported done already
     return std::move(_result);
 }
 
-void Bake::planAndKey() {
-    _description = loadDescription(_request.scene);
-    _plan = planZones(_description, _request.plan);
+void Bake::key() {
     KeyHasher h;
     h.text("cavewall bake v1").integer(static_cast<std::int64_t>(sceneFilesKey(_request.scene, _description)));
-    h.integer(static_cast<std::int64_t>(planOptionsKey(_request.plan)));
+    h.integer(static_cast<std::int64_t>(planOptionsKey(_plan.options)));
     _result.key = h.integer(static_cast<std::int64_t>(settingsKey(_request.settings))).value();
     const std::filesystem::path cache = _request.cache.empty() ? defaultCacheFolder() : _request.cache;
-    _result.folder = cache / hex64(_result.key);
+    _result.folder = cache / walls::hex64(_result.key);
     _result.manifest.key = _result.key;
-    _result.manifest.alphaDeg = _request.plan.alphaDeg;
+    _result.manifest.alphaDeg = _plan.options.alphaDeg;
 }
 
 void Bake::reuseListed() {
-    BakeManifest listed;
+    walls::BakeManifest listed;
     try {
-        listed = readManifest(_result.folder);
+        listed = walls::readManifest(_result.folder);
     } catch (const Error& e) {
         _result.warnings.push_back(std::string(e.what()) + " (re-baking everything it listed)");
     }
-    std::map<int, const BakedTexture*> byId;
+    std::map<int, const walls::BakedTexture*> byId;
     _listed = listed;
     if (listed.key == _result.key)
-        for (const BakedTexture& t : listed.textures) byId[t.id] = &t;
-    for (const Texture& t : _plan.textures) {
+        for (const walls::BakedTexture& t : listed.textures) byId[t.id] = &t;
+    for (const walls::Texture& t : _plan.textures) {
         Item item{&t, sideOf(_plan, t), bakeResolution(t.resolution, _request.settings.maxResolution), {}};
         item.entry = {t.id, t.cell, t.wall, t.samplingPoint, item.resolution, "", 0, 0};
         const auto it = byId.find(t.id);
         if (it != byId.end()) {
-            BakedTexture expected = *it->second;
-            const BakedTexture& got = *it->second;
+            walls::BakedTexture expected = *it->second;
+            const walls::BakedTexture& got = *it->second;
             expected.cell = t.cell, expected.wall = t.wall, expected.samplingPoint = t.samplingPoint;
             expected.resolution = item.resolution;
-            if (expected == got && textureFileValid(_result.folder, got)) {
+            if (expected == got && walls::textureFileValid(_result.folder, got)) {
                 finish(got, false, 0);
                 continue;
             }
@@ -207,9 +193,10 @@ void Bake::reuseListed() {
     report();
 }
 
-void Bake::keyPending(const Loaded& loaded, std::uint64_t settings) {
+void Bake::keyPending(std::uint64_t settings) {
+    const std::map<std::pair<int, int>, std::uint64_t> keys = contentKeys(_scene, _walls);
     for (Item& item : _pending) {
-        const std::uint64_t content = loaded.keys.at({item.texture->wall, item.side});
+        const std::uint64_t content = keys.at({item.texture->wall, item.side});
         item.entry.file = textureFileName(item.texture->id, textureKey(item, _plan, content, settings));
     }
 }
@@ -218,7 +205,7 @@ void Bake::linkFromCache() {
     const CacheIndex index = indexCache(_result.folder.parent_path(), _result.folder);
     std::vector<Item> left;
     for (Item& item : _pending) {
-        if (std::optional<BakedTexture> got = linkCachedTexture(index, _result.folder, item.entry)) {
+        if (std::optional<walls::BakedTexture> got = linkCachedTexture(index, _result.folder, item.entry)) {
             finish(*got, false, got->bytes);
             ++_result.linked;
         } else {
@@ -228,7 +215,7 @@ void Bake::linkFromCache() {
     _pending = std::move(left);
 }
 
-void Bake::render(const Loaded& loaded) {
+void Bake::render() {
     std::unique_ptr<gl::Context> own;
     gl::Context* context = _request.context;
     if (!context) {
@@ -237,14 +224,14 @@ void Bake::render(const Loaded& loaded) {
     }
     context->makeCurrent();
     ensureFolder(_result.folder);
-    WallTextureRenderer renderer(loaded.scene, _request.settings.ambient);
+    WallTextureRenderer renderer(_scene, _request.settings.ambient);
     BakeWriter writer(_result.folder, _request.settings.jobs, {_request.settings.tileSize});
     auto absorb = [&](bool wait) {
-        for (const BakedTexture& e : writer.takeDone(wait)) finish(e, true, e.bytes);
+        for (const walls::BakedTexture& e : writer.takeDone(wait)) finish(e, true, e.bytes);
     };
     for (const Item& item : _pending) {
-        const WallContents& c = loaded.contents.at({item.texture->wall, item.side});
-        const display::ScreenQuad quad = quadSeenFrom(_plan.walls[item.texture->wall].quad, item.side);
+        const walls::WallContents& c = _walls.contents.at({item.texture->wall, item.side});
+        const display::ScreenQuad quad = walls::quadSeenFrom(_plan.walls[item.texture->wall].quad, item.side);
         writer.submit(item.entry, renderer.render(quad, item.texture->samplingPoint, item.resolution, c.baked));
         absorb(false);
     }
@@ -252,7 +239,7 @@ void Bake::render(const Loaded& loaded) {
     absorb(false);
 }
 
-void Bake::finish(const BakedTexture& entry, bool baked, std::uint64_t bytes) {
+void Bake::finish(const walls::BakedTexture& entry, bool baked, std::uint64_t bytes) {
     _done[entry.id] = entry;
     (baked ? _result.baked : _result.reused)++;
     _result.bytesWritten += bytes;
@@ -270,7 +257,7 @@ void Bake::writeManifestNow(bool force) {
     for (const auto& [id, entry] : _done) _result.manifest.textures.push_back(entry);
     if (_result.manifest == _listed) return;
     ensureFolder(_result.folder);
-    writeManifest(_result.folder, _result.manifest);
+    walls::writeManifest(_result.folder, _result.manifest);
 }
 
 void Bake::report() {
@@ -282,8 +269,16 @@ void Bake::report() {
 
 }  // namespace
 
-BakeResult bakeScene(const BakeRequest& request) {
-    return Bake(request).run();
+BakeResult bakeWalls(const scenes::Scene& scene, const scenes::SceneDescription& description,
+                     const walls::WallSetup& walls, const BakeRequest& request) {
+    return Bake(scene, description, walls, request).run();
 }
 
-}  // namespace cavewall::walls
+BakeResult bakeScene(const BakeRequest& request) {
+    validateBakeSettings(request.settings);
+    scenes::SceneDescription description;
+    const scenes::Scene scene = scenes::loadSceneFile(request.scene, &description);
+    return bakeWalls(scene, description, walls::prepareWalls(scene, description, request.plan), request);
+}
+
+}  // namespace cavewall::gl

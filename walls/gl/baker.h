@@ -14,9 +14,13 @@
 // (walls/gl/texture_mips.h). Files are tiled, MIP-mapped TIFF (".tx") listed with size and
 // hash in the folder's manifest.json (walls/bake_manifest.h).
 //
-// Cache (bake_key.h): the folder is <cache>/<hex bake key>/. Baking again with an unchanged
-// scene, plan and settings renders nothing (it does not even load the scene's geometry or make
-// a GL context): it checks each listed file's size and hash. A missing, torn or replaced file is
+// What is baked comes from walls::prepareWalls (walls/wall_setup.h): the plan and what each wall
+// side shows; the baker never plans or classifies on its own.
+//
+// Cache (bake_key.h): the folder is <cache>/<hex bake key>/, the key covering the bytes of the
+// scene files, the plan options and the settings. Baking again with an unchanged scene, plan
+// and settings renders nothing (it does not make a GL context): it checks each listed file's
+// size and hash. A missing, torn or replaced file is
 // re-baked (only that one). After a change, textures whose texture key is unchanged are taken
 // from other folders of the same cache (hard link, else copy, then re-checked) instead of being
 // rendered. While baking, the manifest is rewritten atomically at most about once a second
@@ -26,6 +30,7 @@
 #include "display/gl/context.h"
 #include "walls/bake_manifest.h"
 #include "walls/plan.h"
+#include "walls/wall_setup.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -33,7 +38,7 @@
 #include <string>
 #include <vector>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 
 struct BakeSettings {
     int maxResolution = 1024;   // texels per texture side at most, [16, 16384]; larger plan
@@ -41,7 +46,7 @@ struct BakeSettings {
     int tileSize = 64;          // file tile edge in texels, a multiple of 16 in [16, 1024]
     int jobs = 1;               // threads building MIP chains and writing files, [1, 64]; GL
                                 // rendering is one context on the calling thread
-    float ambient = 0.35f;      // as gl::RenderSettings::ambient, [0, 1]
+    float ambient = 0.35f;      // as RenderSettings::ambient, [0, 1]
 };
 
 // Throws cavewall::Error naming the setting when it is out of range.
@@ -60,18 +65,18 @@ struct BakeProgress {
 
 struct BakeRequest {
     std::filesystem::path scene;    // scene.json, a folder holding one, or a bare glTF/GLB
-    PlanOptions plan;
+    walls::PlanOptions plan;        // bakeScene only (bakeWalls takes the setup's plan)
     BakeSettings settings;
     std::filesystem::path cache;    // empty: defaultCacheFolder()
     // A context to render with (made current before use); null: a headless one is created
     // only when something has to be rendered.
-    gl::Context* context = nullptr;
+    Context* context = nullptr;
     std::function<void(const BakeProgress&)> progress;  // after each texture (may be empty)
 };
 
 struct BakeResult {
     std::filesystem::path folder;   // <cache>/<hex key>
-    BakeManifest manifest;          // every texture of the plan, by id
+    walls::BakeManifest manifest;   // every texture of the plan, by id
     std::uint64_t key = 0;
     int baked = 0;                  // rendered and written by this bake
     int reused = 0;                 // valid already (in this folder or taken from another)
@@ -82,8 +87,15 @@ struct BakeResult {
     std::vector<std::string> warnings;
 };
 
-// Bakes (or finds in the cache) every texture of the scene's plan. Throws cavewall::Error for
-// bad scenes, options or unwritable folders; the manifest then lists what was finished.
+// Bakes (or finds in the cache) every texture of `walls` (walls::prepareWalls of `scene` and
+// `description`, loaded from request.scene, whose files key the cache). Throws cavewall::Error
+// for bad settings or unwritable folders; the manifest then lists what was finished. Set the
+// setup's folder and manifest from the result to page its textures (walls/gl/walkthrough.h).
+BakeResult bakeWalls(const scenes::Scene& scene, const scenes::SceneDescription& description,
+                     const walls::WallSetup& walls, const BakeRequest& request);
+
+// Loads request.scene, prepares its walls with request.plan and bakes them (bakeWalls), for
+// callers without a loaded scene (`cavewall bake`). Throws cavewall::Error for bad scenes too.
 BakeResult bakeScene(const BakeRequest& request);
 
 // $CAVEWALL_CACHE, else $HOME/.cache/cavewall. Throws Error when neither is set.
@@ -92,4 +104,4 @@ std::filesystem::path defaultCacheFolder();
 // "tex_<id, 4 digits>_<16 hex digits of the texture key>.tx"
 std::string textureFileName(int id, std::uint64_t textureKey);
 
-}  // namespace cavewall::walls
+}  // namespace cavewall::gl

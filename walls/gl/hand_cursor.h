@@ -2,7 +2,8 @@
 // The hand cursor: the tracked hand (or the desktop fallback's hand at the view centre) drawn as
 // a small flat hand icon with a pointing ray, so the user sees where navigation and picking aim.
 //
-// Plain data in, no dependency on the input library: the caller converts input::HandCursor.
+// Plain data in (walls::HandCursorPose), no dependency on the input library: the caller converts
+// input::HandCursor.
 // The icon is a palm (6 cm x 8 cm) with a pointing finger along the ray, facing up in the
 // hand's frame (the hand points along its -Z, +Y up); the ray is a line of `rayLength` metres.
 // Both are unlit flat colours, depth-tested so the scene can hide them.
@@ -10,16 +11,13 @@
 #include "display/gl/gl_object.h"
 #include "display/gl/scene_renderer.h"
 #include "display/off_axis.h"
+#include "walls/frame_types.h"
 
 #include <glm/gtc/quaternion.hpp>
 
 namespace cavewall::gl {
 
-struct HandCursorPose {
-    glm::dvec3 position{0.0};                    // cave frame, metres
-    glm::dquat orientation{1.0, 0.0, 0.0, 0.0};  // the hand points along its -Z
-    double rayLength = 2.0;                      // metres
-};
+using walls::HandCursorPose;  // walls/frame_types.h
 
 class HandCursorPass {
 public:

@@ -5,7 +5,7 @@
 
 #include <string>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 
 OffscreenTarget::OffscreenTarget(glm::ivec2 size)
     : _size(size), _color(gl::createTexture(GL_TEXTURE_2D)), _depth(gl::createTexture(GL_TEXTURE_2D)),
@@ -36,4 +36,4 @@ scenes::Image OffscreenTarget::read(const std::string& name) const {
     return gl::readFramebuffer(_framebuffer.id(), GL_COLOR_ATTACHMENT0, _size, name);
 }
 
-}  // namespace cavewall::walls
+}  // namespace cavewall::gl

@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 
 class OffscreenTarget {
 public:
@@ -28,4 +28,4 @@ private:
     gl::GlObject _color, _depth, _framebuffer;
 };
 
-}  // namespace cavewall::walls
+}  // namespace cavewall::gl

@@ -16,7 +16,7 @@
 #include <system_error>
 #include <unistd.h>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 
 float srgbToLinear(float e) {
     return e <= 0.04045f ? e / 12.92f : std::pow((e + 0.055f) / 1.055f, 2.4f);
@@ -198,4 +198,4 @@ void writeMipFile(const std::filesystem::path& file, const std::vector<scenes::I
     scenes::writeAtomically(file, [&](const std::filesystem::path& tmp) { writeLevels(tmp, file, levels, options); });
 }
 
-}  // namespace cavewall::walls
+}  // namespace cavewall::gl

@@ -15,13 +15,14 @@
 #include "display/gl/gl_object.h"
 #include "display/gl/scene_renderer.h"
 #include "display/off_axis.h"
+#include "walls/frame_planner.h"
 
 #include <array>
 #include <vector>
 
 namespace cavewall::gl {
 
-inline constexpr int kMaxWallTextures = 4;  // a blend zone mixes at most 2 rows x 2 columns
+using walls::kMaxWallTextures;  // walls/frame_planner.h
 
 struct WallDraw {
     display::ScreenQuad quad;                    // world frame, metres

@@ -5,7 +5,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 
 namespace {
 
@@ -90,4 +90,4 @@ void WallQuadDrawer::draw(const display::OffAxisFrustum& frustum, const display:
     glDepthMask(GL_TRUE);
 }
 
-}  // namespace cavewall::walls
+}  // namespace cavewall::gl

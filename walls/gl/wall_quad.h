@@ -9,7 +9,7 @@
 
 #include <vector>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 
 // Uploads MIP levels (largest first, each the next MIP size of the previous, premultiplied as
 // walls/gl/texture_mips.h says) as one GL_SRGB8_ALPHA8 texture with trilinear filtering and
@@ -35,4 +35,4 @@ private:
     GLint _modelView = -1, _projection = -1, _weight = -1;
 };
 
-}  // namespace cavewall::walls
+}  // namespace cavewall::gl

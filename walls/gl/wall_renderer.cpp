@@ -2,7 +2,7 @@
 
 #include <limits>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 
 WallTextureRenderer::WallTextureRenderer(const scenes::Scene& scene, float ambient)
     : _renderer(scene, gl::RenderSettings{glm::vec4(0.0f), ambient}) {}
@@ -23,4 +23,4 @@ scenes::Image WallTextureRenderer::render(const display::ScreenQuad& quad, glm::
     return _target->read("wall texture");
 }
 
-}  // namespace cavewall::walls
+}  // namespace cavewall::gl

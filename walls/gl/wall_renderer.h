@@ -11,7 +11,7 @@
 #include <memory>
 #include <vector>
 
-namespace cavewall::walls {
+namespace cavewall::gl {
 
 class WallTextureRenderer {
 public:
@@ -35,4 +35,4 @@ private:
     gl::ViewStats _stats;
 };
 
-}  // namespace cavewall::walls
+}  // namespace cavewall::gl

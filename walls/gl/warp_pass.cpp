@@ -13,7 +13,6 @@ namespace cavewall::gl {
 
 namespace {
 
-constexpr double kTextureNear = 0.05;  // the baker's near plane (wall_renderer.cpp)
 
 constexpr const char* kHoleVertex = R"(#version 450 core
 layout(location = 0) uniform vec3 uCorners[4];  // lowerLeft, lowerRight, upperLeft, upperRight, B's view frame
@@ -111,20 +110,6 @@ bool meetsTextureView(const scenes::Bounds& b, glm::dvec3 n, double d, const glm
 
 }  // namespace
 
-display::OffAxisFrustum warpTextureFrustum(const WarpWall& wall) {
-    const display::DepthRange depth{kTextureNear, std::numeric_limits<double>::infinity()};
-    return display::offAxisFrustum(wall.quad, wall.samplingPoint, depth);
-}
-
-glm::dmat4 clipFromWorldOf(const display::ScreenView& view, const glm::dmat4& caveFromWorld) {
-    return view.frustum.clipFromView * view.frustum.viewFromFrame * caveFromWorld;
-}
-
-glm::dmat4 warpFor(const WarpWall& wall, const display::ScreenView& view, const glm::dmat4& caveFromWorld,
-                   double nearB) {
-    return display::warpMatrix(warpTextureFrustum(wall), wall.quad, clipFromWorldOf(view, caveFromWorld), nearB);
-}
-
 WarpPass::WarpPass(const scenes::Scene& scene, const GpuScene& gpu, RenderSettings settings, double nearB)
     : _scene(scene), _gpu(gpu), _settings(settings), _nearB(nearB),
       _holeProgram(buildProgram("warp hole", kHoleVertex, kHoleFragment)),
@@ -196,8 +181,8 @@ void WarpPass::draw(const std::vector<WarpWall>& walls, const display::ScreenVie
 // Step 2 of the header: the structure reaching behind the wall plane, warped into B.
 void WarpPass::drawStructure(const WarpWall& wall, const display::ScreenView& view, const glm::dmat4& caveFromWorld,
                              FrameStats& stats) {
-    const display::OffAxisFrustum a = warpTextureFrustum(wall);
-    const glm::dmat4 warp = display::warpMatrix(a, wall.quad, clipFromWorldOf(view, caveFromWorld), _nearB);
+    const display::OffAxisFrustum a = walls::warpTextureFrustum(wall);
+    const glm::dmat4 warp = display::warpMatrix(a, wall.quad, walls::clipFromWorldOf(view, caveFromWorld), _nearB);
     const glm::dmat4 viewFromWorldB = view.frustum.viewFromFrame * caveFromWorld;
     // The wall quad faces the texture's side: behind it is -normal.
     const glm::dvec3 normal = display::screenBasis(wall.quad).normal;

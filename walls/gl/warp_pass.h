@@ -13,7 +13,7 @@
 //     plane inside A's frustum (tested on the CPU) is drawn with
 //       clip = W · clipFromViewA · [viewFromWorldA · worldFromModel] · v
 //     A = offAxisFrustum(wall quad as seen from the texture's side, samplingPoint, {0.05, +inf})
-//     (the baker's frustum, walls/gl/wall_renderer.cpp), W = display::warpMatrix(A, quad,
+//     (walls/warp_wall.h: the baker's frustum), W = display::warpMatrix(A, quad,
 //     clipFromWorldB, nearB). The bracket is composed in double relative to the sampling point
 //     and rounded to float. Clipped (gl_ClipDistance) to the far side of the wall plane and to A's
 //     four side planes, i.e. to what the texture shows; the part in front of the plane stays as
@@ -32,26 +32,14 @@
 #include "display/gl/scene_gpu.h"
 #include "display/gl/scene_renderer.h"
 #include "scenes/scene.h"
+#include "walls/warp_wall.h"
 
 #include <map>
 #include <vector>
 
 namespace cavewall::gl {
 
-// One wall drawn warped in a frame.
-struct WarpWall {
-    display::ScreenQuad quad;      // world frame, as seen from the texture's side (quadSeenFrom)
-    glm::dvec3 samplingPoint{0.0}; // world, of the texture the structure is warped to
-    int cell = -1;                 // also draw this cell's objects warped (warp-morph); -1: structure only
-};
-
-// The texture frustum A of `wall` (see above).
-display::OffAxisFrustum warpTextureFrustum(const WarpWall& wall);
-// B's clip from world for `view`: clipFromView · viewFromFrame · caveFromWorld.
-glm::dmat4 clipFromWorldOf(const display::ScreenView& view, const glm::dmat4& caveFromWorld);
-// The warp W of `wall` into `view` (display/warp.h); `nearB` is the display's near plane.
-glm::dmat4 warpFor(const WarpWall& wall, const display::ScreenView& view, const glm::dmat4& caveFromWorld,
-                   double nearB);
+using walls::WarpWall;  // walls/warp_wall.h
 
 class WarpPass {
 public:

@@ -8,7 +8,7 @@
 #include "app/bench/gl/modes.h"
 #include "app/gl/run_session.h"
 #include "walls/gl/baker.h"
-#include "walls/visibility.h"
+#include "walls/wall_setup.h"
 
 #include <algorithm>
 #include <chrono>
@@ -32,7 +32,7 @@ std::string fixed(double v, int decimals = 1) {
 }
 
 struct BakedWalls {
-    gl::WallSetup setup;
+    walls::WallSetup setup;
     double texels = 0.0, diskMB = 0.0;
     std::string summary;
 };
@@ -40,20 +40,17 @@ struct BakedWalls {
 // Plans and bakes (or finds in the cache) the walls at `alphaDeg`.
 BakedWalls bakeWalls(const BenchOptions& o, double alphaDeg, const scenes::Scene& scene,
                      const scenes::SceneDescription& d, gl::Context& context) {
-    walls::BakeRequest request;
+    walls::PlanOptions plan = o.plan;
+    plan.alphaDeg = alphaDeg;
+    BakedWalls out;
+    out.setup = walls::prepareWalls(scene, d, plan);
+    gl::BakeRequest request;
     request.scene = o.scene;
-    request.plan = o.plan;
-    request.plan.alphaDeg = alphaDeg;
     request.settings.maxResolution = o.bakeResolution;
     request.settings.jobs = 2;
     request.context = &context;
     if (o.cache) request.cache = *o.cache;
-    walls::BakeResult baked = walls::bakeScene(request);
-    context.makeCurrent();
-    BakedWalls out;
-    out.setup.plan = walls::planZones(d, request.plan);
-    out.setup.table = walls::computeVisibility(d);
-    walls::assignDepthBehind(out.setup.plan, scene, d, out.setup.table);
+    gl::BakeResult baked = gl::bakeWalls(scene, d, out.setup, request);
     out.setup.folder = baked.folder;
     for (const walls::BakedTexture& t : baked.manifest.textures)
         out.texels += static_cast<double>(t.resolution.x) * t.resolution.y;
@@ -180,7 +177,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
     }
     const auto listed = std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg);
     const std::size_t transitionIndex = listed - o.alphasDeg.begin();  // listed: checked on entry
-    const gl::WallSetup& cellPlan = baked[transitionIndex].setup;
+    const walls::WallSetup& cellPlan = baked[transitionIndex].setup;
     auto runCells = [&](bool nearOnly, double lodPixels) {
         say(o, std::string(nearOnly ? "bench: near-geometry limit (the viewer's cell and bare wall quads)"
                                     : "bench: cell culling without textures") +
@@ -200,7 +197,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
         mode.texels = baked[i].texels;
         mode.diskMB = baked[i].diskMB;
         ModeAccumulator acc(mode, display);
-        runWalkthroughMode(c, baked[i].setup, acc, &reference, nullptr, walkthroughTransition(transition), paged);
+        runWalkthroughMode(c, baked[i].setup, acc, &reference, nullptr, transition, paged);
         report.modes.push_back(acc.finish(fullP50));
     };
     for (std::size_t i = 0; i < baked.size(); ++i) runWalls(i, app::Transition::Blend, false);

@@ -90,8 +90,8 @@ ModeResult ModeAccumulator::finish(double fullP50) const {
     return m;
 }
 
-void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls, ModeAccumulator& acc,
-                        const ReferenceImages* reference, ReferenceImages* store, gl::Transition transition,
+void runWalkthroughMode(const ModeContext& c, std::optional<walls::WallSetup> walls, ModeAccumulator& acc,
+                        const ReferenceImages* reference, ReferenceImages* store, walls::Transition transition,
                         bool paged) {
     gl::WalkthroughOptions options;
     options.transition = transition;
@@ -110,19 +110,19 @@ void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls
     const long frames = static_cast<long>(c.path.frames.size());
     std::optional<display::FrameTimeBudget> frameBudget;
     if (acc.mode().frameBudgetMs > 0.0) frameBudget.emplace(acc.mode().frameBudgetMs);
-    auto render = [&](gl::FrameInput in) {
+    auto render = [&](walls::FrameInput in) {
         if (frameBudget) in.triangleBudget = frameBudget->budget();
-        gl::FrameResult r = walkthrough.renderFrame(in);
+        walls::FrameResult r = walkthrough.renderFrame(in);
         if (frameBudget) frameBudget->update(r.frameMs, r.geometryTriangles);
         return r;
     };
     const long warmUp = hasWalls && !paged ? frames : std::min<long>(3, frames);
     for (long i = 0; i < warmUp; ++i) render(c.path.frames[i]);
     if (!paged) walkthrough.waitForTextures();
-    for (const gl::FrameInput& frame : c.path.frames) {
-        gl::FrameInput in = frame;
+    for (const walls::FrameInput& frame : c.path.frames) {
+        walls::FrameInput in = frame;
         in.readImages = compared(c, in.frame);
-        gl::FrameResult r = render(in);
+        walls::FrameResult r = render(in);
         acc.addFrame({r.frameMs, r.cpuMs, r.gpuMs, static_cast<double>(r.stats.triangles),
                       static_cast<double>(r.stats.drawCalls), r.maxErrorDeg, r.maxErrorPixels, r.pager.residentMB,
                       r.pager.misses, r.perScreen, r.lodErrorPx, r.lodTolerancePx, r.lodOverBudget});
@@ -132,7 +132,7 @@ void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls
     }
 }
 
-NoiseComparison interleavedNoise(const ModeContext& c, std::optional<gl::WallSetup> walls, const ModeResult& mode,
+NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::WallSetup> walls, const ModeResult& mode,
                                  long frameIndex) {
     gl::WalkthroughOptions options;
     options.synchronousPaging = true;
@@ -142,13 +142,13 @@ NoiseComparison interleavedNoise(const ModeContext& c, std::optional<gl::WallSet
     options.triangleBudget = mode.triangleBudget;
     options.lodMaxPixels = c.lodMaxPixels;
     gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
-    const gl::FrameInput fixed = c.path.frames.at(static_cast<std::size_t>(frameIndex));
-    for (const gl::FrameInput& in : c.path.frames) walkthrough.renderFrame(in);
+    const walls::FrameInput fixed = c.path.frames.at(static_cast<std::size_t>(frameIndex));
+    for (const walls::FrameInput& in : c.path.frames) walkthrough.renderFrame(in);
     walkthrough.waitForTextures();
     std::vector<double> path, repeated;
-    for (const gl::FrameInput& in : c.path.frames) {
+    for (const walls::FrameInput& in : c.path.frames) {
         path.push_back(walkthrough.renderFrame(in).frameMs);
-        gl::FrameInput again = fixed;
+        walls::FrameInput again = fixed;
         again.frame = in.frame;  // the pager's recency moves on as in a run
         repeated.push_back(walkthrough.renderFrame(again).frameMs);
     }
@@ -179,7 +179,7 @@ std::vector<bool> cellMask(const walls::FrameSelection& s, std::size_t cellCount
 
 }  // namespace
 
-void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly, ModeAccumulator& acc,
+void runCellMode(const ModeContext& c, const walls::WallSetup& setup, bool nearOnly, ModeAccumulator& acc,
                  const ReferenceImages& reference) {
     const walls::FrameSelector selector(setup.plan, setup.table, c.description);
     const gl::RenderTargets targets(c.display, c.context);
@@ -192,9 +192,9 @@ void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly
     gl::GlObject bare;
     if (nearOnly) {
         quadPass.emplace();
-        bare = walls::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}});
+        bare = gl::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}});
     }
-    auto draw = [&](const gl::FrameInput& in, FrameCost* cost) {
+    auto draw = [&](const walls::FrameInput& in, FrameCost* cost) {
         const auto start = std::chrono::steady_clock::now();
         const glm::dvec3 eye(in.worldFromCave * glm::dvec4(in.head.position, 1.0));
         const walls::FrameSelection selection = selector.select(eye);
@@ -238,7 +238,7 @@ void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly
         }
     };
     for (long i = 0; i < std::min<long>(3, c.path.frames.size()); ++i) draw(c.path.frames[i], nullptr);
-    for (const gl::FrameInput& in : c.path.frames) {
+    for (const walls::FrameInput& in : c.path.frames) {
         FrameCost cost;
         draw(in, &cost);
         acc.addFrame(cost);

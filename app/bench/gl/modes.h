@@ -67,9 +67,9 @@ struct ModeContext {
 // warm-up frames), so the timed frames include every page-in, upload and fallback.
 // The mode's bench::ModeResult::lodPixels and triangleBudget set the levels of detail
 // (WalkthroughOptions::render.lodPixels, triangleBudget).
-void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls, ModeAccumulator& acc,
+void runWalkthroughMode(const ModeContext& c, std::optional<walls::WallSetup> walls, ModeAccumulator& acc,
                         const ReferenceImages* reference, ReferenceImages* store,
-                        gl::Transition transition = gl::Transition::Blend, bool paged = false);
+                        walls::Transition transition = walls::Transition::Blend, bool paged = false);
 
 // The machine's own frame-time noise beside a mode's: the path drawn as `mode` draws it (walls
 // or not, its levels of detail; every texture resident), each frame followed by frame
@@ -78,12 +78,12 @@ void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls
 struct NoiseComparison {
     bench::TimeStats path, repeated;
 };
-NoiseComparison interleavedNoise(const ModeContext& c, std::optional<gl::WallSetup> walls,
+NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::WallSetup> walls,
                                  const bench::ModeResult& mode, long frameIndex);
 
 // Runs the cells or near mode (bench_driver.h) with the selection of `setup`'s plan, at the
 // mode's level-of-detail tolerance (bench::ModeResult::lodPixels; no budget).
-void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly, ModeAccumulator& acc,
+void runCellMode(const ModeContext& c, const walls::WallSetup& setup, bool nearOnly, ModeAccumulator& acc,
                  const ReferenceImages& reference);
 
 }  // namespace cavewall::gl

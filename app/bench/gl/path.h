@@ -12,7 +12,7 @@
 #include "config/display_config.h"
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
-#include "walls/gl/walkthrough.h"
+#include "walls/frame_types.h"
 
 #include <string>
 #include <vector>
@@ -20,7 +20,7 @@
 namespace cavewall::gl {
 
 struct EyePath {
-    std::vector<gl::FrameInput> frames;  // readImages false; no hand cursor
+    std::vector<walls::FrameInput> frames;  // readImages false; no hand cursor
     std::string description;             // one line for the report header
 };
 

@@ -1,0 +1,302 @@
+// The frame planner (walls/frame_planner.h) without GL: residency is a plain set of texture ids,
+// time is FrameInput::time, so fallbacks and the warp-morph are tested frame by frame.
+//
+// Scene: the hall of test_scenes.h (wall "middle" on z = 0 from x = -6 to 6, 3 m high, facing
+// cell 0 "front", z > 0) with a floor (structure), a box in each cell and nothing else. The
+// viewer stands in the front cell; the CAVE (cave4) faces -z, towards the wall, unless turned.
+#include "tests/walls/test_scenes.h"
+
+#include "config/display_config.h"
+#include "scenes/region.h"
+#include "walls/angular_error.h"
+#include "walls/frame_planner.h"
+#include "walls/wall_setup.h"
+
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+namespace cavewall::walls {
+namespace {
+
+scenes::Object object(const char* name, scenes::Role role, glm::dvec3 min, glm::dvec3 max, int cell) {
+    scenes::Object o;
+    o.name = name;
+    o.role = role;
+    o.cell = cell;
+    o.worldBounds.add(min);
+    o.worldBounds.add(max);
+    return o;
+}
+
+scenes::Scene hallScene() {
+    scenes::Scene s;
+    s.name = "hall";
+    s.objects.push_back(object("floor", scenes::Role::Structure, {-6, 0, -10}, {6, 0, 10}, -1));
+    s.objects.push_back(object("front box", scenes::Role::Content, {-1, 0, 4}, {1, 2, 6}, 0));
+    s.objects.push_back(object("back box", scenes::Role::Content, {-2, 0, -7}, {2, 2.5, -3}, 1));
+    return s;
+}
+
+using TextureSet = std::vector<std::pair<int, double>>;
+
+class FramePlannerTest : public ::testing::Test {
+protected:
+    const scenes::SceneDescription description = testing::hall();
+    const scenes::Scene scene = hallScene();
+    const display::Display display{config::loadDisplayConfig("cave4")};
+
+    WallSetup setup(double alphaDeg) const {
+        PlanOptions options;
+        options.alphaDeg = alphaDeg;
+        return prepareWalls(scene, description, options);
+    }
+    // The CAVE's head (0, 1.7, 0) at world `eye`, turned by `yaw` about +Y (0: facing -z).
+    static FrameInput at(glm::dvec3 eye, double time = 0.0, double yaw = 0.0) {
+        FrameInput in;
+        in.time = time;
+        in.worldFromCave = glm::rotate(glm::translate(glm::dmat4(1.0), eye - glm::dvec3(0, 1.7, 0)), yaw,
+                                       glm::dvec3(0, 1, 0));
+        return in;
+    }
+    std::vector<display::ScreenView> views(const FrameInput& in) const { return display.views(in.head); }
+    // One frame: requests, then the plan against `resident` (nullptr: everything resident).
+    FramePlan frame(FramePlanner& planner, const FrameInput& in, const std::set<int>* resident = nullptr) const {
+        planner.requests(in, views(in));
+        return planner.plan([resident](int id) { return !resident || resident->count(id) > 0; });
+    }
+    static const WallState& row(const FramePlan& p) {
+        EXPECT_EQ(p.walls.size(), 1u);
+        return p.walls.front();
+    }
+    static bool drawsObject(const FramePlan& p, int object) {
+        return std::find(p.objects.begin(), p.objects.end(), object) != p.objects.end();
+    }
+    // The selection's blend of the wall at eye (x, 1.7, z).
+    static WallBlend blendAt(const FrameSelector& selector, double x, double z) {
+        const FrameSelection s = selector.select({x, 1.7, z});
+        return s.walls.empty() ? WallBlend{} : s.walls.front();
+    }
+};
+
+constexpr int kBackBox = 2;  // hallScene's object in the cell behind the wall
+
+TEST_F(FramePlannerTest, AMissingTextureKeepsThePreviousOneWithinAlphaElseTheGeometry) {
+    const WallSetup walls = setup(10.0);
+    const FrameSelector selector(walls.plan, walls.table, description);
+    // `first`: one texture, no geometry; `next`: along the wall, the first point where that
+    // texture is no longer drawn but still within alpha; `far`: where it is beyond alpha.
+    std::optional<glm::dvec3> first, next, far;
+    for (double z = 9.5; z > 0.5 && !first; z -= 0.25)
+        for (double x = -5.5; x < 5.5 && !first; x += 0.25) {
+            const WallBlend b = blendAt(selector, x, z);
+            if (b.textures.size() == 1 && b.geometryWeight == 0.0) first = glm::dvec3(x, 1.7, z);
+        }
+    ASSERT_TRUE(first);
+    const int t1 = blendAt(selector, first->x, first->z).textures[0].first;
+    const Texture& texture = walls.plan.textures[t1];
+    ASSERT_EQ(texture.id, t1);
+    const PlannedWall& wall = walls.plan.walls[0];
+    const double alpha = glm::radians(walls.plan.alphaDeg);
+    for (double x = -5.5; x < 5.5; x += 0.05) {
+        const glm::dvec3 eye(x, 1.7, first->z);
+        const WallBlend b = blendAt(selector, x, first->z);
+        const bool without = std::none_of(b.textures.begin(), b.textures.end(), [&](auto& t) { return t.first == t1; });
+        if (!without || b.textures.empty()) continue;
+        const double error = maxAngularError(eye, texture.samplingPoint, wall.quad, wall.depthBehind);
+        if (error <= alpha && !next) next = eye;
+        if (error > alpha + 1e-6) far = eye;
+    }
+    ASSERT_TRUE(next) << "no neighbouring zone where the first texture is still within alpha";
+    ASSERT_TRUE(far) << "no zone where the first texture is beyond alpha";
+
+    FramePlanner planner(scene, description, display, &walls, Transition::Blend, 0.5);
+    const std::set<int> none, onlyFirst{t1};
+    // Cold: nothing resident and nothing drawn before: geometry, the cell behind drawn.
+    const FramePlan cold = frame(planner, at(*first), &none);
+    EXPECT_TRUE(row(cold).fallback);
+    EXPECT_TRUE(row(cold).textures.empty());
+    EXPECT_EQ(row(cold).geometryWeight, 1.0);
+    EXPECT_TRUE(cold.geometryCells[1]);
+    EXPECT_TRUE(drawsObject(cold, kBackBox));
+    EXPECT_TRUE(cold.wallDraws.empty());
+    const FramePlan warm = frame(planner, at(*first), &onlyFirst);
+    EXPECT_FALSE(row(warm).fallback);
+    EXPECT_EQ(row(warm).textures, (TextureSet{{t1, 1.0}}));
+    EXPECT_FALSE(warm.geometryCells[1]);
+    EXPECT_FALSE(drawsObject(warm, kBackBox));
+    // The next zone's texture is missing: the wall keeps the one it drew (within alpha there).
+    const FramePlan kept = frame(planner, at(*next), &onlyFirst);
+    EXPECT_TRUE(row(kept).fallback);
+    EXPECT_EQ(row(kept).textures, (TextureSet{{t1, 1.0}}));
+    ASSERT_EQ(kept.wallDraws.size(), 1u);
+    EXPECT_EQ(kept.wallDraws[0].textures, (TextureSet{{t1, 1.0}}));
+    EXPECT_FALSE(drawsObject(kept, kBackBox));
+    // Far along the wall the old texture would be wrong by more than alpha: geometry instead.
+    const FramePlan jumped = frame(planner, at(*far), &onlyFirst);
+    EXPECT_TRUE(row(jumped).fallback);
+    EXPECT_TRUE(row(jumped).textures.empty());
+    EXPECT_EQ(row(jumped).geometryWeight, 1.0);
+    EXPECT_TRUE(jumped.geometryCells[1]);
+    EXPECT_TRUE(drawsObject(jumped, kBackBox));
+    EXPECT_TRUE(jumped.wallDraws.empty());
+    EXPECT_EQ(jumped.maxErrorDeg, 0.0);  // nothing textured, nothing wrong
+}
+
+TEST_F(FramePlannerTest, WallsOutOfViewAreNeitherRequestedNorDrawnButKeepARow) {
+    const WallSetup walls = setup(10.0);
+    FramePlanner planner(scene, description, display, &walls, Transition::Blend, 0.5);
+    const glm::dvec3 eye(0.0, 1.7, 8.0);  // a texture zone: something would be requested
+    const TextureRequests facing = planner.requests(at(eye), views(at(eye)));
+    EXPECT_FALSE(facing.now.empty());
+    planner.plan([](int) { return true; });
+    // Turned round (the CAVE's front towards +z) and rendering the front screen only: the wall
+    // is behind the viewer, outside every rendered view.
+    const FrameInput turned = at(eye, 0.0, glm::pi<double>());
+    std::vector<display::ScreenView> front = views(turned);
+    std::erase_if(front, [&](const display::ScreenView& v) { return display.screens()[v.screen].name != "front"; });
+    ASSERT_FALSE(front.empty());
+    const TextureRequests away = planner.requests(turned, front);
+    EXPECT_TRUE(away.now.empty());
+    EXPECT_TRUE(away.soon.empty());
+    const FramePlan p = planner.plan([](int) { return true; });
+    EXPECT_TRUE(p.wallDraws.empty());
+    ASSERT_EQ(p.walls.size(), 1u);
+    EXPECT_EQ(p.walls[0].wall, 0);
+    EXPECT_TRUE(p.walls[0].textures.empty());
+    EXPECT_FALSE(p.walls[0].fallback);
+}
+
+TEST_F(FramePlannerTest, AWarpMorphStartsOnASwitchLastsMorphSecondsThenEnds) {
+    const WallSetup walls = setup(10.0);
+    const FrameSelector selector(walls.plan, walls.table, description);
+    std::optional<glm::dvec3> textured, geometry;
+    for (double z = 9.5; z > 0.05; z -= 0.05) {
+        const WallBlend b = blendAt(selector, 0.0, z);
+        if (!textured && b.textures.size() == 1 && b.geometryWeight == 0.0) textured = glm::dvec3(0, 1.7, z);
+        if (b.geometryWeight == 1.0) geometry = glm::dvec3(0, 1.7, z);
+    }
+    ASSERT_TRUE(textured && geometry);
+    const glm::dvec3 samplingPoint = walls.plan.textures[blendAt(selector, 0.0, textured->z).textures[0].first].samplingPoint;
+    const double morph = 0.5;
+    FramePlanner planner(scene, description, display, &walls, Transition::Warp, morph);
+    const FramePlan before = frame(planner, at(*textured, 0.0));
+    EXPECT_EQ(before.wallDraws.size(), 1u);
+    ASSERT_EQ(before.warpWalls.size(), 1u);  // structure warped into the texture, no morph
+    EXPECT_EQ(before.warpWalls[0].cell, -1);
+    EXPECT_TRUE(before.morphs.empty());
+    // Texture -> geometry at t = 0.1: the morph runs for `morph` seconds of input time.
+    for (double t : {0.1, 0.35, 0.5999}) {
+        SCOPED_TRACE(t);
+        const FramePlan p = frame(planner, at(*geometry, t));
+        const double s = (t - 0.1) / morph;
+        ASSERT_EQ(p.morphs.size(), 1u);
+        EXPECT_EQ(p.morphs[0].phase, MorphPhase::ToGeometry);
+        EXPECT_NEAR(p.morphs[0].share, s, 1e-12);
+        ASSERT_EQ(p.warpWalls.size(), 1u);
+        EXPECT_EQ(p.warpWalls[0].cell, 1);  // the cell behind, drawn warped ...
+        EXPECT_FALSE(p.geometryCells[1]);   // ... and not by the scene renderer
+        EXPECT_FALSE(drawsObject(p, kBackBox));
+        // The viewpoint moves from the sampling point (s = 0) to the eye (s = 1).
+        EXPECT_LT(glm::distance(p.warpWalls[0].samplingPoint, glm::mix(samplingPoint, *geometry, s)), 1e-9);
+        EXPECT_TRUE(p.wallDraws.empty());
+        EXPECT_TRUE(row(p).textures.empty());
+        EXPECT_EQ(row(p).geometryWeight, 1.0);
+    }
+    const FramePlan after = frame(planner, at(*geometry, 0.7));  // past 0.5 s after the switch: ended
+    EXPECT_TRUE(after.morphs.empty());
+    EXPECT_TRUE(after.warpWalls.empty());
+    EXPECT_TRUE(after.geometryCells[1]);
+    EXPECT_TRUE(drawsObject(after, kBackBox));
+    // Geometry -> texture at t = 1: a morph towards the sampling point.
+    const FramePlan back = frame(planner, at(*textured, 1.0));
+    ASSERT_EQ(back.morphs.size(), 1u);
+    EXPECT_EQ(back.morphs[0].phase, MorphPhase::ToTexture);
+    EXPECT_LT(glm::distance(back.warpWalls.at(0).samplingPoint, *textured), 1e-9);  // s = 0: the eye
+    EXPECT_TRUE(frame(planner, at(*textured, 1.6)).morphs.empty());
+}
+
+TEST_F(FramePlannerTest, AnIllConditionedWarpFallsBackToGeometryAndIsCounted) {
+    // Even at alpha 90° the plan keeps a geometry zone in front of the wall; without it the
+    // texture zone reaches the wall plane (as for a wall seen edge-on from afar) and only the
+    // guard stands between an eye 0.1 mm from the plane and a singular warp. Its condition
+    // grows like 3 m / distance (display/warp.h): about 3e4 at 0.1 mm, over kMaxWarpCondition
+    // = 1e4; about 60 at 5 cm.
+    WallSetup walls = setup(90.0);
+    for (WallSide& side : walls.plan.sides) side.hasGeometry = false;
+    const FrameSelector selector(walls.plan, walls.table, description);
+    const WallBlend b = blendAt(selector, 0.0, 1e-4);
+    ASSERT_FALSE(b.textures.empty());
+    ASSERT_LT(b.geometryWeight, 0.5);
+    FramePlanner warp(scene, description, display, &walls, Transition::Warp, 0.5);
+    const FramePlan p = frame(warp, at({0.0, 1.7, 1e-4}));
+    EXPECT_EQ(p.warpFallbacks, 1);
+    EXPECT_TRUE(row(p).fallback);
+    EXPECT_TRUE(row(p).textures.empty());
+    EXPECT_EQ(row(p).geometryWeight, 1.0);
+    EXPECT_TRUE(p.geometryCells[1]);
+    EXPECT_TRUE(p.wallDraws.empty());
+    EXPECT_TRUE(p.warpWalls.empty());
+    // 5 cm from the plane the warp is fine; the blend transition never warps.
+    EXPECT_EQ(frame(warp, at({0.0, 1.7, 0.05}), nullptr).warpFallbacks, 0);
+    FramePlanner blend(scene, description, display, &walls, Transition::Blend, 0.5);
+    const FramePlan blended = frame(blend, at({0.0, 1.7, 1e-4}));
+    EXPECT_EQ(blended.warpFallbacks, 0);
+    EXPECT_FALSE(row(blended).textures.empty());
+}
+
+TEST_F(FramePlannerTest, DrawnWeightsSumToOneAndErrorsAreTheExactAngularError) {
+    const WallSetup walls = setup(10.0);
+    const PlannedWall& wall = walls.plan.walls[0];
+    FramePlanner planner(scene, description, display, &walls, Transition::Blend, 0.5);
+    int textured = 0, blended = 0;
+    for (double z = 0.3; z < 10.0; z += 0.37)
+        for (double x = -5.7; x < 6.0; x += 0.53) {
+            const glm::dvec3 eye(x, 1.7, z);
+            const FramePlan p = frame(planner, at(eye));
+            const WallState& s = row(p);
+            double sum = s.geometryWeight, worst = 0.0;
+            for (const auto& [id, weight] : s.textures) {
+                sum += weight;
+                worst = std::max(worst, maxAngularError(eye, walls.plan.textures[id].samplingPoint, wall.quad,
+                                                        wall.depthBehind));
+            }
+            // Continuous weights meet at zone borders; 1e-12 covers their rounding.
+            EXPECT_NEAR(sum, 1.0, 1e-12) << "eye " << x << ", " << z;
+            EXPECT_EQ(s.errorDeg, glm::degrees(worst));
+            EXPECT_EQ(p.maxErrorDeg, glm::degrees(worst));
+            // Everything resident: each drawn texture is within the plan's alpha.
+            EXPECT_LE(worst, glm::radians(walls.plan.alphaDeg) + kErrorTolerance);
+            if (s.textures.empty()) continue;
+            ++textured;
+            blended += s.textures.size() > 1 || s.geometryWeight > 0.0;
+            ASSERT_EQ(p.wallDraws.size(), 1u);
+            double drawn = 0.0;
+            for (const auto& [id, weight] : p.wallDraws[0].textures) drawn += weight;
+            EXPECT_NEAR(drawn, 1.0 - s.geometryWeight, 1e-12);
+            EXPECT_LE(p.wallDraws[0].textures.size(), static_cast<std::size_t>(kMaxWallTextures));
+            EXPECT_GT(p.maxErrorPixels, 0.0);
+        }
+    // The sweep crosses texture zones and blend strips, not only one of them.
+    EXPECT_GT(textured, 20);
+    EXPECT_GT(blended, 5);
+}
+
+TEST_F(FramePlannerTest, WithoutWallsEverythingIsGeometryAndNothingIsRequested) {
+    FramePlanner planner(scene, description, display, nullptr, Transition::Blend, 0.5);
+    EXPECT_FALSE(planner.hasWalls());
+    const FrameInput in = at({1.0, 1.7, -4.0});
+    const TextureRequests r = planner.requests(in, views(in));
+    EXPECT_TRUE(r.now.empty() && r.soon.empty());
+    const FramePlan p = planner.plan([](int) { return false; });
+    EXPECT_EQ(p.cell, scenes::findCell(description.cells, {1.0, 1.7, -4.0}));  // reported only
+    EXPECT_EQ(p.objects, (std::vector<int>{0, 1, 2}));
+    EXPECT_TRUE(p.walls.empty());
+    EXPECT_NEAR(glm::distance(p.eyeWorld, glm::dvec3(1.0, 1.7, -4.0)), 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace cavewall::walls

@@ -1,0 +1,147 @@
+#pragma once
+// The walkthrough's frame planner: everything a frame decides before anything is drawn, GL-free.
+// The GL executor (walls/gl/walkthrough.h) pages, uploads and draws what it returns.
+//
+// Per frame, in two steps (the executor uploads ready textures in between):
+//  requests(input, views):
+//   1. the cyclopean eye in the world = worldFromCave * head position; FrameSelector::select(eye)
+//      gives the cell, every bounding wall's texture weights and geometryWeight, and the cells
+//      drawn as geometry. One selection per frame, shared by both eyes and all screens.
+//   2. walls outside every given view are neither requested nor drawn (a cluster rank pages only
+//      what its own screens show); they keep a row in FramePlan::walls. The textures drawn now
+//      (weight > 0) are wanted now; those the selection would draw 1.5 m away in each of 8
+//      directions (the neighbouring zones) soon.
+//  plan(resident):
+//   3. a wall whose textures are not all resident keeps the textures it drew last (from the
+//      same side) if they are still resident and still within the plan's alpha for this eye
+//      (maxAngularError), else it is drawn as geometry (its cell behind joins the geometry
+//      cells): a wall is never black or missing. Such walls are flagged `fallback`.
+//   4. geometry: all structure + objects without a cell + objects of the geometry cells.
+//   5. the error: maxAngularError (walls/angular_error.h) of every texture drawn with non-zero
+//      weight against the true eye, in degrees and in pixels (FrameResult::maxErrorPixels).
+// Transition::Warp: every wall drawn with textures and no geometry weight gets the structure
+// behind it warped into its texture's view (the texture of the largest weight when it mixes
+// several). When the warp of such a wall is ill-conditioned for any given view
+// (display::warpCondition > kMaxWarpCondition: the eye near the wall plane), the wall falls back
+// to geometry (its cell behind drawn, no texture, flagged `fallback`), counted in warpFallbacks.
+// Warp-morph (Transition::Warp, seed 002 §2): a wall's mix of textures and geometry becomes
+// whichever weighs more (no alpha fade between texture and geometry; textures still cross-fade
+// among themselves). When a wall switches between texture and geometry, for morphSeconds of
+// FrameInput::time its cell behind (content and structure) is drawn by the warp pass through the
+// wall as seen from p = lerp(samplingPoint, eye, s) (texture -> geometry; eye -> samplingPoint
+// back), s the elapsed share: it starts as the texture's view and ends exact. During the morph
+// the wall draws no quad and reports no textures and geometryWeight 1.
+// A scene without virtual walls (no WallSetup) plans all geometry and requests nothing.
+//
+// Stateful per walkthrough (the textures each wall drew last, the morphs), deterministic given
+// the inputs, FrameInput::time and the residency answers. Frames and units:
+// config/conventions.h.
+
+#include "display/display.h"
+#include "scenes/scene.h"
+#include "scenes/scene_description.h"
+#include "walls/frame_select.h"
+#include "walls/frame_types.h"
+#include "walls/wall_setup.h"
+#include "walls/warp_wall.h"
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace cavewall::walls {
+
+inline constexpr int kMaxWallTextures = 4;  // a blend zone mixes at most 2 rows x 2 columns
+
+// True when texture `id` is resident on the GPU (the executor's texture store; a set in tests).
+using Residency = std::function<bool(int id)>;
+
+struct TextureRequests {
+    std::vector<int> now;    // drawn this frame (weight > 0), the cell's and beyond walls'
+    std::vector<int> soon;   // of the neighbouring zones (may repeat ids of `now`)
+};
+
+// One wall quad to draw with its textures (walls/gl/wall_pass.h).
+struct WallDrawPlan {
+    int wall = 0;                                  // index into Plan::walls
+    display::ScreenQuad quad;                      // world, as seen from the viewer's side (quadSeenFrom)
+    // (texture id, weight), largest weight first, at most kMaxWallTextures (more are never
+    // planned: the kept ones would take the dropped weight); sum = 1 - geometryWeight.
+    std::vector<std::pair<int, double>> textures;
+};
+
+// Where a wall's warp-morph is (Transition::Warp).
+enum class MorphPhase { Idle, ToGeometry, ToTexture };
+
+struct WallMorph {
+    int wall = 0;
+    MorphPhase phase = MorphPhase::Idle;
+    double share = 0.0;                            // elapsed share s in [0, 1)
+};
+
+struct FramePlan {
+    glm::dvec3 eyeWorld{0.0};                      // cyclopean eye in the world
+    int cell = -1, zone = -1;                      // as FrameResult
+    std::vector<bool> geometryCells;               // per description cell: drawn as geometry
+    std::vector<int> objects;                      // Scene::objects drawn by the scene renderer
+    std::vector<WallDrawPlan> wallDraws;
+    std::vector<WarpWall> warpWalls;               // Transition::Warp: walls drawn warped
+    std::vector<WallMorph> morphs;                 // walls in a warp-morph this frame
+    std::vector<WallState> walls;                  // every wall row (walls.csv), errors set
+    double maxErrorDeg = 0.0, maxErrorPixels = 0.0;
+    int warpFallbacks = 0;
+};
+
+class FramePlanner {
+public:
+    // Keeps references to scene, description, display and `walls` (null or without planned
+    // walls: geometry only), which must outlive it. `screens`: the display screens whose
+    // views are given and whose pixels count for the error (empty: all).
+    FramePlanner(const scenes::Scene& scene, const scenes::SceneDescription& description,
+                 const display::Display& display, const WallSetup* walls, Transition transition,
+                 double morphSeconds, std::vector<int> screens = {});
+    ~FramePlanner();
+
+    // Steps 1-2 of the header for this frame; `views` are the views the executor draws.
+    TextureRequests requests(const FrameInput& input, const std::vector<display::ScreenView>& views);
+    // Steps 3-5 for the frame of the last requests() call, against `resident`.
+    FramePlan plan(const Residency& resident);
+
+    bool hasWalls() const { return _selector.has_value(); }
+    const std::vector<int>& screens() const { return _screens; }
+
+private:
+    struct Memory;
+    struct WarpOutcome;
+    WallState chooseWall(const WallBlend& blend, const Residency& resident, FramePlan& plan);
+    WarpOutcome warpWall(const WallBlend& blend, const WallState& state);
+    void applyWarp(const WallBlend& blend, const WarpOutcome& outcome, WallState& state, FramePlan& plan);
+    bool withinBound(const std::vector<std::pair<int, double>>& set, const PlannedWall& wall) const;
+    bool warpConditioned(const WarpWall& warp) const;
+    bool wallInView(int wall) const;
+    void measureError(FramePlan& plan) const;
+    std::vector<int> visibleObjects(const std::vector<bool>& cells) const;
+    void addDraw(const WallBlend& blend, const WallState& state, FramePlan& plan) const;
+
+    const scenes::Scene& _scene;
+    const scenes::SceneDescription& _description;
+    const display::Display& _display;
+    const WallSetup* _walls;
+    Transition _transition;
+    double _morphSeconds;
+    std::vector<int> _screens;
+    std::optional<FrameSelector> _selector;
+    std::map<int, const Texture*> _textures;       // by id
+    std::vector<Memory> _memory;                   // per wall
+    // The frame between requests() and plan().
+    FrameInput _input;
+    std::vector<display::ScreenView> _views;
+    glm::dvec3 _eye{0.0};
+    FrameSelection _selection, _seen;              // all, and those in view
+    std::vector<WallState> _outOfView;
+    bool _planned = true;                          // plan() was called for this frame
+};
+
+}  // namespace cavewall::walls

@@ -1,0 +1,111 @@
+#pragma once
+// The walkthrough's plain data: what a frame is given (FrameInput), what it reports
+// (FrameResult, one WallState per wall) and the settings that are not GL. Shared by the frame
+// planner (walls/frame_planner.h), the GL executor (walls/gl/walkthrough.h), the input side and
+// cluster serialisation in tools/, none of which needs a GL context for them.
+//
+// Frames and units: config/conventions.h. Times in seconds, durations in milliseconds.
+
+#include "display/display.h"
+#include "display/frame_stats.h"
+#include "scenes/screen_image.h"
+#include "walls/texture_pager.h"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <cstddef>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace cavewall::walls {
+
+// How structure crossing a textured wall meets the texture (walls/gl/walkthrough.h).
+enum class Transition { Blend, Warp };
+
+// The hand cursor's pose (walls/gl/hand_cursor.h draws it).
+struct HandCursorPose {
+    glm::dvec3 position{0.0};                    // cave frame, metres
+    glm::dquat orientation{1.0, 0.0, 0.0, 0.0};  // the hand points along its -Z
+    double rayLength = 2.0;                      // metres
+};
+
+// Everything about a walkthrough that is not GL (gl::WalkthroughOptions adds the renderer's).
+struct WalkthroughSettings {
+    double textureBudgetMB = 256.0;          // GPU budget of resident wall textures, MB, > 0
+    double uploadMBPerFrame = 8.0;           // texture bytes uploaded per frame at most, MB
+    // Wait for the pager to decode and upload every requested texture before drawing, so the
+    // frames depend only on the input (tests, replays, golden images). Off: a frame never
+    // waits, missing textures fall back (walls/frame_planner.h).
+    bool synchronousPaging = false;
+    // Reads every MIP level of a baked texture file on the pager's thread; empty:
+    // scenes::readMipLevels. Tests inject slow or failing decoders here.
+    TexturePager::Decoder decoder;
+    Transition transition = Transition::Blend;  // Warp: structure behind textured walls warped
+    double morphSeconds = 0.5;               // Warp: duration of a warp-morph, seconds, > 0
+    // Levels of detail (render.lodPixels > 0): the geometry of every frame is drawn at the
+    // levels SceneRenderer::chooseLods picks for render.lodPixels, over all screens and eyes
+    // at once. triangleBudget > 0 caps the triangles the scene renderer submits per frame (all
+    // views; the wall, warp and cursor passes are not counted) by raising the tolerance
+    // (seed 004's frame budget); 0: no cap.
+    std::size_t triangleBudget = 0;
+    // The most a budget may raise the tolerance to, pixels (>= render.lodPixels): beyond it a
+    // frame is drawn over budget rather than with coarser shapes (FrameResult::lodOverBudget).
+    double lodMaxPixels = 8.0;
+};
+
+struct FrameInput {
+    long frame = 0;                          // frame number (for the pager's recency)
+    double time = 0.0;                       // seconds
+    display::HeadPose head;                  // cave frame
+    glm::dmat4 worldFromCave{1.0};
+    std::optional<HandCursorPose> hand;      // drawn when given
+    bool readImages = false;                 // read every rendered image back into FrameResult
+    // This frame's triangle budget (with levels of detail), > 0 overrides
+    // WalkthroughSettings::triangleBudget: a frame-time controller (display/frame_budget.h)
+    // sets it frame by frame, the same on every cluster rank.
+    std::size_t triangleBudget = 0;
+};
+
+// One wall's state in a frame (walls.csv).
+struct WallState {
+    int wall = 0;                            // index into Plan::walls
+    std::vector<std::pair<int, double>> textures;  // drawn (texture id, weight)
+    double geometryWeight = 0.0;             // weight of the cell behind as geometry
+    bool fallback = false;                   // wanted textures missing: previous or geometry drawn
+    bool beyond = false;                     // a far wall of a neighbour drawn as geometry
+                                             // (FrameSelection::beyond): not covered by alpha
+    double errorDeg = 0.0;                   // exact worst angular error of its drawn textures
+};
+
+struct FrameResult {
+    glm::dvec3 eyeWorld{0.0};                // cyclopean eye in the world
+    int cell = -1, zone = -1;                // viewer's cell (also without walls); zone of the
+                                             // first wall with one (-1 without walls)
+    double frameMs = 0.0;                    // renderFrame wall-clock time, until the GPU finished
+    double cpuMs = 0.0;                      // CPU time until every command was submitted
+    double gpuMs = 0.0;                      // GL_TIME_ELAPSED of the frame's commands
+    display::FrameStats stats;               // triangles and draw calls, all views
+    PagerStats pager;
+    double maxErrorDeg = 0.0;                // max over drawn textures (0 without textures)
+    // maxErrorDeg converted to pixels on the screens this instance renders: error (rad) times
+    // the largest pixels per radian of each screen from the eye (display/pixel_scale.h).
+    double maxErrorPixels = 0.0;
+    // Levels of detail (WalkthroughSettings): the pixel tolerance used this frame (raised above
+    // render.lodPixels when the triangle budget needed it), the largest geometric error drawn
+    // in pixels, and whether even the coarsest levels exceeded the budget. 0 without levels.
+    double lodTolerancePx = 0.0, lodErrorPx = 0.0;
+    bool lodOverBudget = false;
+    std::size_t geometryTriangles = 0;       // of stats.triangles, what the scene renderer submitted
+                                             // (what triangleBudget caps)
+    int warpFallbacks = 0;                   // Transition::Warp: walls drawn as geometry because
+                                             // their warp was ill-conditioned (eye near the plane)
+    std::vector<WallState> walls;
+    // Per display screen (index = screen), summed over its eyes: wall-clock CPU ms of its views
+    // (geometry, walls, cursor), triangles and draw calls. Screens this instance does not
+    // render stay zero.
+    std::vector<display::ViewStats> perScreen;
+    std::vector<scenes::ScreenImage> images;  // when FrameInput::readImages
+};
+
+}  // namespace cavewall::walls
