@@ -1,4 +1,4 @@
-# Fails when a source file includes against the layering of ../shared/STYLE.md:
+# Fails when a source file includes against the layering of README.md (its layout table):
 #  - <GL/...>, <EGL/...>, <GLFW/...>, <epoxy/...> or <glad/...> outside */gl/ folders;
 #  - a project include ("folder/file.h") of a library the including folder may not depend on.
 # Usage: cmake -DROOT=<tree> -P check_layering.cmake
@@ -12,10 +12,11 @@ set(allowed_config "")
 set(allowed_display "config")
 set(allowed_scenes "config")
 set(allowed_input "config")
-set(allowed_walls "config;display;scenes")
-set(allowed_display/gl "config;display;scenes;input")
-set(allowed_walls/gl "config;display;scenes;walls;display/gl")
-set(layers config display scenes input walls display/gl walls/gl)
+set(allowed_render "config;display;scenes")
+set(allowed_walls "config;display;scenes;render")
+set(allowed_display/gl "config;display;scenes;input;render")
+set(allowed_walls/gl "config;display;scenes;render;walls;display/gl")
+set(layers config display scenes input render walls display/gl walls/gl)
 
 set(violations "")
 foreach(layer IN LISTS layers)

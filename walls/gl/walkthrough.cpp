@@ -5,6 +5,8 @@
 #include "display/pixel_scale.h"
 #include "display/warp.h"
 #include "walls/angular_error.h"
+#include "display/gl/view_loop.h"
+#include "render/lod_choice.h"
 #include "walls/gl/bake_key.h"
 
 #include <glm/gtc/constants.hpp>
@@ -300,33 +302,28 @@ std::vector<display::ScreenView> Walkthrough::renderedViews(const display::HeadP
     return views;
 }
 
-void Walkthrough::drawViews(const FrameInput& input, const DrawFilter& filter, const std::vector<WallDraw>& walls,
-                            FrameResult& result) {
+void Walkthrough::drawViews(const FrameInput& input, const render::DrawFilter& filter,
+                            const std::vector<WallDraw>& walls, FrameResult& result) {
     const glm::dmat4 caveFromWorld = glm::inverse(input.worldFromCave);
     _renderer.beginFrame(_targets, _screens);
-    result.perScreen.assign(_display.screens().size(), ViewStats{});
-    for (const display::ScreenView& view : renderedViews(input.head)) {
-        const auto viewStart = Clock::now();
-        const FrameStats before = result.stats;
-        _targets.bind(view.screen, RenderTargets::imageOf(view.pass));
-        const ViewStats geometry = _renderer.renderView(view, input.worldFromCave, filter);
-        result.stats.drawCalls += geometry.drawCalls;
-        result.stats.triangles += geometry.triangles;
-        result.geometryTriangles += geometry.triangles;
-        if (_warp) _warp->draw(_warpWalls, view, caveFromWorld, result.stats);
+    const std::vector<display::ScreenView> views = renderedViews(input.head);
+    result.stats = forEachView(views, _targets, [&](const display::ScreenView& view) {
+        ViewStats stats = _renderer.renderView(view, input.worldFromCave, filter);
+        result.geometryTriangles += stats.triangles;
+        // The warp, wall and cursor passes count into the view's triangles and draw calls.
+        FrameStats passes;
+        if (_warp) _warp->draw(_warpWalls, view, caveFromWorld, passes);
         // renderView leaves viewport, scissor and colour mask set for this view.
-        if (_walls) _walls->pass.draw(walls, view.frustum, caveFromWorld, _walls->store.sampler(), result.stats);
+        if (_walls) _walls->pass.draw(walls, view.frustum, caveFromWorld, _walls->store.sampler(), passes);
         if (input.hand) {
             if (!_cursor) _cursor = std::make_unique<HandCursorPass>();
-            _cursor->draw(*input.hand, view.frustum, result.stats);
+            _cursor->draw(*input.hand, view.frustum, passes);
         }
-        ViewStats& screen = result.perScreen[view.screen];
-        screen.cpuMs += msSince(viewStart);
-        screen.triangles += result.stats.triangles - before.triangles;
-        screen.drawCalls += result.stats.drawCalls - before.drawCalls;
-    }
-    glDisable(GL_SCISSOR_TEST);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        stats.triangles += passes.triangles;
+        stats.drawCalls += passes.drawCalls;
+        return stats;
+    });
+    result.perScreen = statsPerScreen(views, result.stats, _display.screens().size());
 }
 
 // Steps 1-3 and 5 of the header: selection, paging, what each wall draws, the error.
@@ -410,15 +407,16 @@ FrameResult Walkthrough::renderFrame(const FrameInput& input) {
     else
         result.cell = scenes::findCell(_description.cells, result.eyeWorld);  // reported only
     const std::vector<int> objects = visibleObjects(cells);
-    DrawFilter filter;
+    render::DrawFilter filter;
     filter.objects = &objects;
-    FrameLod lod;
+    render::FrameLod lod;
     if (_renderer.hasLods()) {
         // Over every screen, also those of other cluster ranks: each rank then picks the same
         // levels for what several draw, and the budget is the whole display's.
-        lod = _renderer.chooseLods(_display.views(input.head), input.worldFromCave, filter, _options.render.lodPixels,
-                                   input.triangleBudget > 0 ? input.triangleBudget : _options.triangleBudget,
-                                   _options.lodMaxPixels);
+        lod = render::chooseLods(_renderer.renderScene(), _display.views(input.head), input.worldFromCave, filter,
+                                 _options.render.lodPixels,
+                                 input.triangleBudget > 0 ? input.triangleBudget : _options.triangleBudget,
+                                 _options.lodMaxPixels);
         filter.lodLevels = &lod.levels;
         result.lodTolerancePx = lod.tolerancePx;
         result.lodErrorPx = lod.maxErrorPx;

@@ -90,7 +90,7 @@ struct WalkthroughOptions {
     Transition transition = Transition::Blend;  // Warp: structure behind textured walls warped
     double morphSeconds = 0.5;               // Warp: duration of a warp-morph, seconds, > 0
     // Levels of detail (render.lodPixels > 0): the geometry of every frame is drawn at the
-    // levels SceneRenderer::chooseLods picks for render.lodPixels, over all screens and eyes
+    // levels render::chooseLods picks for render.lodPixels, over all screens and eyes
     // at once. triangleBudget > 0 caps the triangles the scene renderer submits per frame (all
     // views; the wall, warp and cursor passes are not counted) by raising the tolerance
     // (seed 004's frame budget); 0: no cap.
@@ -190,7 +190,7 @@ private:
                                      std::optional<WallDraw> draw, std::vector<bool>& cells,
                                      std::vector<int>& morphCells, FrameResult& result);
     void measureError(glm::dvec3 eyeCave, FrameResult& result) const;
-    void drawViews(const FrameInput& input, const DrawFilter& filter, const std::vector<WallDraw>& walls,
+    void drawViews(const FrameInput& input, const render::DrawFilter& filter, const std::vector<WallDraw>& walls,
                    FrameResult& result);
     std::vector<display::ScreenView> renderedViews(const display::HeadPose& head) const;
     void present();
