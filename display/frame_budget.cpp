@@ -1,5 +1,7 @@
 #include "display/frame_budget.h"
 
+#include "display/timing.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -16,10 +18,7 @@ void FrameTimeBudget::update(double frameMs, std::size_t triangles) {
     _costs[_next] = frameMs / g;
     _next = (_next + 1) % kWindow;
     _count = std::min(_count + 1, kWindow);
-    double window[kWindow];
-    std::copy(_costs, _costs + _count, window);
-    std::nth_element(window, window + _count / 2, window + _count);
-    const double cost = window[_count / 2];
+    const double cost = median(std::span<const double>(_costs, static_cast<std::size_t>(_count)));
     const double next = std::pow(g, 1.0 - _gain) * std::pow(_target / cost, _gain);
     _budget = static_cast<std::size_t>(std::clamp(next, std::max(1.0, 0.5 * g), std::min(2.0 * g, 1e15)));
 }

@@ -8,8 +8,9 @@
 // Model: a frame of g triangles takes about a + b g milliseconds, a and b unknown and
 // drifting (other tenants slow a shared machine down in phases). Each frame gives a cost per
 // triangle u = m / g (fixed part included); the estimate û is the median of the last
-// kWindow of them, so one stalled frame (a page-in, a hiccup of the host) moves nothing while
-// a slow phase is followed within a few frames. The next budget is g^(1 - gain) (T / û)^gain,
+// kWindow of them (display/timing.h: nearest rank, the lower middle of an even count), so
+// one stalled frame (a page-in, a hiccup of the host) moves nothing while a slow phase is
+// followed within a few frames. The next budget is g^(1 - gain) (T / û)^gain,
 // within [g / 2, 2 g]. With gain 1 and the model exact this is T g / (a + b g), which converges
 // on the g with a + b g = T (each step shrinks the error by a / T). A frame below its budget
 // (light load) lets the next budget grow only from what it drew, so no credit builds up.

@@ -102,6 +102,16 @@ std::optional<glm::dvec3> Args::vec3(std::string_view flag) const {
     return v;
 }
 
+Error choiceError(std::string_view flag, const std::vector<std::string_view>& expected, std::string_view got) {
+    std::string list;
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        if (i > 0) list += expected.size() == 2 ? " or " : ", ";
+        list += expected[i];
+    }
+    return Error("--" + std::string(flag) + ": expected " + (expected.size() > 2 ? "one of " : "") + list + ", got '" +
+                 std::string(got) + "'");
+}
+
 const std::string& Args::positional(std::size_t i, std::string_view what) const {
     if (i >= _positional.size()) throw Error("missing argument: expected " + std::string(what));
     return _positional[i];

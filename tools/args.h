@@ -7,14 +7,19 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <initializer_list>
 #include <map>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace cavewall::tools {
+
+// "--flag: expected a or b, got 'x'" (or "expected one of a, b, c" for more than two words).
+Error choiceError(std::string_view flag, const std::vector<std::string_view>& expected, std::string_view got);
 
 class Args {
 public:
@@ -30,6 +35,19 @@ public:
     std::string getOr(std::string_view flag, std::string fallback) const;
     double number(std::string_view flag, double fallback, double lo, double hi) const;
     long integer(std::string_view flag, long fallback, long lo, long hi) const;
+    // The value whose word in `names` the flag gives, or `fallback` when the flag is absent.
+    // Anything else is an error naming the flag, the words it takes and what was given.
+    template <typename E, std::size_t N>
+    E choice(std::string_view flag, const std::array<std::pair<std::string_view, E>, N>& names, E fallback) const {
+        const std::optional<std::string> word = get(flag);
+        if (!word) return fallback;
+        std::vector<std::string_view> words;
+        for (const auto& [name, value] : names) {
+            if (name == *word) return value;
+            words.push_back(name);
+        }
+        throw choiceError(flag, words, *word);
+    }
     // "x,y,z" in metres (or any unit the flag states); all three finite.
     std::optional<glm::dvec3> vec3(std::string_view flag) const;
 

@@ -5,7 +5,7 @@
 #include "tools/args.h"
 #include "tools/commands.h"
 #ifdef CAVEWALL_HAVE_GL
-#include "tools/bench_driver.h"
+#include "app/bench/gl/driver.h"
 #endif
 
 #include <algorithm>
@@ -100,11 +100,11 @@ std::vector<double> alphaList(const std::string& text) {
 
 int runSceneBench(const Args& args) {
     const bool quick = args.has("quick");
-    BenchOptions o;
+    gl::BenchOptions o;
     o.scene = args.positional(0, "SCENE");
     const config::DisplayConfig display = config::loadDisplayConfig(args.getOr("display", "cave4"));
     o.resolution = static_cast<int>(args.integer("resolution", quick ? 128 : 256, 16, 4096));
-    o.display = withResolution(display, o.resolution);
+    o.display = gl::withResolution(display, o.resolution);
     if (auto path = args.get("path"))
         o.tracker = std::filesystem::is_regular_file(*path) ? "replay:" + *path : *path;
     o.frames = args.integer("frames", quick ? 24 : 120, 1, 100000);
@@ -126,9 +126,9 @@ int runSceneBench(const Args& args) {
     }
     if (auto cache = args.get("cache")) o.cache = *cache;
     const std::filesystem::path out = args.getOr("out", "bench-out");
-    const BenchReport report = runBenchmark(o);
-    writeReport(out, report);
-    std::cout << "\n" << markdownReport(report) << "\n" << (out / "bench.csv").string() << "\n"
+    const bench::BenchReport report = gl::runBenchmark(o);
+    bench::writeReport(out, report);
+    std::cout << "\n" << bench::markdownReport(report) << "\n" << (out / "bench.csv").string() << "\n"
               << (out / "bench.md").string() << "\n" << (out / "bench.png").string() << "\n";
     return 0;
 }

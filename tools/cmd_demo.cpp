@@ -1,8 +1,9 @@
+#include "app/gl/run_session.h"
 #include "config/display_config.h"
 #include "scenes/generate.h"
+#include "display/timing.h"
 #include "tools/args.h"
 #include "tools/commands.h"
-#include "tools/run_session.h"
 
 #include <cstdlib>
 #include <optional>
@@ -57,10 +58,10 @@ void row(std::ostream& r, const char* what, const A& walls, const std::optional<
     r << " | " << geometry << " |\n";
 }
 
-void writeReport(const std::filesystem::path& out, const RunOptions& o, const RunSummary& walls,
-                 const std::optional<RunSummary>& lod, const RunSummary& geometry) {
-    const double mw = median(walls.frameMs), mg = median(geometry.frameMs);
-    const double ml = lod ? median(lod->frameMs) : 0.0;
+void writeReport(const std::filesystem::path& out, const app::RunOptions& o, const app::RunSummary& walls,
+                 const std::optional<app::RunSummary>& lod, const app::RunSummary& geometry) {
+    const double mw = display::median(walls.frameMs), mg = display::median(geometry.frameMs);
+    const double ml = lod ? display::median(lod->frameMs) : 0.0;
     auto ifLod = [&](auto value) { return lod ? std::optional(value) : std::nullopt; };
     std::ofstream r(out / "report.md");
     r << "# cavewall demo\n\nThe generated plant on cave4 (" << o.display.screens[0].resolution.x << " x "
@@ -95,7 +96,7 @@ int runDemo(const std::vector<std::string>& words) {
     args.expectFlags({"out", "frames", "resolution", "triangles", "lod"});
     const std::filesystem::path out = args.getOr("out", "demo-out");
     const std::filesystem::path cache = cacheFolder();
-    RunOptions o;
+    app::RunOptions o;
     o.scene = ensurePlant(cache, static_cast<std::size_t>(args.integer("triangles", 2000000, 1000, 100000000)));
     o.display = config::loadDisplayConfig("cave4");
     const int px = static_cast<int>(args.integer("resolution", 256, 16, 4096));
@@ -103,7 +104,7 @@ int runDemo(const std::vector<std::string>& words) {
     o.tracker = "sim:walk?seed=1";
     o.frames = args.integer("frames", 240, 1, 1000000);
     o.guidePace = 5.0;
-    o.window = WindowMode::Auto;
+    o.window = app::WindowMode::Auto;
     o.plan.alphaDeg = 30.0;
     o.plan.minZoneSize = 2.0;
     o.plan.pixelsPerDegree = 2.0;
@@ -114,20 +115,20 @@ int runDemo(const std::vector<std::string>& words) {
     o.lodPixels = args.number("lod", 1.0, 0.0, 1e4);
 
     auto run = [&](const char* folder, bool walls, double lodPixels) {
-        RunOptions r = o;
+        app::RunOptions r = o;
         r.out = out / folder;
         r.walls = walls;
         r.lodPixels = lodPixels;
-        return runSession(r);
+        return gl::runSession(r);
     };
-    const RunSummary walls = run("walls", true, o.lodPixels);
-    const std::optional<RunSummary> lod = o.lodPixels > 0.0 ? std::optional(run("lod", false, o.lodPixels))
+    const app::RunSummary walls = run("walls", true, o.lodPixels);
+    const std::optional<app::RunSummary> lod = o.lodPixels > 0.0 ? std::optional(run("lod", false, o.lodPixels))
                                                             : std::nullopt;
-    const RunSummary geometry = run("geometry", false, 0.0);
+    const app::RunSummary geometry = run("geometry", false, 0.0);
     writeReport(out, o, walls, lod, geometry);
-    const double mw = median(walls.frameMs), mg = median(geometry.frameMs);
+    const double mw = display::median(walls.frameMs), mg = display::median(geometry.frameMs);
     std::cout << "demo: median frame time " << mw << " ms with walls" << (lod ? " and levels of detail" : "") << ", ";
-    if (lod) std::cout << median(lod->frameMs) << " ms full geometry with levels of detail, ";
+    if (lod) std::cout << display::median(lod->frameMs) << " ms full geometry with levels of detail, ";
     std::cout << mg << " ms full geometry, speed-up " << (mw > 0 ? mg / mw : 0.0) << "x; worst wall error "
               << walls.worstErrorDeg << " deg (" << walls.worstErrorPx << " px), worst level-of-detail error "
               << walls.worstLodErrorPx << " px\nGL_RENDERER: " << walls.renderer << "\nreport: "

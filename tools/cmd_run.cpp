@@ -1,7 +1,8 @@
+#include "app/gl/run_session.h"
 #include "config/json_reader.h"
+#include "display/timing.h"
 #include "tools/args.h"
 #include "tools/commands.h"
-#include "tools/run_session.h"
 
 #include <iostream>
 
@@ -73,17 +74,17 @@ int runRun(const std::vector<std::string>& words) {
                       "no-walls", "alpha", "min-zone", "ppd", "save-frames", "record", "cache", "budget",
                       "sync-paging", "out", "cluster", "cluster-timeout", "lod", "triangle-budget", "frame-budget-ms", "lod-max"});
     if (args.has("headless") && args.has("window")) throw Error("--headless and --window: expected one of them, got both");
-    RunOptions o;
+    app::RunOptions o;
     o.scene = args.require("scene");
     o.display = config::loadDisplayConfig(args.getOr("display", "cave4"));
     o.tracker = args.require("tracker");
     o.frames = args.integer("frames", 0, 1, 10000000);
     if (!args.has("frames")) throw Error("--frames: required flag is missing");
     o.out = args.require("out");
-    o.nav = args.getOr("nav", "");
+    o.nav = args.choice("nav", app::kNavigationNames, app::Navigation::Auto);
     o.guidePace = args.number("pace", 1.0, 0.0, 100.0);
-    o.window = args.has("window") ? WindowMode::Window : WindowMode::Headless;
-    o.transition = args.getOr("transition", "blend");
+    o.window = args.has("window") ? app::WindowMode::Window : app::WindowMode::Headless;
+    o.transition = args.choice("transition", app::kTransitionNames, app::Transition::Blend);
     o.walls = !args.has("no-walls");
     o.plan.alphaDeg = args.number("alpha", o.plan.alphaDeg, 1e-3, 90.0);
     o.plan.minZoneSize = args.number("min-zone", o.plan.minZoneSize, 1e-3, 1e4);
@@ -97,20 +98,13 @@ int runRun(const std::vector<std::string>& words) {
     o.triangleBudget = static_cast<std::size_t>(args.integer("triangle-budget", 0, 0, 1000000000));
     o.frameBudgetMs = args.number("frame-budget-ms", 0.0, 0.0, 1e5);
     o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);
-    if (o.triangleBudget > 0 && !(o.lodPixels > 0.0))
-        throw Error("--triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod " +
-                    config::formatNumber(o.lodPixels));
-    if (o.frameBudgetMs > 0 && !(o.lodPixels > 0.0))
-        throw Error("--frame-budget-ms: needs levels of detail (--lod PX with PX > 0), got --lod " +
-                    config::formatNumber(o.lodPixels));
-    if (o.frameBudgetMs > 0 && o.triangleBudget > 0)
-        throw Error("--frame-budget-ms and --triangle-budget: expected one of them, got both");
+    app::validate(o);
     o.cluster = args.has("cluster");
     o.clusterTimeout = args.number("cluster-timeout", o.clusterTimeout, 0.1, 3600.0);
-    const RunSummary s = runSession(o);
+    const app::RunSummary s = gl::runSession(o);
     if (s.rank != 0) return 0;
     std::cout << "run: " << s.frameMs.size() << " frames on " << s.renderer << (s.walls ? ", walls" : ", geometry only")
-              << "; median frame " << median(s.frameMs) << " ms; worst error " << s.worstErrorDeg << " deg ("
+              << "; median frame " << display::median(s.frameMs) << " ms; worst error " << s.worstErrorDeg << " deg ("
               << s.worstErrorPx << " px); page-ins " << s.pageIns << ", misses " << s.misses << "\n"
               << (o.out / "frames.csv").string() << "\n";
     return 0;

@@ -1,5 +1,6 @@
 #include "display/gl/scene_renderer.h"
 
+#include "display/timing.h"
 #include "display/gl/shader.h"
 #include "display/gl/view_loop.h"
 #include "render/lod_choice.h"
@@ -19,9 +20,7 @@ constexpr const char* kProgramName = "scene";
 
 using Clock = std::chrono::steady_clock;
 
-double msSince(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+using display::msSince;
 
 int alphaModeIndex(scenes::AlphaMode mode) {
     switch (mode) {

@@ -1,6 +1,7 @@
 // `cavewall bench SCENE --quick` end to end on a small generated plant (headless GL): every mode
 // row is present with finite numbers, and bad input gives clear errors.
 #include "tests/cli/run_cli.h"
+#include "tests/support/csv_table.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -25,13 +26,6 @@ fs::path outputDir() {
     return fs::path(dir ? dir : "/tmp") / "bench_cli";
 }
 
-std::vector<std::string> split(const std::string& line) {
-    std::vector<std::string> out;
-    std::stringstream s(line);
-    for (std::string field; std::getline(s, field, ',');) out.push_back(field);
-    return out;
-}
-
 TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     const fs::path root = outputDir();
     const fs::path plant = root / "plant20k";
@@ -45,38 +39,27 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
                                      "--warp-alpha", "30"});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_THAT(r.out, HasSubstr("| 1 | full |"));
-    std::ifstream csv(out / "bench.csv");
-    std::string line;
-    ASSERT_TRUE(std::getline(csv, line));
-    const std::vector<std::string> header = split(line);
-    const auto column = [&](const std::string& name) {
-        return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
-    };
-    const std::size_t lodColumn = column("lod_px"), budgetColumn = column("triangle_budget");
-    const std::size_t frameColumn = column("frame_budget_ms");
-    ASSERT_LT(frameColumn, header.size());
+    const test::CsvTable csv = test::readCsv(out / "bench.csv");
     std::map<std::string, int> rows;
-    while (std::getline(csv, line)) {
-        const auto f = split(line);
-        ASSERT_EQ(f.size(), header.size()) << line;
-        const bool lod = std::strtod(f[lodColumn].c_str(), nullptr) > 0.0;
-        const bool budget = std::strtod(f[budgetColumn].c_str(), nullptr) > 0.0;
-        const bool frame = std::strtod(f[frameColumn].c_str(), nullptr) > 0.0;
-        const std::string key = f[0] + (f[0] == "walls" ? " " + f[1] + " " + f[2] : "") + (lod ? " lod" : "") +
-                                (budget ? " budget" : "") + (frame ? " frame" : "");
+    for (const test::CsvRow& row : csv) {
+        const std::string mode = row.at("mode");
+        const bool lod = row.number("lod_px") > 0.0;
+        const bool budget = row.number("triangle_budget") > 0.0;
+        const bool frame = row.number("frame_budget_ms") > 0.0;
+        const std::string key = mode + (mode == "walls" ? " " + row.at("alpha_deg") + " " + row.at("transition") : "") +
+                                (lod ? " lod" : "") + (budget ? " budget" : "") + (frame ? " frame" : "");
         ++rows[key];
         SCOPED_TRACE(key);
-        for (std::size_t i = 3; i < f.size(); ++i) {
-            const double v = std::strtod(f[i].c_str(), nullptr);
+        for (const std::string& name : csv.columns) {
+            if (name == "mode" || name == "alpha_deg" || name == "transition") continue;
+            const double v = row.number(name);
             // The reference's PSNR against itself is +infinity; every other number is finite.
-            if (header[i] == "psnr_db" && f[0] == "full" && !lod) EXPECT_TRUE(std::isinf(v) && v > 0);
-            else EXPECT_TRUE(std::isfinite(v)) << header[i] << " = " << f[i];
-            EXPECT_GE(v, 0.0) << header[i];
+            if (name == "psnr_db" && mode == "full" && !lod) EXPECT_TRUE(std::isinf(v) && v > 0);
+            else EXPECT_TRUE(std::isfinite(v)) << name << " = " << row.at(name);
+            EXPECT_GE(v, 0.0) << name;
         }
-        EXPECT_GT(std::strtod(f[3].c_str(), nullptr), 0.0) << "frame_ms_p50";
-        if (f[0] == "walls") {
-            EXPECT_GT(std::strtod(f[14].c_str(), nullptr), 0.0) << "textures";
-        }
+        EXPECT_GT(row.number("frame_ms_p50"), 0.0);
+        if (mode == "walls") EXPECT_GT(row.number("textures"), 0.0);
     }
     // With levels of detail (--lod defaults to 1 px): full, near and every blend mode again,
     // every blend mode with them under a triangle budget, and every blend mode with them held
@@ -90,20 +73,13 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     EXPECT_TRUE(fs::is_regular_file(out / "bench.png"));
     EXPECT_TRUE(fs::is_regular_file(out / "bench.md"));
     // Per screen: every mode times and counts each of cave4's four screens.
-    std::ifstream screens(out / "bench_screens.csv");
-    ASSERT_TRUE(std::getline(screens, line));
-    const std::vector<std::string> columns = split(line);
-    ASSERT_EQ(columns[7], "cpu_ms_p50");
-    ASSERT_EQ(columns[10], "triangles");
-    int screenRows = 0;
-    while (std::getline(screens, line)) {
-        const auto f = split(line);
-        ASSERT_EQ(f.size(), columns.size()) << line;
-        EXPECT_GT(std::strtod(f[7].c_str(), nullptr), 0.0) << line;   // every screen was drawn
-        EXPECT_TRUE(std::isfinite(std::strtod(f[10].c_str(), nullptr))) << line;
-        ++screenRows;
+    const test::CsvTable screens = test::readCsv(out / "bench_screens.csv");
+    for (const test::CsvRow& row : screens) {
+        EXPECT_GT(row.number("cpu_ms_p50"), 0.0) << row.at("screen");  // every screen was drawn
+        EXPECT_TRUE(std::isfinite(row.number("triangles"))) << row.at("screen");
     }
-    EXPECT_EQ(screenRows, 15 * 4);
+    const std::size_t screenRows = screens.size();
+    EXPECT_EQ(screenRows, 15u * 4);
 }
 
 TEST(BenchSceneCli, BadInputIsAClearError) {

@@ -1,5 +1,5 @@
-// Image metrics, time percentiles and the Pareto front of `cavewall bench` (tools/bench_metrics.h).
-#include "tools/bench_metrics.h"
+// Image metrics, time percentiles and the Pareto front of `cavewall bench` (app/bench/metrics.h).
+#include "app/bench/metrics.h"
 
 #include "config/error.h"
 
@@ -10,7 +10,7 @@
 #include <limits>
 #include <random>
 
-namespace cavewall::tools {
+namespace cavewall::bench {
 namespace {
 
 using ::testing::HasSubstr;
@@ -148,4 +148,4 @@ TEST(BenchMetrics, ParetoFront) {
 }
 
 }  // namespace
-}  // namespace cavewall::tools
+}  // namespace cavewall::bench

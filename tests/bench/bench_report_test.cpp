@@ -1,8 +1,10 @@
-// bench.csv columns, bench.md and the plot of `cavewall bench` (tools/bench_report.h).
-#include "tools/bench_plot.h"
-#include "tools/bench_report.h"
+// bench.csv columns, bench.md and the plot of `cavewall bench` (app/bench/report.h).
+#include "app/bench/plot.h"
+#include "app/bench/report.h"
 
 #include "scenes/image_io.h"
+#include "tests/support/csv_table.h"
+#include "tests/support/files.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -12,24 +14,19 @@
 #include <limits>
 #include <sstream>
 
-namespace cavewall::tools {
+namespace cavewall::bench {
 namespace {
 
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-std::vector<std::string> split(const std::string& line) {
-    std::vector<std::string> out;
-    std::stringstream s(line);
-    for (std::string field; std::getline(s, field, ',');) out.push_back(field);
-    return out;
-}
+using test::parseCsv;
 
-ModeResult sample(std::string mode, double alpha, double p50, double rmse) {
+ModeResult sample(Mode mode, double alpha, double p50, double rmse) {
     ModeResult m;
-    m.mode = std::move(mode);
+    m.mode = mode;
     m.alphaDeg = alpha;
-    m.transition = alpha > 0 ? "blend" : "none";
+    if (alpha > 0) m.transition = app::Transition::Blend;
     m.frameMs = {p50, p50 * 1.1, p50 * 1.2, p50};
     m.error.rmse = rmse;
     m.error.mse = rmse * rmse;
@@ -51,25 +48,25 @@ TEST(BenchReport, CsvStartsWithTheRequiredColumns) {
 }
 
 TEST(BenchReport, RowsMatchTheHeader) {
-    const auto header = split(csvHeader());
-    const ModeResult m = sample("walls", 2.5, 12.0, 0.01);
-    const auto row = split(csvRow(m));
-    ASSERT_EQ(row.size(), header.size());
-    EXPECT_EQ(row[0], "walls");
-    EXPECT_EQ(row[1], "2.5");
-    EXPECT_EQ(row[2], "blend");
-    EXPECT_EQ(row[3], "12");
-    EXPECT_EQ(row[7], "40");  // PSNR of RMSE 0.01 = 20 log10(100)
+    // parseCsv fails when a row's cell count differs from the header's.
+    const ModeResult m = sample(Mode::Walls, 2.5, 12.0, 0.01);
+    const auto row = parseCsv(csvHeader() + "\n" + csvRow(m) + "\n")[0];
+    EXPECT_EQ(row.at("mode"), "walls");
+    EXPECT_EQ(row.at("alpha_deg"), "2.5");
+    EXPECT_EQ(row.at("transition"), "blend");
+    EXPECT_EQ(row.at("frame_ms_p50"), "12");
+    EXPECT_EQ(row.at("psnr_db"), "40");  // PSNR of RMSE 0.01 = 20 log10(100)
     // The reference has infinite PSNR: written as "inf", which strtod reads back.
-    const auto full = split(csvRow(sample("full", 0, 30.0, 0.0)));
-    EXPECT_EQ(full[7], "inf");
-    EXPECT_TRUE(std::isinf(std::strtod(full[7].c_str(), nullptr)));
+    const auto full = parseCsv(csvHeader() + "\n" + csvRow(sample(Mode::Full, 0, 30.0, 0.0)) + "\n")[0];
+    EXPECT_EQ(full.at("psnr_db"), "inf");
+    EXPECT_EQ(full.at("transition"), "none");
+    EXPECT_TRUE(std::isinf(full.number("psnr_db")));
 }
 
 TEST(BenchReport, MarkdownHasOneRowPerMode) {
     BenchReport report;
     report.header = {"display: cave4"};
-    report.modes = {sample("full", 0, 30.0, 0.0), sample("walls", 10, 3.0, 0.02)};
+    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), sample(Mode::Walls, 10, 3.0, 0.02)};
     const std::string md = markdownReport(report);
     EXPECT_THAT(md, HasSubstr("- display: cave4\n"));
     EXPECT_THAT(md, HasSubstr("| 1 | full | 30 / 33 / 36 |"));
@@ -78,16 +75,16 @@ TEST(BenchReport, MarkdownHasOneRowPerMode) {
 
 TEST(BenchReport, TargetsNameTheFastestWallsModeAbove30Db) {
     BenchReport report;
-    ModeResult fastButBad = sample("walls", 20, 1.0, 0.1);  // PSNR 20 dB: not eligible
+    ModeResult fastButBad = sample(Mode::Walls, 20, 1.0, 0.1);  // PSNR 20 dB: not eligible
     // Pooled 20 dB but a mean of 30.5 dB (images of 11 and 50 dB, say): eligible, slower.
-    ModeResult meanOnly = sample("walls", 15, 4.0, 0.1);
+    ModeResult meanOnly = sample(Mode::Walls, 15, 4.0, 0.1);
     meanOnly.error.meanPsnrDb = 30.5;
     meanOnly.speedup = 7.5;
     fastButBad.speedup = 30.0;
-    ModeResult good = sample("walls", 10, 2.0, 0.01);       // PSNR 40 dB
+    ModeResult good = sample(Mode::Walls, 10, 2.0, 0.01);       // PSNR 40 dB
     good.speedup = 15.0;                                     // p99/p50 = 1.2 from sample()
-    ModeResult near = sample("near", 0, 1.6, 0.05);
-    report.modes = {sample("full", 0, 30.0, 0.0), near, fastButBad, meanOnly, good};
+    ModeResult near = sample(Mode::Near, 0, 1.6, 0.05);
+    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), near, fastButBad, meanOnly, good};
     const auto lines = targetLines(report);
     ASSERT_EQ(lines.size(), 2u);
     EXPECT_THAT(lines[0], HasSubstr("walls a=10 blend, speed-up 15 (>= 10: met)"));
@@ -96,32 +93,31 @@ TEST(BenchReport, TargetsNameTheFastestWallsModeAbove30Db) {
     EXPECT_THAT(lines[0], HasSubstr("triangles drawn varying by 1.5"));  // 1500 / 1000
     EXPECT_THAT(lines[1], HasSubstr("1.25x the limit's"));  // 2.0 / 1.6
     EXPECT_THAT(lines[1], HasSubstr("<= 1.2: not met"));
-    report.modes = {sample("full", 0, 30.0, 0.0), near, fastButBad, meanOnly};
+    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), near, fastButBad, meanOnly};
     EXPECT_THAT(targetLines(report)[0], HasSubstr("walls a=15 blend, speed-up 7.5 (>= 10: not met)"));
     EXPECT_THAT(targetLines(report)[0], HasSubstr("PSNR 30.5 dB mean (20 dB pooled)"));
-    report.modes = {sample("full", 0, 30.0, 0.0), fastButBad};
+    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), fastButBad};
     EXPECT_THAT(targetLines(report), ::testing::ElementsAre(HasSubstr("no walls mode reaches a mean PSNR >= 30 dB")));
 }
 
 TEST(BenchReport, WritesFilesAndMarksTheFrontInThePlot) {
-    const char* dir = std::getenv("CAVEWALL_TEST_OUTPUT");
-    const std::filesystem::path folder = std::filesystem::path(dir ? dir : "/tmp") / "bench_report";
-    std::filesystem::remove_all(folder);
+    const test::TempFolder folder("bench_report");
     BenchReport report;
     // full and the fast walls mode form the front; the slow, worse one is dominated.
-    report.modes = {sample("full", 0, 30.0, 0.0), sample("walls", 10, 3.0, 0.02), sample("walls", 20, 5.0, 0.05)};
-    const auto files = writeReport(folder, report);
+    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), sample(Mode::Walls, 10, 3.0, 0.02), sample(Mode::Walls, 20, 5.0, 0.05)};
+    const auto files = writeReport(folder.path(), report);
     ASSERT_EQ(files.size(), 5u);
-    std::ifstream framesCsv(folder / "bench_frames.csv");
-    std::vector<std::string> frameLines;
-    for (std::string line; std::getline(framesCsv, line);) frameLines.push_back(line);
-    ASSERT_EQ(frameLines.size(), 1u + 3 * 2);  // header + 2 frames per mode
-    EXPECT_EQ(frameLines[0], "mode,frame,frame_ms,triangles,draw_calls");
-    EXPECT_EQ(frameLines[4], "walls a=10 blend,1,3.6,1500,4");
-    std::ifstream csv(folder / "bench.csv");
-    int lines = 0;
-    for (std::string line; std::getline(csv, line);) ++lines;
-    EXPECT_EQ(lines, 4);  // header + 3 modes
+    const test::CsvTable frames = test::readCsv(folder / "bench_frames.csv");
+    ASSERT_EQ(frames.size(), 3u * 2);  // 2 frames per mode
+    EXPECT_EQ(frames.columns, (std::vector<std::string>{"mode", "frame", "frame_ms", "triangles", "draw_calls"}));
+    // The second mode's second frame: 1.2 x its p50 of 3 ms.
+    EXPECT_EQ(frames[3].at("mode"), "walls a=10 blend");
+    EXPECT_EQ(frames[3].at("frame"), "1");
+    EXPECT_EQ(frames[3].at("frame_ms"), "3.6");
+    EXPECT_EQ(frames[3].at("triangles"), "1500");
+    const test::CsvTable modes = test::readCsv(folder / "bench.csv");
+    EXPECT_EQ(modes.column("mode"), (std::vector<std::string>{"full", "walls", "walls"}));
+    EXPECT_EQ(modes.column("alpha_deg"), (std::vector<std::string>{"0", "10", "20"}));
     const scenes::Image png = scenes::readImage(folder / "bench.png");
     EXPECT_EQ(png.width, 640);
     EXPECT_EQ(png.height, 420);
@@ -147,4 +143,4 @@ TEST(BenchPlot, DigitsAreDrawn) {
 }
 
 }  // namespace
-}  // namespace cavewall::tools
+}  // namespace cavewall::bench

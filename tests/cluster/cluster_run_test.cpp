@@ -1,9 +1,13 @@
 // Cluster mode end to end: `mpirun -np 4 cavewall run --cluster` on loopback renders the same
 // frames as a single-process run, and a rank that dies or stops answering ends every rank with
 // a message within a bounded time.
+#include "tests/support/csv_table.h"
+#include "tests/support/files.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
@@ -64,28 +68,24 @@ int finish(const Proc& p, double seconds) {
     return -1;
 }
 
-std::string slurp(const fs::path& f) {
-    std::ifstream in(f, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
+using cavewall::test::readCsv;
+using cavewall::test::readFile;
+
+// A /proc file's bytes, or nothing when the process is gone (or not ours to read).
+std::string procFile(const fs::path& file) {
+    try {
+        return readFile(file);
+    } catch (const std::exception&) {
+        return {};
+    }
 }
 
-std::vector<std::string> column(const fs::path& csv, const std::string& name) {
-    std::istringstream in(slurp(csv));
-    std::string line, cell;
-    std::getline(in, line);
-    std::istringstream header(line);
-    int index = -1;
-    for (int i = 0; std::getline(header, cell, ','); ++i)
-        if (cell == name) index = i;
-    std::vector<std::string> out;
-    while (std::getline(in, line)) {
-        std::istringstream row(line);
-        for (int i = 0; std::getline(row, cell, ','); ++i)
-            if (i == index) out.push_back(cell);
-    }
-    return out;
+// Complete rows written so far to a CSV that a running process is appending to (0 before
+// the file exists).
+long rowsWritten(const fs::path& csv) {
+    if (!fs::exists(csv)) return 0;
+    const std::string text = readFile(csv);
+    return std::max(0L, static_cast<long>(std::count(text.begin(), text.end(), '\n')) - 1);
 }
 
 // A small generated plant with virtual walls, made once.
@@ -94,7 +94,7 @@ const fs::path& smallPlant() {
         fs::create_directories(kWork);
         const Proc p = start({CAVEWALL_EXE, "generate", "plant", "--triangles", "20000", "--seed", "3", "--out",
                               (kWork / "plant").string()}, "generate");
-        EXPECT_EQ(finish(p, 120), 0) << slurp(p.err);
+        EXPECT_EQ(finish(p, 120), 0) << readFile(p.err);
         return kWork / "plant" / "scene.json";
     }();
     return scene;
@@ -112,18 +112,19 @@ TEST(ClusterRun, FourRanksRenderTheSameFramesAsOneProcess) {
     std::vector<std::string> single{CAVEWALL_EXE};
     for (const auto& a : runArgs(kWork / "single")) single.push_back(a);
     const Proc one = start(single, "single");
-    ASSERT_EQ(finish(one, 600), 0) << slurp(one.err);
+    ASSERT_EQ(finish(one, 600), 0) << readFile(one.err);
 
     std::vector<std::string> mpi{"mpirun", "--oversubscribe", "-np", "4", CAVEWALL_EXE};
     for (const auto& a : runArgs(kWork / "cluster")) mpi.push_back(a);
     mpi.push_back("--cluster");
     const Proc four = start(mpi, "cluster");
-    ASSERT_EQ(finish(four, 600), 0) << slurp(four.err) << slurp(four.out);
+    ASSERT_EQ(finish(four, 600), 0) << readFile(four.err) << readFile(four.out);
 
     // Same poses, cells and zones, frame by frame.
+    const auto oneCsv = readCsv(kWork / "single" / "frames.csv"), fourCsv = readCsv(kWork / "cluster" / "frames.csv");
     for (const char* c : {"head_x", "head_y", "head_z", "world_x", "world_z", "cell", "zone", "max_err_deg"}) {
         SCOPED_TRACE(c);
-        EXPECT_EQ(column(kWork / "single" / "frames.csv", c), column(kWork / "cluster" / "frames.csv", c));
+        EXPECT_EQ(oneCsv.column(c), fourCsv.column(c));
     }
     // Byte-equal images in the same layout.
     int compared = 0;
@@ -131,11 +132,11 @@ TEST(ClusterRun, FourRanksRenderTheSameFramesAsOneProcess) {
         if (!e.is_regular_file()) continue;
         const fs::path other = kWork / "cluster" / "frames" / fs::relative(e.path(), kWork / "single" / "frames");
         ASSERT_TRUE(fs::exists(other)) << other;
-        EXPECT_TRUE(slurp(e.path()) == slurp(other)) << other << " differs";
+        EXPECT_TRUE(readFile(e.path()) == readFile(other)) << other << " differs";
         ++compared;
     }
     EXPECT_EQ(compared, 2 * 5);  // 2 saved frames x (4 screens + fold-out)
-    EXPECT_FALSE(column(kWork / "cluster" / "frames.csv", "sync_ms").empty());
+    EXPECT_FALSE(fourCsv.column("sync_ms").empty());
 }
 
 // Finds the PID of the cavewall process of MPI rank `rank` among the children of `group`.
@@ -143,8 +144,8 @@ pid_t rankPid(int rank) {
     for (const auto& e : fs::directory_iterator("/proc")) {
         const std::string name = e.path().filename();
         if (name.find_first_not_of("0123456789") != std::string::npos) continue;
-        const std::string env = slurp(e.path() / "environ");
-        const std::string cmd = slurp(e.path() / "cmdline");
+        const std::string env = procFile(e.path() / "environ");  // the process may end meanwhile
+        const std::string cmd = procFile(e.path() / "cmdline");
         if (cmd.find("cavewall") == std::string::npos || cmd.find("mpirun") == 0) continue;
         if (env.find(std::string("OMPI_COMM_WORLD_RANK=") + std::to_string(rank) + '\0') != std::string::npos &&
             env.find(kWork.string()) != std::string::npos)
@@ -166,15 +167,15 @@ void expectEndsAllRanks(int signal, const char* message) {
     pid_t victim = -1;
     for (int i = 0; i < 600 && victim < 0; ++i) {  // until rank 2 is up and frames are flowing
         std::this_thread::sleep_for(std::chrono::milliseconds(100));
-        if (column(out / "frames.csv", "frame").size() >= 2) victim = rankPid(2);
+        if (rowsWritten(out / "frames.csv") >= 2) victim = rankPid(2);
     }
-    ASSERT_GT(victim, 0) << slurp(p.err);
+    ASSERT_GT(victim, 0) << readFile(p.err);
     kill(victim, signal);
     const int code = finish(p, 60);  // bounded: 3 s timeout plus MPI's own teardown
     if (signal == SIGSTOP) kill(victim, SIGKILL);
     EXPECT_NE(code, -1) << "mpirun did not end within 60 s";
     EXPECT_NE(code, 0);
-    EXPECT_THAT(slurp(p.err) + slurp(p.out), HasSubstr(message));
+    EXPECT_THAT(readFile(p.err) + readFile(p.out), HasSubstr(message));
 }
 
 TEST(ClusterRun, ARankThatDiesEndsEveryRank) { expectEndsAllRanks(SIGKILL, "rank 2"); }

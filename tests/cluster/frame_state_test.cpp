@@ -1,8 +1,8 @@
-#include "tools/cluster.h"
+#include "app/cluster.h"
 
 #include <gtest/gtest.h>
 
-namespace cavewall::tools {
+namespace cavewall::app {
 namespace {
 
 TEST(FrameState, RoundTripsExactly) {
@@ -41,4 +41,4 @@ TEST(FrameState, RejectsTruncatedAndPaddedBytes) {
 }
 
 }  // namespace
-}  // namespace cavewall::tools
+}  // namespace cavewall::app

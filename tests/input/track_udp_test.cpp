@@ -28,18 +28,22 @@ std::filesystem::path outputDir() {
     return p;
 }
 
-// Waits at most `limit` for the child; kills it if it overruns (the test then fails, never hangs).
-int waitBounded(pid_t pid, std::chrono::seconds limit) {
-    const auto start = std::chrono::steady_clock::now();
+// Sends `packet(i)` at about 100 Hz (a tracker's rate) until the child exits, so however late
+// the child starts listening on a loaded machine it gets packets for its whole run; kills it
+// after `limit` (the test then fails, never hangs). Returns the exit code, -1 on timeout.
+template <class Packet>
+int sendUntilExit(pid_t pid, std::chrono::seconds limit, Packet packet) {
+    const auto deadline = std::chrono::steady_clock::now() + limit;
     int status = 0;
-    while (waitpid(pid, &status, WNOHANG) == 0) {
-        if (std::chrono::steady_clock::now() - start > limit) {
+    for (int i = 0; waitpid(pid, &status, WNOHANG) == 0; ++i) {
+        if (std::chrono::steady_clock::now() > deadline) {
             kill(pid, SIGKILL);
             waitpid(pid, &status, 0);
             ADD_FAILURE() << "cavewall track did not finish in time";
             return -1;
         }
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        packet(i);
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));  // the tracker's pace
     }
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
@@ -68,13 +72,14 @@ TEST(TrackCli, DTrackSenderDrivesTheHeadThroughCalibration) {
     pid_t pid = 0;
     ASSERT_EQ(posix_spawn(&pid, CAVEWALL_EXE, &actions, nullptr, argv.data(), environ), 0);
     posix_spawn_file_actions_destroy(&actions);
-    // Head (body 1) at (100, 1600, -200) mm for 1.5 s at 100 Hz, with a garbage datagram every 10th.
-    for (int i = 0; i < 150; ++i) {
-        sendUdp("127.0.0.1", port, "fr " + std::to_string(i) + "\n6d 1 [1 1.0][100 1600 -200 0 0 0][1 0 0 0 1 0 0 0 1]\n");
-        if (i % 10 == 0) sendUdp("127.0.0.1", port, "\x7f garbage");
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    ASSERT_EQ(waitBounded(pid, std::chrono::seconds(20)), 0);
+    // Head (body 1) at (100, 1600, -200) mm at 100 Hz while the child runs, with a garbage
+    // datagram every 10th.
+    ASSERT_EQ(sendUntilExit(pid, std::chrono::seconds(60), [&](int i) {
+                  sendUdp("127.0.0.1", port,
+                          "fr " + std::to_string(i) + "\n6d 1 [1 1.0][100 1600 -200 0 0 0][1 0 0 0 1 0 0 0 1]\n");
+                  if (i % 10 == 0) sendUdp("127.0.0.1", port, "\x7f garbage");
+              }),
+              0);
     std::ifstream in(csv);
     std::string line, lastTracked;
     std::getline(in, line);

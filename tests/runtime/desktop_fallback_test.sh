@@ -16,7 +16,9 @@ xdotool keydown w
 sleep 1.2
 xdotool keyup w
 wait "$pid" || { cat "$out.log"; exit 1; }
-# Last row: world_x (column 6) unchanged, world_z (column 8) at least 0.2 m ahead.
-tail -n 1 "$out/frames.csv" | awk -F, '{
-  if ($6 + 0 != 0 || $8 + 0 > -0.2) { print "expected a flight forward, got world x " $6 ", z " $8; exit 1 }
-  print "flew to z = " $8 }'
+# Last row: world_x unchanged, world_z at least 0.2 m ahead (columns found by their names).
+awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next } { x = $col["world_x"]; z = $col["world_z"] }
+  END {
+    if (!("world_x" in col) || !("world_z" in col)) { print "frames.csv: no world_x or world_z column"; exit 1 }
+    if (x + 0 != 0 || z + 0 > -0.2) { print "expected a flight forward, got world x " x ", z " z; exit 1 }
+    print "flew to z = " z }' "$out/frames.csv"

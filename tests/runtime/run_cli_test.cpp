@@ -2,6 +2,8 @@
 // files and images, clear errors for bad flags, replay determinism and the DTrack loopback.
 #include "input/network_source.h"
 #include "tests/cli/run_cli.h"
+#include "tests/support/csv_table.h"
+#include "tests/support/files.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -49,31 +51,6 @@ std::string cacheDir() {
 
 std::string testDisplay() { return std::string(CAVEWALL_SOURCE_DIR) + "/tests/gl/cave4_128.json"; }
 
-std::vector<std::map<std::string, std::string>> readCsv(const fs::path& file) {
-    std::ifstream in(file);
-    std::string line;
-    std::getline(in, line);
-    std::vector<std::string> header;
-    std::stringstream h(line);
-    for (std::string cell; std::getline(h, cell, ',');) header.push_back(cell);
-    std::vector<std::map<std::string, std::string>> rows;
-    while (std::getline(in, line)) {
-        std::stringstream s(line);
-        std::map<std::string, std::string> row;
-        std::size_t i = 0;
-        for (std::string cell; std::getline(s, cell, ',') && i < header.size(); ++i) row[header[i]] = cell;
-        rows.push_back(row);
-    }
-    return rows;
-}
-
-std::string slurp(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 std::vector<std::string> wallRun(const fs::path& out, const std::string& tracker, long frames) {
     return {"run", "--scene", smallPlant().string(), "--display", testDisplay(), "--tracker", tracker,
             "--frames", std::to_string(frames), "--alpha", "20", "--min-zone", "3", "--ppd", "2",
@@ -91,7 +68,7 @@ TEST(RunCli, WritesFramesWallsAndImagesOnTheSmallPlant) {
     for (const char* column : {"frame", "t", "head_x", "head_y", "head_z", "world_x", "world_y", "world_z", "cell",
                                "zone", "frame_ms", "cpu_ms", "gpu_ms", "triangles", "draw_calls", "textures_resident",
                                "page_ins", "misses", "max_err_deg", "max_err_px"})
-        EXPECT_EQ(rows[0].count(column), 1u) << column;
+        EXPECT_EQ(rows.hasColumn(column), true) << column;
     for (const auto& row : rows) {
         SCOPED_TRACE(row.at("frame"));
         // The walk path starts in cell N1 at x = -37; 40 frames at 3 m/s (2 m) stay in it.
@@ -124,7 +101,7 @@ TEST(RunCli, WritesFramesWallsAndImagesOnTheSmallPlant) {
 
 TEST(RunCli, TransitionWarpRunsAndReportsWarpFallbacks) {
     // The same deterministic walk (seeded simulator, synchronous paging) with blend and warp.
-    std::map<std::string, std::vector<std::map<std::string, std::string>>> runs;
+    std::map<std::string, CsvTable> runs;
     for (const char* transition : {"blend", "warp"}) {
         const fs::path out = outputDir(std::string("transition-") + transition);
         std::vector<std::string> args = wallRun(out, "sim:walk?seed=2", 30);
@@ -138,7 +115,7 @@ TEST(RunCli, TransitionWarpRunsAndReportsWarpFallbacks) {
     for (std::size_t i = 0; i < 30; ++i) {
         SCOPED_TRACE(i);
         const auto& warp = runs["warp"][i];
-        ASSERT_EQ(warp.count("warp_fallbacks"), 1u);
+        ASSERT_EQ(warp.has("warp_fallbacks"), true);
         // The walk stays metres away from every wall plane (walls are geometry within the first
         // zone anyway), where the warp is well-conditioned: no fallback.
         EXPECT_EQ(warp.at("warp_fallbacks"), "0");
@@ -194,7 +171,7 @@ TEST(RunCli, LevelsOfDetailReportTheirToleranceErrorAndBudget) {
     // The same walk with full detail, with levels of detail at 1 px, and with a triangle budget
     // of half the 1 px frames' median: frames.csv reports the tolerance used and the largest
     // error drawn, which never exceeds it.
-    std::map<std::string, std::vector<std::map<std::string, std::string>>> runs;
+    std::map<std::string, CsvTable> runs;
     for (const auto& [name, extra] : std::vector<std::pair<std::string, std::vector<std::string>>>{
              {"full", {}}, {"lod", {"--lod", "1"}}}) {
         const fs::path out = outputDir("lod-" + name);
@@ -287,13 +264,13 @@ TEST(RunCli, ReplayReproducesPosesAndFramesExactly) {
             SCOPED_TRACE(std::to_string(i) + " " + column);
             EXPECT_EQ(rowsA[i].at(column), rowsB[i].at(column));
         }
-    EXPECT_EQ(slurp(first / "walls.csv"), slurp(second / "walls.csv"));
+    EXPECT_EQ(readFile(first / "walls.csv"), readFile(second / "walls.csv"));
     for (const char* frame : {"00000", "00010", "00020"})
         for (const char* image : {"front.png", "left.png", "right.png", "floor.png"}) {
             SCOPED_TRACE(std::string(frame) + "/" + image);
-            const std::string pa = slurp(first / "frames" / frame / image);
+            const std::string pa = readFile(first / "frames" / frame / image);
             EXPECT_FALSE(pa.empty());
-            EXPECT_TRUE(pa == slurp(second / "frames" / frame / image));
+            EXPECT_TRUE(pa == readFile(second / "frames" / frame / image));
         }
 }
 
@@ -343,7 +320,7 @@ TEST(RunCli, DemoWritesTheReportWithAllThreeRuns) {
                                      "--triangles", "20000"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("speed-up"));
-    const std::string report = slurp(out / "report.md");
+    const std::string report = readFile(out / "report.md");
     EXPECT_THAT(report, HasSubstr("| walls + levels of detail | full geometry + levels of detail | full geometry |"));
     EXPECT_THAT(report, HasSubstr("| speed-up | "));
     EXPECT_THAT(report, HasSubstr("| worst level-of-detail error (px) | "));

@@ -1,13 +1,13 @@
-// The scene query behind walk navigation (tools/scene_query.h): floors and walls from the
+// The scene query behind walk navigation (app/scene_query.h): floors and walls from the
 // scene's structure, and the navigator walking into a wall with it.
-#include "tools/scene_query.h"
+#include "app/scene_query.h"
 
 #include "scenes/primitives.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
-namespace cavewall::tools {
+namespace cavewall::app {
 namespace {
 
 // A 10 m x 10 m floor (top at y = 0), a 0.3 m step (top at y = 0.3) over x in [2, 4], and a
@@ -87,4 +87,4 @@ TEST(SceneQuery, WalkNavigationStopsAtTheWallAndClimbsTheStep) {
 }
 
 }  // namespace
-}  // namespace cavewall::tools
+}  // namespace cavewall::app

@@ -8,7 +8,6 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <random>
 
@@ -183,10 +182,7 @@ TEST(Plan, AlphaEdgeCases) {
         SCOPED_TRACE(alphaDeg);
         PlanOptions o;
         o.alphaDeg = alphaDeg;
-        const auto start = std::chrono::steady_clock::now();
-        const Plan plan = planZones(d, o);
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        EXPECT_LT(seconds, 30.0);  // never a hang
+        const Plan plan = planZones(d, o);  // a hang is ctest's timeout, not a clock read here
         expectPlanKeepsItsPromises(d, plan);
         if (alphaDeg < 1e-3) {
             EXPECT_TRUE(plan.textures.empty());  // all geometry

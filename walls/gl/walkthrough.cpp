@@ -1,5 +1,6 @@
 #include "walls/gl/walkthrough.h"
 
+#include "display/timing.h"
 #include "scenes/image_io.h"
 #include "scenes/region.h"
 #include "display/pixel_scale.h"
@@ -22,9 +23,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double msSince(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+using display::msSince;
 
 // Every MIP level of a baked texture file (walls/gl/texture_mips.h convention).
 std::vector<scenes::Image> decodeBakedTexture(const std::filesystem::path& file) {

@@ -1,0 +1,250 @@
+#include "app/bench/gl/driver.h"
+
+#include "config/json_reader.h"
+#include "display/display.h"
+#include "display/timing.h"
+#include "display/gl/context.h"
+#include "scenes/loader.h"
+#include "app/bench/gl/modes.h"
+#include "app/gl/run_session.h"
+#include "walls/gl/baker.h"
+#include "walls/visibility.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+namespace cavewall::gl {
+
+using namespace bench;
+
+namespace {
+
+std::string fixed(double v, int decimals = 1) {
+    std::ostringstream s;
+    s.setf(std::ios::fixed);
+    s.precision(decimals);
+    s << v;
+    return s.str();
+}
+
+struct BakedWalls {
+    gl::WallSetup setup;
+    double texels = 0.0, diskMB = 0.0;
+    std::string summary;
+};
+
+// Plans and bakes (or finds in the cache) the walls at `alphaDeg`.
+BakedWalls bakeWalls(const BenchOptions& o, double alphaDeg, const scenes::Scene& scene,
+                     const scenes::SceneDescription& d, gl::Context& context) {
+    walls::BakeRequest request;
+    request.scene = o.scene;
+    request.plan = o.plan;
+    request.plan.alphaDeg = alphaDeg;
+    request.settings.maxResolution = o.bakeResolution;
+    request.settings.jobs = 2;
+    request.context = &context;
+    if (o.cache) request.cache = *o.cache;
+    walls::BakeResult baked = walls::bakeScene(request);
+    context.makeCurrent();
+    BakedWalls out;
+    out.setup.plan = walls::planZones(d, request.plan);
+    out.setup.table = walls::computeVisibility(d);
+    walls::assignDepthBehind(out.setup.plan, scene, d, out.setup.table);
+    out.setup.folder = baked.folder;
+    for (const walls::BakedTexture& t : baked.manifest.textures)
+        out.texels += static_cast<double>(t.resolution.x) * t.resolution.y;
+    out.diskMB = static_cast<double>(baked.totalBytes) / 1e6;
+    out.setup.manifest = std::move(baked.manifest);
+    out.summary = "a=" + config::formatNumber(alphaDeg) + ": " + std::to_string(out.setup.plan.textures.size()) +
+                  " textures, " + std::to_string(baked.baked) + " baked now in " + fixed(baked.seconds) + " s, " +
+                  std::to_string(baked.reused) + " from the cache";
+    return out;
+}
+
+ModeResult namedMode(Mode mode, double lodPixels = 0.0) {
+    ModeResult m;
+    m.mode = mode;
+    m.lodPixels = lodPixels;
+    return m;
+}
+
+ModeResult wallsMode(double alphaDeg, app::Transition transition, bool paged, double lodPixels,
+                     std::size_t triangleBudget, double frameBudgetMs) {
+    ModeResult m;
+    m.frameBudgetMs = frameBudgetMs;
+    m.mode = Mode::Walls;
+    m.alphaDeg = alphaDeg;
+    m.transition = transition;
+    m.paged = paged;
+    m.lodPixels = lodPixels;
+    m.triangleBudget = triangleBudget;
+    return m;
+}
+
+// The p50 of a mode's triangles per frame, as every p50 of the bench (timeStats).
+double medianTriangles(const ModeResult& m) {
+    std::vector<double> t;
+    for (const FrameSample& f : m.frames) t.push_back(f.triangles);
+    return display::median(t);
+}
+
+void say(const BenchOptions& o, const std::string& line) {
+    if (o.verbose) std::cout << line << "\n" << std::flush;
+}
+
+std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene& scene, const gl::Context& context,
+                                     const EyePath& path) {
+    std::size_t triangles = 0;
+    for (const scenes::Object& object : scene.objects) triangles += scene.meshes[object.mesh].triangleCount();
+    const auto& s0 = o.display.screens.front();
+    return {"scene: " + o.scene.string() + " (" + std::to_string(scene.objects.size()) + " objects, " +
+                std::to_string(triangles) + " triangles)",
+            "display: " + o.display.name + ", " + std::to_string(o.display.screens.size()) + " screens at " +
+                std::to_string(s0.resolution.x) + "x" + std::to_string(s0.resolution.y) + " pixels, " +
+                (o.display.stereo == config::StereoMode::Mono ? "mono" : "stereo"),
+            path.description,
+            "image error against the full-geometry image of the same frame, eye and screen, every " +
+                std::to_string(o.compareEvery) + " frames; RMSE/PSNR on sRGB RGB in [0,1] (OpenImageIO compare), "
+                "SSIM on luminance (8x8 windows)",
+            "walls: plan minZoneSize " + config::formatNumber(o.plan.minZoneSize) + " m, pixelsPerDegree " +
+                config::formatNumber(o.plan.pixelsPerDegree) + ", blendWidth " + config::formatNumber(o.plan.blendWidth) +
+                " m; bake maxResolution " + std::to_string(o.bakeResolution) +
+                " texels; textures all resident (warm-up pass, synchronous paging) except in the paged mode",
+            "machine: " + context.info().renderer + ", " + std::to_string(std::thread::hardware_concurrency()) +
+                " hardware threads",
+            "transitions: blend at every alpha; warp (structure behind textured walls warped into the texture's "
+            "view) at alpha " + config::formatNumber(o.transitionAlphaDeg) + "; 'blend paged' at the same alpha pages "
+            "as `cavewall run` does (background decoding, default budget and upload limit, cold start)",
+            "near: the near-geometry limit, the viewer's cell plus its walls as bare quads (one 1x1 texture); "
+            "cells: the cells the walls mode draws as geometry, without textures",
+            o.lodPixels > 0.0 ? "lod: levels of detail built when the mode starts (meshoptimizer, sampled Hausdorff "
+                                "error), each object drawn at the coarsest level within " +
+                                    config::formatNumber(o.lodPixels) + " px on every screen it appears on; budgets "
+                                    "raise that tolerance to at most " + config::formatNumber(o.lodMaxPixels) + " px"
+                              : "lod: off (--lod 0)"};
+}
+
+}  // namespace
+
+config::DisplayConfig withResolution(config::DisplayConfig display, int pixels) {
+    for (config::Screen& s : display.screens) {
+        const double longer = std::max(s.resolution.x, s.resolution.y);
+        const double scale = longer > 0 ? pixels / longer : 1.0;
+        s.resolution = glm::max(glm::ivec2(glm::round(glm::dvec2(s.resolution) * scale)), glm::ivec2(1));
+    }
+    return display;
+}
+
+BenchReport runBenchmark(const BenchOptions& o) {
+    if (o.compareEvery < 1) throw Error("bench: compareEvery: expected at least 1, got " + std::to_string(o.compareEvery));
+    if (o.alphasDeg.empty()) throw Error("bench: expected at least one alpha for the walls modes, got none");
+    if (o.frames < 1) throw Error("--frames: expected at least 1, got " + std::to_string(o.frames));
+    if (std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg) == o.alphasDeg.end())
+        throw Error("bench: the warp alpha " + config::formatNumber(o.transitionAlphaDeg) +
+                    " is not one of the planned alphas");
+    const auto start = std::chrono::steady_clock::now();
+    const display::Display display(o.display);
+    scenes::SceneDescription description;
+    const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description);
+    if (description.walls.empty()) throw Error(o.scene.string() + ": the scene has no virtual walls (expected at least 1 to bench)");
+    const EyePath path = recordEyePath(scene, description, o.display, o.tracker, o.frames);
+    const auto context = gl::createHeadlessContext();
+    BenchReport report;
+    report.header = headerLines(o, scene, *context, path);
+    const ModeContext c{scene, description, display, *context, path, o.compareEvery, o.lodMaxPixels};
+
+    say(o, "bench: full geometry");
+    ReferenceImages reference;
+    ModeAccumulator full(namedMode(Mode::Full), display);
+    runWalkthroughMode(c, std::nullopt, full, nullptr, &reference);
+    report.modes.push_back(full.finish(0.0));
+    const double fullP50 = report.modes.front().frameMs.p50;
+    const bool lod = o.lodPixels > 0.0;
+    if (lod) {
+        say(o, "bench: full geometry, levels of detail at " + config::formatNumber(o.lodPixels) + " px");
+        ModeAccumulator acc(namedMode(Mode::Full, o.lodPixels), display);
+        runWalkthroughMode(c, std::nullopt, acc, &reference, nullptr);
+        report.modes.push_back(acc.finish(fullP50));
+    }
+
+    std::vector<BakedWalls> baked;
+    for (double alpha : o.alphasDeg) {
+        say(o, "bench: plan and bake walls at a=" + config::formatNumber(alpha) + " deg");
+        baked.push_back(bakeWalls(o, alpha, scene, description, *context));
+        say(o, "bench: " + baked.back().summary);
+        report.header.push_back("bake " + baked.back().summary);
+    }
+    const auto listed = std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg);
+    const std::size_t transitionIndex = listed - o.alphasDeg.begin();  // listed: checked on entry
+    const gl::WallSetup& cellPlan = baked[transitionIndex].setup;
+    auto runCells = [&](bool nearOnly, double lodPixels) {
+        say(o, std::string(nearOnly ? "bench: near-geometry limit (the viewer's cell and bare wall quads)"
+                                    : "bench: cell culling without textures") +
+                   (lodPixels > 0.0 ? ", levels of detail" : ""));
+        ModeAccumulator acc(namedMode(nearOnly ? Mode::Near : Mode::Cells, lodPixels), display);
+        runCellMode(c, cellPlan, nearOnly, acc, reference);
+        report.modes.push_back(acc.finish(fullP50));
+    };
+    runCells(false, 0.0);
+    runCells(true, 0.0);
+    if (lod) runCells(true, o.lodPixels);
+    auto runWalls = [&](std::size_t i, app::Transition transition, bool paged, double lodPixels = 0.0,
+                        std::size_t budget = 0, double frameBudgetMs = 0.0) {
+        ModeResult mode = wallsMode(o.alphasDeg[i], transition, paged, lodPixels, budget, frameBudgetMs);
+        say(o, "bench: " + modeLabel(mode));
+        mode.textures = static_cast<int>(baked[i].setup.plan.textures.size());
+        mode.texels = baked[i].texels;
+        mode.diskMB = baked[i].diskMB;
+        ModeAccumulator acc(mode, display);
+        runWalkthroughMode(c, baked[i].setup, acc, &reference, nullptr, walkthroughTransition(transition), paged);
+        report.modes.push_back(acc.finish(fullP50));
+    };
+    for (std::size_t i = 0; i < baked.size(); ++i) runWalls(i, app::Transition::Blend, false);
+    if (lod)
+        for (std::size_t i = 0; i < baked.size(); ++i) runWalls(i, app::Transition::Blend, false, o.lodPixels);
+    runWalls(transitionIndex, app::Transition::Warp, false);
+    runWalls(transitionIndex, app::Transition::Blend, true);
+    if (lod)
+        for (std::size_t i = 0; i < baked.size(); ++i) {
+            std::size_t budget = o.triangleBudget;
+            if (budget == 0)  // the median of the same mode without a budget
+                for (const ModeResult& m : report.modes)
+                    if (m.mode == Mode::Walls && m.alphaDeg == o.alphasDeg[i] &&
+                        m.transition == app::Transition::Blend && !m.paged && m.lodPixels == o.lodPixels &&
+                        m.triangleBudget == 0)
+                        budget = static_cast<std::size_t>(medianTriangles(m));
+            runWalls(i, app::Transition::Blend, false, o.lodPixels, std::max<std::size_t>(budget, 1));
+        }
+    if (lod && o.frameBudgetMs > 0.0)
+        for (std::size_t i = 0; i < baked.size(); ++i)
+            runWalls(i, app::Transition::Blend, false, o.lodPixels, 0, o.frameBudgetMs);
+    if (lod && o.triangleBudget == 0)
+        report.header.push_back("triangle budgets: per alpha, the median triangles of the same walls mode without a "
+                                "budget");
+    {  // The noise floor of p99/p50 on this machine, beside a walls mode's, in the same seconds.
+        ModeResult last = report.modes.back();  // the budget mode at the last alpha, or the paged one
+        last.paged = false;  // drawn with every texture resident, also after the paged mode
+        say(o, "bench: noise floor, " + modeLabel(last) + " interleaved with one of its frames");
+        const long middle = static_cast<long>(path.frames.size() / 2);
+        const std::size_t alpha = lod ? baked.size() - 1 : transitionIndex;
+        const NoiseComparison n = interleavedNoise(c, baked[alpha].setup, last, middle);
+        auto ratio = [](const TimeStats& t) { return fixed(t.p50 > 0 ? t.p99 / t.p50 : 0.0, 2); };
+        report.noiseFloorRatio = n.repeated.p50 > 0 ? n.repeated.p99 / n.repeated.p50 : 0.0;
+        report.header.push_back(
+            "noise floor: " + modeLabel(last) + " along the path, each frame followed by frame " +
+            std::to_string(middle) + " again: the path's frames p50 " + fixed(n.path.p50, 2) + " ms, p99/p50 " +
+            ratio(n.path) + "; the repeated frame (the same work every time) p50 " + fixed(n.repeated.p50, 2) +
+            " ms, p99/p50 " + ratio(n.repeated) + ": what the repeated frame shows is the machine's noise, not the "
+            "renderer's");
+    }
+    report.header.push_back("bench time: " +
+                            fixed(display::msSince(start) / 1000.0, 0) +
+                            " s in total (all modes, bakes included)");
+    return report;
+}
+
+}  // namespace cavewall::gl

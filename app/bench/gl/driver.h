@@ -1,0 +1,71 @@
+#pragma once
+// `cavewall bench SCENE`: every rendering mode over the same recorded eye path in one run,
+// error against run time (cavewall issue 7 §1).
+//
+// Modes, in this order (the first is the reference for speed-up and image error):
+//  - full:  all geometry, frustum-culled (Walkthrough without walls).
+//  - cells: the geometry the walls mode at `transitionAlphaDeg` draws (structure, objects
+//           without a cell, the selection's geometry cells), without wall textures: what cell
+//           culling alone leaves out and what that costs in error.
+//  - near:  the near-geometry limit: structure, objects without a cell and the viewer's cell
+//           only; the bare wall quads are left out (a handful of triangles), so this is a
+//           lower bound of any walls mode's time.
+//  - walls at every alpha in `alphasDeg`, transition blend: each its own plan and bake
+//           (walls/gl/baker.h, cached), drawn by the walkthrough runtime with synchronous
+//           paging after a warm-up pass over the path (all textures resident: the timed pass
+//           measures drawing, not decoding).
+//  - walls at `transitionAlphaDeg` (or the first alpha when it is not listed), transition warp
+//           (gl::Transition::Warp), on the same bake.
+//  - with `lodPixels` > 0, levels of detail (scenes/mesh_lod.h) at that pixel tolerance: full,
+//           near and every walls blend mode once more with them, then every walls blend mode
+//           with them under a triangle budget (`triangleBudget`, or the median triangles of
+//           the same mode without a budget), so that the levels' share of the speed-up and of
+//           the error reads apart from the walls'.
+//  - with `lodPixels` and `frameBudgetMs` > 0, every walls blend mode with levels of detail
+//           and the frame-time controller (display/frame_budget.h) aiming at frameBudgetMs.
+//  - last, the noise floor: the last mode again, each path frame followed by one fixed frame,
+//           whose p99/p50 is the machine's own (a header line, not a mode).
+//
+// Timing: frame ms is the walkthrough's FrameResult::frameMs (CPU submission + glFinish) or,
+// for cells/near, SceneRenderer::render + waiting for its GPU timer; every frame of the path
+// is timed. Every `compareEvery`-th frame is read back (after timing) and compared per screen
+// and eye with the full-geometry image of that frame (app/bench/metrics.h).
+
+#include "config/display_config.h"
+#include "app/bench/report.h"
+#include "walls/plan.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cavewall::gl {
+
+struct BenchOptions {
+    std::filesystem::path scene;                  // scene.json, its folder, or glTF/GLB
+    config::DisplayConfig display;                // validated; resolutions are replaced
+    int resolution = 256;                         // pixels on the longer side of every screen
+    std::string tracker = "sim:walk";             // head source (input::makeTracker spec)
+    long frames = 120;                            // frames of the eye path
+    int compareEvery = 4;                         // frames between image comparisons, >= 1
+    std::vector<double> alphasDeg{10, 20, 30};
+    double transitionAlphaDeg = 20.0;             // warp and paged modes; plan of the cells modes
+    walls::PlanOptions plan;                      // alphaDeg replaced per mode
+    int bakeResolution = 512;                     // BakeSettings::maxResolution
+    double lodPixels = 1.0;                       // level-of-detail modes' tolerance; 0: none
+    std::size_t triangleBudget = 0;               // the budget mode's; 0: the median of its mode
+                                                  // without a budget
+    double frameBudgetMs = 1000.0 / 60.0;         // the frame-time modes' target; 0: none
+    double lodMaxPixels = 8.0;                    // the most a budget may raise the tolerance to
+    std::optional<std::filesystem::path> cache;   // bake cache (default: the baker's)
+    bool verbose = true;                          // progress on stdout
+};
+
+// Runs every mode; throws cavewall::Error on bad input (scene, tracker spec, options).
+bench::BenchReport runBenchmark(const BenchOptions& options);
+
+// `display` with every screen's resolution scaled so that its longer side is `pixels`.
+config::DisplayConfig withResolution(config::DisplayConfig display, int pixels);
+
+}  // namespace cavewall::gl

@@ -1,0 +1,245 @@
+#include "app/bench/gl/modes.h"
+
+#include "display/frame_budget.h"
+#include "display/timing.h"
+#include "display/gl/render_targets.h"
+#include "display/gl/scene_renderer.h"
+#include "display/gl/view_loop.h"
+#include "render/lod_choice.h"
+#include "walls/frame_select.h"
+#include "walls/gl/bake_key.h"
+#include "walls/gl/wall_pass.h"
+#include "walls/gl/wall_quad.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace cavewall::gl {
+
+using namespace bench;
+
+namespace {
+
+bool compared(const ModeContext& c, long frame) { return frame % c.compareEvery == 0; }
+
+}  // namespace
+
+ModeAccumulator::ModeAccumulator(ModeResult mode, const display::Display& display)
+    : _mode(std::move(mode)), _screens(display.screens().size()), _screenCpu(display.screens().size()),
+      _screenTriangles(display.screens().size()), _screenDrawCalls(display.screens().size()) {
+    _mode.screens.clear();
+    for (const auto& s : display.screens()) {
+        ScreenResult screen;
+        screen.screen = s.name;
+        _mode.screens.push_back(std::move(screen));
+    }
+}
+
+void ModeAccumulator::addFrame(const FrameCost& cost) {
+    _mode.frames.push_back({cost.frameMs, cost.triangles, cost.drawCalls});
+    _frame.push_back(cost.frameMs);
+    _cpu.push_back(cost.cpuMs);
+    _gpu.push_back(cost.gpuMs);
+    _triangles += cost.triangles;
+    _drawCalls += cost.drawCalls;
+    _mode.maxErrDeg = std::max(_mode.maxErrDeg, cost.errorDeg);
+    _mode.maxErrPx = std::max(_mode.maxErrPx, cost.errorPx);
+    _mode.gpuMB = std::max(_mode.gpuMB, cost.residentMB);
+    _mode.misses = std::max(_mode.misses, cost.misses);
+    _mode.maxLodErrPx = std::max(_mode.maxLodErrPx, cost.lodErrorPx);
+    _lodTolerance += cost.lodTolerancePx;
+    _mode.overBudgetFrames += cost.overBudget ? 1 : 0;
+    for (std::size_t i = 0; i < cost.perScreen.size() && i < _screenCpu.size(); ++i) {
+        _screenCpu[i].push_back(cost.perScreen[i].cpuMs);
+        _screenTriangles[i] += static_cast<double>(cost.perScreen[i].triangles);
+        _screenDrawCalls[i] += cost.perScreen[i].drawCalls;
+    }
+}
+
+void ModeAccumulator::compare(const std::vector<gl::ScreenImage>& images, const std::vector<gl::ScreenImage>& reference) {
+    if (images.size() != reference.size())
+        throw Error("bench: mode " + modeLabel(_mode) + " read " + std::to_string(images.size()) +
+                    " images, expected the reference's " + std::to_string(reference.size()));
+    for (std::size_t i = 0; i < images.size(); ++i) {
+        const ImageError e = compareForBench(images[i].pixels, reference[i].pixels);
+        _overall.add(e);
+        const int screen = images[i].screen;
+        if (screen >= 0 && screen < static_cast<int>(_screens.size())) _screens[screen].add(e);
+    }
+}
+
+ModeResult ModeAccumulator::finish(double fullP50) const {
+    ModeResult m = _mode;
+    m.frameMs = timeStats(_frame);
+    m.cpuMs = timeStats(_cpu);
+    m.gpuMs = timeStats(_gpu);
+    const double n = std::max<double>(1.0, static_cast<double>(_frame.size()));
+    m.triangles = _triangles / n;
+    m.drawCalls = _drawCalls / n;
+    m.meanLodTolerancePx = _lodTolerance / n;
+    m.speedup = fullP50 > 0.0 && m.frameMs.p50 > 0.0 ? fullP50 / m.frameMs.p50 : 1.0;
+    std::vector<double> triangles;
+    for (const FrameSample& f : m.frames) triangles.push_back(f.triangles);
+    const TimeStats load = timeStats(triangles);
+    m.loadRatio = load.p50 > 0.0 ? load.p99 / load.p50 : 0.0;
+    m.error = _overall.result();
+    for (std::size_t s = 0; s < _screens.size(); ++s) {
+        m.screens[s].error = _screens[s].result();
+        m.screens[s].cpuMs = timeStats(_screenCpu[s]);
+        m.screens[s].triangles = _screenTriangles[s] / n;
+        m.screens[s].drawCalls = _screenDrawCalls[s] / n;
+    }
+    return m;
+}
+
+void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls, ModeAccumulator& acc,
+                        const ReferenceImages* reference, ReferenceImages* store, gl::Transition transition,
+                        bool paged) {
+    gl::WalkthroughOptions options;
+    options.transition = transition;
+    options.render.lodPixels = acc.mode().lodPixels;
+    options.triangleBudget = acc.mode().triangleBudget;
+    options.lodMaxPixels = c.lodMaxPixels;
+    if (!paged) {
+        options.synchronousPaging = true;
+        options.textureBudgetMB = 4096.0;  // every texture of the path stays resident after warm-up
+        options.uploadMBPerFrame = 4096.0;
+    }
+    const bool hasWalls = walls.has_value();
+    gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
+    // Warm-up: shaders, buffers and (with walls, unless paged) every texture of the path made
+    // resident.
+    const long frames = static_cast<long>(c.path.frames.size());
+    std::optional<display::FrameTimeBudget> frameBudget;
+    if (acc.mode().frameBudgetMs > 0.0) frameBudget.emplace(acc.mode().frameBudgetMs);
+    auto render = [&](gl::FrameInput in) {
+        if (frameBudget) in.triangleBudget = frameBudget->budget();
+        gl::FrameResult r = walkthrough.renderFrame(in);
+        if (frameBudget) frameBudget->update(r.frameMs, r.geometryTriangles);
+        return r;
+    };
+    const long warmUp = hasWalls && !paged ? frames : std::min<long>(3, frames);
+    for (long i = 0; i < warmUp; ++i) render(c.path.frames[i]);
+    if (!paged) walkthrough.waitForTextures();
+    for (const gl::FrameInput& frame : c.path.frames) {
+        gl::FrameInput in = frame;
+        in.readImages = compared(c, in.frame);
+        gl::FrameResult r = render(in);
+        acc.addFrame({r.frameMs, r.cpuMs, r.gpuMs, static_cast<double>(r.stats.triangles),
+                      static_cast<double>(r.stats.drawCalls), r.maxErrorDeg, r.maxErrorPixels, r.pager.residentMB,
+                      r.pager.misses, r.perScreen, r.lodErrorPx, r.lodTolerancePx, r.lodOverBudget});
+        if (!in.readImages) continue;
+        if (store) (*store)[in.frame] = std::move(r.images);
+        else if (reference) acc.compare(r.images, reference->at(in.frame));
+    }
+}
+
+NoiseComparison interleavedNoise(const ModeContext& c, std::optional<gl::WallSetup> walls, const ModeResult& mode,
+                                 long frameIndex) {
+    gl::WalkthroughOptions options;
+    options.synchronousPaging = true;
+    options.textureBudgetMB = 4096.0;
+    options.uploadMBPerFrame = 4096.0;
+    options.render.lodPixels = mode.lodPixels;
+    options.triangleBudget = mode.triangleBudget;
+    options.lodMaxPixels = c.lodMaxPixels;
+    gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
+    const gl::FrameInput fixed = c.path.frames.at(static_cast<std::size_t>(frameIndex));
+    for (const gl::FrameInput& in : c.path.frames) walkthrough.renderFrame(in);
+    walkthrough.waitForTextures();
+    std::vector<double> path, repeated;
+    for (const gl::FrameInput& in : c.path.frames) {
+        path.push_back(walkthrough.renderFrame(in).frameMs);
+        gl::FrameInput again = fixed;
+        again.frame = in.frame;  // the pager's recency moves on as in a run
+        repeated.push_back(walkthrough.renderFrame(again).frameMs);
+    }
+    return {timeStats(path), timeStats(repeated)};
+}
+
+namespace {
+
+// The objects a cell mode draws: structure, objects without a cell and those of `cells`.
+std::vector<int> cellObjects(const scenes::Scene& scene, const std::vector<bool>& cells) {
+    std::vector<int> out;
+    for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
+        const scenes::Object& o = scene.objects[i];
+        if (o.role == scenes::Role::Structure || o.cell < 0 || o.cell >= static_cast<int>(cells.size()) || cells[o.cell])
+            out.push_back(i);
+    }
+    return out;
+}
+
+std::vector<bool> cellMask(const walls::FrameSelection& s, std::size_t cellCount, bool nearOnly) {
+    std::vector<bool> cells(cellCount, s.allGeometry());
+    if (!nearOnly)
+        for (int c : s.geometryCells)
+            if (c >= 0 && c < static_cast<int>(cellCount)) cells[c] = true;
+    if (s.cell >= 0 && s.cell < static_cast<int>(cellCount)) cells[s.cell] = true;
+    return cells;
+}
+
+}  // namespace
+
+void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly, ModeAccumulator& acc,
+                 const ReferenceImages& reference) {
+    const walls::FrameSelector selector(setup.plan, setup.table, c.description);
+    const gl::RenderTargets targets(c.display, c.context);
+    gl::RenderSettings settings;
+    settings.lodPixels = acc.mode().lodPixels;
+    gl::SceneRenderer renderer(c.scene, settings);
+    // The limit also draws every wall of the viewer's cell as a bare quad: one 1x1 texture
+    // through the walls' own pass, so it pays the quads' fill but no texture blending or paging.
+    std::optional<gl::WallPass> quadPass;
+    gl::GlObject bare;
+    if (nearOnly) {
+        quadPass.emplace();
+        bare = walls::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}});
+    }
+    auto draw = [&](const gl::FrameInput& in, FrameCost* cost) {
+        const auto start = std::chrono::steady_clock::now();
+        const glm::dvec3 eye(in.worldFromCave * glm::dvec4(in.head.position, 1.0));
+        const walls::FrameSelection selection = selector.select(eye);
+        const std::vector<int> objects =
+            cellObjects(c.scene, cellMask(selection, c.description.cells.size(), nearOnly));
+        render::DrawFilter filter;
+        filter.objects = &objects;
+        std::vector<gl::WallDraw> quads;
+        if (quadPass)
+            for (const walls::WallBlend& b : selection.walls)
+                quads.push_back({walls::quadSeenFrom(setup.plan.walls[b.wall].quad, b.side), {bare.id()}, {1.0f}, 1});
+        const glm::dmat4 caveFromWorld = glm::inverse(in.worldFromCave);
+        gl::FrameStats quadStats;
+        auto afterView = [&](const display::ScreenView& view) {
+            quadPass->draw(quads, view.frustum, caveFromWorld, 0, quadStats);
+        };
+        const std::vector<display::ScreenView> views = c.display.views(in.head);
+        render::FrameLod lod;
+        if (renderer.hasLods()) {
+            lod = render::chooseLods(renderer.renderScene(), views, in.worldFromCave, filter, settings.lodPixels);
+            filter.lodLevels = &lod.levels;
+        }
+        const gl::FrameStats stats = renderer.render(views, targets, in.worldFromCave, filter,
+                                                     quadPass ? std::function(afterView) : nullptr);
+        const double gpu = renderer.waitGpuMs();
+        if (!cost) return;
+        *cost = FrameCost{};
+        cost->frameMs = display::msSince(start);
+        cost->cpuMs = stats.cpuMs;
+        cost->gpuMs = gpu;
+        cost->triangles = static_cast<double>(stats.triangles + quadStats.triangles);
+        cost->drawCalls = static_cast<double>(stats.drawCalls + quadStats.drawCalls);
+        cost->lodErrorPx = lod.maxErrorPx;
+        cost->lodTolerancePx = lod.tolerancePx;
+        cost->perScreen = gl::statsPerScreen(views, stats, c.display.screens().size());
+    };
+    for (long i = 0; i < std::min<long>(3, c.path.frames.size()); ++i) draw(c.path.frames[i], nullptr);
+    for (const gl::FrameInput& in : c.path.frames) {
+        FrameCost cost;
+        draw(in, &cost);
+        acc.addFrame(cost);
+        if (compared(c, in.frame)) acc.compare(gl::readFrame(c.display, targets), reference.at(in.frame));
+    }
+}
+
+}  // namespace cavewall::gl

@@ -1,0 +1,89 @@
+#pragma once
+// The per-mode machinery of `cavewall bench` (app/bench/gl/driver.h): running one mode over the
+// eye path and accumulating its times, counts and image errors.
+
+#include "display/gl/frame_images.h"
+#include "app/bench/gl/path.h"
+#include "app/bench/report.h"
+#include "walls/gl/walkthrough.h"
+
+#include <map>
+#include <optional>
+#include <vector>
+
+namespace cavewall::gl {
+
+// Full-geometry images of the compared frames: frame index -> its screen images.
+using ReferenceImages = std::map<long, std::vector<gl::ScreenImage>>;
+
+// What one timed frame cost.
+struct FrameCost {
+    double frameMs = 0.0, cpuMs = 0.0, gpuMs = 0.0;
+    double triangles = 0.0, drawCalls = 0.0;
+    double errorDeg = 0.0, errorPx = 0.0;
+    double residentMB = 0.0;
+    long misses = 0;                    // cumulative, as the pager counts
+    std::vector<gl::ViewStats> perScreen;  // per display screen: CPU ms, triangles, draw calls
+    double lodErrorPx = 0.0, lodTolerancePx = 0.0;  // FrameResult's (0 without levels of detail)
+    bool overBudget = false;
+};
+
+// Collects one mode's frames and comparisons; finish() fills the bench::ModeResult.
+class ModeAccumulator {
+public:
+    ModeAccumulator(bench::ModeResult mode, const display::Display& display);
+    void addFrame(const FrameCost& cost);
+    const bench::ModeResult& mode() const { return _mode; }
+    // Compares `images` with the reference of the same frame (same screens and images).
+    void compare(const std::vector<gl::ScreenImage>& images, const std::vector<gl::ScreenImage>& reference);
+    // `fullP50`: the reference mode's median frame ms (0: this is the reference).
+    bench::ModeResult finish(double fullP50) const;
+
+private:
+    bench::ModeResult _mode;
+    std::vector<double> _frame, _cpu, _gpu;
+    double _triangles = 0.0, _drawCalls = 0.0, _lodTolerance = 0.0;
+    bench::ErrorPool _overall;
+    std::vector<bench::ErrorPool> _screens;
+    std::vector<std::vector<double>> _screenCpu;           // per screen, per frame
+    std::vector<double> _screenTriangles, _screenDrawCalls;  // per screen, summed over frames
+};
+
+// Everything a mode run needs; the context is current.
+struct ModeContext {
+    const scenes::Scene& scene;
+    const scenes::SceneDescription& description;
+    const display::Display& display;
+    gl::Context& context;
+    const EyePath& path;
+    int compareEvery = 4;
+    double lodMaxPixels = 8.0;  // WalkthroughOptions::lodMaxPixels of the budgeted modes
+};
+
+// Runs the walkthrough (walls: nullopt = full geometry) over the path: a warm-up pass when it
+// has walls, then the timed pass. With `reference` null the compared frames' images are stored
+// in `store` (the full-geometry reference run). `paged`: as `cavewall run` pages, in the
+// background under the default texture budget and upload limit, from a cold start (three
+// warm-up frames), so the timed frames include every page-in, upload and fallback.
+// The mode's bench::ModeResult::lodPixels and triangleBudget set the levels of detail
+// (WalkthroughOptions::render.lodPixels, triangleBudget).
+void runWalkthroughMode(const ModeContext& c, std::optional<gl::WallSetup> walls, ModeAccumulator& acc,
+                        const ReferenceImages* reference, ReferenceImages* store,
+                        gl::Transition transition = gl::Transition::Blend, bool paged = false);
+
+// The machine's own frame-time noise beside a mode's: the path drawn as `mode` draws it (walls
+// or not, its levels of detail; every texture resident), each frame followed by frame
+// `frameIndex` of the path again. The repeated frame's work never changes, so its spread is
+// the machine's (scheduling, other tenants), measured in the same seconds as the path's.
+struct NoiseComparison {
+    bench::TimeStats path, repeated;
+};
+NoiseComparison interleavedNoise(const ModeContext& c, std::optional<gl::WallSetup> walls,
+                                 const bench::ModeResult& mode, long frameIndex);
+
+// Runs the cells or near mode (bench_driver.h) with the selection of `setup`'s plan, at the
+// mode's level-of-detail tolerance (bench::ModeResult::lodPixels; no budget).
+void runCellMode(const ModeContext& c, const gl::WallSetup& setup, bool nearOnly, ModeAccumulator& acc,
+                 const ReferenceImages& reference);
+
+}  // namespace cavewall::gl

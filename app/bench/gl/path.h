@@ -1,0 +1,34 @@
+#pragma once
+// The eye path of `cavewall bench`: recorded once, then replayed identically for every mode.
+//
+// The head comes from a tracker (input::makeTracker spec; default "sim:walk", a simulated
+// walking head) through the display's tracking pipeline; the CAVE is moved along the scene's
+// walkPath by the guided navigator (input/navigator.h), starting at the path's first point
+// facing along it, at a pace chosen so that `frames` frames at 1/60 s cover the whole path.
+// Without a walkPath the CAVE stays at the world origin. Poses are polled at t = i / 60 s,
+// through the same input loop as `cavewall run` (app/gl/run_input.h), live trackers without
+// waiting for that time.
+
+#include "config/display_config.h"
+#include "scenes/scene.h"
+#include "scenes/scene_description.h"
+#include "walls/gl/walkthrough.h"
+
+#include <string>
+#include <vector>
+
+namespace cavewall::gl {
+
+struct EyePath {
+    std::vector<gl::FrameInput> frames;  // readImages false; no hand cursor
+    std::string description;             // one line for the report header
+};
+
+// Throws cavewall::Error for a bad tracker spec.
+EyePath recordEyePath(const scenes::Scene& scene, const scenes::SceneDescription& description,
+                      const config::DisplayConfig& display, const std::string& trackerSpec, long frames);
+
+// Length of a polyline, metres.
+double pathLength(const std::vector<glm::dvec3>& points);
+
+}  // namespace cavewall::gl

@@ -1,0 +1,190 @@
+#include "app/bench/report.h"
+
+#include "config/error.h"
+#include "scenes/image_io.h"
+#include "app/bench/plot.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace cavewall::bench {
+
+namespace {
+
+std::string num(double v, int digits = 6) {
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    if (std::isnan(v)) return "nan";
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, v);
+    return buffer;
+}
+
+void writeText(const std::filesystem::path& file, const std::string& text) {
+    std::ofstream out(file, std::ios::binary);
+    out << text;
+    if (!out) throw Error(file.string() + ": could not write the file");
+}
+
+std::string screensCsv(const BenchReport& report) {
+    std::string out = "mode,alpha_deg,transition,screen,psnr_db,rmse,ssim,cpu_ms_p50,cpu_ms_p95,cpu_ms_p99,triangles,"
+                      "draw_calls,lod_px,triangle_budget\n";
+    for (const ModeResult& m : report.modes)
+        for (const ScreenResult& s : m.screens)
+            out += std::string(toString(m.mode)) + "," + num(m.alphaDeg) + "," + transitionLabel(m) + "," + s.screen +
+                   "," + num(s.error.psnrDb) + "," +
+                   num(s.error.rmse) + "," + num(s.error.ssim) + "," + num(s.cpuMs.p50) + "," + num(s.cpuMs.p95) + "," +
+                   num(s.cpuMs.p99) + "," + num(s.triangles) + "," + num(s.drawCalls) + "," + num(m.lodPixels) + "," +
+                   std::to_string(m.triangleBudget) + "\n";
+    return out;
+}
+
+// The first mode named `mode` drawing at the same level-of-detail tolerance as `like`.
+const ModeResult* findMode(const BenchReport& report, Mode mode, const ModeResult& like) {
+    for (const ModeResult& m : report.modes)
+        if (m.mode == mode && m.lodPixels == like.lodPixels && m.triangleBudget == 0 && m.frameBudgetMs == 0.0) return &m;
+    return nullptr;
+}
+
+}  // namespace
+
+std::vector<std::string> targetLines(const BenchReport& report) {
+    const ModeResult* best = nullptr;
+    for (const ModeResult& m : report.modes)
+        if (m.mode == Mode::Walls && m.error.meanPsnrDb >= 30.0 && (!best || m.speedup > best->speedup)) best = &m;
+    if (!best) return {"targets: no walls mode reaches a mean PSNR >= 30 dB"};
+    const double ratio = best->frameMs.p50 > 0 ? best->frameMs.p99 / best->frameMs.p50 : 0.0;
+    std::vector<std::string> lines = {
+        "targets: fastest walls mode with mean PSNR >= 30 dB: " + modeLabel(*best) + ", speed-up " +
+            num(best->speedup, 3) + (best->speedup >= 10.0 ? " (>= 10: met)" : " (>= 10: not met)") + ", PSNR " +
+            num(best->error.meanPsnrDb, 3) + " dB mean (" + num(best->error.psnrDb, 3) + " dB pooled), p99/p50 " +
+            num(ratio, 3) + (ratio <= 1.3 ? " (<= 1.3: met)" : " (<= 1.3: not met)") +
+            " with the triangles drawn varying by " + num(best->loadRatio, 3) + " (p99/p50)" +
+            (report.noiseFloorRatio > 0.0 ? "; one frame drawn again and again varies by " +
+                                                num(report.noiseFloorRatio, 3) + " (p99/p50) on this machine"
+                                          : std::string())};
+    if (const ModeResult* near = findMode(report, Mode::Near, *best); near && near->frameMs.p50 > 0) {
+        const double limit = best->frameMs.p50 / near->frameMs.p50;
+        lines.push_back("targets: its median frame time is " + num(limit, 3) +
+                        "x the limit's, near geometry plus bare wall quads at the same level of detail (" +
+                        num(best->frameMs.p50, 3) + " ms against " + num(near->frameMs.p50, 3) + " ms; <= 1.2: " +
+                        (limit <= 1.2 ? "met)" : "not met)"));
+    }
+    if (best->lodPixels > 0.0)
+        if (const ModeResult* full = findMode(report, Mode::Full, *best); full && full->frameMs.p50 > 0)
+            lines.push_back("targets: against full geometry at the same level of detail (" + modeLabel(*full) +
+                            ", " + num(full->frameMs.p50, 3) + " ms) its speed-up is " +
+                            num(full->frameMs.p50 / best->frameMs.p50, 3) +
+                            ": what the walls add on top of the levels of detail");
+    return lines;
+}
+
+std::string_view toString(Mode mode) {
+    switch (mode) {
+    case Mode::Full: return "full";
+    case Mode::Cells: return "cells";
+    case Mode::Near: return "near";
+    case Mode::Walls: return "walls";
+    }
+    return "?";
+}
+
+std::string transitionLabel(const ModeResult& m) {
+    if (!m.transition) return "none";
+    return std::string(app::toString(*m.transition)) + (m.paged ? " paged" : "");
+}
+
+std::string modeLabel(const ModeResult& m) {
+    std::string label = m.mode == Mode::Walls ? "walls a=" + num(m.alphaDeg) + " " + transitionLabel(m)
+                                              : std::string(toString(m.mode));
+    if (m.lodPixels > 0.0) label += " lod " + num(m.lodPixels) + "px";
+    if (m.triangleBudget > 0) label += " budget " + std::to_string(m.triangleBudget);
+    if (m.frameBudgetMs > 0.0) label += " frame " + num(m.frameBudgetMs, 3) + "ms";
+    return label;
+}
+
+std::string csvHeader() {
+    return "mode,alpha_deg,transition,frame_ms_p50,frame_ms_p95,frame_ms_p99,speedup,psnr_db,rmse,ssim,max_err_deg,"
+           "max_err_px,triangles,draw_calls,textures,disk_mb,gpu_mb,cpu_ms_p50,cpu_ms_p95,cpu_ms_p99,gpu_ms_p50,"
+           "gpu_ms_p95,gpu_ms_p99,texels,misses,mean_psnr_db,load_p99_p50,lod_px,triangle_budget,max_lod_err_px,"
+           "mean_lod_tolerance_px,over_budget_frames,frame_budget_ms";
+}
+
+std::string csvRow(const ModeResult& m) {
+    const double values[] = {m.frameMs.p50, m.frameMs.p95, m.frameMs.p99, m.speedup, m.error.psnrDb, m.error.rmse,
+                             m.error.ssim, m.maxErrDeg, m.maxErrPx, m.triangles, m.drawCalls,
+                             static_cast<double>(m.textures), m.diskMB, m.gpuMB, m.cpuMs.p50, m.cpuMs.p95, m.cpuMs.p99,
+                             m.gpuMs.p50, m.gpuMs.p95, m.gpuMs.p99, m.texels, static_cast<double>(m.misses),
+                             m.error.meanPsnrDb, m.loadRatio, m.lodPixels, static_cast<double>(m.triangleBudget),
+                             m.maxLodErrPx, m.meanLodTolerancePx, static_cast<double>(m.overBudgetFrames),
+                             m.frameBudgetMs};
+    std::string row = std::string(toString(m.mode)) + "," + num(m.alphaDeg) + "," + transitionLabel(m);
+    for (double v : values) row += "," + num(v);
+    return row;
+}
+
+std::string markdownReport(const BenchReport& report) {
+    std::ostringstream md;
+    for (const std::string& line : report.header) md << "- " << line << "\n";
+    md << "\n| # | mode | frame ms p50 / p95 / p99 | p99/p50 | load p99/p50 | CPU ms p50 | GPU ms p50 | speed-up "
+          "| PSNR dB (pooled / mean) | RMSE | SSIM | max err deg / px | LOD err px max (tolerance mean) | triangles "
+          "| draw calls | textures | texels M | disk MB | GPU MB |\n"
+       << "| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | "
+          "---: | ---: | ---: | ---: |\n";
+    int index = 1;
+    for (const ModeResult& m : report.modes) {
+        const double ratio = m.frameMs.p50 > 0 ? m.frameMs.p99 / m.frameMs.p50 : 0.0;
+        md << "| " << index++ << " | " << modeLabel(m) << " | " << num(m.frameMs.p50, 3) << " / " << num(m.frameMs.p95, 3)
+           << " / " << num(m.frameMs.p99, 3) << " | " << num(ratio, 3) << " | " << num(m.loadRatio, 3) << " | "
+           << num(m.cpuMs.p50, 3) << " | "
+           << num(m.gpuMs.p50, 3) << " | " << num(m.speedup, 3) << " | " << num(m.error.psnrDb, 3) << " / "
+           << num(m.error.meanPsnrDb, 3) << " | "
+           << num(m.error.rmse, 3) << " | " << num(m.error.ssim, 3) << " | " << num(m.maxErrDeg, 3) << " / "
+           << num(m.maxErrPx, 3) << " | "
+           << (m.lodPixels > 0.0 ? num(m.maxLodErrPx, 3) + " (" + num(m.meanLodTolerancePx, 3) + ")" : std::string("-"))
+           << " | " << num(std::round(m.triangles), 7) << " | " << num(m.drawCalls, 3) << " | "
+           << m.textures << " | " << num(m.texels / 1e6, 3) << " | " << num(m.diskMB, 3) << " | " << num(m.gpuMB, 3)
+           << " |\n";
+    }
+    md << "\n- load p99/p50: p99/p50 of the triangles drawn per frame, how much the path's load alone varies "
+          "(frame time grows with it on llvmpipe); PSNR pooled: of the mean squared error of all compared "
+          "images, mean: the mean of their PSNRs (each capped at 58.9 dB, 8-bit quantisation); LOD err px: the "
+          "largest geometric error of a drawn level of detail in pixels on its screen (sampled Hausdorff distance "
+          "to the full mesh, scenes/mesh_lod.h), and the mean pixel tolerance the frames used\n";
+    for (const std::string& line : targetLines(report)) md << "- " << line << "\n";
+    return md.str();
+}
+
+std::string framesCsv(const BenchReport& report) {
+    std::string out = "mode,frame,frame_ms,triangles,draw_calls\n";
+    for (const ModeResult& m : report.modes)
+        for (std::size_t i = 0; i < m.frames.size(); ++i)
+            out += modeLabel(m) + "," + std::to_string(i) + "," + num(m.frames[i].frameMs, 6) + "," +
+                   num(m.frames[i].triangles, 10) + "," + num(m.frames[i].drawCalls, 10) + "\n";
+    return out;
+}
+
+std::vector<std::filesystem::path> writeReport(const std::filesystem::path& folder, const BenchReport& report) {
+    std::filesystem::create_directories(folder);
+    std::string csv = csvHeader() + "\n";
+    for (const ModeResult& m : report.modes) csv += csvRow(m) + "\n";
+    const std::vector<std::filesystem::path> files = {folder / "bench.csv", folder / "bench_screens.csv",
+                                                      folder / "bench.md", folder / "bench.png",
+                                                      folder / "bench_frames.csv"};
+    writeText(files[0], csv);
+    writeText(files[1], screensCsv(report));
+    writeText(files[4], framesCsv(report));
+    writeText(files[2], "# cavewall bench\n\n" + markdownReport(report) +
+                            "\n![error (RMSE, y) against median frame ms (x); red: Pareto front; numbers: # above]"
+                            "(bench.png)\n");
+    std::vector<TradeOff> points;
+    for (const ModeResult& m : report.modes) points.push_back({m.frameMs.p50, m.error.rmse});
+    std::vector<PlotPoint> plot;
+    for (std::size_t i = 0; i < points.size(); ++i) plot.push_back({points[i].time, points[i].error, static_cast<int>(i + 1), false});
+    for (std::size_t i : paretoFront(points)) plot[i].front = true;
+    scenes::writeImage(files[3], plotTradeOff(plot));
+    return files;
+}
+
+}  // namespace cavewall::bench

@@ -1,0 +1,96 @@
+#pragma once
+// The results of `cavewall bench` and their writers: bench.csv, bench_screens.csv, bench.md
+// (also printed) and bench.png (app/bench/plot.h).
+//
+// One ModeResult per mode of the run. Times are milliseconds per frame (all screens), over the
+// timed frames. Errors are against the full-geometry image of the same frame, eye and screen
+// (app/bench/metrics.h), pooled over the compared frames. Counts are means per frame.
+
+#include "app/bench/metrics.h"
+#include "app/run_options.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cavewall::bench {
+
+struct ScreenResult {
+    std::string screen;                // display screen name
+    ImageError error;
+    TimeStats cpuMs;                   // wall-clock CPU ms of the screen's views per frame
+    double triangles = 0.0, drawCalls = 0.0;  // means per frame
+};
+
+// One timed frame of a mode, as bench_frames.csv lists it.
+struct FrameSample {
+    double frameMs = 0.0, triangles = 0.0, drawCalls = 0.0;
+};
+
+// What a mode draws (app/bench/gl/driver.h lists the modes).
+enum class Mode { Full, Cells, Near, Walls };
+
+// "full" | "cells" | "near" | "walls", as the mode column of bench.csv.
+std::string_view toString(Mode mode);
+
+struct ModeResult {
+    Mode mode = Mode::Full;
+    double alphaDeg = 0.0;             // walls modes; 0 otherwise
+    std::optional<app::Transition> transition;  // walls modes; none otherwise
+    bool paged = false;                // walls modes: paged from a cold start (`cavewall run`'s paging)
+    double lodPixels = 0.0;            // level-of-detail tolerance in pixels; 0: full detail
+    std::size_t triangleBudget = 0;    // per frame (with levels of detail); 0: none
+    double frameBudgetMs = 0.0;        // frame-time target of the budget controller; 0: none
+    TimeStats frameMs, cpuMs, gpuMs;
+    double speedup = 1.0;              // full-geometry frame_ms_p50 / this mode's
+    ImageError error;                  // all screens
+    double maxErrDeg = 0.0;            // worst angular error of a drawn texture (0 without textures)
+    double maxErrPx = 0.0;             // the same in screen pixels
+    double maxLodErrPx = 0.0;          // worst geometric error of a drawn level of detail, pixels
+    double meanLodTolerancePx = 0.0;   // the frames' mean LOD tolerance (above lodPixels where the
+                                       // budget raised it)
+    int overBudgetFrames = 0;          // frames whose coarsest levels still exceeded the budget
+    double triangles = 0.0, drawCalls = 0.0;
+    int textures = 0;                  // baked textures of the plan
+    double texels = 0.0;               // sum of their base-level texels
+    double diskMB = 0.0;               // bytes of the baked files / 1e6
+    double gpuMB = 0.0;                // peak resident texture MB (the pager's count)
+    long misses = 0;                   // wanted textures not resident, over the run
+    std::vector<ScreenResult> screens;
+    std::vector<FrameSample> frames;   // every timed frame, in path order
+    // p99/p50 of the triangles drawn per frame: how much the path's load alone varies, to
+    // read next to the frame time's p99/p50 (the rest is stalls and noise).
+    double loadRatio = 0.0;
+};
+
+struct BenchReport {
+    std::vector<std::string> header;   // settings and machine, one line each
+    std::vector<ModeResult> modes;     // the full-geometry reference first
+    double noiseFloorRatio = 0.0;      // p99/p50 of one frame drawn again and again (0: not measured)
+};
+
+// The CSV header line (without newline), starting with the columns the issue requires.
+std::string csvHeader();
+// One CSV line (without newline); numbers in C locale, "inf" for infinite PSNR.
+std::string csvRow(const ModeResult& m);
+// Markdown: the header lines as a list, then one table row per mode.
+std::string markdownReport(const BenchReport& report);
+
+// The issue's targets read off the table: the fastest walls mode with mean PSNR >= 30 dB, its
+// speed-up (target >= 10), p99/p50 (target <= 1.3) and its median against the near limit's.
+std::vector<std::string> targetLines(const BenchReport& report);
+
+// Writes bench.csv, bench_screens.csv, bench_frames.csv (every timed frame of every mode),
+// bench.md and bench.png into `folder` (created).
+// Returns the files written.
+std::vector<std::filesystem::path> writeReport(const std::filesystem::path& folder, const BenchReport& report);
+
+// The transition column of bench.csv: "none", "blend", "warp" or "blend paged".
+std::string transitionLabel(const ModeResult& m);
+
+// "walls a=10 blend", "full", "walls a=30 blend lod 1px budget 40000", ...: the mode's label in
+// tables and the plot legend.
+std::string modeLabel(const ModeResult& m);
+
+}  // namespace cavewall::bench

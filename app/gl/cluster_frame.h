@@ -1,0 +1,23 @@
+#pragma once
+// What cluster mode sends between ranks besides the fixed FrameState fields (app/cluster.h):
+// the rest of a frame's input (hand cursor, whether images are read back) as FrameState's
+// payload, and each rank's rendered images on their way to rank 0, which writes them in the
+// same layout as a single-process run. Byte layouts are this build's own (all ranks run the
+// same binary); decoding checks every length and returns false on malformed bytes.
+
+#include "display/gl/frame_images.h"
+#include "app/cluster.h"
+#include "walls/gl/walkthrough.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace cavewall::gl {
+
+app::FrameState frameStateOf(const FrameInput& input);
+bool frameInputOf(const app::FrameState& state, FrameInput& input);
+
+std::vector<std::uint8_t> encodeImages(const std::vector<ScreenImage>& images);
+bool decodeImages(const std::vector<std::uint8_t>& bytes, std::vector<ScreenImage>& images);
+
+}  // namespace cavewall::gl

@@ -1,0 +1,100 @@
+#include "app/gl/run_cluster.h"
+
+#include "config/error.h"
+
+#ifdef CAVEWALL_HAVE_MPI
+#include "app/gl/cluster_frame.h"
+
+#include <algorithm>
+#include <cstring>
+#endif
+
+namespace cavewall::gl {
+
+#ifdef CAVEWALL_HAVE_MPI
+
+std::unique_ptr<app::Cluster> openCluster(const app::RunOptions& o) {
+    if (!o.cluster) return nullptr;
+    auto cluster = std::make_unique<app::Cluster>(nullptr, nullptr, o.clusterTimeout);
+    const int screens = static_cast<int>(o.display.screens.size());
+    if (cluster->size() > screens)
+        cluster->abortAll("--cluster: " + std::to_string(cluster->size()) + " ranks for " + std::to_string(screens) +
+                          " screens (expected at most one rank per screen)");
+    config::screensOfRank(o.display, cluster->rank(), cluster->size());  // throws for a bad "rank"
+    return cluster;
+}
+
+double receiveFrame(app::Cluster& cluster, FrameInput& input) {
+    app::FrameState state = cluster.rank() == 0 ? frameStateOf(input) : app::FrameState{};
+    const double seconds = cluster.broadcast(state);
+    if (cluster.rank() != 0 && !frameInputOf(state, input)) cluster.abortAll("received a malformed frame input");
+    return 1e3 * seconds;
+}
+
+namespace {
+
+std::vector<std::uint8_t> statsBytes(const FrameResult& r, double syncMs) {
+    const double values[10] = {r.frameMs, r.cpuMs, r.gpuMs, double(r.stats.triangles), double(r.stats.drawCalls), syncMs,
+                               double(r.warpFallbacks), r.maxErrorDeg, r.maxErrorPixels, double(r.geometryTriangles)};
+    std::vector<std::uint8_t> bytes(sizeof values);
+    std::memcpy(bytes.data(), values, sizeof values);
+    return bytes;
+}
+
+}  // namespace
+
+double combineFrame(app::Cluster& cluster, FrameResult& r, double syncMs, const std::vector<int>& screens) {
+    syncMs += 1e3 * cluster.swapBarrier();
+    // Only this rank's screens were drawn; the read-back holds every screen's target.
+    std::erase_if(r.images, [&](const ScreenImage& i) {
+        return std::find(screens.begin(), screens.end(), i.screen) == screens.end();
+    });
+    const auto stats = cluster.gatherBytes(statsBytes(r, syncMs));
+    const auto images = cluster.gatherBytes(r.images.empty() ? std::vector<std::uint8_t>{} : encodeImages(r.images));
+    if (cluster.rank() != 0) return syncMs;
+    r.stats.triangles = 0;
+    r.stats.drawCalls = 0;
+    r.geometryTriangles = 0;
+    r.warpFallbacks = 0;
+    double slowestSync = 0.0;
+    for (const auto& bytes : stats) {
+        double v[10];
+        if (bytes.size() != sizeof v) cluster.abortAll("gathered malformed frame statistics");
+        std::memcpy(v, bytes.data(), sizeof v);
+        r.frameMs = std::max(r.frameMs, v[0]);
+        r.cpuMs = std::max(r.cpuMs, v[1]);
+        r.gpuMs = std::max(r.gpuMs, v[2]);
+        r.stats.triangles += static_cast<std::size_t>(v[3]);
+        r.stats.drawCalls += static_cast<int>(v[4]);
+        slowestSync = std::max(slowestSync, v[5]);
+        r.warpFallbacks = std::max(r.warpFallbacks, static_cast<int>(v[6]));  // a wall counts once, on any rank
+        r.maxErrorDeg = std::max(r.maxErrorDeg, v[7]);  // each rank measures the textures its screens show
+        r.maxErrorPixels = std::max(r.maxErrorPixels, v[8]);
+        r.geometryTriangles += static_cast<std::size_t>(v[9]);
+    }
+    r.images.clear();
+    for (const auto& bytes : images)
+        if (!bytes.empty() && !decodeImages(bytes, r.images)) cluster.abortAll("gathered malformed images");
+    std::sort(r.images.begin(), r.images.end(), [](const ScreenImage& a, const ScreenImage& b) {
+        return a.screen != b.screen ? a.screen < b.screen : a.image < b.image;
+    });
+    return slowestSync;
+}
+
+#else  // no MPI in this build
+
+std::unique_ptr<app::Cluster> openCluster(const app::RunOptions& o) {
+    if (o.cluster) throw Error("--cluster: this build has no MPI (configure with -DCAVEWALL_WITH_MPI=ON and install Open MPI)");
+    return nullptr;
+}
+
+double receiveFrame(app::Cluster&, FrameInput&) { return 0.0; }
+double combineFrame(app::Cluster&, FrameResult&, double syncMs, const std::vector<int>&) { return syncMs; }
+
+// openCluster never makes a app::Cluster here; these keep the unique_ptr and the call sites linking.
+app::Cluster::~app::Cluster() = default;
+double app::Cluster::barrier(double, const char*) { return 0.0; }
+
+#endif
+
+}  // namespace cavewall::gl

@@ -1,0 +1,79 @@
+#include "app/gl/run_output.h"
+
+#include "config/error.h"
+
+#include <charconv>
+#include <cerrno>
+#include <cstring>
+#include <string>
+
+namespace cavewall::gl {
+
+namespace {
+
+std::string exact(double v) {
+    char buffer[32];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, v).ptr;
+    return std::string(buffer, end);
+}
+
+std::FILE* openCsv(const std::filesystem::path& file, const char* header) {
+    std::FILE* f = std::fopen(file.c_str(), "w");
+    if (!f) throw Error(file.string() + ": cannot write (" + std::strerror(errno) + ")");
+    std::fputs(header, f);
+    return f;
+}
+
+}  // namespace
+
+RunOutput::RunOutput(std::filesystem::path folder, const scenes::SceneDescription& description,
+                     const display::Display& display)
+    : _folder(std::move(folder)), _description(description), _display(display) {
+    std::error_code ec;
+    std::filesystem::create_directories(_folder, ec);
+    if (ec) throw Error("--out: cannot create '" + _folder.string() + "' (" + ec.message() + ")");
+    _frames = openCsv(_folder / "frames.csv",
+                      "frame,t,head_x,head_y,head_z,world_x,world_y,world_z,cell,zone,frame_ms,cpu_ms,gpu_ms,"
+                      "triangles,draw_calls,textures_resident,page_ins,misses,max_err_deg,max_err_px,fallbacks,sync_ms,warp_fallbacks,"
+                      "lod_px,lod_err_px,lod_over_budget,geometry_triangles\n");
+    _walls = openCsv(_folder / "walls.csv", "frame,wall,textures,geometry_weight,fallback,beyond,err_deg\n");
+}
+
+RunOutput::~RunOutput() {
+    if (_frames) std::fclose(_frames);
+    if (_walls) std::fclose(_walls);
+}
+
+void RunOutput::writeFrame(long frame, double t, glm::dvec3 head, const gl::FrameResult& r, double syncMs) {
+    const glm::dvec3& w = r.eyeWorld;
+    const std::string cell =
+        r.cell >= 0 && r.cell < static_cast<int>(_description.cells.size()) ? _description.cells[r.cell].name : "-";
+    int fallbacks = 0;
+    for (const gl::WallState& s : r.walls) fallbacks += s.fallback ? 1 : 0;
+    std::fprintf(_frames, "%ld,%s,%s,%s,%s,%s,%s,%s,%s,%d,%.3f,%.3f,%.3f,%zu,%d,%d,%ld,%ld,%.4f,%.2f,%d,%.3f,%d,%.3f,%.3f,%d,%zu\n", frame,
+                 exact(t).c_str(), exact(head.x).c_str(), exact(head.y).c_str(), exact(head.z).c_str(),
+                 exact(w.x).c_str(), exact(w.y).c_str(), exact(w.z).c_str(), cell.c_str(), r.zone, r.frameMs, r.cpuMs,
+                 r.gpuMs, r.stats.triangles, r.stats.drawCalls, r.pager.resident, r.pager.pageIns, r.pager.misses,
+                 r.maxErrorDeg, r.maxErrorPixels, fallbacks, syncMs, r.warpFallbacks, r.lodTolerancePx, r.lodErrorPx, r.lodOverBudget ? 1 : 0, r.geometryTriangles);
+    for (const gl::WallState& s : r.walls) {
+        std::string textures;
+        for (const auto& [id, weight] : s.textures)
+            textures += (textures.empty() ? "" : ";") + std::to_string(id) + ":" + exact(weight);
+        const std::string name = s.wall < static_cast<int>(_description.walls.size()) ? _description.walls[s.wall].name
+                                                                                       : std::to_string(s.wall);
+        std::fprintf(_walls, "%ld,%s,%s,%s,%d,%d,%.4f\n", frame, name.c_str(), textures.c_str(),
+                     exact(s.geometryWeight).c_str(), s.fallback ? 1 : 0, s.beyond ? 1 : 0, s.errorDeg);
+    }
+    if (std::ferror(_frames) || std::ferror(_walls)) throw Error(_folder.string() + ": writing the CSV files failed");
+}
+
+std::filesystem::path RunOutput::saveImages(long frame, const std::vector<gl::ScreenImage>& images) {
+    char name[16];
+    std::snprintf(name, sizeof name, "%05ld", frame);
+    const std::filesystem::path folder = _folder / "frames" / name;
+    std::filesystem::create_directories(folder);
+    const auto files = gl::writeFrame(folder, images, gl::foldoutOf(_display, images));
+    return files.back();
+}
+
+}  // namespace cavewall::gl

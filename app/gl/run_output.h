@@ -1,0 +1,50 @@
+#pragma once
+// The files of a `cavewall run`:
+//   frames.csv  one row per frame: frame, t, head_x, head_y, head_z, world_x, world_y, world_z,
+//               cell, zone, frame_ms, cpu_ms, gpu_ms, triangles, draw_calls, textures_resident,
+//               page_ins, misses, max_err_deg, max_err_px, fallbacks, sync_ms
+//               (head in the cave frame and world = cyclopean eye in the scene, metres; cell is
+//               the cell's name or "-" outside every cell; zone -1 for none; misses and
+//               page_ins are running totals; fallbacks = walls drawn from a previous texture or
+//               as geometry because a wanted texture was not resident; sync_ms = cluster
+//               mode's slowest rank's wait for the frame broadcast and the swap lock)
+//   walls.csv   one row per frame and wall bounding the viewer's cell: frame, wall (name),
+//               textures ("id:weight" joined by ';'), geometry_weight, fallback (0/1)
+//   frames/<frame, 5 digits>/<stem>.png and foldout.png for every saved frame.
+// Poses are written in the shortest form that reads back to the same double, so replays can be
+// compared exactly.
+
+#include "display/display.h"
+#include "display/gl/frame_images.h"
+#include "scenes/scene_description.h"
+#include "walls/gl/walkthrough.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <vector>
+
+namespace cavewall::gl {
+
+class RunOutput {
+public:
+    // Creates `folder` and both CSV files; throws Error when they cannot be written.
+    // Keeps references to `description` and `display`.
+    RunOutput(std::filesystem::path folder, const scenes::SceneDescription& description, const display::Display& display);
+    ~RunOutput();
+    RunOutput(const RunOutput&) = delete;
+    RunOutput& operator=(const RunOutput&) = delete;
+
+    // `syncMs`: cluster mode's wait for the frame broadcast and the swap lock (0 otherwise).
+    void writeFrame(long frame, double t, glm::dvec3 head, const gl::FrameResult& result, double syncMs = 0.0);
+    // Writes the frame's images and fold-out; returns the fold-out's path.
+    std::filesystem::path saveImages(long frame, const std::vector<gl::ScreenImage>& images);
+
+private:
+    std::filesystem::path _folder;
+    const scenes::SceneDescription& _description;
+    const display::Display& _display;
+    std::FILE* _frames = nullptr;
+    std::FILE* _walls = nullptr;
+};
+
+}  // namespace cavewall::gl

@@ -1,0 +1,152 @@
+#include "app/gl/run_session.h"
+
+#include "display/display.h"
+#include "display/frame_budget.h"
+#include "display/gl/context.h"
+#include "input/navigator.h"
+#include "input/recording.h"
+#include "input/tracker_source.h"
+#include "input/tracking_pipeline.h"
+#include "scenes/loader.h"
+#include "app/gl/run_cluster.h"
+#include "app/gl/run_input.h"
+#include "app/gl/run_output.h"
+#include "app/scene_query.h"
+#include "walls/gl/baker.h"
+#include "walls/gl/walkthrough.h"
+#include "walls/visibility.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <thread>
+
+namespace cavewall::gl {
+
+using app::RunOptions;
+using app::RunSummary;
+using app::WindowMode;
+
+namespace {
+
+// Plans and bakes (or finds in the cache) the scene's wall textures.
+gl::WallSetup prepareWalls(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
+                           gl::Context& context) {
+    walls::BakeRequest request;
+    request.scene = o.scene;
+    request.plan = o.plan;
+    request.context = &context;
+    if (o.cache) request.cache = *o.cache;
+    if (o.verbose)
+        request.progress = [](const walls::BakeProgress& p) {
+            if (p.baked > 0 && (p.done % 10 == 0 || p.done == p.total))
+                std::cout << "bake: " << p.done << "/" << p.total << " textures (" << p.baked << " baked) "
+                          << std::lround(p.seconds) << " s\n" << std::flush;
+        };
+    walls::BakeResult baked = walls::bakeScene(request);
+    context.makeCurrent();
+    gl::WallSetup setup;
+    setup.plan = walls::planZones(d, o.plan);
+    setup.table = walls::computeVisibility(d);
+    walls::assignDepthBehind(setup.plan, scene, d, setup.table);
+    setup.folder = baked.folder;
+    setup.manifest = std::move(baked.manifest);
+    if (o.verbose)
+        std::cout << "walls: " << setup.plan.textures.size() << " textures in " << setup.folder.string() << " ("
+                  << baked.baked << " baked now, " << baked.reused << " reused)\n";
+    return setup;
+}
+
+std::unique_ptr<gl::Context> makeContext(const RunOptions& o, const display::Display& display) {
+    bool windowed = o.window == WindowMode::Window;
+    if (o.window == WindowMode::Auto) windowed = gl::windowSystemAvailable();
+    if (windowed) {
+        const std::string why = gl::windowsUnavailableReason();
+        if (!why.empty()) throw Error("--window: " + why);
+        return gl::createWindowedContext(gl::windowRequests(display), false);
+    }
+    return gl::createHeadlessContext();
+}
+
+// In cluster mode rank 0 plans and bakes first and the others then find everything in the
+// cache (one bake per cache folder at a time); the wait is bounded by kBakeWaitSeconds.
+constexpr double kBakeWaitSeconds = 3600.0;
+
+gl::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
+                               gl::Context& context, app::Cluster* cluster) {
+    if (!cluster) return prepareWalls(o, scene, d, context);
+    std::optional<gl::WallSetup> setup;
+    if (cluster->rank() == 0) setup = prepareWalls(o, scene, d, context);
+    cluster->barrier(kBakeWaitSeconds, "waiting for rank 0 to bake the wall textures");
+    if (cluster->rank() != 0) {
+        RunOptions quiet = o;
+        quiet.verbose = false;
+        setup = prepareWalls(quiet, scene, d, context);
+    }
+    return std::move(*setup);
+}
+
+}  // namespace
+
+Transition walkthroughTransition(app::Transition transition) {
+    return transition == app::Transition::Warp ? Transition::Warp : Transition::Blend;
+}
+
+RunSummary runSession(const RunOptions& o) {
+    app::validate(o);
+    const display::Display display(o.display);
+    scenes::SceneDescription description;
+    const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description);
+    std::unique_ptr<app::Cluster> cluster = openCluster(o);
+    const int rank = cluster ? cluster->rank() : 0;
+    // Only rank 0 reads input (a network tracker binds its port once).
+    std::unique_ptr<RunInput> input = rank == 0 ? std::make_unique<RunInput>(o, scene, description) : nullptr;
+    const auto context = makeContext(o, display);
+
+    std::optional<gl::WallSetup> setup;
+    if (o.walls && !description.walls.empty()) setup = prepareWallsOnce(o, scene, description, *context, cluster.get());
+    const int textureCount = setup ? static_cast<int>(setup->plan.textures.size()) : 0;
+    gl::WalkthroughOptions options;
+    options.synchronousPaging = o.synchronousPaging;
+    options.textureBudgetMB = o.textureBudgetMB;
+    options.transition = walkthroughTransition(o.transition);
+    options.render.lodPixels = o.lodPixels;
+    options.triangleBudget = o.triangleBudget;
+    options.lodMaxPixels = std::max(o.lodMaxPixels, o.lodPixels);
+    const std::vector<int> screens = cluster ? config::screensOfRank(o.display, rank, cluster->size()) : std::vector<int>{};
+    gl::Walkthrough walkthrough(scene, description, display, *context, std::move(setup), options, screens);
+
+    std::unique_ptr<RunOutput> output = rank == 0 ? std::make_unique<RunOutput>(o.out, description, display) : nullptr;
+    RunSummary summary;
+    summary.renderer = context->info().renderer;
+    std::optional<display::FrameTimeBudget> frameBudget;
+    if (o.frameBudgetMs > 0.0) frameBudget.emplace(o.frameBudgetMs);
+    summary.walls = walkthrough.hasWalls();
+    for (long i = 0; i < o.frames; ++i) {
+        const bool save = o.saveEvery > 0 && i % o.saveEvery == 0;
+        if (context->windowCount() > 0 && context->pollCloseRequested()) break;  // a window was closed
+        gl::FrameInput in = input ? input->next(i, save, context->takeInputEvents()) : gl::FrameInput{};
+        if (frameBudget) in.triangleBudget = frameBudget->budget();
+        double syncMs = cluster ? receiveFrame(*cluster, in) : 0.0;
+        gl::FrameResult r = walkthrough.renderFrame(in);
+        if (cluster) syncMs = combineFrame(*cluster, r, syncMs, screens);
+        if (frameBudget) frameBudget->update(r.frameMs, r.geometryTriangles);  // rank 0: the slowest rank's time
+        if (!output) continue;
+        output->writeFrame(i, in.time, in.head.position, r, syncMs);
+        if (in.readImages) summary.foldouts.push_back(output->saveImages(i, r.images));
+        summary.frameMs.push_back(r.frameMs);
+        summary.worstErrorDeg = std::max(summary.worstErrorDeg, r.maxErrorDeg);
+        summary.worstErrorPx = std::max(summary.worstErrorPx, r.maxErrorPixels);
+        summary.worstLodErrorPx = std::max(summary.worstLodErrorPx, r.lodErrorPx);
+        summary.misses = r.pager.misses;
+        summary.pageIns = r.pager.pageIns;
+        if (o.verbose && (i + 1) % 60 == 0)
+            std::cout << "frame " << i + 1 << "/" << o.frames << ": " << r.frameMs << " ms\n" << std::flush;
+    }
+    summary.textures = textureCount;
+    summary.rank = rank;
+    return summary;
+}
+
+}  // namespace cavewall::gl

@@ -1,0 +1,85 @@
+#pragma once
+// The options of `cavewall run` (and of the demo, which runs the same session three times),
+// as plain data with typed modes. The command line parses them once (tools/cmd_run.cpp);
+// everything below it compares enums, never strings. validate() holds the rules that tie
+// several options together, so every caller of the session gets the same messages.
+
+#include "config/display_config.h"
+#include "walls/plan.h"
+
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace cavewall::app {
+
+inline constexpr double kRunStep = 1.0 / 60.0;  // seconds per frame
+
+enum class WindowMode { Auto, Headless, Window };
+
+// How a wall's textures hand over to geometry: cross-fade, or geometry warped onto the
+// textures (gl::Transition).
+enum class Transition { Blend, Warp };
+
+// --nav. Auto: guided along the scene's walkPath when it has one, else None (the CAVE stays
+// where the path starts, or at the origin).
+enum class Navigation { Auto, Guided, Fly, Walk, None };
+
+// The words the command line accepts for each enum, in the order its help lists them.
+inline constexpr std::array<std::pair<std::string_view, Transition>, 2> kTransitionNames{{
+    {"blend", Transition::Blend}, {"warp", Transition::Warp}}};
+inline constexpr std::array<std::pair<std::string_view, Navigation>, 4> kNavigationNames{{
+    {"guided", Navigation::Guided}, {"fly", Navigation::Fly}, {"walk", Navigation::Walk}, {"none", Navigation::None}}};
+
+// "blend" | "warp".
+std::string_view toString(Transition transition);
+
+struct RunOptions {
+    std::filesystem::path scene;                // scene.json (or its folder) or a glTF/GLB file
+    config::DisplayConfig display;              // validated
+    std::string tracker = "sim:walk";           // input::makeTracker spec, or "desktop"
+    long frames = 120;                          // >= 1
+    Navigation nav = Navigation::Auto;
+    double guidePace = 1.0;                     // m/s along the walk path (guided)
+    WindowMode window = WindowMode::Headless;
+    Transition transition = Transition::Blend;
+    bool walls = true;                          // false: --no-walls, full (culled) geometry
+    walls::PlanOptions plan;                    // alpha etc. for planning and baking
+    std::optional<std::filesystem::path> cache; // bake cache folder (default: the baker's)
+    long saveEvery = 0;                         // save frames: 0 none, K every K-th frame
+    std::optional<std::filesystem::path> record;// write the input stream for replay
+    bool synchronousPaging = false;             // see gl::WalkthroughOptions
+    double textureBudgetMB = 256.0;
+    double lodPixels = 0.0;                     // --lod: level-of-detail tolerance in pixels, 0 off
+    std::size_t triangleBudget = 0;             // --triangle-budget: per frame, 0 none (needs --lod)
+    double frameBudgetMs = 0.0;                 // --frame-budget-ms: frame-time target, 0 none (needs --lod)
+    double lodMaxPixels = 8.0;                  // --lod-max: the most a budget raises the tolerance to
+    std::filesystem::path out;                  // output folder (created)
+    bool verbose = true;                        // progress and summary on stdout
+    bool cluster = false;                       // --cluster: one process per screen group on MPI
+                                                // (app/gl/run_cluster.h); run under mpirun
+    double clusterTimeout = 10.0;               // s a rank waits for the others before ending all
+};
+
+// Throws cavewall::Error, naming the flags, when options contradict each other: frames < 1, a
+// triangle or frame-time budget without levels of detail, or both budgets at once.
+void validate(const RunOptions& options);
+
+struct RunSummary {
+    std::string renderer;                       // GL_RENDERER
+    bool walls = false;                         // the wall pass ran
+    int textures = 0;                           // baked textures available
+    std::vector<double> frameMs;                // per frame
+    double worstErrorDeg = 0.0, worstErrorPx = 0.0;
+    double worstLodErrorPx = 0.0;               // largest level-of-detail error drawn, pixels
+    long misses = 0, pageIns = 0;
+    std::vector<std::filesystem::path> foldouts;// saved fold-outs, in frame order
+    int rank = 0;                               // cluster mode: this process's rank (only rank 0
+                                                // fills the fields above)
+};
+
+}  // namespace cavewall::app

@@ -1,0 +1,67 @@
+// The run's options (app/run_options.h): the rules tying options together, one table row per
+// rule with its message, and the enums' words.
+#include "app/run_options.h"
+
+#include "config/error.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <functional>
+
+namespace cavewall::app {
+namespace {
+
+using ::testing::HasSubstr;
+
+TEST(RunOptions, DefaultsAreValid) { EXPECT_NO_THROW(validate(RunOptions{})); }
+
+TEST(RunOptions, EachRuleNamesItsFlags) {
+    struct Case {
+        const char* name;
+        std::function<void(RunOptions&)> change;
+        const char* message;
+    };
+    const Case cases[] = {
+        {"no frames", [](RunOptions& o) { o.frames = 0; }, "--frames: expected at least 1, got 0"},
+        {"budget without lod", [](RunOptions& o) { o.triangleBudget = 1000; },
+         "--triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod 0"},
+        {"frame budget without lod", [](RunOptions& o) { o.frameBudgetMs = 16.7; },
+         "--frame-budget-ms: needs levels of detail (--lod PX with PX > 0), got --lod 0"},
+        {"both budgets",
+         [](RunOptions& o) {
+             o.lodPixels = 1.0;
+             o.frameBudgetMs = 16.7;
+             o.triangleBudget = 1000;
+         },
+         "--frame-budget-ms and --triangle-budget: expected one of them, got both"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        RunOptions o;
+        c.change(o);
+        EXPECT_THAT([&] { validate(o); }, ::testing::ThrowsMessage<Error>(HasSubstr(c.message)));
+    }
+    RunOptions budgeted;  // each budget alone with levels of detail is fine
+    budgeted.lodPixels = 1.0;
+    budgeted.triangleBudget = 1000;
+    EXPECT_NO_THROW(validate(budgeted));
+    budgeted.triangleBudget = 0;
+    budgeted.frameBudgetMs = 16.7;
+    EXPECT_NO_THROW(validate(budgeted));
+}
+
+TEST(RunOptions, EveryEnumValueHasOneWord) {
+    EXPECT_EQ(toString(Transition::Blend), "blend");
+    EXPECT_EQ(toString(Transition::Warp), "warp");
+    // --nav's help lists guided, fly, walk, none; Auto has no word (the flag left out).
+    std::vector<std::string_view> words;
+    for (const auto& [word, value] : kNavigationNames) {
+        words.push_back(word);
+        EXPECT_NE(value, Navigation::Auto);
+    }
+    EXPECT_EQ(words, (std::vector<std::string_view>{"guided", "fly", "walk", "none"}));
+}
+
+}  // namespace
+}  // namespace cavewall::app

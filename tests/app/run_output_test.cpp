@@ -1,0 +1,80 @@
+// The files of a run (app/gl/run_output.h) written from hand-made frame results: the columns
+// README and the header promise, read back by name, and poses exact to the bit. No GL context.
+#include "app/gl/run_output.h"
+
+#include "config/display_config.h"
+#include "tests/support/csv_table.h"
+#include "tests/support/files.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+namespace cavewall::gl {
+namespace {
+
+scenes::SceneDescription twoCells() {
+    scenes::SceneDescription d;
+    d.cells.resize(2);
+    d.cells[0].name = "A";
+    d.cells[1].name = "B";
+    d.walls.resize(1);
+    d.walls[0].name = "A|B";
+    return d;
+}
+
+TEST(RunOutput, FramesAndWallsCsvHaveOneRowPerFrameAndWall) {
+    const test::TempFolder folder("run_output");
+    const scenes::SceneDescription d = twoCells();
+    const display::Display display(config::loadDisplayConfig("cave4"));
+    const glm::dvec3 head(0.1, 1.7 / 3.0, -0.2);  // 1.7 / 3 has no short decimal form
+    {
+        RunOutput out(folder.path(), d, display);
+        FrameResult r;
+        r.cell = 1;
+        r.zone = 4;
+        r.eyeWorld = glm::dvec3(-37.0, 1.7, -10.0);
+        r.frameMs = 12.3456;
+        r.stats.triangles = 5000;
+        r.geometryTriangles = 4990;
+        r.walls = {WallState{0, {{7, 0.25}, {8, 0.75}}, 0.0, true, false, 3.5}};
+        out.writeFrame(0, 0.0, head, r);
+        r.cell = -1;  // outside every cell
+        r.walls.clear();
+        out.writeFrame(1, 1.0 / 60.0, head, r, 2.5);
+    }
+    const test::CsvTable frames = test::readCsv(folder / "frames.csv");
+    ASSERT_EQ(frames.size(), 2u);
+    EXPECT_EQ(frames[0].at("frame"), "0");
+    EXPECT_EQ(frames[0].at("cell"), "B");
+    EXPECT_EQ(frames[1].at("cell"), "-");
+    EXPECT_EQ(frames[0].at("zone"), "4");
+    EXPECT_EQ(frames[0].at("frame_ms"), "12.346");  // three decimals
+    EXPECT_EQ(frames[0].at("triangles"), "5000");
+    EXPECT_EQ(frames[0].at("geometry_triangles"), "4990");
+    EXPECT_EQ(frames[0].at("fallbacks"), "1");  // the one wall's fallback
+    EXPECT_EQ(frames[1].at("sync_ms"), "2.500");
+    // Poses read back to the same double (replays are compared exactly).
+    EXPECT_EQ(std::strtod(frames[0].at("head_y").c_str(), nullptr), head.y);
+    EXPECT_EQ(std::strtod(frames[1].at("t").c_str(), nullptr), 1.0 / 60.0);
+    EXPECT_EQ(frames[0].number("world_x"), -37.0);
+
+    const test::CsvTable walls = test::readCsv(folder / "walls.csv");
+    ASSERT_EQ(walls.size(), 1u);
+    EXPECT_EQ(walls[0].at("wall"), "A|B");
+    EXPECT_EQ(walls[0].at("textures"), "7:0.25;8:0.75");
+    EXPECT_EQ(walls[0].at("fallback"), "1");
+    EXPECT_EQ(walls[0].at("beyond"), "0");
+    EXPECT_EQ(walls[0].number("err_deg"), 3.5);
+}
+
+TEST(RunOutput, AnUnwritableFolderIsAClearError) {
+    const test::TempFolder folder("run_output_bad");
+    test::writeFile(folder / "file", "x");  // a file where the folder should go
+    const scenes::SceneDescription d = twoCells();
+    const display::Display display(config::loadDisplayConfig("cave4"));
+    EXPECT_THROW(RunOutput(folder / "file" / "out", d, display), Error);
+}
+
+}  // namespace
+}  // namespace cavewall::gl

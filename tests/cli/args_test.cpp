@@ -1,0 +1,33 @@
+// Command-line words to typed options (tools/args.h): enums are parsed once, at the edge, and a
+// bad word names the flag, the words it takes and what was given.
+#include "tools/args.h"
+
+#include "app/run_options.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace cavewall::tools {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
+
+TEST(ArgsChoice, WordsBecomeEnumsAndAbsentFlagsTheFallback) {
+    const Args args({"--transition", "warp", "--nav", "walk"}, {});
+    EXPECT_EQ(args.choice("transition", app::kTransitionNames, app::Transition::Blend), app::Transition::Warp);
+    EXPECT_EQ(args.choice("nav", app::kNavigationNames, app::Navigation::Auto), app::Navigation::Walk);
+    const Args none({}, {});
+    EXPECT_EQ(none.choice("nav", app::kNavigationNames, app::Navigation::Auto), app::Navigation::Auto);
+}
+
+TEST(ArgsChoice, ABadWordNamesTheFlagTheWordsAndWhatWasGiven) {
+    // Two words read "a or b"; more read "one of a, b, c" (the messages `cavewall run` had).
+    EXPECT_THAT([] { Args({"--transition", "morph"}, {}).choice("transition", app::kTransitionNames, app::Transition::Blend); },
+                ThrowsMessage<Error>(HasSubstr("--transition: expected blend or warp, got 'morph'")));
+    EXPECT_THAT([] { Args({"--nav", "Walk"}, {}).choice("nav", app::kNavigationNames, app::Navigation::Auto); },
+                ThrowsMessage<Error>(HasSubstr("--nav: expected one of guided, fly, walk, none, got 'Walk'")));
+}
+
+}  // namespace
+}  // namespace cavewall::tools
