@@ -69,7 +69,7 @@ struct Fixture {
 };
 
 void plantFrame(benchmark::State& state, Fixture& f, bool culling) {
-    gl::DrawFilter filter;
+    render::DrawFilter filter;
     filter.frustumCull = culling;
     const gl::ViewTarget target{f.framebuffer.id(), {0, 0, kSize, kSize}, glm::vec4(0.02f, 0.02f, 0.03f, 1.0f)};
     double objects = 0, triangles = 0, drawCalls = 0, cullMs = 0, cpuMs = 0, gpuMs = 0;

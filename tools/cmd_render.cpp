@@ -2,7 +2,7 @@
 #include "display/display.h"
 #include "display/gl/context.h"
 #include "display/gl/snapshot.h"
-#include "display/gl/view_all.h"
+#include "render/view_all.h"
 #include "scenes/loader.h"
 #include "scenes/primitives.h"
 #include "tools/args.h"
@@ -76,7 +76,7 @@ int runRender(const std::vector<std::string>& words) {
         head.orientation = glm::angleAxis(glm::radians(args.number("head-yaw", 0.0, -360.0, 360.0)), glm::dvec3(0, 1, 0));
 
     glm::dmat4 worldFromCave(1.0);
-    if (args.has("view-all")) worldFromCave = gl::viewAll(disp, head, scene.bounds()).worldFromCave;
+    if (args.has("view-all")) worldFromCave = render::viewAll(disp, head, scene.bounds()).worldFromCave;
 
     const auto context = openContext(disp, args.has("window"));
     gl::Snapshotter snapshotter(disp, scene, *context);

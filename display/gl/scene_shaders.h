@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <string>
 
 namespace cavewall::gl::shaders {
@@ -20,6 +21,17 @@ struct DrawRecord {
     glm::ivec4 info{0};               // x: material record index
 };
 static_assert(sizeof(DrawRecord) == 128);
+
+// Memory layout of GL's DrawElementsIndirectCommand (20 bytes, tightly packed): one per draw
+// in the indirect buffer.
+struct DrawCommand {
+    std::uint32_t count = 0;          // indices
+    std::uint32_t instanceCount = 1;
+    std::uint32_t firstIndex = 0;     // in indices
+    std::int32_t baseVertex = 0;
+    std::uint32_t baseInstance = 0;   // the draw's record index
+};
+static_assert(sizeof(DrawCommand) == 20);
 
 // Per-material record, binding 1 (one per scene material, then the default material).
 struct MaterialRecord {

@@ -1,5 +1,6 @@
-// The DrawFilter / single-view API of the scene renderer (what the walkthrough and the wall
-// baker call). Scene: three unlit 0.5 m squares 2 m in front of an eye at the origin, at
+// The single-view API of the scene renderer (what the walkthrough and the wall baker call):
+// what a render list selects is what shows in pixels. (Filter semantics, culling, order and
+// batches are unit-tested without GL in tests/render/.) Scene: three unlit 0.5 m squares 2 m in front of an eye at the origin, at
 // x = -1, 0, +1 m, red, green and blue; one 2 m x 2 m screen 1 m away, 64 x 64 pixels. At 2 m a
 // point at x maps to x / 2 on the screen, so the squares' centres fall on pixel columns 16, 32
 // and 48 of row 32, each covering 8 x 8 pixels.
@@ -63,7 +64,7 @@ protected:
         ViewStats stats;
     };
     // Renders the single view through beginFrame + renderView, the walkthrough's path.
-    Result render(const scenes::Scene& scene, const DrawFilter& filter) {
+    Result render(const scenes::Scene& scene, const render::DrawFilter& filter) {
         const display::Display d(oneScreen());
         const RenderTargets targets(d, *context);
         SceneRenderer renderer(scene, unlit());
@@ -85,31 +86,22 @@ protected:
 TEST_F(DrawFilterTest, OnlySelectedObjectsAreSubmitted) {
     const scenes::Scene scene = threeSquares();
     const std::vector<int> firstAndLast{2, 0, 0, 7, -1};  // order, duplicates and bad indices do not matter
-    const std::vector<bool> middleOnly{false, true, false};
-    const std::vector<bool> shortMask{true};              // objects beyond the mask are left out
+    const std::vector<int> middle{1};
     struct Case {
         const char* name;
-        DrawFilter filter;
+        render::DrawFilter filter;
         const char* expected;
     };
-    DrawFilter list, mask, shortened, noStructure, structure, both, listAndMask;
+    render::DrawFilter list, noStructure, middleWithoutStructure;
     list.objects = &firstAndLast;
-    mask.mask = &middleOnly;
-    shortened.mask = &shortMask;
     noStructure.skipStructure = true;
-    structure.onlyStructure = true;
-    both.skipStructure = both.onlyStructure = true;
-    listAndMask.objects = &firstAndLast;
-    listAndMask.mask = &shortMask;
+    middleWithoutStructure.objects = &middle;
+    middleWithoutStructure.skipStructure = true;
     const Case cases[] = {
         {"no filter draws all", {}, "RGB"},
         {"object list", list, "R-B"},
-        {"mask", mask, "-G-"},
-        {"short mask", shortened, "R--"},
         {"skip structure (green)", noStructure, "R-B"},
-        {"only structure", structure, "-G-"},
-        {"both structure flags: nothing", both, "---"},
-        {"list and mask intersect", listAndMask, "R--"},
+        {"list and skip structure intersect: nothing", middleWithoutStructure, "---"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
@@ -128,7 +120,7 @@ TEST_F(DrawFilterTest, FrustumCullingLeavesOutObjectsOutsideAndChangesNoPixel) {
     scenes::Scene scene = threeSquares();
     addSquare(scene, {0, 0, 2}, {1, 1, 1, 1});    // behind the eye
     addSquare(scene, {50, 0, -2}, {1, 1, 1, 1});  // far to the right of the 90° frustum
-    DrawFilter noCulling;
+    render::DrawFilter noCulling;
     noCulling.frustumCull = false;
     const Result culled = render(scene, {}), all = render(scene, noCulling);
     EXPECT_EQ(culled.stats.objectsDrawn, 3);  // the two outside squares are not submitted
@@ -173,7 +165,8 @@ protected:
         framebuffer.reset();
         DrawFilterTest::TearDown();
     }
-    scenes::Image bake(const scenes::Scene& scene, const glm::dmat4& worldFromFrame, const DrawFilter& filter = {}) {
+    scenes::Image bake(const scenes::Scene& scene, const glm::dmat4& worldFromFrame,
+                       const render::DrawFilter& filter = {}) {
         // The wall: the display's screen quad, seen from the origin of the frame.
         const display::OffAxisFrustum frustum =
             display::offAxisFrustum({{-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}}, {0, 0, 0}, {0.05, INFINITY});

@@ -1,7 +1,7 @@
 // Levels of detail in the scene renderer, in pixels: a finely tessellated white cylinder on
-// black, drawn at full detail and at the levels chooseLods picks for a tolerance, must differ
-// only where the full image has a silhouette within that tolerance; the frame's triangle
-// count is what chooseLods predicted, and a triangle budget caps it.
+// black, drawn at full detail and at the levels render::chooseLods picks for a tolerance, must
+// differ only where the full image has a silhouette within that tolerance. (The choice itself,
+// budgets and predicted triangles included, is unit-tested in tests/render/lod_choice_test.cpp.)
 //
 // Scene: a cylinder of radius 0.5 m and height 1 m with 720 segments (its chords deviate
 // 0.5 (1 - cos(pi / 720)) = 5e-6 m from the circle: far below a pixel), welded as the loader
@@ -10,6 +10,7 @@
 #include "display/display.h"
 #include "display/gl/render_targets.h"
 #include "display/gl/scene_renderer.h"
+#include "render/lod_choice.h"
 #include "scenes/mesh_optimize.h"
 #include "scenes/primitives.h"
 #include "tests/gl/gl_test_support.h"
@@ -44,7 +45,7 @@ RenderSettings flatWhite(double lodPixels) {
 struct Frame {
     scenes::Image image;
     FrameStats stats;
-    FrameLod lod;
+    render::FrameLod lod;
 };
 
 bool covered(const scenes::Image& image, int x, int y) {
@@ -78,22 +79,14 @@ protected:
         SceneRenderer renderer(scene, flatWhite(lodPixels));
         const std::vector<display::ScreenView> views = d.views({{0, 0, 0}, glm::dquat(1, 0, 0, 0)});
         Frame f;
-        DrawFilter filter;
-        f.lod = renderer.chooseLods(views, glm::dmat4(1.0), filter, lodPixels, budget);
+        render::DrawFilter filter;
+        f.lod = render::chooseLods(renderer.renderScene(), views, glm::dmat4(1.0), filter, lodPixels, budget);
         filter.lodLevels = &f.lod.levels;
         f.stats = renderer.render(views, targets, glm::dmat4(1.0), filter);
         f.image = targets.read(0, 0);
         return f;
     }
 };
-
-TEST_F(LodTest, WithoutAToleranceNoLevelsAreBuiltAndEverythingIsFullDetail) {
-    const scenes::Scene scene = cylinderScene(4.0);
-    const Frame f = render(scene, 0.0);
-    EXPECT_EQ(f.lod.levels, std::vector<int>(1, 0));
-    EXPECT_EQ(f.lod.maxErrorPx, 0.0);
-    EXPECT_EQ(f.stats.triangles, scene.meshes[0].triangleCount());
-}
 
 TEST_F(LodTest, SilhouettesMoveByAtMostTheTolerance) {
     for (double distance : {2.0, 4.0, 12.0}) {
@@ -112,24 +105,6 @@ TEST_F(LodTest, SilhouettesMoveByAtMostTheTolerance) {
             EXPECT_LT(lod.stats.triangles, full.stats.triangles / 4);
         }
     }
-}
-
-TEST_F(LodTest, SubmittedTrianglesAreThePredictedOnesAndABudgetCapsThem) {
-    const scenes::Scene scene = cylinderScene(3.0);
-    const Frame free = render(scene, 0.5);
-    EXPECT_EQ(free.stats.triangles, free.lod.triangles);
-    EXPECT_FALSE(free.lod.overBudget);
-    // Half the unbudgeted count: the tolerance rises until the chosen level fits.
-    const std::size_t budget = free.lod.triangles / 2;
-    const Frame capped = render(scene, 0.5, budget);
-    EXPECT_EQ(capped.stats.triangles, capped.lod.triangles);
-    EXPECT_LE(capped.stats.triangles, budget);
-    EXPECT_GT(capped.lod.tolerancePx, 0.5);
-    EXPECT_LE(capped.lod.maxErrorPx, capped.lod.tolerancePx);
-    // A budget below the coarsest level cannot be met: flagged, coarsest level drawn.
-    const Frame impossible = render(scene, 0.5, 1);
-    EXPECT_TRUE(impossible.lod.overBudget);
-    EXPECT_GT(impossible.stats.triangles, 1u);
 }
 
 }  // namespace

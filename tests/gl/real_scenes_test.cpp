@@ -3,7 +3,7 @@
 // pixels; the CAVE is placed with viewAll so the whole model is in view.
 #include "display/display.h"
 #include "display/gl/snapshot.h"
-#include "display/gl/view_all.h"
+#include "render/view_all.h"
 #include "scenes/image_io.h"
 #include "scenes/loader.h"
 #include "tests/gl/gl_test_support.h"
@@ -39,7 +39,7 @@ protected:
     };
     // Renders `scene`; `worldFromCave` defaults to viewAll of the scene's bounds.
     Frame render(const scenes::Scene& scene, RenderSettings settings = {}, const glm::dmat4* worldFromCave = nullptr) {
-        const glm::dmat4 place = worldFromCave ? *worldFromCave : viewAll(display, kEye, scene.bounds()).worldFromCave;
+        const glm::dmat4 place = worldFromCave ? *worldFromCave : render::viewAll(display, kEye, scene.bounds()).worldFromCave;
         Snapshotter s(display, scene, *context, settings);
         Snapshot shot = s.render(kEye, place);
         return {std::move(shot.images.at(0).pixels), shot.stats};
@@ -101,7 +101,7 @@ TEST_F(RealScenes, NodeMatrixAndTrsRenderTheSameImage) {
     const scenes::Scene trs = scenes::loadSceneFile(kReal / "NodeMatrixVsTRS/Node_Attribute_07.gltf");
     const scenes::Scene matrix = scenes::loadSceneFile(kReal / "NodeMatrixVsTRS/Node_Attribute_08.gltf");
     // The same placement for both (their bounds agree to ~1e-7 m anyway).
-    const glm::dmat4 place = viewAll(display, kEye, trs.bounds()).worldFromCave;
+    const glm::dmat4 place = render::viewAll(display, kEye, trs.bounds()).worldFromCave;
     const scenes::ImageComparison r =
         scenes::compareImages(render(matrix, {}, &place).image, render(trs, {}, &place).image);
     EXPECT_TRUE(r.passes()) << r.describe();

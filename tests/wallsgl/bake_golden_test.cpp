@@ -76,7 +76,7 @@ TEST_F(BakeGoldenTest, BakedTextureMatchesGeometryFromItsSamplingPoint) {
 
         const OffscreenTarget target(baked.resolution);
         gl::ViewTarget view{target.framebuffer(), {0, 0, baked.resolution.x, baked.resolution.y}, kClear, glm::bvec4(true)};
-        gl::DrawFilter filter;
+        render::DrawFilter filter;
         filter.objects = &shown[side];
         renderer.renderFrustum(frustum, glm::dmat4(1.0), view, filter);
         const scenes::Image geometry = target.read("geometry");

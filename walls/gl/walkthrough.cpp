@@ -2,6 +2,8 @@
 
 #include "display/timing.h"
 #include "scenes/image_io.h"
+#include "display/gl/view_loop.h"
+#include "render/lod_choice.h"
 #include "walls/gl/texture_store.h"
 
 
@@ -103,33 +105,27 @@ std::vector<WallDraw> Walkthrough::wallDraws(const walls::FramePlan& plan) const
 }
 
 void Walkthrough::drawViews(const walls::FrameInput& input, const std::vector<display::ScreenView>& views,
-                            const DrawFilter& filter, const walls::FramePlan& plan, walls::FrameResult& result) {
+                            const render::DrawFilter& filter, const walls::FramePlan& plan, walls::FrameResult& result) {
     const glm::dmat4 caveFromWorld = glm::inverse(input.worldFromCave);
     const std::vector<WallDraw> walls = _walls ? wallDraws(plan) : std::vector<WallDraw>{};
     _renderer.beginFrame(_targets, _screens);
-    result.perScreen.assign(_display.screens().size(), ViewStats{});
-    for (const display::ScreenView& view : views) {
-        const auto viewStart = Clock::now();
-        const FrameStats before = result.stats;
-        _targets.bind(view.screen, RenderTargets::imageOf(view.pass));
-        const ViewStats geometry = _renderer.renderView(view, input.worldFromCave, filter);
-        result.stats.drawCalls += geometry.drawCalls;
-        result.stats.triangles += geometry.triangles;
-        result.geometryTriangles += geometry.triangles;
-        if (_warp) _warp->draw(plan.warpWalls, view, caveFromWorld, result.stats);
+    result.stats = forEachView(views, _targets, [&](const display::ScreenView& view) {
+        ViewStats stats = _renderer.renderView(view, input.worldFromCave, filter);
+        result.geometryTriangles += stats.triangles;
+        // The warp, wall and cursor passes count into the view's triangles and draw calls.
+        FrameStats passes;
+        if (_warp) _warp->draw(plan.warpWalls, view, caveFromWorld, passes);
         // renderView leaves viewport, scissor and colour mask set for this view.
-        if (_walls) _walls->pass.draw(walls, view.frustum, caveFromWorld, _walls->store.sampler(), result.stats);
+        if (_walls) _walls->pass.draw(walls, view.frustum, caveFromWorld, _walls->store.sampler(), passes);
         if (input.hand) {
             if (!_cursor) _cursor = std::make_unique<HandCursorPass>();
-            _cursor->draw(*input.hand, view.frustum, result.stats);
+            _cursor->draw(*input.hand, view.frustum, passes);
         }
-        ViewStats& screen = result.perScreen[view.screen];
-        screen.cpuMs += msSince(viewStart);
-        screen.triangles += result.stats.triangles - before.triangles;
-        screen.drawCalls += result.stats.drawCalls - before.drawCalls;
-    }
-    glDisable(GL_SCISSOR_TEST);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        stats.triangles += passes.triangles;
+        stats.drawCalls += passes.drawCalls;
+        return stats;
+    });
+    result.perScreen = statsPerScreen(views, result.stats, _display.screens().size());
 }
 
 walls::FrameResult Walkthrough::renderFrame(const walls::FrameInput& input) {
@@ -146,15 +142,16 @@ walls::FrameResult Walkthrough::renderFrame(const walls::FrameInput& input) {
     result.warpFallbacks = plan.warpFallbacks;
     result.walls = std::move(plan.walls);
     if (_walls) result.pager = _walls->pager.stats();
-    DrawFilter filter;
+    render::DrawFilter filter;
     filter.objects = &plan.objects;
-    FrameLod lod;
+    render::FrameLod lod;
     if (_renderer.hasLods()) {
         // Over every screen, also those of other cluster ranks: each rank then picks the same
         // levels for what several draw, and the budget is the whole display's.
-        lod = _renderer.chooseLods(_display.views(input.head), input.worldFromCave, filter, _options.render.lodPixels,
-                                   input.triangleBudget > 0 ? input.triangleBudget : _options.triangleBudget,
-                                   _options.lodMaxPixels);
+        lod = render::chooseLods(_renderer.renderScene(), _display.views(input.head), input.worldFromCave, filter,
+                                 _options.render.lodPixels,
+                                 input.triangleBudget > 0 ? input.triangleBudget : _options.triangleBudget,
+                                 _options.lodMaxPixels);
         filter.lodLevels = &lod.levels;
         result.lodTolerancePx = lod.tolerancePx;
         result.lodErrorPx = lod.maxErrorPx;

@@ -73,7 +73,7 @@ private:
     walls::FramePlan planFrame(const walls::FrameInput& input, const std::vector<display::ScreenView>& views);
     std::vector<WallDraw> wallDraws(const walls::FramePlan& plan) const;
     void drawViews(const walls::FrameInput& input, const std::vector<display::ScreenView>& views,
-                   const DrawFilter& filter, const walls::FramePlan& plan, walls::FrameResult& result);
+                   const render::DrawFilter& filter, const walls::FramePlan& plan, walls::FrameResult& result);
     std::vector<display::ScreenView> renderedViews(const display::HeadPose& head) const;
     void present();
 

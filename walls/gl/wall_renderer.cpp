@@ -16,7 +16,7 @@ scenes::Image WallTextureRenderer::render(const display::ScreenQuad& quad, glm::
     target.framebuffer = _target->framebuffer();
     target.viewport = {0, 0, resolution.x, resolution.y};
     target.clearColor = glm::vec4(0.0f);  // alpha 0: nothing behind the wall here
-    gl::DrawFilter filter;
+    render::DrawFilter filter;
     filter.objects = &objects;
     filter.skipStructure = true;
     _stats = _renderer.renderFrustum(frustum, glm::dmat4(1.0), target, filter);

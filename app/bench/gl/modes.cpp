@@ -4,6 +4,8 @@
 #include "display/timing.h"
 #include "display/gl/render_targets.h"
 #include "display/gl/scene_renderer.h"
+#include "display/gl/view_loop.h"
+#include "render/lod_choice.h"
 #include "walls/frame_select.h"
 #include "walls/gl/bake_key.h"
 #include "walls/gl/wall_pass.h"
@@ -200,7 +202,7 @@ void runCellMode(const ModeContext& c, const walls::WallSetup& setup, bool nearO
         const walls::FrameSelection selection = selector.select(eye);
         const std::vector<int> objects =
             cellObjects(c.scene, cellMask(selection, c.description.cells.size(), nearOnly));
-        gl::DrawFilter filter;
+        render::DrawFilter filter;
         filter.objects = &objects;
         std::vector<gl::WallDraw> quads;
         if (quadPass)
@@ -212,9 +214,9 @@ void runCellMode(const ModeContext& c, const walls::WallSetup& setup, bool nearO
             quadPass->draw(quads, view.frustum, caveFromWorld, 0, quadStats);
         };
         const std::vector<display::ScreenView> views = c.display.views(in.head);
-        gl::FrameLod lod;
+        render::FrameLod lod;
         if (renderer.hasLods()) {
-            lod = renderer.chooseLods(views, in.worldFromCave, filter, settings.lodPixels);
+            lod = render::chooseLods(renderer.renderScene(), views, in.worldFromCave, filter, settings.lodPixels);
             filter.lodLevels = &lod.levels;
         }
         const gl::FrameStats stats = renderer.render(views, targets, in.worldFromCave, filter,
@@ -229,13 +231,7 @@ void runCellMode(const ModeContext& c, const walls::WallSetup& setup, bool nearO
         cost->drawCalls = static_cast<double>(stats.drawCalls + quadStats.drawCalls);
         cost->lodErrorPx = lod.maxErrorPx;
         cost->lodTolerancePx = lod.tolerancePx;
-        cost->perScreen.assign(c.display.screens().size(), gl::ViewStats{});
-        for (std::size_t v = 0; v < stats.perView.size() && v < views.size(); ++v) {  // perView is in view order
-            gl::ViewStats& screen = cost->perScreen[views[v].screen];
-            screen.cpuMs += stats.perView[v].cpuMs;
-            screen.triangles += stats.perView[v].triangles;
-            screen.drawCalls += stats.perView[v].drawCalls;
-        }
+        cost->perScreen = gl::statsPerScreen(views, stats, c.display.screens().size());
     };
     for (long i = 0; i < std::min<long>(3, c.path.frames.size()); ++i) draw(c.path.frames[i], nullptr);
     for (const walls::FrameInput& in : c.path.frames) {

@@ -1,17 +1,17 @@
-// viewAll: placing the CAVE so a whole model is in view (GL-free, display/gl/view_all.h).
+// viewAll: placing the CAVE so a whole model is in view (render/view_all.h).
 #include "config/display_config.h"
-#include "display/gl/view_all.h"
-#include "tests/gl/gl_test_support.h"
+#include "render/view_all.h"
+#include "tests/render/render_test_scenes.h"
 
 #include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-namespace cavewall::gl {
+namespace cavewall::render {
 namespace {
 
-config::DisplayConfig oneScreen() { return testing::oneScreenDisplay(); }
+using testing::oneScreen;
 
 scenes::Bounds box(glm::dvec3 min, glm::dvec3 max) {
     scenes::Bounds b;
@@ -58,7 +58,7 @@ TEST(ViewAll, FramesABoxFarFromTheOriginInTheSymmetricFrustum) {
 }
 
 TEST(ViewAll, PicksTheScreenTheHeadFaces) {
-    const display::Display d(config::loadDisplayConfig((testing::testConfigFolder() / "cave4_128.json").string()));
+    const display::Display d(config::loadDisplayConfig(std::string(CAVEWALL_SOURCE_DIR) + "/tests/gl/cave4_128.json"));
     const scenes::Bounds b = box({-5, 0, -5}, {5, 3, 5});
     struct Case {
         const char* name;
@@ -84,4 +84,4 @@ TEST(ViewAll, EmptyBoundsLeaveTheCaveWhereItIs) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::render

@@ -1,6 +1,6 @@
 #pragma once
-// "View all": navigating the CAVE so that a whole model is in view. GL-free (it lives beside
-// the renderer that needs it; display/ cannot see scene bounds).
+// "View all": navigating the CAVE so that a whole model is in view (display/ cannot see scene
+// bounds, so it lives here).
 //
 // The CAVE is only translated through the world (no rotation, no scale: the model keeps its
 // real size). The screen chosen is the one the head faces most directly (the largest dot
@@ -16,7 +16,7 @@
 
 #include <glm/glm.hpp>
 
-namespace cavewall::gl {
+namespace cavewall::render {
 
 struct ViewAll {
     glm::dmat4 worldFromCave{1.0};  // pure translation
@@ -28,4 +28,4 @@ struct ViewAll {
 // frame; the cyclopean eye (head position) is used.
 ViewAll viewAll(const display::Display& display, const display::HeadPose& head, const scenes::Bounds& bounds);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::render

@@ -1,4 +1,4 @@
-#include "display/gl/view_all.h"
+#include "render/view_all.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -6,7 +6,7 @@
 #include <array>
 #include <limits>
 
-namespace cavewall::gl {
+namespace cavewall::render {
 
 namespace {
 
@@ -51,4 +51,4 @@ ViewAll viewAll(const display::Display& display, const display::HeadPose& head, 
     return out;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::render
