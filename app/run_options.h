@@ -62,7 +62,7 @@ struct RunOptions {
     std::filesystem::path out;                  // output folder (created)
     bool verbose = true;                        // progress and summary on stdout
     bool cluster = false;                       // --cluster: one process per screen group on MPI
-                                                // (app/gl/run_cluster.h); run under mpirun
+                                                // (app/run_cluster.h); run under mpirun
     double clusterTimeout = 10.0;               // s a rank waits for the others before ending all
 };
 

@@ -8,9 +8,9 @@
 #include "display/gl/context.h"
 #include "scenes/generate.h"
 #include "scenes/loader.h"
-#include "walls/gl/bake_key.h"
+#include "walls/bake_key.h"
 #include "walls/gl/baker.h"
-#include "walls/gl/texture_mips.h"
+#include "walls/texture_mips.h"
 #include "walls/gl/wall_renderer.h"
 #include "walls/visibility.h"
 
@@ -71,7 +71,7 @@ void BM_BakeTexture(benchmark::State& state) {
         const Clock::time_point a = Clock::now();
         const scenes::Image image = renderer.render(walls::quadSeenFrom(plan.walls[t.wall].quad, side), t.samplingPoint, res, c.baked);
         const Clock::time_point b = Clock::now();
-        gl::writeMipFile(benchFolder() / "one.tx", gl::premultipliedMipChain(image));
+        walls::writeMipFile(benchFolder() / "one.tx", walls::premultipliedMipChain(image));
         renderMs += ms(b - a);
         fileMs += ms(Clock::now() - b);
         texels += double(res.x) * res.y;

@@ -26,7 +26,7 @@ Image readImage(const std::filesystem::path& file);
 
 // Reads every MIP level of a (tiled) MIP-mapped file such as a baked wall texture, largest
 // first, each as 8-bit RGBA like readImage. The bytes are returned as stored: no alpha
-// conversion (baked textures store premultiplied alpha, walls/gl/texture_mips.h). A file
+// conversion (baked textures store premultiplied alpha, walls/texture_mips.h). A file
 // without MIP levels gives one level. Throws Error naming the file and the level.
 std::vector<Image> readMipLevels(const std::filesystem::path& file);
 

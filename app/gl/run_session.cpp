@@ -8,8 +8,8 @@
 #include "input/tracker_source.h"
 #include "input/tracking_pipeline.h"
 #include "scenes/loader.h"
-#include "app/gl/run_cluster.h"
-#include "app/gl/run_input.h"
+#include "app/run_cluster.h"
+#include "app/run_input.h"
 #include "app/gl/run_output.h"
 #include "app/scene_query.h"
 #include "walls/gl/baker.h"
@@ -89,10 +89,10 @@ RunSummary runSession(const RunOptions& o) {
     const display::Display display(o.display);
     scenes::SceneDescription description;
     const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description);
-    std::unique_ptr<app::Cluster> cluster = openCluster(o);
+    std::unique_ptr<app::Cluster> cluster = app::openCluster(o);
     const int rank = cluster ? cluster->rank() : 0;
     // Only rank 0 reads input (a network tracker binds its port once).
-    std::unique_ptr<RunInput> input = rank == 0 ? std::make_unique<RunInput>(o, scene, description) : nullptr;
+    std::unique_ptr<app::RunInput> input = rank == 0 ? std::make_unique<app::RunInput>(o, scene, description) : nullptr;
     const auto context = makeContext(o, display);
 
     std::optional<walls::WallSetup> setup;
@@ -119,9 +119,9 @@ RunSummary runSession(const RunOptions& o) {
         if (context->windowCount() > 0 && context->pollCloseRequested()) break;  // a window was closed
         walls::FrameInput in = input ? input->next(i, save, context->takeInputEvents()) : walls::FrameInput{};
         if (frameBudget) in.triangleBudget = frameBudget->budget();
-        double syncMs = cluster ? receiveFrame(*cluster, in) : 0.0;
+        double syncMs = cluster ? app::receiveFrame(*cluster, in) : 0.0;
         walls::FrameResult r = walkthrough.renderFrame(in);
-        if (cluster) syncMs = combineFrame(*cluster, r, syncMs, screens);
+        if (cluster) syncMs = app::combineFrame(*cluster, r, syncMs, screens);
         if (frameBudget) frameBudget->update(r.frameMs, r.geometryTriangles);  // rank 0: the slowest rank's time
         if (!output) continue;
         output->writeFrame(i, in.time, in.head.position, r, syncMs);

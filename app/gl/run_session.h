@@ -2,7 +2,7 @@
 // `cavewall run` as a function, shared by the run and demo commands: load the scene and the
 // display, plan and bake the walls (when the scene has them), then drive the walkthrough runtime
 // (walls/gl/walkthrough.h) from a tracker, the tracking pipeline and the navigator at a fixed
-// step of 1/60 s (app/gl/run_input.h), writing frames.csv, walls.csv and the chosen frames
+// step of 1/60 s (app/run_input.h), writing frames.csv, walls.csv and the chosen frames
 // (app/gl/run_output.h).
 //
 // Time: frame i is at t = i / 60 s. Simulated, file and replay trackers are polled at exactly

@@ -1,12 +1,12 @@
-// What cluster mode sends between ranks (app/gl/cluster_frame.h, app/cluster.h): a frame's
+// What cluster mode sends between ranks (app/cluster_frame.h, app/cluster.h): a frame's
 // input and the ranks' images survive the trip exactly, and malformed bytes are refused.
 // No MPI run and no GL context: the encodings alone.
 #include "app/cluster.h"
-#include "app/gl/cluster_frame.h"
+#include "app/cluster_frame.h"
 
 #include <gtest/gtest.h>
 
-namespace cavewall::gl {
+namespace cavewall::app {
 namespace {
 
 using scenes::ScreenImage;
@@ -97,4 +97,4 @@ TEST(ClusterFrame, ImagesRoundTripAndTruncationIsRefused) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::app

@@ -2,7 +2,10 @@
 #  - <GL/...>, <EGL/...>, <GLFW/...>, <epoxy/...> or <glad/...> outside */gl/ folders;
 #  - a project include ("folder/file.h", "folder/sub/file.h") of a library the including folder
 #    may not depend on. No folder outside */gl/ may include a */gl/ folder (GL code is what
-#    includes GL headers, directly or through a */gl/ header), except tools/, the executable.
+#    includes GL headers, directly or through a */gl/ header), except tools/, the executable;
+#  - code in a */gl/ folder that needs no GL: every header/source pair (files of one name) there
+#    must include a GL header or another */gl/ header. Pure logic belongs in the folder above,
+#    where it builds and is unit-tested without a context. The one exception is listed below.
 # Usage: cmake -DROOT=<tree> -P check_layering.cmake
 cmake_minimum_required(VERSION 3.25)
 if(NOT ROOT)
@@ -25,6 +28,9 @@ set(allowed_app/bench/gl "config;display;scenes;input;render;walls;display/gl;wa
 set(allowed_tools "config;display;scenes;input;render;walls;display/gl;walls/gl;app;app/gl;app/bench;app/bench/gl")
 set(layers config display scenes input render walls display/gl walls/gl app app/gl app/bench app/bench/gl tools)
 
+# */gl/ files that need no GL header yet are GL code, with the reason.
+set(gl_without_gl_headers "display/gl/scene_shaders")  # GLSL sources and GL's indirect-command layout
+
 set(violations "")
 foreach(layer IN LISTS layers)
   file(GLOB files LIST_DIRECTORIES false "${ROOT}/${layer}/*.h" "${ROOT}/${layer}/*.cpp")
@@ -34,6 +40,14 @@ foreach(layer IN LISTS layers)
       if(line MATCHES "<(GL|EGL|GLFW|epoxy|glad)/" AND NOT layer MATCHES "/gl$")
         list(APPEND violations "${layer}: ${f}: ${line} (GL/EGL/GLFW headers only in */gl/)")
       endif()
+      if(layer MATCHES "/gl$")
+        get_filename_component(stem "${f}" NAME_WE)
+        if(line MATCHES "<(GL|EGL|GLFW|epoxy|glad)/")
+          set(uses_gl_${stem} TRUE)
+        elseif(line MATCHES "\"[a-z_/]+/gl/([a-z_0-9]+)\\.h\"" AND NOT CMAKE_MATCH_1 STREQUAL stem)
+          set(uses_gl_${stem} TRUE)
+        endif()
+      endif()
       if(line MATCHES "\"([a-z_/]+)/[^/\"]+\"")
         set(target "${CMAKE_MATCH_1}")
         if(NOT target STREQUAL layer AND target IN_LIST layers AND NOT target IN_LIST allowed_${layer})
@@ -42,6 +56,19 @@ foreach(layer IN LISTS layers)
       endif()
     endforeach()
   endforeach()
+  if(layer MATCHES "/gl$")
+    foreach(f IN LISTS files)
+      get_filename_component(stem "${f}" NAME_WE)
+      if(NOT uses_gl_${stem} AND NOT "${layer}/${stem}" IN_LIST gl_without_gl_headers)
+        list(APPEND violations "${layer}: ${f}: includes no GL header and no other */gl/ header "
+                               "(GL-free code belongs outside */gl/)")
+      endif()
+    endforeach()
+    foreach(f IN LISTS files)
+      get_filename_component(stem "${f}" NAME_WE)
+      unset(uses_gl_${stem})
+    endforeach()
+  endif()
 endforeach()
 
 if(violations)

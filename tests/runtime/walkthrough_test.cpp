@@ -9,11 +9,11 @@
 #include "scenes/image_io.h"
 
 #include <gmock/gmock.h>
-#include <algorithm>
-#include <chrono>
-#include <iostream>
-#include <thread>
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <iostream>
+#include <semaphore>
 
 namespace cavewall::testing {
 namespace {
@@ -160,11 +160,15 @@ TEST_F(WalkthroughTest, LevelsOfDetailKeepTheirToleranceAndTheTriangleBudget) {
 // The red box of twoCells() as seen in a frame: pixels clearly red.
 bool isRed(const std::uint8_t* p) { return p[0] > 80 && p[0] > 2 * p[1] && p[0] > 2 * p[2]; }
 
-// A slow disk: every texture takes 40 ms to decode, far longer than a small frame here.
-std::vector<scenes::Image> slowDecoder(const std::filesystem::path& file) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(40));
-    return scenes::readMipLevels(file);
-}
+// A slow disk, deterministically: each decode waits for a permit, and the test hands out one
+// permit per frame, so at most one texture arrives per frame whatever the machine's speed.
+struct GatedDecoder {
+    std::counting_semaphore<1 << 20> permits{0};
+    std::vector<scenes::Image> operator()(const std::filesystem::path& file) {
+        permits.acquire();
+        return scenes::readMipLevels(file);
+    }
+};
 
 // Share of the box (red in `full`) that shows the clear colour (magenta) in `frame`.
 double missingShare(const walls::FrameResult& frame, const walls::FrameResult& full) {
@@ -186,7 +190,8 @@ TEST_F(WalkthroughTest, PagingUnderATinyBudgetNeverLeavesAWallMissing) {
     options.textureBudgetMB = 1.0;        // about 4 of its 10 textures: constant eviction
     options.uploadMBPerFrame = 0.001;     // one texture per frame at most
     options.render.clearColor = {1.0f, 0.0f, 1.0f, 1.0f};  // magenta: nothing drawn
-    options.decoder = slowDecoder;
+    GatedDecoder gate;
+    options.decoder = [&gate](const std::filesystem::path& file) { return gate(file); };
     gl::Walkthrough walls(scene.scene, scene.description, display, *context, scene.walls, options);
     gl::Walkthrough geometry(scene.scene, scene.description, display, *context, std::nullopt, options);
     int fallbacks = 0, previous = 0, frames = 0;  // previous: walls that kept the last texture
@@ -201,6 +206,7 @@ TEST_F(WalkthroughTest, PagingUnderATinyBudgetNeverLeavesAWallMissing) {
         in.readImages = true;
         const walls::FrameResult r = walls.renderFrame(in);
         const walls::FrameResult full = geometry.renderFrame(in);
+        gate.permits.release();  // one more texture may arrive before the next frame
         for (const walls::WallState& s : r.walls) {
             fallbacks += s.fallback ? 1 : 0;
             previous += s.fallback && !s.textures.empty() ? 1 : 0;  // kept the previous texture
@@ -215,8 +221,9 @@ TEST_F(WalkthroughTest, PagingUnderATinyBudgetNeverLeavesAWallMissing) {
     // The texture's angular error (<= 10 degrees) may move the box's edges by a few pixels;
     // a missing wall would lose all of it.
     EXPECT_LT(worstMissing, 0.1);
-    // The slow decoder forced fallbacks: at least the first frame has nothing resident.
+    // The gated decoder forced fallbacks: the first frame has nothing resident.
     EXPECT_GT(fallbacks, 0);
+    gate.permits.release(1 << 19);  // let the pager's thread finish before the walkthrough ends
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 #include "config/error.h"
 #include "tests/gl/gl_test_support.h"
 #include "tests/wallsgl/bake_test_scene.h"
-#include "walls/gl/bake_cache.h"
+#include "walls/bake_cache.h"
 #include "walls/gl/baker.h"
 
 #include <gmock/gmock.h>
@@ -178,11 +178,11 @@ TEST(BakeResolution, PlanResolutionIsCappedKeepingTheAspect) {
 
 TEST(BakeFileNames, TextureKeyRoundTripsThroughTheFileName) {
     EXPECT_EQ(textureFileName(7, 0x0123456789abcdefull), "tex_0007_0123456789abcdef.tx");
-    EXPECT_EQ(textureKeyOf("tex_0007_0123456789abcdef.tx"), 0x0123456789abcdefull);
-    EXPECT_EQ(textureKeyOf("tex_12345_0123456789abcdef.tx"), 0x0123456789abcdefull);  // ids beyond 4 digits
-    EXPECT_EQ(textureKeyOf("manifest.json"), std::nullopt);
-    EXPECT_EQ(textureKeyOf("tex_0007_0123456789ABCDEF.tx"), std::nullopt);  // walls::hex64 writes lower case
-    EXPECT_EQ(textureKeyOf(".tex_0007_0123456789abcdef.tmp-1-0.tx"), std::nullopt);
+    EXPECT_EQ(walls::textureKeyOf("tex_0007_0123456789abcdef.tx"), 0x0123456789abcdefull);
+    EXPECT_EQ(walls::textureKeyOf("tex_12345_0123456789abcdef.tx"), 0x0123456789abcdefull);  // ids beyond 4 digits
+    EXPECT_EQ(walls::textureKeyOf("manifest.json"), std::nullopt);
+    EXPECT_EQ(walls::textureKeyOf("tex_0007_0123456789ABCDEF.tx"), std::nullopt);  // walls::hex64 writes lower case
+    EXPECT_EQ(walls::textureKeyOf(".tex_0007_0123456789abcdef.tmp-1-0.tx"), std::nullopt);
 }
 
 }  // namespace

@@ -13,7 +13,7 @@
 #include "scenes/loader.h"
 #include "tests/gl/gl_test_support.h"
 #include "tests/wallsgl/bake_test_scene.h"
-#include "walls/gl/bake_key.h"
+#include "walls/bake_key.h"
 #include "walls/gl/baker.h"
 #include "walls/gl/wall_quad.h"
 #include "walls/gl/offscreen_target.h"

@@ -3,9 +3,9 @@
 #include "config/error.h"
 #include "scenes/loader.h"
 #include "scenes/scene_description_io.h"
-#include "walls/gl/bake_cache.h"
-#include "walls/gl/bake_key.h"
-#include "walls/gl/bake_writer.h"
+#include "walls/bake_cache.h"
+#include "walls/bake_key.h"
+#include "walls/bake_writer.h"
 #include "walls/gl/wall_renderer.h"
 #include "walls/visibility.h"
 #include "walls/wall_setup.h"
@@ -19,6 +19,14 @@
 #include <optional>
 
 namespace cavewall::gl {
+
+// The bake cache's GL-free parts (walls/bake_key.h, bake_cache.h, bake_writer.h).
+using walls::BakeWriter;
+using walls::CacheIndex;
+using walls::indexCache;
+using walls::KeyHasher;
+using walls::objectKeys;
+using walls::sceneFilesKey;
 
 void validateBakeSettings(const BakeSettings& s) {
     auto fail = [](const char* name, const std::string& expected, const std::string& got) {

@@ -11,7 +11,7 @@
 //
 // Image convention: texel (0, 0) of a file is the wall's upper-left corner as seen from the
 // texture's side, u runs along lowerLeft -> lowerRight; colour is premultiplied
-// (walls/gl/texture_mips.h). Files are tiled, MIP-mapped TIFF (".tx") listed with size and
+// (walls/texture_mips.h). Files are tiled, MIP-mapped TIFF (".tx") listed with size and
 // hash in the folder's manifest.json (walls/bake_manifest.h).
 //
 // What is baked comes from walls::prepareWalls (walls/wall_setup.h): the plan and what each wall

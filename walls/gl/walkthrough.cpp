@@ -18,7 +18,7 @@ using Clock = std::chrono::steady_clock;
 
 using display::msSince;
 
-// Every MIP level of a baked texture file (walls/gl/texture_mips.h convention).
+// Every MIP level of a baked texture file (walls/texture_mips.h convention).
 std::vector<scenes::Image> decodeBakedTexture(const std::filesystem::path& file) {
     return scenes::readMipLevels(file);
 }

@@ -12,7 +12,7 @@
 namespace cavewall::gl {
 
 // Uploads MIP levels (largest first, each the next MIP size of the previous, premultiplied as
-// walls/gl/texture_mips.h says) as one GL_SRGB8_ALPHA8 texture with trilinear filtering and
+// walls/texture_mips.h says) as one GL_SRGB8_ALPHA8 texture with trilinear filtering and
 // clamped edges. Needs a current context. Throws Error for inconsistent levels.
 gl::GlObject uploadWallTexture(const std::vector<scenes::Image>& levels);
 

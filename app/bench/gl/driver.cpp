@@ -94,7 +94,7 @@ void say(const BenchOptions& o, const std::string& line) {
 }
 
 std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene& scene, const gl::Context& context,
-                                     const EyePath& path) {
+                                     const bench::EyePath& path) {
     std::size_t triangles = 0;
     for (const scenes::Object& object : scene.objects) triangles += scene.meshes[object.mesh].triangleCount();
     const auto& s0 = o.display.screens.front();
@@ -148,7 +148,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
     scenes::SceneDescription description;
     const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description);
     if (description.walls.empty()) throw Error(o.scene.string() + ": the scene has no virtual walls (expected at least 1 to bench)");
-    const EyePath path = recordEyePath(scene, description, o.display, o.tracker, o.frames);
+    const bench::EyePath path = bench::recordEyePath(scene, description, o.display, o.tracker, o.frames);
     const auto context = gl::createHeadlessContext();
     BenchReport report;
     report.header = headerLines(o, scene, *context, path);

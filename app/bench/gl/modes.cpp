@@ -7,7 +7,7 @@
 #include "display/gl/view_loop.h"
 #include "render/lod_choice.h"
 #include "walls/frame_select.h"
-#include "walls/gl/bake_key.h"
+#include "walls/bake_key.h"
 #include "walls/gl/wall_pass.h"
 #include "walls/gl/wall_quad.h"
 

@@ -3,7 +3,7 @@
 // eye path and accumulating its times, counts and image errors.
 
 #include "display/gl/frame_images.h"
-#include "app/bench/gl/path.h"
+#include "app/bench/path.h"
 #include "app/bench/report.h"
 #include "walls/gl/walkthrough.h"
 
@@ -55,7 +55,7 @@ struct ModeContext {
     const scenes::SceneDescription& description;
     const display::Display& display;
     gl::Context& context;
-    const EyePath& path;
+    const bench::EyePath& path;
     int compareEvery = 4;
     double lodMaxPixels = 8.0;  // WalkthroughOptions::lodMaxPixels of the budgeted modes
 };

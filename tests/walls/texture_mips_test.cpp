@@ -1,8 +1,8 @@
-// MIP chains of baked textures (walls/gl/texture_mips.h): premultiplied in linear light before
+// MIP chains of baked textures (walls/texture_mips.h): premultiplied in linear light before
 // downsampling, exact box filter, and the tiled MIP-mapped file round trip. GL-free.
 #include "config/error.h"
 #include "scenes/image_io.h"
-#include "walls/gl/texture_mips.h"
+#include "walls/texture_mips.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gmock/gmock.h>
@@ -11,7 +11,7 @@
 #include <cstdlib>
 #include <random>
 
-namespace cavewall::gl {
+namespace cavewall::walls {
 namespace {
 
 using ::testing::HasSubstr;
@@ -127,4 +127,4 @@ TEST(TextureMips, WriteRejectsBadInput) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls

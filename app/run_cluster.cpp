@@ -1,15 +1,15 @@
-#include "app/gl/run_cluster.h"
+#include "app/run_cluster.h"
 
 #include "config/error.h"
 
 #ifdef CAVEWALL_HAVE_MPI
-#include "app/gl/cluster_frame.h"
+#include "app/cluster_frame.h"
 
 #include <algorithm>
 #include <cstring>
 #endif
 
-namespace cavewall::gl {
+namespace cavewall::app {
 
 #ifdef CAVEWALL_HAVE_MPI
 
@@ -25,9 +25,9 @@ std::unique_ptr<app::Cluster> openCluster(const app::RunOptions& o) {
 }
 
 double receiveFrame(app::Cluster& cluster, walls::FrameInput& input) {
-    app::FrameState state = cluster.rank() == 0 ? frameStateOf(input) : app::FrameState{};
+    app::FrameState state = cluster.rank() == 0 ? app::frameStateOf(input) : app::FrameState{};
     const double seconds = cluster.broadcast(state);
-    if (cluster.rank() != 0 && !frameInputOf(state, input)) cluster.abortAll("received a malformed frame input");
+    if (cluster.rank() != 0 && !app::frameInputOf(state, input)) cluster.abortAll("received a malformed frame input");
     return 1e3 * seconds;
 }
 
@@ -50,7 +50,7 @@ double combineFrame(app::Cluster& cluster, walls::FrameResult& r, double syncMs,
         return std::find(screens.begin(), screens.end(), i.screen) == screens.end();
     });
     const auto stats = cluster.gatherBytes(statsBytes(r, syncMs));
-    const auto images = cluster.gatherBytes(r.images.empty() ? std::vector<std::uint8_t>{} : encodeImages(r.images));
+    const auto images = cluster.gatherBytes(r.images.empty() ? std::vector<std::uint8_t>{} : app::encodeImages(r.images));
     if (cluster.rank() != 0) return syncMs;
     r.stats.triangles = 0;
     r.stats.drawCalls = 0;
@@ -74,7 +74,7 @@ double combineFrame(app::Cluster& cluster, walls::FrameResult& r, double syncMs,
     }
     r.images.clear();
     for (const auto& bytes : images)
-        if (!bytes.empty() && !decodeImages(bytes, r.images)) cluster.abortAll("gathered malformed images");
+        if (!bytes.empty() && !app::decodeImages(bytes, r.images)) cluster.abortAll("gathered malformed images");
     std::sort(r.images.begin(), r.images.end(), [](const scenes::ScreenImage& a, const scenes::ScreenImage& b) {
         return a.screen != b.screen ? a.screen < b.screen : a.image < b.image;
     });
@@ -97,4 +97,4 @@ double app::Cluster::barrier(double, const char*) { return 0.0; }
 
 #endif
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::app

@@ -1,4 +1,4 @@
-#include "walls/gl/bake_cache.h"
+#include "walls/bake_cache.h"
 
 #include "config/error.h"
 
@@ -6,7 +6,7 @@
 #include <system_error>
 #include <unistd.h>
 
-namespace cavewall::gl {
+namespace cavewall::walls {
 
 std::optional<std::uint64_t> textureKeyOf(const std::string& name) {
     // tex_NNNN_<16 hex>.tx (the id may have more than 4 digits)
@@ -75,4 +75,4 @@ int removeUnlistedTextures(const std::filesystem::path& folder, const walls::Bak
     return removed;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls

@@ -10,7 +10,7 @@
 #include <map>
 #include <optional>
 
-namespace cavewall::gl {
+namespace cavewall::walls {
 
 struct CachedTexture {
     std::filesystem::path folder;
@@ -37,4 +37,4 @@ std::optional<walls::BakedTexture> linkCachedTexture(const CacheIndex& index, co
 // Returns how many were removed.
 int removeUnlistedTextures(const std::filesystem::path& folder, const walls::BakeManifest& manifest);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls

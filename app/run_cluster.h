@@ -11,7 +11,7 @@
 
 #include <memory>
 
-namespace cavewall::gl {
+namespace cavewall::app {
 
 // nullptr unless options.cluster; throws Error when the build has no MPI or when there are
 // more ranks than screens.
@@ -27,4 +27,4 @@ double receiveFrame(app::Cluster& cluster, walls::FrameInput& input);
 // broadcast wait.
 double combineFrame(app::Cluster& cluster, walls::FrameResult& result, double syncMs, const std::vector<int>& screens);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::app

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::walls {
 
 // sRGB transfer functions on [0, 1] (IEC 61966-2-1).
 float srgbToLinear(float encoded);
@@ -45,4 +45,4 @@ struct MipFileOptions {
 void writeMipFile(const std::filesystem::path& file, const std::vector<scenes::Image>& levels,
                   const MipFileOptions& options = {});
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls

@@ -1,10 +1,10 @@
-#include "walls/gl/bake_writer.h"
+#include "walls/bake_writer.h"
 
 #include "config/error.h"
 
 #include <utility>
 
-namespace cavewall::gl {
+namespace cavewall::walls {
 
 BakeWriter::BakeWriter(std::filesystem::path folder, int jobs, MipFileOptions options)
     : _folder(std::move(folder)), _options(std::move(options)), _maxQueued(std::size_t(2 * std::max(1, jobs))) {
@@ -73,4 +73,4 @@ void BakeWriter::worker() {
     }
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls

@@ -22,7 +22,7 @@
 #include <memory>
 #include <optional>
 
-namespace cavewall::gl {
+namespace cavewall::app {
 
 // The navigator's mode for `nav` (Auto: guided along the walk path when there is one, else
 // none); None is an empty optional. Throws Error for guided without a walk path.
@@ -59,4 +59,4 @@ private:
     std::chrono::steady_clock::time_point _start;
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::app

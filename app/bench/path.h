@@ -6,7 +6,7 @@
 // walkPath by the guided navigator (input/navigator.h), starting at the path's first point
 // facing along it, at a pace chosen so that `frames` frames at 1/60 s cover the whole path.
 // Without a walkPath the CAVE stays at the world origin. Poses are polled at t = i / 60 s,
-// through the same input loop as `cavewall run` (app/gl/run_input.h), live trackers without
+// through the same input loop as `cavewall run` (app/run_input.h), live trackers without
 // waiting for that time.
 
 #include "config/display_config.h"
@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::bench {
 
 struct EyePath {
     std::vector<walls::FrameInput> frames;  // readImages false; no hand cursor
@@ -31,4 +31,4 @@ EyePath recordEyePath(const scenes::Scene& scene, const scenes::SceneDescription
 // Length of a polyline, metres.
 double pathLength(const std::vector<glm::dvec3>& points);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::bench

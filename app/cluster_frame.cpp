@@ -1,9 +1,9 @@
-#include "app/gl/cluster_frame.h"
+#include "app/cluster_frame.h"
 
 #include <algorithm>
 #include <cstring>
 
-namespace cavewall::gl {
+namespace cavewall::app {
 
 namespace {
 
@@ -119,4 +119,4 @@ bool decodeImages(const std::vector<std::uint8_t>& bytes, std::vector<scenes::Sc
     return r.done();
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::app

@@ -1,4 +1,4 @@
-#include "walls/gl/bake_key.h"
+#include "walls/bake_key.h"
 
 #include "config/error.h"
 #include "walls/bake_manifest.h"
@@ -9,7 +9,7 @@
 #include <fstream>
 #include <iterator>
 
-namespace cavewall::gl {
+namespace cavewall::walls {
 
 KeyHasher& KeyHasher::bytes(const void* data, std::size_t size) {
     _h = walls::fnv1a(std::string_view(static_cast<const char*>(data), size), _h);
@@ -135,4 +135,4 @@ std::vector<std::uint64_t> objectKeys(const scenes::Scene& scene) {
     return keys;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls

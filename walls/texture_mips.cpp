@@ -1,4 +1,4 @@
-#include "walls/gl/texture_mips.h"
+#include "walls/texture_mips.h"
 
 #include "scenes/file_write.h"
 #include "scenes/image_io.h"
@@ -16,7 +16,7 @@
 #include <system_error>
 #include <unistd.h>
 
-namespace cavewall::gl {
+namespace cavewall::walls {
 
 float srgbToLinear(float e) {
     return e <= 0.04045f ? e / 12.92f : std::pow((e + 0.055f) / 1.055f, 2.4f);
@@ -198,4 +198,4 @@ void writeMipFile(const std::filesystem::path& file, const std::vector<scenes::I
     scenes::writeAtomically(file, [&](const std::filesystem::path& tmp) { writeLevels(tmp, file, levels, options); });
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls

@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::app {
 
 app::FrameState frameStateOf(const walls::FrameInput& input);
 bool frameInputOf(const app::FrameState& state, walls::FrameInput& input);
@@ -20,4 +20,4 @@ bool frameInputOf(const app::FrameState& state, walls::FrameInput& input);
 std::vector<std::uint8_t> encodeImages(const std::vector<scenes::ScreenImage>& images);
 bool decodeImages(const std::vector<std::uint8_t>& bytes, std::vector<scenes::ScreenImage>& images);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::app

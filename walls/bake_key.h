@@ -21,7 +21,7 @@
 #include <string_view>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::walls {
 
 // Incremental FNV-1a 64 over typed values.
 class KeyHasher {
@@ -57,4 +57,4 @@ std::uint64_t planOptionsKey(const walls::PlanOptions& options);
 // Computed once per scene; meshes and images shared by many objects are hashed once.
 std::vector<std::uint64_t> objectKeys(const scenes::Scene& scene);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls

@@ -1,13 +1,10 @@
-#include "app/gl/run_input.h"
+#include "app/run_input.h"
 
 #include <cmath>
 #include <thread>
 
-namespace cavewall::gl {
+namespace cavewall::app {
 
-using app::kRunStep;
-using app::Navigation;
-using app::RunOptions;
 
 namespace {
 
@@ -121,4 +118,4 @@ walls::FrameInput RunInput::next(long i, bool readImages, const std::vector<inpu
     return in;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::app

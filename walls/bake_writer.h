@@ -5,7 +5,7 @@
 
 #include "scenes/scene.h"
 #include "walls/bake_manifest.h"
-#include "walls/gl/texture_mips.h"
+#include "walls/texture_mips.h"
 
 #include <condition_variable>
 #include <deque>
@@ -15,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::walls {
 
 class BakeWriter {
 public:
@@ -55,4 +55,4 @@ private:
     std::vector<std::thread> _threads;
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls

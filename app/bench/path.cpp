@@ -1,12 +1,12 @@
-#include "app/bench/gl/path.h"
+#include "app/bench/path.h"
 
-#include "app/gl/run_input.h"
+#include "app/run_input.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-namespace cavewall::gl {
+namespace cavewall::bench {
 
 double pathLength(const std::vector<glm::dvec3>& points) {
     double length = 0.0;
@@ -26,7 +26,7 @@ EyePath recordEyePath(const scenes::Scene& scene, const scenes::SceneDescription
     options.nav = app::Navigation::Auto;  // guided along the walk path when there is one
     // Cover the whole path in `frames` steps (at least a slow walk).
     options.guidePace = std::max(1.0, length / (static_cast<double>(std::max(frames - 1, 1L)) * app::kRunStep));
-    RunInput input(options, scene, d, false);
+    app::RunInput input(options, scene, d, false);
     EyePath path;
     for (long i = 0; i < frames; ++i) {
         walls::FrameInput in = input.next(i, false);
@@ -45,4 +45,4 @@ EyePath recordEyePath(const scenes::Scene& scene, const scenes::SceneDescription
     return path;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::bench
