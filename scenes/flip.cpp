@@ -1,0 +1,284 @@
+#include "scenes/flip.h"
+
+#include "scenes/image_filter.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cassert>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+
+namespace cavewall::scenes {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Linear sRGB (D65) to CIE XYZ and back; glm matrices are column-major, so these are written
+// transposed: each line is one column.
+const glm::dmat3 kXyzFromRgb{0.4124564, 0.2126729, 0.0193339,  //
+                             0.3575761, 0.7151522, 0.1191920,  //
+                             0.1804375, 0.0721750, 0.9503041};
+const glm::dmat3 kRgbFromXyz = glm::inverse(kXyzFromRgb);
+const glm::dvec3 kWhite = kXyzFromRgb * glm::dvec3(1.0);
+
+// One Gaussian term a exp(-b f²) of a contrast sensitivity function.
+struct CsfTerm {
+    double a, b;
+};
+constexpr CsfTerm kAchromatic{1.0, 0.0047}, kRedGreen{1.0, 0.0053};
+constexpr std::array<CsfTerm, 2> kBlueYellow{{{34.1, 0.04}, {13.5, 0.025}}};
+constexpr double kWidestB = 0.04;
+
+constexpr double kQc = 0.7, kPc = 0.4, kPt = 0.95;      // colour error exponent and remapping
+constexpr double kFeatureWidth = 0.082;                 // degrees; the feature exponent qf = 0.5 is a sqrt
+
+// The decoding of one byte: the sRGB curve, or value / 255.
+std::array<float, 256> decodeTable(ColorEncoding encoding) {
+    std::array<float, 256> t{};
+    for (int i = 0; i < 256; ++i) {
+        const double v = i / 255.0;
+        const double srgb = v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+        t[i] = static_cast<float>(encoding == ColorEncoding::Srgb ? srgb : v);
+    }
+    return t;
+}
+
+// An image in YyCxCz. Its relative luminance Y/Yn, the feature pipeline's input, is
+// (Yy + 16) / 116: the feature kernels sum to 0, so they see Yy / 116.
+struct Opponent {
+    Plane yy, cx, cz;
+};
+
+Opponent toOpponent(const Image& image, const std::array<float, 256>& decode) {
+    const int w = image.width, h = image.height;
+    Opponent o{Plane(w, h), Plane(w, h), Plane(w, h)};
+    for (std::size_t i = 0; i < o.yy.values.size(); ++i) {
+        const std::uint8_t* p = &image.rgba[i * 4];
+        const glm::dvec3 xyz = kXyzFromRgb * glm::dvec3(decode[p[0]], decode[p[1]], decode[p[2]]) / kWhite;
+        o.yy.values[i] = static_cast<float>(116.0 * xyz.y - 16.0);
+        o.cx.values[i] = static_cast<float>(500.0 * (xyz.x - xyz.y));
+        o.cz.values[i] = static_cast<float>(200.0 * (xyz.y - xyz.z));
+    }
+    return o;
+}
+
+// The sampled CSF kernel of `terms`: one normalised 1-D Gaussian per term and the share of the
+// 2-D kernel's sum it carries (the 2-D sum of a product of 1-D samples is their 1-D sum squared).
+struct CsfKernel {
+    std::vector<std::vector<float>> gaussians;
+    std::vector<double> shares;
+};
+
+CsfKernel csfKernel(std::span<const CsfTerm> terms, double ppd) {
+    const int radius = static_cast<int>(std::ceil(3.0 * std::sqrt(kWidestB / (2.0 * kPi * kPi)) * ppd));
+    CsfKernel k;
+    double total = 0.0;
+    for (const CsfTerm& t : terms) {
+        // exp(-pi² d² / b) is a Gaussian of sigma = sqrt(b / (2 pi²)) degrees.
+        const double sigma = std::sqrt(t.b / (2.0 * kPi * kPi)) * ppd;
+        double sum1d = 0.0;
+        for (int i = -radius; i <= radius; ++i) sum1d += std::exp(-0.5 * i * i / (sigma * sigma));
+        k.gaussians.push_back(gaussianKernel(sigma, radius));
+        k.shares.push_back(t.a * std::sqrt(kPi / t.b) * sum1d * sum1d);
+        total += k.shares.back();
+    }
+    for (double& s : k.shares) s /= total;
+    return k;
+}
+
+// The cube root of t in (0.008, 1.1]: an exponent-thirding guess, then two Halley steps (each
+// cubes the relative error: 3 % -> 1e-5 -> 1e-15). std::cbrt dominated FLIP's run time.
+double cubeRoot(double t) {
+    std::uint64_t bits = std::bit_cast<std::uint64_t>(t);
+    bits = bits / 3 + (std::uint64_t{0x3FF} << 52) / 3 * 2;  // exponent e -> about e / 3
+    double y = std::bit_cast<double>(bits);
+    for (int i = 0; i < 2; ++i) {
+        const double y3 = y * y * y;
+        y *= (y3 + 2.0 * t) / (2.0 * y3 + t);
+    }
+    return y;
+}
+
+double labF(double t) {
+    constexpr double kDelta = 6.0 / 29.0;
+    return t > kDelta * kDelta * kDelta ? cubeRoot(t) : t / (3.0 * kDelta * kDelta) + 4.0 / 29.0;
+}
+
+// Linear RGB (clamped to [0, 1]) to Hunt-adjusted CIELAB.
+glm::dvec3 huntLab(glm::dvec3 rgb) {
+    const glm::dvec3 xyz = kXyzFromRgb * glm::clamp(rgb, 0.0, 1.0) / kWhite;
+    const double fx = labF(xyz.x), fy = labF(xyz.y), fz = labF(xyz.z);
+    const double l = 116.0 * fy - 16.0;
+    return {l, 0.01 * l * 500.0 * (fx - fy), 0.01 * l * 200.0 * (fy - fz)};
+}
+
+glm::dvec3 huntLabFromOpponent(double yy, double cx, double cz) {
+    const double y = (yy + 16.0) / 116.0;
+    const glm::dvec3 xyz = glm::dvec3(cx / 500.0 + y, y, y - cz / 200.0) * kWhite;
+    return huntLab(kRgbFromXyz * xyz);
+}
+
+double hyab(glm::dvec3 a, glm::dvec3 b) {
+    const double da = a.y - b.y, db = a.z - b.z;
+    return std::abs(a.x - b.x) + std::sqrt(da * da + db * db);
+}
+
+// The largest colour difference within the gamut, raised to qc.
+const double kCmax = std::pow(hyab(huntLab({0, 1, 0}), huntLab({0, 0, 1})), kQc);
+
+// HyAB raised to qc, remapped onto [0, 1] (see the header). Single precision is ample here and
+// powf is several times faster than pow.
+double remapColorError(double difference) {
+    const double e = std::pow(static_cast<float>(difference), static_cast<float>(kQc));
+    if (e < kPc * kCmax) return kPt / (kPc * kCmax) * e;
+    return std::min(1.0, kPt + (e - kPc * kCmax) / (kCmax - kPc * kCmax) * (1.0 - kPt));
+}
+
+// 1-D feature kernels: the Gaussian, its first derivative and its second derivative, the last
+// two with positive weights summing to 1 and negative weights to -1.
+struct FeatureKernels {
+    std::vector<float> gaussian, edge, point;
+};
+
+std::vector<float> splitNormalised(const std::vector<double>& w) {
+    double positive = 0.0, negative = 0.0;
+    for (double v : w) (v > 0 ? positive : negative) += v;
+    std::vector<float> k(w.size());
+    // Weights below 1e-12 of their half are dropped: as floats they would be denormal (slow).
+    for (std::size_t i = 0; i < w.size(); ++i) {
+        const double v = w[i] > 0 ? w[i] / positive : w[i] < 0 ? -w[i] / negative : 0.0;
+        k[i] = std::abs(v) < 1e-12 ? 0.0f : static_cast<float>(v);
+    }
+    return k;
+}
+
+FeatureKernels featureKernels(double ppd) {
+    const double sigma = 0.5 * kFeatureWidth * ppd;
+    const int radius = static_cast<int>(std::ceil(3.0 * sigma));
+    std::vector<double> edge, point;
+    for (int i = -radius; i <= radius; ++i) {
+        const double g = std::exp(-0.5 * i * i / (sigma * sigma));
+        edge.push_back(-i * g);
+        point.push_back((i * i / (sigma * sigma) - 1.0) * g);
+    }
+    return {gaussianKernel(sigma, radius), splitNormalised(edge), splitNormalised(point)};
+}
+
+// One row of everything FLIP needs from one image: the CSF-filtered opponent channels and the
+// edge and point magnitudes. Filled row by row, so that no full-size intermediate is stored.
+struct FilteredRow {
+    std::vector<float> yy, cx, cz, edges, points;
+};
+
+// The scratch rows of one pass and the kernels, sized once.
+struct RowFilter {
+    CsfKernel achromatic, redGreen, blueYellow;
+    FeatureKernels features;
+    std::vector<float> column, row, line, columnG, columnD, columnDD;
+
+    RowFilter(double ppd, int width)
+        : achromatic(csfKernel({&kAchromatic, 1}, ppd)), redGreen(csfKernel({&kRedGreen, 1}, ppd)),
+          blueYellow(csfKernel(kBlueYellow, ppd)), features(featureKernels(ppd)), column(width), row(width),
+          columnG(width), columnD(width), columnDD(width) {}
+
+    // Row y of `channel` filtered by the CSF kernel `k` into `out`.
+    void csf(const Plane& channel, int y, const CsfKernel& k, std::vector<float>& out) {
+        std::fill(out.begin(), out.end(), 0.0f);
+        for (std::size_t t = 0; t < k.gaussians.size(); ++t) {
+            filterColumnsAtRow(channel, y, k.gaussians[t], column.data());
+            filterRow(column.data(), channel.width, k.gaussians[t], line, row.data());
+            const auto share = static_cast<float>(k.shares[t]);
+            for (std::size_t x = 0; x < out.size(); ++x) out[x] += share * row[x];
+        }
+    }
+
+    // Row y of the edge and point magnitudes of the luminance Y/Yn = (Yy + 16) / 116.
+    void featureRow(const Plane& yy, int y, FilteredRow& out) {
+        const FeatureKernels& k = features;
+        const int w = yy.width;
+        filterColumnsAtRow(yy, y, k.gaussian, columnG.data());
+        filterColumnsAtRow(yy, y, k.edge, columnD.data());
+        filterColumnsAtRow(yy, y, k.point, columnDD.data());
+        filterRow(columnG.data(), w, k.edge, line, out.edges.data());     // d/dx
+        filterRow(columnD.data(), w, k.gaussian, line, row.data());       // d/dy
+        for (int x = 0; x < w; ++x) out.edges[x] = std::sqrt(out.edges[x] * out.edges[x] + row[x] * row[x]) / 116.0f;
+        filterRow(columnG.data(), w, k.point, line, out.points.data());   // d²/dx²
+        filterRow(columnDD.data(), w, k.gaussian, line, row.data());      // d²/dy²
+        for (int x = 0; x < w; ++x) out.points[x] = std::sqrt(out.points[x] * out.points[x] + row[x] * row[x]) / 116.0f;
+    }
+
+    void filter(const Opponent& o, int y, FilteredRow& out) {
+        csf(o.yy, y, achromatic, out.yy);
+        csf(o.cx, y, redGreen, out.cx);
+        csf(o.cz, y, blueYellow, out.cz);
+        featureRow(o.yy, y, out);
+    }
+};
+
+FilteredRow filteredRow(int width) {
+    const std::vector<float> row(static_cast<std::size_t>(width));
+    return {row, row, row, row, row};
+}
+
+// FLIP of pixel x of two filtered rows: the colour error raised to 1 - feature error.
+double pixelError(const FilteredRow& t, const FilteredRow& r, int x) {
+    const double colour = remapColorError(
+        hyab(huntLabFromOpponent(t.yy[x], t.cx[x], t.cz[x]), huntLabFromOpponent(r.yy[x], r.cx[x], r.cz[x])));
+    const double edge = std::abs(t.edges[x] - r.edges[x]), point = std::abs(t.points[x] - r.points[x]);
+    const double feature = std::min(1.0, std::sqrt(std::max(edge, point) / std::numbers::sqrt2));  // qf = 0.5
+    return feature > 0.0 ? std::pow(static_cast<float>(colour), static_cast<float>(1.0 - feature)) : colour;
+}
+
+void summarise(FlipResult& result) {
+    double sum = 0.0;
+    for (float e : result.errors) sum += e;
+    result.mean = sum / static_cast<double>(result.errors.size());
+    constexpr std::array<double, 3> kQs{0.5, 0.95, 1.0};
+    const std::vector<double> p = percentiles(result.errors, kQs);
+    result.p50 = p[0], result.p95 = p[1], result.max = p[2];
+}
+
+}  // namespace
+
+FlipResult flip(const Image& test, const Image& reference, const FlipOptions& options) {
+    expectComparableImages("flip", test, reference);
+    const double ppd = options.pixelsPerDegree;
+    assert(ppd >= 1.0 && ppd <= 1000.0);
+    const std::array<float, 256> decode = decodeTable(options.encoding);
+    const Opponent t = toOpponent(test, decode), r = toOpponent(reference, decode);
+    const int w = test.width;
+    RowFilter filter(ppd, w);
+    FilteredRow rowT = filteredRow(w), rowR = filteredRow(w);
+    FlipResult result{w, test.height, std::vector<float>(static_cast<std::size_t>(w) * test.height)};
+    for (int y = 0; y < test.height; ++y) {
+        filter.filter(t, y, rowT);
+        filter.filter(r, y, rowR);
+        float* out = &result.errors[static_cast<std::size_t>(y) * w];
+        for (int x = 0; x < w; ++x) out[x] = static_cast<float>(pixelError(rowT, rowR, x));
+    }
+    summarise(result);
+    return result;
+}
+
+Image flipErrorImage(const FlipResult& result) {
+    // Stops at 0, 0.25, 0.5, 0.75 and 1 (see the header).
+    static constexpr std::array<std::array<double, 3>, 5> kStops{
+        {{0, 0, 0}, {72, 16, 120}, {184, 50, 110}, {250, 140, 80}, {255, 250, 190}}};
+    Image image{"flip", result.width, result.height, std::vector<std::uint8_t>(result.errors.size() * 4, 255)};
+    for (std::size_t i = 0; i < result.errors.size(); ++i) {
+        const double s = std::clamp(static_cast<double>(result.errors[i]), 0.0, 1.0) * 4.0;
+        const int lo = std::min(static_cast<int>(s), 3);
+        const double f = s - lo;
+        for (int c = 0; c < 3; ++c)
+            image.rgba[i * 4 + c] =
+                static_cast<std::uint8_t>(std::lround(kStops[lo][c] + f * (kStops[lo + 1][c] - kStops[lo][c])));
+    }
+    return image;
+}
+
+}  // namespace cavewall::scenes
