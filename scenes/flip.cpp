@@ -48,24 +48,58 @@ std::array<float, 256> decodeTable(ColorEncoding encoding) {
     return t;
 }
 
-// An image in YyCxCz. Its relative luminance Y/Yn, the feature pipeline's input, is
-// (Yy + 16) / 116: the feature kernels sum to 0, so they see Yy / 116.
-struct Opponent {
-    Plane yy, cx, cz;
-};
-
-Opponent toOpponent(const Image& image, const std::array<float, 256>& decode) {
-    const int w = image.width, h = image.height;
-    Opponent o{Plane(w, h), Plane(w, h), Plane(w, h)};
-    for (std::size_t i = 0; i < o.yy.values.size(); ++i) {
-        const std::uint8_t* p = &image.rgba[i * 4];
-        const glm::dvec3 xyz = kXyzFromRgb * glm::dvec3(decode[p[0]], decode[p[1]], decode[p[2]]) / kWhite;
-        o.yy.values[i] = static_cast<float>(116.0 * xyz.y - 16.0);
-        o.cx.values[i] = static_cast<float>(500.0 * (xyz.x - xyz.y));
-        o.cz.values[i] = static_cast<float>(200.0 * (xyz.y - xyz.z));
+// The rows of an image in YyCxCz that the filters of one output row read: a ring of 2R + 1 rows
+// per channel, R the largest kernel radius, converted from the image as the output row advances
+// (full-size planes cost more in fresh memory than in arithmetic). Channel 0 is Yy, 1 Cx, 2 Cz.
+// The relative luminance Y/Yn, the feature pipeline's input, is (Yy + 16) / 116: the feature
+// kernels sum to 0, so they see Yy / 116.
+class OpponentRows {
+public:
+    OpponentRows(const Image& image, const std::array<float, 256>& decode, int radius)
+        : _image(image), _decode(decode), _slots(2 * radius + 1), _radius(radius) {
+        for (std::vector<float>& c : _channels) c.resize(static_cast<std::size_t>(_slots) * image.width);
     }
-    return o;
-}
+
+    // Makes rows y - R .. y + R (those inside the image) available; y increases call by call.
+    void advanceTo(int y) {
+        for (; _next <= std::min(y + _radius, _image.height - 1); ++_next) convert(_next);
+    }
+
+    // The source rows of the taps of a kernel of `size` taps centred on row y, clamped to the
+    // image edge, as filterColumns wants them.
+    std::span<const float* const> taps(int channel, int y, std::size_t size) {
+        const int r = static_cast<int>(size / 2);
+        _taps.resize(size);
+        for (std::size_t t = 0; t < size; ++t) _taps[t] = row(channel, std::clamp(y + static_cast<int>(t) - r, 0, _image.height - 1));
+        return _taps;
+    }
+
+    int width() const { return _image.width; }
+
+private:
+    const float* row(int channel, int y) const {
+        return &_channels[channel][static_cast<std::size_t>(y % _slots) * _image.width];
+    }
+
+    void convert(int y) {
+        float* yy = &_channels[0][static_cast<std::size_t>(y % _slots) * _image.width];
+        float* cx = &_channels[1][static_cast<std::size_t>(y % _slots) * _image.width];
+        float* cz = &_channels[2][static_cast<std::size_t>(y % _slots) * _image.width];
+        for (int x = 0; x < _image.width; ++x) {
+            const std::uint8_t* p = &_image.rgba[(static_cast<std::size_t>(y) * _image.width + x) * 4];
+            const glm::dvec3 xyz = kXyzFromRgb * glm::dvec3(_decode[p[0]], _decode[p[1]], _decode[p[2]]) / kWhite;
+            yy[x] = static_cast<float>(116.0 * xyz.y - 16.0);
+            cx[x] = static_cast<float>(500.0 * (xyz.x - xyz.y));
+            cz[x] = static_cast<float>(200.0 * (xyz.y - xyz.z));
+        }
+    }
+
+    const Image& _image;
+    const std::array<float, 256>& _decode;
+    int _slots, _radius, _next = 0;
+    std::array<std::vector<float>, 3> _channels;
+    std::vector<const float*> _taps;
+};
 
 // The sampled CSF kernel of `terms`: one normalised 1-D Gaussian per term and the share of the
 // 2-D kernel's sum it carries (the 2-D sum of a product of 1-D samples is their 1-D sum squared).
@@ -186,24 +220,31 @@ struct RowFilter {
           blueYellow(csfKernel(kBlueYellow, ppd)), features(featureKernels(ppd)), column(width), row(width),
           columnG(width), columnD(width), columnDD(width) {}
 
-    // Row y of `channel` filtered by the CSF kernel `k` into `out`.
-    void csf(const Plane& channel, int y, const CsfKernel& k, std::vector<float>& out) {
+    // The largest radius of all kernels: the rows OpponentRows must hold around the output row.
+    int radius() const {
+        const std::size_t taps = std::max({achromatic.gaussians[0].size(), redGreen.gaussians[0].size(),
+                                           blueYellow.gaussians[0].size(), features.gaussian.size()});
+        return static_cast<int>(taps / 2);
+    }
+
+    // Row y of opponent channel `c` filtered by the CSF kernel `k` into `out`.
+    void csf(OpponentRows& rows, int c, int y, const CsfKernel& k, std::vector<float>& out) {
         std::fill(out.begin(), out.end(), 0.0f);
         for (std::size_t t = 0; t < k.gaussians.size(); ++t) {
-            filterColumnsAtRow(channel, y, k.gaussians[t], column.data());
-            filterRow(column.data(), channel.width, k.gaussians[t], line, row.data());
+            filterColumns<float>(rows.taps(c, y, k.gaussians[t].size()), k.gaussians[t], rows.width(), column.data());
+            filterRow(column.data(), rows.width(), k.gaussians[t], line, row.data());
             const auto share = static_cast<float>(k.shares[t]);
             for (std::size_t x = 0; x < out.size(); ++x) out[x] += share * row[x];
         }
     }
 
     // Row y of the edge and point magnitudes of the luminance Y/Yn = (Yy + 16) / 116.
-    void featureRow(const Plane& yy, int y, FilteredRow& out) {
+    void featureRow(OpponentRows& rows, int y, FilteredRow& out) {
         const FeatureKernels& k = features;
-        const int w = yy.width;
-        filterColumnsAtRow(yy, y, k.gaussian, columnG.data());
-        filterColumnsAtRow(yy, y, k.edge, columnD.data());
-        filterColumnsAtRow(yy, y, k.point, columnDD.data());
+        const int w = rows.width();
+        filterColumns<float>(rows.taps(0, y, k.gaussian.size()), k.gaussian, w, columnG.data());
+        filterColumns<float>(rows.taps(0, y, k.edge.size()), k.edge, w, columnD.data());
+        filterColumns<float>(rows.taps(0, y, k.point.size()), k.point, w, columnDD.data());
         filterRow(columnG.data(), w, k.edge, line, out.edges.data());     // d/dx
         filterRow(columnD.data(), w, k.gaussian, line, row.data());       // d/dy
         for (int x = 0; x < w; ++x) out.edges[x] = std::sqrt(out.edges[x] * out.edges[x] + row[x] * row[x]) / 116.0f;
@@ -212,11 +253,12 @@ struct RowFilter {
         for (int x = 0; x < w; ++x) out.points[x] = std::sqrt(out.points[x] * out.points[x] + row[x] * row[x]) / 116.0f;
     }
 
-    void filter(const Opponent& o, int y, FilteredRow& out) {
-        csf(o.yy, y, achromatic, out.yy);
-        csf(o.cx, y, redGreen, out.cx);
-        csf(o.cz, y, blueYellow, out.cz);
-        featureRow(o.yy, y, out);
+    void filter(OpponentRows& rows, int y, FilteredRow& out) {
+        rows.advanceTo(y);
+        csf(rows, 0, y, achromatic, out.yy);
+        csf(rows, 1, y, redGreen, out.cx);
+        csf(rows, 2, y, blueYellow, out.cz);
+        featureRow(rows, y, out);
     }
 };
 
@@ -250,9 +292,9 @@ FlipResult flip(const Image& test, const Image& reference, const FlipOptions& op
     const double ppd = options.pixelsPerDegree;
     assert(ppd >= 1.0 && ppd <= 1000.0);
     const std::array<float, 256> decode = decodeTable(options.encoding);
-    const Opponent t = toOpponent(test, decode), r = toOpponent(reference, decode);
     const int w = test.width;
     RowFilter filter(ppd, w);
+    OpponentRows t(test, decode, filter.radius()), r(reference, decode, filter.radius());
     FilteredRow rowT = filteredRow(w), rowR = filteredRow(w);
     FlipResult result{w, test.height, std::vector<float>(static_cast<std::size_t>(w) * test.height)};
     for (int y = 0; y < test.height; ++y) {

@@ -31,16 +31,24 @@ double nearestRank(std::vector<T> values, double q) {
 // Both halves loop taps outside and pixels inside, so the inner loop is a plain multiply-add
 // over contiguous memory that the compiler vectorises.
 template <typename T>
-void filterColumnsAtRow(const BasicPlane<T>& in, int y, std::type_identity_t<std::span<const T>> k, T* out) {
-    const int r = static_cast<int>(k.size() / 2), w = in.width;
-    std::fill(out, out + w, T(0));
+void filterColumns(std::span<const T* const> rows, std::type_identity_t<std::span<const T>> k, int width, T* out) {
+    assert(rows.size() == k.size());
+    std::fill(out, out + width, T(0));
     for (std::size_t t = 0; t < k.size(); ++t) {
         if (k[t] == T(0)) continue;
-        const int sy = std::clamp(y + static_cast<int>(t) - r, 0, in.height - 1);
         const T kt = k[t];
-        const T* s = &in.values[static_cast<std::size_t>(sy) * w];
-        for (int x = 0; x < w; ++x) out[x] += kt * s[x];
+        const T* s = rows[t];
+        for (int x = 0; x < width; ++x) out[x] += kt * s[x];
     }
+}
+
+template <typename T>
+void filterColumnsAtRow(const BasicPlane<T>& in, int y, std::type_identity_t<std::span<const T>> k, T* out) {
+    const int r = static_cast<int>(k.size() / 2);
+    std::vector<const T*> rows(k.size());
+    for (std::size_t t = 0; t < k.size(); ++t)
+        rows[t] = &in.values[static_cast<std::size_t>(std::clamp(y + static_cast<int>(t) - r, 0, in.height - 1)) * in.width];
+    filterColumns<T>(rows, k, in.width, out);
 }
 
 template <typename T>
@@ -78,6 +86,8 @@ BasicPlane<T> convolveSeparable(const BasicPlane<T>& in, std::type_identity_t<st
     return out;
 }
 
+template void filterColumns(std::span<const float* const>, std::span<const float>, int, float*);
+template void filterColumns(std::span<const double* const>, std::span<const double>, int, double*);
 template void filterColumnsAtRow(const Plane&, int, std::span<const float>, float*);
 template void filterColumnsAtRow(const PlaneDouble&, int, std::span<const double>, double*);
 template void filterRow(const float*, int, std::span<const float>, std::vector<float>&, float*);

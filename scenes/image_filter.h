@@ -41,9 +41,13 @@ BasicPlane<T> convolveSeparable(const BasicPlane<T>& in, std::type_identity_t<st
                                 std::type_identity_t<std::span<const T>> vertical);
 
 // The two halves of convolveSeparable for one output row, for callers that fuse several filters
-// of a plane row by row. filterColumnsAtRow: out[x] = sum_t k[t] in(x, clamp(y + t - r)), `out`
-// holding in.width values. filterRow: out[x] = sum_t k[t] row[clamp(x + t - r)] for x < width;
-// `line` is scratch (resized as needed); `out` must not alias `row`.
+// of a plane row by row. filterColumns: out[x] = sum_t k[t] rows[t][x] for x < width, rows[t]
+// the source row of tap t (already clamped by the caller). filterColumnsAtRow: the same with
+// the rows taken from `in` around row y, clamped to the edge; `out` holds in.width values.
+// filterRow: out[x] = sum_t k[t] row[clamp(x + t - r)] for x < width; `line` is scratch
+// (resized as needed); `out` must not alias `row`.
+template <typename T>
+void filterColumns(std::span<const T* const> rows, std::type_identity_t<std::span<const T>> k, int width, T* out);
 template <typename T>
 void filterColumnsAtRow(const BasicPlane<T>& in, int y, std::type_identity_t<std::span<const T>> k, T* out);
 template <typename T>
