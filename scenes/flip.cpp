@@ -1,15 +1,14 @@
 #include "scenes/flip.h"
 
+#include "scenes/flip_color.h"
 #include "scenes/image_filter.h"
 
 #include <glm/glm.hpp>
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cassert>
 #include <cmath>
-#include <cstdint>
 #include <numbers>
 
 namespace cavewall::scenes {
@@ -17,14 +16,6 @@ namespace cavewall::scenes {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// Linear sRGB (D65) to CIE XYZ and back; glm matrices are column-major, so these are written
-// transposed: each line is one column.
-const glm::dmat3 kXyzFromRgb{0.4124564, 0.2126729, 0.0193339,  //
-                             0.3575761, 0.7151522, 0.1191920,  //
-                             0.1804375, 0.0721750, 0.9503041};
-const glm::dmat3 kRgbFromXyz = glm::inverse(kXyzFromRgb);
-const glm::dvec3 kWhite = kXyzFromRgb * glm::dvec3(1.0);
 
 // One Gaussian term a exp(-b f²) of a contrast sensitivity function.
 struct CsfTerm {
@@ -34,19 +25,7 @@ constexpr CsfTerm kAchromatic{1.0, 0.0047}, kRedGreen{1.0, 0.0053};
 constexpr std::array<CsfTerm, 2> kBlueYellow{{{34.1, 0.04}, {13.5, 0.025}}};
 constexpr double kWidestB = 0.04;
 
-constexpr double kQc = 0.7, kPc = 0.4, kPt = 0.95;      // colour error exponent and remapping
-constexpr double kFeatureWidth = 0.082;                 // degrees; the feature exponent qf = 0.5 is a sqrt
-
-// The decoding of one byte: the sRGB curve, or value / 255.
-std::array<float, 256> decodeTable(ColorEncoding encoding) {
-    std::array<float, 256> t{};
-    for (int i = 0; i < 256; ++i) {
-        const double v = i / 255.0;
-        const double srgb = v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
-        t[i] = static_cast<float>(encoding == ColorEncoding::Srgb ? srgb : v);
-    }
-    return t;
-}
+constexpr double kFeatureWidth = 0.082;  // degrees; the feature exponent qf = 0.5 is a sqrt
 
 // The rows of an image in YyCxCz that the filters of one output row read: a ring of 2R + 1 rows
 // per channel, R the largest kernel radius, converted from the image as the output row advances
@@ -70,7 +49,8 @@ public:
     std::span<const float* const> taps(int channel, int y, std::size_t size) {
         const int r = static_cast<int>(size / 2);
         _taps.resize(size);
-        for (std::size_t t = 0; t < size; ++t) _taps[t] = row(channel, std::clamp(y + static_cast<int>(t) - r, 0, _image.height - 1));
+        for (std::size_t t = 0; t < size; ++t)
+            _taps[t] = row(channel, std::clamp(y + static_cast<int>(t) - r, 0, _image.height - 1));
         return _taps;
     }
 
@@ -87,10 +67,8 @@ private:
         float* cz = &_channels[2][static_cast<std::size_t>(y % _slots) * _image.width];
         for (int x = 0; x < _image.width; ++x) {
             const std::uint8_t* p = &_image.rgba[(static_cast<std::size_t>(y) * _image.width + x) * 4];
-            const glm::dvec3 xyz = kXyzFromRgb * glm::dvec3(_decode[p[0]], _decode[p[1]], _decode[p[2]]) / kWhite;
-            yy[x] = static_cast<float>(116.0 * xyz.y - 16.0);
-            cx[x] = static_cast<float>(500.0 * (xyz.x - xyz.y));
-            cz[x] = static_cast<float>(200.0 * (xyz.y - xyz.z));
+            const glm::dvec3 o = opponentFromLinear({_decode[p[0]], _decode[p[1]], _decode[p[2]]});
+            yy[x] = static_cast<float>(o.x), cx[x] = static_cast<float>(o.y), cz[x] = static_cast<float>(o.z);
         }
     }
 
@@ -123,54 +101,6 @@ CsfKernel csfKernel(std::span<const CsfTerm> terms, double ppd) {
     }
     for (double& s : k.shares) s /= total;
     return k;
-}
-
-// The cube root of t in (0.008, 1.1]: an exponent-thirding guess, then two Halley steps (each
-// cubes the relative error: 3 % -> 1e-5 -> 1e-15). std::cbrt dominated FLIP's run time.
-double cubeRoot(double t) {
-    std::uint64_t bits = std::bit_cast<std::uint64_t>(t);
-    bits = bits / 3 + (std::uint64_t{0x3FF} << 52) / 3 * 2;  // exponent e -> about e / 3
-    double y = std::bit_cast<double>(bits);
-    for (int i = 0; i < 2; ++i) {
-        const double y3 = y * y * y;
-        y *= (y3 + 2.0 * t) / (2.0 * y3 + t);
-    }
-    return y;
-}
-
-double labF(double t) {
-    constexpr double kDelta = 6.0 / 29.0;
-    return t > kDelta * kDelta * kDelta ? cubeRoot(t) : t / (3.0 * kDelta * kDelta) + 4.0 / 29.0;
-}
-
-// Linear RGB (clamped to [0, 1]) to Hunt-adjusted CIELAB.
-glm::dvec3 huntLab(glm::dvec3 rgb) {
-    const glm::dvec3 xyz = kXyzFromRgb * glm::clamp(rgb, 0.0, 1.0) / kWhite;
-    const double fx = labF(xyz.x), fy = labF(xyz.y), fz = labF(xyz.z);
-    const double l = 116.0 * fy - 16.0;
-    return {l, 0.01 * l * 500.0 * (fx - fy), 0.01 * l * 200.0 * (fy - fz)};
-}
-
-glm::dvec3 huntLabFromOpponent(double yy, double cx, double cz) {
-    const double y = (yy + 16.0) / 116.0;
-    const glm::dvec3 xyz = glm::dvec3(cx / 500.0 + y, y, y - cz / 200.0) * kWhite;
-    return huntLab(kRgbFromXyz * xyz);
-}
-
-double hyab(glm::dvec3 a, glm::dvec3 b) {
-    const double da = a.y - b.y, db = a.z - b.z;
-    return std::abs(a.x - b.x) + std::sqrt(da * da + db * db);
-}
-
-// The largest colour difference within the gamut, raised to qc.
-const double kCmax = std::pow(hyab(huntLab({0, 1, 0}), huntLab({0, 0, 1})), kQc);
-
-// HyAB raised to qc, remapped onto [0, 1] (see the header). Single precision is ample here and
-// powf is several times faster than pow.
-double remapColorError(double difference) {
-    const double e = std::pow(static_cast<float>(difference), static_cast<float>(kQc));
-    if (e < kPc * kCmax) return kPt / (kPc * kCmax) * e;
-    return std::min(1.0, kPt + (e - kPc * kCmax) / (kCmax - kPc * kCmax) * (1.0 - kPt));
 }
 
 // 1-D feature kernels: the Gaussian, its first derivative and its second derivative, the last
@@ -269,8 +199,8 @@ FilteredRow filteredRow(int width) {
 
 // FLIP of pixel x of two filtered rows: the colour error raised to 1 - feature error.
 double pixelError(const FilteredRow& t, const FilteredRow& r, int x) {
-    const double colour = remapColorError(
-        hyab(huntLabFromOpponent(t.yy[x], t.cx[x], t.cz[x]), huntLabFromOpponent(r.yy[x], r.cx[x], r.cz[x])));
+    const double colour = flipColorError(hyab(huntLabFromOpponent({t.yy[x], t.cx[x], t.cz[x]}),
+                                              huntLabFromOpponent({r.yy[x], r.cx[x], r.cz[x]})));
     const double edge = std::abs(t.edges[x] - r.edges[x]), point = std::abs(t.points[x] - r.points[x]);
     const double feature = std::min(1.0, std::sqrt(std::max(edge, point) / std::numbers::sqrt2));  // qf = 0.5
     return feature > 0.0 ? std::pow(static_cast<float>(colour), static_cast<float>(1.0 - feature)) : colour;
@@ -305,22 +235,6 @@ FlipResult flip(const Image& test, const Image& reference, const FlipOptions& op
     }
     summarise(result);
     return result;
-}
-
-Image flipErrorImage(const FlipResult& result) {
-    // Stops at 0, 0.25, 0.5, 0.75 and 1 (see the header).
-    static constexpr std::array<std::array<double, 3>, 5> kStops{
-        {{0, 0, 0}, {72, 16, 120}, {184, 50, 110}, {250, 140, 80}, {255, 250, 190}}};
-    Image image{"flip", result.width, result.height, std::vector<std::uint8_t>(result.errors.size() * 4, 255)};
-    for (std::size_t i = 0; i < result.errors.size(); ++i) {
-        const double s = std::clamp(static_cast<double>(result.errors[i]), 0.0, 1.0) * 4.0;
-        const int lo = std::min(static_cast<int>(s), 3);
-        const double f = s - lo;
-        for (int c = 0; c < 3; ++c)
-            image.rgba[i * 4 + c] =
-                static_cast<std::uint8_t>(std::lround(kStops[lo][c] + f * (kStops[lo + 1][c] - kStops[lo][c])));
-    }
-    return image;
 }
 
 }  // namespace cavewall::scenes

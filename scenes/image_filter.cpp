@@ -46,8 +46,10 @@ template <typename T>
 void filterColumnsAtRow(const BasicPlane<T>& in, int y, std::type_identity_t<std::span<const T>> k, T* out) {
     const int r = static_cast<int>(k.size() / 2);
     std::vector<const T*> rows(k.size());
-    for (std::size_t t = 0; t < k.size(); ++t)
-        rows[t] = &in.values[static_cast<std::size_t>(std::clamp(y + static_cast<int>(t) - r, 0, in.height - 1)) * in.width];
+    for (std::size_t t = 0; t < k.size(); ++t) {
+        const int source = std::clamp(y + static_cast<int>(t) - r, 0, in.height - 1);
+        rows[t] = &in.values[static_cast<std::size_t>(source) * in.width];
+    }
     filterColumns<T>(rows, k, in.width, out);
 }
 
