@@ -82,20 +82,4 @@ double flipColorError(double difference) {
     return std::min(1.0, kPt + (e - kPc * kCmax) / (kCmax - kPc * kCmax) * (1.0 - kPt));
 }
 
-Image flipErrorImage(const FlipResult& result) {
-    // Stops at 0, 0.25, 0.5, 0.75 and 1 (see the header).
-    static constexpr std::array<std::array<double, 3>, 5> kStops{
-        {{0, 0, 0}, {72, 16, 120}, {184, 50, 110}, {250, 140, 80}, {255, 250, 190}}};
-    Image image{"flip", result.width, result.height, std::vector<std::uint8_t>(result.errors.size() * 4, 255)};
-    for (std::size_t i = 0; i < result.errors.size(); ++i) {
-        const double s = std::clamp(static_cast<double>(result.errors[i]), 0.0, 1.0) * 4.0;
-        const int lo = std::min(static_cast<int>(s), 3);
-        const double f = s - lo;
-        for (int c = 0; c < 3; ++c)
-            image.rgba[i * 4 + c] =
-                static_cast<std::uint8_t>(std::lround(kStops[lo][c] + f * (kStops[lo + 1][c] - kStops[lo][c])));
-    }
-    return image;
-}
-
 }  // namespace cavewall::scenes

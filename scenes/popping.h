@@ -31,7 +31,7 @@
 namespace cavewall::scenes {
 
 struct PoppingOptions {
-    int tileSize = 32;             // pixels, >= 1; about 2 degrees at a CAVE wall's 9-17 ppd
+    int tileSize = 32;             // pixels, >= 1; 2-3.5 degrees at a CAVE wall's 9-17 ppd
     double floor = 1.0 / 255.0;    // smallest dR divided by, [0, 1] units RMS, > 0
 };
 

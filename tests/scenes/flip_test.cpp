@@ -1,6 +1,7 @@
 // LDR-FLIP (scenes/flip.h) against the properties the paper states and the numbers its formulas
 // give for uniform patches, where neither filter changes anything.
 #include "scenes/flip.h"
+#include "scenes/flip_color.h"
 
 #include "config/error.h"
 #include "tests/scenes/test_images.h"
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace cavewall::scenes {
@@ -23,6 +25,24 @@ using ::testing::ThrowsMessage;
 
 FlipResult flipAt(const Image& test, const Image& reference, double ppd) {
     return flip(test, reference, {ppd, ColorEncoding::Srgb});
+}
+
+TEST(FlipColor, WhiteIsTheReferenceAndTheRemapHitsItsKnots) {
+    // White is the reference white: Yy = 100, Cx = Cz = 0, L* = 100, a* = b* = 0.
+    const glm::dvec3 white = opponentFromLinear({1, 1, 1});
+    EXPECT_NEAR(white.x, 100.0, 1e-9);
+    EXPECT_NEAR(glm::length(glm::dvec2(white.y, white.z)), 0.0, 1e-9);
+    EXPECT_NEAR(glm::distance(huntLabFromOpponent(white), glm::dvec3(100, 0, 0)), 0.0, 1e-6);
+    // Green against blue is the largest difference, HyAB 203.30 (derived in BlackAgainstWhite
+    // below): it maps to 1, and 0.4^(1 / 0.7) of it, where e^0.7 = 0.4 cmax, to 0.95.
+    const double top = hyab(huntLabFromOpponent(opponentFromLinear({0, 1, 0})),
+                            huntLabFromOpponent(opponentFromLinear({0, 0, 1})));
+    EXPECT_NEAR(top, 203.30, 1e-2);
+    EXPECT_NEAR(flipColorError(top), 1.0, 1e-5);
+    EXPECT_NEAR(flipColorError(top * std::pow(0.4, 1 / 0.7)), 0.95, 1e-5);
+    EXPECT_EQ(flipColorError(0.0), 0.0);
+    // Out-of-gamut colours are clamped to the RGB cube first: "whiter than white" is white.
+    EXPECT_NEAR(glm::distance(huntLabFromOpponent(opponentFromLinear({2, 2, 2})), glm::dvec3(100, 0, 0)), 0.0, 1e-6);
 }
 
 TEST(Flip, IdenticalImagesGiveZeroEverywhere) {
