@@ -1,8 +1,9 @@
 #pragma once
-// Float image planes and separable convolution: the filtering under the image metrics
-// (scenes/flip.h, scenes/ssim.h).
+// Image planes and separable convolution: the filtering under the image metrics
+// (scenes/flip.h, scenes/ssim.h), plus their percentiles and size check.
 //
-// A Plane is one channel, rows top to bottom, values in whatever unit its producer states.
+// A plane is one channel of float (Plane) or double (PlaneDouble) values, rows top to bottom, in
+// whatever unit its producer states.
 // Kernels are odd-length, centred, applied as correlation (kernel[k] weighs the sample at offset
 // k - radius); the metrics use symmetric or antisymmetric kernels, for which the sign convention
 // only flips the sign of an antisymmetric response. Outside the plane, the nearest edge sample is
