@@ -29,7 +29,7 @@ EyePath recordEyePath(const scenes::Scene& scene, const scenes::SceneDescription
     RunInput input(options, scene, d, false);
     EyePath path;
     for (long i = 0; i < frames; ++i) {
-        FrameInput in = input.next(i, false);
+        walls::FrameInput in = input.next(i, false);
         in.hand.reset();  // the bench draws no hand cursor
         path.frames.push_back(in);
     }
