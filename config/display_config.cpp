@@ -1,7 +1,9 @@
 #include "config/display_config.h"
 
+#include "config/display_limits.h"
 #include "config/json_reader.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <set>
@@ -25,13 +27,30 @@ StereoMode parseStereo(const JsonNode& node) {
     return StereoMode::Mono;
 }
 
+void checkFileName(const JsonNode& node, const std::string& name) {
+    const std::string problem = fileNameProblem(name);
+    if (!problem.empty()) node.fail(problem);
+}
+
+glm::dvec3 position(const JsonNode& node) {
+    const glm::dvec3 v = node.vec3();
+    for (int i = 0; i < 3; ++i)
+        if (std::abs(v[i]) > kMaxCoordinate)
+            node.fail("expected coordinates in [-" + formatNumber(kMaxCoordinate) + ", " + formatNumber(kMaxCoordinate) +
+                      "] m, got " + vecString(v));
+    return v;
+}
+
 void parseOutput(const JsonNode& node, Screen& screen) {
     node.expectKeys({"window", "headless"});
     if (node.has("window") == node.has("headless"))
         node.fail("expected exactly one of 'window' or 'headless'");
     if (auto h = node.find("headless")) {
         h->expectKeys({"file"});
-        if (auto f = h->find("file")) screen.headless.file = f->string();
+        if (auto f = h->find("file")) {
+            screen.headless.file = f->string();
+            checkFileName(*f, screen.headless.file);
+        }
         return;
     }
     const JsonNode w = node.at("window");
@@ -48,10 +67,10 @@ Screen parseScreen(const JsonNode& node) {
     node.expectKeys({"name", "lowerLeft", "lowerRight", "upperLeft", "resolution", "output", "rank"});
     Screen s;
     s.name = node.at("name").string();
-    if (s.name.empty()) node.at("name").fail("expected a non-empty name");
-    s.lowerLeft = node.at("lowerLeft").vec3();
-    s.lowerRight = node.at("lowerRight").vec3();
-    s.upperLeft = node.at("upperLeft").vec3();
+    checkFileName(node.at("name"), s.name);
+    s.lowerLeft = position(node.at("lowerLeft"));
+    s.lowerRight = position(node.at("lowerRight"));
+    s.upperLeft = position(node.at("upperLeft"));
     s.resolution = node.at("resolution").ivec2(1, kMaxResolution);
     if (auto out = node.find("output")) parseOutput(*out, s);
     if (auto r = node.find("rank")) s.rank = r->integer(0, 4095);
@@ -61,7 +80,7 @@ Screen parseScreen(const JsonNode& node) {
 Viewer parseViewer(const JsonNode& node) {
     node.expectKeys({"headPosition", "headOrientation", "eyeSeparation", "near", "far"});
     Viewer v;
-    if (auto n = node.find("headPosition")) v.headPosition = n->vec3();
+    if (auto n = node.find("headPosition")) v.headPosition = position(*n);
     if (auto n = node.find("headOrientation")) v.headOrientation = n->rotation();
     if (auto n = node.find("eyeSeparation")) v.eyeSeparation = n->number(0.0, 0.2);
     if (auto n = node.find("near")) v.near = n->number(1e-6, 1e6);
@@ -94,6 +113,10 @@ Tracking parseTracking(const JsonNode& node) {
             n->fail("expected a rotation in the upper 3x3 (orthonormal within 1e-4, det +1), got an "
                     "error of " + formatNumber(worst) + " and det " + formatNumber(glm::determinant(r)));
     }
+    for (int r = 0; r < 3; ++r)
+        if (std::abs(t.caveFromTracker[3][r]) > kMaxCoordinate)
+            node.at("caveFromTracker").fail("expected a translation within " + formatNumber(kMaxCoordinate) +
+                                            " m, got " + formatNumber(t.caveFromTracker[3][r]) + " m");
     if (auto n = node.find("latencyMs")) t.latencyMs = n->number(0.0, 500.0);
     return t;
 }
@@ -128,12 +151,24 @@ DisplayConfig parseDisplayConfig(std::string_view jsonText, const std::string& s
 }
 
 void validateDisplayConfig(const DisplayConfig& config, const std::string& source) {
-    std::set<std::string> names;
+    std::set<std::string> names, stems;
     for (std::size_t i = 0; i < config.screens.size(); ++i) {
         const Screen& s = config.screens[i];
         const std::string where = source + ": screens[" + std::to_string(i) + "] '" + s.name + "'";
         if (!names.insert(s.name).second)
             throw Error(where + ": duplicate screen name (expected unique names)");
+        for (const std::string& n : {s.name, s.headless.file})
+            if (!n.empty() && !fileNameProblem(n).empty()) throw Error(where + ": " + fileNameProblem(n));
+        std::string stem = s.headless.file.empty() ? s.name : s.headless.file;
+        for (char& c : stem) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (!stems.insert(stem).second)
+            throw Error(where + ": image file '" + stem + "' is also another screen's (expected unique names and "
+                        "headless files, compared ignoring case)");
+        for (const glm::dvec3& corner : {s.lowerLeft, s.lowerRight, s.upperLeft})
+            for (int a = 0; a < 3; ++a)
+                if (!(std::abs(corner[a]) <= kMaxCoordinate))
+                    throw Error(where + ": corner " + vecString(corner) + " is out of range (expected coordinates in [-" +
+                                formatNumber(kMaxCoordinate) + ", " + formatNumber(kMaxCoordinate) + "] m)");
         const glm::dvec3 right = s.lowerRight - s.lowerLeft;
         const glm::dvec3 up = s.upperLeft - s.lowerLeft;
         const double width = glm::length(right), height = glm::length(up);

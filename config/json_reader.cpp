@@ -1,5 +1,7 @@
 #include "config/json_reader.h"
 
+#include "config/json_depth.h"
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -202,6 +204,7 @@ JsonDocument JsonDocument::fromFile(const std::filesystem::path& file) {
 JsonDocument JsonDocument::fromText(std::string_view text, std::string sourceName) {
     JsonDocument doc;
     doc._source = std::move(sourceName);
+    checkJsonDepth(text, doc._source);
     try {
         doc._json = nlohmann::json::parse(text);
     } catch (const nlohmann::json::exception& e) {

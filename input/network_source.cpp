@@ -1,7 +1,10 @@
 #include "input/network_source.h"
 
+#include "config/json_reader.h"
+
 #include <arpa/inet.h>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
@@ -82,9 +85,21 @@ NetworkSource::NetworkSource(NetworkConfig config) : _config(std::move(config)),
     }
 }
 
-bool NetworkSource::acceptDTrack(const DTrackFrame& frame, double now) {
+bool NetworkSource::plausible(const Pose& pose) const {
+    return _config.volume.contains(glm::dvec3(_config.caveFromTracker * glm::dvec4(pose.position, 1.0)));
+}
+
+// A device whose tracked pose lies outside the volume is not updated (it goes stale as in a
+// drop-out); `outside` tells the caller to count the packet when nothing else in it was used.
+bool NetworkSource::acceptDTrack(const DTrackFrame& frame, double now, bool& outside) {
     bool used = false;
+    auto usable = [&](bool tracked, const Pose& pose) {
+        if (!tracked || plausible(pose)) return true;
+        outside = true;
+        return false;
+    };
     for (const auto& b : frame.bodies) {
+        if (!usable(b.tracked(), b.pose)) continue;
         if (b.id == _config.headBody) {
             _latest.head = b.pose;
             _headTracked = b.tracked();
@@ -99,7 +114,7 @@ bool NetworkSource::acceptDTrack(const DTrackFrame& frame, double now) {
         }
     }
     for (const auto& s : frame.flysticks) {
-        if (s.id != _config.handId) continue;
+        if (s.id != _config.handId || !usable(s.tracked(), s.pose)) continue;
         // Buttons are valid even when the Flystick is out of view; its pose is not.
         _latest.wand = s.wand;
         if (s.tracked()) _latest.hand = s.pose;
@@ -112,18 +127,22 @@ bool NetworkSource::acceptDTrack(const DTrackFrame& frame, double now) {
 
 void NetworkSource::accept(const std::string& packet, double now) {
     PacketDrop why = PacketDrop::None;
-    bool used = false;
+    bool used = false, outside = false;
     if (_config.protocol == NetworkProtocol::OpenTrack) {
         if (auto pose = parseOpenTrack(packet, _config.invert, &why)) {
-            _latest.head = *pose;
-            _headTime = now;
-            _headTracked = used = true;
+            outside = !plausible(*pose);
+            if (!outside) {
+                _latest.head = *pose;
+                _headTime = now;
+                _headTracked = used = true;
+            }
         }
     } else if (auto frame = parseDTrack(packet, &why)) {
-        used = acceptDTrack(*frame, now);
+        used = acceptDTrack(*frame, now, outside);
     }
     if (why == PacketDrop::Malformed) ++_stats.malformed;
     if (why == PacketDrop::NonFinite) ++_stats.nonFinite;
+    if (outside && !used) ++_stats.outside;
     if (used) ++_stats.accepted;
 }
 
@@ -165,13 +184,36 @@ void parseInvert(const TrackerSpec& spec, OpenTrackInvert& inv) {
     }
 }
 
+// "x0,y0,z0,x1,y1,z1": the corners of a box in the cave frame, metres.
+config::TrackingVolume parseVolume(const TrackerSpec& spec) {
+    const std::string text = spec.get("volume", "");
+    double v[6];
+    const char* p = text.c_str();
+    for (int i = 0; i < 6; ++i) {
+        char* end = nullptr;
+        v[i] = std::strtod(p, &end);
+        const bool last = i == 5;
+        if (end == p || !std::isfinite(v[i]) || std::abs(v[i]) > config::kMaxCoordinate || *end != (last ? '\0' : ','))
+            spec.fail("volume: expected six comma-separated numbers within " + config::formatNumber(config::kMaxCoordinate) +
+                      " (x0,y0,z0,x1,y1,z1 in metres), got '" + text + "'");
+        p = end + 1;
+    }
+    const config::TrackingVolume volume{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+    if (!(volume.min.x < volume.max.x && volume.min.y < volume.max.y && volume.min.z < volume.max.z))
+        spec.fail("volume: expected the first corner below the second on every axis, got '" + text + "'");
+    return volume;
+}
+
 }  // namespace
 
-std::unique_ptr<TrackerSource> makeNetworkSource(const TrackerSpec& spec) {
+std::unique_ptr<TrackerSource> makeNetworkSource(const TrackerSpec& spec, const TrackerContext& context) {
     NetworkConfig c;
+    c.caveFromTracker = context.caveFromTracker;
+    c.volume = context.volume;
     c.protocol = spec.scheme() == "dtrack" ? NetworkProtocol::DTrack : NetworkProtocol::OpenTrack;
-    if (c.protocol == NetworkProtocol::DTrack) spec.expectParams({"body", "hand", "bind", "stale"});
-    else spec.expectParams({"bind", "stale", "invert"});
+    if (c.protocol == NetworkProtocol::DTrack) spec.expectParams({"body", "hand", "bind", "stale", "volume"});
+    else spec.expectParams({"bind", "stale", "invert", "volume"});
+    if (spec.has("volume")) c.volume = parseVolume(spec);
     const std::string& target = spec.target();
     const auto colon = target.rfind(':');
     if (target.rfind("udp://", 0) != 0 || colon == std::string::npos || colon < 6)

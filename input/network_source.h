@@ -59,6 +59,8 @@ struct NetworkConfig {
     int handId = 0;                          // DTrack Flystick (or 6d body) id of the hand
     double staleSeconds = 0.1;               // how long a pose stays valid without packets
     OpenTrackInvert invert;
+    glm::dmat4 caveFromTracker{1.0};         // to check poses against the volume
+    config::TrackingVolume volume;           // cave frame; a pose outside is dropped (stats().outside)
 };
 
 class NetworkSource : public TrackerSource {
@@ -72,7 +74,8 @@ public:
 
 private:
     void accept(const std::string& packet, double now);
-    bool acceptDTrack(const DTrackFrame& frame, double now);
+    bool acceptDTrack(const DTrackFrame& frame, double now, bool& outside);
+    bool plausible(const Pose& pose) const;
 
     NetworkConfig _config;
     UdpReceiver _socket;
@@ -84,6 +87,7 @@ private:
 };
 
 // "dtrack:udp://..." and "opentrack:udp://...".
-std::unique_ptr<TrackerSource> makeNetworkSource(const TrackerSpec& spec);
+// The context gives the calibration and the tracking volume.
+std::unique_ptr<TrackerSource> makeNetworkSource(const TrackerSpec& spec, const TrackerContext& context = {});
 
 }  // namespace cavewall::input

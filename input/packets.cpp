@@ -184,6 +184,7 @@ std::optional<Pose> parseOpenTrack(std::string_view packet, const OpenTrackInver
         v[i] = std::bit_cast<double>(bits);
         if (!std::isfinite(v[i])) return fail(PacketDrop::NonFinite);
         if (std::fabs(v[i]) > (i < 3 ? 10000.0 : 360.0)) return fail(PacketDrop::Malformed);
+        if (v[i] != 0.0 && std::fabs(v[i]) < 1e-12) return fail(PacketDrop::Malformed);
     }
     const bool flip[6] = {invert.x, invert.y, invert.z, invert.yaw, invert.pitch, invert.roll};
     for (int i = 0; i < 6; ++i)

@@ -24,7 +24,10 @@
 // the screen), metres; orientation = yaw about +Y (positive turns left), then pitch about +X
 // (positive looks up), then roll about +Z (positive tilts left), as input::yawPitchRoll. Setups
 // whose signs differ flip them with the source's `invert` parameter. Plausibility limits:
-// |position| <= 10000 cm, |angle| <= 360°; anything else is dropped as malformed.
+// |position| <= 10000 cm, |angle| <= 360°, and no value that is not zero but smaller than
+// 1e-12 in magnitude (no tracker measures picometres; such values are what random bytes
+// decode to); anything else is dropped as malformed. Where the head may plausibly be is
+// checked later, against the tracking volume (tracker_source.h).
 
 #include "input/sample.h"
 

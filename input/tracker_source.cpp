@@ -100,6 +100,7 @@ TrackerContext trackerContextFor(const config::DisplayConfig& display) {
     c.floorMax = centre + half;
     c.standingEyeHeight = display.viewer.headPosition.y;
     c.caveFromTracker = display.tracking.caveFromTracker;
+    c.volume = config::trackingVolumeOf(display);
     return c;
 }
 
@@ -108,7 +109,7 @@ std::unique_ptr<TrackerSource> makeTracker(std::string_view text, const TrackerC
     if (spec.scheme() == "sim") return makeSimWalkSource(spec, context);
     if (spec.scheme() == "file") return makePathFileSource(spec);
     if (spec.scheme() == "replay") return makeReplaySource(spec);
-    if (spec.scheme() == "dtrack" || spec.scheme() == "opentrack") return makeNetworkSource(spec);
+    if (spec.scheme() == "dtrack" || spec.scheme() == "opentrack") return makeNetworkSource(spec, context);
     spec.fail("unknown scheme '" + spec.scheme() + "' (expected one of: sim, file, replay, dtrack, opentrack)");
 }
 

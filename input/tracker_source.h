@@ -13,8 +13,11 @@
 // The listener binds to 127.0.0.1 unless `bind` says otherwise, so a non-loopback HOST needs
 // e.g. "?bind=0.0.0.0". `stale` is how long, in seconds, a pose counts as fresh after its last
 // packet (default 0.1); after that the device is reported as not valid (a drop-out).
+// `volume=x0,y0,z0,x1,y1,z1` sets the tracking volume (cave frame, metres; default: the
+// display's, config/display_limits.h): a pose outside it is dropped and counted as `outside`.
 
 #include "config/display_config.h"
+#include "config/display_limits.h"
 #include "input/sample.h"
 
 #include <glm/glm.hpp>
@@ -36,7 +39,8 @@ struct SourceStats {
     std::uint64_t malformed = 0;      // dropped: garbage, truncated, bad numbers
     std::uint64_t nonFinite = 0;      // dropped: NaN or infinite values
     std::uint64_t foreign = 0;        // dropped: from a sender other than HOST
-    std::uint64_t dropped() const { return malformed + nonFinite + foreign; }
+    std::uint64_t outside = 0;        // dropped: a pose outside the tracking volume
+    std::uint64_t dropped() const { return malformed + nonFinite + foreign + outside; }
 };
 
 class TrackerSource {
@@ -62,11 +66,14 @@ struct TrackerContext {
     glm::dvec2 floorMax{1.5, 1.5};
     double standingEyeHeight = 1.7;   // metres above the floor (the default head height)
     glm::dmat4 caveFromTracker{1.0};  // rigid; simulated sources produce tracker-frame poses
+    config::TrackingVolume volume;    // network poses outside it (cave frame) are dropped
 };
 
 // The context of a display: the floor area is the screens' footprint in x and z (at least 1 m
 // on each side, centred on it, and containing the default head), the standing eye height is the
-// default head's height, and caveFromTracker is tracking.caveFromTracker.
+// default head's height, caveFromTracker is tracking.caveFromTracker and the volume is
+// tracking.volume (by default the screens' bounding box and the default head, grown by
+// config::kTrackingMargin on every side).
 TrackerContext trackerContextFor(const config::DisplayConfig& display);
 
 // A spec string split into scheme, target and parameters, with checked accessors. Every error

@@ -1,6 +1,7 @@
 #include "scenes/generate.h"
 
 #include "config/error.h"
+#include "scenes/file_write.h"
 #include "scenes/glb_writer.h"
 #include "scenes/scene_description_io.h"
 
@@ -16,14 +17,7 @@ std::filesystem::path writeGenerated(GeneratedScene& g, const std::filesystem::p
     writeGlb(g.scene, dir / g.description.models.at(0).file);
     const std::filesystem::path json = dir / "scene.json";
     validateSceneDescription(g.description, json.string());  // after the .glb exists: it checks files
-    const std::filesystem::path tmp = json.string() + ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        out << writeSceneDescription(g.description);
-        if (!out) throw Error(json.string() + ": cannot write the file");
-    }
-    std::filesystem::rename(tmp, json, ec);
-    if (ec) throw Error(json.string() + ": cannot write the file (" + ec.message() + ")");
+    writeBytesAtomically(json, writeSceneDescription(g.description));
     return json;
 }
 

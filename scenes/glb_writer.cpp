@@ -1,6 +1,7 @@
 #include "scenes/glb_writer.h"
 
 #include "config/error.h"
+#include "scenes/file_write.h"
 
 #include <tiny_gltf.h>
 
@@ -126,16 +127,7 @@ std::vector<std::uint8_t> glbBytes(const Scene& scene) {
 
 void writeGlb(const Scene& scene, const std::filesystem::path& file) {
     const std::vector<std::uint8_t> bytes = glbBytes(scene);
-    std::error_code ec;
-    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
-    const std::filesystem::path tmp = file.string() + ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-        if (!out) throw Error(file.string() + ": cannot write the file (" + std::to_string(bytes.size()) + " bytes)");
-    }
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) throw Error(file.string() + ": cannot write the file (" + ec.message() + ")");
+    writeBytesAtomically(file, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 }  // namespace cavewall::scenes

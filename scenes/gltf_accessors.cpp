@@ -3,6 +3,7 @@
 #include "config/error.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstring>
 
@@ -92,19 +93,32 @@ const unsigned char* viewRange(const GltfContext& ctx, int view, std::uint64_t o
                                 " exceeds buffer " + std::to_string(bv.buffer) + " (expected at most " +
                                 std::to_string(bufferSize) + " bytes, the buffer is truncated or the view is wrong)");
     if (count == 0) return buffers[bv.buffer].data.data();
-    // Last byte read: offset + stride * (count - 1) + elementSize; guard against overflow first.
-    if (count - 1 > (UINT64_MAX / 2) / std::max<std::uint64_t>(stride, 1))
-        ctx.fail(where, "element count " + std::to_string(count) + " is impossibly large");
-    const std::uint64_t end = offset + stride * (count - 1) + elementSize;
-    if (end > bv.byteLength)
-        ctx.fail(where, std::to_string(count) + " elements need " + std::to_string(end) + " bytes of bufferView " +
-                            std::to_string(view) + " (expected at most " + std::to_string(bv.byteLength) + ")");
+    // Last byte read: offset + stride * (count - 1) + elementSize <= byteLength, checked by
+    // subtraction so that no sum of file numbers can wrap around.
+    const std::uint64_t span = count - 1 > (UINT64_MAX - elementSize) / std::max<std::uint64_t>(stride, 1)
+                                   ? UINT64_MAX : stride * (count - 1) + elementSize;
+    const std::uint64_t need = span > UINT64_MAX - offset ? UINT64_MAX : offset + span;
+    if (offset > bv.byteLength || elementSize > bv.byteLength - offset ||
+        (count - 1) > (bv.byteLength - offset - elementSize) / std::max<std::uint64_t>(stride, 1))
+        ctx.fail(where, std::to_string(count) + " elements of " + std::to_string(elementSize) + " bytes, " +
+                            std::to_string(stride) + " apart from byte " + std::to_string(offset) + ", need " +
+                            (need == UINT64_MAX ? std::string("more than 2^64") : std::to_string(need)) +
+                            " bytes of bufferView " + std::to_string(view) + " (expected at most " +
+                            std::to_string(bv.byteLength) + ")");
+    assert(need <= bv.byteLength);
     return buffers[bv.buffer].data.data() + bv.byteOffset + offset;
 }
 
 void applySparse(const GltfContext& ctx, const tinygltf::Accessor& a, AccessorValues& out, const std::string& where) {
     const std::string sw = where + ".sparse";
-    const auto count = static_cast<std::uint64_t>(std::max(a.sparse.count, 0));
+    if (a.sparse.count < 1)
+        ctx.fail(sw + ".count", "expected at least 1 sparse value, got " + std::to_string(a.sparse.count));
+    if (static_cast<std::uint64_t>(a.sparse.count) > out.count)
+        ctx.fail(sw + ".count", "more sparse values than elements (expected at most " + std::to_string(out.count) +
+                                    ", got " + std::to_string(a.sparse.count) + ")");
+    if (a.sparse.indices.byteOffset < 0 || a.sparse.values.byteOffset < 0)
+        ctx.fail(sw, "negative byteOffset (expected at least 0)");
+    const auto count = static_cast<std::uint64_t>(a.sparse.count);
     const int indexSize = componentSize(a.sparse.indices.componentType);
     if (indexSize == 0 || a.sparse.indices.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
         a.sparse.indices.componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
@@ -145,21 +159,27 @@ AccessorValues readAccessor(const GltfContext& ctx, int accessor, const std::str
     AccessorValues out;
     out.components = components;
     out.count = a.count;
-    if (a.count > (std::size_t{1} << 31)) ctx.fail(aw, "count " + std::to_string(a.count) + " is impossibly large");
-    out.values.assign(a.count * components, 0.0);  // no bufferView: zeros (then sparse values)
+    if (a.bufferView < 0 && a.count > kMaxAccessorCountWithoutView)
+        ctx.fail(aw, "count " + std::to_string(a.count) + " without a bufferView (expected at most " +
+                         std::to_string(kMaxAccessorCountWithoutView) + ")");
+    const unsigned char* p = nullptr;
+    std::uint64_t stride = 0;
     if (a.bufferView >= 0) {
         const std::uint64_t elem = static_cast<std::uint64_t>(size) * components;
         const int viewStride = static_cast<std::size_t>(a.bufferView) < ctx.model.bufferViews.size()
                                    ? ctx.model.bufferViews[a.bufferView].byteStride : 0;
-        const std::uint64_t stride = viewStride > 0 ? static_cast<std::uint64_t>(viewStride) : elem;
+        stride = viewStride > 0 ? static_cast<std::uint64_t>(viewStride) : elem;
         if (stride < elem)
             ctx.fail(aw, "byteStride " + std::to_string(stride) + " is smaller than one element (expected at least " +
                              std::to_string(elem) + " bytes)");
-        const unsigned char* p = viewRange(ctx, a.bufferView, a.byteOffset, a.count, elem, stride, aw);
+        // Checked before allocating: the range bounds the count by the buffer's real size.
+        p = viewRange(ctx, a.bufferView, a.byteOffset, a.count, elem, stride, aw);
+    }
+    out.values.assign(a.count * components, 0.0);  // no bufferView: zeros (then sparse values)
+    if (p)
         for (std::size_t i = 0; i < a.count; ++i)
             for (int c = 0; c < components; ++c)
                 out.values[i * components + c] = decode(p + i * stride + c * size, a.componentType, a.normalized);
-    }
     if (a.sparse.isSparse) applySparse(ctx, a, out, aw);
     return out;
 }

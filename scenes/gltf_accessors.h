@@ -21,6 +21,10 @@ struct GltfContext {
 // An accessor's elements as doubles, `components` per element (count * components values).
 // Integer components are converted as stored, or mapped to [0, 1] / [-1, 1] when the accessor
 // is normalized. Sparse substitutions are applied. `where` is the glTF path of the reference.
+// An accessor without a bufferView (zeros, then sparse values) is not bounded by any buffer;
+// this caps what such a file can make us allocate.
+inline constexpr std::size_t kMaxAccessorCountWithoutView = std::size_t{1} << 24;
+
 struct AccessorValues {
     int components = 0;
     std::size_t count = 0;

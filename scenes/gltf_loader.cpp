@@ -5,6 +5,11 @@
 #include "scenes/mesh_tools.h"
 
 #include "config/error.h"
+#include "config/json_depth.h"
+#include "config/json_reader.h"
+#include "scenes/glb_container.h"
+#include "scenes/gltf_memory.h"
+#include "scenes/load_limits.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -12,6 +17,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <optional>
 
 namespace cavewall::scenes {
@@ -36,6 +42,11 @@ std::vector<V> toVectors(const AccessorValues& a) {
     for (std::size_t i = 0; i < a.count; ++i)
         for (int c = 0; c < std::min(N, a.components); ++c) out[i][c] = static_cast<float>(a.values[i * a.components + c]);
     return out;
+}
+
+std::string describeBounds(const Bounds& b) {
+    const glm::dvec3 c = b.centre();
+    return "(" + config::formatNumber(c.x) + ", " + config::formatNumber(c.y) + ", " + config::formatNumber(c.z) + ")";
 }
 
 struct Loader {
@@ -71,8 +82,24 @@ struct Loader {
                                               std::to_string(ctx.model.materials.size()) + " materials)");
         out.material = p.material;
         if (out.normals.empty()) generateNormals(out);
+        else repairNormals(out);
         updateBounds(out);
         return true;
+    }
+
+    // Replaces normals that are not finite by ones made from the triangles, with a warning.
+    void repairNormals(Mesh& mesh) {
+        std::vector<std::size_t> bad;
+        for (std::size_t i = 0; i < mesh.normals.size(); ++i)
+            if (!std::isfinite(mesh.normals[i].x + mesh.normals[i].y + mesh.normals[i].z)) bad.push_back(i);
+        if (bad.empty()) return;
+        Mesh made;
+        made.positions = mesh.positions;
+        made.indices = mesh.indices;
+        generateNormals(made);
+        for (std::size_t i : bad) mesh.normals[i] = made.normals[i];
+        warn("mesh '" + mesh.name + "': regenerated " + std::to_string(bad.size()) + " of " +
+             std::to_string(mesh.normals.size()) + " normals that were not finite (NaN or infinite in the file)");
     }
 
     std::vector<glm::vec3> readPositions(int accessor, const std::string& where) {
@@ -111,8 +138,10 @@ struct Loader {
             if (v.count != n)
                 ctx.fail(aw, "accessor " + std::to_string(it->second) + " has " + std::to_string(v.count) +
                                  " elements (expected " + std::to_string(n) + ", as many as POSITION)");
-            for (double d : v.values)
-                if (!std::isfinite(d)) ctx.fail(aw, "contains a value that is not finite (expected finite numbers)");
+            // Exporters write NaN normals on degenerate triangles; those are regenerated.
+            if (std::string_view(name) != "NORMAL")
+                for (double d : v.values)
+                    if (!std::isfinite(d)) ctx.fail(aw, "contains a value that is not finite (expected finite numbers)");
             return v;
         };
         if (auto v = read("NORMAL", {TINYGLTF_TYPE_VEC3})) {
@@ -188,7 +217,17 @@ struct Loader {
                                            std::to_string(meshMap.size()) + " meshes)");
             const std::string name = node.name.empty() ? "node " + std::to_string(n) : node.name;
             if (node.skin >= 0) warn("node " + std::to_string(n) + " ('" + name + "'): ignoring its skin; the mesh is drawn in its bind pose");
-            for (int mesh : meshMap[node.mesh]) addObject(scene, mesh, world, name);
+            for (int mesh : meshMap[node.mesh]) {
+                // Model units here (a file in millimetres is scaled later): 1000 km in mm.
+                const Bounds b = scene.meshes[mesh].bounds.transformed(world);
+                if (!boundsWithin(b, kMaxWorldCoordinate * 1e3)) {
+                    warn("node " + std::to_string(n) + " ('" + name + "'): ignoring mesh '" + scene.meshes[mesh].name +
+                         "' because its transform places it at " + describeBounds(b) + " (expected within " +
+                         config::formatNumber(kMaxWorldCoordinate * 1e3) + " units of the origin)");
+                    continue;
+                }
+                addObject(scene, mesh, world, name);
+            }
         }
         for (std::size_t c = 0; c < node.children.size(); ++c)
             addNode(node.children[c], world, meshMap, onPath, nw + ".children[" + std::to_string(c) + "]", depth + 1);
@@ -214,14 +253,51 @@ struct Loader {
                 if (c >= 0 && static_cast<std::size_t>(c) < m.nodes.size()) isChild[c] = 1;
         for (std::size_t n = 0; n < m.nodes.size(); ++n)
             if (!isChild[n]) addNode(static_cast<int>(n), glm::dmat4(1.0), meshMap, onPath, "nodes[" + std::to_string(n) + "]");
+        // Nodes that are all somebody's child, with no root above them, can only form cycles;
+        // walking from one reports the cycle instead of drawing nothing.
+        std::vector<char> reached(m.nodes.size(), 0);
+        markReached(isChild, reached);
+        for (std::size_t n = 0; n < m.nodes.size(); ++n)
+            if (!reached[n]) addNode(static_cast<int>(n), glm::dmat4(1.0), meshMap, onPath, "nodes[" + std::to_string(n) + "]");
+    }
+
+    // Marks every node reachable from a root (a node that is nobody's child), without recursion.
+    void markReached(const std::vector<char>& isChild, std::vector<char>& reached) const {
+        std::vector<int> stack;
+        for (std::size_t n = 0; n < isChild.size(); ++n)
+            if (!isChild[n]) stack.push_back(static_cast<int>(n));
+        while (!stack.empty()) {
+            const int n = stack.back();
+            stack.pop_back();
+            if (reached[n]) continue;
+            reached[n] = 1;
+            for (int c : ctx.model.nodes[n].children)
+                if (c >= 0 && static_cast<std::size_t>(c) < reached.size()) stack.push_back(c);
+        }
     }
 };
 
-bool isBinary(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    char magic[4] = {};
-    in.read(magic, 4);
-    return in.gcount() == 4 && std::string(magic, 4) == "glTF";
+// tinygltf's own file reader takes a folder (a URI of ".") for a file of absurd size; this
+// one reads regular files only and says which.
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+        if (err) *err += "external file '" + path + "' is not a regular file (expected a buffer or image file)\n";
+        return false;
+    }
+    std::ifstream in(path, std::ios::binary);
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!in || ec) {
+        if (err) *err += "cannot read the external file '" + path + "'\n";
+        return false;
+    }
+    out->resize(size);
+    in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size));
+    if (static_cast<std::uintmax_t>(in.gcount()) != size) {
+        if (err) *err += "cannot read the external file '" + path + "' to its end\n";
+        return false;
+    }
+    return true;
 }
 
 // tinygltf joins messages with newlines; keep them on one line per message.
@@ -237,11 +313,30 @@ Scene loadGltf(const std::filesystem::path& file) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(file, ec))
         throw Error(file.string() + ": cannot open the glTF file (expected an existing .gltf or .glb file)");
+    return loadGltfFromMemory(config::readTextFile(file), file);
+}
+
+Scene loadGltfFromMemory(std::string_view bytes, const std::filesystem::path& file) {
+    if (bytes.size() > std::numeric_limits<std::uint32_t>::max())
+        throw Error(file.string() + ": the file is " + std::to_string(bytes.size()) +
+                    " bytes (expected less than 4 GiB, the glTF limit)");
     tinygltf::Model model;
     tinygltf::TinyGLTF parser;
+    tinygltf::FsCallbacks fs{&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readWholeFile, &tinygltf::WriteWholeFile,
+                             nullptr};
+    parser.SetFsCallbacks(fs);
     std::string err, warn;
-    const bool ok = isBinary(file) ? parser.LoadBinaryFromFile(&model, &err, &warn, file.string())
-                                   : parser.LoadASCIIFromFile(&model, &err, &warn, file.string());
+    const std::string baseDir = file.parent_path().string();
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    const auto size = static_cast<unsigned int>(bytes.size());
+    bool ok = false;
+    if (bytes.substr(0, 4) == "glTF") {
+        config::checkJsonDepth(splitGlb(bytes, file.string()).json, file.string() + ": JSON chunk");
+        ok = parser.LoadBinaryFromMemory(&model, &err, &warn, data, size, baseDir);
+    } else {
+        config::checkJsonDepth(bytes, file.string());
+        ok = parser.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, baseDir);
+    }
     if (!ok) throw Error(file.string() + ": not a valid glTF file: " + oneLine(err.empty() ? warn : err));
     Loader l{GltfContext{model, file.string()}, Scene{}, "scene '" + file.filename().string() + "'"};
     l.scene.name = file.stem().string();

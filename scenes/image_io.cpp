@@ -1,6 +1,7 @@
 #include "scenes/image_io.h"
 
 #include "config/error.h"
+#include "scenes/file_write.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -48,7 +49,22 @@ void writeImage(const std::filesystem::path& file, const Image& image) {
         throw Error(file.string() + ": cannot write image '" + image.name + "' (expected " +
                     std::to_string(image.width) + " x " + std::to_string(image.height) +
                     " RGBA pixels, got " + std::to_string(image.rgba.size()) + " bytes)");
-    writeAtomically(file, [&](const std::filesystem::path& tmp) { writeFile(tmp, file, image); });
+    writeAtomically(file, [&](const std::filesystem::path& tmp) {
+        writeFile(tmp, file, image);
+        // Image writers do not all report short writes (a full disk leaves a truncated PNG):
+        // what is on disk must decode to what was meant.
+        Image back;
+        try {
+            back = readImage(tmp);
+        } catch (const Error& e) {
+            throw Error(file.string() + ": the written image does not read back (" + e.what() + "; is the disk full?)");
+        }
+        // Sizes only: the reader associates alpha, so translucent pixels read back changed.
+        if (back.width != image.width || back.height != image.height)
+            throw Error(file.string() + ": the written image reads back as " + std::to_string(back.width) + " x " +
+                        std::to_string(back.height) + " (expected " + std::to_string(image.width) + " x " +
+                        std::to_string(image.height) + "; is the disk full?)");
+    });
 }
 
 Image readImage(const std::filesystem::path& file) {
@@ -115,14 +131,16 @@ void writeAtomically(const std::filesystem::path& file,
     const std::filesystem::path tmp = temporarySibling(file);
     try {
         write(tmp);
+        syncToDisk(tmp);  // a full disk may only show when the data reaches it
     } catch (...) {
         std::filesystem::remove(tmp, ec);
         throw;
     }
     std::filesystem::rename(tmp, file, ec);
     if (ec) {
+        const std::string why = ec.message();  // before remove() reuses ec
         std::filesystem::remove(tmp, ec);
-        throw Error(file.string() + ": cannot replace the file (" + ec.message() + ")");
+        throw Error(file.string() + ": cannot replace the file (" + why + ")");
     }
 }
 

@@ -2,6 +2,7 @@
 #include "scenes/loader.h"
 
 #include "config/error.h"
+#include "scenes/load_limits.h"
 #include "scenes/mesh_optimize.h"
 #include "scenes/region.h"
 #include "scenes/scene_description_io.h"
@@ -42,6 +43,14 @@ void merge(Scene& scene, Scene&& part, const glm::dmat4& worldFromFile, const Mo
         scene.meshes.push_back(std::move(m));
     }
     for (const Object& o : part.objects) {
+        const Bounds placed = scene.meshes[o.mesh + meshBase].bounds.transformed(worldFromFile * o.worldFromModel);
+        if (!boundsWithin(placed, kMaxWorldCoordinate)) {
+            scene.warnings.push_back("scene '" + scene.name + "': ignoring object '" + o.name + "' of '" +
+                                     model.file.string() + "' because it lies beyond " +
+                                     std::to_string(static_cast<long long>(kMaxWorldCoordinate)) +
+                                     " m from the origin (check the model's placement and units)");
+            continue;
+        }
         bool structure = model.structure;
         for (const std::string& p : model.structureNodes) structure = structure || matchesPattern(o.name, p);
         addObject(scene, o.mesh + meshBase, worldFromFile * o.worldFromModel, o.name,

@@ -1,5 +1,6 @@
 #include "scenes/region.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -75,6 +76,30 @@ int findCell(const std::vector<Cell>& cells, glm::dvec3 p) {
         if (cells[i].floorY <= p.y + 0.5 && (best < 0 || cells[i].floorY > cells[best].floorY)) best = c;
     }
     return best >= 0 ? best : lowest;
+}
+
+namespace {
+
+double pointSegmentDistance(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
+    const glm::dvec2 ab = b - a;
+    const double len2 = glm::dot(ab, ab);
+    const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+    return glm::length(p - (a + t * ab));
+}
+
+}  // namespace
+
+double segmentRegionDistance(glm::dvec2 a, glm::dvec2 b, const std::vector<glm::dvec2>& region) {
+    if (regionContains(region, a) || regionContains(region, b)) return 0.0;
+    double d = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < region.size(); ++i) {
+        const glm::dvec2 p = region[i], q = region[(i + 1) % region.size()];
+        // Proper crossing of the two segments: opposite sides both ways.
+        auto side = [](glm::dvec2 o, glm::dvec2 u, glm::dvec2 v) { return (u.x - o.x) * (v.y - o.y) - (u.y - o.y) * (v.x - o.x); };
+        if (side(a, b, p) * side(a, b, q) < 0 && side(p, q, a) * side(p, q, b) < 0) return 0.0;
+        d = std::min({d, pointSegmentDistance(p, a, b), pointSegmentDistance(a, p, q), pointSegmentDistance(b, p, q)});
+    }
+    return d;
 }
 
 }  // namespace cavewall::scenes

@@ -26,6 +26,9 @@ double overlapArea(const std::vector<glm::dvec2>& a, const std::vector<glm::dvec
 
 // The cell whose region contains the world point's (x, z); among several (storeys), the one
 // with the highest floor at or below p.y + 0.5 m, else the lowest floor. -1 when none.
+// The distance (metres) between the segment [a, b] and the convex region (0 when they meet).
+double segmentRegionDistance(glm::dvec2 a, glm::dvec2 b, const std::vector<glm::dvec2>& region);
+
 int findCell(const std::vector<Cell>& cells, glm::dvec3 p);
 
 }  // namespace cavewall::scenes

@@ -15,8 +15,15 @@ namespace cavewall::scenes {
 SceneDescription parseSceneDescription(std::string_view jsonText, const std::string& source,
                                        const std::filesystem::path& folder);
 
+// Every point of a scene description (model placements, cell regions, walls) lies within this
+// distance of the origin on each axis, metres: 100 km is far beyond any building or plant.
+inline constexpr double kMaxSceneCoordinate = 1e5;
+// A wall's footprint must come within this distance (metres) of each cell it joins.
+inline constexpr double kMaxWallCellGap = 0.5;
+
 // Checks the rules that span fields (walls are rectangles, walls name existing cells, cells
-// have convex non-degenerate regions, the walk path stays inside the cells, ...). Throws Error.
+// have convex non-degenerate regions, coordinates are within kMaxSceneCoordinate, walls touch
+// the cells they join, the walk path stays inside the cells, ...). Throws Error.
 void validateSceneDescription(const SceneDescription& description, const std::string& source);
 
 // Reads, parses and validates a scene.json (or the scene.json inside a folder).

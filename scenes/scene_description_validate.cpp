@@ -76,6 +76,39 @@ struct Checker {
         if (w.cells[0] == w.cells[1])
             fail(where + ".cells", "names the same cell twice (expected two different cells, got '" +
                                        d.cells[w.cells[0]].name + "' twice)");
+        // A wall joins its cells: its footprint must touch both regions.
+        for (int k = 0; k < 2; ++k) {
+            const Cell& cell = d.cells[w.cells[k]];
+            const double gap = segmentRegionDistance({w.lowerLeft.x, w.lowerLeft.z}, {w.lowerRight.x, w.lowerRight.z}, cell.region);
+            if (gap > kMaxWallCellGap)
+                fail(where, "'" + w.name + "' is " + formatNumber(gap) + " m from cell '" + cell.name +
+                                "' that it joins (expected its footprint within " + formatNumber(kMaxWallCellGap) +
+                                " m of the cell's region)");
+        }
+    }
+
+    // Every coordinate the planner and the renderer work with is bounded (absurd extents
+    // would make the planner's work and float precision meaningless).
+    void checkExtent(const std::string& where, glm::dvec3 p) const {
+        for (int a = 0; a < 3; ++a)
+            if (!(std::abs(p[a]) <= kMaxSceneCoordinate))
+                fail(where, "point " + fmt(p) + " is out of range (expected coordinates within " +
+                                formatNumber(kMaxSceneCoordinate) + " m of the origin)");
+    }
+
+    void checkExtents() const {
+        for (std::size_t i = 0; i < d.models.size(); ++i)
+            checkExtent("models[" + std::to_string(i) + "]", glm::dvec3(d.models[i].worldFromFile[3]));
+        for (std::size_t i = 0; i < d.cells.size(); ++i)
+            for (std::size_t k = 0; k < d.cells[i].region.size(); ++k)
+                checkExtent("cells[" + std::to_string(i) + "].region[" + std::to_string(k) + "]",
+                            {d.cells[i].region[k].x, d.cells[i].floorY, d.cells[i].region[k].y});
+        for (std::size_t i = 0; i < d.walls.size(); ++i)
+            for (const glm::dvec3& p : {d.walls[i].lowerLeft, d.walls[i].lowerRight, d.walls[i].upperLeft})
+                checkExtent("walls[" + std::to_string(i) + "]", p);
+        for (std::size_t i = 0; i < d.realWalls.size(); ++i)
+            for (const glm::dvec3& p : {d.realWalls[i].lowerLeft, d.realWalls[i].lowerRight, d.realWalls[i].upperLeft})
+                checkExtent("realWalls[" + std::to_string(i) + "]", p);
     }
 
     void checkModels() const {
@@ -98,6 +131,7 @@ void validateSceneDescription(const SceneDescription& d, const std::string& sour
     const Checker c{d, source};
     if (d.models.empty()) c.fail("models", "expected at least one model, got none");
     c.checkModels();
+    c.checkExtents();
     for (std::size_t i = 0; i < d.cells.size(); ++i) {
         for (std::size_t j = 0; j < i; ++j)
             if (d.cells[j].name == d.cells[i].name)

@@ -19,8 +19,9 @@ Args::Args(std::vector<std::string> words, std::initializer_list<std::string_vie
             value = name.substr(eq + 1);
             name.resize(eq);
         } else if (std::find(switches.begin(), switches.end(), name) == switches.end()) {
-            if (i + 1 >= words.size()) throw Error("--" + name + ": expected a value after the flag, got nothing");
-            value = words[++i];
+            // Reported later (expectFlags, get): an unknown last flag is unknown first.
+            if (i + 1 >= words.size()) _missingValue = name;
+            else value = words[++i];
         }
         if (_flags.count(name)) throw Error("--" + name + ": given more than once");
         _flags[name] = value;
@@ -34,6 +35,12 @@ void Args::expectFlags(std::initializer_list<std::string_view> allowed) const {
         for (auto a : allowed) list += (list.empty() ? "--" : ", --") + std::string(a);
         throw Error("--" + name + ": unknown flag (expected one of: " + list + ")");
     }
+    if (!_missingValue.empty()) throw Error("--" + _missingValue + ": expected a value after the flag, got nothing");
+}
+
+void Args::expectNoPositional(std::string_view command) const {
+    if (!_positional.empty())
+        throw Error(std::string(command) + ": unexpected word '" + _positional[0] + "' (expected only --flags)");
 }
 
 bool Args::has(std::string_view flag) const { return _flags.find(flag) != _flags.end(); }
@@ -41,6 +48,7 @@ bool Args::has(std::string_view flag) const { return _flags.find(flag) != _flags
 std::optional<std::string> Args::get(std::string_view flag) const {
     auto it = _flags.find(flag);
     if (it == _flags.end()) return std::nullopt;
+    if (flag == _missingValue) throw Error("--" + _missingValue + ": expected a value after the flag, got nothing");
     return it->second;
 }
 

@@ -52,12 +52,16 @@ public:
     std::optional<glm::dvec3> vec3(std::string_view flag) const;
 
     const std::vector<std::string>& positional() const { return _positional; }
+    // Throws "<command>: unexpected word 'x' (expected only --flags)" when there is any
+    // positional word, for commands that take none.
+    void expectNoPositional(std::string_view command) const;
     // The positional word `i`, or an error naming `what` when it is missing.
     const std::string& positional(std::size_t i, std::string_view what) const;
 
 private:
     std::map<std::string, std::string, std::less<>> _flags;
     std::vector<std::string> _positional;
+    std::string _missingValue;  // a last flag that takes a value but has none
 };
 
 // Parses a finite number; `what` names the source in the error message.

@@ -97,7 +97,7 @@ int runDemo(const std::vector<std::string>& words) {
     const std::filesystem::path out = args.getOr("out", "demo-out");
     const std::filesystem::path cache = cacheFolder();
     app::RunOptions o;
-    o.scene = ensurePlant(cache, static_cast<std::size_t>(args.integer("triangles", 2000000, 1000, 100000000)));
+    o.scene = ensurePlant(cache, static_cast<std::size_t>(args.integer("triangles", 2000000, 1000, 40000000)));
     o.display = config::loadDisplayConfig("cave4");
     const int px = static_cast<int>(args.integer("resolution", 256, 16, 4096));
     for (config::Screen& s : o.display.screens) s.resolution = {px, px};

@@ -1,10 +1,13 @@
 #include "config/display_config.h"
+#include "config/display_limits.h"
+#include "config/json_reader.h"
 #include "display/display.h"
 #include "tools/args.h"
 #include "tools/commands.h"
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 
@@ -22,9 +25,14 @@ const char* const kFrustumUsage =
 int runFrustum(const std::vector<std::string>& words) {
     const Args args(words, {"json"});
     args.expectFlags({"display", "eye", "head-yaw", "json"});
+    args.expectNoPositional("frustum");
     const display::Display disp(config::loadDisplayConfig(args.require("display")));
     display::HeadPose head = disp.defaultHead();
     if (auto eye = args.vec3("eye")) head.position = *eye;
+    for (int a = 0; a < 3; ++a)
+        if (std::abs(head.position[a]) > config::kMaxCoordinate)
+            throw Error("--eye: expected coordinates in [-" + config::formatNumber(config::kMaxCoordinate) + ", " +
+                        config::formatNumber(config::kMaxCoordinate) + "] m, got " + config::formatNumber(head.position[a]));
     if (args.has("head-yaw"))
         head.orientation = glm::angleAxis(glm::radians(args.number("head-yaw", 0.0, -360.0, 360.0)),
                                           glm::dvec3(0, 1, 0));

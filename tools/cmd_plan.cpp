@@ -1,3 +1,4 @@
+#include "scenes/file_write.h"
 #include "scenes/image_io.h"
 #include "scenes/loader.h"
 #include "tools/args.h"
@@ -31,12 +32,7 @@ const char* const kPlanUsage =
 
 namespace {
 
-void writeText(const std::filesystem::path& file, const std::string& text) {
-    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-    std::ofstream out(file, std::ios::binary);
-    out << text;
-    if (!out) throw Error(file.string() + ": cannot write the file");
-}
+void writeText(const std::filesystem::path& file, const std::string& text) { scenes::writeBytesAtomically(file, text); }
 
 }  // namespace
 

@@ -111,7 +111,8 @@ void printSummary(const input::TrackerSource& source, const TrackLoop& loop) {
               << " without head tracking";
     if (source.isLive())
         std::cerr << "; packets " << s.packets << ", accepted " << s.accepted << ", dropped " << s.dropped() << " (malformed "
-                  << s.malformed << ", non-finite " << s.nonFinite << ", foreign " << s.foreign << ")";
+                  << s.malformed << ", non-finite " << s.nonFinite << ", foreign " << s.foreign
+                  << ", outside the tracking volume " << s.outside << ")";
     std::cerr << "\n";
 }
 

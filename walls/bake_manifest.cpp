@@ -1,7 +1,7 @@
 #include "walls/bake_manifest.h"
 
 #include "config/json_reader.h"
-#include "scenes/image_io.h"
+#include "scenes/file_write.h"
 
 #include <nlohmann/json.hpp>
 
@@ -92,12 +92,7 @@ BakeManifest readManifest(const std::filesystem::path& folder) {
 }
 
 void writeFileAtomically(const std::filesystem::path& file, std::string_view bytes) {
-    scenes::writeAtomically(file, [&](const std::filesystem::path& tmp) {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        out.flush();
-        if (!out) throw Error(tmp.string() + ": write failed (disk full or no permission?)");
-    });
+    scenes::writeBytesAtomically(file, bytes);
 }
 
 void writeManifest(const std::filesystem::path& folder, const BakeManifest& manifest) {

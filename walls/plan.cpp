@@ -39,6 +39,16 @@ double nearestDistance(const Texture& t, const display::ScreenQuad& q) {
     return d;
 }
 
+// The planner's work grows with a cell's size in zones; absurd sizes are refused up front.
+void checkExtent(const scenes::Cell& cell) {
+    glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (const glm::dvec2& p : cell.region) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const double extent = std::max(hi.x - lo.x, hi.y - lo.y);
+    if (!(extent <= kMaxCellExtent))
+        throw Error("cell '" + cell.name + "': extent of " + formatNumber(extent) + " m is too large to plan (expected at most " +
+                    formatNumber(kMaxCellExtent) + " m)");
+}
+
 }  // namespace
 
 const char* toString(ZoneKind kind) {
@@ -79,6 +89,7 @@ Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options) {
         for (int side = 0; side < 2; ++side) {
             const int cell = wall.cells[side];
             if (cell < 0 || cell >= int(d.cells.size())) continue;
+            checkExtent(d.cells[cell]);
             SideInput in{cell, w, side, frameOf(wall, side), d.cells[cell].region, plan.walls.back().quad,
                          d.headHeightRange};
             plan.sides.push_back(planSide(plan, in));

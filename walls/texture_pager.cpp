@@ -52,14 +52,19 @@ void TexturePager::worker() {
         _queue.pop_front();
         _queued.erase(id);
         _decoding.insert(id);
-        const auto path = _folder / _textures.at(id).file;
+        const BakedTexture texture = _textures.at(id);
+        const auto path = _folder / texture.file;
         lock.unlock();
         DecodedTexture d{id, {}, 0};
         bool ok = true;
         try {
-            d.levels = _decoder(path);
+            // Only the bytes the manifest vouches for are drawn: checked before decoding and
+            // again after, so a file replaced meanwhile is refused too.
+            ok = textureFileValid(_folder, texture);
+            if (ok) d.levels = _decoder(path);
+            ok = ok && textureFileValid(_folder, texture);
             for (const scenes::Image& level : d.levels) d.bytes += level.rgba.size();
-            ok = !d.levels.empty();
+            ok = ok && !d.levels.empty();
         } catch (const std::exception&) {
             ok = false;
         }

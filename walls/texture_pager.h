@@ -9,7 +9,9 @@
 // new texture would exceed it, the least recently wanted textures that are not wanted now are
 // evicted. A texture that is not resident is a miss for that frame: the runtime keeps drawing
 // what it drew before (the previous texture, or the geometry) — never a black wall.
-// Decoding failures (a missing or torn file) mark the texture failed for good and count it.
+// A file whose size or hash differs from the manifest's (checked before and after decoding:
+// replaced, torn, swapped with another) is never drawn. Such files and decoding failures mark
+// the texture failed for good and count it.
 
 #include "scenes/scene.h"
 #include "walls/bake_manifest.h"

@@ -10,6 +10,7 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kMinPieceArea = 1e-8;  // m²; slivers from clipping are dropped
 constexpr double kNearerSampling[] = {0.75, 0.5};  // share of the core kept, nearest the wall
+constexpr double kMaxBorderTries = 32;             // geometry borders tried after the first
 
 struct Row {
     double a = 0, b = 0;
@@ -103,7 +104,9 @@ std::optional<Row> planRow(const Context& c, const Row& row) {
     extentOf(band, lo, hi);
     if (band.empty()) lo.x = hi.x = 0;
     if (auto greedy = greedyColumns(c, row, lo.x, hi.x)) return greedy;
-    for (int n = 2; n <= int((hi.x - lo.x) / c.minSize); ++n)
+    // Counts grow by a quarter from 8 on, so a wide cell costs O(columns) checks, not O(columns²).
+    const double most = std::floor((hi.x - lo.x) / c.minSize);
+    for (int n = 2; n <= most; n = n < 8 ? n + 1 : n + n / 4)
         if (auto equal = equalColumns(c, row, lo.x, hi.x, n)) return equal;
     return std::nullopt;
 }
@@ -158,8 +161,10 @@ Layout layout(const Context& c) {
         (firstRowFeasible(c, mid) ? hi : lo) = mid;
     }
     // Validity is not strictly monotone in d; move the geometry border outwards until the
-    // rows close (at worst the whole cell becomes geometry).
-    for (double dG = hi; dG < c.dMax; dG += c.minSize)
+    // rows close (at worst the whole cell becomes geometry). At most kMaxBorderTries steps,
+    // so a deep cell does not replan its rows thousands of times.
+    const double step = std::max(c.minSize, (c.dMax - hi) / kMaxBorderTries);
+    for (double dG = hi; dG < c.dMax; dG += step)
         if (auto rows = planRows(c, dG, true)) return {true, dG, *rows};
     return {true, c.dMax, {}};
 }

@@ -25,6 +25,10 @@ struct SideInput {
     glm::dvec2 heightRange{1.2, 2.0};
 };
 
+// The largest cell planZones accepts (metres, along x or z; ten times a 2 km hall): larger
+// ones are refused with an Error naming the cell, since the work grows with the cell's size.
+inline constexpr double kMaxCellExtent = 20000.0;
+
 // Appends the side's textures and zones to `plan` (ids continue the plan's numbering) and
 // returns the side's summary.
 WallSide planSide(Plan& plan, const SideInput& input);

@@ -1,11 +1,13 @@
 #include "app/gl/run_output.h"
 
 #include "config/error.h"
+#include "scenes/file_write.h"
 
 #include <charconv>
 #include <cerrno>
 #include <cstring>
 #include <string>
+#include <unistd.h>
 
 namespace cavewall::gl {
 
@@ -44,6 +46,17 @@ RunOutput::~RunOutput() {
     if (_walls) std::fclose(_walls);
 }
 
+void RunOutput::close() {
+    for (auto [file, name] : {std::pair{&_frames, "frames.csv"}, std::pair{&_walls, "walls.csv"}}) {
+        if (!*file) continue;
+        int error = std::fflush(*file) == 0 && !std::ferror(*file) ? 0 : errno;
+        if (!error && ::fsync(::fileno(*file)) != 0) error = errno;
+        if (std::fclose(*file) != 0 && !error) error = errno;
+        *file = nullptr;
+        if (error) throw Error((_folder / name).string() + ": cannot write (" + scenes::writeErrorText(error) + ")");
+    }
+}
+
 void RunOutput::writeFrame(long frame, double t, glm::dvec3 head, const walls::FrameResult& r, double syncMs) {
     const glm::dvec3& w = r.eyeWorld;
     const std::string cell =
@@ -64,7 +77,8 @@ void RunOutput::writeFrame(long frame, double t, glm::dvec3 head, const walls::F
         std::fprintf(_walls, "%ld,%s,%s,%s,%d,%d,%.4f\n", frame, name.c_str(), textures.c_str(),
                      exact(s.geometryWeight).c_str(), s.fallback ? 1 : 0, s.beyond ? 1 : 0, s.errorDeg);
     }
-    if (std::ferror(_frames) || std::ferror(_walls)) throw Error(_folder.string() + ": writing the CSV files failed");
+    if (std::ferror(_frames) || std::ferror(_walls))
+        throw Error(_folder.string() + ": writing the CSV files failed (" + scenes::writeErrorText(errno) + ")");
 }
 
 std::filesystem::path RunOutput::saveImages(long frame, const std::vector<gl::ScreenImage>& images) {

@@ -38,6 +38,9 @@ public:
     void writeFrame(long frame, double t, glm::dvec3 head, const walls::FrameResult& result, double syncMs = 0.0);
     // Writes the frame's images and fold-out; returns the fold-out's path.
     std::filesystem::path saveImages(long frame, const std::vector<gl::ScreenImage>& images);
+    // Flushes, syncs and closes both CSV files; throws Error with the system's reason (a full
+    // disk says so) when any of it did not reach the disk. Call once after the last frame.
+    void close();
 
 private:
     std::filesystem::path _folder;

@@ -135,6 +135,7 @@ RunSummary runSession(const RunOptions& o) {
         if (o.verbose && (i + 1) % 60 == 0)
             std::cout << "frame " << i + 1 << "/" << o.frames << ": " << r.frameMs << " ms\n" << std::flush;
     }
+    if (output) output->close();
     summary.textures = textureCount;
     summary.rank = rank;
     return summary;

@@ -13,6 +13,9 @@
 namespace cavewall::gl {
 namespace {
 
+using walls::FrameResult;
+using walls::WallState;
+
 scenes::SceneDescription twoCells() {
     scenes::SceneDescription d;
     d.cells.resize(2);

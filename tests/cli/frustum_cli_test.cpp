@@ -46,6 +46,12 @@ TEST(FrustumCli, BadInputGivesAClearErrorAndNonZeroExit) {
         {{"frustum", "--display", "nowhere.json"}, "nowhere.json: cannot open the file"},
         {{"frustum", "--eye", "0,1,0"}, "--display: required flag is missing"},
         {{"frustum", "--display", "cave4", "--bogus", "1"}, "--bogus: unknown flag"},
+        // Issue 18: a stray word was ignored; an unknown last flag was "expected a value".
+        {{"frustum", "--display", "cave4", "stray"}, "frustum: unexpected word 'stray' (expected only --flags)"},
+        {{"frustum", "--display", "cave4", "--bogus"}, "--bogus: unknown flag (expected one of: --display"},
+        {{"frustum", "--display", "cave4", "--eye"}, "--eye: expected a value after the flag, got nothing"},
+        {{"frustum", "--display", "cave4", "--eye", "0,1e308,0", "--json"},
+         "--eye: expected coordinates in [-1000, 1000] m, got 1e+308"},
         {{"frobnicate"}, "unknown command 'frobnicate'"},
     };
     for (const auto& c : cases) {

@@ -9,6 +9,10 @@
 namespace cavewall::gl {
 namespace {
 
+using scenes::ScreenImage;
+using walls::FrameInput;
+using walls::HandCursorPose;
+
 FrameInput sampleInput() {
     FrameInput in;
     in.frame = 41;

@@ -96,7 +96,7 @@ TEST(DisplayConfig, EveryRuleHasItsMessage) {
         {"both outputs", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1], "output": {"window": {}, "headless": {}}})"),
          "screens[0].output: expected exactly one of 'window' or 'headless'"},
         {"empty name", withScreens(R"({"name": "", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
-         "screens[0].name: expected a non-empty name"},
+         "screens[0].name: expected a name of 1 to 64 characters (it names an output file), got 0"},
         {"collinear corners", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [2,0,0], "resolution": [1,1]})"),
          "lab.json: screens[0] 'a': corners are collinear (expected a non-zero area, got 0 m²)"},
         {"zero width", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [0,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
@@ -128,6 +128,67 @@ TEST(DisplayConfig, EveryRuleHasItsMessage) {
         SCOPED_TRACE(c.name);
         EXPECT_THAT([&] { load(c.json); }, ThrowsMessage<Error>(HasSubstr(c.message)));
     }
+}
+
+// A screen with `name` and headless output `file` (issue 18: names that became paths).
+std::string named(const std::string& name, const std::string& file = "") {
+    return R"({"name": ")" + name + R"(", "lowerLeft": [-1.5, 0, -1.5], "lowerRight": [1.5, 0, -1.5],
+        "upperLeft": [-1.5, 3, -1.5], "resolution": [64, 64])" +
+           (file.empty() ? "" : R"(, "output": {"headless": {"file": ")" + file + R"("}})") + "}";
+}
+
+TEST(DisplayConfig, NamesThatBecomeFilesFollowTheRule) {
+    const BadCase cases[] = {
+        {"parent folder", withScreens(named("../../escaped-name")),
+         "lab.json: screens[0].name: expected only letters, digits, '_', '-' and '.' (it names an output file), "
+         "got '../../escaped-name'"},
+        {"headless file up", withScreens(named("front", "../../x")),
+         "screens[0].output.headless.file: expected only letters, digits, '_', '-' and '.' (it names an output file), "
+         "got '../../x'"},
+        {"absolute headless file", withScreens(named("front", "/tmp/x")), "screens[0].output.headless.file: expected only"},
+        {"NUL in name", withScreens(named("a\\u0000b")), "screens[0].name: expected only letters, digits, '_', '-' and "
+                                                         "'.' (it names an output file), got 'a\\x00b'"},
+        {"hidden", withScreens(named(".front")), "screens[0].name: expected a name that does not start with '.' or '-'"},
+        {"dot dot", withScreens(named("front", "..")), "screens[0].output.headless.file: expected a name that does not "
+                                                       "start with '.' or '-'"},
+        {"fold-out", withScreens(named("foldout")),
+         "screens[0].name: the name 'foldout' is reserved for the program's own output files (expected another name)"},
+        {"fold-out any case", withScreens(named("front", "FoldOut")), "the name 'FoldOut' is reserved"},
+        {"too long", withScreens(named(std::string(65, 'a'))),
+         "screens[0].name: expected a name of 1 to 64 characters (it names an output file), got 65"},
+        {"file of another screen", withScreens(named("front") + "," + named("floor", "Front")),
+         "lab.json: screens[1] 'floor': image file 'front' is also another screen's"},
+    };
+    for (const BadCase& c : cases) {
+        SCOPED_TRACE(c.name);
+        EXPECT_THAT([&] { load(c.json); }, ThrowsMessage<Error>(HasSubstr(c.message)));
+    }
+    EXPECT_NO_THROW(load(withScreens(named("upper-left_2.a", "Front.wall"))));
+}
+
+TEST(DisplayConfig, MagnitudesAreWithinAStatedRange) {
+    const BadCase cases[] = {
+        {"corner at 1e308", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1e308,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
+         "lab.json: screens[0].lowerRight: expected coordinates in [-1000, 1000] m, got [1e+308, 0, 0]"},
+        {"head at 1e308", withScreens(kScreen, R"(, "viewer": {"headPosition": [0, 1e308, 0]})"),
+         "lab.json: viewer.headPosition: expected coordinates in [-1000, 1000] m, got [0, 1e+308, 0]"},
+        {"calibration far away", withScreens(kScreen, R"(, "tracking": {"caveFromTracker": [[1,0,0,1e9],[0,1,0,0],[0,0,1,0],[0,0,0,1]]})"),
+         "lab.json: tracking.caveFromTracker: expected a translation within 1000 m, got 1e+09 m"},
+    };
+    for (const BadCase& c : cases) {
+        SCOPED_TRACE(c.name);
+        EXPECT_THAT([&] { load(c.json); }, ThrowsMessage<Error>(HasSubstr(c.message)));
+    }
+    // The same rule holds for configurations built in code.
+    DisplayConfig c = load(withScreens(kScreen));
+    c.screens[0].upperLeft.y = 1e300;
+    EXPECT_THAT([&] { validateDisplayConfig(c, "code"); },
+                ThrowsMessage<Error>(HasSubstr("code: screens[0] 'front': corner [-1.5, 1e+300, -1.5] is out of range")));
+}
+
+TEST(DisplayConfig, JsonNestedThousandsDeepIsRefused) {
+    const std::string deep = withScreens(kScreen, R"(, "name": )" + std::string(5000, '[') + std::string(5000, ']'));
+    EXPECT_THAT([&] { load(deep); }, ThrowsMessage<Error>(HasSubstr("lab.json: JSON is nested too deeply at byte")));
 }
 
 TEST(DisplayConfig, ScreensAreDealtToClusterRanks) {

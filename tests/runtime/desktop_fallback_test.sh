@@ -1,6 +1,7 @@
 #!/bin/sh
 # The desktop fallback end to end, in a real window under Xvfb: `cavewall run --tracker desktop
-# --window --nav fly`, the W key held for about a second through the X server (xdotool), and
+# --window --nav fly`, the W key held through the X server (xdotool) from the window's focus
+# until the run ends (no fixed durations: a loaded machine only shortens the flight), and
 # frames.csv must show the viewer flown forward (-Z in the world, the CAVE's front) and not
 # sideways. Usage: desktop_fallback_test.sh CAVEWALL MODEL OUT_DIR (run under xvfb-run).
 set -eu
@@ -10,12 +11,13 @@ rm -rf "$out"
   --out "$out" > "$out.log" 2>&1 &
 pid=$!
 win=$(xdotool search --sync --name monitor | head -n 1)
-xdotool windowfocus --sync "$win"
-sleep 0.5
+# The window may not accept focus until it is mapped (BadMatch): try until it does or the run ends.
+until xdotool windowfocus --sync "$win" 2>/dev/null; do kill -0 "$pid" 2>/dev/null || break; done
 xdotool keydown w
-sleep 1.2
+status=0
+wait "$pid" || status=$?
 xdotool keyup w
-wait "$pid" || { cat "$out.log"; exit 1; }
+[ "$status" -eq 0 ] || { cat "$out.log"; exit 1; }
 # Last row: world_x unchanged, world_z at least 0.2 m ahead (columns found by their names).
 awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next } { x = $col["world_x"]; z = $col["world_z"] }
   END {

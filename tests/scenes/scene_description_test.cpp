@@ -141,6 +141,16 @@ TEST(SceneDescription, EveryRuleHasItsMessage) {
          "scene.json: models[0].units: expected one of \"m\", \"cm\", \"mm\", \"in\", \"ft\", got \"yd\""},
         {"matrix and position", R"({"models": [{"file": "model.gltf", "matrix": [], "position": [0,0,0]}]})",
          "scene.json: models[0]: give either 'matrix' or 'position'/'rotation'/'scale', not both"},
+        // Issue 18: accepted before, then planned or drawn wrong.
+        {"portal far from its cells", scene("", R"({"name": "x", "kind": "portal", "cells": ["A", "B"],
+           "lowerLeft": [100,0,2], "lowerRight": [100,0,-2], "upperLeft": [100,3,2]})"),
+         // The footprint x = 100, z in [-2, 2] is 100 m from A's edge x = 0.
+         "scene.json: walls[0]: 'x' is 100 m from cell 'A' that it joins (expected its footprint within 0.5 m of "
+         "the cell's region)"},
+        {"model at 1e300", R"({"models": [{"file": "model.gltf", "position": [1e300, 0, 0]}]})",
+         "scene.json: models[0]: point (1e+300, 0, 0) is out of range (expected coordinates within 100000 m of the origin)"},
+        {"cell of 1e308", scene("", "", R"("cells": [{"name": "A", "region": [[0,0],[1e308,0],[1e308,-1e308],[0,-1e308]]}])"),
+         "scene.json: cells[0].region[1]: point (1e+308, 0, 0) is out of range"},
     };
     for (const BadCase& c : cases) {
         SCOPED_TRACE(c.name);

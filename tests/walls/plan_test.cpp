@@ -234,4 +234,17 @@ TEST(Plan, OptionsAreValidated) {
 }
 
 }  // namespace
+// Issue 18: a 1e308 extent made the planner spin forever. Absurd cells are refused up front.
+TEST(Plan, AbsurdCellsAreRefusedNotPlanned) {
+    for (double size : {3e4, 1e308}) {
+        SCOPED_TRACE(size);
+        scenes::SceneDescription d = testing::hall();
+        d.cells[0].region = {{6, 0}, {6, size}, {-6, size}, {-6, 0}};
+        EXPECT_THAT([&] { planZones(d); },
+                    ThrowsMessage<Error>(HasSubstr("cell 'front': extent of ")));
+        EXPECT_THAT([&] { planZones(d); },
+                    ThrowsMessage<Error>(HasSubstr(" m is too large to plan (expected at most 20000 m)")));
+    }
+}
+
 }  // namespace cavewall::walls

@@ -3,15 +3,33 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cstdlib>
+#include <fstream>
 #include <random>
 
 namespace cavewall::walls {
 namespace {
 
-// Ten textures of 256 KiB each (one 256x256 RGBA8 level); tex_7 is broken.
+// Ten small files, tex_0 ... tex_9; the pager checks their sizes and hashes against the
+// manifest before and after decoding them.
+std::filesystem::path folder() {
+    const char* env = std::getenv("CAVEWALL_TEST_OUTPUT");
+    // One folder per test: ctest may run them in parallel, and one of them swaps files.
+    const auto dir = std::filesystem::path(env ? env : CAVEWALL_BINARY_DIR "/test-output") / "pager" /
+                     ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    std::filesystem::create_directories(dir);
+    for (int i = 0; i < 10; ++i) std::ofstream(dir / ("tex_" + std::to_string(i))) << "texture " << i;
+    return dir;
+}
+
+// Ten textures of 256 KiB each once decoded (one 256x256 RGBA8 level); tex_7 is broken.
 BakeManifest manifest() {
+    const auto dir = folder();
     BakeManifest m;
-    for (int i = 0; i < 10; ++i) m.textures.push_back({i, 0, 0, {}, {256, 256}, "tex_" + std::to_string(i), 0, 0});
+    for (int i = 0; i < 10; ++i) {
+        const std::string file = "tex_" + std::to_string(i);
+        m.textures.push_back({i, 0, 0, {}, {256, 256}, file, std::filesystem::file_size(dir / file), hashFile(dir / file)});
+    }
     return m;
 }
 
@@ -35,7 +53,7 @@ void uploadAll(TexturePager& pager) {
 }
 
 TEST(TexturePager, DecodesWhatIsWantedAndCountsMisses) {
-    TexturePager pager("/nowhere", manifest(), 4.0, fakeDecode);
+    TexturePager pager(folder(), manifest(), 4.0, fakeDecode);
     pager.request({1, 2}, {3});
     EXPECT_EQ(pager.stats().misses, 2);  // 1 and 2 were wanted now and not resident
     uploadAll(pager);
@@ -49,7 +67,7 @@ TEST(TexturePager, DecodesWhatIsWantedAndCountsMisses) {
 }
 
 TEST(TexturePager, EvictsTheLeastRecentlyWantedWithinTheBudget) {
-    TexturePager pager("/nowhere", manifest(), 0.8, fakeDecode);  // room for three
+    TexturePager pager(folder(), manifest(), 0.8, fakeDecode);  // room for three
     for (int id : {0, 1, 2}) {
         pager.request({id}, {});
         uploadAll(pager);
@@ -63,7 +81,7 @@ TEST(TexturePager, EvictsTheLeastRecentlyWantedWithinTheBudget) {
 }
 
 TEST(TexturePager, NeverEvictsWhatIsWantedNowUnderATinyBudget) {
-    TexturePager pager("/nowhere", manifest(), 0.3, fakeDecode);  // room for one
+    TexturePager pager(folder(), manifest(), 0.3, fakeDecode);  // room for one
     std::mt19937 rng(1);
     for (int frame = 0; frame < 200; ++frame) {
         const std::vector<int> now{int(rng() % 10), int(rng() % 10)};
@@ -79,7 +97,7 @@ TEST(TexturePager, NeverEvictsWhatIsWantedNowUnderATinyBudget) {
 }
 
 TEST(TexturePager, BrokenFilesFailOnceAndAreNotRetried) {
-    TexturePager pager("/nowhere", manifest(), 4.0, fakeDecode);
+    TexturePager pager(folder(), manifest(), 4.0, fakeDecode);
     decodes = 0;
     pager.request({7}, {});
     pager.waitIdle();
@@ -91,8 +109,25 @@ TEST(TexturePager, BrokenFilesFailOnceAndAreNotRetried) {
     EXPECT_TRUE(pager.takeReady(SIZE_MAX).empty());
 }
 
+// Issue 18: files swapped on disk during a run were decoded and drawn.
+TEST(TexturePager, FilesThatDoNotMatchTheManifestAreNeverDrawn) {
+    const BakeManifest m = manifest();
+    const auto dir = folder();
+    std::filesystem::copy_file(dir / "tex_4", dir / "tex_3", std::filesystem::copy_options::overwrite_existing);
+    std::ofstream(dir / "tex_5", std::ios::app) << "!";  // grown by one byte
+    TexturePager pager(dir, m, 4.0, fakeDecode);
+    pager.request({3, 4, 5}, {});
+    pager.waitIdle();
+    std::vector<int> ready;
+    for (const DecodedTexture& d : pager.takeReady(SIZE_MAX)) ready.push_back(d.id);
+    EXPECT_EQ(ready, std::vector<int>{4});
+    EXPECT_TRUE(pager.hasFailed(3));
+    EXPECT_TRUE(pager.hasFailed(5));
+    EXPECT_EQ(pager.stats().failures, 2);
+}
+
 TEST(TexturePager, UploadsWithinAByteBudgetPerFrame) {
-    TexturePager pager("/nowhere", manifest(), 4.0, fakeDecode);
+    TexturePager pager(folder(), manifest(), 4.0, fakeDecode);
     pager.request({0, 1, 2, 3}, {});
     pager.waitIdle();
     EXPECT_EQ(pager.takeReady(2 * kBytes).size(), 2u);

@@ -1,5 +1,6 @@
 #include "walls/gl/texture_mips.h"
 
+#include "scenes/file_write.h"
 #include "scenes/image_io.h"
 
 #include "config/error.h"
@@ -10,6 +11,7 @@
 #include <array>
 #include <atomic>
 #include <cassert>
+#include <cerrno>
 #include <cmath>
 #include <system_error>
 #include <unistd.h>
@@ -137,6 +139,15 @@ bool writeTiles(OIIO::ImageOutput& out, const scenes::Image& l, int tile) {
     return true;
 }
 
+// The writer's message plus the system's reason, which libtiff leaves in errno ("TIFFWriteTile
+// failed" alone does not say that the disk is full).
+std::string failure(OIIO::ImageOutput& out) {
+    const int error = errno;
+    std::string why = out.geterror();
+    if (error) why += (why.empty() ? "" : ": ") + scenes::writeErrorText(error);
+    return why;
+}
+
 void writeLevels(const std::filesystem::path& tmp, const std::filesystem::path& file,
                  const std::vector<scenes::Image>& levels, const MipFileOptions& options) {
     auto out = OIIO::ImageOutput::create(file.string());
@@ -162,10 +173,12 @@ void writeLevels(const std::filesystem::path& tmp, const std::filesystem::path& 
         spec.attribute("DateTime", "2000:01:01 00:00:00");
         const auto append = nativeMips ? OIIO::ImageOutput::AppendMIPLevel : OIIO::ImageOutput::AppendSubimage;
         const auto mode = i == 0 ? OIIO::ImageOutput::Create : append;
+        errno = 0;
         if (!out->open(tmp.string(), spec, mode) || !writeTiles(*out, l, options.tileSize))
-            throw Error(file.string() + ": cannot write MIP level " + std::to_string(i) + " (" + out->geterror() + ")");
+            throw Error(file.string() + ": cannot write MIP level " + std::to_string(i) + " (" + failure(*out) + ")");
     }
-    if (!out->close()) throw Error(file.string() + ": cannot finish the file (" + out->geterror() + ")");
+    errno = 0;
+    if (!out->close()) throw Error(file.string() + ": cannot finish the file (" + failure(*out) + ")");
 }
 
 }  // namespace
