@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace cavewall::display {
 
@@ -56,6 +57,15 @@ ViewScreen viewScreen(const ScreenQuad& screen, glm::dvec3 eye, glm::ivec2 pixel
 
 double maxPixelsPerRadian(const ViewScreen& screen) {
     return farthestCorner(screen, screen.left, screen.right, screen.bottom, screen.top);
+}
+
+double minPixelsPerDegree(const ViewScreen& screen) {
+    // The screen point nearest the eye (the origin) is the foot point (0, 0, -h) clamped to the
+    // rectangle. At distance r a ray turning across its plane with the normal moves r metres per
+    // radian, within that plane r² / h >= r: the fewest pixels per radian there are r / p.
+    const double x = std::clamp(0.0, screen.left, screen.right), y = std::clamp(0.0, screen.bottom, screen.top);
+    const double r = std::sqrt(x * x + y * y + screen.distance * screen.distance);
+    return r / screen.pixelSize * std::numbers::pi / 180.0;
 }
 
 double maxPixelsPerRadian(const ViewScreen& screen, std::span<const glm::dvec3> viewPoints) {

@@ -38,6 +38,19 @@ ViewScreen viewScreen(const ScreenQuad& screen, glm::dvec3 eye, glm::ivec2 pixel
 // The most pixels per radian over the whole screen (at its corner farthest from the eye).
 double maxPixelsPerRadian(const ViewScreen& screen);
 
+// The fewest pixels per degree of visual angle anywhere on the screen: at the screen point
+// nearest the eye, in the direction across the plane through the ray and the screen normal,
+// d / p * pi / 180 for d the eye's distance to the nearest point of the screen rectangle (h when
+// the eye is in front of the rectangle) and p the pixel size. This is the angular resolution to
+// evaluate image metrics such as FLIP at (scenes/flip.h): a CAVE wall of 3 m and 1024 pixels seen
+// from 1.5 m gives 8.9, with 1920 pixels 16.8. Nearest, not a mean over the screen, because it is
+// conservative (where pixels look largest, contrast sensitivity hides the least, so a metric
+// reports at least the error any other point of the screen would show) and because it is where
+// the screen is seen most directly; a mean would be pulled up by the far, oblique corners (2.6 m
+// away on that wall, with pixels foreshortened). Uses `pixelSize`, the smaller side of
+// non-square pixels.
+double minPixelsPerDegree(const ViewScreen& screen);
+
 // The most pixels per radian over the part of the screen where points inside the box around
 // `viewPoints` (view space) can appear: the screen rectangle clipped to their projections'
 // bounds; the whole screen when a point is not in front of the eye. 0 when the points project

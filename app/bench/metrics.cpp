@@ -1,121 +1,106 @@
 #include "app/bench/metrics.h"
 
-#include "config/error.h"
 #include "display/timing.h"
-
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
+#include "scenes/flip.h"
+#include "scenes/ssim.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
-#include <limits>
-#include <string>
+#include <optional>
 
 namespace cavewall::bench {
 
 namespace {
 
-// Wraps the pixels without copying; OIIO only reads them.
-OIIO::ImageBuf wrap(const scenes::Image& image) {
-    const OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
-    return OIIO::ImageBuf(spec, const_cast<std::uint8_t*>(image.rgba.data()));
+constexpr std::size_t kFlipBins = 10000;
+
+void addPopping(scenes::PoppingSummary& s, double& squares, std::int64_t frame, double popping) {
+    if (s.pairs == 0 || popping > s.peak) s.peak = popping, s.peakFrame = frame;
+    ++s.pairs;
+    squares += popping * popping;
 }
 
-std::vector<double> luminance(const scenes::Image& image) {
-    std::vector<double> y(static_cast<std::size_t>(image.width) * image.height);
-    for (std::size_t i = 0; i < y.size(); ++i) {
-        const std::uint8_t* p = &image.rgba[i * 4];
-        y[i] = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
-    }
-    return y;
-}
-
-// SSIM of one window [x0, x0 + w) x [y0, y0 + h).
-double windowSsim(const std::vector<double>& a, const std::vector<double>& b, int width, int x0, int y0, int w,
-                  int h) {
-    constexpr double kC1 = (0.01 * 255) * (0.01 * 255), kC2 = (0.03 * 255) * (0.03 * 255);
-    double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
-    for (int y = y0; y < y0 + h; ++y)
-        for (int x = x0; x < x0 + w; ++x) {
-            const double va = a[static_cast<std::size_t>(y) * width + x], vb = b[static_cast<std::size_t>(y) * width + x];
-            sa += va, sb += vb, saa += va * va, sbb += vb * vb, sab += va * vb;
-        }
-    const double n = static_cast<double>(w) * h;
-    const double ma = sa / n, mb = sb / n;
-    // Sample (co)variances, as in the reference implementation; clamped against rounding.
-    const double denom = n > 1 ? n - 1 : 1;
-    const double va = std::max(0.0, (saa - n * ma * ma) / denom), vb = std::max(0.0, (sbb - n * mb * mb) / denom);
-    const double cov = (sab - n * ma * mb) / denom;
-    return ((2 * ma * mb + kC1) * (2 * cov + kC2)) / ((ma * ma + mb * mb + kC1) * (va + vb + kC2));
-}
-
-void expectSameSize(const scenes::Image& a, const scenes::Image& b) {
-    if (a.width == b.width && a.height == b.height && a.rgba.size() == b.rgba.size() &&
-        a.rgba.size() == static_cast<std::size_t>(a.width) * a.height * 4 && a.width > 0 && a.height > 0)
-        return;
-    throw Error("bench: comparing '" + a.name + "' with '" + b.name + "': expected two RGBA images of the same size, got " +
-                std::to_string(a.width) + "x" + std::to_string(a.height) + " and " + std::to_string(b.width) + "x" +
-                std::to_string(b.height));
+// Nearest rank: 0 when the rank falls among the exact zeros, else the upper edge of the smallest
+// bin whose cumulative count reaches ceil(q N).
+double histogramPercentile(const std::vector<std::uint64_t>& bins, std::uint64_t zeros, std::uint64_t total, double q) {
+    if (total == 0) return 0.0;
+    const auto rank = static_cast<std::uint64_t>(std::ceil(q * static_cast<double>(total)));
+    if (rank <= zeros) return 0.0;
+    std::uint64_t seen = zeros;
+    for (std::size_t b = 0; b < bins.size(); ++b)
+        if ((seen += bins[b]) >= std::max<std::uint64_t>(rank, 1))
+            return static_cast<double>(b + 1) / static_cast<double>(bins.size());
+    return 1.0;
 }
 
 }  // namespace
 
-double psnrFromMse(double mse) {
-    return mse > 0.0 ? -10.0 * std::log10(mse) : std::numeric_limits<double>::infinity();
+ErrorPool::ErrorPool(std::size_t screens) : _screens(screens) {
+    _all.flipHistogram.assign(kFlipBins, 0);
+    for (Series& s : _screens) s.flipHistogram.assign(kFlipBins, 0);
 }
 
-double ssimLuminance(const scenes::Image& a, const scenes::Image& b) {
-    expectSameSize(a, b);
-    const std::vector<double> la = luminance(a), lb = luminance(b);
-    constexpr int kWindow = 8, kStride = 4;
-    const int w = std::min(kWindow, a.width), h = std::min(kWindow, a.height);
-    double sum = 0.0;
-    long count = 0;
-    for (int y = 0; y + h <= a.height; y += kStride)
-        for (int x = 0; x + w <= a.width; x += kStride) {
-            sum += windowSsim(la, lb, a.width, x, y, w, h);
-            ++count;
+void ErrorPool::addFrame(std::int64_t frame, const std::vector<ComparedImage>& images) {
+    scenes::SquaredError all;
+    std::vector<scenes::SquaredError> perScreen(_screens.size());
+    std::vector<bool> shown(_screens.size(), false);
+    for (const ComparedImage& c : images) {
+        assert(c.screen >= 0 && c.screen < static_cast<int>(_screens.size()) && c.test && c.reference);
+        const scenes::SquaredError e = scenes::squaredError(*c.test, *c.reference);
+        all += e;
+        perScreen[c.screen] += e;
+        shown[c.screen] = true;
+        const double ssim = scenes::ssim(*c.test, *c.reference);
+        scenes::FlipOptions options;
+        options.pixelsPerDegree = c.pixelsPerDegree;
+        const scenes::FlipResult flip = scenes::flip(*c.test, *c.reference, options);
+        for (Series* s : {&_all, &_screens[c.screen]}) {
+            s->ssimSum += ssim;
+            ++s->images;
+            s->pixels += flip.errors.size();
+            s->flipSum += flip.mean * static_cast<double>(flip.errors.size());
+            for (float v : flip.errors) {
+                if (v <= 0.0f) ++s->flipZeros;
+                else ++s->flipHistogram[std::min(kFlipBins - 1, static_cast<std::size_t>(v * kFlipBins))];
+            }
         }
-    return sum / static_cast<double>(count);
-}
-
-ImageError compareForBench(const scenes::Image& actual, const scenes::Image& reference) {
-    expectSameSize(actual, reference);
-    const OIIO::ImageBuf a = wrap(actual), b = wrap(reference);
-    OIIO::ROI rgb = a.roi();
-    rgb.chbegin = 0, rgb.chend = 3;
-    const OIIO::ImageBufAlgo::CompareResults c = OIIO::ImageBufAlgo::compare(a, b, 1.0f, 1.0f, rgb);
-    if (c.error) throw Error("bench: OpenImageIO could not compare '" + actual.name + "' with '" + reference.name + "'");
-    ImageError e;
-    e.rmse = c.rms_error;
-    e.mse = e.rmse * e.rmse;
-    e.psnrDb = psnrFromMse(e.mse);
-    e.meanPsnrDb = std::min(e.psnrDb, kQuantisationPsnrDb);
-    e.ssim = ssimLuminance(actual, reference);
-    return e;
-}
-
-void ErrorPool::add(const ImageError& e) {
-    _mse += e.mse;
-    _ssim += e.ssim;
-    _psnr += std::min(e.psnrDb, kQuantisationPsnrDb);
-    ++_count;
-}
-
-ImageError ErrorPool::result() const {
-    ImageError e;
-    if (_count == 0) {
-        e.psnrDb = psnrFromMse(0.0);
-        e.meanPsnrDb = kQuantisationPsnrDb;
-        return e;
+        if (_worst.frame < 0 || flip.mean > _worst.mean) {
+            _worst = {scenes::flipErrorImage(flip), frame, c.screen, c.image, flip.mean};
+        }
+        const auto [it, added] = _meters.try_emplace({c.screen, c.image});
+        if (const std::optional<double> p = it->second.addFrame(frame, *c.test, *c.reference)) {
+            addPopping(_all.popping, _all.poppingSquares, frame, *p);
+            addPopping(_screens[c.screen].popping, _screens[c.screen].poppingSquares, frame, *p);
+        }
     }
-    e.mse = _mse / static_cast<double>(_count);
-    e.rmse = std::sqrt(e.mse);
-    e.psnrDb = psnrFromMse(e.mse);
-    e.ssim = _ssim / static_cast<double>(_count);
-    e.meanPsnrDb = _psnr / static_cast<double>(_count);
+    _all.psnr.addFrame(frame, all);
+    for (std::size_t s = 0; s < _screens.size(); ++s)
+        if (shown[s]) _screens[s].psnr.addFrame(frame, perScreen[s]);
+}
+
+ImageError ErrorPool::summarise(const Series& s) {
+    const scenes::PooledErrorSummary p = s.psnr.summary();
+    ImageError e;
+    e.frames = p.frames;
+    e.mse = p.mse;
+    e.rmse = std::sqrt(p.mse);
+    e.psnrDb = p.psnrDb;
+    e.worstFramePsnrDb = p.worstFramePsnrDb;
+    e.worstFrame = p.worstFrame;
+    e.p5FramePsnrDb = p.p5FramePsnrDb;
+    e.meanPsnrDb = p.frames > 0 ? p.cappedMeanPsnrDb : kQuantisationPsnrDb;
+    e.ssim = s.images > 0 ? s.ssimSum / static_cast<double>(s.images) : 1.0;
+    e.flipMean = s.pixels > 0 ? s.flipSum / static_cast<double>(s.pixels) : 0.0;
+    e.flipP95 = histogramPercentile(s.flipHistogram, s.flipZeros, s.pixels, 0.95);
+    e.poppingPeak = s.popping.peak;
+    e.poppingRms = s.popping.pairs > 0 ? std::sqrt(s.poppingSquares / static_cast<double>(s.popping.pairs)) : 0.0;
     return e;
 }
+
+ImageError ErrorPool::result() const { return summarise(_all); }
+
+ImageError ErrorPool::screenResult(std::size_t screen) const { return summarise(_screens.at(screen)); }
 
 TimeStats timeStats(const std::vector<double>& samples) {
     TimeStats s;

@@ -1,58 +1,107 @@
 #pragma once
 // Image error and trade-off metrics of `cavewall bench` (app/bench/gl/driver.h).
 //
-// Images are 8-bit RGBA (scenes::Image, rows top to bottom). Error is measured on R, G and B
-// (screens are opaque; alpha carries no picture), as stored (sRGB-encoded), in [0, 1] units:
-//  - RMSE and PSNR come from OpenImageIO's ImageBufAlgo::compare; PSNR = 20 log10(1 / RMSE) dB,
-//    +infinity for identical images.
-//  - SSIM (Wang et al. 2004) on luminance Y = 0.2126 R + 0.7152 G + 0.0722 B (levels 0-255),
-//    over 8x8 windows at a stride of 4 pixels with uniform weights, C1 = (0.01 * 255)^2,
-//    C2 = (0.03 * 255)^2; the mean over windows. 1 for identical images. An image smaller than
-//    8 pixels on a side is one window.
-// Several comparisons pool by averaging the squared error (so RMSE/PSNR of a set is that of
-// all its pixels together) and the SSIM. The mean PSNR of a set is the mean of its images'
-// PSNRs (the target), each capped at kQuantisationPsnrDb so that an image equal to its
-// reference counts as 8-bit quantisation noise rather than infinity; it is never below the
-// pooled PSNR (Jensen), which is the stricter figure.
+// Images are 8-bit RGBA (scenes::Image, rows top to bottom), each compared with the
+// full-geometry image of the same frame, eye and screen. A compared frame is every image shown
+// at that instant (all screens and eyes); ErrorPool pools a mode's compared frames, over all
+// screens and per screen:
+//  - PSNR (scenes/image_error.h): the headline is the pooled PSNR, from the squared error of all
+//    compared R, G, B samples of all frames; beside it the worst frame's PSNR and the 5th
+//    percentile of per-frame PSNR. The mean of per-frame PSNRs capped at 58.9 dB (8-bit
+//    quantisation) is kept only as a labelled column: it flatters, never rank by it.
+//  - SSIM (scenes/ssim.h, 11x11 Gaussian window): the mean over compared images.
+//  - FLIP (scenes/flip.h, LDR-FLIP) of every image at the pixels per degree the caller gives
+//    (the bench: display::minPixelsPerDegree of the image's screen seen from the frame's
+//    cyclopean eye). The mean is that of all compared pixels; p95 is the nearest-rank 95th
+//    percentile of all compared pixels too, read off a histogram of 10000 bins over [0, 1] (0
+//    when it is an exact 0, else the upper edge of the bin holding it: at most 1e-4 above the
+//    exact value). The image with the
+//    highest FLIP mean is kept as an error map (scenes::flipErrorImage).
+//  - Popping (scenes/popping.h): one PoppingMeter per screen and eye, fed the consecutive
+//    *compared* frames (every compareEvery-th frame, not every frame: a cross-fade shorter than
+//    that interval scores as a hard switch). Peak: the largest pair over all screens; RMS over
+//    all pairs of all screens.
 
+#include "scenes/image_error.h"
+#include "scenes/popping.h"
 #include "scenes/scene.h"
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <utility>
 #include <vector>
 
 namespace cavewall::bench {
 
+using scenes::kQuantisationPsnrDb;
+using scenes::psnrFromMse;
+
+// A set of comparisons, summarised.
 struct ImageError {
-    double mse = 0.0;       // mean squared error over R, G, B, [0, 1] units
-    double rmse = 0.0;      // sqrt(mse)
-    double psnrDb = 0.0;    // 20 log10(1 / rmse), +infinity when rmse == 0
-    double ssim = 1.0;      // in [-1, 1], 1 = identical
-    double meanPsnrDb = 0.0;  // pooled sets: mean per-image PSNR (capped); one image: its capped PSNR
+    std::size_t frames = 0;   // compared frames
+    double mse = 0.0;         // pooled over R, G, B of every compared pixel, [0, 1] units
+    double rmse = 0.0;        // sqrt(mse)
+    double psnrDb = std::numeric_limits<double>::infinity();  // pooled: the headline
+    double worstFramePsnrDb = std::numeric_limits<double>::infinity();
+    std::int64_t worstFrame = -1;                              // its frame; -1 without frames
+    double p5FramePsnrDb = std::numeric_limits<double>::infinity();  // 5th percentile per frame
+    double meanPsnrDb = kQuantisationPsnrDb;  // labelled only: capped mean of per-frame PSNRs
+    double ssim = 1.0;        // mean over compared images, 1 = identical
+    double flipMean = 0.0;    // over all compared pixels, [0, 1]
+    double flipP95 = 0.0;     // nearest-rank over all compared pixels (histogram, see above)
+    double poppingPeak = 0.0, poppingRms = 0.0;
 };
 
-// PSNR of uniform 8-bit quantisation noise: 10 log10(12 * 255^2) = 58.9 dB.
-constexpr double kQuantisationPsnrDb = 58.92262;
+// One image of a compared frame. The images are only read during ErrorPool::addFrame.
+struct ComparedImage {
+    int screen = 0;                   // index of the display screen, < the pool's screen count
+    int image = 0;                    // eye (RenderTargets image index)
+    const scenes::Image* test = nullptr;
+    const scenes::Image* reference = nullptr;
+    double pixelsPerDegree = 0.0;     // FLIP's angular resolution for this image, in [1, 1000]
+};
 
-// Compares `actual` against `reference`; throws cavewall::Error naming both when the sizes
-// differ.
-ImageError compareForBench(const scenes::Image& actual, const scenes::Image& reference);
+// The worst image's FLIP map.
+struct FlipMap {
+    scenes::Image image;              // scenes::flipErrorImage; empty when nothing was compared
+    std::int64_t frame = -1;
+    int screen = -1, eye = 0;
+    double mean = 0.0;                // that image's FLIP mean
+};
 
-// SSIM of the luminance of two same-sized images (see the header comment).
-double ssimLuminance(const scenes::Image& a, const scenes::Image& b);
-
-// PSNR in dB of a mean squared error in [0, 1] units (+infinity for 0).
-double psnrFromMse(double mse);
-
-// Pools several comparisons (mean MSE and mean SSIM); an empty set is "identical".
+// Accumulates a mode's compared frames (see the header comment).
 class ErrorPool {
 public:
-    void add(const ImageError& e);
-    ImageError result() const;
-    std::size_t count() const { return _count; }
+    explicit ErrorPool(std::size_t screens);
+
+    // Adds one compared frame. Throws cavewall::Error naming the images when a test image and
+    // its reference differ in size; a screen out of range is a programmer error (assert).
+    void addFrame(std::int64_t frame, const std::vector<ComparedImage>& images);
+
+    ImageError result() const;                      // all screens
+    ImageError screenResult(std::size_t screen) const;
+    const FlipMap& worstFlip() const { return _worst; }
 
 private:
-    double _mse = 0.0, _ssim = 0.0, _psnr = 0.0;
-    std::size_t _count = 0;
+    struct Series {
+        scenes::PooledError psnr;
+        double ssimSum = 0.0, flipSum = 0.0;
+        std::size_t images = 0;
+        std::uint64_t pixels = 0;
+        std::vector<std::uint64_t> flipHistogram;  // errors > 0, kFlipBins bins over (0, 1]
+        std::uint64_t flipZeros = 0;               // errors exactly 0
+        scenes::PoppingSummary popping;
+        double poppingSquares = 0.0;
+    };
+    static ImageError summarise(const Series& s);
+
+    Series _all;
+    std::vector<Series> _screens;
+    std::map<std::pair<int, int>, scenes::PoppingMeter> _meters;  // (screen, eye)
+    FlipMap _worst;
 };
 
 // Frame-time percentiles (milliseconds), nearest-rank (display/timing.h); 0 for none.

@@ -4,12 +4,16 @@
 //
 // One ModeResult per mode of the run. Times are milliseconds per frame (all screens), over the
 // timed frames. Errors are against the full-geometry image of the same frame, eye and screen
-// (app/bench/metrics.h), pooled over the compared frames. Counts are means per frame.
+// (app/bench/metrics.h), pooled over the compared frames: rankings (the targets, the Pareto
+// front and the plot) use the pooled PSNR (or its RMSE), never the capped mean. The "cells"
+// mode (cell culling, no textures) is the control: every mode is also given relative to it.
+// Counts are means per frame.
 
 #include "app/bench/metrics.h"
 #include "app/run_options.h"
 
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,6 +49,11 @@ struct ModeResult {
     TimeStats frameMs, cpuMs, gpuMs;
     double speedup = 1.0;              // full-geometry frame_ms_p50 / this mode's
     ImageError error;                  // all screens
+    FlipMap flipWorst;                 // the FLIP map of the compared image with the highest mean
+    // Against the control (compareWithControl): pooled PSNR minus the control's (dB, > 0: less
+    // error) and FLIP mean over the control's (< 1: less error). NaN without a control.
+    double psnrGainDb = std::numeric_limits<double>::quiet_NaN();
+    double flipRatio = std::numeric_limits<double>::quiet_NaN();
     double maxErrDeg = 0.0;            // worst angular error of a drawn texture (0 without textures)
     double maxErrPx = 0.0;             // the same in screen pixels
     double maxLodErrPx = 0.0;          // worst geometric error of a drawn level of detail, pixels
@@ -77,12 +86,22 @@ std::string csvRow(const ModeResult& m);
 // Markdown: the header lines as a list, then one table row per mode.
 std::string markdownReport(const BenchReport& report);
 
-// The issue's targets read off the table: the fastest walls mode with mean PSNR >= 30 dB, its
-// speed-up (target >= 10), p99/p50 (target <= 1.3) and its median against the near limit's.
+// The control of `report`: its first "cells" mode without levels of detail or budgets; null
+// when there is none.
+const ModeResult* controlMode(const BenchReport& report);
+
+// Fills every mode's psnrGainDb and flipRatio against the control (NaN without one; a control
+// FLIP mean of 0 gives a NaN or infinite ratio).
+void compareWithControl(BenchReport& report);
+
+// The issue's targets read off the table: the fastest walls mode with pooled PSNR >= 30 dB, its
+// speed-up (target >= 10), p99/p50 (target <= 1.3), its FLIP mean against the control's and its
+// median against the near limit's.
 std::vector<std::string> targetLines(const BenchReport& report);
 
 // Writes bench.csv, bench_screens.csv, bench_frames.csv (every timed frame of every mode),
-// bench.md and bench.png into `folder` (created).
+// bench.md, bench.png and flip_worst_N.png (the FLIP map of mode N's worst image, N as the "#"
+// column of bench.md, for every mode that compared images) into `folder` (created).
 // Returns the files written.
 std::vector<std::filesystem::path> writeReport(const std::filesystem::path& folder, const BenchReport& report);
 

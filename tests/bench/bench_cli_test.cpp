@@ -53,11 +53,21 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         for (const std::string& name : csv.columns) {
             if (name == "mode" || name == "alpha_deg" || name == "transition") continue;
             const double v = row.number(name);
-            // The reference's PSNR against itself is +infinity; every other number is finite.
-            if (name == "psnr_db" && mode == "full" && !lod) EXPECT_TRUE(std::isinf(v) && v > 0);
+            // The reference's PSNRs against itself (and so its gain over the control) are
+            // +infinity; every other number is finite. Only a gain over the control may be negative.
+            const bool psnr = name == "psnr_db" || name == "worst_frame_psnr_db" || name == "p5_frame_psnr_db" ||
+                              name == "psnr_gain_db";
+            if (psnr && mode == "full" && !lod) EXPECT_TRUE(std::isinf(v) && v > 0) << name;
             else EXPECT_TRUE(std::isfinite(v)) << name << " = " << row.at(name);
-            EXPECT_GE(v, 0.0) << name;
+            if (name != "psnr_gain_db") EXPECT_GE(v, 0.0) << name;
         }
+        EXPECT_LE(row.number("flip_p95"), 1.0);
+        EXPECT_GE(row.number("psnr_db"), row.number("worst_frame_psnr_db"));  // pooled: never below the worst
+        if (mode == "cells") {  // the control against itself
+            EXPECT_EQ(row.number("psnr_gain_db"), 0.0);
+            EXPECT_EQ(row.number("flip_ratio"), 1.0);
+        }
+        if (mode == "walls" || mode == "cells" || mode == "near") EXPECT_GT(row.number("flip_mean"), 0.0);
         EXPECT_GT(row.number("frame_ms_p50"), 0.0);
         if (mode == "walls") EXPECT_GT(row.number("textures"), 0.0);
     }
@@ -78,8 +88,14 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         EXPECT_GT(row.number("cpu_ms_p50"), 0.0) << row.at("screen");  // every screen was drawn
         EXPECT_TRUE(std::isfinite(row.number("triangles"))) << row.at("screen");
     }
+    for (const test::CsvRow& row : screens)
+        for (const char* name : {"flip_mean", "flip_p95", "popping_peak", "popping_rms", "capped_mean_psnr_db"})
+            EXPECT_TRUE(std::isfinite(row.number(name))) << row.at("screen") << " " << name;
     const std::size_t screenRows = screens.size();
     EXPECT_EQ(screenRows, 15u * 4);
+    // A FLIP map of the worst image of every mode but the reference (mode 1).
+    EXPECT_FALSE(fs::exists(out / "flip_worst_1.png"));
+    for (int mode = 2; mode <= 15; ++mode) EXPECT_TRUE(fs::is_regular_file(out / ("flip_worst_" + std::to_string(mode) + ".png")));
 }
 
 TEST(BenchSceneCli, BadInputIsAClearError) {

@@ -2,10 +2,14 @@
 #include "app/bench/metrics.h"
 
 #include "config/error.h"
+#include "scenes/flip.h"
+#include "scenes/popping.h"
+#include "scenes/ssim.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -32,83 +36,124 @@ scenes::Image signNoise(const scenes::Image& base, int delta, unsigned seed) {
     return out;
 }
 
-TEST(BenchMetrics, IdenticalImagesHaveNoError) {
-    const scenes::Image a = signNoise(flat(40, 30, 128), 50, 3);
-    const ImageError e = compareForBench(a, a);
-    EXPECT_EQ(e.rmse, 0.0);
+// `image` with the R, G, B of its left half raised by `delta` (a hard-edged error patch).
+scenes::Image leftHalfBrighter(const scenes::Image& image, int delta) {
+    scenes::Image out = image;
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width / 2; ++x)
+            for (int c = 0; c < 3; ++c) {
+                std::uint8_t& v = out.rgba[(static_cast<std::size_t>(y) * out.width + x) * 4 + c];
+                v = static_cast<std::uint8_t>(std::min(255, v + delta));
+            }
+    out.name = "brighter";
+    return out;
+}
+
+ComparedImage compared(int screen, const scenes::Image& test, const scenes::Image& reference, double ppd = 9.0,
+                       int eye = 0) {
+    return {screen, eye, &test, &reference, ppd};
+}
+
+TEST(BenchMetrics, IdenticalFramesHaveNoError) {
+    const scenes::Image a = signNoise(flat(40, 30, 128), 50, 3), b = signNoise(flat(40, 30, 90), 20, 4);
+    ErrorPool pool(1);
+    pool.addFrame(0, {compared(0, a, a)});
+    pool.addFrame(3, {compared(0, b, b)});
+    const ImageError e = pool.result();
+    EXPECT_EQ(e.frames, 2u);
     EXPECT_EQ(e.mse, 0.0);
     EXPECT_TRUE(std::isinf(e.psnrDb) && e.psnrDb > 0);
-    EXPECT_NEAR(e.ssim, 1.0, 1e-12);  // every window: equal means and variances, cov = var
+    EXPECT_TRUE(std::isinf(e.worstFramePsnrDb));
+    EXPECT_NEAR(e.meanPsnrDb, kQuantisationPsnrDb, 1e-9);  // capped, labelled only
+    EXPECT_NEAR(e.ssim, 1.0, 1e-12);
+    EXPECT_EQ(e.flipMean, 0.0);
+    EXPECT_EQ(e.flipP95, 0.0);
+    EXPECT_EQ(e.poppingPeak, 0.0);  // the error stays 0 while the picture changes
 }
 
-TEST(BenchMetrics, SignNoiseHasKnownPsnr) {
-    // Every colour value is off by exactly 10 levels, so RMSE = 10/255 whatever the signs, and
-    // PSNR = 20 log10(255 / 10) = 28.1308 dB. Alpha (equal) is not counted.
-    const scenes::Image a = flat(64, 48, 128);
-    for (unsigned seed : {1u, 2u, 3u}) {
-        SCOPED_TRACE(seed);
-        const ImageError e = compareForBench(signNoise(a, 10, seed), a);
-        EXPECT_NEAR(e.rmse, 10.0 / 255.0, 1e-6);
-        EXPECT_NEAR(e.psnrDb, 28.1308, 1e-3);
-        EXPECT_LT(e.ssim, 0.9);  // structure: noise against a flat image
-    }
+TEST(BenchMetrics, PsnrIsPooledOverPixelsWithWorstFrameAndCappedMeanApart) {
+    // Two screens; frame 0 both exact, frame 1 screen 0 off by 10 levels everywhere.
+    const scenes::Image ref = flat(32, 32, 100), off = signNoise(ref, 10, 7);
+    ErrorPool pool(2);
+    pool.addFrame(0, {compared(0, ref, ref), compared(1, ref, ref)});
+    pool.addFrame(1, {compared(0, off, ref), compared(1, ref, ref)});
+    const double imageMse = (10.0 / 255) * (10.0 / 255);
+    const ImageError all = pool.result();
+    EXPECT_NEAR(all.mse, imageMse / 4, 1e-15);  // one image's error over four images' pixels
+    EXPECT_NEAR(all.psnrDb, -10 * std::log10(imageMse / 4), 1e-9);
+    EXPECT_EQ(all.worstFrame, 1);
+    EXPECT_NEAR(all.worstFramePsnrDb, -10 * std::log10(imageMse / 2), 1e-9);  // frame 1: two screens
+    EXPECT_EQ(all.p5FramePsnrDb, all.worstFramePsnrDb);  // nearest rank of two frames: the lowest
+    EXPECT_NEAR(all.meanPsnrDb, 0.5 * (kQuantisationPsnrDb + all.worstFramePsnrDb), 1e-9);
+    EXPECT_GT(all.meanPsnrDb, all.psnrDb);  // the capped mean flatters
+    EXPECT_NEAR(pool.screenResult(0).psnrDb, -10 * std::log10(imageMse / 2), 1e-9);
+    EXPECT_TRUE(std::isinf(pool.screenResult(1).psnrDb));
+    EXPECT_LT(all.ssim, 1.0);
+    EXPECT_NEAR(all.ssim, (3.0 + scenes::ssim(off, ref)) / 4, 1e-12);  // mean over the four images
 }
 
-TEST(BenchMetrics, SsimOfFlatImagesFollowsTheLuminanceTerm) {
-    // Flat images have zero (co)variances, so SSIM reduces to the mean term
-    // (2 * 100 * 110 + C1) / (100^2 + 110^2 + C1) with C1 = (0.01 * 255)^2 = 6.5025.
-    const double expected = (2.0 * 100 * 110 + 6.5025) / (100.0 * 100 + 110.0 * 110 + 6.5025);
-    EXPECT_NEAR(ssimLuminance(flat(32, 32, 100), flat(32, 32, 110)), expected, 1e-9);
-    // Smaller than one 8x8 window: one window of the whole image, same value.
-    EXPECT_NEAR(ssimLuminance(flat(5, 3, 100), flat(5, 3, 110)), expected, 1e-9);
+TEST(BenchMetrics, FlipPoolsAllPixelsAtEachImagesPpdAndKeepsTheWorstMap) {
+    const scenes::Image ref = signNoise(flat(48, 40, 120), 30, 11);
+    const scenes::Image small = leftHalfBrighter(ref, 12), large = leftHalfBrighter(ref, 60);
+    ErrorPool pool(2);
+    pool.addFrame(0, {compared(0, small, ref, 9.0), compared(1, ref, ref, 9.0)});
+    pool.addFrame(2, {compared(0, large, ref, 30.0), compared(1, ref, ref, 9.0)});
+    scenes::FlipOptions at9, at30;
+    at9.pixelsPerDegree = 9.0, at30.pixelsPerDegree = 30.0;
+    const scenes::FlipResult f0 = scenes::flip(small, ref, at9), f2 = scenes::flip(large, ref, at30);
+    ASSERT_NE(scenes::flip(large, ref, at9).mean, f2.mean);  // the ppd matters for this pair
+    const ImageError all = pool.result();
+    EXPECT_NEAR(all.flipMean, (f0.mean + f2.mean) / 4, 1e-9);  // identical images add zeros
+    // p95 over all pixels of all four images, nearest rank, from the histogram: within 1e-4 above.
+    std::vector<float> pixels = f0.errors;
+    pixels.insert(pixels.end(), f2.errors.begin(), f2.errors.end());
+    pixels.resize(pixels.size() * 2, 0.0f);
+    std::sort(pixels.begin(), pixels.end());
+    const double exact = pixels[static_cast<std::size_t>(std::ceil(0.95 * pixels.size())) - 1];
+    EXPECT_GT(exact, 0.0);
+    EXPECT_GE(all.flipP95, exact - 1e-7);
+    EXPECT_LE(all.flipP95, exact + 1e-4 + 1e-7);
+    EXPECT_NEAR(pool.screenResult(0).flipMean, (f0.mean + f2.mean) / 2, 1e-9);
+    EXPECT_EQ(pool.screenResult(1).flipMean, 0.0);
+    const FlipMap& worst = pool.worstFlip();
+    EXPECT_EQ(worst.frame, 2);
+    EXPECT_EQ(worst.screen, 0);
+    EXPECT_NEAR(worst.mean, f2.mean, 1e-12);
+    EXPECT_EQ(worst.image.rgba, scenes::flipErrorImage(f2).rgba);
 }
 
-TEST(BenchMetrics, SsimIsSymmetricAndDropsWithNoise) {
-    const scenes::Image a = signNoise(flat(32, 32, 128), 20, 7);
-    const scenes::Image b = signNoise(flat(32, 32, 128), 20, 8);
-    EXPECT_NEAR(ssimLuminance(a, b), ssimLuminance(b, a), 1e-12);
-    // Independent noise patterns are nearly uncorrelated: far below 1.
-    EXPECT_LT(ssimLuminance(a, b), 0.3);
+TEST(BenchMetrics, PoppingFollowsEachScreenAndEyeAcrossComparedFrames) {
+    const scenes::Image ref = flat(64, 64, 100), left = flat(64, 64, 30), right = flat(64, 64, 220);
+    const scenes::Image jumped = leftHalfBrighter(ref, 40);
+    ErrorPool pool(1);
+    // Two eyes of very different pictures, both exact: no popping unless eyes were mixed up.
+    pool.addFrame(0, {compared(0, left, left, 9, 0), compared(0, right, right, 9, 1)});
+    pool.addFrame(3, {compared(0, left, left, 9, 0), compared(0, right, right, 9, 1)});
+    EXPECT_EQ(pool.result().poppingPeak, 0.0);
+    // Eye 0 switches: its error jumps by 40 levels over half the image while the picture holds.
+    pool.addFrame(6, {compared(0, ref, ref, 9, 0), compared(0, right, right, 9, 1)});
+    pool.addFrame(9, {compared(0, jumped, ref, 9, 0), compared(0, right, right, 9, 1)});
+    const double expected = scenes::framePairPopping(ref, ref, jumped, ref);
+    EXPECT_GT(expected, 30.0);  // about 40 levels / 1 level floor in the switched tiles
+    const ImageError e = pool.result();
+    // Eye 0 from frame 3 to 6 changes picture but not error (0); the jump scores `expected`.
+    EXPECT_NEAR(e.poppingPeak, expected, 1e-9);
+    // Pairs: 3 per eye; only one is non-zero.
+    EXPECT_NEAR(e.poppingRms, std::sqrt(expected * expected / 6), 1e-9);
 }
 
 TEST(BenchMetrics, DifferentSizesAreAnError) {
-    EXPECT_THAT([] { compareForBench(flat(4, 4, 0), flat(4, 5, 0)); },
-                ThrowsMessage<Error>(HasSubstr("expected two RGBA images of the same size, got 4x4 and 4x5")));
+    const scenes::Image a = flat(4, 4, 0), b = flat(4, 5, 0);
+    ErrorPool pool(1);
+    EXPECT_THROW(pool.addFrame(0, {compared(0, a, b)}), Error);
 }
 
-TEST(BenchMetrics, PsnrFromMse) {
-    EXPECT_NEAR(psnrFromMse(1e-4), 40.0, 1e-12);  // -10 log10(1e-4)
-    EXPECT_NEAR(psnrFromMse(1.0), 0.0, 1e-12);    // the largest possible error
-    EXPECT_TRUE(std::isinf(psnrFromMse(0.0)));
-}
-
-TEST(BenchMetrics, PoolAveragesSquaredError) {
-    ErrorPool pool;
-    EXPECT_TRUE(std::isinf(pool.result().psnrDb));  // nothing compared: identical
-    pool.add({0.01, 0.1, 20.0, 0.5});
-    pool.add({0.03, std::sqrt(0.03), 15.2, 0.7});
-    // Pooled as all pixels together: mean MSE 0.02, RMSE sqrt(0.02), PSNR -10 log10(0.02).
-    const ImageError e = pool.result();
-    EXPECT_NEAR(e.mse, 0.02, 1e-15);
-    EXPECT_NEAR(e.rmse, std::sqrt(0.02), 1e-15);
-    EXPECT_NEAR(e.psnrDb, 16.9897, 1e-4);
-    EXPECT_NEAR(e.ssim, 0.6, 1e-15);
-    EXPECT_EQ(pool.count(), 2u);
-}
-
-TEST(BenchMetrics, MeanPsnrAveragesImagesAndCapsIdenticalOnes) {
-    ErrorPool pool;
-    ImageError a;  // 20 dB
-    a.mse = 1e-2, a.psnrDb = 20.0, a.meanPsnrDb = 20.0;
-    ImageError same;  // identical images: infinite PSNR, counted at the quantisation limit
-    same.psnrDb = std::numeric_limits<double>::infinity();
-    pool.add(a);
-    pool.add(same);
-    const ImageError r = pool.result();
-    EXPECT_NEAR(r.meanPsnrDb, 0.5 * (20.0 + kQuantisationPsnrDb), 1e-12);
-    EXPECT_NEAR(r.psnrDb, -10.0 * std::log10(0.5e-2), 1e-12);  // pooled: 23 dB
-    EXPECT_GE(r.meanPsnrDb, r.psnrDb);
-    EXPECT_NEAR(kQuantisationPsnrDb, 10.0 * std::log10(12.0 * 255.0 * 255.0), 1e-4);
+TEST(BenchMetrics, NothingComparedIsIdentical) {
+    const ImageError e = ErrorPool(3).result();
+    EXPECT_EQ(e.frames, 0u);
+    EXPECT_TRUE(std::isinf(e.psnrDb));
+    EXPECT_EQ(e.flipMean, 0.0);
+    EXPECT_EQ(ErrorPool(3).worstFlip().image.width, 0);
 }
 
 TEST(BenchMetrics, NearestRankPercentiles) {

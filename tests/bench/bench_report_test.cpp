@@ -32,6 +32,11 @@ ModeResult sample(Mode mode, double alpha, double p50, double rmse) {
     m.error.mse = rmse * rmse;
     m.error.psnrDb = rmse > 0 ? -20 * std::log10(rmse) : std::numeric_limits<double>::infinity();
     m.error.meanPsnrDb = std::min(m.error.psnrDb, kQuantisationPsnrDb);
+    m.error.worstFramePsnrDb = m.error.psnrDb - 3.0;
+    m.error.p5FramePsnrDb = m.error.psnrDb - 2.0;
+    m.error.flipMean = rmse;  // FLIP grows with the error in these samples
+    m.error.flipP95 = 4 * rmse;
+    m.error.poppingPeak = 100 * rmse, m.error.poppingRms = 50 * rmse;
     m.frames = {{p50, 1000.0, 4.0}, {p50 * 1.2, 1500.0, 4.0}};
     m.loadRatio = 1.5;  // as ModeAccumulator::finish reads it off m.frames
     ScreenResult front;
@@ -73,10 +78,11 @@ TEST(BenchReport, MarkdownHasOneRowPerMode) {
     EXPECT_THAT(md, HasSubstr("| 2 | walls a=10 blend | 3 / 3.3 / 3.6 |"));
 }
 
-TEST(BenchReport, TargetsNameTheFastestWallsModeAbove30Db) {
+TEST(BenchReport, TargetsNameTheFastestWallsModeAbove30DbPooled) {
     BenchReport report;
     ModeResult fastButBad = sample(Mode::Walls, 20, 1.0, 0.1);  // PSNR 20 dB: not eligible
-    // Pooled 20 dB but a mean of 30.5 dB (images of 11 and 50 dB, say): eligible, slower.
+    // Pooled 20 dB but a capped mean of 30.5 dB (images of 11 and 50 dB, say): not eligible
+    // either, the capped mean is never ranked by.
     ModeResult meanOnly = sample(Mode::Walls, 15, 4.0, 0.1);
     meanOnly.error.meanPsnrDb = 30.5;
     meanOnly.speedup = 7.5;
@@ -84,20 +90,58 @@ TEST(BenchReport, TargetsNameTheFastestWallsModeAbove30Db) {
     ModeResult good = sample(Mode::Walls, 10, 2.0, 0.01);       // PSNR 40 dB
     good.speedup = 15.0;                                     // p99/p50 = 1.2 from sample()
     ModeResult near = sample(Mode::Near, 0, 1.6, 0.05);
-    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), near, fastButBad, meanOnly, good};
+    ModeResult control = sample(Mode::Cells, 0, 1.8, 0.04);  // FLIP mean 0.04
+    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), control, near, fastButBad, meanOnly, good};
+    compareWithControl(report);
     const auto lines = targetLines(report);
-    ASSERT_EQ(lines.size(), 2u);
+    ASSERT_EQ(lines.size(), 3u);
     EXPECT_THAT(lines[0], HasSubstr("walls a=10 blend, speed-up 15 (>= 10: met)"));
-    EXPECT_THAT(lines[0], HasSubstr("PSNR 40 dB mean (40 dB pooled)"));
+    EXPECT_THAT(lines[0], HasSubstr("PSNR 40 dB pooled (worst frame 37 dB)"));
     EXPECT_THAT(lines[0], HasSubstr("p99/p50 1.2 (<= 1.3: met)"));
     EXPECT_THAT(lines[0], HasSubstr("triangles drawn varying by 1.5"));  // 1500 / 1000
-    EXPECT_THAT(lines[1], HasSubstr("1.25x the limit's"));  // 2.0 / 1.6
-    EXPECT_THAT(lines[1], HasSubstr("<= 1.2: not met"));
+    EXPECT_THAT(lines[1], HasSubstr("FLIP mean is 0.25x the control's"));  // 0.01 / 0.04
+    EXPECT_THAT(lines[1], HasSubstr("<= 0.5: met"));
+    EXPECT_THAT(lines[2], HasSubstr("1.25x the limit's"));  // 2.0 / 1.6
+    EXPECT_THAT(lines[2], HasSubstr("<= 1.2: not met"));
     report.modes = {sample(Mode::Full, 0, 30.0, 0.0), near, fastButBad, meanOnly};
-    EXPECT_THAT(targetLines(report)[0], HasSubstr("walls a=15 blend, speed-up 7.5 (>= 10: not met)"));
-    EXPECT_THAT(targetLines(report)[0], HasSubstr("PSNR 30.5 dB mean (20 dB pooled)"));
-    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), fastButBad};
-    EXPECT_THAT(targetLines(report), ::testing::ElementsAre(HasSubstr("no walls mode reaches a mean PSNR >= 30 dB")));
+    EXPECT_THAT(targetLines(report),
+                ::testing::ElementsAre(HasSubstr("no walls mode reaches a pooled PSNR >= 30 dB")));
+}
+
+TEST(BenchReport, EveryModeIsComparedWithTheCellsControl) {
+    BenchReport report;
+    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), sample(Mode::Cells, 0, 5.0, 0.04),
+                    sample(Mode::Walls, 10, 3.0, 0.01), sample(Mode::Walls, 20, 2.0, 0.08)};
+    ModeResult cellsWithLod = sample(Mode::Cells, 0, 4.0, 0.5);  // not the control: levels of detail
+    cellsWithLod.lodPixels = 1.0;
+    report.modes.insert(report.modes.begin() + 1, cellsWithLod);
+    ASSERT_EQ(controlMode(report), &report.modes[2]);
+    compareWithControl(report);
+    std::string csv = csvHeader() + "\n";
+    for (const ModeResult& m : report.modes) csv += csvRow(m) + "\n";
+    const test::CsvTable table = parseCsv(csv);
+    // 20 log10(0.04 / 0.01) = 12.04 dB gained; FLIP means 0.01 / 0.04.
+    EXPECT_NEAR(table[3].number("psnr_gain_db"), 20 * std::log10(4.0), 1e-4);
+    EXPECT_NEAR(table[3].number("flip_ratio"), 0.25, 1e-6);
+    EXPECT_NEAR(table[4].number("psnr_gain_db"), -20 * std::log10(2.0), 1e-4);  // worse than the control
+    EXPECT_NEAR(table[4].number("flip_ratio"), 2.0, 1e-6);
+    EXPECT_NEAR(table[2].number("psnr_gain_db"), 0.0, 1e-12);  // the control itself
+    EXPECT_NEAR(table[3].number("flip_mean"), 0.01, 1e-9);
+    EXPECT_NEAR(table[3].number("flip_p95"), 0.04, 1e-9);
+    EXPECT_NEAR(table[3].number("popping_peak"), 1.0, 1e-9);
+    EXPECT_NEAR(table[3].number("popping_rms"), 0.5, 1e-9);
+    EXPECT_NEAR(table[3].number("worst_frame_psnr_db"), 37.0, 1e-4);
+    EXPECT_NEAR(table[3].number("p5_frame_psnr_db"), 38.0, 1e-4);
+    EXPECT_NEAR(table[3].number("mean_psnr_db"), 40.0, 1e-4);
+    const std::string md = markdownReport(report);
+    EXPECT_THAT(md, HasSubstr("| 12 / 0.25 |"));  // walls a=10's row: gain / ratio
+    EXPECT_THAT(md, HasSubstr("capped mean PSNR dB (not ranked)"));
+    // Without a control the columns are NaN.
+    BenchReport none;
+    none.modes = {sample(Mode::Full, 0, 30.0, 0.0), sample(Mode::Walls, 10, 3.0, 0.01)};
+    compareWithControl(none);
+    EXPECT_TRUE(std::isnan(none.modes[1].psnrGainDb));
+    EXPECT_TRUE(std::isnan(parseCsv(csvHeader() + "\n" + csvRow(none.modes[1]) + "\n")[0].number("flip_ratio")));
 }
 
 TEST(BenchReport, WritesFilesAndMarksTheFrontInThePlot) {
@@ -105,8 +149,13 @@ TEST(BenchReport, WritesFilesAndMarksTheFrontInThePlot) {
     BenchReport report;
     // full and the fast walls mode form the front; the slow, worse one is dominated.
     report.modes = {sample(Mode::Full, 0, 30.0, 0.0), sample(Mode::Walls, 10, 3.0, 0.02), sample(Mode::Walls, 20, 5.0, 0.05)};
+    report.modes[2].flipWorst.image = scenes::Image{"flip", 3, 2, std::vector<std::uint8_t>(3 * 2 * 4, 200)};
+    report.modes[2].flipWorst.frame = 12;
     const auto files = writeReport(folder.path(), report);
-    ASSERT_EQ(files.size(), 5u);
+    ASSERT_EQ(files.size(), 6u);  // the five reports and mode 3's FLIP map, the only one set
+    EXPECT_EQ(files[5], folder / "flip_worst_3.png");
+    EXPECT_EQ(scenes::readImage(files[5]).width, 3);
+    EXPECT_FALSE(std::filesystem::exists(folder / "flip_worst_2.png"));
     const test::CsvTable frames = test::readCsv(folder / "bench_frames.csv");
     ASSERT_EQ(frames.size(), 3u * 2);  // 2 frames per mode
     EXPECT_EQ(frames.columns, (std::vector<std::string>{"mode", "frame", "frame_ms", "triangles", "draw_calls"}));

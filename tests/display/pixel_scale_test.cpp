@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -349,6 +350,50 @@ TEST(PixelScale, MaxStretchOfRandomMatricesIsTheLargestStretch) {
         EXPECT_NEAR(got, reference, 1e-9 * reference) << "Jacobi gives " << reference;
         // The random search comes close from below (1000 directions: within a few per cent).
         EXPECT_GT(largest, 0.9 * reference);
+    }
+}
+
+TEST(PixelScale, PixelsPerDegreeOfACaveWallFromItsCentre) {
+    // cave4's front wall (3 m wide) from the middle of the CAVE, 1.5 m in front of it: the
+    // nearest screen point is the foot point, 1.5 m away, where one radian covers 1.5 m, i.e.
+    // 1.5 / (3 / 1024) = 512 pixels: 512 * pi / 180 = 8.936 pixels per degree. At 1920 pixels,
+    // 960 per radian, 16.755 per degree.
+    const glm::dvec3 centre{0.0, 1.5, 0.0};
+    EXPECT_NEAR(minPixelsPerDegree(viewScreen(kFront, centre, {1024, 1024})), 8.936, 1e-3);
+    EXPECT_NEAR(minPixelsPerDegree(viewScreen(kFront, centre, {1920, 1920})), 16.755, 1e-3);
+    // From the frustum's side the same.
+    const OffAxisFrustum f = offAxisFrustum(kFront, centre, kDepth);
+    EXPECT_NEAR(minPixelsPerDegree(viewScreen(f, {1024, 1024})), 8.936, 1e-3);
+}
+
+// The pixels per degree at screen point p (view frame, on the plane z = -h) along screen
+// direction `step`: one pixel step's visual angle, measured from the two rays.
+double measuredPixelsPerDegree(const ViewScreen& s, glm::dvec2 p, glm::dvec2 step) {
+    const glm::dvec3 a(p, -s.distance), b(p + step * s.pixelSize * 1e-3, -s.distance);
+    // atan2 of the cross and dot products: acos loses half the digits of so small an angle.
+    const double radians = std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+    return 1e-3 / (radians * 180.0 / std::numbers::pi);
+}
+
+TEST(PixelScale, MinPixelsPerDegreeIsTheLeastAnywhereOnTheScreen) {
+    // Over a grid of screen points and directions, no pixel looks larger than the bound says,
+    // and the nearest point (here beside the screen for the second eye) comes within 0.1 % of it.
+    const glm::dvec3 eyes[] = {kEye, {2.4, 3.5, 0.3}};  // in front; beside and above the wall
+    for (const glm::dvec3& eye : eyes) {
+        SCOPED_TRACE(eye.x);
+        const ViewScreen s = viewScreen(kFront, eye, {kPixels, kPixels});
+        const double bound = minPixelsPerDegree(s);
+        double least = std::numeric_limits<double>::infinity();
+        constexpr int kSteps = 60;
+        for (int i = 0; i <= kSteps; ++i)
+            for (int j = 0; j <= kSteps; ++j)
+                for (int d = 0; d < 36; ++d) {
+                    const glm::dvec2 p(s.left + (s.right - s.left) * i / kSteps, s.bottom + (s.top - s.bottom) * j / kSteps);
+                    const double angle = d * std::numbers::pi / 36;  // 5° steps over a half turn
+                    least = std::min(least, measuredPixelsPerDegree(s, p, {std::cos(angle), std::sin(angle)}));
+                }
+        EXPECT_GE(least, bound * (1 - 1e-6));
+        EXPECT_LE(least, bound * 1.001);
     }
 }
 

@@ -105,8 +105,10 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                 (o.display.stereo == config::StereoMode::Mono ? "mono" : "stereo"),
             path.description,
             "image error against the full-geometry image of the same frame, eye and screen, every " +
-                std::to_string(o.compareEvery) + " frames; RMSE/PSNR on sRGB RGB in [0,1] (OpenImageIO compare), "
-                "SSIM on luminance (8x8 windows)",
+                std::to_string(o.compareEvery) + " frames; PSNR on sRGB RGB in [0,1] pooled over all compared pixels "
+                "(scenes/image_error.h), SSIM on luma (11x11 Gaussian window, sigma 1.5), LDR-FLIP at each screen's "
+                "fewest pixels per degree from the frame's head position (display::minPixelsPerDegree, clamped to "
+                "[1, 1000]), popping between consecutive compared frames of each screen (32-pixel tiles)",
             "walls: plan minZoneSize " + config::formatNumber(o.plan.minZoneSize) + " m, pixelsPerDegree " +
                 config::formatNumber(o.plan.pixelsPerDegree) + ", blendWidth " + config::formatNumber(o.plan.blendWidth) +
                 " m; bake maxResolution " + std::to_string(o.bakeResolution) +
@@ -238,6 +240,9 @@ BenchReport runBenchmark(const BenchOptions& o) {
             " ms, p99/p50 " + ratio(n.repeated) + ": what the repeated frame shows is the machine's noise, not the "
             "renderer's");
     }
+    compareWithControl(report);
+    report.header.push_back("control: 'cells' (the cells the walls draw as geometry, no textures); 'vs control' is "
+                            "every walls mode's pooled PSNR gain over it and its FLIP mean as a fraction of its");
     report.header.push_back("bench time: " +
                             fixed(display::msSince(start) / 1000.0, 0) +
                             " s in total (all modes, bakes included)");

@@ -1,6 +1,7 @@
 #include "app/bench/gl/modes.h"
 
 #include "display/frame_budget.h"
+#include "display/pixel_scale.h"
 #include "display/timing.h"
 #include "display/gl/render_targets.h"
 #include "display/gl/scene_renderer.h"
@@ -25,7 +26,7 @@ bool compared(const ModeContext& c, long frame) { return frame % c.compareEvery 
 }  // namespace
 
 ModeAccumulator::ModeAccumulator(ModeResult mode, const display::Display& display)
-    : _mode(std::move(mode)), _screens(display.screens().size()), _screenCpu(display.screens().size()),
+    : _mode(std::move(mode)), _display(display), _errors(display.screens().size()), _screenCpu(display.screens().size()),
       _screenTriangles(display.screens().size()), _screenDrawCalls(display.screens().size()) {
     _mode.screens.clear();
     for (const auto& s : display.screens()) {
@@ -56,16 +57,22 @@ void ModeAccumulator::addFrame(const FrameCost& cost) {
     }
 }
 
-void ModeAccumulator::compare(const std::vector<gl::ScreenImage>& images, const std::vector<gl::ScreenImage>& reference) {
+void ModeAccumulator::compare(long frame, const display::HeadPose& head, const std::vector<gl::ScreenImage>& images,
+                              const std::vector<gl::ScreenImage>& reference) {
     if (images.size() != reference.size())
         throw Error("bench: mode " + modeLabel(_mode) + " read " + std::to_string(images.size()) +
                     " images, expected the reference's " + std::to_string(reference.size()));
+    std::vector<ComparedImage> compared;
     for (std::size_t i = 0; i < images.size(); ++i) {
-        const ImageError e = compareForBench(images[i].pixels, reference[i].pixels);
-        _overall.add(e);
         const int screen = images[i].screen;
-        if (screen >= 0 && screen < static_cast<int>(_screens.size())) _screens[screen].add(e);
+        if (screen < 0 || screen >= static_cast<int>(_display.screens().size())) continue;
+        const scenes::Image& pixels = images[i].pixels;
+        const display::ViewScreen view =
+            display::viewScreen(_display.quad(screen), head.position, {pixels.width, pixels.height});
+        const double ppd = std::clamp(display::minPixelsPerDegree(view), 1.0, 1000.0);
+        compared.push_back({screen, images[i].image, &pixels, &reference[i].pixels, ppd});
     }
+    _errors.addFrame(frame, compared);
 }
 
 ModeResult ModeAccumulator::finish(double fullP50) const {
@@ -82,9 +89,10 @@ ModeResult ModeAccumulator::finish(double fullP50) const {
     for (const FrameSample& f : m.frames) triangles.push_back(f.triangles);
     const TimeStats load = timeStats(triangles);
     m.loadRatio = load.p50 > 0.0 ? load.p99 / load.p50 : 0.0;
-    m.error = _overall.result();
-    for (std::size_t s = 0; s < _screens.size(); ++s) {
-        m.screens[s].error = _screens[s].result();
+    m.error = _errors.result();
+    m.flipWorst = _errors.worstFlip();
+    for (std::size_t s = 0; s < m.screens.size(); ++s) {
+        m.screens[s].error = _errors.screenResult(s);
         m.screens[s].cpuMs = timeStats(_screenCpu[s]);
         m.screens[s].triangles = _screenTriangles[s] / n;
         m.screens[s].drawCalls = _screenDrawCalls[s] / n;
@@ -130,7 +138,7 @@ void runWalkthroughMode(const ModeContext& c, std::optional<walls::WallSetup> wa
                       r.pager.misses, r.perScreen, r.lodErrorPx, r.lodTolerancePx, r.lodOverBudget});
         if (!in.readImages) continue;
         if (store) (*store)[in.frame] = std::move(r.images);
-        else if (reference) acc.compare(r.images, reference->at(in.frame));
+        else if (reference) acc.compare(in.frame, in.head, r.images, reference->at(in.frame));
     }
 }
 
@@ -238,7 +246,7 @@ void runCellMode(const ModeContext& c, const walls::WallSetup& setup, bool nearO
         FrameCost cost;
         draw(in, &cost);
         acc.addFrame(cost);
-        if (compared(c, in.frame)) acc.compare(gl::readFrame(c.display, targets), reference.at(in.frame));
+        if (compared(c, in.frame)) acc.compare(in.frame, in.head, gl::readFrame(c.display, targets), reference.at(in.frame));
     }
 }
 

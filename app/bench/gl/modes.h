@@ -34,17 +34,20 @@ public:
     ModeAccumulator(bench::ModeResult mode, const display::Display& display);
     void addFrame(const FrameCost& cost);
     const bench::ModeResult& mode() const { return _mode; }
-    // Compares `images` with the reference of the same frame (same screens and images).
-    void compare(const std::vector<gl::ScreenImage>& images, const std::vector<gl::ScreenImage>& reference);
+    // Compares `images` of frame `frame`, seen from `head` (cave frame), with the reference of
+    // the same frame (same screens and images); FLIP at each screen's minPixelsPerDegree from
+    // the head position (the cyclopean eye, also in stereo).
+    void compare(long frame, const display::HeadPose& head, const std::vector<gl::ScreenImage>& images,
+                 const std::vector<gl::ScreenImage>& reference);
     // `fullP50`: the reference mode's median frame ms (0: this is the reference).
     bench::ModeResult finish(double fullP50) const;
 
 private:
     bench::ModeResult _mode;
+    const display::Display& _display;
     std::vector<double> _frame, _cpu, _gpu;
     double _triangles = 0.0, _drawCalls = 0.0, _lodTolerance = 0.0;
-    bench::ErrorPool _overall;
-    std::vector<bench::ErrorPool> _screens;
+    bench::ErrorPool _errors;
     std::vector<std::vector<double>> _screenCpu;           // per screen, per frame
     std::vector<double> _screenTriangles, _screenDrawCalls;  // per screen, summed over frames
 };
