@@ -14,4 +14,5 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCAVEWALL_SANITIZE=O
   -DCAVEWALL_WITH_GLFW=OFF -DCAVEWALL_WITH_MPI=OFF -DCAVEWALL_BUILD_BENCH=OFF
 cmake --build build-asan
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp" \
   ctest --test-dir build-asan -L unit --output-on-failure --timeout 600
