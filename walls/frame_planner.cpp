@@ -124,7 +124,7 @@ FramePlan FramePlanner::plan(const Residency& resident) {
     if (!_selector) {
         p.cell = scenes::findCell(_description.cells, _eye);  // reported only
         p.geometryCells.assign(_description.cells.size(), true);
-        p.objects = visibleObjects(p.geometryCells);
+        p.objects = objectsOfCells(_scene, p.geometryCells);
         return p;
     }
     p.cell = _selection.cell;
@@ -154,7 +154,7 @@ FramePlan FramePlanner::plan(const Residency& resident) {
     }
     // A morphing wall's cell behind is drawn by the warp pass only.
     for (const WarpWall& w : p.warpWalls) setCell(p.geometryCells, w.cell, false);
-    p.objects = visibleObjects(p.geometryCells);
+    p.objects = objectsOfCells(_scene, p.geometryCells);
     measureError(p);
     return p;
 }
@@ -319,10 +319,10 @@ void FramePlanner::measureError(FramePlan& p) const {
                                           _display.quad(screen), _input.head.position, _display.screens()[screen].resolution)));
 }
 
-std::vector<int> FramePlanner::visibleObjects(const std::vector<bool>& cells) const {
+std::vector<int> objectsOfCells(const scenes::Scene& scene, const std::vector<bool>& cells) {
     std::vector<int> out;
-    for (int i = 0; i < static_cast<int>(_scene.objects.size()); ++i) {
-        const scenes::Object& o = _scene.objects[i];
+    for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
+        const scenes::Object& o = scene.objects[i];
         if (o.role == scenes::Role::Structure || o.cell < 0 || o.cell >= static_cast<int>(cells.size()) || cells[o.cell])
             out.push_back(i);
     }

@@ -94,6 +94,10 @@ struct FramePlan {
     int warpFallbacks = 0;
 };
 
+// The objects drawn as geometry when `cells` (per cell index, true = drawn) are: all structure,
+// objects without a cell, and the objects of those cells. Indices into scene.objects, ascending.
+std::vector<int> objectsOfCells(const scenes::Scene& scene, const std::vector<bool>& cells);
+
 class FramePlanner {
 public:
     // Keeps references to scene, description, display and `walls` (null or without planned
@@ -122,7 +126,6 @@ private:
     bool warpConditioned(const WarpWall& warp) const;
     bool wallInView(int wall) const;
     void measureError(FramePlan& plan) const;
-    std::vector<int> visibleObjects(const std::vector<bool>& cells) const;
     void addDraw(const WallBlend& blend, const WallState& state, FramePlan& plan) const;
 
     const scenes::Scene& _scene;

@@ -7,6 +7,7 @@
 #include "display/gl/scene_renderer.h"
 #include "display/gl/view_loop.h"
 #include "render/lod_choice.h"
+#include "walls/frame_planner.h"
 #include "walls/frame_select.h"
 #include "walls/bake_key.h"
 #include "walls/gl/wall_pass.h"
@@ -167,17 +168,6 @@ NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::Wall
 
 namespace {
 
-// The objects a cell mode draws: structure, objects without a cell and those of `cells`.
-std::vector<int> cellObjects(const scenes::Scene& scene, const std::vector<bool>& cells) {
-    std::vector<int> out;
-    for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
-        const scenes::Object& o = scene.objects[i];
-        if (o.role == scenes::Role::Structure || o.cell < 0 || o.cell >= static_cast<int>(cells.size()) || cells[o.cell])
-            out.push_back(i);
-    }
-    return out;
-}
-
 std::vector<bool> cellMask(const walls::FrameSelection& s, std::size_t cellCount, bool nearOnly) {
     std::vector<bool> cells(cellCount, s.allGeometry());
     if (!nearOnly)
@@ -209,7 +199,7 @@ void runCellMode(const ModeContext& c, const walls::WallSetup& setup, bool nearO
         const glm::dvec3 eye(in.worldFromCave * glm::dvec4(in.head.position, 1.0));
         const walls::FrameSelection selection = selector.select(eye);
         const std::vector<int> objects =
-            cellObjects(c.scene, cellMask(selection, c.description.cells.size(), nearOnly));
+            walls::objectsOfCells(c.scene, cellMask(selection, c.description.cells.size(), nearOnly));
         render::DrawFilter filter;
         filter.objects = &objects;
         std::vector<gl::WallDraw> quads;
