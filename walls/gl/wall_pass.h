@@ -43,8 +43,12 @@ public:
               const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const;
 
 private:
-    GlObject _program, _vertexArray;
-    GLint _corners = -1, _projection = -1, _weights = -1;
+    struct Program {
+        GlObject program;
+        GLint corners = -1, projection = -1, weights = -1;
+    };
+    std::array<Program, kMaxWallTextures> _programs;  // [n - 1] samples n textures
+    GlObject _vertexArray;
 };
 
 }  // namespace cavewall::gl

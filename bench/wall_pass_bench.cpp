@@ -1,0 +1,140 @@
+// The wall pass's fill cost at a CAVE wall's 1024 x 1024 pixels (headless EGL; llvmpipe here):
+// one full-screen wall layer drawn through gl::WallPass over a cleared view, per texture kind
+// and sampler, against the clear alone. Each iteration clears colour and depth, draws `layers`
+// full-screen quads (each one WallDraw on a 4 m x 4 m quad 2 m in front of the eye, filling
+// the 2 m x 2 m screen 1 m away) and waits for the GPU (glFinish), so the time per iteration
+// is the frame's. Counter ms_per_layer: (iteration ms - clear-only ms) / layers, with the
+// clear-only time measured in the same run.
+#include "display/gl/context.h"
+#include "display/gl/gl_object.h"
+#include "walls/gl/wall_pass.h"
+#include "walls/gl/wall_quad.h"
+
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <memory>
+
+namespace {
+
+using namespace cavewall;
+
+constexpr int kSize = 1024;
+
+// MIP levels of a size x size checkerboard with a gradient (premultiplied, opaque).
+std::vector<scenes::Image> mipChain(int size) {
+    std::vector<scenes::Image> levels;
+    for (int s = size; s >= 1; s /= 2) {
+        scenes::Image l{"layer", s, s, std::vector<std::uint8_t>(std::size_t(s) * s * 4, 255)};
+        for (int y = 0; y < s; ++y)
+            for (int x = 0; x < s; ++x) {
+                std::uint8_t* p = &l.rgba[(std::size_t(y) * s + x) * 4];
+                const bool check = ((x * 8 / s) + (y * 8 / s)) % 2 == 0;
+                p[0] = static_cast<std::uint8_t>(x * 255 / s), p[1] = check ? 200 : 60;
+                p[2] = static_cast<std::uint8_t>(y * 255 / s);
+            }
+        levels.push_back(std::move(l));
+    }
+    return levels;
+}
+
+struct Fixture {
+    std::unique_ptr<gl::Context> context = gl::createHeadlessContext();
+    gl::GlObject color = gl::createTexture(GL_TEXTURE_2D), depth = gl::createTexture(GL_TEXTURE_2D),
+                 framebuffer = gl::createFramebuffer();
+    gl::WallPass pass;
+    gl::GlObject bare = gl::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}});
+    gl::GlObject baked = gl::uploadWallTexture(mipChain(512));
+    gl::GlObject nearestMip = gl::createSampler(), linearMip = gl::createSampler(), bilinear = gl::createSampler();
+    display::OffAxisFrustum frustum;
+    display::ScreenQuad wall;
+
+    Fixture() {
+        glTextureStorage2D(color.id(), 1, GL_SRGB8_ALPHA8, kSize, kSize);
+        glTextureStorage2D(depth.id(), 1, GL_DEPTH_COMPONENT32F, kSize, kSize);
+        glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, color.id(), 0);
+        glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
+        for (GLuint s : {nearestMip.id(), linearMip.id(), bilinear.id()}) {
+            glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            glSamplerParameteri(s, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+            glSamplerParameteri(s, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        }
+        glSamplerParameteri(nearestMip.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+        glSamplerParameteri(linearMip.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glSamplerParameteri(bilinear.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        const glm::dvec3 eye(0.0);
+        frustum = display::offAxisFrustum({{-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}}, eye, {0.05, INFINITY});
+        wall = {{-2, -2, -2}, {2, -2, -2}, {-2, 2, -2}};
+        std::cerr << "GL_RENDERER " << context->info().renderer << "\n";
+    }
+
+    void clear() const {
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer.id());
+        glViewport(0, 0, kSize, kSize);
+        glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+        glEnable(GL_FRAMEBUFFER_SRGB);
+        glDepthMask(GL_TRUE);
+        glClearDepth(0.0);
+        glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
+};
+
+double frameMs(Fixture& f, int layers, GLuint texture, GLuint sampler, int texturesPerLayer) {
+    const auto start = std::chrono::steady_clock::now();
+    f.clear();
+    std::vector<gl::WallDraw> draws;
+    for (int i = 0; i < layers; ++i) {
+        gl::WallDraw d{f.wall, {}, {}, texturesPerLayer};
+        for (int t = 0; t < texturesPerLayer; ++t) d.textures[t] = texture, d.weights[t] = 1.0f / texturesPerLayer;
+        draws.push_back(d);
+    }
+    gl::FrameStats stats;
+    f.pass.draw(draws, f.frustum, glm::dmat4(1.0), sampler, stats);
+    glFinish();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void layerCost(benchmark::State& state, Fixture& f, GLuint texture, GLuint sampler, int texturesPerLayer) {
+    const int layers = static_cast<int>(state.range(0));
+    double clearMs = 0.0, ms = 0.0;
+    for (auto _ : state) {
+        clearMs += frameMs(f, 0, texture, sampler, texturesPerLayer);  // interleaved: same load
+        ms += frameMs(f, layers, texture, sampler, texturesPerLayer);
+    }
+    const double n = static_cast<double>(state.iterations());
+    state.counters["clear_ms"] = clearMs / n;
+    state.counters["frame_ms"] = ms / n;
+    state.counters["ms_per_layer"] = (ms - clearMs) / n / layers;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    Fixture f;
+    struct Case {
+        const char* name;
+        GLuint texture, sampler;
+        int textures;
+    };
+    const Case cases[] = {{"bare_1x1", f.bare.id(), 0, 1},
+                          {"baked_512/linear_mipmap_nearest", f.baked.id(), f.nearestMip.id(), 1},
+                          {"baked_512/linear_mipmap_linear", f.baked.id(), f.linearMip.id(), 1},
+                          {"baked_512/linear_no_mipmap", f.baked.id(), f.bilinear.id(), 1},
+                          {"baked_512/two_textures_blending", f.baked.id(), f.nearestMip.id(), 2}};
+    for (const Case& c : cases)
+        benchmark::RegisterBenchmark((std::string("WallLayer/") + c.name).c_str(),
+                                     [&f, c](benchmark::State& s) { layerCost(s, f, c.texture, c.sampler, c.textures); })
+            ->Arg(1)
+            ->Arg(4)
+            ->Iterations(10)
+            ->UseRealTime()
+            ->Unit(benchmark::kMillisecond);
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
