@@ -18,7 +18,7 @@ namespace cavewall::tools {
 
 const char* const kBenchUsage =
     "usage: cavewall bench SCENE [--display D] [--path P] [--out DIR] [--frames N] [--resolution N]\n"
-    "                      [--quick] [--cache DIR] [--compare-every K] [--min-zone M] [--ppd N]\n"
+    "                      [--stereo mono|separate] [--quick] [--cache DIR] [--compare-every K] [--min-zone M] [--ppd N]\n"
     "                      [--bake-resolution N] [--alphas A,B,...] [--warp-alpha A]\n"
     "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
     "       cavewall bench --stability\n"
@@ -27,8 +27,9 @@ const char* const kBenchUsage =
     "         virtual walls). One eye path (the guided navigator along the scene's walkPath,\n"
     "         the head from --path: a tracker spec or a `cavewall run --record` file, default\n"
     "         sim:walk) drives every mode: full geometry (frustum-culled, the reference), cell\n"
-    "         culling without textures, the near-geometry limit (the viewer's cell plus its\n"
-    "         walls as bare quads), virtual walls at each of --alphas (default 10,20,30\n"
+    "         culling without textures (the control), the same with one textured full-screen\n"
+    "         layer per view (what one wall layer costs), the near-geometry limit (the\n"
+    "         viewer's cell plus its walls as bare quads), virtual walls at each of --alphas (default 10,20,30\n"
     "         degrees) with the blend transition, at --warp-alpha (default 20) with the warp\n"
     "         transition and with background paging from a cold start (each alpha planned and\n"
     "         baked into the cache, --cache, default $CAVEWALL_CACHE or ~/.cache/cavewall);\n"
@@ -55,10 +56,13 @@ const char* const kBenchUsage =
     "         Writes DIR/bench.csv, bench_screens.csv, bench_frames.csv (every timed frame),\n"
     "         bench.md (also printed), bench.png (error against frame time, Pareto front in\n"
     "         red) and flip_worst_N.png (FLIP map of mode N's worst image). Defaults:\n"
-    "         display cave4, out bench-out, 120 frames at 256 pixels per screen, images\n"
-    "         compared every 4 frames, min-zone 1 m, 10 pixels per degree, bake textures at\n"
-    "         most 512 texels. --quick: 24 frames at 128 pixels, compared every 3, min-zone\n"
-    "         3 m, bakes at most 128 texels.\n"
+    "         display cave4, out bench-out, 120 frames at the display's own resolution (cave4:\n"
+    "         1024 x 1024 per screen; --resolution N scales every screen so that its longer\n"
+    "         side is N pixels), the display's stereo mode (--stereo separate: one image per\n"
+    "         eye), images compared every 4 frames, min-zone 1 m, 10 pixels per degree, bake\n"
+    "         textures at most 512 texels. --quick: 24 frames at 128 pixels (unless\n"
+    "         --resolution says otherwise), compared every 3, min-zone 3 m, bakes at most\n"
+    "         128 texels. The resolution is printed with every figure.\n"
     "\n"
     "--stability  runs the stiff and extreme numerical cases (projection at eye distances\n"
     "             1e-9 ... 1e6 m, world offsets to 1e7 m, near/far ratios to 1e9 with reversed-Z,\n"
@@ -111,8 +115,17 @@ int runSceneBench(const Args& args) {
     gl::BenchOptions o;
     o.scene = args.positional(0, "SCENE");
     const config::DisplayConfig display = config::loadDisplayConfig(args.getOr("display", "cave4"));
-    o.resolution = static_cast<int>(args.integer("resolution", quick ? 128 : 256, 16, 4096));
-    o.display = gl::withResolution(display, o.resolution);
+    // The display's own resolution unless asked otherwise: smaller images flatter every mode.
+    o.display = display;
+    if (quick || args.has("resolution")) {
+        const int pixels = static_cast<int>(args.integer("resolution", 128, 16, 4096));
+        o.display = gl::withResolution(display, pixels);
+    }
+    if (auto stereo = args.get("stereo")) {
+        if (*stereo == "mono") o.display.stereo = config::StereoMode::Mono;
+        else if (*stereo == "separate") o.display.stereo = config::StereoMode::Separate;
+        else throw Error("bench: --stereo: expected mono or separate, got '" + *stereo + "'");
+    }
     if (auto path = args.get("path"))
         o.tracker = std::filesystem::is_regular_file(*path) ? "replay:" + *path : *path;
     o.frames = args.integer("frames", quick ? 24 : 120, 1, 100000);
@@ -146,7 +159,8 @@ int runSceneBench(const Args& args) {
 
 int runBench(const std::vector<std::string>& words) {
     const Args args(words, {"stability", "quick"});
-    args.expectFlags({"stability", "quick", "display", "path", "out", "frames", "resolution", "cache", "compare-every",
+    args.expectFlags({"stability", "quick", "display", "path", "out", "frames", "resolution", "stereo", "cache",
+                      "compare-every",
                       "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod", "triangle-budget", "frame-budget-ms", "lod-max"});
     if (args.has("stability")) return runStability();
 #ifdef CAVEWALL_HAVE_GL

@@ -39,6 +39,10 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
                                      "--warp-alpha", "30"});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_THAT(r.out, HasSubstr("| 1 | full |"));
+    // --quick keeps its small images, and says so in the header and on every target line.
+    EXPECT_THAT(r.out, HasSubstr("4 screens at 128x128 pixels, mono stereo mode"));
+    EXPECT_THAT(r.out, HasSubstr("targets (128x128 per screen, mono): fastest walls mode"));
+    EXPECT_THAT(r.out, HasSubstr("targets (128x128 per screen, mono): the limit (near geometry and bare wall quads)"));
     const test::CsvTable csv = test::readCsv(out / "bench.csv");
     std::map<std::string, int> rows;
     for (const test::CsvRow& row : csv) {
@@ -63,7 +67,7 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         }
         EXPECT_LE(row.number("flip_p95"), 1.0);
         EXPECT_GE(row.number("psnr_db"), row.number("worst_frame_psnr_db"));  // pooled: never below the worst
-        if (mode == "cells") {  // the control against itself
+        if (mode == "cells" || mode == "cells+layer") {  // the control against itself; the layer has weight 0
             EXPECT_EQ(row.number("psnr_gain_db"), 0.0);
             EXPECT_EQ(row.number("flip_ratio"), 1.0);
         }
@@ -75,7 +79,7 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     // every blend mode with them under a triangle budget, and every blend mode with them held
     // to 60 Hz by the frame-time controller.
     const std::map<std::string, int> expected = {
-        {"full", 1}, {"full lod", 1}, {"cells", 1}, {"near", 1}, {"near lod", 1}, {"walls 20 blend", 1},
+        {"full", 1}, {"full lod", 1}, {"cells", 1}, {"cells+layer", 1}, {"near", 1}, {"near lod", 1}, {"walls 20 blend", 1},
         {"walls 30 blend", 1}, {"walls 20 blend lod", 1}, {"walls 30 blend lod", 1}, {"walls 30 warp", 1},
         {"walls 30 blend paged", 1}, {"walls 20 blend lod budget", 1}, {"walls 30 blend lod budget", 1},
         {"walls 20 blend lod frame", 1}, {"walls 30 blend lod frame", 1}};
@@ -92,10 +96,10 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         for (const char* name : {"flip_mean", "flip_p95", "popping_peak", "popping_rms", "capped_mean_psnr_db"})
             EXPECT_TRUE(std::isfinite(row.number(name))) << row.at("screen") << " " << name;
     const std::size_t screenRows = screens.size();
-    EXPECT_EQ(screenRows, 15u * 4);
+    EXPECT_EQ(screenRows, 16u * 4);
     // A FLIP map of the worst image of every mode but the reference (mode 1).
     EXPECT_FALSE(fs::exists(out / "flip_worst_1.png"));
-    for (int mode = 2; mode <= 15; ++mode) EXPECT_TRUE(fs::is_regular_file(out / ("flip_worst_" + std::to_string(mode) + ".png")));
+    for (int mode = 2; mode <= 16; ++mode) EXPECT_TRUE(fs::is_regular_file(out / ("flip_worst_" + std::to_string(mode) + ".png")));
 }
 
 TEST(BenchSceneCli, BadInputIsAClearError) {
@@ -113,6 +117,7 @@ TEST(BenchSceneCli, BadInputIsAClearError) {
         {{"bench", "x.json", "--alphas", "10,30", "--warp-alpha", "20"},
          "--warp-alpha 20 is not one of the planned alphas (10,30); add it to --alphas"},
         {{"bench", (outputDir() / "missing" / "scene.json").string(), "--quick"}, "missing"},
+        {{"bench", "x.json", "--stereo", "quad-buffer"}, "--stereo: expected mono or separate, got 'quad-buffer'"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.message);

@@ -102,7 +102,7 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                 std::to_string(triangles) + " triangles)",
             "display: " + o.display.name + ", " + std::to_string(o.display.screens.size()) + " screens at " +
                 std::to_string(s0.resolution.x) + "x" + std::to_string(s0.resolution.y) + " pixels, " +
-                (o.display.stereo == config::StereoMode::Mono ? "mono" : "stereo"),
+                std::string(config::toString(o.display.stereo)) + " stereo mode",
             path.description,
             "image error against the full-geometry image of the same frame, eye and screen, every " +
                 std::to_string(o.compareEvery) + " frames; PSNR on sRGB RGB in [0,1] pooled over all compared pixels "
@@ -119,7 +119,9 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
             "view) at alpha " + config::formatNumber(o.transitionAlphaDeg) + "; 'blend paged' at the same alpha pages "
             "as `cavewall run` does (background decoding, default budget and upload limit, cold start)",
             "near: the near-geometry limit, the viewer's cell plus its walls as bare quads (one 1x1 texture); "
-            "cells: the cells the walls mode draws as geometry, without textures",
+            "cells: the cells the walls mode draws as geometry, without textures; cells+layer: the same plus one "
+            "textured full-screen layer per view through the wall pass (512x512 MIP-mapped sRGB, weight 0: the "
+            "control's image at one wall layer's cost)",
             o.lodPixels > 0.0 ? "lod: levels of detail built when the mode starts (meshoptimizer, sampled Hausdorff "
                                 "error), each object drawn at the coarsest level within " +
                                     config::formatNumber(o.lodPixels) + " px on every screen it appears on; budgets "
@@ -154,6 +156,9 @@ BenchReport runBenchmark(const BenchOptions& o) {
     const auto context = gl::createHeadlessContext();
     BenchReport report;
     report.header = headerLines(o, scene, *context, path);
+    const auto& s0 = o.display.screens.front();
+    report.resolution = std::to_string(s0.resolution.x) + "x" + std::to_string(s0.resolution.y) + " per screen, " +
+                        std::string(config::toString(o.display.stereo));
     const ModeContext c{scene, description, display, *context, path, o.compareEvery, o.lodMaxPixels};
 
     say(o, "bench: full geometry");
@@ -180,17 +185,25 @@ BenchReport runBenchmark(const BenchOptions& o) {
     const auto listed = std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg);
     const std::size_t transitionIndex = listed - o.alphasDeg.begin();  // listed: checked on entry
     const walls::WallSetup& cellPlan = baked[transitionIndex].setup;
-    auto runCells = [&](bool nearOnly, double lodPixels) {
-        say(o, std::string(nearOnly ? "bench: near-geometry limit (the viewer's cell and bare wall quads)"
-                                    : "bench: cell culling without textures") +
-                   (lodPixels > 0.0 ? ", levels of detail" : ""));
-        ModeAccumulator acc(namedMode(nearOnly ? Mode::Near : Mode::Cells, lodPixels), display);
-        runCellMode(c, cellPlan, nearOnly, acc, reference);
-        report.modes.push_back(acc.finish(fullP50));
+    auto runCells = [&](std::vector<CellDraw> kinds, double lodPixels) {
+        std::vector<ModeAccumulator> accs;
+        accs.reserve(kinds.size());
+        std::vector<CellRun> runs;
+        std::string names;
+        for (CellDraw kind : kinds) {
+            const Mode mode = kind == CellDraw::Near ? Mode::Near : kind == CellDraw::Cells ? Mode::Cells : Mode::CellsLayer;
+            accs.emplace_back(namedMode(mode, lodPixels), display);
+            runs.push_back({kind, &accs.back()});
+            names += (names.empty() ? "" : ", ") + modeLabel(accs.back().mode());
+        }
+        say(o, "bench: " + names + (kinds.size() > 1 ? ", frame by frame in turn" : ""));
+        runCellModes(c, cellPlan, runs, reference);
+        for (const ModeAccumulator& acc : accs) report.modes.push_back(acc.finish(fullP50));
     };
-    runCells(false, 0.0);
-    runCells(true, 0.0);
-    if (lod) runCells(true, o.lodPixels);
+    // The control, the control plus one textured layer and the limit in the same seconds: the
+    // wall pass's target compares them.
+    runCells({CellDraw::Cells, CellDraw::CellsLayer, CellDraw::Near}, 0.0);
+    if (lod) runCells({CellDraw::Near}, o.lodPixels);
     auto runWalls = [&](std::size_t i, app::Transition transition, bool paged, double lodPixels = 0.0,
                         std::size_t budget = 0, double frameBudgetMs = 0.0) {
         ModeResult mode = wallsMode(o.alphasDeg[i], transition, paged, lodPixels, budget, frameBudgetMs);

@@ -7,6 +7,10 @@
 //  - cells: the geometry the walls mode at `transitionAlphaDeg` draws (structure, objects
 //           without a cell, the selection's geometry cells), without wall textures: what cell
 //           culling alone leaves out and what that costs in error.
+//  - cells + layer: the cells mode with one textured full-screen layer per view drawn through
+//           the wall pass (gl::WallPass, the walls' sampler, a 512 x 512 MIP-mapped sRGB
+//           texture, weight 0 so that the image is the control's): what one wall layer costs,
+//           the yardstick of the wall pass (issue 14: the limit no slower than this).
 //  - near:  the near-geometry limit: structure, objects without a cell and the viewer's cell
 //           only; the bare wall quads are left out (a handful of triangles), so this is a
 //           lower bound of any walls mode's time.
@@ -44,8 +48,7 @@ namespace cavewall::gl {
 
 struct BenchOptions {
     std::filesystem::path scene;                  // scene.json, its folder, or glTF/GLB
-    config::DisplayConfig display;                // validated; resolutions are replaced
-    int resolution = 256;                         // pixels on the longer side of every screen
+    config::DisplayConfig display;                // validated; drawn at its screens' resolutions
     std::string tracker = "sim:walk";             // head source (input::makeTracker spec)
     long frames = 120;                            // frames of the eye path
     int compareEvery = 4;                         // frames between image comparisons, >= 1

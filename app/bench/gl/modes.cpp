@@ -14,6 +14,7 @@
 #include "walls/gl/wall_quad.h"
 
 #include <algorithm>
+#include <cassert>
 #include <chrono>
 
 namespace cavewall::gl {
@@ -179,37 +180,72 @@ std::vector<bool> cellMask(const walls::FrameSelection& s, std::size_t cellCount
 
 }  // namespace
 
-void runCellMode(const ModeContext& c, const walls::WallSetup& setup, bool nearOnly, ModeAccumulator& acc,
-                 const ReferenceImages& reference) {
+namespace {
+
+// The layer's texture: 512 x 512 (the bake's largest by default), a gradient under a
+// checkerboard so that every MIP level differs, with its MIP chain.
+gl::GlObject layerTexture() {
+    constexpr int kSize = 512;
+    std::vector<scenes::Image> levels;
+    for (int s = kSize; s >= 1; s /= 2) {
+        scenes::Image l{"layer", s, s, std::vector<std::uint8_t>(std::size_t(s) * s * 4, 255)};
+        for (int y = 0; y < s; ++y)
+            for (int x = 0; x < s; ++x) {
+                std::uint8_t* p = &l.rgba[(std::size_t(y) * s + x) * 4];
+                p[0] = static_cast<std::uint8_t>(x * 255 / s);
+                p[1] = ((x * 8 / s) + (y * 8 / s)) % 2 == 0 ? 200 : 60;
+                p[2] = static_cast<std::uint8_t>(y * 255 / s);
+            }
+        levels.push_back(std::move(l));
+    }
+    return gl::uploadWallTexture(levels);
+}
+
+// The walls' sampler (walls/gl/texture_store.cpp): bilinear within the nearest MIP level.
+gl::GlObject wallSampler() {
+    gl::GlObject s = gl::createSampler();
+    glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+    glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return s;
+}
+
+}  // namespace
+
+void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std::vector<CellRun>& runs,
+                  const ReferenceImages& reference) {
+    assert(!runs.empty());
     const walls::FrameSelector selector(setup.plan, setup.table, c.description);
     const gl::RenderTargets targets(c.display, c.context);
     gl::RenderSettings settings;
-    settings.lodPixels = acc.mode().lodPixels;
+    settings.lodPixels = runs.front().acc->mode().lodPixels;
+    for ([[maybe_unused]] const CellRun& r : runs) assert(r.acc->mode().lodPixels == settings.lodPixels);
     gl::SceneRenderer renderer(c.scene, settings);
-    // The limit also draws every wall of the viewer's cell as a bare quad: one 1x1 texture
-    // through the walls' own pass, so it pays the quads' fill but no texture blending or paging.
-    std::optional<gl::WallPass> quadPass;
-    gl::GlObject bare;
-    if (nearOnly) {
-        quadPass.emplace();
-        bare = gl::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}});
-    }
-    auto draw = [&](const walls::FrameInput& in, FrameCost* cost) {
+    // The limit draws every wall of the viewer's cell as a bare quad: one 1x1 texture through
+    // the walls' own pass, so it pays the quads' fill but no texture blending or paging.
+    const gl::WallPass quadPass;
+    const gl::GlObject bare = gl::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}});
+    const gl::GlObject layer = layerTexture(), sampler = wallSampler();
+    auto draw = [&](const walls::FrameInput& in, CellDraw kind, FrameCost* cost) {
         const auto start = std::chrono::steady_clock::now();
         const glm::dvec3 eye(in.worldFromCave * glm::dvec4(in.head.position, 1.0));
         const walls::FrameSelection selection = selector.select(eye);
         const std::vector<int> objects =
-            walls::objectsOfCells(c.scene, cellMask(selection, c.description.cells.size(), nearOnly));
+            walls::objectsOfCells(c.scene, cellMask(selection, c.description.cells.size(), kind == CellDraw::Near));
         render::DrawFilter filter;
         filter.objects = &objects;
         std::vector<gl::WallDraw> quads;
-        if (quadPass)
+        if (kind == CellDraw::Near)
             for (const walls::WallBlend& b : selection.walls)
                 quads.push_back({walls::quadSeenFrom(setup.plan.walls[b.wall].quad, b.side), {bare.id()}, {1.0f}, 1});
         const glm::dmat4 caveFromWorld = glm::inverse(in.worldFromCave);
         gl::FrameStats quadStats;
         auto afterView = [&](const display::ScreenView& view) {
-            quadPass->draw(quads, view.frustum, caveFromWorld, 0, quadStats);
+            if (kind == CellDraw::Near) quadPass.draw(quads, view.frustum, caveFromWorld, 0, quadStats);
+            else  // the view's screen, in the cave frame
+                quadPass.draw({{c.display.quad(view.screen), {layer.id()}, {0.0f}, 1}}, view.frustum, glm::dmat4(1.0),
+                              sampler.id(), quadStats);
         };
         const std::vector<display::ScreenView> views = c.display.views(in.head);
         render::FrameLod lod;
@@ -218,7 +254,7 @@ void runCellMode(const ModeContext& c, const walls::WallSetup& setup, bool nearO
             filter.lodLevels = &lod.levels;
         }
         const gl::FrameStats stats = renderer.render(views, targets, in.worldFromCave, filter,
-                                                     quadPass ? std::function(afterView) : nullptr);
+                                                     kind != CellDraw::Cells ? std::function(afterView) : nullptr);
         const double gpu = renderer.waitGpuMs();
         if (!cost) return;
         *cost = FrameCost{};
@@ -231,13 +267,17 @@ void runCellMode(const ModeContext& c, const walls::WallSetup& setup, bool nearO
         cost->lodTolerancePx = lod.tolerancePx;
         cost->perScreen = gl::statsPerScreen(views, stats, c.display.screens().size());
     };
-    for (long i = 0; i < std::min<long>(3, c.path.frames.size()); ++i) draw(c.path.frames[i], nullptr);
-    for (const walls::FrameInput& in : c.path.frames) {
-        FrameCost cost;
-        draw(in, &cost);
-        acc.addFrame(cost);
-        if (compared(c, in.frame)) acc.compare(in.frame, in.head, gl::readFrame(c.display, targets), reference.at(in.frame));
-    }
+    for (long i = 0; i < std::min<long>(3, c.path.frames.size()); ++i)
+        for (const CellRun& r : runs) draw(c.path.frames[i], r.draw, nullptr);
+    // Frame by frame, every run in turn: their times are taken in the same seconds.
+    for (const walls::FrameInput& in : c.path.frames)
+        for (const CellRun& r : runs) {
+            FrameCost cost;
+            draw(in, r.draw, &cost);
+            r.acc->addFrame(cost);
+            if (compared(c, in.frame))
+                r.acc->compare(in.frame, in.head, gl::readFrame(c.display, targets), reference.at(in.frame));
+        }
 }
 
 }  // namespace cavewall::gl

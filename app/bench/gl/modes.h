@@ -84,9 +84,27 @@ struct NoiseComparison {
 NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::WallSetup> walls,
                                  const bench::ModeResult& mode, long frameIndex);
 
-// Runs the cells or near mode (bench_driver.h) with the selection of `setup`'s plan, at the
-// mode's level-of-detail tolerance (bench::ModeResult::lodPixels; no budget).
-void runCellMode(const ModeContext& c, const walls::WallSetup& setup, bool nearOnly, ModeAccumulator& acc,
-                 const ReferenceImages& reference);
+// What a cell mode draws besides the geometry of its cells (app/bench/gl/driver.h).
+enum class CellDraw {
+    Cells,       // the selection's geometry cells, nothing else (the control)
+    CellsLayer,  // the same plus one textured full-screen layer per view through the wall pass:
+                 // each view's own screen quad, a 512 x 512 MIP-mapped sRGB texture sampled as
+                 // the walls' textures are, weight 0 (the image stays the control's; the cost
+                 // is the layer's: the shader, the samples and the blend run for every pixel
+                 // the layer covers, all but geometry nearer than the screen)
+    Near,        // the viewer's cell only, plus its walls as bare quads (one 1x1 texture)
+};
+
+// One cell mode of a runCellModes call and where its frames go.
+struct CellRun {
+    CellDraw draw = CellDraw::Cells;
+    ModeAccumulator* acc = nullptr;  // not null; its mode's lodPixels, the same for every run
+};
+
+// Runs cell modes with the selection of `setup`'s plan, at the modes' level-of-detail tolerance
+// (bench::ModeResult::lodPixels, the same for all; no budget), interleaved: every path frame is
+// drawn by each run in turn, so that their times share the machine's load of the same seconds.
+void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std::vector<CellRun>& runs,
+                  const ReferenceImages& reference);
 
 }  // namespace cavewall::gl
