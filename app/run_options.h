@@ -52,6 +52,8 @@ struct RunOptions {
     walls::PlanOptions plan;                    // alpha etc. for planning and baking
     std::optional<std::filesystem::path> cache; // bake cache folder (default: the baker's)
     long saveEvery = 0;                         // save frames: 0 none, K every K-th frame
+    bool keepSavedImages = false;               // also return the saved frames' images
+                                                // (RunSummary::savedFrames; the demo compares them)
     std::optional<std::filesystem::path> record;// write the input stream for replay
     bool synchronousPaging = false;             // see gl::WalkthroughOptions
     double textureBudgetMB = 256.0;
@@ -79,6 +81,14 @@ struct RunSummary {
     double worstLodErrorPx = 0.0;               // largest level-of-detail error drawn, pixels
     long misses = 0, pageIns = 0;
     std::vector<std::filesystem::path> foldouts;// saved fold-outs, in frame order
+    // With RunOptions::keepSavedImages: every saved frame's images and the head (cave frame,
+    // metres) it was drawn from, in frame order.
+    struct SavedFrame {
+        long frame = 0;
+        glm::dvec3 head{0.0};
+        std::vector<scenes::ScreenImage> images;
+    };
+    std::vector<SavedFrame> savedFrames;
     int rank = 0;                               // cluster mode: this process's rank (only rank 0
                                                 // fills the fields above)
 };

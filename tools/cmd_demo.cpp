@@ -3,12 +3,14 @@
 #include "scenes/generate.h"
 #include "display/timing.h"
 #include "tools/args.h"
+#include "tools/cmd_demo_compare.h"
 #include "tools/commands.h"
 
 #include <cstdlib>
 #include <optional>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 namespace cavewall::tools {
 
@@ -21,12 +23,16 @@ const char* const kDemoUsage =
     "N3) with the simulated head tracker (sim:walk) for N frames (default 240), three times: with\n"
     "the walls and levels of detail within --lod pixels (default 1; 0: full detail), with the\n"
     "full frustum-culled geometry at the same levels of detail, and with the full geometry at\n"
-    "full detail (the reference). Each screen renders PX x PX pixels (default 256, so the demo\n"
-    "finishes in a few minutes on llvmpipe). Prints the median frame times, the speed-ups and the\n"
-    "worst errors, and writes DIR (default demo-out): walls/, lod/ and geometry/ (CSV files,\n"
-    "frames every 60 frames) and report.md with the fold-outs.\n"
-    "Headless without $DISPLAY, windowed otherwise. Walls are planned with alpha 30 degrees,\n"
-    "zones of at least 2 m and 2 texels per degree, to keep the bake short (about 660\n"
+    "full detail (the reference). Each screen renders at cave4's own resolution, 1024 x 1024\n"
+    "pixels (--resolution PX: PX x PX instead, printed with every figure). Every 30th frame is\n"
+    "saved and compared with the reference: pooled PSNR (all compared pixels together), the\n"
+    "worst frame's PSNR and LDR-FLIP (mean and p95, each screen at its own pixels per degree\n"
+    "from the head). Prints the median frame times, the speed-ups beside those errors and the\n"
+    "worst wall and level-of-detail errors, and writes DIR (default demo-out): walls/, lod/\n"
+    "and geometry/ (CSV files, the saved frames), worst_frame.png (the frame with the worst\n"
+    "FLIP image: walls | full geometry | FLIP map, each as a fold-out) and report.md.\n"
+    "Headless without $DISPLAY, windowed otherwise. Walls are planned with alpha 10 degrees\n"
+    "(the seeds' recommendation), zones of at least 2 m and 2 texels per degree (about 620\n"
     "textures: a few minutes on llvmpipe the first time).\n";
 
 namespace {
@@ -58,34 +64,65 @@ void row(std::ostream& r, const char* what, const A& walls, const std::optional<
     r << " | " << geometry << " |\n";
 }
 
-void writeReport(const std::filesystem::path& out, const app::RunOptions& o, const app::RunSummary& walls,
-                 const std::optional<app::RunSummary>& lod, const app::RunSummary& geometry) {
-    const double mw = display::median(walls.frameMs), mg = display::median(geometry.frameMs);
-    const double ml = lod ? display::median(lod->frameMs) : 0.0;
-    auto ifLod = [&](auto value) { return lod ? std::optional(value) : std::nullopt; };
+// "1024 x 1024 pixels per screen" (the first screen's; cave4's are all alike).
+std::string resolutionText(const config::DisplayConfig& d) {
+    return std::to_string(d.screens[0].resolution.x) + " x " + std::to_string(d.screens[0].resolution.y) +
+           " pixels per screen";
+}
+
+std::string errorText(const bench::ImageError& e) {
+    std::ostringstream s;
+    s << e.psnrDb << " dB pooled (worst frame " << e.worstFramePsnrDb << " dB), FLIP mean " << e.flipMean
+      << " (p95 " << e.flipP95 << ")";
+    return s.str();
+}
+
+struct DemoRuns {
+    app::RunSummary walls;
+    std::optional<app::RunSummary> lod;
+    app::RunSummary geometry;
+    DemoComparison wallsError;
+    std::optional<DemoComparison> lodError;
+};
+
+void writeReport(const std::filesystem::path& out, const app::RunOptions& o, const DemoRuns& d) {
+    const double mw = display::median(d.walls.frameMs), mg = display::median(d.geometry.frameMs);
+    const double ml = d.lod ? display::median(d.lod->frameMs) : 0.0;
+    auto ifLod = [&](auto value) { return d.lod ? std::optional(value) : std::nullopt; };
+    auto lodError = [&](auto field) { return d.lodError ? std::optional((*d.lodError).error.*field) : std::nullopt; };
     std::ofstream r(out / "report.md");
-    r << "# cavewall demo\n\nThe generated plant on cave4 (" << o.display.screens[0].resolution.x << " x "
-      << o.display.screens[0].resolution.y << " pixels per screen), guided along its walk path at " << o.guidePace
-      << " m/s with `" << o.tracker << "`, " << o.frames << " frames at 1/60 s, rendered by " << walls.renderer
-      << ".\n\n";
-    row(r, "", lod ? "walls + levels of detail" : "walls", ifLod("full geometry + levels of detail"), "full geometry");
+    r << "# cavewall demo\n\nThe generated plant on cave4 (" << resolutionText(o.display)
+      << "), guided along its walk path at " << o.guidePace << " m/s with `" << o.tracker << "`, " << o.frames
+      << " frames at 1/60 s, rendered by " << d.walls.renderer << ". Image error: every " << o.saveEvery
+      << "th frame against the full geometry's (" << d.wallsError.error.frames << " frames, every screen).\n\n";
+    row(r, "", d.lod ? "walls + levels of detail" : "walls", ifLod("full geometry + levels of detail"), "full geometry");
     row(r, "---", "---", ifLod("---"), "---");
     row(r, "median frame time (ms)", mw, ifLod(ml), mg);
     row(r, "speed-up", mw > 0 ? mg / mw : 0.0, ifLod(ml > 0 ? mg / ml : 0.0), 1);
-    row(r, "worst wall texture error (deg)", walls.worstErrorDeg, ifLod("-"), "-");
-    row(r, "worst wall texture error (px)", walls.worstErrorPx, ifLod("-"), "-");
-    row(r, "worst level-of-detail error (px)", walls.worstLodErrorPx, ifLod(lod ? lod->worstLodErrorPx : 0.0), 0);
-    row(r, "texture page-ins / misses", std::to_string(walls.pageIns) + " / " + std::to_string(walls.misses),
+    row(r, "pooled PSNR (dB)", d.wallsError.error.psnrDb, lodError(&bench::ImageError::psnrDb), "inf");
+    row(r, "worst frame PSNR (dB)", d.wallsError.error.worstFramePsnrDb,
+        lodError(&bench::ImageError::worstFramePsnrDb), "inf");
+    row(r, "FLIP mean", d.wallsError.error.flipMean, lodError(&bench::ImageError::flipMean), 0);
+    row(r, "FLIP p95", d.wallsError.error.flipP95, lodError(&bench::ImageError::flipP95), 0);
+    row(r, "worst wall texture error (deg)", d.walls.worstErrorDeg, ifLod("-"), "-");
+    row(r, "worst wall texture error (px)", d.walls.worstErrorPx, ifLod("-"), "-");
+    row(r, "worst level-of-detail error (px)", d.walls.worstLodErrorPx,
+        ifLod(d.lod ? d.lod->worstLodErrorPx : 0.0), 0);
+    row(r, "texture page-ins / misses", std::to_string(d.walls.pageIns) + " / " + std::to_string(d.walls.misses),
         ifLod("-"), "-");
-    r << "\nWalls planned at alpha " << o.plan.alphaDeg << " deg (" << walls.textures << " textures)";
+    r << "\nWalls planned at alpha " << o.plan.alphaDeg << " deg (" << d.walls.textures << " textures)";
     if (o.lodPixels > 0) r << ", levels of detail within " << o.lodPixels << " px";
-    r << ". The walls' worst errors are on walls beyond a neighbour drawn as geometry, where the eye is outside "
+    r << ". Wall errors over alpha are on walls beyond a neighbour drawn as geometry, where the eye is outside "
          "every zone of that cell (`walls/walls.csv` marks them `beyond`).\n\nPer-frame data: `walls/frames.csv`, "
          "`walls/walls.csv`, "
-      << (lod ? "`lod/frames.csv`, " : "") << "`geometry/frames.csv`.\n\n## Fold-outs (walls | full geometry)\n\n";
-    for (std::size_t i = 0; i < walls.foldouts.size() && i < geometry.foldouts.size(); ++i)
-        r << "![walls](" << std::filesystem::relative(walls.foldouts[i], out).string() << ") ![geometry]("
-          << std::filesystem::relative(geometry.foldouts[i], out).string() << ")\n\n";
+      << (d.lod ? "`lod/frames.csv`, " : "") << "`geometry/frames.csv`.\n\n## The worst frame\n\nFrame "
+      << d.wallsError.worstFrame << " (its worst screen's FLIP mean " << d.wallsError.worstFlipMean << ", "
+      << resolutionText(o.display) << "): walls | full geometry | FLIP map (black 0, pale yellow 1).\n\n![worst frame]("
+      << std::filesystem::relative(d.wallsError.foldout, out).string()
+      << ")\n\n## Fold-outs (walls | full geometry)\n\n";
+    for (std::size_t i = 0; i < d.walls.foldouts.size() && i < d.geometry.foldouts.size(); ++i)
+        r << "![walls](" << std::filesystem::relative(d.walls.foldouts[i], out).string() << ") ![geometry]("
+          << std::filesystem::relative(d.geometry.foldouts[i], out).string() << ")\n\n";
     if (!r) throw Error((out / "report.md").string() + ": cannot write the report");
 }
 
@@ -99,20 +136,23 @@ int runDemo(const std::vector<std::string>& words) {
     app::RunOptions o;
     o.scene = ensurePlant(cache, static_cast<std::size_t>(args.integer("triangles", 2000000, 1000, 40000000)));
     o.display = config::loadDisplayConfig("cave4");
-    const int px = static_cast<int>(args.integer("resolution", 256, 16, 4096));
-    for (config::Screen& s : o.display.screens) s.resolution = {px, px};
+    if (args.has("resolution")) {
+        const int px = static_cast<int>(args.integer("resolution", 1024, 16, 4096));
+        for (config::Screen& s : o.display.screens) s.resolution = {px, px};
+    }
     o.tracker = "sim:walk?seed=1";
     o.frames = args.integer("frames", 240, 1, 1000000);
     o.guidePace = 5.0;
     o.window = app::WindowMode::Auto;
-    o.plan.alphaDeg = 30.0;
+    o.plan.alphaDeg = 10.0;
     o.plan.minZoneSize = 2.0;
     o.plan.pixelsPerDegree = 2.0;
     o.cache = cache / "bakes";
-    o.saveEvery = 60;
+    o.saveEvery = 30;
+    o.keepSavedImages = true;
     o.verbose = true;
-
     o.lodPixels = args.number("lod", 1.0, 0.0, 1e4);
+    std::cout << "demo: cave4 at " << resolutionText(o.display) << ", walls at alpha " << o.plan.alphaDeg << " deg\n";
 
     auto run = [&](const char* folder, bool walls, double lodPixels) {
         app::RunOptions r = o;
@@ -121,18 +161,23 @@ int runDemo(const std::vector<std::string>& words) {
         r.lodPixels = lodPixels;
         return gl::runSession(r);
     };
-    const app::RunSummary walls = run("walls", true, o.lodPixels);
-    const std::optional<app::RunSummary> lod = o.lodPixels > 0.0 ? std::optional(run("lod", false, o.lodPixels))
-                                                            : std::nullopt;
-    const app::RunSummary geometry = run("geometry", false, 0.0);
-    writeReport(out, o, walls, lod, geometry);
-    const double mw = display::median(walls.frameMs), mg = display::median(geometry.frameMs);
-    std::cout << "demo: median frame time " << mw << " ms with walls" << (lod ? " and levels of detail" : "") << ", ";
-    if (lod) std::cout << display::median(lod->frameMs) << " ms full geometry with levels of detail, ";
-    std::cout << mg << " ms full geometry, speed-up " << (mw > 0 ? mg / mw : 0.0) << "x; worst wall error "
-              << walls.worstErrorDeg << " deg (" << walls.worstErrorPx << " px), worst level-of-detail error "
-              << walls.worstLodErrorPx << " px\nGL_RENDERER: " << walls.renderer << "\nreport: "
-              << (out / "report.md").string() << "\n";
+    DemoRuns d{run("walls", true, o.lodPixels), std::nullopt, {}, {}, std::nullopt};
+    if (o.lodPixels > 0.0) d.lod = run("lod", false, o.lodPixels);
+    d.geometry = run("geometry", false, 0.0);
+    std::cout << "demo: comparing the saved frames with the full geometry's (pooled PSNR, FLIP)\n" << std::flush;
+    const display::Display display(o.display);
+    d.wallsError = compareRuns(display, d.walls, d.geometry, out);
+    if (d.lod) d.lodError = compareRuns(display, *d.lod, d.geometry, out / "lod");
+    writeReport(out, o, d);
+    const double mw = display::median(d.walls.frameMs), mg = display::median(d.geometry.frameMs);
+    std::cout << "demo (" << resolutionText(o.display) << "): median frame time " << mw << " ms with walls"
+              << (d.lod ? " and levels of detail" : "") << ", ";
+    if (d.lod) std::cout << display::median(d.lod->frameMs) << " ms full geometry with levels of detail, ";
+    std::cout << mg << " ms full geometry, speed-up " << (mw > 0 ? mg / mw : 0.0) << "x at "
+              << errorText(d.wallsError.error) << "; worst wall error " << d.walls.worstErrorDeg << " deg ("
+              << d.walls.worstErrorPx << " px), worst level-of-detail error " << d.walls.worstLodErrorPx
+              << " px\nGL_RENDERER: " << d.walls.renderer << "\nworst frame: " << d.wallsError.foldout.string()
+              << "\nreport: " << (out / "report.md").string() << "\n";
     return 0;
 }
 

@@ -126,6 +126,7 @@ RunSummary runSession(const RunOptions& o) {
         if (!output) continue;
         output->writeFrame(i, in.time, in.head.position, r, syncMs);
         if (in.readImages) summary.foldouts.push_back(output->saveImages(i, r.images));
+        if (in.readImages && o.keepSavedImages) summary.savedFrames.push_back({i, in.head.position, std::move(r.images)});
         summary.frameMs.push_back(r.frameMs);
         summary.worstErrorDeg = std::max(summary.worstErrorDeg, r.maxErrorDeg);
         summary.worstErrorPx = std::max(summary.worstErrorPx, r.maxErrorPixels);
