@@ -76,6 +76,11 @@ protected:
         pass.emplace();
     }
 
+    void TearDown() override {
+        pass.reset();  // its programs go while the context is still there
+        GlTest::TearDown();
+    }
+
     std::optional<gl::WallPass> pass;  // built once the context is current
     int drawCalls = 0;
 };
