@@ -89,6 +89,10 @@ struct RunSummary {
         std::vector<scenes::ScreenImage> images;
     };
     std::vector<SavedFrame> savedFrames;
+    // Start-up, seconds from runSession's start (issue 15: time to the first frame): the scene
+    // loaded, the walls prepared (plan, visibility, bake or cache check), the walkthrough ready
+    // (uploads, first textures), and the first frame presented.
+    double sceneSeconds = 0.0, wallsSeconds = 0.0, readySeconds = 0.0, firstFrameSeconds = 0.0;
     int rank = 0;                               // cluster mode: this process's rank (only rank 0
                                                 // fills the fields above)
 };
