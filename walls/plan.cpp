@@ -92,9 +92,10 @@ Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options) {
             checkExtent(d.cells[cell]);
             SideInput in{cell, w, side, frameOf(wall, side), d.cells[cell].region, plan.walls.back().quad,
                          d.headHeightRange};
-            plan.sides.push_back(planSide(plan, in));
+            plan.sides.push_back(planSide(plan, in, plan.zones));
         }
     }
+    planBeyond(plan, d);
     for (Texture& t : plan.textures) {
         const display::ScreenQuad& q = plan.walls[t.wall].quad;
         t.maxError = zoneMaxError({t.validRegion, d.headHeightRange}, t.samplingPoint, q);
