@@ -26,6 +26,7 @@ namespace {
 
 constexpr double kHalfX = 40.0, kHalfZ = 20.0, kHeight = 8.0, kEye = 1.7;
 constexpr double kOuterRow = 17.0, kInnerRow = 3.0, kConveyor = 1.0, kAisle = 10.0, kSplit = 7.2;
+constexpr double kHug = 0.3;  // metres from the walls along the wall path
 
 enum Kind { Machine0, Machine1, Machine2, RobotKind, ConveyorKind, CabinetKind, RackKind, KindCount };
 
@@ -156,6 +157,14 @@ SceneDescription plantDescription() {
     // across through M1.
     d.walkPath = {{-37, kEye, -kAisle}, {37, kEye, -kAisle}, {37, kEye, kAisle}, {-37, kEye, kAisle},
                   {-37, kEye, -kAisle}};
+    // kHug from the walls: along the N|M walls on both sides, along M1|M2, along the M|S walls
+    // on both sides with a detour along S2|S3 on both sides; every crossing of a wall between
+    // two cells of a row passes through both cells' geometry zones and blend strips.
+    const double n = -kSplit - kHug, m0 = -kSplit + kHug, m1 = kSplit - kHug, s = kSplit + kHug;
+    d.wallPath = {{-37, kEye, n},           {37, kEye, n},           {37, kEye, m0},         {-37, kEye, m0},
+                  {-30 - kHug, kEye, m0},   {-30 - kHug, kEye, m1},  {37, kEye, m1},         {37, kEye, s},
+                  {-20 - kHug, kEye, s},    {-20 - kHug, kEye, 19.5}, {-20 + kHug, kEye, 19.5}, {-20 + kHug, kEye, s},
+                  {-37, kEye, s}};
     return d;
 }
 
