@@ -93,6 +93,7 @@ RunSummary runSession(const RunOptions& o) {
     const int rank = cluster ? cluster->rank() : 0;
     // Only rank 0 reads input (a network tracker binds its port once).
     std::unique_ptr<app::RunInput> input = rank == 0 ? std::make_unique<app::RunInput>(o, scene, description) : nullptr;
+    if (input && !input->liveTrackerLine().empty()) std::cerr << "run: " << input->liveTrackerLine() << std::endl;
     const auto context = makeContext(o, display);
 
     std::optional<walls::WallSetup> setup;
