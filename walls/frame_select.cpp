@@ -107,25 +107,31 @@ FrameSelection FrameSelector::select(glm::dvec3 eye) const {
 
 void FrameSelector::addBeyond(glm::dvec3 eye, FrameSelection& f) const {
     const glm::dvec2 p(eye.x, eye.z);
-    // The walls through which a neighbour is drawn as geometry (geometry weight > 0).
-    std::vector<int> vias, done, added;
+    // The walls through which a neighbour is drawn as geometry (geometry weight > 0), and the
+    // beyond sides that draw their cell behind as geometry (the second level's parents; they
+    // precede their children in Plan::beyond).
+    std::vector<int> vias, parents, done, added;
     for (const WallBlend& w : f.walls)
         if (w.geometryWeight > 0.0) vias.push_back(w.wall);
     auto has = [](const std::vector<int>& v, int x) { return std::find(v.begin(), v.end(), x) != v.end(); };
     for (int i = 0; i < int(_plan.beyond.size()); ++i) {
         const BeyondSide& b = _plan.beyond[i];
         if (b.eyeCell != f.cell) continue;
-        const bool active = b.viaWall < 0 ? _table.at(f.cell, b.side.cell) == CellVisibility::Geometry : has(vias, b.viaWall);
-        const auto& cells = _plan.walls[b.side.wall].cells;
-        const int behind = cells[1 - b.side.side];
-        if (!active || has(f.geometryCells, behind) || has(done, b.side.wall)) continue;
+        const bool active = b.parent >= 0    ? has(parents, b.parent)
+                            : b.viaWall < 0 ? _table.at(f.cell, b.side.cell) == CellVisibility::Geometry
+                                            : has(vias, b.viaWall);
+        const int behind = _plan.walls[b.side.wall].cells[1 - b.side.side];
+        if (!active || has(f.geometryCells, behind) || has(added, behind) || has(done, b.side.wall)) continue;
         // Facing: the eye is on the neighbour's side of the wall's plane.
         if (glm::dot(p - b.side.origin, b.side.inward) <= 0.0) continue;
         // Outside the eye region nothing is proven: geometry (the planner's regions cover every
         // eye that draws the neighbour, so this is a guard, not a path).
         WallBlend w = containsConvex(b.eyeRegion, p) ? blend(b.side, _beyond[i], p)
                                                      : WallBlend{b.side.wall, b.side.side, -1, {}, 1.0};
-        if (w.geometryWeight > 0.0 && behind >= 0) added.push_back(behind);
+        if (w.geometryWeight > 0.0) {
+            parents.push_back(i);
+            if (behind >= 0) added.push_back(behind);
+        }
         done.push_back(b.side.wall);
         f.beyond.push_back(std::move(w));
     }

@@ -45,7 +45,8 @@ struct FrameSelection {
     // beyond them, blended like a cell's own walls over the zones the planner proved for the
     // eye's region (Plan::beyond), so the bound holds for them too. Only walls the eye faces
     // and whose cell behind is not drawn as geometry; a far wall in one of its geometry zones
-    // adds its cell behind, one level only (that cell's far walls are not drawn).
+    // adds its cell behind, whose far walls are selected the same way (second level); the far
+    // walls of a cell added at the second level are not drawn.
     std::vector<WallBlend> beyond;
     std::vector<int> geometryCells;   // cells drawn as geometry this frame, sorted
     bool allGeometry() const { return cell < 0; }

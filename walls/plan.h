@@ -31,8 +31,9 @@
 // neighbour. For each such eye region and far wall the region is cut into zones exactly as a
 // cell is (same layout, same guarantee, textures baked on the far wall from sampling points in
 // the region), or, where no texture is proven, a geometry zone: the far wall's cell behind is
-// drawn as geometry too. Cells that see each other through an open boundary give the whole cell
-// as eye region.
+// drawn as geometry too; where that happens, the far walls of that cell are planned the same
+// way for that part of the region (a second level, the last). Cells that see each other through
+// an open boundary give the whole cell as eye region.
 
 #include "display/off_axis.h"
 #include "scenes/scene_description.h"
@@ -123,11 +124,16 @@ struct WallSide {
 // side) are proven over their validRegion, which lies in eyeRegion.
 struct BeyondSide {
     int eyeCell = 0;                  // the cell holding the eye region
-    int viaWall = -1;                 // the eye cell's wall whose geometry zone and blend strip
-                                      // draw the neighbour; -1: an open boundary (whole cell)
+    int viaWall = -1;                 // the wall whose geometry zone and blend strip draw the
+                                      // neighbour: the eye cell's own, or the parent's far wall;
+                                      // -1: an open boundary (whole cell)
     Polygon2 eyeRegion;               // convex floor polygon (x, z), within eyeCell, on the
                                       // neighbour's side of the far wall's plane; x heightRange
     WallSide side;
+    // Second level: the index in Plan::beyond of the far wall whose geometry zone (and blend
+    // strip) draws this side's neighbour as geometry; -1 for a neighbour of the eye's cell.
+    // The far walls of a neighbour at the second level are not planned (nor drawn).
+    int parent = -1;
 };
 
 struct Plan {

@@ -60,7 +60,7 @@ Zone zoneFrom(const config::JsonNode& n, int index, Plan& plan, TextureIds& ids)
 }
 
 // Consecutive beyond zones of one eye region and far wall form one BeyondSide (as written); its
-// eye region is not stored (the zones tile it).
+// eye region and parent are not stored (the zones tile the region).
 void readBeyond(const std::vector<config::JsonNode>& zones, Plan& plan, TextureIds& ids) {
     for (int i = 0; i < int(zones.size()); ++i) {
         const config::JsonNode& n = zones[i];

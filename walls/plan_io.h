@@ -13,8 +13,10 @@
 //        "beyondZones": [{the keys of a zone, "eyeCell", "viaWall"}]}
 // Beyond zones (Plan::beyond, walls/plan.h) serve the far wall `wall` of the neighbour `cell`
 // drawn as geometry, for eyes in the zone's floor polygon, which lies in cell `eyeCell` (in its
-// geometry zone or texture->geometry blend strip of wall `viaWall`; -1: anywhere in eyeCell,
-// which sees the neighbour through an open boundary). The same bound holds for them: every eye
+// geometry zone or texture->geometry blend strip of wall `viaWall`, a wall of eyeCell or, at the
+// second level, the far wall of a first-level neighbour whose beyond zones draw `cell`'s
+// neighbour as geometry; -1: anywhere in eyeCell, which sees the neighbour through an open
+// boundary). The same bound holds for them: every eye
 // of the zone, every texture listed. "beyondZones" is optional when read.
 // Coordinates are world metres (config/conventions.h); floor polygons are (x, z).
 

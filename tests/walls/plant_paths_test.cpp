@@ -79,6 +79,16 @@ protected:
 scenes::GeneratedScene* PlantPaths::generated = nullptr;
 WallSetup* PlantPaths::setup = nullptr;
 
+// Near a cell's corner the far wall of a neighbour can itself be drawn as geometry (its plane
+// runs along the eye's cell); the cell behind it then has far walls of its own, planned at the
+// second level.
+TEST_F(PlantPaths, ThePlantHasBothLevelsOfBeyondSides) {
+    int first = 0, second = 0;
+    for (const BeyondSide& b : setup->plan.beyond) (b.parent < 0 ? first : second) += 1;
+    EXPECT_GT(first, 0);
+    EXPECT_GT(second, 0);
+}
+
 TEST_F(PlantPaths, NoTextureOverAlphaAlongTheWalkPath) {
     const Walked w = walk(generated->description.walkPath);
     report("walk path", w);
