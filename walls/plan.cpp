@@ -3,6 +3,7 @@
 #include "config/error.h"
 #include "config/json_reader.h"
 #include "walls/angular_error.h"
+#include "walls/parallel_for.h"
 #include "walls/zone_layout.h"
 
 #include <algorithm>
@@ -96,7 +97,8 @@ Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options) {
         }
     }
     planBeyond(plan, d);
-    for (Texture& t : plan.textures) {
+    parallelFor(int(plan.textures.size()), [&](int i) {
+        Texture& t = plan.textures[i];
         const display::ScreenQuad& q = plan.walls[t.wall].quad;
         t.maxError = zoneMaxError({t.validRegion, d.headHeightRange}, t.samplingPoint, q);
         const double texel = texelSize(nearestDistance(t, q), options.pixelsPerDegree);
@@ -106,7 +108,7 @@ Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options) {
             return int(std::clamp(std::ceil(metres / texel), 1.0, double(options.maxResolution)));
         };
         t.resolution = {texels(b.width), texels(b.height)};
-    }
+    });
     return plan;
 }
 

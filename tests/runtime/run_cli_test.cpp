@@ -102,6 +102,16 @@ TEST(RunCli, WritesFramesWallsAndImagesOnTheSmallPlant) {
     for (const char* file : {"frames/00000/front.png", "frames/00000/foldout.png", "frames/00020/floor.png"})
         EXPECT_TRUE(fs::exists(out / file)) << file;
     EXPECT_THAT(r.out, HasSubstr("frames.csv"));
+    // Start-up is reported in order: scene, walls, walkthrough, first frame (issue 15).
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.out, m, std::regex("first frame after ([0-9.]+) s \\(scene loaded at ([0-9.]+) s, "
+                                                         "walls ready at ([0-9.]+) s, walkthrough ready at ([0-9.]+) s\\)")))
+        << r.out;
+    const double first = std::stod(m[1]), scene = std::stod(m[2]), walls = std::stod(m[3]), ready = std::stod(m[4]);
+    EXPECT_GT(scene, 0.0);
+    EXPECT_LE(scene, walls);
+    EXPECT_LE(walls, ready);
+    EXPECT_LE(ready, first);
 }
 
 TEST(RunCli, TransitionWarpRunsAndReportsWarpFallbacks) {
