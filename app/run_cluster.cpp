@@ -34,8 +34,9 @@ double receiveFrame(app::Cluster& cluster, walls::FrameInput& input) {
 namespace {
 
 std::vector<std::uint8_t> statsBytes(const walls::FrameResult& r, double syncMs) {
-    const double values[10] = {r.frameMs, r.cpuMs, r.gpuMs, double(r.stats.triangles), double(r.stats.drawCalls), syncMs,
-                               double(r.warpFallbacks), r.maxErrorDeg, r.maxErrorPixels, double(r.geometryTriangles)};
+    const double values[11] = {r.frameMs, r.cpuMs, r.gpuMs, double(r.stats.triangles), double(r.stats.drawCalls), syncMs,
+                               double(r.warpFallbacks), r.maxErrorDeg, r.maxErrorPixels, double(r.geometryTriangles),
+                               double(r.texturesOverAlpha)};
     std::vector<std::uint8_t> bytes(sizeof values);
     std::memcpy(bytes.data(), values, sizeof values);
     return bytes;
@@ -56,9 +57,10 @@ double combineFrame(app::Cluster& cluster, walls::FrameResult& r, double syncMs,
     r.stats.drawCalls = 0;
     r.geometryTriangles = 0;
     r.warpFallbacks = 0;
+    r.texturesOverAlpha = 0;
     double slowestSync = 0.0;
     for (const auto& bytes : stats) {
-        double v[10];
+        double v[11];
         if (bytes.size() != sizeof v) cluster.abortAll("gathered malformed frame statistics");
         std::memcpy(v, bytes.data(), sizeof v);
         r.frameMs = std::max(r.frameMs, v[0]);
@@ -71,6 +73,9 @@ double combineFrame(app::Cluster& cluster, walls::FrameResult& r, double syncMs,
         r.maxErrorDeg = std::max(r.maxErrorDeg, v[7]);  // each rank measures the textures its screens show
         r.maxErrorPixels = std::max(r.maxErrorPixels, v[8]);
         r.geometryTriangles += static_cast<std::size_t>(v[9]);
+        // Each rank counts the textures its screens show; the largest count is 0 only when
+        // no rank drew one over alpha.
+        r.texturesOverAlpha = std::max(r.texturesOverAlpha, static_cast<int>(v[10]));
     }
     r.images.clear();
     for (const auto& bytes : images)

@@ -31,6 +31,7 @@ namespace {
 
 constexpr double kHalfZ = 20.0, kHeight = 8.0, kEye = 1.7;
 constexpr double kOuterRow = 17.0, kInnerRow = 3.0, kConveyor = 1.0, kAisle = 10.0, kSplit = 7.2;
+constexpr double kHug = 0.3;  // metres from the walls along the wall path
 
 enum Kind { Machine0, Machine1, Machine2, RobotKind, ConveyorKind, CabinetKind, RackKind, KindCount };
 
@@ -176,6 +177,15 @@ SceneDescription plantDescription(int columns) {
     const double end = hx - 3.0;
     d.walkPath = {{-end, kEye, -kAisle}, {end, kEye, -kAisle}, {end, kEye, kAisle}, {-end, kEye, kAisle},
                   {-end, kEye, -kAisle}};
+    // kHug from the walls: along the N|M walls on both sides, along M1|M2, along the M|S walls
+    // on both sides with a detour along S2|S3 on both sides; every crossing of a wall between
+    // two cells of a row passes through both cells' geometry zones and blend strips.
+    const double n = -kSplit - kHug, m0 = -kSplit + kHug, m1 = kSplit - kHug, s = kSplit + kHug;
+    const double w1 = -hx + 10.0, w2 = -hx + 20.0, top = kHalfZ - 0.5;  // M1|M2, S2|S3
+    d.wallPath = {{-end, kEye, n},        {end, kEye, n},         {end, kEye, m0},        {-end, kEye, m0},
+                  {w1 - kHug, kEye, m0},  {w1 - kHug, kEye, m1},  {end, kEye, m1},        {end, kEye, s},
+                  {w2 - kHug, kEye, s},   {w2 - kHug, kEye, top}, {w2 + kHug, kEye, top}, {w2 + kHug, kEye, s},
+                  {-end, kEye, s}};
     return d;
 }
 

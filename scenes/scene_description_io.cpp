@@ -19,6 +19,7 @@
 //              "lowerLeft": [x,y,z], "lowerRight": [x,y,z], "upperLeft": [x,y,z]}],
 //   "realWalls": [{"name": "w1", "lowerLeft": ..., "lowerRight": ..., "upperLeft": ...}],
 //   "walkPath": [[x,y,z], ...]                eye positions in the world frame
+//   "wallPath": [[x,y,z], ...]                optional: a second path hugging the virtual walls
 // }
 // The placement maps file coordinates to the world: world = matrix * upAxis * metresPerUnit * p.
 // A wall's front (normal = cross(lowerRight - lowerLeft, upperLeft - lowerLeft)) faces cells[0].
@@ -132,7 +133,7 @@ SceneDescription parseSceneDescription(std::string_view jsonText, const std::str
                                        const std::filesystem::path& folder) {
     const auto doc = config::JsonDocument::fromText(jsonText, source);
     const JsonNode root = doc.root();
-    root.expectKeys({"name", "models", "viewer", "cells", "walls", "realWalls", "walkPath"});
+    root.expectKeys({"name", "models", "viewer", "cells", "walls", "realWalls", "walkPath", "wallPath"});
     SceneDescription d;
     d.folder = folder;
     d.name = root.has("name") ? root.at("name").string() : folder.lexically_normal().filename().string();
@@ -158,6 +159,8 @@ SceneDescription parseSceneDescription(std::string_view jsonText, const std::str
         }
     if (auto v = root.find("walkPath"))
         for (const JsonNode& p : v->items()) d.walkPath.push_back(p.vec3());
+    if (auto v = root.find("wallPath"))
+        for (const JsonNode& p : v->items()) d.wallPath.push_back(p.vec3());
     return d;
 }
 
@@ -255,6 +258,10 @@ std::string writeSceneDescription(const SceneDescription& d) {
     for (const RealWall& w : d.realWalls) j["realWalls"].push_back(quadJson(w.name, w.lowerLeft, w.lowerRight, w.upperLeft));
     j["walkPath"] = nlohmann::json::array();
     for (glm::dvec3 p : d.walkPath) j["walkPath"].push_back(vecJson(p));
+    if (!d.wallPath.empty()) {  // optional: scenes without one keep their bytes
+        j["wallPath"] = nlohmann::json::array();
+        for (glm::dvec3 p : d.wallPath) j["wallPath"].push_back(vecJson(p));
+    }
     std::string out;
     dumpCompact(j, 0, out);
     return out + "\n";

@@ -7,6 +7,7 @@
 #include "scenes/region.h"
 
 #include <cmath>
+#include <utility>
 
 namespace cavewall::scenes {
 namespace {
@@ -145,10 +146,11 @@ void validateSceneDescription(const SceneDescription& d, const std::string& sour
     if (!(d.eyeHeight > 0.0)) c.fail("viewer.eyeHeight", "expected a positive height, got " + formatNumber(d.eyeHeight));
     if (!(d.headHeightRange.x < d.headHeightRange.y)) c.fail("viewer.headHeightRange", "expected low < high");
     if (d.cells.empty()) return;
-    for (std::size_t i = 0; i < d.walkPath.size(); ++i)
-        if (findCell(d.cells, d.walkPath[i]) < 0)
-            c.fail("walkPath[" + std::to_string(i) + "]", "point " + fmt(d.walkPath[i]) +
-                                                             " is outside every cell (expected a point inside a cell's region)");
+    for (const auto& [name, path] : {std::pair{"walkPath", &d.walkPath}, std::pair{"wallPath", &d.wallPath}})
+        for (std::size_t i = 0; i < path->size(); ++i)
+            if (findCell(d.cells, (*path)[i]) < 0)
+                c.fail(std::string(name) + "[" + std::to_string(i) + "]",
+                       "point " + fmt((*path)[i]) + " is outside every cell (expected a point inside a cell's region)");
 }
 
 }  // namespace cavewall::scenes

@@ -300,6 +300,8 @@ bool FramePlanner::wallInView(int wall) const {
 }
 
 void FramePlanner::measureError(FramePlan& p) const {
+    // The bounds are within kErrorTolerance of the true maximum (walls/angular_error.h).
+    const double alpha = glm::radians(_walls->plan.alphaDeg) + kErrorTolerance;
     double worst = 0.0;
     for (WallState& s : p.walls) {
         const PlannedWall& planned = _walls->plan.walls[s.wall];
@@ -307,9 +309,12 @@ void FramePlanner::measureError(FramePlan& p) const {
         for (const auto& [id, weight] : s.textures) {
             auto it = _textures.find(id);
             if (weight <= 0.0 || it == _textures.end()) continue;
-            wall = std::max(wall, maxAngularError(_eye, it->second->samplingPoint, planned.quad, planned.depthBehind));
+            const double error = maxAngularError(_eye, it->second->samplingPoint, planned.quad, planned.depthBehind);
+            wall = std::max(wall, error);
+            s.texturesOverAlpha += error > alpha ? 1 : 0;
         }
         s.errorDeg = glm::degrees(wall);
+        p.texturesOverAlpha += s.texturesOverAlpha;
         worst = std::max(worst, wall);
     }
     p.maxErrorDeg = glm::degrees(worst);

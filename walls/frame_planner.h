@@ -18,7 +18,8 @@
 //      cells): a wall is never black or missing. Such walls are flagged `fallback`.
 //   4. geometry: all structure + objects without a cell + objects of the geometry cells.
 //   5. the error: maxAngularError (walls/angular_error.h) of every texture drawn with non-zero
-//      weight against the true eye, in degrees and in pixels (FrameResult::maxErrorPixels).
+//      weight against the true eye, in degrees and in pixels (FrameResult::maxErrorPixels), and
+//      the count of those over the plan's alpha (+ kErrorTolerance): 0 while the bound holds.
 // Transition::Warp: every wall drawn with textures and no geometry weight gets the structure
 // behind it warped into its texture's view (the texture of the largest weight when it mixes
 // several). When the warp of such a wall is ill-conditioned for any given view
@@ -91,6 +92,7 @@ struct FramePlan {
     std::vector<WallMorph> morphs;                 // walls in a warp-morph this frame
     std::vector<WallState> walls;                  // every wall row (walls.csv), errors set
     double maxErrorDeg = 0.0, maxErrorPixels = 0.0;
+    int texturesOverAlpha = 0;                     // as FrameResult
     int warpFallbacks = 0;
 };
 

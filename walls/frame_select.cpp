@@ -25,6 +25,7 @@ double tent(double distance, double width) {
 FrameSelector::FrameSelector(const Plan& plan, const VisibilityTable& table, const scenes::SceneDescription& description)
     : _plan(plan), _table(table), _description(description), _zones(plan) {
     for (const WallSide& side : plan.sides) _sides.push_back(buildSide(side));
+    for (const BeyondSide& b : plan.beyond) _beyond.push_back(buildSide(b.side));
 }
 
 FrameSelector::SideCores FrameSelector::buildSide(const WallSide& side) const {
@@ -49,10 +50,15 @@ FrameSelector::SideCores FrameSelector::buildSide(const WallSide& side) const {
 
 WallBlend FrameSelector::blendAt(int sideIndex, glm::dvec2 floorPoint) const {
     const WallSide& side = _plan.sides[sideIndex];
-    const SideCores& sc = _sides[sideIndex];
+    WallBlend out = blend(side, _sides[sideIndex], floorPoint);
+    out.zone = _zones.find(side.cell, side.wall, floorPoint);
+    return out;
+}
+
+WallBlend FrameSelector::blend(const WallSide& side, const SideCores& sc, glm::dvec2 floorPoint) const {
     const glm::dvec2 p(glm::dot(floorPoint - sc.origin, sc.along), glm::dot(floorPoint - sc.origin, sc.inward));
     const double b = _plan.options.blendWidth;
-    WallBlend out{side.wall, side.side, _zones.find(side.cell, side.wall, floorPoint), {}, 0.0};
+    WallBlend out{side.wall, side.side, -1, {}, 0.0};
     double total = 0.0;
     for (const Core& c : sc.cores) {
         const double w = tent(distanceTo(p.y, c.d), b) * (c.texture < 0 ? 1.0 : tent(distanceTo(p.x, c.s), b));
@@ -100,25 +106,34 @@ FrameSelection FrameSelector::select(glm::dvec3 eye) const {
 }
 
 void FrameSelector::addBeyond(glm::dvec3 eye, FrameSelection& f) const {
-    const std::vector<int> neighbours(f.geometryCells.begin() + 1, f.geometryCells.end());
-    auto drawn = [&](int c) {
-        return std::find(f.geometryCells.begin(), f.geometryCells.end(), c) != f.geometryCells.end();
-    };
-    std::vector<int> added;
-    for (int g : neighbours) {
-        const glm::dvec2 nearest = closestPointConvex(_description.cells[g].region, {eye.x, eye.z});
-        for (int i = 0; i < int(_plan.sides.size()); ++i) {
-            const WallSide& side = _plan.sides[i];
-            const auto& cells = _plan.walls[side.wall].cells;
-            const int behind = cells[0] == g ? cells[1] : cells[0];
-            if (side.cell != g || drawn(behind)) continue;
-            // Facing: the eye is on the neighbour's side of the wall's plane.
-            if (glm::dot(glm::dvec2(eye.x, eye.z) - side.origin, side.inward) <= 0.0) continue;
-            WallBlend w = blendAt(i, nearest);
-            w.zone = -1;
-            if (w.geometryWeight > 0.0) added.push_back(behind);
-            f.beyond.push_back(std::move(w));
+    const glm::dvec2 p(eye.x, eye.z);
+    // The walls through which a neighbour is drawn as geometry (geometry weight > 0), and the
+    // beyond sides that draw their cell behind as geometry (the second level's parents; they
+    // precede their children in Plan::beyond).
+    std::vector<int> vias, parents, done, added;
+    for (const WallBlend& w : f.walls)
+        if (w.geometryWeight > 0.0) vias.push_back(w.wall);
+    auto has = [](const std::vector<int>& v, int x) { return std::find(v.begin(), v.end(), x) != v.end(); };
+    for (int i = 0; i < int(_plan.beyond.size()); ++i) {
+        const BeyondSide& b = _plan.beyond[i];
+        if (b.eyeCell != f.cell) continue;
+        const bool active = b.parent >= 0    ? has(parents, b.parent)
+                            : b.viaWall < 0 ? _table.at(f.cell, b.side.cell) == CellVisibility::Geometry
+                                            : has(vias, b.viaWall);
+        const int behind = _plan.walls[b.side.wall].cells[1 - b.side.side];
+        if (!active || has(f.geometryCells, behind) || has(added, behind) || has(done, b.side.wall)) continue;
+        // Facing: the eye is on the neighbour's side of the wall's plane.
+        if (glm::dot(p - b.side.origin, b.side.inward) <= 0.0) continue;
+        // Outside the eye region nothing is proven: geometry (the planner's regions cover every
+        // eye that draws the neighbour, so this is a guard, not a path).
+        WallBlend w = containsConvex(b.eyeRegion, p) ? blend(b.side, _beyond[i], p)
+                                                     : WallBlend{b.side.wall, b.side.side, -1, {}, 1.0};
+        if (w.geometryWeight > 0.0) {
+            parents.push_back(i);
+            if (behind >= 0) added.push_back(behind);
         }
+        done.push_back(b.side.wall);
+        f.beyond.push_back(std::move(w));
     }
     f.geometryCells.insert(f.geometryCells.end(), added.begin(), added.end());
 }

@@ -15,7 +15,9 @@
 // where dist_* is the distance to the texture's core (its validated region less the blend
 // strips). Rows and columns each form a partition of unity, so the weights sum to 1; they are
 // non-zero only strictly inside the texture's validated region, so the planner's error bound
-// holds for every texture drawn with non-zero weight.
+// holds for every texture drawn with non-zero weight. The far walls beyond a neighbour drawn
+// as geometry are weighted the same way over their beyond zones (Plan::beyond), only while the
+// eye is inside the zones' eye region; elsewhere they are drawn as geometry.
 
 #include "scenes/scene_description.h"
 #include "walls/plan.h"
@@ -39,10 +41,12 @@ struct FrameSelection {
     int cell = -1;                    // the viewer's cell, -1 outside every cell (all geometry)
     std::vector<WallBlend> walls;     // every wall bounding the cell
     // The far walls of the neighbours drawn as geometry (the cell behind a wall in its geometry
-    // or blend zone): what lies beyond them, selected as if the eye stood at the nearest point
-    // of that neighbour (the eye is outside it, so no zone holds it). Only walls the eye faces
-    // and whose cell behind is not drawn as geometry; a far wall in its own geometry zone adds
-    // its cell behind, one level only.
+    // zone or texture->geometry blend strip, or a cell seen through an open boundary): what lies
+    // beyond them, blended like a cell's own walls over the zones the planner proved for the
+    // eye's region (Plan::beyond), so the bound holds for them too. Only walls the eye faces
+    // and whose cell behind is not drawn as geometry; a far wall in one of its geometry zones
+    // adds its cell behind, whose far walls are selected the same way (second level); the far
+    // walls of a cell added at the second level are not drawn.
     std::vector<WallBlend> beyond;
     std::vector<int> geometryCells;   // cells drawn as geometry this frame, sorted
     bool allGeometry() const { return cell < 0; }
@@ -69,6 +73,7 @@ private:
         std::vector<Core> cores;
     };
     SideCores buildSide(const WallSide& side) const;
+    WallBlend blend(const WallSide& side, const SideCores& cores, glm::dvec2 floorPoint) const;
     void addBeyond(glm::dvec3 eye, FrameSelection& f) const;
 
     const Plan& _plan;
@@ -76,6 +81,7 @@ private:
     const scenes::SceneDescription& _description;
     ZoneIndex _zones;
     std::vector<SideCores> _sides;    // parallel to Plan::sides
+    std::vector<SideCores> _beyond;   // parallel to Plan::beyond
 };
 
 }  // namespace cavewall::walls

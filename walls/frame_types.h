@@ -74,8 +74,10 @@ struct WallState {
     double geometryWeight = 0.0;             // weight of the cell behind as geometry
     bool fallback = false;                   // wanted textures missing: previous or geometry drawn
     bool beyond = false;                     // a far wall of a neighbour drawn as geometry
-                                             // (FrameSelection::beyond): not covered by alpha
+                                             // (FrameSelection::beyond), planned like the others
     double errorDeg = 0.0;                   // exact worst angular error of its drawn textures
+    int texturesOverAlpha = 0;               // of its drawn textures, those whose exact error
+                                             // exceeds the plan's alpha (0 when the bound holds)
 };
 
 struct FrameResult {
@@ -88,6 +90,7 @@ struct FrameResult {
     display::FrameStats stats;               // triangles and draw calls, all views
     PagerStats pager;
     double maxErrorDeg = 0.0;                // max over drawn textures (0 without textures)
+    int texturesOverAlpha = 0;               // sum of WallState::texturesOverAlpha (must be 0)
     // maxErrorDeg converted to pixels on the screens this instance renders: error (rad) times
     // the largest pixels per radian of each screen from the eye (display/pixel_scale.h).
     double maxErrorPixels = 0.0;

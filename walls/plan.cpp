@@ -93,9 +93,10 @@ Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options) {
             checkExtent(d.cells[cell]);
             SideInput in{cell, w, side, frameOf(wall, side), d.cells[cell].region, plan.walls.back().quad,
                          d.headHeightRange};
-            plan.sides.push_back(planSide(plan, in));
+            plan.sides.push_back(planSide(plan, in, plan.zones));
         }
     }
+    planBeyond(plan, d);
     parallelFor(int(plan.textures.size()), [&](int i) {
         Texture& t = plan.textures[i];
         const display::ScreenQuad& q = plan.walls[t.wall].quad;

@@ -24,6 +24,16 @@
 // The geometry distance is the smallest at which a zone of minZoneSize is proven, so the
 // texture count trades against minZoneSize (a larger alpha shrinks the geometry strip and
 // may therefore need more textures, not fewer).
+//
+// Beyond a neighbour drawn as geometry (Plan::beyond): while the eye is in a cell's geometry
+// zone of a wall or in that zone's texture->geometry blend strip, the cell behind the wall (the
+// neighbour) is drawn as geometry, and so are its far walls' textures, from eyes outside the
+// neighbour. For each such eye region and far wall the region is cut into zones exactly as a
+// cell is (same layout, same guarantee, textures baked on the far wall from sampling points in
+// the region), or, where no texture is proven, a geometry zone: the far wall's cell behind is
+// drawn as geometry too; where that happens, the far walls of that cell are planned the same
+// way for that part of the region (a second level, the last). Cells that see each other through
+// an open boundary give the whole cell as eye region.
 
 #include "display/off_axis.h"
 #include "scenes/scene_description.h"
@@ -107,13 +117,34 @@ struct WallSide {
     std::vector<PlannedRow> rows;
 };
 
+// A far wall of a neighbour drawn as geometry, planned for the eyes of one region outside that
+// neighbour (see the top of this header). side.cell is the neighbour, side.wall the far wall,
+// side.side the neighbour's side of it; side's zones (in Plan::beyondZones, their cell and wall
+// those of side) tile eyeRegion, and their textures (in Plan::textures, cell and wall those of
+// side) are proven over their validRegion, which lies in eyeRegion.
+struct BeyondSide {
+    int eyeCell = 0;                  // the cell holding the eye region
+    int viaWall = -1;                 // the wall whose geometry zone and blend strip draw the
+                                      // neighbour: the eye cell's own, or the parent's far wall;
+                                      // -1: an open boundary (whole cell)
+    Polygon2 eyeRegion;               // convex floor polygon (x, z), within eyeCell, on the
+                                      // neighbour's side of the far wall's plane; x heightRange
+    WallSide side;
+    // Second level: the index in Plan::beyond of the far wall whose geometry zone (and blend
+    // strip) draws this side's neighbour as geometry; -1 for a neighbour of the eye's cell.
+    // The far walls of a neighbour at the second level are not planned (nor drawn).
+    int parent = -1;
+};
+
 struct Plan {
     double alphaDeg = 10.0;
     PlanOptions options;
     std::vector<PlannedWall> walls;
     std::vector<WallSide> sides;
-    std::vector<Texture> textures;
-    std::vector<Zone> zones;
+    std::vector<Texture> textures;    // of sides and beyond sides
+    std::vector<Zone> zones;          // of sides
+    std::vector<BeyondSide> beyond;
+    std::vector<Zone> beyondZones;    // of beyond sides (ids index this vector)
 };
 
 // Plans every cell/wall pair of a validated description. Walls must not be horizontal.

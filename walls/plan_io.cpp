@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <set>
 
 namespace cavewall::walls {
 namespace {
@@ -29,7 +30,9 @@ PlannedWall wallFrom(const config::JsonNode& n, int index) {
 
 glm::dvec3 pointFrom(const config::JsonNode& n) { return n.vec3(); }
 
-int textureFor(Plan& plan, std::map<std::tuple<int, int, double, double, double>, int>& ids, const Zone& z, glm::dvec3 s) {
+using TextureIds = std::map<std::tuple<int, int, double, double, double>, int>;
+
+int textureFor(Plan& plan, TextureIds& ids, const Zone& z, glm::dvec3 s) {
     const auto key = std::make_tuple(z.cell, z.wall, s.x, s.y, s.z);
     if (auto it = ids.find(key); it != ids.end()) return it->second;
     Texture t;
@@ -37,6 +40,68 @@ int textureFor(Plan& plan, std::map<std::tuple<int, int, double, double, double>
     t.cell = z.cell, t.wall = z.wall, t.samplingPoint = s;
     plan.textures.push_back(t);
     return ids[key] = t.id;
+}
+
+// A zone object without its key check (the caller knows which keys its list allows).
+Zone zoneFrom(const config::JsonNode& n, int index, Plan& plan, TextureIds& ids) {
+    Zone z;
+    z.id = n.at("id").integer(index, index);
+    z.cell = n.at("cell").integer(0, 1 << 30);
+    z.wall = n.at("wall").integer(0, int(plan.walls.size()) - 1);
+    z.kind = kindFrom(n.at("kind").oneOf({"texture", "blend", "geometry"}));
+    for (const auto& p : n.at("floorPolygon").items(3)) z.floorPolygon.push_back(p.vec2());
+    z.heightRange = n.at("heightRange").vec2();
+    if (z.kind == ZoneKind::Texture) z.textures.push_back(textureFor(plan, ids, z, pointFrom(n.at("samplingPoint"))));
+    if (z.kind == ZoneKind::Blend) {
+        for (const auto& p : n.at("samplingPoints").items(1)) z.textures.push_back(textureFor(plan, ids, z, pointFrom(p)));
+        z.mixesGeometry = n.at("mixesGeometry").boolean();
+    }
+    return z;
+}
+
+// Consecutive beyond zones of one eye region and far wall form one BeyondSide (as written); its
+// eye region and parent are not stored (the zones tile the region).
+void readBeyond(const std::vector<config::JsonNode>& zones, Plan& plan, TextureIds& ids) {
+    for (int i = 0; i < int(zones.size()); ++i) {
+        const config::JsonNode& n = zones[i];
+        n.expectKeys({"id", "cell", "wall", "kind", "floorPolygon", "heightRange", "samplingPoint", "samplingPoints",
+                      "mixesGeometry", "eyeCell", "viaWall"});
+        Zone z = zoneFrom(n, i, plan, ids);
+        const int eyeCell = n.at("eyeCell").integer(0, 1 << 30);
+        const int via = n.at("viaWall").integer(-1, int(plan.walls.size()) - 1);
+        const bool same = !plan.beyond.empty() && plan.beyond.back().eyeCell == eyeCell &&
+                          plan.beyond.back().viaWall == via && plan.beyond.back().side.cell == z.cell &&
+                          plan.beyond.back().side.wall == z.wall;
+        if (!same) {
+            BeyondSide b{eyeCell, via, {}, {}};
+            b.side.cell = z.cell, b.side.wall = z.wall, b.side.firstZone = i;
+            b.side.side = plan.walls[z.wall].cells[0] == z.cell ? 0 : 1;
+            plan.beyond.push_back(b);
+        }
+        plan.beyond.back().side.zoneCount++;
+        plan.beyondZones.push_back(std::move(z));
+    }
+}
+
+nlohmann::json zoneToJson(const Plan& plan, const Zone& z) {
+    nlohmann::json polygon = nlohmann::json::array();
+    for (const glm::dvec2& p : z.floorPolygon) polygon.push_back({p.x, p.y});
+    nlohmann::json j = {{"id", z.id}, {"cell", z.cell}, {"wall", z.wall}, {"kind", toString(z.kind)},
+                        {"floorPolygon", polygon}, {"heightRange", {z.heightRange.x, z.heightRange.y}}};
+    if (z.kind == ZoneKind::Texture) j["samplingPoint"] = vec(plan.textures[z.textures.at(0)].samplingPoint);
+    if (z.kind == ZoneKind::Blend) {
+        nlohmann::json points = nlohmann::json::array();
+        for (int t : z.textures) points.push_back(vec(plan.textures[t].samplingPoint));
+        j["samplingPoints"] = points;
+        j["mixesGeometry"] = z.mixesGeometry;
+    }
+    return j;
+}
+
+int eyeRegionCount(const Plan& plan) {
+    std::set<std::pair<int, int>> regions;
+    for (const BeyondSide& b : plan.beyond) regions.insert({b.eyeCell, b.viaWall});
+    return int(regions.size());
 }
 
 }  // namespace
@@ -47,51 +112,35 @@ nlohmann::json planToJson(const Plan& plan) {
         walls.push_back({{"id", w.id}, {"lowerLeft", vec(w.quad.lowerLeft)}, {"lowerRight", vec(w.quad.lowerRight)},
                          {"upperLeft", vec(w.quad.upperLeft)}, {"cells", {w.cells[0], w.cells[1]}},
                          {"depthBehind", std::isfinite(w.depthBehind) ? nlohmann::json(w.depthBehind) : nlohmann::json()}});
-    for (const Zone& z : plan.zones) {
-        nlohmann::json polygon = nlohmann::json::array();
-        for (const glm::dvec2& p : z.floorPolygon) polygon.push_back({p.x, p.y});
-        nlohmann::json j = {{"id", z.id}, {"cell", z.cell}, {"wall", z.wall}, {"kind", toString(z.kind)},
-                            {"floorPolygon", polygon}, {"heightRange", {z.heightRange.x, z.heightRange.y}}};
-        if (z.kind == ZoneKind::Texture) j["samplingPoint"] = vec(plan.textures[z.textures.at(0)].samplingPoint);
-        if (z.kind == ZoneKind::Blend) {
-            nlohmann::json points = nlohmann::json::array();
-            for (int t : z.textures) points.push_back(vec(plan.textures[t].samplingPoint));
-            j["samplingPoints"] = points;
-            j["mixesGeometry"] = z.mixesGeometry;
+    for (const Zone& z : plan.zones) zones.push_back(zoneToJson(plan, z));
+    nlohmann::json beyond = nlohmann::json::array();
+    for (const BeyondSide& b : plan.beyond)
+        for (int z = b.side.firstZone; z < b.side.firstZone + b.side.zoneCount; ++z) {
+            nlohmann::json j = zoneToJson(plan, plan.beyondZones[z]);
+            j["eyeCell"] = b.eyeCell;
+            j["viaWall"] = b.viaWall;
+            beyond.push_back(j);
         }
-        zones.push_back(j);
-    }
-    return {{"alphaDeg", plan.alphaDeg}, {"walls", walls}, {"zones", zones}};
+    return {{"alphaDeg", plan.alphaDeg}, {"walls", walls}, {"zones", zones}, {"beyondZones", beyond}};
 }
 
 Plan planFromJson(std::string_view text, const std::string& source) {
     const config::JsonDocument doc = config::JsonDocument::fromText(text, source);
     const config::JsonNode root = doc.root();
-    root.expectKeys({"alphaDeg", "walls", "zones"});
+    root.expectKeys({"alphaDeg", "walls", "zones", "beyondZones"});
     Plan plan;
     plan.alphaDeg = root.at("alphaDeg").number(1e-9, 90);
     plan.options.alphaDeg = plan.alphaDeg;
     const auto walls = root.at("walls").items();
     for (int i = 0; i < int(walls.size()); ++i) plan.walls.push_back(wallFrom(walls[i], i));
-    std::map<std::tuple<int, int, double, double, double>, int> ids;
+    TextureIds ids;
     const auto zones = root.at("zones").items();
     for (int i = 0; i < int(zones.size()); ++i) {
-        const config::JsonNode& n = zones[i];
-        n.expectKeys({"id", "cell", "wall", "kind", "floorPolygon", "heightRange", "samplingPoint", "samplingPoints", "mixesGeometry"});
-        Zone z;
-        z.id = n.at("id").integer(i, i);
-        z.cell = n.at("cell").integer(0, 1 << 30);
-        z.wall = n.at("wall").integer(0, int(plan.walls.size()) - 1);
-        z.kind = kindFrom(n.at("kind").oneOf({"texture", "blend", "geometry"}));
-        for (const auto& p : n.at("floorPolygon").items(3)) z.floorPolygon.push_back(p.vec2());
-        z.heightRange = n.at("heightRange").vec2();
-        if (z.kind == ZoneKind::Texture) z.textures.push_back(textureFor(plan, ids, z, pointFrom(n.at("samplingPoint"))));
-        if (z.kind == ZoneKind::Blend) {
-            for (const auto& p : n.at("samplingPoints").items(1)) z.textures.push_back(textureFor(plan, ids, z, pointFrom(p)));
-            z.mixesGeometry = n.at("mixesGeometry").boolean();
-        }
-        plan.zones.push_back(std::move(z));
+        zones[i].expectKeys({"id", "cell", "wall", "kind", "floorPolygon", "heightRange", "samplingPoint", "samplingPoints",
+                             "mixesGeometry"});
+        plan.zones.push_back(zoneFrom(zones[i], i, plan, ids));
     }
+    if (root.has("beyondZones")) readBeyond(root.at("beyondZones").items(), plan, ids);
     return plan;
 }
 
@@ -100,6 +149,8 @@ PlanTotals planTotals(const Plan& plan) {
     for (const Zone& z : plan.zones)
         (z.kind == ZoneKind::Texture ? t.textureZones : z.kind == ZoneKind::Blend ? t.blendZones : t.geometryZones)++;
     t.textures = int(plan.textures.size());
+    t.beyondZones = int(plan.beyondZones.size());
+    for (const BeyondSide& b : plan.beyond) t.beyondTextures += b.side.textureCount;
     for (const Texture& tex : plan.textures) t.texels += double(tex.resolution.x) * tex.resolution.y;
     t.gpuBytes = t.texels * 4.0 * 4.0 / 3.0;
     t.diskBytes = t.gpuBytes;
@@ -126,6 +177,10 @@ void printPlanSummary(std::ostream& out, const Plan& plan, const scenes::SceneDe
                       texels * 1e-6);
         out << line;
     }
+    std::snprintf(line, sizeof line,
+                  "beyond a neighbour drawn as geometry: %zu far walls from %d eye regions, %d zones, %d textures\n",
+                  plan.beyond.size(), eyeRegionCount(plan), totals.beyondZones, totals.beyondTextures);
+    out << line;
     std::snprintf(line, sizeof line,
                   "total: %d texture, %d blend, %d geometry zones; %d textures, %.2f Mtexels; GPU %.1f MiB (RGBA8 + MIP "
                   "chain); disk <= %.1f MiB (uncompressed tiled + MIP)\n",

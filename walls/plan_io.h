@@ -9,7 +9,15 @@
 //                   "floorPolygon": [[x, z], ...], "heightRange": [y0, y1],
 //                   "samplingPoint": [x, y, z]            (texture zones)
 //                   "samplingPoints": [[x, y, z], ...],   (blend zones: every texture mixed)
-//                   "mixesGeometry": bool                 (blend zones: also fades to geometry)}]}
+//                   "mixesGeometry": bool                 (blend zones: also fades to geometry)}],
+//        "beyondZones": [{the keys of a zone, "eyeCell", "viaWall"}]}
+// Beyond zones (Plan::beyond, walls/plan.h) serve the far wall `wall` of the neighbour `cell`
+// drawn as geometry, for eyes in the zone's floor polygon, which lies in cell `eyeCell` (in its
+// geometry zone or texture->geometry blend strip of wall `viaWall`, a wall of eyeCell or, at the
+// second level, the far wall of a first-level neighbour whose beyond zones draw `cell`'s
+// neighbour as geometry; -1: anywhere in eyeCell, which sees the neighbour through an open
+// boundary). The same bound holds for them: every eye
+// of the zone, every texture listed. "beyondZones" is optional when read.
 // Coordinates are world metres (config/conventions.h); floor polygons are (x, z).
 
 #include "scenes/scene_description.h"
@@ -31,8 +39,9 @@ nlohmann::json planToJson(const Plan& plan);
 Plan planFromJson(std::string_view text, const std::string& source);
 
 struct PlanTotals {
-    int textureZones = 0, blendZones = 0, geometryZones = 0;
-    int textures = 0;
+    int textureZones = 0, blendZones = 0, geometryZones = 0;  // of the cells' own sides
+    int beyondZones = 0, beyondTextures = 0;                  // of Plan::beyond
+    int textures = 0;                                         // all, beyond ones included
     double texels = 0;       // base level texels over all textures
     double gpuBytes = 0;     // RGBA8 with a full MIP chain (4/3 of the base level)
     double diskBytes = 0;    // same, uncompressed: an upper bound for tiled MIP-mapped files

@@ -200,19 +200,20 @@ Layout layout(const Context& c) {
 struct Emitter {
     const Context& c;
     Plan& plan;
+    std::vector<Zone>& zones;
     const std::vector<Row>& rows;
     std::vector<std::vector<int>> textureIds;  // [row][column]
 
     void zone(ZoneKind kind, const Polygon2& local, std::vector<int> textures, bool mixesGeometry) {
         if (local.empty() || std::abs(signedArea(local)) < kMinPieceArea) return;
         Zone z;
-        z.id = int(plan.zones.size());
+        z.id = int(zones.size());
         z.cell = c.in.cell, z.wall = c.in.wall, z.kind = kind;
         z.floorPolygon = c.world(local);
         z.heightRange = c.in.heightRange;
         z.textures = std::move(textures);
         z.mixesGeometry = mixesGeometry;
-        plan.zones.push_back(std::move(z));
+        zones.push_back(std::move(z));
     }
     // The column interval of row r, column k, widened by `grow` on interior borders.
     glm::dvec2 column(const Row& r, std::size_t k, double grow) const {
@@ -261,7 +262,7 @@ struct Emitter {
 
 }  // namespace
 
-WallSide planSide(Plan& plan, const SideInput& in) {
+WallSide planSide(Plan& plan, const SideInput& in, std::vector<Zone>& zones) {
     Context c{in, {}, glm::radians(plan.options.alphaDeg), plan.options.blendWidth, plan.options.minZoneSize, 0, 0, 0, 0};
     for (const glm::dvec2& p : in.cellRegion) c.cell.push_back(in.frame.toLocal(p));
     glm::dvec2 lo, hi;
@@ -270,12 +271,12 @@ WallSide planSide(Plan& plan, const SideInput& in) {
 
     WallSide side;
     side.cell = in.cell, side.wall = in.wall, side.side = in.side;
-    side.firstZone = int(plan.zones.size());
+    side.firstZone = int(zones.size());
     side.origin = in.frame.origin, side.along = in.frame.along, side.inward = in.frame.inward;
     const Layout l = layout(c);
     side.geometryDistance = l.geometryBelow ? l.dG : c.dMin;
     side.hasGeometry = l.geometryBelow;
-    Emitter e{c, plan, l.rows, {}};
+    Emitter e{c, plan, zones, l.rows, {}};
     for (int r = 0; r < int(l.rows.size()); ++r) side.rows.push_back(e.textures(r, side.textureCount));
     if (l.geometryBelow) e.zone(ZoneKind::Geometry, clipBox(c.cell, {-kInf, -kInf}, {kInf, l.dG}), {}, false);
     const double w = c.blend;
@@ -287,7 +288,7 @@ WallSide planSide(Plan& plan, const SideInput& in) {
         e.band(low, last ? kInf : row.b - 0.5 * w, {r}, false);
         if (!last && w > 0) e.band(row.b - 0.5 * w, row.b + 0.5 * w, {r, r + 1}, false);
     }
-    side.zoneCount = int(plan.zones.size()) - side.firstZone;
+    side.zoneCount = int(zones.size()) - side.firstZone;
     return side;
 }
 

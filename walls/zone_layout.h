@@ -29,8 +29,12 @@ struct SideInput {
 // ones are refused with an Error naming the cell, since the work grows with the cell's size.
 inline constexpr double kMaxCellExtent = 20000.0;
 
-// Appends the side's textures and zones to `plan` (ids continue the plan's numbering) and
+// Appends the side's textures to `plan` and its zones to `zones` (Plan::zones, or
+// Plan::beyondZones for the far walls of a neighbour; ids continue each vector's numbering) and
 // returns the side's summary.
-WallSide planSide(Plan& plan, const SideInput& input);
+WallSide planSide(Plan& plan, const SideInput& input, std::vector<Zone>& zones);
+
+// Plans Plan::beyond and Plan::beyondZones (walls/plan.h) once every side is planned.
+void planBeyond(Plan& plan, const scenes::SceneDescription& description);
 
 }  // namespace cavewall::walls

@@ -2,14 +2,19 @@
 // The files of a `cavewall run`:
 //   frames.csv  one row per frame: frame, t, head_x, head_y, head_z, world_x, world_y, world_z,
 //               cell, zone, frame_ms, cpu_ms, gpu_ms, triangles, draw_calls, textures_resident,
-//               page_ins, misses, max_err_deg, max_err_px, fallbacks, sync_ms
+//               page_ins, misses, max_err_deg, max_err_px, fallbacks, sync_ms, warp_fallbacks,
+//               lod_px, lod_err_px, lod_over_budget, geometry_triangles, over_alpha
 //               (head in the cave frame and world = cyclopean eye in the scene, metres; cell is
 //               the cell's name or "-" outside every cell; zone -1 for none; misses and
 //               page_ins are running totals; fallbacks = walls drawn from a previous texture or
 //               as geometry because a wanted texture was not resident; sync_ms = cluster
-//               mode's slowest rank's wait for the frame broadcast and the swap lock)
-//   walls.csv   one row per frame and wall bounding the viewer's cell: frame, wall (name),
-//               textures ("id:weight" joined by ';'), geometry_weight, fallback (0/1)
+//               mode's slowest rank's wait for the frame broadcast and the swap lock;
+//               max_err_deg the exact error of the worst texture drawn; over_alpha the textures
+//               drawn whose exact error exceeds the plan's alpha, 0 while the bound holds)
+//   walls.csv   one row per frame and wall bounding the viewer's cell or beyond a neighbour
+//               drawn as geometry: frame, wall (name), textures ("id:weight" joined by ';'),
+//               geometry_weight, fallback (0/1), beyond (0/1), err_deg (the exact error of its
+//               worst texture drawn with weight > 0), over_alpha (its textures over alpha)
 //   frames/<frame, 5 digits>/<stem>.png and foldout.png for every saved frame.
 // Poses are written in the shortest form that reads back to the same double, so replays can be
 // compared exactly.

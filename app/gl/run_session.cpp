@@ -79,6 +79,9 @@ walls::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scen
         quiet.verbose = false;
         setup = prepareWalls(quiet, scene, d, context);
     }
+    // The other ranks plan again after the bake; the first frame's broadcast (bounded by
+    // --cluster-timeout) waits for the slowest of them here instead.
+    cluster->barrier(kBakeWaitSeconds, "waiting for every rank to prepare the walls");
     return std::move(*setup);
 }
 

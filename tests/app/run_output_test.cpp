@@ -40,7 +40,8 @@ TEST(RunOutput, FramesAndWallsCsvHaveOneRowPerFrameAndWall) {
         r.frameMs = 12.3456;
         r.stats.triangles = 5000;
         r.geometryTriangles = 4990;
-        r.walls = {WallState{0, {{7, 0.25}, {8, 0.75}}, 0.0, true, false, 3.5}};
+        r.walls = {WallState{0, {{7, 0.25}, {8, 0.75}}, 0.0, true, false, 3.5, 1}};
+        r.texturesOverAlpha = 1;
         out.writeFrame(0, 0.0, head, r);
         r.cell = -1;  // outside every cell
         r.walls.clear();
@@ -57,6 +58,7 @@ TEST(RunOutput, FramesAndWallsCsvHaveOneRowPerFrameAndWall) {
     EXPECT_EQ(frames[0].at("geometry_triangles"), "4990");
     EXPECT_EQ(frames[0].at("fallbacks"), "1");  // the one wall's fallback
     EXPECT_EQ(frames[1].at("sync_ms"), "2.500");
+    EXPECT_EQ(frames[0].at("over_alpha"), "1");
     // Poses read back to the same double (replays are compared exactly).
     EXPECT_EQ(std::strtod(frames[0].at("head_y").c_str(), nullptr), head.y);
     EXPECT_EQ(std::strtod(frames[1].at("t").c_str(), nullptr), 1.0 / 60.0);
@@ -69,6 +71,7 @@ TEST(RunOutput, FramesAndWallsCsvHaveOneRowPerFrameAndWall) {
     EXPECT_EQ(walls[0].at("fallback"), "1");
     EXPECT_EQ(walls[0].at("beyond"), "0");
     EXPECT_EQ(walls[0].number("err_deg"), 3.5);
+    EXPECT_EQ(walls[0].at("over_alpha"), "1");
 }
 
 TEST(RunOutput, AnUnwritableFolderIsAClearError) {

@@ -9,6 +9,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <set>
+
 namespace cavewall::scenes {
 namespace {
 
@@ -70,6 +73,40 @@ TEST(GeneratePlant, DefaultHasTwoMillionTriangles24CellsAndSharedMeshes) {
 
 // No content object crosses a cell boundary (so none crosses a virtual wall) and the walk
 // path never runs through content, whatever the seed.
+// Distance (metres) from floor point p to the footprint of wall w (a segment in x, z).
+double toFootprint(glm::dvec2 p, const VirtualWall& w) {
+    const glm::dvec2 a(w.lowerLeft.x, w.lowerLeft.z), b(w.lowerRight.x, w.lowerRight.z);
+    const double t = std::clamp(glm::dot(p - a, b - a) / glm::dot(b - a, b - a), 0.0, 1.0);
+    return glm::length(p - (a + t * (b - a)));
+}
+
+TEST(GeneratePlant, TheWallPathHugsTheVirtualWallsAndCrossesThem) {
+    const GeneratedScene g = generatePlant({1, 20000});
+    const auto& path = g.description.wallPath;
+    ASSERT_GE(path.size(), 2u);
+    std::set<int> cells;
+    int crossings = 0;
+    for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+        int previous = -1;
+        for (double t = 0.0; t <= 1.0; t += 0.001) {
+            const glm::dvec3 p = glm::mix(path[i], path[i + 1], t);
+            const int c = findCell(g.description.cells, p);
+            ASSERT_GE(c, 0) << "leg " << i << " leaves the cells at t = " << t;
+            crossings += previous >= 0 && c != previous;
+            previous = c;
+            cells.insert(c);
+            double nearest = 1e9;
+            for (const VirtualWall& w : g.description.walls) nearest = std::min(nearest, toFootprint({p.x, p.z}, w));
+            // The path is laid 0.3 m from the walls (generate_plant.cpp).
+            ASSERT_LE(nearest, 0.3 + 1e-9) << "leg " << i << " at t = " << t;
+        }
+    }
+    // N1-N8 along N|M, M1-M8 both ways, S1-S8 along M|S (each row's 7 walls crossed), the
+    // N8|M8, M1|M2 and M8|S8 walls and S2|S3 twice: at least 7 + 7 + 7 + 4 crossings.
+    EXPECT_GE(crossings, 25);
+    EXPECT_EQ(cells.size(), 24u);
+}
+
 TEST(GeneratePlant, ContentStaysInsideOneCellForManySeeds) {
     for (std::uint64_t seed = 0; seed < 20; ++seed) {
         SCOPED_TRACE(seed);

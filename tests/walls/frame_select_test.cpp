@@ -1,6 +1,7 @@
 #include "walls/frame_select.h"
 
 #include "tests/walls/test_scenes.h"
+#include "walls/angular_error.h"
 #include "walls/polygon2d.h"
 
 #include <gtest/gtest.h>
@@ -140,9 +141,10 @@ TEST(FrameSelect, ANeighbourDrawnAsGeometryShowsWhatLiesBeyondItsFarWalls) {
     const Plan plan = planZones(d, o);
     const VisibilityTable table = computeVisibility(d);
     const FrameSelector selector(plan, table, d);
-    // In A's geometry zone of A|B: B is geometry, and B|C shows the textures of B's zone
-    // nearest to the eye (B's side of A|B, straight ahead).
-    const FrameSelection near = selector.select({0.0, 1.7, 0.05});
+    // In A's geometry zone of A|B: B is geometry, and B|C shows textures planned for this eye
+    // region (Plan::beyond), proven within alpha here although the eye is outside B.
+    const glm::dvec3 eye{0.0, 1.7, 0.05};
+    const FrameSelection near = selector.select(eye);
     ASSERT_EQ(near.cell, 0);
     EXPECT_EQ(near.geometryCells, (std::vector<int>{0, 1}));
     ASSERT_EQ(near.walls.size(), 1u);
@@ -150,18 +152,20 @@ TEST(FrameSelect, ANeighbourDrawnAsGeometryShowsWhatLiesBeyondItsFarWalls) {
     ASSERT_EQ(near.beyond.size(), 1u);
     const WallBlend& bc = near.beyond[0];
     EXPECT_EQ(bc.wall, 1);
-    EXPECT_EQ(bc.geometryWeight, 0.0);  // 10 m from B|C: a texture zone of B
+    EXPECT_EQ(bc.side, 0);              // B is B|C's front cell
+    EXPECT_EQ(bc.geometryWeight, 0.0);  // 10 m from B|C: a texture is proven
     ASSERT_FALSE(bc.textures.empty());
     double sum = 0.0;
-    for (const auto& [id, w] : bc.textures) sum += w;
+    for (const auto& [id, w] : bc.textures) {
+        sum += w;
+        const Texture& t = plan.textures[id];
+        EXPECT_EQ(t.wall, 1);
+        EXPECT_TRUE(containsConvex(t.validRegion, {eye.x, eye.z})) << "texture " << id;
+        EXPECT_LE(maxAngularError(eye, t.samplingPoint, plan.walls[1].quad), glm::radians(20.0) + kErrorTolerance);
+        // Baked from A, where the eyes that draw it are, not from B.
+        EXPECT_GT(t.samplingPoint.z, 0.0);
+    }
     EXPECT_NEAR(sum, 1.0, 1e-12);
-    // Exactly what an eye just inside B at the same spot would select for B|C.
-    const FrameSelection inB = selector.select({0.0, 1.7, -1e-6});
-    ASSERT_EQ(inB.cell, 1);
-    for (const WallBlend& w : inB.walls)
-        if (w.wall == 1) {
-            EXPECT_EQ(w.textures, bc.textures);
-        }
     // Far from A|B nothing is drawn beyond: B is a texture.
     EXPECT_TRUE(selector.select({0.0, 1.7, 9.0}).beyond.empty());
 }

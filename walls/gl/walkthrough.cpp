@@ -139,6 +139,7 @@ walls::FrameResult Walkthrough::renderFrame(const walls::FrameInput& input) {
     result.zone = plan.zone;
     result.maxErrorDeg = plan.maxErrorDeg;
     result.maxErrorPixels = plan.maxErrorPixels;
+    result.texturesOverAlpha = plan.texturesOverAlpha;
     result.warpFallbacks = plan.warpFallbacks;
     result.walls = std::move(plan.walls);
     if (_walls) result.pager = _walls->pager.stats();
