@@ -112,8 +112,9 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
         ifLod("-"), "-");
     r << "\nWalls planned at alpha " << o.plan.alphaDeg << " deg (" << d.walls.textures << " textures)";
     if (o.lodPixels > 0) r << ", levels of detail within " << o.lodPixels << " px";
-    r << ". Wall errors over alpha are on walls beyond a neighbour drawn as geometry, where the eye is outside "
-         "every zone of that cell (`walls/walls.csv` marks them `beyond`).\n\nPer-frame data: `walls/frames.csv`, "
+    r << ". Every texture drawn is proven within alpha at its eye, the far walls beyond a neighbour drawn as "
+         "geometry included (their own beyond zones); `over_alpha` in `walls/frames.csv` counts any that is not "
+         "(0 expected).\n\nPer-frame data: `walls/frames.csv`, "
          "`walls/walls.csv`, "
       << (d.lod ? "`lod/frames.csv`, " : "") << "`geometry/frames.csv`.\n\n## The worst frame\n\nFrame "
       << d.wallsError.worstFrame << " (its worst screen's FLIP mean " << d.wallsError.worstFlipMean << ", "
