@@ -47,6 +47,9 @@ GlObject storageBuffer(std::size_t bytes, const void* data) {
     return b;
 }
 
+// The scene shader variant with or without the alpha test, for this scene's textures.
+std::string programName(bool alphaTest) { return alphaTest ? "scene (alpha test)" : kProgramName; }
+
 void setViewport(const display::Viewport& vp, glm::bvec4 colorMask) {
     glViewport(vp.x, vp.y, vp.width, vp.height);
     glScissor(vp.x, vp.y, vp.width, vp.height);
@@ -60,11 +63,16 @@ SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings
     : _settings(settings),
       _scene(scene, settings.lodPixels > 0.0, settings.cullBackFaces),
       _lists(_scene),
-      _gpu(scene, _scene.hasLods() ? &_scene.lods() : nullptr),
-      _program(buildProgram(kProgramName, shaders::sceneShader(shaders::kSceneVertex, _gpu.textureCount() > 0),
-                            shaders::sceneShader(shaders::kSceneFragment, _gpu.textureCount() > 0))) {
-    _projection = uniformLocation(_program.id(), kProgramName, "uProjection");
-    _ambient = uniformLocation(_program.id(), kProgramName, "uAmbient");
+      _gpu(scene, _scene.hasLods() ? &_scene.lods() : nullptr) {
+    const bool textured = _gpu.textureCount() > 0;
+    for (bool alphaTest : {false, true}) {
+        Program& p = _programs[alphaTest];
+        const std::string name = programName(alphaTest);
+        p.program = buildProgram(name, shaders::sceneShader(shaders::kSceneVertex, textured, alphaTest),
+                                 shaders::sceneShader(shaders::kSceneFragment, textured, alphaTest));
+        p.projection = uniformLocation(p.program.id(), name, "uProjection");
+        p.ambient = uniformLocation(p.program.id(), name, "uAmbient");
+    }
     // Material records: the scene's, then the default material for meshes without one.
     std::vector<shaders::MaterialRecord> materials;
     for (const scenes::Material& m : scene.materials) materials.push_back(materialRecord(m, _gpu.textureCount()));
@@ -110,10 +118,10 @@ void SceneRenderer::applyFrameState() {
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     glClearDepth(0.0);
-    glUseProgram(_program.id());
+    glUseProgram(_programs[0].program.id());
     glBindVertexArray(_gpu.vertexArray());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, _materialRecords.id());
-    glUniform1f(_ambient, _settings.ambient);
+    for (const Program& p : _programs) glProgramUniform1f(p.program.id(), p.ambient, _settings.ambient);
 }
 
 void SceneRenderer::clearTo(glm::vec4 color) {
@@ -196,7 +204,8 @@ ViewStats SceneRenderer::draw(const render::RenderList& list) {
     upload(_viewBuffers[_nextViewBuffers]);
     _nextViewBuffers = (_nextViewBuffers + 1) % kViewBufferSets;
     const glm::mat4 projection(frustum.clipFromView);
-    glUniformMatrix4fv(_projection, 1, GL_FALSE, glm::value_ptr(projection));
+    for (const Program& p : _programs)
+        glProgramUniformMatrix4fv(p.program.id(), p.projection, 1, GL_FALSE, glm::value_ptr(projection));
     issueBatches(list);
     stats.drawCalls = static_cast<int>(list.batches.size());
     stats.objectsDrawn = static_cast<int>(list.draws.size());
@@ -242,6 +251,7 @@ void SceneRenderer::upload(ViewBuffers& buffers) {
 }
 
 void SceneRenderer::applyState(const render::BatchKey& state) {
+    glUseProgram(_programs[state.alphaTest].program.id());
     const bool cull = state.faces == render::FaceMode::CullCcw || state.faces == render::FaceMode::CullCw;
     if (cull) {
         glEnable(GL_CULL_FACE);

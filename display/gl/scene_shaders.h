@@ -42,9 +42,12 @@ struct MaterialRecord {
 };
 static_assert(sizeof(MaterialRecord) == 96);
 
-// Both stages come in two variants, built with sceneShader(): TEXTURED 1 samples base-colour
+// Both stages come in variants, built with sceneShader(): TEXTURED 1 samples base-colour
 // textures, TEXTURED 0 (a scene without any) leaves the texture path out entirely: llvmpipe runs
-// a texture fetch behind a per-material branch for every fragment.
+// a texture fetch behind a per-material branch for every fragment. ALPHA_TEST 1 (alpha-MASK
+// batches only) discards below the cutoff; ALPHA_TEST 0 has no discard at all, so llvmpipe
+// tests and writes depth before shading and skips hidden fragments (a discard anywhere in a
+// shader, even behind a branch never taken, moves the depth test after it).
 inline constexpr const char* kSceneVertex = R"(#version 450 core
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
@@ -105,7 +108,9 @@ void main() {
 #if TEXTURED
     if (vFlags.y != 0) color *= texture(uBaseColorTexture, vTexCoord);
 #endif
+#if ALPHA_TEST
     if (vFlags.x == 1 && color.a < vCutoff) discard;
+#endif
     // Headlight at the eye (the view origin). Meshes without normals are lit fully.
     float diffuse = 1.0;
     if (dot(vNormal, vNormal) > 1e-12) {
@@ -117,11 +122,13 @@ void main() {
 }
 )";
 
-// `source` (starting with its #version line) with "#define TEXTURED 0|1" after that line.
-inline std::string sceneShader(const char* source, bool textured) {
+// `source` (starting with its #version line) with "#define TEXTURED 0|1" and
+// "#define ALPHA_TEST 0|1" after that line.
+inline std::string sceneShader(const char* source, bool textured, bool alphaTest) {
     std::string s(source);
     const std::size_t eol = s.find('\n');
-    return s.insert(eol + 1, textured ? "#define TEXTURED 1\n" : "#define TEXTURED 0\n");
+    return s.insert(eol + 1, std::string(textured ? "#define TEXTURED 1\n" : "#define TEXTURED 0\n") +
+                                 (alphaTest ? "#define ALPHA_TEST 1\n" : "#define ALPHA_TEST 0\n"));
 }
 
 }  // namespace cavewall::gl::shaders
