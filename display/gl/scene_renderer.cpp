@@ -31,12 +31,14 @@ int alphaModeIndex(scenes::AlphaMode mode) {
     return 0;
 }
 
-shaders::MaterialRecord materialRecord(const scenes::Material& m, int textureCount) {
+// `uvFromStored`: the mesh's decoding of its stored texture coordinates (GpuScene).
+shaders::MaterialRecord materialRecord(const scenes::Material& m, int textureCount, const glm::mat3& uvFromStored) {
     shaders::MaterialRecord r;
     const scenes::TextureRef& t = m.baseColorTexture;
     r.baseColor = m.baseColorFactor;
-    for (int c = 0; c < 3; ++c) r.uvTransform[c] = glm::vec4(t.transform[c], 0.0f);
-    r.flags = {t.texCoord == 1 ? 1 : 0, alphaModeIndex(m.alphaMode), t.image >= 0 && t.image < textureCount, 0};
+    const glm::mat3 uv = t.transform * uvFromStored;
+    for (int c = 0; c < 3; ++c) r.uvTransform[c] = glm::vec4(uv[c], 0.0f);
+    r.flags = {0, alphaModeIndex(m.alphaMode), t.image >= 0 && t.image < textureCount, 0};
     r.params.x = m.alphaCutoff;
     return r;
 }
@@ -73,16 +75,17 @@ SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings
         p.projection = uniformLocation(p.program.id(), name, "uProjection");
         p.ambient = uniformLocation(p.program.id(), name, "uAmbient");
     }
-    // Material records: the scene's, then the default material for meshes without one.
+    // One material record per mesh: its material (or the default one), with the mesh's own
+    // texture-coordinate decoding folded into the texture transform.
     std::vector<shaders::MaterialRecord> materials;
-    for (const scenes::Material& m : scene.materials) materials.push_back(materialRecord(m, _gpu.textureCount()));
-    materials.push_back(materialRecord(scenes::Material{}, _gpu.textureCount()));
-    _materialRecords = storageBuffer(materials.size() * sizeof(shaders::MaterialRecord), materials.data());
     const int count = static_cast<int>(scene.materials.size());
-    for (const scenes::Object& o : scene.objects) {
-        const int material = scene.meshes[o.mesh].material;
-        _objectMaterials.push_back(material >= 0 && material < count ? material : count);
+    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+        const int material = scene.meshes[i].material;
+        const scenes::Material& m = material >= 0 && material < count ? scene.materials[material] : scenes::Material{};
+        materials.push_back(materialRecord(m, _gpu.textureCount(), _gpu.uvFromStored(static_cast<int>(i))));
     }
+    _materialRecords = storageBuffer(materials.size() * sizeof(shaders::MaterialRecord), materials.data());
+    for (const scenes::Object& o : scene.objects) _objectMaterials.push_back(o.mesh);
 }
 
 FrameStats SceneRenderer::render(const std::vector<display::ScreenView>& views, const RenderTargets& targets,
@@ -192,7 +195,8 @@ ViewStats SceneRenderer::draw(const render::RenderList& list) {
         const scenes::Object& o = _scene.objects()[d.object];
         const glm::dmat4 frameFromModel = list.frameFromWorld * o.worldFromModel;
         shaders::DrawRecord r;
-        r.modelView = display::eyeRelativeModelView(frustum, frameFromModel);
+        // Stored positions decode into the model frame; normals need no decoding.
+        r.modelView = display::eyeRelativeModelView(frustum, frameFromModel * _gpu.modelFromStored(o.mesh));
         const glm::dmat3 normal = glm::transpose(glm::inverse(glm::dmat3(frustum.viewFromFrame * frameFromModel)));
         for (int c = 0; c < 3; ++c) r.normalMatrix[c] = glm::vec4(glm::vec3(normal[c]), 0.0f);
         r.info.x = _objectMaterials[d.object];

@@ -167,7 +167,7 @@ private:
     RenderSettings _settings;
     render::RenderScene _scene;
     render::ListBuilder _lists;
-    std::vector<int> _objectMaterials;        // per object: material record index
+    std::vector<int> _objectMaterials;        // per object: material record index (its mesh's)
     GpuScene _gpu;
     std::array<Program, 2> _programs;         // [0]: no discard; [1]: alpha test (MASK batches)
     GlObject _materialRecords;
