@@ -6,7 +6,10 @@
 #
 # Installs nothing (tools/install-deps.sh installs openscenegraph and xvfb). Per size (triangles,
 # default "100000 1000000"): `cavewall generate boxes` once (glb + OBJ), `osgconv` once (OBJ ->
-# .osgb, as a user would prepare a model for osgviewer). Then --rounds rounds (default 5), each
+# .osgb, as a user would prepare a model for osgviewer): without the OBJ reader's triangle
+# stripping (-O noTriStripPolygons; it takes hours on a million triangles) and with the
+# optimiser's INDEX_MESH, which gives the same single indexed triangle list (one DrawElementsUInt,
+# 24 vertices per box) that stripping ends in. Then --rounds rounds (default 5), each
 # running, per size, osgviewer and `cavewall draw-bench` one after the other:
 #  - osgviewer: under one Xvfb server, a 1024 x 1024 window (--window 0 0 1024 1024; its default
 #    29.15 degree vertical field of view, home position, lighting and threading model),
@@ -54,7 +57,7 @@ for t in $SIZES; do
   if [ ! -f "$dir/boxes.osgb" ]; then
     "$CAVEWALL" generate boxes --triangles "$t" --out "$dir" >/dev/null
     echo "osg-compare: converting $dir/boxes.obj for osgviewer (osgconv, once)" >&2
-    osgconv "$dir/boxes.obj" "$dir/boxes.osgb" >/dev/null 2>&1
+    OSG_OPTIMIZER="DEFAULT INDEX_MESH" osgconv -O noTriStripPolygons "$dir/boxes.obj" "$dir/boxes.osgb" >/dev/null 2>&1
   fi
 done
 
