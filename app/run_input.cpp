@@ -61,6 +61,10 @@ std::optional<input::NavMode> navMode(Navigation nav, const scenes::SceneDescrip
     return std::nullopt;
 }
 
+std::string RunInput::liveTrackerLine() const {
+    return _tracker && _tracker->isLive() ? _tracker->describe() : std::string();
+}
+
 RunInput::RunInput(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d, bool realTime)
     : _tracker(trackerFor(o)),
       _pipeline(pipelineConfig(o)),

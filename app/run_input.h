@@ -45,6 +45,10 @@ public:
 
     bool isDesktop() const { return _desktop != nullptr; }
 
+    // For the log: "dtrack listening on 127.0.0.1:5000 for ..." when the tracker is a live
+    // network listener (its bound port, the chosen one for port 0), empty otherwise.
+    std::string liveTrackerLine() const;
+
 private:
     std::unique_ptr<input::TrackerSource> _tracker;      // null for the desktop fallback
     std::unique_ptr<input::DesktopMapper> _desktop;

@@ -79,6 +79,10 @@ struct RunSummary {
     double worstLodErrorPx = 0.0;               // largest level-of-detail error drawn, pixels
     long misses = 0, pageIns = 0;
     std::vector<std::filesystem::path> foldouts;// saved fold-outs, in frame order
+    // Start-up, seconds from runSession's start (issue 15: time to the first frame): the scene
+    // loaded, the walls prepared (plan, visibility, bake or cache check), the walkthrough ready
+    // (uploads, first textures), and the first frame presented.
+    double sceneSeconds = 0.0, wallsSeconds = 0.0, readySeconds = 0.0, firstFrameSeconds = 0.0;
     int rank = 0;                               // cluster mode: this process's rank (only rank 0
                                                 // fills the fields above)
 };

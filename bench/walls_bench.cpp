@@ -89,6 +89,24 @@ void BM_PlanHall(benchmark::State& state) {
 }
 BENCHMARK(BM_PlanHall)->Unit(benchmark::kMillisecond);
 
+// Issue 18: planning time against the hall's size. A W x W hall (W = the argument, metres) cut
+// across by one 8 m high virtual wall W wide; 2000 is a 2 km x 2 km hall, 2000 x 1000 cells.
+void BM_PlanLargeHall(benchmark::State& state) {
+    const double w = double(state.range(0)), half = 0.5 * w;
+    scenes::SceneDescription d;
+    d.cells.push_back({"front", {{half, 0}, {half, half}, {-half, half}, {-half, 0}}, 0.0});
+    d.cells.push_back({"back", {{half, -half}, {half, 0}, {-half, 0}, {-half, -half}}, 0.0});
+    scenes::VirtualWall wall;
+    wall.name = "middle";
+    wall.lowerLeft = {-half, 0, 0}, wall.lowerRight = {half, 0, 0}, wall.upperLeft = {-half, 8, 0};
+    wall.cells = {0, 1};
+    d.walls.push_back(wall);
+    std::size_t textures = 0;
+    for (auto _ : state) textures = walls::planZones(d).textures.size();
+    state.counters["textures"] = double(textures);
+}
+BENCHMARK(BM_PlanLargeHall)->Arg(48)->Arg(192)->Arg(1000)->Arg(2000)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -95,8 +95,25 @@ Viewer parseViewer(const JsonNode& node) {
     return v;
 }
 
+// [[x0, y0, z0], [x1, y1, z1]]: the first corner below the second on every axis, both within
+// kMaxCoordinate.
+std::array<glm::dvec3, 2> parseVolume(const JsonNode& node) {
+    const std::vector<JsonNode> corners = node.items(2, 2);
+    const std::array<glm::dvec3, 2> v{corners[0].vec3(), corners[1].vec3()};
+    for (int c = 0; c < 2; ++c)
+        for (int a = 0; a < 3; ++a)
+            if (std::abs(v[c][a]) > kMaxCoordinate)
+                corners[c].fail("expected coordinates within " + formatNumber(kMaxCoordinate) + " m, got " +
+                                formatNumber(v[c][a]) + " m");
+    for (int a = 0; a < 3; ++a)
+        if (!(v[0][a] < v[1][a]))
+            node.fail(std::string("expected the first corner below the second on every axis, got ") + "xyz"[a] + " " +
+                      formatNumber(v[0][a]) + " >= " + formatNumber(v[1][a]));
+    return v;
+}
+
 Tracking parseTracking(const JsonNode& node) {
-    node.expectKeys({"caveFromTracker", "latencyMs"});
+    node.expectKeys({"caveFromTracker", "latencyMs", "volume"});
     Tracking t;
     if (auto n = node.find("caveFromTracker")) {
         t.caveFromTracker = n->mat4Rows();
@@ -118,6 +135,7 @@ Tracking parseTracking(const JsonNode& node) {
             node.at("caveFromTracker").fail("expected a translation within " + formatNumber(kMaxCoordinate) +
                                             " m, got " + formatNumber(t.caveFromTracker[3][r]) + " m");
     if (auto n = node.find("latencyMs")) t.latencyMs = n->number(0.0, 500.0);
+    if (auto n = node.find("volume")) t.volume = parseVolume(*n);
     return t;
 }
 

@@ -22,7 +22,8 @@
 //   "stereo": "mono",        // mono | separate | side-by-side | top-bottom | anaglyph | quad-buffer
 //   "minEyeDistance": 0.001, // see display/off_axis.h
 //   "tracking": { "caveFromTracker": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]],
-//                 "latencyMs": 0 }
+//                 "latencyMs": 0,
+//                 "volume": [[-3.5, -2, -3.5], [3.5, 5, 3.5]] }  // optional; see display_limits.h
 // }
 
 #include "config/error.h"
@@ -30,6 +31,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <array>
 #include <filesystem>
 #include <limits>
 #include <optional>
@@ -78,6 +80,9 @@ struct Viewer {
 struct Tracking {
     glm::dmat4 caveFromTracker{1.0};          // rigid calibration transform (metres)
     double latencyMs = 0.0;                   // motion-to-photon latency to predict over, [0, 500]
+    // Where tracked poses are plausible, [min corner, max corner] in the cave frame (metres);
+    // unset: the default of config::trackingVolumeOf (display_limits.h).
+    std::optional<std::array<glm::dvec3, 2>> volume;
     bool operator==(const Tracking&) const = default;
 };
 

@@ -27,6 +27,7 @@ std::string fileNameProblem(std::string_view name) {
 }
 
 TrackingVolume trackingVolumeOf(const DisplayConfig& config) {
+    if (config.tracking.volume) return TrackingVolume{(*config.tracking.volume)[0], (*config.tracking.volume)[1]};
     TrackingVolume v{config.viewer.headPosition, config.viewer.headPosition};
     for (const Screen& s : config.screens)
         for (const glm::dvec3& p : {s.lowerLeft, s.lowerRight, s.upperLeft, s.lowerRight + s.upperLeft - s.lowerLeft}) {

@@ -37,9 +37,10 @@ struct TrackingVolume {
     bool operator==(const TrackingVolume&) const = default;
 };
 
-// The default tracking volume of a display: the bounding box of its screens' corners and its
-// default head, grown by kTrackingMargin on every side (cave4: x and z in [-3.5, 3.5], y in
-// [-2, 5]). A tracker spec's `volume` parameter overrides it (input/tracker_source.h).
+// The tracking volume of a display: tracking.volume when the configuration sets it, else the
+// bounding box of its screens' corners and its default head, grown by kTrackingMargin on every
+// side (cave4: x and z in [-3.5, 3.5], y in [-2, 5]). A tracker spec's `volume` parameter
+// overrides both (input/tracker_source.h).
 TrackingVolume trackingVolumeOf(const DisplayConfig& config);
 
 }  // namespace cavewall::config

@@ -15,14 +15,18 @@ const char* const kGenerateUsage =
     "Writes DIR/<plant|house>.glb (glTF 2.0, opens in any viewer) and DIR/scene.json (cells,\n"
     "virtual walls or portals, real walls, walk path), deterministically from --seed (default 0):\n"
     "the same seed gives the same bytes. --triangles sets the minimum number of drawn triangles\n"
-    "(default: 2000000 for the plant, 200000 for the house; at most 40000000). The plant's round\n"
+    "(default: 2000000 for the plant, 200000 for the house; at most 128000000). The plant's round\n"
     "parts are refined up to a CAD export's chordal deviation of 1 mm (smaller targets get coarser\n"
     "ones); beyond that its machines, robots, conveyors, cabinets and pipe racks gain parts\n"
     "(bolts, buttons, tool holders, cable links, rollers, valves, vents), as large CAD models do.\n"
-    "The house's round parts follow the target. Prints a summary and, as its last line, the\n"
-    "scene.json path.\n"
+    "From 3000000 on the plant grows longer instead: 8 bays of 10 m per 2000000 triangles, so a\n"
+    "cell holds about the same geometry at every size (parts of one kind share a mesh, as a CAD\n"
+    "export's assemblies do). The house's round parts follow the target, up to its most detailed\n"
+    "level (a larger target is an error). Prints a summary and, as its last line, the scene.json\n"
+    "path.\n"
     "  plant  an 80 m x 40 m production hall cut by 37 virtual walls into 24 cells (rows N, M, S\n"
-    "         of 8 cells 10 m wide; the walk path runs along the aisles in rows N and S)\n"
+    "         of 8 cells 10 m wide; the walk path runs along the aisles in rows N and S); longer\n"
+    "         for larger targets (32000000: 1.28 km, 384 cells)\n"
     "  house  six rooms with real walls; every doorway is a portal, every room a cell\n"
     "  boxes  a 60 m x 8 m x 30 m hall of random axis-aligned boxes (24 vertices, 12 triangles\n"
     "         each, per-face normals, one mesh, one primitive; default 1000000 triangles) for\n"
@@ -57,11 +61,14 @@ int runGenerate(const std::vector<std::string>& words) {
         throw Error("generate: unknown scene kind '" + kind + "' (expected plant, house or boxes)");
     scenes::GenerateOptions options;
     options.seed = static_cast<std::uint64_t>(args.integer("seed", 0, 0, 2147483647L));
-    // The plant's most detailed level draws about 46 M triangles (13 s of one core to build);
-    // larger targets could not be met, so they are refused.
-    options.triangles = static_cast<std::size_t>(args.integer("triangles", 0, 0, 40'000'000L));
+    // The plant grows by 10 m bays (8 per 2 M triangles, up to 512 bays: about 128 M drawn);
+    // larger targets could not be met, so they are refused. The house grows by detail only.
+    options.triangles = static_cast<std::size_t>(args.integer("triangles", 0, 0, 128'000'000L));
     if (kind == "boxes") return writeBoxHall(options, args.require("out"));
     scenes::GeneratedScene g = kind == "plant" ? scenes::generatePlant(options) : scenes::generateHouse(options);
+    if (g.scene.triangleCount() < options.triangles)
+        throw Error("--triangles: the " + kind + " reaches at most " + std::to_string(g.scene.triangleCount()) +
+                    " drawn triangles (its most detailed level), got a target of " + std::to_string(options.triangles));
     const auto json = scenes::writeGenerated(g, args.require("out"));
     std::size_t unique = 0;
     for (const auto& m : g.scene.meshes) unique += m.triangleCount();

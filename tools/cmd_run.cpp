@@ -4,6 +4,7 @@
 #include "tools/args.h"
 #include "tools/commands.h"
 
+#include <cstdio>
 #include <iostream>
 
 namespace cavewall::tools {
@@ -66,6 +67,12 @@ long saveEvery(const std::string& spec) {
     throw Error("--save-frames: expected none, all or every:K with an integer K >= 1, got '" + spec + "'");
 }
 
+std::string seconds(double s) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f", s);
+    return text;
+}
+
 }  // namespace
 
 int runRun(const std::vector<std::string>& words) {
@@ -106,6 +113,9 @@ int runRun(const std::vector<std::string>& words) {
     std::cout << "run: " << s.frameMs.size() << " frames on " << s.renderer << (s.walls ? ", walls" : ", geometry only")
               << "; median frame " << display::median(s.frameMs) << " ms; worst error " << s.worstErrorDeg << " deg ("
               << s.worstErrorPx << " px); page-ins " << s.pageIns << ", misses " << s.misses << "\n"
+              << "run: first frame after " << seconds(s.firstFrameSeconds) << " s (scene loaded at "
+              << seconds(s.sceneSeconds) << " s, walls ready at " << seconds(s.wallsSeconds)
+              << " s, walkthrough ready at " << seconds(s.readySeconds) << " s)\n"
               << (o.out / "frames.csv").string() << "\n";
     return 0;
 }

@@ -134,6 +134,7 @@ int runTrack(const std::vector<std::string>& words) {
     const double rate = args.number("rate", 90.0, 1.0, 10000.0);
     const double seconds = args.number("seconds", 10.0, 0.0, 86400.0);
     const auto source = input::makeTracker(spec, context);
+    if (source->isLive()) std::cerr << "track: " << source->describe() << std::endl;  // the bound port, for senders
     const bool untilEnd = dynamic_cast<input::ReplaySource*>(source.get()) && !args.has("seconds");
     std::unique_ptr<input::Recorder> recorder;
     if (auto file = args.get("record")) recorder = std::make_unique<input::Recorder>(*file, spec);

@@ -58,6 +58,35 @@ struct Witness {
     glm::dvec3 point{0.0};  // for Above: a rectangle point seeing [a, b] at more than t
 };
 
+// The branch and bound below splits the circle into kStart intervals, then halves them; an
+// interval at level k has half-width kPi / kStart / 2^k. Its centre's cosine and sine are carried
+// down by the angle-addition formulas with these tabulated values, not recomputed: the planner
+// spends most of its time here, and the rounding this adds (a few ulps per level) is far below
+// decide()'s eps of 1e-12 of the scene's size.
+constexpr int kStart = 32;
+constexpr int kLevels = 64;  // half-widths down to kPi / 32 / 2^63, below decide()'s 1e-15 floor
+
+struct HalfTable {
+    double half[kLevels], sinHalf[kLevels], cosHalf[kLevels];
+    double startCos[kStart], startSin[kStart];
+    HalfTable() {
+        for (int k = 0; k < kLevels; ++k) {
+            half[k] = kPi / kStart / std::ldexp(1.0, k);
+            sinHalf[k] = std::sin(half[k]);
+            cosHalf[k] = std::cos(half[k]);
+        }
+        for (int i = 0; i < kStart; ++i) {
+            startCos[i] = std::cos((i + 0.5) * 2 * kPi / kStart);
+            startSin[i] = std::sin((i + 0.5) * 2 * kPi / kStart);
+        }
+    }
+};
+
+const HalfTable& halfTable() {
+    static const HalfTable table;
+    return table;
+}
+
 // Is the angle [a, b] subtends at every point of the rectangle at most t (t in (0, pi/2])?
 Witness decide(const Rect& r, glm::dvec3 a, glm::dvec3 b, double t) {
     const double len = glm::length(b - a);
@@ -68,30 +97,33 @@ Witness decide(const Rect& r, glm::dvec3 a, glm::dvec3 b, double t) {
     const double radius = len / (2.0 * std::sin(t));
     const double rho = t >= kHalfPi ? 0.0 : len / (2.0 * std::tan(t));
     const double eps = 1e-12 * (radius + glm::length(mid) + r.width + r.height);
-    struct Interval { double centre, half; };
+    const HalfTable& table = halfTable();
+    struct Interval { double cs, sn; int level; };  // cos and sin of the centre; half = table.half[level]
     std::vector<Interval> stack;
-    constexpr int kStart = 32;
-    for (int i = 0; i < kStart; ++i) stack.push_back({(i + 0.5) * 2 * kPi / kStart, kPi / kStart});
+    for (int i = 0; i < kStart; ++i) stack.push_back({table.startCos[i], table.startSin[i], 0});
     int budget = 200000;
     bool unknown = false;
     while (!stack.empty()) {
         const Interval iv = stack.back();
         stack.pop_back();
-        const double cs = std::cos(iv.centre), sn = std::sin(iv.centre);
+        const double cs = iv.cs, sn = iv.sn;
         const glm::dvec3 c = mid + rho * (cs * m1 + sn * m2);
         const glm::dvec3 q = nearestOnRect(r, c);
         const double dist = glm::length(c - q);
         if (dist < radius - eps) return {Decision::Above, q};
         // Lower bound over the interval from convexity of the distance (see the top comment).
         const double slope = glm::dot(c - q, rho * (cs * m2 - sn * m1)) / dist;
-        const double lower = dist - std::abs(slope) * std::sin(iv.half) - rho * (1 - std::cos(iv.half));
+        const double lower = dist - std::abs(slope) * table.sinHalf[iv.level] - rho * (1 - table.cosHalf[iv.level]);
         if (lower > radius + eps) continue;
-        if (--budget <= 0 || iv.half < 1e-15 || rho == 0.0) {
+        if (--budget <= 0 || iv.level + 1 >= kLevels || table.half[iv.level] < 1e-15 || rho == 0.0) {
             unknown = true;
             continue;
         }
-        stack.push_back({iv.centre - 0.5 * iv.half, 0.5 * iv.half});
-        stack.push_back({iv.centre + 0.5 * iv.half, 0.5 * iv.half});
+        // The children's centres lie half a child width either side: centre -+ half[level + 1].
+        const int k = iv.level + 1;
+        const double ch = table.cosHalf[k], sh = table.sinHalf[k];
+        stack.push_back({cs * ch + sn * sh, sn * ch - cs * sh, k});
+        stack.push_back({cs * ch - sn * sh, sn * ch + cs * sh, k});
     }
     return {unknown ? Decision::Unknown : Decision::Below, {}};
 }

@@ -3,6 +3,7 @@
 #include "config/error.h"
 #include "config/json_reader.h"
 #include "walls/angular_error.h"
+#include "walls/parallel_for.h"
 #include "walls/zone_layout.h"
 
 #include <algorithm>
@@ -95,7 +96,8 @@ Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options) {
             plan.sides.push_back(planSide(plan, in));
         }
     }
-    for (Texture& t : plan.textures) {
+    parallelFor(int(plan.textures.size()), [&](int i) {
+        Texture& t = plan.textures[i];
         const display::ScreenQuad& q = plan.walls[t.wall].quad;
         t.maxError = zoneMaxError({t.validRegion, d.headHeightRange}, t.samplingPoint, q);
         const double texel = texelSize(nearestDistance(t, q), options.pixelsPerDegree);
@@ -105,7 +107,7 @@ Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options) {
             return int(std::clamp(std::ceil(metres / texel), 1.0, double(options.maxResolution)));
         };
         t.resolution = {texels(b.width), texels(b.height)};
-    }
+    });
     return plan;
 }
 

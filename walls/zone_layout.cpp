@@ -1,5 +1,7 @@
 #include "walls/zone_layout.h"
 
+#include "walls/parallel_for.h"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -11,6 +13,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kMinPieceArea = 1e-8;  // m²; slivers from clipping are dropped
 constexpr double kNearerSampling[] = {0.75, 0.5};  // share of the core kept, nearest the wall
 constexpr double kMaxBorderTries = 32;             // geometry borders tried after the first
+constexpr double kCutPrecision = 1e-3;             // metres: column borders of the planned rows
 
 struct Row {
     double a = 0, b = 0;
@@ -60,10 +63,13 @@ void extentOf(const Polygon2& p, glm::dvec2& lo, glm::dvec2& hi) {
     for (const glm::dvec2& v : p) lo = glm::min(lo, v), hi = glm::max(hi, v);
 }
 
-// Greedy columns of maximal width (bisection to 1 mm); nullopt when it leaves a remainder
-// that is neither valid whole nor splittable into columns of minZoneSize.
-std::optional<Row> greedyColumns(const Context& c, Row row, double sLo, double sHi) {
-    double left = -kInf, leftPos = sLo;
+// Greedy columns of maximal width: from the previous column's width, doubled while valid, then
+// bisected to `precision` metres; nullopt when it leaves a remainder that is neither valid
+// whole nor splittable into columns of minZoneSize. Starting from the previous width (widths
+// change slowly along a row) makes a column cost a few checks more than log2(width /
+// precision), not log2(row width / precision): a 2 km row no longer costs 21 checks a column.
+std::optional<Row> greedyColumns(const Context& c, Row row, double sLo, double sHi, double precision) {
+    double left = -kInf, leftPos = sLo, width = c.minSize;
     for (;;) {
         glm::dvec3 sample;
         if (c.valid(row, left, kInf, &sample)) {
@@ -73,14 +79,27 @@ std::optional<Row> greedyColumns(const Context& c, Row row, double sLo, double s
         double good = leftPos + c.minSize, bad = sHi - c.minSize;
         glm::dvec3 goodSample, trial;
         if (good > bad || !c.valid(row, left, good, &goodSample)) return std::nullopt;
-        if (c.valid(row, left, bad, &trial)) good = bad, goodSample = trial;
-        while (bad - good > 1e-3) {
+        for (double step = width;; step *= 2) {
+            const double probe = leftPos + step;
+            if (probe <= good) continue;
+            if (probe >= bad) {
+                if (c.valid(row, left, bad, &trial)) good = bad, goodSample = trial;
+                break;
+            }
+            if (!c.valid(row, left, probe, &trial)) {
+                bad = probe;
+                break;
+            }
+            good = probe, goodSample = trial;
+        }
+        while (bad - good > precision) {
             const double mid = 0.5 * (good + bad);
             if (c.valid(row, left, mid, &trial)) good = mid, goodSample = trial;
             else bad = mid;
         }
         row.cuts.push_back(good);
         row.samples.push_back(goodSample);
+        width = good - leftPos;
         left = leftPos = good;
     }
 }
@@ -98,12 +117,12 @@ std::optional<Row> equalColumns(const Context& c, Row row, double sLo, double sH
 
 // The row's columns: greedy widths, or when the greedy cut leaves an unusable remainder, the
 // fewest equal columns that are all valid.
-std::optional<Row> planRow(const Context& c, const Row& row) {
+std::optional<Row> planRow(const Context& c, const Row& row, double precision = kCutPrecision) {
     const Polygon2 band = clipBox(c.cell, {-kInf, row.a}, {kInf, row.b});
     glm::dvec2 lo, hi;
     extentOf(band, lo, hi);
     if (band.empty()) lo.x = hi.x = 0;
-    if (auto greedy = greedyColumns(c, row, lo.x, hi.x)) return greedy;
+    if (auto greedy = greedyColumns(c, row, lo.x, hi.x, precision)) return greedy;
     // Counts grow by a quarter from 8 on, so a wide cell costs O(columns) checks, not O(columns²).
     const double most = std::floor((hi.x - lo.x) / c.minSize);
     for (int n = 2; n <= most; n = n < 8 ? n + 1 : n + n / 4)
@@ -120,19 +139,26 @@ Row makeRow(const Context& c, double a, double b, bool geometryBelow, bool first
 }
 
 // Rows from `start` to dMax; each row's depth is the candidate covering the most depth per
-// texture.
+// texture (candidates minSize * 2^k, planned in parallel; ties go to the deeper row).
 std::optional<std::vector<Row>> planRows(const Context& c, double start, bool geometryBelow) {
     std::vector<Row> rows;
     for (double a = start; a < c.dMax;) {
-        std::optional<Row> best;
-        double bestScore = -1;
+        std::vector<double> ends;
         for (double extent = c.minSize;; extent *= 2) {
             double b = std::min(c.dMax, a + extent);
             if (c.dMax - b < c.minSize) b = c.dMax;
-            auto row = planRow(c, makeRow(c, a, b, geometryBelow, rows.empty()));
-            const double score = row ? (b - a) / double(row->samples.size()) : -1;
-            if (row && score >= bestScore) best = row, bestScore = score;
+            ends.push_back(b);
             if (b >= c.dMax) break;
+        }
+        std::vector<std::optional<Row>> candidates(ends.size());
+        parallelFor(int(ends.size()), [&](int i) {
+            candidates[i] = planRow(c, makeRow(c, a, ends[i], geometryBelow, rows.empty()));
+        });
+        std::optional<Row> best;
+        double bestScore = -1;
+        for (std::size_t i = 0; i < ends.size(); ++i) {
+            const double score = candidates[i] ? (ends[i] - a) / double(candidates[i]->samples.size()) : -1;
+            if (candidates[i] && score >= bestScore) best = std::move(candidates[i]), bestScore = score;
         }
         if (!best) return std::nullopt;
         rows.push_back(*best);
@@ -141,9 +167,11 @@ std::optional<std::vector<Row>> planRows(const Context& c, double start, bool ge
     return rows;
 }
 
+// Only feasibility counts here, so column borders are bisected to a tenth of minZoneSize, not
+// to kCutPrecision (a border search plans this row about twenty times).
 bool firstRowFeasible(const Context& c, double d) {
     const double b = c.dMax - d < 2 * c.minSize ? c.dMax : d + c.minSize;
-    return planRow(c, makeRow(c, d, b, true, true)).has_value();
+    return planRow(c, makeRow(c, d, b, true, true), std::max(kCutPrecision, 0.1 * c.minSize)).has_value();
 }
 
 struct Layout {

@@ -85,19 +85,24 @@ walls::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scen
 }  // namespace
 
 RunSummary runSession(const RunOptions& o) {
+    const auto start = std::chrono::steady_clock::now();
+    auto since = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     app::validate(o);
     const display::Display display(o.display);
     scenes::SceneDescription description;
     const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description);
+    const double sceneSeconds = since();
     std::unique_ptr<app::Cluster> cluster = app::openCluster(o);
     const int rank = cluster ? cluster->rank() : 0;
     // Only rank 0 reads input (a network tracker binds its port once).
     std::unique_ptr<app::RunInput> input = rank == 0 ? std::make_unique<app::RunInput>(o, scene, description) : nullptr;
+    if (input && !input->liveTrackerLine().empty()) std::cerr << "run: " << input->liveTrackerLine() << std::endl;
     const auto context = makeContext(o, display);
 
     std::optional<walls::WallSetup> setup;
     if (o.walls && !description.walls.empty()) setup = prepareWallsOnce(o, scene, description, *context, cluster.get());
     const int textureCount = setup ? static_cast<int>(setup->plan.textures.size()) : 0;
+    const double wallsSeconds = since();
     gl::WalkthroughOptions options;
     options.synchronousPaging = o.synchronousPaging;
     options.textureBudgetMB = o.textureBudgetMB;
@@ -110,6 +115,7 @@ RunSummary runSession(const RunOptions& o) {
 
     std::unique_ptr<RunOutput> output = rank == 0 ? std::make_unique<RunOutput>(o.out, description, display) : nullptr;
     RunSummary summary;
+    summary.sceneSeconds = sceneSeconds, summary.wallsSeconds = wallsSeconds, summary.readySeconds = since();
     summary.renderer = context->info().renderer;
     std::optional<display::FrameTimeBudget> frameBudget;
     if (o.frameBudgetMs > 0.0) frameBudget.emplace(o.frameBudgetMs);
@@ -121,6 +127,7 @@ RunSummary runSession(const RunOptions& o) {
         if (frameBudget) in.triangleBudget = frameBudget->budget();
         double syncMs = cluster ? app::receiveFrame(*cluster, in) : 0.0;
         walls::FrameResult r = walkthrough.renderFrame(in);
+        if (i == 0) summary.firstFrameSeconds = since();
         if (cluster) syncMs = app::combineFrame(*cluster, r, syncMs, screens);
         if (frameBudget) frameBudget->update(r.frameMs, r.geometryTriangles);  // rank 0: the slowest rank's time
         if (!output) continue;

@@ -1,4 +1,5 @@
 #include "config/display_config.h"
+#include "config/display_limits.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -184,6 +185,30 @@ TEST(DisplayConfig, MagnitudesAreWithinAStatedRange) {
     c.screens[0].upperLeft.y = 1e300;
     EXPECT_THAT([&] { validateDisplayConfig(c, "code"); },
                 ThrowsMessage<Error>(HasSubstr("code: screens[0] 'front': corner [-1.5, 1e+300, -1.5] is out of range")));
+}
+
+// Issue 18: the plausible tracking volume is a configuration key; without it the default box
+// around the screens applies.
+TEST(DisplayConfig, TrackingVolumeIsAKeyWithItsRules) {
+    const DisplayConfig set = load(withScreens(kScreen, R"(, "tracking": {"volume": [[-2, 0, -2], [2, 2.5, 2]]})"));
+    ASSERT_TRUE(set.tracking.volume);
+    EXPECT_EQ(trackingVolumeOf(set).min, glm::dvec3(-2, 0, -2));
+    EXPECT_EQ(trackingVolumeOf(set).max, glm::dvec3(2, 2.5, 2));
+    const DisplayConfig unset = load(withScreens(kScreen));
+    EXPECT_FALSE(unset.tracking.volume);
+    EXPECT_EQ(trackingVolumeOf(unset).min, glm::dvec3(-3.5, -2, -3.5));
+    const BadCase cases[] = {
+        {"one corner", withScreens(kScreen, R"(, "tracking": {"volume": [[0, 0, 0]]})"),
+         "lab.json: tracking.volume: expected an array of 2 elements, got 1"},
+        {"inverted", withScreens(kScreen, R"(, "tracking": {"volume": [[0, 3, 0], [1, 2, 1]]})"),
+         "lab.json: tracking.volume: expected the first corner below the second on every axis, got y 3 >= 2"},
+        {"far away", withScreens(kScreen, R"(, "tracking": {"volume": [[0, 0, 0], [1, 1, 1e9]]})"),
+         "lab.json: tracking.volume[1]: expected coordinates within 1000 m, got 1e+09 m"},
+    };
+    for (const BadCase& c : cases) {
+        SCOPED_TRACE(c.name);
+        EXPECT_THAT([&] { load(c.json); }, ThrowsMessage<Error>(HasSubstr(c.message)));
+    }
 }
 
 TEST(DisplayConfig, JsonNestedThousandsDeepIsRefused) {

@@ -1,22 +1,18 @@
 // End to end: this process sends DTrack packets over loopback UDP while a child
 // `cavewall track` listens; the child's CSV must show the sent head after calibration.
 #include "input/network_source.h"
+#include "tests/cli/run_cli.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <csignal>
 #include <cstdlib>
-#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <thread>
-
-extern char** environ;
 
 namespace cavewall::input {
 namespace {
@@ -28,58 +24,38 @@ std::filesystem::path outputDir() {
     return p;
 }
 
-// Sends `packet(i)` at about 100 Hz (a tracker's rate) until the child exits, so however late
-// the child starts listening on a loaded machine it gets packets for its whole run; kills it
-// after `limit` (the test then fails, never hangs). Returns the exit code, -1 on timeout.
+// Sends `packet(i)` at about 100 Hz (a tracker's rate) until the child exits; kills it after
+// `limit` (the test then fails, never hangs). Returns the child's result.
 template <class Packet>
-int sendUntilExit(pid_t pid, std::chrono::seconds limit, Packet packet) {
+test::CliResult sendUntilExit(test::CliProcess& child, std::chrono::seconds limit, Packet packet) {
     const auto deadline = std::chrono::steady_clock::now() + limit;
-    int status = 0;
-    for (int i = 0; waitpid(pid, &status, WNOHANG) == 0; ++i) {
-        if (std::chrono::steady_clock::now() > deadline) {
-            kill(pid, SIGKILL);
-            waitpid(pid, &status, 0);
-            ADD_FAILURE() << "cavewall track did not finish in time";
-            return -1;
-        }
+    for (int i = 0; !child.exited() && std::chrono::steady_clock::now() < deadline; ++i) {
         packet(i);
         std::this_thread::sleep_for(std::chrono::milliseconds(10));  // the tracker's pace
     }
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return child.finish(std::chrono::seconds(5));
 }
 
 TEST(TrackCli, DTrackSenderDrivesTheHeadThroughCalibration) {
     const auto dir = outputDir();
-    int port = 0;
-    {
-        UdpReceiver probe("127.0.0.1", 0);  // ask the OS for a free port, then free it for the child
-        port = probe.port();
-    }
     // The tracker's origin is 0.1 m above and 0.5 m in front of the cave origin.
     std::ofstream(dir / "lab.json") << R"({"screens": [{"name": "front", "lowerLeft": [-1.5, 0, -1.5],
         "lowerRight": [1.5, 0, -1.5], "upperLeft": [-1.5, 3, -1.5], "resolution": [64, 64]}],
         "tracking": {"caveFromTracker": [[1,0,0,0],[0,1,0,0.1],[0,0,1,-0.5],[0,0,0,1]]}})";
-    const std::string spec = "dtrack:udp://127.0.0.1:" + std::to_string(port);
-    const std::string csv = (dir / "head.csv").string(), display = (dir / "lab.json").string(), log = (dir / "stderr.txt").string();
-    std::vector<std::string> words = {CAVEWALL_EXE, "track", "--tracker", spec, "--display", display,
-                                      "--seconds", "2.5", "--rate", "100", "--csv", csv};
-    std::vector<char*> argv;
-    for (auto& w : words) argv.push_back(w.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    pid_t pid = 0;
-    ASSERT_EQ(posix_spawn(&pid, CAVEWALL_EXE, &actions, nullptr, argv.data(), environ), 0);
-    posix_spawn_file_actions_destroy(&actions);
+    const std::string csv = (dir / "head.csv").string(), display = (dir / "lab.json").string();
+    // Port 0: the child binds a free port and names it on stderr before it starts polling.
+    test::CliProcess child({"track", "--tracker", "dtrack:udp://127.0.0.1:0", "--display", display, "--seconds", "2.5",
+                            "--rate", "100", "--csv", csv});
+    const auto listening = child.waitForLine(std::regex("listening on 127\\.0\\.0\\.1:([0-9]+)"), std::chrono::seconds(60));
+    ASSERT_TRUE(listening) << child.finish(std::chrono::seconds(1)).err;
+    const int port = std::stoi((*listening)[1]);
     // Head (body 1) at (100, 1600, -200) mm at 100 Hz while the child runs, with a garbage
     // datagram every 10th.
-    ASSERT_EQ(sendUntilExit(pid, std::chrono::seconds(60), [&](int i) {
-                  sendUdp("127.0.0.1", port,
-                          "fr " + std::to_string(i) + "\n6d 1 [1 1.0][100 1600 -200 0 0 0][1 0 0 0 1 0 0 0 1]\n");
-                  if (i % 10 == 0) sendUdp("127.0.0.1", port, "\x7f garbage");
-              }),
-              0);
+    const test::CliResult r = sendUntilExit(child, std::chrono::seconds(60), [&](int i) {
+        sendUdp("127.0.0.1", port, "fr " + std::to_string(i) + "\n6d 1 [1 1.0][100 1600 -200 0 0 0][1 0 0 0 1 0 0 0 1]\n");
+        if (i % 10 == 0) sendUdp("127.0.0.1", port, "\x7f garbage");
+    });
+    ASSERT_EQ(r.exitCode, 0) << r.err;
     std::ifstream in(csv);
     std::string line, lastTracked;
     std::getline(in, line);
@@ -95,10 +71,8 @@ TEST(TrackCli, DTrackSenderDrivesTheHeadThroughCalibration) {
     EXPECT_NEAR(v[1], 0.1, 1e-3);
     EXPECT_NEAR(v[2], 1.7, 1e-3);
     EXPECT_NEAR(v[3], -0.7, 1e-3);
-    std::stringstream err;
-    err << std::ifstream(log).rdbuf();
-    // Garbage was counted, not fatal (some early datagrams may arrive before the child listens).
-    EXPECT_THAT(err.str(), ::testing::MatchesRegex("(.|\n)*malformed [1-9][0-9]*(.|\n)*"));
+    // Garbage was counted, not fatal.
+    EXPECT_THAT(r.err, ::testing::MatchesRegex("(.|\n)*malformed [1-9][0-9]*(.|\n)*"));
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <thread>
 
@@ -97,6 +98,16 @@ TEST(RunCli, WritesFramesWallsAndImagesOnTheSmallPlant) {
     for (const char* file : {"frames/00000/front.png", "frames/00000/foldout.png", "frames/00020/floor.png"})
         EXPECT_TRUE(fs::exists(out / file)) << file;
     EXPECT_THAT(r.out, HasSubstr("frames.csv"));
+    // Start-up is reported in order: scene, walls, walkthrough, first frame (issue 15).
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.out, m, std::regex("first frame after ([0-9.]+) s \\(scene loaded at ([0-9.]+) s, "
+                                                         "walls ready at ([0-9.]+) s, walkthrough ready at ([0-9.]+) s\\)")))
+        << r.out;
+    const double first = std::stod(m[1]), scene = std::stod(m[2]), walls = std::stod(m[3]), ready = std::stod(m[4]);
+    EXPECT_GT(scene, 0.0);
+    EXPECT_LE(scene, walls);
+    EXPECT_LE(walls, ready);
+    EXPECT_LE(ready, first);
 }
 
 TEST(RunCli, TransitionWarpRunsAndReportsWarpFallbacks) {
@@ -276,27 +287,26 @@ TEST(RunCli, ReplayReproducesPosesAndFramesExactly) {
 
 TEST(RunCli, DTrackSenderOverLoopbackDrivesTheHead) {
     const fs::path out = outputDir("dtrack");
-    int port = 0;
-    {
-        input::UdpReceiver probe("127.0.0.1", 0);  // a free port, freed again for the child
-        port = probe.port();
-    }
     // The tracker origin is 0.1 m above and 0.5 m in front of the cave origin.
     std::ofstream(out / "lab.json") << R"({"screens": [{"name": "front", "lowerLeft": [-1.5, 0, -1.5],
         "lowerRight": [1.5, 0, -1.5], "upperLeft": [-1.5, 3, -1.5], "resolution": [32, 32]}],
         "tracking": {"caveFromTracker": [[1,0,0,0],[0,1,0,0.1],[0,0,1,-0.5],[0,0,0,1]]}})";
+    const std::string glb = (smallPlant().parent_path() / "plant.glb").string();
+    // Port 0: the child binds a free port and names it on stderr before its first frame.
+    CliProcess child({"run", "--scene", glb, "--display", (out / "lab.json").string(), "--tracker",
+                      "dtrack:udp://127.0.0.1:0", "--frames", "120", "--nav", "none", "--out", out.string()});
+    const auto listening = child.waitForLine(std::regex("listening on 127\\.0\\.0\\.1:([0-9]+)"), std::chrono::seconds(120));
+    ASSERT_TRUE(listening) << child.finish(std::chrono::seconds(1)).err;
+    const int port = std::stoi((*listening)[1]);
     std::atomic<bool> stop{false};
-    // Head (body 1) at (100, 1600, -200) mm, 100 packets per second until the run ends.
+    // Head (body 1) at (100, 1600, -200) mm at a tracker's 100 Hz until the run ends.
     std::thread sender([&] {
         for (int i = 0; !stop; ++i) {
             input::sendUdp("127.0.0.1", port, "fr " + std::to_string(i) + "\n6d 1 [1 1.0][100 1600 -200 0 0 0][1 0 0 0 1 0 0 0 1]\n");
-            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));  // the tracker's pace
         }
     });
-    const std::string glb = (smallPlant().parent_path() / "plant.glb").string();
-    const CliResult r = runCavewall({"run", "--scene", glb, "--display", (out / "lab.json").string(), "--tracker",
-                                     "dtrack:udp://127.0.0.1:" + std::to_string(port), "--frames", "120", "--nav",
-                                     "none", "--out", out.string()});
+    const CliResult r = child.finish(std::chrono::seconds(300));
     stop = true;
     sender.join();
     ASSERT_EQ(r.exitCode, 0) << r.err;

@@ -89,6 +89,33 @@ TEST(GeneratePlant, ContentStaysInsideOneCellForManySeeds) {
     }
 }
 
+// Issue 15: larger targets make the hall longer (8 bays of 10 m per 2 M triangles), so each
+// cell holds about the same geometry at every size, and parts stay shared meshes.
+TEST(GeneratePlant, LargerTargetsMakeALongerHallWithCellsOfTheSameWeight) {
+    const GeneratedScene small = generatePlant({1, 2'000'000});
+    const GeneratedScene large = generatePlant({1, 6'000'000});
+    EXPECT_GE(large.scene.triangleCount(), 6'000'000u);
+    EXPECT_EQ(large.description.cells.size(), 3u * 24u);              // 24 bays of 3 cells
+    EXPECT_EQ(large.description.walls.size(), 3u * 23u + 2u * 24u);  // 69 cross walls, 48 along
+    EXPECT_NEAR(large.scene.bounds().size().x, 3.0 * small.scene.bounds().size().x, 1.0);
+    const double perCellSmall = double(small.scene.triangleCount()) / double(small.description.cells.size());
+    const double perCellLarge = double(large.scene.triangleCount()) / double(large.description.cells.size());
+    EXPECT_NEAR(perCellLarge / perCellSmall, 1.0, 0.15);
+    std::size_t stored = 0;
+    for (const Mesh& m : large.scene.meshes) stored += m.triangleCount();
+    EXPECT_LT(stored * 20, large.scene.triangleCount());
+    // The walk path reaches the end bays, and content still stays inside one cell.
+    EXPECT_NEAR(large.description.walkPath[1].x, 0.5 * large.scene.bounds().size().x - 3.0, 1.0);
+    expectWalkPathClear(large);
+    for (const Object& o : large.scene.objects) {
+        if (o.role != Role::Content) continue;
+        const Bounds& b = o.worldBounds;
+        const int c = findCell(large.description.cells, {b.min.x, 0, b.min.z});
+        EXPECT_GE(c, 0) << o.name;
+        EXPECT_EQ(findCell(large.description.cells, {b.max.x, 0, b.max.z}), c) << o.name;
+    }
+}
+
 TEST(GenerateHouse, DefaultHasRoomsPortalsAndRealWalls) {
     const GeneratedScene g = generateHouse({});
     EXPECT_GE(g.scene.triangleCount(), 200'000u);

@@ -102,6 +102,30 @@ TEST_F(BakeCacheTest, DamagedFileIsReBakedAlone) {
     }
 }
 
+// Issue 18: after two texture files were swapped, a bake reported every texture done but its
+// manifest listed one fewer: the manifest written after the first re-bake (without the second)
+// was left on disk because the final one equalled the manifest read at the start. Both are
+// re-made, listed, and valid.
+TEST_F(BakeCacheTest, SwappedFilesAreReMadeAndAllListed) {
+    const BakeResult first = bakeScene(request);
+    const int n = static_cast<int>(first.manifest.textures.size());
+    ASSERT_GT(n, 2);
+    const std::filesystem::path a = first.folder / first.manifest.textures[0].file;
+    const std::filesystem::path b = first.folder / first.manifest.textures[1].file;
+    const std::filesystem::path tmp = first.folder / "swap.tmp";
+    std::filesystem::rename(a, tmp);
+    std::filesystem::rename(b, a);
+    std::filesystem::rename(tmp, b);
+    const BakeResult again = bakeScene(request);
+    EXPECT_EQ(again.baked + again.reused, n) << again.baked << " baked, " << again.reused << " reused, "
+                                                            << again.linked << " linked";
+    ASSERT_EQ(static_cast<int>(again.manifest.textures.size()), n);
+    const walls::BakeManifest onDisk = walls::readManifest(again.folder);
+    ASSERT_EQ(static_cast<int>(onDisk.textures.size()), n);
+    for (const walls::BakedTexture& t : onDisk.textures) EXPECT_TRUE(walls::textureFileValid(again.folder, t)) << t.file;
+    EXPECT_EQ(manifestToJson(onDisk), manifestToJson(first.manifest));
+}
+
 TEST_F(BakeCacheTest, ChangedAlphaGetsANewKey) {
     const BakeResult first = bakeScene(request);
     request.plan.alphaDeg = 20.0;

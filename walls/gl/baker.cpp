@@ -139,7 +139,7 @@ private:
     BakeResult _result;
     std::map<int, walls::BakedTexture> _done;   // finished entries by id
     std::vector<Item> _pending;
-    walls::BakeManifest _listed;                 // what the folder held before
+    walls::BakeManifest _listed;                 // what the folder's manifest.json lists
 };
 
 BakeResult Bake::run() {
@@ -263,9 +263,10 @@ void Bake::writeManifestNow(bool force) {
     _lastManifest = now;
     _result.manifest.textures.clear();
     for (const auto& [id, entry] : _done) _result.manifest.textures.push_back(entry);
-    if (_result.manifest == _listed) return;
+    if (_result.manifest == _listed) return;  // what the folder holds already
     ensureFolder(_result.folder);
     walls::writeManifest(_result.folder, _result.manifest);
+    _listed = _result.manifest;  // a partial manifest written mid-bake is what the folder holds now
 }
 
 void Bake::report() {

@@ -1,0 +1,16 @@
+#pragma once
+// Planning work spread over the machine's cores (the planner's row candidates and texture
+// errors are independent and pure).
+
+#include <functional>
+
+namespace cavewall::walls {
+
+// Calls fn(i) for every i in [0, n), on up to std::thread::hardware_concurrency() threads (the
+// calling thread is one of them), and returns when all are done. fn must be safe to call
+// concurrently for different i; results must go to slots indexed by i, so the outcome does not
+// depend on the order. The first exception thrown by fn is rethrown here after every thread
+// has stopped.
+void parallelFor(int n, const std::function<void(int)>& fn);
+
+}  // namespace cavewall::walls
