@@ -15,6 +15,7 @@ BatchKey batchKey(const scenes::Material& m, bool flipWinding, bool cullBackFace
     const scenes::TextureRef& t = m.baseColorTexture;
     BatchKey k;
     k.faces = faceMode(m.doubleSided || !cullBackFaces, flipWinding);
+    k.alphaTest = m.alphaMode == scenes::AlphaMode::Mask;
     if (t.image >= 0 && t.image < imageCount) {
         k.texture = t.image;
         k.sampler = static_cast<int>(t.wrapS) * 3 + static_cast<int>(t.wrapT);

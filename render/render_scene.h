@@ -22,11 +22,15 @@ enum class FaceMode : std::uint8_t { CullCcw, CullCw, BothCcw, BothCw };
 FaceMode faceMode(bool doubleSided, bool flipWinding);
 
 // Everything two draws must share to go into one multi-draw, as plain integers: the
-// base-colour texture and its sampler, and the face mode. Ordered, so batches sort by it.
+// base-colour texture and its sampler, the face mode, and whether fragments are alpha-tested
+// (only alpha-MASK materials are: the renderer draws them with a shader variant that may
+// discard, and everything else with one that never does, so the rasteriser can reject
+// hidden fragments before shading). Ordered, so batches sort by it.
 struct BatchKey {
     int texture = -1;  // Scene::images index of the base-colour texture, -1 = none
     int sampler = 0;   // wrapS * 3 + wrapT (scenes::Wrap values); 0 without a texture
     FaceMode faces = FaceMode::CullCcw;
+    bool alphaTest = false;  // the material's alpha mode is Mask
     auto operator<=>(const BatchKey&) const = default;
 };
 

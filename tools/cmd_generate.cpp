@@ -1,5 +1,7 @@
 #include "config/error.h"
 #include "scenes/generate.h"
+#include "scenes/glb_writer.h"
+#include "scenes/obj_writer.h"
 #include "tools/args.h"
 #include "tools/commands.h"
 
@@ -8,7 +10,7 @@
 namespace cavewall::tools {
 
 const char* const kGenerateUsage =
-    "usage: cavewall generate plant|house --out DIR [--seed N] [--triangles N]\n"
+    "usage: cavewall generate plant|house|boxes --out DIR [--seed N] [--triangles N]\n"
     "\n"
     "Writes DIR/<plant|house>.glb (glTF 2.0, opens in any viewer) and DIR/scene.json (cells,\n"
     "virtual walls or portals, real walls, walk path), deterministically from --seed (default 0):\n"
@@ -25,21 +27,44 @@ const char* const kGenerateUsage =
     "  plant  an 80 m x 40 m production hall cut by 37 virtual walls into 24 cells (rows N, M, S\n"
     "         of 8 cells 10 m wide; the walk path runs along the aisles in rows N and S); longer\n"
     "         for larger targets (32000000: 1.28 km, 384 cells)\n"
-    "  house  six rooms with real walls; every doorway is a portal, every room a cell\n";
+    "  house  six rooms with real walls; every doorway is a portal, every room a cell\n"
+    "  boxes  a 60 m x 8 m x 30 m hall of random axis-aligned boxes (24 vertices, 12 triangles\n"
+    "         each, per-face normals, one mesh, one primitive; default 1000000 triangles) for\n"
+    "         comparing draw paths with other viewers: writes DIR/boxes.glb and DIR/boxes.obj\n"
+    "         (the same mesh for OBJ readers such as osgconv), no scene.json; the last line\n"
+    "         printed is the .glb path (`cavewall draw-bench` takes it)\n";
+
+namespace {
+
+int writeBoxHall(const scenes::GenerateOptions& options, const std::filesystem::path& dir) {
+    const scenes::Scene scene = scenes::generateBoxHall(options);
+    scenes::writeGlb(scene, dir / "boxes.glb");
+    scenes::writeObj(scene, dir / "boxes.obj");
+    const scenes::Bounds b = scene.bounds();
+    std::cout << "boxes: " << scene.meshes[0].positions.size() / 24 << " boxes, " << scene.triangleCount()
+              << " triangles, bounds [" << b.min.x << ", " << b.min.y << ", " << b.min.z << "] .. [" << b.max.x << ", "
+              << b.max.y << ", " << b.max.z << "] m\n"
+              << (dir / "boxes.obj").string() << "\n"
+              << (dir / "boxes.glb").string() << "\n";
+    return 0;
+}
+
+}  // namespace
 
 int runGenerate(const std::vector<std::string>& words) {
     const Args args(words, {});
     args.expectFlags({"out", "seed", "triangles"});
-    const std::string kind = args.positional(0, "the scene kind (plant or house)");
+    const std::string kind = args.positional(0, "the scene kind (plant, house or boxes)");
     if (args.positional().size() > 1)
-        throw Error("generate: unexpected argument '" + args.positional()[1] + "' (expected only plant or house)");
-    if (kind != "plant" && kind != "house")
-        throw Error("generate: unknown scene kind '" + kind + "' (expected plant or house)");
+        throw Error("generate: unexpected argument '" + args.positional()[1] + "' (expected only plant, house or boxes)");
+    if (kind != "plant" && kind != "house" && kind != "boxes")
+        throw Error("generate: unknown scene kind '" + kind + "' (expected plant, house or boxes)");
     scenes::GenerateOptions options;
     options.seed = static_cast<std::uint64_t>(args.integer("seed", 0, 0, 2147483647L));
     // The plant grows by 10 m bays (8 per 2 M triangles, up to 512 bays: about 128 M drawn);
     // larger targets could not be met, so they are refused. The house grows by detail only.
     options.triangles = static_cast<std::size_t>(args.integer("triangles", 0, 0, 128'000'000L));
+    if (kind == "boxes") return writeBoxHall(options, args.require("out"));
     scenes::GeneratedScene g = kind == "plant" ? scenes::generatePlant(options) : scenes::generateHouse(options);
     if (g.scene.triangleCount() < options.triangles)
         throw Error("--triangles: the " + kind + " reaches at most " + std::to_string(g.scene.triangleCount()) +

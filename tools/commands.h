@@ -34,6 +34,8 @@ int runRun(const std::vector<std::string>& args);
 extern const char* const kRunUsage;
 int runBake(const std::vector<std::string>& args);
 extern const char* const kBakeUsage;
+int runDrawBench(const std::vector<std::string>& args);
+extern const char* const kDrawBenchUsage;
 #endif
 
 }  // namespace cavewall::tools

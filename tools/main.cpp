@@ -19,6 +19,7 @@ const Command kCommands[] = {
     {"render", "render one frame of a scene to PNG files (one per screen and eye, plus a fold-out)", kRenderUsage, runRender},
     {"demo", "walk cave4 through the generated plant with and without virtual walls (report.md)", kDemoUsage, runDemo},
     {"run", "walk through a scene with textured virtual walls: frames.csv, walls.csv, images", kRunUsage, runRun},
+    {"draw-bench", "time the draw path alone on osgviewer's home view (culling on and off)", kDrawBenchUsage, runDrawBench},
     {"bake", "bake the textures of every virtual wall into the cache (tiled MIP-mapped files + manifest)", kBakeUsage, runBake},
 #endif
 };
@@ -26,7 +27,7 @@ const Command kCommands[] = {
 void printHelp() {
     std::cout << "usage: cavewall <command> [options]\n"
                  "       cavewall <command> --help\n\ncommands:\n";
-    for (const Command& c : kCommands) std::cout << "  " << c.name << std::string(10 - std::strlen(c.name), ' ') << c.summary << "\n";
+    for (const Command& c : kCommands) std::cout << "  " << c.name << std::string(std::strlen(c.name) < 11 ? 11 - std::strlen(c.name) : 1, ' ') << c.summary << "\n";
 }
 
 int dispatch(int argc, char** argv) {

@@ -3,21 +3,67 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <utility>
 
 namespace cavewall::gl {
 
 namespace {
 
-void appendVertices(const scenes::Mesh& m, std::vector<GpuVertex>& out) {
+// The box of `values` as offset and extent (0 along a flat axis).
+template <int N>
+std::pair<glm::vec<N, double>, glm::vec<N, double>> box(const std::vector<glm::vec<N, float>>& values) {
+    glm::vec<N, double> lo(0.0), hi(0.0);
+    if (!values.empty()) lo = hi = glm::vec<N, double>(values[0]);
+    for (const auto& v : values) {
+        lo = glm::min(lo, glm::vec<N, double>(v));
+        hi = glm::max(hi, glm::vec<N, double>(v));
+    }
+    return {lo, hi - lo};
+}
+
+std::uint16_t unorm16(double v) {
+    return static_cast<std::uint16_t>(std::lround(std::clamp(v, 0.0, 1.0) * 65535.0));
+}
+
+// `v` - offset over extent, per component (0 along a flat axis).
+template <int N>
+std::uint16_t quantise(const glm::vec<N, float>& v, const glm::vec<N, double>& offset,
+                       const glm::vec<N, double>& extent, int c) {
+    return extent[c] > 0.0 ? unorm16((static_cast<double>(v[c]) - offset[c]) / extent[c]) : 0;
+}
+
+std::uint32_t snorm10(glm::vec3 n) {
+    std::uint32_t packed = 0;
+    for (int c = 0; c < 3; ++c) {
+        const auto q = static_cast<std::int32_t>(std::lround(std::clamp(static_cast<double>(n[c]), -1.0, 1.0) * 511.0));
+        packed |= (static_cast<std::uint32_t>(q) & 0x3ffu) << (10 * c);
+    }
+    return packed;
+}
+
+// Appends `m`'s vertices, storing the texture-coordinate set `texCoordSet`, and returns how to
+// decode them.
+template <typename Decode>
+Decode appendVertices(const scenes::Mesh& m, int texCoordSet, std::vector<GpuVertex>& out) {
+    const std::vector<glm::vec2>& uvs = texCoordSet == 1 ? m.texCoords1 : m.texCoords0;
+    const auto [offset, extent] = box<3>(m.positions);
+    const auto [uvOffset, uvExtent] = box<2>(uvs);
     for (std::size_t i = 0; i < m.positions.size(); ++i) {
         GpuVertex v;
-        v.position = m.positions[i];
-        if (!m.normals.empty()) v.normal = m.normals[i];
-        if (!m.texCoords0.empty()) v.texCoord0 = m.texCoords0[i];
-        if (!m.texCoords1.empty()) v.texCoord1 = m.texCoords1[i];
-        if (!m.colors.empty()) v.color = m.colors[i];
+        for (int c = 0; c < 3; ++c) v.position[c] = quantise<3>(m.positions[i], offset, extent, c);
+        if (!m.normals.empty()) v.normal = snorm10(m.normals[i]);
+        if (!uvs.empty())
+            for (int c = 0; c < 2; ++c) v.texCoord[c] = quantise<2>(uvs[i], uvOffset, uvExtent, c);
+        if (!m.colors.empty())
+            for (int c = 0; c < 4; ++c) v.color[c] = unorm16(m.colors[i][c]);
         out.push_back(v);
     }
+    Decode d;
+    d.modelFromStored = glm::dmat4(glm::dvec4(extent.x, 0, 0, 0), glm::dvec4(0, extent.y, 0, 0),
+                                   glm::dvec4(0, 0, extent.z, 0), glm::dvec4(offset, 1.0));
+    d.uvFromStored = glm::mat3(glm::vec3(uvExtent.x, 0, 0), glm::vec3(0, uvExtent.y, 0), glm::vec3(uvOffset, 1.0));
+    return d;
 }
 
 void describeVertexArray(GLuint vao, GLuint vertices, GLuint indices, GLuint drawIndices) {
@@ -28,15 +74,17 @@ void describeVertexArray(GLuint vao, GLuint vertices, GLuint indices, GLuint dra
     glVertexArrayAttribIFormat(vao, 5, 1, GL_UNSIGNED_INT, 0);
     glVertexArrayAttribBinding(vao, 5, 1);
     glVertexArrayElementBuffer(vao, indices);
-    struct Attribute { GLint size; std::size_t offset; };
+    struct Attribute { GLuint location; GLint size; GLenum type; std::size_t offset; };
     const Attribute attributes[] = {
-        {3, offsetof(GpuVertex, position)}, {3, offsetof(GpuVertex, normal)}, {2, offsetof(GpuVertex, texCoord0)},
-        {2, offsetof(GpuVertex, texCoord1)}, {4, offsetof(GpuVertex, color)},
+        {0, 3, GL_UNSIGNED_SHORT, offsetof(GpuVertex, position)},
+        {1, 4, GL_INT_2_10_10_10_REV, offsetof(GpuVertex, normal)},
+        {2, 2, GL_UNSIGNED_SHORT, offsetof(GpuVertex, texCoord)},
+        {4, 4, GL_UNSIGNED_SHORT, offsetof(GpuVertex, color)},
     };
-    for (GLuint i = 0; i < 5; ++i) {
-        glEnableVertexArrayAttrib(vao, i);
-        glVertexArrayAttribFormat(vao, i, attributes[i].size, GL_FLOAT, GL_FALSE, static_cast<GLuint>(attributes[i].offset));
-        glVertexArrayAttribBinding(vao, i, 0);
+    for (const Attribute& a : attributes) {
+        glEnableVertexArrayAttrib(vao, a.location);
+        glVertexArrayAttribFormat(vao, a.location, a.size, a.type, GL_TRUE, static_cast<GLuint>(a.offset));
+        glVertexArrayAttribBinding(vao, a.location, 0);
     }
 }
 
@@ -89,7 +137,9 @@ GpuScene::GpuScene(const scenes::Scene& scene, const std::vector<scenes::MeshLod
             levels.push_back({first, static_cast<std::uint32_t>(m.indices.size()), baseVertex});
             indices.insert(indices.end(), m.indices.begin(), m.indices.end());
         }
-        appendVertices(m, vertices);
+        const bool validMaterial = m.material >= 0 && static_cast<std::size_t>(m.material) < scene.materials.size();
+        const int texCoordSet = validMaterial ? scene.materials[m.material].baseColorTexture.texCoord : 0;
+        _decode.push_back(appendVertices<Decode>(m, texCoordSet, vertices));
     }
     _vertexBytes = vertices.size() * sizeof(GpuVertex);
     _indexBytes = indices.size() * sizeof(std::uint32_t);

@@ -4,9 +4,19 @@
 // texture per scene image. The layout keeps geometry in large shared buffers so that a view
 // is drawn with a few glMultiDrawElementsIndirect calls (scene_renderer.h).
 //
-// Vertex array: attributes 0-4 from binding 0 (GpuVertex); attribute 5 (uint) from binding 1,
-// instanced (divisor 1), reads the identity sequence 0 .. objectCount - 1, so a draw's
-// baseInstance arrives in the shader as the index of its per-draw record.
+// Vertex array: attributes 0 (position), 1 (normal), 2 (texture coordinates) and 4 (colour)
+// from binding 0 (GpuVertex); attribute 5 (uint) from binding 1, instanced (divisor 1), reads
+// the identity sequence 0 .. objectCount - 1, so a draw's baseInstance arrives in the shader as
+// the index of its per-draw record.
+//
+// Compact vertices (24 bytes, 56 before): positions are 16-bit unsigned normalised within the
+// mesh's bounding box and normals 10-bit signed normalised; a shader gets them through
+// modelFromStored(mesh) (fold it into the model-view matrix; normals need no decoding). Error
+// bounds: a position moves by at most half a step, (box extent) / 131070 per axis (0.46 mm on a
+// 60 m mesh, 15 um on a 2 m part); a normal's direction by at most about 0.1 degree. Only the
+// texture-coordinate set the mesh's material samples is stored, 16-bit within the mesh's
+// texture-coordinate box (error (extent) / 131070 per coordinate), decoded by uvFromStored(mesh)
+// (fold it into the texture transform). Colours are 16-bit linear, clamped to [0, 1].
 
 #include "display/gl/gl_object.h"
 #include "scenes/mesh_lod.h"
@@ -19,15 +29,15 @@
 
 namespace cavewall::gl {
 
-// Interleaved vertex, 56 bytes. Missing attributes get neutral values: normal 0 (drawn unlit),
-// texture coordinates 0, colour white.
+// Interleaved vertex, 24 bytes (see above). Missing attributes get neutral values: normal 0
+// (drawn unlit), texture coordinates 0, colour white.
 struct GpuVertex {
-    glm::vec3 position{0.0f};
-    glm::vec3 normal{0.0f};
-    glm::vec2 texCoord0{0.0f};
-    glm::vec2 texCoord1{0.0f};
-    glm::vec4 color{1.0f};
+    std::array<std::uint16_t, 4> position{};   // unorm16 within the mesh's box (w unused)
+    std::uint32_t normal = 0;                   // snorm 2_10_10_10_REV, xyz (w 0)
+    std::array<std::uint16_t, 2> texCoord{};    // unorm16 within the mesh's texture-coordinate box
+    std::array<std::uint16_t, 4> color{0xffff, 0xffff, 0xffff, 0xffff};  // unorm16 linear RGBA
 };
+static_assert(sizeof(GpuVertex) == 24);
 
 // Where a mesh lives in the shared buffers.
 struct GpuMeshRange {
@@ -54,6 +64,10 @@ public:
     // get a 1 x 1 magenta texture.
     GLuint texture(int index) const { return _textures[index].id(); }
     int textureCount() const { return static_cast<int>(_textures.size()); }
+    // Model coordinates from the stored (normalised) position of mesh `index`'s vertices.
+    const glm::dmat4& modelFromStored(int index) const { return _decode[index].modelFromStored; }
+    // The mesh's texture coordinates (of the set its material samples) from the stored ones.
+    const glm::mat3& uvFromStored(int index) const { return _decode[index].uvFromStored; }
     // A sampler with the given wrap modes (trilinear filtering).
     GLuint sampler(scenes::Wrap s, scenes::Wrap t) const { return _samplers[index(s) * 3 + index(t)].id(); }
     std::size_t vertexBytes() const { return _vertexBytes; }
@@ -62,7 +76,13 @@ public:
 private:
     static int index(scenes::Wrap w) { return static_cast<int>(w); }
 
+    struct Decode {
+        glm::dmat4 modelFromStored{1.0};
+        glm::mat3 uvFromStored{1.0f};
+    };
+
     GlObject _vertices, _indices, _drawIndices, _vertexArray;
+    std::vector<Decode> _decode;                      // per mesh
     std::vector<std::vector<GpuMeshRange>> _meshes;  // per mesh, its levels (finest first)
     std::vector<GlObject> _textures;
     std::array<GlObject, 9> _samplers;

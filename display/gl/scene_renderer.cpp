@@ -31,12 +31,14 @@ int alphaModeIndex(scenes::AlphaMode mode) {
     return 0;
 }
 
-shaders::MaterialRecord materialRecord(const scenes::Material& m, int textureCount) {
+// `uvFromStored`: the mesh's decoding of its stored texture coordinates (GpuScene).
+shaders::MaterialRecord materialRecord(const scenes::Material& m, int textureCount, const glm::mat3& uvFromStored) {
     shaders::MaterialRecord r;
     const scenes::TextureRef& t = m.baseColorTexture;
     r.baseColor = m.baseColorFactor;
-    for (int c = 0; c < 3; ++c) r.uvTransform[c] = glm::vec4(t.transform[c], 0.0f);
-    r.flags = {t.texCoord == 1 ? 1 : 0, alphaModeIndex(m.alphaMode), t.image >= 0 && t.image < textureCount, 0};
+    const glm::mat3 uv = t.transform * uvFromStored;
+    for (int c = 0; c < 3; ++c) r.uvTransform[c] = glm::vec4(uv[c], 0.0f);
+    r.flags = {0, alphaModeIndex(m.alphaMode), t.image >= 0 && t.image < textureCount, 0};
     r.params.x = m.alphaCutoff;
     return r;
 }
@@ -46,6 +48,9 @@ GlObject storageBuffer(std::size_t bytes, const void* data) {
     glNamedBufferStorage(b.id(), std::max<std::size_t>(bytes, 1), data, data ? 0 : GL_DYNAMIC_STORAGE_BIT);
     return b;
 }
+
+// The scene shader variant with or without the alpha test, for this scene's textures.
+std::string programName(bool alphaTest) { return alphaTest ? "scene (alpha test)" : kProgramName; }
 
 void setViewport(const display::Viewport& vp, glm::bvec4 colorMask) {
     glViewport(vp.x, vp.y, vp.width, vp.height);
@@ -60,21 +65,27 @@ SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings
     : _settings(settings),
       _scene(scene, settings.lodPixels > 0.0, settings.cullBackFaces),
       _lists(_scene),
-      _gpu(scene, _scene.hasLods() ? &_scene.lods() : nullptr),
-      _program(buildProgram(kProgramName, shaders::sceneShader(shaders::kSceneVertex, _gpu.textureCount() > 0),
-                            shaders::sceneShader(shaders::kSceneFragment, _gpu.textureCount() > 0))) {
-    _projection = uniformLocation(_program.id(), kProgramName, "uProjection");
-    _ambient = uniformLocation(_program.id(), kProgramName, "uAmbient");
-    // Material records: the scene's, then the default material for meshes without one.
-    std::vector<shaders::MaterialRecord> materials;
-    for (const scenes::Material& m : scene.materials) materials.push_back(materialRecord(m, _gpu.textureCount()));
-    materials.push_back(materialRecord(scenes::Material{}, _gpu.textureCount()));
-    _materialRecords = storageBuffer(materials.size() * sizeof(shaders::MaterialRecord), materials.data());
-    const int count = static_cast<int>(scene.materials.size());
-    for (const scenes::Object& o : scene.objects) {
-        const int material = scene.meshes[o.mesh].material;
-        _objectMaterials.push_back(material >= 0 && material < count ? material : count);
+      _gpu(scene, _scene.hasLods() ? &_scene.lods() : nullptr) {
+    const bool textured = _gpu.textureCount() > 0;
+    for (bool alphaTest : {false, true}) {
+        Program& p = _programs[alphaTest];
+        const std::string name = programName(alphaTest);
+        p.program = buildProgram(name, shaders::sceneShader(shaders::kSceneVertex, textured, alphaTest),
+                                 shaders::sceneShader(shaders::kSceneFragment, textured, alphaTest));
+        p.projection = uniformLocation(p.program.id(), name, "uProjection");
+        p.ambient = uniformLocation(p.program.id(), name, "uAmbient");
     }
+    // One material record per mesh: its material (or the default one), with the mesh's own
+    // texture-coordinate decoding folded into the texture transform.
+    std::vector<shaders::MaterialRecord> materials;
+    const int count = static_cast<int>(scene.materials.size());
+    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+        const int material = scene.meshes[i].material;
+        const scenes::Material& m = material >= 0 && material < count ? scene.materials[material] : scenes::Material{};
+        materials.push_back(materialRecord(m, _gpu.textureCount(), _gpu.uvFromStored(static_cast<int>(i))));
+    }
+    _materialRecords = storageBuffer(materials.size() * sizeof(shaders::MaterialRecord), materials.data());
+    for (const scenes::Object& o : scene.objects) _objectMaterials.push_back(o.mesh);
 }
 
 FrameStats SceneRenderer::render(const std::vector<display::ScreenView>& views, const RenderTargets& targets,
@@ -110,10 +121,10 @@ void SceneRenderer::applyFrameState() {
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     glClearDepth(0.0);
-    glUseProgram(_program.id());
+    glUseProgram(_programs[0].program.id());
     glBindVertexArray(_gpu.vertexArray());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, _materialRecords.id());
-    glUniform1f(_ambient, _settings.ambient);
+    for (const Program& p : _programs) glProgramUniform1f(p.program.id(), p.ambient, _settings.ambient);
 }
 
 void SceneRenderer::clearTo(glm::vec4 color) {
@@ -184,7 +195,8 @@ ViewStats SceneRenderer::draw(const render::RenderList& list) {
         const scenes::Object& o = _scene.objects()[d.object];
         const glm::dmat4 frameFromModel = list.frameFromWorld * o.worldFromModel;
         shaders::DrawRecord r;
-        r.modelView = display::eyeRelativeModelView(frustum, frameFromModel);
+        // Stored positions decode into the model frame; normals need no decoding.
+        r.modelView = display::eyeRelativeModelView(frustum, frameFromModel * _gpu.modelFromStored(o.mesh));
         const glm::dmat3 normal = glm::transpose(glm::inverse(glm::dmat3(frustum.viewFromFrame * frameFromModel)));
         for (int c = 0; c < 3; ++c) r.normalMatrix[c] = glm::vec4(glm::vec3(normal[c]), 0.0f);
         r.info.x = _objectMaterials[d.object];
@@ -196,7 +208,8 @@ ViewStats SceneRenderer::draw(const render::RenderList& list) {
     upload(_viewBuffers[_nextViewBuffers]);
     _nextViewBuffers = (_nextViewBuffers + 1) % kViewBufferSets;
     const glm::mat4 projection(frustum.clipFromView);
-    glUniformMatrix4fv(_projection, 1, GL_FALSE, glm::value_ptr(projection));
+    for (const Program& p : _programs)
+        glProgramUniformMatrix4fv(p.program.id(), p.projection, 1, GL_FALSE, glm::value_ptr(projection));
     issueBatches(list);
     stats.drawCalls = static_cast<int>(list.batches.size());
     stats.objectsDrawn = static_cast<int>(list.draws.size());
@@ -242,6 +255,7 @@ void SceneRenderer::upload(ViewBuffers& buffers) {
 }
 
 void SceneRenderer::applyState(const render::BatchKey& state) {
+    glUseProgram(_programs[state.alphaTest].program.id());
     const bool cull = state.faces == render::FaceMode::CullCcw || state.faces == render::FaceMode::CullCw;
     if (cull) {
         glEnable(GL_CULL_FACE);

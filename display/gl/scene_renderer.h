@@ -30,7 +30,8 @@
 // eye (diffuse) plus ambient. The headlight depends only on the eye position and the surface,
 // not on the screen, so neighbouring screens shade a surface the same and seams do not show.
 // Back faces are culled unless Material::doubleSided; Object::flipWinding flips the front face.
-// Alpha: Opaque writes alpha 1, Mask discards below alphaCutoff (and writes 1), Blend objects
+// Alpha: Opaque writes alpha 1, Mask discards below alphaCutoff (and writes 1; only MASK
+// batches use the shader variant that can discard, render::BatchKey::alphaTest), Blend objects
 // are drawn after all opaque ones, back to front, without depth writes; their colour is blended
 // over (SRC_ALPHA, ONE_MINUS_SRC_ALPHA) and alpha accumulates as coverage (ONE,
 // ONE_MINUS_SRC_ALPHA), so an opaque screen stays at alpha 1 and a target cleared to alpha 0
@@ -157,13 +158,19 @@ private:
     void issueBatches(const render::RenderList& list);
     void applyState(const render::BatchKey& key);
 
+    // A variant of the scene shader (scene_shaders.h) and its uniforms.
+    struct Program {
+        GlObject program;
+        GLint projection = -1, ambient = -1;
+    };
+
     RenderSettings _settings;
     render::RenderScene _scene;
     render::ListBuilder _lists;
-    std::vector<int> _objectMaterials;        // per object: material record index
+    std::vector<int> _objectMaterials;        // per object: material record index (its mesh's)
     GpuScene _gpu;
-    GlObject _program, _materialRecords;
-    GLint _projection = -1, _ambient = -1;
+    std::array<Program, 2> _programs;         // [0]: no discard; [1]: alpha test (MASK batches)
+    GlObject _materialRecords;
     GpuTimer _timer;
     std::array<ViewBuffers, kViewBufferSets> _viewBuffers;
     int _nextViewBuffers = 0;

@@ -33,23 +33,26 @@ struct DrawCommand {
 };
 static_assert(sizeof(DrawCommand) == 20);
 
-// Per-material record, binding 1 (one per scene material, then the default material).
+// Per-material record, binding 1: one per mesh (its material, or the default one, with the
+// mesh's texture-coordinate decoding folded into the texture transform, GpuScene::uvFromStored).
 struct MaterialRecord {
     glm::vec4 baseColor{1.0f};        // linear RGBA
     glm::vec4 uvTransform[3]{};       // columns of the KHR_texture_transform 3x3 (xyz)
-    glm::ivec4 flags{0};              // x: texCoord set (0, 1), y: alpha mode (0 opaque, 1 mask, 2 blend), z: textured
+    glm::ivec4 flags{0};              // x: unused, y: alpha mode (0 opaque, 1 mask, 2 blend), z: textured
     glm::vec4 params{0.0f};           // x: alpha cutoff
 };
 static_assert(sizeof(MaterialRecord) == 96);
 
-// Both stages come in two variants, built with sceneShader(): TEXTURED 1 samples base-colour
+// Both stages come in variants, built with sceneShader(): TEXTURED 1 samples base-colour
 // textures, TEXTURED 0 (a scene without any) leaves the texture path out entirely: llvmpipe runs
-// a texture fetch behind a per-material branch for every fragment.
+// a texture fetch behind a per-material branch for every fragment. ALPHA_TEST 1 (alpha-MASK
+// batches only) discards below the cutoff; ALPHA_TEST 0 has no discard at all, so llvmpipe
+// tests and writes depth before shading and skips hidden fragments (a discard anywhere in a
+// shader, even behind a branch never taken, moves the depth test after it).
 inline constexpr const char* kSceneVertex = R"(#version 450 core
-layout(location = 0) in vec3 aPosition;
+layout(location = 0) in vec3 aPosition;   // normalised within the mesh's box (modelView decodes)
 layout(location = 1) in vec3 aNormal;
-layout(location = 2) in vec2 aTexCoord0;
-layout(location = 3) in vec2 aTexCoord1;
+layout(location = 2) in vec2 aTexCoord;   // the set the material samples, normalised (uv decodes)
 layout(location = 4) in vec4 aColor;
 layout(location = 5) in uint aDraw;   // per instance: the draw's record index
 
@@ -74,8 +77,7 @@ void main() {
     vViewPosition = p.xyz;
     vNormal = mat3(d.normal0.xyz, d.normal1.xyz, d.normal2.xyz) * aNormal;
 #if TEXTURED
-    vec2 uv = m.flags.x == 1 ? aTexCoord1 : aTexCoord0;
-    vTexCoord = (mat3(m.uv0.xyz, m.uv1.xyz, m.uv2.xyz) * vec3(uv, 1.0)).xy;
+    vTexCoord = (mat3(m.uv0.xyz, m.uv1.xyz, m.uv2.xyz) * vec3(aTexCoord, 1.0)).xy;
 #else
     vTexCoord = vec2(0.0);
 #endif
@@ -105,7 +107,9 @@ void main() {
 #if TEXTURED
     if (vFlags.y != 0) color *= texture(uBaseColorTexture, vTexCoord);
 #endif
+#if ALPHA_TEST
     if (vFlags.x == 1 && color.a < vCutoff) discard;
+#endif
     // Headlight at the eye (the view origin). Meshes without normals are lit fully.
     float diffuse = 1.0;
     if (dot(vNormal, vNormal) > 1e-12) {
@@ -117,11 +121,13 @@ void main() {
 }
 )";
 
-// `source` (starting with its #version line) with "#define TEXTURED 0|1" after that line.
-inline std::string sceneShader(const char* source, bool textured) {
+// `source` (starting with its #version line) with "#define TEXTURED 0|1" and
+// "#define ALPHA_TEST 0|1" after that line.
+inline std::string sceneShader(const char* source, bool textured, bool alphaTest) {
     std::string s(source);
     const std::size_t eol = s.find('\n');
-    return s.insert(eol + 1, textured ? "#define TEXTURED 1\n" : "#define TEXTURED 0\n");
+    return s.insert(eol + 1, std::string(textured ? "#define TEXTURED 1\n" : "#define TEXTURED 0\n") +
+                                 (alphaTest ? "#define ALPHA_TEST 1\n" : "#define ALPHA_TEST 0\n"));
 }
 
 }  // namespace cavewall::gl::shaders

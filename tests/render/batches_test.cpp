@@ -18,7 +18,7 @@ TEST(Batches, FaceModeFollowsDoubleSidedAndWinding) {
     EXPECT_EQ(faceMode(true, true), FaceMode::BothCw);
 }
 
-TEST(Batches, KeysNameTheTextureItsSamplerAndTheFaceMode) {
+TEST(Batches, KeysNameTheTextureItsSamplerTheFaceModeAndAlphaTesting) {
     scenes::Material m;
     m.baseColorTexture.image = 1;
     m.baseColorTexture.wrapS = scenes::Wrap::ClampToEdge;     // 1
@@ -31,6 +31,12 @@ TEST(Batches, KeysNameTheTextureItsSamplerAndTheFaceMode) {
     EXPECT_EQ(batchKey(m, false, true, 1), BatchKey{});
     // Without back-face culling everything is double-sided, keeping its winding.
     EXPECT_EQ(batchKey(m, true, false, 2).faces, FaceMode::BothCw);
+    // Only alpha-MASK materials are alpha-tested (blended ones blend, they do not discard).
+    EXPECT_FALSE(k.alphaTest);
+    m.alphaMode = scenes::AlphaMode::Mask;
+    EXPECT_TRUE(batchKey(m, false, true, 2).alphaTest);
+    m.alphaMode = scenes::AlphaMode::Blend;
+    EXPECT_FALSE(batchKey(m, false, true, 2).alphaTest);
 }
 
 // Five cubes: untextured CCW (0, 3), textured CCW (1, 4), untextured mirrored CW (2).

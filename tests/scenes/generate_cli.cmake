@@ -1,7 +1,14 @@
 # cavewall generate is deterministic: two runs with one seed give identical bytes, another seed
-# gives different ones, and the last line printed is the scene.json path.
-# cmake -DCAVEWALL=<exe> -DKIND=plant|house -DOUT=<dir> -P generate_cli.cmake
+# gives different ones, and the last line printed is the scene.json path (the .glb for boxes,
+# which writes an OBJ copy instead of a scene.json).
+# cmake -DCAVEWALL=<exe> -DKIND=plant|house|boxes -DOUT=<dir> -P generate_cli.cmake
 file(REMOVE_RECURSE "${OUT}")
+set(files ${KIND}.glb scene.json)
+set(last_file scene.json)
+if(KIND STREQUAL "boxes")
+  set(files boxes.glb boxes.obj)
+  set(last_file boxes.glb)
+endif()
 foreach(run a b c)
   set(seed 7)
   if(run STREQUAL "c")
@@ -15,10 +22,10 @@ foreach(run a b c)
 endforeach()
 string(STRIP "${out_a}" out_a)
 string(REGEX REPLACE ".*\n" "" last "${out_a}")
-if(NOT last STREQUAL "${OUT}/a/scene.json")
-  message(FATAL_ERROR "last line is '${last}', expected '${OUT}/a/scene.json'")
+if(NOT last STREQUAL "${OUT}/a/${last_file}")
+  message(FATAL_ERROR "last line is '${last}', expected '${OUT}/a/${last_file}'")
 endif()
-foreach(file ${KIND}.glb scene.json)
+foreach(file ${files})
   execute_process(COMMAND "${CMAKE_COMMAND}" -E compare_files "${OUT}/a/${file}" "${OUT}/b/${file}" RESULT_VARIABLE same)
   if(NOT same EQUAL 0)
     message(FATAL_ERROR "${file} differs between two runs with the same seed")

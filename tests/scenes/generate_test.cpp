@@ -204,5 +204,45 @@ TEST(Generate, WrittenScenesValidateAndLoadBackWithTheirCells) {
     }
 }
 
+TEST(GenerateBoxHall, TwelveTrianglesPerBoxInsideTheHallWithFaceNormals) {
+    const Scene s = generateBoxHall({3, 1000});
+    // ceil(1000 / 12) = 84 boxes of 12 triangles: at least the target, less than one box over.
+    ASSERT_EQ(s.meshes.size(), 1u);
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(s.triangleCount(), 84u * 12u);
+    const Mesh& m = s.meshes[0];
+    EXPECT_EQ(m.positions.size(), 84u * 24u);
+    EXPECT_TRUE(m.colors.empty());
+    EXPECT_TRUE(m.texCoords0.empty());
+    const Bounds b = s.bounds();
+    EXPECT_GE(b.min.x, -30.0);
+    EXPECT_LE(b.max.x, 30.0);
+    EXPECT_GE(b.min.y, 0.0);
+    EXPECT_LE(b.max.y, 8.0);
+    EXPECT_GE(b.min.z, -15.0);
+    EXPECT_LE(b.max.z, 15.0);
+    // 84 boxes spread over the hall reach most of its width (a clustered generator would not).
+    EXPECT_GT(b.size().x, 50.0);
+    // Per-face normals: every triangle's three normals are equal, axis-aligned and agree with
+    // its counter-clockwise winding.
+    for (std::size_t t = 0; t < m.indices.size(); t += 3) {
+        const glm::vec3 n = m.normals[m.indices[t]];
+        EXPECT_EQ(m.normals[m.indices[t + 1]], n);
+        EXPECT_EQ(m.normals[m.indices[t + 2]], n);
+        EXPECT_FLOAT_EQ(std::abs(n.x) + std::abs(n.y) + std::abs(n.z), 1.0f);
+        const glm::vec3 a = m.positions[m.indices[t]], c1 = m.positions[m.indices[t + 1]],
+                        c2 = m.positions[m.indices[t + 2]];
+        EXPECT_GT(glm::dot(glm::cross(c1 - a, c2 - a), n), 0.0f);
+    }
+}
+
+TEST(GenerateBoxHall, SameSeedSameMeshOtherSeedOtherMesh) {
+    const Scene a = generateBoxHall({5, 600}), b = generateBoxHall({5, 600}), c = generateBoxHall({6, 600});
+    EXPECT_EQ(a.meshes[0].positions, b.meshes[0].positions);
+    EXPECT_NE(a.meshes[0].positions, c.meshes[0].positions);
+    // The default is the million triangles.
+    EXPECT_EQ(kBoxHallDefaultTriangles, 1'000'000u);
+}
+
 }  // namespace
 }  // namespace cavewall::scenes

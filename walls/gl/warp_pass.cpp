@@ -35,8 +35,7 @@ void main() {
 constexpr const char* kWarpVertex = R"(#version 450 core
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
-layout(location = 2) in vec2 aTexCoord0;
-layout(location = 3) in vec2 aTexCoord1;
+layout(location = 2) in vec2 aTexCoord;   // GpuScene's compact vertex: decoded by the matrices
 layout(location = 4) in vec4 aColor;
 layout(location = 0) uniform mat4 uAFromModel;    // sampling-point-relative view frame of A
 layout(location = 1) uniform mat4 uBFromModel;    // eye-relative view frame of B
@@ -45,7 +44,6 @@ layout(location = 3) uniform mat4 uWarp;
 layout(location = 4) uniform vec4 uPlaneB;        // wall plane in B's view frame, > 0 behind it
 layout(location = 5) uniform mat3 uNormalB;
 layout(location = 6) uniform mat3 uUvTransform;
-layout(location = 7) uniform int uTexCoordSet;
 out vec3 vViewPosition;
 out vec3 vNormal;
 out vec2 vTexCoord;
@@ -61,7 +59,7 @@ void main() {
     gl_ClipDistance[4] = clipA.w - clipA.y;
     vViewPosition = pB.xyz;
     vNormal = uNormalB * aNormal;
-    vTexCoord = (uUvTransform * vec3(uTexCoordSet == 1 ? aTexCoord1 : aTexCoord0, 1.0)).xy;
+    vTexCoord = (uUvTransform * vec3(aTexCoord, 1.0)).xy;
     vColor = aColor;
     gl_Position = uWarp * clipA;
 }
@@ -207,16 +205,18 @@ void WarpPass::drawStructure(const WarpWall& wall, const display::ScreenView& vi
         const scenes::Object& o = _scene.objects[index];
         if (!meetsTextureView(o.worldBounds, behind, offset, a.clipFromFrame())) continue;
         const glm::dmat4 bFromModel = viewFromWorldB * o.worldFromModel;
-        glUniformMatrix4fv(0, 1, GL_FALSE, glm::value_ptr(glm::mat4(a.viewFromFrame * o.worldFromModel)));
-        glUniformMatrix4fv(1, 1, GL_FALSE, glm::value_ptr(glm::mat4(bFromModel)));
+        // Stored positions decode into the model frame (GpuScene::modelFromStored).
+        const glm::dmat4& modelFromStored = _gpu.modelFromStored(o.mesh);
+        glUniformMatrix4fv(0, 1, GL_FALSE, glm::value_ptr(glm::mat4(a.viewFromFrame * o.worldFromModel * modelFromStored)));
+        glUniformMatrix4fv(1, 1, GL_FALSE, glm::value_ptr(glm::mat4(bFromModel * modelFromStored)));
         const glm::mat3 normalB(glm::transpose(glm::inverse(glm::dmat3(bFromModel))));
         glUniformMatrix3fv(5, 1, GL_FALSE, glm::value_ptr(normalB));
         const int materialIndex = _scene.meshes[o.mesh].material;
         const scenes::Material material = materialIndex >= 0 ? _scene.materials[materialIndex] : scenes::Material{};
         const scenes::TextureRef& t = material.baseColorTexture;
         const bool textured = t.image >= 0 && t.image < _gpu.textureCount();
-        glUniformMatrix3fv(6, 1, GL_FALSE, glm::value_ptr(t.transform));
-        glUniform1i(7, t.texCoord);
+        const glm::mat3 uvTransform = t.transform * _gpu.uvFromStored(o.mesh);
+        glUniformMatrix3fv(6, 1, GL_FALSE, glm::value_ptr(uvTransform));
         glUniform4fv(8, 1, glm::value_ptr(material.baseColorFactor));
         glUniform2i(9, textured ? 1 : 0, material.alphaMode == scenes::AlphaMode::Mask ? 1 : 0);
         glUniform2f(10, material.alphaCutoff, _settings.ambient);
