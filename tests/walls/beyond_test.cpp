@@ -1,6 +1,7 @@
 // Beyond a neighbour drawn as geometry (Plan::beyond in walls/plan.h, FrameSelection::beyond in
 // walls/frame_select.h): the far walls of that neighbour are planned for the eyes that draw
 // them, and the selector draws only textures proven there.
+#include "tests/walls/test_scenes.h"
 #include "walls/angular_error.h"
 #include "walls/frame_select.h"
 #include "walls/plan.h"
@@ -21,20 +22,6 @@ scenes::VirtualWall wall(const char* name, glm::dvec2 a, glm::dvec2 b, int front
     w.lowerLeft = {a.x, 0, a.y}, w.lowerRight = {b.x, 0, b.y}, w.upperLeft = {a.x, 4, a.y};
     w.cells = {front, back};
     return w;
-}
-
-// Three 10 m x 10 m cells along z: A (z in [0, 10]), B ([-10, 0]), C ([-20, -10]). From A,
-// B's far wall B|C is parallel to A|B.
-scenes::SceneDescription threeInARow() {
-    scenes::SceneDescription d;
-    d.name = "three";
-    d.cells.push_back({"A", {{-5, 10}, {5, 10}, {5, 0}, {-5, 0}}, 0.0});
-    d.cells.push_back({"B", {{-5, 0}, {5, 0}, {5, -10}, {-5, -10}}, 0.0});
-    d.cells.push_back({"C", {{-5, -10}, {5, -10}, {5, -20}, {-5, -20}}, 0.0});
-    d.walls.push_back(wall("A|B", {-5, 0}, {5, 0}, 0, 1));     // normal +z, towards A
-    d.walls.push_back(wall("B|C", {-5, -10}, {5, -10}, 1, 2));
-    d.headHeightRange = {1.3, 1.9};
-    return d;
 }
 
 // A 2 x 2 grid of 10 m cells: A (x in [-10, 0], z in [0, 10]), B (x in [0, 10], z in [0, 10]),
@@ -214,7 +201,7 @@ TEST_P(BeyondTest, JsonCarriesTheBeyondZonesAndReadsThemBack) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BeyondTest,
-                         ::testing::Values(Case{"parallel_10", threeInARow, 10.0}, Case{"parallel_20", threeInARow, 20.0},
+                         ::testing::Values(Case{"parallel_10", testing::threeInARow, 10.0}, Case{"parallel_20", testing::threeInARow, 20.0},
                                            Case{"perpendicular_10", grid, 10.0}, Case{"perpendicular_30", grid, 30.0}),
                          [](const auto& info) { return std::string(info.param.name); });
 

@@ -115,27 +115,8 @@ TEST(FrameSelect, CellsAndGeometryFollowTheEye) {
     EXPECT_EQ(outside.geometryCells, (std::vector<int>{0, 1}));
 }
 
-// Three 10 m x 10 m cells in a row along z: A (z in [0, 10]), B ([-10, 0]), C ([-20, -10]).
-scenes::SceneDescription threeInARow() {
-    scenes::SceneDescription d;
-    d.name = "three";
-    d.cells.push_back({"A", {{-5, 10}, {5, 10}, {5, 0}, {-5, 0}}, 0.0});
-    d.cells.push_back({"B", {{-5, 0}, {5, 0}, {5, -10}, {-5, -10}}, 0.0});
-    d.cells.push_back({"C", {{-5, -10}, {5, -10}, {5, -20}, {-5, -20}}, 0.0});
-    for (int i = 0; i < 2; ++i) {
-        scenes::VirtualWall w;
-        w.name = i == 0 ? "A|B" : "B|C";
-        const double z = -10.0 * i;
-        w.lowerLeft = {-5, 0, z}, w.lowerRight = {5, 0, z}, w.upperLeft = {-5, 4, z};
-        w.cells = {i, i + 1};
-        d.walls.push_back(w);
-    }
-    d.headHeightRange = {1.3, 1.9};
-    return d;
-}
-
 TEST(FrameSelect, ANeighbourDrawnAsGeometryShowsWhatLiesBeyondItsFarWalls) {
-    const scenes::SceneDescription d = threeInARow();
+    const scenes::SceneDescription d = testing::threeInARow();
     PlanOptions o;
     o.alphaDeg = 20.0;
     const Plan plan = planZones(d, o);

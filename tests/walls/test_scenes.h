@@ -32,4 +32,25 @@ inline scenes::SceneDescription obliqueCells() {
     return d;
 }
 
+// Three 10 m x 10 m cells in a row along z: A (z in [0, 10]), B ([-10, 0]), C ([-20, -10]),
+// cut by the 4 m high virtual walls A|B (z = 0) and B|C (z = -10), both facing +z. From A, B's
+// far wall B|C is parallel to A|B.
+inline scenes::SceneDescription threeInARow() {
+    scenes::SceneDescription d;
+    d.name = "three";
+    d.cells.push_back({"A", {{-5, 10}, {5, 10}, {5, 0}, {-5, 0}}, 0.0});
+    d.cells.push_back({"B", {{-5, 0}, {5, 0}, {5, -10}, {-5, -10}}, 0.0});
+    d.cells.push_back({"C", {{-5, -10}, {5, -10}, {5, -20}, {-5, -20}}, 0.0});
+    for (int i = 0; i < 2; ++i) {
+        scenes::VirtualWall w;
+        w.name = i == 0 ? "A|B" : "B|C";
+        const double z = -10.0 * i;
+        w.lowerLeft = {-5, 0, z}, w.lowerRight = {5, 0, z}, w.upperLeft = {-5, 4, z};
+        w.cells = {i, i + 1};
+        d.walls.push_back(w);
+    }
+    d.headHeightRange = {1.3, 1.9};
+    return d;
+}
+
 }  // namespace cavewall::walls::testing
