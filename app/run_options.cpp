@@ -11,6 +11,14 @@ std::string_view toString(Transition transition) {
     return "?";
 }
 
+void useRoute(scenes::SceneDescription& description, Route route, const std::string& sceneName) {
+    if (route == Route::Walk) return;
+    if (description.wallPath.size() < 2)
+        throw Error(sceneName + ": --route wall: the scene has no wallPath (expected at least 2 points, got " +
+                    std::to_string(description.wallPath.size()) + ")");
+    description.walkPath = description.wallPath;
+}
+
 void validate(const RunOptions& o) {
     if (o.frames < 1) throw Error("--frames: expected at least 1, got " + std::to_string(o.frames));
     if (o.triangleBudget > 0 && !(o.lodPixels > 0.0))

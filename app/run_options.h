@@ -5,6 +5,7 @@
 // several options together, so every caller of the session gets the same messages.
 
 #include "config/display_config.h"
+#include "scenes/scene_description.h"
 #include "walls/frame_types.h"
 #include "walls/plan.h"
 
@@ -30,11 +31,24 @@ using Transition = walls::Transition;
 // where the path starts, or at the origin).
 enum class Navigation { Auto, Guided, Fly, Walk, None };
 
+// --route: which of the scene's paths the guided navigator follows. Walk: its walkPath (the
+// aisles); Wall: its wallPath, a second path that hugs the virtual walls (the eye regions where
+// textures are seen from nearest and most obliquely).
+enum class Route { Walk, Wall };
+
 // The words the command line accepts for each enum, in the order its help lists them.
 inline constexpr std::array<std::pair<std::string_view, Transition>, 2> kTransitionNames{{
     {"blend", Transition::Blend}, {"warp", Transition::Warp}}};
 inline constexpr std::array<std::pair<std::string_view, Navigation>, 4> kNavigationNames{{
     {"guided", Navigation::Guided}, {"fly", Navigation::Fly}, {"walk", Navigation::Walk}, {"none", Navigation::None}}};
+
+inline constexpr std::array<std::pair<std::string_view, Route>, 2> kRouteNames{{
+    {"walk", Route::Walk}, {"wall", Route::Wall}}};
+
+// Makes `route` the path the guided navigator follows (SceneDescription::walkPath): Wall
+// replaces walkPath by wallPath. Throws cavewall::Error, naming the scene, when the scene has no
+// wallPath of at least 2 points.
+void useRoute(scenes::SceneDescription& description, Route route, const std::string& sceneName);
 
 // "blend" | "warp".
 std::string_view toString(Transition transition);
@@ -46,6 +60,7 @@ struct RunOptions {
     long frames = 120;                          // >= 1
     Navigation nav = Navigation::Auto;
     double guidePace = 1.0;                     // m/s along the walk path (guided)
+    Route route = Route::Walk;                  // which of the scene's paths (applied by the session)
     WindowMode window = WindowMode::Headless;
     Transition transition = Transition::Blend;
     bool walls = true;                          // false: --no-walls, full (culled) geometry

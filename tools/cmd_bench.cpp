@@ -17,7 +17,7 @@
 namespace cavewall::tools {
 
 const char* const kBenchUsage =
-    "usage: cavewall bench SCENE [--display D] [--path P] [--out DIR] [--frames N] [--resolution N]\n"
+    "usage: cavewall bench SCENE [--display D] [--path P] [--route walk|wall] [--out DIR] [--frames N] [--resolution N]\n"
     "                      [--stereo mono|separate] [--quick] [--cache DIR] [--compare-every K] [--min-zone M] [--ppd N]\n"
     "                      [--bake-resolution N] [--alphas A,B,...] [--warp-alpha A]\n"
     "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
@@ -25,6 +25,7 @@ const char* const kBenchUsage =
     "\n"
     "SCENE    error against run time in one run (a scene.json, its folder, or glTF/GLB with\n"
     "         virtual walls). One eye path (the guided navigator along the scene's walkPath,\n"
+    "         or with --route wall its wallPath, a second path that hugs the virtual walls;\n"
     "         the head from --path: a tracker spec or a `cavewall run --record` file, default\n"
     "         sim:walk) drives every mode: full geometry (frustum-culled, the reference), cell\n"
     "         culling without textures (the control), the same with one textured full-screen\n"
@@ -128,6 +129,7 @@ int runSceneBench(const Args& args) {
     }
     if (auto path = args.get("path"))
         o.tracker = std::filesystem::is_regular_file(*path) ? "replay:" + *path : *path;
+    o.route = args.choice("route", app::kRouteNames, app::Route::Walk);
     o.frames = args.integer("frames", quick ? 24 : 120, 1, 100000);
     o.compareEvery = static_cast<int>(args.integer("compare-every", quick ? 3 : 4, 1, 100000));
     o.plan.minZoneSize = args.number("min-zone", quick ? 3.0 : o.plan.minZoneSize, 1e-3, 1e4);
@@ -159,7 +161,7 @@ int runSceneBench(const Args& args) {
 
 int runBench(const std::vector<std::string>& words) {
     const Args args(words, {"stability", "quick"});
-    args.expectFlags({"stability", "quick", "display", "path", "out", "frames", "resolution", "stereo", "cache",
+    args.expectFlags({"stability", "quick", "display", "path", "route", "out", "frames", "resolution", "stereo", "cache",
                       "compare-every",
                       "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod", "triangle-budget", "frame-budget-ms", "lod-max"});
     if (args.has("stability")) return runStability();

@@ -11,7 +11,7 @@ namespace cavewall::tools {
 
 const char* const kRunUsage =
     "usage: cavewall run --scene S --tracker SPEC --frames N --out DIR [--display D]\n"
-    "                    [--nav guided|fly|walk|none] [--pace M/S] [--headless|--window]\n"
+    "                    [--nav guided|fly|walk|none] [--pace M/S] [--route walk|wall] [--headless|--window]\n"
     "                    [--transition blend|warp] [--no-walls] [--alpha DEG] [--min-zone M] [--ppd N]\n"
     "                    [--save-frames none|every:K|all] [--record FILE] [--cache DIR]\n"
     "                    [--budget MB] [--sync-paging]\n"
@@ -26,7 +26,8 @@ const char* const kRunUsage =
     "through the display's calibration,\n"
     "the One Euro filter and prediction; navigation moves the CAVE through the scene: --nav\n"
     "defaults to guided along the scene's walkPath at --pace m/s (default 1) when it has one, else\n"
-    "none. Scenes with virtual walls are planned (--alpha degrees, default 10; --min-zone, --ppd as\n"
+    "none. --route wall follows the scene's wallPath instead, a second path that hugs the virtual\n"
+    "walls. Scenes with virtual walls are planned (--alpha degrees, default 10; --min-zone, --ppd as\n"
     "in `cavewall plan`) and baked into the cache (--cache, default $CAVEWALL_CACHE or\n"
     "~/.cache/cavewall) before the first frame; near cells are drawn as geometry and the rest as\n"
     "wall textures, blended by zone. --no-walls draws the full (frustum-culled) geometry instead.\n"
@@ -77,7 +78,7 @@ std::string seconds(double s) {
 
 int runRun(const std::vector<std::string>& words) {
     const Args args(words, {"headless", "window", "no-walls", "sync-paging", "cluster"});
-    args.expectFlags({"scene", "display", "tracker", "frames", "nav", "pace", "headless", "window", "transition",
+    args.expectFlags({"scene", "display", "tracker", "frames", "nav", "pace", "route", "headless", "window", "transition",
                       "no-walls", "alpha", "min-zone", "ppd", "save-frames", "record", "cache", "budget",
                       "sync-paging", "out", "cluster", "cluster-timeout", "lod", "triangle-budget", "frame-budget-ms", "lod-max"});
     if (args.has("headless") && args.has("window")) throw Error("--headless and --window: expected one of them, got both");
@@ -90,6 +91,7 @@ int runRun(const std::vector<std::string>& words) {
     o.out = args.require("out");
     o.nav = args.choice("nav", app::kNavigationNames, app::Navigation::Auto);
     o.guidePace = args.number("pace", 1.0, 0.0, 100.0);
+    o.route = args.choice("route", app::kRouteNames, app::Route::Walk);
     o.window = args.has("window") ? app::WindowMode::Window : app::WindowMode::Headless;
     o.transition = args.choice("transition", app::kTransitionNames, app::Transition::Blend);
     o.walls = !args.has("no-walls");

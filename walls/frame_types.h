@@ -89,6 +89,9 @@ struct FrameResult {
     double gpuMs = 0.0;                      // GL_TIME_ELAPSED of the frame's commands
     display::FrameStats stats;               // triangles and draw calls, all views
     PagerStats pager;
+    std::size_t uploadedBytes = 0;           // wall texture bytes (all MIP levels) uploaded this
+                                             // frame, at most WalkthroughSettings::uploadMBPerFrame
+                                             // unless one texture alone is larger
     double maxErrorDeg = 0.0;                // max over drawn textures (0 without textures)
     int texturesOverAlpha = 0;               // sum of WallState::texturesOverAlpha (must be 0)
     // maxErrorDeg converted to pixels on the screens this instance renders: error (rad) times

@@ -88,24 +88,62 @@ std::optional<std::string> layerLine(const BenchReport& report) {
 }
 
 std::vector<std::string> wallsTargetLines(const BenchReport& report) {
-    const ModeResult* best = nullptr;
+    // Issue 14's targets: walls at alpha <= 10 degrees with levels of detail, pooled PSNR >= 32 dB.
+    constexpr double kAlpha = 10.0, kPsnr = 32.0;
+    std::vector<std::string> lines;
+    long overAlpha = 0;
+    int wallsModes = 0;
     for (const ModeResult& m : report.modes)
-        if (m.mode == Mode::Walls && m.error.psnrDb >= 30.0 && (!best || m.speedup > best->speedup)) best = &m;
-    if (!best) return {"targets: no walls mode reaches a pooled PSNR >= 30 dB"};
-    const double ratio = best->frameMs.p50 > 0 ? best->frameMs.p99 / best->frameMs.p50 : 0.0;
-    std::vector<std::string> lines = {
-        "targets: fastest walls mode with pooled PSNR >= 30 dB: " + modeLabel(*best) + ", speed-up " +
-            num(best->speedup, 3) + (best->speedup >= 10.0 ? " (>= 10: met)" : " (>= 10: not met)") + ", PSNR " +
-            num(best->error.psnrDb, 3) + " dB pooled (worst frame " + num(best->error.worstFramePsnrDb, 3) +
-            " dB), p99/p50 " + num(ratio, 3) + (ratio <= 1.3 ? " (<= 1.3: met)" : " (<= 1.3: not met)") +
-            " with the triangles drawn varying by " + num(best->loadRatio, 3) + " (p99/p50)" +
-            (report.noiseFloorRatio > 0.0 ? "; one frame drawn again and again varies by " +
-                                                num(report.noiseFloorRatio, 3) + " (p99/p50) on this machine"
-                                          : std::string())};
+        if (m.mode == Mode::Walls) {
+            overAlpha += m.texturesOverAlpha;
+            ++wallsModes;
+        }
+    if (wallsModes > 0)
+        lines.push_back("targets: textures drawn over alpha in " + std::to_string(wallsModes) + " walls modes: " +
+                        std::to_string(overAlpha) + (overAlpha == 0 ? " (0: met)" : " (0: not met)"));
+    const ModeResult* best = nullptr;      // fastest eligible
+    const ModeResult* closest = nullptr;   // best pooled PSNR among the candidates
+    for (const ModeResult& m : report.modes) {
+        if (m.mode != Mode::Walls || m.alphaDeg > kAlpha || m.lodPixels <= 0.0) continue;
+        if (!closest || m.error.psnrDb > closest->error.psnrDb) closest = &m;
+        if (m.error.psnrDb >= kPsnr && (!best || m.speedup > best->speedup)) best = &m;
+    }
+    if (!closest) {
+        lines.push_back("targets: no walls mode at alpha <= 10 with levels of detail");
+        return lines;
+    }
+    if (!best) {
+        lines.push_back("targets: no walls mode at alpha <= 10 with levels of detail reaches a pooled PSNR >= 32 dB "
+                        "(not met); the closest, " + modeLabel(*closest) + ", has " + num(closest->error.psnrDb, 3) +
+                        " dB pooled at a speed-up of " + num(closest->speedup, 3));
+        best = closest;
+    } else {
+        lines.push_back("targets: fastest walls mode at alpha <= 10 with levels of detail and pooled PSNR >= 32 dB: " +
+                        modeLabel(*best) + ", speed-up " + num(best->speedup, 3) +
+                        (best->speedup >= 10.0 ? " (>= 10: met)" : " (>= 10: not met)") + ", PSNR " +
+                        num(best->error.psnrDb, 3) + " dB pooled (worst frame " + num(best->error.worstFramePsnrDb, 3) +
+                        " dB)");
+    }
     if (!std::isnan(best->flipRatio))
         lines.push_back("targets: its FLIP mean is " + num(best->flipRatio, 3) + "x the control's (cells, no textures; " +
                         num(best->error.flipMean, 3) + " against " + num(controlMode(report)->error.flipMean, 3) +
                         "; <= 0.5: " + (best->flipRatio <= 0.5 ? "met)" : "not met)"));
+    const double ratio = best->frameMs.p50 > 0 ? best->frameMs.p99 / best->frameMs.p50 : 0.0;
+    std::string stability = "targets: its frame time p99/p50 is " + num(ratio, 3);
+    if (report.noiseFloorRatio > 0.0)
+        stability += ", " + num(ratio / report.noiseFloorRatio, 3) + "x the noise floor (one frame drawn again and again: " +
+                     num(report.noiseFloorRatio, 3) + "; <= 1.1x: " +
+                     (ratio <= 1.1 * report.noiseFloorRatio ? "met)" : "not met)");
+    else
+        stability += " (no noise floor measured)";
+    stability += "; per-frame work p99/p50: triangles " + num(best->loadRatio, 3) +
+                 (best->loadRatio <= 1.3 ? " (<= 1.3: met)" : " (<= 1.3: not met)");
+    stability += best->uploadedMB.p50 > 0.0
+                     ? ", texture MB uploaded " + num(best->uploadedMB.p99 / best->uploadedMB.p50, 3) +
+                           (best->uploadedMB.p99 <= 1.3 * best->uploadedMB.p50 ? " (<= 1.3: met)" : " (<= 1.3: not met)")
+                     : ", texture MB uploaded p50 0, p99 " + num(best->uploadedMB.p99, 3) +
+                           " (a ratio needs uploads in the median frame)";
+    lines.push_back(stability);
     if (const ModeResult* near = findMode(report, Mode::Near, *best); near && near->frameMs.p50 > 0) {
         const double limit = best->frameMs.p50 / near->frameMs.p50;
         lines.push_back("targets: its median frame time is " + num(limit, 3) +
@@ -113,12 +151,11 @@ std::vector<std::string> wallsTargetLines(const BenchReport& report) {
                         num(best->frameMs.p50, 3) + " ms against " + num(near->frameMs.p50, 3) + " ms; <= 1.2: " +
                         (limit <= 1.2 ? "met)" : "not met)"));
     }
-    if (best->lodPixels > 0.0)
-        if (const ModeResult* full = findMode(report, Mode::Full, *best); full && full->frameMs.p50 > 0)
-            lines.push_back("targets: against full geometry at the same level of detail (" + modeLabel(*full) +
-                            ", " + num(full->frameMs.p50, 3) + " ms) its speed-up is " +
-                            num(full->frameMs.p50 / best->frameMs.p50, 3) +
-                            ": what the walls add on top of the levels of detail");
+    if (const ModeResult* full = findMode(report, Mode::Full, *best); full && full->frameMs.p50 > 0)
+        lines.push_back("targets: against full geometry at the same level of detail (" + modeLabel(*full) + ", " +
+                        num(full->frameMs.p50, 3) + " ms) its speed-up is " +
+                        num(full->frameMs.p50 / best->frameMs.p50, 3) +
+                        ": what the walls add on top of the levels of detail");
     return lines;
 }
 
@@ -162,7 +199,7 @@ std::string csvHeader() {
            "max_err_px,triangles,draw_calls,textures,disk_mb,gpu_mb,cpu_ms_p50,cpu_ms_p95,cpu_ms_p99,gpu_ms_p50,"
            "gpu_ms_p95,gpu_ms_p99,texels,misses,mean_psnr_db,load_p99_p50,lod_px,triangle_budget,max_lod_err_px,"
            "mean_lod_tolerance_px,over_budget_frames,frame_budget_ms,worst_frame_psnr_db,p5_frame_psnr_db,flip_mean,flip_p95,"
-           "popping_peak,popping_rms,psnr_gain_db,flip_ratio";
+           "popping_peak,popping_rms,psnr_gain_db,flip_ratio,over_alpha,uploaded_mb_p50,uploaded_mb_p99,uploaded_mb_mean";
 }
 
 std::string csvRow(const ModeResult& m) {
@@ -173,7 +210,9 @@ std::string csvRow(const ModeResult& m) {
                              m.error.meanPsnrDb, m.loadRatio, m.lodPixels, static_cast<double>(m.triangleBudget),
                              m.maxLodErrPx, m.meanLodTolerancePx, static_cast<double>(m.overBudgetFrames),
                              m.frameBudgetMs, m.error.worstFramePsnrDb, m.error.p5FramePsnrDb, m.error.flipMean,
-                             m.error.flipP95, m.error.poppingPeak, m.error.poppingRms, m.psnrGainDb, m.flipRatio};
+                             m.error.flipP95, m.error.poppingPeak, m.error.poppingRms, m.psnrGainDb, m.flipRatio,
+                             static_cast<double>(m.texturesOverAlpha), m.uploadedMB.p50, m.uploadedMB.p99,
+                             m.uploadedMB.mean};
     std::string row = std::string(toString(m.mode)) + "," + num(m.alphaDeg) + "," + transitionLabel(m);
     for (double v : values) row += "," + num(v);
     return row;
@@ -198,9 +237,10 @@ std::string markdownReport(const BenchReport& report) {
     md << "\n| # | mode | frame ms p50 / p95 / p99 | p99/p50 | load p99/p50 | CPU ms p50 | GPU ms p50 | speed-up "
           "| PSNR dB pooled (worst frame / p5 frame) | capped mean PSNR dB (not ranked) | RMSE | SSIM | FLIP mean / p95 "
           "| popping peak / RMS | vs control: PSNR gain dB / FLIP ratio | max err deg / px "
-          "| LOD err px max (tolerance mean) | triangles | draw calls | textures | texels M | disk MB | GPU MB |\n"
+          "| textures over alpha | LOD err px max (tolerance mean) | triangles | draw calls | textures | texels M | disk MB "
+          "| GPU MB | uploaded MB per frame p50 / p99 |\n"
        << "| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | "
-          "---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+          "---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
     int index = 1;
     for (const ModeResult& m : report.modes) {
         const double ratio = m.frameMs.p50 > 0 ? m.frameMs.p99 / m.frameMs.p50 : 0.0;
@@ -208,10 +248,11 @@ std::string markdownReport(const BenchReport& report) {
            << " / " << num(m.frameMs.p99, 3) << " | " << num(ratio, 3) << " | " << num(m.loadRatio, 3) << " | "
            << num(m.cpuMs.p50, 3) << " | " << num(m.gpuMs.p50, 3) << " | " << num(m.speedup, 3) << " | "
            << errorCells(m) << num(m.maxErrDeg, 3) << " / " << num(m.maxErrPx, 3) << " | "
+           << (m.mode == Mode::Walls ? std::to_string(m.texturesOverAlpha) : std::string("-")) << " | "
            << (m.lodPixels > 0.0 ? num(m.maxLodErrPx, 3) + " (" + num(m.meanLodTolerancePx, 3) + ")" : std::string("-"))
            << " | " << num(std::round(m.triangles), 7) << " | " << num(m.drawCalls, 3) << " | "
            << m.textures << " | " << num(m.texels / 1e6, 3) << " | " << num(m.diskMB, 3) << " | " << num(m.gpuMB, 3)
-           << " |\n";
+           << " | " << num(m.uploadedMB.p50, 3) << " / " << num(m.uploadedMB.p99, 3) << " |\n";
     }
     md << "\n- load p99/p50: p99/p50 of the triangles drawn per frame, how much the path's load alone varies "
           "(frame time grows with it on llvmpipe); PSNR pooled: from the mean squared error of all compared "
@@ -238,11 +279,12 @@ std::string markdownReport(const BenchReport& report) {
 }
 
 std::string framesCsv(const BenchReport& report) {
-    std::string out = "mode,frame,frame_ms,triangles,draw_calls\n";
+    std::string out = "mode,frame,frame_ms,triangles,draw_calls,uploaded_mb,over_alpha\n";
     for (const ModeResult& m : report.modes)
         for (std::size_t i = 0; i < m.frames.size(); ++i)
             out += modeLabel(m) + "," + std::to_string(i) + "," + num(m.frames[i].frameMs, 6) + "," +
-                   num(m.frames[i].triangles, 10) + "," + num(m.frames[i].drawCalls, 10) + "\n";
+                   num(m.frames[i].triangles, 10) + "," + num(m.frames[i].drawCalls, 10) + "," +
+                   num(m.frames[i].uploadedMB, 6) + "," + std::to_string(m.frames[i].texturesOverAlpha) + "\n";
     return out;
 }
 

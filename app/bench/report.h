@@ -30,6 +30,8 @@ struct ScreenResult {
 // One timed frame of a mode, as bench_frames.csv lists it.
 struct FrameSample {
     double frameMs = 0.0, triangles = 0.0, drawCalls = 0.0;
+    double uploadedMB = 0.0;           // wall texture MB uploaded in the frame
+    int texturesOverAlpha = 0;         // drawn textures whose exact error exceeds alpha
 };
 
 // What a mode draws (app/bench/gl/driver.h lists the modes).
@@ -71,6 +73,10 @@ struct ModeResult {
     // p99/p50 of the triangles drawn per frame: how much the path's load alone varies, to
     // read next to the frame time's p99/p50 (the rest is stalls and noise).
     double loadRatio = 0.0;
+    // Textures drawn with an exact error above alpha, summed over the timed frames (the bound
+    // promises 0), and the wall texture MB uploaded per frame (p50, p95, p99 and mean; 0 when every texture was resident before the timed frames).
+    long texturesOverAlpha = 0;
+    TimeStats uploadedMB;
 };
 
 struct BenchReport {

@@ -94,6 +94,7 @@ RunSummary runSession(const RunOptions& o) {
     const display::Display display(o.display);
     scenes::SceneDescription description;
     const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description);
+    app::useRoute(description, o.route, o.scene.string());
     const double sceneSeconds = since();
     std::unique_ptr<app::Cluster> cluster = app::openCluster(o);
     const int rank = cluster ? cluster->rank() : 0;

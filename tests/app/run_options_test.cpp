@@ -63,5 +63,23 @@ TEST(RunOptions, EveryEnumValueHasOneWord) {
     EXPECT_EQ(words, (std::vector<std::string_view>{"guided", "fly", "walk", "none"}));
 }
 
+TEST(RunOptions, RouteWallFollowsTheWallPathAndNeedsOne) {
+    scenes::SceneDescription d;
+    d.walkPath = {{0, 1.7, 0}, {10, 1.7, 0}};
+    d.wallPath = {{0, 1.7, 5}, {10, 1.7, 5}, {10, 1.7, -5}};
+    scenes::SceneDescription walk = d;
+    useRoute(walk, Route::Walk, "plant.json");
+    EXPECT_EQ(walk.walkPath, d.walkPath);
+    scenes::SceneDescription wall = d;
+    useRoute(wall, Route::Wall, "plant.json");
+    EXPECT_EQ(wall.walkPath, d.wallPath);
+    d.wallPath.resize(1);
+    EXPECT_THAT([&] { useRoute(d, Route::Wall, "plant.json"); },
+                ::testing::ThrowsMessage<Error>(::testing::HasSubstr(
+                    "plant.json: --route wall: the scene has no wallPath (expected at least 2 points, got 1)")));
+    EXPECT_EQ(kRouteNames[0].first, "walk");
+    EXPECT_EQ(kRouteNames[1].first, "wall");
+}
+
 }  // namespace
 }  // namespace cavewall::app

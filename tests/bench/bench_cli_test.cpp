@@ -2,6 +2,7 @@
 // row is present with finite numbers, and bad input gives clear errors.
 #include "tests/cli/run_cli.h"
 #include "tests/support/csv_table.h"
+#include "tests/support/files.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -21,13 +22,8 @@ namespace {
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
-fs::path outputDir() {
-    const char* dir = std::getenv("CAVEWALL_TEST_OUTPUT");
-    return fs::path(dir ? dir : "/tmp") / "bench_cli";
-}
-
 TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
-    const fs::path root = outputDir();
+    const test::TempFolder root("bench_cli_quick");
     const fs::path plant = root / "plant20k";
     // Generated every run: a scene left by an earlier build may come from an older generator.
     const CliResult g = runCavewall({"generate", "plant", "--triangles", "20000", "--out", plant.string()});
@@ -41,7 +37,11 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     EXPECT_THAT(r.out, HasSubstr("| 1 | full |"));
     // --quick keeps its small images, and says so in the header and on every target line.
     EXPECT_THAT(r.out, HasSubstr("4 screens at 128x128 pixels, mono stereo mode"));
-    EXPECT_THAT(r.out, HasSubstr("targets (128x128 per screen, mono): fastest walls mode"));
+    // The bound holds in every walls mode (frame by frame, also in bench_frames.csv).
+    EXPECT_THAT(r.out, HasSubstr("targets (128x128 per screen, mono): textures drawn over alpha in"));
+    EXPECT_THAT(r.out, HasSubstr("walls modes: 0 (0: met)"));
+    // --alphas 20,30: no mode is eligible for the alpha <= 10 target, and the line says so.
+    EXPECT_THAT(r.out, HasSubstr("targets (128x128 per screen, mono): no walls mode at alpha <= 10"));
     EXPECT_THAT(r.out, HasSubstr("targets (128x128 per screen, mono): the limit (near geometry and bare wall quads)"));
     const test::CsvTable csv = test::readCsv(out / "bench.csv");
     std::map<std::string, int> rows;
@@ -74,6 +74,11 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         if (mode == "walls" || mode == "cells" || mode == "near") EXPECT_GT(row.number("flip_mean"), 0.0);
         EXPECT_GT(row.number("frame_ms_p50"), 0.0);
         if (mode == "walls") EXPECT_GT(row.number("textures"), 0.0);
+        EXPECT_EQ(row.number("over_alpha"), 0.0);
+        // Paged from a cold start, textures arrive during the timed frames; every other mode
+        // made them resident before (and modes without walls have none).
+        if (key == "walls 30 blend paged") EXPECT_GT(row.number("uploaded_mb_mean"), 0.0);
+        else EXPECT_EQ(row.number("uploaded_mb_p99"), 0.0);
     }
     // With levels of detail (--lod defaults to 1 px): full, near and every blend mode again,
     // every blend mode with them under a triangle budget, and every blend mode with them held
@@ -116,7 +121,7 @@ TEST(BenchSceneCli, BadInputIsAClearError) {
         {{"bench", "x.json", "--alphas", ""}, "--alphas"},
         {{"bench", "x.json", "--alphas", "10,30", "--warp-alpha", "20"},
          "--warp-alpha 20 is not one of the planned alphas (10,30); add it to --alphas"},
-        {{"bench", (outputDir() / "missing" / "scene.json").string(), "--quick"}, "missing"},
+        {{"bench", (test::testOutputRoot() / "bench_cli_missing" / "scene.json").string(), "--quick"}, "missing"},
         {{"bench", "x.json", "--stereo", "quad-buffer"}, "--stereo: expected mono or separate, got 'quad-buffer'"},
     };
     for (const Case& c : cases) {

@@ -78,34 +78,53 @@ TEST(BenchReport, MarkdownHasOneRowPerMode) {
     EXPECT_THAT(md, HasSubstr("| 2 | walls a=10 blend | 3 / 3.3 / 3.6 |"));
 }
 
-TEST(BenchReport, TargetsNameTheFastestWallsModeAbove30DbPooled) {
+TEST(BenchReport, TargetsFollowIssue14AtAlpha10WithLevelsOfDetailAbove32DbPooled) {
     BenchReport report;
-    ModeResult fastButBad = sample(Mode::Walls, 20, 1.0, 0.1);  // PSNR 20 dB: not eligible
-    // Pooled 20 dB but a capped mean of 30.5 dB (images of 11 and 50 dB, say): not eligible
-    // either, the capped mean is never ranked by.
-    ModeResult meanOnly = sample(Mode::Walls, 15, 4.0, 0.1);
-    meanOnly.error.meanPsnrDb = 30.5;
-    meanOnly.speedup = 7.5;
-    fastButBad.speedup = 30.0;
-    ModeResult good = sample(Mode::Walls, 10, 2.0, 0.01);       // PSNR 40 dB
-    good.speedup = 15.0;                                     // p99/p50 = 1.2 from sample()
+    report.noiseFloorRatio = 1.1;
+    auto walls = [](double alpha, double p50, double rmse, double speedup) {
+        ModeResult m = sample(Mode::Walls, alpha, p50, rmse);
+        m.lodPixels = 1.0;
+        m.speedup = speedup;
+        return m;
+    };
+    ModeResult fastButBad = walls(10, 1.0, 0.1, 30.0);     // PSNR 20 dB: not eligible
+    // Pooled 20 dB but a capped mean of 40 dB: not eligible either, the capped mean ranks nothing.
+    ModeResult meanOnly = walls(10, 1.5, 0.1, 20.0);
+    meanOnly.error.meanPsnrDb = 40.0;
+    ModeResult wideAlpha = walls(20, 1.2, 0.01, 25.0);     // 40 dB but alpha 20: not eligible
+    ModeResult noLod = walls(10, 1.4, 0.01, 21.0);
+    noLod.lodPixels = 0.0;                                   // 40 dB but no levels of detail
+    ModeResult at31 = walls(10, 1.8, 0.0282, 16.0);          // 31 dB: below the 32 dB bar
+    ModeResult good = walls(10, 2.0, 0.01, 15.0);            // 40 dB; p99/p50 1.2 from sample()
+    good.texturesOverAlpha = 0;
+    at31.texturesOverAlpha = 2;                              // counted over every walls mode
     ModeResult near = sample(Mode::Near, 0, 1.6, 0.05);
+    near.lodPixels = 1.0;
     ModeResult control = sample(Mode::Cells, 0, 1.8, 0.04);  // FLIP mean 0.04
-    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), control, near, fastButBad, meanOnly, good};
+    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), control, near, fastButBad, meanOnly, wideAlpha, noLod, at31, good};
     compareWithControl(report);
     const auto lines = targetLines(report);
-    ASSERT_EQ(lines.size(), 3u);
-    EXPECT_THAT(lines[0], HasSubstr("walls a=10 blend, speed-up 15 (>= 10: met)"));
-    EXPECT_THAT(lines[0], HasSubstr("PSNR 40 dB pooled (worst frame 37 dB)"));
-    EXPECT_THAT(lines[0], HasSubstr("p99/p50 1.2 (<= 1.3: met)"));
-    EXPECT_THAT(lines[0], HasSubstr("triangles drawn varying by 1.5"));  // 1500 / 1000
-    EXPECT_THAT(lines[1], HasSubstr("FLIP mean is 0.25x the control's"));  // 0.01 / 0.04
-    EXPECT_THAT(lines[1], HasSubstr("<= 0.5: met"));
-    EXPECT_THAT(lines[2], HasSubstr("1.25x the limit's"));  // 2.0 / 1.6
-    EXPECT_THAT(lines[2], HasSubstr("<= 1.2: not met"));
-    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), near, fastButBad, meanOnly};
-    EXPECT_THAT(targetLines(report),
-                ::testing::ElementsAre(HasSubstr("no walls mode reaches a pooled PSNR >= 30 dB")));
+    ASSERT_EQ(lines.size(), 5u);
+    EXPECT_THAT(lines[0], HasSubstr("textures drawn over alpha in 6 walls modes: 2 (0: not met)"));
+    EXPECT_THAT(lines[1], HasSubstr("walls a=10 blend lod 1px, speed-up 15 (>= 10: met)"));
+    EXPECT_THAT(lines[1], HasSubstr("PSNR 40 dB pooled (worst frame 37 dB)"));
+    EXPECT_THAT(lines[2], HasSubstr("FLIP mean is 0.25x the control's"));  // 0.01 / 0.04
+    EXPECT_THAT(lines[2], HasSubstr("<= 0.5: met"));
+    EXPECT_THAT(lines[3], HasSubstr("p99/p50 is 1.2, 1.09x the noise floor"));  // 1.2 / 1.1
+    EXPECT_THAT(lines[3], HasSubstr("<= 1.1x: met"));
+    EXPECT_THAT(lines[3], HasSubstr("triangles 1.5 (<= 1.3: not met)"));  // 1500 / 1000
+    EXPECT_THAT(lines[3], HasSubstr("texture MB uploaded p50 0"));
+    EXPECT_THAT(lines[4], HasSubstr("1.25x the limit's"));  // 2.0 / 1.6
+    EXPECT_THAT(lines[4], HasSubstr("<= 1.2: not met"));
+    // Without an eligible mode the closest is named and judged, and the miss is said.
+    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), control, near, fastButBad, at31};
+    compareWithControl(report);
+    const auto missed = targetLines(report);
+    ASSERT_GE(missed.size(), 2u);
+    EXPECT_THAT(missed[1], HasSubstr("reaches a pooled PSNR >= 32 dB (not met); the closest, walls a=10 blend lod 1px, "
+                                     "has 31 dB pooled at a speed-up of 16"));
+    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), near};
+    EXPECT_THAT(targetLines(report), ::testing::ElementsAre(HasSubstr("no walls mode at alpha <= 10 with levels of detail")));
 }
 
 TEST(BenchReport, EveryModeIsComparedWithTheCellsControl) {
@@ -158,7 +177,7 @@ TEST(BenchReport, WritesFilesAndMarksTheFrontInThePlot) {
     EXPECT_FALSE(std::filesystem::exists(folder / "flip_worst_2.png"));
     const test::CsvTable frames = test::readCsv(folder / "bench_frames.csv");
     ASSERT_EQ(frames.size(), 3u * 2);  // 2 frames per mode
-    EXPECT_EQ(frames.columns, (std::vector<std::string>{"mode", "frame", "frame_ms", "triangles", "draw_calls"}));
+    EXPECT_EQ(frames.columns, (std::vector<std::string>{"mode", "frame", "frame_ms", "triangles", "draw_calls", "uploaded_mb", "over_alpha"}));
     // The second mode's second frame: 1.2 x its p50 of 3 ms.
     EXPECT_EQ(frames[3].at("mode"), "walls a=10 blend");
     EXPECT_EQ(frames[3].at("frame"), "1");

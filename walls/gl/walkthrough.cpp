@@ -86,8 +86,9 @@ walls::FramePlan Walkthrough::planFrame(const walls::FrameInput& input, const st
     w.pager.request(wanted.now, wanted.soon);
     if (_options.synchronousPaging) w.pager.waitIdle();
     // One upload round per frame; synchronous paging uploads until nothing is left.
-    while (w.store.update() > 0 && _options.synchronousPaging) {
-    }
+    _uploadedBytes = 0;
+    for (std::size_t bytes = w.store.update(); bytes > 0; bytes = _options.synchronousPaging ? w.store.update() : 0)
+        _uploadedBytes += bytes;
     return _planner->plan([&w](int id) { return w.store.resident(id); });
 }
 
@@ -134,6 +135,7 @@ walls::FrameResult Walkthrough::renderFrame(const walls::FrameInput& input) {
     const std::vector<display::ScreenView> views = renderedViews(input.head);
     walls::FramePlan plan = planFrame(input, views);
     walls::FrameResult result;
+    result.uploadedBytes = _uploadedBytes;
     result.eyeWorld = plan.eyeWorld;
     result.cell = plan.cell;
     result.zone = plan.zone;

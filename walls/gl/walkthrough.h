@@ -86,6 +86,7 @@ private:
     RenderTargets _targets;
     SceneRenderer _renderer;
     std::unique_ptr<WallRuntime> _walls;
+    std::size_t _uploadedBytes = 0;  // wall texture bytes uploaded by the last planFrame
     std::unique_ptr<walls::FramePlanner> _planner;
     std::unique_ptr<HandCursorPass> _cursor;
     std::unique_ptr<WarpPass> _warp;         // Transition::Warp with walls only

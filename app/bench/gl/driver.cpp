@@ -151,8 +151,11 @@ BenchReport runBenchmark(const BenchOptions& o) {
     const display::Display display(o.display);
     scenes::SceneDescription description;
     const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description);
+    app::useRoute(description, o.route, o.scene.string());
     if (description.walls.empty()) throw Error(o.scene.string() + ": the scene has no virtual walls (expected at least 1 to bench)");
-    const bench::EyePath path = bench::recordEyePath(scene, description, o.display, o.tracker, o.frames);
+    bench::EyePath path = bench::recordEyePath(scene, description, o.display, o.tracker, o.frames);
+    if (o.route == app::Route::Wall)
+        path.description += " (--route wall: the scene's wallPath, which hugs the virtual walls, as its walkPath)";
     const auto context = gl::createHeadlessContext();
     BenchReport report;
     report.header = headerLines(o, scene, *context, path);

@@ -37,6 +37,7 @@
 
 #include "config/display_config.h"
 #include "app/bench/report.h"
+#include "app/run_options.h"
 #include "walls/plan.h"
 
 #include <filesystem>
@@ -50,6 +51,7 @@ struct BenchOptions {
     std::filesystem::path scene;                  // scene.json, its folder, or glTF/GLB
     config::DisplayConfig display;                // validated; drawn at its screens' resolutions
     std::string tracker = "sim:walk";             // head source (input::makeTracker spec)
+    app::Route route = app::Route::Walk;          // the scene's path the eye follows
     long frames = 120;                            // frames of the eye path
     int compareEvery = 4;                         // frames between image comparisons, >= 1
     std::vector<double> alphasDeg{10, 20, 30};

@@ -39,7 +39,8 @@ ModeAccumulator::ModeAccumulator(ModeResult mode, const display::Display& displa
 }
 
 void ModeAccumulator::addFrame(const FrameCost& cost) {
-    _mode.frames.push_back({cost.frameMs, cost.triangles, cost.drawCalls});
+    _mode.frames.push_back({cost.frameMs, cost.triangles, cost.drawCalls, cost.uploadedMB, cost.texturesOverAlpha});
+    _mode.texturesOverAlpha += cost.texturesOverAlpha;
     _frame.push_back(cost.frameMs);
     _cpu.push_back(cost.cpuMs);
     _gpu.push_back(cost.gpuMs);
@@ -91,6 +92,9 @@ ModeResult ModeAccumulator::finish(double fullP50) const {
     for (const FrameSample& f : m.frames) triangles.push_back(f.triangles);
     const TimeStats load = timeStats(triangles);
     m.loadRatio = load.p50 > 0.0 ? load.p99 / load.p50 : 0.0;
+    std::vector<double> uploads;
+    for (const FrameSample& f : m.frames) uploads.push_back(f.uploadedMB);
+    m.uploadedMB = timeStats(uploads);
     m.error = _errors.result();
     m.flipWorst = _errors.worstFlip();
     for (std::size_t s = 0; s < m.screens.size(); ++s) {
@@ -137,7 +141,8 @@ void runWalkthroughMode(const ModeContext& c, std::optional<walls::WallSetup> wa
         walls::FrameResult r = render(in);
         acc.addFrame({r.frameMs, r.cpuMs, r.gpuMs, static_cast<double>(r.stats.triangles),
                       static_cast<double>(r.stats.drawCalls), r.maxErrorDeg, r.maxErrorPixels, r.pager.residentMB,
-                      r.pager.misses, r.perScreen, r.lodErrorPx, r.lodTolerancePx, r.lodOverBudget});
+                      r.pager.misses, r.perScreen, r.lodErrorPx, r.lodTolerancePx, r.lodOverBudget,
+                      r.texturesOverAlpha, static_cast<double>(r.uploadedBytes) / 1e6});
         if (!in.readImages) continue;
         if (store) (*store)[in.frame] = std::move(r.images);
         else if (reference) acc.compare(in.frame, in.head, r.images, reference->at(in.frame));

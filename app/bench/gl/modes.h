@@ -26,6 +26,8 @@ struct FrameCost {
     std::vector<gl::ViewStats> perScreen;  // per display screen: CPU ms, triangles, draw calls
     double lodErrorPx = 0.0, lodTolerancePx = 0.0;  // FrameResult's (0 without levels of detail)
     bool overBudget = false;
+    int texturesOverAlpha = 0;          // FrameResult's: drawn textures whose exact error exceeds alpha
+    double uploadedMB = 0.0;            // wall texture MB uploaded this frame
 };
 
 // Collects one mode's frames and comparisons; finish() fills the bench::ModeResult.
