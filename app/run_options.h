@@ -72,6 +72,8 @@ struct RunOptions {
     std::optional<std::filesystem::path> record;// write the input stream for replay
     bool synchronousPaging = false;             // see gl::WalkthroughOptions
     double textureBudgetMB = 256.0;
+    int bakeResolution = 1024;                  // --max-res: BakeSettings::maxResolution (bench, demo: 512)
+    double geometryBudgetMB = 0.0;              // --geometry-budget: page geometry by cell, MB; 0 off
     double lodPixels = 0.0;                     // --lod: level-of-detail tolerance in pixels, 0 off
     std::size_t triangleBudget = 0;             // --triangle-budget: per frame, 0 none (needs --lod)
     double frameBudgetMs = 0.0;                 // --frame-budget-ms: frame-time target, 0 none (needs --lod)
@@ -95,6 +97,11 @@ struct RunSummary {
     double worstErrorDeg = 0.0, worstErrorPx = 0.0;
     double worstLodErrorPx = 0.0;               // largest level-of-detail error drawn, pixels
     long misses = 0, pageIns = 0;
+    // Geometry paging (--geometry-budget): the most resident at once, the largest three cells'
+    // geometry and the whole model's (walls/geometry_pager.h sizes), MB; cumulative misses and
+    // page-ins; cells drawn though not resident, summed over frames.
+    double geometryPeakMB = 0.0, largestThreeCellsMB = 0.0, modelGeometryMB = 0.0;
+    long geometryMisses = 0, geometryPageIns = 0, geometryForced = 0;
     std::vector<std::filesystem::path> foldouts;// saved fold-outs, in frame order
     // With RunOptions::keepSavedImages: every saved frame's images and the head (cave frame,
     // metres) it was drawn from, in frame order.

@@ -14,7 +14,7 @@ const char* const kRunUsage =
     "                    [--nav guided|fly|walk|none] [--pace M/S] [--route walk|wall] [--headless|--window]\n"
     "                    [--transition blend|warp] [--no-walls] [--alpha DEG] [--min-zone M] [--ppd N]\n"
     "                    [--save-frames none|every:K|all] [--record FILE] [--cache DIR]\n"
-    "                    [--budget MB] [--sync-paging]\n"
+    "                    [--budget MB] [--geometry-budget MB] [--max-res N] [--sync-paging]\n"
     "                    [--lod PX [--triangle-budget N|--frame-budget-ms T] [--lod-max PX]]\n"
     "                    [--cluster [--cluster-timeout S]]\n"
     "\n"
@@ -31,8 +31,14 @@ const char* const kRunUsage =
     "in `cavewall plan`) and baked into the cache (--cache, default $CAVEWALL_CACHE or\n"
     "~/.cache/cavewall) before the first frame; near cells are drawn as geometry and the rest as\n"
     "wall textures, blended by zone. --no-walls draws the full (frustum-culled) geometry instead.\n"
-    "--budget: GPU MB for wall textures (default 256); --sync-paging waits for textures instead of\n"
-    "falling back (reproducible frames). --lod PX draws every object at the coarsest level of detail\n"
+    "--max-res: largest baked texture side (default 1024, as `cavewall bake`; the bench and demo\n"
+    "bake at 512: --max-res 512 reuses their cache). --budget: GPU MB for wall textures (default 256); --sync-paging waits for textures instead of\n"
+    "falling back (reproducible frames). --geometry-budget MB pages the model's geometry by cell\n"
+    "under that GPU budget (default 0: off; with walls only): the cells drawn as geometry and their\n"
+    "neighbours load in the background, and a wall whose cell behind is not resident keeps its\n"
+    "textures (frames.csv: geometry_resident_mb, geometry_page_ins, geometry_misses cumulative;\n"
+    "geometry_kept walls kept as textures and geometry_forced cells drawn unloaded, per frame).\n"
+    "--lod PX draws every object at the coarsest level of detail\n"
     "whose geometric error covers at most PX pixels on any screen it appears on (levels are built\n"
     "when the scene loads; default 0: full detail); --triangle-budget N raises that tolerance in\n"
     "frames whose scene geometry would submit more than N triangles, just enough to fit\n"
@@ -74,12 +80,22 @@ std::string seconds(double s) {
     return text;
 }
 
+std::string geometryLine(const app::RunSummary& s) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "run: geometry paging: at most %.2f MB resident (largest three cells %.2f MB, whole model %.2f MB); "
+                  "page-ins %ld, misses %ld, cells drawn unloaded %ld\n",
+                  s.geometryPeakMB, s.largestThreeCellsMB, s.modelGeometryMB, s.geometryPageIns, s.geometryMisses,
+                  s.geometryForced);
+    return text;
+}
+
 }  // namespace
 
 int runRun(const std::vector<std::string>& words) {
     const Args args(words, {"headless", "window", "no-walls", "sync-paging", "cluster"});
     args.expectFlags({"scene", "display", "tracker", "frames", "nav", "pace", "route", "headless", "window", "transition",
-                      "no-walls", "alpha", "min-zone", "ppd", "save-frames", "record", "cache", "budget",
+                      "no-walls", "alpha", "min-zone", "ppd", "save-frames", "record", "cache", "budget", "geometry-budget", "max-res",
                       "sync-paging", "out", "cluster", "cluster-timeout", "lod", "triangle-budget", "frame-budget-ms", "lod-max"});
     if (args.has("headless") && args.has("window")) throw Error("--headless and --window: expected one of them, got both");
     app::RunOptions o;
@@ -102,6 +118,8 @@ int runRun(const std::vector<std::string>& words) {
     if (auto r = args.get("record")) o.record = *r;
     o.saveEvery = saveEvery(args.getOr("save-frames", "none"));
     o.textureBudgetMB = args.number("budget", o.textureBudgetMB, 1e-3, 1e6);
+    o.geometryBudgetMB = args.number("geometry-budget", 0.0, 0.0, 1e6);
+    o.bakeResolution = static_cast<int>(args.integer("max-res", o.bakeResolution, 16, 16384));
     o.synchronousPaging = args.has("sync-paging");
     o.lodPixels = args.number("lod", 0.0, 0.0, 1e4);
     o.triangleBudget = static_cast<std::size_t>(args.integer("triangle-budget", 0, 0, 1000000000));
@@ -118,6 +136,7 @@ int runRun(const std::vector<std::string>& words) {
               << "run: first frame after " << seconds(s.firstFrameSeconds) << " s (scene loaded at "
               << seconds(s.sceneSeconds) << " s, walls ready at " << seconds(s.wallsSeconds)
               << " s, walkthrough ready at " << seconds(s.readySeconds) << " s)\n"
+              << (o.geometryBudgetMB > 0.0 && s.walls ? geometryLine(s) : std::string())
               << (o.out / "frames.csv").string() << "\n";
     return 0;
 }

@@ -57,6 +57,7 @@ std::optional<walls::BakedTexture> linkCachedTexture(const CacheIndex& index, co
     walls::BakedTexture got = wanted;
     got.bytes = it->second.entry.bytes;
     got.hash = it->second.entry.hash;
+    walls::stampTexture(folder, got);  // a hard link shares the source's stamp, a copy has its own
     // The source may have changed between the check and the link: check the copy itself.
     if (!walls::textureFileValid(folder, got)) return std::nullopt;
     return got;

@@ -5,8 +5,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <optional>
+
+#include <sys/stat.h>
 
 namespace cavewall::walls {
 
@@ -46,6 +50,16 @@ std::uint64_t parseHex64(const config::JsonNode& node) {
     return std::stoull(s, nullptr, 16);
 }
 
+// Times in nanoseconds and inode numbers need all their bits: read as integers, never through a
+// double.
+std::int64_t parseInt64(const config::JsonNode& node) {
+    const nlohmann::json& v = node.raw();
+    if (!v.is_number_integer() || v.get<std::int64_t>() < 0 ||
+        (v.is_number_unsigned() && v.get<std::uint64_t>() > INT64_MAX))
+        node.fail("expected an integer in [0, 2^63), got " + config::describeJson(v));
+    return v.get<std::int64_t>();
+}
+
 }  // namespace
 
 std::string manifestToJson(const BakeManifest& m) {
@@ -54,8 +68,8 @@ std::string manifestToJson(const BakeManifest& m) {
         textures.push_back({{"id", t.id}, {"cell", t.cell}, {"wall", t.wall},
                             {"samplingPoint", {t.samplingPoint.x, t.samplingPoint.y, t.samplingPoint.z}},
                             {"resolution", {t.resolution.x, t.resolution.y}}, {"file", t.file},
-                            {"bytes", t.bytes}, {"hash", hex64(t.hash)}});
-    const nlohmann::json j{{"version", 1}, {"key", hex64(m.key)}, {"alphaDeg", m.alphaDeg}, {"textures", textures}};
+                            {"bytes", t.bytes}, {"hash", hex64(t.hash)}, {"mtimeNs", t.mtimeNs}, {"inode", t.inode}});
+    const nlohmann::json j{{"version", 2}, {"key", hex64(m.key)}, {"alphaDeg", m.alphaDeg}, {"textures", textures}};
     return j.dump(1) + "\n";
 }
 
@@ -63,12 +77,13 @@ BakeManifest manifestFromJson(std::string_view text, const std::string& source) 
     const auto doc = config::JsonDocument::fromText(text, source);
     const config::JsonNode root = doc.root();
     root.expectKeys({"version", "key", "alphaDeg", "textures"});
-    root.at("version").integer(1, 1);
+    const int version = root.at("version").integer(1, 2);
     BakeManifest m;
     m.key = parseHex64(root.at("key"));
     m.alphaDeg = root.at("alphaDeg").number(0.0, 90.0);
     for (const config::JsonNode& n : root.at("textures").items()) {
-        n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "file", "bytes", "hash"});
+        if (version == 1) n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "file", "bytes", "hash"});
+        else n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "file", "bytes", "hash", "mtimeNs", "inode"});
         BakedTexture t;
         t.id = n.at("id").integer(0, 1 << 30);
         t.cell = n.at("cell").integer(0, 1 << 30);
@@ -80,6 +95,10 @@ BakeManifest manifestFromJson(std::string_view text, const std::string& source) 
             n.at("file").fail("expected a plain file name in the manifest's folder, got \"" + t.file + "\"");
         t.bytes = static_cast<std::uint64_t>(n.at("bytes").number(0.0, 1e15));
         t.hash = parseHex64(n.at("hash"));
+        if (version >= 2) {
+            t.mtimeNs = parseInt64(n.at("mtimeNs"));
+            t.inode = static_cast<std::uint64_t>(parseInt64(n.at("inode")));
+        }
         m.textures.push_back(std::move(t));
     }
     return m;
@@ -108,6 +127,35 @@ bool textureFileValid(const std::filesystem::path& folder, const BakedTexture& t
     } catch (const Error&) {
         return false;
     }
+}
+
+namespace {
+
+struct Stat {
+    std::uint64_t bytes = 0, inode = 0;
+    std::int64_t mtimeNs = 0;
+};
+
+std::optional<Stat> statFile(const std::filesystem::path& file) {
+    struct stat st {};
+    if (::stat(file.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return std::nullopt;
+    return Stat{static_cast<std::uint64_t>(st.st_size), static_cast<std::uint64_t>(st.st_ino),
+                static_cast<std::int64_t>(st.st_mtim.tv_sec) * 1000000000 + st.st_mtim.tv_nsec};
+}
+
+}  // namespace
+
+bool stampTexture(const std::filesystem::path& folder, BakedTexture& t) {
+    const std::optional<Stat> s = statFile(folder / t.file);
+    t.mtimeNs = s ? s->mtimeNs : 0;
+    t.inode = s ? s->inode : 0;
+    return s.has_value();
+}
+
+bool textureFileUnchanged(const std::filesystem::path& folder, const BakedTexture& t) {
+    if (t.mtimeNs == 0 && t.inode == 0) return false;
+    const std::optional<Stat> s = statFile(folder / t.file);
+    return s && s->bytes == t.bytes && s->mtimeNs == t.mtimeNs && s->inode == t.inode;
 }
 
 }  // namespace cavewall::walls

@@ -59,6 +59,8 @@ void BakeWriter::worker() {
             std::error_code ec;
             job.entry.bytes = std::filesystem::file_size(file, ec);
             if (ec) throw Error(file.string() + ": cannot read the size of the written file (" + ec.message() + ")");
+            // The time first: a change while hashing then shows as a changed time next start.
+            walls::stampTexture(_folder, job.entry);
             job.entry.hash = walls::hashFile(file);
         } catch (...) {
             error = std::current_exception();

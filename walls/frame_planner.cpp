@@ -113,12 +113,25 @@ TextureRequests FramePlanner::requests(const FrameInput& input, const std::vecto
     }
     for (const WallBlend& b : _seen.beyond)
         for (const auto& [id, weight] : b.textures) r.now.push_back(id);
+    r.cellsNow = _selection.allGeometry() ? std::vector<int>{} : _selection.geometryCells;
+    auto soon = [&](int cell) {
+        if (std::find(r.cellsSoon.begin(), r.cellsSoon.end(), cell) == r.cellsSoon.end()) r.cellsSoon.push_back(cell);
+    };
+    // The cells the selection draws 1.5 m away in each direction (as the textures' neighbouring
+    // zones), then those behind every wall it selects, in view or not (a turn shows them).
+    for (int dx = -1; dx <= 1; ++dx)
+        for (int dz = -1; dz <= 1; ++dz)
+            if (dx != 0 || dz != 0)
+                for (int c : _selector->select(_eye + 1.5 * glm::dvec3(dx, 0, dz)).geometryCells) soon(c);
+    for (const std::vector<WallBlend>* walls : {&_selection.walls, &_selection.beyond})
+        for (const WallBlend& b : *walls) soon(_walls->plan.walls[b.wall].cells[1 - b.side]);
     return r;
 }
 
-FramePlan FramePlanner::plan(const Residency& resident) {
+FramePlan FramePlanner::plan(const Residency& resident, const Residency& cellResident) {
     assert(!_planned && "plan() follows requests(), once per frame");
     _planned = true;
+    _cellResident = cellResident;
     FramePlan p;
     p.eyeWorld = _eye;
     if (!_selector) {
@@ -135,6 +148,8 @@ FramePlan FramePlanner::plan(const Residency& resident) {
         }
     p.geometryCells.assign(_description.cells.size(), _selection.allGeometry());
     for (int c : _selection.geometryCells) setCell(p.geometryCells, c, true);
+    _cellNeeded.assign(_description.cells.size(), false);
+    setCell(_cellNeeded, p.cell, true);
     p.walls = _outOfView;
     const bool warp = _transition == Transition::Warp;
     for (const WallBlend& selected : _seen.walls) {
@@ -152,6 +167,12 @@ FramePlan FramePlanner::plan(const Residency& resident) {
         state.beyond = true;
         p.walls.push_back(std::move(state));
     }
+    // Geometry paging: a cell that only walls kept as textures wanted is not drawn.
+    if (_cellResident)
+        for (std::size_t c = 0; c < p.geometryCells.size(); ++c) {
+            if (p.geometryCells[c] && !_cellNeeded[c] && !_cellResident(static_cast<int>(c))) p.geometryCells[c] = false;
+            if (p.geometryCells[c] && !_cellResident(static_cast<int>(c))) p.geometryForced.push_back(static_cast<int>(c));
+        }
     // A morphing wall's cell behind is drawn by the warp pass only.
     for (const WarpWall& w : p.warpWalls) setCell(p.geometryCells, w.cell, false);
     p.objects = objectsOfCells(_scene, p.geometryCells);
@@ -173,12 +194,42 @@ WallState FramePlanner::chooseWall(const WallBlend& b, const Residency& resident
         state.textures = keep ? m.lastTextures : TextureSet{};
         if (state.textures.empty()) state.geometryWeight = 1.0;
     }
-    if (state.geometryWeight > 0.0) setCell(p.geometryCells, planned.cells[1 - b.side], true);
+    const int behind = planned.cells[1 - b.side];
+    if (state.geometryWeight > 0.0 && _cellResident && !_cellResident(behind)) keepTexturesFor(b, resident, state, p);
+    if (state.geometryWeight > 0.0) {
+        setCell(p.geometryCells, behind, true);
+        setCell(_cellNeeded, behind, true);
+    }
     if (!state.textures.empty()) {
         m.lastSide = b.side;
         m.lastTextures = state.textures;
     }
     return state;
+}
+
+// Geometry paging (header, step 4): the wall's cell behind is not resident, so it draws
+// textures alone when any within alpha are resident: this frame's without the geometry weight,
+// else the last ones drawn from this side.
+void FramePlanner::keepTexturesFor(const WallBlend& b, const Residency& resident, WallState& state, FramePlan& p) {
+    auto allResident = [&](const TextureSet& set) {
+        return !set.empty() && std::all_of(set.begin(), set.end(), [&](auto& t) { return resident(t.first); });
+    };
+    TextureSet kept;
+    if (allResident(state.textures)) {
+        kept = state.textures;
+    } else {
+        const Memory& m = _memory[b.wall];
+        if (m.lastSide == b.side && allResident(m.lastTextures) && withinBound(m.lastTextures, _walls->plan.walls[b.wall]))
+            kept = m.lastTextures;
+    }
+    double total = 0.0;
+    for (const auto& [id, weight] : kept) total += weight;
+    if (total <= 0.0) return;  // nothing proven to show: the geometry is drawn (geometryForced)
+    for (auto& [id, weight] : kept) weight /= total;
+    state.textures = std::move(kept);
+    state.geometryWeight = 0.0;
+    state.fallback = true;
+    ++p.geometryMisses;
 }
 
 // The quad of a wall drawing textures: the largest weights first, at most kMaxWallTextures.

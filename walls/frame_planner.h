@@ -17,6 +17,14 @@
 //      (maxAngularError), else it is drawn as geometry (its cell behind joins the geometry
 //      cells): a wall is never black or missing. Such walls are flagged `fallback`.
 //   4. geometry: all structure + objects without a cell + objects of the geometry cells.
+//      Geometry paging (walls/geometry_pager.h, plan's `cellResident` given): a wall whose cell
+//      behind would be drawn as geometry while that cell's geometry is not resident keeps its
+//      textures instead (this frame's, renormalised without the geometry weight, or the last
+//      ones drawn when still resident and within alpha), flagged `fallback` and counted in
+//      FramePlan::geometryMisses; the cell is then not drawn unless another wall needs it.
+//      Only when no texture within alpha exists (the wall's geometry zone) or for the viewer's
+//      own cell is a non-resident cell drawn (FramePlan::geometryForced: the executor must
+//      load it before drawing; prefetching the neighbours as `soon` makes this rare).
 //   5. the error: maxAngularError (walls/angular_error.h) of every texture drawn with non-zero
 //      weight against the true eye, in degrees and in pixels (FrameResult::maxErrorPixels), and
 //      the count of those over the plan's alpha (+ kErrorTolerance): 0 while the bound holds.
@@ -62,6 +70,10 @@ using Residency = std::function<bool(int id)>;
 struct TextureRequests {
     std::vector<int> now;    // drawn this frame (weight > 0), the cell's and beyond walls'
     std::vector<int> soon;   // of the neighbouring zones (may repeat ids of `now`)
+    // Geometry paging by cell (walls/geometry_pager.h): the cells the selection draws as
+    // geometry now; soon, those it draws as geometry 1.5 m away in each of 8 directions and
+    // those behind every wall it selects, in view or not (a turn of the head shows them).
+    std::vector<int> cellsNow, cellsSoon;
 };
 
 // One wall quad to draw with its textures (walls/gl/wall_pass.h).
@@ -94,6 +106,8 @@ struct FramePlan {
     double maxErrorDeg = 0.0, maxErrorPixels = 0.0;
     int texturesOverAlpha = 0;                     // as FrameResult
     int warpFallbacks = 0;
+    int geometryMisses = 0;                        // walls kept as textures: their cell behind was not resident
+    std::vector<int> geometryForced;               // cells drawn as geometry though not resident (step 4)
 };
 
 // The objects drawn as geometry when `cells` (per cell index, true = drawn) are: all structure,
@@ -112,8 +126,9 @@ public:
 
     // Steps 1-2 of the header for this frame; `views` are the views the executor draws.
     TextureRequests requests(const FrameInput& input, const std::vector<display::ScreenView>& views);
-    // Steps 3-5 for the frame of the last requests() call, against `resident`.
-    FramePlan plan(const Residency& resident);
+    // Steps 3-5 for the frame of the last requests() call, against `resident` textures and
+    // `cellResident` cells (empty: every cell's geometry is resident).
+    FramePlan plan(const Residency& resident, const Residency& cellResident = {});
 
     bool hasWalls() const { return _selector.has_value(); }
     const std::vector<int>& screens() const { return _screens; }
@@ -122,6 +137,7 @@ private:
     struct Memory;
     struct WarpOutcome;
     WallState chooseWall(const WallBlend& blend, const Residency& resident, FramePlan& plan);
+    void keepTexturesFor(const WallBlend& blend, const Residency& resident, WallState& state, FramePlan& plan);
     WarpOutcome warpWall(const WallBlend& blend, const WallState& state);
     void applyWarp(const WallBlend& blend, const WarpOutcome& outcome, WallState& state, FramePlan& plan);
     bool withinBound(const std::vector<std::pair<int, double>>& set, const PlannedWall& wall) const;
@@ -147,6 +163,8 @@ private:
     FrameSelection _selection, _seen;              // all, and those in view
     std::vector<WallState> _outOfView;
     bool _planned = true;                          // plan() was called for this frame
+    Residency _cellResident;                       // during plan(): geometry paging, or empty
+    std::vector<bool> _cellNeeded;                 // during plan(): cells some wall draws as geometry
 };
 
 }  // namespace cavewall::walls

@@ -9,6 +9,7 @@
 #include "display/display.h"
 #include "display/frame_stats.h"
 #include "scenes/screen_image.h"
+#include "walls/geometry_pager.h"
 #include "walls/texture_pager.h"
 
 #include <glm/gtc/quaternion.hpp>
@@ -38,6 +39,9 @@ struct WalkthroughSettings {
     // frames depend only on the input (tests, replays, golden images). Off: a frame never
     // waits, missing textures fall back (walls/frame_planner.h).
     bool synchronousPaging = false;
+    // > 0: page the model's geometry by cell under this GPU budget in MB (walls/geometry_pager.h;
+    // with virtual walls only); 0: every cell stays resident.
+    double geometryBudgetMB = 0.0;
     // Reads every MIP level of a baked texture file on the pager's thread; empty:
     // scenes::readMipLevels. Tests inject slow or failing decoders here.
     TexturePager::Decoder decoder;
@@ -92,6 +96,9 @@ struct FrameResult {
     std::size_t uploadedBytes = 0;           // wall texture bytes (all MIP levels) uploaded this
                                              // frame, at most WalkthroughSettings::uploadMBPerFrame
                                              // unless one texture alone is larger
+    GeometryPagerStats geometry;             // geometry paging by cell (zeros when off)
+    int geometryMisses = 0;                  // walls kept as textures: cell behind not resident
+    int geometryForced = 0;                  // cells drawn though not resident (loaded at once: a stall)
     double maxErrorDeg = 0.0;                // max over drawn textures (0 without textures)
     int texturesOverAlpha = 0;               // sum of WallState::texturesOverAlpha (must be 0)
     // maxErrorDeg converted to pixels on the screens this instance renders: error (rad) times

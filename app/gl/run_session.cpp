@@ -13,6 +13,7 @@
 #include "app/gl/run_output.h"
 #include "app/scene_query.h"
 #include "walls/gl/baker.h"
+#include "walls/geometry_pager.h"
 #include "walls/gl/walkthrough.h"
 #include "walls/wall_setup.h"
 
@@ -37,6 +38,7 @@ walls::WallSetup prepareWalls(const RunOptions& o, const scenes::Scene& scene, c
     gl::BakeRequest request;
     request.scene = o.scene;
     request.context = &context;
+    request.settings.maxResolution = o.bakeResolution;
     if (o.cache) request.cache = *o.cache;
     if (o.verbose)
         request.progress = [](const gl::BakeProgress& p) {
@@ -85,6 +87,15 @@ walls::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scen
     return std::move(*setup);
 }
 
+// The sizes geometry paging is judged by (issue 15: resident at most the largest three cells).
+void geometrySizes(const scenes::Scene& scene, const scenes::SceneDescription& d, RunSummary& summary) {
+    std::vector<std::size_t> cells = walls::cellGeometryBytes(scene, static_cast<int>(d.cells.size()));
+    std::sort(cells.rbegin(), cells.rend());
+    constexpr double kMB = 1024.0 * 1024.0;
+    for (std::size_t i = 0; i < std::min<std::size_t>(3, cells.size()); ++i) summary.largestThreeCellsMB += cells[i] / kMB;
+    summary.modelGeometryMB = walls::modelGeometryBytes(scene) / kMB;
+}
+
 }  // namespace
 
 RunSummary runSession(const RunOptions& o) {
@@ -110,6 +121,7 @@ RunSummary runSession(const RunOptions& o) {
     gl::WalkthroughOptions options;
     options.synchronousPaging = o.synchronousPaging;
     options.textureBudgetMB = o.textureBudgetMB;
+    options.geometryBudgetMB = o.geometryBudgetMB;
     options.transition = o.transition;
     options.render.lodPixels = o.lodPixels;
     options.triangleBudget = o.triangleBudget;
@@ -124,6 +136,7 @@ RunSummary runSession(const RunOptions& o) {
     std::optional<display::FrameTimeBudget> frameBudget;
     if (o.frameBudgetMs > 0.0) frameBudget.emplace(o.frameBudgetMs);
     summary.walls = walkthrough.hasWalls();
+    geometrySizes(scene, description, summary);
     for (long i = 0; i < o.frames; ++i) {
         const bool save = o.saveEvery > 0 && i % o.saveEvery == 0;
         if (context->windowCount() > 0 && context->pollCloseRequested()) break;  // a window was closed
@@ -144,6 +157,10 @@ RunSummary runSession(const RunOptions& o) {
         summary.worstLodErrorPx = std::max(summary.worstLodErrorPx, r.lodErrorPx);
         summary.misses = r.pager.misses;
         summary.pageIns = r.pager.pageIns;
+        summary.geometryPeakMB = std::max(summary.geometryPeakMB, r.geometry.residentMB);
+        summary.geometryMisses = r.geometry.misses;
+        summary.geometryPageIns = r.geometry.pageIns;
+        summary.geometryForced += r.geometryForced;
         if (o.verbose && (i + 1) % 60 == 0)
             std::cout << "frame " << i + 1 << "/" << o.frames << ": " << r.frameMs << " ms\n" << std::flush;
     }

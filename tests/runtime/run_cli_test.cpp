@@ -59,6 +59,28 @@ std::vector<std::string> wallRun(const fs::path& out, const std::string& tracker
             "--cache", cacheDir(), "--out", out.string()};
 }
 
+// Geometry paging (walls/geometry_pager.h): off by default (zeros); on, the viewer's cell and
+// its neighbours are paged in, and a budget smaller than one cell still never drops a frame.
+TEST(RunCli, GeometryBudgetPagesCellsAndReportsThem) {
+    const fs::path off = outputDir("geometry-off"), on = outputDir("geometry-on");
+    ASSERT_EQ(runCavewall(wallRun(off, "sim:walk?seed=2", 12)).exitCode, 0);
+    std::vector<std::string> args = wallRun(on, "sim:walk?seed=2", 12);
+    args.insert(args.end(), {"--geometry-budget", "0.001", "--sync-paging"});
+    const CliResult r = runCavewall(args);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("run: geometry paging: at most "));
+    const auto rowsOff = readCsv(off / "frames.csv"), rowsOn = readCsv(on / "frames.csv");
+    ASSERT_EQ(rowsOn.size(), 12u);
+    for (const auto& row : rowsOff) EXPECT_EQ(row.at("geometry_page_ins"), "0");
+    for (const auto& row : rowsOn) {
+        SCOPED_TRACE(row.at("frame"));
+        // Whatever is wanted now stays resident over the budget: at least the viewer's cell.
+        EXPECT_GT(std::stod(row.at("geometry_resident_mb")), 0.0);
+        EXPECT_GE(std::stol(row.at("geometry_page_ins")), 1);
+        EXPECT_EQ(row.at("over_alpha"), "0");
+    }
+}
+
 TEST(RunCli, WritesFramesWallsAndImagesOnTheSmallPlant) {
     const fs::path out = outputDir("end-to-end");
     std::vector<std::string> args = wallRun(out, "sim:walk?seed=2", 40);

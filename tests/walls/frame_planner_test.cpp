@@ -84,6 +84,56 @@ protected:
 
 constexpr int kBackBox = 2;  // hallScene's object in the cell behind the wall
 
+// Geometry paging (walls/geometry_pager.h): while the back cell's geometry is not resident, a
+// wall blending into it shows its textures alone (renormalised, counted); in its geometry zone,
+// where no texture is proven, the cell is drawn anyway and reported as forced.
+TEST_F(FramePlannerTest, ACellNotResidentKeepsTheWallTexturesUnlessNoneIsProven) {
+    const WallSetup walls = setup(10.0);
+    const FrameSelector selector(walls.plan, walls.table, description);
+    std::optional<glm::dvec3> strip, zone;  // blending textures and geometry; geometry alone
+    for (double z = 9.5; z > 0.05; z -= 0.05) {
+        const WallBlend b = blendAt(selector, 0.0, z);
+        if (!strip && !b.textures.empty() && b.geometryWeight > 0.0 && b.geometryWeight < 1.0) strip = glm::dvec3(0, 1.7, z);
+        if (!zone && b.textures.empty()) zone = glm::dvec3(0, 1.7, z);
+    }
+    ASSERT_TRUE(strip && zone);
+    const std::set<int> everything = [&] {
+        std::set<int> ids;
+        for (const Texture& t : walls.plan.textures) ids.insert(t.id);
+        return ids;
+    }();
+    auto frameWithCells = [&](FramePlanner& planner, glm::dvec3 eye, bool backResident) {
+        const FrameInput in = at(eye);
+        const TextureRequests r = planner.requests(in, views(in));
+        EXPECT_EQ(std::count(r.cellsNow.begin(), r.cellsNow.end(), 0), 1);  // the viewer's cell
+        EXPECT_EQ(std::count(r.cellsSoon.begin(), r.cellsSoon.end(), 1), 1);  // one wall away
+        return planner.plan([&](int id) { return everything.count(id) > 0; },
+                            [&](int cell) { return cell == 0 || backResident; });
+    };
+    FramePlanner planner(scene, description, display, &walls, Transition::Blend, 0.5);
+    const FramePlan resident = frameWithCells(planner, *strip, true);
+    EXPECT_TRUE(drawsObject(resident, kBackBox));
+    EXPECT_GT(row(resident).geometryWeight, 0.0);
+    EXPECT_EQ(resident.geometryMisses, 0);
+
+    const FramePlan missing = frameWithCells(planner, *strip, false);
+    EXPECT_FALSE(drawsObject(missing, kBackBox));
+    EXPECT_EQ(row(missing).geometryWeight, 0.0);
+    EXPECT_TRUE(row(missing).fallback);
+    double sum = 0.0;
+    for (const auto& [id, weight] : row(missing).textures) sum += weight;
+    EXPECT_NEAR(sum, 1.0, 1e-12);
+    EXPECT_EQ(missing.geometryMisses, 1);
+    EXPECT_TRUE(missing.geometryForced.empty());
+    EXPECT_EQ(missing.texturesOverAlpha, 0);  // the kept textures are the proven ones
+
+    FramePlanner fresh(scene, description, display, &walls, Transition::Blend, 0.5);
+    const FramePlan forced = frameWithCells(fresh, *zone, false);
+    EXPECT_TRUE(drawsObject(forced, kBackBox));  // nothing proven to show instead
+    EXPECT_EQ(forced.geometryForced, std::vector<int>{1});
+    EXPECT_EQ(forced.geometryMisses, 0);
+}
+
 TEST_F(FramePlannerTest, AMissingTextureKeepsThePreviousOneWithinAlphaElseTheGeometry) {
     const WallSetup walls = setup(10.0);
     const FrameSelector selector(walls.plan, walls.table, description);

@@ -5,9 +5,11 @@
 #include "tests/wallsgl/bake_test_scene.h"
 #include "walls/bake_cache.h"
 #include "walls/gl/baker.h"
+#include "walls/texture_pager.h"
 
 #include <gmock/gmock.h>
 
+#include <chrono>
 #include <fstream>
 
 namespace cavewall::gl {
@@ -36,6 +38,20 @@ protected:
 
 std::filesystem::file_time_type modified(const std::filesystem::path& p) { return std::filesystem::last_write_time(p); }
 
+// The manifest without the files' stamps (time, inode): what a re-bake of the same input must
+// reproduce exactly (a re-made file has a new time).
+std::string withoutStamps(walls::BakeManifest m) {
+    for (walls::BakedTexture& t : m.textures) t.mtimeNs = 0, t.inode = 0;
+    return manifestToJson(m);
+}
+
+std::vector<scenes::Image> fakeDecode(const std::filesystem::path&) {
+    scenes::Image level;
+    level.width = level.height = 4;
+    level.rgba.assign(4 * 4 * 4, 255);
+    return {level};
+}
+
 TEST_F(BakeCacheTest, UnchangedSceneDoesNoWork) {
     std::vector<BakeProgress> progress;
     request.progress = [&](const BakeProgress& p) { progress.push_back(p); };
@@ -62,6 +78,8 @@ TEST_F(BakeCacheTest, UnchangedSceneDoesNoWork) {
     ASSERT_EQ(progress.size(), 1u);  // one report: everything was found at once
     EXPECT_EQ(progress[0].reused, n);
     EXPECT_EQ(second.manifest, first.manifest);
+    EXPECT_EQ(second.hashed, 0);  // every file's size, time and inode were the manifest's: none was read
+    for (const walls::BakedTexture& t : first.manifest.textures) EXPECT_NE(t.mtimeNs, 0) << t.file;
     // Nothing was written: neither the manifest nor a texture file.
     EXPECT_EQ(modified(second.folder / "manifest.json"), manifestTime);
     EXPECT_EQ(modified(second.folder / second.manifest.textures[0].file), textureTime);
@@ -98,7 +116,7 @@ TEST_F(BakeCacheTest, DamagedFileIsReBakedAlone) {
         EXPECT_EQ(again.reused, n - 1);
         EXPECT_TRUE(walls::textureFileValid(again.folder, again.manifest.textures[t.id]));
         // Rendering is deterministic, so the re-baked file is the original one again.
-        EXPECT_EQ(manifestToJson(again.manifest), manifestToJson(first.manifest));
+        EXPECT_EQ(withoutStamps(again.manifest), withoutStamps(first.manifest));
     }
 }
 
@@ -123,7 +141,62 @@ TEST_F(BakeCacheTest, SwappedFilesAreReMadeAndAllListed) {
     const walls::BakeManifest onDisk = walls::readManifest(again.folder);
     ASSERT_EQ(static_cast<int>(onDisk.textures.size()), n);
     for (const walls::BakedTexture& t : onDisk.textures) EXPECT_TRUE(walls::textureFileValid(again.folder, t)) << t.file;
-    EXPECT_EQ(manifestToJson(onDisk), manifestToJson(first.manifest));
+    EXPECT_EQ(withoutStamps(onDisk), withoutStamps(first.manifest));
+}
+
+// A file whose time changed but not its bytes (touched, copied back) is hashed once, kept, and
+// stamped again: the next start reads nothing.
+TEST_F(BakeCacheTest, TouchedFileIsHashedOnceAndKept) {
+    const BakeResult first = bakeScene(request);
+    const int n = static_cast<int>(first.manifest.textures.size());
+    const walls::BakedTexture& t = first.manifest.textures[1];
+    std::filesystem::last_write_time(first.folder / t.file, modified(first.folder / t.file) + std::chrono::seconds(5));
+    const BakeResult again = bakeScene(request);
+    EXPECT_EQ(again.hashed, 1);
+    EXPECT_EQ(again.baked, 0);
+    EXPECT_EQ(again.reused, n);
+    EXPECT_NE(again.manifest.textures[1].mtimeNs, t.mtimeNs);
+    EXPECT_EQ(walls::readManifest(again.folder), again.manifest);  // the new stamp is on disk
+    const BakeResult third = bakeScene(request);
+    EXPECT_EQ(third.hashed, 0);
+    EXPECT_EQ(third.baked, 0);
+}
+
+// A same-size write in place that leaves the file's time as the manifest has it (as a write
+// within the clock tick of the stamp would) passes the start-up check; the pager's hash refuses
+// it, so the wall falls back and the failure is counted, and the next bake that sees its time
+// change re-bakes it.
+TEST_F(BakeCacheTest, ChangeTheStartUpCheckCannotSeeIsRefusedByThePager) {
+    const BakeResult first = bakeScene(request);
+    const walls::BakedTexture& t = first.manifest.textures[0];
+    const std::filesystem::path file = first.folder / t.file;
+    const auto stamped = modified(file);
+    {
+        std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+        const auto middle = static_cast<std::streamoff>(std::filesystem::file_size(file) / 2);
+        f.seekg(middle);
+        const char c = static_cast<char>(f.get());
+        f.seekp(middle);
+        f.put(static_cast<char>(c ^ 0x01));
+    }
+    std::filesystem::last_write_time(file, stamped);
+    const BakeResult again = bakeScene(request);
+    EXPECT_EQ(again.hashed, 0);
+    EXPECT_EQ(again.baked, 0);
+
+    walls::TexturePager pager(again.folder, again.manifest, 64.0, fakeDecode);
+    pager.request({t.id, first.manifest.textures[1].id}, {});
+    pager.waitIdle();
+    EXPECT_TRUE(pager.hasFailed(t.id));
+    EXPECT_FALSE(pager.hasFailed(first.manifest.textures[1].id));
+    EXPECT_EQ(pager.stats().failures, 1);
+    ASSERT_EQ(pager.takeReady(SIZE_MAX).size(), 1u);  // only the intact texture can be uploaded
+
+    std::filesystem::last_write_time(file, stamped + std::chrono::seconds(5));
+    const BakeResult third = bakeScene(request);
+    EXPECT_EQ(third.hashed, 1);
+    EXPECT_EQ(third.baked, 1);
+    EXPECT_TRUE(walls::textureFileValid(third.folder, third.manifest.textures[t.id]));
 }
 
 TEST_F(BakeCacheTest, ChangedAlphaGetsANewKey) {
@@ -165,7 +238,7 @@ TEST_F(BakeCacheTest, CorruptManifestIsAWarningAndEverythingIsReBaked) {
     EXPECT_EQ(again.baked, static_cast<int>(first.manifest.textures.size()));
     ASSERT_EQ(again.warnings.size(), 1u);
     EXPECT_THAT(again.warnings[0], HasSubstr("manifest.json"));
-    EXPECT_EQ(manifestToJson(again.manifest), manifestToJson(first.manifest));
+    EXPECT_EQ(withoutStamps(again.manifest), withoutStamps(first.manifest));
 }
 
 TEST_F(BakeCacheTest, BadSettingsAndFoldersAreErrors) {

@@ -123,6 +123,7 @@ public:
 private:
     void key();
     void reuseListed();
+    bool reuseFile(const walls::BakedTexture& listed);
     void keyPending(std::uint64_t settings);
     void linkFromCache();
     void render();
@@ -191,14 +192,26 @@ void Bake::reuseListed() {
             const walls::BakedTexture& got = *it->second;
             expected.cell = t.cell, expected.wall = t.wall, expected.samplingPoint = t.samplingPoint;
             expected.resolution = item.resolution;
-            if (expected == got && walls::textureFileValid(_result.folder, got)) {
-                finish(got, false, 0);
-                continue;
-            }
+            if (expected == got && reuseFile(got)) continue;
         }
         _pending.push_back(item);
     }
     report();
+}
+
+// A listed file whose size, time and inode are the manifest's is trusted without reading it (the
+// pager checks its hash before drawing it); any other is read and hashed, and stamped with its
+// time when it is valid, so the next start trusts it again.
+bool Bake::reuseFile(const walls::BakedTexture& listed) {
+    if (walls::textureFileUnchanged(_result.folder, listed)) {
+        finish(listed, false, 0);
+        return true;
+    }
+    ++_result.hashed;
+    walls::BakedTexture stamped = listed;
+    if (!walls::stampTexture(_result.folder, stamped) || !walls::textureFileValid(_result.folder, stamped)) return false;
+    finish(stamped, false, 0);
+    return true;
 }
 
 void Bake::keyPending(std::uint64_t settings) {

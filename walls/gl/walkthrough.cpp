@@ -41,6 +41,10 @@ struct Walkthrough::WallRuntime {
 
     walls::WallSetup setup;
     walls::TexturePager pager;
+    // Geometry paging by cell (options.geometryBudgetMB > 0): the pager decides what is resident
+    // and the planner draws only resident cells; the scene renderer still holds every mesh
+    // (display/gl/scene_renderer.h uploads the whole scene), so no loader runs yet.
+    std::unique_ptr<walls::GeometryPager> geometry;
     TextureStore store;
     WallPass pass;
 };
@@ -53,6 +57,9 @@ Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescript
     if (_screens.empty())
         for (int s = 0; s < static_cast<int>(display.screens().size()); ++s) _screens.push_back(s);
     if (walls && !walls->plan.walls.empty()) _walls = std::make_unique<WallRuntime>(std::move(*walls), options);
+    if (_walls && options.geometryBudgetMB > 0.0)
+        _walls->geometry = std::make_unique<walls::GeometryPager>(
+            walls::cellGeometryBytes(scene, static_cast<int>(description.cells.size())), options.geometryBudgetMB);
     _planner = std::make_unique<walls::FramePlanner>(scene, description, display, _walls ? &_walls->setup : nullptr,
                                                      options.transition, options.morphSeconds, _screens);
     if (_walls && options.transition == walls::Transition::Warp)
@@ -89,7 +96,15 @@ walls::FramePlan Walkthrough::planFrame(const walls::FrameInput& input, const st
     _uploadedBytes = 0;
     for (std::size_t bytes = w.store.update(); bytes > 0; bytes = _options.synchronousPaging ? w.store.update() : 0)
         _uploadedBytes += bytes;
-    return _planner->plan([&w](int id) { return w.store.resident(id); });
+    if (!w.geometry) return _planner->plan([&w](int id) { return w.store.resident(id); });
+    w.geometry->request(wanted.cellsNow, wanted.cellsSoon);
+    if (_options.synchronousPaging) w.geometry->waitIdle();
+    for (int cell : w.geometry->takeReady()) w.geometry->markResident(cell);
+    w.geometry->takeEvictions();  // nothing to free on the GPU yet (see WallRuntime::geometry)
+    walls::FramePlan plan = _planner->plan([&w](int id) { return w.store.resident(id); },
+                                           [&w](int cell) { return w.geometry->isResident(cell); });
+    for (int cell : plan.geometryForced) w.geometry->markResident(cell);  // drawn now: loaded at once
+    return plan;
 }
 
 std::vector<WallDraw> Walkthrough::wallDraws(const walls::FramePlan& plan) const {
@@ -145,6 +160,9 @@ walls::FrameResult Walkthrough::renderFrame(const walls::FrameInput& input) {
     result.warpFallbacks = plan.warpFallbacks;
     result.walls = std::move(plan.walls);
     if (_walls) result.pager = _walls->pager.stats();
+    if (_walls && _walls->geometry) result.geometry = _walls->geometry->stats();
+    result.geometryMisses = plan.geometryMisses;
+    result.geometryForced = static_cast<int>(plan.geometryForced.size());
     render::DrawFilter filter;
     filter.objects = &plan.objects;
     render::FrameLod lod;

@@ -11,6 +11,7 @@
 //  1. asks the planner which textures are wanted (now / soon) and tells the pager; uploads what
 //     is ready within the per-frame byte budget (WalkthroughSettings);
 //  2. has the planner decide the frame against what is resident, maps texture ids to GL names;
+//     with geometry paging (WalkthroughSettings::geometryBudgetMB), the cells likewise;
 //  3. chooses the levels of detail (SceneRenderer::chooseLods) for the planned objects;
 //  4. per screen and eye (drawViews): the planned geometry (frustum-culled by the scene
 //     renderer), the warp pass (Transition::Warp, warp_pass.h), the wall quads (wall_pass.h),

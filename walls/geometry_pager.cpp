@@ -1,0 +1,144 @@
+#include "walls/geometry_pager.h"
+
+#include <algorithm>
+#include <climits>
+#include <utility>
+
+namespace cavewall::walls {
+
+namespace {
+
+std::size_t meshBytes(const scenes::Mesh& m) { return m.positions.size() * kVertexBytes + m.indices.size() * kIndexBytes; }
+
+}  // namespace
+
+std::vector<std::size_t> cellGeometryBytes(const scenes::Scene& scene, int cellCount) {
+    std::vector<std::size_t> bytes(static_cast<std::size_t>(std::max(cellCount, 0)), 0);
+    std::vector<std::set<int>> meshes(bytes.size());
+    for (const scenes::Object& o : scene.objects) {
+        if (o.role == scenes::Role::Structure || o.cell < 0 || o.cell >= cellCount) continue;
+        bytes[o.cell] += kInstanceBytes;
+        if (meshes[o.cell].insert(o.mesh).second) bytes[o.cell] += meshBytes(scene.meshes[o.mesh]);
+    }
+    return bytes;
+}
+
+std::size_t modelGeometryBytes(const scenes::Scene& scene) {
+    std::size_t bytes = scene.objects.size() * kInstanceBytes;
+    for (const scenes::Mesh& m : scene.meshes) bytes += meshBytes(m);
+    return bytes;
+}
+
+GeometryPager::GeometryPager(std::vector<std::size_t> cellBytes, double budgetMB, Loader loader)
+    : _bytes(std::move(cellBytes)), _budget(static_cast<std::size_t>(budgetMB * 1024 * 1024)), _loader(std::move(loader)) {
+    _thread = std::thread([this] { worker(); });
+}
+
+GeometryPager::~GeometryPager() {
+    {
+        std::lock_guard lock(_mutex);
+        _stop = true;
+    }
+    _wake.notify_all();
+    _thread.join();
+}
+
+void GeometryPager::request(const std::vector<int>& now, const std::vector<int>& soon) {
+    std::lock_guard lock(_mutex);
+    ++_frame;
+    _wantedNow.clear();
+    std::deque<int> queue;
+    auto want = [&](int cell, bool isNow) {
+        if (cell < 0 || cell >= static_cast<int>(_bytes.size())) return;
+        if (isNow) _wantedNow.insert(cell);
+        _lastWanted[cell] = _frame;
+        if (_resident.count(cell)) return;
+        _stats.misses += isNow;
+        const bool pending = _loading.count(cell) || std::find(_ready.begin(), _ready.end(), cell) != _ready.end();
+        if (!pending && std::find(queue.begin(), queue.end(), cell) == queue.end()) queue.push_back(cell);
+    };
+    for (int c : now) want(c, true);
+    for (int c : soon) want(c, false);
+    // Only this frame's wishes stay queued, in this frame's priority order.
+    _queue = std::move(queue);
+    if (!_queue.empty()) _wake.notify_one();
+}
+
+void GeometryPager::worker() {
+    std::unique_lock lock(_mutex);
+    for (;;) {
+        _wake.wait(lock, [&] { return _stop || !_queue.empty(); });
+        if (_stop) return;
+        const int cell = _queue.front();
+        _queue.pop_front();
+        _loading.insert(cell);
+        lock.unlock();
+        bool ok = true;
+        try {
+            if (_loader) _loader(cell);
+        } catch (const std::exception&) {
+            ok = false;  // stays a miss; retried when wanted again
+        }
+        lock.lock();
+        _loading.erase(cell);
+        if (ok) _ready.push_back(cell);
+        if (_queue.empty() && _loading.empty()) _idle.notify_all();
+    }
+}
+
+std::vector<int> GeometryPager::takeReady() {
+    std::lock_guard lock(_mutex);
+    std::stable_partition(_ready.begin(), _ready.end(), [&](int c) { return _wantedNow.count(c) > 0; });
+    return std::exchange(_ready, {});
+}
+
+void GeometryPager::evictFor(std::size_t bytes) {
+    std::size_t used = 0;
+    for (int c : _resident) used += _bytes[c];
+    while (used + bytes > _budget) {
+        int victim = -1;
+        long oldest = LONG_MAX;
+        for (int c : _resident)
+            if (!_wantedNow.count(c) && _lastWanted[c] < oldest) oldest = _lastWanted[c], victim = c;
+        if (victim < 0) return;  // everything resident is wanted now: over budget until the view moves
+        used -= _bytes[victim];
+        _resident.erase(victim);
+        _evictions.push_back(victim);
+        ++_stats.evictions;
+    }
+}
+
+void GeometryPager::markResident(int cell) {
+    std::lock_guard lock(_mutex);
+    if (_resident.count(cell)) return;
+    evictFor(_bytes.at(cell));
+    _resident.insert(cell);
+    ++_stats.pageIns;
+}
+
+std::vector<int> GeometryPager::takeEvictions() {
+    std::lock_guard lock(_mutex);
+    return std::exchange(_evictions, {});
+}
+
+bool GeometryPager::isResident(int cell) const {
+    std::lock_guard lock(_mutex);
+    return _resident.count(cell) > 0;
+}
+
+GeometryPagerStats GeometryPager::stats() const {
+    std::lock_guard lock(_mutex);
+    GeometryPagerStats s = _stats;
+    s.resident = static_cast<int>(_resident.size());
+    for (int c : _resident) s.residentMB += static_cast<double>(_bytes[c]) / (1024.0 * 1024.0);
+    return s;
+}
+
+double GeometryPager::budgetMB() const { return static_cast<double>(_budget) / (1024.0 * 1024.0); }
+
+void GeometryPager::waitIdle() {
+    std::unique_lock lock(_mutex);
+    _idle.wait(lock, [&] { return _queue.empty() && _loading.empty(); });
+}
+
+}  // namespace cavewall::walls
