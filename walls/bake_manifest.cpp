@@ -50,11 +50,15 @@ std::uint64_t parseHex64(const config::JsonNode& node) {
 
 std::string manifestToJson(const BakeManifest& m) {
     nlohmann::json textures = nlohmann::json::array();
-    for (const BakedTexture& t : m.textures)
+    for (const BakedTexture& t : m.textures) {
         textures.push_back({{"id", t.id}, {"cell", t.cell}, {"wall", t.wall},
                             {"samplingPoint", {t.samplingPoint.x, t.samplingPoint.y, t.samplingPoint.z}},
                             {"resolution", {t.resolution.x, t.resolution.y}}, {"file", t.file},
                             {"bytes", t.bytes}, {"hash", hex64(t.hash)}});
+        if (!t.depthFile.empty())
+            textures.back()["depth"] = {{"file", t.depthFile}, {"bytes", t.depthBytes}, {"hash", hex64(t.depthHash)},
+                                        {"range", {t.depthRange.x, t.depthRange.y}}};
+    }
     const nlohmann::json j{{"version", 1}, {"key", hex64(m.key)}, {"alphaDeg", m.alphaDeg}, {"textures", textures}};
     return j.dump(1) + "\n";
 }
@@ -68,7 +72,7 @@ BakeManifest manifestFromJson(std::string_view text, const std::string& source) 
     m.key = parseHex64(root.at("key"));
     m.alphaDeg = root.at("alphaDeg").number(0.0, 90.0);
     for (const config::JsonNode& n : root.at("textures").items()) {
-        n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "file", "bytes", "hash"});
+        n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "file", "bytes", "hash", "depth"});
         BakedTexture t;
         t.id = n.at("id").integer(0, 1 << 30);
         t.cell = n.at("cell").integer(0, 1 << 30);
@@ -80,6 +84,17 @@ BakeManifest manifestFromJson(std::string_view text, const std::string& source) 
             n.at("file").fail("expected a plain file name in the manifest's folder, got \"" + t.file + "\"");
         t.bytes = static_cast<std::uint64_t>(n.at("bytes").number(0.0, 1e15));
         t.hash = parseHex64(n.at("hash"));
+        if (const auto d = n.find("depth")) {
+            d->expectKeys({"file", "bytes", "hash", "range"});
+            t.depthFile = d->at("file").string();
+            if (t.depthFile.empty() || t.depthFile.find('/') != std::string::npos || t.depthFile.find("..") != std::string::npos)
+                d->at("file").fail("expected a plain file name in the manifest's folder, got \"" + t.depthFile + "\"");
+            t.depthBytes = static_cast<std::uint64_t>(d->at("bytes").number(0.0, 1e15));
+            t.depthHash = parseHex64(d->at("hash"));
+            t.depthRange = d->at("range").vec2();
+            if (!(t.depthRange.x >= 0.0 && t.depthRange.y >= t.depthRange.x))
+                d->at("range").fail("expected 0 <= near <= far");
+        }
         m.textures.push_back(std::move(t));
     }
     return m;
@@ -99,15 +114,23 @@ void writeManifest(const std::filesystem::path& folder, const BakeManifest& mani
     writeFileAtomically(folder / "manifest.json", manifestToJson(manifest));
 }
 
-bool textureFileValid(const std::filesystem::path& folder, const BakedTexture& t) {
+namespace {
+
+bool fileValid(const std::filesystem::path& path, std::uint64_t bytes, std::uint64_t hash) {
     std::error_code ec;
-    const auto path = folder / t.file;
-    if (std::filesystem::file_size(path, ec) != t.bytes || ec) return false;
+    if (std::filesystem::file_size(path, ec) != bytes || ec) return false;
     try {
-        return hashFile(path) == t.hash;
+        return hashFile(path) == hash;
     } catch (const Error&) {
         return false;
     }
+}
+
+}  // namespace
+
+bool textureFileValid(const std::filesystem::path& folder, const BakedTexture& t) {
+    return fileValid(folder / t.file, t.bytes, t.hash) &&
+           (t.depthFile.empty() || fileValid(folder / t.depthFile, t.depthBytes, t.depthHash));
 }
 
 }  // namespace cavewall::walls
