@@ -1,0 +1,78 @@
+#pragma once
+// The depth wall pass (issue 16): each virtual wall drawn as one quad whose every pixel
+// reprojects its baked textures, colour + per-texel depth (walls/depth_wall.h), to the current
+// eye instead of showing them flat.
+//
+// Method: per pixel, a relief-impostor style search of the ray from the eye through the wall
+// pixel behind the plane, in the texture's own parametrisation: the ray's image in the texture
+// (seen from the sampling point) is a straight line, linear in sigma = s / (D_S + s) (s the
+// depth behind the plane), so uniform steps in sigma between the baked depth range's ends are
+// uniform steps across the texture. Steps = texels crossed, capped at maxSteps (64), then
+// `refine` (6) bisection steps; colour is sampled at the hit with the flat quad's gradients
+// (the MIP level the flat wall would use, without seams at depth steps). walls::reproject is
+// the same algorithm in double and is what the unit tests check against analytic truth.
+//
+// Why this method rather than a displaced grid mesh (textured depth meshes): it needs no mesh
+// per texture (a depth texture of the same size as the colour, paged the same way), it has no
+// skins to cut (the march never hits an empty texel, and disocclusions show a bounded stretch of
+// the step's near side, which walls::depthWallErrorBound predicts), and its cost is per pixel,
+// bounded by maxSteps, not per texel: on llvmpipe fill, not vertices, is what the wall pass
+// pays. Cost per layer at 1024 x 1024 pixels: bench/wall_pass_bench.cpp (depth cases beside
+// the flat ones, same run); figures in /work/notes/depth.md and README.
+//
+// Blending, depth test and state as gl::WallPass (premultiplied weighted sum of up to
+// kMaxWallTextures layers; reversed-Z GL_GREATER against the geometry, no depth writes; the
+// quad's own depth, not the reprojected one, is tested).
+
+#include "display/gl/gl_object.h"
+#include "display/gl/scene_renderer.h"
+#include "display/off_axis.h"
+#include "walls/depth_wall.h"
+#include "walls/frame_planner.h"
+
+#include <array>
+#include <vector>
+
+namespace cavewall::gl {
+
+// One baked texture of a depth wall: colour (uploadWallTexture) and depth (uploadDepthTexture).
+struct DepthWallLayer {
+    GLuint colour = 0, depth = 0;   // 0: not there (left out, like WallPass)
+    glm::dvec3 samplingPoint{0.0};  // world
+    glm::dvec2 range{0.0};          // walls::depthRange of the depth image, metres
+    float weight = 0.0f;
+};
+
+struct DepthWallDraw {
+    display::ScreenQuad quad;  // world, as seen from the textures' side
+    std::array<DepthWallLayer, walls::kMaxWallTextures> layers{};
+    int count = 0;
+};
+
+// One GL_R32F level holding walls::DepthImage (rows top to bottom, like the colour: row 0 is the
+// wall's upper edge); read with texelFetch. Needs a current context.
+gl::GlObject uploadDepthTexture(const walls::DepthImage& image);
+
+class DepthWallPass {
+public:
+    // Throws Error when the shaders do not build or the settings are out of range
+    // (maxSteps [1, 1024], refine [0, 16]).
+    explicit DepthWallPass(walls::ReprojectSettings settings = {});
+
+    // As WallPass::draw: into the bound framebuffer for one view; `frustum` in the cave frame,
+    // caveFromWorld places the world; `sampler` filters the colour (0: the texture's own).
+    void draw(const std::vector<DepthWallDraw>& walls, const display::OffAxisFrustum& frustum,
+              const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const;
+
+private:
+    struct Program {
+        GlObject program;
+        GLint corners = -1, projection = -1, weights = -1, eye = -1, size = -1, samples = -1, ranges = -1,
+              maxSteps = -1, refine = -1;
+    };
+    walls::ReprojectSettings _settings;
+    std::array<Program, walls::kMaxWallTextures> _programs;  // [n - 1] marches n layers
+    GlObject _vertexArray;
+};
+
+}  // namespace cavewall::gl
