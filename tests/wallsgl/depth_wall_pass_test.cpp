@@ -43,16 +43,17 @@ scenes::Scene cardScene() {
                                              {0.2f, 0.2f, 0.25f, 1}));
     scenes::addObject(s, 0, glm::dmat4(1.0), "back");
     s.meshes.push_back(scenes::makeBox({1.0f, 1.0f, 0.2f}, {0.9f, 0.1f, 0.1f, 1}));
-    scenes::addObject(s, 1, glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 1.5, -1.1)), "card");
+    scenes::addObject(s, 1, glm::translate(glm::dmat4(1.0), glm::dvec3(0.7, 1.9, -1.1)), "card");
     return s;
 }
 
 bool differs(const scenes::Image& a, const scenes::Image& b, int x, int y) {
-    // Wrong unless some reference pixel within one pixel has the same colour (edges move by
-    // up to a pixel between rasterising and resampling).
+    // Wrong unless some reference pixel within two pixels has the same colour: an edge moves
+    // by up to a texel (nearest-texel depth, bake texel = view pixel here) and a pixel
+    // (rasterising against resampling).
     const std::uint8_t* p = &a.rgba[(std::size_t(y) * a.width + x) * 4];
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
+    for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
             const int u = x + dx, v = y + dy;
             if (u < 0 || v < 0 || u >= b.width || v >= b.height) continue;
             const std::uint8_t* q = &b.rgba[(std::size_t(v) * b.width + u) * 4];
@@ -122,8 +123,8 @@ TEST_F(DepthWallPassTest, MatchesGeometryFromAnotherEyeExceptWhereTheBoundPredic
 
     // The predicted pixels: the interval each opening step exposes, and the border's.
     const double pitch = frame.width / kWidth;
-    std::vector<char> predicted(std::size_t(kWidth) * kHeight, 0);
-    auto mark = [&](glm::dvec2 a, glm::dvec2 b) {
+    std::vector<char> predicted(std::size_t(kWidth) * kHeight, 0);  // 1: a step's interval, 2: the border band
+    auto mark = [&](glm::dvec2 a, glm::dvec2 b, char kind) {
         const int n = 2 + static_cast<int>(glm::length(b - a) / (0.25 * pitch));
         for (int k = 0; k <= n; ++k) {
             const glm::dvec2 p = a + (b - a) * (double(k) / n);
@@ -131,7 +132,7 @@ TEST_F(DepthWallPassTest, MatchesGeometryFromAnotherEyeExceptWhereTheBoundPredic
             for (int dy = -2; dy <= 2; ++dy)  // two pixels either side: texel and pixel rounding
                 for (int dx = -2; dx <= 2; ++dx)
                     if (x + dx >= 0 && y + dy >= 0 && x + dx < kWidth && y + dy < kHeight)
-                        predicted[std::size_t(y + dy) * kWidth + x + dx] = 1;
+                        predicted[std::size_t(y + dy) * kWidth + x + dx] |= kind;
         }
     };
     for (int j = 0; j < kHeight; ++j)
@@ -144,7 +145,7 @@ TEST_F(DepthWallPassTest, MatchesGeometryFromAnotherEyeExceptWhereTheBoundPredic
                                       j == 0 ? frame.height : j == kHeight - 1 ? 0.0 : t.y);
                 const glm::dvec2 inward(i == 0 ? 1.0 : i == kWidth - 1 ? -1.0 : 0.0, j == 0 ? -1.0 : j == kHeight - 1 ? 1.0 : 0.0);
                 const glm::dvec2 v = walls::parallaxVector(eye, sample, edge);
-                if (glm::dot(v, inward) > 0.0) mark(edge, edge + inward * glm::dot(v, inward));
+                if (glm::dot(v, inward) > 0.0) mark(edge, edge + inward * glm::dot(v, inward), 2);
             }
             for (glm::ivec2 n : {glm::ivec2(i + 1, j), glm::ivec2(i, j + 1), glm::ivec2(i - 1, j), glm::ivec2(i, j - 1)}) {
                 if (n.x < 0 || n.y < 0 || n.x >= kWidth || n.y >= kHeight) continue;
@@ -152,7 +153,7 @@ TEST_F(DepthWallPassTest, MatchesGeometryFromAnotherEyeExceptWhereTheBoundPredic
                 if (!(b > a)) continue;  // from the near texel (a) to the far one (b)
                 const glm::dvec2 across = walls::texelCentre(frame, kWidth, kHeight, n.x, n.y) - t;
                 if (glm::dot(walls::parallaxVector(eye, sample, t), across) <= 0.0) continue;  // closes
-                mark(walls::reprojectedPoint(eye, sample, t, a), walls::reprojectedPoint(eye, sample, t, b));
+                mark(walls::reprojectedPoint(eye, sample, t, a), walls::reprojectedPoint(eye, sample, t, b), 1);
             }
         }
 
@@ -160,13 +161,15 @@ TEST_F(DepthWallPassTest, MatchesGeometryFromAnotherEyeExceptWhereTheBoundPredic
     for (int y = 0; y < kHeight; ++y) {
         int run = 0;
         for (int x = 0; x < kWidth; ++x) {
-            const bool inside = predicted[std::size_t(y) * kWidth + x] != 0;
+            const char mask = predicted[std::size_t(y) * kWidth + x];
+            const bool inside = mask != 0;
             flatWrong += differs(flatWall, truth, x, y);
             if (differs(depthWall, truth, x, y)) {
                 ++(inside ? wrongInside : wrongOutside);
-                // Runs along rows, away from the border's band (the bound's step term).
-                const double wx = (x + 0.5) * pitch;
-                if (wx > 0.8 && wx < frame.width - 0.8) widestRun = std::max(widestRun, ++run);
+                // Runs along rows in a step's interval away from the border band (the bound's
+                // step term: the eye moved along x, so the opening steps open along rows).
+                if (mask == 1) widestRun = std::max(widestRun, ++run);
+                else run = 0;
             } else {
                 run = 0;
             }
@@ -178,7 +181,12 @@ TEST_F(DepthWallPassTest, MatchesGeometryFromAnotherEyeExceptWhereTheBoundPredic
                 "= %.4f rad; bound steps %.4f, texel %.5f, border %.4f\n",
                 kWidth, kHeight, wrongOutside, wrongInside, flatWrong, widestRun, widest, bound.steps, bound.texel,
                 bound.border);
-    if (wrongOutside > kWidth * kHeight / 1000 || ::testing::Test::HasFailure()) {
+    EXPECT_LE(wrongOutside, kWidth * kHeight / 1000);  // 0.1 %: isolated rounding at tile edges
+    EXPECT_GT(wrongInside, 0);                         // the eye does see what S did not
+    EXPECT_GT(flatWrong, 4 * (wrongInside + wrongOutside));
+    EXPECT_LE(widest, bound.steps + 2.0 * bound.texel + 2.0 * pitch / de);
+    EXPECT_GE(widest, 0.6 * bound.steps);
+    if (::testing::Test::HasFailure()) {
         // For a look: the three images and the wrong pixels (red outside, yellow inside the prediction).
         const std::filesystem::path dir = testOutputFolder("depth_wall_pass");
         scenes::Image wrong = truth;
@@ -195,11 +203,6 @@ TEST_F(DepthWallPassTest, MatchesGeometryFromAnotherEyeExceptWhereTheBoundPredic
         scenes::writeImage(dir / "wrong.png", wrong);
         std::printf("images in %s\n", dir.string().c_str());
     }
-    EXPECT_LE(wrongOutside, kWidth * kHeight / 1000);  // 0.1 %: isolated rounding at tile edges
-    EXPECT_GT(wrongInside, 0);                         // the eye does see what S did not
-    EXPECT_GT(flatWrong, 4 * (wrongInside + wrongOutside));
-    EXPECT_LE(widest, bound.steps + 2.0 * bound.texel + 2.0 * pitch / de);
-    EXPECT_GE(widest, 0.6 * bound.steps);
 }
 
 }  // namespace

@@ -38,7 +38,16 @@ uniform vec3 uSample[4];     // per layer: x, y, distance in front of the plane
 uniform vec2 uRange[4];      // per layer: nearest and farthest baked depth
 uniform int uMaxSteps;
 uniform int uRefine;
+uniform vec2 uDepthCoeffs;   // clipFromView[2][2], [3][2]: reversed-Z window depth of a view-space z
 out vec4 fragColor;          // premultiplied, linear
+
+// The window depth of the point s metres behind the wall on this fragment's ray: the ray's
+// view-space z scales by (D_E + s) / D_E from the quad's.
+float hitDepth(float s) {
+    float zq = -uDepthCoeffs.y / (gl_FragCoord.z + uDepthCoeffs.x);
+    float zh = zq * (uEye.z + s) / uEye.z;
+    return (uDepthCoeffs.x * zh + uDepthCoeffs.y) / (-zh);
+}
 
 float depthAt(sampler2D depth, ivec2 size, vec2 t) {
     ivec2 i = ivec2(floor(vec2(t.x / uSize.x, 1.0 - t.y / uSize.y) * vec2(size)));
@@ -46,7 +55,7 @@ float depthAt(sampler2D depth, ivec2 size, vec2 t) {
     return texelFetch(depth, i, 0).r;
 }
 
-vec4 march(sampler2D colour, sampler2D depth, vec3 S, vec2 range, vec2 gx, vec2 gy) {
+vec4 march(sampler2D colour, sampler2D depth, vec3 S, vec2 range, vec2 gx, vec2 gy, inout float nearest) {
     ivec2 size = textureSize(depth, 0);
     vec2 a = vWall;
     vec2 b = S.xy + S.z * (vWall - uEye.xy) / uEye.z;
@@ -67,6 +76,7 @@ vec4 march(sampler2D colour, sampler2D depth, vec3 S, vec2 range, vec2 gx, vec2 
         if (s >= depthAt(depth, size, mix(a, b, mid)) - 1e-5 * (S.z + s)) hi = mid; else lo = mid;
     }
     vec2 t = mix(a, b, hi);
+    nearest = min(nearest, S.z * hi / (1.0 - hi));
     return textureGrad(colour, vec2(t.x / uSize.x, 1.0 - t.y / uSize.y), gx, gy);
 }
 )";
@@ -77,13 +87,15 @@ std::string fragmentSource(int layers) {
         s += "layout(binding = " + std::to_string(2 * i) + ") uniform sampler2D uColour" + std::to_string(i) +
              ";\nlayout(binding = " + std::to_string(2 * i + 1) + ") uniform sampler2D uDepth" + std::to_string(i) + ";\n";
     s += kMarch;
-    s += "void main() {\n    vec2 gx = dFdx(vUv), gy = dFdy(vUv);\n    fragColor = vec4(0.0)";
+    s += "void main() {\n    vec2 gx = dFdx(vUv), gy = dFdy(vUv);\n    float nearest = 1e30;\n    vec4 c = vec4(0.0)";
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
         s += "\n        + uWeights[" + n + "] * march(uColour" + n + ", uDepth" + n + ", uSample[" + n + "], uRange[" + n +
-             "], gx, gy)";
+             "], gx, gy, nearest)";
     }
-    return s + ";\n}\n";
+    // No layer hit: nothing behind the wall here. Else the nearest hit's depth is tested
+    // against the geometry drawn before.
+    return s + ";\n    if (nearest > 1e29) discard;\n    fragColor = c;\n    gl_FragDepth = hitDepth(nearest);\n}\n";
 }
 
 }  // namespace
@@ -120,6 +132,7 @@ DepthWallPass::DepthWallPass(walls::ReprojectSettings settings) : _settings(sett
         p.ranges = uniformLocation(id, kName, "uRange");
         p.maxSteps = uniformLocation(id, kName, "uMaxSteps");
         p.refine = uniformLocation(id, kName, "uRefine");
+        p.depthCoeffs = uniformLocation(id, kName, "uDepthCoeffs");
     }
 }
 
@@ -173,6 +186,7 @@ void DepthWallPass::draw(const std::vector<DepthWallDraw>& walls, const display:
         glUniform2fv(p.ranges, used, glm::value_ptr(ranges[0]));
         glUniform1i(p.maxSteps, _settings.maxSteps);
         glUniform1i(p.refine, _settings.refine);
+        glUniform2f(p.depthCoeffs, float(frustum.clipFromView[2][2]), float(frustum.clipFromView[3][2]));
         glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
         ++stats.drawCalls;
         stats.triangles += 2;

@@ -20,9 +20,12 @@
 // pays. Cost per layer at 1024 x 1024 pixels: bench/wall_pass_bench.cpp (depth cases beside
 // the flat ones, same run); figures in /work/notes/depth.md and README.
 //
-// Blending, depth test and state as gl::WallPass (premultiplied weighted sum of up to
-// kMaxWallTextures layers; reversed-Z GL_GREATER against the geometry, no depth writes; the
-// quad's own depth, not the reprojected one, is tested).
+// Blending and state as gl::WallPass (premultiplied weighted sum of up to kMaxWallTextures
+// layers; reversed-Z GL_GREATER against the geometry, no depth writes), except that the depth
+// tested is the nearest reprojected surface's (gl_FragDepth), not the quad's: geometry drawn
+// before that lies behind the wall plane but in front of the baked content (structure, which
+// is never baked: a far room's walls) hides it as in the full model, which a flat wall cannot
+// do. Pixels where no layer hits are discarded.
 
 #include "display/gl/gl_object.h"
 #include "display/gl/scene_renderer.h"
@@ -68,7 +71,7 @@ private:
     struct Program {
         GlObject program;
         GLint corners = -1, projection = -1, weights = -1, eye = -1, size = -1, samples = -1, ranges = -1,
-              maxSteps = -1, refine = -1;
+              maxSteps = -1, refine = -1, depthCoeffs = -1;
     };
     walls::ReprojectSettings _settings;
     std::array<Program, walls::kMaxWallTextures> _programs;  // [n - 1] marches n layers
