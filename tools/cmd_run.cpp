@@ -12,7 +12,7 @@ namespace cavewall::tools {
 const char* const kRunUsage =
     "usage: cavewall run --scene S --tracker SPEC --frames N --out DIR [--display D]\n"
     "                    [--nav guided|fly|walk|none] [--pace M/S] [--headless|--window]\n"
-    "                    [--transition blend|warp] [--no-walls] [--alpha DEG] [--min-zone M] [--ppd N]\n"
+    "                    [--transition blend|warp] [--no-walls] [--walls flat|depth] [--alpha DEG] [--min-zone M] [--ppd N]\n"
     "                    [--save-frames none|every:K|all] [--record FILE] [--cache DIR]\n"
     "                    [--budget MB] [--sync-paging]\n"
     "                    [--lod PX [--triangle-budget N|--frame-budget-ms T] [--lod-max PX]]\n"
@@ -30,6 +30,8 @@ const char* const kRunUsage =
     "in `cavewall plan`) and baked into the cache (--cache, default $CAVEWALL_CACHE or\n"
     "~/.cache/cavewall) before the first frame; near cells are drawn as geometry and the rest as\n"
     "wall textures, blended by zone. --no-walls draws the full (frustum-culled) geometry instead.\n"
+    "--walls depth bakes depth with colour and reprojects every wall pixel to the eye (issue 16,\n"
+    "walls/gl/depth_wall_pass.h); default flat.\n"
     "--budget: GPU MB for wall textures (default 256); --sync-paging waits for textures instead of\n"
     "falling back (reproducible frames). --lod PX draws every object at the coarsest level of detail\n"
     "whose geometric error covers at most PX pixels on any screen it appears on (levels are built\n"
@@ -79,7 +81,8 @@ int runRun(const std::vector<std::string>& words) {
     const Args args(words, {"headless", "window", "no-walls", "sync-paging", "cluster"});
     args.expectFlags({"scene", "display", "tracker", "frames", "nav", "pace", "headless", "window", "transition",
                       "no-walls", "alpha", "min-zone", "ppd", "save-frames", "record", "cache", "budget",
-                      "sync-paging", "out", "cluster", "cluster-timeout", "lod", "triangle-budget", "frame-budget-ms", "lod-max"});
+                      "sync-paging", "out", "cluster", "cluster-timeout", "lod", "triangle-budget", "frame-budget-ms", "lod-max",
+                      "walls"});
     if (args.has("headless") && args.has("window")) throw Error("--headless and --window: expected one of them, got both");
     app::RunOptions o;
     o.scene = args.require("scene");
@@ -93,6 +96,7 @@ int runRun(const std::vector<std::string>& words) {
     o.window = args.has("window") ? app::WindowMode::Window : app::WindowMode::Headless;
     o.transition = args.choice("transition", app::kTransitionNames, app::Transition::Blend);
     o.walls = !args.has("no-walls");
+    o.wallKind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
     o.plan.alphaDeg = args.number("alpha", o.plan.alphaDeg, 1e-3, 90.0);
     o.plan.minZoneSize = args.number("min-zone", o.plan.minZoneSize, 1e-3, 1e4);
     o.plan.pixelsPerDegree = args.number("ppd", o.plan.pixelsPerDegree, 0.01, 1000.0);

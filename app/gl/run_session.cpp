@@ -37,6 +37,7 @@ walls::WallSetup prepareWalls(const RunOptions& o, const scenes::Scene& scene, c
     gl::BakeRequest request;
     request.scene = o.scene;
     request.context = &context;
+    request.settings.kind = o.wallKind;
     if (o.cache) request.cache = *o.cache;
     if (o.verbose)
         request.progress = [](const gl::BakeProgress& p) {
@@ -110,6 +111,7 @@ RunSummary runSession(const RunOptions& o) {
     options.synchronousPaging = o.synchronousPaging;
     options.textureBudgetMB = o.textureBudgetMB;
     options.transition = o.transition;
+    options.wallKind = o.wallKind;
     options.render.lodPixels = o.lodPixels;
     options.triangleBudget = o.triangleBudget;
     options.lodMaxPixels = std::max(o.lodMaxPixels, o.lodPixels);
