@@ -7,6 +7,7 @@
 #include "config/display_config.h"
 #include "scenes/scene_description.h"
 #include "walls/frame_types.h"
+#include "walls/depth_wall.h"
 #include "walls/plan.h"
 
 #include <array>
@@ -65,6 +66,7 @@ struct RunOptions {
     Transition transition = Transition::Blend;
     bool walls = true;                          // false: --no-walls, full (culled) geometry
     walls::PlanOptions plan;                    // alpha etc. for planning and baking
+    walls::WallKind wallKind = walls::WallKind::Flat;  // --walls flat|depth (walls/depth_wall.h)
     std::optional<std::filesystem::path> cache; // bake cache folder (default: the baker's)
     long saveEvery = 0;                         // save frames: 0 none, K every K-th frame
     bool keepSavedImages = false;               // also return the saved frames' images

@@ -5,8 +5,15 @@
 // the 2 m x 2 m screen 1 m away) and waits for the GPU (glFinish), so the time per iteration
 // is the frame's. Counter ms_per_layer: (iteration ms - clear-only ms) / layers, with the
 // clear-only time measured in the same run.
+//
+// Depth walls (gl::DepthWallPass, issue 16): the same layer drawn by reprojecting a 512 x 512
+// colour + depth texture (a back plane 4 m behind the wall with 8 x 8 blocks 1-3 m behind it)
+// baked from a sampling point 0.37 m from the eye, at the pass's default 64 steps at most and
+// capped at 16; cases named depth_512/*. Their ms_per_layer beside the flat cases' is the cost
+// of reprojection at 1024 x 1024.
 #include "display/gl/context.h"
 #include "display/gl/gl_object.h"
+#include "walls/gl/depth_wall_pass.h"
 #include "walls/gl/wall_pass.h"
 #include "walls/gl/wall_quad.h"
 
@@ -41,6 +48,17 @@ std::vector<scenes::Image> mipChain(int size) {
     return levels;
 }
 
+// 8 x 8 blocks at depths 1, 1.5, ... 3 m on a back plane at 4 m (metres behind the wall).
+cavewall::walls::DepthImage blockDepth(int size) {
+    cavewall::walls::DepthImage d{size, size, {}};
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const int bx = x * 16 / size, by = y * 16 / size;
+            d.depth.push_back(bx % 2 == 1 && by % 2 == 1 ? 1.0f + 0.5f * ((bx + by) % 5) : 4.0f);
+        }
+    return d;
+}
+
 struct Fixture {
     std::unique_ptr<gl::Context> context = gl::createHeadlessContext();
     gl::GlObject color = gl::createTexture(GL_TEXTURE_2D), depth = gl::createTexture(GL_TEXTURE_2D),
@@ -49,6 +67,8 @@ struct Fixture {
     gl::GlObject bare = gl::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}});
     gl::GlObject baked = gl::uploadWallTexture(mipChain(512));
     gl::GlObject nearestMip = gl::createSampler(), linearMip = gl::createSampler(), bilinear = gl::createSampler();
+    gl::GlObject depthBlocks = gl::uploadDepthTexture(blockDepth(512));
+    gl::DepthWallPass depthPass, depthPass16{walls::ReprojectSettings{16, 6}};
     display::OffAxisFrustum frustum;
     display::ScreenQuad wall;
 
@@ -83,9 +103,23 @@ struct Fixture {
     }
 };
 
-double frameMs(Fixture& f, int layers, GLuint texture, GLuint sampler, int texturesPerLayer) {
+double frameMs(Fixture& f, int layers, GLuint texture, GLuint sampler, int texturesPerLayer, int depthSteps = 0) {
     const auto start = std::chrono::steady_clock::now();
     f.clear();
+    if (depthSteps > 0) {
+        std::vector<gl::DepthWallDraw> draws;
+        for (int i = 0; i < layers; ++i) {
+            gl::DepthWallDraw d{f.wall, {}, texturesPerLayer};
+            for (int t = 0; t < texturesPerLayer; ++t)
+                d.layers[t] = {texture, f.depthBlocks.id(), glm::dvec3(0.3, 0.1, 0.2 * (t + 1)), glm::dvec2(1.0, 4.0),
+                               1.0f / texturesPerLayer};
+            draws.push_back(d);
+        }
+        gl::FrameStats stats;
+        (depthSteps == 16 ? f.depthPass16 : f.depthPass).draw(draws, f.frustum, glm::dmat4(1.0), sampler, stats);
+        glFinish();
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    }
     std::vector<gl::WallDraw> draws;
     for (int i = 0; i < layers; ++i) {
         gl::WallDraw d{f.wall, {}, {}, texturesPerLayer};
@@ -98,12 +132,13 @@ double frameMs(Fixture& f, int layers, GLuint texture, GLuint sampler, int textu
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-void layerCost(benchmark::State& state, Fixture& f, GLuint texture, GLuint sampler, int texturesPerLayer) {
+void layerCost(benchmark::State& state, Fixture& f, GLuint texture, GLuint sampler, int texturesPerLayer,
+               int depthSteps) {
     const int layers = static_cast<int>(state.range(0));
     double clearMs = 0.0, ms = 0.0;
     for (auto _ : state) {
         clearMs += frameMs(f, 0, texture, sampler, texturesPerLayer);  // interleaved: same load
-        ms += frameMs(f, layers, texture, sampler, texturesPerLayer);
+        ms += frameMs(f, layers, texture, sampler, texturesPerLayer, depthSteps);
     }
     const double n = static_cast<double>(state.iterations());
     state.counters["clear_ms"] = clearMs / n;
@@ -120,15 +155,19 @@ int main(int argc, char** argv) {
         const char* name;
         GLuint texture, sampler;
         int textures;
+        int depthSteps = 0;  // > 0: gl::DepthWallPass with this many steps at most
     };
     const Case cases[] = {{"bare_1x1", f.bare.id(), 0, 1},
                           {"baked_512/linear_mipmap_nearest", f.baked.id(), f.nearestMip.id(), 1},
                           {"baked_512/linear_mipmap_linear", f.baked.id(), f.linearMip.id(), 1},
                           {"baked_512/linear_no_mipmap", f.baked.id(), f.bilinear.id(), 1},
-                          {"baked_512/two_textures_blending", f.baked.id(), f.nearestMip.id(), 2}};
+                          {"baked_512/two_textures_blending", f.baked.id(), f.nearestMip.id(), 2},
+                      {"depth_512/steps_64", f.baked.id(), f.nearestMip.id(), 1, 64},
+                      {"depth_512/steps_16", f.baked.id(), f.nearestMip.id(), 1, 16},
+                      {"depth_512/two_textures_steps_64", f.baked.id(), f.nearestMip.id(), 2, 64}};
     for (const Case& c : cases)
         benchmark::RegisterBenchmark((std::string("WallLayer/") + c.name).c_str(),
-                                     [&f, c](benchmark::State& s) { layerCost(s, f, c.texture, c.sampler, c.textures); })
+                                     [&f, c](benchmark::State& s) { layerCost(s, f, c.texture, c.sampler, c.textures, c.depthSteps); })
             ->Arg(1)
             ->Arg(4)
             ->Iterations(10)

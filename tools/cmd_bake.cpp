@@ -3,6 +3,8 @@
 #include "walls/gl/baker.h"
 
 #include <algorithm>
+#include <array>
+#include <utility>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -13,7 +15,7 @@ namespace cavewall::tools {
 
 const char* const kBakeUsage =
     "usage: cavewall bake SCENE [--alpha DEG] [--jobs N] [--cache DIR] [--max-res N] [--min-zone M]\n"
-    "                           [--blend M] [--ppd N] [--tile N]\n"
+    "                           [--blend M] [--ppd N] [--tile N] [--walls flat|depth]\n"
     "\n"
     "Bakes the textures of every virtual wall and portal of SCENE (a scene.json or a folder holding\n"
     "one) as planned by `cavewall plan` with the same options: each texture is the scene content\n"
@@ -30,6 +32,9 @@ const char* const kBakeUsage =
     "--max-res: largest texture side in texels (default 1024; the plan's density target is\n"
     "scaled down to fit). --tile: file tile size (default 64). --alpha, --min-zone, --blend, --ppd:\n"
     "as for `cavewall plan`.\n"
+    "--walls depth: also store per texel the depth behind the wall of the surface seen (32-bit\n"
+    "float, lossless, <texture>.depth.tif beside each texture; walls/depth_wall.h), for depth walls\n"
+    "reprojected to the eye; a separate bake folder (default flat: colour only).\n"
     "Progress goes to stderr (a bar with ETA on a terminal, plain lines otherwise); a summary and,\n"
     "as the last line, the bake folder go to stdout.\n";
 
@@ -85,7 +90,7 @@ void ProgressPrinter::operator()(const gl::BakeProgress& p) {
 
 int runBake(const std::vector<std::string>& words) {
     const Args args(words, {});
-    args.expectFlags({"alpha", "jobs", "cache", "max-res", "min-zone", "blend", "ppd", "tile"});
+    args.expectFlags({"alpha", "jobs", "cache", "max-res", "min-zone", "blend", "ppd", "tile", "walls"});
     gl::BakeRequest request;
     request.plan.alphaDeg = args.number("alpha", request.plan.alphaDeg, 1e-6, 90.0);
     request.plan.minZoneSize = args.number("min-zone", request.plan.minZoneSize, 0.01, 1000.0);
@@ -95,6 +100,7 @@ int runBake(const std::vector<std::string>& words) {
     request.settings.jobs = static_cast<int>(args.integer("jobs", 1, 1, 64));
     request.settings.maxResolution = static_cast<int>(args.integer("max-res", request.settings.maxResolution, 16, 16384));
     request.settings.tileSize = static_cast<int>(args.integer("tile", request.settings.tileSize, 16, 1024));
+    request.settings.kind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
     gl::validateBakeSettings(request.settings);
     request.scene = args.positional(0, "SCENE");
     if (args.positional().size() > 1)

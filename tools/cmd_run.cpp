@@ -12,7 +12,7 @@ namespace cavewall::tools {
 const char* const kRunUsage =
     "usage: cavewall run --scene S --tracker SPEC --frames N --out DIR [--display D]\n"
     "                    [--nav guided|fly|walk|none] [--pace M/S] [--route walk|wall] [--headless|--window]\n"
-    "                    [--transition blend|warp] [--no-walls] [--alpha DEG] [--min-zone M] [--ppd N]\n"
+    "                    [--transition blend|warp] [--no-walls] [--walls flat|depth] [--alpha DEG] [--min-zone M] [--ppd N]\n"
     "                    [--save-frames none|every:K|all] [--record FILE] [--cache DIR]\n"
     "                    [--budget MB] [--geometry-budget MB] [--max-res N] [--sync-paging]\n"
     "                    [--lod PX [--triangle-budget N|--frame-budget-ms T] [--lod-max PX]]\n"
@@ -38,6 +38,8 @@ const char* const kRunUsage =
     "neighbours load in the background, and a wall whose cell behind is not resident keeps its\n"
     "textures (frames.csv: geometry_resident_mb, geometry_page_ins, geometry_misses cumulative;\n"
     "geometry_kept walls kept as textures and geometry_forced cells drawn unloaded, per frame).\n"
+    "--walls depth bakes depth with colour and reprojects every wall pixel to the eye (issue 16,\n"
+    "walls/gl/depth_wall_pass.h); default flat.\n"
     "--lod PX draws every object at the coarsest level of detail\n"
     "whose geometric error covers at most PX pixels on any screen it appears on (levels are built\n"
     "when the scene loads; default 0: full detail); --triangle-budget N raises that tolerance in\n"
@@ -96,7 +98,8 @@ int runRun(const std::vector<std::string>& words) {
     const Args args(words, {"headless", "window", "no-walls", "sync-paging", "cluster"});
     args.expectFlags({"scene", "display", "tracker", "frames", "nav", "pace", "route", "headless", "window", "transition",
                       "no-walls", "alpha", "min-zone", "ppd", "save-frames", "record", "cache", "budget", "geometry-budget", "max-res",
-                      "sync-paging", "out", "cluster", "cluster-timeout", "lod", "triangle-budget", "frame-budget-ms", "lod-max"});
+                      "sync-paging", "out", "cluster", "cluster-timeout", "lod", "triangle-budget", "frame-budget-ms", "lod-max",
+                      "walls"});
     if (args.has("headless") && args.has("window")) throw Error("--headless and --window: expected one of them, got both");
     app::RunOptions o;
     o.scene = args.require("scene");
@@ -111,6 +114,7 @@ int runRun(const std::vector<std::string>& words) {
     o.window = args.has("window") ? app::WindowMode::Window : app::WindowMode::Headless;
     o.transition = args.choice("transition", app::kTransitionNames, app::Transition::Blend);
     o.walls = !args.has("no-walls");
+    o.wallKind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
     o.plan.alphaDeg = args.number("alpha", o.plan.alphaDeg, 1e-3, 90.0);
     o.plan.minZoneSize = args.number("min-zone", o.plan.minZoneSize, 1e-3, 1e4);
     o.plan.pixelsPerDegree = args.number("ppd", o.plan.pixelsPerDegree, 0.01, 1000.0);

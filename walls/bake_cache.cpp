@@ -35,28 +35,47 @@ CacheIndex indexCache(const std::filesystem::path& cache, const std::filesystem:
     return index;
 }
 
-std::optional<walls::BakedTexture> linkCachedTexture(const CacheIndex& index, const std::filesystem::path& folder,
-                                              const walls::BakedTexture& wanted) {
-    const auto key = textureKeyOf(wanted.file);
-    if (!key) return std::nullopt;
-    const auto it = index.find(*key);
-    if (it == index.end() || !walls::textureFileValid(it->second.folder, it->second.entry)) return std::nullopt;
+namespace {
+
+// Hard link (else copy) `source` to `target` through a temporary name; false on failure.
+bool linkFile(const std::filesystem::path& source, const std::filesystem::path& folder, const std::string& name) {
     std::error_code ec;
-    std::filesystem::create_directories(folder, ec);
-    const std::filesystem::path source = it->second.folder / it->second.entry.file;
-    const std::filesystem::path target = folder / wanted.file;
-    const std::filesystem::path tmp = folder / ("." + wanted.file + ".link-" + std::to_string(::getpid()));
+    const std::filesystem::path target = folder / name;
+    const std::filesystem::path tmp = folder / ("." + name + ".link-" + std::to_string(::getpid()));
     std::filesystem::remove(tmp, ec);
     std::filesystem::create_hard_link(source, tmp, ec);
     if (ec) std::filesystem::copy_file(source, tmp, std::filesystem::copy_options::overwrite_existing, ec = {});
     if (!ec) std::filesystem::rename(tmp, target, ec);
     if (ec) {
         std::filesystem::remove(tmp, ec);
-        return std::nullopt;
+        return false;
     }
+    return true;
+}
+
+}  // namespace
+
+std::optional<walls::BakedTexture> linkCachedTexture(const CacheIndex& index, const std::filesystem::path& folder,
+                                              const walls::BakedTexture& wanted) {
+    const auto key = textureKeyOf(wanted.file);
+    if (!key) return std::nullopt;
+    const auto it = index.find(*key);
+    if (it == index.end() || !walls::textureFileValid(it->second.folder, it->second.entry)) return std::nullopt;
+    // A depth wall's texture needs the depth file too (the key covers the wall kind, so a
+    // matching entry has one; a flat one never does).
+    const walls::BakedTexture& source = it->second.entry;
+    if (wanted.depthFile.empty() != source.depthFile.empty()) return std::nullopt;
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    if (!linkFile(it->second.folder / source.file, folder, wanted.file)) return std::nullopt;
+    if (!wanted.depthFile.empty() && !linkFile(it->second.folder / source.depthFile, folder, wanted.depthFile))
+        return std::nullopt;
     walls::BakedTexture got = wanted;
-    got.bytes = it->second.entry.bytes;
-    got.hash = it->second.entry.hash;
+    got.bytes = source.bytes;
+    got.hash = source.hash;
+    got.depthBytes = source.depthBytes;
+    got.depthHash = source.depthHash;
+    got.depthRange = source.depthRange;
     walls::stampTexture(folder, got);  // a hard link shares the source's stamp, a copy has its own
     // The source may have changed between the check and the link: check the copy itself.
     if (!walls::textureFileValid(folder, got)) return std::nullopt;
@@ -65,12 +84,21 @@ std::optional<walls::BakedTexture> linkCachedTexture(const CacheIndex& index, co
 
 int removeUnlistedTextures(const std::filesystem::path& folder, const walls::BakeManifest& manifest) {
     std::set<std::string> listed;
-    for (const walls::BakedTexture& t : manifest.textures) listed.insert(t.file);
+    for (const walls::BakedTexture& t : manifest.textures) {
+        listed.insert(t.file);
+        if (!t.depthFile.empty()) listed.insert(t.depthFile);
+    }
+    // A depth file is "<texture file without .tx>.depth.tif".
+    auto isDepthFile = [](const std::string& name) {
+        const std::string suffix = ".depth.tif";
+        return name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0 &&
+               textureKeyOf(name.substr(0, name.size() - suffix.size()) + ".tx").has_value();
+    };
     int removed = 0;
     std::error_code ec;
     for (const auto& file : std::filesystem::directory_iterator(folder, ec)) {
         const std::string name = file.path().filename().string();
-        if (!textureKeyOf(name) || listed.count(name)) continue;
+        if ((!textureKeyOf(name) && !isDepthFile(name)) || listed.count(name)) continue;
         if (std::filesystem::remove(file.path(), ec)) ++removed;
     }
     return removed;

@@ -64,11 +64,15 @@ std::int64_t parseInt64(const config::JsonNode& node) {
 
 std::string manifestToJson(const BakeManifest& m) {
     nlohmann::json textures = nlohmann::json::array();
-    for (const BakedTexture& t : m.textures)
+    for (const BakedTexture& t : m.textures) {
         textures.push_back({{"id", t.id}, {"cell", t.cell}, {"wall", t.wall},
                             {"samplingPoint", {t.samplingPoint.x, t.samplingPoint.y, t.samplingPoint.z}},
                             {"resolution", {t.resolution.x, t.resolution.y}}, {"file", t.file},
                             {"bytes", t.bytes}, {"hash", hex64(t.hash)}, {"mtimeNs", t.mtimeNs}, {"inode", t.inode}});
+        if (!t.depthFile.empty())
+            textures.back()["depth"] = {{"file", t.depthFile}, {"bytes", t.depthBytes}, {"hash", hex64(t.depthHash)},
+                                        {"range", {t.depthRange.x, t.depthRange.y}}};
+    }
     const nlohmann::json j{{"version", 2}, {"key", hex64(m.key)}, {"alphaDeg", m.alphaDeg}, {"textures", textures}};
     return j.dump(1) + "\n";
 }
@@ -82,8 +86,8 @@ BakeManifest manifestFromJson(std::string_view text, const std::string& source) 
     m.key = parseHex64(root.at("key"));
     m.alphaDeg = root.at("alphaDeg").number(0.0, 90.0);
     for (const config::JsonNode& n : root.at("textures").items()) {
-        if (version == 1) n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "file", "bytes", "hash"});
-        else n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "file", "bytes", "hash", "mtimeNs", "inode"});
+        if (version == 1) n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "file", "bytes", "hash", "depth"});
+        else n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "file", "bytes", "hash", "mtimeNs", "inode", "depth"});
         BakedTexture t;
         t.id = n.at("id").integer(0, 1 << 30);
         t.cell = n.at("cell").integer(0, 1 << 30);
@@ -98,6 +102,17 @@ BakeManifest manifestFromJson(std::string_view text, const std::string& source) 
         if (version >= 2) {
             t.mtimeNs = parseInt64(n.at("mtimeNs"));
             t.inode = static_cast<std::uint64_t>(parseInt64(n.at("inode")));
+        }
+        if (const auto d = n.find("depth")) {
+            d->expectKeys({"file", "bytes", "hash", "range"});
+            t.depthFile = d->at("file").string();
+            if (t.depthFile.empty() || t.depthFile.find('/') != std::string::npos || t.depthFile.find("..") != std::string::npos)
+                d->at("file").fail("expected a plain file name in the manifest's folder, got \"" + t.depthFile + "\"");
+            t.depthBytes = static_cast<std::uint64_t>(d->at("bytes").number(0.0, 1e15));
+            t.depthHash = parseHex64(d->at("hash"));
+            t.depthRange = d->at("range").vec2();
+            if (!(t.depthRange.x >= 0.0 && t.depthRange.y >= t.depthRange.x))
+                d->at("range").fail("expected 0 <= near <= far");
         }
         m.textures.push_back(std::move(t));
     }
@@ -118,15 +133,23 @@ void writeManifest(const std::filesystem::path& folder, const BakeManifest& mani
     writeFileAtomically(folder / "manifest.json", manifestToJson(manifest));
 }
 
-bool textureFileValid(const std::filesystem::path& folder, const BakedTexture& t) {
+namespace {
+
+bool fileValid(const std::filesystem::path& path, std::uint64_t bytes, std::uint64_t hash) {
     std::error_code ec;
-    const auto path = folder / t.file;
-    if (std::filesystem::file_size(path, ec) != t.bytes || ec) return false;
+    if (std::filesystem::file_size(path, ec) != bytes || ec) return false;
     try {
-        return hashFile(path) == t.hash;
+        return hashFile(path) == hash;
     } catch (const Error&) {
         return false;
     }
+}
+
+}  // namespace
+
+bool textureFileValid(const std::filesystem::path& folder, const BakedTexture& t) {
+    return fileValid(folder / t.file, t.bytes, t.hash) &&
+           (t.depthFile.empty() || fileValid(folder / t.depthFile, t.depthBytes, t.depthHash));
 }
 
 namespace {
@@ -153,7 +176,8 @@ bool stampTexture(const std::filesystem::path& folder, BakedTexture& t) {
 }
 
 bool textureFileUnchanged(const std::filesystem::path& folder, const BakedTexture& t) {
-    if (t.mtimeNs == 0 && t.inode == 0) return false;
+    // A depth wall's depth file has no stamp of its own: such textures are always hashed.
+    if ((t.mtimeNs == 0 && t.inode == 0) || !t.depthFile.empty()) return false;
     const std::optional<Stat> s = statFile(folder / t.file);
     return s && s->bytes == t.bytes && s->mtimeNs == t.mtimeNs && s->inode == t.inode;
 }

@@ -6,7 +6,10 @@
 //   {"version": 2, "key": "<16 hex digits>", "alphaDeg": 10,
 //    "textures": [{"id": 0, "cell": 0, "wall": 0, "samplingPoint": [x, y, z],
 //                  "resolution": [w, h], "file": "tex_0000.tx", "bytes": 123, "hash": "<16 hex>",
-//                  "mtimeNs": 1796212345123456789, "inode": 1234}]}
+//                  "mtimeNs": 1796212345123456789, "inode": 1234,
+//                  "depth": {"file": "tex_0000.depth.tif", "bytes": 45, "hash": "<16 hex>",
+//                            "range": [near, far]}}]}
+// ("depth" only for depth walls, walls/depth_file.h; the texture is valid when both files are.)
 // `key` is a content hash of everything the textures depend on (scene files, plan, bake
 // settings); `hash` is the FNV-1a 64 hash of the texture file's bytes. A texture is valid when
 // its file exists with exactly `bytes` bytes and hash; anything else (missing, torn, replaced)
@@ -45,6 +48,12 @@ struct BakedTexture {
     std::uint64_t hash = 0;           // FNV-1a 64 of the file's bytes
     std::int64_t mtimeNs = 0;         // last-write time when the hash was checked; 0: unknown
     std::uint64_t inode = 0;          // inode number then
+    // Depth walls only (walls/depth_file.h): the depth file beside `file`, its size and hash,
+    // and the range of its finite depths (metres behind the wall). Empty for flat walls.
+    std::string depthFile;
+    std::uint64_t depthBytes = 0;
+    std::uint64_t depthHash = 0;
+    glm::dvec2 depthRange{0.0};
     bool operator==(const BakedTexture&) const = default;
 };
 
@@ -71,12 +80,12 @@ void writeManifest(const std::filesystem::path& folder, const BakeManifest& mani
 // Writes bytes to `file` atomically (scenes::writeAtomically).
 void writeFileAtomically(const std::filesystem::path& file, std::string_view bytes);
 
-// True when the texture's file exists with the recorded size and hash (reads the whole file).
+// True when the texture's file (and its depth file, if any) exists with the recorded size and hash.
 bool textureFileValid(const std::filesystem::path& folder, const BakedTexture& texture);
 // Sets the texture's mtimeNs and inode from its file now (one stat); false (and zeros) when the
 // file cannot be read. Stamp before hashing: a write during the hash then shows next time.
 bool stampTexture(const std::filesystem::path& folder, BakedTexture& texture);
-// True when the texture has a recorded stamp and its file exists with the recorded size,
+// True when the texture has a recorded stamp, no depth file, and its file exists with the recorded size,
 // last-write time and inode (one stat: the start-up check; see above for what it cannot see).
 bool textureFileUnchanged(const std::filesystem::path& folder, const BakedTexture& texture);
 

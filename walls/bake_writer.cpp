@@ -1,5 +1,7 @@
 #include "walls/bake_writer.h"
 
+#include "walls/depth_file.h"
+
 #include "config/error.h"
 
 #include <utility>
@@ -24,7 +26,16 @@ void BakeWriter::submit(walls::BakedTexture entry, scenes::Image image) {
     std::unique_lock lock(_mutex);
     _changed.wait(lock, [&] { return _queue.size() < _maxQueued || _error; });
     if (_error) std::rethrow_exception(_error);
-    _queue.push_back({std::move(entry), std::move(image)});
+    _queue.push_back({std::move(entry), std::move(image), std::nullopt});
+    _changed.notify_all();
+}
+
+void BakeWriter::submit(walls::BakedTexture entry, scenes::Image image, DepthImage depth) {
+    if (entry.depthFile.empty()) throw Error(entry.file + ": a depth wall's texture needs a depth file name, got none");
+    std::unique_lock lock(_mutex);
+    _changed.wait(lock, [&] { return _queue.size() < _maxQueued || _error; });
+    if (_error) std::rethrow_exception(_error);
+    _queue.push_back({std::move(entry), std::move(image), std::move(depth)});
     _changed.notify_all();
 }
 
@@ -62,6 +73,14 @@ void BakeWriter::worker() {
             // The time first: a change while hashing then shows as a changed time next start.
             walls::stampTexture(_folder, job.entry);
             job.entry.hash = walls::hashFile(file);
+            if (job.depth) {
+                const std::filesystem::path depthFile = _folder / job.entry.depthFile;
+                writeDepthFile(depthFile, *job.depth);
+                job.entry.depthBytes = std::filesystem::file_size(depthFile, ec);
+                if (ec) throw Error(depthFile.string() + ": cannot read the size of the written file (" + ec.message() + ")");
+                job.entry.depthHash = walls::hashFile(depthFile);
+                job.entry.depthRange = depthRange(*job.depth);
+            }
         } catch (...) {
             error = std::current_exception();
         }

@@ -5,6 +5,7 @@
 
 #include "scenes/scene.h"
 #include "walls/bake_manifest.h"
+#include "walls/depth_wall.h"
 #include "walls/texture_mips.h"
 
 #include <condition_variable>
@@ -12,6 +13,7 @@
 #include <exception>
 #include <filesystem>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -30,6 +32,9 @@ public:
     // Queues `image` (straight alpha, sRGB, as read from the render target) to be written as
     // <folder>/<entry.file>; `entry` comes back with bytes and hash filled in.
     void submit(walls::BakedTexture entry, scenes::Image image);
+    // As above for a depth wall: also writes `depth` as <folder>/<entry.depthFile>
+    // (walls/depth_file.h) and fills depthBytes, depthHash and depthRange.
+    void submit(walls::BakedTexture entry, scenes::Image image, DepthImage depth);
     // Entries finished since the last call; `wait`: block until at least one is (or none is
     // pending). Rethrows the first worker error (cavewall::Error naming the file).
     std::vector<walls::BakedTexture> takeDone(bool wait);
@@ -39,6 +44,7 @@ private:
     struct Job {
         walls::BakedTexture entry;
         scenes::Image image;
+        std::optional<DepthImage> depth;
     };
     void worker();
 

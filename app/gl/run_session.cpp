@@ -39,6 +39,7 @@ walls::WallSetup prepareWalls(const RunOptions& o, const scenes::Scene& scene, c
     request.scene = o.scene;
     request.context = &context;
     request.settings.maxResolution = o.bakeResolution;
+    request.settings.kind = o.wallKind;
     if (o.cache) request.cache = *o.cache;
     if (o.verbose)
         request.progress = [](const gl::BakeProgress& p) {
@@ -123,6 +124,7 @@ RunSummary runSession(const RunOptions& o) {
     options.textureBudgetMB = o.textureBudgetMB;
     options.geometryBudgetMB = o.geometryBudgetMB;
     options.transition = o.transition;
+    options.wallKind = o.wallKind;
     options.render.lodPixels = o.lodPixels;
     options.triangleBudget = o.triangleBudget;
     options.lodMaxPixels = std::max(o.lodMaxPixels, o.lodPixels);

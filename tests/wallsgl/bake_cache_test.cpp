@@ -4,6 +4,7 @@
 #include "tests/gl/gl_test_support.h"
 #include "tests/wallsgl/bake_test_scene.h"
 #include "walls/bake_cache.h"
+#include "walls/depth_file.h"
 #include "walls/gl/baker.h"
 #include "walls/texture_pager.h"
 
@@ -280,6 +281,34 @@ TEST(BakeFileNames, TextureKeyRoundTripsThroughTheFileName) {
     EXPECT_EQ(walls::textureKeyOf("manifest.json"), std::nullopt);
     EXPECT_EQ(walls::textureKeyOf("tex_0007_0123456789ABCDEF.tx"), std::nullopt);  // walls::hex64 writes lower case
     EXPECT_EQ(walls::textureKeyOf(".tex_0007_0123456789abcdef.tmp-1-0.tx"), std::nullopt);
+}
+
+// Depth walls (issue 16): the wall kind keys the folder; every texture gets a valid depth file
+// whose range is that of its depths; a re-bake renders nothing, and a damaged depth file is
+// re-baked (only that texture).
+TEST_F(BakeCacheTest, DepthBakesKeyTheirKindAndKeepDepthFilesValid) {
+    const BakeResult flat = bakeScene(request);
+    request.settings.kind = walls::WallKind::Depth;
+    const BakeResult depth = bakeScene(request);
+    EXPECT_NE(depth.folder, flat.folder);
+    const int n = static_cast<int>(depth.manifest.textures.size());
+    ASSERT_EQ(n, static_cast<int>(flat.manifest.textures.size()));
+    EXPECT_EQ(depth.baked, n);
+    for (const walls::BakedTexture& t : depth.manifest.textures) {
+        ASSERT_FALSE(t.depthFile.empty());
+        EXPECT_TRUE(walls::textureFileValid(depth.folder, t));
+        const walls::DepthImage d = walls::readDepthFile(depth.folder / t.depthFile);
+        EXPECT_EQ(glm::ivec2(d.width, d.height), t.resolution);
+        EXPECT_EQ(walls::depthRange(d), t.depthRange);
+    }
+    for (const walls::BakedTexture& t : flat.manifest.textures) EXPECT_TRUE(t.depthFile.empty());
+    EXPECT_EQ(bakeScene(request).baked, 0);
+
+    std::ofstream(depth.folder / depth.manifest.textures[0].depthFile, std::ios::binary | std::ios::app) << "x";
+    const BakeResult repaired = bakeScene(request);
+    EXPECT_EQ(repaired.baked, 1);
+    EXPECT_TRUE(walls::textureFileValid(repaired.folder, repaired.manifest.textures[0]));
+
 }
 
 }  // namespace

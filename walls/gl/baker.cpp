@@ -6,6 +6,7 @@
 #include "walls/bake_cache.h"
 #include "walls/bake_key.h"
 #include "walls/bake_writer.h"
+#include "walls/depth_file.h"
 #include "walls/gl/wall_renderer.h"
 #include "walls/visibility.h"
 #include "walls/wall_setup.h"
@@ -67,7 +68,10 @@ std::uint64_t settingsKey(const BakeSettings& s) {
     KeyHasher h;
     // Bump the text when the renderer, the MIP filter or the file layout changes.
     h.text("cavewall bake settings v1");
-    return h.integer(s.maxResolution).integer(s.tileSize).number(s.ambient).value();
+    h.integer(s.maxResolution).integer(s.tileSize).number(s.ambient);
+    // Flat bakes keep their keys (and caches); depth bakes get others (their files differ).
+    if (s.kind == walls::WallKind::Depth) h.text("depth wall v1");
+    return h.value();
 }
 
 void ensureFolder(const std::filesystem::path& folder) {
@@ -156,7 +160,7 @@ BakeResult Bake::run() {
     writeManifestNow(true);  // only when it changed: an unchanged bake writes nothing
     removeUnlistedTextures(_result.folder, _result.manifest);
     _result.totalBytes = 0;
-    for (const walls::BakedTexture& t : _result.manifest.textures) _result.totalBytes += t.bytes;
+    for (const walls::BakedTexture& t : _result.manifest.textures) _result.totalBytes += t.bytes + t.depthBytes;
     _result.seconds = std::chrono::duration<double>(Clock::now() - _start).count();  // progress reported done already
     return std::move(_result);
 }
@@ -219,6 +223,7 @@ void Bake::keyPending(std::uint64_t settings) {
     for (Item& item : _pending) {
         const std::uint64_t content = keys.at({item.texture->wall, item.side});
         item.entry.file = textureFileName(item.texture->id, textureKey(item, _plan, content, settings));
+        if (_request.settings.kind == walls::WallKind::Depth) item.entry.depthFile = walls::depthFileName(item.entry.file);
     }
 }
 
@@ -227,7 +232,7 @@ void Bake::linkFromCache() {
     std::vector<Item> left;
     for (Item& item : _pending) {
         if (std::optional<walls::BakedTexture> got = linkCachedTexture(index, _result.folder, item.entry)) {
-            finish(*got, false, got->bytes);
+            finish(*got, false, got->bytes + got->depthBytes);
             ++_result.linked;
         } else {
             left.push_back(item);
@@ -248,12 +253,18 @@ void Bake::render() {
     WallTextureRenderer renderer(_scene, _request.settings.ambient);
     BakeWriter writer(_result.folder, _request.settings.jobs, {_request.settings.tileSize});
     auto absorb = [&](bool wait) {
-        for (const walls::BakedTexture& e : writer.takeDone(wait)) finish(e, true, e.bytes);
+        for (const walls::BakedTexture& e : writer.takeDone(wait)) finish(e, true, e.bytes + e.depthBytes);
     };
     for (const Item& item : _pending) {
         const walls::WallContents& c = _walls.contents.at({item.texture->wall, item.side});
         const display::ScreenQuad quad = walls::quadSeenFrom(_plan.walls[item.texture->wall].quad, item.side);
-        writer.submit(item.entry, renderer.render(quad, item.texture->samplingPoint, item.resolution, c.baked));
+        if (_request.settings.kind == walls::WallKind::Depth) {
+            walls::DepthImage depth;
+            scenes::Image colour = renderer.render(quad, item.texture->samplingPoint, item.resolution, c.baked, depth);
+            writer.submit(item.entry, std::move(colour), std::move(depth));
+        } else {
+            writer.submit(item.entry, renderer.render(quad, item.texture->samplingPoint, item.resolution, c.baked));
+        }
         absorb(false);
     }
     while (writer.pending() > 0) absorb(true);

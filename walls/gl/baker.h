@@ -29,6 +29,7 @@
 
 #include "display/gl/context.h"
 #include "walls/bake_manifest.h"
+#include "walls/depth_wall.h"
 #include "walls/plan.h"
 #include "walls/wall_setup.h"
 
@@ -47,6 +48,9 @@ struct BakeSettings {
     int jobs = 1;               // threads building MIP chains and writing files, [1, 64]; GL
                                 // rendering is one context on the calling thread
     float ambient = 0.35f;      // as RenderSettings::ambient, [0, 1]
+    // Flat: colour only. Depth (issue 16): colour plus a lossless float depth file per texture
+    // (walls/depth_file.h), read back from the same render's depth buffer; keys the cache.
+    walls::WallKind kind = walls::WallKind::Flat;
 };
 
 // Throws cavewall::Error naming the setting when it is out of range.

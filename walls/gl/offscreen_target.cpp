@@ -3,6 +3,7 @@
 #include "config/error.h"
 #include "display/gl/render_targets.h"
 
+#include <algorithm>
 #include <string>
 
 namespace cavewall::gl {
@@ -34,6 +35,18 @@ void OffscreenTarget::bindAndClear(glm::vec4 c) const {
 
 scenes::Image OffscreenTarget::read(const std::string& name) const {
     return gl::readFramebuffer(_framebuffer.id(), GL_COLOR_ATTACHMENT0, _size, name);
+}
+
+std::vector<float> OffscreenTarget::readDepth() const {
+    std::vector<float> bottomUp(static_cast<std::size_t>(_size.x) * _size.y);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, _framebuffer.id());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, _size.x, _size.y, GL_DEPTH_COMPONENT, GL_FLOAT, bottomUp.data());
+    std::vector<float> rows(bottomUp.size());
+    for (int y = 0; y < _size.y; ++y)
+        std::copy_n(bottomUp.begin() + std::ptrdiff_t(_size.y - 1 - y) * _size.x, _size.x,
+                    rows.begin() + std::ptrdiff_t(y) * _size.x);
+    return rows;
 }
 
 }  // namespace cavewall::gl

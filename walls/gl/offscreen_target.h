@@ -8,6 +8,8 @@
 
 #include <glm/glm.hpp>
 
+#include <vector>
+
 namespace cavewall::gl {
 
 class OffscreenTarget {
@@ -22,6 +24,9 @@ public:
     void bindAndClear(glm::vec4 linearColor) const;
     // 8-bit RGBA as stored (sRGB colour, linear alpha), rows top to bottom.
     scenes::Image read(const std::string& name) const;
+    // The depth buffer as stored (reversed-Z float, 0 where nothing was drawn), rows top to
+    // bottom like read().
+    std::vector<float> readDepth() const;
 
 private:
     glm::ivec2 _size;

@@ -4,6 +4,7 @@
 #include "scenes/image_io.h"
 #include "display/gl/view_loop.h"
 #include "render/lod_choice.h"
+#include "walls/gl/depth_texture_store.h"
 #include "walls/gl/texture_store.h"
 
 
@@ -37,7 +38,12 @@ struct Walkthrough::WallRuntime {
         : setup(std::move(s)),
           pager(setup.folder, setup.manifest, options.textureBudgetMB,
                 options.decoder ? options.decoder : walls::TexturePager::Decoder(decodeBakedTexture)),
-          store(pager, static_cast<std::size_t>(options.uploadMBPerFrame * 1024 * 1024)) {}
+          store(pager, static_cast<std::size_t>(options.uploadMBPerFrame * 1024 * 1024)) {
+        if (options.wallKind == walls::WallKind::Depth) {
+            depth = std::make_unique<DepthTextureStore>(setup.folder, setup.manifest);
+            depthPass = std::make_unique<DepthWallPass>();
+        }
+    }
 
     walls::WallSetup setup;
     walls::TexturePager pager;
@@ -47,6 +53,8 @@ struct Walkthrough::WallRuntime {
     std::unique_ptr<walls::GeometryPager> geometry;
     TextureStore store;
     WallPass pass;
+    std::unique_ptr<DepthTextureStore> depth;  // depth walls only
+    std::unique_ptr<DepthWallPass> depthPass;
 };
 
 Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescription& description,
@@ -120,10 +128,32 @@ std::vector<WallDraw> Walkthrough::wallDraws(const walls::FramePlan& plan) const
     return draws;
 }
 
+std::vector<DepthWallDraw> Walkthrough::depthWallDraws(const walls::FramePlan& plan, std::vector<WallDraw>& flat) {
+    std::vector<DepthWallDraw> draws;
+    if (!_walls || !_walls->depth) return draws;
+    DepthTextureStore& depth = *_walls->depth;
+    depth.retain([&](int id) { return _walls->store.resident(id); });
+    std::vector<WallDraw> left;
+    for (std::size_t i = 0; i < plan.wallDraws.size() && i < flat.size(); ++i) {
+        DepthWallDraw d{flat[i].quad, {}, 0};
+        bool all = true;
+        for (const auto& [id, weight] : plan.wallDraws[i].textures) {
+            const GLuint colour = _walls->store.texture(id), depthTexture = colour ? depth.texture(id) : 0;
+            if (colour && !depthTexture) all = false;
+            d.layers[d.count++] = {colour, depthTexture, depth.samplingPoint(id), depth.range(id), static_cast<float>(weight)};
+        }
+        if (all) draws.push_back(d);
+        else left.push_back(flat[i]);
+    }
+    flat = std::move(left);
+    return draws;
+}
+
 void Walkthrough::drawViews(const walls::FrameInput& input, const std::vector<display::ScreenView>& views,
                             const render::DrawFilter& filter, const walls::FramePlan& plan, walls::FrameResult& result) {
     const glm::dmat4 caveFromWorld = glm::inverse(input.worldFromCave);
-    const std::vector<WallDraw> walls = _walls ? wallDraws(plan) : std::vector<WallDraw>{};
+    std::vector<WallDraw> walls = _walls ? wallDraws(plan) : std::vector<WallDraw>{};
+    const std::vector<DepthWallDraw> depthWalls = depthWallDraws(plan, walls);
     _renderer.beginFrame(_targets, _screens);
     result.stats = forEachView(views, _targets, [&](const display::ScreenView& view) {
         ViewStats stats = _renderer.renderView(view, input.worldFromCave, filter);
@@ -133,6 +163,8 @@ void Walkthrough::drawViews(const walls::FrameInput& input, const std::vector<di
         if (_warp) _warp->draw(plan.warpWalls, view, caveFromWorld, passes);
         // renderView leaves viewport, scissor and colour mask set for this view.
         if (_walls) _walls->pass.draw(walls, view.frustum, caveFromWorld, _walls->store.sampler(), passes);
+        if (_walls && _walls->depthPass)
+            _walls->depthPass->draw(depthWalls, view.frustum, caveFromWorld, _walls->store.sampler(), passes);
         if (input.hand) {
             if (!_cursor) _cursor = std::make_unique<HandCursorPass>();
             _cursor->draw(*input.hand, view.frustum, passes);

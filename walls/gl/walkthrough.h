@@ -36,6 +36,8 @@
 #include "walls/frame_planner.h"
 #include "walls/frame_types.h"
 #include "walls/gl/hand_cursor.h"
+#include "walls/depth_wall.h"
+#include "walls/gl/depth_wall_pass.h"
 #include "walls/gl/wall_pass.h"
 #include "walls/gl/warp_pass.h"
 #include "walls/wall_setup.h"
@@ -48,6 +50,9 @@ namespace cavewall::gl {
 
 struct WalkthroughOptions : walls::WalkthroughSettings {
     RenderSettings render;                   // clear colour, ambient, levels of detail
+    // Depth: walls drawn by gl::DepthWallPass from a depth bake (BakeSettings::kind, the
+    // manifest's depth files, DepthTextureStore); a texture without its depth is drawn flat.
+    walls::WallKind wallKind = walls::WallKind::Flat;
 };
 
 class Walkthrough {
@@ -73,6 +78,8 @@ private:
     struct WallRuntime;
     walls::FramePlan planFrame(const walls::FrameInput& input, const std::vector<display::ScreenView>& views);
     std::vector<WallDraw> wallDraws(const walls::FramePlan& plan) const;
+    // Depth walls: the walls of `flat` whose every texture has its depth move to the result.
+    std::vector<DepthWallDraw> depthWallDraws(const walls::FramePlan& plan, std::vector<WallDraw>& flat);
     void drawViews(const walls::FrameInput& input, const std::vector<display::ScreenView>& views,
                    const render::DrawFilter& filter, const walls::FramePlan& plan, walls::FrameResult& result);
     std::vector<display::ScreenView> renderedViews(const display::HeadPose& head) const;

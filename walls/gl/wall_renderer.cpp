@@ -20,7 +20,16 @@ scenes::Image WallTextureRenderer::render(const display::ScreenQuad& quad, glm::
     filter.objects = &objects;
     filter.skipStructure = true;
     _stats = _renderer.renderFrustum(frustum, glm::dmat4(1.0), target, filter);
+    _lastFrustum = frustum;
     return _target->read("wall texture");
+}
+
+scenes::Image WallTextureRenderer::render(const display::ScreenQuad& quad, glm::dvec3 eye, glm::ivec2 resolution,
+                                          const std::vector<int>& objects, walls::DepthImage& depth) {
+    scenes::Image colour = render(quad, eye, resolution, objects);
+    depth = {resolution.x, resolution.y, _target->readDepth()};
+    for (float& d : depth.depth) d = walls::depthFromBuffer(d, _lastFrustum.clipFromView, _lastFrustum.eyeDistance);
+    return colour;
 }
 
 }  // namespace cavewall::gl

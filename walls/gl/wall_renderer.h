@@ -6,6 +6,7 @@
 #include "display/gl/scene_renderer.h"
 #include "display/off_axis.h"
 #include "scenes/scene.h"
+#include "walls/depth_wall.h"
 #include "walls/gl/offscreen_target.h"
 
 #include <memory>
@@ -27,12 +28,19 @@ public:
     scenes::Image render(const display::ScreenQuad& quad, glm::dvec3 eye, glm::ivec2 resolution,
                          const std::vector<int>& objects);
 
+    // As render(), and the depth of every texel behind the wall plane (walls/depth_wall.h:
+    // metres along the wall's normal, kNoSurface where nothing was drawn), from the same frame's
+    // 32-bit float depth buffer.
+    scenes::Image render(const display::ScreenQuad& quad, glm::dvec3 eye, glm::ivec2 resolution,
+                         const std::vector<int>& objects, walls::DepthImage& depth);
+
     const gl::ViewStats& lastStats() const { return _stats; }
 
 private:
     gl::SceneRenderer _renderer;
     std::unique_ptr<OffscreenTarget> _target;  // reallocated when the resolution changes
     gl::ViewStats _stats;
+    display::OffAxisFrustum _lastFrustum;
 };
 
 }  // namespace cavewall::gl

@@ -48,6 +48,7 @@ BakedWalls bakeWalls(const BenchOptions& o, double alphaDeg, const scenes::Scene
     request.scene = o.scene;
     request.settings.maxResolution = o.bakeResolution;
     request.settings.jobs = 2;
+    request.settings.kind = o.wallKind;
     request.context = &context;
     if (o.cache) request.cache = *o.cache;
     gl::BakeResult baked = gl::bakeWalls(scene, d, out.setup, request);
@@ -162,7 +163,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
     const auto& s0 = o.display.screens.front();
     report.resolution = std::to_string(s0.resolution.x) + "x" + std::to_string(s0.resolution.y) + " per screen, " +
                         std::string(config::toString(o.display.stereo));
-    const ModeContext c{scene, description, display, *context, path, o.compareEvery, o.lodMaxPixels};
+    const ModeContext c{scene, description, display, *context, path, o.compareEvery, o.lodMaxPixels, o.wallKind};
 
     say(o, "bench: full geometry");
     ReferenceImages reference;

@@ -36,6 +36,7 @@
 // and eye with the full-geometry image of that frame (app/bench/metrics.h).
 
 #include "config/display_config.h"
+#include "walls/depth_wall.h"
 #include "app/bench/report.h"
 #include "app/run_options.h"
 #include "walls/plan.h"
@@ -63,6 +64,7 @@ struct BenchOptions {
                                                   // without a budget
     double frameBudgetMs = 1000.0 / 60.0;         // the frame-time modes' target; 0: none
     double lodMaxPixels = 8.0;                    // the most a budget may raise the tolerance to
+    walls::WallKind wallKind = walls::WallKind::Flat;  // --walls: flat or depth walls (bake and draw)
     std::optional<std::filesystem::path> cache;   // bake cache (default: the baker's)
     bool verbose = true;                          // progress on stdout
 };

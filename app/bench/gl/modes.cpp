@@ -114,6 +114,7 @@ void runWalkthroughMode(const ModeContext& c, std::optional<walls::WallSetup> wa
     options.render.lodPixels = acc.mode().lodPixels;
     options.triangleBudget = acc.mode().triangleBudget;
     options.lodMaxPixels = c.lodMaxPixels;
+    options.wallKind = c.wallKind;
     if (!paged) {
         options.synchronousPaging = true;
         options.textureBudgetMB = 4096.0;  // every texture of the path stays resident after warm-up
@@ -158,6 +159,7 @@ NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::Wall
     options.render.lodPixels = mode.lodPixels;
     options.triangleBudget = mode.triangleBudget;
     options.lodMaxPixels = c.lodMaxPixels;
+    options.wallKind = c.wallKind;
     gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
     const walls::FrameInput fixed = c.path.frames.at(static_cast<std::size_t>(frameIndex));
     for (const walls::FrameInput& in : c.path.frames) walkthrough.renderFrame(in);

@@ -63,6 +63,7 @@ struct ModeContext {
     const bench::EyePath& path;
     int compareEvery = 4;
     double lodMaxPixels = 8.0;  // WalkthroughOptions::lodMaxPixels of the budgeted modes
+    walls::WallKind wallKind = walls::WallKind::Flat;  // WalkthroughOptions::wallKind of the walls modes
 };
 
 // Runs the walkthrough (walls: nullopt = full geometry) over the path: a warm-up pass when it

@@ -1,0 +1,209 @@
+// Depth walls (walls/depth_wall.h): the wall frame and depth encoding, the reference
+// reprojection against an analytic scene, and the error bound: every pixel whose reprojection
+// differs from the truth by more than the texel term lies in an interval the bound predicts,
+// and the widest such interval is at least 0.6 of the predicted width (a bound 2x too loose
+// fails).
+#include "walls/depth_wall.h"
+
+#include "config/error.h"
+#include "walls/angular_error.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace cavewall::walls {
+namespace {
+
+const display::ScreenQuad kQuad{{-2, 0, 0}, {2, 0, 0}, {-2, 3, 0}};  // 4 m x 3 m, facing +z
+
+// An analytic scene in the wall frame: a card (x in [1.5, 2.5], y in [1, 2]) at depth 1 in front
+// of a back plane at depth 4. The first surface along a ray from `from` (wall frame, z < 0)
+// through wall point w: its depth and lateral position.
+struct Surface {
+    double depth;
+    glm::dvec2 at;
+};
+Surface firstSurface(glm::dvec3 from, glm::dvec2 w) {
+    const double d0 = -from.z;
+    auto lateral = [&](double d) { return w + (d / d0) * (w - glm::dvec2(from)); };
+    const glm::dvec2 c = lateral(1.0);
+    if (c.x >= 1.5 && c.x <= 2.5 && c.y >= 1.0 && c.y <= 2.0) return {1.0, c};
+    return {4.0, lateral(4.0)};
+}
+
+DepthImage bakeAnalytic(const WallFrame& f, glm::dvec3 sample, int width, int height) {
+    DepthImage image{width, height, {}};
+    for (int j = 0; j < height; ++j)
+        for (int i = 0; i < width; ++i)
+            image.depth.push_back(static_cast<float>(firstSurface(sample, texelCentre(f, width, height, i, j)).depth));
+    return image;
+}
+
+TEST(DepthWall, FrameRoundTripsAndPutsTheViewerInFront) {
+    const WallFrame f = wallFrame(kQuad);
+    EXPECT_DOUBLE_EQ(f.width, 4.0);
+    EXPECT_DOUBLE_EQ(f.height, 3.0);
+    const glm::dvec3 eye(0.3, 1.7, 2.5);
+    const glm::dvec3 w = f.toWall(eye);
+    EXPECT_NEAR(w.z, -2.5, 1e-12);
+    EXPECT_NEAR(w.x, 2.3, 1e-12);
+    const glm::dvec3 back = f.toWorld(w);
+    EXPECT_NEAR(glm::length(back - eye), 0.0, 1e-12);
+    EXPECT_THROW(wallFrame({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}), Error);
+}
+
+TEST(DepthWall, WallKindParsesAndNamesItsInput) {
+    EXPECT_EQ(parseWallKind("flat", "--walls"), WallKind::Flat);
+    EXPECT_EQ(parseWallKind("depth", "--walls"), WallKind::Depth);
+    EXPECT_EQ(wallKindName(WallKind::Depth), "depth");
+    try {
+        parseWallKind("deep", "--walls");
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("--walls"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("deep"), std::string::npos);
+    }
+}
+
+TEST(DepthWall, BufferDepthDecodesToTheDistanceBehindTheWall) {
+    const glm::dvec3 sample(0.4, 1.5, 3.0);
+    const display::OffAxisFrustum fr =
+        display::offAxisFrustum(kQuad, sample, {0.05, std::numeric_limits<double>::infinity()});
+    const WallFrame f = wallFrame(kQuad);
+    for (double d : {0.0, 0.01, 1.0, 7.5, 120.0}) {
+        const glm::dvec3 p = f.toWorld({1.1, 2.2, d});
+        const glm::dvec4 clip = fr.clipFromFrame() * glm::dvec4(p, 1.0);
+        const float buffer = static_cast<float>(clip.z / clip.w);
+        // Float buffer: relative 2^-24 of the view distance (depth_wall.h).
+        EXPECT_NEAR(depthFromBuffer(buffer, fr.clipFromView, fr.eyeDistance), d, 1.2e-7 * (3.0 + d) + 1e-9) << d;
+    }
+    EXPECT_EQ(depthFromBuffer(0.0f, fr.clipFromView, fr.eyeDistance), kNoSurface);
+}
+
+TEST(DepthWall, ReprojectedPointIsWhereTheEyeSeesTheSurfacePoint) {
+    const glm::dvec3 s(1.0, 1.5, -3.0), e(2.2, 1.1, -1.7);
+    for (double d : {0.5, 2.0, 40.0}) {
+        const glm::dvec2 t(0.7, 2.4);
+        const glm::dvec2 p = t + (d / 3.0) * (t - glm::dvec2(s));  // seen from S through t at depth d
+        const double along = 1.7 / (1.7 + d);
+        const glm::dvec2 seen = glm::dvec2(e) + along * (p - glm::dvec2(e));
+        const glm::dvec2 got = reprojectedPoint(e, s, t, d);
+        EXPECT_NEAR(got.x, seen.x, 1e-12);
+        EXPECT_NEAR(got.y, seen.y, 1e-12);
+    }
+}
+
+TEST(DepthWall, BoundFromZeroDepthCoversTheFlatWallsExactError) {
+    // With the whole content depth as the "step" from the wall plane, the bound is a bound of
+    // the flat wall's error (walls/angular_error.h pointError) for every point up to that depth.
+    const WallFrame f = wallFrame(kQuad);
+    const glm::dvec3 sWorld(0.0, 1.6, 3.0);
+    for (glm::dvec3 eWorld : {glm::dvec3(1.5, 1.2, 2.0), glm::dvec3(-1.9, 2.0, 4.5), glm::dvec3(0.0, 1.6, 0.8)}) {
+        const double bound = reprojectionErrorBound(f, f.toWall(eWorld), f.toWall(sWorld), 0.0, 6.0);
+        double worst = 0.0;
+        for (int i = 0; i <= 40; ++i)
+            for (int j = 0; j <= 30; ++j)
+                for (double d : {0.5, 2.0, 6.0}) {
+                    const glm::dvec2 t(4.0 * i / 40, 3.0 * j / 30);
+                    const glm::dvec3 tw = f.toWorld({t, 0.0});
+                    const glm::dvec3 p = tw + (d / 3.0) * (tw - sWorld);
+                    worst = std::max(worst, pointError(eWorld, sWorld, p, kQuad));
+                }
+        EXPECT_GE(bound, worst);
+        // And of the same scale away from the wall (L / D_E overestimates large angles near it).
+        if (eWorld.z >= 2.0) {
+            EXPECT_LT(bound, 3.0 * worst);
+        }
+    }
+}
+
+// The reference reprojection against the analytic scene, eye 0.6 m to the side of the sampling
+// point and 0.5 m closer: away from the bound's intervals it shows the true surface at its true
+// direction within the texel term; the intervals hold every other pixel and are not loose.
+TEST(DepthWall, ReprojectionMatchesTruthOutsideThePredictedDisocclusion) {
+    const WallFrame f = wallFrame(kQuad);
+    const glm::dvec3 s(2.0, 1.5, -3.0), e(2.6, 1.5, -2.5);
+    const int n = 512;
+    const DepthImage image = bakeAnalytic(f, s, n, n * 3 / 4);
+    const glm::dvec2 range = depthRange(image);
+    EXPECT_EQ(range, glm::dvec2(1.0, 4.0));
+    const DepthWallBound bound = depthWallErrorBound(image, f, e, s);
+    // The card's steps are 1 -> 4; the one that opens is its right edge (the eye moved to +x),
+    // seen by S at x = 2 + 0.5 * 3 / 4, where v is nearly along +x: the step term is that
+    // interval, while the undirected stepAngle of the left edge is larger.
+    const double de = -e.z;
+    const double right = stepAngle(e, s, {2.375, 1.5}, 1.0, 4.0), left = stepAngle(e, s, {1.625, 1.5}, 1.0, 4.0);
+    EXPECT_GT(left, 1.2 * right);
+    EXPECT_NEAR(bound.steps, right, 0.03 * right);
+
+    // Scan the row through the card's middle (y = 1.5) at a fine pitch.
+    double widest = 0.0, run = 0.0;
+    int wrong = 0, outside = 0;
+    const int samples = 4000;
+    for (int k = 0; k < samples; ++k) {
+        const glm::dvec2 w(f.width * (k + 0.5) / samples, 1.5);
+        const Surface truth = firstSurface(e, w);
+        // Content S saw only outside the wall (the border term): not part of this check.
+        const glm::dvec2 tTrue = glm::dvec2(s) + (truth.at - glm::dvec2(s)) * (3.0 / (3.0 + truth.depth));
+        if (tTrue.x < 0.0 || tTrue.x > f.width) continue;
+        const ReprojectHit hit = reproject(image, f, e, s, w, range);
+        bool ok = hit.hit;
+        if (ok) {
+            // The point whose colour the pixel shows: what S saw through the texel hit (the
+            // hit itself is always on the eye's ray; a wrong one shows the wrong surface).
+            const glm::dvec2 p = hit.texture + (hit.surface / 3.0) * (hit.texture - glm::dvec2(s));
+            const glm::dvec3 got(p, hit.surface), want(truth.at, truth.depth), eye(e);
+            const double angle = std::acos(std::clamp(glm::dot(glm::normalize(got - eye), glm::normalize(want - eye)), -1.0, 1.0));
+            ok = angle <= bound.texel + 1e-9;
+        }
+        if (!ok) {
+            ++wrong;
+            run += f.width / samples;
+            widest = std::max(widest, run);
+            // Every wrong pixel is inside a predicted interval: [W(d1), W(d2)] of a card edge.
+            bool predicted = false;
+            for (double edge : {1.5, 2.5}) {
+                const glm::dvec2 t(2.0 + (edge - 2.0) * 3.0 / 4.0, 1.5);  // where S sees the card's edge
+                const double a = reprojectedPoint(e, s, t, 1.0).x, b = reprojectedPoint(e, s, t, 4.0).x;
+                const double slack = 2.0 * f.width / n;  // a texel either side
+                if (w.x >= std::min(a, b) - slack && w.x <= std::max(a, b) + slack) predicted = true;
+            }
+            if (!predicted) ++outside;
+        } else {
+            run = 0.0;
+        }
+    }
+    std::printf("reprojection at 512 x 384 texels: %d of %d samples wrong, widest %.4f rad, bound steps %.4f + texel %.5f\n",
+                wrong, samples, widest / de, bound.steps, bound.texel);
+    EXPECT_GT(wrong, 0);  // the eye does see something S did not
+    EXPECT_EQ(outside, 0);
+    // The widest wrong interval's angle against the bound's step term: within it, and not
+    // below 0.6 of it.
+    const double widestAngle = widest / de;
+    EXPECT_LE(widestAngle, bound.steps + 2.0 * bound.texel);
+    EXPECT_GE(widestAngle, 0.6 * bound.steps);
+}
+
+TEST(DepthWall, AtTheSamplingPointTheStepsCostNothing) {
+    const WallFrame f = wallFrame(kQuad);
+    const glm::dvec3 s(2.0, 1.5, -3.0);
+    const DepthImage image = bakeAnalytic(f, s, 64, 48);
+    const DepthWallBound b = depthWallErrorBound(image, f, s, s);
+    EXPECT_EQ(b.steps, 0.0);
+    EXPECT_EQ(b.border, 0.0);
+    EXPECT_GT(b.texel, 0.0);
+    for (int i = 0; i < 64; ++i) {
+        const glm::dvec2 w = texelCentre(f, 64, 48, i, 20);
+        const ReprojectHit hit = reproject(image, f, s, s, w, depthRange(image));
+        ASSERT_TRUE(hit.hit);
+        EXPECT_NEAR(hit.depth, image.at(i, 20), 1e-4 * 4.0);
+        EXPECT_NEAR(glm::length(hit.texture - w), 0.0, 1e-3);
+    }
+}
+
+}  // namespace
+}  // namespace cavewall::walls

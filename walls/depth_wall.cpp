@@ -1,0 +1,195 @@
+#include "walls/depth_wall.h"
+
+#include "config/error.h"
+
+#include <algorithm>
+#include <cmath>
+
+// Proof of the step bound (depth_wall.h). Wall frame, S = (s, -D_S), E = (e, -D_E), s and e
+// lateral. S sees, through wall point T, the surface point at depth d behind the plane:
+//   P = (t + (d / D_S)(t - s), d).
+// E sees P at the wall point W where the segment E-P crosses z = 0, at the fraction
+// D_E / (D_E + d) of the way:  W = e + (p - e) D_E / (D_E + d). Subtracting t:
+//   W - t = (e - t) d / (D_E + d) + (d / D_S)(t - s) D_E / (D_E + d)
+//         = k(d) [ (e - t) + (D_E / D_S)(t - s) ] = k(d) [ (e - s) + (D_E / D_S - 1)(t - s) ],
+// with k(d) = d / (D_E + d) in [0, 1), increasing in d. For two surfaces seen through the same
+// T at depths d1 < d2 (the two sides of a depth step), |W2 - W1| = (k(d2) - k(d1)) |v(T)|. The
+// wall segment [W1, W2] is at least D_E from E (E's distance to the plane), and a segment of
+// length L at distance >= D_E subtends at most 2 atan(L / (2 D_E)) <= L / D_E. Hence the angle
+// of the exposed interval is at most (k(d2) - k(d1)) |v(T)| / D_E. v is affine in T, so over
+// the wall rectangle |v| is largest at a corner, and k(d2) - k(d1) over an interval inside
+// [d1, d2] is at most k(d2) - k(d1) (k increasing): reprojectionErrorBound.
+// Between texels the reprojection is exact for exact depths (every surface point seen by S is
+// shown by E at its true direction), so only the intervals exposed at steps and the texel's
+// own reprojected size (T is known to half a texel; dW/dT = (1 + k (D_E/D_S - 1)) I, whose
+// norm is at most max(1, D_E / D_S)) remain: depthWallErrorBound.
+
+namespace cavewall::walls {
+
+std::string_view wallKindName(WallKind kind) { return kind == WallKind::Depth ? "depth" : "flat"; }
+
+WallKind parseWallKind(std::string_view text, const std::string& where) {
+    if (text == "flat") return WallKind::Flat;
+    if (text == "depth") return WallKind::Depth;
+    throw Error(where + ": expected a wall kind, flat or depth, got \"" + std::string(text) + "\"");
+}
+
+glm::dvec3 WallFrame::toWall(glm::dvec3 world) const {
+    const glm::dvec3 r = world - origin;
+    return {glm::dot(r, x), glm::dot(r, y), glm::dot(r, behind)};
+}
+
+glm::dvec3 WallFrame::toWorld(glm::dvec3 wall) const { return origin + wall.x * x + wall.y * y + wall.z * behind; }
+
+WallFrame wallFrame(const display::ScreenQuad& quad) {
+    const glm::dvec3 u = quad.lowerRight - quad.lowerLeft, v = quad.upperLeft - quad.lowerLeft;
+    const double w = glm::length(u), h = glm::length(v);
+    const glm::dvec3 n = glm::cross(u, v);
+    if (!(w > 0.0 && h > 0.0 && glm::length(n) > 1e-12 * w * h) || !std::isfinite(w * h))
+        throw Error("depth wall: expected a non-degenerate wall quad, got edges of " + std::to_string(w) + " m and " +
+                    std::to_string(h) + " m");
+    WallFrame f;
+    f.origin = quad.lowerLeft;
+    f.x = u / w;
+    f.y = v / h;
+    f.behind = -glm::normalize(n);  // the front (cross(x, y)) faces the viewer
+    f.width = w, f.height = h;
+    return f;
+}
+
+glm::dvec2 depthRange(const DepthImage& image) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (float d : image.depth)
+        if (std::isfinite(d)) lo = std::min(lo, double(d)), hi = std::max(hi, double(d));
+    return hi < lo ? glm::dvec2(0.0) : glm::dvec2(lo, hi);
+}
+
+float depthFromBuffer(float value, const glm::dmat4& clipFromView, double eyeDistance) {
+    if (!(value > 0.0f)) return kNoSurface;
+    const double viewDistance = clipFromView[3][2] / (double(value) + clipFromView[2][2]);
+    return static_cast<float>(std::max(0.0, viewDistance - eyeDistance));
+}
+
+glm::dvec2 texelCentre(const WallFrame& f, int width, int height, int i, int j) {
+    return {(i + 0.5) * f.width / width, f.height - (j + 0.5) * f.height / height};
+}
+
+namespace {
+
+float fetch(const DepthImage& image, const WallFrame& f, glm::dvec2 t) {
+    const double i = std::floor(t.x / f.width * image.width), j = std::floor((f.height - t.y) / f.height * image.height);
+    if (!(i >= 0 && j >= 0 && i < image.width && j < image.height)) return kNoSurface;
+    return image.at(static_cast<int>(i), static_cast<int>(j));
+}
+
+}  // namespace
+
+ReprojectHit reproject(const DepthImage& image, const WallFrame& f, glm::dvec3 eye, glm::dvec3 sample, glm::dvec2 w,
+                       glm::dvec2 range, const ReprojectSettings& settings) {
+    const double de = -eye.z, ds = -sample.z;
+    const glm::dvec2 a = w, b = glm::dvec2(sample) + ds * (w - glm::dvec2(eye)) / de;
+    auto at = [&](double sigma) { return a + sigma * (b - a); };
+    auto depthAt = [&](double sigma) { return ds * sigma / (1.0 - sigma); };
+    const double s0 = range.x / (ds + range.x), s1 = range.y / (ds + range.y);
+    const double pitch = std::min(f.width / image.width, f.height / image.height);
+    const int steps = std::clamp(static_cast<int>(std::ceil(glm::length(at(s1) - at(s0)) / pitch)), 1,
+                                 std::max(1, settings.maxSteps));
+    // The shader compares in float: a tolerance of 1e-5 of the distance from S keeps the first
+    // sample (s = the nearest depth) a hit on the nearest surface.
+    auto hits = [&](double sigma) {
+        const double s = depthAt(sigma);
+        return s >= double(fetch(image, f, at(sigma))) - 1e-5 * (ds + s);
+    };
+    double lo = s0, hi = -1.0;
+    for (int i = 0; i <= steps; ++i) {
+        const double sigma = s0 + (s1 - s0) * i / steps;
+        if (hits(sigma)) {
+            hi = sigma;
+            break;
+        }
+        lo = sigma;
+    }
+    if (hi < 0.0) return {};
+    for (int r = 0; r < settings.refine && hi > lo; ++r) {
+        const double mid = 0.5 * (lo + hi);
+        (hits(mid) ? hi : lo) = mid;
+    }
+    return {true, at(hi), depthAt(hi), double(fetch(image, f, at(hi)))};
+}
+
+glm::dvec2 parallaxVector(glm::dvec3 eye, glm::dvec3 sample, glm::dvec2 t) {
+    const double de = -eye.z, ds = -sample.z;
+    return (glm::dvec2(eye) - glm::dvec2(sample)) + (de / ds - 1.0) * (t - glm::dvec2(sample));
+}
+
+glm::dvec2 reprojectedPoint(glm::dvec3 eye, glm::dvec3 sample, glm::dvec2 t, double d) {
+    const double k = std::isfinite(d) ? d / (-eye.z + d) : 1.0;
+    return t + k * parallaxVector(eye, sample, t);
+}
+
+double stepAngle(glm::dvec3 eye, glm::dvec3 sample, glm::dvec2 t, double d1, double d2) {
+    const double de = -eye.z;
+    auto k = [&](double d) { return std::isfinite(d) ? d / (de + d) : 1.0; };
+    const double k1 = k(d1), k2 = k(d2);
+    return std::abs(k2 - k1) * glm::length(parallaxVector(eye, sample, t)) / de;
+}
+
+double reprojectionErrorBound(const WallFrame& f, glm::dvec3 eye, glm::dvec3 sample, double d1, double d2) {
+    double v = 0.0;
+    for (glm::dvec2 c : {glm::dvec2(0, 0), glm::dvec2(f.width, 0), glm::dvec2(0, f.height), glm::dvec2(f.width, f.height)})
+        v = std::max(v, glm::length(parallaxVector(eye, sample, c)));
+    const double de = -eye.z;
+    auto k = [&](double d) { return std::isfinite(d) ? d / (de + d) : 1.0; };
+    return std::abs(k(d2) - k(d1)) * v / de;
+}
+
+double borderAngle(const WallFrame& f, glm::dvec3 eye, glm::dvec3 sample) {
+    // Content S saw just outside the edge at lateral t' and depth d' appears to E at
+    // t' + k(d') v(t'), k < 1: at most v . n_in inside the wall (n_in the edge's inward normal).
+    // v is affine, so along an edge the largest is at one of its ends.
+    const glm::dvec2 c[4] = {{0, 0}, {f.width, 0}, {0, f.height}, {f.width, f.height}};
+    struct Edge {
+        int a, b;
+        glm::dvec2 inward;
+    };
+    const Edge edges[4] = {{0, 2, {1, 0}}, {1, 3, {-1, 0}}, {0, 1, {0, 1}}, {2, 3, {0, -1}}};
+    double worst = 0.0;
+    for (const Edge& e : edges)
+        for (int end : {e.a, e.b})
+            worst = std::max(worst, glm::dot(parallaxVector(eye, sample, c[end]), e.inward));
+    return worst / -eye.z;
+}
+
+DepthWallBound depthWallErrorBound(const DepthImage& image, const WallFrame& f, glm::dvec3 eye, glm::dvec3 sample) {
+    DepthWallBound b;
+    b.border = borderAngle(f, eye, sample);
+    for (int j = 0; j < image.height; ++j)
+        for (int i = 0; i < image.width; ++i) {
+            const float d = image.at(i, j);
+            if (!std::isfinite(d)) continue;
+            const glm::dvec2 t = texelCentre(f, image.width, image.height, i, j);
+            for (glm::ivec2 n : {glm::ivec2(i + 1, j), glm::ivec2(i, j + 1), glm::ivec2(i + 1, j + 1), glm::ivec2(i - 1, j + 1)}) {
+                if (n.x < 0 || n.x >= image.width || n.y >= image.height) continue;
+                const float e = image.at(n.x, n.y);
+                if (!std::isfinite(e) || e == d) continue;
+                // The step opens only when the far side moves away from the near one: its
+                // width across the edge is (k(far) - k(near)) max(0, v . n), n the unit vector
+                // from the near texel to the far one; measured at both texels (v varies).
+                const glm::dvec2 u = texelCentre(f, image.width, image.height, n.x, n.y);
+                const bool nearHere = d < e;
+                const glm::dvec2 across = glm::normalize(nearHere ? u - t : t - u);
+                for (glm::dvec2 at : {t, u}) {
+                    const double open = glm::dot(parallaxVector(eye, sample, at), across);
+                    if (open <= 0.0) continue;
+                    const double de = -eye.z, k1 = std::min(d, e) / (de + std::min(d, e)),
+                                 k2 = std::max(d, e) / (de + std::max(d, e));
+                    b.steps = std::max(b.steps, (k2 - k1) * open / de);
+                }
+            }
+        }
+    const double de = -eye.z, ds = -sample.z;
+    b.texel = 0.5 * std::hypot(f.width / image.width, f.height / image.height) * std::max(1.0, de / ds) / de;
+    return b;
+}
+
+}  // namespace cavewall::walls

@@ -1,0 +1,160 @@
+#pragma once
+// Depth walls (issue 16): a wall texture that also stores, per texel, how far behind the wall
+// plane the surface seen through that texel lies, so that it can be reprojected to any eye.
+// GL-free: the wall frame, the depth encoding, the reference reprojection (the algorithm the
+// depth wall pass runs per pixel, walls/gl/depth_wall_pass.h) and its error bound.
+//
+// Wall frame. For a wall quad as seen from the texture's side (bake_key.h quadSeenFrom):
+// origin lowerLeft, x along lowerLeft -> lowerRight, y along lowerLeft -> upperLeft (metres),
+// z the distance *behind* the plane (away from the side the texture is seen from). An eye in
+// front has z < 0; its distance to the plane is D = -z.
+//
+// Depth encoding. Texel (i, j) (rows top to bottom, as the colour) stores d = the distance
+// behind the wall plane, along the normal, of the surface the sampling point S sees through
+// the texel centre, as a 32-bit float in metres; +infinity where nothing was drawn (alpha 0).
+// The surface point is P = T + (d / D_S) (T - S) for T the texel centre on the wall. It comes
+// from the bake's reversed-Z float depth buffer (depthFromBuffer), whose relative precision is
+// 2^-24 of the view distance: |error of d| <= 1.2e-7 (D_S + d), 12 um at 100 m, far below a
+// texel; storing d as float adds 6e-8 d. Precision is not the limit; texel spacing is.
+//
+// Reprojection (reproject). An eye E sees the wall point W along the ray
+//   Q(s) = W + s (W - E_xy) / D_E      (lateral position at depth s behind the plane).
+// S sees Q(s) through the wall point T(s) = S_xy + (Q(s) - S_xy) D_S / (D_S + s), which is
+// linear in sigma = s / (D_S + s):  T = (1 - sigma) W + sigma (S_xy + D_S (W - E_xy) / D_E)
+// (sigma in [0, 1) for s in [0, inf)). The ray hits the stored surface at the first s with
+// s >= d(T(s)). Marching uniformly in sigma therefore moves uniformly across the texture: one
+// step per texel crossed finds every surface at least one texel wide (relief-impostor style
+// linear search), then a binary refinement places the hit within 1/2^refine of a step.
+//
+// Error bound (reprojectionErrorBound, proof in depth_wall.cpp). Where the depth field is
+// exact and continuous the reprojected image is the geometry's image up to texel sampling.
+// Errors come from (a) disocclusion: surfaces E sees that S did not, and (b) sampling. For a
+// texel T whose neighbours differ in depth from d1 to d2, the surface points on both sides of
+// the step (P1, P2, both seen from S through T) are seen from E at wall points W1, W2 with
+//   W_i - T = k(d_i) v(T),   k(d) = d / (D_E + d),
+//   v(T) = (E_xy - S_xy) + (D_E / D_S - 1) (T - S_xy)     (the parallax vector at T),
+// so the wall interval between them, |W1 - W2| = |k(d2) - k(d1)| |v(T)|, shows something S
+// never saw: its angle at E is at most |k(d2) - k(d1)| |v(T)| / D_E. With exact depths this is
+// the whole error of a step; a continuous surface sampled at texel pitch h has steps too, so
+// the same formula with the largest adjacent-texel step bounds (a) and (b) together, plus the
+// reprojected texel's own size (h (1 + k |D_E/D_S - 1|) / D_E, half a texel either side).
+
+#include "display/off_axis.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace cavewall::walls {
+
+// The kind of texture a virtual wall is baked and drawn as (`--walls flat|depth`).
+enum class WallKind : std::uint8_t { Flat, Depth };
+std::string_view wallKindName(WallKind kind);
+// The words `--walls` accepts, in the order its help lists them.
+inline constexpr std::array<std::pair<std::string_view, WallKind>, 2> kWallKindNames{{
+    {"flat", WallKind::Flat}, {"depth", WallKind::Depth}}};
+// Throws cavewall::Error naming `where`, expected "flat" or "depth", for anything else.
+WallKind parseWallKind(std::string_view text, const std::string& where);
+
+inline constexpr float kNoSurface = std::numeric_limits<float>::infinity();
+
+struct WallFrame {
+    glm::dvec3 origin{0.0};            // lowerLeft
+    glm::dvec3 x{1, 0, 0}, y{0, 1, 0}; // unit axes along the quad's edges
+    glm::dvec3 behind{0, 0, -1};       // unit normal pointing behind the plane
+    double width = 0.0, height = 0.0;  // metres
+
+    // World -> wall frame (x, y lateral in metres, z metres behind the plane) and back.
+    glm::dvec3 toWall(glm::dvec3 world) const;
+    glm::dvec3 toWorld(glm::dvec3 wall) const;
+};
+
+// The frame of `quad` (front side facing the viewer; conventions.h). Throws Error for a
+// degenerate quad.
+WallFrame wallFrame(const display::ScreenQuad& quad);
+
+// Per-texel depth behind the wall plane (metres; kNoSurface where nothing), rows top to bottom.
+struct DepthImage {
+    int width = 0, height = 0;
+    std::vector<float> depth;
+    float at(int i, int j) const { return depth[static_cast<std::size_t>(j) * width + i]; }
+};
+
+// The smallest and largest finite depth (both 0 when there is none).
+glm::dvec2 depthRange(const DepthImage& image);
+
+// Converts a reversed-Z depth-buffer value of a frustum whose screen is the wall (clipFromView
+// of display::offAxisFrustum: z_view = -P[3][2] / (depth + P[2][2])) into the distance behind
+// the wall; eyeDistance is the frustum's. Buffer value 0 (cleared, nothing drawn) -> kNoSurface.
+float depthFromBuffer(float bufferValue, const glm::dmat4& clipFromView, double eyeDistance);
+
+// The wall-frame centre of texel (i, j) of a width x height texture of `frame`.
+glm::dvec2 texelCentre(const WallFrame& frame, int width, int height, int i, int j);
+
+struct ReprojectSettings {
+    int maxSteps = 64;  // linear steps at most (the pass's uniform); fewer when fewer texels are crossed
+    int refine = 6;     // binary refinement steps
+};
+
+struct ReprojectHit {
+    bool hit = false;
+    glm::dvec2 texture{0.0};  // wall-frame point T of the texture seen (metres)
+    double depth = 0.0;       // s at the hit, metres behind the plane (on the eye's ray)
+    double surface = 0.0;     // the stored depth of the texel hit: S saw the point
+                              // T + (surface / D_S)(T - S), whose colour the pixel shows
+};
+
+// The reference reprojection of one pixel: eye E and sampling point S in the wall frame (z < 0),
+// W the wall point (x, y) of the pixel. Exactly the shader's algorithm, in double.
+ReprojectHit reproject(const DepthImage& image, const WallFrame& frame, glm::dvec3 eye, glm::dvec3 samplingPoint,
+                       glm::dvec2 wallPoint, glm::dvec2 range, const ReprojectSettings& settings = {});
+
+// The parallax vector v(T) above (wall frame; eye and sampling point with z < 0).
+glm::dvec2 parallaxVector(glm::dvec3 eye, glm::dvec3 samplingPoint, glm::dvec2 wallPoint);
+
+// Where E sees the surface point that S saw through T at depth d: W = T + k(d) v(T).
+glm::dvec2 reprojectedPoint(glm::dvec3 eye, glm::dvec3 samplingPoint, glm::dvec2 wallPoint, double depth);
+
+// The angle at E of the wall interval exposed by a depth step d1 -> d2 at T (the disocclusion
+// width): |k(d2) - k(d1)| |v(T)| / D_E, an upper bound of the exact angle.
+double stepAngle(glm::dvec3 eye, glm::dvec3 samplingPoint, glm::dvec2 wallPoint, double d1, double d2);
+
+// The bound of the error of reprojecting a wall from eye E with content between depths
+// [d1, d2] behind the plane, for any texel of the wall (v(T) is affine in T, so |v| is largest
+// at a corner): (k(d2) - k(d1)) max|v| / D_E. With d1 = 0 and d2 the content's far depth it is
+// the flat wall's error scale; with the largest depth step it is the depth wall's.
+double reprojectionErrorBound(const WallFrame& frame, glm::dvec3 eye, glm::dvec3 samplingPoint, double d1,
+                              double d2);
+
+// The depth wall's bound for one baked depth image, in parts (radians):
+//  - steps: over every pair of adjacent texels with finite depths d1 < d2, the angle of the
+//    interval the step opens across its edge, (k(d2) - k(d1)) max(0, v . n) / D_E with n the
+//    unit vector from the d1 texel to the d2 one (the far side moves by k(d2) v, the near by
+//    k(d1) v: the gap opens only when v points from near to far; stepAngle is the same without
+//    the direction, an upper bound of it); v at both texels; the largest (a
+//    step to or from kNoSurface is no disocclusion: nothing is behind either side, and the
+//    march never hits an empty texel, so a silhouette against emptiness reprojects exactly);
+//  - border: what E sees through the wall near its edges that S saw outside the wall
+//    (borderAngle: content beyond the edge may lie at any depth, so k < 1 and the band is at
+//    most v . n_in wide, n_in the edge's inward normal); it does not depend on the depths;
+//  - texel: the reprojected texel's own size, 0.5 h max(1, D_E / D_S) / D_E, h the texel diagonal.
+// The angle of the widest band along the wall's edges where E may see content S saw outside
+// the wall: max over the edges' ends of max(0, v . n_in) / D_E.
+double borderAngle(const WallFrame& frame, glm::dvec3 eye, glm::dvec3 samplingPoint);
+
+struct DepthWallBound {
+    double steps = 0.0, border = 0.0, texel = 0.0;
+    double interior() const { return steps + texel; }      // away from the wall's edges
+    double total() const { return std::max(steps, border) + texel; }
+};
+DepthWallBound depthWallErrorBound(const DepthImage& image, const WallFrame& frame, glm::dvec3 eye,
+                                   glm::dvec3 samplingPoint);
+
+}  // namespace cavewall::walls

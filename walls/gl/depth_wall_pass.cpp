@@ -1,0 +1,198 @@
+#include "walls/gl/depth_wall_pass.h"
+
+#include "config/error.h"
+#include "display/gl/shader.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <string>
+
+namespace cavewall::gl {
+
+namespace {
+
+constexpr const char* kName = "depth walls";
+
+constexpr const char* kVertex = R"(#version 450 core
+uniform vec3 uCorners[4];    // lowerLeft, lowerRight, upperLeft, upperRight in the eye-relative view frame
+uniform mat4 uProjection;
+uniform vec2 uSize;          // wall width, height (metres)
+out vec2 vUv;
+out vec2 vWall;              // wall frame (metres from lowerLeft)
+const vec2 kUv[4] = vec2[4](vec2(0.0, 1.0), vec2(1.0, 1.0), vec2(0.0, 0.0), vec2(1.0, 0.0));
+void main() {
+    vUv = kUv[gl_VertexID];
+    vWall = vec2(vUv.x, 1.0 - vUv.y) * uSize;
+    gl_Position = uProjection * vec4(uCorners[gl_VertexID], 1.0);
+}
+)";
+
+// walls::reproject in float (walls/depth_wall.cpp): keep the two in step.
+constexpr const char* kMarch = R"(
+in vec2 vUv;
+in vec2 vWall;
+uniform vec3 uEye;           // wall frame: x, y, distance in front of the plane
+uniform vec2 uSize;
+uniform vec4 uWeights;
+uniform vec3 uSample[4];     // per layer: x, y, distance in front of the plane
+uniform vec2 uRange[4];      // per layer: nearest and farthest baked depth
+uniform int uMaxSteps;
+uniform int uRefine;
+uniform vec2 uDepthCoeffs;   // clipFromView[2][2], [3][2]: reversed-Z window depth of a view-space z
+out vec4 fragColor;          // premultiplied, linear
+
+// The window depth of the point s metres behind the wall on this fragment's ray: the ray's
+// view-space z scales by (D_E + s) / D_E from the quad's.
+float hitDepth(float s) {
+    float zq = -uDepthCoeffs.y / (gl_FragCoord.z + uDepthCoeffs.x);
+    float zh = zq * (uEye.z + s) / uEye.z;
+    return (uDepthCoeffs.x * zh + uDepthCoeffs.y) / (-zh);
+}
+
+float depthAt(sampler2D depth, ivec2 size, vec2 t) {
+    ivec2 i = ivec2(floor(vec2(t.x / uSize.x, 1.0 - t.y / uSize.y) * vec2(size)));
+    if (any(lessThan(i, ivec2(0))) || any(greaterThanEqual(i, size))) return uintBitsToFloat(0x7F800000u);
+    return texelFetch(depth, i, 0).r;
+}
+
+vec4 march(sampler2D colour, sampler2D depth, vec3 S, vec2 range, vec2 gx, vec2 gy, inout float nearest) {
+    ivec2 size = textureSize(depth, 0);
+    vec2 a = vWall;
+    vec2 b = S.xy + S.z * (vWall - uEye.xy) / uEye.z;
+    float s0 = range.x / (S.z + range.x), s1 = range.y / (S.z + range.y);
+    float pitch = min(uSize.x / float(size.x), uSize.y / float(size.y));
+    int steps = clamp(int(ceil(length(b - a) * (s1 - s0) / pitch)), 1, uMaxSteps);
+    float lo = s0, hi = -1.0;
+    for (int i = 0; i <= steps; ++i) {
+        float sg = s0 + (s1 - s0) * float(i) / float(steps);
+        float s = S.z * sg / (1.0 - sg);
+        if (s >= depthAt(depth, size, mix(a, b, sg)) - 1e-5 * (S.z + s)) { hi = sg; break; }
+        lo = sg;
+    }
+    if (hi < 0.0) return vec4(0.0);
+    for (int r = 0; r < uRefine && hi > lo; ++r) {
+        float mid = 0.5 * (lo + hi);
+        float s = S.z * mid / (1.0 - mid);
+        if (s >= depthAt(depth, size, mix(a, b, mid)) - 1e-5 * (S.z + s)) hi = mid; else lo = mid;
+    }
+    vec2 t = mix(a, b, hi);
+    nearest = min(nearest, S.z * hi / (1.0 - hi));
+    return textureGrad(colour, vec2(t.x / uSize.x, 1.0 - t.y / uSize.y), gx, gy);
+}
+)";
+
+std::string fragmentSource(int layers) {
+    std::string s = "#version 450 core\n";
+    for (int i = 0; i < layers; ++i)
+        s += "layout(binding = " + std::to_string(2 * i) + ") uniform sampler2D uColour" + std::to_string(i) +
+             ";\nlayout(binding = " + std::to_string(2 * i + 1) + ") uniform sampler2D uDepth" + std::to_string(i) + ";\n";
+    s += kMarch;
+    s += "void main() {\n    vec2 gx = dFdx(vUv), gy = dFdy(vUv);\n    float nearest = 1e30;\n    vec4 c = vec4(0.0)";
+    for (int i = 0; i < layers; ++i) {
+        const std::string n = std::to_string(i);
+        s += "\n        + uWeights[" + n + "] * march(uColour" + n + ", uDepth" + n + ", uSample[" + n + "], uRange[" + n +
+             "], gx, gy, nearest)";
+    }
+    // No layer hit: nothing behind the wall here. Else the nearest hit's depth is tested
+    // against the geometry drawn before.
+    return s + ";\n    if (nearest > 1e29) discard;\n    fragColor = c;\n    gl_FragDepth = hitDepth(nearest);\n}\n";
+}
+
+}  // namespace
+
+gl::GlObject uploadDepthTexture(const walls::DepthImage& image) {
+    if (image.width <= 0 || image.height <= 0 || image.depth.size() != std::size_t(image.width) * image.height)
+        throw Error("depth texture: expected width x height depths, got " + std::to_string(image.depth.size()) +
+                    " for " + std::to_string(image.width) + " x " + std::to_string(image.height));
+    gl::GlObject t = gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(t.id(), 1, GL_R32F, image.width, image.height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    glTextureSubImage2D(t.id(), 0, 0, 0, image.width, image.height, GL_RED, GL_FLOAT, image.depth.data());
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return t;
+}
+
+DepthWallPass::DepthWallPass(walls::ReprojectSettings settings) : _settings(settings), _vertexArray(createVertexArray()) {
+    if (settings.maxSteps < 1 || settings.maxSteps > 1024)
+        throw Error("depth wall pass: maxSteps: expected [1, 1024], got " + std::to_string(settings.maxSteps));
+    if (settings.refine < 0 || settings.refine > 16)
+        throw Error("depth wall pass: refine: expected [0, 16], got " + std::to_string(settings.refine));
+    for (int n = 1; n <= walls::kMaxWallTextures; ++n) {
+        Program& p = _programs[n - 1];
+        p.program = buildProgram(kName, kVertex, fragmentSource(n));
+        const GLuint id = p.program.id();
+        p.corners = uniformLocation(id, kName, "uCorners");
+        p.projection = uniformLocation(id, kName, "uProjection");
+        p.weights = uniformLocation(id, kName, "uWeights");
+        p.eye = uniformLocation(id, kName, "uEye");
+        p.size = uniformLocation(id, kName, "uSize");
+        p.samples = uniformLocation(id, kName, "uSample");
+        p.ranges = uniformLocation(id, kName, "uRange");
+        p.maxSteps = uniformLocation(id, kName, "uMaxSteps");
+        p.refine = uniformLocation(id, kName, "uRefine");
+        p.depthCoeffs = uniformLocation(id, kName, "uDepthCoeffs");
+    }
+}
+
+void DepthWallPass::draw(const std::vector<DepthWallDraw>& walls, const display::OffAxisFrustum& frustum,
+                         const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const {
+    if (walls.empty()) return;
+    glBindVertexArray(_vertexArray.id());
+    const glm::mat4 projection(frustum.clipFromView);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    const glm::dmat4 viewFromWorld = frustum.viewFromFrame * caveFromWorld;
+    const glm::dvec3 eyeWorld = glm::dvec3(glm::inverse(caveFromWorld) * glm::dvec4(frustum.eye, 1.0));
+    for (const DepthWallDraw& w : walls) {
+        const glm::dvec3 corners[4] = {w.quad.lowerLeft, w.quad.lowerRight, w.quad.upperLeft,
+                                       w.quad.lowerRight + w.quad.upperLeft - w.quad.lowerLeft};
+        glm::vec3 view[4];
+        for (int i = 0; i < 4; ++i) view[i] = glm::vec3(viewFromWorld * glm::dvec4(corners[i], 1.0));
+        const walls::WallFrame frame = walls::wallFrame(w.quad);
+        const glm::dvec3 eye = frame.toWall(eyeWorld);
+        if (!(eye.z < 0.0)) continue;  // the eye is behind (or on) the wall: this side is not seen
+        glm::vec4 weights(0.0f);
+        glm::vec3 samples[walls::kMaxWallTextures];
+        glm::vec2 ranges[walls::kMaxWallTextures];
+        int used = 0;
+        for (int i = 0; i < w.count && i < walls::kMaxWallTextures; ++i) {
+            const DepthWallLayer& l = w.layers[i];
+            if (l.colour == 0 || l.depth == 0) continue;
+            const glm::dvec3 s = frame.toWall(l.samplingPoint);
+            weights[used] = l.weight;
+            samples[used] = glm::vec3(s.x, s.y, -s.z);
+            ranges[used] = glm::vec2(l.range);
+            glBindTextureUnit(2 * used, l.colour);
+            glBindSampler(2 * used, sampler);
+            glBindTextureUnit(2 * used + 1, l.depth);
+            glBindSampler(2 * used + 1, 0);
+            ++used;
+        }
+        if (used == 0) continue;
+        const Program& p = _programs[used - 1];
+        glUseProgram(p.program.id());
+        glUniformMatrix4fv(p.projection, 1, GL_FALSE, glm::value_ptr(projection));
+        glUniform3fv(p.corners, 4, glm::value_ptr(view[0]));
+        glUniform4fv(p.weights, 1, glm::value_ptr(weights));
+        glUniform3f(p.eye, float(eye.x), float(eye.y), float(-eye.z));
+        glUniform2f(p.size, float(frame.width), float(frame.height));
+        glUniform3fv(p.samples, used, glm::value_ptr(samples[0]));
+        glUniform2fv(p.ranges, used, glm::value_ptr(ranges[0]));
+        glUniform1i(p.maxSteps, _settings.maxSteps);
+        glUniform1i(p.refine, _settings.refine);
+        glUniform2f(p.depthCoeffs, float(frustum.clipFromView[2][2]), float(frustum.clipFromView[3][2]));
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        ++stats.drawCalls;
+        stats.triangles += 2;
+    }
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+}
+
+}  // namespace cavewall::gl

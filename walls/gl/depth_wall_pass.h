@@ -1,0 +1,86 @@
+#pragma once
+// The depth wall pass (issue 16): each virtual wall drawn as one quad whose every pixel
+// reprojects its baked textures, colour + per-texel depth (walls/depth_wall.h), to the current
+// eye instead of showing them flat.
+//
+// Method: per pixel, a relief-impostor style search of the ray from the eye through the wall
+// pixel behind the plane, in the texture's own parametrisation: the ray's image in the texture
+// (seen from the sampling point) is a straight line, linear in sigma = s / (D_S + s) (s the
+// depth behind the plane), so uniform steps in sigma between the baked depth range's ends are
+// uniform steps across the texture. Steps = texels crossed, capped at maxSteps (64), then
+// `refine` (6) bisection steps; colour is sampled at the hit with the flat quad's gradients
+// (the MIP level the flat wall would use, without seams at depth steps). walls::reproject is
+// the same algorithm in double and is what the unit tests check against analytic truth.
+//
+// Why this method rather than a displaced grid mesh (textured depth meshes): it needs no mesh
+// per texture (a depth texture of the same size as the colour, paged the same way), it has no
+// skins to cut (the march never hits an empty texel, and disocclusions show a bounded stretch of
+// the step's near side, which walls::depthWallErrorBound predicts), and its cost is per pixel,
+// bounded by maxSteps, not per texel. Measured cost (bench/wall_pass_bench.cpp, one
+// full-screen layer at 1024 x 1024 pixels, 512^2 textures, llvmpipe on 2 shared cores, load
+// ~10, ms per layer over the clear, 1- and 4-layer runs; their spread, ~20 %, is the noise):
+// depth 157-191 ms (~150-180 ns per pixel; 16 steps at most: 157-159 ms, so the step cap is
+// not the main cost), two blended depth textures 326-342 ms, against a flat layer's 15-18 ms
+// and two blended flat textures' 29 ms: about 10x a flat wall on llvmpipe, far over issue
+// 16's 1.3x. The displaced-grid-mesh alternative (fill like a flat wall, cost per vertex) is
+// the next thing to measure on this fill-bound rasteriser; not done.
+//
+// Blending and state as gl::WallPass (premultiplied weighted sum of up to kMaxWallTextures
+// layers; reversed-Z GL_GREATER against the geometry, no depth writes), except that the depth
+// tested is the nearest reprojected surface's (gl_FragDepth), not the quad's: geometry drawn
+// before that lies behind the wall plane but in front of the baked content (structure, which
+// is never baked: a far room's walls) hides it as in the full model, which a flat wall cannot
+// do. Pixels where no layer hits are discarded.
+
+#include "display/gl/gl_object.h"
+#include "display/gl/scene_renderer.h"
+#include "display/off_axis.h"
+#include "walls/depth_wall.h"
+#include "walls/frame_planner.h"
+
+#include <array>
+#include <vector>
+
+namespace cavewall::gl {
+
+// One baked texture of a depth wall: colour (uploadWallTexture) and depth (uploadDepthTexture).
+struct DepthWallLayer {
+    GLuint colour = 0, depth = 0;   // 0: not there (left out, like WallPass)
+    glm::dvec3 samplingPoint{0.0};  // world
+    glm::dvec2 range{0.0};          // walls::depthRange of the depth image, metres
+    float weight = 0.0f;
+};
+
+struct DepthWallDraw {
+    display::ScreenQuad quad;  // world, as seen from the textures' side
+    std::array<DepthWallLayer, walls::kMaxWallTextures> layers{};
+    int count = 0;
+};
+
+// One GL_R32F level holding walls::DepthImage (rows top to bottom, like the colour: row 0 is the
+// wall's upper edge); read with texelFetch. Needs a current context.
+gl::GlObject uploadDepthTexture(const walls::DepthImage& image);
+
+class DepthWallPass {
+public:
+    // Throws Error when the shaders do not build or the settings are out of range
+    // (maxSteps [1, 1024], refine [0, 16]).
+    explicit DepthWallPass(walls::ReprojectSettings settings = {});
+
+    // As WallPass::draw: into the bound framebuffer for one view; `frustum` in the cave frame,
+    // caveFromWorld places the world; `sampler` filters the colour (0: the texture's own).
+    void draw(const std::vector<DepthWallDraw>& walls, const display::OffAxisFrustum& frustum,
+              const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const;
+
+private:
+    struct Program {
+        GlObject program;
+        GLint corners = -1, projection = -1, weights = -1, eye = -1, size = -1, samples = -1, ranges = -1,
+              maxSteps = -1, refine = -1, depthCoeffs = -1;
+    };
+    walls::ReprojectSettings _settings;
+    std::array<Program, walls::kMaxWallTextures> _programs;  // [n - 1] marches n layers
+    GlObject _vertexArray;
+};
+
+}  // namespace cavewall::gl
