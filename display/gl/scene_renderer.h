@@ -20,8 +20,8 @@
 //
 // Draw path: all geometry sits in GpuScene's shared buffers. Per view every draw of the list
 // gets one per-draw record (eye-relative model-view and normal matrix, composed in double and
-// rounded to float for this view; material index) in a storage buffer, and one indirect
-// command whose baseInstance names the record (scene_shaders.h). Each batch of the list is one
+// rounded to float for this view; its mesh's material), read by the vertex shader as instanced
+// attributes, and one indirect command whose baseInstance names the record (scene_shaders.h). Each batch of the list is one
 // glMultiDrawElementsIndirect; the blended batches are drawn last with blending on.
 // ViewStats::drawCalls counts these multi-draw calls.
 //
@@ -167,10 +167,9 @@ private:
     RenderSettings _settings;
     render::RenderScene _scene;
     render::ListBuilder _lists;
-    std::vector<int> _objectMaterials;        // per object: material record index (its mesh's)
+    std::vector<shaders::MaterialRecord> _meshMaterials;  // per mesh
     GpuScene _gpu;
     std::array<Program, 2> _programs;         // [0]: no discard; [1]: alpha test (MASK batches)
-    GlObject _materialRecords;
     GpuTimer _timer;
     std::array<ViewBuffers, kViewBufferSets> _viewBuffers;
     int _nextViewBuffers = 0;
