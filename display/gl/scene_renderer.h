@@ -115,8 +115,8 @@ public:
     // the view's viewport, scissor (enabled) and colour mask, clears depth within the viewport,
     // draws, and leaves viewport, scissor and colour mask set, depth writes on, blending off and
     // no sampler bound to unit 0, so later passes can draw into the same view. Program, vertex
-    // array (its binding 1 holding this view's draw records) and indirect buffer bindings are left as
-    // the renderer set them.
+    // array (its binding 1 holding this view's draw records) and indirect buffer bindings are
+    // left as the renderer set them.
     // ViewStats::cpuMs is the drawing only; cullMs is the list's.
     ViewStats renderView(const display::ScreenView& view, const render::RenderList& list);
     // The same, building the list first with lists() (cpuMs includes building it).
