@@ -21,9 +21,9 @@
 // Draw path: all geometry sits in GpuScene's shared buffers. Per view every draw of the list
 // gets one per-draw record (eye-relative model-view and normal matrix, composed in double and
 // rounded to float for this view; its mesh's material), read by the vertex shader as instanced
-// attributes, and one indirect command whose baseInstance names the record (scene_shaders.h). Each batch of the list is one
-// glMultiDrawElementsIndirect; the blended batches are drawn last with blending on.
-// ViewStats::drawCalls counts these multi-draw calls.
+// attributes, and one indirect command whose baseInstance names the record (scene_shaders.h).
+// Each batch of the list is one glMultiDrawElementsIndirect; the blended batches are drawn last
+// with blending on. ViewStats::drawCalls counts these multi-draw calls.
 //
 // Shading, in linear light: baseColorFactor × vertex colour × base-colour texture (sRGB,
 // sampled at the material's texture transform of its texCoord set), lit by a headlight at the

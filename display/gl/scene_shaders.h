@@ -22,7 +22,8 @@ namespace cavewall::gl::shaders {
 struct MaterialRecord {
     glm::vec4 baseColor{1.0f};        // linear RGBA
     glm::vec4 uvRows[2]{};            // rows 0 and 1 of the KHR_texture_transform 3x3 (xyz)
-    glm::vec4 params{0.0f};           // x: alpha mode (0 opaque, 1 mask, 2 blend), y: textured (0/1), z: alpha cutoff
+    glm::vec4 params{0.0f};           // x: alpha mode (0 opaque, 1 mask, 2 blend), y: textured
+                                      // (0/1), z: alpha cutoff
 };
 static_assert(sizeof(MaterialRecord) == 64);
 
