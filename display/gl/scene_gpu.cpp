@@ -66,13 +66,8 @@ Decode appendVertices(const scenes::Mesh& m, int texCoordSet, std::vector<GpuVer
     return d;
 }
 
-void describeVertexArray(GLuint vao, GLuint vertices, GLuint indices, GLuint drawIndices) {
+void describeVertexArray(GLuint vao, GLuint vertices, GLuint indices) {
     glVertexArrayVertexBuffer(vao, 0, vertices, 0, sizeof(GpuVertex));
-    glVertexArrayVertexBuffer(vao, 1, drawIndices, 0, sizeof(std::uint32_t));
-    glVertexArrayBindingDivisor(vao, 1, 1);
-    glEnableVertexArrayAttrib(vao, 5);
-    glVertexArrayAttribIFormat(vao, 5, 1, GL_UNSIGNED_INT, 0);
-    glVertexArrayAttribBinding(vao, 5, 1);
     glVertexArrayElementBuffer(vao, indices);
     struct Attribute { GLuint location; GLint size; GLenum type; std::size_t offset; };
     const Attribute attributes[] = {
@@ -119,8 +114,7 @@ GLint wrapMode(int w) {
 }  // namespace
 
 GpuScene::GpuScene(const scenes::Scene& scene, const std::vector<scenes::MeshLod>* lods)
-    : _vertices(createBuffer()), _indices(createBuffer()), _drawIndices(createBuffer()),
-      _vertexArray(createVertexArray()) {
+    : _vertices(createBuffer()), _indices(createBuffer()), _vertexArray(createVertexArray()) {
     std::vector<GpuVertex> vertices;
     std::vector<std::uint32_t> indices;
     for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
@@ -146,10 +140,7 @@ GpuScene::GpuScene(const scenes::Scene& scene, const std::vector<scenes::MeshLod
     // Zero-sized storage is an error in GL; an empty scene still gets valid (tiny) buffers.
     glNamedBufferStorage(_vertices.id(), std::max<std::size_t>(_vertexBytes, 1), vertices.data(), 0);
     glNamedBufferStorage(_indices.id(), std::max<std::size_t>(_indexBytes, 1), indices.data(), 0);
-    std::vector<std::uint32_t> sequence(std::max<std::size_t>(scene.objects.size(), 1));
-    for (std::size_t i = 0; i < sequence.size(); ++i) sequence[i] = static_cast<std::uint32_t>(i);
-    glNamedBufferStorage(_drawIndices.id(), sequence.size() * sizeof(std::uint32_t), sequence.data(), 0);
-    describeVertexArray(_vertexArray.id(), _vertices.id(), _indices.id(), _drawIndices.id());
+    describeVertexArray(_vertexArray.id(), _vertices.id(), _indices.id());
     for (const scenes::Image& image : scene.images) _textures.push_back(uploadTexture(image));
     for (int i = 0; i < 9; ++i) {
         _samplers[i] = createSampler();

@@ -5,9 +5,8 @@
 // is drawn with a few glMultiDrawElementsIndirect calls (scene_renderer.h).
 //
 // Vertex array: attributes 0 (position), 1 (normal), 2 (texture coordinates) and 4 (colour)
-// from binding 0 (GpuVertex); attribute 5 (uint) from binding 1, instanced (divisor 1), reads
-// the identity sequence 0 .. objectCount - 1, so a draw's baseInstance arrives in the shader as
-// the index of its per-draw record.
+// from binding 0 (GpuVertex). Binding 1 and attributes 5 and up are left to the scene renderer,
+// which feeds its per-draw records through them (scene_shaders.h).
 //
 // Compact vertices (24 bytes, 56 before): positions are 16-bit unsigned normalised within the
 // mesh's bounding box and normals 10-bit signed normalised; a shader gets them through
@@ -81,7 +80,7 @@ private:
         glm::mat3 uvFromStored{1.0f};
     };
 
-    GlObject _vertices, _indices, _drawIndices, _vertexArray;
+    GlObject _vertices, _indices, _vertexArray;
     std::vector<Decode> _decode;                      // per mesh
     std::vector<std::vector<GpuMeshRange>> _meshes;  // per mesh, its levels (finest first)
     std::vector<GlObject> _textures;

@@ -5,6 +5,7 @@
 #include "display/gl/view_loop.h"
 #include "render/lod_choice.h"
 
+#include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -37,9 +38,9 @@ shaders::MaterialRecord materialRecord(const scenes::Material& m, int textureCou
     const scenes::TextureRef& t = m.baseColorTexture;
     r.baseColor = m.baseColorFactor;
     const glm::mat3 uv = t.transform * uvFromStored;
-    for (int c = 0; c < 3; ++c) r.uvTransform[c] = glm::vec4(uv[c], 0.0f);
-    r.flags = {0, alphaModeIndex(m.alphaMode), t.image >= 0 && t.image < textureCount, 0};
-    r.params.x = m.alphaCutoff;
+    for (int row = 0; row < 2; ++row) r.uvRows[row] = glm::vec4(glm::row(uv, row), 0.0f);
+    const bool textured = t.image >= 0 && t.image < textureCount;
+    r.params = {static_cast<float>(alphaModeIndex(m.alphaMode)), textured ? 1.0f : 0.0f, m.alphaCutoff, 0.0f};
     return r;
 }
 
@@ -77,15 +78,20 @@ SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings
     }
     // One material record per mesh: its material (or the default one), with the mesh's own
     // texture-coordinate decoding folded into the texture transform.
-    std::vector<shaders::MaterialRecord> materials;
     const int count = static_cast<int>(scene.materials.size());
     for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
         const int material = scene.meshes[i].material;
         const scenes::Material& m = material >= 0 && material < count ? scene.materials[material] : scenes::Material{};
-        materials.push_back(materialRecord(m, _gpu.textureCount(), _gpu.uvFromStored(static_cast<int>(i))));
+        _meshMaterials.push_back(materialRecord(m, _gpu.textureCount(), _gpu.uvFromStored(static_cast<int>(i))));
     }
-    _materialRecords = storageBuffer(materials.size() * sizeof(shaders::MaterialRecord), materials.data());
-    for (const scenes::Object& o : scene.objects) _objectMaterials.push_back(o.mesh);
+    // Per-draw records arrive as instanced attributes from binding 1 (its buffer is set per view).
+    const GLuint vao = _gpu.vertexArray();
+    glVertexArrayBindingDivisor(vao, 1, 1);
+    for (const shaders::DrawAttribute& a : shaders::kDrawAttributes) {
+        glEnableVertexArrayAttrib(vao, a.location);
+        glVertexArrayAttribFormat(vao, a.location, a.components, GL_FLOAT, GL_FALSE, static_cast<GLuint>(a.offset));
+        glVertexArrayAttribBinding(vao, a.location, 1);
+    }
 }
 
 FrameStats SceneRenderer::render(const std::vector<display::ScreenView>& views, const RenderTargets& targets,
@@ -123,7 +129,6 @@ void SceneRenderer::applyFrameState() {
     glClearDepth(0.0);
     glUseProgram(_programs[0].program.id());
     glBindVertexArray(_gpu.vertexArray());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, _materialRecords.id());
     for (const Program& p : _programs) glProgramUniform1f(p.program.id(), p.ambient, _settings.ambient);
 }
 
@@ -196,10 +201,11 @@ ViewStats SceneRenderer::draw(const render::RenderList& list) {
         const glm::dmat4 frameFromModel = list.frameFromWorld * o.worldFromModel;
         shaders::DrawRecord r;
         // Stored positions decode into the model frame; normals need no decoding.
-        r.modelView = display::eyeRelativeModelView(frustum, frameFromModel * _gpu.modelFromStored(o.mesh));
+        const glm::mat4 modelView = display::eyeRelativeModelView(frustum, frameFromModel * _gpu.modelFromStored(o.mesh));
+        for (int row = 0; row < 3; ++row) r.modelViewRows[row] = glm::row(modelView, row);
         const glm::dmat3 normal = glm::transpose(glm::inverse(glm::dmat3(frustum.viewFromFrame * frameFromModel)));
         for (int c = 0; c < 3; ++c) r.normalMatrix[c] = glm::vec4(glm::vec3(normal[c]), 0.0f);
-        r.info.x = _objectMaterials[d.object];
+        r.material = _meshMaterials[o.mesh];
         const GpuMeshRange& range = _gpu.mesh(o.mesh, d.level);
         _commands.push_back({range.indexCount, 1, range.firstIndex, range.baseVertex,
                              static_cast<std::uint32_t>(_records.size())});
@@ -250,7 +256,7 @@ void SceneRenderer::upload(ViewBuffers& buffers) {
     }
     glNamedBufferSubData(buffers.records.id(), 0, _records.size() * sizeof(shaders::DrawRecord), _records.data());
     glNamedBufferSubData(buffers.commands.id(), 0, _commands.size() * sizeof(shaders::DrawCommand), _commands.data());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers.records.id());
+    glVertexArrayVertexBuffer(_gpu.vertexArray(), 1, buffers.records.id(), 0, sizeof(shaders::DrawRecord));
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, buffers.commands.id());
 }
 

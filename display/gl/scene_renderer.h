@@ -20,10 +20,10 @@
 //
 // Draw path: all geometry sits in GpuScene's shared buffers. Per view every draw of the list
 // gets one per-draw record (eye-relative model-view and normal matrix, composed in double and
-// rounded to float for this view; material index) in a storage buffer, and one indirect
-// command whose baseInstance names the record (scene_shaders.h). Each batch of the list is one
-// glMultiDrawElementsIndirect; the blended batches are drawn last with blending on.
-// ViewStats::drawCalls counts these multi-draw calls.
+// rounded to float for this view; its mesh's material), read by the vertex shader as instanced
+// attributes, and one indirect command whose baseInstance names the record (scene_shaders.h).
+// Each batch of the list is one glMultiDrawElementsIndirect; the blended batches are drawn last
+// with blending on. ViewStats::drawCalls counts these multi-draw calls.
 //
 // Shading, in linear light: baseColorFactor × vertex colour × base-colour texture (sRGB,
 // sampled at the material's texture transform of its texCoord set), lit by a headlight at the
@@ -115,7 +115,8 @@ public:
     // the view's viewport, scissor (enabled) and colour mask, clears depth within the viewport,
     // draws, and leaves viewport, scissor and colour mask set, depth writes on, blending off and
     // no sampler bound to unit 0, so later passes can draw into the same view. Program, vertex
-    // array, storage and indirect buffer bindings are left as the renderer set them.
+    // array (its binding 1 holding this view's draw records) and indirect buffer bindings are
+    // left as the renderer set them.
     // ViewStats::cpuMs is the drawing only; cullMs is the list's.
     ViewStats renderView(const display::ScreenView& view, const render::RenderList& list);
     // The same, building the list first with lists() (cpuMs includes building it).
@@ -167,10 +168,9 @@ private:
     RenderSettings _settings;
     render::RenderScene _scene;
     render::ListBuilder _lists;
-    std::vector<int> _objectMaterials;        // per object: material record index (its mesh's)
+    std::vector<shaders::MaterialRecord> _meshMaterials;  // per mesh
     GpuScene _gpu;
     std::array<Program, 2> _programs;         // [0]: no discard; [1]: alpha test (MASK batches)
-    GlObject _materialRecords;
     GpuTimer _timer;
     std::array<ViewBuffers, kViewBufferSets> _viewBuffers;
     int _nextViewBuffers = 0;

@@ -1,26 +1,41 @@
 #pragma once
-// GLSL of the scene renderer (see scene_renderer.h for what it computes) and the matching
-// C++ layouts of its two storage buffers (std430).
+// GLSL of the scene renderer (see scene_renderer.h for what it computes) and the matching C++
+// layout of its per-draw records.
 //
-// Every draw of a multi-draw finds its per-draw record through attribute 5, an instanced
-// attribute (divisor 1) reading the identity sequence 0, 1, 2, ...: with one instance per
-// command it yields the command's baseInstance, which the renderer sets to the record index.
-// (Core GL 4.5 has no gl_DrawID / gl_BaseInstance without ARB_shader_draw_parameters.)
+// Every draw of a multi-draw gets its per-draw record (model-view, normal matrix, material)
+// as instanced vertex attributes (binding 1 of the vertex array, divisor 1, one DrawRecord per
+// instance): with one instance per command, a command's baseInstance selects its record. The
+// vertex shader thus reads no storage buffer (before, every vertex read its draw record and
+// then its material record from two; on llvmpipe the attributes are measurably cheaper:
+// README, "Results: the draw path against osgviewer").
 
 #include <glm/glm.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 
 namespace cavewall::gl::shaders {
 
-// Per-draw record, binding 0. Matrices are eye-relative (view origin at the eye).
-struct DrawRecord {
-    glm::mat4 modelView{1.0f};
-    glm::vec4 normalMatrix[3]{};      // columns of the model-view's inverse transpose (xyz)
-    glm::ivec4 info{0};               // x: material record index
+// A mesh's material as the shader sees it: its material (or the default one), with the
+// mesh's texture-coordinate decoding folded into the texture transform (GpuScene::uvFromStored).
+struct MaterialRecord {
+    glm::vec4 baseColor{1.0f};        // linear RGBA
+    glm::vec4 uvRows[2]{};            // rows 0 and 1 of the KHR_texture_transform 3x3 (xyz)
+    glm::vec4 params{0.0f};           // x: alpha mode (0 opaque, 1 mask, 2 blend), y: textured
+                                      // (0/1), z: alpha cutoff
 };
-static_assert(sizeof(DrawRecord) == 128);
+static_assert(sizeof(MaterialRecord) == 64);
+
+// Per-draw record, one instance of binding 1. The model-view matrix is eye-relative (view
+// origin at the eye) and affine, so three rows hold it. Attribute locations of the fields:
+// kDrawAttributes (llvmpipe has 16 vertex attributes: the record takes 5 to 14).
+struct DrawRecord {
+    glm::vec4 modelViewRows[3]{};     // locations 5-7: rows 0-2 of the model-view matrix
+    glm::vec4 normalMatrix[3]{};      // 8-10: columns of the model-view's inverse transpose (xyz)
+    MaterialRecord material;          // 11: base colour, 12-13: uv rows, 14: params
+};
+static_assert(sizeof(DrawRecord) == 160);
 
 // Memory layout of GL's DrawElementsIndirectCommand (20 bytes, tightly packed): one per draw
 // in the indirect buffer.
@@ -33,15 +48,26 @@ struct DrawCommand {
 };
 static_assert(sizeof(DrawCommand) == 20);
 
-// Per-material record, binding 1: one per mesh (its material, or the default one, with the
-// mesh's texture-coordinate decoding folded into the texture transform, GpuScene::uvFromStored).
-struct MaterialRecord {
-    glm::vec4 baseColor{1.0f};        // linear RGBA
-    glm::vec4 uvTransform[3]{};       // columns of the KHR_texture_transform 3x3 (xyz)
-    glm::ivec4 flags{0};              // x: unused, y: alpha mode (0 opaque, 1 mask, 2 blend), z: textured
-    glm::vec4 params{0.0f};           // x: alpha cutoff
+// How the vertex shader's per-draw inputs read a DrawRecord: location, float components, byte
+// offset.
+struct DrawAttribute {
+    unsigned location;
+    int components;
+    std::size_t offset;
 };
-static_assert(sizeof(MaterialRecord) == 96);
+inline constexpr std::size_t kMaterialOffset = offsetof(DrawRecord, material);
+inline constexpr DrawAttribute kDrawAttributes[] = {
+    {5, 4, offsetof(DrawRecord, modelViewRows)},
+    {6, 4, offsetof(DrawRecord, modelViewRows) + 16},
+    {7, 4, offsetof(DrawRecord, modelViewRows) + 32},
+    {8, 3, offsetof(DrawRecord, normalMatrix)},
+    {9, 3, offsetof(DrawRecord, normalMatrix) + 16},
+    {10, 3, offsetof(DrawRecord, normalMatrix) + 32},
+    {11, 4, kMaterialOffset + offsetof(MaterialRecord, baseColor)},
+    {12, 3, kMaterialOffset + offsetof(MaterialRecord, uvRows)},
+    {13, 3, kMaterialOffset + offsetof(MaterialRecord, uvRows) + 16},
+    {14, 3, kMaterialOffset + offsetof(MaterialRecord, params)},
+};
 
 // Both stages come in variants, built with sceneShader(): TEXTURED 1 samples base-colour
 // textures, TEXTURED 0 (a scene without any) leaves the texture path out entirely: llvmpipe runs
@@ -54,12 +80,15 @@ layout(location = 0) in vec3 aPosition;   // normalised within the mesh's box (m
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aTexCoord;   // the set the material samples, normalised (uv decodes)
 layout(location = 4) in vec4 aColor;
-layout(location = 5) in uint aDraw;   // per instance: the draw's record index
-
-struct Draw { mat4 modelView; vec4 normal0, normal1, normal2; ivec4 info; };
-layout(std430, binding = 0) readonly buffer Draws { Draw draws[]; };
-struct Material { vec4 baseColor; vec4 uv0, uv1, uv2; ivec4 flags; vec4 params; };
-layout(std430, binding = 1) readonly buffer Materials { Material materials[]; };
+// Per draw (instanced, DrawRecord):
+layout(location = 5) in vec4 aModelView0;   // rows of the (affine) model-view matrix
+layout(location = 6) in vec4 aModelView1;
+layout(location = 7) in vec4 aModelView2;
+layout(location = 8) in mat3 aNormalMatrix;
+layout(location = 11) in vec4 aBaseColor;
+layout(location = 12) in vec3 aUv0;          // rows 0 and 1 of the texture transform
+layout(location = 13) in vec3 aUv1;
+layout(location = 14) in vec3 aParams;       // x: alpha mode, y: textured, z: alpha cutoff
 
 uniform mat4 uProjection;    // reversed-Z off-axis projection
 
@@ -71,19 +100,19 @@ flat out ivec2 vFlags;       // x: alpha mode, y: textured
 flat out float vCutoff;
 
 void main() {
-    Draw d = draws[aDraw];
-    Material m = materials[d.info.x];
-    vec4 p = d.modelView * vec4(aPosition, 1.0);
+    vec4 p = vec4(aPosition, 1.0);
+    p = vec4(dot(aModelView0, p), dot(aModelView1, p), dot(aModelView2, p), 1.0);
     vViewPosition = p.xyz;
-    vNormal = mat3(d.normal0.xyz, d.normal1.xyz, d.normal2.xyz) * aNormal;
+    vNormal = aNormalMatrix * aNormal;
 #if TEXTURED
-    vTexCoord = (mat3(m.uv0.xyz, m.uv1.xyz, m.uv2.xyz) * vec3(aTexCoord, 1.0)).xy;
+    vec3 uv = vec3(aTexCoord, 1.0);
+    vTexCoord = vec2(dot(aUv0, uv), dot(aUv1, uv));
 #else
     vTexCoord = vec2(0.0);
 #endif
-    vColor = m.baseColor * aColor;
-    vFlags = m.flags.yz;
-    vCutoff = m.params.x;
+    vColor = aBaseColor * aColor;
+    vFlags = ivec2(aParams.xy);
+    vCutoff = aParams.z;
     gl_Position = uProjection * p;
 }
 )";
@@ -102,7 +131,7 @@ uniform float uAmbient;
 out vec4 fragColor;          // linear; the sRGB target encodes it
 
 void main() {
-    // Material values arrive as flat varyings: no storage-buffer load per fragment.
+    // Material values arrive as flat varyings: no buffer load per fragment.
     vec4 color = vColor;
 #if TEXTURED
     if (vFlags.y != 0) color *= texture(uBaseColorTexture, vTexCoord);
