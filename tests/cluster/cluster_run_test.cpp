@@ -144,8 +144,10 @@ TEST(ClusterRun, FourRanksRenderTheSameFramesAsOneProcess) {
     EXPECT_FALSE(fourCsv.column("sync_ms").empty());
 }
 
-// Finds the PID of the cavewall process of MPI rank `rank` among the children of `group`.
-pid_t rankPid(int rank) {
+// Finds the PID of the cavewall process of MPI rank `rank` started with CAVEWALL_TEST_TAG=`tag`
+// (one tag per test: ctest -j runs the cluster tests side by side, and a test must never signal
+// another test's ranks).
+pid_t rankPid(int rank, const std::string& tag) {
     for (const auto& e : fs::directory_iterator("/proc")) {
         const std::string name = e.path().filename();
         if (name.find_first_not_of("0123456789") != std::string::npos) continue;
@@ -153,7 +155,7 @@ pid_t rankPid(int rank) {
         const std::string cmd = procFile(e.path() / "cmdline");
         if (cmd.find("cavewall") == std::string::npos || cmd.find("mpirun") == 0) continue;
         if (env.find(std::string("OMPI_COMM_WORLD_RANK=") + std::to_string(rank) + '\0') != std::string::npos &&
-            env.find(kWork.string()) != std::string::npos)
+            (std::string(1, '\0') + env).find(std::string(1, '\0') + "CAVEWALL_TEST_TAG=" + tag + '\0') != std::string::npos)
             return std::stoi(name);
     }
     return -1;
@@ -169,8 +171,8 @@ void expectEndsAllRanks(int signal, const char* message) {
     const Proc w = start(warm, out.filename().string() + "-warm");
     ASSERT_EQ(finish(w, 600), 0) << readFile(w.err);
     fs::remove_all(out);
-    std::vector<std::string> mpi{"mpirun", "--oversubscribe", "-np", "3", "-x", "CAVEWALL_TEST_TAG=" + kWork.string(),
-                                 CAVEWALL_EXE};
+    const std::string tag = out.string();
+    std::vector<std::string> mpi{"mpirun", "--oversubscribe", "-np", "3", "-x", "CAVEWALL_TEST_TAG=" + tag, CAVEWALL_EXE};
     auto args = runArgs(out);
     args[std::find(args.begin(), args.end(), "8") - args.begin()] = "100000";  // long enough to be interrupted
     for (const auto& a : args) mpi.push_back(a);
@@ -179,7 +181,7 @@ void expectEndsAllRanks(int signal, const char* message) {
     pid_t victim = -1;
     for (int i = 0; i < 600 && victim < 0; ++i) {  // until rank 2 is up and frames are flowing
         std::this_thread::sleep_for(std::chrono::milliseconds(100));
-        if (rowsWritten(out / "frames.csv") >= 2) victim = rankPid(2);
+        if (rowsWritten(out / "frames.csv") >= 2) victim = rankPid(2, tag);
     }
     ASSERT_GT(victim, 0) << readFile(p.err);
     kill(victim, signal);
