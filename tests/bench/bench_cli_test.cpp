@@ -37,6 +37,9 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     EXPECT_THAT(r.out, HasSubstr("| 1 | full |"));
     // --quick keeps its small images, and says so in the header and on every target line.
     EXPECT_THAT(r.out, HasSubstr("4 screens at 128x128 pixels, mono stereo mode"));
+    // Full geometry and the walls modes (but the paged one) are timed in the same seconds.
+    EXPECT_THAT(r.out, HasSubstr("drawn frame by frame in turn (the same seconds): full, full lod 1px, walls a=20 blend, "
+                                 "walls a=30 blend, walls a=20 blend lod 1px"));
     // The bound holds in every walls mode (frame by frame, also in bench_frames.csv).
     EXPECT_THAT(r.out, HasSubstr("targets (128x128 per screen, mono): textures drawn over alpha in"));
     EXPECT_THAT(r.out, HasSubstr("walls modes: 0 (0: met)"));

@@ -11,6 +11,7 @@
 #include "walls/wall_setup.h"
 
 #include <algorithm>
+#include <memory>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -81,13 +82,6 @@ ModeResult wallsMode(double alphaDeg, app::Transition transition, bool paged, do
     m.lodPixels = lodPixels;
     m.triangleBudget = triangleBudget;
     return m;
-}
-
-// The p50 of a mode's triangles per frame, as every p50 of the bench (timeStats).
-double medianTriangles(const ModeResult& m) {
-    std::vector<double> t;
-    for (const FrameSample& f : m.frames) t.push_back(f.triangles);
-    return display::median(t);
 }
 
 void say(const BenchOptions& o, const std::string& line) {
@@ -165,20 +159,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
                         std::string(config::toString(o.display.stereo));
     const ModeContext c{scene, description, display, *context, path, o.compareEvery, o.lodMaxPixels, o.wallKind};
 
-    say(o, "bench: full geometry");
-    ReferenceImages reference;
-    ModeAccumulator full(namedMode(Mode::Full), display);
-    runWalkthroughMode(c, std::nullopt, full, nullptr, &reference);
-    report.modes.push_back(full.finish(0.0));
-    const double fullP50 = report.modes.front().frameMs.p50;
     const bool lod = o.lodPixels > 0.0;
-    if (lod) {
-        say(o, "bench: full geometry, levels of detail at " + config::formatNumber(o.lodPixels) + " px");
-        ModeAccumulator acc(namedMode(Mode::Full, o.lodPixels), display);
-        runWalkthroughMode(c, std::nullopt, acc, &reference, nullptr);
-        report.modes.push_back(acc.finish(fullP50));
-    }
-
     std::vector<BakedWalls> baked;
     for (double alpha : o.alphasDeg) {
         say(o, "bench: plan and bake walls at a=" + config::formatNumber(alpha) + " deg");
@@ -188,56 +169,101 @@ BenchReport runBenchmark(const BenchOptions& o) {
     }
     const auto listed = std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg);
     const std::size_t transitionIndex = listed - o.alphasDeg.begin();  // listed: checked on entry
+
+    // Full geometry (the reference) and every walls mode but the paged one, frame by frame in
+    // turn: their speed-ups are ratios of times taken in the same seconds.
+    std::vector<std::unique_ptr<ModeAccumulator>> accs;  // stable addresses for the runs
+    std::vector<WalkRun> runs;
+    auto addRun = [&](ModeResult mode, std::optional<std::size_t> wallsIndex, app::Transition transition,
+                      int budgetFrom = -1) {
+        if (wallsIndex) {
+            mode.textures = static_cast<int>(baked[*wallsIndex].setup.plan.textures.size());
+            mode.texels = baked[*wallsIndex].texels;
+            mode.diskMB = baked[*wallsIndex].diskMB;
+        }
+        accs.push_back(std::make_unique<ModeAccumulator>(mode, display));
+        WalkRun run;
+        if (wallsIndex) run.walls = baked[*wallsIndex].setup;
+        run.acc = accs.back().get();
+        run.transition = transition;
+        run.storeReference = runs.empty();
+        run.budgetFrom = budgetFrom;
+        runs.push_back(std::move(run));
+        return static_cast<int>(runs.size()) - 1;
+    };
+    addRun(namedMode(Mode::Full), std::nullopt, app::Transition::Blend);
+    if (lod) addRun(namedMode(Mode::Full, o.lodPixels), std::nullopt, app::Transition::Blend);
+    for (std::size_t i = 0; i < baked.size(); ++i)
+        addRun(wallsMode(o.alphasDeg[i], app::Transition::Blend, false, 0.0, 0, 0.0), i, app::Transition::Blend);
+    std::vector<int> lodRun(baked.size(), -1);
+    if (lod)
+        for (std::size_t i = 0; i < baked.size(); ++i)
+            lodRun[i] = addRun(wallsMode(o.alphasDeg[i], app::Transition::Blend, false, o.lodPixels, 0, 0.0), i,
+                               app::Transition::Blend);
+    addRun(wallsMode(o.alphasDeg[transitionIndex], app::Transition::Warp, false, 0.0, 0, 0.0), transitionIndex,
+           app::Transition::Warp);
+    if (lod)
+        for (std::size_t i = 0; i < baked.size(); ++i)  // budget: the median of the same mode without one
+            addRun(wallsMode(o.alphasDeg[i], app::Transition::Blend, false, o.lodPixels, o.triangleBudget, 0.0), i,
+                   app::Transition::Blend, o.triangleBudget == 0 ? lodRun[i] : -1);
+    if (lod && o.frameBudgetMs > 0.0)
+        for (std::size_t i = 0; i < baked.size(); ++i)
+            addRun(wallsMode(o.alphasDeg[i], app::Transition::Blend, false, o.lodPixels, 0, o.frameBudgetMs), i,
+                   app::Transition::Blend);
+    std::string names;
+    for (const auto& acc : accs) names += (names.empty() ? "" : ", ") + modeLabel(acc->mode());
+    say(o, "bench: " + names + ", frame by frame in turn");
+    ReferenceImages reference;
+    runWalkthroughModes(c, runs, reference);
+    const double fullP50 = accs.front()->finish(0.0).frameMs.p50;
+    std::vector<ModeResult> interleaved;
+    for (const auto& acc : accs) interleaved.push_back(acc->finish(interleaved.empty() ? 0.0 : fullP50));
+    report.header.push_back("drawn frame by frame in turn (the same seconds): " + names +
+                            "; then cells, cells+layer and near in turn; then the paged mode alone");
+
     const walls::WallSetup& cellPlan = baked[transitionIndex].setup;
+    std::vector<ModeResult> cellModes;
     auto runCells = [&](std::vector<CellDraw> kinds, double lodPixels) {
-        std::vector<ModeAccumulator> accs;
-        accs.reserve(kinds.size());
-        std::vector<CellRun> runs;
-        std::string names;
+        std::vector<ModeAccumulator> cellAccs;
+        cellAccs.reserve(kinds.size());
+        std::vector<CellRun> cellRuns;
+        std::string cellNames;
         for (CellDraw kind : kinds) {
             const Mode mode = kind == CellDraw::Near ? Mode::Near : kind == CellDraw::Cells ? Mode::Cells : Mode::CellsLayer;
-            accs.emplace_back(namedMode(mode, lodPixels), display);
-            runs.push_back({kind, &accs.back()});
-            names += (names.empty() ? "" : ", ") + modeLabel(accs.back().mode());
+            cellAccs.emplace_back(namedMode(mode, lodPixels), display);
+            cellRuns.push_back({kind, &cellAccs.back()});
+            cellNames += (cellNames.empty() ? "" : ", ") + modeLabel(cellAccs.back().mode());
         }
-        say(o, "bench: " + names + (kinds.size() > 1 ? ", frame by frame in turn" : ""));
-        runCellModes(c, cellPlan, runs, reference);
-        for (const ModeAccumulator& acc : accs) report.modes.push_back(acc.finish(fullP50));
+        say(o, "bench: " + cellNames + (kinds.size() > 1 ? ", frame by frame in turn" : ""));
+        runCellModes(c, cellPlan, cellRuns, reference);
+        for (const ModeAccumulator& acc : cellAccs) cellModes.push_back(acc.finish(fullP50));
     };
     // The control, the control plus one textured layer and the limit in the same seconds: the
     // wall pass's target compares them.
     runCells({CellDraw::Cells, CellDraw::CellsLayer, CellDraw::Near}, 0.0);
     if (lod) runCells({CellDraw::Near}, o.lodPixels);
-    auto runWalls = [&](std::size_t i, app::Transition transition, bool paged, double lodPixels = 0.0,
-                        std::size_t budget = 0, double frameBudgetMs = 0.0) {
-        ModeResult mode = wallsMode(o.alphasDeg[i], transition, paged, lodPixels, budget, frameBudgetMs);
-        say(o, "bench: " + modeLabel(mode));
-        mode.textures = static_cast<int>(baked[i].setup.plan.textures.size());
-        mode.texels = baked[i].texels;
-        mode.diskMB = baked[i].diskMB;
-        ModeAccumulator acc(mode, display);
-        runWalkthroughMode(c, baked[i].setup, acc, &reference, nullptr, transition, paged);
-        report.modes.push_back(acc.finish(fullP50));
-    };
-    for (std::size_t i = 0; i < baked.size(); ++i) runWalls(i, app::Transition::Blend, false);
-    if (lod)
-        for (std::size_t i = 0; i < baked.size(); ++i) runWalls(i, app::Transition::Blend, false, o.lodPixels);
-    runWalls(transitionIndex, app::Transition::Warp, false);
-    runWalls(transitionIndex, app::Transition::Blend, true);
-    if (lod)
-        for (std::size_t i = 0; i < baked.size(); ++i) {
-            std::size_t budget = o.triangleBudget;
-            if (budget == 0)  // the median of the same mode without a budget
-                for (const ModeResult& m : report.modes)
-                    if (m.mode == Mode::Walls && m.alphaDeg == o.alphasDeg[i] &&
-                        m.transition == app::Transition::Blend && !m.paged && m.lodPixels == o.lodPixels &&
-                        m.triangleBudget == 0)
-                        budget = static_cast<std::size_t>(medianTriangles(m));
-            runWalls(i, app::Transition::Blend, false, o.lodPixels, std::max<std::size_t>(budget, 1));
-        }
-    if (lod && o.frameBudgetMs > 0.0)
-        for (std::size_t i = 0; i < baked.size(); ++i)
-            runWalls(i, app::Transition::Blend, false, o.lodPixels, 0, o.frameBudgetMs);
+
+    ModeResult pagedMode = wallsMode(o.alphasDeg[transitionIndex], app::Transition::Blend, true, 0.0, 0, 0.0);
+    pagedMode.textures = static_cast<int>(baked[transitionIndex].setup.plan.textures.size());
+    pagedMode.texels = baked[transitionIndex].texels;
+    pagedMode.diskMB = baked[transitionIndex].diskMB;
+    say(o, "bench: " + modeLabel(pagedMode));
+    ModeAccumulator pagedAcc(pagedMode, display);
+    std::vector<WalkRun> paged(1);
+    paged[0].walls = baked[transitionIndex].setup;
+    paged[0].acc = &pagedAcc;
+    paged[0].paged = true;
+    runWalkthroughModes(c, paged, reference);
+
+    // The report in its usual order: full geometry, the cell modes, then the walls modes.
+    const std::size_t fullModes = lod ? 2 : 1;
+    report.modes.assign(interleaved.begin(), interleaved.begin() + static_cast<long>(fullModes));
+    report.modes.insert(report.modes.end(), cellModes.begin(), cellModes.end());
+    const std::size_t beforePaged = fullModes + baked.size() * (lod ? 2 : 1) + 1;  // blend, lod, warp
+    report.modes.insert(report.modes.end(), interleaved.begin() + static_cast<long>(fullModes),
+                        interleaved.begin() + static_cast<long>(beforePaged));
+    report.modes.push_back(pagedAcc.finish(fullP50));
+    report.modes.insert(report.modes.end(), interleaved.begin() + static_cast<long>(beforePaged), interleaved.end());
     if (lod && o.triangleBudget == 0)
         report.header.push_back("triangle budgets: per alpha, the median triangles of the same walls mode without a "
                                 "budget");

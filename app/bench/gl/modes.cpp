@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <memory>
 #include <chrono>
 
 namespace cavewall::gl {
@@ -106,47 +107,64 @@ ModeResult ModeAccumulator::finish(double fullP50) const {
     return m;
 }
 
-void runWalkthroughMode(const ModeContext& c, std::optional<walls::WallSetup> walls, ModeAccumulator& acc,
-                        const ReferenceImages* reference, ReferenceImages* store, walls::Transition transition,
-                        bool paged) {
-    gl::WalkthroughOptions options;
-    options.transition = transition;
-    options.render.lodPixels = acc.mode().lodPixels;
-    options.triangleBudget = acc.mode().triangleBudget;
-    options.lodMaxPixels = c.lodMaxPixels;
-    options.wallKind = c.wallKind;
-    if (!paged) {
-        options.synchronousPaging = true;
-        options.textureBudgetMB = 4096.0;  // every texture of the path stays resident after warm-up
-        options.uploadMBPerFrame = 4096.0;
-    }
-    const bool hasWalls = walls.has_value();
-    gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
-    // Warm-up: shaders, buffers and (with walls, unless paged) every texture of the path made
-    // resident.
-    const long frames = static_cast<long>(c.path.frames.size());
-    std::optional<display::FrameTimeBudget> frameBudget;
-    if (acc.mode().frameBudgetMs > 0.0) frameBudget.emplace(acc.mode().frameBudgetMs);
-    auto render = [&](walls::FrameInput in) {
-        if (frameBudget) in.triangleBudget = frameBudget->budget();
-        walls::FrameResult r = walkthrough.renderFrame(in);
-        if (frameBudget) frameBudget->update(r.frameMs, r.geometryTriangles);
+void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, ReferenceImages& reference) {
+    struct Live {
+        std::unique_ptr<gl::Walkthrough> walkthrough;
+        std::optional<display::FrameTimeBudget> frameBudget;
+        std::vector<double> warmTriangles;
+    };
+    std::vector<Live> live(runs.size());
+    auto render = [](Live& l, walls::FrameInput in) {
+        if (l.frameBudget) in.triangleBudget = l.frameBudget->budget();
+        walls::FrameResult r = l.walkthrough->renderFrame(in);
+        if (l.frameBudget) l.frameBudget->update(r.frameMs, r.geometryTriangles);
         return r;
     };
-    const long warmUp = hasWalls && !paged ? frames : std::min<long>(3, frames);
-    for (long i = 0; i < warmUp; ++i) render(c.path.frames[i]);
-    if (!paged) walkthrough.waitForTextures();
+    const long frames = static_cast<long>(c.path.frames.size());
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        WalkRun& run = runs[i];
+        Live& l = live[i];
+        if (run.budgetFrom >= 0) {
+            const auto& t = live.at(static_cast<std::size_t>(run.budgetFrom)).warmTriangles;
+            run.acc->setTriangleBudget(std::max<std::size_t>(1, t.empty() ? 1 : static_cast<std::size_t>(display::median(t))));
+        }
+        const ModeResult& mode = run.acc->mode();
+        gl::WalkthroughOptions options;
+        options.transition = run.transition;
+        options.render.lodPixels = mode.lodPixels;
+        options.triangleBudget = mode.triangleBudget;
+        options.lodMaxPixels = c.lodMaxPixels;
+        options.wallKind = c.wallKind;
+        if (!run.paged) {
+            options.synchronousPaging = true;
+            options.textureBudgetMB = 4096.0;  // every texture of the path stays resident after warm-up
+            options.uploadMBPerFrame = 4096.0;
+        }
+        const bool hasWalls = run.walls.has_value();
+        l.walkthrough = std::make_unique<gl::Walkthrough>(c.scene, c.description, c.display, c.context, run.walls, options);
+        if (mode.frameBudgetMs > 0.0) l.frameBudget.emplace(mode.frameBudgetMs);
+        // Warm-up: shaders, buffers and (with walls, unless paged) every texture of the path made
+        // resident; the whole path too for a run whose triangles set a later run's budget.
+        bool budgetSource = false;
+        for (const WalkRun& other : runs) budgetSource = budgetSource || other.budgetFrom == static_cast<int>(i);
+        const long warmUp = !run.paged && (hasWalls || budgetSource) ? frames : std::min<long>(3, frames);
+        for (long f = 0; f < warmUp; ++f)
+            l.warmTriangles.push_back(static_cast<double>(render(l, c.path.frames[f]).stats.triangles));
+        if (!run.paged && hasWalls) l.walkthrough->waitForTextures();
+    }
     for (const walls::FrameInput& frame : c.path.frames) {
         walls::FrameInput in = frame;
         in.readImages = compared(c, in.frame);
-        walls::FrameResult r = render(in);
-        acc.addFrame({r.frameMs, r.cpuMs, r.gpuMs, static_cast<double>(r.stats.triangles),
-                      static_cast<double>(r.stats.drawCalls), r.maxErrorDeg, r.maxErrorPixels, r.pager.residentMB,
-                      r.pager.misses, r.perScreen, r.lodErrorPx, r.lodTolerancePx, r.lodOverBudget,
-                      r.texturesOverAlpha, static_cast<double>(r.uploadedBytes) / 1e6});
-        if (!in.readImages) continue;
-        if (store) (*store)[in.frame] = std::move(r.images);
-        else if (reference) acc.compare(in.frame, in.head, r.images, reference->at(in.frame));
+        for (std::size_t i = 0; i < runs.size(); ++i) {
+            walls::FrameResult r = render(live[i], in);
+            runs[i].acc->addFrame({r.frameMs, r.cpuMs, r.gpuMs, static_cast<double>(r.stats.triangles),
+                                   static_cast<double>(r.stats.drawCalls), r.maxErrorDeg, r.maxErrorPixels,
+                                   r.pager.residentMB, r.pager.misses, r.perScreen, r.lodErrorPx, r.lodTolerancePx,
+                                   r.lodOverBudget, r.texturesOverAlpha, static_cast<double>(r.uploadedBytes) / 1e6});
+            if (!in.readImages) continue;
+            if (runs[i].storeReference) reference[in.frame] = std::move(r.images);
+            else runs[i].acc->compare(in.frame, in.head, r.images, reference.at(in.frame));
+        }
     }
 }
 

@@ -43,6 +43,7 @@ public:
                  const std::vector<gl::ScreenImage>& reference);
     // `fullP50`: the reference mode's median frame ms (0: this is the reference).
     bench::ModeResult finish(double fullP50) const;
+    void setTriangleBudget(std::size_t budget) { _mode.triangleBudget = budget; }
 
 private:
     bench::ModeResult _mode;
@@ -66,16 +67,29 @@ struct ModeContext {
     walls::WallKind wallKind = walls::WallKind::Flat;  // WalkthroughOptions::wallKind of the walls modes
 };
 
-// Runs the walkthrough (walls: nullopt = full geometry) over the path: a warm-up pass when it
-// has walls, then the timed pass. With `reference` null the compared frames' images are stored
-// in `store` (the full-geometry reference run). `paged`: as `cavewall run` pages, in the
-// background under the default texture budget and upload limit, from a cold start (three
-// warm-up frames), so the timed frames include every page-in, upload and fallback.
-// The mode's bench::ModeResult::lodPixels and triangleBudget set the levels of detail
-// (WalkthroughOptions::render.lodPixels, triangleBudget).
-void runWalkthroughMode(const ModeContext& c, std::optional<walls::WallSetup> walls, ModeAccumulator& acc,
-                        const ReferenceImages* reference, ReferenceImages* store,
-                        walls::Transition transition = walls::Transition::Blend, bool paged = false);
+// One walkthrough mode of a runWalkthroughModes call.
+struct WalkRun {
+    std::optional<walls::WallSetup> walls;  // nullopt: full geometry
+    ModeAccumulator* acc = nullptr;         // not null; its mode's lodPixels, triangleBudget and
+                                            // frameBudgetMs set the levels of detail and budgets
+    walls::Transition transition = walls::Transition::Blend;
+    // As `cavewall run` pages: in the background under the default texture budget and upload
+    // limit, from a cold start (three warm-up frames), so the timed frames include every
+    // page-in, upload and fallback. Otherwise every texture of the path is made resident in a
+    // warm-up pass over the whole path.
+    bool paged = false;
+    bool storeReference = false;            // its compared images become the reference
+    // >= 0: the triangle budget is the median triangles per frame of that earlier run's warm-up
+    // pass over the path (the same frames, drawn as its timed pass draws them), set on `acc`.
+    int budgetFrom = -1;
+};
+
+// Runs walkthrough modes over the path, interleaved: after every run's warm-up, each path frame
+// is drawn by every run in turn, so that their times share the machine's load of the same
+// seconds (a shared machine's load moves by 2x between minutes; ratios of times taken minutes
+// apart are not honest). Compared frames of the run with storeReference go to `reference`
+// (it comes first), the others' are compared with them.
+void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, ReferenceImages& reference);
 
 // The machine's own frame-time noise beside a mode's: the path drawn as `mode` draws it (walls
 // or not, its levels of detail; every texture resident), each frame followed by frame
