@@ -113,6 +113,7 @@ TextureRequests FramePlanner::requests(const FrameInput& input, const std::vecto
     }
     for (const WallBlend& b : _seen.beyond)
         for (const auto& [id, weight] : b.textures) r.now.push_back(id);
+    if (!_requestCells) return r;
     r.cellsNow = _selection.allGeometry() ? std::vector<int>{} : _selection.geometryCells;
     auto soon = [&](int cell) {
         if (std::find(r.cellsSoon.begin(), r.cellsSoon.end(), cell) == r.cellsSoon.end()) r.cellsSoon.push_back(cell);

@@ -126,6 +126,9 @@ public:
 
     // Steps 1-2 of the header for this frame; `views` are the views the executor draws.
     TextureRequests requests(const FrameInput& input, const std::vector<display::ScreenView>& views);
+    // Geometry paging by cell: requests() also fills cellsNow and cellsSoon (eight more cell
+    // selections per frame). Off by default: frames without paging skip that work.
+    void requestCells(bool on) { _requestCells = on; }
     // Steps 3-5 for the frame of the last requests() call, against `resident` textures and
     // `cellResident` cells (empty: every cell's geometry is resident).
     FramePlan plan(const Residency& resident, const Residency& cellResident = {});
@@ -134,6 +137,7 @@ public:
     const std::vector<int>& screens() const { return _screens; }
 
 private:
+    bool _requestCells = false;
     struct Memory;
     struct WarpOutcome;
     WallState chooseWall(const WallBlend& blend, const Residency& resident, FramePlan& plan);

@@ -104,6 +104,7 @@ TEST_F(FramePlannerTest, ACellNotResidentKeepsTheWallTexturesUnlessNoneIsProven)
     }();
     auto frameWithCells = [&](FramePlanner& planner, glm::dvec3 eye, bool backResident) {
         const FrameInput in = at(eye);
+        planner.requestCells(true);
         const TextureRequests r = planner.requests(in, views(in));
         EXPECT_EQ(std::count(r.cellsNow.begin(), r.cellsNow.end(), 0), 1);  // the viewer's cell
         EXPECT_EQ(std::count(r.cellsSoon.begin(), r.cellsSoon.end(), 1), 1);  // one wall away

@@ -70,6 +70,7 @@ Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescript
             walls::cellGeometryBytes(scene, static_cast<int>(description.cells.size())), options.geometryBudgetMB);
     _planner = std::make_unique<walls::FramePlanner>(scene, description, display, _walls ? &_walls->setup : nullptr,
                                                      options.transition, options.morphSeconds, _screens);
+    _planner->requestCells(_walls && _walls->geometry);
     if (_walls && options.transition == walls::Transition::Warp)
         _warp = std::make_unique<WarpPass>(scene, _renderer.gpu(), options.render, display.depthRange().near);
 }
