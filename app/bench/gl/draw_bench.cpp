@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <memory>
 
 namespace cavewall::gl {
 namespace {
@@ -40,33 +41,58 @@ config::DisplayConfig homeDisplay(const bench::HomeView& view, int resolution) {
     return c;
 }
 
-DrawBenchRow timeConfiguration(const scenes::Scene& scene, const display::Display& disp, const Context& context,
-                               bool cull, const DrawBenchOptions& options, DrawBenchResult& result) {
-    RenderSettings settings;
-    settings.cullBackFaces = cull;
-    SceneRenderer renderer(scene, settings);
+// Both configurations are timed frame by frame in turn, in ABBA order (culled, both, both,
+// culled, ...), so that neither gains from running first or second under a changing load and
+// both share the warm-up state of llvmpipe's threads and caches.
+std::vector<DrawBenchRow> timeConfigurations(const scenes::Scene& scene, const display::Display& disp,
+                                             const Context& context, const DrawBenchOptions& options,
+                                             DrawBenchResult& result) {
+    struct Configuration {
+        std::unique_ptr<SceneRenderer> renderer;
+        DrawBenchRow row;
+    };
+    std::vector<Configuration> configurations;
+    for (bool cull : {true, false}) {
+        RenderSettings settings;
+        settings.cullBackFaces = cull;
+        Configuration c{std::make_unique<SceneRenderer>(scene, settings), {}};
+        c.row.cullBackFaces = cull;
+        configurations.push_back(std::move(c));
+    }
     const RenderTargets targets(disp, context);
     const std::vector<display::ScreenView> views = disp.views(disp.defaultHead());
-    DrawBenchRow row;
-    row.cullBackFaces = cull;
-    for (int i = 0; i < options.warmup + options.frames; ++i) {
+    auto frame = [&](Configuration& c, bool timed) {
         const double cpuStart = processCpuMs();
         const auto start = std::chrono::steady_clock::now();
-        const FrameStats stats = renderer.render(views, targets);
+        const FrameStats stats = c.renderer->render(views, targets);
         glFinish();
         const double ms = display::msSince(start);
         const double cpuMs = processCpuMs() - cpuStart;
-        row.trianglesSubmitted = stats.triangles;
-        if (i < options.warmup) continue;
-        row.frameMs.push_back(ms);
-        row.cpuMs.push_back(cpuMs);
+        c.row.trianglesSubmitted = stats.triangles;
+        if (!timed) return;
+        c.row.frameMs.push_back(ms);
+        c.row.cpuMs.push_back(cpuMs);
+    };
+    for (int i = 0; i < options.warmup + options.frames; ++i) {
+        const bool timed = i >= options.warmup;
+        if (i % 2 == 0) frame(configurations[0], timed), frame(configurations[1], timed);
+        else frame(configurations[1], timed), frame(configurations[0], timed);
     }
     const auto pixels = static_cast<std::size_t>(options.resolution) * static_cast<std::size_t>(options.resolution);
-    row.timing = bench::drawTiming(row.frameMs, row.cpuMs, row.trianglesSubmitted, pixels);
-    result.vertexBytesPerTriangle = static_cast<double>(renderer.gpu().vertexBytes()) / result.triangles;
-    result.indexBytesPerTriangle = static_cast<double>(renderer.gpu().indexBytes()) / result.triangles;
-    if (options.imageDir) scenes::writeImage(*options.imageDir / (cull ? "culled.png" : "both.png"), targets.read(0, 0));
-    return row;
+    const SceneRenderer& any = *configurations[0].renderer;
+    result.vertexBytesPerTriangle = static_cast<double>(any.gpu().vertexBytes()) / result.triangles;
+    result.indexBytesPerTriangle = static_cast<double>(any.gpu().indexBytes()) / result.triangles;
+    std::vector<DrawBenchRow> rows;
+    for (Configuration& c : configurations) {
+        c.row.timing = bench::drawTiming(c.row.frameMs, c.row.cpuMs, c.row.trianglesSubmitted, pixels);
+        if (options.imageDir) {
+            frame(c, false);  // the last frame drawn is the other configuration's
+            scenes::writeImage(*options.imageDir / (c.row.cullBackFaces ? "culled.png" : "both.png"),
+                               targets.read(0, 0));
+        }
+        rows.push_back(std::move(c.row));
+    }
+    return rows;
 }
 
 }  // namespace
@@ -79,8 +105,7 @@ DrawBenchResult runDrawBench(const scenes::Scene& scene, const DrawBenchOptions&
     const display::Display disp(homeDisplay(result.view, options.resolution));
     const auto context = createHeadlessContext();
     result.glRenderer = context->info().renderer;
-    for (bool cull : {true, false})
-        result.rows.push_back(timeConfiguration(scene, disp, *context, cull, options, result));
+    result.rows = timeConfigurations(scene, disp, *context, options, result);
     return result;
 }
 

@@ -6,9 +6,10 @@
 // The view is osgviewer's home view of the scene's bounds (app/bench/draw_view.h): one square
 // screen of `resolution` pixels, symmetric `fovDeg` vertical field of view, mono. The scene is
 // drawn by SceneRenderer::render (the same path as `cavewall bench`'s full-geometry mode and
-// every walls mode's near geometry), once with its default back-face culling and once with
-// RenderSettings::cullBackFaces off (both faces of everything: osgviewer's work), each after
-// `warmup` untimed frames. A frame is timed on the CPU clock from before the clear to after
+// every walls mode's near geometry), with its default back-face culling and with
+// RenderSettings::cullBackFaces off (both faces of everything: osgviewer's work), frame by frame
+// in turn (ABBA order) after `warmup` untimed frames of each, so that neither configuration
+// gains from its place in the run. A frame is timed on the CPU clock from before the clear to after
 // glFinish, so it holds every stage of the GPU's work (on llvmpipe: vertex shading, binning,
 // rasterisation); its process CPU time (all threads) is recorded beside it.
 
