@@ -25,6 +25,8 @@ int runGenerate(const std::vector<std::string>& args);
 extern const char* const kGenerateUsage;
 int runPlan(const std::vector<std::string>& args);
 extern const char* const kPlanUsage;
+int runWalls(const std::vector<std::string>& args);
+extern const char* const kWallsUsage;
 #ifdef CAVEWALL_HAVE_GL
 int runRender(const std::vector<std::string>& args);
 extern const char* const kRenderUsage;

@@ -15,6 +15,7 @@ const Command kCommands[] = {
     {"bench", "measure error against run time; --stability: the numerical stability report", kBenchUsage, runBench},
     {"generate", "write a generated plant or house (.glb + scene.json) deterministically from a seed", kGenerateUsage, runGenerate},
     {"plan", "plan the zones and textures of every virtual wall (summary, JSON, PNG diagram)", kPlanUsage, runPlan},
+    {"walls", "propose cells and virtual walls for a model nobody prepared (scene.json, diagram)", kWallsUsage, runWalls},
 #ifdef CAVEWALL_HAVE_GL
     {"render", "render one frame of a scene to PNG files (one per screen and eye, plus a fold-out)", kRenderUsage, runRender},
     {"demo", "walk cave4 through the generated plant with and without virtual walls (report.md)", kDemoUsage, runDemo},

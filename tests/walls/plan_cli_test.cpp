@@ -77,5 +77,38 @@ TEST(PlanCli, BadArgumentsFailClearly) {
     }
 }
 
+// `cavewall walls` (issue 19): proposes cells and walls for the generated house (its own cells
+// and walls replaced), writes a scene.json that `plan` accepts and a diagram.
+TEST(WallsCli, ProposesWallsThatPlanAccepts) {
+    const auto dir = outputDir();
+    const CliResult gen = runCavewall({"generate", "house", "--out", (dir / "auto-house").string(), "--triangles", "2000"});
+    ASSERT_EQ(gen.exitCode, 0) << gen.err;
+    std::filesystem::create_directories(dir / "auto-proposal");
+    const auto scene = dir / "auto-proposal" / "scene.json";
+    const CliResult r = runCavewall({"walls", (dir / "auto-house").string(), "--out", scene.string(), "--png",
+                                     (dir / "auto-proposal" / "top.png").string(), "--max-cells", "3",
+                                     "--max-res", "64", "--min-cell", "2"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("<- chosen"));
+    EXPECT_THAT(r.out, HasSubstr("(the input's own cells and walls)"));
+    EXPECT_THAT(r.err, HasSubstr("are replaced"));
+    EXPECT_GT(std::filesystem::file_size(dir / "auto-proposal" / "top.png"), 100u);
+    // The proposal names the model relative to its own folder and plans.
+    const CliResult plan = runCavewall({"plan", scene.string()});
+    EXPECT_EQ(plan.exitCode, 0) << plan.err;
+}
+
+TEST(WallsCli, BadInputSaysWhatIsWrong) {
+    const auto dir = outputDir();
+    const CliResult noOut = runCavewall({"walls", (dir / "nowhere.glb").string()});
+    EXPECT_NE(noOut.exitCode, 0);
+    EXPECT_THAT(noOut.err, HasSubstr("--out"));
+    const CliResult badBudget = runCavewall({"walls", (dir / "nowhere.glb").string(), "--out", (dir / "x.json").string(),
+                                             "--texture-budget", "-3"});
+    EXPECT_NE(badBudget.exitCode, 0);
+    EXPECT_THAT(badBudget.err, HasSubstr("--texture-budget"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.json"));
+}
+
 }  // namespace
 }  // namespace cavewall::test

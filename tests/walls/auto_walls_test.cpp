@@ -1,0 +1,164 @@
+#include "walls/auto_walls.h"
+
+#include "config/error.h"
+#include "scenes/primitives.h"
+#include "scenes/scene_description_io.h"
+#include "tests/support/files.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+
+namespace cavewall::walls {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+
+// A hall 40 m (x) by 10 m (z), 4 m high: a floor slab with its top at y = 0, a ceiling slab from
+// y = 4, two long hall walls 0.1 m thick centred on z = +-5, and 1 m crates every 2 m along x in
+// two rows (so every cut has a free gap within a metre) plus one crate astride x = 0.
+scenes::Scene hall() {
+    scenes::Scene s;
+    s.name = "hall";
+    auto box = [&](glm::dvec3 size, glm::dvec3 centre, const std::string& name) {
+        s.meshes.push_back(scenes::makeBox(glm::vec3(size), glm::vec4(0.5f, 0.5f, 0.5f, 1.0f)));
+        scenes::addObject(s, static_cast<int>(s.meshes.size()) - 1, glm::translate(glm::dmat4(1.0), centre), name);
+    };
+    box({40, 0.1, 10}, {0, -0.05, 0}, "floor");
+    box({40, 0.1, 10}, {0, 4.05, 0}, "ceiling");
+    box({40, 4, 0.1}, {0, 2, -5}, "wall-north");
+    box({40, 4, 0.1}, {0, 2, 5}, "wall-south");
+    for (int i = 0; i < 20; ++i)
+        for (double z : {-2.5, 2.5})
+            box({1, 1, 1}, {-19.0 + 2.0 * i, 0.5, z}, "crate " + std::to_string(i) + (z < 0 ? "n" : "s"));
+    box({1, 1, 1}, {0.0, 0.5, 0.0}, "astride");
+    return s;
+}
+
+// The description of a bare model file (validation wants the file to exist; the scene itself
+// comes from hall()).
+scenes::SceneDescription bare() {
+    static const test::TempFolder folder("auto_walls");
+    test::writeFile(folder / "hall.glb", "glTF");
+    scenes::SceneDescription d;
+    d.name = "hall";
+    d.folder = folder.path();
+    d.models.push_back({"hall.glb"});
+    return d;
+}
+
+AutoWallsOptions options() {
+    AutoWallsOptions o;
+    o.plan.maxResolution = 64;  // small textures: quick plans
+    o.minCellSize = 5.0;
+    o.maxCellsPerAxis = 4;
+    // Crates cost (the hall has only 492 triangles) and wall layers are cheap: cells pay.
+    o.msPerMillionTriangles = 1e4;
+    o.msPerWallSide = 0.1;
+    return o;
+}
+
+TEST(AutoWalls, FindsFloorCeilingAndHallWallsAsStructure) {
+    const AutoWallsResult r = proposeWalls(hall(), bare(), options());
+    EXPECT_THAT(r.structure, ElementsAre("ceiling", "floor", "wall-north", "wall-south"));
+    EXPECT_NEAR(r.floorY, 0.0, 1e-9);    // the floor slab's top
+    EXPECT_NEAR(r.ceilingY, 4.0, 1e-9);  // the ceiling slab's bottom
+    // Walkable: the floor's x extent, between the hall walls' inner faces in z.
+    EXPECT_NEAR(r.floorMin.x, -20.0, 1e-9);
+    EXPECT_NEAR(r.floorMax.x, 20.0, 1e-9);
+    EXPECT_NEAR(r.floorMin.y, -4.95, 1e-9);
+    EXPECT_NEAR(r.floorMax.y, 4.95, 1e-9);
+    // The proposal names them as structure nodes of the model.
+    EXPECT_THAT(r.description.models.front().structureNodes, ElementsAre("ceiling", "floor", "wall-north", "wall-south"));
+}
+
+TEST(AutoWalls, TheProposalIsValidAndNoWallCutsACrate) {
+    const scenes::Scene scene = hall();
+    const AutoWallsResult r = proposeWalls(scene, bare(), options());
+    ASSERT_GT(r.description.walls.size(), 0u);
+    const std::string text = scenes::writeSceneDescription(r.description);
+    EXPECT_EQ(scenes::parseSceneDescription(text, "proposal", r.description.folder).cells, r.description.cells);
+    EXPECT_NO_THROW(scenes::validateSceneDescription(r.description, "proposal"));
+    for (const scenes::VirtualWall& w : r.description.walls) {
+        // Every proposed wall is upright on x = c or z = c; no crate's box spans the plane.
+        const bool alongZ = w.lowerLeft.x == w.lowerRight.x;
+        const int axis = alongZ ? 0 : 2;
+        const double c = w.lowerLeft[axis];
+        for (const scenes::Object& o : scene.objects) {
+            if (o.name.rfind("crate", 0) != 0 && o.name != "astride") continue;
+            EXPECT_FALSE(o.worldBounds.min[axis] < c - 1e-9 && o.worldBounds.max[axis] > c + 1e-9)
+                << w.name << " at " << c << " cuts " << o.name;
+        }
+        // Its front faces cells[0]: the normal points towards that cell's centre.
+        const glm::dvec3 n = glm::cross(w.lowerRight - w.lowerLeft, w.upperLeft - w.lowerLeft);
+        glm::dvec2 centre(0.0);
+        for (const glm::dvec2& p : r.description.cells[w.cells[0]].region) centre += p / 4.0;
+        EXPECT_GT(n.x * (centre.x - w.lowerLeft.x) + n.z * (centre.y - w.lowerLeft.z), 0.0) << w.name;
+    }
+}
+
+TEST(AutoWalls, ChoosesTheCheapestCandidateWithinTheBudget) {
+    const AutoWallsResult r = proposeWalls(hall(), bare(), options());
+    ASSERT_GT(r.candidates.size(), 1u);
+    const AutoWallsCandidate& chosen = r.candidates[r.chosen];
+    EXPECT_TRUE(chosen.withinBudget);
+    for (const AutoWallsCandidate& c : r.candidates)
+        if (c.withinBudget) EXPECT_GE(c.expectedMs, chosen.expectedMs) << c.nx << "x" << c.nz;
+    EXPECT_EQ(static_cast<int>(r.description.cells.size()), chosen.nx * chosen.nz);
+    // More cells draw fewer triangles: one cell draws every crate (41 x 12 triangles).
+    EXPECT_DOUBLE_EQ(r.candidates.front().meanCellTriangles, 41.0 * 12.0);
+    EXPECT_LT(chosen.meanCellTriangles, r.candidates.front().meanCellTriangles);
+}
+
+TEST(AutoWalls, ATinyBudgetLeavesOneCellWithoutWalls) {
+    AutoWallsOptions o = options();
+    o.textureBudgetMB = 1e-6;
+    const AutoWallsResult r = proposeWalls(hall(), bare(), o);
+    EXPECT_EQ(r.description.cells.size(), 1u);
+    EXPECT_TRUE(r.description.walls.empty());
+    for (std::size_t i = 1; i < r.candidates.size(); ++i) EXPECT_FALSE(r.candidates[i].withinBudget);
+}
+
+TEST(AutoWalls, IsDeterministic) {
+    const std::string a = scenes::writeSceneDescription(proposeWalls(hall(), bare(), options()).description);
+    const std::string b = scenes::writeSceneDescription(proposeWalls(hall(), bare(), options()).description);
+    EXPECT_EQ(a, b);
+}
+
+TEST(AutoWalls, EvaluatesTheGivenWallsWithTheSameModel) {
+    const scenes::Scene scene = hall();
+    const AutoWallsResult first = proposeWalls(scene, bare(), options());
+    const AutoWallsResult again = proposeWalls(scene, first.description, options());
+    ASSERT_TRUE(again.given.has_value());
+    EXPECT_DOUBLE_EQ(again.given->expectedMs, first.candidates[first.chosen].expectedMs);
+    EXPECT_EQ(again.given->textures, first.candidates[first.chosen].textures);
+}
+
+TEST(AutoWalls, RejectsBadOptionsByName) {
+    struct Case {
+        const char* name;
+        void (*edit)(AutoWallsOptions&);
+        const char* message;
+    };
+    const Case cases[] = {
+        {"budget", [](AutoWallsOptions& o) { o.textureBudgetMB = 0.0; }, "texture budget"},
+        {"cell size", [](AutoWallsOptions& o) { o.minCellSize = -1.0; }, "minimum cell size"},
+        {"cells per axis", [](AutoWallsOptions& o) { o.maxCellsPerAxis = 0; }, "cells per axis"},
+        {"cost", [](AutoWallsOptions& o) { o.msPerMillionTriangles = -2.0; }, "ms per million triangles"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        AutoWallsOptions o = options();
+        c.edit(o);
+        EXPECT_THAT([&] { proposeWalls(hall(), bare(), o); }, ::testing::ThrowsMessage<Error>(HasSubstr(c.message)));
+    }
+    EXPECT_THAT([] { proposeWalls(scenes::Scene{}, bare(), options()); },
+                ::testing::ThrowsMessage<Error>(HasSubstr("has no objects")));
+}
+
+}  // namespace
+}  // namespace cavewall::walls

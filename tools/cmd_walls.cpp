@@ -1,0 +1,92 @@
+#include "scenes/file_write.h"
+#include "scenes/image_io.h"
+#include "scenes/loader.h"
+#include "scenes/scene_description_io.h"
+#include "tools/args.h"
+#include "tools/commands.h"
+#include "walls/auto_walls.h"
+#include "walls/plan_diagram.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+namespace cavewall::tools {
+
+const char* const kWallsUsage =
+    "usage: cavewall walls MODEL --out SCENE_JSON [--texture-budget MB] [--alpha DEG] [--max-res N]\n"
+    "                      [--ppd N] [--min-cell M] [--max-cells N] [--ms-per-mtri MS]\n"
+    "                      [--ms-per-wall MS] [--png FILE]\n"
+    "\n"
+    "Proposes cells and virtual walls for MODEL (a glTF/GLB nobody prepared, or a scene.json or\n"
+    "its folder, whose cells and walls are replaced): finds structure (large planes, or the\n"
+    "scene's structure node names), the floor, ceiling and walkable rectangle, and tries every\n"
+    "grid of cells at least --min-cell metres wide (default 4, at most --max-cells per axis,\n"
+    "default 8; each cut moved to where the fewest objects straddle it). Each grid is planned\n"
+    "with the zone planner at --alpha (default 10 degrees), --ppd (default 10) and --max-res\n"
+    "(default 512 texels per side); the chosen grid has the least expected frame time of a walk\n"
+    "over the floor, --ms-per-mtri per million triangles of the viewer's cell (default 150) plus\n"
+    "--ms-per-wall per wall side the cell shows (default 5), among those whose textures fit\n"
+    "--texture-budget MiB (default 4096; RGBA8 + MIP chain). Writes a valid scene.json (--out;\n"
+    "model paths relative to its folder) and a top-view diagram of the proposal's zones\n"
+    "(--png). Prints every candidate. See walls/auto_walls.h for the rules.\n";
+
+int runWalls(const std::vector<std::string>& words) {
+    const Args args(words, {});
+    args.expectFlags({"out", "texture-budget", "alpha", "max-res", "ppd", "min-cell", "max-cells", "ms-per-mtri",
+                      "ms-per-wall", "png"});
+    walls::AutoWallsOptions options;
+    options.plan.alphaDeg = args.number("alpha", options.plan.alphaDeg, 1e-6, 90.0);
+    options.plan.pixelsPerDegree = args.number("ppd", options.plan.pixelsPerDegree, 0.01, 1000.0);
+    options.plan.maxResolution = static_cast<int>(args.integer("max-res", 512, 1, 16384));
+    options.textureBudgetMB = args.number("texture-budget", options.textureBudgetMB, 1e-6, 1e9);
+    options.minCellSize = args.number("min-cell", options.minCellSize, 0.1, 1e6);
+    options.maxCellsPerAxis = static_cast<int>(args.integer("max-cells", options.maxCellsPerAxis, 1, 26));
+    options.msPerMillionTriangles = args.number("ms-per-mtri", options.msPerMillionTriangles, 0.0, 1e9);
+    options.msPerWallSide = args.number("ms-per-wall", options.msPerWallSide, 0.0, 1e9);
+    walls::validateAutoWallsOptions(options);
+    const std::string& path = args.positional(0, "MODEL");
+    if (args.positional().size() > 1)
+        throw Error("walls: expected one MODEL, got " + std::to_string(args.positional().size()) + " words");
+    const std::filesystem::path out = args.require("out");
+
+    scenes::SceneDescription base;
+    const scenes::Scene scene = scenes::loadSceneFile(path, &base);
+    for (const std::string& w : scene.warnings) std::cerr << "cavewall: warning: " << w << "\n";
+    std::vector<std::string> warnings;
+    walls::AutoWallsResult result = walls::proposeWalls(scene, base, options, &warnings);
+    for (const std::string& w : warnings) std::cerr << "cavewall: warning: " << w << "\n";
+
+    // Model paths relative to the new scene.json's folder.
+    const std::filesystem::path outFolder = std::filesystem::absolute(out).parent_path();
+    for (scenes::ModelFile& m : result.description.models)
+        m.file = std::filesystem::relative(std::filesystem::absolute(base.folder / m.file), outFolder);
+    result.description.folder = outFolder;
+
+    std::printf("floor y %.3f m, ceiling y %.3f m, walkable x [%.2f, %.2f] z [%.2f, %.2f] m, %zu structure objects\n",
+                result.floorY, result.ceilingY, result.floorMin.x, result.floorMax.x, result.floorMin.y,
+                result.floorMax.y, result.structure.size());
+    std::printf("%-7s %6s %12s %16s %9s %12s %7s\n", "grid", "cells", "expected ms", "cell triangles", "textures",
+                "texture MiB", "budget");
+    for (std::size_t i = 0; i < result.candidates.size(); ++i) {
+        const walls::AutoWallsCandidate& c = result.candidates[i];
+        std::printf("%2dx%-4d %6d %12.1f %16.0f %9d %12.1f %7s%s\n", c.nx, c.nz, c.nx * c.nz, c.expectedMs,
+                    c.meanCellTriangles, c.textures, c.textureMB, c.withinBudget ? "fits" : "over",
+                    static_cast<int>(i) == result.chosen ? "  <- chosen" : "");
+    }
+    if (const auto& g = result.given)
+        std::printf("%-7s %6zu %12.1f %16.0f %9d %12.1f %7s  (the input's own cells and walls)\n", "given",
+                    base.cells.size(), g->expectedMs, g->meanCellTriangles, g->textures, g->textureMB,
+                    g->withinBudget ? "fits" : "over");
+    scenes::writeBytesAtomically(out, scenes::writeSceneDescription(result.description));
+    std::cout << "wrote " << out.string() << " (" << result.description.cells.size() << " cells, "
+              << result.description.walls.size() << " virtual walls)\n";
+    if (auto png = args.get("png")) {
+        const walls::Plan plan = walls::planZones(result.description, options.plan);
+        scenes::writeImage(*png, walls::planDiagram(plan, result.description, &scene, 200));
+        std::cout << "wrote " << *png << "\n";
+    }
+    return 0;
+}
+
+}  // namespace cavewall::tools

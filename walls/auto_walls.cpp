@@ -1,0 +1,302 @@
+#include "walls/auto_walls.h"
+
+#include "config/error.h"
+#include "scenes/region.h"
+#include "scenes/scene_description_io.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace cavewall::walls {
+
+namespace {
+
+// The widest extent of a box and its thinnest axis.
+struct Shape {
+    int thinAxis = 1;
+    double thickness = 0.0, second = 0.0;
+};
+
+Shape shapeOf(const scenes::Bounds& b) {
+    const glm::dvec3 s = b.size();
+    Shape shape;
+    int axes[3] = {0, 1, 2};
+    std::sort(axes, axes + 3, [&](int a, int c) { return s[a] < s[c] || (s[a] == s[c] && a < c); });
+    shape.thinAxis = axes[0];
+    shape.thickness = s[axes[0]];
+    shape.second = s[axes[1]];
+    return shape;
+}
+
+bool matchesPattern(const std::string& name, const std::string& pattern) {
+    // '*' matches any run of characters (as scene.json's structureNodes).
+    std::size_t n = 0, p = 0, star = std::string::npos, mark = 0;
+    while (n < name.size()) {
+        if (p < pattern.size() && pattern[p] == '*') star = p++, mark = n;
+        else if (p < pattern.size() && pattern[p] == name[n]) ++p, ++n;
+        else if (star != std::string::npos) p = star + 1, n = ++mark;
+        else return false;
+    }
+    while (p < pattern.size() && pattern[p] == '*') ++p;
+    return p == pattern.size();
+}
+
+double overlap1d(double a0, double a1, double b0, double b1) { return std::max(0.0, std::min(a1, b1) - std::max(a0, b0)); }
+
+// Cuts `count` cells over [lo, hi], each interior cut moved within a quarter cell to where the
+// fewest content boxes straddle it.
+std::vector<double> chooseCuts(double lo, double hi, int count, const std::vector<scenes::Bounds>& boxes, int axis) {
+    std::vector<double> cuts{lo};
+    const double width = (hi - lo) / count;
+    for (int k = 1; k < count; ++k) {
+        const double centre = lo + k * width;
+        double best = centre;
+        std::size_t bestStraddling = std::numeric_limits<std::size_t>::max();
+        const int steps = static_cast<int>(std::floor(width / 4.0 / 0.05));
+        for (int i = 0; i <= 2 * steps; ++i) {
+            // Centre first, then alternately further out: ties keep the cut nearest the even split.
+            const int offset = (i % 2 == 0 ? 1 : -1) * ((i + 1) / 2);
+            const double x = centre + 0.05 * offset;
+            std::size_t straddling = 0;
+            for (const scenes::Bounds& b : boxes)
+                if (b.min[axis] < x - 1e-9 && b.max[axis] > x + 1e-9) ++straddling;
+            if (straddling < bestStraddling) bestStraddling = straddling, best = x;
+        }
+        cuts.push_back(best);
+    }
+    cuts.push_back(hi);
+    return cuts;
+}
+
+// Wall quad on the segment a -> b (x, z) from y0 to y1 whose front faces `frontCentre`.
+scenes::VirtualWall wallBetween(glm::dvec2 a, glm::dvec2 b, double y0, double y1, glm::dvec2 frontCentre) {
+    scenes::VirtualWall w;
+    w.lowerLeft = {a.x, y0, a.y};
+    w.lowerRight = {b.x, y0, b.y};
+    w.upperLeft = {a.x, y1, a.y};
+    const glm::dvec3 normal = glm::cross(w.lowerRight - w.lowerLeft, w.upperLeft - w.lowerLeft);
+    const glm::dvec2 toFront = frontCentre - 0.5 * (a + b);
+    if (normal.x * toFront.x + normal.z * toFront.y < 0.0) {
+        std::swap(w.lowerLeft, w.lowerRight);
+        w.upperLeft = {b.x, y1, b.y};
+    }
+    return w;
+}
+
+struct Grid {
+    std::vector<double> xs, zs;  // cut positions, first and last are the floor's edges
+};
+
+scenes::SceneDescription describe(const scenes::SceneDescription& base, const Grid& g, double floorY, double ceilingY,
+                                  double eyeHeight) {
+    scenes::SceneDescription d = base;
+    d.cells.clear();
+    d.walls.clear();
+    d.realWalls.clear();
+    d.wallPath.clear();
+    const int nx = static_cast<int>(g.xs.size()) - 1, nz = static_cast<int>(g.zs.size()) - 1;
+    auto index = [&](int i, int k) { return k * nx + i; };
+    for (int k = 0; k < nz; ++k)
+        for (int i = 0; i < nx; ++i) {
+            scenes::Cell c;
+            c.name.assign(1, static_cast<char>('A' + std::min(k, 25)));
+            c.name += std::to_string(i + 1);
+            c.floorY = floorY;
+            // Counter-clockwise seen from above (+x towards -z), as the plant's cells.
+            c.region = {{g.xs[i], g.zs[k + 1]}, {g.xs[i + 1], g.zs[k + 1]}, {g.xs[i + 1], g.zs[k]}, {g.xs[i], g.zs[k]}};
+            d.cells.push_back(std::move(c));
+        }
+    auto centre = [&](int cell) {
+        glm::dvec2 c(0.0);
+        for (const glm::dvec2& p : d.cells[cell].region) c += p;
+        return c / static_cast<double>(d.cells[cell].region.size());
+    };
+    for (int k = 0; k < nz; ++k)
+        for (int i = 0; i < nx; ++i) {
+            const int here = index(i, k);
+            if (i + 1 < nx) {
+                const int there = index(i + 1, k);
+                scenes::VirtualWall w = wallBetween({g.xs[i + 1], g.zs[k]}, {g.xs[i + 1], g.zs[k + 1]}, floorY, ceilingY, centre(here));
+                w.name = d.cells[here].name + "|" + d.cells[there].name;
+                w.cells = {here, there};
+                d.walls.push_back(w);
+            }
+            if (k + 1 < nz) {
+                const int there = index(i, k + 1);
+                scenes::VirtualWall w = wallBetween({g.xs[i], g.zs[k + 1]}, {g.xs[i + 1], g.zs[k + 1]}, floorY, ceilingY, centre(here));
+                w.name = d.cells[here].name + "|" + d.cells[there].name;
+                w.cells = {here, there};
+                d.walls.push_back(w);
+            }
+        }
+    // A loop a quarter of the way in from the floor's edges, at eye height.
+    const double x0 = g.xs.front(), x1 = g.xs.back(), z0 = g.zs.front(), z1 = g.zs.back();
+    const double ix = 0.25 * (x1 - x0), iz = 0.25 * (z1 - z0), y = floorY + eyeHeight;
+    d.walkPath = {{x0 + ix, y, z0 + iz}, {x1 - ix, y, z0 + iz}, {x1 - ix, y, z1 - iz}, {x0 + ix, y, z1 - iz}, {x0 + ix, y, z0 + iz}};
+    const double headLow = floorY + std::max(0.5, eyeHeight - 0.5), headHigh = std::min(ceilingY, floorY + eyeHeight + 0.3);
+    d.headHeightRange = {headLow, std::max(headLow, headHigh)};
+    return d;
+}
+
+double textureMB(const Plan& plan) {
+    double bytes = 0.0;
+    for (const Texture& t : plan.textures) {
+        const double x = std::min(t.resolution.x, plan.options.maxResolution);
+        const double y = std::min(t.resolution.y, plan.options.maxResolution);
+        bytes += x * y * 4.0 * 4.0 / 3.0;
+    }
+    return bytes / (1024.0 * 1024.0);
+}
+
+
+// E[ms], triangles, textures and MiB of description `d` (AutoWallsCandidate without nx, nz).
+// A cell's triangles are those of the content boxes meeting its region's bounding rectangle
+// (exact for the rectangular cells proposed here).
+AutoWallsCandidate evaluate(const scenes::SceneDescription& d, const std::vector<scenes::Bounds>& content,
+                            const std::vector<std::size_t>& contentTriangles, const AutoWallsOptions& options) {
+    AutoWallsCandidate c;
+    double area = 0.0;
+    for (const scenes::Cell& cell : d.cells) area += std::abs(scenes::regionArea(cell.region));
+    for (std::size_t i = 0; i < d.cells.size(); ++i) {
+        const scenes::Cell& cell = d.cells[i];
+        glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+        for (const glm::dvec2& p : cell.region) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        const double share = area > 0.0 ? std::abs(scenes::regionArea(cell.region)) / area : 0.0;
+        double triangles = 0.0;
+        for (std::size_t o = 0; o < content.size(); ++o)
+            if (overlap1d(content[o].min.x, content[o].max.x, lo.x, hi.x) > 0.0 &&
+                overlap1d(content[o].min.z, content[o].max.z, lo.y, hi.y) > 0.0)
+                triangles += static_cast<double>(contentTriangles[o]);
+        int sides = 0;
+        for (const scenes::VirtualWall& w : d.walls) sides += (w.cells[0] == static_cast<int>(i)) + (w.cells[1] == static_cast<int>(i));
+        c.meanCellTriangles += share * triangles;
+        c.expectedMs += share * (options.msPerMillionTriangles * triangles / 1e6 + options.msPerWallSide * sides);
+    }
+    if (!d.walls.empty()) {
+        const Plan plan = planZones(d, options.plan);
+        c.textures = static_cast<int>(plan.textures.size());
+        c.textureMB = textureMB(plan);
+    }
+    c.withinBudget = c.textureMB <= options.textureBudgetMB;
+    return c;
+}
+
+}  // namespace
+
+void validateAutoWallsOptions(const AutoWallsOptions& o) {
+    validatePlanOptions(o.plan);
+    auto check = [](bool ok, const std::string& name, const std::string& expected, double got) {
+        if (!ok) throw Error("auto walls: " + name + " out of range (expected " + expected + ", got " + std::to_string(got) + ")");
+    };
+    check(std::isfinite(o.textureBudgetMB) && o.textureBudgetMB > 0.0, "texture budget", "> 0 MiB", o.textureBudgetMB);
+    check(std::isfinite(o.msPerMillionTriangles) && o.msPerMillionTriangles >= 0.0, "ms per million triangles", ">= 0",
+          o.msPerMillionTriangles);
+    check(std::isfinite(o.msPerWallSide) && o.msPerWallSide >= 0.0, "ms per wall side", ">= 0", o.msPerWallSide);
+    check(std::isfinite(o.minCellSize) && o.minCellSize > 0.0, "minimum cell size", "> 0 m", o.minCellSize);
+    check(o.maxCellsPerAxis >= 1 && o.maxCellsPerAxis <= 26, "cells per axis", "1 to 26", o.maxCellsPerAxis);
+    check(o.planarThickness > 0.0 && o.planarThickness < 1.0, "planar thickness", "in (0, 1)", o.planarThickness);
+    check(o.planarExtent > 0.0 && o.planarExtent <= 1.0, "planar extent", "in (0, 1]", o.planarExtent);
+}
+
+AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDescription& base,
+                             const AutoWallsOptions& options, std::vector<std::string>* warnings) {
+    validateAutoWallsOptions(options);
+    if (scene.objects.empty()) throw Error("auto walls: scene '" + scene.name + "' has no objects (expected at least one)");
+    if (warnings && (!base.realWalls.empty() || !base.walls.empty()))
+        warnings->push_back("auto walls: the description's " + std::to_string(base.walls.size()) + " walls and " +
+                            std::to_string(base.realWalls.size()) + " real walls are replaced (real walls and portals are not proposed)");
+    AutoWallsResult result;
+    const scenes::Bounds all = scene.bounds();
+    const glm::dvec3 size = all.size();
+
+    // 1. Structure: named by the description's patterns, or a large plane.
+    std::vector<std::string> patterns;
+    for (const scenes::ModelFile& m : base.models) patterns.insert(patterns.end(), m.structureNodes.begin(), m.structureNodes.end());
+    scenes::Bounds floorBox;
+    double floorTop = std::numeric_limits<double>::infinity(), ceilingBottom = -std::numeric_limits<double>::infinity();
+    std::vector<const scenes::Object*> verticalPlanes;
+    std::vector<scenes::Bounds> content;
+    std::vector<std::size_t> contentTriangles;
+    for (const scenes::Object& o : scene.objects) {
+        const Shape s = shapeOf(o.worldBounds);
+        bool named = o.role == scenes::Role::Structure;
+        for (const std::string& p : patterns) named = named || matchesPattern(o.name, p);
+        bool plane = s.second > 0.0 && s.thickness <= options.planarThickness * s.second;
+        if (plane) {  // large: each of its two long axes covers planarExtent of the model's
+            for (int a = 0; a < 3; ++a)
+                if (a != s.thinAxis && a != 1 && o.worldBounds.size()[a] < options.planarExtent * size[a]) plane = false;
+            if (s.thinAxis != 1 && o.worldBounds.size().y < options.planarExtent * size.y) plane = false;
+        }
+        if (named || plane) {
+            result.structure.push_back(o.name);
+            if (s.thinAxis == 1 && plane) {
+                // Horizontal: below the model's middle a floor (the lowest top wins), above a
+                // ceiling (the highest bottom wins).
+                if (o.worldBounds.centre().y < all.centre().y) floorTop = std::min(floorTop, o.worldBounds.max.y), floorBox.add(o.worldBounds);
+                else ceilingBottom = std::max(ceilingBottom, o.worldBounds.min.y);
+            } else if (plane) {
+                verticalPlanes.push_back(&o);
+            }
+            continue;
+        }
+        content.push_back(o.worldBounds);
+        contentTriangles.push_back(o.mesh >= 0 && o.mesh < static_cast<int>(scene.meshes.size())
+                                       ? scene.meshes[o.mesh].indices.size() / 3 : 0);
+    }
+    result.floorY = std::isfinite(floorTop) ? floorTop : all.min.y;
+    result.ceilingY = ceilingBottom > result.floorY + 1.0 ? ceilingBottom : all.max.y;
+    if (result.ceilingY <= result.floorY + 1e-3) result.ceilingY = result.floorY + 3.0;
+
+    // 2. Walkable rectangle: the floor planes', inside the hall walls.
+    const scenes::Bounds& floorArea = floorBox.empty() ? all : floorBox;
+    glm::dvec2 lo(floorArea.min.x, floorArea.min.z), hi(floorArea.max.x, floorArea.max.z);
+    for (const scenes::Object* o : verticalPlanes) {
+        const scenes::Bounds& b = o->worldBounds;
+        const int axis = shapeOf(b).thinAxis == 0 ? 0 : 2;  // the wall's normal axis (x or z)
+        const int k = axis == 0 ? 0 : 1;
+        const double c = b.centre()[axis];
+        if (c < 0.5 * (lo[k] + hi[k])) lo[k] = std::max(lo[k], b.max[axis]);
+        else hi[k] = std::min(hi[k], b.min[axis]);
+    }
+    if (hi.x - lo.x < 1e-3 || hi.y - lo.y < 1e-3) lo = {all.min.x, all.min.z}, hi = {all.max.x, all.max.z};
+    result.floorMin = lo;
+    result.floorMax = hi;
+    std::sort(result.structure.begin(), result.structure.end());
+    result.structure.erase(std::unique(result.structure.begin(), result.structure.end()), result.structure.end());
+
+    scenes::SceneDescription named = base;
+    if (!named.models.empty()) {
+        std::vector<std::string>& nodes = named.models.front().structureNodes;
+        for (const std::string& s : result.structure)
+            if (std::none_of(patterns.begin(), patterns.end(), [&](const std::string& p) { return matchesPattern(s, p); }))
+                nodes.push_back(s);
+    }
+
+    // 3-4. Candidates, cost and budget.
+    const int maxX = std::clamp(static_cast<int>((hi.x - lo.x) / options.minCellSize), 1, options.maxCellsPerAxis);
+    const int maxZ = std::clamp(static_cast<int>((hi.y - lo.y) / options.minCellSize), 1, options.maxCellsPerAxis);
+    std::vector<scenes::SceneDescription> descriptions;
+    for (int nx = 1; nx <= maxX; ++nx)
+        for (int nz = 1; nz <= maxZ; ++nz) {
+            Grid g{chooseCuts(lo.x, hi.x, nx, content, 0), chooseCuts(lo.y, hi.y, nz, content, 2)};
+            scenes::SceneDescription d = describe(named, g, result.floorY, result.ceilingY, base.eyeHeight);
+            scenes::validateSceneDescription(d, "auto walls");
+            AutoWallsCandidate c = evaluate(d, content, contentTriangles, options);
+            c.nx = nx, c.nz = nz;
+            result.candidates.push_back(c);
+            descriptions.push_back(std::move(d));
+            // More cells along z only add walls and textures: the rest of this row is over too.
+            if (!c.withinBudget) break;
+        }
+    for (std::size_t i = 1; i < result.candidates.size(); ++i) {
+        const AutoWallsCandidate& c = result.candidates[i];
+        const AutoWallsCandidate& best = result.candidates[result.chosen];
+        if (c.withinBudget && c.expectedMs < best.expectedMs) result.chosen = static_cast<int>(i);
+    }
+    result.description = std::move(descriptions[result.chosen]);
+    if (!base.walls.empty()) result.given = evaluate(base, content, contentTriangles, options);
+    return result;
+}
+
+}  // namespace cavewall::walls

@@ -1,0 +1,85 @@
+#pragma once
+// Automatic virtual walls (issue 19, seed 000's future work): cells and virtual walls proposed
+// for a model nobody prepared. GL-free.
+//
+// 1. Structure. An object is structure when its node name matches one of the description's
+//    structure patterns or it is a large plane: its bounding box is thinner than
+//    `planarThickness` of its second-largest extent and that extent is at least
+//    `planarExtent` of the model's horizontal extent along the same axes. Horizontal planes
+//    give the floor (the lowest; its top is floorY) and the ceiling (the highest; its bottom
+//    is the walls' top); without them the model's bounds do.
+// 2. Walkable floor. The (x, z) rectangle of the floor planes (or of the model), shrunk to the
+//    inside of vertical structure planes that span most of it (hall walls).
+// 3. Candidates. Every grid of nx x nz cells over that rectangle with cells at least
+//    `minCellSize` metres wide, nx, nz <= maxCellsPerAxis (a row of nz stops at its first
+//    candidate over the budget: more cells only add walls and textures). Each cut is moved, within a quarter
+//    of a cell, to the position (0.05 m steps) that the fewest content objects straddle.
+//    Adjacent cells are separated by one virtual wall from floorY to the ceiling.
+// 4. Cost. The expected frame time of a walk that visits the floor uniformly:
+//      E[ms] = sum over cells of (area share) x (msPerMillionTriangles x the cell's triangles
+//              [content objects whose box meets the cell, instances counted] / 1e6)
+//              + msPerWallSide x (the cell's virtual wall sides: its wall layers' fill)
+//    where the textures' count and size come from the planner itself (walls/plan.h, planZones
+//    with `plan`), and the candidate must fit `textureBudgetMB` (RGBA8 + MIP chain, each
+//    texture's resolution capped at plan.maxResolution). The one-cell candidate (no walls,
+//    the whole model as geometry) always fits, so a proposal always exists.
+//    The costs per triangle and per texture are inputs: measure them on the target machine
+//    (`cavewall bench`'s full-geometry and walls rows give both); the defaults are this
+//    project's llvmpipe figures at 1024 x 1024 per screen (README, issue 14's table).
+// Deterministic: the same scene and options give the same description, byte for byte.
+
+#include "scenes/scene.h"
+#include "scenes/scene_description.h"
+#include "walls/plan.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cavewall::walls {
+
+struct AutoWallsOptions {
+    PlanOptions plan;                       // alpha, texel density, resolution cap
+    double textureBudgetMB = 4096.0;        // MiB of wall textures (RGBA8 + MIP chain), > 0
+    double msPerMillionTriangles = 150.0;   // frame ms per million triangles drawn, >= 0
+    double msPerWallSide = 5.0;             // frame ms per wall side the viewer's cell shows, >= 0
+    double minCellSize = 4.0;               // metres, smallest cell width, > 0
+    int maxCellsPerAxis = 8;                // 1 to 26
+    double planarThickness = 0.05;          // a plane's thickness / its second extent
+    double planarExtent = 0.5;              // a plane's extent / the model's, per axis
+};
+
+// Throws cavewall::Error naming the option when it is out of range.
+void validateAutoWallsOptions(const AutoWallsOptions& options);
+
+struct AutoWallsCandidate {
+    int nx = 1, nz = 1;                     // cells along x and z
+    double expectedMs = 0.0;                // E[ms] above
+    double meanCellTriangles = 0.0;         // area-weighted triangles drawn as geometry
+    int textures = 0;                       // planned textures (own and beyond walls)
+    double textureMB = 0.0;                 // their MiB (RGBA8 + MIP chain)
+    bool withinBudget = true;
+};
+
+struct AutoWallsResult {
+    scenes::SceneDescription description;   // the proposal: the input's models, with structure
+                                            // patterns added, and new cells, walls and walk path
+    double floorY = 0.0, ceilingY = 0.0;
+    glm::dvec2 floorMin{0.0}, floorMax{0.0};  // walkable rectangle (x, z)
+    std::vector<std::string> structure;     // names of the objects found to be structure
+    std::vector<AutoWallsCandidate> candidates;  // in the order tried (nx, then nz; a row of nz
+                                            // stops at its first candidate over the budget)
+    int chosen = 0;                         // index into candidates
+    // The same figures for the input's own cells and walls (hand-placed), when it has walls;
+    // nx = nz = 0. A cell's triangles are counted over its region's bounding rectangle.
+    std::optional<AutoWallsCandidate> given;
+};
+
+// Proposes cells and virtual walls for `scene`, loaded from `base` (whose cells, walls, real
+// walls and paths are replaced: real walls and portals are not proposed yet, and a warning in
+// `warnings` says so when `base` had any). Throws cavewall::Error for bad options or a scene
+// without objects.
+AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDescription& base,
+                             const AutoWallsOptions& options, std::vector<std::string>* warnings = nullptr);
+
+}  // namespace cavewall::walls
