@@ -188,7 +188,7 @@ TEST(RunCli, BadFlagsAndSpecsGiveClearErrors) {
          "--triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod 0"},
         {"negative lod", {"--lod", "-1"}, "--lod: expected a number in [0"},
         {"frame budget without levels", {"--frame-budget-ms", "16.7"},
-         "--frame-budget-ms: needs levels of detail (--lod PX with PX > 0), got --lod 0"},
+         "--frame-budget-ms: needs levels of detail (--lod PX with PX > 0) or --clusters, got --lod 0"},
         {"both budgets", {"--lod", "1", "--frame-budget-ms", "16.7", "--triangle-budget", "5000"},
          "--frame-budget-ms and --triangle-budget: expected one of them, got both"},
     };
