@@ -70,6 +70,20 @@ std::vector<NodeFrame> clusterNodeFrames(const ClusterModel& model, const std::v
     return frames;
 }
 
+double fullDetailCostMs(const ClusterModel& model) {
+    double ms = 0.0;
+    for (const ClusterNode& node : model.tree.nodes)
+        if (node.leaf() && !node.bounds.empty())
+            ms += model.costs.msPerObject +
+                  static_cast<double>(model.objectTriangles.at(node.object)) * model.costs.msPerTriangle;
+    return ms;
+}
+
+double controlledCostMs(const ClusterFramePlan& plan, double fullDetailMs) {
+    if (plan.predictedMs >= plan.budgetMs) return plan.predictedMs;
+    return std::max(plan.predictedMs, std::min(plan.budgetMs, fullDetailMs));
+}
+
 ClusterFramePlan planClusterFrame(const ClusterModel& model, const std::vector<display::ScreenView>& views,
                                   const glm::dmat4& worldFromCave, glm::dvec3 eyeWorld, double budgetMs,
                                   ClusterCoherence* coherence) {

@@ -70,6 +70,18 @@ struct ClusterFramePlan {
 std::vector<NodeFrame> clusterNodeFrames(const ClusterModel& model, const std::vector<display::ScreenView>& views,
                                          const glm::dmat4& worldFromCave, glm::dvec3 eyeWorld);
 
+// The predicted cost of every object at full detail (all leaves' Full representation): the most
+// any selection can cost, so a budget above it buys nothing.
+double fullDetailCostMs(const ClusterModel& model);
+
+// What a frame-time controller (display/frame_budget.h) should be told a frame cost, in
+// predicted ms: the selection's cost, or, when the selection stayed below its budget, the budget
+// (at most fullDetailCostMs). Refinement is discrete (a cluster's children may cost far more
+// than the cluster), so a frame that could not use its budget says nothing about whether a
+// larger one would fit; reporting only what was drawn would hold the budget at twice the
+// root's cost for ever.
+double controlledCostMs(const ClusterFramePlan& plan, double fullDetailMs);
+
 // clusterNodeFrames, then selectClusters under `budgetMs`, as drawable data.
 ClusterFramePlan planClusterFrame(const ClusterModel& model, const std::vector<display::ScreenView>& views,
                                   const glm::dmat4& worldFromCave, glm::dvec3 eyeWorld, double budgetMs,

@@ -147,6 +147,7 @@ RunSummary runSession(const RunOptions& o) {
     std::optional<display::FrameTimeBudget> frameBudget;
     if (o.frameBudgetMs > 0.0) frameBudget.emplace(o.frameBudgetMs);
     summary.walls = walkthrough.hasWalls();
+    const double fullDetailMs = o.clusters ? render::fullDetailCostMs(*walkthrough.clusterModel()) : 0.0;
     if (const render::ClusterModel* m = walkthrough.clusterModel()) {
         const gl::ClusterBakeStats& b = *walkthrough.clusterBakeStats();
         summary.clusters = b.clusters, summary.clustersMade = b.made, summary.clustersReused = b.reused;
@@ -168,8 +169,10 @@ RunSummary runSession(const RunOptions& o) {
         if (i == 0) summary.firstFrameSeconds = since();
         if (cluster) syncMs = app::combineFrame(*cluster, r, syncMs, screens);
         if (frameBudget && !o.clusters) frameBudget->update(r.frameMs, r.geometryTriangles);
-        if (frameBudget && o.clusters)
-            frameBudget->update(r.frameMs, static_cast<std::size_t>(std::llround(r.clusterPredictedMs * 1000.0)));  // rank 0: the slowest rank's time
+        if (frameBudget && o.clusters) {
+            const double ms = render::controlledCostMs(*walkthrough.lastClusterPlan(), fullDetailMs);
+            frameBudget->update(r.frameMs, static_cast<std::size_t>(std::llround(ms * 1000.0)));
+        }  // rank 0: the slowest rank's time
         if (!output) continue;
         output->writeFrame(i, in.time, in.head.position, r, syncMs);
         if (in.readImages) summary.foldouts.push_back(output->saveImages(i, r.images));

@@ -116,6 +116,19 @@ TEST(ClusterFrame, DrawsTheClusterAsATexturedBoxUnderASmallBudgetAndItsObjectsUn
     EXPECT_LE(large.predictedMs, large.budgetMs + 1e-12);
 }
 
+TEST(ClusterFrame, TheControllerIsToldTheBudgetWhenTheSelectionCouldNotUseIt) {
+    const ClusterModel m = twoObjects(-0.75);
+    // 0.01 + 1000 * 1e-4 and 0.01 + 3000 * 1e-4.
+    EXPECT_NEAR(fullDetailCostMs(m), 0.42, 1e-12);
+    ClusterFramePlan plan;
+    plan.predictedMs = 0.05, plan.budgetMs = 0.3;  // the box alone; its objects did not fit
+    EXPECT_DOUBLE_EQ(controlledCostMs(plan, 0.42), 0.3);
+    plan.budgetMs = 5.0;                            // more than everything costs
+    EXPECT_DOUBLE_EQ(controlledCostMs(plan, 0.42), 0.42);
+    plan.predictedMs = 0.6, plan.budgetMs = 0.3;    // the root alone over a tiny budget
+    EXPECT_DOUBLE_EQ(controlledCostMs(plan, 0.42), 0.6);
+}
+
 TEST(ClusterFrame, NothingOutsideEveryFrustumIsDrawn) {
     const display::Display display(config::loadDisplayConfig("cave4"));
     // Above the head: cave4 has no ceiling, and its walls' frusta end below 2.6 m within 1 m of
