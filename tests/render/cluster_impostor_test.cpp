@@ -129,6 +129,31 @@ TEST(ClusterFrame, TheControllerIsToldTheBudgetWhenTheSelectionCouldNotUseIt) {
     EXPECT_DOUBLE_EQ(controlledCostMs(plan, 0.42), 0.6);
 }
 
+TEST(ClusterFrame, ABackAndForthPathSwitchesAtMostOnce) {
+    // The eye walks back and forth along x in front of the cluster while the budget swings
+    // between fitting its objects (0.42 ms) and not (0.3 ms) every other frame: the wish to
+    // refine never lasts more than one frame, so the coherence counter (3 frames) keeps the box.
+    // Then the budget stays large: the cluster is refined once, after 3 frames, and stays.
+    const display::Display display(config::loadDisplayConfig("cave4"));
+    const ClusterModel m = twoObjects(-0.75);
+    ClusterCoherence coherence(3);
+    int switches = 0;
+    bool refined = false;
+    for (int frame = 0; frame < 40; ++frame) {
+        const double x = 0.5 * std::sin(frame * 0.7);
+        const display::HeadPose head{{x, 1.7, 0.0}, {1, 0, 0, 0}};
+        const double budget = frame < 20 ? (frame % 2 == 0 ? 0.42 : 0.3) : 0.42;
+        const ClusterFramePlan plan =
+            planClusterFrame(m, display.views(head), glm::dmat4(1.0), head.position, budget, &coherence);
+        const bool nowRefined = plan.boxes.empty();
+        if (frame > 0 && nowRefined != refined) ++switches;
+        refined = nowRefined;
+        EXPECT_LE(plan.predictedMs, budget + 1e-12) << frame;
+    }
+    EXPECT_EQ(switches, 1);
+    EXPECT_TRUE(refined);
+}
+
 TEST(ClusterFrame, NothingOutsideEveryFrustumIsDrawn) {
     const display::Display display(config::loadDisplayConfig("cave4"));
     // Above the head: cave4 has no ceiling, and its walls' frusta end below 2.6 m within 1 m of
