@@ -24,8 +24,11 @@ void validate(const RunOptions& o) {
     if (o.triangleBudget > 0 && !(o.lodPixels > 0.0))
         throw Error("--triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod " +
                     config::formatNumber(o.lodPixels));
-    if (o.frameBudgetMs > 0 && !(o.lodPixels > 0.0))
-        throw Error("--frame-budget-ms: needs levels of detail (--lod PX with PX > 0), got --lod " +
+    if (o.clusters && o.triangleBudget > 0)
+        throw Error("--clusters and --triangle-budget: expected --frame-budget-ms with --clusters (a time budget), "
+                    "got --triangle-budget");
+    if (o.frameBudgetMs > 0 && !(o.lodPixels > 0.0) && !o.clusters)
+        throw Error("--frame-budget-ms: needs levels of detail (--lod PX with PX > 0) or --clusters, got --lod " +
                     config::formatNumber(o.lodPixels));
     if (o.frameBudgetMs > 0 && o.triangleBudget > 0)
         throw Error("--frame-budget-ms and --triangle-budget: expected one of them, got both");

@@ -80,6 +80,11 @@ struct RunOptions {
     std::size_t triangleBudget = 0;             // --triangle-budget: per frame, 0 none (needs --lod)
     double frameBudgetMs = 0.0;                 // --frame-budget-ms: frame-time target, 0 none (needs --lod)
     double lodMaxPixels = 8.0;                  // --lod-max: the most a budget raises the tolerance to
+    // --clusters: seed 004's textured clusters instead of walls (walls/gl/walkthrough.h
+    // ClusterOptions); the budget is --frame-budget-ms's controller (predicted ms), else 16.7 ms.
+    bool clusters = false;
+    int clusterDivisions = 8;                   // --cluster-divisions N: finest grid N x max(1, N/4) x N
+    int clusterResolution = 64;                 // --cluster-res: face texture's longer side, texels
     std::filesystem::path out;                  // output folder (created)
     bool verbose = true;                        // progress and summary on stdout
     bool cluster = false;                       // --cluster: one process per screen group on MPI
@@ -117,6 +122,11 @@ struct RunSummary {
     // loaded, the walls prepared (plan, visibility, bake or cache check), the walkthrough ready
     // (uploads, first textures), and the first frame presented.
     double sceneSeconds = 0.0, wallsSeconds = 0.0, readySeconds = 0.0, firstFrameSeconds = 0.0;
+    // --clusters: clusters in the hierarchy, made now and read from the cache, and the measured
+    // costs (ms per triangle, per object, per textured and per average box).
+    int clusters = 0, clustersMade = 0, clustersReused = 0;
+    double clustersSeconds = 0.0;
+    double msPerTriangle = 0.0, msPerObject = 0.0, texturedBoxMs = 0.0, averageBoxMs = 0.0;
     int rank = 0;                               // cluster mode: this process's rank (only rank 0
                                                 // fills the fields above)
 };

@@ -167,7 +167,10 @@ ClusterSelection selectClusters(const ClusterTree& tree, const std::vector<NodeF
             continue;
         }
         const bool fits = total - cost[n] + childrenCost[n] <= budgetMs + 1e-12;
-        if (fits && (!coherence || coherence->allowRefine(n))) {
+        // A cluster that shows nothing (no representation, or none with any accuracy: the eye
+        // inside its box) is refined at once when it fits: delaying it would draw a hole.
+        const bool useless = initial[n] < 0 || frame[n].representations[initial[n]].accuracy <= 0.0;
+        if (fits && (useless || !coherence || coherence->allowRefine(n))) {
             total += childrenCost[n] - cost[n];
             for (int c : node.children)
                 if (visible[c]) open.push(c);

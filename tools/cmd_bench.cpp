@@ -21,7 +21,7 @@ const char* const kBenchUsage =
     "                      [--stereo mono|separate] [--quick] [--cache DIR] [--compare-every K] [--min-zone M] [--ppd N]\n"
     "                      [--bake-resolution N] [--alphas A,B,...] [--warp-alpha A]\n"
     "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
-    "                      [--walls flat|depth]\n"
+    "                      [--walls flat|depth] [--clusters]\n"
     "       cavewall bench --stability\n"
     "\n"
     "SCENE    error against run time in one run (a scene.json, its folder, or glTF/GLB with\n"
@@ -47,6 +47,9 @@ const char* const kBenchUsage =
     "         --walls depth: every walls mode bakes depth with colour and reprojects each wall\n"
     "         pixel to the eye (issue 16, walls/gl/depth_wall_pass.h); default flat. Run both\n"
     "         into two --out folders to compare.\n"
+    "         --clusters adds seed 004's textured clusters (`cavewall run --clusters`) held to\n"
+    "         --frame-budget-ms (16.67 when it is 0) by the controller, drawn in turn with full\n"
+    "         geometry and the walls modes (impostors made into the cache first).\n"
     "         Per mode: frame, CPU and GPU ms p50/p95/p99, speed-up, the triangles' p99/p50,\n"
     "         triangles, draw calls, textures, texels, disk and GPU MB, and the image error\n"
     "         against full geometry at the same frame, eye and screen, with the worst angular\n"
@@ -146,6 +149,7 @@ int runSceneBench(const Args& args) {
     o.frameBudgetMs = args.number("frame-budget-ms", o.frameBudgetMs, 0.0, 1e5);
     o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);
     o.wallKind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
+    o.clusters = args.has("clusters");
     if (std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg) == o.alphasDeg.end()) {
         std::string list;
         for (double a : o.alphasDeg) list += (list.empty() ? "" : ",") + config::formatNumber(a);
@@ -165,11 +169,11 @@ int runSceneBench(const Args& args) {
 }  // namespace
 
 int runBench(const std::vector<std::string>& words) {
-    const Args args(words, {"stability", "quick"});
+    const Args args(words, {"stability", "quick", "clusters"});
     args.expectFlags({"stability", "quick", "display", "path", "route", "out", "frames", "resolution", "stereo", "cache",
                       "compare-every",
                       "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod", "triangle-budget", "frame-budget-ms", "lod-max",
-                      "walls"});
+                      "walls", "clusters"});
     if (args.has("stability")) return runStability();
 #ifdef CAVEWALL_HAVE_GL
     if (!args.positional().empty()) return runSceneBench(args);

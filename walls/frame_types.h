@@ -69,6 +69,9 @@ struct FrameInput {
     // WalkthroughSettings::triangleBudget: a frame-time controller (display/frame_budget.h)
     // sets it frame by frame, the same on every cluster rank.
     std::size_t triangleBudget = 0;
+    // With clusters (gl::ClusterOptions): this frame's budget of predicted milliseconds, > 0
+    // overrides ClusterOptions::budgetMs (the frame-time controller sets it).
+    double clusterBudgetMs = 0.0;
 };
 
 // One wall's state in a frame (walls.csv).
@@ -114,6 +117,10 @@ struct FrameResult {
     int warpFallbacks = 0;                   // Transition::Warp: walls drawn as geometry because
                                              // their warp was ill-conditioned (eye near the plane)
     std::vector<WallState> walls;
+    // Clusters (gl::ClusterOptions): nodes drawn by kind, the selection's predicted cost and
+    // the budget it was held to, milliseconds. Zeros without clusters.
+    int clusterObjects = 0, clusterTextured = 0, clusterAverage = 0;
+    double clusterPredictedMs = 0.0, clusterBudgetMs = 0.0;
     // Per display screen (index = screen), summed over its eyes: wall-clock CPU ms of its views
     // (geometry, walls, cursor), triangles and draw calls. Screens this instance does not
     // render stay zero.

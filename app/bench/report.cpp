@@ -176,6 +176,7 @@ std::string_view toString(Mode mode) {
     case Mode::CellsLayer: return "cells+layer";
     case Mode::Near: return "near";
     case Mode::Walls: return "walls";
+    case Mode::Clusters: return "clusters";
     }
     return "?";
 }

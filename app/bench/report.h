@@ -35,9 +35,9 @@ struct FrameSample {
 };
 
 // What a mode draws (app/bench/gl/driver.h lists the modes).
-enum class Mode { Full, Cells, CellsLayer, Near, Walls };
+enum class Mode { Full, Cells, CellsLayer, Near, Walls, Clusters };
 
-// "full" | "cells" | "cells+layer" | "near" | "walls", as the mode column of bench.csv.
+// "full" | "cells" | "cells+layer" | "near" | "walls" | "clusters", as the mode column of bench.csv.
 std::string_view toString(Mode mode);
 
 struct ModeResult {

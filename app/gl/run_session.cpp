@@ -7,6 +7,8 @@
 #include "input/recording.h"
 #include "input/tracker_source.h"
 #include "input/tracking_pipeline.h"
+#include "render/cluster_diagram.h"
+#include "scenes/image_io.h"
 #include "scenes/loader.h"
 #include "app/run_cluster.h"
 #include "app/run_input.h"
@@ -116,7 +118,7 @@ RunSummary runSession(const RunOptions& o) {
     const auto context = makeContext(o, display);
 
     std::optional<walls::WallSetup> setup;
-    if (o.walls && !description.walls.empty()) setup = prepareWallsOnce(o, scene, description, *context, cluster.get());
+    if (o.walls && !o.clusters && !description.walls.empty()) setup = prepareWallsOnce(o, scene, description, *context, cluster.get());
     const int textureCount = setup ? static_cast<int>(setup->plan.textures.size()) : 0;
     const double wallsSeconds = since();
     gl::WalkthroughOptions options;
@@ -128,6 +130,13 @@ RunSummary runSession(const RunOptions& o) {
     options.render.lodPixels = o.lodPixels;
     options.triangleBudget = o.triangleBudget;
     options.lodMaxPixels = std::max(o.lodMaxPixels, o.lodPixels);
+    options.clusters.enabled = o.clusters;
+    if (o.clusters) {
+        options.clusters.divisions = {o.clusterDivisions, std::max(1, o.clusterDivisions / 4), o.clusterDivisions};
+        options.clusters.bake.resolution = o.clusterResolution;
+        options.clusters.cache = o.cache ? *o.cache : gl::defaultCacheFolder();
+        if (o.frameBudgetMs > 0.0) options.clusters.budgetMs = o.frameBudgetMs;
+    }
     const std::vector<int> screens = cluster ? config::screensOfRank(o.display, rank, cluster->size()) : std::vector<int>{};
     gl::Walkthrough walkthrough(scene, description, display, *context, std::move(setup), options, screens);
 
@@ -138,20 +147,39 @@ RunSummary runSession(const RunOptions& o) {
     std::optional<display::FrameTimeBudget> frameBudget;
     if (o.frameBudgetMs > 0.0) frameBudget.emplace(o.frameBudgetMs);
     summary.walls = walkthrough.hasWalls();
+    const double fullDetailMs = o.clusters ? render::fullDetailCostMs(*walkthrough.clusterModel()) : 0.0;
+    if (const render::ClusterModel* m = walkthrough.clusterModel()) {
+        const gl::ClusterBakeStats& b = *walkthrough.clusterBakeStats();
+        summary.clusters = b.clusters, summary.clustersMade = b.made, summary.clustersReused = b.reused;
+        summary.clustersSeconds = b.seconds;
+        summary.msPerTriangle = m->costs.msPerTriangle, summary.msPerObject = m->costs.msPerObject;
+        summary.texturedBoxMs = m->costs.texturedBoxMs, summary.averageBoxMs = m->costs.averageBoxMs;
+    }
     geometrySizes(scene, description, summary);
     for (long i = 0; i < o.frames; ++i) {
         const bool save = o.saveEvery > 0 && i % o.saveEvery == 0;
         if (context->windowCount() > 0 && context->pollCloseRequested()) break;  // a window was closed
         walls::FrameInput in = input ? input->next(i, save, context->takeInputEvents()) : walls::FrameInput{};
-        if (frameBudget) in.triangleBudget = frameBudget->budget();
+        // The controller's unit is what the frame's knob caps: triangles, or with clusters the
+        // selection's predicted cost in microseconds.
+        if (frameBudget && !o.clusters) in.triangleBudget = frameBudget->budget();
+        if (frameBudget && o.clusters) in.clusterBudgetMs = static_cast<double>(frameBudget->budget()) / 1000.0;
         double syncMs = cluster ? app::receiveFrame(*cluster, in) : 0.0;
         walls::FrameResult r = walkthrough.renderFrame(in);
         if (i == 0) summary.firstFrameSeconds = since();
         if (cluster) syncMs = app::combineFrame(*cluster, r, syncMs, screens);
-        if (frameBudget) frameBudget->update(r.frameMs, r.geometryTriangles);  // rank 0: the slowest rank's time
+        if (frameBudget && !o.clusters) frameBudget->update(r.frameMs, r.geometryTriangles);
+        if (frameBudget && o.clusters) {
+            const double ms = render::controlledCostMs(*walkthrough.lastClusterPlan(), fullDetailMs);
+            frameBudget->update(r.frameMs, static_cast<std::size_t>(std::llround(ms * 1000.0)));
+        }  // rank 0: the slowest rank's time
         if (!output) continue;
         output->writeFrame(i, in.time, in.head.position, r, syncMs);
         if (in.readImages) summary.foldouts.push_back(output->saveImages(i, r.images));
+        if (in.readImages && walkthrough.hasClusters())  // seed 004's Figure D: what the frame drew, from above
+            scenes::writeImage(summary.foldouts.back().parent_path() / "clusters.png",
+                               render::clusterDiagram(*walkthrough.clusterModel(), *walkthrough.lastClusterPlan(),
+                                                      r.eyeWorld));
         if (in.readImages && o.keepSavedImages) summary.savedFrames.push_back({i, in.head.position, std::move(r.images)});
         summary.frameMs.push_back(r.frameMs);
         summary.worstErrorDeg = std::max(summary.worstErrorDeg, r.maxErrorDeg);

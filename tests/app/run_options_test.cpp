@@ -27,7 +27,7 @@ TEST(RunOptions, EachRuleNamesItsFlags) {
         {"budget without lod", [](RunOptions& o) { o.triangleBudget = 1000; },
          "--triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod 0"},
         {"frame budget without lod", [](RunOptions& o) { o.frameBudgetMs = 16.7; },
-         "--frame-budget-ms: needs levels of detail (--lod PX with PX > 0), got --lod 0"},
+         "--frame-budget-ms: needs levels of detail (--lod PX with PX > 0) or --clusters, got --lod 0"},
         {"both budgets",
          [](RunOptions& o) {
              o.lodPixels = 1.0;
@@ -35,6 +35,13 @@ TEST(RunOptions, EachRuleNamesItsFlags) {
              o.triangleBudget = 1000;
          },
          "--frame-budget-ms and --triangle-budget: expected one of them, got both"},
+        {"clusters with a triangle budget",
+         [](RunOptions& o) {
+             o.clusters = true;
+             o.lodPixels = 1.0;
+             o.triangleBudget = 1000;
+         },
+         "--clusters and --triangle-budget: expected --frame-budget-ms with --clusters"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
@@ -49,6 +56,10 @@ TEST(RunOptions, EachRuleNamesItsFlags) {
     budgeted.triangleBudget = 0;
     budgeted.frameBudgetMs = 16.7;
     EXPECT_NO_THROW(validate(budgeted));
+    RunOptions clusters;  // clusters hold a time budget without levels of detail
+    clusters.clusters = true;
+    clusters.frameBudgetMs = 16.7;
+    EXPECT_NO_THROW(validate(clusters));
 }
 
 TEST(RunOptions, EveryEnumValueHasOneWord) {

@@ -42,6 +42,8 @@ TEST(RunOutput, FramesAndWallsCsvHaveOneRowPerFrameAndWall) {
         r.geometryTriangles = 4990;
         r.walls = {WallState{0, {{7, 0.25}, {8, 0.75}}, 0.0, true, false, 3.5, 1}};
         r.texturesOverAlpha = 1;
+        r.clusterObjects = 12, r.clusterTextured = 3, r.clusterAverage = 2;
+        r.clusterPredictedMs = 4.25, r.clusterBudgetMs = 16.5;
         out.writeFrame(0, 0.0, head, r);
         r.cell = -1;  // outside every cell
         r.walls.clear();
@@ -59,6 +61,11 @@ TEST(RunOutput, FramesAndWallsCsvHaveOneRowPerFrameAndWall) {
     EXPECT_EQ(frames[0].at("fallbacks"), "1");  // the one wall's fallback
     EXPECT_EQ(frames[1].at("sync_ms"), "2.500");
     EXPECT_EQ(frames[0].at("over_alpha"), "1");
+    EXPECT_EQ(frames[0].at("cluster_objects"), "12");
+    EXPECT_EQ(frames[0].at("cluster_textured"), "3");
+    EXPECT_EQ(frames[0].at("cluster_average"), "2");
+    EXPECT_EQ(frames[0].number("cluster_predicted_ms"), 4.25);
+    EXPECT_EQ(frames[0].number("cluster_budget_ms"), 16.5);
     // Poses read back to the same double (replays are compared exactly).
     EXPECT_EQ(std::strtod(frames[0].at("head_y").c_str(), nullptr), head.y);
     EXPECT_EQ(std::strtod(frames[1].at("t").c_str(), nullptr), 1.0 / 60.0);

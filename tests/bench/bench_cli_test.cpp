@@ -32,14 +32,17 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     fs::remove_all(out);
     const CliResult r = runCavewall({"bench", (plant / "scene.json").string(), "--quick", "--frames", "12", "--out",
                                      out.string(), "--cache", (root / "cache").string(), "--alphas", "20,30",
-                                     "--warp-alpha", "30"});
+                                     "--warp-alpha", "30", "--clusters"});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_THAT(r.out, HasSubstr("| 1 | full |"));
     // --quick keeps its small images, and says so in the header and on every target line.
     EXPECT_THAT(r.out, HasSubstr("4 screens at 128x128 pixels, mono stereo mode"));
-    // Full geometry and the walls modes (but the paged one) are timed in the same seconds.
+    // Full geometry, the walls modes (but the paged one) and the clusters (--clusters, held to
+    // 60 Hz by the controller) are timed in the same seconds.
     EXPECT_THAT(r.out, HasSubstr("drawn frame by frame in turn (the same seconds): full, full lod 1px, walls a=20 blend, "
                                  "walls a=30 blend, walls a=20 blend lod 1px"));
+    EXPECT_THAT(r.out, HasSubstr("walls a=30 blend lod 1px frame 16.7ms, clusters frame 16.7ms, frame by frame in turn"));
+    EXPECT_THAT(r.out, HasSubstr("bench: noise floor, walls a=30 blend lod 1px frame 16.7ms interleaved"));
     // The bound holds in every walls mode (frame by frame, also in bench_frames.csv).
     EXPECT_THAT(r.out, HasSubstr("targets (128x128 per screen, mono): textures drawn over alpha in"));
     EXPECT_THAT(r.out, HasSubstr("walls modes: 0 (0: met)"));
@@ -90,7 +93,7 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         {"full", 1}, {"full lod", 1}, {"cells", 1}, {"cells+layer", 1}, {"near", 1}, {"near lod", 1}, {"walls 20 blend", 1},
         {"walls 30 blend", 1}, {"walls 20 blend lod", 1}, {"walls 30 blend lod", 1}, {"walls 30 warp", 1},
         {"walls 30 blend paged", 1}, {"walls 20 blend lod budget", 1}, {"walls 30 blend lod budget", 1},
-        {"walls 20 blend lod frame", 1}, {"walls 30 blend lod frame", 1}};
+        {"walls 20 blend lod frame", 1}, {"walls 30 blend lod frame", 1}, {"clusters frame", 1}};
     EXPECT_EQ(rows, expected);
     EXPECT_TRUE(fs::is_regular_file(out / "bench.png"));
     EXPECT_TRUE(fs::is_regular_file(out / "bench.md"));
@@ -104,10 +107,10 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         for (const char* name : {"flip_mean", "flip_p95", "popping_peak", "popping_rms", "capped_mean_psnr_db"})
             EXPECT_TRUE(std::isfinite(row.number(name))) << row.at("screen") << " " << name;
     const std::size_t screenRows = screens.size();
-    EXPECT_EQ(screenRows, 16u * 4);
+    EXPECT_EQ(screenRows, 17u * 4);
     // A FLIP map of the worst image of every mode but the reference (mode 1).
     EXPECT_FALSE(fs::exists(out / "flip_worst_1.png"));
-    for (int mode = 2; mode <= 16; ++mode) EXPECT_TRUE(fs::is_regular_file(out / ("flip_worst_" + std::to_string(mode) + ".png")));
+    for (int mode = 2; mode <= 17; ++mode) EXPECT_TRUE(fs::is_regular_file(out / ("flip_worst_" + std::to_string(mode) + ".png")));
 }
 
 TEST(BenchSceneCli, BadInputIsAClearError) {

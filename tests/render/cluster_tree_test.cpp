@@ -216,5 +216,15 @@ TEST(ClusterSelect, CoherenceDelaysRefiningButNotCollapsing) {
     EXPECT_THAT(drawnNodes(selectClusters(t, frame, 3.0, &coherence)), ElementsAre(3, 7, 8));
 }
 
+TEST(ClusterSelect, ACoherentClusterThatShowsNothingIsRefinedAtOnce) {
+    // The eye inside the root's box: its impostor shows nothing (accuracy 0), so waiting for the
+    // counter would draw a hole; its children are taken in the first frame.
+    const ClusterTree t = buildClusterTree(figure4(), {4, 1, 1});
+    auto frame = figure4Frame(t, {1, 1, 1, 1, 5, 5});
+    frame[t.root].representations = {{2, 1.0, 0.0}};
+    ClusterCoherence coherence(2);
+    EXPECT_THAT(drawnNodes(selectClusters(t, frame, 3.0, &coherence)), ElementsAre(3, 7, 8));
+}
+
 }  // namespace
 }  // namespace cavewall::render

@@ -4,6 +4,7 @@
 #include "scenes/image_io.h"
 #include "display/gl/view_loop.h"
 #include "render/lod_choice.h"
+#include "walls/gl/cluster_costs.h"
 #include "walls/gl/depth_texture_store.h"
 #include "walls/gl/texture_store.h"
 
@@ -57,6 +58,24 @@ struct Walkthrough::WallRuntime {
     std::unique_ptr<DepthWallPass> depthPass;
 };
 
+struct Walkthrough::ClusterRuntime {
+    render::ClusterModel model;
+    std::vector<int> structure;              // always drawn
+    std::unique_ptr<ClusterImpostors> impostors;
+    render::ClusterCoherence coherence;
+    render::ClusterFramePlan last;
+    std::vector<int> drawn;                  // the last frame's objects and structure
+};
+
+namespace {
+
+// The hierarchy over the content objects (structure gets empty bounds: never clustered), its
+// impostors and measured costs.
+std::unique_ptr<Walkthrough::ClusterRuntime> makeClusters(const scenes::Scene& scene, const ClusterOptions& o,
+                                                          SceneRenderer& renderer, const std::string& rendererName);
+
+}  // namespace
+
 Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescription& description,
                          const display::Display& display, Context& context, std::optional<walls::WallSetup> walls,
                          WalkthroughOptions options, std::vector<int> screens)
@@ -71,11 +90,56 @@ Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescript
     _planner = std::make_unique<walls::FramePlanner>(scene, description, display, _walls ? &_walls->setup : nullptr,
                                                      options.transition, options.morphSeconds, _screens);
     _planner->requestCells(_walls && _walls->geometry);
+    if (options.clusters.enabled) _clusters = makeClusters(scene, options.clusters, _renderer, context.info().renderer);
     if (_walls && options.transition == walls::Transition::Warp)
         _warp = std::make_unique<WarpPass>(scene, _renderer.gpu(), options.render, display.depthRange().near);
 }
 
+namespace {
+
+std::unique_ptr<Walkthrough::ClusterRuntime> makeClusters(const scenes::Scene& scene, const ClusterOptions& o,
+                                                          SceneRenderer& renderer, const std::string& rendererName) {
+    auto c = std::make_unique<Walkthrough::ClusterRuntime>();
+    c->coherence = render::ClusterCoherence(o.coherenceFrames);
+    std::vector<scenes::Bounds> bounds;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const scenes::Object& object = scene.objects[i];
+        const bool structure = object.role == scenes::Role::Structure;
+        bounds.push_back(structure ? scenes::Bounds{} : object.worldBounds);
+        if (structure) c->structure.push_back(static_cast<int>(i));
+        c->model.objectTriangles.push_back(scene.meshes[object.mesh].triangleCount());
+    }
+    c->model.tree = render::buildClusterTree(bounds, o.divisions);
+    c->impostors = std::make_unique<ClusterImpostors>(scene, c->model, o.bake, o.cache);
+    c->model.costs = measureClusterCosts(renderer, *c->impostors, c->model, scene, rendererName, o.cache).costs;
+    return c;
+}
+
+}  // namespace
+
 Walkthrough::~Walkthrough() = default;
+
+const render::ClusterModel* Walkthrough::clusterModel() const { return _clusters ? &_clusters->model : nullptr; }
+const ClusterBakeStats* Walkthrough::clusterBakeStats() const {
+    return _clusters ? &_clusters->impostors->stats() : nullptr;
+}
+const render::ClusterFramePlan* Walkthrough::lastClusterPlan() const { return _clusters ? &_clusters->last : nullptr; }
+
+void Walkthrough::planClusters(const walls::FrameInput& input, glm::dvec3 eyeWorld, std::vector<int>& objects,
+                               walls::FrameResult& result) {
+    ClusterRuntime& c = *_clusters;
+    const double budget = input.clusterBudgetMs > 0.0 ? input.clusterBudgetMs : _options.clusters.budgetMs;
+    // Over every screen, also those of other cluster ranks (as the levels of detail).
+    c.last = render::planClusterFrame(c.model, _display.views(input.head), input.worldFromCave, eyeWorld, budget,
+                                      &c.coherence);
+    objects = c.last.objects;
+    objects.insert(objects.end(), c.structure.begin(), c.structure.end());
+    result.clusterObjects = static_cast<int>(c.last.objects.size());
+    result.clusterTextured = c.last.textured;
+    result.clusterAverage = c.last.average;
+    result.clusterPredictedMs = c.last.predictedMs;
+    result.clusterBudgetMs = budget;
+}
 
 void Walkthrough::waitForTextures() {
     if (!_walls) return;
@@ -163,6 +227,10 @@ void Walkthrough::drawViews(const walls::FrameInput& input, const std::vector<di
         FrameStats passes;
         if (_warp) _warp->draw(plan.warpWalls, view, caveFromWorld, passes);
         // renderView leaves viewport, scissor and colour mask set for this view.
+        if (_clusters) {
+            const glm::dvec3 eye = glm::dvec3(input.worldFromCave * glm::dvec4(view.frustum.eye, 1.0));
+            _clusters->impostors->draw(_clusters->last.boxes, eye, view.frustum, caveFromWorld, passes);
+        }
         if (_walls) _walls->pass.draw(walls, view.frustum, caveFromWorld, _walls->store.sampler(), passes);
         if (_walls && _walls->depthPass)
             _walls->depthPass->draw(depthWalls, view.frustum, caveFromWorld, _walls->store.sampler(), passes);
@@ -198,6 +266,10 @@ walls::FrameResult Walkthrough::renderFrame(const walls::FrameInput& input) {
     result.geometryForced = static_cast<int>(plan.geometryForced.size());
     render::DrawFilter filter;
     filter.objects = &plan.objects;
+    if (_clusters) {
+        planClusters(input, plan.eyeWorld, _clusters->drawn, result);
+        filter.objects = &_clusters->drawn;
+    }
     render::FrameLod lod;
     if (_renderer.hasLods()) {
         // Over every screen, also those of other cluster ranks: each rank then picks the same

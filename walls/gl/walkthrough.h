@@ -35,6 +35,7 @@
 #include "scenes/scene_description.h"
 #include "walls/frame_planner.h"
 #include "walls/frame_types.h"
+#include "walls/gl/cluster_impostors.h"
 #include "walls/gl/hand_cursor.h"
 #include "walls/depth_wall.h"
 #include "walls/gl/depth_wall_pass.h"
@@ -48,7 +49,21 @@
 
 namespace cavewall::gl {
 
+// Seed 004's textured clusters (walls/gl/cluster_impostors.h, render/cluster_frame.h): the
+// content objects are drawn as the frame's selection from the model hierarchy under a budget
+// in predicted milliseconds, objects at full detail (or their level of detail) and clusters
+// as textured or average-colour boxes; structure objects are always drawn.
+struct ClusterOptions {
+    bool enabled = false;
+    glm::ivec3 divisions{8, 2, 8};           // the hierarchy's finest grid, cells per axis
+    ClusterBakeSettings bake;
+    std::filesystem::path cache;             // the bake cache folder (clusters/ inside it)
+    double budgetMs = 1000.0 / 60.0;         // predicted cost per frame unless FrameInput's
+    int coherenceFrames = 3;                 // ClusterCoherence threshold
+};
+
 struct WalkthroughOptions : walls::WalkthroughSettings {
+    ClusterOptions clusters;
     RenderSettings render;                   // clear colour, ambient, levels of detail
     // Depth: walls drawn by gl::DepthWallPass from a depth bake (BakeSettings::kind, the
     // manifest's depth files, DepthTextureStore); a texture without its depth is drawn flat.
@@ -71,11 +86,21 @@ public:
     const display::Display& display() const { return _display; }
     const RenderTargets& targets() const { return _targets; }
     bool hasWalls() const { return _walls != nullptr; }
+    bool hasClusters() const { return _clusters != nullptr; }
+    // With clusters: the hierarchy, measured costs and accuracies, and how the impostors were
+    // made; the last frame's plan (what was drawn).
+    const render::ClusterModel* clusterModel() const;
+    const ClusterBakeStats* clusterBakeStats() const;
+    const render::ClusterFramePlan* lastClusterPlan() const;
+    struct ClusterRuntime;  // walkthrough.cpp
     // Blocks until the pager has decoded everything requested (warm-up for tests and benches).
     void waitForTextures();
 
 private:
     struct WallRuntime;
+    // With clusters: the frame's selection; its objects (plus structure) replace `objects`.
+    void planClusters(const walls::FrameInput& input, glm::dvec3 eyeWorld, std::vector<int>& objects,
+                      walls::FrameResult& result);
     walls::FramePlan planFrame(const walls::FrameInput& input, const std::vector<display::ScreenView>& views);
     std::vector<WallDraw> wallDraws(const walls::FramePlan& plan) const;
     // Depth walls: the walls of `flat` whose every texture has its depth move to the result.
@@ -94,6 +119,7 @@ private:
     RenderTargets _targets;
     SceneRenderer _renderer;
     std::unique_ptr<WallRuntime> _walls;
+    std::unique_ptr<ClusterRuntime> _clusters;
     std::size_t _uploadedBytes = 0;  // wall texture bytes uploaded by the last planFrame
     std::unique_ptr<walls::FramePlanner> _planner;
     std::unique_ptr<HandCursorPass> _cursor;

@@ -157,7 +157,8 @@ BenchReport runBenchmark(const BenchOptions& o) {
     const auto& s0 = o.display.screens.front();
     report.resolution = std::to_string(s0.resolution.x) + "x" + std::to_string(s0.resolution.y) + " per screen, " +
                         std::string(config::toString(o.display.stereo));
-    const ModeContext c{scene, description, display, *context, path, o.compareEvery, o.lodMaxPixels, o.wallKind};
+    const ModeContext c{scene, description, display, *context, path, o.compareEvery, o.lodMaxPixels, o.wallKind,
+                        o.clusters ? (o.cache ? *o.cache : defaultCacheFolder()) : std::filesystem::path()};
 
     const bool lod = o.lodPixels > 0.0;
     std::vector<BakedWalls> baked;
@@ -210,6 +211,12 @@ BenchReport runBenchmark(const BenchOptions& o) {
         for (std::size_t i = 0; i < baked.size(); ++i)
             addRun(wallsMode(o.alphasDeg[i], app::Transition::Blend, false, o.lodPixels, 0, o.frameBudgetMs), i,
                    app::Transition::Blend);
+    if (o.clusters) {
+        ModeResult m;
+        m.mode = Mode::Clusters;
+        m.frameBudgetMs = o.frameBudgetMs > 0.0 ? o.frameBudgetMs : 1000.0 / 60.0;
+        runs[addRun(m, std::nullopt, app::Transition::Blend)].clusters = true;
+    }
     std::string names;
     for (const auto& acc : accs) names += (names.empty() ? "" : ", ") + modeLabel(acc->mode());
     say(o, "bench: " + names + ", frame by frame in turn");
@@ -268,7 +275,10 @@ BenchReport runBenchmark(const BenchOptions& o) {
         report.header.push_back("triangle budgets: per alpha, the median triangles of the same walls mode without a "
                                 "budget");
     {  // The noise floor of p99/p50 on this machine, beside a walls mode's, in the same seconds.
-        ModeResult last = report.modes.back();  // the budget mode at the last alpha, or the paged one
+        // The budget mode at the last alpha, or the paged one (the clusters mode, listed after
+        // them, is not a walls mode).
+        ModeResult last = *std::find_if(report.modes.rbegin(), report.modes.rend(),
+                                        [](const ModeResult& m) { return m.mode == Mode::Walls; });
         last.paged = false;  // drawn with every texture resident, also after the paged mode
         say(o, "bench: noise floor, " + modeLabel(last) + " interleaved with one of its frames");
         const long middle = static_cast<long>(path.frames.size() / 2);

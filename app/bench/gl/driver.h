@@ -66,6 +66,9 @@ struct BenchOptions {
     double lodMaxPixels = 8.0;                    // the most a budget may raise the tolerance to
     walls::WallKind wallKind = walls::WallKind::Flat;  // --walls: flat or depth walls (bake and draw)
     std::optional<std::filesystem::path> cache;   // bake cache (default: the baker's)
+    bool clusters = false;                        // also seed 004's textured clusters held to
+                                                  // frameBudgetMs (16.67 when it is 0), interleaved
+                                                  // with full geometry and the walls modes
     bool verbose = true;                          // progress on stdout
 };
 

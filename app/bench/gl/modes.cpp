@@ -1,11 +1,14 @@
 #include "app/bench/gl/modes.h"
 
 #include "display/frame_budget.h"
+
+#include <cmath>
 #include "display/pixel_scale.h"
 #include "display/timing.h"
 #include "display/gl/render_targets.h"
 #include "display/gl/scene_renderer.h"
 #include "display/gl/view_loop.h"
+#include "render/cluster_frame.h"
 #include "render/lod_choice.h"
 #include "walls/frame_planner.h"
 #include "walls/frame_select.h"
@@ -112,12 +115,19 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         std::unique_ptr<gl::Walkthrough> walkthrough;
         std::optional<display::FrameTimeBudget> frameBudget;
         std::vector<double> warmTriangles;
+        bool clusters = false;
+        double fullDetailMs = 0.0;   // clusters: render::fullDetailCostMs
     };
     std::vector<Live> live(runs.size());
     auto render = [](Live& l, walls::FrameInput in) {
-        if (l.frameBudget) in.triangleBudget = l.frameBudget->budget();
+        if (l.frameBudget && !l.clusters) in.triangleBudget = l.frameBudget->budget();
+        if (l.frameBudget && l.clusters) in.clusterBudgetMs = static_cast<double>(l.frameBudget->budget()) / 1000.0;
         walls::FrameResult r = l.walkthrough->renderFrame(in);
-        if (l.frameBudget) l.frameBudget->update(r.frameMs, r.geometryTriangles);
+        if (l.frameBudget && !l.clusters) l.frameBudget->update(r.frameMs, r.geometryTriangles);
+        if (l.frameBudget && l.clusters) {  // predicted microseconds, as app/gl/run_session.cpp
+            const double ms = render::controlledCostMs(*l.walkthrough->lastClusterPlan(), l.fullDetailMs);
+            l.frameBudget->update(r.frameMs, static_cast<std::size_t>(std::llround(ms * 1000.0)));
+        }
         return r;
     };
     const long frames = static_cast<long>(c.path.frames.size());
@@ -135,6 +145,9 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         options.triangleBudget = mode.triangleBudget;
         options.lodMaxPixels = c.lodMaxPixels;
         options.wallKind = c.wallKind;
+        options.clusters.enabled = run.clusters;
+        options.clusters.cache = c.clusterCache;
+        if (mode.frameBudgetMs > 0.0) options.clusters.budgetMs = mode.frameBudgetMs;
         if (!run.paged) {
             options.synchronousPaging = true;
             options.textureBudgetMB = 4096.0;  // every texture of the path stays resident after warm-up
@@ -143,6 +156,8 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         const bool hasWalls = run.walls.has_value();
         l.walkthrough = std::make_unique<gl::Walkthrough>(c.scene, c.description, c.display, c.context, run.walls, options);
         if (mode.frameBudgetMs > 0.0) l.frameBudget.emplace(mode.frameBudgetMs);
+        l.clusters = run.clusters;
+        if (run.clusters) l.fullDetailMs = render::fullDetailCostMs(*l.walkthrough->clusterModel());
         // Warm-up: shaders, buffers and (with walls, unless paged) every texture of the path made
         // resident; the whole path too for a run whose triangles set a later run's budget.
         bool budgetSource = false;

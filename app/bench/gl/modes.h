@@ -65,6 +65,7 @@ struct ModeContext {
     int compareEvery = 4;
     double lodMaxPixels = 8.0;  // WalkthroughOptions::lodMaxPixels of the budgeted modes
     walls::WallKind wallKind = walls::WallKind::Flat;  // WalkthroughOptions::wallKind of the walls modes
+    std::filesystem::path clusterCache;          // ClusterOptions::cache of the clusters modes
 };
 
 // One walkthrough mode of a runWalkthroughModes call.
@@ -78,6 +79,9 @@ struct WalkRun {
     // page-in, upload and fallback. Otherwise every texture of the path is made resident in a
     // warm-up pass over the whole path.
     bool paged = false;
+    // Seed 004's textured clusters (ClusterOptions) instead of walls, held to the mode's
+    // frameBudgetMs by the frame-time controller as `cavewall run --clusters` holds it.
+    bool clusters = false;
     bool storeReference = false;            // its compared images become the reference
     // >= 0: the triangle budget is the median triangles per frame of that earlier run's warm-up
     // pass over the path (the same frames, drawn as its timed pass draws them), set on `acc`.

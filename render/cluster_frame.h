@@ -1,0 +1,90 @@
+#pragma once
+// One frame of seed 004's cluster walkthrough, GL-free: from the hierarchy (cluster_tree.h),
+// the measured cost and accuracy of every representation and the frame's views, the NodeFrame
+// of every node (benefit, visibility, representations) and the selection under the frame's
+// budget, returned as plain data the GL executor draws: objects (at full detail, or at the
+// level of detail the renderer picks for them) and cluster boxes (textured or average colour).
+//
+// Frames: world (bounds, eye) and the cave frame of the views, placed by worldFromCave.
+// Costs in milliseconds.
+
+#include "display/display.h"
+#include "render/cluster_impostor.h"
+#include "render/cluster_tree.h"
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace cavewall::render {
+
+// Representation ids (Representation::id) of a cluster; a leaf has only Full.
+enum class ClusterRep { Full = 0, Textured = 1, Average = 2 };
+
+// Drawing costs measured on this machine and renderer (walls/gl/cluster_measure.h).
+struct ClusterCosts {
+    double msPerTriangle = 1e-5;     // full-detail geometry
+    double msPerObject = 1e-3;       // fixed part of one object's draw
+    double texturedBoxMs = 1e-2;     // one textured box (its front faces)
+    double averageBoxMs = 1e-2;      // one average-colour box
+    bool operator==(const ClusterCosts&) const = default;
+};
+
+// Accuracy of a cluster's impostors from each accuracy direction (cluster_impostor.h), [0, 1],
+// measured against full detail.
+struct ClusterAccuracy {
+    std::array<double, kAccuracyDirections> textured{}, average{};
+    bool operator==(const ClusterAccuracy&) const = default;
+};
+
+// Everything about the model the frames need besides the tree: per object its triangles, per
+// node (tree index) the accuracy of its impostors (leaves: unused) and whether it has them.
+struct ClusterModel {
+    ClusterTree tree;
+    std::vector<std::size_t> objectTriangles;    // per object
+    std::vector<ClusterAccuracy> accuracy;       // per node
+    std::vector<bool> hasImpostors;              // per node: textures and averages were made
+    ClusterCosts costs;
+};
+
+struct ClusterBoxDraw {
+    int node = -1;
+    ClusterRep rep = ClusterRep::Textured;       // Textured or Average
+};
+
+struct ClusterFramePlan {
+    std::vector<int> objects;                    // leaves drawn: object indices, ascending
+    std::vector<ClusterBoxDraw> boxes;           // back to front from the eye
+    int textured = 0, average = 0;               // boxes of each kind
+    double predictedMs = 0.0;                    // the selection's cost
+    double budgetMs = 0.0;
+};
+
+// The frame's NodeFrame per node: a leaf's benefit is its bounding sphere's solid-angle share
+// (r / d)^2 seen from `eyeWorld` (1 when the eye is inside), visible when its bounds meet some
+// view's frustum (corners against the side and near planes; `views` in the cave frame). A
+// leaf has one representation (Full: msPerObject + triangles x msPerTriangle, accuracy 1); a
+// cluster with impostors has Textured and Average (box costs; accuracy from the nearest
+// accuracy direction, 0 when the eye is inside its impostor box) and no others (it is drawn as
+// a box or refined).
+std::vector<NodeFrame> clusterNodeFrames(const ClusterModel& model, const std::vector<display::ScreenView>& views,
+                                         const glm::dmat4& worldFromCave, glm::dvec3 eyeWorld);
+
+// The predicted cost of every object at full detail (all leaves' Full representation): the most
+// any selection can cost, so a budget above it buys nothing.
+double fullDetailCostMs(const ClusterModel& model);
+
+// What a frame-time controller (display/frame_budget.h) should be told a frame cost, in
+// predicted ms: the selection's cost, or, when the selection stayed below its budget, the budget
+// (at most fullDetailCostMs). Refinement is discrete (a cluster's children may cost far more
+// than the cluster), so a frame that could not use its budget says nothing about whether a
+// larger one would fit; reporting only what was drawn would hold the budget at twice the
+// root's cost for ever.
+double controlledCostMs(const ClusterFramePlan& plan, double fullDetailMs);
+
+// clusterNodeFrames, then selectClusters under `budgetMs`, as drawable data.
+ClusterFramePlan planClusterFrame(const ClusterModel& model, const std::vector<display::ScreenView>& views,
+                                  const glm::dmat4& worldFromCave, glm::dvec3 eyeWorld, double budgetMs,
+                                  ClusterCoherence* coherence);
+
+}  // namespace cavewall::render

@@ -1,0 +1,112 @@
+// Seed 004's cluster impostors on llvmpipe (walls/gl/cluster_impostors.h, cluster_costs.h):
+// a textured box seen from one of its sampling eyes shows what full detail shows; the average
+// box is less accurate than the textured one; impostors and costs come back from the cache.
+#include "display/gl/scene_renderer.h"
+#include "render/cluster_tree.h"
+#include "scenes/flip.h"
+#include "tests/gl/gl_test_support.h"
+#include "tests/wallsgl/bake_test_scene.h"
+#include "walls/gl/cluster_costs.h"
+#include "walls/gl/cluster_impostors.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace cavewall::testing {
+namespace {
+
+// Three boxes of three colours, 2 m apart at most: one cluster over them (a 1 x 1 x 1 grid).
+scenes::Scene threeBoxes() {
+    scenes::Scene s;
+    s.name = "three-boxes";
+    gl::testing::addBox(s, {1.0f, 1.5f, 1.0f}, {0.9f, 0.1f, 0.1f, 1}, {0.0, 0.75, 0.0}, "red");
+    gl::testing::addBox(s, {0.6f, 0.6f, 0.6f}, {0.1f, 0.8f, 0.2f, 1}, {1.5, 0.3, 0.5}, "green");
+    gl::testing::addBox(s, {0.5f, 1.0f, 0.5f}, {0.1f, 0.2f, 0.9f, 1}, {0.5, 0.5, -1.5}, "blue");
+    return s;
+}
+
+render::ClusterModel modelOf(const scenes::Scene& s) {
+    render::ClusterModel m;
+    std::vector<scenes::Bounds> bounds;
+    for (const scenes::Object& o : s.objects) {
+        bounds.push_back(o.worldBounds);
+        m.objectTriangles.push_back(s.meshes[o.mesh].triangleCount());
+    }
+    m.tree = render::buildClusterTree(bounds, {1, 1, 1});
+    return m;
+}
+
+class ClusterImpostorsTest : public GlTest {};
+
+TEST_F(ClusterImpostorsTest, ATexturedBoxShowsFullDetailAtItsSamplingEyeAndIsCached) {
+    const scenes::Scene scene = threeBoxes();
+    const std::filesystem::path cache = testOutputFolder("cluster-impostors") / "cache";
+    std::filesystem::remove_all(cache);
+    render::ClusterModel model = modelOf(scene);
+    ASSERT_EQ(model.tree.root, 3);  // three leaves, then the cluster
+    // Face textures of 64 texels along the longer side, as many as the 64-pixel image's face.
+    const gl::ClusterBakeSettings settings{64, 64, 0.35f};
+    gl::ClusterImpostors impostors(scene, model, settings, cache);
+    EXPECT_EQ(impostors.stats().made, 1);
+    ASSERT_TRUE(model.hasImpostors[3]);
+    const scenes::Bounds box = render::impostorBox(model.tree.nodes[3].bounds);
+    // From face +x's centre-region eye only that face is towards the eye, and its texture is
+    // exactly what the eye sees through it: the impostor differs from full detail only by
+    // resampling the texture (texel centres on pixel centres along the longer side).
+    const glm::dvec3 eye = render::samplingEye(box, 0, 0);
+    const display::ScreenQuad screen = render::boxFace(box, 0);
+    const scenes::Image full = impostors.image(3, render::ClusterRep::Full, screen, eye, {64, 64});
+    const scenes::Image textured = impostors.image(3, render::ClusterRep::Textured, screen, eye, {64, 64});
+    const scenes::Image average = impostors.image(3, render::ClusterRep::Average, screen, eye, {64, 64});
+    const double texturedError = scenes::flip(textured, full, {10.0}).mean;
+    const double averageError = scenes::flip(average, full, {10.0}).mean;
+    EXPECT_LT(texturedError, 0.05);
+    EXPECT_LT(texturedError, averageError);
+    // Measured accuracy from the six directions: in [0, 1], textured above average on the whole.
+    const render::ClusterAccuracy a = model.accuracy[3];
+    double sumTextured = 0.0, sumAverage = 0.0;
+    for (int d = 0; d < render::kAccuracyDirections; ++d) {
+        EXPECT_GE(a.textured[d], 0.0);
+        EXPECT_LE(a.textured[d], 1.0);
+        sumTextured += a.textured[d], sumAverage += a.average[d];
+    }
+    EXPECT_GT(sumTextured, sumAverage);
+    // Again with the same cache: read, not made, the same accuracies.
+    render::ClusterModel again = modelOf(scene);
+    gl::ClusterImpostors cached(scene, again, settings, cache);
+    EXPECT_EQ(cached.stats().made, 0);
+    EXPECT_EQ(cached.stats().reused, 1);
+    EXPECT_EQ(again.accuracy[3], a);
+    // A changed object changes the cluster's key: made again.
+    scenes::Scene moved = threeBoxes();
+    moved.objects[0].worldFromModel[3].x += 0.25;
+    moved.updateObjectBounds();
+    render::ClusterModel third = modelOf(moved);
+    gl::ClusterImpostors remade(moved, third, settings, cache);
+    EXPECT_EQ(remade.stats().made, 1);
+}
+
+TEST_F(ClusterImpostorsTest, CostsAreMeasuredPositiveAndCachedPerRenderer) {
+    const scenes::Scene scene = threeBoxes();
+    const std::filesystem::path cache = testOutputFolder("cluster-costs") / "cache";
+    std::filesystem::remove_all(cache);
+    render::ClusterModel model = modelOf(scene);
+    gl::ClusterImpostors impostors(scene, model, {16, 32, 0.35f}, cache);
+    gl::SceneRenderer renderer(scene);
+    const gl::MeasuredCosts first = gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache);
+    EXPECT_FALSE(first.cached);
+    EXPECT_GT(first.costs.msPerTriangle, 0.0);
+    EXPECT_GE(first.costs.msPerObject, 0.0);
+    EXPECT_GT(first.costs.texturedBoxMs, 0.0);
+    EXPECT_GT(first.costs.averageBoxMs, 0.0);
+    const gl::MeasuredCosts second = gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache);
+    EXPECT_TRUE(second.cached);
+    EXPECT_EQ(second.costs, first.costs);
+    EXPECT_EQ(second.file, first.file);
+    // Another renderer measures again.
+    EXPECT_FALSE(gl::measureClusterCosts(renderer, impostors, model, scene, "other renderer", cache).cached);
+}
+
+}  // namespace
+}  // namespace cavewall::testing

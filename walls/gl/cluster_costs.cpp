@@ -1,0 +1,131 @@
+#include "walls/gl/cluster_costs.h"
+
+#include "config/error.h"
+#include "display/timing.h"
+#include "scenes/image_io.h"
+#include "walls/bake_key.h"
+#include "walls/bake_manifest.h"
+#include "walls/gl/offscreen_target.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <numeric>
+
+namespace cavewall::gl {
+
+namespace {
+
+constexpr int kRepetitions = 5;
+
+double medianMs(const std::function<void()>& draw) {
+    std::vector<double> ms;
+    for (int i = 0; i < kRepetitions; ++i) {
+        glFinish();
+        const auto start = std::chrono::steady_clock::now();
+        draw();
+        glFinish();
+        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    std::sort(ms.begin(), ms.end());
+    return ms[kRepetitions / 2];
+}
+
+std::filesystem::path costFile(const scenes::Scene& scene, const std::string& rendererName,
+                               const std::filesystem::path& cache) {
+    walls::KeyHasher h;
+    h.text("cavewall cluster costs v1").text(rendererName).integer(kCostResolution);
+    for (std::uint64_t k : walls::objectKeys(scene)) h.integer(static_cast<std::int64_t>(k));
+    return cache / "clusters" / ("costs-" + walls::hex64(h.value()) + ".json");
+}
+
+bool readCosts(const std::filesystem::path& file, render::ClusterCosts& costs) {
+    try {
+        std::ifstream in(file);
+        if (!in) return false;
+        const nlohmann::json j = nlohmann::json::parse(in);
+        costs = {j.at("msPerTriangle").get<double>(), j.at("msPerObject").get<double>(),
+                 j.at("texturedBoxMs").get<double>(), j.at("averageBoxMs").get<double>()};
+        return true;
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
+}  // namespace
+
+MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostors& impostors,
+                                  const render::ClusterModel& model, const scenes::Scene& scene,
+                                  const std::string& rendererName, const std::filesystem::path& cache) {
+    MeasuredCosts result;
+    result.file = costFile(scene, rendererName, cache);
+    if (readCosts(result.file, result.costs)) {
+        result.cached = true;
+        return result;
+    }
+    const scenes::Bounds box = render::impostorBox(scene.bounds().empty() ? scenes::Bounds{{0, 0, 0}, {1, 1, 1}} : scene.bounds());
+    const render::BoxView view = render::viewOfBox(box, glm::normalize(glm::dvec3(0.4, 0.6, 0.7)));
+    const display::OffAxisFrustum frustum =
+        display::offAxisFrustum(view.screen, view.eye, {0.05, std::numeric_limits<double>::infinity()});
+    OffscreenTarget target{glm::ivec2(kCostResolution)};
+    ViewTarget vt{target.framebuffer(), {0, 0, kCostResolution, kCostResolution}, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)};
+    auto drawObjects = [&](const std::vector<int>& objects) {
+        render::DrawFilter filter;
+        filter.objects = &objects;
+        filter.frustumCull = false;
+        return medianMs([&] { renderer.renderFrustum(frustum, glm::dmat4(1.0), vt, filter); });
+    };
+    // Objects by triangles: the smaller half and the larger half.
+    std::vector<int> order(model.objectTriangles.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return model.objectTriangles[a] < model.objectTriangles[b]; });
+    const std::vector<int> small(order.begin(), order.begin() + order.size() / 2), large(order.begin() + order.size() / 2, order.end());
+    auto triangles = [&](const std::vector<int>& set) {
+        double t = 0.0;
+        for (int o : set) t += static_cast<double>(model.objectTriangles[o]);
+        return t;
+    };
+    const double empty = drawObjects({});
+    const double ts = std::max(0.0, drawObjects(small) - empty), tl = std::max(0.0, drawObjects(large) - empty);
+    const double ns = static_cast<double>(small.size()), nl = static_cast<double>(large.size());
+    const double gs = triangles(small), gl = triangles(large);
+    // ts = c ns + b gs, tl = c nl + b gl.
+    const double det = ns * gl - nl * gs;
+    double b = det != 0.0 ? (ns * tl - nl * ts) / det : -1.0;
+    double c = det != 0.0 ? (ts * gl - tl * gs) / det : -1.0;
+    if (!(b > 0.0 && c >= 0.0)) b = (ts + tl) / std::max(1.0, gs + gl), c = 0.0;
+    result.costs.msPerTriangle = b;
+    result.costs.msPerObject = c;
+    // Boxes: every cluster's, from the same view.
+    for (render::ClusterRep rep : {render::ClusterRep::Textured, render::ClusterRep::Average}) {
+        std::vector<render::ClusterBoxDraw> boxes;
+        for (std::size_t n = 0; n < model.tree.nodes.size(); ++n)
+            if (n < model.hasImpostors.size() && model.hasImpostors[n]) boxes.push_back({static_cast<int>(n), rep});
+        const double ms = medianMs([&] {
+            const std::vector<int> none;
+            render::DrawFilter filter;
+            filter.objects = &none;
+            renderer.renderFrustum(frustum, glm::dmat4(1.0), vt, filter);
+            FrameStats stats;
+            impostors.draw(boxes, view.eye, frustum, glm::dmat4(1.0), stats);
+        });
+        const double perBox = boxes.empty() ? 0.0 : std::max(0.0, ms - empty) / static_cast<double>(boxes.size());
+        (rep == render::ClusterRep::Textured ? result.costs.texturedBoxMs : result.costs.averageBoxMs) = std::max(perBox, 1e-6);
+    }
+    nlohmann::json j{{"renderer", rendererName}, {"resolution", kCostResolution}, {"msPerTriangle", b},
+                     {"msPerObject", c}, {"texturedBoxMs", result.costs.texturedBoxMs},
+                     {"averageBoxMs", result.costs.averageBoxMs}};
+    scenes::writeAtomically(result.file, [&](const std::filesystem::path& temporary) {
+        std::ofstream out(temporary);
+        out << j.dump(1) << "\n";
+        out.close();
+        if (!out) throw Error(temporary.string() + ": cannot write");
+    });
+    return result;
+}
+
+}  // namespace cavewall::gl

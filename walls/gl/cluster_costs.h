@@ -1,0 +1,39 @@
+#pragma once
+// The drawing costs of seed 004's representations, measured by drawing them on this machine
+// and renderer (seed 004, section 5.2), cached per renderer and model.
+//
+// One offscreen view of kCostResolution² pixels sees the whole model (render::viewOfBox from
+// above and aside). Each measurement is the median of 5 repetitions, each timed from glFinish
+// to glFinish on the calling thread:
+//  - the view with nothing in it (the fixed part, subtracted from the rest);
+//  - the smaller and the larger half of the objects (by triangles) at full detail, without
+//    culling: two equations for the cost of one object and of one triangle (least squares would
+//    need more draws; negative solutions fall back to triangles alone);
+//  - every cluster's textured box, then every average box, from the same view: per box.
+// Cache: <cache>/clusters/costs-<16 hex digits>.json, keyed by GL_RENDERER, GL_VERSION and the
+// objects' content keys; a missing or unreadable file is measured again.
+//
+// Needs the rendering context current.
+
+#include "display/gl/scene_renderer.h"
+#include "render/cluster_frame.h"
+#include "walls/gl/cluster_impostors.h"
+
+#include <filesystem>
+#include <string>
+
+namespace cavewall::gl {
+
+inline constexpr int kCostResolution = 256;
+
+struct MeasuredCosts {
+    render::ClusterCosts costs;
+    bool cached = false;            // read from the cache, not measured now
+    std::filesystem::path file;
+};
+
+MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostors& impostors,
+                                  const render::ClusterModel& model, const scenes::Scene& scene,
+                                  const std::string& rendererName, const std::filesystem::path& cache);
+
+}  // namespace cavewall::gl

@@ -1,0 +1,223 @@
+#include "walls/gl/cluster_impostors.h"
+
+#include "config/error.h"
+#include "scenes/flip.h"
+#include "scenes/image_io.h"
+#include "walls/bake_key.h"
+#include "walls/bake_manifest.h"
+#include "walls/gl/offscreen_target.h"
+#include "walls/gl/wall_quad.h"
+#include "walls/gl/wall_renderer.h"
+#include "walls/texture_mips.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+namespace cavewall::gl {
+
+namespace {
+
+using render::kBoxFaces;
+using render::kFaceRegions;
+
+std::string fileName(int face, int region) {
+    return "f" + std::to_string(face) + "r" + std::to_string(region) + ".tx";
+}
+
+// Premultiplied MIP levels as the wall pass samples them (walls/gl/wall_quad.h).
+GlObject upload(const std::vector<scenes::Image>& levels) { return uploadWallTexture(levels); }
+
+// An opaque 1 x 1 texture of a linear colour.
+GlObject colourTexture(glm::vec3 linear) {
+    scenes::Image texel{"average", 1, 1, {0, 0, 0, 255}};
+    for (int c = 0; c < 3; ++c)
+        texel.rgba[c] = static_cast<std::uint8_t>(std::lround(255.0f * walls::linearToSrgb(std::clamp(linear[c], 0.0f, 1.0f))));
+    return upload({texel});
+}
+
+std::uint64_t clusterKey(const render::ClusterNode& cluster, const std::vector<std::uint64_t>& objects,
+                         const ClusterBakeSettings& s) {
+    walls::KeyHasher h;
+    // Bump the text when the impostors, their files or the accuracy measure change.
+    h.text("cavewall cluster impostor v1").integer(s.resolution).integer(s.accuracyResolution).number(s.ambient);
+    h.integer(render::kFaceRegions).number(render::kRegionTiltDeg).number(render::kSamplingDistance);
+    for (int o : cluster.objects) h.integer(static_cast<std::int64_t>(objects[o]));
+    return h.value();
+}
+
+scenes::Image opaque(scenes::Image image) {
+    for (std::size_t i = 3; i < image.rgba.size(); i += 4) image.rgba[i] = 255;
+    return image;
+}
+
+}  // namespace
+
+void validateClusterBakeSettings(const ClusterBakeSettings& s) {
+    auto fail = [](const char* name, const std::string& expected, const std::string& got) {
+        throw Error(std::string("cluster settings: ") + name + ": expected " + expected + ", got " + got);
+    };
+    if (s.resolution < 4 || s.resolution > 2048) fail("resolution", "[4, 2048]", std::to_string(s.resolution));
+    if (s.accuracyResolution < 16 || s.accuracyResolution > 1024)
+        fail("accuracyResolution", "[16, 1024]", std::to_string(s.accuracyResolution));
+    if (!(s.ambient >= 0.0f && s.ambient <= 1.0f)) fail("ambient", "[0, 1]", std::to_string(s.ambient));
+}
+
+ClusterImpostors::ClusterImpostors(const scenes::Scene& scene, render::ClusterModel& model,
+                                   const ClusterBakeSettings& settings, const std::filesystem::path& cache)
+    : _scene(scene), _settings(settings), _sampler(createSampler()) {
+    validateClusterBakeSettings(settings);
+    const auto start = std::chrono::steady_clock::now();
+    glSamplerParameteri(_sampler.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+    glSamplerParameteri(_sampler.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(_sampler.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(_sampler.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    const std::vector<std::uint64_t> objectKeys = walls::objectKeys(scene);
+    const std::size_t count = model.tree.nodes.size();
+    model.accuracy.assign(count, {});
+    model.hasImpostors.assign(count, false);
+    for (std::size_t n = 0; n < count; ++n) {
+        const render::ClusterNode& cluster = model.tree.nodes[n];
+        if (cluster.leaf() || cluster.bounds.empty()) continue;
+        Node& node = _nodes[static_cast<int>(n)];
+        node.box = render::impostorBox(cluster.bounds);
+        node.objects = cluster.objects;
+        const std::filesystem::path folder = cache / "clusters" / walls::hex64(clusterKey(cluster, objectKeys, settings));
+        ++_stats.clusters;
+        if (load(folder, node, model.accuracy[n])) {
+            ++_stats.reused;
+        } else {
+            make(folder, cluster, static_cast<int>(n), model.accuracy[n]);
+            ++_stats.made;
+        }
+        model.hasImpostors[n] = true;
+    }
+    _stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+ClusterImpostors::~ClusterImpostors() = default;
+
+bool ClusterImpostors::load(const std::filesystem::path& folder, Node& node, render::ClusterAccuracy& accuracy) {
+    try {
+        std::ifstream in(folder / "cluster.json");
+        if (!in) return false;
+        const nlohmann::json j = nlohmann::json::parse(in);
+        if (j.at("version").get<int>() != 1) return false;
+        for (int f = 0; f < kBoxFaces; ++f) {
+            const auto& a = j.at("averages").at(f);
+            node.faces[f] = {{a.at(0).get<float>(), a.at(1).get<float>(), a.at(2).get<float>()}, a.at(3).get<float>()};
+        }
+        for (int d = 0; d < render::kAccuracyDirections; ++d) {
+            accuracy.textured[d] = j.at("textured").at(d).get<double>();
+            accuracy.average[d] = j.at("average").at(d).get<double>();
+        }
+        for (int f = 0; f < kBoxFaces; ++f) {
+            for (int r = 0; r < kFaceRegions; ++r) node.textures[f][r] = upload(scenes::readMipLevels(folder / fileName(f, r)));
+            node.averages[f] = colourTexture(node.faces[f].linearColour);
+        }
+        return true;
+    } catch (const std::exception&) {
+        return false;  // unreadable or incomplete: made again
+    }
+}
+
+void ClusterImpostors::make(const std::filesystem::path& folder, const render::ClusterNode& cluster, int index,
+                            render::ClusterAccuracy& accuracy) {
+    Node& node = _nodes.at(index);
+    if (!_renderer) _renderer = std::make_unique<WallTextureRenderer>(_scene, _settings.ambient);
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    if (ec) throw Error(folder.string() + ": cannot create the cluster cache folder (" + ec.message() + ")");
+    for (int f = 0; f < kBoxFaces; ++f)
+        for (int r = 0; r < kFaceRegions; ++r) {
+            const scenes::Image straight =
+                _renderer->render(render::boxFace(node.box, f), render::samplingEye(node.box, f, r),
+                                  render::faceResolution(node.box, f, _settings.resolution), cluster.objects);
+            if (r == 0) node.faces[f] = render::faceAverage(straight);
+            const std::vector<scenes::Image> levels = walls::premultipliedMipChain(straight);
+            walls::writeMipFile(folder / fileName(f, r), levels, {16, "zip"});
+            node.textures[f][r] = upload(levels);
+        }
+    for (int f = 0; f < kBoxFaces; ++f) node.averages[f] = colourTexture(node.faces[f].linearColour);
+    accuracy = measureAccuracy(index);
+    nlohmann::json j;
+    j["version"] = 1;
+    for (const render::FaceAverage& a : node.faces)
+        j["averages"].push_back({a.linearColour.r, a.linearColour.g, a.linearColour.b, a.coverage});
+    j["textured"] = accuracy.textured;
+    j["average"] = accuracy.average;
+    scenes::writeAtomically(folder / "cluster.json", [&](const std::filesystem::path& temporary) {
+        std::ofstream out(temporary);
+        out << j.dump(1) << "\n";
+        out.close();
+        if (!out) throw Error(temporary.string() + ": cannot write");
+    });
+}
+
+scenes::Image ClusterImpostors::image(int index, render::ClusterRep rep, const display::ScreenQuad& screen,
+                                      glm::dvec3 eye, glm::ivec2 size) {
+    if (!_renderer) _renderer = std::make_unique<WallTextureRenderer>(_scene, _settings.ambient);
+    const Node& node = _nodes.at(index);
+    if (rep == render::ClusterRep::Full) return opaque(_renderer->render(screen, eye, size, node.objects));
+    if (!_target || _target->size() != size) _target = std::make_unique<OffscreenTarget>(size);
+    const display::OffAxisFrustum frustum =
+        display::offAxisFrustum(screen, eye, {0.05, std::numeric_limits<double>::infinity()});
+    _target->bindAndClear(glm::vec4(0.0f));
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    FrameStats ignored;
+    draw({{index, rep}}, eye, frustum, glm::dmat4(1.0), ignored);
+    return opaque(_target->read("cluster impostor"));
+}
+
+render::ClusterAccuracy ClusterImpostors::measureAccuracy(int index) {
+    const glm::ivec2 size(_settings.accuracyResolution);
+    const Node& node = _nodes.at(index);
+    render::ClusterAccuracy accuracy;
+    const auto directions = render::accuracyDirections();
+    // The screen spans 1.5 diagonals at 2.5 diagonals from the eye: its pixels per degree at the centre.
+    const double ppd = std::max(1.0, size.x / (2.0 * std::atan(0.75 / 2.5) * 180.0 / 3.14159265358979323846));
+    for (int d = 0; d < render::kAccuracyDirections; ++d) {
+        const auto [screen, eye] = render::viewOfBox(node.box, directions[d]);
+        const scenes::Image full = image(index, render::ClusterRep::Full, screen, eye, size);
+        for (render::ClusterRep rep : {render::ClusterRep::Textured, render::ClusterRep::Average}) {
+            const double value = render::accuracyFromFlip(scenes::flip(image(index, rep, screen, eye, size), full, {ppd}).mean);
+            (rep == render::ClusterRep::Textured ? accuracy.textured : accuracy.average)[d] = value;
+        }
+    }
+    return accuracy;
+}
+
+std::vector<WallDraw> ClusterImpostors::draws(const render::ClusterBoxDraw& box, glm::dvec3 eyeWorld) const {
+    std::vector<WallDraw> out;
+    const auto it = _nodes.find(box.node);
+    if (it == _nodes.end()) return out;
+    const Node& node = it->second;
+    for (int f = 0; f < kBoxFaces; ++f) {
+        if (!render::faceTowards(node.box, f, eyeWorld)) continue;
+        if (box.rep == render::ClusterRep::Textured) {
+            const int r = render::viewRegion(node.box, f, eyeWorld);
+            out.push_back({render::boxFace(node.box, f), {node.textures[f][r].id()}, {1.0f}, 1});
+        } else if (node.faces[f].coverage > 0.0f) {
+            out.push_back({render::averageFaceQuad(render::boxFace(node.box, f), node.faces[f].coverage),
+                           {node.averages[f].id()}, {1.0f}, 1});
+        }
+    }
+    return out;
+}
+
+void ClusterImpostors::draw(const std::vector<render::ClusterBoxDraw>& boxes, glm::dvec3 eyeWorld,
+                            const display::OffAxisFrustum& frustum, const glm::dmat4& caveFromWorld,
+                            FrameStats& stats) const {
+    std::vector<WallDraw> all;
+    for (const render::ClusterBoxDraw& b : boxes) {
+        std::vector<WallDraw> d = draws(b, eyeWorld);
+        all.insert(all.end(), d.begin(), d.end());
+    }
+    _pass.draw(all, frustum, caveFromWorld, _sampler.id(), stats);
+}
+
+}  // namespace cavewall::gl
