@@ -192,4 +192,57 @@ DepthWallBound depthWallErrorBound(const DepthImage& image, const WallFrame& f, 
     return b;
 }
 
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The span widened for the depths' float rounding (depth_wall.h, "Precision").
+glm::dvec2 widened(glm::dvec2 span, double ds) {
+    const double lo = std::max(0.0, span.x - 1e-6 * (ds + span.x));
+    return {lo, std::isfinite(span.y) ? span.y + 1e-6 * (ds + span.y) : span.y};
+}
+
+// (k(far) - k(near)) / D for the span (far may be infinite).
+double rangeFactor(glm::dvec2 span, double d) {
+    if (!(span.y > span.x)) return 0.0;
+    if (!std::isfinite(span.y)) return 1.0 / (d + span.x);
+    return (span.y - span.x) / ((d + span.y) * (d + span.x));
+}
+
+// The largest |v(T)| over the wall's corners for an eye and a sampling point in the wall frame
+// (lateral coordinates; distances de, ds > 0).
+double largestParallax(const WallFrame& f, glm::dvec2 eye, double de, glm::dvec2 sample, double ds) {
+    double v = 0.0;
+    for (glm::dvec2 c : {glm::dvec2(0, 0), glm::dvec2(f.width, 0), glm::dvec2(0, f.height), glm::dvec2(f.width, f.height)})
+        v = std::max(v, glm::length((eye - sample) + (de / ds - 1.0) * (c - sample)));
+    return v;
+}
+
+}  // namespace
+
+double depthEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const display::ScreenQuad& wall, glm::dvec2 span,
+                     double texelDiagonal) {
+    return depthZoneBound({{glm::dvec2(eye.x, eye.z)}, {eye.y, eye.y}}, samplingPoint, wall, span, texelDiagonal);
+}
+
+double depthZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                      glm::dvec2 span, double texelDiagonal) {
+    const WallFrame f = wallFrame(wall);
+    const glm::dvec3 s = f.toWall(samplingPoint);
+    const double ds = std::abs(s.z);
+    if (!(ds > 0.0) || zone.floor.empty() || !(span.x >= 0.0) || std::isnan(span.y) || !(texelDiagonal >= 0.0))
+        return kPi;
+    double dmin = std::numeric_limits<double>::infinity(), v = 0.0;
+    for (const glm::dvec2& p : zone.floor)
+        for (double y : {zone.heightRange.x, zone.heightRange.y}) {
+            const glm::dvec3 e = f.toWall({p.x, y, p.y});
+            if (!(e.z * s.z > 0.0)) return kPi;  // on the plane or the other side
+            const double de = std::abs(e.z);
+            dmin = std::min(dmin, de);
+            v = std::max(v, largestParallax(f, glm::dvec2(e), de, glm::dvec2(s), ds));
+        }
+    const double bound = rangeFactor(widened(span, ds), dmin) * v + 0.5 * texelDiagonal * std::max(1.0 / dmin, 1.0 / ds);
+    return std::isfinite(bound) ? std::min(bound, kPi) : kPi;
+}
+
 }  // namespace cavewall::walls
