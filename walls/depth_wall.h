@@ -197,14 +197,18 @@ DepthWallBound depthWallErrorBound(const DepthImage& image, const WallFrame& fra
 // mixes neighbouring texels, as on flat walls, whose bound ignores it too.
 // Precision: stored depths are within 1.2e-7 (D_S + d) (top of this header); the span is
 // widened by 1e-6 (D_S + d) either side, far above that, so float rounding cannot leave it.
-// Over a zone (convex floor polygon x height range): D_E is affine in E, so its minimum
-// Dmin is at a vertex; (k(dFar) - k(dNear)) / D_E = (dFar - dNear) / ((D_E + dFar)(D_E +
-// dNear)) decreases with D_E; v(T) is affine in E for a fixed T, so |v| is largest at a vertex;
-// and max(1, D_E / D_S) / D_E = max(1 / D_E, 1 / D_S). Hence over the zone
-//   B <= (dFar - dNear) / ((Dmin + dFar)(Dmin + dNear)) max_{vertex E, corner T} |v|
-//        + 0.5 h max(1 / Dmin, 1 / D_S),
-// each factor at its own worst eye (so it is at most that much above the true maximum when the
-// worst eyes differ; equal when one vertex is worst for both).
+// Over a zone (convex floor polygon x height range) the bound is refined, still rigorously: the
+// angle a wall segment subtends at E is at most its length over its distance from E, not only
+// over D_E, and the segment [W, W_P] lies within R = 0.5 h max(1, D_E / D_S) + k(dFar) |v(T_c)|
+// of T_c. For a box of texel centres: |v| is affine in T and in E (so its largest value is at a
+// box corner and a zone vertex); D_E >= Dmin (D_E is affine in E, Dmin at a vertex); the
+// lateral gap between the box and the zone's vertices' lateral bounding box bounds |E - T_c|
+// from below; k(dFar) - k(dNear) = D (dFar - dNear) / ((D + dFar)(D + dNear)) peaks at
+// D = sqrt(dFar dNear) and its ratio to D decreases with D. So per box
+//   v_max min( (k(dFar) - k(dNear))|_Dmin / Dmin,  kdiff_max / (sqrt(Dmin^2 + gap^2) - R_max) ),
+// and the texel term is at most 0.5 h max(1 / Dmin, 1 / D_S). A best-first subdivision of the
+// wall into boxes (at most 64 splits, stopping within 2 % of an estimate at box centres)
+// returns the largest box bound plus the texel term: an upper bound whatever the budget.
 // dFar may be infinite ((k(inf) - k(dNear)) / D = 1 / (D + dNear)).
 
 // B(E) above for one eye (world), a texture baked from `samplingPoint` (world) on `wall` (either
@@ -214,7 +218,8 @@ DepthWallBound depthWallErrorBound(const DepthImage& image, const WallFrame& fra
 double depthEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const display::ScreenQuad& wall, glm::dvec2 span,
                      double texelDiagonal);
 
-// The zone form above: every eye of `zone`. Radians, at least every depthEyeBound in the zone.
+// The zone form above: every eye of `zone`. Radians, at least every depthEyeBound in the zone
+// (depthEyeBound is this for a zone of one point).
 double depthZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
                       glm::dvec2 span, double texelDiagonal);
 
