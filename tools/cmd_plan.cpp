@@ -18,7 +18,7 @@ namespace cavewall::tools {
 
 const char* const kPlanUsage =
     "usage: cavewall plan SCENE [--alpha DEG] [--json FILE] [--png FILE] [--min-zone M] [--blend M]\n"
-    "                           [--ppd N]\n"
+    "                           [--ppd N] [--walls flat|depth]\n"
     "\n"
     "Plans the zones of every virtual wall and portal of SCENE (a scene.json or a folder holding\n"
     "one): geometry, texture and blend zones per cell and wall, with the angular error of every\n"
@@ -31,7 +31,12 @@ const char* const kPlanUsage =
     "--min-zone: smallest zone width and depth in metres (default 1; nearer the wall than such a\n"
     "zone can be proven is geometry). --blend: blend strip width in metres (default 0.2).\n"
     "--ppd: texel density target in pixels per degree at each texture's nearest eye (default 10,\n"
-    "at most 4096 texels per side), used for the texel and memory estimates.\n";
+    "at most 4096 texels per side), used for the texel and memory estimates.\n"
+    "--walls depth: plans depth walls (issue 16) with the depth reprojection's own bound instead of\n"
+    "the flat one: per texture, over every eye of its zones, the displacement of any drawn pixel\n"
+    "from its surface's true direction, from the wall's depth span (nearest to farthest baked box\n"
+    "corner behind the plane) and the texel size (proof in walls/depth_wall.h). The JSON's\n"
+    "\"textures\" list each texture's bound (maxError, radians) for the kind planned.\n";
 
 namespace {
 
@@ -41,20 +46,20 @@ void writeText(const std::filesystem::path& file, const std::string& text) { sce
 
 int runPlan(const std::vector<std::string>& words) {
     const Args args(words, {});
-    args.expectFlags({"alpha", "json", "png", "min-zone", "blend", "ppd"});
+    args.expectFlags({"alpha", "json", "png", "min-zone", "blend", "ppd", "walls"});
     walls::PlanOptions options;
     options.alphaDeg = args.number("alpha", options.alphaDeg, 1e-6, 90.0);
     options.minZoneSize = args.number("min-zone", options.minZoneSize, 0.01, 1000.0);
     options.blendWidth = args.number("blend", options.blendWidth, 0.0, 100.0);
     options.pixelsPerDegree = args.number("ppd", options.pixelsPerDegree, 0.01, 1000.0);
+    if (auto kind = args.get("walls")) options.wallKind = walls::parseWallKind(*kind, "--walls");
     walls::validatePlanOptions(options);
     const std::string& path = args.positional(0, "SCENE");
     if (args.positional().size() > 1) throw Error("plan: expected one SCENE, got " + std::to_string(args.positional().size()) + " words");
     scenes::SceneDescription description;
     const scenes::Scene scene = scenes::loadSceneFile(path, &description);
-    walls::Plan plan = walls::planZones(description, options);
     const walls::VisibilityTable table = walls::computeVisibility(description);
-    walls::assignDepthBehind(plan, scene, description, table);
+    const walls::Plan plan = walls::planZones(description, options, walls::wallDepthSpans(scene, description, table));
     for (const std::string& w : scene.warnings) std::cerr << "cavewall: warning: " << w << "\n";
     walls::printPlanSummary(std::cout, plan, description);
     if (auto json = args.get("json")) {

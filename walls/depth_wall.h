@@ -40,6 +40,7 @@
 // reprojected texel's own size (h (1 + k |D_E/D_S - 1|) / D_E, half a texel either side).
 
 #include "display/off_axis.h"
+#include "walls/angular_error.h"
 
 #include <glm/glm.hpp>
 
@@ -156,5 +157,70 @@ struct DepthWallBound {
 };
 DepthWallBound depthWallErrorBound(const DepthImage& image, const WallFrame& frame, glm::dvec3 eye,
                                    glm::dvec3 samplingPoint);
+
+// ---- The planner's bound (issue 16: plan depth walls with the reprojection's own error) ----
+//
+// The bound above needs the baked depth image; the planner runs before any bake. It needs only
+// the depth span [dNear, dFar] of everything a wall's textures can show: the nearest and the
+// farthest corner behind the plane of the boxes of the objects baked into them
+// (walls/visibility.h WallContents::depthNear, depthBehind). Every stored depth lies in it.
+//
+// Claim. For an eye E in front of the wall (distance D_E) and every pixel the depth wall pass
+// draws with texture T_S (sampling point S, distance D_S, texel diagonal h), the pixel shows
+// the colour of a scene point P that S saw, and the angle at E between P's true direction and
+// the pixel's direction is at most
+//   B(E) = [ (k(dFar) - k(dNear)) max_T |v(T)| + 0.5 h max(1, D_E / D_S) ] / D_E,
+//   k(d) = d / (D_E + d), max over the wall's corners (v is affine in T).
+// Proof. The pass (and reproject) draws a pixel at wall point W only on a hit: a parameter
+// sigma with ray depth s = D_S sigma / (1 - sigma) in [range.x, range.y] (the march starts at
+// the texture's nearest depth and ends at its farthest) at lateral position T = T(s) of the
+// ray as seen from S; by construction of T(s) (top of this header) W = T + k(s) v(T). The
+// pixel shows the texel containing T, whose centre T_c and stored depth d mean: S saw, through
+// T_c, the point P at depth d, which E sees at W_P = T_c + k(d) v(T_c) (depth_wall.cpp). As
+// v(T) - v(T_c) = (D_E / D_S - 1)(T - T_c),
+//   W - W_P = (T - T_c)(1 + k(s)(D_E / D_S - 1)) + (k(s) - k(d)) v(T_c),
+// whose norm is at most 0.5 h max(1, D_E / D_S) + |k(s) - k(d)| |v(T_c)|. Both s and d lie in
+// the texture's range, inside [dNear, dFar], and k is increasing: |k(s) - k(d)| <=
+// k(dFar) - k(dNear). W and W_P lie on the wall plane, at least D_E from E, so the angle
+// between them is at most |W - W_P| / D_E. (The step bound above is the same displacement:
+// the skin a march stretches across a depth step d1 -> d2 shows the near side's points at ray
+// depths up to d2.) A march that skips a thin surface draws another stored point, still
+// within B, so the bound does not depend on the step count.
+// Not in the bound: what is not drawn, and the colour filter. (1) Near the wall's edges E may
+// see, through the wall, content S saw outside the rectangle (no texel holds it): a band at
+// most k(dFar) max(0, v . n_in) / D_E wide (borderAngle with k(dFar) < 1) where the march finds
+// nothing (discarded: the structure behind shows) or a nearer stored surface (drawn, within
+// B). The flat bound does not count such content either (it bounds what each texel shows),
+// but there the band is narrower than the flat bound itself; here it can be wider than B when
+// dNear > 0. A guard band baked around the wall (a texture wider than the wall by k(dFar)
+// max|v| over the zone) would remove it; not done. (2) The colour filter (bilinear, mipmaps)
+// mixes neighbouring texels, as on flat walls, whose bound ignores it too.
+// Precision: stored depths are within 1.2e-7 (D_S + d) (top of this header); the span is
+// widened by 1e-6 (D_S + d) either side, far above that, so float rounding cannot leave it.
+// Over a zone (convex floor polygon x height range) the bound is refined, still rigorously: the
+// angle a wall segment subtends at E is at most its length over its distance from E, not only
+// over D_E, and the segment [W, W_P] lies within R = 0.5 h max(1, D_E / D_S) + k(dFar) |v(T_c)|
+// of T_c. For a box of texel centres: |v| is affine in T and in E (so its largest value is at a
+// box corner and a zone vertex); D_E >= Dmin (D_E is affine in E, Dmin at a vertex); the
+// lateral gap between the box and the zone's vertices' lateral bounding box bounds |E - T_c|
+// from below; k(dFar) - k(dNear) = D (dFar - dNear) / ((D + dFar)(D + dNear)) peaks at
+// D = sqrt(dFar dNear) and its ratio to D decreases with D. So per box
+//   v_max min( (k(dFar) - k(dNear))|_Dmin / Dmin,  kdiff_max / (sqrt(Dmin^2 + gap^2) - R_max) ),
+// and the texel term is at most 0.5 h max(1 / Dmin, 1 / D_S). A best-first subdivision of the
+// wall into boxes (at most 64 splits, stopping within 2 % of an estimate at box centres)
+// returns the largest box bound plus the texel term: an upper bound whatever the budget.
+// dFar may be infinite ((k(inf) - k(dNear)) / D = 1 / (D + dNear)).
+
+// B(E) above for one eye (world), a texture baked from `samplingPoint` (world) on `wall` (either
+// side: the bound is symmetric), content depths in `span` = (dNear, dFar) metres behind the
+// plane, texels of diagonal `texelDiagonal` metres. Radians; pi when the eye or the sampling
+// point is on the plane or they are on different sides of it.
+double depthEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const display::ScreenQuad& wall, glm::dvec2 span,
+                     double texelDiagonal);
+
+// The zone form above: every eye of `zone`. Radians, at least every depthEyeBound in the zone
+// (depthEyeBound is this for a zone of one point).
+double depthZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                      glm::dvec2 span, double texelDiagonal);
 
 }  // namespace cavewall::walls

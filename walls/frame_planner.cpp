@@ -254,11 +254,11 @@ void FramePlanner::addDraw(const WallBlend& b, const WallState& state, FramePlan
 
 // True when every texture of `set` is within the plan's alpha for the eye: a stale texture
 // beyond the bound is worse than the geometry.
-bool FramePlanner::withinBound(const TextureSet& set, const PlannedWall& wall) const {
+bool FramePlanner::withinBound(const TextureSet& set, const PlannedWall& /*wall: the texture ids carry it*/) const {
     const double alpha = glm::radians(_walls->plan.alphaDeg) + kErrorTolerance;
     for (const auto& [id, weight] : set) {
         auto it = _textures.find(id);
-        if (it == _textures.end() || maxAngularError(_eye, it->second->samplingPoint, wall.quad, wall.depthBehind) > alpha)
+        if (it == _textures.end() || textureErrorAt(_walls->plan, *it->second, _eye) > alpha)
             return false;
     }
     return true;
@@ -356,12 +356,11 @@ void FramePlanner::measureError(FramePlan& p) const {
     const double alpha = glm::radians(_walls->plan.alphaDeg) + kErrorTolerance;
     double worst = 0.0;
     for (WallState& s : p.walls) {
-        const PlannedWall& planned = _walls->plan.walls[s.wall];
         double wall = 0.0;
         for (const auto& [id, weight] : s.textures) {
             auto it = _textures.find(id);
             if (weight <= 0.0 || it == _textures.end()) continue;
-            const double error = maxAngularError(_eye, it->second->samplingPoint, planned.quad, planned.depthBehind);
+            const double error = textureErrorAt(_walls->plan, *it->second, _eye);
             wall = std::max(wall, error);
             s.texturesOverAlpha += error > alpha ? 1 : 0;
         }

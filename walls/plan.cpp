@@ -32,14 +32,6 @@ SideFrame frameOf(const scenes::VirtualWall& wall, int side) {
     return f;
 }
 
-double nearestDistance(const Texture& t, const display::ScreenQuad& q) {
-    const glm::dvec3 n = display::screenBasis(q).normal;
-    double d = std::numeric_limits<double>::infinity();
-    for (const glm::dvec2& p : t.validRegion)
-        d = std::min(d, std::abs(glm::dot(glm::dvec3(p.x, t.samplingPoint.y, p.y) - q.lowerLeft, n)));
-    return d;
-}
-
 // The planner's work grows with a cell's size in zones; absurd sizes are refused up front.
 void checkExtent(const scenes::Cell& cell) {
     glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi = -lo;
@@ -78,15 +70,55 @@ double texelSize(double distance, double pixelsPerDegree) {
     return distance * std::tan(glm::radians(1.0 / pixelsPerDegree));
 }
 
-Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options) {
+double nearestDistance(const Polygon2& region, double y, const ScreenQuad& q) {
+    const glm::dvec3 n = display::screenBasis(q).normal;
+    double d = std::numeric_limits<double>::infinity();
+    for (const glm::dvec2& p : region) d = std::min(d, std::abs(glm::dot(glm::dvec3(p.x, y, p.y) - q.lowerLeft, n)));
+    return d;
+}
+
+glm::ivec2 textureResolution(double nearest, const display::ScreenQuad& q, const PlanOptions& options) {
+    const double texel = texelSize(nearest, options.pixelsPerDegree);
+    const display::ScreenBasis b = display::screenBasis(q);
+    auto texels = [&](double metres) {
+        if (!(texel > 1e-9)) return options.maxResolution;
+        return int(std::clamp(std::ceil(metres / texel), 1.0, double(options.maxResolution)));
+    };
+    return {texels(b.width), texels(b.height)};
+}
+
+double texelDiagonal(const display::ScreenQuad& q, glm::ivec2 resolution) {
+    const display::ScreenBasis b = display::screenBasis(q);
+    return std::hypot(b.width / std::max(1, resolution.x), b.height / std::max(1, resolution.y));
+}
+
+double depthTextureBound(const ZoneVolume& volume, glm::dvec3 samplingPoint, const ScreenQuad& wall, glm::dvec2 span,
+                         const PlanOptions& options) {
+    const glm::ivec2 resolution = textureResolution(nearestDistance(volume.floor, samplingPoint.y, wall), wall, options);
+    return depthZoneBound(volume, samplingPoint, wall, span, texelDiagonal(wall, resolution));
+}
+
+double textureErrorAt(const Plan& plan, const Texture& t, glm::dvec3 eye) {
+    const PlannedWall& w = plan.walls[t.wall];
+    if (plan.options.wallKind == WallKind::Flat) return maxAngularError(eye, t.samplingPoint, w.quad, w.depthBehind);
+    return depthEyeBound(eye, t.samplingPoint, w.quad, {w.depthNear, w.depthBehind}, texelDiagonal(w.quad, t.resolution));
+}
+
+Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options, const std::vector<glm::dvec2>& spans) {
     validatePlanOptions(options);
+    if (!spans.empty() && spans.size() != d.walls.size())
+        throw Error("plan: expected a depth span per wall (" + std::to_string(d.walls.size()) + "), got " +
+                    std::to_string(spans.size()));
     Plan plan;
     plan.alphaDeg = options.alphaDeg;
     plan.options = options;
     for (int w = 0; w < int(d.walls.size()); ++w) {
         const scenes::VirtualWall& wall = d.walls[w];
-        plan.walls.push_back({w, wall.name, {wall.lowerLeft, wall.lowerRight, wall.upperLeft}, wall.cells,
-                              std::numeric_limits<double>::infinity()});
+        const glm::dvec2 span = spans.empty() ? glm::dvec2(0.0, std::numeric_limits<double>::infinity()) : spans[w];
+        if (!(span.x >= 0.0 && span.y >= span.x))
+            throw Error("wall '" + wall.name + "': expected a depth span 0 <= near <= far, got " + formatNumber(span.x) +
+                        " .. " + formatNumber(span.y) + " m");
+        plan.walls.push_back({w, wall.name, {wall.lowerLeft, wall.lowerRight, wall.upperLeft}, wall.cells, span.y, span.x});
         for (int side = 0; side < 2; ++side) {
             const int cell = wall.cells[side];
             if (cell < 0 || cell >= int(d.cells.size())) continue;
@@ -99,15 +131,12 @@ Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options) {
     planBeyond(plan, d);
     parallelFor(int(plan.textures.size()), [&](int i) {
         Texture& t = plan.textures[i];
-        const display::ScreenQuad& q = plan.walls[t.wall].quad;
-        t.maxError = zoneMaxError({t.validRegion, d.headHeightRange}, t.samplingPoint, q);
-        const double texel = texelSize(nearestDistance(t, q), options.pixelsPerDegree);
-        const display::ScreenBasis b = display::screenBasis(q);
-        auto texels = [&](double metres) {
-            if (!(texel > 1e-9)) return options.maxResolution;
-            return int(std::clamp(std::ceil(metres / texel), 1.0, double(options.maxResolution)));
-        };
-        t.resolution = {texels(b.width), texels(b.height)};
+        const PlannedWall& w = plan.walls[t.wall];
+        const ZoneVolume volume{t.validRegion, d.headHeightRange};
+        t.resolution = textureResolution(nearestDistance(t.validRegion, t.samplingPoint.y, w.quad), w.quad, options);
+        t.maxError = options.wallKind == WallKind::Flat
+                         ? zoneMaxError(volume, t.samplingPoint, w.quad)
+                         : depthTextureBound(volume, t.samplingPoint, w.quad, {w.depthNear, w.depthBehind}, options);
     });
     return plan;
 }

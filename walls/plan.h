@@ -37,6 +37,7 @@
 
 #include "display/off_axis.h"
 #include "scenes/scene_description.h"
+#include "walls/depth_wall.h"
 #include "walls/polygon2d.h"
 
 #include <glm/glm.hpp>
@@ -54,7 +55,11 @@ struct PlanOptions {
     double minZoneSize = 1.0;        // metres, smallest zone width/depth (at walking speed, at most
                                      // about one texture switch per second); > 2 * blendWidth
     double pixelsPerDegree = 10.0;   // texel density target at the zone's nearest distance
-    int maxResolution = 4096;        // texels per texture side (cap)
+    int maxResolution = 4096;        // texels per texture side (cap); for depth walls also the
+                                     // texel size their bound reserves, so at most the bake's cap
+    WallKind wallKind = WallKind::Flat;  // flat: the flat bound (angular_error.h); depth: the depth
+                                     // walls' bound (depth_wall.h depthZoneBound, from each wall's
+                                     // depth span PlannedWall::depthNear .. depthBehind)
 };
 
 // Throws cavewall::Error naming the option when it is out of range.
@@ -68,7 +73,8 @@ struct Texture {
     int cell = 0, wall = 0;
     glm::dvec3 samplingPoint{0.0};   // world
     Polygon2 validRegion;            // floor polygon (x, z) where the bound is proven
-    double maxError = 0.0;           // radians, exact depth-independent maximum over validRegion
+    double maxError = 0.0;           // radians, over validRegion: flat walls the exact
+                                     // depth-independent maximum; depth walls depthZoneBound
     glm::ivec2 resolution{0};        // texels, from pixelsPerDegree (see texelSize)
 };
 
@@ -90,6 +96,9 @@ struct PlannedWall {
     // Largest distance behind the plane of geometry baked into its textures (both sides),
     // metres; infinity until known (assignDepthBehind in walls/visibility.h).
     double depthBehind = std::numeric_limits<double>::infinity();
+    // Smallest distance behind the plane of geometry baked into its textures (both sides),
+    // metres; 0 until known. [depthNear, depthBehind] is the depth walls' span (depth_wall.h).
+    double depthNear = 0.0;
 };
 
 // One row of a side's layout in the side's floor frame (s along the wall, d into the cell).
@@ -148,7 +157,31 @@ struct Plan {
 };
 
 // Plans every cell/wall pair of a validated description. Walls must not be horizontal.
-Plan planZones(const scenes::SceneDescription& description, const PlanOptions& options = {});
+// depthSpans: per wall of the description, (depthNear, depthBehind) metres (wallDepthSpans in
+// walls/visibility.h), copied into PlannedWall; empty: (0, infinity) for every wall. Depth walls
+// are planned with them (the flat bound does not use them). Throws Error for a size other than
+// 0 or the wall count, or a span that is not 0 <= near <= far.
+Plan planZones(const scenes::SceneDescription& description, const PlanOptions& options = {},
+               const std::vector<glm::dvec2>& depthSpans = {});
+
+// The texels of a texture whose valid region's nearest point is `nearestDistance` metres from
+// `wall`: pixelsPerDegree at that distance (texelSize), at most maxResolution per side.
+glm::ivec2 textureResolution(double nearestDistance, const display::ScreenQuad& wall, const PlanOptions& options);
+
+// The diagonal of one texel of `resolution` on `wall`, metres.
+double texelDiagonal(const display::ScreenQuad& wall, glm::ivec2 resolution);
+
+// The depth walls' planned bound of a texture proven over `volume` (depthZoneBound, walls/
+// depth_wall.h, with the texel of the resolution textureResolution gives for the volume's
+// nearest distance at the sampling point's height): what the planner proves <= alpha and
+// stores as Texture::maxError for depth walls. Radians.
+double depthTextureBound(const ZoneVolume& volume, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                         glm::dvec2 span, const PlanOptions& options);
+
+// The bound of `texture`'s error for one eye (world), radians, for the plan's wall kind: flat,
+// maxAngularError up to the wall's depthBehind; depth, depthEyeBound over the wall's span with
+// the texture's resolution. What the frame planner checks and reports every frame.
+double textureErrorAt(const Plan& plan, const Texture& texture, glm::dvec3 eye);
 
 // The zone of (cell, wall) containing floor point p (x, z), or -1. Zones of a side are
 // searched linearly (a side has tens of zones).

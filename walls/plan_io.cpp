@@ -17,7 +17,7 @@ ZoneKind kindFrom(const std::string& s) {
 }
 
 PlannedWall wallFrom(const config::JsonNode& n, int index) {
-    n.expectKeys({"id", "lowerLeft", "lowerRight", "upperLeft", "cells", "depthBehind"});
+    n.expectKeys({"id", "lowerLeft", "lowerRight", "upperLeft", "cells", "depthBehind", "depthNear"});
     PlannedWall w;
     w.id = n.at("id").integer(index, index);
     w.quad = {n.at("lowerLeft").vec3(), n.at("lowerRight").vec3(), n.at("upperLeft").vec3()};
@@ -25,6 +25,7 @@ PlannedWall wallFrom(const config::JsonNode& n, int index) {
     w.cells = {cells[0].integer(-1, 1 << 30), cells[1].integer(-1, 1 << 30)};
     const config::JsonNode depth = n.at("depthBehind");
     w.depthBehind = depth.raw().is_null() ? std::numeric_limits<double>::infinity() : depth.number(0, 1e12);
+    if (n.has("depthNear")) w.depthNear = n.at("depthNear").number(0, w.depthBehind);
     return w;
 }
 
@@ -111,7 +112,8 @@ nlohmann::json planToJson(const Plan& plan) {
     for (const PlannedWall& w : plan.walls)
         walls.push_back({{"id", w.id}, {"lowerLeft", vec(w.quad.lowerLeft)}, {"lowerRight", vec(w.quad.lowerRight)},
                          {"upperLeft", vec(w.quad.upperLeft)}, {"cells", {w.cells[0], w.cells[1]}},
-                         {"depthBehind", std::isfinite(w.depthBehind) ? nlohmann::json(w.depthBehind) : nlohmann::json()}});
+                         {"depthBehind", std::isfinite(w.depthBehind) ? nlohmann::json(w.depthBehind) : nlohmann::json()},
+                         {"depthNear", w.depthNear}});
     for (const Zone& z : plan.zones) zones.push_back(zoneToJson(plan, z));
     nlohmann::json beyond = nlohmann::json::array();
     for (const BeyondSide& b : plan.beyond)
@@ -121,19 +123,44 @@ nlohmann::json planToJson(const Plan& plan) {
             j["viaWall"] = b.viaWall;
             beyond.push_back(j);
         }
-    return {{"alphaDeg", plan.alphaDeg}, {"walls", walls}, {"zones", zones}, {"beyondZones", beyond}};
+    nlohmann::json textures = nlohmann::json::array();
+    for (const Texture& t : plan.textures)
+        textures.push_back({{"id", t.id}, {"cell", t.cell}, {"wall", t.wall}, {"samplingPoint", vec(t.samplingPoint)},
+                            {"resolution", {t.resolution.x, t.resolution.y}}, {"maxError", t.maxError}});
+    return {{"alphaDeg", plan.alphaDeg}, {"wallKind", std::string(wallKindName(plan.options.wallKind))}, {"walls", walls},
+            {"zones", zones},      {"beyondZones", beyond}, {"textures", textures}};
 }
 
 Plan planFromJson(std::string_view text, const std::string& source) {
     const config::JsonDocument doc = config::JsonDocument::fromText(text, source);
     const config::JsonNode root = doc.root();
-    root.expectKeys({"alphaDeg", "walls", "zones", "beyondZones"});
+    root.expectKeys({"alphaDeg", "wallKind", "walls", "zones", "beyondZones", "textures"});
     Plan plan;
     plan.alphaDeg = root.at("alphaDeg").number(1e-9, 90);
     plan.options.alphaDeg = plan.alphaDeg;
+    if (root.has("wallKind"))
+        plan.options.wallKind = root.at("wallKind").oneOf({"flat", "depth"}) == "depth" ? WallKind::Depth : WallKind::Flat;
     const auto walls = root.at("walls").items();
     for (int i = 0; i < int(walls.size()); ++i) plan.walls.push_back(wallFrom(walls[i], i));
     TextureIds ids;
+    // The texture list first when present, so that ids, resolutions and bounds survive.
+    if (root.has("textures")) {
+        const auto textures = root.at("textures").items();
+        for (int i = 0; i < int(textures.size()); ++i) {
+            const config::JsonNode& n = textures[i];
+            n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "maxError"});
+            Texture t;
+            t.id = n.at("id").integer(i, i);
+            t.cell = n.at("cell").integer(0, 1 << 30);
+            t.wall = n.at("wall").integer(0, int(plan.walls.size()) - 1);
+            t.samplingPoint = pointFrom(n.at("samplingPoint"));
+            const auto r = n.at("resolution").items(2, 2);
+            t.resolution = {r[0].integer(0, 1 << 20), r[1].integer(0, 1 << 20)};
+            t.maxError = n.at("maxError").number(0, 4);
+            ids[std::make_tuple(t.cell, t.wall, t.samplingPoint.x, t.samplingPoint.y, t.samplingPoint.z)] = t.id;
+            plan.textures.push_back(t);
+        }
+    }
     const auto zones = root.at("zones").items();
     for (int i = 0; i < int(zones.size()); ++i) {
         zones[i].expectKeys({"id", "cell", "wall", "kind", "floorPolygon", "heightRange", "samplingPoint", "samplingPoints",
@@ -153,7 +180,10 @@ PlanTotals planTotals(const Plan& plan) {
     for (const BeyondSide& b : plan.beyond) t.beyondTextures += b.side.textureCount;
     for (const Texture& tex : plan.textures) t.texels += double(tex.resolution.x) * tex.resolution.y;
     t.gpuBytes = t.texels * 4.0 * 4.0 / 3.0;
+    // Depth walls: a 32-bit float depth per base-level texel (no MIP chain), on disk and on the GPU.
+    if (plan.options.wallKind == WallKind::Depth) t.gpuBytes += t.texels * 4.0;
     t.diskBytes = t.gpuBytes;
+    for (const Texture& tex : plan.textures) t.maxErrorDeg = std::max(t.maxErrorDeg, glm::degrees(tex.maxError));
     return t;
 }
 
@@ -181,11 +211,18 @@ void printPlanSummary(std::ostream& out, const Plan& plan, const scenes::SceneDe
                   "beyond a neighbour drawn as geometry: %zu far walls from %d eye regions, %d zones, %d textures\n",
                   plan.beyond.size(), eyeRegionCount(plan), totals.beyondZones, totals.beyondTextures);
     out << line;
+    const bool depth = plan.options.wallKind == WallKind::Depth;
     std::snprintf(line, sizeof line,
                   "total: %d texture, %d blend, %d geometry zones; %d textures, %.2f Mtexels; GPU %.1f MiB (RGBA8 + MIP "
-                  "chain); disk <= %.1f MiB (uncompressed tiled + MIP)\n",
+                  "chain%s); disk <= %.1f MiB (uncompressed tiled + MIP%s)\n",
                   totals.textureZones, totals.blendZones, totals.geometryZones, totals.textures, totals.texels * 1e-6,
-                  totals.gpuBytes / 1048576.0, totals.diskBytes / 1048576.0);
+                  totals.gpuBytes / 1048576.0, depth ? " + R32F depth" : "", totals.diskBytes / 1048576.0,
+                  depth ? " + float depth" : "");
+    out << line;
+    std::snprintf(line, sizeof line, "%s walls: largest texture error bound %.3f° (alpha %g°; %s)\n",
+                  depth ? "depth" : "flat", totals.maxErrorDeg, plan.alphaDeg,
+                  depth ? "depth reprojection bound over each wall's depth span, walls/depth_wall.h"
+                        : "flat bound at any depth, walls/angular_error.h");
     out << line;
     std::snprintf(line, sizeof line,
                   "texel density: %g px/degree at the nearest point of each texture's valid region, capped at %d texels "

@@ -2,15 +2,19 @@
 // The plan as a JSON document (for tools outside cavewall that check the bound) and as a
 // printed summary.
 //
-// JSON: {"alphaDeg": 10,
+// JSON: {"alphaDeg": 10, "wallKind": "flat" | "depth" (optional when read: flat),
 //        "walls": [{"id", "lowerLeft", "lowerRight", "upperLeft", "cells": [front, back],
-//                   "depthBehind": metres or null when unknown}],
+//                   "depthBehind": metres or null when unknown,
+//                   "depthNear": metres (optional when read: 0)}],
 //        "zones": [{"id", "cell", "wall", "kind": "texture" | "blend" | "geometry",
 //                   "floorPolygon": [[x, z], ...], "heightRange": [y0, y1],
 //                   "samplingPoint": [x, y, z]            (texture zones)
 //                   "samplingPoints": [[x, y, z], ...],   (blend zones: every texture mixed)
 //                   "mixesGeometry": bool                 (blend zones: also fades to geometry)}],
-//        "beyondZones": [{the keys of a zone, "eyeCell", "viaWall"}]}
+//        "beyondZones": [{the keys of a zone, "eyeCell", "viaWall"}],
+//        "textures": [{"id", "cell", "wall", "samplingPoint", "resolution": [x, y],
+//                      "maxError": radians, the bound proven over the texture's valid region, for the
+//                      plan's wall kind (Texture::maxError)}]  (optional when read)}
 // Beyond zones (Plan::beyond, walls/plan.h) serve the far wall `wall` of the neighbour `cell`
 // drawn as geometry, for eyes in the zone's floor polygon, which lies in cell `eyeCell` (in its
 // geometry zone or texture->geometry blend strip of wall `viaWall`, a wall of eyeCell or, at the
@@ -33,8 +37,8 @@ namespace cavewall::walls {
 
 nlohmann::json planToJson(const Plan& plan);
 
-// Reads a plan document; textures are rebuilt from the distinct sampling points of each cell
-// and wall (resolution and maxError are not stored and stay 0). Throws cavewall::Error with the
+// Reads a plan document; textures are those listed, or without a "textures" list rebuilt from
+// the distinct sampling points of each cell and wall (resolution and maxError then stay 0). Throws cavewall::Error with the
 // JSON path on bad input.
 Plan planFromJson(std::string_view text, const std::string& source);
 
@@ -45,6 +49,8 @@ struct PlanTotals {
     double texels = 0;       // base level texels over all textures
     double gpuBytes = 0;     // RGBA8 with a full MIP chain (4/3 of the base level)
     double diskBytes = 0;    // same, uncompressed: an upper bound for tiled MIP-mapped files
+                             // (depth walls: both + 4 bytes of depth per base-level texel)
+    double maxErrorDeg = 0;  // largest Texture::maxError, degrees
 };
 PlanTotals planTotals(const Plan& plan);
 

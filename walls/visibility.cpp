@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 
 namespace cavewall::walls {
 namespace {
@@ -217,22 +218,41 @@ WallContents wallContents(const scenes::Scene& scene, const scenes::SceneDescrip
         }
         if (!shown) continue;
         out.baked.push_back(i);
+        double nearest = std::numeric_limits<double>::infinity();
         for (int c = 0; c < 8; ++c) {
             const glm::dvec3 corner{c & 1 ? o.worldBounds.max.x : o.worldBounds.min.x, c & 2 ? o.worldBounds.max.y : o.worldBounds.min.y,
                                     c & 4 ? o.worldBounds.max.z : o.worldBounds.min.z};
             out.depthBehind = std::max(out.depthBehind, -signedDistance(corner, q, b, side));
+            nearest = std::min(nearest, std::max(0.0, -signedDistance(corner, q, b, side)));
         }
+        out.depthNear = out.baked.size() == 1 ? nearest : std::min(out.depthNear, nearest);
     }
     return out;
 }
 
+glm::dvec2 depthSpanOf(const WallContents* front, const WallContents* back) {
+    glm::dvec2 span(std::numeric_limits<double>::infinity(), 0.0);
+    for (const WallContents* c : {front, back})
+        if (c && !c->baked.empty()) span = {std::min(span.x, c->depthNear), std::max(span.y, c->depthBehind)};
+    return span.x > span.y ? glm::dvec2(0.0) : span;
+}
+
+std::vector<glm::dvec2> wallDepthSpans(const scenes::Scene& scene, const scenes::SceneDescription& d,
+                                       const VisibilityTable& table) {
+    std::vector<glm::dvec2> spans;
+    for (int w = 0; w < int(d.walls.size()); ++w) {
+        WallContents sides[2];
+        for (int side = 0; side < 2; ++side)
+            if (d.walls[w].cells[side] >= 0) sides[side] = wallContents(scene, d, table, w, side);
+        spans.push_back(depthSpanOf(&sides[0], &sides[1]));
+    }
+    return spans;
+}
+
 void assignDepthBehind(Plan& plan, const scenes::Scene& scene, const scenes::SceneDescription& d,
                        const VisibilityTable& table) {
-    for (PlannedWall& w : plan.walls) {
-        w.depthBehind = 0.0;
-        for (int side = 0; side < 2; ++side)
-            if (w.cells[side] >= 0) w.depthBehind = std::max(w.depthBehind, wallContents(scene, d, table, w.id, side).depthBehind);
-    }
+    const std::vector<glm::dvec2> spans = wallDepthSpans(scene, d, table);
+    for (PlannedWall& w : plan.walls) w.depthNear = spans[w.id].x, w.depthBehind = spans[w.id].y;
 }
 
 }  // namespace cavewall::walls

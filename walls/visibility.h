@@ -50,6 +50,8 @@ struct WallContents {
     std::vector<int> baked;          // object indices in the wall's texture for this side
     std::vector<int> intersecting;   // content objects crossing the wall (drawn as geometry)
     double depthBehind = 0.0;        // metres: deepest baked box corner behind the plane
+    double depthNear = 0.0;          // metres: nearest baked box corner behind the plane (>= 0;
+                                     // 0 when nothing is baked)
 };
 
 // What the textures of `wall` seen from `side` show: content objects behind the plane whose
@@ -57,8 +59,16 @@ struct WallContents {
 WallContents wallContents(const scenes::Scene& scene, const scenes::SceneDescription& description,
                           const VisibilityTable& table, int wall, int side);
 
-// Sets every PlannedWall::depthBehind to the largest of its two sides' depths.
+// Sets every PlannedWall::depthBehind to the largest of its two sides' depths and depthNear to
+// the smallest nearest depth of its sides that bake something (0 when neither does).
 void assignDepthBehind(Plan& plan, const scenes::Scene& scene, const scenes::SceneDescription& description,
                        const VisibilityTable& table);
+
+// The same per wall of `description`, as (depthNear, depthBehind): planZones' depthSpans.
+std::vector<glm::dvec2> wallDepthSpans(const scenes::Scene& scene, const scenes::SceneDescription& description,
+                                       const VisibilityTable& table);
+
+// The span of one wall from its sides' contents (nullptr for a side without a cell).
+glm::dvec2 depthSpanOf(const WallContents* front, const WallContents* back);
 
 }  // namespace cavewall::walls

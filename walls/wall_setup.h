@@ -34,4 +34,10 @@ struct WallSetup {
 WallSetup prepareWalls(const scenes::Scene& scene, const scenes::SceneDescription& description,
                        const PlanOptions& options);
 
+// `options` for walls of `kind` baked at most `bakeResolution` texels a side: wallKind set, and
+// for depth walls maxResolution at most bakeResolution (their bound reserves the texel size the
+// plan gives, walls/depth_wall.h, so the bake must not make texels coarser). Flat plans keep
+// maxResolution (their bound does not depend on texels, and the bake key hashes the options).
+PlanOptions planOptionsFor(PlanOptions options, WallKind kind, int bakeResolution);
+
 }  // namespace cavewall::walls

@@ -27,6 +27,14 @@ struct Context {
     Polygon2 cell;                      // local (s, d)
     double alpha, blend, minSize;
     double sLo, sHi, dMin, dMax;
+    const PlanOptions* options = nullptr;
+    glm::dvec2 span{0.0, kInf};         // the wall's depth span (depth walls)
+
+    // Is the volume proven within alpha for the texture baked from `sample`?
+    bool proven(const ZoneVolume& volume, glm::dvec3 sample) const {
+        if (options->wallKind == WallKind::Flat) return zoneWithin(volume, sample, in.quad, alpha);
+        return depthTextureBound(volume, sample, in.quad, span, *options) <= alpha;
+    }
 
     Polygon2 world(const Polygon2& local) const {
         Polygon2 out;
@@ -44,7 +52,7 @@ struct Context {
         *sample = sampling(core.empty() ? (ext.empty() ? cell : ext) : core);
         if (ext.empty()) return true;
         const ZoneVolume volume{world(ext), in.heightRange};
-        if (zoneWithin(volume, *sample, in.quad, alpha)) return true;
+        if (proven(volume, *sample)) return true;
         // Eyes near the wall dominate the error: a sampling point nearer the wall's side of
         // the zone often serves the whole zone when the centroid does not.
         for (double f : kNearerSampling) {
@@ -52,7 +60,7 @@ struct Context {
             const Polygon2 nearer = clipBox(core.empty() ? ext : core, {-kInf, -kInf}, {kInf, row.a + f * (d - row.a) * 2});
             if (nearer.empty()) continue;
             const glm::dvec3 s = sampling(nearer);
-            if (zoneWithin(volume, s, in.quad, alpha)) return *sample = s, true;
+            if (proven(volume, s)) return *sample = s, true;
         }
         return false;
     }
@@ -264,6 +272,8 @@ struct Emitter {
 
 WallSide planSide(Plan& plan, const SideInput& in, std::vector<Zone>& zones) {
     Context c{in, {}, glm::radians(plan.options.alphaDeg), plan.options.blendWidth, plan.options.minZoneSize, 0, 0, 0, 0};
+    c.options = &plan.options;
+    c.span = {plan.walls[in.wall].depthNear, plan.walls[in.wall].depthBehind};
     for (const glm::dvec2& p : in.cellRegion) c.cell.push_back(in.frame.toLocal(p));
     glm::dvec2 lo, hi;
     extentOf(c.cell, lo, hi);

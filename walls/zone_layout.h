@@ -29,6 +29,9 @@ struct SideInput {
 // ones are refused with an Error naming the cell, since the work grows with the cell's size.
 inline constexpr double kMaxCellExtent = 20000.0;
 
+// The smallest distance from `wall`'s plane of `region`'s vertices (x, z) at height y, metres.
+double nearestDistance(const Polygon2& region, double y, const ScreenQuad& wall);
+
 // Appends the side's textures to `plan` and its zones to `zones` (Plan::zones, or
 // Plan::beyondZones for the far walls of a neighbour; ids continue each vector's numbering) and
 // returns the side's summary.

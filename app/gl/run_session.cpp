@@ -36,7 +36,8 @@ namespace {
 // Prepares the walls and bakes (or finds in the cache) their textures.
 walls::WallSetup prepareWalls(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
                               gl::Context& context) {
-    walls::WallSetup setup = walls::prepareWalls(scene, d, o.plan);
+    walls::WallSetup setup =
+        walls::prepareWalls(scene, d, walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution));
     gl::BakeRequest request;
     request.scene = o.scene;
     request.context = &context;

@@ -9,6 +9,7 @@
 #include "config/display_config.h"
 #include "scenes/region.h"
 #include "walls/angular_error.h"
+#include "walls/depth_wall.h"
 #include "walls/frame_planner.h"
 #include "walls/wall_setup.h"
 
@@ -334,6 +335,41 @@ TEST_F(FramePlannerTest, DrawnWeightsSumToOneAndErrorsAreTheExactAngularError) {
     // The sweep crosses texture zones and blend strips, not only one of them.
     EXPECT_GT(textured, 20);
     EXPECT_GT(blended, 5);
+}
+
+// Depth walls (PlanOptions::wallKind): the error reported and counted over alpha is the depth
+// walls' own bound (depthEyeBound over the wall's depth span, from the boxes: 3 .. 7 m behind
+// the plane), not the flat one.
+TEST_F(FramePlannerTest, DepthWallsReportTheirOwnBound) {
+    PlanOptions options;
+    options.wallKind = WallKind::Depth;
+    const WallSetup walls = prepareWalls(scene, description, options);
+    const PlannedWall& wall = walls.plan.walls[0];
+    EXPECT_EQ(wall.depthNear, 3.0);
+    EXPECT_EQ(wall.depthBehind, 7.0);
+    FramePlanner planner(scene, description, display, &walls, Transition::Blend, 0.5);
+    int textured = 0, belowFlat = 0;
+    for (double z = 0.3; z < 10.0; z += 0.37)
+        for (double x = -5.7; x < 6.0; x += 0.53) {
+            const glm::dvec3 eye(x, 1.7, z);
+            const FramePlan p = frame(planner, at(eye));
+            const WallState& s = row(p);
+            double worst = 0.0, flat = 0.0;
+            for (const auto& [id, weight] : s.textures) {
+                const Texture& t = walls.plan.textures[id];
+                worst = std::max(worst, depthEyeBound(eye, t.samplingPoint, wall.quad, {3.0, 7.0},
+                                                      texelDiagonal(wall.quad, t.resolution)));
+                flat = std::max(flat, maxAngularError(eye, t.samplingPoint, wall.quad, wall.depthBehind));
+            }
+            EXPECT_EQ(s.errorDeg, glm::degrees(worst));
+            EXPECT_EQ(p.texturesOverAlpha, 0);
+            EXPECT_LE(worst, glm::radians(walls.plan.alphaDeg));
+            if (s.textures.empty()) continue;
+            ++textured;
+            belowFlat += worst < flat;
+        }
+    EXPECT_GT(textured, 20);
+    EXPECT_GT(belowFlat, textured / 2);  // a narrow span: mostly below the flat error
 }
 
 TEST_F(FramePlannerTest, WithoutWallsEverythingIsGeometryAndNothingIsRequested) {

@@ -1,11 +1,15 @@
 #include "tests/cli/run_cli.h"
 #include "walls/angular_error.h"
+#include "walls/depth_wall.h"
+#include "walls/plan.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <map>
+#include <tuple>
 #include <fstream>
 
 namespace cavewall::test {
@@ -59,6 +63,49 @@ TEST(PlanCli, PlansAGeneratedHouseAndTheJsonKeepsTheBound) {
     EXPECT_GT(checked, 100);
 }
 
+// Depth walls (issue 16): the JSON names the kind and each wall's depth span, and every texture
+// a zone draws is within alpha at every zone vertex by the depth walls' own bound, recomputed
+// from the file alone (span, sampling point, resolution).
+TEST(PlanCli, DepthWallsJsonKeepsTheirOwnBound) {
+    const auto dir = outputDir();
+    const CliResult gen = runCavewall({"generate", "house", "--out", (dir / "house").string(), "--triangles", "2000"});
+    ASSERT_EQ(gen.exitCode, 0) << gen.err;
+    const CliResult r = runCavewall({"plan", (dir / "house").string(), "--alpha", "12", "--walls", "depth", "--json",
+                                     (dir / "house.depth.json").string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("depth walls: largest texture error bound"));
+    std::ifstream in(dir / "house.depth.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["wallKind"], "depth");
+    std::map<std::tuple<int, int, double, double, double>, nlohmann::json> textures;
+    for (const auto& t : j["textures"]) {
+        EXPECT_LE(t["maxError"].get<double>(), glm::radians(12.0));
+        const glm::dvec3 s = vec3(t["samplingPoint"]);
+        textures[{t["cell"].get<int>(), t["wall"].get<int>(), s.x, s.y, s.z}] = t;
+    }
+    int checked = 0;
+    for (const auto& z : j["zones"]) {
+        if (z["kind"] == "geometry") continue;
+        const auto& w = j["walls"][z["wall"].get<int>()];
+        const walls::ScreenQuad quad{vec3(w["lowerLeft"]), vec3(w["lowerRight"]), vec3(w["upperLeft"])};
+        const glm::dvec2 span(w["depthNear"].get<double>(), w["depthBehind"].get<double>());
+        const nlohmann::json points = z["kind"] == "texture" ? nlohmann::json::array({z["samplingPoint"]}) : z["samplingPoints"];
+        for (const auto& p : points) {
+            const glm::dvec3 s = vec3(p);
+            const nlohmann::json& t = textures.at({z["cell"].get<int>(), z["wall"].get<int>(), s.x, s.y, s.z});
+            const glm::ivec2 resolution(t["resolution"][0].get<int>(), t["resolution"][1].get<int>());
+            for (const auto& v : z["floorPolygon"])
+                for (double y : {z["heightRange"][0].get<double>(), z["heightRange"][1].get<double>()}) {
+                    const glm::dvec3 eye(v[0].get<double>(), y, v[1].get<double>());
+                    const double bound = walls::depthEyeBound(eye, s, quad, span, walls::texelDiagonal(quad, resolution));
+                    ASSERT_LE(bound, t["maxError"].get<double>() + 1e-12);
+                    ++checked;
+                }
+        }
+    }
+    EXPECT_GT(checked, 100);
+}
+
 TEST(PlanCli, BadArgumentsFailClearly) {
     const struct {
         std::vector<std::string> args;
@@ -68,6 +115,7 @@ TEST(PlanCli, BadArgumentsFailClearly) {
         {{"plan", "/nonexistent/scene.json"}, "/nonexistent/scene.json"},
         {{"plan", "x", "--alpha", "0"}, "--alpha"},
         {{"plan", "x", "--alhpa", "10"}, "alhpa"},
+        {{"plan", "x", "--walls", "deep"}, "--walls: expected a wall kind, flat or depth, got \"deep\""},
     };
     for (const auto& c : cases) {
         SCOPED_TRACE(c.message);

@@ -291,8 +291,10 @@ TEST_F(BakeCacheTest, DepthBakesKeyTheirKindAndKeepDepthFilesValid) {
     request.settings.kind = walls::WallKind::Depth;
     const BakeResult depth = bakeScene(request);
     EXPECT_NE(depth.folder, flat.folder);
+    // Depth walls are planned with their own bound (walls::planOptionsFor), so their texture
+    // count is their plan's, not the flat one.
     const int n = static_cast<int>(depth.manifest.textures.size());
-    ASSERT_EQ(n, static_cast<int>(flat.manifest.textures.size()));
+    ASSERT_GT(n, 0);
     EXPECT_EQ(depth.baked, n);
     for (const walls::BakedTexture& t : depth.manifest.textures) {
         ASSERT_FALSE(t.depthFile.empty());

@@ -304,6 +304,12 @@ void Bake::report() {
 
 BakeResult bakeWalls(const scenes::Scene& scene, const scenes::SceneDescription& description,
                      const walls::WallSetup& walls, const BakeRequest& request) {
+    // Depth walls are planned with their own bound (walls::planOptionsFor): a plan of the other
+    // kind would draw textures whose proven bound is not the one planned.
+    if (walls.plan.options.wallKind != request.settings.kind)
+        throw Error("bake: expected a plan for " + std::string(walls::wallKindName(request.settings.kind)) +
+                    " walls (walls::planOptionsFor), got one for " +
+                    std::string(walls::wallKindName(walls.plan.options.wallKind)) + " walls");
     return Bake(scene, description, walls, request).run();
 }
 
@@ -311,7 +317,9 @@ BakeResult bakeScene(const BakeRequest& request) {
     validateBakeSettings(request.settings);
     scenes::SceneDescription description;
     const scenes::Scene scene = scenes::loadSceneFile(request.scene, &description);
-    return bakeWalls(scene, description, walls::prepareWalls(scene, description, request.plan), request);
+    const walls::PlanOptions plan =
+        walls::planOptionsFor(request.plan, request.settings.kind, request.settings.maxResolution);
+    return bakeWalls(scene, description, walls::prepareWalls(scene, description, plan), request);
 }
 
 }  // namespace cavewall::gl

@@ -41,7 +41,7 @@ struct BakedWalls {
 // Plans and bakes (or finds in the cache) the walls at `alphaDeg`.
 BakedWalls bakeWalls(const BenchOptions& o, double alphaDeg, const scenes::Scene& scene,
                      const scenes::SceneDescription& d, gl::Context& context) {
-    walls::PlanOptions plan = o.plan;
+    walls::PlanOptions plan = walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution);
     plan.alphaDeg = alphaDeg;
     BakedWalls out;
     out.setup = walls::prepareWalls(scene, d, plan);

@@ -1,0 +1,234 @@
+// The depth walls' planner bound (walls/depth_wall.h depthEyeBound, depthZoneBound) and the
+// planner using it (walls/plan.h, PlanOptions::wallKind): the bound holds for every pixel the
+// reference reprojection draws and is reached within a factor of two; every planned depth
+// texture is within alpha at every eye of its valid region, whatever the depths in the wall's
+// span; depth walls with a narrow span need fewer textures than flat walls.
+#include "walls/depth_wall.h"
+#include "walls/plan.h"
+#include "walls/plan_io.h"
+#include "walls/wall_setup.h"
+
+#include "config/error.h"
+#include "test_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+namespace cavewall::walls {
+namespace {
+
+// The angle at the eye (wall frame) between the pixel at wall point w and the surface point the
+// pixel shows: what S saw through the centre of the texel hit, at the stored depth.
+double shownError(const DepthImage& image, const WallFrame& f, glm::dvec3 eye, glm::dvec3 sample, glm::dvec2 w,
+                  const ReprojectHit& hit) {
+    const double i = std::floor(hit.texture.x / f.width * image.width), j = std::floor((f.height - hit.texture.y) / f.height * image.height);
+    const glm::dvec2 tc = texelCentre(f, image.width, image.height, int(i), int(j));
+    const double ds = -sample.z;
+    const glm::dvec3 p(tc + (hit.surface / ds) * (tc - glm::dvec2(sample)), hit.surface);
+    const glm::dvec3 a = glm::normalize(p - eye), b = glm::normalize(glm::dvec3(w, 0.0) - eye);
+    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+}
+
+// A card (x in [1.5, 2.5], y in [1, 2] of the wall frame) at depth 1 in front of a plane at
+// depth 4, as S sees it through each texel centre.
+DepthImage cardImage(const WallFrame& f, glm::dvec3 s, int width, int height) {
+    DepthImage image{width, height, {}};
+    const double ds = -s.z;
+    for (int j = 0; j < height; ++j)
+        for (int i = 0; i < width; ++i) {
+            const glm::dvec2 t = texelCentre(f, width, height, i, j);
+            const glm::dvec2 c = t + (1.0 / ds) * (t - glm::dvec2(s));
+            image.depth.push_back(c.x >= 1.5 && c.x <= 2.5 && c.y >= 1.0 && c.y <= 2.0 ? 1.0f : 4.0f);
+        }
+    return image;
+}
+
+const display::ScreenQuad kQuad{{-2, 0, 0}, {2, 0, 0}, {-2, 3, 0}};  // 4 m x 3 m, facing +z
+
+// The skin the march stretches across the card's right edge shows the card's points at ray
+// depths up to 4: the widest error is the bound's step term. A bound 2x too loose fails.
+TEST(DepthPlan, EyeBoundHoldsForEveryDrawnPixelAndIsReached) {
+    const WallFrame f = wallFrame(kQuad);
+    const glm::dvec3 s(2.0, 1.5, -3.0), e(2.6, 1.5, -3.0);  // the eye moved 0.6 m along +x
+    const int n = 512;
+    const DepthImage image = cardImage(f, s, n, n * 3 / 4);
+    const glm::dvec2 span(1.0, 4.0);
+    ASSERT_EQ(depthRange(image), span);
+    const double bound = depthEyeBound(f.toWorld(e), f.toWorld(s), kQuad, span, std::hypot(4.0 / n, 3.0 / (n * 3 / 4)));
+    // Equal distances: v = E - S at every texel, so the step term is (k(4) - k(1)) 0.6 / 3.
+    const double k1 = 1.0 / 4.0, k4 = 4.0 / 7.0;
+    EXPECT_NEAR(bound, (k4 - k1) * 0.6 / 3.0 + 0.5 * std::hypot(4.0 / n, 3.0 / (n * 3 / 4)) / 3.0, 1e-6);
+    double worst = 0.0;
+    int drawn = 0;
+    for (int row = 0; row < 9; ++row)
+        for (int k = 0; k < 2000; ++k) {
+            const glm::dvec2 w(f.width * (k + 0.5) / 2000, 1.1 + 0.1 * row);
+            const ReprojectHit hit = reproject(image, f, e, s, w, span);
+            if (!hit.hit) continue;
+            ++drawn;
+            worst = std::max(worst, shownError(image, f, e, s, w, hit));
+        }
+    std::printf("depth eye bound %.5f rad, largest error of %d drawn pixels %.5f rad (ratio %.3f)\n", bound, drawn, worst,
+                worst / bound);
+    EXPECT_GT(drawn, 16000);  // of 18000: the rest see past the wall's edges (no texel holds that)
+    EXPECT_LE(worst, bound);
+    EXPECT_GE(worst, 0.5 * bound);
+}
+
+TEST(DepthPlan, EyeBoundShrinksWithTheSpanAndIsSymmetricAcrossTheWall) {
+    const glm::dvec3 s(0.5, 1.5, 3.0), e(1.5, 1.7, 2.0);
+    const double wide = depthEyeBound(e, s, kQuad, {0.0, 1e9}, 0.0), narrow = depthEyeBound(e, s, kQuad, {2.0, 3.0}, 0.0);
+    EXPECT_GT(wide, 3.0 * narrow);
+    EXPECT_LT(depthEyeBound(e, s, kQuad, {2.0, 2.0}, 0.0), 1e-5);  // one depth: exact but for the widening
+    // The same eye and sampling point mirrored behind the wall (a texture of the back side).
+    const glm::dvec3 em(e.x, e.y, -e.z), sm(s.x, s.y, -s.z);
+    EXPECT_NEAR(depthEyeBound(em, sm, kQuad, {2.0, 3.0}, 0.01), depthEyeBound(e, s, kQuad, {2.0, 3.0}, 0.01), 1e-12);
+    // An eye on the other side of the plane, or on it, proves nothing.
+    EXPECT_GT(depthEyeBound(em, s, kQuad, {2.0, 3.0}, 0.0), 3.0);
+    EXPECT_GT(depthEyeBound({1, 1, 0}, s, kQuad, {2.0, 3.0}, 0.0), 3.0);
+}
+
+// The zone bound is at least every eye's bound in the zone (sampled inside and on its border).
+TEST(DepthPlan, ZoneBoundCoversEveryEyeOfTheZone) {
+    const ZoneVolume zone{{{-1, 1}, {2, 1.5}, {2.5, 4}, {-1.5, 3}}, {1.2, 2.0}};
+    const glm::dvec3 s(0.3, 1.6, 2.2);
+    const glm::dvec2 span(0.7, 6.0);
+    const double bound = depthZoneBound(zone, s, kQuad, span, 0.004);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    double worst = 0.0;
+    for (int i = 0; i < 4000; ++i) {
+        // A random convex combination of the floor vertices, at a random head height.
+        double w[4], sum = 0.0;
+        for (double& x : w) sum += x = -std::log(u(rng) + 1e-300);
+        glm::dvec2 p(0.0);
+        for (int k = 0; k < 4; ++k) p += (w[k] / sum) * zone.floor[k];
+        const glm::dvec3 eye(p.x, 1.2 + 0.8 * u(rng), p.y);
+        worst = std::max(worst, depthEyeBound(eye, s, kQuad, span, 0.004));
+    }
+    std::printf("zone bound %.4f rad, largest per-eye bound of 4000 eyes %.4f rad (ratio %.3f)\n", bound, worst, worst / bound);
+    EXPECT_LE(worst, bound);
+    // This zone spans 1 to 4 m from the wall: the zone bound takes the nearest distance with the
+    // largest parallax of any eye, so it is looser than at one eye (0.44 here), not unbounded.
+    EXPECT_GE(worst, 0.4 * bound);
+}
+
+// Depth images whose depths are anywhere in the wall's span: blocks of random depth.
+DepthImage blockImage(int width, int height, glm::dvec2 span, std::mt19937& rng) {
+    std::uniform_real_distribution<double> u(span.x, span.y);
+    const int blocks = 6;
+    std::vector<float> depth(blocks * blocks);
+    for (float& d : depth) d = static_cast<float>(u(rng));
+    depth[0] = static_cast<float>(span.x), depth[1] = static_cast<float>(span.y);  // the extremes occur
+    DepthImage image{width, height, {}};
+    for (int j = 0; j < height; ++j)
+        for (int i = 0; i < width; ++i) image.depth.push_back(depth[(j * blocks / height) * blocks + i * blocks / width]);
+    return image;
+}
+
+Plan planHall(WallKind kind, glm::dvec2 span, double alphaDeg = 10.0) {
+    PlanOptions o;
+    o.alphaDeg = alphaDeg;
+    o.wallKind = kind;
+    o.maxResolution = 64;  // coarse texels: the texel term counts
+    return planZones(testing::hall(), o, {span});
+}
+
+// Every texture planned for depth walls: its stored bound is within alpha, and at eyes all over
+// its valid region (vertices, edge midpoints, centroid; both head heights) every pixel the
+// reference reprojection draws from depth images with depths in the span is within alpha.
+TEST(DepthPlan, EveryPlannedDepthTextureIsWithinAlphaWhereverItIsDrawn) {
+    const glm::dvec2 span(1.5, 9.0);
+    const Plan plan = planHall(WallKind::Depth, span);
+    ASSERT_FALSE(plan.textures.empty());
+    const double alpha = glm::radians(plan.alphaDeg);
+    std::mt19937 rng(11);
+    double worstMeasured = 0.0, worstBound = 0.0;
+    for (const Texture& t : plan.textures) {
+        SCOPED_TRACE("texture " + std::to_string(t.id));
+        EXPECT_LE(t.maxError, alpha);
+        EXPECT_GT(t.maxError, 0.0);
+        const PlannedWall& wall = plan.walls[t.wall];
+        const int side = wall.cells[0] == t.cell ? 0 : 1;
+        const WallFrame f = wallFrame(quadSeenFrom(wall.quad, side));
+        const glm::dvec3 s = f.toWall(t.samplingPoint);
+        ASSERT_LT(s.z, 0.0);
+        const DepthImage image = blockImage(t.resolution.x, t.resolution.y, span, rng);
+        std::vector<glm::dvec2> eyes(t.validRegion.begin(), t.validRegion.end());
+        for (std::size_t i = 0; i < t.validRegion.size(); ++i)
+            eyes.push_back(0.5 * (t.validRegion[i] + t.validRegion[(i + 1) % t.validRegion.size()]));
+        eyes.push_back(centroid(t.validRegion));
+        for (const glm::dvec2& p : eyes)
+            for (double y : {1.2, 2.0}) {
+                const glm::dvec3 eyeWorld(p.x, y, p.y), e = f.toWall(eyeWorld);
+                const double bound = textureErrorAt(plan, t, eyeWorld);
+                EXPECT_LE(bound, t.maxError + 1e-12);
+                worstBound = std::max(worstBound, bound);
+                for (int k = 0; k < 16; ++k)
+                    for (int m = 0; m < 12; ++m) {
+                        const glm::dvec2 w(f.width * (k + 0.5) / 16, f.height * (m + 0.5) / 12);
+                        const ReprojectHit hit = reproject(image, f, e, s, w, depthRange(image));
+                        if (!hit.hit) continue;
+                        const double error = shownError(image, f, e, s, w, hit);
+                        worstMeasured = std::max(worstMeasured, error);
+                        ASSERT_LE(error, bound + 1e-12) << "eye " << p.x << ", " << y << ", " << p.y;
+                    }
+            }
+    }
+    std::printf("%zu depth textures at alpha 10°: largest per-eye bound %.3f°, largest measured error %.3f°\n",
+                plan.textures.size(), glm::degrees(worstBound), glm::degrees(worstMeasured));
+    EXPECT_LE(worstMeasured, alpha);
+}
+
+TEST(DepthPlan, NarrowSpansNeedFewerTexturesThanFlatWalls) {
+    const Plan flat = planHall(WallKind::Flat, {1.5, 9.0});
+    const Plan depth = planHall(WallKind::Depth, {1.5, 9.0});
+    std::printf("reference hall at alpha 10°: %zu flat textures, %zu depth textures (span 1.5 .. 9 m)\n",
+                flat.textures.size(), depth.textures.size());
+    EXPECT_LT(depth.textures.size(), flat.textures.size());
+    // The flat plan does not depend on the span; each texture reports its own kind's bound.
+    EXPECT_EQ(flat.textures.size(), planHall(WallKind::Flat, {0.0, 1e9}).textures.size());
+    for (const Texture& t : depth.textures)
+        EXPECT_NEAR(t.maxError,
+                    depthTextureBound({t.validRegion, testing::hall().headHeightRange}, t.samplingPoint,
+                                      depth.walls[t.wall].quad, {1.5, 9.0}, depth.options),
+                    1e-15);
+}
+
+TEST(DepthPlan, SpansAreCheckedAndCarriedByTheJson) {
+    PlanOptions o;
+    o.wallKind = WallKind::Depth;
+    try {
+        planZones(testing::hall(), o, {{3.0, 2.0}});
+        FAIL() << "expected an Error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("wall 'middle': expected a depth span 0 <= near <= far"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_THROW(planZones(testing::hall(), o, {{1.0, 2.0}, {1.0, 2.0}}), Error);
+    const Plan plan = planZones(testing::hall(), o, {{1.5, 9.0}});
+    const nlohmann::json j = planToJson(plan);
+    EXPECT_EQ(j.at("wallKind"), "depth");
+    EXPECT_EQ(j.at("walls")[0].at("depthNear"), 1.5);
+    ASSERT_EQ(j.at("textures").size(), plan.textures.size());
+    EXPECT_EQ(j.at("textures")[0].at("maxError").get<double>(), plan.textures[0].maxError);
+    const Plan back = planFromJson(j.dump(), "plan.json");
+    EXPECT_EQ(back.options.wallKind, WallKind::Depth);
+    EXPECT_EQ(back.walls[0].depthNear, 1.5);
+    EXPECT_EQ(back.walls[0].depthBehind, 9.0);
+    EXPECT_EQ(back.textures[0].maxError, plan.textures[0].maxError);
+}
+
+TEST(DepthPlan, PlanOptionsForDepthWallsKeepTheBakedTexelSize) {
+    PlanOptions o;
+    EXPECT_EQ(planOptionsFor(o, WallKind::Depth, 512).maxResolution, 512);
+    EXPECT_EQ(planOptionsFor(o, WallKind::Depth, 512).wallKind, WallKind::Depth);
+    EXPECT_EQ(planOptionsFor(o, WallKind::Flat, 512).maxResolution, o.maxResolution);
+}
+
+}  // namespace
+}  // namespace cavewall::walls
