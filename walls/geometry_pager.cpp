@@ -8,24 +8,29 @@ namespace cavewall::walls {
 
 namespace {
 
-std::size_t meshBytes(const scenes::Mesh& m) { return m.positions.size() * kVertexBytes + m.indices.size() * kIndexBytes; }
+std::size_t meshBytes(const scenes::Scene& scene, int mesh, const std::vector<scenes::MeshLod>* lods) {
+    const scenes::Mesh& m = scene.meshes[mesh];
+    const bool levels = lods && static_cast<std::size_t>(mesh) < lods->size() && !(*lods)[mesh].levels.empty();
+    const std::size_t indices = levels ? (*lods)[mesh].indices.size() : m.indices.size();
+    return m.positions.size() * kVertexBytes + indices * kIndexBytes;
+}
 
 }  // namespace
 
-std::vector<std::size_t> cellGeometryBytes(const scenes::Scene& scene, int cellCount) {
+std::vector<std::size_t> cellGeometryBytes(const scenes::Scene& scene, int cellCount,
+                                           const std::vector<scenes::MeshLod>* lods) {
     std::vector<std::size_t> bytes(static_cast<std::size_t>(std::max(cellCount, 0)), 0);
     std::vector<std::set<int>> meshes(bytes.size());
     for (const scenes::Object& o : scene.objects) {
-        if (o.role == scenes::Role::Structure || o.cell < 0 || o.cell >= cellCount) continue;
-        bytes[o.cell] += kInstanceBytes;
-        if (meshes[o.cell].insert(o.mesh).second) bytes[o.cell] += meshBytes(scene.meshes[o.mesh]);
+        if (!scenes::pagedWithCell(o, cellCount)) continue;
+        if (meshes[o.cell].insert(o.mesh).second) bytes[o.cell] += meshBytes(scene, o.mesh, lods);
     }
     return bytes;
 }
 
-std::size_t modelGeometryBytes(const scenes::Scene& scene) {
-    std::size_t bytes = scene.objects.size() * kInstanceBytes;
-    for (const scenes::Mesh& m : scene.meshes) bytes += meshBytes(m);
+std::size_t modelGeometryBytes(const scenes::Scene& scene, const std::vector<scenes::MeshLod>* lods) {
+    std::size_t bytes = 0;
+    for (int i = 0; i < static_cast<int>(scene.meshes.size()); ++i) bytes += meshBytes(scene, i, lods);
     return bytes;
 }
 
