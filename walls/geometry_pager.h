@@ -21,6 +21,7 @@
 
 #include "scenes/mesh_lod.h"
 #include "scenes/scene.h"
+#include "walls/residency.h"
 
 #include <condition_variable>
 #include <cstddef>
@@ -81,10 +82,8 @@ public:
 
 private:
     void worker();
-    void evictFor(std::size_t bytes);
 
     std::vector<std::size_t> _bytes;
-    std::size_t _budget;
     Loader _loader;
 
     mutable std::mutex _mutex;
@@ -92,11 +91,8 @@ private:
     std::deque<int> _queue;
     std::set<int> _loading, _wantedNow;
     std::vector<int> _ready;
-    std::set<int> _resident;
-    std::map<int, long> _lastWanted;
-    std::vector<int> _evictions;
-    long _frame = 0;
-    GeometryPagerStats _stats;
+    ResidencyCore _residency;        // resident cells, budget and eviction (walls/residency.h)
+    GeometryPagerStats _stats;   // misses (the rest from _residency)
     bool _stop = false;
     std::thread _thread;
 };
