@@ -8,29 +8,34 @@ namespace cavewall::walls {
 
 namespace {
 
-std::size_t meshBytes(const scenes::Mesh& m) { return m.positions.size() * kVertexBytes + m.indices.size() * kIndexBytes; }
+std::size_t meshBytes(const scenes::Scene& scene, int mesh, const std::vector<scenes::MeshLod>* lods) {
+    const scenes::Mesh& m = scene.meshes[mesh];
+    const bool levels = lods && static_cast<std::size_t>(mesh) < lods->size() && !(*lods)[mesh].levels.empty();
+    const std::size_t indices = levels ? (*lods)[mesh].indices.size() : m.indices.size();
+    return m.positions.size() * kVertexBytes + indices * kIndexBytes;
+}
 
 }  // namespace
 
-std::vector<std::size_t> cellGeometryBytes(const scenes::Scene& scene, int cellCount) {
+std::vector<std::size_t> cellGeometryBytes(const scenes::Scene& scene, int cellCount,
+                                           const std::vector<scenes::MeshLod>* lods) {
     std::vector<std::size_t> bytes(static_cast<std::size_t>(std::max(cellCount, 0)), 0);
     std::vector<std::set<int>> meshes(bytes.size());
     for (const scenes::Object& o : scene.objects) {
-        if (o.role == scenes::Role::Structure || o.cell < 0 || o.cell >= cellCount) continue;
-        bytes[o.cell] += kInstanceBytes;
-        if (meshes[o.cell].insert(o.mesh).second) bytes[o.cell] += meshBytes(scene.meshes[o.mesh]);
+        if (!scenes::pagedWithCell(o, cellCount)) continue;
+        if (meshes[o.cell].insert(o.mesh).second) bytes[o.cell] += meshBytes(scene, o.mesh, lods);
     }
     return bytes;
 }
 
-std::size_t modelGeometryBytes(const scenes::Scene& scene) {
-    std::size_t bytes = scene.objects.size() * kInstanceBytes;
-    for (const scenes::Mesh& m : scene.meshes) bytes += meshBytes(m);
+std::size_t modelGeometryBytes(const scenes::Scene& scene, const std::vector<scenes::MeshLod>* lods) {
+    std::size_t bytes = 0;
+    for (int i = 0; i < static_cast<int>(scene.meshes.size()); ++i) bytes += meshBytes(scene, i, lods);
     return bytes;
 }
 
 GeometryPager::GeometryPager(std::vector<std::size_t> cellBytes, double budgetMB, Loader loader)
-    : _bytes(std::move(cellBytes)), _budget(static_cast<std::size_t>(budgetMB * 1024 * 1024)), _loader(std::move(loader)) {
+    : _bytes(std::move(cellBytes)), _loader(std::move(loader)), _residency(static_cast<std::size_t>(budgetMB * 1024 * 1024)) {
     _thread = std::thread([this] { worker(); });
 }
 
@@ -45,14 +50,14 @@ GeometryPager::~GeometryPager() {
 
 void GeometryPager::request(const std::vector<int>& now, const std::vector<int>& soon) {
     std::lock_guard lock(_mutex);
-    ++_frame;
+    _residency.beginFrame();
     _wantedNow.clear();
     std::deque<int> queue;
     auto want = [&](int cell, bool isNow) {
         if (cell < 0 || cell >= static_cast<int>(_bytes.size())) return;
-        if (isNow) _wantedNow.insert(cell);
-        _lastWanted[cell] = _frame;
-        if (_resident.count(cell)) return;
+        if (isNow) _wantedNow.insert(cell), _residency.wantNow(cell);
+        _residency.touch(cell);
+        if (_residency.isResident(cell)) return;
         _stats.misses += isNow;
         const bool pending = _loading.count(cell) || std::find(_ready.begin(), _ready.end(), cell) != _ready.end();
         if (!pending && std::find(queue.begin(), queue.end(), cell) == queue.end()) queue.push_back(cell);
@@ -92,49 +97,33 @@ std::vector<int> GeometryPager::takeReady() {
     return std::exchange(_ready, {});
 }
 
-void GeometryPager::evictFor(std::size_t bytes) {
-    std::size_t used = 0;
-    for (int c : _resident) used += _bytes[c];
-    while (used + bytes > _budget) {
-        int victim = -1;
-        long oldest = LONG_MAX;
-        for (int c : _resident)
-            if (!_wantedNow.count(c) && _lastWanted[c] < oldest) oldest = _lastWanted[c], victim = c;
-        if (victim < 0) return;  // everything resident is wanted now: over budget until the view moves
-        used -= _bytes[victim];
-        _resident.erase(victim);
-        _evictions.push_back(victim);
-        ++_stats.evictions;
-    }
-}
-
 void GeometryPager::markResident(int cell) {
     std::lock_guard lock(_mutex);
-    if (_resident.count(cell)) return;
-    evictFor(_bytes.at(cell));
-    _resident.insert(cell);
-    ++_stats.pageIns;
+    if (_residency.isResident(cell)) return;
+    _residency.markResident(cell, _bytes.at(cell));
 }
 
 std::vector<int> GeometryPager::takeEvictions() {
     std::lock_guard lock(_mutex);
-    return std::exchange(_evictions, {});
+    return _residency.takeEvictions();
 }
 
 bool GeometryPager::isResident(int cell) const {
     std::lock_guard lock(_mutex);
-    return _resident.count(cell) > 0;
+    return _residency.isResident(cell);
 }
 
 GeometryPagerStats GeometryPager::stats() const {
     std::lock_guard lock(_mutex);
     GeometryPagerStats s = _stats;
-    s.resident = static_cast<int>(_resident.size());
-    for (int c : _resident) s.residentMB += static_cast<double>(_bytes[c]) / (1024.0 * 1024.0);
+    s.resident = _residency.count();
+    s.residentMB = _residency.residentMB();
+    s.pageIns = _residency.pageIns();
+    s.evictions = _residency.evictions();
     return s;
 }
 
-double GeometryPager::budgetMB() const { return static_cast<double>(_budget) / (1024.0 * 1024.0); }
+double GeometryPager::budgetMB() const { return static_cast<double>(_residency.budget()) / (1024.0 * 1024.0); }
 
 void GeometryPager::waitIdle() {
     std::unique_lock lock(_mutex);

@@ -12,12 +12,16 @@
 // keeps its wall textures (never a stall, never a hole), and the miss is counted. Structure
 // and objects without a cell are always resident and not counted in the budget.
 //
-// Sizes: a cell's bytes are those of the meshes its content objects use (each once per cell,
-// compact vertices and 32-bit indices, kVertexBytes/kIndexBytes) plus one instance record per
-// object; a mesh shared by two cells counts in both (each cell is loadable on its own, as from a
-// cell-ordered cache), so resident bytes are an upper bound of what the GPU holds.
+// Sizes: a cell's bytes are those of the meshes its paged objects use (scenes::pagedWithCell;
+// each mesh once per cell, compact vertices and 32-bit indices, kVertexBytes/kIndexBytes, the
+// indices of every level of detail when the levels are given): exactly the GPU buffers
+// display/gl/scene_gpu.h allocates for the cell. A mesh shared by two cells counts in both, as
+// the GPU stores it in both (each cell is loadable on its own, as from a cell-ordered cache).
+// Per-object transforms are per view (the scene renderer's draw records), not per cell.
 
+#include "scenes/mesh_lod.h"
 #include "scenes/scene.h"
+#include "walls/residency.h"
 
 #include <condition_variable>
 #include <cstddef>
@@ -33,13 +37,13 @@ namespace cavewall::walls {
 
 inline constexpr std::size_t kVertexBytes = 24;     // display/gl's compact vertex
 inline constexpr std::size_t kIndexBytes = 4;
-inline constexpr std::size_t kInstanceBytes = 64;   // one transform per object
 
-// Bytes of each cell's geometry (index = cell, `cellCount` cells); objects with cell -1 or
-// structure are not counted.
-std::vector<std::size_t> cellGeometryBytes(const scenes::Scene& scene, int cellCount);
-// Bytes of the whole model's geometry: every mesh once plus one instance record per object.
-std::size_t modelGeometryBytes(const scenes::Scene& scene);
+// Bytes of each cell's geometry (index = cell, `cellCount` cells); structure and objects
+// without a cell are not counted. `lods`: one per mesh (render::RenderScene::lods()), or null.
+std::vector<std::size_t> cellGeometryBytes(const scenes::Scene& scene, int cellCount,
+                                           const std::vector<scenes::MeshLod>* lods = nullptr);
+// Bytes of the whole model's geometry: every mesh once (with its levels when given).
+std::size_t modelGeometryBytes(const scenes::Scene& scene, const std::vector<scenes::MeshLod>* lods = nullptr);
 
 struct GeometryPagerStats {
     int resident = 0;                        // cells resident
@@ -78,10 +82,8 @@ public:
 
 private:
     void worker();
-    void evictFor(std::size_t bytes);
 
     std::vector<std::size_t> _bytes;
-    std::size_t _budget;
     Loader _loader;
 
     mutable std::mutex _mutex;
@@ -89,11 +91,8 @@ private:
     std::deque<int> _queue;
     std::set<int> _loading, _wantedNow;
     std::vector<int> _ready;
-    std::set<int> _resident;
-    std::map<int, long> _lastWanted;
-    std::vector<int> _evictions;
-    long _frame = 0;
-    GeometryPagerStats _stats;
+    ResidencyCore _residency;        // resident cells, budget and eviction (walls/residency.h)
+    GeometryPagerStats _stats;   // misses (the rest from _residency)
     bool _stop = false;
     std::thread _thread;
 };

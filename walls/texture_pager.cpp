@@ -7,7 +7,8 @@
 namespace cavewall::walls {
 
 TexturePager::TexturePager(std::filesystem::path folder, BakeManifest manifest, double budgetMB, Decoder decoder)
-    : _folder(std::move(folder)), _budget(static_cast<std::size_t>(budgetMB * 1024 * 1024)), _decoder(std::move(decoder)) {
+    : _folder(std::move(folder)), _decoder(std::move(decoder)),
+      _residency(static_cast<std::size_t>(budgetMB * 1024 * 1024)) {
     for (BakedTexture& t : manifest.textures) _textures[t.id] = std::move(t);
     _thread = std::thread([this] { worker(); });
 }
@@ -23,13 +24,14 @@ TexturePager::~TexturePager() {
 
 void TexturePager::request(const std::vector<int>& now, const std::vector<int>& soon) {
     std::lock_guard lock(_mutex);
-    ++_frame;
+    _residency.beginFrame();
     _wantedNow = std::set<int>(now.begin(), now.end());
+    for (int id : now) _residency.wantNow(id);
     std::deque<int> queue;
     auto want = [&](int id, bool isNow) {
         if (!_textures.count(id) || _failed.count(id)) return;
-        _lastWanted[id] = _frame;
-        if (_resident.count(id)) return;
+        _residency.touch(id);
+        if (_residency.isResident(id)) return;
         _stats.misses += isNow;
         const bool pending = _decoding.count(id) ||
                              std::any_of(_ready.begin(), _ready.end(), [&](const DecodedTexture& r) { return r.id == id; });
@@ -90,37 +92,19 @@ std::vector<DecodedTexture> TexturePager::takeReady(std::size_t maxBytes) {
     return out;
 }
 
-void TexturePager::evictFor(std::size_t bytes) {
-    std::size_t used = 0;
-    for (const auto& [id, b] : _resident) used += b;
-    while (used + bytes > _budget) {
-        int victim = -1;
-        long oldest = LONG_MAX;
-        for (const auto& [id, b] : _resident)
-            if (!_wantedNow.count(id) && _lastWanted[id] < oldest) oldest = _lastWanted[id], victim = id;
-        if (victim < 0) return;  // everything resident is wanted now: over budget until the view moves
-        used -= _resident[victim];
-        _resident.erase(victim);
-        _evictions.push_back(victim);
-        ++_stats.evictions;
-    }
-}
-
 void TexturePager::markResident(int id, std::size_t bytes) {
     std::lock_guard lock(_mutex);
-    evictFor(bytes);
-    _resident[id] = bytes;
-    ++_stats.pageIns;
+    _residency.markResident(id, bytes);
 }
 
 std::vector<int> TexturePager::takeEvictions() {
     std::lock_guard lock(_mutex);
-    return std::exchange(_evictions, {});
+    return _residency.takeEvictions();
 }
 
 bool TexturePager::isResident(int id) const {
     std::lock_guard lock(_mutex);
-    return _resident.count(id) > 0;
+    return _residency.isResident(id);
 }
 
 bool TexturePager::hasFailed(int id) const {
@@ -131,8 +115,10 @@ bool TexturePager::hasFailed(int id) const {
 PagerStats TexturePager::stats() const {
     std::lock_guard lock(_mutex);
     PagerStats s = _stats;
-    s.resident = static_cast<int>(_resident.size());
-    for (const auto& [id, b] : _resident) s.residentMB += static_cast<double>(b) / (1024.0 * 1024.0);
+    s.resident = _residency.count();
+    s.residentMB = _residency.residentMB();
+    s.pageIns = _residency.pageIns();
+    s.evictions = _residency.evictions();
     return s;
 }
 

@@ -15,6 +15,7 @@
 
 #include "scenes/scene.h"
 #include "walls/bake_manifest.h"
+#include "walls/residency.h"
 
 #include <condition_variable>
 #include <deque>
@@ -72,23 +73,19 @@ public:
 
 private:
     void worker();
-    void evictFor(std::size_t bytes);
 
     std::filesystem::path _folder;
     std::map<int, BakedTexture> _textures;   // by id
-    std::size_t _budget;
     Decoder _decoder;
 
     mutable std::mutex _mutex;
     std::condition_variable _wake, _idle;
     std::deque<int> _queue;                  // ids to decode, priority order
-    std::set<int> _queued, _decoding, _failed, _wantedNow;
+    std::set<int> _queued, _decoding, _failed;
     std::vector<DecodedTexture> _ready;
-    std::map<int, std::size_t> _resident;    // id -> bytes
-    std::map<int, long> _lastWanted;         // id -> frame number
-    std::vector<int> _evictions;
-    long _frame = 0;
-    PagerStats _stats;
+    ResidencyCore _residency;                    // resident ids, budget and eviction (walls/residency.h)
+    std::set<int> _wantedNow;                // for takeReady's order
+    PagerStats _stats;                       // misses and failures (the rest from _residency)
     bool _stop = false;
     std::thread _thread;
 };

@@ -1,6 +1,7 @@
 #include "display/gl/scene_gpu.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -42,11 +43,32 @@ std::uint32_t snorm10(glm::vec3 n) {
     return packed;
 }
 
-// Appends `m`'s vertices, storing the texture-coordinate set `texCoordSet`, and returns how to
-// decode them.
+// The texture-coordinate set mesh `index`'s material samples (0 without a valid material).
+int texCoordSetOf(const scenes::Scene& scene, int index) {
+    const scenes::Mesh& m = scene.meshes[index];
+    const bool validMaterial = m.material >= 0 && static_cast<std::size_t>(m.material) < scene.materials.size();
+    return validMaterial ? scene.materials[m.material].baseColorTexture.texCoord : 0;
+}
+
+const std::vector<glm::vec2>& storedTexCoords(const scenes::Mesh& m, int texCoordSet) {
+    return texCoordSet == 1 ? m.texCoords1 : m.texCoords0;
+}
+
+// How `m`'s stored vertices decode (boxes of its positions and stored texture coordinates).
 template <typename Decode>
-Decode appendVertices(const scenes::Mesh& m, int texCoordSet, std::vector<GpuVertex>& out) {
-    const std::vector<glm::vec2>& uvs = texCoordSet == 1 ? m.texCoords1 : m.texCoords0;
+Decode decodeOf(const scenes::Mesh& m, int texCoordSet) {
+    const auto [offset, extent] = box<3>(m.positions);
+    const auto [uvOffset, uvExtent] = box<2>(storedTexCoords(m, texCoordSet));
+    Decode d;
+    d.modelFromStored = glm::dmat4(glm::dvec4(extent.x, 0, 0, 0), glm::dvec4(0, extent.y, 0, 0),
+                                   glm::dvec4(0, 0, extent.z, 0), glm::dvec4(offset, 1.0));
+    d.uvFromStored = glm::mat3(glm::vec3(uvExtent.x, 0, 0), glm::vec3(0, uvExtent.y, 0), glm::vec3(uvOffset, 1.0));
+    return d;
+}
+
+// Appends `m`'s vertices, storing the texture-coordinate set `texCoordSet`.
+void appendVertices(const scenes::Mesh& m, int texCoordSet, std::vector<GpuVertex>& out) {
+    const std::vector<glm::vec2>& uvs = storedTexCoords(m, texCoordSet);
     const auto [offset, extent] = box<3>(m.positions);
     const auto [uvOffset, uvExtent] = box<2>(uvs);
     for (std::size_t i = 0; i < m.positions.size(); ++i) {
@@ -59,11 +81,14 @@ Decode appendVertices(const scenes::Mesh& m, int texCoordSet, std::vector<GpuVer
             for (int c = 0; c < 4; ++c) v.color[c] = unorm16(m.colors[i][c]);
         out.push_back(v);
     }
-    Decode d;
-    d.modelFromStored = glm::dmat4(glm::dvec4(extent.x, 0, 0, 0), glm::dvec4(0, extent.y, 0, 0),
-                                   glm::dvec4(0, 0, extent.z, 0), glm::dvec4(offset, 1.0));
-    d.uvFromStored = glm::mat3(glm::vec3(uvExtent.x, 0, 0), glm::vec3(0, uvExtent.y, 0), glm::vec3(uvOffset, 1.0));
-    return d;
+}
+
+// A buffer holding `bytes` bytes of `data` (zero-sized storage is an error in GL: an empty
+// set still gets a valid, tiny buffer).
+GlObject immutableBuffer(std::size_t bytes, const void* data) {
+    GlObject b = createBuffer();
+    glNamedBufferStorage(b.id(), std::max<std::size_t>(bytes, 1), bytes ? data : nullptr, 0);
+    return b;
 }
 
 void describeVertexArray(GLuint vao, GLuint vertices, GLuint indices) {
@@ -113,33 +138,68 @@ GLint wrapMode(int w) {
 
 }  // namespace
 
-GpuScene::GpuScene(const scenes::Scene& scene, const std::vector<scenes::MeshLod>* lods)
-    : _vertices(createBuffer()), _indices(createBuffer()), _vertexArray(createVertexArray()) {
-    std::vector<GpuVertex> vertices;
-    std::vector<std::uint32_t> indices;
-    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+PackedGeometry packMeshes(const scenes::Scene& scene, const std::vector<scenes::MeshLod>* lods,
+                          const std::vector<int>& meshes) {
+    PackedGeometry p;
+    for (int i : meshes) {
         const scenes::Mesh& m = scene.meshes[i];
-        const auto baseVertex = static_cast<std::int32_t>(vertices.size());
-        const auto first = static_cast<std::uint32_t>(indices.size());
-        std::vector<GpuMeshRange>& levels = _meshes.emplace_back();
-        if (lods && i < lods->size() && !(*lods)[i].levels.empty()) {
+        const auto baseVertex = static_cast<std::int32_t>(p.vertices.size());
+        const auto first = static_cast<std::uint32_t>(p.indices.size());
+        std::vector<GpuMeshRange> levels;
+        if (lods && static_cast<std::size_t>(i) < lods->size() && !(*lods)[i].levels.empty()) {
             const scenes::MeshLod& lod = (*lods)[i];
-            for (const scenes::LodLevel& l : lod.levels)
-                levels.push_back({first + l.firstIndex, l.indexCount, baseVertex});
-            indices.insert(indices.end(), lod.indices.begin(), lod.indices.end());
+            for (const scenes::LodLevel& l : lod.levels) levels.push_back({first + l.firstIndex, l.indexCount, baseVertex});
+            p.indices.insert(p.indices.end(), lod.indices.begin(), lod.indices.end());
         } else {
             levels.push_back({first, static_cast<std::uint32_t>(m.indices.size()), baseVertex});
-            indices.insert(indices.end(), m.indices.begin(), m.indices.end());
+            p.indices.insert(p.indices.end(), m.indices.begin(), m.indices.end());
         }
-        const bool validMaterial = m.material >= 0 && static_cast<std::size_t>(m.material) < scene.materials.size();
-        const int texCoordSet = validMaterial ? scene.materials[m.material].baseColorTexture.texCoord : 0;
-        _decode.push_back(appendVertices<Decode>(m, texCoordSet, vertices));
+        appendVertices(m, texCoordSetOf(scene, i), p.vertices);
+        p.meshes.emplace_back(i, std::move(levels));
     }
-    _vertexBytes = vertices.size() * sizeof(GpuVertex);
-    _indexBytes = indices.size() * sizeof(std::uint32_t);
-    // Zero-sized storage is an error in GL; an empty scene still gets valid (tiny) buffers.
-    glNamedBufferStorage(_vertices.id(), std::max<std::size_t>(_vertexBytes, 1), vertices.data(), 0);
-    glNamedBufferStorage(_indices.id(), std::max<std::size_t>(_indexBytes, 1), indices.data(), 0);
+    return p;
+}
+
+std::vector<std::vector<int>> meshesByCell(const scenes::Scene& scene, int cellCount) {
+    std::vector<std::vector<int>> cells(static_cast<std::size_t>(std::max(cellCount, 0)));
+    std::vector<int> lastCell(scene.meshes.size(), -1);  // objects of a cell tend to be adjacent
+    std::vector<std::vector<bool>> seen(cells.size());
+    for (const scenes::Object& o : scene.objects) {
+        if (!scenes::pagedWithCell(o, cellCount) || lastCell[o.mesh] == o.cell) continue;
+        std::vector<bool>& s = seen[o.cell];
+        if (s.empty()) s.assign(scene.meshes.size(), false);
+        lastCell[o.mesh] = o.cell;
+        if (!s[o.mesh]) s[o.mesh] = true, cells[o.cell].push_back(o.mesh);
+    }
+    return cells;
+}
+
+GpuScene::GpuScene(const scenes::Scene& scene, const std::vector<scenes::MeshLod>* lods, int pagedCells)
+    : _vertexArray(createVertexArray()) {
+    std::vector<int> shared;
+    if (pagedCells > 0) {
+        // Set 0 holds what some always-resident object uses.
+        std::vector<bool> used(scene.meshes.size(), false);
+        for (const scenes::Object& o : scene.objects) {
+            const bool paged = scenes::pagedWithCell(o, pagedCells);
+            _objectSets.push_back(paged ? 1 + o.cell : 0);
+            if (!paged) used[o.mesh] = true;
+        }
+        for (int i = 0; i < static_cast<int>(scene.meshes.size()); ++i)
+            if (used[i]) shared.push_back(i);
+        _cells.resize(static_cast<std::size_t>(pagedCells));
+    } else {
+        for (int i = 0; i < static_cast<int>(scene.meshes.size()); ++i) shared.push_back(i);
+    }
+    const PackedGeometry packed = packMeshes(scene, lods, shared);
+    _meshes.assign(scene.meshes.size(), {GpuMeshRange{}});
+    for (const auto& [mesh, levels] : packed.meshes) _meshes[mesh] = levels;
+    for (int i = 0; i < static_cast<int>(scene.meshes.size()); ++i)
+        _decode.push_back(decodeOf<Decode>(scene.meshes[i], texCoordSetOf(scene, i)));
+    _vertexBytes = packed.vertices.size() * sizeof(GpuVertex);
+    _indexBytes = packed.indices.size() * sizeof(std::uint32_t);
+    _vertices = immutableBuffer(_vertexBytes, packed.vertices.data());
+    _indices = immutableBuffer(_indexBytes, packed.indices.data());
     describeVertexArray(_vertexArray.id(), _vertices.id(), _indices.id());
     for (const scenes::Image& image : scene.images) _textures.push_back(uploadTexture(image));
     for (int i = 0; i < 9; ++i) {
@@ -149,6 +209,38 @@ GpuScene::GpuScene(const scenes::Scene& scene, const std::vector<scenes::MeshLod
         glSamplerParameteri(_samplers[i].id(), GL_TEXTURE_WRAP_S, wrapMode(i / 3));
         glSamplerParameteri(_samplers[i].id(), GL_TEXTURE_WRAP_T, wrapMode(i % 3));
     }
+}
+
+const GpuMeshRange* GpuScene::mesh(int set, int index, int level) const {
+    if (set == 0) return &mesh(index, level);
+    const CellBuffers* cell = cellResident(set - 1) ? _cells[set - 1].get() : nullptr;
+    if (!cell) return nullptr;
+    const auto found = cell->meshes.find(index);
+    return found == cell->meshes.end() ? nullptr : &levelOf(found->second, level);
+}
+
+void GpuScene::uploadCell(int cell, const PackedGeometry& packed) {
+    assert(cell >= 0 && cell < pagedCells());
+    freeCell(cell);
+    auto c = std::make_unique<CellBuffers>();
+    c->vertices = immutableBuffer(packed.vertices.size() * sizeof(GpuVertex), packed.vertices.data());
+    c->indices = immutableBuffer(packed.indices.size() * sizeof(std::uint32_t), packed.indices.data());
+    for (const auto& [mesh, levels] : packed.meshes) c->meshes.emplace(mesh, levels);
+    c->bytes = packed.bytes();
+    _residentCellBytes += c->bytes;
+    _cells[cell] = std::move(c);
+}
+
+void GpuScene::freeCell(int cell) {
+    if (!cellResident(cell)) return;
+    _residentCellBytes -= _cells[cell]->bytes;
+    _cells[cell].reset();  // deletes its buffers
+}
+
+void GpuScene::bindSet(int set) const {
+    const CellBuffers* cell = set > 0 && cellResident(set - 1) ? _cells[set - 1].get() : nullptr;
+    glVertexArrayVertexBuffer(_vertexArray.id(), 0, cell ? cell->vertices.id() : _vertices.id(), 0, sizeof(GpuVertex));
+    glVertexArrayElementBuffer(_vertexArray.id(), cell ? cell->indices.id() : _indices.id());
 }
 
 }  // namespace cavewall::gl

@@ -16,6 +16,14 @@
 // texture-coordinate set the mesh's material samples is stored, 16-bit within the mesh's
 // texture-coordinate box (error (extent) / 131070 per coordinate), decoded by uvFromStored(mesh)
 // (fold it into the texture transform). Colours are 16-bit linear, clamped to [0, 1].
+//
+// Paging by cell (cavewall issue 15; `pagedCells` > 0): the shared buffers (set 0) hold only the
+// meshes of objects that are always resident (scenes::pagedWithCell false: structure, objects
+// without a cell); every cell's meshes live in buffers of their own (set 1 + cell), packed off
+// the GL thread (packMeshes: a background loader's work), uploaded by uploadCell and deleted by
+// freeCell, so the GPU memory of an evicted cell is released. A mesh used by two cells is
+// stored in both (each cell loads on its own); decoding matrices are per mesh, the same in
+// every set. A draw binds its object's set (bindSet) before its multi-draw.
 
 #include "display/gl/gl_object.h"
 #include "scenes/mesh_lod.h"
@@ -24,6 +32,9 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace cavewall::gl {
@@ -45,20 +56,55 @@ struct GpuMeshRange {
     std::int32_t baseVertex = 0;
 };
 
+// Level `level` of a mesh's level ranges (finest first), clamped to its coarsest level.
+inline const GpuMeshRange& levelOf(const std::vector<GpuMeshRange>& levels, int level) {
+    return levels[std::min<std::size_t>(static_cast<std::size_t>(std::max(level, 0)), levels.size() - 1)];
+}
+
+// Meshes packed for one buffer set, on the CPU (no GL; any thread).
+struct PackedGeometry {
+    std::vector<GpuVertex> vertices;
+    std::vector<std::uint32_t> indices;
+    std::vector<std::pair<int, std::vector<GpuMeshRange>>> meshes;  // mesh index, its levels
+    std::size_t bytes() const { return vertices.size() * sizeof(GpuVertex) + indices.size() * sizeof(std::uint32_t); }
+};
+
+// Packs `meshes` (indices into scene.meshes, each once) as GpuScene stores them, with their
+// level chains when `lods` is given. Reads `scene` and `lods` only (safe on a loader thread).
+PackedGeometry packMeshes(const scenes::Scene& scene, const std::vector<scenes::MeshLod>* lods,
+                          const std::vector<int>& meshes);
+// Per cell of `cellCount`, the meshes of its paged objects (scenes::pagedWithCell), each once.
+std::vector<std::vector<int>> meshesByCell(const scenes::Scene& scene, int cellCount);
+
 class GpuScene {
 public:
     // Uploads `scene`; needs a current GL 4.5 context. The Scene is not referenced afterwards.
     // With `lods` (one per mesh, scenes/mesh_lod.h) every mesh's coarser levels are uploaded
     // too, as further index ranges over the same vertices; without, each mesh has level 0 only.
-    explicit GpuScene(const scenes::Scene& scene, const std::vector<scenes::MeshLod>* lods = nullptr);
+    // `pagedCells` > 0: paging by cell (see above); no cell is resident at first.
+    explicit GpuScene(const scenes::Scene& scene, const std::vector<scenes::MeshLod>* lods = nullptr,
+                      int pagedCells = 0);
 
     GLuint vertexArray() const { return _vertexArray.id(); }
+    // Mesh `index` in the shared buffers (set 0); with paging, a mesh only cells use has an
+    // empty range there.
     const GpuMeshRange& mesh(int index) const { return _meshes[index].front(); }
-    // Level `level` of mesh `index`, clamped to its coarsest level.
-    const GpuMeshRange& mesh(int index, int level) const {
-        const std::vector<GpuMeshRange>& levels = _meshes[index];
-        return levels[std::min<std::size_t>(static_cast<std::size_t>(std::max(level, 0)), levels.size() - 1)];
-    }
+    // Level `level` of mesh `index` in set 0, clamped to its coarsest level.
+    const GpuMeshRange& mesh(int index, int level) const { return levelOf(_meshes[index], level); }
+
+    // Paging by cell. The set object `object` (scene index) is drawn from: 0 without paging.
+    int setOf(int object) const { return _objectSets.empty() ? 0 : _objectSets[object]; }
+    // Mesh `index` at `level` in set `set`; nullptr when that cell is not resident.
+    const GpuMeshRange* mesh(int set, int index, int level) const;
+    // Uploads cell `cell`'s meshes (packMeshes of meshesByCell's list), replacing any copy.
+    void uploadCell(int cell, const PackedGeometry& packed);
+    void freeCell(int cell);
+    bool cellResident(int cell) const { return cell >= 0 && cell < pagedCells() && _cells[cell] != nullptr; }
+    int pagedCells() const { return static_cast<int>(_cells.size()); }
+    // GPU bytes of the resident cells' buffers (vertices and indices as allocated).
+    std::size_t residentCellBytes() const { return _residentCellBytes; }
+    // Points the vertex array's binding 0 and element buffer at set `set`'s buffers.
+    void bindSet(int set) const;
     // The texture of scene image `index` (GL_SRGB8_ALPHA8, mipmapped); images without pixels
     // get a 1 x 1 magenta texture.
     GLuint texture(int index) const { return _textures[index].id(); }
@@ -80,7 +126,16 @@ private:
         glm::mat3 uvFromStored{1.0f};
     };
 
+    struct CellBuffers {
+        GlObject vertices, indices;
+        std::unordered_map<int, std::vector<GpuMeshRange>> meshes;
+        std::size_t bytes = 0;
+    };
+
     GlObject _vertices, _indices, _vertexArray;
+    std::vector<int> _objectSets;                     // per object, with paging
+    std::vector<std::unique_ptr<CellBuffers>> _cells; // per cell, null when not resident
+    std::size_t _residentCellBytes = 0;
     std::vector<Decode> _decode;                      // per mesh
     std::vector<std::vector<GpuMeshRange>> _meshes;  // per mesh, its levels (finest first)
     std::vector<GlObject> _textures;

@@ -66,7 +66,7 @@ SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings
     : _settings(settings),
       _scene(scene, settings.lodPixels > 0.0, settings.cullBackFaces),
       _lists(_scene),
-      _gpu(scene, _scene.hasLods() ? &_scene.lods() : nullptr) {
+      _gpu(scene, _scene.hasLods() ? &_scene.lods() : nullptr, settings.pagedCells) {
     const bool textured = _gpu.textureCount() > 0;
     for (bool alphaTest : {false, true}) {
         Program& p = _programs[alphaTest];
@@ -195,7 +195,9 @@ ViewStats SceneRenderer::draw(const render::RenderList& list) {
     if (list.batches.empty()) return stats;
     _records.clear();
     _commands.clear();
+    _commandSets.clear();
     const display::OffAxisFrustum& frustum = list.frustum;
+    int objectsDrawn = 0;
     for (const render::Draw& d : list.draws) {
         const scenes::Object& o = _scene.objects()[d.object];
         const glm::dmat4 frameFromModel = list.frameFromWorld * o.worldFromModel;
@@ -206,25 +208,53 @@ ViewStats SceneRenderer::draw(const render::RenderList& list) {
         const glm::dmat3 normal = glm::transpose(glm::inverse(glm::dmat3(frustum.viewFromFrame * frameFromModel)));
         for (int c = 0; c < 3; ++c) r.normalMatrix[c] = glm::vec4(glm::vec3(normal[c]), 0.0f);
         r.material = _meshMaterials[o.mesh];
-        const GpuMeshRange& range = _gpu.mesh(o.mesh, d.level);
-        _commands.push_back({range.indexCount, 1, range.firstIndex, range.baseVertex,
+        // A paged cell that is not resident draws nothing (an empty command keeps the batches).
+        const int set = _gpu.setOf(d.object);
+        const GpuMeshRange* range = _gpu.mesh(set, o.mesh, d.level);
+        const GpuMeshRange drawn = range ? *range : GpuMeshRange{};
+        objectsDrawn += range != nullptr;
+        _commands.push_back({drawn.indexCount, 1, drawn.firstIndex, drawn.baseVertex,
                              static_cast<std::uint32_t>(_records.size())});
+        _commandSets.push_back(set);
         _records.push_back(r);
     }
+    if (_gpu.pagedCells() > 0) groupBySet(list);
     upload(_viewBuffers[_nextViewBuffers]);
     _nextViewBuffers = (_nextViewBuffers + 1) % kViewBufferSets;
     const glm::mat4 projection(frustum.clipFromView);
     for (const Program& p : _programs)
         glProgramUniformMatrix4fv(p.program.id(), p.projection, 1, GL_FALSE, glm::value_ptr(projection));
     issueBatches(list);
-    stats.drawCalls = static_cast<int>(list.batches.size());
-    stats.objectsDrawn = static_cast<int>(list.draws.size());
+    stats.drawCalls = _multiDraws;
+    stats.objectsDrawn = objectsDrawn;
     stats.triangles = list.triangles;
     return stats;
 }
 
-// One multi-draw per batch; the list's blended batches come last.
+// Opaque batches: commands grouped by buffer set, in list order within a set (one multi-draw
+// per set). Blended batches keep their order.
+void SceneRenderer::groupBySet(const render::RenderList& list) {
+    std::vector<std::size_t> order;
+    std::vector<shaders::DrawCommand> commands;
+    std::vector<int> sets;
+    for (std::size_t b = 0; b < list.firstBlended && b < list.batches.size(); ++b) {
+        const auto first = static_cast<std::size_t>(list.batches[b].first);
+        const auto count = static_cast<std::size_t>(list.batches[b].count);
+        order.resize(count);
+        for (std::size_t i = 0; i < count; ++i) order[i] = first + i;
+        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t c) { return _commandSets[a] < _commandSets[c]; });
+        commands.clear();
+        sets.clear();
+        for (std::size_t i : order) commands.push_back(_commands[i]), sets.push_back(_commandSets[i]);
+        std::copy(commands.begin(), commands.end(), _commands.begin() + static_cast<std::ptrdiff_t>(first));
+        std::copy(sets.begin(), sets.end(), _commandSets.begin() + static_cast<std::ptrdiff_t>(first));
+    }
+}
+
+// One multi-draw per batch and buffer set; the list's blended batches come last.
 void SceneRenderer::issueBatches(const render::RenderList& list) {
+    int boundSet = 0;
+    int calls = 0;
     for (std::size_t b = 0; b < list.batches.size(); ++b) {
         if (b == list.firstBlended) {
             glEnable(GL_BLEND);
@@ -234,14 +264,25 @@ void SceneRenderer::issueBatches(const render::RenderList& list) {
         }
         const render::Batch& batch = list.batches[b];
         applyState(batch.key);
-        const auto offset = static_cast<std::uintptr_t>(batch.first) * sizeof(shaders::DrawCommand);
-        glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(offset), batch.count,
-                                    0);
+        const int end = batch.first + batch.count;
+        for (int run = batch.first; run < end;) {
+            const int set = _commandSets[static_cast<std::size_t>(run)];
+            int next = run + 1;
+            while (next < end && _commandSets[static_cast<std::size_t>(next)] == set) ++next;
+            if (set != boundSet) _gpu.bindSet(set), boundSet = set;
+            const auto offset = static_cast<std::uintptr_t>(run) * sizeof(shaders::DrawCommand);
+            glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(offset), next - run, 0);
+            ++calls;
+            run = next;
+        }
     }
-    // Leave what later passes expect: depth writes on, no blending, no sampler of ours.
+    // Leave what later passes expect: the shared buffers bound, depth writes on, no blending,
+    // no sampler of ours.
+    if (boundSet != 0) _gpu.bindSet(0);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
     glBindSampler(0, 0);
+    _multiDraws = calls;
 }
 
 void SceneRenderer::upload(ViewBuffers& buffers) {

@@ -23,7 +23,10 @@
 // rounded to float for this view; its mesh's material), read by the vertex shader as instanced
 // attributes, and one indirect command whose baseInstance names the record (scene_shaders.h).
 // Each batch of the list is one glMultiDrawElementsIndirect; the blended batches are drawn last
-// with blending on. ViewStats::drawCalls counts these multi-draw calls.
+// with blending on. ViewStats::drawCalls counts these multi-draw calls. With paging by cell a
+// batch is drawn as one multi-draw per buffer set it uses (opaque batches grouped by set, in
+// list order within a set; blended batches split wherever the set changes, keeping their
+// back-to-front order).
 //
 // Shading, in linear light: baseColorFactor × vertex colour × base-colour texture (sRGB,
 // sampled at the material's texture transform of its texCoord set), lit by a headlight at the
@@ -69,6 +72,11 @@ struct RenderSettings {
     // error covers at most this many pixels on every screen it appears on
     // (render::chooseLods). 0: no levels are built, everything is drawn at full detail.
     double lodPixels = 0.0;
+    // Geometry paging by cell (GpuScene, scene_gpu.h): > 0 (the scene description's cell
+    // count) keeps only always-resident meshes in the shared buffers; a cell's objects are
+    // drawn only while the caller has uploaded that cell (gpu().uploadCell), others are skipped
+    // (ViewStats::objectsDrawn does not count them). 0: everything uploaded at construction.
+    int pagedCells = 0;
 };
 
 // ViewStats and FrameStats: display/frame_stats.h.
@@ -141,6 +149,8 @@ public:
     double waitGpuMs() { return _timer.waitMs(); }
 
     const GpuScene& gpu() const { return _gpu; }
+    // For uploading and freeing cells with paging (between frames).
+    GpuScene& gpu() { return _gpu; }
     std::size_t objectCount() const { return _scene.objects().size(); }
 
 private:
@@ -156,6 +166,7 @@ private:
     void clearTo(glm::vec4 color);
     ViewStats draw(const render::RenderList& list);
     void upload(ViewBuffers& buffers);
+    void groupBySet(const render::RenderList& list);
     void issueBatches(const render::RenderList& list);
     void applyState(const render::BatchKey& key);
 
@@ -177,6 +188,8 @@ private:
     // Per-view scratch, kept to avoid allocating per view.
     std::vector<shaders::DrawRecord> _records;
     std::vector<shaders::DrawCommand> _commands;
+    std::vector<int> _commandSets;  // per command: GpuScene buffer set
+    int _multiDraws = 0;            // by the last issueBatches
 };
 
 }  // namespace cavewall::gl

@@ -16,8 +16,9 @@ void uploadAll(GeometryPager& pager) {
 }
 
 // Two meshes (a 3-vertex triangle, a 4-vertex quad) placed in three cells; the quad twice in
-// cell 1, once in cell 2; structure and cell-less objects are not paged.
-TEST(GeometryPager, CellBytesCountEachMeshOncePerCellAndEveryInstance) {
+// cell 1, once in cell 2; structure and cell-less objects are not paged. The bytes are those of
+// the GPU buffers a cell gets (display/gl/scene_gpu.h): vertices and indices, no per-object data.
+TEST(GeometryPager, CellBytesCountEachMeshOncePerCell) {
     scenes::Scene s;
     s.meshes.resize(2);
     s.meshes[0].positions.resize(3);
@@ -39,10 +40,18 @@ TEST(GeometryPager, CellBytesCountEachMeshOncePerCellAndEveryInstance) {
     const std::size_t tri = 3 * kVertexBytes + 3 * kIndexBytes, quad = 4 * kVertexBytes + 6 * kIndexBytes;
     const std::vector<std::size_t> bytes = cellGeometryBytes(s, 3);
     ASSERT_EQ(bytes.size(), 3u);
-    EXPECT_EQ(bytes[0], tri + kInstanceBytes);
-    EXPECT_EQ(bytes[1], quad + 2 * kInstanceBytes);  // the quad is loaded once for its two instances
-    EXPECT_EQ(bytes[2], quad + tri + 2 * kInstanceBytes);
-    EXPECT_EQ(modelGeometryBytes(s), tri + quad + 7 * kInstanceBytes);
+    EXPECT_EQ(bytes[0], tri);
+    EXPECT_EQ(bytes[1], quad);  // the quad is stored once for its two instances
+    EXPECT_EQ(bytes[2], quad + tri);
+    EXPECT_EQ(modelGeometryBytes(s), tri + quad);
+    // With levels of detail a mesh's index buffer holds every level: the quad's two levels
+    // (6 + 3 indices) replace its 6 indices; the triangle has no levels and keeps its own.
+    std::vector<scenes::MeshLod> lods(2);
+    lods[1].indices.resize(9);
+    lods[1].levels.resize(2);
+    const std::size_t quadLevels = 4 * kVertexBytes + 9 * kIndexBytes;
+    EXPECT_EQ(cellGeometryBytes(s, 3, &lods)[2], quadLevels + tri);
+    EXPECT_EQ(modelGeometryBytes(s, &lods), tri + quadLevels);
 }
 
 TEST(GeometryPager, LoadsWhatIsWantedAndCountsMisses) {

@@ -1,5 +1,6 @@
 #include "walls/gl/walkthrough.h"
 
+#include "config/error.h"
 #include "display/timing.h"
 #include "scenes/image_io.h"
 #include "display/gl/view_loop.h"
@@ -11,6 +12,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
+#include <mutex>
 
 namespace cavewall::gl {
 
@@ -32,7 +35,53 @@ Context& madeCurrent(Context& context) {
     return context;
 }
 
+// Geometry paging by cell is on when walls are drawn and a budget is given; the renderer then
+// keeps only always-resident meshes in its shared buffers.
+WalkthroughOptions withPaging(WalkthroughOptions options, const scenes::SceneDescription& description,
+                              const std::optional<walls::WallSetup>& walls) {
+    const bool paging = options.geometryBudgetMB > 0.0 && walls && !walls->plan.walls.empty();
+    if (paging && options.transition == walls::Transition::Warp)
+        throw Error("walkthrough: geometry paging (geometry budget " + std::to_string(options.geometryBudgetMB) +
+                    " MB) does not support the warp transition yet (expected transition blend, got warp)");
+    options.render.pagedCells = paging ? static_cast<int>(description.cells.size()) : 0;
+    return options;
+}
+
 }  // namespace
+
+// Geometry paging by cell: the pager (GL-free policy) decides; its loader packs a cell's meshes
+// on the pager's thread into `staged`; planFrame uploads them into the renderer's GpuScene and
+// frees the evicted cells' buffers.
+struct Walkthrough::CellPaging {
+    CellPaging(const scenes::Scene& scene, int cells, const std::vector<scenes::MeshLod>* lods, double budgetMB)
+        : scene(scene), lods(lods), cellMeshes(meshesByCell(scene, cells)),
+          pager(walls::cellGeometryBytes(scene, cells, lods), budgetMB, [this](int cell) { stage(cell); }) {}
+
+    void stage(int cell) {
+        PackedGeometry packed = packMeshes(scene, lods, cellMeshes[cell]);
+        std::lock_guard lock(mutex);
+        staged[cell] = std::move(packed);
+    }
+    // The staged pack of `cell`, or one packed now (a cell drawn before its loader ran).
+    PackedGeometry take(int cell) {
+        {
+            std::lock_guard lock(mutex);
+            if (auto found = staged.find(cell); found != staged.end()) {
+                PackedGeometry packed = std::move(found->second);
+                staged.erase(found);
+                return packed;
+            }
+        }
+        return packMeshes(scene, lods, cellMeshes[cell]);
+    }
+
+    const scenes::Scene& scene;
+    const std::vector<scenes::MeshLod>* lods;
+    std::vector<std::vector<int>> cellMeshes;
+    std::mutex mutex;
+    std::map<int, PackedGeometry> staged;
+    walls::GeometryPager pager;  // last: its thread stops before the staging goes
+};
 
 struct Walkthrough::WallRuntime {
     WallRuntime(walls::WallSetup s, const WalkthroughOptions& options)
@@ -48,10 +97,7 @@ struct Walkthrough::WallRuntime {
 
     walls::WallSetup setup;
     walls::TexturePager pager;
-    // Geometry paging by cell (options.geometryBudgetMB > 0): the pager decides what is resident
-    // and the planner draws only resident cells; the scene renderer still holds every mesh
-    // (display/gl/scene_renderer.h uploads the whole scene), so no loader runs yet.
-    std::unique_ptr<walls::GeometryPager> geometry;
+    std::unique_ptr<CellPaging> geometry;  // geometry paging by cell (options.geometryBudgetMB > 0)
     TextureStore store;
     WallPass pass;
     std::unique_ptr<DepthTextureStore> depth;  // depth walls only
@@ -79,20 +125,22 @@ std::unique_ptr<Walkthrough::ClusterRuntime> makeClusters(const scenes::Scene& s
 Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescription& description,
                          const display::Display& display, Context& context, std::optional<walls::WallSetup> walls,
                          WalkthroughOptions options, std::vector<int> screens)
-    : _scene(scene), _description(description), _display(display), _context(madeCurrent(context)), _options(options),
-      _screens(std::move(screens)), _targets(display, context), _renderer(scene, options.render) {
+    : _scene(scene), _description(description), _display(display), _context(madeCurrent(context)),
+      _options(withPaging(std::move(options), description, walls)), _screens(std::move(screens)),
+      _targets(display, context), _renderer(scene, _options.render) {
     if (_screens.empty())
         for (int s = 0; s < static_cast<int>(display.screens().size()); ++s) _screens.push_back(s);
-    if (walls && !walls->plan.walls.empty()) _walls = std::make_unique<WallRuntime>(std::move(*walls), options);
-    if (_walls && options.geometryBudgetMB > 0.0)
-        _walls->geometry = std::make_unique<walls::GeometryPager>(
-            walls::cellGeometryBytes(scene, static_cast<int>(description.cells.size())), options.geometryBudgetMB);
+    if (walls && !walls->plan.walls.empty()) _walls = std::make_unique<WallRuntime>(std::move(*walls), _options);
+    if (_walls && _options.render.pagedCells > 0)
+        _walls->geometry = std::make_unique<CellPaging>(
+            scene, _options.render.pagedCells, _renderer.hasLods() ? &_renderer.renderScene().lods() : nullptr,
+            _options.geometryBudgetMB);
     _planner = std::make_unique<walls::FramePlanner>(scene, description, display, _walls ? &_walls->setup : nullptr,
-                                                     options.transition, options.morphSeconds, _screens);
+                                                     _options.transition, _options.morphSeconds, _screens);
     _planner->requestCells(_walls && _walls->geometry);
-    if (options.clusters.enabled) _clusters = makeClusters(scene, options.clusters, _renderer, context.info().renderer);
-    if (_walls && options.transition == walls::Transition::Warp)
-        _warp = std::make_unique<WarpPass>(scene, _renderer.gpu(), options.render, display.depthRange().near);
+    if (_options.clusters.enabled) _clusters = makeClusters(scene, _options.clusters, _renderer, context.info().renderer);
+    if (_walls && _options.transition == walls::Transition::Warp)
+        _warp = std::make_unique<WarpPass>(scene, _renderer.gpu(), _options.render, display.depthRange().near);
 }
 
 namespace {
@@ -170,14 +218,22 @@ walls::FramePlan Walkthrough::planFrame(const walls::FrameInput& input, const st
     for (std::size_t bytes = w.store.update(); bytes > 0; bytes = _options.synchronousPaging ? w.store.update() : 0)
         _uploadedBytes += bytes;
     if (!w.geometry) return _planner->plan([&w](int id) { return w.store.resident(id); });
-    w.geometry->request(wanted.cellsNow, wanted.cellsSoon);
-    if (_options.synchronousPaging) w.geometry->waitIdle();
-    for (int cell : w.geometry->takeReady()) w.geometry->markResident(cell);
-    w.geometry->takeEvictions();  // nothing to free on the GPU yet (see WallRuntime::geometry)
+    walls::GeometryPager& pager = w.geometry->pager;
+    pager.request(wanted.cellsNow, wanted.cellsSoon);
+    if (_options.synchronousPaging) pager.waitIdle();
+    for (int cell : pager.takeReady()) makeResident(cell);
     walls::FramePlan plan = _planner->plan([&w](int id) { return w.store.resident(id); },
-                                           [&w](int cell) { return w.geometry->isResident(cell); });
-    for (int cell : plan.geometryForced) w.geometry->markResident(cell);  // drawn now: loaded at once
+                                           [&pager](int cell) { return pager.isResident(cell); });
+    for (int cell : plan.geometryForced) makeResident(cell);  // drawn now: loaded at once (a stall)
     return plan;
+}
+
+// Uploads `cell`'s geometry, tells the pager, and frees what the pager evicts to make room.
+void Walkthrough::makeResident(int cell) {
+    CellPaging& g = *_walls->geometry;
+    if (!g.pager.isResident(cell)) _renderer.gpu().uploadCell(cell, g.take(cell));
+    g.pager.markResident(cell);
+    for (int evicted : g.pager.takeEvictions()) _renderer.gpu().freeCell(evicted);
 }
 
 std::vector<WallDraw> Walkthrough::wallDraws(const walls::FramePlan& plan) const {
@@ -261,7 +317,10 @@ walls::FrameResult Walkthrough::renderFrame(const walls::FrameInput& input) {
     result.warpFallbacks = plan.warpFallbacks;
     result.walls = std::move(plan.walls);
     if (_walls) result.pager = _walls->pager.stats();
-    if (_walls && _walls->geometry) result.geometry = _walls->geometry->stats();
+    if (_walls && _walls->geometry) {
+        result.geometry = _walls->geometry->pager.stats();
+        result.geometry.residentMB = static_cast<double>(_renderer.gpu().residentCellBytes()) / (1024.0 * 1024.0);
+    }
     result.geometryMisses = plan.geometryMisses;
     result.geometryForced = static_cast<int>(plan.geometryForced.size());
     render::DrawFilter filter;

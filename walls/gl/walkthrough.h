@@ -11,7 +11,10 @@
 //  1. asks the planner which textures are wanted (now / soon) and tells the pager; uploads what
 //     is ready within the per-frame byte budget (WalkthroughSettings);
 //  2. has the planner decide the frame against what is resident, maps texture ids to GL names;
-//     with geometry paging (WalkthroughSettings::geometryBudgetMB), the cells likewise;
+//     with geometry paging (WalkthroughSettings::geometryBudgetMB), the cells likewise: the
+//     pager's loader packs a cell's meshes on its thread, this class uploads them into the
+//     scene renderer's per-cell buffers (display/gl/scene_gpu.h) and deletes the buffers of
+//     evicted cells, so FrameResult::geometry.residentMB is the GPU bytes of resident cells;
 //  3. chooses the levels of detail (SceneRenderer::chooseLods) for the planned objects;
 //  4. per screen and eye (drawViews): the planned geometry (frustum-culled by the scene
 //     renderer), the warp pass (Transition::Warp, warp_pass.h), the wall quads (wall_pass.h),
@@ -75,7 +78,7 @@ public:
     // Makes `context` current. Keeps references to scene, description, display and context,
     // which must outlive it. `walls` (walls::prepareWalls, then baked: folder and manifest set)
     // empty: geometry only. `screens`: the screen indices this instance renders (empty: all),
-    // for cluster ranks.
+    // for cluster ranks. Throws Error when geometry paging is asked for with the warp transition.
     Walkthrough(const scenes::Scene& scene, const scenes::SceneDescription& description,
                 const display::Display& display, Context& context, std::optional<walls::WallSetup> walls,
                 WalkthroughOptions options = {}, std::vector<int> screens = {});
@@ -101,6 +104,8 @@ private:
     // With clusters: the frame's selection; its objects (plus structure) replace `objects`.
     void planClusters(const walls::FrameInput& input, glm::dvec3 eyeWorld, std::vector<int>& objects,
                       walls::FrameResult& result);
+    struct CellPaging;
+    void makeResident(int cell);
     walls::FramePlan planFrame(const walls::FrameInput& input, const std::vector<display::ScreenView>& views);
     std::vector<WallDraw> wallDraws(const walls::FramePlan& plan) const;
     // Depth walls: the walls of `flat` whose every texture has its depth move to the result.
