@@ -11,6 +11,12 @@
 // baked from a sampling point 0.37 m from the eye, at the pass's default 64 steps at most and
 // capped at 16; cases named depth_512/*. Their ms_per_layer beside the flat cases' is the cost
 // of reprojection at 1024 x 1024.
+//
+// Fill cases (FillLayer/*, issue 14's profile of what a layer's pixels cost): the same
+// full-screen layer drawn by a one-texture shader with the formats and blending as variables:
+// target GL_SRGB8_ALPHA8 with GL_FRAMEBUFFER_SRGB (the renderer's) or GL_RGBA8, premultiplied
+// blending or none, texture GL_SRGB8_ALPHA8 (the wall pass's) or GL_RGBA8.
+#include "display/gl/shader.h"
 #include "display/gl/context.h"
 #include "display/gl/gl_object.h"
 #include "walls/gl/depth_wall_pass.h"
@@ -24,6 +30,7 @@
 #include <cstdint>
 #include <iostream>
 #include <memory>
+#include <utility>
 
 namespace {
 
@@ -59,13 +66,48 @@ cavewall::walls::DepthImage blockDepth(int size) {
     return d;
 }
 
+// The fill cases' shader: one texture over the whole viewport, at reversed-Z depth 0.5.
+constexpr const char* kFillVertex = R"(#version 450 core
+out vec2 vUv;
+const vec2 kCorner[4] = vec2[4](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0), vec2(1.0, 1.0));
+void main() {
+    vUv = kCorner[gl_VertexID] * 0.5 + 0.5;
+    gl_Position = vec4(kCorner[gl_VertexID], 0.5, 1.0);
+}
+)";
+constexpr const char* kFillFragment = R"(#version 450 core
+in vec2 vUv;
+layout(binding = 0) uniform sampler2D uTexture;
+out vec4 fragColor;
+void main() { fragColor = texture(uTexture, vUv); }
+)";
+
+// mipChain(512) in GL_RGBA8 (no sRGB decode when sampled).
+gl::GlObject unormTexture() {
+    const std::vector<scenes::Image> levels = mipChain(512);
+    gl::GlObject t = gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(t.id(), static_cast<GLsizei>(levels.size()), GL_RGBA8, 512, 512);
+    for (std::size_t l = 0; l < levels.size(); ++l)
+        glTextureSubImage2D(t.id(), static_cast<GLint>(l), 0, 0, levels[l].width, levels[l].height, GL_RGBA,
+                            GL_UNSIGNED_BYTE, levels[l].rgba.data());
+    return t;
+}
+
+struct FillCase {
+    bool srgbTarget, blend, srgbTexture;
+};
+
 struct Fixture {
     std::unique_ptr<gl::Context> context = gl::createHeadlessContext();
     gl::GlObject color = gl::createTexture(GL_TEXTURE_2D), depth = gl::createTexture(GL_TEXTURE_2D),
                  framebuffer = gl::createFramebuffer();
+    gl::GlObject unormColor = gl::createTexture(GL_TEXTURE_2D), unormFramebuffer = gl::createFramebuffer();
+    gl::GlObject fillProgram = gl::buildProgram("fill", kFillVertex, kFillFragment);
+    gl::GlObject fillVertexArray = gl::createVertexArray();
     gl::WallPass pass;
     gl::GlObject bare = gl::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}});
     gl::GlObject baked = gl::uploadWallTexture(mipChain(512));
+    gl::GlObject bakedUnorm = unormTexture();
     gl::GlObject nearestMip = gl::createSampler(), linearMip = gl::createSampler(), bilinear = gl::createSampler();
     gl::GlObject depthBlocks = gl::uploadDepthTexture(blockDepth(512));
     gl::DepthWallPass depthPass, depthPass16{walls::ReprojectSettings{16, 6}};
@@ -77,6 +119,9 @@ struct Fixture {
         glTextureStorage2D(depth.id(), 1, GL_DEPTH_COMPONENT32F, kSize, kSize);
         glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, color.id(), 0);
         glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
+        glTextureStorage2D(unormColor.id(), 1, GL_RGBA8, kSize, kSize);
+        glNamedFramebufferTexture(unormFramebuffer.id(), GL_COLOR_ATTACHMENT0, unormColor.id(), 0);
+        glNamedFramebufferTexture(unormFramebuffer.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
         for (GLuint s : {nearestMip.id(), linearMip.id(), bilinear.id()}) {
             glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
             glSamplerParameteri(s, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -91,11 +136,12 @@ struct Fixture {
         std::cerr << "GL_RENDERER " << context->info().renderer << "\n";
     }
 
-    void clear() const {
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer.id());
+    void clear(bool srgbTarget = true) const {
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, srgbTarget ? framebuffer.id() : unormFramebuffer.id());
         glViewport(0, 0, kSize, kSize);
         glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-        glEnable(GL_FRAMEBUFFER_SRGB);
+        if (srgbTarget) glEnable(GL_FRAMEBUFFER_SRGB);
+        else glDisable(GL_FRAMEBUFFER_SRGB);
         glDepthMask(GL_TRUE);
         glClearDepth(0.0);
         glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
@@ -132,13 +178,36 @@ double frameMs(Fixture& f, int layers, GLuint texture, GLuint sampler, int textu
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-void layerCost(benchmark::State& state, Fixture& f, GLuint texture, GLuint sampler, int texturesPerLayer,
-               int depthSteps) {
+double fillFrameMs(Fixture& f, const FillCase& c, int layers) {
+    const auto start = std::chrono::steady_clock::now();
+    f.clear(c.srgbTarget);
+    if (layers > 0) {
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_GREATER);
+        glDepthMask(GL_FALSE);
+        if (c.blend) glEnable(GL_BLEND), glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        else glDisable(GL_BLEND);
+        glUseProgram(f.fillProgram.id());
+        glBindVertexArray(f.fillVertexArray.id());
+        glBindTextureUnit(0, c.srgbTexture ? f.baked.id() : f.bakedUnorm.id());
+        glBindSampler(0, f.nearestMip.id());
+        for (int i = 0; i < layers; ++i) glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        glDisable(GL_BLEND);
+        glDisable(GL_DEPTH_TEST);
+    }
+    glFinish();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Interleaves the clear alone (frame(0)) with `layers` layers (frame(layers)), so both share the
+// load; counters as the header says.
+template <typename Frame>
+void layerCost(benchmark::State& state, Frame frame) {
     const int layers = static_cast<int>(state.range(0));
     double clearMs = 0.0, ms = 0.0;
     for (auto _ : state) {
-        clearMs += frameMs(f, 0, texture, sampler, texturesPerLayer);  // interleaved: same load
-        ms += frameMs(f, layers, texture, sampler, texturesPerLayer, depthSteps);
+        clearMs += frame(0);
+        ms += frame(layers);
     }
     const double n = static_cast<double>(state.iterations());
     state.counters["clear_ms"] = clearMs / n;
@@ -167,8 +236,29 @@ int main(int argc, char** argv) {
                       {"depth_512/two_textures_steps_64", f.baked.id(), f.nearestMip.id(), 2, 64}};
     for (const Case& c : cases)
         benchmark::RegisterBenchmark((std::string("WallLayer/") + c.name).c_str(),
-                                     [&f, c](benchmark::State& s) { layerCost(s, f, c.texture, c.sampler, c.textures, c.depthSteps); })
+                                     [&f, c](benchmark::State& s) {
+                                         layerCost(s, [&](int layers) {
+                                             return frameMs(f, layers, c.texture, c.sampler, c.textures,
+                                                            layers > 0 ? c.depthSteps : 0);
+                                         });
+                                     })
             ->Arg(1)
+            ->Arg(4)
+            ->Iterations(10)
+            ->UseRealTime()
+            ->Unit(benchmark::kMillisecond);
+    const std::pair<const char*, FillCase> fills[] = {{"srgb_target/blend/srgb_texture", {true, true, true}},
+                                                      {"srgb_target/opaque/srgb_texture", {true, false, true}},
+                                                      {"srgb_target/blend/unorm_texture", {true, true, false}},
+                                                      {"unorm_target/blend/srgb_texture", {false, true, true}},
+                                                      {"unorm_target/opaque/srgb_texture", {false, false, true}},
+                                                      {"unorm_target/opaque/unorm_texture", {false, false, false}},
+                                                      {"unorm_target/blend/unorm_texture", {false, true, false}}};
+    for (const auto& [name, c] : fills)
+        benchmark::RegisterBenchmark((std::string("FillLayer/") + name).c_str(),
+                                     [&f, c = c](benchmark::State& s) {
+                                         layerCost(s, [&](int layers) { return fillFrameMs(f, c, layers); });
+                                     })
             ->Arg(4)
             ->Iterations(10)
             ->UseRealTime()
