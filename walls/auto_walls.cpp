@@ -3,6 +3,7 @@
 #include "config/error.h"
 #include "scenes/region.h"
 #include "scenes/scene_description_io.h"
+#include "walls/plan_io.h"
 
 #include <algorithm>
 #include <cmath>
@@ -139,17 +140,6 @@ scenes::SceneDescription describe(const scenes::SceneDescription& base, const Gr
     return d;
 }
 
-double textureMB(const Plan& plan) {
-    double bytes = 0.0;
-    for (const Texture& t : plan.textures) {
-        const double x = std::min(t.resolution.x, plan.options.maxResolution);
-        const double y = std::min(t.resolution.y, plan.options.maxResolution);
-        bytes += x * y * 4.0 * 4.0 / 3.0;
-    }
-    return bytes / (1024.0 * 1024.0);
-}
-
-
 // E[ms], triangles, textures and MiB of description `d` (AutoWallsCandidate without nx, nz).
 // A cell's triangles are those of the content boxes meeting its region's bounding rectangle
 // (exact for the rectangular cells proposed here).
@@ -176,7 +166,7 @@ AutoWallsCandidate evaluate(const scenes::SceneDescription& d, const std::vector
     if (!d.walls.empty()) {
         const Plan plan = planZones(d, options.plan);
         c.textures = static_cast<int>(plan.textures.size());
-        c.textureMB = textureMB(plan);
+        c.textureMB = planTotals(plan).gpuBytes / (1024.0 * 1024.0);
     }
     c.withinBudget = c.textureMB <= options.textureBudgetMB;
     return c;
