@@ -51,11 +51,10 @@ GeometryPager::~GeometryPager() {
 void GeometryPager::request(const std::vector<int>& now, const std::vector<int>& soon) {
     std::lock_guard lock(_mutex);
     _residency.beginFrame();
-    _wantedNow.clear();
     std::deque<int> queue;
     auto want = [&](int cell, bool isNow) {
         if (cell < 0 || cell >= static_cast<int>(_bytes.size())) return;
-        if (isNow) _wantedNow.insert(cell), _residency.wantNow(cell);
+        if (isNow) _residency.wantNow(cell);
         _residency.touch(cell);
         if (_residency.isResident(cell)) return;
         _stats.misses += isNow;
@@ -93,7 +92,7 @@ void GeometryPager::worker() {
 
 std::vector<int> GeometryPager::takeReady() {
     std::lock_guard lock(_mutex);
-    std::stable_partition(_ready.begin(), _ready.end(), [&](int c) { return _wantedNow.count(c) > 0; });
+    std::stable_partition(_ready.begin(), _ready.end(), [&](int c) { return _residency.wantedNow(c); });
     return std::exchange(_ready, {});
 }
 

@@ -89,7 +89,7 @@ private:
     mutable std::mutex _mutex;
     std::condition_variable _wake, _idle;
     std::deque<int> _queue;
-    std::set<int> _loading, _wantedNow;
+    std::set<int> _loading;
     std::vector<int> _ready;
     ResidencyCore _residency;        // resident cells, budget and eviction (walls/residency.h)
     GeometryPagerStats _stats;   // misses (the rest from _residency)

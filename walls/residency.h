@@ -26,6 +26,7 @@ public:
         _wantedNow.clear();
     }
     void wantNow(int id) { _wantedNow.insert(id); }
+    bool wantedNow(int id) const { return _wantedNow.count(id) > 0; }
     void touch(int id) { _lastWanted[id] = _frame; }
 
     // Makes `id` resident with `bytes` (replacing its size if it already is), evicting first.

@@ -25,7 +25,6 @@ TexturePager::~TexturePager() {
 void TexturePager::request(const std::vector<int>& now, const std::vector<int>& soon) {
     std::lock_guard lock(_mutex);
     _residency.beginFrame();
-    _wantedNow = std::set<int>(now.begin(), now.end());
     for (int id : now) _residency.wantNow(id);
     std::deque<int> queue;
     auto want = [&](int id, bool isNow) {
@@ -81,7 +80,7 @@ void TexturePager::worker() {
 std::vector<DecodedTexture> TexturePager::takeReady(std::size_t maxBytes) {
     std::lock_guard lock(_mutex);
     // Wanted-now first.
-    std::stable_partition(_ready.begin(), _ready.end(), [&](const DecodedTexture& d) { return _wantedNow.count(d.id) > 0; });
+    std::stable_partition(_ready.begin(), _ready.end(), [&](const DecodedTexture& d) { return _residency.wantedNow(d.id); });
     std::vector<DecodedTexture> out;
     std::size_t bytes = 0;
     while (!_ready.empty() && (out.empty() || bytes + _ready.front().bytes <= maxBytes)) {

@@ -84,7 +84,6 @@ private:
     std::set<int> _queued, _decoding, _failed;
     std::vector<DecodedTexture> _ready;
     ResidencyCore _residency;                    // resident ids, budget and eviction (walls/residency.h)
-    std::set<int> _wantedNow;                // for takeReady's order
     PagerStats _stats;                       // misses and failures (the rest from _residency)
     bool _stop = false;
     std::thread _thread;

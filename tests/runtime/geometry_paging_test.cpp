@@ -81,7 +81,9 @@ TEST_F(GeometryPagingTest, TheWalkthroughFreesEvictedCellsOnTheGpu) {
         std::cout << "x = " << x << ": " << r.geometry.resident << " cells, " << r.geometry.residentMB * kMB
                   << " GPU bytes, +" << paged << " -" << evicted << "\n";
         EXPECT_EQ(r.geometryForced, 0);
-        if (evicted > 0 && paged == 0) EXPECT_LT(r.geometry.residentMB, previousMB);
+        if (evicted > 0 && paged == 0) {
+            EXPECT_LT(r.geometry.residentMB, previousMB);
+        }
         drops += r.geometry.residentMB < previousMB;
         peakMB = std::max(peakMB, r.geometry.residentMB);
         previousMB = r.geometry.residentMB;
