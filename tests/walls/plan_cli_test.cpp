@@ -172,7 +172,7 @@ TEST(WallsCli, CutsAOneMeshRealModelIntoChunksAndProposesCells) {
                                          "--max-cells", "3", "--max-res", "32", "--split", "0"});
     ASSERT_EQ(whole.exitCode, 0) << whole.err;
     EXPECT_THAT(whole.out, Not(HasSubstr("split:")));
-    EXPECT_THAT(whole.out, HasSubstr("(1 cells, 0 virtual walls)"));
+    EXPECT_THAT(whole.out, HasSubstr("(1 cells, 0 virtual walls, 0 portals)"));
 }
 
 TEST(WallsCli, BadInputSaysWhatIsWrong) {
