@@ -129,6 +129,8 @@ TEST(BenchSceneCli, BadInputIsAClearError) {
          "--warp-alpha 20 is not one of the planned alphas (10,30); add it to --alphas"},
         {{"bench", (test::testOutputRoot() / "bench_cli_missing" / "scene.json").string(), "--quick"}, "missing"},
         {{"bench", "x.json", "--stereo", "quad-buffer"}, "--stereo: expected mono or separate, got 'quad-buffer'"},
+        {{"bench", "--scale", "2M,x"}, "--scale: entry 2 'x': expected a triangle count"},
+        {{"bench", "--scale", "2M", "--scale-metres", "0"}, "--scale-metres"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.message);
