@@ -55,7 +55,8 @@ double niceCeil(double value) {
 
 std::string tickText(double v) {
     char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.3g", v);
+    // Up to six digits in full ("2400", not "2.4e+03", which overflows the left margin).
+    std::snprintf(buffer, sizeof buffer, v >= 1000.0 && v < 1e6 ? "%.0f" : "%.3g", v);
     return buffer;
 }
 
@@ -117,7 +118,7 @@ scenes::Image plotSeries(const std::vector<PlotSeries>& series, int width, int h
     static const unsigned char kColours[4][3] = {{40, 90, 200}, {210, 30, 30}, {30, 150, 60}, {230, 130, 20}};
     scenes::Image image{"plot.png", width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4)};
     fillRect(image, 0, 0, width, height, kWhite);
-    const int left = 56, right = width - 40, top = 16, bottom = height - 36;
+    const int left = 64, right = width - 40, top = 16, bottom = height - 36;
     double maxX = 0.0, maxY = 0.0;
     for (const PlotSeries& s : series)
         for (const PlotPoint& p : s.points) maxX = std::max(maxX, p.x), maxY = std::max(maxY, p.y);
