@@ -21,6 +21,7 @@
 #include <chrono>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -161,43 +162,67 @@ bench::ScaleRow rowOf(bench::ScaleMode mode, const Accumulated& a, const bench::
     return r;
 }
 
-// One size: generate (or reuse), load, plan, bake the stretch's textures, then the three modes.
+// One size made ready: the plant loaded, the stretch's eye path recorded, the walls planned and
+// the stretch's textures baked.
+struct PreparedSize {
+    scenes::SceneDescription description;
+    scenes::Scene scene;
+    bench::EyePath path;
+    walls::WallSetup setup;
+    double loadSeconds = 0.0, planSeconds = 0.0;
+    std::string size, line;  // "2.07 M triangles"; the report line of what was made
+};
+
+std::unique_ptr<PreparedSize> prepareSize(const ScaleOptions& o, std::size_t target, const display::Display& display,
+                                          Context& context) {
+    auto p = std::make_unique<PreparedSize>();
+    double generateSeconds = 0.0;
+    const std::filesystem::path sceneFile = plantFor(target, o.data / ("plant-" + std::to_string(target)), generateSeconds);
+    auto start = Clock::now();
+    scenes::SceneDescription& d = p->description;
+    p->scene = scenes::loadSceneFile(sceneFile, &d);
+    p->loadSeconds = secondsSince(start);
+    if (d.walls.empty() || d.walkPath.size() < 2)
+        throw Error(sceneFile.string() + ": expected a plant with virtual walls and a walk path");
+    d.walkPath = bench::pathPrefix(d.walkPath, o.pathMetres);
+    p->path = bench::recordEyePath(p->scene, d, o.display, o.tracker, o.frames);
+    start = Clock::now();
+    walls::PlanOptions plan = walls::planOptionsFor(o.plan, walls::WallKind::Flat, o.bakeResolution);
+    plan.alphaDeg = o.alphaDeg;
+    p->setup = walls::prepareWalls(p->scene, d, plan);
+    p->planSeconds = secondsSince(start);
+    const std::set<int> ids = requestedTextures(p->scene, d, display, p->setup, p->path);
+    const BakeResult baked = bakeSubset(p->scene, d, p->setup, ids, sceneFile, o, context);
+    p->setup.folder = baked.folder;
+    p->setup.manifest = baked.manifest;
+    p->size = fixed(static_cast<double>(p->scene.triangleCount()) / 1e6, 2) + " M triangles";
+    p->line = p->size + " (" + std::to_string(d.cells.size()) + " cells, " + std::to_string(p->scene.objects.size()) +
+              " objects): generated in " + fixed(generateSeconds, 1) + " s (0: reused), loaded in " +
+              fixed(p->loadSeconds, 2) + " s, walls planned in " + fixed(p->planSeconds, 1) + " s; baked " +
+              std::to_string(ids.size()) + " of the plan's " + std::to_string(p->setup.plan.textures.size()) +
+              " textures (those the stretch requests) at most " + std::to_string(o.bakeResolution) + " texels: " +
+              std::to_string(baked.baked) + " rendered in " + fixed(baked.seconds, 1) + " s, " +
+              std::to_string(baked.reused) + " from the cache";
+    return p;
+}
+
+// One size's three modes: made and timed to their first frame, warmed up, then drawn frame by
+// frame in turn (one function: the three live modes are shared by every step).
 void runSize(const ScaleOptions& o, std::size_t target, const display::Display& display, Context& context,
              bench::ScaleReport& report) {
     auto say = [&](const std::string& line) {
         if (o.verbose) std::cout << "bench --scale: " << line << "\n" << std::flush;
     };
-    double generateSeconds = 0.0;
-    const std::filesystem::path sceneFile = plantFor(target, o.data / ("plant-" + std::to_string(target)), generateSeconds);
-    auto start = Clock::now();
-    scenes::SceneDescription d;
-    const scenes::Scene scene = scenes::loadSceneFile(sceneFile, &d);
-    const double loadSeconds = secondsSince(start);
-    if (d.walls.empty() || d.walkPath.size() < 2)
-        throw Error(sceneFile.string() + ": expected a plant with virtual walls and a walk path");
-    d.walkPath = bench::pathPrefix(d.walkPath, o.pathMetres);
-    const bench::EyePath path = bench::recordEyePath(scene, d, o.display, o.tracker, o.frames);
-    start = Clock::now();
-    walls::PlanOptions plan = walls::planOptionsFor(o.plan, walls::WallKind::Flat, o.bakeResolution);
-    plan.alphaDeg = o.alphaDeg;
-    walls::WallSetup setup = walls::prepareWalls(scene, d, plan);
-    const double planSeconds = secondsSince(start);
-    const std::set<int> ids = requestedTextures(scene, d, display, setup, path);
-    const BakeResult baked = bakeSubset(scene, d, setup, ids, sceneFile, o, context);
-    setup.folder = baked.folder;
-    setup.manifest = baked.manifest;
-    std::size_t triangles = scene.triangleCount();
-    const std::string size = fixed(static_cast<double>(triangles) / 1e6, 2) + " M triangles";
-    const std::string line = size + " (" + std::to_string(d.cells.size()) + " cells, " +
-                             std::to_string(scene.objects.size()) + " objects): generated in " + fixed(generateSeconds, 1) +
-                             " s (0: reused), loaded in " + fixed(loadSeconds, 2) + " s, walls planned in " +
-                             fixed(planSeconds, 1) + " s; baked " + std::to_string(ids.size()) + " of the plan's " +
-                             std::to_string(setup.plan.textures.size()) + " textures (those the stretch requests) at " +
-                             "most " + std::to_string(o.bakeResolution) + " texels: " + std::to_string(baked.baked) +
-                             " rendered in " + fixed(baked.seconds, 1) + " s, " + std::to_string(baked.reused) +
-                             " from the cache";
-    say(line);
-    report.header.push_back(line);
+    const std::unique_ptr<PreparedSize> prepared = prepareSize(o, target, display, context);
+    const scenes::Scene& scene = prepared->scene;
+    const scenes::SceneDescription& d = prepared->description;
+    const bench::EyePath& path = prepared->path;
+    const walls::WallSetup& setup = prepared->setup;
+    const std::string& size = prepared->size;
+    const double loadSeconds = prepared->loadSeconds, planSeconds = prepared->planSeconds;
+    const std::size_t triangles = scene.triangleCount();
+    say(prepared->line);
+    report.header.push_back(prepared->line);
 
     bench::ScaleRow base;
     base.targetTriangles = target;
