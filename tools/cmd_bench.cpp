@@ -6,6 +6,7 @@
 #include "tools/commands.h"
 #ifdef CAVEWALL_HAVE_GL
 #include "app/bench/gl/driver.h"
+#include "app/bench/gl/scale_bench.h"
 #endif
 
 #include <algorithm>
@@ -22,6 +23,8 @@ const char* const kBenchUsage =
     "                      [--bake-resolution N] [--alphas A,B,...] [--warp-alpha A]\n"
     "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
     "                      [--walls flat|depth] [--clusters]\n"
+    "       cavewall bench --scale 2M,8M,32M [--data DIR] [--scale-metres M] [--frames N] [--resolution N]\n"
+    "                      [--display D] [--bake-resolution N] [--geometry-budget MB] [--lod PX] [--out DIR]\n"
     "       cavewall bench --stability\n"
     "\n"
     "SCENE    error against run time in one run (a scene.json, its folder, or glTF/GLB with\n"
@@ -71,6 +74,18 @@ const char* const kBenchUsage =
     "         textures at most 512 texels. --quick: 24 frames at 128 pixels (unless\n"
     "         --resolution says otherwise), compared every 3, min-zone 3 m, bakes at most\n"
     "         128 texels. The resolution is printed with every figure.\n"
+    "\n"
+    "--scale LIST  frame time, resident geometry and time to the first frame against the model's\n"
+    "         size (issue 15): per entry (2M, 500k, ...) the generated plant (written once into\n"
+    "         --data DIR/plant-N, default bench-scale-data, then reused) is walked along the same\n"
+    "         first --scale-metres (default 40) of its walk path in --frames frames (default 60)\n"
+    "         by full geometry (frustum-culled), the near-geometry limit and virtual walls at\n"
+    "         alpha 10 with levels of detail (--lod, default 1 px) and geometry paging\n"
+    "         (--geometry-budget, default 64 MB), frame by frame in turn. Only the textures the\n"
+    "         stretch's frames request are baked, at most --bake-resolution texels (default\n"
+    "         128), into DIR/bake-cache; the report says how many. Writes scale.csv, scale.md\n"
+    "         (also printed), scale_ms.png, scale_mb.png and scale_load.png into --out (default\n"
+    "         bench-scale-out), with the slopes of full and walls against triangles.\n"
     "\n"
     "--stability  runs the stiff and extreme numerical cases (projection at eye distances\n"
     "             1e-9 ... 1e6 m, world offsets to 1e7 m, near/far ratios to 1e9 with reversed-Z,\n"
@@ -164,6 +179,27 @@ int runSceneBench(const Args& args) {
               << (out / "bench.md").string() << "\n" << (out / "bench.png").string() << "\n";
     return 0;
 }
+
+int runScaleBench(const Args& args) {
+    gl::ScaleOptions o;
+    o.sizes = bench::parseScaleList(*args.get("scale"));
+    o.data = args.getOr("data", "bench-scale-data");
+    o.display = config::loadDisplayConfig(args.getOr("display", "cave4"));
+    if (args.has("resolution"))
+        o.display = gl::withResolution(o.display, static_cast<int>(args.integer("resolution", 1024, 16, 4096)));
+    o.pathMetres = args.number("scale-metres", o.pathMetres, 1.0, 1e5);
+    o.frames = args.integer("frames", o.frames, 1, 100000);
+    o.bakeResolution = static_cast<int>(args.integer("bake-resolution", o.bakeResolution, 16, 16384));
+    o.geometryBudgetMB = args.number("geometry-budget", o.geometryBudgetMB, 0.001, 1e6);
+    o.lodPixels = args.number("lod", o.lodPixels, 0.0, 1e4);
+    const std::filesystem::path out = args.getOr("out", "bench-scale-out");
+    o.afterSize = [&](const bench::ScaleReport& soFar) { bench::writeScaleReport(out, soFar); };
+    const bench::ScaleReport report = gl::runScaleBench(o);
+    bench::writeScaleReport(out, report);
+    std::cout << "\n" << bench::scaleMarkdown(report) << "\n" << (out / "scale.csv").string() << "\n"
+              << (out / "scale.md").string() << "\n";
+    return 0;
+}
 #endif
 
 }  // namespace
@@ -173,9 +209,10 @@ int runBench(const std::vector<std::string>& words) {
     args.expectFlags({"stability", "quick", "display", "path", "route", "out", "frames", "resolution", "stereo", "cache",
                       "compare-every",
                       "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod", "triangle-budget", "frame-budget-ms", "lod-max",
-                      "walls", "clusters"});
+                      "walls", "clusters", "scale", "data", "scale-metres", "geometry-budget"});
     if (args.has("stability")) return runStability();
 #ifdef CAVEWALL_HAVE_GL
+    if (args.has("scale")) return runScaleBench(args);
     if (!args.positional().empty()) return runSceneBench(args);
     throw Error("bench: expected a SCENE or --stability (see cavewall bench --help)");
 #else

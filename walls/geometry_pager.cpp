@@ -28,16 +28,51 @@ std::vector<std::size_t> cellGeometryBytes(const scenes::Scene& scene, int cellC
     return bytes;
 }
 
+std::vector<std::size_t> groupGeometryBytes(const scenes::Scene& scene, const scenes::PagedMeshGroups& groups,
+                                            const std::vector<scenes::MeshLod>* lods) {
+    std::vector<std::size_t> bytes;
+    for (const std::vector<int>& meshes : groups.groupMeshes) {
+        std::size_t b = 0;
+        for (int m : meshes) b += meshBytes(scene, m, lods);
+        bytes.push_back(b);
+    }
+    return bytes;
+}
+
+std::size_t largestBytes(std::vector<std::size_t> bytes, std::size_t n) {
+    std::sort(bytes.rbegin(), bytes.rend());
+    std::size_t sum = 0;
+    for (std::size_t i = 0; i < std::min(n, bytes.size()); ++i) sum += bytes[i];
+    return sum;
+}
+
 std::size_t modelGeometryBytes(const scenes::Scene& scene, const std::vector<scenes::MeshLod>* lods) {
     std::size_t bytes = 0;
     for (int i = 0; i < static_cast<int>(scene.meshes.size()); ++i) bytes += meshBytes(scene, i, lods);
     return bytes;
 }
 
-GeometryPager::GeometryPager(std::vector<std::size_t> cellBytes, double budgetMB, Loader loader)
-    : _bytes(std::move(cellBytes)), _loader(std::move(loader)), _residency(static_cast<std::size_t>(budgetMB * 1024 * 1024)) {
+namespace {
+
+std::vector<std::vector<int>> oneGroupPerCell(std::size_t cells) {
+    std::vector<std::vector<int>> groups(cells);
+    for (std::size_t c = 0; c < cells; ++c) groups[c] = {static_cast<int>(c)};
+    return groups;
+}
+
+}  // namespace
+
+GeometryPager::GeometryPager(std::vector<std::size_t> groupBytes, std::vector<std::vector<int>> cellGroups,
+                             double budgetMB, Loader loader)
+    : _bytes(std::move(groupBytes)), _cellGroups(std::move(cellGroups)), _loader(std::move(loader)),
+      _residency(static_cast<std::size_t>(budgetMB * 1024 * 1024)) {
+    for (std::vector<int>& groups : _cellGroups)
+        std::erase_if(groups, [&](int g) { return g < 0 || g >= static_cast<int>(_bytes.size()); });
     _thread = std::thread([this] { worker(); });
 }
+
+GeometryPager::GeometryPager(std::vector<std::size_t> cellBytes, double budgetMB, Loader loader)
+    : GeometryPager(cellBytes, oneGroupPerCell(cellBytes.size()), budgetMB, std::move(loader)) {}
 
 GeometryPager::~GeometryPager() {
     {
@@ -53,13 +88,16 @@ void GeometryPager::request(const std::vector<int>& now, const std::vector<int>&
     _residency.beginFrame();
     std::deque<int> queue;
     auto want = [&](int cell, bool isNow) {
-        if (cell < 0 || cell >= static_cast<int>(_bytes.size())) return;
-        if (isNow) _residency.wantNow(cell);
-        _residency.touch(cell);
-        if (_residency.isResident(cell)) return;
-        _stats.misses += isNow;
-        const bool pending = _loading.count(cell) || std::find(_ready.begin(), _ready.end(), cell) != _ready.end();
-        if (!pending && std::find(queue.begin(), queue.end(), cell) == queue.end()) queue.push_back(cell);
+        if (cell < 0 || cell >= static_cast<int>(_cellGroups.size())) return;
+        _stats.misses += isNow && !cellResident(cell);
+        for (int group : _cellGroups[cell]) {
+            if (isNow) _residency.wantNow(group);
+            _residency.touch(group);
+            if (_residency.isResident(group)) continue;
+            const bool pending =
+                _loading.count(group) || std::find(_ready.begin(), _ready.end(), group) != _ready.end();
+            if (!pending && std::find(queue.begin(), queue.end(), group) == queue.end()) queue.push_back(group);
+        }
     };
     for (int c : now) want(c, true);
     for (int c : soon) want(c, false);
@@ -73,19 +111,19 @@ void GeometryPager::worker() {
     for (;;) {
         _wake.wait(lock, [&] { return _stop || !_queue.empty(); });
         if (_stop) return;
-        const int cell = _queue.front();
+        const int group = _queue.front();
         _queue.pop_front();
-        _loading.insert(cell);
+        _loading.insert(group);
         lock.unlock();
         bool ok = true;
         try {
-            if (_loader) _loader(cell);
+            if (_loader) _loader(group);
         } catch (const std::exception&) {
             ok = false;  // stays a miss; retried when wanted again
         }
         lock.lock();
-        _loading.erase(cell);
-        if (ok) _ready.push_back(cell);
+        _loading.erase(group);
+        if (ok) _ready.push_back(group);
         if (_queue.empty() && _loading.empty()) _idle.notify_all();
     }
 }
@@ -96,10 +134,10 @@ std::vector<int> GeometryPager::takeReady() {
     return std::exchange(_ready, {});
 }
 
-void GeometryPager::markResident(int cell) {
+void GeometryPager::markResident(int group) {
     std::lock_guard lock(_mutex);
-    if (_residency.isResident(cell)) return;
-    _residency.markResident(cell, _bytes.at(cell));
+    if (_residency.isResident(group)) return;
+    _residency.markResident(group, _bytes.at(group));
 }
 
 std::vector<int> GeometryPager::takeEvictions() {
@@ -107,9 +145,24 @@ std::vector<int> GeometryPager::takeEvictions() {
     return _residency.takeEvictions();
 }
 
+bool GeometryPager::cellResident(int cell) const {
+    return std::all_of(_cellGroups[cell].begin(), _cellGroups[cell].end(),
+                       [&](int g) { return _residency.isResident(g); });
+}
+
 bool GeometryPager::isResident(int cell) const {
     std::lock_guard lock(_mutex);
-    return _residency.isResident(cell);
+    return cell >= 0 && cell < static_cast<int>(_cellGroups.size()) && cellResident(cell);
+}
+
+bool GeometryPager::groupResident(int group) const {
+    std::lock_guard lock(_mutex);
+    return _residency.isResident(group);
+}
+
+const std::vector<int>& GeometryPager::groupsOf(int cell) const {
+    static const std::vector<int> kNone;
+    return cell >= 0 && cell < static_cast<int>(_cellGroups.size()) ? _cellGroups[cell] : kNone;
 }
 
 GeometryPagerStats GeometryPager::stats() const {

@@ -55,7 +55,8 @@ double niceCeil(double value) {
 
 std::string tickText(double v) {
     char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.3g", v);
+    // Up to six digits in full ("2400", not "2.4e+03", which overflows the left margin).
+    std::snprintf(buffer, sizeof buffer, v >= 1000.0 && v < 1e6 ? "%.0f" : "%.3g", v);
     return buffer;
 }
 
@@ -107,6 +108,44 @@ scenes::Image plotTradeOff(const std::vector<PlotPoint>& points, int width, int 
         const unsigned char* colour = p.front ? kRed : kBlue;
         fillRect(image, px(p.x) - 3, py(p.y) - 3, 7, 7, colour);
         drawText(image, px(p.x) + 6, py(p.y) - 12, std::to_string(p.label), 2, colour);
+    }
+    return image;
+}
+
+scenes::Image plotSeries(const std::vector<PlotSeries>& series, int width, int height) {
+    assert(width >= 160 && height >= 120);
+    static const unsigned char kWhite[3] = {255, 255, 255}, kAxis[3] = {40, 40, 40}, kGrid[3] = {225, 225, 225};
+    static const unsigned char kColours[4][3] = {{40, 90, 200}, {210, 30, 30}, {30, 150, 60}, {230, 130, 20}};
+    scenes::Image image{"plot.png", width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4)};
+    fillRect(image, 0, 0, width, height, kWhite);
+    const int left = 64, right = width - 40, top = 16, bottom = height - 36;
+    double maxX = 0.0, maxY = 0.0;
+    for (const PlotSeries& s : series)
+        for (const PlotPoint& p : s.points) maxX = std::max(maxX, p.x), maxY = std::max(maxY, p.y);
+    maxX = niceCeil(maxX * 1.05), maxY = niceCeil(maxY * 1.05);
+    const auto px = [&](double x) { return left + static_cast<int>(std::lround(x / maxX * (right - left))); };
+    const auto py = [&](double y) { return bottom - static_cast<int>(std::lround(y / maxY * (bottom - top))); };
+    constexpr int kTicks = 5;
+    for (int i = 0; i <= kTicks; ++i) {
+        const double fx = maxX * i / kTicks, fy = maxY * i / kTicks;
+        drawLine(image, px(fx), top, px(fx), bottom, kGrid);
+        drawLine(image, left, py(fy), right, py(fy), kGrid);
+        const std::string tx = tickText(fx), ty = tickText(fy);
+        drawText(image, px(fx) - static_cast<int>(tx.size()) * 4, bottom + 8, tx, 2, kAxis);
+        drawText(image, left - 6 - static_cast<int>(ty.size()) * 8, py(fy) - 5, ty, 2, kAxis);
+    }
+    drawLine(image, left, bottom, right, bottom, kAxis);
+    drawLine(image, left, top, left, bottom, kAxis);
+    for (const PlotSeries& s : series) {
+        const unsigned char* colour = kColours[((s.label % 4) + 4) % 4];
+        std::vector<PlotPoint> points = s.points;
+        std::sort(points.begin(), points.end(), [](const PlotPoint& a, const PlotPoint& b) { return a.x < b.x; });
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            fillRect(image, px(points[i].x) - 3, py(points[i].y) - 3, 7, 7, colour);
+            if (i > 0) drawLine(image, px(points[i - 1].x), py(points[i - 1].y), px(points[i].x), py(points[i].y), colour);
+        }
+        if (!points.empty())
+            drawText(image, px(points.back().x) + 6, py(points.back().y) - 12, std::to_string(s.label), 2, colour);
     }
     return image;
 }

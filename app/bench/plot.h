@@ -20,6 +20,17 @@ struct PlotPoint {
 // An opaque RGBA image of `width` x `height` pixels (at least 160 x 120).
 scenes::Image plotTradeOff(const std::vector<PlotPoint>& points, int width = 640, int height = 420);
 
+// One line of plotSeries: its points joined in x order, drawn in colour `label` % 4 (blue,
+// red, green, orange) with `label` beside its last point.
+struct PlotSeries {
+    std::vector<PlotPoint> points;  // x, y finite and >= 0; label and front unused
+    int label = 0;
+};
+
+// A line chart of `series` from the origin, axes with tick labels (`cavewall bench --scale`:
+// frame time, memory or load time against triangles).
+scenes::Image plotSeries(const std::vector<PlotSeries>& series, int width = 640, int height = 420);
+
 // Draws `text` (digits, '.', '-', 'e', '+'; other characters are blank) with its top-left at
 // (x, y), each glyph 3x5 cells of `scale` pixels. Exposed for tests.
 void drawText(scenes::Image& image, int x, int y, const std::string& text, int scale, const unsigned char rgb[3]);

@@ -91,15 +91,6 @@ walls::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scen
     return std::move(*setup);
 }
 
-// The sizes geometry paging is judged by (issue 15: resident at most the largest three cells).
-void geometrySizes(const scenes::Scene& scene, const scenes::SceneDescription& d, RunSummary& summary) {
-    std::vector<std::size_t> cells = walls::cellGeometryBytes(scene, static_cast<int>(d.cells.size()));
-    std::sort(cells.rbegin(), cells.rend());
-    constexpr double kMB = 1024.0 * 1024.0;
-    for (std::size_t i = 0; i < std::min<std::size_t>(3, cells.size()); ++i) summary.largestThreeCellsMB += cells[i] / kMB;
-    summary.modelGeometryMB = walls::modelGeometryBytes(scene) / kMB;
-}
-
 }  // namespace
 
 RunSummary runSession(const RunOptions& o) {
@@ -157,7 +148,10 @@ RunSummary runSession(const RunOptions& o) {
         summary.msPerTriangle = m->costs.msPerTriangle, summary.msPerObject = m->costs.msPerObject;
         summary.texturedBoxMs = m->costs.texturedBoxMs, summary.averageBoxMs = m->costs.averageBoxMs;
     }
-    geometrySizes(scene, description, summary);
+    // The sizes geometry paging is judged by (issue 15: resident at most the largest three cells).
+    const gl::GeometryYardsticks yardsticks = walkthrough.geometryYardsticks();
+    summary.largestThreeCellsMB = yardsticks.largestThreeCellsMB;
+    summary.modelGeometryMB = yardsticks.wholeModelMB;
     for (long i = 0; i < o.frames; ++i) {
         const bool save = o.saveEvery > 0 && i % o.saveEvery == 0;
         if (context->windowCount() > 0 && context->pollCloseRequested()) break;  // a window was closed

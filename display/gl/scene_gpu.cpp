@@ -160,34 +160,22 @@ PackedGeometry packMeshes(const scenes::Scene& scene, const std::vector<scenes::
     return p;
 }
 
-std::vector<std::vector<int>> meshesByCell(const scenes::Scene& scene, int cellCount) {
-    std::vector<std::vector<int>> cells(static_cast<std::size_t>(std::max(cellCount, 0)));
-    std::vector<int> lastCell(scene.meshes.size(), -1);  // objects of a cell tend to be adjacent
-    std::vector<std::vector<bool>> seen(cells.size());
-    for (const scenes::Object& o : scene.objects) {
-        if (!scenes::pagedWithCell(o, cellCount) || lastCell[o.mesh] == o.cell) continue;
-        std::vector<bool>& s = seen[o.cell];
-        if (s.empty()) s.assign(scene.meshes.size(), false);
-        lastCell[o.mesh] = o.cell;
-        if (!s[o.mesh]) s[o.mesh] = true, cells[o.cell].push_back(o.mesh);
-    }
-    return cells;
-}
-
 GpuScene::GpuScene(const scenes::Scene& scene, const std::vector<scenes::MeshLod>* lods, int pagedCells)
     : _vertexArray(createVertexArray()) {
     std::vector<int> shared;
     if (pagedCells > 0) {
-        // Set 0 holds what some always-resident object uses.
+        // Set 0 holds what some always-resident object uses (the meshes in no group).
+        _paging = true;
+        _groups = scenes::pagedMeshGroups(scene, pagedCells);
         std::vector<bool> used(scene.meshes.size(), false);
         for (const scenes::Object& o : scene.objects) {
-            const bool paged = scenes::pagedWithCell(o, pagedCells);
-            _objectSets.push_back(paged ? 1 + o.cell : 0);
-            if (!paged) used[o.mesh] = true;
+            const int group = _groups.groupOfMesh[o.mesh];
+            _objectSets.push_back(scenes::pagedWithCell(o, pagedCells) && group >= 0 ? 1 + group : 0);
+            if (!scenes::pagedWithCell(o, pagedCells)) used[o.mesh] = true;
         }
         for (int i = 0; i < static_cast<int>(scene.meshes.size()); ++i)
             if (used[i]) shared.push_back(i);
-        _cells.resize(static_cast<std::size_t>(pagedCells));
+        _groupBuffers.resize(_groups.groupMeshes.size());
     } else {
         for (int i = 0; i < static_cast<int>(scene.meshes.size()); ++i) shared.push_back(i);
     }
@@ -213,34 +201,40 @@ GpuScene::GpuScene(const scenes::Scene& scene, const std::vector<scenes::MeshLod
 
 const GpuMeshRange* GpuScene::mesh(int set, int index, int level) const {
     if (set == 0) return &mesh(index, level);
-    const CellBuffers* cell = cellResident(set - 1) ? _cells[set - 1].get() : nullptr;
-    if (!cell) return nullptr;
-    const auto found = cell->meshes.find(index);
-    return found == cell->meshes.end() ? nullptr : &levelOf(found->second, level);
+    const GroupBuffers* group = groupResident(set - 1) ? _groupBuffers[set - 1].get() : nullptr;
+    if (!group) return nullptr;
+    const auto found = group->meshes.find(index);
+    return found == group->meshes.end() ? nullptr : &levelOf(found->second, level);
 }
 
-void GpuScene::uploadCell(int cell, const PackedGeometry& packed) {
-    assert(cell >= 0 && cell < pagedCells());
-    freeCell(cell);
-    auto c = std::make_unique<CellBuffers>();
+bool GpuScene::cellResident(int cell) const {
+    if (cell < 0 || cell >= static_cast<int>(_groups.cellGroups.size())) return false;
+    const std::vector<int>& groups = _groups.cellGroups[cell];
+    return std::all_of(groups.begin(), groups.end(), [&](int g) { return groupResident(g); });
+}
+
+void GpuScene::uploadGroup(int group, const PackedGeometry& packed) {
+    assert(group >= 0 && group < _groups.groupCount());
+    freeGroup(group);
+    auto c = std::make_unique<GroupBuffers>();
     c->vertices = immutableBuffer(packed.vertices.size() * sizeof(GpuVertex), packed.vertices.data());
     c->indices = immutableBuffer(packed.indices.size() * sizeof(std::uint32_t), packed.indices.data());
     for (const auto& [mesh, levels] : packed.meshes) c->meshes.emplace(mesh, levels);
     c->bytes = packed.bytes();
-    _residentCellBytes += c->bytes;
-    _cells[cell] = std::move(c);
+    _residentPagedBytes += c->bytes;
+    _groupBuffers[group] = std::move(c);
 }
 
-void GpuScene::freeCell(int cell) {
-    if (!cellResident(cell)) return;
-    _residentCellBytes -= _cells[cell]->bytes;
-    _cells[cell].reset();  // deletes its buffers
+void GpuScene::freeGroup(int group) {
+    if (!groupResident(group)) return;
+    _residentPagedBytes -= _groupBuffers[group]->bytes;
+    _groupBuffers[group].reset();  // deletes its buffers
 }
 
 void GpuScene::bindSet(int set) const {
-    const CellBuffers* cell = set > 0 && cellResident(set - 1) ? _cells[set - 1].get() : nullptr;
-    glVertexArrayVertexBuffer(_vertexArray.id(), 0, cell ? cell->vertices.id() : _vertices.id(), 0, sizeof(GpuVertex));
-    glVertexArrayElementBuffer(_vertexArray.id(), cell ? cell->indices.id() : _indices.id());
+    const GroupBuffers* group = set > 0 && groupResident(set - 1) ? _groupBuffers[set - 1].get() : nullptr;
+    glVertexArrayVertexBuffer(_vertexArray.id(), 0, group ? group->vertices.id() : _vertices.id(), 0, sizeof(GpuVertex));
+    glVertexArrayElementBuffer(_vertexArray.id(), group ? group->indices.id() : _indices.id());
 }
 
 }  // namespace cavewall::gl

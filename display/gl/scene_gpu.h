@@ -19,14 +19,17 @@
 //
 // Paging by cell (cavewall issue 15; `pagedCells` > 0): the shared buffers (set 0) hold only the
 // meshes of objects that are always resident (scenes::pagedWithCell false: structure, objects
-// without a cell); every cell's meshes live in buffers of their own (set 1 + cell), packed off
-// the GL thread (packMeshes: a background loader's work), uploaded by uploadCell and deleted by
-// freeCell, so the GPU memory of an evicted cell is released. A mesh used by two cells is
-// stored in both (each cell loads on its own); decoding matrices are per mesh, the same in
-// every set. A draw binds its object's set (bindSet) before its multi-draw.
+// without a cell); the other meshes are grouped by the cells that use them
+// (scenes/paged_meshes.h) and every group lives in buffers of its own (set 1 + group), packed
+// off the GL thread (packMeshes: a background loader's work), uploaded by uploadGroup and
+// deleted by freeGroup, so a mesh shared by several cells is stored once and the GPU memory of
+// an evicted group is released. A cell's objects are drawable when all of its groups
+// (meshGroups().cellGroups) are resident. Decoding matrices are per mesh, the same in every
+// set. A draw binds its object's set (bindSet) before its multi-draw.
 
 #include "display/gl/gl_object.h"
 #include "scenes/mesh_lod.h"
+#include "scenes/paged_meshes.h"
 #include "scenes/scene.h"
 
 #include <algorithm>
@@ -73,15 +76,13 @@ struct PackedGeometry {
 // level chains when `lods` is given. Reads `scene` and `lods` only (safe on a loader thread).
 PackedGeometry packMeshes(const scenes::Scene& scene, const std::vector<scenes::MeshLod>* lods,
                           const std::vector<int>& meshes);
-// Per cell of `cellCount`, the meshes of its paged objects (scenes::pagedWithCell), each once.
-std::vector<std::vector<int>> meshesByCell(const scenes::Scene& scene, int cellCount);
 
 class GpuScene {
 public:
     // Uploads `scene`; needs a current GL 4.5 context. The Scene is not referenced afterwards.
     // With `lods` (one per mesh, scenes/mesh_lod.h) every mesh's coarser levels are uploaded
     // too, as further index ranges over the same vertices; without, each mesh has level 0 only.
-    // `pagedCells` > 0: paging by cell (see above); no cell is resident at first.
+    // `pagedCells` > 0: paging by cell (see above); no group is resident at first.
     explicit GpuScene(const scenes::Scene& scene, const std::vector<scenes::MeshLod>* lods = nullptr,
                       int pagedCells = 0);
 
@@ -92,17 +93,25 @@ public:
     // Level `level` of mesh `index` in set 0, clamped to its coarsest level.
     const GpuMeshRange& mesh(int index, int level) const { return levelOf(_meshes[index], level); }
 
-    // Paging by cell. The set object `object` (scene index) is drawn from: 0 without paging.
+    // Paging by cell. The set object `object` (scene index) is drawn from: 0 without paging or
+    // for a mesh in the shared buffers, else 1 + its mesh's group.
     int setOf(int object) const { return _objectSets.empty() ? 0 : _objectSets[object]; }
-    // Mesh `index` at `level` in set `set`; nullptr when that cell is not resident.
+    // Mesh `index` at `level` in set `set`; nullptr when that group is not resident.
     const GpuMeshRange* mesh(int set, int index, int level) const;
-    // Uploads cell `cell`'s meshes (packMeshes of meshesByCell's list), replacing any copy.
-    void uploadCell(int cell, const PackedGeometry& packed);
-    void freeCell(int cell);
-    bool cellResident(int cell) const { return cell >= 0 && cell < pagedCells() && _cells[cell] != nullptr; }
-    int pagedCells() const { return static_cast<int>(_cells.size()); }
-    // GPU bytes of the resident cells' buffers (vertices and indices as allocated).
-    std::size_t residentCellBytes() const { return _residentCellBytes; }
+    bool paging() const { return _paging; }
+    // The paged meshes' groups (empty without paging).
+    const scenes::PagedMeshGroups& meshGroups() const { return _groups; }
+    // Uploads group `group`'s meshes (packMeshes of meshGroups().groupMeshes[group]), replacing
+    // any copy.
+    void uploadGroup(int group, const PackedGeometry& packed);
+    void freeGroup(int group);
+    bool groupResident(int group) const {
+        return group >= 0 && group < _groups.groupCount() && _groupBuffers[group] != nullptr;
+    }
+    // All groups of cell `cell` are resident (its objects are drawable).
+    bool cellResident(int cell) const;
+    // GPU bytes of the resident groups' buffers (vertices and indices as allocated).
+    std::size_t residentPagedBytes() const { return _residentPagedBytes; }
     // Points the vertex array's binding 0 and element buffer at set `set`'s buffers.
     void bindSet(int set) const;
     // The texture of scene image `index` (GL_SRGB8_ALPHA8, mipmapped); images without pixels
@@ -126,16 +135,18 @@ private:
         glm::mat3 uvFromStored{1.0f};
     };
 
-    struct CellBuffers {
+    struct GroupBuffers {
         GlObject vertices, indices;
         std::unordered_map<int, std::vector<GpuMeshRange>> meshes;
         std::size_t bytes = 0;
     };
 
     GlObject _vertices, _indices, _vertexArray;
-    std::vector<int> _objectSets;                     // per object, with paging
-    std::vector<std::unique_ptr<CellBuffers>> _cells; // per cell, null when not resident
-    std::size_t _residentCellBytes = 0;
+    bool _paging = false;
+    scenes::PagedMeshGroups _groups;                            // with paging
+    std::vector<int> _objectSets;                               // per object, with paging
+    std::vector<std::unique_ptr<GroupBuffers>> _groupBuffers;  // per group, null when not resident
+    std::size_t _residentPagedBytes = 0;
     std::vector<Decode> _decode;                      // per mesh
     std::vector<std::vector<GpuMeshRange>> _meshes;  // per mesh, its levels (finest first)
     std::vector<GlObject> _textures;

@@ -218,7 +218,7 @@ ViewStats SceneRenderer::draw(const render::RenderList& list) {
         _commandSets.push_back(set);
         _records.push_back(r);
     }
-    if (_gpu.pagedCells() > 0) groupBySet(list);
+    if (_gpu.paging()) groupBySet(list);
     upload(_viewBuffers[_nextViewBuffers]);
     _nextViewBuffers = (_nextViewBuffers + 1) % kViewBufferSets;
     const glm::mat4 projection(frustum.clipFromView);
@@ -232,11 +232,12 @@ ViewStats SceneRenderer::draw(const render::RenderList& list) {
 }
 
 // Opaque batches: commands grouped by buffer set, in list order within a set (one multi-draw
-// per set). Blended batches keep their order.
+// per set). Blended batches keep their order. Scratch vectors are members: no allocation per
+// view once their sizes settle.
 void SceneRenderer::groupBySet(const render::RenderList& list) {
-    std::vector<std::size_t> order;
-    std::vector<shaders::DrawCommand> commands;
-    std::vector<int> sets;
+    std::vector<std::size_t>& order = _sortOrder;
+    std::vector<shaders::DrawCommand>& commands = _sortCommands;
+    std::vector<int>& sets = _sortSets;
     for (std::size_t b = 0; b < list.firstBlended && b < list.batches.size(); ++b) {
         const auto first = static_cast<std::size_t>(list.batches[b].first);
         const auto count = static_cast<std::size_t>(list.batches[b].count);

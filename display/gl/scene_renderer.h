@@ -74,8 +74,9 @@ struct RenderSettings {
     double lodPixels = 0.0;
     // Geometry paging by cell (GpuScene, scene_gpu.h): > 0 (the scene description's cell
     // count) keeps only always-resident meshes in the shared buffers; a cell's objects are
-    // drawn only while the caller has uploaded that cell (gpu().uploadCell), others are skipped
-    // (ViewStats::objectsDrawn does not count them). 0: everything uploaded at construction.
+    // drawn only while the caller has uploaded their meshes' groups (gpu().uploadGroup),
+    // others are skipped (ViewStats::objectsDrawn does not count them). 0: everything
+    // uploaded at construction.
     int pagedCells = 0;
 };
 
@@ -189,6 +190,9 @@ private:
     std::vector<shaders::DrawRecord> _records;
     std::vector<shaders::DrawCommand> _commands;
     std::vector<int> _commandSets;  // per command: GpuScene buffer set
+    std::vector<std::size_t> _sortOrder;            // groupBySet's scratch
+    std::vector<shaders::DrawCommand> _sortCommands;
+    std::vector<int> _sortSets;
     int _multiDraws = 0;            // by the last issueBatches
 };
 

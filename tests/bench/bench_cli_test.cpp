@@ -113,6 +113,39 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     for (int mode = 2; mode <= 17; ++mode) EXPECT_TRUE(fs::is_regular_file(out / ("flip_worst_" + std::to_string(mode) + ".png")));
 }
 
+// `bench --scale` end to end on two tiny sizes (both below 2 M triangles: the same 80 m plant,
+// generated into a folder each): three modes per size, the walls' paged geometry no more than
+// the whole model (shared meshes stored once), only the requested textures baked, and the
+// second size's bake found in the scale cache (the same scene bytes, plan and settings).
+TEST(BenchSceneCli, ScaleRunHasThreeModesPerSize) {
+    const test::TempFolder root("bench_cli_scale");
+    fs::remove_all(root / "data");
+    const fs::path out = root / "out";
+    const CliResult r = runCavewall({"bench", "--scale", "20k,40k", "--resolution", "32", "--frames", "4",
+                                     "--bake-resolution", "16", "--scale-metres", "10", "--data",
+                                     (root / "data").string(), "--out", out.string()});
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    EXPECT_THAT(r.out, HasSubstr("4 screens at 32x32 pixels"));
+    EXPECT_THAT(r.out, HasSubstr("textures (those the stretch requests) at most 16 texels"));
+    EXPECT_THAT(r.out, HasSubstr("texels: 0 rendered in"));  // the second size: all from the cache
+    EXPECT_TRUE(fs::exists(root / "data" / "plant-20000" / "scene.json"));
+    for (const char* file : {"scale.md", "scale_ms.png", "scale_mb.png", "scale_load.png"})
+        EXPECT_TRUE(fs::exists(out / file)) << file;
+    const test::CsvTable csv = test::readCsv(out / "scale.csv");
+    ASSERT_EQ(csv.size(), 6u);
+    EXPECT_EQ(csv.column("mode"), (std::vector<std::string>{"full", "near", "walls", "full", "near", "walls"}));
+    for (const test::CsvRow& row : csv) {
+        SCOPED_TRACE(row.at("mode"));
+        EXPECT_GT(row.number("frame_ms_p50"), 0.0);
+        EXPECT_GT(row.number("first_frame_s"), 0.0);
+        EXPECT_LE(row.number("resident_mb"), row.number("whole_model_mb") + 1e-9);
+        if (row.at("mode") == "walls") {
+            EXPECT_GT(row.number("paged_peak_mb"), 0.0);
+            EXPECT_EQ(row.number("textures_over_alpha"), 0.0);
+        }
+    }
+}
+
 TEST(BenchSceneCli, BadInputIsAClearError) {
     struct Case {
         std::vector<std::string> args;
@@ -129,6 +162,8 @@ TEST(BenchSceneCli, BadInputIsAClearError) {
          "--warp-alpha 20 is not one of the planned alphas (10,30); add it to --alphas"},
         {{"bench", (test::testOutputRoot() / "bench_cli_missing" / "scene.json").string(), "--quick"}, "missing"},
         {{"bench", "x.json", "--stereo", "quad-buffer"}, "--stereo: expected mono or separate, got 'quad-buffer'"},
+        {{"bench", "--scale", "2M,x"}, "--scale: entry 2 'x': expected a triangle count"},
+        {{"bench", "--scale", "2M", "--scale-metres", "0"}, "--scale-metres"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.message);

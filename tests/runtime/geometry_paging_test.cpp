@@ -17,6 +17,7 @@
 
 #include <iostream>
 #include <algorithm>
+#include <map>
 #include <numeric>
 
 namespace cavewall::testing {
@@ -26,73 +27,127 @@ constexpr double kMB = 1024.0 * 1024.0;
 
 class GeometryPagingTest : public GlTest {};
 
-// twoCells(): the red box is cell B's only paged object, the green box cell A's; the floors are
-// structure (always resident, in the shared buffers). The GPU side alone: uploading and freeing
-// cells moves the resident bytes by exactly the pager's sizes of those cells.
-TEST_F(GeometryPagingTest, UploadingAndFreeingACellMovesTheGpuBytesByItsSize) {
+// twoCells(): the red box is cell B's only paged object, the green box cell A's (each its own
+// mesh, so each cell has one group of its own); the floors are structure (always resident, in
+// the shared buffers). The GPU side alone: uploading and freeing groups moves the resident
+// bytes by exactly the pager's sizes of those groups, here the cells' sizes.
+TEST_F(GeometryPagingTest, UploadingAndFreeingAGroupMovesTheGpuBytesByItsSize) {
     const SmallPlant& scene = twoCells();
     const std::vector<std::size_t> cellBytes = walls::cellGeometryBytes(scene.scene, 2);
     gl::RenderSettings settings;
     settings.pagedCells = 2;
     gl::SceneRenderer renderer(scene.scene, settings);
     gl::GpuScene& gpu = renderer.gpu();
-    EXPECT_EQ(gpu.residentCellBytes(), 0u);
-    const std::vector<std::vector<int>> meshes = gl::meshesByCell(scene.scene, 2);
-    for (int c : {0, 1}) gpu.uploadCell(c, gl::packMeshes(scene.scene, nullptr, meshes[c]));
+    EXPECT_EQ(gpu.residentPagedBytes(), 0u);
+    const scenes::PagedMeshGroups& groups = gpu.meshGroups();
+    ASSERT_EQ(groups.groupCount(), 2);
+    const std::vector<std::size_t> groupBytes = walls::groupGeometryBytes(scene.scene, groups);
+    for (int g : {0, 1}) gpu.uploadGroup(g, gl::packMeshes(scene.scene, nullptr, groups.groupMeshes[g]));
     EXPECT_TRUE(gpu.cellResident(0) && gpu.cellResident(1));
-    EXPECT_EQ(gpu.residentCellBytes(), cellBytes[0] + cellBytes[1]);
-    gpu.freeCell(0);
-    EXPECT_FALSE(gpu.cellResident(0));
-    EXPECT_EQ(gpu.residentCellBytes(), cellBytes[1]);
-    // A cell's objects are not in the shared buffers: drawing them needs the cell.
+    EXPECT_EQ(gpu.residentPagedBytes(), cellBytes[0] + cellBytes[1]);
     int redBox = -1;
     for (int i = 0; i < static_cast<int>(scene.scene.objects.size()); ++i)
         if (scene.scene.objects[i].name == "red box") redBox = i;
     ASSERT_GE(redBox, 0);
-    EXPECT_EQ(gpu.setOf(redBox), 2);
-    EXPECT_EQ(gpu.mesh(scene.scene.objects[redBox].mesh).indexCount, 0u);  // set 0: empty
-    EXPECT_NE(gpu.mesh(2, scene.scene.objects[redBox].mesh, 0), nullptr);
-    gpu.freeCell(1);
-    EXPECT_EQ(gpu.mesh(2, scene.scene.objects[redBox].mesh, 0), nullptr);
-    EXPECT_EQ(gpu.residentCellBytes(), 0u);
+    const int redMesh = scene.scene.objects[redBox].mesh, redGroup = groups.groupOfMesh[redMesh];
+    ASSERT_GE(redGroup, 0);
+    EXPECT_EQ(groups.cellGroups[1], std::vector<int>{redGroup});  // cell B
+    gpu.freeGroup(1 - redGroup);
+    EXPECT_FALSE(gpu.cellResident(0));
+    EXPECT_EQ(gpu.residentPagedBytes(), groupBytes[redGroup]);
+    EXPECT_EQ(gpu.residentPagedBytes(), cellBytes[1]);
+    // A cell's objects are not in the shared buffers: drawing them needs their group.
+    EXPECT_EQ(gpu.setOf(redBox), 1 + redGroup);
+    EXPECT_EQ(gpu.mesh(redMesh).indexCount, 0u);  // set 0: empty
+    EXPECT_NE(gpu.mesh(1 + redGroup, redMesh, 0), nullptr);
+    gpu.freeGroup(redGroup);
+    EXPECT_EQ(gpu.mesh(1 + redGroup, redMesh, 0), nullptr);
+    EXPECT_EQ(gpu.residentPagedBytes(), 0u);
 }
 
-// Along the small plant's north aisle under a budget of about two cells: the walkthrough frees
-// evicted cells on the GPU, so its resident bytes (FrameResult::geometry, frames.csv) are the
-// GPU's and drop when the pager evicts more than it pages in.
-TEST_F(GeometryPagingTest, TheWalkthroughFreesEvictedCellsOnTheGpu) {
-    const SmallPlant& plant = smallPlant();
-    std::vector<std::size_t> cellBytes =
-        walls::cellGeometryBytes(plant.scene, static_cast<int>(plant.description.cells.size()));
-    std::sort(cellBytes.rbegin(), cellBytes.rend());
+// The small plant with a mesh of its own for every (mesh, cell) pair its paged objects use: the
+// same pixels and walls, but no mesh shared by two cells, so every cell is a mesh group of its
+// own (a model exported without instancing).
+scenes::Scene unshared(const scenes::Scene& scene, int cells) {
+    scenes::Scene out = scene;
+    std::map<std::pair<int, int>, int> copies;
+    for (scenes::Object& o : out.objects) {
+        if (!scenes::pagedWithCell(o, cells)) continue;
+        auto [it, added] = copies.emplace(std::pair{o.mesh, o.cell}, static_cast<int>(out.meshes.size()));
+        if (added) out.meshes.push_back(scene.meshes[o.mesh]);
+        o.mesh = it->second;
+    }
+    return out;
+}
+
+// Walks the small plant's north aisle and returns the frames' resident GPU bytes (MB).
+struct AisleWalk {
+    double minMB = 1e30, peakMB = 0.0;
+    long evictions = 0, drops = 0;
+};
+AisleWalk walkNorthAisle(const scenes::Scene& scene, const SmallPlant& plant, gl::Context& context, double budgetMB) {
     const display::Display display = testDisplay(32);
     gl::WalkthroughOptions options;
     options.synchronousPaging = true;
-    options.geometryBudgetMB = static_cast<double>(cellBytes[0] + cellBytes[1]) / kMB;
-    gl::Walkthrough walkthrough(plant.scene, plant.description, display, *context, plant.walls, options);
-    double previousMB = 0.0, peakMB = 0.0;
+    options.geometryBudgetMB = budgetMB;
+    gl::Walkthrough walkthrough(scene, plant.description, display, context, plant.walls, options);
+    AisleWalk w;
+    double previousMB = 0.0;
     long previousEvictions = 0, previousPageIns = 0;
-    int drops = 0;
     for (double x = -36.0; x <= 36.0; x += 3.0) {
         walls::FrameInput in;
         in.worldFromCave = cavePlacedAt({x, 1.7, -10.0});
         const walls::FrameResult r = walkthrough.renderFrame(in);
         const long evicted = r.geometry.evictions - previousEvictions, paged = r.geometry.pageIns - previousPageIns;
-        std::cout << "x = " << x << ": " << r.geometry.resident << " cells, " << r.geometry.residentMB * kMB
+        std::cout << "x = " << x << ": " << r.geometry.resident << " groups, " << r.geometry.residentMB * kMB
                   << " GPU bytes, +" << paged << " -" << evicted << "\n";
         EXPECT_EQ(r.geometryForced, 0);
         if (evicted > 0 && paged == 0) {
             EXPECT_LT(r.geometry.residentMB, previousMB);
         }
-        drops += r.geometry.residentMB < previousMB;
-        peakMB = std::max(peakMB, r.geometry.residentMB);
+        w.drops += r.geometry.residentMB < previousMB;
+        w.minMB = std::min(w.minMB, r.geometry.residentMB), w.peakMB = std::max(w.peakMB, r.geometry.residentMB);
         previousMB = r.geometry.residentMB;
         previousEvictions = r.geometry.evictions;
         previousPageIns = r.geometry.pageIns;
     }
-    EXPECT_GT(previousEvictions, 0);
-    EXPECT_GT(drops, 0);
-    std::cout << "peak " << peakMB << " MB of " << walls::modelGeometryBytes(plant.scene) / kMB << " MB\n";
+    w.evictions = previousEvictions;
+    return w;
+}
+
+// Without shared meshes each cell is one group: under a budget of about two cells the
+// walkthrough frees evicted groups on the GPU, so its resident bytes (FrameResult::geometry,
+// frames.csv) are the GPU's and drop when the pager evicts more than it pages in.
+TEST_F(GeometryPagingTest, TheWalkthroughFreesEvictedGroupsOnTheGpu) {
+    const SmallPlant& plant = smallPlant();
+    const int cells = static_cast<int>(plant.description.cells.size());
+    const scenes::Scene scene = unshared(plant.scene, cells);
+    ASSERT_EQ(gl::SceneRenderer(scene, [&] { gl::RenderSettings s; s.pagedCells = cells; return s; }())
+                  .gpu().meshGroups().groupCount(),
+              cells);
+    std::vector<std::size_t> cellBytes = walls::cellGeometryBytes(scene, cells);
+    std::sort(cellBytes.rbegin(), cellBytes.rend());
+    const AisleWalk w = walkNorthAisle(scene, plant, *context, static_cast<double>(cellBytes[0] + cellBytes[1]) / kMB);
+    EXPECT_GT(w.evictions, 0);
+    EXPECT_GT(w.drops, 0);
+}
+
+// The plant as generated: its cells share their part kinds' meshes (six mesh groups), so the
+// walk holds each mesh once, below the whole model and the largest three cells' worth, where a
+// copy per cell (the unshared scene above) holds more.
+TEST_F(GeometryPagingTest, AMeshSharedByCellsIsStoredOnce) {
+    const SmallPlant& plant = smallPlant();
+    const int cells = static_cast<int>(plant.description.cells.size());
+    const AisleWalk shared = walkNorthAisle(plant.scene, plant, *context, 64.0);
+    const AisleWalk copies = walkNorthAisle(unshared(plant.scene, cells), plant, *context, 64.0);
+    const std::size_t model = walls::modelGeometryBytes(plant.scene);
+    const std::size_t largestThree = walls::largestBytes(walls::cellGeometryBytes(plant.scene, cells), 3);
+    std::cout << "peak " << shared.peakMB * kMB << " bytes shared, " << copies.peakMB * kMB << " with a copy per cell; "
+              << "whole model " << model << ", largest three cells " << largestThree << "\n";
+    EXPECT_EQ(shared.evictions, 0);
+    EXPECT_LT(shared.peakMB * kMB, static_cast<double>(model));
+    EXPECT_LT(shared.peakMB * kMB, static_cast<double>(largestThree));
+    EXPECT_LT(shared.peakMB, copies.peakMB);
 }
 
 // With every needed cell resident (synchronous paging, a budget for all of them) the paged

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cstddef>
 #include <latch>
 
 namespace cavewall::walls {
@@ -121,6 +122,110 @@ TEST(GeometryPager, AFailedLoadStaysAMissAndIsRetried) {
     EXPECT_TRUE(pager.isResident(0));
     EXPECT_EQ(attempts.load(), 2);
     EXPECT_EQ(pager.stats().misses, 2);
+}
+
+// Three meshes in three cells as a CAD export places parts: mesh 0 (a part kind) in every cell,
+// mesh 1 in cell 0 only, mesh 2 in cells 1 and 2; mesh 3 is used by structure and by cell 1
+// (always resident), mesh 4 by nothing.
+scenes::Scene sharedMeshes() {
+    scenes::Scene s;
+    s.meshes.resize(5);
+    for (int m = 0; m < 5; ++m) {
+        s.meshes[m].positions.resize(static_cast<std::size_t>(10 * (m + 1)));  // distinct sizes
+        s.meshes[m].indices.resize(3);
+    }
+    auto add = [&](int mesh, int cell, scenes::Role role = scenes::Role::Content) {
+        scenes::Object o;
+        o.mesh = mesh, o.cell = cell, o.role = role;
+        s.objects.push_back(o);
+    };
+    for (int c : {0, 1, 2}) add(0, c);
+    add(1, 0);
+    add(2, 2);
+    add(2, 1);
+    add(0, 2);
+    add(3, 1);
+    add(3, -1, scenes::Role::Structure);
+    return s;
+}
+
+TEST(PagedMeshGroups, GroupsMeshesByTheCellsThatUseThem) {
+    const scenes::PagedMeshGroups g = scenes::pagedMeshGroups(sharedMeshes(), 3);
+    // Numbered by first mesh: mesh 0 -> group 0 (cells 0, 1, 2), 1 -> 1 (cell 0), 2 -> 2 (1, 2).
+    EXPECT_EQ(g.groupOfMesh, (std::vector<int>{0, 1, 2, -1, -1}));
+    EXPECT_EQ(g.groupMeshes, (std::vector<std::vector<int>>{{0}, {1}, {2}}));
+    EXPECT_EQ(g.groupCells, (std::vector<std::vector<int>>{{0, 1, 2}, {0}, {1, 2}}));
+    EXPECT_EQ(g.cellGroups, (std::vector<std::vector<int>>{{0, 1}, {0, 2}, {0, 2}}));
+    // Meshes used by the same cells share a group.
+    scenes::Scene s = sharedMeshes();
+    s.objects.push_back({});
+    s.objects.back().mesh = 4, s.objects.back().cell = 0;
+    const scenes::PagedMeshGroups h = scenes::pagedMeshGroups(s, 3);
+    EXPECT_EQ(h.groupOfMesh[4], 1);
+    EXPECT_EQ(h.groupMeshes[1], (std::vector<int>{1, 4}));
+    // An object whose cell is outside the description is always resident, and so is its mesh.
+    s.objects.back().cell = 7;
+    EXPECT_EQ(scenes::pagedMeshGroups(s, 3).groupOfMesh[4], -1);
+}
+
+// The point of groups: walking through every cell keeps each mesh once, so the resident bytes
+// are the union of the cells' meshes (here the whole model less the always-resident mesh 3),
+// where a copy per cell would hold mesh 0 three times and mesh 2 twice.
+TEST(GeometryPager, AMeshSharedByCellsIsResidentOnce) {
+    const scenes::Scene s = sharedMeshes();
+    const scenes::PagedMeshGroups g = scenes::pagedMeshGroups(s, 3);
+    const std::vector<std::size_t> groupBytes = groupGeometryBytes(s, g);
+    std::atomic<int> loads{0};
+    GeometryPager pager(groupBytes, g.cellGroups, 64.0, [&](int) { ++loads; });
+    for (int c : {0, 1, 2}) {
+        pager.request({c}, {});
+        uploadAll(pager);
+        EXPECT_TRUE(pager.isResident(c));
+    }
+    EXPECT_EQ(loads.load(), 3);  // three groups, each loaded once
+    auto bytes = [&](int mesh) { return s.meshes[mesh].positions.size() * kVertexBytes + 3 * kIndexBytes; };
+    const std::size_t resident = bytes(0) + bytes(1) + bytes(2);
+    EXPECT_NEAR(pager.stats().residentMB * kMB, static_cast<double>(resident), 1e-6);
+    EXPECT_EQ(modelGeometryBytes(s), resident + bytes(3) + bytes(4));
+    // The yardstick counts each cell's own meshes (cell 1's include the always-resident mesh 3).
+    const std::vector<std::size_t> cellBytes = cellGeometryBytes(s, 3);
+    EXPECT_EQ(cellBytes, (std::vector<std::size_t>{bytes(0) + bytes(1), bytes(0) + bytes(2) + bytes(3),
+                                                   bytes(0) + bytes(2)}));
+    EXPECT_EQ(largestBytes(cellBytes, 3), 3 * bytes(0) + bytes(1) + 2 * bytes(2) + bytes(3));
+    EXPECT_LT(resident, largestBytes(cellBytes, 3));
+    // Cells 1 and 2 are the largest two: cell 2 (mesh 2, 732 B) outweighs cell 0 (mesh 1, 492 B).
+    EXPECT_EQ(largestBytes(cellBytes, 2), 2 * bytes(0) + 2 * bytes(2) + bytes(3));
+}
+
+// A cell is resident when all its groups are; evicting a group another wanted-now cell uses is
+// never allowed, and a group only a cell left behind uses goes first.
+TEST(GeometryPager, EvictsGroupsNoWantedCellUses) {
+    // Cells 0: {0, 1}, 1: {0, 2}, 2: {0, 3}; 1 MB each; room for three groups.
+    GeometryPager pager({kMB, kMB, kMB, kMB}, {{0, 1}, {0, 2}, {0, 3}}, 3.5);
+    pager.request({0}, {});
+    uploadAll(pager);
+    pager.request({1}, {});
+    uploadAll(pager);
+    EXPECT_TRUE(pager.takeEvictions().empty());
+    EXPECT_TRUE(pager.isResident(0) && pager.isResident(1));
+    pager.request({2}, {});
+    uploadAll(pager);
+    EXPECT_EQ(pager.takeEvictions(), std::vector<int>{1});  // cell 0's own group; group 0 stays
+    EXPECT_FALSE(pager.isResident(0));
+    EXPECT_TRUE(pager.isResident(1) && pager.isResident(2));
+    EXPECT_TRUE(pager.groupResident(0));
+    EXPECT_EQ(pager.stats().resident, 3);
+    EXPECT_EQ(pager.stats().pageIns, 4);  // groups 0, 1, 2, 3: group 0 once for all three cells
+    EXPECT_EQ(pager.groupsOf(2), (std::vector<int>{0, 3}));
+    EXPECT_TRUE(pager.groupsOf(9).empty());
+}
+
+// A miss is per cell: a cell counts once per frame however many of its groups are missing.
+TEST(GeometryPager, MissesCountCellsNotGroups) {
+    GeometryPager pager({kMB, kMB, kMB}, {{0, 1, 2}, {}}, 8.0);
+    pager.request({0, 1}, {});
+    EXPECT_EQ(pager.stats().misses, 1);
+    EXPECT_TRUE(pager.isResident(1));  // no paged geometry: always resident
 }
 
 TEST(GeometryPager, UnknownCellsAreIgnored) {

@@ -50,35 +50,38 @@ WalkthroughOptions withPaging(WalkthroughOptions options, const scenes::SceneDes
 
 }  // namespace
 
-// Geometry paging by cell: the pager (GL-free policy) decides; its loader packs a cell's meshes
-// on the pager's thread into `staged`; planFrame uploads them into the renderer's GpuScene and
-// frees the evicted cells' buffers.
+// Geometry paging by cell: the pager (GL-free policy) decides which mesh groups
+// (scenes/paged_meshes.h, the renderer's GpuScene::meshGroups) are resident; its loader packs a
+// group's meshes on the pager's thread into `staged`; planFrame uploads them into the
+// renderer's GpuScene and frees the evicted groups' buffers.
 struct Walkthrough::CellPaging {
-    CellPaging(const scenes::Scene& scene, int cells, const std::vector<scenes::MeshLod>* lods, double budgetMB)
-        : scene(scene), lods(lods), cellMeshes(meshesByCell(scene, cells)),
-          pager(walls::cellGeometryBytes(scene, cells, lods), budgetMB, [this](int cell) { stage(cell); }) {}
+    CellPaging(const scenes::Scene& scene, const scenes::PagedMeshGroups& groups,
+               const std::vector<scenes::MeshLod>* lods, double budgetMB)
+        : scene(scene), lods(lods), groups(groups),
+          pager(walls::groupGeometryBytes(scene, groups, lods), groups.cellGroups, budgetMB,
+                [this](int group) { stage(group); }) {}
 
-    void stage(int cell) {
-        PackedGeometry packed = packMeshes(scene, lods, cellMeshes[cell]);
+    void stage(int group) {
+        PackedGeometry packed = packMeshes(scene, lods, groups.groupMeshes[group]);
         std::lock_guard lock(mutex);
-        staged[cell] = std::move(packed);
+        staged[group] = std::move(packed);
     }
-    // The staged pack of `cell`, or one packed now (a cell drawn before its loader ran).
-    PackedGeometry take(int cell) {
+    // The staged pack of `group`, or one packed now (a group drawn before its loader ran).
+    PackedGeometry take(int group) {
         {
             std::lock_guard lock(mutex);
-            if (auto found = staged.find(cell); found != staged.end()) {
+            if (auto found = staged.find(group); found != staged.end()) {
                 PackedGeometry packed = std::move(found->second);
                 staged.erase(found);
                 return packed;
             }
         }
-        return packMeshes(scene, lods, cellMeshes[cell]);
+        return packMeshes(scene, lods, groups.groupMeshes[group]);
     }
 
     const scenes::Scene& scene;
     const std::vector<scenes::MeshLod>* lods;
-    std::vector<std::vector<int>> cellMeshes;
+    const scenes::PagedMeshGroups& groups;  // the renderer's GpuScene's
     std::mutex mutex;
     std::map<int, PackedGeometry> staged;
     walls::GeometryPager pager;  // last: its thread stops before the staging goes
@@ -135,7 +138,7 @@ Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescript
     if (walls && !walls->plan.walls.empty()) _walls = std::make_unique<WallRuntime>(std::move(*walls), _options);
     if (_walls && _options.render.pagedCells > 0)
         _walls->geometry = std::make_unique<CellPaging>(
-            scene, _options.render.pagedCells, _renderer.hasLods() ? &_renderer.renderScene().lods() : nullptr,
+            scene, _renderer.gpu().meshGroups(), _renderer.hasLods() ? &_renderer.renderScene().lods() : nullptr,
             _options.geometryBudgetMB);
     _planner = std::make_unique<walls::FramePlanner>(scene, description, display, _walls ? &_walls->setup : nullptr,
                                                      _options.transition, _options.morphSeconds, _screens);
@@ -201,6 +204,17 @@ void Walkthrough::waitForTextures() {
     }
 }
 
+GeometryYardsticks Walkthrough::geometryYardsticks() const {
+    constexpr double kMB = 1024.0 * 1024.0;
+    const std::vector<scenes::MeshLod>* lods = _renderer.hasLods() ? &_renderer.renderScene().lods() : nullptr;
+    const int cells = static_cast<int>(_description.cells.size());
+    GeometryYardsticks y;
+    y.wholeModelMB = static_cast<double>(walls::modelGeometryBytes(_scene, lods)) / kMB;
+    y.largestThreeCellsMB = static_cast<double>(walls::largestBytes(walls::cellGeometryBytes(_scene, cells, lods), 3)) / kMB;
+    y.sharedMB = static_cast<double>(_renderer.gpu().vertexBytes() + _renderer.gpu().indexBytes()) / kMB;
+    return y;
+}
+
 // The views of the screens this instance renders.
 std::vector<display::ScreenView> Walkthrough::renderedViews(const display::HeadPose& head) const {
     std::vector<display::ScreenView> views = _display.views(head);
@@ -226,19 +240,21 @@ walls::FramePlan Walkthrough::planFrame(const walls::FrameInput& input, const st
     walls::GeometryPager& pager = w.geometry->pager;
     pager.request(wanted.cellsNow, wanted.cellsSoon);
     if (_options.synchronousPaging) pager.waitIdle();
-    for (int cell : pager.takeReady()) makeResident(cell);
+    for (int group : pager.takeReady()) makeResident(group);
     walls::FramePlan plan = _planner->plan([&w](int id) { return w.store.resident(id); },
                                            [&pager](int cell) { return pager.isResident(cell); });
-    for (int cell : plan.geometryForced) makeResident(cell);  // drawn now: loaded at once (a stall)
+    // Drawn now: the missing groups are loaded at once (a stall).
+    for (int cell : plan.geometryForced)
+        for (int group : pager.groupsOf(cell)) makeResident(group);
     return plan;
 }
 
-// Uploads `cell`'s geometry, tells the pager, and frees what the pager evicts to make room.
-void Walkthrough::makeResident(int cell) {
+// Uploads mesh group `group`, tells the pager, and frees what the pager evicts to make room.
+void Walkthrough::makeResident(int group) {
     CellPaging& g = *_walls->geometry;
-    if (!g.pager.isResident(cell)) _renderer.gpu().uploadCell(cell, g.take(cell));
-    g.pager.markResident(cell);
-    for (int evicted : g.pager.takeEvictions()) _renderer.gpu().freeCell(evicted);
+    if (!g.pager.groupResident(group)) _renderer.gpu().uploadGroup(group, g.take(group));
+    g.pager.markResident(group);
+    for (int evicted : g.pager.takeEvictions()) _renderer.gpu().freeGroup(evicted);
 }
 
 std::vector<WallDraw> Walkthrough::wallDraws(const walls::FramePlan& plan) const {
@@ -324,7 +340,7 @@ walls::FrameResult Walkthrough::renderFrame(const walls::FrameInput& input) {
     if (_walls) result.pager = _walls->pager.stats();
     if (_walls && _walls->geometry) {
         result.geometry = _walls->geometry->pager.stats();
-        result.geometry.residentMB = static_cast<double>(_renderer.gpu().residentCellBytes()) / (1024.0 * 1024.0);
+        result.geometry.residentMB = static_cast<double>(_renderer.gpu().residentPagedBytes()) / (1024.0 * 1024.0);
     }
     result.geometryMisses = plan.geometryMisses;
     result.geometryForced = static_cast<int>(plan.geometryForced.size());

@@ -12,9 +12,10 @@
 //     is ready within the per-frame byte budget (WalkthroughSettings);
 //  2. has the planner decide the frame against what is resident, maps texture ids to GL names;
 //     with geometry paging (WalkthroughSettings::geometryBudgetMB), the cells likewise: the
-//     pager's loader packs a cell's meshes on its thread, this class uploads them into the
-//     scene renderer's per-cell buffers (display/gl/scene_gpu.h) and deletes the buffers of
-//     evicted cells, so FrameResult::geometry.residentMB is the GPU bytes of resident cells;
+//     pager's loader packs a cell's mesh groups on its thread, this class uploads them into
+//     the scene renderer's per-group buffers (display/gl/scene_gpu.h; a mesh shared by cells
+//     is stored once) and deletes the buffers of evicted groups, so
+//     FrameResult::geometry.residentMB is the GPU bytes of resident groups;
 //  3. chooses the levels of detail (SceneRenderer::chooseLods) for the planned objects;
 //  4. per screen and eye (drawViews): the planned geometry (frustum-culled by the scene
 //     renderer), the warp pass (Transition::Warp, warp_pass.h), the wall quads (wall_pass.h),
@@ -75,6 +76,14 @@ struct WalkthroughOptions : walls::WalkthroughSettings {
     walls::WallKind wallKind = walls::WallKind::Flat;
 };
 
+// What resident geometry is judged by (issue 15), in MB (2^20 bytes) of GPU buffers, with the
+// renderer's levels of detail: the whole model (every mesh once), the largest three cells
+// (each cell's own meshes once, walls::cellGeometryBytes) and the always-resident shared
+// buffers (structure, objects without a cell), which paging never frees.
+struct GeometryYardsticks {
+    double wholeModelMB = 0.0, largestThreeCellsMB = 0.0, sharedMB = 0.0;
+};
+
 class Walkthrough {
 public:
     // Makes `context` current. Keeps references to scene, description, display and context,
@@ -100,6 +109,7 @@ public:
     struct ClusterRuntime;  // walkthrough.cpp
     // Blocks until the pager has decoded everything requested (warm-up for tests and benches).
     void waitForTextures();
+    GeometryYardsticks geometryYardsticks() const;
 
 private:
     struct WallRuntime;
@@ -107,7 +117,7 @@ private:
     void planClusters(const walls::FrameInput& input, glm::dvec3 eyeWorld, std::vector<int>& objects,
                       walls::FrameResult& result);
     struct CellPaging;
-    void makeResident(int cell);
+    void makeResident(int group);
     walls::FramePlan planFrame(const walls::FrameInput& input, const std::vector<display::ScreenView>& views);
     std::vector<WallDraw> wallDraws(const walls::FramePlan& plan) const;
     // Depth walls: the walls of `flat` whose every texture has its depth move to the result.

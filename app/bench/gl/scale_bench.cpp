@@ -1,0 +1,334 @@
+#include "app/bench/gl/scale_bench.h"
+
+#include "config/error.h"
+#include "config/json_reader.h"
+#include "display/display.h"
+#include "display/timing.h"
+#include "display/gl/context.h"
+#include "display/gl/render_targets.h"
+#include "display/gl/scene_renderer.h"
+#include "app/bench/path.h"
+#include "render/lod_choice.h"
+#include "scenes/generate.h"
+#include "scenes/loader.h"
+#include "walls/frame_planner.h"
+#include "walls/frame_select.h"
+#include "walls/gl/baker.h"
+#include "walls/gl/walkthrough.h"
+#include "walls/wall_setup.h"
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <set>
+#include <sstream>
+#include <thread>
+
+namespace cavewall::gl {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr double kMB = 1024.0 * 1024.0;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+std::string fixed(double v, int decimals = 1) {
+    std::ostringstream s;
+    s.setf(std::ios::fixed);
+    s.precision(decimals);
+    s << v;
+    return s.str();
+}
+
+std::string loadAverage() {
+    std::ifstream in("/proc/loadavg");
+    std::string one, five, fifteen;
+    in >> one >> five >> fifteen;
+    return in ? one + " " + five + " " + fifteen : std::string("unknown");
+}
+
+// The plant for `triangles`, generated into `folder` unless it is there already.
+std::filesystem::path plantFor(std::size_t triangles, const std::filesystem::path& folder, double& generateSeconds) {
+    const std::filesystem::path sceneFile = folder / "scene.json";
+    generateSeconds = 0.0;
+    if (std::filesystem::exists(sceneFile)) return sceneFile;
+    const auto start = Clock::now();
+    scenes::GenerateOptions g;
+    g.triangles = triangles;
+    scenes::GeneratedScene generated = scenes::generatePlant(g);
+    scenes::writeGenerated(generated, folder);
+    generateSeconds = secondsSince(start);
+    return sceneFile;
+}
+
+// The textures the path's frames request (now or soon) with every texture resident, in id order.
+std::set<int> requestedTextures(const scenes::Scene& scene, const scenes::SceneDescription& d,
+                                const display::Display& display, const walls::WallSetup& setup,
+                                const bench::EyePath& path) {
+    walls::FramePlanner planner(scene, d, display, &setup, walls::Transition::Blend, 0.5);
+    planner.requestCells(true);
+    std::set<int> ids;
+    for (const walls::FrameInput& in : path.frames) {
+        const walls::TextureRequests r = planner.requests(in, display.views(in.head));
+        ids.insert(r.now.begin(), r.now.end());
+        ids.insert(r.soon.begin(), r.soon.end());
+        planner.plan([](int) { return true; });
+    }
+    return ids;
+}
+
+// Bakes the `ids` of `setup`'s plan only (a copy of the plan without the others, ids kept).
+BakeResult bakeSubset(const scenes::Scene& scene, const scenes::SceneDescription& d, const walls::WallSetup& setup,
+                      const std::set<int>& ids, const std::filesystem::path& sceneFile, const ScaleOptions& o,
+                      Context& context) {
+    walls::WallSetup subset = setup;
+    std::erase_if(subset.plan.textures, [&](const walls::Texture& t) { return !ids.count(t.id); });
+    BakeRequest request;
+    request.scene = sceneFile;
+    request.settings.maxResolution = o.bakeResolution;
+    request.settings.jobs = 2;
+    request.context = &context;
+    request.cache = o.data / "bake-cache";
+    return bakeWalls(scene, d, subset, request);
+}
+
+// The near limit's draw of one frame: the viewer's cell and the always-drawn objects.
+struct NearMode {
+    NearMode(const scenes::Scene& scene, const scenes::SceneDescription& d, const display::Display& display,
+             Context& context, const walls::WallSetup& setup, double lodPixels)
+        : scene(scene), display(display), selector(setup.plan, setup.table, d), targets(display, context),
+          renderer(scene, settingsWith(lodPixels)), cells(d.cells.size()), lodPixels(lodPixels) {}
+
+    static RenderSettings settingsWith(double lodPixels) {
+        RenderSettings s;
+        s.lodPixels = lodPixels;
+        return s;
+    }
+
+    // Frame ms (submission and GPU) and triangles.
+    std::pair<double, double> draw(const walls::FrameInput& in) {
+        const auto start = Clock::now();
+        const glm::dvec3 eye(in.worldFromCave * glm::dvec4(in.head.position, 1.0));
+        const walls::FrameSelection selection = selector.select(eye);
+        std::vector<bool> mask(cells, false);
+        if (selection.cell >= 0 && selection.cell < static_cast<int>(cells)) mask[selection.cell] = true;
+        const std::vector<int> objects = walls::objectsOfCells(scene, mask);
+        render::DrawFilter filter;
+        filter.objects = &objects;
+        const std::vector<display::ScreenView> views = display.views(in.head);
+        render::FrameLod lod;
+        if (renderer.hasLods()) {
+            lod = render::chooseLods(renderer.renderScene(), views, in.worldFromCave, filter, lodPixels);
+            filter.lodLevels = &lod.levels;
+        }
+        const FrameStats stats = renderer.render(views, targets, in.worldFromCave, filter);
+        renderer.waitGpuMs();
+        return {display::msSince(start), static_cast<double>(stats.triangles)};
+    }
+
+    double residentMB() const {
+        return static_cast<double>(renderer.gpu().vertexBytes() + renderer.gpu().indexBytes()) / kMB;
+    }
+
+    const scenes::Scene& scene;
+    const display::Display& display;
+    walls::FrameSelector selector;
+    RenderTargets targets;
+    SceneRenderer renderer;
+    std::size_t cells;
+    double lodPixels;
+};
+
+struct Accumulated {
+    std::vector<double> ms;
+    double triangles = 0.0, residentMB = 0.0, pagedMB = 0.0;
+    int overAlpha = 0;
+    long misses = 0, pageIns = 0;
+};
+
+bench::ScaleRow rowOf(bench::ScaleMode mode, const Accumulated& a, const bench::ScaleRow& base) {
+    bench::ScaleRow r = base;
+    r.mode = mode;
+    r.frameMs = bench::timeStats(a.ms);
+    r.trianglesPerFrame = a.ms.empty() ? 0.0 : a.triangles / static_cast<double>(a.ms.size());
+    r.residentMB = a.residentMB;
+    r.pagedPeakMB = a.pagedMB;
+    r.geometryMisses = a.misses;
+    r.geometryPageIns = a.pageIns;
+    r.texturesOverAlpha = a.overAlpha;
+    return r;
+}
+
+// One size made ready: the plant loaded, the stretch's eye path recorded, the walls planned and
+// the stretch's textures baked.
+struct PreparedSize {
+    scenes::SceneDescription description;
+    scenes::Scene scene;
+    bench::EyePath path;
+    walls::WallSetup setup;
+    double loadSeconds = 0.0, planSeconds = 0.0;
+    std::string size, line;  // "2.07 M triangles"; the report line of what was made
+};
+
+std::unique_ptr<PreparedSize> prepareSize(const ScaleOptions& o, std::size_t target, const display::Display& display,
+                                          Context& context) {
+    auto p = std::make_unique<PreparedSize>();
+    double generateSeconds = 0.0;
+    const std::filesystem::path sceneFile = plantFor(target, o.data / ("plant-" + std::to_string(target)), generateSeconds);
+    auto start = Clock::now();
+    scenes::SceneDescription& d = p->description;
+    p->scene = scenes::loadSceneFile(sceneFile, &d);
+    p->loadSeconds = secondsSince(start);
+    if (d.walls.empty() || d.walkPath.size() < 2)
+        throw Error(sceneFile.string() + ": expected a plant with virtual walls and a walk path");
+    d.walkPath = bench::pathPrefix(d.walkPath, o.pathMetres);
+    p->path = bench::recordEyePath(p->scene, d, o.display, o.tracker, o.frames);
+    start = Clock::now();
+    walls::PlanOptions plan = walls::planOptionsFor(o.plan, walls::WallKind::Flat, o.bakeResolution);
+    plan.alphaDeg = o.alphaDeg;
+    p->setup = walls::prepareWalls(p->scene, d, plan);
+    p->planSeconds = secondsSince(start);
+    const std::set<int> ids = requestedTextures(p->scene, d, display, p->setup, p->path);
+    const BakeResult baked = bakeSubset(p->scene, d, p->setup, ids, sceneFile, o, context);
+    p->setup.folder = baked.folder;
+    p->setup.manifest = baked.manifest;
+    p->size = fixed(static_cast<double>(p->scene.triangleCount()) / 1e6, 2) + " M triangles";
+    p->line = p->size + " (" + std::to_string(d.cells.size()) + " cells, " + std::to_string(p->scene.objects.size()) +
+              " objects): generated in " + fixed(generateSeconds, 1) + " s (0: reused), loaded in " +
+              fixed(p->loadSeconds, 2) + " s, walls planned in " + fixed(p->planSeconds, 1) + " s; baked " +
+              std::to_string(ids.size()) + " of the plan's " + std::to_string(p->setup.plan.textures.size()) +
+              " textures (those the stretch requests) at most " + std::to_string(o.bakeResolution) + " texels: " +
+              std::to_string(baked.baked) + " rendered in " + fixed(baked.seconds, 1) + " s, " +
+              std::to_string(baked.reused) + " from the cache";
+    return p;
+}
+
+// One size's three modes: made and timed to their first frame, warmed up, then drawn frame by
+// frame in turn (one function: the three live modes are shared by every step).
+void runSize(const ScaleOptions& o, std::size_t target, const display::Display& display, Context& context,
+             bench::ScaleReport& report) {
+    auto say = [&](const std::string& line) {
+        if (o.verbose) std::cout << "bench --scale: " << line << "\n" << std::flush;
+    };
+    const std::unique_ptr<PreparedSize> prepared = prepareSize(o, target, display, context);
+    const scenes::Scene& scene = prepared->scene;
+    const scenes::SceneDescription& d = prepared->description;
+    const bench::EyePath& path = prepared->path;
+    const walls::WallSetup& setup = prepared->setup;
+    const std::string& size = prepared->size;
+    const double loadSeconds = prepared->loadSeconds, planSeconds = prepared->planSeconds;
+    const std::size_t triangles = scene.triangleCount();
+    say(prepared->line);
+    report.header.push_back(prepared->line);
+
+    bench::ScaleRow base;
+    base.targetTriangles = target;
+    base.triangles = triangles;
+    base.cells = static_cast<int>(d.cells.size());
+    base.loadSeconds = loadSeconds;
+    const auto timeFirst = [&](auto make, auto frame) {
+        const auto t = Clock::now();
+        auto made = make();
+        frame(*made);
+        return std::pair{std::move(made), secondsSince(t)};
+    };
+    // Full geometry.
+    WalkthroughOptions fullOptions;
+    auto [full, fullFirst] = timeFirst(
+        [&] { return std::make_unique<Walkthrough>(scene, d, display, context, std::nullopt, fullOptions); },
+        [&](Walkthrough& w) { w.renderFrame(path.frames.front()); });
+    // The near limit.
+    auto [nearMode, nearFirst] = timeFirst(
+        [&] { return std::make_unique<NearMode>(scene, d, display, context, setup, o.lodPixels); },
+        [&](NearMode& n) { n.draw(path.frames.front()); });
+    // Walls: planning counts in its time to the first frame (the bake does not: it is cached).
+    WalkthroughOptions wallsOptions;
+    wallsOptions.render.lodPixels = o.lodPixels;
+    wallsOptions.geometryBudgetMB = o.geometryBudgetMB;
+    // Synchronous paging: the first frame is complete (its textures and cells loaded), and after
+    // the warm-up pass every texture and mesh group of the stretch stays resident, so the timed
+    // frames measure drawing (nothing is left to wait for).
+    wallsOptions.synchronousPaging = true;
+    wallsOptions.textureBudgetMB = 4096.0;
+    wallsOptions.uploadMBPerFrame = 4096.0;
+    auto [walk, wallsFirst] = timeFirst(
+        [&] { return std::make_unique<Walkthrough>(scene, d, display, context, setup, wallsOptions); },
+        [&](Walkthrough& w) { w.renderFrame(path.frames.front()); });
+    // Yardsticks with each mode's own levels: full detail for full, the walls' levels (also the
+    // near limit's) for the others.
+    const GeometryYardsticks yard = walk->geometryYardsticks(), fullYard = full->geometryYardsticks();
+    say(size + ": warm-up over the stretch");
+    for (const walls::FrameInput& in : path.frames) walk->renderFrame(in);
+    walk->waitForTextures();
+    for (std::size_t i = 0; i < std::min<std::size_t>(3, path.frames.size()); ++i) {
+        full->renderFrame(path.frames[i]);
+        nearMode->draw(path.frames[i]);
+    }
+    say(size + ": full, near and walls frame by frame in turn");
+    Accumulated a[3];
+    a[0].residentMB = fullYard.sharedMB;
+    a[1].residentMB = nearMode->residentMB();
+    for (const walls::FrameInput& in : path.frames) {
+        const walls::FrameResult f = full->renderFrame(in);
+        a[0].ms.push_back(f.frameMs), a[0].triangles += static_cast<double>(f.stats.triangles);
+        const auto [nearMs, nearTriangles] = nearMode->draw(in);
+        a[1].ms.push_back(nearMs), a[1].triangles += nearTriangles;
+        const walls::FrameResult w = walk->renderFrame(in);
+        a[2].ms.push_back(w.frameMs), a[2].triangles += static_cast<double>(w.stats.triangles);
+        a[2].pagedMB = std::max(a[2].pagedMB, w.geometry.residentMB);
+        a[2].overAlpha = std::max(a[2].overAlpha, w.texturesOverAlpha);
+        a[2].misses = w.geometry.misses, a[2].pageIns = w.geometry.pageIns;
+    }
+    a[2].residentMB = yard.sharedMB + a[2].pagedMB;
+    const double firsts[3] = {fullFirst, nearFirst, wallsFirst + planSeconds};
+    const bench::ScaleMode modes[3] = {bench::ScaleMode::Full, bench::ScaleMode::Near, bench::ScaleMode::Walls};
+    for (int m = 0; m < 3; ++m) {
+        bench::ScaleRow r = rowOf(modes[m], a[m], base);
+        r.firstFrameSeconds = firsts[m];
+        r.wholeModelMB = m == 0 ? fullYard.wholeModelMB : yard.wholeModelMB;
+        r.largestThreeCellsMB = m == 0 ? fullYard.largestThreeCellsMB : yard.largestThreeCellsMB;
+        report.rows.push_back(r);
+        say(size + ": " + std::string(bench::toString(modes[m])) + " median " + fixed(r.frameMs.p50, 2) + " ms, resident " +
+            fixed(r.residentMB, 2) + " MB (paged " + fixed(r.pagedPeakMB, 2) + "), whole model " +
+            fixed(r.wholeModelMB, 2) + " MB, largest three cells " + fixed(r.largestThreeCellsMB, 2) + " MB");
+    }
+}
+
+}  // namespace
+
+bench::ScaleReport runScaleBench(const ScaleOptions& o) {
+    if (o.sizes.empty()) throw Error("bench --scale: expected at least one size, got none");
+    if (!(o.pathMetres > 0.0))
+        throw Error("bench --scale: --scale-metres: expected more than 0 m, got " + config::formatNumber(o.pathMetres));
+    const auto start = Clock::now();
+    const display::Display display(o.display);
+    const auto context = createHeadlessContext();
+    bench::ScaleReport report;
+    const auto& s0 = o.display.screens.front();
+    report.header = {
+        "display: " + o.display.name + ", " + std::to_string(o.display.screens.size()) + " screens at " +
+            std::to_string(s0.resolution.x) + "x" + std::to_string(s0.resolution.y) + " pixels, " +
+            std::string(config::toString(o.display.stereo)) + "; " + context->info().renderer + ", " +
+            std::to_string(std::thread::hardware_concurrency()) + " hardware threads",
+        "path: the first " + config::formatNumber(o.pathMetres) + " m of each plant's walk path (the same bays at every "
+            "size), " + std::to_string(o.frames) + " frames, head " + o.tracker + "; modes drawn frame by frame in turn",
+        "full: all geometry, frustum-culled, full detail; near: the viewer's cell and structure at lod " +
+            config::formatNumber(o.lodPixels) + " px; walls: alpha " + config::formatNumber(o.alphaDeg) +
+            " deg, lod " + config::formatNumber(o.lodPixels) + " px, geometry paging under " +
+            config::formatNumber(o.geometryBudgetMB) + " MB (mesh groups shared by cells stored once), synchronous "
+            "paging (the first frame complete; textures and groups of the stretch resident after a warm-up pass); "
+            "first frame: the mode's setup and first frame after loading (walls: planning too; baking not, it is "
+            "cached)",
+        "load average at start: " + loadAverage()};
+    for (std::size_t target : o.sizes) {
+        runSize(o, target, display, *context, report);
+        if (o.afterSize) o.afterSize(report);
+    }
+    report.header.push_back("load average at end: " + loadAverage() + "; bench time " + fixed(secondsSince(start), 0) + " s");
+    return report;
+}
+
+}  // namespace cavewall::gl

@@ -1,0 +1,177 @@
+#include "app/bench/scale.h"
+
+#include "config/error.h"
+#include "app/bench/plot.h"
+#include "scenes/image_io.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <map>
+
+namespace cavewall::bench {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string num(double v, int decimals = 2) {
+    if (!std::isfinite(v)) return "nan";
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, v);
+    return buffer;
+}
+
+double millions(std::size_t triangles) { return static_cast<double>(triangles) / 1e6; }
+
+std::vector<const ScaleRow*> rowsOf(const ScaleReport& report, ScaleMode mode) {
+    std::vector<const ScaleRow*> rows;
+    for (const ScaleRow& r : report.rows)
+        if (r.mode == mode) rows.push_back(&r);
+    std::sort(rows.begin(), rows.end(), [](auto a, auto b) { return a->triangles < b->triangles; });
+    return rows;
+}
+
+void writeText(const std::filesystem::path& file, const std::string& text) {
+    std::ofstream out(file, std::ios::binary);
+    out << text;
+    if (!out) throw Error(file.string() + ": could not write the file");
+}
+
+}  // namespace
+
+std::string_view toString(ScaleMode mode) {
+    switch (mode) {
+    case ScaleMode::Full: return "full";
+    case ScaleMode::Near: return "near";
+    case ScaleMode::Walls: return "walls";
+    }
+    return "?";
+}
+
+double msPerMillionTriangles(const ScaleReport& report, ScaleMode mode) {
+    const std::vector<const ScaleRow*> rows = rowsOf(report, mode);
+    if (rows.size() < 2) return kNaN;
+    double mx = 0.0, my = 0.0;
+    for (const ScaleRow* r : rows) mx += millions(r->triangles), my += r->frameMs.p50;
+    mx /= static_cast<double>(rows.size()), my /= static_cast<double>(rows.size());
+    double sxy = 0.0, sxx = 0.0;
+    for (const ScaleRow* r : rows) {
+        const double dx = millions(r->triangles) - mx;
+        sxy += dx * (r->frameMs.p50 - my), sxx += dx * dx;
+    }
+    return sxx > 0.0 ? sxy / sxx : kNaN;
+}
+
+double growth(const ScaleReport& report, ScaleMode mode) {
+    const std::vector<const ScaleRow*> rows = rowsOf(report, mode);
+    if (rows.size() < 2 || !(rows.front()->frameMs.p50 > 0.0)) return kNaN;
+    return rows.back()->frameMs.p50 / rows.front()->frameMs.p50;
+}
+
+std::string scaleCsv(const ScaleReport& report) {
+    std::string out = "target_triangles,triangles,cells,mode,frame_ms_p50,frame_ms_p95,frame_ms_p99,triangles_per_frame,"
+                      "resident_mb,paged_peak_mb,whole_model_mb,largest_three_cells_mb,load_s,first_frame_s,"
+                      "geometry_misses,geometry_page_ins,textures_over_alpha\n";
+    for (const ScaleRow& r : report.rows)
+        out += std::to_string(r.targetTriangles) + "," + std::to_string(r.triangles) + "," + std::to_string(r.cells) + "," +
+               std::string(toString(r.mode)) + "," + num(r.frameMs.p50, 3) + "," + num(r.frameMs.p95, 3) + "," +
+               num(r.frameMs.p99, 3) + "," + num(r.trianglesPerFrame, 0) + "," + num(r.residentMB, 3) + "," +
+               num(r.pagedPeakMB, 3) + "," + num(r.wholeModelMB, 3) + "," + num(r.largestThreeCellsMB, 3) + "," +
+               num(r.loadSeconds, 3) + "," + num(r.firstFrameSeconds, 3) + "," + std::to_string(r.geometryMisses) + "," +
+               std::to_string(r.geometryPageIns) + "," + std::to_string(r.texturesOverAlpha) + "\n";
+    return out;
+}
+
+std::string scaleMarkdown(const ScaleReport& report) {
+    std::string out;
+    for (const std::string& line : report.header) out += "- " + line + "\n";
+    out += "\n| triangles | cells | mode | frame ms p50 | p95 | triangles/frame | resident MB | paged peak MB | "
+           "whole model MB | largest 3 cells MB | load s | first frame s | geometry misses | over alpha |\n"
+           "| ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+    for (const ScaleRow& r : report.rows)
+        out += "| " + num(millions(r.triangles), 2) + " M | " + std::to_string(r.cells) + " | " +
+               std::string(toString(r.mode)) + " | " + num(r.frameMs.p50) + " | " + num(r.frameMs.p95) + " | " +
+               num(r.trianglesPerFrame, 0) + " | " + num(r.residentMB) + " | " +
+               (r.mode == ScaleMode::Walls ? num(r.pagedPeakMB) : std::string("–")) + " | " + num(r.wholeModelMB) +
+               " | " + num(r.largestThreeCellsMB) + " | " + num(r.loadSeconds) + " | " + num(r.firstFrameSeconds) +
+               " | " + std::to_string(r.geometryMisses) + " | " + std::to_string(r.texturesOverAlpha) + " |\n";
+    out += "\nSlopes (least squares of the median frame ms against millions of triangles) and growth (median at the "
+           "largest size over the smallest):\n\n";
+    for (ScaleMode m : {ScaleMode::Full, ScaleMode::Near, ScaleMode::Walls})
+        out += "- " + std::string(toString(m)) + ": " + num(msPerMillionTriangles(report, m), 3) + " ms per M triangles, " +
+               num(growth(report, m)) + "x\n";
+    return out;
+}
+
+std::vector<std::filesystem::path> writeScaleReport(const std::filesystem::path& folder, const ScaleReport& report) {
+    std::filesystem::create_directories(folder);
+    const std::vector<std::filesystem::path> files = {folder / "scale.csv", folder / "scale.md", folder / "scale_ms.png",
+                                                      folder / "scale_mb.png", folder / "scale_load.png"};
+    writeText(files[0], scaleCsv(report));
+    writeText(files[1], "# cavewall bench --scale\n\n" + scaleMarkdown(report) +
+                            "\nPlots against millions of triangles (x); lines numbered 0 full, 1 near, 2 walls: "
+                            "median frame ms (scale_ms.png), resident geometry MB (scale_mb.png), seconds from the "
+                            "loaded scene to the first frame plus the load (scale_load.png).\n\n"
+                            "![frame ms](scale_ms.png) ![resident MB](scale_mb.png) ![first frame s](scale_load.png)\n");
+    auto plot = [&](double ScaleRow::*field, bool timeStat, bool plusLoad) {
+        std::vector<PlotSeries> series;
+        for (ScaleMode m : {ScaleMode::Full, ScaleMode::Near, ScaleMode::Walls}) {
+            PlotSeries s;
+            s.label = static_cast<int>(m);
+            for (const ScaleRow* r : rowsOf(report, m)) {
+                const double y = timeStat ? r->frameMs.p50 : r->*field + (plusLoad ? r->loadSeconds : 0.0);
+                s.points.push_back({millions(r->triangles), std::isfinite(y) ? y : 0.0, 0, false});
+            }
+            if (!s.points.empty()) series.push_back(std::move(s));
+        }
+        return plotSeries(series);
+    };
+    scenes::writeImage(files[2], plot(&ScaleRow::residentMB, true, false));
+    scenes::writeImage(files[3], plot(&ScaleRow::residentMB, false, false));
+    scenes::writeImage(files[4], plot(&ScaleRow::firstFrameSeconds, false, true));
+    return files;
+}
+
+std::vector<std::size_t> parseScaleList(const std::string& text) {
+    std::vector<std::size_t> out;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t end = std::min(text.find(',', start), text.size());
+        const std::string entry = text.substr(start, end - start);
+        double factor = 1.0;
+        std::string digits = entry;
+        if (!digits.empty() && (digits.back() == 'M' || digits.back() == 'm')) factor = 1e6, digits.pop_back();
+        else if (!digits.empty() && (digits.back() == 'k' || digits.back() == 'K')) factor = 1e3, digits.pop_back();
+        char* stop = nullptr;
+        const double value = digits.empty() ? kNaN : std::strtod(digits.c_str(), &stop) * factor;
+        if (!std::isfinite(value) || stop != digits.c_str() + digits.size() || value < 1.0 || value >= 2147483648.0)
+            throw Error("bench: --scale: entry " + std::to_string(out.size() + 1) + " '" + entry +
+                        "': expected a triangle count such as 2M, 500k or 8000000 (at least 1, below 2^31)");
+        out.push_back(static_cast<std::size_t>(std::llround(value)));
+        start = end + 1;
+    }
+    return out;
+}
+
+std::vector<glm::dvec3> pathPrefix(const std::vector<glm::dvec3>& points, double metres) {
+    std::vector<glm::dvec3> out;
+    if (points.empty()) return out;
+    out.push_back(points.front());
+    double left = metres;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        const double step = glm::length(points[i] - points[i - 1]);
+        if (step >= left) {
+            if (left > 0.0) out.push_back(points[i - 1] + (points[i] - points[i - 1]) * (left / step));
+            return out;
+        }
+        left -= step;
+        out.push_back(points[i]);
+    }
+    return out;
+}
+
+}  // namespace cavewall::bench

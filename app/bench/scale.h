@@ -1,0 +1,70 @@
+#pragma once
+// The results of `cavewall bench --scale` (cavewall issue 15) and their writers: scale.csv,
+// scale.md (also printed) and three plots against the model's triangles (scale_ms.png, median
+// frame time; scale_mb.png, resident geometry; scale_load.png, time to the first frame).
+//
+// One ScaleRow per model size and mode. Modes: full geometry (frustum-culled, the whole model
+// on the GPU), the near-geometry limit (the viewer's cell and the always-resident structure),
+// and walls (virtual walls with levels of detail and geometry paging by cell). Times are
+// milliseconds per frame (all screens) over the timed frames; memory is MB = 2^20 bytes of GPU
+// vertex and index buffers (display/gl/scene_gpu.h sizes).
+
+#include "app/bench/metrics.h"
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cavewall::bench {
+
+enum class ScaleMode { Full, Near, Walls };
+std::string_view toString(ScaleMode mode);  // "full" | "near" | "walls"
+
+struct ScaleRow {
+    std::size_t targetTriangles = 0;     // the --scale entry the plant was generated for
+    std::size_t triangles = 0;           // drawn triangles of the whole model (instances counted)
+    int cells = 0;
+    ScaleMode mode = ScaleMode::Full;
+    TimeStats frameMs;
+    double trianglesPerFrame = 0.0;      // mean drawn per frame (all views)
+    // Geometry on the GPU, MB: the most at once over the timed frames. Full and near: the whole
+    // model (uploaded at start). Walls: the always-resident shared buffers plus the resident
+    // paged mesh groups.
+    double residentMB = 0.0;
+    double pagedPeakMB = 0.0;            // walls: the paged groups alone (what paging decides)
+    double wholeModelMB = 0.0, largestThreeCellsMB = 0.0;  // yardsticks (walls/gl/walkthrough.h)
+    double loadSeconds = 0.0;            // reading the scene files into memory
+    double firstFrameSeconds = 0.0;      // from the loaded scene to the end of the first frame
+    long geometryMisses = 0, geometryPageIns = 0;  // walls: cumulative over the run
+    int texturesOverAlpha = 0;           // walls: the most in a frame
+};
+
+struct ScaleReport {
+    std::vector<std::string> header;     // lines for the Markdown report
+    std::vector<ScaleRow> rows;
+};
+
+// Least-squares slope of the median frame ms against millions of triangles for `mode`; NaN
+// with fewer than two sizes.
+double msPerMillionTriangles(const ScaleReport& report, ScaleMode mode);
+// The median frame ms at the largest size over that at the smallest (NaN with one size).
+double growth(const ScaleReport& report, ScaleMode mode);
+
+std::string scaleCsv(const ScaleReport& report);
+std::string scaleMarkdown(const ScaleReport& report);
+// Writes scale.csv, scale.md and the three plots into `folder` (created); returns the files.
+std::vector<std::filesystem::path> writeScaleReport(const std::filesystem::path& folder, const ScaleReport& report);
+
+// "2M,8M,32M" (k and M suffixes, plain integers too): triangle targets, each in [1, 2^31).
+// Throws cavewall::Error naming the entry.
+std::vector<std::size_t> parseScaleList(const std::string& text);
+
+// The first `metres` of the polyline `points` (all of it when shorter; the last point
+// interpolated): the same stretch of walk at every size.
+std::vector<glm::dvec3> pathPrefix(const std::vector<glm::dvec3>& points, double metres);
+
+}  // namespace cavewall::bench

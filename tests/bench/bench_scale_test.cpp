@@ -1,0 +1,89 @@
+// `cavewall bench --scale`'s report (app/bench/scale.h): slopes, the size list, the path
+// stretch and the files.
+#include "app/bench/scale.h"
+
+#include "config/error.h"
+#include "scenes/image_io.h"
+#include "tests/support/csv_table.h"
+#include "tests/support/files.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace cavewall::bench {
+namespace {
+
+using ::testing::HasSubstr;
+
+ScaleRow row(std::size_t triangles, ScaleMode mode, double p50) {
+    ScaleRow r;
+    r.targetTriangles = r.triangles = triangles;
+    r.mode = mode;
+    r.frameMs = {p50, p50, p50, p50};
+    // Walls apart from full in every plot: less memory, a later first frame.
+    r.residentMB = mode == ScaleMode::Walls ? 1.0 : static_cast<double>(triangles) / 1e6;
+    r.loadSeconds = 0.5;
+    r.firstFrameSeconds = mode == ScaleMode::Walls ? 3.0 : 1.0;
+    return r;
+}
+
+// Full grows by 10 ms per M triangles (20 ms at 2 M, 80 ms at 8 M); walls by 0.5 ms per M
+// (5 ms at 2 M, 8 ms at 8 M), so walls at 8 M are 1.6x their 2 M time and full 4x.
+ScaleReport sample() {
+    ScaleReport r;
+    r.header = {"display: test"};
+    r.rows = {row(2'000'000, ScaleMode::Full, 20.0), row(2'000'000, ScaleMode::Walls, 5.0),
+              row(8'000'000, ScaleMode::Full, 80.0), row(8'000'000, ScaleMode::Walls, 8.0)};
+    return r;
+}
+
+TEST(BenchScale, SlopesAreLeastSquaresInMsPerMillionTriangles) {
+    const ScaleReport r = sample();
+    EXPECT_NEAR(msPerMillionTriangles(r, ScaleMode::Full), 10.0, 1e-9);
+    EXPECT_NEAR(msPerMillionTriangles(r, ScaleMode::Walls), 0.5, 1e-9);
+    EXPECT_NEAR(growth(r, ScaleMode::Full), 4.0, 1e-12);
+    EXPECT_NEAR(growth(r, ScaleMode::Walls), 1.6, 1e-12);
+    EXPECT_TRUE(std::isnan(msPerMillionTriangles(r, ScaleMode::Near)));  // no rows
+    EXPECT_THAT(scaleMarkdown(r), HasSubstr("- full: 10.000 ms per M triangles, 4.00x"));
+}
+
+TEST(BenchScale, SizeListTakesSuffixesAndRejectsBadEntries) {
+    EXPECT_EQ(parseScaleList("2M,500k,8000000"), (std::vector<std::size_t>{2'000'000, 500'000, 8'000'000}));
+    EXPECT_EQ(parseScaleList("1.5M"), std::vector<std::size_t>{1'500'000});
+    EXPECT_THAT([] { parseScaleList("2M,x"); },
+                ::testing::ThrowsMessage<Error>(HasSubstr("entry 2 'x': expected a triangle count")));
+    EXPECT_THAT([] { parseScaleList("4096M"); }, ::testing::ThrowsMessage<Error>(HasSubstr("below 2^31")));
+    EXPECT_THAT([] { parseScaleList(""); }, ::testing::ThrowsMessage<Error>(HasSubstr("entry 1 ''")));
+}
+
+TEST(BenchScale, PathPrefixCutsThePolylineAtTheLength) {
+    const std::vector<glm::dvec3> path{{0, 0, 0}, {10, 0, 0}, {10, 0, 10}};
+    // 15 m: all of the first leg and half of the second.
+    EXPECT_EQ(pathPrefix(path, 15.0), (std::vector<glm::dvec3>{{0, 0, 0}, {10, 0, 0}, {10, 0, 5}}));
+    EXPECT_EQ(pathPrefix(path, 10.0), (std::vector<glm::dvec3>{{0, 0, 0}, {10, 0, 0}}));
+    EXPECT_EQ(pathPrefix(path, 100.0), path);  // shorter than asked: all of it
+}
+
+TEST(BenchScale, WritesCsvMarkdownAndPlots) {
+    const test::TempFolder folder("bench_scale");
+    const auto files = writeScaleReport(folder.path(), sample());
+    ASSERT_EQ(files.size(), 5u);
+    const test::CsvTable csv = test::readCsv(folder / "scale.csv");
+    ASSERT_EQ(csv.size(), 4u);
+    EXPECT_EQ(csv.column("mode"), (std::vector<std::string>{"full", "walls", "full", "walls"}));
+    EXPECT_EQ(csv[2].number("frame_ms_p50"), 80.0);
+    EXPECT_EQ(csv[3].number("triangles"), 8e6);
+    for (std::size_t i = 2; i < 5; ++i) {
+        const scenes::Image png = scenes::readImage(files[i]);
+        EXPECT_EQ(png.width, 640);
+        int blue = 0;  // series 0 (full) is blue: two 7x7 markers and the line between them
+        for (std::size_t p = 0; p < png.rgba.size(); p += 4)
+            blue += png.rgba[p] == 40 && png.rgba[p + 1] == 90 && png.rgba[p + 2] == 200;
+        EXPECT_GT(blue, 2 * 49);
+    }
+}
+
+}  // namespace
+}  // namespace cavewall::bench
