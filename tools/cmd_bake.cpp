@@ -130,7 +130,7 @@ int runBake(const std::vector<std::string>& words) {
         std::printf("bake: time: prepare %.2f, draw %.2f, read back %.2f, queue wait %.2f, MIP %.2f, encode+write %.2f, "
                     "hash %.2f, manifest %.2f s; %.0f triangles per texture; LOD error <= %.3g texels\n",
                     t.prepare, t.draw, t.read, t.queue, t.mips, t.encode, t.hash, t.manifest,
-                    t.trianglesDrawn / result.baked, t.maxLodErrorTexels);
+                    double(result.trianglesDrawn) / result.baked, result.maxLodErrorTexels);
     std::printf("%s\n", result.folder.string().c_str());
     return 0;
 }

@@ -23,8 +23,8 @@
 // size and hash. A missing, torn or replaced file is
 // re-baked (only that one). After a change, textures whose texture key is unchanged are taken
 // from other folders of the same cache (hard link, else copy, then re-checked) instead of being
-// rendered. While baking, the manifest is rewritten atomically at most about once a second
-// (and at the end), listing only finished files, so an interrupted bake keeps most of its
+// rendered. While baking, the manifest is rewritten atomically at most about once every 5
+// seconds (and at the end), listing only finished files, so an interrupted bake keeps most of its
 // progress. One bake per folder at a time; temporary files of a killed bake stay behind.
 
 #include "display/gl/context.h"
@@ -84,8 +84,6 @@ struct BakeTimes {
     double encode = 0.0;     // tiled, compressed TIFF encoding and writing (writer threads)
     double hash = 0.0;       // hashing written files (writer threads)
     double manifest = 0.0;   // writing manifest.json
-    double trianglesDrawn = 0.0;  // summed over rendered textures
-    double maxLodErrorTexels = 0.0;  // the largest level-of-detail error drawn, texels
 };
 
 struct BakeRequest {
@@ -115,6 +113,8 @@ struct BakeResult {
     std::uint64_t bytesWritten = 0; // of files baked or linked by this bake
     std::uint64_t totalBytes = 0;   // of all files in the manifest
     BakeTimes times;
+    std::uint64_t trianglesDrawn = 0;  // summed over the textures rendered by this bake
+    double maxLodErrorTexels = 0.0;    // the largest level-of-detail error drawn, texels
     std::vector<std::string> warnings;
 };
 
