@@ -1,5 +1,7 @@
 // Wall baking on the generated plant (headless llvmpipe): the time per texture (render, MIP
-// chain + tiled file) at several resolution caps, and a whole bake of the plant's plan.
+// chain + tiled file) at several resolution caps, levels of detail against full detail on a
+// sample of the walkthrough's textures (time, triangles, PSNR; file encoding at two zip
+// levels), and a whole bake of the plant's plan.
 //
 // The plant has CAVEWALL_BENCH_TRIANGLES drawn triangles (default 2000000, the default plant;
 // set it lower on slow machines). The whole bake uses the default plan (alpha 10°, 1017
@@ -7,16 +9,21 @@
 // fresh cache, with 2 writer threads. Run: build/bench/cavewall_bench_bake.
 #include "display/gl/context.h"
 #include "scenes/generate.h"
+#include "scenes/image_compare.h"
+#include "scenes/image_error.h"
 #include "scenes/loader.h"
 #include "walls/bake_key.h"
 #include "walls/gl/baker.h"
 #include "walls/texture_mips.h"
 #include "walls/gl/wall_renderer.h"
 #include "walls/visibility.h"
+#include "walls/wall_setup.h"
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
@@ -83,6 +90,84 @@ void BM_BakeTexture(benchmark::State& state) {
     state.counters["scene_tris"] = double(scene.triangleCount());
 }
 BENCHMARK(BM_BakeTexture)->Arg(256)->Arg(1024)->Unit(benchmark::kMillisecond)->Iterations(20);
+
+// Levels of detail in the bake (BakeSettings::lodTexels) against full detail, interleaved on
+// the same textures: a sample of CAVEWALL_BENCH_TEXTURES (default 48) textures spread evenly
+// over the plan of the bake the walkthrough uses (alpha 10°, min-zone 1 m, 10 texels per degree,
+// at most 512 texels), each rendered at full detail and at 0.5 texel, timed (draw until the GL
+// finished, and read back), and compared: PSNR of the pooled squared error over all sampled
+// textures (R, G, B as stored; scenes/image_error.h), the worst texture's PSNR and the largest
+// per-texel difference (levels 0-255, any channel). Also the file stage of each texture, MIP
+// chain and tiled TIFF at zip (level 6, the default) and zip:1, timed and sized.
+// CAVEWALL_BENCH_SCENE names a scene.json to use instead of the generated plant.
+void BM_BakeLodAgainstFullDetail(benchmark::State& state) {
+    context();
+    const char* named = std::getenv("CAVEWALL_BENCH_SCENE");
+    const std::filesystem::path path = named && *named ? std::filesystem::path(named) : plantScene();
+    scenes::SceneDescription d;
+    const scenes::Scene scene = scenes::loadSceneFile(path, &d);
+    walls::PlanOptions options;
+    options.alphaDeg = 10.0, options.minZoneSize = 1.0, options.pixelsPerDegree = 10.0;
+    const walls::WallSetup setup = walls::prepareWalls(scene, d, walls::planOptionsFor(options, walls::WallKind::Flat, 512));
+    const Clock::time_point built = Clock::now();
+    gl::WallTextureRenderer full(scene, 0.35f, 0.0);
+    const Clock::time_point fullMade = Clock::now();
+    gl::WallTextureRenderer lod(scene, 0.35f, 0.5);
+    const double lodBuildS = std::chrono::duration<double>(Clock::now() - fullMade).count() -
+                             std::chrono::duration<double>(fullMade - built).count();
+    const std::size_t count = std::min(envSize("CAVEWALL_BENCH_TEXTURES", 48), setup.plan.textures.size());
+    double fullDraw = 0, fullRead = 0, lodDraw = 0, lodRead = 0, fullTris = 0, lodTris = 0, maxErr = 0;
+    double mips = 0, zip6 = 0, zip1 = 0, bytes6 = 0, bytes1 = 0;
+    int maxDelta = 0;
+    double worstPsnr = INFINITY;
+    scenes::SquaredError pooled;
+    for (auto _ : state)
+        for (std::size_t k = 0; k < count; ++k) {
+            const walls::Texture& t = setup.plan.textures[k * setup.plan.textures.size() / count];
+            const int side = setup.plan.walls[t.wall].cells[0] == t.cell ? 0 : 1;
+            const display::ScreenQuad quad = walls::quadSeenFrom(setup.plan.walls[t.wall].quad, side);
+            const std::vector<int>& objects = setup.contents.at({t.wall, side}).baked;
+            const glm::ivec2 res = gl::bakeResolution(t.resolution, 512);
+            const scenes::Image a = full.render(quad, t.samplingPoint, res, objects);
+            fullDraw += full.lastTiming().drawMs, fullRead += full.lastTiming().readMs;
+            fullTris += double(full.lastStats().triangles);
+            const scenes::Image b = lod.render(quad, t.samplingPoint, res, objects);
+            lodDraw += lod.lastTiming().drawMs, lodRead += lod.lastTiming().readMs;
+            lodTris += double(lod.lastStats().triangles);
+            maxErr = std::max(maxErr, lod.lastLod().maxErrorPx);
+            const scenes::SquaredError e = scenes::squaredError(b, a);
+            pooled += e;
+            worstPsnr = std::min(worstPsnr, e.psnrDb());
+            maxDelta = std::max(maxDelta, scenes::compareImages(b, a).maxDelta);
+            const Clock::time_point m0 = Clock::now();
+            const std::vector<scenes::Image> levels = walls::premultipliedMipChain(b);
+            const Clock::time_point m1 = Clock::now();
+            walls::writeMipFile(benchFolder() / "zip6.tx", levels, {64, "zip"});
+            const Clock::time_point m2 = Clock::now();
+            walls::writeMipFile(benchFolder() / "zip1.tx", levels, {64, "zip:1"});
+            mips += ms(m1 - m0), zip6 += ms(m2 - m1), zip1 += ms(Clock::now() - m2);
+            bytes6 += double(std::filesystem::file_size(benchFolder() / "zip6.tx"));
+            bytes1 += double(std::filesystem::file_size(benchFolder() / "zip1.tx"));
+        }
+    const double n = double(state.iterations() * count);
+    state.counters["textures"] = double(count);
+    state.counters["full_draw_ms"] = fullDraw / n;
+    state.counters["lod_draw_ms"] = lodDraw / n;
+    state.counters["read_ms"] = (fullRead + lodRead) / (2 * n);
+    state.counters["full_tris"] = fullTris / n;
+    state.counters["lod_tris"] = lodTris / n;
+    state.counters["lod_build_s"] = lodBuildS;
+    state.counters["lod_err_texels_max"] = maxErr;
+    state.counters["psnr_pooled_db"] = pooled.psnrDb();
+    state.counters["psnr_worst_db"] = worstPsnr;
+    state.counters["max_delta"] = maxDelta;
+    state.counters["mip_ms"] = mips / n;
+    state.counters["zip6_ms"] = zip6 / n;
+    state.counters["zip1_ms"] = zip1 / n;
+    state.counters["zip6_kB"] = bytes6 / n / 1024.0;
+    state.counters["zip1_kB"] = bytes1 / n / 1024.0;
+}
+BENCHMARK(BM_BakeLodAgainstFullDetail)->Unit(benchmark::kSecond)->Iterations(1);
 
 // The whole plan into an empty cache, once; then the same bake again (cache hit, no work).
 void BM_BakeWholePlant(benchmark::State& state) {

@@ -63,4 +63,12 @@ FrameLod chooseLods(const RenderScene& scene, const std::vector<display::ScreenV
     return out;
 }
 
+FrameLod chooseFrustumLods(const RenderScene& scene, const display::OffAxisFrustum& frustum, glm::ivec2 pixels,
+                           const DrawFilter& filter, double tolerancePx) {
+    display::ScreenView view;
+    view.pass.viewport = {0, 0, pixels.x, pixels.y};
+    view.frustum = frustum;
+    return chooseLods(scene, {view}, glm::dmat4(1.0), filter, tolerancePx);
+}
+
 }  // namespace cavewall::render

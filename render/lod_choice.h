@@ -43,4 +43,11 @@ FrameLod chooseLods(const RenderScene& scene, const std::vector<display::ScreenV
                     std::size_t triangleBudget = 0,
                     double maxTolerancePx = std::numeric_limits<double>::infinity());
 
+// Levels of detail for one frustum drawn into `pixels` (a wall texture: screen = the wall quad,
+// eye = the sampling point, frame = the world, pixels = texels): chooseLods for that single view,
+// so every object `filter` selects and the frustum does not cull gets the coarsest level whose
+// sampled geometric error covers at most `tolerancePx` pixels of the image.
+FrameLod chooseFrustumLods(const RenderScene& scene, const display::OffAxisFrustum& frustum, glm::ivec2 pixels,
+                           const DrawFilter& filter, double tolerancePx);
+
 }  // namespace cavewall::render

@@ -16,6 +16,7 @@ namespace cavewall::tools {
 const char* const kBakeUsage =
     "usage: cavewall bake SCENE [--alpha DEG] [--jobs N] [--cache DIR] [--max-res N] [--min-zone M]\n"
     "                           [--blend M] [--ppd N] [--tile N] [--walls flat|depth]\n"
+    "                           [--lod-texels T] [--limit N]\n"
     "\n"
     "Bakes the textures of every virtual wall and portal of SCENE (a scene.json or a folder holding\n"
     "one) as planned by `cavewall plan` with the same options: each texture is the scene content\n"
@@ -32,11 +33,17 @@ const char* const kBakeUsage =
     "--max-res: largest texture side in texels (default 1024; the plan's density target is\n"
     "scaled down to fit). --tile: file tile size (default 64). --alpha, --min-zone, --blend, --ppd:\n"
     "as for `cavewall plan`.\n"
+    "--lod-texels: draw each object at the coarsest level of detail whose sampled geometric error\n"
+    "covers at most T texels of the texture seen from its sampling point (default 0.5; 0: full\n"
+    "detail; keys the cache).\n"
+    "--limit: render at most N of the textures that need it, every k-th of them (to time a bake on\n"
+    "a sample; the manifest then lists only those).\n"
     "--walls depth: also store per texel the depth behind the wall of the surface seen (32-bit\n"
     "float, lossless, <texture>.depth.tif beside each texture; walls/depth_wall.h), for depth walls\n"
     "reprojected to the eye; a separate bake folder (default flat: colour only).\n"
     "Progress goes to stderr (a bar with ETA on a terminal, plain lines otherwise); a summary and,\n"
-    "as the last line, the bake folder go to stdout.\n";
+    "as the last line, the bake folder go to stdout; before it, where the time went (seconds; the\n"
+    "writer threads' stages overlap rendering).\n";
 
 namespace {
 
@@ -90,7 +97,7 @@ void ProgressPrinter::operator()(const gl::BakeProgress& p) {
 
 int runBake(const std::vector<std::string>& words) {
     const Args args(words, {});
-    args.expectFlags({"alpha", "jobs", "cache", "max-res", "min-zone", "blend", "ppd", "tile", "walls"});
+    args.expectFlags({"alpha", "jobs", "cache", "max-res", "min-zone", "blend", "ppd", "tile", "walls", "lod-texels", "limit"});
     gl::BakeRequest request;
     request.plan.alphaDeg = args.number("alpha", request.plan.alphaDeg, 1e-6, 90.0);
     request.plan.minZoneSize = args.number("min-zone", request.plan.minZoneSize, 0.01, 1000.0);
@@ -101,6 +108,8 @@ int runBake(const std::vector<std::string>& words) {
     request.settings.maxResolution = static_cast<int>(args.integer("max-res", request.settings.maxResolution, 16, 16384));
     request.settings.tileSize = static_cast<int>(args.integer("tile", request.settings.tileSize, 16, 1024));
     request.settings.kind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
+    request.settings.lodTexels = args.number("lod-texels", request.settings.lodTexels, 0.0, 4.0);
+    request.limit = static_cast<int>(args.integer("limit", 0, 0, 1000000000));
     gl::validateBakeSettings(request.settings);
     request.scene = args.positional(0, "SCENE");
     if (args.positional().size() > 1)
@@ -116,6 +125,12 @@ int runBake(const std::vector<std::string>& words) {
     std::printf("bake: %d textures: %d baked, %d reused (%d from earlier bakes) in %s; wrote %.1f MB, folder holds %.1f MB\n",
                 total, result.baked, result.reused, result.linked, formatSeconds(result.seconds).c_str(),
                 megabytes(result.bytesWritten), megabytes(result.totalBytes));
+    const gl::BakeTimes& t = result.times;
+    if (result.baked > 0)
+        std::printf("bake: time: prepare %.2f, draw %.2f, read back %.2f, queue wait %.2f, MIP %.2f, encode+write %.2f, "
+                    "hash %.2f, manifest %.2f s; %.0f triangles per texture; LOD error <= %.3g texels\n",
+                    t.prepare, t.draw, t.read, t.queue, t.mips, t.encode, t.hash, t.manifest,
+                    double(result.trianglesDrawn) / result.baked, result.maxLodErrorTexels);
     std::printf("%s\n", result.folder.string().c_str());
     return 0;
 }

@@ -4,6 +4,7 @@
 
 #include "config/error.h"
 
+#include <chrono>
 #include <utility>
 
 namespace cavewall::walls {
@@ -46,6 +47,11 @@ std::vector<walls::BakedTexture> BakeWriter::takeDone(bool wait) {
     return std::exchange(_done, {});
 }
 
+BakeWriter::Times BakeWriter::times() const {
+    std::lock_guard lock(_mutex);
+    return _times;
+}
+
 int BakeWriter::pending() const {
     std::lock_guard lock(_mutex);
     return static_cast<int>(_queue.size()) + _busy;
@@ -64,22 +70,36 @@ void BakeWriter::worker() {
         }
         _changed.notify_all();  // a submit may wait for room
         std::exception_ptr error;
+        Times spent;
+        using Clock = std::chrono::steady_clock;
+        Clock::time_point mark = Clock::now();
+        auto lap = [&mark](double& into) {
+            const Clock::time_point now = Clock::now();
+            into += std::chrono::duration<double>(now - mark).count();
+            mark = now;
+        };
         try {
             const std::filesystem::path file = _folder / job.entry.file;
-            writeMipFile(file, premultipliedMipChain(job.image), _options);
+            const std::vector<scenes::Image> levels = premultipliedMipChain(job.image);
+            lap(spent.mips);
+            writeMipFile(file, levels, _options);
+            lap(spent.encode);
             std::error_code ec;
             job.entry.bytes = std::filesystem::file_size(file, ec);
             if (ec) throw Error(file.string() + ": cannot read the size of the written file (" + ec.message() + ")");
             // The time first: a change while hashing then shows as a changed time next start.
             walls::stampTexture(_folder, job.entry);
             job.entry.hash = walls::hashFile(file);
+            lap(spent.hash);
             if (job.depth) {
                 const std::filesystem::path depthFile = _folder / job.entry.depthFile;
                 writeDepthFile(depthFile, *job.depth);
+                lap(spent.encode);
                 job.entry.depthBytes = std::filesystem::file_size(depthFile, ec);
                 if (ec) throw Error(depthFile.string() + ": cannot read the size of the written file (" + ec.message() + ")");
                 job.entry.depthHash = walls::hashFile(depthFile);
                 job.entry.depthRange = depthRange(*job.depth);
+                lap(spent.hash);
             }
         } catch (...) {
             error = std::current_exception();
@@ -87,6 +107,9 @@ void BakeWriter::worker() {
         {
             std::lock_guard lock(_mutex);
             --_busy;
+            _times.mips += spent.mips;
+            _times.encode += spent.encode;
+            _times.hash += spent.hash;
             if (error && !_error) _error = error;
             if (!error) _done.push_back(std::move(job.entry));
         }

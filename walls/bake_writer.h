@@ -40,6 +40,14 @@ public:
     std::vector<walls::BakedTexture> takeDone(bool wait);
     int pending() const;
 
+    // Seconds the worker threads spent so far, summed over threads.
+    struct Times {
+        double mips = 0.0;     // premultipliedMipChain
+        double encode = 0.0;   // writeMipFile (and the depth file): encoding and writing
+        double hash = 0.0;     // hashing the written files
+    };
+    Times times() const;
+
 private:
     struct Job {
         walls::BakedTexture entry;
@@ -56,6 +64,7 @@ private:
     std::deque<Job> _queue;
     std::vector<walls::BakedTexture> _done;
     int _busy = 0;
+    Times _times;
     bool _stop = false;
     std::exception_ptr _error;
     std::vector<std::thread> _threads;

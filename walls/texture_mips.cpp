@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
 #include <cassert>
 #include <cerrno>
 #include <cmath>
@@ -85,10 +86,33 @@ std::uint8_t toByte(float v) {
     return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
 }
 
+std::uint8_t formulaByte(float v) { return toByte(linearToSrgb(std::clamp(v, 0.0f, 1.0f))); }
+
+// thresholds()[k]: the smallest float whose formula byte is at least k (k >= 1; [0] is 0),
+// bisected over the bit patterns of floats in [0, 1] (which order like the floats). The byte
+// rises with the value, so a value's byte is the largest k whose threshold it reaches.
+const std::array<float, 256>& thresholds() {
+    static const std::array<float, 256> table = [] {
+        std::array<float, 256> t{};
+        const auto bits = [](float f) { return std::bit_cast<std::uint32_t>(f); };
+        for (int k = 1; k < 256; ++k) {
+            std::uint32_t lo = bits(0.0f), hi = bits(1.0f);
+            while (lo < hi) {
+                const std::uint32_t mid = lo + (hi - lo) / 2;
+                if (formulaByte(std::bit_cast<float>(mid)) >= k) hi = mid;
+                else lo = mid + 1;
+            }
+            t[k] = std::bit_cast<float>(lo);
+        }
+        return t;
+    }();
+    return table;
+}
+
 scenes::Image encode(const FloatImage& f, const std::string& name) {
     scenes::Image image{name, f.width, f.height, std::vector<std::uint8_t>(f.rgba.size())};
     for (std::size_t i = 0; i < f.rgba.size(); i += 4) {
-        for (int c = 0; c < 3; ++c) image.rgba[i + c] = toByte(linearToSrgb(std::clamp(f.rgba[i + c], 0.0f, 1.0f)));
+        for (int c = 0; c < 3; ++c) image.rgba[i + c] = encodeSrgbByte(f.rgba[i + c]);
         image.rgba[i + 3] = toByte(f.rgba[i + 3]);
     }
     return image;
@@ -107,6 +131,15 @@ FloatImage premultiply(const scenes::Image& straight) {
 }
 
 }  // namespace
+
+std::uint8_t encodeSrgbByte(float linear) {
+    const std::array<float, 256>& t = thresholds();
+    if (!(linear > 0.0f)) return 0;  // also NaN
+    int k = 0;
+    for (int step = 128; step > 0; step /= 2)
+        if (t[k + step] <= linear) k += step;
+    return static_cast<std::uint8_t>(k);
+}
 
 std::vector<scenes::Image> premultipliedMipChain(const scenes::Image& straight) {
     assert(straight.width > 0 && straight.height > 0 &&

@@ -16,6 +16,7 @@
 
 #include "scenes/scene.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -25,6 +26,9 @@ namespace cavewall::walls {
 // sRGB transfer functions on [0, 1] (IEC 61966-2-1).
 float srgbToLinear(float encoded);
 float linearToSrgb(float linear);
+// The stored byte of a linear value: round(255 * linearToSrgb(clamp(linear, 0, 1))), exactly,
+// from a table of the 255 values where the byte steps up (no pow per texel); 0 for NaN.
+std::uint8_t encodeSrgbByte(float linear);
 
 // The full MIP chain of `straight`, an 8-bit RGBA image with straight (non-premultiplied)
 // alpha and sRGB-encoded colour, as produced by an sRGB render target: level 0 is the image

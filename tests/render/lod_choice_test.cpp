@@ -159,5 +159,58 @@ TEST(LodChoice, ObjectsNoViewDrawsStayAtLevelZeroAndCostNothing) {
     EXPECT_EQ(lod.triangles, rs.indexCount(0, lod.levels[0]) / 3);
 }
 
+// A wall texture's levels (chooseFrustumLods): the wall quad is the screen, the sampling point
+// the eye, the texture's texels the pixels. The display's screen (2 m wide, 1 m away, 256 px)
+// as a quad gives the same frustum as the display view, so the choice equals chooseLods's.
+TEST(LodChoice, AWallTexturesLevelsAreThoseOfItsFrustumAsAOneScreenView) {
+    const scenes::Scene scene = cylinderScene({0.1, -0.6, -3});
+    const RenderScene rs(scene, true);
+    const display::ScreenView view = viewsFrom({0, 0, 0}).at(0);
+    for (double tolerance : {0.25, 0.5, 1.0}) {
+        SCOPED_TRACE(tolerance);
+        const FrameLod wall = chooseFrustumLods(rs, view.frustum, {kPixels, kPixels}, {}, tolerance);
+        const FrameLod display = chooseLods(rs, {view}, glm::dmat4(1.0), {}, tolerance);
+        EXPECT_EQ(wall.levels, display.levels);
+        EXPECT_EQ(wall.maxErrorPx, display.maxErrorPx);
+        EXPECT_LE(wall.maxErrorPx, tolerance);
+    }
+}
+
+TEST(LodChoice, AWallTextureOfMoreTexelsDrawsFinerLevelsWithinHalfATexel) {
+    const scenes::Scene scene = cylinderScene({0.1, -0.6, -3});
+    const RenderScene rs(scene, true);
+    const display::OffAxisFrustum frustum =
+        display::offAxisFrustum({{-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}}, {0, 0, 0}, {0.05, INFINITY});
+    // The error in texels grows with the texel count: 64 texels across allow a coarser level
+    // than 1024 (16 times the texels per radian).
+    const FrameLod coarse = chooseFrustumLods(rs, frustum, {64, 64}, {}, 0.5);
+    const FrameLod fine = chooseFrustumLods(rs, frustum, {1024, 1024}, {}, 0.5);
+    EXPECT_GT(coarse.levels[0], fine.levels[0]);
+    EXPECT_LE(coarse.maxErrorPx, 0.5);
+    EXPECT_LE(fine.maxErrorPx, 0.5);
+    // The chosen level is the coarsest within half a texel: its error in texels is at most 0.5,
+    // the next level's (if any) more.
+    const scenes::MeshLod& lod = rs.lods()[0];
+    const double perUnit = pixelsPerUnit(rs.objects()[0].worldBounds, rs.modelStretch(0),
+                                         display::viewScreen(frustum, {64, 64}), frustum.viewFromFrame, 1.0);
+    const int level = coarse.levels[0];
+    EXPECT_LE(lod.levels[level].error * perUnit, 0.5);
+    if (level + 1 < static_cast<int>(lod.levels.size())) EXPECT_GT(lod.levels[level + 1].error * perUnit, 0.5);
+}
+
+TEST(LodChoice, AWallTextureLeavesObjectsOutsideItsFrustumAtLevelZero) {
+    scenes::Scene scene = cylinderScene({0.1, -0.6, -3});
+    scenes::addObject(scene, 0, glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 5)), "behind the sampling point");
+    scenes::addObject(scene, 0, glm::translate(glm::dmat4(1.0), glm::dvec3(40, 0, -3)), "beside the wall");
+    const RenderScene rs(scene, true);
+    const display::OffAxisFrustum frustum =
+        display::offAxisFrustum({{-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}}, {0, 0, 0}, {0.05, INFINITY});
+    const FrameLod lod = chooseFrustumLods(rs, frustum, {128, 128}, {}, 0.5);
+    EXPECT_GT(lod.levels[0], 0);
+    EXPECT_EQ(lod.levels[1], 0);
+    EXPECT_EQ(lod.levels[2], 0);
+    EXPECT_EQ(lod.triangles, rs.indexCount(0, lod.levels[0]) / 3);  // only the one in view counts
+}
+
 }  // namespace
 }  // namespace cavewall::render

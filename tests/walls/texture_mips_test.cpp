@@ -7,7 +7,10 @@
 #include <OpenImageIO/imageio.h>
 #include <gmock/gmock.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <limits>
 #include <cstdlib>
 #include <random>
 
@@ -29,6 +32,31 @@ glm::dvec3 unpremultiplied(const scenes::Image& i, int x, int y) {
     const glm::dvec4 t = texel(i, x, y);
     const double a = t.a / 255.0;
     return glm::dvec3(srgbToLinear(float(t.r / 255.0)), srgbToLinear(float(t.g / 255.0)), srgbToLinear(float(t.b / 255.0))) / a;
+}
+
+// The formula encodeSrgbByte replaces (texture_mips.h), evaluated directly.
+std::uint8_t formulaByte(float v) {
+    return static_cast<std::uint8_t>(std::lround(std::clamp(linearToSrgb(std::clamp(v, 0.0f, 1.0f)), 0.0f, 1.0f) * 255.0f));
+}
+
+TEST(TextureMips, TableEncodingIsTheFormulaExactly) {
+    // Around every step of the byte (where sRGB value (k - 0.5) / 255 decodes to, ± 4096 float
+    // steps, which covers any rounding of the step's position) and on an even sweep of
+    // [-0.01, 1.01] (clamping on both sides).
+    int checked = 0;
+    for (int k = 1; k < 256; ++k) {
+        const std::uint32_t at = std::bit_cast<std::uint32_t>(srgbToLinear((k - 0.5f) / 255.0f));
+        for (std::uint32_t b = at - 4096; b <= at + 4096; ++b, ++checked) {
+            const float v = std::bit_cast<float>(b);
+            ASSERT_EQ(encodeSrgbByte(v), formulaByte(v)) << "value " << v << " near step " << k;
+        }
+    }
+    for (int i = 0; i <= 1 << 20; ++i, ++checked) {
+        const float v = -0.01f + 1.02f * float(i) / float(1 << 20);
+        ASSERT_EQ(encodeSrgbByte(v), formulaByte(v)) << "value " << v;
+    }
+    EXPECT_GT(checked, 3000000);
+    EXPECT_EQ(encodeSrgbByte(std::numeric_limits<float>::quiet_NaN()), 0);
 }
 
 TEST(TextureMips, HalfTransparentEdgeDoesNotDarken) {

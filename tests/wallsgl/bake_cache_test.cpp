@@ -212,6 +212,39 @@ TEST_F(BakeCacheTest, ChangedAlphaGetsANewKey) {
     EXPECT_NE(bakeScene(request).key, second.key);
 }
 
+TEST_F(BakeCacheTest, LevelsOfDetailKeyTheBakeAndFullDetailKeepsItsKey) {
+    request.settings.lodTexels = 0.0;
+    const BakeResult full = bakeScene(request);
+    request.settings.lodTexels = 0.5;
+    const BakeResult lod = bakeScene(request);
+    // Other pixels, so another folder and other texture keys: the two are never mixed.
+    EXPECT_NE(lod.key, full.key);
+    ASSERT_EQ(lod.manifest.textures.size(), full.manifest.textures.size());
+    EXPECT_EQ(lod.linked, 0);
+    for (std::size_t i = 0; i < lod.manifest.textures.size(); ++i)
+        EXPECT_NE(lod.manifest.textures[i].file, full.manifest.textures[i].file);
+    request.settings.lodTexels = 1.0;  // the tolerance is part of the key
+    EXPECT_NE(bakeScene(request).key, lod.key);
+}
+
+TEST_F(BakeCacheTest, ALimitBakesASpreadSampleAndTheRestLater) {
+    request.limit = 3;
+    const BakeResult sample = bakeScene(request);
+    request.limit = 0;
+    const BakeResult rest = bakeScene(request);
+    const int total = static_cast<int>(rest.manifest.textures.size());
+    ASSERT_GT(total, 4);
+    EXPECT_EQ(sample.baked, 3);
+    EXPECT_EQ(rest.reused, 3);
+    EXPECT_EQ(rest.baked, total - 3);
+    // Every k-th of the pending textures (all of them here), k = total / 3: ids 0, total / 3 and
+    // 2 total / 3, rounded down; the manifest lists only what was baked.
+    ASSERT_EQ(sample.manifest.textures.size(), 3u);
+    EXPECT_EQ(sample.manifest.textures[0].id, 0);
+    EXPECT_EQ(sample.manifest.textures[1].id, total / 3);
+    EXPECT_EQ(sample.manifest.textures[2].id, 2 * total / 3);
+}
+
 TEST_F(BakeCacheTest, SceneChangeReBakesOnlyTheTexturesItTouches) {
     const BakeResult first = bakeScene(request);
     int front = 0;  // textures seen from the front cell: they show the back cell's boxes
@@ -253,6 +286,9 @@ TEST_F(BakeCacheTest, BadSettingsAndFoldersAreErrors) {
     request.settings.tileSize = 40;
     EXPECT_THAT([&] { bakeScene(request); },
                 ThrowsMessage<Error>(HasSubstr("tileSize: expected a multiple of 16 in [16, 1024], got 40")));
+    request.settings.tileSize = 64;
+    request.settings.lodTexels = 4.5;
+    EXPECT_THAT([&] { bakeScene(request); }, ThrowsMessage<Error>(HasSubstr("lodTexels: expected [0, 4], got 4.5")));
 }
 
 TEST(BakeResolution, PlanResolutionIsCappedKeepingTheAspect) {

@@ -64,6 +64,8 @@ TEST_F(BakeCli, BadArgumentsAreClearErrors) {
     } cases[] = {
         {"no scene", {"bake"}, "SCENE"},
         {"jobs out of range", {"bake", "x", "--jobs", "0"}, "--jobs"},
+        {"lod texels out of range", {"bake", "x", "--lod-texels", "5"}, "--lod-texels"},
+        {"negative limit", {"bake", "x", "--limit", "-1"}, "--limit"},
         {"unknown flag", {"bake", "x", "--colour", "red"}, "--colour"},
         {"missing scene", {"bake", "/nonexistent/scene.json", "--cache", "/tmp"}, "/nonexistent/scene.json"},
     };

@@ -23,8 +23,8 @@
 // size and hash. A missing, torn or replaced file is
 // re-baked (only that one). After a change, textures whose texture key is unchanged are taken
 // from other folders of the same cache (hard link, else copy, then re-checked) instead of being
-// rendered. While baking, the manifest is rewritten atomically at most about once a second
-// (and at the end), listing only finished files, so an interrupted bake keeps most of its
+// rendered. While baking, the manifest is rewritten atomically at most about once every 5
+// seconds (and at the end), listing only finished files, so an interrupted bake keeps most of its
 // progress. One bake per folder at a time; temporary files of a killed bake stay behind.
 
 #include "display/gl/context.h"
@@ -51,6 +51,11 @@ struct BakeSettings {
     // Flat: colour only. Depth (issue 16): colour plus a lossless float depth file per texture
     // (walls/depth_file.h), read back from the same render's depth buffer; keys the cache.
     walls::WallKind kind = walls::WallKind::Flat;
+    // Levels of detail (walls/gl/wall_renderer.h): each object is drawn at the coarsest level
+    // whose sampled geometric error covers at most this many texels of the texture, seen from
+    // its sampling point, [0, 4]; 0: full detail. Keys the cache when > 0 (a full-detail bake
+    // keeps its key).
+    double lodTexels = 0.5;
 };
 
 // Throws cavewall::Error naming the setting when it is out of range.
@@ -67,6 +72,20 @@ struct BakeProgress {
     std::uint64_t bytesWritten = 0; // of files written or linked by this bake
 };
 
+// Where a bake's time went, in seconds, summed over textures. Rendering runs on the calling
+// thread; MIP chains, files and hashes on the writer threads (jobs), overlapping it, so these are
+// thread-seconds and may add up to more than BakeResult::seconds.
+struct BakeTimes {
+    double prepare = 0.0;    // making the context, uploading the scene, building level chains
+    double draw = 0.0;       // level choice, culling, submission and GL work until finished
+    double read = 0.0;       // reading textures back from GL
+    double queue = 0.0;      // the render thread waiting for a writer thread to take a texture
+    double mips = 0.0;       // premultiplied MIP chains (writer threads)
+    double encode = 0.0;     // tiled, compressed TIFF encoding and writing (writer threads)
+    double hash = 0.0;       // hashing written files (writer threads)
+    double manifest = 0.0;   // writing manifest.json
+};
+
 struct BakeRequest {
     std::filesystem::path scene;    // scene.json, a folder holding one, or a bare glTF/GLB
     walls::PlanOptions plan;        // bakeScene only (bakeWalls takes the setup's plan)
@@ -76,6 +95,10 @@ struct BakeRequest {
     // only when something has to be rendered.
     Context* context = nullptr;
     std::function<void(const BakeProgress&)> progress;  // after each texture (may be empty)
+    // > 0: render at most this many of the textures that need rendering, spread evenly over
+    // them (every k-th, for timing a bake on a sample); the manifest lists only what was
+    // finished, as after an interrupted bake. 0: all.
+    int limit = 0;
 };
 
 struct BakeResult {
@@ -89,6 +112,9 @@ struct BakeResult {
     double seconds = 0.0;
     std::uint64_t bytesWritten = 0; // of files baked or linked by this bake
     std::uint64_t totalBytes = 0;   // of all files in the manifest
+    BakeTimes times;
+    std::uint64_t trianglesDrawn = 0;  // summed over the textures rendered by this bake
+    double maxLodErrorTexels = 0.0;    // the largest level-of-detail error drawn, texels
     std::vector<std::string> warnings;
 };
 

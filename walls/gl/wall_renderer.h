@@ -2,9 +2,17 @@
 // Renders one wall texture: the display renderer (display/gl/scene_renderer.h) drawing a
 // subset of the scene into an offscreen sRGB target through display::offAxisFrustum with the
 // eye at the sampling point and the wall quad as the screen. No projection code of its own.
+//
+// Levels of detail (lodTexels > 0): every mesh's level chain is built once (scenes/mesh_lod.h)
+// and each texture draws every object at the coarsest level whose sampled geometric error
+// covers at most lodTexels texels of that texture, seen from its sampling point
+// (render::chooseFrustumLods: the exact pixels-per-radian bound of the wall quad as the
+// screen, the same choice the walkthrough makes per frame). Objects outside the texture's
+// frustum are culled either way (render/render_list.h).
 
 #include "display/gl/scene_renderer.h"
 #include "display/off_axis.h"
+#include "render/lod_choice.h"
 #include "scenes/scene.h"
 #include "walls/depth_wall.h"
 #include "walls/gl/offscreen_target.h"
@@ -17,8 +25,9 @@ namespace cavewall::gl {
 class WallTextureRenderer {
 public:
     // Uploads `scene`; needs a current GL 4.5 context, in which every later call is made.
-    // `ambient` as gl::RenderSettings::ambient.
-    WallTextureRenderer(const scenes::Scene& scene, float ambient);
+    // `ambient` as gl::RenderSettings::ambient; `lodTexels` > 0: draw at levels of detail
+    // whose error covers at most that many texels (see above); 0: full detail.
+    WallTextureRenderer(const scenes::Scene& scene, float ambient, double lodTexels = 0.0);
 
     // Draws `objects` (Scene::objects indices; structure is skipped even when listed) seen from
     // `eye` (world) through `quad` (world; its front side faces the eye) at `resolution` texels
@@ -35,12 +44,27 @@ public:
                          const std::vector<int>& objects, walls::DepthImage& depth);
 
     const gl::ViewStats& lastStats() const { return _stats; }
+    // The levels the last render() drew (all 0, maxErrorPx 0 at full detail).
+    const render::FrameLod& lastLod() const { return _lod; }
+
+    // Wall-clock milliseconds of the last render() on the calling thread.
+    struct Timing {
+        double drawMs = 0.0;   // level choice, culling, submission and the GL work until finished
+        double readMs = 0.0;   // reading the colour (and depth) back, rows flipped
+    };
+    const Timing& lastTiming() const { return _timing; }
 
 private:
+    scenes::Image draw(const display::ScreenQuad& quad, glm::dvec3 eye, glm::ivec2 resolution,
+                       const std::vector<int>& objects);
+
+    double _lodTexels = 0.0;
     gl::SceneRenderer _renderer;
     std::unique_ptr<OffscreenTarget> _target;  // reallocated when the resolution changes
     gl::ViewStats _stats;
     display::OffAxisFrustum _lastFrustum;
+    render::FrameLod _lod;
+    Timing _timing;
 };
 
 }  // namespace cavewall::gl
