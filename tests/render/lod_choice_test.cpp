@@ -195,7 +195,9 @@ TEST(LodChoice, AWallTextureOfMoreTexelsDrawsFinerLevelsWithinHalfATexel) {
                                          display::viewScreen(frustum, {64, 64}), frustum.viewFromFrame, 1.0);
     const int level = coarse.levels[0];
     EXPECT_LE(lod.levels[level].error * perUnit, 0.5);
-    if (level + 1 < static_cast<int>(lod.levels.size())) EXPECT_GT(lod.levels[level + 1].error * perUnit, 0.5);
+    if (level + 1 < static_cast<int>(lod.levels.size())) {
+        EXPECT_GT(lod.levels[level + 1].error * perUnit, 0.5);
+    }
 }
 
 TEST(LodChoice, AWallTextureLeavesObjectsOutsideItsFrustumAtLevelZero) {
