@@ -41,9 +41,11 @@ scenes::Scene hall() {
 }
 
 // The description of a bare model file (validation wants the file to exist; the scene itself
-// comes from hall()).
+// comes from hall()). One folder per test: ctest runs the tests in parallel processes, and a
+// TempFolder empties its folder when it is made.
 scenes::SceneDescription bare() {
-    static const test::TempFolder folder("auto_walls");
+    static const test::TempFolder folder(std::string("auto_walls_") +
+                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
     test::writeFile(folder / "hall.glb", "glTF");
     scenes::SceneDescription d;
     d.name = "hall";
