@@ -227,6 +227,7 @@ RunSummary runSession(const RunOptions& o) {
     }
     if (output) output->close();
     if (baker) {
+        baker->stop();  // the bake in progress finishes and is counted
         const gl::BackgroundBakeStats b = baker->stats();
         summary.texturesMissingAtStart = b.missingAtStart, summary.texturesBaked = b.baked;
         summary.texturesStillMissing = b.missing, summary.cacheEvictions = b.evictions, summary.cacheMB = b.cacheMB;

@@ -24,7 +24,10 @@ BackgroundBaker::BackgroundBaker(const scenes::Scene& scene, const scenes::Scene
     _thread = std::thread([this] { run(); });
 }
 
-BackgroundBaker::~BackgroundBaker() {
+BackgroundBaker::~BackgroundBaker() { stop(); }
+
+void BackgroundBaker::stop() {
+    if (!_thread.joinable()) return;
     {
         std::lock_guard lock(_mutex);
         _stop = true;

@@ -71,8 +71,10 @@ public:
     // cavewall::Error as gl::TextureBaker does.
     BackgroundBaker(const scenes::Scene& scene, const scenes::SceneDescription& description,
                     const walls::WallSetup& walls, BakeRequest request, BackgroundBakerOptions options = {});
-    // Stops after the texture being baked, writes the manifest and joins the thread.
+    // Stops after the texture being baked, writes the manifest and joins the thread (stop()).
     ~BackgroundBaker();
+    // As the destructor, so that stats() then counts every bake the cache holds. Idempotent.
+    void stop();
     BackgroundBaker(const BackgroundBaker&) = delete;
     BackgroundBaker& operator=(const BackgroundBaker&) = delete;
 
