@@ -79,6 +79,7 @@ struct RunOptions {
     // (walls/gl/background_baker.h); flat walls, without --sync-paging and --cluster.
     bool bakeOnDemand = false;
     double cacheBudgetMB = 0.0;                 // --cache-budget: disk MB of the scene's bake folder, 0 none
+    int bakeNice = 10;                          // --bake-nice: the baker thread's nice value, [0, 19]
     long bakeInterleave = 0;                    // --bake-interleave N: pause the baker every other N frames, 0 never
     double geometryBudgetMB = 0.0;              // --geometry-budget: page geometry by cell, MB; 0 off
     double lodPixels = 0.0;                     // --lod: level-of-detail tolerance in pixels, 0 off

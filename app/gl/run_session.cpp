@@ -52,6 +52,7 @@ walls::WallSetup prepareWallsOnDemand(const RunOptions& o, const scenes::Scene& 
     walls::WallSetup setup =
         walls::prepareWalls(scene, d, walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution));
     gl::BackgroundBakerOptions options;
+    options.niceness = o.bakeNice;
     if (o.cacheBudgetMB > 0.0) options.cacheBudgetBytes = walls::cacheBudgetBytes(o.cacheBudgetMB, "--cache-budget");
     baker = std::make_unique<gl::BackgroundBaker>(scene, d, setup, bakeRequest(o, nullptr), options);
     setup.folder = baker->folder();

@@ -1,5 +1,9 @@
 #include "walls/gl/background_baker.h"
 
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
 #include <utility>
 
 namespace cavewall::gl {
@@ -81,6 +85,8 @@ bool BackgroundBaker::hasWork() const {
 }
 
 void BackgroundBaker::run() {
+    // Best effort: a failure leaves the thread at the process's priority.
+    setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), _options.niceness);
     std::unique_lock lock(_mutex);
     for (;;) {
         _wake.wait(lock, [&] { return _stop || (_wanted && !_paused && hasWork()); });

@@ -42,6 +42,9 @@ namespace cavewall::gl {
 
 struct BackgroundBakerOptions {
     std::uint64_t cacheBudgetBytes = 0;        // 0: no disk budget (walls::cacheBudgetBytes)
+    // Nice value of the baker's thread (Linux: per thread), so drawing wins the CPU when both
+    // want it; llvmpipe's rasteriser threads are shared and not affected. [0, 19].
+    int niceness = 10;
     // Called on the baker's thread before each texture is rendered; tests hold the baker here
     // (a latch), so that what a frame sees does not depend on timing. Empty: none.
     std::function<void(int id)> beforeBake;
