@@ -91,6 +91,7 @@ struct RunOptions {
     bool clusters = false;
     int clusterDivisions = 8;                   // --cluster-divisions N: finest grid N x max(1, N/4) x N
     int clusterResolution = 64;                 // --cluster-res: face texture's longer side, texels
+    int clusterFadeFrames = 8;                  // --cluster-fade N: frames a switch cross-fades over
     std::filesystem::path out;                  // output folder (created)
     bool verbose = true;                        // progress and summary on stdout
     bool cluster = false;                       // --cluster: one process per screen group on MPI

@@ -50,13 +50,15 @@ struct ClusterModel {
 struct ClusterBoxDraw {
     int node = -1;
     ClusterRep rep = ClusterRep::Textured;       // Textured or Average
+    float weight = 1.0f;                         // (0, 1]: < 1 while cross-fading (cluster_fades.h)
 };
 
 struct ClusterFramePlan {
     std::vector<int> objects;                    // leaves drawn: object indices, ascending
     std::vector<ClusterBoxDraw> boxes;           // back to front from the eye
-    int textured = 0, average = 0;               // boxes of each kind
-    double predictedMs = 0.0;                    // the selection's cost
+    int textured = 0, average = 0;               // boxes of each kind the selection drew
+    int fades = 0, ghostObjects = 0;             // cross-fades under way, objects they kept
+    double predictedMs = 0.0;                    // the selection's cost, and the fades' extra
     double budgetMs = 0.0;
 };
 

@@ -4,6 +4,7 @@
 #include "config/error.h"
 #include "scenes/load_limits.h"
 #include "scenes/mesh_optimize.h"
+#include "scenes/mesh_split.h"
 #include "scenes/region.h"
 #include "scenes/scene_description_io.h"
 
@@ -78,7 +79,12 @@ Scene loadScene(const SceneDescription& description) {
     scene.name = description.name;
     for (const ModelFile& m : description.models) {
         const std::filesystem::path file = m.file.is_absolute() ? m.file : description.folder / m.file;
+        const std::size_t first = scene.objects.size();
         merge(scene, loadGltf(file), fileTransform(m), m);
+        if (m.splitMetres > 0.0 && splitLargeObjects(scene, first, scene.objects.size(), m.splitMetres).objectsCut > 0)
+            for (std::size_t i = first; i < scene.objects.size(); ++i)  // patterns may name a chunk
+                for (const std::string& p : m.structureNodes)
+                    if (matchesPattern(scene.objects[i].name, p)) scene.objects[i].role = Role::Structure;
     }
     prepareForDrawing(scene);
     for (Object& o : scene.objects) o.cell = findCell(description.cells, o.worldBounds.centre());

@@ -27,6 +27,7 @@ struct ModelFile {
     UpAxis up = UpAxis::Y;                 // Z-up files are rotated to Y-up
     bool structure = false;                // every object of this file is structure
     std::vector<std::string> structureNodes;  // node-name patterns ('*' wildcard) that are structure
+    double splitMetres = 0.0;              // > 0: objects wider cut into chunks (scenes/mesh_split.h)
 
     bool operator==(const ModelFile&) const = default;
 };

@@ -10,7 +10,10 @@
 //     "matrix": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]],   optional placement, rows as written
 //     "position": [x,y,z], "rotation": {"yawDeg": 90}, "scale": 1,  or these instead of "matrix"
 //     "structure": false,                     optional: every object of the file is structure
-//     "structureNodes": ["Floor*", "Wall*"]   optional node-name patterns ('*' = any characters)
+//     "structureNodes": ["Floor*", "Wall*"],  optional node-name patterns ('*' = any characters)
+//     "splitMetres": 4                        optional: cut content objects wider than this (x or
+//                                             z, at least 1024 triangles) into chunks of about
+//                                             this size, one object each (scenes/mesh_split.h)
 //   }],
 //   "viewer": {"eyeHeight": 1.7, "headHeightRange": [1.2, 2.0]},   optional, metres
 //   "cells": [{"name": "A", "floorY": 0, "region": [[x,z], ...]}],  convex floor polygons (x, z);
@@ -41,7 +44,7 @@ using config::JsonNode;
 
 ModelFile parseModel(const JsonNode& n) {
     n.expectKeys({"file", "metresPerUnit", "units", "up", "matrix", "position", "rotation", "scale", "structure",
-                  "structureNodes"});
+                  "structureNodes", "splitMetres"});
     ModelFile m;
     m.file = n.at("file").string();
     if (m.file.empty()) n.at("file").fail("expected a file name, got an empty string");
@@ -66,6 +69,7 @@ ModelFile parseModel(const JsonNode& n) {
     if (auto v = n.find("structure")) m.structure = v->boolean();
     if (auto v = n.find("structureNodes"))
         for (const JsonNode& p : v->items()) m.structureNodes.push_back(p.string());
+    if (auto v = n.find("splitMetres")) m.splitMetres = v->number(0.1, 1e6);
     return m;
 }
 
@@ -194,6 +198,7 @@ nlohmann::json modelJson(const ModelFile& m) {
     }
     if (m.structure) j["structure"] = true;
     if (!m.structureNodes.empty()) j["structureNodes"] = m.structureNodes;
+    if (m.splitMetres > 0.0) j["splitMetres"] = m.splitMetres;
     return j;
 }
 

@@ -19,7 +19,7 @@ const char* const kRunUsage =
     "                    [--bake-on-demand [--cache-budget MB] [--bake-nice N] [--bake-interleave N]]\n"
     "                    [--lod PX [--triangle-budget N|--frame-budget-ms T] [--lod-max PX]]\n"
     "                    [--cluster [--cluster-timeout S]]\n"
-    "                    [--clusters [--cluster-divisions N] [--cluster-res N]]\n"
+    "                    [--clusters [--cluster-divisions N] [--cluster-res N] [--cluster-fade N]]\n"
     "\n"
     "Walks through scene S (a scene.json, a folder holding one, or a bare glTF/GLB file) on the\n"
     "display D (a file or a preset, default cave4) for N frames at a fixed step of 1/60 s. The head\n"
@@ -88,7 +88,10 @@ const char* const kRunUsage =
     "frame draws the selection under a budget of predicted milliseconds (--frame-budget-ms's\n"
     "controller, else 16.7 ms), objects as geometry (with --lod at their level of detail) and\n"
     "clusters as boxes (frames.csv: cluster_objects, cluster_textured, cluster_average,\n"
-    "cluster_predicted_ms, cluster_budget_ms).\n";
+    "cluster_predicted_ms, cluster_budget_ms, cluster_fades). A switch between a cluster's box and\n"
+    "its children, or between its two boxes, is cross-faded over --cluster-fade frames (default 8;\n"
+    "0 or 1: none): the box drawn over what it replaces, its weight ramping; both are drawn (and\n"
+    "costed) meanwhile.\n";
 
 namespace {
 
@@ -151,8 +154,8 @@ int runRun(const std::vector<std::string>& words) {
     args.expectFlags({"scene", "display", "tracker", "frames", "nav", "pace", "route", "headless", "window", "transition",
                       "no-walls", "alpha", "min-zone", "ppd", "save-frames", "record", "cache", "budget", "geometry-budget", "max-res",
                       "sync-paging", "out", "cluster", "cluster-timeout", "lod", "triangle-budget", "frame-budget-ms", "lod-max",
-                      "walls", "clusters", "cluster-divisions", "cluster-res", "bake-on-demand", "cache-budget",
-                      "bake-interleave", "bake-nice"});
+                      "walls", "clusters", "cluster-divisions", "cluster-res", "cluster-fade", "bake-on-demand",
+                      "cache-budget", "bake-interleave", "bake-nice"});
     if (args.has("headless") && args.has("window")) throw Error("--headless and --window: expected one of them, got both");
     app::RunOptions o;
     o.scene = args.require("scene");
@@ -190,6 +193,7 @@ int runRun(const std::vector<std::string>& words) {
     o.clusters = args.has("clusters");
     o.clusterDivisions = static_cast<int>(args.integer("cluster-divisions", o.clusterDivisions, 1, 1024));
     o.clusterResolution = static_cast<int>(args.integer("cluster-res", o.clusterResolution, 4, 2048));
+    o.clusterFadeFrames = static_cast<int>(args.integer("cluster-fade", o.clusterFadeFrames, 0, 600));
     app::validate(o);
     o.cluster = args.has("cluster");
     o.clusterTimeout = args.number("cluster-timeout", o.clusterTimeout, 0.1, 3600.0);

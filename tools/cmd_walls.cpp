@@ -16,7 +16,7 @@ namespace cavewall::tools {
 const char* const kWallsUsage =
     "usage: cavewall walls MODEL --out SCENE_JSON [--texture-budget MB] [--alpha DEG] [--max-res N]\n"
     "                      [--ppd N] [--min-cell M] [--max-cells N] [--ms-per-mtri MS]\n"
-    "                      [--ms-per-wall MS] [--png FILE]\n"
+    "                      [--ms-per-wall MS] [--split M] [--rooms] [--png FILE]\n"
     "\n"
     "Proposes cells and virtual walls for MODEL (a glTF/GLB nobody prepared, or a scene.json or\n"
     "its folder, whose cells and walls are replaced): finds structure (large planes, or the\n"
@@ -29,12 +29,22 @@ const char* const kWallsUsage =
     "--ms-per-wall per wall side the cell shows (default 5), among those whose textures fit\n"
     "--texture-budget MiB (default 4096; RGBA8 + MIP chain). Writes a valid scene.json (--out;\n"
     "model paths relative to its folder) and a top-view diagram of the proposal's zones\n"
-    "(--png). Prints every candidate. See walls/auto_walls.h for the rules.\n";
+    "(--png). Prints every candidate. See walls/auto_walls.h for the rules.\n"
+    "A model exported as a few huge meshes (a game level, a merged CAD export) has nothing a\n"
+    "cell could leave out: when content objects wider than twice --min-cell (with at least 1024\n"
+    "triangles each) hold a quarter of the content triangles or more, content objects are first\n"
+    "cut into chunks of --split metres (default half of --min-cell; 0: no cutting), and the\n"
+    "proposal's models get \"splitMetres\" so that `run` and `bake` cut them the same way\n"
+    "(scenes/mesh_split.h). A model that already has \"splitMetres\" keeps it.\n"
+    "A building with real walls (thin vertical structure pieces) gets one more candidate, the\n"
+    "rooms: cells cut along the lines of real walls, each doorway a portal (as high as its lintel)\n"
+    "and every piece a real wall; --rooms chooses it whatever the cost model says (the model\n"
+    "does not count what real walls hide).\n";
 
 int runWalls(const std::vector<std::string>& words) {
-    const Args args(words, {});
+    const Args args(words, {"rooms"});
     args.expectFlags({"out", "texture-budget", "alpha", "max-res", "ppd", "min-cell", "max-cells", "ms-per-mtri",
-                      "ms-per-wall", "png"});
+                      "ms-per-wall", "split", "rooms", "png"});
     walls::AutoWallsOptions options;
     options.plan.alphaDeg = args.number("alpha", options.plan.alphaDeg, 1e-6, 90.0);
     options.plan.pixelsPerDegree = args.number("ppd", options.plan.pixelsPerDegree, 0.01, 1000.0);
@@ -44,14 +54,43 @@ int runWalls(const std::vector<std::string>& words) {
     options.maxCellsPerAxis = static_cast<int>(args.integer("max-cells", options.maxCellsPerAxis, 1, 26));
     options.msPerMillionTriangles = args.number("ms-per-mtri", options.msPerMillionTriangles, 0.0, 1e9);
     options.msPerWallSide = args.number("ms-per-wall", options.msPerWallSide, 0.0, 1e9);
+    options.preferRooms = args.has("rooms");
     walls::validateAutoWallsOptions(options);
     const std::string& path = args.positional(0, "MODEL");
     if (args.positional().size() > 1)
         throw Error("walls: expected one MODEL, got " + std::to_string(args.positional().size()) + " words");
     const std::filesystem::path out = args.require("out");
 
+    const double split = args.number("split", options.minCellSize / 2.0, 0.0, 1e6);
+    if (split > 0.0 && split < 0.1) throw Error("--split: expected 0 (no cutting) or at least 0.1 metres, got " + std::to_string(split));
+
     scenes::SceneDescription base;
-    const scenes::Scene scene = scenes::loadSceneFile(path, &base);
+    scenes::Scene scene = scenes::loadSceneFile(path, &base);
+    if (split > 0.0) {
+        // When content objects wider than two cells hold a quarter of the content triangles or
+        // more, cells cannot leave much out: the models get cut and the scene is loaded again.
+        int widest = 0;
+        double wide = 0.0, all = 0.0;
+        for (const scenes::Object& o : scene.objects) {
+            if (o.role != scenes::Role::Content) continue;
+            const glm::dvec3 size = o.worldBounds.size();
+            const auto triangles = static_cast<double>(scene.meshes[o.mesh].triangleCount());
+            all += triangles;
+            if (std::max(size.x, size.z) > 2.0 * options.minCellSize && triangles >= 1024) ++widest, wide += triangles;
+        }
+        if (widest > 0 && wide >= 0.25 * all) {
+            int models = 0;
+            for (scenes::ModelFile& m : base.models)
+                if (m.splitMetres <= 0.0) m.splitMetres = split, ++models;
+            if (models > 0) {
+                const std::size_t before = scene.objects.size();
+                scene = scenes::loadScene(base);
+                std::printf("split: %d content object(s) wider than %.1f m hold %.0f %% of the content triangles; "
+                            "models cut into chunks of %.2f m: %zu objects -> %zu (\"splitMetres\" in the proposal)\n",
+                            widest, 2.0 * options.minCellSize, 100.0 * wide / all, split, before, scene.objects.size());
+            }
+        }
+    }
     for (const std::string& w : scene.warnings) std::cerr << "cavewall: warning: " << w << "\n";
     std::vector<std::string> warnings;
     walls::AutoWallsResult result = walls::proposeWalls(scene, base, options, &warnings);
@@ -70,17 +109,24 @@ int runWalls(const std::vector<std::string>& words) {
                 "texture MiB", "budget");
     for (std::size_t i = 0; i < result.candidates.size(); ++i) {
         const walls::AutoWallsCandidate& c = result.candidates[i];
-        std::printf("%2dx%-4d %6d %12.1f %16.0f %9d %12.1f %7s%s\n", c.nx, c.nz, c.nx * c.nz, c.expectedMs,
+        const std::string grid = c.rooms ? "rooms" : std::to_string(c.nx) + "x" + std::to_string(c.nz);
+        const std::string rooms = c.rooms ? "  (" + std::to_string(c.nx) + " x " + std::to_string(c.nz) +
+                                                " along real walls: " + std::to_string(c.portals) + " portals, " +
+                                                std::to_string(c.virtualWalls) + " virtual walls)"
+                                          : "";
+        std::printf("%-7s %6d %12.1f %16.0f %9d %12.1f %7s%s%s\n", grid.c_str(), c.nx * c.nz, c.expectedMs,
                     c.meanCellTriangles, c.textures, c.textureMB, c.withinBudget ? "fits" : "over",
-                    static_cast<int>(i) == result.chosen ? "  <- chosen" : "");
+                    static_cast<int>(i) == result.chosen ? "  <- chosen" : "", rooms.c_str());
     }
     if (const auto& g = result.given)
         std::printf("%-7s %6zu %12.1f %16.0f %9d %12.1f %7s  (the input's own cells and walls)\n", "given",
                     base.cells.size(), g->expectedMs, g->meanCellTriangles, g->textures, g->textureMB,
                     g->withinBudget ? "fits" : "over");
     scenes::writeBytesAtomically(out, scenes::writeSceneDescription(result.description));
+    std::size_t portals = 0;
+    for (const scenes::VirtualWall& w : result.description.walls) portals += w.kind == scenes::WallKind::Portal;
     std::cout << "wrote " << out.string() << " (" << result.description.cells.size() << " cells, "
-              << result.description.walls.size() << " virtual walls)\n";
+              << result.description.walls.size() - portals << " virtual walls, " << portals << " portals)\n";
     if (auto png = args.get("png")) {
         const walls::Plan plan = walls::planZones(result.description, options.plan);
         scenes::writeImage(*png, walls::planDiagram(plan, result.description, &scene, 200));

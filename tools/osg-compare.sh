@@ -3,6 +3,7 @@
 # (osgviewer) on the same generated box hall, same view and resolution, interleaved rounds.
 #
 #   tools/osg-compare.sh [--cavewall EXE] [--out DIR] [--rounds N] [--frames N] [--sizes "T1 T2 ..."]
+#                        [--tuned-osg]
 #
 # Installs nothing (tools/install-deps.sh installs openscenegraph and xvfb). Per size (triangles,
 # default "100000 1000000"): `cavewall generate boxes` once (glb + OBJ), `osgconv` once (OBJ ->
@@ -20,6 +21,9 @@
 #  - cavewall draw-bench: the same view (osgviewer's home for the model's bounding box),
 #    headless (EGL), --frames timed frames after 5 warm-up frames, median wall and CPU ms with
 #    back faces culled and with culling off (from its CSV, columns read by name).
+# --tuned-osg gives osgviewer the heap setting cavewall sets for itself (tools/main.cpp: mallopt
+# M_TRIM_THRESHOLD 1 GiB, M_MMAP_THRESHOLD 32 MiB), through GLIBC_TUNABLES, so that neither side
+# pays for glibc returning llvmpipe's freed buffers to the kernel and faulting them back in.
 # Prints, per size, the median over rounds of each figure as Markdown tables (also written to
 # DIR/osg-compare.md) and every round's figures to DIR/rounds.csv. Default DIR: osg-compare-out.
 set -eu
@@ -30,6 +34,7 @@ ROUNDS=5
 FRAMES=30
 SIZES="100000 1000000"
 SHORT=5
+OSG_ENV=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --cavewall) CAVEWALL=$2; shift 2 ;;
@@ -37,6 +42,7 @@ while [ $# -gt 0 ]; do
     --rounds) ROUNDS=$2; shift 2 ;;
     --frames) FRAMES=$2; shift 2 ;;
     --sizes) SIZES=$2; shift 2 ;;
+    --tuned-osg) OSG_ENV="GLIBC_TUNABLES=glibc.malloc.trim_threshold=1073741824:glibc.malloc.mmap_threshold=33554432"; shift ;;
     -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
     *) echo "osg-compare: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
@@ -81,7 +87,7 @@ now_ns() { date +%s%N; }
 osg_run_ms() {
   start=$(now_ns)
   cpu=$( (DISPLAY="$XDISPLAY" vblank_mode=0 OSG_RUN_FRAME_COUNT="$2" OSG_NOTIFY_LEVEL=FATAL \
-            osgviewer --window 0 0 1024 1024 "$1" >/dev/null 2>&1; times) |
+            env $OSG_ENV osgviewer --window 0 0 1024 1024 "$1" >/dev/null 2>&1; times) |
          awk 'NR == 2 { split($1, u, /[ms]/); split($2, k, /[ms]/); printf "%.3f", (u[1] * 60 + u[2] + k[1] * 60 + k[2]) * 1e3 }')
   end=$(now_ns)
   echo "$start $end $cpu" | awk '{ printf "%.3f %.3f", ($2 - $1) / 1e6, $3 }'
@@ -138,4 +144,5 @@ table() {  # $1: title word, $2..$4: columns of osgviewer, cavewall culled, cave
   echo "Per frame, medians of $ROUNDS interleaved rounds, 1024 x 1024, $FRAMES frames each; wall clock"
   echo "(first table) and process CPU time of all threads (second; steady when other processes share"
   echo "the cores); $(grep -m1 GL_RENDERER "$OUT/boxes-$(echo $SIZES | awk '{print $1}')/draw-bench.txt")."
+  if [ -n "$OSG_ENV" ]; then echo "osgviewer ran with $OSG_ENV (--tuned-osg)."; else echo "osgviewer ran stock."; fi
 } | tee "$OUT/osg-compare.md"

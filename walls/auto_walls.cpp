@@ -89,6 +89,108 @@ struct Grid {
     std::vector<double> xs, zs;  // cut positions, first and last are the floor's edges
 };
 
+// A piece of real wall: a thin vertical structure box, as the plane through its middle.
+struct WallPiece {
+    int axis = 0;                // its normal: 0 (x) or 2 (z)
+    double at = 0.0;             // its plane's position along the normal
+    double from = 0.0, to = 0.0; // its extent along the other horizontal axis
+    double bottom = 0.0, top = 0.0;
+};
+
+// Gaps of at least `minGap` in [from, to] not covered by `spans`.
+std::vector<std::pair<double, double>> gapsIn(double from, double to, std::vector<std::pair<double, double>> spans,
+                                              double minGap) {
+    std::sort(spans.begin(), spans.end());
+    std::vector<std::pair<double, double>> gaps;
+    double x = from;
+    for (const auto& [a, b] : spans) {
+        if (b <= x) continue;
+        if (a >= to) break;
+        if (a - x >= minGap) gaps.push_back({x, std::min(a, to)});
+        x = std::max(x, b);
+    }
+    if (to - x >= minGap) gaps.push_back({x, to});
+    return gaps;
+}
+
+// Rooms: the grid's boundaries that lie on a line of real wall pieces become portals where
+// the pieces reaching the floor leave a gap (a doorway, as high as the lowest piece above the
+// gap, else the ceiling), nothing where they close it, and stay virtual walls where no piece
+// lies; every piece becomes a real wall (an occluder for the planner's visibility).
+void makeRooms(scenes::SceneDescription& d, const std::vector<WallPiece>& pieces, double floorY, double ceilingY) {
+    constexpr double kOnLine = 0.05, kMinDoor = 0.3, kFloorSlack = 0.1;
+    std::vector<scenes::VirtualWall> walls;
+    for (const scenes::VirtualWall& w : d.walls) {
+        const int axis = std::abs(w.lowerLeft.x - w.lowerRight.x) < 1e-9 ? 0 : 2;  // the boundary's normal
+        const int along = axis == 0 ? 2 : 0;
+        const double at = w.lowerLeft[axis];
+        const double from = std::min(w.lowerLeft[along], w.lowerRight[along]);
+        const double to = std::max(w.lowerLeft[along], w.lowerRight[along]);
+        std::vector<std::pair<double, double>> full;
+        std::vector<const WallPiece*> onLine;
+        for (const WallPiece& p : pieces) {
+            if (p.axis != axis || std::abs(p.at - at) > kOnLine || overlap1d(p.from, p.to, from, to) <= 0.0) continue;
+            onLine.push_back(&p);
+            if (p.bottom <= floorY + kFloorSlack) full.push_back({p.from, p.to});
+        }
+        if (onLine.empty()) {
+            walls.push_back(w);  // open floor: a virtual wall
+            continue;
+        }
+        const glm::dvec3 frontSide = w.lowerLeft + glm::cross(w.lowerRight - w.lowerLeft, w.upperLeft - w.lowerLeft);
+        const glm::dvec2 front{frontSide.x, frontSide.z};
+        int door = 0;
+        for (const auto& [a, b] : gapsIn(from, to, full, kMinDoor)) {
+            double top = ceilingY;
+            for (const WallPiece* p : onLine)
+                if (p->bottom > floorY + kFloorSlack && overlap1d(p->from, p->to, a, b) > 0.0) top = std::min(top, p->bottom);
+            const glm::dvec2 pa = axis == 0 ? glm::dvec2(at, a) : glm::dvec2(a, at);
+            const glm::dvec2 pb = axis == 0 ? glm::dvec2(at, b) : glm::dvec2(b, at);
+            scenes::VirtualWall portal = wallBetween(pa, pb, floorY, top, front);
+            portal.name = "door " + w.name + (door > 0 ? " " + std::to_string(door + 1) : "");
+            portal.cells = w.cells;
+            portal.kind = scenes::WallKind::Portal;
+            walls.push_back(portal);
+            ++door;
+        }
+    }
+    d.walls = std::move(walls);
+    for (const WallPiece& p : pieces) {
+        scenes::RealWall r;
+        r.name = "real " + std::to_string(d.realWalls.size());
+        const int along = p.axis == 0 ? 2 : 0;
+        r.lowerLeft[p.axis] = r.lowerRight[p.axis] = r.upperLeft[p.axis] = p.at;
+        r.lowerLeft[along] = r.upperLeft[along] = p.from;
+        r.lowerRight[along] = p.to;
+        r.lowerLeft.y = r.lowerRight.y = p.bottom;
+        r.upperLeft.y = p.top;
+        d.realWalls.push_back(r);
+    }
+}
+
+// Positions along `axis` of lines of wall pieces strictly inside (lo, hi) whose pieces reaching
+// the floor cover at least half of `extent`: where a building's rooms meet.
+std::vector<double> wallLines(const std::vector<WallPiece>& pieces, int axis, double lo, double hi, double extent,
+                              double floorY) {
+    std::vector<double> lines;
+    std::vector<const WallPiece*> sorted;
+    for (const WallPiece& p : pieces)
+        if (p.axis == axis && p.at > lo + 0.25 && p.at < hi - 0.25) sorted.push_back(&p);
+    std::sort(sorted.begin(), sorted.end(), [](const WallPiece* a, const WallPiece* b) { return a->at < b->at; });
+    for (std::size_t i = 0; i < sorted.size();) {
+        std::size_t j = i;
+        double covered = 0.0, sum = 0.0;
+        while (j < sorted.size() && sorted[j]->at - sorted[i]->at <= 0.05) {
+            if (sorted[j]->bottom <= floorY + 0.1) covered += sorted[j]->to - sorted[j]->from;
+            sum += sorted[j]->at;
+            ++j;
+        }
+        if (covered >= 0.5 * extent) lines.push_back(sum / static_cast<double>(j - i));
+        i = j;
+    }
+    return lines;
+}
+
 scenes::SceneDescription describe(const scenes::SceneDescription& base, const Grid& g, double floorY, double ceilingY,
                                   double eyeHeight) {
     scenes::SceneDescription d = base;
@@ -195,7 +297,7 @@ AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDesc
     if (scene.objects.empty()) throw Error("auto walls: scene '" + scene.name + "' has no objects (expected at least one)");
     if (warnings && (!base.realWalls.empty() || !base.walls.empty()))
         warnings->push_back("auto walls: the description's " + std::to_string(base.walls.size()) + " walls and " +
-                            std::to_string(base.realWalls.size()) + " real walls are replaced (real walls and portals are not proposed)");
+                            std::to_string(base.realWalls.size()) + " real walls are replaced (by the proposal's own)");
     AutoWallsResult result;
     const scenes::Bounds all = scene.bounds();
     const glm::dvec3 size = all.size();
@@ -206,6 +308,7 @@ AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDesc
     scenes::Bounds floorBox;
     double floorTop = std::numeric_limits<double>::infinity(), ceilingBottom = -std::numeric_limits<double>::infinity();
     std::vector<const scenes::Object*> verticalPlanes;
+    std::vector<WallPiece> pieces;
     std::vector<scenes::Bounds> content;
     std::vector<std::size_t> contentTriangles;
     for (const scenes::Object& o : scene.objects) {
@@ -220,6 +323,11 @@ AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDesc
         }
         if (named || plane) {
             result.structure.push_back(o.name);
+            if (s.thinAxis != 1 && s.thickness <= 0.5 && o.worldBounds.size().y >= 0.3) {
+                const scenes::Bounds& b = o.worldBounds;
+                const int along = s.thinAxis == 0 ? 2 : 0;
+                pieces.push_back({s.thinAxis, b.centre()[s.thinAxis], b.min[along], b.max[along], b.min.y, b.max.y});
+            }
             if (s.thinAxis == 1 && plane) {
                 // Horizontal: below the model's middle a floor (the lowest top wins), above a
                 // ceiling (the highest bottom wins).
@@ -279,11 +387,33 @@ AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDesc
             // More cells along z only add walls and textures: the rest of this row is over too.
             if (!c.withinBudget) break;
         }
+    // The rooms: a grid cut along the lines of real walls, its boundaries on them portals.
+    const std::vector<double> xLines = wallLines(pieces, 0, lo.x, hi.x, hi.y - lo.y, result.floorY);
+    const std::vector<double> zLines = wallLines(pieces, 2, lo.y, hi.y, hi.x - lo.x, result.floorY);
+    if (!xLines.empty() || !zLines.empty()) {
+        Grid g{{lo.x}, {lo.y}};
+        g.xs.insert(g.xs.end(), xLines.begin(), xLines.end());
+        g.zs.insert(g.zs.end(), zLines.begin(), zLines.end());
+        g.xs.push_back(hi.x);
+        g.zs.push_back(hi.y);
+        scenes::SceneDescription d = describe(named, g, result.floorY, result.ceilingY, base.eyeHeight);
+        makeRooms(d, pieces, result.floorY, result.ceilingY);
+        scenes::validateSceneDescription(d, "auto walls (rooms)");
+        AutoWallsCandidate c = evaluate(d, content, contentTriangles, options);
+        c.nx = static_cast<int>(g.xs.size()) - 1, c.nz = static_cast<int>(g.zs.size()) - 1;
+        c.rooms = true;
+        for (const scenes::VirtualWall& w : d.walls) ++(w.kind == scenes::WallKind::Portal ? c.portals : c.virtualWalls);
+        result.candidates.push_back(c);
+        descriptions.push_back(std::move(d));
+    }
     for (std::size_t i = 1; i < result.candidates.size(); ++i) {
         const AutoWallsCandidate& c = result.candidates[i];
         const AutoWallsCandidate& best = result.candidates[result.chosen];
         if (c.withinBudget && c.expectedMs < best.expectedMs) result.chosen = static_cast<int>(i);
     }
+    if (options.preferRooms)
+        for (std::size_t i = 0; i < result.candidates.size(); ++i)
+            if (result.candidates[i].rooms && result.candidates[i].withinBudget) result.chosen = static_cast<int>(i);
     result.description = std::move(descriptions[result.chosen]);
     if (!base.walls.empty()) result.given = evaluate(base, content, contentTriangles, options);
     return result;

@@ -23,6 +23,13 @@
 //    with `plan`), and the candidate must fit `textureBudgetMB` (RGBA8 + MIP chain, each
 //    texture's resolution capped at plan.maxResolution). The one-cell candidate (no walls,
 //    the whole model as geometry) always fits, so a proposal always exists.
+// 5. Rooms. Thin vertical structure boxes (at most 0.5 m thick, at least 0.3 m tall) are pieces
+//    of real wall. Lines of pieces strictly inside the walkable rectangle whose pieces reaching
+//    the floor cover at least half of it cut one more candidate, the rooms: a boundary on such
+//    a line is a portal for every gap of at least 0.3 m between the pieces reaching the floor
+//    (as high as the lowest piece above the gap: a lintel, else the ceiling), nothing where they
+//    close it; a boundary on no line stays a virtual wall. Every piece becomes a real wall.
+//    The rooms are scored like every grid and chosen when they cost the least.
 //    The costs per triangle and per texture are inputs: measure them on the target machine
 //    (`cavewall bench`'s full-geometry and walls rows give both); the defaults are this
 //    project's llvmpipe figures at 1024 x 1024 per screen (README, issue 14's table).
@@ -47,6 +54,9 @@ struct AutoWallsOptions {
     int maxCellsPerAxis = 8;                // 1 to 26
     double planarThickness = 0.05;          // a plane's thickness / its second extent
     double planarExtent = 0.5;              // a plane's extent / the model's, per axis
+    bool preferRooms = false;               // choose the rooms (5.) whatever the cost model says,
+                                            // when there are rooms within the budget (the model
+                                            // does not count what real walls hide)
 };
 
 // Throws cavewall::Error naming the option when it is out of range.
@@ -59,6 +69,8 @@ struct AutoWallsCandidate {
     int textures = 0;                       // planned textures (own and beyond walls)
     double textureMB = 0.0;                 // their MiB (RGBA8 + MIP chain)
     bool withinBudget = true;
+    bool rooms = false;                     // cut along real walls (5. below), not a grid
+    int portals = 0, virtualWalls = 0;      // rooms: its portals and virtual walls
 };
 
 struct AutoWallsResult {

@@ -127,6 +127,7 @@ struct FrameResult {
     // Clusters (gl::ClusterOptions): nodes drawn by kind, the selection's predicted cost and
     // the budget it was held to, milliseconds. Zeros without clusters.
     int clusterObjects = 0, clusterTextured = 0, clusterAverage = 0;
+    int clusterFades = 0;                    // cross-fades under way (render/cluster_fades.h)
     double clusterPredictedMs = 0.0, clusterBudgetMs = 0.0;
     // Per display screen (index = screen), summed over its eyes: wall-clock CPU ms of its views
     // (geometry, walls, cursor), triangles and draw calls. Screens this instance does not

@@ -165,6 +165,7 @@ RunSummary runSession(const RunOptions& o) {
     if (o.clusters) {
         options.clusters.divisions = {o.clusterDivisions, std::max(1, o.clusterDivisions / 4), o.clusterDivisions};
         options.clusters.bake.resolution = o.clusterResolution;
+        options.clusters.fadeFrames = o.clusterFadeFrames;
         options.clusters.cache = o.cache ? *o.cache : gl::defaultCacheFolder();
         if (o.frameBudgetMs > 0.0) options.clusters.budgetMs = o.frameBudgetMs;
     }

@@ -44,6 +44,7 @@ TEST(RunOutput, FramesAndWallsCsvHaveOneRowPerFrameAndWall) {
         r.texturesOverAlpha = 1;
         r.clusterObjects = 12, r.clusterTextured = 3, r.clusterAverage = 2;
         r.clusterPredictedMs = 4.25, r.clusterBudgetMs = 16.5;
+        r.clusterFades = 2;
         r.geometryFallbacks = 2, r.texturesBaked = 40, r.texturesBakedNow = 3, r.texturesToBake = 7, r.bakerBusy = true;
         out.writeFrame(0, 0.0, head, r);
         r.cell = -1;  // outside every cell
@@ -67,6 +68,7 @@ TEST(RunOutput, FramesAndWallsCsvHaveOneRowPerFrameAndWall) {
     EXPECT_EQ(frames[0].at("cluster_average"), "2");
     EXPECT_EQ(frames[0].number("cluster_predicted_ms"), 4.25);
     EXPECT_EQ(frames[0].number("cluster_budget_ms"), 16.5);
+    EXPECT_EQ(frames[0].at("cluster_fades"), "2");
     EXPECT_EQ(frames[0].at("geometry_fallbacks"), "2");
     EXPECT_EQ(frames[0].at("textures_baked"), "40");
     EXPECT_EQ(frames[0].at("textures_baked_now"), "3");

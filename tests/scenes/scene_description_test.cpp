@@ -57,6 +57,14 @@ TEST(SceneDescription, ParsesEveryFieldAndRoundTrips) {
     EXPECT_EQ(writeSceneDescription(again), writeSceneDescription(d));  // stable bytes
 }
 
+TEST(SceneDescription, SplitMetresRoundTrips) {
+    const SceneDescription d = load(R"({"models": [{"file": "model.gltf", "splitMetres": 3}],)" + kCells.substr(1) +
+                                    R"(, "walls": [)" + kWall + "]}");
+    EXPECT_EQ(d.models[0].splitMetres, 3.0);
+    const SceneDescription again = parseSceneDescription(writeSceneDescription(d), "again.json", d.folder);
+    EXPECT_EQ(again, d);
+}
+
 TEST(SceneDescription, PlacementUnitsAndUpAxisMoveObjects) {
     const SceneDescription d = load(R"({"models": [
         {"file": "model.gltf", "metresPerUnit": 0.5, "up": "z", "position": [10, 0, 0], "structureNodes": ["no*e 0"]}]})");
@@ -140,6 +148,8 @@ TEST(SceneDescription, EveryRuleHasItsMessage) {
          "scene.json: walls[0].kind: expected one of \"virtual\", \"portal\", got \"door\""},
         {"units and metresPerUnit", R"({"models": [{"file": "model.gltf", "units": "mm", "metresPerUnit": 1}]})",
          "scene.json: models[0]: give either 'units' or 'metresPerUnit', not both"},
+        {"split too fine", R"({"models": [{"file": "model.gltf", "splitMetres": 0.01}]})",
+         "scene.json: models[0].splitMetres: expected a number in [0.1, 1e+06], got 0.01"},
         {"unknown unit", R"({"models": [{"file": "model.gltf", "units": "yd"}]})",
          "scene.json: models[0].units: expected one of \"m\", \"cm\", \"mm\", \"in\", \"ft\", got \"yd\""},
         {"matrix and position", R"({"models": [{"file": "model.gltf", "matrix": [], "position": [0,0,0]}]})",

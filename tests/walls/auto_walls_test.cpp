@@ -1,6 +1,7 @@
 #include "walls/auto_walls.h"
 
 #include "config/error.h"
+#include "scenes/generate.h"
 #include "scenes/primitives.h"
 #include "scenes/scene_description_io.h"
 #include "tests/support/files.h"
@@ -136,6 +137,48 @@ TEST(AutoWalls, EvaluatesTheGivenWallsWithTheSameModel) {
     ASSERT_TRUE(again.given.has_value());
     EXPECT_DOUBLE_EQ(again.given->expectedMs, first.candidates[first.chosen].expectedMs);
     EXPECT_EQ(again.given->textures, first.candidates[first.chosen].textures);
+}
+
+// The generated house (six rooms, real walls 0.15 m thick, 0.9 m x 2.1 m doorways with lintels):
+// its rooms are found again from the geometry alone, each doorway a portal of the same size.
+TEST(AutoWalls, FindsTheRoomsOfAHouseAndItsDoorwaysAsPortals) {
+    scenes::GenerateOptions g;
+    g.triangles = 2000;
+    scenes::GeneratedScene house = scenes::generateHouse(g);
+    static const test::TempFolder folder("auto_walls_house");
+    test::writeFile(folder / "house.glb", "glTF");
+    scenes::SceneDescription base = house.description;
+    base.folder = folder.path();
+    AutoWallsOptions o = options();
+    o.minCellSize = 2.0;
+    o.maxCellsPerAxis = 2;  // few grids: a quick test
+    o.preferRooms = true;
+    std::vector<std::string> warnings;
+    const AutoWallsResult r = proposeWalls(house.scene, base, o, &warnings);
+    const AutoWallsCandidate& chosen = r.candidates.at(r.chosen);
+    ASSERT_TRUE(chosen.rooms);
+    EXPECT_EQ(chosen.nx * chosen.nz, 6);
+    EXPECT_EQ(chosen.portals, 6);
+    EXPECT_EQ(chosen.virtualWalls, 0);
+    EXPECT_EQ(r.description.realWalls.size(), house.description.realWalls.size());
+    // Every proposed portal is one of the generator's doorways: same corners as a set (within
+    // half the wall thickness along its line), 2.1 m high.
+    ASSERT_EQ(r.description.walls.size(), house.description.walls.size());
+    for (const scenes::VirtualWall& w : r.description.walls) {
+        SCOPED_TRACE(w.name);
+        EXPECT_EQ(w.kind, scenes::WallKind::Portal);
+        EXPECT_NEAR(w.upperLeft.y - w.lowerLeft.y, 2.1, 1e-6);
+        const glm::dvec3 mid = 0.5 * (w.lowerLeft + w.lowerRight);
+        const bool known = std::any_of(house.description.walls.begin(), house.description.walls.end(), [&](const scenes::VirtualWall& d) {
+            return glm::length(0.5 * (d.lowerLeft + d.lowerRight) - mid) < 0.08 &&
+                   std::abs(glm::length(d.lowerRight - d.lowerLeft) - glm::length(w.lowerRight - w.lowerLeft)) < 1e-6;
+        });
+        EXPECT_TRUE(known);
+    }
+    // Without --rooms the cost model decides; the rooms stay among the candidates.
+    o.preferRooms = false;
+    const AutoWallsResult free = proposeWalls(house.scene, base, o);
+    EXPECT_EQ(std::count_if(free.candidates.begin(), free.candidates.end(), [](const AutoWallsCandidate& c) { return c.rooms; }), 1);
 }
 
 TEST(AutoWalls, RejectsBadOptionsByName) {

@@ -16,6 +16,7 @@ namespace cavewall::test {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 std::filesystem::path outputDir() {
     const char* env = std::getenv("CAVEWALL_TEST_OUTPUT");
@@ -144,6 +145,34 @@ TEST(WallsCli, ProposesWallsThatPlanAccepts) {
     // The proposal names the model relative to its own folder and plans.
     const CliResult plan = runCavewall({"plan", scene.string()});
     EXPECT_EQ(plan.exitCode, 0) << plan.err;
+}
+
+// A real model exported as one mesh (SponzaLOD4: 187 k triangles, one object) has nothing a
+// cell could leave out until it is cut into chunks: `walls` cuts it, proposes more than one
+// cell and writes "splitMetres" so that loading the proposal cuts it the same way.
+TEST(WallsCli, CutsAOneMeshRealModelIntoChunksAndProposesCells) {
+    const auto dir = outputDir();
+    const std::filesystem::path model = std::filesystem::path(CAVEWALL_REAL_SCENES) / "SponzaLOD4" / "sponza_s_lod4.glb";
+    ASSERT_TRUE(std::filesystem::exists(model)) << model;
+    std::filesystem::create_directories(dir / "auto-sponza");
+    const auto scene = dir / "auto-sponza" / "scene.json";
+    const CliResult r = runCavewall({"walls", model.string(), "--out", scene.string(), "--max-cells", "3",
+                                     "--max-res", "32"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("split: 1 content object(s) wider than 8.0 m hold 100 % of the content triangles; "
+                                 "models cut into chunks of 2.00 m: 1 objects -> "));
+    std::ifstream in(scene);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["models"][0]["splitMetres"].get<double>(), 2.0);
+    EXPECT_GT(j["cells"].size(), 1u);
+    const CliResult plan = runCavewall({"plan", scene.string()});
+    EXPECT_EQ(plan.exitCode, 0) << plan.err;
+    // --split 0 leaves the one mesh whole: one cell is all a proposal can be.
+    const CliResult whole = runCavewall({"walls", model.string(), "--out", (dir / "auto-sponza" / "whole.json").string(),
+                                         "--max-cells", "3", "--max-res", "32", "--split", "0"});
+    ASSERT_EQ(whole.exitCode, 0) << whole.err;
+    EXPECT_THAT(whole.out, Not(HasSubstr("split:")));
+    EXPECT_THAT(whole.out, HasSubstr("(1 cells, 0 virtual walls, 0 portals)"));
 }
 
 TEST(WallsCli, BadInputSaysWhatIsWrong) {

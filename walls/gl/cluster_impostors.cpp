@@ -200,10 +200,10 @@ std::vector<WallDraw> ClusterImpostors::draws(const render::ClusterBoxDraw& box,
         if (!render::faceTowards(node.box, f, eyeWorld)) continue;
         if (box.rep == render::ClusterRep::Textured) {
             const int r = render::viewRegion(node.box, f, eyeWorld);
-            out.push_back({render::boxFace(node.box, f), {node.textures[f][r].id()}, {1.0f}, 1});
+            out.push_back({render::boxFace(node.box, f), {node.textures[f][r].id()}, {box.weight}, 1});
         } else if (node.faces[f].coverage > 0.0f) {
             out.push_back({render::averageFaceQuad(render::boxFace(node.box, f), node.faces[f].coverage),
-                           {node.averages[f].id()}, {1.0f}, 1});
+                           {node.averages[f].id()}, {box.weight}, 1});
         }
     }
     return out;

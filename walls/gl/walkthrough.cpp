@@ -4,6 +4,7 @@
 #include "display/timing.h"
 #include "scenes/image_io.h"
 #include "display/gl/view_loop.h"
+#include "render/cluster_fades.h"
 #include "render/lod_choice.h"
 #include "walls/gl/background_baker.h"
 #include "walls/gl/cluster_costs.h"
@@ -110,6 +111,7 @@ struct Walkthrough::ClusterRuntime {
     std::vector<int> structure;              // always drawn
     std::unique_ptr<ClusterImpostors> impostors;
     render::ClusterCoherence coherence;
+    render::ClusterFades fades;
     render::ClusterFramePlan last;
     std::vector<int> drawn;                  // the last frame's objects and structure
 };
@@ -150,6 +152,7 @@ std::unique_ptr<Walkthrough::ClusterRuntime> makeClusters(const scenes::Scene& s
                                                           SceneRenderer& renderer, const std::string& rendererName) {
     auto c = std::make_unique<Walkthrough::ClusterRuntime>();
     c->coherence = render::ClusterCoherence(o.coherenceFrames);
+    c->fades = render::ClusterFades(o.fadeFrames);
     std::vector<scenes::Bounds> bounds;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const scenes::Object& object = scene.objects[i];
@@ -181,11 +184,13 @@ void Walkthrough::planClusters(const walls::FrameInput& input, glm::dvec3 eyeWor
     // Over every screen, also those of other cluster ranks (as the levels of detail).
     c.last = render::planClusterFrame(c.model, _display.views(input.head), input.worldFromCave, eyeWorld, budget,
                                       &c.coherence);
+    c.fades.apply(c.model, eyeWorld, c.last);
     objects = c.last.objects;
     objects.insert(objects.end(), c.structure.begin(), c.structure.end());
     result.clusterObjects = static_cast<int>(c.last.objects.size());
     result.clusterTextured = c.last.textured;
     result.clusterAverage = c.last.average;
+    result.clusterFades = c.last.fades;
     result.clusterPredictedMs = c.last.predictedMs;
     result.clusterBudgetMs = budget;
 }

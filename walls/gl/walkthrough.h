@@ -66,6 +66,8 @@ struct ClusterOptions {
     std::filesystem::path cache;             // the bake cache folder (clusters/ inside it)
     double budgetMs = 1000.0 / 60.0;         // predicted cost per frame unless FrameInput's
     int coherenceFrames = 3;                 // ClusterCoherence threshold
+    int fadeFrames = 8;                      // render::ClusterFades: frames a switch is
+                                             // cross-faded over (<= 1: none)
 };
 
 struct WalkthroughOptions : walls::WalkthroughSettings {
