@@ -2,6 +2,7 @@
 
 #include "config/error.h"
 #include "config/json_reader.h"
+#include "walls/cache_budget.h"
 
 namespace cavewall::app {
 
@@ -32,6 +33,20 @@ void validate(const RunOptions& o) {
                     config::formatNumber(o.lodPixels));
     if (o.frameBudgetMs > 0 && o.triangleBudget > 0)
         throw Error("--frame-budget-ms and --triangle-budget: expected one of them, got both");
+    if (o.cacheBudgetMB != 0.0) walls::cacheBudgetBytes(o.cacheBudgetMB, "--cache-budget");
+    if (o.cacheBudgetMB != 0.0 && !o.bakeOnDemand)
+        throw Error("--cache-budget: needs --bake-on-demand (the budget is kept while baking during the run)");
+    if (o.bakeInterleave != 0 && !o.bakeOnDemand)
+        throw Error("--bake-interleave: needs --bake-on-demand (it pauses the background baker)");
+    if (o.bakeOnDemand && o.wallKind == walls::WallKind::Depth)
+        throw Error("--bake-on-demand: expected --walls flat, got depth (depth walls read their depth files once, at "
+                    "the start: bake them first with `cavewall bake --walls depth`)");
+    if (o.bakeOnDemand && o.synchronousPaging)
+        throw Error("--bake-on-demand and --sync-paging: expected one of them, got both (synchronous paging waits "
+                    "for textures a background bake may not have made yet)");
+    if (o.bakeOnDemand && o.cluster)
+        throw Error("--bake-on-demand and --cluster: expected one of them, got both (cluster ranks read one "
+                    "finished bake)");
 }
 
 }  // namespace cavewall::app

@@ -75,6 +75,12 @@ struct RunOptions {
     bool synchronousPaging = false;             // see gl::WalkthroughOptions
     double textureBudgetMB = 256.0;
     int bakeResolution = 1024;                  // --max-res: BakeSettings::maxResolution (bench, demo: 512)
+    // --bake-on-demand: start at once and bake missing textures in the background while walking
+    // (walls/gl/background_baker.h); flat walls, without --sync-paging and --cluster.
+    bool bakeOnDemand = false;
+    double cacheBudgetMB = 0.0;                 // --cache-budget: disk MB of the scene's bake folder, 0 none
+    int bakeNice = 10;                          // --bake-nice: the baker thread's nice value, [0, 19]
+    long bakeInterleave = 0;                    // --bake-interleave N: pause the baker every other N frames, 0 never
     double geometryBudgetMB = 0.0;              // --geometry-budget: page geometry by cell, MB; 0 off
     double lodPixels = 0.0;                     // --lod: level-of-detail tolerance in pixels, 0 off
     std::size_t triangleBudget = 0;             // --triangle-budget: per frame, 0 none (needs --lod)
@@ -94,7 +100,9 @@ struct RunOptions {
 };
 
 // Throws cavewall::Error, naming the flags, when options contradict each other: frames < 1, a
-// triangle or frame-time budget without levels of detail, or both budgets at once.
+// triangle or frame-time budget without levels of detail, or both budgets at once; baking on
+// demand with depth walls, --sync-paging or --cluster; a bad --cache-budget, or one without
+// --bake-on-demand.
 void validate(const RunOptions& options);
 
 struct RunSummary {
@@ -125,6 +133,12 @@ struct RunSummary {
     double sceneSeconds = 0.0, wallsSeconds = 0.0, readySeconds = 0.0, firstFrameSeconds = 0.0;
     // --clusters: clusters in the hierarchy, made now and read from the cache, and the measured
     // costs (ms per triangle, per object, per textured and per average box).
+    // --bake-on-demand: textures missing from the cache at the start, baked during the run and
+    // still missing at the end; files evicted for --cache-budget and the folder's MB then.
+    int texturesMissingAtStart = 0, texturesBaked = 0, texturesStillMissing = 0;
+    long cacheEvictions = 0;
+    double cacheMB = 0.0;
+    std::vector<std::string> bakeWarnings;
     int clusters = 0, clustersMade = 0, clustersReused = 0;
     double clustersSeconds = 0.0;
     double msPerTriangle = 0.0, msPerObject = 0.0, texturedBoxMs = 0.0, averageBoxMs = 0.0;

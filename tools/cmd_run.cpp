@@ -3,6 +3,7 @@
 #include "display/timing.h"
 #include "tools/args.h"
 #include "tools/commands.h"
+#include "walls/cache_budget.h"
 
 #include <cstdio>
 #include <iostream>
@@ -15,6 +16,7 @@ const char* const kRunUsage =
     "                    [--transition blend|warp] [--no-walls] [--walls flat|depth] [--alpha DEG] [--min-zone M] [--ppd N]\n"
     "                    [--save-frames none|every:K|all] [--record FILE] [--cache DIR]\n"
     "                    [--budget MB] [--geometry-budget MB] [--max-res N] [--sync-paging]\n"
+    "                    [--bake-on-demand [--cache-budget MB] [--bake-nice N] [--bake-interleave N]]\n"
     "                    [--lod PX [--triangle-budget N|--frame-budget-ms T] [--lod-max PX]]\n"
     "                    [--cluster [--cluster-timeout S]]\n"
     "                    [--clusters [--cluster-divisions N] [--cluster-res N] [--cluster-fade N]]\n"
@@ -41,6 +43,21 @@ const char* const kRunUsage =
     "geometry_kept walls kept as textures and geometry_forced cells drawn unloaded, per frame).\n"
     "--walls depth bakes depth with colour and reprojects every wall pixel to the eye (issue 16,\n"
     "walls/gl/depth_wall_pass.h); default flat.\n"
+    "--bake-on-demand starts at once instead of baking every missing texture first: the textures the\n"
+    "cache lacks are baked by a background thread with its own GL context, those wanted now first,\n"
+    "then the neighbouring zones', then along the direction of travel, into the same cache (what it\n"
+    "already holds is used); until a texture arrives its wall keeps its previous texture or is drawn\n"
+    "as geometry (frames.csv: geometry_fallbacks per frame; textures_baked running total,\n"
+    "textures_baked_now, textures_to_bake). It is a flag, not the default, because frames then depend\n"
+    "on how fast this machine bakes (runs are not reproducible, and baking shares the CPU with\n"
+    "drawing); flat walls only, not with --sync-paging or --cluster. --cache-budget MB keeps the\n"
+    "scene's bake folder within MB of texture files while baking on demand, deleting the least\n"
+    "recently wanted files first (never one wanted now); when it is full only textures wanted now\n"
+    "are baked. --bake-nice N (0-19, default 10) is the baker thread's nice value: drawing wins the\n"
+    "CPU (frames barely slow down) at the cost of fewer textures per second; 0 bakes about three times\n"
+    "faster on a busy 2-core machine but frames overlapping a bake take about 1.5x as long.\n"
+    "--bake-interleave N (a measurement aid) pauses the baker in every other block of N\n"
+    "frames, so frame times with and without baking come from one run (frames.csv: baker_busy).\n"
     "--lod PX draws every object at the coarsest level of detail\n"
     "whose geometric error covers at most PX pixels on any screen it appears on (levels are built\n"
     "when the scene loads; default 0: full detail); --triangle-budget N raises that tolerance in\n"
@@ -104,6 +121,22 @@ std::string geometryLine(const app::RunSummary& s) {
     return text;
 }
 
+std::string bakeLine(const app::RunSummary& s) {
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "run: baking on demand: %d textures missing at the start, %d baked during the run, %d still "
+                  "missing; first frame %.2f s after the scene loaded",
+                  s.texturesMissingAtStart, s.texturesBaked, s.texturesStillMissing,
+                  s.firstFrameSeconds - s.sceneSeconds);
+    std::string line = text;
+    if (s.cacheEvictions > 0 || s.cacheMB > 0.0) {
+        std::snprintf(text, sizeof text, "; cache %.1f MB, %ld files evicted", s.cacheMB, s.cacheEvictions);
+        line += text;
+    }
+    for (const std::string& w : s.bakeWarnings) line += "\nrun: warning: " + w;
+    return line + "\n";
+}
+
 std::string clustersLine(const app::RunSummary& s) {
     char text[320];
     std::snprintf(text, sizeof text,
@@ -117,11 +150,12 @@ std::string clustersLine(const app::RunSummary& s) {
 }  // namespace
 
 int runRun(const std::vector<std::string>& words) {
-    const Args args(words, {"headless", "window", "no-walls", "sync-paging", "cluster", "clusters"});
+    const Args args(words, {"headless", "window", "no-walls", "sync-paging", "cluster", "clusters", "bake-on-demand"});
     args.expectFlags({"scene", "display", "tracker", "frames", "nav", "pace", "route", "headless", "window", "transition",
                       "no-walls", "alpha", "min-zone", "ppd", "save-frames", "record", "cache", "budget", "geometry-budget", "max-res",
                       "sync-paging", "out", "cluster", "cluster-timeout", "lod", "triangle-budget", "frame-budget-ms", "lod-max",
-                      "walls", "clusters", "cluster-divisions", "cluster-res", "cluster-fade"});
+                      "walls", "clusters", "cluster-divisions", "cluster-res", "cluster-fade", "bake-on-demand",
+                      "cache-budget", "bake-interleave", "bake-nice"});
     if (args.has("headless") && args.has("window")) throw Error("--headless and --window: expected one of them, got both");
     app::RunOptions o;
     o.scene = args.require("scene");
@@ -147,6 +181,11 @@ int runRun(const std::vector<std::string>& words) {
     o.geometryBudgetMB = args.number("geometry-budget", 0.0, 0.0, 1e6);
     o.bakeResolution = static_cast<int>(args.integer("max-res", o.bakeResolution, 16, 16384));
     o.synchronousPaging = args.has("sync-paging");
+    o.bakeOnDemand = args.has("bake-on-demand");
+    o.bakeInterleave = args.integer("bake-interleave", 0, 0, 1000000);
+    o.bakeNice = static_cast<int>(args.integer("bake-nice", o.bakeNice, 0, 19));
+    if (auto budget = args.get("cache-budget")) o.cacheBudgetMB = parseNumber(*budget, "--cache-budget");
+    if (args.has("cache-budget")) walls::cacheBudgetBytes(o.cacheBudgetMB, "--cache-budget");
     o.lodPixels = args.number("lod", 0.0, 0.0, 1e4);
     o.triangleBudget = static_cast<std::size_t>(args.integer("triangle-budget", 0, 0, 1000000000));
     o.frameBudgetMs = args.number("frame-budget-ms", 0.0, 0.0, 1e5);
@@ -168,6 +207,7 @@ int runRun(const std::vector<std::string>& words) {
               << " s, walkthrough ready at " << seconds(s.readySeconds) << " s)\n"
               << (o.geometryBudgetMB > 0.0 && s.walls ? geometryLine(s) : std::string())
               << (o.clusters ? clustersLine(s) : std::string())
+              << (o.bakeOnDemand && s.walls ? bakeLine(s) : std::string())
               << (o.out / "frames.csv").string() << "\n";
     return 0;
 }

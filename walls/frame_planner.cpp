@@ -197,6 +197,7 @@ WallState FramePlanner::chooseWall(const WallBlend& b, const Residency& resident
     }
     const int behind = planned.cells[1 - b.side];
     if (state.geometryWeight > 0.0 && _cellResident && !_cellResident(behind)) keepTexturesFor(b, resident, state, p);
+    if (state.fallback && state.textures.empty()) ++p.geometryFallbacks;
     if (state.geometryWeight > 0.0) {
         setCell(p.geometryCells, behind, true);
         setCell(_cellNeeded, behind, true);

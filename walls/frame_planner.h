@@ -108,6 +108,7 @@ struct FramePlan {
     int texturesOverAlpha = 0;                     // as FrameResult
     int warpFallbacks = 0;
     int geometryMisses = 0;                        // walls kept as textures: their cell behind was not resident
+    int geometryFallbacks = 0;                     // walls drawn as geometry for want of a resident texture (step 3)
     std::vector<int> geometryForced;               // cells drawn as geometry though not resident (step 4)
 };
 

@@ -102,6 +102,13 @@ struct FrameResult {
     GeometryPagerStats geometry;             // geometry paging by cell (zeros when off)
     int geometryMisses = 0;                  // walls kept as textures: cell behind not resident
     int geometryForced = 0;                  // cells drawn though not resident (loaded at once: a stall)
+    // Walls drawn as geometry this frame because neither their wanted textures nor the previous
+    // ones (within alpha) were resident (FramePlan::geometryFallbacks).
+    int geometryFallbacks = 0;
+    // Baking on demand (WalkthroughSettings via gl::WalkthroughOptions::baker): textures baked
+    // by this run and handed to the pager, so far and this frame; textures still to bake.
+    int texturesBaked = 0, texturesBakedNow = 0, texturesToBake = 0;
+    bool bakerBusy = false;                  // a background bake ran during some of the frame
     double maxErrorDeg = 0.0;                // max over drawn textures (0 without textures)
     int texturesOverAlpha = 0;               // sum of WallState::texturesOverAlpha (must be 0)
     // maxErrorDeg converted to pixels on the screens this instance renders: error (rad) times

@@ -101,6 +101,20 @@ std::vector<int> TexturePager::takeEvictions() {
     return _residency.takeEvictions();
 }
 
+void TexturePager::addTexture(BakedTexture texture) {
+    std::lock_guard lock(_mutex);
+    _failed.erase(texture.id);
+    const int id = texture.id;
+    _textures[id] = std::move(texture);
+}
+
+void TexturePager::removeTexture(int id) {
+    std::lock_guard lock(_mutex);
+    _textures.erase(id);
+    std::erase(_queue, id);
+    _queued.erase(id);
+}
+
 bool TexturePager::isResident(int id) const {
     std::lock_guard lock(_mutex);
     return _residency.isResident(id);

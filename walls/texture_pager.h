@@ -64,6 +64,13 @@ public:
     // Textures to delete on the GPU now to stay within the budget (never one wanted now).
     std::vector<int> takeEvictions();
 
+    // Baking on demand (walls/gl/background_baker.h): a texture baked during the run joins the
+    // pager (and may be requested from the next request() on; a failure of its id is forgotten);
+    // removeTexture drops one whose file was evicted from the disk (a GPU copy stays resident
+    // until evicted as usual; until it is added again it is never decoded).
+    void addTexture(BakedTexture texture);
+    void removeTexture(int id);
+
     bool isResident(int id) const;
     bool hasFailed(int id) const;
     PagerStats stats() const;

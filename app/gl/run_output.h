@@ -10,7 +10,12 @@
 //               as geometry because a wanted texture was not resident; sync_ms = cluster
 //               mode's slowest rank's wait for the frame broadcast and the swap lock;
 //               max_err_deg the exact error of the worst texture drawn; over_alpha the textures
-//               drawn whose exact error exceeds the plan's alpha, 0 while the bound holds)
+//               drawn whose exact error exceeds the plan's alpha, 0 while the bound holds),
+//               ..., geometry_fallbacks (walls drawn as geometry this frame for want of a
+//               resident texture), textures_baked (baked by this run's background baker and
+//               handed to the pager, running total), textures_baked_now (this frame),
+//               textures_to_bake (still missing; all three 0 without --bake-on-demand),
+//               baker_busy (1 when a background bake ran during some of the frame)
 //   walls.csv   one row per frame and wall bounding the viewer's cell or beyond a neighbour
 //               drawn as geometry: frame, wall (name), textures ("id:weight" joined by ';'),
 //               geometry_weight, fallback (0/1), beyond (0/1), err_deg (the exact error of its

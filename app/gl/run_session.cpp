@@ -14,6 +14,8 @@
 #include "app/run_input.h"
 #include "app/gl/run_output.h"
 #include "app/scene_query.h"
+#include "walls/cache_budget.h"
+#include "walls/gl/background_baker.h"
 #include "walls/gl/baker.h"
 #include "walls/geometry_pager.h"
 #include "walls/gl/walkthrough.h"
@@ -33,17 +35,41 @@ using app::WindowMode;
 
 namespace {
 
+gl::BakeRequest bakeRequest(const RunOptions& o, gl::Context* context) {
+    gl::BakeRequest request;
+    request.scene = o.scene;
+    request.context = context;
+    request.settings.maxResolution = o.bakeResolution;
+    request.settings.kind = o.wallKind;
+    if (o.cache) request.cache = *o.cache;
+    return request;
+}
+
+// --bake-on-demand: plans the walls and takes what the cache holds; the baker bakes the rest in
+// the background with a context of its own.
+walls::WallSetup prepareWallsOnDemand(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
+                                      std::unique_ptr<gl::BackgroundBaker>& baker) {
+    walls::WallSetup setup =
+        walls::prepareWalls(scene, d, walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution));
+    gl::BackgroundBakerOptions options;
+    options.niceness = o.bakeNice;
+    if (o.cacheBudgetMB > 0.0) options.cacheBudgetBytes = walls::cacheBudgetBytes(o.cacheBudgetMB, "--cache-budget");
+    baker = std::make_unique<gl::BackgroundBaker>(scene, d, setup, bakeRequest(o, nullptr), options);
+    setup.folder = baker->folder();
+    setup.manifest = baker->manifest();
+    if (o.verbose)
+        std::cout << "walls: " << setup.plan.textures.size() << " textures in " << setup.folder.string() << " ("
+                  << setup.manifest.textures.size() << " in the cache, " << baker->stats().missingAtStart
+                  << " to bake while walking)\n";
+    return setup;
+}
+
 // Prepares the walls and bakes (or finds in the cache) their textures.
 walls::WallSetup prepareWalls(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
                               gl::Context& context) {
     walls::WallSetup setup =
         walls::prepareWalls(scene, d, walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution));
-    gl::BakeRequest request;
-    request.scene = o.scene;
-    request.context = &context;
-    request.settings.maxResolution = o.bakeResolution;
-    request.settings.kind = o.wallKind;
-    if (o.cache) request.cache = *o.cache;
+    gl::BakeRequest request = bakeRequest(o, &context);
     if (o.verbose)
         request.progress = [](const gl::BakeProgress& p) {
             if (p.baked > 0 && (p.done % 10 == 0 || p.done == p.total))
@@ -110,7 +136,10 @@ RunSummary runSession(const RunOptions& o) {
     const auto context = makeContext(o, display);
 
     std::optional<walls::WallSetup> setup;
-    if (o.walls && !o.clusters && !description.walls.empty()) setup = prepareWallsOnce(o, scene, description, *context, cluster.get());
+    std::unique_ptr<gl::BackgroundBaker> baker;  // --bake-on-demand; outlives the walkthrough
+    const bool wallsDrawn = o.walls && !o.clusters && !description.walls.empty();
+    if (wallsDrawn && o.bakeOnDemand) setup = prepareWallsOnDemand(o, scene, description, baker);
+    else if (wallsDrawn) setup = prepareWallsOnce(o, scene, description, *context, cluster.get());
     const int textureCount = setup ? static_cast<int>(setup->plan.textures.size()) : 0;
     const double wallsSeconds = since();
     gl::WalkthroughOptions options;
@@ -119,6 +148,7 @@ RunSummary runSession(const RunOptions& o) {
     options.geometryBudgetMB = o.geometryBudgetMB;
     options.transition = o.transition;
     options.wallKind = o.wallKind;
+    options.baker = baker.get();
     options.render.lodPixels = o.lodPixels;
     options.triangleBudget = o.triangleBudget;
     options.lodMaxPixels = std::max(o.lodMaxPixels, o.lodPixels);
@@ -161,6 +191,7 @@ RunSummary runSession(const RunOptions& o) {
         if (frameBudget && !o.clusters) in.triangleBudget = frameBudget->budget();
         if (frameBudget && o.clusters) in.clusterBudgetMs = static_cast<double>(frameBudget->budget()) / 1000.0;
         double syncMs = cluster ? app::receiveFrame(*cluster, in) : 0.0;
+        if (baker && o.bakeInterleave > 0) baker->pause((i / o.bakeInterleave) % 2 == 1);
         walls::FrameResult r = walkthrough.renderFrame(in);
         if (i == 0) summary.firstFrameSeconds = since();
         if (cluster) syncMs = app::combineFrame(*cluster, r, syncMs, screens);
@@ -191,6 +222,13 @@ RunSummary runSession(const RunOptions& o) {
             std::cout << "frame " << i + 1 << "/" << o.frames << ": " << r.frameMs << " ms\n" << std::flush;
     }
     if (output) output->close();
+    if (baker) {
+        baker->stop();  // the bake in progress finishes and is counted
+        const gl::BackgroundBakeStats b = baker->stats();
+        summary.texturesMissingAtStart = b.missingAtStart, summary.texturesBaked = b.baked;
+        summary.texturesStillMissing = b.missing, summary.cacheEvictions = b.evictions, summary.cacheMB = b.cacheMB;
+        summary.bakeWarnings = b.warnings;
+    }
     summary.textures = textureCount;
     summary.rank = rank;
     return summary;

@@ -42,6 +42,34 @@ TEST(RunOptions, EachRuleNamesItsFlags) {
              o.triangleBudget = 1000;
          },
          "--clusters and --triangle-budget: expected --frame-budget-ms with --clusters"},
+        {"cache budget without baking on demand", [](RunOptions& o) { o.cacheBudgetMB = 100.0; },
+         "--cache-budget: needs --bake-on-demand"},
+        {"negative cache budget",
+         [](RunOptions& o) {
+             o.bakeOnDemand = true;
+             o.cacheBudgetMB = -1.0;
+         },
+         "--cache-budget: expected a disk budget in MB in (0, 1e9], got -1"},
+        {"interleave without baking on demand", [](RunOptions& o) { o.bakeInterleave = 30; },
+         "--bake-interleave: needs --bake-on-demand"},
+        {"baking depth walls on demand",
+         [](RunOptions& o) {
+             o.bakeOnDemand = true;
+             o.wallKind = walls::WallKind::Depth;
+         },
+         "--bake-on-demand: expected --walls flat, got depth"},
+        {"baking on demand with synchronous paging",
+         [](RunOptions& o) {
+             o.bakeOnDemand = true;
+             o.synchronousPaging = true;
+         },
+         "--bake-on-demand and --sync-paging: expected one of them, got both"},
+        {"baking on demand in a cluster",
+         [](RunOptions& o) {
+             o.bakeOnDemand = true;
+             o.cluster = true;
+         },
+         "--bake-on-demand and --cluster: expected one of them, got both"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
@@ -56,6 +84,10 @@ TEST(RunOptions, EachRuleNamesItsFlags) {
     budgeted.triangleBudget = 0;
     budgeted.frameBudgetMs = 16.7;
     EXPECT_NO_THROW(validate(budgeted));
+    RunOptions onDemand;  // baking on demand with a disk budget
+    onDemand.bakeOnDemand = true;
+    onDemand.cacheBudgetMB = 500.0;
+    EXPECT_NO_THROW(validate(onDemand));
     RunOptions clusters;  // clusters hold a time budget without levels of detail
     clusters.clusters = true;
     clusters.frameBudgetMs = 16.7;

@@ -45,6 +45,7 @@ TEST(RunOutput, FramesAndWallsCsvHaveOneRowPerFrameAndWall) {
         r.clusterObjects = 12, r.clusterTextured = 3, r.clusterAverage = 2;
         r.clusterPredictedMs = 4.25, r.clusterBudgetMs = 16.5;
         r.clusterFades = 2;
+        r.geometryFallbacks = 2, r.texturesBaked = 40, r.texturesBakedNow = 3, r.texturesToBake = 7, r.bakerBusy = true;
         out.writeFrame(0, 0.0, head, r);
         r.cell = -1;  // outside every cell
         r.walls.clear();
@@ -68,6 +69,11 @@ TEST(RunOutput, FramesAndWallsCsvHaveOneRowPerFrameAndWall) {
     EXPECT_EQ(frames[0].number("cluster_predicted_ms"), 4.25);
     EXPECT_EQ(frames[0].number("cluster_budget_ms"), 16.5);
     EXPECT_EQ(frames[0].at("cluster_fades"), "2");
+    EXPECT_EQ(frames[0].at("geometry_fallbacks"), "2");
+    EXPECT_EQ(frames[0].at("textures_baked"), "40");
+    EXPECT_EQ(frames[0].at("textures_baked_now"), "3");
+    EXPECT_EQ(frames[0].at("textures_to_bake"), "7");
+    EXPECT_EQ(frames[0].at("baker_busy"), "1");
     // Poses read back to the same double (replays are compared exactly).
     EXPECT_EQ(std::strtod(frames[0].at("head_y").c_str(), nullptr), head.y);
     EXPECT_EQ(std::strtod(frames[1].at("t").c_str(), nullptr), 1.0 / 60.0);

@@ -81,6 +81,71 @@ TEST(RunCli, GeometryBudgetPagesCellsAndReportsThem) {
     }
 }
 
+// Baking on demand from an empty cache: the run starts, reports what it baked, and a second run
+// on the same cache misses exactly what the first did not bake. How many textures a run bakes
+// depends on this machine's speed; the counts' relations do not.
+TEST(RunCli, BakeOnDemandStartsColdAndLeavesItsBakesInTheCache) {
+    const fs::path out = outputDir("on-demand"), cache = outputDir("on-demand-cache");
+    auto run = [&](const fs::path& folder) {
+        std::vector<std::string> args = wallRun(folder, "sim:walk?seed=2", 20);
+        args.insert(args.end(), {"--bake-on-demand", "--max-res", "32", "--cache-budget", "100"});
+        args[std::find(args.begin(), args.end(), "--cache") - args.begin() + 1] = cache.string();
+        return runCavewall(args);
+    };
+    const std::regex line("baking on demand: (\\d+) textures missing at the start, (\\d+) baked during the run, "
+                          "(\\d+) still missing; first frame [0-9.]+ s after the scene loaded");
+    const CliResult first = run(out);
+    ASSERT_EQ(first.exitCode, 0) << first.err;
+    std::smatch m1;
+    ASSERT_TRUE(std::regex_search(first.out, m1, line)) << first.out;
+    const int missing = std::stoi(m1[1]), baked = std::stoi(m1[2]);
+    EXPECT_GT(missing, 0);
+    const auto rows = readCsv(out / "frames.csv");
+    ASSERT_EQ(rows.size(), 20u);
+    long previous = 0, handedNow = 0;
+    for (const auto& row : rows) {
+        SCOPED_TRACE(row.at("frame"));
+        const long total = std::stol(row.at("textures_baked"));
+        EXPECT_EQ(total - previous, std::stol(row.at("textures_baked_now")));
+        EXPECT_LE(total + std::stol(row.at("textures_to_bake")), missing);  // what was handed over, and what is left
+        EXPECT_GE(std::stol(row.at("geometry_fallbacks")), 0);
+        EXPECT_TRUE(row.at("baker_busy") == "0" || row.at("baker_busy") == "1");
+        EXPECT_EQ(row.at("over_alpha"), "0");
+        handedNow += std::stol(row.at("textures_baked_now"));
+        previous = total;
+    }
+    EXPECT_LE(handedNow, baked);
+
+    const CliResult second = run(outputDir("on-demand-2"));
+    ASSERT_EQ(second.exitCode, 0) << second.err;
+    std::smatch m2;
+    ASSERT_TRUE(std::regex_search(second.out, m2, line)) << second.out;
+    EXPECT_EQ(std::stoi(m2[1]), missing - baked);  // everything the first run baked is in the cache
+}
+
+TEST(RunCli, BakeOnDemandRefusesBadCombinations) {
+    const fs::path out = outputDir("on-demand-bad");
+    struct Case {
+        std::vector<std::string> extra;
+        const char* message;
+    };
+    const Case cases[] = {
+        {{"--bake-on-demand", "--cache-budget", "0"}, "--cache-budget: expected a disk budget in MB in (0, 1e9], got 0"},
+        {{"--bake-on-demand", "--cache-budget", "lots"}, "--cache-budget"},
+        {{"--cache-budget", "100"}, "--cache-budget: needs --bake-on-demand"},
+        {{"--bake-on-demand", "--sync-paging"}, "--bake-on-demand and --sync-paging: expected one of them, got both"},
+        {{"--bake-on-demand", "--walls", "depth"}, "--bake-on-demand: expected --walls flat, got depth"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.message);
+        std::vector<std::string> args = wallRun(out, "sim:walk?seed=2", 2);
+        args.insert(args.end(), c.extra.begin(), c.extra.end());
+        const CliResult r = runCavewall(args);
+        EXPECT_NE(r.exitCode, 0);
+        EXPECT_THAT(r.err, HasSubstr(c.message));
+    }
+}
+
 TEST(RunCli, WritesFramesWallsAndImagesOnTheSmallPlant) {
     const fs::path out = outputDir("end-to-end");
     std::vector<std::string> args = wallRun(out, "sim:walk?seed=2", 40);

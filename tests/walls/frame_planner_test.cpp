@@ -175,11 +175,13 @@ TEST_F(FramePlannerTest, AMissingTextureKeepsThePreviousOneWithinAlphaElseTheGeo
     EXPECT_TRUE(cold.geometryCells[1]);
     EXPECT_TRUE(drawsObject(cold, kBackBox));
     EXPECT_TRUE(cold.wallDraws.empty());
+    EXPECT_EQ(cold.geometryFallbacks, 1);  // the one wall, drawn as geometry for want of a texture
     const FramePlan warm = frame(planner, at(*first), &onlyFirst);
     EXPECT_FALSE(row(warm).fallback);
     EXPECT_EQ(row(warm).textures, (TextureSet{{t1, 1.0}}));
     EXPECT_FALSE(warm.geometryCells[1]);
     EXPECT_FALSE(drawsObject(warm, kBackBox));
+    EXPECT_EQ(warm.geometryFallbacks, 0);
     // The next zone's texture is missing: the wall keeps the one it drew (within alpha there).
     const FramePlan kept = frame(planner, at(*next), &onlyFirst);
     EXPECT_TRUE(row(kept).fallback);
@@ -187,6 +189,7 @@ TEST_F(FramePlannerTest, AMissingTextureKeepsThePreviousOneWithinAlphaElseTheGeo
     ASSERT_EQ(kept.wallDraws.size(), 1u);
     EXPECT_EQ(kept.wallDraws[0].textures, (TextureSet{{t1, 1.0}}));
     EXPECT_FALSE(drawsObject(kept, kBackBox));
+    EXPECT_EQ(kept.geometryFallbacks, 0);  // a fallback, but to the previous texture
     // Far along the wall the old texture would be wrong by more than alpha: geometry instead.
     const FramePlan jumped = frame(planner, at(*far), &onlyFirst);
     EXPECT_TRUE(row(jumped).fallback);
@@ -195,6 +198,7 @@ TEST_F(FramePlannerTest, AMissingTextureKeepsThePreviousOneWithinAlphaElseTheGeo
     EXPECT_TRUE(jumped.geometryCells[1]);
     EXPECT_TRUE(drawsObject(jumped, kBackBox));
     EXPECT_TRUE(jumped.wallDraws.empty());
+    EXPECT_EQ(jumped.geometryFallbacks, 1);
     EXPECT_EQ(jumped.maxErrorDeg, 0.0);  // nothing textured, nothing wrong
 }
 

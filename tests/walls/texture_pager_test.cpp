@@ -96,6 +96,37 @@ TEST(TexturePager, NeverEvictsWhatIsWantedNowUnderATinyBudget) {
     }
 }
 
+// Baking on demand: a texture the pager did not know at the start is neither decoded nor counted
+// as a miss until it is added; a removed one (its file evicted from the disk) is never decoded.
+TEST(TexturePager, TexturesAddedDuringTheRunArePagedAndRemovedOnesAreNot) {
+    BakeManifest all = manifest();
+    BakeManifest start = all;
+    start.textures.resize(2);  // only tex_0 and tex_1 baked when the run begins
+    TexturePager pager(folder(), start, 4.0, fakeDecode);
+    pager.request({0, 4}, {5});
+    uploadAll(pager);
+    EXPECT_TRUE(pager.isResident(0));
+    EXPECT_FALSE(pager.isResident(4));
+    EXPECT_EQ(pager.stats().misses, 1);  // 4 is not a texture of the pager yet: not a miss
+    pager.addTexture(all.textures[4]);
+    pager.request({0, 4}, {});
+    uploadAll(pager);
+    EXPECT_TRUE(pager.isResident(4));
+    pager.removeTexture(1);
+    decodes = 0;
+    pager.request({1}, {});
+    uploadAll(pager);
+    EXPECT_FALSE(pager.isResident(1));
+    EXPECT_EQ(decodes, 0);
+    // A failed texture baked again is tried again.
+    pager.addTexture(all.textures[7]);
+    pager.request({7}, {});
+    pager.waitIdle();
+    EXPECT_TRUE(pager.hasFailed(7));
+    pager.addTexture(all.textures[7]);
+    EXPECT_FALSE(pager.hasFailed(7));
+}
+
 TEST(TexturePager, BrokenFilesFailOnceAndAreNotRetried) {
     TexturePager pager(folder(), manifest(), 4.0, fakeDecode);
     decodes = 0;

@@ -18,6 +18,7 @@
 #include <cstdlib>
 #include <map>
 #include <optional>
+#include <utility>
 
 namespace cavewall::gl {
 
@@ -128,6 +129,14 @@ public:
         : _request(request), _start(Clock::now()), _scene(scene), _description(description), _walls(walls),
           _plan(walls.plan) {}
     BakeResult run();
+    // Baking on demand (TextureBaker): run() in parts.
+    void prepare();
+    std::vector<int> missing() const;
+    std::vector<walls::BakedTexture> bakeIds(const std::vector<int>& ids);
+    std::vector<int> forget(const std::vector<int>& ids);
+    void endRendering();
+    void flushManifest() { writeManifestNow(true); }
+    const BakeResult& result() const { return _result; }
 
 private:
     void key();
@@ -136,8 +145,9 @@ private:
     void keyPending(std::uint64_t settings);
     void linkFromCache();
     void sample();
-    void render();
+    void render(const std::vector<Item>& items);
     void renderOne(const Item& item, WallTextureRenderer& renderer, BakeWriter& writer);
+    Item itemOf(const walls::Texture& t) const;
     void finish(const walls::BakedTexture& entry, bool baked, std::uint64_t bytes);
     void writeManifestNow(bool force);
     void report();
@@ -152,9 +162,27 @@ private:
     std::map<int, walls::BakedTexture> _done;   // finished entries by id
     std::vector<Item> _pending;
     walls::BakeManifest _listed;                 // what the folder's manifest.json lists
+    // Made at the first render and kept (baking on demand renders one texture per call).
+    std::unique_ptr<gl::Context> _ownContext;
+    std::unique_ptr<WallTextureRenderer> _renderer;
+    std::unique_ptr<BakeWriter> _writer;
+    std::vector<walls::BakedTexture> _fresh;     // baked since the last bakeIds
+    std::map<std::pair<int, int>, std::uint64_t> _contentKeys;  // by (wall, side), made by keyPending
 };
 
 BakeResult Bake::run() {
+    prepare();
+    if (!_pending.empty()) render(_pending);
+    endRendering();
+    writeManifestNow(true);  // only when it changed: an unchanged bake writes nothing
+    removeUnlistedTextures(_result.folder, _result.manifest);
+    _result.totalBytes = 0;
+    for (const walls::BakedTexture& t : _result.manifest.textures) _result.totalBytes += t.bytes + t.depthBytes;
+    _result.seconds = std::chrono::duration<double>(Clock::now() - _start).count();  // progress reported done already
+    return std::move(_result);
+}
+
+void Bake::prepare() {
     validateBakeSettings(_request.settings);
     key();
     reuseListed();
@@ -163,14 +191,59 @@ BakeResult Bake::run() {
         keyPending(settingsKey(_request.settings));
         linkFromCache();
         sample();
-        if (!_pending.empty()) render();
     }
-    writeManifestNow(true);  // only when it changed: an unchanged bake writes nothing
-    removeUnlistedTextures(_result.folder, _result.manifest);
-    _result.totalBytes = 0;
-    for (const walls::BakedTexture& t : _result.manifest.textures) _result.totalBytes += t.bytes + t.depthBytes;
-    _result.seconds = std::chrono::duration<double>(Clock::now() - _start).count();  // progress reported done already
-    return std::move(_result);
+}
+
+std::vector<int> Bake::missing() const {
+    std::vector<int> ids;
+    for (const Item& item : _pending)
+        if (!_done.count(item.texture->id)) ids.push_back(item.texture->id);
+    std::sort(ids.begin(), ids.end());
+    return ids;
+}
+
+std::vector<walls::BakedTexture> Bake::bakeIds(const std::vector<int>& ids) {
+    std::vector<Item> items;
+    for (const Item& item : _pending)
+        if (!_done.count(item.texture->id) && std::find(ids.begin(), ids.end(), item.texture->id) != ids.end())
+            items.push_back(item);
+    _fresh.clear();
+    if (!items.empty()) render(items);
+    return std::exchange(_fresh, {});
+}
+
+// A texture found in the cache at prepare() has no pending item yet: it gets one, keyed.
+std::vector<int> Bake::forget(const std::vector<int>& ids) {
+    std::vector<int> forgotten;
+    for (int id : ids) {
+        if (!_done.erase(id)) continue;
+        forgotten.push_back(id);
+        const bool pending =
+            std::any_of(_pending.begin(), _pending.end(), [&](const Item& i) { return i.texture->id == id; });
+        const auto texture = std::find_if(_plan.textures.begin(), _plan.textures.end(),
+                                          [&](const walls::Texture& t) { return t.id == id; });
+        if (!pending && texture != _plan.textures.end()) _pending.push_back(itemOf(*texture));
+    }
+    if (forgotten.empty()) return forgotten;
+    keyPending(settingsKey(_request.settings));
+    writeManifestNow(true);
+    return forgotten;
+}
+
+void Bake::endRendering() {
+    if (_writer) {
+        while (_writer->pending() > 0)
+            for (const walls::BakedTexture& e : _writer->takeDone(true)) finish(e, true, e.bytes + e.depthBytes);
+        const BakeWriter::Times spent = _writer->times();  // the writer's threads' own, since it was made
+        _result.times.mips += spent.mips;
+        _result.times.encode += spent.encode;
+        _result.times.hash += spent.hash;
+        _writer.reset();
+    }
+    _renderer.reset();
+    _ownContext.reset();
+    if (_result.folder.empty()) return;
+    writeManifestNow(true);
 }
 
 void Bake::key() {
@@ -182,6 +255,12 @@ void Bake::key() {
     _result.folder = cache / walls::hex64(_result.key);
     _result.manifest.key = _result.key;
     _result.manifest.alphaDeg = _plan.options.alphaDeg;
+}
+
+Item Bake::itemOf(const walls::Texture& t) const {
+    Item item{&t, sideOf(_plan, t), bakeResolution(t.resolution, _request.settings.maxResolution), {}};
+    item.entry = {t.id, t.cell, t.wall, t.samplingPoint, item.resolution, "", 0, 0};
+    return item;
 }
 
 void Bake::reuseListed() {
@@ -196,8 +275,7 @@ void Bake::reuseListed() {
     if (listed.key == _result.key)
         for (const walls::BakedTexture& t : listed.textures) byId[t.id] = &t;
     for (const walls::Texture& t : _plan.textures) {
-        Item item{&t, sideOf(_plan, t), bakeResolution(t.resolution, _request.settings.maxResolution), {}};
-        item.entry = {t.id, t.cell, t.wall, t.samplingPoint, item.resolution, "", 0, 0};
+        Item item = itemOf(t);
         const auto it = byId.find(t.id);
         if (it != byId.end()) {
             walls::BakedTexture expected = *it->second;
@@ -226,10 +304,12 @@ bool Bake::reuseFile(const walls::BakedTexture& listed) {
     return true;
 }
 
+// Keys once per bake (forget() adds items later): items keyed already keep their names.
 void Bake::keyPending(std::uint64_t settings) {
-    const std::map<std::pair<int, int>, std::uint64_t> keys = contentKeys(_scene, _walls);
+    if (_contentKeys.empty()) _contentKeys = contentKeys(_scene, _walls);
     for (Item& item : _pending) {
-        const std::uint64_t content = keys.at({item.texture->wall, item.side});
+        if (!item.entry.file.empty()) continue;
+        const std::uint64_t content = _contentKeys.at({item.texture->wall, item.side});
         item.entry.file = textureFileName(item.texture->id, textureKey(item, _plan, content, settings));
         if (_request.settings.kind == walls::WallKind::Depth) item.entry.depthFile = walls::depthFileName(item.entry.file);
     }
@@ -258,32 +338,30 @@ void Bake::sample() {
     _pending = std::move(kept);
 }
 
-void Bake::render() {
+// The context, renderer and writer are made at the first call and kept (baking on demand
+// renders a few textures per call); endRendering ends them.
+void Bake::render(const std::vector<Item>& items) {
     const Clock::time_point start = Clock::now();
-    std::unique_ptr<gl::Context> own;
-    gl::Context* context = _request.context;
-    if (!context) {
-        own = gl::createHeadlessContext();
-        context = own.get();
-    }
-    context->makeCurrent();
+    if (!_request.context && !_ownContext) _ownContext = gl::createHeadlessContext();
+    (_request.context ? _request.context : _ownContext.get())->makeCurrent();
     ensureFolder(_result.folder);
-    WallTextureRenderer renderer(_scene, _request.settings.ambient, _request.settings.lodTexels);
-    BakeWriter writer(_result.folder, _request.settings.jobs, {_request.settings.tileSize});
+    if (!_renderer)
+        _renderer = std::make_unique<WallTextureRenderer>(_scene, _request.settings.ambient, _request.settings.lodTexels);
+    if (!_writer)
+        _writer = std::make_unique<BakeWriter>(_result.folder, _request.settings.jobs,
+                                               walls::MipFileOptions{_request.settings.tileSize});
     _result.times.prepare += secondsSince(start);
+    WallTextureRenderer& renderer = *_renderer;
+    BakeWriter& writer = *_writer;
     auto absorb = [&](bool wait) {
         for (const walls::BakedTexture& e : writer.takeDone(wait)) finish(e, true, e.bytes + e.depthBytes);
     };
-    for (const Item& item : _pending) {
+    for (const Item& item : items) {
         renderOne(item, renderer, writer);
         absorb(false);
     }
     while (writer.pending() > 0) absorb(true);
     absorb(false);
-    const BakeWriter::Times spent = writer.times();
-    _result.times.mips += spent.mips;
-    _result.times.encode += spent.encode;
-    _result.times.hash += spent.hash;
 }
 
 void Bake::renderOne(const Item& item, WallTextureRenderer& renderer, BakeWriter& writer) {
@@ -307,6 +385,7 @@ void Bake::renderOne(const Item& item, WallTextureRenderer& renderer, BakeWriter
 
 void Bake::finish(const walls::BakedTexture& entry, bool baked, std::uint64_t bytes) {
     _done[entry.id] = entry;
+    if (baked) _fresh.push_back(entry);
     (baked ? _result.baked : _result.reused)++;
     _result.bytesWritten += bytes;
     if (bytes > 0) writeManifestNow(false);
@@ -348,6 +427,32 @@ BakeResult bakeWalls(const scenes::Scene& scene, const scenes::SceneDescription&
                     std::string(walls::wallKindName(walls.plan.options.wallKind)) + " walls");
     return Bake(scene, description, walls, request).run();
 }
+
+struct TextureBaker::State {
+    State(const scenes::Scene& scene, const scenes::SceneDescription& description, const walls::WallSetup& walls,
+          BakeRequest r)
+        : request(std::move(r)), bake(scene, description, walls, request) {}
+    BakeRequest request;  // before `bake`, which keeps a reference
+    Bake bake;
+};
+
+TextureBaker::TextureBaker(const scenes::Scene& scene, const scenes::SceneDescription& description,
+                           const walls::WallSetup& walls, BakeRequest request) {
+    if (walls.plan.options.wallKind != request.settings.kind)
+        throw Error("bake: expected a plan for " + std::string(walls::wallKindName(request.settings.kind)) +
+                    " walls, got one for " + std::string(walls::wallKindName(walls.plan.options.wallKind)) + " walls");
+    _state = std::make_unique<State>(scene, description, walls, std::move(request));
+    _state->bake.prepare();
+    _state->bake.endRendering();  // no GL yet: writes the manifest of what was found, if it changed
+}
+
+TextureBaker::~TextureBaker() = default;
+const BakeResult& TextureBaker::result() const { return _state->bake.result(); }
+std::vector<int> TextureBaker::missing() const { return _state->bake.missing(); }
+std::vector<walls::BakedTexture> TextureBaker::bake(const std::vector<int>& ids) { return _state->bake.bakeIds(ids); }
+std::vector<int> TextureBaker::forget(const std::vector<int>& ids) { return _state->bake.forget(ids); }
+void TextureBaker::endRendering() { _state->bake.endRendering(); }
+void TextureBaker::writeManifest() { _state->bake.flushManifest(); }
 
 BakeResult bakeScene(const BakeRequest& request) {
     validateBakeSettings(request.settings);

@@ -36,6 +36,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -128,6 +129,43 @@ BakeResult bakeWalls(const scenes::Scene& scene, const scenes::SceneDescription&
 // Loads request.scene, prepares its walls with request.plan and bakes them (bakeWalls), for
 // callers without a loaded scene (`cavewall bake`). Throws cavewall::Error for bad scenes too.
 BakeResult bakeScene(const BakeRequest& request);
+
+// Baking chosen textures one call at a time, for baking on demand (walls/gl/background_baker.h):
+// the same cache, keys, files and manifest as bakeWalls. The constructor does what bakeWalls does
+// before rendering (keys the folder, trusts or re-hashes listed files, links textures from other
+// folders of the cache) without any GL; `walls` (and scene, description) must outlive it.
+// bake() renders and writes the given textures with request.context, else with a headless
+// context it makes on the calling thread at the first bake; call bake(), forget() and
+// endRendering() on that one thread. The manifest is rewritten atomically at most about once a
+// second while baking, at forget() and at endRendering(), listing only finished files.
+class TextureBaker {
+public:
+    TextureBaker(const scenes::Scene& scene, const scenes::SceneDescription& description,
+                 const walls::WallSetup& walls, BakeRequest request);
+    ~TextureBaker();  // no GL: call endRendering() on the rendering thread first
+    TextureBaker(const TextureBaker&) = delete;
+    TextureBaker& operator=(const TextureBaker&) = delete;
+
+    // Folder, key and the manifest of every finished texture (found, linked or baked).
+    const BakeResult& result() const;
+    // Texture ids of the plan that are not finished yet, ascending.
+    std::vector<int> missing() const;
+    // Renders and writes those of `ids` that are missing; returns their finished entries.
+    // Throws cavewall::Error (unwritable folder, GL failure).
+    std::vector<walls::BakedTexture> bake(const std::vector<int>& ids);
+    // Drops finished textures from the manifest (written now, once) so that their files can be
+    // deleted; they are missing again. Returns those of `ids` that were finished.
+    std::vector<int> forget(const std::vector<int>& ids);
+    // Writes the manifest now if it changed (the baker idles: nothing finished goes unlisted).
+    void writeManifest();
+    // Waits for the files being written, writes the manifest and frees the GL objects and any
+    // context made by bake().
+    void endRendering();
+
+private:
+    struct State;
+    std::unique_ptr<State> _state;
+};
 
 // $CAVEWALL_CACHE, else $HOME/.cache/cavewall. Throws Error when neither is set.
 std::filesystem::path defaultCacheFolder();

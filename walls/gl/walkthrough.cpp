@@ -6,6 +6,7 @@
 #include "display/gl/view_loop.h"
 #include "render/cluster_fades.h"
 #include "render/lod_choice.h"
+#include "walls/gl/background_baker.h"
 #include "walls/gl/cluster_costs.h"
 #include "walls/gl/depth_texture_store.h"
 #include "walls/gl/texture_store.h"
@@ -230,6 +231,15 @@ walls::FramePlan Walkthrough::planFrame(const walls::FrameInput& input, const st
     const walls::TextureRequests wanted = _planner->requests(input, views);
     if (!_walls) return _planner->plan([](int) { return false; });
     WallRuntime& w = *_walls;
+    if (_options.baker) {  // baking on demand: this frame's wishes out, finished bakes in
+        _options.baker->want(wanted.now, wanted.soon, glm::dvec3(input.worldFromCave * glm::dvec4(input.head.position, 1.0)));
+        _bakedNow = 0;
+        for (BakeEvent& e : _options.baker->take()) {
+            if (e.evicted) w.pager.removeTexture(e.texture.id);
+            else w.pager.addTexture(std::move(e.texture)), ++_bakedNow;
+        }
+        _bakedTotal += _bakedNow;
+    }
     w.pager.request(wanted.now, wanted.soon);
     if (_options.synchronousPaging) w.pager.waitIdle();
     // One upload round per frame; synchronous paging uploads until nothing is left.
@@ -324,6 +334,8 @@ void Walkthrough::drawViews(const walls::FrameInput& input, const std::vector<di
 
 walls::FrameResult Walkthrough::renderFrame(const walls::FrameInput& input) {
     const auto start = Clock::now();
+    const std::optional<BackgroundBakeStats> bakeAtStart =
+        _options.baker ? std::optional(_options.baker->stats()) : std::nullopt;
     _context.makeCurrent();  // callers may have used another context (a bake) in between
     const std::vector<display::ScreenView> views = renderedViews(input.head);
     walls::FramePlan plan = planFrame(input, views);
@@ -344,6 +356,9 @@ walls::FrameResult Walkthrough::renderFrame(const walls::FrameInput& input) {
     }
     result.geometryMisses = plan.geometryMisses;
     result.geometryForced = static_cast<int>(plan.geometryForced.size());
+    result.geometryFallbacks = plan.geometryFallbacks;
+    result.texturesBaked = _bakedTotal, result.texturesBakedNow = _bakedNow;
+    if (_options.baker) result.texturesToBake = _options.baker->stats().missing;
     render::DrawFilter filter;
     filter.objects = &plan.objects;
     if (_clusters) {
@@ -371,6 +386,10 @@ walls::FrameResult Walkthrough::renderFrame(const walls::FrameInput& input) {
     result.gpuMs = _timer.waitMs();  // the GPU has finished: no stall
     result.frameMs = msSince(start);
     if (_context.windowCount() > 0) present();
+    if (bakeAtStart) {  // the frame overlapped a bake: one ran at its start or end, or one began
+        const BackgroundBakeStats end = _options.baker->stats();
+        result.bakerBusy = bakeAtStart->busy || end.busy || end.started != bakeAtStart->started;
+    }
     if (input.readImages) result.images = readFrame(_display, _targets);
     return result;
 }

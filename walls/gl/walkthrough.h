@@ -8,7 +8,8 @@
 // cell, each wall's textures and weights, the paging requests, the fallbacks, the warp-morph,
 // the error) is made by walls::FramePlanner (walls/frame_planner.h, unit-tested without GL);
 // this class only owns the pager, the texture store and the GL passes, and per frame:
-//  1. asks the planner which textures are wanted (now / soon) and tells the pager; uploads what
+//  1. asks the planner which textures are wanted (now / soon) and tells the pager (and, baking
+//     on demand, the background baker, whose finished textures join the pager); uploads what
 //     is ready within the per-frame byte budget (WalkthroughSettings);
 //  2. has the planner decide the frame against what is resident, maps texture ids to GL names;
 //     with geometry paging (WalkthroughSettings::geometryBudgetMB), the cells likewise: the
@@ -53,6 +54,8 @@
 
 namespace cavewall::gl {
 
+class BackgroundBaker;  // walls/gl/background_baker.h
+
 // Seed 004's textured clusters (walls/gl/cluster_impostors.h, render/cluster_frame.h): the
 // content objects are drawn as the frame's selection from the model hierarchy under a budget
 // in predicted milliseconds, objects at full detail (or their level of detail) and clusters
@@ -74,6 +77,10 @@ struct WalkthroughOptions : walls::WalkthroughSettings {
     // Depth: walls drawn by gl::DepthWallPass from a depth bake (BakeSettings::kind, the
     // manifest's depth files, DepthTextureStore); a texture without its depth is drawn flat.
     walls::WallKind wallKind = walls::WallKind::Flat;
+    // Baking on demand (walls/gl/background_baker.h; flat walls, not with synchronous paging):
+    // each frame tells the baker what it wants and hands what it baked (or evicted from the
+    // disk) to the texture pager. Not owned; must outlive the walkthrough. Null: none.
+    BackgroundBaker* baker = nullptr;
 };
 
 // What resident geometry is judged by (issue 15), in MB (2^20 bytes) of GPU buffers, with the
@@ -138,6 +145,7 @@ private:
     std::unique_ptr<WallRuntime> _walls;
     std::unique_ptr<ClusterRuntime> _clusters;
     std::size_t _uploadedBytes = 0;  // wall texture bytes uploaded by the last planFrame
+    int _bakedNow = 0, _bakedTotal = 0;  // baking on demand: textures handed to the pager
     std::unique_ptr<walls::FramePlanner> _planner;
     std::unique_ptr<HandCursorPass> _cursor;
     std::unique_ptr<WarpPass> _warp;         // Transition::Warp with walls only

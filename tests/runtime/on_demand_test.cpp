@@ -1,0 +1,193 @@
+// Baking on demand (walls/gl/background_baker.h) on the two-cell scene from an empty cache: the
+// first frame is drawn before any texture is baked (its walls fall back to geometry, none is
+// missing), later frames draw the baked textures, the cache then lists every file, and a second
+// run finds them all and bakes nothing. The baker is held at its first texture by a latch, so
+// what each frame sees does not depend on timing.
+#include "tests/gl/gl_test_support.h"
+#include "tests/runtime/runtime_fixture.h"
+
+#include "walls/bake_manifest.h"
+#include "walls/frame_select.h"
+#include "walls/gl/background_baker.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <latch>
+#include <optional>
+
+namespace cavewall::testing {
+namespace {
+
+class OnDemandTest : public GlTest {
+protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        if (IsSkipped()) return;
+        root = testOutputFolder("on_demand") / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        std::filesystem::remove_all(root);
+        request.scene = scene.sceneFile;
+        request.cache = root / "cache";               // empty: a cold cache
+        request.settings.maxResolution = 32;          // small textures: the order does not depend on size
+        // An eye in cell A, facing A|B, where the selection draws A|B from textures alone.
+        const walls::FrameSelector selector(scene.walls.plan, scene.walls.table, scene.description);
+        for (double x = -9.75; x < -0.25 && !textured; x += 0.25) {
+            for (const walls::WallBlend& b : selector.select({x, 1.7, 0.0}).walls)
+                if (b.wall == wallIndex(scene.walls, "A|B") && !b.textures.empty() && b.geometryWeight == 0.0)
+                    textured = glm::dvec3(x, 1.7, 0.0);
+        }
+        ASSERT_TRUE(textured) << "no eye on z = 0 in cell A sees A|B as textures alone";
+        in.worldFromCave = cavePlacedAt(*textured);
+    }
+
+    // A walkthrough drawing `baker`'s textures on cave4 at 32 x 32 per screen.
+    std::unique_ptr<gl::Walkthrough> walkthrough(gl::BackgroundBaker& baker) {
+        walls::WallSetup setup = scene.walls;
+        setup.folder = baker.folder();
+        setup.manifest = baker.manifest();
+        gl::WalkthroughOptions options;
+        options.baker = &baker;
+        return std::make_unique<gl::Walkthrough>(scene.scene, scene.description, display, *context, setup, options);
+    }
+
+    const walls::WallState* wallAB(const walls::FrameResult& r) const {
+        for (const walls::WallState& s : r.walls)
+            if (s.wall == wallIndex(scene.walls, "A|B")) return &s;
+        return nullptr;
+    }
+
+    const SmallPlant& scene = twoCells();
+    const display::Display display = testDisplay(32);
+    std::filesystem::path root;
+    gl::BakeRequest request;
+    walls::FrameInput in;
+    std::optional<glm::dvec3> textured;
+};
+
+TEST_F(OnDemandTest, FirstFrameBeforeTheBakeThenBakedTexturesThenNothingToBake) {
+    const int total = static_cast<int>(scene.walls.plan.textures.size());
+    ASSERT_GT(total, 1);
+    std::latch open(1);
+    gl::BackgroundBakerOptions options;
+    options.beforeBake = [&](int) { open.wait(); };
+    {
+        gl::BackgroundBaker baker(scene.scene, scene.description, scene.walls, request, options);
+        EXPECT_TRUE(baker.manifest().textures.empty());
+        EXPECT_EQ(baker.stats().missingAtStart, total);
+        auto walk = walkthrough(baker);
+
+        // Frame 0: nothing baked yet; the wall wants textures and is drawn as geometry instead.
+        const walls::FrameResult first = walk->renderFrame(in);
+        ASSERT_NE(wallAB(first), nullptr);
+        EXPECT_TRUE(wallAB(first)->fallback);
+        EXPECT_TRUE(wallAB(first)->textures.empty());
+        EXPECT_EQ(wallAB(first)->geometryWeight, 1.0);  // never a missing wall
+        EXPECT_GE(first.geometryFallbacks, 1);
+        EXPECT_EQ(first.texturesBaked, 0);
+        EXPECT_EQ(first.texturesToBake, total);  // one of them held at the latch
+
+        open.count_down();
+        baker.waitIdle();
+        EXPECT_EQ(baker.stats().baked, total);
+        EXPECT_EQ(baker.stats().missing, 0);
+        // Frame 1 hands every bake to the pager (and asks for the wall's textures); once they
+        // are decoded and uploaded, frame 2 draws them.
+        in.frame = 1;
+        const walls::FrameResult handed = walk->renderFrame(in);
+        EXPECT_EQ(handed.texturesBakedNow, total);
+        EXPECT_EQ(handed.texturesBaked, total);
+        walk->waitForTextures();
+        in.frame = 2;
+        const walls::FrameResult drawn = walk->renderFrame(in);
+        ASSERT_NE(wallAB(drawn), nullptr);
+        EXPECT_FALSE(wallAB(drawn)->fallback);
+        EXPECT_FALSE(wallAB(drawn)->textures.empty());
+        EXPECT_EQ(drawn.geometryFallbacks, 0);
+        EXPECT_EQ(drawn.texturesBakedNow, 0);
+        EXPECT_EQ(drawn.texturesBaked, total);
+        EXPECT_EQ(drawn.texturesToBake, 0);
+
+        // The cache lists every texture of the plan, each file valid (size and hash).
+        const walls::BakeManifest listed = walls::readManifest(baker.folder());
+        ASSERT_EQ(static_cast<int>(listed.textures.size()), total);
+        for (const walls::BakedTexture& t : listed.textures) EXPECT_TRUE(walls::textureFileValid(baker.folder(), t)) << t.file;
+    }
+
+    // A second run finds everything and bakes nothing.
+    gl::BackgroundBaker again(scene.scene, scene.description, scene.walls, request);
+    EXPECT_EQ(static_cast<int>(again.manifest().textures.size()), total);
+    EXPECT_EQ(again.stats().missingAtStart, 0);
+    auto walk = walkthrough(again);
+    in.frame = 0;
+    walk->renderFrame(in);
+    again.waitIdle();
+    walk->waitForTextures();
+    in.frame = 1;
+    const walls::FrameResult r = walk->renderFrame(in);
+    EXPECT_EQ(r.texturesBaked, 0);
+    EXPECT_EQ(again.stats().baked, 0);
+    ASSERT_NE(wallAB(r), nullptr);
+    EXPECT_FALSE(wallAB(r)->textures.empty());
+}
+
+// A disk budget of five of the largest texture files: a frame wants at most four textures of the
+// one wall now (a 2 x 2 blend) and one more is being added, so eviction always fits the folder
+// within it (walls/cache_budget.h never evicts what is wanted now); evicted textures leave the manifest with their files, and the frames keep
+// drawing every wall (textures or geometry).
+TEST_F(OnDemandTest, DiskBudgetEvictsLeastRecentlyWantedFiles) {
+    // Measure one texture's file on a first, unbudgeted bake of the same plan.
+    std::uint64_t fileBytes = 0;
+    {
+        gl::BakeRequest probe = request;
+        probe.cache = root / "probe";
+        gl::BackgroundBaker baker(scene.scene, scene.description, scene.walls, probe);
+        auto walk = walkthrough(baker);
+        walk->renderFrame(in);
+        baker.waitIdle();
+        for (const walls::BakedTexture& t : walls::readManifest(baker.folder()).textures)
+            fileBytes = std::max(fileBytes, t.bytes);
+    }
+    ASSERT_GT(fileBytes, 0u);
+    gl::BackgroundBakerOptions options;
+    options.cacheBudgetBytes = 5 * fileBytes;
+    gl::BackgroundBaker baker(scene.scene, scene.description, scene.walls, request, options);
+    auto walk = walkthrough(baker);
+    // Walk over cell A facing A|B, row by row, then over cell B facing it back (the CAVE turned
+    // by half a turn): the baker fills the budget with A's side first, so B's side must evict.
+    std::vector<glm::dmat4> poses;
+    for (double z = -4.5; z <= 4.5; z += 1.5)
+        for (double x = -9.5; x < 0.0; x += 1.0) poses.push_back(cavePlacedAt({x, 1.7, z}));
+    for (double z = -4.5; z <= 4.5; z += 1.5)
+        for (double x = 9.5; x > 0.0; x -= 1.0)
+            poses.push_back(glm::rotate(cavePlacedAt({x, 1.7, z}), glm::pi<double>(), glm::dvec3(0.0, 1.0, 0.0)));
+    for (int i = 0; i < static_cast<int>(poses.size()); ++i) {
+        in.frame = i;
+        in.worldFromCave = poses[i];
+        const walls::FrameResult r = walk->renderFrame(in);
+        baker.waitIdle();
+        for (const walls::WallState& s : r.walls)
+            EXPECT_TRUE(!s.textures.empty() || s.geometryWeight > 0.0) << "frame " << i << ", wall " << s.wall;
+    }
+    const gl::BackgroundBakeStats stats = baker.stats();
+    EXPECT_GT(stats.evictions, 0) << "textures " << scene.walls.plan.textures.size() << ", baked " << stats.baked << ", cache MB " << stats.cacheMB << ", file " << fileBytes;
+    const walls::BakeManifest listed = walls::readManifest(baker.folder());
+    std::uint64_t bytes = 0;
+    for (const walls::BakedTexture& t : listed.textures) {
+        bytes += t.bytes;
+        EXPECT_TRUE(walls::textureFileValid(baker.folder(), t)) << t.file;
+    }
+    // Listed files and the budget's count agree; the folder holds no unlisted texture file.
+    EXPECT_EQ(bytes, static_cast<std::uint64_t>(std::llround(stats.cacheMB * 1024.0 * 1024.0)));
+    int files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(baker.folder()))
+        files += entry.path().extension() == ".tx" ? 1 : 0;
+    EXPECT_EQ(files, static_cast<int>(listed.textures.size()));
+    EXPECT_LE(bytes, 5 * fileBytes);
+}
+
+}  // namespace
+}  // namespace cavewall::testing
