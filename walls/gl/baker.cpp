@@ -259,7 +259,9 @@ void Bake::key() {
 
 Item Bake::itemOf(const walls::Texture& t) const {
     Item item{&t, sideOf(_plan, t), bakeResolution(t.resolution, _request.settings.maxResolution), {}};
-    item.entry = {t.id, t.cell, t.wall, t.samplingPoint, item.resolution, "", 0, 0};
+    item.entry = walls::BakedTexture{};
+    item.entry.id = t.id, item.entry.cell = t.cell, item.entry.wall = t.wall;
+    item.entry.samplingPoint = t.samplingPoint, item.entry.resolution = item.resolution;
     return item;
 }
 
