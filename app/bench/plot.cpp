@@ -72,29 +72,48 @@ void drawText(scenes::Image& image, int x, int y, const std::string& text, int s
     }
 }
 
+namespace {
+
+// The plot area [left, right] x [top, bottom] in pixels for data in [0, maxX] x [0, maxY]: grid
+// lines and tick labels at fifths, and the two axes.
+struct Axes {
+    int left, right, top, bottom;
+    double maxX, maxY;
+    int px(double x) const { return left + static_cast<int>(std::lround(x / maxX * (right - left))); }
+    int py(double y) const { return bottom - static_cast<int>(std::lround(y / maxY * (bottom - top))); }
+};
+
+Axes drawAxes(scenes::Image& image, int left, int right, int top, int bottom, double maxX, double maxY) {
+    static const unsigned char kAxis[3] = {40, 40, 40}, kGrid[3] = {225, 225, 225};
+    const Axes a{left, right, top, bottom, maxX, maxY};
+    constexpr int kTicks = 5;
+    for (int i = 0; i <= kTicks; ++i) {
+        const double fx = maxX * i / kTicks, fy = maxY * i / kTicks;
+        drawLine(image, a.px(fx), top, a.px(fx), bottom, kGrid);
+        drawLine(image, left, a.py(fy), right, a.py(fy), kGrid);
+        const std::string tx = tickText(fx), ty = tickText(fy);
+        drawText(image, a.px(fx) - static_cast<int>(tx.size()) * 4, bottom + 8, tx, 2, kAxis);
+        drawText(image, left - 6 - static_cast<int>(ty.size()) * 8, a.py(fy) - 5, ty, 2, kAxis);
+    }
+    drawLine(image, left, bottom, right, bottom, kAxis);
+    drawLine(image, left, top, left, bottom, kAxis);
+    return a;
+}
+
+}  // namespace
+
 scenes::Image plotTradeOff(const std::vector<PlotPoint>& points, int width, int height) {
     assert(width >= 160 && height >= 120);
-    static const unsigned char kWhite[3] = {255, 255, 255}, kAxis[3] = {40, 40, 40}, kGrid[3] = {225, 225, 225},
-                               kBlue[3] = {40, 90, 200}, kRed[3] = {210, 30, 30};
+    static const unsigned char kWhite[3] = {255, 255, 255}, kBlue[3] = {40, 90, 200}, kRed[3] = {210, 30, 30};
     scenes::Image image{"bench.png", width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4)};
     fillRect(image, 0, 0, width, height, kWhite);
     const int left = 56, right = width - 20, top = 16, bottom = height - 36;
     double maxX = 0.0, maxY = 0.0;
     for (const PlotPoint& p : points) maxX = std::max(maxX, p.x), maxY = std::max(maxY, p.y);
     maxX = niceCeil(maxX * 1.05), maxY = niceCeil(maxY * 1.05);
-    const auto px = [&](double x) { return left + static_cast<int>(std::lround(x / maxX * (right - left))); };
-    const auto py = [&](double y) { return bottom - static_cast<int>(std::lround(y / maxY * (bottom - top))); };
-    constexpr int kTicks = 5;
-    for (int i = 0; i <= kTicks; ++i) {
-        const double fx = maxX * i / kTicks, fy = maxY * i / kTicks;
-        drawLine(image, px(fx), top, px(fx), bottom, kGrid);
-        drawLine(image, left, py(fy), right, py(fy), kGrid);
-        const std::string tx = tickText(fx), ty = tickText(fy);
-        drawText(image, px(fx) - static_cast<int>(tx.size()) * 4, bottom + 8, tx, 2, kAxis);
-        drawText(image, left - 6 - static_cast<int>(ty.size()) * 8, py(fy) - 5, ty, 2, kAxis);
-    }
-    drawLine(image, left, bottom, right, bottom, kAxis);
-    drawLine(image, left, top, left, bottom, kAxis);
+    const Axes axes = drawAxes(image, left, right, top, bottom, maxX, maxY);
+    const auto px = [&](double x) { return axes.px(x); };
+    const auto py = [&](double y) { return axes.py(y); };
     const PlotPoint* previous = nullptr;
     std::vector<const PlotPoint*> front;
     for (const PlotPoint& p : points)
@@ -114,7 +133,7 @@ scenes::Image plotTradeOff(const std::vector<PlotPoint>& points, int width, int 
 
 scenes::Image plotSeries(const std::vector<PlotSeries>& series, int width, int height) {
     assert(width >= 160 && height >= 120);
-    static const unsigned char kWhite[3] = {255, 255, 255}, kAxis[3] = {40, 40, 40}, kGrid[3] = {225, 225, 225};
+    static const unsigned char kWhite[3] = {255, 255, 255};
     static const unsigned char kColours[4][3] = {{40, 90, 200}, {210, 30, 30}, {30, 150, 60}, {230, 130, 20}};
     scenes::Image image{"plot.png", width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4)};
     fillRect(image, 0, 0, width, height, kWhite);
@@ -123,19 +142,9 @@ scenes::Image plotSeries(const std::vector<PlotSeries>& series, int width, int h
     for (const PlotSeries& s : series)
         for (const PlotPoint& p : s.points) maxX = std::max(maxX, p.x), maxY = std::max(maxY, p.y);
     maxX = niceCeil(maxX * 1.05), maxY = niceCeil(maxY * 1.05);
-    const auto px = [&](double x) { return left + static_cast<int>(std::lround(x / maxX * (right - left))); };
-    const auto py = [&](double y) { return bottom - static_cast<int>(std::lround(y / maxY * (bottom - top))); };
-    constexpr int kTicks = 5;
-    for (int i = 0; i <= kTicks; ++i) {
-        const double fx = maxX * i / kTicks, fy = maxY * i / kTicks;
-        drawLine(image, px(fx), top, px(fx), bottom, kGrid);
-        drawLine(image, left, py(fy), right, py(fy), kGrid);
-        const std::string tx = tickText(fx), ty = tickText(fy);
-        drawText(image, px(fx) - static_cast<int>(tx.size()) * 4, bottom + 8, tx, 2, kAxis);
-        drawText(image, left - 6 - static_cast<int>(ty.size()) * 8, py(fy) - 5, ty, 2, kAxis);
-    }
-    drawLine(image, left, bottom, right, bottom, kAxis);
-    drawLine(image, left, top, left, bottom, kAxis);
+    const Axes axes = drawAxes(image, left, right, top, bottom, maxX, maxY);
+    const auto px = [&](double x) { return axes.px(x); };
+    const auto py = [&](double y) { return axes.py(y); };
     for (const PlotSeries& s : series) {
         const unsigned char* colour = kColours[((s.label % 4) + 4) % 4];
         std::vector<PlotPoint> points = s.points;

@@ -87,6 +87,9 @@ struct BenchReport {
 };
 
 // The CSV header line (without newline), starting with the columns the issue requires.
+// `v` with `decimals` digits after the point (no exponent).
+std::string fixed(double v, int decimals = 1);
+
 std::string csvHeader();
 // One CSV line (without newline); numbers in C locale, "inf" for infinite PSNR.
 std::string csvRow(const ModeResult& m);

@@ -1,6 +1,7 @@
 // Cross-faded transitions between cluster representations (render/cluster_fades.h), without GL:
 // plans are written by hand, frame after frame, as the selection would return them.
 #include "render/cluster_fades.h"
+#include "tests/render/render_test_scenes.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -8,12 +9,7 @@
 namespace cavewall::render {
 namespace {
 
-scenes::Bounds box(glm::dvec3 lo, glm::dvec3 hi) {
-    scenes::Bounds b;
-    b.add(lo);
-    b.add(hi);
-    return b;
-}
+using testing::box;
 
 // Four objects 1 m wide along x at x = 0, 2, 4, 6; clusters 4 = {0, 1}, 5 = {2, 3}; root 6.
 // Objects cost 0.01 + triangles * 1e-4 ms (100 triangles: 0.02 ms); boxes 0.05 / 0.04 ms.
@@ -82,7 +78,7 @@ TEST(ClusterFades, ARefinedBoxFadesOutOverItsChildrenAndIsGoneAfterTheFade) {
         EXPECT_FLOAT_EQ(p.boxes[0].weight, 1.0f - k / 4.0f);
         EXPECT_EQ(p.fades, 1);
         EXPECT_DOUBLE_EQ(p.predictedMs, 1.0 + 0.05);  // the box's cost on top
-        EXPECT_THAT(p.objects, testing::ElementsAre(0, 1, 2, 3));
+        EXPECT_THAT(p.objects, ::testing::ElementsAre(0, 1, 2, 3));
     }
 }
 
@@ -95,7 +91,7 @@ TEST(ClusterFades, ACoarsenedBoxFadesInOverWhatWasDrawnBelowIt) {
     // the root's box fades in over them, drawn after box 5, which lies below it.
     p = plan({}, {{6, ClusterRep::Textured}});
     fades.apply(m, kEye, p);
-    EXPECT_THAT(p.objects, testing::ElementsAre(0, 1));
+    EXPECT_THAT(p.objects, ::testing::ElementsAre(0, 1));
     EXPECT_EQ(p.ghostObjects, 2);
     ASSERT_EQ(p.boxes.size(), 2u);
     EXPECT_EQ(p.boxes[0].node, 5);
@@ -163,7 +159,7 @@ TEST(ClusterFades, AnUndoneSwitchEndsItsFadeAndABackSwitchFadesTheOtherWay) {
     p = plan({}, {{4, ClusterRep::Textured}, {5, ClusterRep::Textured}});  // and back
     fades.apply(m, kEye, p);
     EXPECT_EQ(p.fades, 1);                           // the refine fade ended, a coarsen began
-    EXPECT_THAT(p.objects, testing::ElementsAre(0, 1));
+    EXPECT_THAT(p.objects, ::testing::ElementsAre(0, 1));
     ASSERT_EQ(p.boxes.size(), 2u);
     const auto four = std::find_if(p.boxes.begin(), p.boxes.end(), [](const ClusterBoxDraw& b) { return b.node == 4; });
     ASSERT_NE(four, p.boxes.end());

@@ -3,6 +3,7 @@
 #include "render/cluster_diagram.h"
 #include "render/cluster_frame.h"
 #include "render/cluster_impostor.h"
+#include "tests/render/render_test_scenes.h"
 
 #include "display/display.h"
 #include "config/display_config.h"
@@ -15,12 +16,7 @@
 namespace cavewall::render {
 namespace {
 
-scenes::Bounds box(glm::dvec3 lo, glm::dvec3 hi) {
-    scenes::Bounds b;
-    b.add(lo);
-    b.add(hi);
-    return b;
-}
+using testing::box;
 
 TEST(ClusterImpostor, FacesAreSeenFromOutsideAndCoverTheBox) {
     const scenes::Bounds b = box({-1, 0, -2}, {3, 1, 2});
@@ -41,7 +37,7 @@ TEST(ClusterImpostor, SamplingEyesLieInTheirOwnRegionOutsideTheFace) {
     const scenes::Bounds b = box({0, 0, 0}, {2, 1, 4});
     for (int f = 0; f < kBoxFaces; ++f)
         for (int r = 0; r < kFaceRegions; ++r) {
-            SCOPED_TRACE(testing::Message() << "face " << f << " region " << r);
+            SCOPED_TRACE(::testing::Message() << "face " << f << " region " << r);
             const glm::dvec3 eye = samplingEye(b, f, r);
             EXPECT_TRUE(faceTowards(b, f, eye));
             EXPECT_EQ(viewRegion(b, f, eye), r);
@@ -110,7 +106,7 @@ TEST(ClusterFrame, DrawsTheClusterAsATexturedBoxUnderASmallBudgetAndItsObjectsUn
     EXPECT_EQ(small.textured, 1);
     EXPECT_DOUBLE_EQ(small.predictedMs, 0.05);
     const ClusterFramePlan large = planClusterFrame(m, views, glm::dmat4(1.0), eye, 0.42, nullptr);
-    EXPECT_THAT(large.objects, testing::ElementsAre(0, 1));
+    EXPECT_THAT(large.objects, ::testing::ElementsAre(0, 1));
     EXPECT_TRUE(large.boxes.empty());
     EXPECT_NEAR(large.predictedMs, 0.42, 1e-12);
     EXPECT_LE(large.predictedMs, large.budgetMs + 1e-12);

@@ -38,4 +38,11 @@ int addImage(scenes::Scene& scene) {
     return static_cast<int>(scene.images.size()) - 1;
 }
 
+scenes::Bounds box(glm::dvec3 lo, glm::dvec3 hi) {
+    scenes::Bounds b;
+    b.add(lo);
+    b.add(hi);
+    return b;
+}
+
 }  // namespace cavewall::render::testing

@@ -25,6 +25,9 @@ struct Look {
 // Adds a `size` cube centred at `centre` with its own mesh and material; returns its object index.
 int addCube(scenes::Scene& scene, glm::dvec3 centre, double size = 0.5, const Look& look = {});
 
+// The bounds with corners lo and hi.
+scenes::Bounds box(glm::dvec3 lo, glm::dvec3 hi);
+
 // Adds a 1 x 1 image so that materials can name a texture; returns its index.
 int addImage(scenes::Scene& scene);
 

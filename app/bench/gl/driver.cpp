@@ -24,14 +24,6 @@ using namespace bench;
 
 namespace {
 
-std::string fixed(double v, int decimals = 1) {
-    std::ostringstream s;
-    s.setf(std::ios::fixed);
-    s.precision(decimals);
-    s << v;
-    return s.str();
-}
-
 struct BakedWalls {
     walls::WallSetup setup;
     double texels = 0.0, diskMB = 0.0;

@@ -8,6 +8,7 @@
 #include "display/gl/render_targets.h"
 #include "display/gl/scene_renderer.h"
 #include "app/bench/path.h"
+#include "app/bench/report.h"
 #include "render/lod_choice.h"
 #include "scenes/generate.h"
 #include "scenes/loader.h"
@@ -32,16 +33,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr double kMB = 1024.0 * 1024.0;
+using bench::fixed;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-std::string fixed(double v, int decimals = 1) {
-    std::ostringstream s;
-    s.setf(std::ios::fixed);
-    s.precision(decimals);
-    s << v;
-    return s.str();
-}
 
 std::string loadAverage() {
     std::ifstream in("/proc/loadavg");
