@@ -1,5 +1,7 @@
 #include "render/render_list.h"
 
+#include "render/vertex_lighting.h"
+
 #include <algorithm>
 #include <chrono>
 
@@ -15,15 +17,21 @@ double msSince(Clock::time_point start) {
 
 }  // namespace
 
+BatchKey drawKey(const RenderScene& scene, const Draw& draw) {
+    BatchKey key = scene.batchKey(draw.object);
+    key.vertexLit = draw.vertexLit;
+    return key;
+}
+
 void appendBatches(const RenderScene& scene, std::vector<Draw>& draws, bool byKey, int offset,
                    std::vector<Batch>& batches) {
     if (byKey)
         std::stable_sort(draws.begin(), draws.end(), [&](const Draw& a, const Draw& b) {
-            return scene.batchKey(a.object) < scene.batchKey(b.object);
+            return drawKey(scene, a) < drawKey(scene, b);
         });
     const std::size_t firstNew = batches.size();
     for (int d = 0; d < static_cast<int>(draws.size()); ++d) {
-        const BatchKey& key = scene.batchKey(draws[d].object);
+        const BatchKey key = drawKey(scene, draws[d]);
         if (batches.size() > firstNew && batches.back().key == key) {
             ++batches.back().count;
         } else {
@@ -33,7 +41,10 @@ void appendBatches(const RenderScene& scene, std::vector<Draw>& draws, bool byKe
 }
 
 ListBuilder::ListBuilder(const RenderScene& scene)
-    : _scene(scene), _sortKeys(scene.objectCount(), 0.0), _listStamp(scene.objectCount(), 0) {}
+    : _scene(scene),
+      _sortKeys(scene.objectCount(), 0.0),
+      _listStamp(scene.objectCount(), 0),
+      _vertexLightingTolerance(kVertexLightingTolerance) {}
 
 ListBuilder::Selection ListBuilder::select(const glm::dmat4& clipFromWorld, const DrawFilter& filter) {
     const int count = _scene.objectCount();
@@ -92,18 +103,18 @@ const RenderList& ListBuilder::build(const display::OffAxisFrustum& frustum, con
         _sortKeys[i] = glm::dot(outside, outside);
     }
     std::stable_sort(_opaque.begin(), _opaque.end(), [&](int a, int b) { return _sortKeys[a] < _sortKeys[b]; });
-    addDraws(_opaque, filter);
+    addDraws(_opaque, filter, eye);
     appendBatches(_scene, _pending, true, 0, list.batches);
     list.draws.insert(list.draws.end(), _pending.begin(), _pending.end());
     list.firstBlended = list.batches.size();
-    addDraws(_blended, filter);
+    addDraws(_blended, filter, eye);
     appendBatches(_scene, _pending, false, static_cast<int>(list.draws.size()), list.batches);
     list.draws.insert(list.draws.end(), _pending.begin(), _pending.end());
     return list;
 }
 
 // Fills _pending with the draws of `objects` that have indices at their level.
-void ListBuilder::addDraws(const std::vector<int>& objects, const DrawFilter& filter) {
+void ListBuilder::addDraws(const std::vector<int>& objects, const DrawFilter& filter, const glm::dvec3& eye) {
     _pending.clear();
     const std::vector<int>* levels = filter.lodLevels;
     for (int i : objects) {
@@ -112,7 +123,11 @@ void ListBuilder::addDraws(const std::vector<int>& objects, const DrawFilter& fi
         const int level = _scene.clampLevel(mesh, wanted);
         const std::uint32_t indices = _scene.indexCount(mesh, level);
         if (indices == 0) continue;
-        _pending.push_back({i, level});
+        const scenes::Bounds& b = _scene.objects()[i].worldBounds;
+        const double distance = glm::length(glm::max(glm::max(b.min - eye, eye - b.max), glm::dvec3(0.0)));
+        const bool vertexLit = litPerVertex(_scene.flatEdge(mesh, level), _scene.modelStretch(i), distance,
+                                            _vertexLightingTolerance);
+        _pending.push_back({i, level, vertexLit});
         _list.triangles += indices / 3;
     }
 }

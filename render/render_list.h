@@ -7,6 +7,11 @@
 // clipFromWorld; an infinite far plane never culls), minus those whose level has no indices.
 // Each at the level DrawFilter::lodLevels names, clamped to its mesh's levels.
 //
+// Lighting: a draw is lit per vertex when its level is flat and the bound of
+// render/vertex_lighting.h, at the least distance of the object's world bounds from the eye, is
+// within the builder's tolerance (kVertexLightingTolerance unless set; 0: always per pixel);
+// this is part of the batch key.
+//
 // Order: opaque and mask objects first, front to back (by the distance of their bounds from
 // the eye, ties in scene order) so that the depth test rejects hidden fragments before they
 // are shaded, then grouped into one batch per BatchKey (stable: front to back within a batch;
@@ -27,9 +32,13 @@ namespace cavewall::render {
 
 // One object's draw.
 struct Draw {
-    int object = 0;  // Scene::objects index
-    int level = 0;   // level of detail, within the mesh's levels
+    int object = 0;          // Scene::objects index
+    int level = 0;           // level of detail, within the mesh's levels
+    bool vertexLit = false;  // lit per vertex: its bound (vertex_lighting.h) is within the tolerance
 };
+
+// The batch key of `draw`: its object's, with the draw's lighting.
+BatchKey drawKey(const RenderScene& scene, const Draw& draw);
 
 // A run of draws sharing a batch key: one multi-draw.
 struct Batch {
@@ -61,6 +70,10 @@ class ListBuilder {
 public:
     explicit ListBuilder(const RenderScene& scene);
 
+    // The tolerance on the light factor below which draws are lit per vertex (<= 0: never).
+    void setVertexLightingTolerance(double tolerance) { _vertexLightingTolerance = tolerance; }
+    double vertexLightingTolerance() const { return _vertexLightingTolerance; }
+
     // The objects `filter` selects whose bounds meet the frustum of `clipFromWorld` (all
     // selected ones when filter.frustumCull is false), in scene order, split into opaque
     // (opaque and mask materials) and blended. The returned vectors live until the next call.
@@ -76,7 +89,7 @@ public:
                             const DrawFilter& filter);
 
 private:
-    void addDraws(const std::vector<int>& objects, const DrawFilter& filter);
+    void addDraws(const std::vector<int>& objects, const DrawFilter& filter, const glm::dvec3& eye);
 
     const RenderScene& _scene;
     RenderList _list;
@@ -85,6 +98,7 @@ private:
     std::vector<double> _sortKeys;            // per object: squared distance of its bounds from the eye
     std::vector<std::uint32_t> _listStamp;    // per object: == _stamp when in DrawFilter::objects
     std::uint32_t _stamp = 0;
+    double _vertexLightingTolerance;
 };
 
 }  // namespace cavewall::render

@@ -1,6 +1,7 @@
 #include "render/render_scene.h"
 
 #include "display/pixel_scale.h"
+#include "render/vertex_lighting.h"
 
 #include <algorithm>
 
@@ -40,10 +41,18 @@ RenderScene::RenderScene(const scenes::Scene& scene, bool buildLods, bool cullBa
     // The same ranges the GPU scene uploads: a mesh's level chain, else its own indices.
     _levelStart.push_back(0);
     for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+        const scenes::Mesh& mesh = scene.meshes[i];
         if (i < _lods.size() && !_lods[i].levels.empty()) {
-            for (const scenes::LodLevel& l : _lods[i].levels) _levelIndices.push_back(l.indexCount);
+            const std::vector<std::uint32_t>& indices = _lods[i].indices;
+            for (const scenes::LodLevel& l : _lods[i].levels) {
+                _levelIndices.push_back(l.indexCount);
+                const bool inRange = std::size_t{l.firstIndex} + l.indexCount <= indices.size();
+                _levelFlatEdge.push_back(
+                    inRange ? flatMaxEdge(mesh, std::span(indices).subspan(l.firstIndex, l.indexCount)) : -1.0);
+            }
         } else {
-            _levelIndices.push_back(static_cast<std::uint32_t>(scene.meshes[i].indices.size()));
+            _levelIndices.push_back(static_cast<std::uint32_t>(mesh.indices.size()));
+            _levelFlatEdge.push_back(flatMaxEdge(mesh, mesh.indices));
         }
         _levelStart.push_back(static_cast<int>(_levelIndices.size()));
     }

@@ -31,6 +31,7 @@ struct BatchKey {
     int sampler = 0;   // wrapS * 3 + wrapT (scenes::Wrap values); 0 without a texture
     FaceMode faces = FaceMode::CullCcw;
     bool alphaTest = false;  // the material's alpha mode is Mask
+    bool vertexLit = false;  // lit per vertex (render/vertex_lighting.h; per draw, see Draw)
     auto operator<=>(const BatchKey&) const = default;
 };
 
@@ -61,6 +62,9 @@ public:
     int clampLevel(int mesh, int level) const;
     // Indices (3 per triangle) of `mesh` at a level in range.
     std::uint32_t indexCount(int mesh, int level) const { return _levelIndices[_levelStart[mesh] + level]; }
+    // render::flatMaxEdge of `mesh` at a level in range: its longest edge in model units when
+    // every triangle is flat, else -1 (vertex_lighting.h).
+    double flatEdge(int mesh, int level) const { return _levelFlatEdge[_levelStart[mesh] + level]; }
 
 private:
     std::vector<scenes::Object> _objects;
@@ -70,6 +74,7 @@ private:
     std::vector<scenes::MeshLod> _lods;
     std::vector<int> _levelStart;               // per mesh + 1: first entry in _levelIndices
     std::vector<std::uint32_t> _levelIndices;   // per mesh and level: index count
+    std::vector<double> _levelFlatEdge;         // per mesh and level: flatMaxEdge
     scenes::Bvh _bvh;
 };
 

@@ -51,7 +51,10 @@ GlObject storageBuffer(std::size_t bytes, const void* data) {
 }
 
 // The scene shader variant with or without the alpha test, for this scene's textures.
-std::string programName(bool alphaTest) { return alphaTest ? "scene (alpha test)" : kProgramName; }
+std::string programName(bool alphaTest, bool vertexLit) {
+    return std::string(kProgramName) + (alphaTest ? " (alpha test)" : "") + (vertexLit ? " (per vertex)" : "");
+}
+int programIndex(bool alphaTest, bool vertexLit) { return (alphaTest ? 2 : 0) + (vertexLit ? 1 : 0); }
 
 void setViewport(const display::Viewport& vp, glm::bvec4 colorMask) {
     glViewport(vp.x, vp.y, vp.width, vp.height);
@@ -67,15 +70,18 @@ SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings
       _scene(scene, settings.lodPixels > 0.0, settings.cullBackFaces),
       _lists(_scene),
       _gpu(scene, _scene.hasLods() ? &_scene.lods() : nullptr, settings.pagedCells) {
+    _lists.setVertexLightingTolerance(settings.vertexLightingTolerance);
     const bool textured = _gpu.textureCount() > 0;
-    for (bool alphaTest : {false, true}) {
-        Program& p = _programs[alphaTest];
-        const std::string name = programName(alphaTest);
-        p.program = buildProgram(name, shaders::sceneShader(shaders::kSceneVertex, textured, alphaTest),
-                                 shaders::sceneShader(shaders::kSceneFragment, textured, alphaTest));
-        p.projection = uniformLocation(p.program.id(), name, "uProjection");
-        p.ambient = uniformLocation(p.program.id(), name, "uAmbient");
-    }
+    for (bool alphaTest : {false, true})
+        for (bool vertexLit : {false, true}) {
+            Program& p = _programs[programIndex(alphaTest, vertexLit)];
+            const std::string name = programName(alphaTest, vertexLit);
+            p.program =
+                buildProgram(name, shaders::sceneShader(shaders::kSceneVertex, textured, alphaTest, vertexLit),
+                             shaders::sceneShader(shaders::kSceneFragment, textured, alphaTest, vertexLit));
+            p.projection = uniformLocation(p.program.id(), name, "uProjection");
+            p.ambient = uniformLocation(p.program.id(), name, "uAmbient");
+        }
     // One material record per mesh: its material (or the default one), with the mesh's own
     // texture-coordinate decoding folded into the texture transform.
     const int count = static_cast<int>(scene.materials.size());
@@ -303,7 +309,7 @@ void SceneRenderer::upload(ViewBuffers& buffers) {
 }
 
 void SceneRenderer::applyState(const render::BatchKey& state) {
-    glUseProgram(_programs[state.alphaTest].program.id());
+    glUseProgram(_programs[programIndex(state.alphaTest, state.vertexLit)].program.id());
     const bool cull = state.faces == render::FaceMode::CullCcw || state.faces == render::FaceMode::CullCw;
     if (cull) {
         glEnable(GL_CULL_FACE);

@@ -50,6 +50,7 @@
 #include "render/draw_filter.h"
 #include "render/render_list.h"
 #include "render/render_scene.h"
+#include "render/vertex_lighting.h"
 #include "scenes/scene.h"
 
 #include <glm/glm.hpp>
@@ -78,6 +79,9 @@ struct RenderSettings {
     // others are skipped (ViewStats::objectsDrawn does not count them). 0: everything
     // uploaded at construction.
     int pagedCells = 0;
+    // Draws whose per-vertex headlight provably differs from the per-pixel one by at most this
+    // much of the light factor are lit per vertex (render/vertex_lighting.h); 0: all per pixel.
+    double vertexLightingTolerance = render::kVertexLightingTolerance;
 };
 
 // ViewStats and FrameStats: display/frame_stats.h.
@@ -182,7 +186,8 @@ private:
     render::ListBuilder _lists;
     std::vector<shaders::MaterialRecord> _meshMaterials;  // per mesh
     GpuScene _gpu;
-    std::array<Program, 2> _programs;         // [0]: no discard; [1]: alpha test (MASK batches)
+    // [alpha test (MASK batches) * 2 + lit per vertex]
+    std::array<Program, 4> _programs;
     GpuTimer _timer;
     std::array<ViewBuffers, kViewBufferSets> _viewBuffers;
     int _nextViewBuffers = 0;

@@ -74,7 +74,9 @@ inline constexpr DrawAttribute kDrawAttributes[] = {
 // a texture fetch behind a per-material branch for every fragment. ALPHA_TEST 1 (alpha-MASK
 // batches only) discards below the cutoff; ALPHA_TEST 0 has no discard at all, so llvmpipe
 // tests and writes depth before shading and skips hidden fragments (a discard anywhere in a
-// shader, even behind a branch never taken, moves the depth test after it).
+// shader, even behind a branch never taken, moves the depth test after it). VERTEX_LIT 1 lights
+// per vertex (draws that render/vertex_lighting.h proves within its tolerance): the fragment
+// stage gets one lit colour instead of a position and a normal.
 inline constexpr const char* kSceneVertex = R"(#version 450 core
 layout(location = 0) in vec3 aPosition;   // normalised within the mesh's box (modelView decodes)
 layout(location = 1) in vec3 aNormal;
@@ -91,9 +93,12 @@ layout(location = 13) in vec3 aUv1;
 layout(location = 14) in vec3 aParams;       // x: alpha mode, y: textured, z: alpha cutoff
 
 uniform mat4 uProjection;    // reversed-Z off-axis projection
+uniform float uAmbient;
 
+#if !VERTEX_LIT
 out vec3 vViewPosition;
 out vec3 vNormal;
+#endif
 out vec2 vTexCoord;
 out vec4 vColor;             // base colour factor x vertex colour (the factor is per draw)
 flat out ivec2 vFlags;       // x: alpha mode, y: textured
@@ -102,8 +107,11 @@ flat out float vCutoff;
 void main() {
     vec4 p = vec4(aPosition, 1.0);
     p = vec4(dot(aModelView0, p), dot(aModelView1, p), dot(aModelView2, p), 1.0);
+    vec3 normal = aNormalMatrix * aNormal;
+#if !VERTEX_LIT
     vViewPosition = p.xyz;
-    vNormal = aNormalMatrix * aNormal;
+    vNormal = normal;
+#endif
 #if TEXTURED
     vec3 uv = vec3(aTexCoord, 1.0);
     vTexCoord = vec2(dot(aUv0, uv), dot(aUv1, uv));
@@ -111,6 +119,13 @@ void main() {
     vTexCoord = vec2(0.0);
 #endif
     vColor = aBaseColor * aColor;
+#if VERTEX_LIT
+    // The headlight per vertex (render/vertex_lighting.h bounds the difference): |n . v| is the
+    // per-pixel term with n turned towards the eye, for flat triangles.
+    float diffuse = 1.0;
+    if (dot(normal, normal) > 1e-12) diffuse = abs(dot(normalize(normal), normalize(-p.xyz)));
+    vColor.rgb *= uAmbient + (1.0 - uAmbient) * diffuse;
+#endif
     vFlags = ivec2(aParams.xy);
     vCutoff = aParams.z;
     gl_Position = uProjection * p;
@@ -118,15 +133,19 @@ void main() {
 )";
 
 inline constexpr const char* kSceneFragment = R"(#version 450 core
+#if !VERTEX_LIT
 in vec3 vViewPosition;
 in vec3 vNormal;
+#endif
 in vec2 vTexCoord;
 in vec4 vColor;
 flat in ivec2 vFlags;
 flat in float vCutoff;
 
 layout(binding = 0) uniform sampler2D uBaseColorTexture;  // sRGB: sampled as linear
+#if !VERTEX_LIT
 uniform float uAmbient;
+#endif
 
 out vec4 fragColor;          // linear; the sRGB target encodes it
 
@@ -139,6 +158,9 @@ void main() {
 #if ALPHA_TEST
     if (vFlags.x == 1 && color.a < vCutoff) discard;
 #endif
+#if VERTEX_LIT
+    float light = 1.0;       // already in vColor
+#else
     // Headlight at the eye (the view origin). Meshes without normals are lit fully.
     float diffuse = 1.0;
     if (dot(vNormal, vNormal) > 1e-12) {
@@ -146,17 +168,19 @@ void main() {
         diffuse = max(dot(n, normalize(-vViewPosition)), 0.0);
     }
     float light = uAmbient + (1.0 - uAmbient) * diffuse;
+#endif
     fragColor = vec4(color.rgb * light, vFlags.x == 2 ? color.a : 1.0);
 }
 )";
 
-// `source` (starting with its #version line) with "#define TEXTURED 0|1" and
-// "#define ALPHA_TEST 0|1" after that line.
-inline std::string sceneShader(const char* source, bool textured, bool alphaTest) {
+// `source` (starting with its #version line) with "#define TEXTURED 0|1",
+// "#define ALPHA_TEST 0|1" and "#define VERTEX_LIT 0|1" after that line.
+inline std::string sceneShader(const char* source, bool textured, bool alphaTest, bool vertexLit) {
     std::string s(source);
     const std::size_t eol = s.find('\n');
     return s.insert(eol + 1, std::string(textured ? "#define TEXTURED 1\n" : "#define TEXTURED 0\n") +
-                                 (alphaTest ? "#define ALPHA_TEST 1\n" : "#define ALPHA_TEST 0\n"));
+                                 (alphaTest ? "#define ALPHA_TEST 1\n" : "#define ALPHA_TEST 0\n") +
+                                 (vertexLit ? "#define VERTEX_LIT 1\n" : "#define VERTEX_LIT 0\n"));
 }
 
 }  // namespace cavewall::gl::shaders

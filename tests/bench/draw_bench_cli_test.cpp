@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <utility>
 #include <filesystem>
 
 namespace cavewall::test {
@@ -20,7 +21,7 @@ fs::path outputDir() {
     return fs::path(dir ? dir : "/tmp") / "draw_bench_cli";
 }
 
-TEST(DrawBenchCli, BothCullingModesTimedWithConsistentRates) {
+TEST(DrawBenchCli, BothCullingModesAndBothLightingsTimedWithConsistentRates) {
     const fs::path root = outputDir();
     const CliResult g = runCavewall({"generate", "boxes", "--triangles", "1200", "--out", (root / "boxes").string()});
     ASSERT_EQ(g.exitCode, 0) << g.err;
@@ -28,14 +29,18 @@ TEST(DrawBenchCli, BothCullingModesTimedWithConsistentRates) {
     fs::remove(csvFile);
     const CliResult r = runCavewall({"draw-bench", (root / "boxes" / "boxes.glb").string(), "--frames", "3", "--warmup",
                                      "1", "--resolution", "128", "--csv", csvFile.string(), "--images",
-                                     (root / "images").string()});
+                                     (root / "images").string(), "--compare-lighting"});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
-    EXPECT_THAT(r.out, HasSubstr("| culled | 1200 |"));
-    EXPECT_THAT(r.out, HasSubstr("| drawn (culling off) | 1200 |"));
+    EXPECT_THAT(r.out, HasSubstr("| culled | default | 1200 |"));
+    EXPECT_THAT(r.out, HasSubstr("| drawn (culling off) | per pixel only | 1200 |"));
     const CsvTable csv = readCsv(csvFile);
-    ASSERT_EQ(csv.size(), 2u);
-    EXPECT_EQ(csv[0].at("culling"), "on");
-    EXPECT_EQ(csv[1].at("culling"), "off");
+    ASSERT_EQ(csv.size(), 4u);
+    const std::pair<const char*, const char*> rows[] = {
+        {"on", "default"}, {"on", "per-pixel"}, {"off", "default"}, {"off", "per-pixel"}};
+    for (std::size_t i = 0; i < 4; ++i) {
+        EXPECT_EQ(csv[i].at("culling"), rows[i].first) << i;
+        EXPECT_EQ(csv[i].at("lighting"), rows[i].second) << i;
+    }
     for (const CsvRow& row : csv) {
         SCOPED_TRACE(row.at("culling"));
         // The whole hall is in view: every triangle is submitted.
@@ -53,6 +58,8 @@ TEST(DrawBenchCli, BothCullingModesTimedWithConsistentRates) {
     }
     EXPECT_TRUE(fs::exists(root / "images" / "culled.png"));
     EXPECT_TRUE(fs::exists(root / "images" / "both.png"));
+    EXPECT_TRUE(fs::exists(root / "images" / "culled-per-pixel.png"));
+    EXPECT_TRUE(fs::exists(root / "images" / "both-per-pixel.png"));
 }
 
 TEST(DrawBenchCli, MissingSceneAndBadFlagsAreErrors) {

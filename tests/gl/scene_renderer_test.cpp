@@ -6,12 +6,14 @@
 #include "display/display.h"
 #include "display/gl/shader.h"
 #include "display/gl/snapshot.h"
+#include "render/render_list.h"
 #include "scenes/primitives.h"
 #include "tests/gl/gl_test_support.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gmock/gmock.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace cavewall::gl {
@@ -167,6 +169,42 @@ TEST_F(SceneRendererTest, BaseColourTextureIsSampledWithItsTransform) {
     const scenes::Image shifted = render(scene, glm::dmat4(1.0), unlit());
     EXPECT_GT(pixel(shifted, 16, 48).g, 240);
     EXPECT_GT(pixel(shifted, 48, 48).r, 240);
+}
+
+TEST_F(SceneRendererTest, LightingPerVertexMatchesPerPixelWithinOneLevel) {
+    // Boxes of 0.3-1 m, 3-42 m away, turned every way: the far ones are lit per vertex
+    // (render/vertex_lighting.h proves a difference of at most 1/512 of the light, half an sRGB
+    // level), the near ones per pixel. Drawn both ways, no channel of any pixel may differ by
+    // more than one level (the bound plus rounding).
+    scenes::Scene scene;
+    const int material = addMaterial(scene, {0.9f, 0.6f, 0.3f, 1.0f});
+    for (int i = 0; i < 40; ++i) {
+        const double z = -3.0 - i;
+        const float size = 0.3f + 0.7f * static_cast<float>(i % 5) / 4.0f;
+        scenes::Mesh box = scenes::makeBox({size, size, size}, glm::vec4(1.0f));
+        box.material = material;
+        scene.meshes.push_back(std::move(box));
+        const glm::dmat4 place = glm::rotate(glm::translate(glm::dmat4(1.0), {0.08 * z * std::sin(i), 0.08 * z * std::cos(i), z}),
+                                             0.7 * i, glm::normalize(glm::dvec3(1.0, 0.5 * i, 0.3)));
+        scenes::addObject(scene, static_cast<int>(scene.meshes.size()) - 1, place, "box");
+    }
+    // A floor of two big triangles 1.5 m under the eye: per vertex it would lose the light's
+    // peak under the eye by far more than a level (that is what makes this test fail when the
+    // bound is ignored).
+    addQuad(scene, {0, -1.5, -10}, 20.0f, material, glm::rotate(glm::dmat4(1.0), -glm::half_pi<double>(), {1.0, 0.0, 0.0}));
+    render::RenderScene rs(scene, false);
+    render::ListBuilder lists(rs);
+    const display::Display d(oneScreen());
+    const render::RenderList& list = lists.build(d.views(kEyeAtOrigin).at(0).frustum, glm::dmat4(1.0), {});
+    const auto perVertex = std::count_if(list.draws.begin(), list.draws.end(), [](const render::Draw& x) { return x.vertexLit; });
+    EXPECT_GT(perVertex, 5);
+    EXPECT_LT(perVertex, static_cast<long>(list.draws.size()));
+    RenderSettings perPixelOnly;
+    perPixelOnly.vertexLightingTolerance = 0.0;
+    const scenes::Image mixed = render(scene), exact = render(scene, glm::dmat4(1.0), perPixelOnly);
+    int worst = 0;
+    for (std::size_t i = 0; i < mixed.rgba.size(); ++i) worst = std::max(worst, std::abs(mixed.rgba[i] - exact.rgba[i]));
+    EXPECT_LE(worst, 1);
 }
 
 TEST_F(SceneRendererTest, MovingTheCaveAndTheSceneTogetherChangesNothingEvenFarAway) {

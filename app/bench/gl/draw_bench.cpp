@@ -41,8 +41,8 @@ config::DisplayConfig homeDisplay(const bench::HomeView& view, int resolution) {
     return c;
 }
 
-// Both configurations are timed frame by frame in turn, in ABBA order (culled, both, both,
-// culled, ...), so that neither gains from running first or second under a changing load and
+// The configurations are timed frame by frame in turn, in ABBA order (culled, both, both,
+// culled, ...; with more, forward then reverse), so that neither gains from running first or second under a changing load and
 // both share the warm-up state of llvmpipe's threads and caches.
 std::vector<DrawBenchRow> timeConfigurations(const scenes::Scene& scene, const display::Display& disp,
                                              const Context& context, const DrawBenchOptions& options,
@@ -52,13 +52,17 @@ std::vector<DrawBenchRow> timeConfigurations(const scenes::Scene& scene, const d
         DrawBenchRow row;
     };
     std::vector<Configuration> configurations;
-    for (bool cull : {true, false}) {
-        RenderSettings settings;
-        settings.cullBackFaces = cull;
-        Configuration c{std::make_unique<SceneRenderer>(scene, settings), {}};
-        c.row.cullBackFaces = cull;
-        configurations.push_back(std::move(c));
-    }
+    for (bool cull : {true, false})
+        for (bool perPixel : {false, true}) {
+            if (perPixel && !options.compareLighting) continue;
+            RenderSettings settings;
+            settings.cullBackFaces = cull;
+            if (perPixel) settings.vertexLightingTolerance = 0.0;
+            Configuration c{std::make_unique<SceneRenderer>(scene, settings), {}};
+            c.row.cullBackFaces = cull;
+            c.row.perPixelOnly = perPixel;
+            configurations.push_back(std::move(c));
+        }
     const RenderTargets targets(disp, context);
     const std::vector<display::ScreenView> views = disp.views(disp.defaultHead());
     auto frame = [&](Configuration& c, bool timed) {
@@ -75,8 +79,8 @@ std::vector<DrawBenchRow> timeConfigurations(const scenes::Scene& scene, const d
     };
     for (int i = 0; i < options.warmup + options.frames; ++i) {
         const bool timed = i >= options.warmup;
-        if (i % 2 == 0) frame(configurations[0], timed), frame(configurations[1], timed);
-        else frame(configurations[1], timed), frame(configurations[0], timed);
+        const std::size_t n = configurations.size();
+        for (std::size_t k = 0; k < n; ++k) frame(configurations[i % 2 == 0 ? k : n - 1 - k], timed);
     }
     const auto pixels = static_cast<std::size_t>(options.resolution) * static_cast<std::size_t>(options.resolution);
     const SceneRenderer& any = *configurations[0].renderer;
@@ -87,8 +91,9 @@ std::vector<DrawBenchRow> timeConfigurations(const scenes::Scene& scene, const d
         c.row.timing = bench::drawTiming(c.row.frameMs, c.row.cpuMs, c.row.trianglesSubmitted, pixels);
         if (options.imageDir) {
             frame(c, false);  // the last frame drawn is the other configuration's
-            scenes::writeImage(*options.imageDir / (c.row.cullBackFaces ? "culled.png" : "both.png"),
-                               targets.read(0, 0));
+            const std::string name = std::string(c.row.cullBackFaces ? "culled" : "both") +
+                                     (c.row.perPixelOnly ? "-per-pixel" : "") + ".png";
+            scenes::writeImage(*options.imageDir / name, targets.read(0, 0));
         }
         rows.push_back(std::move(c.row));
     }

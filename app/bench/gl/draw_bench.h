@@ -11,7 +11,9 @@
 // in turn (ABBA order) after `warmup` untimed frames of each, so that neither configuration
 // gains from its place in the run. A frame is timed on the CPU clock from before the clear to after
 // glFinish, so it holds every stage of the GPU's work (on llvmpipe: vertex shading, binning,
-// rasterisation); its process CPU time (all threads) is recorded beside it.
+// rasterisation); its process CPU time (all threads) is recorded beside it. With
+// compareLighting the four configurations (culling on/off, default lighting / per pixel only)
+// are timed in turn, in forward and then reverse order.
 
 #include "app/bench/draw_view.h"
 #include "scenes/scene.h"
@@ -29,10 +31,14 @@ struct DrawBenchOptions {
     int resolution = 1024;                             // pixels per side of the square view
     double fovDeg = bench::kOsgViewerFovDeg;           // vertical (and horizontal) field of view
     std::optional<std::filesystem::path> imageDir;     // write culled.png and both.png there
+    // Also time both configurations with every draw lit per pixel (vertex lighting off,
+    // render/vertex_lighting.h), in the same rotation: what lighting per vertex gains.
+    bool compareLighting = false;
 };
 
 struct DrawBenchRow {
     bool cullBackFaces = true;
+    bool perPixelOnly = false;                         // vertex lighting off
     bench::DrawTiming timing;
     std::size_t trianglesSubmitted = 0;                // per frame, after frustum culling
     std::vector<double> frameMs;                       // every timed frame, in order (wall clock)
@@ -45,7 +51,9 @@ struct DrawBenchResult {
     std::size_t triangles = 0;                         // the scene's drawn triangles
     double vertexBytesPerTriangle = 0.0;               // GPU vertex buffer / triangles
     double indexBytesPerTriangle = 0.0;                // GPU index buffer / triangles
-    std::vector<DrawBenchRow> rows;                    // culling on, then off
+    std::vector<DrawBenchRow> rows;                    // culling on, then off (each with the
+                                                       // default lighting, then per pixel only
+                                                       // with compareLighting)
 };
 
 // Runs both configurations in a headless context. `scene` must have at least one object.
