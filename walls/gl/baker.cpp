@@ -1,6 +1,7 @@
 #include "walls/gl/baker.h"
 
 #include "config/error.h"
+#include "render/vertex_lighting.h"
 #include "scenes/loader.h"
 #include "scenes/scene_description_io.h"
 #include "walls/bake_cache.h"
@@ -77,6 +78,9 @@ std::uint64_t settingsKey(const BakeSettings& s) {
     if (s.kind == walls::WallKind::Depth) h.text("depth wall v1");
     // Full-detail bakes keep their keys; levels of detail draw other pixels.
     if (s.lodTexels > 0.0) h.text("lod texels v1").number(s.lodTexels);
+    // The wall renderer lights per vertex where that is within this tolerance (RenderSettings
+    // default; render/vertex_lighting.h): other pixels, by at most half a level.
+    h.text("vertex lighting v1").number(render::kVertexLightingTolerance);
     return h.value();
 }
 

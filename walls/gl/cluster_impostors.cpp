@@ -1,6 +1,7 @@
 #include "walls/gl/cluster_impostors.h"
 
 #include "config/error.h"
+#include "render/vertex_lighting.h"
 #include "scenes/flip.h"
 #include "scenes/image_io.h"
 #include "walls/bake_key.h"
@@ -44,6 +45,7 @@ std::uint64_t clusterKey(const render::ClusterNode& cluster, const std::vector<s
     walls::KeyHasher h;
     // Bump the text when the impostors, their files or the accuracy measure change.
     h.text("cavewall cluster impostor v1").integer(s.resolution).integer(s.accuracyResolution).number(s.ambient);
+    h.text("vertex lighting v1").number(render::kVertexLightingTolerance);  // baker.cpp, settingsKey
     h.integer(render::kFaceRegions).number(render::kRegionTiltDeg).number(render::kSamplingDistance);
     for (int o : cluster.objects) h.integer(static_cast<std::int64_t>(objects[o]));
     return h.value();
