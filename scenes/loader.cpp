@@ -13,15 +13,6 @@
 namespace cavewall::scenes {
 namespace {
 
-// '*' matches any run of characters (also none); everything else matches itself.
-bool matchesPattern(std::string_view name, std::string_view pattern) {
-    if (pattern.empty()) return name.empty();
-    if (pattern[0] == '*')
-        for (std::size_t skip = 0; skip <= name.size(); ++skip)
-            if (matchesPattern(name.substr(skip), pattern.substr(1))) return true;
-    return !name.empty() && pattern[0] != '*' && name[0] == pattern[0] && matchesPattern(name.substr(1), pattern.substr(1));
-}
-
 glm::dmat4 fileTransform(const ModelFile& m) {
     glm::dmat4 up(1.0);
     // Z-up to Y-up: +Z becomes +Y and +Y becomes -Z (a -90° turn about +X), right-handed kept.
@@ -53,7 +44,7 @@ void merge(Scene& scene, Scene&& part, const glm::dmat4& worldFromFile, const Mo
             continue;
         }
         bool structure = model.structure;
-        for (const std::string& p : model.structureNodes) structure = structure || matchesPattern(o.name, p);
+        for (const std::string& p : model.structureNodes) structure = structure || matchesNodePattern(o.name, p);
         addObject(scene, o.mesh + meshBase, worldFromFile * o.worldFromModel, o.name,
                   structure ? Role::Structure : Role::Content);
     }
@@ -74,6 +65,27 @@ void prepareForDrawing(Scene& scene) {
 
 }  // namespace
 
+bool matchesNodePattern(std::string_view name, std::string_view pattern) {
+    // Greedy with one backtrack point: the last '*' seen and where in the name it took over.
+    std::size_t n = 0, p = 0, star = std::string_view::npos, mark = 0;
+    while (n < name.size()) {
+        if (p < pattern.size() && pattern[p] == '*') {
+            star = p++;
+            mark = n;
+        } else if (p < pattern.size() && pattern[p] == name[n]) {
+            ++p;
+            ++n;
+        } else if (star != std::string_view::npos) {
+            p = star + 1;
+            n = ++mark;
+        } else {
+            return false;
+        }
+    }
+    while (p < pattern.size() && pattern[p] == '*') ++p;
+    return p == pattern.size();
+}
+
 Scene loadScene(const SceneDescription& description) {
     Scene scene;
     scene.name = description.name;
@@ -84,7 +96,7 @@ Scene loadScene(const SceneDescription& description) {
         if (m.splitMetres > 0.0 && splitLargeObjects(scene, first, scene.objects.size(), m.splitMetres).objectsCut > 0)
             for (std::size_t i = first; i < scene.objects.size(); ++i)  // patterns may name a chunk
                 for (const std::string& p : m.structureNodes)
-                    if (matchesPattern(scene.objects[i].name, p)) scene.objects[i].role = Role::Structure;
+                    if (matchesNodePattern(scene.objects[i].name, p)) scene.objects[i].role = Role::Structure;
     }
     prepareForDrawing(scene);
     for (Object& o : scene.objects) o.cell = findCell(description.cells, o.worldBounds.centre());

@@ -11,8 +11,13 @@
 #include "scenes/scene_description.h"
 
 #include <filesystem>
+#include <string_view>
 
 namespace cavewall::scenes {
+
+// Whether a node name matches a structureNodes pattern: '*' matches any run of characters (also
+// none), everything else itself. Linear in name x pattern (no backtracking blow-up).
+bool matchesNodePattern(std::string_view name, std::string_view pattern);
 
 // Loads one glTF/GLB file; objects are in the file's own frame (glTF: metres, +Y up). Vertex
 // data is as the file stores it (no welding or reordering).

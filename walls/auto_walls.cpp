@@ -1,6 +1,7 @@
 #include "walls/auto_walls.h"
 
 #include "config/error.h"
+#include "scenes/loader.h"
 #include "scenes/region.h"
 #include "scenes/scene_description_io.h"
 #include "walls/plan_io.h"
@@ -30,18 +31,6 @@ Shape shapeOf(const scenes::Bounds& b) {
     return shape;
 }
 
-bool matchesPattern(const std::string& name, const std::string& pattern) {
-    // '*' matches any run of characters (as scene.json's structureNodes).
-    std::size_t n = 0, p = 0, star = std::string::npos, mark = 0;
-    while (n < name.size()) {
-        if (p < pattern.size() && pattern[p] == '*') star = p++, mark = n;
-        else if (p < pattern.size() && pattern[p] == name[n]) ++p, ++n;
-        else if (star != std::string::npos) p = star + 1, n = ++mark;
-        else return false;
-    }
-    while (p < pattern.size() && pattern[p] == '*') ++p;
-    return p == pattern.size();
-}
 
 double overlap1d(double a0, double a1, double b0, double b1) { return std::max(0.0, std::min(a1, b1) - std::max(a0, b0)); }
 
@@ -314,7 +303,7 @@ AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDesc
     for (const scenes::Object& o : scene.objects) {
         const Shape s = shapeOf(o.worldBounds);
         bool named = o.role == scenes::Role::Structure;
-        for (const std::string& p : patterns) named = named || matchesPattern(o.name, p);
+        for (const std::string& p : patterns) named = named || scenes::matchesNodePattern(o.name, p);
         bool plane = s.second > 0.0 && s.thickness <= options.planarThickness * s.second;
         if (plane) {  // large: each of its two long axes covers planarExtent of the model's
             for (int a = 0; a < 3; ++a)
@@ -367,7 +356,7 @@ AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDesc
     if (!named.models.empty()) {
         std::vector<std::string>& nodes = named.models.front().structureNodes;
         for (const std::string& s : result.structure)
-            if (std::none_of(patterns.begin(), patterns.end(), [&](const std::string& p) { return matchesPattern(s, p); }))
+            if (std::none_of(patterns.begin(), patterns.end(), [&](const std::string& p) { return scenes::matchesNodePattern(s, p); }))
                 nodes.push_back(s);
     }
 

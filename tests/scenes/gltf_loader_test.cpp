@@ -11,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <string>
 
 namespace cavewall::scenes {
 namespace {
@@ -18,6 +19,28 @@ namespace {
 using testing::GltfBuilder;
 using testing::testOutput;
 using testing::triangleFile;
+
+TEST(NodePattern, StarsMatchAnyRunAndEverythingElseItself) {
+    EXPECT_TRUE(matchesNodePattern("Hall wall 3", "Hall*"));
+    EXPECT_TRUE(matchesNodePattern("Hall wall 3", "*wall*"));
+    EXPECT_TRUE(matchesNodePattern("wall", "*wall"));
+    EXPECT_TRUE(matchesNodePattern("", "*"));
+    EXPECT_TRUE(matchesNodePattern("abcbc", "a*bc"));
+    EXPECT_FALSE(matchesNodePattern("Hall wall 3", "wall*"));
+    EXPECT_FALSE(matchesNodePattern("abcbd", "a*bc"));
+    EXPECT_FALSE(matchesNodePattern("", "a"));
+    EXPECT_FALSE(matchesNodePattern("a", ""));
+}
+
+TEST(NodePattern, ManyStarsOnALongNameDoNotBlowUp) {
+    // A backtracking matcher tries every split of 200 characters among 20 stars (about 10^26
+    // ways) before it says no; this one is linear per star.
+    const std::string name(200, 'a');
+    std::string pattern;
+    for (int i = 0; i < 20; ++i) pattern += "*a";
+    EXPECT_FALSE(matchesNodePattern(name, pattern + "*b"));
+    EXPECT_TRUE(matchesNodePattern(name, pattern + "*"));
+}
 
 TEST(GltfLoader, EmbeddedTriangleGetsGeneratedNormalAndBounds) {
     const Scene s = loadGltf(triangleFile().write("triangle.gltf"));
