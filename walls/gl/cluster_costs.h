@@ -4,7 +4,8 @@
 //
 // One offscreen view of `resolution`² pixels (the display's own: its largest screen side, so
 // that every draw pays the fill it pays on the display) sees the whole model (render::viewOfBox from
-// above and aside). Each measurement is the median of 5 repetitions, each timed from glFinish
+// above and aside). Each measurement is the fastest of 7 repetitions (a shared machine's other
+// tenants only add time), each timed from glFinish
 // to glFinish on the calling thread:
 //  - the view with nothing in it (the fixed part, subtracted from the rest);
 //  - the smaller and the larger half of the objects (by triangles) at full detail, without
