@@ -142,6 +142,8 @@ struct RunSummary {
     int clusters = 0, clustersMade = 0, clustersReused = 0;
     double clustersSeconds = 0.0;
     double msPerTriangle = 0.0, msPerObject = 0.0, texturedBoxMs = 0.0, averageBoxMs = 0.0;
+    double texturedViewMs = 0.0, averageViewMs = 0.0;  // a box's fill per whole view it covers
+    int costResolution = 0;                     // pixels of the cost view's side
     int rank = 0;                               // cluster mode: this process's rank (only rank 0
                                                 // fills the fields above)
 };

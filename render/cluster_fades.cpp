@@ -8,8 +8,12 @@ ClusterFades::ClusterFades(int frames) : _frames(frames) {}
 
 namespace {
 
-double boxCostMs(const ClusterModel& model, ClusterRep rep) {
-    return rep == ClusterRep::Average ? model.costs.averageBoxMs : model.costs.texturedBoxMs;
+// This frame's cost of node n's box (ClusterFramePlan::boxMs, fill included), or its fixed part
+// for a plan without them.
+double fadedBoxMs(const ClusterModel& model, const ClusterFramePlan& plan, int node, ClusterRep rep) {
+    const std::size_t n = static_cast<std::size_t>(node);
+    if (n < plan.boxMs.size()) return plan.boxMs[n][rep == ClusterRep::Average ? 1 : 0];
+    return boxCostMs(model.costs, rep, 0.0);
 }
 
 }  // namespace
@@ -101,7 +105,7 @@ void ClusterFades::apply(const ClusterModel& model, glm::dvec3 eyeWorld, Cluster
         switch (f.kind) {
         case Kind::Refine:
             plan.boxes.push_back({f.node, f.rep, 1.0f - k});
-            extraMs += boxCostMs(model, f.rep);
+            extraMs += fadedBoxMs(model, plan, f.node, f.rep);
             break;
         case Kind::Coarsen:
             weightOf(f.node, k);
@@ -112,14 +116,14 @@ void ClusterFades::apply(const ClusterModel& model, glm::dvec3 eyeWorld, Cluster
             }
             for (const ClusterBoxDraw& b : f.ghostBoxes) {
                 plan.boxes.push_back(b);
-                extraMs += boxCostMs(model, b.rep);
+                extraMs += fadedBoxMs(model, plan, b.node, b.rep);
             }
             plan.ghostObjects += static_cast<int>(f.ghostObjects.size());
             break;
         case Kind::Swap:
             weightOf(f.node, k);
             plan.boxes.push_back({f.node, f.oldRep, 1.0f});
-            extraMs += boxCostMs(model, f.oldRep);
+            extraMs += fadedBoxMs(model, plan, f.node, f.oldRep);
             break;
         }
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace cavewall::render {
 
@@ -37,6 +38,46 @@ double benefitOf(const scenes::Bounds& b, glm::dvec3 eye) {
 
 }  // namespace
 
+double viewShare(const scenes::Bounds& world, const glm::dmat4& clipFromWorld) {
+    if (world.empty()) return 0.0;
+    glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    int behind = 0;
+    for (int i = 0; i < 8; ++i) {
+        const glm::dvec3 p((i & 1) ? world.max.x : world.min.x, (i & 2) ? world.max.y : world.min.y,
+                           (i & 4) ? world.max.z : world.min.z);
+        const glm::dvec4 c = clipFromWorld * glm::dvec4(p, 1.0);
+        if (c.w <= 1e-9) {
+            ++behind;
+            continue;
+        }
+        lo = glm::min(lo, glm::dvec2(c) / c.w);
+        hi = glm::max(hi, glm::dvec2(c) / c.w);
+    }
+    if (behind == 8) return 0.0;                     // all behind the eye
+    if (!mayMeet(world, clipFromWorld)) return 0.0;  // beside the view
+    if (behind > 0) return 1.0;                      // around the eye's plane: may fill the view
+    lo = glm::clamp(lo, -1.0, 1.0), hi = glm::clamp(hi, -1.0, 1.0);
+    return std::max(0.0, hi.x - lo.x) * std::max(0.0, hi.y - lo.y) / 4.0;
+}
+
+double boxCostMs(const ClusterCosts& costs, ClusterRep rep, double viewShares) {
+    return rep == ClusterRep::Average ? costs.averageBoxMs + costs.averageViewMs * viewShares
+                                      : costs.texturedBoxMs + costs.texturedViewMs * viewShares;
+}
+
+BoxCost solveBoxCost(double boxesA, double sharesA, double msA, double sharesB, double msB) {
+    // msA = boxesA f + sharesA v, msB = f + sharesB v.
+    const double det = sharesB * boxesA - sharesA;
+    BoxCost c;
+    if (boxesA > 0.0 && std::abs(det) > 1e-9) {
+        c.viewMs = (boxesA * msB - msA) / det;
+        c.fixedMs = msB - sharesB * c.viewMs;
+    }
+    if (!(c.viewMs >= 0.0 && c.fixedMs >= 0.0)) c = {boxesA > 0.0 ? msA / boxesA : 0.0, 0.0};
+    c.fixedMs = std::max(c.fixedMs, 1e-6);
+    return c;
+}
+
 std::vector<NodeFrame> clusterNodeFrames(const ClusterModel& model, const std::vector<display::ScreenView>& views,
                                          const glm::dmat4& worldFromCave, glm::dvec3 eyeWorld) {
     const ClusterTree& tree = model.tree;
@@ -62,9 +103,13 @@ std::vector<NodeFrame> clusterNodeFrames(const ClusterModel& model, const std::v
         const bool eyeInside = inside(box, eyeWorld);
         const int direction = nearestAccuracyDirection(box, eyeWorld);
         const ClusterAccuracy& a = model.accuracy.at(n);
-        f.representations.push_back({static_cast<int>(ClusterRep::Textured), model.costs.texturedBoxMs,
+        double shares = 0.0;
+        for (const glm::dmat4& m : clipFromWorld) shares += viewShare(box, m);
+        f.representations.push_back({static_cast<int>(ClusterRep::Textured),
+                                     boxCostMs(model.costs, ClusterRep::Textured, shares),
                                      eyeInside ? 0.0 : a.textured[direction]});
-        f.representations.push_back({static_cast<int>(ClusterRep::Average), model.costs.averageBoxMs,
+        f.representations.push_back({static_cast<int>(ClusterRep::Average),
+                                     boxCostMs(model.costs, ClusterRep::Average, shares),
                                      eyeInside ? 0.0 : a.average[direction]});
     }
     return frames;
@@ -79,11 +124,6 @@ double fullDetailCostMs(const ClusterModel& model) {
     return ms;
 }
 
-double controlledCostMs(const ClusterFramePlan& plan, double fullDetailMs) {
-    if (plan.predictedMs >= plan.budgetMs) return plan.predictedMs;
-    return std::max(plan.predictedMs, std::min(plan.budgetMs, fullDetailMs));
-}
-
 ClusterFramePlan planClusterFrame(const ClusterModel& model, const std::vector<display::ScreenView>& views,
                                   const glm::dmat4& worldFromCave, glm::dvec3 eyeWorld, double budgetMs,
                                   ClusterCoherence* coherence) {
@@ -91,7 +131,13 @@ ClusterFramePlan planClusterFrame(const ClusterModel& model, const std::vector<d
     const ClusterSelection selection = selectClusters(model.tree, frames, budgetMs, coherence);
     ClusterFramePlan plan;
     plan.budgetMs = budgetMs;
-    plan.predictedMs = selection.costMs;
+    plan.predictedMs = plan.selectedMs = selection.costMs;
+    plan.cheapestMs = selectClusters(model.tree, frames, 0.0, nullptr).costMs;
+    plan.boxMs.assign(frames.size(), {0.0, 0.0});
+    for (std::size_t n = 0; n < frames.size(); ++n)
+        for (const Representation& r : frames[n].representations)
+            if (r.id == static_cast<int>(ClusterRep::Textured)) plan.boxMs[n][0] = r.costMs;
+            else if (r.id == static_cast<int>(ClusterRep::Average)) plan.boxMs[n][1] = r.costMs;
     for (const ClusterChoice& c : selection.drawn) {
         const ClusterNode& node = model.tree.nodes[c.node];
         const auto rep = static_cast<ClusterRep>(frames[c.node].representations[c.representation].id);

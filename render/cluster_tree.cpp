@@ -168,9 +168,12 @@ ClusterSelection selectClusters(const ClusterTree& tree, const std::vector<NodeF
         }
         const bool fits = total - cost[n] + childrenCost[n] <= budgetMs + 1e-12;
         // A cluster that shows nothing (no representation, or none with any accuracy: the eye
-        // inside its box) is refined at once when it fits: delaying it would draw a hole.
+        // inside its box) is refined at once when it fits: delaying it would draw a hole; and
+        // also over the budget when its children cost no more than it does (a box around the
+        // eye fills every view): that only lowers the frame's cost.
         const bool useless = initial[n] < 0 || frame[n].representations[initial[n]].accuracy <= 0.0;
-        if (fits && (useless || !coherence || coherence->allowRefine(n))) {
+        const bool cheaper = useless && childrenCost[n] <= cost[n];
+        if ((fits || cheaper) && (useless || !coherence || coherence->allowRefine(n))) {
             total += childrenCost[n] - cost[n];
             for (int c : node.children)
                 if (visible[c]) open.push(c);

@@ -101,7 +101,8 @@ private:
 // in decreasing benefit): invisible nodes are dropped with their cost; a cluster is replaced by
 // its visible children when the frame's total minus its own cost plus theirs stays within
 // `budgetMs` (and `coherence`, when given, allows it; a cluster whose initial representation has
-// accuracy 0 or that has none is refined without asking it), else drawn; a leaf moves up to the most
+// accuracy 0 or that has none is refined without asking it, and also over the budget when its
+// visible children cost no more than it does), else drawn; a leaf moves up to the most
 // accurate representation whose extra cost still fits. Throws nothing; nodes without a
 // representation are drawn as nothing. `frame` has one entry per node of `tree`.
 ClusterSelection selectClusters(const ClusterTree& tree, const std::vector<NodeFrame>& frame, double budgetMs,

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 
 namespace cavewall::tools {
@@ -22,7 +23,7 @@ const char* const kBenchUsage =
     "                      [--stereo mono|separate] [--quick] [--cache DIR] [--compare-every K] [--min-zone M] [--ppd N]\n"
     "                      [--bake-resolution N] [--alphas A,B,...] [--warp-alpha A]\n"
     "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
-    "                      [--walls flat|depth] [--clusters]\n"
+    "                      [--walls flat|depth] [--clusters [--cluster-budgets T1,T2,...]]\n"
     "       cavewall bench --scale 2M,8M,32M [--data DIR] [--scale-metres M] [--frames N] [--resolution N]\n"
     "                      [--display D] [--bake-resolution N] [--geometry-budget MB] [--lod PX] [--out DIR]\n"
     "       cavewall bench --stability\n"
@@ -52,7 +53,12 @@ const char* const kBenchUsage =
     "         into two --out folders to compare.\n"
     "         --clusters adds seed 004's textured clusters (`cavewall run --clusters`) held to\n"
     "         --frame-budget-ms (16.67 when it is 0) by the controller, drawn in turn with full\n"
-    "         geometry and the walls modes (impostors made into the cache first).\n"
+    "         geometry and the walls modes (impostors made into the cache first);\n"
+    "         --cluster-budgets 40,60,100 adds one clusters mode per frame time instead. Their\n"
+    "         controller (render/cluster_budget.h) aims the 90th percentile of frame times at the\n"
+    "         budget; a target line per budget gives p95 over the budget (target <= 1.1), the\n"
+    "         floor (the cheapest selection's frame time: a budget below it is infeasible),\n"
+    "         predicted against measured frame times and a fit of measured on predicted cost.\n"
     "         Per mode: frame, CPU and GPU ms p50/p95/p99, speed-up, the triangles' p99/p50,\n"
     "         triangles, draw calls, textures, texels, disk and GPU MB, and the image error\n"
     "         against full geometry at the same frame, eye and screen, with the worst angular\n"
@@ -118,19 +124,33 @@ int runStability() {
 }
 
 #ifdef CAVEWALL_HAVE_GL
-// "--alphas 10,20,30": at least one angle, each in (0, 90) degrees.
-std::vector<double> alphaList(const std::string& text) {
+// "10,20,30": at least one number, each checked by `check` (which throws on a bad one).
+std::vector<double> numberList(const std::string& text, const std::string& what, const std::function<void(double)>& check) {
     std::vector<double> out;
     std::size_t start = 0;
     while (start <= text.size()) {
         const std::size_t end = std::min(text.find(',', start), text.size());
-        const double a = parseNumber(text.substr(start, end - start), "bench: --alphas");
-        if (!(a > 0.0 && a < 90.0))
-            throw Error("bench: --alphas: expected angles in (0, 90) degrees, got " + config::formatNumber(a));
-        out.push_back(a);
+        out.push_back(parseNumber(text.substr(start, end - start), what));
+        check(out.back());
         start = end + 1;
     }
     return out;
+}
+
+// "--alphas 10,20,30": angles in (0, 90) degrees.
+std::vector<double> alphaList(const std::string& text) {
+    return numberList(text, "bench: --alphas", [](double a) {
+        if (!(a > 0.0 && a < 90.0))
+            throw Error("bench: --alphas: expected angles in (0, 90) degrees, got " + config::formatNumber(a));
+    });
+}
+
+// "--cluster-budgets 40,60,100": frame times in (0, 100000] ms.
+std::vector<double> budgetList(const std::string& text) {
+    return numberList(text, "bench: --cluster-budgets", [](double ms) {
+        if (!(ms > 0.0 && ms <= 1e5))
+            throw Error("bench: --cluster-budgets: expected milliseconds in (0, 100000], got " + config::formatNumber(ms));
+    });
 }
 
 int runSceneBench(const Args& args) {
@@ -165,6 +185,10 @@ int runSceneBench(const Args& args) {
     o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);
     o.wallKind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
     o.clusters = args.has("clusters");
+    if (auto list = args.get("cluster-budgets")) {
+        if (!o.clusters) throw Error("bench: --cluster-budgets needs --clusters");
+        o.clusterBudgetsMs = budgetList(*list);
+    }
     if (std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg) == o.alphasDeg.end()) {
         std::string list;
         for (double a : o.alphasDeg) list += (list.empty() ? "" : ",") + config::formatNumber(a);
@@ -209,7 +233,7 @@ int runBench(const std::vector<std::string>& words) {
     args.expectFlags({"stability", "quick", "display", "path", "route", "out", "frames", "resolution", "stereo", "cache",
                       "compare-every",
                       "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod", "triangle-budget", "frame-budget-ms", "lod-max",
-                      "walls", "clusters", "scale", "data", "scale-metres", "geometry-budget"});
+                      "walls", "clusters", "cluster-budgets", "scale", "data", "scale-metres", "geometry-budget"});
     if (args.has("stability")) return runStability();
 #ifdef CAVEWALL_HAVE_GL
     if (args.has("scale")) return runScaleBench(args);

@@ -85,10 +85,14 @@ const char* const kRunUsage =
     "grid of N x max(1, N/4) x N cells (--cluster-divisions, default 8) and every cluster gets a\n"
     "textured box (one texture per face and viewing region, --cluster-res texels, default 64) and an\n"
     "average-colour box, made once into the cache with their accuracy against full detail; each\n"
-    "frame draws the selection under a budget of predicted milliseconds (--frame-budget-ms's\n"
-    "controller, else 16.7 ms), objects as geometry (with --lod at their level of detail) and\n"
-    "clusters as boxes (frames.csv: cluster_objects, cluster_textured, cluster_average,\n"
-    "cluster_predicted_ms, cluster_budget_ms, cluster_fades). A switch between a cluster's box and\n"
+    "frame draws the selection under a budget of predicted milliseconds (costs measured at the\n"
+    "display's own resolution; with --frame-budget-ms T the controller of render/cluster_budget.h\n"
+    "aims the 90th percentile of frame times at T, else a fixed 16.7 ms of predicted cost), objects\n"
+    "as geometry (with --lod at their level of detail) and clusters as boxes (frames.csv:\n"
+    "cluster_objects, cluster_textured, cluster_average, cluster_predicted_ms, cluster_budget_ms,\n"
+    "cluster_fades, cluster_selected_ms, cluster_cheapest_ms; with T: cluster_target_ms,\n"
+    "cluster_predicted_frame_ms, the frame time predicted before drawing, and cluster_floor_ms,\n"
+    "the cheapest selection's frame time: above T, T is infeasible). A switch between a cluster's box and\n"
     "its children, or between its two boxes, is cross-faded over --cluster-fade frames (default 8;\n"
     "0 or 1: none): the box drawn over what it replaces, its weight ramping; both are drawn (and\n"
     "costed) meanwhile.\n";
@@ -138,12 +142,13 @@ std::string bakeLine(const app::RunSummary& s) {
 }
 
 std::string clustersLine(const app::RunSummary& s) {
-    char text[320];
+    char text[400];
     std::snprintf(text, sizeof text,
-                  "run: clusters: %d (%d made, %d from the cache) in %.2f s; measured costs: %.3g ms per triangle, "
-                  "%.3g ms per object, %.3g ms per textured box, %.3g ms per average box\n",
-                  s.clusters, s.clustersMade, s.clustersReused, s.clustersSeconds, s.msPerTriangle, s.msPerObject,
-                  s.texturedBoxMs, s.averageBoxMs);
+                  "run: clusters: %d (%d made, %d from the cache) in %.2f s; measured costs at %dx%d: %.3g ms per "
+                  "triangle, %.3g ms per object, %.3g ms per textured box plus %.3g ms per whole view it covers, "
+                  "%.3g ms per average box plus %.3g ms per whole view\n",
+                  s.clusters, s.clustersMade, s.clustersReused, s.clustersSeconds, s.costResolution, s.costResolution,
+                  s.msPerTriangle, s.msPerObject, s.texturedBoxMs, s.texturedViewMs, s.averageBoxMs, s.averageViewMs);
     return text;
 }
 

@@ -129,6 +129,12 @@ struct FrameResult {
     int clusterObjects = 0, clusterTextured = 0, clusterAverage = 0;
     int clusterFades = 0;                    // cross-fades under way (render/cluster_fades.h)
     double clusterPredictedMs = 0.0, clusterBudgetMs = 0.0;
+    double clusterSelectedMs = 0.0;          // of clusterPredictedMs, the selection's (no fades)
+    double clusterCheapestMs = 0.0;          // the selection at a budget of 0 (the floor's part)
+    // Filled by the caller's frame-time controller (render/cluster_budget.h), zeros without one:
+    // its target, the frame time it predicted for this frame (clusterPredictedMs plus the
+    // median of the earlier frames' rest) and the floor (the cheapest selection's frame time).
+    double clusterTargetMs = 0.0, clusterPredictedFrameMs = 0.0, clusterFloorMs = 0.0;
     // Per display screen (index = screen), summed over its eyes: wall-clock CPU ms of its views
     // (geometry, walls, cursor), triangles and draw calls. Screens this instance does not
     // render stay zero.

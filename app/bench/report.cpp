@@ -4,6 +4,7 @@
 #include "scenes/image_io.h"
 #include "app/bench/plot.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -161,9 +162,79 @@ std::vector<std::string> wallsTargetLines(const BenchReport& report) {
 
 }  // namespace
 
+LineFit fitLine(const std::vector<double>& x, const std::vector<double>& y) {
+    LineFit f;
+    const std::size_t n = std::min(x.size(), y.size());
+    if (n < 2) return f;
+    double mx = 0.0, my = 0.0;
+    for (std::size_t i = 0; i < n; ++i) mx += x[i], my += y[i];
+    mx /= static_cast<double>(n), my /= static_cast<double>(n);
+    double sxx = 0.0, sxy = 0.0, syy = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        sxx += (x[i] - mx) * (x[i] - mx);
+        sxy += (x[i] - mx) * (y[i] - my);
+        syy += (y[i] - my) * (y[i] - my);
+    }
+    if (sxx <= 0.0) return f;
+    f.points = n;
+    f.slope = sxy / sxx;
+    f.intercept = my - f.slope * mx;
+    f.r2 = syy > 0.0 ? sxy * sxy / (sxx * syy) : 1.0;
+    return f;
+}
+
+double p95OverBudget(const ModeResult& m) { return m.frameBudgetMs > 0.0 ? m.frameMs.p95 / m.frameBudgetMs : 0.0; }
+
+double medianFloorMs(const ModeResult& m) {
+    std::vector<double> floors;
+    for (const FrameSample& f : m.frames)
+        if (f.floorMs > 0.0) floors.push_back(f.floorMs);
+    return floors.empty() ? 0.0 : timeStats(floors).p50;
+}
+
+namespace {
+
+std::string clusterBudgetLine(const BenchReport& report, const ModeResult& m) {
+    const double ratio = p95OverBudget(m), floor = medianFloorMs(m);
+    const bool feasible = floor <= m.frameBudgetMs;
+    std::vector<double> errors;
+    for (const FrameSample& f : m.frames)
+        if (f.predictedFrameMs > 0.0 && f.frameMs > 0.0) errors.push_back(std::abs(f.frameMs - f.predictedFrameMs) / f.frameMs);
+    const TimeStats e = timeStats(errors);
+    std::string line = "targets: " + modeLabel(m) + ": p50 " + num(m.frameMs.p50, 3) + " ms, p95 " +
+                       num(m.frameMs.p95, 3) + " ms = " + num(ratio, 3) + "x the budget";
+    line += feasible ? (ratio <= 1.1 ? " (<= 1.1: met)" : " (<= 1.1: not met)")
+                     : " (infeasible: the floor is above the budget)";
+    line += "; floor (the cheapest selection's frame time, median) " + num(floor, 3) + " ms; predicted frame time " +
+            "off by " + num(100.0 * e.p50, 3) + " % (median), " + num(100.0 * e.p95, 3) + " % (p95); " +
+            num(m.error.psnrDb, 3) + " dB pooled, FLIP mean " + num(m.error.flipMean, 3);
+    if (report.noiseFloorP95Ratio > 0.0) line += "; noise floor p95/p50 " + num(report.noiseFloorP95Ratio, 3);
+    return line;
+}
+
+}  // namespace
+
+std::vector<std::string> clusterBudgetLines(const BenchReport& report) {
+    std::vector<std::string> lines;
+    std::vector<double> predicted, measured;
+    for (const ModeResult& m : report.modes) {
+        if (m.mode != Mode::Clusters || m.frameBudgetMs <= 0.0) continue;
+        lines.push_back(clusterBudgetLine(report, m));
+        for (const FrameSample& f : m.frames) predicted.push_back(f.predictedMs), measured.push_back(f.frameMs);
+    }
+    if (lines.empty()) return lines;
+    const LineFit fit = fitLine(predicted, measured);
+    lines.push_back("targets: clusters' measured frame ms against their predicted cost over " +
+                    std::to_string(fit.points) + " frames: measured = " + num(fit.intercept, 3) + " + " +
+                    num(fit.slope, 3) + " x predicted (r2 " + num(fit.r2, 2) +
+                    "; slope 1: the costs are right at this resolution, the intercept is the fixed part)");
+    return lines;
+}
+
 std::vector<std::string> targetLines(const BenchReport& report) {
     std::vector<std::string> lines = wallsTargetLines(report);
     if (auto layer = layerLine(report)) lines.push_back("targets: " + *layer);
+    for (std::string& line : clusterBudgetLines(report)) lines.push_back(std::move(line));
     if (!report.resolution.empty())
         for (std::string& line : lines) line = "targets (" + report.resolution + "):" + line.substr(std::string("targets:").size());
     return lines;
@@ -208,7 +279,8 @@ std::string csvHeader() {
            "max_err_px,triangles,draw_calls,textures,disk_mb,gpu_mb,cpu_ms_p50,cpu_ms_p95,cpu_ms_p99,gpu_ms_p50,"
            "gpu_ms_p95,gpu_ms_p99,texels,misses,mean_psnr_db,load_p99_p50,lod_px,triangle_budget,max_lod_err_px,"
            "mean_lod_tolerance_px,over_budget_frames,frame_budget_ms,worst_frame_psnr_db,p5_frame_psnr_db,flip_mean,flip_p95,"
-           "popping_peak,popping_rms,psnr_gain_db,flip_ratio,over_alpha,uploaded_mb_p50,uploaded_mb_p99,uploaded_mb_mean";
+           "popping_peak,popping_rms,psnr_gain_db,flip_ratio,over_alpha,uploaded_mb_p50,uploaded_mb_p99,uploaded_mb_mean,"
+           "p95_over_budget,floor_ms";
 }
 
 std::string csvRow(const ModeResult& m) {
@@ -221,7 +293,7 @@ std::string csvRow(const ModeResult& m) {
                              m.frameBudgetMs, m.error.worstFramePsnrDb, m.error.p5FramePsnrDb, m.error.flipMean,
                              m.error.flipP95, m.error.poppingPeak, m.error.poppingRms, m.psnrGainDb, m.flipRatio,
                              static_cast<double>(m.texturesOverAlpha), m.uploadedMB.p50, m.uploadedMB.p99,
-                             m.uploadedMB.mean};
+                             m.uploadedMB.mean, p95OverBudget(m), medianFloorMs(m)};
     std::string row = std::string(toString(m.mode)) + "," + num(m.alphaDeg) + "," + transitionLabel(m);
     for (double v : values) row += "," + num(v);
     return row;
@@ -288,12 +360,15 @@ std::string markdownReport(const BenchReport& report) {
 }
 
 std::string framesCsv(const BenchReport& report) {
-    std::string out = "mode,frame,frame_ms,triangles,draw_calls,uploaded_mb,over_alpha\n";
+    std::string out = "mode,frame,frame_ms,triangles,draw_calls,uploaded_mb,over_alpha,predicted_ms,predicted_frame_ms,"
+                      "floor_ms\n";
     for (const ModeResult& m : report.modes)
         for (std::size_t i = 0; i < m.frames.size(); ++i)
             out += modeLabel(m) + "," + std::to_string(i) + "," + num(m.frames[i].frameMs, 6) + "," +
                    num(m.frames[i].triangles, 10) + "," + num(m.frames[i].drawCalls, 10) + "," +
-                   num(m.frames[i].uploadedMB, 6) + "," + std::to_string(m.frames[i].texturesOverAlpha) + "\n";
+                   num(m.frames[i].uploadedMB, 6) + "," + std::to_string(m.frames[i].texturesOverAlpha) + "," +
+                   num(m.frames[i].predictedMs, 6) + "," + num(m.frames[i].predictedFrameMs, 6) + "," +
+                   num(m.frames[i].floorMs, 6) + "\n";
     return out;
 }
 

@@ -32,6 +32,10 @@ struct FrameSample {
     double frameMs = 0.0, triangles = 0.0, drawCalls = 0.0;
     double uploadedMB = 0.0;           // wall texture MB uploaded in the frame
     int texturesOverAlpha = 0;         // drawn textures whose exact error exceeds alpha
+    // Clusters held to a frame time (render/cluster_budget.h; 0 otherwise): the predicted cost
+    // of what the frame drew, the frame time the controller predicted before drawing it and the
+    // floor, the cheapest selection's frame time.
+    double predictedMs = 0.0, predictedFrameMs = 0.0, floorMs = 0.0;
 };
 
 // What a mode draws (app/bench/gl/driver.h lists the modes).
@@ -83,6 +87,7 @@ struct BenchReport {
     std::vector<std::string> header;   // settings and machine, one line each
     std::vector<ModeResult> modes;     // the full-geometry reference first
     double noiseFloorRatio = 0.0;      // p99/p50 of one frame drawn again and again (0: not measured)
+    double noiseFloorP95Ratio = 0.0;   // p95/p50 of the same (0: not measured)
     std::string resolution;            // "1024x1024 per screen, mono": stated with every target line
 };
 
@@ -110,6 +115,30 @@ void compareWithControl(BenchReport& report);
 // the limit's median against the control plus one textured full-screen layer (target: no
 // slower), when the report has the "cells+layer" mode.
 std::vector<std::string> targetLines(const BenchReport& report);
+
+// A least-squares line y = intercept + slope x through (x[i], y[i]); zeros for fewer than two
+// points or all x equal. r2: the share of y's variance the line explains.
+struct LineFit {
+    double slope = 0.0, intercept = 0.0, r2 = 0.0;
+    std::size_t points = 0;
+};
+LineFit fitLine(const std::vector<double>& x, const std::vector<double>& y);
+
+// A mode held to a frame time (frameBudgetMs > 0): its p95 frame time over the budget; the
+// median floor of its frames (clusters: the cheapest selection's frame time, FrameSample::floorMs
+// > 0 only; 0 when none has one), and whether the budget is feasible (no floor above it).
+double p95OverBudget(const ModeResult& m);
+double medianFloorMs(const ModeResult& m);
+
+// Seed 004's budget target for every clusters mode held to a frame time, one line each stating
+// the report's resolution: p50 and p95 frame ms, p95 over the budget (target <= 1.1, "once
+// warmed up": the timed frames follow the warm-up), the floor and whether the budget is
+// feasible (a budget below the floor is reported infeasible, not as a miss), the predicted
+// against the measured frame time (median and p95 of |measured - predicted| / measured), the
+// pooled PSNR and FLIP mean, and the noise floor's p95/p50 beside them; then one line fitting
+// measured = a + b predicted over the frames of every clusters mode (b = 1: the costs are right
+// at the display's resolution; a: the fixed part of a frame). Empty without such modes.
+std::vector<std::string> clusterBudgetLines(const BenchReport& report);
 
 // Writes bench.csv, bench_screens.csv, bench_frames.csv (every timed frame of every mode),
 // bench.md, bench.png and flip_worst_N.png (the FLIP map of mode N's worst image, N as the "#"

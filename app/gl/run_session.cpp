@@ -10,6 +10,7 @@
 #include "render/cluster_diagram.h"
 #include "scenes/image_io.h"
 #include "scenes/loader.h"
+#include "app/cluster_control.h"
 #include "app/run_cluster.h"
 #include "app/run_input.h"
 #include "app/gl/run_output.h"
@@ -167,16 +168,21 @@ RunSummary runSession(const RunOptions& o) {
     RunSummary summary;
     summary.sceneSeconds = sceneSeconds, summary.wallsSeconds = wallsSeconds, summary.readySeconds = since();
     summary.renderer = context->info().renderer;
+    // Levels of detail are held to the frame time by triangles (display/frame_budget.h),
+    // clusters by predicted milliseconds (render/cluster_budget.h).
     std::optional<display::FrameTimeBudget> frameBudget;
-    if (o.frameBudgetMs > 0.0) frameBudget.emplace(o.frameBudgetMs);
+    std::optional<render::ClusterBudget> clusterBudget;
+    if (o.frameBudgetMs > 0.0 && !o.clusters) frameBudget.emplace(o.frameBudgetMs);
+    if (o.frameBudgetMs > 0.0 && o.clusters) clusterBudget.emplace(o.frameBudgetMs);
     summary.walls = walkthrough.hasWalls();
-    const double fullDetailMs = o.clusters ? render::fullDetailCostMs(*walkthrough.clusterModel()) : 0.0;
     if (const render::ClusterModel* m = walkthrough.clusterModel()) {
         const gl::ClusterBakeStats& b = *walkthrough.clusterBakeStats();
         summary.clusters = b.clusters, summary.clustersMade = b.made, summary.clustersReused = b.reused;
         summary.clustersSeconds = b.seconds;
         summary.msPerTriangle = m->costs.msPerTriangle, summary.msPerObject = m->costs.msPerObject;
         summary.texturedBoxMs = m->costs.texturedBoxMs, summary.averageBoxMs = m->costs.averageBoxMs;
+        summary.texturedViewMs = m->costs.texturedViewMs, summary.averageViewMs = m->costs.averageViewMs;
+        summary.costResolution = walkthrough.clusterCostResolution();
     }
     // The sizes geometry paging is judged by (issue 15: resident at most the largest three cells).
     const gl::GeometryYardsticks yardsticks = walkthrough.geometryYardsticks();
@@ -186,20 +192,16 @@ RunSummary runSession(const RunOptions& o) {
         const bool save = o.saveEvery > 0 && i % o.saveEvery == 0;
         if (context->windowCount() > 0 && context->pollCloseRequested()) break;  // a window was closed
         walls::FrameInput in = input ? input->next(i, save, context->takeInputEvents()) : walls::FrameInput{};
-        // The controller's unit is what the frame's knob caps: triangles, or with clusters the
-        // selection's predicted cost in microseconds.
-        if (frameBudget && !o.clusters) in.triangleBudget = frameBudget->budget();
-        if (frameBudget && o.clusters) in.clusterBudgetMs = static_cast<double>(frameBudget->budget()) / 1000.0;
+        if (frameBudget) in.triangleBudget = frameBudget->budget();
+        if (clusterBudget) in.clusterBudgetMs = app::clusterBudgetFor(*clusterBudget);
         double syncMs = cluster ? app::receiveFrame(*cluster, in) : 0.0;
         if (baker && o.bakeInterleave > 0) baker->pause((i / o.bakeInterleave) % 2 == 1);
         walls::FrameResult r = walkthrough.renderFrame(in);
         if (i == 0) summary.firstFrameSeconds = since();
         if (cluster) syncMs = app::combineFrame(*cluster, r, syncMs, screens);
-        if (frameBudget && !o.clusters) frameBudget->update(r.frameMs, r.geometryTriangles);
-        if (frameBudget && o.clusters) {
-            const double ms = render::controlledCostMs(*walkthrough.lastClusterPlan(), fullDetailMs);
-            frameBudget->update(r.frameMs, static_cast<std::size_t>(std::llround(ms * 1000.0)));
-        }  // rank 0: the slowest rank's time
+        // Rank 0: the slowest rank's time.
+        if (frameBudget) frameBudget->update(r.frameMs, r.geometryTriangles);
+        if (clusterBudget) app::controlClusters(*clusterBudget, r);
         if (!output) continue;
         output->writeFrame(i, in.time, in.head.position, r, syncMs);
         if (in.readImages) summary.foldouts.push_back(output->saveImages(i, r.images));

@@ -45,6 +45,8 @@ TEST(RunOutput, FramesAndWallsCsvHaveOneRowPerFrameAndWall) {
         r.clusterObjects = 12, r.clusterTextured = 3, r.clusterAverage = 2;
         r.clusterPredictedMs = 4.25, r.clusterBudgetMs = 16.5;
         r.clusterFades = 2;
+        r.clusterSelectedMs = 3.5, r.clusterCheapestMs = 0.125;
+        r.clusterTargetMs = 40.0, r.clusterPredictedFrameMs = 38.25, r.clusterFloorMs = 24.5;
         r.geometryFallbacks = 2, r.texturesBaked = 40, r.texturesBakedNow = 3, r.texturesToBake = 7, r.bakerBusy = true;
         out.writeFrame(0, 0.0, head, r);
         r.cell = -1;  // outside every cell
@@ -69,6 +71,11 @@ TEST(RunOutput, FramesAndWallsCsvHaveOneRowPerFrameAndWall) {
     EXPECT_EQ(frames[0].number("cluster_predicted_ms"), 4.25);
     EXPECT_EQ(frames[0].number("cluster_budget_ms"), 16.5);
     EXPECT_EQ(frames[0].at("cluster_fades"), "2");
+    EXPECT_EQ(frames[0].number("cluster_selected_ms"), 3.5);
+    EXPECT_EQ(frames[0].number("cluster_cheapest_ms"), 0.125);
+    EXPECT_EQ(frames[0].number("cluster_target_ms"), 40.0);
+    EXPECT_EQ(frames[0].number("cluster_predicted_frame_ms"), 38.25);
+    EXPECT_EQ(frames[0].number("cluster_floor_ms"), 24.5);
     EXPECT_EQ(frames[0].at("geometry_fallbacks"), "2");
     EXPECT_EQ(frames[0].at("textures_baked"), "40");
     EXPECT_EQ(frames[0].at("textures_baked_now"), "3");

@@ -32,7 +32,7 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     fs::remove_all(out);
     const CliResult r = runCavewall({"bench", (plant / "scene.json").string(), "--quick", "--frames", "12", "--out",
                                      out.string(), "--cache", (root / "cache").string(), "--alphas", "20,30",
-                                     "--warp-alpha", "30", "--clusters"});
+                                     "--warp-alpha", "30", "--clusters", "--cluster-budgets", "0.5,200"});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_THAT(r.out, HasSubstr("| 1 | full |"));
     // --quick keeps its small images, and says so in the header and on every target line.
@@ -41,7 +41,16 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     // 60 Hz by the controller) are timed in the same seconds.
     EXPECT_THAT(r.out, HasSubstr("drawn frame by frame in turn (the same seconds): full, full lod 1px, walls a=20 blend, "
                                  "walls a=30 blend, walls a=20 blend lod 1px"));
-    EXPECT_THAT(r.out, HasSubstr("walls a=30 blend lod 1px frame 16.7ms, clusters frame 16.7ms, frame by frame in turn"));
+    EXPECT_THAT(r.out, HasSubstr("walls a=30 blend lod 1px frame 16.7ms, clusters frame 0.5ms, clusters frame 200ms, "
+                                 "frame by frame in turn"));
+    // One clusters mode per --cluster-budgets entry, each with its budget line: no frame at
+    // 128x128 takes as little as 0.5 ms (infeasible, said so with the floor), and 200 ms is
+    // more than any takes (met).
+    EXPECT_THAT(r.out, HasSubstr("targets (128x128 per screen, mono): clusters frame 0.5ms: p50 "));
+    EXPECT_THAT(r.out, HasSubstr("x the budget (infeasible: the floor is above the budget); floor (the cheapest "
+                                 "selection's frame time, median) "));
+    EXPECT_THAT(r.out, HasSubstr("x the budget (<= 1.1: met); floor"));
+    EXPECT_THAT(r.out, HasSubstr("clusters' measured frame ms against their predicted cost over 24 frames"));
     EXPECT_THAT(r.out, HasSubstr("bench: noise floor, walls a=30 blend lod 1px frame 16.7ms interleaved"));
     // The bound holds in every walls mode (frame by frame, also in bench_frames.csv).
     EXPECT_THAT(r.out, HasSubstr("targets (128x128 per screen, mono): textures drawn over alpha in"));
@@ -93,7 +102,7 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         {"full", 1}, {"full lod", 1}, {"cells", 1}, {"cells+layer", 1}, {"near", 1}, {"near lod", 1}, {"walls 20 blend", 1},
         {"walls 30 blend", 1}, {"walls 20 blend lod", 1}, {"walls 30 blend lod", 1}, {"walls 30 warp", 1},
         {"walls 30 blend paged", 1}, {"walls 20 blend lod budget", 1}, {"walls 30 blend lod budget", 1},
-        {"walls 20 blend lod frame", 1}, {"walls 30 blend lod frame", 1}, {"clusters frame", 1}};
+        {"walls 20 blend lod frame", 1}, {"walls 30 blend lod frame", 1}, {"clusters frame", 2}};
     EXPECT_EQ(rows, expected);
     EXPECT_TRUE(fs::is_regular_file(out / "bench.png"));
     EXPECT_TRUE(fs::is_regular_file(out / "bench.md"));
@@ -107,10 +116,10 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         for (const char* name : {"flip_mean", "flip_p95", "popping_peak", "popping_rms", "capped_mean_psnr_db"})
             EXPECT_TRUE(std::isfinite(row.number(name))) << row.at("screen") << " " << name;
     const std::size_t screenRows = screens.size();
-    EXPECT_EQ(screenRows, 17u * 4);
+    EXPECT_EQ(screenRows, 18u * 4);
     // A FLIP map of the worst image of every mode but the reference (mode 1).
     EXPECT_FALSE(fs::exists(out / "flip_worst_1.png"));
-    for (int mode = 2; mode <= 17; ++mode) EXPECT_TRUE(fs::is_regular_file(out / ("flip_worst_" + std::to_string(mode) + ".png")));
+    for (int mode = 2; mode <= 18; ++mode) EXPECT_TRUE(fs::is_regular_file(out / ("flip_worst_" + std::to_string(mode) + ".png")));
 }
 
 // `bench --scale` end to end on two tiny sizes (both below 2 M triangles: the same 80 m plant,
@@ -162,6 +171,10 @@ TEST(BenchSceneCli, BadInputIsAClearError) {
          "--warp-alpha 20 is not one of the planned alphas (10,30); add it to --alphas"},
         {{"bench", (test::testOutputRoot() / "bench_cli_missing" / "scene.json").string(), "--quick"}, "missing"},
         {{"bench", "x.json", "--stereo", "quad-buffer"}, "--stereo: expected mono or separate, got 'quad-buffer'"},
+        {{"bench", "x.json", "--cluster-budgets", "40"}, "bench: --cluster-budgets needs --clusters"},
+        {{"bench", "x.json", "--clusters", "--cluster-budgets", "40,0"},
+         "bench: --cluster-budgets: expected milliseconds in (0, 100000], got 0"},
+        {{"bench", "x.json", "--clusters", "--cluster-budgets", "40,x"}, "--cluster-budgets"},
         {{"bench", "--scale", "2M,x"}, "--scale: entry 2 'x': expected a triangle count"},
         {{"bench", "--scale", "2M", "--scale-metres", "0"}, "--scale-metres"},
     };

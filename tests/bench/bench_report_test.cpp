@@ -9,6 +9,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <limits>
@@ -66,6 +68,74 @@ TEST(BenchReport, RowsMatchTheHeader) {
     EXPECT_EQ(full.at("psnr_db"), "inf");
     EXPECT_EQ(full.at("transition"), "none");
     EXPECT_TRUE(std::isinf(full.number("psnr_db")));
+}
+
+TEST(BenchReport, LinesAreFittedByLeastSquares) {
+    // y = 20 + 1.5 x exactly: slope, intercept and r2 1.
+    const LineFit exact = fitLine({0, 10, 20, 30}, {20, 35, 50, 65});
+    EXPECT_NEAR(exact.slope, 1.5, 1e-12);
+    EXPECT_NEAR(exact.intercept, 20.0, 1e-12);
+    EXPECT_NEAR(exact.r2, 1.0, 1e-12);
+    EXPECT_EQ(exact.points, 4u);
+    // (0, 0), (1, 2), (2, 1): mean x 1, mean y 1, sxy 1, sxx 2 -> slope 0.5, intercept 0.5;
+    // syy 2 -> r2 = 1 / (2 * 2) = 0.25.
+    const LineFit scattered = fitLine({0, 1, 2}, {0, 2, 1});
+    EXPECT_NEAR(scattered.slope, 0.5, 1e-12);
+    EXPECT_NEAR(scattered.intercept, 0.5, 1e-12);
+    EXPECT_NEAR(scattered.r2, 0.25, 1e-12);
+    EXPECT_EQ(fitLine({1}, {2}).points, 0u);        // one point: no line
+    EXPECT_EQ(fitLine({3, 3}, {1, 2}).points, 0u);  // all x equal: no line
+}
+
+// A clusters mode held to `budget` ms whose frames take `frameMs`, predicted `predictedMs`
+// for the drawn cost, with the controller's predicted frame time and floor.
+ModeResult clustersAt(double budget, std::vector<double> frameMs, double floorMs) {
+    ModeResult m = sample(Mode::Clusters, 0, 0, 0.05);
+    m.frameBudgetMs = budget;
+    m.frames.clear();
+    for (std::size_t i = 0; i < frameMs.size(); ++i) {
+        FrameSample f;
+        f.frameMs = frameMs[i];
+        f.predictedMs = frameMs[i] - 20.0;       // the fixed part: 20 ms
+        f.predictedFrameMs = 0.9 * frameMs[i];   // 10 % low
+        f.floorMs = floorMs;
+        m.frames.push_back(f);
+    }
+    std::vector<double> sorted = frameMs;
+    std::sort(sorted.begin(), sorted.end());
+    m.frameMs.p50 = sorted[(sorted.size() - 1) / 2];
+    m.frameMs.p95 = sorted[static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(sorted.size()))) - 1];
+    return m;
+}
+
+TEST(BenchReport, ClusterBudgetLinesSayMetNotMetOrInfeasibleAndFitThePrediction) {
+    BenchReport report;
+    report.resolution = "1024x1024 per screen, mono";
+    report.noiseFloorP95Ratio = 1.25;
+    report.modes = {sample(Mode::Full, 0, 300.0, 0.0),
+                    clustersAt(50.0, {40, 45, 50, 52, 54}, 24.0),    // p95 54 = 1.08x: met
+                    clustersAt(30.0, {30, 34, 36, 38, 40}, 24.0),    // p95 40 = 1.33x: not met
+                    clustersAt(16.0, {24, 25, 26, 27, 32}, 24.0)};   // floor 24 > 16: infeasible
+    EXPECT_NEAR(p95OverBudget(report.modes[1]), 54.0 / 50.0, 1e-12);
+    EXPECT_EQ(p95OverBudget(report.modes[0]), 0.0);  // no budget
+    EXPECT_EQ(medianFloorMs(report.modes[1]), 24.0);
+    const std::vector<std::string> lines = targetLines(report);
+    auto has = [&](const std::string& text) {
+        return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(text) != std::string::npos; });
+    };
+    EXPECT_TRUE(has("targets (1024x1024 per screen, mono): clusters frame 50ms: p50 50 ms, p95 54 ms = 1.08x the budget "
+                    "(<= 1.1: met); floor (the cheapest selection's frame time, median) 24 ms; predicted frame time off by "
+                    "10 % (median), 10 % (p95)"));
+    EXPECT_TRUE(has("clusters frame 30ms: p50 36 ms, p95 40 ms = 1.33x the budget (<= 1.1: not met)"));
+    EXPECT_TRUE(has("clusters frame 16ms: p50 26 ms, p95 32 ms = 2x the budget (infeasible: the floor is above the "
+                    "budget)"));
+    EXPECT_TRUE(has("noise floor p95/p50 1.25"));
+    // measured = 20 + 1 x predicted in every frame of the three modes.
+    EXPECT_TRUE(has("over 15 frames: measured = 20 + 1 x predicted (r2 1;"));
+    // The CSV carries both per mode.
+    const auto row = parseCsv(csvHeader() + "\n" + csvRow(report.modes[3]) + "\n")[0];
+    EXPECT_EQ(row.number("p95_over_budget"), 2.0);
+    EXPECT_EQ(row.number("floor_ms"), 24.0);
 }
 
 TEST(BenchReport, MarkdownHasOneRowPerMode) {
@@ -177,7 +247,8 @@ TEST(BenchReport, WritesFilesAndMarksTheFrontInThePlot) {
     EXPECT_FALSE(std::filesystem::exists(folder / "flip_worst_2.png"));
     const test::CsvTable frames = test::readCsv(folder / "bench_frames.csv");
     ASSERT_EQ(frames.size(), 3u * 2);  // 2 frames per mode
-    EXPECT_EQ(frames.columns, (std::vector<std::string>{"mode", "frame", "frame_ms", "triangles", "draw_calls", "uploaded_mb", "over_alpha"}));
+    EXPECT_EQ(frames.columns, (std::vector<std::string>{"mode", "frame", "frame_ms", "triangles", "draw_calls", "uploaded_mb", "over_alpha",
+                                        "predicted_ms", "predicted_frame_ms", "floor_ms"}));
     // The second mode's second frame: 1.2 x its p50 of 3 ms.
     EXPECT_EQ(frames[3].at("mode"), "walls a=10 blend");
     EXPECT_EQ(frames[3].at("frame"), "1");

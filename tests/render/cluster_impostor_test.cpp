@@ -11,6 +11,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace cavewall::render {
@@ -112,17 +113,102 @@ TEST(ClusterFrame, DrawsTheClusterAsATexturedBoxUnderASmallBudgetAndItsObjectsUn
     EXPECT_LE(large.predictedMs, large.budgetMs + 1e-12);
 }
 
-TEST(ClusterFrame, TheControllerIsToldTheBudgetWhenTheSelectionCouldNotUseIt) {
+TEST(ClusterFrame, FullDetailIsTheMostAnySelectionCostsAndTheCheapestIsTheRootsBox) {
+    const display::Display display(config::loadDisplayConfig("cave4"));
+    const auto views = display.views(display.defaultHead());
     const ClusterModel m = twoObjects(-0.75);
     // 0.01 + 1000 * 1e-4 and 0.01 + 3000 * 1e-4.
     EXPECT_NEAR(fullDetailCostMs(m), 0.42, 1e-12);
-    ClusterFramePlan plan;
-    plan.predictedMs = 0.05, plan.budgetMs = 0.3;  // the box alone; its objects did not fit
-    EXPECT_DOUBLE_EQ(controlledCostMs(plan, 0.42), 0.3);
-    plan.budgetMs = 5.0;                            // more than everything costs
-    EXPECT_DOUBLE_EQ(controlledCostMs(plan, 0.42), 0.42);
-    plan.predictedMs = 0.6, plan.budgetMs = 0.3;    // the root alone over a tiny budget
-    EXPECT_DOUBLE_EQ(controlledCostMs(plan, 0.42), 0.6);
+    const glm::dvec3 eye = display.defaultHead().position;
+    for (double budget : {0.0, 0.05, 0.3, 0.42, 5.0}) {
+        SCOPED_TRACE(budget);
+        const ClusterFramePlan plan = planClusterFrame(m, views, glm::dmat4(1.0), eye, budget, nullptr);
+        // The floor of every budget: the root's textured box (its initial representation).
+        EXPECT_DOUBLE_EQ(plan.cheapestMs, 0.05);
+        EXPECT_DOUBLE_EQ(plan.selectedMs, plan.predictedMs);  // no fades applied
+        EXPECT_LE(plan.selectedMs, std::max(budget, plan.cheapestMs) + 1e-12);
+        EXPECT_LE(plan.selectedMs, fullDetailCostMs(m) + 1e-12);
+    }
+}
+
+TEST(ClusterFrame, ViewShareIsTheClippedRectangleOfTheProjectedCorners) {
+    // A 2 m x 2 m screen 1 m in front of the eye (-Z): a 90 degree symmetric frustum, so a point
+    // at depth d projects to x / d in NDC.
+    const display::ScreenQuad screen{{-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}};
+    const glm::dmat4 clip = display::offAxisFrustum(screen, glm::dvec3(0.0), {0.05, 1000.0}).clipFromFrame();
+    // x in [0, 10] at depths 2 to 3 projects to [0, 5]: clipped to [0, 1]; y covers [-1, 1]:
+    // the right half of the view.
+    EXPECT_NEAR(viewShare(box({0, -10, -3}, {10, 10, -2}), clip), 0.5, 1e-12);
+    // x in [-0.5, 0.5] at depth 1 to 2: NDC [-0.5, 0.5] (the nearer depth), y [-1, 1] clipped:
+    // a quarter of the width doubled in height -> 0.5 x 1.
+    EXPECT_NEAR(viewShare(box({-0.5, -5, -2}, {0.5, 5, -1}), clip), 0.5, 1e-12);
+    EXPECT_EQ(viewShare(box({50, 0, -3}, {51, 1, -2}), clip), 0.0);   // beside the view
+    EXPECT_EQ(viewShare(box({-1, -1, 2}, {1, 1, 3}), clip), 0.0);     // behind the eye
+    EXPECT_EQ(viewShare(box({-1, -1, -1}, {1, 1, 1}), clip), 1.0);    // around the eye
+    EXPECT_EQ(viewShare(scenes::Bounds{}, clip), 0.0);
+}
+
+TEST(ClusterFrame, BoxCostsAreSolvedFromAllBoxesAndTheRootAlone) {
+    // 40 boxes covering 3 views in all took 40 x 0.1 + 3 x 8 = 28 ms; the root alone, covering
+    // 0.75 of the view, 0.1 + 0.75 x 8 = 6.1 ms: fixed 0.1 ms, fill 8 ms per whole view.
+    const BoxCost c = solveBoxCost(40.0, 3.0, 28.0, 0.75, 6.1);
+    EXPECT_NEAR(c.fixedMs, 0.1, 1e-9);
+    EXPECT_NEAR(c.viewMs, 8.0, 1e-9);
+    // Draws that do not tell the two apart (a negative solution): no fill, the mean per box.
+    const BoxCost flat = solveBoxCost(40.0, 3.0, 28.0, 0.75, 0.2);
+    EXPECT_NEAR(flat.fixedMs, 28.0 / 40.0, 1e-12);
+    EXPECT_EQ(flat.viewMs, 0.0);
+    EXPECT_EQ(solveBoxCost(0.0, 0.0, 0.0, 0.0, 0.0).fixedMs, 1e-6);  // no boxes: the least fixed part
+    // The prediction adds the fill of the views' shares.
+    ClusterCosts costs;
+    costs.texturedBoxMs = 0.1, costs.texturedViewMs = 8.0, costs.averageBoxMs = 0.05, costs.averageViewMs = 2.0;
+    EXPECT_NEAR(boxCostMs(costs, ClusterRep::Textured, 2.0), 16.1, 1e-12);
+    EXPECT_NEAR(boxCostMs(costs, ClusterRep::Average, 0.5), 1.05, 1e-12);
+}
+
+// Two objects under one cluster, at x0 and x1 (0.5 m cubes, 4.5 m to 5 m in front of cave4's
+// default head), costs as twoObjects' plus a fill per whole view.
+ClusterModel pairAt(double x0, double x1) {
+    ClusterModel m = twoObjects(-0.75);
+    m.tree = buildClusterTree({box({x0, 1, -5}, {x0 + 0.5, 1.5, -4.5}), box({x1, 1, -5}, {x1 + 0.5, 1.5, -4.5})}, {1, 1, 1});
+    m.costs.texturedViewMs = 8.0, m.costs.averageViewMs = 2.0;
+    return m;
+}
+
+TEST(ClusterFrame, ABoxCostsItsFillAndTheSelectionPaysIt) {
+    const display::Display display(config::loadDisplayConfig("cave4"));
+    const auto views = display.views(display.defaultHead());
+    const glm::dvec3 head = display.defaultHead().position;
+    auto rootBox = [&](const ClusterModel& m, glm::dvec3 eye) {
+        const ClusterFramePlan p = planClusterFrame(m, views, glm::dmat4(1.0), eye, 0.0, nullptr);
+        // A plan at a budget of 0 draws the root's box (the one with the most accuracy per
+        // cost) at this frame's cost, fill included.
+        EXPECT_EQ(p.boxes.size(), 1u);
+        if (p.boxes.empty()) return std::array<double, 2>{};
+        const auto& box = p.boxMs.at(static_cast<std::size_t>(m.tree.root));
+        EXPECT_NEAR(p.selectedMs, box[p.boxes[0].rep == ClusterRep::Average ? 1 : 0], 1e-12);
+        EXPECT_NEAR(p.cheapestMs, p.selectedMs, 1e-12);
+        return box;
+    };
+    // A wider cluster at the same distance covers more of the front view: more fill, the same
+    // fixed part (0.05 ms textured, 0.04 ms average).
+    const auto narrow = rootBox(pairAt(-0.75, 0.25), head), wide = rootBox(pairAt(-1.5, 1.0), head);
+    EXPECT_GT(wide[0], narrow[0]);
+    EXPECT_GT(narrow[0], 0.05);
+    EXPECT_GT(narrow[1], 0.04);
+    EXPECT_LT(narrow[0], 0.05 + 8.0);  // far less than one whole view
+    // A cluster around the eye may fill every view: its fill is one whole view per view. Its
+    // box shows nothing from inside and its objects cost less (0.42 ms), so even a budget of
+    // 0 draws them instead.
+    ClusterModel around = pairAt(-0.75, 0.25);
+    around.tree = buildClusterTree({box({-5, 0, -4}, {-4.5, 0.5, -3.5}), box({4.5, 2.5, 3.5}, {5, 3, 4})}, {1, 1, 1});
+    const ClusterFramePlan p = planClusterFrame(around, views, glm::dmat4(1.0), head, 0.0, nullptr);
+    const auto& inside = p.boxMs.at(static_cast<std::size_t>(around.tree.root));
+    EXPECT_NEAR(inside[0], 0.05 + 8.0 * static_cast<double>(views.size()), 1e-9);
+    EXPECT_NEAR(inside[1], 0.04 + 2.0 * static_cast<double>(views.size()), 1e-9);
+    EXPECT_TRUE(p.boxes.empty());
+    EXPECT_THAT(p.objects, ::testing::ElementsAre(0, 1));
+    EXPECT_NEAR(p.cheapestMs, 0.42, 1e-12);
 }
 
 TEST(ClusterFrame, ABackAndForthPathSwitchesAtMostOnce) {

@@ -200,6 +200,40 @@ TEST(ClusterSelect, NeverOverBudgetWhenTheRootFits) {
     }
 }
 
+TEST(ClusterSelect, NeverOverBudgetOrTheCheapestSelectionWhateverTheBudgetAndCoherence) {
+    // The frame-time controller (render/cluster_budget.h) relies on this: a frame's selection
+    // costs at most its budget, or, when the budget is below that, at most the selection at a
+    // budget of 0 (the floor's part), also while the coherence counter holds clusters back over
+    // a sequence of frames.
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(0.0, 20.0), c(0.1, 3.0), a(0.0, 1.0);
+    std::vector<scenes::Bounds> objects;
+    for (int i = 0; i < 80; ++i) {
+        const double x = u(rng), z = u(rng);
+        scenes::Bounds b;
+        b.add(glm::dvec3(x, 0, z));
+        b.add(glm::dvec3(x + 1, 1, z + 1));
+        objects.push_back(b);
+    }
+    const ClusterTree t = buildClusterTree(objects, {4, 1, 4});
+    ClusterCoherence coherence(2);
+    for (int frameIndex = 0; frameIndex < 60; ++frameIndex) {
+        std::vector<NodeFrame> frame(t.nodes.size());
+        for (auto& f : frame) {
+            f.benefit = a(rng);
+            f.visible = a(rng) > 0.2;
+            f.representations = {{0, c(rng), a(rng)}, {1, c(rng), a(rng)}};
+        }
+        frame[t.root].visible = true;
+        const double budget = 40.0 * a(rng) * a(rng);  // often below the root's cost (0.1 to 3)
+        const double cheapest = selectClusters(t, frame, 0.0).costMs;
+        const ClusterSelection s = selectClusters(t, frame, budget, &coherence);
+        SCOPED_TRACE(frameIndex);
+        EXPECT_LE(s.costMs, std::max(budget, cheapest) + 1e-9);
+        EXPECT_GT(cheapest, 0.0);
+    }
+}
+
 TEST(ClusterSelect, CoherenceDelaysRefiningButNotCollapsing) {
     const ClusterTree t = buildClusterTree(figure4(), {4, 1, 1});
     const auto frame = figure4Frame(t, {1, 1, 1, 1, 5, 5});
@@ -224,6 +258,21 @@ TEST(ClusterSelect, ACoherentClusterThatShowsNothingIsRefinedAtOnce) {
     frame[t.root].representations = {{2, 1.0, 0.0}};
     ClusterCoherence coherence(2);
     EXPECT_THAT(drawnNodes(selectClusters(t, frame, 3.0, &coherence)), ElementsAre(3, 7, 8));
+}
+
+TEST(ClusterSelect, AClusterThatShowsNothingIsRefinedWhenItsChildrenCostLessWhateverTheBudget) {
+    // The root's box around the eye shows nothing and fills every view (5 ms); its children
+    // (D, ABC, EF) cost 1 ms each: refining lowers the frame's cost, so it happens even at a
+    // budget of 0, and the cheapest selection is the children's 3 ms.
+    const ClusterTree t = buildClusterTree(figure4(), {4, 1, 1});
+    auto frame = figure4Frame(t, {1, 1, 1, 1, 5, 5});
+    frame[t.root].representations = {{2, 5.0, 0.0}};
+    const ClusterSelection s = selectClusters(t, frame, 0.0);
+    EXPECT_THAT(drawnNodes(s), ElementsAre(3, 7, 8));
+    EXPECT_DOUBLE_EQ(s.costMs, 3.0);
+    // Children that cost more than the useless box: over the budget, the box stays.
+    frame[t.root].representations = {{2, 2.0, 0.0}};
+    EXPECT_THAT(drawnNodes(selectClusters(t, frame, 0.0)), ElementsAre(t.root));
 }
 
 }  // namespace

@@ -472,7 +472,10 @@ void expectWithinBudget(const CsvTable& rows) {
             EXPECT_EQ(row.number("cluster_objects"), 0.0);
             EXPECT_EQ(row.number("cluster_textured") + row.number("cluster_average"), 1.0);
         }
-        EXPECT_GT(row.number("cluster_budget_ms"), 0.0);
+        EXPECT_GE(row.number("cluster_budget_ms"), 0.0);
+        // The selection's own cost never exceeds its budget, or the cheapest selection's.
+        EXPECT_LE(row.number("cluster_selected_ms"),
+                  std::max(row.number("cluster_budget_ms"), row.number("cluster_cheapest_ms")) + 1e-3);
         EXPECT_GT(row.number("cluster_objects") + row.number("cluster_textured") + row.number("cluster_average"), 0.0);
     }
 }
@@ -503,7 +506,9 @@ TEST(RunCli, ClustersDrawTheSelectionWithinTheBudgetAndReuseTheirImpostors) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("(0 made, "));
     // A tight budget of 0.5 ms draws clusters as boxes; the controller then sets each budget
-    // (frames here take more than 0.5 ms whatever is drawn, so it shrinks to the root alone).
+    // (frames here take more than 0.5 ms whatever is drawn, so it stays at the root alone), and
+    // every frame after the first reports the target as infeasible: its floor (the cheapest
+    // selection's frame time) is above it.
     const fs::path tight = outputDir("clusters-tight");
     std::vector<std::string> args = clusterRun(smallPlant(), tight, cache);
     args.insert(args.end(), {"--frame-budget-ms", "0.5", "--cluster-fade", "0"});
@@ -512,6 +517,14 @@ TEST(RunCli, ClustersDrawTheSelectionWithinTheBudgetAndReuseTheirImpostors) {
     const auto tightRows = readCsv(tight / "frames.csv");
     expectWithinBudget(tightRows);
     for (const auto& row : tightRows) EXPECT_EQ(row.number("cluster_fades"), 0.0);  // switched off
+    for (std::size_t i = 0; i < tightRows.size(); ++i) {
+        SCOPED_TRACE(i);
+        EXPECT_NEAR(tightRows[i].number("cluster_target_ms"), 0.5, 1e-9);
+        EXPECT_NEAR(tightRows[i].number("cluster_selected_ms"), tightRows[i].number("cluster_cheapest_ms"), 1e-3);
+        if (i == 0) continue;  // the controller has seen no frame yet
+        EXPECT_GT(tightRows[i].number("cluster_floor_ms"), 0.5);
+        EXPECT_GT(tightRows[i].number("cluster_predicted_frame_ms"), 0.0);
+    }
     EXPECT_GT(tightRows[0].number("cluster_textured") + tightRows[0].number("cluster_average"), 0.0);
 }
 

@@ -8,7 +8,9 @@
 #include "tests/wallsgl/bake_test_scene.h"
 #include "walls/gl/cluster_costs.h"
 #include "walls/gl/cluster_impostors.h"
+#include "config/error.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -87,7 +89,7 @@ TEST_F(ClusterImpostorsTest, ATexturedBoxShowsFullDetailAtItsSamplingEyeAndIsCac
     EXPECT_EQ(remade.stats().made, 1);
 }
 
-TEST_F(ClusterImpostorsTest, CostsAreMeasuredPositiveAndCachedPerRenderer) {
+TEST_F(ClusterImpostorsTest, CostsAreMeasuredPositiveAndCachedPerRendererAndResolution) {
     const scenes::Scene scene = threeBoxes();
     const std::filesystem::path cache = testOutputFolder("cluster-costs") / "cache";
     std::filesystem::remove_all(cache);
@@ -106,6 +108,14 @@ TEST_F(ClusterImpostorsTest, CostsAreMeasuredPositiveAndCachedPerRenderer) {
     EXPECT_EQ(second.file, first.file);
     // Another renderer measures again.
     EXPECT_FALSE(gl::measureClusterCosts(renderer, impostors, model, scene, "other renderer", cache).cached);
+    // So does another resolution (the display's own fill), into its own file; 256 is the default.
+    const gl::MeasuredCosts at64 = gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache, 64);
+    EXPECT_FALSE(at64.cached);
+    EXPECT_NE(at64.file, first.file);
+    EXPECT_TRUE(gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache, 64).cached);
+    EXPECT_TRUE(gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache, 256).cached);
+    EXPECT_THAT([&] { gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache, 0); },
+                ::testing::ThrowsMessage<Error>(::testing::HasSubstr("resolution: expected 1 to 16384 pixels, got 0")));
 }
 
 }  // namespace

@@ -2,16 +2,20 @@
 // The drawing costs of seed 004's representations, measured by drawing them on this machine
 // and renderer (seed 004, section 5.2), cached per renderer and model.
 //
-// One offscreen view of kCostResolution² pixels sees the whole model (render::viewOfBox from
-// above and aside). Each measurement is the median of 5 repetitions, each timed from glFinish
+// One offscreen view of `resolution`² pixels (the display's own: its largest screen side, so
+// that every draw pays the fill it pays on the display) sees the whole model (render::viewOfBox from
+// above and aside). Each measurement is the fastest of 7 repetitions (a shared machine's other
+// tenants only add time), each timed from glFinish
 // to glFinish on the calling thread:
 //  - the view with nothing in it (the fixed part, subtracted from the rest);
 //  - the smaller and the larger half of the objects (by triangles) at full detail, without
 //    culling: two equations for the cost of one object and of one triangle (least squares would
 //    need more draws; negative solutions fall back to triangles alone);
-//  - every cluster's textured box, then every average box, from the same view: per box.
-// Cache: <cache>/clusters/costs-<16 hex digits>.json, keyed by GL_RENDERER, GL_VERSION and the
-// objects' content keys; a missing or unreadable file is measured again.
+//  - every cluster's textured box, then the root's alone, from the same view (likewise the
+//    average boxes): two equations for a box's fixed part and its fill per whole view covered
+//    (render::viewShare summed over the boxes), render::solveBoxCost.
+// Cache: <cache>/clusters/costs-<16 hex digits>.json, keyed by the renderer's name, the
+// resolution and the objects' content keys; a missing or unreadable file is measured again.
 //
 // Needs the rendering context current.
 
@@ -24,7 +28,7 @@
 
 namespace cavewall::gl {
 
-inline constexpr int kCostResolution = 256;
+inline constexpr int kCostResolution = 256;  // the default when a caller has no display
 
 struct MeasuredCosts {
     render::ClusterCosts costs;
@@ -34,6 +38,7 @@ struct MeasuredCosts {
 
 MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostors& impostors,
                                   const render::ClusterModel& model, const scenes::Scene& scene,
-                                  const std::string& rendererName, const std::filesystem::path& cache);
+                                  const std::string& rendererName, const std::filesystem::path& cache,
+                                  int resolution = kCostResolution);
 
 }  // namespace cavewall::gl

@@ -117,6 +117,7 @@ struct Walkthrough::ClusterRuntime {
     render::ClusterFades fades;
     render::ClusterFramePlan last;
     std::vector<int> drawn;                  // the last frame's objects and structure
+    int costResolution = 0;                  // the cost view's side, pixels
 };
 
 namespace {
@@ -124,7 +125,15 @@ namespace {
 // The hierarchy over the content objects (structure gets empty bounds: never clustered), its
 // impostors and measured costs.
 std::unique_ptr<Walkthrough::ClusterRuntime> makeClusters(const scenes::Scene& scene, const ClusterOptions& o,
-                                                          SceneRenderer& renderer, const std::string& rendererName);
+                                                          SceneRenderer& renderer, const std::string& rendererName,
+                                                          int costResolution);
+
+// The display's largest screen side in pixels: what the cluster costs are measured at.
+int largestScreenSide(const display::Display& display) {
+    int side = 1;
+    for (const config::Screen& s : display.config().screens) side = std::max({side, s.resolution.x, s.resolution.y});
+    return side;
+}
 
 }  // namespace
 
@@ -144,7 +153,10 @@ Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescript
     _planner = std::make_unique<walls::FramePlanner>(scene, description, display, _walls ? &_walls->setup : nullptr,
                                                      _options.transition, _options.morphSeconds, _screens);
     _planner->requestCells(_walls && _walls->geometry);
-    if (_options.clusters.enabled) _clusters = makeClusters(scene, _options.clusters, _renderer, context.info().renderer);
+    if (_options.clusters.enabled)
+        _clusters = makeClusters(scene, _options.clusters, _renderer, context.info().renderer,
+                                 _options.clusters.costResolution > 0 ? _options.clusters.costResolution
+                                                                      : largestScreenSide(display));
     if (_walls && _options.transition == walls::Transition::Warp)
         _warp = std::make_unique<WarpPass>(scene, _renderer.gpu(), _options.render, display.depthRange().near);
 }
@@ -152,7 +164,8 @@ Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescript
 namespace {
 
 std::unique_ptr<Walkthrough::ClusterRuntime> makeClusters(const scenes::Scene& scene, const ClusterOptions& o,
-                                                          SceneRenderer& renderer, const std::string& rendererName) {
+                                                          SceneRenderer& renderer, const std::string& rendererName,
+                                                          int costResolution) {
     auto c = std::make_unique<Walkthrough::ClusterRuntime>();
     c->coherence = render::ClusterCoherence(o.coherenceFrames);
     c->fades = render::ClusterFades(o.fadeFrames);
@@ -166,7 +179,9 @@ std::unique_ptr<Walkthrough::ClusterRuntime> makeClusters(const scenes::Scene& s
     }
     c->model.tree = render::buildClusterTree(bounds, o.divisions);
     c->impostors = std::make_unique<ClusterImpostors>(scene, c->model, o.bake, o.cache);
-    c->model.costs = measureClusterCosts(renderer, *c->impostors, c->model, scene, rendererName, o.cache).costs;
+    c->model.costs =
+        measureClusterCosts(renderer, *c->impostors, c->model, scene, rendererName, o.cache, costResolution).costs;
+    c->costResolution = costResolution;
     return c;
 }
 
@@ -179,6 +194,7 @@ const ClusterBakeStats* Walkthrough::clusterBakeStats() const {
     return _clusters ? &_clusters->impostors->stats() : nullptr;
 }
 const render::ClusterFramePlan* Walkthrough::lastClusterPlan() const { return _clusters ? &_clusters->last : nullptr; }
+int Walkthrough::clusterCostResolution() const { return _clusters ? _clusters->costResolution : 0; }
 
 void Walkthrough::planClusters(const walls::FrameInput& input, glm::dvec3 eyeWorld, std::vector<int>& objects,
                                walls::FrameResult& result) {
@@ -195,6 +211,8 @@ void Walkthrough::planClusters(const walls::FrameInput& input, glm::dvec3 eyeWor
     result.clusterAverage = c.last.average;
     result.clusterFades = c.last.fades;
     result.clusterPredictedMs = c.last.predictedMs;
+    result.clusterSelectedMs = c.last.selectedMs;
+    result.clusterCheapestMs = c.last.cheapestMs;
     result.clusterBudgetMs = budget;
 }
 

@@ -69,6 +69,8 @@ struct ClusterOptions {
     int coherenceFrames = 3;                 // ClusterCoherence threshold
     int fadeFrames = 8;                      // render::ClusterFades: frames a switch is
                                              // cross-faded over (<= 1: none)
+    int costResolution = 0;                  // pixels of the cost view's side (cluster_costs.h);
+                                             // 0: the display's largest screen side
 };
 
 struct WalkthroughOptions : walls::WalkthroughSettings {
@@ -113,6 +115,7 @@ public:
     const render::ClusterModel* clusterModel() const;
     const ClusterBakeStats* clusterBakeStats() const;
     const render::ClusterFramePlan* lastClusterPlan() const;
+    int clusterCostResolution() const;        // the cost view's side in pixels (0 without clusters)
     struct ClusterRuntime;  // walkthrough.cpp
     // Blocks until the pager has decoded everything requested (warm-up for tests and benches).
     void waitForTextures();

@@ -131,6 +131,9 @@ BenchReport runBenchmark(const BenchOptions& o) {
     if (o.compareEvery < 1) throw Error("bench: compareEvery: expected at least 1, got " + std::to_string(o.compareEvery));
     if (o.alphasDeg.empty()) throw Error("bench: expected at least one alpha for the walls modes, got none");
     if (o.frames < 1) throw Error("--frames: expected at least 1, got " + std::to_string(o.frames));
+    for (double budget : o.clusterBudgetsMs)
+        if (!(budget > 0.0 && std::isfinite(budget)))
+            throw Error("bench: cluster budgets: expected milliseconds > 0, got " + config::formatNumber(budget));
     if (std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg) == o.alphasDeg.end())
         throw Error("bench: the warp alpha " + config::formatNumber(o.transitionAlphaDeg) +
                     " is not one of the planned alphas");
@@ -204,10 +207,14 @@ BenchReport runBenchmark(const BenchOptions& o) {
             addRun(wallsMode(o.alphasDeg[i], app::Transition::Blend, false, o.lodPixels, 0, o.frameBudgetMs), i,
                    app::Transition::Blend);
     if (o.clusters) {
-        ModeResult m;
-        m.mode = Mode::Clusters;
-        m.frameBudgetMs = o.frameBudgetMs > 0.0 ? o.frameBudgetMs : 1000.0 / 60.0;
-        runs[addRun(m, std::nullopt, app::Transition::Blend)].clusters = true;
+        std::vector<double> budgets = o.clusterBudgetsMs;
+        if (budgets.empty()) budgets.push_back(o.frameBudgetMs > 0.0 ? o.frameBudgetMs : 1000.0 / 60.0);
+        for (double budget : budgets) {
+            ModeResult m;
+            m.mode = Mode::Clusters;
+            m.frameBudgetMs = budget;
+            runs[addRun(m, std::nullopt, app::Transition::Blend)].clusters = true;
+        }
     }
     std::string names;
     for (const auto& acc : accs) names += (names.empty() ? "" : ", ") + modeLabel(acc->mode());
@@ -278,6 +285,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
         const NoiseComparison n = interleavedNoise(c, baked[alpha].setup, last, middle);
         auto ratio = [](const TimeStats& t) { return fixed(t.p50 > 0 ? t.p99 / t.p50 : 0.0, 2); };
         report.noiseFloorRatio = n.repeated.p50 > 0 ? n.repeated.p99 / n.repeated.p50 : 0.0;
+        report.noiseFloorP95Ratio = n.repeated.p50 > 0 ? n.repeated.p95 / n.repeated.p50 : 0.0;
         report.header.push_back(
             "noise floor: " + modeLabel(last) + " along the path, each frame followed by frame " +
             std::to_string(middle) + " again: the path's frames p50 " + fixed(n.path.p50, 2) + " ms, p99/p50 " +

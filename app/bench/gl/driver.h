@@ -69,6 +69,8 @@ struct BenchOptions {
     bool clusters = false;                        // also seed 004's textured clusters held to
                                                   // frameBudgetMs (16.67 when it is 0), interleaved
                                                   // with full geometry and the walls modes
+    std::vector<double> clusterBudgetsMs;         // with clusters: one clusters mode per budget
+                                                  // (render/cluster_budget.h) instead; each > 0
     bool verbose = true;                          // progress on stdout
 };
 

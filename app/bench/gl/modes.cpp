@@ -8,6 +8,7 @@
 #include "display/gl/render_targets.h"
 #include "display/gl/scene_renderer.h"
 #include "display/gl/view_loop.h"
+#include "app/cluster_control.h"
 #include "render/cluster_frame.h"
 #include "render/lod_choice.h"
 #include "walls/frame_planner.h"
@@ -43,7 +44,8 @@ ModeAccumulator::ModeAccumulator(ModeResult mode, const display::Display& displa
 }
 
 void ModeAccumulator::addFrame(const FrameCost& cost) {
-    _mode.frames.push_back({cost.frameMs, cost.triangles, cost.drawCalls, cost.uploadedMB, cost.texturesOverAlpha});
+    _mode.frames.push_back({cost.frameMs, cost.triangles, cost.drawCalls, cost.uploadedMB, cost.texturesOverAlpha,
+                            cost.clusterPredictedMs, cost.clusterPredictedFrameMs, cost.clusterFloorMs});
     _mode.texturesOverAlpha += cost.texturesOverAlpha;
     _frame.push_back(cost.frameMs);
     _cpu.push_back(cost.cpuMs);
@@ -113,21 +115,17 @@ ModeResult ModeAccumulator::finish(double fullP50) const {
 void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, ReferenceImages& reference) {
     struct Live {
         std::unique_ptr<gl::Walkthrough> walkthrough;
-        std::optional<display::FrameTimeBudget> frameBudget;
+        std::optional<display::FrameTimeBudget> frameBudget;     // levels of detail: triangles
+        std::optional<render::ClusterBudget> clusterBudget;      // clusters: predicted ms
         std::vector<double> warmTriangles;
-        bool clusters = false;
-        double fullDetailMs = 0.0;   // clusters: render::fullDetailCostMs
     };
     std::vector<Live> live(runs.size());
-    auto render = [](Live& l, walls::FrameInput in) {
-        if (l.frameBudget && !l.clusters) in.triangleBudget = l.frameBudget->budget();
-        if (l.frameBudget && l.clusters) in.clusterBudgetMs = static_cast<double>(l.frameBudget->budget()) / 1000.0;
+    auto render = [](Live& l, walls::FrameInput in) {  // as app/gl/run_session.cpp
+        if (l.frameBudget) in.triangleBudget = l.frameBudget->budget();
+        if (l.clusterBudget) in.clusterBudgetMs = app::clusterBudgetFor(*l.clusterBudget);
         walls::FrameResult r = l.walkthrough->renderFrame(in);
-        if (l.frameBudget && !l.clusters) l.frameBudget->update(r.frameMs, r.geometryTriangles);
-        if (l.frameBudget && l.clusters) {  // predicted microseconds, as app/gl/run_session.cpp
-            const double ms = render::controlledCostMs(*l.walkthrough->lastClusterPlan(), l.fullDetailMs);
-            l.frameBudget->update(r.frameMs, static_cast<std::size_t>(std::llround(ms * 1000.0)));
-        }
+        if (l.frameBudget) l.frameBudget->update(r.frameMs, r.geometryTriangles);
+        if (l.clusterBudget) app::controlClusters(*l.clusterBudget, r);
         return r;
     };
     const long frames = static_cast<long>(c.path.frames.size());
@@ -155,9 +153,8 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         }
         const bool hasWalls = run.walls.has_value();
         l.walkthrough = std::make_unique<gl::Walkthrough>(c.scene, c.description, c.display, c.context, run.walls, options);
-        if (mode.frameBudgetMs > 0.0) l.frameBudget.emplace(mode.frameBudgetMs);
-        l.clusters = run.clusters;
-        if (run.clusters) l.fullDetailMs = render::fullDetailCostMs(*l.walkthrough->clusterModel());
+        if (mode.frameBudgetMs > 0.0 && !run.clusters) l.frameBudget.emplace(mode.frameBudgetMs);
+        if (mode.frameBudgetMs > 0.0 && run.clusters) l.clusterBudget.emplace(mode.frameBudgetMs);
         // Warm-up: shaders, buffers and (with walls, unless paged) every texture of the path made
         // resident; the whole path too for a run whose triangles set a later run's budget.
         bool budgetSource = false;
@@ -175,7 +172,8 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
             runs[i].acc->addFrame({r.frameMs, r.cpuMs, r.gpuMs, static_cast<double>(r.stats.triangles),
                                    static_cast<double>(r.stats.drawCalls), r.maxErrorDeg, r.maxErrorPixels,
                                    r.pager.residentMB, r.pager.misses, r.perScreen, r.lodErrorPx, r.lodTolerancePx,
-                                   r.lodOverBudget, r.texturesOverAlpha, static_cast<double>(r.uploadedBytes) / 1e6});
+                                   r.lodOverBudget, r.texturesOverAlpha, static_cast<double>(r.uploadedBytes) / 1e6,
+                                   r.clusterPredictedMs, r.clusterPredictedFrameMs, r.clusterFloorMs});
             if (!in.readImages) continue;
             if (runs[i].storeReference) reference[in.frame] = std::move(r.images);
             else runs[i].acc->compare(in.frame, in.head, r.images, reference.at(in.frame));

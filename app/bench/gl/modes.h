@@ -28,6 +28,9 @@ struct FrameCost {
     bool overBudget = false;
     int texturesOverAlpha = 0;          // FrameResult's: drawn textures whose exact error exceeds alpha
     double uploadedMB = 0.0;            // wall texture MB uploaded this frame
+    // Clusters held to a frame time (FrameResult's): the predicted cost of what was drawn, the
+    // frame time the controller predicted and the floor (0 without one).
+    double clusterPredictedMs = 0.0, clusterPredictedFrameMs = 0.0, clusterFloorMs = 0.0;
 };
 
 // Collects one mode's frames and comparisons; finish() fills the bench::ModeResult.

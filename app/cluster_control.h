@@ -1,0 +1,23 @@
+#pragma once
+// The frame-time controller of seed 004's clusters (render/cluster_budget.h) applied to the
+// walkthrough's frames, one definition for `cavewall run --clusters` and the bench's clusters
+// modes: before a frame, the selection's budget for walls::FrameInput; after it, the
+// controller's prediction, floor and target written into walls::FrameResult (frames.csv,
+// bench_frames.csv), then the controller updated with the frame.
+
+#include "render/cluster_budget.h"
+#include "walls/frame_types.h"
+
+namespace cavewall::app {
+
+// FrameInput::clusterBudgetMs for the next frame: the controller's selection budget, at least
+// 1e-9 ms (0 would mean "no budget given"), so that a budget of 0 draws the cheapest selection.
+double clusterBudgetFor(const render::ClusterBudget& budget);
+
+// After a frame of the walkthrough with clusters: fills r.clusterTargetMs,
+// r.clusterPredictedFrameMs and r.clusterFloorMs from what the controller knew before the
+// frame (0 before its first frame), then updates it with r.frameMs, r.clusterPredictedMs and
+// r.clusterSelectedMs.
+void controlClusters(render::ClusterBudget& budget, walls::FrameResult& r);
+
+}  // namespace cavewall::app
