@@ -10,6 +10,7 @@
 #endif
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -22,7 +23,7 @@ const char* const kBenchUsage =
     "                      [--stereo mono|separate] [--quick] [--cache DIR] [--compare-every K] [--min-zone M] [--ppd N]\n"
     "                      [--bake-resolution N] [--alphas A,B,...] [--warp-alpha A]\n"
     "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
-    "                      [--walls flat|depth] [--clusters]\n"
+    "                      [--walls flat|depth] [--clusters] [--compare-scene OTHER,...] [--on-demand]\n"
     "       cavewall bench --scale 2M,8M,32M [--data DIR] [--scale-metres M] [--frames N] [--resolution N]\n"
     "                      [--display D] [--bake-resolution N] [--geometry-budget MB] [--lod PX] [--out DIR]\n"
     "       cavewall bench --stability\n"
@@ -53,6 +54,17 @@ const char* const kBenchUsage =
     "         --clusters adds seed 004's textured clusters (`cavewall run --clusters`) held to\n"
     "         --frame-budget-ms (16.67 when it is 0) by the controller, drawn in turn with full\n"
     "         geometry and the walls modes (impostors made into the cache first).\n"
+    "         --compare-scene OTHER[,OTHER2...] (issue 19): scene.json files of the same model\n"
+    "         with other cells and walls (e.g. `cavewall walls`'s proposal for SCENE, given its\n"
+    "         texture budget): each one's walls are planned and baked at every alpha and drawn in\n"
+    "         blend modes (and with levels of detail) on SCENE's eye path, frame by frame in turn\n"
+    "         with full geometry and SCENE's walls, labelled with its folder's name ('walls a=10\n"
+    "         blend [auto]'); a target line sets each speed-up against SCENE's same mode (>= 0.9).\n"
+    "         --on-demand (issue 19): after the paged mode, walls at --warp-alpha baked on demand\n"
+    "         (`cavewall run --bake-on-demand`) from an empty private cache, DIR/on-demand-cache\n"
+    "         (emptied first; never the shared --cache): first frame after the scene's load,\n"
+    "         geometry fallbacks per frame (bench_frames.csv), textures baked, and frame-time\n"
+    "         p99/p50 against the noise floor. Flat walls only.\n"
     "         Per mode: frame, CPU and GPU ms p50/p95/p99, speed-up, the triangles' p99/p50,\n"
     "         triangles, draw calls, textures, texels, disk and GPU MB, and the image error\n"
     "         against full geometry at the same frame, eye and screen, with the worst angular\n"
@@ -133,6 +145,33 @@ std::vector<double> alphaList(const std::string& text) {
     return out;
 }
 
+// The compare scene's label: its folder's name ("auto" for auto/scene.json), letters, digits,
+// '_', '-' and '.' kept, anything else '_' (labels go into CSV cells).
+std::string compareTag(const std::filesystem::path& scene) {
+    const std::filesystem::path absolute = std::filesystem::absolute(scene).lexically_normal();
+    const bool file = absolute.has_extension() || std::filesystem::is_regular_file(absolute);
+    std::string tag = (file ? absolute.parent_path() : absolute).filename().string();
+    if (tag.empty()) tag = (file ? absolute.parent_path().parent_path() : absolute.parent_path()).filename().string();
+    for (char& ch : tag)
+        if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '-' && ch != '.') ch = '_';
+    return tag.empty() ? "compare" : tag;
+}
+
+// "a/scene.json,b/scene.json": at least one path, none empty.
+std::vector<std::string> sceneList(const std::string& text) {
+    std::vector<std::string> out;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t end = std::min(text.find(',', start), text.size());
+        out.push_back(text.substr(start, end - start));
+        if (out.back().empty())
+            throw Error("bench: --compare-scene: expected scene files separated by commas, got an empty entry " +
+                        std::to_string(out.size()) + " in '" + text + "'");
+        start = end + 1;
+    }
+    return out;
+}
+
 int runSceneBench(const Args& args) {
     const bool quick = args.has("quick");
     gl::BenchOptions o;
@@ -173,6 +212,9 @@ int runSceneBench(const Args& args) {
     }
     if (auto cache = args.get("cache")) o.cache = *cache;
     const std::filesystem::path out = args.getOr("out", "bench-out");
+    if (auto list = args.get("compare-scene"))
+        for (const std::string& scene : sceneList(*list)) o.compareScenes.push_back({scene, compareTag(scene)});
+    if (args.has("on-demand")) o.onDemandCache = out / "on-demand-cache";
     const bench::BenchReport report = gl::runBenchmark(o);
     bench::writeReport(out, report);
     std::cout << "\n" << bench::markdownReport(report) << "\n" << (out / "bench.csv").string() << "\n"
@@ -205,11 +247,12 @@ int runScaleBench(const Args& args) {
 }  // namespace
 
 int runBench(const std::vector<std::string>& words) {
-    const Args args(words, {"stability", "quick", "clusters"});
+    const Args args(words, {"stability", "quick", "clusters", "on-demand"});
     args.expectFlags({"stability", "quick", "display", "path", "route", "out", "frames", "resolution", "stereo", "cache",
                       "compare-every",
                       "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod", "triangle-budget", "frame-budget-ms", "lod-max",
-                      "walls", "clusters", "scale", "data", "scale-metres", "geometry-budget"});
+                      "walls", "clusters", "compare-scene", "on-demand", "scale", "data", "scale-metres",
+                      "geometry-budget"});
     if (args.has("stability")) return runStability();
 #ifdef CAVEWALL_HAVE_GL
     if (args.has("scale")) return runScaleBench(args);
