@@ -109,6 +109,32 @@ std::unique_ptr<CompareScene> loadCompareScene(const BenchOptions& o, const Benc
     return other;
 }
 
+// Plans and bakes every compare scene's walls at every alpha (per scene, per alpha), with a
+// header line for each.
+std::vector<std::vector<BakedWalls>> bakeCompareScenes(const BenchOptions& o,
+                                                       const std::vector<std::unique_ptr<CompareScene>>& others,
+                                                       const scenes::SceneDescription& description,
+                                                       gl::Context& context, BenchReport& report) {
+    std::vector<std::vector<BakedWalls>> otherBaked(others.size());
+    for (std::size_t k = 0; k < others.size(); ++k) {
+        const BenchOptions::CompareScene& which = o.compareScenes[k];
+        const CompareScene& other = *others[k];
+        report.header.push_back("compare scene [" + which.tag + "]: " + which.scene.string() + " (" +
+                                std::to_string(other.description.cells.size()) + " cells, " +
+                                std::to_string(other.description.walls.size()) + " walls; the bench scene: " +
+                                std::to_string(description.cells.size()) + " cells, " +
+                                std::to_string(description.walls.size()) + " walls), drawn on the bench scene's eye "
+                                "path, its own plan and bake at every alpha");
+        for (double alpha : o.alphasDeg) {
+            say(o, "bench: plan and bake [" + which.tag + "]'s walls at a=" + config::formatNumber(alpha) + " deg");
+            otherBaked[k].push_back(bakeWalls(o, which.scene, alpha, other.scene, other.description, context));
+            say(o, "bench: [" + which.tag + "] " + otherBaked[k].back().summary);
+            report.header.push_back("bake [" + which.tag + "] " + otherBaked[k].back().summary);
+        }
+    }
+    return otherBaked;
+}
+
 // The on-demand mode (--on-demand): plans the walls at `alphaDeg` and walks from an empty,
 // private cache while the background baker bakes what the frames want.
 ModeResult onDemandMode(const BenchOptions& o, double alphaDeg, const ModeContext& c, const ReferenceImages& reference,
@@ -237,23 +263,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
         say(o, "bench: " + baked.back().summary);
         report.header.push_back("bake " + baked.back().summary);
     }
-    std::vector<std::vector<BakedWalls>> otherBaked(others.size());  // per compare scene, per alpha
-    for (std::size_t k = 0; k < others.size(); ++k) {
-        const BenchOptions::CompareScene& which = o.compareScenes[k];
-        const CompareScene& other = *others[k];
-        report.header.push_back("compare scene [" + which.tag + "]: " + which.scene.string() + " (" +
-                                std::to_string(other.description.cells.size()) + " cells, " +
-                                std::to_string(other.description.walls.size()) + " walls; the bench scene: " +
-                                std::to_string(description.cells.size()) + " cells, " +
-                                std::to_string(description.walls.size()) + " walls), drawn on the bench scene's eye "
-                                "path, its own plan and bake at every alpha");
-        for (double alpha : o.alphasDeg) {
-            say(o, "bench: plan and bake [" + which.tag + "]'s walls at a=" + config::formatNumber(alpha) + " deg");
-            otherBaked[k].push_back(bakeWalls(o, which.scene, alpha, other.scene, other.description, *context));
-            say(o, "bench: [" + which.tag + "] " + otherBaked[k].back().summary);
-            report.header.push_back("bake [" + which.tag + "] " + otherBaked[k].back().summary);
-        }
-    }
+    const std::vector<std::vector<BakedWalls>> otherBaked = bakeCompareScenes(o, others, description, *context, report);
     const auto listed = std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg);
     const std::size_t transitionIndex = listed - o.alphasDeg.begin();  // listed: checked on entry
 
