@@ -10,6 +10,7 @@
 #endif
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -24,6 +25,7 @@ const char* const kBenchUsage =
     "                      [--bake-resolution N] [--alphas A,B,...] [--warp-alpha A]\n"
     "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
     "                      [--walls flat|depth] [--clusters [--cluster-budgets T1,T2,...]]\n"
+    "                      [--compare-scene OTHER,...] [--on-demand]\n"
     "       cavewall bench --scale 2M,8M,32M [--data DIR] [--scale-metres M] [--frames N] [--resolution N]\n"
     "                      [--display D] [--bake-resolution N] [--geometry-budget MB] [--lod PX] [--out DIR]\n"
     "       cavewall bench --stability\n"
@@ -59,6 +61,17 @@ const char* const kBenchUsage =
     "         budget; a target line per budget gives p95 over the budget (target <= 1.1), the\n"
     "         floor (the cheapest selection's frame time: a budget below it is infeasible),\n"
     "         predicted against measured frame times and a fit of measured on predicted cost.\n"
+    "         --compare-scene OTHER[,OTHER2...] (issue 19): scene.json files of the same model\n"
+    "         with other cells and walls (e.g. `cavewall walls`'s proposal for SCENE, given its\n"
+    "         texture budget): each one's walls are planned and baked at every alpha and drawn in\n"
+    "         blend modes (and with levels of detail) on SCENE's eye path, frame by frame in turn\n"
+    "         with full geometry and SCENE's walls, labelled with its folder's name ('walls a=10\n"
+    "         blend [auto]'); a target line sets each speed-up against SCENE's same mode (>= 0.9).\n"
+    "         --on-demand (issue 19): after the paged mode, walls at --warp-alpha baked on demand\n"
+    "         (`cavewall run --bake-on-demand`) from an empty private cache, DIR/on-demand-cache\n"
+    "         (emptied first; never the shared --cache): first frame after the scene's load,\n"
+    "         geometry fallbacks per frame (bench_frames.csv), textures baked, and frame-time\n"
+    "         p99/p50 against the noise floor. Flat walls only.\n"
     "         Per mode: frame, CPU and GPU ms p50/p95/p99, speed-up, the triangles' p99/p50,\n"
     "         triangles, draw calls, textures, texels, disk and GPU MB, and the image error\n"
     "         against full geometry at the same frame, eye and screen, with the worst angular\n"
@@ -153,6 +166,33 @@ std::vector<double> budgetList(const std::string& text) {
     });
 }
 
+// The compare scene's label: its folder's name ("auto" for auto/scene.json), letters, digits,
+// '_', '-' and '.' kept, anything else '_' (labels go into CSV cells).
+std::string compareTag(const std::filesystem::path& scene) {
+    const std::filesystem::path absolute = std::filesystem::absolute(scene).lexically_normal();
+    const bool file = absolute.has_extension() || std::filesystem::is_regular_file(absolute);
+    std::string tag = (file ? absolute.parent_path() : absolute).filename().string();
+    if (tag.empty()) tag = (file ? absolute.parent_path().parent_path() : absolute.parent_path()).filename().string();
+    for (char& ch : tag)
+        if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '-' && ch != '.') ch = '_';
+    return tag.empty() ? "compare" : tag;
+}
+
+// "a/scene.json,b/scene.json": at least one path, none empty.
+std::vector<std::string> sceneList(const std::string& text) {
+    std::vector<std::string> out;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t end = std::min(text.find(',', start), text.size());
+        out.push_back(text.substr(start, end - start));
+        if (out.back().empty())
+            throw Error("bench: --compare-scene: expected scene files separated by commas, got an empty entry " +
+                        std::to_string(out.size()) + " in '" + text + "'");
+        start = end + 1;
+    }
+    return out;
+}
+
 int runSceneBench(const Args& args) {
     const bool quick = args.has("quick");
     gl::BenchOptions o;
@@ -197,6 +237,9 @@ int runSceneBench(const Args& args) {
     }
     if (auto cache = args.get("cache")) o.cache = *cache;
     const std::filesystem::path out = args.getOr("out", "bench-out");
+    if (auto list = args.get("compare-scene"))
+        for (const std::string& scene : sceneList(*list)) o.compareScenes.push_back({scene, compareTag(scene)});
+    if (args.has("on-demand")) o.onDemandCache = out / "on-demand-cache";
     const bench::BenchReport report = gl::runBenchmark(o);
     bench::writeReport(out, report);
     std::cout << "\n" << bench::markdownReport(report) << "\n" << (out / "bench.csv").string() << "\n"
@@ -229,11 +272,12 @@ int runScaleBench(const Args& args) {
 }  // namespace
 
 int runBench(const std::vector<std::string>& words) {
-    const Args args(words, {"stability", "quick", "clusters"});
+    const Args args(words, {"stability", "quick", "clusters", "on-demand"});
     args.expectFlags({"stability", "quick", "display", "path", "route", "out", "frames", "resolution", "stereo", "cache",
                       "compare-every",
                       "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod", "triangle-budget", "frame-budget-ms", "lod-max",
-                      "walls", "clusters", "cluster-budgets", "scale", "data", "scale-metres", "geometry-budget"});
+                      "walls", "clusters", "cluster-budgets", "compare-scene", "on-demand", "scale", "data",
+                      "scale-metres", "geometry-budget"});
     if (args.has("stability")) return runStability();
 #ifdef CAVEWALL_HAVE_GL
     if (args.has("scale")) return runScaleBench(args);

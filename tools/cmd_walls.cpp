@@ -16,7 +16,8 @@ namespace cavewall::tools {
 const char* const kWallsUsage =
     "usage: cavewall walls MODEL --out SCENE_JSON [--texture-budget MB] [--alpha DEG] [--max-res N]\n"
     "                      [--ppd N] [--min-cell M] [--max-cells N] [--ms-per-mtri MS]\n"
-    "                      [--ms-per-wall MS] [--split M] [--rooms] [--png FILE]\n"
+    "                      [--ms-per-wall MS] [--split M] [--rooms] [--keep-paths] [--walk-cost]\n"
+    "                      [--png FILE]\n"
     "\n"
     "Proposes cells and virtual walls for MODEL (a glTF/GLB nobody prepared, or a scene.json or\n"
     "its folder, whose cells and walls are replaced): finds structure (large planes, or the\n"
@@ -39,12 +40,19 @@ const char* const kWallsUsage =
     "A building with real walls (thin vertical structure pieces) gets one more candidate, the\n"
     "rooms: cells cut along the lines of real walls, each doorway a portal (as high as its lintel)\n"
     "and every piece a real wall; --rooms chooses it whatever the cost model says (the model\n"
-    "does not count what real walls hide).\n";
+    "does not count what real walls hide).\n"
+    "--keep-paths keeps the input scene's walkPath and wallPath instead of the proposal's loop\n"
+    "(so that `run` and `bench` walk the same path on both), each point checked to lie in a\n"
+    "proposed cell.\n"
+    "--walk-cost scores every grid by eyes every 0.25 m along the input's walk path (without\n"
+    "one, a 0.5 m grid over the floor), each drawing its cell plus every neighbour whose wall's\n"
+    "geometry zone or texture->geometry blend strip holds it, as the walkthrough does (the\n"
+    "default counts the viewer's cell only, weighted by floor area).\n";
 
 int runWalls(const std::vector<std::string>& words) {
-    const Args args(words, {"rooms"});
+    const Args args(words, {"rooms", "keep-paths", "walk-cost"});
     args.expectFlags({"out", "texture-budget", "alpha", "max-res", "ppd", "min-cell", "max-cells", "ms-per-mtri",
-                      "ms-per-wall", "split", "rooms", "png"});
+                      "ms-per-wall", "split", "rooms", "keep-paths", "walk-cost", "png"});
     walls::AutoWallsOptions options;
     options.plan.alphaDeg = args.number("alpha", options.plan.alphaDeg, 1e-6, 90.0);
     options.plan.pixelsPerDegree = args.number("ppd", options.plan.pixelsPerDegree, 0.01, 1000.0);
@@ -55,6 +63,7 @@ int runWalls(const std::vector<std::string>& words) {
     options.msPerMillionTriangles = args.number("ms-per-mtri", options.msPerMillionTriangles, 0.0, 1e9);
     options.msPerWallSide = args.number("ms-per-wall", options.msPerWallSide, 0.0, 1e9);
     options.preferRooms = args.has("rooms");
+    options.walkCost = args.has("walk-cost");
     walls::validateAutoWallsOptions(options);
     const std::string& path = args.positional(0, "MODEL");
     if (args.positional().size() > 1)
@@ -101,6 +110,13 @@ int runWalls(const std::vector<std::string>& words) {
     for (scenes::ModelFile& m : result.description.models)
         m.file = std::filesystem::relative(std::filesystem::absolute(base.folder / m.file), outFolder);
     result.description.folder = outFolder;
+    if (args.has("keep-paths")) {
+        if (base.walkPath.empty())
+            throw Error("walls: --keep-paths: expected a walkPath in " + path + ", got none");
+        result.description.walkPath = base.walkPath;
+        result.description.wallPath = base.wallPath;
+        scenes::validateSceneDescription(result.description, out.string() + " (--keep-paths: the paths of " + path + ")");
+    }
 
     std::printf("floor y %.3f m, ceiling y %.3f m, walkable x [%.2f, %.2f] z [%.2f, %.2f] m, %zu structure objects\n",
                 result.floorY, result.ceilingY, result.floorMin.x, result.floorMax.x, result.floorMin.y,

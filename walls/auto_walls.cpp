@@ -7,8 +7,10 @@
 #include "walls/plan_io.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace cavewall::walls {
 
@@ -233,12 +235,16 @@ scenes::SceneDescription describe(const scenes::SceneDescription& base, const Gr
 
 // E[ms], triangles, textures and MiB of description `d` (AutoWallsCandidate without nx, nz).
 // A cell's triangles are those of the content boxes meeting its region's bounding rectangle
-// (exact for the rectangular cells proposed here).
+// (exact for the rectangular cells proposed here). `eyes` (x, y, z): the walk cost's (6.);
+// empty: the floor cost (4.).
 AutoWallsCandidate evaluate(const scenes::SceneDescription& d, const std::vector<scenes::Bounds>& content,
-                            const std::vector<std::size_t>& contentTriangles, const AutoWallsOptions& options) {
+                            const std::vector<std::size_t>& contentTriangles, const AutoWallsOptions& options,
+                            const std::vector<glm::dvec3>& eyes = {}) {
     AutoWallsCandidate c;
     double area = 0.0;
     for (const scenes::Cell& cell : d.cells) area += std::abs(scenes::regionArea(cell.region));
+    std::vector<double> cellTriangles(d.cells.size(), 0.0);
+    std::vector<int> cellSides(d.cells.size(), 0);
     for (std::size_t i = 0; i < d.cells.size(); ++i) {
         const scenes::Cell& cell = d.cells[i];
         glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
@@ -251,16 +257,59 @@ AutoWallsCandidate evaluate(const scenes::SceneDescription& d, const std::vector
                 triangles += static_cast<double>(contentTriangles[o]);
         int sides = 0;
         for (const scenes::VirtualWall& w : d.walls) sides += (w.cells[0] == static_cast<int>(i)) + (w.cells[1] == static_cast<int>(i));
+        cellTriangles[i] = triangles, cellSides[i] = sides;
         c.meanCellTriangles += share * triangles;
         c.expectedMs += share * (options.msPerMillionTriangles * triangles / 1e6 + options.msPerWallSide * sides);
     }
+    std::optional<Plan> plan;
     if (!d.walls.empty()) {
-        const Plan plan = planZones(d, options.plan);
-        c.textures = static_cast<int>(plan.textures.size());
-        c.textureMB = planTotals(plan).gpuBytes / (1024.0 * 1024.0);
+        plan = planZones(d, options.plan);
+        c.textures = static_cast<int>(plan->textures.size());
+        c.textureMB = planTotals(*plan).gpuBytes / (1024.0 * 1024.0);
     }
     c.withinBudget = c.textureMB <= options.textureBudgetMB;
+    if (eyes.empty()) return c;
+    double ms = 0.0, triangles = 0.0;
+    int counted = 0;
+    for (const glm::dvec3& eye : eyes) {
+        const int cell = scenes::findCell(d.cells, eye);
+        if (cell < 0) continue;
+        double drawn = cellTriangles[cell];
+        if (plan)
+            for (const WallSide& side : plan->sides) {
+                if (side.cell != cell) continue;
+                const int z = findZone(*plan, cell, side.wall, {eye.x, eye.z});
+                if (z < 0) continue;
+                const Zone& zone = plan->zones[z];
+                if (zone.kind != ZoneKind::Geometry && !(zone.kind == ZoneKind::Blend && zone.mixesGeometry)) continue;
+                const std::array<int, 2>& both = plan->walls[side.wall].cells;
+                const int behind = both[0] == cell ? both[1] : both[0];
+                if (behind >= 0) drawn += cellTriangles[behind];
+            }
+        ms += options.msPerMillionTriangles * drawn / 1e6 + options.msPerWallSide * cellSides[cell];
+        triangles += drawn;
+        ++counted;
+    }
+    if (counted > 0) c.expectedMs = ms / counted, c.meanCellTriangles = triangles / counted;
     return c;
+}
+
+// The walk cost's eyes (6.): every 0.25 m along `walkPath`, or a 0.5 m grid over [lo, hi] at
+// eye height when there is no path.
+std::vector<glm::dvec3> costEyes(const std::vector<glm::dvec3>& walkPath, glm::dvec2 lo, glm::dvec2 hi, double eyeY) {
+    std::vector<glm::dvec3> eyes;
+    if (walkPath.size() >= 2) {
+        for (std::size_t i = 0; i + 1 < walkPath.size(); ++i) {
+            const double length = glm::length(walkPath[i + 1] - walkPath[i]);
+            const int steps = std::max(1, static_cast<int>(std::ceil(length / 0.25)));
+            for (int k = 0; k < steps; ++k) eyes.push_back(glm::mix(walkPath[i], walkPath[i + 1], double(k) / steps));
+        }
+        eyes.push_back(walkPath.back());
+        return eyes;
+    }
+    for (double x = lo.x + 0.25; x < hi.x; x += 0.5)
+        for (double z = lo.y + 0.25; z < hi.y; z += 0.5) eyes.push_back({x, eyeY, z});
+    return eyes;
 }
 
 }  // namespace
@@ -360,7 +409,9 @@ AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDesc
                 nodes.push_back(s);
     }
 
-    // 3-4. Candidates, cost and budget.
+    // 3-4. Candidates, cost and budget (6.: the walk cost's eyes).
+    const std::vector<glm::dvec3> eyes =
+        options.walkCost ? costEyes(base.walkPath, lo, hi, result.floorY + base.eyeHeight) : std::vector<glm::dvec3>{};
     const int maxX = std::clamp(static_cast<int>((hi.x - lo.x) / options.minCellSize), 1, options.maxCellsPerAxis);
     const int maxZ = std::clamp(static_cast<int>((hi.y - lo.y) / options.minCellSize), 1, options.maxCellsPerAxis);
     std::vector<scenes::SceneDescription> descriptions;
@@ -369,7 +420,7 @@ AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDesc
             Grid g{chooseCuts(lo.x, hi.x, nx, content, 0), chooseCuts(lo.y, hi.y, nz, content, 2)};
             scenes::SceneDescription d = describe(named, g, result.floorY, result.ceilingY, base.eyeHeight);
             scenes::validateSceneDescription(d, "auto walls");
-            AutoWallsCandidate c = evaluate(d, content, contentTriangles, options);
+            AutoWallsCandidate c = evaluate(d, content, contentTriangles, options, eyes);
             c.nx = nx, c.nz = nz;
             result.candidates.push_back(c);
             descriptions.push_back(std::move(d));
@@ -388,7 +439,7 @@ AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDesc
         scenes::SceneDescription d = describe(named, g, result.floorY, result.ceilingY, base.eyeHeight);
         makeRooms(d, pieces, result.floorY, result.ceilingY);
         scenes::validateSceneDescription(d, "auto walls (rooms)");
-        AutoWallsCandidate c = evaluate(d, content, contentTriangles, options);
+        AutoWallsCandidate c = evaluate(d, content, contentTriangles, options, eyes);
         c.nx = static_cast<int>(g.xs.size()) - 1, c.nz = static_cast<int>(g.zs.size()) - 1;
         c.rooms = true;
         for (const scenes::VirtualWall& w : d.walls) ++(w.kind == scenes::WallKind::Portal ? c.portals : c.virtualWalls);
@@ -404,7 +455,7 @@ AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDesc
         for (std::size_t i = 0; i < result.candidates.size(); ++i)
             if (result.candidates[i].rooms && result.candidates[i].withinBudget) result.chosen = static_cast<int>(i);
     result.description = std::move(descriptions[result.chosen]);
-    if (!base.walls.empty()) result.given = evaluate(base, content, contentTriangles, options);
+    if (!base.walls.empty()) result.given = evaluate(base, content, contentTriangles, options, eyes);
     return result;
 }
 

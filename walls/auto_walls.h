@@ -30,6 +30,14 @@
 //    (as high as the lowest piece above the gap: a lintel, else the ceiling), nothing where they
 //    close it; a boundary on no line stays a virtual wall. Every piece becomes a real wall.
 //    The rooms are scored like every grid and chosen when they cost the least.
+// 6. Walk cost (walkCost). 4. counts only the viewer's cell, but the walkthrough also draws the
+//    cell behind a wall as geometry while the eye is in that wall's geometry zone or its
+//    texture->geometry blend strip (walls/plan.h), and a walk follows aisles, where cuts
+//    straddle the fewest objects. So: eyes every 0.25 m along the input description's
+//    walkPath (without one, on a 0.5 m grid over the walkable rectangle); each eye costs
+//    msPerMillionTriangles x (its cell's triangles + those of every neighbour whose zone
+//    holding the eye draws it as geometry, the planner's own zones) / 1e6 + msPerWallSide x its
+//    cell's wall sides; E[ms] and meanCellTriangles are the means over the eyes.
 //    The costs per triangle and per texture are inputs: measure them on the target machine
 //    (`cavewall bench`'s full-geometry and walls rows give both); the defaults are this
 //    project's llvmpipe figures at 1024 x 1024 per screen (README, issue 14's table).
@@ -57,6 +65,9 @@ struct AutoWallsOptions {
     bool preferRooms = false;               // choose the rooms (5.) whatever the cost model says,
                                             // when there are rooms within the budget (the model
                                             // does not count what real walls hide)
+    // The walk cost (6.) instead of 4.'s floor cost: eyes along the input's walk path, each
+    // also drawing the neighbours whose geometry zones hold it (`cavewall walls --walk-cost`).
+    bool walkCost = false;
 };
 
 // Throws cavewall::Error naming the option when it is out of range.

@@ -105,7 +105,8 @@ std::vector<std::string> wallsTargetLines(const BenchReport& report) {
     const ModeResult* best = nullptr;      // fastest eligible
     const ModeResult* closest = nullptr;   // best pooled PSNR among the candidates
     for (const ModeResult& m : report.modes) {
-        if (m.mode != Mode::Walls || m.alphaDeg > kAlpha || m.lodPixels <= 0.0) continue;
+        if (m.mode != Mode::Walls || m.alphaDeg > kAlpha || m.lodPixels <= 0.0 || !m.sceneTag.empty() || m.onDemand)
+            continue;
         if (!closest || m.error.psnrDb > closest->error.psnrDb) closest = &m;
         if (m.error.psnrDb >= kPsnr && (!best || m.speedup > best->speedup)) best = &m;
     }
@@ -157,6 +158,68 @@ std::vector<std::string> wallsTargetLines(const BenchReport& report) {
                         num(full->frameMs.p50, 3) + " ms) its speed-up is " +
                         num(full->frameMs.p50 / best->frameMs.p50, 3) +
                         ": what the walls add on top of the levels of detail");
+    return lines;
+}
+
+// The same walls mode (alpha, transition, levels of detail, budgets) on the bench's own scene.
+const ModeResult* ownSceneMode(const BenchReport& report, const ModeResult& like) {
+    for (const ModeResult& m : report.modes)
+        if (m.mode == Mode::Walls && m.sceneTag.empty() && !m.onDemand && !m.paged && m.alphaDeg == like.alphaDeg &&
+            m.transition == like.transition && m.lodPixels == like.lodPixels &&
+            m.triangleBudget == like.triangleBudget && m.frameBudgetMs == like.frameBudgetMs)
+            return &m;
+    return nullptr;
+}
+
+// Issue 19: a compare scene's walls (automatic) against the bench scene's (hand-placed), in
+// the same seconds: speed-ups over the same full-geometry run, at least 0.9 of it.
+std::vector<std::string> compareLines(const BenchReport& report) {
+    std::vector<std::string> lines;
+    for (const ModeResult& m : report.modes) {
+        if (m.sceneTag.empty() || m.mode != Mode::Walls) continue;
+        const ModeResult* own = ownSceneMode(report, m);
+        if (!own || own->speedup <= 0.0) continue;
+        const double ratio = m.speedup / own->speedup;
+        lines.push_back("targets: " + modeLabel(m) + " against " + modeLabel(*own) + ": speed-up " +
+                        num(m.speedup, 3) + " against " + num(own->speedup, 3) + " (ratio " + num(ratio, 3) +
+                        (ratio >= 0.9 ? "; >= 0.9: met)" : "; >= 0.9: not met)") + ", PSNR " + num(m.error.psnrDb, 3) +
+                        " against " + num(own->error.psnrDb, 3) + " dB pooled, FLIP mean " + num(m.error.flipMean, 3) +
+                        " against " + num(own->error.flipMean, 3) + ", " + std::to_string(m.textures) + " against " +
+                        std::to_string(own->textures) + " textures, " + num(m.diskMB, 4) + " against " +
+                        num(own->diskMB, 4) + " MB on disk, textures over alpha " +
+                        std::to_string(m.texturesOverAlpha) + " against " + std::to_string(own->texturesOverAlpha));
+    }
+    return lines;
+}
+
+// Issue 19: baking on demand from a cold cache.
+std::vector<std::string> onDemandLines(const BenchReport& report) {
+    std::vector<std::string> lines;
+    for (const ModeResult& m : report.modes) {
+        if (!m.onDemand) continue;
+        const OnDemandFigures& f = *m.onDemand;
+        const double ratio = m.frameMs.p50 > 0 ? m.frameMs.p99 / m.frameMs.p50 : 0.0;
+        std::string line = "targets: " + modeLabel(m) + " from an empty cache: first frame " +
+                           num(f.firstFrameSeconds, 3) + " s after the scene's load (<= 5 s: " +
+                           (f.firstFrameSeconds <= 5.0 ? "met" : "not met") + "); " +
+                           std::to_string(f.geometryFallbacks) + " geometry fallbacks (wall-frames) in " +
+                           std::to_string(f.fallbackFrames) + " of " + std::to_string(m.frames.size()) +
+                           " frames, the last in frame " + std::to_string(f.fallbacksUntilFrame) + " (counted from 1), " +
+                           num(f.firstQuarterFallbacks, 3) + " per frame in the first quarter and " +
+                           num(f.lastQuarterFallbacks, 3) + " in the last; " + std::to_string(f.texturesBaked) +
+                           " of " + std::to_string(f.texturesMissingAtStart) + " textures baked; frame p99/p50 " +
+                           num(ratio, 3);
+        if (report.noiseFloorRatio > 0.0)
+            line += ", " + num(ratio / report.noiseFloorRatio, 3) + "x the noise floor's " +
+                    num(report.noiseFloorRatio, 3) + " (<= 1.1x: " +
+                    (ratio <= 1.1 * report.noiseFloorRatio ? "met)" : "not met)");
+        else
+            line += " (no noise floor measured)";
+        if (const ModeResult* warm = ownSceneMode(report, m); warm && warm->frameMs.p50 > 0)
+            line += "; p50 " + num(m.frameMs.p50, 3) + " ms against " + num(warm->frameMs.p50, 3) + " ms for " +
+                    modeLabel(*warm) + " with every texture resident (not the same seconds)";
+        lines.push_back(line);
+    }
     return lines;
 }
 
@@ -231,10 +294,29 @@ std::vector<std::string> clusterBudgetLines(const BenchReport& report) {
     return lines;
 }
 
+void countFallbacks(const std::vector<FrameSample>& frames, OnDemandFigures& figures) {
+    figures.geometryFallbacks = 0;
+    figures.fallbackFrames = 0;
+    figures.fallbacksUntilFrame = 0;
+    const std::size_t n = frames.size(), quarter = std::max<std::size_t>(1, n / 4);
+    double first = 0.0, last = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const int f = frames[i].geometryFallbacks;
+        figures.geometryFallbacks += f;
+        if (f > 0) ++figures.fallbackFrames, figures.fallbacksUntilFrame = static_cast<int>(i) + 1;
+        if (i < quarter) first += f;
+        if (i + quarter >= n) last += f;
+    }
+    figures.firstQuarterFallbacks = n > 0 ? first / static_cast<double>(std::min(quarter, n)) : 0.0;
+    figures.lastQuarterFallbacks = n > 0 ? last / static_cast<double>(std::min(quarter, n)) : 0.0;
+}
+
 std::vector<std::string> targetLines(const BenchReport& report) {
     std::vector<std::string> lines = wallsTargetLines(report);
     if (auto layer = layerLine(report)) lines.push_back("targets: " + *layer);
     for (std::string& line : clusterBudgetLines(report)) lines.push_back(std::move(line));
+    for (std::string& line : compareLines(report)) lines.push_back(std::move(line));
+    for (std::string& line : onDemandLines(report)) lines.push_back(std::move(line));
     if (!report.resolution.empty())
         for (std::string& line : lines) line = "targets (" + report.resolution + "):" + line.substr(std::string("targets:").size());
     return lines;
@@ -254,7 +336,7 @@ std::string_view toString(Mode mode) {
 
 std::string transitionLabel(const ModeResult& m) {
     if (!m.transition) return "none";
-    return std::string(app::toString(*m.transition)) + (m.paged ? " paged" : "");
+    return std::string(app::toString(*m.transition)) + (m.paged ? " paged" : "") + (m.onDemand ? " on demand" : "");
 }
 
 std::string modeLabel(const ModeResult& m) {
@@ -263,6 +345,7 @@ std::string modeLabel(const ModeResult& m) {
     if (m.lodPixels > 0.0) label += " lod " + num(m.lodPixels) + "px";
     if (m.triangleBudget > 0) label += " budget " + std::to_string(m.triangleBudget);
     if (m.frameBudgetMs > 0.0) label += " frame " + num(m.frameBudgetMs, 3) + "ms";
+    if (!m.sceneTag.empty()) label += " [" + m.sceneTag + "]";
     return label;
 }
 
@@ -280,7 +363,7 @@ std::string csvHeader() {
            "gpu_ms_p95,gpu_ms_p99,texels,misses,mean_psnr_db,load_p99_p50,lod_px,triangle_budget,max_lod_err_px,"
            "mean_lod_tolerance_px,over_budget_frames,frame_budget_ms,worst_frame_psnr_db,p5_frame_psnr_db,flip_mean,flip_p95,"
            "popping_peak,popping_rms,psnr_gain_db,flip_ratio,over_alpha,uploaded_mb_p50,uploaded_mb_p99,uploaded_mb_mean,"
-           "p95_over_budget,floor_ms";
+           "p95_over_budget,floor_ms,first_frame_s,geometry_fallbacks,fallback_frames,fallbacks_until_frame,textures_baked,scene";
 }
 
 std::string csvRow(const ModeResult& m) {
@@ -294,9 +377,14 @@ std::string csvRow(const ModeResult& m) {
                              m.error.flipP95, m.error.poppingPeak, m.error.poppingRms, m.psnrGainDb, m.flipRatio,
                              static_cast<double>(m.texturesOverAlpha), m.uploadedMB.p50, m.uploadedMB.p99,
                              m.uploadedMB.mean, p95OverBudget(m), medianFloorMs(m)};
+    const OnDemandFigures f = m.onDemand.value_or(OnDemandFigures{});
+    const double onDemand[] = {f.firstFrameSeconds, static_cast<double>(f.geometryFallbacks),
+                               static_cast<double>(f.fallbackFrames), static_cast<double>(f.fallbacksUntilFrame),
+                               static_cast<double>(f.texturesBaked)};
     std::string row = std::string(toString(m.mode)) + "," + num(m.alphaDeg) + "," + transitionLabel(m);
     for (double v : values) row += "," + num(v);
-    return row;
+    for (double v : onDemand) row += "," + num(v);
+    return row + "," + (m.sceneTag.empty() ? "bench" : m.sceneTag);
 }
 
 namespace {
@@ -361,14 +449,15 @@ std::string markdownReport(const BenchReport& report) {
 
 std::string framesCsv(const BenchReport& report) {
     std::string out = "mode,frame,frame_ms,triangles,draw_calls,uploaded_mb,over_alpha,predicted_ms,predicted_frame_ms,"
-                      "floor_ms\n";
+                      "floor_ms,geometry_fallbacks,textures_baked\n";
     for (const ModeResult& m : report.modes)
         for (std::size_t i = 0; i < m.frames.size(); ++i)
             out += modeLabel(m) + "," + std::to_string(i) + "," + num(m.frames[i].frameMs, 6) + "," +
                    num(m.frames[i].triangles, 10) + "," + num(m.frames[i].drawCalls, 10) + "," +
                    num(m.frames[i].uploadedMB, 6) + "," + std::to_string(m.frames[i].texturesOverAlpha) + "," +
                    num(m.frames[i].predictedMs, 6) + "," + num(m.frames[i].predictedFrameMs, 6) + "," +
-                   num(m.frames[i].floorMs, 6) + "\n";
+                   num(m.frames[i].floorMs, 6) + "," + std::to_string(m.frames[i].geometryFallbacks) + "," +
+                   std::to_string(m.frames[i].texturesBaked) + "\n";
     return out;
 }
 

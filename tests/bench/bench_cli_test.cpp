@@ -6,6 +6,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 
@@ -70,7 +71,7 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         ++rows[key];
         SCOPED_TRACE(key);
         for (const std::string& name : csv.columns) {
-            if (name == "mode" || name == "alpha_deg" || name == "transition") continue;
+            if (name == "mode" || name == "alpha_deg" || name == "transition" || name == "scene") continue;
             const double v = row.number(name);
             // The reference's PSNRs against itself (and so its gain over the control) are
             // +infinity; every other number is finite. Only a gain over the control may be negative.
@@ -120,6 +121,135 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     // A FLIP map of the worst image of every mode but the reference (mode 1).
     EXPECT_FALSE(fs::exists(out / "flip_worst_1.png"));
     for (int mode = 2; mode <= 18; ++mode) EXPECT_TRUE(fs::is_regular_file(out / ("flip_worst_" + std::to_string(mode) + ".png")));
+}
+
+// Issue 19 end to end on the small plant: `walls --keep-paths` proposes other cells and walls
+// for it (its walk path kept), `bench --compare-scene` draws them beside the generator's walls
+// in the same seconds, and `--on-demand` walks from an empty private cache while the
+// background baker bakes; the shared cache gets the two scenes' bakes only.
+TEST(BenchSceneCli, ComparesAnotherSceneAndBakesOnDemandFromAnEmptyCache) {
+    const test::TempFolder root("bench_cli_compare");
+    const fs::path plant = root / "plant20k";
+    const CliResult g = runCavewall({"generate", "plant", "--triangles", "20000", "--out", plant.string()});
+    ASSERT_EQ(g.exitCode, 0) << g.err;
+    const fs::path automatic = root / "auto" / "scene.json";
+    fs::create_directories(automatic.parent_path());
+    const CliResult w = runCavewall({"walls", (plant / "scene.json").string(), "--out", automatic.string(), "--keep-paths",
+                                     "--max-res", "128", "--max-cells", "3", "--min-cell", "8", "--alpha", "30",
+                                     "--ms-per-wall", "0"});  // free wall layers: 20 k triangles still pay for cells
+    ASSERT_EQ(w.exitCode, 0) << w.out << w.err;
+    const fs::path out = root / "out", cache = root / "cache";
+    fs::remove_all(out);
+    fs::remove_all(cache);
+    const CliResult r = runCavewall({"bench", (plant / "scene.json").string(), "--quick", "--frames", "12", "--out",
+                                     out.string(), "--cache", cache.string(), "--alphas", "30", "--warp-alpha", "30",
+                                     "--lod", "0", "--frame-budget-ms", "0", "--compare-scene", automatic.string(),
+                                     "--on-demand"});
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    // The compare scene's walls are drawn frame by frame in turn with full geometry and the
+    // plant's own, on the plant's eye path.
+    EXPECT_THAT(r.out, HasSubstr("drawn frame by frame in turn (the same seconds): full, walls a=30 blend, walls a=30 "
+                                 "warp, walls a=30 blend [auto]"));
+    EXPECT_THAT(r.out, HasSubstr("compare scene [auto]: " + automatic.string()));
+    EXPECT_THAT(r.out, HasSubstr("targets (128x128 per screen, mono): walls a=30 blend [auto] against walls a=30 blend: "
+                                 "speed-up"));
+    EXPECT_THAT(r.out, HasSubstr("targets (128x128 per screen, mono): walls a=30 blend on demand from an empty cache: "
+                                 "first frame"));
+    const test::CsvTable csv = test::readCsv(out / "bench.csv");
+    std::map<std::string, int> rows;
+    for (const test::CsvRow& row : csv) ++rows[row.at("mode") + " " + row.at("transition") + " " + row.at("scene")];
+    const std::map<std::string, int> expected = {
+        {"full none bench", 1}, {"cells none bench", 1}, {"cells+layer none bench", 1}, {"near none bench", 1},
+        {"walls blend bench", 1}, {"walls warp bench", 1}, {"walls blend paged bench", 1},
+        {"walls blend on demand bench", 1}, {"walls blend auto", 1}};
+    EXPECT_EQ(rows, expected);
+    for (const test::CsvRow& row : csv) {
+        SCOPED_TRACE(row.at("mode") + " " + row.at("transition") + " " + row.at("scene"));
+        EXPECT_EQ(row.number("over_alpha"), 0.0);
+        if (row.at("transition") == "blend on demand") {
+            EXPECT_GT(row.number("first_frame_s"), 0.0);
+            EXPECT_GT(row.number("textures"), 0.0);
+            EXPECT_LE(row.number("textures_baked"), row.number("textures"));
+            EXPECT_LE(row.number("fallbacks_until_frame"), 12.0);
+            EXPECT_LE(row.number("fallback_frames"), row.number("fallbacks_until_frame"));
+            EXPECT_TRUE(std::isfinite(row.number("psnr_db")));
+        } else {
+            EXPECT_EQ(row.number("first_frame_s"), 0.0);
+            EXPECT_EQ(row.number("textures_baked"), 0.0);
+        }
+        if (row.at("scene") == "auto") EXPECT_GT(row.number("speedup"), 0.0);
+    }
+    // bench_frames.csv: per frame, the on-demand mode's fallbacks (summing to bench.csv's) and
+    // its running total of textures baked, which never falls.
+    const test::CsvTable frames = test::readCsv(out / "bench_frames.csv");
+    double fallbacks = 0.0, baked = 0.0;
+    int onDemandFrames = 0;
+    for (const test::CsvRow& f : frames) {
+        if (f.at("mode") != "walls a=30 blend on demand") continue;
+        ++onDemandFrames;
+        fallbacks += f.number("geometry_fallbacks");
+        EXPECT_GE(f.number("textures_baked"), baked);
+        baked = f.number("textures_baked");
+    }
+    EXPECT_EQ(onDemandFrames, 12);
+    for (const test::CsvRow& row : csv)
+        if (row.at("transition") == "blend on demand") EXPECT_EQ(row.number("geometry_fallbacks"), fallbacks);
+    // The on-demand bake went into the private cache (one bake folder beside the marker), the
+    // two scenes' bakes into the shared one.
+    auto folders = [](const fs::path& dir) {
+        int n = 0;
+        for (const auto& e : fs::directory_iterator(dir)) n += e.is_directory();
+        return n;
+    };
+    EXPECT_TRUE(fs::exists(out / "on-demand-cache" / ".cavewall-on-demand-cache"));
+    EXPECT_EQ(folders(out / "on-demand-cache"), 1);
+    EXPECT_EQ(folders(cache), 2);
+    // The walk path is the plant's: `walls --keep-paths` kept it.
+    auto walkPath = [](const fs::path& file) {
+        std::ifstream in(file);
+        return nlohmann::json::parse(in).at("walkPath");
+    };
+    EXPECT_FALSE(walkPath(plant / "scene.json").empty());
+    EXPECT_EQ(walkPath(plant / "scene.json"), walkPath(automatic));
+}
+
+// Bad --compare-scene and --on-demand input fails before anything is baked.
+TEST(BenchSceneCli, BadCompareSceneOrOnDemandCacheIsAClearError) {
+    const test::TempFolder root("bench_cli_compare_bad");
+    const fs::path plant = root / "plant20k", house = root / "house";
+    ASSERT_EQ(runCavewall({"generate", "plant", "--triangles", "20000", "--out", plant.string()}).exitCode, 0);
+    ASSERT_EQ(runCavewall({"generate", "house", "--triangles", "2000", "--out", house.string()}).exitCode, 0);
+    const fs::path out = root / "out";
+    const std::string scene = (plant / "scene.json").string();
+    struct Case {
+        std::vector<std::string> args;
+        std::string message;
+    };
+    const Case cases[] = {
+        {{"bench", scene, "--quick", "--compare-scene", (house / "scene.json").string()},
+         "--compare-scene " + (house / "scene.json").string() + ": expected the same model as " + scene + " ("},
+        {{"bench", scene, "--quick", "--compare-scene", (root / "none.json").string()}, "none.json"},
+        {{"bench", scene, "--quick", "--compare-scene", scene + "," + scene},
+         "--compare-scene: expected scenes whose labels differ, got 'plant20k' for"},
+        {{"bench", scene, "--quick", "--compare-scene", scene + ","},
+         "--compare-scene: expected scene files separated by commas, got an empty entry 2"},
+        {{"bench", scene, "--quick", "--on-demand", "--walls", "depth"},
+         "--on-demand: baking on demand draws flat walls only, got --walls depth"},
+        {{"bench", scene, "--quick", "--on-demand", "--out", out.string(), "--cache", (out / "on-demand-cache").string()},
+         "expected a folder apart from the shared bake cache"},
+        {{"bench", scene, "--quick", "--on-demand", "--out", root.path().string(), "--cache", (root / "cache").string()},
+         "got a folder with other files; not deleting it"},  // root/on-demand-cache holds a stray file
+    };
+    fs::create_directories(root / "on-demand-cache");
+    std::ofstream(root / "on-demand-cache" / "mine.txt") << "keep";
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.message);
+        const CliResult r = runCavewall(c.args);
+        EXPECT_NE(r.exitCode, 0);
+        EXPECT_THAT(r.err, HasSubstr(c.message));
+        EXPECT_THAT(r.out, ::testing::Not(HasSubstr("bench: plan and bake")));  // nothing baked first
+    }
+    EXPECT_TRUE(fs::exists(root / "on-demand-cache" / "mine.txt"));
 }
 
 // `bench --scale` end to end on two tiny sizes (both below 2 M triangles: the same 80 m plant,

@@ -141,6 +141,40 @@ TEST(AutoWalls, EvaluatesTheGivenWallsWithTheSameModel) {
     EXPECT_EQ(again.given->textures, first.candidates[first.chosen].textures);
 }
 
+// The walk cost (6.): eyes along the input's walk path, each also drawing the neighbours whose
+// geometry zones hold it. A walk down the hall's centre line runs along the cut of a grid of
+// 1 x 2 cells (the cut moves 0.55 m off z = 0, past the crate astride it: inside the geometry
+// zones of its wall),
+// so that grid draws both cells most of the walk, more than the floor cost's one cell; a grid
+// of 2 x 1 cells is crossed once, and its eyes mostly draw their own cell only.
+TEST(AutoWalls, TheWalkCostCountsNeighboursDrawnInGeometryZonesAlongTheWalkPath) {
+    const scenes::Scene scene = hall();
+    scenes::SceneDescription walk = bare();
+    walk.walkPath = {{-18.0, 1.7, 0.0}, {18.0, 1.7, 0.0}};
+    AutoWallsOptions o = options();
+    o.minCellSize = 4.0;  // the walkable 9.9 m across the hall: up to 2 cells along z
+    const AutoWallsResult floor = proposeWalls(scene, walk, o);
+    o.walkCost = true;
+    const AutoWallsResult walked = proposeWalls(scene, walk, o);
+    ASSERT_EQ(floor.candidates.size(), walked.candidates.size());
+    auto find = [](const AutoWallsResult& r, int nx, int nz) {
+        for (const AutoWallsCandidate& c : r.candidates)
+            if (c.nx == nx && c.nz == nz && !c.rooms) return c;
+        ADD_FAILURE() << "no " << nx << "x" << nz << " candidate";
+        return AutoWallsCandidate{};
+    };
+    // One cell: every crate (41 x 12 triangles) from every eye, either way.
+    EXPECT_DOUBLE_EQ(find(walked, 1, 1).meanCellTriangles, 41.0 * 12.0);
+    EXPECT_DOUBLE_EQ(find(floor, 1, 1).meanCellTriangles, 41.0 * 12.0);
+    EXPECT_GT(find(walked, 1, 2).meanCellTriangles, find(floor, 1, 2).meanCellTriangles);
+    EXPECT_LT(find(walked, 2, 1).meanCellTriangles, find(walked, 1, 2).meanCellTriangles);
+    // Textures and budgets do not depend on the eyes.
+    for (std::size_t i = 0; i < floor.candidates.size(); ++i) {
+        EXPECT_EQ(walked.candidates[i].textures, floor.candidates[i].textures);
+        EXPECT_EQ(walked.candidates[i].withinBudget, floor.candidates[i].withinBudget);
+    }
+}
+
 // The generated house (six rooms, real walls 0.15 m thick, 0.9 m x 2.1 m doorways with lintels):
 // its rooms are found again from the geometry alone, each doorway a portal of the same size.
 TEST(AutoWalls, FindsTheRoomsOfAHouseAndItsDoorwaysAsPortals) {

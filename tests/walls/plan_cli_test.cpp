@@ -145,6 +145,25 @@ TEST(WallsCli, ProposesWallsThatPlanAccepts) {
     // The proposal names the model relative to its own folder and plans.
     const CliResult plan = runCavewall({"plan", scene.string()});
     EXPECT_EQ(plan.exitCode, 0) << plan.err;
+    // --keep-paths keeps the house's own walk path (checked inside the proposed cells); a bare
+    // model has none to keep.
+    const auto kept = dir / "auto-proposal" / "kept.json";
+    const CliResult k = runCavewall({"walls", (dir / "auto-house").string(), "--out", kept.string(), "--max-cells", "3",
+                                     "--max-res", "64", "--min-cell", "2", "--keep-paths"});
+    ASSERT_EQ(k.exitCode, 0) << k.err;
+    auto walkPath = [](const std::filesystem::path& file) {
+        std::ifstream in(file);
+        return nlohmann::json::parse(in).at("walkPath");
+    };
+    EXPECT_FALSE(walkPath(dir / "auto-house" / "scene.json").empty());
+    EXPECT_EQ(walkPath(kept), walkPath(dir / "auto-house" / "scene.json"));
+    EXPECT_NE(walkPath(scene), walkPath(kept));  // without the flag: the proposal's own loop
+    const CliResult bare = runCavewall({"walls", (dir / "auto-house" / "house.glb").string(), "--out",
+                                        (dir / "auto-proposal" / "bare.json").string(), "--max-cells", "2",
+                                        "--max-res", "32", "--keep-paths"});
+    EXPECT_NE(bare.exitCode, 0);
+    EXPECT_THAT(bare.err, HasSubstr("--keep-paths: expected a walkPath in"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "auto-proposal" / "bare.json"));
 }
 
 // A real model exported as one mesh (SponzaLOD4: 187 k triangles, one object) has nothing a

@@ -6,7 +6,9 @@
 #include "display/gl/context.h"
 #include "scenes/loader.h"
 #include "app/bench/gl/modes.h"
+#include "app/bench/private_cache.h"
 #include "app/gl/run_session.h"
+#include "walls/gl/background_baker.h"
 #include "walls/gl/baker.h"
 #include "walls/wall_setup.h"
 
@@ -30,15 +32,15 @@ struct BakedWalls {
     std::string summary;
 };
 
-// Plans and bakes (or finds in the cache) the walls at `alphaDeg`.
-BakedWalls bakeWalls(const BenchOptions& o, double alphaDeg, const scenes::Scene& scene,
-                     const scenes::SceneDescription& d, gl::Context& context) {
+// Plans and bakes (or finds in the cache) the walls of `sceneFile` at `alphaDeg`.
+BakedWalls bakeWalls(const BenchOptions& o, const std::filesystem::path& sceneFile, double alphaDeg,
+                     const scenes::Scene& scene, const scenes::SceneDescription& d, gl::Context& context) {
     walls::PlanOptions plan = walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution);
     plan.alphaDeg = alphaDeg;
     BakedWalls out;
     out.setup = walls::prepareWalls(scene, d, plan);
     gl::BakeRequest request;
-    request.scene = o.scene;
+    request.scene = sceneFile;
     request.settings.maxResolution = o.bakeResolution;
     request.settings.jobs = 2;
     request.settings.kind = o.wallKind;
@@ -80,10 +82,97 @@ void say(const BenchOptions& o, const std::string& line) {
     if (o.verbose) std::cout << line << "\n" << std::flush;
 }
 
-std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene& scene, const gl::Context& context,
-                                     const bench::EyePath& path) {
+std::size_t triangleCount(const scenes::Scene& scene) {
     std::size_t triangles = 0;
     for (const scenes::Object& object : scene.objects) triangles += scene.meshes[object.mesh].triangleCount();
+    return triangles;
+}
+
+// The compare scene (--compare-scene): the same model (objects and triangles) with walls.
+struct CompareScene {
+    scenes::SceneDescription description;
+    scenes::Scene scene;
+};
+
+std::unique_ptr<CompareScene> loadCompareScene(const BenchOptions& o, const BenchOptions::CompareScene& which,
+                                               const scenes::Scene& own) {
+    auto other = std::make_unique<CompareScene>();
+    const std::string name = which.scene.string();
+    other->scene = scenes::loadSceneFile(which.scene, &other->description);
+    if (other->description.walls.empty())
+        throw Error("--compare-scene " + name + ": expected virtual walls to bench, got none");
+    const std::size_t mine = triangleCount(own), theirs = triangleCount(other->scene);
+    if (other->scene.objects.size() != own.objects.size() || theirs != mine)
+        throw Error("--compare-scene " + name + ": expected the same model as " + o.scene.string() + " (" +
+                    std::to_string(own.objects.size()) + " objects, " + std::to_string(mine) + " triangles), got " +
+                    std::to_string(other->scene.objects.size()) + " objects, " + std::to_string(theirs) + " triangles");
+    return other;
+}
+
+// Plans and bakes every compare scene's walls at every alpha (per scene, per alpha), with a
+// header line for each.
+std::vector<std::vector<BakedWalls>> bakeCompareScenes(const BenchOptions& o,
+                                                       const std::vector<std::unique_ptr<CompareScene>>& others,
+                                                       const scenes::SceneDescription& description,
+                                                       gl::Context& context, BenchReport& report) {
+    std::vector<std::vector<BakedWalls>> otherBaked(others.size());
+    for (std::size_t k = 0; k < others.size(); ++k) {
+        const BenchOptions::CompareScene& which = o.compareScenes[k];
+        const CompareScene& other = *others[k];
+        report.header.push_back("compare scene [" + which.tag + "]: " + which.scene.string() + " (" +
+                                std::to_string(other.description.cells.size()) + " cells, " +
+                                std::to_string(other.description.walls.size()) + " walls; the bench scene: " +
+                                std::to_string(description.cells.size()) + " cells, " +
+                                std::to_string(description.walls.size()) + " walls), drawn on the bench scene's eye "
+                                "path, its own plan and bake at every alpha");
+        for (double alpha : o.alphasDeg) {
+            say(o, "bench: plan and bake [" + which.tag + "]'s walls at a=" + config::formatNumber(alpha) + " deg");
+            otherBaked[k].push_back(bakeWalls(o, which.scene, alpha, other.scene, other.description, context));
+            say(o, "bench: [" + which.tag + "] " + otherBaked[k].back().summary);
+            report.header.push_back("bake [" + which.tag + "] " + otherBaked[k].back().summary);
+        }
+    }
+    return otherBaked;
+}
+
+// The on-demand mode (--on-demand): plans the walls at `alphaDeg` and walks from an empty,
+// private cache while the background baker bakes what the frames want.
+ModeResult onDemandMode(const BenchOptions& o, double alphaDeg, const ModeContext& c, const ReferenceImages& reference,
+                        double fullP50) {
+    makeEmptyPrivateCache(*o.onDemandCache, o.cache ? *o.cache : defaultCacheFolder());
+    const auto start = std::chrono::steady_clock::now();  // the scene is loaded: as `run` times it
+    walls::PlanOptions plan = walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution);
+    plan.alphaDeg = alphaDeg;
+    walls::WallSetup setup = walls::prepareWalls(c.scene, c.description, plan);
+    gl::BakeRequest request;
+    request.scene = o.scene;
+    request.settings.maxResolution = o.bakeResolution;
+    request.settings.kind = o.wallKind;
+    request.cache = *o.onDemandCache;
+    gl::BackgroundBaker baker(c.scene, c.description, setup, request);  // its own headless context
+    setup.folder = baker.folder();
+    setup.manifest = baker.manifest();
+    ModeResult mode;
+    mode.mode = Mode::Walls;
+    mode.alphaDeg = alphaDeg;
+    mode.transition = app::Transition::Blend;
+    mode.onDemand.emplace();
+    mode.onDemand->cache = o.onDemandCache->string();
+    mode.onDemand->texturesMissingAtStart = baker.stats().missingAtStart;
+    mode.textures = static_cast<int>(setup.plan.textures.size());
+    ModeAccumulator acc(mode, c.display);
+    const double firstFrame = runOnDemandMode(c, std::move(setup), baker, acc, reference, start);
+    baker.stop();  // the bake in progress finishes and is counted
+    ModeResult result = acc.finish(fullP50);
+    result.onDemand->firstFrameSeconds = firstFrame;
+    result.onDemand->texturesBaked = baker.stats().baked;
+    countFallbacks(result.frames, *result.onDemand);
+    return result;
+}
+
+std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene& scene, const gl::Context& context,
+                                     const bench::EyePath& path) {
+    const std::size_t triangles = triangleCount(scene);
     const auto& s0 = o.display.screens.front();
     return {"scene: " + o.scene.string() + " (" + std::to_string(scene.objects.size()) + " objects, " +
                 std::to_string(triangles) + " triangles)",
@@ -143,6 +232,20 @@ BenchReport runBenchmark(const BenchOptions& o) {
     const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description);
     app::useRoute(description, o.route, o.scene.string());
     if (description.walls.empty()) throw Error(o.scene.string() + ": the scene has no virtual walls (expected at least 1 to bench)");
+    // Checked before anything is baked: a bad compare scene or cache folder fails at once.
+    std::vector<std::unique_ptr<CompareScene>> others;
+    for (std::size_t i = 0; i < o.compareScenes.size(); ++i) {
+        for (std::size_t k = 0; k < i; ++k)
+            if (o.compareScenes[k].tag == o.compareScenes[i].tag)
+                throw Error("--compare-scene: expected scenes whose labels differ, got '" + o.compareScenes[i].tag +
+                            "' for " + o.compareScenes[k].scene.string() + " and " + o.compareScenes[i].scene.string());
+        others.push_back(loadCompareScene(o, o.compareScenes[i], scene));
+    }
+    if (o.onDemandCache) {
+        if (o.wallKind != walls::WallKind::Flat)
+            throw Error("--on-demand: baking on demand draws flat walls only, got --walls depth");
+        checkPrivateCache(*o.onDemandCache, o.cache ? *o.cache : defaultCacheFolder());
+    }
     bench::EyePath path = bench::recordEyePath(scene, description, o.display, o.tracker, o.frames);
     if (o.route == app::Route::Wall)
         path.description += " (--route wall: the scene's wallPath, which hugs the virtual walls, as its walkPath)";
@@ -159,10 +262,11 @@ BenchReport runBenchmark(const BenchOptions& o) {
     std::vector<BakedWalls> baked;
     for (double alpha : o.alphasDeg) {
         say(o, "bench: plan and bake walls at a=" + config::formatNumber(alpha) + " deg");
-        baked.push_back(bakeWalls(o, alpha, scene, description, *context));
+        baked.push_back(bakeWalls(o, o.scene, alpha, scene, description, *context));
         say(o, "bench: " + baked.back().summary);
         report.header.push_back("bake " + baked.back().summary);
     }
+    const std::vector<std::vector<BakedWalls>> otherBaked = bakeCompareScenes(o, others, description, *context, report);
     const auto listed = std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg);
     const std::size_t transitionIndex = listed - o.alphasDeg.begin();  // listed: checked on entry
 
@@ -171,15 +275,18 @@ BenchReport runBenchmark(const BenchOptions& o) {
     std::vector<std::unique_ptr<ModeAccumulator>> accs;  // stable addresses for the runs
     std::vector<WalkRun> runs;
     auto addRun = [&](ModeResult mode, std::optional<std::size_t> wallsIndex, app::Transition transition,
-                      int budgetFrom = -1) {
+                      int budgetFrom = -1, int compare = -1) {
+        const std::vector<BakedWalls>& from = compare >= 0 ? otherBaked[compare] : baked;
         if (wallsIndex) {
-            mode.textures = static_cast<int>(baked[*wallsIndex].setup.plan.textures.size());
-            mode.texels = baked[*wallsIndex].texels;
-            mode.diskMB = baked[*wallsIndex].diskMB;
+            mode.textures = static_cast<int>(from[*wallsIndex].setup.plan.textures.size());
+            mode.texels = from[*wallsIndex].texels;
+            mode.diskMB = from[*wallsIndex].diskMB;
         }
+        if (compare >= 0) mode.sceneTag = o.compareScenes[compare].tag;
         accs.push_back(std::make_unique<ModeAccumulator>(mode, display));
         WalkRun run;
-        if (wallsIndex) run.walls = baked[*wallsIndex].setup;
+        if (wallsIndex) run.walls = from[*wallsIndex].setup;
+        if (compare >= 0) run.scene = &others[compare]->scene, run.description = &others[compare]->description;
         run.acc = accs.back().get();
         run.transition = transition;
         run.storeReference = runs.empty();
@@ -216,6 +323,16 @@ BenchReport runBenchmark(const BenchOptions& o) {
             runs[addRun(m, std::nullopt, app::Transition::Blend)].clusters = true;
         }
     }
+    for (std::size_t k = 0; k < others.size(); ++k) {  // the compare scenes', after all the bench scene's
+        const int compare = static_cast<int>(k);
+        for (std::size_t i = 0; i < baked.size(); ++i)
+            addRun(wallsMode(o.alphasDeg[i], app::Transition::Blend, false, 0.0, 0, 0.0), i, app::Transition::Blend, -1,
+                   compare);
+        if (lod)
+            for (std::size_t i = 0; i < baked.size(); ++i)
+                addRun(wallsMode(o.alphasDeg[i], app::Transition::Blend, false, o.lodPixels, 0, 0.0), i,
+                       app::Transition::Blend, -1, compare);
+    }
     std::string names;
     for (const auto& acc : accs) names += (names.empty() ? "" : ", ") + modeLabel(acc->mode());
     say(o, "bench: " + names + ", frame by frame in turn");
@@ -225,7 +342,8 @@ BenchReport runBenchmark(const BenchOptions& o) {
     const double fullP50 = interleaved.front().frameMs.p50;
     for (std::size_t i = 1; i < accs.size(); ++i) interleaved.push_back(accs[i]->finish(fullP50));
     report.header.push_back("drawn frame by frame in turn (the same seconds): " + names +
-                            "; then cells, cells+layer and near in turn; then the paged mode alone");
+                            "; then cells, cells+layer and near in turn; then the paged mode alone" +
+                            (o.onDemandCache ? "; then the on-demand mode alone" : ""));
 
     const walls::WallSetup& cellPlan = baked[transitionIndex].setup;
     std::vector<ModeResult> cellModes;
@@ -260,6 +378,18 @@ BenchReport runBenchmark(const BenchOptions& o) {
     paged[0].acc = &pagedAcc;
     paged[0].paged = true;
     runWalkthroughModes(c, paged, reference);
+    std::optional<ModeResult> onDemand;
+    if (o.onDemandCache) {
+        say(o, "bench: walls a=" + config::formatNumber(o.transitionAlphaDeg) + " blend on demand, from an empty cache " +
+                   o.onDemandCache->string());
+        onDemand = onDemandMode(o, o.transitionAlphaDeg, c, reference, fullP50);
+        report.header.push_back("on demand: walls at alpha " + config::formatNumber(o.transitionAlphaDeg) +
+                                " baked while walking (background baker at nice 10, as `cavewall run "
+                                "--bake-on-demand`) from an empty private cache " + o.onDemandCache->string() +
+                                ", alone after the paged mode; the first path frame drawn once first (first frame "
+                                "after the scene's load: planning, keying the cache, the walkthrough, that frame), then "
+                                "every path frame timed");
+    }
 
     // The report in its usual order: full geometry, the cell modes, then the walls modes.
     const std::size_t fullModes = lod ? 2 : 1;
@@ -269,6 +399,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
     report.modes.insert(report.modes.end(), interleaved.begin() + static_cast<long>(fullModes),
                         interleaved.begin() + static_cast<long>(beforePaged));
     report.modes.push_back(pagedAcc.finish(fullP50));
+    if (onDemand) report.modes.push_back(std::move(*onDemand));
     report.modes.insert(report.modes.end(), interleaved.begin() + static_cast<long>(beforePaged), interleaved.end());
     if (lod && o.triangleBudget == 0)
         report.header.push_back("triangle budgets: per alpha, the median triangles of the same walls mode without a "
@@ -276,8 +407,9 @@ BenchReport runBenchmark(const BenchOptions& o) {
     {  // The noise floor of p99/p50 on this machine, beside a walls mode's, in the same seconds.
         // The budget mode at the last alpha, or the paged one (the clusters mode, listed after
         // them, is not a walls mode).
-        ModeResult last = *std::find_if(report.modes.rbegin(), report.modes.rend(),
-                                        [](const ModeResult& m) { return m.mode == Mode::Walls; });
+        ModeResult last = *std::find_if(report.modes.rbegin(), report.modes.rend(), [](const ModeResult& m) {
+            return m.mode == Mode::Walls && m.sceneTag.empty() && !m.onDemand;
+        });
         last.paged = false;  // drawn with every texture resident, also after the paged mode
         say(o, "bench: noise floor, " + modeLabel(last) + " interleaved with one of its frames");
         const long middle = static_cast<long>(path.frames.size() / 2);

@@ -27,6 +27,15 @@
 //           the error reads apart from the walls'.
 //  - with `lodPixels` and `frameBudgetMs` > 0, every walls blend mode with levels of detail
 //           and the frame-time controller (display/frame_budget.h) aiming at frameBudgetMs.
+//  - with `compareScenes`, the same model with other cells and walls (e.g. `cavewall walls`'s
+//           proposal): its walls blend modes at every alpha (and with levels of detail), each
+//           with its own plan and bake, drawn on the bench scene's eye path frame by frame in
+//           turn with full geometry and the bench scene's walls modes (issue 19: automatic
+//           against hand-placed walls, ratios from the same seconds).
+//  - with `onDemandCache`, after the paged mode and alone: walls at `transitionAlphaDeg`
+//           baked on demand from that empty, private cache (gl::BackgroundBaker, as
+//           `cavewall run --bake-on-demand`): first frame after the scene's load, geometry
+//           fallbacks per frame, textures baked, frame-time p99/p50 (issue 19).
 //  - last, the noise floor: the last mode again, each path frame followed by one fixed frame,
 //           whose p99/p50 is the machine's own (a header line, not a mode).
 //
@@ -71,6 +80,17 @@ struct BenchOptions {
                                                   // with full geometry and the walls modes
     std::vector<double> clusterBudgetsMs;         // with clusters: one clusters mode per budget
                                                   // (render/cluster_budget.h) instead; each > 0
+    // Other scene.json files of the same model (same objects and triangles), each with its own
+    // cells and walls, benched beside the scene's walls on the scene's eye path; their modes are
+    // labelled with their tags ("walls a=10 blend [auto]"), which must differ.
+    struct CompareScene {
+        std::filesystem::path scene;
+        std::string tag;
+    };
+    std::vector<CompareScene> compareScenes;
+    // The on-demand mode's private bake cache (bench::makeEmptyPrivateCache: emptied first,
+    // never the shared cache); unset: no on-demand mode. Flat walls only.
+    std::optional<std::filesystem::path> onDemandCache;
     bool verbose = true;                          // progress on stdout
 };
 

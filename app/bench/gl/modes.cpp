@@ -30,6 +30,13 @@ namespace {
 
 bool compared(const ModeContext& c, long frame) { return frame % c.compareEvery == 0; }
 
+FrameCost frameCost(const walls::FrameResult& r) {
+    return {r.frameMs, r.cpuMs, r.gpuMs, static_cast<double>(r.stats.triangles), static_cast<double>(r.stats.drawCalls),
+            r.maxErrorDeg, r.maxErrorPixels, r.pager.residentMB, r.pager.misses, r.perScreen, r.lodErrorPx,
+            r.lodTolerancePx, r.lodOverBudget, r.texturesOverAlpha, static_cast<double>(r.uploadedBytes) / 1e6,
+            r.clusterPredictedMs, r.clusterPredictedFrameMs, r.clusterFloorMs, r.geometryFallbacks, r.texturesBaked};
+}
+
 }  // namespace
 
 ModeAccumulator::ModeAccumulator(ModeResult mode, const display::Display& display)
@@ -45,7 +52,8 @@ ModeAccumulator::ModeAccumulator(ModeResult mode, const display::Display& displa
 
 void ModeAccumulator::addFrame(const FrameCost& cost) {
     _mode.frames.push_back({cost.frameMs, cost.triangles, cost.drawCalls, cost.uploadedMB, cost.texturesOverAlpha,
-                            cost.clusterPredictedMs, cost.clusterPredictedFrameMs, cost.clusterFloorMs});
+                            cost.clusterPredictedMs, cost.clusterPredictedFrameMs, cost.clusterFloorMs,
+                            cost.geometryFallbacks, cost.texturesBaked});
     _mode.texturesOverAlpha += cost.texturesOverAlpha;
     _frame.push_back(cost.frameMs);
     _cpu.push_back(cost.cpuMs);
@@ -152,7 +160,10 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
             options.uploadMBPerFrame = 4096.0;
         }
         const bool hasWalls = run.walls.has_value();
-        l.walkthrough = std::make_unique<gl::Walkthrough>(c.scene, c.description, c.display, c.context, run.walls, options);
+        assert((run.scene == nullptr) == (run.description == nullptr));
+        l.walkthrough = std::make_unique<gl::Walkthrough>(run.scene ? *run.scene : c.scene,
+                                                          run.description ? *run.description : c.description,
+                                                          c.display, c.context, run.walls, options);
         if (mode.frameBudgetMs > 0.0 && !run.clusters) l.frameBudget.emplace(mode.frameBudgetMs);
         if (mode.frameBudgetMs > 0.0 && run.clusters) l.clusterBudget.emplace(mode.frameBudgetMs);
         // Warm-up: shaders, buffers and (with walls, unless paged) every texture of the path made
@@ -169,16 +180,31 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         in.readImages = compared(c, in.frame);
         for (std::size_t i = 0; i < runs.size(); ++i) {
             walls::FrameResult r = render(live[i], in);
-            runs[i].acc->addFrame({r.frameMs, r.cpuMs, r.gpuMs, static_cast<double>(r.stats.triangles),
-                                   static_cast<double>(r.stats.drawCalls), r.maxErrorDeg, r.maxErrorPixels,
-                                   r.pager.residentMB, r.pager.misses, r.perScreen, r.lodErrorPx, r.lodTolerancePx,
-                                   r.lodOverBudget, r.texturesOverAlpha, static_cast<double>(r.uploadedBytes) / 1e6,
-                                   r.clusterPredictedMs, r.clusterPredictedFrameMs, r.clusterFloorMs});
+            runs[i].acc->addFrame(frameCost(r));
             if (!in.readImages) continue;
             if (runs[i].storeReference) reference[in.frame] = std::move(r.images);
             else runs[i].acc->compare(in.frame, in.head, r.images, reference.at(in.frame));
         }
     }
+}
+
+double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, gl::BackgroundBaker& baker, ModeAccumulator& acc,
+                       const ReferenceImages& reference, std::chrono::steady_clock::time_point start) {
+    gl::WalkthroughOptions options;  // background paging at `cavewall run`'s defaults
+    options.baker = &baker;
+    options.wallKind = c.wallKind;
+    gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
+    if (c.path.frames.empty()) return display::msSince(start) / 1000.0;
+    walkthrough.renderFrame(c.path.frames.front());
+    const double firstFrameSeconds = display::msSince(start) / 1000.0;
+    for (const walls::FrameInput& frame : c.path.frames) {
+        walls::FrameInput in = frame;
+        in.readImages = compared(c, in.frame);
+        walls::FrameResult r = walkthrough.renderFrame(in);
+        acc.addFrame(frameCost(r));
+        if (in.readImages) acc.compare(in.frame, in.head, r.images, reference.at(in.frame));
+    }
+    return firstFrameSeconds;
 }
 
 NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::WallSetup> walls, const ModeResult& mode,

@@ -7,6 +7,7 @@
 #include "app/bench/report.h"
 #include "walls/gl/walkthrough.h"
 
+#include <chrono>
 #include <map>
 #include <optional>
 #include <vector>
@@ -31,6 +32,8 @@ struct FrameCost {
     // Clusters held to a frame time (FrameResult's): the predicted cost of what was drawn, the
     // frame time the controller predicted and the floor (0 without one).
     double clusterPredictedMs = 0.0, clusterPredictedFrameMs = 0.0, clusterFloorMs = 0.0;
+    int geometryFallbacks = 0;          // FrameResult's: walls drawn as geometry for want of a texture
+    int texturesBaked = 0;              // FrameResult's: baking on demand, baked so far
 };
 
 // Collects one mode's frames and comparisons; finish() fills the bench::ModeResult.
@@ -74,6 +77,11 @@ struct ModeContext {
 // One walkthrough mode of a runWalkthroughModes call.
 struct WalkRun {
     std::optional<walls::WallSetup> walls;  // nullopt: full geometry
+    // The scene and description the mode draws, when not the context's (`bench --compare-scene`:
+    // the same model with other cells and walls, drawn along the context's eye path). Not
+    // owned; both or neither.
+    const scenes::Scene* scene = nullptr;
+    const scenes::SceneDescription* description = nullptr;
     ModeAccumulator* acc = nullptr;         // not null; its mode's lodPixels, triangleBudget and
                                             // frameBudgetMs set the levels of detail and budgets
     walls::Transition transition = walls::Transition::Blend;
@@ -97,6 +105,15 @@ struct WalkRun {
 // apart are not honest). Compared frames of the run with storeReference go to `reference`
 // (it comes first), the others' are compared with them.
 void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, ReferenceImages& reference);
+
+// Baking on demand from a cold cache (issue 19), alone: `walls` (planned, its folder and
+// manifest the baker's, whose cache is empty), drawn as `cavewall run --bake-on-demand` draws
+// (background paging, `baker` baking what the frames want). The first path frame is drawn once
+// first (its end, from `start`, is the first frame after the scene's load: `start` is taken
+// before planning the walls); then every path frame is timed into `acc` and compared with
+// `reference`. Returns the first frame's seconds.
+double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, gl::BackgroundBaker& baker, ModeAccumulator& acc,
+                       const ReferenceImages& reference, std::chrono::steady_clock::time_point start);
 
 // The machine's own frame-time noise beside a mode's: the path drawn as `mode` draws it (walls
 // or not, its levels of detail; every texture resident), each frame followed by frame

@@ -1,0 +1,56 @@
+#include "app/bench/private_cache.h"
+
+#include "config/error.h"
+
+#include <fstream>
+
+namespace cavewall::bench {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Absolute, what exists of it resolved, without a trailing separator.
+fs::path resolved(const fs::path& p) {
+    fs::path r = fs::weakly_canonical(fs::absolute(p)).lexically_normal();
+    if (!r.has_filename() && r.has_parent_path() && r != r.root_path()) r = r.parent_path();
+    return r;
+}
+
+// True when `inner` is `outer` or lies inside it (both resolved).
+bool within(const fs::path& inner, const fs::path& outer) {
+    auto i = inner.begin();
+    for (auto o = outer.begin(); o != outer.end(); ++o, ++i)
+        if (i == inner.end() || *i != *o) return false;
+    return true;
+}
+
+}  // namespace
+
+void checkPrivateCache(const fs::path& folder, const fs::path& sharedCache) {
+    const fs::path mine = resolved(folder);
+    const fs::path shared = resolved(sharedCache);
+    if (within(mine, shared) || within(shared, mine))
+        throw Error("on-demand cache " + folder.string() + ": expected a folder apart from the shared bake cache " +
+                    sharedCache.string() + ", got " + (within(mine, shared) ? "the cache or a folder inside it"
+                                                                              : "a folder that holds it"));
+    if (fs::exists(mine)) {
+        if (!fs::is_directory(mine))
+            throw Error("on-demand cache " + folder.string() + ": expected a folder, got a file");
+        if (!fs::is_empty(mine) && !fs::exists(mine / kPrivateCacheMarker))
+            throw Error("on-demand cache " + folder.string() + ": expected an empty folder or an earlier on-demand "
+                        "cache (with " + kPrivateCacheMarker + "), got a folder with other files; not deleting it");
+    }
+}
+
+void makeEmptyPrivateCache(const fs::path& folder, const fs::path& sharedCache) {
+    checkPrivateCache(folder, sharedCache);
+    const fs::path mine = resolved(folder);
+    fs::remove_all(mine);
+    fs::create_directories(mine);
+    std::ofstream marker(mine / kPrivateCacheMarker);
+    marker << "cavewall bench --on-demand: a private bake cache, emptied before each run\n";
+    if (!marker) throw Error("on-demand cache " + folder.string() + ": could not write " + kPrivateCacheMarker);
+}
+
+}  // namespace cavewall::bench
