@@ -22,7 +22,7 @@ const char* const kBenchUsage =
     "                      [--stereo mono|separate] [--quick] [--cache DIR] [--compare-every K] [--min-zone M] [--ppd N]\n"
     "                      [--bake-resolution N] [--alphas A,B,...] [--warp-alpha A]\n"
     "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
-    "                      [--walls flat|depth] [--clusters]\n"
+    "                      [--walls flat|depth] [--clusters] [--texture-format rgba8|bc1|bc3]\n"
     "       cavewall bench --scale 2M,8M,32M [--data DIR] [--scale-metres M] [--frames N] [--resolution N]\n"
     "                      [--display D] [--bake-resolution N] [--geometry-budget MB] [--lod PX] [--out DIR]\n"
     "       cavewall bench --stability\n"
@@ -50,6 +50,8 @@ const char* const kBenchUsage =
     "         --walls depth: every walls mode bakes depth with colour and reprojects each wall\n"
     "         pixel to the eye (issue 16, walls/gl/depth_wall_pass.h); default flat. Run both\n"
     "         into two --out folders to compare.\n"
+    "         --texture-format: storage of the baked colour (as `cavewall bake`, default\n"
+    "         " DEFAULT_TEXTURE_FORMAT "); the disk and GPU MB columns and the image error include it.\n"
     "         --clusters adds seed 004's textured clusters (`cavewall run --clusters`) held to\n"
     "         --frame-budget-ms (16.67 when it is 0) by the controller, drawn in turn with full\n"
     "         geometry and the walls modes (impostors made into the cache first).\n"
@@ -164,6 +166,7 @@ int runSceneBench(const Args& args) {
     o.frameBudgetMs = args.number("frame-budget-ms", o.frameBudgetMs, 0.0, 1e5);
     o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);
     o.wallKind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
+    o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.clusters = args.has("clusters");
     if (std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg) == o.alphasDeg.end()) {
         std::string list;
@@ -209,7 +212,7 @@ int runBench(const std::vector<std::string>& words) {
     args.expectFlags({"stability", "quick", "display", "path", "route", "out", "frames", "resolution", "stereo", "cache",
                       "compare-every",
                       "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod", "triangle-budget", "frame-budget-ms", "lod-max",
-                      "walls", "clusters", "scale", "data", "scale-metres", "geometry-budget"});
+                      "walls", "clusters", "scale", "data", "scale-metres", "geometry-budget", "texture-format"});
     if (args.has("stability")) return runStability();
 #ifdef CAVEWALL_HAVE_GL
     if (args.has("scale")) return runScaleBench(args);
