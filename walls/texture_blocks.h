@@ -65,7 +65,7 @@ inline constexpr std::array<std::pair<std::string_view, TextureFormat>, 3> kText
 
 // `--texture-format`'s default on bake, run, bench and demo (chosen from measurements: README,
 // "Texture storage"). BakeSettings, RunOptions and BenchOptions default to Rgba8.
-inline constexpr TextureFormat kDefaultTextureFormat = TextureFormat::Rgba8;
+inline constexpr TextureFormat kDefaultTextureFormat = TextureFormat::Bc1;
 
 // Bytes of one 4 x 4 block: 8 (Bc1), 16 (Bc3); 0 for Rgba8.
 int blockBytes(TextureFormat format);
