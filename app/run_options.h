@@ -9,6 +9,7 @@
 #include "walls/frame_types.h"
 #include "walls/depth_wall.h"
 #include "walls/plan.h"
+#include "walls/texture_blocks.h"
 
 #include <array>
 #include <filesystem>
@@ -67,6 +68,8 @@ struct RunOptions {
     bool walls = true;                          // false: --no-walls, full (culled) geometry
     walls::PlanOptions plan;                    // alpha etc. for planning and baking
     walls::WallKind wallKind = walls::WallKind::Flat;  // --walls flat|depth (walls/depth_wall.h)
+    // --texture-format: storage of baked colour (walls/texture_blocks.h; keys the bake cache)
+    walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
     std::optional<std::filesystem::path> cache; // bake cache folder (default: the baker's)
     long saveEvery = 0;                         // save frames: 0 none, K every K-th frame
     bool keepSavedImages = false;               // also return the saved frames' images

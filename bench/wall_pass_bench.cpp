@@ -16,12 +16,19 @@
 // full-screen layer drawn by a one-texture shader with the formats and blending as variables:
 // target GL_SRGB8_ALPHA8 with GL_FRAMEBUFFER_SRGB (the renderer's) or GL_RGBA8, premultiplied
 // blending or none, texture GL_SRGB8_ALPHA8 (the wall pass's) or GL_RGBA8.
+//
+// Compressed textures (FillLayer/compressed/*, walls/texture_blocks.h): the same 512 x 512
+// texture as GL_SRGB8_ALPHA8, as S3TC BC1 and as BC3 (sRGB), drawn in turn within every
+// iteration (clear alone, RGBA8, BC1, BC3: interleaved, so all share the load), sRGB target,
+// premultiplied blending, GL_LINEAR_MIPMAP_NEAREST. Counters ms_per_layer_<format> as above and
+// bc1_over_rgba8, bc3_over_rgba8: the ratio of the per-layer costs.
 #include "display/gl/shader.h"
 #include "display/gl/context.h"
 #include "display/gl/gl_object.h"
 #include "walls/gl/depth_wall_pass.h"
 #include "walls/gl/wall_pass.h"
 #include "walls/gl/wall_quad.h"
+#include "walls/texture_blocks.h"
 
 #include <benchmark/benchmark.h>
 
@@ -30,6 +37,7 @@
 #include <cstdint>
 #include <iostream>
 #include <memory>
+#include <string>
 #include <utility>
 
 namespace {
@@ -108,6 +116,8 @@ struct Fixture {
     gl::GlObject bare = gl::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}});
     gl::GlObject baked = gl::uploadWallTexture(mipChain(512));
     gl::GlObject bakedUnorm = unormTexture();
+    gl::GlObject bakedBc1 = gl::uploadWallTexture(walls::encodeLevels(mipChain(512), walls::TextureFormat::Bc1));
+    gl::GlObject bakedBc3 = gl::uploadWallTexture(walls::encodeLevels(mipChain(512), walls::TextureFormat::Bc3));
     gl::GlObject nearestMip = gl::createSampler(), linearMip = gl::createSampler(), bilinear = gl::createSampler();
     gl::GlObject depthBlocks = gl::uploadDepthTexture(blockDepth(512));
     gl::DepthWallPass depthPass, depthPass16{walls::ReprojectSettings{16, 6}};
@@ -178,7 +188,8 @@ double frameMs(Fixture& f, int layers, GLuint texture, GLuint sampler, int textu
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-double fillFrameMs(Fixture& f, const FillCase& c, int layers) {
+// `texture` 0: the case's own (baked or bakedUnorm).
+double fillFrameMs(Fixture& f, const FillCase& c, int layers, GLuint texture = 0) {
     const auto start = std::chrono::steady_clock::now();
     f.clear(c.srgbTarget);
     if (layers > 0) {
@@ -189,7 +200,7 @@ double fillFrameMs(Fixture& f, const FillCase& c, int layers) {
         else glDisable(GL_BLEND);
         glUseProgram(f.fillProgram.id());
         glBindVertexArray(f.fillVertexArray.id());
-        glBindTextureUnit(0, c.srgbTexture ? f.baked.id() : f.bakedUnorm.id());
+        glBindTextureUnit(0, texture != 0 ? texture : c.srgbTexture ? f.baked.id() : f.bakedUnorm.id());
         glBindSampler(0, f.nearestMip.id());
         for (int i = 0; i < layers; ++i) glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
         glDisable(GL_BLEND);
@@ -213,6 +224,28 @@ void layerCost(benchmark::State& state, Frame frame) {
     state.counters["clear_ms"] = clearMs / n;
     state.counters["frame_ms"] = ms / n;
     state.counters["ms_per_layer"] = (ms - clearMs) / n / layers;
+}
+
+// FillLayer/compressed: the clear, RGBA8, BC1 and BC3 frames in turn each iteration.
+void compressedFill(benchmark::State& state, Fixture& f) {
+    const int layers = static_cast<int>(state.range(0));
+    const FillCase c{true, true, true};
+    const GLuint textures[3] = {f.baked.id(), f.bakedBc1.id(), f.bakedBc3.id()};
+    double clearMs = 0.0, ms[3] = {0.0, 0.0, 0.0};
+    for (auto _ : state) {
+        clearMs += fillFrameMs(f, c, 0);
+        for (int t = 0; t < 3; ++t) ms[t] += fillFrameMs(f, c, layers, textures[t]);
+    }
+    const double n = static_cast<double>(state.iterations());
+    const char* names[3] = {"rgba8", "bc1", "bc3"};
+    double perLayer[3];
+    for (int t = 0; t < 3; ++t) {
+        perLayer[t] = (ms[t] - clearMs) / n / layers;
+        state.counters[std::string("ms_per_layer_") + names[t]] = perLayer[t];
+    }
+    state.counters["clear_ms"] = clearMs / n;
+    state.counters["bc1_over_rgba8"] = perLayer[1] / perLayer[0];
+    state.counters["bc3_over_rgba8"] = perLayer[2] / perLayer[0];
 }
 
 }  // namespace
@@ -263,6 +296,13 @@ int main(int argc, char** argv) {
             ->Iterations(10)
             ->UseRealTime()
             ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("FillLayer/compressed/srgb_target/blend", [&f](benchmark::State& s) {
+        compressedFill(s, f);
+    })
+        ->Arg(4)
+        ->Iterations(10)
+        ->UseRealTime()
+        ->Unit(benchmark::kMillisecond);
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     return 0;

@@ -1,5 +1,8 @@
 #include "tools/args.h"
 
+#include "tools/commands.h"
+#include "walls/texture_blocks.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -126,3 +129,15 @@ const std::string& Args::positional(std::size_t i, std::string_view what) const 
 }
 
 }  // namespace cavewall::tools
+
+namespace {
+
+constexpr bool defaultTextureFormatNamed(std::string_view name) {
+    for (const auto& [word, format] : cavewall::walls::kTextureFormatNames)
+        if (format == cavewall::walls::kDefaultTextureFormat) return word == name;
+    return false;
+}
+static_assert(defaultTextureFormatNamed(DEFAULT_TEXTURE_FORMAT),
+              "DEFAULT_TEXTURE_FORMAT (tools/commands.h) must name walls::kDefaultTextureFormat");
+
+}  // namespace

@@ -16,7 +16,7 @@ namespace cavewall::tools {
 const char* const kBakeUsage =
     "usage: cavewall bake SCENE [--alpha DEG] [--jobs N] [--cache DIR] [--max-res N] [--min-zone M]\n"
     "                           [--blend M] [--ppd N] [--tile N] [--walls flat|depth]\n"
-    "                           [--lod-texels T] [--limit N]\n"
+    "                           [--lod-texels T] [--limit N] [--texture-format rgba8|bc1|bc3]\n"
     "\n"
     "Bakes the textures of every virtual wall and portal of SCENE (a scene.json or a folder holding\n"
     "one) as planned by `cavewall plan` with the same options: each texture is the scene content\n"
@@ -41,6 +41,10 @@ const char* const kBakeUsage =
     "--walls depth: also store per texel the depth behind the wall of the surface seen (32-bit\n"
     "float, lossless, <texture>.depth.tif beside each texture; walls/depth_wall.h), for depth walls\n"
     "reprojected to the eye; a separate bake folder (default flat: colour only).\n"
+    "--texture-format: how colour is stored on disk and on the GPU (walls/texture_blocks.h): rgba8,\n"
+    "zip-compressed TIFF, 4 bytes per texel on the GPU; bc1 (S3TC DXT1, 0.5 byte per texel, 1-bit\n"
+    "alpha) or bc3 (DXT5, 1 byte per texel, 8-bit alpha), deflated S3TC blocks in .bct files, uploaded\n"
+    "compressed; default " DEFAULT_TEXTURE_FORMAT "; keys the cache.\n"
     "Progress goes to stderr (a bar with ETA on a terminal, plain lines otherwise); a summary and,\n"
     "as the last line, the bake folder go to stdout; before it, where the time went (seconds; the\n"
     "writer threads' stages overlap rendering).\n";
@@ -97,7 +101,8 @@ void ProgressPrinter::operator()(const gl::BakeProgress& p) {
 
 int runBake(const std::vector<std::string>& words) {
     const Args args(words, {});
-    args.expectFlags({"alpha", "jobs", "cache", "max-res", "min-zone", "blend", "ppd", "tile", "walls", "lod-texels", "limit"});
+    args.expectFlags({"alpha", "jobs", "cache", "max-res", "min-zone", "blend", "ppd", "tile", "walls", "lod-texels", "limit",
+                      "texture-format"});
     gl::BakeRequest request;
     request.plan.alphaDeg = args.number("alpha", request.plan.alphaDeg, 1e-6, 90.0);
     request.plan.minZoneSize = args.number("min-zone", request.plan.minZoneSize, 0.01, 1000.0);
@@ -109,6 +114,8 @@ int runBake(const std::vector<std::string>& words) {
     request.settings.tileSize = static_cast<int>(args.integer("tile", request.settings.tileSize, 16, 1024));
     request.settings.kind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
     request.settings.lodTexels = args.number("lod-texels", request.settings.lodTexels, 0.0, 4.0);
+    request.settings.textureFormat =
+        args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     request.limit = static_cast<int>(args.integer("limit", 0, 0, 1000000000));
     gl::validateBakeSettings(request.settings);
     request.scene = args.positional(0, "SCENE");

@@ -25,7 +25,7 @@ const char* const kBenchUsage =
     "                      [--bake-resolution N] [--alphas A,B,...] [--warp-alpha A]\n"
     "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
     "                      [--walls flat|depth] [--clusters [--cluster-budgets T1,T2,...]]\n"
-    "                      [--compare-scene OTHER,...] [--on-demand]\n"
+    "                      [--compare-scene OTHER,...] [--on-demand] [--texture-format rgba8|bc1|bc3]\n"
     "       cavewall bench --scale 2M,8M,32M [--data DIR] [--scale-metres M] [--frames N] [--resolution N]\n"
     "                      [--display D] [--bake-resolution N] [--geometry-budget MB] [--lod PX] [--out DIR]\n"
     "       cavewall bench --stability\n"
@@ -53,6 +53,8 @@ const char* const kBenchUsage =
     "         --walls depth: every walls mode bakes depth with colour and reprojects each wall\n"
     "         pixel to the eye (issue 16, walls/gl/depth_wall_pass.h); default flat. Run both\n"
     "         into two --out folders to compare.\n"
+    "         --texture-format: storage of the baked colour (as `cavewall bake`, default\n"
+    "         " DEFAULT_TEXTURE_FORMAT "); the disk and GPU MB columns and the image error include it.\n"
     "         --clusters adds seed 004's textured clusters (`cavewall run --clusters`) held to\n"
     "         --frame-budget-ms (16.67 when it is 0) by the controller, drawn in turn with full\n"
     "         geometry and the walls modes (impostors made into the cache first);\n"
@@ -224,6 +226,7 @@ int runSceneBench(const Args& args) {
     o.frameBudgetMs = args.number("frame-budget-ms", o.frameBudgetMs, 0.0, 1e5);
     o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);
     o.wallKind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
+    o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.clusters = args.has("clusters");
     if (auto list = args.get("cluster-budgets")) {
         if (!o.clusters) throw Error("bench: --cluster-budgets needs --clusters");
@@ -277,7 +280,7 @@ int runBench(const std::vector<std::string>& words) {
                       "compare-every",
                       "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod", "triangle-budget", "frame-budget-ms", "lod-max",
                       "walls", "clusters", "cluster-budgets", "compare-scene", "on-demand", "scale", "data",
-                      "scale-metres", "geometry-budget"});
+                      "scale-metres", "geometry-budget", "texture-format"});
     if (args.has("stability")) return runStability();
 #ifdef CAVEWALL_HAVE_GL
     if (args.has("scale")) return runScaleBench(args);

@@ -16,6 +16,7 @@ namespace cavewall::tools {
 
 const char* const kDemoUsage =
     "usage: cavewall demo [--out DIR] [--frames N] [--resolution PX] [--triangles N] [--lod PX]\n"
+    "                     [--texture-format rgba8|bc1|bc3]\n"
     "\n"
     "The main job: generates the default plant (into $CAVEWALL_CACHE or, without it, cache/\n"
     "beside the cavewall executable), plans and bakes its virtual walls (cached by content),\n"
@@ -33,7 +34,9 @@ const char* const kDemoUsage =
     "FLIP image: walls | full geometry | FLIP map, each as a fold-out) and report.md.\n"
     "Headless without $DISPLAY, windowed otherwise. Walls are planned with alpha 10 degrees\n"
     "(the seeds' recommendation), zones of at least 2 m and 2 texels per degree (about 620\n"
-    "textures: a few minutes on llvmpipe the first time).\n";
+    "textures: a few minutes on llvmpipe the first time).\n"
+    "--texture-format: storage of the baked wall colour, as for `cavewall bake` (default\n"
+    DEFAULT_TEXTURE_FORMAT ").\n";
 
 namespace {
 
@@ -131,7 +134,7 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
 
 int runDemo(const std::vector<std::string>& words) {
     const Args args(words, {});
-    args.expectFlags({"out", "frames", "resolution", "triangles", "lod"});
+    args.expectFlags({"out", "frames", "resolution", "triangles", "lod", "texture-format"});
     const std::filesystem::path out = args.getOr("out", "demo-out");
     const std::filesystem::path cache = cacheFolder();
     app::RunOptions o;
@@ -153,6 +156,7 @@ int runDemo(const std::vector<std::string>& words) {
     o.keepSavedImages = true;
     o.verbose = true;
     o.lodPixels = args.number("lod", 1.0, 0.0, 1e4);
+    o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     std::cout << "demo: cave4 at " << resolutionText(o.display) << ", walls at alpha " << o.plan.alphaDeg << " deg\n";
 
     auto run = [&](const char* folder, bool walls, double lodPixels) {

@@ -18,7 +18,7 @@ const char* const kRunUsage =
     "                    [--budget MB] [--geometry-budget MB] [--max-res N] [--sync-paging]\n"
     "                    [--bake-on-demand [--cache-budget MB] [--bake-nice N] [--bake-interleave N]]\n"
     "                    [--lod PX [--triangle-budget N|--frame-budget-ms T] [--lod-max PX]]\n"
-    "                    [--cluster [--cluster-timeout S]]\n"
+    "                    [--cluster [--cluster-timeout S]] [--texture-format rgba8|bc1|bc3]\n"
     "                    [--clusters [--cluster-divisions N] [--cluster-res N] [--cluster-fade N]]\n"
     "\n"
     "Walks through scene S (a scene.json, a folder holding one, or a bare glTF/GLB file) on the\n"
@@ -43,6 +43,8 @@ const char* const kRunUsage =
     "geometry_kept walls kept as textures and geometry_forced cells drawn unloaded, per frame).\n"
     "--walls depth bakes depth with colour and reprojects every wall pixel to the eye (issue 16,\n"
     "walls/gl/depth_wall_pass.h); default flat.\n"
+    "--texture-format: storage of baked colour on disk and GPU, as for `cavewall bake` (default\n"
+    DEFAULT_TEXTURE_FORMAT "; keys the cache).\n"
     "--bake-on-demand starts at once instead of baking every missing texture first: the textures the\n"
     "cache lacks are baked by a background thread with its own GL context, those wanted now first,\n"
     "then the neighbouring zones', then along the direction of travel, into the same cache (what it\n"
@@ -160,7 +162,7 @@ int runRun(const std::vector<std::string>& words) {
                       "no-walls", "alpha", "min-zone", "ppd", "save-frames", "record", "cache", "budget", "geometry-budget", "max-res",
                       "sync-paging", "out", "cluster", "cluster-timeout", "lod", "triangle-budget", "frame-budget-ms", "lod-max",
                       "walls", "clusters", "cluster-divisions", "cluster-res", "cluster-fade", "bake-on-demand",
-                      "cache-budget", "bake-interleave", "bake-nice"});
+                      "cache-budget", "bake-interleave", "bake-nice", "texture-format"});
     if (args.has("headless") && args.has("window")) throw Error("--headless and --window: expected one of them, got both");
     app::RunOptions o;
     o.scene = args.require("scene");
@@ -176,6 +178,7 @@ int runRun(const std::vector<std::string>& words) {
     o.transition = args.choice("transition", app::kTransitionNames, app::Transition::Blend);
     o.walls = !args.has("no-walls");
     o.wallKind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
+    o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.plan.alphaDeg = args.number("alpha", o.plan.alphaDeg, 1e-3, 90.0);
     o.plan.minZoneSize = args.number("min-zone", o.plan.minZoneSize, 1e-3, 1e4);
     o.plan.pixelsPerDegree = args.number("ppd", o.plan.pixelsPerDegree, 0.01, 1000.0);

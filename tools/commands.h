@@ -6,6 +6,10 @@
 #include <string>
 #include <vector>
 
+// The default of --texture-format (walls::kDefaultTextureFormat) as a literal for the help
+// texts; tools/args.cpp checks that the two agree.
+#define DEFAULT_TEXTURE_FORMAT "bc1"
+
 namespace cavewall::tools {
 
 struct Command {

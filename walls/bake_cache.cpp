@@ -3,17 +3,21 @@
 #include "config/error.h"
 
 #include <set>
+#include <string_view>
 #include <system_error>
 #include <unistd.h>
 
 namespace cavewall::walls {
 
 std::optional<std::uint64_t> textureKeyOf(const std::string& name) {
-    // tex_NNNN_<16 hex>.tx (the id may have more than 4 digits)
-    if (name.size() < 4 + 1 + 1 + 16 + 3 || name.rfind("tex_", 0) != 0 || name.compare(name.size() - 3, 3, ".tx") != 0)
-        return std::nullopt;
-    const std::string hex = name.substr(name.size() - 3 - 16, 16);
-    if (name[name.size() - 3 - 17] != '_' || hex.find_first_not_of("0123456789abcdef") != std::string::npos)
+    // tex_NNNN_<16 hex>.tx or .bct (the id may have more than 4 digits)
+    const auto endsWith = [&](std::string_view s) {
+        return name.size() >= s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0;
+    };
+    const std::size_t ext = endsWith(".tx") ? 3 : endsWith(".bct") ? 4 : 0;
+    if (ext == 0 || name.size() < 4 + 1 + 1 + 16 + ext || name.rfind("tex_", 0) != 0) return std::nullopt;
+    const std::string hex = name.substr(name.size() - ext - 16, 16);
+    if (name[name.size() - ext - 17] != '_' || hex.find_first_not_of("0123456789abcdef") != std::string::npos)
         return std::nullopt;
     return std::stoull(hex, nullptr, 16);
 }

@@ -9,8 +9,8 @@
 
 namespace cavewall::walls {
 
-BakeWriter::BakeWriter(std::filesystem::path folder, int jobs, MipFileOptions options)
-    : _folder(std::move(folder)), _options(std::move(options)), _maxQueued(std::size_t(2 * std::max(1, jobs))) {
+BakeWriter::BakeWriter(std::filesystem::path folder, int jobs, MipFileOptions options, TextureFormat format)
+    : _folder(std::move(folder)), _options(std::move(options)), _format(format), _maxQueued(std::size_t(2 * std::max(1, jobs))) {
     for (int i = 0; i < std::max(1, jobs); ++i) _threads.emplace_back([this] { worker(); });
 }
 
@@ -82,7 +82,8 @@ void BakeWriter::worker() {
             const std::filesystem::path file = _folder / job.entry.file;
             const std::vector<scenes::Image> levels = premultipliedMipChain(job.image);
             lap(spent.mips);
-            writeMipFile(file, levels, _options);
+            if (_format == TextureFormat::Rgba8) writeMipFile(file, levels, _options);
+            else writeBlockFile(file, encodeLevels(levels, _format));
             lap(spent.encode);
             std::error_code ec;
             job.entry.bytes = std::filesystem::file_size(file, ec);

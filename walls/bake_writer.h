@@ -6,6 +6,7 @@
 #include "scenes/scene.h"
 #include "walls/bake_manifest.h"
 #include "walls/depth_wall.h"
+#include "walls/texture_blocks.h"
 #include "walls/texture_mips.h"
 
 #include <condition_variable>
@@ -22,8 +23,10 @@ namespace cavewall::walls {
 class BakeWriter {
 public:
     // `folder` receives the files; `jobs` >= 1 threads; at most 2 * jobs rendered images wait
-    // in memory (submit blocks beyond that).
-    BakeWriter(std::filesystem::path folder, int jobs, MipFileOptions options);
+    // in memory (submit blocks beyond that). `format` Rgba8: tiled TIFF (writeMipFile with
+    // `options`); Bc1, Bc3: the MIP chain encoded into a ".bct" file (walls/texture_blocks.h).
+    BakeWriter(std::filesystem::path folder, int jobs, MipFileOptions options,
+               TextureFormat format = TextureFormat::Rgba8);
     // Joins the threads (pending work is finished first).
     ~BakeWriter();
     BakeWriter(const BakeWriter&) = delete;
@@ -43,7 +46,8 @@ public:
     // Seconds the worker threads spent so far, summed over threads.
     struct Times {
         double mips = 0.0;     // premultipliedMipChain
-        double encode = 0.0;   // writeMipFile (and the depth file): encoding and writing
+        double encode = 0.0;   // writeMipFile or block encoding and writeBlockFile (and the
+                               // depth file): encoding and writing
         double hash = 0.0;     // hashing the written files
     };
     Times times() const;
@@ -58,6 +62,7 @@ private:
 
     std::filesystem::path _folder;
     MipFileOptions _options;
+    TextureFormat _format;
     std::size_t _maxQueued;
     mutable std::mutex _mutex;
     std::condition_variable _changed;

@@ -8,10 +8,10 @@
 namespace cavewall::walls {
 
 std::string depthFileName(const std::string& colourFile) {
-    const std::string stem = colourFile.size() > 3 && colourFile.compare(colourFile.size() - 3, 3, ".tx") == 0
-                                 ? colourFile.substr(0, colourFile.size() - 3)
-                                 : colourFile;
-    return stem + ".depth.tif";
+    for (const std::string ext : {".tx", ".bct"})  // the colour file's formats (walls/texture_blocks.h)
+        if (colourFile.size() > ext.size() && colourFile.compare(colourFile.size() - ext.size(), ext.size(), ext) == 0)
+            return colourFile.substr(0, colourFile.size() - ext.size()) + ".depth.tif";
+    return colourFile + ".depth.tif";
 }
 
 void writeDepthFile(const std::filesystem::path& file, const DepthImage& image) {

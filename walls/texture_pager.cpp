@@ -64,8 +64,8 @@ void TexturePager::worker() {
             ok = textureFileValid(_folder, texture);
             if (ok) d.levels = _decoder(path);
             ok = ok && textureFileValid(_folder, texture);
-            for (const scenes::Image& level : d.levels) d.bytes += level.rgba.size();
-            ok = ok && !d.levels.empty();
+            d.bytes = d.levels.bytes();
+            ok = ok && d.levels.count() > 0;
         } catch (const std::exception&) {
             ok = false;
         }

@@ -5,9 +5,9 @@
 //
 // Per frame the runtime says which textures it draws now (non-zero weight) and which it may
 // draw soon (the neighbouring zones' textures). Requests for `now` are decoded first, then
-// `soon`. Residency is counted in bytes of all MIP levels (RGBA8) against the budget; when a
-// new texture would exceed it, the least recently wanted textures that are not wanted now are
-// evicted. A texture that is not resident is a miss for that frame: the runtime keeps drawing
+// `soon`. Residency is counted in GPU bytes of all MIP levels (RGBA8, or the compressed blocks of
+// a ".bct" file, walls/texture_blocks.h) against the budget; when a new texture would exceed
+// it, the least recently wanted textures that are not wanted now are evicted. A texture that is not resident is a miss for that frame: the runtime keeps drawing
 // what it drew before (the previous texture, or the geometry) — never a black wall.
 // A file whose size or hash differs from the manifest's (checked before and after decoding:
 // replaced, torn, swapped with another) is never drawn. Such files and decoding failures mark
@@ -16,6 +16,7 @@
 #include "scenes/scene.h"
 #include "walls/bake_manifest.h"
 #include "walls/residency.h"
+#include "walls/texture_blocks.h"
 
 #include <condition_variable>
 #include <deque>
@@ -31,8 +32,8 @@ namespace cavewall::walls {
 
 struct DecodedTexture {
     int id = 0;
-    std::vector<scenes::Image> levels;   // MIP levels, largest first, RGBA8 premultiplied
-    std::size_t bytes = 0;               // sum over levels
+    TextureLevels levels;                // MIP levels, largest first: RGBA8 premultiplied or blocks
+    std::size_t bytes = 0;               // GPU bytes, summed over levels (compressed when blocks)
 };
 
 struct PagerStats {
@@ -46,10 +47,11 @@ struct PagerStats {
 
 class TexturePager {
 public:
-    using Decoder = std::function<std::vector<scenes::Image>(const std::filesystem::path&)>;
+    // A function returning std::vector<scenes::Image> (RGBA8 levels) converts to this.
+    using Decoder = std::function<TextureLevels(const std::filesystem::path&)>;
 
     // `folder` holds the manifest's files. `budgetMB` > 0. `decoder` reads every MIP level of a
-    // file (throws cavewall::Error on failure).
+    // file (throws cavewall::Error on failure; walls::readBakedTexture reads every format).
     TexturePager(std::filesystem::path folder, BakeManifest manifest, double budgetMB, Decoder decoder);
     ~TexturePager();
     TexturePager(const TexturePager&) = delete;

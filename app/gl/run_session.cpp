@@ -42,6 +42,7 @@ gl::BakeRequest bakeRequest(const RunOptions& o, gl::Context* context) {
     request.context = context;
     request.settings.maxResolution = o.bakeResolution;
     request.settings.kind = o.wallKind;
+    request.settings.textureFormat = o.textureFormat;
     if (o.cache) request.cache = *o.cache;
     return request;
 }

@@ -24,6 +24,7 @@ std::filesystem::path scratch(const char* name) {
 
 TEST(DepthFile, NamesFollowTheColourFile) {
     EXPECT_EQ(depthFileName("tex_0003_0123456789abcdef.tx"), "tex_0003_0123456789abcdef.depth.tif");
+    EXPECT_EQ(depthFileName("tex_0003_0123456789abcdef.bct"), "tex_0003_0123456789abcdef.depth.tif");
 }
 
 TEST(DepthFile, DepthsRoundTripBitForBit) {

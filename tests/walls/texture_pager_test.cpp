@@ -1,5 +1,8 @@
 #include "walls/texture_pager.h"
 
+#include "walls/texture_blocks.h"
+#include "walls/texture_mips.h"
+
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -163,6 +166,32 @@ TEST(TexturePager, UploadsWithinAByteBudgetPerFrame) {
     pager.waitIdle();
     EXPECT_EQ(pager.takeReady(2 * kBytes).size(), 2u);
     EXPECT_EQ(pager.takeReady(1).size(), 1u);  // at least one, so paging always progresses
+}
+
+// Block-compressed files (walls/texture_blocks.h) are paged as blocks and count their GPU
+// bytes: a 256 x 256 BC1 texture with its MIP chain is 43,704 bytes (8 bytes per 4 x 4 block:
+// 32,768 + 8,192 + 2,048 + 512 + 128 + 32 + 8 + 8 + 8), not RGBA8's 349,524.
+TEST(TexturePager, PagesBlockFilesAsCompressedBytes) {
+    const auto dir = folder();
+    scenes::Image image{"grey", 256, 256, std::vector<std::uint8_t>(256 * 256 * 4, 200)};
+    BakeManifest m;
+    for (int i = 0; i < 2; ++i) {
+        const std::string file = "tex_" + std::to_string(i) + ".bct";
+        writeBlockFile(dir / file, encodeLevels(premultipliedMipChain(image), TextureFormat::Bc1));
+        m.textures.push_back({i, 0, 0, {}, {256, 256}, file, std::filesystem::file_size(dir / file), hashFile(dir / file)});
+    }
+    TexturePager pager(dir, m, 4.0, readBakedTexture);
+    pager.request({0, 1}, {});
+    pager.waitIdle();
+    const std::vector<DecodedTexture> ready = pager.takeReady(SIZE_MAX);
+    ASSERT_EQ(ready.size(), 2u);
+    for (const DecodedTexture& d : ready) {
+        EXPECT_EQ(d.levels.format, TextureFormat::Bc1);
+        EXPECT_EQ(d.levels.count(), 9u);
+        EXPECT_EQ(d.bytes, 43704u);
+        pager.markResident(d.id, d.bytes);
+    }
+    EXPECT_DOUBLE_EQ(pager.stats().residentMB, 2 * 43704 / (1024.0 * 1024.0));
 }
 
 }  // namespace

@@ -317,6 +317,10 @@ TEST(BakeFileNames, TextureKeyRoundTripsThroughTheFileName) {
     EXPECT_EQ(walls::textureKeyOf("manifest.json"), std::nullopt);
     EXPECT_EQ(walls::textureKeyOf("tex_0007_0123456789ABCDEF.tx"), std::nullopt);  // walls::hex64 writes lower case
     EXPECT_EQ(walls::textureKeyOf(".tex_0007_0123456789abcdef.tmp-1-0.tx"), std::nullopt);
+    // Block-compressed textures (walls/texture_blocks.h) have their own extension.
+    EXPECT_EQ(textureFileName(7, 0x0123456789abcdefull, walls::TextureFormat::Bc1), "tex_0007_0123456789abcdef.bct");
+    EXPECT_EQ(walls::textureKeyOf("tex_0007_0123456789abcdef.bct"), 0x0123456789abcdefull);
+    EXPECT_EQ(walls::textureKeyOf("tex_0007_0123456789abcdef.bc"), std::nullopt);
 }
 
 // Depth walls (issue 16): the wall kind keys the folder; every texture gets a valid depth file

@@ -67,6 +67,8 @@ TEST_F(BakeCli, BadArgumentsAreClearErrors) {
         {"lod texels out of range", {"bake", "x", "--lod-texels", "5"}, "--lod-texels"},
         {"negative limit", {"bake", "x", "--limit", "-1"}, "--limit"},
         {"unknown flag", {"bake", "x", "--colour", "red"}, "--colour"},
+        {"texture format", {"bake", "x", "--texture-format", "dxt9"},
+         "--texture-format: expected one of rgba8, bc1, bc3, got 'dxt9'"},
         {"missing scene", {"bake", "/nonexistent/scene.json", "--cache", "/tmp"}, "/nonexistent/scene.json"},
     };
     for (const auto& c : cases) {

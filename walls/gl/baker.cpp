@@ -57,10 +57,10 @@ std::filesystem::path defaultCacheFolder() {
     throw Error("bake cache: expected $CAVEWALL_CACHE or $HOME to be set, got neither (use --cache DIR)");
 }
 
-std::string textureFileName(int id, std::uint64_t textureKey) {
+std::string textureFileName(int id, std::uint64_t textureKey, walls::TextureFormat format) {
     char s[16];
     std::snprintf(s, sizeof s, "tex_%04d_", id);
-    return s + walls::hex64(textureKey) + ".tx";
+    return s + walls::hex64(textureKey) + std::string(walls::textureFileExtension(format));
 }
 
 namespace {
@@ -78,6 +78,9 @@ std::uint64_t settingsKey(const BakeSettings& s) {
     if (s.kind == walls::WallKind::Depth) h.text("depth wall v1");
     // Full-detail bakes keep their keys; levels of detail draw other pixels.
     if (s.lodTexels > 0.0) h.text("lod texels v1").number(s.lodTexels);
+    // RGBA8 bakes keep their keys; block formats store other files (walls/texture_blocks.h).
+    if (s.textureFormat != walls::TextureFormat::Rgba8)
+        h.text("texture format v1").text(walls::textureFormatName(s.textureFormat));
     // The wall renderer lights per vertex where that is within this tolerance (RenderSettings
     // default; render/vertex_lighting.h): other pixels, by at most half a level.
     h.text("vertex lighting v1").number(render::kVertexLightingTolerance);
@@ -316,7 +319,8 @@ void Bake::keyPending(std::uint64_t settings) {
     for (Item& item : _pending) {
         if (!item.entry.file.empty()) continue;
         const std::uint64_t content = _contentKeys.at({item.texture->wall, item.side});
-        item.entry.file = textureFileName(item.texture->id, textureKey(item, _plan, content, settings));
+        item.entry.file = textureFileName(item.texture->id, textureKey(item, _plan, content, settings),
+                                          _request.settings.textureFormat);
         if (_request.settings.kind == walls::WallKind::Depth) item.entry.depthFile = walls::depthFileName(item.entry.file);
     }
 }
@@ -355,7 +359,8 @@ void Bake::render(const std::vector<Item>& items) {
         _renderer = std::make_unique<WallTextureRenderer>(_scene, _request.settings.ambient, _request.settings.lodTexels);
     if (!_writer)
         _writer = std::make_unique<BakeWriter>(_result.folder, _request.settings.jobs,
-                                               walls::MipFileOptions{_request.settings.tileSize});
+                                               walls::MipFileOptions{_request.settings.tileSize},
+                                               _request.settings.textureFormat);
     _result.times.prepare += secondsSince(start);
     WallTextureRenderer& renderer = *_renderer;
     BakeWriter& writer = *_writer;

@@ -11,7 +11,8 @@
 //
 // Image convention: texel (0, 0) of a file is the wall's upper-left corner as seen from the
 // texture's side, u runs along lowerLeft -> lowerRight; colour is premultiplied
-// (walls/texture_mips.h). Files are tiled, MIP-mapped TIFF (".tx") listed with size and
+// (walls/texture_mips.h). Files are tiled, MIP-mapped TIFF (".tx"), or S3TC blocks (".bct",
+// walls/texture_blocks.h) with BakeSettings::textureFormat bc1 or bc3, listed with size and
 // hash in the folder's manifest.json (walls/bake_manifest.h).
 //
 // What is baked comes from walls::prepareWalls (walls/wall_setup.h): the plan and what each wall
@@ -31,6 +32,7 @@
 #include "walls/bake_manifest.h"
 #include "walls/depth_wall.h"
 #include "walls/plan.h"
+#include "walls/texture_blocks.h"
 #include "walls/wall_setup.h"
 
 #include <cstdint>
@@ -57,6 +59,10 @@ struct BakeSettings {
     // its sampling point, [0, 4]; 0: full detail. Keys the cache when > 0 (a full-detail bake
     // keeps its key).
     double lodTexels = 0.5;
+    // Storage of the colour (walls/texture_blocks.h): Rgba8, tiled TIFF (".tx"); Bc1 or Bc3,
+    // S3TC blocks in a ".bct" file, uploaded compressed. Keys the cache when not Rgba8 (an
+    // RGBA8 bake keeps its key), so folders and texture files of different formats never mix.
+    walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
 };
 
 // Throws cavewall::Error naming the setting when it is out of range.
@@ -170,7 +176,8 @@ private:
 // $CAVEWALL_CACHE, else $HOME/.cache/cavewall. Throws Error when neither is set.
 std::filesystem::path defaultCacheFolder();
 
-// "tex_<id, 4 digits>_<16 hex digits of the texture key>.tx"
-std::string textureFileName(int id, std::uint64_t textureKey);
+// "tex_<id, 4 digits>_<16 hex digits of the texture key>.tx" (".bct" for the block formats)
+std::string textureFileName(int id, std::uint64_t textureKey,
+                            walls::TextureFormat format = walls::TextureFormat::Rgba8);
 
 }  // namespace cavewall::gl

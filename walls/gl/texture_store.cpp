@@ -1,5 +1,7 @@
 #include "walls/gl/texture_store.h"
 
+#include "walls/gl/wall_quad.h"
+
 #include <algorithm>
 
 namespace cavewall::gl {
@@ -7,7 +9,8 @@ namespace cavewall::gl {
 namespace {
 
 GlObject upload(const walls::DecodedTexture& decoded) {
-    const auto& levels = decoded.levels;
+    if (decoded.levels.format != walls::TextureFormat::Rgba8) return uploadWallTexture(decoded.levels);
+    const auto& levels = decoded.levels.rgba;
     GlObject texture = createTexture(GL_TEXTURE_2D);
     const GLuint id = texture.id();
     glTextureStorage2D(id, static_cast<GLsizei>(levels.size()), GL_SRGB8_ALPHA8, levels[0].width, levels[0].height);
@@ -33,7 +36,7 @@ TextureStore::TextureStore(walls::TexturePager& pager, std::size_t uploadBytesPe
 std::size_t TextureStore::update() {
     std::size_t uploaded = 0;
     for (const walls::DecodedTexture& d : _pager.takeReady(_uploadBytes)) {
-        if (d.levels.empty() || d.levels[0].width <= 0 || d.levels[0].height <= 0) continue;
+        if (d.levels.count() == 0 || d.levels.width() <= 0 || d.levels.height() <= 0) continue;
         _textures[d.id] = upload(d);
         _pager.markResident(d.id, d.bytes);
         uploaded += d.bytes;

@@ -4,7 +4,8 @@
 // Each frame the runtime tells the pager what it wants, then calls update(): it uploads the
 // decoded textures the pager has ready, at most `uploadBytesPerFrame` per frame (at least one
 // texture when any is ready, so a large texture cannot starve), and deletes the textures the
-// pager evicted. Textures are GL_SRGB8_ALPHA8 with every MIP level the file had (premultiplied
+// pager evicted. Textures are GL_SRGB8_ALPHA8, or the sRGB S3TC formats of ".bct" files
+// (walls/texture_blocks.h, uploaded compressed), with every MIP level the file had (premultiplied
 // alpha, as baked), sampled trilinearly and clamped to the edge.
 // Needs the rendering context current for every call and for destruction.
 

@@ -25,10 +25,8 @@ using Clock = std::chrono::steady_clock;
 
 using display::msSince;
 
-// Every MIP level of a baked texture file (walls/texture_mips.h convention).
-std::vector<scenes::Image> decodeBakedTexture(const std::filesystem::path& file) {
-    return scenes::readMipLevels(file);
-}
+// Every MIP level of a baked texture file of any format (walls/texture_blocks.h).
+walls::TextureLevels decodeBakedTexture(const std::filesystem::path& file) { return walls::readBakedTexture(file); }
 
 // Makes `context` current before any member touches GL: a bake that made (and dropped) its own
 // context, for one, leaves no context current on this thread.

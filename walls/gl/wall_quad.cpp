@@ -5,6 +5,9 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+#include <string>
+
 namespace cavewall::gl {
 
 namespace {
@@ -32,6 +35,52 @@ void main() { fragColor = uWeight * texture(uTexture, vTexCoord); }
 )";
 
 }  // namespace
+
+bool supportsTextureFormat(walls::TextureFormat format) {
+    if (format == walls::TextureFormat::Rgba8) return true;
+    return epoxy_has_gl_extension("GL_EXT_texture_compression_s3tc") &&
+           (epoxy_has_gl_extension("GL_EXT_texture_sRGB") ||
+            epoxy_has_gl_extension("GL_EXT_texture_compression_s3tc_srgb"));
+}
+
+unsigned glInternalFormat(walls::TextureFormat format) {
+    switch (format) {
+    case walls::TextureFormat::Bc1: return GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT;
+    case walls::TextureFormat::Bc3: return GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT;
+    case walls::TextureFormat::Rgba8: break;
+    }
+    return GL_SRGB8_ALPHA8;
+}
+
+gl::GlObject uploadWallTexture(const walls::TextureLevels& levels) {
+    if (levels.format == walls::TextureFormat::Rgba8) return uploadWallTexture(levels.rgba);
+    const std::string name(walls::textureFormatName(levels.format));
+    if (!supportsTextureFormat(levels.format))
+        throw Error("wall texture: expected a context that samples " + name +
+                    " (GL_EXT_texture_compression_s3tc with sRGB), got one without it; bake with --texture-format rgba8");
+    const auto& l = levels.blocks;
+    if (l.empty() || l[0].width <= 0 || l[0].height <= 0)
+        throw Error("wall texture: expected at least one non-empty MIP level, got none");
+    const GLenum internal = glInternalFormat(levels.format);
+    gl::GlObject t = gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(t.id(), static_cast<GLsizei>(l.size()), internal, l[0].width, l[0].height);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    for (std::size_t i = 0; i < l.size(); ++i) {
+        const int w = std::max(1, l[0].width >> i), h = std::max(1, l[0].height >> i);
+        if (l[i].width != w || l[i].height != h || l[i].blocks.size() != walls::levelBytes(levels.format, w, h))
+            throw Error("wall texture: " + name + " MIP level " + std::to_string(i) + ": expected " + std::to_string(w) +
+                        " x " + std::to_string(h) + ", got " + std::to_string(l[i].width) + " x " +
+                        std::to_string(l[i].height));
+        glCompressedTextureSubImage2D(t.id(), static_cast<GLint>(i), 0, 0, w, h, internal,
+                                      static_cast<GLsizei>(l[i].blocks.size()), l[i].blocks.data());
+    }
+    glTextureParameteri(t.id(), GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(l.size()) - 1);
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}
 
 gl::GlObject uploadWallTexture(const std::vector<scenes::Image>& levels) {
     if (levels.empty() || levels[0].width <= 0 || levels[0].height <= 0)

@@ -6,6 +6,7 @@
 #include "display/gl/gl_object.h"
 #include "display/off_axis.h"
 #include "scenes/scene.h"
+#include "walls/texture_blocks.h"
 
 #include <vector>
 
@@ -15,6 +16,16 @@ namespace cavewall::gl {
 // walls/texture_mips.h says) as one GL_SRGB8_ALPHA8 texture with trilinear filtering and
 // clamped edges. Needs a current context. Throws Error for inconsistent levels.
 gl::GlObject uploadWallTexture(const std::vector<scenes::Image>& levels);
+// As above for any format of walls/texture_blocks.h: RGBA8 as above; Bc1 and Bc3 as
+// GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT / _DXT5_EXT with their blocks uploaded as they are
+// (glCompressedTextureSubImage2D), so the sampler decodes sRGB to linear as for RGBA8. Throws
+// Error when the context lacks S3TC with sRGB (supportsTextureFormat) or levels are inconsistent.
+gl::GlObject uploadWallTexture(const walls::TextureLevels& levels);
+// Whether the current context can sample `format` (Rgba8 always; Bc1, Bc3 need
+// GL_EXT_texture_compression_s3tc and GL_EXT_texture_sRGB or ..._s3tc_srgb).
+bool supportsTextureFormat(walls::TextureFormat format);
+// The GL internal format of `format` (GL_SRGB8_ALPHA8 or the sRGB S3TC formats).
+unsigned glInternalFormat(walls::TextureFormat format);
 
 class WallQuadDrawer {
 public:

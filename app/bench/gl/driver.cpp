@@ -44,6 +44,7 @@ BakedWalls bakeWalls(const BenchOptions& o, const std::filesystem::path& sceneFi
     request.settings.maxResolution = o.bakeResolution;
     request.settings.jobs = 2;
     request.settings.kind = o.wallKind;
+    request.settings.textureFormat = o.textureFormat;
     request.context = &context;
     if (o.cache) request.cache = *o.cache;
     gl::BakeResult baked = gl::bakeWalls(scene, d, out.setup, request);
@@ -53,7 +54,8 @@ BakedWalls bakeWalls(const BenchOptions& o, const std::filesystem::path& sceneFi
     out.diskMB = static_cast<double>(baked.totalBytes) / 1e6;
     out.setup.manifest = std::move(baked.manifest);
     out.summary = "a=" + config::formatNumber(alphaDeg) + ": " + std::to_string(out.setup.plan.textures.size()) +
-                  " textures, " + std::to_string(baked.baked) + " baked now in " + fixed(baked.seconds) + " s, " +
+                  " textures (" + std::string(walls::textureFormatName(o.textureFormat)) + ", " +
+                  fixed(out.diskMB) + " MB on disk), " + std::to_string(baked.baked) + " baked now in " + fixed(baked.seconds) + " s, " +
                   std::to_string(baked.reused) + " from the cache";
     return out;
 }

@@ -74,6 +74,8 @@ struct BenchOptions {
     double frameBudgetMs = 1000.0 / 60.0;         // the frame-time modes' target; 0: none
     double lodMaxPixels = 8.0;                    // the most a budget may raise the tolerance to
     walls::WallKind wallKind = walls::WallKind::Flat;  // --walls: flat or depth walls (bake and draw)
+    // --texture-format: storage of the baked colour (walls/texture_blocks.h), disk and GPU
+    walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
     std::optional<std::filesystem::path> cache;   // bake cache (default: the baker's)
     bool clusters = false;                        // also seed 004's textured clusters held to
                                                   // frameBudgetMs (16.67 when it is 0), interleaved

@@ -1,0 +1,311 @@
+#include "walls/texture_blocks.h"
+
+#include "config/error.h"
+#include "scenes/file_write.h"
+#include "scenes/image_io.h"
+#include "walls/texture_mips.h"
+
+#include <squish.h>
+#include <zlib.h>
+
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+namespace cavewall::walls {
+
+namespace {
+
+constexpr char kMagic[4] = {'C', 'W', 'B', 'C'};
+constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kHeaderBytes = 24;  // magic, version, format, width, height, levels
+constexpr std::uint32_t kMaxSide = 16384;
+
+// Byte widths of a block's fields, stored field by field (the header's "rearranged").
+std::vector<int> blockFields(TextureFormat format) {
+    if (format == TextureFormat::Bc1) return {4, 4};
+    return {2, 6, 4, 4};
+}
+
+std::uint32_t formatCode(TextureFormat format) { return format == TextureFormat::Bc1 ? 1u : 3u; }
+
+int squishFlags(TextureFormat format) {
+    // Not kWeightColourByAlpha: premultiplied colour adds to the background as it is, whatever
+    // the texel's alpha, so an error in a transparent texel's colour shows as much as any other.
+    return format == TextureFormat::Bc1 ? squish::kDxt1 | squish::kColourClusterFit
+                                        : squish::kDxt5 | squish::kColourClusterFit;
+}
+
+void requireBlocks(TextureFormat format, const char* what) {
+    if (format != TextureFormat::Bc1 && format != TextureFormat::Bc3)
+        throw Error(std::string(what) + ": expected a block format (bc1, bc3), got " +
+                    std::string(textureFormatName(format)));
+}
+
+int mipCount(int width, int height) {
+    int n = 1;
+    while (width > 1 || height > 1) width = std::max(1, width / 2), height = std::max(1, height / 2), ++n;
+    return n;
+}
+
+// Bc1's texel preparation (header): binary coverage, opaque texels un-premultiplied.
+void toBinaryCoverage(std::uint8_t* texel, const std::array<float, 256>& linear) {
+    const int a = texel[3];
+    if (a < 128) {
+        std::fill_n(texel, 4, std::uint8_t(0));
+        return;
+    }
+    const float alpha = a / 255.0f;
+    for (int c = 0; c < 3; ++c) texel[c] = encodeSrgbByte(linear[texel[c]] / alpha);
+    texel[3] = 255;
+}
+
+// The block squish would give a fully transparent block, written directly: Bc1 in its
+// three-colour mode (both endpoints 0) with every index 3 (transparent black); Bc3 all zero
+// (alpha endpoints 0, so every alpha is 0; colour black).
+void transparentBlock(TextureFormat format, std::uint8_t* block) {
+    std::fill_n(block, blockBytes(format), std::uint8_t(0));
+    if (format == TextureFormat::Bc1) std::fill_n(block + 4, 4, std::uint8_t(0xFF));
+}
+
+std::vector<std::uint8_t> splitFields(const std::vector<std::uint8_t>& blocks, TextureFormat format) {
+    const int size = blockBytes(format);
+    const std::size_t n = blocks.size() / size;
+    std::vector<std::uint8_t> out(blocks.size());
+    std::size_t at = 0;
+    int start = 0;
+    for (int width : blockFields(format)) {
+        for (std::size_t b = 0; b < n; ++b)
+            for (int k = 0; k < width; ++k) out[at++] = blocks[b * size + start + k];
+        start += width;
+    }
+    return out;
+}
+
+std::vector<std::uint8_t> joinFields(const std::vector<std::uint8_t>& fields, TextureFormat format) {
+    const int size = blockBytes(format);
+    const std::size_t n = fields.size() / size;
+    std::vector<std::uint8_t> out(fields.size());
+    std::size_t at = 0;
+    int start = 0;
+    for (int width : blockFields(format)) {
+        for (std::size_t b = 0; b < n; ++b)
+            for (int k = 0; k < width; ++k) out[b * size + start + k] = fields[at++];
+        start += width;
+    }
+    return out;
+}
+
+void putU32(std::string& out, std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
+}
+
+std::uint32_t getU32(const std::string& bytes, std::size_t at) {
+    std::uint32_t v = 0;
+    for (int i = 0; i < 4; ++i) v |= std::uint32_t(static_cast<std::uint8_t>(bytes[at + i])) << (8 * i);
+    return v;
+}
+
+std::string readAll(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw Error(file.string() + ": cannot open the compressed texture for reading");
+    std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (in.bad()) throw Error(file.string() + ": cannot read the compressed texture");
+    return bytes;
+}
+
+[[noreturn]] void bad(const std::string& file, const std::string& where, const std::string& what) {
+    throw Error(file + ": " + where + ": " + what);
+}
+
+// Deflate's largest expansion is about 1032:1 (258-byte matches of 2 bits at best): a level
+// whose stored size cannot hold its blocks is refused before anything is allocated for them.
+constexpr std::size_t kMaxInflation = 1100;
+
+}  // namespace
+
+std::string_view textureFormatName(TextureFormat format) {
+    switch (format) {
+    case TextureFormat::Rgba8: return "rgba8";
+    case TextureFormat::Bc1: return "bc1";
+    case TextureFormat::Bc3: return "bc3";
+    }
+    return "?";
+}
+
+int blockBytes(TextureFormat format) {
+    return format == TextureFormat::Bc1 ? 8 : format == TextureFormat::Bc3 ? 16 : 0;
+}
+
+std::size_t levelBytes(TextureFormat format, int width, int height) {
+    if (format == TextureFormat::Rgba8) return std::size_t(width) * height * 4;
+    return std::size_t((width + 3) / 4) * ((height + 3) / 4) * blockBytes(format);
+}
+
+int TextureLevels::width() const {
+    if (format == TextureFormat::Rgba8) return rgba.empty() ? 0 : rgba[0].width;
+    return blocks.empty() ? 0 : blocks[0].width;
+}
+
+int TextureLevels::height() const {
+    if (format == TextureFormat::Rgba8) return rgba.empty() ? 0 : rgba[0].height;
+    return blocks.empty() ? 0 : blocks[0].height;
+}
+
+std::size_t TextureLevels::bytes() const {
+    std::size_t sum = 0;
+    for (const scenes::Image& l : rgba) sum += l.rgba.size();
+    for (const BlockLevel& l : blocks) sum += l.blocks.size();
+    return sum;
+}
+
+BlockLevel encodeLevel(const scenes::Image& image, TextureFormat format) {
+    requireBlocks(format, ("encoding '" + image.name + "'").c_str());
+    if (image.width <= 0 || image.height <= 0 || image.rgba.size() != std::size_t(image.width) * image.height * 4)
+        throw Error("encoding '" + image.name + "': expected " + std::to_string(image.width) + " x " +
+                    std::to_string(image.height) + " RGBA texels, got " + std::to_string(image.rgba.size()) + " bytes");
+    std::array<float, 256> linear{};
+    for (int i = 0; i < 256; ++i) linear[i] = srgbToLinear(i / 255.0f);
+    BlockLevel out{image.width, image.height, std::vector<std::uint8_t>(levelBytes(format, image.width, image.height))};
+    const int size = blockBytes(format), flags = squishFlags(format);
+    std::uint8_t* block = out.blocks.data();
+    for (int by = 0; by < image.height; by += 4)
+        for (int bx = 0; bx < image.width; bx += 4, block += size) {
+            std::uint8_t texels[16 * 4] = {};
+            int mask = 0;
+            bool transparent = true;
+            for (int y = 0; y < 4 && by + y < image.height; ++y)
+                for (int x = 0; x < 4 && bx + x < image.width; ++x) {
+                    std::uint8_t* t = &texels[(y * 4 + x) * 4];
+                    std::memcpy(t, &image.rgba[(std::size_t(by + y) * image.width + bx + x) * 4], 4);
+                    if (format == TextureFormat::Bc1) toBinaryCoverage(t, linear);
+                    transparent = transparent && (t[0] | t[1] | t[2] | t[3]) == 0;
+                    mask |= 1 << (y * 4 + x);
+                }
+            if (transparent) transparentBlock(format, block);
+            else squish::CompressMasked(texels, mask, block, flags);
+        }
+    return out;
+}
+
+scenes::Image decodeLevel(const BlockLevel& level, TextureFormat format) {
+    requireBlocks(format, "decoding a level");
+    if (level.width <= 0 || level.height <= 0 || level.blocks.size() != levelBytes(format, level.width, level.height))
+        throw Error("decoding a " + std::string(textureFormatName(format)) + " level of " + std::to_string(level.width) +
+                    " x " + std::to_string(level.height) + ": expected " +
+                    std::to_string(levelBytes(format, level.width, level.height)) + " bytes of blocks, got " +
+                    std::to_string(level.blocks.size()));
+    scenes::Image image{"decoded", level.width, level.height,
+                        std::vector<std::uint8_t>(std::size_t(level.width) * level.height * 4)};
+    squish::DecompressImage(image.rgba.data(), level.width, level.height, level.blocks.data(), squishFlags(format));
+    return image;
+}
+
+TextureLevels encodeLevels(const std::vector<scenes::Image>& premultiplied, TextureFormat format) {
+    TextureLevels out(format, {});
+    for (const scenes::Image& l : premultiplied) out.blocks.push_back(encodeLevel(l, format));
+    return out;
+}
+
+void writeBlockFile(const std::filesystem::path& file, const TextureLevels& levels) {
+    requireBlocks(levels.format, file.string().c_str());
+    const auto& l = levels.blocks;
+    if (l.empty()) throw Error(file.string() + ": expected at least one MIP level, got none");
+    if (l[0].width < 1 || l[0].height < 1 || std::uint32_t(l[0].width) > kMaxSide || std::uint32_t(l[0].height) > kMaxSide)
+        throw Error(file.string() + ": level 0: expected a size in [1, 16384], got " + std::to_string(l[0].width) +
+                    " x " + std::to_string(l[0].height));
+    for (std::size_t i = 0; i < l.size(); ++i) {
+        const int w = i == 0 ? l[0].width : std::max(1, l[i - 1].width / 2);
+        const int h = i == 0 ? l[0].height : std::max(1, l[i - 1].height / 2);
+        if (l[i].width != w || l[i].height != h || l[i].blocks.size() != levelBytes(levels.format, w, h))
+            throw Error(file.string() + ": MIP level " + std::to_string(i) + ": expected " + std::to_string(w) + " x " +
+                        std::to_string(h) + " in " + std::to_string(levelBytes(levels.format, w, h)) + " bytes, got " +
+                        std::to_string(l[i].width) + " x " + std::to_string(l[i].height) + " in " +
+                        std::to_string(l[i].blocks.size()));
+    }
+    std::vector<std::string> packed;
+    for (const BlockLevel& level : l) {
+        const std::vector<std::uint8_t> fields = splitFields(level.blocks, levels.format);
+        uLongf size = compressBound(fields.size());
+        std::string out(size, '\0');
+        if (compress2(reinterpret_cast<Bytef*>(out.data()), &size, fields.data(), fields.size(), Z_BEST_COMPRESSION) != Z_OK)
+            throw Error(file.string() + ": cannot deflate a MIP level");
+        out.resize(size);
+        packed.push_back(std::move(out));
+    }
+    std::string bytes(kMagic, 4);
+    putU32(bytes, kVersion);
+    putU32(bytes, formatCode(levels.format));
+    putU32(bytes, std::uint32_t(l[0].width));
+    putU32(bytes, std::uint32_t(l[0].height));
+    putU32(bytes, std::uint32_t(l.size()));
+    for (const std::string& p : packed) putU32(bytes, std::uint32_t(p.size()));
+    for (const std::string& p : packed) bytes += p;
+    scenes::writeBytesAtomically(file, bytes);
+}
+
+TextureLevels readBlockFile(const std::filesystem::path& file) { return blocksFromBytes(readAll(file), file.string()); }
+
+TextureLevels blocksFromBytes(std::string_view view, const std::string& file) {
+    const std::string bytes(view);
+    if (bytes.size() < kHeaderBytes)
+        bad(file, "header", "expected at least " + std::to_string(kHeaderBytes) + " bytes, got " + std::to_string(bytes.size()));
+    if (bytes.compare(0, 4, kMagic, 4) != 0) bad(file, "header", "expected the magic 'CWBC', got other bytes");
+    if (const std::uint32_t v = getU32(bytes, 4); v != kVersion)
+        bad(file, "header", "expected version 1, got " + std::to_string(v));
+    const std::uint32_t code = getU32(bytes, 8);
+    if (code != 1 && code != 3) bad(file, "header", "expected format 1 (bc1) or 3 (bc3), got " + std::to_string(code));
+    const TextureFormat format = code == 1 ? TextureFormat::Bc1 : TextureFormat::Bc3;
+    const std::uint32_t width = getU32(bytes, 12), height = getU32(bytes, 16), count = getU32(bytes, 20);
+    if (width < 1 || width > kMaxSide || height < 1 || height > kMaxSide)
+        bad(file, "header", "expected a size in [1, 16384], got " + std::to_string(width) + " x " + std::to_string(height));
+    const int chain = mipCount(int(width), int(height));
+    if (count < 1 || count > std::uint32_t(chain))
+        bad(file, "header", "expected 1 to " + std::to_string(chain) + " MIP levels, got " + std::to_string(count));
+    std::size_t at = kHeaderBytes + 4ull * count;
+    if (bytes.size() < at)
+        bad(file, "header", "expected " + std::to_string(at) + " bytes of level sizes, got a file of " + std::to_string(bytes.size()));
+    TextureLevels out(format, {});
+    int w = int(width), h = int(height);
+    for (std::uint32_t i = 0; i < count; ++i) {
+        const std::string where = "MIP level " + std::to_string(i);
+        const std::size_t stored = getU32(bytes, kHeaderBytes + 4ull * i);
+        if (bytes.size() - at < stored)
+            bad(file, where, "expected " + std::to_string(stored) + " stored bytes, got " + std::to_string(bytes.size() - at) +
+                                 " (the file is truncated)");
+        const std::size_t expected = levelBytes(format, w, h);
+        if (expected > stored * kMaxInflation + 64)
+            bad(file, where, "expected " + std::to_string(stored) + " deflated bytes to hold " + std::to_string(expected) +
+                                 " bytes of blocks, got too few for that");
+        std::vector<std::uint8_t> fields(expected);
+        uLongf size = expected;
+        const int z = uncompress(fields.data(), &size, reinterpret_cast<const Bytef*>(bytes.data() + at), stored);
+        if (z != Z_OK || size != expected)
+            bad(file, where, "expected " + std::to_string(stored) + " deflated bytes that inflate to " +
+                                 std::to_string(expected) + " bytes of " + std::string(textureFormatName(format)) +
+                                 " blocks, got " + (z == Z_OK ? std::to_string(size) + " bytes" : std::string("corrupt data (") + zError(z) + ")"));
+        out.blocks.push_back({w, h, joinFields(fields, format)});
+        at += stored;
+        w = std::max(1, w / 2), h = std::max(1, h / 2);
+    }
+    if (at != bytes.size())
+        bad(file, "end", "expected " + std::to_string(at) + " bytes, got " + std::to_string(bytes.size()) + " (extra bytes)");
+    return out;
+}
+
+TextureLevels readBakedTexture(const std::filesystem::path& file) {
+    char magic[4] = {};
+    {
+        std::ifstream in(file, std::ios::binary);
+        in.read(magic, 4);
+    }
+    if (std::memcmp(magic, kMagic, 4) == 0) return readBlockFile(file);
+    return TextureLevels(scenes::readMipLevels(file));
+}
+
+std::string_view textureFileExtension(TextureFormat format) {
+    return format == TextureFormat::Rgba8 ? ".tx" : ".bct";
+}
+
+}  // namespace cavewall::walls
