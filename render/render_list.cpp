@@ -1,7 +1,6 @@
 #include "render/render_list.h"
 
 #include "render/vertex_lighting.h"
-#include "scenes/facing_groups.h"
 
 #include <algorithm>
 #include <chrono>
@@ -128,25 +127,6 @@ void ListBuilder::addDraws(const std::vector<int>& objects, const DrawFilter& fi
         const double distance = glm::length(glm::max(glm::max(b.min - eye, eye - b.max), glm::dvec3(0.0)));
         const bool vertexLit = litPerVertex(_scene.flatEdge(mesh, level), _scene.modelStretch(i), distance,
                                             _vertexLightingTolerance);
-        const FaceMode faces = _scene.batchKey(i).faces;
-        const glm::dmat4* modelFromWorld = _scene.modelFromWorld(i);
-        if (_facingCull && level == 0 && modelFromWorld && (faces == FaceMode::CullCcw || faces == FaceMode::CullCw)) {
-            // The runs of groups that do not face away, each one draw.
-            const glm::dvec3 eyeModel = glm::dvec3(*modelFromWorld * glm::dvec4(eye, 1.0));
-            bool first = true;
-            for (const scenes::FacingGroup& g : _scene.facingGroups(mesh)) {
-                if (scenes::facesAway(g, eyeModel)) continue;
-                Draw* last = first ? nullptr : &_pending.back();
-                if (last && last->firstIndex + last->indexCount == g.firstIndex) {
-                    last->indexCount += g.indexCount;
-                } else {
-                    _pending.push_back({i, level, vertexLit, g.firstIndex, g.indexCount, !first});
-                    first = false;
-                }
-                _list.triangles += g.indexCount / 3;
-            }
-            continue;
-        }
         _pending.push_back({i, level, vertexLit});
         _list.triangles += indices / 3;
     }

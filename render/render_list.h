@@ -7,11 +7,6 @@
 // clipFromWorld; an infinite far plane never culls), minus those whose level has no indices.
 // Each at the level DrawFilter::lodLevels names, clamped to its mesh's levels.
 //
-// Facing groups: an object drawn at level 0 with back faces culled whose mesh has facing
-// groups (scenes/facing_groups.h) is drawn as the runs of its groups that do not wholly face
-// away from the eye (consecutive groups merged into one draw); none when all do. Exact: only
-// triangles that back-face culling would drop are left out. Off with setFacingCull(false).
-//
 // Lighting: a draw is lit per vertex when its level is flat and the bound of
 // render/vertex_lighting.h, at the least distance of the object's world bounds from the eye, is
 // within the builder's tolerance (kVertexLightingTolerance unless set; 0: always per pixel);
@@ -40,11 +35,6 @@ struct Draw {
     int object = 0;          // Scene::objects index
     int level = 0;           // level of detail, within the mesh's levels
     bool vertexLit = false;  // lit per vertex: its bound (vertex_lighting.h) is within the tolerance
-    // A part of the level's indices (facing groups that do not face away), or all of them when
-    // indexCount is 0. `continued`: a further part of the previous draw's object.
-    std::uint32_t firstIndex = 0;
-    std::uint32_t indexCount = 0;
-    bool continued = false;
 };
 
 // The batch key of `draw`: its object's, with the draw's lighting.
@@ -83,8 +73,6 @@ public:
     // The tolerance on the light factor below which draws are lit per vertex (<= 0: never).
     void setVertexLightingTolerance(double tolerance) { _vertexLightingTolerance = tolerance; }
     double vertexLightingTolerance() const { return _vertexLightingTolerance; }
-    // Whether facing groups that face away are left out (default true).
-    void setFacingCull(bool on) { _facingCull = on; }
 
     // The objects `filter` selects whose bounds meet the frustum of `clipFromWorld` (all
     // selected ones when filter.frustumCull is false), in scene order, split into opaque
@@ -111,7 +99,6 @@ private:
     std::vector<std::uint32_t> _listStamp;    // per object: == _stamp when in DrawFilter::objects
     std::uint32_t _stamp = 0;
     double _vertexLightingTolerance;
-    bool _facingCull = true;
 };
 
 }  // namespace cavewall::render

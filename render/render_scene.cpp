@@ -2,7 +2,6 @@
 
 #include "display/pixel_scale.h"
 #include "render/vertex_lighting.h"
-#include "scenes/facing_groups.h"
 
 #include <algorithm>
 
@@ -57,19 +56,6 @@ RenderScene::RenderScene(const scenes::Scene& scene, bool buildLods, bool cullBa
         }
         _levelStart.push_back(static_cast<int>(_levelIndices.size()));
     }
-    _facingGroups.resize(scene.meshes.size());
-    for (std::size_t i = 0; i < scene.meshes.size(); ++i)
-        if (scenes::facingGroupsValid(scene.meshes[i])) _facingGroups[i] = scene.meshes[i].facingGroups;
-    for (const scenes::Object& o : _objects) {
-        const bool grouped = o.mesh >= 0 && o.mesh < static_cast<int>(_facingGroups.size()) && !_facingGroups[o.mesh].empty();
-        _inverseSlot.push_back(grouped ? static_cast<int>(_modelFromWorld.size()) : -1);
-        if (grouped) _modelFromWorld.push_back(glm::inverse(o.worldFromModel));
-    }
-}
-
-const std::vector<scenes::FacingGroup>& RenderScene::facingGroups(int mesh) const {
-    static const std::vector<scenes::FacingGroup> none;
-    return mesh >= 0 && mesh < static_cast<int>(_facingGroups.size()) ? _facingGroups[mesh] : none;
 }
 
 int RenderScene::clampLevel(int mesh, int level) const {

@@ -65,15 +65,6 @@ public:
     // render::flatMaxEdge of `mesh` at a level in range: its longest edge in model units when
     // every triangle is flat, else -1 (vertex_lighting.h).
     double flatEdge(int mesh, int level) const { return _levelFlatEdge[_levelStart[mesh] + level]; }
-    // The facing groups of `mesh` at level 0 (scenes/facing_groups.h); empty when it has none
-    // (or its groups no longer cover its indices).
-    const std::vector<scenes::FacingGroup>& facingGroups(int mesh) const;
-    // The inverse of an object's worldFromModel, kept for objects whose mesh has facing groups
-    // (nullptr for others).
-    const glm::dmat4* modelFromWorld(int object) const {
-        const int slot = _inverseSlot[object];
-        return slot < 0 ? nullptr : &_modelFromWorld[slot];
-    }
 
 private:
     std::vector<scenes::Object> _objects;
@@ -84,9 +75,6 @@ private:
     std::vector<int> _levelStart;               // per mesh + 1: first entry in _levelIndices
     std::vector<std::uint32_t> _levelIndices;   // per mesh and level: index count
     std::vector<double> _levelFlatEdge;         // per mesh and level: flatMaxEdge
-    std::vector<std::vector<scenes::FacingGroup>> _facingGroups;  // per mesh (empty: none)
-    std::vector<int> _inverseSlot;              // per object: into _modelFromWorld, or -1
-    std::vector<glm::dmat4> _modelFromWorld;
     scenes::Bvh _bvh;
 };
 

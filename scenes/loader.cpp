@@ -2,7 +2,6 @@
 #include "scenes/loader.h"
 
 #include "config/error.h"
-#include "scenes/facing_groups.h"
 #include "scenes/load_limits.h"
 #include "scenes/mesh_optimize.h"
 #include "scenes/mesh_split.h"
@@ -59,10 +58,7 @@ void prepareForDrawing(Scene& scene) {
         weldVertices(m);
         const bool blends = m.material >= 0 && m.material < static_cast<int>(scene.materials.size()) &&
                             scene.materials[m.material].alphaMode == AlphaMode::Blend;
-        if (!blends) {
-            optimizeVertexOrder(m);
-            groupByFacing(m);  // after the cache order, which it keeps within each group
-        }
+        if (!blends) optimizeVertexOrder(m);
     }
     scene.updateObjectBounds();
 }

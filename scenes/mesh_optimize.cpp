@@ -112,7 +112,6 @@ void compactVertices(Mesh& mesh) {
 }  // namespace
 
 WeldResult weldVertices(Mesh& mesh, const WeldTolerance& tolerance) {
-    mesh.facingGroups.clear();  // they index the triangles as they were
     WeldResult result;
     result.verticesBefore = mesh.positions.size();
     if (mesh.positions.empty()) return result;
@@ -150,7 +149,6 @@ WeldResult weldVertices(Mesh& mesh, const WeldTolerance& tolerance) {
 }
 
 void optimizeVertexOrder(Mesh& mesh) {
-    mesh.facingGroups.clear();  // they index the triangles as they were
     if (mesh.indices.empty()) return;
     std::vector<std::uint32_t> indices(mesh.indices.size());
     meshopt_optimizeVertexCache(indices.data(), mesh.indices.data(), mesh.indices.size(), mesh.positions.size());

@@ -31,15 +31,6 @@ struct Bounds {
 
 // A triangle list with one material. Attribute arrays are either empty or as long as
 // `positions`. Winding is counter-clockwise for front faces in model space.
-// A run of a mesh's triangles of similar facing and place (scenes/facing_groups.h).
-struct FacingGroup {
-    std::uint32_t firstIndex = 0;   // into Mesh::indices (level 0)
-    std::uint32_t indexCount = 0;   // 3 per triangle
-    glm::dvec3 axis{0.0};           // unit; the mean facing of the group's triangles
-    double sinSpread = 1.0;         // sin of the largest angle between axis and a triangle's normal
-    Bounds bounds;                  // model space, of the group's vertices
-};
-
 struct Mesh {
     std::string name;
     std::vector<glm::vec3> positions;
@@ -48,7 +39,6 @@ struct Mesh {
     std::vector<glm::vec2> texCoords1;
     std::vector<glm::vec4> colors;        // optional per-vertex colour (linear), multiplies the material
     std::vector<std::uint32_t> indices;   // 3 per triangle
-    std::vector<FacingGroup> facingGroups; // empty, or covering `indices` in order (facing_groups.h)
     int material = -1;                    // index into Scene::materials, -1 = default material
     Bounds bounds;                        // model space
 

@@ -13,7 +13,7 @@ namespace cavewall::tools {
 
 const char* const kDrawBenchUsage =
     "usage: cavewall draw-bench SCENE [--frames N] [--warmup N] [--resolution N] [--fov DEG]\n"
-    "                           [--csv FILE] [--images DIR] [--compare-lighting] [--compare-facing]\n"
+    "                           [--csv FILE] [--images DIR] [--compare-lighting]\n"
     "\n"
     "Times the draw path alone on one fixed view of SCENE (glTF/GLB, scene.json or its folder),\n"
     "headless: the view OpenSceneGraph's osgviewer opens the same model with (its home position\n"
@@ -27,14 +27,12 @@ const char* const kDrawBenchUsage =
     "process CPU milliseconds per frame (all threads, llvmpipe's included: steady when other\n"
     "processes share the cores), million triangles and million pixels per second (at the\n"
     "median), and the GPU vertex and index bytes per triangle. --csv writes the rows (columns\n"
-    "culling, variant, triangles, median_ms, p90_ms, cpu_median_ms, mtriangles_per_s,\n"
+    "culling, lighting, triangles, median_ms, p90_ms, cpu_median_ms, mtriangles_per_s,\n"
     "mpixels_per_s, vertex_bytes_per_triangle, index_bytes_per_triangle); --images writes\n"
     "DIR/culled.png and DIR/both.png (the last frame of each). --compare-lighting adds both\n"
-    "configurations with every draw lit per pixel (variant 'per-pixel'; the default lights per\n"
+    "configurations with every draw lit per pixel (lighting 'per-pixel'; the default lights per\n"
     "vertex the draws whose difference is proven below 1/512 of the light), timed in the same\n"
-    "rotation, and their images DIR/culled-per-pixel.png and DIR/both-per-pixel.png;\n"
-    "--compare-facing likewise without facing groups (variant 'no-facing-groups': large meshes'\n"
-    "groups that wholly face away are submitted too).\n";
+    "rotation, and their images DIR/culled-per-pixel.png and DIR/both-per-pixel.png.\n";
 
 namespace {
 
@@ -44,18 +42,11 @@ std::string fixed(double v, int decimals) {
     return text;
 }
 
-// The row's configuration besides culling: "default", or the one change it leaves out.
-std::string variant(const gl::DrawBenchRow& row) {
-    if (row.perPixelOnly) return "per-pixel";
-    if (row.noFacingGroups) return "no-facing-groups";
-    return "default";
-}
-
 std::string csvText(const gl::DrawBenchResult& r) {
-    std::string csv = "culling,variant,triangles,median_ms,p90_ms,cpu_median_ms,mtriangles_per_s,mpixels_per_s,vertex_bytes_per_triangle,"
+    std::string csv = "culling,lighting,triangles,median_ms,p90_ms,cpu_median_ms,mtriangles_per_s,mpixels_per_s,vertex_bytes_per_triangle,"
                       "index_bytes_per_triangle\n";
     for (const gl::DrawBenchRow& row : r.rows)
-        csv += std::string(row.cullBackFaces ? "on" : "off") + "," + variant(row) + "," +
+        csv += std::string(row.cullBackFaces ? "on" : "off") + "," + (row.perPixelOnly ? "per-pixel" : "default") + "," +
                std::to_string(row.trianglesSubmitted) + "," +
                fixed(row.timing.medianMs, 3) + "," + fixed(row.timing.p90Ms, 3) + "," + fixed(row.timing.cpuMedianMs, 3) + "," +
                fixed(row.timing.mtrianglesPerS, 2) + "," + fixed(row.timing.mpixelsPerS, 2) + "," +
@@ -72,11 +63,11 @@ void print(const gl::DrawBenchResult& r, const gl::DrawBenchOptions& o) {
               << "GL_RENDERER: " << r.glRenderer << "\n"
               << "GPU memory per triangle: " << fixed(r.vertexBytesPerTriangle, 2) << " vertex bytes, "
               << fixed(r.indexBytesPerTriangle, 2) << " index bytes\n\n"
-              << "| back faces | variant | triangles submitted | median ms | p90 ms | CPU ms (median) | Mtriangles/s | Mpixels/s |\n"
+              << "| back faces | lighting | triangles submitted | median ms | p90 ms | CPU ms (median) | Mtriangles/s | Mpixels/s |\n"
               << "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const gl::DrawBenchRow& row : r.rows)
         std::cout << "| " << (row.cullBackFaces ? "culled" : "drawn (culling off)") << " | "
-                  << variant(row) << " | " << row.trianglesSubmitted
+                  << (row.perPixelOnly ? "per pixel only" : "default") << " | " << row.trianglesSubmitted
                   << " | " << fixed(row.timing.medianMs, 2) << " | " << fixed(row.timing.p90Ms, 2) << " | " << fixed(row.timing.cpuMedianMs, 2) << " | "
                   << fixed(row.timing.mtrianglesPerS, 1) << " | " << fixed(row.timing.mpixelsPerS, 1) << " |\n";
 }
@@ -84,8 +75,8 @@ void print(const gl::DrawBenchResult& r, const gl::DrawBenchOptions& o) {
 }  // namespace
 
 int runDrawBench(const std::vector<std::string>& words) {
-    const Args args(words, {"compare-lighting", "compare-facing"});
-    args.expectFlags({"frames", "warmup", "resolution", "fov", "csv", "images", "compare-lighting", "compare-facing"});
+    const Args args(words, {"compare-lighting"});
+    args.expectFlags({"frames", "warmup", "resolution", "fov", "csv", "images", "compare-lighting"});
     const std::string source = args.positional(0, "the scene (glTF/GLB, scene.json or its folder)");
     if (args.positional().size() > 1)
         throw Error("draw-bench: unexpected argument '" + args.positional()[1] + "' (expected one scene)");
@@ -96,7 +87,6 @@ int runDrawBench(const std::vector<std::string>& words) {
     options.fovDeg = args.number("fov", options.fovDeg, 1.0, 170.0);
     if (auto dir = args.get("images")) options.imageDir = *dir;
     options.compareLighting = args.has("compare-lighting");
-    options.compareFacing = args.has("compare-facing");
     const scenes::Scene scene = scenes::loadSceneFile(source);
     for (const std::string& warning : scene.warnings) std::cerr << "warning: " << warning << "\n";
     if (scene.objects.empty()) throw Error(source + ": no objects to draw (expected a scene with geometry)");

@@ -96,7 +96,7 @@ osg_run_ms() {
 # Column $2 of the CSV row whose first column is $3, columns looked up by name.
 csv_value() {
   awk -F, -v col="$2" -v key="$3" 'NR == 1 { for (i = 1; i <= NF; i++) idx[$i] = i; next }
-                                   $1 == key && (!("variant" in idx) || $(idx["variant"]) == "default") { print $(idx[col]) }' "$1"
+                                   $1 == key && (!("lighting" in idx) || $(idx["lighting"]) == "default") { print $(idx[col]) }' "$1"
 }
 
 echo "round,triangles,osgviewer_ms,cavewall_culled_ms,cavewall_both_ms,osgviewer_cpu_ms,cavewall_culled_cpu_ms,cavewall_both_cpu_ms" >"$OUT/rounds.csv"

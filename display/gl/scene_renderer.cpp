@@ -71,7 +71,6 @@ SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings
       _lists(_scene),
       _gpu(scene, _scene.hasLods() ? &_scene.lods() : nullptr, settings.pagedCells) {
     _lists.setVertexLightingTolerance(settings.vertexLightingTolerance);
-    _lists.setFacingCull(settings.facingCull);
     const bool textured = _gpu.textureCount() > 0;
     for (bool alphaTest : {false, true})
         for (bool vertexLit : {false, true}) {
@@ -218,12 +217,8 @@ ViewStats SceneRenderer::draw(const render::RenderList& list) {
         // A paged cell that is not resident draws nothing (an empty command keeps the batches).
         const int set = _gpu.setOf(d.object);
         const GpuMeshRange* range = _gpu.mesh(set, o.mesh, d.level);
-        GpuMeshRange drawn = range ? *range : GpuMeshRange{};
-        if (range && d.indexCount > 0) {  // a run of facing groups within the level
-            drawn.firstIndex += d.firstIndex;
-            drawn.indexCount = std::min(d.indexCount, range->indexCount - std::min(d.firstIndex, range->indexCount));
-        }
-        objectsDrawn += range != nullptr && !d.continued;
+        const GpuMeshRange drawn = range ? *range : GpuMeshRange{};
+        objectsDrawn += range != nullptr;
         _commands.push_back({drawn.indexCount, 1, drawn.firstIndex, drawn.baseVertex,
                              static_cast<std::uint32_t>(_records.size())});
         _commandSets.push_back(set);

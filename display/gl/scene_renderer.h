@@ -82,9 +82,6 @@ struct RenderSettings {
     // Draws whose per-vertex headlight provably differs from the per-pixel one by at most this
     // much of the light factor are lit per vertex (render/vertex_lighting.h); 0: all per pixel.
     double vertexLightingTolerance = render::kVertexLightingTolerance;
-    // Leave out the facing groups of large meshes that wholly face away (render_list.h); only
-    // triangles back-face culling drops anyway, so the image is the same.
-    bool facingCull = true;
 };
 
 // ViewStats and FrameStats: display/frame_stats.h.

@@ -32,14 +32,14 @@ TEST(DrawBenchCli, BothCullingModesAndBothLightingsTimedWithConsistentRates) {
                                      (root / "images").string(), "--compare-lighting"});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_THAT(r.out, HasSubstr("| culled | default | 1200 |"));
-    EXPECT_THAT(r.out, HasSubstr("| drawn (culling off) | per-pixel | 1200 |"));
+    EXPECT_THAT(r.out, HasSubstr("| drawn (culling off) | per pixel only | 1200 |"));
     const CsvTable csv = readCsv(csvFile);
     ASSERT_EQ(csv.size(), 4u);
     const std::pair<const char*, const char*> rows[] = {
         {"on", "default"}, {"on", "per-pixel"}, {"off", "default"}, {"off", "per-pixel"}};
     for (std::size_t i = 0; i < 4; ++i) {
         EXPECT_EQ(csv[i].at("culling"), rows[i].first) << i;
-        EXPECT_EQ(csv[i].at("variant"), rows[i].second) << i;
+        EXPECT_EQ(csv[i].at("lighting"), rows[i].second) << i;
     }
     for (const CsvRow& row : csv) {
         SCOPED_TRACE(row.at("culling"));

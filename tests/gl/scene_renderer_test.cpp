@@ -7,8 +7,6 @@
 #include "display/gl/shader.h"
 #include "display/gl/snapshot.h"
 #include "render/render_list.h"
-#include "scenes/facing_groups.h"
-#include "scenes/generate.h"
 #include "scenes/primitives.h"
 #include "tests/gl/gl_test_support.h"
 
@@ -207,36 +205,6 @@ TEST_F(SceneRendererTest, LightingPerVertexMatchesPerPixelWithinOneLevel) {
     int worst = 0;
     for (std::size_t i = 0; i < mixed.rgba.size(); ++i) worst = std::max(worst, std::abs(mixed.rgba[i] - exact.rgba[i]));
     EXPECT_LE(worst, 1);
-}
-
-TEST_F(SceneRendererTest, LeavingOutFacingGroupsThatFaceAwayChangesNoPixel) {
-    // A 7,200-triangle box hall in one mesh, grouped by facing (2 x 2 x 2 cells per facing), seen
-    // from 5 m in front: a good share of its triangles are in groups that face away and are not
-    // submitted; the picture must be bit for bit the one drawn with every triangle submitted.
-    scenes::GenerateOptions g;
-    g.seed = 3;
-    g.triangles = 7200;
-    scenes::Scene scene = scenes::generateBoxHall(g);
-    scenes::FacingOptions small;
-    small.minTriangles = 1000;
-    small.trianglesPerGroup = 100;
-    ASSERT_EQ(scenes::groupByFacing(scene.meshes.at(0), small), 48u);
-    const glm::dmat4 worldFromCave = glm::translate(glm::dmat4(1.0), {0.0, 4.0, 20.0});
-    render::RenderScene rs(scene, false);
-    render::ListBuilder lists(rs);
-    const display::Display d(oneScreen());
-    const std::size_t submitted =
-        lists.build(d.views(kEyeAtOrigin).at(0).frustum, glm::inverse(worldFromCave), {}).triangles;
-    EXPECT_LT(submitted, 7200u * 8 / 10);
-    RenderSettings everything;
-    everything.facingCull = false;
-    const scenes::Image grouped = render(scene, worldFromCave), all = render(scene, worldFromCave, everything);
-    EXPECT_EQ(grouped.rgba, all.rgba);
-    // Not an empty picture: the hall covers a good part of the screen.
-    std::size_t covered = 0;
-    for (std::size_t i = 0; i < grouped.rgba.size(); i += 4)
-        covered += glm::ivec4(grouped.rgba[i], grouped.rgba[i + 1], grouped.rgba[i + 2], 255) != background();
-    EXPECT_GT(covered, grouped.rgba.size() / 4 / 10);
 }
 
 TEST_F(SceneRendererTest, MovingTheCaveAndTheSceneTogetherChangesNothingEvenFarAway) {

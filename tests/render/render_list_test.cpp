@@ -2,8 +2,6 @@
 #include "display/display.h"
 #include "render/render_list.h"
 #include "scenes/bvh.h"
-#include "scenes/facing_groups.h"
-#include "scenes/generate.h"
 #include "tests/render/render_test_scenes.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -199,51 +197,6 @@ TEST(RenderList, LevelsAreClampedToTheMeshAndEmptyMeshesAreNotDrawn) {
     EXPECT_EQ(list.triangles, 24u);
     ASSERT_EQ(list.batches.size(), 1u);
     EXPECT_EQ(list.batches[0].count, 2);
-}
-
-TEST(RenderList, FacingGroupsThatFaceAwayAreLeftOutExactlyWhenBackFacesAreCulled) {
-    // A 7,200-triangle box hall (x in [-30, 30], z in [-15, 15]) in one mesh, grouped by facing
-    // into 2 x 2 x 2 cells per facing, seen from the screen's eye at the origin through a CAVE
-    // placed 40 m in front of the hall, looking down -Z at it.
-    scenes::GenerateOptions g;
-    g.seed = 3;
-    g.triangles = 7200;
-    scenes::Scene scene = scenes::generateBoxHall(g);
-    scenes::FacingOptions small;
-    small.minTriangles = 1000;
-    small.trianglesPerGroup = 100;
-    ASSERT_EQ(scenes::groupByFacing(scene.meshes.at(0), small), 48u);
-    const std::size_t total = scene.meshes[0].indices.size() / 3;
-    const glm::dmat4 caveFromWorld = glm::translate(glm::dmat4(1.0), {0.0, -4.0, -55.0});
-    const display::ScreenView view = frontView();
-    auto build = [&](const scenes::Scene& s, bool facingCull) {
-        const RenderScene rs(s, false);
-        ListBuilder builder(rs);
-        builder.setFacingCull(facingCull);
-        const RenderList& list = builder.build(view.frustum, caveFromWorld, {});
-        return std::make_pair(list.triangles, list.draws);
-    };
-    const auto [grouped, parts] = build(scene, true);
-    // The -z faces all face away, and half the +-x and +-y cells: about half is left out.
-    EXPECT_LT(grouped, total * 6 / 10);
-    EXPECT_GT(grouped, total * 3 / 10);
-    ASSERT_GE(parts.size(), 2u);
-    EXPECT_FALSE(parts[0].continued);
-    std::uint32_t next = 0;
-    for (std::size_t i = 0; i < parts.size(); ++i) {
-        EXPECT_EQ(parts[i].object, 0);
-        EXPECT_EQ(parts[i].continued, i > 0);
-        EXPECT_GE(parts[i].firstIndex, next);  // runs in index order, not overlapping
-        EXPECT_GT(parts[i].indexCount, 0u);
-        next = parts[i].firstIndex + parts[i].indexCount;
-    }
-    EXPECT_EQ(build(scene, false).first, total);
-    scenes::Scene twoSided = scene;  // no back faces culled: nothing left out
-    scenes::Material m;
-    m.doubleSided = true;
-    twoSided.materials.push_back(m);
-    twoSided.meshes[0].material = static_cast<int>(twoSided.materials.size()) - 1;
-    EXPECT_EQ(build(twoSided, true).first, total);
 }
 
 }  // namespace

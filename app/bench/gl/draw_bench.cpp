@@ -52,20 +52,15 @@ std::vector<DrawBenchRow> timeConfigurations(const scenes::Scene& scene, const d
         DrawBenchRow row;
     };
     std::vector<Configuration> configurations;
-    // Per culling: the default, then each compared change alone.
-    enum class Variant { Default, PerPixel, NoFacingGroups };
     for (bool cull : {true, false})
-        for (Variant v : {Variant::Default, Variant::PerPixel, Variant::NoFacingGroups}) {
-            if (v == Variant::PerPixel && !options.compareLighting) continue;
-            if (v == Variant::NoFacingGroups && !options.compareFacing) continue;
+        for (bool perPixel : {false, true}) {
+            if (perPixel && !options.compareLighting) continue;
             RenderSettings settings;
             settings.cullBackFaces = cull;
-            if (v == Variant::PerPixel) settings.vertexLightingTolerance = 0.0;
-            if (v == Variant::NoFacingGroups) settings.facingCull = false;
+            if (perPixel) settings.vertexLightingTolerance = 0.0;
             Configuration c{std::make_unique<SceneRenderer>(scene, settings), {}};
             c.row.cullBackFaces = cull;
-            c.row.perPixelOnly = v == Variant::PerPixel;
-            c.row.noFacingGroups = v == Variant::NoFacingGroups;
+            c.row.perPixelOnly = perPixel;
             configurations.push_back(std::move(c));
         }
     const RenderTargets targets(disp, context);
@@ -97,8 +92,7 @@ std::vector<DrawBenchRow> timeConfigurations(const scenes::Scene& scene, const d
         if (options.imageDir) {
             frame(c, false);  // the last frame drawn is the other configuration's
             const std::string name = std::string(c.row.cullBackFaces ? "culled" : "both") +
-                                     (c.row.perPixelOnly ? "-per-pixel" : "") +
-                                     (c.row.noFacingGroups ? "-no-facing-groups" : "") + ".png";
+                                     (c.row.perPixelOnly ? "-per-pixel" : "") + ".png";
             scenes::writeImage(*options.imageDir / name, targets.read(0, 0));
         }
         rows.push_back(std::move(c.row));

@@ -34,15 +34,11 @@ struct DrawBenchOptions {
     // Also time both configurations with every draw lit per pixel (vertex lighting off,
     // render/vertex_lighting.h), in the same rotation: what lighting per vertex gains.
     bool compareLighting = false;
-    // Also time both configurations without facing groups (every triangle submitted, back faces
-    // dropped only by the rasteriser; scenes/facing_groups.h).
-    bool compareFacing = false;
 };
 
 struct DrawBenchRow {
     bool cullBackFaces = true;
     bool perPixelOnly = false;                         // vertex lighting off
-    bool noFacingGroups = false;                       // facing groups off
     bench::DrawTiming timing;
     std::size_t trianglesSubmitted = 0;                // per frame, after frustum culling
     std::vector<double> frameMs;                       // every timed frame, in order (wall clock)
