@@ -74,6 +74,14 @@ void compareWithControl(BenchReport& report) {
 
 namespace {
 
+// ", Rx the noise floor (one frame drawn again and again: F; <= 1.1x: met)" for a frame-time
+// p99/p50 `ratio` against the bench's noise floor `floor` (0: not measured).
+std::string noiseFloorClause(double ratio, double floor) {
+    if (!(floor > 0.0)) return " (no noise floor measured)";
+    return ", " + num(ratio / floor, 3) + "x the noise floor (one frame drawn again and again: " + num(floor, 3) +
+           "; <= 1.1x: " + (ratio <= 1.1 * floor ? "met)" : "not met)");
+}
+
 // The wall pass's yardstick: the limit (near geometry and bare wall quads) against the control
 // plus one textured full-screen layer, both at full detail.
 std::optional<std::string> layerLine(const BenchReport& report) {
@@ -132,12 +140,7 @@ std::vector<std::string> wallsTargetLines(const BenchReport& report) {
                         "; <= 0.5: " + (best->flipRatio <= 0.5 ? "met)" : "not met)"));
     const double ratio = best->frameMs.p50 > 0 ? best->frameMs.p99 / best->frameMs.p50 : 0.0;
     std::string stability = "targets: its frame time p99/p50 is " + num(ratio, 3);
-    if (report.noiseFloorRatio > 0.0)
-        stability += ", " + num(ratio / report.noiseFloorRatio, 3) + "x the noise floor (one frame drawn again and again: " +
-                     num(report.noiseFloorRatio, 3) + "; <= 1.1x: " +
-                     (ratio <= 1.1 * report.noiseFloorRatio ? "met)" : "not met)");
-    else
-        stability += " (no noise floor measured)";
+    stability += noiseFloorClause(ratio, report.noiseFloorRatio);
     stability += "; per-frame work p99/p50: triangles " + num(best->loadRatio, 3) +
                  (best->loadRatio <= 1.3 ? " (<= 1.3: met)" : " (<= 1.3: not met)");
     stability += best->uploadedMB.p50 > 0.0
@@ -209,12 +212,7 @@ std::vector<std::string> onDemandLines(const BenchReport& report) {
                            num(f.lastQuarterFallbacks, 3) + " in the last; " + std::to_string(f.texturesBaked) +
                            " of " + std::to_string(f.texturesMissingAtStart) + " textures baked; frame p99/p50 " +
                            num(ratio, 3);
-        if (report.noiseFloorRatio > 0.0)
-            line += ", " + num(ratio / report.noiseFloorRatio, 3) + "x the noise floor's " +
-                    num(report.noiseFloorRatio, 3) + " (<= 1.1x: " +
-                    (ratio <= 1.1 * report.noiseFloorRatio ? "met)" : "not met)");
-        else
-            line += " (no noise floor measured)";
+        line += noiseFloorClause(ratio, report.noiseFloorRatio);
         if (const ModeResult* warm = ownSceneMode(report, m); warm && warm->frameMs.p50 > 0)
             line += "; p50 " + num(m.frameMs.p50, 3) + " ms against " + num(warm->frameMs.p50, 3) + " ms for " +
                     modeLabel(*warm) + " with every texture resident (not the same seconds)";

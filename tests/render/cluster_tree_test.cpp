@@ -21,6 +21,20 @@ scenes::Bounds box(double x0, double x1, double y0 = 0.0, double y1 = 1.0) {
 }
 
 // The leaves below node n, by walking its children (not its objects list).
+// `count` 1 m cubes on the floor at random places in a 20 m x 20 m square.
+std::vector<scenes::Bounds> scatteredCubes(std::mt19937& rng, int count) {
+    std::uniform_real_distribution<double> u(0.0, 20.0);
+    std::vector<scenes::Bounds> objects;
+    for (int i = 0; i < count; ++i) {
+        const double x = u(rng), z = u(rng);
+        scenes::Bounds b;
+        b.add(glm::dvec3(x, 0, z));
+        b.add(glm::dvec3(x + 1, 1, z + 1));
+        objects.push_back(b);
+    }
+    return objects;
+}
+
 std::vector<int> leavesBelow(const ClusterTree& t, int n) {
     if (t.nodes[n].leaf()) return {t.nodes[n].object};
     std::vector<int> out;
@@ -168,16 +182,9 @@ TEST(ClusterSelect, InvisibleNodesCostNothing) {
 
 TEST(ClusterSelect, NeverOverBudgetWhenTheRootFits) {
     std::mt19937 rng(3);
-    std::uniform_real_distribution<double> u(0.0, 20.0), c(0.1, 3.0), a(0.0, 1.0);
+    std::uniform_real_distribution<double> c(0.1, 3.0), a(0.0, 1.0);
     for (int trial = 0; trial < 20; ++trial) {
-        std::vector<scenes::Bounds> objects;
-        for (int i = 0; i < 60; ++i) {
-            const double x = u(rng), z = u(rng);
-            scenes::Bounds b;
-            b.add(glm::dvec3(x, 0, z));
-            b.add(glm::dvec3(x + 1, 1, z + 1));
-            objects.push_back(b);
-        }
+        const std::vector<scenes::Bounds> objects = scatteredCubes(rng, 60);
         const ClusterTree t = buildClusterTree(objects, {4, 1, 4});
         std::vector<NodeFrame> frame(t.nodes.size());
         for (auto& f : frame) {
@@ -206,15 +213,8 @@ TEST(ClusterSelect, NeverOverBudgetOrTheCheapestSelectionWhateverTheBudgetAndCoh
     // budget of 0 (the floor's part), also while the coherence counter holds clusters back over
     // a sequence of frames.
     std::mt19937 rng(5);
-    std::uniform_real_distribution<double> u(0.0, 20.0), c(0.1, 3.0), a(0.0, 1.0);
-    std::vector<scenes::Bounds> objects;
-    for (int i = 0; i < 80; ++i) {
-        const double x = u(rng), z = u(rng);
-        scenes::Bounds b;
-        b.add(glm::dvec3(x, 0, z));
-        b.add(glm::dvec3(x + 1, 1, z + 1));
-        objects.push_back(b);
-    }
+    std::uniform_real_distribution<double> c(0.1, 3.0), a(0.0, 1.0);
+    const std::vector<scenes::Bounds> objects = scatteredCubes(rng, 80);
     const ClusterTree t = buildClusterTree(objects, {4, 1, 4});
     ClusterCoherence coherence(2);
     for (int frameIndex = 0; frameIndex < 60; ++frameIndex) {
