@@ -99,10 +99,14 @@ uniform float uAmbient;
 out vec3 vViewPosition;
 out vec3 vNormal;
 #endif
+#if TEXTURED
 out vec2 vTexCoord;
+#endif
 out vec4 vColor;             // base colour factor x vertex colour (the factor is per draw)
+#if TEXTURED || ALPHA_TEST
 flat out ivec2 vFlags;       // x: alpha mode, y: textured
 flat out float vCutoff;
+#endif
 
 void main() {
     vec4 p = vec4(aPosition, 1.0);
@@ -115,10 +119,11 @@ void main() {
 #if TEXTURED
     vec3 uv = vec3(aTexCoord, 1.0);
     vTexCoord = vec2(dot(aUv0, uv), dot(aUv1, uv));
-#else
-    vTexCoord = vec2(0.0);
 #endif
     vColor = aBaseColor * aColor;
+#if !(TEXTURED || ALPHA_TEST)
+    if (int(aParams.x) != 2) vColor.a = 1.0;   // only BLEND keeps its alpha
+#endif
 #if VERTEX_LIT
     // The headlight per vertex (render/vertex_lighting.h bounds the difference): |n . v| is the
     // per-pixel term with n turned towards the eye, for flat triangles.
@@ -126,8 +131,10 @@ void main() {
     if (dot(normal, normal) > 1e-12) diffuse = abs(dot(normalize(normal), normalize(-p.xyz)));
     vColor.rgb *= uAmbient + (1.0 - uAmbient) * diffuse;
 #endif
+#if TEXTURED || ALPHA_TEST
     vFlags = ivec2(aParams.xy);
     vCutoff = aParams.z;
+#endif
     gl_Position = uProjection * p;
 }
 )";
@@ -137,10 +144,14 @@ inline constexpr const char* kSceneFragment = R"(#version 450 core
 in vec3 vViewPosition;
 in vec3 vNormal;
 #endif
+#if TEXTURED
 in vec2 vTexCoord;
+#endif
 in vec4 vColor;
+#if TEXTURED || ALPHA_TEST
 flat in ivec2 vFlags;
 flat in float vCutoff;
+#endif
 
 layout(binding = 0) uniform sampler2D uBaseColorTexture;  // sRGB: sampled as linear
 #if !VERTEX_LIT
@@ -169,7 +180,11 @@ void main() {
     }
     float light = uAmbient + (1.0 - uAmbient) * diffuse;
 #endif
+#if TEXTURED || ALPHA_TEST
     fragColor = vec4(color.rgb * light, vFlags.x == 2 ? color.a : 1.0);
+#else
+    fragColor = vec4(color.rgb * light, color.a);   // the vertex stage set 1 unless BLEND
+#endif
 }
 )";
 
