@@ -27,7 +27,8 @@ const char* const kBenchUsage =
     "                      [--walls flat|depth] [--clusters [--cluster-budgets T1,T2,...]]\n"
     "                      [--compare-scene OTHER,...] [--on-demand] [--texture-format rgba8|bc1|bc3]\n"
     "       cavewall bench --scale 2M,8M,32M [--data DIR] [--scale-metres M] [--frames N] [--resolution N]\n"
-    "                      [--display D] [--bake-resolution N] [--geometry-budget MB] [--lod PX] [--out DIR]\n"
+    "                      [--display D] [--bake-resolution N] [--geometry-budget MB] [--lod PX] [--compare-every K]\n"
+    "                      [--out DIR]\n"
     "       cavewall bench --stability\n"
     "\n"
     "SCENE    error against run time in one run (a scene.json, its folder, or glTF/GLB with\n"
@@ -106,7 +107,9 @@ const char* const kBenchUsage =
     "         stretch's frames request are baked, at most --bake-resolution texels (default\n"
     "         128), into DIR/bake-cache; the report says how many. Writes scale.csv, scale.md\n"
     "         (also printed), scale_ms.png, scale_mb.png and scale_load.png into --out (default\n"
-    "         bench-scale-out), with the slopes of full and walls against triangles.\n"
+    "         bench-scale-out), with the slopes of full and walls against triangles. Every\n"
+    "         --compare-every K frames (default 6, 0: none) the near and walls images are compared\n"
+    "         with full geometry's: pooled PSNR, worst frame, FLIP mean, beside each size's speed-up.\n"
     "\n"
     "--stability  runs the stiff and extreme numerical cases (projection at eye distances\n"
     "             1e-9 ... 1e6 m, world offsets to 1e7 m, near/far ratios to 1e9 with reversed-Z,\n"
@@ -262,6 +265,7 @@ int runScaleBench(const Args& args) {
     o.bakeResolution = static_cast<int>(args.integer("bake-resolution", o.bakeResolution, 16, 16384));
     o.geometryBudgetMB = args.number("geometry-budget", o.geometryBudgetMB, 0.001, 1e6);
     o.lodPixels = args.number("lod", o.lodPixels, 0.0, 1e4);
+    o.compareEvery = static_cast<int>(args.integer("compare-every", o.compareEvery, 0, 100000));
     const std::filesystem::path out = args.getOr("out", "bench-scale-out");
     o.afterSize = [&](const bench::ScaleReport& soFar) { bench::writeScaleReport(out, soFar); };
     const bench::ScaleReport report = gl::runScaleBench(o);

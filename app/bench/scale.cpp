@@ -19,7 +19,8 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string num(double v, int decimals = 2) {
-    if (!std::isfinite(v)) return "nan";
+    if (std::isinf(v)) return v > 0.0 ? "inf" : "-inf";  // PSNR of identical images
+    if (std::isnan(v)) return "nan";
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, "%.*f", decimals, v);
     return buffer;
@@ -75,14 +76,17 @@ double growth(const ScaleReport& report, ScaleMode mode) {
 std::string scaleCsv(const ScaleReport& report) {
     std::string out = "target_triangles,triangles,cells,mode,frame_ms_p50,frame_ms_p95,frame_ms_p99,triangles_per_frame,"
                       "resident_mb,paged_peak_mb,whole_model_mb,largest_three_cells_mb,load_s,first_frame_s,"
-                      "geometry_misses,geometry_page_ins,textures_over_alpha\n";
+                      "geometry_misses,geometry_page_ins,textures_over_alpha,compared_frames,psnr_db,"
+                      "worst_frame_psnr_db,flip_mean\n";
     for (const ScaleRow& r : report.rows)
         out += std::to_string(r.targetTriangles) + "," + std::to_string(r.triangles) + "," + std::to_string(r.cells) + "," +
                std::string(toString(r.mode)) + "," + num(r.frameMs.p50, 3) + "," + num(r.frameMs.p95, 3) + "," +
                num(r.frameMs.p99, 3) + "," + num(r.trianglesPerFrame, 0) + "," + num(r.residentMB, 3) + "," +
                num(r.pagedPeakMB, 3) + "," + num(r.wholeModelMB, 3) + "," + num(r.largestThreeCellsMB, 3) + "," +
                num(r.loadSeconds, 3) + "," + num(r.firstFrameSeconds, 3) + "," + std::to_string(r.geometryMisses) + "," +
-               std::to_string(r.geometryPageIns) + "," + std::to_string(r.texturesOverAlpha) + "\n";
+               std::to_string(r.geometryPageIns) + "," + std::to_string(r.texturesOverAlpha) + "," +
+               std::to_string(r.comparedFrames) + "," + num(r.psnrDb, 3) + "," + num(r.worstFramePsnrDb, 3) + "," +
+               num(r.flipMean, 5) + "\n";
     return out;
 }
 
@@ -90,20 +94,36 @@ std::string scaleMarkdown(const ScaleReport& report) {
     std::string out;
     for (const std::string& line : report.header) out += "- " + line + "\n";
     out += "\n| triangles | cells | mode | frame ms p50 | p95 | triangles/frame | resident MB | paged peak MB | "
-           "whole model MB | largest 3 cells MB | load s | first frame s | geometry misses | over alpha |\n"
-           "| ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+           "whole model MB | largest 3 cells MB | load s | first frame s | geometry misses | over alpha | "
+           "PSNR dB pooled (worst frame) | FLIP mean |\n"
+           "| ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
     for (const ScaleRow& r : report.rows)
         out += "| " + num(millions(r.triangles), 2) + " M | " + std::to_string(r.cells) + " | " +
                std::string(toString(r.mode)) + " | " + num(r.frameMs.p50) + " | " + num(r.frameMs.p95) + " | " +
                num(r.trianglesPerFrame, 0) + " | " + num(r.residentMB) + " | " +
                (r.mode == ScaleMode::Walls ? num(r.pagedPeakMB) : std::string("–")) + " | " + num(r.wholeModelMB) +
                " | " + num(r.largestThreeCellsMB) + " | " + num(r.loadSeconds) + " | " + num(r.firstFrameSeconds) +
-               " | " + std::to_string(r.geometryMisses) + " | " + std::to_string(r.texturesOverAlpha) + " |\n";
+               " | " + std::to_string(r.geometryMisses) + " | " + std::to_string(r.texturesOverAlpha) + " | " +
+               (r.comparedFrames > 0 ? num(r.psnrDb, 1) + " (" + num(r.worstFramePsnrDb, 1) + ")" : std::string("–")) +
+               " | " + (r.comparedFrames > 0 ? num(r.flipMean, 4) : std::string("–")) + " |\n";
     out += "\nSlopes (least squares of the median frame ms against millions of triangles) and growth (median at the "
            "largest size over the smallest):\n\n";
     for (ScaleMode m : {ScaleMode::Full, ScaleMode::Near, ScaleMode::Walls})
         out += "- " + std::string(toString(m)) + ": " + num(msPerMillionTriangles(report, m), 3) + " ms per M triangles, " +
                num(growth(report, m)) + "x\n";
+    out += "\nWalls against full geometry at each size (median frame ms over median frame ms, and the walls' image "
+           "error):\n\n";
+    for (const ScaleRow* w : rowsOf(report, ScaleMode::Walls))
+        for (const ScaleRow* f : rowsOf(report, ScaleMode::Full))
+            if (f->targetTriangles == w->targetTriangles && w->frameMs.p50 > 0.0)
+                out += "- " + num(millions(w->triangles), 2) + " M triangles: speed-up " +
+                       num(f->frameMs.p50 / w->frameMs.p50) + "x, " +
+                       (w->comparedFrames > 0 ? "pooled PSNR " + num(w->psnrDb, 1) + " dB (worst frame " +
+                                                    num(w->worstFramePsnrDb, 1) + " dB), FLIP mean " +
+                                                    num(w->flipMean, 4) + " over " +
+                                                    std::to_string(w->comparedFrames) + " compared frames"
+                                              : std::string("image error not compared")) +
+                       ", " + std::to_string(w->texturesOverAlpha) + " textures over alpha\n";
     return out;
 }
 

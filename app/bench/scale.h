@@ -15,6 +15,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -41,6 +42,14 @@ struct ScaleRow {
     double firstFrameSeconds = 0.0;      // from the loaded scene to the end of the first frame
     long geometryMisses = 0, geometryPageIns = 0;  // walls: cumulative over the run
     int texturesOverAlpha = 0;           // walls: the most in a frame
+    // Image error against full geometry's image of the same frame (ScaleOptions::compareEvery;
+    // full, the reference, and runs without comparisons keep these defaults): compared frames,
+    // pooled PSNR over all their pixels (infinite: identical), the worst frame's PSNR and the
+    // mean LDR-FLIP (app/bench/metrics.h).
+    std::size_t comparedFrames = 0;
+    double psnrDb = std::numeric_limits<double>::infinity();
+    double worstFramePsnrDb = std::numeric_limits<double>::infinity();
+    double flipMean = 0.0;
 };
 
 struct ScaleReport {

@@ -261,8 +261,8 @@ TEST(BenchSceneCli, ScaleRunHasThreeModesPerSize) {
     fs::remove_all(root / "data");
     const fs::path out = root / "out";
     const CliResult r = runCavewall({"bench", "--scale", "20k,40k", "--resolution", "32", "--frames", "4",
-                                     "--bake-resolution", "16", "--scale-metres", "10", "--data",
-                                     (root / "data").string(), "--out", out.string()});
+                                     "--bake-resolution", "16", "--scale-metres", "10", "--compare-every", "2",
+                                     "--data", (root / "data").string(), "--out", out.string()});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_THAT(r.out, HasSubstr("4 screens at 32x32 pixels"));
     EXPECT_THAT(r.out, HasSubstr("textures (those the stretch requests) at most 16 texels"));
@@ -282,7 +282,23 @@ TEST(BenchSceneCli, ScaleRunHasThreeModesPerSize) {
             EXPECT_GT(row.number("paged_peak_mb"), 0.0);
             EXPECT_EQ(row.number("textures_over_alpha"), 0.0);
         }
+        if (row.at("mode") == "full") {
+            EXPECT_EQ(row.number("compared_frames"), 0.0);  // the reference
+            EXPECT_EQ(row.at("psnr_db"), "inf");
+        } else {
+            // Frames 0 and 2 of 4 (--compare-every 2), against full geometry's images.
+            EXPECT_EQ(row.number("compared_frames"), 2.0);
+            EXPECT_GT(row.number("psnr_db"), 5.0);
+            EXPECT_LE(row.number("worst_frame_psnr_db"), row.number("psnr_db") + 1e-9);
+            EXPECT_GE(row.number("flip_mean"), 0.0);
+            EXPECT_LE(row.number("flip_mean"), 1.0);
+        }
     }
+    // The near limit leaves out every cell but the viewer's: it must lose to full geometry
+    // somewhere in the compared frames, and the walls must do better than it.
+    EXPECT_LT(csv[1].number("psnr_db"), 60.0);
+    EXPECT_GE(csv[2].number("psnr_db"), csv[1].number("psnr_db"));
+    EXPECT_THAT(r.out, HasSubstr("textures over alpha"));
 }
 
 TEST(BenchSceneCli, BadInputIsAClearError) {

@@ -74,22 +74,28 @@ void ModeAccumulator::addFrame(const FrameCost& cost) {
     }
 }
 
-void ModeAccumulator::compare(long frame, const display::HeadPose& head, const std::vector<gl::ScreenImage>& images,
-                              const std::vector<gl::ScreenImage>& reference) {
+std::vector<ComparedImage> comparedImages(const display::Display& display, const display::HeadPose& head,
+                                          const std::vector<gl::ScreenImage>& images,
+                                          const std::vector<gl::ScreenImage>& reference, const std::string& mode) {
     if (images.size() != reference.size())
-        throw Error("bench: mode " + modeLabel(_mode) + " read " + std::to_string(images.size()) +
-                    " images, expected the reference's " + std::to_string(reference.size()));
+        throw Error("bench: mode " + mode + " read " + std::to_string(images.size()) + " images, expected the reference's " +
+                    std::to_string(reference.size()));
     std::vector<ComparedImage> compared;
     for (std::size_t i = 0; i < images.size(); ++i) {
         const int screen = images[i].screen;
-        if (screen < 0 || screen >= static_cast<int>(_display.screens().size())) continue;
+        if (screen < 0 || screen >= static_cast<int>(display.screens().size())) continue;
         const scenes::Image& pixels = images[i].pixels;
         const display::ViewScreen view =
-            display::viewScreen(_display.quad(screen), head.position, {pixels.width, pixels.height});
+            display::viewScreen(display.quad(screen), head.position, {pixels.width, pixels.height});
         const double ppd = std::clamp(display::minPixelsPerDegree(view), 1.0, 1000.0);
         compared.push_back({screen, images[i].image, &pixels, &reference[i].pixels, ppd});
     }
-    _errors.addFrame(frame, compared);
+    return compared;
+}
+
+void ModeAccumulator::compare(long frame, const display::HeadPose& head, const std::vector<gl::ScreenImage>& images,
+                              const std::vector<gl::ScreenImage>& reference) {
+    _errors.addFrame(frame, comparedImages(_display, head, images, reference, modeLabel(_mode)));
 }
 
 ModeResult ModeAccumulator::finish(double fullP50) const {

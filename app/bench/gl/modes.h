@@ -36,6 +36,15 @@ struct FrameCost {
     int texturesBaked = 0;              // FrameResult's: baking on demand, baked so far
 };
 
+// One compared frame's images for bench::ErrorPool: `images` against the `reference` of the
+// same frame (same screens and images), FLIP at each screen's minPixelsPerDegree from `head`'s
+// position (cave frame; the cyclopean eye, also in stereo). Images of screens the display does
+// not have are left out. Throws cavewall::Error naming `mode` when the image counts differ.
+std::vector<bench::ComparedImage> comparedImages(const display::Display& display, const display::HeadPose& head,
+                                                 const std::vector<gl::ScreenImage>& images,
+                                                 const std::vector<gl::ScreenImage>& reference,
+                                                 const std::string& mode);
+
 // Collects one mode's frames and comparisons; finish() fills the bench::ModeResult.
 class ModeAccumulator {
 public:

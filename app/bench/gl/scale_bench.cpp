@@ -5,8 +5,11 @@
 #include "display/display.h"
 #include "display/timing.h"
 #include "display/gl/context.h"
+#include "display/gl/frame_images.h"
 #include "display/gl/render_targets.h"
 #include "display/gl/scene_renderer.h"
+#include "app/bench/gl/modes.h"
+#include "app/bench/metrics.h"
 #include "app/bench/path.h"
 #include "app/bench/report.h"
 #include "render/lod_choice.h"
@@ -137,10 +140,12 @@ struct NearMode {
 };
 
 struct Accumulated {
+    explicit Accumulated(std::size_t screens) : errors(screens) {}
     std::vector<double> ms;
     double triangles = 0.0, residentMB = 0.0, pagedMB = 0.0;
     int overAlpha = 0;
     long misses = 0, pageIns = 0;
+    bench::ErrorPool errors;   // against full geometry (near and walls)
 };
 
 bench::ScaleRow rowOf(bench::ScaleMode mode, const Accumulated& a, const bench::ScaleRow& base) {
@@ -153,6 +158,9 @@ bench::ScaleRow rowOf(bench::ScaleMode mode, const Accumulated& a, const bench::
     r.geometryMisses = a.misses;
     r.geometryPageIns = a.pageIns;
     r.texturesOverAlpha = a.overAlpha;
+    const bench::ImageError e = a.errors.result();
+    r.comparedFrames = e.frames;
+    if (e.frames > 0) r.psnrDb = e.psnrDb, r.worstFramePsnrDb = e.worstFramePsnrDb, r.flipMean = e.flipMean;
     return r;
 }
 
@@ -262,16 +270,26 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
         nearMode->draw(path.frames[i]);
     }
     say(size + ": full, near and walls frame by frame in turn");
-    Accumulated a[3];
+    const std::size_t screens = display.screens().size();
+    Accumulated a[3] = {Accumulated(screens), Accumulated(screens), Accumulated(screens)};
     a[0].residentMB = fullYard.sharedMB;
     a[1].residentMB = nearMode->residentMB();
-    for (const walls::FrameInput& in : path.frames) {
+    long frame = 0;
+    for (walls::FrameInput in : path.frames) {
+        // Images are read back after each mode's frame is timed (walkthrough.h; NearMode::draw).
+        const bool compare = o.compareEvery > 0 && frame % o.compareEvery == 0;
+        in.readImages = compare;
         const walls::FrameResult f = full->renderFrame(in);
         a[0].ms.push_back(f.frameMs), a[0].triangles += static_cast<double>(f.stats.triangles);
         const auto [nearMs, nearTriangles] = nearMode->draw(in);
         a[1].ms.push_back(nearMs), a[1].triangles += nearTriangles;
+        if (compare)
+            a[1].errors.addFrame(frame, comparedImages(display, in.head, readFrame(display, nearMode->targets), f.images,
+                                                       "near"));
         const walls::FrameResult w = walk->renderFrame(in);
         a[2].ms.push_back(w.frameMs), a[2].triangles += static_cast<double>(w.stats.triangles);
+        if (compare) a[2].errors.addFrame(frame, comparedImages(display, in.head, w.images, f.images, "walls"));
+        ++frame;
         a[2].pagedMB = std::max(a[2].pagedMB, w.geometry.residentMB);
         a[2].overAlpha = std::max(a[2].overAlpha, w.texturesOverAlpha);
         a[2].misses = w.geometry.misses, a[2].pageIns = w.geometry.pageIns;
@@ -316,6 +334,12 @@ bench::ScaleReport runScaleBench(const ScaleOptions& o) {
             "paging (the first frame complete; textures and groups of the stretch resident after a warm-up pass); "
             "first frame: the mode's setup and first frame after loading (walls: planning too; baking not, it is "
             "cached)",
+        o.compareEvery > 0
+            ? "image error: near and walls against full geometry's image of the same frame, every " +
+                  std::to_string(o.compareEvery) + " frames (read back after the frame is timed): PSNR on sRGB RGB "
+                  "pooled over all compared pixels, the worst frame's, LDR-FLIP mean at each screen's fewest pixels "
+                  "per degree"
+            : std::string("image error: not compared (--compare-every 0)"),
         "load average at start: " + loadAverage()};
     for (std::size_t target : o.sizes) {
         runSize(o, target, display, *context, report);

@@ -43,6 +43,10 @@ struct ScaleOptions {
     int bakeResolution = 128;               // texels per texture side at most
     double lodPixels = 1.0;                 // the walls and near modes' tolerance
     double geometryBudgetMB = 64.0;         // the walls mode's geometry paging budget
+    // Every compareEvery-th timed frame (0: none) the near and walls modes' images are compared
+    // with full geometry's of the same frame (bench::ErrorPool: pooled PSNR, worst frame, FLIP),
+    // read back after each mode's frame is timed.
+    int compareEvery = 6;
     bool verbose = true;
     // Called with the report so far after each size (a long run keeps what it measured).
     std::function<void(const bench::ScaleReport&)> afterSize;
