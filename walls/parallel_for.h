@@ -1,6 +1,6 @@
 #pragma once
-// Planning work spread over the machine's cores (the planner's row candidates and texture
-// errors are independent and pure).
+// Planning work spread over the machine's cores (the layouts of the walls' sides, each side's
+// row candidates and the texture errors are independent and pure).
 
 #include <functional>
 
