@@ -1,6 +1,8 @@
 #include "walls/angular_error.h"
 
 #include <algorithm>
+#include <array>
+#include <cassert>
 #include <cmath>
 #include <optional>
 #include <queue>
@@ -99,13 +101,15 @@ Witness decide(const Rect& r, glm::dvec3 a, glm::dvec3 b, double t) {
     const double eps = 1e-12 * (radius + glm::length(mid) + r.width + r.height);
     const HalfTable& table = halfTable();
     struct Interval { double cs, sn; int level; };  // cos and sin of the centre; half = table.half[level]
-    std::vector<Interval> stack;
-    for (int i = 0; i < kStart; ++i) stack.push_back({table.startCos[i], table.startSin[i], 0});
+    // Depth first: each level down adds one entry net, so kStart + kLevels entries suffice (a
+    // fixed array: the planner calls this millions of times).
+    std::array<Interval, kStart + kLevels> stack;
+    int top = 0;
+    for (int i = 0; i < kStart; ++i) stack[top++] = {table.startCos[i], table.startSin[i], 0};
     int budget = 200000;
     bool unknown = false;
-    while (!stack.empty()) {
-        const Interval iv = stack.back();
-        stack.pop_back();
+    while (top > 0) {
+        const Interval iv = stack[--top];
         const double cs = iv.cs, sn = iv.sn;
         const glm::dvec3 c = mid + rho * (cs * m1 + sn * m2);
         const glm::dvec3 q = nearestOnRect(r, c);
@@ -122,8 +126,9 @@ Witness decide(const Rect& r, glm::dvec3 a, glm::dvec3 b, double t) {
         // The children's centres lie half a child width either side: centre -+ half[level + 1].
         const int k = iv.level + 1;
         const double ch = table.cosHalf[k], sh = table.sinHalf[k];
-        stack.push_back({cs * ch + sn * sh, sn * ch - cs * sh, k});
-        stack.push_back({cs * ch - sn * sh, sn * ch + cs * sh, k});
+        assert(top + 2 <= int(stack.size()));
+        stack[top++] = {cs * ch + sn * sh, sn * ch - cs * sh, k};
+        stack[top++] = {cs * ch - sn * sh, sn * ch + cs * sh, k};
     }
     return {unknown ? Decision::Unknown : Decision::Below, {}};
 }
@@ -228,13 +233,22 @@ double maxAngularError(glm::dvec3 eye, glm::dvec3 samplingPoint, const ScreenQua
     return maxSubtended(r, e, depthPoint(e, s, r, depthBehind));
 }
 
-bool errorWithin(glm::dvec3 eye, glm::dvec3 samplingPoint, const ScreenQuad& wall, double depthBehind,
-                 double alpha) {
+namespace {
+
+// errorWithin with the wall's rectangle r = rectOf(wall) computed by the caller.
+bool errorWithinRect(const Rect& r, glm::dvec3 eye, glm::dvec3 samplingPoint, const ScreenQuad& wall, double depthBehind,
+                     double alpha) {
     if (!finite(eye) || !finite(samplingPoint) || !(alpha > 0) || std::isnan(depthBehind)) return false;
     if (depthBehind <= 0) return true;
-    const Rect r = rectOf(wall);
     const glm::dvec3 e = eye - wall.lowerLeft, s = samplingPoint - wall.lowerLeft;
     return decide(r, e, depthPoint(e, s, r, depthBehind), std::min(alpha, kHalfPi)).decision == Decision::Below;
+}
+
+}  // namespace
+
+bool errorWithin(glm::dvec3 eye, glm::dvec3 samplingPoint, const ScreenQuad& wall, double depthBehind,
+                 double alpha) {
+    return errorWithinRect(rectOf(wall), eye, samplingPoint, wall, depthBehind, alpha);
 }
 
 namespace {
@@ -307,9 +321,22 @@ double zoneMaxError(const ZoneVolume& zone, glm::dvec3 samplingPoint, const Scre
 }
 
 bool zoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const ScreenQuad& wall, double alpha) {
+    // The answer is the conjunction over the eyes, so their order does not change it; eyes far
+    // from the sampling point for their distance to the wall usually fail first, and a zone
+    // that fails (half of the planner's bisection probes) then costs one decision, not many.
+    struct Eye { glm::dvec3 p; double score; };
+    std::vector<Eye> eyes;
+    eyes.reserve(2 * zone.floor.size());
+    const Rect r = rectOf(wall);
     for (const glm::dvec2& p : zone.floor)
-        for (double y : {zone.heightRange.x, zone.heightRange.y})
-            if (!errorWithin({p.x, y, p.y}, samplingPoint, wall, kInfiniteDepth, alpha)) return false;
+        for (double y : {zone.heightRange.x, zone.heightRange.y}) {
+            const glm::dvec3 e{p.x, y, p.y};
+            const double h = std::abs(glm::dot(e - wall.lowerLeft, r.normal));
+            eyes.push_back({e, glm::length(e - samplingPoint) / std::max(h, 1e-9)});
+        }
+    std::sort(eyes.begin(), eyes.end(), [](const Eye& a, const Eye& b) { return a.score > b.score; });
+    for (const Eye& e : eyes)
+        if (!errorWithinRect(r, e.p, samplingPoint, wall, kInfiniteDepth, alpha)) return false;
     return true;
 }
 

@@ -53,10 +53,12 @@ std::vector<EyeRegion> childRegions(const Plan& plan, int first, int last) {
     return out;
 }
 
-void planRegion(Plan& plan, const scenes::SceneDescription& d, const VisibilityTable& table, const EyeRegion& r,
-                std::size_t sideCount) {
+// The far walls of `r.neighbour` to plan for the eyes of `r`, appended to `inputs` with their
+// eye regions in `regions`.
+void regionInputs(const Plan& plan, const scenes::SceneDescription& d, const VisibilityTable& table, const EyeRegion& r,
+                  std::size_t sideCount, std::vector<SideInput>& inputs, std::vector<const EyeRegion*>& regions) {
     for (std::size_t i = 0; i < sideCount; ++i) {
-        const WallSide far = plan.sides[i];
+        const WallSide& far = plan.sides[i];
         if (far.cell != r.neighbour || far.wall == r.via) continue;
         // A cell behind that is drawn anyway needs no texture.
         const int behind = plan.walls[far.wall].cells[1 - far.side];
@@ -66,10 +68,20 @@ void planRegion(Plan& plan, const scenes::SceneDescription& d, const VisibilityT
         Polygon2 floor = clipHalfPlane(r.floor, -far.inward, -glm::dot(far.inward, far.origin));
         if (std::abs(signedArea(floor)) <= kMinRegionArea) continue;
         const SideFrame frame{far.origin, far.along, far.inward};
-        const SideInput in{far.cell, far.wall, far.side, frame, floor, plan.walls[far.wall].quad, d.headHeightRange};
-        BeyondSide b{r.cell, r.via, std::move(floor), planSide(plan, in, plan.beyondZones), r.parent};
-        plan.beyond.push_back(std::move(b));
+        inputs.push_back({far.cell, far.wall, far.side, frame, std::move(floor), plan.walls[far.wall].quad, d.headHeightRange});
+        regions.push_back(&r);
     }
+}
+
+// Plans every region's far walls, in the regions' order (planSides: layouts in parallel).
+void planRegions(Plan& plan, const scenes::SceneDescription& d, const VisibilityTable& table,
+                 const std::vector<EyeRegion>& eyeRegions, std::size_t sideCount) {
+    std::vector<SideInput> inputs;
+    std::vector<const EyeRegion*> regions;
+    for (const EyeRegion& r : eyeRegions) regionInputs(plan, d, table, r, sideCount, inputs, regions);
+    std::vector<WallSide> sides = planSides(plan, inputs, plan.beyondZones);
+    for (std::size_t i = 0; i < sides.size(); ++i)
+        plan.beyond.push_back({regions[i]->cell, regions[i]->via, inputs[i].cellRegion, std::move(sides[i]), regions[i]->parent});
 }
 
 }  // namespace
@@ -80,7 +92,7 @@ void planBeyond(Plan& plan, const scenes::SceneDescription& d) {
     std::vector<EyeRegion> regions = eyeRegions(plan, d, table);
     for (int level = 0; level < kLevels && !regions.empty(); ++level) {
         const int first = int(plan.beyond.size());
-        for (const EyeRegion& r : regions) planRegion(plan, d, table, r, sideCount);
+        planRegions(plan, d, table, regions, sideCount);
         regions = childRegions(plan, first, int(plan.beyond.size()));
     }
 }

@@ -8,9 +8,21 @@
 #include <vector>
 
 namespace cavewall::walls {
+namespace {
+
+thread_local bool insideParallelFor = false;
+
+// Marks the current thread as running parallelFor work for its lifetime.
+struct InsideScope {
+    bool previous = insideParallelFor;
+    InsideScope() { insideParallelFor = true; }
+    ~InsideScope() { insideParallelFor = previous; }
+};
+
+}  // namespace
 
 void parallelFor(int n, const std::function<void(int)>& fn) {
-    const int threads = std::min<int>(n, std::max(1u, std::thread::hardware_concurrency()));
+    const int threads = insideParallelFor ? 1 : std::min<int>(n, std::max(1u, std::thread::hardware_concurrency()));
     if (threads <= 1) {
         for (int i = 0; i < n; ++i) fn(i);
         return;
@@ -19,6 +31,7 @@ void parallelFor(int n, const std::function<void(int)>& fn) {
     std::exception_ptr failure;
     std::mutex failureMutex;
     auto work = [&] {
+        const InsideScope inside;
         for (int i; (i = next.fetch_add(1)) < n;) {
             try {
                 fn(i);

@@ -112,6 +112,7 @@ Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options, co
     Plan plan;
     plan.alphaDeg = options.alphaDeg;
     plan.options = options;
+    std::vector<SideInput> inputs;
     for (int w = 0; w < int(d.walls.size()); ++w) {
         const scenes::VirtualWall& wall = d.walls[w];
         const glm::dvec2 span = spans.empty() ? glm::dvec2(0.0, std::numeric_limits<double>::infinity()) : spans[w];
@@ -123,11 +124,11 @@ Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options, co
             const int cell = wall.cells[side];
             if (cell < 0 || cell >= int(d.cells.size())) continue;
             checkExtent(d.cells[cell]);
-            SideInput in{cell, w, side, frameOf(wall, side), d.cells[cell].region, plan.walls.back().quad,
-                         d.headHeightRange};
-            plan.sides.push_back(planSide(plan, in, plan.zones));
+            inputs.push_back({cell, w, side, frameOf(wall, side), d.cells[cell].region, plan.walls.back().quad,
+                              d.headHeightRange});
         }
     }
+    plan.sides = planSides(plan, inputs, plan.zones);
     planBeyond(plan, d);
     parallelFor(int(plan.textures.size()), [&](int i) {
         Texture& t = plan.textures[i];

@@ -1,6 +1,7 @@
 #include "walls/visibility.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -82,6 +83,33 @@ Polygon2 hull(std::vector<glm::dvec2> pts) {
     return h;
 }
 
+// Per cell: does the table show it from `viewer` through `wall`? (All false for a viewer
+// outside the table.)
+std::vector<bool> cellsShownThrough(const VisibilityTable& table, int viewer, int wall) {
+    std::vector<bool> shown(std::size_t(table.cellCount), false);
+    if (viewer < 0 || viewer >= table.cellCount) return shown;
+    for (int c = 0; c < table.cellCount; ++c) {
+        const auto& through = table.throughWalls(viewer, c);
+        shown[c] = std::find(through.begin(), through.end(), wall) != through.end();
+    }
+    return shown;
+}
+
+// The axis-aligned box of a wall rectangle, grown by a micrometre (plus rounding at the
+// rectangle's size) so that a box classify() finds crossing the rectangle always overlaps it.
+scenes::Bounds rectangleBox(const display::ScreenQuad& q) {
+    scenes::Bounds b;
+    for (const glm::dvec3& p : {q.lowerLeft, q.lowerRight, q.upperLeft, q.lowerRight + (q.upperLeft - q.lowerLeft)}) b.add(p);
+    const double margin = 1e-6 + 1e-9 * glm::length(b.size()) + 1e-12 * glm::length(glm::max(glm::abs(b.min), glm::abs(b.max)));
+    b.min -= glm::dvec3(margin), b.max += glm::dvec3(margin);
+    return b;
+}
+
+bool overlaps(const scenes::Bounds& a, const scenes::Bounds& b) {
+    return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y && a.min.z <= b.max.z &&
+           b.min.z <= a.max.z;
+}
+
 }  // namespace
 
 const char* toString(CellVisibility v) {
@@ -103,8 +131,9 @@ const char* toString(Placement p) {
     return "?";
 }
 
-double openBoundaryLength(const scenes::SceneDescription& d, int a, int b) {
-    const std::vector<Segment> walls = allFootprints(d);
+namespace {
+
+double openLength(const scenes::SceneDescription& d, const std::vector<Segment>& walls, int a, int b) {
     const auto& ra = d.cells[a].region;
     const auto& rb = d.cells[b].region;
     double open = 0;
@@ -124,6 +153,22 @@ double openBoundaryLength(const scenes::SceneDescription& d, int a, int b) {
     return open;
 }
 
+// The floor box (x, z) of every cell, grown by kNearby.
+constexpr double kNearby = 1e-3;  // metres; edges on one line (onLine) are within kOnLine
+std::vector<std::array<glm::dvec2, 2>> cellBoxes(const scenes::SceneDescription& d) {
+    std::vector<std::array<glm::dvec2, 2>> boxes;
+    for (const scenes::Cell& c : d.cells) {
+        glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi = -lo;
+        for (const glm::dvec2& p : c.region) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        boxes.push_back({lo - kNearby, hi + kNearby});
+    }
+    return boxes;
+}
+
+}  // namespace
+
+double openBoundaryLength(const scenes::SceneDescription& d, int a, int b) { return openLength(d, allFootprints(d), a, b); }
+
 VisibilityTable computeVisibility(const scenes::SceneDescription& d) {
     const int n = int(d.cells.size());
     VisibilityTable t;
@@ -131,9 +176,16 @@ VisibilityTable computeVisibility(const scenes::SceneDescription& d) {
     t.entries.assign(std::size_t(n) * n, CellVisibility::Hidden);
     t.walls.assign(std::size_t(n) * n, {});
     std::vector<std::vector<int>> open(n), passable(n);
+    // Measuring a pair scans every wall's footprint and the pairs grow with the square of the
+    // cells; cells whose floor boxes are apart share no edge, so only nearby pairs are measured.
+    const std::vector<Segment> footprints = allFootprints(d);
+    const auto boxes = cellBoxes(d);
     for (int a = 0; a < n; ++a)
-        for (int b = a + 1; b < n; ++b)
-            if (openBoundaryLength(d, a, b) > kMinOpening) open[a].push_back(b), open[b].push_back(a);
+        for (int b = a + 1; b < n; ++b) {
+            const auto &ba = boxes[a], &bb = boxes[b];
+            if (ba[0].x > bb[1].x || bb[0].x > ba[1].x || ba[0].y > bb[1].y || bb[0].y > ba[1].y) continue;
+            if (openLength(d, footprints, a, b) > kMinOpening) open[a].push_back(b), open[b].push_back(a);
+        }
     for (int a = 0; a < n; ++a) passable[a] = open[a];
     for (const auto& w : d.walls)
         if (w.cells[0] >= 0 && w.cells[1] >= 0) passable[w.cells[0]].push_back(w.cells[1]), passable[w.cells[1]].push_back(w.cells[0]);
@@ -205,9 +257,15 @@ WallContents wallContents(const scenes::Scene& scene, const scenes::SceneDescrip
     const display::ScreenQuad q{w.lowerLeft, w.lowerRight, w.upperLeft};
     const display::ScreenBasis b = display::screenBasis(q);
     const int viewer = w.cells[side];
+    const std::vector<bool> shownCells = cellsShownThrough(table, viewer, wall);
+    const scenes::Bounds rect = rectangleBox(q);
     for (int i = 0; i < int(scene.objects.size()); ++i) {
         const scenes::Object& o = scene.objects[i];
         if (o.role == scenes::Role::Structure || o.worldBounds.empty()) continue;
+        // Classifying is the cost here (objects x wall sides); an object neither possibly shown
+        // through this wall nor touching the rectangle's box is neither baked nor intersecting.
+        const bool mayBake = o.cell < 0 || viewer < 0 || o.cell >= table.cellCount || shownCells[o.cell];
+        if (!mayBake && !overlaps(o.worldBounds, rect)) continue;
         const Placement p = classify(o.worldBounds, q, side);
         if (p == Placement::Intersecting) out.intersecting.push_back(i);
         if (p != Placement::Behind) continue;

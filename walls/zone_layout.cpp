@@ -268,9 +268,7 @@ struct Emitter {
     }
 };
 
-}  // namespace
-
-WallSide planSide(Plan& plan, const SideInput& in, std::vector<Zone>& zones) {
+Context contextOf(const Plan& plan, const SideInput& in) {
     Context c{in, {}, glm::radians(plan.options.alphaDeg), plan.options.blendWidth, plan.options.minZoneSize, 0, 0, 0, 0};
     c.options = &plan.options;
     c.span = {plan.walls[in.wall].depthNear, plan.walls[in.wall].depthBehind};
@@ -278,12 +276,16 @@ WallSide planSide(Plan& plan, const SideInput& in, std::vector<Zone>& zones) {
     glm::dvec2 lo, hi;
     extentOf(c.cell, lo, hi);
     c.sLo = lo.x, c.sHi = hi.x, c.dMin = lo.y, c.dMax = hi.y;
+    return c;
+}
 
+// Numbers the layout's textures and zones after those already in `plan` and `zones`.
+WallSide emit(Plan& plan, const Context& c, const Layout& l, std::vector<Zone>& zones) {
+    const SideInput& in = c.in;
     WallSide side;
     side.cell = in.cell, side.wall = in.wall, side.side = in.side;
     side.firstZone = int(zones.size());
     side.origin = in.frame.origin, side.along = in.frame.along, side.inward = in.frame.inward;
-    const Layout l = layout(c);
     side.geometryDistance = l.geometryBelow ? l.dG : c.dMin;
     side.hasGeometry = l.geometryBelow;
     Emitter e{c, plan, zones, l.rows, {}};
@@ -300,6 +302,24 @@ WallSide planSide(Plan& plan, const SideInput& in, std::vector<Zone>& zones) {
     }
     side.zoneCount = int(zones.size()) - side.firstZone;
     return side;
+}
+
+}  // namespace
+
+WallSide planSide(Plan& plan, const SideInput& in, std::vector<Zone>& zones) {
+    const Context c = contextOf(plan, in);
+    return emit(plan, c, layout(c), zones);
+}
+
+std::vector<WallSide> planSides(Plan& plan, const std::vector<SideInput>& inputs, std::vector<Zone>& zones) {
+    // A layout reads only the options and its wall's depth span; numbering waits for all of
+    // them so ids follow the inputs' order whatever the threads' timing.
+    std::vector<Layout> layouts(inputs.size());
+    parallelFor(int(inputs.size()), [&](int i) { layouts[i] = layout(contextOf(plan, inputs[i])); });
+    std::vector<WallSide> sides;
+    sides.reserve(inputs.size());
+    for (std::size_t i = 0; i < inputs.size(); ++i) sides.push_back(emit(plan, contextOf(plan, inputs[i]), layouts[i], zones));
+    return sides;
 }
 
 }  // namespace cavewall::walls

@@ -37,6 +37,11 @@ double nearestDistance(const Polygon2& region, double y, const ScreenQuad& wall)
 // returns the side's summary.
 WallSide planSide(Plan& plan, const SideInput& input, std::vector<Zone>& zones);
 
+// The same as planSide for each input in order (identical textures, zones, ids and summaries),
+// with the layouts, which are independent, computed in parallel (walls/parallel_for.h).
+// `plan`'s walls must hold every input's wall.
+std::vector<WallSide> planSides(Plan& plan, const std::vector<SideInput>& inputs, std::vector<Zone>& zones);
+
 // Plans Plan::beyond and Plan::beyondZones (walls/plan.h) once every side is planned.
 void planBeyond(Plan& plan, const scenes::SceneDescription& description);
 

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <random>
+#include <string>
+#include <vector>
 
 namespace cavewall::walls {
 namespace {
@@ -170,6 +172,63 @@ TEST(AngularError, DegenerateInputsNeverGiveNaN) {
     EXPECT_FALSE(std::isnan(maxAngularError({0, 1.5, -1}, s, kWall)));  // eye behind it
     EXPECT_FALSE(errorWithin({nan, 1, 1}, s, kWall, kInfiniteDepth, 0.1));
     EXPECT_GE(maxAngularError({0, 1.5, 0.001}, s, kWall), 80 * kDeg);  // grazing: near 90° and more
+}
+
+TEST(AngularError, ZoneWithinIsEveryEyeWithin) {
+    // zoneWithin checks the zone's eyes (floor vertices at both head heights) in its own order;
+    // the answer must be the plain conjunction of errorWithin over all of them. Alphas just
+    // below each eye's own error make the eyes fail one at a time, worst first, so a zone
+    // that skipped any eye would pass where the conjunction fails.
+    std::mt19937 rng(15);
+    std::uniform_real_distribution<double> x(-9, 9), z(0.3, 12), size(0.2, 4), y(1.2, 2.0);
+    int passed = 0, failed = 0;
+    for (int n = 0; n < 30; ++n) {
+        const glm::dvec2 c(x(rng), z(rng));
+        const double w = size(rng), d = size(rng);
+        // A convex quad: a rectangle with one corner pulled in, not aligned with the wall.
+        const ZoneVolume zone{{{c.x - w, c.y}, {c.x + w, c.y + 0.3 * d}, {c.x + 0.7 * w, c.y + d}, {c.x - w, c.y + 0.8 * d}},
+                              {1.2, 2.0}};
+        const glm::dvec3 s(x(rng), y(rng), z(rng));
+        std::vector<double> alphas;
+        double worst = 0;
+        for (const glm::dvec2& p : zone.floor)
+            for (double h : {zone.heightRange.x, zone.heightRange.y}) {
+                const double e = maxAngularError({p.x, h, p.y}, s, kWall);
+                alphas.push_back(e * (1 - 1e-6));
+                worst = std::max(worst, e);
+            }
+        alphas.push_back(worst * (1 + 1e-6));  // every eye within
+        for (double alpha : alphas) {
+            if (!(alpha > 0) || alpha > 0.5 * 3.14159265358979323846) continue;
+            bool all = true;
+            for (const glm::dvec2& p : zone.floor)
+                for (double h : {zone.heightRange.x, zone.heightRange.y})
+                    all = all && errorWithin({p.x, h, p.y}, s, kWall, kInfiniteDepth, alpha);
+            SCOPED_TRACE("zone " + std::to_string(n) + ", alpha " + std::to_string(alpha));
+            EXPECT_EQ(zoneWithin(zone, s, kWall, alpha), all);
+            (all ? passed : failed)++;
+        }
+    }
+    // Both answers occur often, so the comparison is not vacuous.
+    EXPECT_GT(passed, 15);
+    EXPECT_GT(failed, 150);
+}
+
+TEST(AngularError, ZoneWithinChecksTheEyeLeastLikelyToFail) {
+    // zoneWithin tries the eyes far from the sampling point for their distance to the wall
+    // first. Here the worst eye is the one nearest S for its distance, so it is tried last:
+    // 0.3 m beside S at S's distance (0.3 / 10 = 0.03) against 0.5 m behind S (0.5 / 10.5 =
+    // 0.048). Beside S the eye sees texels up to about atan(0.3 / 10) = 1.7° off, behind S
+    // about 1.2° (wall points 6 m aside): with alpha just below the worst eye's error, that
+    // eye alone fails.
+    const glm::dvec3 s(0, 1.6, 10);
+    const ZoneVolume zone{{{0.3, 10}, {0.05, 10.5}, {-0.05, 10.5}}, {1.6, 1.6}};
+    std::vector<double> errors;
+    for (const glm::dvec2& p : zone.floor) errors.push_back(maxAngularError({p.x, 1.6, p.y}, s, kWall));
+    EXPECT_NEAR(errors[0], std::atan(0.3 / 10), 0.3 * std::atan(0.3 / 10));
+    EXPECT_GT(errors[0], 1.1 * std::max(errors[1], errors[2]));
+    EXPECT_TRUE(zoneWithin(zone, s, kWall, errors[0] * (1 + 1e-6)));
+    EXPECT_FALSE(zoneWithin(zone, s, kWall, errors[0] * (1 - 1e-6)));
 }
 
 }  // namespace

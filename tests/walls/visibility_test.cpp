@@ -7,6 +7,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
+#include <random>
+#include <string>
+
 namespace cavewall::walls {
 namespace {
 
@@ -124,6 +128,78 @@ TEST(Visibility, WallContentsAndDepthBehind) {
     EXPECT_EQ(fromBack.baked, std::vector<int>{front});
     EXPECT_DOUBLE_EQ(fromBack.depthBehind, 3.5);
     (void)structure;
+}
+
+// The rule of wallContents (visibility.h) applied to every object, without any filtering: the
+// reference the filtered implementation must equal.
+WallContents everyObjectContents(const scenes::Scene& scene, const scenes::SceneDescription& d, const VisibilityTable& t,
+                                 int wall, int side) {
+    WallContents out;
+    const scenes::VirtualWall& w = d.walls[wall];
+    const display::ScreenQuad q{w.lowerLeft, w.lowerRight, w.upperLeft};
+    const int viewer = w.cells[side];
+    for (int i = 0; i < int(scene.objects.size()); ++i) {
+        const scenes::Object& o = scene.objects[i];
+        if (o.role == scenes::Role::Structure || o.worldBounds.empty()) continue;
+        const Placement p = classify(o.worldBounds, q, side);
+        if (p == Placement::Intersecting) out.intersecting.push_back(i);
+        const bool known = o.cell >= 0 && viewer >= 0;
+        if (p != Placement::Behind || (known && o.cell >= t.cellCount)) continue;
+        if (known) {
+            const auto& through = t.throughWalls(viewer, o.cell);
+            if (std::find(through.begin(), through.end(), wall) == through.end()) continue;
+        }
+        out.baked.push_back(i);
+    }
+    return out;
+}
+
+TEST(Visibility, WallContentsEqualsClassifyingEveryObject) {
+    // wallContents classifies only objects that may be shown through the wall or touch its
+    // rectangle's box. Random boxes of every size in random (also wrong or unknown) cells,
+    // many touching a wall's edges, must give exactly the lists of classifying them all.
+    std::mt19937 rng(15);
+    std::uniform_real_distribution<double> u(0, 1);
+    int baked = 0, intersecting = 0;
+    for (const scenes::SceneDescription& d : {house(), testing::threeInARow()}) {
+        SCOPED_TRACE(d.name);
+        glm::dvec3 lo(1e9), hi(-1e9);
+        for (const scenes::Cell& c : d.cells)
+            for (const glm::dvec2& p : c.region) lo = glm::min(lo, {p.x, -1, p.y}), hi = glm::max(hi, {p.x, 5, p.y});
+        scenes::Scene scene;
+        for (int i = 0; i < 600; ++i) {
+            scenes::Object o;
+            // Every third box is centred near a wall's rectangle (within a metre of its plane).
+            const scenes::VirtualWall& w = d.walls[i % d.walls.size()];
+            const glm::dvec3 onWall = w.lowerLeft + (u(rng) * 1.4 - 0.2) * (w.lowerRight - w.lowerLeft) +
+                                      (u(rng) * 1.4 - 0.2) * (w.upperLeft - w.lowerLeft) + glm::dvec3(u(rng) - 0.5, 0, u(rng) - 0.5);
+            const glm::dvec3 centre = i % 3 == 0 ? onWall : lo - 1.0 + (hi - lo + 2.0) * glm::dvec3(u(rng), u(rng), u(rng));
+            const glm::dvec3 half = glm::dvec3(u(rng), u(rng), u(rng)) * (i % 10 == 0 ? 4.0 : 0.6);
+            o.worldBounds.add(centre - half), o.worldBounds.add(centre + half);
+            o.cell = int(u(rng) * (d.cells.size() + 2)) - 1;  // -1 (unknown) .. cellCount (out of the table)
+            o.role = i % 17 == 0 ? scenes::Role::Structure : scenes::Role::Content;
+            scene.objects.push_back(o);
+        }
+        // A box exactly on a wall's plane edge-to-edge with its rectangle, and an empty one.
+        const scenes::VirtualWall& w0 = d.walls[0];
+        scene.objects.push_back({});
+        scene.objects.back().worldBounds.add(w0.lowerLeft), scene.objects.back().worldBounds.add(w0.upperLeft + (w0.lowerRight - w0.lowerLeft));
+        scene.objects.push_back({});
+        const VisibilityTable t = computeVisibility(d);
+        for (int wall = 0; wall < int(d.walls.size()); ++wall)
+            for (int side = 0; side < 2; ++side) {
+                if (d.walls[wall].cells[side] < 0) continue;
+                SCOPED_TRACE(d.walls[wall].name + " side " + std::to_string(side));
+                const WallContents expected = everyObjectContents(scene, d, t, wall, side);
+                const WallContents got = wallContents(scene, d, t, wall, side);
+                EXPECT_EQ(got.baked, expected.baked);
+                EXPECT_EQ(got.intersecting, expected.intersecting);
+                baked += int(expected.baked.size()), intersecting += int(expected.intersecting.size());
+            }
+    }
+    // Both lists are well populated, so a filter dropping objects would show.
+    EXPECT_GT(baked, 200);
+    EXPECT_GT(intersecting, 100);
 }
 
 }  // namespace
