@@ -314,11 +314,14 @@ WallSide planSide(Plan& plan, const SideInput& in, std::vector<Zone>& zones) {
 std::vector<WallSide> planSides(Plan& plan, const std::vector<SideInput>& inputs, std::vector<Zone>& zones) {
     // A layout reads only the options and its wall's depth span; numbering waits for all of
     // them so ids follow the inputs' order whatever the threads' timing.
+    std::vector<Context> contexts;
+    contexts.reserve(inputs.size());
+    for (const SideInput& in : inputs) contexts.push_back(contextOf(plan, in));
     std::vector<Layout> layouts(inputs.size());
-    parallelFor(int(inputs.size()), [&](int i) { layouts[i] = layout(contextOf(plan, inputs[i])); });
+    parallelFor(int(inputs.size()), [&](int i) { layouts[i] = layout(contexts[i]); });
     std::vector<WallSide> sides;
     sides.reserve(inputs.size());
-    for (std::size_t i = 0; i < inputs.size(); ++i) sides.push_back(emit(plan, contextOf(plan, inputs[i]), layouts[i], zones));
+    for (std::size_t i = 0; i < inputs.size(); ++i) sides.push_back(emit(plan, contexts[i], layouts[i], zones));
     return sides;
 }
 
