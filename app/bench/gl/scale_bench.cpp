@@ -289,10 +289,10 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
         const walls::FrameResult w = walk->renderFrame(in);
         a[2].ms.push_back(w.frameMs), a[2].triangles += static_cast<double>(w.stats.triangles);
         if (compare) a[2].errors.addFrame(frame, comparedImages(display, in.head, w.images, f.images, "walls"));
-        ++frame;
         a[2].pagedMB = std::max(a[2].pagedMB, w.geometry.residentMB);
         a[2].overAlpha = std::max(a[2].overAlpha, w.texturesOverAlpha);
         a[2].misses = w.geometry.misses, a[2].pageIns = w.geometry.pageIns;
+        ++frame;
     }
     a[2].residentMB = yard.sharedMB + a[2].pagedMB;
     const double firsts[3] = {fullFirst, nearFirst, wallsFirst + planSeconds};
