@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -21,6 +22,10 @@ namespace cavewall::gl {
 namespace {
 
 constexpr int kRepetitions = 7;
+constexpr double kMinTimedTriangles = 200000.0;
+constexpr int kMaxRepeats = 64;
+// 10^10 triangles a second: faster than any renderer, the floor of a slope too small to measure.
+constexpr double kMinMsPerTriangle = 1e-7;
 
 // The fastest of kRepetitions draws: other tenants of a shared machine only ever add time, and
 // the controller (render/cluster_budget.h) measures what they add frame by frame.
@@ -39,7 +44,7 @@ double fastestMs(const std::function<void()>& draw) {
 std::filesystem::path costFile(const scenes::Scene& scene, const std::string& rendererName,
                                const std::filesystem::path& cache, int resolution) {
     walls::KeyHasher h;
-    h.text("cavewall cluster costs v3").text(rendererName).integer(resolution);
+    h.text("cavewall cluster costs v4").text(rendererName).integer(resolution);
     for (std::uint64_t k : walls::objectKeys(scene)) h.integer(static_cast<std::int64_t>(k));
     return cache / "clusters" / ("costs-" + walls::hex64(h.value()) + ".json");
 }
@@ -78,11 +83,16 @@ MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostor
         display::offAxisFrustum(view.screen, view.eye, {0.05, std::numeric_limits<double>::infinity()});
     OffscreenTarget target{glm::ivec2(resolution)};
     ViewTarget vt{target.framebuffer(), {0, 0, resolution, resolution}, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)};
-    auto drawObjects = [&](const std::vector<int>& objects) {
+    // One view of `objects`, drawn `times` times in one timed block and divided back: a small
+    // scene's draws are far below the timer's and the machine's noise, so they repeat until a
+    // set holds about kMinTimedTriangles.
+    auto drawObjects = [&](const std::vector<int>& objects, int times) {
         render::DrawFilter filter;
         filter.objects = &objects;
         filter.frustumCull = false;
-        return fastestMs([&] { renderer.renderFrustum(frustum, glm::dmat4(1.0), vt, filter); });
+        return fastestMs([&] {
+                   for (int i = 0; i < times; ++i) renderer.renderFrustum(frustum, glm::dmat4(1.0), vt, filter);
+               }) / times;
     };
     // Objects by triangles: the smaller half and the larger half.
     std::vector<int> order(model.objectTriangles.size());
@@ -94,15 +104,20 @@ MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostor
         for (int o : set) t += static_cast<double>(model.objectTriangles[o]);
         return t;
     };
-    const double empty = drawObjects({});
-    const double ts = std::max(0.0, drawObjects(small) - empty), tl = std::max(0.0, drawObjects(large) - empty);
-    const double ns = static_cast<double>(small.size()), nl = static_cast<double>(large.size());
     const double gs = triangles(small), gl = triangles(large);
+    const int times = static_cast<int>(std::clamp(std::ceil(kMinTimedTriangles / std::max(1.0, std::min(gs, gl))), 1.0,
+                                                  static_cast<double>(kMaxRepeats)));
+    const double empty = drawObjects({}, times);
+    const double ts = std::max(0.0, drawObjects(small, times) - empty), tl = std::max(0.0, drawObjects(large, times) - empty);
+    const double ns = static_cast<double>(small.size()), nl = static_cast<double>(large.size());
     // ts = c ns + b gs, tl = c nl + b gl.
     const double det = ns * gl - nl * gs;
     double b = det != 0.0 ? (ns * tl - nl * ts) / det : -1.0;
     double c = det != 0.0 ? (ts * gl - tl * gs) / det : -1.0;
     if (!(b > 0.0 && c >= 0.0)) b = (ts + tl) / std::max(1.0, gs + gl), c = 0.0;
+    // Still nothing measurable (a few boxes on an idle machine): the floor, so the selection never
+    // takes geometry for free.
+    b = std::max(b, kMinMsPerTriangle);
     result.costs.msPerTriangle = b;
     result.costs.msPerObject = c;
     // Boxes: every cluster's, then the root's alone, from the same view: two equations for the
