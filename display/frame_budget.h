@@ -15,6 +15,14 @@
 // on the g with a + b g = T (each step shrinks the error by a / T). A frame below its budget
 // (light load) lets the next budget grow only from what it drew, so no credit builds up.
 //
+// An infeasible target (the renderer draws more than its budget: its coarsest levels of detail
+// still exceed it) would otherwise leave every frame at whatever its view needs at the coarsest
+// level, so the load follows the content. There the controller holds the load steady instead:
+// it keeps a floor, raised to every such frame's triangles and decaying by kFloorDecay a frame,
+// and never budgets below it. A view lighter at the coarsest level then draws finer levels up to
+// the floor (frames as slow as the heaviest recent one, not slower); a heavier one raises it.
+// The floor decays back to what the target allows when the target becomes feasible again.
+//
 // Pure and deterministic: the same times give the same budgets. Times in milliseconds.
 
 #include <cstddef>
@@ -28,6 +36,8 @@ public:
 
     // The triangle budget for the next frame; 0 (no cap) until the first update.
     std::size_t budget() const { return _budget; }
+    // The steady-load floor (0 while the target is feasible).
+    double floor() const { return _floor; }
     double targetMs() const { return _target; }
 
     // After a frame: its wall-clock time and the triangles the budget capped (what the scene
@@ -36,7 +46,9 @@ public:
 
 private:
     static constexpr int kWindow = 5;
+    static constexpr double kFloorDecay = 0.98;   // halves in about 35 frames
     double _target, _gain;
+    double _floor = 0.0;
     std::size_t _budget = 0;
     double _costs[kWindow] = {};      // ms per triangle of the last frames, a ring
     int _count = 0, _next = 0;

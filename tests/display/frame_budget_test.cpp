@@ -112,5 +112,55 @@ TEST(FrameTimeBudget, NoisyTimesKeepTheMedianNearTheTarget) {
     EXPECT_NEAR(ms[ms.size() / 2], 16.0, 1.0);
 }
 
+// A view whose coarsest levels of detail draw `coarsest` triangles and whose finest `finest`:
+// what the renderer submits under a budget (display/frame_budget.h's contract, as
+// scenes::chooseLevels meets it).
+std::size_t drawn(std::size_t budget, std::size_t coarsest, std::size_t finest) {
+    return budget == 0 ? finest : std::max(coarsest, std::min(finest, budget));
+}
+
+TEST(FrameTimeBudget, AnInfeasibleTargetHoldsTheLoadSteadyInsteadOfFollowingTheContent) {
+    // 20 ms of fixed work: 16 ms cannot be met. The coarsest levels need 100 k or 130 k
+    // triangles in alternating stretches of 6 frames; the finest 1 M.
+    FrameTimeBudget c(16.0);
+    std::vector<std::size_t> g, coarsest;
+    for (int i = 0; i < 120; ++i) {
+        const std::size_t low = (i / 6) % 2 == 0 ? 130000 : 100000;
+        const std::size_t t = drawn(c.budget(), low, 1000000);
+        c.update(frameMs(20.0, 0.0002, t), t);
+        if (i >= 20) g.push_back(t), coarsest.push_back(low);
+    }
+    for (std::size_t i = 0; i < g.size(); ++i) {
+        EXPECT_GE(g[i], coarsest[i]);
+        if (i > 0) EXPECT_GE(static_cast<double>(g[i]), 0.98 * static_cast<double>(g[i - 1]) - 1.0) << i;
+    }
+    // Without the floor every light frame would draw 100 k: p99/p50 1.3. With it the lightest
+    // frame after a heavy stretch of 6 keeps 0.98^6 of 130 k.
+    EXPECT_GE(*std::min_element(g.begin(), g.end()), static_cast<std::size_t>(0.98 * 0.98 * 0.98 * 0.98 * 0.98 * 0.98 * 130000.0) - 1);
+    EXPECT_GT(c.floor(), 0.0);
+}
+
+TEST(FrameTimeBudget, TheFloorFadesOnceTheTargetIsFeasibleAgain) {
+    // Infeasible for 50 frames (20 ms fixed), then the machine is fast (4 ms fixed): the target
+    // is met again within 100 frames, at the 60 k triangles of AHeavyLoadConvergesOnTheTarget.
+    FrameTimeBudget c(16.0);
+    for (int i = 0; i < 50; ++i) {
+        const std::size_t t = drawn(c.budget(), 150000, 300000);
+        c.update(frameMs(20.0, 0.0002, t), t);
+    }
+    ASSERT_GT(c.floor(), 100000.0);
+    double last = 0.0;
+    std::size_t lastG = 0;
+    for (int i = 0; i < 150; ++i) {
+        const std::size_t t = drawn(c.budget(), 10000, 300000);
+        last = frameMs(4.0, 0.0002, t);
+        c.update(last, t);
+        lastG = t;
+    }
+    EXPECT_NEAR(last, 16.0, 0.2);
+    EXPECT_NEAR(static_cast<double>(lastG), 60000.0, 1000.0);
+    EXPECT_LT(c.floor(), 60000.0);
+}
+
 }  // namespace
 }  // namespace cavewall::display
