@@ -77,18 +77,33 @@ void TexturePager::worker() {
     }
 }
 
-std::vector<DecodedTexture> TexturePager::takeReady(std::size_t maxBytes) {
+std::vector<DecodedTexture> TexturePager::takeReady(std::size_t maxBytes, std::size_t maxNowBytes) {
     std::lock_guard lock(_mutex);
     // Wanted-now first.
-    std::stable_partition(_ready.begin(), _ready.end(), [&](const DecodedTexture& d) { return _residency.wantedNow(d.id); });
+    const auto soon = std::stable_partition(_ready.begin(), _ready.end(),
+                                            [&](const DecodedTexture& d) { return _residency.wantedNow(d.id); });
+    const std::size_t now = static_cast<std::size_t>(soon - _ready.begin());
     std::vector<DecodedTexture> out;
     std::size_t bytes = 0;
-    while (!_ready.empty() && (out.empty() || bytes + _ready.front().bytes <= maxBytes)) {
+    auto fits = [&](std::size_t limit) { return out.empty() || bytes + _ready.front().bytes <= limit; };
+    for (std::size_t i = 0; i < now && !_ready.empty() && fits(std::max(maxBytes, maxNowBytes)); ++i) {
+        bytes += _ready.front().bytes;
+        out.push_back(std::move(_ready.front()));
+        _ready.erase(_ready.begin());
+    }
+    while (!_ready.empty() && fits(maxBytes)) {
         bytes += _ready.front().bytes;
         out.push_back(std::move(_ready.front()));
         _ready.erase(_ready.begin());
     }
     return out;
+}
+
+std::size_t TexturePager::readyBytes() const {
+    std::lock_guard lock(_mutex);
+    std::size_t bytes = 0;
+    for (const DecodedTexture& d : _ready) bytes += d.bytes;
+    return bytes;
 }
 
 void TexturePager::markResident(int id, std::size_t bytes) {

@@ -61,7 +61,11 @@ public:
     void request(const std::vector<int>& now, const std::vector<int>& soon);
     // Decoded textures ready for upload, at most `maxBytes` of them (at least one if any is
     // ready), in priority order. The caller uploads them and then calls markResident for each.
-    std::vector<DecodedTexture> takeReady(std::size_t maxBytes);
+    // Textures wanted now may take up to `maxNowBytes` (a frame never waits on pacing for what
+    // it draws around); the rest shares `maxBytes` with them.
+    std::vector<DecodedTexture> takeReady(std::size_t maxBytes, std::size_t maxNowBytes = 0);
+    // GPU bytes of the decoded textures waiting for takeReady.
+    std::size_t readyBytes() const;
     void markResident(int id, std::size_t bytes);
     // Textures to delete on the GPU now to stay within the budget (never one wanted now).
     std::vector<int> takeEvictions();

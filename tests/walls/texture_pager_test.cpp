@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <fstream>
@@ -166,6 +167,23 @@ TEST(TexturePager, UploadsWithinAByteBudgetPerFrame) {
     pager.waitIdle();
     EXPECT_EQ(pager.takeReady(2 * kBytes).size(), 2u);
     EXPECT_EQ(pager.takeReady(1).size(), 1u);  // at least one, so paging always progresses
+}
+
+// Pacing (walls/upload_pacer.h) limits prefetches only: what a frame wants now goes at once, up
+// to the hard limit, and readyBytes() tells the pacer what waits.
+TEST(TexturePager, WantedNowTexturesPassTheirOwnLimitAndPrefetchesWait) {
+    TexturePager pager(folder(), manifest(), 4.0, fakeDecode);
+    pager.request({0, 1, 2}, {3, 4, 5});
+    pager.waitIdle();
+    EXPECT_EQ(pager.readyBytes(), 6 * kBytes);
+    std::vector<DecodedTexture> first = pager.takeReady(kBytes, 8 * kBytes);
+    std::vector<int> ids;
+    for (const DecodedTexture& d : first) ids.push_back(d.id);
+    std::sort(ids.begin(), ids.end());
+    EXPECT_EQ(ids, (std::vector<int>{0, 1, 2}));   // all three wanted now, no prefetch
+    EXPECT_EQ(pager.readyBytes(), 3 * kBytes);
+    EXPECT_EQ(pager.takeReady(2 * kBytes, 8 * kBytes).size(), 2u);  // prefetches within maxBytes
+    EXPECT_EQ(pager.readyBytes(), kBytes);
 }
 
 // Block-compressed files (walls/texture_blocks.h) are paged as blocks and count their GPU

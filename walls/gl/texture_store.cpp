@@ -8,7 +8,7 @@ namespace cavewall::gl {
 
 namespace {
 
-GlObject upload(const walls::DecodedTexture& decoded) {
+GlObject uploadDecoded(const walls::DecodedTexture& decoded) {
     if (decoded.levels.format != walls::TextureFormat::Rgba8) return uploadWallTexture(decoded.levels);
     const auto& levels = decoded.levels.rgba;
     GlObject texture = createTexture(GL_TEXTURE_2D);
@@ -26,7 +26,8 @@ GlObject upload(const walls::DecodedTexture& decoded) {
 }  // namespace
 
 TextureStore::TextureStore(walls::TexturePager& pager, std::size_t uploadBytesPerFrame)
-    : _pager(pager), _uploadBytes(std::max<std::size_t>(uploadBytesPerFrame, 1)), _sampler(createSampler()) {
+    : _pager(pager), _uploadBytes(std::max<std::size_t>(uploadBytesPerFrame, 1)), _pacer(_uploadBytes),
+      _sampler(createSampler()) {
     glSamplerParameteri(_sampler.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
     glSamplerParameteri(_sampler.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glSamplerParameteri(_sampler.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -34,10 +35,23 @@ TextureStore::TextureStore(walls::TexturePager& pager, std::size_t uploadBytesPe
 }
 
 std::size_t TextureStore::update() {
+    const std::size_t uploaded = upload(_pacer.allowance(_pager.readyBytes()), _uploadBytes);
+    _pacer.uploaded(uploaded);
+    return uploaded;
+}
+
+std::size_t TextureStore::updateAll() {
     std::size_t uploaded = 0;
-    for (const walls::DecodedTexture& d : _pager.takeReady(_uploadBytes)) {
+    do uploaded += upload(_uploadBytes);
+    while (_pager.readyBytes() > 0);
+    return uploaded;
+}
+
+std::size_t TextureStore::upload(std::size_t maxBytes, std::size_t maxNowBytes) {
+    std::size_t uploaded = 0;
+    for (const walls::DecodedTexture& d : _pager.takeReady(maxBytes, maxNowBytes)) {
         if (d.levels.count() == 0 || d.levels.width() <= 0 || d.levels.height() <= 0) continue;
-        _textures[d.id] = upload(d);
+        _textures[d.id] = uploadDecoded(d);
         _pager.markResident(d.id, d.bytes);
         uploaded += d.bytes;
     }

@@ -217,8 +217,7 @@ void Walkthrough::planClusters(const walls::FrameInput& input, glm::dvec3 eyeWor
 void Walkthrough::waitForTextures() {
     if (!_walls) return;
     _walls->pager.waitIdle();
-    while (_walls->store.update() > 0) {
-    }
+    _walls->store.updateAll();
 }
 
 GeometryYardsticks Walkthrough::geometryYardsticks() const {
@@ -258,10 +257,8 @@ walls::FramePlan Walkthrough::planFrame(const walls::FrameInput& input, const st
     }
     w.pager.request(wanted.now, wanted.soon);
     if (_options.synchronousPaging) w.pager.waitIdle();
-    // One upload round per frame; synchronous paging uploads until nothing is left.
-    _uploadedBytes = 0;
-    for (std::size_t bytes = w.store.update(); bytes > 0; bytes = _options.synchronousPaging ? w.store.update() : 0)
-        _uploadedBytes += bytes;
+    // One paced upload round per frame; synchronous paging uploads everything.
+    _uploadedBytes = _options.synchronousPaging ? w.store.updateAll() : w.store.update();
     if (!w.geometry) return _planner->plan([&w](int id) { return w.store.resident(id); });
     walls::GeometryPager& pager = w.geometry->pager;
     pager.request(wanted.cellsNow, wanted.cellsSoon);
