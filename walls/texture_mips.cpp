@@ -16,6 +16,7 @@
 #include <cmath>
 #include <system_error>
 #include <unistd.h>
+#include <vector>
 
 namespace cavewall::walls {
 
@@ -133,11 +134,27 @@ FloatImage premultiply(const scenes::Image& straight) {
 }  // namespace
 
 std::uint8_t encodeSrgbByte(float linear) {
-    const std::array<float, 256>& t = thresholds();
+    // Floats in (0, 1] in buckets of their top 16 bits (sign, exponent, 7 mantissa bits): the
+    // byte of each bucket's smallest float, from where at most a step or two up the thresholds
+    // reach the value's own byte (a bucket spans under one byte step: 2^-7 relative width).
+    // Exactly the bisection's answer, at a tenth of its cost (it was 8 % of a bake's CPU).
+    constexpr std::uint32_t kOne = 0x3F800000u;  // 1.0f
+    static const std::vector<std::uint8_t> bucketByte = [] {
+        const std::array<float, 256>& t = thresholds();
+        std::vector<std::uint8_t> table((kOne >> 16) + 1);
+        int k = 0;
+        for (std::uint32_t b = 0; b < table.size(); ++b) {
+            const float lowest = std::bit_cast<float>(b << 16);
+            while (k < 255 && t[k + 1] <= lowest) ++k;
+            table[b] = static_cast<std::uint8_t>(k);
+        }
+        return table;
+    }();
     if (!(linear > 0.0f)) return 0;  // also NaN
-    int k = 0;
-    for (int step = 128; step > 0; step /= 2)
-        if (t[k + step] <= linear) k += step;
+    if (linear >= 1.0f) return 255;
+    const std::array<float, 256>& t = thresholds();
+    int k = bucketByte[std::bit_cast<std::uint32_t>(linear) >> 16];
+    while (k < 255 && t[k + 1] <= linear) ++k;
     return static_cast<std::uint8_t>(k);
 }
 

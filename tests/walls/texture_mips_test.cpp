@@ -55,6 +55,13 @@ TEST(TextureMips, TableEncodingIsTheFormulaExactly) {
         const float v = -0.01f + 1.02f * float(i) / float(1 << 20);
         ASSERT_EQ(encodeSrgbByte(v), formulaByte(v)) << "value " << v;
     }
+    // Both sides of every bucket edge of the encoder's index (the top 16 bits of the float).
+    for (std::uint32_t b = 1; b <= (0x3F800000u >> 16); ++b)
+        for (std::uint32_t bits : {(b << 16) - 1, b << 16, (b << 16) + 1}) {
+            const float v = std::bit_cast<float>(bits);
+            ++checked;
+            ASSERT_EQ(encodeSrgbByte(v), formulaByte(v)) << "value " << v << " at bucket " << b;
+        }
     EXPECT_GT(checked, 3000000);
     EXPECT_EQ(encodeSrgbByte(std::numeric_limits<float>::quiet_NaN()), 0);
 }
