@@ -59,6 +59,11 @@ void toBinaryCoverage(std::uint8_t* texel, const std::array<float, 256>& linear)
         std::fill_n(texel, 4, std::uint8_t(0));
         return;
     }
+    if (a == 255) {  // nearly every texel: the round trip's own table, exactly the same bytes
+        const std::array<std::uint8_t, 256>& opaque = srgbByteRoundTrip();
+        for (int c = 0; c < 3; ++c) texel[c] = opaque[texel[c]];
+        return;
+    }
     const float alpha = a / 255.0f;
     for (int c = 0; c < 3; ++c) texel[c] = encodeSrgbByte(linear[texel[c]] / alpha);
     texel[3] = 255;

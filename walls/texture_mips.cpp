@@ -158,12 +158,36 @@ std::uint8_t encodeSrgbByte(float linear) {
     return static_cast<std::uint8_t>(k);
 }
 
+const std::array<std::uint8_t, 256>& srgbByteRoundTrip() {
+    static const std::array<std::uint8_t, 256> table = [] {
+        std::array<std::uint8_t, 256> t{};
+        for (int b = 0; b < 256; ++b) t[b] = encodeSrgbByte(srgbToLinear(b / 255.0f));
+        return t;
+    }();
+    return table;
+}
+
 std::vector<scenes::Image> premultipliedMipChain(const scenes::Image& straight) {
     assert(straight.width > 0 && straight.height > 0 &&
            straight.rgba.size() == std::size_t(straight.width) * straight.height * 4);
     std::vector<scenes::Image> levels;
     FloatImage level = premultiply(straight);
-    levels.push_back(encode(level, straight.name + " level 0"));
+    // Level 0 is encode(level) exactly; opaque and empty texels (nearly all of a bake) from the
+    // round-trip table and zeros without the float path.
+    scenes::Image first{straight.name + " level 0", straight.width, straight.height,
+                        std::vector<std::uint8_t>(straight.rgba.size())};
+    const std::array<std::uint8_t, 256>& opaque = srgbByteRoundTrip();
+    for (std::size_t i = 0; i < straight.rgba.size(); i += 4) {
+        const std::uint8_t a = straight.rgba[i + 3];
+        if (a == 255) {
+            for (int c = 0; c < 3; ++c) first.rgba[i + c] = opaque[straight.rgba[i + c]];
+            first.rgba[i + 3] = 255;
+        } else if (a != 0) {
+            for (int c = 0; c < 3; ++c) first.rgba[i + c] = encodeSrgbByte(level.rgba[i + c]);
+            first.rgba[i + 3] = toByte(level.rgba[i + 3]);
+        }  // a == 0: premultiplied to zeros, encoded as zeros
+    }
+    levels.push_back(std::move(first));
     while (level.width > 1 || level.height > 1) {
         level = downsample(level);
         levels.push_back(encode(level, straight.name + " level " + std::to_string(levels.size())));

@@ -16,6 +16,7 @@
 
 #include "scenes/scene.h"
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -29,6 +30,9 @@ float linearToSrgb(float linear);
 // The stored byte of a linear value: round(255 * linearToSrgb(clamp(linear, 0, 1))), exactly,
 // from a table of the 255 values where the byte steps up (no pow per texel); 0 for NaN.
 std::uint8_t encodeSrgbByte(float linear);
+// encodeSrgbByte(srgbToLinear(b / 255.0f)) for every byte b: an opaque texel's stored byte
+// (fast paths that must give exactly what the float round trip gives).
+const std::array<std::uint8_t, 256>& srgbByteRoundTrip();
 
 // The full MIP chain of `straight`, an 8-bit RGBA image with straight (non-premultiplied)
 // alpha and sRGB-encoded colour, as produced by an sRGB render target: level 0 is the image

@@ -66,6 +66,27 @@ TEST(TextureMips, TableEncodingIsTheFormulaExactly) {
     EXPECT_EQ(encodeSrgbByte(std::numeric_limits<float>::quiet_NaN()), 0);
 }
 
+TEST(TextureMips, LevelZeroIsThePremultipliedFloatRoundTripForEveryAlpha) {
+    // The chain's level 0 takes fast paths for opaque and empty texels; every texel must be what
+    // premultiplying in float and encoding gives: colour byte of srgbToLinear(c) * a, alpha
+    // round(255 a). Every alpha, 0 and 255 four times as often (as in a bake).
+    std::mt19937 rng(11);
+    scenes::Image straight{"random", 64, 64, std::vector<std::uint8_t>(64 * 64 * 4)};
+    for (std::size_t i = 0; i < straight.rgba.size(); i += 4) {
+        for (int c = 0; c < 3; ++c) straight.rgba[i + c] = static_cast<std::uint8_t>(rng() % 256);
+        const unsigned pick = rng() % 1280;
+        straight.rgba[i + 3] = static_cast<std::uint8_t>(pick < 512 ? 255 : pick < 1024 ? 0 : pick - 1024);
+    }
+    const scenes::Image first = premultipliedMipChain(straight).at(0);
+    for (std::size_t i = 0; i < straight.rgba.size(); i += 4) {
+        const float a = straight.rgba[i + 3] / 255.0f;
+        for (int c = 0; c < 3; ++c)
+            ASSERT_EQ(first.rgba[i + c], encodeSrgbByte(srgbToLinear(straight.rgba[i + c] / 255.0f) * a)) << i;
+        ASSERT_EQ(first.rgba[i + 3], straight.rgba[i + 3]) << i;
+    }
+    for (int b = 0; b < 256; ++b) EXPECT_EQ(srgbByteRoundTrip()[b], encodeSrgbByte(srgbToLinear(b / 255.0f)));
+}
+
 TEST(TextureMips, HalfTransparentEdgeDoesNotDarken) {
     // One opaque white texel beside a fully transparent one: the 1 x 1 level covers half of each,
     // so it is white at half coverage. Averaging straight sRGB values instead would give 128,
