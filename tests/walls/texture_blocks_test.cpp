@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstring>
 #include <iostream>
+#include <random>
 
 namespace cavewall::walls {
 namespace {
@@ -127,6 +128,34 @@ TEST(TextureBlocks, TransparencyIsExact) {
     for (TextureFormat format : {TextureFormat::Bc1, TextureFormat::Bc3}) {
         EXPECT_EQ(decodeLevel(encodeLevel(clear, format), format).rgba, clear.rgba);
     }
+}
+
+// Opaque Bc1 blocks are fitted in the four-colour mode only (texture_blocks.cpp): whatever the
+// block (one colour, whose endpoints may be equal; two colours; noise), it must decode opaque,
+// since a block read in the three-colour mode would make index 3 transparent.
+TEST(TextureBlocks, OpaqueBc1BlocksDecodeOpaqueWhateverTheirColours) {
+    std::mt19937 rng(5);
+    scenes::Image image{"opaque", 64, 16, std::vector<std::uint8_t>(64 * 16 * 4, 255)};
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 64; ++x) {
+            std::uint8_t* t = &image.rgba[(std::size_t(y) * 64 + x) * 4];
+            const int block = x / 4;
+            for (int c = 0; c < 3; ++c)
+                t[c] = block % 4 == 0   ? std::uint8_t(17 * block)                        // one colour
+                       : block % 4 == 1 ? std::uint8_t((x + y) % 2 ? 250 : 3)             // two
+                       : block % 4 == 2 ? std::uint8_t(rng() % 256)                       // noise
+                                        : std::uint8_t(128 + (x % 4) * 40 - (y % 4) * 30);  // a ramp
+        }
+    const scenes::Image decoded = decodeLevel(encodeLevel(image, TextureFormat::Bc1), TextureFormat::Bc1);
+    double error = 0.0;
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+        ASSERT_EQ(decoded.rgba[i + 3], 255) << "texel " << i / 4;
+        for (int c = 0; c < 3; ++c) error += std::abs(int(decoded.rgba[i + c]) - int(image.rgba[i + c]));
+    }
+    // One-colour blocks within the 565 rounding, the rest as a four-colour fit allows.
+    for (int x = 0; x < 64; x += 16)
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(decoded.rgba[std::size_t(x) * 4 + c], image.rgba[std::size_t(x) * 4 + c], 4);
+    EXPECT_LT(error / (64.0 * 16.0 * 3.0), 40.0);
 }
 
 TEST(TextureBlocks, Bc1StoresOpaqueTexelsUnpremultiplied) {
