@@ -4,13 +4,22 @@
 
 #include "config/error.h"
 
+#include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 #include <utility>
 
 namespace cavewall::walls {
 
+namespace {
+constexpr int kWorkerNice = 4;  // nice steps below the thread that made the writer
+}  // namespace
+
 BakeWriter::BakeWriter(std::filesystem::path folder, int jobs, MipFileOptions options, TextureFormat format)
-    : _folder(std::move(folder)), _options(std::move(options)), _format(format), _maxQueued(std::size_t(2 * std::max(1, jobs))) {
+    : _folder(std::move(folder)), _options(std::move(options)), _format(format), _maxQueued(std::size_t(4 * std::max(1, jobs))) {
     for (int i = 0; i < std::max(1, jobs); ++i) _threads.emplace_back([this] { worker(); });
 }
 
@@ -58,6 +67,13 @@ int BakeWriter::pending() const {
 }
 
 void BakeWriter::worker() {
+    // Below the rendering thread and llvmpipe's: a cold bake is bound by the GL thread's draws
+    // (the critical path), while encoding can fill whatever CPU the draws leave; a full queue
+    // lets the workers catch up. Best effort: without the right to it, the priority stays.
+    const pid_t self = static_cast<pid_t>(::syscall(SYS_gettid));
+    errno = 0;
+    const int nice = ::getpriority(PRIO_PROCESS, static_cast<id_t>(self));
+    if (errno == 0) ::setpriority(PRIO_PROCESS, static_cast<id_t>(self), std::min(19, nice + kWorkerNice));
     for (;;) {
         Job job;
         {

@@ -22,7 +22,7 @@ namespace cavewall::walls {
 
 class BakeWriter {
 public:
-    // `folder` receives the files; `jobs` >= 1 threads; at most 2 * jobs rendered images wait
+    // `folder` receives the files; `jobs` >= 1 threads; at most 4 * jobs rendered images wait
     // in memory (submit blocks beyond that). `format` Rgba8: tiled TIFF (writeMipFile with
     // `options`); Bc1, Bc3: the MIP chain encoded into a ".bct" file (walls/texture_blocks.h).
     BakeWriter(std::filesystem::path folder, int jobs, MipFileOptions options,
