@@ -94,7 +94,8 @@ BENCHMARK(BM_BakeTexture)->Arg(256)->Arg(1024)->Unit(benchmark::kMillisecond)->I
 // Levels of detail in the bake (BakeSettings::lodTexels) against full detail, interleaved on
 // the same textures: a sample of CAVEWALL_BENCH_TEXTURES (default 48) textures spread evenly
 // over the plan of the bake the walkthrough uses (alpha 10°, min-zone 1 m, 10 texels per degree,
-// at most 512 texels), each rendered at full detail and at 0.5 texel, timed (draw until the GL
+// at most 512 texels), each rendered at full detail and at BakeSettings::lodTexels (or
+// $CAVEWALL_BENCH_LOD_TEXELS) texels, timed (draw until the GL
 // finished, and read back), and compared: PSNR of the pooled squared error over all sampled
 // textures (R, G, B as stored; scenes/image_error.h), the worst texture's PSNR and the largest
 // per-texel difference (levels 0-255, any channel). Also the file stage of each texture, MIP
@@ -112,7 +113,9 @@ void BM_BakeLodAgainstFullDetail(benchmark::State& state) {
     const Clock::time_point built = Clock::now();
     gl::WallTextureRenderer full(scene, 0.35f, 0.0);
     const Clock::time_point fullMade = Clock::now();
-    gl::WallTextureRenderer lod(scene, 0.35f, 0.5);
+    const char* tolerance = std::getenv("CAVEWALL_BENCH_LOD_TEXELS");
+    const double lodTexels = tolerance && *tolerance ? std::strtod(tolerance, nullptr) : gl::BakeSettings{}.lodTexels;
+    gl::WallTextureRenderer lod(scene, 0.35f, lodTexels);
     const double lodBuildS = std::chrono::duration<double>(Clock::now() - fullMade).count() -
                              std::chrono::duration<double>(fullMade - built).count();
     const std::size_t count = std::min(envSize("CAVEWALL_BENCH_TEXTURES", 48), setup.plan.textures.size());
@@ -157,6 +160,7 @@ void BM_BakeLodAgainstFullDetail(benchmark::State& state) {
     state.counters["full_tris"] = fullTris / n;
     state.counters["lod_tris"] = lodTris / n;
     state.counters["lod_build_s"] = lodBuildS;
+    state.counters["lod_texels"] = lodTexels;
     state.counters["lod_err_texels_max"] = maxErr;
     state.counters["psnr_pooled_db"] = pooled.psnrDb();
     state.counters["psnr_worst_db"] = worstPsnr;
