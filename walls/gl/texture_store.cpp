@@ -6,25 +6,6 @@
 
 namespace cavewall::gl {
 
-namespace {
-
-GlObject uploadDecoded(const walls::DecodedTexture& decoded) {
-    if (decoded.levels.format != walls::TextureFormat::Rgba8) return uploadWallTexture(decoded.levels);
-    const auto& levels = decoded.levels.rgba;
-    GlObject texture = createTexture(GL_TEXTURE_2D);
-    const GLuint id = texture.id();
-    glTextureStorage2D(id, static_cast<GLsizei>(levels.size()), GL_SRGB8_ALPHA8, levels[0].width, levels[0].height);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-    for (std::size_t l = 0; l < levels.size(); ++l)
-        glTextureSubImage2D(id, static_cast<GLint>(l), 0, 0, levels[l].width, levels[l].height, GL_RGBA,
-                            GL_UNSIGNED_BYTE, levels[l].rgba.data());
-    glTextureParameteri(id, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(levels.size()) - 1);
-    return texture;
-}
-
-}  // namespace
-
 TextureStore::TextureStore(walls::TexturePager& pager, std::size_t uploadBytesPerFrame)
     : _pager(pager), _uploadBytes(std::max<std::size_t>(uploadBytesPerFrame, 1)), _pacer(_uploadBytes),
       _sampler(createSampler()) {
@@ -51,7 +32,7 @@ std::size_t TextureStore::upload(std::size_t maxBytes, std::size_t maxNowBytes) 
     std::size_t uploaded = 0;
     for (const walls::DecodedTexture& d : _pager.takeReady(maxBytes, maxNowBytes)) {
         if (d.levels.count() == 0 || d.levels.width() <= 0 || d.levels.height() <= 0) continue;
-        _textures[d.id] = uploadDecoded(d);
+        _textures[d.id] = uploadWallTexture(d.levels);
         _pager.markResident(d.id, d.bytes);
         uploaded += d.bytes;
     }

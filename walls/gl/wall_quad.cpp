@@ -98,6 +98,7 @@ gl::GlObject uploadWallTexture(const std::vector<scenes::Image>& levels) {
                         " x " + std::to_string(l.height));
         glTextureSubImage2D(t.id(), static_cast<GLint>(i), 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, l.rgba.data());
     }
+    glTextureParameteri(t.id(), GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(levels.size()) - 1);
     glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
