@@ -1,7 +1,6 @@
 #include "walls/upload_pacer.h"
 
 #include <algorithm>
-#include <cassert>
 
 namespace cavewall::walls {
 
