@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace cavewall::render {
 
@@ -13,6 +14,12 @@ using Clock = std::chrono::steady_clock;
 
 double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// The squared distance from `eye` to the nearest point of `b` (0 inside).
+double squaredDistance(const scenes::Bounds& b, const glm::dvec3& eye) {
+    const glm::dvec3 outside = glm::max(glm::max(b.min - eye, eye - b.max), glm::dvec3(0.0));
+    return glm::dot(outside, outside);
 }
 
 }  // namespace
@@ -97,24 +104,22 @@ const RenderList& ListBuilder::build(const display::OffAxisFrustum& frustum, con
     std::stable_sort(_blended.begin(), _blended.end(), [&](int a, int b) { return _sortKeys[a] < _sortKeys[b]; });
     // Opaque objects front to back by the distance of their bounds from the eye.
     const glm::dvec3 eye = glm::dvec3(glm::inverse(frameFromWorld) * glm::dvec4(frustum.eye, 1.0));
-    for (int i : _opaque) {
-        const scenes::Bounds& b = objects[i].worldBounds;
-        const glm::dvec3 outside = glm::max(glm::max(b.min - eye, eye - b.max), glm::dvec3(0.0));
-        _sortKeys[i] = glm::dot(outside, outside);
-    }
+    for (int i : _opaque) _sortKeys[i] = squaredDistance(objects[i].worldBounds, eye);
     std::stable_sort(_opaque.begin(), _opaque.end(), [&](int a, int b) { return _sortKeys[a] < _sortKeys[b]; });
-    addDraws(_opaque, filter, eye);
+    addDraws(_opaque, filter, eye, true);
     appendBatches(_scene, _pending, true, 0, list.batches);
     list.draws.insert(list.draws.end(), _pending.begin(), _pending.end());
     list.firstBlended = list.batches.size();
-    addDraws(_blended, filter, eye);
+    addDraws(_blended, filter, eye, false);
     appendBatches(_scene, _pending, false, static_cast<int>(list.draws.size()), list.batches);
     list.draws.insert(list.draws.end(), _pending.begin(), _pending.end());
     return list;
 }
 
-// Fills _pending with the draws of `objects` that have indices at their level.
-void ListBuilder::addDraws(const std::vector<int>& objects, const DrawFilter& filter, const glm::dvec3& eye) {
+// Fills _pending with the draws of `objects` that have indices at their level. `sortedByDistance`:
+// _sortKeys holds their squared distances from the eye already (the opaque order).
+void ListBuilder::addDraws(const std::vector<int>& objects, const DrawFilter& filter, const glm::dvec3& eye,
+                           bool sortedByDistance) {
     _pending.clear();
     const std::vector<int>* levels = filter.lodLevels;
     for (int i : objects) {
@@ -123,8 +128,8 @@ void ListBuilder::addDraws(const std::vector<int>& objects, const DrawFilter& fi
         const int level = _scene.clampLevel(mesh, wanted);
         const std::uint32_t indices = _scene.indexCount(mesh, level);
         if (indices == 0) continue;
-        const scenes::Bounds& b = _scene.objects()[i].worldBounds;
-        const double distance = glm::length(glm::max(glm::max(b.min - eye, eye - b.max), glm::dvec3(0.0)));
+        const double distance =
+            std::sqrt(sortedByDistance ? _sortKeys[i] : squaredDistance(_scene.objects()[i].worldBounds, eye));
         const bool vertexLit = litPerVertex(_scene.flatEdge(mesh, level), _scene.modelStretch(i), distance,
                                             _vertexLightingTolerance);
         _pending.push_back({i, level, vertexLit});

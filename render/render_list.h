@@ -89,7 +89,7 @@ public:
                             const DrawFilter& filter);
 
 private:
-    void addDraws(const std::vector<int>& objects, const DrawFilter& filter, const glm::dvec3& eye);
+    void addDraws(const std::vector<int>& objects, const DrawFilter& filter, const glm::dvec3& eye, bool sortedByDistance);
 
     const RenderScene& _scene;
     RenderList _list;
