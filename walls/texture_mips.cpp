@@ -110,9 +110,19 @@ const std::array<float, 256>& thresholds() {
     return table;
 }
 
-scenes::Image encode(const FloatImage& f, const std::string& name) {
+// `straight`: the 8-bit image `f` was premultiplied from (level 0), whose opaque and empty
+// texels (nearly all of a bake) take the round-trip table and zeros: the same bytes, no floats.
+scenes::Image encode(const FloatImage& f, const std::string& name, const scenes::Image* straight = nullptr) {
     scenes::Image image{name, f.width, f.height, std::vector<std::uint8_t>(f.rgba.size())};
+    const std::array<std::uint8_t, 256>& opaque = srgbByteRoundTrip();
     for (std::size_t i = 0; i < f.rgba.size(); i += 4) {
+        const int a = straight ? straight->rgba[i + 3] : -1;
+        if (a == 0) continue;  // premultiplied to zeros, encoded as zeros
+        if (a == 255) {
+            for (int c = 0; c < 3; ++c) image.rgba[i + c] = opaque[straight->rgba[i + c]];
+            image.rgba[i + 3] = 255;
+            continue;
+        }
         for (int c = 0; c < 3; ++c) image.rgba[i + c] = encodeSrgbByte(f.rgba[i + c]);
         image.rgba[i + 3] = toByte(f.rgba[i + 3]);
     }
@@ -172,22 +182,7 @@ std::vector<scenes::Image> premultipliedMipChain(const scenes::Image& straight) 
            straight.rgba.size() == std::size_t(straight.width) * straight.height * 4);
     std::vector<scenes::Image> levels;
     FloatImage level = premultiply(straight);
-    // Level 0 is encode(level) exactly; opaque and empty texels (nearly all of a bake) from the
-    // round-trip table and zeros without the float path.
-    scenes::Image first{straight.name + " level 0", straight.width, straight.height,
-                        std::vector<std::uint8_t>(straight.rgba.size())};
-    const std::array<std::uint8_t, 256>& opaque = srgbByteRoundTrip();
-    for (std::size_t i = 0; i < straight.rgba.size(); i += 4) {
-        const std::uint8_t a = straight.rgba[i + 3];
-        if (a == 255) {
-            for (int c = 0; c < 3; ++c) first.rgba[i + c] = opaque[straight.rgba[i + c]];
-            first.rgba[i + 3] = 255;
-        } else if (a != 0) {
-            for (int c = 0; c < 3; ++c) first.rgba[i + c] = encodeSrgbByte(level.rgba[i + c]);
-            first.rgba[i + 3] = toByte(level.rgba[i + 3]);
-        }  // a == 0: premultiplied to zeros, encoded as zeros
-    }
-    levels.push_back(std::move(first));
+    levels.push_back(encode(level, straight.name + " level 0", &straight));
     while (level.width > 1 || level.height > 1) {
         level = downsample(level);
         levels.push_back(encode(level, straight.name + " level " + std::to_string(levels.size())));
