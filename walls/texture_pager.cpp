@@ -85,13 +85,9 @@ std::vector<DecodedTexture> TexturePager::takeReady(std::size_t maxBytes, std::s
     const std::size_t now = static_cast<std::size_t>(soon - _ready.begin());
     std::vector<DecodedTexture> out;
     std::size_t bytes = 0;
-    auto fits = [&](std::size_t limit) { return out.empty() || bytes + _ready.front().bytes <= limit; };
-    for (std::size_t i = 0; i < now && !_ready.empty() && fits(std::max(maxBytes, maxNowBytes)); ++i) {
-        bytes += _ready.front().bytes;
-        out.push_back(std::move(_ready.front()));
-        _ready.erase(_ready.begin());
-    }
-    while (!_ready.empty() && fits(maxBytes)) {
+    // The first `now` textures may use the larger of the two limits, the rest maxBytes.
+    auto limit = [&] { return out.size() < now ? std::max(maxBytes, maxNowBytes) : maxBytes; };
+    while (!_ready.empty() && (out.empty() || bytes + _ready.front().bytes <= limit())) {
         bytes += _ready.front().bytes;
         out.push_back(std::move(_ready.front()));
         _ready.erase(_ready.begin());
