@@ -2,11 +2,11 @@
 // GPU residency of baked wall textures: the GL side of walls/texture_pager.h.
 //
 // Each frame the runtime tells the pager what it wants, then calls update(): it uploads the
-// decoded textures the pager has ready: those wanted now at once, prefetches paced
-// (walls/upload_pacer.h: about the rate textures have been arriving), all at most
-// `uploadBytesPerFrame` per frame (at
-// least one texture when any is ready, so a large texture cannot starve), and deletes the
-// textures the pager evicted. updateAll() uploads everything ready (warm-up, synchronous paging). Textures are GL_SRGB8_ALPHA8, or the sRGB S3TC formats of ".bct" files
+// decoded textures the pager has ready (those wanted now at once, prefetches paced by
+// walls/upload_pacer.h; at most `uploadBytesPerFrame` per frame, at least one texture when any
+// is ready, so a large texture cannot starve) and deletes the textures the pager evicted.
+// updateAll() uploads everything ready (warm-up, synchronous paging). Textures are
+// GL_SRGB8_ALPHA8, or the sRGB S3TC formats of ".bct" files
 // (walls/texture_blocks.h, uploaded compressed), with every MIP level the file had (premultiplied
 // alpha, as baked), sampled trilinearly and clamped to the edge.
 // Needs the rendering context current for every call and for destruction.
