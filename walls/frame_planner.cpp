@@ -86,9 +86,28 @@ TextureRequests FramePlanner::requests(const FrameInput& input, const std::vecto
     _eye = glm::dvec3(input.worldFromCave * glm::dvec4(input.head.position, 1.0));
     _outOfView.clear();
     _planned = false;
+    // The eye's velocity from the last frame's (none on the first frame or after a jump back in time).
+    const double dt = input.time - _lastTime;
+    glm::dvec3 velocity = _hasLast && dt > 0.0 ? (_eye - _lastEye) / dt : glm::dvec3(0.0);
+    velocity.y = 0.0;  // along the floor
+    _lastEye = _eye;
+    _lastTime = input.time;
+    _hasLast = true;
     TextureRequests r;
     if (!_selector) return r;
     _selection = _selector->select(_eye);
+    // Where the eye will be if it keeps its velocity, kLookaheadSeconds ahead, at least
+    // kNeighbourMetres (the beyond walls have no neighbouring zones of their own) and at most
+    // kLookaheadMetres away.
+    std::vector<glm::dvec3> ahead;
+    const double speed = glm::length(velocity);
+    for (double t : kLookaheadSeconds) {
+        const double metres = std::clamp(speed * t, kNeighbourMetres, kLookaheadMetres);
+        if (speed > kMovingMetresPerSecond && (ahead.empty() || metres > glm::length(ahead.back() - _eye) + 1e-9))
+            ahead.push_back(_eye + velocity * (metres / speed));
+    }
+    std::vector<FrameSelection> aheadSelections;
+    for (const glm::dvec3& p : ahead) aheadSelections.push_back(_selector->select(p));
     _seen = _selection;
     auto outOfView = [&](const WallBlend& b, bool beyond) {
         if (wallInView(b.wall)) return false;
@@ -108,11 +127,16 @@ TextureRequests FramePlanner::requests(const FrameInput& input, const std::vecto
         for (int dx = -1; dx <= 1; ++dx)
             for (int dz = -1; dz <= 1; ++dz)
                 for (const auto& [id, weight] :
-                     _selector->blendAt(static_cast<int>(side - sides.begin()), eye + 1.5 * glm::dvec2(dx, dz)).textures)
+                     _selector->blendAt(static_cast<int>(side - sides.begin()), eye + kNeighbourMetres * glm::dvec2(dx, dz)).textures)
                     r.soon.push_back(id);
     }
     for (const WallBlend& b : _seen.beyond)
         for (const auto& [id, weight] : b.textures) r.now.push_back(id);
+    // Then what the eye will draw further along its way, nearest first, in view or not.
+    for (const FrameSelection& s : aheadSelections)
+        for (const std::vector<WallBlend>* walls : {&s.walls, &s.beyond})
+            for (const WallBlend& b : *walls)
+                for (const auto& [id, weight] : b.textures) r.soon.push_back(id);
     if (!_requestCells) return r;
     r.cellsNow = _selection.allGeometry() ? std::vector<int>{} : _selection.geometryCells;
     auto soon = [&](int cell) {
@@ -123,9 +147,11 @@ TextureRequests FramePlanner::requests(const FrameInput& input, const std::vecto
     for (int dx = -1; dx <= 1; ++dx)
         for (int dz = -1; dz <= 1; ++dz)
             if (dx != 0 || dz != 0)
-                for (int c : _selector->select(_eye + 1.5 * glm::dvec3(dx, 0, dz)).geometryCells) soon(c);
+                for (int c : _selector->select(_eye + kNeighbourMetres * glm::dvec3(dx, 0, dz)).geometryCells) soon(c);
     for (const std::vector<WallBlend>* walls : {&_selection.walls, &_selection.beyond})
         for (const WallBlend& b : *walls) soon(_walls->plan.walls[b.wall].cells[1 - b.side]);
+    for (const FrameSelection& s : aheadSelections)
+        for (int c : s.geometryCells) soon(c);
     return r;
 }
 

@@ -10,7 +10,10 @@
 //   2. walls outside every given view are neither requested nor drawn (a cluster rank pages only
 //      what its own screens show); they keep a row in FramePlan::walls. The textures drawn now
 //      (weight > 0) are wanted now; those the selection would draw 1.5 m away in each of 8
-//      directions (the neighbouring zones) soon.
+//      directions (the neighbouring zones) soon, then, while the eye moves, those it will draw
+//      along its way (the cells' and beyond walls', in view or not: the selections at the eye's
+//      position 0.125, 0.25 and 0.5 s ahead at its velocity, 1.5 to 12 m away). Geometry
+//      paging's cellsSoon gains those selections' geometry cells likewise.
 //  plan(resident):
 //   3. a wall whose textures are not all resident keeps the textures it drew last (from the
 //      same side) if they are still resident and still within the plan's alpha for this eye
@@ -64,6 +67,13 @@
 namespace cavewall::walls {
 
 inline constexpr int kMaxWallTextures = 4;  // a blend zone mixes at most 2 rows x 2 columns
+// Prefetching (requests()): the neighbouring zones are those kNeighbourMetres away; when the eye
+// moves faster than kMovingMetresPerSecond, also what it will draw kLookaheadSeconds ahead at its
+// current velocity (from kNeighbourMetres to kLookaheadMetres away).
+inline constexpr double kNeighbourMetres = 1.5;
+inline constexpr double kMovingMetresPerSecond = 0.1;
+inline constexpr double kLookaheadSeconds[] = {0.125, 0.25, 0.5};
+inline constexpr double kLookaheadMetres = 12.0;
 
 // True when texture `id` is resident on the GPU (the executor's texture store; a set in tests).
 using Residency = std::function<bool(int id)>;
@@ -166,6 +176,9 @@ private:
     FrameInput _input;
     std::vector<display::ScreenView> _views;
     glm::dvec3 _eye{0.0};
+    glm::dvec3 _lastEye{0.0};                      // the last requests()' eye and time: the velocity
+    double _lastTime = 0.0;
+    bool _hasLast = false;
     FrameSelection _selection, _seen;              // all, and those in view
     std::vector<WallState> _outOfView;
     bool _planned = true;                          // plan() was called for this frame

@@ -226,6 +226,40 @@ TEST_F(FramePlannerTest, WallsOutOfViewAreNeitherRequestedNorDrawnButKeepARow) {
     EXPECT_FALSE(p.walls[0].fallback);
 }
 
+// Prefetching along the way: an eye moving at 40 m/s towards the wall from 5 m before it asks
+// soon for what it will draw 0.125, 0.25 and 0.5 s ahead (5, 10 and 12 m on, at most: the
+// last two in the back cell, through the wall), which the 1.5 m neighbours of a still eye at
+// the same place do not reach; what it wants now is the same.
+TEST_F(FramePlannerTest, AMovingEyePrefetchesWhatItWillDrawAlongItsWay) {
+    const WallSetup walls = setup(10.0);
+    const FrameSelector selector(walls.plan, walls.table, description);
+    FramePlanner moving(scene, description, display, &walls, Transition::Blend, 0.5);
+    FramePlanner still(scene, description, display, &walls, Transition::Blend, 0.5);
+    const double z = 5.0;
+    frame(moving, at({0.0, 1.7, z + 2.0 / 3.0}, 0.0));  // 2/3 m a frame at 60 Hz
+    const FrameInput now = at({0.0, 1.7, z}, 1.0 / 60.0);
+    const TextureRequests m = moving.requests(now, views(now));
+    const TextureRequests s = still.requests(now, views(now));
+    EXPECT_EQ(m.now, s.now);
+    auto has = [](const std::vector<int>& v, int id) { return std::find(v.begin(), v.end(), id) != v.end(); };
+    int ahead = 0, beyondNeighbours = 0;
+    for (double metres : {5.0, 10.0, 12.0}) {
+        const FrameSelection sel = selector.select({0.0, 1.7, z - metres});
+        for (const std::vector<WallBlend>* blends : {&sel.walls, &sel.beyond})
+            for (const WallBlend& b : *blends)
+                for (const auto& [id, weight] : b.textures) {
+                    ++ahead;
+                    EXPECT_TRUE(has(m.soon, id)) << id << " " << metres << " m ahead";
+                    beyondNeighbours += !has(s.soon, id) && !has(s.now, id);
+                }
+    }
+    EXPECT_GT(ahead, 0);
+    EXPECT_GT(beyondNeighbours, 0);
+    // Standing still, nothing beyond the neighbours is asked for.
+    const TextureRequests again = still.requests(now, views(now));
+    EXPECT_EQ(again.soon, s.soon);
+}
+
 TEST_F(FramePlannerTest, AWarpMorphStartsOnASwitchLastsMorphSecondsThenEnds) {
     const WallSetup walls = setup(10.0);
     const FrameSelector selector(walls.plan, walls.table, description);
