@@ -32,7 +32,7 @@ void TexturePager::request(const std::vector<int>& now, const std::vector<int>& 
         _residency.touch(id);
         if (_residency.isResident(id)) return;
         _stats.misses += isNow;
-        const bool pending = _decoding.count(id) ||
+        const bool pending = _decoding.count(id) || _uploading.count(id) ||
                              std::any_of(_ready.begin(), _ready.end(), [&](const DecodedTexture& r) { return r.id == id; });
         if (!pending && std::find(queue.begin(), queue.end(), id) == queue.end()) queue.push_back(id);
     };
@@ -89,10 +89,27 @@ std::vector<DecodedTexture> TexturePager::takeReady(std::size_t maxBytes, std::s
     auto limit = [&] { return out.size() < now ? std::max(maxBytes, maxNowBytes) : maxBytes; };
     while (!_ready.empty() && (out.empty() || bytes + _ready.front().bytes <= limit())) {
         bytes += _ready.front().bytes;
+        _uploading.insert(_ready.front().id);
         out.push_back(std::move(_ready.front()));
         _ready.erase(_ready.begin());
     }
     return out;
+}
+
+std::optional<DecodedTexture> TexturePager::takeNext(bool nowOnly) {
+    std::lock_guard lock(_mutex);
+    auto it = std::find_if(_ready.begin(), _ready.end(), [&](const DecodedTexture& d) { return _residency.wantedNow(d.id); });
+    if (it == _ready.end() && !nowOnly) it = _ready.begin();
+    if (it == _ready.end()) return std::nullopt;
+    DecodedTexture d = std::move(*it);
+    _ready.erase(it);
+    _uploading.insert(d.id);
+    return d;
+}
+
+bool TexturePager::wantedNow(int id) const {
+    std::lock_guard lock(_mutex);
+    return _residency.wantedNow(id);
 }
 
 std::size_t TexturePager::readyBytes() const {
@@ -104,6 +121,7 @@ std::size_t TexturePager::readyBytes() const {
 
 void TexturePager::markResident(int id, std::size_t bytes) {
     std::lock_guard lock(_mutex);
+    _uploading.erase(id);
     _residency.markResident(id, bytes);
 }
 

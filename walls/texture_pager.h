@@ -24,6 +24,7 @@
 #include <functional>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <thread>
 #include <vector>
@@ -64,6 +65,12 @@ public:
     // Textures wanted now may take up to `maxNowBytes` (a frame never waits on pacing for what
     // it draws around); the rest shares `maxBytes` with them.
     std::vector<DecodedTexture> takeReady(std::size_t maxBytes, std::size_t maxNowBytes = 0);
+    // The ready texture of highest priority (wanted now first), or none; with `nowOnly`, only
+    // one wanted now. For an uploader that takes a texture up in pieces over frames: a texture
+    // taken (here or by takeReady) counts as pending until markResident, never decoded again.
+    std::optional<DecodedTexture> takeNext(bool nowOnly);
+    // True when the last request() wants `id` now.
+    bool wantedNow(int id) const;
     // GPU bytes of the decoded textures waiting for takeReady.
     std::size_t readyBytes() const;
     void markResident(int id, std::size_t bytes);
@@ -95,6 +102,7 @@ private:
     std::condition_variable _wake, _idle;
     std::deque<int> _queue;                  // ids to decode, priority order
     std::set<int> _queued, _decoding, _failed;
+    std::set<int> _uploading;                // taken for upload, not yet marked resident
     std::vector<DecodedTexture> _ready;
     ResidencyCore _residency;                    // resident ids, budget and eviction (walls/residency.h)
     PagerStats _stats;                       // misses and failures (the rest from _residency)

@@ -9,7 +9,8 @@ UploadPacer::UploadPacer(std::size_t maxBytesPerFrame) : _max(std::max<std::size
 std::size_t UploadPacer::allowance(std::size_t waitingBytes) {
     // What arrived since the last frame: everything waiting now that did not wait then.
     const double arrived = static_cast<double>(waitingBytes > _leftWaiting ? waitingBytes - _leftWaiting : 0);
-    _meanInflow += (arrived - _meanInflow) / kWindow;
+    _frames = std::clamp(_frames + 1.0, kFirstWindow, kWindow);
+    _meanInflow += (arrived - _meanInflow) / _frames;
     const double steady = kHeadroom * _meanInflow;
     const double backlog = std::max(0.0, static_cast<double>(waitingBytes) - steady);
     const double allowed = std::min(static_cast<double>(_max), steady + backlog / kDrainFrames);

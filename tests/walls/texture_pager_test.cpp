@@ -186,6 +186,34 @@ TEST(TexturePager, WantedNowTexturesPassTheirOwnLimitAndPrefetchesWait) {
     EXPECT_EQ(pager.readyBytes(), kBytes);
 }
 
+// An uploader that puts a texture up over frames (gl::TextureStore's bands) takes it with
+// takeNext: wanted-now textures first, and a taken texture is not decoded again while it waits
+// for markResident, however often it is requested meanwhile.
+TEST(TexturePager, TakeNextGivesWantedNowFirstAndATakenTextureIsNotDecodedAgain) {
+    TexturePager pager(folder(), manifest(), 4.0, fakeDecode);
+    pager.request({}, {3, 4});
+    pager.waitIdle();
+    pager.request({4}, {3});
+    EXPECT_TRUE(pager.wantedNow(4));
+    EXPECT_FALSE(pager.wantedNow(3));
+    const int before = decodes;
+    std::optional<DecodedTexture> first = pager.takeNext(false);
+    ASSERT_TRUE(first);
+    EXPECT_EQ(first->id, 4);                      // wanted now, though decoded second
+    EXPECT_FALSE(pager.takeNext(true));           // no other wanted-now texture is ready
+    std::optional<DecodedTexture> second = pager.takeNext(false);
+    ASSERT_TRUE(second);
+    EXPECT_EQ(second->id, 3);
+    EXPECT_FALSE(pager.takeNext(false));
+    for (int frame = 0; frame < 3; ++frame) pager.request({4}, {3});  // both still in flight
+    pager.waitIdle();
+    EXPECT_EQ(decodes, before);
+    EXPECT_EQ(pager.readyBytes(), 0u);
+    pager.markResident(4, first->bytes);
+    pager.markResident(3, second->bytes);
+    EXPECT_TRUE(pager.isResident(3) && pager.isResident(4));
+}
+
 // Block-compressed files (walls/texture_blocks.h) are paged as blocks and count their GPU
 // bytes: a 256 x 256 BC1 texture with its MIP chain is 43,704 bytes (8 bytes per 4 x 4 block:
 // 32,768 + 8,192 + 2,048 + 512 + 128 + 32 + 8 + 8 + 8), not RGBA8's 349,524.

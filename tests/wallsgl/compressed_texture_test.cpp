@@ -15,10 +15,12 @@
 #include "walls/gl/wall_quad.h"
 #include "walls/texture_blocks.h"
 #include "walls/texture_mips.h"
+#include "walls/upload_cursor.h"
 
 #include "display/gl/gl_object.h"
 #include <gmock/gmock.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <limits>
@@ -119,6 +121,49 @@ TEST_F(CompressedTextureTest, BlocksStayCompressedAndDecodeLikeRgba8) {
         const scenes::Image clear = drawFilling(drawer, 0, 64);
         EXPECT_FALSE(scenes::compareImages(gpu, clear).passes());
     }
+}
+
+// The texture store uploads prefetches in bands over frames (walls/upload_cursor.h): a texture
+// put up band by band, for every format, a level of a size that is no multiple of 4 included,
+// holds exactly the bytes of one uploaded whole (read back level by level).
+TEST_F(CompressedTextureTest, BandByBandUploadsHoldTheSameTexelsAsAWholeUpload) {
+    scenes::Image odd = testTexture();
+    odd.width = 60, odd.height = 38;  // a 60 x 38 crop: level 0 ends in half a block row
+    odd.rgba.resize(std::size_t(60) * 38 * 4);
+    for (int y = 0; y < 38; ++y)
+        std::copy_n(&testTexture().rgba[std::size_t(y) * 64 * 4], 60 * 4, &odd.rgba[std::size_t(y) * 60 * 4]);
+    for (const scenes::Image& image : {testTexture(), odd})
+        for (TextureFormat format : {TextureFormat::Rgba8, TextureFormat::Bc1, TextureFormat::Bc3}) {
+            SCOPED_TRACE(std::string(walls::textureFormatName(format)) + " " + std::to_string(image.width));
+            const std::vector<scenes::Image> rgba = walls::premultipliedMipChain(image);
+            const walls::TextureLevels levels = format == TextureFormat::Rgba8 ? walls::TextureLevels(rgba)
+                                                                               : walls::encodeLevels(rgba, format);
+            const GlObject whole = uploadWallTexture(levels);
+            const GlObject banded = createWallTexture(levels);
+            walls::UploadCursor cursor(levels);
+            int bands = 0;
+            while (!cursor.done()) {
+                uploadWallTextureBand(banded.id(), levels, cursor.next(300));  // a few rows at a time
+                ++bands;
+            }
+            EXPECT_GT(bands, static_cast<int>(levels.count()));  // level 0 took several bands
+            ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+            for (std::size_t l = 0; l < levels.count(); ++l) {
+                const std::size_t bytes = format == TextureFormat::Rgba8 ? levels.rgba[l].rgba.size()
+                                                                         : levels.blocks[l].blocks.size();
+                std::vector<std::uint8_t> a(bytes, 1), b(bytes, 2);
+                glPixelStorei(GL_PACK_ALIGNMENT, 1);
+                if (format == TextureFormat::Rgba8) {
+                    glGetTextureImage(whole.id(), GLint(l), GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(bytes), a.data());
+                    glGetTextureImage(banded.id(), GLint(l), GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(bytes), b.data());
+                } else {
+                    glGetCompressedTextureImage(whole.id(), GLint(l), GLsizei(bytes), a.data());
+                    glGetCompressedTextureImage(banded.id(), GLint(l), GLsizei(bytes), b.data());
+                }
+                ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << "level " << l;
+                EXPECT_EQ(a, b) << "level " << l;
+            }
+        }
 }
 
 // Bakes the bake test scene in `format` (textures of at most 128 texels) into `cache`.

@@ -16,13 +16,33 @@ TextureStore::TextureStore(walls::TexturePager& pager, std::size_t uploadBytesPe
 }
 
 std::size_t TextureStore::update() {
-    const std::size_t uploaded = upload(_pacer.allowance(_pager.readyBytes()), _uploadBytes);
+    const std::size_t inFlight = _inFlight ? _inFlight->cursor->remainingBytes() : 0;
+    const std::size_t allowed = _pacer.allowance(_pager.readyBytes() + inFlight);
+    std::size_t uploaded = 0;
+    // Wanted now: whole and at once, a prefetch in flight included.
+    if (_inFlight && _pager.wantedNow(_inFlight->decoded.id)) uploaded += finishInFlight();
+    while (uploaded < _uploadBytes)
+        if (std::optional<walls::DecodedTexture> d = _pager.takeNext(true)) uploaded += finishWhole(std::move(*d));
+        else break;
+    // Prefetches: bands within what the pacer allows, what the frame wants now counted in.
+    while (uploaded < allowed) {
+        if (!_inFlight) {
+            std::optional<walls::DecodedTexture> d = _pager.takeNext(false);
+            if (!d) break;
+            if (d->levels.count() == 0 || d->levels.width() <= 0 || d->levels.height() <= 0) continue;
+            GlObject texture = createWallTexture(d->levels);
+            _inFlight.emplace(InFlight{std::move(*d), std::move(texture), nullptr});
+            _inFlight->cursor = std::make_unique<walls::UploadCursor>(_inFlight->decoded.levels);
+        }
+        uploaded += advance(allowed - uploaded);
+    }
     _pacer.uploaded(uploaded);
+    for (int id : _pager.takeEvictions()) _textures.erase(id);
     return uploaded;
 }
 
 std::size_t TextureStore::updateAll() {
-    std::size_t uploaded = 0;
+    std::size_t uploaded = _inFlight ? finishInFlight() : 0;
     do uploaded += upload(_uploadBytes);
     while (_pager.readyBytes() > 0);
     return uploaded;
@@ -30,13 +50,36 @@ std::size_t TextureStore::updateAll() {
 
 std::size_t TextureStore::upload(std::size_t maxBytes, std::size_t maxNowBytes) {
     std::size_t uploaded = 0;
-    for (const walls::DecodedTexture& d : _pager.takeReady(maxBytes, maxNowBytes)) {
-        if (d.levels.count() == 0 || d.levels.width() <= 0 || d.levels.height() <= 0) continue;
-        _textures[d.id] = uploadWallTexture(d.levels);
-        _pager.markResident(d.id, d.bytes);
-        uploaded += d.bytes;
-    }
+    for (walls::DecodedTexture& d : _pager.takeReady(maxBytes, maxNowBytes)) uploaded += finishWhole(std::move(d));
     for (int id : _pager.takeEvictions()) _textures.erase(id);
+    return uploaded;
+}
+
+std::size_t TextureStore::finishWhole(walls::DecodedTexture d) {
+    if (d.levels.count() == 0 || d.levels.width() <= 0 || d.levels.height() <= 0) return 0;
+    _textures[d.id] = uploadWallTexture(d.levels);
+    _pager.markResident(d.id, d.bytes);
+    return d.bytes;
+}
+
+std::size_t TextureStore::advance(std::size_t maxBytes) {
+    InFlight& f = *_inFlight;
+    std::size_t uploaded = 0;
+    // One band per level at most per call; the caller loops while bytes remain.
+    const walls::UploadPiece piece = f.cursor->next(maxBytes);
+    uploadWallTextureBand(f.texture.id(), f.decoded.levels, piece);
+    uploaded += piece.bytes;
+    if (f.cursor->done()) {
+        _textures[f.decoded.id] = std::move(f.texture);
+        _pager.markResident(f.decoded.id, f.decoded.bytes);
+        _inFlight.reset();
+    }
+    return uploaded;
+}
+
+std::size_t TextureStore::finishInFlight() {
+    std::size_t uploaded = 0;
+    while (_inFlight) uploaded += advance(_inFlight->cursor->remainingBytes());
     return uploaded;
 }
 

@@ -1,10 +1,11 @@
 #pragma once
 // GPU residency of baked wall textures: the GL side of walls/texture_pager.h.
 //
-// Each frame the runtime tells the pager what it wants, then calls update(): it uploads the
-// decoded textures the pager has ready (those wanted now at once, prefetches paced by
-// walls/upload_pacer.h; at most `uploadBytesPerFrame` per frame, at least one texture when any
-// is ready, so a large texture cannot starve) and deletes the textures the pager evicted.
+// Each frame the runtime tells the pager what it wants, then calls update(): textures wanted now
+// are uploaded at once and whole (up to `uploadBytesPerFrame`, at least one: a large texture
+// cannot starve); prefetches go up in bands (walls/upload_cursor.h) at the byte rate
+// walls/upload_pacer.h allows, one texture at a time, drawn once its last band is up (a prefetch
+// the frame comes to want now is finished at once). Then it deletes the textures the pager evicted.
 // updateAll() uploads everything ready (warm-up, synchronous paging). Textures are
 // GL_SRGB8_ALPHA8, or the sRGB S3TC formats of ".bct" files
 // (walls/texture_blocks.h, uploaded compressed), with every MIP level the file had (premultiplied
@@ -13,10 +14,13 @@
 
 #include "display/gl/gl_object.h"
 #include "walls/texture_pager.h"
+#include "walls/upload_cursor.h"
 #include "walls/upload_pacer.h"
 
 #include <cstddef>
 #include <map>
+#include <memory>
+#include <optional>
 
 namespace cavewall::gl {
 
@@ -36,11 +40,21 @@ public:
     GLuint sampler() const { return _sampler.id(); }
 
 private:
+    // A prefetch partly uploaded: its levels, texture and where its next band starts.
+    struct InFlight {
+        walls::DecodedTexture decoded;
+        GlObject texture;
+        std::unique_ptr<walls::UploadCursor> cursor;  // points into decoded.levels
+    };
     std::size_t upload(std::size_t maxBytes, std::size_t maxNowBytes = 0);  // one takeReady round, then evictions
+    std::size_t finishWhole(walls::DecodedTexture d);  // uploads all of `d` and makes it resident
+    std::size_t advance(std::size_t maxBytes);         // uploads bands of the in-flight prefetch
+    std::size_t finishInFlight();
 
     walls::TexturePager& _pager;
     std::size_t _uploadBytes;
     walls::UploadPacer _pacer;
+    std::optional<InFlight> _inFlight;
     std::map<int, GlObject> _textures;
     GlObject _sampler;
 };

@@ -52,29 +52,38 @@ unsigned glInternalFormat(walls::TextureFormat format) {
     return GL_SRGB8_ALPHA8;
 }
 
-gl::GlObject uploadWallTexture(const walls::TextureLevels& levels) {
-    if (levels.format == walls::TextureFormat::Rgba8) return uploadWallTexture(levels.rgba);
-    const std::string name(walls::textureFormatName(levels.format));
-    if (!supportsTextureFormat(levels.format))
-        throw Error("wall texture: expected a context that samples " + name +
-                    " (GL_EXT_texture_compression_s3tc with sRGB), got one without it; bake with --texture-format rgba8");
-    const auto& l = levels.blocks;
-    if (l.empty() || l[0].width <= 0 || l[0].height <= 0)
+namespace {
+
+// Throws unless level i of `levels` has the i-th MIP size of level 0 and its bytes.
+void checkLevels(const walls::TextureLevels& levels) {
+    if (levels.count() == 0 || levels.width() <= 0 || levels.height() <= 0)
         throw Error("wall texture: expected at least one non-empty MIP level, got none");
-    const GLenum internal = glInternalFormat(levels.format);
-    gl::GlObject t = gl::createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(t.id(), static_cast<GLsizei>(l.size()), internal, l[0].width, l[0].height);
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-    for (std::size_t i = 0; i < l.size(); ++i) {
-        const int w = std::max(1, l[0].width >> i), h = std::max(1, l[0].height >> i);
-        if (l[i].width != w || l[i].height != h || l[i].blocks.size() != walls::levelBytes(levels.format, w, h))
-            throw Error("wall texture: " + name + " MIP level " + std::to_string(i) + ": expected " + std::to_string(w) +
-                        " x " + std::to_string(h) + ", got " + std::to_string(l[i].width) + " x " +
-                        std::to_string(l[i].height));
-        glCompressedTextureSubImage2D(t.id(), static_cast<GLint>(i), 0, 0, w, h, internal,
-                                      static_cast<GLsizei>(l[i].blocks.size()), l[i].blocks.data());
+    const bool rgba = levels.format == walls::TextureFormat::Rgba8;
+    const std::string name = rgba ? "'" + levels.rgba[0].name + "'" : std::string(walls::textureFormatName(levels.format));
+    for (std::size_t i = 0; i < levels.count(); ++i) {
+        const int w = std::max(1, levels.width() >> i), h = std::max(1, levels.height() >> i);
+        const int gotW = rgba ? levels.rgba[i].width : levels.blocks[i].width;
+        const int gotH = rgba ? levels.rgba[i].height : levels.blocks[i].height;
+        const std::size_t bytes = rgba ? levels.rgba[i].rgba.size() : levels.blocks[i].blocks.size();
+        if (gotW != w || gotH != h || bytes != walls::levelBytes(levels.format, w, h))
+            throw Error("wall texture " + name + ": MIP level " + std::to_string(i) + ": expected " + std::to_string(w) +
+                        " x " + std::to_string(h) + " (" + std::to_string(walls::levelBytes(levels.format, w, h)) +
+                        " bytes), got " + std::to_string(gotW) + " x " + std::to_string(gotH) + " (" +
+                        std::to_string(bytes) + " bytes)");
     }
-    glTextureParameteri(t.id(), GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(l.size()) - 1);
+}
+
+}  // namespace
+
+gl::GlObject createWallTexture(const walls::TextureLevels& levels) {
+    if (levels.format != walls::TextureFormat::Rgba8 && !supportsTextureFormat(levels.format))
+        throw Error("wall texture: expected a context that samples " + std::string(walls::textureFormatName(levels.format)) +
+                    " (GL_EXT_texture_compression_s3tc with sRGB), got one without it; bake with --texture-format rgba8");
+    checkLevels(levels);
+    gl::GlObject t = gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(t.id(), static_cast<GLsizei>(levels.count()), glInternalFormat(levels.format), levels.width(),
+                       levels.height());
+    glTextureParameteri(t.id(), GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(levels.count()) - 1);
     glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -82,28 +91,30 @@ gl::GlObject uploadWallTexture(const walls::TextureLevels& levels) {
     return t;
 }
 
-gl::GlObject uploadWallTexture(const std::vector<scenes::Image>& levels) {
-    if (levels.empty() || levels[0].width <= 0 || levels[0].height <= 0)
-        throw Error("wall texture: expected at least one non-empty MIP level, got none");
-    gl::GlObject t = gl::createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(t.id(), static_cast<GLsizei>(levels.size()), GL_SRGB8_ALPHA8, levels[0].width, levels[0].height);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+void uploadWallTextureBand(GLuint texture, const walls::TextureLevels& levels, const walls::UploadPiece& piece) {
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-    for (std::size_t i = 0; i < levels.size(); ++i) {
-        const scenes::Image& l = levels[i];
-        const int w = std::max(1, levels[0].width >> i), h = std::max(1, levels[0].height >> i);
-        if (l.width != w || l.height != h || l.rgba.size() != std::size_t(w) * h * 4)
-            throw Error("wall texture '" + l.name + "': MIP level " + std::to_string(i) + ": expected " +
-                        std::to_string(w) + " x " + std::to_string(h) + " RGBA, got " + std::to_string(l.width) +
-                        " x " + std::to_string(l.height));
-        glTextureSubImage2D(t.id(), static_cast<GLint>(i), 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, l.rgba.data());
+    const auto level = static_cast<std::size_t>(piece.level);
+    if (levels.format == walls::TextureFormat::Rgba8) {
+        const scenes::Image& l = levels.rgba[level];
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTextureSubImage2D(texture, piece.level, 0, piece.y, l.width, piece.rows, GL_RGBA, GL_UNSIGNED_BYTE,
+                            l.rgba.data() + piece.offset);
+        return;
     }
-    glTextureParameteri(t.id(), GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(levels.size()) - 1);
-    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    const walls::BlockLevel& l = levels.blocks[level];
+    glCompressedTextureSubImage2D(texture, piece.level, 0, piece.y, l.width, piece.rows, glInternalFormat(levels.format),
+                                  static_cast<GLsizei>(piece.bytes), l.blocks.data() + piece.offset);
+}
+
+gl::GlObject uploadWallTexture(const walls::TextureLevels& levels) {
+    gl::GlObject t = createWallTexture(levels);
+    walls::UploadCursor cursor(levels);
+    while (!cursor.done()) uploadWallTextureBand(t.id(), levels, cursor.next(levels.bytes()));
     return t;
+}
+
+gl::GlObject uploadWallTexture(const std::vector<scenes::Image>& levels) {
+    return uploadWallTexture(walls::TextureLevels(levels));
 }
 
 WallQuadDrawer::WallQuadDrawer()

@@ -7,6 +7,7 @@
 #include "display/off_axis.h"
 #include "scenes/scene.h"
 #include "walls/texture_blocks.h"
+#include "walls/upload_cursor.h"
 
 #include <vector>
 
@@ -21,6 +22,12 @@ gl::GlObject uploadWallTexture(const std::vector<scenes::Image>& levels);
 // (glCompressedTextureSubImage2D), so the sampler decodes sRGB to linear as for RGBA8. Throws
 // Error when the context lacks S3TC with sRGB (supportsTextureFormat) or levels are inconsistent.
 gl::GlObject uploadWallTexture(const walls::TextureLevels& levels);
+// uploadWallTexture in steps, for an uploader that spreads a texture over frames
+// (walls/gl/texture_store.h): the texture with every level's storage and the sampling state but
+// no texels (same checks and errors), then each band of walls/upload_cursor.h from `levels`
+// (the same levels, unchanged). Sampling it before its last band is up reads undefined texels.
+gl::GlObject createWallTexture(const walls::TextureLevels& levels);
+void uploadWallTextureBand(GLuint texture, const walls::TextureLevels& levels, const walls::UploadPiece& piece);
 // Whether the current context can sample `format` (Rgba8 always; Bc1, Bc3 need
 // GL_EXT_texture_compression_s3tc and GL_EXT_texture_sRGB or ..._s3tc_srgb).
 bool supportsTextureFormat(walls::TextureFormat format);
