@@ -372,6 +372,8 @@ std::string modeLabel(const ModeResult& m) {
 }
 
 std::string fixed(double v, int decimals) {
+    if (std::isinf(v)) return v > 0.0 ? "inf" : "-inf";  // e.g. the PSNR of identical images
+    if (std::isnan(v)) return "nan";
     std::ostringstream s;
     s.setf(std::ios::fixed);
     s.precision(decimals);

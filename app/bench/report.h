@@ -119,7 +119,7 @@ struct BenchReport {
 };
 
 // The CSV header line (without newline), starting with the columns the issue requires.
-// `v` with `decimals` digits after the point (no exponent).
+// `v` with `decimals` digits after the point (no exponent); inf, -inf and nan spelled so.
 std::string fixed(double v, int decimals = 1);
 
 std::string csvHeader();

@@ -2,6 +2,7 @@
 
 #include "config/error.h"
 #include "app/bench/plot.h"
+#include "app/bench/report.h"
 #include "scenes/image_io.h"
 
 #include <algorithm>
@@ -17,14 +18,6 @@ namespace cavewall::bench {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-std::string num(double v, int decimals = 2) {
-    if (std::isinf(v)) return v > 0.0 ? "inf" : "-inf";  // PSNR of identical images
-    if (std::isnan(v)) return "nan";
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, v);
-    return buffer;
-}
 
 double millions(std::size_t triangles) { return static_cast<double>(triangles) / 1e6; }
 
@@ -80,13 +73,13 @@ std::string scaleCsv(const ScaleReport& report) {
                       "worst_frame_psnr_db,flip_mean\n";
     for (const ScaleRow& r : report.rows)
         out += std::to_string(r.targetTriangles) + "," + std::to_string(r.triangles) + "," + std::to_string(r.cells) + "," +
-               std::string(toString(r.mode)) + "," + num(r.frameMs.p50, 3) + "," + num(r.frameMs.p95, 3) + "," +
-               num(r.frameMs.p99, 3) + "," + num(r.trianglesPerFrame, 0) + "," + num(r.residentMB, 3) + "," +
-               num(r.pagedPeakMB, 3) + "," + num(r.wholeModelMB, 3) + "," + num(r.largestThreeCellsMB, 3) + "," +
-               num(r.loadSeconds, 3) + "," + num(r.firstFrameSeconds, 3) + "," + std::to_string(r.geometryMisses) + "," +
+               std::string(toString(r.mode)) + "," + fixed(r.frameMs.p50, 3) + "," + fixed(r.frameMs.p95, 3) + "," +
+               fixed(r.frameMs.p99, 3) + "," + fixed(r.trianglesPerFrame, 0) + "," + fixed(r.residentMB, 3) + "," +
+               fixed(r.pagedPeakMB, 3) + "," + fixed(r.wholeModelMB, 3) + "," + fixed(r.largestThreeCellsMB, 3) + "," +
+               fixed(r.loadSeconds, 3) + "," + fixed(r.firstFrameSeconds, 3) + "," + std::to_string(r.geometryMisses) + "," +
                std::to_string(r.geometryPageIns) + "," + std::to_string(r.texturesOverAlpha) + "," +
-               std::to_string(r.comparedFrames) + "," + num(r.psnrDb, 3) + "," + num(r.worstFramePsnrDb, 3) + "," +
-               num(r.flipMean, 5) + "\n";
+               std::to_string(r.comparedFrames) + "," + fixed(r.psnrDb, 3) + "," + fixed(r.worstFramePsnrDb, 3) + "," +
+               fixed(r.flipMean, 5) + "\n";
     return out;
 }
 
@@ -98,29 +91,29 @@ std::string scaleMarkdown(const ScaleReport& report) {
            "PSNR dB pooled (worst frame) | FLIP mean |\n"
            "| ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
     for (const ScaleRow& r : report.rows)
-        out += "| " + num(millions(r.triangles), 2) + " M | " + std::to_string(r.cells) + " | " +
-               std::string(toString(r.mode)) + " | " + num(r.frameMs.p50) + " | " + num(r.frameMs.p95) + " | " +
-               num(r.trianglesPerFrame, 0) + " | " + num(r.residentMB) + " | " +
-               (r.mode == ScaleMode::Walls ? num(r.pagedPeakMB) : std::string("–")) + " | " + num(r.wholeModelMB) +
-               " | " + num(r.largestThreeCellsMB) + " | " + num(r.loadSeconds) + " | " + num(r.firstFrameSeconds) +
+        out += "| " + fixed(millions(r.triangles), 2) + " M | " + std::to_string(r.cells) + " | " +
+               std::string(toString(r.mode)) + " | " + fixed(r.frameMs.p50, 2) + " | " + fixed(r.frameMs.p95, 2) + " | " +
+               fixed(r.trianglesPerFrame, 0) + " | " + fixed(r.residentMB, 2) + " | " +
+               (r.mode == ScaleMode::Walls ? fixed(r.pagedPeakMB, 2) : std::string("–")) + " | " + fixed(r.wholeModelMB, 2) +
+               " | " + fixed(r.largestThreeCellsMB, 2) + " | " + fixed(r.loadSeconds, 2) + " | " + fixed(r.firstFrameSeconds, 2) +
                " | " + std::to_string(r.geometryMisses) + " | " + std::to_string(r.texturesOverAlpha) + " | " +
-               (r.comparedFrames > 0 ? num(r.psnrDb, 1) + " (" + num(r.worstFramePsnrDb, 1) + ")" : std::string("–")) +
-               " | " + (r.comparedFrames > 0 ? num(r.flipMean, 4) : std::string("–")) + " |\n";
+               (r.comparedFrames > 0 ? fixed(r.psnrDb, 1) + " (" + fixed(r.worstFramePsnrDb, 1) + ")" : std::string("–")) +
+               " | " + (r.comparedFrames > 0 ? fixed(r.flipMean, 4) : std::string("–")) + " |\n";
     out += "\nSlopes (least squares of the median frame ms against millions of triangles) and growth (median at the "
            "largest size over the smallest):\n\n";
     for (ScaleMode m : {ScaleMode::Full, ScaleMode::Near, ScaleMode::Walls})
-        out += "- " + std::string(toString(m)) + ": " + num(msPerMillionTriangles(report, m), 3) + " ms per M triangles, " +
-               num(growth(report, m)) + "x\n";
+        out += "- " + std::string(toString(m)) + ": " + fixed(msPerMillionTriangles(report, m), 3) + " ms per M triangles, " +
+               fixed(growth(report, m), 2) + "x\n";
     out += "\nWalls against full geometry at each size (median frame ms over median frame ms, and the walls' image "
            "error):\n\n";
     for (const ScaleRow* w : rowsOf(report, ScaleMode::Walls))
         for (const ScaleRow* f : rowsOf(report, ScaleMode::Full))
             if (f->targetTriangles == w->targetTriangles && w->frameMs.p50 > 0.0)
-                out += "- " + num(millions(w->triangles), 2) + " M triangles: speed-up " +
-                       num(f->frameMs.p50 / w->frameMs.p50) + "x, " +
-                       (w->comparedFrames > 0 ? "pooled PSNR " + num(w->psnrDb, 1) + " dB (worst frame " +
-                                                    num(w->worstFramePsnrDb, 1) + " dB), FLIP mean " +
-                                                    num(w->flipMean, 4) + " over " +
+                out += "- " + fixed(millions(w->triangles), 2) + " M triangles: speed-up " +
+                       fixed(f->frameMs.p50 / w->frameMs.p50, 2) + "x, " +
+                       (w->comparedFrames > 0 ? "pooled PSNR " + fixed(w->psnrDb, 1) + " dB (worst frame " +
+                                                    fixed(w->worstFramePsnrDb, 1) + " dB), FLIP mean " +
+                                                    fixed(w->flipMean, 4) + " over " +
                                                     std::to_string(w->comparedFrames) + " compared frames"
                                               : std::string("image error not compared")) +
                        ", " + std::to_string(w->texturesOverAlpha) + " textures over alpha\n";
