@@ -124,10 +124,10 @@ TextureRequests FramePlanner::requests(const FrameInput& input, const std::vecto
                                        [&](const WallSide& s) { return s.cell == _seen.cell && s.wall == b.wall; });
         if (side == sides.end()) continue;
         // Neighbouring zones: what the selection would draw 1.5 m away in each direction.
+        const int sideIndex = static_cast<int>(side - sides.begin());
         for (int dx = -1; dx <= 1; ++dx)
             for (int dz = -1; dz <= 1; ++dz)
-                for (const auto& [id, weight] :
-                     _selector->blendAt(static_cast<int>(side - sides.begin()), eye + kNeighbourMetres * glm::dvec2(dx, dz)).textures)
+                for (const auto& [id, weight] : _selector->blendAt(sideIndex, eye + kNeighbourMetres * glm::dvec2(dx, dz)).textures)
                     r.soon.push_back(id);
     }
     for (const WallBlend& b : _seen.beyond)

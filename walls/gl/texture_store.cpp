@@ -63,18 +63,16 @@ std::size_t TextureStore::finishWhole(walls::DecodedTexture d) {
 }
 
 std::size_t TextureStore::advance(std::size_t maxBytes) {
+    // One band (within one level); the callers loop while bytes remain.
     InFlight& f = *_inFlight;
-    std::size_t uploaded = 0;
-    // One band per level at most per call; the caller loops while bytes remain.
     const walls::UploadPiece piece = f.cursor->next(maxBytes);
     uploadWallTextureBand(f.texture.id(), f.decoded.levels, piece);
-    uploaded += piece.bytes;
     if (f.cursor->done()) {
         _textures[f.decoded.id] = std::move(f.texture);
         _pager.markResident(f.decoded.id, f.decoded.bytes);
         _inFlight.reset();
     }
-    return uploaded;
+    return piece.bytes;
 }
 
 std::size_t TextureStore::finishInFlight() {

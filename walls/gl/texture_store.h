@@ -48,7 +48,7 @@ private:
     };
     std::size_t upload(std::size_t maxBytes, std::size_t maxNowBytes = 0);  // one takeReady round, then evictions
     std::size_t finishWhole(walls::DecodedTexture d);  // uploads all of `d` and makes it resident
-    std::size_t advance(std::size_t maxBytes);         // uploads bands of the in-flight prefetch
+    std::size_t advance(std::size_t maxBytes);         // uploads the in-flight prefetch's next band
     std::size_t finishInFlight();
 
     walls::TexturePager& _pager;
