@@ -101,9 +101,13 @@ std::string scaleMarkdown(const ScaleReport& report) {
                " | " + (r.comparedFrames > 0 ? fixed(r.flipMean, 4) : std::string("–")) + " |\n";
     out += "\nSlopes (least squares of the median frame ms against millions of triangles) and growth (median at the "
            "largest size over the smallest):\n\n";
-    for (ScaleMode m : {ScaleMode::Full, ScaleMode::Near, ScaleMode::Walls})
-        out += "- " + std::string(toString(m)) + ": " + fixed(msPerMillionTriangles(report, m), 3) + " ms per M triangles, " +
-               fixed(growth(report, m), 2) + "x\n";
+    for (ScaleMode m : {ScaleMode::Full, ScaleMode::Near, ScaleMode::Walls}) {
+        const double slope = msPerMillionTriangles(report, m);
+        out += "- " + std::string(toString(m)) + ": " +
+               (std::isnan(slope) ? std::string("no slope (it needs two sizes or more)")
+                                  : fixed(slope, 3) + " ms per M triangles, " + fixed(growth(report, m), 2) + "x") +
+               "\n";
+    }
     out += "\nWalls against full geometry at each size (median frame ms over median frame ms, and the walls' image "
            "error):\n\n";
     for (const ScaleRow* w : rowsOf(report, ScaleMode::Walls))

@@ -47,6 +47,9 @@ TEST(BenchScale, SlopesAreLeastSquaresInMsPerMillionTriangles) {
     EXPECT_NEAR(growth(r, ScaleMode::Walls), 1.6, 1e-12);
     EXPECT_TRUE(std::isnan(msPerMillionTriangles(r, ScaleMode::Near)));  // no rows
     EXPECT_THAT(scaleMarkdown(r), HasSubstr("- full: 10.000 ms per M triangles, 4.00x"));
+    // A mode with fewer than two sizes (here none) says so instead of printing nan.
+    EXPECT_THAT(scaleMarkdown(r), HasSubstr("- near: no slope (it needs two sizes or more)"));
+    EXPECT_THAT(scaleMarkdown(r), ::testing::Not(HasSubstr("nan")));
 }
 
 TEST(BenchScale, SizeListTakesSuffixesAndRejectsBadEntries) {
