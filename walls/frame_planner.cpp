@@ -101,10 +101,13 @@ TextureRequests FramePlanner::requests(const FrameInput& input, const std::vecto
     // kLookaheadMetres away.
     std::vector<glm::dvec3> ahead;
     const double speed = glm::length(velocity);
+    double lastMetres = 0.0;  // clamping can repeat a point; each is selected once
     for (double t : kLookaheadSeconds) {
         const double metres = std::clamp(speed * t, kNeighbourMetres, kLookaheadMetres);
-        if (speed > kMovingMetresPerSecond && (ahead.empty() || metres > glm::length(ahead.back() - _eye) + 1e-9))
+        if (speed > kMovingMetresPerSecond && metres > lastMetres) {
             ahead.push_back(_eye + velocity * (metres / speed));
+            lastMetres = metres;
+        }
     }
     std::vector<FrameSelection> aheadSelections;
     for (const glm::dvec3& p : ahead) aheadSelections.push_back(_selector->select(p));

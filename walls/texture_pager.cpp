@@ -65,7 +65,8 @@ void TexturePager::worker() {
             if (ok) d.levels = _decoder(path);
             ok = ok && textureFileValid(_folder, texture);
             d.bytes = d.levels.bytes();
-            ok = ok && d.levels.count() > 0;
+            // The uploader relies on at least one level of non-zero size.
+            ok = ok && d.levels.count() > 0 && d.levels.width() > 0 && d.levels.height() > 0;
         } catch (const std::exception&) {
             ok = false;
         }
@@ -75,25 +76,6 @@ void TexturePager::worker() {
         else if (_failed.insert(id).second) ++_stats.failures;
         if (_queue.empty() && _decoding.empty()) _idle.notify_all();
     }
-}
-
-std::vector<DecodedTexture> TexturePager::takeReady(std::size_t maxBytes, std::size_t maxNowBytes) {
-    std::lock_guard lock(_mutex);
-    // Wanted-now first.
-    const auto soon = std::stable_partition(_ready.begin(), _ready.end(),
-                                            [&](const DecodedTexture& d) { return _residency.wantedNow(d.id); });
-    const std::size_t now = static_cast<std::size_t>(soon - _ready.begin());
-    std::vector<DecodedTexture> out;
-    std::size_t bytes = 0;
-    // The first `now` textures may use the larger of the two limits, the rest maxBytes.
-    auto limit = [&] { return out.size() < now ? std::max(maxBytes, maxNowBytes) : maxBytes; };
-    while (!_ready.empty() && (out.empty() || bytes + _ready.front().bytes <= limit())) {
-        bytes += _ready.front().bytes;
-        _uploading.insert(_ready.front().id);
-        out.push_back(std::move(_ready.front()));
-        _ready.erase(_ready.begin());
-    }
-    return out;
 }
 
 std::optional<DecodedTexture> TexturePager::takeNext(bool nowOnly) {

@@ -60,18 +60,14 @@ public:
 
     // Declares this frame's wishes and counts misses among `now`. Cheap; never blocks on I/O.
     void request(const std::vector<int>& now, const std::vector<int>& soon);
-    // Decoded textures ready for upload, at most `maxBytes` of them (at least one if any is
-    // ready), in priority order. The caller uploads them and then calls markResident for each.
-    // Textures wanted now may take up to `maxNowBytes` (a frame never waits on pacing for what
-    // it draws around); the rest shares `maxBytes` with them.
-    std::vector<DecodedTexture> takeReady(std::size_t maxBytes, std::size_t maxNowBytes = 0);
-    // The ready texture of highest priority (wanted now first), or none; with `nowOnly`, only
-    // one wanted now. For an uploader that takes a texture up in pieces over frames: a texture
-    // taken (here or by takeReady) counts as pending until markResident, never decoded again.
+    // The decoded texture of highest priority ready for upload (wanted now first), or none;
+    // with `nowOnly`, only one wanted now. It has at least one level of non-zero size. The
+    // caller uploads it (at once or in pieces over frames) and then calls markResident; until
+    // then it counts as pending and is never decoded again.
     std::optional<DecodedTexture> takeNext(bool nowOnly);
     // True when the last request() wants `id` now.
     bool wantedNow(int id) const;
-    // GPU bytes of the decoded textures waiting for takeReady.
+    // GPU bytes of the decoded textures waiting for takeNext.
     std::size_t readyBytes() const;
     void markResident(int id, std::size_t bytes);
     // Textures to delete on the GPU now to stay within the budget (never one wanted now).

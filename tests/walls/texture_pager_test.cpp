@@ -50,10 +50,17 @@ std::vector<scenes::Image> fakeDecode(const std::filesystem::path& p) {
 
 constexpr std::size_t kBytes = 256 * 256 * 4;
 
-// Uploads everything ready, as the GL side does once per frame.
+// Everything ready for upload, in priority order.
+std::vector<DecodedTexture> takeAll(TexturePager& pager) {
+    std::vector<DecodedTexture> out;
+    while (std::optional<DecodedTexture> d = pager.takeNext(false)) out.push_back(std::move(*d));
+    return out;
+}
+
+// Uploads everything ready, as gl::TextureStore::updateAll does.
 void uploadAll(TexturePager& pager) {
     pager.waitIdle();
-    for (const DecodedTexture& d : pager.takeReady(SIZE_MAX)) pager.markResident(d.id, d.bytes);
+    for (const DecodedTexture& d : takeAll(pager)) pager.markResident(d.id, d.bytes);
 }
 
 TEST(TexturePager, DecodesWhatIsWantedAndCountsMisses) {
@@ -141,7 +148,28 @@ TEST(TexturePager, BrokenFilesFailOnceAndAreNotRetried) {
     pager.waitIdle();
     EXPECT_EQ(decodes, 1);
     EXPECT_EQ(pager.stats().failures, 1);
-    EXPECT_TRUE(pager.takeReady(SIZE_MAX).empty());
+    EXPECT_TRUE(takeAll(pager).empty());
+}
+
+// A decoder that gives no level, or a level of zero size, fails the texture: the uploader is
+// never handed one (it would stay pending for good).
+TEST(TexturePager, ADecodeWithNoTexelsFailsTheTexture) {
+    TexturePager pager(folder(), manifest(), 4.0, [](const std::filesystem::path& p) {
+        scenes::Image level;
+        level.width = p.filename() == "tex_1" ? 0 : 4;
+        level.height = 4;
+        level.rgba.assign(static_cast<std::size_t>(level.width) * 4 * 4, 9);
+        return p.filename() == "tex_2" ? std::vector<scenes::Image>{} : std::vector<scenes::Image>{level};
+    });
+    pager.request({0, 1, 2}, {});
+    pager.waitIdle();
+    EXPECT_FALSE(pager.hasFailed(0));
+    EXPECT_TRUE(pager.hasFailed(1));
+    EXPECT_TRUE(pager.hasFailed(2));
+    EXPECT_EQ(pager.stats().failures, 2);
+    const std::vector<DecodedTexture> ready = takeAll(pager);
+    ASSERT_EQ(ready.size(), 1u);
+    EXPECT_EQ(ready[0].id, 0);
 }
 
 // Issue 18: files swapped on disk during a run were decoded and drawn.
@@ -154,36 +182,28 @@ TEST(TexturePager, FilesThatDoNotMatchTheManifestAreNeverDrawn) {
     pager.request({3, 4, 5}, {});
     pager.waitIdle();
     std::vector<int> ready;
-    for (const DecodedTexture& d : pager.takeReady(SIZE_MAX)) ready.push_back(d.id);
+    for (const DecodedTexture& d : takeAll(pager)) ready.push_back(d.id);
     EXPECT_EQ(ready, std::vector<int>{4});
     EXPECT_TRUE(pager.hasFailed(3));
     EXPECT_TRUE(pager.hasFailed(5));
     EXPECT_EQ(pager.stats().failures, 2);
 }
 
-TEST(TexturePager, UploadsWithinAByteBudgetPerFrame) {
-    TexturePager pager(folder(), manifest(), 4.0, fakeDecode);
-    pager.request({0, 1, 2, 3}, {});
-    pager.waitIdle();
-    EXPECT_EQ(pager.takeReady(2 * kBytes).size(), 2u);
-    EXPECT_EQ(pager.takeReady(1).size(), 1u);  // at least one, so paging always progresses
-}
-
-// Pacing (walls/upload_pacer.h) limits prefetches only: what a frame wants now goes at once, up
-// to the hard limit, and readyBytes() tells the pacer what waits.
-TEST(TexturePager, WantedNowTexturesPassTheirOwnLimitAndPrefetchesWait) {
+// The pacer (walls/upload_pacer.h) is told what waits: readyBytes() counts what is decoded
+// and not yet taken.
+TEST(TexturePager, ReadyBytesCountWhatWaitsForUpload) {
     TexturePager pager(folder(), manifest(), 4.0, fakeDecode);
     pager.request({0, 1, 2}, {3, 4, 5});
     pager.waitIdle();
     EXPECT_EQ(pager.readyBytes(), 6 * kBytes);
-    std::vector<DecodedTexture> first = pager.takeReady(kBytes, 8 * kBytes);
     std::vector<int> ids;
-    for (const DecodedTexture& d : first) ids.push_back(d.id);
+    for (int i = 0; i < 3; ++i) ids.push_back(pager.takeNext(true)->id);
     std::sort(ids.begin(), ids.end());
-    EXPECT_EQ(ids, (std::vector<int>{0, 1, 2}));   // all three wanted now, no prefetch
+    EXPECT_EQ(ids, (std::vector<int>{0, 1, 2}));  // the three wanted now, no prefetch
+    EXPECT_FALSE(pager.takeNext(true));
     EXPECT_EQ(pager.readyBytes(), 3 * kBytes);
-    EXPECT_EQ(pager.takeReady(2 * kBytes, 8 * kBytes).size(), 2u);  // prefetches within maxBytes
-    EXPECT_EQ(pager.readyBytes(), kBytes);
+    EXPECT_EQ(takeAll(pager).size(), 3u);
+    EXPECT_EQ(pager.readyBytes(), 0u);
 }
 
 // An uploader that puts a texture up over frames (gl::TextureStore's bands) takes it with
@@ -229,7 +249,7 @@ TEST(TexturePager, PagesBlockFilesAsCompressedBytes) {
     TexturePager pager(dir, m, 4.0, readBakedTexture);
     pager.request({0, 1}, {});
     pager.waitIdle();
-    const std::vector<DecodedTexture> ready = pager.takeReady(SIZE_MAX);
+    const std::vector<DecodedTexture> ready = takeAll(pager);
     ASSERT_EQ(ready.size(), 2u);
     for (const DecodedTexture& d : ready) {
         EXPECT_EQ(d.levels.format, TextureFormat::Bc1);

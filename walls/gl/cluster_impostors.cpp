@@ -17,6 +17,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <utility>
 
 namespace cavewall::gl {
 
@@ -30,7 +31,7 @@ std::string fileName(int face, int region) {
 }
 
 // Premultiplied MIP levels as the wall pass samples them (walls/gl/wall_quad.h).
-GlObject upload(const std::vector<scenes::Image>& levels) { return uploadWallTexture(levels); }
+GlObject upload(std::vector<scenes::Image> levels) { return uploadWallTexture(std::move(levels)); }
 
 // An opaque 1 x 1 texture of a linear colour.
 GlObject colourTexture(glm::vec3 linear) {
@@ -139,9 +140,9 @@ void ClusterImpostors::make(const std::filesystem::path& folder, const render::C
                 _renderer->render(render::boxFace(node.box, f), render::samplingEye(node.box, f, r),
                                   render::faceResolution(node.box, f, _settings.resolution), cluster.objects);
             if (r == 0) node.faces[f] = render::faceAverage(straight);
-            const std::vector<scenes::Image> levels = walls::premultipliedMipChain(straight);
+            std::vector<scenes::Image> levels = walls::premultipliedMipChain(straight);
             walls::writeMipFile(folder / fileName(f, r), levels, {16, "zip"});
-            node.textures[f][r] = upload(levels);
+            node.textures[f][r] = upload(std::move(levels));
         }
     for (int f = 0; f < kBoxFaces; ++f) node.averages[f] = colourTexture(node.faces[f].linearColour);
     accuracy = measureAccuracy(index);

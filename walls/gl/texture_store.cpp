@@ -29,7 +29,6 @@ std::size_t TextureStore::update() {
         if (!_inFlight) {
             std::optional<walls::DecodedTexture> d = _pager.takeNext(false);
             if (!d) break;
-            if (d->levels.count() == 0 || d->levels.width() <= 0 || d->levels.height() <= 0) continue;
             GlObject texture = createWallTexture(d->levels);
             _inFlight.emplace(InFlight{std::move(*d), std::move(texture), nullptr});
             _inFlight->cursor = std::make_unique<walls::UploadCursor>(_inFlight->decoded.levels);
@@ -43,20 +42,12 @@ std::size_t TextureStore::update() {
 
 std::size_t TextureStore::updateAll() {
     std::size_t uploaded = _inFlight ? finishInFlight() : 0;
-    do uploaded += upload(_uploadBytes);
-    while (_pager.readyBytes() > 0);
-    return uploaded;
-}
-
-std::size_t TextureStore::upload(std::size_t maxBytes, std::size_t maxNowBytes) {
-    std::size_t uploaded = 0;
-    for (walls::DecodedTexture& d : _pager.takeReady(maxBytes, maxNowBytes)) uploaded += finishWhole(std::move(d));
+    while (std::optional<walls::DecodedTexture> d = _pager.takeNext(false)) uploaded += finishWhole(std::move(*d));
     for (int id : _pager.takeEvictions()) _textures.erase(id);
     return uploaded;
 }
 
 std::size_t TextureStore::finishWhole(walls::DecodedTexture d) {
-    if (d.levels.count() == 0 || d.levels.width() <= 0 || d.levels.height() <= 0) return 0;
     _textures[d.id] = uploadWallTexture(d.levels);
     _pager.markResident(d.id, d.bytes);
     return d.bytes;

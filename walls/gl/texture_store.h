@@ -46,7 +46,6 @@ private:
         GlObject texture;
         std::unique_ptr<walls::UploadCursor> cursor;  // points into decoded.levels
     };
-    std::size_t upload(std::size_t maxBytes, std::size_t maxNowBytes = 0);  // one takeReady round, then evictions
     std::size_t finishWhole(walls::DecodedTexture d);  // uploads all of `d` and makes it resident
     std::size_t advance(std::size_t maxBytes);         // uploads the in-flight prefetch's next band
     std::size_t finishInFlight();

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 namespace cavewall::gl {
 
@@ -113,8 +114,8 @@ gl::GlObject uploadWallTexture(const walls::TextureLevels& levels) {
     return t;
 }
 
-gl::GlObject uploadWallTexture(const std::vector<scenes::Image>& levels) {
-    return uploadWallTexture(walls::TextureLevels(levels));
+gl::GlObject uploadWallTexture(std::vector<scenes::Image> levels) {
+    return uploadWallTexture(walls::TextureLevels(std::move(levels)));
 }
 
 WallQuadDrawer::WallQuadDrawer()

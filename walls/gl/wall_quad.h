@@ -16,7 +16,7 @@ namespace cavewall::gl {
 // Uploads MIP levels (largest first, each the next MIP size of the previous, premultiplied as
 // walls/texture_mips.h says) as one GL_SRGB8_ALPHA8 texture with trilinear filtering and
 // clamped edges. Needs a current context. Throws Error for inconsistent levels.
-gl::GlObject uploadWallTexture(const std::vector<scenes::Image>& levels);
+gl::GlObject uploadWallTexture(std::vector<scenes::Image> levels);
 // As above for any format of walls/texture_blocks.h: RGBA8 as above; Bc1 and Bc3 as
 // GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT / _DXT5_EXT with their blocks uploaded as they are
 // (glCompressedTextureSubImage2D), so the sampler decodes sRGB to linear as for RGBA8. Throws

@@ -268,7 +268,7 @@ gl::GlObject layerTexture() {
             }
         levels.push_back(std::move(l));
     }
-    return gl::uploadWallTexture(levels);
+    return gl::uploadWallTexture(std::move(levels));
 }
 
 // The walls' sampler (walls/gl/texture_store.cpp): bilinear within the nearest MIP level.
