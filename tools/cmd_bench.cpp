@@ -27,6 +27,7 @@ const char* const kBenchUsage =
     "                      [--walls flat|depth] [--clusters [--cluster-budgets T1,T2,...]]\n"
     "                      [--compare-scene OTHER,...] [--on-demand] [--texture-format rgba8|bc1|bc3]\n"
     "       cavewall bench --scale 2M,8M,32M [--data DIR] [--scale-metres M] [--frames N] [--resolution N]\n"
+    "                      [--triangle-budget N|near] [--lod-max PX]\n"
     "                      [--display D] [--bake-resolution N] [--geometry-budget MB] [--lod PX] [--compare-every K]\n"
     "                      [--out DIR]\n"
     "       cavewall bench --stability\n"
@@ -110,6 +111,10 @@ const char* const kBenchUsage =
     "         bench-scale-out), with the slopes of full and walls against triangles. Every\n"
     "         --compare-every K frames (default 6, 0: none) the near and walls images are compared\n"
     "         with full geometry's: pooled PSNR, worst frame, FLIP mean, beside each size's speed-up.\n"
+    "         A fourth mode, walls-budget, draws the walls with their geometry held to\n"
+    "         --triangle-budget N triangles a frame (default near: the near limit's median over the\n"
+    "         stretch; 0 leaves the mode out), raising the level-of-detail tolerance to at most\n"
+    "         --lod-max PX (default 8); its image error shows what the budget costs.\n"
     "\n"
     "--stability  runs the stiff and extreme numerical cases (projection at eye distances\n"
     "             1e-9 ... 1e6 m, world offsets to 1e7 m, near/far ratios to 1e9 with reversed-Z,\n"
@@ -265,6 +270,12 @@ int runScaleBench(const Args& args) {
     o.bakeResolution = static_cast<int>(args.integer("bake-resolution", o.bakeResolution, 16, 16384));
     o.geometryBudgetMB = args.number("geometry-budget", o.geometryBudgetMB, 0.001, 1e6);
     o.lodPixels = args.number("lod", o.lodPixels, 0.0, 1e4);
+    if (const std::optional<std::string> b = args.get("triangle-budget"); b && *b != "near")
+        o.triangleBudget = args.integer("triangle-budget", 0, 0, 1000000000);
+    o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);
+    if (o.triangleBudget != 0 && !(o.lodPixels > 0.0))
+        throw Error("bench --scale: --triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod " +
+                    config::formatNumber(o.lodPixels) + " (--triangle-budget 0 leaves the walls-budget mode out)");
     o.compareEvery = static_cast<int>(args.integer("compare-every", o.compareEvery, 0, 100000));
     const std::filesystem::path out = args.getOr("out", "bench-scale-out");
     o.afterSize = [&](const bench::ScaleReport& soFar) { bench::writeScaleReport(out, soFar); };

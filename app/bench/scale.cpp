@@ -42,6 +42,7 @@ std::string_view toString(ScaleMode mode) {
     case ScaleMode::Full: return "full";
     case ScaleMode::Near: return "near";
     case ScaleMode::Walls: return "walls";
+    case ScaleMode::WallsBudget: return "walls-budget";
     }
     return "?";
 }
@@ -67,13 +68,13 @@ double growth(const ScaleReport& report, ScaleMode mode) {
 }
 
 std::string scaleCsv(const ScaleReport& report) {
-    std::string out = "target_triangles,triangles,cells,mode,frame_ms_p50,frame_ms_p95,frame_ms_p99,triangles_per_frame,"
+    std::string out = "target_triangles,triangles,cells,mode,triangle_budget,frame_ms_p50,frame_ms_p95,frame_ms_p99,triangles_per_frame,"
                       "resident_mb,paged_peak_mb,whole_model_mb,largest_three_cells_mb,load_s,first_frame_s,"
                       "geometry_misses,geometry_page_ins,textures_over_alpha,compared_frames,psnr_db,"
                       "worst_frame_psnr_db,flip_mean\n";
     for (const ScaleRow& r : report.rows)
         out += std::to_string(r.targetTriangles) + "," + std::to_string(r.triangles) + "," + std::to_string(r.cells) + "," +
-               std::string(toString(r.mode)) + "," + fixed(r.frameMs.p50, 3) + "," + fixed(r.frameMs.p95, 3) + "," +
+               std::string(toString(r.mode)) + "," + std::to_string(r.triangleBudget) + "," + fixed(r.frameMs.p50, 3) + "," + fixed(r.frameMs.p95, 3) + "," +
                fixed(r.frameMs.p99, 3) + "," + fixed(r.trianglesPerFrame, 0) + "," + fixed(r.residentMB, 3) + "," +
                fixed(r.pagedPeakMB, 3) + "," + fixed(r.wholeModelMB, 3) + "," + fixed(r.largestThreeCellsMB, 3) + "," +
                fixed(r.loadSeconds, 3) + "," + fixed(r.firstFrameSeconds, 3) + "," + std::to_string(r.geometryMisses) + "," +
@@ -94,14 +95,15 @@ std::string scaleMarkdown(const ScaleReport& report) {
         out += "| " + fixed(millions(r.triangles), 2) + " M | " + std::to_string(r.cells) + " | " +
                std::string(toString(r.mode)) + " | " + fixed(r.frameMs.p50, 2) + " | " + fixed(r.frameMs.p95, 2) + " | " +
                fixed(r.trianglesPerFrame, 0) + " | " + fixed(r.residentMB, 2) + " | " +
-               (r.mode == ScaleMode::Walls ? fixed(r.pagedPeakMB, 2) : std::string("–")) + " | " + fixed(r.wholeModelMB, 2) +
+               (r.mode == ScaleMode::Walls || r.mode == ScaleMode::WallsBudget ? fixed(r.pagedPeakMB, 2) : std::string("–")) + " | " + fixed(r.wholeModelMB, 2) +
                " | " + fixed(r.largestThreeCellsMB, 2) + " | " + fixed(r.loadSeconds, 2) + " | " + fixed(r.firstFrameSeconds, 2) +
                " | " + std::to_string(r.geometryMisses) + " | " + std::to_string(r.texturesOverAlpha) + " | " +
                (r.comparedFrames > 0 ? fixed(r.psnrDb, 1) + " (" + fixed(r.worstFramePsnrDb, 1) + ")" : std::string("–")) +
                " | " + (r.comparedFrames > 0 ? fixed(r.flipMean, 4) : std::string("–")) + " |\n";
     out += "\nSlopes (least squares of the median frame ms against millions of triangles) and growth (median at the "
            "largest size over the smallest):\n\n";
-    for (ScaleMode m : {ScaleMode::Full, ScaleMode::Near, ScaleMode::Walls}) {
+    for (ScaleMode m : kScaleModes) {
+        if (m == ScaleMode::WallsBudget && rowsOf(report, m).empty()) continue;  // not run
         const double slope = msPerMillionTriangles(report, m);
         out += "- " + std::string(toString(m)) + ": " +
                (std::isnan(slope) ? std::string("no slope (it needs two sizes or more)")
@@ -110,17 +112,21 @@ std::string scaleMarkdown(const ScaleReport& report) {
     }
     out += "\nWalls against full geometry at each size (median frame ms over median frame ms, and the walls' image "
            "error):\n\n";
-    for (const ScaleRow* w : rowsOf(report, ScaleMode::Walls))
-        for (const ScaleRow* f : rowsOf(report, ScaleMode::Full))
-            if (f->targetTriangles == w->targetTriangles && w->frameMs.p50 > 0.0)
-                out += "- " + fixed(millions(w->triangles), 2) + " M triangles: speed-up " +
-                       fixed(f->frameMs.p50 / w->frameMs.p50, 2) + "x, " +
-                       (w->comparedFrames > 0 ? "pooled PSNR " + fixed(w->psnrDb, 1) + " dB (worst frame " +
-                                                    fixed(w->worstFramePsnrDb, 1) + " dB), FLIP mean " +
-                                                    fixed(w->flipMean, 4) + " over " +
-                                                    std::to_string(w->comparedFrames) + " compared frames"
-                                              : std::string("image error not compared")) +
-                       ", " + std::to_string(w->texturesOverAlpha) + " textures over alpha\n";
+    for (ScaleMode m : {ScaleMode::Walls, ScaleMode::WallsBudget})
+        for (const ScaleRow* w : rowsOf(report, m))
+            for (const ScaleRow* f : rowsOf(report, ScaleMode::Full)) {
+                if (f->targetTriangles != w->targetTriangles || !(w->frameMs.p50 > 0.0)) continue;
+                const std::string budget =
+                    m == ScaleMode::WallsBudget ? " (" + std::to_string(w->triangleBudget) + " triangles a frame)" : "";
+                const std::string error =
+                    w->comparedFrames > 0 ? "pooled PSNR " + fixed(w->psnrDb, 1) + " dB (worst frame " +
+                                                fixed(w->worstFramePsnrDb, 1) + " dB), FLIP mean " + fixed(w->flipMean, 4) +
+                                                " over " + std::to_string(w->comparedFrames) + " compared frames"
+                                          : std::string("image error not compared");
+                out += "- " + fixed(millions(w->triangles), 2) + " M triangles, " + std::string(toString(m)) + budget +
+                       ": speed-up " + fixed(f->frameMs.p50 / w->frameMs.p50, 2) + "x, " + error + ", " +
+                       std::to_string(w->texturesOverAlpha) + " textures over alpha\n";
+            }
     return out;
 }
 
@@ -130,13 +136,13 @@ std::vector<std::filesystem::path> writeScaleReport(const std::filesystem::path&
                                                       folder / "scale_mb.png", folder / "scale_load.png"};
     writeText(files[0], scaleCsv(report));
     writeText(files[1], "# cavewall bench --scale\n\n" + scaleMarkdown(report) +
-                            "\nPlots against millions of triangles (x); lines numbered 0 full, 1 near, 2 walls: "
+                            "\nPlots against millions of triangles (x); lines numbered 0 full, 1 near, 2 walls, 3 walls-budget: "
                             "median frame ms (scale_ms.png), resident geometry MB (scale_mb.png), seconds from the "
                             "loaded scene to the first frame plus the load (scale_load.png).\n\n"
                             "![frame ms](scale_ms.png) ![resident MB](scale_mb.png) ![first frame s](scale_load.png)\n");
     auto plot = [&](double ScaleRow::*field, bool timeStat, bool plusLoad) {
         std::vector<PlotSeries> series;
-        for (ScaleMode m : {ScaleMode::Full, ScaleMode::Near, ScaleMode::Walls}) {
+        for (ScaleMode m : kScaleModes) {
             PlotSeries s;
             s.label = static_cast<int>(m);
             for (const ScaleRow* r : rowsOf(report, m)) {

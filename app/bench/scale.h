@@ -5,7 +5,9 @@
 //
 // One ScaleRow per model size and mode. Modes: full geometry (frustum-culled, the whole model
 // on the GPU), the near-geometry limit (the viewer's cell and the always-resident structure),
-// and walls (virtual walls with levels of detail and geometry paging by cell). Times are
+// walls (virtual walls with levels of detail and geometry paging by cell) and, when run, walls
+// whose geometry is held to a triangle budget (seed 004's frame budget: the levels of detail
+// coarsened just enough, their error in the row's image error). Times are
 // milliseconds per frame (all screens) over the timed frames; memory is MB = 2^20 bytes of GPU
 // vertex and index buffers (display/gl/scene_gpu.h sizes).
 
@@ -22,12 +24,14 @@
 
 namespace cavewall::bench {
 
-enum class ScaleMode { Full, Near, Walls };
-std::string_view toString(ScaleMode mode);  // "full" | "near" | "walls"
+enum class ScaleMode { Full, Near, Walls, WallsBudget };
+inline constexpr ScaleMode kScaleModes[] = {ScaleMode::Full, ScaleMode::Near, ScaleMode::Walls, ScaleMode::WallsBudget};
+std::string_view toString(ScaleMode mode);  // "full" | "near" | "walls" | "walls-budget"
 
 struct ScaleRow {
     std::size_t targetTriangles = 0;     // the --scale entry the plant was generated for
     std::size_t triangles = 0;           // drawn triangles of the whole model (instances counted)
+    std::size_t triangleBudget = 0;      // walls-budget: its budget per frame (all views); else 0
     int cells = 0;
     ScaleMode mode = ScaleMode::Full;
     TimeStats frameMs;

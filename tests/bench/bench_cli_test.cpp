@@ -253,10 +253,11 @@ TEST(BenchSceneCli, BadCompareSceneOrOnDemandCacheIsAClearError) {
 }
 
 // `bench --scale` end to end on two tiny sizes (both below 2 M triangles: the same 80 m plant,
-// generated into a folder each): three modes per size, the walls' paged geometry no more than
-// the whole model (shared meshes stored once), only the requested textures baked, and the
-// second size's bake found in the scale cache (the same scene bytes, plan and settings).
-TEST(BenchSceneCli, ScaleRunHasThreeModesPerSize) {
+// generated into a folder each): four modes per size, the walls' paged geometry no more than
+// the whole model (shared meshes stored once), only the requested textures baked, the second
+// size's bake found in the scale cache (the same scene bytes, plan and settings), and the
+// budgeted walls drawing no more triangles than the walls under the near limit's median.
+TEST(BenchSceneCli, ScaleRunHasFourModesPerSize) {
     const test::TempFolder root("bench_cli_scale");
     fs::remove_all(root / "data");
     const fs::path out = root / "out";
@@ -271,14 +272,21 @@ TEST(BenchSceneCli, ScaleRunHasThreeModesPerSize) {
     for (const char* file : {"scale.md", "scale_ms.png", "scale_mb.png", "scale_load.png"})
         EXPECT_TRUE(fs::exists(out / file)) << file;
     const test::CsvTable csv = test::readCsv(out / "scale.csv");
-    ASSERT_EQ(csv.size(), 6u);
-    EXPECT_EQ(csv.column("mode"), (std::vector<std::string>{"full", "near", "walls", "full", "near", "walls"}));
+    ASSERT_EQ(csv.size(), 8u);
+    EXPECT_EQ(csv.column("mode"), (std::vector<std::string>{"full", "near", "walls", "walls-budget", "full", "near",
+                                                            "walls", "walls-budget"}));
+    for (std::size_t size : {0u, 4u}) {
+        EXPECT_EQ(csv[size + 2].number("triangle_budget"), 0.0);
+        EXPECT_GT(csv[size + 3].number("triangle_budget"), 0.0);
+        EXPECT_LE(csv[size + 3].number("triangles_per_frame"), csv[size + 2].number("triangles_per_frame"));
+    }
+    EXPECT_THAT(r.out, HasSubstr("walls-budget (" + csv[3].at("triangle_budget") + " triangles a frame): speed-up"));
     for (const test::CsvRow& row : csv) {
         SCOPED_TRACE(row.at("mode"));
         EXPECT_GT(row.number("frame_ms_p50"), 0.0);
         EXPECT_GT(row.number("first_frame_s"), 0.0);
         EXPECT_LE(row.number("resident_mb"), row.number("whole_model_mb") + 1e-9);
-        if (row.at("mode") == "walls") {
+        if (row.at("mode") == "walls" || row.at("mode") == "walls-budget") {
             EXPECT_GT(row.number("paged_peak_mb"), 0.0);
             EXPECT_EQ(row.number("textures_over_alpha"), 0.0);
         }
@@ -323,6 +331,8 @@ TEST(BenchSceneCli, BadInputIsAClearError) {
         {{"bench", "x.json", "--clusters", "--cluster-budgets", "40,x"}, "--cluster-budgets"},
         {{"bench", "--scale", "2M,x"}, "--scale: entry 2 'x': expected a triangle count"},
         {{"bench", "--scale", "2M", "--scale-metres", "0"}, "--scale-metres"},
+        {{"bench", "--scale", "2M", "--lod", "0"}, "--triangle-budget: needs levels of detail (--lod PX with PX > 0)"},
+        {{"bench", "--scale", "2M", "--triangle-budget", "lots"}, "--triangle-budget"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.message);

@@ -52,6 +52,25 @@ TEST(BenchScale, SlopesAreLeastSquaresInMsPerMillionTriangles) {
     EXPECT_THAT(scaleMarkdown(r), ::testing::Not(HasSubstr("nan")));
 }
 
+// The budgeted walls get their own row, CSV budget and speed-up line; a report without them
+// prints neither their slope nor their line.
+TEST(BenchScale, BudgetedWallsReportTheirBudgetBesideTheirSpeedUp) {
+    ScaleReport r = sample();
+    EXPECT_THAT(scaleMarkdown(r), ::testing::Not(HasSubstr("walls-budget")));
+    ScaleRow budgeted = row(8'000'000, ScaleMode::WallsBudget, 4.0);
+    budgeted.triangleBudget = 180'000;
+    budgeted.comparedFrames = 5;
+    budgeted.psnrDb = 31.8, budgeted.worstFramePsnrDb = 31.1, budgeted.flipMean = 0.0121;
+    r.rows.push_back(budgeted);
+    const std::string md = scaleMarkdown(r);
+    EXPECT_THAT(md, HasSubstr("- 8.00 M triangles, walls-budget (180000 triangles a frame): speed-up 20.00x, pooled "
+                              "PSNR 31.8 dB (worst frame 31.1 dB), FLIP mean 0.0121 over 5 compared frames"));
+    EXPECT_THAT(md, HasSubstr("- 8.00 M triangles, walls: speed-up 10.00x"));
+    EXPECT_THAT(md, HasSubstr("- walls-budget: no slope"));
+    EXPECT_THAT(scaleCsv(r), HasSubstr(",walls-budget,180000,4.000,"));
+    EXPECT_THAT(scaleCsv(r), HasSubstr(",walls,0,8.000,"));
+}
+
 TEST(BenchScale, SizeListTakesSuffixesAndRejectsBadEntries) {
     EXPECT_EQ(parseScaleList("2M,500k,8000000"), (std::vector<std::size_t>{2'000'000, 500'000, 8'000'000}));
     EXPECT_EQ(parseScaleList("1.5M"), std::vector<std::size_t>{1'500'000});

@@ -29,6 +29,7 @@
 #include <set>
 #include <sstream>
 #include <thread>
+#include <tuple>
 
 namespace cavewall::gl {
 
@@ -259,19 +260,36 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
     auto [walk, wallsFirst] = timeFirst(
         [&] { return std::make_unique<Walkthrough>(scene, d, display, context, setup, wallsOptions); },
         [&](Walkthrough& w) { w.renderFrame(path.frames.front()); });
+    // The near limit over the whole stretch: its warm-up, and its median triangles (the budget).
+    std::vector<double> nearTriangles;
+    for (const walls::FrameInput& in : path.frames) nearTriangles.push_back(nearMode->draw(in).second);
+    std::sort(nearTriangles.begin(), nearTriangles.end());
+    const std::size_t budget = o.triangleBudget >= 0 ? static_cast<std::size_t>(o.triangleBudget)
+                                                     : static_cast<std::size_t>(nearTriangles[nearTriangles.size() / 2]);
+    std::unique_ptr<Walkthrough> budgeted;
+    double budgetFirst = 0.0;
+    if (budget > 0) {
+        WalkthroughOptions budgetOptions = wallsOptions;
+        budgetOptions.triangleBudget = budget;
+        budgetOptions.lodMaxPixels = std::max(o.lodMaxPixels, o.lodPixels);
+        std::tie(budgeted, budgetFirst) = timeFirst(
+            [&] { return std::make_unique<Walkthrough>(scene, d, display, context, setup, budgetOptions); },
+            [&](Walkthrough& w) { w.renderFrame(path.frames.front()); });
+    }
     // Yardsticks with each mode's own levels: full detail for full, the walls' levels (also the
     // near limit's) for the others.
     const GeometryYardsticks yard = walk->geometryYardsticks(), fullYard = full->geometryYardsticks();
     say(size + ": warm-up over the stretch");
-    for (const walls::FrameInput& in : path.frames) walk->renderFrame(in);
-    walk->waitForTextures();
-    for (std::size_t i = 0; i < std::min<std::size_t>(3, path.frames.size()); ++i) {
-        full->renderFrame(path.frames[i]);
-        nearMode->draw(path.frames[i]);
+    for (Walkthrough* w : {walk.get(), budgeted.get()}) {
+        if (!w) continue;
+        for (const walls::FrameInput& in : path.frames) w->renderFrame(in);
+        w->waitForTextures();
     }
-    say(size + ": full, near and walls frame by frame in turn");
+    for (std::size_t i = 0; i < std::min<std::size_t>(3, path.frames.size()); ++i) full->renderFrame(path.frames[i]);
+    say(size + ": full, near, walls" + std::string(budgeted ? " and walls-budget (" + std::to_string(budget) +
+                                                              " triangles a frame)" : "") + " frame by frame in turn");
     const std::size_t screens = display.screens().size();
-    Accumulated a[3] = {Accumulated(screens), Accumulated(screens), Accumulated(screens)};
+    Accumulated a[4] = {Accumulated(screens), Accumulated(screens), Accumulated(screens), Accumulated(screens)};
     a[0].residentMB = fullYard.sharedMB;
     a[1].residentMB = nearMode->residentMB();
     long frame = 0;
@@ -286,19 +304,27 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
         if (compare)
             a[1].errors.addFrame(frame, comparedImages(display, in.head, readFrame(display, nearMode->targets), f.images,
                                                        "near"));
-        const walls::FrameResult w = walk->renderFrame(in);
-        a[2].ms.push_back(w.frameMs), a[2].triangles += static_cast<double>(w.stats.triangles);
-        if (compare) a[2].errors.addFrame(frame, comparedImages(display, in.head, w.images, f.images, "walls"));
-        a[2].pagedMB = std::max(a[2].pagedMB, w.geometry.residentMB);
-        a[2].overAlpha = std::max(a[2].overAlpha, w.texturesOverAlpha);
-        a[2].misses = w.geometry.misses, a[2].pageIns = w.geometry.pageIns;
+        for (int m : {2, 3}) {
+            Walkthrough* walkthrough = m == 2 ? walk.get() : budgeted.get();
+            if (!walkthrough) continue;
+            const walls::FrameResult w = walkthrough->renderFrame(in);
+            a[m].ms.push_back(w.frameMs), a[m].triangles += static_cast<double>(w.stats.triangles);
+            if (compare)
+                a[m].errors.addFrame(frame, comparedImages(display, in.head, w.images, f.images, m == 2 ? "walls" : "walls-budget"));
+            a[m].pagedMB = std::max(a[m].pagedMB, w.geometry.residentMB);
+            a[m].overAlpha = std::max(a[m].overAlpha, w.texturesOverAlpha);
+            a[m].misses = w.geometry.misses, a[m].pageIns = w.geometry.pageIns;
+        }
         ++frame;
     }
     a[2].residentMB = yard.sharedMB + a[2].pagedMB;
-    const double firsts[3] = {fullFirst, nearFirst, wallsFirst + planSeconds};
-    const bench::ScaleMode modes[3] = {bench::ScaleMode::Full, bench::ScaleMode::Near, bench::ScaleMode::Walls};
-    for (int m = 0; m < 3; ++m) {
+    a[3].residentMB = yard.sharedMB + a[3].pagedMB;
+    const double firsts[4] = {fullFirst, nearFirst, wallsFirst + planSeconds, budgetFirst + planSeconds};
+    const bench::ScaleMode modes[4] = {bench::ScaleMode::Full, bench::ScaleMode::Near, bench::ScaleMode::Walls,
+                                       bench::ScaleMode::WallsBudget};
+    for (int m = 0; m < (budgeted ? 4 : 3); ++m) {
         bench::ScaleRow r = rowOf(modes[m], a[m], base);
+        if (modes[m] == bench::ScaleMode::WallsBudget) r.triangleBudget = budget;
         r.firstFrameSeconds = firsts[m];
         r.wholeModelMB = m == 0 ? fullYard.wholeModelMB : yard.wholeModelMB;
         r.largestThreeCellsMB = m == 0 ? fullYard.largestThreeCellsMB : yard.largestThreeCellsMB;
@@ -333,9 +359,16 @@ bench::ScaleReport runScaleBench(const ScaleOptions& o) {
             config::formatNumber(o.geometryBudgetMB) + " MB (mesh groups shared by cells stored once), synchronous "
             "paging (the first frame complete; textures and groups of the stretch resident after a warm-up pass); "
             "first frame: the mode's setup and first frame after loading (walls: planning too; baking not, it is "
-            "cached)",
+            "cached)" +
+            (o.triangleBudget == 0
+                 ? std::string()
+                 : "; walls-budget: the walls with their geometry held to " +
+                       (o.triangleBudget > 0 ? std::to_string(o.triangleBudget) + " triangles a frame"
+                                             : std::string("the near limit's median triangles a frame")) +
+                       " (levels of detail coarsened just enough, to at most " + config::formatNumber(o.lodMaxPixels) +
+                       " px; over budget beyond)"),
         o.compareEvery > 0
-            ? "image error: near and walls against full geometry's image of the same frame, every " +
+            ? "image error: near and walls (both kinds) against full geometry's image of the same frame, every " +
                   std::to_string(o.compareEvery) + " frames (read back after the frame is timed): PSNR on sRGB RGB "
                   "pooled over all compared pixels, the worst frame's, LDR-FLIP mean at each screen's fewest pixels "
                   "per degree"

@@ -10,7 +10,14 @@
 //           objects without a cell and the viewer's cell (no wall quads);
 //  - walls: virtual walls at `alphaDeg`, levels of detail at `lodPixels`, geometry paging by
 //           cell under `geometryBudgetMB` (mesh groups shared by cells stored once), textures
-//           all resident after a warm-up pass over the stretch.
+//           all resident after a warm-up pass over the stretch;
+//  - walls-budget (unless `triangleBudget` is 0): the walls mode with its geometry held to a
+//           triangle budget per frame (seed 004's frame budget; WalkthroughSettings::
+//           triangleBudget: the level-of-detail tolerance raised just enough, to at most
+//           `lodMaxPixels`), by default the near limit's median triangles over the stretch
+//           (counted in its warm-up pass), so the walls draw no more geometry than the limit.
+//           Its image error is measured like the walls', so what the budget costs shows beside
+//           what it saves.
 //
 // Bounded baking: a cold bake of the whole 2 M plant takes about 20 minutes on this machine
 // (hours at 32 M), so only the textures the stretch's frames request (now or soon, by
@@ -43,6 +50,9 @@ struct ScaleOptions {
     int bakeResolution = 128;               // texels per texture side at most
     double lodPixels = 1.0;                 // the walls and near modes' tolerance
     double geometryBudgetMB = 64.0;         // the walls mode's geometry paging budget
+    // walls-budget's triangles per frame: < 0 the near limit's median, 0 no such mode.
+    long triangleBudget = -1;
+    double lodMaxPixels = 8.0;              // the most its budget may raise the tolerance to
     // Every compareEvery-th timed frame (0: none) the near and walls modes' images are compared
     // with full geometry's of the same frame (bench::ErrorPool: pooled PSNR, worst frame, FLIP),
     // read back after each mode's frame is timed.
