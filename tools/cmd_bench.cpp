@@ -273,9 +273,6 @@ int runScaleBench(const Args& args) {
     if (const std::optional<std::string> b = args.get("triangle-budget"); b && *b != "near")
         o.triangleBudget = args.integer("triangle-budget", 0, 0, 1000000000);
     o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);
-    if (o.triangleBudget != 0 && !(o.lodPixels > 0.0))
-        throw Error("bench --scale: --triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod " +
-                    config::formatNumber(o.lodPixels) + " (--triangle-budget 0 leaves the walls-budget mode out)");
     o.compareEvery = static_cast<int>(args.integer("compare-every", o.compareEvery, 0, 100000));
     const std::filesystem::path out = args.getOr("out", "bench-scale-out");
     o.afterSize = [&](const bench::ScaleReport& soFar) { bench::writeScaleReport(out, soFar); };

@@ -309,8 +309,8 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
             if (!walkthrough) continue;
             const walls::FrameResult w = walkthrough->renderFrame(in);
             a[m].ms.push_back(w.frameMs), a[m].triangles += static_cast<double>(w.stats.triangles);
-            if (compare)
-                a[m].errors.addFrame(frame, comparedImages(display, in.head, w.images, f.images, m == 2 ? "walls" : "walls-budget"));
+            const char* name = m == 2 ? "walls" : "walls-budget";
+            if (compare) a[m].errors.addFrame(frame, comparedImages(display, in.head, w.images, f.images, name));
             a[m].pagedMB = std::max(a[m].pagedMB, w.geometry.residentMB);
             a[m].overAlpha = std::max(a[m].overAlpha, w.texturesOverAlpha);
             a[m].misses = w.geometry.misses, a[m].pageIns = w.geometry.pageIns;
@@ -341,6 +341,9 @@ bench::ScaleReport runScaleBench(const ScaleOptions& o) {
     if (o.sizes.empty()) throw Error("bench --scale: expected at least one size, got none");
     if (!(o.pathMetres > 0.0))
         throw Error("bench --scale: --scale-metres: expected more than 0 m, got " + config::formatNumber(o.pathMetres));
+    if (o.triangleBudget != 0 && !(o.lodPixels > 0.0))
+        throw Error("bench --scale: --triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod " +
+                    config::formatNumber(o.lodPixels) + " (--triangle-budget 0 leaves the walls-budget mode out)");
     const auto start = Clock::now();
     const display::Display display(o.display);
     const auto context = createHeadlessContext();
