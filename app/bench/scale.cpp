@@ -29,6 +29,9 @@ std::vector<const ScaleRow*> rowsOf(const ScaleReport& report, ScaleMode mode) {
     return rows;
 }
 
+// The modes that page geometry by cell (their paged peak is reported).
+bool pagesGeometry(ScaleMode mode) { return mode == ScaleMode::Walls || mode == ScaleMode::WallsBudget; }
+
 void writeText(const std::filesystem::path& file, const std::string& text) {
     std::ofstream out(file, std::ios::binary);
     out << text;
@@ -68,13 +71,15 @@ double growth(const ScaleReport& report, ScaleMode mode) {
 }
 
 std::string scaleCsv(const ScaleReport& report) {
-    std::string out = "target_triangles,triangles,cells,mode,triangle_budget,frame_ms_p50,frame_ms_p95,frame_ms_p99,triangles_per_frame,"
+    std::string out = "target_triangles,triangles,cells,mode,triangle_budget,frame_ms_p50,frame_ms_p95,frame_ms_p99,"
+                      "triangles_per_frame,"
                       "resident_mb,paged_peak_mb,whole_model_mb,largest_three_cells_mb,load_s,first_frame_s,"
                       "geometry_misses,geometry_page_ins,textures_over_alpha,compared_frames,psnr_db,"
                       "worst_frame_psnr_db,flip_mean\n";
     for (const ScaleRow& r : report.rows)
         out += std::to_string(r.targetTriangles) + "," + std::to_string(r.triangles) + "," + std::to_string(r.cells) + "," +
-               std::string(toString(r.mode)) + "," + std::to_string(r.triangleBudget) + "," + fixed(r.frameMs.p50, 3) + "," + fixed(r.frameMs.p95, 3) + "," +
+               std::string(toString(r.mode)) + "," + std::to_string(r.triangleBudget) + "," + fixed(r.frameMs.p50, 3) +
+               "," + fixed(r.frameMs.p95, 3) + "," +
                fixed(r.frameMs.p99, 3) + "," + fixed(r.trianglesPerFrame, 0) + "," + fixed(r.residentMB, 3) + "," +
                fixed(r.pagedPeakMB, 3) + "," + fixed(r.wholeModelMB, 3) + "," + fixed(r.largestThreeCellsMB, 3) + "," +
                fixed(r.loadSeconds, 3) + "," + fixed(r.firstFrameSeconds, 3) + "," + std::to_string(r.geometryMisses) + "," +
@@ -95,7 +100,7 @@ std::string scaleMarkdown(const ScaleReport& report) {
         out += "| " + fixed(millions(r.triangles), 2) + " M | " + std::to_string(r.cells) + " | " +
                std::string(toString(r.mode)) + " | " + fixed(r.frameMs.p50, 2) + " | " + fixed(r.frameMs.p95, 2) + " | " +
                fixed(r.trianglesPerFrame, 0) + " | " + fixed(r.residentMB, 2) + " | " +
-               (r.mode == ScaleMode::Walls || r.mode == ScaleMode::WallsBudget ? fixed(r.pagedPeakMB, 2) : std::string("–")) + " | " + fixed(r.wholeModelMB, 2) +
+               (pagesGeometry(r.mode) ? fixed(r.pagedPeakMB, 2) : std::string("–")) + " | " + fixed(r.wholeModelMB, 2) +
                " | " + fixed(r.largestThreeCellsMB, 2) + " | " + fixed(r.loadSeconds, 2) + " | " + fixed(r.firstFrameSeconds, 2) +
                " | " + std::to_string(r.geometryMisses) + " | " + std::to_string(r.texturesOverAlpha) + " | " +
                (r.comparedFrames > 0 ? fixed(r.psnrDb, 1) + " (" + fixed(r.worstFramePsnrDb, 1) + ")" : std::string("–")) +
@@ -136,7 +141,8 @@ std::vector<std::filesystem::path> writeScaleReport(const std::filesystem::path&
                                                       folder / "scale_mb.png", folder / "scale_load.png"};
     writeText(files[0], scaleCsv(report));
     writeText(files[1], "# cavewall bench --scale\n\n" + scaleMarkdown(report) +
-                            "\nPlots against millions of triangles (x); lines numbered 0 full, 1 near, 2 walls, 3 walls-budget: "
+                            "\nPlots against millions of triangles (x); lines numbered 0 full, 1 near, 2 walls, "
+                            "3 walls-budget: "
                             "median frame ms (scale_ms.png), resident geometry MB (scale_mb.png), seconds from the "
                             "loaded scene to the first frame plus the load (scale_load.png).\n\n"
                             "![frame ms](scale_ms.png) ![resident MB](scale_mb.png) ![first frame s](scale_load.png)\n");
