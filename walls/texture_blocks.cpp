@@ -6,6 +6,7 @@
 #include "walls/texture_mips.h"
 
 #include <squish.h>
+#include <stb_dxt.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -69,11 +70,30 @@ void toBinaryCoverage(std::uint8_t* texel, const std::array<float, 256>& linear)
     texel[3] = 255;
 }
 
+// Keeps a Bc1 block in the four-colour mode (endpoint 0 > endpoint 1 as 16-bit numbers), where
+// no index means transparent: equal endpoints decode every index alike, so all become 0;
+// reversed endpoints are swapped with their indices (0 <-> 1, 2 <-> 3).
+void fourColourMode(std::uint8_t* block) {
+    const int c0 = block[0] | block[1] << 8, c1 = block[2] | block[3] << 8;
+    if (c0 > c1) return;
+    if (c0 == c1) {
+        std::fill_n(block + 4, 4, std::uint8_t(0));
+        return;
+    }
+    std::swap_ranges(block, block + 2, block + 2);
+    for (int i = 4; i < 8; ++i) block[i] ^= 0x55;
+}
+
 // A Bc1 block without transparent texels in the four-colour mode only. Squish's Bc1 cluster fit
 // also tries the three-colour mode (a quarter of its time), which an opaque block rarely wins;
 // its Bc3 colour block is that four-colour fit alone, written with endpoint 0 >= endpoint 1, so
 // it decodes the same as a Bc1 block (equal endpoints: every index 0, also the same in both).
 void bc1OpaqueBlock(const std::uint8_t* texels, int mask, std::uint8_t* block) {
+    if (mask == 0xffff) {
+        stb_compress_dxt_block(block, texels, 0, STB_DXT_HIGHQUAL);
+        fourColourMode(block);
+        return;
+    }
     std::uint8_t bc3[16];
     squish::CompressMasked(texels, mask, bc3, squish::kDxt5 | squish::kColourClusterFit);
     std::memcpy(block, bc3 + 8, 8);

@@ -81,6 +81,8 @@ std::uint64_t settingsKey(const BakeSettings& s) {
     // RGBA8 bakes keep their keys; block formats store other files (walls/texture_blocks.h).
     if (s.textureFormat != walls::TextureFormat::Rgba8)
         h.text("texture format v1").text(walls::textureFormatName(s.textureFormat));
+    // BC1's opaque blocks come from stb_dxt since session 12 (other bytes than libsquish's).
+    if (s.textureFormat == walls::TextureFormat::Bc1) h.text("bc1 opaque blocks stb_dxt v1");
     // The wall renderer lights per vertex where that is within this tolerance (RenderSettings
     // default; render/vertex_lighting.h): other pixels, by at most half a level.
     h.text("vertex lighting v1").number(render::kVertexLightingTolerance);
