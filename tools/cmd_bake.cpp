@@ -14,7 +14,8 @@
 namespace cavewall::tools {
 
 const char* const kBakeUsage =
-    "usage: cavewall bake SCENE [--alpha DEG] [--jobs N] [--cache DIR] [--max-res N] [--min-zone M]\n"
+    "usage: cavewall bake SCENE [--alpha DEG] [--jobs N] [--draw-threads N] [--cache DIR] [--max-res N]\n"
+    "                           [--min-zone M]\n"
     "                           [--blend M] [--ppd N] [--tile N] [--walls flat|depth]\n"
     "                           [--lod-texels T] [--limit N] [--texture-format rgba8|bc1|bc3]\n"
     "\n"
@@ -29,7 +30,9 @@ const char* const kBakeUsage =
     "or corrupt file is re-baked; after a change, textures it does not touch are taken from earlier\n"
     "bakes.\n"
     "--cache: the cache folder (default $CAVEWALL_CACHE, else ~/.cache/cavewall).\n"
-    "--jobs: threads encoding and writing files (default 1; rendering uses one GL context).\n"
+    "--jobs: threads encoding and writing files (default 1).\n"
+    "--draw-threads: GL contexts drawing textures, each on its own thread with its own copy of the\n"
+    "scene (default 2, in [1, 8]; the same files whatever the count).\n"
     "--max-res: largest texture side in texels (default 1024; the plan's density target is\n"
     "scaled down to fit). --tile: file tile size (default 64). --alpha, --min-zone, --blend, --ppd:\n"
     "as for `cavewall plan`.\n"
@@ -101,7 +104,7 @@ void ProgressPrinter::operator()(const gl::BakeProgress& p) {
 
 int runBake(const std::vector<std::string>& words) {
     const Args args(words, {});
-    args.expectFlags({"alpha", "jobs", "cache", "max-res", "min-zone", "blend", "ppd", "tile", "walls", "lod-texels", "limit",
+    args.expectFlags({"alpha", "jobs", "draw-threads", "cache", "max-res", "min-zone", "blend", "ppd", "tile", "walls", "lod-texels", "limit",
                       "texture-format"});
     gl::BakeRequest request;
     request.plan.alphaDeg = args.number("alpha", request.plan.alphaDeg, 1e-6, 90.0);
@@ -110,6 +113,7 @@ int runBake(const std::vector<std::string>& words) {
     request.plan.pixelsPerDegree = args.number("ppd", request.plan.pixelsPerDegree, 0.01, 1000.0);
     walls::validatePlanOptions(request.plan);
     request.settings.jobs = static_cast<int>(args.integer("jobs", 1, 1, 64));
+    request.settings.drawThreads = static_cast<int>(args.integer("draw-threads", 2, 1, 8));
     request.settings.maxResolution = static_cast<int>(args.integer("max-res", request.settings.maxResolution, 16, 16384));
     request.settings.tileSize = static_cast<int>(args.integer("tile", request.settings.tileSize, 16, 1024));
     request.settings.kind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);

@@ -290,6 +290,24 @@ TEST_F(BakeCacheTest, BadSettingsAndFoldersAreErrors) {
     request.settings.tileSize = 64;
     request.settings.lodTexels = 4.5;
     EXPECT_THAT([&] { bakeScene(request); }, ThrowsMessage<Error>(HasSubstr("lodTexels: expected [0, 4], got 4.5")));
+    request.settings.lodTexels = 0.5;
+    request.settings.drawThreads = 9;
+    EXPECT_THAT([&] { bakeScene(request); }, ThrowsMessage<Error>(HasSubstr("drawThreads: expected [1, 8], got 9")));
+}
+
+// Textures drawn by several contexts at once (each on its own thread) are the very files one
+// context draws: the same names, sizes and hashes in the manifest.
+TEST_F(BakeCacheTest, SeveralDrawingThreadsWriteTheSameFiles) {
+    request.settings.textureFormat = walls::TextureFormat::Bc1;
+    const BakeResult one = bakeScene(request);
+    ASSERT_GT(one.baked, 6);
+    request.cache = root / "cache-threads";
+    request.settings.drawThreads = 3;
+    request.settings.jobs = 2;
+    const BakeResult three = bakeScene(request);
+    EXPECT_EQ(three.baked, one.baked);
+    EXPECT_EQ(withoutStamps(three.manifest), withoutStamps(one.manifest));
+    EXPECT_EQ(three.trianglesDrawn, one.trianglesDrawn);
 }
 
 TEST(BakeResolution, PlanResolutionIsCappedKeepingTheAspect) {

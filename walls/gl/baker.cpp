@@ -13,12 +13,14 @@
 #include "walls/wall_setup.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <optional>
+#include <thread>
 #include <utility>
 
 namespace cavewall::gl {
@@ -39,6 +41,7 @@ void validateBakeSettings(const BakeSettings& s) {
     if (s.tileSize < 16 || s.tileSize > 1024 || s.tileSize % 16 != 0)
         fail("tileSize", "a multiple of 16 in [16, 1024]", std::to_string(s.tileSize));
     if (s.jobs < 1 || s.jobs > 64) fail("jobs", "[1, 64]", std::to_string(s.jobs));
+    if (s.drawThreads < 1 || s.drawThreads > 8) fail("drawThreads", "[1, 8]", std::to_string(s.drawThreads));
     if (!(s.ambient >= 0.0f && s.ambient <= 1.0f)) fail("ambient", "[0, 1]", std::to_string(s.ambient));
     if (!(s.lodTexels >= 0.0 && s.lodTexels <= 4.0)) fail("lodTexels", "[0, 4]", std::to_string(s.lodTexels));
 }
@@ -154,8 +157,15 @@ private:
     void keyPending(std::uint64_t settings);
     void linkFromCache();
     void sample();
+    // What one drawing thread adds to the result.
+    struct Drawn {
+        double draw = 0.0, read = 0.0, queue = 0.0;
+        std::uint64_t triangles = 0;
+        double maxLodErrorTexels = 0.0;
+    };
     void render(const std::vector<Item>& items);
-    void renderOne(const Item& item, WallTextureRenderer& renderer, BakeWriter& writer);
+    void renderOne(const Item& item, WallTextureRenderer& renderer, BakeWriter& writer, Drawn& drawn) const;
+    void add(const Drawn& drawn);
     Item itemOf(const walls::Texture& t) const;
     void finish(const walls::BakedTexture& entry, bool baked, std::uint64_t bytes);
     void writeManifestNow(bool force);
@@ -369,31 +379,70 @@ void Bake::render(const std::vector<Item>& items) {
     auto absorb = [&](bool wait) {
         for (const walls::BakedTexture& e : writer.takeDone(wait)) finish(e, true, e.bytes + e.depthBytes);
     };
-    for (const Item& item : items) {
-        renderOne(item, renderer, writer);
-        absorb(false);
+    // Helpers (drawThreads - 1, each its own context and renderer) and this thread take items
+    // in turn; only this thread finishes entries (the manifest, the report).
+    std::atomic<std::size_t> next{0};
+    const int helpers = std::min(_request.settings.drawThreads - 1, static_cast<int>(items.size()) / 2);
+    std::vector<Drawn> helped(static_cast<std::size_t>(std::max(helpers, 0)));
+    std::vector<std::exception_ptr> errors(helped.size());
+    std::vector<std::jthread> threads;  // joined however this function ends
+    for (std::size_t h = 0; h < helped.size(); ++h)
+        threads.emplace_back([&, h] {
+            try {
+                std::unique_ptr<gl::Context> context = gl::createHeadlessContext();
+                context->makeCurrent();
+                WallTextureRenderer own(_scene, _request.settings.ambient, _request.settings.lodTexels);
+                for (std::size_t i; (i = next++) < items.size();) renderOne(items[i], own, writer, helped[h]);
+            } catch (...) {
+                errors[h] = std::current_exception();
+                next = items.size();  // the others stop too
+            }
+        });
+    Drawn drawn;
+    try {
+        for (std::size_t i; (i = next++) < items.size();) {
+            renderOne(items[i], renderer, writer, drawn);
+            absorb(false);
+        }
+    } catch (...) {
+        next = items.size();  // the helpers finish the texture they hold and stop
+        throw;
     }
+    for (std::jthread& t : threads) t.join();
+    add(drawn);
+    for (const Drawn& d : helped) add(d);
+    for (const std::exception_ptr& e : errors)
+        if (e) std::rethrow_exception(e);
     while (writer.pending() > 0) absorb(true);
     absorb(false);
 }
 
-void Bake::renderOne(const Item& item, WallTextureRenderer& renderer, BakeWriter& writer) {
+void Bake::add(const Drawn& drawn) {
+    _result.times.draw += drawn.draw;
+    _result.times.read += drawn.read;
+    _result.times.queue += drawn.queue;
+    _result.trianglesDrawn += drawn.triangles;
+    _result.maxLodErrorTexels = std::max(_result.maxLodErrorTexels, drawn.maxLodErrorTexels);
+}
+
+// Called from every drawing thread at once: reads the bake's shared state, writes only `drawn`.
+void Bake::renderOne(const Item& item, WallTextureRenderer& renderer, BakeWriter& writer, Drawn& drawn) const {
     const walls::WallContents& c = _walls.contents.at({item.texture->wall, item.side});
     const display::ScreenQuad quad = walls::quadSeenFrom(_plan.walls[item.texture->wall].quad, item.side);
     walls::DepthImage depth;
     scenes::Image colour = _request.settings.kind == walls::WallKind::Depth
                                ? renderer.render(quad, item.texture->samplingPoint, item.resolution, c.baked, depth)
                                : renderer.render(quad, item.texture->samplingPoint, item.resolution, c.baked);
-    _result.times.draw += renderer.lastTiming().drawMs / 1000.0;
-    _result.times.read += renderer.lastTiming().readMs / 1000.0;
-    _result.trianglesDrawn += renderer.lastStats().triangles;
-    _result.maxLodErrorTexels = std::max(_result.maxLodErrorTexels, renderer.lastLod().maxErrorPx);
+    drawn.draw += renderer.lastTiming().drawMs / 1000.0;
+    drawn.read += renderer.lastTiming().readMs / 1000.0;
+    drawn.triangles += renderer.lastStats().triangles;
+    drawn.maxLodErrorTexels = std::max(drawn.maxLodErrorTexels, renderer.lastLod().maxErrorPx);
     const Clock::time_point queued = Clock::now();
     if (_request.settings.kind == walls::WallKind::Depth)
         writer.submit(item.entry, std::move(colour), std::move(depth));
     else
         writer.submit(item.entry, std::move(colour));
-    _result.times.queue += secondsSince(queued);
+    drawn.queue += secondsSince(queued);
 }
 
 void Bake::finish(const walls::BakedTexture& entry, bool baked, std::uint64_t bytes) {

@@ -48,8 +48,11 @@ struct BakeSettings {
     int maxResolution = 1024;   // texels per texture side at most, [16, 16384]; larger plan
                                 // resolutions are scaled down to fit, keeping the aspect
     int tileSize = 64;          // file tile edge in texels, a multiple of 16 in [16, 1024]
-    int jobs = 1;               // threads building MIP chains and writing files, [1, 64]; GL
-                                // rendering is one context on the calling thread
+    int jobs = 1;               // threads building MIP chains and writing files, [1, 64]
+    // GL contexts drawing textures, [1, 8]: the calling thread's (BakeRequest::context or the
+    // bake's own) and drawThreads - 1 headless ones, each on a thread of its own with its own
+    // copy of the scene on the GPU. The same files whatever the count (not part of the key).
+    int drawThreads = 1;
     float ambient = 0.35f;      // as RenderSettings::ambient, [0, 1]
     // Flat: colour only. Depth (issue 16): colour plus a lossless float depth file per texture
     // (walls/depth_file.h), read back from the same render's depth buffer; keys the cache.
@@ -85,8 +88,9 @@ struct BakeProgress {
 struct BakeTimes {
     double prepare = 0.0;    // making the context, uploading the scene, building level chains
     double draw = 0.0;       // level choice, culling, submission and GL work until finished
-    double read = 0.0;       // reading textures back from GL
-    double queue = 0.0;      // the render thread waiting for a writer thread to take a texture
+                             // (summed over drawing threads)
+    double read = 0.0;       // reading textures back from GL (summed over drawing threads)
+    double queue = 0.0;      // drawing threads waiting for a writer thread to take a texture
     double mips = 0.0;       // premultiplied MIP chains (writer threads)
     double encode = 0.0;     // tiled, compressed TIFF encoding and writing (writer threads)
     double hash = 0.0;       // hashing written files (writer threads)

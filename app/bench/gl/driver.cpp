@@ -43,6 +43,7 @@ BakedWalls bakeWalls(const BenchOptions& o, const std::filesystem::path& sceneFi
     request.scene = sceneFile;
     request.settings.maxResolution = o.bakeResolution;
     request.settings.jobs = 2;
+    request.settings.drawThreads = 2;
     request.settings.kind = o.wallKind;
     request.settings.textureFormat = o.textureFormat;
     request.context = &context;
