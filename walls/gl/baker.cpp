@@ -411,10 +411,11 @@ void Bake::render(const std::vector<Item>& items) {
     for (std::jthread& t : threads) t.join();
     add(drawn);
     for (const Drawn& d : helped) add(d);
-    for (const std::exception_ptr& e : errors)
-        if (e) std::rethrow_exception(e);
+    // What was drawn is written and listed before a helper's error is passed on: no lost work.
     while (writer.pending() > 0) absorb(true);
     absorb(false);
+    for (const std::exception_ptr& e : errors)
+        if (e) std::rethrow_exception(e);
 }
 
 void Bake::add(const Drawn& drawn) {

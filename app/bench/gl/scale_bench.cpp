@@ -88,7 +88,6 @@ BakeResult bakeSubset(const scenes::Scene& scene, const scenes::SceneDescription
     request.scene = sceneFile;
     request.settings.maxResolution = o.bakeResolution;
     request.settings.jobs = 2;
-    request.settings.drawThreads = 2;
     request.context = &context;
     request.cache = o.data / "bake-cache";
     return bakeWalls(scene, d, subset, request);
