@@ -15,8 +15,7 @@ namespace cavewall::tools {
 
 const char* const kBakeUsage =
     "usage: cavewall bake SCENE [--alpha DEG] [--jobs N] [--draw-threads N] [--cache DIR] [--max-res N]\n"
-    "                           [--min-zone M]\n"
-    "                           [--blend M] [--ppd N] [--tile N] [--walls flat|depth]\n"
+    "                           [--min-zone M] [--blend M] [--ppd N] [--tile N] [--walls flat|depth]\n"
     "                           [--lod-texels T] [--limit N] [--texture-format rgba8|bc1|bc3]\n"
     "\n"
     "Bakes the textures of every virtual wall and portal of SCENE (a scene.json or a folder holding\n"
@@ -104,8 +103,8 @@ void ProgressPrinter::operator()(const gl::BakeProgress& p) {
 
 int runBake(const std::vector<std::string>& words) {
     const Args args(words, {});
-    args.expectFlags({"alpha", "jobs", "draw-threads", "cache", "max-res", "min-zone", "blend", "ppd", "tile", "walls", "lod-texels", "limit",
-                      "texture-format"});
+    args.expectFlags({"alpha", "jobs", "draw-threads", "cache", "max-res", "min-zone", "blend", "ppd", "tile", "walls",
+                      "lod-texels", "limit", "texture-format"});
     gl::BakeRequest request;
     request.plan.alphaDeg = args.number("alpha", request.plan.alphaDeg, 1e-6, 90.0);
     request.plan.minZoneSize = args.number("min-zone", request.plan.minZoneSize, 0.01, 1000.0);
