@@ -97,6 +97,7 @@ Scene loadScene(const SceneDescription& description) {
             for (std::size_t i = first; i < scene.objects.size(); ++i)  // patterns may name a chunk
                 for (const std::string& p : m.structureNodes)
                     if (matchesNodePattern(scene.objects[i].name, p)) scene.objects[i].role = Role::Structure;
+        splitLargeObjects(scene, first, scene.objects.size(), kStructureChunkMetres, 1024, Role::Structure);
     }
     prepareForDrawing(scene);
     for (Object& o : scene.objects) o.cell = findCell(description.cells, o.worldBounds.centre());

@@ -23,8 +23,14 @@ bool matchesNodePattern(std::string_view name, std::string_view pattern);
 // data is as the file stores it (no welding or reordering).
 Scene loadGltf(const std::filesystem::path& file);
 
+// Structure objects (always drawn, never paged) wider than this along x or z and of at least
+// 1024 triangles are cut into square columns of this side at load (scenes/mesh_split.h; they
+// stay structure): a floor or roof spanning a whole hall is then frustum-culled per column
+// instead of drawn whole in every view. One bay of the generated plant.
+inline constexpr double kStructureChunkMetres = 10.0;
+
 // Loads every model of a validated description, applies units, up axis and placement, tags
-// structure objects, prepares the meshes for drawing (vertices welded, triangles ordered for
+// structure objects (and cuts wide ones, kStructureChunkMetres), prepares the meshes for drawing (vertices welded, triangles ordered for
 // the vertex cache unless the material blends: scenes/mesh_optimize.h; the shape and the
 // triangle count stay) and assigns each object to the cell containing its centre.
 Scene loadScene(const SceneDescription& description);

@@ -41,7 +41,7 @@ Mesh chunkOf(const Mesh& m, const std::vector<std::uint32_t>& triangles, const s
 }  // namespace
 
 SplitStats splitLargeObjects(Scene& scene, std::size_t first, std::size_t end, double chunkMetres,
-                             std::size_t minTriangles) {
+                             std::size_t minTriangles, Role role) {
     if (!std::isfinite(chunkMetres) || chunkMetres <= 0.0)
         throw Error("mesh split: chunk size: expected a finite number of metres > 0, got " + std::to_string(chunkMetres));
     SplitStats stats;
@@ -50,7 +50,7 @@ SplitStats splitLargeObjects(Scene& scene, std::size_t first, std::size_t end, d
     std::vector<int> cutMeshes;
     for (std::size_t i = first; i < end; ++i) {
         Object& o = scene.objects[i];
-        if (o.role != Role::Content || o.mesh < 0 || static_cast<std::size_t>(o.mesh) >= scene.meshes.size()) continue;
+        if (o.role != role || o.mesh < 0 || static_cast<std::size_t>(o.mesh) >= scene.meshes.size()) continue;
         const glm::dvec3 size = o.worldBounds.size();
         if (std::max(size.x, size.z) <= chunkMetres) continue;
         const Mesh& m = scene.meshes[o.mesh];

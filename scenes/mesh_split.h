@@ -5,8 +5,8 @@
 // (scenes/loader.h), so one object spanning the whole building defeats every cell and every
 // frustum test.
 //
-// splitLargeObjects cuts each content object (structure is always drawn and stays whole) of
-// scene.objects[first, end) whose world bounds are wider
+// splitLargeObjects cuts each object of role `role` (content by default; the loader also cuts
+// wide structure, scenes/loader.h) of scene.objects[first, end) whose world bounds are wider
 // than `chunkMetres` along x or z (the floor plane, where cells are cut) and that has at least
 // `minTriangles` triangles: its triangles are grouped by the square column of side
 // `chunkMetres` (world x, z from the object's bounds' minimum) holding their world centroid;
@@ -31,6 +31,6 @@ struct SplitStats {
 
 // Throws cavewall::Error when chunkMetres is not finite and > 0.
 SplitStats splitLargeObjects(Scene& scene, std::size_t first, std::size_t end, double chunkMetres,
-                             std::size_t minTriangles = 1024);
+                             std::size_t minTriangles = 1024, Role role = Role::Content);
 
 }  // namespace cavewall::scenes

@@ -118,6 +118,29 @@ TEST(MeshSplit, LeavesSmallObjectsSharedMeshesOutsideTheRangeAndUnusedMeshesAlon
     EXPECT_EQ(s.meshes[2].name, "unused");
 }
 
+TEST(MeshSplit, CutsOnlyObjectsOfTheRoleAsked) {
+    Scene s = sceneOf({floorGrid(10, "floor"), floorGrid(10, "slab")});
+    addObject(s, 0, glm::dmat4(1.0), "structure/floor", Role::Structure);
+    addObject(s, 1, glm::translate(glm::dmat4(1.0), {20, 0, 0}), "slab", Role::Content);
+    EXPECT_EQ(splitLargeObjects(s, 0, 2, 4.0, 1).objectsCut, 1);  // content by default
+    ASSERT_EQ(s.objects.size(), 1u + 9u);
+    EXPECT_EQ(s.objects[0].name, "structure/floor");               // structure left whole
+    const SplitStats stats = splitLargeObjects(s, 0, s.objects.size(), 4.0, 1, Role::Structure);
+    EXPECT_EQ(stats.objectsCut, 1);
+    EXPECT_EQ(stats.chunks, 9);
+    ASSERT_EQ(s.objects.size(), 9u + 9u);
+    std::size_t structure = 0, triangles = 0;
+    for (const Object& o : s.objects) {
+        triangles += s.meshes[o.mesh].triangleCount();
+        if (o.role != Role::Structure) continue;
+        ++structure;  // the chunks keep their role and name their source
+        EXPECT_THAT(o.name, testing::StartsWith("structure/floor [chunk "));
+        EXPECT_LE(std::max(o.worldBounds.size().x, o.worldBounds.size().z), 4.0 + 1.0) << o.name;
+    }
+    EXPECT_EQ(structure, 9u);
+    EXPECT_EQ(triangles, 2u * 200u);
+}
+
 TEST(MeshSplit, NeedsEnoughTrianglesAndAPositiveChunk) {
     Scene s = sceneOf({floorGrid(10, "floor")});
     addObject(s, 0, glm::dmat4(1.0), "floor", Role::Content);
