@@ -27,7 +27,7 @@ const char* const kBenchUsage =
     "                      [--walls flat|depth] [--clusters [--cluster-budgets T1,T2,...]]\n"
     "                      [--compare-scene OTHER,...] [--on-demand] [--texture-format rgba8|bc1|bc3]\n"
     "       cavewall bench --scale 2M,8M,32M [--data DIR] [--scale-metres M] [--frames N] [--resolution N]\n"
-    "                      [--triangle-budget N|near] [--lod-max PX]\n"
+    "                      [--triangle-budget N|near] [--lod-max PX] [--min-zone M] [--walls flat|depth]\n"
     "                      [--display D] [--bake-resolution N] [--geometry-budget MB] [--lod PX] [--compare-every K]\n"
     "                      [--out DIR]\n"
     "       cavewall bench --stability\n"
@@ -114,7 +114,10 @@ const char* const kBenchUsage =
     "         A fourth mode, walls-budget, draws the walls with their geometry held to\n"
     "         --triangle-budget N triangles a frame (default near: the near limit's median over the\n"
     "         stretch; 0 leaves the mode out), raising the level-of-detail tolerance to at most\n"
-    "         --lod-max PX (default 8); its image error shows what the budget costs.\n"
+    "         --lod-max PX (default 8); its image error shows what the budget costs. --min-zone M\n"
+    "         (default 1) is the walls' smallest zone: a smaller one narrows the geometry zones\n"
+    "         near each wall at the cost of more textures. --walls depth: both walls modes draw\n"
+    "         depth walls (planned with their own bound, baked with depth; issue 16).\n"
     "\n"
     "--stability  runs the stiff and extreme numerical cases (projection at eye distances\n"
     "             1e-9 ... 1e6 m, world offsets to 1e7 m, near/far ratios to 1e9 with reversed-Z,\n"
@@ -274,6 +277,8 @@ int runScaleBench(const Args& args) {
         o.triangleBudget = args.integer("triangle-budget", 0, 0, 1000000000);
     o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);
     o.compareEvery = static_cast<int>(args.integer("compare-every", o.compareEvery, 0, 100000));
+    o.plan.minZoneSize = args.number("min-zone", o.plan.minZoneSize, 1e-3, 1e4);
+    o.wallKind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
     const std::filesystem::path out = args.getOr("out", "bench-scale-out");
     o.afterSize = [&](const bench::ScaleReport& soFar) { bench::writeScaleReport(out, soFar); };
     const bench::ScaleReport report = gl::runScaleBench(o);

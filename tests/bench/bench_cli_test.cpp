@@ -309,6 +309,31 @@ TEST(BenchSceneCli, ScaleRunHasFourModesPerSize) {
     EXPECT_THAT(r.out, HasSubstr("textures over alpha"));
 }
 
+// --walls depth and --min-zone reach the scale bench's plan and bake (they were once accepted
+// and ignored there): the report names them, the bake holds depth images, and the depth walls'
+// own bound keeps every drawn texture within alpha.
+TEST(BenchSceneCli, ScaleRunDrawsDepthWallsWithTheZonesAsked) {
+    const test::TempFolder root("bench_cli_scale_depth");
+    fs::remove_all(root / "data");
+    const fs::path out = root / "out";
+    const CliResult r = runCavewall({"bench", "--scale", "20k", "--resolution", "32", "--frames", "4",
+                                     "--bake-resolution", "16", "--scale-metres", "10", "--compare-every", "2",
+                                     "--walls", "depth", "--min-zone", "2", "--triangle-budget", "0",
+                                     "--data", (root / "data").string(), "--out", out.string()});
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    EXPECT_THAT(r.out, HasSubstr("walls: depth walls at alpha 10 deg"));
+    EXPECT_THAT(r.out, HasSubstr("walls planned (zones of at least 2.00 m)"));
+    std::size_t depthImages = 0;
+    for (const auto& e : fs::recursive_directory_iterator(root / "data" / "bake-cache"))
+        depthImages += e.path().string().ends_with(".depth.tif");
+    EXPECT_GT(depthImages, 0u);
+    const test::CsvTable csv = test::readCsv(out / "scale.csv");
+    ASSERT_EQ(csv.size(), 3u);  // full, near, walls (no budget)
+    EXPECT_EQ(csv[2].at("mode"), "walls");
+    EXPECT_EQ(csv[2].number("textures_over_alpha"), 0.0);
+    EXPECT_EQ(csv[2].number("compared_frames"), 2.0);
+}
+
 TEST(BenchSceneCli, BadInputIsAClearError) {
     struct Case {
         std::vector<std::string> args;
@@ -333,6 +358,9 @@ TEST(BenchSceneCli, BadInputIsAClearError) {
         {{"bench", "--scale", "2M", "--scale-metres", "0"}, "--scale-metres"},
         {{"bench", "--scale", "2M", "--lod", "0"}, "--triangle-budget: needs levels of detail (--lod PX with PX > 0)"},
         {{"bench", "--scale", "2M", "--triangle-budget", "lots"}, "--triangle-budget"},
+        {{"bench", "--scale", "2M", "--walls", "curved"}, "--walls: expected flat or depth, got 'curved'"},
+        {{"bench", "--scale", "2M", "--min-zone", "0.25"},
+         "bench --scale: plan options: minZoneSize: expected more than twice blendWidth (0.4 m), got 0.25 m"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.message);

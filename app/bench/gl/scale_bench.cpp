@@ -87,6 +87,7 @@ BakeResult bakeSubset(const scenes::Scene& scene, const scenes::SceneDescription
     BakeRequest request;
     request.scene = sceneFile;
     request.settings.maxResolution = o.bakeResolution;
+    request.settings.kind = o.wallKind;
     request.settings.jobs = 2;
     request.context = &context;
     request.cache = o.data / "bake-cache";
@@ -190,7 +191,7 @@ std::unique_ptr<PreparedSize> prepareSize(const ScaleOptions& o, std::size_t tar
     d.walkPath = bench::pathPrefix(d.walkPath, o.pathMetres);
     p->path = bench::recordEyePath(p->scene, d, o.display, o.tracker, o.frames);
     start = Clock::now();
-    walls::PlanOptions plan = walls::planOptionsFor(o.plan, walls::WallKind::Flat, o.bakeResolution);
+    walls::PlanOptions plan = walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution);
     plan.alphaDeg = o.alphaDeg;
     p->setup = walls::prepareWalls(p->scene, d, plan);
     p->planSeconds = secondsSince(start);
@@ -201,7 +202,8 @@ std::unique_ptr<PreparedSize> prepareSize(const ScaleOptions& o, std::size_t tar
     p->size = fixed(static_cast<double>(p->scene.triangleCount()) / 1e6, 2) + " M triangles";
     p->line = p->size + " (" + std::to_string(d.cells.size()) + " cells, " + std::to_string(p->scene.objects.size()) +
               " objects): generated in " + fixed(generateSeconds, 1) + " s (0: reused), loaded in " +
-              fixed(p->loadSeconds, 2) + " s, walls planned in " + fixed(p->planSeconds, 1) + " s; baked " +
+              fixed(p->loadSeconds, 2) + " s, walls planned (zones of at least " + fixed(plan.minZoneSize, 2) + " m) in " +
+              fixed(p->planSeconds, 1) + " s; baked " +
               std::to_string(ids.size()) + " of the plan's " + std::to_string(p->setup.plan.textures.size()) +
               " textures (those the stretch requests) at most " + std::to_string(o.bakeResolution) + " texels: " +
               std::to_string(baked.baked) + " rendered in " + fixed(baked.seconds, 1) + " s, " +
@@ -251,6 +253,7 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
     WalkthroughOptions wallsOptions;
     wallsOptions.render.lodPixels = o.lodPixels;
     wallsOptions.geometryBudgetMB = o.geometryBudgetMB;
+    wallsOptions.wallKind = o.wallKind;
     // Synchronous paging: the first frame is complete (its textures and cells loaded), and after
     // the warm-up pass every texture and mesh group of the stretch stays resident, so the timed
     // frames measure drawing (nothing is left to wait for).
@@ -344,6 +347,11 @@ bench::ScaleReport runScaleBench(const ScaleOptions& o) {
     if (o.triangleBudget != 0 && !(o.lodPixels > 0.0))
         throw Error("bench --scale: --triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod " +
                     config::formatNumber(o.lodPixels) + " (--triangle-budget 0 leaves the walls-budget mode out)");
+    try {  // before any plant is generated
+        walls::validatePlanOptions(walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution));
+    } catch (const Error& e) {
+        throw Error(std::string("bench --scale: ") + e.what());
+    }
     const auto start = Clock::now();
     const display::Display display(o.display);
     const auto context = createHeadlessContext();
@@ -357,8 +365,8 @@ bench::ScaleReport runScaleBench(const ScaleOptions& o) {
         "path: the first " + config::formatNumber(o.pathMetres) + " m of each plant's walk path (the same bays at every "
             "size), " + std::to_string(o.frames) + " frames, head " + o.tracker + "; modes drawn frame by frame in turn",
         "full: all geometry, frustum-culled, full detail; near: the viewer's cell and structure at lod " +
-            config::formatNumber(o.lodPixels) + " px; walls: alpha " + config::formatNumber(o.alphaDeg) +
-            " deg, lod " + config::formatNumber(o.lodPixels) + " px, geometry paging under " +
+            config::formatNumber(o.lodPixels) + " px; walls: " + std::string(walls::wallKindName(o.wallKind)) +
+            " walls at alpha " + config::formatNumber(o.alphaDeg) + " deg, lod " + config::formatNumber(o.lodPixels) + " px, geometry paging under " +
             config::formatNumber(o.geometryBudgetMB) + " MB (mesh groups shared by cells stored once), synchronous "
             "paging (the first frame complete; textures and groups of the stretch resident after a warm-up pass); "
             "first frame: the mode's setup and first frame after loading (walls: planning too; baking not, it is "

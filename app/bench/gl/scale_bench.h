@@ -47,6 +47,7 @@ struct ScaleOptions {
     long frames = 60;                       // timed frames over the stretch
     double alphaDeg = 10.0;
     walls::PlanOptions plan;                // alphaDeg replaced
+    walls::WallKind wallKind = walls::WallKind::Flat;  // of both walls modes (issue 16: depth)
     int bakeResolution = 128;               // texels per texture side at most
     double lodPixels = 1.0;                 // the walls and near modes' tolerance
     double geometryBudgetMB = 64.0;         // the walls mode's geometry paging budget
