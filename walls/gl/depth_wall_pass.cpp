@@ -49,10 +49,15 @@ float hitDepth(float s) {
     return (uDepthCoeffs.x * zh + uDepthCoeffs.y) / (-zh);
 }
 
-float depthAt(sampler2D depth, ivec2 size, vec2 t) {
-    ivec2 i = ivec2(floor(vec2(t.x / uSize.x, 1.0 - t.y / uSize.y) * vec2(size)));
-    if (any(lessThan(i, ivec2(0))) || any(greaterThanEqual(i, size))) return uintBitsToFloat(0x7F800000u);
-    return texelFetch(depth, i, 0).r;
+// The march works in texel units (x right, y down from the wall's upper edge, as the rows are
+// stored), so a step is one mix and one floor; and it tests a hit without dividing: with
+// s = D_S sigma / (1 - sigma) and 1 - sigma > 0, s >= d - 1e-5 (D_S + s) is
+// D_S sigma (1 + 1e-5) >= (d - 1e-5 D_S)(1 - sigma). Outside the texture there is no surface.
+bool hits(sampler2D depth, ivec2 size, vec2 ta, vec2 tb, float dS, float sg) {
+    ivec2 i = ivec2(floor(mix(ta, tb, sg)));
+    if (any(lessThan(i, ivec2(0))) || any(greaterThanEqual(i, size))) return false;
+    float d = texelFetch(depth, i, 0).r;
+    return dS * sg * (1.0 + 1e-5) >= (d - 1e-5 * dS) * (1.0 - sg);
 }
 
 vec4 march(sampler2D colour, sampler2D depth, vec3 S, vec2 range, vec2 gx, vec2 gy, inout float nearest) {
@@ -60,20 +65,21 @@ vec4 march(sampler2D colour, sampler2D depth, vec3 S, vec2 range, vec2 gx, vec2 
     vec2 a = vWall;
     vec2 b = S.xy + S.z * (vWall - uEye.xy) / uEye.z;
     float s0 = range.x / (S.z + range.x), s1 = range.y / (S.z + range.y);
-    float pitch = min(uSize.x / float(size.x), uSize.y / float(size.y));
-    int steps = clamp(int(ceil(length(b - a) * (s1 - s0) / pitch)), 1, uMaxSteps);
+    vec2 perMetre = vec2(size) / uSize;
+    int steps = clamp(int(ceil(length(b - a) * (s1 - s0) * max(perMetre.x, perMetre.y))), 1, uMaxSteps);
+    vec2 ta = vec2(a.x * perMetre.x, float(size.y) - a.y * perMetre.y);
+    vec2 tb = vec2(b.x * perMetre.x, float(size.y) - b.y * perMetre.y);
+    float dsg = (s1 - s0) / float(steps);
     float lo = s0, hi = -1.0;
     for (int i = 0; i <= steps; ++i) {
-        float sg = s0 + (s1 - s0) * float(i) / float(steps);
-        float s = S.z * sg / (1.0 - sg);
-        if (s >= depthAt(depth, size, mix(a, b, sg)) - 1e-5 * (S.z + s)) { hi = sg; break; }
+        float sg = s0 + dsg * float(i);
+        if (hits(depth, size, ta, tb, S.z, sg)) { hi = sg; break; }
         lo = sg;
     }
     if (hi < 0.0) return vec4(0.0);
     for (int r = 0; r < uRefine && hi > lo; ++r) {
         float mid = 0.5 * (lo + hi);
-        float s = S.z * mid / (1.0 - mid);
-        if (s >= depthAt(depth, size, mix(a, b, mid)) - 1e-5 * (S.z + s)) hi = mid; else lo = mid;
+        if (hits(depth, size, ta, tb, S.z, mid)) hi = mid; else lo = mid;
     }
     vec2 t = mix(a, b, hi);
     nearest = min(nearest, S.z * hi / (1.0 - hi));

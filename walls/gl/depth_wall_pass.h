@@ -17,13 +17,16 @@
 // skins to cut (the march never hits an empty texel, and disocclusions show a bounded stretch of
 // the step's near side, which walls::depthWallErrorBound predicts), and its cost is per pixel,
 // bounded by maxSteps, not per texel. Measured cost (bench/wall_pass_bench.cpp, one
-// full-screen layer at 1024 x 1024 pixels, 512^2 textures, llvmpipe on 2 shared cores, load
-// ~10, ms per layer over the clear, 1- and 4-layer runs; their spread, ~20 %, is the noise):
-// depth 157-191 ms (~150-180 ns per pixel; 16 steps at most: 157-159 ms, so the step cap is
-// not the main cost), two blended depth textures 326-342 ms, against a flat layer's 15-18 ms
-// and two blended flat textures' 29 ms: about 10x a flat wall on llvmpipe, far over issue
-// 16's 1.3x. The displaced-grid-mesh alternative (fill like a flat wall, cost per vertex) is
-// the next thing to measure on this fill-bound rasteriser; not done.
+// full-screen layer at 1024 x 1024 pixels, 512^2 textures, llvmpipe on 2 cores, ms per layer
+// over the clear; 4 December 2026, load below 1): a flat layer 5.7-9.6 ms (two blended
+// textures 8.7-12.7), a depth layer 40-42 ms (two blended 82-86), after the march moved to
+// texel units with a division-free hit test (49-51 and 97-99 before, same runs' conditions);
+// of the 49-51 ms before, a one-step march without refinement was about 15 ms (the per-pixel
+// setup, the late depth test that gl_FragDepth and discard force, the gradient sampling) and
+// 6 bisection steps about 8 ms. In the walkthrough the pass is a part of the frame: `bench --scale
+// --walls depth` (cave4 at 1024 x 1024 per screen, 128-texel bakes) ran 1.17-1.38x the flat
+// walls' median frame time (README, "Depth walls"). The displaced-grid-mesh alternative is
+// not measured.
 //
 // Blending and state as gl::WallPass (premultiplied weighted sum of up to kMaxWallTextures
 // layers; reversed-Z GL_GREATER against the geometry, no depth writes), except that the depth
