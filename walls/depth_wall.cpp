@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 #include <vector>
 
 // Proof of the step bound (depth_wall.h). Wall frame, S = (s, -D_S), E = (e, -D_E), s and e
@@ -84,6 +86,43 @@ float fetch(const DepthImage& image, const WallFrame& f, glm::dvec2 t) {
 }
 
 }  // namespace
+
+DepthImage depthBlockMinimum(const DepthImage& image, int block, int dilate) {
+    if (block < 1 || dilate < 0 || image.width < block || image.height < block ||
+        image.depth.size() != static_cast<std::size_t>(image.width) * image.height)
+        throw Error("depth block minimum: expected block >= 1, dilate >= 0 and a " + std::to_string(block) + " x " +
+                    std::to_string(block) + " block in a complete image, got block " + std::to_string(block) +
+                    ", dilate " + std::to_string(dilate) + ", " + std::to_string(image.width) + " x " +
+                    std::to_string(image.height) + " with " + std::to_string(image.depth.size()) + " depths");
+    const int bw = image.width / block, bh = image.height / block;
+    // Texel span of blocks [b0, b1] along an axis of n texels and nb whole blocks: the last
+    // whole block reaches the image's edge.
+    auto span = [&](int b0, int b1, int n, int nb) {
+        const int first = std::max(0, b0) * block;
+        const int last = std::min(b1, nb - 1) == nb - 1 ? n : (std::min(b1, nb - 1) + 1) * block;
+        return std::pair{first, last};
+    };
+    // Minimum of each whole block (extended at the edges), then over the neighbourhood.
+    DepthImage blocks{bw, bh, std::vector<float>(static_cast<std::size_t>(bw) * bh, kNoSurface)};
+    for (int by = 0; by < bh; ++by)
+        for (int bx = 0; bx < bw; ++bx) {
+            const auto [x0, x1] = span(bx, bx, image.width, bw);
+            const auto [y0, y1] = span(by, by, image.height, bh);
+            float m = kNoSurface;
+            for (int j = y0; j < y1; ++j)
+                for (int i = x0; i < x1; ++i) m = std::min(m, image.at(i, j));
+            blocks.depth[static_cast<std::size_t>(by) * bw + bx] = m;
+        }
+    DepthImage out{bw, bh, std::vector<float>(blocks.depth.size(), kNoSurface)};
+    for (int by = 0; by < bh; ++by)
+        for (int bx = 0; bx < bw; ++bx) {
+            float m = kNoSurface;
+            for (int j = std::max(0, by - dilate); j <= std::min(bh - 1, by + dilate); ++j)
+                for (int i = std::max(0, bx - dilate); i <= std::min(bw - 1, bx + dilate); ++i) m = std::min(m, blocks.at(i, j));
+            out.depth[static_cast<std::size_t>(by) * bw + bx] = m;
+        }
+    return out;
+}
 
 ReprojectHit reproject(const DepthImage& image, const WallFrame& f, glm::dvec3 eye, glm::dvec3 sample, glm::dvec2 w,
                        glm::dvec2 range, const ReprojectSettings& settings) {

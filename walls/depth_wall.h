@@ -91,6 +91,21 @@ struct DepthImage {
 // The smallest and largest finite depth (both 0 when there is none).
 glm::dvec2 depthRange(const DepthImage& image);
 
+// Block minima of a depth image, for skipping empty space in the march: an image of
+// floor(width / block) x floor(height / block) whose texel (bx, by) is the smallest depth over the
+// texels of blocks bx - dilate ... bx + dilate, by - dilate ... by + dilate (clipped to the image;
+// the last block of a row or column also takes the texels beyond it that make no whole block).
+// With dilate 1, every point within block - 1 texels (per axis) of a point of block (bx, by), or
+// of a point beyond the last block that clamps to it, lies over texels whose depth is at least
+// the value: no sample of such a stretch of the ray can hit a surface nearer than that.
+// Throws cavewall::Error unless block >= 1, dilate >= 0 and the image holds a whole block.
+DepthImage depthBlockMinimum(const DepthImage& image, int block, int dilate);
+// The march's block (texels a side; the depth texture's MIP level 3 holds depthBlockMinimum
+// with dilate 1, gl::uploadDepthTexture) and the most steps one skip test covers (each step
+// crosses at most one texel per axis, so kSkipSteps steps stay within the 3 x 3 blocks).
+inline constexpr int kSkipBlock = 8;
+inline constexpr int kSkipSteps = kSkipBlock - 1;
+
 // Converts a reversed-Z depth-buffer value of a frustum whose screen is the wall (clipFromView
 // of display::offAxisFrustum: z_view = -P[3][2] / (depth + P[2][2])) into the distance behind
 // the wall; eyeDistance is the frustum's. Buffer value 0 (cleared, nothing drawn) -> kNoSurface.

@@ -14,6 +14,9 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace cavewall::walls {
 namespace {
@@ -203,6 +206,48 @@ TEST(DepthWall, AtTheSamplingPointTheStepsCostNothing) {
         EXPECT_NEAR(hit.depth, image.at(i, 20), 1e-4 * 4.0);
         EXPECT_NEAR(glm::length(hit.texture - w), 0.0, 1e-3);
     }
+}
+
+// The march's skip level (depthBlockMinimum with dilate 1): from any point of a block (or beyond
+// the last whole block, clamped to it), every texel within kSkipSteps per axis is at least as far
+// as the block's value, and the value is reached (it is a minimum, not just a lower bound).
+TEST(DepthWall, BlockMinimumBoundsEveryTexelAStepRunCanReach) {
+    for (const auto& [w, h] : {std::pair{64, 48}, std::pair{67, 21}, std::pair{8, 8}}) {
+        SCOPED_TRACE(std::to_string(w) + " x " + std::to_string(h));
+        DepthImage image{w, h, {}};
+        unsigned state = 12345u;
+        for (int k = 0; k < w * h; ++k) {
+            state = state * 1664525u + 1013904223u;
+            image.depth.push_back(state % 7 == 0 ? kNoSurface : 0.5f + float(state >> 8) / float(1u << 24) * 20.0f);
+        }
+        const DepthImage m = depthBlockMinimum(image, kSkipBlock, 1);
+        ASSERT_EQ(m.width, w / kSkipBlock);
+        ASSERT_EQ(m.height, h / kSkipBlock);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const int bx = std::min(x / kSkipBlock, m.width - 1), by = std::min(y / kSkipBlock, m.height - 1);
+                const float value = m.at(bx, by);
+                for (int j = std::max(0, y - kSkipSteps); j <= std::min(h - 1, y + kSkipSteps); ++j)
+                    for (int i = std::max(0, x - kSkipSteps); i <= std::min(w - 1, x + kSkipSteps); ++i)
+                        ASSERT_GE(image.at(i, j), value) << "from " << x << ", " << y << " to " << i << ", " << j;
+            }
+        for (int by = 0; by < m.height; ++by)
+            for (int bx = 0; bx < m.width; ++bx) {
+                const float value = m.at(bx, by);
+                bool reached = false;
+                for (int j = 0; j < h && !reached; ++j)
+                    for (int i = 0; i < w && !reached; ++i) reached = image.at(i, j) == value;
+                EXPECT_TRUE(reached) << bx << ", " << by;
+            }
+    }
+    // Plain block minima (dilate 0) as the lower MIP levels hold them.
+    DepthImage ramp{4, 4, {}};
+    for (int k = 0; k < 16; ++k) ramp.depth.push_back(float(k));
+    const DepthImage half = depthBlockMinimum(ramp, 2, 0);
+    EXPECT_EQ(half.depth, (std::vector<float>{0.0f, 2.0f, 8.0f, 10.0f}));
+    EXPECT_THROW(depthBlockMinimum(ramp, 8, 1), Error);   // no whole block
+    EXPECT_THROW(depthBlockMinimum(ramp, 0, 0), Error);
+    EXPECT_THROW(depthBlockMinimum(ramp, 2, -1), Error);
 }
 
 }  // namespace

@@ -70,11 +70,25 @@ vec4 march(sampler2D colour, sampler2D depth, vec3 S, vec2 range, vec2 gx, vec2 
     vec2 ta = vec2(a.x * perMetre.x, float(size.y) - a.y * perMetre.y);
     vec2 tb = vec2(b.x * perMetre.x, float(size.y) - b.y * perMetre.y);
     float dsg = (s1 - s0) / float(steps);
+    // Empty-space skipping (the hits stay the uniform march's): level 3 holds, per 8 x 8 block,
+    // the nearest depth over its 3 x 3 blocks, which bounds every texel that the next
+    // kSkipSteps steps (at most one texel per axis each) can reach from this step's block. The
+    // hit test grows with sigma, so if the run's last sample misses a surface at that depth,
+    // every sample of the run misses. Without the level nothing is skipped (-inf).
+    bool skipLevel = textureQueryLevels(depth) > 3;
+    ivec2 lastBlock = skipLevel ? textureSize(depth, 3) - ivec2(1) : ivec2(0);
     float lo = s0, hi = -1.0;
-    for (int i = 0; i <= steps; ++i) {
-        float sg = s0 + dsg * float(i);
-        if (hits(depth, size, ta, tb, S.z, sg)) { hi = sg; break; }
-        lo = sg;
+    for (int i = 0; i <= steps && hi < 0.0;) {
+        int j = min(i + SKIP_STEPS, steps);
+        float sj = s0 + dsg * float(j);
+        ivec2 block = clamp(ivec2(floor(mix(ta, tb, s0 + dsg * float(i)) / float(SKIP_BLOCK))), ivec2(0), lastBlock);
+        float m = skipLevel ? texelFetch(depth, block, 3).r : uintBitsToFloat(0xFF800000u);
+        if (S.z * sj * (1.0 + 1e-5) < (m - 1e-5 * S.z) * (1.0 - sj)) { lo = sj; i = j + 1; continue; }
+        for (; i <= j; ++i) {
+            float sg = s0 + dsg * float(i);
+            if (hits(depth, size, ta, tb, S.z, sg)) { hi = sg; break; }
+            lo = sg;
+        }
     }
     if (hi < 0.0) return vec4(0.0);
     for (int r = 0; r < uRefine && hi > lo; ++r) {
@@ -88,7 +102,8 @@ vec4 march(sampler2D colour, sampler2D depth, vec3 S, vec2 range, vec2 gx, vec2 
 )";
 
 std::string fragmentSource(int layers) {
-    std::string s = "#version 450 core\n";
+    std::string s = "#version 450 core\n#define SKIP_BLOCK " + std::to_string(walls::kSkipBlock) +
+                    "\n#define SKIP_STEPS " + std::to_string(walls::kSkipSteps) + "\n";
     for (int i = 0; i < layers; ++i)
         s += "layout(binding = " + std::to_string(2 * i) + ") uniform sampler2D uColour" + std::to_string(i) +
              ";\nlayout(binding = " + std::to_string(2 * i + 1) + ") uniform sampler2D uDepth" + std::to_string(i) + ";\n";
@@ -111,11 +126,21 @@ gl::GlObject uploadDepthTexture(const walls::DepthImage& image) {
         throw Error("depth texture: expected width x height depths, got " + std::to_string(image.depth.size()) +
                     " for " + std::to_string(image.width) + " x " + std::to_string(image.height));
     gl::GlObject t = gl::createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(t.id(), 1, GL_R32F, image.width, image.height);
+    // Levels 1 and 2 hold 2 x 2 and 4 x 4 block minima (complete, not read), level 3 the
+    // march's skip test: 8 x 8 block minima over each block's 3 x 3 neighbourhood.
+    const bool skip = image.width >= walls::kSkipBlock && image.height >= walls::kSkipBlock;
+    glTextureStorage2D(t.id(), skip ? 4 : 1, GL_R32F, image.width, image.height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
     glTextureSubImage2D(t.id(), 0, 0, 0, image.width, image.height, GL_RED, GL_FLOAT, image.depth.data());
-    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    if (skip) {
+        static_assert(walls::kSkipBlock == 8, "level 3 is the skip level");
+        for (int level = 1; level <= 3; ++level) {
+            const walls::DepthImage m = walls::depthBlockMinimum(image, 1 << level, level == 3 ? 1 : 0);
+            glTextureSubImage2D(t.id(), level, 0, 0, m.width, m.height, GL_RED, GL_FLOAT, m.depth.data());
+        }
+    }
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, skip ? GL_NEAREST_MIPMAP_NEAREST : GL_NEAREST);
     glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     return t;
 }

@@ -26,7 +26,11 @@
 // 6 bisection steps about 8 ms. In the walkthrough the pass is a part of the frame: `bench --scale
 // --walls depth` (cave4 at 1024 x 1024 per screen) ran 1.17-1.38x the flat walls' median
 // frame time with 128-texel bakes and 1.70-1.72x with 512-texel ones, whose rays cross more
-// texels (README, "Depth walls"): empty-space skipping is the next lever. The displaced-grid-mesh alternative is
+// texels (README, "Depth walls"); with empty-space skipping (below) 1.57-1.71x.
+// Empty-space skipping: the depth texture's MIP level 3 (uploadDepthTexture) holds each 8 x 8
+// block's nearest depth over its 3 x 3 blocks; a run of walls::kSkipSteps steps whose last
+// sample misses a surface at that depth is skipped (the test grows along the ray, so the hits
+// are the uniform march's and walls::reproject stays its reference). The displaced-grid-mesh alternative is
 // not measured.
 //
 // Blending and state as gl::WallPass (premultiplied weighted sum of up to kMaxWallTextures
@@ -61,8 +65,10 @@ struct DepthWallDraw {
     int count = 0;
 };
 
-// One GL_R32F level holding walls::DepthImage (rows top to bottom, like the colour: row 0 is the
-// wall's upper edge); read with texelFetch. Needs a current context.
+// GL_R32F holding walls::DepthImage (rows top to bottom, like the colour: row 0 is the wall's
+// upper edge) at level 0, read with texelFetch; images of at least 8 x 8 texels get levels 1-3
+// (block minima; level 3 the march's skip level, walls::depthBlockMinimum). Needs a current
+// context.
 gl::GlObject uploadDepthTexture(const walls::DepthImage& image);
 
 class DepthWallPass {
