@@ -30,9 +30,10 @@ Scene loadGltf(const std::filesystem::path& file);
 inline constexpr double kStructureChunkMetres = 10.0;
 
 // Loads every model of a validated description, applies units, up axis and placement, tags
-// structure objects (and cuts wide ones, kStructureChunkMetres), prepares the meshes for drawing (vertices welded, triangles ordered for
-// the vertex cache unless the material blends: scenes/mesh_optimize.h; the shape and the
-// triangle count stay) and assigns each object to the cell containing its centre.
+// structure objects (and cuts wide ones, kStructureChunkMetres), prepares the meshes for
+// drawing (vertices welded, triangles ordered for the vertex cache unless the material
+// blends: scenes/mesh_optimize.h; the shape and the triangle count stay) and assigns each
+// object to the cell containing its centre.
 Scene loadScene(const SceneDescription& description);
 
 // Loads a scene from a path: a scene.json (or a folder holding one) or a bare glTF/GLB file

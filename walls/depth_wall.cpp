@@ -95,19 +95,14 @@ DepthImage depthBlockMinimum(const DepthImage& image, int block, int dilate) {
                     ", dilate " + std::to_string(dilate) + ", " + std::to_string(image.width) + " x " +
                     std::to_string(image.height) + " with " + std::to_string(image.depth.size()) + " depths");
     const int bw = image.width / block, bh = image.height / block;
-    // Texel span of blocks [b0, b1] along an axis of n texels and nb whole blocks: the last
-    // whole block reaches the image's edge.
-    auto span = [&](int b0, int b1, int n, int nb) {
-        const int first = std::max(0, b0) * block;
-        const int last = std::min(b1, nb - 1) == nb - 1 ? n : (std::min(b1, nb - 1) + 1) * block;
-        return std::pair{first, last};
-    };
-    // Minimum of each whole block (extended at the edges), then over the neighbourhood.
+    // Minimum of each whole block (the last one of a row or column reaching the image's edge),
+    // then over the neighbourhood.
+    auto span = [&](int b, int n, int nb) { return std::pair{b * block, b == nb - 1 ? n : (b + 1) * block}; };
     DepthImage blocks{bw, bh, std::vector<float>(static_cast<std::size_t>(bw) * bh, kNoSurface)};
     for (int by = 0; by < bh; ++by)
         for (int bx = 0; bx < bw; ++bx) {
-            const auto [x0, x1] = span(bx, bx, image.width, bw);
-            const auto [y0, y1] = span(by, by, image.height, bh);
+            const auto [x0, x1] = span(bx, image.width, bw);
+            const auto [y0, y1] = span(by, image.height, bh);
             float m = kNoSurface;
             for (int j = y0; j < y1; ++j)
                 for (int i = x0; i < x1; ++i) m = std::min(m, image.at(i, j));

@@ -126,8 +126,9 @@ gl::GlObject uploadDepthTexture(const walls::DepthImage& image) {
         throw Error("depth texture: expected width x height depths, got " + std::to_string(image.depth.size()) +
                     " for " + std::to_string(image.width) + " x " + std::to_string(image.height));
     gl::GlObject t = gl::createTexture(GL_TEXTURE_2D);
-    // Levels 1 and 2 hold 2 x 2 and 4 x 4 block minima (complete, not read), level 3 the
-    // march's skip test: 8 x 8 block minima over each block's 3 x 3 neighbourhood.
+    // Level 3 holds the march's skip test: 8 x 8 block minima over each block's 3 x 3
+    // neighbourhood. Levels 1 and 2 are allocated (immutable storage is complete) but never
+    // read, so they are not filled: this runs when a frame first draws the texture.
     const bool skip = image.width >= walls::kSkipBlock && image.height >= walls::kSkipBlock;
     glTextureStorage2D(t.id(), skip ? 4 : 1, GL_R32F, image.width, image.height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
@@ -135,10 +136,8 @@ gl::GlObject uploadDepthTexture(const walls::DepthImage& image) {
     glTextureSubImage2D(t.id(), 0, 0, 0, image.width, image.height, GL_RED, GL_FLOAT, image.depth.data());
     if (skip) {
         static_assert(walls::kSkipBlock == 8, "level 3 is the skip level");
-        for (int level = 1; level <= 3; ++level) {
-            const walls::DepthImage m = walls::depthBlockMinimum(image, 1 << level, level == 3 ? 1 : 0);
-            glTextureSubImage2D(t.id(), level, 0, 0, m.width, m.height, GL_RED, GL_FLOAT, m.depth.data());
-        }
+        const walls::DepthImage m = walls::depthBlockMinimum(image, walls::kSkipBlock, 1);
+        glTextureSubImage2D(t.id(), 3, 0, 0, m.width, m.height, GL_RED, GL_FLOAT, m.depth.data());
     }
     glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, skip ? GL_NEAREST_MIPMAP_NEAREST : GL_NEAREST);
     glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);

@@ -66,9 +66,9 @@ struct DepthWallDraw {
 };
 
 // GL_R32F holding walls::DepthImage (rows top to bottom, like the colour: row 0 is the wall's
-// upper edge) at level 0, read with texelFetch; images of at least 8 x 8 texels get levels 1-3
-// (block minima; level 3 the march's skip level, walls::depthBlockMinimum). Needs a current
-// context.
+// upper edge) at level 0, read with texelFetch; images of at least 8 x 8 texels get levels 1-3,
+// of which level 3 is filled (the march's skip level, walls::depthBlockMinimum) and 1-2 are
+// never read. Needs a current context.
 gl::GlObject uploadDepthTexture(const walls::DepthImage& image);
 
 class DepthWallPass {
