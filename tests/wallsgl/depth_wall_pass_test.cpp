@@ -205,5 +205,66 @@ TEST_F(DepthWallPassTest, MatchesGeometryFromAnotherEyeExceptWhereTheBoundPredic
     }
 }
 
+// Geometry drawn before the pass in front of the wall hides the depth wall (the depth test
+// runs at the quad's depth before the shader); everywhere else the pass draws what it draws on
+// an empty target.
+TEST_F(DepthWallPassTest, GeometryInFrontOfTheWallHidesIt) {
+    if (!context) GTEST_SKIP();
+    scenes::Scene scene = cardScene();
+    scene.meshes.push_back(scenes::makeBox({1.0f, 0.8f, 0.2f}, {0.1f, 0.8f, 0.2f, 1}));
+    scenes::addObject(scene, 2, glm::translate(glm::dmat4(1.0), glm::dvec3(0.2, 1.6, 0.8)), "front");
+    const std::vector<int> behind{0, 1}, front{2};
+
+    walls::DepthImage depth;
+    scenes::Image colour;
+    {
+        gl::WallTextureRenderer baker(scene, 1.0f);
+        colour = baker.render(kQuad, kSample, {kWidth, kHeight}, behind, depth);
+    }
+    const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
+    const gl::GlObject depthTexture = gl::uploadDepthTexture(depth);
+    const gl::DepthWallPass pass;
+    gl::DepthWallDraw d{kQuad, {}, 1};
+    d.layers[0] = {colourTexture.id(), depthTexture.id(), kSample, walls::depthRange(depth), 1.0f};
+
+    const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, kEye, {0.05, kInf});
+    gl::OffscreenTarget target({kWidth, kHeight});
+    auto drawWall = [&] {
+        glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+        gl::FrameStats stats;
+        pass.draw({d}, frustum, glm::dmat4(1.0), 0, stats);
+        EXPECT_EQ(stats.drawCalls, 1);
+    };
+    target.bindAndClear(glm::vec4(0.0f));
+    drawWall();
+    const scenes::Image wallOnly = target.read("wall");
+
+    gl::SceneRenderer renderer(scene, gl::RenderSettings{glm::vec4(0.0f), 1.0f});
+    gl::ViewTarget view;
+    view.framebuffer = target.framebuffer();
+    view.viewport = {0, 0, kWidth, kHeight};
+    view.clearColor = glm::vec4(0.0f);
+    render::DrawFilter filter;
+    filter.objects = &front;
+    renderer.renderFrustum(frustum, glm::dmat4(1.0), view, filter);
+    const scenes::Image occluder = target.read("front");
+    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
+    glViewport(0, 0, kWidth, kHeight);
+    drawWall();
+    const scenes::Image both = target.read("both");
+
+    int covered = 0, shown = 0, wrong = 0;
+    for (std::size_t i = 0; i < both.rgba.size(); i += 4) {
+        const bool hidden = occluder.rgba[i + 3] == 255;
+        const scenes::Image& expected = hidden ? occluder : wallOnly;
+        covered += hidden;
+        shown += !hidden && wallOnly.rgba[i] + wallOnly.rgba[i + 1] + wallOnly.rgba[i + 2] > 0;  // (keeps alpha)
+        for (int c = 0; c < 4; ++c) wrong += std::abs(int(both.rgba[i + c]) - int(expected.rgba[i + c])) > 1;
+    }
+    EXPECT_GT(covered, kWidth * kHeight / 20);  // the box covers a good part of the wall
+    EXPECT_GT(shown, kWidth * kHeight / 4);     // and the wall shows around it
+    EXPECT_EQ(wrong, 0);
+}
+
 }  // namespace
 }  // namespace cavewall::testing

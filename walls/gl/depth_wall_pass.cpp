@@ -38,16 +38,9 @@ uniform vec3 uSample[4];     // per layer: x, y, distance in front of the plane
 uniform vec2 uRange[4];      // per layer: nearest and farthest baked depth
 uniform int uMaxSteps;
 uniform int uRefine;
-uniform vec2 uDepthCoeffs;   // clipFromView[2][2], [3][2]: reversed-Z window depth of a view-space z
 out vec4 fragColor;          // premultiplied, linear
-
-// The window depth of the point s metres behind the wall on this fragment's ray: the ray's
-// view-space z scales by (D_E + s) / D_E from the quad's.
-float hitDepth(float s) {
-    float zq = -uDepthCoeffs.y / (gl_FragCoord.z + uDepthCoeffs.x);
-    float zh = zq * (uEye.z + s) / uEye.z;
-    return (uDepthCoeffs.x * zh + uDepthCoeffs.y) / (-zh);
-}
+// The depth test runs before the shader, on the quad's own depth (gl::DepthWallPass header).
+layout(early_fragment_tests) in;
 
 // The march works in texel units (x right, y down from the wall's upper edge, as the rows are
 // stored), so a step is one mix and one floor; and it tests a hit without dividing: with
@@ -60,7 +53,7 @@ bool hits(sampler2D depth, ivec2 size, vec2 ta, vec2 tb, float dS, float sg) {
     return dS * sg * (1.0 + 1e-5) >= (d - 1e-5 * dS) * (1.0 - sg);
 }
 
-vec4 march(sampler2D colour, sampler2D depth, vec3 S, vec2 range, vec2 gx, vec2 gy, inout float nearest) {
+vec4 march(sampler2D colour, sampler2D depth, vec3 S, vec2 range, vec2 gx, vec2 gy) {
     ivec2 size = textureSize(depth, 0);
     vec2 a = vWall;
     vec2 b = S.xy + S.z * (vWall - uEye.xy) / uEye.z;
@@ -96,7 +89,6 @@ vec4 march(sampler2D colour, sampler2D depth, vec3 S, vec2 range, vec2 gx, vec2 
         if (hits(depth, size, ta, tb, S.z, mid)) hi = mid; else lo = mid;
     }
     vec2 t = mix(a, b, hi);
-    nearest = min(nearest, S.z * hi / (1.0 - hi));
     return textureGrad(colour, vec2(t.x / uSize.x, 1.0 - t.y / uSize.y), gx, gy);
 }
 )";
@@ -108,15 +100,15 @@ std::string fragmentSource(int layers) {
         s += "layout(binding = " + std::to_string(2 * i) + ") uniform sampler2D uColour" + std::to_string(i) +
              ";\nlayout(binding = " + std::to_string(2 * i + 1) + ") uniform sampler2D uDepth" + std::to_string(i) + ";\n";
     s += kMarch;
-    s += "void main() {\n    vec2 gx = dFdx(vUv), gy = dFdy(vUv);\n    float nearest = 1e30;\n    vec4 c = vec4(0.0)";
+    s += "void main() {\n    vec2 gx = dFdx(vUv), gy = dFdy(vUv);\n    vec4 c = vec4(0.0)";
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
         s += "\n        + uWeights[" + n + "] * march(uColour" + n + ", uDepth" + n + ", uSample[" + n + "], uRange[" + n +
-             "], gx, gy, nearest)";
+             "], gx, gy)";
     }
-    // No layer hit: nothing behind the wall here. Else the nearest hit's depth is tested
-    // against the geometry drawn before.
-    return s + ";\n    if (nearest > 1e29) discard;\n    fragColor = c;\n    gl_FragDepth = hitDepth(nearest);\n}\n";
+    // Where no layer hits there is nothing behind the wall: the sum is 0 and leaves the pixel
+    // as it was (premultiplied blending, no depth writes).
+    return s + ";\n    fragColor = c;\n}\n";
 }
 
 }  // namespace
@@ -162,7 +154,6 @@ DepthWallPass::DepthWallPass(walls::ReprojectSettings settings) : _settings(sett
         p.ranges = uniformLocation(id, kName, "uRange");
         p.maxSteps = uniformLocation(id, kName, "uMaxSteps");
         p.refine = uniformLocation(id, kName, "uRefine");
-        p.depthCoeffs = uniformLocation(id, kName, "uDepthCoeffs");
     }
 }
 
@@ -216,7 +207,6 @@ void DepthWallPass::draw(const std::vector<DepthWallDraw>& walls, const display:
         glUniform2fv(p.ranges, used, glm::value_ptr(ranges[0]));
         glUniform1i(p.maxSteps, _settings.maxSteps);
         glUniform1i(p.refine, _settings.refine);
-        glUniform2f(p.depthCoeffs, float(frustum.clipFromView[2][2]), float(frustum.clipFromView[3][2]));
         glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
         ++stats.drawCalls;
         stats.triangles += 2;

@@ -26,19 +26,27 @@
 // 6 bisection steps about 8 ms. In the walkthrough the pass is a part of the frame: `bench --scale
 // --walls depth` (cave4 at 1024 x 1024 per screen) ran 1.17-1.38x the flat walls' median
 // frame time with 128-texel bakes and 1.70-1.72x with 512-texel ones, whose rays cross more
-// texels (README, "Depth walls"); with empty-space skipping (below) 1.57-1.71x.
+// texels (README, "Depth walls"); with empty-space skipping (below) 1.57-1.71x, and with the
+// early depth test (below) 1.22-1.28x at 512 texels and 1.13-1.34x at 128.
 // Empty-space skipping: the depth texture's MIP level 3 (uploadDepthTexture) holds each 8 x 8
 // block's nearest depth over its 3 x 3 blocks; a run of walls::kSkipSteps steps whose last
 // sample misses a surface at that depth is skipped (the test grows along the ray, so the hits
-// are the uniform march's and walls::reproject stays its reference). The displaced-grid-mesh alternative is
-// not measured.
+// are the uniform march's and walls::reproject stays its reference). The displaced-grid-mesh
+// alternative is not measured.
 //
-// Blending and state as gl::WallPass (premultiplied weighted sum of up to kMaxWallTextures
-// layers; reversed-Z GL_GREATER against the geometry, no depth writes), except that the depth
-// tested is the nearest reprojected surface's (gl_FragDepth), not the quad's: geometry drawn
-// before that lies behind the wall plane but in front of the baked content (structure, which
-// is never baked: a far room's walls) hides it as in the full model, which a flat wall cannot
-// do. Pixels where no layer hits are discarded.
+// Blending and state as gl::WallPass: a premultiplied weighted sum of up to kMaxWallTextures
+// layers, tested (reversed-Z GL_GREATER, no depth writes) at the quad's own depth, before the
+// shader runs (early_fragment_tests), so wall pixels behind the cell's geometry cost no march.
+// Pixels where no layer hits add nothing. Until 4 December 2026 (session 14) the pass tested
+// the nearest reprojected surface's depth instead (gl_FragDepth), so that geometry drawn
+// before behind the wall plane but in front of the baked content (structure, never baked; a
+// neighbour blending in) hid it; that forced the test after the shader on every wall pixel,
+// and such pixels are now drawn as a flat wall draws them. Measured side by side
+// (`bench --scale 2M --bake-resolution 512 --walls depth`, cave4 at 1024 x 1024 per screen, 30
+// frames, interleaved twice): median frame 58.0-59.2 ms against 65.5-67.9 ms (flat walls
+// 45.4-45.5 ms in the same runs), pooled PSNR 40.2 against 40.4 dB, FLIP 0.0033 against
+// 0.0030. A conservative-depth declaration (layout(depth_less) gl_FragDepth, which holds
+// here) left llvmpipe's late test in place (65.4-68.2 ms).
 
 #include "display/gl/gl_object.h"
 #include "display/gl/scene_renderer.h"
@@ -86,7 +94,7 @@ private:
     struct Program {
         GlObject program;
         GLint corners = -1, projection = -1, weights = -1, eye = -1, size = -1, samples = -1, ranges = -1,
-              maxSteps = -1, refine = -1, depthCoeffs = -1;
+              maxSteps = -1, refine = -1;
     };
     walls::ReprojectSettings _settings;
     std::array<Program, walls::kMaxWallTextures> _programs;  // [n - 1] marches n layers
