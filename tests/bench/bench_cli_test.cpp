@@ -16,6 +16,8 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace cavewall::test {
 namespace {
@@ -257,13 +259,21 @@ TEST(BenchSceneCli, BadCompareSceneOrOnDemandCacheIsAClearError) {
 // the whole model (shared meshes stored once), only the requested textures baked, the second
 // size's bake found in the scale cache (the same scene bytes, plan and settings), and the
 // budgeted walls drawing no more triangles than the walls under the near limit's median.
+// A tiny scale run into `root` (data and out folders of its own): 32 x 32 screens, 4 frames
+// over 10 m, 16-texel bakes, images compared every 2 frames; `sizes` and `extra` flags added.
+CliResult runTinyScale(const fs::path& root, const std::string& sizes, std::vector<std::string> extra = {}) {
+    fs::remove_all(root / "data");
+    std::vector<std::string> args{"bench", "--scale", sizes, "--resolution", "32", "--frames", "4",
+                                  "--bake-resolution", "16", "--scale-metres", "10", "--compare-every", "2",
+                                  "--data", (root / "data").string(), "--out", (root / "out").string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return runCavewall(args);
+}
+
 TEST(BenchSceneCli, ScaleRunHasFourModesPerSize) {
     const test::TempFolder root("bench_cli_scale");
-    fs::remove_all(root / "data");
     const fs::path out = root / "out";
-    const CliResult r = runCavewall({"bench", "--scale", "20k,40k", "--resolution", "32", "--frames", "4",
-                                     "--bake-resolution", "16", "--scale-metres", "10", "--compare-every", "2",
-                                     "--data", (root / "data").string(), "--out", out.string()});
+    const CliResult r = runTinyScale(root.path(), "20k,40k");
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_THAT(r.out, HasSubstr("4 screens at 32x32 pixels"));
     EXPECT_THAT(r.out, HasSubstr("textures (those the stretch requests) at most 16 texels"));
@@ -314,12 +324,8 @@ TEST(BenchSceneCli, ScaleRunHasFourModesPerSize) {
 // own bound keeps every drawn texture within alpha.
 TEST(BenchSceneCli, ScaleRunDrawsDepthWallsWithTheZonesAsked) {
     const test::TempFolder root("bench_cli_scale_depth");
-    fs::remove_all(root / "data");
     const fs::path out = root / "out";
-    const CliResult r = runCavewall({"bench", "--scale", "20k", "--resolution", "32", "--frames", "4",
-                                     "--bake-resolution", "16", "--scale-metres", "10", "--compare-every", "2",
-                                     "--walls", "depth", "--min-zone", "2", "--triangle-budget", "0",
-                                     "--data", (root / "data").string(), "--out", out.string()});
+    const CliResult r = runTinyScale(root.path(), "20k", {"--walls", "depth", "--min-zone", "2", "--triangle-budget", "0"});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_THAT(r.out, HasSubstr("walls: depth walls at alpha 10 deg"));
     EXPECT_THAT(r.out, HasSubstr("walls planned (zones of at least 2.00 m)"));

@@ -177,6 +177,13 @@ struct PreparedSize {
     std::string size, line;  // "2.07 M triangles"; the report line of what was made
 };
 
+// The walls' plan options: checked before any plant is generated, used for every size.
+walls::PlanOptions scalePlanOptions(const ScaleOptions& o) {
+    walls::PlanOptions plan = walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution);
+    plan.alphaDeg = o.alphaDeg;
+    return plan;
+}
+
 std::unique_ptr<PreparedSize> prepareSize(const ScaleOptions& o, std::size_t target, const display::Display& display,
                                           Context& context) {
     auto p = std::make_unique<PreparedSize>();
@@ -191,9 +198,7 @@ std::unique_ptr<PreparedSize> prepareSize(const ScaleOptions& o, std::size_t tar
     d.walkPath = bench::pathPrefix(d.walkPath, o.pathMetres);
     p->path = bench::recordEyePath(p->scene, d, o.display, o.tracker, o.frames);
     start = Clock::now();
-    walls::PlanOptions plan = walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution);
-    plan.alphaDeg = o.alphaDeg;
-    p->setup = walls::prepareWalls(p->scene, d, plan);
+    p->setup = walls::prepareWalls(p->scene, d, scalePlanOptions(o));
     p->planSeconds = secondsSince(start);
     const std::set<int> ids = requestedTextures(p->scene, d, display, p->setup, p->path);
     const BakeResult baked = bakeSubset(p->scene, d, p->setup, ids, sceneFile, o, context);
@@ -202,7 +207,7 @@ std::unique_ptr<PreparedSize> prepareSize(const ScaleOptions& o, std::size_t tar
     p->size = fixed(static_cast<double>(p->scene.triangleCount()) / 1e6, 2) + " M triangles";
     p->line = p->size + " (" + std::to_string(d.cells.size()) + " cells, " + std::to_string(p->scene.objects.size()) +
               " objects): generated in " + fixed(generateSeconds, 1) + " s (0: reused), loaded in " +
-              fixed(p->loadSeconds, 2) + " s, walls planned (zones of at least " + fixed(plan.minZoneSize, 2) + " m) in " +
+              fixed(p->loadSeconds, 2) + " s, walls planned (zones of at least " + fixed(p->setup.plan.options.minZoneSize, 2) + " m) in " +
               fixed(p->planSeconds, 1) + " s; baked " +
               std::to_string(ids.size()) + " of the plan's " + std::to_string(p->setup.plan.textures.size()) +
               " textures (those the stretch requests) at most " + std::to_string(o.bakeResolution) + " texels: " +
@@ -348,7 +353,7 @@ bench::ScaleReport runScaleBench(const ScaleOptions& o) {
         throw Error("bench --scale: --triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod " +
                     config::formatNumber(o.lodPixels) + " (--triangle-budget 0 leaves the walls-budget mode out)");
     try {  // before any plant is generated
-        walls::validatePlanOptions(walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution));
+        walls::validatePlanOptions(scalePlanOptions(o));
     } catch (const Error& e) {
         throw Error(std::string("bench --scale: ") + e.what());
     }
