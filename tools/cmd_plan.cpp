@@ -34,8 +34,9 @@ const char* const kPlanUsage =
     "at most 4096 texels per side), used for the texel and memory estimates.\n"
     "--walls depth: plans depth walls (issue 16) with the depth reprojection's own bound instead of\n"
     "the flat one: per texture, over every eye of its zones, the displacement of any drawn pixel\n"
-    "from its surface's true direction, from the wall's depth span (nearest to farthest baked box\n"
-    "corner behind the plane) and the texel size (proof in walls/depth_wall.h). The JSON's\n"
+    "from its surface's true direction: the smaller of a bound from the wall's depth span (nearest\n"
+    "to farthest baked box corner behind the plane) and the flat bound, each with the texel size\n"
+    "added (proofs in walls/depth_wall.h). The JSON's\n"
     "\"textures\" list each texture's bound (maxError, radians) for the kind planned.\n";
 
 namespace {

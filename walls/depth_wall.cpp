@@ -321,4 +321,31 @@ double depthZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const di
     return std::isfinite(bound) ? std::min(bound, kPi) : kPi;
 }
 
+double depthFlatFormEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const display::ScreenQuad& wall, double dFar,
+                             double texelDiagonal) {
+    const WallFrame f = wallFrame(wall);
+    const glm::dvec3 e = f.toWall(eye), s = f.toWall(samplingPoint);
+    if (!(e.z * s.z > 0.0) || !(texelDiagonal >= 0.0) || std::isnan(dFar)) return kPi;
+    const double de = std::abs(e.z), ds = std::abs(s.z);
+    const double far = widened({0.0, dFar}, ds).y;
+    const double bound = maxAngularError(eye, samplingPoint, wall, far) + 0.5 * texelDiagonal * std::max(1.0 / de, 1.0 / ds);
+    return std::isfinite(bound) ? std::min(bound, kPi) : kPi;
+}
+
+double depthFlatFormZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                              double texelDiagonal) {
+    const WallFrame f = wallFrame(wall);
+    const glm::dvec3 s = f.toWall(samplingPoint);
+    if (zone.floor.empty() || !(texelDiagonal >= 0.0)) return kPi;
+    double dmin = std::numeric_limits<double>::infinity();
+    for (const glm::dvec2& p : zone.floor)
+        for (double y : {zone.heightRange.x, zone.heightRange.y}) {
+            const glm::dvec3 e = f.toWall({p.x, y, p.y});
+            if (!(e.z * s.z > 0.0)) return kPi;  // on the plane or the other side
+            dmin = std::min(dmin, std::abs(e.z));
+        }
+    const double bound = zoneMaxError(zone, samplingPoint, wall) + 0.5 * texelDiagonal * std::max(1.0 / dmin, 1.0 / std::abs(s.z));
+    return std::isfinite(bound) ? std::min(bound, kPi) : kPi;
+}
+
 }  // namespace cavewall::walls

@@ -238,4 +238,29 @@ double depthEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const display::Sc
 double depthZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
                       glm::dvec2 span, double texelDiagonal);
 
+// ---- The flat form of the planner's bound ----
+//
+// Claim. Under the same conditions, every pixel the pass draws is also within
+//   F(E) = flat(E) + 0.5 h max(1, D_E / D_S) / D_E,
+// flat(E) = maxAngularError(E, S, wall, dFar) (angular_error.h): the flat texture's exact
+// largest error over every texel of the wall and every depth up to dFar.
+// Proof. With the notation of the proof above, let W' = T_c + k(s) v(T_c). Then W - W' =
+// (T - T_c)(1 + k(s)(D_E / D_S - 1)), at most 0.5 h max(1, D_E / D_S) long, on the plane at
+// least D_E from E. W' is where E sees the point at depth s on S's ray through T_c, which a
+// flat texture draws at T_c; W_P = T_c + k(d) v(T_c) is where E sees the one at depth d. All
+// three lie on one line from T_c, at k = 0, k(s) and k(d), so whichever of W', W_P is nearer
+// T_c lies on the segment from T_c to the other, and the angle between W' and W_P at E is at
+// most that segment's, a flat error at depth max(s, d) <= dFar (the march's tolerance lets d
+// exceed s slightly; both lie in the widened span): at most flat(E). The angles add.
+// So a depth wall is never planned worse than the flat wall of the same zone by more than the
+// texel term. Near the wall it is the smaller form: B pairs the zone's nearest eye with its
+// largest parallax, and (k(dFar) - k(dNear)) is hardly below k(dFar) when content starts just
+// behind the wall (README, "Depth walls").
+double depthFlatFormEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const display::ScreenQuad& wall, double dFar,
+                             double texelDiagonal);
+// Over a zone: the depth-independent flat maximum (zoneMaxError, exact at the zone's
+// vertices), plus the texel term at the zone's nearest distance. At least every eye's form.
+double depthFlatFormZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                              double texelDiagonal);
+
 }  // namespace cavewall::walls

@@ -95,13 +95,24 @@ double texelDiagonal(const display::ScreenQuad& q, glm::ivec2 resolution) {
 double depthTextureBound(const ZoneVolume& volume, glm::dvec3 samplingPoint, const ScreenQuad& wall, glm::dvec2 span,
                          const PlanOptions& options) {
     const glm::ivec2 resolution = textureResolution(nearestDistance(volume.floor, samplingPoint.y, wall), wall, options);
-    return depthZoneBound(volume, samplingPoint, wall, span, texelDiagonal(wall, resolution));
+    const double h = texelDiagonal(wall, resolution);
+    return std::min(depthZoneBound(volume, samplingPoint, wall, span, h), depthFlatFormZoneBound(volume, samplingPoint, wall, h));
+}
+
+bool depthTextureWithin(const ZoneVolume& volume, glm::dvec3 samplingPoint, const ScreenQuad& wall, glm::dvec2 span,
+                        const PlanOptions& options, double alpha) {
+    const glm::ivec2 resolution = textureResolution(nearestDistance(volume.floor, samplingPoint.y, wall), wall, options);
+    const double h = texelDiagonal(wall, resolution);
+    return depthFlatFormZoneBound(volume, samplingPoint, wall, h) <= alpha ||
+           depthZoneBound(volume, samplingPoint, wall, span, h) <= alpha;
 }
 
 double textureErrorAt(const Plan& plan, const Texture& t, glm::dvec3 eye) {
     const PlannedWall& w = plan.walls[t.wall];
     if (plan.options.wallKind == WallKind::Flat) return maxAngularError(eye, t.samplingPoint, w.quad, w.depthBehind);
-    return depthEyeBound(eye, t.samplingPoint, w.quad, {w.depthNear, w.depthBehind}, texelDiagonal(w.quad, t.resolution));
+    const double h = texelDiagonal(w.quad, t.resolution);
+    return std::min(depthEyeBound(eye, t.samplingPoint, w.quad, {w.depthNear, w.depthBehind}, h),
+                    depthFlatFormEyeBound(eye, t.samplingPoint, w.quad, w.depthBehind, h));
 }
 
 Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options, const std::vector<glm::dvec2>& spans) {

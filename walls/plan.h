@@ -58,8 +58,9 @@ struct PlanOptions {
     int maxResolution = 4096;        // texels per texture side (cap); for depth walls also the
                                      // texel size their bound reserves, so at most the bake's cap
     WallKind wallKind = WallKind::Flat;  // flat: the flat bound (angular_error.h); depth: the depth
-                                     // walls' bound (depth_wall.h depthZoneBound, from each wall's
-                                     // depth span PlannedWall::depthNear .. depthBehind)
+                                     // walls' bound (depthTextureBound: the smaller of
+                                     // depth_wall.h's span form, from each wall's depth span
+                                     // PlannedWall::depthNear .. depthBehind, and its flat form)
 };
 
 // Throws cavewall::Error naming the option when it is out of range.
@@ -74,7 +75,7 @@ struct Texture {
     glm::dvec3 samplingPoint{0.0};   // world
     Polygon2 validRegion;            // floor polygon (x, z) where the bound is proven
     double maxError = 0.0;           // radians, over validRegion: flat walls the exact
-                                     // depth-independent maximum; depth walls depthZoneBound
+                                     // depth-independent maximum; depth walls depthTextureBound
     glm::ivec2 resolution{0};        // texels, from pixelsPerDegree (see texelSize)
 };
 
@@ -171,16 +172,22 @@ glm::ivec2 textureResolution(double nearestDistance, const display::ScreenQuad& 
 // The diagonal of one texel of `resolution` on `wall`, metres.
 double texelDiagonal(const display::ScreenQuad& wall, glm::ivec2 resolution);
 
-// The depth walls' planned bound of a texture proven over `volume` (depthZoneBound, walls/
-// depth_wall.h, with the texel of the resolution textureResolution gives for the volume's
-// nearest distance at the sampling point's height): what the planner proves <= alpha and
-// stores as Texture::maxError for depth walls. Radians.
+// The depth walls' planned bound of a texture proven over `volume`: the smaller of
+// depthZoneBound (the span form) and depthFlatFormZoneBound (the flat form; both rigorous,
+// walls/depth_wall.h), with the texel of the resolution textureResolution gives for the
+// volume's nearest distance at the sampling point's height: what the planner proves <= alpha
+// and stores as Texture::maxError for depth walls. Radians.
 double depthTextureBound(const ZoneVolume& volume, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
                          glm::dvec2 span, const PlanOptions& options);
 
+// depthTextureBound(...) <= alpha, evaluating the cheaper flat form first (the planner's test).
+bool depthTextureWithin(const ZoneVolume& volume, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                        glm::dvec2 span, const PlanOptions& options, double alpha);
+
 // The bound of `texture`'s error for one eye (world), radians, for the plan's wall kind: flat,
-// maxAngularError up to the wall's depthBehind; depth, depthEyeBound over the wall's span with
-// the texture's resolution. What the frame planner checks and reports every frame.
+// maxAngularError up to the wall's depthBehind; depth, the smaller of depthEyeBound over the
+// wall's span and depthFlatFormEyeBound, with the texture's resolution. What the frame planner
+// checks and reports every frame.
 double textureErrorAt(const Plan& plan, const Texture& texture, glm::dvec3 eye);
 
 // The zone of (cell, wall) containing floor point p (x, z), or -1. Zones of a side are

@@ -33,7 +33,7 @@ struct Context {
     // Is the volume proven within alpha for the texture baked from `sample`?
     bool proven(const ZoneVolume& volume, glm::dvec3 sample) const {
         if (options->wallKind == WallKind::Flat) return zoneWithin(volume, sample, in.quad, alpha);
-        return depthTextureBound(volume, sample, in.quad, span, *options) <= alpha;
+        return depthTextureWithin(volume, sample, in.quad, span, *options, alpha);
     }
 
     Polygon2 world(const Polygon2& local) const {

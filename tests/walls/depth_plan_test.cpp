@@ -79,6 +79,36 @@ TEST(DepthPlan, EyeBoundHoldsForEveryDrawnPixelAndIsReached) {
     EXPECT_GE(worst, 0.5 * bound);
 }
 
+// The flat form (depth_wall.h): a near card 2 cm behind the wall with a window onto a plane 4 m
+// behind, the window in front of the eye, which moved 0.6 m along +x. The skin across the
+// window's left edge shows the card's points at ray depths up to 4: nearly the flat texture's
+// largest error, which is where the eye looks straight at the wall. A form 25 % too loose fails.
+TEST(DepthPlan, FlatFormHoldsForEveryDrawnPixelAndIsReached) {
+    const WallFrame f = wallFrame(kQuad);
+    const glm::dvec3 s(2.0, 1.5, -3.0), e(2.6, 1.5, -3.0);
+    const int n = 512, m = n * 3 / 4;
+    DepthImage image{n, m, {}};
+    for (int j = 0; j < m; ++j)
+        for (int i = 0; i < n; ++i) {
+            const glm::dvec2 t = texelCentre(f, n, m, i, j);
+            image.depth.push_back(std::abs(t.x - 2.6) < 0.3 && std::abs(t.y - 1.5) < 0.3 ? 4.0f : 0.02f);
+        }
+    const glm::dvec2 span = depthRange(image);
+    const double h = std::hypot(4.0 / n, 3.0 / m);
+    const double form = depthFlatFormEyeBound(f.toWorld(e), f.toWorld(s), kQuad, span.y, h);
+    EXPECT_NEAR(form, maxAngularError(f.toWorld(e), f.toWorld(s), kQuad, span.y * (1 + 1e-6) + 3e-6) + 0.5 * h / 3.0, 1e-9);
+    double worst = 0.0;
+    for (int row = 0; row < 9; ++row)
+        for (int k = 0; k < 2000; ++k) {
+            const glm::dvec2 w(f.width * (k + 0.5) / 2000, 1.3 + 0.05 * row);
+            const ReprojectHit hit = reproject(image, f, e, s, w, span);
+            if (hit.hit) worst = std::max(worst, shownError(image, f, e, s, w, hit));
+        }
+    std::printf("flat form %.5f rad, largest error drawn %.5f rad (ratio %.3f)\n", form, worst, worst / form);
+    EXPECT_LE(worst, form);
+    EXPECT_GE(worst, 0.8 * form);
+}
+
 TEST(DepthPlan, EyeBoundShrinksWithTheSpanAndIsSymmetricAcrossTheWall) {
     const glm::dvec3 s(0.5, 1.5, 3.0), e(1.5, 1.7, 2.0);
     const double wide = depthEyeBound(e, s, kQuad, {0.0, 1e9}, 0.0), narrow = depthEyeBound(e, s, kQuad, {2.0, 3.0}, 0.0);
@@ -190,6 +220,10 @@ TEST(DepthPlan, NarrowSpansNeedFewerTexturesThanFlatWalls) {
     std::printf("reference hall at alpha 10°: %zu flat textures, %zu depth textures (span 1.5 .. 9 m)\n",
                 flat.textures.size(), depth.textures.size());
     EXPECT_LT(depth.textures.size(), flat.textures.size());
+    // Whatever the span, the flat form keeps depth walls within the texel term of flat walls.
+    const Plan wide = planHall(WallKind::Depth, {0.0, 1e9});
+    std::printf("span 0 .. 1e9 m: %zu depth textures\n", wide.textures.size());
+    EXPECT_LE(double(wide.textures.size()), 1.1 * double(flat.textures.size()));
     // The flat plan does not depend on the span; each texture reports its own kind's bound.
     EXPECT_EQ(flat.textures.size(), planHall(WallKind::Flat, {0.0, 1e9}).textures.size());
     for (const Texture& t : depth.textures)
