@@ -5,6 +5,9 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace cavewall::walls {
 
 std::string depthFileName(const std::string& colourFile) {
@@ -14,6 +17,29 @@ std::string depthFileName(const std::string& colourFile) {
     return colourFile + ".depth.tif";
 }
 
+namespace {
+constexpr double kCodeSpan = 65534.0;  // codes 1 (d = inf, never written) to 65535 (d = 0)
+}  // namespace
+
+std::uint16_t encodeDepth(float d) {
+    if (std::isinf(d) && d > 0.0f) return 0;
+    const double depth = std::isfinite(d) ? std::max(0.0, double(d)) : 0.0;
+    const double q = std::round(1.0 + kCodeSpan * kDepthFileMetres / (kDepthFileMetres + depth));
+    return static_cast<std::uint16_t>(std::clamp(q, 2.0, 65535.0));
+}
+
+float decodeDepth(std::uint16_t q) {
+    if (q == 0) return kNoSurface;
+    return static_cast<float>(kDepthFileMetres * (kCodeSpan / (double(q) - 1.0) - 1.0));
+}
+
+double depthFileError(double d) {
+    // d(q) = L (A / (q - 1) - 1) has |d'(q)| = L A / (q - 1)^2, largest at the lower end of the
+    // half-step around the exact code 1 + A L / (L + d); plus the float rounding of the result.
+    const double c = kCodeSpan * kDepthFileMetres / (kDepthFileMetres + d);
+    return 0.5 * kDepthFileMetres * kCodeSpan / ((c - 0.5) * (c - 0.5)) + 6e-8 * (d + 1.0);
+}
+
 void writeDepthFile(const std::filesystem::path& file, const DepthImage& image) {
     if (image.width <= 0 || image.height <= 0 || image.depth.size() != std::size_t(image.width) * image.height)
         throw Error(file.string() + ": expected width x height depths, got " + std::to_string(image.depth.size()) +
@@ -21,13 +47,16 @@ void writeDepthFile(const std::filesystem::path& file, const DepthImage& image) 
     scenes::writeAtomically(file, [&](const std::filesystem::path& tmp) {
         auto out = OIIO::ImageOutput::create(tmp.string());
         if (!out) throw Error(file.string() + ": cannot write a depth file (" + OIIO::geterror() + ")");
-        OIIO::ImageSpec spec(image.width, image.height, 1, OIIO::TypeDesc::FLOAT);
+        OIIO::ImageSpec spec(image.width, image.height, 1, OIIO::TypeDesc::UINT16);
         spec.channelnames = {"Z"};
         spec.attribute("compression", "zip");
-        spec.attribute("ImageDescription", "cavewall depth wall: metres behind the wall plane, inf = nothing");
+        spec.attribute("ImageDescription",
+                       "cavewall depth wall: q = 1 + 65534 / (1 + metres behind the wall plane), 0 = nothing");
         spec.attribute("DateTime", "2000:01:01 00:00:00");  // same depths, same bytes
+        std::vector<std::uint16_t> codes(image.depth.size());
+        std::transform(image.depth.begin(), image.depth.end(), codes.begin(), encodeDepth);
         if (!out->open(tmp.string(), spec) ||
-            !out->write_image(OIIO::TypeDesc::FLOAT, image.depth.data()) || !out->close())
+            !out->write_image(OIIO::TypeDesc::UINT16, codes.data()) || !out->close())
             throw Error(file.string() + ": cannot write the depth file (" + out->geterror() + ")");
     });
 }
@@ -39,9 +68,19 @@ DepthImage readDepthFile(const std::filesystem::path& file) {
     if (spec.nchannels != 1 || spec.width <= 0 || spec.height <= 0)
         throw Error(file.string() + ": expected one depth channel, got " + std::to_string(spec.nchannels) + " channels of " +
                     std::to_string(spec.width) + " x " + std::to_string(spec.height));
+    if (spec.format != OIIO::TypeDesc::UINT16 && spec.format != OIIO::TypeDesc::FLOAT)
+        throw Error(file.string() + ": expected 16-bit depth codes or 32-bit float depths, got " +
+                    std::string(spec.format.c_str()));
     DepthImage image{spec.width, spec.height, std::vector<float>(std::size_t(spec.width) * spec.height)};
-    if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, image.depth.data()))
+    if (spec.format == OIIO::TypeDesc::FLOAT) {  // a bake from before the 16-bit codes
+        if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, image.depth.data()))
+            throw Error(file.string() + ": cannot read the depths (" + in->geterror() + ")");
+        return image;
+    }
+    std::vector<std::uint16_t> codes(image.depth.size());
+    if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT16, codes.data()))
         throw Error(file.string() + ": cannot read the depths (" + in->geterror() + ")");
+    std::transform(codes.begin(), codes.end(), image.depth.begin(), decodeDepth);
     return image;
 }
 

@@ -67,6 +67,12 @@ glm::dvec2 depthRange(const DepthImage& image) {
     return hi < lo ? glm::dvec2(0.0) : glm::dvec2(lo, hi);
 }
 
+void clampDepths(DepthImage& image, glm::dvec2 range) {
+    const float lo = static_cast<float>(range.x), hi = static_cast<float>(range.y);
+    for (float& d : image.depth)
+        if (std::isfinite(d)) d = std::clamp(d, lo, std::max(lo, hi));
+}
+
 float depthFromBuffer(float value, const glm::dmat4& clipFromView, double eyeDistance) {
     if (!(value > 0.0f)) return kNoSurface;
     const double viewDistance = clipFromView[3][2] / (double(value) + clipFromView[2][2]);

@@ -15,7 +15,9 @@
 // The surface point is P = T + (d / D_S) (T - S) for T the texel centre on the wall. It comes
 // from the bake's reversed-Z float depth buffer (depthFromBuffer), whose relative precision is
 // 2^-24 of the view distance: |error of d| <= 1.2e-7 (D_S + d), 12 um at 100 m, far below a
-// texel; storing d as float adds 6e-8 d. Precision is not the limit; texel spacing is.
+// texel; storing d as float adds 6e-8 d, and the depth file's 16-bit code at most
+// depthFileError(d) (walls/depth_file.h: 0.9 mm at 10 m). Precision is not the limit; texel
+// spacing is.
 //
 // Reprojection (reproject). An eye E sees the wall point W along the ray
 //   Q(s) = W + s (W - E_xy) / D_E      (lateral position at depth s behind the plane).
@@ -90,6 +92,9 @@ struct DepthImage {
 
 // The smallest and largest finite depth (both 0 when there is none).
 glm::dvec2 depthRange(const DepthImage& image);
+// Clamps every finite depth to `range` (x <= y): decoded 16-bit depths (walls/depth_file.h)
+// brought back inside the baked range, so inside the wall's depth span the bounds assume.
+void clampDepths(DepthImage& image, glm::dvec2 range);
 
 // Block minima of a depth image, for skipping empty space in the march: an image of
 // floor(width / block) x floor(height / block) whose texel (bx, by) is the smallest depth over the

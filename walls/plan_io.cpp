@@ -180,9 +180,10 @@ PlanTotals planTotals(const Plan& plan) {
     for (const BeyondSide& b : plan.beyond) t.beyondTextures += b.side.textureCount;
     for (const Texture& tex : plan.textures) t.texels += double(tex.resolution.x) * tex.resolution.y;
     t.gpuBytes = t.texels * 4.0 * 4.0 / 3.0;
-    // Depth walls: a 32-bit float depth per base-level texel (no MIP chain), on disk and on the GPU.
-    if (plan.options.wallKind == WallKind::Depth) t.gpuBytes += t.texels * 4.0;
+    // Depth walls: a 32-bit float depth per base-level texel on the GPU (levels 1-3 add a third:
+    // level 3 holds the block minima), a 16-bit code per texel on disk (walls/depth_file.h).
     t.diskBytes = t.gpuBytes;
+    if (plan.options.wallKind == WallKind::Depth) t.gpuBytes += t.texels * 4.0 * 4.0 / 3.0, t.diskBytes += t.texels * 2.0;
     for (const Texture& tex : plan.textures) t.maxErrorDeg = std::max(t.maxErrorDeg, glm::degrees(tex.maxError));
     return t;
 }
@@ -217,7 +218,7 @@ void printPlanSummary(std::ostream& out, const Plan& plan, const scenes::SceneDe
                   "chain%s); disk <= %.1f MiB (uncompressed tiled + MIP%s)\n",
                   totals.textureZones, totals.blendZones, totals.geometryZones, totals.textures, totals.texels * 1e-6,
                   totals.gpuBytes / 1048576.0, depth ? " + R32F depth" : "", totals.diskBytes / 1048576.0,
-                  depth ? " + float depth" : "");
+                  depth ? " + 16-bit depth" : "");
     out << line;
     std::snprintf(line, sizeof line, "%s walls: largest texture error bound %.3f° (alpha %g°; %s)\n",
                   depth ? "depth" : "flat", totals.maxErrorDeg, plan.alphaDeg,

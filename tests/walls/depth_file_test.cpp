@@ -1,12 +1,16 @@
 // Depth files and the manifest's depth entries (walls/depth_file.h, bake_manifest.h): depths
-// round-trip bit for bit (inf included), a depth texture is valid only when both its files are,
-// and bad depth entries are rejected naming the JSON path.
+// round-trip within their 16-bit codes' stated precision (inf exactly; old float files bit for
+// bit), a depth texture is valid only when both its files are, and bad depth entries are
+// rejected naming the JSON path.
 #include "walls/bake_manifest.h"
 #include "walls/depth_file.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
 #include <cstring>
 #include <fstream>
 
@@ -27,7 +31,34 @@ TEST(DepthFile, NamesFollowTheColourFile) {
     EXPECT_EQ(depthFileName("tex_0003_0123456789abcdef.bct"), "tex_0003_0123456789abcdef.depth.tif");
 }
 
-TEST(DepthFile, DepthsRoundTripBitForBit) {
+// The 16-bit code: within depthFileError everywhere (and that bound is not loose: a sweep
+// reaches half of it), nothing and zero exactly, codes falling as depth grows.
+TEST(DepthFile, CodesAreWithinTheirStatedPrecision) {
+    EXPECT_EQ(encodeDepth(kNoSurface), 0);
+    EXPECT_EQ(decodeDepth(0), kNoSurface);
+    EXPECT_EQ(encodeDepth(0.0f), 65535);
+    EXPECT_EQ(decodeDepth(65535), 0.0f);
+    EXPECT_EQ(encodeDepth(-1.0f), 65535);                 // in front of the plane: 0
+    EXPECT_EQ(encodeDepth(std::nanf("")), 65535);         // never a NaN back
+    EXPECT_EQ(encodeDepth(1e9f), 2);                      // beyond the codes: the farthest
+    EXPECT_TRUE(std::isfinite(decodeDepth(2)));
+    double worstShare = 0.0;
+    std::uint16_t last = 65535;
+    for (double d = 0.0; d < 2000.0; d = d * 1.01 + 1e-4) {
+        const std::uint16_t q = encodeDepth(static_cast<float>(d));
+        EXPECT_LE(q, last) << d;
+        last = q;
+        const double error = std::abs(double(decodeDepth(q)) - double(static_cast<float>(d)));
+        ASSERT_LE(error, depthFileError(d)) << "depth " << d;
+        worstShare = std::max(worstShare, error / depthFileError(d));
+    }
+    EXPECT_GT(worstShare, 0.5);
+    EXPECT_NEAR(depthFileError(1.0), 3.05e-5, 1e-6);      // the header's figures
+    EXPECT_NEAR(depthFileError(10.0), 9.2e-4, 1e-5);
+    EXPECT_NEAR(depthFileError(100.0), 0.078, 1e-3);
+}
+
+TEST(DepthFile, DepthsRoundTripWithinTheCodesPrecision) {
     const auto dir = scratch("roundtrip");
     DepthImage image{7, 5, {}};
     for (int i = 0; i < 35; ++i) image.depth.push_back(i % 6 == 0 ? kNoSurface : 0.001f * i * i + 1.0f / 3.0f);
@@ -36,10 +67,48 @@ TEST(DepthFile, DepthsRoundTripBitForBit) {
     ASSERT_EQ(back.width, 7);
     ASSERT_EQ(back.height, 5);
     ASSERT_EQ(back.depth.size(), image.depth.size());
-    EXPECT_EQ(std::memcmp(back.depth.data(), image.depth.data(), image.depth.size() * sizeof(float)), 0);
-    EXPECT_EQ(depthRange(back), glm::dvec2(image.depth[1], image.depth[34]));
+    for (std::size_t i = 0; i < image.depth.size(); ++i) {
+        if (std::isinf(image.depth[i])) {
+            EXPECT_EQ(back.depth[i], kNoSurface);
+        } else {
+            EXPECT_NEAR(back.depth[i], image.depth[i], depthFileError(image.depth[i])) << i;
+        }
+    }
+    // Clamped to the baked range, as the loader does: inside it, the ends exact.
+    DepthImage clamped = back;
+    clampDepths(clamped, depthRange(image));
+    EXPECT_GE(depthRange(clamped).x, depthRange(image).x);
+    EXPECT_LE(depthRange(clamped).y, depthRange(image).y);
+    EXPECT_EQ(clamped.depth[0], kNoSurface);
     EXPECT_THROW(writeDepthFile(dir / "bad.depth.tif", DepthImage{3, 3, {1.0f}}), Error);
     EXPECT_THROW(readDepthFile(dir / "missing.depth.tif"), Error);
+}
+
+// Bakes from before the 16-bit codes stored 32-bit floats: still read, bit for bit.
+TEST(DepthFile, FloatDepthFilesAreStillReadBitForBit) {
+    const auto dir = scratch("float");
+    const std::vector<float> depths{0.25f, kNoSurface, 1.0f / 3.0f, 17.5f, 0.0f, 123.456f};
+    const std::string file = (dir / "old.depth.tif").string();
+    auto out = OIIO::ImageOutput::create(file);
+    ASSERT_TRUE(out);
+    OIIO::ImageSpec spec(3, 2, 1, OIIO::TypeDesc::FLOAT);
+    spec.attribute("compression", "zip");
+    ASSERT_TRUE(out->open(file, spec) && out->write_image(OIIO::TypeDesc::FLOAT, depths.data()) && out->close());
+    const DepthImage back = readDepthFile(file);
+    ASSERT_EQ(back.depth.size(), depths.size());
+    EXPECT_EQ(std::memcmp(back.depth.data(), depths.data(), depths.size() * sizeof(float)), 0);
+    // Neither codes nor floats: refused, saying what it found.
+    const std::string bytes = (dir / "bytes.depth.tif").string();
+    auto byteOut = OIIO::ImageOutput::create(bytes);
+    OIIO::ImageSpec byteSpec(2, 1, 1, OIIO::TypeDesc::UINT8);
+    const unsigned char pixels[2] = {1, 2};
+    ASSERT_TRUE(byteOut->open(bytes, byteSpec) && byteOut->write_image(OIIO::TypeDesc::UINT8, pixels) && byteOut->close());
+    try {
+        readDepthFile(bytes);
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_THAT(e.what(), HasSubstr("expected 16-bit depth codes or 32-bit float depths, got uint8"));
+    }
 }
 
 TEST(DepthFile, ATextureIsValidOnlyWithItsDepthFile) {

@@ -16,7 +16,8 @@ GLuint DepthTextureStore::texture(int id) {
     const auto e = _entries.find(id);
     if (e == _entries.end() || e->second.depthFile.empty() || _failed.count(id)) return 0;
     try {
-        const walls::DepthImage image = walls::readDepthFile(_folder / e->second.depthFile);
+        walls::DepthImage image = walls::readDepthFile(_folder / e->second.depthFile);
+        walls::clampDepths(image, e->second.depthRange);  // 16-bit codes back inside the baked range
         return _textures.emplace(id, uploadDepthTexture(image)).first->second.id();
     } catch (const Error& error) {
         _failed[id] = true;
