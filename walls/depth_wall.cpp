@@ -67,6 +67,21 @@ glm::dvec2 depthRange(const DepthImage& image) {
     return hi < lo ? glm::dvec2(0.0) : glm::dvec2(lo, hi);
 }
 
+DepthTextureData depthTextureData(DepthImage image) {
+    DepthTextureData d;
+    if (image.width >= kSkipBlock && image.height >= kSkipBlock) d.blocks = depthBlockMinimum(image, kSkipBlock, 1);
+    d.depth = std::move(image);
+    return d;
+}
+
+std::size_t DepthTextureData::gpuBytes() const {
+    const int levels = blocks.width > 0 ? 4 : 1;
+    std::size_t bytes = 0;
+    for (int l = 0; l < levels; ++l)
+        bytes += std::size_t(std::max(1, depth.width >> l)) * std::size_t(std::max(1, depth.height >> l)) * 4;
+    return bytes;
+}
+
 void clampDepths(DepthImage& image, glm::dvec2 range) {
     const float lo = static_cast<float>(range.x), hi = static_cast<float>(range.y);
     for (float& d : image.depth)

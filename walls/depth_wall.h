@@ -111,6 +111,16 @@ DepthImage depthBlockMinimum(const DepthImage& image, int block, int dilate);
 inline constexpr int kSkipBlock = 8;
 inline constexpr int kSkipSteps = kSkipBlock - 1;
 
+// A depth image as the GPU holds it (gl::uploadDepthTexture): the depths and, when the image has
+// a whole skip block (kSkipBlock texels on both sides), their block minima (depthBlockMinimum
+// with dilate 1; empty otherwise). Made on the texture pager's thread, off the frame.
+struct DepthTextureData {
+    DepthImage depth, blocks;
+    // GPU bytes of its GL_R32F storage: level 0, and levels 1-3 when it has blocks.
+    std::size_t gpuBytes() const;
+};
+DepthTextureData depthTextureData(DepthImage image);
+
 // Converts a reversed-Z depth-buffer value of a frustum whose screen is the wall (clipFromView
 // of display::offAxisFrustum: z_view = -P[3][2] / (depth + P[2][2])) into the distance behind
 // the wall; eyeDistance is the frustum's. Buffer value 0 (cleared, nothing drawn) -> kNoSurface.

@@ -1,5 +1,7 @@
 #include "walls/texture_pager.h"
 
+#include "walls/depth_file.h"
+
 #include <algorithm>
 #include <climits>
 #include <utility>
@@ -56,15 +58,22 @@ void TexturePager::worker() {
         const BakedTexture texture = _textures.at(id);
         const auto path = _folder / texture.file;
         lock.unlock();
-        DecodedTexture d{id, {}, 0};
+        DecodedTexture d{id, {}, std::nullopt, 0};
         bool ok = true;
         try {
             // Only the bytes the manifest vouches for are drawn: checked before decoding and
-            // again after, so a file replaced meanwhile is refused too.
+            // again after, so a file replaced meanwhile is refused too (both files of a depth
+            // wall's texture).
             ok = textureFileValid(_folder, texture);
             if (ok) d.levels = _decoder(path);
+            if (ok && !texture.depthFile.empty()) {
+                DepthImage depth = readDepthFile(_folder / texture.depthFile);
+                ok = depth.width == d.levels.width() && depth.height == d.levels.height();
+                clampDepths(depth, texture.depthRange);
+                d.depth = depthTextureData(std::move(depth));
+            }
             ok = ok && textureFileValid(_folder, texture);
-            d.bytes = d.levels.bytes();
+            d.bytes = d.levels.bytes() + (d.depth ? d.depth->gpuBytes() : 0);
             // The uploader relies on at least one level of non-zero size.
             ok = ok && d.levels.count() > 0 && d.levels.width() > 0 && d.levels.height() > 0;
         } catch (const std::exception&) {

@@ -6,7 +6,7 @@
 // Per frame the runtime says which textures it draws now (non-zero weight) and which it may
 // draw soon (the neighbouring zones' textures). Requests for `now` are decoded first, then
 // `soon`. Residency is counted in GPU bytes of all MIP levels (RGBA8, or the compressed blocks of
-// a ".bct" file, walls/texture_blocks.h) against the budget; when a new texture would exceed
+// a ".bct" file, walls/texture_blocks.h; plus a depth wall's depth texture) against the budget; when a new texture would exceed
 // it, the least recently wanted textures that are not wanted now are evicted. A texture that is not resident is a miss for that frame: the runtime keeps drawing
 // what it drew before (the previous texture, or the geometry) — never a black wall.
 // A file whose size or hash differs from the manifest's (checked before and after decoding:
@@ -15,6 +15,7 @@
 
 #include "scenes/scene.h"
 #include "walls/bake_manifest.h"
+#include "walls/depth_wall.h"
 #include "walls/residency.h"
 #include "walls/texture_blocks.h"
 
@@ -34,7 +35,12 @@ namespace cavewall::walls {
 struct DecodedTexture {
     int id = 0;
     TextureLevels levels;                // MIP levels, largest first: RGBA8 premultiplied or blocks
-    std::size_t bytes = 0;               // GPU bytes, summed over levels (compressed when blocks)
+    // Depth walls: the texture's depth file (when the manifest lists one), decoded, clamped to
+    // its baked range (clampDepths) and with its skip blocks: paged, budgeted and evicted with
+    // the colour.
+    std::optional<DepthTextureData> depth;
+    std::size_t bytes = 0;               // GPU bytes, summed over levels (compressed when blocks),
+                                         // the depth texture's included
 };
 
 struct PagerStats {

@@ -1,5 +1,6 @@
 #include "walls/texture_pager.h"
 
+#include "walls/depth_file.h"
 #include "walls/texture_blocks.h"
 #include "walls/texture_mips.h"
 
@@ -9,6 +10,7 @@
 #include <atomic>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <random>
 
 namespace cavewall::walls {
@@ -258,6 +260,71 @@ TEST(TexturePager, PagesBlockFilesAsCompressedBytes) {
         pager.markResident(d.id, d.bytes);
     }
     EXPECT_DOUBLE_EQ(pager.stats().residentMB, 2 * 43704 / (1024.0 * 1024.0));
+}
+
+// Depth walls: a texture whose manifest entry lists a depth file gets its depths with the colour
+// (decoded, clamped into the baked range, with skip blocks) and counts their GPU bytes against
+// the budget; a damaged or mismatched depth file fails the texture like a bad colour file.
+TEST(TexturePager, PagesADepthWallsDepthWithItsColourAndBudgetsBoth) {
+    const auto dir = folder();
+    BakeManifest m = manifest();
+    // The nearest depth one whose code decodes nearer, the farthest one whose code decodes
+    // farther: only clamping brings them back exactly.
+    auto roundsTo = [](float start, bool nearer) {
+        for (float d = start;; d += 0.001f) {
+            const float back = decodeDepth(encodeDepth(d));
+            if (nearer ? back < d : back > d) return d;
+        }
+    };
+    const float nearest = roundsTo(0.5f, true), farthest = roundsTo(5.0f, false);
+    DepthImage depth{256, 256, std::vector<float>(256 * 256, 2.0f)};
+    depth.depth[0] = kNoSurface;
+    depth.depth[1] = nearest;
+    depth.depth[3] = farthest;
+    auto addDepth = [&](BakedTexture& t, const DepthImage& image) {
+        t.depthFile = "depth_" + std::to_string(t.id) + ".depth.tif";
+        writeDepthFile(dir / t.depthFile, image);
+        t.depthBytes = std::filesystem::file_size(dir / t.depthFile);
+        t.depthHash = hashFile(dir / t.depthFile);
+        t.depthRange = depthRange(image);
+    };
+    addDepth(m.textures[1], depth);
+    addDepth(m.textures[2], DepthImage{128, 128, std::vector<float>(128 * 128, 1.0f)});  // not the colour's size
+    addDepth(m.textures[3], depth);
+    std::ofstream(dir / m.textures[3].depthFile, std::ios::binary | std::ios::app) << "x";  // damaged
+    const std::size_t depthBytes = (256 * 256 + 128 * 128 + 64 * 64 + 32 * 32) * 4;
+    // Room for exactly textures 0 and 1 with 1's depth (three colours alone would fit too).
+    const double budgetMB = (2 * kBytes + depthBytes) / (1024.0 * 1024.0);
+    ASSERT_GT(depthBytes, kBytes);
+    TexturePager pager(dir, m, budgetMB, fakeDecode);
+    pager.request({0, 1, 2, 3}, {});
+    pager.waitIdle();
+    std::map<int, DecodedTexture> ready;
+    for (DecodedTexture& d : takeAll(pager)) ready.emplace(d.id, std::move(d));
+    ASSERT_EQ(ready.size(), 2u);  // 2 and 3 failed
+    EXPECT_TRUE(pager.hasFailed(2) && pager.hasFailed(3));
+    EXPECT_EQ(pager.stats().failures, 2);
+    EXPECT_FALSE(ready.at(0).depth);
+    EXPECT_EQ(ready.at(0).bytes, kBytes);
+    const DecodedTexture& withDepth = ready.at(1);
+    ASSERT_TRUE(withDepth.depth);
+    EXPECT_EQ(withDepth.bytes, kBytes + depthBytes);
+    EXPECT_EQ(withDepth.depth->gpuBytes(), depthBytes);
+    EXPECT_EQ(withDepth.depth->depth.depth[0], kNoSurface);
+    EXPECT_EQ(withDepth.depth->depth.depth[1], nearest);  // clamped into the baked range
+    EXPECT_EQ(withDepth.depth->depth.depth[3], farthest);
+    EXPECT_NEAR(withDepth.depth->depth.depth[2], 2.0f, depthFileError(2.0));
+    EXPECT_EQ(withDepth.depth->blocks.width, 256 / kSkipBlock);
+    EXPECT_EQ(withDepth.depth->blocks.depth[0], nearest);
+    for (const auto& [id, d] : ready) pager.markResident(id, d.bytes);
+    EXPECT_DOUBLE_EQ(pager.stats().residentMB, (2 * kBytes + depthBytes) / (1024.0 * 1024.0));
+    EXPECT_TRUE(pager.takeEvictions().empty());
+    // One more colour exceeds the budget only because the depth's bytes count: one goes.
+    pager.request({4}, {});
+    uploadAll(pager);
+    EXPECT_TRUE(pager.isResident(4));
+    EXPECT_FALSE(pager.takeEvictions().empty());
+    EXPECT_LE(pager.stats().residentMB, budgetMB + 1e-12);
 }
 
 }  // namespace

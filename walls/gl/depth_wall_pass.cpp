@@ -117,20 +117,26 @@ gl::GlObject uploadDepthTexture(const walls::DepthImage& image) {
     if (image.width <= 0 || image.height <= 0 || image.depth.size() != std::size_t(image.width) * image.height)
         throw Error("depth texture: expected width x height depths, got " + std::to_string(image.depth.size()) +
                     " for " + std::to_string(image.width) + " x " + std::to_string(image.height));
+    return uploadDepthTexture(walls::depthTextureData(image));
+}
+
+gl::GlObject uploadDepthTexture(const walls::DepthTextureData& data) {
+    const walls::DepthImage& image = data.depth;
+    if (image.width <= 0 || image.height <= 0 || image.depth.size() != std::size_t(image.width) * image.height)
+        throw Error("depth texture: expected width x height depths, got " + std::to_string(image.depth.size()) +
+                    " for " + std::to_string(image.width) + " x " + std::to_string(image.height));
     gl::GlObject t = gl::createTexture(GL_TEXTURE_2D);
     // Level 3 holds the march's skip test: 8 x 8 block minima over each block's 3 x 3
     // neighbourhood. Levels 1 and 2 are allocated (immutable storage is complete) but never
-    // read, so they are not filled: this runs when a frame first draws the texture.
-    const bool skip = image.width >= walls::kSkipBlock && image.height >= walls::kSkipBlock;
+    // read, so they are not filled.
+    static_assert(walls::kSkipBlock == 8, "level 3 is the skip level");
+    const bool skip = data.blocks.width > 0;
     glTextureStorage2D(t.id(), skip ? 4 : 1, GL_R32F, image.width, image.height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
     glTextureSubImage2D(t.id(), 0, 0, 0, image.width, image.height, GL_RED, GL_FLOAT, image.depth.data());
-    if (skip) {
-        static_assert(walls::kSkipBlock == 8, "level 3 is the skip level");
-        const walls::DepthImage m = walls::depthBlockMinimum(image, walls::kSkipBlock, 1);
-        glTextureSubImage2D(t.id(), 3, 0, 0, m.width, m.height, GL_RED, GL_FLOAT, m.depth.data());
-    }
+    if (skip)
+        glTextureSubImage2D(t.id(), 3, 0, 0, data.blocks.width, data.blocks.height, GL_RED, GL_FLOAT, data.blocks.depth.data());
     glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, skip ? GL_NEAREST_MIPMAP_NEAREST : GL_NEAREST);
     glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     return t;

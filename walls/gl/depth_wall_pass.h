@@ -78,6 +78,9 @@ struct DepthWallDraw {
 // of which level 3 is filled (the march's skip level, walls::depthBlockMinimum) and 1-2 are
 // never read. Needs a current context.
 gl::GlObject uploadDepthTexture(const walls::DepthImage& image);
+// The same from data whose block minima are made already (walls::depthTextureData, on the
+// texture pager's thread).
+gl::GlObject uploadDepthTexture(const walls::DepthTextureData& data);
 
 class DepthWallPass {
 public:

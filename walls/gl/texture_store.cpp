@@ -1,5 +1,6 @@
 #include "walls/gl/texture_store.h"
 
+#include "walls/gl/depth_wall_pass.h"
 #include "walls/gl/wall_quad.h"
 
 #include <algorithm>
@@ -36,21 +37,31 @@ std::size_t TextureStore::update() {
         uploaded += advance(allowed - uploaded);
     }
     _pacer.uploaded(uploaded);
-    for (int id : _pager.takeEvictions()) _textures.erase(id);
+    for (int id : _pager.takeEvictions()) _textures.erase(id), _depthTextures.erase(id);
     return uploaded;
 }
 
 std::size_t TextureStore::updateAll() {
     std::size_t uploaded = _inFlight ? finishInFlight() : 0;
     while (std::optional<walls::DecodedTexture> d = _pager.takeNext(false)) uploaded += finishWhole(std::move(*d));
-    for (int id : _pager.takeEvictions()) _textures.erase(id);
+    for (int id : _pager.takeEvictions()) _textures.erase(id), _depthTextures.erase(id);
     return uploaded;
 }
 
 std::size_t TextureStore::finishWhole(walls::DecodedTexture d) {
-    _textures[d.id] = uploadWallTexture(d.levels);
+    return d.levels.bytes() + makeResident(d, uploadWallTexture(d.levels));
+}
+
+// Colour uploaded: the depth goes up at once, then both count as resident. Returns the depth's bytes.
+std::size_t TextureStore::makeResident(walls::DecodedTexture& d, GlObject colour) {
+    std::size_t depthBytes = 0;
+    if (d.depth) {
+        _depthTextures[d.id] = uploadDepthTexture(*d.depth);
+        depthBytes = d.depth->gpuBytes();
+    }
+    _textures[d.id] = std::move(colour);
     _pager.markResident(d.id, d.bytes);
-    return d.bytes;
+    return depthBytes;
 }
 
 std::size_t TextureStore::advance(std::size_t maxBytes) {
@@ -58,12 +69,12 @@ std::size_t TextureStore::advance(std::size_t maxBytes) {
     InFlight& f = *_inFlight;
     const walls::UploadPiece piece = f.cursor->next(maxBytes);
     uploadWallTextureBand(f.texture.id(), f.decoded.levels, piece);
+    std::size_t bytes = piece.bytes;
     if (f.cursor->done()) {
-        _textures[f.decoded.id] = std::move(f.texture);
-        _pager.markResident(f.decoded.id, f.decoded.bytes);
+        bytes += makeResident(f.decoded, std::move(f.texture));
         _inFlight.reset();
     }
-    return piece.bytes;
+    return bytes;
 }
 
 std::size_t TextureStore::finishInFlight() {
@@ -75,6 +86,11 @@ std::size_t TextureStore::finishInFlight() {
 GLuint TextureStore::texture(int id) const {
     auto it = _textures.find(id);
     return it == _textures.end() ? 0 : it->second.id();
+}
+
+GLuint TextureStore::depthTexture(int id) const {
+    auto it = _depthTextures.find(id);
+    return it == _depthTextures.end() ? 0 : it->second.id();
 }
 
 }  // namespace cavewall::gl

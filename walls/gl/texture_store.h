@@ -9,7 +9,9 @@
 // updateAll() uploads everything ready (warm-up, synchronous paging). Textures are
 // GL_SRGB8_ALPHA8, or the sRGB S3TC formats of ".bct" files
 // (walls/texture_blocks.h, uploaded compressed), with every MIP level the file had (premultiplied
-// alpha, as baked), sampled trilinearly and clamped to the edge.
+// alpha, as baked), sampled trilinearly and clamped to the edge. A depth wall's texture comes
+// with its depth texture (gl::uploadDepthTexture), uploaded with the colour's last piece and
+// deleted with it.
 // Needs the rendering context current for every call and for destruction.
 
 #include "display/gl/gl_object.h"
@@ -37,6 +39,8 @@ public:
     // The GL texture of texture `id`, or 0 when it is not resident.
     GLuint texture(int id) const;
     bool resident(int id) const { return texture(id) != 0; }
+    // The depth texture of texture `id` (depth walls), or 0 when it is not resident or has none.
+    GLuint depthTexture(int id) const;
     GLuint sampler() const { return _sampler.id(); }
 
 private:
@@ -49,12 +53,14 @@ private:
     std::size_t finishWhole(walls::DecodedTexture d);  // uploads all of `d` and makes it resident
     std::size_t advance(std::size_t maxBytes);         // uploads the in-flight prefetch's next band
     std::size_t finishInFlight();
+    std::size_t makeResident(walls::DecodedTexture& d, GlObject colour);  // the depth uploaded here
 
     walls::TexturePager& _pager;
     std::size_t _uploadBytes;
     walls::UploadPacer _pacer;
     std::optional<InFlight> _inFlight;
     std::map<int, GlObject> _textures;
+    std::map<int, GlObject> _depthTextures;
     GlObject _sampler;
 };
 

@@ -8,7 +8,6 @@
 #include "render/lod_choice.h"
 #include "walls/gl/background_baker.h"
 #include "walls/gl/cluster_costs.h"
-#include "walls/gl/depth_texture_store.h"
 #include "walls/gl/texture_store.h"
 
 
@@ -93,7 +92,8 @@ struct Walkthrough::WallRuntime {
                 options.decoder ? options.decoder : walls::TexturePager::Decoder(decodeBakedTexture)),
           store(pager, static_cast<std::size_t>(options.uploadMBPerFrame * 1024 * 1024)) {
         if (options.wallKind == walls::WallKind::Depth) {
-            depth = std::make_unique<DepthTextureStore>(setup.folder, setup.manifest);
+            for (const walls::BakedTexture& t : setup.manifest.textures)
+                if (!t.depthFile.empty()) depthLayers[t.id] = {t.samplingPoint, t.depthRange};
             depthPass = std::make_unique<DepthWallPass>();
         }
     }
@@ -103,7 +103,9 @@ struct Walkthrough::WallRuntime {
     std::unique_ptr<CellPaging> geometry;  // geometry paging by cell (options.geometryBudgetMB > 0)
     TextureStore store;
     WallPass pass;
-    std::unique_ptr<DepthTextureStore> depth;  // depth walls only
+    // Depth walls only: each depth texture's sampling point and baked depth range (the
+    // textures themselves are paged with the colour, TextureStore::depthTexture).
+    std::map<int, std::pair<glm::dvec3, glm::dvec2>> depthLayers;
     std::unique_ptr<DepthWallPass> depthPass;
 };
 
@@ -295,17 +297,17 @@ std::vector<WallDraw> Walkthrough::wallDraws(const walls::FramePlan& plan) const
 
 std::vector<DepthWallDraw> Walkthrough::depthWallDraws(const walls::FramePlan& plan, std::vector<WallDraw>& flat) {
     std::vector<DepthWallDraw> draws;
-    if (!_walls || !_walls->depth) return draws;
-    DepthTextureStore& depth = *_walls->depth;
-    depth.retain([&](int id) { return _walls->store.resident(id); });
+    if (!_walls || !_walls->depthPass) return draws;
     std::vector<WallDraw> left;
     for (std::size_t i = 0; i < plan.wallDraws.size() && i < flat.size(); ++i) {
         DepthWallDraw d{flat[i].quad, {}, 0};
         bool all = true;
         for (const auto& [id, weight] : plan.wallDraws[i].textures) {
-            const GLuint colour = _walls->store.texture(id), depthTexture = colour ? depth.texture(id) : 0;
-            if (colour && !depthTexture) all = false;
-            d.layers[d.count++] = {colour, depthTexture, depth.samplingPoint(id), depth.range(id), static_cast<float>(weight)};
+            const GLuint colour = _walls->store.texture(id), depthTexture = _walls->store.depthTexture(id);
+            const auto layer = _walls->depthLayers.find(id);
+            if (colour && (!depthTexture || layer == _walls->depthLayers.end())) all = false;
+            if (layer != _walls->depthLayers.end())
+                d.layers[d.count++] = {colour, depthTexture, layer->second.first, layer->second.second, static_cast<float>(weight)};
         }
         if (all) draws.push_back(d);
         else left.push_back(flat[i]);

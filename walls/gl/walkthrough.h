@@ -77,7 +77,9 @@ struct WalkthroughOptions : walls::WalkthroughSettings {
     ClusterOptions clusters;
     RenderSettings render;                   // clear colour, ambient, levels of detail
     // Depth: walls drawn by gl::DepthWallPass from a depth bake (BakeSettings::kind, the
-    // manifest's depth files, DepthTextureStore); a texture without its depth is drawn flat.
+    // manifest's depth files, paged and budgeted with the colour by walls::TexturePager and
+    // gl::TextureStore); a texture without a depth file is drawn flat, one whose depth file is
+    // bad fails like a bad colour file (the wall keeps its last texture or draws geometry).
     walls::WallKind wallKind = walls::WallKind::Flat;
     // Baking on demand (walls/gl/background_baker.h; flat walls, not with synchronous paging):
     // each frame tells the baker what it wants and hands what it baked (or evicted from the
