@@ -19,6 +19,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -264,6 +265,78 @@ TEST_F(DepthWallPassTest, GeometryInFrontOfTheWallHidesIt) {
     EXPECT_GT(covered, kWidth * kHeight / 20);  // the box covers a good part of the wall
     EXPECT_GT(shown, kWidth * kHeight / 4);     // and the wall shows around it
     EXPECT_EQ(wrong, 0);
+}
+
+// Blended layers share one march (gl::DepthWallPass header): the heaviest layer's hit depth,
+// else the next layer's. Two layers of one texture therefore draw exactly what it draws alone,
+// and a heaviest layer with nothing in it (no depth anywhere) falls back to the next layer's
+// march: [empty 0.5, real 0.5] draws what [real 0.5] draws; a lighter layer is sampled where
+// the heaviest layer's ray landed, whatever its own depth says. A second texture from another
+// sampling point, blended in, shows its own colours where the first layer's ray lands.
+TEST_F(DepthWallPassTest, BlendedLayersShareTheHeaviestLayersMarch) {
+    if (!context) GTEST_SKIP();
+    const scenes::Scene scene = cardScene();
+    const std::vector<int> objects{0, 1};
+    walls::DepthImage depth, otherDepth;
+    scenes::Image colour, other;
+    const glm::dvec3 otherSample(-0.8, 1.4, 2.6);
+    {
+        gl::WallTextureRenderer baker(scene, 1.0f);
+        colour = baker.render(kQuad, kSample, {kWidth, kHeight}, objects, depth);
+        other = baker.render(kQuad, otherSample, {kWidth, kHeight}, objects, otherDepth);
+    }
+    scenes::Image emptyColour = colour;
+    std::fill(emptyColour.rgba.begin(), emptyColour.rgba.end(), std::uint8_t(0));
+    const walls::DepthImage emptyDepth{kWidth, kHeight, std::vector<float>(std::size_t(kWidth) * kHeight, walls::kNoSurface)};
+    const gl::GlObject colourTexture = gl::uploadWallTexture({colour}), depthTexture = gl::uploadDepthTexture(depth);
+    const gl::GlObject otherColour = gl::uploadWallTexture({other}), otherDepthTexture = gl::uploadDepthTexture(otherDepth);
+    const gl::GlObject emptyTexture = gl::uploadWallTexture({emptyColour}), emptyDepthTexture = gl::uploadDepthTexture(emptyDepth);
+    const gl::DepthWallLayer real{colourTexture.id(), depthTexture.id(), kSample, walls::depthRange(depth), 1.0f};
+    const gl::DepthWallLayer second{otherColour.id(), otherDepthTexture.id(), otherSample, walls::depthRange(otherDepth), 1.0f};
+    const gl::DepthWallLayer nothing{emptyTexture.id(), emptyDepthTexture.id(), kSample, glm::dvec2(0.0), 1.0f};
+
+    const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, kEye, {0.05, kInf});
+    gl::OffscreenTarget target({kWidth, kHeight});
+    const gl::DepthWallPass pass;
+    auto draw = [&](std::vector<std::pair<gl::DepthWallLayer, float>> layers) {
+        gl::DepthWallDraw d{kQuad, {}, 0};
+        for (auto [layer, weight] : layers) {
+            layer.weight = weight;
+            d.layers[d.count++] = layer;
+        }
+        target.bindAndClear(glm::vec4(0.0f));
+        glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+        gl::FrameStats stats;
+        pass.draw({d}, frustum, glm::dmat4(1.0), 0, stats);
+        return target.read("wall");
+    };
+    auto largestDifference = [](const scenes::Image& a, const scenes::Image& b) {
+        int most = 0;
+        for (std::size_t i = 0; i < a.rgba.size(); ++i) most = std::max(most, std::abs(int(a.rgba[i]) - int(b.rgba[i])));
+        return most;
+    };
+    const scenes::Image alone = draw({{real, 1.0f}});
+    EXPECT_LE(largestDifference(draw({{real, 0.7f}, {real, 0.3f}}), alone), 1);
+    const scenes::Image half = draw({{real, 0.5f}});
+    EXPECT_LE(largestDifference(draw({{nothing, 0.5f}, {real, 0.5f}}), half), 1);
+    // Shared, not marched per layer: a lighter layer with the same colour and no depth at all
+    // is sampled where the heaviest layer's ray landed (its own march would find nothing).
+    const gl::DepthWallLayer colourOnly{colourTexture.id(), emptyDepthTexture.id(), kSample, glm::dvec2(0.0), 1.0f};
+    const scenes::Image shared = draw({{real, 0.5f}, {colourOnly, 0.5f}});
+    EXPECT_LE(largestDifference(shared, alone), 1);
+    EXPECT_GT(largestDifference(shared, half), 1);
+    // The other texture blended in changes the image (it is drawn), but less than a texture
+    // alone from the other point would: where the card is, both layers show the card.
+    const scenes::Image blended = draw({{real, 0.5f}, {second, 0.5f}});
+    EXPECT_GT(largestDifference(blended, alone), 1);
+    int cardPixels = 0, cardKept = 0;
+    for (std::size_t i = 0; i < alone.rgba.size(); i += 4) {
+        const bool card = alone.rgba[i] > 150 && alone.rgba[i + 1] < 90;  // red
+        cardPixels += card;
+        cardKept += card && blended.rgba[i] > 150 && blended.rgba[i + 1] < 90;
+    }
+    EXPECT_GT(cardPixels, kWidth * kHeight / 50);
+    EXPECT_GT(cardKept, cardPixels * 9 / 10);
 }
 
 }  // namespace

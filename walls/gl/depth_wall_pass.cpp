@@ -53,7 +53,8 @@ bool hits(sampler2D depth, ivec2 size, vec2 ta, vec2 tb, float dS, float sg) {
     return dS * sg * (1.0 + 1e-5) >= (d - 1e-5 * dS) * (1.0 - sg);
 }
 
-vec4 march(sampler2D colour, sampler2D depth, vec3 S, vec2 range, vec2 gx, vec2 gy) {
+// The depth s behind the wall of the first hit of the eye's ray in layer S's depth, or -1.
+float march(sampler2D depth, vec3 S, vec2 range) {
     ivec2 size = textureSize(depth, 0);
     vec2 a = vWall;
     vec2 b = S.xy + S.z * (vWall - uEye.xy) / uEye.z;
@@ -83,12 +84,19 @@ vec4 march(sampler2D colour, sampler2D depth, vec3 S, vec2 range, vec2 gx, vec2 
             lo = sg;
         }
     }
-    if (hi < 0.0) return vec4(0.0);
+    if (hi < 0.0) return -1.0;
     for (int r = 0; r < uRefine && hi > lo; ++r) {
         float mid = 0.5 * (lo + hi);
         if (hits(depth, size, ta, tb, S.z, mid)) hi = mid; else lo = mid;
     }
-    vec2 t = mix(a, b, hi);
+    return S.z * hi / (1.0 - hi);
+}
+
+// Layer S's colour where the eye's ray is at depth s behind the wall: its texture at the point
+// through which S sees the ray there (sigma = s / (D_S + s)).
+vec4 colourAt(sampler2D colour, vec3 S, float s, vec2 gx, vec2 gy) {
+    vec2 b = S.xy + S.z * (vWall - uEye.xy) / uEye.z;
+    vec2 t = mix(vWall, b, s / (S.z + s));
     return textureGrad(colour, vec2(t.x / uSize.x, 1.0 - t.y / uSize.y), gx, gy);
 }
 )";
@@ -100,11 +108,17 @@ std::string fragmentSource(int layers) {
         s += "layout(binding = " + std::to_string(2 * i) + ") uniform sampler2D uColour" + std::to_string(i) +
              ";\nlayout(binding = " + std::to_string(2 * i + 1) + ") uniform sampler2D uDepth" + std::to_string(i) + ";\n";
     s += kMarch;
-    s += "void main() {\n    vec2 gx = dFdx(vUv), gy = dFdy(vUv);\n    vec4 c = vec4(0.0)";
+    // One march finds the ray's depth s (the heaviest layer's first hit; the next layer's when
+    // it has none), and every layer shows its texture where the ray is at s.
+    s += "void main() {\n    vec2 gx = dFdx(vUv), gy = dFdy(vUv);\n    float s = -1.0;\n";
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
-        s += "\n        + uWeights[" + n + "] * march(uColour" + n + ", uDepth" + n + ", uSample[" + n + "], uRange[" + n +
-             "], gx, gy)";
+        s += "    if (s < 0.0) s = march(uDepth" + n + ", uSample[" + n + "], uRange[" + n + "]);\n";
+    }
+    s += "    vec4 c = vec4(0.0);\n    if (s >= 0.0) c = vec4(0.0)";
+    for (int i = 0; i < layers; ++i) {
+        const std::string n = std::to_string(i);
+        s += "\n        + uWeights[" + n + "] * colourAt(uColour" + n + ", uSample[" + n + "], s, gx, gy)";
     }
     // Where no layer hits there is nothing behind the wall: the sum is 0 and leaves the pixel
     // as it was (premultiplied blending, no depth writes).
