@@ -68,19 +68,24 @@ glm::dvec2 depthRange(const DepthImage& image) {
 }
 
 DepthTextureData depthTextureData(DepthImage image) {
+    if (image.width <= 0 || image.height <= 0 || image.depth.size() != std::size_t(image.width) * image.height)
+        throw Error("depth texture: expected width x height depths, got " + std::to_string(image.depth.size()) +
+                    " for " + std::to_string(image.width) + " x " + std::to_string(image.height));
     DepthTextureData d;
     if (image.width >= kSkipBlock && image.height >= kSkipBlock) d.blocks = depthBlockMinimum(image, kSkipBlock, 1);
     d.depth = std::move(image);
     return d;
 }
 
-std::size_t DepthTextureData::gpuBytes() const {
-    const int levels = blocks.width > 0 ? 4 : 1;
+std::size_t depthTextureBytes(int width, int height) {
+    const int levels = width >= kSkipBlock && height >= kSkipBlock ? 4 : 1;
     std::size_t bytes = 0;
     for (int l = 0; l < levels; ++l)
-        bytes += std::size_t(std::max(1, depth.width >> l)) * std::size_t(std::max(1, depth.height >> l)) * 4;
+        bytes += std::size_t(std::max(1, width >> l)) * std::size_t(std::max(1, height >> l)) * 4;
     return bytes;
 }
+
+std::size_t DepthTextureData::gpuBytes() const { return depthTextureBytes(depth.width, depth.height); }
 
 void clampDepths(DepthImage& image, glm::dvec2 range) {
     const float lo = static_cast<float>(range.x), hi = static_cast<float>(range.y);

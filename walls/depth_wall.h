@@ -116,10 +116,13 @@ inline constexpr int kSkipSteps = kSkipBlock - 1;
 // with dilate 1; empty otherwise). Made on the texture pager's thread, off the frame.
 struct DepthTextureData {
     DepthImage depth, blocks;
-    // GPU bytes of its GL_R32F storage: level 0, and levels 1-3 when it has blocks.
-    std::size_t gpuBytes() const;
+    std::size_t gpuBytes() const;  // depthTextureBytes of its size
 };
+// Throws cavewall::Error unless the image holds width x height depths.
 DepthTextureData depthTextureData(DepthImage image);
+// GPU bytes of a width x height depth texture's GL_R32F storage: level 0, and levels 1-3 when
+// it has a whole skip block (level 3 holds the block minima, 1-2 are allocated unread).
+std::size_t depthTextureBytes(int width, int height);
 
 // Converts a reversed-Z depth-buffer value of a frustum whose screen is the wall (clipFromView
 // of display::offAxisFrustum: z_view = -P[3][2] / (depth + P[2][2])) into the distance behind

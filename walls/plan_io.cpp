@@ -1,6 +1,7 @@
 #include "walls/plan_io.h"
 
 #include "config/json_reader.h"
+#include "walls/depth_wall.h"
 
 #include <cmath>
 #include <cstdio>
@@ -180,10 +181,13 @@ PlanTotals planTotals(const Plan& plan) {
     for (const BeyondSide& b : plan.beyond) t.beyondTextures += b.side.textureCount;
     for (const Texture& tex : plan.textures) t.texels += double(tex.resolution.x) * tex.resolution.y;
     t.gpuBytes = t.texels * 4.0 * 4.0 / 3.0;
-    // Depth walls: a 32-bit float depth per base-level texel on the GPU (levels 1-3 add a third:
-    // level 3 holds the block minima), a 16-bit code per texel on disk (walls/depth_file.h).
+    // Depth walls: the depth texture on the GPU (depthTextureBytes), a 16-bit code per texel on
+    // disk (walls/depth_file.h).
     t.diskBytes = t.gpuBytes;
-    if (plan.options.wallKind == WallKind::Depth) t.gpuBytes += t.texels * 4.0 * 4.0 / 3.0, t.diskBytes += t.texels * 2.0;
+    if (plan.options.wallKind == WallKind::Depth) {
+        for (const Texture& tex : plan.textures) t.gpuBytes += double(depthTextureBytes(tex.resolution.x, tex.resolution.y));
+        t.diskBytes += t.texels * 2.0;
+    }
     for (const Texture& tex : plan.textures) t.maxErrorDeg = std::max(t.maxErrorDeg, glm::degrees(tex.maxError));
     return t;
 }

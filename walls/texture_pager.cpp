@@ -69,8 +69,10 @@ void TexturePager::worker() {
             if (ok && !texture.depthFile.empty()) {
                 DepthImage depth = readDepthFile(_folder / texture.depthFile);
                 ok = depth.width == d.levels.width() && depth.height == d.levels.height();
-                clampDepths(depth, texture.depthRange);
-                d.depth = depthTextureData(std::move(depth));
+                if (ok) {
+                    clampDepths(depth, texture.depthRange);
+                    d.depth = depthTextureData(std::move(depth));
+                }
             }
             ok = ok && textureFileValid(_folder, texture);
             d.bytes = d.levels.bytes() + (d.depth ? d.depth->gpuBytes() : 0);

@@ -6,9 +6,10 @@
 // Per frame the runtime says which textures it draws now (non-zero weight) and which it may
 // draw soon (the neighbouring zones' textures). Requests for `now` are decoded first, then
 // `soon`. Residency is counted in GPU bytes of all MIP levels (RGBA8, or the compressed blocks of
-// a ".bct" file, walls/texture_blocks.h; plus a depth wall's depth texture) against the budget; when a new texture would exceed
-// it, the least recently wanted textures that are not wanted now are evicted. A texture that is not resident is a miss for that frame: the runtime keeps drawing
-// what it drew before (the previous texture, or the geometry) — never a black wall.
+// a ".bct" file, walls/texture_blocks.h; plus a depth wall's depth texture) against the budget;
+// when a new texture would exceed it, the least recently wanted textures that are not wanted
+// now are evicted. A texture that is not resident is a miss for that frame: the runtime keeps
+// drawing what it drew before (the previous texture, or the geometry) — never a black wall.
 // A file whose size or hash differs from the manifest's (checked before and after decoding:
 // replaced, torn, swapped with another) is never drawn. Such files and decoding failures mark
 // the texture failed for good and count it.

@@ -128,9 +128,6 @@ std::string fragmentSource(int layers) {
 }  // namespace
 
 gl::GlObject uploadDepthTexture(const walls::DepthImage& image) {
-    if (image.width <= 0 || image.height <= 0 || image.depth.size() != std::size_t(image.width) * image.height)
-        throw Error("depth texture: expected width x height depths, got " + std::to_string(image.depth.size()) +
-                    " for " + std::to_string(image.width) + " x " + std::to_string(image.height));
     return uploadDepthTexture(walls::depthTextureData(image));
 }
 
