@@ -270,8 +270,17 @@ double depthEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const display::Sc
     return depthZoneBound({{glm::dvec2(eye.x, eye.z)}, {eye.y, eye.y}}, samplingPoint, wall, span, texelDiagonal);
 }
 
-double depthZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
-                      glm::dvec2 span, double texelDiagonal) {
+namespace {
+
+// depthZoneBound's search. With a finite `alpha` it stops as soon as the answer to "bound <=
+// alpha?" is known, and then returns a value on the same side of alpha as the bound: the largest
+// box bound only falls as boxes split (|v| over a sub-box is at most over the box, its gap to the
+// eyes at least as large), so once it is within alpha the finished bound is too; and every
+// centre estimate is at most the bound of any box holding that centre (kdiff(D) / D decreases,
+// kdiff <= kdMax, the distance to the eye is at least both D and the box's far), so once an
+// estimate exceeds alpha the finished bound does too. NaN: the whole search.
+double depthZoneSearch(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                       glm::dvec2 span, double texelDiagonal, double alpha) {
     const WallFrame f = wallFrame(wall);
     const glm::dvec3 s = f.toWall(samplingPoint);
     const double ds = std::abs(s.z);
@@ -333,6 +342,8 @@ double depthZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const di
     for (int budget = 64; budget > 0; --budget) {
         const Box top = heap.front();
         if (top.upper <= found * 1.02 + 1e-4) break;
+        if (top.upper + texel <= alpha) return top.upper + texel;
+        if (found + texel > alpha) return found + texel;
         std::pop_heap(heap.begin(), heap.end(), lower);
         heap.pop_back();
         const glm::dvec2 mid = 0.5 * (top.lo + top.hi);
@@ -347,6 +358,18 @@ double depthZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const di
     return std::isfinite(bound) ? std::min(bound, kPi) : kPi;
 }
 
+}  // namespace
+
+double depthZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                      glm::dvec2 span, double texelDiagonal) {
+    return depthZoneSearch(zone, samplingPoint, wall, span, texelDiagonal, std::numeric_limits<double>::quiet_NaN());
+}
+
+bool depthZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                     glm::dvec2 span, double texelDiagonal, double alpha) {
+    return alpha > 0.0 && depthZoneSearch(zone, samplingPoint, wall, span, texelDiagonal, alpha) <= alpha;
+}
+
 double depthFlatFormEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const display::ScreenQuad& wall, double dFar,
                              double texelDiagonal) {
     const WallFrame f = wallFrame(wall);
@@ -358,20 +381,40 @@ double depthFlatFormEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const dis
     return std::isfinite(bound) ? std::min(bound, kPi) : kPi;
 }
 
-double depthFlatFormZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
-                              double texelDiagonal) {
+namespace {
+
+// The flat form's texel term over a zone, 0.5 h max(1 / Dmin, 1 / D_S); NaN when the form does
+// not apply (no zone, a negative texel, an eye on the plane or on the other side).
+double flatFormTexelTerm(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                         double texelDiagonal) {
     const WallFrame f = wallFrame(wall);
     const glm::dvec3 s = f.toWall(samplingPoint);
-    if (zone.floor.empty() || !(texelDiagonal >= 0.0)) return kPi;
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    if (zone.floor.empty() || !(texelDiagonal >= 0.0)) return none;
     double dmin = std::numeric_limits<double>::infinity();
     for (const glm::dvec2& p : zone.floor)
         for (double y : {zone.heightRange.x, zone.heightRange.y}) {
             const glm::dvec3 e = f.toWall({p.x, y, p.y});
-            if (!(e.z * s.z > 0.0)) return kPi;  // on the plane or the other side
+            if (!(e.z * s.z > 0.0)) return none;  // on the plane or the other side
             dmin = std::min(dmin, std::abs(e.z));
         }
-    const double bound = zoneMaxError(zone, samplingPoint, wall) + 0.5 * texelDiagonal * std::max(1.0 / dmin, 1.0 / std::abs(s.z));
+    return 0.5 * texelDiagonal * std::max(1.0 / dmin, 1.0 / std::abs(s.z));
+}
+
+}  // namespace
+
+double depthFlatFormZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                              double texelDiagonal) {
+    const double texel = flatFormTexelTerm(zone, samplingPoint, wall, texelDiagonal);
+    if (std::isnan(texel)) return kPi;
+    const double bound = zoneMaxError(zone, samplingPoint, wall) + texel;
     return std::isfinite(bound) ? std::min(bound, kPi) : kPi;
+}
+
+bool depthFlatFormZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                             double texelDiagonal, double alpha) {
+    const double texel = flatFormTexelTerm(zone, samplingPoint, wall, texelDiagonal);
+    return alpha - texel > 0.0 && zoneWithin(zone, samplingPoint, wall, alpha - texel);
 }
 
 }  // namespace cavewall::walls

@@ -255,6 +255,10 @@ double depthEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const display::Sc
 // (depthEyeBound is this for a zone of one point).
 double depthZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
                       glm::dvec2 span, double texelDiagonal);
+// depthZoneBound(...) <= alpha, the planner's predicate: the same answer, but the search stops
+// as soon as it is known (most of the planner's probes are decided by the first boxes).
+bool depthZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                     glm::dvec2 span, double texelDiagonal, double alpha);
 
 // ---- The flat form of the planner's bound ----
 //
@@ -280,5 +284,10 @@ double depthFlatFormEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const dis
 // vertices), plus the texel term at the zone's nearest distance. At least every eye's form.
 double depthFlatFormZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
                               double texelDiagonal);
+// The flat form proven within alpha: zoneWithin at alpha less the texel term (one decision per
+// zone vertex, stopping at the first that fails), not zoneMaxError's bisection to 1e-9 rad.
+// Rigorous like the bound; it can accept where the bound exceeds alpha by its tolerance.
+bool depthFlatFormZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                             double texelDiagonal, double alpha);
 
 }  // namespace cavewall::walls

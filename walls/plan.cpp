@@ -103,8 +103,8 @@ bool depthTextureWithin(const ZoneVolume& volume, glm::dvec3 samplingPoint, cons
                         const PlanOptions& options, double alpha) {
     const glm::ivec2 resolution = textureResolution(nearestDistance(volume.floor, samplingPoint.y, wall), wall, options);
     const double h = texelDiagonal(wall, resolution);
-    return depthFlatFormZoneBound(volume, samplingPoint, wall, h) <= alpha ||
-           depthZoneBound(volume, samplingPoint, wall, span, h) <= alpha;
+    return depthFlatFormZoneWithin(volume, samplingPoint, wall, h, alpha) ||
+           depthZoneWithin(volume, samplingPoint, wall, span, h, alpha);
 }
 
 double textureErrorAt(const Plan& plan, const Texture& t, glm::dvec3 eye) {

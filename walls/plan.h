@@ -180,7 +180,8 @@ double texelDiagonal(const display::ScreenQuad& wall, glm::ivec2 resolution);
 double depthTextureBound(const ZoneVolume& volume, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
                          glm::dvec2 span, const PlanOptions& options);
 
-// depthTextureBound(...) <= alpha, evaluating the cheaper flat form first (the planner's test).
+// depthTextureBound(...) <= alpha, proven (the planner's test): the flat form decided first (a
+// decision per zone vertex), then the span form, whose search stops once its answer is known.
 bool depthTextureWithin(const ZoneVolume& volume, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
                         glm::dvec2 span, const PlanOptions& options, double alpha);
 

@@ -147,6 +147,45 @@ TEST(DepthPlan, ZoneBoundCoversEveryEyeOfTheZone) {
     EXPECT_GE(worst, 0.4 * bound);
 }
 
+// The planner's predicates (depthZoneWithin, depthFlatFormZoneWithin) stop early; they must give
+// the bounds' answer. Random zones, sampling points, spans and texels, with alpha on both sides
+// of each bound and at it: the span form exactly; the flat form too, except within the
+// bound's own tolerance of alpha (it decides, the bound bisects to kErrorTolerance).
+TEST(DepthPlan, WithinPredicatesGiveTheBoundsAnswer) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    int spanYes = 0, spanNo = 0, flatYes = 0, flatNo = 0;
+    for (int i = 0; i < 300; ++i) {
+        const double x = -3.0 + 6.0 * u(rng), z = 0.5 + 5.0 * u(rng), w = 0.2 + 2.0 * u(rng), d = 0.2 + 2.0 * u(rng);
+        const ZoneVolume zone{{{x, z}, {x + w, z}, {x + w + 0.3 * u(rng), z + d}, {x - 0.3 * u(rng), z + d}}, {1.2, 2.0}};
+        const glm::dvec3 s(x + w * u(rng), 1.6, z + d * u(rng));
+        const double nearDepth = 2.0 * u(rng);
+        const glm::dvec2 span(nearDepth, u(rng) < 0.1 ? kInfiniteDepth : nearDepth + 8.0 * u(rng));
+        const double h = 0.02 * u(rng);
+        const double spanBound = depthZoneBound(zone, s, kQuad, span, h), flatBound = depthFlatFormZoneBound(zone, s, kQuad, h);
+        for (double f : {0.5, 0.9, 0.99, 1.0, 1.01, 1.1, 2.0}) {
+            const double alpha = std::min(f * spanBound, 1.5);
+            const bool spanWithin = depthZoneWithin(zone, s, kQuad, span, h, alpha);
+            EXPECT_EQ(spanWithin, spanBound <= alpha) << "zone " << i << " alpha " << alpha << " bound " << spanBound;
+            (spanWithin ? spanYes : spanNo) += 1;
+            const double flatAlpha = std::min(f * flatBound, 1.5);
+            const bool flatWithin = depthFlatFormZoneWithin(zone, s, kQuad, h, flatAlpha);
+            if (std::abs(flatBound - flatAlpha) > 1e-8)
+                EXPECT_EQ(flatWithin, flatBound <= flatAlpha) << "zone " << i << " alpha " << flatAlpha << " bound " << flatBound;
+            (flatWithin ? flatYes : flatNo) += 1;
+        }
+    }
+    // Both answers occur, often.
+    EXPECT_GT(std::min({spanYes, spanNo, flatYes, flatNo}), 300);
+    // No zone, an eye on the other side: not within, whatever alpha.
+    const glm::dvec3 s(0.0, 1.6, 2.0);
+    EXPECT_FALSE(depthZoneWithin({{}, {1.2, 2.0}}, s, kQuad, {0.5, 2.0}, 0.01, 1.5));
+    EXPECT_FALSE(depthFlatFormZoneWithin({{}, {1.2, 2.0}}, s, kQuad, 0.01, 1.5));
+    const ZoneVolume across{{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}, {1.2, 2.0}};
+    EXPECT_FALSE(depthZoneWithin(across, s, kQuad, {0.5, 2.0}, 0.01, 1.5));
+    EXPECT_FALSE(depthFlatFormZoneWithin(across, s, kQuad, 0.01, 1.5));
+}
+
 // Depth images whose depths are anywhere in the wall's span: blocks of random depth.
 DepthImage blockImage(int width, int height, glm::dvec2 span, std::mt19937& rng) {
     std::uniform_real_distribution<double> u(span.x, span.y);
