@@ -113,7 +113,7 @@ long saveEvery(const std::string& spec) {
 
 std::string seconds(double s) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.2f", s);
+    std::snprintf(text, sizeof text, "%.3f", s);
     return text;
 }
 
