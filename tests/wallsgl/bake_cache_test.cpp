@@ -7,6 +7,8 @@
 #include "walls/depth_file.h"
 #include "walls/gl/baker.h"
 #include "walls/texture_pager.h"
+#include "walls/wall_setup.h"
+#include "scenes/loader.h"
 
 #include <gmock/gmock.h>
 
@@ -264,6 +266,30 @@ TEST_F(BakeCacheTest, SceneChangeReBakesOnlyTheTexturesItTouches) {
         const walls::BakedTexture& old = first.manifest.textures[t.id];
         EXPECT_EQ(t.file == old.file, t.cell == 1) << t.file;  // same texture key exactly when untouched
     }
+}
+
+// What a wall side bakes keys the folder: with the same files and settings, other baked lists
+// (as a change to the classification rules gives) must not reuse a complete manifest whose
+// textures show the old ones. The side whose list changed is re-rendered; the other side's
+// textures are taken over from the first bake.
+TEST_F(BakeCacheTest, OtherBakedListsGetANewFolder) {
+    scenes::SceneDescription description;
+    const scenes::Scene scene = scenes::loadSceneFile(request.scene, &description);
+    walls::WallSetup setup = walls::prepareWalls(scene, description, request.plan);
+    const BakeResult first = bakeWalls(scene, description, setup, request);
+    EXPECT_EQ(bakeWalls(scene, description, setup, request).folder, first.folder);  // same lists: same folder
+    int front = 0;
+    for (const walls::BakedTexture& t : first.manifest.textures) front += t.cell == 0;
+    ASSERT_GT(front, 0);
+    // The front cell's textures no longer show the first object they baked.
+    std::vector<int>& baked = setup.contents.at({0, 0}).baked;
+    ASSERT_GT(baked.size(), 1u);
+    baked.erase(baked.begin());
+    const BakeResult second = bakeWalls(scene, description, setup, request);
+    EXPECT_NE(second.key, first.key);
+    EXPECT_NE(second.folder, first.folder);
+    EXPECT_EQ(second.baked, front);
+    EXPECT_EQ(second.linked, static_cast<int>(first.manifest.textures.size()) - front);
 }
 
 TEST_F(BakeCacheTest, CorruptManifestIsAWarningAndEverythingIsReBaked) {

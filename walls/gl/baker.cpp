@@ -269,6 +269,14 @@ void Bake::key() {
     KeyHasher h;
     h.text("cavewall bake v1").integer(static_cast<std::int64_t>(sceneFilesKey(_request.scene, _description)));
     h.integer(static_cast<std::int64_t>(planOptionsKey(_plan.options)));
+    // What each wall side bakes (walls/visibility.h): the same files and options give the same
+    // lists unless the rules that classify objects change, and then a complete manifest of the
+    // old folder must not be reused (its textures show the old lists).
+    h.text("baked objects v1");
+    for (const auto& [at, contents] : _walls.contents) {
+        h.integer(at.first).integer(at.second).integer(static_cast<std::int64_t>(contents.baked.size()));
+        for (int i : contents.baked) h.integer(i);
+    }
     _result.key = h.integer(static_cast<std::int64_t>(settingsKey(_request.settings))).value();
     const std::filesystem::path cache = _request.cache.empty() ? defaultCacheFolder() : _request.cache;
     _result.folder = cache / walls::hex64(_result.key);
