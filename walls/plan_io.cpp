@@ -179,16 +179,17 @@ PlanTotals planTotals(const Plan& plan) {
     t.textures = int(plan.textures.size());
     t.beyondZones = int(plan.beyondZones.size());
     for (const BeyondSide& b : plan.beyond) t.beyondTextures += b.side.textureCount;
-    for (const Texture& tex : plan.textures) t.texels += double(tex.resolution.x) * tex.resolution.y;
-    t.gpuBytes = t.texels * 4.0 * 4.0 / 3.0;
-    // Depth walls: the depth texture on the GPU (depthTextureBytes), a 16-bit code per texel on
-    // disk (walls/depth_file.h).
-    t.diskBytes = t.gpuBytes;
-    if (plan.options.wallKind == WallKind::Depth) {
-        for (const Texture& tex : plan.textures) t.gpuBytes += double(depthTextureBytes(tex.resolution.x, tex.resolution.y));
-        t.diskBytes += t.texels * 2.0;
+    // Depth walls add the depth texture on the GPU (depthTextureBytes) and a 16-bit code per
+    // texel on disk (walls/depth_file.h).
+    const bool depth = plan.options.wallKind == WallKind::Depth;
+    double depthGpuBytes = 0.0;
+    for (const Texture& tex : plan.textures) {
+        t.texels += double(tex.resolution.x) * tex.resolution.y;
+        if (depth) depthGpuBytes += double(depthTextureBytes(tex.resolution.x, tex.resolution.y));
+        t.maxErrorDeg = std::max(t.maxErrorDeg, glm::degrees(tex.maxError));
     }
-    for (const Texture& tex : plan.textures) t.maxErrorDeg = std::max(t.maxErrorDeg, glm::degrees(tex.maxError));
+    t.gpuBytes = t.texels * 4.0 * 4.0 / 3.0 + depthGpuBytes;
+    t.diskBytes = t.texels * 4.0 * 4.0 / 3.0 + (depth ? t.texels * 2.0 : 0.0);
     return t;
 }
 

@@ -1,6 +1,7 @@
 // The bake cache (walls/gl/baker.h): unchanged input does no work, damaged files are re-baked
 // one by one, changed options get a new key, and a scene change re-bakes only what it touches.
 #include "config/error.h"
+#include "scenes/loader.h"
 #include "tests/gl/gl_test_support.h"
 #include "tests/wallsgl/bake_test_scene.h"
 #include "walls/bake_cache.h"
@@ -8,7 +9,6 @@
 #include "walls/gl/baker.h"
 #include "walls/texture_pager.h"
 #include "walls/wall_setup.h"
-#include "scenes/loader.h"
 
 #include <gmock/gmock.h>
 
