@@ -3,6 +3,7 @@
 #include "config/error.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -105,13 +106,40 @@ glm::dvec2 texelCentre(const WallFrame& f, int width, int height, int i, int j) 
 
 namespace {
 
-float fetch(const DepthImage& image, const WallFrame& f, glm::dvec2 t) {
-    const double i = std::floor(t.x / f.width * image.width), j = std::floor((f.height - t.y) / f.height * image.height);
+// The depth of the texel holding texel-unit point t (x right, y down), kNoSurface outside.
+float texelDepth(const DepthImage& image, glm::dvec2 t) {
+    const double i = std::floor(t.x), j = std::floor(t.y);
     if (!(i >= 0 && j >= 0 && i < image.width && j < image.height)) return kNoSurface;
     return image.at(static_cast<int>(i), static_cast<int>(j));
 }
 
 }  // namespace
+
+bool hitsDepth(double sigma, double d, double ds) { return std::isfinite(d) && sigma >= hitSigma(d, ds); }
+
+double hitSigma(double d, double ds) { return std::isfinite(d) ? (d - 1e-5 * ds) / (ds + d) : 2.0; }
+
+TexelCrossing texelCrossing(const DepthImage& image, glm::dvec2 ta, glm::dvec2 tb, double ds, double lo, double hi,
+                            float depthHi) {
+    const glm::dvec2 dir = tb - ta;
+    const glm::dvec2 iLo = glm::floor(ta + lo * dir), iHi = glm::floor(ta + hi * dir);
+    // Where the ray crosses the texel edge between iLo and iHi on each axis (hi: no edge).
+    glm::dvec2 edge(hi);
+    for (int k = 0; k < 2; ++k)
+        if (iLo[k] != iHi[k]) edge[k] = std::clamp((std::max(iLo[k], iHi[k]) - ta[k]) / dir[k], lo, hi);
+    const int first = edge.x <= edge.y ? 0 : 1;
+    const double c0 = edge[first], c1 = edge[1 - first];
+    glm::dvec2 middle = iLo;
+    middle[first] = iHi[first];
+    const std::array<double, 4> bounds{lo, c0, c1, hi};
+    const std::array<glm::dvec2, 3> texels{iLo, middle, iHi};
+    for (int k = 0; k < 3; ++k) {
+        const float d = k == 2 ? depthHi : texelDepth(image, texels[k] + 0.5);
+        const double sigma = std::max(bounds[k], hitSigma(d, ds));
+        if (sigma <= bounds[k + 1]) return {sigma, d};
+    }
+    return {hi, depthHi};
+}
 
 DepthImage depthBlockMinimum(const DepthImage& image, int block, int dilate) {
     if (block < 1 || dilate < 0 || image.width < block || image.height < block ||
@@ -151,31 +179,43 @@ ReprojectHit reproject(const DepthImage& image, const WallFrame& f, glm::dvec3 e
     const glm::dvec2 a = w, b = glm::dvec2(sample) + ds * (w - glm::dvec2(eye)) / de;
     auto at = [&](double sigma) { return a + sigma * (b - a); };
     auto depthAt = [&](double sigma) { return ds * sigma / (1.0 - sigma); };
-    const double s0 = range.x / (ds + range.x), s1 = range.y / (ds + range.y);
-    const double pitch = std::min(f.width / image.width, f.height / image.height);
-    const int steps = std::clamp(static_cast<int>(std::ceil(glm::length(at(s1) - at(s0)) / pitch)), 1,
-                                 std::max(1, settings.maxSteps));
-    // The shader compares in float: a tolerance of 1e-5 of the distance from S keeps the first
-    // sample (s = the nearest depth) a hit on the nearest surface.
-    auto hits = [&](double sigma) {
-        const double s = depthAt(sigma);
-        return s >= double(fetch(image, f, at(sigma))) - 1e-5 * (ds + s);
+    // The march works in texel units, as the shader does.
+    auto texel = [&](glm::dvec2 m) {
+        return glm::dvec2(m.x / f.width * image.width, (f.height - m.y) / f.height * image.height);
     };
+    const glm::dvec2 ta = texel(a), tb = texel(b);
+    auto stored = [&](double sigma) { return texelDepth(image, ta + sigma * (tb - ta)); };
+    const double s0 = range.x / (ds + range.x), s1 = range.y / (ds + range.y);
+    // Steps of at most one texel per axis (the texels crossed on the longer axis).
+    const glm::dvec2 span = glm::abs(tb - ta) * (s1 - s0);
+    const int steps = std::clamp(static_cast<int>(std::ceil(std::max(span.x, span.y))), 1, std::max(1, settings.maxSteps));
     double lo = s0, hi = -1.0;
+    float depthHi = kNoSurface;
     for (int i = 0; i <= steps; ++i) {
         const double sigma = s0 + (s1 - s0) * i / steps;
-        if (hits(sigma)) {
-            hi = sigma;
+        const float d = stored(sigma);
+        if (hitsDepth(sigma, d, ds)) {
+            hi = sigma, depthHi = d;
             break;
         }
         lo = sigma;
     }
     if (hi < 0.0) return {};
-    for (int r = 0; r < settings.refine && hi > lo; ++r) {
+    // A step longer than a texel (maxSteps capped the march) is bisected first.
+    auto wide = [&] {
+        const glm::dvec2 span = glm::abs(glm::floor(ta + hi * (tb - ta)) - glm::floor(ta + lo * (tb - ta)));
+        return span.x > 1.0 || span.y > 1.0;
+    };
+    for (int r = 0; r < settings.refine && hi > lo && wide(); ++r) {
         const double mid = 0.5 * (lo + hi);
-        (hits(mid) ? hi : lo) = mid;
+        const float d = stored(mid);
+        if (hitsDepth(mid, d, ds))
+            hi = mid, depthHi = d;
+        else
+            lo = mid;
     }
-    return {true, at(hi), depthAt(hi), double(fetch(image, f, at(hi)))};
+    const TexelCrossing c = hi > lo ? texelCrossing(image, ta, tb, ds, lo, hi, depthHi) : TexelCrossing{hi, depthHi};
+    return {true, at(c.sigma), depthAt(c.sigma), double(c.depth)};
 }
 
 glm::dvec2 parallaxVector(glm::dvec3 eye, glm::dvec3 sample, glm::dvec2 t) {

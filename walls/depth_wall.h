@@ -25,8 +25,15 @@
 // linear in sigma = s / (D_S + s):  T = (1 - sigma) W + sigma (S_xy + D_S (W - E_xy) / D_E)
 // (sigma in [0, 1) for s in [0, inf)). The ray hits the stored surface at the first s with
 // s >= d(T(s)). Marching uniformly in sigma therefore moves uniformly across the texture: one
-// step per texel crossed finds every surface at least one texel wide (relief-impostor style
-// linear search), then a binary refinement places the hit within 1/2^refine of a step.
+// step per texel crossed on the ray's longer texture axis (so at most one texel per axis a
+// step) samples the ray in every texel column it crosses along that axis, relief-impostor
+// style (a texel whose corner alone the ray clips may be stepped over; the bound below holds
+// for any hit).
+// Within the last step, from the last sample that misses to the first that hits, the first
+// crossing is found exactly: depths are constant per texel and the step crosses at most one
+// texel edge per axis, so the ray meets at most three texels there, and each is hit where the
+// ray enters it or reaches its depth, whichever is later (texelCrossing). Until December 2026
+// six bisections placed the hit within 1/64 of a step of the same point, fetching six texels.
 //
 // Error bound (reprojectionErrorBound, proof in depth_wall.cpp). Where the depth field is
 // exact and continuous the reprojected image is the geometry's image up to texel sampling.
@@ -134,8 +141,31 @@ glm::dvec2 texelCentre(const WallFrame& frame, int width, int height, int i, int
 
 struct ReprojectSettings {
     int maxSteps = 64;  // linear steps at most (the pass's uniform); fewer when fewer texels are crossed
-    int refine = 6;     // binary refinement steps
+    int refine = 6;     // bisections at most before the exact crossing, while the last step
+                        // spans more than one texel on an axis (only when maxSteps capped the march)
 };
+
+// The ray's hit test at sigma (the march's, in the shader's float form): the stored depth d is
+// reached at or before sigma, with a tolerance of 1e-5 of the distance from S (so that the first
+// sample, at the nearest depth, hits the nearest surface). False for kNoSurface.
+bool hitsDepth(double sigma, double d, double samplingDistance);
+// The smallest sigma at which hitsDepth holds for depth d: (d - 1e-5 D_S) / (D_S + d); 2 (past
+// the ray's end at 1) for kNoSurface.
+double hitSigma(double d, double samplingDistance);
+
+// The first crossing of the ray with the stored depths within the march's last step [lo, hi],
+// in texel units: the ray's texture point is ta + sigma (tb - ta) (x right, y down from the
+// upper edge, as rows are stored; outside the image there is no surface). Requires consecutive
+// samples at most one texel apart per axis and hitsDepth at hi for depthHi (the depth of hi's
+// texel). Depths are constant per texel, so the ray meets at most three texels between lo and hi,
+// and in each the first point that hits is the later of where it enters and hitSigma. Returns
+// that sigma and the texel's depth (hi and depthHi when rounding finds none in [lo, hi]).
+struct TexelCrossing {
+    double sigma = 0.0;
+    float depth = kNoSurface;
+};
+TexelCrossing texelCrossing(const DepthImage& image, glm::dvec2 ta, glm::dvec2 tb, double samplingDistance, double lo,
+                            double hi, float depthHi);
 
 struct ReprojectHit {
     bool hit = false;

@@ -13,26 +13,34 @@ namespace {
 
 constexpr const char* kName = "depth walls";
 
-constexpr const char* kVertex = R"(#version 450 core
+// Per layer, the eye's ray through the pixel in the layer's texture (texel units, x right, y
+// down from the wall's upper edge, as the rows are stored): ta where it leaves the wall plane
+// (sigma 0) and tb where it would be at infinite depth (sigma 1), both affine in the wall point,
+// so the vertices' values interpolate to every pixel's exactly and the fragment shader does not
+// recompute them.
+constexpr const char* kVertex = R"(
 uniform vec3 uCorners[4];    // lowerLeft, lowerRight, upperLeft, upperRight in the eye-relative view frame
 uniform mat4 uProjection;
 uniform vec2 uSize;          // wall width, height (metres)
+uniform vec3 uEye;           // wall frame: x, y, distance in front of the plane
+uniform vec3 uSample[4];     // per layer: x, y, distance in front of the plane
 out vec2 vUv;
-out vec2 vWall;              // wall frame (metres from lowerLeft)
 const vec2 kUv[4] = vec2[4](vec2(0.0, 1.0), vec2(1.0, 1.0), vec2(0.0, 0.0), vec2(1.0, 0.0));
+vec4 ray(sampler2D depth, vec3 S, vec2 wall) {
+    vec2 size = vec2(textureSize(depth, 0));
+    vec2 perMetre = size / uSize;
+    vec2 b = S.xy + S.z * (wall - uEye.xy) / uEye.z;
+    return vec4(wall.x * perMetre.x, size.y - wall.y * perMetre.y, b.x * perMetre.x, size.y - b.y * perMetre.y);
+}
 void main() {
     vUv = kUv[gl_VertexID];
-    vWall = vec2(vUv.x, 1.0 - vUv.y) * uSize;
+    vec2 wall = vec2(vUv.x, 1.0 - vUv.y) * uSize;
     gl_Position = uProjection * vec4(uCorners[gl_VertexID], 1.0);
-}
 )";
 
 // walls::reproject in float (walls/depth_wall.cpp): keep the two in step.
 constexpr const char* kMarch = R"(
 in vec2 vUv;
-in vec2 vWall;
-uniform vec3 uEye;           // wall frame: x, y, distance in front of the plane
-uniform vec2 uSize;
 uniform vec4 uWeights;
 uniform vec3 uSample[4];     // per layer: x, y, distance in front of the plane
 uniform vec2 uRange[4];      // per layer: nearest and farthest baked depth
@@ -46,23 +54,37 @@ layout(early_fragment_tests) in;
 // stored), so a step is one mix and one floor; and it tests a hit without dividing: with
 // s = D_S sigma / (1 - sigma) and 1 - sigma > 0, s >= d - 1e-5 (D_S + s) is
 // D_S sigma (1 + 1e-5) >= (d - 1e-5 D_S)(1 - sigma). Outside the texture there is no surface.
-bool hits(sampler2D depth, ivec2 size, vec2 ta, vec2 tb, float dS, float sg) {
-    ivec2 i = ivec2(floor(mix(ta, tb, sg)));
-    if (any(lessThan(i, ivec2(0))) || any(greaterThanEqual(i, size))) return false;
-    float d = texelFetch(depth, i, 0).r;
-    return dS * sg * (1.0 + 1e-5) >= (d - 1e-5 * dS) * (1.0 - sg);
+float depthAt(sampler2D depth, ivec2 size, vec2 t) {
+    ivec2 i = ivec2(floor(t));
+    if (any(lessThan(i, ivec2(0))) || any(greaterThanEqual(i, size))) return uintBitsToFloat(0x7F800000u);
+    return texelFetch(depth, i, 0).r;
+}
+bool hits(float d, float dS, float sg) { return dS * sg * (1.0 + 1e-5) >= (d - 1e-5 * dS) * (1.0 - sg); }
+// The smallest sigma that hits depth d (walls::hitSigma); past the ray's end for no surface.
+float hitSigma(float d, float dS) { return isinf(d) ? 2.0 : (d - 1e-5 * dS) / (dS + d); }
+
+// The first crossing within the last step [lo, hi] (walls::texelCrossing): the step crosses at
+// most one texel edge per axis, so the ray meets at most three texels; in each the first point
+// that hits is the later of where it enters and hitSigma. dHi is hi's texel's depth.
+float crossing(sampler2D depth, ivec2 size, vec2 ta, vec2 tb, float dS, float lo, float hi, float dHi) {
+    vec2 iLo = floor(mix(ta, tb, lo)), iHi = floor(mix(ta, tb, hi));
+    vec2 edge = mix(vec2(hi), clamp((max(iLo, iHi) - ta) / (tb - ta), lo, hi), notEqual(iLo, iHi));
+    bool xFirst = edge.x <= edge.y;
+    float c0 = min(edge.x, edge.y), c1 = max(edge.x, edge.y);
+    vec2 middle = xFirst ? vec2(iHi.x, iLo.y) : vec2(iLo.x, iHi.y);
+    float h0 = max(lo, hitSigma(depthAt(depth, size, iLo + 0.5), dS));
+    float h1 = max(c0, hitSigma(depthAt(depth, size, middle + 0.5), dS));
+    float h2 = max(c1, hitSigma(dHi, dS));
+    return h0 <= c0 ? h0 : h1 <= c1 ? h1 : min(h2, hi);
 }
 
-// The depth s behind the wall of the first hit of the eye's ray in layer S's depth, or -1.
-float march(sampler2D depth, vec3 S, vec2 range) {
+// The depth s behind the wall of the first hit of the eye's ray (ta -> tb, texel units) in
+// layer S's depth, or -1. Steps of at most one texel per axis.
+float march(sampler2D depth, vec3 S, vec2 range, vec2 ta, vec2 tb) {
     ivec2 size = textureSize(depth, 0);
-    vec2 a = vWall;
-    vec2 b = S.xy + S.z * (vWall - uEye.xy) / uEye.z;
     float s0 = range.x / (S.z + range.x), s1 = range.y / (S.z + range.y);
-    vec2 perMetre = vec2(size) / uSize;
-    int steps = clamp(int(ceil(length(b - a) * (s1 - s0) * max(perMetre.x, perMetre.y))), 1, uMaxSteps);
-    vec2 ta = vec2(a.x * perMetre.x, float(size.y) - a.y * perMetre.y);
-    vec2 tb = vec2(b.x * perMetre.x, float(size.y) - b.y * perMetre.y);
+    vec2 span = abs(tb - ta) * (s1 - s0);
+    int steps = clamp(int(ceil(max(span.x, span.y))), 1, uMaxSteps);
     float dsg = (s1 - s0) / float(steps);
     // Empty-space skipping (the hits stay the uniform march's): level 3 holds, per 8 x 8 block,
     // the nearest depth over its 3 x 3 blocks, which bounds every texel that the next
@@ -71,54 +93,72 @@ float march(sampler2D depth, vec3 S, vec2 range) {
     // every sample of the run misses. Without the level nothing is skipped (-inf).
     bool skipLevel = textureQueryLevels(depth) > 3;
     ivec2 lastBlock = skipLevel ? textureSize(depth, 3) - ivec2(1) : ivec2(0);
-    float lo = s0, hi = -1.0;
+    float lo = s0, hi = -1.0, dHi = 0.0;
     for (int i = 0; i <= steps && hi < 0.0;) {
         int j = min(i + SKIP_STEPS, steps);
         float sj = s0 + dsg * float(j);
         ivec2 block = clamp(ivec2(floor(mix(ta, tb, s0 + dsg * float(i)) / float(SKIP_BLOCK))), ivec2(0), lastBlock);
         float m = skipLevel ? texelFetch(depth, block, 3).r : uintBitsToFloat(0xFF800000u);
-        if (S.z * sj * (1.0 + 1e-5) < (m - 1e-5 * S.z) * (1.0 - sj)) { lo = sj; i = j + 1; continue; }
+        if (!hits(m, S.z, sj)) { lo = sj; i = j + 1; continue; }
         for (; i <= j; ++i) {
             float sg = s0 + dsg * float(i);
-            if (hits(depth, size, ta, tb, S.z, sg)) { hi = sg; break; }
+            float d = depthAt(depth, size, mix(ta, tb, sg));
+            if (hits(d, S.z, sg)) { hi = sg; dHi = d; break; }
             lo = sg;
         }
     }
     if (hi < 0.0) return -1.0;
-    for (int r = 0; r < uRefine && hi > lo; ++r) {
+    // A step longer than a texel (uMaxSteps capped the march) is bisected first.
+    for (int r = 0; r < uRefine && hi > lo && any(greaterThan(abs(floor(mix(ta, tb, hi)) - floor(mix(ta, tb, lo))), vec2(1.0))); ++r) {
         float mid = 0.5 * (lo + hi);
-        if (hits(depth, size, ta, tb, S.z, mid)) hi = mid; else lo = mid;
+        float d = depthAt(depth, size, mix(ta, tb, mid));
+        if (hits(d, S.z, mid)) { hi = mid; dHi = d; } else lo = mid;
     }
+    if (hi > lo) hi = crossing(depth, size, ta, tb, S.z, lo, hi, dHi);
     return S.z * hi / (1.0 - hi);
 }
 
 // Layer S's colour where the eye's ray is at depth s behind the wall: its texture at the point
-// through which S sees the ray there (sigma = s / (D_S + s)).
-vec4 colourAt(sampler2D colour, vec3 S, float s, vec2 gx, vec2 gy) {
-    vec2 b = S.xy + S.z * (vWall - uEye.xy) / uEye.z;
-    vec2 t = mix(vWall, b, s / (S.z + s));
-    return textureGrad(colour, vec2(t.x / uSize.x, 1.0 - t.y / uSize.y), gx, gy);
+// through which S sees the ray there (sigma = s / (D_S + s)), ta -> tb in texel units of `depth`.
+vec4 colourAt(sampler2D colour, sampler2D depth, vec3 S, float s, vec2 ta, vec2 tb, vec2 gx, vec2 gy) {
+    return textureGrad(colour, mix(ta, tb, s / (S.z + s)) / vec2(textureSize(depth, 0)), gx, gy);
 }
 )";
 
-std::string fragmentSource(int layers) {
-    std::string s = "#version 450 core\n#define SKIP_BLOCK " + std::to_string(walls::kSkipBlock) +
-                    "\n#define SKIP_STEPS " + std::to_string(walls::kSkipSteps) + "\n";
+std::string samplers(int layers) {
+    std::string s;
     for (int i = 0; i < layers; ++i)
         s += "layout(binding = " + std::to_string(2 * i) + ") uniform sampler2D uColour" + std::to_string(i) +
              ";\nlayout(binding = " + std::to_string(2 * i + 1) + ") uniform sampler2D uDepth" + std::to_string(i) + ";\n";
+    return s;
+}
+
+std::string vertexSource(int layers) {
+    std::string s = "#version 450 core\n" + samplers(layers) + "out vec4 vRay[" + std::to_string(layers) + "];\n" + kVertex;
+    for (int i = 0; i < layers; ++i) {
+        const std::string n = std::to_string(i);
+        s += "    vRay[" + n + "] = ray(uDepth" + n + ", uSample[" + n + "], wall);\n";
+    }
+    return s + "}\n";
+}
+
+std::string fragmentSource(int layers) {
+    std::string s = "#version 450 core\n#define SKIP_BLOCK " + std::to_string(walls::kSkipBlock) +
+                    "\n#define SKIP_STEPS " + std::to_string(walls::kSkipSteps) + "\n" + samplers(layers) +
+                    "in vec4 vRay[" + std::to_string(layers) + "];\n";
     s += kMarch;
     // One march finds the ray's depth s (the heaviest layer's first hit; the next layer's when
     // it has none), and every layer shows its texture where the ray is at s.
     s += "void main() {\n    vec2 gx = dFdx(vUv), gy = dFdy(vUv);\n    float s = -1.0;\n";
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
-        s += "    if (s < 0.0) s = march(uDepth" + n + ", uSample[" + n + "], uRange[" + n + "]);\n";
+        s += "    if (s < 0.0) s = march(uDepth" + n + ", uSample[" + n + "], uRange[" + n + "], vRay[" + n + "].xy, vRay[" + n + "].zw);\n";
     }
     s += "    vec4 c = vec4(0.0);\n    if (s >= 0.0) c = vec4(0.0)";
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
-        s += "\n        + uWeights[" + n + "] * colourAt(uColour" + n + ", uSample[" + n + "], s, gx, gy)";
+        s += "\n        + uWeights[" + n + "] * colourAt(uColour" + n + ", uDepth" + n + ", uSample[" + n + "], s, vRay[" + n +
+             "].xy, vRay[" + n + "].zw, gx, gy)";
     }
     // Where no layer hits there is nothing behind the wall: the sum is 0 and leaves the pixel
     // as it was (premultiplied blending, no depth writes).
@@ -160,7 +200,7 @@ DepthWallPass::DepthWallPass(walls::ReprojectSettings settings) : _settings(sett
         throw Error("depth wall pass: refine: expected [0, 16], got " + std::to_string(settings.refine));
     for (int n = 1; n <= walls::kMaxWallTextures; ++n) {
         Program& p = _programs[n - 1];
-        p.program = buildProgram(kName, kVertex, fragmentSource(n));
+        p.program = buildProgram(kName, vertexSource(n), fragmentSource(n));
         const GLuint id = p.program.id();
         p.corners = uniformLocation(id, kName, "uCorners");
         p.projection = uniformLocation(id, kName, "uProjection");

@@ -7,8 +7,11 @@
 // pixel behind the plane, in the texture's own parametrisation: the ray's image in the texture
 // (seen from the sampling point) is a straight line, linear in sigma = s / (D_S + s) (s the
 // depth behind the plane), so uniform steps in sigma between the baked depth range's ends are
-// uniform steps across the texture. Steps = texels crossed, capped at maxSteps (64), then
-// `refine` (6) bisection steps; colour is sampled at the hit with the flat quad's gradients
+// uniform steps across the texture. Steps = texels crossed, capped at maxSteps (64), then the
+// exact first crossing within the last step (walls::texelCrossing: depths are constant per
+// texel and a step crosses at most one texel edge per axis, so at most three texels, two
+// fetches; `refine` (6) bisections come first only where maxSteps left a step longer than a
+// texel); colour is sampled at the hit with the flat quad's gradients
 // (the MIP level the flat wall would use, without seams at depth steps). walls::reproject is
 // the same algorithm in double and is what the unit tests check against analytic truth.
 //
@@ -28,6 +31,17 @@
 // frame time with 128-texel bakes and 1.70-1.72x with 512-texel ones, whose rays cross more
 // texels (README, "Depth walls"); with empty-space skipping (below) 1.57-1.71x, and with the
 // early depth test (below) 1.22-1.28x at 512 texels and 1.13-1.34x at 128.
+// Since 4 December 2026 (session 17) the march ends in the exact crossing (two fetches instead
+// of six bisections), counts its steps along the ray's longer texture axis (at most one texel
+// per axis a step, as before, but up to sqrt(2) fewer for diagonal rays than the Euclidean
+// length times the finer axis's texels per metre), and takes each layer's ray in texel units
+// (ta, tb) from the vertex shader, where it is affine in the wall point so interpolation gives
+// every pixel's exactly. One full-screen 512^2 layer at 1024 x 1024: 34.5 -> 30.7 ms with the
+// crossing, 30.0 ms with both (flat 4.8-5.2). In the walkthrough at 512 texels (README, "Depth
+// walls"; bench/results/scale/run18-depth-exact-crossing) depth / flat went from a median of
+// 1.38 to 1.35 with the crossing and about 1.29-1.31 with both, at the same images. Tried and
+// not kept: half-float depths (GL_R16F, half the GPU bytes; 31.4 ms a layer, no faster) and at
+// most 24 steps (no measurable gain, 0.1 dB lost).
 // Empty-space skipping: the depth texture's MIP level 3 (uploadDepthTexture) holds each 8 x 8
 // block's nearest depth over its 3 x 3 blocks; a run of walls::kSkipSteps steps whose last
 // sample misses a surface at that depth is skipped (the test grows along the ray, so the hits
