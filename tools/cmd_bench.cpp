@@ -27,7 +27,7 @@ const char* const kBenchUsage =
     "                      [--walls flat|depth] [--clusters [--cluster-budgets T1,T2,...]]\n"
     "                      [--compare-scene OTHER,...] [--on-demand] [--texture-format rgba8|bc1|bc3]\n"
     "       cavewall bench --scale 2M,8M,32M [--data DIR] [--scale-metres M] [--frames N] [--resolution N]\n"
-    "                      [--triangle-budget N|near] [--lod-max PX] [--min-zone M] [--walls flat|depth]\n"
+    "                      [--triangle-budget N|near] [--lod-max PX] [--min-zone M] [--walls flat|depth|flat,depth]\n"
     "                      [--display D] [--bake-resolution N] [--geometry-budget MB] [--lod PX] [--compare-every K]\n"
     "                      [--out DIR]\n"
     "       cavewall bench --stability\n"
@@ -117,7 +117,9 @@ const char* const kBenchUsage =
     "         --lod-max PX (default 8); its image error shows what the budget costs. --min-zone M\n"
     "         (default 1) is the walls' smallest zone: a smaller one narrows the geometry zones\n"
     "         near each wall at the cost of more textures. --walls depth: both walls modes draw\n"
-    "         depth walls (planned with their own bound, baked with depth; issue 16).\n"
+    "         depth walls (planned with their own bound, baked with depth; issue 16). --walls\n"
+    "         flat,depth: flat walls as above and a fifth mode, walls-depth, the walls mode with\n"
+    "         depth walls, drawn in turn with the others (depth / flat frame time in one run).\n"
     "\n"
     "--stability  runs the stiff and extreme numerical cases (projection at eye distances\n"
     "             1e-9 ... 1e6 m, world offsets to 1e7 m, near/far ratios to 1e9 with reversed-Z,\n"
@@ -278,7 +280,16 @@ int runScaleBench(const Args& args) {
     o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);
     o.compareEvery = static_cast<int>(args.integer("compare-every", o.compareEvery, 0, 100000));
     o.plan.minZoneSize = args.number("min-zone", o.plan.minZoneSize, 1e-3, 1e4);
-    o.wallKind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
+    // flat, depth, or both kinds in one run (walls-depth beside the flat walls).
+    const std::string kinds = args.getOr("walls", "flat");
+    if (kinds == "flat,depth") {
+        o.wallKind = walls::WallKind::Flat;
+        o.depthBeside = true;
+    } else if (kinds == "flat" || kinds == "depth") {
+        o.wallKind = kinds == "flat" ? walls::WallKind::Flat : walls::WallKind::Depth;
+    } else {
+        throw Error("--walls: expected flat, depth or flat,depth (both kinds in one run), got '" + kinds + "'");
+    }
     const std::filesystem::path out = args.getOr("out", "bench-scale-out");
     o.afterSize = [&](const bench::ScaleReport& soFar) { bench::writeScaleReport(out, soFar); };
     const bench::ScaleReport report = gl::runScaleBench(o);

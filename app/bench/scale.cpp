@@ -30,7 +30,12 @@ std::vector<const ScaleRow*> rowsOf(const ScaleReport& report, ScaleMode mode) {
 }
 
 // The modes that page geometry by cell (their paged peak is reported).
-bool pagesGeometry(ScaleMode mode) { return mode == ScaleMode::Walls || mode == ScaleMode::WallsBudget; }
+bool pagesGeometry(ScaleMode mode) {
+    return mode == ScaleMode::Walls || mode == ScaleMode::WallsBudget || mode == ScaleMode::DepthWalls;
+}
+
+// Modes a run may leave out (their slopes are not printed then).
+bool optional(ScaleMode mode) { return mode == ScaleMode::WallsBudget || mode == ScaleMode::DepthWalls; }
 
 void writeText(const std::filesystem::path& file, const std::string& text) {
     std::ofstream out(file, std::ios::binary);
@@ -46,6 +51,7 @@ std::string_view toString(ScaleMode mode) {
     case ScaleMode::Near: return "near";
     case ScaleMode::Walls: return "walls";
     case ScaleMode::WallsBudget: return "walls-budget";
+    case ScaleMode::DepthWalls: return "walls-depth";
     }
     return "?";
 }
@@ -108,7 +114,7 @@ std::string scaleMarkdown(const ScaleReport& report) {
     out += "\nSlopes (least squares of the median frame ms against millions of triangles) and growth (median at the "
            "largest size over the smallest):\n\n";
     for (ScaleMode m : kScaleModes) {
-        if (m == ScaleMode::WallsBudget && rowsOf(report, m).empty()) continue;  // not run
+        if (optional(m) && rowsOf(report, m).empty()) continue;  // not run
         const double slope = msPerMillionTriangles(report, m);
         out += "- " + std::string(toString(m)) + ": " +
                (std::isnan(slope) ? std::string("no slope (it needs two sizes or more)")
@@ -117,7 +123,7 @@ std::string scaleMarkdown(const ScaleReport& report) {
     }
     out += "\nWalls against full geometry at each size (median frame ms over median frame ms, and the walls' image "
            "error):\n\n";
-    for (ScaleMode m : {ScaleMode::Walls, ScaleMode::WallsBudget})
+    for (ScaleMode m : {ScaleMode::Walls, ScaleMode::WallsBudget, ScaleMode::DepthWalls})
         for (const ScaleRow* w : rowsOf(report, m))
             for (const ScaleRow* f : rowsOf(report, ScaleMode::Full)) {
                 if (f->targetTriangles != w->targetTriangles || !(w->frameMs.p50 > 0.0)) continue;
@@ -132,6 +138,16 @@ std::string scaleMarkdown(const ScaleReport& report) {
                        ": speed-up " + fixed(f->frameMs.p50 / w->frameMs.p50, 2) + "x, " + error + ", " +
                        std::to_string(w->texturesOverAlpha) + " textures over alpha\n";
             }
+    if (!rowsOf(report, ScaleMode::DepthWalls).empty()) {
+        out += "\nDepth walls against flat walls, drawn frame by frame in turn in this run (median frame ms over "
+               "median frame ms):\n\n";
+        for (const ScaleRow* d : rowsOf(report, ScaleMode::DepthWalls))
+            for (const ScaleRow* f : rowsOf(report, ScaleMode::Walls))
+                if (f->targetTriangles == d->targetTriangles && f->frameMs.p50 > 0.0)
+                    out += "- " + fixed(millions(d->triangles), 2) + " M triangles: depth / flat " +
+                           fixed(d->frameMs.p50 / f->frameMs.p50, 3) + " (" + fixed(d->frameMs.p50, 2) + " / " +
+                           fixed(f->frameMs.p50, 2) + " ms)\n";
+    }
     return out;
 }
 
@@ -142,7 +158,7 @@ std::vector<std::filesystem::path> writeScaleReport(const std::filesystem::path&
     writeText(files[0], scaleCsv(report));
     writeText(files[1], "# cavewall bench --scale\n\n" + scaleMarkdown(report) +
                             "\nPlots against millions of triangles (x); lines numbered 0 full, 1 near, 2 walls, "
-                            "3 walls-budget: "
+                            "3 walls-budget, 4 walls-depth (those run): "
                             "median frame ms (scale_ms.png), resident geometry MB (scale_mb.png), seconds from the "
                             "loaded scene to the first frame plus the load (scale_load.png).\n\n"
                             "![frame ms](scale_ms.png) ![resident MB](scale_mb.png) ![first frame s](scale_load.png)\n");

@@ -24,9 +24,12 @@
 
 namespace cavewall::bench {
 
-enum class ScaleMode { Full, Near, Walls, WallsBudget };
-inline constexpr ScaleMode kScaleModes[] = {ScaleMode::Full, ScaleMode::Near, ScaleMode::Walls, ScaleMode::WallsBudget};
-std::string_view toString(ScaleMode mode);  // "full" | "near" | "walls" | "walls-budget"
+// DepthWalls: depth walls drawn in the same run as flat ones (`--walls flat,depth`), so that
+// their frame-time ratio shares the machine's load of the same seconds.
+enum class ScaleMode { Full, Near, Walls, WallsBudget, DepthWalls };
+inline constexpr ScaleMode kScaleModes[] = {ScaleMode::Full, ScaleMode::Near, ScaleMode::Walls, ScaleMode::WallsBudget,
+                                            ScaleMode::DepthWalls};
+std::string_view toString(ScaleMode mode);  // "full" | "near" | "walls" | "walls-budget" | "walls-depth"
 
 struct ScaleRow {
     std::size_t targetTriangles = 0;     // the --scale entry the plant was generated for

@@ -340,6 +340,37 @@ TEST(BenchSceneCli, ScaleRunDrawsDepthWallsWithTheZonesAsked) {
     EXPECT_EQ(csv[2].number("compared_frames"), 2.0);
 }
 
+// --walls flat,depth: the flat walls as usual and walls-depth beside them, planned with the
+// depth bound and baked with depth, drawn in turn with the other modes; the report gives their
+// frame-time ratio from this run.
+TEST(BenchSceneCli, ScaleRunDrawsDepthWallsBesideFlatOnes) {
+    const test::TempFolder root("bench_cli_scale_both");
+    const fs::path out = root / "out";
+    const CliResult r = runTinyScale(root.path(), "20k", {"--walls", "flat,depth", "--triangle-budget", "0"});
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    EXPECT_THAT(r.out, HasSubstr("walls: flat walls at alpha 10 deg"));
+    EXPECT_THAT(r.out, HasSubstr("; walls-depth: the walls mode with depth walls"));
+    EXPECT_THAT(r.out, HasSubstr("; depth walls planned (zones of at least"));
+    std::size_t depthImages = 0;
+    for (const auto& e : fs::recursive_directory_iterator(root / "data" / "bake-cache"))
+        depthImages += e.path().string().ends_with(".depth.tif");
+    EXPECT_GT(depthImages, 0u);
+    const test::CsvTable csv = test::readCsv(out / "scale.csv");
+    ASSERT_EQ(csv.size(), 4u);
+    EXPECT_EQ(csv.column("mode"), (std::vector<std::string>{"full", "near", "walls", "walls-depth"}));
+    for (std::size_t m : {2u, 3u}) {
+        EXPECT_EQ(csv[m].number("textures_over_alpha"), 0.0);
+        EXPECT_EQ(csv[m].number("compared_frames"), 2.0);
+        EXPECT_GT(csv[m].number("paged_peak_mb"), 0.0);
+    }
+    // The ratio line, against the CSV's medians (printed to 3 decimals).
+    const std::string line = "M triangles: depth / flat ";
+    const std::size_t at = r.out.find(line);
+    ASSERT_NE(at, std::string::npos) << r.out;
+    const double printed = std::strtod(r.out.c_str() + at + line.size(), nullptr);
+    EXPECT_NEAR(printed, csv[3].number("frame_ms_p50") / csv[2].number("frame_ms_p50"), 0.002);
+}
+
 TEST(BenchSceneCli, BadInputIsAClearError) {
     struct Case {
         std::vector<std::string> args;
@@ -364,7 +395,8 @@ TEST(BenchSceneCli, BadInputIsAClearError) {
         {{"bench", "--scale", "2M", "--scale-metres", "0"}, "--scale-metres"},
         {{"bench", "--scale", "2M", "--lod", "0"}, "--triangle-budget: needs levels of detail (--lod PX with PX > 0)"},
         {{"bench", "--scale", "2M", "--triangle-budget", "lots"}, "--triangle-budget"},
-        {{"bench", "--scale", "2M", "--walls", "curved"}, "--walls: expected flat or depth, got 'curved'"},
+        {{"bench", "--scale", "2M", "--walls", "curved"}, "--walls: expected flat, depth or flat,depth (both kinds in one run), got 'curved'"},
+        {{"bench", "--scale", "2M", "--walls", "depth,flat"}, "--walls: expected flat, depth or flat,depth"},
         {{"bench", "--scale", "2M", "--min-zone", "0.25"},
          "bench --scale: plan options: minZoneSize: expected more than twice blendWidth (0.4 m), got 0.25 m"},
     };

@@ -71,6 +71,22 @@ TEST(BenchScale, BudgetedWallsReportTheirBudgetBesideTheirSpeedUp) {
     EXPECT_THAT(scaleCsv(r), HasSubstr(",walls,0,8.000,"));
 }
 
+// Depth walls drawn beside flat ones get their own row, slope and speed-up line, and a line of
+// their median frame time over the flat walls' at each size; a report without them has none.
+TEST(BenchScale, DepthWallsBesideFlatOnesReportTheirRatio) {
+    ScaleReport r = sample();
+    EXPECT_THAT(scaleMarkdown(r), ::testing::Not(HasSubstr("walls-depth")));
+    EXPECT_THAT(scaleMarkdown(r), ::testing::Not(HasSubstr("depth / flat")));
+    r.rows.push_back(row(2'000'000, ScaleMode::DepthWalls, 6.5));
+    r.rows.push_back(row(8'000'000, ScaleMode::DepthWalls, 10.0));
+    const std::string md = scaleMarkdown(r);
+    EXPECT_THAT(md, HasSubstr("- 2.00 M triangles: depth / flat 1.300 (6.50 / 5.00 ms)"));
+    EXPECT_THAT(md, HasSubstr("- 8.00 M triangles: depth / flat 1.250 (10.00 / 8.00 ms)"));
+    EXPECT_THAT(md, HasSubstr("- walls-depth: 0.583 ms per M triangles"));
+    EXPECT_THAT(md, HasSubstr("- 8.00 M triangles, walls-depth: speed-up 8.00x"));
+    EXPECT_THAT(scaleCsv(r), HasSubstr(",walls-depth,0,10.000,"));
+}
+
 TEST(BenchScale, SizeListTakesSuffixesAndRejectsBadEntries) {
     EXPECT_EQ(parseScaleList("2M,500k,8000000"), (std::vector<std::size_t>{2'000'000, 500'000, 8'000'000}));
     EXPECT_EQ(parseScaleList("1.5M"), std::vector<std::size_t>{1'500'000});

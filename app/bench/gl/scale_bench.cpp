@@ -26,6 +26,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -81,13 +82,13 @@ std::set<int> requestedTextures(const scenes::Scene& scene, const scenes::SceneD
 // Bakes the `ids` of `setup`'s plan only (a copy of the plan without the others, ids kept).
 BakeResult bakeSubset(const scenes::Scene& scene, const scenes::SceneDescription& d, const walls::WallSetup& setup,
                       const std::set<int>& ids, const std::filesystem::path& sceneFile, const ScaleOptions& o,
-                      Context& context) {
+                      walls::WallKind kind, Context& context) {
     walls::WallSetup subset = setup;
     std::erase_if(subset.plan.textures, [&](const walls::Texture& t) { return !ids.count(t.id); });
     BakeRequest request;
     request.scene = sceneFile;
     request.settings.maxResolution = o.bakeResolution;
-    request.settings.kind = o.wallKind;
+    request.settings.kind = kind;
     request.settings.jobs = 2;
     request.context = &context;
     request.cache = o.data / "bake-cache";
@@ -173,13 +174,14 @@ struct PreparedSize {
     scenes::Scene scene;
     bench::EyePath path;
     walls::WallSetup setup;
-    double loadSeconds = 0.0, planSeconds = 0.0;
+    std::optional<walls::WallSetup> depthSetup;  // ScaleOptions::depthBeside
+    double loadSeconds = 0.0, planSeconds = 0.0, depthPlanSeconds = 0.0;
     std::string size, line;  // "2.07 M triangles"; the report line of what was made
 };
 
 // The walls' plan options: checked before any plant is generated, used for every size.
-walls::PlanOptions scalePlanOptions(const ScaleOptions& o) {
-    walls::PlanOptions plan = walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution);
+walls::PlanOptions scalePlanOptions(const ScaleOptions& o, walls::WallKind kind) {
+    walls::PlanOptions plan = walls::planOptionsFor(o.plan, kind, o.bakeResolution);
     plan.alphaDeg = o.alphaDeg;
     return plan;
 }
@@ -197,22 +199,30 @@ std::unique_ptr<PreparedSize> prepareSize(const ScaleOptions& o, std::size_t tar
         throw Error(sceneFile.string() + ": expected a plant with virtual walls and a walk path");
     d.walkPath = bench::pathPrefix(d.walkPath, o.pathMetres);
     p->path = bench::recordEyePath(p->scene, d, o.display, o.tracker, o.frames);
-    start = Clock::now();
-    p->setup = walls::prepareWalls(p->scene, d, scalePlanOptions(o));
-    p->planSeconds = secondsSince(start);
-    const std::set<int> ids = requestedTextures(p->scene, d, display, p->setup, p->path);
-    const BakeResult baked = bakeSubset(p->scene, d, p->setup, ids, sceneFile, o, context);
-    p->setup.folder = baked.folder;
-    p->setup.manifest = baked.manifest;
+    // Plans and bakes the stretch's textures of one kind of walls; the bake's report words.
+    auto prepare = [&](walls::WallKind kind, walls::WallSetup& setup, double& planSeconds) {
+        const auto planned = Clock::now();
+        setup = walls::prepareWalls(p->scene, d, scalePlanOptions(o, kind));
+        planSeconds = secondsSince(planned);
+        const std::set<int> ids = requestedTextures(p->scene, d, display, setup, p->path);
+        const BakeResult baked = bakeSubset(p->scene, d, setup, ids, sceneFile, o, kind, context);
+        setup.folder = baked.folder;
+        setup.manifest = baked.manifest;
+        return "walls planned (zones of at least " + fixed(setup.plan.options.minZoneSize, 2) + " m) in " +
+               fixed(planSeconds, 1) + " s; baked " + std::to_string(ids.size()) + " of the plan's " +
+               std::to_string(setup.plan.textures.size()) + " textures (those the stretch requests) at most " +
+               std::to_string(o.bakeResolution) + " texels: " + std::to_string(baked.baked) + " rendered in " +
+               fixed(baked.seconds, 1) + " s, " + std::to_string(baked.reused) + " from the cache";
+    };
+    std::string made = prepare(o.wallKind, p->setup, p->planSeconds);
+    if (o.depthBeside) {
+        p->depthSetup.emplace();
+        made += "; depth " + prepare(walls::WallKind::Depth, *p->depthSetup, p->depthPlanSeconds);
+    }
     p->size = fixed(static_cast<double>(p->scene.triangleCount()) / 1e6, 2) + " M triangles";
     p->line = p->size + " (" + std::to_string(d.cells.size()) + " cells, " + std::to_string(p->scene.objects.size()) +
               " objects): generated in " + fixed(generateSeconds, 1) + " s (0: reused), loaded in " +
-              fixed(p->loadSeconds, 2) + " s, walls planned (zones of at least " + fixed(p->setup.plan.options.minZoneSize, 2) + " m) in " +
-              fixed(p->planSeconds, 1) + " s; baked " +
-              std::to_string(ids.size()) + " of the plan's " + std::to_string(p->setup.plan.textures.size()) +
-              " textures (those the stretch requests) at most " + std::to_string(o.bakeResolution) + " texels: " +
-              std::to_string(baked.baked) + " rendered in " + fixed(baked.seconds, 1) + " s, " +
-              std::to_string(baked.reused) + " from the cache";
+              fixed(p->loadSeconds, 2) + " s, " + made;
     return p;
 }
 
@@ -268,6 +278,16 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
     auto [walk, wallsFirst] = timeFirst(
         [&] { return std::make_unique<Walkthrough>(scene, d, display, context, setup, wallsOptions); },
         [&](Walkthrough& w) { w.renderFrame(path.frames.front()); });
+    // Depth walls beside the flat ones: the same options, their own plan and bake.
+    std::unique_ptr<Walkthrough> depthWalk;
+    double depthFirst = 0.0;
+    if (prepared->depthSetup) {
+        WalkthroughOptions depthOptions = wallsOptions;
+        depthOptions.wallKind = walls::WallKind::Depth;
+        std::tie(depthWalk, depthFirst) = timeFirst(
+            [&] { return std::make_unique<Walkthrough>(scene, d, display, context, *prepared->depthSetup, depthOptions); },
+            [&](Walkthrough& w) { w.renderFrame(path.frames.front()); });
+    }
     // The near limit over the whole stretch: its warm-up, and its median triangles (the budget).
     std::vector<double> nearTriangles;
     for (const walls::FrameInput& in : path.frames) nearTriangles.push_back(nearMode->draw(in).second);
@@ -288,16 +308,18 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
     // near limit's) for the others.
     const GeometryYardsticks yard = walk->geometryYardsticks(), fullYard = full->geometryYardsticks();
     say(size + ": warm-up over the stretch");
-    for (Walkthrough* w : {walk.get(), budgeted.get()}) {
+    for (Walkthrough* w : {walk.get(), budgeted.get(), depthWalk.get()}) {
         if (!w) continue;
         for (const walls::FrameInput& in : path.frames) w->renderFrame(in);
         w->waitForTextures();
     }
     for (std::size_t i = 0; i < std::min<std::size_t>(3, path.frames.size()); ++i) full->renderFrame(path.frames[i]);
     say(size + ": full, near, walls" + std::string(budgeted ? " and walls-budget (" + std::to_string(budget) +
-                                                              " triangles a frame)" : "") + " frame by frame in turn");
+                                                              " triangles a frame)" : "") +
+        (depthWalk ? " and walls-depth" : "") + " frame by frame in turn");
     const std::size_t screens = display.screens().size();
-    Accumulated a[4] = {Accumulated(screens), Accumulated(screens), Accumulated(screens), Accumulated(screens)};
+    Accumulated a[5] = {Accumulated(screens), Accumulated(screens), Accumulated(screens), Accumulated(screens),
+                        Accumulated(screens)};
     a[0].residentMB = fullYard.sharedMB;
     a[1].residentMB = nearMode->residentMB();
     long frame = 0;
@@ -312,12 +334,12 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
         if (compare)
             a[1].errors.addFrame(frame, comparedImages(display, in.head, readFrame(display, nearMode->targets), f.images,
                                                        "near"));
-        for (int m : {2, 3}) {
-            Walkthrough* walkthrough = m == 2 ? walk.get() : budgeted.get();
+        for (int m : {2, 3, 4}) {
+            Walkthrough* walkthrough = m == 2 ? walk.get() : m == 3 ? budgeted.get() : depthWalk.get();
             if (!walkthrough) continue;
             const walls::FrameResult w = walkthrough->renderFrame(in);
             a[m].ms.push_back(w.frameMs), a[m].triangles += static_cast<double>(w.stats.triangles);
-            const char* name = m == 2 ? "walls" : "walls-budget";
+            const char* name = m == 2 ? "walls" : m == 3 ? "walls-budget" : "walls-depth";
             if (compare) a[m].errors.addFrame(frame, comparedImages(display, in.head, w.images, f.images, name));
             a[m].pagedMB = std::max(a[m].pagedMB, w.geometry.residentMB);
             a[m].overAlpha = std::max(a[m].overAlpha, w.texturesOverAlpha);
@@ -327,10 +349,13 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
     }
     a[2].residentMB = yard.sharedMB + a[2].pagedMB;
     a[3].residentMB = yard.sharedMB + a[3].pagedMB;
-    const double firsts[4] = {fullFirst, nearFirst, wallsFirst + planSeconds, budgetFirst + planSeconds};
-    const bench::ScaleMode modes[4] = {bench::ScaleMode::Full, bench::ScaleMode::Near, bench::ScaleMode::Walls,
-                                       bench::ScaleMode::WallsBudget};
-    for (int m = 0; m < (budgeted ? 4 : 3); ++m) {
+    a[4].residentMB = yard.sharedMB + a[4].pagedMB;
+    const double firsts[5] = {fullFirst, nearFirst, wallsFirst + planSeconds, budgetFirst + planSeconds,
+                              depthFirst + prepared->depthPlanSeconds};
+    const bench::ScaleMode modes[5] = {bench::ScaleMode::Full, bench::ScaleMode::Near, bench::ScaleMode::Walls,
+                                       bench::ScaleMode::WallsBudget, bench::ScaleMode::DepthWalls};
+    for (int m = 0; m < 5; ++m) {
+        if ((m == 3 && !budgeted) || (m == 4 && !depthWalk)) continue;
         bench::ScaleRow r = rowOf(modes[m], a[m], base);
         if (modes[m] == bench::ScaleMode::WallsBudget) r.triangleBudget = budget;
         r.firstFrameSeconds = firsts[m];
@@ -349,11 +374,15 @@ bench::ScaleReport runScaleBench(const ScaleOptions& o) {
     if (o.sizes.empty()) throw Error("bench --scale: expected at least one size, got none");
     if (!(o.pathMetres > 0.0))
         throw Error("bench --scale: --scale-metres: expected more than 0 m, got " + config::formatNumber(o.pathMetres));
+    if (o.depthBeside && o.wallKind != walls::WallKind::Flat)
+        throw Error("bench --scale: depth walls beside the walls need flat walls (--walls flat,depth), got --walls " +
+                    std::string(walls::wallKindName(o.wallKind)));
     if (o.triangleBudget != 0 && !(o.lodPixels > 0.0))
         throw Error("bench --scale: --triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod " +
                     config::formatNumber(o.lodPixels) + " (--triangle-budget 0 leaves the walls-budget mode out)");
     try {  // before any plant is generated
-        walls::validatePlanOptions(scalePlanOptions(o));
+        walls::validatePlanOptions(scalePlanOptions(o, o.wallKind));
+        if (o.depthBeside) walls::validatePlanOptions(scalePlanOptions(o, walls::WallKind::Depth));
     } catch (const Error& e) {
         throw Error(std::string("bench --scale: ") + e.what());
     }
@@ -382,7 +411,10 @@ bench::ScaleReport runScaleBench(const ScaleOptions& o) {
                        (o.triangleBudget > 0 ? std::to_string(o.triangleBudget) + " triangles a frame"
                                              : std::string("the near limit's median triangles a frame")) +
                        " (levels of detail coarsened just enough, to at most " + config::formatNumber(o.lodMaxPixels) +
-                       " px; over budget beyond)"),
+                       " px; over budget beyond)") +
+            (o.depthBeside ? "; walls-depth: the walls mode with depth walls (their own plan and bake, each wall pixel "
+                             "reprojected to the eye)"
+                           : ""),
         o.compareEvery > 0
             ? "image error: near and walls (both kinds) against full geometry's image of the same frame, every " +
                   std::to_string(o.compareEvery) + " frames (read back after the frame is timed): PSNR on sRGB RGB "

@@ -17,7 +17,9 @@
 //           `lodMaxPixels`), by default the near limit's median triangles over the stretch
 //           (counted in its warm-up pass), so the walls draw no more geometry than the limit.
 //           Its image error is measured like the walls', so what the budget costs shows beside
-//           what it saves.
+//           what it saves;
+//  - walls-depth (depthBeside, with flat walls): the walls mode with depth walls (issue 16),
+//           their own plan and bake, drawn in turn with the others.
 //
 // Bounded baking: a cold bake of the whole 2 M plant takes about 20 minutes on this machine
 // (hours at 32 M), so only the textures the stretch's frames request (now or soon, by
@@ -48,6 +50,10 @@ struct ScaleOptions {
     double alphaDeg = 10.0;
     walls::PlanOptions plan;                // alphaDeg replaced
     walls::WallKind wallKind = walls::WallKind::Flat;  // of both walls modes (issue 16: depth)
+    // Also walls-depth (`--walls flat,depth`; wallKind flat): depth walls, planned and baked with
+    // their own bound, drawn in turn with the other modes, so depth / flat frame time is
+    // measured within one run.
+    bool depthBeside = false;
     int bakeResolution = 128;               // texels per texture side at most
     double lodPixels = 1.0;                 // the walls and near modes' tolerance
     double geometryBudgetMB = 64.0;         // the walls mode's geometry paging budget
