@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <vector>
@@ -337,6 +338,94 @@ TEST_F(DepthWallPassTest, BlendedLayersShareTheHeaviestLayersMarch) {
     }
     EXPECT_GT(cardPixels, kWidth * kHeight / 50);
     EXPECT_GT(cardKept, cardPixels * 9 / 10);
+}
+
+}  // namespace
+}  // namespace cavewall::testing
+
+namespace cavewall::testing {
+namespace {
+
+// The pass's march against its reference, walls::reproject (the shader is that algorithm in
+// float; walls/gl/depth_wall_pass.cpp): random block depths (some blocks empty), a colour
+// texture whose every texel has its own colour, sampled nearest, and three eyes, one moved
+// diagonally (rays crossing both texture axes). Every pixel must show the texel the reference
+// hits at its centre, or nothing where the reference hits nothing; where the reference's hit
+// lies within 1/100 texel of a texel edge (hits on a texel's side are exactly on one), either
+// neighbour passes. A march that stepped or refined otherwise fails (e.g. the crossing's middle
+// texel on the wrong axis).
+TEST_F(DepthWallPassTest, TheShaderMarchesAsItsReference) {
+    if (!context) GTEST_SKIP();
+    constexpr int tw = 64, th = 48, vw = 320, vh = 240;  // texels; pixels of the view (5 a texel)
+    const walls::WallFrame frame = walls::wallFrame(kQuad);
+    std::srand(17);
+    walls::DepthImage depth{tw, th, std::vector<float>(std::size_t(tw) * th)};
+    for (int by = 0; by < th; by += 4)
+        for (int bx = 0; bx < tw; bx += 4) {
+            const int r = std::rand() % 16;
+            const float d = r == 0 ? walls::kNoSurface : 1.0f + 3.0f * float(r) / 15.0f;
+            for (int j = by; j < by + 4; ++j)
+                for (int i = bx; i < bx + 4; ++i) depth.depth[std::size_t(j) * tw + i] = d;
+        }
+    const glm::dvec2 range = walls::depthRange(depth);
+    scenes::Image colour{"ids", tw, th, std::vector<std::uint8_t>(std::size_t(tw) * th * 4, 255)};
+    for (int j = 0; j < th; ++j)
+        for (int i = 0; i < tw; ++i) {
+            std::uint8_t* p = &colour.rgba[(std::size_t(j) * tw + i) * 4];
+            p[0] = static_cast<std::uint8_t>(4 * i + 2), p[1] = static_cast<std::uint8_t>(5 * j + 2), p[2] = 128;
+        }
+    const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
+    const gl::GlObject depthTexture = gl::uploadDepthTexture(depth);
+    const gl::GlObject nearest = gl::createSampler();
+    glSamplerParameteri(nearest.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(nearest.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(nearest.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(nearest.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl::OffscreenTarget target({vw, vh});
+    const gl::DepthWallPass pass;
+
+    const glm::dvec3 sample(0.0, 1.5, 3.0);
+    const glm::dvec3 eyes[] = {{0.6, 1.5, 2.5}, {-0.9, 2.4, 2.2}, {1.5, 0.4, 3.4}};
+    for (const glm::dvec3& eyeWorld : eyes) {
+        SCOPED_TRACE(::testing::Message() << "eye " << eyeWorld.x << ", " << eyeWorld.y << ", " << eyeWorld.z);
+        const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, eyeWorld, {0.05, kInf});
+        target.bindAndClear(glm::vec4(0.0f));
+        glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+        gl::DepthWallDraw d{kQuad, {}, 1};
+        d.layers[0] = {colourTexture.id(), depthTexture.id(), sample, range, 1.0f};
+        gl::FrameStats stats;
+        pass.draw({d}, frustum, glm::dmat4(1.0), nearest.id(), stats);
+        const scenes::Image got = target.read("march");
+        const glm::dvec3 eye = frame.toWall(eyeWorld), s = frame.toWall(sample);
+        int hits = 0, wrong = 0, edges = 0;
+        for (int y = 0; y < vh; ++y)
+            for (int x = 0; x < vw; ++x) {
+                const std::uint8_t* p = &got.rgba[(std::size_t(y) * vw + x) * 4];
+                const glm::dvec2 w((x + 0.5) * frame.width / vw, frame.height - (y + 0.5) * frame.height / vh);
+                const walls::ReprojectHit ref = walls::reproject(depth, frame, eye, s, w, range);
+                // The pass leaves the target's alpha as it was (blending): blue marks a hit.
+                const bool shown = p[2] > 64;
+                if (!ref.hit) {
+                    wrong += shown;
+                    continue;
+                }
+                ++hits;
+                const glm::dvec2 t(ref.texture.x / frame.width * tw, (frame.height - ref.texture.y) / frame.height * th);
+                const int gi = (int(p[0]) - 2 + 2) / 4, gj = (int(p[1]) - 2 + 2) / 5;  // nearest id
+                const bool same = shown && gi == int(std::floor(t.x)) && gj == int(std::floor(t.y));
+                if (same) continue;
+                const double fx = t.x - std::floor(t.x), fy = t.y - std::floor(t.y);
+                const bool nearEdge = std::min(fx, 1.0 - fx) < 0.01 || std::min(fy, 1.0 - fy) < 0.01;
+                const bool neighbour = shown && std::abs(gi - int(std::floor(t.x))) <= 1 &&
+                                       std::abs(gj - int(std::floor(t.y))) <= 1;
+                if (nearEdge && neighbour) ++edges;
+                else ++wrong;
+            }
+        std::printf("march against reference: %d of %d pixels hit, %d on a texel edge, %d wrong\n", hits, vw * vh, edges,
+                    wrong);
+        EXPECT_GT(hits, vw * vh / 2);
+        EXPECT_LE(wrong, vw * vh / 1000);  // float against double: a few pixels at most
+    }
 }
 
 }  // namespace
