@@ -40,7 +40,7 @@
 // crossing, 30.0 ms with both (flat 4.8-5.2). In the walkthrough at 512 texels (README, "Depth
 // walls"; bench/results/scale/run18-depth-exact-crossing) depth / flat went from a median of
 // 1.38 to 1.35 with the crossing and about 1.29-1.31 with both, at the same images; drawn in
-// turn in one run (`bench --scale --walls flat,depth`) 1.28 at 512 texels (nine runs, 1.16-1.34)
+// turn in one run (`bench --scale --walls flat,depth`) 1.27 at 512 texels (nine runs, 1.16-1.34)
 // and 1.19 at 128 (four runs, 1.14-1.26). Tried and
 // not kept: half-float depths (GL_R16F, half the GPU bytes; 31.4 ms a layer, no faster) and at
 // most 24 steps (no measurable gain, 0.1 dB lost).
