@@ -352,8 +352,10 @@ namespace {
 // diagonally (rays crossing both texture axes). Every pixel must show the texel the reference
 // hits at its centre, or nothing where the reference hits nothing; where the reference's hit
 // lies within 1/100 texel of a texel edge (hits on a texel's side are exactly on one), either
-// neighbour passes. A march that stepped or refined otherwise fails (e.g. the crossing's middle
-// texel on the wrong axis).
+// neighbour passes. Also at most 3 steps, so that steps span several texels and are bisected
+// before the crossing. A march that steps or refines otherwise fails: the crossing's middle
+// texel on the wrong axis (337-909 wrong pixels against at most 76), no crossing, or no
+// bisection of the long steps (464-5364).
 TEST_F(DepthWallPassTest, TheShaderMarchesAsItsReference) {
     if (!context) GTEST_SKIP();
     constexpr int tw = 64, th = 48, vw = 320, vh = 240;  // texels; pixels of the view (5 a texel)
@@ -382,12 +384,15 @@ TEST_F(DepthWallPassTest, TheShaderMarchesAsItsReference) {
     glSamplerParameteri(nearest.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(nearest.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     gl::OffscreenTarget target({vw, vh});
-    const gl::DepthWallPass pass;
 
     const glm::dvec3 sample(0.0, 1.5, 3.0);
     const glm::dvec3 eyes[] = {{0.6, 1.5, 2.5}, {-0.9, 2.4, 2.2}, {1.5, 0.4, 3.4}};
+    // The default settings, and at most 3 steps: longer steps, bisected before the crossing.
+    for (const walls::ReprojectSettings settings : {walls::ReprojectSettings{}, walls::ReprojectSettings{3, 6}})
     for (const glm::dvec3& eyeWorld : eyes) {
-        SCOPED_TRACE(::testing::Message() << "eye " << eyeWorld.x << ", " << eyeWorld.y << ", " << eyeWorld.z);
+        const gl::DepthWallPass pass(settings);
+        SCOPED_TRACE(::testing::Message() << "eye " << eyeWorld.x << ", " << eyeWorld.y << ", " << eyeWorld.z
+                                          << ", at most " << settings.maxSteps << " steps");
         const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, eyeWorld, {0.05, kInf});
         target.bindAndClear(glm::vec4(0.0f));
         glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -402,7 +407,7 @@ TEST_F(DepthWallPassTest, TheShaderMarchesAsItsReference) {
             for (int x = 0; x < vw; ++x) {
                 const std::uint8_t* p = &got.rgba[(std::size_t(y) * vw + x) * 4];
                 const glm::dvec2 w((x + 0.5) * frame.width / vw, frame.height - (y + 0.5) * frame.height / vh);
-                const walls::ReprojectHit ref = walls::reproject(depth, frame, eye, s, w, range);
+                const walls::ReprojectHit ref = walls::reproject(depth, frame, eye, s, w, range, settings);
                 // The pass leaves the target's alpha as it was (blending): blue marks a hit.
                 const bool shown = p[2] > 64;
                 if (!ref.hit) {
@@ -421,8 +426,8 @@ TEST_F(DepthWallPassTest, TheShaderMarchesAsItsReference) {
                 if (nearEdge && neighbour) ++edges;
                 else ++wrong;
             }
-        std::printf("march against reference: %d of %d pixels hit, %d on a texel edge, %d wrong\n", hits, vw * vh, edges,
-                    wrong);
+        std::printf("march against reference, at most %d steps: %d of %d pixels hit, %d on a texel edge, %d wrong\n",
+                    settings.maxSteps, hits, vw * vh, edges, wrong);
         EXPECT_GT(hits, vw * vh / 2);
         EXPECT_LE(wrong, vw * vh / 1000);  // float against double: a few pixels at most
     }
