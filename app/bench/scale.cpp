@@ -35,7 +35,7 @@ bool pagesGeometry(ScaleMode mode) {
 }
 
 // Modes a run may leave out (their slopes are not printed then).
-bool optional(ScaleMode mode) { return mode == ScaleMode::WallsBudget || mode == ScaleMode::DepthWalls; }
+bool mayBeLeftOut(ScaleMode mode) { return mode == ScaleMode::WallsBudget || mode == ScaleMode::DepthWalls; }
 
 void writeText(const std::filesystem::path& file, const std::string& text) {
     std::ofstream out(file, std::ios::binary);
@@ -114,7 +114,7 @@ std::string scaleMarkdown(const ScaleReport& report) {
     out += "\nSlopes (least squares of the median frame ms against millions of triangles) and growth (median at the "
            "largest size over the smallest):\n\n";
     for (ScaleMode m : kScaleModes) {
-        if (optional(m) && rowsOf(report, m).empty()) continue;  // not run
+        if (mayBeLeftOut(m) && rowsOf(report, m).empty()) continue;  // not run
         const double slope = msPerMillionTriangles(report, m);
         out += "- " + std::string(toString(m)) + ": " +
                (std::isnan(slope) ? std::string("no slope (it needs two sizes or more)")
