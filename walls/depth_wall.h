@@ -145,9 +145,10 @@ struct ReprojectSettings {
                         // spans more than one texel on an axis (only when maxSteps capped the march)
 };
 
-// The ray's hit test at sigma (the march's, in the shader's float form): the stored depth d is
-// reached at or before sigma, with a tolerance of 1e-5 of the distance from S (so that the first
-// sample, at the nearest depth, hits the nearest surface). False for kNoSurface.
+// The march's hit test at sigma: the stored depth d is reached at or before sigma, with a
+// tolerance of 1e-5 of the distance from S (so that the first sample, at the nearest depth, hits
+// the nearest surface); sigma >= hitSigma(d). The shader tests the same inequality multiplied
+// out, without the division. False for kNoSurface.
 bool hitsDepth(double sigma, double d, double samplingDistance);
 // The smallest sigma at which hitsDepth holds for depth d: (d - 1e-5 D_S) / (D_S + d); 2 (past
 // the ray's end at 1) for kNoSurface.

@@ -319,6 +319,13 @@ TEST(BenchSceneCli, ScaleRunHasFourModesPerSize) {
     EXPECT_THAT(r.out, HasSubstr("textures over alpha"));
 }
 
+// The depth images (<texture>.depth.tif) anywhere under a bake cache.
+std::size_t depthImages(const fs::path& cache) {
+    std::size_t n = 0;
+    for (const auto& e : fs::recursive_directory_iterator(cache)) n += e.path().string().ends_with(".depth.tif");
+    return n;
+}
+
 // --walls depth and --min-zone reach the scale bench's plan and bake (they were once accepted
 // and ignored there): the report names them, the bake holds depth images, and the depth walls'
 // own bound keeps every drawn texture within alpha.
@@ -329,10 +336,7 @@ TEST(BenchSceneCli, ScaleRunDrawsDepthWallsWithTheZonesAsked) {
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_THAT(r.out, HasSubstr("walls: depth walls at alpha 10 deg"));
     EXPECT_THAT(r.out, HasSubstr("walls planned (zones of at least 2.00 m)"));
-    std::size_t depthImages = 0;
-    for (const auto& e : fs::recursive_directory_iterator(root / "data" / "bake-cache"))
-        depthImages += e.path().string().ends_with(".depth.tif");
-    EXPECT_GT(depthImages, 0u);
+    EXPECT_GT(depthImages(root / "data" / "bake-cache"), 0u);
     const test::CsvTable csv = test::readCsv(out / "scale.csv");
     ASSERT_EQ(csv.size(), 3u);  // full, near, walls (no budget)
     EXPECT_EQ(csv[2].at("mode"), "walls");
@@ -351,10 +355,7 @@ TEST(BenchSceneCli, ScaleRunDrawsDepthWallsBesideFlatOnes) {
     EXPECT_THAT(r.out, HasSubstr("walls: flat walls at alpha 10 deg"));
     EXPECT_THAT(r.out, HasSubstr("; walls-depth: the walls mode with depth walls"));
     EXPECT_THAT(r.out, HasSubstr("; depth walls planned (zones of at least"));
-    std::size_t depthImages = 0;
-    for (const auto& e : fs::recursive_directory_iterator(root / "data" / "bake-cache"))
-        depthImages += e.path().string().ends_with(".depth.tif");
-    EXPECT_GT(depthImages, 0u);
+    EXPECT_GT(depthImages(root / "data" / "bake-cache"), 0u);
     const test::CsvTable csv = test::readCsv(out / "scale.csv");
     ASSERT_EQ(csv.size(), 4u);
     EXPECT_EQ(csv.column("mode"), (std::vector<std::string>{"full", "near", "walls", "walls-depth"}));
