@@ -77,14 +77,18 @@ double nearestDistance(const Polygon2& region, double y, const ScreenQuad& q) {
     return d;
 }
 
+glm::ivec2 capResolution(glm::dvec2 texels, int maxResolution) {
+    texels = glm::max(texels, glm::dvec2(1.0));
+    const double largest = std::max(texels.x, texels.y);
+    if (largest <= maxResolution) return glm::ivec2(texels);
+    return glm::max(glm::ivec2(glm::round(texels * (double(maxResolution) / largest))), glm::ivec2(1));
+}
+
 glm::ivec2 textureResolution(double nearest, const display::ScreenQuad& q, const PlanOptions& options) {
-    const double texel = texelSize(nearest, options.pixelsPerDegree);
     const display::ScreenBasis b = display::screenBasis(q);
-    auto texels = [&](double metres) {
-        if (!(texel > 1e-9)) return options.maxResolution;
-        return int(std::clamp(std::ceil(metres / texel), 1.0, double(options.maxResolution)));
-    };
-    return {texels(b.width), texels(b.height)};
+    double texel = texelSize(nearest, options.pixelsPerDegree);
+    if (!(texel > 1e-9)) texel = 1e-9;  // an eye on the plane: the cap on the longer side
+    return capResolution({std::ceil(b.width / texel), std::ceil(b.height / texel)}, options.maxResolution);
 }
 
 double texelDiagonal(const display::ScreenQuad& q, glm::ivec2 resolution) {

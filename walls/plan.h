@@ -165,8 +165,14 @@ struct Plan {
 Plan planZones(const scenes::SceneDescription& description, const PlanOptions& options = {},
                const std::vector<glm::dvec2>& depthSpans = {});
 
+// `texels` (at least one per side) scaled down, if its longer side is over maxResolution, so that
+// side is maxResolution: the aspect is kept, so texels stay as square as the wall asks for. The
+// plan and the bake (gl::bakeResolution) cap alike, so a depth plan capped at the bake's size
+// proves its bound for the texels the bake renders.
+glm::ivec2 capResolution(glm::dvec2 texels, int maxResolution);
+
 // The texels of a texture whose valid region's nearest point is `nearestDistance` metres from
-// `wall`: pixelsPerDegree at that distance (texelSize), at most maxResolution per side.
+// `wall`: pixelsPerDegree at that distance (texelSize), capped by capResolution.
 glm::ivec2 textureResolution(double nearestDistance, const display::ScreenQuad& wall, const PlanOptions& options);
 
 // The diagonal of one texel of `resolution` on `wall`, metres.

@@ -296,6 +296,39 @@ TEST(DepthPlan, SpansAreCheckedAndCarriedByTheJson) {
     EXPECT_EQ(back.textures[0].maxError, plan.textures[0].maxError);
 }
 
+// The cap keeps each texture's aspect, as the bake's does (gl::bakeResolution): a depth plan
+// capped at the bake's size proves its texel term for exactly the texels baked, and a wall
+// wider than high is not baked square (before session 18 each side was clamped alone, so the
+// depth bake of the plant held 1.42x the flat bake's texels). Flat zones do not depend on the
+// cap, so the two plans' textures correspond.
+TEST(DepthPlan, ACapKeepsEachTexturesAspect) {
+    PlanOptions o;
+    o.maxResolution = 4096;
+    const Plan full = planZones(testing::obliqueCells(), o);
+    o.maxResolution = 64;
+    const Plan capped = planZones(testing::obliqueCells(), o);
+    ASSERT_EQ(full.textures.size(), capped.textures.size());
+    int scaled = 0;
+    for (std::size_t i = 0; i < full.textures.size(); ++i) {
+        const glm::ivec2 a = full.textures[i].resolution, b = capped.textures[i].resolution;
+        SCOPED_TRACE(std::to_string(a.x) + " x " + std::to_string(a.y) + " -> " + std::to_string(b.x) + " x " + std::to_string(b.y));
+        EXPECT_EQ(b, capResolution(glm::dvec2(a), 64));
+        if (std::max(a.x, a.y) <= 64) {
+            EXPECT_EQ(b, a);
+            continue;
+        }
+        ++scaled;
+        const double scale = 64.0 / std::max(a.x, a.y);  // both sides by one factor, to the nearest texel
+        EXPECT_NEAR(b.x, a.x * scale, 0.5 + 1e-9);
+        EXPECT_NEAR(b.y, a.y * scale, 0.5 + 1e-9);
+        EXPECT_EQ(std::max(b.x, b.y), 64);
+    }
+    EXPECT_GT(scaled, 0);  // the 7 m x 3 m wall's near textures exceed 64 texels
+    EXPECT_EQ(capResolution({300, 3000}, 64), glm::ivec2(6, 64));  // 6.4 rounds to 6
+    EXPECT_EQ(capResolution({5000, 1}, 16), glm::ivec2(16, 1));   // never below one texel
+    EXPECT_EQ(capResolution({0, 0}, 16), glm::ivec2(1, 1));
+}
+
 TEST(DepthPlan, PlanOptionsForDepthWallsKeepTheBakedTexelSize) {
     PlanOptions o;
     EXPECT_EQ(planOptionsFor(o, WallKind::Depth, 512).maxResolution, 512);

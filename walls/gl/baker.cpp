@@ -47,11 +47,7 @@ void validateBakeSettings(const BakeSettings& s) {
 }
 
 glm::ivec2 bakeResolution(glm::ivec2 planned, int maxResolution) {
-    planned = glm::max(planned, glm::ivec2(1));
-    const int largest = std::max(planned.x, planned.y);
-    if (largest <= maxResolution) return planned;
-    const double scale = double(maxResolution) / largest;
-    return glm::max(glm::ivec2(glm::round(glm::dvec2(planned) * scale)), glm::ivec2(1));
+    return walls::capResolution(glm::dvec2(planned), maxResolution);
 }
 
 std::filesystem::path defaultCacheFolder() {
