@@ -1,5 +1,5 @@
 #pragma once
-// The options of `cavewall run` (and of the demo, which runs the same session three times),
+// The options of `cavewall run` (and of the demo, which runs the same session four times),
 // as plain data with typed modes. The command line parses them once (tools/cmd_run.cpp);
 // everything below it compares enums, never strings. validate() holds the rules that tie
 // several options together, so every caller of the session gets the same messages.
@@ -66,6 +66,8 @@ struct RunOptions {
     WindowMode window = WindowMode::Headless;
     Transition transition = Transition::Blend;
     bool walls = true;                          // false: --no-walls, full (culled) geometry
+    bool wallTextures = true;                   // false: the control, the walls' cells without textures
+                                                // (gl::WalkthroughOptions::wallTextures; the demo's)
     walls::PlanOptions plan;                    // alpha etc. for planning and baking
     walls::WallKind wallKind = walls::WallKind::Flat;  // --walls flat|depth (walls/depth_wall.h)
     // --texture-format: storage of baked colour (walls/texture_blocks.h; keys the bake cache)

@@ -21,16 +21,17 @@ const char* const kDemoUsage =
     "The main job: generates the default plant (into $CAVEWALL_CACHE or, without it, cache/\n"
     "beside the cavewall executable), plans and bakes its virtual walls (cached by content),\n"
     "then walks cave4 along the plant's walk path at 5 m/s (along the north aisle from N1 into\n"
-    "N3) with the simulated head tracker (sim:walk) for N frames (default 240), three times: with\n"
+    "N3) with the simulated head tracker (sim:walk) for N frames (default 240), four times: with\n"
     "the walls and levels of detail within --lod pixels (default 1; 0: full detail), with the\n"
-    "full frustum-culled geometry at the same levels of detail, and with the full geometry at\n"
-    "full detail (the reference). Each screen renders at cave4's own resolution, 1024 x 1024\n"
+    "same cells drawn as geometry and no wall textures (the control: what the textures add),\n"
+    "with the full frustum-culled geometry at the same levels of detail, and with the full\n"
+    "geometry at full detail (the reference). Each screen renders at cave4's own resolution, 1024 x 1024\n"
     "pixels (--resolution PX: PX x PX instead, printed with every figure). Every 30th frame is\n"
     "saved and compared with the reference: pooled PSNR (all compared pixels together), the\n"
     "worst frame's PSNR and LDR-FLIP (mean and p95, each screen at its own pixels per degree\n"
     "from the head). Prints the median frame times, the speed-ups beside those errors and the\n"
-    "worst wall and level-of-detail errors, and writes DIR (default demo-out): walls/, lod/\n"
-    "and geometry/ (CSV files, the saved frames), worst_frame.png (the frame with the worst\n"
+    "worst wall and level-of-detail errors, and writes DIR (default demo-out): walls/, cells/,\n"
+    "lod/ and geometry/ (CSV files, the saved frames), worst_frame.png (the frame with the worst\n"
     "FLIP image: walls | full geometry | FLIP map, each as a fold-out) and report.md.\n"
     "Headless without $DISPLAY, windowed otherwise. Walls are planned with alpha 10 degrees\n"
     "(the seeds' recommendation), zones of at least 2 m and 2 texels per degree (about 620\n"
@@ -59,10 +60,12 @@ std::filesystem::path ensurePlant(const std::filesystem::path& cache, std::size_
     return scenes::writeGenerated(plant, dir);
 }
 
-// One table row: the walls run, the levels-of-detail run (when there is one), the reference.
-template <typename A, typename B, typename C>
-void row(std::ostream& r, const char* what, const A& walls, const std::optional<B>& lod, const C& geometry) {
-    r << "| " << what << " | " << walls;
+// One table row: the walls run, the control, the levels-of-detail run (when there is one),
+// the reference.
+template <typename A, typename D, typename B, typename C>
+void row(std::ostream& r, const char* what, const A& walls, const D& control, const std::optional<B>& lod,
+         const C& geometry) {
+    r << "| " << what << " | " << walls << " | " << control;
     if (lod) r << " | " << *lod;
     r << " | " << geometry << " |\n";
 }
@@ -81,16 +84,18 @@ std::string errorText(const bench::ImageError& e) {
 }
 
 struct DemoRuns {
-    app::RunSummary walls;
+    app::RunSummary walls, control;
     std::optional<app::RunSummary> lod;
     app::RunSummary geometry;
-    DemoComparison wallsError;
+    DemoComparison wallsError, controlError;
     std::optional<DemoComparison> lodError;
 };
 
 void writeReport(const std::filesystem::path& out, const app::RunOptions& o, const DemoRuns& d) {
     const double mw = display::median(d.walls.frameMs), mg = display::median(d.geometry.frameMs);
+    const double mc = display::median(d.control.frameMs);
     const double ml = d.lod ? display::median(d.lod->frameMs) : 0.0;
+    const bench::ImageError& c = d.controlError.error;
     auto ifLod = [&](auto value) { return d.lod ? std::optional(value) : std::nullopt; };
     auto lodError = [&](auto field) { return d.lodError ? std::optional((*d.lodError).error.*field) : std::nullopt; };
     std::ofstream r(out / "report.md");
@@ -98,27 +103,31 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
       << "), guided along its walk path at " << o.guidePace << " m/s with `" << o.tracker << "`, " << o.frames
       << " frames at 1/60 s, rendered by " << d.walls.renderer << ". Image error: every " << o.saveEvery
       << "th frame against the full geometry's (" << d.wallsError.error.frames << " frames, every screen).\n\n";
-    row(r, "", d.lod ? "walls + levels of detail" : "walls", ifLod("full geometry + levels of detail"), "full geometry");
-    row(r, "---", "---", ifLod("---"), "---");
-    row(r, "median frame time (ms)", mw, ifLod(ml), mg);
-    row(r, "speed-up", mw > 0 ? mg / mw : 0.0, ifLod(ml > 0 ? mg / ml : 0.0), 1);
-    row(r, "pooled PSNR (dB)", d.wallsError.error.psnrDb, lodError(&bench::ImageError::psnrDb), "inf");
-    row(r, "worst frame PSNR (dB)", d.wallsError.error.worstFramePsnrDb,
+    row(r, "", d.lod ? "walls + levels of detail" : "walls", "control: the same cells, no textures",
+        ifLod("full geometry + levels of detail"), "full geometry");
+    row(r, "---", "---", "---", ifLod("---"), "---");
+    row(r, "median frame time (ms)", mw, mc, ifLod(ml), mg);
+    row(r, "speed-up", mw > 0 ? mg / mw : 0.0, mc > 0 ? mg / mc : 0.0, ifLod(ml > 0 ? mg / ml : 0.0), 1);
+    row(r, "pooled PSNR (dB)", d.wallsError.error.psnrDb, c.psnrDb, lodError(&bench::ImageError::psnrDb), "inf");
+    row(r, "worst frame PSNR (dB)", d.wallsError.error.worstFramePsnrDb, c.worstFramePsnrDb,
         lodError(&bench::ImageError::worstFramePsnrDb), "inf");
-    row(r, "FLIP mean", d.wallsError.error.flipMean, lodError(&bench::ImageError::flipMean), 0);
-    row(r, "FLIP p95", d.wallsError.error.flipP95, lodError(&bench::ImageError::flipP95), 0);
-    row(r, "worst wall texture error (deg)", d.walls.worstErrorDeg, ifLod("-"), "-");
-    row(r, "worst wall texture error (px)", d.walls.worstErrorPx, ifLod("-"), "-");
-    row(r, "worst level-of-detail error (px)", d.walls.worstLodErrorPx,
+    row(r, "FLIP mean", d.wallsError.error.flipMean, c.flipMean, lodError(&bench::ImageError::flipMean), 0);
+    row(r, "FLIP p95", d.wallsError.error.flipP95, c.flipP95, lodError(&bench::ImageError::flipP95), 0);
+    row(r, "worst wall texture error (deg)", d.walls.worstErrorDeg, "-", ifLod("-"), "-");
+    row(r, "worst wall texture error (px)", d.walls.worstErrorPx, "-", ifLod("-"), "-");
+    row(r, "worst level-of-detail error (px)", d.walls.worstLodErrorPx, d.control.worstLodErrorPx,
         ifLod(d.lod ? d.lod->worstLodErrorPx : 0.0), 0);
     row(r, "texture page-ins / misses", std::to_string(d.walls.pageIns) + " / " + std::to_string(d.walls.misses),
-        ifLod("-"), "-");
+        "-", ifLod("-"), "-");
+    r << "\nThe control draws, frame by frame, the cells the walls draw as geometry (the viewer's cell, "
+         "the neighbours in geometry zones and blend strips, structure) and leaves the walls empty: the "
+         "walls' image error against the control's is what the textures buy.\n";
     r << "\nWalls planned at alpha " << o.plan.alphaDeg << " deg (" << d.walls.textures << " textures)";
     if (o.lodPixels > 0) r << ", levels of detail within " << o.lodPixels << " px";
     r << ". Every texture drawn is proven within alpha at its eye, the far walls beyond a neighbour drawn as "
          "geometry included (their own beyond zones); `over_alpha` in `walls/frames.csv` counts any that is not "
          "(0 expected).\n\nPer-frame data: `walls/frames.csv`, "
-         "`walls/walls.csv`, "
+         "`walls/walls.csv`, `cells/frames.csv`, "
       << (d.lod ? "`lod/frames.csv`, " : "") << "`geometry/frames.csv`.\n\n## The worst frame\n\nFrame "
       << d.wallsError.worstFrame << " (its worst screen's FLIP mean " << d.wallsError.worstFlipMean << ", "
       << resolutionText(o.display) << "): walls | full geometry | FLIP map (black 0, pale yellow 1).\n\n![worst frame]("
@@ -159,19 +168,22 @@ int runDemo(const std::vector<std::string>& words) {
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     std::cout << "demo: cave4 at " << resolutionText(o.display) << ", walls at alpha " << o.plan.alphaDeg << " deg\n";
 
-    auto run = [&](const char* folder, bool walls, double lodPixels) {
+    auto run = [&](const char* folder, bool walls, double lodPixels, bool textures = true) {
         app::RunOptions r = o;
         r.out = out / folder;
         r.walls = walls;
+        r.wallTextures = textures;
         r.lodPixels = lodPixels;
         return gl::runSession(r);
     };
-    DemoRuns d{run("walls", true, o.lodPixels), std::nullopt, {}, {}, std::nullopt};
+    DemoRuns d{run("walls", true, o.lodPixels), run("cells", true, o.lodPixels, false), std::nullopt, {}, {}, {},
+               std::nullopt};
     if (o.lodPixels > 0.0) d.lod = run("lod", false, o.lodPixels);
     d.geometry = run("geometry", false, 0.0);
     std::cout << "demo: comparing the saved frames with the full geometry's (pooled PSNR, FLIP)\n" << std::flush;
     const display::Display display(o.display);
     d.wallsError = compareRuns(display, d.walls, d.geometry, out);
+    d.controlError = compareRuns(display, d.control, d.geometry, out / "cells");
     if (d.lod) d.lodError = compareRuns(display, *d.lod, d.geometry, out / "lod");
     writeReport(out, o, d);
     const double mw = display::median(d.walls.frameMs), mg = display::median(d.geometry.frameMs);
@@ -179,7 +191,8 @@ int runDemo(const std::vector<std::string>& words) {
               << (d.lod ? " and levels of detail" : "") << ", ";
     if (d.lod) std::cout << display::median(d.lod->frameMs) << " ms full geometry with levels of detail, ";
     std::cout << mg << " ms full geometry, speed-up " << (mw > 0 ? mg / mw : 0.0) << "x at "
-              << errorText(d.wallsError.error) << "; worst wall error " << d.walls.worstErrorDeg << " deg ("
+              << errorText(d.wallsError.error) << " (the control, the same cells without textures: "
+              << errorText(d.controlError.error) << "); worst wall error " << d.walls.worstErrorDeg << " deg ("
               << d.walls.worstErrorPx << " px), worst level-of-detail error " << d.walls.worstLodErrorPx
               << " px\nGL_RENDERER: " << d.walls.renderer << "\nworst frame: " << d.wallsError.foldout.string()
               << "\nreport: " << (out / "report.md").string() << "\n";

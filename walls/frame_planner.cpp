@@ -140,6 +140,7 @@ TextureRequests FramePlanner::requests(const FrameInput& input, const std::vecto
         for (const std::vector<WallBlend>* walls : {&s.walls, &s.beyond})
             for (const WallBlend& b : *walls)
                 for (const auto& [id, weight] : b.textures) r.soon.push_back(id);
+    if (!_drawTextures) r.now.clear(), r.soon.clear();
     if (!_requestCells) return r;
     r.cellsNow = _selection.allGeometry() ? std::vector<int>{} : _selection.geometryCells;
     auto soon = [&](int cell) {
@@ -182,7 +183,16 @@ FramePlan FramePlanner::plan(const Residency& resident, const Residency& cellRes
     setCell(_cellNeeded, p.cell, true);
     p.walls = _outOfView;
     const bool warp = _transition == Transition::Warp;
+    // The control: the selection's geometry weights, no texture.
+    auto bare = [&](const WallBlend& b, bool beyond) {
+        if (b.geometryWeight > 0.0) setCell(_cellNeeded, _walls->plan.walls[b.wall].cells[1 - b.side], true);
+        p.walls.push_back(WallState{b.wall, {}, b.geometryWeight, false, beyond});
+    };
     for (const WallBlend& selected : _seen.walls) {
+        if (!_drawTextures) {
+            bare(selected, false);
+            continue;
+        }
         const WallBlend b = warp ? binaryBlend(selected) : selected;
         WallState state = chooseWall(b, resident, p);
         if (warp) applyWarp(b, warpWall(b, state), state, p);
@@ -191,6 +201,10 @@ FramePlan FramePlanner::plan(const Residency& resident, const Residency& cellRes
     }
     // Beyond a neighbour drawn as geometry: its far walls, faded like any other (no warp).
     for (const WallBlend& selected : _seen.beyond) {
+        if (!_drawTextures) {
+            bare(selected, true);
+            continue;
+        }
         const WallBlend b = warp ? binaryBlend(selected) : selected;
         WallState state = chooseWall(b, resident, p);
         if (!state.textures.empty()) addDraw(b, state, p);

@@ -141,6 +141,11 @@ public:
     // Geometry paging by cell: requests() also fills cellsNow and cellsSoon (eight more cell
     // selections per frame). Off by default: frames without paging skip that work.
     void requestCells(bool on) { _requestCells = on; }
+    // Off: the control (WalkthroughSettings::wallTextures): requests() asks for no texture and
+    // plan() draws none; every wall keeps the selection's geometry weight, its cell behind is
+    // drawn as geometry where that weight is non-zero, and no texture's error is counted. On by
+    // default. Blend transition only (the warp draws textures).
+    void drawTextures(bool on) { _drawTextures = on; }
     // Steps 3-5 for the frame of the last requests() call, against `resident` textures and
     // `cellResident` cells (empty: every cell's geometry is resident).
     FramePlan plan(const Residency& resident, const Residency& cellResident = {});
@@ -150,6 +155,7 @@ public:
 
 private:
     bool _requestCells = false;
+    bool _drawTextures = true;
     struct Memory;
     struct WarpOutcome;
     WallState chooseWall(const WallBlend& blend, const Residency& resident, FramePlan& plan);

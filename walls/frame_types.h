@@ -56,6 +56,11 @@ struct WalkthroughSettings {
     // The most a budget may raise the tolerance to, pixels (>= render.lodPixels): beyond it a
     // frame is drawn over budget rather than with coarser shapes (FrameResult::lodOverBudget).
     double lodMaxPixels = 8.0;
+    // False: the control of the image error, "cells without textures": every frame draws the
+    // geometry cells the walls' selection draws (the viewer's cell, the neighbours in geometry
+    // zones and blend strips, structure) and no wall texture; none is requested or loaded
+    // (walls/frame_planner.h FramePlanner::drawTextures). Blend transition only.
+    bool wallTextures = true;
 };
 
 struct FrameInput {

@@ -146,6 +146,7 @@ RunSummary runSession(const RunOptions& o) {
     const double wallsSeconds = since();
     gl::WalkthroughOptions options;
     options.synchronousPaging = o.synchronousPaging;
+    options.wallTextures = o.wallTextures;
     options.textureBudgetMB = o.textureBudgetMB;
     options.geometryBudgetMB = o.geometryBudgetMB;
     options.transition = o.transition;

@@ -418,7 +418,7 @@ TEST(RunCli, DTrackSenderOverLoopbackDrivesTheHead) {
     EXPECT_EQ(rows.back().at("world_x"), rows.back().at("head_x"));
 }
 
-TEST(RunCli, DemoWritesTheReportWithAllThreeRuns) {
+TEST(RunCli, DemoWritesTheReportWithAllFourRuns) {
     const fs::path out = outputDir("demo");
     ::setenv("CAVEWALL_CACHE", (out / "cache").c_str(), 1);
     ::unsetenv("DISPLAY");
@@ -440,11 +440,28 @@ TEST(RunCli, DemoWritesTheReportWithAllThreeRuns) {
     const scenes::Image foldout = scenes::readImage(out / "walls" / "frames" / "00000" / "foldout.png");
     EXPECT_EQ(worst.width, 3 * foldout.width + 2 * 16);
     EXPECT_EQ(worst.height, foldout.height);
-    EXPECT_THAT(report, HasSubstr("| walls + levels of detail | full geometry + levels of detail | full geometry |"));
+    EXPECT_THAT(report, HasSubstr("| walls + levels of detail | control: the same cells, no textures | full geometry + "
+                                  "levels of detail | full geometry |"));
     EXPECT_THAT(report, HasSubstr("| speed-up | "));
     EXPECT_THAT(report, HasSubstr("| worst level-of-detail error (px) | "));
-    // Walls and levels of detail (default 1 px), full geometry with them, full geometry without.
-    for (const char* run : {"walls", "lod", "geometry"}) EXPECT_EQ(readCsv(out / run / "frames.csv").size(), 6u) << run;
+    EXPECT_THAT(r.out, HasSubstr("(the control, the same cells without textures: "));
+    // Walls and levels of detail (default 1 px), the control, full geometry with them, full
+    // geometry without.
+    for (const char* run : {"walls", "cells", "lod", "geometry"})
+        EXPECT_EQ(readCsv(out / run / "frames.csv").size(), 6u) << run;
+    // The control loads and draws no texture, and draws the walls' geometry cells: frame by
+    // frame the walls' triangles less their quads' (two a wall drawn, on every screen).
+    const auto wallsFrames = readCsv(out / "walls" / "frames.csv"), control = readCsv(out / "cells" / "frames.csv");
+    int same = 0;
+    for (std::size_t i = 0; i < control.size(); ++i) {
+        EXPECT_EQ(control[i].at("textures_resident"), "0");
+        EXPECT_EQ(control[i].at("page_ins"), "0");
+        EXPECT_EQ(control[i].at("over_alpha"), "0");
+        EXPECT_LE(std::stol(control[i].at("triangles")), std::stol(wallsFrames[i].at("triangles")));
+        same += wallsFrames[i].at("fallbacks") == "0" &&
+                std::stol(wallsFrames[i].at("triangles")) - std::stol(control[i].at("triangles")) < 200;
+    }
+    EXPECT_GT(same, 0);
     for (const auto& frame : readCsv(out / "geometry" / "frames.csv")) EXPECT_EQ(frame.at("lod_px"), "0.000");
     for (const auto& frame : readCsv(out / "lod" / "frames.csv")) EXPECT_EQ(frame.at("lod_px"), "1.000");
     EXPECT_TRUE(fs::exists(out / "walls" / "frames" / "00000" / "foldout.png"));

@@ -136,6 +136,38 @@ TEST_F(FramePlannerTest, ACellNotResidentKeepsTheWallTexturesUnlessNoneIsProven)
     EXPECT_EQ(forced.geometryMisses, 0);
 }
 
+// The control (drawTextures off, the demo's "cells without textures"): at every eye along the
+// hall it draws exactly the objects the walls draw with every texture resident, requests and
+// draws no texture, and reports no texture error; where the walls blend into the cell behind,
+// so does the control (the same geometry weight).
+TEST_F(FramePlannerTest, TheControlDrawsTheWallsCellsAndNoTexture) {
+    const WallSetup walls = setup(10.0);
+    FramePlanner planner(scene, description, display, &walls, Transition::Blend, 0.5);
+    FramePlanner control(scene, description, display, &walls, Transition::Blend, 0.5);
+    control.drawTextures(false);
+    int textured = 0, blended = 0;
+    for (double z = 9.5; z > 0.05; z -= 0.05) {  // finer than the 0.2 m blend strips
+        SCOPED_TRACE("eye z = " + std::to_string(z));
+        const FrameInput in = at({0.0, 1.7, z}, 10.0 - z);
+        const FramePlan w = frame(planner, in);
+        const TextureRequests r = control.requests(in, views(in));
+        EXPECT_TRUE(r.now.empty());
+        EXPECT_TRUE(r.soon.empty());
+        const FramePlan c = control.plan([](int) { return true; });
+        EXPECT_EQ(c.objects, w.objects);
+        EXPECT_EQ(c.geometryCells, w.geometryCells);
+        EXPECT_TRUE(c.wallDraws.empty());
+        EXPECT_EQ(c.maxErrorDeg, 0.0);
+        ASSERT_EQ(c.walls.size(), w.walls.size());
+        EXPECT_TRUE(row(c).textures.empty());
+        EXPECT_EQ(row(c).geometryWeight, row(w).geometryWeight);
+        textured += !w.wallDraws.empty();
+        blended += row(w).geometryWeight > 0.0 && row(w).geometryWeight < 1.0;
+    }
+    EXPECT_GT(textured, 50);  // the walls draw textures over most of the hall ...
+    EXPECT_GT(blended, 0);    // ... and blend into the cell behind somewhere
+}
+
 TEST_F(FramePlannerTest, AMissingTextureKeepsThePreviousOneWithinAlphaElseTheGeometry) {
     const WallSetup walls = setup(10.0);
     const FrameSelector selector(walls.plan, walls.table, description);

@@ -42,6 +42,9 @@ WalkthroughOptions withPaging(WalkthroughOptions options, const scenes::SceneDes
     if (paging && options.transition == walls::Transition::Warp)
         throw Error("walkthrough: geometry paging (geometry budget " + std::to_string(options.geometryBudgetMB) +
                     " MB) does not support the warp transition yet (expected transition blend, got warp)");
+    if (!options.wallTextures && options.transition == walls::Transition::Warp)
+        throw Error("walkthrough: the control without wall textures draws no warp (expected transition blend, "
+                    "got warp)");
     options.render.pagedCells = paging ? static_cast<int>(description.cells.size()) : 0;
     return options;
 }
@@ -153,6 +156,7 @@ Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescript
     _planner = std::make_unique<walls::FramePlanner>(scene, description, display, _walls ? &_walls->setup : nullptr,
                                                      _options.transition, _options.morphSeconds, _screens);
     _planner->requestCells(_walls && _walls->geometry);
+    _planner->drawTextures(_options.wallTextures);
     if (_options.clusters.enabled)
         _clusters = makeClusters(scene, _options.clusters, _renderer, context.info().renderer,
                                  _options.clusters.costResolution > 0 ? _options.clusters.costResolution
