@@ -125,16 +125,18 @@ vec4 colourAt(sampler2D colour, sampler2D depth, vec3 S, float s, vec2 ta, vec2 
 }
 )";
 
-std::string samplers(int layers) {
+// Each layer's samplers: its colour (binding 2i; the fragment stage only) and depth (2i + 1).
+std::string samplers(int layers, bool colour) {
     std::string s;
-    for (int i = 0; i < layers; ++i)
-        s += "layout(binding = " + std::to_string(2 * i) + ") uniform sampler2D uColour" + std::to_string(i) +
-             ";\nlayout(binding = " + std::to_string(2 * i + 1) + ") uniform sampler2D uDepth" + std::to_string(i) + ";\n";
+    for (int i = 0; i < layers; ++i) {
+        if (colour) s += "layout(binding = " + std::to_string(2 * i) + ") uniform sampler2D uColour" + std::to_string(i) + ";\n";
+        s += "layout(binding = " + std::to_string(2 * i + 1) + ") uniform sampler2D uDepth" + std::to_string(i) + ";\n";
+    }
     return s;
 }
 
 std::string vertexSource(int layers) {
-    std::string s = "#version 450 core\n" + samplers(layers) + "out vec4 vRay[" + std::to_string(layers) + "];\n" + kVertex;
+    std::string s = "#version 450 core\n" + samplers(layers, false) + "out vec4 vRay[" + std::to_string(layers) + "];\n" + kVertex;
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
         s += "    vRay[" + n + "] = ray(uDepth" + n + ", uSample[" + n + "], wall);\n";
@@ -144,7 +146,7 @@ std::string vertexSource(int layers) {
 
 std::string fragmentSource(int layers) {
     std::string s = "#version 450 core\n#define SKIP_BLOCK " + std::to_string(walls::kSkipBlock) +
-                    "\n#define SKIP_STEPS " + std::to_string(walls::kSkipSteps) + "\n" + samplers(layers) +
+                    "\n#define SKIP_STEPS " + std::to_string(walls::kSkipSteps) + "\n" + samplers(layers, true) +
                     "in vec4 vRay[" + std::to_string(layers) + "];\n";
     s += kMarch;
     // One march finds the ray's depth s (the heaviest layer's first hit; the next layer's when
