@@ -38,9 +38,6 @@ void validate(const RunOptions& o) {
         throw Error("--cache-budget: needs --bake-on-demand (the budget is kept while baking during the run)");
     if (o.bakeInterleave != 0 && !o.bakeOnDemand)
         throw Error("--bake-interleave: needs --bake-on-demand (it pauses the background baker)");
-    if (o.bakeOnDemand && o.wallKind == walls::WallKind::Depth)
-        throw Error("--bake-on-demand: expected --walls flat, got depth (depth walls read their depth files once, at "
-                    "the start: bake them first with `cavewall bake --walls depth`)");
     if (o.bakeOnDemand && o.synchronousPaging)
         throw Error("--bake-on-demand and --sync-paging: expected one of them, got both (synchronous paging waits "
                     "for textures a background bake may not have made yet)");

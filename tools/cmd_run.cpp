@@ -52,7 +52,7 @@ const char* const kRunUsage =
     "as geometry (frames.csv: geometry_fallbacks per frame; textures_baked running total,\n"
     "textures_baked_now, textures_to_bake). It is a flag, not the default, because frames then depend\n"
     "on how fast this machine bakes (runs are not reproducible, and baking shares the CPU with\n"
-    "drawing); flat walls only, not with --sync-paging or --cluster. --cache-budget MB keeps the\n"
+    "drawing); flat or depth walls, not with --sync-paging or --cluster. --cache-budget MB keeps the\n"
     "scene's bake folder within MB of texture files while baking on demand, deleting the least\n"
     "recently wanted files first (never one wanted now); when it is full only textures wanted now\n"
     "are baked. --bake-nice N (0-19, default 10) is the baker thread's nice value: drawing wins the\n"

@@ -52,12 +52,6 @@ TEST(RunOptions, EachRuleNamesItsFlags) {
          "--cache-budget: expected a disk budget in MB in (0, 1e9], got -1"},
         {"interleave without baking on demand", [](RunOptions& o) { o.bakeInterleave = 30; },
          "--bake-interleave: needs --bake-on-demand"},
-        {"baking depth walls on demand",
-         [](RunOptions& o) {
-             o.bakeOnDemand = true;
-             o.wallKind = walls::WallKind::Depth;
-         },
-         "--bake-on-demand: expected --walls flat, got depth"},
         {"baking on demand with synchronous paging",
          [](RunOptions& o) {
              o.bakeOnDemand = true;

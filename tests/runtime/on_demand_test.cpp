@@ -134,6 +134,73 @@ TEST_F(OnDemandTest, FirstFrameBeforeTheBakeThenBakedTexturesThenNothingToBake) 
     EXPECT_FALSE(wallAB(r)->textures.empty());
 }
 
+// Depth walls baked on demand: each texture arrives with its depth file and is drawn by the
+// depth pass, so a frame is the same image as the same frame drawn from the finished cache by
+// a walkthrough that read the manifest at its start. (Before session 18 the depth layers were
+// known only from that manifest: textures baked during the run were drawn flat.)
+TEST_F(OnDemandTest, DepthWallsBakedOnDemandAreDrawnWithTheirDepths) {
+    walls::PlanOptions plan;
+    const walls::WallSetup depth =
+        walls::prepareWalls(scene.scene, scene.description, walls::planOptionsFor(plan, walls::WallKind::Depth, 32));
+    request.settings.kind = walls::WallKind::Depth;
+    gl::WalkthroughOptions options;
+    options.wallKind = walls::WallKind::Depth;
+    auto walkthrough = [&](walls::WallSetup setup, gl::BackgroundBaker* baker) {
+        options.baker = baker;
+        return std::make_unique<gl::Walkthrough>(scene.scene, scene.description, display, *context, std::move(setup), options);
+    };
+    // The eye off every texture's sampling point, where depth and flat walls differ.
+    in.worldFromCave = cavePlacedAt(*textured + glm::dvec3(0.0, 0.0, 0.35));
+    in.readImages = true;
+    std::vector<scenes::ScreenImage> onDemand;
+    std::filesystem::path folder;
+    {
+        gl::BackgroundBaker baker(scene.scene, scene.description, depth, request);
+        walls::WallSetup setup = depth;
+        setup.folder = folder = baker.folder();
+        setup.manifest = baker.manifest();
+        auto walk = walkthrough(setup, &baker);
+        walk->renderFrame(in);
+        baker.waitIdle();
+        in.frame = 1;
+        walk->renderFrame(in);  // hands the bakes to the pager
+        walk->waitForTextures();
+        in.frame = 2;
+        const walls::FrameResult drawn = walk->renderFrame(in);
+        ASSERT_NE(wallAB(drawn), nullptr);
+        ASSERT_FALSE(wallAB(drawn)->textures.empty());
+        EXPECT_EQ(wallAB(drawn)->geometryWeight, 0.0);
+        onDemand = drawn.images;
+    }
+    const walls::BakeManifest listed = walls::readManifest(folder);
+    ASSERT_EQ(listed.textures.size(), depth.plan.textures.size());
+    for (const walls::BakedTexture& t : listed.textures) {
+        EXPECT_FALSE(t.depthFile.empty()) << t.file;
+        EXPECT_TRUE(walls::textureFileValid(folder, t)) << t.file;
+    }
+    walls::WallSetup cached = depth;
+    cached.folder = folder;
+    cached.manifest = listed;
+    options.synchronousPaging = true;
+    auto walk = walkthrough(cached, nullptr);
+    const walls::FrameResult fromCache = walk->renderFrame(in);
+    ASSERT_EQ(fromCache.images.size(), onDemand.size());
+    int differing = 0;
+    for (std::size_t i = 0; i < onDemand.size(); ++i)
+        differing += onDemand[i].pixels.rgba != fromCache.images[i].pixels.rgba;
+    EXPECT_EQ(differing, 0);
+    // ... and the flat drawing of the same textures is another image: the test can fail.
+    cached.manifest.textures.clear();
+    for (walls::BakedTexture t : listed.textures) cached.manifest.textures.push_back((t.depthFile.clear(), t));
+    options.wallKind = walls::WallKind::Flat;
+    auto flat = walkthrough(cached, nullptr);
+    const walls::FrameResult flatFrame = flat->renderFrame(in);
+    int flatDiffers = 0;
+    for (std::size_t i = 0; i < onDemand.size() && i < flatFrame.images.size(); ++i)
+        flatDiffers += onDemand[i].pixels.rgba != flatFrame.images[i].pixels.rgba;
+    EXPECT_GT(flatDiffers, 0);
+}
+
 // A disk budget of five of the largest texture files: a frame wants at most four textures of the
 // one wall now (a 2 x 2 blend) and one more is being added, so eviction always fits the folder
 // within it (walls/cache_budget.h never evicts what is wanted now); evicted textures leave the manifest with their files, and the frames keep

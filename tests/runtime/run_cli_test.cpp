@@ -134,7 +134,6 @@ TEST(RunCli, BakeOnDemandRefusesBadCombinations) {
         {{"--bake-on-demand", "--cache-budget", "lots"}, "--cache-budget"},
         {{"--cache-budget", "100"}, "--cache-budget: needs --bake-on-demand"},
         {{"--bake-on-demand", "--sync-paging"}, "--bake-on-demand and --sync-paging: expected one of them, got both"},
-        {{"--bake-on-demand", "--walls", "depth"}, "--bake-on-demand: expected --walls flat, got depth"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.message);

@@ -256,8 +256,14 @@ walls::FramePlan Walkthrough::planFrame(const walls::FrameInput& input, const st
         _options.baker->want(wanted.now, wanted.soon, glm::dvec3(input.worldFromCave * glm::dvec4(input.head.position, 1.0)));
         _bakedNow = 0;
         for (BakeEvent& e : _options.baker->take()) {
-            if (e.evicted) w.pager.removeTexture(e.texture.id);
-            else w.pager.addTexture(std::move(e.texture)), ++_bakedNow;
+            if (e.evicted) {
+                w.pager.removeTexture(e.texture.id);
+                continue;
+            }
+            // A depth wall's layer: its sampling point and baked range, as the manifest's at the start.
+            if (w.depthPass && !e.texture.depthFile.empty())
+                w.depthLayers[e.texture.id] = {e.texture.samplingPoint, e.texture.depthRange};
+            w.pager.addTexture(std::move(e.texture)), ++_bakedNow;
         }
         _bakedTotal += _bakedNow;
     }

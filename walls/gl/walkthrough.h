@@ -81,7 +81,7 @@ struct WalkthroughOptions : walls::WalkthroughSettings {
     // gl::TextureStore); a texture without a depth file is drawn flat, one whose depth file is
     // bad fails like a bad colour file (the wall keeps its last texture or draws geometry).
     walls::WallKind wallKind = walls::WallKind::Flat;
-    // Baking on demand (walls/gl/background_baker.h; flat walls, not with synchronous paging):
+    // Baking on demand (walls/gl/background_baker.h; flat or depth walls, not with synchronous paging):
     // each frame tells the baker what it wants and hands what it baked (or evicted from the
     // disk) to the texture pager. Not owned; must outlive the walkthrough. Null: none.
     BackgroundBaker* baker = nullptr;
