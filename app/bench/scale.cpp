@@ -31,11 +31,14 @@ std::vector<const ScaleRow*> rowsOf(const ScaleReport& report, ScaleMode mode) {
 
 // The modes that page geometry by cell (their paged peak is reported).
 bool pagesGeometry(ScaleMode mode) {
-    return mode == ScaleMode::Walls || mode == ScaleMode::WallsBudget || mode == ScaleMode::DepthWalls;
+    return mode == ScaleMode::Walls || mode == ScaleMode::WallsBudget || mode == ScaleMode::DepthWalls ||
+           mode == ScaleMode::Cells;
 }
 
 // Modes a run may leave out (their slopes are not printed then).
-bool mayBeLeftOut(ScaleMode mode) { return mode == ScaleMode::WallsBudget || mode == ScaleMode::DepthWalls; }
+bool mayBeLeftOut(ScaleMode mode) {
+    return mode == ScaleMode::WallsBudget || mode == ScaleMode::DepthWalls || mode == ScaleMode::Cells;
+}
 
 void writeText(const std::filesystem::path& file, const std::string& text) {
     std::ofstream out(file, std::ios::binary);
@@ -52,6 +55,7 @@ std::string_view toString(ScaleMode mode) {
     case ScaleMode::Walls: return "walls";
     case ScaleMode::WallsBudget: return "walls-budget";
     case ScaleMode::DepthWalls: return "walls-depth";
+    case ScaleMode::Cells: return "cells";
     }
     return "?";
 }
@@ -138,6 +142,23 @@ std::string scaleMarkdown(const ScaleReport& report) {
                        ": speed-up " + fixed(f->frameMs.p50 / w->frameMs.p50, 2) + "x, " + error + ", " +
                        std::to_string(w->texturesOverAlpha) + " textures over alpha\n";
             }
+    if (!rowsOf(report, ScaleMode::Cells).empty()) {
+        out += "\nAgainst the control, cells without textures (the walls' geometry cells, no texture): what the "
+               "textures buy (pooled PSNR gain, FLIP mean over the control's):\n\n";
+        for (const ScaleRow* c : rowsOf(report, ScaleMode::Cells)) {
+            if (c->comparedFrames <= 0) continue;
+            std::string line = "- " + fixed(millions(c->triangles), 2) + " M triangles: cells " + fixed(c->psnrDb, 1) +
+                               " dB (worst frame " + fixed(c->worstFramePsnrDb, 1) + " dB), FLIP mean " +
+                               fixed(c->flipMean, 4);
+            for (ScaleMode m : {ScaleMode::Walls, ScaleMode::WallsBudget, ScaleMode::DepthWalls})
+                for (const ScaleRow* w : rowsOf(report, m))
+                    if (w->targetTriangles == c->targetTriangles && w->comparedFrames > 0)
+                        line += "; " + std::string(toString(m)) + " " + (w->psnrDb >= c->psnrDb ? "+" : "") +
+                                fixed(w->psnrDb - c->psnrDb, 1) + " dB, FLIP " +
+                                (c->flipMean > 0.0 ? fixed(w->flipMean / c->flipMean, 2) + "x" : std::string("–"));
+            out += line + "\n";
+        }
+    }
     if (!rowsOf(report, ScaleMode::DepthWalls).empty()) {
         out += "\nDepth walls against flat walls, drawn frame by frame in turn in this run (median frame ms over "
                "median frame ms):\n\n";
@@ -158,7 +179,7 @@ std::vector<std::filesystem::path> writeScaleReport(const std::filesystem::path&
     writeText(files[0], scaleCsv(report));
     writeText(files[1], "# cavewall bench --scale\n\n" + scaleMarkdown(report) +
                             "\nPlots against millions of triangles (x); lines numbered 0 full, 1 near, 2 walls, "
-                            "3 walls-budget, 4 walls-depth (those run): "
+                            "3 walls-budget, 4 walls-depth, 5 cells (those run): "
                             "median frame ms (scale_ms.png), resident geometry MB (scale_mb.png), seconds from the "
                             "loaded scene to the first frame plus the load (scale_load.png).\n\n"
                             "![frame ms](scale_ms.png) ![resident MB](scale_mb.png) ![first frame s](scale_load.png)\n");

@@ -25,11 +25,14 @@
 namespace cavewall::bench {
 
 // DepthWalls: depth walls drawn in the same run as flat ones (`--walls flat,depth`), so that
-// their frame-time ratio shares the machine's load of the same seconds.
-enum class ScaleMode { Full, Near, Walls, WallsBudget, DepthWalls };
-inline constexpr ScaleMode kScaleModes[] = {ScaleMode::Full, ScaleMode::Near, ScaleMode::Walls, ScaleMode::WallsBudget,
-                                            ScaleMode::DepthWalls};
-std::string_view toString(ScaleMode mode);  // "full" | "near" | "walls" | "walls-budget" | "walls-depth"
+// their frame-time ratio shares the machine's load of the same seconds. Cells: the control,
+// cells without textures (the flat walls' geometry cells, no texture; session 18), numbered
+// last so that the plots' earlier line numbers stay.
+enum class ScaleMode { Full, Near, Walls, WallsBudget, DepthWalls, Cells };
+inline constexpr ScaleMode kScaleModes[] = {ScaleMode::Full, ScaleMode::Near, ScaleMode::Cells, ScaleMode::Walls,
+                                            ScaleMode::WallsBudget, ScaleMode::DepthWalls};
+// "full" | "near" | "cells" | "walls" | "walls-budget" | "walls-depth"
+std::string_view toString(ScaleMode mode);
 
 struct ScaleRow {
     std::size_t targetTriangles = 0;     // the --scale entry the plant was generated for

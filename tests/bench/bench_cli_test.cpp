@@ -282,21 +282,26 @@ TEST(BenchSceneCli, ScaleRunHasFourModesPerSize) {
     for (const char* file : {"scale.md", "scale_ms.png", "scale_mb.png", "scale_load.png"})
         EXPECT_TRUE(fs::exists(out / file)) << file;
     const test::CsvTable csv = test::readCsv(out / "scale.csv");
-    ASSERT_EQ(csv.size(), 8u);
-    EXPECT_EQ(csv.column("mode"), (std::vector<std::string>{"full", "near", "walls", "walls-budget", "full", "near",
-                                                            "walls", "walls-budget"}));
-    for (std::size_t size : {0u, 4u}) {
-        EXPECT_EQ(csv[size + 2].number("triangle_budget"), 0.0);
-        EXPECT_GT(csv[size + 3].number("triangle_budget"), 0.0);
-        EXPECT_LE(csv[size + 3].number("triangles_per_frame"), csv[size + 2].number("triangles_per_frame"));
+    ASSERT_EQ(csv.size(), 10u);
+    EXPECT_EQ(csv.column("mode"), (std::vector<std::string>{"full", "near", "cells", "walls", "walls-budget", "full",
+                                                            "near", "cells", "walls", "walls-budget"}));
+    for (std::size_t size : {0u, 5u}) {
+        EXPECT_EQ(csv[size + 3].number("triangle_budget"), 0.0);
+        EXPECT_GT(csv[size + 4].number("triangle_budget"), 0.0);
+        EXPECT_LE(csv[size + 4].number("triangles_per_frame"), csv[size + 3].number("triangles_per_frame"));
+        // The control draws the walls' cells without their quads, and no texture over alpha.
+        EXPECT_LT(csv[size + 2].number("triangles_per_frame"), csv[size + 3].number("triangles_per_frame"));
+        EXPECT_EQ(csv[size + 2].number("textures_over_alpha"), 0.0);
     }
-    EXPECT_THAT(r.out, HasSubstr("walls-budget (" + csv[3].at("triangle_budget") + " triangles a frame): speed-up"));
+    EXPECT_THAT(r.out, HasSubstr("walls-budget (" + csv[4].at("triangle_budget") + " triangles a frame): speed-up"));
+    EXPECT_THAT(r.out, HasSubstr("Against the control, cells without textures"));
+    EXPECT_THAT(r.out, HasSubstr(" M triangles: cells "));
     for (const test::CsvRow& row : csv) {
         SCOPED_TRACE(row.at("mode"));
         EXPECT_GT(row.number("frame_ms_p50"), 0.0);
         EXPECT_GT(row.number("first_frame_s"), 0.0);
         EXPECT_LE(row.number("resident_mb"), row.number("whole_model_mb") + 1e-9);
-        if (row.at("mode") == "walls" || row.at("mode") == "walls-budget") {
+        if (row.at("mode") == "walls" || row.at("mode") == "walls-budget" || row.at("mode") == "cells") {
             EXPECT_GT(row.number("paged_peak_mb"), 0.0);
             EXPECT_EQ(row.number("textures_over_alpha"), 0.0);
         }
@@ -313,8 +318,10 @@ TEST(BenchSceneCli, ScaleRunHasFourModesPerSize) {
         }
     }
     // The near limit leaves out every cell but the viewer's: it must lose to full geometry
-    // somewhere in the compared frames, and the walls must do better than it.
+    // somewhere in the compared frames, and the walls (and the control, which draws at least
+    // the viewer's cell) must do better than it.
     EXPECT_LT(csv[1].number("psnr_db"), 60.0);
+    EXPECT_GE(csv[3].number("psnr_db"), csv[1].number("psnr_db"));
     EXPECT_GE(csv[2].number("psnr_db"), csv[1].number("psnr_db"));
     EXPECT_THAT(r.out, HasSubstr("textures over alpha"));
 }
@@ -338,10 +345,10 @@ TEST(BenchSceneCli, ScaleRunDrawsDepthWallsWithTheZonesAsked) {
     EXPECT_THAT(r.out, HasSubstr("walls planned (zones of at least 2.00 m)"));
     EXPECT_GT(depthImages(root / "data" / "bake-cache"), 0u);
     const test::CsvTable csv = test::readCsv(out / "scale.csv");
-    ASSERT_EQ(csv.size(), 3u);  // full, near, walls (no budget)
-    EXPECT_EQ(csv[2].at("mode"), "walls");
-    EXPECT_EQ(csv[2].number("textures_over_alpha"), 0.0);
-    EXPECT_EQ(csv[2].number("compared_frames"), 2.0);
+    ASSERT_EQ(csv.size(), 4u);  // full, near, cells, walls (no budget)
+    EXPECT_EQ(csv[3].at("mode"), "walls");
+    EXPECT_EQ(csv[3].number("textures_over_alpha"), 0.0);
+    EXPECT_EQ(csv[3].number("compared_frames"), 2.0);
 }
 
 // --walls flat,depth: the flat walls as usual and walls-depth beside them, planned with the
@@ -357,9 +364,9 @@ TEST(BenchSceneCli, ScaleRunDrawsDepthWallsBesideFlatOnes) {
     EXPECT_THAT(r.out, HasSubstr("; depth walls planned (zones of at least"));
     EXPECT_GT(depthImages(root / "data" / "bake-cache"), 0u);
     const test::CsvTable csv = test::readCsv(out / "scale.csv");
-    ASSERT_EQ(csv.size(), 4u);
-    EXPECT_EQ(csv.column("mode"), (std::vector<std::string>{"full", "near", "walls", "walls-depth"}));
-    for (std::size_t m : {2u, 3u}) {
+    ASSERT_EQ(csv.size(), 5u);
+    EXPECT_EQ(csv.column("mode"), (std::vector<std::string>{"full", "near", "cells", "walls", "walls-depth"}));
+    for (std::size_t m : {3u, 4u}) {
         EXPECT_EQ(csv[m].number("textures_over_alpha"), 0.0);
         EXPECT_EQ(csv[m].number("compared_frames"), 2.0);
         EXPECT_GT(csv[m].number("paged_peak_mb"), 0.0);
@@ -369,7 +376,7 @@ TEST(BenchSceneCli, ScaleRunDrawsDepthWallsBesideFlatOnes) {
     const std::size_t at = r.out.find(line);
     ASSERT_NE(at, std::string::npos) << r.out;
     const double printed = std::strtod(r.out.c_str() + at + line.size(), nullptr);
-    EXPECT_NEAR(printed, csv[3].number("frame_ms_p50") / csv[2].number("frame_ms_p50"), 0.002);
+    EXPECT_NEAR(printed, csv[4].number("frame_ms_p50") / csv[3].number("frame_ms_p50"), 0.002);
 }
 
 TEST(BenchSceneCli, BadInputIsAClearError) {

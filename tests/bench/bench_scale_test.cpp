@@ -87,6 +87,26 @@ TEST(BenchScale, DepthWallsBesideFlatOnesReportTheirRatio) {
     EXPECT_THAT(scaleCsv(r), HasSubstr(",walls-depth,0,10.000,"));
 }
 
+// The control (cells without textures) gets its row and a line per size setting each walls
+// mode's pooled PSNR and FLIP against it; a report without it has no such line.
+TEST(BenchScale, TheControlSetsEachWallsModeAgainstIt) {
+    ScaleReport r = sample();
+    EXPECT_THAT(scaleMarkdown(r), ::testing::Not(HasSubstr("Against the control")));
+    auto compared = [](ScaleRow row, double psnr, double worst, double flip) {
+        row.comparedFrames = 5;
+        row.psnrDb = psnr, row.worstFramePsnrDb = worst, row.flipMean = flip;
+        return row;
+    };
+    r.rows = {row(2'000'000, ScaleMode::Full, 20.0), compared(row(2'000'000, ScaleMode::Cells, 4.0), 26.0, 24.5, 0.04),
+              compared(row(2'000'000, ScaleMode::Walls, 5.0), 34.5, 32.5, 0.01),
+              compared(row(2'000'000, ScaleMode::DepthWalls, 6.5), 39.2, 38.0, 0.004)};
+    const std::string md = scaleMarkdown(r);
+    EXPECT_THAT(md, HasSubstr("- 2.00 M triangles: cells 26.0 dB (worst frame 24.5 dB), FLIP mean 0.0400; walls "
+                              "+8.5 dB, FLIP 0.25x; walls-depth +13.2 dB, FLIP 0.10x"));
+    EXPECT_THAT(md, HasSubstr("| 2.00 M | 0 | cells | 4.00 |"));
+    EXPECT_THAT(scaleCsv(r), HasSubstr(",cells,0,4.000,"));
+}
+
 TEST(BenchScale, SizeListTakesSuffixesAndRejectsBadEntries) {
     EXPECT_EQ(parseScaleList("2M,500k,8000000"), (std::vector<std::size_t>{2'000'000, 500'000, 8'000'000}));
     EXPECT_EQ(parseScaleList("1.5M"), std::vector<std::size_t>{1'500'000});

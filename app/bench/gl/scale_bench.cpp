@@ -278,6 +278,12 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
     auto [walk, wallsFirst] = timeFirst(
         [&] { return std::make_unique<Walkthrough>(scene, d, display, context, setup, wallsOptions); },
         [&](Walkthrough& w) { w.renderFrame(path.frames.front()); });
+    // The control: the flat walls' geometry cells, no texture.
+    WalkthroughOptions cellsOptions = wallsOptions;
+    cellsOptions.wallTextures = false;
+    auto [cells, cellsFirst] = timeFirst(
+        [&] { return std::make_unique<Walkthrough>(scene, d, display, context, setup, cellsOptions); },
+        [&](Walkthrough& w) { w.renderFrame(path.frames.front()); });
     // Depth walls beside the flat ones: the same options, their own plan and bake.
     std::unique_ptr<Walkthrough> depthWalk;
     double depthFirst = 0.0;
@@ -308,18 +314,19 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
     // near limit's) for the others.
     const GeometryYardsticks yard = walk->geometryYardsticks(), fullYard = full->geometryYardsticks();
     say(size + ": warm-up over the stretch");
-    for (Walkthrough* w : {walk.get(), budgeted.get(), depthWalk.get()}) {
+    for (Walkthrough* w : {walk.get(), budgeted.get(), depthWalk.get(), cells.get()}) {
         if (!w) continue;
         for (const walls::FrameInput& in : path.frames) w->renderFrame(in);
         w->waitForTextures();
     }
     for (std::size_t i = 0; i < std::min<std::size_t>(3, path.frames.size()); ++i) full->renderFrame(path.frames[i]);
-    say(size + ": full, near, walls" + std::string(budgeted ? " and walls-budget (" + std::to_string(budget) +
+    say(size + ": full, near, cells, walls" + std::string(budgeted ? " and walls-budget (" + std::to_string(budget) +
                                                               " triangles a frame)" : "") +
         (depthWalk ? " and walls-depth" : "") + " frame by frame in turn");
     const std::size_t screens = display.screens().size();
-    Accumulated a[5] = {Accumulated(screens), Accumulated(screens), Accumulated(screens), Accumulated(screens),
-                        Accumulated(screens)};
+    // Indexed as the modes below: full, near, walls, walls-budget, walls-depth, cells.
+    Accumulated a[6] = {Accumulated(screens), Accumulated(screens), Accumulated(screens),
+                        Accumulated(screens), Accumulated(screens), Accumulated(screens)};
     a[0].residentMB = fullYard.sharedMB;
     a[1].residentMB = nearMode->residentMB();
     long frame = 0;
@@ -334,12 +341,14 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
         if (compare)
             a[1].errors.addFrame(frame, comparedImages(display, in.head, readFrame(display, nearMode->targets), f.images,
                                                        "near"));
-        for (int m : {2, 3, 4}) {
-            Walkthrough* walkthrough = m == 2 ? walk.get() : m == 3 ? budgeted.get() : depthWalk.get();
+        for (int m : {5, 2, 3, 4}) {
+            Walkthrough* const walkthroughs[] = {nullptr, nullptr, walk.get(), budgeted.get(), depthWalk.get(), cells.get()};
+            Walkthrough* walkthrough = walkthroughs[m];
             if (!walkthrough) continue;
             const walls::FrameResult w = walkthrough->renderFrame(in);
             a[m].ms.push_back(w.frameMs), a[m].triangles += static_cast<double>(w.stats.triangles);
-            const char* name = m == 2 ? "walls" : m == 3 ? "walls-budget" : "walls-depth";
+            const char* const names[] = {"", "", "walls", "walls-budget", "walls-depth", "cells"};
+            const char* name = names[m];
             if (compare) a[m].errors.addFrame(frame, comparedImages(display, in.head, w.images, f.images, name));
             a[m].pagedMB = std::max(a[m].pagedMB, w.geometry.residentMB);
             a[m].overAlpha = std::max(a[m].overAlpha, w.texturesOverAlpha);
@@ -350,11 +359,12 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
     a[2].residentMB = yard.sharedMB + a[2].pagedMB;
     a[3].residentMB = yard.sharedMB + a[3].pagedMB;
     a[4].residentMB = yard.sharedMB + a[4].pagedMB;
-    const double firsts[5] = {fullFirst, nearFirst, wallsFirst + planSeconds, budgetFirst + planSeconds,
-                              depthFirst + prepared->depthPlanSeconds};
-    const bench::ScaleMode modes[5] = {bench::ScaleMode::Full, bench::ScaleMode::Near, bench::ScaleMode::Walls,
-                                       bench::ScaleMode::WallsBudget, bench::ScaleMode::DepthWalls};
-    for (int m = 0; m < 5; ++m) {
+    a[5].residentMB = yard.sharedMB + a[5].pagedMB;
+    const double firsts[6] = {fullFirst, nearFirst, wallsFirst + planSeconds, budgetFirst + planSeconds,
+                              depthFirst + prepared->depthPlanSeconds, cellsFirst + planSeconds};
+    const bench::ScaleMode modes[6] = {bench::ScaleMode::Full,  bench::ScaleMode::Near,        bench::ScaleMode::Walls,
+                                       bench::ScaleMode::WallsBudget, bench::ScaleMode::DepthWalls, bench::ScaleMode::Cells};
+    for (int m : {0, 1, 5, 2, 3, 4}) {  // the rows in kScaleModes' order
         if ((m == 3 && !budgeted) || (m == 4 && !depthWalk)) continue;
         bench::ScaleRow r = rowOf(modes[m], a[m], base);
         if (modes[m] == bench::ScaleMode::WallsBudget) r.triangleBudget = budget;
@@ -403,6 +413,8 @@ bench::ScaleReport runScaleBench(const ScaleOptions& o) {
             " walls at alpha " + config::formatNumber(o.alphaDeg) + " deg, lod " + config::formatNumber(o.lodPixels) + " px, geometry paging under " +
             config::formatNumber(o.geometryBudgetMB) + " MB (mesh groups shared by cells stored once), synchronous "
             "paging (the first frame complete; textures and groups of the stretch resident after a warm-up pass); "
+            "cells: the control, the walls' geometry cells (the viewer's, the neighbours in geometry zones and "
+            "blend strips, structure) as the walls draw them, no texture; "
             "first frame: the mode's setup and first frame after loading (walls: planning too; baking not, it is "
             "cached)" +
             (o.triangleBudget == 0
@@ -416,7 +428,7 @@ bench::ScaleReport runScaleBench(const ScaleOptions& o) {
                              "reprojected to the eye)"
                            : ""),
         o.compareEvery > 0
-            ? "image error: near and walls (both kinds) against full geometry's image of the same frame, every " +
+            ? "image error: near, cells and walls (both kinds) against full geometry's image of the same frame, every " +
                   std::to_string(o.compareEvery) + " frames (read back after the frame is timed): PSNR on sRGB RGB "
                   "pooled over all compared pixels, the worst frame's, LDR-FLIP mean at each screen's fewest pixels "
                   "per degree"
