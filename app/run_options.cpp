@@ -41,6 +41,13 @@ void validate(const RunOptions& o) {
     if (o.bakeOnDemand && o.synchronousPaging)
         throw Error("--bake-on-demand and --sync-paging: expected one of them, got both (synchronous paging waits "
                     "for textures a background bake may not have made yet)");
+    if (!o.wallTextures) {
+        const char* other = !o.walls ? "--no-walls" : o.bakeOnDemand ? "--bake-on-demand" : o.clusters ? "--clusters"
+                          : o.transition == Transition::Warp ? "--transition warp" : nullptr;
+        if (other)
+            throw Error(std::string("--no-textures and ") + other + ": expected one of them, got both (the control "
+                        "draws the walls' cells as geometry and no texture, blended)");
+    }
     if (o.bakeOnDemand && o.cluster)
         throw Error("--bake-on-demand and --cluster: expected one of them, got both (cluster ranks read one "
                     "finished bake)");

@@ -13,7 +13,8 @@ namespace cavewall::tools {
 const char* const kRunUsage =
     "usage: cavewall run --scene S --tracker SPEC --frames N --out DIR [--display D]\n"
     "                    [--nav guided|fly|walk|none] [--pace M/S] [--route walk|wall] [--headless|--window]\n"
-    "                    [--transition blend|warp] [--no-walls] [--walls flat|depth] [--alpha DEG] [--min-zone M] [--ppd N]\n"
+    "                    [--transition blend|warp] [--no-walls|--no-textures] [--walls flat|depth] [--alpha DEG]\n"
+    "                    [--min-zone M] [--ppd N]\n"
     "                    [--save-frames none|every:K|all] [--record FILE] [--cache DIR]\n"
     "                    [--budget MB] [--geometry-budget MB] [--max-res N] [--sync-paging]\n"
     "                    [--bake-on-demand [--cache-budget MB] [--bake-nice N] [--bake-interleave N]]\n"
@@ -34,6 +35,8 @@ const char* const kRunUsage =
     "in `cavewall plan`) and baked into the cache (--cache, default $CAVEWALL_CACHE or\n"
     "~/.cache/cavewall) before the first frame; near cells are drawn as geometry and the rest as\n"
     "wall textures, blended by zone. --no-walls draws the full (frustum-culled) geometry instead.\n"
+    "--no-textures draws the control of the image error, cells without textures: the cells the walls\n"
+    "draw as geometry, and nothing on the walls (nothing is baked or loaded; blend transition).\n"
     "--max-res: largest baked texture side (default 1024, as `cavewall bake`; the bench and demo\n"
     "bake at 512: --max-res 512 reuses their cache). --budget: GPU MB for wall textures (default 256); --sync-paging waits for textures instead of\n"
     "falling back (reproducible frames). --geometry-budget MB pages the model's geometry by cell\n"
@@ -157,9 +160,10 @@ std::string clustersLine(const app::RunSummary& s) {
 }  // namespace
 
 int runRun(const std::vector<std::string>& words) {
-    const Args args(words, {"headless", "window", "no-walls", "sync-paging", "cluster", "clusters", "bake-on-demand"});
+    const Args args(words, {"headless", "window", "no-walls", "no-textures", "sync-paging", "cluster", "clusters",
+                            "bake-on-demand"});
     args.expectFlags({"scene", "display", "tracker", "frames", "nav", "pace", "route", "headless", "window", "transition",
-                      "no-walls", "alpha", "min-zone", "ppd", "save-frames", "record", "cache", "budget", "geometry-budget", "max-res",
+                      "no-walls", "no-textures", "alpha", "min-zone", "ppd", "save-frames", "record", "cache", "budget", "geometry-budget", "max-res",
                       "sync-paging", "out", "cluster", "cluster-timeout", "lod", "triangle-budget", "frame-budget-ms", "lod-max",
                       "walls", "clusters", "cluster-divisions", "cluster-res", "cluster-fade", "bake-on-demand",
                       "cache-budget", "bake-interleave", "bake-nice", "texture-format"});
@@ -177,6 +181,7 @@ int runRun(const std::vector<std::string>& words) {
     o.window = args.has("window") ? app::WindowMode::Window : app::WindowMode::Headless;
     o.transition = args.choice("transition", app::kTransitionNames, app::Transition::Blend);
     o.walls = !args.has("no-walls");
+    o.wallTextures = !args.has("no-textures");
     o.wallKind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.plan.alphaDeg = args.number("alpha", o.plan.alphaDeg, 1e-3, 90.0);
@@ -207,7 +212,8 @@ int runRun(const std::vector<std::string>& words) {
     o.clusterTimeout = args.number("cluster-timeout", o.clusterTimeout, 0.1, 3600.0);
     const app::RunSummary s = gl::runSession(o);
     if (s.rank != 0) return 0;
-    std::cout << "run: " << s.frameMs.size() << " frames on " << s.renderer << (s.walls ? ", walls" : ", geometry only")
+    std::cout << "run: " << s.frameMs.size() << " frames on " << s.renderer
+              << (!s.walls ? ", geometry only" : o.wallTextures ? ", walls" : ", the control (the walls' cells, no textures)")
               << "; median frame " << display::median(s.frameMs) << " ms; worst error " << s.worstErrorDeg << " deg ("
               << s.worstErrorPx << " px); page-ins " << s.pageIns << ", misses " << s.misses << "\n"
               << "run: first frame after " << seconds(s.firstFrameSeconds) << " s (scene loaded at "

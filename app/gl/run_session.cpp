@@ -140,7 +140,9 @@ RunSummary runSession(const RunOptions& o) {
     std::optional<walls::WallSetup> setup;
     std::unique_ptr<gl::BackgroundBaker> baker;  // --bake-on-demand; outlives the walkthrough
     const bool wallsDrawn = o.walls && !o.clusters && !description.walls.empty();
-    if (wallsDrawn && o.bakeOnDemand) setup = prepareWallsOnDemand(o, scene, description, baker);
+    if (wallsDrawn && !o.wallTextures)  // the control draws no texture: the plan alone, nothing baked
+        setup = walls::prepareWalls(scene, description, walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution));
+    else if (wallsDrawn && o.bakeOnDemand) setup = prepareWallsOnDemand(o, scene, description, baker);
     else if (wallsDrawn) setup = prepareWallsOnce(o, scene, description, *context, cluster.get());
     const int textureCount = setup ? static_cast<int>(setup->plan.textures.size()) : 0;
     const double wallsSeconds = since();

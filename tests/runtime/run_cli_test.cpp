@@ -145,6 +145,42 @@ TEST(RunCli, BakeOnDemandRefusesBadCombinations) {
     }
 }
 
+// --no-textures, the control: the walls' geometry cells frame by frame, nothing baked, loaded or
+// drawn on the walls; the same frames as the walls' less their quads. Combinations that would
+// draw textures or no walls are refused.
+TEST(RunCli, NoTexturesDrawsTheWallsCellsAndNothingOnTheWalls) {
+    const fs::path walls = outputDir("control-walls"), control = outputDir("control"), cache = outputDir("control-cache");
+    std::vector<std::string> args = wallRun(walls, "sim:walk?seed=2", 12);
+    args.push_back("--sync-paging");
+    ASSERT_EQ(runCavewall(args).exitCode, 0);
+    args = wallRun(control, "sim:walk?seed=2", 12);
+    args[std::find(args.begin(), args.end(), "--cache") - args.begin() + 1] = cache.string();  // empty: nothing baked
+    args.push_back("--no-textures");
+    const CliResult r = runCavewall(args);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("the control (the walls' cells, no textures)"));
+    EXPECT_FALSE(fs::exists(cache) && !fs::is_empty(cache));
+    const auto w = readCsv(walls / "frames.csv"), c = readCsv(control / "frames.csv");
+    ASSERT_EQ(c.size(), 12u);
+    ASSERT_EQ(w.size(), 12u);
+    for (std::size_t i = 0; i < c.size(); ++i) {
+        SCOPED_TRACE(c[i].at("frame"));
+        EXPECT_EQ(c[i].at("cell"), w[i].at("cell"));
+        EXPECT_EQ(c[i].at("textures_resident"), "0");
+        EXPECT_EQ(c[i].at("max_err_deg"), "0.0000");
+        const long quads = std::stol(w[i].at("triangles")) - std::stol(c[i].at("triangles"));
+        EXPECT_GE(quads, 0);
+        EXPECT_LT(quads, 200);  // two triangles a wall drawn, a view
+    }
+    for (const char* other : {"--no-walls", "--bake-on-demand", "--clusters"}) {
+        std::vector<std::string> bad = wallRun(control, "sim:walk?seed=2", 2);
+        bad.insert(bad.end(), {"--no-textures", other});
+        const CliResult refused = runCavewall(bad);
+        EXPECT_NE(refused.exitCode, 0);
+        EXPECT_THAT(refused.err, HasSubstr(std::string("--no-textures and ") + other + ": expected one of them"));
+    }
+}
+
 TEST(RunCli, WritesFramesWallsAndImagesOnTheSmallPlant) {
     const fs::path out = outputDir("end-to-end");
     std::vector<std::string> args = wallRun(out, "sim:walk?seed=2", 40);
