@@ -119,7 +119,7 @@ struct Fixture {
     gl::GlObject bakedBc1 = gl::uploadWallTexture(walls::encodeLevels(mipChain(512), walls::TextureFormat::Bc1));
     gl::GlObject bakedBc3 = gl::uploadWallTexture(walls::encodeLevels(mipChain(512), walls::TextureFormat::Bc3));
     gl::GlObject nearestMip = gl::createSampler(), linearMip = gl::createSampler(), bilinear = gl::createSampler();
-    gl::GlObject depthBlocks = gl::uploadDepthTexture(blockDepth(512));
+    gl::DepthTexture depthBlocks = gl::uploadDepthTexture(blockDepth(512));
     gl::DepthWallPass depthPass, depthPass16{walls::ReprojectSettings{16, 6}};
     display::OffAxisFrustum frustum;
     display::ScreenQuad wall;
@@ -167,8 +167,8 @@ double frameMs(Fixture& f, int layers, GLuint texture, GLuint sampler, int textu
         for (int i = 0; i < layers; ++i) {
             gl::DepthWallDraw d{f.wall, {}, texturesPerLayer};
             for (int t = 0; t < texturesPerLayer; ++t)
-                d.layers[t] = {texture, f.depthBlocks.id(), glm::dvec3(0.3, 0.1, 0.2 * (t + 1)), glm::dvec2(1.0, 4.0),
-                               1.0f / texturesPerLayer};
+                d.layers[t] = {texture, f.depthBlocks.depth.id(), glm::dvec3(0.3, 0.1, 0.2 * (t + 1)), glm::dvec2(1.0, 4.0),
+                               1.0f / texturesPerLayer, f.depthBlocks.skip.id()};
             draws.push_back(d);
         }
         gl::FrameStats stats;

@@ -79,10 +79,9 @@ DepthTextureData depthTextureData(DepthImage image) {
 }
 
 std::size_t depthTextureBytes(int width, int height) {
-    const int levels = width >= kSkipBlock && height >= kSkipBlock ? 4 : 1;
-    std::size_t bytes = 0;
-    for (int l = 0; l < levels; ++l)
-        bytes += std::size_t(std::max(1, width >> l)) * std::size_t(std::max(1, height >> l)) * 4;
+    std::size_t bytes = std::size_t(std::max(0, width)) * std::size_t(std::max(0, height)) * 4;
+    if (width >= kSkipBlock && height >= kSkipBlock)
+        bytes += std::size_t(width / kSkipBlock) * std::size_t(height / kSkipBlock) * 4;  // the skip blocks
     return bytes;
 }
 

@@ -112,8 +112,8 @@ void clampDepths(DepthImage& image, glm::dvec2 range);
 // the value: no sample of such a stretch of the ray can hit a surface nearer than that.
 // Throws cavewall::Error unless block >= 1, dilate >= 0 and the image holds a whole block.
 DepthImage depthBlockMinimum(const DepthImage& image, int block, int dilate);
-// The march's block (texels a side; the depth texture's MIP level 3 holds depthBlockMinimum
-// with dilate 1, gl::uploadDepthTexture) and the most steps one skip test covers (each step
+// The march's block (texels a side; gl::DepthTexture::skip holds depthBlockMinimum with
+// dilate 1, gl::uploadDepthTexture) and the most steps one skip test covers (each step
 // crosses at most one texel per axis, so kSkipSteps steps stay within the 3 x 3 blocks).
 inline constexpr int kSkipBlock = 8;
 inline constexpr int kSkipSteps = kSkipBlock - 1;
@@ -127,8 +127,8 @@ struct DepthTextureData {
 };
 // Throws cavewall::Error unless the image holds width x height depths.
 DepthTextureData depthTextureData(DepthImage image);
-// GPU bytes of a width x height depth texture's GL_R32F storage: level 0, and levels 1-3 when
-// it has a whole skip block (level 3 holds the block minima, 1-2 are allocated unread).
+// GPU bytes of a width x height depth texture's GL_R32F storage: the depths, and the block
+// minima (width / kSkipBlock x height / kSkipBlock) when it has a whole skip block.
 std::size_t depthTextureBytes(int width, int height);
 
 // Converts a reversed-Z depth-buffer value of a frustum whose screen is the wall (clipFromView

@@ -105,7 +105,7 @@ TEST_F(DepthWallPassTest, MatchesGeometryFromAnotherEyeExceptWhereTheBoundPredic
 
     // The depth wall and the flat wall from the same eye.
     const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
-    const gl::GlObject depthTexture = gl::uploadDepthTexture(depth);
+    const gl::DepthTexture depthTexture = gl::uploadDepthTexture(depth);
     auto drawWith = [&](auto&& draw) {
         target.bindAndClear(glm::vec4(0.0f));
         glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -116,7 +116,7 @@ TEST_F(DepthWallPassTest, MatchesGeometryFromAnotherEyeExceptWhereTheBoundPredic
     };
     const gl::DepthWallPass depthPass;
     gl::DepthWallDraw d{kQuad, {}, 1};
-    d.layers[0] = {colourTexture.id(), depthTexture.id(), kSample, range, 1.0f};
+    d.layers[0] = {colourTexture.id(), depthTexture.depth.id(), kSample, range, 1.0f, depthTexture.skip.id()};
     const scenes::Image depthWall = drawWith([&](gl::FrameStats& s) { depthPass.draw({d}, frustum, glm::dmat4(1.0), 0, s); });
     const gl::WallPass flatPass;
     const scenes::Image flatWall = drawWith([&](gl::FrameStats& s) {
@@ -224,10 +224,11 @@ TEST_F(DepthWallPassTest, GeometryInFrontOfTheWallHidesIt) {
         colour = baker.render(kQuad, kSample, {kWidth, kHeight}, behind, depth);
     }
     const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
-    const gl::GlObject depthTexture = gl::uploadDepthTexture(depth);
+    const gl::DepthTexture depthTexture = gl::uploadDepthTexture(depth);
     const gl::DepthWallPass pass;
     gl::DepthWallDraw d{kQuad, {}, 1};
-    d.layers[0] = {colourTexture.id(), depthTexture.id(), kSample, walls::depthRange(depth), 1.0f};
+    d.layers[0] = {colourTexture.id(), depthTexture.depth.id(), kSample, walls::depthRange(depth), 1.0f,
+                   depthTexture.skip.id()};
 
     const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, kEye, {0.05, kInf});
     gl::OffscreenTarget target({kWidth, kHeight});
@@ -289,12 +290,16 @@ TEST_F(DepthWallPassTest, BlendedLayersShareTheHeaviestLayersMarch) {
     scenes::Image emptyColour = colour;
     std::fill(emptyColour.rgba.begin(), emptyColour.rgba.end(), std::uint8_t(0));
     const walls::DepthImage emptyDepth{kWidth, kHeight, std::vector<float>(std::size_t(kWidth) * kHeight, walls::kNoSurface)};
-    const gl::GlObject colourTexture = gl::uploadWallTexture({colour}), depthTexture = gl::uploadDepthTexture(depth);
-    const gl::GlObject otherColour = gl::uploadWallTexture({other}), otherDepthTexture = gl::uploadDepthTexture(otherDepth);
-    const gl::GlObject emptyTexture = gl::uploadWallTexture({emptyColour}), emptyDepthTexture = gl::uploadDepthTexture(emptyDepth);
-    const gl::DepthWallLayer real{colourTexture.id(), depthTexture.id(), kSample, walls::depthRange(depth), 1.0f};
-    const gl::DepthWallLayer second{otherColour.id(), otherDepthTexture.id(), otherSample, walls::depthRange(otherDepth), 1.0f};
-    const gl::DepthWallLayer nothing{emptyTexture.id(), emptyDepthTexture.id(), kSample, glm::dvec2(0.0), 1.0f};
+    const gl::GlObject colourTexture = gl::uploadWallTexture({colour}), otherColour = gl::uploadWallTexture({other});
+    const gl::GlObject emptyTexture = gl::uploadWallTexture({emptyColour});
+    const gl::DepthTexture depthTexture = gl::uploadDepthTexture(depth), otherDepthTexture = gl::uploadDepthTexture(otherDepth);
+    const gl::DepthTexture emptyDepthTexture = gl::uploadDepthTexture(emptyDepth);
+    const gl::DepthWallLayer real{colourTexture.id(), depthTexture.depth.id(), kSample, walls::depthRange(depth), 1.0f,
+                                  depthTexture.skip.id()};
+    const gl::DepthWallLayer second{otherColour.id(), otherDepthTexture.depth.id(), otherSample,
+                                    walls::depthRange(otherDepth), 1.0f, otherDepthTexture.skip.id()};
+    const gl::DepthWallLayer nothing{emptyTexture.id(), emptyDepthTexture.depth.id(), kSample, glm::dvec2(0.0), 1.0f,
+                                     emptyDepthTexture.skip.id()};
 
     const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, kEye, {0.05, kInf});
     gl::OffscreenTarget target({kWidth, kHeight});
@@ -322,7 +327,8 @@ TEST_F(DepthWallPassTest, BlendedLayersShareTheHeaviestLayersMarch) {
     EXPECT_LE(largestDifference(draw({{nothing, 0.5f}, {real, 0.5f}}), half), 1);
     // Shared, not marched per layer: a lighter layer with the same colour and no depth at all
     // is sampled where the heaviest layer's ray landed (its own march would find nothing).
-    const gl::DepthWallLayer colourOnly{colourTexture.id(), emptyDepthTexture.id(), kSample, glm::dvec2(0.0), 1.0f};
+    const gl::DepthWallLayer colourOnly{colourTexture.id(), emptyDepthTexture.depth.id(), kSample, glm::dvec2(0.0), 1.0f,
+                                        emptyDepthTexture.skip.id()};
     const scenes::Image shared = draw({{real, 0.5f}, {colourOnly, 0.5f}});
     EXPECT_LE(largestDifference(shared, alone), 1);
     EXPECT_GT(largestDifference(shared, half), 1);
@@ -377,7 +383,7 @@ TEST_F(DepthWallPassTest, TheShaderMarchesAsItsReference) {
             p[0] = static_cast<std::uint8_t>(4 * i + 2), p[1] = static_cast<std::uint8_t>(5 * j + 2), p[2] = 128;
         }
     const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
-    const gl::GlObject depthTexture = gl::uploadDepthTexture(depth);
+    const gl::DepthTexture depthTexture = gl::uploadDepthTexture(depth);
     const gl::GlObject nearest = gl::createSampler();
     glSamplerParameteri(nearest.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glSamplerParameteri(nearest.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -397,7 +403,7 @@ TEST_F(DepthWallPassTest, TheShaderMarchesAsItsReference) {
         target.bindAndClear(glm::vec4(0.0f));
         glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
         gl::DepthWallDraw d{kQuad, {}, 1};
-        d.layers[0] = {colourTexture.id(), depthTexture.id(), sample, range, 1.0f};
+        d.layers[0] = {colourTexture.id(), depthTexture.depth.id(), sample, range, 1.0f, depthTexture.skip.id()};
         gl::FrameStats stats;
         pass.draw({d}, frustum, glm::dmat4(1.0), nearest.id(), stats);
         const scenes::Image got = target.read("march");

@@ -80,25 +80,25 @@ float crossing(sampler2D depth, ivec2 size, vec2 ta, vec2 tb, float dS, float lo
 
 // The depth s behind the wall of the first hit of the eye's ray (ta -> tb, texel units) in
 // layer S's depth, or -1. Steps of at most one texel per axis.
-float march(sampler2D depth, vec3 S, vec2 range, vec2 ta, vec2 tb) {
+float march(sampler2D depth, sampler2D skip, vec3 S, vec2 range, vec2 ta, vec2 tb) {
     ivec2 size = textureSize(depth, 0);
     float s0 = range.x / (S.z + range.x), s1 = range.y / (S.z + range.y);
     vec2 span = abs(tb - ta) * (s1 - s0);
     int steps = clamp(int(ceil(max(span.x, span.y))), 1, uMaxSteps);
     float dsg = (s1 - s0) / float(steps);
-    // Empty-space skipping (the hits stay the uniform march's): level 3 holds, per 8 x 8 block,
+    // Empty-space skipping (the hits stay the uniform march's): `skip` holds, per 8 x 8 block,
     // the nearest depth over its 3 x 3 blocks, which bounds every texel that the next
     // kSkipSteps steps (at most one texel per axis each) can reach from this step's block. The
     // hit test grows with sigma, so if the run's last sample misses a surface at that depth,
-    // every sample of the run misses. Without the level nothing is skipped (-inf).
-    bool skipLevel = textureQueryLevels(depth) > 3;
-    ivec2 lastBlock = skipLevel ? textureSize(depth, 3) - ivec2(1) : ivec2(0);
+    // every sample of the run misses. Without blocks it is one texel of depth 0, which every
+    // sample reaches: nothing is skipped.
+    ivec2 lastBlock = textureSize(skip, 0) - ivec2(1);
     float lo = s0, hi = -1.0, dHi = 0.0;
     for (int i = 0; i <= steps && hi < 0.0;) {
         int j = min(i + SKIP_STEPS, steps);
         float sj = s0 + dsg * float(j);
         ivec2 block = clamp(ivec2(floor(mix(ta, tb, s0 + dsg * float(i)) / float(SKIP_BLOCK))), ivec2(0), lastBlock);
-        float m = skipLevel ? texelFetch(depth, block, 3).r : uintBitsToFloat(0xFF800000u);
+        float m = texelFetch(skip, block, 0).r;
         if (!hits(m, S.z, sj)) { lo = sj; i = j + 1; continue; }
         for (; i <= j; ++i) {
             float sg = s0 + dsg * float(i);
@@ -125,12 +125,17 @@ vec4 colourAt(sampler2D colour, sampler2D depth, vec3 S, float s, vec2 ta, vec2 
 }
 )";
 
-// Each layer's samplers: its colour (binding 2i; the fragment stage only) and depth (2i + 1).
-std::string samplers(int layers, bool colour) {
+// Each layer's samplers: its depth (binding 2i + 1) and, in the fragment stage only, its colour
+// (2i) and skip blocks (kSkipBinding + i).
+constexpr int kSkipBinding = 2 * walls::kMaxWallTextures;
+std::string samplers(int layers, bool fragment) {
     std::string s;
     for (int i = 0; i < layers; ++i) {
-        if (colour) s += "layout(binding = " + std::to_string(2 * i) + ") uniform sampler2D uColour" + std::to_string(i) + ";\n";
-        s += "layout(binding = " + std::to_string(2 * i + 1) + ") uniform sampler2D uDepth" + std::to_string(i) + ";\n";
+        const std::string n = std::to_string(i);
+        if (fragment)
+            s += "layout(binding = " + std::to_string(2 * i) + ") uniform sampler2D uColour" + n + ";\nlayout(binding = " +
+                 std::to_string(kSkipBinding + i) + ") uniform sampler2D uSkip" + n + ";\n";
+        s += "layout(binding = " + std::to_string(2 * i + 1) + ") uniform sampler2D uDepth" + n + ";\n";
     }
     return s;
 }
@@ -154,7 +159,7 @@ std::string fragmentSource(int layers) {
     s += "void main() {\n    vec2 gx = dFdx(vUv), gy = dFdy(vUv);\n    float s = -1.0;\n";
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
-        s += "    if (s < 0.0) s = march(uDepth" + n + ", uSample[" + n + "], uRange[" + n + "], vRay[" + n + "].xy, vRay[" + n + "].zw);\n";
+        s += "    if (s < 0.0) s = march(uDepth" + n + ", uSkip" + n + ", uSample[" + n + "], uRange[" + n + "], vRay[" + n + "].xy, vRay[" + n + "].zw);\n";
     }
     s += "    vec4 c = vec4(0.0);\n    if (s >= 0.0) c = vec4(0.0)";
     for (int i = 0; i < layers; ++i) {
@@ -169,33 +174,39 @@ std::string fragmentSource(int layers) {
 
 }  // namespace
 
-gl::GlObject uploadDepthTexture(const walls::DepthImage& image) {
-    return uploadDepthTexture(walls::depthTextureData(image));
-}
+namespace {
 
-gl::GlObject uploadDepthTexture(const walls::DepthTextureData& data) {
-    const walls::DepthImage& image = data.depth;
-    if (image.width <= 0 || image.height <= 0 || image.depth.size() != std::size_t(image.width) * image.height)
-        throw Error("depth texture: expected width x height depths, got " + std::to_string(image.depth.size()) +
-                    " for " + std::to_string(image.width) + " x " + std::to_string(image.height));
+// One level of GL_R32F, read with texelFetch.
+gl::GlObject uploadFloats(const walls::DepthImage& image) {
     gl::GlObject t = gl::createTexture(GL_TEXTURE_2D);
-    // Level 3 holds the march's skip test: 8 x 8 block minima over each block's 3 x 3
-    // neighbourhood. Levels 1 and 2 are allocated (immutable storage is complete) but never
-    // read, so they are not filled.
-    static_assert(walls::kSkipBlock == 8, "level 3 is the skip level");
-    const bool skip = data.blocks.width > 0;
-    glTextureStorage2D(t.id(), skip ? 4 : 1, GL_R32F, image.width, image.height);
+    glTextureStorage2D(t.id(), 1, GL_R32F, image.width, image.height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
     glTextureSubImage2D(t.id(), 0, 0, 0, image.width, image.height, GL_RED, GL_FLOAT, image.depth.data());
-    if (skip)
-        glTextureSubImage2D(t.id(), 3, 0, 0, data.blocks.width, data.blocks.height, GL_RED, GL_FLOAT, data.blocks.depth.data());
-    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, skip ? GL_NEAREST_MIPMAP_NEAREST : GL_NEAREST);
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     return t;
 }
 
-DepthWallPass::DepthWallPass(walls::ReprojectSettings settings) : _settings(settings), _vertexArray(createVertexArray()) {
+}  // namespace
+
+DepthTexture uploadDepthTexture(const walls::DepthImage& image) {
+    return uploadDepthTexture(walls::depthTextureData(image));
+}
+
+DepthTexture uploadDepthTexture(const walls::DepthTextureData& data) {
+    const walls::DepthImage& image = data.depth;
+    if (image.width <= 0 || image.height <= 0 || image.depth.size() != std::size_t(image.width) * image.height)
+        throw Error("depth texture: expected width x height depths, got " + std::to_string(image.depth.size()) +
+                    " for " + std::to_string(image.width) + " x " + std::to_string(image.height));
+    DepthTexture t;
+    t.depth = uploadFloats(image);
+    if (data.blocks.width > 0) t.skip = uploadFloats(data.blocks);
+    return t;
+}
+
+DepthWallPass::DepthWallPass(walls::ReprojectSettings settings)
+    : _settings(settings), _vertexArray(createVertexArray()), _noSkip(uploadFloats({1, 1, {0.0f}})) {
     if (settings.maxSteps < 1 || settings.maxSteps > 1024)
         throw Error("depth wall pass: maxSteps: expected [1, 1024], got " + std::to_string(settings.maxSteps));
     if (settings.refine < 0 || settings.refine > 16)
@@ -252,6 +263,8 @@ void DepthWallPass::draw(const std::vector<DepthWallDraw>& walls, const display:
             glBindSampler(2 * used, sampler);
             glBindTextureUnit(2 * used + 1, l.depth);
             glBindSampler(2 * used + 1, 0);
+            glBindTextureUnit(kSkipBinding + used, l.skip ? l.skip : _noSkip.id());
+            glBindSampler(kSkipBinding + used, 0);
             ++used;
         }
         if (used == 0) continue;

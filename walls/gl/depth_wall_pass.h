@@ -44,8 +44,9 @@
 // and 1.19 at 128 (four runs, 1.14-1.26). Tried and
 // not kept: half-float depths (GL_R16F, half the GPU bytes; 31.4 ms a layer, no faster) and at
 // most 24 steps (no measurable gain, 0.1 dB lost).
-// Empty-space skipping: the depth texture's MIP level 3 (uploadDepthTexture) holds each 8 x 8
-// block's nearest depth over its 3 x 3 blocks; a run of walls::kSkipSteps steps whose last
+// Empty-space skipping: a texture of its own (DepthTexture::skip; until session 18 the depth
+// texture's MIP level 3, whose levels 1-2 took a quarter of the depth's GPU bytes unread) holds
+// each 8 x 8 block's nearest depth over its 3 x 3 blocks; a run of walls::kSkipSteps steps whose last
 // sample misses a surface at that depth is skipped (the test grows along the ray, so the hits
 // are the uniform march's and walls::reproject stays its reference). The displaced-grid-mesh
 // alternative is not measured.
@@ -90,6 +91,7 @@ struct DepthWallLayer {
     glm::dvec3 samplingPoint{0.0};  // world
     glm::dvec2 range{0.0};          // walls::depthRange of the depth image, metres
     float weight = 0.0f;
+    GLuint skip = 0;                // DepthTexture::skip; 0: none (the march skips nothing)
 };
 
 struct DepthWallDraw {
@@ -98,14 +100,18 @@ struct DepthWallDraw {
     int count = 0;
 };
 
-// GL_R32F holding walls::DepthImage (rows top to bottom, like the colour: row 0 is the wall's
-// upper edge) at level 0, read with texelFetch; images of at least 8 x 8 texels get levels 1-3,
-// of which level 3 is filled (the march's skip level, walls::depthBlockMinimum) and 1-2 are
-// never read. Needs a current context.
-gl::GlObject uploadDepthTexture(const walls::DepthImage& image);
+// A depth wall's depth on the GPU: GL_R32F holding walls::DepthImage (rows top to bottom, like
+// the colour: row 0 is the wall's upper edge), one level, read with texelFetch; and, for images
+// of at least 8 x 8 texels, the march's skip blocks (walls::depthBlockMinimum with dilate 1) in
+// a GL_R32F texture of their own (empty otherwise).
+struct DepthTexture {
+    GlObject depth, skip;
+};
+// Needs a current context.
+DepthTexture uploadDepthTexture(const walls::DepthImage& image);
 // The same from data whose block minima are made already (walls::depthTextureData, on the
 // texture pager's thread).
-gl::GlObject uploadDepthTexture(const walls::DepthTextureData& data);
+DepthTexture uploadDepthTexture(const walls::DepthTextureData& data);
 
 class DepthWallPass {
 public:
@@ -127,6 +133,7 @@ private:
     walls::ReprojectSettings _settings;
     std::array<Program, walls::kMaxWallTextures> _programs;  // [n - 1] marches n layers
     GlObject _vertexArray;
+    GlObject _noSkip;  // one texel of depth 0: a layer without skip blocks skips nothing
 };
 
 }  // namespace cavewall::gl

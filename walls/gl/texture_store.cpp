@@ -90,7 +90,12 @@ GLuint TextureStore::texture(int id) const {
 
 GLuint TextureStore::depthTexture(int id) const {
     auto it = _depthTextures.find(id);
-    return it == _depthTextures.end() ? 0 : it->second.id();
+    return it == _depthTextures.end() ? 0 : it->second.depth.id();
+}
+
+GLuint TextureStore::skipTexture(int id) const {
+    auto it = _depthTextures.find(id);
+    return it == _depthTextures.end() ? 0 : it->second.skip.id();
 }
 
 }  // namespace cavewall::gl

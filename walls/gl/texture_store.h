@@ -15,6 +15,7 @@
 // Needs the rendering context current for every call and for destruction.
 
 #include "display/gl/gl_object.h"
+#include "walls/gl/depth_wall_pass.h"
 #include "walls/texture_pager.h"
 #include "walls/upload_cursor.h"
 #include "walls/upload_pacer.h"
@@ -39,8 +40,10 @@ public:
     // The GL texture of texture `id`, or 0 when it is not resident.
     GLuint texture(int id) const;
     bool resident(int id) const { return texture(id) != 0; }
-    // The depth texture of texture `id` (depth walls), or 0 when it is not resident or has none.
+    // The depth texture of texture `id` (depth walls), or 0 when it is not resident or has none;
+    // its skip blocks (DepthTexture::skip), or 0 likewise or when the image is too small for any.
     GLuint depthTexture(int id) const;
+    GLuint skipTexture(int id) const;
     GLuint sampler() const { return _sampler.id(); }
 
 private:
@@ -60,7 +63,7 @@ private:
     walls::UploadPacer _pacer;
     std::optional<InFlight> _inFlight;
     std::map<int, GlObject> _textures;
-    std::map<int, GlObject> _depthTextures;
+    std::map<int, DepthTexture> _depthTextures;
     GlObject _sampler;
 };
 

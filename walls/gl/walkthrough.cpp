@@ -317,7 +317,8 @@ std::vector<DepthWallDraw> Walkthrough::depthWallDraws(const walls::FramePlan& p
             const auto layer = _walls->depthLayers.find(id);
             if (colour && (!depthTexture || layer == _walls->depthLayers.end())) all = false;
             if (layer != _walls->depthLayers.end())
-                d.layers[d.count++] = {colour, depthTexture, layer->second.first, layer->second.second, static_cast<float>(weight)};
+                d.layers[d.count++] = {colour, depthTexture, layer->second.first, layer->second.second,
+                                       static_cast<float>(weight), _walls->store.skipTexture(id)};
         }
         if (all) draws.push_back(d);
         else left.push_back(flat[i]);
