@@ -275,24 +275,23 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
     wallsOptions.synchronousPaging = true;
     wallsOptions.textureBudgetMB = 4096.0;
     wallsOptions.uploadMBPerFrame = 4096.0;
-    auto [walk, wallsFirst] = timeFirst(
-        [&] { return std::make_unique<Walkthrough>(scene, d, display, context, setup, wallsOptions); },
-        [&](Walkthrough& w) { w.renderFrame(path.frames.front()); });
+    // A walkthrough of `walls` and the seconds to make it and draw the stretch's first frame.
+    const auto firstWalk = [&](const walls::WallSetup& walls, const WalkthroughOptions& options) {
+        return timeFirst([&] { return std::make_unique<Walkthrough>(scene, d, display, context, walls, options); },
+                         [&](Walkthrough& w) { w.renderFrame(path.frames.front()); });
+    };
+    auto [walk, wallsFirst] = firstWalk(setup, wallsOptions);
     // The control: the flat walls' geometry cells, no texture.
     WalkthroughOptions cellsOptions = wallsOptions;
     cellsOptions.wallTextures = false;
-    auto [cells, cellsFirst] = timeFirst(
-        [&] { return std::make_unique<Walkthrough>(scene, d, display, context, setup, cellsOptions); },
-        [&](Walkthrough& w) { w.renderFrame(path.frames.front()); });
+    auto [cells, cellsFirst] = firstWalk(setup, cellsOptions);
     // Depth walls beside the flat ones: the same options, their own plan and bake.
     std::unique_ptr<Walkthrough> depthWalk;
     double depthFirst = 0.0;
     if (prepared->depthSetup) {
         WalkthroughOptions depthOptions = wallsOptions;
         depthOptions.wallKind = walls::WallKind::Depth;
-        std::tie(depthWalk, depthFirst) = timeFirst(
-            [&] { return std::make_unique<Walkthrough>(scene, d, display, context, *prepared->depthSetup, depthOptions); },
-            [&](Walkthrough& w) { w.renderFrame(path.frames.front()); });
+        std::tie(depthWalk, depthFirst) = firstWalk(*prepared->depthSetup, depthOptions);
     }
     // The near limit over the whole stretch: its warm-up, and its median triangles (the budget).
     std::vector<double> nearTriangles;
@@ -306,9 +305,7 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
         WalkthroughOptions budgetOptions = wallsOptions;
         budgetOptions.triangleBudget = budget;
         budgetOptions.lodMaxPixels = std::max(o.lodMaxPixels, o.lodPixels);
-        std::tie(budgeted, budgetFirst) = timeFirst(
-            [&] { return std::make_unique<Walkthrough>(scene, d, display, context, setup, budgetOptions); },
-            [&](Walkthrough& w) { w.renderFrame(path.frames.front()); });
+        std::tie(budgeted, budgetFirst) = firstWalk(setup, budgetOptions);
     }
     // Yardsticks with each mode's own levels: full detail for full, the walls' levels (also the
     // near limit's) for the others.
