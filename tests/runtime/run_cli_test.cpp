@@ -1,6 +1,8 @@
 // `cavewall run` and `cavewall demo` end to end on a small generated plant (headless): the CSV
-// files and images, clear errors for bad flags, replay determinism and the DTrack loopback.
+// files and images, clear errors for bad flags, replay determinism and the DTrack loopback
+// (the clusters' runs: clusters_cli_test.cpp).
 #include "input/network_source.h"
+#include "tests/runtime/run_cli_support.h"
 #include "scenes/image_io.h"
 #include "tests/cli/run_cli.h"
 #include "tests/support/csv_table.h"
@@ -24,40 +26,6 @@ namespace {
 
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
-
-fs::path outputDir(const std::string& name) {
-    const char* dir = std::getenv("CAVEWALL_TEST_OUTPUT");
-    const fs::path p = fs::path(dir ? dir : "/tmp") / "run_cli" / name;
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
-}
-
-// The small plant (20 k triangles), generated into the test output folder once per test
-// program (never reused from an earlier build: the generator may have changed).
-fs::path smallPlant() {
-    const char* dir = std::getenv("CAVEWALL_TEST_OUTPUT");
-    static const fs::path folder = [&] {
-        const fs::path f = fs::path(dir ? dir : "/tmp") / "run_cli" / "plant20k";
-        const CliResult r = runCavewall({"generate", "plant", "--triangles", "20000", "--out", f.string()});
-        EXPECT_EQ(r.exitCode, 0) << r.err;
-        return f;
-    }();
-    return folder / "scene.json";
-}
-
-std::string cacheDir() {
-    const char* dir = std::getenv("CAVEWALL_TEST_OUTPUT");
-    return (fs::path(dir ? dir : "/tmp") / "run_cli" / "cache").string();
-}
-
-std::string testDisplay() { return std::string(CAVEWALL_SOURCE_DIR) + "/tests/gl/cave4_128.json"; }
-
-std::vector<std::string> wallRun(const fs::path& out, const std::string& tracker, long frames) {
-    return {"run", "--scene", smallPlant().string(), "--display", testDisplay(), "--tracker", tracker,
-            "--frames", std::to_string(frames), "--alpha", "20", "--min-zone", "3", "--ppd", "2",
-            "--cache", cacheDir(), "--out", out.string()};
-}
 
 // Geometry paging (walls/geometry_pager.h): off by default (zeros); on, the viewer's cell and
 // its neighbours are paged in, and a budget smaller than one cell still never drops a frame.
@@ -500,105 +468,6 @@ TEST(RunCli, DemoWritesTheReportWithAllFourRuns) {
     for (const auto& frame : readCsv(out / "geometry" / "frames.csv")) EXPECT_EQ(frame.at("lod_px"), "0.000");
     for (const auto& frame : readCsv(out / "lod" / "frames.csv")) EXPECT_EQ(frame.at("lod_px"), "1.000");
     EXPECT_TRUE(fs::exists(out / "walls" / "frames" / "00000" / "foldout.png"));
-}
-
-}  // namespace
-}  // namespace cavewall::test
-
-namespace cavewall::test {
-namespace {
-
-// Seed 004's textured clusters end to end (issue 17): `run --clusters` on the small plant's
-// scene.json and on its bare GLB. Every frame's selection stays within its budget of predicted
-// milliseconds and draws something; a second run finds every cluster in the cache.
-std::vector<std::string> clusterRun(const fs::path& scene, const fs::path& out, const std::string& cache) {
-    return {"run", "--scene", scene.string(), "--display", testDisplay(), "--tracker", "sim:walk?seed=2",
-            "--frames", "8", "--clusters", "--cluster-divisions", "4", "--cluster-res", "16", "--cache", cache,
-            "--out", out.string()};
-}
-
-// Within the budget, unless the budget is below the least a frame can cost: then the root
-// cluster alone (one box) is drawn, as the seed's traversal starts from it. (A frame with
-// cross-fades under way also pays for what they keep drawing, so it is checked only for
-// drawing something.)
-void expectWithinBudget(const CsvTable& rows) {
-    for (const auto& row : rows) {
-        SCOPED_TRACE(row.at("frame"));
-        if (row.number("cluster_fades") == 0.0 &&
-            row.number("cluster_predicted_ms") > row.number("cluster_budget_ms") + 1e-3) {
-            EXPECT_EQ(row.number("cluster_objects"), 0.0);
-            EXPECT_EQ(row.number("cluster_textured") + row.number("cluster_average"), 1.0);
-        }
-        EXPECT_GE(row.number("cluster_budget_ms"), 0.0);
-        // The selection's own cost never exceeds its budget, or the cheapest selection's.
-        EXPECT_LE(row.number("cluster_selected_ms"),
-                  std::max(row.number("cluster_budget_ms"), row.number("cluster_cheapest_ms")) + 1e-3);
-        EXPECT_GT(row.number("cluster_objects") + row.number("cluster_textured") + row.number("cluster_average"), 0.0);
-    }
-}
-
-TEST(RunCli, ClustersDrawTheSelectionWithinTheBudgetAndReuseTheirImpostors) {
-    const std::string cache = (fs::path(cacheDir()).parent_path() / "cluster-cache").string();
-    fs::remove_all(cache);
-    const fs::path first = outputDir("clusters-first"), second = outputDir("clusters-second");
-    std::vector<std::string> firstArgs = clusterRun(smallPlant(), first, cache);
-    firstArgs.insert(firstArgs.end(), {"--save-frames", "every:4"});
-    CliResult r = runCavewall(firstArgs);
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    // The top view of what frame 4 drew, beside its screens' images.
-    const scenes::Image diagram = scenes::readImage(first / "frames" / "00004" / "clusters.png");
-    EXPECT_EQ(diagram.width, 640);
-    EXPECT_THAT(r.out, HasSubstr("run: clusters: "));
-    EXPECT_THAT(r.out, HasSubstr(", 0 from the cache)"));
-    const auto rows = readCsv(first / "frames.csv");
-    ASSERT_EQ(rows.size(), 8u);
-    expectWithinBudget(rows);
-    // 16.7 ms of predicted cost: the default budget without a frame-time controller.
-    EXPECT_NEAR(rows[0].number("cluster_budget_ms"), 16.6667, 1e-3);
-    // The walk refines clusters on its way: those switches are cross-faded (8 frames by default).
-    double fades = 0.0;
-    for (const auto& row : rows) fades = std::max(fades, row.number("cluster_fades"));
-    EXPECT_GT(fades, 0.0);
-    r = runCavewall(clusterRun(smallPlant(), second, cache));
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_THAT(r.out, HasSubstr("(0 made, "));
-    // A tight budget of 0.5 ms draws clusters as boxes; the controller then sets each budget
-    // (frames here take more than 0.5 ms whatever is drawn, so it stays at the root alone), and
-    // every frame after the first reports the target as infeasible: its floor (the cheapest
-    // selection's frame time) is above it.
-    const fs::path tight = outputDir("clusters-tight");
-    std::vector<std::string> args = clusterRun(smallPlant(), tight, cache);
-    args.insert(args.end(), {"--frame-budget-ms", "0.5", "--cluster-fade", "0"});
-    r = runCavewall(args);
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    const auto tightRows = readCsv(tight / "frames.csv");
-    expectWithinBudget(tightRows);
-    for (const auto& row : tightRows) EXPECT_EQ(row.number("cluster_fades"), 0.0);  // switched off
-    for (std::size_t i = 0; i < tightRows.size(); ++i) {
-        SCOPED_TRACE(i);
-        EXPECT_NEAR(tightRows[i].number("cluster_target_ms"), 0.5, 1e-9);
-        EXPECT_NEAR(tightRows[i].number("cluster_selected_ms"), tightRows[i].number("cluster_cheapest_ms"), 1e-3);
-        if (i == 0) continue;  // the controller has seen no frame yet
-        EXPECT_GT(tightRows[i].number("cluster_floor_ms"), 0.5);
-        EXPECT_GT(tightRows[i].number("cluster_predicted_frame_ms"), 0.0);
-    }
-    EXPECT_GT(tightRows[0].number("cluster_textured") + tightRows[0].number("cluster_average"), 0.0);
-}
-
-TEST(RunCli, ClustersRunOnABareGlb) {
-    const std::string cache = (fs::path(cacheDir()).parent_path() / "cluster-cache-glb").string();
-    const fs::path out = outputDir("clusters-glb");
-    const CliResult r = runCavewall(clusterRun(smallPlant().parent_path() / "plant.glb", out, cache));
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    expectWithinBudget(readCsv(out / "frames.csv"));
-}
-
-TEST(RunCli, ClustersRefuseATriangleBudget) {
-    std::vector<std::string> args = clusterRun(smallPlant(), outputDir("clusters-bad"), cacheDir());
-    args.insert(args.end(), {"--lod", "1", "--triangle-budget", "1000"});
-    const CliResult r = runCavewall(args);
-    EXPECT_NE(r.exitCode, 0);
-    EXPECT_THAT(r.err, HasSubstr("--clusters and --triangle-budget"));
 }
 
 }  // namespace
