@@ -326,6 +326,9 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
                         Accumulated(screens), Accumulated(screens), Accumulated(screens)};
     a[0].residentMB = fullYard.sharedMB;
     a[1].residentMB = nearMode->residentMB();
+    // The walkthrough modes, indexed as `a`.
+    Walkthrough* const walkthroughs[6] = {nullptr, nullptr, walk.get(), budgeted.get(), depthWalk.get(), cells.get()};
+    const char* const names[6] = {"full", "near", "walls", "walls-budget", "walls-depth", "cells"};
     long frame = 0;
     for (walls::FrameInput in : path.frames) {
         // Images are read back after each mode's frame is timed (walkthrough.h; NearMode::draw).
@@ -339,24 +342,17 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
             a[1].errors.addFrame(frame, comparedImages(display, in.head, readFrame(display, nearMode->targets), f.images,
                                                        "near"));
         for (int m : {5, 2, 3, 4}) {
-            Walkthrough* const walkthroughs[] = {nullptr, nullptr, walk.get(), budgeted.get(), depthWalk.get(), cells.get()};
-            Walkthrough* walkthrough = walkthroughs[m];
-            if (!walkthrough) continue;
-            const walls::FrameResult w = walkthrough->renderFrame(in);
+            if (!walkthroughs[m]) continue;
+            const walls::FrameResult w = walkthroughs[m]->renderFrame(in);
             a[m].ms.push_back(w.frameMs), a[m].triangles += static_cast<double>(w.stats.triangles);
-            const char* const names[] = {"", "", "walls", "walls-budget", "walls-depth", "cells"};
-            const char* name = names[m];
-            if (compare) a[m].errors.addFrame(frame, comparedImages(display, in.head, w.images, f.images, name));
+            if (compare) a[m].errors.addFrame(frame, comparedImages(display, in.head, w.images, f.images, names[m]));
             a[m].pagedMB = std::max(a[m].pagedMB, w.geometry.residentMB);
             a[m].overAlpha = std::max(a[m].overAlpha, w.texturesOverAlpha);
             a[m].misses = w.geometry.misses, a[m].pageIns = w.geometry.pageIns;
         }
         ++frame;
     }
-    a[2].residentMB = yard.sharedMB + a[2].pagedMB;
-    a[3].residentMB = yard.sharedMB + a[3].pagedMB;
-    a[4].residentMB = yard.sharedMB + a[4].pagedMB;
-    a[5].residentMB = yard.sharedMB + a[5].pagedMB;
+    for (int m = 2; m < 6; ++m) a[m].residentMB = yard.sharedMB + a[m].pagedMB;
     const double firsts[6] = {fullFirst, nearFirst, wallsFirst + planSeconds, budgetFirst + planSeconds,
                               depthFirst + prepared->depthPlanSeconds, cellsFirst + planSeconds};
     const bench::ScaleMode modes[6] = {bench::ScaleMode::Full,  bench::ScaleMode::Near,        bench::ScaleMode::Walls,
