@@ -117,6 +117,7 @@ FrameStats SceneRenderer::render(const std::vector<display::ScreenView>& views, 
         if (afterView) afterView(view);
         return drawnView;
     });
+    endFrame(targets);
     if (timed) _timer.end();
     stats.cpuMs = msSince(start);
     stats.gpuMs = _timer.latestMs();
@@ -147,21 +148,41 @@ void SceneRenderer::beginFrame(const RenderTargets& targets, const std::vector<i
     applyFrameState();
     glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    _marked.clear();
     for (int s = 0; s < targets.screenCount(); ++s) {
         if (!screens.empty() && std::find(screens.begin(), screens.end(), s) == screens.end()) continue;
-        for (int i = 0; i < targets.imageCount(s); ++i) {
-            targets.bind(s, i);
-            clearTo(_settings.clearColor);
-        }
+        for (int i = 0; i < targets.imageCount(s); ++i) _marked.emplace_back(s, i);
     }
+}
+
+void SceneRenderer::endFrame(const RenderTargets& targets) {
+    for (const glm::ivec2 image : _marked) {
+        targets.bind(image.x, image.y);
+        glDisable(GL_SCISSOR_TEST);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        clearTo(_settings.clearColor);
+    }
+    _marked.clear();
+}
+
+bool SceneRenderer::clearIfMarked(int screen, int image) {
+    const auto marked = std::find(_marked.begin(), _marked.end(), glm::ivec2(screen, image));
+    if (marked == _marked.end()) return false;
+    _marked.erase(marked);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    clearTo(_settings.clearColor);
+    return true;
 }
 
 ViewStats SceneRenderer::renderView(const display::ScreenView& view, const render::RenderList& list) {
     const auto start = Clock::now();
     applyFrameState();
-    // Each eye gets fresh depth: anaglyph eyes share one image, side-by-side eyes one target.
+    // The frame's clear of the image, if it is still to come, goes with this view's drawing;
+    // else each eye gets fresh depth: anaglyph eyes share one image, side-by-side eyes one target.
+    const bool cleared = clearIfMarked(view.screen, RenderTargets::imageOf(view.pass));
     setViewport(view.pass.viewport, glm::bvec4(true));
-    glClear(GL_DEPTH_BUFFER_BIT);
+    if (!cleared) glClear(GL_DEPTH_BUFFER_BIT);
     glColorMask(view.pass.colorMask.r, view.pass.colorMask.g, view.pass.colorMask.b, view.pass.colorMask.a);
     ViewStats stats = draw(list);
     stats.cpuMs = msSince(start);

@@ -120,12 +120,19 @@ public:
                       const std::function<void(const display::ScreenView&)>& afterView = {});
 
     // For callers that interleave their own passes between views (the walkthrough): sets the
-    // frame's GL state and clears the images of `screens` (empty: all) to the clear colour.
+    // frame's GL state and marks the images of `screens` (empty: all) to be cleared to the clear
+    // colour, each by the first renderView into it, with its drawing; endFrame clears those no
+    // view drew into. A clear of its own costs llvmpipe a pass over the image (a scene of its
+    // own, ended by binding the next screen): on cave4 at 1024 x 1024 per screen that was
+    // 3.5-4 ms of a 32-34 ms walls frame (README, "The frame's clear with its drawing").
     void beginFrame(const RenderTargets& targets, const std::vector<int>& screens = {});
+    // Clears the images that beginFrame marked and no view has drawn into since.
+    void endFrame(const RenderTargets& targets);
     // Draws a prepared render list of `view` (built for view.frustum from this renderer's
     // renderScene()) into the currently bound draw framebuffer (bind it first, e.g.
     // targets.bind(view.screen, RenderTargets::imageOf(view.pass))): sets the GL state it needs,
-    // the view's viewport, scissor (enabled) and colour mask, clears depth within the viewport,
+    // clears the whole image to the clear colour if beginFrame marked it, else depth within the
+    // viewport, sets the view's viewport, scissor (enabled) and colour mask,
     // draws, and leaves viewport, scissor and colour mask set, depth writes on, blending off and
     // no sampler bound to unit 0, so later passes can draw into the same view. Program, vertex
     // array (its binding 1 holding this view's draw records) and indirect buffer bindings are
@@ -169,6 +176,9 @@ private:
 
     void applyFrameState();
     void clearTo(glm::vec4 color);
+    // Clears the bound image (all of it, every channel) if beginFrame marked image `image` of
+    // `screen`; whether it did.
+    bool clearIfMarked(int screen, int image);
     ViewStats draw(const render::RenderList& list);
     void upload(ViewBuffers& buffers);
     void groupBySet(const render::RenderList& list);
@@ -189,6 +199,8 @@ private:
     // [alpha test (MASK batches) * 2 + lit per vertex]
     std::array<Program, 4> _programs;
     GpuTimer _timer;
+    // Images (screen, image) beginFrame marked and no view has cleared yet.
+    std::vector<glm::ivec2> _marked;
     std::array<ViewBuffers, kViewBufferSets> _viewBuffers;
     int _nextViewBuffers = 0;
     // Per-view scratch, kept to avoid allocating per view.

@@ -6,10 +6,12 @@
 #include "display/display.h"
 #include "display/gl/shader.h"
 #include "display/gl/snapshot.h"
+#include "display/gl/view_loop.h"
 #include "render/render_list.h"
 #include "scenes/primitives.h"
 #include "tests/gl/gl_test_support.h"
 
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <gmock/gmock.h>
 
@@ -148,6 +150,39 @@ TEST_F(SceneRendererTest, AlphaMaskDiscardsAndBlendMixesOverOpaque) {
     EXPECT_NEAR(mixed.r, srgb(0.5), 2);
     EXPECT_NEAR(mixed.b, srgb(0.5), 2);
     EXPECT_EQ(mixed.a, 255);
+}
+
+// The frame's clear is deferred to the first view drawn into each image (beginFrame marks,
+// renderView clears with its drawing, endFrame clears the rest): whatever path clears, no pixel
+// of the last frame may survive into the next.
+TEST_F(SceneRendererTest, EveryFrameStartsFromTheClearColourWhicheverViewsAreDrawn) {
+    scenes::Scene scene;
+    addQuad(scene, {0, 0, -2}, 40.0f, addMaterial(scene, {1, 0, 0, 1}));  // fills the screen
+    const display::Display d(oneScreen());
+    const RenderTargets targets(d, *context);
+    SceneRenderer renderer(scene, unlit());
+    const std::vector<display::ScreenView> views = d.views(kEyeAtOrigin);
+    const auto covered = [&](glm::ivec4 colour) {
+        const scenes::Image image = targets.read(0, 0);
+        int n = 0;
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) n += pixel(image, x, y) == colour;
+        return n;
+    };
+    const int all = 64 * 64;
+    const glm::ivec4 red(255, 0, 0, 255);
+    renderer.render(views, targets);
+    ASSERT_EQ(covered(red), all);
+    // The view turned away from the quad: the view's own clear leaves no red.
+    renderer.render(views, targets, glm::rotate(glm::dmat4(1.0), glm::pi<double>(), glm::dvec3(0, 1, 0)));
+    EXPECT_EQ(covered(background()), all);
+    renderer.render(views, targets);
+    ASSERT_EQ(covered(red), all);
+    // A frame in which no view draws into the image: endFrame clears it.
+    renderer.beginFrame(targets);
+    forEachView({}, targets, [](const display::ScreenView&) { return ViewStats{}; });
+    renderer.endFrame(targets);
+    EXPECT_EQ(covered(background()), all);
 }
 
 TEST_F(SceneRendererTest, BaseColourTextureIsSampledWithItsTransform) {

@@ -355,6 +355,7 @@ void Walkthrough::drawViews(const walls::FrameInput& input, const std::vector<di
         stats.drawCalls += passes.drawCalls;
         return stats;
     });
+    _renderer.endFrame(_targets);
     result.perScreen = statsPerScreen(views, result.stats, _display.screens().size());
 }
 
