@@ -123,6 +123,11 @@ inline constexpr int kSkipSteps = kSkipBlock - 1;
 // with dilate 1; empty otherwise). Made on the texture pager's thread, off the frame.
 struct DepthTextureData {
     DepthImage depth, blocks;
+    // What the march needs beside the texels, from the texture's manifest entry: its sampling
+    // point (world) and baked depth range (the range the depths are clamped to). They arrive and
+    // leave with the texels (gl::TextureStore::depthLayer).
+    glm::dvec3 samplingPoint{0.0};
+    glm::dvec2 range{0.0};
     std::size_t gpuBytes() const;  // depthTextureBytes of its size
 };
 // Throws cavewall::Error unless the image holds width x height depths.

@@ -72,6 +72,8 @@ void TexturePager::worker() {
                 if (ok) {
                     clampDepths(depth, texture.depthRange);
                     d.depth = depthTextureData(std::move(depth));
+                    d.depth->samplingPoint = texture.samplingPoint;
+                    d.depth->range = texture.depthRange;
                 }
             }
             ok = ok && textureFileValid(_folder, texture);

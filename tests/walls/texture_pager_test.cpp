@@ -263,7 +263,7 @@ TEST(TexturePager, PagesBlockFilesAsCompressedBytes) {
 }
 
 // Depth walls: a texture whose manifest entry lists a depth file gets its depths with the colour
-// (decoded, clamped into the baked range, with skip blocks) and counts their GPU bytes against
+// (decoded, clamped into the baked range, with skip blocks, sampling point and range) and counts their GPU bytes against
 // the budget; a damaged or mismatched depth file fails the texture like a bad colour file.
 TEST(TexturePager, PagesADepthWallsDepthWithItsColourAndBudgetsBoth) {
     const auto dir = folder();
@@ -289,6 +289,7 @@ TEST(TexturePager, PagesADepthWallsDepthWithItsColourAndBudgetsBoth) {
         t.depthRange = depthRange(image);
     };
     addDepth(m.textures[1], depth);
+    m.textures[1].samplingPoint = {1.5, -2.0, 3.25};
     addDepth(m.textures[2], DepthImage{128, 128, std::vector<float>(128 * 128, 1.0f)});  // not the colour's size
     addDepth(m.textures[3], depth);
     std::ofstream(dir / m.textures[3].depthFile, std::ios::binary | std::ios::app) << "x";  // damaged
@@ -316,6 +317,9 @@ TEST(TexturePager, PagesADepthWallsDepthWithItsColourAndBudgetsBoth) {
     EXPECT_NEAR(withDepth.depth->depth.depth[2], 2.0f, depthFileError(2.0));
     EXPECT_EQ(withDepth.depth->blocks.width, 256 / kSkipBlock);
     EXPECT_EQ(withDepth.depth->blocks.depth[0], nearest);
+    // What the march needs beside the texels comes with them (the walkthrough keeps no copy).
+    EXPECT_EQ(withDepth.depth->samplingPoint, m.textures[1].samplingPoint);
+    EXPECT_EQ(withDepth.depth->range, m.textures[1].depthRange);
     for (const auto& [id, d] : ready) pager.markResident(id, d.bytes);
     EXPECT_DOUBLE_EQ(pager.stats().residentMB, (2 * kBytes + depthBytes) / (1024.0 * 1024.0));
     EXPECT_TRUE(pager.takeEvictions().empty());

@@ -56,7 +56,7 @@ std::size_t TextureStore::finishWhole(walls::DecodedTexture d) {
 std::size_t TextureStore::makeResident(walls::DecodedTexture& d, GlObject colour) {
     std::size_t depthBytes = 0;
     if (d.depth) {
-        _depthTextures[d.id] = uploadDepthTexture(*d.depth);
+        _depthTextures[d.id] = {uploadDepthTexture(*d.depth), d.depth->samplingPoint, d.depth->range};
         depthBytes = d.depth->gpuBytes();
     }
     _textures[d.id] = std::move(colour);
@@ -88,14 +88,12 @@ GLuint TextureStore::texture(int id) const {
     return it == _textures.end() ? 0 : it->second.id();
 }
 
-GLuint TextureStore::depthTexture(int id) const {
-    auto it = _depthTextures.find(id);
-    return it == _depthTextures.end() ? 0 : it->second.depth.id();
-}
-
-GLuint TextureStore::skipTexture(int id) const {
-    auto it = _depthTextures.find(id);
-    return it == _depthTextures.end() ? 0 : it->second.skip.id();
+std::optional<DepthWallLayer> TextureStore::depthLayer(int id) const {
+    const auto depth = _depthTextures.find(id);
+    const GLuint colour = texture(id);
+    if (depth == _depthTextures.end() || colour == 0) return std::nullopt;
+    const ResidentDepth& d = depth->second;
+    return DepthWallLayer{colour, d.texture.depth.id(), d.samplingPoint, d.range, 0.0f, d.texture.skip.id()};
 }
 
 }  // namespace cavewall::gl

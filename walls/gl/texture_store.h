@@ -11,7 +11,7 @@
 // (walls/texture_blocks.h, uploaded compressed), with every MIP level the file had (premultiplied
 // alpha, as baked), sampled trilinearly and clamped to the edge. A depth wall's texture comes
 // with its depth texture (gl::uploadDepthTexture), uploaded with the colour's last piece and
-// deleted with it.
+// deleted with it, and with what the march needs to read it (depthLayer).
 // Needs the rendering context current for every call and for destruction.
 
 #include "display/gl/gl_object.h"
@@ -40,10 +40,10 @@ public:
     // The GL texture of texture `id`, or 0 when it is not resident.
     GLuint texture(int id) const;
     bool resident(int id) const { return texture(id) != 0; }
-    // The depth texture of texture `id` (depth walls), or 0 when it is not resident or has none;
-    // its skip blocks (DepthTexture::skip), or 0 likewise or when the image is too small for any.
-    GLuint depthTexture(int id) const;
-    GLuint skipTexture(int id) const;
+    // Texture `id` as a depth wall's layer (depth walls; weight 0): its colour, depth and skip
+    // blocks (DepthTexture::skip; 0 when the image is too small for any), with the sampling point
+    // and baked range that came with its depths. Nothing when it is not resident or has no depth.
+    std::optional<DepthWallLayer> depthLayer(int id) const;
     GLuint sampler() const { return _sampler.id(); }
 
 private:
@@ -63,7 +63,13 @@ private:
     walls::UploadPacer _pacer;
     std::optional<InFlight> _inFlight;
     std::map<int, GlObject> _textures;
-    std::map<int, DepthTexture> _depthTextures;
+    // A resident texture's depths, and the sampling point and range they were baked from.
+    struct ResidentDepth {
+        DepthTexture texture;
+        glm::dvec3 samplingPoint;
+        glm::dvec2 range;
+    };
+    std::map<int, ResidentDepth> _depthTextures;
     GlObject _sampler;
 };
 

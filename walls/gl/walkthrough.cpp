@@ -94,11 +94,7 @@ struct Walkthrough::WallRuntime {
           pager(setup.folder, setup.manifest, options.textureBudgetMB,
                 options.decoder ? options.decoder : walls::TexturePager::Decoder(decodeBakedTexture)),
           store(pager, static_cast<std::size_t>(options.uploadMBPerFrame * 1024 * 1024)) {
-        if (options.wallKind == walls::WallKind::Depth) {
-            for (const walls::BakedTexture& t : setup.manifest.textures)
-                if (!t.depthFile.empty()) depthLayers[t.id] = {t.samplingPoint, t.depthRange};
-            depthPass = std::make_unique<DepthWallPass>();
-        }
+        if (options.wallKind == walls::WallKind::Depth) depthPass = std::make_unique<DepthWallPass>();
     }
 
     walls::WallSetup setup;
@@ -106,9 +102,6 @@ struct Walkthrough::WallRuntime {
     std::unique_ptr<CellPaging> geometry;  // geometry paging by cell (options.geometryBudgetMB > 0)
     TextureStore store;
     WallPass pass;
-    // Depth walls only: each depth texture's sampling point and baked depth range (the
-    // textures themselves are paged with the colour, TextureStore::depthTexture).
-    std::map<int, std::pair<glm::dvec3, glm::dvec2>> depthLayers;
     std::unique_ptr<DepthWallPass> depthPass;
 };
 
@@ -260,9 +253,6 @@ walls::FramePlan Walkthrough::planFrame(const walls::FrameInput& input, const st
                 w.pager.removeTexture(e.texture.id);
                 continue;
             }
-            // A depth wall's layer: its sampling point and baked range, as the manifest's at the start.
-            if (w.depthPass && !e.texture.depthFile.empty())
-                w.depthLayers[e.texture.id] = {e.texture.samplingPoint, e.texture.depthRange};
             w.pager.addTexture(std::move(e.texture)), ++_bakedNow;
         }
         _bakedTotal += _bakedNow;
@@ -312,13 +302,16 @@ std::vector<DepthWallDraw> Walkthrough::depthWallDraws(const walls::FramePlan& p
     for (std::size_t i = 0; i < plan.wallDraws.size() && i < flat.size(); ++i) {
         DepthWallDraw d{flat[i].quad, {}, 0};
         bool all = true;
+        // A resident texture without depths (a flat one) draws the whole wall flat; textures
+        // not resident are left out, as the flat pass leaves them.
         for (const auto& [id, weight] : plan.wallDraws[i].textures) {
-            const GLuint colour = _walls->store.texture(id), depthTexture = _walls->store.depthTexture(id);
-            const auto layer = _walls->depthLayers.find(id);
-            if (colour && (!depthTexture || layer == _walls->depthLayers.end())) all = false;
-            if (layer != _walls->depthLayers.end())
-                d.layers[d.count++] = {colour, depthTexture, layer->second.first, layer->second.second,
-                                       static_cast<float>(weight), _walls->store.skipTexture(id)};
+            std::optional<DepthWallLayer> layer = _walls->store.depthLayer(id);
+            if (!layer) {
+                all = all && !_walls->store.resident(id);
+                continue;
+            }
+            layer->weight = static_cast<float>(weight);
+            d.layers[d.count++] = *layer;
         }
         if (all) draws.push_back(d);
         else left.push_back(flat[i]);
