@@ -263,8 +263,9 @@ TEST(TexturePager, PagesBlockFilesAsCompressedBytes) {
 }
 
 // Depth walls: a texture whose manifest entry lists a depth file gets its depths with the colour
-// (decoded, clamped into the baked range, with skip blocks, sampling point and range) and counts their GPU bytes against
-// the budget; a damaged or mismatched depth file fails the texture like a bad colour file.
+// (decoded, clamped into the baked range, with skip blocks, sampling point and range) and counts
+// their GPU bytes against the budget; a damaged or mismatched depth file fails the texture like
+// a bad colour file.
 TEST(TexturePager, PagesADepthWallsDepthWithItsColourAndBudgetsBoth) {
     const auto dir = folder();
     BakeManifest m = manifest();

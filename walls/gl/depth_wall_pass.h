@@ -41,7 +41,10 @@
 // walls"; bench/results/scale/run18-depth-exact-crossing) depth / flat went from a median of
 // 1.38 to 1.35 with the crossing and about 1.29-1.31 with both, at the same images; drawn in
 // turn in one run (`bench --scale --walls flat,depth`) 1.27 at 512 texels (nine runs, 1.16-1.34)
-// and 1.19 at 128 (four runs, 1.14-1.26). Tried and
+// and 1.19 at 128 (four runs, 1.14-1.26); 1.31 over fourteen runs in session 18. Since session 19
+// the frame's clear goes with its drawing (gl::SceneRenderer::beginFrame), which took 3-4 ms off
+// both kinds of frame and none off this pass: 1.34-1.41 at 512 texels (four runs), 1.15-1.21 at
+// 128 (two). Tried and
 // not kept: half-float depths (GL_R16F, half the GPU bytes; 31.4 ms a layer, no faster) and at
 // most 24 steps (no measurable gain, 0.1 dB lost).
 // Empty-space skipping: a texture of its own (DepthTexture::skip; until session 18 the depth
