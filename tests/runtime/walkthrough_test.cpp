@@ -183,6 +183,18 @@ double missingShare(const walls::FrameResult& frame, const walls::FrameResult& f
     return box ? double(missing) / double(box) : 1.0;
 }
 
+// The control (cells without textures) has no texture side at all: a transition that draws
+// textures is a clear error, not a silent run without them.
+TEST_F(WalkthroughTest, TheControlRefusesTheWarpTransition) {
+    const display::Display display = testDisplay(48);
+    gl::WalkthroughOptions options;
+    options.wallTextures = false;
+    options.transition = walls::Transition::Warp;
+    EXPECT_THAT([&] { gl::Walkthrough w(plant.scene, plant.description, display, *context, plant.walls, options); },
+                ::testing::ThrowsMessage<Error>(::testing::HasSubstr(
+                    "the control without wall textures draws no warp (expected transition blend, got warp)")));
+}
+
 TEST_F(WalkthroughTest, PagingUnderATinyBudgetNeverLeavesAWallMissing) {
     const SmallPlant& scene = twoCells();
     const display::Display display = testDisplay(48);

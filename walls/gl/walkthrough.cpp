@@ -45,6 +45,9 @@ WalkthroughOptions withPaging(WalkthroughOptions options, const scenes::SceneDes
     if (!options.wallTextures && options.transition == walls::Transition::Warp)
         throw Error("walkthrough: the control without wall textures draws no warp (expected transition blend, "
                     "got warp)");
+    if (!options.wallTextures && options.baker)
+        throw Error("walkthrough: the control without wall textures bakes nothing (expected no background "
+                    "baker, got one)");
     options.render.pagedCells = paging ? static_cast<int>(description.cells.size()) : 0;
     return options;
 }
@@ -89,20 +92,29 @@ struct Walkthrough::CellPaging {
 };
 
 struct Walkthrough::WallRuntime {
-    WallRuntime(walls::WallSetup s, const WalkthroughOptions& options)
-        : setup(std::move(s)),
-          pager(setup.folder, setup.manifest, options.textureBudgetMB,
-                options.decoder ? options.decoder : walls::TexturePager::Decoder(decodeBakedTexture)),
-          store(pager, static_cast<std::size_t>(options.uploadMBPerFrame * 1024 * 1024)) {
-        if (options.wallKind == walls::WallKind::Depth) depthPass = std::make_unique<DepthWallPass>();
+    // The textures' side: their paging, GPU residency and the passes that draw them.
+    struct Textures {
+        Textures(const walls::WallSetup& setup, const WalkthroughOptions& options)
+            : pager(setup.folder, setup.manifest, options.textureBudgetMB,
+                    options.decoder ? options.decoder : walls::TexturePager::Decoder(decodeBakedTexture)),
+              store(pager, static_cast<std::size_t>(options.uploadMBPerFrame * 1024 * 1024)) {
+            if (options.wallKind == walls::WallKind::Depth) depthPass = std::make_unique<DepthWallPass>();
+        }
+        walls::TexturePager pager;
+        TextureStore store;
+        WallPass pass;
+        std::unique_ptr<DepthWallPass> depthPass;
+    };
+
+    WallRuntime(walls::WallSetup s, const WalkthroughOptions& options) : setup(std::move(s)) {
+        if (options.wallTextures) textures = std::make_unique<Textures>(setup, options);
     }
 
     walls::WallSetup setup;
-    walls::TexturePager pager;
     std::unique_ptr<CellPaging> geometry;  // geometry paging by cell (options.geometryBudgetMB > 0)
-    TextureStore store;
-    WallPass pass;
-    std::unique_ptr<DepthWallPass> depthPass;
+    // None in the control (WalkthroughSettings::wallTextures off), which pages, uploads and draws
+    // no texture: no pager thread, no wall shaders.
+    std::unique_ptr<Textures> textures;
 };
 
 struct Walkthrough::ClusterRuntime {
@@ -214,9 +226,9 @@ void Walkthrough::planClusters(const walls::FrameInput& input, glm::dvec3 eyeWor
 }
 
 void Walkthrough::waitForTextures() {
-    if (!_walls) return;
-    _walls->pager.waitIdle();
-    _walls->store.updateAll();
+    if (!_walls || !_walls->textures) return;
+    _walls->textures->pager.waitIdle();
+    _walls->textures->store.updateAll();
 }
 
 GeometryYardsticks Walkthrough::geometryYardsticks() const {
@@ -245,29 +257,32 @@ walls::FramePlan Walkthrough::planFrame(const walls::FrameInput& input, const st
     const walls::TextureRequests wanted = _planner->requests(input, views);
     if (!_walls) return _planner->plan([](int) { return false; });
     WallRuntime& w = *_walls;
-    if (_options.baker) {  // baking on demand: this frame's wishes out, finished bakes in
-        _options.baker->want(wanted.now, wanted.soon, glm::dvec3(input.worldFromCave * glm::dvec4(input.head.position, 1.0)));
-        _bakedNow = 0;
-        for (BakeEvent& e : _options.baker->take()) {
-            if (e.evicted) {
-                w.pager.removeTexture(e.texture.id);
-                continue;
+    if (w.textures) {
+        WallRuntime::Textures& t = *w.textures;
+        if (_options.baker) {  // baking on demand: this frame's wishes out, finished bakes in
+            _options.baker->want(wanted.now, wanted.soon, glm::dvec3(input.worldFromCave * glm::dvec4(input.head.position, 1.0)));
+            _bakedNow = 0;
+            for (BakeEvent& e : _options.baker->take()) {
+                if (e.evicted) {
+                    t.pager.removeTexture(e.texture.id);
+                    continue;
+                }
+                t.pager.addTexture(std::move(e.texture)), ++_bakedNow;
             }
-            w.pager.addTexture(std::move(e.texture)), ++_bakedNow;
+            _bakedTotal += _bakedNow;
         }
-        _bakedTotal += _bakedNow;
+        t.pager.request(wanted.now, wanted.soon);
+        if (_options.synchronousPaging) t.pager.waitIdle();
+        // One paced upload round per frame; synchronous paging uploads everything.
+        _uploadedBytes = _options.synchronousPaging ? t.store.updateAll() : t.store.update();
     }
-    w.pager.request(wanted.now, wanted.soon);
-    if (_options.synchronousPaging) w.pager.waitIdle();
-    // One paced upload round per frame; synchronous paging uploads everything.
-    _uploadedBytes = _options.synchronousPaging ? w.store.updateAll() : w.store.update();
-    if (!w.geometry) return _planner->plan([&w](int id) { return w.store.resident(id); });
+    const auto resident = [&w](int id) { return w.textures && w.textures->store.resident(id); };
+    if (!w.geometry) return _planner->plan(resident);
     walls::GeometryPager& pager = w.geometry->pager;
     pager.request(wanted.cellsNow, wanted.cellsSoon);
     if (_options.synchronousPaging) pager.waitIdle();
     for (int group : pager.takeReady()) makeResident(group);
-    walls::FramePlan plan = _planner->plan([&w](int id) { return w.store.resident(id); },
-                                           [&pager](int cell) { return pager.isResident(cell); });
+    walls::FramePlan plan = _planner->plan(resident, [&pager](int cell) { return pager.isResident(cell); });
     // Drawn now: the missing groups are loaded at once (a stall).
     for (int cell : plan.geometryForced)
         for (int group : pager.groupsOf(cell)) makeResident(group);
@@ -287,7 +302,7 @@ std::vector<WallDraw> Walkthrough::wallDraws(const walls::FramePlan& plan) const
     for (const walls::WallDrawPlan& p : plan.wallDraws) {
         WallDraw d{p.quad, {}, {}, 0};
         for (const auto& [id, weight] : p.textures) {
-            d.textures[d.count] = _walls->store.texture(id);
+            d.textures[d.count] = _walls->textures->store.texture(id);
             d.weights[d.count++] = static_cast<float>(weight);
         }
         draws.push_back(d);
@@ -297,7 +312,8 @@ std::vector<WallDraw> Walkthrough::wallDraws(const walls::FramePlan& plan) const
 
 std::vector<DepthWallDraw> Walkthrough::depthWallDraws(const walls::FramePlan& plan, std::vector<WallDraw>& flat) {
     std::vector<DepthWallDraw> draws;
-    if (!_walls || !_walls->depthPass) return draws;
+    if (!_walls || !_walls->textures || !_walls->textures->depthPass) return draws;
+    const TextureStore& store = _walls->textures->store;
     std::vector<WallDraw> left;
     for (std::size_t i = 0; i < plan.wallDraws.size() && i < flat.size(); ++i) {
         DepthWallDraw d{flat[i].quad, {}, 0};
@@ -305,9 +321,9 @@ std::vector<DepthWallDraw> Walkthrough::depthWallDraws(const walls::FramePlan& p
         // A resident texture without depths (a flat one) draws the whole wall flat; textures
         // not resident are left out, as the flat pass leaves them.
         for (const auto& [id, weight] : plan.wallDraws[i].textures) {
-            std::optional<DepthWallLayer> layer = _walls->store.depthLayer(id);
+            std::optional<DepthWallLayer> layer = store.depthLayer(id);
             if (!layer) {
-                all = all && !_walls->store.resident(id);
+                all = all && !store.resident(id);
                 continue;
             }
             layer->weight = static_cast<float>(weight);
@@ -323,7 +339,8 @@ std::vector<DepthWallDraw> Walkthrough::depthWallDraws(const walls::FramePlan& p
 void Walkthrough::drawViews(const walls::FrameInput& input, const std::vector<display::ScreenView>& views,
                             const render::DrawFilter& filter, const walls::FramePlan& plan, walls::FrameResult& result) {
     const glm::dmat4 caveFromWorld = glm::inverse(input.worldFromCave);
-    std::vector<WallDraw> walls = _walls ? wallDraws(plan) : std::vector<WallDraw>{};
+    const WallRuntime::Textures* textures = _walls ? _walls->textures.get() : nullptr;
+    std::vector<WallDraw> walls = textures ? wallDraws(plan) : std::vector<WallDraw>{};
     const std::vector<DepthWallDraw> depthWalls = depthWallDraws(plan, walls);
     _renderer.beginFrame(_targets, _screens);
     result.stats = forEachView(views, _targets, [&](const display::ScreenView& view) {
@@ -337,9 +354,9 @@ void Walkthrough::drawViews(const walls::FrameInput& input, const std::vector<di
             const glm::dvec3 eye = glm::dvec3(input.worldFromCave * glm::dvec4(view.frustum.eye, 1.0));
             _clusters->impostors->draw(_clusters->last.boxes, eye, view.frustum, caveFromWorld, passes);
         }
-        if (_walls) _walls->pass.draw(walls, view.frustum, caveFromWorld, _walls->store.sampler(), passes);
-        if (_walls && _walls->depthPass)
-            _walls->depthPass->draw(depthWalls, view.frustum, caveFromWorld, _walls->store.sampler(), passes);
+        if (textures) textures->pass.draw(walls, view.frustum, caveFromWorld, textures->store.sampler(), passes);
+        if (textures && textures->depthPass)
+            textures->depthPass->draw(depthWalls, view.frustum, caveFromWorld, textures->store.sampler(), passes);
         if (input.hand) {
             if (!_cursor) _cursor = std::make_unique<HandCursorPass>();
             _cursor->draw(*input.hand, view.frustum, passes);
@@ -369,7 +386,7 @@ walls::FrameResult Walkthrough::renderFrame(const walls::FrameInput& input) {
     result.texturesOverAlpha = plan.texturesOverAlpha;
     result.warpFallbacks = plan.warpFallbacks;
     result.walls = std::move(plan.walls);
-    if (_walls) result.pager = _walls->pager.stats();
+    if (_walls && _walls->textures) result.pager = _walls->textures->pager.stats();
     if (_walls && _walls->geometry) {
         result.geometry = _walls->geometry->pager.stats();
         result.geometry.residentMB = static_cast<double>(_renderer.gpu().residentPagedBytes()) / (1024.0 * 1024.0);

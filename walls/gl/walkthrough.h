@@ -100,7 +100,9 @@ public:
     // Makes `context` current. Keeps references to scene, description, display and context,
     // which must outlive it. `walls` (walls::prepareWalls, then baked: folder and manifest set)
     // empty: geometry only. `screens`: the screen indices this instance renders (empty: all),
-    // for cluster ranks. Throws Error when geometry paging is asked for with the warp transition.
+    // for cluster ranks. Throws Error when geometry paging is asked for with the warp transition,
+    // and when the control (WalkthroughSettings::wallTextures off, which pages, uploads and draws
+    // no texture) is asked for with the warp transition or a background baker.
     Walkthrough(const scenes::Scene& scene, const scenes::SceneDescription& description,
                 const display::Display& display, Context& context, std::optional<walls::WallSetup> walls,
                 WalkthroughOptions options = {}, std::vector<int> screens = {});
