@@ -140,6 +140,16 @@ TexelCrossing texelCrossing(const DepthImage& image, glm::dvec2 ta, glm::dvec2 t
     return {hi, depthHi};
 }
 
+glm::ivec2 marchDepthSize(int width, int height) {
+    const bool halved = width >= 2 && height >= 2 && width % 2 == 0 && height % 2 == 0;
+    return halved ? glm::ivec2(width / 2, height / 2) : glm::ivec2(width, height);
+}
+
+DepthImage marchDepths(DepthImage image) {
+    if (marchDepthSize(image.width, image.height) == glm::ivec2(image.width, image.height)) return image;
+    return depthBlockMinimum(image, 2, 0);  // whole 2 x 2 blocks: no remainder to fold in
+}
+
 DepthImage depthBlockMinimum(const DepthImage& image, int block, int dilate) {
     if (block < 1 || dilate < 0 || image.width < block || image.height < block ||
         image.depth.size() != static_cast<std::size_t>(image.width) * image.height)

@@ -112,6 +112,22 @@ void clampDepths(DepthImage& image, glm::dvec2 range);
 // the value: no sample of such a stretch of the ray can hit a surface nearer than that.
 // Throws cavewall::Error unless block >= 1, dilate >= 0 and the image holds a whole block.
 DepthImage depthBlockMinimum(const DepthImage& image, int block, int dilate);
+// The depths the walkthrough marches (since 5 December 2026, session 19): each 2 x 2 block of
+// the baked image replaced by its nearest depth, an image of half the width and height, when
+// both are even; otherwise the image as it is. A depth texel then covers exactly 2 x 2 colour
+// texels, so the march's texel units (the depth texture's size over the wall's) and the
+// colour's normalised coordinates still agree, and a march crosses half as many texels. Every
+// value is a baked depth, so it lies in the baked range and in the wall's span: the planner's
+// bound (depthEyeBound, whose proof needs only that the stored and ray depths lie in the span
+// and that the colour texel shown is the one at the hit) holds unchanged. The per-image bound
+// (depthWallErrorBound) is for the full image; with halved depths an edge may move by up to a
+// depth texel (tests/wallsgl/depth_wall_pass_test.cpp checks the pixels with that allowance).
+// Measured (bench --scale 2M, 512 texels, cave4 at 1024 x 1024 per screen): depth / flat 1.25
+// and 1.28 against 1.34-1.41, pooled PSNR 39.6 dB against 39.3 (README, "Depth walls").
+DepthImage marchDepths(DepthImage image);
+// The size marchDepths gives a width x height image.
+glm::ivec2 marchDepthSize(int width, int height);
+
 // The march's block (texels a side; gl::DepthTexture::skip holds depthBlockMinimum with
 // dilate 1, gl::uploadDepthTexture) and the most steps one skip test covers (each step
 // crosses at most one texel per axis, so kSkipSteps steps stay within the 3 x 3 blocks).

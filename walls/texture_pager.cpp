@@ -71,7 +71,7 @@ void TexturePager::worker() {
                 ok = depth.width == d.levels.width() && depth.height == d.levels.height();
                 if (ok) {
                     clampDepths(depth, texture.depthRange);
-                    d.depth = depthTextureData(std::move(depth));
+                    d.depth = depthTextureData(marchDepths(std::move(depth)));
                     d.depth->samplingPoint = texture.samplingPoint;
                     d.depth->range = texture.depthRange;
                 }

@@ -259,6 +259,39 @@ TEST(DepthWall, AtTheSamplingPointTheStepsCostNothing) {
 // The march's skip level (depthBlockMinimum with dilate 1): from any point of a block (or beyond
 // the last whole block, clamped to it), every texel within kSkipSteps per axis is at least as far
 // as the block's value, and the value is reached (it is a minimum, not just a lower bound).
+// The march's depths: half the size, each texel the nearest of the 2 x 2 it covers (so an empty
+// texel next to a surface takes the surface's depth, and every value is a baked one); odd sizes
+// stay as baked, so a depth texel always covers whole colour texels.
+TEST(DepthWall, MarchDepthsAreTheNearestOfEachTwoByTwoBlock) {
+    DepthImage image{6, 4, {}};
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 6; ++i) image.depth.push_back(1.0f + 0.25f * float(i) + 2.0f * float(j));
+    image.depth[0] = kNoSurface;   // block (0, 0): three surfaces and an empty texel
+    for (int k : {4, 5, 10, 11}) image.depth[static_cast<std::size_t>(k)] = kNoSurface;  // block (2, 0): empty
+    const DepthImage half = marchDepths(image);
+    ASSERT_EQ(half.width, 3);
+    ASSERT_EQ(half.height, 2);
+    for (int bj = 0; bj < 2; ++bj)
+        for (int bi = 0; bi < 3; ++bi) {
+            float nearest = kNoSurface;
+            for (int j = 2 * bj; j < 2 * bj + 2; ++j)
+                for (int i = 2 * bi; i < 2 * bi + 2; ++i) nearest = std::min(nearest, image.at(i, j));
+            EXPECT_EQ(half.at(bi, bj), nearest) << bi << ", " << bj;
+        }
+    EXPECT_EQ(half.at(0, 0), 1.25f);       // the empty texel gives way to its neighbours
+    EXPECT_EQ(half.at(2, 0), kNoSurface);  // an empty block stays empty
+    const glm::dvec2 range = depthRange(image), halfRange = depthRange(half);
+    EXPECT_GE(halfRange.x, range.x);
+    EXPECT_LE(halfRange.y, range.y);
+    EXPECT_EQ(marchDepthSize(6, 4), glm::ivec2(3, 2));
+    // Odd sizes are not halved.
+    EXPECT_EQ(marchDepthSize(3, 2), glm::ivec2(3, 2));
+    EXPECT_EQ(marchDepthSize(1, 1), glm::ivec2(1, 1));
+    const DepthImage odd{3, 2, std::vector<float>(6, 2.0f)};
+    EXPECT_EQ(marchDepths(odd).width, 3);
+    EXPECT_EQ(marchDepths(odd).depth, odd.depth);
+}
+
 TEST(DepthWall, BlockMinimumBoundsEveryTexelAStepRunCanReach) {
     for (const auto& [w, h] : {std::pair{64, 48}, std::pair{67, 21}, std::pair{8, 8}}) {
         SCOPED_TRACE(std::to_string(w) + " x " + std::to_string(h));

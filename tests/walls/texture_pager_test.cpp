@@ -278,10 +278,12 @@ TEST(TexturePager, PagesADepthWallsDepthWithItsColourAndBudgetsBoth) {
         }
     };
     const float nearest = roundsTo(0.5f, true), farthest = roundsTo(5.0f, false);
+    // Halved for the march (marchDepths): each 2 x 2 block its nearest depth. Block (0, 0) is
+    // empty, (1, 0) holds the nearest depth beside 2 m, (2, 0) is all the farthest.
     DepthImage depth{256, 256, std::vector<float>(256 * 256, 2.0f)};
-    depth.depth[0] = kNoSurface;
-    depth.depth[1] = nearest;
-    depth.depth[3] = farthest;
+    for (int k : {0, 1, 256, 257}) depth.depth[k] = kNoSurface;
+    depth.depth[3] = nearest;
+    for (int k : {4, 5, 260, 261}) depth.depth[k] = farthest;
     auto addDepth = [&](BakedTexture& t, const DepthImage& image) {
         t.depthFile = "depth_" + std::to_string(t.id) + ".depth.tif";
         writeDepthFile(dir / t.depthFile, image);
@@ -294,10 +296,10 @@ TEST(TexturePager, PagesADepthWallsDepthWithItsColourAndBudgetsBoth) {
     addDepth(m.textures[2], DepthImage{128, 128, std::vector<float>(128 * 128, 1.0f)});  // not the colour's size
     addDepth(m.textures[3], depth);
     std::ofstream(dir / m.textures[3].depthFile, std::ios::binary | std::ios::app) << "x";  // damaged
-    const std::size_t depthBytes = (256 * 256 + 32 * 32) * 4;  // the depths and their 8 x 8 skip blocks
-    // Room for exactly textures 0 and 1 with 1's depth (three colours alone would fit too).
-    const double budgetMB = (2 * kBytes + depthBytes) / (1024.0 * 1024.0);
-    ASSERT_GT(depthBytes, kBytes);
+    const std::size_t depthBytes = (128 * 128 + 16 * 16) * 4;  // the halved depths and their 8 x 8 skip blocks
+    // Room for textures 0 and 1 with 1's depth, and for three colours alone, but not for three
+    // colours and the depth.
+    const double budgetMB = (3 * kBytes + depthBytes / 2) / (1024.0 * 1024.0);
     TexturePager pager(dir, m, budgetMB, fakeDecode);
     pager.request({0, 1, 2, 3}, {});
     pager.waitIdle();
@@ -312,11 +314,13 @@ TEST(TexturePager, PagesADepthWallsDepthWithItsColourAndBudgetsBoth) {
     ASSERT_TRUE(withDepth.depth);
     EXPECT_EQ(withDepth.bytes, kBytes + depthBytes);
     EXPECT_EQ(withDepth.depth->gpuBytes(), depthBytes);
+    ASSERT_EQ(withDepth.depth->depth.width, 128);
+    ASSERT_EQ(withDepth.depth->depth.height, 128);
     EXPECT_EQ(withDepth.depth->depth.depth[0], kNoSurface);
     EXPECT_EQ(withDepth.depth->depth.depth[1], nearest);  // clamped into the baked range
-    EXPECT_EQ(withDepth.depth->depth.depth[3], farthest);
-    EXPECT_NEAR(withDepth.depth->depth.depth[2], 2.0f, depthFileError(2.0));
-    EXPECT_EQ(withDepth.depth->blocks.width, 256 / kSkipBlock);
+    EXPECT_EQ(withDepth.depth->depth.depth[2], farthest);
+    EXPECT_NEAR(withDepth.depth->depth.depth[3], 2.0f, depthFileError(2.0));
+    EXPECT_EQ(withDepth.depth->blocks.width, 128 / kSkipBlock);
     EXPECT_EQ(withDepth.depth->blocks.depth[0], nearest);
     // What the march needs beside the texels comes with them (the walkthrough keeps no copy).
     EXPECT_EQ(withDepth.depth->samplingPoint, m.textures[1].samplingPoint);

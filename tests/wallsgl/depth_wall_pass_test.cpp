@@ -49,13 +49,13 @@ scenes::Scene cardScene() {
     return s;
 }
 
-bool differs(const scenes::Image& a, const scenes::Image& b, int x, int y) {
-    // Wrong unless some reference pixel within two pixels has the same colour: an edge moves
-    // by up to a texel (nearest-texel depth, bake texel = view pixel here) and a pixel
+bool differs(const scenes::Image& a, const scenes::Image& b, int x, int y, int slack = 2) {
+    // Wrong unless some reference pixel within `slack` pixels has the same colour: an edge moves
+    // by up to a depth texel (nearest-texel depth, bake texel = view pixel here) and a pixel
     // (rasterising against resampling).
     const std::uint8_t* p = &a.rgba[(std::size_t(y) * a.width + x) * 4];
-    for (int dy = -2; dy <= 2; ++dy)
-        for (int dx = -2; dx <= 2; ++dx) {
+    for (int dy = -slack; dy <= slack; ++dy)
+        for (int dx = -slack; dx <= slack; ++dx) {
             const int u = x + dx, v = y + dy;
             if (u < 0 || v < 0 || u >= b.width || v >= b.height) continue;
             const std::uint8_t* q = &b.rgba[(std::size_t(v) * b.width + u) * 4];
@@ -66,10 +66,27 @@ bool differs(const scenes::Image& a, const scenes::Image& b, int x, int y) {
     return true;
 }
 
-class DepthWallPassTest : public GlTest {};
+class DepthWallPassTest : public GlTest {
+protected:
+    // The test of the file's header. `halved`: the depths the walkthrough marches
+    // (walls::marchDepths: each depth texel the nearest of 2 x 2 colour texels), against the
+    // full image's prediction with a depth texel (two pixels here) more allowance either side.
+    // This scene's uniform colours hide a misplaced depth (depths shifted by 15 texels pass
+    // too): the halving's values are checked in tests/walls/depth_wall_test.cpp.
+    void matchesGeometryExceptWherePredicted(bool halved);
+};
 
 TEST_F(DepthWallPassTest, MatchesGeometryFromAnotherEyeExceptWhereTheBoundPredicts) {
+    matchesGeometryExceptWherePredicted(false);
+}
+
+TEST_F(DepthWallPassTest, HalvedDepthsMatchGeometryWithinADepthTexelOfThePrediction) {
+    matchesGeometryExceptWherePredicted(true);
+}
+
+void DepthWallPassTest::matchesGeometryExceptWherePredicted(bool halved) {
     if (!context) GTEST_SKIP();
+    const int slack = halved ? 4 : 2;  // pixels: a depth texel and a pixel, as in differs()
     const scenes::Scene scene = cardScene();
     const std::vector<int> objects{0, 1};
     const walls::WallFrame frame = walls::wallFrame(kQuad);
@@ -105,7 +122,7 @@ TEST_F(DepthWallPassTest, MatchesGeometryFromAnotherEyeExceptWhereTheBoundPredic
 
     // The depth wall and the flat wall from the same eye.
     const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
-    const gl::DepthTexture depthTexture = gl::uploadDepthTexture(depth);
+    const gl::DepthTexture depthTexture = gl::uploadDepthTexture(halved ? walls::marchDepths(depth) : depth);
     auto drawWith = [&](auto&& draw) {
         target.bindAndClear(glm::vec4(0.0f));
         glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -131,8 +148,8 @@ TEST_F(DepthWallPassTest, MatchesGeometryFromAnotherEyeExceptWhereTheBoundPredic
         for (int k = 0; k <= n; ++k) {
             const glm::dvec2 p = a + (b - a) * (double(k) / n);
             const int x = static_cast<int>(std::floor(p.x / pitch)), y = static_cast<int>(std::floor((frame.height - p.y) / pitch));
-            for (int dy = -2; dy <= 2; ++dy)  // two pixels either side: texel and pixel rounding
-                for (int dx = -2; dx <= 2; ++dx)
+            for (int dy = -slack; dy <= slack; ++dy)  // either side: depth texel and pixel rounding
+                for (int dx = -slack; dx <= slack; ++dx)
                     if (x + dx >= 0 && y + dy >= 0 && x + dx < kWidth && y + dy < kHeight)
                         predicted[std::size_t(y + dy) * kWidth + x + dx] |= kind;
         }
@@ -165,8 +182,8 @@ TEST_F(DepthWallPassTest, MatchesGeometryFromAnotherEyeExceptWhereTheBoundPredic
         for (int x = 0; x < kWidth; ++x) {
             const char mask = predicted[std::size_t(y) * kWidth + x];
             const bool inside = mask != 0;
-            flatWrong += differs(flatWall, truth, x, y);
-            if (differs(depthWall, truth, x, y)) {
+            flatWrong += differs(flatWall, truth, x, y, slack);
+            if (differs(depthWall, truth, x, y, slack)) {
                 ++(inside ? wrongInside : wrongOutside);
                 // Runs along rows in a step's interval away from the border band (the bound's
                 // step term: the eye moved along x, so the opening steps open along rows).
@@ -179,24 +196,27 @@ TEST_F(DepthWallPassTest, MatchesGeometryFromAnotherEyeExceptWhereTheBoundPredic
     }
     const double de = -eye.z;
     const double widest = widestRun * pitch / de;  // radians, near the wall's centre row
-    std::printf("depth wall %d x %d: wrong outside the prediction %d, inside %d; flat wall wrong %d; widest run %d px "
+    std::printf("%sdepth wall %d x %d: wrong outside the prediction %d, inside %d; flat wall wrong %d; widest run %d px "
                 "= %.4f rad; bound steps %.4f, texel %.5f, border %.4f\n",
-                kWidth, kHeight, wrongOutside, wrongInside, flatWrong, widestRun, widest, bound.steps, bound.texel,
+                halved ? "halved " : "", kWidth, kHeight, wrongOutside, wrongInside, flatWrong, widestRun, widest, bound.steps, bound.texel,
                 bound.border);
     EXPECT_LE(wrongOutside, kWidth * kHeight / 1000);  // 0.1 %: isolated rounding at tile edges
     EXPECT_GT(wrongInside, 0);                         // the eye does see what S did not
     EXPECT_GT(flatWrong, 4 * (wrongInside + wrongOutside));
-    EXPECT_LE(widest, bound.steps + 2.0 * bound.texel + 2.0 * pitch / de);
-    EXPECT_GE(widest, 0.6 * bound.steps);
+    EXPECT_LE(widest, bound.steps + 2.0 * bound.texel + slack * pitch / de);
+    // The bound is tight for the depths it was derived from (a bound 2x too loose fails); the
+    // halved depths only have to stay within it (here they are wrong on fewer pixels than the
+    // full ones: 3,779 inside the prediction against 6,092, widest run 5 pixels against 20).
+    if (!halved) EXPECT_GE(widest, 0.6 * bound.steps);
     if (::testing::Test::HasFailure()) {
         // For a look: the three images and the wrong pixels (red outside, yellow inside the prediction).
-        const std::filesystem::path dir = testOutputFolder("depth_wall_pass");
+        const std::filesystem::path dir = testOutputFolder(halved ? "depth_wall_pass_halved" : "depth_wall_pass");
         scenes::Image wrong = truth;
         for (int y = 0; y < kHeight; ++y)
             for (int x = 0; x < kWidth; ++x) {
                 std::uint8_t* p = &wrong.rgba[(std::size_t(y) * kWidth + x) * 4];
                 const bool inside = predicted[std::size_t(y) * kWidth + x] != 0;
-                if (differs(depthWall, truth, x, y)) p[0] = 255, p[1] = inside ? 255 : 0, p[2] = 0;
+                if (differs(depthWall, truth, x, y, slack)) p[0] = 255, p[1] = inside ? 255 : 0, p[2] = 0;
                 else if (inside) p[2] = 255;
             }
         scenes::writeImage(dir / "truth.png", truth);
