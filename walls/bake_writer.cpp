@@ -109,6 +109,9 @@ void BakeWriter::worker() {
             job.entry.hash = walls::hashFile(file);
             lap(spent.hash);
             if (job.depth) {
+                // What the march reads (walls::marchDepths): a quarter of the texels when both
+                // sides are even.
+                *job.depth = marchDepths(std::move(*job.depth));
                 const std::filesystem::path depthFile = _folder / job.entry.depthFile;
                 writeDepthFile(depthFile, *job.depth);
                 lap(spent.encode);

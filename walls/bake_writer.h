@@ -35,8 +35,9 @@ public:
     // Queues `image` (straight alpha, sRGB, as read from the render target) to be written as
     // <folder>/<entry.file>; `entry` comes back with bytes and hash filled in.
     void submit(walls::BakedTexture entry, scenes::Image image);
-    // As above for a depth wall: also writes `depth` as <folder>/<entry.depthFile>
-    // (walls/depth_file.h) and fills depthBytes, depthHash and depthRange.
+    // As above for a depth wall: also writes the march's depths of `depth` (marchDepths: halved
+    // when both sides are even) as <folder>/<entry.depthFile> (walls/depth_file.h) and fills
+    // depthBytes, depthHash and depthRange (of what it wrote).
     void submit(walls::BakedTexture entry, scenes::Image image, DepthImage depth);
     // Entries finished since the last call; `wait`: block until at least one is (or none is
     // pending). Rethrows the first worker error (cavewall::Error naming the file).

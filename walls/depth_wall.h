@@ -112,8 +112,8 @@ void clampDepths(DepthImage& image, glm::dvec2 range);
 // the value: no sample of such a stretch of the ray can hit a surface nearer than that.
 // Throws cavewall::Error unless block >= 1, dilate >= 0 and the image holds a whole block.
 DepthImage depthBlockMinimum(const DepthImage& image, int block, int dilate);
-// The depths the walkthrough marches (since 5 December 2026, session 19): each 2 x 2 block of
-// the baked image replaced by its nearest depth, an image of half the width and height, when
+// The depths the walkthrough marches (since 5 December 2026, session 19; the bake writes them,
+// walls::BakeWriter): each 2 x 2 block of the rendered image replaced by its nearest depth, an image of half the width and height, when
 // both are even; otherwise the image as it is. A depth texel then covers exactly 2 x 2 colour
 // texels, so the march's texel units (the depth texture's size over the wall's) and the
 // colour's normalised coordinates still agree, and a march crosses half as many texels. Every

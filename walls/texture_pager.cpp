@@ -68,10 +68,11 @@ void TexturePager::worker() {
             if (ok) d.levels = _decoder(path);
             if (ok && !texture.depthFile.empty()) {
                 DepthImage depth = readDepthFile(_folder / texture.depthFile);
-                ok = depth.width == d.levels.width() && depth.height == d.levels.height();
+                // The file holds the march's depths (marchDepths, done by the bake).
+                ok = glm::ivec2(depth.width, depth.height) == marchDepthSize(d.levels.width(), d.levels.height());
                 if (ok) {
                     clampDepths(depth, texture.depthRange);
-                    d.depth = depthTextureData(marchDepths(std::move(depth)));
+                    d.depth = depthTextureData(std::move(depth));
                     d.depth->samplingPoint = texture.samplingPoint;
                     d.depth->range = texture.depthRange;
                 }

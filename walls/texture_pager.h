@@ -36,9 +36,9 @@ namespace cavewall::walls {
 struct DecodedTexture {
     int id = 0;
     TextureLevels levels;                // MIP levels, largest first: RGBA8 premultiplied or blocks
-    // Depth walls: the texture's depth file (when the manifest lists one), decoded, clamped to
-    // its baked range (clampDepths), halved for the march (marchDepths) and with its skip
-    // blocks: paged, budgeted and evicted with the colour.
+    // Depth walls: the texture's depth file (when the manifest lists one; the march's halved
+    // depths, marchDepthSize of the colour's size), decoded, clamped to its baked range
+    // (clampDepths) and with its skip blocks: paged, budgeted and evicted with the colour.
     std::optional<DepthTextureData> depth;
     std::size_t bytes = 0;               // GPU bytes, summed over levels (compressed when blocks),
                                          // the depth texture's included

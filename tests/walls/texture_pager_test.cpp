@@ -278,22 +278,23 @@ TEST(TexturePager, PagesADepthWallsDepthWithItsColourAndBudgetsBoth) {
         }
     };
     const float nearest = roundsTo(0.5f, true), farthest = roundsTo(5.0f, false);
-    // Halved for the march (marchDepths): each 2 x 2 block its nearest depth. Block (0, 0) is
-    // empty, (1, 0) holds the nearest depth beside 2 m, (2, 0) is all the farthest.
+    // Written halved for the march (marchDepths), as the bake writes it: each 2 x 2 block its
+    // nearest depth. Block (0, 0) is empty, (1, 0) holds the nearest depth beside 2 m, (2, 0) is
+    // all the farthest.
     DepthImage depth{256, 256, std::vector<float>(256 * 256, 2.0f)};
     for (int k : {0, 1, 256, 257}) depth.depth[k] = kNoSurface;
     depth.depth[3] = nearest;
     for (int k : {4, 5, 260, 261}) depth.depth[k] = farthest;
     auto addDepth = [&](BakedTexture& t, const DepthImage& image) {
         t.depthFile = "depth_" + std::to_string(t.id) + ".depth.tif";
-        writeDepthFile(dir / t.depthFile, image);
+        writeDepthFile(dir / t.depthFile, marchDepths(image));  // as the bake writes it
         t.depthBytes = std::filesystem::file_size(dir / t.depthFile);
         t.depthHash = hashFile(dir / t.depthFile);
-        t.depthRange = depthRange(image);
+        t.depthRange = depthRange(marchDepths(image));
     };
     addDepth(m.textures[1], depth);
     m.textures[1].samplingPoint = {1.5, -2.0, 3.25};
-    addDepth(m.textures[2], DepthImage{128, 128, std::vector<float>(128 * 128, 1.0f)});  // not the colour's size
+    addDepth(m.textures[2], DepthImage{100, 100, std::vector<float>(100 * 100, 1.0f)});  // not the colour's size
     addDepth(m.textures[3], depth);
     std::ofstream(dir / m.textures[3].depthFile, std::ios::binary | std::ios::app) << "x";  // damaged
     const std::size_t depthBytes = (128 * 128 + 16 * 16) * 4;  // the halved depths and their 8 x 8 skip blocks

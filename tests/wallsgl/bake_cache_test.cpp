@@ -369,7 +369,7 @@ TEST(BakeFileNames, TextureKeyRoundTripsThroughTheFileName) {
 }
 
 // Depth walls (issue 16): the wall kind keys the folder; every texture gets a valid depth file
-// whose range is that of its depths; a re-bake renders nothing, and a damaged depth file is
+// of the march's depths (halved where both sides are even) whose range is that of its depths; a re-bake renders nothing, and a damaged depth file is
 // re-baked (only that texture).
 TEST_F(BakeCacheTest, DepthBakesKeyTheirKindAndKeepDepthFilesValid) {
     const BakeResult flat = bakeScene(request);
@@ -385,7 +385,8 @@ TEST_F(BakeCacheTest, DepthBakesKeyTheirKindAndKeepDepthFilesValid) {
         ASSERT_FALSE(t.depthFile.empty());
         EXPECT_TRUE(walls::textureFileValid(depth.folder, t));
         const walls::DepthImage d = walls::readDepthFile(depth.folder / t.depthFile);
-        EXPECT_EQ(glm::ivec2(d.width, d.height), t.resolution);
+        // The march's depths (walls::marchDepths): half the size when both sides are even.
+        EXPECT_EQ(glm::ivec2(d.width, d.height), walls::marchDepthSize(t.resolution.x, t.resolution.y));
         // 16-bit codes on disk (walls/depth_file.h): the range read back is the baked one
         // within the codes' precision, and exactly it once clamped as the loader does.
         walls::DepthImage clamped = d;

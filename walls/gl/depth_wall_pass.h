@@ -44,7 +44,7 @@
 // and 1.19 at 128 (four runs, 1.14-1.26); 1.31 over fourteen runs in session 18. Since session 19
 // the frame's clear goes with its drawing (gl::SceneRenderer::beginFrame), which took 3-4 ms off
 // both kinds of frame and none off this pass: 1.34-1.41 at 512 texels (four runs), 1.15-1.21 at
-// 128 (two); then the texture pager hands the pass halved depths (walls::marchDepths: each
+// 128 (two); then the bake writes, and the pass reads, halved depths (walls::marchDepths: each
 // depth texel the nearest of 2 x 2 colour texels, so rays cross half as many): 1.22-1.30 at 512
 // texels (five runs) and 1.23 at 128, at 39.6 dB instead of 39.3. Tried and
 // not kept: half-float depths (GL_R16F, half the GPU bytes; 31.4 ms a layer, no faster) and at
