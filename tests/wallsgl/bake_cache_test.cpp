@@ -353,6 +353,11 @@ TEST(BakeResolution, PlanResolutionIsCappedKeepingTheAspect) {
         SCOPED_TRACE(std::to_string(c.planned.x) + " x " + std::to_string(c.planned.y) + " cap " + std::to_string(c.cap));
         EXPECT_EQ(bakeResolution(c.planned, c.cap), c.expected);
     }
+    // Depth walls: even sides, so that the march reads halved depths; never past the cap.
+    EXPECT_EQ(bakeResolution({101, 51}, 1024, walls::WallKind::Depth), glm::ivec2(102, 52));
+    EXPECT_EQ(bakeResolution({4000, 1000}, 1024, walls::WallKind::Depth), glm::ivec2(1024, 256));
+    EXPECT_EQ(bakeResolution({5000, 1}, 16, walls::WallKind::Depth), glm::ivec2(16, 2));
+    EXPECT_EQ(bakeResolution({17, 3}, 17, walls::WallKind::Depth), glm::ivec2(16, 4));
 }
 
 TEST(BakeFileNames, TextureKeyRoundTripsThroughTheFileName) {
