@@ -74,6 +74,8 @@ protected:
     // This scene's uniform colours hide a misplaced depth (depths shifted by 15 texels pass
     // too): the halving's values are checked in tests/walls/depth_wall_test.cpp.
     void matchesGeometryExceptWherePredicted(bool halved);
+    // The shader's march against walls::reproject, pixel by pixel (TheShaderMarchesAsItsReference).
+    void marchesAsItsReference(bool halved);
 };
 
 TEST_F(DepthWallPassTest, MatchesGeometryFromAnotherEyeExceptWhereTheBoundPredicts) {
@@ -382,25 +384,38 @@ namespace {
 // before the crossing. A march that steps or refines otherwise fails: the crossing's middle
 // texel on the wrong axis (337-909 wrong pixels against at most 76), no crossing, or no
 // bisection of the long steps (464-5364).
-TEST_F(DepthWallPassTest, TheShaderMarchesAsItsReference) {
+TEST_F(DepthWallPassTest, TheShaderMarchesAsItsReference) { marchesAsItsReference(false); }
+
+// The same with the depths the walkthrough marches (walls::marchDepths of a colour-sized image):
+// colour texels half the depth texels' size, so the colour the shader samples at the hit is
+// where the reference's hit says, to the colour texel.
+TEST_F(DepthWallPassTest, TheShaderMarchesHalvedDepthsAsItsReference) { marchesAsItsReference(true); }
+
+void DepthWallPassTest::marchesAsItsReference(bool halved) {
     if (!context) GTEST_SKIP();
-    constexpr int tw = 64, th = 48, vw = 320, vh = 240;  // texels; pixels of the view (5 a texel)
+    constexpr int tw = 64, th = 48, vw = 320, vh = 240;  // depth texels; pixels of the view (5 a texel)
+    const int scale = halved ? 2 : 1, cw = tw * scale, ch = th * scale;  // colour texels
     const walls::WallFrame frame = walls::wallFrame(kQuad);
     std::srand(17);
-    walls::DepthImage depth{tw, th, std::vector<float>(std::size_t(tw) * th)};
-    for (int by = 0; by < th; by += 4)
-        for (int bx = 0; bx < tw; bx += 4) {
+    walls::DepthImage depth{cw, ch, std::vector<float>(std::size_t(cw) * ch)};
+    for (int by = 0; by < ch; by += 4 * scale)
+        for (int bx = 0; bx < cw; bx += 4 * scale) {
             const int r = std::rand() % 16;
             const float d = r == 0 ? walls::kNoSurface : 1.0f + 3.0f * float(r) / 15.0f;
-            for (int j = by; j < by + 4; ++j)
-                for (int i = bx; i < bx + 4; ++i) depth.depth[std::size_t(j) * tw + i] = d;
+            for (int j = by; j < by + 4 * scale; ++j)
+                for (int i = bx; i < bx + 4 * scale; ++i) depth.depth[std::size_t(j) * cw + i] = d;
         }
+    if (halved) depth = walls::marchDepths(std::move(depth));
+    ASSERT_EQ(glm::ivec2(depth.width, depth.height), glm::ivec2(tw, th));
     const glm::dvec2 range = walls::depthRange(depth);
-    scenes::Image colour{"ids", tw, th, std::vector<std::uint8_t>(std::size_t(tw) * th * 4, 255)};
-    for (int j = 0; j < th; ++j)
-        for (int i = 0; i < tw; ++i) {
-            std::uint8_t* p = &colour.rgba[(std::size_t(j) * tw + i) * 4];
-            p[0] = static_cast<std::uint8_t>(4 * i + 2), p[1] = static_cast<std::uint8_t>(5 * j + 2), p[2] = 128;
+    // Each colour texel's id in red and green (4i + 2, 5j + 2; halved 2i + 1, 2j + 1).
+    const glm::ivec2 idStep = halved ? glm::ivec2(2, 2) : glm::ivec2(4, 5), idBase = halved ? glm::ivec2(1) : glm::ivec2(2);
+    scenes::Image colour{"ids", cw, ch, std::vector<std::uint8_t>(std::size_t(cw) * ch * 4, 255)};
+    for (int j = 0; j < ch; ++j)
+        for (int i = 0; i < cw; ++i) {
+            std::uint8_t* p = &colour.rgba[(std::size_t(j) * cw + i) * 4];
+            p[0] = static_cast<std::uint8_t>(idStep.x * i + idBase.x), p[1] = static_cast<std::uint8_t>(idStep.y * j + idBase.y);
+            p[2] = 128;
         }
     const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
     const gl::DepthTexture depthTexture = gl::uploadDepthTexture(depth);
@@ -441,8 +456,9 @@ TEST_F(DepthWallPassTest, TheShaderMarchesAsItsReference) {
                     continue;
                 }
                 ++hits;
-                const glm::dvec2 t(ref.texture.x / frame.width * tw, (frame.height - ref.texture.y) / frame.height * th);
-                const int gi = (int(p[0]) - 2 + 2) / 4, gj = (int(p[1]) - 2 + 2) / 5;  // nearest id
+                const glm::dvec2 t(ref.texture.x / frame.width * cw, (frame.height - ref.texture.y) / frame.height * ch);
+                const int gi = (int(p[0]) - idBase.x + idStep.x / 2) / idStep.x;  // nearest id
+                const int gj = (int(p[1]) - idBase.y + idStep.y / 2) / idStep.y;
                 const bool same = shown && gi == int(std::floor(t.x)) && gj == int(std::floor(t.y));
                 if (same) continue;
                 const double fx = t.x - std::floor(t.x), fy = t.y - std::floor(t.y);
@@ -452,8 +468,8 @@ TEST_F(DepthWallPassTest, TheShaderMarchesAsItsReference) {
                 if (nearEdge && neighbour) ++edges;
                 else ++wrong;
             }
-        std::printf("march against reference, at most %d steps: %d of %d pixels hit, %d on a texel edge, %d wrong\n",
-                    settings.maxSteps, hits, vw * vh, edges, wrong);
+        std::printf("march against reference%s, at most %d steps: %d of %d pixels hit, %d on a texel edge, %d wrong\n",
+                    halved ? " (halved depths)" : "", settings.maxSteps, hits, vw * vh, edges, wrong);
         EXPECT_GT(hits, vw * vh / 2);
         EXPECT_LE(wrong, vw * vh / 1000);  // float against double: a few pixels at most
     }
