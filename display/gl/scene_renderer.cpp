@@ -158,9 +158,7 @@ void SceneRenderer::beginFrame(const RenderTargets& targets, const std::vector<i
 void SceneRenderer::endFrame(const RenderTargets& targets) {
     for (const glm::ivec2 image : _marked) {
         targets.bind(image.x, image.y);
-        glDisable(GL_SCISSOR_TEST);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        clearTo(_settings.clearColor);
+        clearWholeImage();
     }
     _marked.clear();
 }
@@ -169,10 +167,14 @@ bool SceneRenderer::clearIfMarked(int screen, int image) {
     const auto marked = std::find(_marked.begin(), _marked.end(), glm::ivec2(screen, image));
     if (marked == _marked.end()) return false;
     _marked.erase(marked);
+    clearWholeImage();
+    return true;
+}
+
+void SceneRenderer::clearWholeImage() {
     glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     clearTo(_settings.clearColor);
-    return true;
 }
 
 ViewStats SceneRenderer::renderView(const display::ScreenView& view, const render::RenderList& list) {

@@ -179,6 +179,8 @@ private:
     // Clears the bound image (all of it, every channel) if beginFrame marked image `image` of
     // `screen`; whether it did.
     bool clearIfMarked(int screen, int image);
+    // Clears the bound image, all of it and every channel, to the clear colour.
+    void clearWholeImage();
     ViewStats draw(const render::RenderList& list);
     void upload(ViewBuffers& buffers);
     void groupBySet(const render::RenderList& list);

@@ -78,9 +78,8 @@ std::uint64_t settingsKey(const BakeSettings& s) {
     h.text("cavewall bake settings v1");
     h.integer(s.maxResolution).integer(s.tileSize).number(s.ambient);
     // Flat bakes keep their keys (and caches); depth bakes get others (their files differ).
-    if (s.kind == walls::WallKind::Depth) h.text("depth wall v1");
     // Depth files hold the march's halved depths since session 19 (walls::marchDepths).
-    if (s.kind == walls::WallKind::Depth) h.text("march depths v1");
+    if (s.kind == walls::WallKind::Depth) h.text("depth wall v1").text("march depths v1");
     // Full-detail bakes keep their keys; levels of detail draw other pixels.
     if (s.lodTexels > 0.0) h.text("lod texels v1").number(s.lodTexels);
     // RGBA8 bakes keep their keys; block formats store other files (walls/texture_blocks.h).
