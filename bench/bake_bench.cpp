@@ -74,7 +74,7 @@ void BM_BakeTexture(benchmark::State& state) {
         const walls::Texture& t = plan.textures[i++ % plan.textures.size()];
         const int side = plan.walls[t.wall].cells[0] == t.cell ? 0 : 1;
         const walls::WallContents c = walls::wallContents(scene, d, table, t.wall, side);
-        const glm::ivec2 res = gl::bakeResolution(t.resolution, cap);
+        const glm::ivec2 res = walls::bakeResolution(t.resolution, cap);
         const Clock::time_point a = Clock::now();
         const scenes::Image image = renderer.render(walls::quadSeenFrom(plan.walls[t.wall].quad, side), t.samplingPoint, res, c.baked);
         const Clock::time_point b = Clock::now();
@@ -130,7 +130,7 @@ void BM_BakeLodAgainstFullDetail(benchmark::State& state) {
             const int side = setup.plan.walls[t.wall].cells[0] == t.cell ? 0 : 1;
             const display::ScreenQuad quad = walls::quadSeenFrom(setup.plan.walls[t.wall].quad, side);
             const std::vector<int>& objects = setup.contents.at({t.wall, side}).baked;
-            const glm::ivec2 res = gl::bakeResolution(t.resolution, 512);
+            const glm::ivec2 res = walls::bakeResolution(t.resolution, 512);
             const scenes::Image a = full.render(quad, t.samplingPoint, res, objects);
             fullDraw += full.lastTiming().drawMs, fullRead += full.lastTiming().readMs;
             fullTris += double(full.lastStats().triangles);

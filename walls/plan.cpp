@@ -84,6 +84,14 @@ glm::ivec2 capResolution(glm::dvec2 texels, int maxResolution) {
     return glm::max(glm::ivec2(glm::round(texels * (double(maxResolution) / largest))), glm::ivec2(1));
 }
 
+glm::ivec2 bakeResolution(glm::ivec2 planned, int maxResolution, WallKind kind) {
+    glm::ivec2 r = capResolution(glm::dvec2(planned), maxResolution);
+    if (kind == WallKind::Depth)
+        for (int axis = 0; axis < 2; ++axis)
+            if (r[axis] % 2 != 0) r[axis] += r[axis] + 1 <= maxResolution ? 1 : -1;
+    return r;
+}
+
 glm::ivec2 textureResolution(double nearest, const display::ScreenQuad& q, const PlanOptions& options) {
     const display::ScreenBasis b = display::screenBasis(q);
     double texel = texelSize(nearest, options.pixelsPerDegree);

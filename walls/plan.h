@@ -167,9 +167,15 @@ Plan planZones(const scenes::SceneDescription& description, const PlanOptions& o
 
 // `texels` (at least one per side) scaled down, if its longer side is over maxResolution, so that
 // side is maxResolution: the aspect is kept, so texels stay as square as the wall asks for. The
-// plan and the bake (gl::bakeResolution) cap alike, so a depth plan capped at the bake's size
+// plan and the bake (bakeResolution) cap alike, so a depth plan capped at the bake's size
 // proves its bound for the texels the bake renders.
 glm::ivec2 capResolution(glm::dvec2 texels, int maxResolution);
+
+// The resolution a texture is baked at (gl::WallBaker): the plan's, capped by capResolution.
+// Depth walls round each odd side up to even (down when it is an odd maxResolution), so that
+// every texture's march reads halved depths (marchDepths); texels only get finer, which the
+// planner's bound allows.
+glm::ivec2 bakeResolution(glm::ivec2 planned, int maxResolution, WallKind kind = WallKind::Flat);
 
 // The texels of a texture whose valid region's nearest point is `nearestDistance` metres from
 // `wall`: pixelsPerDegree at that distance (texelSize), capped by capResolution.

@@ -296,7 +296,33 @@ TEST(DepthPlan, SpansAreCheckedAndCarriedByTheJson) {
     EXPECT_EQ(back.textures[0].maxError, plan.textures[0].maxError);
 }
 
-// The cap keeps each texture's aspect, as the bake's does (gl::bakeResolution): a depth plan
+// The bake's resolution (gl::WallBaker bakes at bakeResolution): the plan's, capped keeping the
+// aspect; depth walls' sides even.
+TEST(BakeResolution, PlanResolutionIsCappedKeepingTheAspect) {
+    struct Case {
+        glm::ivec2 planned;
+        int cap;
+        glm::ivec2 expected;
+    };
+    const Case cases[] = {
+        {{100, 50}, 1024, {100, 50}},     // within the cap: as planned
+        {{4000, 1000}, 1024, {1024, 256}},  // scaled by 1024 / 4000, aspect 4:1 kept
+        {{300, 3000}, 64, {6, 64}},       // 300 * 64 / 3000 = 6.4 rounds to 6
+        {{5000, 1}, 16, {16, 1}},         // never below one texel
+        {{0, 0}, 16, {1, 1}},             // a plan without resolutions still bakes one texel
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(std::to_string(c.planned.x) + " x " + std::to_string(c.planned.y) + " cap " + std::to_string(c.cap));
+        EXPECT_EQ(bakeResolution(c.planned, c.cap), c.expected);
+    }
+    // Depth walls: even sides, so that the march reads halved depths; never past the cap.
+    EXPECT_EQ(bakeResolution({101, 51}, 1024, WallKind::Depth), glm::ivec2(102, 52));
+    EXPECT_EQ(bakeResolution({4000, 1000}, 1024, WallKind::Depth), glm::ivec2(1024, 256));
+    EXPECT_EQ(bakeResolution({5000, 1}, 16, WallKind::Depth), glm::ivec2(16, 2));
+    EXPECT_EQ(bakeResolution({17, 3}, 17, WallKind::Depth), glm::ivec2(16, 4));
+}
+
+// The cap keeps each texture's aspect, as the bake's does (bakeResolution): a depth plan
 // capped at the bake's size proves its texel term for exactly the texels baked, and a wall
 // wider than high is not baked square (before session 18 each side was clamped alone, so the
 // depth bake of the plant held 1.42x the flat bake's texels). Flat zones do not depend on the

@@ -336,30 +336,6 @@ TEST_F(BakeCacheTest, SeveralDrawingThreadsWriteTheSameFiles) {
     EXPECT_EQ(three.trianglesDrawn, one.trianglesDrawn);
 }
 
-TEST(BakeResolution, PlanResolutionIsCappedKeepingTheAspect) {
-    struct Case {
-        glm::ivec2 planned;
-        int cap;
-        glm::ivec2 expected;
-    };
-    const Case cases[] = {
-        {{100, 50}, 1024, {100, 50}},     // within the cap: as planned
-        {{4000, 1000}, 1024, {1024, 256}},  // scaled by 1024 / 4000, aspect 4:1 kept
-        {{300, 3000}, 64, {6, 64}},       // 300 * 64 / 3000 = 6.4 rounds to 6
-        {{5000, 1}, 16, {16, 1}},         // never below one texel
-        {{0, 0}, 16, {1, 1}},             // a plan without resolutions still bakes one texel
-    };
-    for (const Case& c : cases) {
-        SCOPED_TRACE(std::to_string(c.planned.x) + " x " + std::to_string(c.planned.y) + " cap " + std::to_string(c.cap));
-        EXPECT_EQ(bakeResolution(c.planned, c.cap), c.expected);
-    }
-    // Depth walls: even sides, so that the march reads halved depths; never past the cap.
-    EXPECT_EQ(bakeResolution({101, 51}, 1024, walls::WallKind::Depth), glm::ivec2(102, 52));
-    EXPECT_EQ(bakeResolution({4000, 1000}, 1024, walls::WallKind::Depth), glm::ivec2(1024, 256));
-    EXPECT_EQ(bakeResolution({5000, 1}, 16, walls::WallKind::Depth), glm::ivec2(16, 2));
-    EXPECT_EQ(bakeResolution({17, 3}, 17, walls::WallKind::Depth), glm::ivec2(16, 4));
-}
-
 TEST(BakeFileNames, TextureKeyRoundTripsThroughTheFileName) {
     EXPECT_EQ(textureFileName(7, 0x0123456789abcdefull), "tex_0007_0123456789abcdef.tx");
     EXPECT_EQ(walls::textureKeyOf("tex_0007_0123456789abcdef.tx"), 0x0123456789abcdefull);

@@ -46,14 +46,6 @@ void validateBakeSettings(const BakeSettings& s) {
     if (!(s.lodTexels >= 0.0 && s.lodTexels <= 4.0)) fail("lodTexels", "[0, 4]", std::to_string(s.lodTexels));
 }
 
-glm::ivec2 bakeResolution(glm::ivec2 planned, int maxResolution, walls::WallKind kind) {
-    glm::ivec2 r = walls::capResolution(glm::dvec2(planned), maxResolution);
-    if (kind == walls::WallKind::Depth)
-        for (int axis = 0; axis < 2; ++axis)
-            if (r[axis] % 2 != 0) r[axis] += r[axis] + 1 <= maxResolution ? 1 : -1;
-    return r;
-}
-
 std::filesystem::path defaultCacheFolder() {
     if (const char* cache = std::getenv("CAVEWALL_CACHE"); cache && *cache) return cache;
     if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "cavewall";
@@ -286,7 +278,7 @@ void Bake::key() {
 }
 
 Item Bake::itemOf(const walls::Texture& t) const {
-    Item item{&t, sideOf(_plan, t), bakeResolution(t.resolution, _request.settings.maxResolution, _request.settings.kind),
+    Item item{&t, sideOf(_plan, t), walls::bakeResolution(t.resolution, _request.settings.maxResolution, _request.settings.kind),
               {}};
     item.entry = walls::BakedTexture{};
     item.entry.id = t.id, item.entry.cell = t.cell, item.entry.wall = t.wall;

@@ -71,12 +71,6 @@ struct BakeSettings {
 // Throws cavewall::Error naming the setting when it is out of range.
 void validateBakeSettings(const BakeSettings& settings);
 
-// The resolution a texture is baked at: the plan's, scaled down to fit maxResolution (at least
-// 1 texel per side). Depth walls round each odd side up to even (down when it is an odd
-// maxResolution), so that every texture's march reads halved depths (walls::marchDepths);
-// texels only get finer, which the planner's bound allows.
-glm::ivec2 bakeResolution(glm::ivec2 planned, int maxResolution, walls::WallKind kind = walls::WallKind::Flat);
-
 struct BakeProgress {
     int done = 0, total = 0;        // textures finished (baked or reused) of all in the plan
     int baked = 0, reused = 0;
