@@ -302,6 +302,40 @@ DepthWallBound depthWallErrorBound(const DepthImage& image, const WallFrame& f, 
     return b;
 }
 
+MarchBound marchErrorBound(const DepthImage& full, const WallFrame& f, glm::dvec3 eye, glm::dvec3 sample,
+                           glm::dvec2 range) {
+    const DepthImage march = marchDepths(full);
+    const int b = full.width / march.width;  // colour texels per march texel, per axis (1 or 2)
+    const double de = -eye.z, ds = -sample.z;
+    auto k = [&](double d) { return std::isfinite(d) ? d / (de + d) : 1.0; };
+    MarchBound bound;
+    for (int bj = 0; bj < march.height; ++bj)
+        for (int bi = 0; bi < march.width; ++bi) {
+            const double m = march.at(bi, bj);
+            if (!std::isfinite(m)) continue;
+            // The deepest the ray can be on entering: the neighbour it comes from, missed.
+            double entry = m;
+            for (int dj = -1; dj <= 1; ++dj)
+                for (int di = -1; di <= 1; ++di) {
+                    const int i = bi + di, j = bj + dj;
+                    const bool inside = i >= 0 && j >= 0 && i < march.width && j < march.height;
+                    const double a = inside ? march.at(i, j) : kNoSurface;
+                    entry = std::max(entry, std::isfinite(a) ? a : range.y);
+                }
+            const double kEntry = k(entry), kHit = k((m - 1e-5 * ds) / (1.0 + 1e-5));
+            for (int j = bj * b; j < bj * b + b; ++j)
+                for (int i = bi * b; i < bi * b + b; ++i) {
+                    const double d = full.at(i, j);
+                    if (!std::isfinite(d)) continue;
+                    const double dk = std::max(kEntry - k(d), k(d) - kHit);
+                    const glm::dvec2 t = texelCentre(f, full.width, full.height, i, j);
+                    bound.depth = std::max(bound.depth, dk * glm::length(parallaxVector(eye, sample, t)) / de);
+                }
+        }
+    bound.texel = 0.5 * std::hypot(f.width / full.width, f.height / full.height) * std::max(1.0, de / ds) / de;
+    return bound;
+}
+
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;

@@ -113,17 +113,16 @@ void clampDepths(DepthImage& image, glm::dvec2 range);
 // Throws cavewall::Error unless block >= 1, dilate >= 0 and the image holds a whole block.
 DepthImage depthBlockMinimum(const DepthImage& image, int block, int dilate);
 // The depths the walkthrough marches (since 5 December 2026, session 19; the bake writes them,
-// walls::BakeWriter): each 2 x 2 block of the rendered image replaced by its nearest depth, an image of half the width and height, when
-// both are even; otherwise the image as it is. A depth texel then covers exactly 2 x 2 colour
-// texels, so the march's texel units (the depth texture's size over the wall's) and the
-// colour's normalised coordinates still agree, and a march crosses half as many texels. Every
-// value is a baked depth, so it lies in the baked range and in the wall's span: the planner's
-// bound (depthEyeBound, whose proof needs only that the stored and ray depths lie in the span
-// and that the colour texel shown is the one at the hit) holds unchanged. The per-image bound
-// (depthWallErrorBound) is for the full image; with halved depths an edge may move by up to a
-// depth texel (tests/wallsgl/depth_wall_pass_test.cpp checks the pixels with that allowance).
-// Measured (bench --scale 2M, 512 texels, cave4 at 1024 x 1024 per screen): depth / flat 1.25
-// and 1.28 against 1.34-1.41, pooled PSNR 39.6 dB against 39.3 (README, "Depth walls").
+// walls::BakeWriter): each 2 x 2 block of the rendered image replaced by its nearest depth, an
+// image of half the width and height, when both are even; otherwise the image as it is. A depth
+// texel then covers exactly 2 x 2 colour texels, so the march's texel units (the depth
+// texture's size over the wall's) and the colour's normalised coordinates still agree, and a
+// march crosses half as many texels. Every value is a baked depth, so it lies in the baked
+// range and in the wall's span: the planner's bound (depthEyeBound, whose proof needs only that
+// the stored and ray depths lie in the span and that the colour texel shown is the one at the
+// hit) holds unchanged. Per image, marchErrorBound bounds what the halved march draws
+// (depthWallErrorBound is for full depths); a hole narrower than a depth texel is sealed, and
+// that bound counts the error. Measured: README, "The march reads halved depths".
 DepthImage marchDepths(DepthImage image);
 // The size marchDepths gives a width x height image.
 glm::ivec2 marchDepthSize(int width, int height);
@@ -242,6 +241,39 @@ struct DepthWallBound {
 };
 DepthWallBound depthWallErrorBound(const DepthImage& image, const WallFrame& frame, glm::dvec3 eye,
                                    glm::dvec3 samplingPoint);
+
+// The per-image form of the planner's bound below, for the depths the walkthrough marches
+// (marchDepths of `full`, the depth image as baked; `range` the march's, depthRange of `full`).
+// It bounds what a drawn pixel shows, as the planner's claim does: the angle at E between the
+// pixel's direction and the true direction of the scene point whose colour it shows.
+// Claim. Let a march texel B hold m_B, the nearest of the full depths d_c of its colour texels c
+// (one texel, or 2 x 2 when marchDepths halves), and let s_B be the largest of m_B and its eight
+// neighbours' values (range.y for a neighbour outside the image or empty). A pixel the march
+// draws from B, showing colour texel c of B with d_c finite, is within
+//   depth + texel,  depth = max over such (B, c) of  dk |v(T_c)| / D_E,
+//   dk = max(k(s_B) - k(d_c), k(d_c) - k(m_B^-)),  m_B^- = (m_B - 1e-5 D_S) / (1 + 1e-5),
+//   texel = 0.5 h max(1, D_E / D_S) / D_E, h the colour texel's diagonal.
+// Proof. With the planner's proof's notation, W - W_P = (T - T_c)(1 + k(s)(D_E / D_S - 1)) +
+// (k(s) - k(d_c)) v(T_c), the first part within the texel term. The hit test at B passes only
+// for s >= m_B^- (hitSigma with its tolerance, in depth), and d_c >= m_B (the nearest), so
+// k(s) - k(d_c) >= k(m_B^-) - k(d_c). Above: the hit is where the ray enters B or reaches m_B in
+// it, whichever is later (texelCrossing). Reaching it gives s <= m_B <= d_c. Entering it, the
+// ray comes from an edge or corner neighbour A, in which it missed just before (texelCrossing
+// finds the first hit in the last step exactly): s <= m_A, or s <= range.y where A is empty or
+// outside. So k(s) - k(d_c) <= k(s_B) - k(d_c). Rigorous for marches whose last step crosses at
+// most a texel per axis (maxSteps not reached, or the bisections end within a texel); otherwise
+// the planner's span bound still holds. Pixels showing an empty colour texel (alpha 0) draw
+// nothing and are not in the claim.
+// It is the planner's bound with the span replaced by each texel's own neighbourhood, so at
+// most depthEyeBound for a span holding the image; with halved depths a block straddling a step
+// counts the step within it (k(d_c) - k(m_B)), which is why halving costs no accuracy in the
+// bound where the planner's span is wider than every step.
+struct MarchBound {
+    double depth = 0.0, texel = 0.0;
+    double total() const { return depth + texel; }
+};
+MarchBound marchErrorBound(const DepthImage& full, const WallFrame& frame, glm::dvec3 eye, glm::dvec3 samplingPoint,
+                           glm::dvec2 range);
 
 // ---- The planner's bound (issue 16: plan depth walls with the reprojection's own error) ----
 //

@@ -292,6 +292,122 @@ TEST(DepthWall, MarchDepthsAreTheNearestOfEachTwoByTwoBlock) {
     EXPECT_EQ(marchDepths(odd).depth, odd.depth);
 }
 
+// marchErrorBound against the reference march, over a grid of pixels on the whole wall: the
+// largest angle between a drawn pixel's direction and the true direction of the point whose
+// colour it shows (what S saw through the colour texel, at its full depth) is within the bound,
+// with halved depths (an even size, the card's edges inside 2 x 2 blocks) and full ones (an odd
+// size is not halved), and at least 0.6 of it (a bound 2x too loose fails). The bound is no
+// larger than the planner's for the span the image lies in.
+struct MarchCheck {
+    double worst = 0.0;  // radians
+    int drawn = 0;
+};
+MarchCheck worstMarchedAngle(const DepthImage& full, const WallFrame& f, glm::dvec3 e, glm::dvec3 s, int samples) {
+    const DepthImage march = marchDepths(full);
+    const glm::dvec2 range = depthRange(full);
+    const double hx = f.width / full.width, hy = f.height / full.height, ds = -s.z;
+    MarchCheck check;
+    for (int y = 0; y < samples * 3 / 4; ++y)
+        for (int x = 0; x < samples; ++x) {
+            const glm::dvec2 w(f.width * (x + 0.5) / samples, f.height * (y + 0.5) / (samples * 3 / 4));
+            const ReprojectHit hit = reproject(march, f, e, s, w, range);
+            if (!hit.hit) continue;
+            // The colour texel the pixel samples (nearest), and the point S saw through it.
+            const int i = std::clamp(static_cast<int>(std::floor(hit.texture.x / hx)), 0, full.width - 1);
+            const int j = std::clamp(static_cast<int>(std::floor((f.height - hit.texture.y) / hy)), 0, full.height - 1);
+            const double d = full.at(i, j);
+            if (!std::isfinite(d)) continue;  // an empty texel draws nothing
+            const glm::dvec2 t = texelCentre(f, full.width, full.height, i, j);
+            const glm::dvec3 shown(t + (d / ds) * (t - glm::dvec2(s)), d), pixel(w, 0.0);
+            const double c = glm::dot(glm::normalize(shown - e), glm::normalize(pixel - e));
+            check.worst = std::max(check.worst, std::acos(std::clamp(c, -1.0, 1.0)));
+            ++check.drawn;
+        }
+    return check;
+}
+
+TEST(DepthWall, MarchBoundHoldsForEveryDrawnPixelAndIsTight) {
+    const WallFrame f = wallFrame(kQuad);
+    const glm::dvec3 s(2.0, 1.5, -3.0);
+    for (const glm::ivec2 size : {glm::ivec2(500, 374), glm::ivec2(499, 375)}) {
+        const DepthImage image = bakeAnalytic(f, s, size.x, size.y);
+        const bool halved = marchDepths(image).width != image.width;
+        EXPECT_EQ(halved, size.x % 2 == 0);
+        for (const glm::dvec3 e : {glm::dvec3(2.6, 1.5, -2.5), glm::dvec3(1.2, 2.1, -2.0), glm::dvec3(2.0, 1.5, -4.5)}) {
+            SCOPED_TRACE(std::to_string(size.x) + " x " + std::to_string(size.y) + ", eye x " + std::to_string(e.x));
+            const MarchBound bound = marchErrorBound(image, f, e, s, depthRange(image));
+            const MarchCheck check = worstMarchedAngle(image, f, e, s, 400);
+            std::printf("march %s %d x %d, eye (%.1f, %.1f, %.1f): worst drawn pixel %.5f rad of %d, bound %.5f "
+                        "(depth %.5f + texel %.5f)\n",
+                        halved ? "halved" : "full", size.x, size.y, e.x, e.y, e.z, check.worst, check.drawn,
+                        bound.total(), bound.depth, bound.texel);
+            EXPECT_GT(check.drawn, 400 * 300 / 2);
+            EXPECT_LE(check.worst, bound.total() + 1e-9);
+            EXPECT_GE(check.worst, 0.6 * bound.total());
+            const double diagonal = std::hypot(f.width / size.x, f.height / size.y);
+            EXPECT_LE(bound.total(), depthEyeBound(f.toWorld(e), f.toWorld(s), kQuad, {1.0, 4.0}, diagonal) + 1e-12);
+        }
+    }
+}
+
+// On random piecewise-constant depths (blocks of random depth, some empty, steps everywhere) the
+// claim holds for every drawn pixel whatever the eye: halved and full, near and far eyes.
+TEST(DepthWall, MarchBoundHoldsOnRandomDepths) {
+    const WallFrame f = wallFrame(kQuad);
+    const glm::dvec3 s(2.0, 1.5, -3.0);
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> depth(0.05, 6.0), unit(0.0, 1.0);
+    for (const glm::ivec2 size : {glm::ivec2(96, 72), glm::ivec2(95, 71)}) {
+        DepthImage image{size.x, size.y, std::vector<float>(std::size_t(size.x) * size.y)};
+        // Patches of 1 to 7 texels a side, drawn over each other.
+        std::fill(image.depth.begin(), image.depth.end(), 3.0f);
+        for (int p = 0; p < 400; ++p) {
+            const int w = 1 + static_cast<int>(unit(random) * 7), h = 1 + static_cast<int>(unit(random) * 7);
+            const int x0 = static_cast<int>(unit(random) * size.x), y0 = static_cast<int>(unit(random) * size.y);
+            const float d = unit(random) < 0.1 ? kNoSurface : static_cast<float>(depth(random));
+            for (int j = y0; j < std::min(size.y, y0 + h); ++j)
+                for (int i = x0; i < std::min(size.x, x0 + w); ++i) image.depth[std::size_t(j) * size.x + i] = d;
+        }
+        for (int trial = 0; trial < 6; ++trial) {
+            const glm::dvec3 e(4.0 * unit(random), 3.0 * unit(random), -(0.4 + 4.0 * unit(random)));
+            SCOPED_TRACE(std::to_string(size.x) + " x " + std::to_string(size.y) + ", trial " + std::to_string(trial));
+            const MarchBound bound = marchErrorBound(image, f, e, s, depthRange(image));
+            const MarchCheck check = worstMarchedAngle(image, f, e, s, 160);
+            EXPECT_GT(check.drawn, 0);
+            EXPECT_LE(check.worst, bound.total() + 1e-9);
+        }
+    }
+}
+
+// Halving seals a hole narrower than a depth texel: a near plane (0.5 m) with one-texel holes
+// onto depth 5 m is marched as the plane, and the pixels that sample a hole's colour show it at
+// the plane's depth. The bound counts that (k(d_c) - k(m_B), the step inside the block) and is
+// tight for it. Two rings of blocks along the edges (5 m outside, 1.87 m inside: each step half
+// the holes' in k) keep the border's steps below the holes', so without that term the bound
+// would be about half the error. The eye is as far from the wall as S: v is the same everywhere.
+TEST(DepthWall, MarchBoundCountsHolesHalvingSeals) {
+    const WallFrame f = wallFrame(kQuad);
+    const glm::dvec3 s(2.0, 1.5, -3.0), e(2.6, 1.7, -3.0);
+    DepthImage image{64, 48, std::vector<float>(64 * 48, 0.5f)};
+    for (int j = 0; j < 48; ++j)
+        for (int i = 0; i < 64; ++i) {
+            const int ring = std::min(std::min(i, 63 - i), std::min(j, 47 - j));
+            if (ring < 4) image.depth[std::size_t(j) * 64 + i] = ring < 2 ? 5.0f : 1.87f;
+        }
+    // Holes near the eye's foot (texel 41.6, 20.8), where the angle is nearly |W - W_P| / D_E.
+    for (int j = 13; j <= 29; j += 4)
+        for (int i = 33; i <= 49; i += 4) image.depth[std::size_t(j) * 64 + i] = 5.0f;
+    const DepthImage march = marchDepths(image);
+    EXPECT_EQ(march.at(20, 10), 0.5f);  // the block of hole (41, 21): sealed
+    const MarchBound bound = marchErrorBound(image, f, e, s, depthRange(image));
+    const MarchCheck check = worstMarchedAngle(image, f, e, s, 400);
+    std::printf("sealed holes: worst drawn pixel %.5f rad, bound %.5f (depth %.5f + texel %.5f)\n", check.worst,
+                bound.total(), bound.depth, bound.texel);
+    EXPECT_GT(bound.depth, 5.0 * bound.texel);
+    EXPECT_LE(check.worst, bound.total() + 1e-9);
+    EXPECT_GE(check.worst, 0.6 * bound.total());
+}
+
 TEST(DepthWall, BlockMinimumBoundsEveryTexelAStepRunCanReach) {
     for (const auto& [w, h] : {std::pair{64, 48}, std::pair{67, 21}, std::pair{8, 8}}) {
         SCOPED_TRACE(std::to_string(w) + " x " + std::to_string(h));

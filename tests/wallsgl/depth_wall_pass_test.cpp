@@ -72,7 +72,10 @@ protected:
     // (walls::marchDepths: each depth texel the nearest of 2 x 2 colour texels), against the
     // full image's prediction with a depth texel (two pixels here) more allowance either side.
     // This scene's uniform colours hide a misplaced depth (depths shifted by 15 texels pass
-    // too): the halving's values are checked in tests/walls/depth_wall_test.cpp.
+    // too): the halving's values are checked in tests/walls/depth_wall_test.cpp, and so is the
+    // proven bound of what the halved march draws (walls::marchErrorBound, tight within 0.6
+    // against the reference march), which TheShaderMarchesHalvedDepthsAsItsReference ties to
+    // the shader.
     void matchesGeometryExceptWherePredicted(bool halved);
     // The shader's march against walls::reproject, pixel by pixel (TheShaderMarchesAsItsReference).
     void marchesAsItsReference(bool halved);
