@@ -265,9 +265,8 @@ DepthWallBound depthWallErrorBound(const DepthImage& image, const WallFrame& fra
 // the planner's span bound still holds. Pixels showing an empty colour texel (alpha 0) draw
 // nothing and are not in the claim.
 // It is the planner's bound with the span replaced by each texel's own neighbourhood, so at
-// most depthEyeBound for a span holding the image; with halved depths a block straddling a step
-// counts the step within it (k(d_c) - k(m_B)), which is why halving costs no accuracy in the
-// bound where the planner's span is wider than every step.
+// most depthEyeBound for a span holding the image. With halved depths a block straddling a
+// step counts the step within it (k(d_c) - k(m_B)): a step the planner's span covers anyway.
 struct MarchBound {
     double depth = 0.0, texel = 0.0;
     double total() const { return depth + texel; }

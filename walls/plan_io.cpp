@@ -179,22 +179,23 @@ PlanTotals planTotals(const Plan& plan) {
     t.textures = int(plan.textures.size());
     t.beyondZones = int(plan.beyondZones.size());
     for (const BeyondSide& b : plan.beyond) t.beyondTextures += b.side.textureCount;
-    // Depth walls add the depth texture on the GPU (depthTextureBytes of the halved depths the
-    // march reads: marchDepthSize of the baked size, bakeResolution, whose sides are even) and a
-    // 16-bit code per texel on disk (walls/depth_file.h).
+    // Depth walls add the halved depths the march reads (marchDepthSize of the baked size,
+    // bakeResolution, whose sides are even; the bake writes them so): depthTextureBytes on the
+    // GPU and a 16-bit code per depth texel on disk (walls/depth_file.h).
     const bool depth = plan.options.wallKind == WallKind::Depth;
-    double depthGpuBytes = 0.0;
+    double depthGpuBytes = 0.0, depthDiskBytes = 0.0;
     for (const Texture& tex : plan.textures) {
         t.texels += double(tex.resolution.x) * tex.resolution.y;
         if (depth) {
             const glm::ivec2 baked = bakeResolution(tex.resolution, plan.options.maxResolution, WallKind::Depth);
             const glm::ivec2 march = marchDepthSize(baked.x, baked.y);
             depthGpuBytes += double(depthTextureBytes(march.x, march.y));
+            depthDiskBytes += 2.0 * march.x * march.y;
         }
         t.maxErrorDeg = std::max(t.maxErrorDeg, glm::degrees(tex.maxError));
     }
     t.gpuBytes = t.texels * 4.0 * 4.0 / 3.0 + depthGpuBytes;
-    t.diskBytes = t.texels * 4.0 * 4.0 / 3.0 + (depth ? t.texels * 2.0 : 0.0);
+    t.diskBytes = t.texels * 4.0 * 4.0 / 3.0 + depthDiskBytes;
     return t;
 }
 

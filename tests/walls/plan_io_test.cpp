@@ -84,9 +84,9 @@ TEST(PlanIo, SummaryCountsMatchThePlan) {
     EXPECT_THAT(out.str(), HasSubstr("texel density: 10 px/degree"));
 }
 
-// A depth plan's GPU estimate adds each texture's depth texture as the bake makes it: even sides
-// (bakeResolution), halved for the march (marchDepthSize), so an odd planned side does not count
-// full depths.
+// A depth plan's GPU and disk estimates add each texture's depths as the bake makes them: even
+// sides (bakeResolution), halved for the march (marchDepthSize), so an odd planned side does not
+// count full depths; on disk 2 bytes a depth texel.
 TEST(PlanIo, DepthTotalsCountTheHalvedDepthsOfTheBakedSize) {
     Plan plan = planZones(testing::hall());
     ASSERT_GE(plan.textures.size(), 2u);
@@ -95,12 +95,15 @@ TEST(PlanIo, DepthTotalsCountTheHalvedDepthsOfTheBakedSize) {
     plan.textures[0].resolution = {101, 51};  // baked 102 x 52, marched 51 x 26
     plan.textures[1].resolution = {64, 32};   // baked as planned, marched 32 x 16
     double depthBytes = double(depthTextureBytes(51, 26)) + double(depthTextureBytes(32, 16));
+    double diskBytes = 2.0 * (51 * 26 + 32 * 16);
     for (std::size_t i = 2; i < plan.textures.size(); ++i) {
         const glm::ivec2 r = bakeResolution(plan.textures[i].resolution, 512, WallKind::Depth);
         depthBytes += double(depthTextureBytes(r.x / 2, r.y / 2));
+        diskBytes += 2.0 * (r.x / 2) * (r.y / 2);
     }
     const PlanTotals t = planTotals(plan);
     EXPECT_DOUBLE_EQ(t.gpuBytes - t.texels * 4 * 4 / 3.0, depthBytes);
+    EXPECT_DOUBLE_EQ(t.diskBytes - t.texels * 4 * 4 / 3.0, diskBytes);
 }
 
 TEST(PlanIo, TexelDensityRule) {
