@@ -105,6 +105,15 @@ glm::dvec2 texelCentre(const WallFrame& f, int width, int height, int i, int j) 
 
 namespace {
 
+// k(d) = d / (D_E + d) of the proofs above (1 for no surface: infinitely far).
+double kOf(double d, double de) { return std::isfinite(d) ? d / (de + d) : 1.0; }
+
+// The per-image texel term: half a texel diagonal of a width x height image of `f`, reprojected
+// (max(1, D_E / D_S)), as an angle at D_E.
+double imageTexelTerm(const WallFrame& f, int width, int height, double de, double ds) {
+    return 0.5 * std::hypot(f.width / width, f.height / height) * std::max(1.0, de / ds) / de;
+}
+
 // The depth of the texel holding texel-unit point t (x right, y down), kNoSurface outside.
 float texelDepth(const DepthImage& image, glm::dvec2 t) {
     const double i = std::floor(t.x), j = std::floor(t.y);
@@ -233,15 +242,12 @@ glm::dvec2 parallaxVector(glm::dvec3 eye, glm::dvec3 sample, glm::dvec2 t) {
 }
 
 glm::dvec2 reprojectedPoint(glm::dvec3 eye, glm::dvec3 sample, glm::dvec2 t, double d) {
-    const double k = std::isfinite(d) ? d / (-eye.z + d) : 1.0;
-    return t + k * parallaxVector(eye, sample, t);
+    return t + kOf(d, -eye.z) * parallaxVector(eye, sample, t);
 }
 
 double stepAngle(glm::dvec3 eye, glm::dvec3 sample, glm::dvec2 t, double d1, double d2) {
     const double de = -eye.z;
-    auto k = [&](double d) { return std::isfinite(d) ? d / (de + d) : 1.0; };
-    const double k1 = k(d1), k2 = k(d2);
-    return std::abs(k2 - k1) * glm::length(parallaxVector(eye, sample, t)) / de;
+    return std::abs(kOf(d2, de) - kOf(d1, de)) * glm::length(parallaxVector(eye, sample, t)) / de;
 }
 
 double reprojectionErrorBound(const WallFrame& f, glm::dvec3 eye, glm::dvec3 sample, double d1, double d2) {
@@ -249,8 +255,7 @@ double reprojectionErrorBound(const WallFrame& f, glm::dvec3 eye, glm::dvec3 sam
     for (glm::dvec2 c : {glm::dvec2(0, 0), glm::dvec2(f.width, 0), glm::dvec2(0, f.height), glm::dvec2(f.width, f.height)})
         v = std::max(v, glm::length(parallaxVector(eye, sample, c)));
     const double de = -eye.z;
-    auto k = [&](double d) { return std::isfinite(d) ? d / (de + d) : 1.0; };
-    return std::abs(k(d2) - k(d1)) * v / de;
+    return std::abs(kOf(d2, de) - kOf(d1, de)) * v / de;
 }
 
 double borderAngle(const WallFrame& f, glm::dvec3 eye, glm::dvec3 sample) {
@@ -291,14 +296,13 @@ DepthWallBound depthWallErrorBound(const DepthImage& image, const WallFrame& f, 
                 for (glm::dvec2 at : {t, u}) {
                     const double open = glm::dot(parallaxVector(eye, sample, at), across);
                     if (open <= 0.0) continue;
-                    const double de = -eye.z, k1 = std::min(d, e) / (de + std::min(d, e)),
-                                 k2 = std::max(d, e) / (de + std::max(d, e));
-                    b.steps = std::max(b.steps, (k2 - k1) * open / de);
+                    const double de = -eye.z;
+                    b.steps = std::max(b.steps, (kOf(std::max(d, e), de) - kOf(std::min(d, e), de)) * open / de);
                 }
             }
         }
     const double de = -eye.z, ds = -sample.z;
-    b.texel = 0.5 * std::hypot(f.width / image.width, f.height / image.height) * std::max(1.0, de / ds) / de;
+    b.texel = imageTexelTerm(f, image.width, image.height, de, ds);
     return b;
 }
 
@@ -307,7 +311,6 @@ MarchBound marchErrorBound(const DepthImage& full, const WallFrame& f, glm::dvec
     const DepthImage march = marchDepths(full);
     const int b = full.width / march.width;  // colour texels per march texel, per axis (1 or 2)
     const double de = -eye.z, ds = -sample.z;
-    auto k = [&](double d) { return std::isfinite(d) ? d / (de + d) : 1.0; };
     MarchBound bound;
     for (int bj = 0; bj < march.height; ++bj)
         for (int bi = 0; bi < march.width; ++bi) {
@@ -322,17 +325,18 @@ MarchBound marchErrorBound(const DepthImage& full, const WallFrame& f, glm::dvec
                     const double a = inside ? march.at(i, j) : kNoSurface;
                     entry = std::max(entry, std::isfinite(a) ? a : range.y);
                 }
-            const double kEntry = k(entry), kHit = k((m - 1e-5 * ds) / (1.0 + 1e-5));
+            // The shallowest ray depth the hit test accepts at m (its tolerance: hitSigma).
+            const double sg = hitSigma(m, ds), kEntry = kOf(entry, de), kHit = kOf(ds * sg / (1.0 - sg), de);
             for (int j = bj * b; j < bj * b + b; ++j)
                 for (int i = bi * b; i < bi * b + b; ++i) {
                     const double d = full.at(i, j);
                     if (!std::isfinite(d)) continue;
-                    const double dk = std::max(kEntry - k(d), k(d) - kHit);
+                    const double dk = std::max(kEntry - kOf(d, de), kOf(d, de) - kHit);
                     const glm::dvec2 t = texelCentre(f, full.width, full.height, i, j);
                     bound.depth = std::max(bound.depth, dk * glm::length(parallaxVector(eye, sample, t)) / de);
                 }
         }
-    bound.texel = 0.5 * std::hypot(f.width / full.width, f.height / full.height) * std::max(1.0, de / ds) / de;
+    bound.texel = imageTexelTerm(f, full.width, full.height, de, ds);
     return bound;
 }
 
