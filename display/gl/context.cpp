@@ -4,7 +4,9 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <vector>
 #include <iostream>
 
 namespace cavewall::gl {
@@ -33,6 +35,33 @@ std::string glString(GLenum name) {
 }
 
 }  // namespace
+
+namespace {
+thread_local Context* tCurrent = nullptr;
+thread_local std::vector<CurrentContextScope*> tScopes;  // this thread's open scopes, innermost last
+}  // namespace
+
+Context::~Context() {
+    if (tCurrent == this) tCurrent = nullptr;
+    for (CurrentContextScope* scope : tScopes)
+        if (scope->_saved == this) scope->_saved = nullptr;
+}
+
+CurrentContextScope::CurrentContextScope() : _saved(Context::current()) { tScopes.push_back(this); }
+
+CurrentContextScope::~CurrentContextScope() {
+    tScopes.erase(std::find(tScopes.begin(), tScopes.end(), this));
+    if (_saved && Context::current() != _saved) _saved->makeCurrent();
+}
+
+void Context::makeCurrent() {
+    makeCurrentOnThread();
+    tCurrent = this;
+}
+
+Context* Context::current() { return tCurrent; }
+
+void Context::becameCurrent() { tCurrent = this; }
 
 bool ContextOptions::defaultDebug() {
 #ifndef NDEBUG

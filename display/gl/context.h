@@ -52,13 +52,16 @@ struct PresentImage {
 
 class Context {
 public:
-    virtual ~Context() = default;
+    virtual ~Context();  // no longer current() on the thread that destroys it
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
 
     const ContextInfo& info() const { return _info; }
     // Makes the rendering context current on this thread.
-    virtual void makeCurrent() = 0;
+    void makeCurrent();
+    // The context made current on the calling thread last (by makeCurrent or by its creation);
+    // null when there was none, or it has been destroyed since.
+    static Context* current();
 
     // Windows, in the order they were requested (none for headless contexts).
     virtual int windowCount() const { return 0; }
@@ -77,7 +80,26 @@ public:
 
 protected:
     Context() = default;
+    // Providers: make the rendering context current, and say when creation made it current.
+    virtual void makeCurrentOnThread() = 0;
+    void becameCurrent();
     ContextInfo _info;
+};
+
+// Code that makes a context of its own current (the baker, without its caller's context) leaves
+// the calling thread's as it found it: the context current() when the scope starts is made
+// current again when it ends. Nothing is done when none was current, or when that context was
+// destroyed in the meantime (on this thread, as contexts are). Scopes nest on one thread.
+class CurrentContextScope {
+public:
+    CurrentContextScope();
+    ~CurrentContextScope();
+    CurrentContextScope(const CurrentContextScope&) = delete;
+    CurrentContextScope& operator=(const CurrentContextScope&) = delete;
+
+private:
+    friend class Context;
+    Context* _saved;
 };
 
 // A headless context. Throws cavewall::Error when no EGL display offers GL 4.5 core, saying

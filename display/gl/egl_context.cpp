@@ -15,6 +15,7 @@ public:
     EglContext(EGLDisplay display, EGLContext context, std::string provider, const ContextOptions& options)
         : _display(display), _context(context) {
         _info.provider = std::move(provider);
+        becameCurrent();  // createCoreContext made it current
         try {
             initialiseCurrentContext(_info, options);
         } catch (...) {
@@ -24,7 +25,7 @@ public:
     }
     // The EGL display stays initialised: displays are process-wide and may serve other contexts.
     ~EglContext() override { release(); }
-    void makeCurrent() override { eglMakeCurrent(_display, EGL_NO_SURFACE, EGL_NO_SURFACE, _context); }
+    void makeCurrentOnThread() override { eglMakeCurrent(_display, EGL_NO_SURFACE, EGL_NO_SURFACE, _context); }
 
 private:
     void release() {

@@ -27,7 +27,7 @@ public:
     GlfwContext(const std::vector<WindowRequest>& requests, bool stereo, const ContextOptions& options);
     ~GlfwContext() override;
 
-    void makeCurrent() override { glfwMakeContextCurrent(_windows.front().handle); }
+    void makeCurrentOnThread() override { glfwMakeContextCurrent(_windows.front().handle); }
     int windowCount() const override { return static_cast<int>(_windows.size()); }
     void present(int window, const PresentImage& image, scenes::Image* capture) override;
     bool pollCloseRequested() override;

@@ -5,6 +5,8 @@
 #include "scenes/primitives.h"
 #include "tests/gl/gl_test_support.h"
 
+#include <epoxy/gl.h>
+
 #include <gmock/gmock.h>
 
 #include <iostream>
@@ -34,6 +36,40 @@ TEST_F(HeadlessContext, SeveralContextsLiveSideBySide) {
     second.reset();
     context->makeCurrent();
     EXPECT_THAT(context->info().version, HasSubstr("4.5"));
+}
+
+// A texture name of one context is no texture in another (they share nothing), so glIsTexture
+// tells which is current on the thread, whatever Context::current says.
+TEST_F(HeadlessContext, AScopeMakesTheContextCurrentAtItsStartCurrentAgain) {
+    GLuint texture = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+    ASSERT_EQ(glIsTexture(texture), GL_TRUE);
+    EXPECT_EQ(Context::current(), context.get());
+    std::unique_ptr<Context> other;
+    {
+        CurrentContextScope scope;
+        other = createHeadlessContext();  // made current on creation
+        EXPECT_EQ(Context::current(), other.get());
+        EXPECT_EQ(glIsTexture(texture), GL_FALSE);
+    }
+    EXPECT_EQ(Context::current(), context.get());
+    EXPECT_EQ(glIsTexture(texture), GL_TRUE);
+    {
+        CurrentContextScope scope;
+        other->makeCurrent();
+        other.reset();  // destroyed while current: no context is current until the scope ends
+        EXPECT_EQ(Context::current(), nullptr);
+    }
+    EXPECT_EQ(Context::current(), context.get());
+    EXPECT_EQ(glIsTexture(texture), GL_TRUE);
+    glDeleteTextures(1, &texture);
+    {
+        CurrentContextScope scope;  // saves this test's context, destroyed inside: nothing to restore
+        context.reset();
+        other = createHeadlessContext();
+    }
+    EXPECT_EQ(Context::current(), other.get());
+    context = std::move(other);  // for TearDown
 }
 
 TEST_F(HeadlessContext, EveryOfferedPlatformDrawsTheSamePicture) {

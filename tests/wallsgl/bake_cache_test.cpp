@@ -10,6 +10,7 @@
 #include "walls/texture_pager.h"
 #include "walls/wall_setup.h"
 
+#include <epoxy/gl.h>
 #include <gmock/gmock.h>
 
 #include <chrono>
@@ -86,6 +87,19 @@ TEST_F(BakeCacheTest, UnchangedSceneDoesNoWork) {
     // Nothing was written: neither the manifest nor a texture file.
     EXPECT_EQ(modified(second.folder / "manifest.json"), manifestTime);
     EXPECT_EQ(modified(second.folder / second.manifest.textures[0].file), textureTime);
+}
+
+// Without the caller's context the bake makes its own current; the caller's is current again
+// when it returns (a GL call with none current aborts the process in libepoxy).
+TEST_F(BakeCacheTest, ABakeWithItsOwnContextLeavesTheCallersCurrent) {
+    request.context = nullptr;
+    GLuint texture = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+    const BakeResult baked = bakeScene(request);
+    EXPECT_GT(baked.baked, 0);  // it rendered, so its own context was current for a while
+    EXPECT_EQ(Context::current(), context.get());
+    EXPECT_EQ(glIsTexture(texture), GL_TRUE);
+    glDeleteTextures(1, &texture);
 }
 
 TEST_F(BakeCacheTest, DamagedFileIsReBakedAlone) {

@@ -252,8 +252,12 @@ void Bake::endRendering() {
         _result.times.hash += spent.hash;
         _writer.reset();
     }
-    _renderer.reset();
-    _ownContext.reset();
+    {
+        gl::CurrentContextScope callers;
+        if (_renderer) (_request.context ? _request.context : _ownContext.get())->makeCurrent();  // its objects' context
+        _renderer.reset();
+        _ownContext.reset();
+    }
     if (_result.folder.empty()) return;
     writeManifestNow(true);
 }
@@ -366,6 +370,7 @@ void Bake::sample() {
 // renders a few textures per call); endRendering ends them.
 void Bake::render(const std::vector<Item>& items) {
     const Clock::time_point start = Clock::now();
+    gl::CurrentContextScope callers;  // the caller's context is current again when this returns
     if (!_request.context && !_ownContext) _ownContext = gl::createHeadlessContext();
     (_request.context ? _request.context : _ownContext.get())->makeCurrent();
     ensureFolder(_result.folder);

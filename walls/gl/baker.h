@@ -129,6 +129,7 @@ struct BakeResult {
 // `description`, loaded from request.scene, whose files key the cache). Throws cavewall::Error
 // for bad settings or unwritable folders; the manifest then lists what was finished. Set the
 // setup's folder and manifest from the result to page its textures (walls/gl/walkthrough.h).
+// The calling thread's current context (gl::Context::current) is current again on return.
 BakeResult bakeWalls(const scenes::Scene& scene, const scenes::SceneDescription& description,
                      const walls::WallSetup& walls, const BakeRequest& request);
 
@@ -142,7 +143,8 @@ BakeResult bakeScene(const BakeRequest& request);
 // folders of the cache) without any GL; `walls` (and scene, description) must outlive it.
 // bake() renders and writes the given textures with request.context, else with a headless
 // context it makes on the calling thread at the first bake; call bake(), forget() and
-// endRendering() on that one thread. The manifest is rewritten atomically at most about once a
+// endRendering() on that one thread. Whichever context was current there before
+// (gl::Context::current) is current again when bake() and endRendering() return. The manifest is rewritten atomically at most about once a
 // second while baking, at forget() and at endRendering(), listing only finished files.
 class TextureBaker {
 public:
