@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <vector>
 #include <iostream>
+#include <vector>
 
 namespace cavewall::gl {
 
@@ -34,11 +34,9 @@ std::string glString(GLenum name) {
     return s ? s : "?";
 }
 
-}  // namespace
-
-namespace {
-thread_local Context* tCurrent = nullptr;
+thread_local Context* tCurrent = nullptr;                // Context::current()
 thread_local std::vector<CurrentContextScope*> tScopes;  // this thread's open scopes, innermost last
+
 }  // namespace
 
 Context::~Context() {

@@ -157,6 +157,8 @@ private:
         double maxLodErrorTexels = 0.0;
     };
     void render(const std::vector<Item>& items);
+    // The context this bake renders with: the caller's (BakeRequest::context) or its own.
+    gl::Context* renderContext() const { return _request.context ? _request.context : _ownContext.get(); }
     void renderOne(const Item& item, WallTextureRenderer& renderer, BakeWriter& writer, Drawn& drawn) const;
     void add(const Drawn& drawn);
     Item itemOf(const walls::Texture& t) const;
@@ -254,7 +256,7 @@ void Bake::endRendering() {
     }
     {
         gl::CurrentContextScope callers;
-        if (_renderer) (_request.context ? _request.context : _ownContext.get())->makeCurrent();  // its objects' context
+        if (_renderer) renderContext()->makeCurrent();  // its objects' context
         _renderer.reset();
         _ownContext.reset();
     }
@@ -372,7 +374,7 @@ void Bake::render(const std::vector<Item>& items) {
     const Clock::time_point start = Clock::now();
     gl::CurrentContextScope callers;  // the caller's context is current again when this returns
     if (!_request.context && !_ownContext) _ownContext = gl::createHeadlessContext();
-    (_request.context ? _request.context : _ownContext.get())->makeCurrent();
+    renderContext()->makeCurrent();
     ensureFolder(_result.folder);
     if (!_renderer)
         _renderer = std::make_unique<WallTextureRenderer>(_scene, _request.settings.ambient, _request.settings.lodTexels);

@@ -144,8 +144,9 @@ BakeResult bakeScene(const BakeRequest& request);
 // bake() renders and writes the given textures with request.context, else with a headless
 // context it makes on the calling thread at the first bake; call bake(), forget() and
 // endRendering() on that one thread. Whichever context was current there before
-// (gl::Context::current) is current again when bake() and endRendering() return. The manifest is rewritten atomically at most about once a
-// second while baking, at forget() and at endRendering(), listing only finished files.
+// (gl::Context::current) is current again when bake() and endRendering() return. The manifest is
+// rewritten atomically at most about once a second while baking, at forget() and at
+// endRendering(), listing only finished files.
 class TextureBaker {
 public:
     TextureBaker(const scenes::Scene& scene, const scenes::SceneDescription& description,
