@@ -3,6 +3,8 @@
 #include "config/error.h"
 #include "scenes/image_io.h"
 
+#include <epoxy/gl.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -19,6 +21,13 @@ bool envIs(const char* name, const char* value) {
 }  // namespace
 
 bool onCi() { return envIs("CI", "true"); }
+
+ContextMark::ContextMark() {
+    glCreateTextures(GL_TEXTURE_2D, 1, &_texture);
+    if (!current()) ADD_FAILURE() << "ContextMark: no texture made (is a context current?)";
+}
+
+bool ContextMark::current() const { return glIsTexture(_texture) == GL_TRUE; }
 
 void GlTest::SetUp() {
     try {

@@ -25,6 +25,19 @@ namespace cavewall::testing {
 
 bool onCi();
 
+// A texture made in the context current when the mark is made. Texture names of one context are
+// no textures in another (the contexts here share nothing), so current() tells whether that
+// context is current on this thread, whatever gl::Context::current() says. The texture goes with
+// its context.
+class ContextMark {
+public:
+    ContextMark();
+    bool current() const;
+
+private:
+    unsigned _texture = 0;
+};
+
 class GlTest : public ::testing::Test {
 protected:
     void SetUp() override;

@@ -35,4 +35,6 @@ expect_result(bench_gl_ok app/bench/gl/x.cpp "#include \"app/gl/run_session.h\"\
 expect_result(pure_in_gl walls/gl/x.cpp "#include \"walls/plan.h\"\n#include \"walls/gl/x.h\"" TRUE)
 expect_result(gl_through_gl_header walls/gl/x.cpp "#include \"walls/gl/y.h\"" FALSE)
 expect_result(tools_ok tools/x.cpp "#include \"app/bench/gl/driver.h\"\n#include \"walls/gl/walkthrough.h\"" FALSE)
+expect_result(gl_in_walls_test tests/wallsgl/x_test.cpp "#include <epoxy/gl.h>" TRUE)
+expect_result(gl_in_gl_test tests/gl/x_test.cpp "#include <epoxy/gl.h>" FALSE)
 message(STATUS "layering self-test: OK")
