@@ -457,27 +457,37 @@ bool depthZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const dis
     return alpha > 0.0 && depthZoneSearch(zone, samplingPoint, wall, span, texelDiagonal, alpha) <= alpha;
 }
 
-double depthFlatFormEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const display::ScreenQuad& wall, double dFar,
-                             double texelDiagonal) {
+display::ScreenQuad nearWall(const display::ScreenQuad& wall, glm::dvec3 samplingPoint, double depth) {
+    const double ds = std::abs(glm::dot(samplingPoint - wall.lowerLeft, display::screenBasis(wall).normal));
+    if (!(ds > 0.0)) throw Error("nearWall: the sampling point is on the wall's plane (expected a distance > 0, got 0)");
+    const double a = depth / ds;
+    auto moved = [&](glm::dvec3 c) { return c + a * (c - samplingPoint); };
+    return {moved(wall.lowerLeft), moved(wall.lowerRight), moved(wall.upperLeft)};
+}
+
+double depthSegmentEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const display::ScreenQuad& wall, glm::dvec2 span,
+                            double texelDiagonal) {
     const WallFrame f = wallFrame(wall);
     const glm::dvec3 e = f.toWall(eye), s = f.toWall(samplingPoint);
-    if (!(e.z * s.z > 0.0) || !(texelDiagonal >= 0.0) || std::isnan(dFar)) return kPi;
+    if (!(e.z * s.z > 0.0) || !(texelDiagonal >= 0.0) || !(span.x >= 0.0) || std::isnan(span.y)) return kPi;
     const double de = std::abs(e.z), ds = std::abs(s.z);
-    const double far = widened({0.0, dFar}, ds).y;
-    const double bound = maxAngularError(eye, samplingPoint, wall, far) + 0.5 * texelDiagonal * std::max(1.0 / de, 1.0 / ds);
+    const glm::dvec2 sp = widened(span, ds);
+    const double seg = sp.y > sp.x ? maxAngularError(eye, samplingPoint, nearWall(wall, samplingPoint, sp.x), sp.y - sp.x) : 0.0;
+    const double bound = seg + 0.5 * texelDiagonal * std::max(1.0 / de, 1.0 / ds);
     return std::isfinite(bound) ? std::min(bound, kPi) : kPi;
 }
 
 namespace {
 
-// The flat form's texel term over a zone, 0.5 h max(1 / Dmin, 1 / D_S); NaN when the form does
-// not apply (no zone, a negative texel, an eye on the plane or on the other side).
-double flatFormTexelTerm(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
-                         double texelDiagonal) {
+// The segment form's texel term over a zone, 0.5 h max(1 / Dmin, 1 / D_S); NaN when the form
+// does not apply (no zone, a negative texel or near depth, an eye on the plane or on the other
+// side).
+double segmentTexelTerm(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                        double dNear, double texelDiagonal) {
     const WallFrame f = wallFrame(wall);
     const glm::dvec3 s = f.toWall(samplingPoint);
     const double none = std::numeric_limits<double>::quiet_NaN();
-    if (zone.floor.empty() || !(texelDiagonal >= 0.0)) return none;
+    if (zone.floor.empty() || !(texelDiagonal >= 0.0) || !(dNear >= 0.0) || !std::isfinite(dNear)) return none;
     double dmin = std::numeric_limits<double>::infinity();
     for (const glm::dvec2& p : zone.floor)
         for (double y : {zone.heightRange.x, zone.heightRange.y}) {
@@ -490,18 +500,22 @@ double flatFormTexelTerm(const ZoneVolume& zone, glm::dvec3 samplingPoint, const
 
 }  // namespace
 
-double depthFlatFormZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
-                              double texelDiagonal) {
-    const double texel = flatFormTexelTerm(zone, samplingPoint, wall, texelDiagonal);
+double depthSegmentZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                             double dNear, double texelDiagonal) {
+    const double texel = segmentTexelTerm(zone, samplingPoint, wall, dNear, texelDiagonal);
     if (std::isnan(texel)) return kPi;
-    const double bound = zoneMaxError(zone, samplingPoint, wall) + texel;
+    const double ds = std::abs(wallFrame(wall).toWall(samplingPoint).z);
+    const display::ScreenQuad near = nearWall(wall, samplingPoint, widened({dNear, dNear}, ds).x);
+    const double bound = zoneMaxError(zone, samplingPoint, near) + texel;
     return std::isfinite(bound) ? std::min(bound, kPi) : kPi;
 }
 
-bool depthFlatFormZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
-                             double texelDiagonal, double alpha) {
-    const double texel = flatFormTexelTerm(zone, samplingPoint, wall, texelDiagonal);
-    return alpha - texel > 0.0 && zoneWithin(zone, samplingPoint, wall, alpha - texel);
+bool depthSegmentZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                            double dNear, double texelDiagonal, double alpha) {
+    const double texel = segmentTexelTerm(zone, samplingPoint, wall, dNear, texelDiagonal);
+    if (!(alpha - texel > 0.0)) return false;
+    const double ds = std::abs(wallFrame(wall).toWall(samplingPoint).z);
+    return zoneWithin(zone, samplingPoint, nearWall(wall, samplingPoint, widened({dNear, dNear}, ds).x), alpha - texel);
 }
 
 }  // namespace cavewall::walls

@@ -343,34 +343,52 @@ double depthZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const di
 bool depthZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
                      glm::dvec2 span, double texelDiagonal, double alpha);
 
-// ---- The flat form of the planner's bound ----
+// ---- The segment form of the planner's bound ----
 //
 // Claim. Under the same conditions, every pixel the pass draws is also within
-//   F(E) = flat(E) + 0.5 h max(1, D_E / D_S) / D_E,
-// flat(E) = maxAngularError(E, S, wall, dFar) (angular_error.h): the flat texture's exact
-// largest error over every texel of the wall and every depth up to dFar.
-// Proof. With the notation of the proof above, let W' = T_c + k(s) v(T_c). Then W - W' =
+//   G(E) = seg(E) + 0.5 h max(1, D_E / D_S) / D_E,
+// seg(E) = the largest angle at E subtended by the part [dNear, dFar] of S's ray through any
+// point T of the wall, P(d) = T + (d / D_S)(T - S) for d in the span:
+//   seg(E) = maxAngularError(E, S, wall', dFar - dNear)   (angular_error.h),
+// wall' = nearWall(wall, S, dNear), the wall projected from S onto the parallel plane dNear
+// behind it: P(dNear) is wall''s point on the ray, P(dFar) lies dFar - dNear behind wall'.
+// Proof. With the notation of the span form's proof, let W' = T_c + k(s) v(T_c). Then W - W' =
 // (T - T_c)(1 + k(s)(D_E / D_S - 1)), at most 0.5 h max(1, D_E / D_S) long, on the plane at
-// least D_E from E. W' is where E sees the point at depth s on S's ray through T_c, which a
-// flat texture draws at T_c; W_P = T_c + k(d) v(T_c) is where E sees the one at depth d. All
-// three lie on one line from T_c, at k = 0, k(s) and k(d), so whichever of W', W_P is nearer
-// T_c lies on the segment from T_c to the other, and the angle between W' and W_P at E is at
-// most that segment's, a flat error at depth max(s, d) <= dFar (the march's tolerance lets d
-// exceed s slightly; both lie in the widened span): at most flat(E). The angles add.
-// So a depth wall is never planned worse than the flat wall of the same zone by more than the
-// texel term. Near the wall it is the smaller form: B pairs the zone's nearest eye with its
-// largest parallax, and (k(dFar) - k(dNear)) is hardly below k(dFar) when content starts just
-// behind the wall (README, "Depth walls").
-double depthFlatFormEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const display::ScreenQuad& wall, double dFar,
-                             double texelDiagonal);
-// Over a zone: the depth-independent flat maximum (zoneMaxError, exact at the zone's
-// vertices), plus the texel term at the zone's nearest distance. At least every eye's form.
-double depthFlatFormZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
-                              double texelDiagonal);
-// The flat form proven within alpha: zoneWithin at alpha less the texel term (one decision per
-// zone vertex, stopping at the first that fails), not zoneMaxError's bisection to 1e-9 rad.
-// Rigorous like the bound; it can accept where the bound exceeds alpha by its tolerance.
-bool depthFlatFormZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
-                             double texelDiagonal, double alpha);
+// least D_E from E. W' is where E sees P(s) on S's ray through T_c, and W_P = T_c + k(d) v(T_c)
+// where it sees P(d). The angle at E between W' and W_P is the angle between P(s) and P(d),
+// two points of the segment [P(dNear), P(dFar)] (s and d lie in the widened span), so at most
+// the angle that segment subtends at E (the directions from E to a segment's points turn
+// monotonically): at most seg(E), since T_c lies on the wall. The angles add.
+// It is the exact angle where the span form bounds the displacement along the segment
+// linearly, so it is at most the span form's step term over the whole span; with dNear = 0 it
+// is the flat texture's own exact error up to dFar (until December 2026 the only form besides
+// the span form, "the flat form"), and every dNear > 0 makes it smaller.
+// Over a zone the finite far end is dropped: the angle of [P(dNear), P(dFar)] is at most that
+// of the ray beyond P(dNear), the depth-independent error of wall', which over a convex zone is
+// largest at one of its vertices (angular_error.h), so zoneMaxError and zoneWithin on wall'
+// are exact, fast and rigorous there. (The finite far end makes the eyes' sets non-convex; a
+// branch and bound over eyes needs boxes of millimetres near alpha, since the error changes at
+// about 1 / D_E radians per metre of eye.)
+
+// The wall projected from `samplingPoint` onto the plane parallel to it `depth` metres behind
+// it (on the side away from the sampling point): corners c + (depth / D_S)(c - S). Throws
+// Error when the sampling point is on the plane.
+display::ScreenQuad nearWall(const display::ScreenQuad& wall, glm::dvec3 samplingPoint, double depth);
+
+// G(E) above for the span (dNear, dFar) (dFar may be infinite). Radians; pi when the eye or the
+// sampling point is on the plane or they are on different sides of it.
+double depthSegmentEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const display::ScreenQuad& wall, glm::dvec2 span,
+                            double texelDiagonal);
+// Over a zone: the depth-independent maximum of nearWall at dNear (zoneMaxError, exact at the
+// zone's vertices), plus the texel term at the zone's nearest distance. At least every eye's
+// form for any dFar.
+double depthSegmentZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                             double dNear, double texelDiagonal);
+// The zone form proven within alpha: zoneWithin on nearWall at alpha less the texel term (one
+// decision per zone vertex, stopping at the first that fails), not zoneMaxError's bisection to
+// 1e-9 rad. Rigorous like the bound; it can accept where the bound exceeds alpha by its
+// tolerance.
+bool depthSegmentZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                            double dNear, double texelDiagonal, double alpha);
 
 }  // namespace cavewall::walls

@@ -29,7 +29,7 @@
 //      own cell is a non-resident cell drawn (FramePlan::geometryForced: the executor must
 //      load it before drawing; prefetching the neighbours as `soon` makes this rare).
 //   5. the error: textureErrorAt (walls/plan.h: maxAngularError for flat walls, the smaller
-//      of depthEyeBound and depthFlatFormEyeBound for depth walls) of every texture drawn
+//      of depthEyeBound and depthSegmentEyeBound for depth walls) of every texture drawn
 //      with non-zero weight against the true eye, in degrees and in pixels (FrameResult::maxErrorPixels), and
 //      the count of those over the plan's alpha (+ kErrorTolerance): 0 while the bound holds.
 // Transition::Warp: every wall drawn with textures and no geometry weight gets the structure

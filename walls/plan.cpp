@@ -108,14 +108,15 @@ double depthTextureBound(const ZoneVolume& volume, glm::dvec3 samplingPoint, con
                          const PlanOptions& options) {
     const glm::ivec2 resolution = textureResolution(nearestDistance(volume.floor, samplingPoint.y, wall), wall, options);
     const double h = texelDiagonal(wall, resolution);
-    return std::min(depthZoneBound(volume, samplingPoint, wall, span, h), depthFlatFormZoneBound(volume, samplingPoint, wall, h));
+    return std::min(depthZoneBound(volume, samplingPoint, wall, span, h),
+                    depthSegmentZoneBound(volume, samplingPoint, wall, span.x, h));
 }
 
 bool depthTextureWithin(const ZoneVolume& volume, glm::dvec3 samplingPoint, const ScreenQuad& wall, glm::dvec2 span,
                         const PlanOptions& options, double alpha) {
     const glm::ivec2 resolution = textureResolution(nearestDistance(volume.floor, samplingPoint.y, wall), wall, options);
     const double h = texelDiagonal(wall, resolution);
-    return depthFlatFormZoneWithin(volume, samplingPoint, wall, h, alpha) ||
+    return depthSegmentZoneWithin(volume, samplingPoint, wall, span.x, h, alpha) ||
            depthZoneWithin(volume, samplingPoint, wall, span, h, alpha);
 }
 
@@ -123,8 +124,9 @@ double textureErrorAt(const Plan& plan, const Texture& t, glm::dvec3 eye) {
     const PlannedWall& w = plan.walls[t.wall];
     if (plan.options.wallKind == WallKind::Flat) return maxAngularError(eye, t.samplingPoint, w.quad, w.depthBehind);
     const double h = texelDiagonal(w.quad, t.resolution);
-    return std::min(depthEyeBound(eye, t.samplingPoint, w.quad, {w.depthNear, w.depthBehind}, h),
-                    depthFlatFormEyeBound(eye, t.samplingPoint, w.quad, w.depthBehind, h));
+    const glm::dvec2 span(w.depthNear, w.depthBehind);
+    return std::min(depthEyeBound(eye, t.samplingPoint, w.quad, span, h),
+                    depthSegmentEyeBound(eye, t.samplingPoint, w.quad, span, h));
 }
 
 Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options, const std::vector<glm::dvec2>& spans) {

@@ -59,8 +59,8 @@ struct PlanOptions {
                                      // texel size their bound reserves, so at most the bake's cap
     WallKind wallKind = WallKind::Flat;  // flat: the flat bound (angular_error.h); depth: the depth
                                      // walls' bound (depthTextureBound: the smaller of
-                                     // depth_wall.h's span form, from each wall's depth span
-                                     // PlannedWall::depthNear .. depthBehind, and its flat form)
+                                     // depth_wall.h's span form and its segment form, from each
+                                     // wall's depth span PlannedWall::depthNear .. depthBehind)
 };
 
 // Throws cavewall::Error naming the option when it is out of range.
@@ -185,21 +185,21 @@ glm::ivec2 textureResolution(double nearestDistance, const display::ScreenQuad& 
 double texelDiagonal(const display::ScreenQuad& wall, glm::ivec2 resolution);
 
 // The depth walls' planned bound of a texture proven over `volume`: the smaller of
-// depthZoneBound (the span form) and depthFlatFormZoneBound (the flat form; both rigorous,
+// depthZoneBound (the span form) and depthSegmentZoneBound (the segment form; both rigorous,
 // walls/depth_wall.h), with the texel of the resolution textureResolution gives for the
 // volume's nearest distance at the sampling point's height: what the planner proves <= alpha
 // and stores as Texture::maxError for depth walls. Radians.
 double depthTextureBound(const ZoneVolume& volume, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
                          glm::dvec2 span, const PlanOptions& options);
 
-// depthTextureBound(...) <= alpha, proven (the planner's test): the flat form decided first (a
-// decision per zone vertex), then the span form, whose search stops once its answer is known.
+// depthTextureBound(...) <= alpha, proven (the planner's test): the segment form decided first
+// (a decision per zone vertex), then the span form, whose search stops once its answer is known.
 bool depthTextureWithin(const ZoneVolume& volume, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
                         glm::dvec2 span, const PlanOptions& options, double alpha);
 
 // The bound of `texture`'s error for one eye (world), radians, for the plan's wall kind: flat,
-// maxAngularError up to the wall's depthBehind; depth, the smaller of depthEyeBound over the
-// wall's span and depthFlatFormEyeBound, with the texture's resolution. What the frame planner
+// maxAngularError up to the wall's depthBehind; depth, the smaller of depthEyeBound and
+// depthSegmentEyeBound over the wall's span, with the texture's resolution. What the frame planner
 // checks and reports every frame.
 double textureErrorAt(const Plan& plan, const Texture& texture, glm::dvec3 eye);
 

@@ -233,7 +233,7 @@ void printPlanSummary(std::ostream& out, const Plan& plan, const scenes::SceneDe
     out << line;
     std::snprintf(line, sizeof line, "%s walls: largest texture error bound %.3f° (alpha %g°; %s)\n",
                   depth ? "depth" : "flat", totals.maxErrorDeg, plan.alphaDeg,
-                  depth ? "depth reprojection bound, span or flat form, walls/depth_wall.h"
+                  depth ? "depth reprojection bound, span or segment form, walls/depth_wall.h"
                         : "flat bound at any depth, walls/angular_error.h");
     out << line;
     std::snprintf(line, sizeof line,

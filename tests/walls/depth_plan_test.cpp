@@ -77,13 +77,21 @@ TEST(DepthPlan, EyeBoundHoldsForEveryDrawnPixelAndIsReached) {
     EXPECT_GT(drawn, 16000);  // of 18000: the rest see past the wall's edges (no texel holds that)
     EXPECT_LE(worst, bound);
     EXPECT_GE(worst, 0.5 * bound);
+    // The segment form: the exact angle where the span form is linear in k, so at most it, and
+    // reached as closely.
+    const double segment = depthSegmentEyeBound(f.toWorld(e), f.toWorld(s), kQuad, span, std::hypot(4.0 / n, 3.0 / (n * 3 / 4)));
+    std::printf("segment form %.5f rad (ratio %.3f)\n", segment, worst / segment);
+    EXPECT_LE(segment, bound);
+    EXPECT_LE(worst, segment);
+    EXPECT_GE(worst, 0.5 * segment);
 }
 
-// The flat form (depth_wall.h): a near card 2 cm behind the wall with a window onto a plane 4 m
+// The segment form (depth_wall.h): a near card 2 cm behind the wall with a window onto a plane 4 m
 // behind, the window in front of the eye, which moved 0.6 m along +x. The skin across the
-// window's left edge shows the card's points at ray depths up to 4: nearly the flat texture's
-// largest error, which is where the eye looks straight at the wall. A form 25 % too loose fails.
-TEST(DepthPlan, FlatFormHoldsForEveryDrawnPixelAndIsReached) {
+// window's left edge shows the card's points at ray depths up to 4: nearly the largest angle a
+// ray's part from 0.02 to 4 m subtends, which is where the eye looks straight at the wall. A
+// form 25 % too loose fails.
+TEST(DepthPlan, SegmentFormHoldsForEveryDrawnPixelAndIsReached) {
     const WallFrame f = wallFrame(kQuad);
     const glm::dvec3 s(2.0, 1.5, -3.0), e(2.6, 1.5, -3.0);
     const int n = 512, m = n * 3 / 4;
@@ -95,8 +103,11 @@ TEST(DepthPlan, FlatFormHoldsForEveryDrawnPixelAndIsReached) {
         }
     const glm::dvec2 span = depthRange(image);
     const double h = std::hypot(4.0 / n, 3.0 / m);
-    const double form = depthFlatFormEyeBound(f.toWorld(e), f.toWorld(s), kQuad, span.y, h);
-    EXPECT_NEAR(form, maxAngularError(f.toWorld(e), f.toWorld(s), kQuad, span.y * (1 + 1e-6) + 3e-6) + 0.5 * h / 3.0, 1e-9);
+    const double form = depthSegmentEyeBound(f.toWorld(e), f.toWorld(s), kQuad, span, h);
+    const double nearDepth = span.x - 1e-6 * (3.0 + span.x), farDepth = span.y + 1e-6 * (3.0 + span.y);  // widened
+    EXPECT_NEAR(form, maxAngularError(f.toWorld(e), f.toWorld(s), nearWall(kQuad, f.toWorld(s), nearDepth), farDepth - nearDepth) + 0.5 * h / 3.0, 1e-9);
+    // Below the flat texture's own error up to the far depth (the form with dNear = 0).
+    EXPECT_LT(form, depthSegmentEyeBound(f.toWorld(e), f.toWorld(s), kQuad, {0.0, span.y}, h));
     double worst = 0.0;
     for (int row = 0; row < 9; ++row)
         for (int k = 0; k < 2000; ++k) {
@@ -104,9 +115,91 @@ TEST(DepthPlan, FlatFormHoldsForEveryDrawnPixelAndIsReached) {
             const ReprojectHit hit = reproject(image, f, e, s, w, span);
             if (hit.hit) worst = std::max(worst, shownError(image, f, e, s, w, hit));
         }
-    std::printf("flat form %.5f rad, largest error drawn %.5f rad (ratio %.3f)\n", form, worst, worst / form);
+    std::printf("segment form %.5f rad, largest error drawn %.5f rad (ratio %.3f)\n", form, worst, worst / form);
     EXPECT_LE(worst, form);
     EXPECT_GE(worst, 0.8 * form);
+}
+
+// nearWall is the wall as the sampling point sees it on the plane `depth` behind: its corners
+// lie on the rays from S through the wall's corners, at that depth.
+TEST(DepthPlan, NearWallIsTheWallProjectedFromTheSamplingPoint) {
+    const glm::dvec3 s(0.5, 1.5, 3.0);
+    const display::ScreenQuad w = nearWall(kQuad, s, 1.5);  // S is 3 m in front: scale 1.5
+    EXPECT_NEAR(glm::length(w.lowerLeft - (kQuad.lowerLeft + 0.5 * (kQuad.lowerLeft - s))), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(w.lowerRight - (kQuad.lowerRight + 0.5 * (kQuad.lowerRight - s))), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(w.upperLeft - (kQuad.upperLeft + 0.5 * (kQuad.upperLeft - s))), 0.0, 1e-12);
+    EXPECT_NEAR(w.lowerLeft.z, -1.5, 1e-12);
+    // From behind the wall the plane moves the other way.
+    EXPECT_NEAR(nearWall(kQuad, {0.5, 1.5, -3.0}, 1.5).lowerLeft.z, 1.5, 1e-12);
+    EXPECT_THROW(nearWall(kQuad, {0.5, 1.5, 0.0}, 1.5), Error);
+}
+
+// The segment form per eye is the largest angle the part [dNear, dFar] of S's ray through a
+// wall point subtends at the eye (sampled densely over the wall), plus the texel term; it is at
+// most the span form and the flat texture's error (dNear = 0), and shrinks as dNear grows.
+TEST(DepthPlan, SegmentEyeFormIsTheLargestAngleOfTheRaysParts) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const WallFrame f = wallFrame(kQuad);
+    for (int i = 0; i < 40; ++i) {
+        const glm::dvec3 s(-1.5 + 3.0 * u(rng), 1.0 + u(rng), 1.0 + 3.0 * u(rng));
+        const glm::dvec3 e(-2.5 + 5.0 * u(rng), 1.0 + u(rng), 0.5 + 4.0 * u(rng));
+        const double nearDepth = 3.0 * u(rng), farDepth = nearDepth + 0.5 + 20.0 * u(rng), h = 0.01 * u(rng);
+        const glm::dvec2 span(nearDepth, farDepth);
+        const double form = depthSegmentEyeBound(e, s, kQuad, span, h);
+        const double texel = 0.5 * h * std::max(1.0 / e.z, 1.0 / s.z);
+        const glm::dvec3 sw = f.toWall(s);
+        double sampled = 0.0;
+        for (int a = 0; a <= 80; ++a)
+            for (int b = 0; b <= 60; ++b) {
+                const glm::dvec3 t(f.width * a / 80.0, f.height * b / 60.0, 0.0);
+                auto at = [&](double d) { return f.toWorld(t + (d / -sw.z) * (t - sw)); };
+                const glm::dvec3 p = glm::normalize(at(nearDepth) - e), q = glm::normalize(at(farDepth) - e);
+                sampled = std::max(sampled, std::atan2(glm::length(glm::cross(p, q)), glm::dot(p, q)));
+            }
+        EXPECT_LE(sampled, form - texel + 1e-9) << "case " << i;
+        EXPECT_GE(sampled, 0.99 * (form - texel)) << "case " << i;
+        EXPECT_LE(form, depthEyeBound(e, s, kQuad, span, h) + 1e-12) << "case " << i;
+        EXPECT_LE(form, depthSegmentEyeBound(e, s, kQuad, {0.0, farDepth}, h) + 1e-12) << "case " << i;
+        EXPECT_LT(depthSegmentEyeBound(e, s, kQuad, {nearDepth + 1.0, farDepth + 1.0}, h), form) << "case " << i;
+    }
+}
+
+// The zone form (nearWall's depth-independent error over the zone) covers every eye's form for
+// any far depth, sampled inside the zone and on its border, and is reached at a vertex when the
+// far depth is large; a larger near depth makes it smaller than the flat texture's.
+TEST(DepthPlan, SegmentZoneFormCoversEveryEyeOfTheZone) {
+    const ZoneVolume zone{{{-1, 1}, {2, 1.5}, {2.5, 4}, {-1.5, 3}}, {1.2, 2.0}};
+    const glm::dvec3 s(0.3, 1.6, 2.2);
+    const double h = 0.004;
+    for (double nearDepth : {0.0, 0.3, 2.0, 10.0}) {
+        const double bound = depthSegmentZoneBound(zone, s, kQuad, nearDepth, h);
+        double worst = 0.0;
+        std::mt19937 rng(3);
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        for (int k = 0; k < 400; ++k) {
+            // A point of the zone: a random mix of its vertices, or a vertex.
+            glm::dvec2 p(0.0);
+            if (k < 4) {
+                p = zone.floor[k];
+            } else {
+                double total = 0.0;
+                for (const glm::dvec2& v : zone.floor) {
+                    const double w = u(rng);
+                    p += w * v, total += w;
+                }
+                p /= total;
+            }
+            const glm::dvec3 e(p.x, k < 4 ? 1.2 : 1.2 + 0.8 * u(rng), p.y);
+            for (double farDepth : {nearDepth + 0.5, nearDepth + 5.0, nearDepth + 1e6}) {
+                const double eye = depthSegmentEyeBound(e, s, kQuad, {nearDepth, farDepth}, h);
+                EXPECT_LE(eye, bound + 1e-9) << "near " << nearDepth << " far " << farDepth;
+                worst = std::max(worst, eye);
+            }
+        }
+        EXPECT_GE(worst, 0.98 * bound) << "near " << nearDepth;
+        if (nearDepth > 0.0) EXPECT_LT(bound, depthSegmentZoneBound(zone, s, kQuad, 0.0, h));
+    }
 }
 
 TEST(DepthPlan, EyeBoundShrinksWithTheSpanAndIsSymmetricAcrossTheWall) {
@@ -147,14 +240,14 @@ TEST(DepthPlan, ZoneBoundCoversEveryEyeOfTheZone) {
     EXPECT_GE(worst, 0.4 * bound);
 }
 
-// The planner's predicates (depthZoneWithin, depthFlatFormZoneWithin) stop early; they must give
+// The planner's predicates (depthZoneWithin, depthSegmentZoneWithin) stop early; they must give
 // the bounds' answer. Random zones, sampling points, spans and texels, with alpha on both sides
-// of each bound and at it: the span form exactly; the flat form too, except within the
+// of each bound and at it: the span form exactly; the segment form too, except within the
 // bound's own tolerance of alpha (it decides, the bound bisects to kErrorTolerance).
 TEST(DepthPlan, WithinPredicatesGiveTheBoundsAnswer) {
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    int spanYes = 0, spanNo = 0, flatYes = 0, flatNo = 0;
+    int spanYes = 0, spanNo = 0, segmentYes = 0, segmentNo = 0;
     for (int i = 0; i < 300; ++i) {
         const double x = -3.0 + 6.0 * u(rng), z = 0.5 + 5.0 * u(rng), w = 0.2 + 2.0 * u(rng), d = 0.2 + 2.0 * u(rng);
         const ZoneVolume zone{{{x, z}, {x + w, z}, {x + w + 0.3 * u(rng), z + d}, {x - 0.3 * u(rng), z + d}}, {1.2, 2.0}};
@@ -162,28 +255,29 @@ TEST(DepthPlan, WithinPredicatesGiveTheBoundsAnswer) {
         const double nearDepth = 2.0 * u(rng);
         const glm::dvec2 span(nearDepth, u(rng) < 0.1 ? kInfiniteDepth : nearDepth + 8.0 * u(rng));
         const double h = 0.02 * u(rng);
-        const double spanBound = depthZoneBound(zone, s, kQuad, span, h), flatBound = depthFlatFormZoneBound(zone, s, kQuad, h);
+        const double spanBound = depthZoneBound(zone, s, kQuad, span, h),
+                     segmentBound = depthSegmentZoneBound(zone, s, kQuad, span.x, h);
         for (double f : {0.5, 0.9, 0.99, 1.0, 1.01, 1.1, 2.0}) {
             const double alpha = std::min(f * spanBound, 1.5);
             const bool spanWithin = depthZoneWithin(zone, s, kQuad, span, h, alpha);
             EXPECT_EQ(spanWithin, spanBound <= alpha) << "zone " << i << " alpha " << alpha << " bound " << spanBound;
             (spanWithin ? spanYes : spanNo) += 1;
-            const double flatAlpha = std::min(f * flatBound, 1.5);
-            const bool flatWithin = depthFlatFormZoneWithin(zone, s, kQuad, h, flatAlpha);
-            if (std::abs(flatBound - flatAlpha) > 1e-8)
-                EXPECT_EQ(flatWithin, flatBound <= flatAlpha) << "zone " << i << " alpha " << flatAlpha << " bound " << flatBound;
-            (flatWithin ? flatYes : flatNo) += 1;
+            const double segmentAlpha = std::min(f * segmentBound, 1.5);
+            const bool segmentWithin = depthSegmentZoneWithin(zone, s, kQuad, span.x, h, segmentAlpha);
+            if (std::abs(segmentBound - segmentAlpha) > 1e-8)
+                EXPECT_EQ(segmentWithin, segmentBound <= segmentAlpha) << "zone " << i << " alpha " << segmentAlpha << " bound " << segmentBound;
+            (segmentWithin ? segmentYes : segmentNo) += 1;
         }
     }
     // Both answers occur, often.
-    EXPECT_GT(std::min({spanYes, spanNo, flatYes, flatNo}), 300);
+    EXPECT_GT(std::min({spanYes, spanNo, segmentYes, segmentNo}), 300);
     // No zone, an eye on the other side: not within, whatever alpha.
     const glm::dvec3 s(0.0, 1.6, 2.0);
     EXPECT_FALSE(depthZoneWithin({{}, {1.2, 2.0}}, s, kQuad, {0.5, 2.0}, 0.01, 1.5));
-    EXPECT_FALSE(depthFlatFormZoneWithin({{}, {1.2, 2.0}}, s, kQuad, 0.01, 1.5));
+    EXPECT_FALSE(depthSegmentZoneWithin({{}, {1.2, 2.0}}, s, kQuad, 0.5, 0.01, 1.5));
     const ZoneVolume across{{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}, {1.2, 2.0}};
     EXPECT_FALSE(depthZoneWithin(across, s, kQuad, {0.5, 2.0}, 0.01, 1.5));
-    EXPECT_FALSE(depthFlatFormZoneWithin(across, s, kQuad, 0.01, 1.5));
+    EXPECT_FALSE(depthSegmentZoneWithin(across, s, kQuad, 0.5, 0.01, 1.5));
 }
 
 // Depth images whose depths are anywhere in the wall's span: blocks of random depth.
