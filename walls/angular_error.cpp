@@ -340,6 +340,64 @@ bool zoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const ScreenQu
     return true;
 }
 
+namespace {
+
+// The zone's vertices with the depth each is decided at (angular_error.h, zoneDepthBound); an
+// empty list when some vertex's eta >= 1 or lies on the plane (the depth-independent bound then).
+struct InflatedEye {
+    glm::dvec3 eye;
+    double depth;
+};
+std::vector<InflatedEye> inflatedEyes(const ZoneVolume& zone, const ScreenQuad& wall, double depthBehind) {
+    const glm::dvec3 n = display::screenBasis(wall).normal;
+    glm::dvec2 mean(0.0);
+    for (const glm::dvec2& p : zone.floor) mean += p;
+    mean /= static_cast<double>(zone.floor.size());
+    double r2 = 0.0;
+    for (const glm::dvec2& p : zone.floor) r2 = std::max(r2, glm::dot(p - mean, p - mean));
+    const double dy = zone.heightRange.y - zone.heightRange.x;
+    r2 += 0.25 * dy * dy;
+    std::vector<InflatedEye> eyes;
+    for (const glm::dvec2& p : zone.floor)
+        for (double y : {zone.heightRange.x, zone.heightRange.y}) {
+            const glm::dvec3 e{p.x, y, p.y};
+            const double h = std::abs(glm::dot(e - wall.lowerLeft, n));
+            const double eta = r2 / (h * h);
+            if (!(eta < 1.0)) return {};
+            eyes.push_back({e, depthBehind / (1.0 - eta)});
+        }
+    return eyes;
+}
+
+}  // namespace
+
+double zoneDepthBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const ScreenQuad& wall, double depthBehind) {
+    if (depthBehind <= 0) return 0.0;
+    const double independent = zoneMaxError(zone, samplingPoint, wall, kInfiniteDepth);
+    if (!std::isfinite(depthBehind) || zone.floor.empty() || independent > kHalfPi) return independent;
+    double worst = 0.0;
+    const std::vector<InflatedEye> eyes = inflatedEyes(zone, wall, depthBehind);
+    if (eyes.empty()) return independent;
+    for (const InflatedEye& e : eyes) worst = std::max(worst, maxAngularError(e.eye, samplingPoint, wall, e.depth));
+    // The form needs t < 90°: a larger vertex error proves nothing. (At most the independent
+    // bound anyway: each vertex's error grows with the depth.)
+    return worst < kHalfPi ? std::min(worst, independent) : independent;
+}
+
+bool zoneWithinDepth(const ZoneVolume& zone, glm::dvec3 samplingPoint, const ScreenQuad& wall, double depthBehind,
+                     double alpha) {
+    if (!(alpha > 0)) return false;
+    if (depthBehind <= 0) return true;
+    if (!std::isfinite(depthBehind) || zone.floor.empty()) return zoneWithin(zone, samplingPoint, wall, alpha);
+    const std::vector<InflatedEye> eyes = inflatedEyes(zone, wall, depthBehind);
+    if (eyes.empty() || !(alpha < kHalfPi)) return zoneWithin(zone, samplingPoint, wall, alpha);
+    const Rect r = rectOf(wall);
+    // A vertex over alpha at its depth is over it at every larger depth: zoneWithin would fail too.
+    for (const InflatedEye& e : eyes)
+        if (!errorWithinRect(r, e.eye, samplingPoint, wall, e.depth, alpha)) return false;
+    return true;
+}
+
 double seedError2D(double halfWidth, double distance) { return std::atan(halfWidth / distance); }
 
 double seedMinDistance(double halfWidth, double alpha) { return halfWidth / std::tan(alpha); }

@@ -72,6 +72,31 @@ double zoneMaxError(const ZoneVolume& zone, glm::dvec3 samplingPoint, const Scre
 // True when every eye of `zone` is proven within `alpha` for every depth behind the wall.
 bool zoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const ScreenQuad& wall, double alpha);
 
+// A finite depth over a zone, rigorously and at the cost of one eye per zone vertex (zoneMaxError's
+// branch and bound needs boxes of millimetres near a bound, since an eye's error changes by about
+// 1 / h radians per metre). Let x = E - Q, y = S - Q and k = depthBehind / dist(S, plane). The
+// error at depth D is angle(x, x + k y) (the fact above), so for t < 90° it is within t exactly
+// when
+//   g(E) = tan t (x . y + |x|^2 / k) - |x × y| >= 0.
+// In E, tan t (x . y) - |x × y| is concave and (tan t / k) |x|^2 is a convex quadratic. For E a
+// convex combination sum w_i V_i of the zone's vertices, concavity and the quadratic's identity
+// sum w_i |V_i - Q|^2 = |E - Q|^2 + sum w_i |V_i - E|^2 give
+//   g(E) >= min_i g(V_i) - (tan t / k) r^2,   r^2 >= sum w_i |V_i - E|^2,
+// and for the prism (floor polygon x height range, product weights) r^2 = R^2 + (y1 - y0)^2 / 4
+// with R the largest distance of a floor vertex from the floor vertices' mean. Since |V_i - Q|
+// >= h_i (V_i's distance to the plane), (tan t / k) r^2 <= (tan t / k) eta_i |V_i - Q|^2 with
+// eta_i = r^2 / h_i^2, so g(V_i) >= (tan t / k) r^2 holds when V_i's error at the larger depth
+// depthBehind / (1 - eta_i) (the same form with k / (1 - eta_i)) is within t. So:
+//   every eye of the zone is within the largest of the vertices' errors at those depths,
+// or the depth-independent bound (zoneMaxError at kInfiniteDepth) where eta_i >= 1; the
+// smaller of the two. Exact for a zone of one point; the depths grow by 1 / (1 - eta), 1.2x for
+// a 1 m square zone 2 m from the wall.
+double zoneDepthBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const ScreenQuad& wall, double depthBehind);
+// zoneDepthBound(...) <= alpha, decided one vertex at a time (errorWithin), or zoneWithin where a
+// vertex's eta >= 1. Rigorous like the bound.
+bool zoneWithinDepth(const ZoneVolume& zone, glm::dvec3 samplingPoint, const ScreenQuad& wall, double depthBehind,
+                     double alpha);
+
 // The seeds' 2D rule (Ebbesmeyer, seed 000 eq. 2-4; seed 003): eye at the sampling height,
 // moving parallel to the wall by halfWidth at distance x from the wall point: error
 // atan(halfWidth / x); minimum zone distance x_Tmin = halfWidth / tan(alpha); a wall (or scene)

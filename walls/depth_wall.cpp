@@ -501,21 +501,22 @@ double segmentTexelTerm(const ZoneVolume& zone, glm::dvec3 samplingPoint, const 
 }  // namespace
 
 double depthSegmentZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
-                             double dNear, double texelDiagonal) {
-    const double texel = segmentTexelTerm(zone, samplingPoint, wall, dNear, texelDiagonal);
-    if (std::isnan(texel)) return kPi;
-    const double ds = std::abs(wallFrame(wall).toWall(samplingPoint).z);
-    const display::ScreenQuad near = nearWall(wall, samplingPoint, widened({dNear, dNear}, ds).x);
-    const double bound = zoneMaxError(zone, samplingPoint, near) + texel;
+                             glm::dvec2 span, double texelDiagonal) {
+    const double texel = segmentTexelTerm(zone, samplingPoint, wall, span.x, texelDiagonal);
+    if (std::isnan(texel) || std::isnan(span.y)) return kPi;
+    const glm::dvec2 sp = widened(span, std::abs(wallFrame(wall).toWall(samplingPoint).z));
+    const double seg = sp.y > sp.x ? zoneDepthBound(zone, samplingPoint, nearWall(wall, samplingPoint, sp.x), sp.y - sp.x) : 0.0;
+    const double bound = seg + texel;
     return std::isfinite(bound) ? std::min(bound, kPi) : kPi;
 }
 
 bool depthSegmentZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
-                            double dNear, double texelDiagonal, double alpha) {
-    const double texel = segmentTexelTerm(zone, samplingPoint, wall, dNear, texelDiagonal);
-    if (!(alpha - texel > 0.0)) return false;
-    const double ds = std::abs(wallFrame(wall).toWall(samplingPoint).z);
-    return zoneWithin(zone, samplingPoint, nearWall(wall, samplingPoint, widened({dNear, dNear}, ds).x), alpha - texel);
+                            glm::dvec2 span, double texelDiagonal, double alpha) {
+    const double texel = segmentTexelTerm(zone, samplingPoint, wall, span.x, texelDiagonal);
+    if (!(alpha - texel > 0.0) || std::isnan(span.y)) return false;
+    const glm::dvec2 sp = widened(span, std::abs(wallFrame(wall).toWall(samplingPoint).z));
+    return !(sp.y > sp.x) ||
+           zoneWithinDepth(zone, samplingPoint, nearWall(wall, samplingPoint, sp.x), sp.y - sp.x, alpha - texel);
 }
 
 }  // namespace cavewall::walls

@@ -363,12 +363,10 @@ bool depthZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const dis
 // linearly, so it is at most the span form's step term over the whole span; with dNear = 0 it
 // is the flat texture's own exact error up to dFar (until December 2026 the only form besides
 // the span form, "the flat form"), and every dNear > 0 makes it smaller.
-// Over a zone the finite far end is dropped: the angle of [P(dNear), P(dFar)] is at most that
-// of the ray beyond P(dNear), the depth-independent error of wall', which over a convex zone is
-// largest at one of its vertices (angular_error.h), so zoneMaxError and zoneWithin on wall'
-// are exact, fast and rigorous there. (The finite far end makes the eyes' sets non-convex; a
-// branch and bound over eyes needs boxes of millimetres near alpha, since the error changes at
-// about 1 / D_E radians per metre of eye.)
+// Over a zone it is zoneDepthBound on wall' for that depth (angular_error.h): the zone's vertices'
+// errors at depths grown by 1 / (1 - eta), eta = r^2 / h^2 (r the zone's spread, h a vertex's
+// distance to wall''s plane), rigorous for every eye of the zone at one eye per vertex; or, where
+// eta >= 1, the depth-independent error of wall', largest at a zone vertex.
 
 // The wall projected from `samplingPoint` onto the plane parallel to it `depth` metres behind
 // it (on the side away from the sampling point): corners c + (depth / D_S)(c - S). Throws
@@ -379,16 +377,15 @@ display::ScreenQuad nearWall(const display::ScreenQuad& wall, glm::dvec3 samplin
 // sampling point is on the plane or they are on different sides of it.
 double depthSegmentEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const display::ScreenQuad& wall, glm::dvec2 span,
                             double texelDiagonal);
-// Over a zone: the depth-independent maximum of nearWall at dNear (zoneMaxError, exact at the
-// zone's vertices), plus the texel term at the zone's nearest distance. At least every eye's
-// form for any dFar.
+// Over a zone: zoneDepthBound of nearWall at dNear for dFar - dNear, plus the texel term at the
+// zone's nearest distance. At least every eye's form.
 double depthSegmentZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
-                             double dNear, double texelDiagonal);
-// The zone form proven within alpha: zoneWithin on nearWall at alpha less the texel term (one
-// decision per zone vertex, stopping at the first that fails), not zoneMaxError's bisection to
+                             glm::dvec2 span, double texelDiagonal);
+// The zone form proven within alpha: zoneWithinDepth on nearWall at alpha less the texel term
+// (one decision per zone vertex, stopping at the first that fails), not the bound's bisection to
 // 1e-9 rad. Rigorous like the bound; it can accept where the bound exceeds alpha by its
 // tolerance.
 bool depthSegmentZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
-                            double dNear, double texelDiagonal, double alpha);
+                            glm::dvec2 span, double texelDiagonal, double alpha);
 
 }  // namespace cavewall::walls

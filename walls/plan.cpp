@@ -109,14 +109,14 @@ double depthTextureBound(const ZoneVolume& volume, glm::dvec3 samplingPoint, con
     const glm::ivec2 resolution = textureResolution(nearestDistance(volume.floor, samplingPoint.y, wall), wall, options);
     const double h = texelDiagonal(wall, resolution);
     return std::min(depthZoneBound(volume, samplingPoint, wall, span, h),
-                    depthSegmentZoneBound(volume, samplingPoint, wall, span.x, h));
+                    depthSegmentZoneBound(volume, samplingPoint, wall, span, h));
 }
 
 bool depthTextureWithin(const ZoneVolume& volume, glm::dvec3 samplingPoint, const ScreenQuad& wall, glm::dvec2 span,
                         const PlanOptions& options, double alpha) {
     const glm::ivec2 resolution = textureResolution(nearestDistance(volume.floor, samplingPoint.y, wall), wall, options);
     const double h = texelDiagonal(wall, resolution);
-    return depthSegmentZoneWithin(volume, samplingPoint, wall, span.x, h, alpha) ||
+    return depthSegmentZoneWithin(volume, samplingPoint, wall, span, h, alpha) ||
            depthZoneWithin(volume, samplingPoint, wall, span, h, alpha);
 }
 
