@@ -24,6 +24,11 @@
 // The geometry distance is the smallest at which a zone of minZoneSize is proven, so the
 // texture count trades against minZoneSize (a larger alpha shrinks the geometry strip and
 // may therefore need more textures, not fewer).
+// Depth walls keep the flat walls' geometry strip: their border is searched from where the
+// flat bound first proves a zone of minZoneSize (the same layout with the flat bound), not from
+// the wall. Their tighter bound would prove zones nearer the wall, where each needs a large
+// texture: on the default plant at alpha = 10° it took the strip from 4.25 to 3.44 m for
+// 3,517 textures instead of 2,980 (README, "Depth walls"), and drew less geometry only there.
 //
 // Beyond a neighbour drawn as geometry (Plan::beyond): while the eye is in a cell's geometry
 // zone of a wall or in that zone's texture->geometry blend strip, the cell behind the wall (the

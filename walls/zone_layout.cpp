@@ -29,10 +29,11 @@ struct Context {
     double sLo, sHi, dMin, dMax;
     const PlanOptions* options = nullptr;
     glm::dvec2 span{0.0, kInf};         // the wall's depth span (depth walls)
+    bool flatBound = false;             // prove with the flat bound whatever the wall kind
 
     // Is the volume proven within alpha for the texture baked from `sample`?
     bool proven(const ZoneVolume& volume, glm::dvec3 sample) const {
-        if (options->wallKind == WallKind::Flat) return zoneWithin(volume, sample, in.quad, alpha);
+        if (flatBound || options->wallKind == WallKind::Flat) return zoneWithin(volume, sample, in.quad, alpha);
         return depthTextureWithin(volume, sample, in.quad, span, *options, alpha);
     }
 
@@ -189,9 +190,20 @@ struct Layout {
 };
 
 Layout layout(const Context& c) {
-    if (auto rows = planRows(c, c.dMin, false)) return {false, c.dMin, *rows};
-    double lo = c.dMin, hi = std::max(c.dMin, c.dMax - c.minSize);
+    // Depth walls keep the geometry strip the flat bound needs (zone_layout.h): their own bound
+    // would prove zones nearer the wall, which then need many large textures.
+    double from = c.dMin;
+    if (c.options->wallKind == WallKind::Depth && !c.flatBound) {
+        Context flat = c;
+        flat.flatBound = true;
+        const Layout f = layout(flat);
+        if (f.geometryBelow) from = f.dG;
+    }
+    if (from <= c.dMin)
+        if (auto rows = planRows(c, c.dMin, false)) return {false, c.dMin, *rows};
+    double lo = from, hi = std::max(from, c.dMax - c.minSize);
     if (!firstRowFeasible(c, hi)) return {true, c.dMax, {}};
+    if (from > c.dMin && firstRowFeasible(c, from)) hi = from;
     while (hi - lo > 1e-3) {
         const double mid = 0.5 * (lo + hi);
         (firstRowFeasible(c, mid) ? hi : lo) = mid;

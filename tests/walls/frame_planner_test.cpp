@@ -408,8 +408,8 @@ TEST_F(FramePlannerTest, DrawnWeightsSumToOneAndErrorsAreTheExactAngularError) {
 }
 
 // Depth walls (PlanOptions::wallKind): the error reported and counted over alpha is the depth
-// walls' own bound (depthEyeBound over the wall's depth span, from the boxes: 3 .. 7 m behind
-// the plane), not the flat one.
+// walls' own bound (the smaller of depthEyeBound and depthSegmentEyeBound over the wall's depth
+// span, from the boxes: 3 .. 7 m behind the plane), not the flat one.
 TEST_F(FramePlannerTest, DepthWallsReportTheirOwnBound) {
     PlanOptions options;
     options.wallKind = WallKind::Depth;
@@ -427,8 +427,9 @@ TEST_F(FramePlannerTest, DepthWallsReportTheirOwnBound) {
             double worst = 0.0, flat = 0.0;
             for (const auto& [id, weight] : s.textures) {
                 const Texture& t = walls.plan.textures[id];
-                worst = std::max(worst, depthEyeBound(eye, t.samplingPoint, wall.quad, {3.0, 7.0},
-                                                      texelDiagonal(wall.quad, t.resolution)));
+                const double h = texelDiagonal(wall.quad, t.resolution);
+                worst = std::max(worst, std::min(depthEyeBound(eye, t.samplingPoint, wall.quad, {3.0, 7.0}, h),
+                                                 depthSegmentEyeBound(eye, t.samplingPoint, wall.quad, {3.0, 7.0}, h)));
                 flat = std::max(flat, maxAngularError(eye, t.samplingPoint, wall.quad, wall.depthBehind));
             }
             EXPECT_EQ(s.errorDeg, glm::degrees(worst));
