@@ -371,6 +371,15 @@ TEST(DepthPlan, NarrowSpansNeedFewerTexturesThanFlatWalls) {
     const Plan wide = planHall(WallKind::Depth, {0.0, 1e9});
     std::printf("span 0 .. 1e9 m: %zu depth textures\n", wide.textures.size());
     EXPECT_LE(double(wide.textures.size()), 1.1 * double(flat.textures.size()));
+    // Depth walls keep the flat walls' geometry strip (plan.h): each side's border at least the
+    // flat plan's, the same on most sides.
+    ASSERT_EQ(depth.sides.size(), flat.sides.size());
+    int same = 0;
+    for (std::size_t i = 0; i < flat.sides.size(); ++i) {
+        EXPECT_GE(depth.sides[i].geometryDistance, flat.sides[i].geometryDistance - 1e-12) << "side " << i;
+        same += depth.sides[i].geometryDistance == flat.sides[i].geometryDistance;
+    }
+    EXPECT_GE(2 * same, int(flat.sides.size()));
     // The flat plan does not depend on the span; each texture reports its own kind's bound.
     EXPECT_EQ(flat.textures.size(), planHall(WallKind::Flat, {0.0, 1e9}).textures.size());
     for (const Texture& t : depth.textures)
