@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <tuple>
@@ -98,7 +99,11 @@ TEST(PlanCli, DepthWallsJsonKeepsTheirOwnBound) {
             for (const auto& v : z["floorPolygon"])
                 for (double y : {z["heightRange"][0].get<double>(), z["heightRange"][1].get<double>()}) {
                     const glm::dvec3 eye(v[0].get<double>(), y, v[1].get<double>());
-                    const double bound = walls::depthEyeBound(eye, s, quad, span, walls::texelDiagonal(quad, resolution));
+                    // The per-eye bound the frame planner checks (walls::textureErrorAt): the
+                    // smaller of the span and segment forms.
+                    const double h = walls::texelDiagonal(quad, resolution);
+                    const double bound = std::min(walls::depthEyeBound(eye, s, quad, span, h),
+                                                  walls::depthSegmentEyeBound(eye, s, quad, span, h));
                     ASSERT_LE(bound, t["maxError"].get<double>() + 1e-12);
                     ++checked;
                 }
