@@ -2,8 +2,9 @@
 # Builds and runs the whole test suite: the release build with every test (unit, gl, cli), then
 # the unit tests again under AddressSanitizer + UndefinedBehaviorSanitizer in a headless-only
 # build (no GLFW, no MPI), which also proves that such a build works. That build compiles only
-# what the unit tests run (the unit-tests target). Tests run on every core: the GL tests share
-# no files or ports (each writes under its own output folder and asks for a free port).
+# what the unit tests run (the unit-tests target). Tests run on every core: no two tests use the
+# same port (each binds a free one), and the folders some share (a generated scene, a bake
+# cache) are written atomically with the same content.
 set -eu
 cd "$(dirname "$0")/.."
 export EGL_PLATFORM="${EGL_PLATFORM:-surfaceless}"

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -479,44 +480,51 @@ double depthSegmentEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const disp
 
 namespace {
 
-// The segment form's texel term over a zone, 0.5 h max(1 / Dmin, 1 / D_S); NaN when the form
-// does not apply (no zone, a negative texel or near depth, an eye on the plane or on the other
-// side).
-double segmentTexelTerm(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
-                        double dNear, double texelDiagonal) {
+// What both zone forms of the segment bound need: the texel term over the zone, 0.5 h max(1 /
+// Dmin, 1 / D_S), and the span widened for rounding (depth_wall.h, "Precision"); nullopt when
+// the form does not apply (no zone, a negative texel, a near depth that is negative or infinite,
+// a NaN far depth, an eye on the plane or on the other side).
+struct SegmentZone {
+    double texel;
+    glm::dvec2 span;
+};
+std::optional<SegmentZone> segmentZone(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
+                                       glm::dvec2 span, double texelDiagonal) {
     const WallFrame f = wallFrame(wall);
     const glm::dvec3 s = f.toWall(samplingPoint);
-    const double none = std::numeric_limits<double>::quiet_NaN();
-    if (zone.floor.empty() || !(texelDiagonal >= 0.0) || !(dNear >= 0.0) || !std::isfinite(dNear)) return none;
+    if (zone.floor.empty() || !(texelDiagonal >= 0.0) || !(span.x >= 0.0) || !std::isfinite(span.x) ||
+        std::isnan(span.y))
+        return std::nullopt;
     double dmin = std::numeric_limits<double>::infinity();
     for (const glm::dvec2& p : zone.floor)
         for (double y : {zone.heightRange.x, zone.heightRange.y}) {
             const glm::dvec3 e = f.toWall({p.x, y, p.y});
-            if (!(e.z * s.z > 0.0)) return none;  // on the plane or the other side
+            if (!(e.z * s.z > 0.0)) return std::nullopt;  // on the plane or the other side
             dmin = std::min(dmin, std::abs(e.z));
         }
-    return 0.5 * texelDiagonal * std::max(1.0 / dmin, 1.0 / std::abs(s.z));
+    const double ds = std::abs(s.z);
+    return SegmentZone{0.5 * texelDiagonal * std::max(1.0 / dmin, 1.0 / ds), widened(span, ds)};
 }
 
 }  // namespace
 
 double depthSegmentZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
                              glm::dvec2 span, double texelDiagonal) {
-    const double texel = segmentTexelTerm(zone, samplingPoint, wall, span.x, texelDiagonal);
-    if (std::isnan(texel) || std::isnan(span.y)) return kPi;
-    const glm::dvec2 sp = widened(span, std::abs(wallFrame(wall).toWall(samplingPoint).z));
+    const std::optional<SegmentZone> z = segmentZone(zone, samplingPoint, wall, span, texelDiagonal);
+    if (!z) return kPi;
+    const glm::dvec2 sp = z->span;
     const double seg = sp.y > sp.x ? zoneDepthBound(zone, samplingPoint, nearWall(wall, samplingPoint, sp.x), sp.y - sp.x) : 0.0;
-    const double bound = seg + texel;
+    const double bound = seg + z->texel;
     return std::isfinite(bound) ? std::min(bound, kPi) : kPi;
 }
 
 bool depthSegmentZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
                             glm::dvec2 span, double texelDiagonal, double alpha) {
-    const double texel = segmentTexelTerm(zone, samplingPoint, wall, span.x, texelDiagonal);
-    if (!(alpha - texel > 0.0) || std::isnan(span.y)) return false;
-    const glm::dvec2 sp = widened(span, std::abs(wallFrame(wall).toWall(samplingPoint).z));
+    const std::optional<SegmentZone> z = segmentZone(zone, samplingPoint, wall, span, texelDiagonal);
+    if (!z || !(alpha - z->texel > 0.0)) return false;
+    const glm::dvec2 sp = z->span;
     return !(sp.y > sp.x) ||
-           zoneWithinDepth(zone, samplingPoint, nearWall(wall, samplingPoint, sp.x), sp.y - sp.x, alpha - texel);
+           zoneWithinDepth(zone, samplingPoint, nearWall(wall, samplingPoint, sp.x), sp.y - sp.x, alpha - z->texel);
 }
 
 }  // namespace cavewall::walls

@@ -190,8 +190,9 @@ struct Layout {
 };
 
 Layout layout(const Context& c) {
-    // Depth walls keep the geometry strip the flat bound needs (zone_layout.h): their own bound
-    // would prove zones nearer the wall, which then need many large textures.
+    // Depth walls keep the geometry strip the flat bound needs (plan.h): their own bound would
+    // prove zones nearer the wall, which then need many large textures. The flat layout's rows
+    // are planned only to find that border (about 0.5 s on the default plant).
     double from = c.dMin;
     if (c.options->wallKind == WallKind::Depth && !c.flatBound) {
         Context flat = c;
