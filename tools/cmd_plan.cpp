@@ -35,9 +35,10 @@ const char* const kPlanUsage =
     "--walls depth: plans depth walls (issue 16) with the depth reprojection's own bound instead of\n"
     "the flat one: per texture, over every eye of its zones, the displacement of any drawn pixel\n"
     "from its surface's true direction: the smaller of a bound from the wall's depth span (nearest\n"
-    "to farthest baked box corner behind the plane) and the flat bound, each with the texel size\n"
-    "added (proofs in walls/depth_wall.h). The JSON's\n"
-    "\"textures\" list each texture's bound (maxError, radians) for the kind planned.\n";
+    "to farthest baked box corner behind the plane) and the angle the span's part of a sampling\n"
+    "ray subtends at the eye, each with the texel size added (proofs in walls/depth_wall.h). Depth\n"
+    "walls keep the flat walls' geometry strip. The JSON's \"textures\" list each texture's bound\n"
+    "(maxError, radians) for the kind planned.\n";
 
 namespace {
 
