@@ -50,6 +50,7 @@
 
 #include "display/off_axis.h"
 #include "walls/angular_error.h"
+#include "walls/texture_rect.h"
 
 #include <glm/glm.hpp>
 
@@ -133,6 +134,24 @@ glm::ivec2 marchDepthSize(int width, int height);
 inline constexpr int kSkipBlock = 8;
 inline constexpr int kSkipSteps = kSkipBlock - 1;
 
+// The smallest rectangle of whole texels holding every finite depth of `image` (empty when there
+// is none). Nothing outside it can be hit by a march.
+TextureRect contentRect(const DepthImage& image);
+
+// Where on the wall a depth layer's march can hit, seen from `eye` (world): every wall point
+// whose eye ray meets, at a depth in `range` behind the plane, a ray of S through `content`
+// (a TextureRect of the wall's texture, which S sees the wall through) lies in the returned
+// rectangle of the wall (the same fractions), grown by `margin` metres on every side and
+// clipped to the wall. Those points of content form a truncated pyramid with apex S (its eight
+// corners: content's corners at both ends of the range), which is convex, and the central
+// projection from an eye in front of the plane keeps it convex, so the rectangle around the
+// eight corners' projections holds its whole image. Empty when content is, when the range is
+// not 0 <= near <= far < infinity, or when the eye or S is not in front of the plane. The
+// depth wall pass draws only this part of a wall (gl::DepthWallPass): the pixels it leaves out
+// are ones no march hits, which add nothing.
+TextureRect depthDrawRect(const display::ScreenQuad& wall, glm::dvec3 eye, glm::dvec3 samplingPoint,
+                          const TextureRect& content, glm::dvec2 range, double margin);
+
 // A depth image as the GPU holds it (gl::uploadDepthTexture): the depths and, when the image has
 // a whole skip block (kSkipBlock texels on both sides), their block minima (depthBlockMinimum
 // with dilate 1; empty otherwise). Made on the texture pager's thread, off the frame.
@@ -143,6 +162,8 @@ struct DepthTextureData {
     // leave with the texels (gl::TextureStore::depthLayer).
     glm::dvec3 samplingPoint{0.0};
     glm::dvec2 range{0.0};
+    // contentRect of the depths: where the march can hit (depthDrawRect).
+    TextureRect content;
     std::size_t gpuBytes() const;  // depthTextureBytes of its size
 };
 // Throws cavewall::Error unless the image holds width x height depths.

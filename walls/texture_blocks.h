@@ -50,6 +50,7 @@
 // Writes are atomic (temporary file, rename) and checked.
 
 #include "scenes/scene.h"
+#include "walls/texture_rect.h"
 
 #include <array>
 #include <cstddef>
@@ -123,6 +124,13 @@ TextureLevels blocksFromBytes(std::string_view bytes, const std::string& file);
 // A baked texture file of any format: ".bct" files (by their magic) through readBlockFile,
 // others through scenes::readMipLevels. The pager's default decoder.
 TextureLevels readBakedTexture(const std::filesystem::path& file);
+
+// The rectangle (walls/texture_rect.h) of whole texels around every texel of level 0 with
+// non-zero alpha, grown by `margin` texels on every side (a coarser MIP level spreads a texel's
+// colour a few texels around it when sampled) and clipped to the texture; empty when every
+// texel is transparent. A flat wall pixel outside it samples nothing but transparent texels at
+// levels up to log2(margin). Block formats are decoded first (decodeLevel).
+TextureRect coveredRect(const TextureLevels& levels, int margin);
 
 // The file name extension of baked textures in `format`: ".tx" (TIFF) or ".bct".
 std::string_view textureFileExtension(TextureFormat format);

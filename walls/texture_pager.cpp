@@ -58,7 +58,7 @@ void TexturePager::worker() {
         const BakedTexture texture = _textures.at(id);
         const auto path = _folder / texture.file;
         lock.unlock();
-        DecodedTexture d{id, {}, std::nullopt, 0};
+        DecodedTexture d{id, {}, std::nullopt, {}, 0};
         bool ok = true;
         try {
             // Only the bytes the manifest vouches for are drawn: checked before decoding and
@@ -78,6 +78,16 @@ void TexturePager::worker() {
                 }
             }
             ok = ok && textureFileValid(_folder, texture);
+            if (ok && d.depth) {
+                // The depths cover every texel of colour; a depth texture drawn flat (a wall
+                // whose other texture has no depth) needs the same margin as a flat one.
+                const glm::dvec2 margin = double(kCoveredMargin) / glm::dvec2(d.levels.width(), d.levels.height());
+                d.content = d.depth->content.empty() ? noRect()
+                                                     : TextureRect{glm::max(d.depth->content.lo - margin, 0.0),
+                                                                   glm::min(d.depth->content.hi + margin, 1.0)};
+            } else if (ok) {
+                d.content = coveredRect(d.levels, kCoveredMargin);
+            }
             d.bytes = d.levels.bytes() + (d.depth ? d.depth->gpuBytes() : 0);
             // The uploader relies on at least one level of non-zero size.
             ok = ok && d.levels.count() > 0 && d.levels.width() > 0 && d.levels.height() > 0;

@@ -33,6 +33,12 @@
 
 namespace cavewall::walls {
 
+// The texels a flat texture's covered rectangle grows by (coveredRect). The store's sampler
+// filters bilinearly within the nearest MIP level (gl::TextureStore), so a pixel sampling level
+// L reads level-0 texels at most 2^(L+1) away: exact up to level 2; of coarser levels a faint
+// fringe of blur beyond 8 texels is left out.
+inline constexpr int kCoveredMargin = 8;
+
 struct DecodedTexture {
     int id = 0;
     TextureLevels levels;                // MIP levels, largest first: RGBA8 premultiplied or blocks
@@ -40,6 +46,10 @@ struct DecodedTexture {
     // depths, marchDepthSize of the colour's size), decoded, clamped to its baked range
     // (clampDepths) and with its skip blocks: paged, budgeted and evicted with the colour.
     std::optional<DepthTextureData> depth;
+    // Where the texture has content when drawn flat: coveredRect of the colour with
+    // kCoveredMargin texels, or for depth walls the depth's contentRect (which the depth pass
+    // projects per eye, depth->content) grown by as many texels.
+    TextureRect content;
     std::size_t bytes = 0;               // GPU bytes, summed over levels (compressed when blocks),
                                          // the depth texture's included
 };

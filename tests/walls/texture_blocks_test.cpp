@@ -70,6 +70,30 @@ double psnrOverGrey(const scenes::Image& decoded, const scenes::Image& reference
     return scenes::squaredError(overGrey(decoded), overGrey(reference)).psnrDb();
 }
 
+// coveredRect: whole texels around every texel with alpha, grown by the margin and clipped to
+// the texture; the same from Bc1 and Bc3 blocks (their alpha keeps which texels are empty);
+// empty when nothing is covered.
+TEST(TextureBlocks, CoveredRectIsTheTexelsWithAlphaGrownByTheMargin) {
+    scenes::Image image{"covered", 32, 16, std::vector<std::uint8_t>(32 * 16 * 4, 0)};
+    auto set = [&](int x, int y, std::uint8_t alpha) {
+        std::uint8_t* p = &image.rgba[(std::size_t(y) * 32 + x) * 4];
+        p[0] = p[1] = p[2] = alpha, p[3] = alpha;  // premultiplied grey
+    };
+    EXPECT_TRUE(coveredRect(TextureLevels({image}), 2).empty());
+    set(9, 5, 255);
+    set(20, 7, 200);
+    for (TextureFormat f : {TextureFormat::Rgba8, TextureFormat::Bc1, TextureFormat::Bc3}) {
+        SCOPED_TRACE(int(f));
+        const TextureLevels levels = f == TextureFormat::Rgba8 ? TextureLevels({image}) : encodeLevels({image}, f);
+        TextureRect r = coveredRect(levels, 0);
+        EXPECT_EQ(r.lo, glm::dvec2(9.0 / 32, 5.0 / 16));
+        EXPECT_EQ(r.hi, glm::dvec2(21.0 / 32, 8.0 / 16));
+        r = coveredRect(levels, 6);  // clipped at the upper edge
+        EXPECT_EQ(r.lo, glm::dvec2(3.0 / 32, 0.0));
+        EXPECT_EQ(r.hi, glm::dvec2(27.0 / 32, 14.0 / 16));
+    }
+}
+
 TEST(TextureBlocks, SizesAndNames) {
     EXPECT_EQ(blockBytes(TextureFormat::Bc1), 8);
     EXPECT_EQ(blockBytes(TextureFormat::Bc3), 16);

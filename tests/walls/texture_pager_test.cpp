@@ -262,6 +262,27 @@ TEST(TexturePager, PagesBlockFilesAsCompressedBytes) {
     EXPECT_DOUBLE_EQ(pager.stats().residentMB, 2 * 43704 / (1024.0 * 1024.0));
 }
 
+// A decoded texture says where it has content (coveredRect with kCoveredMargin texels), made on
+// the pager's thread: the flat pass draws only that part of its wall.
+TEST(TexturePager, FindsWhereATextureHasContent) {
+    const auto dir = folder();
+    scenes::Image image{"patch", 256, 256, std::vector<std::uint8_t>(256 * 256 * 4, 0)};
+    for (int y = 100; y < 140; ++y)
+        for (int x = 32; x < 64; ++x) std::fill_n(&image.rgba[(std::size_t(y) * 256 + x) * 4], 4, std::uint8_t(255));
+    const std::string file = "patch.bct";
+    writeBlockFile(dir / file, encodeLevels(premultipliedMipChain(image), TextureFormat::Bc1));
+    BakeManifest m;
+    m.textures.push_back({0, 0, 0, {}, {256, 256}, file, std::filesystem::file_size(dir / file), hashFile(dir / file)});
+    TexturePager pager(dir, m, 4.0, readBakedTexture);
+    pager.request({0}, {});
+    pager.waitIdle();
+    const std::vector<DecodedTexture> ready = takeAll(pager);
+    ASSERT_EQ(ready.size(), 1u);
+    const double m8 = kCoveredMargin;
+    EXPECT_EQ(ready[0].content.lo, glm::dvec2(32 - m8, 100 - m8) / 256.0);
+    EXPECT_EQ(ready[0].content.hi, glm::dvec2(64 + m8, 140 + m8) / 256.0);
+}
+
 // Depth walls: a texture whose manifest entry lists a depth file gets its depths with the colour
 // (decoded, clamped into the baked range, with skip blocks, sampling point and range) and counts
 // their GPU bytes against the budget; a damaged or mismatched depth file fails the texture like

@@ -15,6 +15,8 @@
 #include "walls/gl/wall_pass.h"
 #include "walls/gl/wall_quad.h"
 #include "walls/gl/wall_renderer.h"
+#include "walls/texture_blocks.h"
+#include "walls/texture_pager.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -476,6 +478,104 @@ void DepthWallPassTest::marchesAsItsReference(bool halved) {
         EXPECT_GT(hits, vw * vh / 2);
         EXPECT_LE(wrong, vw * vh / 1000);  // float against double: a few pixels at most
     }
+}
+
+// The pass draws each wall only over walls::depthDrawRect (the union of its layers', grown by a
+// depth texel): a card alone behind the wall, seen from an eye to the side, draws the same
+// pixels as the whole wall does (up to a few the float march may round the other way), from a
+// rectangle of under a tenth of the wall; a content rectangle that misses the card draws almost
+// none of it (so the rectangle is what the pass draws).
+TEST_F(DepthWallPassTest, DrawsOnlyWhereAMarchCanHit) {
+    if (!context) GTEST_SKIP();
+    const scenes::Scene scene = cardScene();
+    const std::vector<int> objects{1};  // the card, no back plane
+    walls::DepthImage depth;
+    scenes::Image colour;
+    {
+        gl::WallTextureRenderer baker(scene, 1.0f);
+        colour = baker.render(kQuad, kSample, {kWidth, kHeight}, objects, depth);
+    }
+    const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
+    const gl::DepthTexture depthTexture = gl::uploadDepthTexture(depth);
+    const walls::TextureRect content = walls::contentRect(depth);
+    const glm::dvec2 range = walls::depthRange(depth);
+    const walls::TextureRect drawn = walls::depthDrawRect(kQuad, kEye, kSample, content, range, 0.0);
+    EXPECT_LT((drawn.hi.x - drawn.lo.x) * (drawn.hi.y - drawn.lo.y), 0.1);
+
+    const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, kEye, {0.05, kInf});
+    gl::OffscreenTarget target({kWidth, kHeight});
+    const gl::DepthWallPass pass;
+    auto draw = [&](walls::TextureRect rect, glm::ivec2 texels) {
+        gl::DepthWallDraw d{kQuad, {}, 1};
+        d.layers[0] = {colourTexture.id(), depthTexture.depth.id(), kSample, range, 1.0f, depthTexture.skip.id(), rect, texels};
+        target.bindAndClear(glm::vec4(0.0f));
+        glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+        gl::FrameStats stats;
+        pass.draw({d}, frustum, glm::dmat4(1.0), 0, stats);
+        return target.read("wall");
+    };
+    // The whole wall: the default content and a one-texel texture, whose margin is the wall.
+    const scenes::Image whole = draw({}, {1, 1});
+    const scenes::Image cropped = draw(content, {kWidth, kHeight});
+    const scenes::Image missing = draw({{0.0, 0.0}, {0.1, 0.1}}, {kWidth, kHeight});
+    auto lit = [](const scenes::Image& im, std::size_t i) { return im.rgba[i] + im.rgba[i + 1] + im.rgba[i + 2] > 0; };
+    int wholePixels = 0, croppedPixels = 0, missingPixels = 0, different = 0;
+    for (std::size_t i = 0; i < whole.rgba.size(); i += 4) {
+        wholePixels += lit(whole, i), croppedPixels += lit(cropped, i), missingPixels += lit(missing, i);
+        for (int c = 0; c < 3; ++c)
+            if (std::abs(int(whole.rgba[i + c]) - int(cropped.rgba[i + c])) > 1) {
+                ++different;
+                break;
+            }
+    }
+    EXPECT_GT(wholePixels, kWidth * kHeight / 30);
+    EXPECT_LE(different, wholePixels / 500);
+    EXPECT_LE(std::abs(wholePixels - croppedPixels), wholePixels / 500);
+    EXPECT_LT(missingPixels, wholePixels / 10);
+}
+
+// The flat pass draws each wall only over the union of its textures' covered rectangles
+// (walls::coveredRect, grown by kCoveredMargin texels): the card's flat texture from the same
+// eye draws exactly what the whole wall draws; a rectangle that misses the card draws nothing.
+TEST_F(DepthWallPassTest, FlatWallsDrawOnlyTheirCoveredRectangle) {
+    if (!context) GTEST_SKIP();
+    const scenes::Scene scene = cardScene();
+    const std::vector<int> objects{1};
+    walls::DepthImage depth;
+    scenes::Image colour;
+    {
+        gl::WallTextureRenderer baker(scene, 1.0f);
+        colour = baker.render(kQuad, kSample, {kWidth, kHeight}, objects, depth);
+    }
+    const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
+    const walls::TextureRect covered = walls::coveredRect(walls::TextureLevels({colour}), walls::kCoveredMargin);
+    EXPECT_LT((covered.hi.x - covered.lo.x) * (covered.hi.y - covered.lo.y), 0.1);
+    const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, kEye, {0.05, kInf});
+    gl::OffscreenTarget target({kWidth, kHeight});
+    const gl::WallPass pass;
+    auto draw = [&](walls::TextureRect rect) {
+        gl::WallDraw d{kQuad, {colourTexture.id()}, {1.0f}, 1, {}};
+        d.contents[0] = rect;
+        target.bindAndClear(glm::vec4(0.0f));
+        glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+        gl::FrameStats stats;
+        pass.draw({d}, frustum, glm::dmat4(1.0), 0, stats);
+        return target.read("wall");
+    };
+    const scenes::Image whole = draw({}), cropped = draw(covered), missing = draw({{0.0, 0.0}, {0.1, 0.1}});
+    int lit = 0, missingLit = 0, different = 0;
+    for (std::size_t i = 0; i < whole.rgba.size(); i += 4) {
+        lit += whole.rgba[i] + whole.rgba[i + 1] + whole.rgba[i + 2] > 0;
+        missingLit += missing.rgba[i] + missing.rgba[i + 1] + missing.rgba[i + 2] > 0;
+        for (int c = 0; c < 4; ++c)
+            if (whole.rgba[i + c] != cropped.rgba[i + c]) {
+                ++different;
+                break;
+            }
+    }
+    EXPECT_GT(lit, kWidth * kHeight / 30);
+    EXPECT_EQ(different, 0);
+    EXPECT_EQ(missingLit, 0);
 }
 
 }  // namespace

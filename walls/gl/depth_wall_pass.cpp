@@ -5,6 +5,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <string>
 
 namespace cavewall::gl {
@@ -24,6 +25,7 @@ uniform mat4 uProjection;
 uniform vec2 uSize;          // wall width, height (metres)
 uniform vec3 uEye;           // wall frame: x, y, distance in front of the plane
 uniform vec3 uSample[4];     // per layer: x, y, distance in front of the plane
+uniform vec4 uRect;          // the part of the wall drawn: u, t of its upper left and lower right corners
 out vec2 vUv;
 const vec2 kUv[4] = vec2[4](vec2(0.0, 1.0), vec2(1.0, 1.0), vec2(0.0, 0.0), vec2(1.0, 0.0));
 vec4 ray(sampler2D depth, vec3 S, vec2 wall) {
@@ -33,7 +35,7 @@ vec4 ray(sampler2D depth, vec3 S, vec2 wall) {
     return vec4(wall.x * perMetre.x, size.y - wall.y * perMetre.y, b.x * perMetre.x, size.y - b.y * perMetre.y);
 }
 void main() {
-    vUv = kUv[gl_VertexID];
+    vUv = mix(uRect.xy, uRect.zw, kUv[gl_VertexID]);
     vec2 wall = vec2(vUv.x, 1.0 - vUv.y) * uSize;
     gl_Position = uProjection * vec4(uCorners[gl_VertexID], 1.0);
 )";
@@ -224,6 +226,7 @@ DepthWallPass::DepthWallPass(walls::ReprojectSettings settings)
         p.ranges = uniformLocation(id, kName, "uRange");
         p.maxSteps = uniformLocation(id, kName, "uMaxSteps");
         p.refine = uniformLocation(id, kName, "uRefine");
+        p.rect = uniformLocation(id, kName, "uRect");
     }
 }
 
@@ -241,10 +244,6 @@ void DepthWallPass::draw(const std::vector<DepthWallDraw>& walls, const display:
     const glm::dmat4 viewFromWorld = frustum.viewFromFrame * caveFromWorld;
     const glm::dvec3 eyeWorld = glm::dvec3(glm::inverse(caveFromWorld) * glm::dvec4(frustum.eye, 1.0));
     for (const DepthWallDraw& w : walls) {
-        const glm::dvec3 corners[4] = {w.quad.lowerLeft, w.quad.lowerRight, w.quad.upperLeft,
-                                       w.quad.lowerRight + w.quad.upperLeft - w.quad.lowerLeft};
-        glm::vec3 view[4];
-        for (int i = 0; i < 4; ++i) view[i] = glm::vec3(viewFromWorld * glm::dvec4(corners[i], 1.0));
         const walls::WallFrame frame = walls::wallFrame(w.quad);
         const glm::dvec3 eye = frame.toWall(eyeWorld);
         if (!(eye.z < 0.0)) continue;  // the eye is behind (or on) the wall: this side is not seen
@@ -252,9 +251,16 @@ void DepthWallPass::draw(const std::vector<DepthWallDraw>& walls, const display:
         glm::vec3 samples[walls::kMaxWallTextures];
         glm::vec2 ranges[walls::kMaxWallTextures];
         int used = 0;
+        // The union of the layers' draw rectangles (walls::depthDrawRect), each grown by a depth
+        // texel of its own, far more than the float march's rounding.
+        walls::TextureRect rect = walls::noRect();
         for (int i = 0; i < w.count && i < walls::kMaxWallTextures; ++i) {
             const DepthWallLayer& l = w.layers[i];
             if (l.colour == 0 || l.depth == 0) continue;
+            const glm::dvec2 texels = glm::max(glm::dvec2(l.depthTexels), 1.0);
+            const double margin = std::max(frame.width / texels.x, frame.height / texels.y);
+            const walls::TextureRect r = walls::depthDrawRect(w.quad, eyeWorld, l.samplingPoint, l.content, l.range, margin);
+            rect = walls::unite(rect, r);
             const glm::dvec3 s = frame.toWall(l.samplingPoint);
             weights[used] = l.weight;
             samples[used] = glm::vec3(s.x, s.y, -s.z);
@@ -267,7 +273,12 @@ void DepthWallPass::draw(const std::vector<DepthWallDraw>& walls, const display:
             glBindSampler(kSkipBinding + used, 0);
             ++used;
         }
-        if (used == 0) continue;
+        if (used == 0 || rect.empty()) continue;
+        // The rectangle's corners in the kUv order: lower left, lower right, upper left, upper right.
+        const glm::dvec3 corners[4] = {walls::wallPoint(w.quad, rect.lo.x, rect.hi.y), walls::wallPoint(w.quad, rect.hi.x, rect.hi.y),
+                                       walls::wallPoint(w.quad, rect.lo.x, rect.lo.y), walls::wallPoint(w.quad, rect.hi.x, rect.lo.y)};
+        glm::vec3 view[4];
+        for (int i = 0; i < 4; ++i) view[i] = glm::vec3(viewFromWorld * glm::dvec4(corners[i], 1.0));
         const Program& p = _programs[used - 1];
         glUseProgram(p.program.id());
         glUniformMatrix4fv(p.projection, 1, GL_FALSE, glm::value_ptr(projection));
@@ -279,6 +290,7 @@ void DepthWallPass::draw(const std::vector<DepthWallDraw>& walls, const display:
         glUniform2fv(p.ranges, used, glm::value_ptr(ranges[0]));
         glUniform1i(p.maxSteps, _settings.maxSteps);
         glUniform1i(p.refine, _settings.refine);
+        glUniform4f(p.rect, float(rect.lo.x), float(rect.lo.y), float(rect.hi.x), float(rect.hi.y));
         glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
         ++stats.drawCalls;
         stats.triangles += 2;

@@ -59,7 +59,10 @@
 // Blending and state as gl::WallPass: a premultiplied weighted sum of up to kMaxWallTextures
 // layers, tested (reversed-Z GL_GREATER, no depth writes) at the quad's own depth, before the
 // shader runs (early_fragment_tests), so wall pixels behind the cell's geometry cost no march.
-// Pixels where no layer hits add nothing. The layers share one march (4 December 2026,
+// Pixels where no layer hits add nothing, so each wall is drawn only over the rectangle where a
+// layer's march can hit (walls::depthDrawRect of each layer's content, for this view's eye,
+// their union, grown by a texel): the other pixels, on average half a plant's wall texture
+// (README, "Depth walls"), cost no march setup. The layers share one march (4 December 2026,
 // session 15): the heaviest layer's (the plan lists weights largest first) finds the depth s
 // of the ray's first hit, the next layer's only where it finds none, and every layer shows its
 // texture where the ray is at s behind the wall. Each layer stays within its own bound: both
@@ -97,6 +100,8 @@ struct DepthWallLayer {
     glm::dvec2 range{0.0};          // walls::depthRange of the depth image, metres
     float weight = 0.0f;
     GLuint skip = 0;                // DepthTexture::skip; 0: none (the march skips nothing)
+    walls::TextureRect content;     // DepthTextureData::content; the whole texture by default
+    glm::ivec2 depthTexels{1, 1};   // the depth texture's size: the draw rectangle grows by a texel
 };
 
 struct DepthWallDraw {
@@ -133,7 +138,7 @@ private:
     struct Program {
         GlObject program;
         GLint corners = -1, projection = -1, weights = -1, eye = -1, size = -1, samples = -1, ranges = -1,
-              maxSteps = -1, refine = -1;
+              maxSteps = -1, refine = -1, rect = -1;
     };
     walls::ReprojectSettings _settings;
     std::array<Program, walls::kMaxWallTextures> _programs;  // [n - 1] marches n layers

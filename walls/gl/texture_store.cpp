@@ -37,14 +37,14 @@ std::size_t TextureStore::update() {
         uploaded += advance(allowed - uploaded);
     }
     _pacer.uploaded(uploaded);
-    for (int id : _pager.takeEvictions()) _textures.erase(id), _depthTextures.erase(id);
+    for (int id : _pager.takeEvictions()) _textures.erase(id), _depthTextures.erase(id), _contents.erase(id);
     return uploaded;
 }
 
 std::size_t TextureStore::updateAll() {
     std::size_t uploaded = _inFlight ? finishInFlight() : 0;
     while (std::optional<walls::DecodedTexture> d = _pager.takeNext(false)) uploaded += finishWhole(std::move(*d));
-    for (int id : _pager.takeEvictions()) _textures.erase(id), _depthTextures.erase(id);
+    for (int id : _pager.takeEvictions()) _textures.erase(id), _depthTextures.erase(id), _contents.erase(id);
     return uploaded;
 }
 
@@ -56,10 +56,12 @@ std::size_t TextureStore::finishWhole(walls::DecodedTexture d) {
 std::size_t TextureStore::makeResident(walls::DecodedTexture& d, GlObject colour) {
     std::size_t depthBytes = 0;
     if (d.depth) {
-        _depthTextures[d.id] = {uploadDepthTexture(*d.depth), d.depth->samplingPoint, d.depth->range};
+        _depthTextures[d.id] = {uploadDepthTexture(*d.depth), d.depth->samplingPoint, d.depth->range, d.depth->content,
+                                 {d.depth->depth.width, d.depth->depth.height}};
         depthBytes = d.depth->gpuBytes();
     }
     _textures[d.id] = std::move(colour);
+    _contents[d.id] = d.content;
     _pager.markResident(d.id, d.bytes);
     return depthBytes;
 }
@@ -88,12 +90,17 @@ GLuint TextureStore::texture(int id) const {
     return it == _textures.end() ? 0 : it->second.id();
 }
 
+walls::TextureRect TextureStore::content(int id) const {
+    auto it = _contents.find(id);
+    return it == _contents.end() ? walls::TextureRect{} : it->second;
+}
+
 std::optional<DepthWallLayer> TextureStore::depthLayer(int id) const {
     const auto depth = _depthTextures.find(id);
     const GLuint colour = texture(id);
     if (depth == _depthTextures.end() || colour == 0) return std::nullopt;
     const ResidentDepth& d = depth->second;
-    return DepthWallLayer{colour, d.texture.depth.id(), d.samplingPoint, d.range, 0.0f, d.texture.skip.id()};
+    return DepthWallLayer{colour, d.texture.depth.id(), d.samplingPoint, d.range, 0.0f, d.texture.skip.id(), d.content, d.texels};
 }
 
 }  // namespace cavewall::gl

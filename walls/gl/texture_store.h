@@ -9,7 +9,7 @@
 // updateAll() uploads everything ready (warm-up, synchronous paging). Textures are
 // GL_SRGB8_ALPHA8, or the sRGB S3TC formats of ".bct" files
 // (walls/texture_blocks.h, uploaded compressed), with every MIP level the file had (premultiplied
-// alpha, as baked), sampled trilinearly and clamped to the edge. A depth wall's texture comes
+// alpha, as baked), sampled bilinearly in the nearest MIP level and clamped to the edge. A depth wall's texture comes
 // with its depth texture (gl::uploadDepthTexture), uploaded with the colour's last piece and
 // deleted with it, and with what the march needs to read it (depthLayer).
 // Needs the rendering context current for every call and for destruction.
@@ -45,6 +45,9 @@ public:
     // and baked range that came with its depths. Nothing when it is not resident or has no depth.
     std::optional<DepthWallLayer> depthLayer(int id) const;
     GLuint sampler() const { return _sampler.id(); }
+    // Where resident texture `id` has content (walls::DecodedTexture::content); the whole texture
+    // when it is not resident.
+    walls::TextureRect content(int id) const;
 
 private:
     // A prefetch partly uploaded: its levels, texture and where its next band starts.
@@ -63,11 +66,14 @@ private:
     walls::UploadPacer _pacer;
     std::optional<InFlight> _inFlight;
     std::map<int, GlObject> _textures;
+    std::map<int, walls::TextureRect> _contents;
     // A resident texture's depths, and the sampling point and range they were baked from.
     struct ResidentDepth {
         DepthTexture texture;
         glm::dvec3 samplingPoint;
         glm::dvec2 range;
+        walls::TextureRect content;
+        glm::ivec2 texels{1, 1};
     };
     std::map<int, ResidentDepth> _depthTextures;
     GlObject _sampler;

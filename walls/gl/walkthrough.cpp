@@ -300,9 +300,10 @@ void Walkthrough::makeResident(int group) {
 std::vector<WallDraw> Walkthrough::wallDraws(const walls::FramePlan& plan) const {
     std::vector<WallDraw> draws;
     for (const walls::WallDrawPlan& p : plan.wallDraws) {
-        WallDraw d{p.quad, {}, {}, 0};
+        WallDraw d{p.quad, {}, {}, 0, {}};
         for (const auto& [id, weight] : p.textures) {
             d.textures[d.count] = _walls->textures->store.texture(id);
+            d.contents[d.count] = _walls->textures->store.content(id);
             d.weights[d.count++] = static_cast<float>(weight);
         }
         draws.push_back(d);

@@ -15,10 +15,11 @@ constexpr const char* kName = "walls";
 constexpr const char* kVertex = R"(#version 450 core
 uniform vec3 uCorners[4];    // lowerLeft, lowerRight, upperLeft, upperRight in the eye-relative view frame
 uniform mat4 uProjection;
+uniform vec4 uRect;          // the part of the wall drawn: u, t of its upper left and lower right corners
 out vec2 vUv;
 const vec2 kUv[4] = vec2[4](vec2(0.0, 1.0), vec2(1.0, 1.0), vec2(0.0, 0.0), vec2(1.0, 0.0));
 void main() {
-    vUv = kUv[gl_VertexID];
+    vUv = mix(uRect.xy, uRect.zw, kUv[gl_VertexID]);
     gl_Position = uProjection * vec4(uCorners[gl_VertexID], 1.0);
 }
 )";
@@ -46,6 +47,7 @@ WallPass::WallPass() : _vertexArray(createVertexArray()) {
         p.corners = uniformLocation(p.program.id(), kName, "uCorners");
         p.projection = uniformLocation(p.program.id(), kName, "uProjection");
         p.weights = uniformLocation(p.program.id(), kName, "uWeights");
+        p.rect = uniformLocation(p.program.id(), kName, "uRect");
     }
 }
 
@@ -63,25 +65,28 @@ void WallPass::draw(const std::vector<WallDraw>& walls, const display::OffAxisFr
     // Corners go to the view frame in double; only the eye-relative result is rounded to float.
     const glm::dmat4 viewFromWorld = frustum.viewFromFrame * caveFromWorld;
     for (const WallDraw& w : walls) {
-        const glm::dvec3 corners[4] = {w.quad.lowerLeft, w.quad.lowerRight, w.quad.upperLeft,
-                                       w.quad.lowerRight + w.quad.upperLeft - w.quad.lowerLeft};
-        glm::vec3 view[4];
-        for (int i = 0; i < 4; ++i) view[i] = glm::vec3(viewFromWorld * glm::dvec4(corners[i], 1.0));
         // Textures that are not there (id 0) are left out; the program samples the rest.
         glm::vec4 weights(0.0f);
         int used = 0;
+        walls::TextureRect rect = walls::noRect();
         for (int i = 0; i < w.count && i < kMaxWallTextures; ++i) {
             if (w.textures[i] == 0) continue;
+            rect = walls::unite(rect, w.contents[i]);
             weights[used] = w.weights[i];
             glBindTextureUnit(used, w.textures[i]);
             glBindSampler(used++, sampler);
         }
-        if (used == 0) continue;
+        if (used == 0 || rect.empty()) continue;
+        const glm::dvec3 corners[4] = {walls::wallPoint(w.quad, rect.lo.x, rect.hi.y), walls::wallPoint(w.quad, rect.hi.x, rect.hi.y),
+                                       walls::wallPoint(w.quad, rect.lo.x, rect.lo.y), walls::wallPoint(w.quad, rect.hi.x, rect.lo.y)};
+        glm::vec3 view[4];
+        for (int i = 0; i < 4; ++i) view[i] = glm::vec3(viewFromWorld * glm::dvec4(corners[i], 1.0));
         const Program& p = _programs[used - 1];
         glUseProgram(p.program.id());
         glUniformMatrix4fv(p.projection, 1, GL_FALSE, glm::value_ptr(projection));
         glUniform3fv(p.corners, 4, glm::value_ptr(view[0]));
         glUniform4fv(p.weights, 1, glm::value_ptr(weights));
+        glUniform4f(p.rect, float(rect.lo.x), float(rect.lo.y), float(rect.hi.x), float(rect.hi.y));
         glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
         ++stats.drawCalls;
         stats.triangles += 2;

@@ -8,7 +8,9 @@
 // weighted sum  c = sum_i w_i tex_i  is itself premultiplied and is blended over what is drawn
 // (ONE, ONE_MINUS_SRC_ALPHA; destination alpha kept). The weights sum to 1 - geometryWeight:
 // as the geometry of the cell behind fades in, the texture fades out over it. Depth-tested
-// (reversed-Z, GL_GREATER) against the geometry, without depth writes, no face culling.
+// (reversed-Z, GL_GREATER) against the geometry, without depth writes, no face culling. Only the
+// union of the textures' content rectangles (WallDraw::contents) is drawn: elsewhere every
+// texture is transparent, so the sum adds nothing.
 // Needs the rendering context current; the program is built by the constructor (only scenes
 // with virtual walls construct a WallPass).
 
@@ -16,6 +18,7 @@
 #include "display/gl/scene_renderer.h"
 #include "display/off_axis.h"
 #include "walls/frame_planner.h"
+#include "walls/texture_rect.h"
 
 #include <array>
 #include <vector>
@@ -29,6 +32,9 @@ struct WallDraw {
     std::array<GLuint, kMaxWallTextures> textures{};
     std::array<float, kMaxWallTextures> weights{};  // >= 0, sum <= 1
     int count = 0;                               // textures used
+    // Where each texture has content (walls::coveredRect, grown for MIP filtering; the whole
+    // texture by default): the wall is drawn over their union only.
+    std::array<walls::TextureRect, kMaxWallTextures> contents{};
 };
 
 class WallPass {
@@ -45,7 +51,7 @@ public:
 private:
     struct Program {
         GlObject program;
-        GLint corners = -1, projection = -1, weights = -1;
+        GLint corners = -1, projection = -1, weights = -1, rect = -1;
     };
     std::array<Program, kMaxWallTextures> _programs;  // [n - 1] samples n textures
     GlObject _vertexArray;
