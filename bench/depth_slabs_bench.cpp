@@ -84,7 +84,8 @@ std::vector<double> parseBorders(const std::string& text) {
         char* end = nullptr;
         const double v = std::strtod(item.c_str(), &end);
         if (item.empty() || *end != '\0' || !(v > 0.0) || !std::isfinite(v) || (!borders.empty() && v <= borders.back()))
-            throw std::runtime_error("partition \"" + text + "\": expected increasing positive metres, got \"" + item + "\"");
+            throw std::runtime_error("partition \"" + text + "\": expected increasing positive metres, got \"" + item +
+                                     "\"");
         borders.push_back(v);
     }
     return borders;
@@ -101,7 +102,8 @@ void tileShares(const std::filesystem::path& folder, const std::vector<double>& 
     std::vector<double> near(borders.size(), 0.0);
     double any = 0.0, all = 0.0, boxed = 0.0;
     for (const walls::BakedTexture& t : manifest.textures) {
-        if (t.depthFile.empty()) throw std::runtime_error(folder.string() + ": not a depth walls' bake (no depth files)");
+        if (t.depthFile.empty())
+            throw std::runtime_error(folder.string() + ": not a depth walls' bake (no depth files)");
         const walls::DepthImage image = walls::readDepthFile(folder / t.depthFile);
         int x0 = image.width, y0 = image.height, x1 = 0, y1 = 0;
         for (int ty = 0; ty < image.height; ty += kTile)
@@ -151,7 +153,9 @@ int main(int argc, char** argv) try {
         else if (scenePath.empty()) scenePath = a;
         else partitions.push_back(a);
     }
-    if (scenePath.empty()) throw std::runtime_error("usage: cavewall_bench_depth_slabs SCENE [--alpha DEG] [--ppd N] [--min-zone M] [--max-res N] [--bake DEPTH_BAKE_FOLDER] [PARTITION...]");
+    if (scenePath.empty())
+        throw std::runtime_error("usage: cavewall_bench_depth_slabs SCENE [--alpha DEG] [--ppd N] [--min-zone M] "
+                                 "[--max-res N] [--bake DEPTH_BAKE_FOLDER] [PARTITION...]");
     if (partitions.empty()) partitions = {"3", "6", "8", "12", "2,6", "4,12", "1.5,4,10"};
     walls::validatePlanOptions(options);
 

@@ -84,7 +84,8 @@ TextureRect contentRect(const DepthImage& image) {
     int x0 = image.width, y0 = image.height, x1 = 0, y1 = 0;
     for (int j = 0; j < image.height; ++j)
         for (int i = 0; i < image.width; ++i)
-            if (std::isfinite(image.at(i, j))) x0 = std::min(x0, i), x1 = std::max(x1, i + 1), y0 = std::min(y0, j), y1 = std::max(y1, j + 1);
+            if (std::isfinite(image.at(i, j)))
+                x0 = std::min(x0, i), x1 = std::max(x1, i + 1), y0 = std::min(y0, j), y1 = std::max(y1, j + 1);
     if (x1 <= x0) return noRect();
     const glm::dvec2 size(image.width, image.height);
     return {glm::dvec2(x0, y0) / size, glm::dvec2(x1, y1) / size};
@@ -115,8 +116,8 @@ TextureRect depthDrawRect(const display::ScreenQuad& wall, glm::dvec3 eye, glm::
     const glm::dvec2 a = glm::clamp(lo / size, 0.0, 1.0), b = glm::clamp(hi / size, 0.0, 1.0);
     // Back to fractions with t down.
     const TextureRect r{glm::dvec2(a.x, 1.0 - b.y), glm::dvec2(b.x, 1.0 - a.y)};
-    if (!std::isfinite(r.lo.x) || !std::isfinite(r.lo.y) || !std::isfinite(r.hi.x) || !std::isfinite(r.hi.y)) return none;
-    return r.empty() ? none : r;
+    const bool finite = std::isfinite(r.lo.x) && std::isfinite(r.lo.y) && std::isfinite(r.hi.x) && std::isfinite(r.hi.y);
+    return !finite || r.empty() ? none : r;
 }
 
 std::size_t depthTextureBytes(int width, int height) {

@@ -8,6 +8,8 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
+
 namespace cavewall::walls {
 
 struct TextureRect {
@@ -28,6 +30,13 @@ inline TextureRect noRect() { return {glm::dvec2(0.0), glm::dvec2(0.0)}; }
 // The point of `wall` (world) at texture fractions u (right) and t (down from the upper edge).
 inline glm::dvec3 wallPoint(const display::ScreenQuad& wall, double u, double t) {
     return wall.upperLeft + u * (wall.lowerRight - wall.lowerLeft) + t * (wall.lowerLeft - wall.upperLeft);
+}
+
+// The corners of `rect` on `wall` as the passes' triangle strip takes them: lower left, lower
+// right, upper left, upper right.
+inline std::array<glm::dvec3, 4> stripCorners(const display::ScreenQuad& wall, const TextureRect& r) {
+    return {wallPoint(wall, r.lo.x, r.hi.y), wallPoint(wall, r.hi.x, r.hi.y), wallPoint(wall, r.lo.x, r.lo.y),
+            wallPoint(wall, r.hi.x, r.lo.y)};
 }
 
 }  // namespace cavewall::walls

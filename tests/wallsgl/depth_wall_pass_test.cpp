@@ -507,7 +507,8 @@ TEST_F(DepthWallPassTest, DrawsOnlyWhereAMarchCanHit) {
     const gl::DepthWallPass pass;
     auto draw = [&](walls::TextureRect rect, glm::ivec2 texels) {
         gl::DepthWallDraw d{kQuad, {}, 1};
-        d.layers[0] = {colourTexture.id(), depthTexture.depth.id(), kSample, range, 1.0f, depthTexture.skip.id(), rect, texels};
+        d.layers[0] = {colourTexture.id(), depthTexture.depth.id(), kSample, range, 1.0f, depthTexture.skip.id(),
+                       rect,               texels};
         target.bindAndClear(glm::vec4(0.0f));
         glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
         gl::FrameStats stats;

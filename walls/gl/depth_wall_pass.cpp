@@ -259,8 +259,7 @@ void DepthWallPass::draw(const std::vector<DepthWallDraw>& walls, const display:
             if (l.colour == 0 || l.depth == 0) continue;
             const glm::dvec2 texels = glm::max(glm::dvec2(l.depthTexels), 1.0);
             const double margin = std::max(frame.width / texels.x, frame.height / texels.y);
-            const walls::TextureRect r = walls::depthDrawRect(w.quad, eyeWorld, l.samplingPoint, l.content, l.range, margin);
-            rect = walls::unite(rect, r);
+            rect = walls::unite(rect, walls::depthDrawRect(w.quad, eyeWorld, l.samplingPoint, l.content, l.range, margin));
             const glm::dvec3 s = frame.toWall(l.samplingPoint);
             weights[used] = l.weight;
             samples[used] = glm::vec3(s.x, s.y, -s.z);
@@ -274,9 +273,7 @@ void DepthWallPass::draw(const std::vector<DepthWallDraw>& walls, const display:
             ++used;
         }
         if (used == 0 || rect.empty()) continue;
-        // The rectangle's corners in the kUv order: lower left, lower right, upper left, upper right.
-        const glm::dvec3 corners[4] = {walls::wallPoint(w.quad, rect.lo.x, rect.hi.y), walls::wallPoint(w.quad, rect.hi.x, rect.hi.y),
-                                       walls::wallPoint(w.quad, rect.lo.x, rect.lo.y), walls::wallPoint(w.quad, rect.hi.x, rect.lo.y)};
+        const std::array<glm::dvec3, 4> corners = walls::stripCorners(w.quad, rect);
         glm::vec3 view[4];
         for (int i = 0; i < 4; ++i) view[i] = glm::vec3(viewFromWorld * glm::dvec4(corners[i], 1.0));
         const Program& p = _programs[used - 1];

@@ -100,7 +100,8 @@ std::optional<DepthWallLayer> TextureStore::depthLayer(int id) const {
     const GLuint colour = texture(id);
     if (depth == _depthTextures.end() || colour == 0) return std::nullopt;
     const ResidentDepth& d = depth->second;
-    return DepthWallLayer{colour, d.texture.depth.id(), d.samplingPoint, d.range, 0.0f, d.texture.skip.id(), d.content, d.texels};
+    return DepthWallLayer{colour,    d.texture.depth.id(), d.samplingPoint, d.range, 0.0f, d.texture.skip.id(),
+                          d.content, d.texels};
 }
 
 }  // namespace cavewall::gl

@@ -77,8 +77,7 @@ void WallPass::draw(const std::vector<WallDraw>& walls, const display::OffAxisFr
             glBindSampler(used++, sampler);
         }
         if (used == 0 || rect.empty()) continue;
-        const glm::dvec3 corners[4] = {walls::wallPoint(w.quad, rect.lo.x, rect.hi.y), walls::wallPoint(w.quad, rect.hi.x, rect.hi.y),
-                                       walls::wallPoint(w.quad, rect.lo.x, rect.lo.y), walls::wallPoint(w.quad, rect.hi.x, rect.lo.y)};
+        const std::array<glm::dvec3, 4> corners = walls::stripCorners(w.quad, rect);
         glm::vec3 view[4];
         for (int i = 0; i < 4; ++i) view[i] = glm::vec3(viewFromWorld * glm::dvec4(corners[i], 1.0));
         const Program& p = _programs[used - 1];
