@@ -8,8 +8,11 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 namespace cavewall::scenes::testing {
 
@@ -90,9 +93,20 @@ struct GltfBuilder {
         if (!out.contains("buffers")) out["buffers"] = {{{"byteLength", bin.size()}, {"uri", uri}}};
         return out.dump();
     }
+    // Written atomically (a file of this process's own, renamed over `name`): ctest runs tests
+    // in parallel processes, and tests that share a file (every SceneDescription test writes
+    // ../description/model.gltf) write the same bytes, so a reader sees one whole file or the
+    // other, never one being rewritten. Throws std::runtime_error when it cannot be written.
     std::filesystem::path write(const std::string& name, bool embed = true, const std::string& binUri = "") {
         const auto file = testOutput("gltf") / name;
-        std::ofstream(file, std::ios::binary) << text(embed, binUri);
+        const std::filesystem::path temp = file.string() + ".tmp" + std::to_string(::getpid());
+        {
+            std::ofstream out(temp, std::ios::binary);
+            out << text(embed, binUri);
+            out.close();
+            if (!out) throw std::runtime_error(temp.string() + ": cannot write");
+        }
+        std::filesystem::rename(temp, file);
         return file;
     }
 };
