@@ -3,8 +3,9 @@
 # the unit tests again under AddressSanitizer + UndefinedBehaviorSanitizer in a headless-only
 # build (no GLFW, no MPI), which also proves that such a build works. That build compiles only
 # what the unit tests run (the unit-tests target). Tests run on every core: no two tests use the
-# same port (each binds a free one), and the folders some share (a generated scene, a bake
-# cache) are written atomically with the same content.
+# same port (each binds a free one), and the files some share (a generated scene, a bake
+# cache, the glTF files tests/scenes/gltf_builder.h writes) are written atomically with the
+# same content.
 set -eu
 cd "$(dirname "$0")/.."
 export EGL_PLATFORM="${EGL_PLATFORM:-surfaceless}"
