@@ -81,26 +81,17 @@ DepthTextureData depthTextureData(DepthImage image) {
 }
 
 TextureRect contentRect(const DepthImage& image) {
-    int x0 = image.width, y0 = image.height, x1 = 0, y1 = 0;
-    for (int j = 0; j < image.height; ++j)
-        for (int i = 0; i < image.width; ++i)
-            if (std::isfinite(image.at(i, j)))
-                x0 = std::min(x0, i), x1 = std::max(x1, i + 1), y0 = std::min(y0, j), y1 = std::max(y1, j + 1);
-    if (x1 <= x0) return noRect();
-    const glm::dvec2 size(image.width, image.height);
-    return {glm::dvec2(x0, y0) / size, glm::dvec2(x1, y1) / size};
+    return texelBounds(image.width, image.height, 0, [&](int i, int j) { return std::isfinite(image.at(i, j)); });
 }
 
-TextureRect depthDrawRect(const display::ScreenQuad& wall, glm::dvec3 eye, glm::dvec3 samplingPoint,
-                          const TextureRect& content, glm::dvec2 range, double margin) {
+TextureRect depthDrawRect(const WallFrame& frame, glm::dvec3 e, glm::dvec3 s, const TextureRect& content,
+                          glm::dvec2 range, double margin) {
     const TextureRect none = noRect();
     if (content.empty() || !(range.x >= 0.0) || !(range.y >= range.x) || !std::isfinite(range.y) || !(margin >= 0.0))
         return none;
-    const WallFrame f = wallFrame(wall);
-    const glm::dvec3 e = f.toWall(eye), s = f.toWall(samplingPoint);
     if (!(e.z < 0.0) || !(s.z < 0.0)) return none;
     const double de = -e.z, ds = -s.z;
-    const glm::dvec2 size(f.width, f.height);
+    const glm::dvec2 size(frame.width, frame.height);
     // Wall-frame x right, y up; the rectangle's t runs down from the upper edge.
     auto toWall = [&](double u, double t) { return glm::dvec2(u * size.x, (1.0 - t) * size.y); };
     glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi = -lo;
@@ -116,7 +107,8 @@ TextureRect depthDrawRect(const display::ScreenQuad& wall, glm::dvec3 eye, glm::
     const glm::dvec2 a = glm::clamp(lo / size, 0.0, 1.0), b = glm::clamp(hi / size, 0.0, 1.0);
     // Back to fractions with t down.
     const TextureRect r{glm::dvec2(a.x, 1.0 - b.y), glm::dvec2(b.x, 1.0 - a.y)};
-    const bool finite = std::isfinite(r.lo.x) && std::isfinite(r.lo.y) && std::isfinite(r.hi.x) && std::isfinite(r.hi.y);
+    const bool finite = std::isfinite(r.lo.x) && std::isfinite(r.lo.y) && std::isfinite(r.hi.x) &&
+                        std::isfinite(r.hi.y);
     return !finite || r.empty() ? none : r;
 }
 

@@ -138,7 +138,8 @@ inline constexpr int kSkipSteps = kSkipBlock - 1;
 // is none). Nothing outside it can be hit by a march.
 TextureRect contentRect(const DepthImage& image);
 
-// Where on the wall a depth layer's march can hit, seen from `eye` (world): every wall point
+// Where on the wall a depth layer's march can hit, seen from `eye` (the wall frame, z < 0, as
+// reproject takes it; S likewise): every wall point
 // whose eye ray meets, at a depth in `range` behind the plane, a ray of S through `content`
 // (a TextureRect of the wall's texture, which S sees the wall through) lies in the returned
 // rectangle of the wall (the same fractions), grown by `margin` metres on every side and
@@ -149,8 +150,8 @@ TextureRect contentRect(const DepthImage& image);
 // not 0 <= near <= far < infinity, or when the eye or S is not in front of the plane. The
 // depth wall pass draws only this part of a wall (gl::DepthWallPass): the pixels it leaves out
 // are ones no march hits, which add nothing.
-TextureRect depthDrawRect(const display::ScreenQuad& wall, glm::dvec3 eye, glm::dvec3 samplingPoint,
-                          const TextureRect& content, glm::dvec2 range, double margin);
+TextureRect depthDrawRect(const WallFrame& frame, glm::dvec3 eye, glm::dvec3 samplingPoint, const TextureRect& content,
+                          glm::dvec2 range, double margin);
 
 // A depth image as the GPU holds it (gl::uploadDepthTexture): the depths and, when the image has
 // a whole skip block (kSkipBlock texels on both sides), their block minima (depthBlockMinimum

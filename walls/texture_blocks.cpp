@@ -350,15 +350,8 @@ TextureRect coveredRect(const TextureLevels& levels, int margin) {
     if (levels.count() == 0) return noRect();
     const scenes::Image decoded = levels.format == TextureFormat::Rgba8 ? scenes::Image{} : decodeLevel(levels.blocks[0], levels.format);
     const scenes::Image& image = levels.format == TextureFormat::Rgba8 ? levels.rgba[0] : decoded;
-    int x0 = image.width, y0 = image.height, x1 = 0, y1 = 0;
-    for (int j = 0; j < image.height; ++j)
-        for (int i = 0; i < image.width; ++i)
-            if (image.rgba[(std::size_t(j) * image.width + i) * 4 + 3] != 0)
-                x0 = std::min(x0, i), x1 = std::max(x1, i + 1), y0 = std::min(y0, j), y1 = std::max(y1, j + 1);
-    if (x1 <= x0) return noRect();
-    const glm::ivec2 size(image.width, image.height), m(std::max(margin, 0));
-    const glm::ivec2 lo = glm::max(glm::ivec2(x0, y0) - m, glm::ivec2(0)), hi = glm::min(glm::ivec2(x1, y1) + m, size);
-    return {glm::dvec2(lo) / glm::dvec2(size), glm::dvec2(hi) / glm::dvec2(size)};
+    return texelBounds(image.width, image.height, margin,
+                       [&](int i, int j) { return image.rgba[(std::size_t(j) * image.width + i) * 4 + 3] != 0; });
 }
 
 std::string_view textureFileExtension(TextureFormat format) {

@@ -81,10 +81,8 @@ void TexturePager::worker() {
             if (ok && d.depth) {
                 // The depths cover every texel of colour; a depth texture drawn flat (a wall
                 // whose other texture has no depth) needs the same margin as a flat one.
-                const glm::dvec2 margin = double(kCoveredMargin) / glm::dvec2(d.levels.width(), d.levels.height());
-                d.content = d.depth->content.empty() ? noRect()
-                                                     : TextureRect{glm::max(d.depth->content.lo - margin, 0.0),
-                                                                   glm::min(d.depth->content.hi + margin, 1.0)};
+                const glm::dvec2 colourTexels(d.levels.width(), d.levels.height());
+                d.content = grown(d.depth->content, double(kCoveredMargin) / colourTexels);
             } else if (ok) {
                 d.content = coveredRect(d.levels, kCoveredMargin);
             }

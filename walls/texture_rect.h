@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <array>
 
 namespace cavewall::walls {
@@ -26,6 +27,26 @@ inline TextureRect unite(const TextureRect& a, const TextureRect& b) {
 
 // The empty rectangle.
 inline TextureRect noRect() { return {glm::dvec2(0.0), glm::dvec2(0.0)}; }
+
+// `r` grown by `by` (fractions) on every side and clipped to the texture; empty stays empty.
+inline TextureRect grown(const TextureRect& r, glm::dvec2 by) {
+    if (r.empty()) return r;
+    return {glm::max(r.lo - by, 0.0), glm::min(r.hi + by, 1.0)};
+}
+
+// The rectangle of whole texels around every texel (i, j) of a width x height texture for which
+// covered(i, j) holds, grown by `margin` texels and clipped to the texture; empty when none is.
+template <class Covered>
+TextureRect texelBounds(int width, int height, int margin, Covered covered) {
+    int x0 = width, y0 = height, x1 = 0, y1 = 0;
+    for (int j = 0; j < height; ++j)
+        for (int i = 0; i < width; ++i)
+            if (covered(i, j))
+                x0 = std::min(x0, i), x1 = std::max(x1, i + 1), y0 = std::min(y0, j), y1 = std::max(y1, j + 1);
+    if (x1 <= x0) return noRect();
+    const glm::dvec2 size(width, height);
+    return grown({glm::dvec2(x0, y0) / size, glm::dvec2(x1, y1) / size}, glm::dvec2(std::max(margin, 0)) / size);
+}
 
 // The point of `wall` (world) at texture fractions u (right) and t (down from the upper edge).
 inline glm::dvec3 wallPoint(const display::ScreenQuad& wall, double u, double t) {

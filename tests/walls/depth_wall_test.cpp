@@ -469,34 +469,34 @@ TEST(DepthDrawRect, ContentRectIsTheTexelsAroundEveryFiniteDepth) {
 // texels: the draw rectangle is the content rectangle, whatever the range.
 TEST(DepthDrawRect, FromTheSamplingPointItIsTheContent) {
     const WallFrame f = wallFrame(kQuad);
-    const glm::dvec3 s = f.toWorld({1.1, 1.4, -2.5});
+    const glm::dvec3 s(1.1, 1.4, -2.5);
     const TextureRect content{{0.2, 0.3}, {0.45, 0.8}};
-    const TextureRect r = depthDrawRect(kQuad, s, s, content, {0.5, 30.0}, 0.0);
+    const TextureRect r = depthDrawRect(f, s, s, content, {0.5, 30.0}, 0.0);
     EXPECT_NEAR(r.lo.x, 0.2, 1e-12);
     EXPECT_NEAR(r.lo.y, 0.3, 1e-12);
     EXPECT_NEAR(r.hi.x, 0.45, 1e-12);
     EXPECT_NEAR(r.hi.y, 0.8, 1e-12);
     // Grown by the margin (metres on the 4 m x 3 m wall) and clipped to the wall.
-    const TextureRect grown = depthDrawRect(kQuad, s, s, {{0.0, 0.3}, {0.45, 0.8}}, {0.5, 30.0}, 0.3);
-    EXPECT_NEAR(grown.lo.x, 0.0, 1e-12);
-    EXPECT_NEAR(grown.lo.y, 0.2, 1e-12);
-    EXPECT_NEAR(grown.hi.x, 0.525, 1e-12);
-    EXPECT_NEAR(grown.hi.y, 0.9, 1e-12);
+    const TextureRect wider = depthDrawRect(f, s, s, {{0.0, 0.3}, {0.45, 0.8}}, {0.5, 30.0}, 0.3);
+    EXPECT_NEAR(wider.lo.x, 0.0, 1e-12);
+    EXPECT_NEAR(wider.lo.y, 0.2, 1e-12);
+    EXPECT_NEAR(wider.hi.x, 0.525, 1e-12);
+    EXPECT_NEAR(wider.hi.y, 0.9, 1e-12);
 }
 
 // Nothing to draw: no content, a range that is not finite and ordered, an eye or a sampling
 // point behind the wall.
 TEST(DepthDrawRect, EmptyWhereNothingCanBeHit) {
     const WallFrame f = wallFrame(kQuad);
-    const glm::dvec3 s = f.toWorld({1.0, 1.5, -2.0}), e = f.toWorld({2.5, 1.0, -1.5});
+    const glm::dvec3 s(1.0, 1.5, -2.0), e(2.5, 1.0, -1.5);
     const TextureRect content{{0.1, 0.1}, {0.4, 0.5}};
-    EXPECT_FALSE(depthDrawRect(kQuad, e, s, content, {1.0, 5.0}, 0.0).empty());
-    EXPECT_TRUE(depthDrawRect(kQuad, e, s, {{0.3, 0.1}, {0.3, 0.5}}, {1.0, 5.0}, 0.0).empty());
-    EXPECT_TRUE(depthDrawRect(kQuad, e, s, content, {1.0, std::numeric_limits<double>::infinity()}, 0.0).empty());
-    EXPECT_TRUE(depthDrawRect(kQuad, e, s, content, {5.0, 1.0}, 0.0).empty());
-    EXPECT_TRUE(depthDrawRect(kQuad, e, s, content, {-1.0, 1.0}, 0.0).empty());
-    EXPECT_TRUE(depthDrawRect(kQuad, f.toWorld({2.5, 1.0, 1.5}), s, content, {1.0, 5.0}, 0.0).empty());
-    EXPECT_TRUE(depthDrawRect(kQuad, e, f.toWorld({1.0, 1.5, 2.0}), content, {1.0, 5.0}, 0.0).empty());
+    EXPECT_FALSE(depthDrawRect(f, e, s, content, {1.0, 5.0}, 0.0).empty());
+    EXPECT_TRUE(depthDrawRect(f, e, s, {{0.3, 0.1}, {0.3, 0.5}}, {1.0, 5.0}, 0.0).empty());
+    EXPECT_TRUE(depthDrawRect(f, e, s, content, {1.0, std::numeric_limits<double>::infinity()}, 0.0).empty());
+    EXPECT_TRUE(depthDrawRect(f, e, s, content, {5.0, 1.0}, 0.0).empty());
+    EXPECT_TRUE(depthDrawRect(f, e, s, content, {-1.0, 1.0}, 0.0).empty());
+    EXPECT_TRUE(depthDrawRect(f, {2.5, 1.0, 1.5}, s, content, {1.0, 5.0}, 0.0).empty());
+    EXPECT_TRUE(depthDrawRect(f, e, {1.0, 1.5, 2.0}, content, {1.0, 5.0}, 0.0).empty());
 }
 
 // Every pixel whose march hits lies in the rectangle: random depth images (a random block of
@@ -522,7 +522,7 @@ TEST(DepthDrawRect, HoldsEveryPixelTheMarchHits) {
         const glm::dvec2 range = depthRange(image);
         const glm::dvec3 s(4.0 * unit(rng), 3.0 * unit(rng), -(1.0 + 3.0 * unit(rng)));
         const glm::dvec3 e(-2.0 + 8.0 * unit(rng), 3.0 * unit(rng), -(0.5 + 4.0 * unit(rng)));
-        const TextureRect r = depthDrawRect(kQuad, f.toWorld(e), f.toWorld(s), contentRect(image), range, 0.0);
+        const TextureRect r = depthDrawRect(f, e, s, contentRect(image), range, 0.0);
         // Empty where the content's image misses the wall: then no pixel may hit either.
         if (!r.empty()) ++cases, smallest = std::min(smallest, (r.hi.x - r.lo.x) * (r.hi.y - r.lo.y));
         const int grid = 96;
@@ -552,9 +552,9 @@ TEST(DepthDrawRect, NeedsBothEndsOfTheRange) {
         for (int i = 20; i < 40; ++i) image.depth[std::size_t(j) * n + i] = (i + j) % 2 ? 1.0f : 6.0f;
     const glm::dvec3 s(2.0, 1.5, -3.0), e(3.5, 1.5, -2.0);
     const glm::dvec2 range = depthRange(image);
-    const TextureRect both = depthDrawRect(kQuad, f.toWorld(e), f.toWorld(s), contentRect(image), range, 0.0);
-    const TextureRect nearOnly = depthDrawRect(kQuad, f.toWorld(e), f.toWorld(s), contentRect(image), {1.0, 1.0}, 0.0);
-    const TextureRect farOnly = depthDrawRect(kQuad, f.toWorld(e), f.toWorld(s), contentRect(image), {6.0, 6.0}, 0.0);
+    const TextureRect both = depthDrawRect(f, e, s, contentRect(image), range, 0.0);
+    const TextureRect nearOnly = depthDrawRect(f, e, s, contentRect(image), {1.0, 1.0}, 0.0);
+    const TextureRect farOnly = depthDrawRect(f, e, s, contentRect(image), {6.0, 6.0}, 0.0);
     int nearMisses = 0, farMisses = 0, outside = 0;
     for (int j = 0; j < 200; ++j)
         for (int i = 0; i < 200; ++i) {

@@ -81,6 +81,12 @@ protected:
     void matchesGeometryExceptWherePredicted(bool halved);
     // The shader's march against walls::reproject, pixel by pixel (TheShaderMarchesAsItsReference).
     void marchesAsItsReference(bool halved);
+    // `objects` of `scene` baked on kQuad from kSample at kWidth x kHeight: the colour, and the
+    // depth into `depth`.
+    static scenes::Image bake(const scenes::Scene& scene, const std::vector<int>& objects, walls::DepthImage& depth) {
+        gl::WallTextureRenderer baker(scene, 1.0f);
+        return baker.render(kQuad, kSample, {kWidth, kHeight}, objects, depth);
+    }
 };
 
 TEST_F(DepthWallPassTest, MatchesGeometryFromAnotherEyeExceptWhereTheBoundPredicts) {
@@ -101,11 +107,7 @@ void DepthWallPassTest::matchesGeometryExceptWherePredicted(bool halved) {
 
     // Bake colour and depth from the sampling point.
     walls::DepthImage depth;
-    scenes::Image colour;
-    {
-        gl::WallTextureRenderer baker(scene, 1.0f);
-        colour = baker.render(kQuad, kSample, {kWidth, kHeight}, objects, depth);
-    }
+    const scenes::Image colour = bake(scene, objects, depth);
     const glm::dvec2 range = walls::depthRange(depth);
     EXPECT_NEAR(range.x, 1.0, 1e-5);  // the card's face; float depth buffer, depth_wall.h
     EXPECT_NEAR(range.y, 4.0, 1e-5);  // the back plane
@@ -245,11 +247,7 @@ TEST_F(DepthWallPassTest, GeometryInFrontOfTheWallHidesIt) {
     const std::vector<int> behind{0, 1}, front{2};
 
     walls::DepthImage depth;
-    scenes::Image colour;
-    {
-        gl::WallTextureRenderer baker(scene, 1.0f);
-        colour = baker.render(kQuad, kSample, {kWidth, kHeight}, behind, depth);
-    }
+    const scenes::Image colour = bake(scene, behind, depth);
     const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
     const gl::DepthTexture depthTexture = gl::uploadDepthTexture(depth);
     const gl::DepthWallPass pass;
@@ -490,16 +488,14 @@ TEST_F(DepthWallPassTest, DrawsOnlyWhereAMarchCanHit) {
     const scenes::Scene scene = cardScene();
     const std::vector<int> objects{1};  // the card, no back plane
     walls::DepthImage depth;
-    scenes::Image colour;
-    {
-        gl::WallTextureRenderer baker(scene, 1.0f);
-        colour = baker.render(kQuad, kSample, {kWidth, kHeight}, objects, depth);
-    }
+    const scenes::Image colour = bake(scene, objects, depth);
     const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
     const gl::DepthTexture depthTexture = gl::uploadDepthTexture(depth);
     const walls::TextureRect content = walls::contentRect(depth);
     const glm::dvec2 range = walls::depthRange(depth);
-    const walls::TextureRect drawn = walls::depthDrawRect(kQuad, kEye, kSample, content, range, 0.0);
+    const walls::WallFrame frame = walls::wallFrame(kQuad);
+    const walls::TextureRect drawn =
+        walls::depthDrawRect(frame, frame.toWall(kEye), frame.toWall(kSample), content, range, 0.0);
     EXPECT_LT((drawn.hi.x - drawn.lo.x) * (drawn.hi.y - drawn.lo.y), 0.1);
 
     const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, kEye, {0.05, kInf});
@@ -543,11 +539,7 @@ TEST_F(DepthWallPassTest, FlatWallsDrawOnlyTheirCoveredRectangle) {
     const scenes::Scene scene = cardScene();
     const std::vector<int> objects{1};
     walls::DepthImage depth;
-    scenes::Image colour;
-    {
-        gl::WallTextureRenderer baker(scene, 1.0f);
-        colour = baker.render(kQuad, kSample, {kWidth, kHeight}, objects, depth);
-    }
+    const scenes::Image colour = bake(scene, objects, depth);
     const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
     const walls::TextureRect covered = walls::coveredRect(walls::TextureLevels({colour}), walls::kCoveredMargin);
     EXPECT_LT((covered.hi.x - covered.lo.x) * (covered.hi.y - covered.lo.y), 0.1);

@@ -257,10 +257,10 @@ void DepthWallPass::draw(const std::vector<DepthWallDraw>& walls, const display:
         for (int i = 0; i < w.count && i < walls::kMaxWallTextures; ++i) {
             const DepthWallLayer& l = w.layers[i];
             if (l.colour == 0 || l.depth == 0) continue;
+            const glm::dvec3 s = frame.toWall(l.samplingPoint);
             const glm::dvec2 texels = glm::max(glm::dvec2(l.depthTexels), 1.0);
             const double margin = std::max(frame.width / texels.x, frame.height / texels.y);
-            rect = walls::unite(rect, walls::depthDrawRect(w.quad, eyeWorld, l.samplingPoint, l.content, l.range, margin));
-            const glm::dvec3 s = frame.toWall(l.samplingPoint);
+            rect = walls::unite(rect, walls::depthDrawRect(frame, eye, s, l.content, l.range, margin));
             weights[used] = l.weight;
             samples[used] = glm::vec3(s.x, s.y, -s.z);
             ranges[used] = glm::vec2(l.range);
