@@ -1,5 +1,6 @@
 #pragma once
-// Cross-faded transitions between a cluster's representations (seed 004, section 4.6), GL-free.
+// Cross-faded transitions between a cluster's representations (Maciel & Shirley (1995),
+// section 4.6), GL-free.
 //
 // The selection (cluster_frame.h) switches a cluster from its box to its children (refine), from
 // its children back to its box (coarsen), or from one box to the other (textured <-> average) in
@@ -21,6 +22,7 @@
 
 #include "render/cluster_frame.h"
 
+#include <optional>
 #include <vector>
 
 namespace cavewall::render {
@@ -48,6 +50,22 @@ private:
         std::vector<int> ghostObjects;             // coarsen: drawn below the node before
         std::vector<ClusterBoxDraw> ghostBoxes;
     };
+    // One frame's selection per node: the rep of the box drawn (-1: none) and whether anything
+    // below the node is drawn.
+    struct Selection {
+        std::vector<int> box;
+        std::vector<char> refined;
+    };
+
+    // The steps of apply, in its order.
+    void restart(const ClusterTree& tree);
+    Selection selectionOf(const ClusterFramePlan& plan) const;
+    std::vector<Fade> continuedFades(const Selection& now);
+    std::optional<Fade> switchOf(const ClusterTree& tree, const Selection& now, std::size_t node) const;
+    void addSwitches(const ClusterTree& tree, const Selection& now, std::vector<Fade>& fades) const;
+    double addFadeItems(const ClusterModel& model, const std::vector<Fade>& fades, ClusterFramePlan& plan) const;
+    void orderBoxes(const ClusterTree& tree, glm::dvec3 eyeWorld, std::vector<ClusterBoxDraw>& boxes) const;
+    bool below(int m, int n) const;  // node m strictly below node n
 
     int _frames;
     std::vector<int> _parent;                      // per node, -1 for the root

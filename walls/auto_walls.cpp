@@ -53,7 +53,10 @@ std::vector<double> chooseCuts(double lo, double hi, int count, const std::vecto
             std::size_t straddling = 0;
             for (const scenes::Bounds& b : boxes)
                 if (b.min[axis] < x - 1e-9 && b.max[axis] > x + 1e-9) ++straddling;
-            if (straddling < bestStraddling) bestStraddling = straddling, best = x;
+            if (straddling < bestStraddling) {
+                bestStraddling = straddling;
+                best = x;
+            }
         }
         cuts.push_back(best);
     }
@@ -233,6 +236,46 @@ scenes::SceneDescription describe(const scenes::SceneDescription& base, const Gr
     return d;
 }
 
+// The triangles drawn from `eye` in `cell`: the cell's, plus those of every neighbour whose
+// zone holding the eye draws it as geometry (the planner's own zones).
+double drawnFrom(const glm::dvec3& eye, int cell, const std::optional<Plan>& plan,
+                 const std::vector<double>& cellTriangles) {
+    double drawn = cellTriangles[cell];
+    if (plan)
+        for (const WallSide& side : plan->sides) {
+            if (side.cell != cell) continue;
+            const int z = findZone(*plan, cell, side.wall, {eye.x, eye.z});
+            if (z < 0) continue;
+            const Zone& zone = plan->zones[z];
+            if (zone.kind != ZoneKind::Geometry && !(zone.kind == ZoneKind::Blend && zone.mixesGeometry)) continue;
+            const std::array<int, 2>& both = plan->walls[side.wall].cells;
+            const int behind = both[0] == cell ? both[1] : both[0];
+            if (behind >= 0) drawn += cellTriangles[behind];
+        }
+    return drawn;
+}
+
+// The walk cost (6.): `c`'s E[ms] and meanCellTriangles become the means over the eyes in a
+// cell (unchanged when there are none). `cellTriangles`, `cellSides`: per cell of `d`.
+void applyWalkCost(AutoWallsCandidate& c, const scenes::SceneDescription& d, const std::optional<Plan>& plan,
+                   const std::vector<double>& cellTriangles, const std::vector<int>& cellSides,
+                   const AutoWallsOptions& options, const std::vector<glm::dvec3>& eyes) {
+    double ms = 0.0, triangles = 0.0;
+    int counted = 0;
+    for (const glm::dvec3& eye : eyes) {
+        const int cell = scenes::findCell(d.cells, eye);
+        if (cell < 0) continue;
+        const double drawn = drawnFrom(eye, cell, plan, cellTriangles);
+        ms += options.msPerMillionTriangles * drawn / 1e6 + options.msPerWallSide * cellSides[cell];
+        triangles += drawn;
+        ++counted;
+    }
+    if (counted > 0) {
+        c.expectedMs = ms / counted;
+        c.meanCellTriangles = triangles / counted;
+    }
+}
+
 // E[ms], triangles, textures and MiB of description `d` (AutoWallsCandidate without nx, nz).
 // A cell's triangles are those of the content boxes meeting its region's bounding rectangle
 // (exact for the rectangular cells proposed here). `eyes` (x, y, z): the walk cost's (6.);
@@ -248,7 +291,10 @@ AutoWallsCandidate evaluate(const scenes::SceneDescription& d, const std::vector
     for (std::size_t i = 0; i < d.cells.size(); ++i) {
         const scenes::Cell& cell = d.cells[i];
         glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-        for (const glm::dvec2& p : cell.region) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        for (const glm::dvec2& p : cell.region) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
         const double share = area > 0.0 ? std::abs(scenes::regionArea(cell.region)) / area : 0.0;
         double triangles = 0.0;
         for (std::size_t o = 0; o < content.size(); ++o)
@@ -257,7 +303,8 @@ AutoWallsCandidate evaluate(const scenes::SceneDescription& d, const std::vector
                 triangles += static_cast<double>(contentTriangles[o]);
         int sides = 0;
         for (const scenes::VirtualWall& w : d.walls) sides += (w.cells[0] == static_cast<int>(i)) + (w.cells[1] == static_cast<int>(i));
-        cellTriangles[i] = triangles, cellSides[i] = sides;
+        cellTriangles[i] = triangles;
+        cellSides[i] = sides;
         c.meanCellTriangles += share * triangles;
         c.expectedMs += share * (options.msPerMillionTriangles * triangles / 1e6 + options.msPerWallSide * sides);
     }
@@ -268,29 +315,7 @@ AutoWallsCandidate evaluate(const scenes::SceneDescription& d, const std::vector
         c.textureMB = planTotals(*plan).gpuBytes / (1024.0 * 1024.0);
     }
     c.withinBudget = c.textureMB <= options.textureBudgetMB;
-    if (eyes.empty()) return c;
-    double ms = 0.0, triangles = 0.0;
-    int counted = 0;
-    for (const glm::dvec3& eye : eyes) {
-        const int cell = scenes::findCell(d.cells, eye);
-        if (cell < 0) continue;
-        double drawn = cellTriangles[cell];
-        if (plan)
-            for (const WallSide& side : plan->sides) {
-                if (side.cell != cell) continue;
-                const int z = findZone(*plan, cell, side.wall, {eye.x, eye.z});
-                if (z < 0) continue;
-                const Zone& zone = plan->zones[z];
-                if (zone.kind != ZoneKind::Geometry && !(zone.kind == ZoneKind::Blend && zone.mixesGeometry)) continue;
-                const std::array<int, 2>& both = plan->walls[side.wall].cells;
-                const int behind = both[0] == cell ? both[1] : both[0];
-                if (behind >= 0) drawn += cellTriangles[behind];
-            }
-        ms += options.msPerMillionTriangles * drawn / 1e6 + options.msPerWallSide * cellSides[cell];
-        triangles += drawn;
-        ++counted;
-    }
-    if (counted > 0) c.expectedMs = ms / counted, c.meanCellTriangles = triangles / counted;
+    if (!eyes.empty()) applyWalkCost(c, d, plan, cellTriangles, cellSides, options, eyes);
     return c;
 }
 
@@ -312,6 +337,208 @@ std::vector<glm::dvec3> costEyes(const std::vector<glm::dvec3>& walkPath, glm::d
     return eyes;
 }
 
+// 1.'s findings over the model's objects.
+struct ModelParts {
+    std::vector<std::string> structure;                 // structure objects' names, in object order
+    std::vector<const scenes::Object*> verticalPlanes;  // large vertical structure planes (hall walls)
+    std::vector<WallPiece> pieces;                      // thin vertical structure boxes (5.)
+    std::vector<scenes::Bounds> content;                // every other object's box
+    std::vector<std::size_t> contentTriangles;          // and its triangles
+    scenes::Bounds floorBox;                            // the floor planes'
+    double floorTop = std::numeric_limits<double>::infinity();        // the lowest floor plane's top
+    double ceilingBottom = -std::numeric_limits<double>::infinity();  // the highest ceiling's bottom
+};
+
+// The description's structure patterns, over all its models.
+std::vector<std::string> structurePatterns(const scenes::SceneDescription& base) {
+    std::vector<std::string> patterns;
+    for (const scenes::ModelFile& m : base.models) patterns.insert(patterns.end(), m.structureNodes.begin(), m.structureNodes.end());
+    return patterns;
+}
+
+bool namedStructure(const scenes::Object& o, const std::vector<std::string>& patterns) {
+    bool named = o.role == scenes::Role::Structure;
+    for (const std::string& p : patterns) named = named || scenes::matchesNodePattern(o.name, p);
+    return named;
+}
+
+// A large plane: thinner than planarThickness of its second extent, and each of its two long
+// axes covering planarExtent of the model's (`size`).
+bool largePlane(const scenes::Object& o, const Shape& s, glm::dvec3 size, const AutoWallsOptions& options) {
+    if (!(s.second > 0.0 && s.thickness <= options.planarThickness * s.second)) return false;
+    for (int a = 0; a < 3; ++a)
+        if (a != s.thinAxis && a != 1 && o.worldBounds.size()[a] < options.planarExtent * size[a]) return false;
+    if (s.thinAxis != 1 && o.worldBounds.size().y < options.planarExtent * size.y) return false;
+    return true;
+}
+
+// Files structure object `o` (its shape `s`; `plane`: a large plane): a piece of real wall when
+// thin and vertical; a floor or ceiling when a horizontal plane, a hall wall when a vertical one.
+void addStructure(ModelParts& parts, const scenes::Object& o, const Shape& s, bool plane, const scenes::Bounds& all) {
+    parts.structure.push_back(o.name);
+    if (s.thinAxis != 1 && s.thickness <= 0.5 && o.worldBounds.size().y >= 0.3) {
+        const scenes::Bounds& b = o.worldBounds;
+        const int along = s.thinAxis == 0 ? 2 : 0;
+        parts.pieces.push_back({s.thinAxis, b.centre()[s.thinAxis], b.min[along], b.max[along], b.min.y, b.max.y});
+    }
+    if (s.thinAxis == 1 && plane) {
+        // Horizontal: below the model's middle a floor (the lowest top wins), above a ceiling
+        // (the highest bottom wins).
+        if (o.worldBounds.centre().y < all.centre().y) {
+            parts.floorTop = std::min(parts.floorTop, o.worldBounds.max.y);
+            parts.floorBox.add(o.worldBounds);
+        } else {
+            parts.ceilingBottom = std::max(parts.ceilingBottom, o.worldBounds.min.y);
+        }
+    } else if (plane) {
+        parts.verticalPlanes.push_back(&o);
+    }
+}
+
+// 1. Structure: named by the description's patterns, or a large plane; every other object is
+// content. `all`: the scene's bounds.
+ModelParts classifyObjects(const scenes::Scene& scene, const std::vector<std::string>& patterns,
+                           const AutoWallsOptions& options, const scenes::Bounds& all) {
+    const glm::dvec3 size = all.size();
+    ModelParts parts;
+    for (const scenes::Object& o : scene.objects) {
+        const Shape s = shapeOf(o.worldBounds);
+        const bool named = namedStructure(o, patterns);
+        const bool plane = largePlane(o, s, size, options);
+        if (named || plane) {
+            addStructure(parts, o, s, plane, all);
+            continue;
+        }
+        parts.content.push_back(o.worldBounds);
+        parts.contentTriangles.push_back(o.mesh >= 0 && o.mesh < static_cast<int>(scene.meshes.size())
+                                             ? scene.meshes[o.mesh].indices.size() / 3 : 0);
+    }
+    return parts;
+}
+
+// floorY and ceilingY from the floor and ceiling planes, else from the model's bounds.
+void setFloorAndCeiling(AutoWallsResult& result, const ModelParts& parts, const scenes::Bounds& all) {
+    result.floorY = std::isfinite(parts.floorTop) ? parts.floorTop : all.min.y;
+    result.ceilingY = parts.ceilingBottom > result.floorY + 1.0 ? parts.ceilingBottom : all.max.y;
+    if (result.ceilingY <= result.floorY + 1e-3) result.ceilingY = result.floorY + 3.0;
+}
+
+// An (x, z) rectangle.
+struct Rect {
+    glm::dvec2 lo, hi;
+};
+
+// 2. Walkable rectangle: the floor planes' (else the model's), inside the hall walls; the
+// model's when the hall walls leave nothing.
+Rect walkableRect(const ModelParts& parts, const scenes::Bounds& all) {
+    const scenes::Bounds& floorArea = parts.floorBox.empty() ? all : parts.floorBox;
+    glm::dvec2 lo(floorArea.min.x, floorArea.min.z), hi(floorArea.max.x, floorArea.max.z);
+    for (const scenes::Object* o : parts.verticalPlanes) {
+        const scenes::Bounds& b = o->worldBounds;
+        const int axis = shapeOf(b).thinAxis == 0 ? 0 : 2;  // the wall's normal axis (x or z)
+        const int k = axis == 0 ? 0 : 1;
+        const double c = b.centre()[axis];
+        if (c < 0.5 * (lo[k] + hi[k])) lo[k] = std::max(lo[k], b.max[axis]);
+        else hi[k] = std::min(hi[k], b.min[axis]);
+    }
+    if (hi.x - lo.x < 1e-3 || hi.y - lo.y < 1e-3) return {{all.min.x, all.min.z}, {all.max.x, all.max.z}};
+    return {lo, hi};
+}
+
+// `base` with the structure found (sorted, unique names) that no pattern of it matches added to
+// its first model's structure patterns.
+scenes::SceneDescription withStructure(const scenes::SceneDescription& base, const std::vector<std::string>& structure,
+                                       const std::vector<std::string>& patterns) {
+    scenes::SceneDescription named = base;
+    if (!named.models.empty()) {
+        std::vector<std::string>& nodes = named.models.front().structureNodes;
+        for (const std::string& s : structure)
+            if (std::none_of(patterns.begin(), patterns.end(), [&](const std::string& p) { return scenes::matchesNodePattern(s, p); }))
+                nodes.push_back(s);
+    }
+    return named;
+}
+
+// What every candidate is described from and scored with.
+struct CandidateInputs {
+    const scenes::SceneDescription& named;  // withStructure's
+    const ModelParts& parts;                // content, its triangles and the wall pieces
+    const AutoWallsOptions& options;
+    const std::vector<glm::dvec3>& eyes;    // the walk cost's (6.); empty: the floor cost (4.)
+    double floorY = 0.0, ceilingY = 0.0, eyeHeight = 0.0;
+};
+
+// The candidates in the order tried, with their descriptions (index for index).
+struct Proposals {
+    std::vector<AutoWallsCandidate> candidates;
+    std::vector<scenes::SceneDescription> descriptions;
+};
+
+// 3.-4. Every grid of nx x nz cells over `walkable`, scored; a row of nz stops at its first
+// candidate over the budget.
+void addGrids(Proposals& out, const CandidateInputs& in, const Rect& walkable) {
+    const AutoWallsOptions& options = in.options;
+    const int maxX =
+        std::clamp(static_cast<int>((walkable.hi.x - walkable.lo.x) / options.minCellSize), 1, options.maxCellsPerAxis);
+    const int maxZ =
+        std::clamp(static_cast<int>((walkable.hi.y - walkable.lo.y) / options.minCellSize), 1, options.maxCellsPerAxis);
+    for (int nx = 1; nx <= maxX; ++nx)
+        for (int nz = 1; nz <= maxZ; ++nz) {
+            Grid g{chooseCuts(walkable.lo.x, walkable.hi.x, nx, in.parts.content, 0),
+                   chooseCuts(walkable.lo.y, walkable.hi.y, nz, in.parts.content, 2)};
+            scenes::SceneDescription d = describe(in.named, g, in.floorY, in.ceilingY, in.eyeHeight);
+            scenes::validateSceneDescription(d, "auto walls");
+            AutoWallsCandidate c = evaluate(d, in.parts.content, in.parts.contentTriangles, options, in.eyes);
+            c.nx = nx;
+            c.nz = nz;
+            out.candidates.push_back(c);
+            out.descriptions.push_back(std::move(d));
+            // More cells along z only add walls and textures: the rest of this row is over too.
+            if (!c.withinBudget) break;
+        }
+}
+
+// 5. The rooms: a grid cut along the lines of real walls, its boundaries on them portals; no
+// candidate when there are no such lines.
+void addRooms(Proposals& out, const CandidateInputs& in, const Rect& walkable) {
+    const std::vector<WallPiece>& pieces = in.parts.pieces;
+    const std::vector<double> xLines =
+        wallLines(pieces, 0, walkable.lo.x, walkable.hi.x, walkable.hi.y - walkable.lo.y, in.floorY);
+    const std::vector<double> zLines =
+        wallLines(pieces, 2, walkable.lo.y, walkable.hi.y, walkable.hi.x - walkable.lo.x, in.floorY);
+    if (xLines.empty() && zLines.empty()) return;
+    Grid g{{walkable.lo.x}, {walkable.lo.y}};
+    g.xs.insert(g.xs.end(), xLines.begin(), xLines.end());
+    g.zs.insert(g.zs.end(), zLines.begin(), zLines.end());
+    g.xs.push_back(walkable.hi.x);
+    g.zs.push_back(walkable.hi.y);
+    scenes::SceneDescription d = describe(in.named, g, in.floorY, in.ceilingY, in.eyeHeight);
+    makeRooms(d, pieces, in.floorY, in.ceilingY);
+    scenes::validateSceneDescription(d, "auto walls (rooms)");
+    AutoWallsCandidate c = evaluate(d, in.parts.content, in.parts.contentTriangles, in.options, in.eyes);
+    c.nx = static_cast<int>(g.xs.size()) - 1;
+    c.nz = static_cast<int>(g.zs.size()) - 1;
+    c.rooms = true;
+    for (const scenes::VirtualWall& w : d.walls) ++(w.kind == scenes::WallKind::Portal ? c.portals : c.virtualWalls);
+    out.candidates.push_back(c);
+    out.descriptions.push_back(std::move(d));
+}
+
+// The cheapest candidate within the budget (the first of equals; the first candidate, one cell,
+// always fits), or with `preferRooms` the rooms when they are within it.
+int chooseCandidate(const std::vector<AutoWallsCandidate>& candidates, bool preferRooms) {
+    int chosen = 0;
+    for (std::size_t i = 1; i < candidates.size(); ++i) {
+        const AutoWallsCandidate& c = candidates[i];
+        const AutoWallsCandidate& best = candidates[chosen];
+        if (c.withinBudget && c.expectedMs < best.expectedMs) chosen = static_cast<int>(i);
+    }
+    if (preferRooms)
+        for (std::size_t i = 0; i < candidates.size(); ++i)
+            if (candidates[i].rooms && candidates[i].withinBudget) chosen = static_cast<int>(i);
+    return chosen;
+}
+
 }  // namespace
 
 void validateAutoWallsOptions(const AutoWallsOptions& o) {
@@ -329,6 +556,7 @@ void validateAutoWallsOptions(const AutoWallsOptions& o) {
     check(o.planarExtent > 0.0 && o.planarExtent <= 1.0, "planar extent", "in (0, 1]", o.planarExtent);
 }
 
+
 AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDescription& base,
                              const AutoWallsOptions& options, std::vector<std::string>* warnings) {
     validateAutoWallsOptions(options);
@@ -338,124 +566,29 @@ AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDesc
                             std::to_string(base.realWalls.size()) + " real walls are replaced (by the proposal's own)");
     AutoWallsResult result;
     const scenes::Bounds all = scene.bounds();
-    const glm::dvec3 size = all.size();
-
-    // 1. Structure: named by the description's patterns, or a large plane.
-    std::vector<std::string> patterns;
-    for (const scenes::ModelFile& m : base.models) patterns.insert(patterns.end(), m.structureNodes.begin(), m.structureNodes.end());
-    scenes::Bounds floorBox;
-    double floorTop = std::numeric_limits<double>::infinity(), ceilingBottom = -std::numeric_limits<double>::infinity();
-    std::vector<const scenes::Object*> verticalPlanes;
-    std::vector<WallPiece> pieces;
-    std::vector<scenes::Bounds> content;
-    std::vector<std::size_t> contentTriangles;
-    for (const scenes::Object& o : scene.objects) {
-        const Shape s = shapeOf(o.worldBounds);
-        bool named = o.role == scenes::Role::Structure;
-        for (const std::string& p : patterns) named = named || scenes::matchesNodePattern(o.name, p);
-        bool plane = s.second > 0.0 && s.thickness <= options.planarThickness * s.second;
-        if (plane) {  // large: each of its two long axes covers planarExtent of the model's
-            for (int a = 0; a < 3; ++a)
-                if (a != s.thinAxis && a != 1 && o.worldBounds.size()[a] < options.planarExtent * size[a]) plane = false;
-            if (s.thinAxis != 1 && o.worldBounds.size().y < options.planarExtent * size.y) plane = false;
-        }
-        if (named || plane) {
-            result.structure.push_back(o.name);
-            if (s.thinAxis != 1 && s.thickness <= 0.5 && o.worldBounds.size().y >= 0.3) {
-                const scenes::Bounds& b = o.worldBounds;
-                const int along = s.thinAxis == 0 ? 2 : 0;
-                pieces.push_back({s.thinAxis, b.centre()[s.thinAxis], b.min[along], b.max[along], b.min.y, b.max.y});
-            }
-            if (s.thinAxis == 1 && plane) {
-                // Horizontal: below the model's middle a floor (the lowest top wins), above a
-                // ceiling (the highest bottom wins).
-                if (o.worldBounds.centre().y < all.centre().y) floorTop = std::min(floorTop, o.worldBounds.max.y), floorBox.add(o.worldBounds);
-                else ceilingBottom = std::max(ceilingBottom, o.worldBounds.min.y);
-            } else if (plane) {
-                verticalPlanes.push_back(&o);
-            }
-            continue;
-        }
-        content.push_back(o.worldBounds);
-        contentTriangles.push_back(o.mesh >= 0 && o.mesh < static_cast<int>(scene.meshes.size())
-                                       ? scene.meshes[o.mesh].indices.size() / 3 : 0);
-    }
-    result.floorY = std::isfinite(floorTop) ? floorTop : all.min.y;
-    result.ceilingY = ceilingBottom > result.floorY + 1.0 ? ceilingBottom : all.max.y;
-    if (result.ceilingY <= result.floorY + 1e-3) result.ceilingY = result.floorY + 3.0;
-
-    // 2. Walkable rectangle: the floor planes', inside the hall walls.
-    const scenes::Bounds& floorArea = floorBox.empty() ? all : floorBox;
-    glm::dvec2 lo(floorArea.min.x, floorArea.min.z), hi(floorArea.max.x, floorArea.max.z);
-    for (const scenes::Object* o : verticalPlanes) {
-        const scenes::Bounds& b = o->worldBounds;
-        const int axis = shapeOf(b).thinAxis == 0 ? 0 : 2;  // the wall's normal axis (x or z)
-        const int k = axis == 0 ? 0 : 1;
-        const double c = b.centre()[axis];
-        if (c < 0.5 * (lo[k] + hi[k])) lo[k] = std::max(lo[k], b.max[axis]);
-        else hi[k] = std::min(hi[k], b.min[axis]);
-    }
-    if (hi.x - lo.x < 1e-3 || hi.y - lo.y < 1e-3) lo = {all.min.x, all.min.z}, hi = {all.max.x, all.max.z};
-    result.floorMin = lo;
-    result.floorMax = hi;
+    const std::vector<std::string> patterns = structurePatterns(base);
+    ModelParts parts = classifyObjects(scene, patterns, options, all);
+    setFloorAndCeiling(result, parts, all);
+    const Rect walkable = walkableRect(parts, all);
+    result.floorMin = walkable.lo;
+    result.floorMax = walkable.hi;
+    result.structure = std::move(parts.structure);
     std::sort(result.structure.begin(), result.structure.end());
     result.structure.erase(std::unique(result.structure.begin(), result.structure.end()), result.structure.end());
+    const scenes::SceneDescription named = withStructure(base, result.structure, patterns);
 
-    scenes::SceneDescription named = base;
-    if (!named.models.empty()) {
-        std::vector<std::string>& nodes = named.models.front().structureNodes;
-        for (const std::string& s : result.structure)
-            if (std::none_of(patterns.begin(), patterns.end(), [&](const std::string& p) { return scenes::matchesNodePattern(s, p); }))
-                nodes.push_back(s);
-    }
-
-    // 3-4. Candidates, cost and budget (6.: the walk cost's eyes).
+    // 3-5. Candidates, cost and budget (6.: the walk cost's eyes).
     const std::vector<glm::dvec3> eyes =
-        options.walkCost ? costEyes(base.walkPath, lo, hi, result.floorY + base.eyeHeight) : std::vector<glm::dvec3>{};
-    const int maxX = std::clamp(static_cast<int>((hi.x - lo.x) / options.minCellSize), 1, options.maxCellsPerAxis);
-    const int maxZ = std::clamp(static_cast<int>((hi.y - lo.y) / options.minCellSize), 1, options.maxCellsPerAxis);
-    std::vector<scenes::SceneDescription> descriptions;
-    for (int nx = 1; nx <= maxX; ++nx)
-        for (int nz = 1; nz <= maxZ; ++nz) {
-            Grid g{chooseCuts(lo.x, hi.x, nx, content, 0), chooseCuts(lo.y, hi.y, nz, content, 2)};
-            scenes::SceneDescription d = describe(named, g, result.floorY, result.ceilingY, base.eyeHeight);
-            scenes::validateSceneDescription(d, "auto walls");
-            AutoWallsCandidate c = evaluate(d, content, contentTriangles, options, eyes);
-            c.nx = nx, c.nz = nz;
-            result.candidates.push_back(c);
-            descriptions.push_back(std::move(d));
-            // More cells along z only add walls and textures: the rest of this row is over too.
-            if (!c.withinBudget) break;
-        }
-    // The rooms: a grid cut along the lines of real walls, its boundaries on them portals.
-    const std::vector<double> xLines = wallLines(pieces, 0, lo.x, hi.x, hi.y - lo.y, result.floorY);
-    const std::vector<double> zLines = wallLines(pieces, 2, lo.y, hi.y, hi.x - lo.x, result.floorY);
-    if (!xLines.empty() || !zLines.empty()) {
-        Grid g{{lo.x}, {lo.y}};
-        g.xs.insert(g.xs.end(), xLines.begin(), xLines.end());
-        g.zs.insert(g.zs.end(), zLines.begin(), zLines.end());
-        g.xs.push_back(hi.x);
-        g.zs.push_back(hi.y);
-        scenes::SceneDescription d = describe(named, g, result.floorY, result.ceilingY, base.eyeHeight);
-        makeRooms(d, pieces, result.floorY, result.ceilingY);
-        scenes::validateSceneDescription(d, "auto walls (rooms)");
-        AutoWallsCandidate c = evaluate(d, content, contentTriangles, options, eyes);
-        c.nx = static_cast<int>(g.xs.size()) - 1, c.nz = static_cast<int>(g.zs.size()) - 1;
-        c.rooms = true;
-        for (const scenes::VirtualWall& w : d.walls) ++(w.kind == scenes::WallKind::Portal ? c.portals : c.virtualWalls);
-        result.candidates.push_back(c);
-        descriptions.push_back(std::move(d));
-    }
-    for (std::size_t i = 1; i < result.candidates.size(); ++i) {
-        const AutoWallsCandidate& c = result.candidates[i];
-        const AutoWallsCandidate& best = result.candidates[result.chosen];
-        if (c.withinBudget && c.expectedMs < best.expectedMs) result.chosen = static_cast<int>(i);
-    }
-    if (options.preferRooms)
-        for (std::size_t i = 0; i < result.candidates.size(); ++i)
-            if (result.candidates[i].rooms && result.candidates[i].withinBudget) result.chosen = static_cast<int>(i);
-    result.description = std::move(descriptions[result.chosen]);
-    if (!base.walls.empty()) result.given = evaluate(base, content, contentTriangles, options, eyes);
+        options.walkCost ? costEyes(base.walkPath, walkable.lo, walkable.hi, result.floorY + base.eyeHeight)
+                         : std::vector<glm::dvec3>{};
+    const CandidateInputs in{named, parts, options, eyes, result.floorY, result.ceilingY, base.eyeHeight};
+    Proposals proposals;
+    addGrids(proposals, in, walkable);
+    addRooms(proposals, in, walkable);
+    result.candidates = std::move(proposals.candidates);
+    result.chosen = chooseCandidate(result.candidates, options.preferRooms);
+    result.description = std::move(proposals.descriptions[result.chosen]);
+    if (!base.walls.empty()) result.given = evaluate(base, parts.content, parts.contentTriangles, options, eyes);
     return result;
 }
 

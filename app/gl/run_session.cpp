@@ -119,33 +119,20 @@ walls::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scen
     return std::move(*setup);
 }
 
-}  // namespace
+// The walls the session draws: none in cluster mode, without walls or in a scene without them;
+// the plan alone for the control (no textures, nothing baked); planned and baked while walking
+// by `baker` (--bake-on-demand); or planned and baked now.
+std::optional<walls::WallSetup> sessionWalls(const RunOptions& o, const scenes::Scene& scene,
+                                             const scenes::SceneDescription& d, gl::Context& context,
+                                             app::Cluster* cluster, std::unique_ptr<gl::BackgroundBaker>& baker) {
+    if (!o.walls || o.clusters || d.walls.empty()) return std::nullopt;
+    if (!o.wallTextures)  // the control draws no texture: the plan alone, nothing baked
+        return walls::prepareWalls(scene, d, walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution));
+    if (o.bakeOnDemand) return prepareWallsOnDemand(o, scene, d, baker);
+    return prepareWallsOnce(o, scene, d, context, cluster);
+}
 
-RunSummary runSession(const RunOptions& o) {
-    const auto start = std::chrono::steady_clock::now();
-    auto since = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-    app::validate(o);
-    const display::Display display(o.display);
-    scenes::SceneDescription description;
-    const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description);
-    app::useRoute(description, o.route, o.scene.string());
-    const double sceneSeconds = since();
-    std::unique_ptr<app::Cluster> cluster = app::openCluster(o);
-    const int rank = cluster ? cluster->rank() : 0;
-    // Only rank 0 reads input (a network tracker binds its port once).
-    std::unique_ptr<app::RunInput> input = rank == 0 ? std::make_unique<app::RunInput>(o, scene, description) : nullptr;
-    if (input && !input->liveTrackerLine().empty()) std::cerr << "run: " << input->liveTrackerLine() << std::endl;
-    const auto context = makeContext(o, display);
-
-    std::optional<walls::WallSetup> setup;
-    std::unique_ptr<gl::BackgroundBaker> baker;  // --bake-on-demand; outlives the walkthrough
-    const bool wallsDrawn = o.walls && !o.clusters && !description.walls.empty();
-    if (wallsDrawn && !o.wallTextures)  // the control draws no texture: the plan alone, nothing baked
-        setup = walls::prepareWalls(scene, description, walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution));
-    else if (wallsDrawn && o.bakeOnDemand) setup = prepareWallsOnDemand(o, scene, description, baker);
-    else if (wallsDrawn) setup = prepareWallsOnce(o, scene, description, *context, cluster.get());
-    const int textureCount = setup ? static_cast<int>(setup->plan.textures.size()) : 0;
-    const double wallsSeconds = since();
+gl::WalkthroughOptions walkthroughOptions(const RunOptions& o, gl::BackgroundBaker* baker) {
     gl::WalkthroughOptions options;
     options.synchronousPaging = o.synchronousPaging;
     options.wallTextures = o.wallTextures;
@@ -153,7 +140,7 @@ RunSummary runSession(const RunOptions& o) {
     options.geometryBudgetMB = o.geometryBudgetMB;
     options.transition = o.transition;
     options.wallKind = o.wallKind;
-    options.baker = baker.get();
+    options.baker = baker;
     options.render.lodPixels = o.lodPixels;
     options.triangleBudget = o.triangleBudget;
     options.lodMaxPixels = std::max(o.lodMaxPixels, o.lodPixels);
@@ -165,77 +152,156 @@ RunSummary runSession(const RunOptions& o) {
         options.clusters.cache = o.cache ? *o.cache : gl::defaultCacheFolder();
         if (o.frameBudgetMs > 0.0) options.clusters.budgetMs = o.frameBudgetMs;
     }
-    const std::vector<int> screens = cluster ? config::screensOfRank(o.display, rank, cluster->size()) : std::vector<int>{};
-    gl::Walkthrough walkthrough(scene, description, display, *context, std::move(setup), options, screens);
+    return options;
+}
 
-    std::unique_ptr<RunOutput> output = rank == 0 ? std::make_unique<RunOutput>(o.out, description, display) : nullptr;
-    RunSummary summary;
-    summary.sceneSeconds = sceneSeconds, summary.wallsSeconds = wallsSeconds, summary.readySeconds = since();
-    summary.renderer = context->info().renderer;
+// What the walkthrough was made with: walls or not, the clusters' bake and costs, and the sizes
+// geometry paging is judged by (resident at most the largest three cells).
+void summarizeWalkthrough(const gl::Walkthrough& walkthrough, RunSummary& summary) {
+    summary.walls = walkthrough.hasWalls();
+    if (const render::ClusterModel* m = walkthrough.clusterModel()) {
+        const gl::ClusterBakeStats& b = *walkthrough.clusterBakeStats();
+        summary.clusters = b.clusters;
+        summary.clustersMade = b.made;
+        summary.clustersReused = b.reused;
+        summary.clustersSeconds = b.seconds;
+        summary.msPerTriangle = m->costs.msPerTriangle;
+        summary.msPerObject = m->costs.msPerObject;
+        summary.texturedBoxMs = m->costs.texturedBoxMs;
+        summary.averageBoxMs = m->costs.averageBoxMs;
+        summary.texturedViewMs = m->costs.texturedViewMs;
+        summary.averageViewMs = m->costs.averageViewMs;
+        summary.costResolution = walkthrough.clusterCostResolution();
+    }
+    const gl::GeometryYardsticks yardsticks = walkthrough.geometryYardsticks();
+    summary.largestThreeCellsMB = yardsticks.largestThreeCellsMB;
+    summary.modelGeometryMB = yardsticks.wholeModelMB;
+}
+
+// What the frame loop drives. Rank 0 alone has input and output.
+struct Session {
+    const RunOptions& o;
+    gl::Context& context;
+    app::RunInput* input = nullptr;        // rank 0
+    app::Cluster* cluster = nullptr;       // cluster mode
+    gl::BackgroundBaker* baker = nullptr;  // --bake-on-demand
+    gl::Walkthrough& walkthrough;
+    RunOutput* output = nullptr;           // rank 0
+    const std::vector<int>& screens;       // this rank's, cluster mode
+    std::chrono::steady_clock::time_point start;
+};
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Rank 0: frame i's saved images, and with clusters the diagram of what it drew from above
+// (Maciel & Shirley (1995), Figure D).
+void saveFrameImages(const Session& s, long i, const walls::FrameInput& in, walls::FrameResult& r,
+                     RunSummary& summary) {
+    summary.foldouts.push_back(s.output->saveImages(i, r.images));
+    if (s.walkthrough.hasClusters())
+        scenes::writeImage(summary.foldouts.back().parent_path() / "clusters.png",
+                           render::clusterDiagram(*s.walkthrough.clusterModel(), *s.walkthrough.lastClusterPlan(),
+                                                  r.eyeWorld));
+    if (s.o.keepSavedImages) summary.savedFrames.push_back({i, in.head.position, std::move(r.images)});
+}
+
+// Rank 0: writes frame i and adds it to the summary.
+void recordFrame(const Session& s, long i, const walls::FrameInput& in, walls::FrameResult& r, double syncMs,
+                 RunSummary& summary) {
+    s.output->writeFrame(i, in.time, in.head.position, r, syncMs);
+    if (in.readImages) saveFrameImages(s, i, in, r, summary);
+    summary.frameMs.push_back(r.frameMs);
+    summary.worstErrorDeg = std::max(summary.worstErrorDeg, r.maxErrorDeg);
+    summary.worstErrorPx = std::max(summary.worstErrorPx, r.maxErrorPixels);
+    summary.worstLodErrorPx = std::max(summary.worstLodErrorPx, r.lodErrorPx);
+    summary.misses = r.pager.misses;
+    summary.pageIns = r.pager.pageIns;
+    summary.geometryPeakMB = std::max(summary.geometryPeakMB, r.geometry.residentMB);
+    summary.geometryMisses = r.geometry.misses;
+    summary.geometryPageIns = r.geometry.pageIns;
+    summary.geometryForced += r.geometryForced;
+    if (s.o.verbose && (i + 1) % 60 == 0)
+        std::cout << "frame " << i + 1 << "/" << s.o.frames << ": " << r.frameMs << " ms\n" << std::flush;
+}
+
+// Draws the session's frames (until a window is closed), each held to the frame budget.
+void runFrames(const Session& s, RunSummary& summary) {
+    const RunOptions& o = s.o;
     // Levels of detail are held to the frame time by triangles (display/frame_budget.h),
     // clusters by predicted milliseconds (render/cluster_budget.h).
     std::optional<display::FrameTimeBudget> frameBudget;
     std::optional<render::ClusterBudget> clusterBudget;
     if (o.frameBudgetMs > 0.0 && !o.clusters) frameBudget.emplace(o.frameBudgetMs);
     if (o.frameBudgetMs > 0.0 && o.clusters) clusterBudget.emplace(o.frameBudgetMs);
-    summary.walls = walkthrough.hasWalls();
-    if (const render::ClusterModel* m = walkthrough.clusterModel()) {
-        const gl::ClusterBakeStats& b = *walkthrough.clusterBakeStats();
-        summary.clusters = b.clusters, summary.clustersMade = b.made, summary.clustersReused = b.reused;
-        summary.clustersSeconds = b.seconds;
-        summary.msPerTriangle = m->costs.msPerTriangle, summary.msPerObject = m->costs.msPerObject;
-        summary.texturedBoxMs = m->costs.texturedBoxMs, summary.averageBoxMs = m->costs.averageBoxMs;
-        summary.texturedViewMs = m->costs.texturedViewMs, summary.averageViewMs = m->costs.averageViewMs;
-        summary.costResolution = walkthrough.clusterCostResolution();
-    }
-    // The sizes geometry paging is judged by (issue 15: resident at most the largest three cells).
-    const gl::GeometryYardsticks yardsticks = walkthrough.geometryYardsticks();
-    summary.largestThreeCellsMB = yardsticks.largestThreeCellsMB;
-    summary.modelGeometryMB = yardsticks.wholeModelMB;
     for (long i = 0; i < o.frames; ++i) {
         const bool save = o.saveEvery > 0 && i % o.saveEvery == 0;
-        if (context->windowCount() > 0 && context->pollCloseRequested()) break;  // a window was closed
-        walls::FrameInput in = input ? input->next(i, save, context->takeInputEvents()) : walls::FrameInput{};
+        if (s.context.windowCount() > 0 && s.context.pollCloseRequested()) break;  // a window was closed
+        walls::FrameInput in = s.input ? s.input->next(i, save, s.context.takeInputEvents()) : walls::FrameInput{};
         if (frameBudget) in.triangleBudget = frameBudget->budget();
         if (clusterBudget) in.clusterBudgetMs = app::clusterBudgetFor(*clusterBudget);
-        double syncMs = cluster ? app::receiveFrame(*cluster, in) : 0.0;
-        if (baker && o.bakeInterleave > 0) baker->pause((i / o.bakeInterleave) % 2 == 1);
-        walls::FrameResult r = walkthrough.renderFrame(in);
-        if (i == 0) summary.firstFrameSeconds = since();
-        if (cluster) syncMs = app::combineFrame(*cluster, r, syncMs, screens);
+        double syncMs = s.cluster ? app::receiveFrame(*s.cluster, in) : 0.0;
+        if (s.baker && o.bakeInterleave > 0) s.baker->pause((i / o.bakeInterleave) % 2 == 1);
+        walls::FrameResult r = s.walkthrough.renderFrame(in);
+        if (i == 0) summary.firstFrameSeconds = secondsSince(s.start);
+        if (s.cluster) syncMs = app::combineFrame(*s.cluster, r, syncMs, s.screens);
         // Rank 0: the slowest rank's time.
         if (frameBudget) frameBudget->update(r.frameMs, r.geometryTriangles);
         if (clusterBudget) app::controlClusters(*clusterBudget, r);
-        if (!output) continue;
-        output->writeFrame(i, in.time, in.head.position, r, syncMs);
-        if (in.readImages) summary.foldouts.push_back(output->saveImages(i, r.images));
-        if (in.readImages && walkthrough.hasClusters())  // seed 004's Figure D: what the frame drew, from above
-            scenes::writeImage(summary.foldouts.back().parent_path() / "clusters.png",
-                               render::clusterDiagram(*walkthrough.clusterModel(), *walkthrough.lastClusterPlan(),
-                                                      r.eyeWorld));
-        if (in.readImages && o.keepSavedImages) summary.savedFrames.push_back({i, in.head.position, std::move(r.images)});
-        summary.frameMs.push_back(r.frameMs);
-        summary.worstErrorDeg = std::max(summary.worstErrorDeg, r.maxErrorDeg);
-        summary.worstErrorPx = std::max(summary.worstErrorPx, r.maxErrorPixels);
-        summary.worstLodErrorPx = std::max(summary.worstLodErrorPx, r.lodErrorPx);
-        summary.misses = r.pager.misses;
-        summary.pageIns = r.pager.pageIns;
-        summary.geometryPeakMB = std::max(summary.geometryPeakMB, r.geometry.residentMB);
-        summary.geometryMisses = r.geometry.misses;
-        summary.geometryPageIns = r.geometry.pageIns;
-        summary.geometryForced += r.geometryForced;
-        if (o.verbose && (i + 1) % 60 == 0)
-            std::cout << "frame " << i + 1 << "/" << o.frames << ": " << r.frameMs << " ms\n" << std::flush;
+        if (s.output) recordFrame(s, i, in, r, syncMs, summary);
     }
+}
+
+// --bake-on-demand: stops the baker (the bake in progress finishes and is counted) and adds
+// its figures to the summary.
+void summarizeBaker(gl::BackgroundBaker& baker, RunSummary& summary) {
+    baker.stop();
+    const gl::BackgroundBakeStats b = baker.stats();
+    summary.texturesMissingAtStart = b.missingAtStart;
+    summary.texturesBaked = b.baked;
+    summary.texturesStillMissing = b.missing;
+    summary.cacheEvictions = b.evictions;
+    summary.cacheMB = b.cacheMB;
+    summary.bakeWarnings = b.warnings;
+}
+
+}  // namespace
+
+RunSummary runSession(const RunOptions& o) {
+    const auto start = std::chrono::steady_clock::now();
+    app::validate(o);
+    const display::Display display(o.display);
+    scenes::SceneDescription description;
+    const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description);
+    app::useRoute(description, o.route, o.scene.string());
+    RunSummary summary;
+    summary.sceneSeconds = secondsSince(start);
+    std::unique_ptr<app::Cluster> cluster = app::openCluster(o);
+    const int rank = cluster ? cluster->rank() : 0;
+    // Only rank 0 reads input (a network tracker binds its port once).
+    std::unique_ptr<app::RunInput> input = rank == 0 ? std::make_unique<app::RunInput>(o, scene, description) : nullptr;
+    if (input && !input->liveTrackerLine().empty()) std::cerr << "run: " << input->liveTrackerLine() << std::endl;
+    const auto context = makeContext(o, display);
+
+    std::unique_ptr<gl::BackgroundBaker> baker;  // --bake-on-demand; outlives the walkthrough
+    std::optional<walls::WallSetup> setup = sessionWalls(o, scene, description, *context, cluster.get(), baker);
+    summary.textures = setup ? static_cast<int>(setup->plan.textures.size()) : 0;
+    summary.wallsSeconds = secondsSince(start);
+    const std::vector<int> screens = cluster ? config::screensOfRank(o.display, rank, cluster->size()) : std::vector<int>{};
+    gl::Walkthrough walkthrough(scene, description, display, *context, std::move(setup),
+                                walkthroughOptions(o, baker.get()), screens);
+
+    std::unique_ptr<RunOutput> output = rank == 0 ? std::make_unique<RunOutput>(o.out, description, display) : nullptr;
+    summary.readySeconds = secondsSince(start);
+    summary.renderer = context->info().renderer;
+    summarizeWalkthrough(walkthrough, summary);
+    const Session session{.o = o, .context = *context, .input = input.get(), .cluster = cluster.get(),
+                          .baker = baker.get(), .walkthrough = walkthrough, .output = output.get(), .screens = screens,
+                          .start = start};
+    runFrames(session, summary);
     if (output) output->close();
-    if (baker) {
-        baker->stop();  // the bake in progress finishes and is counted
-        const gl::BackgroundBakeStats b = baker->stats();
-        summary.texturesMissingAtStart = b.missingAtStart, summary.texturesBaked = b.baked;
-        summary.texturesStillMissing = b.missing, summary.cacheEvictions = b.evictions, summary.cacheMB = b.cacheMB;
-        summary.bakeWarnings = b.warnings;
-    }
-    summary.textures = textureCount;
+    if (baker) summarizeBaker(*baker, summary);
     summary.rank = rank;
     return summary;
 }

@@ -68,16 +68,24 @@ ModeResult namedMode(Mode mode, double lodPixels = 0.0) {
     return m;
 }
 
-ModeResult wallsMode(double alphaDeg, app::Transition transition, bool paged, double lodPixels,
-                     std::size_t triangleBudget, double frameBudgetMs) {
+// A walls mode's settings besides its alpha (ModeResult's fields of the same names).
+struct WallsModeOptions {
+    app::Transition transition = app::Transition::Blend;
+    bool paged = false;              // paged from a cold start, as `cavewall run` pages
+    double lodPixels = 0.0;          // level-of-detail tolerance; 0: full detail
+    std::size_t triangleBudget = 0;  // 0: none
+    double frameBudgetMs = 0.0;      // the frame-time controller's target; 0: none
+};
+
+ModeResult wallsMode(double alphaDeg, const WallsModeOptions& options = {}) {
     ModeResult m;
-    m.frameBudgetMs = frameBudgetMs;
+    m.frameBudgetMs = options.frameBudgetMs;
     m.mode = Mode::Walls;
     m.alphaDeg = alphaDeg;
-    m.transition = transition;
-    m.paged = paged;
-    m.lodPixels = lodPixels;
-    m.triangleBudget = triangleBudget;
+    m.transition = options.transition;
+    m.paged = options.paged;
+    m.lodPixels = options.lodPixels;
+    m.triangleBudget = options.triangleBudget;
     return m;
 }
 
@@ -208,6 +216,290 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                               : "lod: off (--lod 0)"};
 }
 
+// The checks that need no file: they fail before anything is loaded.
+void checkOptions(const BenchOptions& o) {
+    if (o.compareEvery < 1) throw Error("bench: compareEvery: expected at least 1, got " + std::to_string(o.compareEvery));
+    if (o.alphasDeg.empty()) throw Error("bench: expected at least one alpha for the walls modes, got none");
+    if (o.frames < 1) throw Error("--frames: expected at least 1, got " + std::to_string(o.frames));
+    for (double budget : o.clusterBudgetsMs)
+        if (!(budget > 0.0 && std::isfinite(budget)))
+            throw Error("bench: cluster budgets: expected milliseconds > 0, got " + config::formatNumber(budget));
+    if (std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg) == o.alphasDeg.end())
+        throw Error("bench: the warp alpha " + config::formatNumber(o.transitionAlphaDeg) +
+                    " is not one of the planned alphas");
+}
+
+// The compare scenes, each checked against `scene` (the same model) and the others' labels.
+std::vector<std::unique_ptr<CompareScene>> loadCompareScenes(const BenchOptions& o, const scenes::Scene& scene) {
+    std::vector<std::unique_ptr<CompareScene>> others;
+    for (std::size_t i = 0; i < o.compareScenes.size(); ++i) {
+        for (std::size_t k = 0; k < i; ++k)
+            if (o.compareScenes[k].tag == o.compareScenes[i].tag)
+                throw Error("--compare-scene: expected scenes whose labels differ, got '" + o.compareScenes[i].tag +
+                            "' for " + o.compareScenes[k].scene.string() + " and " + o.compareScenes[i].scene.string());
+        others.push_back(loadCompareScene(o, o.compareScenes[i], scene));
+    }
+    return others;
+}
+
+void checkOnDemand(const BenchOptions& o) {
+    if (!o.onDemandCache) return;
+    if (o.wallKind != walls::WallKind::Flat)
+        throw Error("--on-demand: baking on demand draws flat walls only, got --walls depth");
+    checkPrivateCache(*o.onDemandCache, o.cache ? *o.cache : defaultCacheFolder());
+}
+
+// Plans and bakes the bench scene's walls at every alpha, with a header line for each.
+std::vector<BakedWalls> bakeOwnWalls(const BenchOptions& o, const scenes::Scene& scene,
+                                     const scenes::SceneDescription& description, gl::Context& context,
+                                     BenchReport& report) {
+    std::vector<BakedWalls> baked;
+    for (double alpha : o.alphasDeg) {
+        say(o, "bench: plan and bake walls at a=" + config::formatNumber(alpha) + " deg");
+        baked.push_back(bakeWalls(o, o.scene, alpha, scene, description, context));
+        say(o, "bench: " + baked.back().summary);
+        report.header.push_back("bake " + baked.back().summary);
+    }
+    return baked;
+}
+
+// How a mode is run. The phases run in this order, each mode of a phase in the report's order.
+enum class Phase {
+    Interleaved,  // full geometry, the walls and clusters modes: frame by frame in turn (the same seconds)
+    Cells,        // cells, cells+layer and near: frame by frame in turn
+    CellsLod,     // near with levels of detail, alone
+    Paged,        // the walls paged as `cavewall run` pages, alone
+    OnDemand,     // the walls baked on demand from an empty cache, alone
+};
+
+// One mode of the report, in the report's order, and how it is run.
+struct BenchMode {
+    Phase phase = Phase::Interleaved;
+    ModeResult mode{};                        // what it is: ModeAccumulator's mode (textures included)
+    std::optional<std::size_t> alphaIndex{};  // walls modes: the walls baked at alphasDeg[*alphaIndex]
+    std::optional<std::size_t> compare{};     // the compare scene it draws (index); none: the bench scene's
+    std::optional<std::size_t> budgetFrom{};  // its triangle budget: that mode's median (index into the table)
+    CellDraw draw = CellDraw::Cells;          // the cell phases'
+    std::optional<ModeResult> result{};       // once its phase has run
+};
+
+// What the phases run with; `reference` and `fullP50` come from the interleaved phase.
+struct Bench {
+    const BenchOptions& o;
+    const display::Display& display;
+    const ModeContext& c;
+    const std::vector<BakedWalls>& baked;                    // per alpha
+    const std::vector<std::vector<BakedWalls>>& otherBaked;  // per compare scene, per alpha
+    const std::vector<std::unique_ptr<CompareScene>>& others;
+    std::size_t transitionIndex = 0;                         // of transitionAlphaDeg in alphasDeg
+    ReferenceImages reference{};
+    double fullP50 = 0.0;                                    // full geometry's (the reference's) median ms
+};
+
+// A walls mode at alphasDeg[alphaIndex] of the bench scene or of compare scene `compare`, with
+// the textures of its walls.
+BenchMode wallsAt(const Bench& b, std::size_t alphaIndex, const WallsModeOptions& options,
+                  std::optional<std::size_t> compare = std::nullopt, Phase phase = Phase::Interleaved) {
+    BenchMode m{.phase = phase, .mode = wallsMode(b.o.alphasDeg[alphaIndex], options), .alphaIndex = alphaIndex,
+                .compare = compare};
+    const BakedWalls& walls = compare ? b.otherBaked[*compare][alphaIndex] : b.baked[alphaIndex];
+    m.mode.textures = static_cast<int>(walls.setup.plan.textures.size());
+    m.mode.texels = walls.texels;
+    m.mode.diskMB = walls.diskMB;
+    if (compare) m.mode.sceneTag = b.o.compareScenes[*compare].tag;
+    return m;
+}
+
+// The walls modes at every alpha, interleaved; returns their indices in `table`.
+std::vector<std::size_t> addWallsModes(std::vector<BenchMode>& table, const Bench& b, const WallsModeOptions& options,
+                                       std::optional<std::size_t> compare = std::nullopt) {
+    std::vector<std::size_t> added;
+    for (std::size_t i = 0; i < b.baked.size(); ++i) {
+        added.push_back(table.size());
+        table.push_back(wallsAt(b, i, options, compare));
+    }
+    return added;
+}
+
+BenchMode cellMode(Phase phase, CellDraw draw, double lodPixels) {
+    const Mode mode = draw == CellDraw::Near ? Mode::Near : draw == CellDraw::Cells ? Mode::Cells : Mode::CellsLayer;
+    return {.phase = phase, .mode = namedMode(mode, lodPixels), .draw = draw};
+}
+
+// The walls modes with levels of detail under a triangle budget (by default the median of the
+// same mode without one, `lodModes`), then under the frame-time controller.
+void addBudgetModes(std::vector<BenchMode>& table, const Bench& b, const std::vector<std::size_t>& lodModes) {
+    const BenchOptions& o = b.o;
+    for (std::size_t i = 0; i < b.baked.size(); ++i) {
+        table.push_back(wallsAt(b, i, {.lodPixels = o.lodPixels, .triangleBudget = o.triangleBudget}));
+        if (o.triangleBudget == 0) table.back().budgetFrom = lodModes[i];
+    }
+    if (o.frameBudgetMs > 0.0) addWallsModes(table, b, {.lodPixels = o.lodPixels, .frameBudgetMs = o.frameBudgetMs});
+}
+
+// The clusters modes: one per budget, by default one at the frame budget (60 Hz without one).
+void addClusterModes(std::vector<BenchMode>& table, const BenchOptions& o) {
+    std::vector<double> budgets = o.clusterBudgetsMs;
+    if (budgets.empty()) budgets.push_back(o.frameBudgetMs > 0.0 ? o.frameBudgetMs : 1000.0 / 60.0);
+    for (double budget : budgets) {
+        ModeResult m;
+        m.mode = Mode::Clusters;
+        m.frameBudgetMs = budget;
+        table.push_back({.mode = m});
+    }
+}
+
+// Every mode of the bench in the report's order: full geometry, the cell modes, the walls
+// modes, the paged and on-demand modes, then the budgeted, clusters and compare scenes' modes.
+std::vector<BenchMode> planModes(const Bench& b) {
+    const BenchOptions& o = b.o;
+    const bool lod = o.lodPixels > 0.0;
+    std::vector<BenchMode> table;
+    table.push_back({.mode = namedMode(Mode::Full)});  // the reference
+    if (lod) table.push_back({.mode = namedMode(Mode::Full, o.lodPixels)});
+    for (CellDraw draw : {CellDraw::Cells, CellDraw::CellsLayer, CellDraw::Near})
+        table.push_back(cellMode(Phase::Cells, draw, 0.0));
+    if (lod) table.push_back(cellMode(Phase::CellsLod, CellDraw::Near, o.lodPixels));
+    addWallsModes(table, b, {});
+    const std::vector<std::size_t> lodModes = lod ? addWallsModes(table, b, {.lodPixels = o.lodPixels})
+                                                  : std::vector<std::size_t>{};
+    table.push_back(wallsAt(b, b.transitionIndex, {.transition = app::Transition::Warp}));
+    table.push_back(wallsAt(b, b.transitionIndex, {.paged = true}, std::nullopt, Phase::Paged));
+    if (o.onDemandCache) table.push_back({.phase = Phase::OnDemand, .mode = wallsMode(o.transitionAlphaDeg)});
+    if (lod) addBudgetModes(table, b, lodModes);
+    if (o.clusters) addClusterModes(table, o);
+    for (std::size_t k = 0; k < b.others.size(); ++k) {  // the compare scenes', after all the bench scene's
+        addWallsModes(table, b, {}, k);
+        if (lod) addWallsModes(table, b, {.lodPixels = o.lodPixels}, k);
+    }
+    return table;
+}
+
+// The walkthrough run of walls, transition and paging that `m` says.
+WalkRun walkRunOf(const Bench& b, const BenchMode& m, ModeAccumulator* acc) {
+    WalkRun run;
+    const std::vector<BakedWalls>& from = m.compare ? b.otherBaked[*m.compare] : b.baked;
+    if (m.alphaIndex) run.walls = from[*m.alphaIndex].setup;
+    if (m.compare) {
+        run.scene = &b.others[*m.compare]->scene;
+        run.description = &b.others[*m.compare]->description;
+    }
+    run.acc = acc;
+    run.transition = m.mode.transition.value_or(app::Transition::Blend);
+    run.paged = m.mode.paged;
+    run.clusters = m.mode.mode == Mode::Clusters;
+    return run;
+}
+
+// The table's modes of `phase`, in order.
+std::vector<std::size_t> modesOf(const std::vector<BenchMode>& table, Phase phase) {
+    std::vector<std::size_t> modes;
+    for (std::size_t i = 0; i < table.size(); ++i)
+        if (table[i].phase == phase) modes.push_back(i);
+    return modes;
+}
+
+// Runs the walkthrough modes of `phase` (Interleaved or Paged) frame by frame in turn; the
+// table's first mode (full geometry) is the reference of images and speed-ups. Returns their
+// labels.
+std::string runWalkPhase(std::vector<BenchMode>& table, Phase phase, Bench& b) {
+    const std::vector<std::size_t> modes = modesOf(table, phase);
+    std::vector<std::unique_ptr<ModeAccumulator>> accs;  // stable addresses for the runs
+    std::vector<WalkRun> runs;
+    std::vector<int> runOf(table.size(), -1);
+    std::string names;
+    for (std::size_t i : modes) {
+        accs.push_back(std::make_unique<ModeAccumulator>(table[i].mode, b.display));
+        WalkRun run = walkRunOf(b, table[i], accs.back().get());
+        run.storeReference = i == 0;
+        if (table[i].budgetFrom) run.budgetFrom = runOf[*table[i].budgetFrom];
+        runOf[i] = static_cast<int>(runs.size());
+        runs.push_back(std::move(run));
+        names += (names.empty() ? "" : ", ") + modeLabel(accs.back()->mode());
+    }
+    say(b.o, "bench: " + names + (modes.size() > 1 ? ", frame by frame in turn" : ""));
+    runWalkthroughModes(b.c, runs, b.reference);
+    for (std::size_t k = 0; k < modes.size(); ++k) {
+        const bool reference = modes[k] == 0;  // no speed-up
+        table[modes[k]].result = accs[k]->finish(reference ? 0.0 : b.fullP50);
+        if (reference) b.fullP50 = table[modes[k]].result->frameMs.p50;
+    }
+    return names;
+}
+
+// Runs the cell modes of `phase` (Cells or CellsLod) frame by frame in turn, with the selection
+// of the walls at transitionAlphaDeg.
+void runCellPhase(std::vector<BenchMode>& table, Phase phase, Bench& b) {
+    const std::vector<std::size_t> modes = modesOf(table, phase);
+    if (modes.empty()) return;
+    std::vector<ModeAccumulator> accs;
+    accs.reserve(modes.size());
+    std::vector<CellRun> runs;
+    std::string names;
+    for (std::size_t i : modes) {
+        accs.emplace_back(table[i].mode, b.display);
+        runs.push_back({table[i].draw, &accs.back()});
+        names += (names.empty() ? "" : ", ") + modeLabel(accs.back().mode());
+    }
+    say(b.o, "bench: " + names + (modes.size() > 1 ? ", frame by frame in turn" : ""));
+    runCellModes(b.c, b.baked[b.transitionIndex].setup, runs, b.reference);
+    for (std::size_t k = 0; k < modes.size(); ++k) table[modes[k]].result = accs[k].finish(b.fullP50);
+}
+
+// Runs the on-demand mode (when there is one), with its header line.
+void runOnDemandPhase(std::vector<BenchMode>& table, Bench& b, BenchReport& report) {
+    const BenchOptions& o = b.o;
+    for (std::size_t i : modesOf(table, Phase::OnDemand)) {
+        say(o, "bench: walls a=" + config::formatNumber(o.transitionAlphaDeg) + " blend on demand, from an empty cache " +
+                   o.onDemandCache->string());
+        table[i].result = onDemandMode(o, o.transitionAlphaDeg, b.c, b.reference, b.fullP50);
+        report.header.push_back("on demand: walls at alpha " + config::formatNumber(o.transitionAlphaDeg) +
+                                " baked while walking (background baker at nice 10, as `cavewall run "
+                                "--bake-on-demand`) from an empty private cache " + o.onDemandCache->string() +
+                                ", alone after the paged mode; the first path frame drawn once first (first frame "
+                                "after the scene's load: planning, keying the cache, the walkthrough, that frame), then "
+                                "every path frame timed");
+    }
+}
+
+// The noise floor of p99/p50 on this machine, beside a walls mode's, in the same seconds: the
+// budget mode at the last alpha, or the paged one (the clusters mode, listed after them, is not
+// a walls mode).
+void addNoiseFloor(BenchReport& report, const Bench& b) {
+    ModeResult last = *std::find_if(report.modes.rbegin(), report.modes.rend(), [](const ModeResult& m) {
+        return m.mode == Mode::Walls && m.sceneTag.empty() && !m.onDemand;
+    });
+    last.paged = false;  // drawn with every texture resident, also after the paged mode
+    say(b.o, "bench: noise floor, " + modeLabel(last) + " interleaved with one of its frames");
+    const long middle = static_cast<long>(b.c.path.frames.size() / 2);
+    const std::size_t alpha = b.o.lodPixels > 0.0 ? b.baked.size() - 1 : b.transitionIndex;
+    const NoiseComparison n = interleavedNoise(b.c, b.baked[alpha].setup, last, middle);
+    auto ratio = [](const TimeStats& t) { return fixed(t.p50 > 0 ? t.p99 / t.p50 : 0.0, 2); };
+    report.noiseFloorRatio = n.repeated.p50 > 0 ? n.repeated.p99 / n.repeated.p50 : 0.0;
+    report.noiseFloorP95Ratio = n.repeated.p50 > 0 ? n.repeated.p95 / n.repeated.p50 : 0.0;
+    report.header.push_back(
+        "noise floor: " + modeLabel(last) + " along the path, each frame followed by frame " +
+        std::to_string(middle) + " again: the path's frames p50 " + fixed(n.path.p50, 2) + " ms, p99/p50 " +
+        ratio(n.path) + "; the repeated frame (the same work every time) p50 " + fixed(n.repeated.p50, 2) +
+        " ms, p99/p50 " + ratio(n.repeated) + ": what the repeated frame shows is the machine's noise, not the "
+        "renderer's");
+}
+
+// Runs every phase of `table` and adds the modes to `report` in the table's order.
+void runModes(std::vector<BenchMode>& table, Bench& b, BenchReport& report) {
+    const std::string names = runWalkPhase(table, Phase::Interleaved, b);
+    report.header.push_back("drawn frame by frame in turn (the same seconds): " + names +
+                            "; then cells, cells+layer and near in turn; then the paged mode alone" +
+                            (b.o.onDemandCache ? "; then the on-demand mode alone" : ""));
+    // The control, the control plus one textured layer and the limit in the same seconds: the
+    // wall pass's target compares them.
+    runCellPhase(table, Phase::Cells, b);
+    runCellPhase(table, Phase::CellsLod, b);
+    runWalkPhase(table, Phase::Paged, b);
+    runOnDemandPhase(table, b, report);
+    for (BenchMode& m : table) report.modes.push_back(std::move(*m.result));
+}
+
 }  // namespace
 
 config::DisplayConfig withResolution(config::DisplayConfig display, int pixels) {
@@ -220,15 +512,7 @@ config::DisplayConfig withResolution(config::DisplayConfig display, int pixels) 
 }
 
 BenchReport runBenchmark(const BenchOptions& o) {
-    if (o.compareEvery < 1) throw Error("bench: compareEvery: expected at least 1, got " + std::to_string(o.compareEvery));
-    if (o.alphasDeg.empty()) throw Error("bench: expected at least one alpha for the walls modes, got none");
-    if (o.frames < 1) throw Error("--frames: expected at least 1, got " + std::to_string(o.frames));
-    for (double budget : o.clusterBudgetsMs)
-        if (!(budget > 0.0 && std::isfinite(budget)))
-            throw Error("bench: cluster budgets: expected milliseconds > 0, got " + config::formatNumber(budget));
-    if (std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg) == o.alphasDeg.end())
-        throw Error("bench: the warp alpha " + config::formatNumber(o.transitionAlphaDeg) +
-                    " is not one of the planned alphas");
+    checkOptions(o);
     const auto start = std::chrono::steady_clock::now();
     const display::Display display(o.display);
     scenes::SceneDescription description;
@@ -236,19 +520,8 @@ BenchReport runBenchmark(const BenchOptions& o) {
     app::useRoute(description, o.route, o.scene.string());
     if (description.walls.empty()) throw Error(o.scene.string() + ": the scene has no virtual walls (expected at least 1 to bench)");
     // Checked before anything is baked: a bad compare scene or cache folder fails at once.
-    std::vector<std::unique_ptr<CompareScene>> others;
-    for (std::size_t i = 0; i < o.compareScenes.size(); ++i) {
-        for (std::size_t k = 0; k < i; ++k)
-            if (o.compareScenes[k].tag == o.compareScenes[i].tag)
-                throw Error("--compare-scene: expected scenes whose labels differ, got '" + o.compareScenes[i].tag +
-                            "' for " + o.compareScenes[k].scene.string() + " and " + o.compareScenes[i].scene.string());
-        others.push_back(loadCompareScene(o, o.compareScenes[i], scene));
-    }
-    if (o.onDemandCache) {
-        if (o.wallKind != walls::WallKind::Flat)
-            throw Error("--on-demand: baking on demand draws flat walls only, got --walls depth");
-        checkPrivateCache(*o.onDemandCache, o.cache ? *o.cache : defaultCacheFolder());
-    }
+    const std::vector<std::unique_ptr<CompareScene>> others = loadCompareScenes(o, scene);
+    checkOnDemand(o);
     bench::EyePath path = bench::recordEyePath(scene, description, o.display, o.tracker, o.frames);
     if (o.route == app::Route::Wall)
         path.description += " (--route wall: the scene's wallPath, which hugs the virtual walls, as its walkPath)";
@@ -261,173 +534,17 @@ BenchReport runBenchmark(const BenchOptions& o) {
     const ModeContext c{scene, description, display, *context, path, o.compareEvery, o.lodMaxPixels, o.wallKind,
                         o.clusters ? (o.cache ? *o.cache : defaultCacheFolder()) : std::filesystem::path()};
 
-    const bool lod = o.lodPixels > 0.0;
-    std::vector<BakedWalls> baked;
-    for (double alpha : o.alphasDeg) {
-        say(o, "bench: plan and bake walls at a=" + config::formatNumber(alpha) + " deg");
-        baked.push_back(bakeWalls(o, o.scene, alpha, scene, description, *context));
-        say(o, "bench: " + baked.back().summary);
-        report.header.push_back("bake " + baked.back().summary);
-    }
+    const std::vector<BakedWalls> baked = bakeOwnWalls(o, scene, description, *context, report);
     const std::vector<std::vector<BakedWalls>> otherBaked = bakeCompareScenes(o, others, description, *context, report);
-    const auto listed = std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg);
-    const std::size_t transitionIndex = listed - o.alphasDeg.begin();  // listed: checked on entry
-
-    // Full geometry (the reference) and every walls mode but the paged one, frame by frame in
-    // turn: their speed-ups are ratios of times taken in the same seconds.
-    std::vector<std::unique_ptr<ModeAccumulator>> accs;  // stable addresses for the runs
-    std::vector<WalkRun> runs;
-    auto addRun = [&](ModeResult mode, std::optional<std::size_t> wallsIndex, app::Transition transition,
-                      int budgetFrom = -1, int compare = -1) {
-        const std::vector<BakedWalls>& from = compare >= 0 ? otherBaked[compare] : baked;
-        if (wallsIndex) {
-            mode.textures = static_cast<int>(from[*wallsIndex].setup.plan.textures.size());
-            mode.texels = from[*wallsIndex].texels;
-            mode.diskMB = from[*wallsIndex].diskMB;
-        }
-        if (compare >= 0) mode.sceneTag = o.compareScenes[compare].tag;
-        accs.push_back(std::make_unique<ModeAccumulator>(mode, display));
-        WalkRun run;
-        if (wallsIndex) run.walls = from[*wallsIndex].setup;
-        if (compare >= 0) run.scene = &others[compare]->scene, run.description = &others[compare]->description;
-        run.acc = accs.back().get();
-        run.transition = transition;
-        run.storeReference = runs.empty();
-        run.budgetFrom = budgetFrom;
-        runs.push_back(std::move(run));
-        return static_cast<int>(runs.size()) - 1;
-    };
-    addRun(namedMode(Mode::Full), std::nullopt, app::Transition::Blend);
-    if (lod) addRun(namedMode(Mode::Full, o.lodPixels), std::nullopt, app::Transition::Blend);
-    for (std::size_t i = 0; i < baked.size(); ++i)
-        addRun(wallsMode(o.alphasDeg[i], app::Transition::Blend, false, 0.0, 0, 0.0), i, app::Transition::Blend);
-    std::vector<int> lodRun(baked.size(), -1);
-    if (lod)
-        for (std::size_t i = 0; i < baked.size(); ++i)
-            lodRun[i] = addRun(wallsMode(o.alphasDeg[i], app::Transition::Blend, false, o.lodPixels, 0, 0.0), i,
-                               app::Transition::Blend);
-    addRun(wallsMode(o.alphasDeg[transitionIndex], app::Transition::Warp, false, 0.0, 0, 0.0), transitionIndex,
-           app::Transition::Warp);
-    if (lod)
-        for (std::size_t i = 0; i < baked.size(); ++i)  // budget: the median of the same mode without one
-            addRun(wallsMode(o.alphasDeg[i], app::Transition::Blend, false, o.lodPixels, o.triangleBudget, 0.0), i,
-                   app::Transition::Blend, o.triangleBudget == 0 ? lodRun[i] : -1);
-    if (lod && o.frameBudgetMs > 0.0)
-        for (std::size_t i = 0; i < baked.size(); ++i)
-            addRun(wallsMode(o.alphasDeg[i], app::Transition::Blend, false, o.lodPixels, 0, o.frameBudgetMs), i,
-                   app::Transition::Blend);
-    if (o.clusters) {
-        std::vector<double> budgets = o.clusterBudgetsMs;
-        if (budgets.empty()) budgets.push_back(o.frameBudgetMs > 0.0 ? o.frameBudgetMs : 1000.0 / 60.0);
-        for (double budget : budgets) {
-            ModeResult m;
-            m.mode = Mode::Clusters;
-            m.frameBudgetMs = budget;
-            runs[addRun(m, std::nullopt, app::Transition::Blend)].clusters = true;
-        }
-    }
-    for (std::size_t k = 0; k < others.size(); ++k) {  // the compare scenes', after all the bench scene's
-        const int compare = static_cast<int>(k);
-        for (std::size_t i = 0; i < baked.size(); ++i)
-            addRun(wallsMode(o.alphasDeg[i], app::Transition::Blend, false, 0.0, 0, 0.0), i, app::Transition::Blend, -1,
-                   compare);
-        if (lod)
-            for (std::size_t i = 0; i < baked.size(); ++i)
-                addRun(wallsMode(o.alphasDeg[i], app::Transition::Blend, false, o.lodPixels, 0, 0.0), i,
-                       app::Transition::Blend, -1, compare);
-    }
-    std::string names;
-    for (const auto& acc : accs) names += (names.empty() ? "" : ", ") + modeLabel(acc->mode());
-    say(o, "bench: " + names + ", frame by frame in turn");
-    ReferenceImages reference;
-    runWalkthroughModes(c, runs, reference);
-    std::vector<ModeResult> interleaved{accs.front()->finish(0.0)};  // the reference: no speed-up
-    const double fullP50 = interleaved.front().frameMs.p50;
-    for (std::size_t i = 1; i < accs.size(); ++i) interleaved.push_back(accs[i]->finish(fullP50));
-    report.header.push_back("drawn frame by frame in turn (the same seconds): " + names +
-                            "; then cells, cells+layer and near in turn; then the paged mode alone" +
-                            (o.onDemandCache ? "; then the on-demand mode alone" : ""));
-
-    const walls::WallSetup& cellPlan = baked[transitionIndex].setup;
-    std::vector<ModeResult> cellModes;
-    auto runCells = [&](std::vector<CellDraw> kinds, double lodPixels) {
-        std::vector<ModeAccumulator> cellAccs;
-        cellAccs.reserve(kinds.size());
-        std::vector<CellRun> cellRuns;
-        std::string cellNames;
-        for (CellDraw kind : kinds) {
-            const Mode mode = kind == CellDraw::Near ? Mode::Near : kind == CellDraw::Cells ? Mode::Cells : Mode::CellsLayer;
-            cellAccs.emplace_back(namedMode(mode, lodPixels), display);
-            cellRuns.push_back({kind, &cellAccs.back()});
-            cellNames += (cellNames.empty() ? "" : ", ") + modeLabel(cellAccs.back().mode());
-        }
-        say(o, "bench: " + cellNames + (kinds.size() > 1 ? ", frame by frame in turn" : ""));
-        runCellModes(c, cellPlan, cellRuns, reference);
-        for (const ModeAccumulator& acc : cellAccs) cellModes.push_back(acc.finish(fullP50));
-    };
-    // The control, the control plus one textured layer and the limit in the same seconds: the
-    // wall pass's target compares them.
-    runCells({CellDraw::Cells, CellDraw::CellsLayer, CellDraw::Near}, 0.0);
-    if (lod) runCells({CellDraw::Near}, o.lodPixels);
-
-    ModeResult pagedMode = wallsMode(o.alphasDeg[transitionIndex], app::Transition::Blend, true, 0.0, 0, 0.0);
-    pagedMode.textures = static_cast<int>(baked[transitionIndex].setup.plan.textures.size());
-    pagedMode.texels = baked[transitionIndex].texels;
-    pagedMode.diskMB = baked[transitionIndex].diskMB;
-    say(o, "bench: " + modeLabel(pagedMode));
-    ModeAccumulator pagedAcc(pagedMode, display);
-    std::vector<WalkRun> paged(1);
-    paged[0].walls = baked[transitionIndex].setup;
-    paged[0].acc = &pagedAcc;
-    paged[0].paged = true;
-    runWalkthroughModes(c, paged, reference);
-    std::optional<ModeResult> onDemand;
-    if (o.onDemandCache) {
-        say(o, "bench: walls a=" + config::formatNumber(o.transitionAlphaDeg) + " blend on demand, from an empty cache " +
-                   o.onDemandCache->string());
-        onDemand = onDemandMode(o, o.transitionAlphaDeg, c, reference, fullP50);
-        report.header.push_back("on demand: walls at alpha " + config::formatNumber(o.transitionAlphaDeg) +
-                                " baked while walking (background baker at nice 10, as `cavewall run "
-                                "--bake-on-demand`) from an empty private cache " + o.onDemandCache->string() +
-                                ", alone after the paged mode; the first path frame drawn once first (first frame "
-                                "after the scene's load: planning, keying the cache, the walkthrough, that frame), then "
-                                "every path frame timed");
-    }
-
-    // The report in its usual order: full geometry, the cell modes, then the walls modes.
-    const std::size_t fullModes = lod ? 2 : 1;
-    report.modes.assign(interleaved.begin(), interleaved.begin() + static_cast<long>(fullModes));
-    report.modes.insert(report.modes.end(), cellModes.begin(), cellModes.end());
-    const std::size_t beforePaged = fullModes + baked.size() * (lod ? 2 : 1) + 1;  // blend, lod, warp
-    report.modes.insert(report.modes.end(), interleaved.begin() + static_cast<long>(fullModes),
-                        interleaved.begin() + static_cast<long>(beforePaged));
-    report.modes.push_back(pagedAcc.finish(fullP50));
-    if (onDemand) report.modes.push_back(std::move(*onDemand));
-    report.modes.insert(report.modes.end(), interleaved.begin() + static_cast<long>(beforePaged), interleaved.end());
-    if (lod && o.triangleBudget == 0)
+    const auto listed = std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg);  // checked on entry
+    Bench b{.o = o, .display = display, .c = c, .baked = baked, .otherBaked = otherBaked, .others = others,
+            .transitionIndex = static_cast<std::size_t>(listed - o.alphasDeg.begin())};
+    std::vector<BenchMode> table = planModes(b);
+    runModes(table, b, report);
+    if (o.lodPixels > 0.0 && o.triangleBudget == 0)
         report.header.push_back("triangle budgets: per alpha, the median triangles of the same walls mode without a "
                                 "budget");
-    {  // The noise floor of p99/p50 on this machine, beside a walls mode's, in the same seconds.
-        // The budget mode at the last alpha, or the paged one (the clusters mode, listed after
-        // them, is not a walls mode).
-        ModeResult last = *std::find_if(report.modes.rbegin(), report.modes.rend(), [](const ModeResult& m) {
-            return m.mode == Mode::Walls && m.sceneTag.empty() && !m.onDemand;
-        });
-        last.paged = false;  // drawn with every texture resident, also after the paged mode
-        say(o, "bench: noise floor, " + modeLabel(last) + " interleaved with one of its frames");
-        const long middle = static_cast<long>(path.frames.size() / 2);
-        const std::size_t alpha = lod ? baked.size() - 1 : transitionIndex;
-        const NoiseComparison n = interleavedNoise(c, baked[alpha].setup, last, middle);
-        auto ratio = [](const TimeStats& t) { return fixed(t.p50 > 0 ? t.p99 / t.p50 : 0.0, 2); };
-        report.noiseFloorRatio = n.repeated.p50 > 0 ? n.repeated.p99 / n.repeated.p50 : 0.0;
-        report.noiseFloorP95Ratio = n.repeated.p50 > 0 ? n.repeated.p95 / n.repeated.p50 : 0.0;
-        report.header.push_back(
-            "noise floor: " + modeLabel(last) + " along the path, each frame followed by frame " +
-            std::to_string(middle) + " again: the path's frames p50 " + fixed(n.path.p50, 2) + " ms, p99/p50 " +
-            ratio(n.path) + "; the repeated frame (the same work every time) p50 " + fixed(n.repeated.p50, 2) +
-            " ms, p99/p50 " + ratio(n.repeated) + ": what the repeated frame shows is the machine's noise, not the "
-            "renderer's");
-    }
+    addNoiseFloor(report, b);
     compareWithControl(report);
     report.header.push_back("control: 'cells' (the cells the walls draw as geometry, no textures); 'vs control' is "
                             "every walls mode's pooled PSNR gain over it and its FLIP mean as a fraction of its");

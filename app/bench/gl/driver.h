@@ -1,6 +1,6 @@
 #pragma once
 // `cavewall bench SCENE`: every rendering mode over the same recorded eye path in one run,
-// error against run time (cavewall issue 7 §1).
+// error against run time.
 //
 // Modes, in this order (the first is the reference for speed-up and image error):
 //  - full:  all geometry, frustum-culled (Walkthrough without walls).
@@ -10,7 +10,7 @@
 //  - cells + layer: the cells mode with one textured full-screen layer per view drawn through
 //           the wall pass (gl::WallPass, the walls' sampler, a 512 x 512 MIP-mapped sRGB
 //           texture, weight 0 so that the image is the control's): what one wall layer costs,
-//           the yardstick of the wall pass (issue 14: the limit no slower than this).
+//           the yardstick of the wall pass (its target: the limit no slower than this).
 //  - near:  the near-geometry limit: structure, objects without a cell and the viewer's cell
 //           only; the bare wall quads are left out (a handful of triangles), so this is a
 //           lower bound of any walls mode's time.
@@ -30,12 +30,12 @@
 //  - with `compareScenes`, the same model with other cells and walls (e.g. `cavewall walls`'s
 //           proposal): its walls blend modes at every alpha (and with levels of detail), each
 //           with its own plan and bake, drawn on the bench scene's eye path frame by frame in
-//           turn with full geometry and the bench scene's walls modes (issue 19: automatic
-//           against hand-placed walls, ratios from the same seconds).
+//           turn with full geometry and the bench scene's walls modes (automatic against
+//           hand-placed walls, ratios from the same seconds).
 //  - with `onDemandCache`, after the paged mode and alone: walls at `transitionAlphaDeg`
 //           baked on demand from that empty, private cache (gl::BackgroundBaker, as
 //           `cavewall run --bake-on-demand`): first frame after the scene's load, geometry
-//           fallbacks per frame, textures baked, frame-time p99/p50 (issue 19).
+//           fallbacks per frame, textures baked, frame-time p99/p50.
 //  - last, the noise floor: the last mode again, each path frame followed by one fixed frame,
 //           whose p99/p50 is the machine's own (a header line, not a mode).
 //
@@ -77,9 +77,10 @@ struct BenchOptions {
     // --texture-format: storage of the baked colour (walls/texture_blocks.h), disk and GPU
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
     std::optional<std::filesystem::path> cache;   // bake cache (default: the baker's)
-    bool clusters = false;                        // also seed 004's textured clusters held to
-                                                  // frameBudgetMs (16.67 when it is 0), interleaved
-                                                  // with full geometry and the walls modes
+    bool clusters = false;                        // also Maciel & Shirley's (1995) textured
+                                                  // clusters held to frameBudgetMs (16.67 when it
+                                                  // is 0), interleaved with full geometry and the
+                                                  // walls modes
     std::vector<double> clusterBudgetsMs;         // with clusters: one clusters mode per budget
                                                   // (render/cluster_budget.h) instead; each > 0
     // Other scene.json files of the same model (same objects and triangles), each with its own

@@ -99,8 +99,8 @@ struct WalkRun {
     // page-in, upload and fallback. Otherwise every texture of the path is made resident in a
     // warm-up pass over the whole path.
     bool paged = false;
-    // Seed 004's textured clusters (ClusterOptions) instead of walls, held to the mode's
-    // frameBudgetMs by the frame-time controller as `cavewall run --clusters` holds it.
+    // Maciel & Shirley's (1995) textured clusters (ClusterOptions) instead of walls, held to
+    // the mode's frameBudgetMs by the frame-time controller as `cavewall run --clusters` holds it.
     bool clusters = false;
     bool storeReference = false;            // its compared images become the reference
     // >= 0: the triangle budget is the median triangles per frame of that earlier run's warm-up
@@ -115,7 +115,7 @@ struct WalkRun {
 // (it comes first), the others' are compared with them.
 void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, ReferenceImages& reference);
 
-// Baking on demand from a cold cache (issue 19), alone: `walls` (planned, its folder and
+// Baking on demand from a cold cache, alone: `walls` (planned, its folder and
 // manifest the baker's, whose cache is empty), drawn as `cavewall run --bake-on-demand` draws
 // (background paging, `baker` baking what the frames want). The first path frame is drawn once
 // first (its end, from `start`, is the first frame after the scene's load: `start` is taken

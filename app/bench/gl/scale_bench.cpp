@@ -163,7 +163,11 @@ bench::ScaleRow rowOf(bench::ScaleMode mode, const Accumulated& a, const bench::
     r.texturesOverAlpha = a.overAlpha;
     const bench::ImageError e = a.errors.result();
     r.comparedFrames = e.frames;
-    if (e.frames > 0) r.psnrDb = e.psnrDb, r.worstFramePsnrDb = e.worstFramePsnrDb, r.flipMean = e.flipMean;
+    if (e.frames > 0) {
+        r.psnrDb = e.psnrDb;
+        r.worstFramePsnrDb = e.worstFramePsnrDb;
+        r.flipMean = e.flipMean;
+    }
     return r;
 }
 
@@ -226,149 +230,248 @@ std::unique_ptr<PreparedSize> prepareSize(const ScaleOptions& o, std::size_t tar
     return p;
 }
 
-// One size's three modes: made and timed to their first frame, warmed up, then drawn frame by
-// frame in turn (one function: the three live modes are shared by every step).
-void runSize(const ScaleOptions& o, std::size_t target, const display::Display& display, Context& context,
-             bench::ScaleReport& report) {
-    auto say = [&](const std::string& line) {
-        if (o.verbose) std::cout << "bench --scale: " << line << "\n" << std::flush;
-    };
-    const std::unique_ptr<PreparedSize> prepared = prepareSize(o, target, display, context);
-    const scenes::Scene& scene = prepared->scene;
-    const scenes::SceneDescription& d = prepared->description;
-    const bench::EyePath& path = prepared->path;
-    const walls::WallSetup& setup = prepared->setup;
-    const std::string& size = prepared->size;
-    const double loadSeconds = prepared->loadSeconds, planSeconds = prepared->planSeconds;
-    const std::size_t triangles = scene.triangleCount();
-    say(prepared->line);
-    report.header.push_back(prepared->line);
+using bench::ScaleMode;
 
-    bench::ScaleRow base;
-    base.targetTriangles = target;
-    base.triangles = triangles;
-    base.cells = static_cast<int>(d.cells.size());
-    base.loadSeconds = loadSeconds;
-    const auto timeFirst = [&](auto make, auto frame) {
-        const auto t = Clock::now();
-        auto made = make();
-        frame(*made);
-        return std::pair{std::move(made), secondsSince(t)};
-    };
-    // Full geometry.
-    WalkthroughOptions fullOptions;
-    auto [full, fullFirst] = timeFirst(
-        [&] { return std::make_unique<Walkthrough>(scene, d, display, context, std::nullopt, fullOptions); },
-        [&](Walkthrough& w) { w.renderFrame(path.frames.front()); });
-    // The near limit.
-    auto [nearMode, nearFirst] = timeFirst(
-        [&] { return std::make_unique<NearMode>(scene, d, display, context, setup, o.lodPixels); },
-        [&](NearMode& n) { n.draw(path.frames.front()); });
-    // Walls: planning counts in its time to the first frame (the bake does not: it is cached).
-    WalkthroughOptions wallsOptions;
-    wallsOptions.render.lodPixels = o.lodPixels;
-    wallsOptions.geometryBudgetMB = o.geometryBudgetMB;
-    wallsOptions.wallKind = o.wallKind;
+// One mode of one size: what draws it and what it measured.
+struct SizeMode {
+    SizeMode(ScaleMode mode, std::size_t screens) : mode(mode), acc(screens) {}
+    ScaleMode mode;
+    std::unique_ptr<Walkthrough> walk;  // full's and the walls modes' (cells, walls, walls-budget, walls-depth)
+    std::unique_ptr<NearMode> near;     // near's
+    double firstFrameSeconds = 0.0;     // made and the stretch's first frame drawn (walls modes: planning too)
+    Accumulated acc;
+};
+
+// The modes with walls (cells: their geometry cells without textures), which page geometry.
+bool hasWalls(ScaleMode mode) { return mode != ScaleMode::Full && mode != ScaleMode::Near; }
+
+// The walls modes' warm-up order over the stretch (each frame they are drawn in kScaleModes').
+constexpr ScaleMode kWarmUpOrder[] = {ScaleMode::Walls, ScaleMode::WallsBudget, ScaleMode::DepthWalls,
+                                      ScaleMode::Cells};
+
+// One size's modes: kScaleModes' order, those run (full first, near second).
+struct SizeModes {
+    std::vector<SizeMode> modes;
+    std::size_t budget = 0;  // walls-budget's triangles a frame (0: not run)
+
+    SizeMode* find(ScaleMode mode) {
+        for (SizeMode& m : modes)
+            if (m.mode == mode) return &m;
+        return nullptr;
+    }
+};
+
+// Times make() and frame() on what it made: what was made and the seconds.
+template <class Make, class Frame>
+auto timeFirst(Make make, Frame frame) {
+    const auto t = Clock::now();
+    auto made = make();
+    frame(*made);
+    return std::pair{std::move(made), secondsSince(t)};
+}
+
+// The walls mode's walkthrough options; the other walls modes' start from them.
+WalkthroughOptions wallsOptionsFor(const ScaleOptions& o) {
+    WalkthroughOptions options;
+    options.render.lodPixels = o.lodPixels;
+    options.geometryBudgetMB = o.geometryBudgetMB;
+    options.wallKind = o.wallKind;
     // Synchronous paging: the first frame is complete (its textures and cells loaded), and after
     // the warm-up pass every texture and mesh group of the stretch stays resident, so the timed
     // frames measure drawing (nothing is left to wait for).
-    wallsOptions.synchronousPaging = true;
-    wallsOptions.textureBudgetMB = 4096.0;
-    wallsOptions.uploadMBPerFrame = 4096.0;
-    // A walkthrough of `walls` and the seconds to make it and draw the stretch's first frame.
-    const auto firstWalk = [&](const walls::WallSetup& walls, const WalkthroughOptions& options) {
-        return timeFirst([&] { return std::make_unique<Walkthrough>(scene, d, display, context, walls, options); },
-                         [&](Walkthrough& w) { w.renderFrame(path.frames.front()); });
-    };
-    auto [walk, wallsFirst] = firstWalk(setup, wallsOptions);
-    // The control: the flat walls' geometry cells, no texture.
-    WalkthroughOptions cellsOptions = wallsOptions;
+    options.synchronousPaging = true;
+    options.textureBudgetMB = 4096.0;
+    options.uploadMBPerFrame = 4096.0;
+    return options;
+}
+
+// What one size's modes are made with.
+struct SizeSetting {
+    const ScaleOptions& o;
+    const PreparedSize& p;
+    const display::Display& display;
+    Context& context;
+};
+
+// A walkthrough of `walls` and the seconds to make it and draw the stretch's first frame.
+std::pair<std::unique_ptr<Walkthrough>, double> firstWalk(const SizeSetting& s, const walls::WallSetup& walls,
+                                                          const WalkthroughOptions& options) {
+    return timeFirst(
+        [&] { return std::make_unique<Walkthrough>(s.p.scene, s.p.description, s.display, s.context, walls, options); },
+        [&](Walkthrough& w) { w.renderFrame(s.p.path.frames.front()); });
+}
+
+// The near limit over the whole stretch (its warm-up) and walls-budget's triangles a frame: the
+// option's, or the near limit's median.
+std::size_t nearBudget(const ScaleOptions& o, NearMode& nearMode, const bench::EyePath& path) {
+    std::vector<double> nearTriangles;
+    for (const walls::FrameInput& in : path.frames) nearTriangles.push_back(nearMode.draw(in).second);
+    std::sort(nearTriangles.begin(), nearTriangles.end());
+    return o.triangleBudget >= 0 ? static_cast<std::size_t>(o.triangleBudget)
+                                 : static_cast<std::size_t>(nearTriangles[nearTriangles.size() / 2]);
+}
+
+// Adds a walls mode made by firstWalk to `modes`; planning counts in its time to the first frame
+// (the bake does not: it is cached).
+void addWalk(std::vector<SizeMode>& modes, const SizeSetting& s, ScaleMode mode,
+             std::pair<std::unique_ptr<Walkthrough>, double> made, double planSeconds) {
+    SizeMode& m = modes.emplace_back(mode, s.display.screens().size());
+    m.walk = std::move(made.first);
+    m.firstFrameSeconds = made.second + planSeconds;
+}
+
+// Makes one size's modes and times each to its first frame, in this order: full, near, walls,
+// cells, walls-depth, then walls-budget (its budget the near limit's median, after its warm-up).
+SizeModes makeModes(const SizeSetting& s) {
+    const ScaleOptions& o = s.o;
+    const PreparedSize& p = s.p;
+    const std::size_t screens = s.display.screens().size();
+    std::vector<SizeMode> made;
+    made.reserve(std::size(bench::kScaleModes));  // no reallocation: `full` and `nearLimit` stay valid
+    SizeMode& full = made.emplace_back(ScaleMode::Full, screens);
+    WalkthroughOptions fullOptions;
+    std::tie(full.walk, full.firstFrameSeconds) = timeFirst(
+        [&] {
+            return std::make_unique<Walkthrough>(p.scene, p.description, s.display, s.context, std::nullopt, fullOptions);
+        },
+        [&](Walkthrough& w) { w.renderFrame(p.path.frames.front()); });
+    SizeMode& nearLimit = made.emplace_back(ScaleMode::Near, screens);
+    std::tie(nearLimit.near, nearLimit.firstFrameSeconds) = timeFirst(
+        [&] { return std::make_unique<NearMode>(p.scene, p.description, s.display, s.context, p.setup, o.lodPixels); },
+        [&](NearMode& n) { n.draw(p.path.frames.front()); });
+    const WalkthroughOptions wallsOptions = wallsOptionsFor(o);
+    addWalk(made, s, ScaleMode::Walls, firstWalk(s, p.setup, wallsOptions), p.planSeconds);
+    WalkthroughOptions cellsOptions = wallsOptions;  // the control: the flat walls' geometry cells, no texture
     cellsOptions.wallTextures = false;
-    auto [cells, cellsFirst] = firstWalk(setup, cellsOptions);
-    // Depth walls beside the flat ones: the same options, their own plan and bake.
-    std::unique_ptr<Walkthrough> depthWalk;
-    double depthFirst = 0.0;
-    if (prepared->depthSetup) {
+    addWalk(made, s, ScaleMode::Cells, firstWalk(s, p.setup, cellsOptions), p.planSeconds);
+    if (p.depthSetup) {  // depth walls beside the flat ones: the same options, their own plan and bake
         WalkthroughOptions depthOptions = wallsOptions;
         depthOptions.wallKind = walls::WallKind::Depth;
-        std::tie(depthWalk, depthFirst) = firstWalk(*prepared->depthSetup, depthOptions);
+        addWalk(made, s, ScaleMode::DepthWalls, firstWalk(s, *p.depthSetup, depthOptions), p.depthPlanSeconds);
     }
-    // The near limit over the whole stretch: its warm-up, and its median triangles (the budget).
-    std::vector<double> nearTriangles;
-    for (const walls::FrameInput& in : path.frames) nearTriangles.push_back(nearMode->draw(in).second);
-    std::sort(nearTriangles.begin(), nearTriangles.end());
-    const std::size_t budget = o.triangleBudget >= 0 ? static_cast<std::size_t>(o.triangleBudget)
-                                                     : static_cast<std::size_t>(nearTriangles[nearTriangles.size() / 2]);
-    std::unique_ptr<Walkthrough> budgeted;
-    double budgetFirst = 0.0;
-    if (budget > 0) {
+    SizeModes out;
+    out.budget = nearBudget(o, *nearLimit.near, p.path);
+    if (out.budget > 0) {
         WalkthroughOptions budgetOptions = wallsOptions;
-        budgetOptions.triangleBudget = budget;
+        budgetOptions.triangleBudget = out.budget;
         budgetOptions.lodMaxPixels = std::max(o.lodMaxPixels, o.lodPixels);
-        std::tie(budgeted, budgetFirst) = firstWalk(setup, budgetOptions);
+        addWalk(made, s, ScaleMode::WallsBudget, firstWalk(s, p.setup, budgetOptions), p.planSeconds);
     }
-    // Yardsticks with each mode's own levels: full detail for full, the walls' levels (also the
-    // near limit's) for the others.
-    const GeometryYardsticks yard = walk->geometryYardsticks(), fullYard = full->geometryYardsticks();
-    say(size + ": warm-up over the stretch");
-    for (Walkthrough* w : {walk.get(), budgeted.get(), depthWalk.get(), cells.get()}) {
-        if (!w) continue;
-        for (const walls::FrameInput& in : path.frames) w->renderFrame(in);
-        w->waitForTextures();
+    for (ScaleMode mode : bench::kScaleModes)  // the table's order
+        for (SizeMode& m : made)
+            if (m.mode == mode) out.modes.push_back(std::move(m));
+    return out;
+}
+
+// Every walls mode over the whole stretch (kWarmUpOrder), then full geometry's first frames.
+void warmUp(SizeModes& live, const bench::EyePath& path) {
+    for (ScaleMode mode : kWarmUpOrder) {
+        const SizeMode* m = live.find(mode);
+        if (!m) continue;
+        for (const walls::FrameInput& in : path.frames) m->walk->renderFrame(in);
+        m->walk->waitForTextures();
     }
-    for (std::size_t i = 0; i < std::min<std::size_t>(3, path.frames.size()); ++i) full->renderFrame(path.frames[i]);
-    say(size + ": full, near, cells, walls" + std::string(budgeted ? " and walls-budget (" + std::to_string(budget) +
-                                                              " triangles a frame)" : "") +
-        (depthWalk ? " and walls-depth" : "") + " frame by frame in turn");
-    const std::size_t screens = display.screens().size();
-    // Indexed as the modes below: full, near, walls, walls-budget, walls-depth, cells.
-    Accumulated a[6] = {Accumulated(screens), Accumulated(screens), Accumulated(screens),
-                        Accumulated(screens), Accumulated(screens), Accumulated(screens)};
-    a[0].residentMB = fullYard.sharedMB;
-    a[1].residentMB = nearMode->residentMB();
-    // The walkthrough modes, indexed as `a`.
-    Walkthrough* const walkthroughs[6] = {nullptr, nullptr, walk.get(), budgeted.get(), depthWalk.get(), cells.get()};
-    const char* const names[6] = {"full", "near", "walls", "walls-budget", "walls-depth", "cells"};
-    long frame = 0;
-    for (walls::FrameInput in : path.frames) {
-        // Images are read back after each mode's frame is timed (walkthrough.h; NearMode::draw).
-        const bool compare = o.compareEvery > 0 && frame % o.compareEvery == 0;
-        in.readImages = compare;
-        const walls::FrameResult f = full->renderFrame(in);
-        a[0].ms.push_back(f.frameMs), a[0].triangles += static_cast<double>(f.stats.triangles);
-        const auto [nearMs, nearTriangles] = nearMode->draw(in);
-        a[1].ms.push_back(nearMs), a[1].triangles += nearTriangles;
-        if (compare)
-            a[1].errors.addFrame(frame, comparedImages(display, in.head, readFrame(display, nearMode->targets), f.images,
-                                                       "near"));
-        for (int m : {5, 2, 3, 4}) {
-            if (!walkthroughs[m]) continue;
-            const walls::FrameResult w = walkthroughs[m]->renderFrame(in);
-            a[m].ms.push_back(w.frameMs), a[m].triangles += static_cast<double>(w.stats.triangles);
-            if (compare) a[m].errors.addFrame(frame, comparedImages(display, in.head, w.images, f.images, names[m]));
-            a[m].pagedMB = std::max(a[m].pagedMB, w.geometry.residentMB);
-            a[m].overAlpha = std::max(a[m].overAlpha, w.texturesOverAlpha);
-            a[m].misses = w.geometry.misses, a[m].pageIns = w.geometry.pageIns;
+    Walkthrough& full = *live.find(ScaleMode::Full)->walk;
+    for (std::size_t i = 0; i < std::min<std::size_t>(3, path.frames.size()); ++i) full.renderFrame(path.frames[i]);
+}
+
+// A walls mode's frame; its images (when `reference`) compared with full geometry's.
+void drawWalk(SizeMode& m, const walls::FrameInput& in, long frame, const std::vector<ScreenImage>* reference,
+              const display::Display& display) {
+    const walls::FrameResult w = m.walk->renderFrame(in);
+    Accumulated& a = m.acc;
+    a.ms.push_back(w.frameMs);
+    a.triangles += static_cast<double>(w.stats.triangles);
+    if (reference)
+        a.errors.addFrame(frame,
+                          comparedImages(display, in.head, w.images, *reference, std::string(bench::toString(m.mode))));
+    a.pagedMB = std::max(a.pagedMB, w.geometry.residentMB);
+    a.overAlpha = std::max(a.overAlpha, w.texturesOverAlpha);
+    a.misses = w.geometry.misses;
+    a.pageIns = w.geometry.pageIns;
+}
+
+// One path frame drawn by every mode in kScaleModes' order, full geometry first: its images are
+// the others' reference. Images are read back after each mode's frame is timed (walkthrough.h;
+// NearMode::draw).
+void drawFrame(SizeModes& live, walls::FrameInput in, long frame, bool compare, const display::Display& display) {
+    in.readImages = compare;
+    SizeMode& full = live.modes.front();
+    const walls::FrameResult f = full.walk->renderFrame(in);
+    full.acc.ms.push_back(f.frameMs);
+    full.acc.triangles += static_cast<double>(f.stats.triangles);
+    for (SizeMode& m : live.modes) {
+        if (m.near) {
+            const auto [nearMs, nearTriangles] = m.near->draw(in);
+            m.acc.ms.push_back(nearMs);
+            m.acc.triangles += nearTriangles;
+            if (compare)
+                m.acc.errors.addFrame(frame, comparedImages(display, in.head, readFrame(display, m.near->targets),
+                                                            f.images, std::string(bench::toString(m.mode))));
+        } else if (hasWalls(m.mode)) {
+            drawWalk(m, in, frame, compare ? &f.images : nullptr, display);
         }
-        ++frame;
     }
-    for (int m = 2; m < 6; ++m) a[m].residentMB = yard.sharedMB + a[m].pagedMB;
-    const double firsts[6] = {fullFirst, nearFirst, wallsFirst + planSeconds, budgetFirst + planSeconds,
-                              depthFirst + prepared->depthPlanSeconds, cellsFirst + planSeconds};
-    const bench::ScaleMode modes[6] = {bench::ScaleMode::Full,  bench::ScaleMode::Near,        bench::ScaleMode::Walls,
-                                       bench::ScaleMode::WallsBudget, bench::ScaleMode::DepthWalls, bench::ScaleMode::Cells};
-    for (int m : {0, 1, 5, 2, 3, 4}) {  // the rows in kScaleModes' order
-        if ((m == 3 && !budgeted) || (m == 4 && !depthWalk)) continue;
-        bench::ScaleRow r = rowOf(modes[m], a[m], base);
-        if (modes[m] == bench::ScaleMode::WallsBudget) r.triangleBudget = budget;
-        r.firstFrameSeconds = firsts[m];
-        r.wholeModelMB = m == 0 ? fullYard.wholeModelMB : yard.wholeModelMB;
-        r.largestThreeCellsMB = m == 0 ? fullYard.largestThreeCellsMB : yard.largestThreeCellsMB;
+}
+
+// The size's rows in kScaleModes' order (the table's), each said.
+void addRows(const SizeModes& live, const bench::ScaleRow& base, const GeometryYardsticks& yard,
+             const GeometryYardsticks& fullYard, const std::function<void(const std::string&)>& say,
+             const std::string& size, bench::ScaleReport& report) {
+    for (const SizeMode& m : live.modes) {
+        bench::ScaleRow r = rowOf(m.mode, m.acc, base);
+        if (m.mode == ScaleMode::WallsBudget) r.triangleBudget = live.budget;
+        r.firstFrameSeconds = m.firstFrameSeconds;
+        const GeometryYardsticks& y = m.mode == ScaleMode::Full ? fullYard : yard;
+        r.wholeModelMB = y.wholeModelMB;
+        r.largestThreeCellsMB = y.largestThreeCellsMB;
         report.rows.push_back(r);
-        say(size + ": " + std::string(bench::toString(modes[m])) + " median " + fixed(r.frameMs.p50, 2) + " ms, resident " +
-            fixed(r.residentMB, 2) + " MB (paged " + fixed(r.pagedPeakMB, 2) + "), whole model " +
+        say(size + ": " + std::string(bench::toString(m.mode)) + " median " + fixed(r.frameMs.p50, 2) +
+            " ms, resident " + fixed(r.residentMB, 2) + " MB (paged " + fixed(r.pagedPeakMB, 2) + "), whole model " +
             fixed(r.wholeModelMB, 2) + " MB, largest three cells " + fixed(r.largestThreeCellsMB, 2) + " MB");
     }
+}
+
+// One size: its modes made and timed to their first frame, warmed up, then drawn frame by frame
+// in turn.
+void runSize(const ScaleOptions& o, std::size_t target, const display::Display& display, Context& context,
+             bench::ScaleReport& report) {
+    const std::function<void(const std::string&)> say = [&](const std::string& line) {
+        if (o.verbose) std::cout << "bench --scale: " << line << "\n" << std::flush;
+    };
+    const std::unique_ptr<PreparedSize> prepared = prepareSize(o, target, display, context);
+    const std::string& size = prepared->size;
+    say(prepared->line);
+    report.header.push_back(prepared->line);
+    bench::ScaleRow base;
+    base.targetTriangles = target;
+    base.triangles = prepared->scene.triangleCount();
+    base.cells = static_cast<int>(prepared->description.cells.size());
+    base.loadSeconds = prepared->loadSeconds;
+
+    SizeModes live = makeModes({o, *prepared, display, context});
+    // Yardsticks with each mode's own levels: full detail for full, the walls' levels (also the
+    // near limit's) for the others.
+    const GeometryYardsticks yard = live.find(ScaleMode::Walls)->walk->geometryYardsticks();
+    const GeometryYardsticks fullYard = live.find(ScaleMode::Full)->walk->geometryYardsticks();
+    say(size + ": warm-up over the stretch");
+    warmUp(live, prepared->path);
+    const std::string budgetWords = live.find(ScaleMode::WallsBudget)
+                                        ? " and walls-budget (" + std::to_string(live.budget) + " triangles a frame)"
+                                        : "";
+    say(size + ": full, near, cells, walls" + budgetWords +
+        (live.find(ScaleMode::DepthWalls) ? " and walls-depth" : "") + " frame by frame in turn");
+    live.find(ScaleMode::Full)->acc.residentMB = fullYard.sharedMB;
+    SizeMode& nearLimit = *live.find(ScaleMode::Near);
+    nearLimit.acc.residentMB = nearLimit.near->residentMB();
+    long frame = 0;
+    for (const walls::FrameInput& in : prepared->path.frames) {
+        drawFrame(live, in, frame, o.compareEvery > 0 && frame % o.compareEvery == 0, display);
+        ++frame;
+    }
+    for (SizeMode& m : live.modes)
+        if (hasWalls(m.mode)) m.acc.residentMB = yard.sharedMB + m.acc.pagedMB;
+    addRows(live, base, yard, fullYard, say, size, report);
 }
 
 }  // namespace

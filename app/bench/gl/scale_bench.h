@@ -1,24 +1,26 @@
 #pragma once
 // `cavewall bench --scale 2M,8M,32M`: how frame time, resident geometry and the time to the
-// first frame grow with the model (cavewall issue 15). Per size, the generated plant
-// (scenes::generatePlant, deterministic; written once into `data`/plant-N and reused) is
-// loaded and walked along the same first `pathMetres` of its walk path (the same bays at every
-// size: a longer hall has more of them, not heavier ones) in three modes drawn frame by frame
-// in turn, so their times share the machine's load of the same seconds:
+// first frame grow with the model. Per size, the generated plant (scenes::generatePlant,
+// deterministic; written once into `data`/plant-N and reused) is loaded and walked along the
+// same first `pathMetres` of its walk path (the same bays at every size: a longer hall has more
+// of them, not heavier ones) in the modes below, drawn frame by frame in turn, so their times
+// share the machine's load of the same seconds:
 //  - full:  all geometry, frustum-culled, full detail (the whole model on the GPU);
 //  - near:  the near-geometry limit at the walls' level-of-detail tolerance: structure,
 //           objects without a cell and the viewer's cell (no wall quads);
+//  - cells: the control, the walls mode's geometry cells as it draws them, no texture;
 //  - walls: virtual walls at `alphaDeg`, levels of detail at `lodPixels`, geometry paging by
 //           cell under `geometryBudgetMB` (mesh groups shared by cells stored once), textures
 //           all resident after a warm-up pass over the stretch;
 //  - walls-budget (unless `triangleBudget` is 0): the walls mode with its geometry held to a
-//           triangle budget per frame (seed 004's frame budget; WalkthroughSettings::
-//           triangleBudget: the level-of-detail tolerance raised just enough, to at most
-//           `lodMaxPixels`), by default the near limit's median triangles over the stretch
-//           (counted in its warm-up pass), so the walls draw no more geometry than the limit.
+//           triangle budget per frame (Maciel & Shirley's (1995) frame budget;
+//           WalkthroughSettings::triangleBudget: the level-of-detail tolerance raised just
+//           enough, to at most `lodMaxPixels`), by default the near limit's median triangles
+//           over the stretch (counted in its warm-up pass), so the walls draw no more geometry
+//           than the limit.
 //           Its image error is measured like the walls', so what the budget costs shows beside
 //           what it saves;
-//  - walls-depth (depthBeside, with flat walls): the walls mode with depth walls (issue 16),
+//  - walls-depth (depthBeside, with flat walls): the walls mode with depth walls,
 //           their own plan and bake, drawn in turn with the others.
 //
 // Bounded baking: a cold bake of the whole 2 M plant takes about 20 minutes on this machine
@@ -49,7 +51,7 @@ struct ScaleOptions {
     long frames = 60;                       // timed frames over the stretch
     double alphaDeg = 10.0;
     walls::PlanOptions plan;                // alphaDeg replaced
-    walls::WallKind wallKind = walls::WallKind::Flat;  // of both walls modes (issue 16: depth)
+    walls::WallKind wallKind = walls::WallKind::Flat;  // of both walls modes: flat or depth
     // Also walls-depth (`--walls flat,depth`; wallKind flat): depth walls, planned and baked with
     // their own bound, drawn in turn with the other modes, so depth / flat frame time is
     // measured within one run.
