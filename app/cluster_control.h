@@ -1,9 +1,9 @@
 #pragma once
-// The frame-time controller of seed 004's clusters (render/cluster_budget.h) applied to the
-// walkthrough's frames, one definition for `cavewall run --clusters` and the bench's clusters
-// modes: before a frame, the selection's budget for walls::FrameInput; after it, the
-// controller's prediction, floor and target written into walls::FrameResult (frames.csv,
-// bench_frames.csv), then the controller updated with the frame.
+// The frame-time controller of Maciel & Shirley's (1995) clusters (render/cluster_budget.h),
+// applied to the walkthrough's frames, one definition for `cavewall run --clusters` and the
+// bench's clusters modes: before a frame, the selection's budget for walls::FrameInput; after
+// it, the controller's prediction, floor and target written into walls::FrameResult
+// (frames.csv, bench_frames.csv), then the controller updated with the frame.
 
 #include "render/cluster_budget.h"
 #include "walls/frame_types.h"

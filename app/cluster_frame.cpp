@@ -112,7 +112,10 @@ bool decodeImages(const std::vector<std::uint8_t>& bytes, std::vector<scenes::Sc
         if (!r.get(screen) || !r.get(image) || !r.getBytes(stem) || !r.get(w) || !r.get(h) || !r.getBytes(i.pixels.rgba))
             return false;
         if (w < 0 || h < 0 || i.pixels.rgba.size() != std::size_t(w) * std::size_t(h) * 4) return false;
-        i.screen = screen, i.image = image, i.pixels.width = w, i.pixels.height = h;
+        i.screen = screen;
+        i.image = image;
+        i.pixels.width = w;
+        i.pixels.height = h;
         i.stem.assign(stem.begin(), stem.end());
         images.push_back(std::move(i));
     }

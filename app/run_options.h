@@ -91,8 +91,9 @@ struct RunOptions {
     std::size_t triangleBudget = 0;             // --triangle-budget: per frame, 0 none (needs --lod)
     double frameBudgetMs = 0.0;                 // --frame-budget-ms: frame-time target, 0 none (needs --lod)
     double lodMaxPixels = 8.0;                  // --lod-max: the most a budget raises the tolerance to
-    // --clusters: seed 004's textured clusters instead of walls (walls/gl/walkthrough.h
-    // ClusterOptions); the budget is --frame-budget-ms's controller (predicted ms), else 16.7 ms.
+    // --clusters: Maciel & Shirley's (1995) textured clusters instead of walls
+    // (walls/gl/walkthrough.h ClusterOptions); the budget is --frame-budget-ms's controller
+    // (predicted ms), else 16.7 ms.
     bool clusters = false;
     int clusterDivisions = 8;                   // --cluster-divisions N: finest grid N x max(1, N/4) x N
     int clusterResolution = 64;                 // --cluster-res: face texture's longer side, texels
@@ -132,7 +133,7 @@ struct RunSummary {
         std::vector<scenes::ScreenImage> images;
     };
     std::vector<SavedFrame> savedFrames;
-    // Start-up, seconds from runSession's start (issue 15: time to the first frame): the scene
+    // Start-up, seconds from runSession's start (the time to the first frame): the scene
     // loaded, the walls prepared (plan, visibility, bake or cache check), the walkthrough ready
     // (uploads, first textures), and the first frame presented.
     double sceneSeconds = 0.0, wallsSeconds = 0.0, readySeconds = 0.0, firstFrameSeconds = 0.0;

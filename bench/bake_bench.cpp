@@ -108,7 +108,9 @@ void BM_BakeLodAgainstFullDetail(benchmark::State& state) {
     scenes::SceneDescription d;
     const scenes::Scene scene = scenes::loadSceneFile(path, &d);
     walls::PlanOptions options;
-    options.alphaDeg = 10.0, options.minZoneSize = 1.0, options.pixelsPerDegree = 10.0;
+    options.alphaDeg = 10.0;
+    options.minZoneSize = 1.0;
+    options.pixelsPerDegree = 10.0;
     const walls::WallSetup setup = walls::prepareWalls(scene, d, walls::planOptionsFor(options, walls::WallKind::Flat, 512));
     const Clock::time_point built = Clock::now();
     gl::WallTextureRenderer full(scene, 0.35f, 0.0);
@@ -132,10 +134,12 @@ void BM_BakeLodAgainstFullDetail(benchmark::State& state) {
             const std::vector<int>& objects = setup.contents.at({t.wall, side}).baked;
             const glm::ivec2 res = walls::bakeResolution(t.resolution, 512);
             const scenes::Image a = full.render(quad, t.samplingPoint, res, objects);
-            fullDraw += full.lastTiming().drawMs, fullRead += full.lastTiming().readMs;
+            fullDraw += full.lastTiming().drawMs;
+            fullRead += full.lastTiming().readMs;
             fullTris += double(full.lastStats().triangles);
             const scenes::Image b = lod.render(quad, t.samplingPoint, res, objects);
-            lodDraw += lod.lastTiming().drawMs, lodRead += lod.lastTiming().readMs;
+            lodDraw += lod.lastTiming().drawMs;
+            lodRead += lod.lastTiming().readMs;
             lodTris += double(lod.lastStats().triangles);
             maxErr = std::max(maxErr, lod.lastLod().maxErrorPx);
             const scenes::SquaredError e = scenes::squaredError(b, a);
@@ -148,7 +152,9 @@ void BM_BakeLodAgainstFullDetail(benchmark::State& state) {
             walls::writeMipFile(benchFolder() / "zip6.tx", levels, {64, "zip"});
             const Clock::time_point m2 = Clock::now();
             walls::writeMipFile(benchFolder() / "zip1.tx", levels, {64, "zip:1"});
-            mips += ms(m1 - m0), zip6 += ms(m2 - m1), zip1 += ms(Clock::now() - m2);
+            mips += ms(m1 - m0);
+            zip6 += ms(m2 - m1);
+            zip1 += ms(Clock::now() - m2);
             bytes6 += double(std::filesystem::file_size(benchFolder() / "zip6.tx"));
             bytes1 += double(std::filesystem::file_size(benchFolder() / "zip1.tx"));
         }

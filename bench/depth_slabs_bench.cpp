@@ -1,12 +1,12 @@
-// How many textures and texels depth walls split into depth slabs would need (issue 16's "4x
-// fewer textures and texels" target), from the planner alone, against flat walls and one depth
-// layer. Each slab [b_j, b_j+1) of a partition is a layer of its own: every wall's depth span
-// clipped to the slab is planned as depth walls are (walls::planZones with those spans, so the
-// same rigorous bound, alpha, density and geometry strip), and a wall whose span misses the slab
-// needs no layer there. A layered wall's image is then proven within alpha: a front-to-back
-// march of the layers shows a surface of the first layer whose march hits, and that layer's
-// bound covers it (walls/depth_wall.h: the bound needs only the stored and the ray depth to lie
-// in the layer's span). Every layer of every slab counts as a texture.
+// How many textures and texels depth walls split into depth slabs would need, from the planner
+// alone, against flat walls and one depth layer. Each slab [b_j, b_j+1) of a partition is a
+// layer of its own: every wall's depth span clipped to the slab is planned as depth walls are
+// (walls::planZones with those spans, so the same rigorous bound, alpha, density and geometry
+// strip), and a wall whose span misses the slab needs no layer there. A layered wall's image is
+// then proven within alpha: a front-to-back march of the layers shows a surface of the first
+// layer whose march hits, and that layer's bound covers it (walls/depth_wall.h: the bound needs
+// only the stored and the ray depth to lie in the layer's span). Every layer of every slab
+// counts as a texture.
 //
 // Two texel counts per layer: as planned (the density at the nearest eye's distance, which the
 // bound assumes) and at a far layer's own density: content at least b_j behind the wall, seen
@@ -15,8 +15,8 @@
 // second count is optimistic (no bound is proven with those coarser texels here); it is what a
 // layered bake could at best reach.
 //
-// Partitions are lists of inner slab borders in metres behind the wall ("8" is two slabs, [0, 8)
-// and [8, far]); the default set is the one README's "Depth walls" table reports:
+// Partitions are lists of inner slab borders in metres behind the wall ("8" is two slabs,
+// [0, 8) and [8, far]); the default set is the one docs/depth-walls.md's table reports:
 //   build/bench/cavewall_bench_depth_slabs SCENE [--alpha DEG] [--ppd N] [--min-zone M]
 //                                          [--max-res N] [--bake FOLDER] [PARTITION...]
 // --bake: the share of a depth bake's texels in tiles that hold a surface nearer than each
@@ -116,7 +116,10 @@ void tileShares(const std::filesystem::path& folder, const std::vector<double>& 
                 all += texels;
                 if (std::isfinite(nearest)) {
                     any += texels;
-                    x0 = std::min(x0, tx), y0 = std::min(y0, ty), x1 = std::max(x1, tx + w), y1 = std::max(y1, ty + h);
+                    x0 = std::min(x0, tx);
+                    y0 = std::min(y0, ty);
+                    x1 = std::max(x1, tx + w);
+                    y1 = std::max(y1, ty + h);
                 }
                 for (std::size_t b = 0; b < borders.size(); ++b)
                     if (nearest < borders[b]) near[b] += texels;
@@ -187,7 +190,9 @@ int main(int argc, char** argv) try {
         const auto start = std::chrono::steady_clock::now();
         for (std::size_t j = 0; j + 1 < borders.size(); ++j) {
             const Count c = planLayer(description, spans, borders[j], borders[j + 1], options);
-            total.textures += c.textures, total.mtexels += c.mtexels, total.farMtexels += c.farMtexels;
+            total.textures += c.textures;
+            total.mtexels += c.mtexels;
+            total.farMtexels += c.farMtexels;
             perLayer += (j ? " + " : "") + std::to_string(c.textures);
         }
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

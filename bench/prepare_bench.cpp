@@ -1,10 +1,10 @@
-// Start-up cost of the virtual walls (issue 15): walls::prepareWalls (visibility, what each
-// wall side shows, the plan) on scene folders given on the command line, with the options
-// `cavewall run` and `bench` use by default (flat walls, alpha 10°). Prints, per scene and
-// run, the wall-clock and process CPU seconds of prepareWalls (loading excluded) and the
-// plan's size and two hashes (FNV-1a) that must not change when only speed does: of the plan
-// as `cavewall plan --json` writes it, and of every side's WallContents (lists and depths,
-// bit for bit). Two builds can be compared side by side:
+// Start-up cost of the virtual walls: walls::prepareWalls (visibility, what each wall side
+// shows, the plan) on scene folders given on the command line, with the options `cavewall run`
+// and `bench` use by default (flat walls, alpha 10°). Prints, per scene and run, the wall-clock
+// and process CPU seconds of prepareWalls (loading excluded) and the plan's size and two hashes
+// (FNV-1a) that must not change when only speed does: of the plan as `cavewall plan --json`
+// writes it, and of every side's WallContents (lists and depths, bit for bit). Two builds can
+// be compared side by side:
 //   build/bench/cavewall_bench_prepare [--runs N] SCENE_DIR...
 #include "scenes/loader.h"
 #include "walls/plan_io.h"

@@ -21,8 +21,16 @@ scenes::SceneDescription hall() {
     d.cells.push_back({"middle", {{12, -20}, {12, 0}, {-12, 0}, {-12, -20}}, 0.0});
     d.cells.push_back({"far", {{12, 20}, {12, 40}, {-12, 40}, {-12, 20}}, 0.0});
     scenes::VirtualWall a, b;
-    a.name = "a", a.lowerLeft = {-12, 0, 0}, a.lowerRight = {12, 0, 0}, a.upperLeft = {-12, 6, 0}, a.cells = {0, 1};
-    b.name = "b", b.lowerLeft = {12, 0, 20}, b.lowerRight = {-12, 0, 20}, b.upperLeft = {12, 6, 20}, b.cells = {0, 2};
+    a.name = "a";
+    a.lowerLeft = {-12, 0, 0};
+    a.lowerRight = {12, 0, 0};
+    a.upperLeft = {-12, 6, 0};
+    a.cells = {0, 1};
+    b.name = "b";
+    b.lowerLeft = {12, 0, 20};
+    b.lowerRight = {-12, 0, 20};
+    b.upperLeft = {12, 6, 20};
+    b.cells = {0, 2};
     d.walls = {a, b};
     return d;
 }

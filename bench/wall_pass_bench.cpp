@@ -6,16 +6,16 @@
 // is the frame's. Counter ms_per_layer: (iteration ms - clear-only ms) / layers, with the
 // clear-only time measured in the same run.
 //
-// Depth walls (gl::DepthWallPass, issue 16): the same layer drawn by reprojecting a 512 x 512
-// colour + depth texture (a back plane 4 m behind the wall with 8 x 8 blocks 1-3 m behind it)
-// baked from a sampling point 0.37 m from the eye, at the pass's default 64 steps at most and
-// capped at 16; cases named depth_512/*. Their ms_per_layer beside the flat cases' is the cost
-// of reprojection at 1024 x 1024.
+// Depth walls (gl::DepthWallPass): the same layer drawn by reprojecting a 512 x 512 colour +
+// depth texture (a back plane 4 m behind the wall with 8 x 8 blocks 1-3 m behind it) baked from
+// a sampling point 0.37 m from the eye, at the pass's default 64 steps at most and capped at
+// 16; cases named depth_512/*. Their ms_per_layer beside the flat cases' is the cost of
+// reprojection at 1024 x 1024.
 //
-// Fill cases (FillLayer/*, issue 14's profile of what a layer's pixels cost): the same
-// full-screen layer drawn by a one-texture shader with the formats and blending as variables:
-// target GL_SRGB8_ALPHA8 with GL_FRAMEBUFFER_SRGB (the renderer's) or GL_RGBA8, premultiplied
-// blending or none, texture GL_SRGB8_ALPHA8 (the wall pass's) or GL_RGBA8.
+// Fill cases (FillLayer/*, a profile of what a layer's pixels cost): the same full-screen layer
+// drawn by a one-texture shader with the formats and blending as variables: target
+// GL_SRGB8_ALPHA8 with GL_FRAMEBUFFER_SRGB (the renderer's) or GL_RGBA8, premultiplied blending
+// or none, texture GL_SRGB8_ALPHA8 (the wall pass's) or GL_RGBA8.
 //
 // Compressed textures (FillLayer/compressed/*, walls/texture_blocks.h): the same 512 x 512
 // texture as GL_SRGB8_ALPHA8, as S3TC BC1 and as BC3 (sRGB), drawn in turn within every
@@ -55,7 +55,8 @@ std::vector<scenes::Image> mipChain(int size) {
             for (int x = 0; x < s; ++x) {
                 std::uint8_t* p = &l.rgba[(std::size_t(y) * s + x) * 4];
                 const bool check = ((x * 8 / s) + (y * 8 / s)) % 2 == 0;
-                p[0] = static_cast<std::uint8_t>(x * 255 / s), p[1] = check ? 200 : 60;
+                p[0] = static_cast<std::uint8_t>(x * 255 / s);
+                p[1] = check ? 200 : 60;
                 p[2] = static_cast<std::uint8_t>(y * 255 / s);
             }
         levels.push_back(std::move(l));

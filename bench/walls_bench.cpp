@@ -20,7 +20,9 @@ scenes::SceneDescription hall() {
     d.cells.push_back({"back", {{12, -20}, {12, 0}, {-12, 0}, {-12, -20}}, 0.0});
     scenes::VirtualWall w;
     w.name = "middle";
-    w.lowerLeft = {-12, 0, 0}, w.lowerRight = {12, 0, 0}, w.upperLeft = {-12, 6, 0};
+    w.lowerLeft = {-12, 0, 0};
+    w.lowerRight = {12, 0, 0};
+    w.upperLeft = {-12, 6, 0};
     w.cells = {0, 1};
     d.walls.push_back(w);
     return d;
@@ -89,8 +91,9 @@ void BM_PlanHall(benchmark::State& state) {
 }
 BENCHMARK(BM_PlanHall)->Unit(benchmark::kMillisecond);
 
-// Issue 18: planning time against the hall's size. A W x W hall (W = the argument, metres) cut
-// across by one 8 m high virtual wall W wide; 2000 is a 2 km x 2 km hall, 2000 x 1000 cells.
+// Planning time against the hall's size (hostile input must not make the planner spin). A
+// W x W hall (W = the argument, metres) cut across by one 8 m high virtual wall W wide; 2000
+// is a 2 km x 2 km hall, 2000 x 1000 cells.
 void BM_PlanLargeHall(benchmark::State& state) {
     const double w = double(state.range(0)), half = 0.5 * w;
     scenes::SceneDescription d;
@@ -98,7 +101,9 @@ void BM_PlanLargeHall(benchmark::State& state) {
     d.cells.push_back({"back", {{half, -half}, {half, 0}, {-half, 0}, {-half, -half}}, 0.0});
     scenes::VirtualWall wall;
     wall.name = "middle";
-    wall.lowerLeft = {-half, 0, 0}, wall.lowerRight = {half, 0, 0}, wall.upperLeft = {-half, 8, 0};
+    wall.lowerLeft = {-half, 0, 0};
+    wall.lowerRight = {half, 0, 0};
+    wall.upperLeft = {-half, 8, 0};
     wall.cells = {0, 1};
     d.walls.push_back(wall);
     std::size_t textures = 0;

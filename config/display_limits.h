@@ -1,5 +1,5 @@
 #pragma once
-// Limits on what a display configuration may say beyond its types (issue 18: hostile input).
+// Limits on what a display configuration may say beyond its types (hostile input).
 //
 // - Coordinates: every screen corner, the default head and the calibration's translation lie
 //   within kMaxCoordinate metres of the cave origin on each axis (a 1 km display is already

@@ -45,7 +45,10 @@ int chooseRoot(const std::vector<Placed>& screens) {
         if (s.basis.normal.y > 0.99 && (floor < 0 || s.corners[0].y < screens[floor].corners[0].y)) floor = i;
         int neighbours = 0;
         for (const Placed& o : screens) neighbours += (&o != &s && sharedEdge(s, o)) ? 1 : 0;
-        if (neighbours > bestNeighbours) best = i, bestNeighbours = neighbours;
+        if (neighbours > bestNeighbours) {
+            best = i;
+            bestNeighbours = neighbours;
+        }
     }
     return floor >= 0 ? floor : best;
 }
@@ -148,7 +151,10 @@ FoldoutLayout foldoutLayout(const std::vector<config::Screen>& screens, double p
     const RootPlane plane{placed[root].basis, placed[root].corners[0]};
     glm::dvec2 lo(INFINITY), hi(-INFINITY);
     for (const Placed& s : placed)
-        for (const glm::dvec3& p : s.corners) lo = glm::min(lo, plane.of(s, p)), hi = glm::max(hi, plane.of(s, p));
+        for (const glm::dvec3& p : s.corners) {
+            lo = glm::min(lo, plane.of(s, p));
+            hi = glm::max(hi, plane.of(s, p));
+        }
 
     // Sizes land on whole pixels up to rounding; the tolerance keeps 384.0000001 at 384.
     const glm::dvec2 extent = hi - lo;

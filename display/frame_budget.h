@@ -1,9 +1,10 @@
 #pragma once
-// Frame-time control: the triangle budget of the next frame from the time the last one took,
-// so that frames take about a target time whatever the load and however fast the machine
-// runs at the moment. Funkhouser & Séquin's feedback for time-critical rendering, applied to
-// the frame budget of seed 004 (which the renderer meets by raising its level-of-detail
-// tolerance, gl::WalkthroughOptions): the budget is in time, the renderer's knob in triangles.
+// Frame-time control: the triangle budget of the next frame from the time the last one took, so
+// that frames take about a target time whatever the load and however fast the machine runs at
+// the moment. Funkhouser & Séquin's feedback for time-critical rendering, applied to
+// Maciel & Shirley's (1995) frame budget (which the renderer meets by raising its
+// level-of-detail tolerance, gl::WalkthroughOptions): the budget is in time, the renderer's
+// knob in triangles.
 //
 // Model: a frame of g triangles takes about a + b g milliseconds, a and b unknown and
 // drifting (other tenants slow a shared machine down in phases). Each frame gives a cost per

@@ -74,11 +74,15 @@ double maxPixelsPerRadian(const ViewScreen& screen, std::span<const glm::dvec3> 
         // On or behind the eye plane a point projects anywhere: the whole screen.
         if (!(p.z < 0.0)) return maxPixelsPerRadian(screen);
         const double k = screen.distance / -p.z;
-        x0 = std::min(x0, p.x * k), x1 = std::max(x1, p.x * k);
-        y0 = std::min(y0, p.y * k), y1 = std::max(y1, p.y * k);
+        x0 = std::min(x0, p.x * k);
+        x1 = std::max(x1, p.x * k);
+        y0 = std::min(y0, p.y * k);
+        y1 = std::max(y1, p.y * k);
     }
-    x0 = std::max(x0, screen.left), x1 = std::min(x1, screen.right);
-    y0 = std::max(y0, screen.bottom), y1 = std::min(y1, screen.top);
+    x0 = std::max(x0, screen.left);
+    x1 = std::min(x1, screen.right);
+    y0 = std::max(y0, screen.bottom);
+    y1 = std::min(y1, screen.top);
     if (!(x0 <= x1 && y0 <= y1)) return 0.0;
     return farthestCorner(screen, x0, x1, y0, y1);
 }
@@ -86,7 +90,10 @@ double maxPixelsPerRadian(const ViewScreen& screen, std::span<const glm::dvec3> 
 double nearestDistance(std::span<const glm::dvec3> points) {
     if (points.empty()) return std::numeric_limits<double>::infinity();
     glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-    for (const glm::dvec3& p : points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    for (const glm::dvec3& p : points) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
     const glm::dvec3 outside = glm::max(glm::max(lo, -hi), glm::dvec3(0.0));
     return glm::length(outside);
 }

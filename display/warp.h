@@ -1,5 +1,5 @@
 #pragma once
-// Aliaga & Lastra's geometry warp (seed 002 §2) for textured virtual walls.
+// Aliaga & Lastra's (1997) geometry warp (their section 2) for textured virtual walls.
 //
 // A wall texture is baked with the frustum A = offAxisFrustum(wall, samplingPoint, ...): the
 // wall quad is the "screen", so the texture's NDC square [-1, 1]² is exactly the wall. Drawn at

@@ -1,7 +1,8 @@
 #pragma once
-// The frame-time controller of seed 004's clusters: how many predicted milliseconds the next
-// frame's selection (cluster_tree.h, cluster_frame.h) may spend so that frames take at most a
-// target time, in a stated share of them, whatever the fixed part of a frame costs.
+// The frame-time controller of Maciel & Shirley's (1995) clusters: how many predicted
+// milliseconds the next frame's selection (cluster_tree.h, cluster_frame.h) may spend so that
+// frames take at most a target time, in a stated share of them, whatever the fixed part of a
+// frame costs.
 //
 // Model: a frame takes m = P + e ms, P the predicted cost of what it drew (the selection and
 // its cross-fades, costed at the display's own resolution: walls/gl/cluster_costs.h) and e the

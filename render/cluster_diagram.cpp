@@ -25,7 +25,10 @@ public:
     }
     void set(int x, int y, const std::uint8_t* c) {
         std::uint8_t* p = &image.rgba[(static_cast<std::size_t>(y) * image.width + x) * 4];
-        p[0] = c[0], p[1] = c[1], p[2] = c[2], p[3] = 255;
+        p[0] = c[0];
+        p[1] = c[1];
+        p[2] = c[2];
+        p[3] = 255;
     }
     void fill(const scenes::Bounds& b, const std::uint8_t* c) {
         int x0, y0, x1, y1;

@@ -1,10 +1,11 @@
 #pragma once
-// A top view of the clusters drawn in one frame (seed 004, Figure D), rasterised on the CPU:
-// +x to the right, +z downwards, the model's bounds filling the image with a margin. Every
-// object's footprint is outlined in light grey; what the frame drew is filled: objects as
-// geometry in green, clusters as textured boxes in blue and as average-colour boxes in orange
-// (each cluster box outlined darker); the eye is a black dot. Drawn in that order (later on
-// top); clusters from the largest footprint down, so nested ones stay visible.
+// A top view of the clusters drawn in one frame (as in Maciel & Shirley 1995, Figure D),
+// rasterised on the CPU: +x to the right, +z downwards, the model's bounds filling the image
+// with a margin. Every object's footprint is outlined in light grey; what the frame drew is
+// filled: objects as geometry in green, clusters as textured boxes in blue and as
+// average-colour boxes in orange (each cluster box outlined darker); the eye is a black dot.
+// Drawn in that order (later on top); clusters from the largest footprint down, so nested ones
+// stay visible.
 
 #include "render/cluster_frame.h"
 #include "scenes/scene.h"

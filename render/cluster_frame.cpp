@@ -56,7 +56,8 @@ double viewShare(const scenes::Bounds& world, const glm::dmat4& clipFromWorld) {
     if (behind == 8) return 0.0;                     // all behind the eye
     if (!mayMeet(world, clipFromWorld)) return 0.0;  // beside the view
     if (behind > 0) return 1.0;                      // around the eye's plane: may fill the view
-    lo = glm::clamp(lo, -1.0, 1.0), hi = glm::clamp(hi, -1.0, 1.0);
+    lo = glm::clamp(lo, -1.0, 1.0);
+    hi = glm::clamp(hi, -1.0, 1.0);
     return std::max(0.0, hi.x - lo.x) * std::max(0.0, hi.y - lo.y) / 4.0;
 }
 

@@ -1,9 +1,10 @@
 #pragma once
-// One frame of seed 004's cluster walkthrough, GL-free: from the hierarchy (cluster_tree.h),
-// the measured cost and accuracy of every representation and the frame's views, the NodeFrame
-// of every node (benefit, visibility, representations) and the selection under the frame's
-// budget, returned as plain data the GL executor draws: objects (at full detail, or at the
-// level of detail the renderer picks for them) and cluster boxes (textured or average colour).
+// One frame of Maciel & Shirley's (1995) cluster walkthrough, GL-free: from the hierarchy
+// (cluster_tree.h), the measured cost and accuracy of every representation and the frame's
+// views, the NodeFrame of every node (benefit, visibility, representations) and the selection
+// under the frame's budget, returned as plain data the GL executor draws: objects (at full
+// detail, or at the level of detail the renderer picks for them) and cluster boxes (textured or
+// average colour).
 //
 // Frames: world (bounds, eye) and the cave frame of the views, placed by worldFromCave.
 // Costs in milliseconds.

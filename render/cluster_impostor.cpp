@@ -39,7 +39,8 @@ scenes::Bounds impostorBox(const scenes::Bounds& bounds) {
     for (int a = 0; a < 3; ++a)
         if (size[a] < least) {
             const double c = bounds.centre()[a];
-            box.min[a] = c - 0.5 * least, box.max[a] = c + 0.5 * least;
+            box.min[a] = c - 0.5 * least;
+            box.max[a] = c + 0.5 * least;
         }
     return box;
 }

@@ -1,7 +1,7 @@
 #pragma once
-// Seed 004's impostors of a cluster (Maciel & Shirley, sections 3 and 5.1), GL-free: the
+// Maciel & Shirley's (1995) impostors of a cluster (their sections 3 and 5.1), GL-free: the
 // geometry of a cluster's box, its faces as screens for the project's off-axis projection
-// (display/off_axis.h), the viewing regions of each face (the seed's Figure 3) with the eye a
+// (display/off_axis.h), the viewing regions of each face (the paper's Figure 3) with the eye a
 // face's texture is rendered from, and the average-colour box made from the textures.
 //
 // A textured box has one texture per face and viewing region: the cluster's own objects seen
@@ -61,9 +61,9 @@ glm::dvec3 samplingEye(const scenes::Bounds& box, int face, int region);
 // in proportion (at least 4).
 glm::ivec2 faceResolution(const scenes::Bounds& box, int face, int maxResolution);
 
-// One face of an average-colour box (seed 004, section 5.1): the mean colour of the pixels
-// something covers in the face's centre-region texture, and the share of the face they cover.
-// Drawn as an opaque rectangle of that colour and area, centred on the face.
+// One face of an average-colour box (Maciel & Shirley 1995, section 5.1): the mean colour of
+// the pixels something covers in the face's centre-region texture, and the share of the face
+// they cover. Drawn as an opaque rectangle of that colour and area, centred on the face.
 struct FaceAverage {
     glm::vec3 linearColour{0.0f};   // linear RGB, [0, 1]
     float coverage = 0.0f;          // [0, 1]: covered texels (alpha-weighted) over all texels
@@ -75,7 +75,7 @@ struct FaceAverage {
 FaceAverage faceAverage(const scenes::Image& straight);
 
 // The rectangle an average face covers: the face's quad scaled about its centre by
-// sqrt(coverage) on both sides (the seed's "average area").
+// sqrt(coverage) on both sides (Maciel & Shirley's "average area").
 display::ScreenQuad averageFaceQuad(const display::ScreenQuad& face, float coverage);
 
 // Directions (unit, world, from the cluster's centre towards the eye) from which a cluster's

@@ -138,7 +138,10 @@ ClusterSelection selectClusters(const ClusterTree& tree, const std::vector<NodeF
         for (std::size_t r = 0; r < reps.size(); ++r) {
             const double ratio = reps[r].costMs > 0.0 ? reps[r].accuracy / reps[r].costMs
                                                       : std::numeric_limits<double>::infinity();
-            if (ratio > best) best = ratio, initial[n] = static_cast<int>(r);
+            if (ratio > best) {
+                best = ratio;
+                initial[n] = static_cast<int>(r);
+            }
         }
         if (initial[n] >= 0) cost[n] = std::max(0.0, reps[initial[n]].costMs);
     }

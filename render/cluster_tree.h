@@ -1,10 +1,10 @@
 #pragma once
-// Seed 004 (Maciel & Shirley): the model hierarchy of textured clusters and the per-frame
-// selection of one representation per root-to-leaf path under a frame-time budget. GL-free: the
-// hierarchy is built from object bounds, the selection from numbers the caller measures (cost
-// per representation on this machine, accuracy per representation and view direction) and
-// from the frame's benefit and visibility per object. Drawing the chosen representations
-// (objects at a level of detail, textured or average-colour boxes) is the renderer's.
+// Maciel & Shirley (1995): the model hierarchy of textured clusters and the per-frame selection
+// of one representation per root-to-leaf path under a frame-time budget. GL-free: the hierarchy
+// is built from object bounds, the selection from numbers the caller measures (cost per
+// representation on this machine, accuracy per representation and view direction) and from the
+// frame's benefit and visibility per object. Drawing the chosen representations (objects at a
+// level of detail, textured or average-colour boxes) is the renderer's.
 //
 // Units: bounds in the world (metres); costs in milliseconds.
 
@@ -34,19 +34,19 @@ struct ClusterTree {
     glm::ivec3 divisions{1};         // the finest grid's cells per axis
 };
 
-// Builds the hierarchy bottom up, as the seed's section 4.4 does: the leaves are the objects
-// (`objectBounds[i]` in the world; empty bounds are left out of every cluster); the finest grid
-// splits the model's bounds into `divisions` cells per axis (each >= 1), and every coarser level
-// merges 2 x 2 x 2 cells until one cell covers the model. At each level, a cell whose bounds
-// entirely contain two or more entries of the current child list becomes a cluster of them
-// (those entries leave the list, the cluster joins it); a cell holding one entry or none makes
-// nothing, so objects on cell borders are clustered higher up. The top level's single cell
-// takes whatever is left, so every non-empty object ends under the root. Deterministic: the
-// same input gives the same tree.
+// Builds the hierarchy bottom up, as Maciel & Shirley's section 4.4 does: the leaves are the
+// objects (`objectBounds[i]` in the world; empty bounds are left out of every cluster); the
+// finest grid splits the model's bounds into `divisions` cells per axis (each >= 1), and every
+// coarser level merges 2 x 2 x 2 cells until one cell covers the model. At each level, a cell
+// whose bounds entirely contain two or more entries of the current child list becomes a cluster
+// of them (those entries leave the list, the cluster joins it); a cell holding one entry or
+// none makes nothing, so objects on cell borders are clustered higher up. The top level's
+// single cell takes whatever is left, so every non-empty object ends under the root.
+// Deterministic: the same input gives the same tree.
 ClusterTree buildClusterTree(const std::vector<scenes::Bounds>& objectBounds, glm::ivec3 divisions);
 
-// One drawable representation of a node (seed 004, section 4.1): its measured cost and its
-// accuracy in [0, 1] (1: the full-detail image) from the current view.
+// One drawable representation of a node (Maciel & Shirley 1995, section 4.1): its measured cost
+// and its accuracy in [0, 1] (1: the full-detail image) from the current view.
 struct Representation {
     int id = 0;                   // the caller's (e.g. level of detail, or textured/average box)
     double costMs = 0.0;          // >= 0
@@ -73,11 +73,11 @@ struct ClusterSelection {
     int clusters = 0, leaves = 0; // drawn items of each kind
 };
 
-// Temporal coherence (seed 004, section 4.6): a cluster is replaced by its children only after
-// the traversal has wanted to in more than `threshold` consecutive frames; refined in one frame,
-// it may stay refined in the next without waiting again. Going back from children to the
-// cluster is never delayed (as in the seed: the frame time is spent by then). One per
-// walkthrough, kept across frames; selectClusters calls beginFrame.
+// Temporal coherence (Maciel & Shirley 1995, section 4.6): a cluster is replaced by its
+// children only after the traversal has wanted to in more than `threshold` consecutive frames;
+// refined in one frame, it may stay refined in the next without waiting again. Going back from
+// children to the cluster is never delayed (as in the paper: the frame time is spent by then).
+// One per walkthrough, kept across frames; selectClusters calls beginFrame.
 class ClusterCoherence {
 public:
     explicit ClusterCoherence(int threshold = 3) : _threshold(threshold) {}
@@ -94,17 +94,17 @@ private:
     std::vector<long> _refined;       // per node: the last frame it was refined in
 };
 
-// The two passes of seed 004, section 4.5. Pass 1 (depth first): each node's benefit is its own
-// (a leaf) or its children's largest, it is visible when any child is, its initial
-// representation is the one with the highest accuracy per cost, and the children's cost is
-// the sum of their initial representations'. Pass 2 (best first, from the root, visiting nodes
-// in decreasing benefit): invisible nodes are dropped with their cost; a cluster is replaced by
-// its visible children when the frame's total minus its own cost plus theirs stays within
-// `budgetMs` (and `coherence`, when given, allows it; a cluster whose initial representation has
-// accuracy 0 or that has none is refined without asking it, and also over the budget when its
-// visible children cost no more than it does), else drawn; a leaf moves up to the most
-// accurate representation whose extra cost still fits. Throws nothing; nodes without a
-// representation are drawn as nothing. `frame` has one entry per node of `tree`.
+// The two passes of Maciel & Shirley 1995, section 4.5. Pass 1 (depth first): each node's
+// benefit is its own (a leaf) or its children's largest, it is visible when any child is, its
+// initial representation is the one with the highest accuracy per cost, and the children's cost
+// is the sum of their initial representations'. Pass 2 (best first, from the root, visiting
+// nodes in decreasing benefit): invisible nodes are dropped with their cost; a cluster is
+// replaced by its visible children when the frame's total minus its own cost plus theirs stays
+// within `budgetMs` (and `coherence`, when given, allows it; a cluster whose initial
+// representation has accuracy 0 or that has none is refined without asking it, and also over
+// the budget when its visible children cost no more than it does), else drawn; a leaf moves up
+// to the most accurate representation whose extra cost still fits. Throws nothing; nodes
+// without a representation are drawn as nothing. `frame` has one entry per node of `tree`.
 ClusterSelection selectClusters(const ClusterTree& tree, const std::vector<NodeFrame>& frame, double budgetMs,
                                 ClusterCoherence* coherence = nullptr);
 

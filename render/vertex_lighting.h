@@ -8,7 +8,7 @@
 // eye. Per pixel this costs llvmpipe a normal and a position varying per vertex, their set-up
 // per triangle and a normalisation per fragment; per vertex (Gouraud) the vertex shader
 // evaluates the light and hands the fragment stage one colour. On the 1 M-triangle box hall at
-// 1024², drawing everything per vertex took 11-14 % less time (README, "the draw path").
+// 1024², drawing everything per vertex took 11-14 % less time (docs/levels-of-detail.md).
 //
 // Per vertex is used only where it is provably invisible. For a triangle whose vertex normals
 // all equal its face normal (up to sign; the mesh is "flat" there) and whose vertex colours are

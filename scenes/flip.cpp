@@ -68,7 +68,9 @@ private:
         for (int x = 0; x < _image.width; ++x) {
             const std::uint8_t* p = &_image.rgba[(static_cast<std::size_t>(y) * _image.width + x) * 4];
             const glm::dvec3 o = opponentFromLinear({_decode[p[0]], _decode[p[1]], _decode[p[2]]});
-            yy[x] = static_cast<float>(o.x), cx[x] = static_cast<float>(o.y), cz[x] = static_cast<float>(o.z);
+            yy[x] = static_cast<float>(o.x);
+            cx[x] = static_cast<float>(o.y);
+            cz[x] = static_cast<float>(o.z);
         }
     }
 
@@ -212,7 +214,9 @@ void summarise(FlipResult& result) {
     result.mean = sum / static_cast<double>(result.errors.size());
     constexpr std::array<double, 3> kQs{0.5, 0.95, 1.0};
     const std::vector<double> p = percentiles(result.errors, kQs);
-    result.p50 = p[0], result.p95 = p[1], result.max = p[2];
+    result.p50 = p[0];
+    result.p95 = p[1];
+    result.max = p[2];
 }
 
 }  // namespace

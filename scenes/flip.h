@@ -36,16 +36,15 @@
 //
 // FLIP = colourError^(1 - featureError): a feature difference pulls the colour error towards 1.
 //
-// Checked against the paper (issue 14; its text as summarised in public notes on it, and the
-// constants of NVIDIA's published reference header, read for the numbers only): the CSF terms
-// (a, b) = (1, 0.0047), (1, 0.0053), (34.1, 0.04) + (13.5, 0.025) (the reference lists the
-// single-term channels with a second term of weight 0), the CSF kernel radius ceil(3 sigma_max
-// ppd) with sigma_max from b = 0.04, qc = 0.7, pc = 0.4, pt = 0.95, w = 0.082 degrees,
-// qf = 0.5, the feature sigma 0.5 w ppd and radius ceil(3 sigma), the Hunt factor 0.01 L*,
-// HyAB, FLIP = colour^(1 - feature), and the default 67 ppd (0.7 m, 3840 px, 0.7 m wide) all
-// agree with what is written above; the paper's cmax, HyAB(Hunt green, Hunt blue) = 203 raised
-// to 0.7 = 41.3, is what flipColorError computes (tests/scenes/flip_test.cpp). Nothing needed
-// fixing.
+// Checked against the paper (its text as summarised in public notes on it, and the constants of
+// NVIDIA's published reference header, read for the numbers only): the CSF terms (a, b) =
+// (1, 0.0047), (1, 0.0053), (34.1, 0.04) + (13.5, 0.025) (the reference lists the single-term
+// channels with a second term of weight 0), the CSF kernel radius ceil(3 sigma_max ppd) with
+// sigma_max from b = 0.04, qc = 0.7, pc = 0.4, pt = 0.95, w = 0.082 degrees, qf = 0.5, the
+// feature sigma 0.5 w ppd and radius ceil(3 sigma), the Hunt factor 0.01 L*, HyAB, FLIP =
+// colour^(1 - feature), and the default 67 ppd (0.7 m, 3840 px, 0.7 m wide) all agree with what
+// is written above; the paper's cmax, HyAB(Hunt green, Hunt blue) = 203 raised to 0.7 = 41.3,
+// is what flipColorError computes (tests/scenes/flip_test.cpp). Nothing needed fixing.
 //
 // Choices where the paper leaves room (this code may differ from NVIDIA's reference code here):
 //  - Linear RGB to XYZ: the sRGB (IEC 61966-2-1) matrix to 7 digits; the reference derives

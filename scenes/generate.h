@@ -3,14 +3,15 @@
 // the same Scene, description and file bytes (no clocks, no platform-dependent distributions).
 //
 //  - plant: an 80 m x 40 m x 8 m production hall (machine tools, robots, pipe racks, conveyors,
-//    cabinets; sparsely occluding each other as in Ebbesmeyer's seed 000), cut by 37 virtual
-//    walls into 24 cells of 10 m (three rows of eight bays). Default: at least 2 M drawn
+//    cabinets; sparsely occluding each other as in Ebbesmeyer's (1997) test scene), cut by 37
+//    virtual walls into 24 cells of 10 m (three rows of eight bays). Default: at least 2 M drawn
 //    triangles; meshes are shared by instances. Targets of 3 M and more make the hall longer
 //    (8 bays per 2 M triangles: 32 M is 1.28 km with 384 cells), not its cells heavier.
 //  - house: a 16 m x 12 m house of six rooms with real walls and doorways; every doorway is a
-//    portal wall (seed 002); cells are the rooms. Default: at least 200 k drawn triangles.
+//    portal wall (Aliaga & Lastra's (1997) portal textures); cells are the rooms. Default: at
+//    least 200 k drawn triangles.
 //  - boxes (generateBoxHall): a 60 m x 8 m x 30 m hall of random axis-aligned boxes for comparing
-//    draw paths with other viewers (issue 20): one mesh, one primitive, one object, one material;
+//    draw paths with other viewers: one mesh, one primitive, one object, one material;
 //    24 vertices and 12 triangles per box, per-face normals, no colours or texture coordinates;
 //    edges uniform in [kBoxHallMinEdge, kBoxHallMaxEdge) m, every box inside the hall. Default:
 //    1 M triangles (ceil(triangles / 12) boxes). No cells or walls.

@@ -1,5 +1,5 @@
-// The box hall: a peer-comparison mesh (issue 20) that any viewer draws the same way, so a
-// measured frame time compares draw paths and not scene handling.
+// The box hall: a peer-comparison mesh that any viewer draws the same way, so a measured frame
+// time compares draw paths and not scene handling.
 #include "scenes/generate.h"
 #include "scenes/generate_parts.h"
 #include "scenes/mesh_tools.h"

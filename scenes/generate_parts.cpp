@@ -256,7 +256,10 @@ std::vector<Mesh> meshesForTarget(const std::vector<Placement>& placements, std:
     // Triangles grow with the detail: the smallest level that reaches the target, bracketed by
     // doubling (large levels are slow to build) and then bisected.
     int lo = 1, hi = 1;
-    while (hi < 256 && drawn(kinds(hi)) < target) lo = hi + 1, hi = std::min(256, 2 * hi);
+    while (hi < 256 && drawn(kinds(hi)) < target) {
+        lo = hi + 1;
+        hi = std::min(256, 2 * hi);
+    }
     while (lo < hi) {
         const int mid = (lo + hi) / 2;
         if (drawn(kinds(mid)) >= target) hi = mid;

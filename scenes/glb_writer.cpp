@@ -65,7 +65,10 @@ struct Builder {
         auto& pos = model.accessors.back();  // glTF requires min/max on POSITION
         for (int k = 0; k < 3 && !m.positions.empty(); ++k) {
             float lo = m.positions[0][k], hi = lo;
-            for (const glm::vec3& v : m.positions) lo = std::min(lo, v[k]), hi = std::max(hi, v[k]);
+            for (const glm::vec3& v : m.positions) {
+                lo = std::min(lo, v[k]);
+                hi = std::max(hi, v[k]);
+            }
             pos.minValues.push_back(lo);
             pos.maxValues.push_back(hi);
         }

@@ -37,7 +37,10 @@ PooledErrorSummary PooledError::summary() const {
     std::vector<double> psnr;
     double cappedSum = 0.0;
     for (const Frame& f : _frames) {
-        if (f.psnrDb < s.worstFramePsnrDb || s.worstFrame < 0) s.worstFramePsnrDb = f.psnrDb, s.worstFrame = f.id;
+        if (f.psnrDb < s.worstFramePsnrDb || s.worstFrame < 0) {
+            s.worstFramePsnrDb = f.psnrDb;
+            s.worstFrame = f.id;
+        }
         psnr.push_back(f.psnrDb);
         cappedSum += std::min(f.psnrDb, kQuantisationPsnrDb);
     }

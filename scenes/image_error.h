@@ -11,7 +11,7 @@
 // frame it is in, and a frame equal to its reference adds samples but no error. The mean of
 // per-frame PSNRs is not used for ranking: a frame equal to its reference has infinite PSNR, so
 // it must be capped, and the capped values (58.9 dB for identical frames) lift the mean far
-// above what the bad frames show (issue 14: a control that drops whole cells scored 37 dB).
+// above what the bad frames show (a control that drops whole cells scored 37 dB by that mean).
 
 #include "scenes/scene.h"
 
@@ -36,7 +36,8 @@ struct SquaredError {
     double mse() const { return samples > 0 ? sum / static_cast<double>(samples) : 0.0; }
     double psnrDb() const { return psnrFromMse(mse()); }
     SquaredError& operator+=(const SquaredError& o) {
-        sum += o.sum, samples += o.samples;
+        sum += o.sum;
+        samples += o.samples;
         return *this;
     }
 };

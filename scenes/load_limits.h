@@ -1,5 +1,5 @@
 #pragma once
-// Limits the loaders enforce on where files put things (issue 18: hostile input).
+// Limits the loaders enforce on where files put things (hostile input).
 
 #include "scenes/scene.h"
 

@@ -72,7 +72,10 @@ public:
             if (n.count > 0) {
                 for (int i = n.first; i < n.first + n.count; ++i) {
                     const double d = distanceToTriangle(p, _triangles[i]);
-                    if (d < best) best = d, hint = i;
+                    if (d < best) {
+                        best = d;
+                        hint = i;
+                    }
                 }
                 if (best <= enough) return best;
                 continue;
@@ -106,8 +109,10 @@ private:
         n.lo = glm::dvec3(std::numeric_limits<double>::infinity());
         n.hi = -n.lo;
         for (int k = begin; k < end; ++k)
-            for (const glm::dvec3& v : {_triangles[order[k]].a, _triangles[order[k]].b, _triangles[order[k]].c})
-                n.lo = glm::min(n.lo, v), n.hi = glm::max(n.hi, v);
+            for (const glm::dvec3& v : {_triangles[order[k]].a, _triangles[order[k]].b, _triangles[order[k]].c}) {
+                n.lo = glm::min(n.lo, v);
+                n.hi = glm::max(n.hi, v);
+            }
         if (end - begin <= kLeafSize) {
             n.first = begin;
             n.count = end - begin;

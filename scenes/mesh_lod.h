@@ -1,9 +1,9 @@
 #pragma once
 // Levels of detail: coarser index lists over a mesh's own vertices, each with the geometric
 // error it costs, and the per-frame choice of a level for every drawn object under a pixel
-// tolerance and an optional triangle budget (Maciel & Shirley's frame budget, seed 004 §4:
-// the representation of every object is chosen so that the frame's cost stays within the
-// budget while the accuracy lost is as small as possible).
+// tolerance and an optional triangle budget (Maciel & Shirley's (1995) frame budget, their
+// section 4: the representation of every object is chosen so that the frame's cost stays within
+// the budget while the accuracy lost is as small as possible).
 //
 // Levels come from meshoptimizer's edge-collapse simplifier. It keeps a subset of the mesh's
 // vertices (never moves one) and keeps seams (vertices split by normal or texture coordinates)

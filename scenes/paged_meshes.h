@@ -1,5 +1,5 @@
 #pragma once
-// Which meshes geometry paging loads together (cavewall issue 15), GL-free. Paging is by cell
+// Which meshes geometry paging loads together, GL-free. Paging is by cell
 // (scenes::pagedWithCell), but a CAD export shares meshes between cells (one mesh per part
 // kind, placed in many bays): storing a mesh once per cell would make the paged model larger
 // than the whole one. So the paged meshes are grouped by the exact set of cells whose objects

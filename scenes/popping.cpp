@@ -56,7 +56,10 @@ std::optional<double> PoppingMeter::addFrame(std::int64_t frameId, const Image& 
     std::optional<double> popping;
     if (_previousTest) {
         popping = framePairPopping(*_previousTest, *_previousReference, test, reference, _options);
-        if (*popping > _summary.peak || _summary.peakFrame < 0) _summary.peak = *popping, _summary.peakFrame = frameId;
+        if (*popping > _summary.peak || _summary.peakFrame < 0) {
+            _summary.peak = *popping;
+            _summary.peakFrame = frameId;
+        }
         _sumSquares += *popping * *popping;
         ++_summary.pairs;
         _summary.rms = std::sqrt(_sumSquares / static_cast<double>(_summary.pairs));

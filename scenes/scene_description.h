@@ -1,8 +1,8 @@
 #pragma once
 // A scene description (scenes/<name>/scene.json) as plain data: which glTF files make the
 // scene, where they go, which objects are structure, and how the model is cut into cells by
-// virtual walls (Ebbesmeyer's textured virtual walls, seed 000) and portals (Aliaga & Lastra's
-// portal textures, seed 002). Parsing and validation live in scene_description_io.h.
+// virtual walls (Ebbesmeyer's (1997) textured virtual walls) and portals (Aliaga & Lastra's
+// (1997) portal textures). Parsing and validation live in scene_description_io.h.
 //
 // Frames: world (config/conventions.h): metres, +Y up. Floor regions are polygons in the
 // (x, z) plane seen from above, counter-clockwise when viewed from +Y (i.e. going from +x

@@ -1,6 +1,6 @@
 #pragma once
 // Reading and checking scene.json files (format documented in scene_description_io.cpp's
-// header comment and in the README).
+// header comment and in docs/scenes.md).
 
 #include "scenes/scene_description.h"
 

@@ -41,9 +41,12 @@ void verticalMoments(const PlaneDouble& a, const PlaneDouble& b, int row, std::s
         const double* pb = &b.values[offset];
         const double w = k[t];
         for (int i = 0; i < a.width; ++i) {
-            m.x[i] += w * pa[i], m.y[i] += w * pb[i];
+            m.x[i] += w * pa[i];
+            m.y[i] += w * pb[i];
             // w * (a b), not (w a) b: the product is the same whichever image is a (symmetry).
-            m.xx[i] += w * (pa[i] * pa[i]), m.yy[i] += w * (pb[i] * pb[i]), m.xy[i] += w * (pa[i] * pb[i]);
+            m.xx[i] += w * (pa[i] * pa[i]);
+            m.yy[i] += w * (pb[i] * pb[i]);
+            m.xy[i] += w * (pa[i] * pb[i]);
         }
     }
 }

@@ -34,8 +34,8 @@ const char* const kDemoUsage =
     "lod/ and geometry/ (CSV files, the saved frames), worst_frame.png (the frame with the worst\n"
     "FLIP image: walls | full geometry | FLIP map, each as a fold-out) and report.md.\n"
     "Headless without $DISPLAY, windowed otherwise. Walls are planned with alpha 10 degrees\n"
-    "(the seeds' recommendation), zones of at least 2 m and 2 texels per degree (2,142\n"
-    "textures: about 10 s to bake on 2 cores the first time).\n"
+    "(Ebbesmeyer 1997 used 10 and advises at most 15), zones of at least 2 m and 2 texels per\n"
+    "degree (2,142 textures: about 10 s to bake on 2 cores the first time).\n"
     "--texture-format: storage of the baked wall colour, as for `cavewall bake` (default\n"
     DEFAULT_TEXTURE_FORMAT ").\n";
 

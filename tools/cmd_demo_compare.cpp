@@ -29,7 +29,10 @@ double pixelsPerDegree(const display::Display& display, int screen, glm::dvec3 h
 scenes::Image sideBySide(const std::vector<const scenes::Image*>& images) {
     constexpr int kGap = 16;
     int width = 0, height = 0;
-    for (const scenes::Image* i : images) width += i->width + kGap, height = std::max(height, i->height);
+    for (const scenes::Image* i : images) {
+        width += i->width + kGap;
+        height = std::max(height, i->height);
+    }
     width -= kGap;
     scenes::Image out{"worst_frame", width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 4)};
     for (std::size_t p = 0; p < out.rgba.size(); p += 4) out.rgba[p] = 24, out.rgba[p + 1] = 24, out.rgba[p + 2] = 28, out.rgba[p + 3] = 255;

@@ -32,11 +32,11 @@ const char* const kPlanUsage =
     "zone can be proven is geometry). --blend: blend strip width in metres (default 0.2).\n"
     "--ppd: texel density target in pixels per degree at each texture's nearest eye (default 10,\n"
     "at most 4096 texels per side), used for the texel and memory estimates.\n"
-    "--walls depth: plans depth walls (issue 16) with the depth reprojection's own bound instead of\n"
+    "--walls depth: plans depth walls with the depth reprojection's own bound instead of\n"
     "the flat one: per texture, over every eye of its zones, the displacement of any drawn pixel\n"
     "from its surface's true direction: the smaller of a bound from the wall's depth span (nearest\n"
     "to farthest baked box corner behind the plane) and the angle the span's part of a sampling\n"
-    "ray subtends at the eye, each with the texel size added (proofs in walls/depth_wall.h). Depth\n"
+    "ray subtends at the eye, each with the texel size added (proofs in docs/depth-walls.md). Depth\n"
     "walls keep the flat walls' geometry strip. The JSON's \"textures\" list each texture's bound\n"
     "(maxError, radians) for the kind planned.\n";
 

@@ -85,12 +85,18 @@ int runWalls(const std::vector<std::string>& words) {
             const glm::dvec3 size = o.worldBounds.size();
             const auto triangles = static_cast<double>(scene.meshes[o.mesh].triangleCount());
             all += triangles;
-            if (std::max(size.x, size.z) > 2.0 * options.minCellSize && triangles >= 1024) ++widest, wide += triangles;
+            if (std::max(size.x, size.z) > 2.0 * options.minCellSize && triangles >= 1024) {
+                ++widest;
+                wide += triangles;
+            }
         }
         if (widest > 0 && wide >= 0.25 * all) {
             int models = 0;
             for (scenes::ModelFile& m : base.models)
-                if (m.splitMetres <= 0.0) m.splitMetres = split, ++models;
+                if (m.splitMetres <= 0.0) {
+                    m.splitMetres = split;
+                    ++models;
+                }
             if (models > 0) {
                 const std::size_t before = scene.objects.size();
                 scene = scenes::loadScene(base);

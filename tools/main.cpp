@@ -60,7 +60,7 @@ int dispatch(int argc, char** argv) {
 // back in, zeroed: a quarter of the process's time went to page faults in a profile of
 // `draw-bench` on the 100 k-triangle box hall, and its CPU time per frame fell from 116 ms to
 // 31 ms (culled) and from 230 to 47 ms (culling off) with trimming disabled, 1024 x 1024
-// (README, "The draw path"). The cost: the resident size stays at its peak.
+// (docs/benchmarking.md). The cost: the resident size stays at its peak.
 void keepFreedMemory() {
 #ifdef __GLIBC__
     mallopt(M_TRIM_THRESHOLD, 1 << 30);   // trim only when over 1 GiB is free at a heap's top

@@ -1,5 +1,5 @@
 #!/bin/sh
-# The peer comparison of issue 20: cavewall's draw path against OpenSceneGraph's stock viewer
+# The peer comparison: cavewall's draw path against OpenSceneGraph's stock viewer
 # (osgviewer) on the same generated box hall, same view and resolution, interleaved rounds.
 #
 #   tools/osg-compare.sh [--cavewall EXE] [--out DIR] [--rounds N] [--frames N] [--sizes "T1 T2 ..."]

@@ -141,7 +141,11 @@ double sampledMaximum(const Rect& r, glm::dvec3 a, glm::dvec3 b) {
         for (int j = 0; j <= kGrid; ++j) {
             const double s = r.width * i / kGrid, t = r.height * j / kGrid;
             const double v = subtended(rectPoint(r, s, t), a, b);
-            if (v > best) best = v, bs = s, bt = t;
+            if (v > best) {
+                best = v;
+                bs = s;
+                bt = t;
+            }
         }
     double step = std::max(r.width, r.height) / kGrid;
     while (step > 1e-9 * (1.0 + std::max(r.width, r.height))) {
@@ -150,7 +154,12 @@ double sampledMaximum(const Rect& r, glm::dvec3 a, glm::dvec3 b) {
         for (const auto& d : ds) {
             const double s = std::clamp(bs + d[0] * step, 0.0, r.width), t = std::clamp(bt + d[1] * step, 0.0, r.height);
             const double v = subtended(rectPoint(r, s, t), a, b);
-            if (v > best) best = v, bs = s, bt = t, moved = true;
+            if (v > best) {
+                best = v;
+                bs = s;
+                bt = t;
+                moved = true;
+            }
         }
         if (!moved) step *= 0.5;
     }
@@ -286,7 +295,10 @@ double refineFiniteDepth(const ZoneVolume& zone, glm::dvec3 s, const ScreenQuad&
         for (double y : {zone.heightRange.x, zone.heightRange.y})
             lower = std::max(lower, maxAngularError({p.x, y, p.y}, s, wall, depth));
     glm::dvec3 lo(kInfiniteDepth), hi(-kInfiniteDepth);
-    for (const glm::dvec2& p : zone.floor) lo = glm::min(lo, {p.x, zone.heightRange.x, p.y}), hi = glm::max(hi, {p.x, zone.heightRange.y, p.y});
+    for (const glm::dvec2& p : zone.floor) {
+        lo = glm::min(lo, {p.x, zone.heightRange.x, p.y});
+        hi = glm::max(hi, {p.x, zone.heightRange.y, p.y});
+    }
     auto cmp = [](const Box& x, const Box& y) { return x.bound < y.bound; };
     std::priority_queue<Box, std::vector<Box>, decltype(cmp)> queue(cmp);
     if (auto box = evaluate(lo, hi)) queue.push(*box);

@@ -97,10 +97,10 @@ double zoneDepthBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const Sc
 bool zoneWithinDepth(const ZoneVolume& zone, glm::dvec3 samplingPoint, const ScreenQuad& wall, double depthBehind,
                      double alpha);
 
-// The seeds' 2D rule (Ebbesmeyer, seed 000 eq. 2-4; seed 003): eye at the sampling height,
-// moving parallel to the wall by halfWidth at distance x from the wall point: error
-// atan(halfWidth / x); minimum zone distance x_Tmin = halfWidth / tan(alpha); a wall (or scene)
-// of width z_G needs n_T = z_G / (2 halfWidth) textures.
+// Ebbesmeyer's (1997) 2D rule (his eq. 2-4): eye at the sampling height, moving parallel to the
+// wall by halfWidth at distance x from the wall point: error atan(halfWidth / x); minimum zone
+// distance x_Tmin = halfWidth / tan(alpha); a wall (or scene) of width z_G needs
+// n_T = z_G / (2 halfWidth) textures.
 double seedError2D(double halfWidth, double distance);
 double seedMinDistance(double halfWidth, double alpha);
 int seedTextureCount(double sceneWidth, double minDistance, double alpha);

@@ -1,6 +1,6 @@
 #pragma once
-// Automatic virtual walls (issue 19, seed 000's future work): cells and virtual walls proposed
-// for a model nobody prepared. GL-free.
+// Automatic virtual walls (the future work Ebbesmeyer 1997 names): cells and virtual walls
+// proposed for a model nobody prepared. GL-free.
 //
 // 1. Structure. An object is structure when its node name matches one of the description's
 //    structure patterns or it is a large plane: its bounding box is thinner than
@@ -40,7 +40,7 @@
 //    cell's wall sides; E[ms] and meanCellTriangles are the means over the eyes.
 //    The costs per triangle and per texture are inputs: measure them on the target machine
 //    (`cavewall bench`'s full-geometry and walls rows give both); the defaults are this
-//    project's llvmpipe figures at 1024 x 1024 per screen (README, issue 14's table).
+//    project's llvmpipe figures at 1024 x 1024 per screen (docs/virtual-walls.md).
 // Deterministic: the same scene and options give the same description, byte for byte.
 
 #include "scenes/scene.h"

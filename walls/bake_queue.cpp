@@ -32,7 +32,10 @@ std::optional<int> BakeQueue::peek(bool nowOnly) const {
     double bestCost = std::numeric_limits<double>::infinity();
     for (const auto& [id, s] : _missing) {
         const double cost = glm::distance(s, eye) - kAheadWeight * glm::dot(s - eye, _direction);
-        if (cost < bestCost) bestCost = cost, best = id;  // map order: ties keep the lower id
+        if (cost < bestCost) {  // map order: ties keep the lower id
+            bestCost = cost;
+            best = id;
+        }
     }
     if (best < 0) return std::nullopt;
     return best;

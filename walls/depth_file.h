@@ -9,7 +9,7 @@
 // 10 m, 8 cm at 100 m. The depth walls' bounds (depth_wall.h) hold for any stored depth inside
 // the wall's depth span, so the loader clamps decoded depths to the texture's baked range
 // (clampDepths), which lies inside the span; only the image (the hit positions, by far less than
-// a texel) sees the rounding. Files of 32-bit float depths (before December 2026) are read as
+// a texel) sees the rounding. Older files of 32-bit float depths are read as
 // they are. Written atomically beside the colour file, named after it (depthFileName), listed
 // with its own size and hash in the manifest (walls/bake_manifest.h BakedTexture::depthFile).
 

@@ -58,14 +58,18 @@ WallFrame wallFrame(const display::ScreenQuad& quad) {
     f.x = u / w;
     f.y = v / h;
     f.behind = -glm::normalize(n);  // the front (cross(x, y)) faces the viewer
-    f.width = w, f.height = h;
+    f.width = w;
+    f.height = h;
     return f;
 }
 
 glm::dvec2 depthRange(const DepthImage& image) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (float d : image.depth)
-        if (std::isfinite(d)) lo = std::min(lo, double(d)), hi = std::max(hi, double(d));
+        if (std::isfinite(d)) {
+            lo = std::min(lo, double(d));
+            hi = std::max(hi, double(d));
+        }
     return hi < lo ? glm::dvec2(0.0) : glm::dvec2(lo, hi);
 }
 
@@ -101,9 +105,11 @@ TextureRect depthDrawRect(const WallFrame& frame, glm::dvec3 e, glm::dvec3 s, co
                 const glm::dvec2 T = toWall(u, t);
                 const glm::dvec2 c = T + (d / ds) * (T - glm::dvec2(s));           // the content corner
                 const glm::dvec2 p = glm::dvec2(e) + (de / (de + d)) * (c - glm::dvec2(e));  // seen from E
-                lo = glm::min(lo, p), hi = glm::max(hi, p);
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
             }
-    lo -= margin, hi += margin;
+    lo -= margin;
+    hi += margin;
     const glm::dvec2 a = glm::clamp(lo / size, 0.0, 1.0), b = glm::clamp(hi / size, 0.0, 1.0);
     // Back to fractions with t down.
     const TextureRect r{glm::dvec2(a.x, 1.0 - b.y), glm::dvec2(b.x, 1.0 - a.y)};
@@ -247,7 +253,8 @@ ReprojectHit reproject(const DepthImage& image, const WallFrame& f, glm::dvec3 e
         const double sigma = s0 + (s1 - s0) * i / steps;
         const float d = stored(sigma);
         if (hitsDepth(sigma, d, ds)) {
-            hi = sigma, depthHi = d;
+            hi = sigma;
+            depthHi = d;
             break;
         }
         lo = sigma;
@@ -261,10 +268,12 @@ ReprojectHit reproject(const DepthImage& image, const WallFrame& f, glm::dvec3 e
     for (int r = 0; r < settings.refine && hi > lo && wide(); ++r) {
         const double mid = 0.5 * (lo + hi);
         const float d = stored(mid);
-        if (hitsDepth(mid, d, ds))
-            hi = mid, depthHi = d;
-        else
+        if (hitsDepth(mid, d, ds)) {
+            hi = mid;
+            depthHi = d;
+        } else {
             lo = mid;
+        }
     }
     const TexelCrossing c = hi > lo ? texelCrossing(image, ta, tb, ds, lo, hi, depthHi) : TexelCrossing{hi, depthHi};
     return {true, at(c.sigma), depthAt(c.sigma), double(c.depth)};
@@ -416,8 +425,10 @@ double depthZoneSearch(const ZoneVolume& zone, glm::dvec3 samplingPoint, const d
             const glm::dvec3 e = f.toWall({p.x, y, p.y});
             if (!(e.z * s.z > 0.0)) return kPi;  // on the plane or the other side
             eyes.push_back({e.x, e.y, std::abs(e.z)});
-            dmin = std::min(dmin, std::abs(e.z)), dmax = std::max(dmax, std::abs(e.z));
-            eyeLo = glm::min(eyeLo, glm::dvec2(e)), eyeHi = glm::max(eyeHi, glm::dvec2(e));
+            dmin = std::min(dmin, std::abs(e.z));
+            dmax = std::max(dmax, std::abs(e.z));
+            eyeLo = glm::min(eyeLo, glm::dvec2(e));
+            eyeHi = glm::max(eyeHi, glm::dvec2(e));
         }
     const double texel = 0.5 * texelDiagonal * std::max(1.0 / dmin, 1.0 / ds);
     const glm::dvec2 sp = widened(span, ds);

@@ -1,8 +1,8 @@
 #pragma once
-// Depth walls (issue 16): a wall texture that also stores, per texel, how far behind the wall
-// plane the surface seen through that texel lies, so that it can be reprojected to any eye.
-// GL-free: the wall frame, the depth encoding, the reference reprojection (the algorithm the
-// depth wall pass runs per pixel, walls/gl/depth_wall_pass.h) and its error bound.
+// Depth walls: a wall texture that also stores, per texel, how far behind the wall plane the
+// surface seen through that texel lies, so that it can be reprojected to any eye. GL-free: the
+// wall frame, the depth encoding, the reference reprojection (the algorithm the depth wall pass
+// runs per pixel, walls/gl/depth_wall_pass.h) and its error bound.
 //
 // Wall frame. For a wall quad as seen from the texture's side (bake_key.h quadSeenFrom):
 // origin lowerLeft, x along lowerLeft -> lowerRight, y along lowerLeft -> upperLeft (metres),
@@ -21,32 +21,22 @@
 //
 // Reprojection (reproject). An eye E sees the wall point W along the ray
 //   Q(s) = W + s (W - E_xy) / D_E      (lateral position at depth s behind the plane).
-// S sees Q(s) through the wall point T(s) = S_xy + (Q(s) - S_xy) D_S / (D_S + s), which is
-// linear in sigma = s / (D_S + s):  T = (1 - sigma) W + sigma (S_xy + D_S (W - E_xy) / D_E)
-// (sigma in [0, 1) for s in [0, inf)). The ray hits the stored surface at the first s with
-// s >= d(T(s)). Marching uniformly in sigma therefore moves uniformly across the texture: one
-// step per texel crossed on the ray's longer texture axis (so at most one texel per axis a
-// step) samples the ray in every texel column it crosses along that axis, relief-impostor
-// style (a texel whose corner alone the ray clips may be stepped over; the bound below holds
-// for any hit).
-// Within the last step, from the last sample that misses to the first that hits, the first
-// crossing is found exactly: depths are constant per texel and the step crosses at most one
-// texel edge per axis, so the ray meets at most three texels there, and each is hit where the
-// ray enters it or reaches its depth, whichever is later (texelCrossing). Until December 2026
-// six bisections placed the hit within 1/64 of a step of the same point, fetching six texels.
+// S sees Q(s) through a wall point T(s) that is linear in sigma = s / (D_S + s) (sigma in
+// [0, 1) for s in [0, inf)); the ray hits the stored surface at the first s with
+// s >= d(T(s)). The march steps uniformly in sigma, one step per texel crossed on the ray's
+// longer texture axis (at most one texel per axis a step; a texel whose corner alone the ray
+// clips may be stepped over, and the bound below holds for any hit), then finds the first
+// crossing within the last step exactly (texelCrossing).
 //
-// Error bound (reprojectionErrorBound, proof in depth_wall.cpp). Where the depth field is
-// exact and continuous the reprojected image is the geometry's image up to texel sampling.
-// Errors come from (a) disocclusion: surfaces E sees that S did not, and (b) sampling. For a
-// texel T whose neighbours differ in depth from d1 to d2, the surface points on both sides of
-// the step (P1, P2, both seen from S through T) are seen from E at wall points W1, W2 with
-//   W_i - T = k(d_i) v(T),   k(d) = d / (D_E + d),
+// Error bound (reprojectionErrorBound, proof in depth_wall.cpp). The surface point S saw
+// through T at depth d is seen from E at the wall point
+//   W = T + k(d) v(T),   k(d) = d / (D_E + d),
 //   v(T) = (E_xy - S_xy) + (D_E / D_S - 1) (T - S_xy)     (the parallax vector at T),
-// so the wall interval between them, |W1 - W2| = |k(d2) - k(d1)| |v(T)|, shows something S
-// never saw: its angle at E is at most |k(d2) - k(d1)| |v(T)| / D_E. With exact depths this is
-// the whole error of a step; a continuous surface sampled at texel pitch h has steps too, so
-// the same formula with the largest adjacent-texel step bounds (a) and (b) together, plus the
-// reprojected texel's own size (h (1 + k |D_E/D_S - 1|) / D_E, half a texel either side).
+// so a depth step d1 -> d2 between adjacent texels exposes a wall interval S never saw, whose
+// angle at E is at most |k(d2) - k(d1)| |v(T)| / D_E. With the largest adjacent-texel step this
+// bounds disocclusion and sampling together, plus the reprojected texel's own size
+// (h (1 + k |D_E/D_S - 1|) / D_E, half a texel either side).
+// Derivation: docs/depth-walls.md.
 
 #include "display/off_axis.h"
 #include "walls/angular_error.h"
@@ -113,17 +103,17 @@ void clampDepths(DepthImage& image, glm::dvec2 range);
 // the value: no sample of such a stretch of the ray can hit a surface nearer than that.
 // Throws cavewall::Error unless block >= 1, dilate >= 0 and the image holds a whole block.
 DepthImage depthBlockMinimum(const DepthImage& image, int block, int dilate);
-// The depths the walkthrough marches (since 5 December 2026, session 19; the bake writes them,
-// walls::BakeWriter): each 2 x 2 block of the rendered image replaced by its nearest depth, an
-// image of half the width and height, when both are even; otherwise the image as it is. A depth
-// texel then covers exactly 2 x 2 colour texels, so the march's texel units (the depth
-// texture's size over the wall's) and the colour's normalised coordinates still agree, and a
-// march crosses half as many texels. Every value is a baked depth, so it lies in the baked
-// range and in the wall's span: the planner's bound (depthEyeBound, whose proof needs only that
-// the stored and ray depths lie in the span and that the colour texel shown is the one at the
-// hit) holds unchanged. Per image, marchErrorBound bounds what the halved march draws
-// (depthWallErrorBound is for full depths); a hole narrower than a depth texel is sealed, and
-// that bound counts the error. Measured: README, "The march reads halved depths".
+// The depths the walkthrough marches (the bake writes them, walls::BakeWriter): each 2 x 2
+// block of the rendered image replaced by its nearest depth, an image of half the width and
+// height, when both are even; otherwise the image as it is. A depth texel then covers exactly
+// 2 x 2 colour texels, so the march's texel units (the depth texture's size over the wall's)
+// and the colour's normalised coordinates still agree, and a march crosses half as many texels.
+// Every value is a baked depth, so it lies in the baked range and in the wall's span: the
+// planner's bound (depthEyeBound, whose proof needs only that the stored and ray depths lie in
+// the span and that the colour texel shown is the one at the hit) holds unchanged. Per image,
+// marchErrorBound bounds what the halved march draws (depthWallErrorBound is for full depths);
+// a hole narrower than a depth texel is sealed, and that bound counts the error. Measured:
+// docs/depth-walls.md.
 DepthImage marchDepths(DepthImage image);
 // The size marchDepths gives a width x height image.
 glm::ivec2 marchDepthSize(int width, int height);
@@ -275,17 +265,10 @@ DepthWallBound depthWallErrorBound(const DepthImage& image, const WallFrame& fra
 //   depth + texel,  depth = max over such (B, c) of  dk |v(T_c)| / D_E,
 //   dk = max(k(s_B) - k(d_c), k(d_c) - k(m_B^-)),  m_B^- = (m_B - 1e-5 D_S) / (1 + 1e-5),
 //   texel = 0.5 h max(1, D_E / D_S) / D_E, h the colour texel's diagonal.
-// Proof. With the planner's proof's notation, W - W_P = (T - T_c)(1 + k(s)(D_E / D_S - 1)) +
-// (k(s) - k(d_c)) v(T_c), the first part within the texel term. The hit test at B passes only
-// for s >= m_B^- (hitSigma with its tolerance, in depth), and d_c >= m_B (the nearest), so
-// k(s) - k(d_c) >= k(m_B^-) - k(d_c). Above: the hit is where the ray enters B or reaches m_B in
-// it, whichever is later (texelCrossing). Reaching it gives s <= m_B <= d_c. Entering it, the
-// ray comes from an edge or corner neighbour A, in which it missed just before (texelCrossing
-// finds the first hit in the last step exactly): s <= m_A, or s <= range.y where A is empty or
-// outside. So k(s) - k(d_c) <= k(s_B) - k(d_c). Rigorous for marches whose last step crosses at
-// most a texel per axis (maxSteps not reached, or the bisections end within a texel); otherwise
-// the planner's span bound still holds. Pixels showing an empty colour texel (alpha 0) draw
-// nothing and are not in the claim.
+// Rigorous for marches whose last step crosses at most a texel per axis (maxSteps not
+// reached, or the bisections end within a texel); otherwise the planner's span bound still
+// holds. Pixels showing an empty colour texel (alpha 0) draw nothing and are not in the claim.
+// Derivation: docs/depth-walls.md.
 // It is the planner's bound with the span replaced by each texel's own neighbourhood, so at
 // most depthEyeBound for a span holding the image. With halved depths a block straddling a
 // step counts the step within it (k(d_c) - k(m_B)): a step the planner's span covers anyway.
@@ -296,7 +279,7 @@ struct MarchBound {
 MarchBound marchErrorBound(const DepthImage& full, const WallFrame& frame, glm::dvec3 eye, glm::dvec3 samplingPoint,
                            glm::dvec2 range);
 
-// ---- The planner's bound (issue 16: plan depth walls with the reprojection's own error) ----
+// ---- The planner's bound: depth walls planned with the reprojection's own error ----
 //
 // The bound above needs the baked depth image; the planner runs before any bake. It needs only
 // the depth span [dNear, dFar] of everything a wall's textures can show: the nearest and the
@@ -309,45 +292,21 @@ MarchBound marchErrorBound(const DepthImage& full, const WallFrame& frame, glm::
 // the pixel's direction is at most
 //   B(E) = [ (k(dFar) - k(dNear)) max_T |v(T)| + 0.5 h max(1, D_E / D_S) ] / D_E,
 //   k(d) = d / (D_E + d), max over the wall's corners (v is affine in T).
-// Proof. The pass (and reproject) draws a pixel at wall point W only on a hit: a parameter
-// sigma with ray depth s = D_S sigma / (1 - sigma) in [range.x, range.y] (the march starts at
-// the texture's nearest depth and ends at its farthest) at lateral position T = T(s) of the
-// ray as seen from S; by construction of T(s) (top of this header) W = T + k(s) v(T). The
-// pixel shows the texel containing T, whose centre T_c and stored depth d mean: S saw, through
-// T_c, the point P at depth d, which E sees at W_P = T_c + k(d) v(T_c) (depth_wall.cpp). As
-// v(T) - v(T_c) = (D_E / D_S - 1)(T - T_c),
-//   W - W_P = (T - T_c)(1 + k(s)(D_E / D_S - 1)) + (k(s) - k(d)) v(T_c),
-// whose norm is at most 0.5 h max(1, D_E / D_S) + |k(s) - k(d)| |v(T_c)|. Both s and d lie in
-// the texture's range, inside [dNear, dFar], and k is increasing: |k(s) - k(d)| <=
-// k(dFar) - k(dNear). W and W_P lie on the wall plane, at least D_E from E, so the angle
-// between them is at most |W - W_P| / D_E. (The step bound above is the same displacement:
-// the skin a march stretches across a depth step d1 -> d2 shows the near side's points at ray
-// depths up to d2.) A march that skips a thin surface draws another stored point, still
-// within B, so the bound does not depend on the step count.
+// The bound does not depend on the march's step count: a march that skips a thin surface draws
+// another stored point, still within B.
 // Not in the bound: what is not drawn, and the colour filter. (1) Near the wall's edges E may
 // see, through the wall, content S saw outside the rectangle (no texel holds it): a band at
 // most k(dFar) max(0, v . n_in) / D_E wide (borderAngle with k(dFar) < 1) where the march finds
 // nothing (discarded: the structure behind shows) or a nearer stored surface (drawn, within
-// B). The flat bound does not count such content either (it bounds what each texel shows),
-// but there the band is narrower than the flat bound itself; here it can be wider than B when
-// dNear > 0. A guard band baked around the wall (a texture wider than the wall by k(dFar)
-// max|v| over the zone) would remove it; not done. (2) The colour filter (bilinear, mipmaps)
-// mixes neighbouring texels, as on flat walls, whose bound ignores it too.
-// Precision: stored depths are within 1.2e-7 (D_S + d) (top of this header); the span is
-// widened by 1e-6 (D_S + d) either side, far above that, so float rounding cannot leave it.
-// Over a zone (convex floor polygon x height range) the bound is refined, still rigorously: the
-// angle a wall segment subtends at E is at most its length over its distance from E, not only
-// over D_E, and the segment [W, W_P] lies within R = 0.5 h max(1, D_E / D_S) + k(dFar) |v(T_c)|
-// of T_c. For a box of texel centres: |v| is affine in T and in E (so its largest value is at a
-// box corner and a zone vertex); D_E >= Dmin (D_E is affine in E, Dmin at a vertex); the
-// lateral gap between the box and the zone's vertices' lateral bounding box bounds |E - T_c|
-// from below; k(dFar) - k(dNear) = D (dFar - dNear) / ((D + dFar)(D + dNear)) peaks at
-// D = sqrt(dFar dNear) and its ratio to D decreases with D. So per box
-//   v_max min( (k(dFar) - k(dNear))|_Dmin / Dmin,  kdiff_max / (sqrt(Dmin^2 + gap^2) - R_max) ),
-// and the texel term is at most 0.5 h max(1 / Dmin, 1 / D_S). A best-first subdivision of the
-// wall into boxes (at most 64 splits, stopping within 2 % of an estimate at box centres)
-// returns the largest box bound plus the texel term: an upper bound whatever the budget.
-// dFar may be infinite ((k(inf) - k(dNear)) / D = 1 / (D + dNear)).
+// B); it can be wider than B when dNear > 0. (2) The colour filter (bilinear, mipmaps) mixes
+// neighbouring texels, as on flat walls, whose bound ignores it too.
+// Precision: the span is widened by 1e-6 (D_S + d) either side, far above the stored depths'
+// error (top of this header), so float rounding cannot leave it.
+// Over a zone (convex floor polygon x height range) the bound is refined, still rigorously, by
+// a best-first subdivision of the wall into boxes of texel centres (at most 64 splits, stopping
+// within 2 % of an estimate at box centres), each bounded over the zone's vertices: the largest
+// box bound plus the texel term, an upper bound whatever the budget. dFar may be infinite.
+// Derivation: docs/depth-walls.md.
 
 // B(E) above for one eye (world), a texture baked from `samplingPoint` (world) on `wall` (either
 // side: the bound is symmetric), content depths in `span` = (dNear, dFar) metres behind the
@@ -374,21 +333,14 @@ bool depthZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const dis
 //   seg(E) = maxAngularError(E, S, wall', dFar - dNear)   (angular_error.h),
 // wall' = nearWall(wall, S, dNear), the wall projected from S onto the parallel plane dNear
 // behind it: P(dNear) is wall''s point on the ray, P(dFar) lies dFar - dNear behind wall'.
-// Proof. With the notation of the span form's proof, let W' = T_c + k(s) v(T_c). Then W - W' =
-// (T - T_c)(1 + k(s)(D_E / D_S - 1)), at most 0.5 h max(1, D_E / D_S) long, on the plane at
-// least D_E from E. W' is where E sees P(s) on S's ray through T_c, and W_P = T_c + k(d) v(T_c)
-// where it sees P(d). The angle at E between W' and W_P is the angle between P(s) and P(d),
-// two points of the segment [P(dNear), P(dFar)] (s and d lie in the widened span), so at most
-// the angle that segment subtends at E (the directions from E to a segment's points turn
-// monotonically): at most seg(E), since T_c lies on the wall. The angles add.
 // It is the exact angle where the span form bounds the displacement along the segment
 // linearly, so it is at most the span form's step term over the whole span; with dNear = 0 it
-// is the flat texture's own exact error up to dFar (until December 2026 the only form besides
-// the span form, "the flat form"), and every dNear > 0 makes it smaller.
+// is the flat texture's own exact error up to dFar, and every dNear > 0 makes it smaller.
 // Over a zone it is zoneDepthBound on wall' for that depth (angular_error.h): the zone's vertices'
 // errors at depths grown by 1 / (1 - eta), eta = r^2 / h^2 (r the zone's spread, h a vertex's
 // distance to wall''s plane), rigorous for every eye of the zone at one eye per vertex; or, where
 // eta >= 1, the depth-independent error of wall', largest at a zone vertex.
+// Derivation: docs/depth-walls.md.
 
 // The wall projected from `samplingPoint` onto the plane parallel to it `depth` metres behind
 // it (on the side away from the sampling point): corners c + (depth / D_S)(c - S). Throws

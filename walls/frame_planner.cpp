@@ -387,7 +387,10 @@ bool FramePlanner::wallInView(int wall) const {
         int outside[5] = {0, 0, 0, 0, 0};
         for (const glm::dvec3& c : corners) {
             const glm::dvec4 p = clipFromWorld * glm::dvec4(c, 1.0);
-            outside[0] += p.x < -p.w, outside[1] += p.x > p.w, outside[2] += p.y < -p.w, outside[3] += p.y > p.w;
+            outside[0] += p.x < -p.w;
+            outside[1] += p.x > p.w;
+            outside[2] += p.y < -p.w;
+            outside[3] += p.y > p.w;
             outside[4] += p.w <= 0.0;
         }
         if (std::none_of(std::begin(outside), std::end(outside), [](int n) { return n == 4; })) return true;

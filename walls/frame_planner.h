@@ -37,13 +37,13 @@
 // several). When the warp of such a wall is ill-conditioned for any given view
 // (display::warpCondition > kMaxWarpCondition: the eye near the wall plane), the wall falls back
 // to geometry (its cell behind drawn, no texture, flagged `fallback`), counted in warpFallbacks.
-// Warp-morph (Transition::Warp, seed 002 §2): a wall's mix of textures and geometry becomes
-// whichever weighs more (no alpha fade between texture and geometry; textures still cross-fade
-// among themselves). When a wall switches between texture and geometry, for morphSeconds of
-// FrameInput::time its cell behind (content and structure) is drawn by the warp pass through the
-// wall as seen from p = lerp(samplingPoint, eye, s) (texture -> geometry; eye -> samplingPoint
-// back), s the elapsed share: it starts as the texture's view and ends exact. During the morph
-// the wall draws no quad and reports no textures and geometryWeight 1.
+// Warp-morph (Transition::Warp, Aliaga & Lastra 1997, section 2): a wall's mix of textures and
+// geometry becomes whichever weighs more (no alpha fade between texture and geometry; textures
+// still cross-fade among themselves). When a wall switches between texture and geometry, for
+// morphSeconds of FrameInput::time its cell behind (content and structure) is drawn by the warp
+// pass through the wall as seen from p = lerp(samplingPoint, eye, s) (texture -> geometry;
+// eye -> samplingPoint back), s the elapsed share: it starts as the texture's view and ends
+// exact. During the morph the wall draws no quad and reports no textures and geometryWeight 1.
 // A scene without virtual walls (no WallSetup) plans all geometry and requests nothing.
 //
 // Stateful per walkthrough (the textures each wall drew last, the morphs), deterministic given

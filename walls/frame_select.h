@@ -1,7 +1,7 @@
 #pragma once
-// Per-frame selection for textured virtual walls (seed 000 §6): from the viewer's eye, which
-// cell it is in, which textures each bounding wall shows with which weights, and which cells
-// are drawn as geometry.
+// Per-frame selection for textured virtual walls (Ebbesmeyer 1997, section 6): from the
+// viewer's eye, which cell it is in, which textures each bounding wall shows with which
+// weights, and which cells are drawn as geometry.
 //
 // One cyclopean eye per frame (the head position in the world), shared by both eyes and all
 // screens, so stereo never mixes zones and every screen agrees.

@@ -51,7 +51,7 @@ struct WalkthroughSettings {
     // levels SceneRenderer::chooseLods picks for render.lodPixels, over all screens and eyes
     // at once. triangleBudget > 0 caps the triangles the scene renderer submits per frame (all
     // views; the wall, warp and cursor passes are not counted) by raising the tolerance
-    // (seed 004's frame budget); 0: no cap.
+    // (Maciel & Shirley's (1995) frame budget); 0: no cap.
     std::size_t triangleBudget = 0;
     // The most a budget may raise the tolerance to, pixels (>= render.lodPixels): beyond it a
     // frame is drawn over budget rather than with coarser shapes (FrameResult::lodOverBudget).

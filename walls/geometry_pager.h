@@ -1,6 +1,6 @@
 #pragma once
 // Paging of the model's geometry by cell under a GPU memory budget, GL-free: the counterpart of
-// walls/texture_pager.h for the cells the walkthrough draws as geometry (cavewall issue 15).
+// walls/texture_pager.h for the cells the walkthrough draws as geometry.
 //
 // With virtual walls a frame draws as geometry only the viewer's cell and the cells it blends
 // into (walls/frame_planner.h); every other cell is a texture. Per frame the runtime says which

@@ -35,7 +35,10 @@ SideFrame frameOf(const scenes::VirtualWall& wall, int side) {
 // The planner's work grows with a cell's size in zones; absurd sizes are refused up front.
 void checkExtent(const scenes::Cell& cell) {
     glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi = -lo;
-    for (const glm::dvec2& p : cell.region) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    for (const glm::dvec2& p : cell.region) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
     const double extent = std::max(hi.x - lo.x, hi.y - lo.y);
     if (!(extent <= kMaxCellExtent))
         throw Error("cell '" + cell.name + "': extent of " + formatNumber(extent) + " m is too large to plan (expected at most " +

@@ -1,6 +1,6 @@
 #pragma once
-// Zone planning for textured virtual walls (Ebbesmeyer, seed 000 §4-5), with the error bound
-// proven exactly in 3D (walls/angular_error.h).
+// Zone planning for textured virtual walls (Ebbesmeyer 1997, sections 4-5), with the error
+// bound proven exactly in 3D (walls/angular_error.h).
 //
 // For every cell and every virtual wall or portal bounding it (seen from that cell), the cell's
 // floor is cut into zones, each a convex floor polygon times the scene's head height range:
@@ -28,7 +28,7 @@
 // flat bound first proves a zone of minZoneSize (the same layout with the flat bound), not from
 // the wall. Their tighter bound would prove zones nearer the wall, where each needs a large
 // texture: on the default plant at alpha = 10° it took the strip from 4.25 to 3.44 m for
-// 3,517 textures instead of 2,980 (README, "Depth walls"), and drew less geometry only there.
+// 3,517 textures instead of 2,980 (docs/depth-walls.md), and drew less geometry only there.
 //
 // Beyond a neighbour drawn as geometry (Plan::beyond): while the eye is in a cell's geometry
 // zone of a wall or in that zone's texture->geometry blend strip, the cell behind the wall (the

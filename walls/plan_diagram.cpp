@@ -27,7 +27,10 @@ struct Canvas {
         for (const glm::dvec2& p : world) poly.push_back(toPixel(p));
         if (poly.size() < 3) return;
         glm::dvec2 lo(1e30), hi(-1e30);
-        for (const glm::dvec2& p : poly) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        for (const glm::dvec2& p : poly) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
         for (int y = int(std::floor(lo.y)); y <= int(std::ceil(hi.y)); ++y)
             for (int x = int(std::floor(lo.x)); x <= int(std::ceil(hi.x)); ++x)
                 if (containsConvex(poly, {x + 0.5, y + 0.5}, 0.0)) blend(x, y, c, a);
@@ -82,17 +85,27 @@ scenes::Image planDiagram(const Plan& plan, const scenes::SceneDescription& d, c
     const int rows = (panels + columns - 1) / columns;
     glm::dvec2 lo(1e30), hi(-1e30);
     for (const scenes::Cell& cell : d.cells)
-        for (const glm::dvec2& p : cell.region) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        for (const glm::dvec2& p : cell.region) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
     for (const scenes::VirtualWall& w : d.walls)
-        for (glm::dvec3 p : {w.lowerLeft, w.lowerRight}) lo = glm::min(lo, {p.x, p.z}), hi = glm::max(hi, {p.x, p.z});
-    if (lo.x > hi.x) lo = glm::dvec2(-1), hi = glm::dvec2(1);
+        for (glm::dvec3 p : {w.lowerLeft, w.lowerRight}) {
+            lo = glm::min(lo, {p.x, p.z});
+            hi = glm::max(hi, {p.x, p.z});
+        }
+    if (lo.x > hi.x) {
+        lo = glm::dvec2(-1);
+        hi = glm::dvec2(1);
+    }
     const double extent = std::max({hi.x - lo.x, hi.y - lo.y, 1e-3});
     const double scale = (panelSize - 16) / extent;
     // Panels are panelSize wide and as high as the floor plan needs.
     const glm::ivec2 panel(panelSize, std::min(panelSize, int(std::ceil((hi.y - lo.y) * scale)) + 16));
     scenes::Image image;
     image.name = "plan diagram";
-    image.width = columns * panel.x, image.height = rows * panel.y;
+    image.width = columns * panel.x;
+    image.height = rows * panel.y;
     image.rgba.assign(std::size_t(image.width) * image.height * 4, 255);
     for (int p = 0; p < panels; ++p) {
         Canvas c{image, {(p % columns) * panel.x, (p / columns) * panel.y}, panel, lo, scale};

@@ -1,9 +1,9 @@
 #pragma once
-// A top-view diagram of a plan (like seed 000 Figure 8), rasterised on the CPU: one panel per
-// wall showing every cell outline, real walls (black), virtual walls (light blue; the panel's
-// wall in dark blue), the zones of both sides of the panel's wall filled by kind (texture:
-// greens, one shade per texture; blend: yellow; geometry: red), sampling points (black dots)
-// and object footprints (grey outlines). Top view: +x to the right, +z downwards.
+// A top-view diagram of a plan (like Ebbesmeyer 1997, Figure 8), rasterised on the CPU: one
+// panel per wall showing every cell outline, real walls (black), virtual walls (light blue; the
+// panel's wall in dark blue), the zones of both sides of the panel's wall filled by kind
+// (texture: greens, one shade per texture; blend: yellow; geometry: red), sampling points
+// (black dots) and object footprints (grey outlines). Top view: +x to the right, +z downwards.
 
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"

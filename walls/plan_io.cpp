@@ -39,7 +39,9 @@ int textureFor(Plan& plan, TextureIds& ids, const Zone& z, glm::dvec3 s) {
     if (auto it = ids.find(key); it != ids.end()) return it->second;
     Texture t;
     t.id = int(plan.textures.size());
-    t.cell = z.cell, t.wall = z.wall, t.samplingPoint = s;
+    t.cell = z.cell;
+    t.wall = z.wall;
+    t.samplingPoint = s;
     plan.textures.push_back(t);
     return ids[key] = t.id;
 }
@@ -76,7 +78,9 @@ void readBeyond(const std::vector<config::JsonNode>& zones, Plan& plan, TextureI
                           plan.beyond.back().side.wall == z.wall;
         if (!same) {
             BeyondSide b{eyeCell, via, {}, {}};
-            b.side.cell = z.cell, b.side.wall = z.wall, b.side.firstZone = i;
+            b.side.cell = z.cell;
+            b.side.wall = z.wall;
+            b.side.firstZone = i;
             b.side.side = plan.walls[z.wall].cells[0] == z.cell ? 0 : 1;
             plan.beyond.push_back(b);
         }

@@ -11,7 +11,10 @@ void ResidencyCore::evictFor(std::size_t bytes) {
         int victim = -1;
         long oldest = LONG_MAX;
         for (const auto& [id, b] : _resident)
-            if (!_wantedNow.count(id) && _lastWanted[id] < oldest) oldest = _lastWanted[id], victim = id;
+            if (!_wantedNow.count(id) && _lastWanted[id] < oldest) {
+                oldest = _lastWanted[id];
+                victim = id;
+            }
         if (victim < 0) return;  // everything resident is wanted now: over budget until the view moves
         used -= _resident[victim];
         _resident.erase(victim);

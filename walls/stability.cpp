@@ -55,7 +55,9 @@ scenes::SceneDescription referenceHall() {
     d.cells.push_back({"back", {{6, -10}, {6, 0}, {-6, 0}, {-6, -10}}, 0.0});
     scenes::VirtualWall w;
     w.name = "middle";
-    w.lowerLeft = {-6, 0, 0}, w.lowerRight = {6, 0, 0}, w.upperLeft = {-6, 3, 0};
+    w.lowerLeft = {-6, 0, 0};
+    w.lowerRight = {6, 0, 0};
+    w.upperLeft = {-6, 3, 0};
     w.cells = {0, 1};
     d.walls.push_back(w);
     d.headHeightRange = {1.2, 2.0};

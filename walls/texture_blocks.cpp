@@ -49,7 +49,11 @@ void requireBlocks(TextureFormat format, const char* what) {
 
 int mipCount(int width, int height) {
     int n = 1;
-    while (width > 1 || height > 1) width = std::max(1, width / 2), height = std::max(1, height / 2), ++n;
+    while (width > 1 || height > 1) {
+        width = std::max(1, width / 2);
+        height = std::max(1, height / 2);
+        ++n;
+    }
     return n;
 }
 
@@ -329,7 +333,8 @@ TextureLevels blocksFromBytes(std::string_view view, const std::string& file) {
                                  " blocks, got " + (z == Z_OK ? std::to_string(size) + " bytes" : std::string("corrupt data (") + zError(z) + ")"));
         out.blocks.push_back({w, h, joinFields(fields, format)});
         at += stored;
-        w = std::max(1, w / 2), h = std::max(1, h / 2);
+        w = std::max(1, w / 2);
+        h = std::max(1, h / 2);
     }
     if (at != bytes.size())
         bad(file, "end", "expected " + std::to_string(at) + " bytes, got " + std::to_string(bytes.size()) + " (extra bytes)");

@@ -1,7 +1,7 @@
 #pragma once
-// Block-compressed baked wall textures (issue 16, texture storage): S3TC/BC encoding and
-// decoding of MIP levels, and their file (".bct"). GL-free; the GL side uploads the blocks as
-// they are (walls/gl/wall_quad.h uploadWallTexture, walls/gl/texture_store.h).
+// Block-compressed baked wall textures: S3TC/BC encoding and decoding of MIP levels, and their
+// file (".bct"). GL-free; the GL side uploads the blocks as they are (walls/gl/wall_quad.h
+// uploadWallTexture, walls/gl/texture_store.h).
 //
 // What llvmpipe offers (Mesa 22.3.6, LLVM 15, Debian 12, EGL_PLATFORM=surfaceless, GL 4.5
 // core; printed by the GL test CompressedTextureTest.ListsCompressedFormatsAndLlvmpipeHasS3tcSrgb):
@@ -14,8 +14,9 @@
 // the sRGB S3TC formats nor BPTC are listed, but both are accepted (the GL test uploads sRGB
 // DXT1 and DXT5 and reads back GL_TEXTURE_COMPRESSED and the stored size). BPTC (BC7) would
 // keep more colour at 1 byte per texel, but libsquish encodes BC1-BC5 only, and Debian's other
-// encoder (nvidia-texture-tools) was not tried: S3TC it is. llvmpipe decodes blocks as it samples them (it keeps no
-// decoded copy); the fill cost is bench/wall_pass_bench.cpp's FillLayer/compressed.
+// encoder (nvidia-texture-tools) was not tried: S3TC it is. llvmpipe decodes blocks as it
+// samples them (it keeps no decoded copy); the fill cost is bench/wall_pass_bench.cpp's
+// FillLayer/compressed.
 //
 // Formats (`--texture-format`). Encoders: Bc1 blocks whose 16 texels are all opaque (nearly all
 // of a wall's visible blocks) are fitted by stb_dxt (Debian's libstb-dev, high-quality mode,
@@ -23,7 +24,7 @@
 // libsquish's cluster fit (3.6 against 9.1 ms a texture, deflate and write included), 0.08 dB
 // closer over grey (40.22 against 40.14 dB) and 12 % smaller on disk after deflate. Blocks
 // with transparent texels, and every Bc3 block, are libsquish's (cluster fit):
-//  - Rgba8: today's tiled, zip-compressed TIFF of 8-bit texels (walls/texture_mips.h);
+//  - Rgba8: the tiled, zip-compressed TIFF of 8-bit texels (walls/texture_mips.h);
 //    4 bytes per texel on the GPU.
 //  - Bc1: GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT, 8 bytes per 4 x 4 block (0.5 byte per
 //    texel). Alpha is one bit: texels with alpha < 128 become transparent black (0, 0, 0, 0),
@@ -69,8 +70,9 @@ std::string_view textureFormatName(TextureFormat format);
 inline constexpr std::array<std::pair<std::string_view, TextureFormat>, 3> kTextureFormatNames{{
     {"rgba8", TextureFormat::Rgba8}, {"bc1", TextureFormat::Bc1}, {"bc3", TextureFormat::Bc3}}};
 
-// `--texture-format`'s default on bake, run, bench and demo (chosen from measurements: README,
-// "Texture storage"). BakeSettings, RunOptions and BenchOptions default to Rgba8.
+// `--texture-format`'s default on bake, run, bench and demo (chosen from measurements:
+// docs/virtual-walls.md, texture storage). BakeSettings, RunOptions and BenchOptions default
+// to Rgba8.
 inline constexpr TextureFormat kDefaultTextureFormat = TextureFormat::Bc1;
 
 // Bytes of one 4 x 4 block: 8 (Bc1), 16 (Bc3); 0 for Rgba8.

@@ -41,8 +41,12 @@ TextureRect texelBounds(int width, int height, int margin, Covered covered) {
     int x0 = width, y0 = height, x1 = 0, y1 = 0;
     for (int j = 0; j < height; ++j)
         for (int i = 0; i < width; ++i)
-            if (covered(i, j))
-                x0 = std::min(x0, i), x1 = std::max(x1, i + 1), y0 = std::min(y0, j), y1 = std::max(y1, j + 1);
+            if (covered(i, j)) {
+                x0 = std::min(x0, i);
+                x1 = std::max(x1, i + 1);
+                y0 = std::min(y0, j);
+                y1 = std::max(y1, j + 1);
+            }
     if (x1 <= x0) return noRect();
     const glm::dvec2 size(width, height);
     return grown({glm::dvec2(x0, y0) / size, glm::dvec2(x1, y1) / size}, glm::dvec2(std::max(margin, 0)) / size);

@@ -101,7 +101,8 @@ scenes::Bounds rectangleBox(const display::ScreenQuad& q) {
     scenes::Bounds b;
     for (const glm::dvec3& p : {q.lowerLeft, q.lowerRight, q.upperLeft, q.lowerRight + (q.upperLeft - q.lowerLeft)}) b.add(p);
     const double margin = 1e-6 + 1e-9 * glm::length(b.size()) + 1e-12 * glm::length(glm::max(glm::abs(b.min), glm::abs(b.max)));
-    b.min -= glm::dvec3(margin), b.max += glm::dvec3(margin);
+    b.min -= glm::dvec3(margin);
+    b.max += glm::dvec3(margin);
     return b;
 }
 
@@ -159,7 +160,10 @@ std::vector<std::array<glm::dvec2, 2>> cellBoxes(const scenes::SceneDescription&
     std::vector<std::array<glm::dvec2, 2>> boxes;
     for (const scenes::Cell& c : d.cells) {
         glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi = -lo;
-        for (const glm::dvec2& p : c.region) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        for (const glm::dvec2& p : c.region) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
         boxes.push_back({lo - kNearby, hi + kNearby});
     }
     return boxes;
@@ -227,7 +231,8 @@ Placement classify(const scenes::Bounds& box, const display::ScreenQuad& wall, i
     for (int i = 0; i < 8; ++i) {
         corners[i] = {i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y, i & 4 ? box.max.z : box.min.z};
         dist[i] = signedDistance(corners[i], wall, b, side);
-        lo = std::min(lo, dist[i]), hi = std::max(hi, dist[i]);
+        lo = std::min(lo, dist[i]);
+        hi = std::max(hi, dist[i]);
     }
     if (hi <= 0) return Placement::Behind;
     if (lo >= 0) return Placement::InFront;
@@ -310,7 +315,10 @@ std::vector<glm::dvec2> wallDepthSpans(const scenes::Scene& scene, const scenes:
 void assignDepthBehind(Plan& plan, const scenes::Scene& scene, const scenes::SceneDescription& d,
                        const VisibilityTable& table) {
     const std::vector<glm::dvec2> spans = wallDepthSpans(scene, d, table);
-    for (PlannedWall& w : plan.walls) w.depthNear = spans[w.id].x, w.depthBehind = spans[w.id].y;
+    for (PlannedWall& w : plan.walls) {
+        w.depthNear = spans[w.id].x;
+        w.depthBehind = spans[w.id].y;
+    }
 }
 
 }  // namespace cavewall::walls

@@ -1,6 +1,6 @@
 #pragma once
-// Cell-to-cell visibility (Teller's lookup table, simplified as in seed 000 §5) and the
-// classification of scene objects against virtual walls.
+// Cell-to-cell visibility (Teller's lookup table, simplified as in Ebbesmeyer 1997, section 5)
+// and the classification of scene objects against virtual walls.
 //
 // Cells joined by an open boundary (a shared floor edge not covered by any wall's footprint)
 // see each other directly and are drawn as geometry. Virtual walls and portals occlude: the

@@ -7,8 +7,12 @@ namespace cavewall::walls {
 namespace {
 
 void bounds(const Polygon2& p, glm::dvec2& lo, glm::dvec2& hi) {
-    lo = glm::dvec2(INFINITY), hi = glm::dvec2(-INFINITY);
-    for (const glm::dvec2& v : p) lo = glm::min(lo, v), hi = glm::max(hi, v);
+    lo = glm::dvec2(INFINITY);
+    hi = glm::dvec2(-INFINITY);
+    for (const glm::dvec2& v : p) {
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+    }
 }
 
 }  // namespace
@@ -17,12 +21,14 @@ ZoneIndex::ZoneIndex(const Plan& plan) {
     for (const Zone& z : plan.zones) _polygons.push_back(z.floorPolygon);
     for (const WallSide& s : plan.sides) {
         SideGrid g;
-        g.cell = s.cell, g.wall = s.wall;
+        g.cell = s.cell;
+        g.wall = s.wall;
         glm::dvec2 lo(INFINITY), hi(-INFINITY);
         for (int z = s.firstZone; z < s.firstZone + s.zoneCount; ++z) {
             glm::dvec2 zl, zh;
             bounds(_polygons[z], zl, zh);
-            lo = glm::min(lo, zl), hi = glm::max(hi, zh);
+            lo = glm::min(lo, zl);
+            hi = glm::max(hi, zh);
         }
         if (s.zoneCount > 0) {
             // About one zone per square on average keeps the lists short.

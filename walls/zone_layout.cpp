@@ -68,8 +68,12 @@ struct Context {
 };
 
 void extentOf(const Polygon2& p, glm::dvec2& lo, glm::dvec2& hi) {
-    lo = glm::dvec2(kInf), hi = glm::dvec2(-kInf);
-    for (const glm::dvec2& v : p) lo = glm::min(lo, v), hi = glm::max(hi, v);
+    lo = glm::dvec2(kInf);
+    hi = glm::dvec2(-kInf);
+    for (const glm::dvec2& v : p) {
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+    }
 }
 
 // Greedy columns of maximal width: from the previous column's width, doubled while valid, then
@@ -92,19 +96,25 @@ std::optional<Row> greedyColumns(const Context& c, Row row, double sLo, double s
             const double probe = leftPos + step;
             if (probe <= good) continue;
             if (probe >= bad) {
-                if (c.valid(row, left, bad, &trial)) good = bad, goodSample = trial;
+                if (c.valid(row, left, bad, &trial)) {
+                    good = bad;
+                    goodSample = trial;
+                }
                 break;
             }
             if (!c.valid(row, left, probe, &trial)) {
                 bad = probe;
                 break;
             }
-            good = probe, goodSample = trial;
+            good = probe;
+            goodSample = trial;
         }
         while (bad - good > precision) {
             const double mid = 0.5 * (good + bad);
-            if (c.valid(row, left, mid, &trial)) good = mid, goodSample = trial;
-            else bad = mid;
+            if (c.valid(row, left, mid, &trial)) {
+                good = mid;
+                goodSample = trial;
+            } else bad = mid;
         }
         row.cuts.push_back(good);
         row.samples.push_back(goodSample);
@@ -141,7 +151,8 @@ std::optional<Row> planRow(const Context& c, const Row& row, double precision = 
 
 Row makeRow(const Context& c, double a, double b, bool geometryBelow, bool first) {
     Row r;
-    r.a = a, r.b = b;
+    r.a = a;
+    r.b = b;
     r.dLo = first ? (geometryBelow ? a : -kInf) : a - 0.5 * c.blend;
     r.dHi = b >= c.dMax ? kInf : b + 0.5 * c.blend;
     return r;
@@ -167,7 +178,10 @@ std::optional<std::vector<Row>> planRows(const Context& c, double start, bool ge
         double bestScore = -1;
         for (std::size_t i = 0; i < ends.size(); ++i) {
             const double score = candidates[i] ? (ends[i] - a) / double(candidates[i]->samples.size()) : -1;
-            if (candidates[i] && score >= bestScore) best = std::move(candidates[i]), bestScore = score;
+            if (candidates[i] && score >= bestScore) {
+                best = std::move(candidates[i]);
+                bestScore = score;
+            }
         }
         if (!best) return std::nullopt;
         rows.push_back(*best);
@@ -229,7 +243,9 @@ struct Emitter {
         if (local.empty() || std::abs(signedArea(local)) < kMinPieceArea) return;
         Zone z;
         z.id = int(zones.size());
-        z.cell = c.in.cell, z.wall = c.in.wall, z.kind = kind;
+        z.cell = c.in.cell;
+        z.wall = c.in.wall;
+        z.kind = kind;
         z.floorPolygon = c.world(local);
         z.heightRange = c.in.heightRange;
         z.textures = std::move(textures);
@@ -269,7 +285,8 @@ struct Emitter {
         for (std::size_t k = 0; k < row.samples.size(); ++k) {
             Texture t;
             t.id = int(plan.textures.size());
-            t.cell = c.in.cell, t.wall = c.in.wall;
+            t.cell = c.in.cell;
+            t.wall = c.in.wall;
             t.samplingPoint = row.samples[k];
             const glm::dvec2 col = column(row, k, 0.5 * c.blend);
             t.validRegion = c.world(clipBox(c.cell, {col.x, row.dLo}, {col.y, row.dHi}));
@@ -288,7 +305,10 @@ Context contextOf(const Plan& plan, const SideInput& in) {
     for (const glm::dvec2& p : in.cellRegion) c.cell.push_back(in.frame.toLocal(p));
     glm::dvec2 lo, hi;
     extentOf(c.cell, lo, hi);
-    c.sLo = lo.x, c.sHi = hi.x, c.dMin = lo.y, c.dMax = hi.y;
+    c.sLo = lo.x;
+    c.sHi = hi.x;
+    c.dMin = lo.y;
+    c.dMax = hi.y;
     return c;
 }
 
@@ -296,9 +316,13 @@ Context contextOf(const Plan& plan, const SideInput& in) {
 WallSide emit(Plan& plan, const Context& c, const Layout& l, std::vector<Zone>& zones) {
     const SideInput& in = c.in;
     WallSide side;
-    side.cell = in.cell, side.wall = in.wall, side.side = in.side;
+    side.cell = in.cell;
+    side.wall = in.wall;
+    side.side = in.side;
     side.firstZone = int(zones.size());
-    side.origin = in.frame.origin, side.along = in.frame.along, side.inward = in.frame.inward;
+    side.origin = in.frame.origin;
+    side.along = in.frame.along;
+    side.inward = in.frame.inward;
     side.geometryDistance = l.geometryBelow ? l.dG : c.dMin;
     side.hasGeometry = l.geometryBelow;
     Emitter e{c, plan, zones, l.rows, {}};

@@ -1,5 +1,5 @@
 #pragma once
-// The fixed view of `cavewall draw-bench` (issue 20): the view OpenSceneGraph's osgviewer opens
+// The fixed view of `cavewall draw-bench`: the view OpenSceneGraph's osgviewer opens
 // a model with, so that both draw the same pixels, and the statistics of the timed frames.
 //
 // osgviewer's home position (osgGA::StandardManipulator::home with its default

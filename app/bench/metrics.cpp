@@ -16,7 +16,10 @@ namespace {
 constexpr std::size_t kFlipBins = 10000;
 
 void addPopping(scenes::PoppingSummary& s, double& squares, std::int64_t frame, double popping) {
-    if (s.pairs == 0 || popping > s.peak) s.peak = popping, s.peakFrame = frame;
+    if (s.pairs == 0 || popping > s.peak) {
+        s.peak = popping;
+        s.peakFrame = frame;
+    }
     ++s.pairs;
     squares += popping * popping;
 }

@@ -27,7 +27,10 @@ const unsigned char* glyph(char c) {
 void setPixel(scenes::Image& image, int x, int y, const unsigned char rgb[3]) {
     if (x < 0 || y < 0 || x >= image.width || y >= image.height) return;
     std::uint8_t* p = &image.rgba[(static_cast<std::size_t>(y) * image.width + x) * 4];
-    p[0] = rgb[0], p[1] = rgb[1], p[2] = rgb[2], p[3] = 255;
+    p[0] = rgb[0];
+    p[1] = rgb[1];
+    p[2] = rgb[2];
+    p[3] = 255;
 }
 
 void fillRect(scenes::Image& image, int x0, int y0, int w, int h, const unsigned char rgb[3]) {
@@ -109,8 +112,12 @@ scenes::Image plotTradeOff(const std::vector<PlotPoint>& points, int width, int 
     fillRect(image, 0, 0, width, height, kWhite);
     const int left = 56, right = width - 20, top = 16, bottom = height - 36;
     double maxX = 0.0, maxY = 0.0;
-    for (const PlotPoint& p : points) maxX = std::max(maxX, p.x), maxY = std::max(maxY, p.y);
-    maxX = niceCeil(maxX * 1.05), maxY = niceCeil(maxY * 1.05);
+    for (const PlotPoint& p : points) {
+        maxX = std::max(maxX, p.x);
+        maxY = std::max(maxY, p.y);
+    }
+    maxX = niceCeil(maxX * 1.05);
+    maxY = niceCeil(maxY * 1.05);
     const Axes axes = drawAxes(image, left, right, top, bottom, maxX, maxY);
     const auto px = [&](double x) { return axes.px(x); };
     const auto py = [&](double y) { return axes.py(y); };
@@ -140,8 +147,12 @@ scenes::Image plotSeries(const std::vector<PlotSeries>& series, int width, int h
     const int left = 64, right = width - 40, top = 16, bottom = height - 36;
     double maxX = 0.0, maxY = 0.0;
     for (const PlotSeries& s : series)
-        for (const PlotPoint& p : s.points) maxX = std::max(maxX, p.x), maxY = std::max(maxY, p.y);
-    maxX = niceCeil(maxX * 1.05), maxY = niceCeil(maxY * 1.05);
+        for (const PlotPoint& p : s.points) {
+            maxX = std::max(maxX, p.x);
+            maxY = std::max(maxY, p.y);
+        }
+    maxX = niceCeil(maxX * 1.05);
+    maxY = niceCeil(maxY * 1.05);
     const Axes axes = drawAxes(image, left, right, top, bottom, maxX, maxY);
     const auto px = [&](double x) { return axes.px(x); };
     const auto py = [&](double y) { return axes.py(y); };

@@ -1,7 +1,7 @@
 #pragma once
-// The on-demand bench mode's bake cache (issue 19, `cavewall bench --on-demand`): a folder of its
-// own, emptied before the run so that the walk starts from a cold cache, and never the shared
-// bake cache (or a folder inside it or holding it), whose other scenes' bakes must survive.
+// The on-demand bench mode's bake cache (`cavewall bench --on-demand`): a folder of its own,
+// emptied before the run so that the walk starts from a cold cache, and never the shared bake
+// cache (or a folder inside it or holding it), whose other scenes' bakes must survive.
 // GL-free.
 
 #include <filesystem>

@@ -4,7 +4,7 @@
 //
 // One ModeResult per mode of the run. Times are milliseconds per frame (all screens), over the
 // timed frames. Errors are against the full-geometry image of the same frame, eye and screen
-// (app/bench/metrics.h), pooled over the compared frames: rankings (the targets, the Pareto
+// (app/bench/metrics.h), pooled over the compared frames: rankings (the figure lines, the Pareto
 // front and the plot) use the pooled PSNR (or its RMSE), never the capped mean. The "cells"
 // mode (cell culling, no textures) is the control: every mode is also given relative to it.
 // Counts are means per frame.
@@ -41,7 +41,7 @@ struct FrameSample {
     int texturesBaked = 0;             // baking on demand: textures baked so far (running total)
 };
 
-// The on-demand mode's figures (issue 19): the walk from an empty, private bake cache with
+// The on-demand mode's figures: the walk from an empty, private bake cache with
 // the background baker (`cavewall run --bake-on-demand`). Fallbacks are wall-frames: a wall
 // drawn as geometry in one frame for want of a texture counts once.
 struct OnDemandFigures {
@@ -115,13 +115,13 @@ struct BenchReport {
     std::vector<ModeResult> modes;     // the full-geometry reference first
     double noiseFloorRatio = 0.0;      // p99/p50 of one frame drawn again and again (0: not measured)
     double noiseFloorP95Ratio = 0.0;   // p95/p50 of the same (0: not measured)
-    std::string resolution;            // "1024x1024 per screen, mono": stated with every target line
+    std::string resolution;            // "1024x1024 per screen, mono": stated with every figure line
 };
 
-// The CSV header line (without newline), starting with the columns the issue requires.
 // `v` with `decimals` digits after the point (no exponent); inf, -inf and nan spelled so.
 std::string fixed(double v, int decimals = 1);
 
+// The CSV header line (without newline): mode, alpha, transition and the frame times first.
 std::string csvHeader();
 // One CSV line (without newline); numbers in C locale, "inf" for infinite PSNR.
 std::string csvRow(const ModeResult& m);
@@ -136,15 +136,17 @@ const ModeResult* controlMode(const BenchReport& report);
 // FLIP mean of 0 gives a NaN or infinite ratio).
 void compareWithControl(BenchReport& report);
 
-// The issue's targets read off the table, each line stating the report's resolution: the
-// fastest walls mode of the bench's own scene with pooled PSNR >= 30 dB, its speed-up (target
-// >= 10), p99/p50 (target <= 1.3), its FLIP mean against the control's and its median against
-// the near limit's; and the limit's median against the control plus one textured full-screen
-// layer (target: no slower), when the report has the "cells+layer" mode. Issue 19's: every
-// compare-scene mode's speed-up against the same mode of the bench's scene (target: at least
-// 0.9 of it), and the on-demand mode's first frame (target <= 5 s), fallbacks and frame-time
-// p99/p50 against the noise floor (target: no more than 1.1x).
-std::vector<std::string> targetLines(const BenchReport& report);
+// Figures read off the table, one line each, every line stating the report's resolution (no
+// line judges a figure against a target; docs/benchmarking.md does): textures drawn over alpha
+// in the walls modes; the fastest walls mode of the bench's own scene at alpha <= 10 with
+// levels of detail and pooled PSNR >= 32 dB (else the closest in PSNR), its speed-up, FLIP mean
+// against the control's, frame-time p99/p50 against the noise floor, triangles' and uploads'
+// p99/p50, and its median against the near limit's and full geometry's; each paged mode's
+// uploads p99/p50; the limit's median against the control plus one textured full-screen layer,
+// when the report has the "cells+layer" mode; clusterBudgetLines; every compare-scene mode's
+// speed-up against the same mode of the bench's scene; and the on-demand mode's first frame,
+// fallbacks, textures baked and frame-time p99/p50 against the noise floor.
+std::vector<std::string> figureLines(const BenchReport& report);
 
 // A least-squares line y = intercept + slope x through (x[i], y[i]); zeros for fewer than two
 // points or all x equal. r2: the share of y's variance the line explains.
@@ -160,14 +162,14 @@ LineFit fitLine(const std::vector<double>& x, const std::vector<double>& y);
 double p95OverBudget(const ModeResult& m);
 double medianFloorMs(const ModeResult& m);
 
-// Seed 004's budget target for every clusters mode held to a frame time, one line each stating
-// the report's resolution: p50 and p95 frame ms, p95 over the budget (target <= 1.1, "once
-// warmed up": the timed frames follow the warm-up), the floor and whether the budget is
-// feasible (a budget below the floor is reported infeasible, not as a miss), the predicted
-// against the measured frame time (median and p95 of |measured - predicted| / measured), the
-// pooled PSNR and FLIP mean, and the noise floor's p95/p50 beside them; then one line fitting
-// measured = a + b predicted over the frames of every clusters mode (b = 1: the costs are right
-// at the display's resolution; a: the fixed part of a frame). Empty without such modes.
+// Maciel & Shirley's (1995) frame budget for every clusters mode held to a frame time, one line
+// each: p50 and p95 frame ms, p95 over the budget (the timed frames follow the warm-up), the
+// floor and whether the budget is feasible (a budget below the floor is said to be infeasible),
+// the predicted against the measured frame time (median and p95 of |measured - predicted| /
+// measured), the pooled PSNR and FLIP mean, and the noise floor's p95/p50 beside them; then one
+// line fitting measured = a + b predicted over the frames of every clusters mode (b = 1: the
+// costs are right at the display's resolution; a: the fixed part of a frame). Empty without
+// such modes.
 std::vector<std::string> clusterBudgetLines(const BenchReport& report);
 
 // Writes bench.csv, bench_screens.csv, bench_frames.csv (every timed frame of every mode),

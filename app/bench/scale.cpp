@@ -64,12 +64,17 @@ double msPerMillionTriangles(const ScaleReport& report, ScaleMode mode) {
     const std::vector<const ScaleRow*> rows = rowsOf(report, mode);
     if (rows.size() < 2) return kNaN;
     double mx = 0.0, my = 0.0;
-    for (const ScaleRow* r : rows) mx += millions(r->triangles), my += r->frameMs.p50;
-    mx /= static_cast<double>(rows.size()), my /= static_cast<double>(rows.size());
+    for (const ScaleRow* r : rows) {
+        mx += millions(r->triangles);
+        my += r->frameMs.p50;
+    }
+    mx /= static_cast<double>(rows.size());
+    my /= static_cast<double>(rows.size());
     double sxy = 0.0, sxx = 0.0;
     for (const ScaleRow* r : rows) {
         const double dx = millions(r->triangles) - mx;
-        sxy += dx * (r->frameMs.p50 - my), sxx += dx * dx;
+        sxy += dx * (r->frameMs.p50 - my);
+        sxx += dx * dx;
     }
     return sxx > 0.0 ? sxy / sxx : kNaN;
 }

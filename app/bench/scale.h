@@ -1,13 +1,13 @@
 #pragma once
-// The results of `cavewall bench --scale` (cavewall issue 15) and their writers: scale.csv,
+// The results of `cavewall bench --scale` and their writers: scale.csv,
 // scale.md (also printed) and three plots against the model's triangles (scale_ms.png, median
 // frame time; scale_mb.png, resident geometry; scale_load.png, time to the first frame).
 //
 // One ScaleRow per model size and mode. Modes: full geometry (frustum-culled, the whole model
 // on the GPU), the near-geometry limit (the viewer's cell and the always-resident structure),
 // walls (virtual walls with levels of detail and geometry paging by cell) and, when run, walls
-// whose geometry is held to a triangle budget (seed 004's frame budget: the levels of detail
-// coarsened just enough, their error in the row's image error). Times are
+// whose geometry is held to a triangle budget (Maciel & Shirley's (1995) frame budget: the
+// levels of detail coarsened just enough, their error in the row's image error). Times are
 // milliseconds per frame (all screens) over the timed frames; memory is MB = 2^20 bytes of GPU
 // vertex and index buffers (display/gl/scene_gpu.h sizes).
 
@@ -26,7 +26,7 @@ namespace cavewall::bench {
 
 // DepthWalls: depth walls drawn in the same run as flat ones (`--walls flat,depth`), so that
 // their frame-time ratio shares the machine's load of the same seconds. Cells: the control,
-// cells without textures (the flat walls' geometry cells, no texture; session 18), numbered
+// cells without textures (the flat walls' geometry cells, no texture), numbered
 // last so that the plots' earlier line numbers stay.
 enum class ScaleMode { Full, Near, Walls, WallsBudget, DepthWalls, Cells };
 inline constexpr ScaleMode kScaleModes[] = {ScaleMode::Full, ScaleMode::Near, ScaleMode::Cells, ScaleMode::Walls,

@@ -17,15 +17,15 @@
 // texture-coordinate box (error (extent) / 131070 per coordinate), decoded by uvFromStored(mesh)
 // (fold it into the texture transform). Colours are 16-bit linear, clamped to [0, 1].
 //
-// Paging by cell (cavewall issue 15; `pagedCells` > 0): the shared buffers (set 0) hold only the
-// meshes of objects that are always resident (scenes::pagedWithCell false: structure, objects
-// without a cell); the other meshes are grouped by the cells that use them
-// (scenes/paged_meshes.h) and every group lives in buffers of its own (set 1 + group), packed
-// off the GL thread (packMeshes: a background loader's work), uploaded by uploadGroup and
-// deleted by freeGroup, so a mesh shared by several cells is stored once and the GPU memory of
-// an evicted group is released. A cell's objects are drawable when all of its groups
-// (meshGroups().cellGroups) are resident. Decoding matrices are per mesh, the same in every
-// set. A draw binds its object's set (bindSet) before its multi-draw.
+// Paging by cell (`pagedCells` > 0): the shared buffers (set 0) hold only the meshes of objects
+// that are always resident (scenes::pagedWithCell false: structure, objects without a cell);
+// the other meshes are grouped by the cells that use them (scenes/paged_meshes.h) and every
+// group lives in buffers of its own (set 1 + group), packed off the GL thread (packMeshes: a
+// background loader's work), uploaded by uploadGroup and deleted by freeGroup, so a mesh shared
+// by several cells is stored once and the GPU memory of an evicted group is released. A cell's
+// objects are drawable when all of its groups (meshGroups().cellGroups) are resident. Decoding
+// matrices are per mesh, the same in every set. A draw binds its object's set (bindSet) before
+// its multi-draw.
 
 #include "display/gl/gl_object.h"
 #include "scenes/mesh_lod.h"

@@ -124,7 +124,7 @@ public:
     // colour, each by the first renderView into it, with its drawing; endFrame clears those no
     // view drew into. A clear of its own costs llvmpipe a pass over the image (a scene of its
     // own, ended by binding the next screen): on cave4 at 1024 x 1024 per screen that was
-    // 3.5-4 ms of a 32-34 ms walls frame (README, "The frame's clear with its drawing").
+    // 3.5-4 ms of a 32-34 ms walls frame (docs/benchmarking.md).
     void beginFrame(const RenderTargets& targets, const std::vector<int>& screens = {});
     // Clears the images that beginFrame marked and no view has drawn into since.
     void endFrame(const RenderTargets& targets);

@@ -7,7 +7,7 @@
 // instance): with one instance per command, a command's baseInstance selects its record. The
 // vertex shader thus reads no storage buffer (before, every vertex read its draw record and
 // then its material record from two; on llvmpipe the attributes are measurably cheaper:
-// README, "Results: the draw path against osgviewer").
+// docs/benchmarking.md, the draw path against osgviewer).
 
 #include <glm/glm.hpp>
 

@@ -1,5 +1,6 @@
 // The files of a run (app/gl/run_output.h) written from hand-made frame results: the columns
-// README and the header promise, read back by name, and poses exact to the bit. No GL context.
+// docs/commands.md and the header promise, read back by name, and poses exact to the bit. No GL
+// context.
 #include "app/gl/run_output.h"
 
 #include "config/display_config.h"
@@ -42,12 +43,22 @@ TEST(RunOutput, FramesAndWallsCsvHaveOneRowPerFrameAndWall) {
         r.geometryTriangles = 4990;
         r.walls = {WallState{0, {{7, 0.25}, {8, 0.75}}, 0.0, true, false, 3.5, 1}};
         r.texturesOverAlpha = 1;
-        r.clusterObjects = 12, r.clusterTextured = 3, r.clusterAverage = 2;
-        r.clusterPredictedMs = 4.25, r.clusterBudgetMs = 16.5;
+        r.clusterObjects = 12;
+        r.clusterTextured = 3;
+        r.clusterAverage = 2;
+        r.clusterPredictedMs = 4.25;
+        r.clusterBudgetMs = 16.5;
         r.clusterFades = 2;
-        r.clusterSelectedMs = 3.5, r.clusterCheapestMs = 0.125;
-        r.clusterTargetMs = 40.0, r.clusterPredictedFrameMs = 38.25, r.clusterFloorMs = 24.5;
-        r.geometryFallbacks = 2, r.texturesBaked = 40, r.texturesBakedNow = 3, r.texturesToBake = 7, r.bakerBusy = true;
+        r.clusterSelectedMs = 3.5;
+        r.clusterCheapestMs = 0.125;
+        r.clusterTargetMs = 40.0;
+        r.clusterPredictedFrameMs = 38.25;
+        r.clusterFloorMs = 24.5;
+        r.geometryFallbacks = 2;
+        r.texturesBaked = 40;
+        r.texturesBakedNow = 3;
+        r.texturesToBake = 7;
+        r.bakerBusy = true;
         out.writeFrame(0, 0.0, head, r);
         r.cell = -1;  // outside every cell
         r.walls.clear();

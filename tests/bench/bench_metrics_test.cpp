@@ -99,7 +99,8 @@ TEST(BenchMetrics, FlipPoolsAllPixelsAtEachImagesPpdAndKeepsTheWorstMap) {
     pool.addFrame(0, {compared(0, small, ref, 9.0), compared(1, ref, ref, 9.0)});
     pool.addFrame(2, {compared(0, large, ref, 30.0), compared(1, ref, ref, 9.0)});
     scenes::FlipOptions at9, at30;
-    at9.pixelsPerDegree = 9.0, at30.pixelsPerDegree = 30.0;
+    at9.pixelsPerDegree = 9.0;
+    at30.pixelsPerDegree = 30.0;
     const scenes::FlipResult f0 = scenes::flip(small, ref, at9), f2 = scenes::flip(large, ref, at30);
     ASSERT_NE(scenes::flip(large, ref, at9).mean, f2.mean);  // the ppd matters for this pair
     const ImageError all = pool.result();

@@ -60,7 +60,9 @@ TEST(BenchScale, BudgetedWallsReportTheirBudgetBesideTheirSpeedUp) {
     ScaleRow budgeted = row(8'000'000, ScaleMode::WallsBudget, 4.0);
     budgeted.triangleBudget = 180'000;
     budgeted.comparedFrames = 5;
-    budgeted.psnrDb = 31.8, budgeted.worstFramePsnrDb = 31.1, budgeted.flipMean = 0.0121;
+    budgeted.psnrDb = 31.8;
+    budgeted.worstFramePsnrDb = 31.1;
+    budgeted.flipMean = 0.0121;
     r.rows.push_back(budgeted);
     const std::string md = scaleMarkdown(r);
     EXPECT_THAT(md, HasSubstr("- 8.00 M triangles, walls-budget (180000 triangles a frame): speed-up 20.00x, pooled "
@@ -94,7 +96,9 @@ TEST(BenchScale, TheControlSetsEachWallsModeAgainstIt) {
     EXPECT_THAT(scaleMarkdown(r), ::testing::Not(HasSubstr("Against the control")));
     auto compared = [](ScaleRow row, double psnr, double worst, double flip) {
         row.comparedFrames = 5;
-        row.psnrDb = psnr, row.worstFramePsnrDb = worst, row.flipMean = flip;
+        row.psnrDb = psnr;
+        row.worstFramePsnrDb = worst;
+        row.flipMean = flip;
         return row;
     };
     r.rows = {row(2'000'000, ScaleMode::Full, 20.0), compared(row(2'000'000, ScaleMode::Cells, 4.0), 26.0, 24.5, 0.04),

@@ -46,7 +46,8 @@ TEST(FrustumCli, BadInputGivesAClearErrorAndNonZeroExit) {
         {{"frustum", "--display", "nowhere.json"}, "nowhere.json: cannot open the file"},
         {{"frustum", "--eye", "0,1,0"}, "--display: required flag is missing"},
         {{"frustum", "--display", "cave4", "--bogus", "1"}, "--bogus: unknown flag"},
-        // Issue 18: a stray word was ignored; an unknown last flag was "expected a value".
+        // A stray word is an error, and an unknown last flag is named as unknown (not as a flag
+        // expecting a value).
         {{"frustum", "--display", "cave4", "stray"}, "frustum: unexpected word 'stray' (expected only --flags)"},
         {{"frustum", "--display", "cave4", "--bogus"}, "--bogus: unknown flag (expected one of: --display"},
         {{"frustum", "--display", "cave4", "--eye"}, "--eye: expected a value after the flag, got nothing"},

@@ -131,7 +131,7 @@ TEST(DisplayConfig, EveryRuleHasItsMessage) {
     }
 }
 
-// A screen with `name` and headless output `file` (issue 18: names that became paths).
+// A screen with `name` and headless output `file` (hostile input: names that become paths).
 std::string named(const std::string& name, const std::string& file = "") {
     return R"({"name": ")" + name + R"(", "lowerLeft": [-1.5, 0, -1.5], "lowerRight": [1.5, 0, -1.5],
         "upperLeft": [-1.5, 3, -1.5], "resolution": [64, 64])" +
@@ -187,8 +187,8 @@ TEST(DisplayConfig, MagnitudesAreWithinAStatedRange) {
                 ThrowsMessage<Error>(HasSubstr("code: screens[0] 'front': corner [-1.5, 1e+300, -1.5] is out of range")));
 }
 
-// Issue 18: the plausible tracking volume is a configuration key; without it the default box
-// around the screens applies.
+// The plausible tracking volume is a configuration key; without it the default box around the
+// screens applies.
 TEST(DisplayConfig, TrackingVolumeIsAKeyWithItsRules) {
     const DisplayConfig set = load(withScreens(kScreen, R"(, "tracking": {"volume": [[-2, 0, -2], [2, 2.5, 2]]})"));
     ASSERT_TRUE(set.tracking.volume);

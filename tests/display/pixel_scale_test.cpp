@@ -139,9 +139,15 @@ bool region(const ViewScreen& s, const std::vector<glm::dvec3>& points, double& 
     x1 = y1 = -x0;
     for (const glm::dvec3& p : points) {
         const glm::dvec3 q = hit(s, p);
-        x0 = std::min(x0, q.x), x1 = std::max(x1, q.x), y0 = std::min(y0, q.y), y1 = std::max(y1, q.y);
+        x0 = std::min(x0, q.x);
+        x1 = std::max(x1, q.x);
+        y0 = std::min(y0, q.y);
+        y1 = std::max(y1, q.y);
     }
-    x0 = std::max(x0, s.left), x1 = std::min(x1, s.right), y0 = std::max(y0, s.bottom), y1 = std::min(y1, s.top);
+    x0 = std::max(x0, s.left);
+    x1 = std::min(x1, s.right);
+    y0 = std::max(y0, s.bottom);
+    y1 = std::min(y1, s.top);
     return x0 <= x1 && y0 <= y1;
 }
 
@@ -278,7 +284,10 @@ double largestEigenvalue(glm::dmat3 a) {
             const double t = (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
             const double c = 1.0 / std::sqrt(t * t + 1.0), s = t * c;
             glm::dmat3 j(1.0);  // j[column][row]
-            j[p][p] = c, j[q][q] = c, j[q][p] = s, j[p][q] = -s;
+            j[p][p] = c;
+            j[q][q] = c;
+            j[q][p] = s;
+            j[p][q] = -s;
             a = glm::transpose(j) * a * j;
         }
     }

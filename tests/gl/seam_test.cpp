@@ -33,7 +33,10 @@ std::optional<double> barRow(const scenes::Image& image, int x) {
     double sum = 0.0;
     int count = 0;
     for (int y = 0; y < image.height; ++y)
-        if (image.rgba[(std::size_t(y) * image.width + x) * 4] > 100) sum += y, ++count;
+        if (image.rgba[(std::size_t(y) * image.width + x) * 4] > 100) {
+            sum += y;
+            ++count;
+        }
     if (count == 0) return std::nullopt;
     return sum / count;
 }

@@ -112,9 +112,9 @@ TEST(UdpLoopback, AFloodDoesNotStallAPoll) {
     EXPECT_EQ(source->stats().malformed, source->stats().packets);
 }
 
-// Issue 18: finite but absurd positions (1e300 mm, -4e9 mm) used to pass and put the head at
-// 1e297 m. Against the default volume of cave4 (its screens +-1.5 m, 0..3 m high, grown by 2 m)
-// they are drops, counted, and the last good pose stays; so are 5.5 m up and 3.6 m behind.
+// Finite but absurd positions (1e300 mm, -4e9 mm) would put the head at 1e297 m. Against the
+// default volume of cave4 (its screens +-1.5 m, 0..3 m high, grown by 2 m) they are drops,
+// counted, and the last good pose stays; so are 5.5 m up and 3.6 m behind.
 TEST(UdpLoopback, DTrackFloodOutsideTheTrackingVolumeIsDropped) {
     const config::DisplayConfig cave = config::loadDisplayConfig("cave4");
     const config::TrackingVolume volume = config::trackingVolumeOf(cave);

@@ -1,4 +1,4 @@
-# Fails when a source file includes against the layering of README.md's layout table:
+# Fails when a source file includes against the layering of docs/architecture.md's layout table:
 #  - <GL/...>, <EGL/...>, <GLFW/...>, <epoxy/...> or <glad/...> outside */gl/ folders (in tests,
 #    outside tests/gl/);
 #  - a project include ("folder/file.h", "folder/sub/file.h") of a library the including folder

@@ -1,4 +1,4 @@
-// Seed 004's cluster impostors (render/cluster_impostor.h) and one frame's plan
+// Maciel & Shirley's (1995) cluster impostors (render/cluster_impostor.h) and one frame's plan
 // (render/cluster_frame.h), without GL.
 #include "render/cluster_diagram.h"
 #include "render/cluster_frame.h"
@@ -161,7 +161,10 @@ TEST(ClusterFrame, BoxCostsAreSolvedFromAllBoxesAndTheRootAlone) {
     EXPECT_EQ(solveBoxCost(0.0, 0.0, 0.0, 0.0, 0.0).fixedMs, 1e-6);  // no boxes: the least fixed part
     // The prediction adds the fill of the views' shares.
     ClusterCosts costs;
-    costs.texturedBoxMs = 0.1, costs.texturedViewMs = 8.0, costs.averageBoxMs = 0.05, costs.averageViewMs = 2.0;
+    costs.texturedBoxMs = 0.1;
+    costs.texturedViewMs = 8.0;
+    costs.averageBoxMs = 0.05;
+    costs.averageViewMs = 2.0;
     EXPECT_NEAR(boxCostMs(costs, ClusterRep::Textured, 2.0), 16.1, 1e-12);
     EXPECT_NEAR(boxCostMs(costs, ClusterRep::Average, 0.5), 1.05, 1e-12);
 }
@@ -171,7 +174,8 @@ TEST(ClusterFrame, BoxCostsAreSolvedFromAllBoxesAndTheRootAlone) {
 ClusterModel pairAt(double x0, double x1) {
     ClusterModel m = twoObjects(-0.75);
     m.tree = buildClusterTree({box({x0, 1, -5}, {x0 + 0.5, 1.5, -4.5}), box({x1, 1, -5}, {x1 + 0.5, 1.5, -4.5})}, {1, 1, 1});
-    m.costs.texturedViewMs = 8.0, m.costs.averageViewMs = 2.0;
+    m.costs.texturedViewMs = 8.0;
+    m.costs.averageViewMs = 2.0;
     return m;
 }
 

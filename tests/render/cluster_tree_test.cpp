@@ -1,4 +1,5 @@
-// Seed 004's model hierarchy and its two-pass selection under a frame budget (render/cluster_tree.h).
+// Maciel & Shirley's (1995) model hierarchy and its two-pass selection under a frame budget
+// (render/cluster_tree.h).
 #include "render/cluster_tree.h"
 
 #include <gmock/gmock.h>
@@ -46,7 +47,8 @@ std::vector<int> leavesBelow(const ClusterTree& t, int n) {
     return out;
 }
 
-// Seed 004's figure 4 in one dimension: a model 4 m long in 4 finest cells along x.
+// Maciel & Shirley's (1995) figure 4 in one dimension: a model 4 m long in 4 finest cells
+// along x.
 //   A [0, 0.4] and B [0.5, 0.9] share cell 0 -> a cluster at level 1;
 //   C [1.1, 1.9] is alone in cell 1 -> nothing at level 1;
 //   D [1.9, 2.1] straddles the border of cells 1 | 2, which is also the border of the two

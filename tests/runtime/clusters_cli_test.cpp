@@ -1,5 +1,5 @@
-// Seed 004's textured clusters through `cavewall run --clusters` end to end (issue 17), on the
-// small plant of run_cli_support.h.
+// Maciel & Shirley's (1995) textured clusters through `cavewall run --clusters` end to end, on
+// the small plant of run_cli_support.h.
 #include "scenes/image_io.h"
 #include "tests/runtime/run_cli_support.h"
 #include "tests/support/csv_table.h"
@@ -18,9 +18,9 @@ namespace {
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
-// Seed 004's textured clusters end to end (issue 17): `run --clusters` on the small plant's
-// scene.json and on its bare GLB. Every frame's selection stays within its budget of predicted
-// milliseconds and draws something; a second run finds every cluster in the cache.
+// Textured clusters end to end: `run --clusters` on the small plant's scene.json and on its
+// bare GLB. Every frame's selection stays within its budget of predicted milliseconds and draws
+// something; a second run finds every cluster in the cache.
 std::vector<std::string> clusterRun(const fs::path& scene, const fs::path& out, const std::string& cache) {
     return {"run", "--scene", scene.string(), "--display", testDisplay(), "--tracker", "sim:walk?seed=2",
             "--frames", "8", "--clusters", "--cluster-divisions", "4", "--cluster-res", "16", "--cache", cache,
@@ -28,8 +28,8 @@ std::vector<std::string> clusterRun(const fs::path& scene, const fs::path& out, 
 }
 
 // Within the budget, unless the budget is below the least a frame can cost: then the root
-// cluster alone (one box) is drawn, as the seed's traversal starts from it. (A frame with
-// cross-fades under way also pays for what they keep drawing, so it is checked only for
+// cluster alone (one box) is drawn, as Maciel & Shirley's traversal starts from it. (A frame
+// with cross-fades under way also pays for what they keep drawing, so it is checked only for
 // drawing something.)
 void expectWithinBudget(const CsvTable& rows) {
     for (const auto& row : rows) {

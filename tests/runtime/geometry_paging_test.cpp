@@ -106,7 +106,8 @@ AisleWalk walkNorthAisle(const scenes::Scene& scene, const SmallPlant& plant, gl
             EXPECT_LT(r.geometry.residentMB, previousMB);
         }
         w.drops += r.geometry.residentMB < previousMB;
-        w.minMB = std::min(w.minMB, r.geometry.residentMB), w.peakMB = std::max(w.peakMB, r.geometry.residentMB);
+        w.minMB = std::min(w.minMB, r.geometry.residentMB);
+        w.peakMB = std::max(w.peakMB, r.geometry.residentMB);
         previousMB = r.geometry.residentMB;
         previousEvictions = r.geometry.evictions;
         previousPageIns = r.geometry.pageIns;

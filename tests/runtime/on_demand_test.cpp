@@ -136,8 +136,8 @@ TEST_F(OnDemandTest, FirstFrameBeforeTheBakeThenBakedTexturesThenNothingToBake) 
 
 // Depth walls baked on demand: each texture arrives with its depth file and is drawn by the
 // depth pass, so a frame is the same image as the same frame drawn from the finished cache by
-// a walkthrough that read the manifest at its start. (Before session 18 the depth layers were
-// known only from that manifest: textures baked during the run were drawn flat.)
+// a walkthrough that read the manifest at its start: textures baked during the run are drawn
+// with their depths, not flat.
 TEST_F(OnDemandTest, DepthWallsBakedOnDemandAreDrawnWithTheirDepths) {
     walls::PlanOptions plan;
     const walls::WallSetup depth =

@@ -193,7 +193,7 @@ TEST(RunCli, WritesFramesWallsAndImagesOnTheSmallPlant) {
     for (const char* file : {"frames/00000/front.png", "frames/00000/foldout.png", "frames/00020/floor.png"})
         EXPECT_TRUE(fs::exists(out / file)) << file;
     EXPECT_THAT(r.out, HasSubstr("frames.csv"));
-    // Start-up is reported in order: scene, walls, walkthrough, first frame (issue 15).
+    // Start-up is reported in order: scene, walls, walkthrough, first frame.
     std::smatch m;
     ASSERT_TRUE(std::regex_search(r.out, m, std::regex("first frame after ([0-9.]+) s \\(scene loaded at ([0-9.]+) s, "
                                                          "walls ready at ([0-9.]+) s, walkthrough ready at ([0-9.]+) s\\)")))

@@ -89,7 +89,10 @@ double centreOf(const scenes::Image& image, int row, PixelTest test, PixelTest o
     int lo = image.width, hi = -1;
     for (int x = 0; x < image.width; ++x) {
         const std::uint8_t* px = &image.rgba[(std::size_t(row) * image.width + x) * 4];
-        if (test(px) || (orTest && orTest(px))) lo = std::min(lo, x), hi = std::max(hi, x);
+        if (test(px) || (orTest && orTest(px))) {
+            lo = std::min(lo, x);
+            hi = std::max(hi, x);
+        }
     }
     return hi < 0 ? std::nan("") : 0.5 * (lo + hi);
 }
@@ -260,7 +263,10 @@ double redCentroid(const scenes::Image& image) {
     int count = 0;
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x)
-            if (isRed(&image.rgba[(std::size_t(y) * image.width + x) * 4])) sum += x, ++count;
+            if (isRed(&image.rgba[(std::size_t(y) * image.width + x) * 4])) {
+                sum += x;
+                ++count;
+            }
     return count > 0 ? sum / count : std::nan("");
 }
 

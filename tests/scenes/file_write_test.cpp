@@ -1,6 +1,6 @@
-// Writes checked to completion (issue 18): a file system that refuses bytes is an Error with
-// the system's reason, and nothing half-written is left for a later run to trust. The full
-// disk is simulated without privileges by RLIMIT_FSIZE: writes past the limit fail (EFBIG).
+// Writes checked to completion: a file system that refuses bytes is an Error with the system's
+// reason, and nothing half-written is left for a later run to trust. The full disk is simulated
+// without privileges by RLIMIT_FSIZE: writes past the limit fail (EFBIG).
 #include "config/error.h"
 #include "scenes/file_write.h"
 #include "scenes/image_io.h"

@@ -176,7 +176,9 @@ TEST(Flip, DifferentSizesAreAnError) {
 
 TEST(Flip, ErrorImageMapsZeroToBlackAndOneToPaleYellow) {
     FlipResult r;
-    r.width = 3, r.height = 1, r.errors = {0.0f, 0.5f, 1.0f};
+    r.width = 3;
+    r.height = 1;
+    r.errors = {0.0f, 0.5f, 1.0f};
     const Image image = flipErrorImage(r);
     ASSERT_EQ(image.width, 3);
     ASSERT_EQ(image.height, 1);

@@ -126,8 +126,8 @@ TEST(GeneratePlant, ContentStaysInsideOneCellForManySeeds) {
     }
 }
 
-// Issue 15: larger targets make the hall longer (8 bays of 10 m per 2 M triangles), so each
-// cell holds about the same geometry at every size, and parts stay shared meshes.
+// Larger targets make the hall longer (8 bays of 10 m per 2 M triangles), so each cell holds
+// about the same geometry at every size, and parts stay shared meshes.
 TEST(GeneratePlant, LargerTargetsMakeALongerHallWithCellsOfTheSameWeight) {
     const GeneratedScene small = generatePlant({1, 2'000'000});
     const GeneratedScene large = generatePlant({1, 6'000'000});
@@ -264,7 +264,7 @@ TEST(GenerateBoxHall, SameSeedSameMeshOtherSeedOtherMesh) {
     const Scene a = generateBoxHall({5, 600}), b = generateBoxHall({5, 600}), c = generateBoxHall({6, 600});
     EXPECT_EQ(a.meshes[0].positions, b.meshes[0].positions);
     EXPECT_NE(a.meshes[0].positions, c.meshes[0].positions);
-    // The default is the issue's million triangles.
+    // The default is a million triangles, the larger of the peer comparison's two sizes.
     EXPECT_EQ(kBoxHallDefaultTriangles, 1'000'000u);
 }
 

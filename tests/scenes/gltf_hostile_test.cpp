@@ -1,6 +1,6 @@
-// The glTF loader on files made to crash it (issue 18): sizes and offsets whose sums wrap
-// around, counts that would allocate gigabytes, GLB headers that lie, JSON nested thousands
-// deep, URIs naming folders. Each is a cavewall::Error saying where, what, expected vs got.
+// The glTF loader on files made to crash it: sizes and offsets whose sums wrap around, counts
+// that would allocate gigabytes, GLB headers that lie, JSON nested thousands deep, URIs naming
+// folders. Each is a cavewall::Error saying where, what, expected vs got.
 #include "config/error.h"
 #include "scenes/loader.h"
 #include "tests/scenes/gltf_builder.h"

@@ -39,8 +39,8 @@ TEST(ImageError, SquaredErrorCountsRgbSamplesInUnitRange) {
 }
 
 TEST(ImageError, PooledPsnrIsNotTheMeanOfFramePsnrs) {
-    // Three frames of 10 x 10 pixels: one equal to its reference (the near-geometry-only case
-    // of issue 14), one off by 51 levels (0.2) everywhere, one by 5 levels everywhere.
+    // Three frames of 10 x 10 pixels: one equal to its reference (as where only near geometry
+    // is drawn), one off by 51 levels (0.2) everywhere, one by 5 levels everywhere.
     //   frame 0: MSE 0,                    PSNR +inf (capped: 58.923 dB)
     //   frame 1: MSE 0.04,                 PSNR 13.979 dB
     //   frame 2: MSE (5/255)² = 3.845e-4,  PSNR 34.151 dB

@@ -154,7 +154,7 @@ TEST(SceneDescription, EveryRuleHasItsMessage) {
          "scene.json: models[0].units: expected one of \"m\", \"cm\", \"mm\", \"in\", \"ft\", got \"yd\""},
         {"matrix and position", R"({"models": [{"file": "model.gltf", "matrix": [], "position": [0,0,0]}]})",
          "scene.json: models[0]: give either 'matrix' or 'position'/'rotation'/'scale', not both"},
-        // Issue 18: accepted before, then planned or drawn wrong.
+        // Hostile input that would be planned or drawn wrong if accepted.
         {"portal far from its cells", scene("", R"({"name": "x", "kind": "portal", "cells": ["A", "B"],
            "lowerLeft": [100,0,2], "lowerRight": [100,0,-2], "upperLeft": [100,3,2]})"),
          // The footprint x = 100, z in [-2, 2] is 100 m from A's edge x = 0.

@@ -172,8 +172,9 @@ TEST(AngularError, FiniteDepthZoneBoundCoversEveryEyeAndIsTight) {
 }
 
 TEST(AngularError, SeedRuleReferenceCase) {
-    // Seed 000 eq. 3-4 at alpha = 10°: a zone half-width of 1 m needs x_Tmin = 1 / tan 10° =
-    // 5.671 m, and a 12 m wide scene needs 12 / (2 * 1) = 6 textures per wall (the seed's six).
+    // Ebbesmeyer (1997) eq. 3-4 at alpha = 10°: a zone half-width of 1 m needs x_Tmin =
+    // 1 / tan 10° = 5.671 m, and a 12 m wide scene needs 12 / (2 * 1) = 6 textures per wall (the
+    // paper's six).
     const double alpha = 10 * kDeg;
     const double xMin = seedMinDistance(1.0, alpha);
     EXPECT_NEAR(xMin, 5.67128, 1e-5);
@@ -182,8 +183,8 @@ TEST(AngularError, SeedRuleReferenceCase) {
 }
 
 TEST(AngularError, SeedRuleUnderestimatesTheTrue3DError) {
-    // The seed's zone: sampling point B at x_Tmin in front of the wall at eye height, the
-    // viewer B' moved 1 m (delta b) parallel to the wall. The seed predicts exactly 10°.
+    // Ebbesmeyer's zone: sampling point B at x_Tmin in front of the wall at eye height, the
+    // viewer B' moved 1 m (delta b) parallel to the wall. The paper predicts exactly 10°.
     const double alpha = 10 * kDeg, xMin = seedMinDistance(1.0, alpha);
     const glm::dvec3 b(0, 1.6, xMin);
     struct Case {

@@ -19,7 +19,9 @@ namespace {
 scenes::VirtualWall wall(const char* name, glm::dvec2 a, glm::dvec2 b, int front, int back) {
     scenes::VirtualWall w;
     w.name = name;
-    w.lowerLeft = {a.x, 0, a.y}, w.lowerRight = {b.x, 0, b.y}, w.upperLeft = {a.x, 4, a.y};
+    w.lowerLeft = {a.x, 0, a.y};
+    w.lowerRight = {b.x, 0, b.y};
+    w.upperLeft = {a.x, 4, a.y};
     w.cells = {front, back};
     return w;
 }
@@ -67,7 +69,10 @@ protected:
     // A uniformly random eye over a convex floor polygon times the head height range.
     glm::dvec3 eyeIn(const Polygon2& polygon) {
         glm::dvec2 lo(1e300), hi(-1e300);
-        for (const glm::dvec2& p : polygon) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        for (const glm::dvec2& p : polygon) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
         std::uniform_real_distribution<double> u(0.0, 1.0);
         for (;;) {
             const glm::dvec2 p = lo + (hi - lo) * glm::dvec2(u(rng), u(rng));
@@ -175,7 +180,8 @@ TEST_P(BeyondTest, BeyondWeightsAreContinuousAlongAWalk) {
                 }
                 ++compared;
             }
-            previous = now, had = has;
+            previous = now;
+            had = has;
         }
     }
     EXPECT_GT(compared, 1000);

@@ -133,7 +133,10 @@ TEST(DepthFile, ATextureIsValidOnlyWithItsDepthFile) {
 TEST(DepthFile, ManifestKeepsDepthEntriesAndRejectsBadOnes) {
     BakeManifest m{0x0123456789abcdefull, 10.0, {}};
     BakedTexture t{3, 1, 2, {0.5, 1.6, -2.25}, {512, 256}, "tex_0003.tx", 42, 0xfeedull};
-    t.depthFile = "tex_0003.depth.tif", t.depthBytes = 99, t.depthHash = 0xbeefull, t.depthRange = {0.25, 18.5};
+    t.depthFile = "tex_0003.depth.tif";
+    t.depthBytes = 99;
+    t.depthHash = 0xbeefull;
+    t.depthRange = {0.25, 18.5};
     m.textures.push_back(t);
     EXPECT_EQ(manifestFromJson(manifestToJson(m), "m.json"), m);
     std::string text = manifestToJson(m);

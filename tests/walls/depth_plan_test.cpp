@@ -193,7 +193,8 @@ TEST(DepthPlan, SegmentZoneFormCoversEveryEyeOfTheZone) {
                     double total = 0.0;
                     for (const glm::dvec2& v : zone.floor) {
                         const double w = u(rng);
-                        p += w * v, total += w;
+                        p += w * v;
+                        total += w;
                     }
                     p /= total;
                 }
@@ -300,7 +301,8 @@ DepthImage blockImage(int width, int height, glm::dvec2 span, std::mt19937& rng)
     const int blocks = 6;
     std::vector<float> depth(blocks * blocks);
     for (float& d : depth) d = static_cast<float>(u(rng));
-    depth[0] = static_cast<float>(span.x), depth[1] = static_cast<float>(span.y);  // the extremes occur
+    depth[0] = static_cast<float>(span.x);
+    depth[1] = static_cast<float>(span.y);  // the extremes occur
     DepthImage image{width, height, {}};
     for (int j = 0; j < height; ++j)
         for (int i = 0; i < width; ++i) image.depth.push_back(depth[(j * blocks / height) * blocks + i * blocks / width]);
@@ -441,8 +443,8 @@ TEST(BakeResolution, PlanResolutionIsCappedKeepingTheAspect) {
 
 // The cap keeps each texture's aspect, as the bake's does (bakeResolution): a depth plan
 // capped at the bake's size proves its texel term for exactly the texels baked, and a wall
-// wider than high is not baked square (before session 18 each side was clamped alone, so the
-// depth bake of the plant held 1.42x the flat bake's texels). Flat zones do not depend on the
+// wider than high is not baked square (clamping each side alone gave the depth bake of the
+// plant 1.42x the flat bake's texels). Flat zones do not depend on the
 // cap, so the two plans' textures correspond.
 TEST(DepthPlan, ACapKeepsEachTexturesAspect) {
     PlanOptions o;

@@ -524,7 +524,10 @@ TEST(DepthDrawRect, HoldsEveryPixelTheMarchHits) {
         const glm::dvec3 e(-2.0 + 8.0 * unit(rng), 3.0 * unit(rng), -(0.5 + 4.0 * unit(rng)));
         const TextureRect r = depthDrawRect(f, e, s, contentRect(image), range, 0.0);
         // Empty where the content's image misses the wall: then no pixel may hit either.
-        if (!r.empty()) ++cases, smallest = std::min(smallest, (r.hi.x - r.lo.x) * (r.hi.y - r.lo.y));
+        if (!r.empty()) {
+            ++cases;
+            smallest = std::min(smallest, (r.hi.x - r.lo.x) * (r.hi.y - r.lo.y));
+        }
         const int grid = 96;
         for (int j = 0; j < grid; ++j)
             for (int i = 0; i < grid; ++i) {
@@ -561,7 +564,9 @@ TEST(DepthDrawRect, NeedsBothEndsOfTheRange) {
             const double u = (i + 0.5) / 200, t = (j + 0.5) / 200;
             if (!reproject(image, f, e, s, {u * f.width, (1.0 - t) * f.height}, range).hit) continue;
             auto in = [&](const TextureRect& r) { return u >= r.lo.x && u <= r.hi.x && t >= r.lo.y && t <= r.hi.y; };
-            outside += !in(both), nearMisses += !in(nearOnly), farMisses += !in(farOnly);
+            outside += !in(both);
+            nearMisses += !in(nearOnly);
+            farMisses += !in(farOnly);
         }
     EXPECT_EQ(outside, 0);
     EXPECT_GT(nearMisses, 0);

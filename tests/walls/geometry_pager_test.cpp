@@ -28,7 +28,9 @@ TEST(GeometryPager, CellBytesCountEachMeshOncePerCell) {
     s.meshes[1].indices.resize(6);
     auto add = [&](int mesh, int cell, scenes::Role role = scenes::Role::Content) {
         scenes::Object o;
-        o.mesh = mesh, o.cell = cell, o.role = role;
+        o.mesh = mesh;
+        o.cell = cell;
+        o.role = role;
         s.objects.push_back(o);
     };
     add(0, 0);
@@ -136,7 +138,9 @@ scenes::Scene sharedMeshes() {
     }
     auto add = [&](int mesh, int cell, scenes::Role role = scenes::Role::Content) {
         scenes::Object o;
-        o.mesh = mesh, o.cell = cell, o.role = role;
+        o.mesh = mesh;
+        o.cell = cell;
+        o.role = role;
         s.objects.push_back(o);
     };
     for (int c : {0, 1, 2}) add(0, c);
@@ -159,7 +163,8 @@ TEST(PagedMeshGroups, GroupsMeshesByTheCellsThatUseThem) {
     // Meshes used by the same cells share a group.
     scenes::Scene s = sharedMeshes();
     s.objects.push_back({});
-    s.objects.back().mesh = 4, s.objects.back().cell = 0;
+    s.objects.back().mesh = 4;
+    s.objects.back().cell = 0;
     const scenes::PagedMeshGroups h = scenes::pagedMeshGroups(s, 3);
     EXPECT_EQ(h.groupOfMesh[4], 1);
     EXPECT_EQ(h.groupMeshes[1], (std::vector<int>{1, 4}));

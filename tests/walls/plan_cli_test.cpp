@@ -65,9 +65,9 @@ TEST(PlanCli, PlansAGeneratedHouseAndTheJsonKeepsTheBound) {
     EXPECT_GT(checked, 100);
 }
 
-// Depth walls (issue 16): the JSON names the kind and each wall's depth span, and every texture
-// a zone draws is within alpha at every zone vertex by the depth walls' own bound, recomputed
-// from the file alone (span, sampling point, resolution).
+// Depth walls: the JSON names the kind and each wall's depth span, and every texture a zone
+// draws is within alpha at every zone vertex by the depth walls' own bound, recomputed from the
+// file alone (span, sampling point, resolution).
 TEST(PlanCli, DepthWallsJsonKeepsTheirOwnBound) {
     const auto dir = outputDir();
     const CliResult gen = runCavewall({"generate", "house", "--out", (dir / "house").string(), "--triangles", "2000"});
@@ -131,8 +131,8 @@ TEST(PlanCli, BadArgumentsFailClearly) {
     }
 }
 
-// `cavewall walls` (issue 19): proposes cells and walls for the generated house (its own cells
-// and walls replaced), writes a scene.json that `plan` accepts and a diagram.
+// `cavewall walls`: proposes cells and walls for the generated house (its own cells and walls
+// replaced), writes a scene.json that `plan` accepts and a diagram.
 TEST(WallsCli, ProposesWallsThatPlanAccepts) {
     const auto dir = outputDir();
     const CliResult gen = runCavewall({"generate", "house", "--out", (dir / "auto-house").string(), "--triangles", "2000"});

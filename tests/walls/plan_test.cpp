@@ -23,7 +23,8 @@ glm::dvec2 randomPointIn(const Polygon2& poly, std::mt19937& rng) {
     double sum = 0;
     for (const glm::dvec2& v : poly) {
         const double w = std::pow(u(rng), 4);
-        p += w * v, sum += w;
+        p += w * v;
+        sum += w;
     }
     return p / sum;
 }
@@ -234,7 +235,7 @@ TEST(Plan, OptionsAreValidated) {
 }
 
 }  // namespace
-// Issue 18: a 1e308 extent made the planner spin forever. Absurd cells are refused up front.
+// A 1e308 extent would make the planner spin forever: absurd cells are refused up front.
 TEST(Plan, AbsurdCellsAreRefusedNotPlanned) {
     for (double size : {3e4, 1e308}) {
         SCOPED_TRACE(size);

@@ -1,6 +1,6 @@
-// Issue 14's first target without GL: on the generated plant (alpha 10°, zones of at least 1 m,
-// as `cavewall plan` and the demo plan it), the frame planner draws no texture over alpha along
-// the scene's walk path nor along its wall path, which hugs the virtual walls and crosses
+// No texture drawn over alpha, without GL: on the generated plant (alpha 10°, zones of at least
+// 1 m, as `cavewall plan` and the demo plan it), the frame planner draws no texture over alpha
+// along the scene's walk path nor along its wall path, which hugs the virtual walls and crosses
 // their geometry zones and blend strips. Every texture is resident, so nothing falls back; the
 // errors are the exact ones the frame planner reports (walls/frame_planner.h, step 5).
 #include "config/display_config.h"

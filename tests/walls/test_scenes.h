@@ -25,7 +25,9 @@ inline scenes::SceneDescription obliqueCells() {
     scenes::VirtualWall w;
     w.name = "oblique";
     const glm::dvec2 a = at(0, 0), b = at(7, 0);
-    w.lowerLeft = {a.x, 0, a.y}, w.lowerRight = {b.x, 0, b.y}, w.upperLeft = {a.x, 3, a.y};
+    w.lowerLeft = {a.x, 0, a.y};
+    w.lowerRight = {b.x, 0, b.y};
+    w.upperLeft = {a.x, 3, a.y};
     w.cells = {0, 1};
     d.walls.push_back(w);
     d.headHeightRange = {1.3, 1.9};
@@ -45,7 +47,9 @@ inline scenes::SceneDescription threeInARow() {
         scenes::VirtualWall w;
         w.name = i == 0 ? "A|B" : "B|C";
         const double z = -10.0 * i;
-        w.lowerLeft = {-5, 0, z}, w.lowerRight = {5, 0, z}, w.upperLeft = {-5, 4, z};
+        w.lowerLeft = {-5, 0, z};
+        w.lowerRight = {5, 0, z};
+        w.upperLeft = {-5, 4, z};
         w.cells = {i, i + 1};
         d.walls.push_back(w);
     }

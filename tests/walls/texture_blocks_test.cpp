@@ -35,8 +35,10 @@ scenes::Image wallLike() {
             if (x >= 6 && x < 50 && y >= 8 && y < 60) {  // the box: shaded, with stripes
                 const double shade = 0.4 + 0.6 * (x - 6) / 44.0;
                 const bool stripe = (y / 3) % 4 == 0;
-                p[0] = std::uint8_t(std::lround(200 * shade)), p[1] = std::uint8_t(std::lround((stripe ? 90 : 150) * shade));
-                p[2] = std::uint8_t(std::lround(60 * shade)), p[3] = 255;
+                p[0] = std::uint8_t(std::lround(200 * shade));
+                p[1] = std::uint8_t(std::lround((stripe ? 90 : 150) * shade));
+                p[2] = std::uint8_t(std::lround(60 * shade));
+                p[3] = 255;
             }
             // The disc, centre (72, 35), radius 18, coverage from 4 x 4 subsamples.
             int covered = 0;
@@ -45,7 +47,9 @@ scenes::Image wallLike() {
                 covered += sx * sx + sy * sy <= 18.0 * 18.0;
             }
             if (covered > 0) {
-                p[0] = std::uint8_t(40 + x), p[1] = std::uint8_t(120 + y), p[2] = 210;
+                p[0] = std::uint8_t(40 + x);
+                p[1] = std::uint8_t(120 + y);
+                p[2] = 210;
                 p[3] = std::uint8_t(std::lround(255.0 * covered / 16));
             }
         }
@@ -77,7 +81,8 @@ TEST(TextureBlocks, CoveredRectIsTheTexelsWithAlphaGrownByTheMargin) {
     scenes::Image image{"covered", 32, 16, std::vector<std::uint8_t>(32 * 16 * 4, 0)};
     auto set = [&](int x, int y, std::uint8_t alpha) {
         std::uint8_t* p = &image.rgba[(std::size_t(y) * 32 + x) * 4];
-        p[0] = p[1] = p[2] = alpha, p[3] = alpha;  // premultiplied grey
+        p[0] = p[1] = p[2] = alpha;
+        p[3] = alpha;  // premultiplied grey
     };
     EXPECT_TRUE(coveredRect(TextureLevels({image}), 2).empty());
     set(9, 5, 255);

@@ -174,7 +174,7 @@ TEST(TexturePager, ADecodeWithNoTexelsFailsTheTexture) {
     EXPECT_EQ(ready[0].id, 0);
 }
 
-// Issue 18: files swapped on disk during a run were decoded and drawn.
+// Files swapped on disk during a run are never decoded and drawn.
 TEST(TexturePager, FilesThatDoNotMatchTheManifestAreNeverDrawn) {
     const BakeManifest m = manifest();
     const auto dir = folder();

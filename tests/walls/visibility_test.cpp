@@ -165,7 +165,10 @@ TEST(Visibility, WallContentsEqualsClassifyingEveryObject) {
         SCOPED_TRACE(d.name);
         glm::dvec3 lo(1e9), hi(-1e9);
         for (const scenes::Cell& c : d.cells)
-            for (const glm::dvec2& p : c.region) lo = glm::min(lo, {p.x, -1, p.y}), hi = glm::max(hi, {p.x, 5, p.y});
+            for (const glm::dvec2& p : c.region) {
+                lo = glm::min(lo, {p.x, -1, p.y});
+                hi = glm::max(hi, {p.x, 5, p.y});
+            }
         scenes::Scene scene;
         for (int i = 0; i < 600; ++i) {
             scenes::Object o;
@@ -194,7 +197,8 @@ TEST(Visibility, WallContentsEqualsClassifyingEveryObject) {
                 const WallContents got = wallContents(scene, d, t, wall, side);
                 EXPECT_EQ(got.baked, expected.baked);
                 EXPECT_EQ(got.intersecting, expected.intersecting);
-                baked += int(expected.baked.size()), intersecting += int(expected.intersecting.size());
+                baked += int(expected.baked.size());
+                intersecting += int(expected.intersecting.size());
             }
     }
     // Both lists are well populated, so a filter dropping objects would show.

@@ -23,7 +23,9 @@ std::vector<SideInput> inputsOf(const Plan& plan, const scenes::SceneDescription
 // A plan holding only the walls and options of `plan`, before any side is planned.
 Plan wallsOnly(const Plan& plan) {
     Plan p;
-    p.alphaDeg = plan.alphaDeg, p.options = plan.options, p.walls = plan.walls;
+    p.alphaDeg = plan.alphaDeg;
+    p.options = plan.options;
+    p.walls = plan.walls;
     return p;
 }
 

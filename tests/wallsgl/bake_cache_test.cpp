@@ -44,7 +44,10 @@ std::filesystem::file_time_type modified(const std::filesystem::path& p) { retur
 // The manifest without the files' stamps (time, inode): what a re-bake of the same input must
 // reproduce exactly (a re-made file has a new time).
 std::string withoutStamps(walls::BakeManifest m) {
-    for (walls::BakedTexture& t : m.textures) t.mtimeNs = 0, t.inode = 0;
+    for (walls::BakedTexture& t : m.textures) {
+        t.mtimeNs = 0;
+        t.inode = 0;
+    }
     return manifestToJson(m);
 }
 
@@ -134,10 +137,9 @@ TEST_F(BakeCacheTest, DamagedFileIsReBakedAlone) {
     }
 }
 
-// Issue 18: after two texture files were swapped, a bake reported every texture done but its
-// manifest listed one fewer: the manifest written after the first re-bake (without the second)
-// was left on disk because the final one equalled the manifest read at the start. Both are
-// re-made, listed, and valid.
+// After two texture files are swapped, a bake re-makes both and its manifest lists both, valid:
+// the final manifest is written even when it equals the one read at the start, so no manifest
+// written after the first re-bake alone is left on disk.
 TEST_F(BakeCacheTest, SwappedFilesAreReMadeAndAllListed) {
     const BakeResult first = bakeScene(request);
     const int n = static_cast<int>(first.manifest.textures.size());
@@ -360,9 +362,9 @@ TEST(BakeFileNames, TextureKeyRoundTripsThroughTheFileName) {
     EXPECT_EQ(walls::textureKeyOf("tex_0007_0123456789abcdef.bc"), std::nullopt);
 }
 
-// Depth walls (issue 16): the wall kind keys the folder; every texture gets a valid depth file
-// of the march's depths (halved where both sides are even) whose range is that of its depths; a re-bake renders nothing, and a damaged depth file is
-// re-baked (only that texture).
+// Depth walls: the wall kind keys the folder; every texture gets a valid depth file of the
+// march's depths (halved where both sides are even) whose range is that of its depths; a
+// re-bake renders nothing, and a damaged depth file is re-baked (only that texture).
 TEST_F(BakeCacheTest, DepthBakesKeyTheirKindAndKeepDepthFilesValid) {
     const BakeResult flat = bakeScene(request);
     request.settings.kind = walls::WallKind::Depth;

@@ -53,7 +53,9 @@ inline scenes::GeneratedScene bakeTestScene(BakeTestObjects* objects = nullptr, 
     d.cells.push_back({"back", {{3, 0}, {3, -8}, {-3, -8}, {-3, 0}}, 0.0});
     scenes::VirtualWall w;
     w.name = "middle";
-    w.lowerLeft = {-3, 0, 0}, w.lowerRight = {3, 0, 0}, w.upperLeft = {-3, 3, 0};
+    w.lowerLeft = {-3, 0, 0};
+    w.lowerRight = {3, 0, 0};
+    w.upperLeft = {-3, 3, 0};
     w.cells = {0, 1};
     d.walls.push_back(w);
     d.headHeightRange = {1.2, 2.0};

@@ -1,6 +1,7 @@
-// Seed 004's cluster impostors on llvmpipe (walls/gl/cluster_impostors.h, cluster_costs.h):
-// a textured box seen from one of its sampling eyes shows what full detail shows; the average
-// box is less accurate than the textured one; impostors and costs come back from the cache.
+// Maciel & Shirley's (1995) cluster impostors on llvmpipe (walls/gl/cluster_impostors.h,
+// cluster_costs.h): a textured box seen from one of its sampling eyes shows what full detail
+// shows; the average box is less accurate than the textured one; impostors and costs come back
+// from the cache.
 #include "display/gl/scene_renderer.h"
 #include "render/cluster_tree.h"
 #include "scenes/flip.h"
@@ -71,7 +72,8 @@ TEST_F(ClusterImpostorsTest, ATexturedBoxShowsFullDetailAtItsSamplingEyeAndIsCac
     for (int d = 0; d < render::kAccuracyDirections; ++d) {
         EXPECT_GE(a.textured[d], 0.0);
         EXPECT_LE(a.textured[d], 1.0);
-        sumTextured += a.textured[d], sumAverage += a.average[d];
+        sumTextured += a.textured[d];
+        sumAverage += a.average[d];
     }
     EXPECT_GT(sumTextured, sumAverage);
     // Again with the same cache: read, not made, the same accuracies.

@@ -76,7 +76,9 @@ scenes::Image testTexture() {
             const int d = std::min({x - 8, 55 - x, y - 8, 55 - y});  // texels inside the square's edge
             if (d < -1) continue;
             std::uint8_t* p = &image.rgba[(std::size_t(y) * 64 + x) * 4];
-            p[0] = std::uint8_t(60 + 3 * x), p[1] = std::uint8_t(200 - 2 * y), p[2] = std::uint8_t(90 + (x ^ y) % 64);
+            p[0] = std::uint8_t(60 + 3 * x);
+            p[1] = std::uint8_t(200 - 2 * y);
+            p[2] = std::uint8_t(90 + (x ^ y) % 64);
             p[3] = d >= 1 ? 255 : d == 0 ? 170 : 80;
         }
     return image;
@@ -128,7 +130,8 @@ TEST_F(CompressedTextureTest, BlocksStayCompressedAndDecodeLikeRgba8) {
 // holds exactly the bytes of one uploaded whole (read back level by level).
 TEST_F(CompressedTextureTest, BandByBandUploadsHoldTheSameTexelsAsAWholeUpload) {
     scenes::Image odd = testTexture();
-    odd.width = 60, odd.height = 38;  // a 60 x 38 crop: level 0 ends in half a block row
+    odd.width = 60;
+    odd.height = 38;  // a 60 x 38 crop: level 0 ends in half a block row
     odd.rgba.resize(std::size_t(60) * 38 * 4);
     for (int y = 0; y < 38; ++y)
         std::copy_n(&testTexture().rgba[std::size_t(y) * 64 * 4], 60 * 4, &odd.rgba[std::size_t(y) * 60 * 4]);

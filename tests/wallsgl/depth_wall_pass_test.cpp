@@ -1,9 +1,9 @@
-// gl::DepthWallPass against full geometry (issue 16): a wall baked with depth from one sampling
-// point and drawn from an eye 0.6 m to the side and 0.5 m closer matches the geometry rendered
-// from that eye, except on the pixels walls::depthWallErrorBound predicts (disocclusion at the
-// depth steps it opens, and the wall's border); and the widest wrong run is within the bound
-// and at least 0.6 of it, so a bound 2x too loose fails. The flat wall from the same eye is
-// wrong on far more pixels.
+// gl::DepthWallPass against full geometry: a wall baked with depth from one sampling point and
+// drawn from an eye 0.6 m to the side and 0.5 m closer matches the geometry rendered from that
+// eye, except on the pixels walls::depthWallErrorBound predicts (disocclusion at the depth
+// steps it opens, and the wall's border); and the widest wrong run is within the bound and at
+// least 0.6 of it, so a bound 2x too loose fails. The flat wall from the same eye is wrong on
+// far more pixels.
 #include "display/gl/gl_object.h"
 #include "display/gl/scene_renderer.h"
 #include "scenes/image_io.h"
@@ -225,8 +225,11 @@ void DepthWallPassTest::matchesGeometryExceptWherePredicted(bool halved) {
             for (int x = 0; x < kWidth; ++x) {
                 std::uint8_t* p = &wrong.rgba[(std::size_t(y) * kWidth + x) * 4];
                 const bool inside = predicted[std::size_t(y) * kWidth + x] != 0;
-                if (differs(depthWall, truth, x, y, slack)) p[0] = 255, p[1] = inside ? 255 : 0, p[2] = 0;
-                else if (inside) p[2] = 255;
+                if (differs(depthWall, truth, x, y, slack)) {
+                    p[0] = 255;
+                    p[1] = inside ? 255 : 0;
+                    p[2] = 0;
+                } else if (inside) p[2] = 255;
             }
         scenes::writeImage(dir / "truth.png", truth);
         scenes::writeImage(dir / "depth_wall.png", depthWall);
@@ -417,7 +420,8 @@ void DepthWallPassTest::marchesAsItsReference(bool halved) {
     for (int j = 0; j < ch; ++j)
         for (int i = 0; i < cw; ++i) {
             std::uint8_t* p = &colour.rgba[(std::size_t(j) * cw + i) * 4];
-            p[0] = static_cast<std::uint8_t>(idStep.x * i + idBase.x), p[1] = static_cast<std::uint8_t>(idStep.y * j + idBase.y);
+            p[0] = static_cast<std::uint8_t>(idStep.x * i + idBase.x);
+            p[1] = static_cast<std::uint8_t>(idStep.y * j + idBase.y);
             p[2] = 128;
         }
     const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
@@ -518,7 +522,9 @@ TEST_F(DepthWallPassTest, DrawsOnlyWhereAMarchCanHit) {
     auto lit = [](const scenes::Image& im, std::size_t i) { return im.rgba[i] + im.rgba[i + 1] + im.rgba[i + 2] > 0; };
     int wholePixels = 0, croppedPixels = 0, missingPixels = 0, different = 0;
     for (std::size_t i = 0; i < whole.rgba.size(); i += 4) {
-        wholePixels += lit(whole, i), croppedPixels += lit(cropped, i), missingPixels += lit(missing, i);
+        wholePixels += lit(whole, i);
+        croppedPixels += lit(cropped, i);
+        missingPixels += lit(missing, i);
         for (int c = 0; c < 3; ++c)
             if (std::abs(int(whole.rgba[i + c]) - int(cropped.rgba[i + c])) > 1) {
                 ++different;

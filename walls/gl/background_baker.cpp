@@ -61,7 +61,10 @@ BackgroundBakeStats BackgroundBaker::stats() const {
     BackgroundBakeStats s = _stats;
     s.missing = _queue.size() + (_busy >= 0 ? 1 : 0);
     s.busy = _busy >= 0;
-    if (_budget) s.evictions = _budget->evictions(), s.cacheMB = static_cast<double>(_budget->bytes()) / (1024.0 * 1024.0);
+    if (_budget) {
+        s.evictions = _budget->evictions();
+        s.cacheMB = static_cast<double>(_budget->bytes()) / (1024.0 * 1024.0);
+    }
     return s;
 }
 
@@ -174,7 +177,8 @@ void BackgroundBaker::evict(const std::vector<int>& ids) {
         _files.erase(id);
         _queue.add(id, _samplingPoints.at(id));
         BakeEvent gone;
-        gone.evicted = true, gone.texture.id = id;
+        gone.evicted = true;
+        gone.texture.id = id;
         _events.push_back(std::move(gone));
     }
 }

@@ -1,7 +1,7 @@
 #pragma once
-// Baking on demand (issue 19): `cavewall run --bake-on-demand` starts at once and bakes the wall
-// textures missing from the bake cache on a thread of their own, with a headless GL context of
-// their own, while the walkthrough draws.
+// Baking on demand: `cavewall run --bake-on-demand` starts at once and bakes the wall textures
+// missing from the bake cache on a thread of their own, with a headless GL context of their
+// own, while the walkthrough draws.
 //
 // The constructor does what a bake does before rendering (gl::TextureBaker: key the folder,
 // trust or re-hash the listed files, link textures from other folders of the cache), without

@@ -70,14 +70,14 @@ std::uint64_t settingsKey(const BakeSettings& s) {
     h.text("cavewall bake settings v1");
     h.integer(s.maxResolution).integer(s.tileSize).number(s.ambient);
     // Flat bakes keep their keys (and caches); depth bakes get others (their files differ).
-    // Depth files hold the march's halved depths since session 19 (walls::marchDepths).
+    // Depth files hold the march's halved depths (walls::marchDepths), not full ones.
     if (s.kind == walls::WallKind::Depth) h.text("depth wall v1").text("march depths v1");
     // Full-detail bakes keep their keys; levels of detail draw other pixels.
     if (s.lodTexels > 0.0) h.text("lod texels v1").number(s.lodTexels);
     // RGBA8 bakes keep their keys; block formats store other files (walls/texture_blocks.h).
     if (s.textureFormat != walls::TextureFormat::Rgba8)
         h.text("texture format v1").text(walls::textureFormatName(s.textureFormat));
-    // BC1's opaque blocks come from stb_dxt since session 12 (other bytes than libsquish's).
+    // BC1's opaque blocks come from stb_dxt, whose bytes differ from libsquish's blocks.
     if (s.textureFormat == walls::TextureFormat::Bc1) h.text("bc1 opaque blocks stb_dxt v1");
     // The wall renderer lights per vertex where that is within this tolerance (RenderSettings
     // default; render/vertex_lighting.h): other pixels, by at most half a level.
@@ -287,8 +287,11 @@ Item Bake::itemOf(const walls::Texture& t) const {
     Item item{&t, sideOf(_plan, t), walls::bakeResolution(t.resolution, _request.settings.maxResolution, _request.settings.kind),
               {}};
     item.entry = walls::BakedTexture{};
-    item.entry.id = t.id, item.entry.cell = t.cell, item.entry.wall = t.wall;
-    item.entry.samplingPoint = t.samplingPoint, item.entry.resolution = item.resolution;
+    item.entry.id = t.id;
+    item.entry.cell = t.cell;
+    item.entry.wall = t.wall;
+    item.entry.samplingPoint = t.samplingPoint;
+    item.entry.resolution = item.resolution;
     return item;
 }
 
@@ -309,7 +312,9 @@ void Bake::reuseListed() {
         if (it != byId.end()) {
             walls::BakedTexture expected = *it->second;
             const walls::BakedTexture& got = *it->second;
-            expected.cell = t.cell, expected.wall = t.wall, expected.samplingPoint = t.samplingPoint;
+            expected.cell = t.cell;
+            expected.wall = t.wall;
+            expected.samplingPoint = t.samplingPoint;
             expected.resolution = item.resolution;
             if (expected == got && reuseFile(got)) continue;
         }

@@ -54,7 +54,7 @@ struct BakeSettings {
     // copy of the scene on the GPU. The same files whatever the count (not part of the key).
     int drawThreads = 1;
     float ambient = 0.35f;      // as RenderSettings::ambient, [0, 1]
-    // Flat: colour only. Depth (issue 16): colour plus a depth file of 16-bit codes per texture
+    // Flat: colour only. Depth: colour plus a depth file of 16-bit codes per texture
     // (walls/depth_file.h), read back from the same render's depth buffer; keys the cache.
     walls::WallKind kind = walls::WallKind::Flat;
     // Levels of detail (walls/gl/wall_renderer.h): each object is drawn at the coarsest level

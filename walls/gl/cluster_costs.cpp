@@ -114,7 +114,10 @@ MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostor
     const double det = ns * gl - nl * gs;
     double b = det != 0.0 ? (ns * tl - nl * ts) / det : -1.0;
     double c = det != 0.0 ? (ts * gl - tl * gs) / det : -1.0;
-    if (!(b > 0.0 && c >= 0.0)) b = (ts + tl) / std::max(1.0, gs + gl), c = 0.0;
+    if (!(b > 0.0 && c >= 0.0)) {
+        b = (ts + tl) / std::max(1.0, gs + gl);
+        c = 0.0;
+    }
     // Still nothing measurable (a few boxes on an idle machine): the floor, so the selection never
     // takes geometry for free.
     b = std::max(b, kMinMsPerTriangle);

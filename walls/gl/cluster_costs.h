@@ -1,6 +1,6 @@
 #pragma once
-// The drawing costs of seed 004's representations, measured by drawing them on this machine
-// and renderer (seed 004, section 5.2), cached per renderer and model.
+// The drawing costs of Maciel & Shirley's (1995) representations, measured by drawing them on
+// this machine and renderer (their section 5.2), cached per renderer and model.
 //
 // One offscreen view of `resolution`² pixels (the display's own: its largest screen side, so
 // that every draw pays the fill it pays on the display) sees the whole model (render::viewOfBox from

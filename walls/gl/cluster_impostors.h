@@ -1,8 +1,8 @@
 #pragma once
-// Seed 004's cluster impostors on the GPU: made (or found in the cache), measured for accuracy
-// and drawn. The geometry and viewing regions are render/cluster_impostor.h's; the drawing is
-// the wall pass's (walls/gl/wall_pass.h: a premultiplied texture on a world quad, depth-tested
-// against the geometry, blended over it).
+// Maciel & Shirley's (1995) cluster impostors on the GPU: made (or found in the cache),
+// measured for accuracy and drawn. The geometry and viewing regions are
+// render/cluster_impostor.h's; the drawing is the wall pass's (walls/gl/wall_pass.h: a
+// premultiplied texture on a world quad, depth-tested against the geometry, blended over it).
 //
 // Textured boxes: each face's texture for each viewing region is rendered by
 // gl::WallTextureRenderer, exactly as a wall texture is baked: display::offAxisFrustum with the
@@ -11,10 +11,10 @@
 // premultiplied MIP chains (walls/texture_mips.h). Average boxes: per face the mean colour and
 // coverage of its centre-region texture (render::faceAverage), drawn as an opaque rectangle.
 //
-// Accuracy (seed 004, section 5.2): per accuracy direction (render::accuracyDirections), the
-// cluster drawn at full detail and as each impostor, from 2.5 box diagonals away through a
-// square screen facing the eye, on black, compared with LDR-FLIP (scenes/flip.h) at the
-// comparison image's own pixels per degree: accuracy = 1 - mean FLIP.
+// Accuracy (Maciel & Shirley 1995, section 5.2): per accuracy direction
+// (render::accuracyDirections), the cluster drawn at full detail and as each impostor, from 2.5
+// box diagonals away through a square screen facing the eye, on black, compared with LDR-FLIP
+// (scenes/flip.h) at the comparison image's own pixels per degree: accuracy = 1 - mean FLIP.
 //
 // Cache: <cache>/clusters/<16 hex digits>/ per cluster, keyed by the content keys of its objects
 // (walls::objectKeys: meshes, materials, images, placement) and the settings, so an unchanged

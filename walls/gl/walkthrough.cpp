@@ -395,7 +395,8 @@ walls::FrameResult Walkthrough::renderFrame(const walls::FrameInput& input) {
     result.geometryMisses = plan.geometryMisses;
     result.geometryForced = static_cast<int>(plan.geometryForced.size());
     result.geometryFallbacks = plan.geometryFallbacks;
-    result.texturesBaked = _bakedTotal, result.texturesBakedNow = _bakedNow;
+    result.texturesBaked = _bakedTotal;
+    result.texturesBakedNow = _bakedNow;
     if (_options.baker) result.texturesToBake = _options.baker->stats().missing;
     render::DrawFilter filter;
     filter.objects = &plan.objects;

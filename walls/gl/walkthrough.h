@@ -1,8 +1,8 @@
 #pragma once
 // The walkthrough's GL executor: one frame of a scene with textured virtual walls on every
-// screen and eye of a display (cavewall issue 5). Driven by `cavewall run`, the demo, the bench
-// and cluster mode: the caller owns the input side (tracker, pipeline, navigation) and passes
-// plain walls::FrameInput values (walls/frame_types.h), so rank 0 of a cluster can broadcast them.
+// screen and eye of a display. Driven by `cavewall run`, the demo, the bench and cluster mode:
+// the caller owns the input side (tracker, pipeline, navigation) and passes plain
+// walls::FrameInput values (walls/frame_types.h), so rank 0 of a cluster can broadcast them.
 //
 // Rule: no pure logic under */gl/ beyond what needs a context. Every decision of a frame (the
 // cell, each wall's textures and weights, the paging requests, the fallbacks, the warp-morph,
@@ -56,10 +56,11 @@ namespace cavewall::gl {
 
 class BackgroundBaker;  // walls/gl/background_baker.h
 
-// Seed 004's textured clusters (walls/gl/cluster_impostors.h, render/cluster_frame.h): the
-// content objects are drawn as the frame's selection from the model hierarchy under a budget
-// in predicted milliseconds, objects at full detail (or their level of detail) and clusters
-// as textured or average-colour boxes; structure objects are always drawn.
+// Maciel & Shirley's (1995) textured clusters (walls/gl/cluster_impostors.h,
+// render/cluster_frame.h): the content objects are drawn as the frame's selection from the
+// model hierarchy under a budget in predicted milliseconds, objects at full detail (or their
+// level of detail) and clusters as textured or average-colour boxes; structure objects are
+// always drawn.
 struct ClusterOptions {
     bool enabled = false;
     glm::ivec3 divisions{8, 2, 8};           // the hierarchy's finest grid, cells per axis
@@ -87,10 +88,10 @@ struct WalkthroughOptions : walls::WalkthroughSettings {
     BackgroundBaker* baker = nullptr;
 };
 
-// What resident geometry is judged by (issue 15), in MB (2^20 bytes) of GPU buffers, with the
-// renderer's levels of detail: the whole model (every mesh once), the largest three cells
-// (each cell's own meshes once, walls::cellGeometryBytes) and the always-resident shared
-// buffers (structure, objects without a cell), which paging never frees.
+// What resident geometry is measured against, in MB (2^20 bytes) of GPU buffers, with the
+// renderer's levels of detail: the whole model (every mesh once), the largest three cells (each
+// cell's own meshes once, walls::cellGeometryBytes) and the always-resident shared buffers
+// (structure, objects without a cell), which paging never frees.
 struct GeometryYardsticks {
     double wholeModelMB = 0.0, largestThreeCellsMB = 0.0, sharedMB = 0.0;
 };

@@ -101,7 +101,10 @@ bool meetsTextureView(const scenes::Bounds& b, glm::dvec3 n, double d, const glm
         const glm::dvec3 c((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z);
         behind = behind || glm::dot(n, c) > d;
         const glm::dvec4 p = clipFromWorldA * glm::dvec4(c, 1.0);
-        outside[0] += p.x > p.w, outside[1] += p.x < -p.w, outside[2] += p.y > p.w, outside[3] += p.y < -p.w;
+        outside[0] += p.x > p.w;
+        outside[1] += p.x < -p.w;
+        outside[2] += p.y > p.w;
+        outside[3] += p.y < -p.w;
     }
     return behind && std::max({outside[0], outside[1], outside[2], outside[3]}) < 8;
 }

@@ -1,5 +1,5 @@
 #pragma once
-// The geometry-warp pass (cavewall issue 5 §2, seed 002 §2): structure behind a textured virtual
+// The geometry-warp pass (Aliaga & Lastra 1997, section 2): structure behind a textured virtual
 // wall drawn through the Aliaga-Lastra warp, so that it lines up with the wall's texture.
 //
 // A wall texture holds the content behind the wall as seen from its sampling point, but never

@@ -1,5 +1,5 @@
 #pragma once
-// `cavewall draw-bench SCENE` (issue 20): the draw path alone, timed on one fixed view, so that
+// `cavewall draw-bench SCENE`: the draw path alone, timed on one fixed view, so that
 // it can be set beside another viewer drawing the same mesh (tools/osg-compare.sh runs
 // OpenSceneGraph's osgviewer on the same box hall).
 //
