@@ -11,7 +11,7 @@
 // triangles/s (submitted triangles over wall-clock frame time).
 #include "display/gl/context.h"
 #include "display/gl/gpu_timer.h"
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_renderer.h"
 #include "scenes/generate.h"
 #include "scenes/loader.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 // A view's render list: what one frustum draws, decided on the CPU, in the order the GL
-// renderer (display/gl/scene_renderer.h) uploads and draws it.
+// renderer (render/gl/scene_renderer.h) uploads and draws it.
 //
 // What is drawn: the objects the DrawFilter selects, minus those whose world bounds lie
 // outside the view's frustum (CPU culling over the scene's BVH, planes from the double

@@ -2,7 +2,7 @@
 // The CPU side of a scene as the renderer sees it: per object what deciding a view's draws
 // needs (world bounds, role, pass, batch key, scale), a BVH over the objects' world bounds
 // (scenes/bvh.h), and every mesh's levels of detail with their index counts. No GL: the GL
-// renderer (display/gl/scene_renderer.h) uploads the same levels and maps batch keys to GL
+// renderer (render/gl/scene_renderer.h) uploads the same levels and maps batch keys to GL
 // names.
 
 #include "scenes/bvh.h"

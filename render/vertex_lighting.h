@@ -2,7 +2,7 @@
 // When the headlight may be evaluated per vertex instead of per pixel, with a proven bound on
 // the difference.
 //
-// The scene shader (display/gl/scene_shaders.h) lights a surface by a headlight at the eye:
+// The scene shader (render/gl/scene_shaders.h) lights a surface by a headlight at the eye:
 // light = ambient + (1 - ambient) * diffuse, diffuse = |n . v|, where n is the unit normal
 // (turned towards the eye on back faces) and v the unit vector from the surface point to the
 // eye. Per pixel this costs llvmpipe a normal and a position varying per vertex, their set-up

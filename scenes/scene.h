@@ -88,7 +88,7 @@ struct Object {
     Bounds worldBounds;
 };
 
-// Geometry paging by cell (walls/geometry_pager.h, display/gl/scene_gpu.h): content objects of
+// Geometry paging by cell (walls/geometry_pager.h, render/gl/scene_gpu.h): content objects of
 // one of the scene's `cellCount` cells are loaded and freed with their cell; structure and
 // objects without a (valid) cell are always resident.
 inline bool pagedWithCell(const Object& o, int cellCount) {

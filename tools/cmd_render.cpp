@@ -1,7 +1,7 @@
 #include "config/display_config.h"
 #include "display/display.h"
 #include "display/gl/context.h"
-#include "display/gl/snapshot.h"
+#include "render/gl/snapshot.h"
 #include "render/view_all.h"
 #include "scenes/loader.h"
 #include "scenes/primitives.h"

@@ -21,7 +21,7 @@
 //
 // Sizes: a group's bytes are those of its meshes (each once; compact vertices and 32-bit
 // indices, kVertexBytes/kIndexBytes, the indices of every level of detail when the levels are
-// given): exactly the GPU buffers display/gl/scene_gpu.h allocates for it. cellGeometryBytes
+// given): exactly the GPU buffers render/gl/scene_gpu.h allocates for it. cellGeometryBytes
 // gives a cell's own meshes (each once per cell), the yardstick "the largest three cells".
 // Per-object transforms are per view (the scene renderer's draw records), not per cell.
 

@@ -9,7 +9,7 @@
 // whose geometry is held to a triangle budget (Maciel & Shirley's (1995) frame budget: the
 // levels of detail coarsened just enough, their error in the row's image error). Times are
 // milliseconds per frame (all screens) over the timed frames; memory is MB = 2^20 bytes of GPU
-// vertex and index buffers (display/gl/scene_gpu.h sizes).
+// vertex and index buffers (render/gl/scene_gpu.h sizes).
 
 #include "app/bench/metrics.h"
 

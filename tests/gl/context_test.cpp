@@ -1,7 +1,7 @@
 // The context providers' contract, as far as it shows without a window system.
 #include "config/error.h"
 #include "display/gl/context.h"
-#include "display/gl/snapshot.h"
+#include "render/gl/snapshot.h"
 #include "scenes/primitives.h"
 #include "tests/gl/gl_test_support.h"
 

@@ -6,7 +6,7 @@
 // and 48 of row 32, each covering 8 x 8 pixels.
 #include "display/display.h"
 #include "display/gl/render_targets.h"
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_renderer.h"
 #include "scenes/primitives.h"
 #include "tests/gl/gl_test_support.h"
 

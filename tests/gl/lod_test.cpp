@@ -9,7 +9,7 @@
 // pixels: 1 px = 7.8 mm on the screen, so 3.1 cm at 4 m).
 #include "display/display.h"
 #include "display/gl/render_targets.h"
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_renderer.h"
 #include "render/lod_choice.h"
 #include "scenes/mesh_optimize.h"
 #include "scenes/primitives.h"

@@ -2,7 +2,7 @@
 // each one stresses). One 2 m x 2 m screen 1 m in front of an eye at the origin (90°), 128 x 128
 // pixels; the CAVE is placed with viewAll so the whole model is in view.
 #include "display/display.h"
-#include "display/gl/snapshot.h"
+#include "render/gl/snapshot.h"
 #include "render/view_all.h"
 #include "scenes/image_io.h"
 #include "scenes/loader.h"

@@ -2,7 +2,7 @@
 // stereo mode's colour masks. Fixed pose, 128 x 128 screens, llvmpipe goldens.
 #include "config/display_config.h"
 #include "display/display.h"
-#include "display/gl/snapshot.h"
+#include "render/gl/snapshot.h"
 #include "scenes/primitives.h"
 #include "tests/gl/gl_test_support.h"
 

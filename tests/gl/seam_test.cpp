@@ -2,7 +2,7 @@
 // screen edge: the pixel rows it occupies at the two images' touching columns agree.
 #include "config/display_config.h"
 #include "display/display.h"
-#include "display/gl/snapshot.h"
+#include "render/gl/snapshot.h"
 #include "scenes/primitives.h"
 #include "scenes/image_io.h"
 #include "tests/gl/gl_test_support.h"

@@ -39,7 +39,7 @@ TEST_F(Window, RenderWithWindowMatchesHeadless) {
     ASSERT_TRUE(run({(out / "headless").string()}));
     ASSERT_TRUE(run({(out / "window").string(), "--window"}));
     // The windows have the screens' resolution, so the window images are the windows' back
-    // buffers read before the swap (display/gl/snapshot.h): same pixels up to the blit.
+    // buffers read before the swap (render/gl/snapshot.h): same pixels up to the blit.
     for (const char* stem : {"front", "left", "right", "floor", "foldout"}) {
         SCOPED_TRACE(stem);
         const std::string file = std::string(stem) + ".png";

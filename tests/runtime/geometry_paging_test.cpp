@@ -1,4 +1,4 @@
-// Geometry paging by cell on the GPU (walls/gl/walkthrough.h, display/gl/scene_gpu.h): a cell's
+// Geometry paging by cell on the GPU (walls/gl/walkthrough.h, render/gl/scene_gpu.h): a cell's
 // meshes live in buffers of their own, uploaded when the pager makes the cell resident and
 // deleted when it evicts it, so the resident bytes reported are GPU bytes and go down on
 // eviction; where every cell a frame needs is resident, the frame equals the unpaged one. The
@@ -8,7 +8,7 @@
 
 #include "config/error.h"
 #include "display/gl/frame_images.h"
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_renderer.h"
 #include "scenes/image_compare.h"
 #include "walls/geometry_pager.h"
 

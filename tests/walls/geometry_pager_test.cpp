@@ -18,7 +18,7 @@ void uploadAll(GeometryPager& pager) {
 
 // Two meshes (a 3-vertex triangle, a 4-vertex quad) placed in three cells; the quad twice in
 // cell 1, once in cell 2; structure and cell-less objects are not paged. The bytes are those of
-// the GPU buffers a cell gets (display/gl/scene_gpu.h): vertices and indices, no per-object data.
+// the GPU buffers a cell gets (render/gl/scene_gpu.h): vertices and indices, no per-object data.
 TEST(GeometryPager, CellBytesCountEachMeshOncePerCell) {
     scenes::Scene s;
     s.meshes.resize(2);

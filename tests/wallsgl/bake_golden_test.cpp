@@ -1,5 +1,5 @@
 // Bake golden test: seen from its sampling point, a baked wall texture drawn as a quad on its
-// wall must look like the geometry it replaces. Reference: the display renderer drawing the
+// wall must look like the geometry it replaces. Reference: the scene renderer drawing the
 // content behind the wall (listed here by construction, not by the classifier under test) into a
 // target of the texture's resolution through the same off-axis frustum (screen = the wall).
 // Candidate: the baked file, read back with readMipLevels, uploaded and drawn with
@@ -7,7 +7,7 @@
 // texel centres fall on pixel centres, so the only differences are rounding (STYLE.md §5
 // tolerances). The clear colour is an opaque grey, so a texel that wrongly holds structure,
 // the intersecting box or opaque black where nothing is shows up as a bad pixel.
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_renderer.h"
 #include "scenes/image_compare.h"
 #include "scenes/image_io.h"
 #include "scenes/loader.h"

@@ -2,7 +2,7 @@
 // cluster_costs.h): a textured box seen from one of its sampling eyes shows what full detail
 // shows; the average box is less accurate than the textured one; impostors and costs come back
 // from the cache.
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_renderer.h"
 #include "render/cluster_tree.h"
 #include "scenes/flip.h"
 #include "tests/gl/gl_test_support.h"

@@ -5,7 +5,7 @@
 // least 0.6 of it, so a bound 2x too loose fails. The flat wall from the same eye is wrong on
 // far more pixels.
 #include "display/gl/gl_object.h"
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_renderer.h"
 #include "scenes/image_io.h"
 #include "scenes/primitives.h"
 #include "tests/gl/gl_test_support.h"

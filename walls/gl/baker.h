@@ -6,7 +6,7 @@
 // quad as the screen (mirrored for textures seen from the wall's back, bake_key.h
 // quadSeenFrom), drawing only the objects walls::wallContents lists for that wall and side:
 // content behind the wall; structure and objects crossing the wall are never baked. Depth is
-// reversed-Z from 0.05 m to infinity; lighting is the display renderer's (headlight at the
+// reversed-Z from 0.05 m to infinity; lighting is the scene renderer's (headlight at the
 // sampling point). Texels where nothing is drawn have alpha 0.
 //
 // Image convention: texel (0, 0) of a file is the wall's upper-left corner as seen from the

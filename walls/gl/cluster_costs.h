@@ -19,7 +19,7 @@
 //
 // Needs the rendering context current.
 
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_renderer.h"
 #include "render/cluster_frame.h"
 #include "walls/gl/cluster_impostors.h"
 

@@ -48,7 +48,7 @@
 // Derivation: docs/depth-walls.md.
 
 #include "display/gl/gl_object.h"
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_renderer.h"
 #include "display/off_axis.h"
 #include "walls/depth_wall.h"
 #include "walls/frame_planner.h"

@@ -9,7 +9,7 @@
 // Both are unlit flat colours, depth-tested so the scene can hide them.
 
 #include "display/gl/gl_object.h"
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_renderer.h"
 #include "display/off_axis.h"
 #include "walls/frame_types.h"
 

@@ -3,7 +3,7 @@
 #include "config/error.h"
 #include "display/timing.h"
 #include "scenes/image_io.h"
-#include "display/gl/view_loop.h"
+#include "render/gl/view_loop.h"
 #include "render/cluster_fades.h"
 #include "render/lod_choice.h"
 #include "walls/gl/background_baker.h"

@@ -14,7 +14,7 @@
 //  2. has the planner decide the frame against what is resident, maps texture ids to GL names;
 //     with geometry paging (WalkthroughSettings::geometryBudgetMB), the cells likewise: the
 //     pager's loader packs a cell's mesh groups on its thread, this class uploads them into
-//     the scene renderer's per-group buffers (display/gl/scene_gpu.h; a mesh shared by cells
+//     the scene renderer's per-group buffers (render/gl/scene_gpu.h; a mesh shared by cells
 //     is stored once) and deletes the buffers of evicted groups, so
 //     FrameResult::geometry.residentMB is the GPU bytes of resident groups;
 //  3. chooses the levels of detail (SceneRenderer::chooseLods) for the planned objects;
@@ -35,7 +35,7 @@
 #include "display/gl/frame_images.h"
 #include "display/gl/gpu_timer.h"
 #include "display/gl/render_targets.h"
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_renderer.h"
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
 #include "walls/frame_planner.h"

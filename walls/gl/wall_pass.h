@@ -15,7 +15,7 @@
 // with virtual walls construct a WallPass).
 
 #include "display/gl/gl_object.h"
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_renderer.h"
 #include "display/off_axis.h"
 #include "walls/frame_planner.h"
 #include "walls/texture_rect.h"

@@ -1,5 +1,5 @@
 #pragma once
-// Renders one wall texture: the display renderer (display/gl/scene_renderer.h) drawing a
+// Renders one wall texture: the scene renderer (render/gl/scene_renderer.h) drawing a
 // subset of the scene into an offscreen sRGB target through display::offAxisFrustum with the
 // eye at the sampling point and the wall quad as the screen. No projection code of its own.
 //
@@ -10,7 +10,7 @@
 // screen, the same choice the walkthrough makes per frame). Objects outside the texture's
 // frustum are culled either way (render/render_list.h).
 
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_renderer.h"
 #include "display/off_axis.h"
 #include "render/lod_choice.h"
 #include "scenes/scene.h"

@@ -29,8 +29,8 @@
 
 #include "display/display.h"
 #include "display/gl/gl_object.h"
-#include "display/gl/scene_gpu.h"
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_gpu.h"
+#include "render/gl/scene_renderer.h"
 #include "scenes/scene.h"
 #include "walls/warp_wall.h"
 

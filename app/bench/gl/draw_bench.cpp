@@ -4,7 +4,7 @@
 #include "display/display.h"
 #include "display/gl/context.h"
 #include "display/gl/render_targets.h"
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_renderer.h"
 #include "display/timing.h"
 #include "scenes/image_io.h"
 

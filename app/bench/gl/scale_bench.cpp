@@ -7,7 +7,7 @@
 #include "display/gl/context.h"
 #include "display/gl/frame_images.h"
 #include "display/gl/render_targets.h"
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_renderer.h"
 #include "app/bench/gl/modes.h"
 #include "app/bench/metrics.h"
 #include "app/bench/path.h"

@@ -1,4 +1,4 @@
-#include "display/gl/snapshot.h"
+#include "render/gl/snapshot.h"
 
 #include <algorithm>
 

@@ -11,7 +11,7 @@
 #include "display/gl/context.h"
 #include "display/gl/frame_images.h"
 #include "display/gl/render_targets.h"
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_renderer.h"
 #include "scenes/scene.h"
 
 namespace cavewall::gl {

@@ -1,4 +1,4 @@
-#include "display/gl/view_loop.h"
+#include "render/gl/view_loop.h"
 
 #include <chrono>
 

@@ -1,4 +1,4 @@
-#include "display/gl/scene_gpu.h"
+#include "render/gl/scene_gpu.h"
 
 #include <algorithm>
 #include <cassert>

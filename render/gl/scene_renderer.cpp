@@ -1,8 +1,8 @@
-#include "display/gl/scene_renderer.h"
+#include "render/gl/scene_renderer.h"
 
 #include "display/timing.h"
 #include "display/gl/shader.h"
-#include "display/gl/view_loop.h"
+#include "render/gl/view_loop.h"
 #include "render/lod_choice.h"
 
 #include <glm/gtc/matrix_access.hpp>
