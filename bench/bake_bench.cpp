@@ -9,8 +9,8 @@
 // fresh cache, with 2 writer threads. Run: build/bench/cavewall_bench_bake.
 #include "display/gl/context.h"
 #include "scenes/generate.h"
-#include "scenes/image_compare.h"
-#include "scenes/image_error.h"
+#include "metrics/image_compare.h"
+#include "metrics/image_error.h"
 #include "scenes/loader.h"
 #include "walls/bake_key.h"
 #include "walls/gl/baker.h"
@@ -97,7 +97,7 @@ BENCHMARK(BM_BakeTexture)->Arg(256)->Arg(1024)->Unit(benchmark::kMillisecond)->I
 // at most 512 texels), each rendered at full detail and at BakeSettings::lodTexels (or
 // $CAVEWALL_BENCH_LOD_TEXELS) texels, timed (draw until the GL
 // finished, and read back), and compared: PSNR of the pooled squared error over all sampled
-// textures (R, G, B as stored; scenes/image_error.h), the worst texture's PSNR and the largest
+// textures (R, G, B as stored; metrics/image_error.h), the worst texture's PSNR and the largest
 // per-texel difference (levels 0-255, any channel). Also the file stage of each texture, MIP
 // chain and tiled TIFF at zip (level 6, the default) and zip:1, timed and sized.
 // CAVEWALL_BENCH_SCENE names a scene.json to use instead of the generated plant.
@@ -125,7 +125,7 @@ void BM_BakeLodAgainstFullDetail(benchmark::State& state) {
     double mips = 0, zip6 = 0, zip1 = 0, bytes6 = 0, bytes1 = 0;
     int maxDelta = 0;
     double worstPsnr = INFINITY;
-    scenes::SquaredError pooled;
+    metrics::SquaredError pooled;
     for (auto _ : state)
         for (std::size_t k = 0; k < count; ++k) {
             const walls::Texture& t = setup.plan.textures[k * setup.plan.textures.size() / count];
@@ -142,10 +142,10 @@ void BM_BakeLodAgainstFullDetail(benchmark::State& state) {
             lodRead += lod.lastTiming().readMs;
             lodTris += double(lod.lastStats().triangles);
             maxErr = std::max(maxErr, lod.lastLod().maxErrorPx);
-            const scenes::SquaredError e = scenes::squaredError(b, a);
+            const metrics::SquaredError e = metrics::squaredError(b, a);
             pooled += e;
             worstPsnr = std::min(worstPsnr, e.psnrDb());
-            maxDelta = std::max(maxDelta, scenes::compareImages(b, a).maxDelta);
+            maxDelta = std::max(maxDelta, metrics::compareImages(b, a).maxDelta);
             const Clock::time_point m0 = Clock::now();
             const std::vector<scenes::Image> levels = walls::premultipliedMipChain(b);
             const Clock::time_point m1 = Clock::now();

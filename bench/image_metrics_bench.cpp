@@ -1,13 +1,13 @@
 // The image metrics of scenes/ on one 1024 x 1024 screen, as the bench will run them per frame:
-// FLIP (scenes/flip.h) at a CAVE wall's 9 and 17 pixels per degree and the paper's 67, SSIM
-// (scenes/ssim.h), the squared error behind pooled PSNR (scenes/image_error.h) and one frame
-// pair of popping (scenes/popping.h). The images are a seeded picture (gradients, stripes and
+// FLIP (metrics/flip.h) at a CAVE wall's 9 and 17 pixels per degree and the paper's 67, SSIM
+// (metrics/ssim.h), the squared error behind pooled PSNR (metrics/image_error.h) and one frame
+// pair of popping (metrics/popping.h). The images are a seeded picture (gradients, stripes and
 // noise) and a copy with its stripes moved and colours shifted, so that every filter has work.
 // One thread; the time per call is the figure to read.
-#include "scenes/flip.h"
-#include "scenes/image_error.h"
-#include "scenes/popping.h"
-#include "scenes/ssim.h"
+#include "metrics/flip.h"
+#include "metrics/image_error.h"
+#include "metrics/popping.h"
+#include "metrics/ssim.h"
 
 #include <benchmark/benchmark.h>
 
@@ -16,6 +16,7 @@
 namespace {
 
 using namespace cavewall::scenes;
+using namespace cavewall::metrics;
 
 constexpr int kSize = 1024;
 

@@ -10,7 +10,7 @@
 //    wall pass shows: premultiplied colour + (1 - alpha) grey, sRGB-encoded), decoded blocks
 //    against the RGBA8 texels; R, G, B of every texel.
 // Example: CAVEWALL_BENCH_TEXTURES=~/.cache/cavewall/<bake key> build/bench/cavewall_bench_texture_blocks
-#include "scenes/image_error.h"
+#include "metrics/image_error.h"
 #include "scenes/image_io.h"
 #include "walls/texture_blocks.h"
 #include "walls/texture_mips.h"
@@ -78,7 +78,7 @@ void encode(benchmark::State& state, walls::TextureFormat format) {
     const std::filesystem::path folder =
         std::filesystem::temp_directory_path() / ("cavewall-bench-blocks-" + std::to_string(::getpid()));
     std::uintmax_t diskBytes = 0, gpuBytes = 0, rgbaBytes = 0;
-    scenes::SquaredError error;
+    metrics::SquaredError error;
     double seconds = 0.0;
     for (auto _ : state) {
         diskBytes = gpuBytes = rgbaBytes = 0;
@@ -93,7 +93,7 @@ void encode(benchmark::State& state, walls::TextureFormat format) {
             diskBytes += std::filesystem::file_size(file);
             gpuBytes += blocks.bytes();
             rgbaBytes += walls::TextureLevels(s.textures[i]).bytes();
-            error += scenes::squaredError(overGrey(walls::decodeLevel(blocks.blocks[0], format)),
+            error += metrics::squaredError(overGrey(walls::decodeLevel(blocks.blocks[0], format)),
                                           overGrey(s.textures[i][0]));
             state.ResumeTiming();
         }

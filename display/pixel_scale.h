@@ -42,7 +42,7 @@ double maxPixelsPerRadian(const ViewScreen& screen);
 // nearest the eye, in the direction across the plane through the ray and the screen normal,
 // d / p * pi / 180 for d the eye's distance to the nearest point of the screen rectangle (h when
 // the eye is in front of the rectangle) and p the pixel size. This is the angular resolution to
-// evaluate image metrics such as FLIP at (scenes/flip.h): a CAVE wall of 3 m and 1024 pixels seen
+// evaluate image metrics such as FLIP at (metrics/flip.h): a CAVE wall of 3 m and 1024 pixels seen
 // from 1.5 m gives 8.9, with 1920 pixels 16.8. Nearest, not a mean over the screen, because it is
 // conservative (where pixels look largest, contrast sensitivity hides the least, so a metric
 // reports at least the error any other point of the screen would show) and because it is where

@@ -96,7 +96,7 @@ struct BoxView {
 };
 BoxView viewOfBox(const scenes::Bounds& box, glm::dvec3 direction);
 
-// Accuracy in [0, 1] from a mean LDR-FLIP error in [0, 1] (scenes/flip.h): 1 - error.
+// Accuracy in [0, 1] from a mean LDR-FLIP error in [0, 1] (metrics/flip.h): 1 - error.
 double accuracyFromFlip(double flipMean);
 
 }  // namespace cavewall::render

@@ -3,7 +3,7 @@
 #include "config/error.h"
 #include "display/gl/frame_images.h"
 #include "display/pixel_scale.h"
-#include "scenes/flip.h"
+#include "metrics/flip.h"
 #include "scenes/image_io.h"
 
 #include <algorithm>
@@ -75,9 +75,9 @@ DemoComparison compareRuns(const display::Display& display, const app::RunSummar
     std::vector<scenes::ScreenImage> maps;
     for (std::size_t i = 0; i < t.images.size(); ++i) {
         const scenes::ScreenImage& s = t.images[i];
-        scenes::FlipOptions options;
+        metrics::FlipOptions options;
         options.pixelsPerDegree = pixelsPerDegree(display, s.screen, t.head, s.pixels);
-        maps.push_back({s.screen, s.image, s.stem, scenes::flipErrorImage(scenes::flip(s.pixels, r.images[i].pixels, options))});
+        maps.push_back({s.screen, s.image, s.stem, metrics::flipErrorImage(metrics::flip(s.pixels, r.images[i].pixels, options))});
     }
     const scenes::Image a = gl::foldoutOf(display, t.images), b = gl::foldoutOf(display, r.images),
                         c = gl::foldoutOf(display, maps);

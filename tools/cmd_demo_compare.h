@@ -21,7 +21,7 @@ struct DemoComparison {
 
 // Compares `test` with `reference` frame by frame (the frames both saved; both runs kept their
 // images) and writes `folder`/worst_frame.png: the fold-outs of the worst frame of the test
-// run, of the reference, and of the FLIP maps of its screens (scenes::flipErrorImage), left to
+// run, of the reference, and of the FLIP maps of its screens (metrics::flipErrorImage), left to
 // right. Throws cavewall::Error when the runs saved no common frame or images differ in size.
 DemoComparison compareRuns(const display::Display& display, const app::RunSummary& test,
                            const app::RunSummary& reference, const std::filesystem::path& folder);

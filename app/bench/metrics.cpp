@@ -1,8 +1,8 @@
 #include "app/bench/metrics.h"
 
 #include "display/timing.h"
-#include "scenes/flip.h"
-#include "scenes/ssim.h"
+#include "metrics/flip.h"
+#include "metrics/ssim.h"
 
 #include <algorithm>
 #include <cassert>
@@ -15,7 +15,7 @@ namespace {
 
 constexpr std::size_t kFlipBins = 10000;
 
-void addPopping(scenes::PoppingSummary& s, double& squares, std::int64_t frame, double popping) {
+void addPopping(metrics::PoppingSummary& s, double& squares, std::int64_t frame, double popping) {
     if (s.pairs == 0 || popping > s.peak) {
         s.peak = popping;
         s.peakFrame = frame;
@@ -45,19 +45,19 @@ ErrorPool::ErrorPool(std::size_t screens) : _screens(screens) {
 }
 
 void ErrorPool::addFrame(std::int64_t frame, const std::vector<ComparedImage>& images) {
-    scenes::SquaredError all;
-    std::vector<scenes::SquaredError> perScreen(_screens.size());
+    metrics::SquaredError all;
+    std::vector<metrics::SquaredError> perScreen(_screens.size());
     std::vector<bool> shown(_screens.size(), false);
     for (const ComparedImage& c : images) {
         assert(c.screen >= 0 && c.screen < static_cast<int>(_screens.size()) && c.test && c.reference);
-        const scenes::SquaredError e = scenes::squaredError(*c.test, *c.reference);
+        const metrics::SquaredError e = metrics::squaredError(*c.test, *c.reference);
         all += e;
         perScreen[c.screen] += e;
         shown[c.screen] = true;
-        const double ssim = scenes::ssim(*c.test, *c.reference);
-        scenes::FlipOptions options;
+        const double ssim = metrics::ssim(*c.test, *c.reference);
+        metrics::FlipOptions options;
         options.pixelsPerDegree = c.pixelsPerDegree;
-        const scenes::FlipResult flip = scenes::flip(*c.test, *c.reference, options);
+        const metrics::FlipResult flip = metrics::flip(*c.test, *c.reference, options);
         for (Series* s : {&_all, &_screens[c.screen]}) {
             s->ssimSum += ssim;
             ++s->images;
@@ -69,7 +69,7 @@ void ErrorPool::addFrame(std::int64_t frame, const std::vector<ComparedImage>& i
             }
         }
         if (_worst.frame < 0 || flip.mean > _worst.mean) {
-            _worst = {scenes::flipErrorImage(flip), frame, c.screen, c.image, flip.mean};
+            _worst = {metrics::flipErrorImage(flip), frame, c.screen, c.image, flip.mean};
         }
         const auto [it, added] = _meters.try_emplace({c.screen, c.image});
         if (const std::optional<double> p = it->second.addFrame(frame, *c.test, *c.reference)) {
@@ -83,7 +83,7 @@ void ErrorPool::addFrame(std::int64_t frame, const std::vector<ComparedImage>& i
 }
 
 ImageError ErrorPool::summarise(const Series& s) {
-    const scenes::PooledErrorSummary p = s.psnr.summary();
+    const metrics::PooledErrorSummary p = s.psnr.summary();
     ImageError e;
     e.frames = p.frames;
     e.mse = p.mse;

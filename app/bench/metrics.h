@@ -5,25 +5,25 @@
 // full-geometry image of the same frame, eye and screen. A compared frame is every image shown
 // at that instant (all screens and eyes); ErrorPool pools a mode's compared frames, over all
 // screens and per screen:
-//  - PSNR (scenes/image_error.h): the headline is the pooled PSNR, from the squared error of all
+//  - PSNR (metrics/image_error.h): the headline is the pooled PSNR, from the squared error of all
 //    compared R, G, B samples of all frames; beside it the worst frame's PSNR and the 5th
 //    percentile of per-frame PSNR. The mean of per-frame PSNRs capped at 58.9 dB (8-bit
 //    quantisation) is kept only as a labelled column: it flatters, never rank by it.
-//  - SSIM (scenes/ssim.h, 11x11 Gaussian window): the mean over compared images.
-//  - FLIP (scenes/flip.h, LDR-FLIP) of every image at the pixels per degree the caller gives
+//  - SSIM (metrics/ssim.h, 11x11 Gaussian window): the mean over compared images.
+//  - FLIP (metrics/flip.h, LDR-FLIP) of every image at the pixels per degree the caller gives
 //    (the bench: display::minPixelsPerDegree of the image's screen seen from the frame's
 //    cyclopean eye). The mean is that of all compared pixels; p95 is the nearest-rank 95th
 //    percentile of all compared pixels too, read off a histogram of 10000 bins over [0, 1] (0
 //    when it is an exact 0, else the upper edge of the bin holding it: at most 1e-4 above the
 //    exact value). The image with the
-//    highest FLIP mean is kept as an error map (scenes::flipErrorImage).
-//  - Popping (scenes/popping.h): one PoppingMeter per screen and eye, fed the consecutive
+//    highest FLIP mean is kept as an error map (metrics::flipErrorImage).
+//  - Popping (metrics/popping.h): one PoppingMeter per screen and eye, fed the consecutive
 //    *compared* frames (every compareEvery-th frame, not every frame: a cross-fade shorter than
 //    that interval scores as a hard switch). Peak: the largest pair over all screens; RMS over
 //    all pairs of all screens.
 
-#include "scenes/image_error.h"
-#include "scenes/popping.h"
+#include "metrics/image_error.h"
+#include "metrics/popping.h"
 #include "scenes/scene.h"
 
 #include <array>
@@ -36,8 +36,8 @@
 
 namespace cavewall::bench {
 
-using scenes::kQuantisationPsnrDb;
-using scenes::psnrFromMse;
+using metrics::kQuantisationPsnrDb;
+using metrics::psnrFromMse;
 
 // A set of comparisons, summarised.
 struct ImageError {
@@ -66,7 +66,7 @@ struct ComparedImage {
 
 // The worst image's FLIP map.
 struct FlipMap {
-    scenes::Image image;              // scenes::flipErrorImage; empty when nothing was compared
+    scenes::Image image;              // metrics::flipErrorImage; empty when nothing was compared
     std::int64_t frame = -1;
     int screen = -1, eye = 0;
     double mean = 0.0;                // that image's FLIP mean
@@ -87,20 +87,20 @@ public:
 
 private:
     struct Series {
-        scenes::PooledError psnr;
+        metrics::PooledError psnr;
         double ssimSum = 0.0, flipSum = 0.0;
         std::size_t images = 0;
         std::uint64_t pixels = 0;
         std::vector<std::uint64_t> flipHistogram;  // errors > 0, kFlipBins bins over (0, 1]
         std::uint64_t flipZeros = 0;               // errors exactly 0
-        scenes::PoppingSummary popping;
+        metrics::PoppingSummary popping;
         double poppingSquares = 0.0;
     };
     static ImageError summarise(const Series& s);
 
     Series _all;
     std::vector<Series> _screens;
-    std::map<std::pair<int, int>, scenes::PoppingMeter> _meters;  // (screen, eye)
+    std::map<std::pair<int, int>, metrics::PoppingMeter> _meters;  // (screen, eye)
     FlipMap _worst;
 };
 

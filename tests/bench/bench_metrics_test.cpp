@@ -2,9 +2,9 @@
 #include "app/bench/metrics.h"
 
 #include "config/error.h"
-#include "scenes/flip.h"
-#include "scenes/popping.h"
-#include "scenes/ssim.h"
+#include "metrics/flip.h"
+#include "metrics/popping.h"
+#include "metrics/ssim.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -89,7 +89,7 @@ TEST(BenchMetrics, PsnrIsPooledOverPixelsWithWorstFrameAndCappedMeanApart) {
     EXPECT_NEAR(pool.screenResult(0).psnrDb, -10 * std::log10(imageMse / 2), 1e-9);
     EXPECT_TRUE(std::isinf(pool.screenResult(1).psnrDb));
     EXPECT_LT(all.ssim, 1.0);
-    EXPECT_NEAR(all.ssim, (3.0 + scenes::ssim(off, ref)) / 4, 1e-12);  // mean over the four images
+    EXPECT_NEAR(all.ssim, (3.0 + metrics::ssim(off, ref)) / 4, 1e-12);  // mean over the four images
 }
 
 TEST(BenchMetrics, FlipPoolsAllPixelsAtEachImagesPpdAndKeepsTheWorstMap) {
@@ -98,11 +98,11 @@ TEST(BenchMetrics, FlipPoolsAllPixelsAtEachImagesPpdAndKeepsTheWorstMap) {
     ErrorPool pool(2);
     pool.addFrame(0, {compared(0, small, ref, 9.0), compared(1, ref, ref, 9.0)});
     pool.addFrame(2, {compared(0, large, ref, 30.0), compared(1, ref, ref, 9.0)});
-    scenes::FlipOptions at9, at30;
+    metrics::FlipOptions at9, at30;
     at9.pixelsPerDegree = 9.0;
     at30.pixelsPerDegree = 30.0;
-    const scenes::FlipResult f0 = scenes::flip(small, ref, at9), f2 = scenes::flip(large, ref, at30);
-    ASSERT_NE(scenes::flip(large, ref, at9).mean, f2.mean);  // the ppd matters for this pair
+    const metrics::FlipResult f0 = metrics::flip(small, ref, at9), f2 = metrics::flip(large, ref, at30);
+    ASSERT_NE(metrics::flip(large, ref, at9).mean, f2.mean);  // the ppd matters for this pair
     const ImageError all = pool.result();
     EXPECT_NEAR(all.flipMean, (f0.mean + f2.mean) / 4, 1e-9);  // identical images add zeros
     // p95 over all pixels of all four images, nearest rank, from the histogram: within 1e-4 above.
@@ -120,7 +120,7 @@ TEST(BenchMetrics, FlipPoolsAllPixelsAtEachImagesPpdAndKeepsTheWorstMap) {
     EXPECT_EQ(worst.frame, 2);
     EXPECT_EQ(worst.screen, 0);
     EXPECT_NEAR(worst.mean, f2.mean, 1e-12);
-    EXPECT_EQ(worst.image.rgba, scenes::flipErrorImage(f2).rgba);
+    EXPECT_EQ(worst.image.rgba, metrics::flipErrorImage(f2).rgba);
 }
 
 TEST(BenchMetrics, PoppingFollowsEachScreenAndEyeAcrossComparedFrames) {
@@ -134,7 +134,7 @@ TEST(BenchMetrics, PoppingFollowsEachScreenAndEyeAcrossComparedFrames) {
     // Eye 0 switches: its error jumps by 40 levels over half the image while the picture holds.
     pool.addFrame(6, {compared(0, ref, ref, 9, 0), compared(0, right, right, 9, 1)});
     pool.addFrame(9, {compared(0, jumped, ref, 9, 0), compared(0, right, right, 9, 1)});
-    const double expected = scenes::framePairPopping(ref, ref, jumped, ref);
+    const double expected = metrics::framePairPopping(ref, ref, jumped, ref);
     EXPECT_GT(expected, 30.0);  // about 40 levels / 1 level floor in the switched tiles
     const ImageError e = pool.result();
     // Eye 0 from frame 3 to 6 changes picture but not error (0); the jump scores `expected`.

@@ -92,7 +92,7 @@ TEST_F(HeadlessContext, EveryOfferedPlatformDrawsTheSamePicture) {
         ++offered;
         std::cout << "offered: " << c->info().provider << "\n";
         const scenes::Image image = Snapshotter(cave, scene, *c).render(head).foldout;
-        EXPECT_TRUE(scenes::compareImages(image, reference).passes());
+        EXPECT_TRUE(metrics::compareImages(image, reference).passes());
     }
     EXPECT_GE(offered, 1);  // at least the one Auto picked
 }

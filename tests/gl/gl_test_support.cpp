@@ -46,7 +46,7 @@ std::filesystem::path testOutputFolder(const std::string& name) {
 
 std::filesystem::path testConfigFolder() { return std::filesystem::path(CAVEWALL_SOURCE_DIR) / "tests" / "gl"; }
 
-void expectMatchesGolden(const scenes::Image& actual, const std::string& name, scenes::ImageTolerance tolerance) {
+void expectMatchesGolden(const scenes::Image& actual, const std::string& name, metrics::ImageTolerance tolerance) {
     const std::filesystem::path golden = testConfigFolder() / "golden" / (name + ".png");
     if (envIs("CAVEWALL_UPDATE_GOLDENS", "1")) {
         scenes::writeImage(golden, actual);
@@ -58,12 +58,12 @@ void expectMatchesGolden(const scenes::Image& actual, const std::string& name, s
         return;
     }
     const scenes::Image expected = scenes::readImage(golden);
-    const scenes::ImageComparison result = scenes::compareImages(actual, expected, tolerance);
+    const metrics::ImageComparison result = metrics::compareImages(actual, expected, tolerance);
     if (result.passes()) return;
     const std::filesystem::path out = testOutputFolder(name);
     scenes::writeImage(out / "actual.png", actual);
     scenes::writeImage(out / "expected.png", expected);
-    if (result.sameSize) scenes::writeImage(out / "diff.png", scenes::differenceImage(actual, expected, tolerance));
+    if (result.sameSize) scenes::writeImage(out / "diff.png", metrics::differenceImage(actual, expected, tolerance));
     ADD_FAILURE() << "golden '" << name << "' differs: " << result.describe() << " (" << actual.width << " x "
                   << actual.height << " vs " << expected.width << " x " << expected.height << "); images in "
                   << out.string();

@@ -5,14 +5,14 @@
 // skipped, except under CI (CI=true in the environment), where a missing context must fail.
 //
 // Goldens live in tests/gl/golden/<name>.png (llvmpipe only) and are compared with the
-// project's tolerance (scenes/image_compare.h). On failure the test prints max/mean/bad share
+// project's tolerance (metrics/image_compare.h). On failure the test prints max/mean/bad share
 // and the worst pixels and writes actual.png, expected.png and diff.png to
 // $CAVEWALL_TEST_OUTPUT/<name>/ in the build tree. CAVEWALL_UPDATE_GOLDENS=1 rewrites the golden
 // in the source tree instead of comparing; CI never sets it.
 
 #include "config/display_config.h"
 #include "display/gl/context.h"
-#include "scenes/image_compare.h"
+#include "metrics/image_compare.h"
 #include "scenes/scene.h"
 
 #include <gtest/gtest.h>
@@ -51,7 +51,7 @@ std::filesystem::path testOutputFolder(const std::string& name);
 
 // Golden comparison as described above; records a non-fatal failure on mismatch.
 void expectMatchesGolden(const scenes::Image& actual, const std::string& name,
-                         scenes::ImageTolerance tolerance = {});
+                         metrics::ImageTolerance tolerance = {});
 
 // The folder of the test display configurations (tests/gl in the source tree).
 std::filesystem::path testConfigFolder();

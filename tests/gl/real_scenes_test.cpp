@@ -102,8 +102,8 @@ TEST_F(RealScenes, NodeMatrixAndTrsRenderTheSameImage) {
     const scenes::Scene matrix = scenes::loadSceneFile(kReal / "NodeMatrixVsTRS/Node_Attribute_08.gltf");
     // The same placement for both (their bounds agree to ~1e-7 m anyway).
     const glm::dmat4 place = render::viewAll(display, kEye, trs.bounds()).worldFromCave;
-    const scenes::ImageComparison r =
-        scenes::compareImages(render(matrix, {}, &place).image, render(trs, {}, &place).image);
+    const metrics::ImageComparison r =
+        metrics::compareImages(render(matrix, {}, &place).image, render(trs, {}, &place).image);
     EXPECT_TRUE(r.passes()) << r.describe();
 }
 

@@ -252,8 +252,8 @@ TEST_F(SceneRendererTest, MovingTheCaveAndTheSceneTogetherChangesNothingEvenFarA
     for (scenes::Object& o : farScene.objects) o.worldFromModel = far * o.worldFromModel;
     farScene.updateObjectBounds();
     const glm::dmat4 stand = glm::translate(glm::dmat4(1.0), glm::dvec3(0.37, 1.6, -0.61));
-    const scenes::ImageComparison r =
-        scenes::compareImages(render(farScene, far * stand), render(nearScene, stand));
+    const metrics::ImageComparison r =
+        metrics::compareImages(render(farScene, far * stand), render(nearScene, stand));
     EXPECT_TRUE(r.passes()) << r.describe();
 }
 

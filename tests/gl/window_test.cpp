@@ -1,6 +1,6 @@
 // The windowed path (GLFW, one window per screen) shows the same pixels as the headless one.
 // Run under a virtual X server: ctest runs this executable through `xvfb-run`.
-#include "scenes/image_compare.h"
+#include "metrics/image_compare.h"
 #include "scenes/image_io.h"
 #include "tests/cli/run_cli.h"
 #include "tests/gl/gl_test_support.h"
@@ -43,8 +43,8 @@ TEST_F(Window, RenderWithWindowMatchesHeadless) {
     for (const char* stem : {"front", "left", "right", "floor", "foldout"}) {
         SCOPED_TRACE(stem);
         const std::string file = std::string(stem) + ".png";
-        const scenes::ImageComparison r =
-            scenes::compareImages(scenes::readImage(out / "window" / file), scenes::readImage(out / "headless" / file));
+        const metrics::ImageComparison r =
+            metrics::compareImages(scenes::readImage(out / "window" / file), scenes::readImage(out / "headless" / file));
         EXPECT_TRUE(r.passes()) << r.describe();
     }
 }

@@ -23,6 +23,8 @@ expect_result(gl_ok display/gl/x.cpp "#include <epoxy/gl.h>\n#include \"display/
 expect_result(display_gl_up display/gl/x.cpp "#include <epoxy/gl.h>\n#include \"render/render_list.h\"" TRUE)
 expect_result(display_gl_up_gl display/gl/x.cpp "#include \"render/gl/scene_renderer.h\"" TRUE)
 expect_result(render_gl_ok render/gl/x.cpp "#include \"display/gl/gl_object.h\"\n#include \"render/render_list.h\"" FALSE)
+expect_result(metrics_in_scenes scenes/x.cpp "#include \"metrics/flip.h\"" TRUE)
+expect_result(metrics_ok metrics/x.cpp "#include \"scenes/scene.h\"\n#include \"config/error.h\"" FALSE)
 expect_result(render_up render/x.h "#include \"walls/plan.h\"" TRUE)
 expect_result(render_gl render/x.cpp "#include \"render/gl/scene_renderer.h\"" TRUE)
 expect_result(render_ok render/x.cpp "#include \"scenes/bvh.h\"\n#include \"display/pixel_scale.h\"" FALSE)

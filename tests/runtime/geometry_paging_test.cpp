@@ -9,7 +9,7 @@
 #include "config/error.h"
 #include "display/gl/frame_images.h"
 #include "render/gl/scene_renderer.h"
-#include "scenes/image_compare.h"
+#include "metrics/image_compare.h"
 #include "walls/geometry_pager.h"
 
 #include <gmock/gmock.h>
@@ -173,8 +173,8 @@ TEST_F(GeometryPagingTest, FramesEqualTheUnpagedOnesWhenTheNeededCellsAreResiden
         EXPECT_EQ(b.geometryMisses, 0);
         EXPECT_GT(b.geometry.resident, 0);
         EXPECT_EQ(a.geometryTriangles, b.geometryTriangles);
-        const scenes::ImageComparison c =
-            scenes::compareImages(gl::foldoutOf(display, b.images), gl::foldoutOf(display, a.images));
+        const metrics::ImageComparison c =
+            metrics::compareImages(gl::foldoutOf(display, b.images), gl::foldoutOf(display, a.images));
         EXPECT_TRUE(c.passes()) << c.describe();
     }
     EXPECT_GE(frames, 6);

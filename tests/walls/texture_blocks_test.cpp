@@ -2,7 +2,7 @@
 // texture, exact transparency, the ".bct" file round trip and a clear error for every kind of
 // damaged file. GL-free; the GL side (upload, sRGB decode, drawing) is tests/wallsgl.
 #include "config/error.h"
-#include "scenes/image_error.h"
+#include "metrics/image_error.h"
 #include "tests/support/files.h"
 #include "walls/texture_blocks.h"
 #include "walls/texture_mips.h"
@@ -71,7 +71,7 @@ scenes::Image overGrey(const scenes::Image& premultiplied) {
 }
 
 double psnrOverGrey(const scenes::Image& decoded, const scenes::Image& reference) {
-    return scenes::squaredError(overGrey(decoded), overGrey(reference)).psnrDb();
+    return metrics::squaredError(overGrey(decoded), overGrey(reference)).psnrDb();
 }
 
 // coveredRect: whole texels around every texel with alpha, grown by the margin and clipped to

@@ -8,7 +8,7 @@
 // tolerances). The clear colour is an opaque grey, so a texel that wrongly holds structure,
 // the intersecting box or opaque black where nothing is shows up as a bad pixel.
 #include "render/gl/scene_renderer.h"
-#include "scenes/image_compare.h"
+#include "metrics/image_compare.h"
 #include "scenes/image_io.h"
 #include "scenes/loader.h"
 #include "tests/gl/gl_test_support.h"
@@ -88,13 +88,13 @@ TEST_F(BakeGoldenTest, BakedTextureMatchesGeometryFromItsSamplingPoint) {
         drawer.draw(frustum, quad, texture.id());
         const scenes::Image wall = target.read("baked wall");
 
-        const scenes::ImageComparison c = scenes::compareImages(wall, geometry);
+        const metrics::ImageComparison c = metrics::compareImages(wall, geometry);
         EXPECT_TRUE(c.passes()) << c.describe();
         if (!c.passes()) {
             const std::filesystem::path out = cavewall::testing::testOutputFolder("bake_golden/texture_" + std::to_string(baked.id));
             scenes::writeImage(out / "actual.png", wall);
             scenes::writeImage(out / "expected.png", geometry);
-            scenes::writeImage(out / "diff.png", scenes::differenceImage(wall, geometry));
+            scenes::writeImage(out / "diff.png", metrics::differenceImage(wall, geometry));
         }
         // Not vacuous: the texture shows something and leaves something transparent.
         int opaque = 0, clear = 0;

@@ -7,8 +7,8 @@
 // welds: 2,880 triangles, far finer than a texel beyond a few metres) in a row from 3 m to 24 m
 // behind a 4 m x 3 m wall at z = 0, seen from a sampling point 2 m in front of it, baked at
 // 256 x 192 texels (64 texels per metre on the wall).
-#include "scenes/image_compare.h"
-#include "scenes/image_error.h"
+#include "metrics/image_compare.h"
+#include "metrics/image_error.h"
 #include "scenes/image_io.h"
 #include "scenes/mesh_optimize.h"
 #include "scenes/primitives.h"
@@ -62,8 +62,8 @@ TEST_F(BakeLodTest, ALodTextureMatchesTheFullDetailOneWithinHalfATexel) {
     // rule's 0.3 levels and the PSNR above 40 dB. Measured on llvmpipe: 0.11 % (52 texels, 3 of
     // them flipping between cylinder and background), mean 0.035, 45.2 dB, with 490 triangles
     // instead of 23,040.
-    const scenes::ImageComparison c = scenes::compareImages(candidate, reference, {3, 0.005, 0.3});
-    const double psnr = scenes::squaredError(candidate, reference).psnrDb();
+    const metrics::ImageComparison c = metrics::compareImages(candidate, reference, {3, 0.005, 0.3});
+    const double psnr = metrics::squaredError(candidate, reference).psnrDb();
     std::cout << "LOD 0.5 texel vs full detail: " << c.describe() << "; PSNR " << psnr << " dB; triangles "
               << lod.lastStats().triangles << " of " << full.lastStats().triangles << "\n";
     EXPECT_TRUE(c.passes()) << c.describe();
@@ -72,7 +72,7 @@ TEST_F(BakeLodTest, ALodTextureMatchesTheFullDetailOneWithinHalfATexel) {
         const std::filesystem::path out = cavewall::testing::testOutputFolder("bake_lod");
         scenes::writeImage(out / "actual.png", candidate);
         scenes::writeImage(out / "expected.png", reference);
-        scenes::writeImage(out / "diff.png", scenes::differenceImage(candidate, reference));
+        scenes::writeImage(out / "diff.png", metrics::differenceImage(candidate, reference));
     }
 }
 

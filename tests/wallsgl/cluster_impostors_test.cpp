@@ -4,7 +4,7 @@
 // from the cache.
 #include "render/gl/scene_renderer.h"
 #include "render/cluster_tree.h"
-#include "scenes/flip.h"
+#include "metrics/flip.h"
 #include "tests/gl/gl_test_support.h"
 #include "tests/wallsgl/bake_test_scene.h"
 #include "walls/gl/cluster_costs.h"
@@ -62,8 +62,8 @@ TEST_F(ClusterImpostorsTest, ATexturedBoxShowsFullDetailAtItsSamplingEyeAndIsCac
     const scenes::Image full = impostors.image(3, render::ClusterRep::Full, screen, eye, {64, 64});
     const scenes::Image textured = impostors.image(3, render::ClusterRep::Textured, screen, eye, {64, 64});
     const scenes::Image average = impostors.image(3, render::ClusterRep::Average, screen, eye, {64, 64});
-    const double texturedError = scenes::flip(textured, full, {10.0}).mean;
-    const double averageError = scenes::flip(average, full, {10.0}).mean;
+    const double texturedError = metrics::flip(textured, full, {10.0}).mean;
+    const double averageError = metrics::flip(average, full, {10.0}).mean;
     EXPECT_LT(texturedError, 0.05);
     EXPECT_LT(texturedError, averageError);
     // Measured accuracy from the six directions: in [0, 1], textured above average on the whole.

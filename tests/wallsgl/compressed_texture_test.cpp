@@ -3,8 +3,8 @@
 // that the sampler's sRGB decode of a compressed texture is the RGBA8 path's (drawn against the
 // same blocks decoded on the CPU and uploaded as GL_SRGB8_ALPHA8: golden tolerance), and that a
 // compressed bake of the bake test scene renders within a stated PSNR of the RGBA8 bake.
-#include "scenes/image_compare.h"
-#include "scenes/image_error.h"
+#include "metrics/image_compare.h"
+#include "metrics/image_error.h"
 #include "scenes/image_io.h"
 #include "scenes/loader.h"
 #include "tests/gl/gl_test_support.h"
@@ -117,11 +117,11 @@ TEST_F(CompressedTextureTest, BlocksStayCompressedAndDecodeLikeRgba8) {
         for (const walls::BlockLevel& l : blocks.blocks) decoded.push_back(walls::decodeLevel(l, format));
         const GlObject reference = uploadWallTexture(decoded);
         const scenes::Image gpu = drawFilling(drawer, compressed.id(), 64), cpu = drawFilling(drawer, reference.id(), 64);
-        const scenes::ImageComparison c = scenes::compareImages(gpu, cpu);
+        const metrics::ImageComparison c = metrics::compareImages(gpu, cpu);
         EXPECT_TRUE(c.passes()) << c.describe();
         // Not vacuous: the square is drawn over the grey.
         const scenes::Image clear = drawFilling(drawer, 0, 64);
-        EXPECT_FALSE(scenes::compareImages(gpu, clear).passes());
+        EXPECT_FALSE(metrics::compareImages(gpu, clear).passes());
     }
 }
 
@@ -206,7 +206,7 @@ TEST_F(CompressedTextureTest, CompressedBakeRendersWithinToleranceOfRgba8) {
     // transparent texels around content, whose premultiplied black must be kept too; BC1 codes
     // those as its transparent index). Limits about 3 dB below.
     for (const auto& [compressed, minPsnr] : {std::pair{&bc1, 52.0}, std::pair{&bc3, 42.0}}) {
-        scenes::SquaredError error;
+        metrics::SquaredError error;
         for (std::size_t i = 0; i < rgba.manifest.textures.size(); ++i) {
             const walls::BakedTexture& baked = rgba.manifest.textures[i];
             const int side = description.walls[baked.wall].cells[0] == baked.cell ? 0 : 1;
@@ -221,7 +221,7 @@ TEST_F(CompressedTextureTest, CompressedBakeRendersWithinToleranceOfRgba8) {
                 return target.read(file);
             };
             ASSERT_EQ(compressed->manifest.textures[i].id, baked.id);
-            error += scenes::squaredError(draw(*compressed, compressed->manifest.textures[i].file), draw(rgba, baked.file));
+            error += metrics::squaredError(draw(*compressed, compressed->manifest.textures[i].file), draw(rgba, baked.file));
         }
         const std::string name(walls::textureFormatName(compressed == &bc1 ? TextureFormat::Bc1 : TextureFormat::Bc3));
         std::cout << name << ": pooled PSNR against the rgba8 bake over " << rgba.manifest.textures.size()

@@ -2,7 +2,7 @@
 
 #include "config/error.h"
 #include "render/vertex_lighting.h"
-#include "scenes/flip.h"
+#include "metrics/flip.h"
 #include "scenes/image_io.h"
 #include "walls/bake_key.h"
 #include "walls/bake_manifest.h"
@@ -187,7 +187,7 @@ render::ClusterAccuracy ClusterImpostors::measureAccuracy(int index) {
         const auto [screen, eye] = render::viewOfBox(node.box, directions[d]);
         const scenes::Image full = image(index, render::ClusterRep::Full, screen, eye, size);
         for (render::ClusterRep rep : {render::ClusterRep::Textured, render::ClusterRep::Average}) {
-            const double value = render::accuracyFromFlip(scenes::flip(image(index, rep, screen, eye, size), full, {ppd}).mean);
+            const double value = render::accuracyFromFlip(metrics::flip(image(index, rep, screen, eye, size), full, {ppd}).mean);
             (rep == render::ClusterRep::Textured ? accuracy.textured : accuracy.average)[d] = value;
         }
     }

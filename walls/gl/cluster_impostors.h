@@ -14,7 +14,7 @@
 // Accuracy (Maciel & Shirley 1995, section 5.2): per accuracy direction
 // (render::accuracyDirections), the cluster drawn at full detail and as each impostor, from 2.5
 // box diagonals away through a square screen facing the eye, on black, compared with LDR-FLIP
-// (scenes/flip.h) at the comparison image's own pixels per degree: accuracy = 1 - mean FLIP.
+// (metrics/flip.h) at the comparison image's own pixels per degree: accuracy = 1 - mean FLIP.
 //
 // Cache: <cache>/clusters/<16 hex digits>/ per cluster, keyed by the content keys of its objects
 // (walls::objectKeys: meshes, materials, images, placement) and the settings, so an unchanged

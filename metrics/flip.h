@@ -44,7 +44,7 @@
 // feature sigma 0.5 w ppd and radius ceil(3 sigma), the Hunt factor 0.01 L*, HyAB, FLIP =
 // colour^(1 - feature), and the default 67 ppd (0.7 m, 3840 px, 0.7 m wide) all agree with what
 // is written above; the paper's cmax, HyAB(Hunt green, Hunt blue) = 203 raised to 0.7 = 41.3,
-// is what flipColorError computes (tests/scenes/flip_test.cpp). Nothing needed fixing.
+// is what flipColorError computes (tests/metrics/flip_test.cpp). Nothing needed fixing.
 //
 // Choices where the paper leaves room (this code may differ from NVIDIA's reference code here):
 //  - Linear RGB to XYZ: the sRGB (IEC 61966-2-1) matrix to 7 digits; the reference derives
@@ -58,7 +58,7 @@
 //    convolution up to rounding.
 //  - Input: 8-bit bytes only; sRGB decoding by the exact IEC 61966-2-1 piecewise curve.
 //  - Summary: the mean is the paper's single pooled value; p50, p95 and max are nearest-rank
-//    percentiles (scenes/image_filter.h).
+//    percentiles (metrics/image_filter.h).
 //  - Error-map colours: the paper shows its maps with the "magma" colour map; flipErrorImage uses
 //    a similar black-purple-orange-yellow ramp of its own (see there), not magma's table.
 
@@ -67,7 +67,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 
 enum class ColorEncoding : std::uint8_t {
     Srgb,    // bytes are sRGB-encoded (what the renderer stores, display/gl/render_targets.h)
@@ -96,11 +96,11 @@ struct FlipResult {
 // (kernel widths grow with ppd), plus two colour conversions to CIELAB; one 1024 x 1024 pair
 // took 0.2-0.35 s of CPU on the project's shared 2-core machine (bench/image_metrics_bench.cpp).
 // Memory: the result, plus rows of the images as wide as the kernels are tall.
-FlipResult flip(const Image& test, const Image& reference, const FlipOptions& options = {});
+FlipResult flip(const scenes::Image& test, const scenes::Image& reference, const FlipOptions& options = {});
 
 // The error map as an opaque 8-bit image for PNG output (name "flip"): each pixel's error mapped
 // through a ramp black (0) - purple (0.25) - red (0.5) - orange (0.75) - pale yellow (1),
 // interpolated linearly between those stops in sRGB bytes.
-Image flipErrorImage(const FlipResult& result);
+scenes::Image flipErrorImage(const FlipResult& result);
 
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

@@ -18,10 +18,10 @@
 
 #include "scenes/scene.h"
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 
 // SSIM of the luma of two 8-bit RGBA images (see above). Throws cavewall::Error naming both
 // images when their sizes differ or either is empty.
-double ssim(const Image& a, const Image& b);
+double ssim(const scenes::Image& a, const scenes::Image& b);
 
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

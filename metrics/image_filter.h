@@ -1,6 +1,6 @@
 #pragma once
 // Image planes and separable convolution: the filtering under the image metrics
-// (scenes/flip.h, scenes/ssim.h), plus their percentiles and size check.
+// (metrics/flip.h, metrics/ssim.h), plus their percentiles and size check.
 //
 // A plane is one channel of float (Plane) or double (PlaneDouble) values, rows top to bottom, in
 // whatever unit its producer states.
@@ -17,7 +17,7 @@
 #include <type_traits>
 #include <vector>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 
 template <typename T>
 struct BasicPlane {
@@ -73,6 +73,6 @@ std::vector<double> percentiles(std::vector<float> values, std::span<const doubl
 // Throws cavewall::Error "<what>: comparing 'a' with 'b': expected two non-empty RGBA images of
 // the same size, got WxH and WxH" unless both are non-empty, hold width * height * 4 bytes and
 // have the same size.
-void expectComparableImages(std::string_view what, const Image& a, const Image& b);
+void expectComparableImages(std::string_view what, const scenes::Image& a, const scenes::Image& b);
 
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

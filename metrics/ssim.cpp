@@ -1,12 +1,12 @@
-#include "scenes/ssim.h"
+#include "metrics/ssim.h"
 
-#include "scenes/image_filter.h"
+#include "metrics/image_filter.h"
 
 #include <algorithm>
 #include <span>
 #include <vector>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 
 namespace {
 
@@ -17,7 +17,7 @@ constexpr double kC1 = (0.01 * 255) * (0.01 * 255), kC2 = (0.03 * 255) * (0.03 *
 // cancellation when the means are subtracted.
 constexpr double kCentre = 128.0;
 
-PlaneDouble centredLuma(const Image& image) {
+PlaneDouble centredLuma(const scenes::Image& image) {
     PlaneDouble y(image.width, image.height);
     for (std::size_t i = 0; i < y.values.size(); ++i) {
         const std::uint8_t* p = &image.rgba[i * 4];
@@ -70,7 +70,7 @@ double ssimAt(const Moments& m, int i) {
 
 }  // namespace
 
-double ssim(const Image& a, const Image& b) {
+double ssim(const scenes::Image& a, const scenes::Image& b) {
     expectComparableImages("ssim", a, b);
     const int rx = std::min(kRadius, (a.width - 1) / 2), ry = std::min(kRadius, (a.height - 1) / 2);
     const std::vector<double> kx = gaussianKernel<double>(kSigma, rx), ky = gaussianKernel<double>(kSigma, ry);
@@ -88,4 +88,4 @@ double ssim(const Image& a, const Image& b) {
     return sum / (static_cast<double>(a.width - 2 * rx) * (a.height - 2 * ry));
 }
 
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

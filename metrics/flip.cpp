@@ -1,7 +1,7 @@
-#include "scenes/flip.h"
+#include "metrics/flip.h"
 
-#include "scenes/flip_color.h"
-#include "scenes/image_filter.h"
+#include "metrics/flip_color.h"
+#include "metrics/image_filter.h"
 
 #include <glm/glm.hpp>
 
@@ -11,7 +11,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 
 namespace {
 
@@ -34,7 +34,7 @@ constexpr double kFeatureWidth = 0.082;  // degrees; the feature exponent qf = 0
 // kernels sum to 0, so they see Yy / 116.
 class OpponentRows {
 public:
-    OpponentRows(const Image& image, const std::array<float, 256>& decode, int radius)
+    OpponentRows(const scenes::Image& image, const std::array<float, 256>& decode, int radius)
         : _image(image), _decode(decode), _slots(2 * radius + 1), _radius(radius) {
         for (std::vector<float>& c : _channels) c.resize(static_cast<std::size_t>(_slots) * image.width);
     }
@@ -74,7 +74,7 @@ private:
         }
     }
 
-    const Image& _image;
+    const scenes::Image& _image;
     const std::array<float, 256>& _decode;
     int _slots, _radius, _next = 0;
     std::array<std::vector<float>, 3> _channels;
@@ -221,7 +221,7 @@ void summarise(FlipResult& result) {
 
 }  // namespace
 
-FlipResult flip(const Image& test, const Image& reference, const FlipOptions& options) {
+FlipResult flip(const scenes::Image& test, const scenes::Image& reference, const FlipOptions& options) {
     expectComparableImages("flip", test, reference);
     const double ppd = options.pixelsPerDegree;
     assert(ppd >= 1.0 && ppd <= 1000.0);
@@ -241,12 +241,12 @@ FlipResult flip(const Image& test, const Image& reference, const FlipOptions& op
     return result;
 }
 
-Image flipErrorImage(const FlipResult& result) {
+scenes::Image flipErrorImage(const FlipResult& result) {
     assert(result.errors.size() == static_cast<std::size_t>(result.width) * result.height);
     // Stops at 0, 0.25, 0.5, 0.75 and 1 (see the header).
     static constexpr std::array<std::array<double, 3>, 5> kStops{
         {{0, 0, 0}, {72, 16, 120}, {184, 50, 110}, {250, 140, 80}, {255, 250, 190}}};
-    Image image{"flip", result.width, result.height, std::vector<std::uint8_t>(result.errors.size() * 4, 255)};
+    scenes::Image image{"flip", result.width, result.height, std::vector<std::uint8_t>(result.errors.size() * 4, 255)};
     for (std::size_t i = 0; i < result.errors.size(); ++i) {
         const double s = std::clamp(static_cast<double>(result.errors[i]), 0.0, 1.0) * 4.0;
         const int lo = std::min(static_cast<int>(s), 3);
@@ -258,4 +258,4 @@ Image flipErrorImage(const FlipResult& result) {
     return image;
 }
 
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

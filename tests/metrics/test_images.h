@@ -9,13 +9,13 @@
 #include <random>
 #include <string>
 
-namespace cavewall::scenes::testing {
+namespace cavewall::metrics::testing {
 
 using Rgb = std::array<int, 3>;
 
 // A w x h image whose pixel (x, y) is colour(x, y); alpha 255.
-inline Image makeImage(int w, int h, const std::function<Rgb(int, int)>& colour, std::string name = "image") {
-    Image image{std::move(name), w, h, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * h * 4, 255)};
+inline scenes::Image makeImage(int w, int h, const std::function<Rgb(int, int)>& colour, std::string name = "image") {
+    scenes::Image image{std::move(name), w, h, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * h * 4, 255)};
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const Rgb c = colour(x, y);
@@ -24,12 +24,12 @@ inline Image makeImage(int w, int h, const std::function<Rgb(int, int)>& colour,
     return image;
 }
 
-inline Image flatImage(int w, int h, Rgb c, std::string name = "flat") {
+inline scenes::Image flatImage(int w, int h, Rgb c, std::string name = "flat") {
     return makeImage(w, h, [c](int, int) { return c; }, std::move(name));
 }
 
 // A textured image: smooth gradients plus seeded noise of +-`noise` levels, within 16..239.
-inline Image texturedImage(int w, int h, unsigned seed, int noise = 12, std::string name = "textured") {
+inline scenes::Image texturedImage(int w, int h, unsigned seed, int noise = 12, std::string name = "textured") {
     std::mt19937 rng(seed);
     std::uniform_int_distribution<int> n(-noise, noise);
     return makeImage(
@@ -40,4 +40,4 @@ inline Image texturedImage(int w, int h, unsigned seed, int noise = 12, std::str
         std::move(name));
 }
 
-}  // namespace cavewall::scenes::testing
+}  // namespace cavewall::metrics::testing

@@ -20,7 +20,7 @@
 #include <limits>
 #include <vector>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 
 // PSNR of uniform 8-bit quantisation noise, 10 log10(12 * 255²): the cap of the labelled
 // per-frame mean below.
@@ -44,7 +44,7 @@ struct SquaredError {
 
 // The squared error of `test` against `reference` (8-bit RGBA). Throws cavewall::Error naming
 // both when their sizes differ or either is empty.
-SquaredError squaredError(const Image& test, const Image& reference);
+SquaredError squaredError(const scenes::Image& test, const scenes::Image& reference);
 
 struct PooledErrorSummary {
     std::size_t frames = 0;
@@ -79,4 +79,4 @@ private:
     std::vector<Frame> _frames;
 };
 
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

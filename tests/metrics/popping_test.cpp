@@ -1,9 +1,9 @@
-// The popping metric (scenes/popping.h): a texture switched in one frame scores worse than the
+// The popping metric (metrics/popping.h): a texture switched in one frame scores worse than the
 // same change cross-faded; a steady error scores nothing however the picture moves.
-#include "scenes/popping.h"
+#include "metrics/popping.h"
 
 #include "config/error.h"
-#include "tests/scenes/test_images.h"
+#include "tests/metrics/test_images.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -11,8 +11,10 @@
 #include <cmath>
 #include <functional>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 namespace {
+
+using scenes::Image;
 
 using testing::makeImage;
 using testing::Rgb;
@@ -121,4 +123,4 @@ TEST(Popping, ASizeChangeWithoutRestartIsAnError) {
 }
 
 }  // namespace
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

@@ -1,12 +1,12 @@
-// Separable convolution and percentiles under the image metrics (scenes/image_filter.h).
-#include "scenes/image_filter.h"
+// Separable convolution and percentiles under the image metrics (metrics/image_filter.h).
+#include "metrics/image_filter.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numeric>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 namespace {
 
 TEST(ImageFilter, GaussianKernelIsNormalisedAndSymmetric) {
@@ -59,4 +59,4 @@ TEST(ImageFilter, PercentilesAgreeWithSeparateCalls) {
 }
 
 }  // namespace
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

@@ -1,13 +1,13 @@
-#include "scenes/popping.h"
+#include "metrics/popping.h"
 
-#include "scenes/image_filter.h"
+#include "metrics/image_filter.h"
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <vector>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 
 namespace {
 
@@ -18,8 +18,8 @@ struct TileSums {
 
 }  // namespace
 
-double framePairPopping(const Image& previousTest, const Image& previousReference, const Image& test,
-                        const Image& reference, const PoppingOptions& options) {
+double framePairPopping(const scenes::Image& previousTest, const scenes::Image& previousReference,
+                        const scenes::Image& test, const scenes::Image& reference, const PoppingOptions& options) {
     assert(options.tileSize >= 1 && options.floor > 0.0);
     expectComparableImages("popping", test, reference);
     expectComparableImages("popping", previousTest, test);
@@ -51,7 +51,8 @@ double framePairPopping(const Image& previousTest, const Image& previousReferenc
 
 PoppingMeter::PoppingMeter(PoppingOptions options) : _options(options) {}
 
-std::optional<double> PoppingMeter::addFrame(std::int64_t frameId, const Image& test, const Image& reference) {
+std::optional<double> PoppingMeter::addFrame(std::int64_t frameId, const scenes::Image& test,
+                                             const scenes::Image& reference) {
     expectComparableImages("popping", test, reference);
     std::optional<double> popping;
     if (_previousTest) {
@@ -76,4 +77,4 @@ void PoppingMeter::restart() {
 
 PoppingSummary PoppingMeter::summary() const { return _summary; }
 
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

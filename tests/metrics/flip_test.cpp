@@ -1,10 +1,10 @@
-// LDR-FLIP (scenes/flip.h) against the properties the paper states and the numbers its formulas
+// LDR-FLIP (metrics/flip.h) against the properties the paper states and the numbers its formulas
 // give for uniform patches, where neither filter changes anything.
-#include "scenes/flip.h"
-#include "scenes/flip_color.h"
+#include "metrics/flip.h"
+#include "metrics/flip_color.h"
 
 #include "config/error.h"
-#include "tests/scenes/test_images.h"
+#include "tests/metrics/test_images.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -13,8 +13,10 @@
 #include <cmath>
 #include <numeric>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 namespace {
+
+using scenes::Image;
 
 using testing::flatImage;
 using testing::makeImage;
@@ -187,4 +189,4 @@ TEST(Flip, ErrorImageMapsZeroToBlackAndOneToPaleYellow) {
 }
 
 }  // namespace
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

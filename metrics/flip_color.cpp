@@ -1,11 +1,11 @@
-#include "scenes/flip_color.h"
+#include "metrics/flip_color.h"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 
 namespace {
 
@@ -82,4 +82,4 @@ double flipColorError(double difference) {
     return std::min(1.0, kPt + (e - kPc * kCmax) / (kCmax - kPc * kCmax) * (1.0 - kPt));
 }
 
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

@@ -28,7 +28,7 @@
 #include <cstdint>
 #include <optional>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 
 struct PoppingOptions {
     int tileSize = 32;             // pixels, >= 1; 2-3.5 degrees at a CAVE wall's 9-17 ppd
@@ -51,7 +51,7 @@ public:
     // pair (previous frame, this one), or nothing for the first frame after construction or
     // restart(). Throws cavewall::Error naming the images when `test` and `reference` differ in
     // size, or when they differ from the previous frame's size.
-    std::optional<double> addFrame(std::int64_t frameId, const Image& test, const Image& reference);
+    std::optional<double> addFrame(std::int64_t frameId, const scenes::Image& test, const scenes::Image& reference);
 
     // Forgets the previous frame (a cut, or a change of screen): the next frame starts a new
     // chain and is not compared with the last one. The summary so far is kept.
@@ -61,14 +61,14 @@ public:
 
 private:
     PoppingOptions _options;
-    std::optional<Image> _previousTest, _previousReference;
+    std::optional<scenes::Image> _previousTest, _previousReference;
     PoppingSummary _summary;
     double _sumSquares = 0.0;
 };
 
 // The popping of one frame pair (see the header comment); the four images must have the same
 // size (throws cavewall::Error naming them otherwise).
-double framePairPopping(const Image& previousTest, const Image& previousReference, const Image& test,
-                        const Image& reference, const PoppingOptions& options = {});
+double framePairPopping(const scenes::Image& previousTest, const scenes::Image& previousReference,
+                        const scenes::Image& test, const scenes::Image& reference, const PoppingOptions& options = {});
 
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

@@ -1,6 +1,6 @@
 // The golden-image machinery itself (GL-free): comparison figures and atomic PNG files.
 #include "config/error.h"
-#include "scenes/image_compare.h"
+#include "metrics/image_compare.h"
 #include "scenes/image_io.h"
 
 #include <gmock/gmock.h>
@@ -10,8 +10,10 @@
 #include <fstream>
 #include <unistd.h>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 namespace {
+
+using scenes::Image;
 
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
@@ -100,8 +102,8 @@ TEST(ImageCompare, DifferenceImageMarksBadPixelsRed) {
 
 TEST(ImageIo, WritesAndReadsBackExactly) {
     const auto file = scratch("nested/folder/gradient.png");
-    writeImage(file, gradient());
-    const Image back = readImage(file);
+    scenes::writeImage(file, gradient());
+    const Image back = scenes::readImage(file);
     EXPECT_EQ(back.width, 100);
     EXPECT_TRUE(compareImages(back, gradient(), ImageTolerance::exact()).passes());
     // Atomic write: only the final file is left in the folder, no temporary.
@@ -113,17 +115,17 @@ TEST(ImageIo, WritesAndReadsBackExactly) {
 
 TEST(ImageIo, BadInputNamesTheFile) {
     const auto missing = scratch("missing.png");
-    EXPECT_THAT([&] { readImage(missing); }, ThrowsMessage<Error>(HasSubstr("missing.png: cannot read image")));
+    EXPECT_THAT([&] { scenes::readImage(missing); }, ThrowsMessage<Error>(HasSubstr("missing.png: cannot read image")));
     const auto text = scratch("not-an-image.png");
     std::filesystem::create_directories(text.parent_path());
     std::ofstream(text) << "hello";
-    EXPECT_THAT([&] { readImage(text); }, ThrowsMessage<Error>(HasSubstr("not-an-image.png")));
+    EXPECT_THAT([&] { scenes::readImage(text); }, ThrowsMessage<Error>(HasSubstr("not-an-image.png")));
     Image broken = gradient();
     broken.rgba.resize(10);
-    EXPECT_THAT([&] { writeImage(scratch("broken.png"), broken); },
+    EXPECT_THAT([&] { scenes::writeImage(scratch("broken.png"), broken); },
                 ThrowsMessage<Error>(HasSubstr("expected 100 x 100 RGBA pixels, got 10 bytes")));
     std::filesystem::remove_all(scratch(""));
 }
 
 }  // namespace
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

@@ -1,4 +1,4 @@
-#include "scenes/image_filter.h"
+#include "metrics/image_filter.h"
 
 #include "config/error.h"
 
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 
 namespace {
 
@@ -128,8 +128,8 @@ std::vector<double> percentiles(std::vector<float> values, std::span<const doubl
     return out;
 }
 
-void expectComparableImages(std::string_view what, const Image& a, const Image& b) {
-    const auto valid = [](const Image& i) {
+void expectComparableImages(std::string_view what, const scenes::Image& a, const scenes::Image& b) {
+    const auto valid = [](const scenes::Image& i) {
         return i.width > 0 && i.height > 0 && i.rgba.size() == static_cast<std::size_t>(i.width) * i.height * 4;
     };
     if (valid(a) && valid(b) && a.width == b.width && a.height == b.height) return;
@@ -138,4 +138,4 @@ void expectComparableImages(std::string_view what, const Image& a, const Image& 
                 std::to_string(a.height) + " and " + std::to_string(b.width) + "x" + std::to_string(b.height));
 }
 
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

@@ -1,17 +1,19 @@
-// Squared error and its pooling over frames (scenes/image_error.h): the pooled PSNR is not the
+// Squared error and its pooling over frames (metrics/image_error.h): the pooled PSNR is not the
 // mean of per-frame PSNRs, and each number below is derived in a comment.
-#include "scenes/image_error.h"
+#include "metrics/image_error.h"
 
 #include "config/error.h"
-#include "tests/scenes/test_images.h"
+#include "tests/metrics/test_images.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 namespace {
+
+using scenes::Image;
 
 using testing::flatImage;
 using testing::makeImage;
@@ -103,4 +105,4 @@ TEST(ImageError, DifferentSizesAreAnError) {
 }
 
 }  // namespace
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

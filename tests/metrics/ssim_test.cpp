@@ -1,17 +1,19 @@
-// SSIM with the standard 11x11 Gaussian window (scenes/ssim.h): its defining properties and
+// SSIM with the standard 11x11 Gaussian window (metrics/ssim.h): its defining properties and
 // two values derived by hand from the formula.
-#include "scenes/ssim.h"
+#include "metrics/ssim.h"
 
 #include "config/error.h"
-#include "tests/scenes/test_images.h"
+#include "tests/metrics/test_images.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <random>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 namespace {
+
+using scenes::Image;
 
 using testing::flatImage;
 using testing::makeImage;
@@ -82,4 +84,4 @@ TEST(Ssim, DifferentSizesAreAnError) {
 }
 
 }  // namespace
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

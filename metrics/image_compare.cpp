@@ -1,21 +1,21 @@
-#include "scenes/image_compare.h"
+#include "metrics/image_compare.h"
 
 #include <algorithm>
 #include <cassert>
 #include <cstdlib>
 #include <sstream>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 
 namespace {
 
-int pixelDelta(const Image& a, const Image& b, std::size_t pixel) {
+int pixelDelta(const scenes::Image& a, const scenes::Image& b, std::size_t pixel) {
     int d = 0;
     for (std::size_t c = 0; c < 4; ++c) d = std::max(d, std::abs(int(a.rgba[pixel * 4 + c]) - int(b.rgba[pixel * 4 + c])));
     return d;
 }
 
-bool sameSize(const Image& a, const Image& b) {
+bool sameSize(const scenes::Image& a, const scenes::Image& b) {
     return a.width == b.width && a.height == b.height && a.rgba.size() == b.rgba.size() &&
            a.rgba.size() == static_cast<std::size_t>(a.width) * a.height * 4;
 }
@@ -37,7 +37,7 @@ std::string ImageComparison::describe() const {
     return s.str();
 }
 
-ImageComparison compareImages(const Image& actual, const Image& expected, ImageTolerance tolerance,
+ImageComparison compareImages(const scenes::Image& actual, const scenes::Image& expected, ImageTolerance tolerance,
                               int worstCount) {
     ImageComparison r;
     r.tolerance = tolerance;
@@ -63,9 +63,9 @@ ImageComparison compareImages(const Image& actual, const Image& expected, ImageT
     return r;
 }
 
-Image differenceImage(const Image& actual, const Image& expected, ImageTolerance tolerance) {
+scenes::Image differenceImage(const scenes::Image& actual, const scenes::Image& expected, ImageTolerance tolerance) {
     assert(sameSize(actual, expected));
-    Image out{"diff", actual.width, actual.height, std::vector<std::uint8_t>(actual.rgba.size(), 255)};
+    scenes::Image out{"diff", actual.width, actual.height, std::vector<std::uint8_t>(actual.rgba.size(), 255)};
     for (std::size_t i = 0; i < actual.rgba.size() / 4; ++i) {
         std::uint8_t* q = &out.rgba[i * 4];
         const int d = pixelDelta(actual, expected, i);
@@ -80,4 +80,4 @@ Image differenceImage(const Image& actual, const Image& expected, ImageTolerance
     return out;
 }
 
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

@@ -1,15 +1,15 @@
 #pragma once
-// The colour science under FLIP (scenes/flip.h): byte decoding, linear sRGB to the opponent
+// The colour science under FLIP (metrics/flip.h): byte decoding, linear sRGB to the opponent
 // space YyCxCz, back to CIELAB with the Hunt adjustment, the HyAB difference and FLIP's
 // remapping of it onto [0, 1]. Reference white: XYZ of linear RGB (1, 1, 1) (D65, Y = 1).
 
-#include "scenes/flip.h"
+#include "metrics/flip.h"
 
 #include <glm/glm.hpp>
 
 #include <array>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 
 // Linear light in [0, 1] of each byte value: the IEC 61966-2-1 sRGB curve, or value / 255.
 std::array<float, 256> decodeTable(ColorEncoding encoding);
@@ -30,4 +30,4 @@ double hyab(glm::dvec3 a, glm::dvec3 b);
 // and onto [0.95, 1] above (clamped to 1).
 double flipColorError(double difference);
 
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

@@ -1,17 +1,17 @@
-#include "scenes/image_error.h"
+#include "metrics/image_error.h"
 
-#include "scenes/image_filter.h"
+#include "metrics/image_filter.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 
 double psnrFromMse(double mse) {
     return mse > 0.0 ? -10.0 * std::log10(mse) : std::numeric_limits<double>::infinity();
 }
 
-SquaredError squaredError(const Image& test, const Image& reference) {
+SquaredError squaredError(const scenes::Image& test, const scenes::Image& reference) {
     expectComparableImages("squared error", test, reference);
     // Integer sums are exact; one conversion at the end.
     std::uint64_t sum = 0;
@@ -49,4 +49,4 @@ PooledErrorSummary PooledError::summary() const {
     return s;
 }
 
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace cavewall::scenes {
+namespace cavewall::metrics {
 
 struct ImageTolerance {
     int badDelta = 3;               // a pixel with Δ above this is "bad"
@@ -43,12 +43,13 @@ struct ImageComparison {
 };
 
 // Compares `actual` against `expected` (both 8-bit RGBA, rows top to bottom).
-ImageComparison compareImages(const Image& actual, const Image& expected, ImageTolerance tolerance = {},
+ImageComparison compareImages(const scenes::Image& actual, const scenes::Image& expected, ImageTolerance tolerance = {},
                               int worstCount = 10);
 
 // A picture of the differences, the size of `actual`: grey where Δ ≤ tolerance.badDelta (a
 // faded copy of `expected`, to see where things are), red scaled by Δ elsewhere. Opaque.
 // Requires images of the same size.
-Image differenceImage(const Image& actual, const Image& expected, ImageTolerance tolerance = {});
+scenes::Image differenceImage(const scenes::Image& actual, const scenes::Image& expected,
+                              ImageTolerance tolerance = {});
 
-}  // namespace cavewall::scenes
+}  // namespace cavewall::metrics
