@@ -1,12 +1,12 @@
 #pragma once
 // The frame-time controller of Maciel & Shirley's (1995) clusters (render/cluster_budget.h),
 // applied to the walkthrough's frames, one definition for `cavewall run --clusters` and the
-// bench's clusters modes: before a frame, the selection's budget for walls::FrameInput; after
-// it, the controller's prediction, floor and target written into walls::FrameResult
+// bench's clusters modes: before a frame, the selection's budget for walkthrough::FrameInput; after
+// it, the controller's prediction, floor and target written into walkthrough::FrameResult
 // (frames.csv, bench_frames.csv), then the controller updated with the frame.
 
 #include "render/cluster_budget.h"
-#include "walls/frame_types.h"
+#include "walkthrough/frame_types.h"
 
 namespace cavewall::app {
 
@@ -18,6 +18,6 @@ double clusterBudgetFor(const render::ClusterBudget& budget);
 // r.clusterPredictedFrameMs and r.clusterFloorMs from what the controller knew before the
 // frame (0 before its first frame), then updates it with r.frameMs, r.clusterPredictedMs and
 // r.clusterSelectedMs.
-void controlClusters(render::ClusterBudget& budget, walls::FrameResult& r);
+void controlClusters(render::ClusterBudget& budget, walkthrough::FrameResult& r);
 
 }  // namespace cavewall::app

@@ -47,7 +47,7 @@ private:
 
 }  // namespace
 
-app::FrameState frameStateOf(const walls::FrameInput& in) {
+app::FrameState frameStateOf(const walkthrough::FrameInput& in) {
     app::FrameState s;
     s.frame = static_cast<std::uint64_t>(in.frame);
     s.time = in.time;
@@ -67,7 +67,7 @@ app::FrameState frameStateOf(const walls::FrameInput& in) {
     return s;
 }
 
-bool frameInputOf(const app::FrameState& s, walls::FrameInput& in) {
+bool frameInputOf(const app::FrameState& s, walkthrough::FrameInput& in) {
     in.frame = static_cast<long>(s.frame);
     in.time = s.time;
     in.head = {s.headPosition, s.headOrientation};
@@ -80,7 +80,7 @@ bool frameInputOf(const app::FrameState& s, walls::FrameInput& in) {
     in.triangleBudget = static_cast<std::size_t>(triangleBudget);
     in.hand.reset();
     if (hasHand) {
-        walls::HandCursorPose hand;
+        walkthrough::HandCursorPose hand;
         if (!r.get(hand.position) || !r.get(hand.orientation) || !r.get(hand.rayLength)) return false;
         in.hand = hand;
     }

@@ -7,15 +7,15 @@
 
 #include "scenes/screen_image.h"
 #include "app/cluster.h"
-#include "walls/frame_types.h"
+#include "walkthrough/frame_types.h"
 
 #include <cstdint>
 #include <vector>
 
 namespace cavewall::app {
 
-app::FrameState frameStateOf(const walls::FrameInput& input);
-bool frameInputOf(const app::FrameState& state, walls::FrameInput& input);
+app::FrameState frameStateOf(const walkthrough::FrameInput& input);
+bool frameInputOf(const app::FrameState& state, walkthrough::FrameInput& input);
 
 std::vector<std::uint8_t> encodeImages(const std::vector<scenes::ScreenImage>& images);
 bool decodeImages(const std::vector<std::uint8_t>& bytes, std::vector<scenes::ScreenImage>& images);

@@ -24,7 +24,7 @@ std::unique_ptr<app::Cluster> openCluster(const app::RunOptions& o) {
     return cluster;
 }
 
-double receiveFrame(app::Cluster& cluster, walls::FrameInput& input) {
+double receiveFrame(app::Cluster& cluster, walkthrough::FrameInput& input) {
     app::FrameState state = cluster.rank() == 0 ? app::frameStateOf(input) : app::FrameState{};
     const double seconds = cluster.broadcast(state);
     if (cluster.rank() != 0 && !app::frameInputOf(state, input)) cluster.abortAll("received a malformed frame input");
@@ -33,7 +33,7 @@ double receiveFrame(app::Cluster& cluster, walls::FrameInput& input) {
 
 namespace {
 
-std::vector<std::uint8_t> statsBytes(const walls::FrameResult& r, double syncMs) {
+std::vector<std::uint8_t> statsBytes(const walkthrough::FrameResult& r, double syncMs) {
     const double values[11] = {r.frameMs, r.cpuMs, r.gpuMs, double(r.stats.triangles), double(r.stats.drawCalls), syncMs,
                                double(r.warpFallbacks), r.maxErrorDeg, r.maxErrorPixels, double(r.geometryTriangles),
                                double(r.texturesOverAlpha)};
@@ -44,7 +44,8 @@ std::vector<std::uint8_t> statsBytes(const walls::FrameResult& r, double syncMs)
 
 }  // namespace
 
-double combineFrame(app::Cluster& cluster, walls::FrameResult& r, double syncMs, const std::vector<int>& screens) {
+double combineFrame(app::Cluster& cluster, walkthrough::FrameResult& r, double syncMs,
+                    const std::vector<int>& screens) {
     syncMs += 1e3 * cluster.swapBarrier();
     // Only this rank's screens were drawn; the read-back holds every screen's target.
     std::erase_if(r.images, [&](const scenes::ScreenImage& i) {
@@ -93,8 +94,8 @@ std::unique_ptr<app::Cluster> openCluster(const app::RunOptions& o) {
     return nullptr;
 }
 
-double receiveFrame(app::Cluster&, walls::FrameInput&) { return 0.0; }
-double combineFrame(app::Cluster&, walls::FrameResult&, double syncMs, const std::vector<int>&) { return syncMs; }
+double receiveFrame(app::Cluster&, walkthrough::FrameInput&) { return 0.0; }
+double combineFrame(app::Cluster&, walkthrough::FrameResult&, double syncMs, const std::vector<int>&) { return syncMs; }
 
 // openCluster never makes an app::Cluster here; these keep the unique_ptr and the call sites linking.
 app::Cluster::~Cluster() = default;

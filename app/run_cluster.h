@@ -1,13 +1,13 @@
 #pragma once
 // Cluster mode of `cavewall run` (app/cluster.h): rank 0 reads input and broadcasts each
-// frame's walls::FrameInput; every rank renders its own screens (config::screensOfRank); after the
+// frame's walkthrough::FrameInput; every rank renders its own screens (config::screensOfRank); after the
 // swap lock, rank 0 gathers the other ranks' statistics and images so that frames.csv and the
 // saved frames have the same layout as a single-process run. Without MPI in the build,
 // --cluster is a clear error.
 
 #include "app/cluster.h"
 #include "app/run_options.h"
-#include "walls/frame_types.h"
+#include "walkthrough/frame_types.h"
 
 #include <memory>
 
@@ -18,13 +18,14 @@ namespace cavewall::app {
 std::unique_ptr<app::Cluster> openCluster(const app::RunOptions& options);
 
 // Rank 0's `input` is sent to every rank; the others' is replaced. Returns milliseconds waited.
-double receiveFrame(app::Cluster& cluster, walls::FrameInput& input);
+double receiveFrame(app::Cluster& cluster, walkthrough::FrameInput& input);
 
 // The swap lock, then rank 0 gathers: frame/CPU/GPU times (max over ranks), triangles and draw
 // calls (sums), warp fallbacks and angular errors (max: each rank counts the walls its screens show)
 // and the images of every rank's own `screens` (in screen order). Returns the
 // slowest rank's wait in milliseconds (broadcast + swap lock), `syncMs` being this rank's
 // broadcast wait.
-double combineFrame(app::Cluster& cluster, walls::FrameResult& result, double syncMs, const std::vector<int>& screens);
+double combineFrame(app::Cluster& cluster, walkthrough::FrameResult& result, double syncMs,
+                    const std::vector<int>& screens);
 
 }  // namespace cavewall::app

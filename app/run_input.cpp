@@ -88,7 +88,7 @@ RunInput::RunInput(const RunOptions& o, const scenes::Scene& scene, const scenes
     if (o.record) _recorder = std::make_unique<input::Recorder>(*o.record, o.tracker);
 }
 
-walls::FrameInput RunInput::next(long i, bool readImages, const std::vector<input::Event>& windowEvents) {
+walkthrough::FrameInput RunInput::next(long i, bool readImages, const std::vector<input::Event>& windowEvents) {
     const double t = static_cast<double>(i) * kRunStep;
     if (_realTime && (_desktop || _tracker->isLive()))
         std::this_thread::sleep_until(_start + std::chrono::duration<double>(t));
@@ -112,12 +112,12 @@ walls::FrameInput RunInput::next(long i, bool readImages, const std::vector<inpu
         if (i > 0) _navigator.update(kRunStep);
     }
     const input::HandCursor cursor = _navigator.handCursor();
-    walls::FrameInput in;
+    walkthrough::FrameInput in;
     in.frame = i;
     in.time = t;
     in.head = {tracked.head.pose.position, tracked.head.pose.orientation};
     in.worldFromCave = _navigator.worldFromCave();
-    in.hand = walls::HandCursorPose{cursor.hand.position, cursor.hand.orientation, cursor.rayLength};
+    in.hand = walkthrough::HandCursorPose{cursor.hand.position, cursor.hand.orientation, cursor.rayLength};
     in.readImages = readImages;
     return in;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The input side of `cavewall run`: tracker -> tracking pipeline -> navigator (and the optional
-// recorder) turned into one walls::FrameInput per frame at the fixed step kRunStep. In cluster mode
+// recorder) turned into one walkthrough::FrameInput per frame at the fixed step kRunStep. In cluster mode
 // only rank 0 has one; the other ranks receive its FrameInput.
 //
 // The tracker spec "desktop" is the desktop fallback: keyboard and mouse events of the windows
@@ -16,7 +16,7 @@
 #include "input/tracking_pipeline.h"
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
-#include "walls/frame_types.h"
+#include "walkthrough/frame_types.h"
 
 #include <chrono>
 #include <memory>
@@ -41,7 +41,7 @@ public:
     // realTime.
     // `windowEvents`: the windows' keyboard and mouse events since the last frame (used by the
     // desktop fallback only).
-    walls::FrameInput next(long frame, bool readImages, const std::vector<input::Event>& windowEvents = {});
+    walkthrough::FrameInput next(long frame, bool readImages, const std::vector<input::Event>& windowEvents = {});
 
     bool isDesktop() const { return _desktop != nullptr; }
 

@@ -6,7 +6,7 @@
 
 #include "config/display_config.h"
 #include "scenes/scene_description.h"
-#include "walls/frame_types.h"
+#include "walkthrough/frame_types.h"
 #include "walls/depth_wall.h"
 #include "walls/plan.h"
 #include "walls/texture_blocks.h"
@@ -26,8 +26,8 @@ inline constexpr double kRunStep = 1.0 / 60.0;  // seconds per frame
 enum class WindowMode { Auto, Headless, Window };
 
 // How a wall's textures hand over to geometry: cross-fade, or geometry warped onto the
-// textures (walls/frame_types.h).
-using Transition = walls::Transition;
+// textures (walkthrough/frame_types.h).
+using Transition = walkthrough::Transition;
 
 // --nav. Auto: guided along the scene's walkPath when it has one, else None (the CAVE stays
 // where the path starts, or at the origin).
@@ -92,7 +92,7 @@ struct RunOptions {
     double frameBudgetMs = 0.0;                 // --frame-budget-ms: frame-time target, 0 none (needs --lod)
     double lodMaxPixels = 8.0;                  // --lod-max: the most a budget raises the tolerance to
     // --clusters: Maciel & Shirley's (1995) textured clusters instead of walls
-    // (walls/gl/walkthrough.h ClusterOptions); the budget is --frame-budget-ms's controller
+    // (walkthrough/gl/walkthrough.h ClusterOptions); the budget is --frame-budget-ms's controller
     // (predicted ms), else 16.7 ms.
     bool clusters = false;
     int clusterDivisions = 8;                   // --cluster-divisions N: finest grid N x max(1, N/4) x N

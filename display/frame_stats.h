@@ -1,6 +1,6 @@
 #pragma once
 // What drawing a view and a frame cost and submitted: plain counters filled by the GL passes
-// (render/gl/scene_renderer.h, walls/gl/) and reported by the walkthrough (walls/frame_types.h).
+// (render/gl/scene_renderer.h, walls/gl/) and reported by the walkthrough (walkthrough/frame_types.h).
 
 #include <cstddef>
 #include <vector>

@@ -1,7 +1,7 @@
 #pragma once
 // One rendered output image of a display screen, read back from the GPU: plain data shared by
 // the renderer (display/gl/frame_images.h), the walkthrough's frame results
-// (walls/frame_types.h) and the tools that write or send them.
+// (walkthrough/frame_types.h) and the tools that write or send them.
 
 #include "scenes/scene.h"
 

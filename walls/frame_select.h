@@ -29,6 +29,8 @@
 
 namespace cavewall::walls {
 
+inline constexpr int kMaxWallTextures = 4;  // a blend zone mixes at most 2 rows x 2 columns
+
 struct WallBlend {
     int wall = 0;                     // index into Plan::walls
     int side = 0;                     // 0: the viewer is in front of the wall

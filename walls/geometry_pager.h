@@ -3,7 +3,7 @@
 // walls/texture_pager.h for the cells the walkthrough draws as geometry.
 //
 // With virtual walls a frame draws as geometry only the viewer's cell and the cells it blends
-// into (walls/frame_planner.h); every other cell is a texture. Per frame the runtime says which
+// into (walkthrough/frame_planner.h); every other cell is a texture. Per frame the runtime says which
 // cells it draws as geometry now and which it may draw soon (the neighbours of those: one wall
 // away). A background thread loads the cells' mesh groups (below; the `Loader` reads or
 // prepares a group's meshes; the GL side uploads what is ready); residency is counted in bytes

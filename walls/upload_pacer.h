@@ -14,7 +14,7 @@
 // The constants were chosen on the pager's arrivals, traced in `cavewall run` on the default
 // plant (cave4 at 1024^2, alpha 10, 512-texel BC1, 240 frames at the bench's 47 m/s):
 //  - whole textures, a 24-frame window: uploads p99/p50 1.55, 427 misses (frame-textures);
-//  - with the planner's lookahead prefetch (walls/frame_planner.h): 1.43, 58 misses;
+//  - with the planner's lookahead prefetch (walkthrough/frame_planner.h): 1.43, 58 misses;
 //  - and bands with a 48-frame window: 1.33, 134 misses (the slow start of a long window let
 //    prefetches become wanted now, uploaded whole);
 //  - a window growing from 1 frame: 1.99 (the cold start's first burst set the rate);

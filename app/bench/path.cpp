@@ -29,7 +29,7 @@ EyePath recordEyePath(const scenes::Scene& scene, const scenes::SceneDescription
     app::RunInput input(options, scene, d, false);
     EyePath path;
     for (long i = 0; i < frames; ++i) {
-        walls::FrameInput in = input.next(i, false);
+        walkthrough::FrameInput in = input.next(i, false);
         in.hand.reset();  // the bench draws no hand cursor
         path.frames.push_back(in);
     }

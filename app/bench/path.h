@@ -12,7 +12,7 @@
 #include "config/display_config.h"
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
-#include "walls/frame_types.h"
+#include "walkthrough/frame_types.h"
 
 #include <string>
 #include <vector>
@@ -20,7 +20,7 @@
 namespace cavewall::bench {
 
 struct EyePath {
-    std::vector<walls::FrameInput> frames;  // readImages false; no hand cursor
+    std::vector<walkthrough::FrameInput> frames;  // readImages false; no hand cursor
     std::string description;             // one line for the report header
 };
 

@@ -47,7 +47,7 @@ struct ScaleRow {
     // paged mesh groups.
     double residentMB = 0.0;
     double pagedPeakMB = 0.0;            // walls: the paged groups alone (what paging decides)
-    double wholeModelMB = 0.0, largestThreeCellsMB = 0.0;  // yardsticks (walls/gl/walkthrough.h)
+    double wholeModelMB = 0.0, largestThreeCellsMB = 0.0;  // yardsticks (walkthrough/gl/walkthrough.h)
     double loadSeconds = 0.0;            // reading the scene files into memory
     double firstFrameSeconds = 0.0;      // from the loaded scene to the end of the first frame
     long geometryMisses = 0, geometryPageIns = 0;  // walls: cumulative over the run

@@ -61,12 +61,12 @@ void RunOutput::close() {
     }
 }
 
-void RunOutput::writeFrame(long frame, double t, glm::dvec3 head, const walls::FrameResult& r, double syncMs) {
+void RunOutput::writeFrame(long frame, double t, glm::dvec3 head, const walkthrough::FrameResult& r, double syncMs) {
     const glm::dvec3& w = r.eyeWorld;
     const std::string cell =
         r.cell >= 0 && r.cell < static_cast<int>(_description.cells.size()) ? _description.cells[r.cell].name : "-";
     int fallbacks = 0;
-    for (const walls::WallState& s : r.walls) fallbacks += s.fallback ? 1 : 0;
+    for (const walkthrough::WallState& s : r.walls) fallbacks += s.fallback ? 1 : 0;
     std::fprintf(_frames, "%ld,%s,%s,%s,%s,%s,%s,%s,%s,%d,%.3f,%.3f,%.3f,%zu,%d,%d,%ld,%ld,%.4f,%.2f,%d,%.3f,%d,%.3f,%.3f,%d,%zu,%d,%.3f,%ld,%ld,%d,%d,%.3f,%d,%d,%d,%.4f,%.4f,%d,%d,%d,%d,%d,%d,%.4f,%.4f,%.3f,%.3f,%.3f\n", frame,
                  exact(t).c_str(), exact(head.x).c_str(), exact(head.y).c_str(), exact(head.z).c_str(),
                  exact(w.x).c_str(), exact(w.y).c_str(), exact(w.z).c_str(), cell.c_str(), r.zone, r.frameMs, r.cpuMs,
@@ -77,7 +77,7 @@ void RunOutput::writeFrame(long frame, double t, glm::dvec3 head, const walls::F
                  r.clusterTextured, r.clusterAverage, r.clusterPredictedMs, r.clusterBudgetMs, r.clusterFades,
                  r.geometryFallbacks, r.texturesBaked, r.texturesBakedNow, r.texturesToBake, r.bakerBusy ? 1 : 0,
                  r.clusterSelectedMs, r.clusterCheapestMs, r.clusterTargetMs, r.clusterPredictedFrameMs, r.clusterFloorMs);
-    for (const walls::WallState& s : r.walls) {
+    for (const walkthrough::WallState& s : r.walls) {
         std::string textures;
         for (const auto& [id, weight] : s.textures)
             textures += (textures.empty() ? "" : ";") + std::to_string(id) + ":" + exact(weight);

@@ -27,7 +27,7 @@
 #include "display/display.h"
 #include "display/gl/frame_images.h"
 #include "scenes/scene_description.h"
-#include "walls/gl/walkthrough.h"
+#include "walkthrough/gl/walkthrough.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -45,7 +45,7 @@ public:
     RunOutput& operator=(const RunOutput&) = delete;
 
     // `syncMs`: cluster mode's wait for the frame broadcast and the swap lock (0 otherwise).
-    void writeFrame(long frame, double t, glm::dvec3 head, const walls::FrameResult& result, double syncMs = 0.0);
+    void writeFrame(long frame, double t, glm::dvec3 head, const walkthrough::FrameResult& result, double syncMs = 0.0);
     // Writes the frame's images and fold-out; returns the fold-out's path.
     std::filesystem::path saveImages(long frame, const std::vector<gl::ScreenImage>& images);
     // Flushes, syncs and closes both CSV files; throws Error with the system's reason (a full

@@ -19,7 +19,7 @@
 #include "walls/gl/background_baker.h"
 #include "walls/gl/baker.h"
 #include "walls/geometry_pager.h"
-#include "walls/gl/walkthrough.h"
+#include "walkthrough/gl/walkthrough.h"
 #include "walls/wall_setup.h"
 
 #include <algorithm>
@@ -197,7 +197,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 // Rank 0: frame i's saved images, and with clusters the diagram of what it drew from above
 // (Maciel & Shirley (1995), Figure D).
-void saveFrameImages(const Session& s, long i, const walls::FrameInput& in, walls::FrameResult& r,
+void saveFrameImages(const Session& s, long i, const walkthrough::FrameInput& in, walkthrough::FrameResult& r,
                      RunSummary& summary) {
     summary.foldouts.push_back(s.output->saveImages(i, r.images));
     if (s.walkthrough.hasClusters())
@@ -208,8 +208,8 @@ void saveFrameImages(const Session& s, long i, const walls::FrameInput& in, wall
 }
 
 // Rank 0: writes frame i and adds it to the summary.
-void recordFrame(const Session& s, long i, const walls::FrameInput& in, walls::FrameResult& r, double syncMs,
-                 RunSummary& summary) {
+void recordFrame(const Session& s, long i, const walkthrough::FrameInput& in, walkthrough::FrameResult& r,
+                 double syncMs, RunSummary& summary) {
     s.output->writeFrame(i, in.time, in.head.position, r, syncMs);
     if (in.readImages) saveFrameImages(s, i, in, r, summary);
     summary.frameMs.push_back(r.frameMs);
@@ -238,12 +238,13 @@ void runFrames(const Session& s, RunSummary& summary) {
     for (long i = 0; i < o.frames; ++i) {
         const bool save = o.saveEvery > 0 && i % o.saveEvery == 0;
         if (s.context.windowCount() > 0 && s.context.pollCloseRequested()) break;  // a window was closed
-        walls::FrameInput in = s.input ? s.input->next(i, save, s.context.takeInputEvents()) : walls::FrameInput{};
+        walkthrough::FrameInput in =
+            s.input ? s.input->next(i, save, s.context.takeInputEvents()) : walkthrough::FrameInput{};
         if (frameBudget) in.triangleBudget = frameBudget->budget();
         if (clusterBudget) in.clusterBudgetMs = app::clusterBudgetFor(*clusterBudget);
         double syncMs = s.cluster ? app::receiveFrame(*s.cluster, in) : 0.0;
         if (s.baker && o.bakeInterleave > 0) s.baker->pause((i / o.bakeInterleave) % 2 == 1);
-        walls::FrameResult r = s.walkthrough.renderFrame(in);
+        walkthrough::FrameResult r = s.walkthrough.renderFrame(in);
         if (i == 0) summary.firstFrameSeconds = secondsSince(s.start);
         if (s.cluster) syncMs = app::combineFrame(*s.cluster, r, syncMs, s.screens);
         // Rank 0: the slowest rank's time.

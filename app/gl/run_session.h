@@ -1,7 +1,7 @@
 #pragma once
 // `cavewall run` as a function, shared by the run and demo commands: load the scene and the
 // display, plan and bake the walls (when the scene has them), then drive the walkthrough runtime
-// (walls/gl/walkthrough.h) from a tracker, the tracking pipeline and the navigator at a fixed
+// (walkthrough/gl/walkthrough.h) from a tracker, the tracking pipeline and the navigator at a fixed
 // step of 1/60 s (app/run_input.h), writing frames.csv, walls.csv and the chosen frames
 // (app/gl/run_output.h).
 //
@@ -9,7 +9,7 @@
 // those times (runs are reproducible); live network trackers are polled in real time.
 
 #include "app/run_options.h"
-#include "walls/gl/walkthrough.h"
+#include "walkthrough/gl/walkthrough.h"
 
 namespace cavewall::gl {
 

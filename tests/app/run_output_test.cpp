@@ -14,8 +14,8 @@
 namespace cavewall::gl {
 namespace {
 
-using walls::FrameResult;
-using walls::WallState;
+using walkthrough::FrameResult;
+using walkthrough::WallState;
 
 scenes::SceneDescription twoCells() {
     scenes::SceneDescription d;

@@ -10,8 +10,8 @@ namespace cavewall::app {
 namespace {
 
 using scenes::ScreenImage;
-using walls::FrameInput;
-using walls::HandCursorPose;
+using walkthrough::FrameInput;
+using walkthrough::HandCursorPose;
 
 FrameInput sampleInput() {
     FrameInput in;

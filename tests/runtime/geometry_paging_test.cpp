@@ -1,4 +1,4 @@
-// Geometry paging by cell on the GPU (walls/gl/walkthrough.h, render/gl/scene_gpu.h): a cell's
+// Geometry paging by cell on the GPU (walkthrough/gl/walkthrough.h, render/gl/scene_gpu.h): a cell's
 // meshes live in buffers of their own, uploaded when the pager makes the cell resident and
 // deleted when it evicts it, so the resident bytes reported are GPU bytes and go down on
 // eviction; where every cell a frame needs is resident, the frame equals the unpaged one. The
@@ -95,9 +95,9 @@ AisleWalk walkNorthAisle(const scenes::Scene& scene, const SmallPlant& plant, gl
     double previousMB = 0.0;
     long previousEvictions = 0, previousPageIns = 0;
     for (double x = -36.0; x <= 36.0; x += 3.0) {
-        walls::FrameInput in;
+        walkthrough::FrameInput in;
         in.worldFromCave = cavePlacedAt({x, 1.7, -10.0});
-        const walls::FrameResult r = walkthrough.renderFrame(in);
+        const walkthrough::FrameResult r = walkthrough.renderFrame(in);
         const long evicted = r.geometry.evictions - previousEvictions, paged = r.geometry.pageIns - previousPageIns;
         std::cout << "x = " << x << ": " << r.geometry.resident << " groups, " << r.geometry.residentMB * kMB
                   << " GPU bytes, +" << paged << " -" << evicted << "\n";
@@ -166,10 +166,10 @@ TEST_F(GeometryPagingTest, FramesEqualTheUnpagedOnesWhenTheNeededCellsAreResiden
     int frames = 0;
     for (double x = -29.5; x < -20.0; x += 1.5, ++frames) {
         SCOPED_TRACE(x);
-        walls::FrameInput in;
+        walkthrough::FrameInput in;
         in.worldFromCave = cavePlacedAt({x, 1.7, -10.0});
         in.readImages = true;
-        const walls::FrameResult a = whole.renderFrame(in), b = paged.renderFrame(in);
+        const walkthrough::FrameResult a = whole.renderFrame(in), b = paged.renderFrame(in);
         EXPECT_EQ(b.geometryMisses, 0);
         EXPECT_GT(b.geometry.resident, 0);
         EXPECT_EQ(a.geometryTriangles, b.geometryTriangles);
@@ -186,7 +186,7 @@ TEST_F(GeometryPagingTest, WarpTransitionWithPagingIsRefusedWithAMessage) {
     const display::Display display = testDisplay(16);
     gl::WalkthroughOptions options;
     options.geometryBudgetMB = 1.0;
-    options.transition = walls::Transition::Warp;
+    options.transition = walkthrough::Transition::Warp;
     EXPECT_THAT([&] { gl::Walkthrough w(scene.scene, scene.description, display, *context, scene.walls, options); },
                 ::testing::ThrowsMessage<Error>(::testing::HasSubstr("expected transition blend, got warp")));
 }

@@ -54,8 +54,8 @@ protected:
         return std::make_unique<gl::Walkthrough>(scene.scene, scene.description, display, *context, setup, options);
     }
 
-    const walls::WallState* wallAB(const walls::FrameResult& r) const {
-        for (const walls::WallState& s : r.walls)
+    const walkthrough::WallState* wallAB(const walkthrough::FrameResult& r) const {
+        for (const walkthrough::WallState& s : r.walls)
             if (s.wall == wallIndex(scene.walls, "A|B")) return &s;
         return nullptr;
     }
@@ -64,7 +64,7 @@ protected:
     const display::Display display = testDisplay(32);
     std::filesystem::path root;
     gl::BakeRequest request;
-    walls::FrameInput in;
+    walkthrough::FrameInput in;
     std::optional<glm::dvec3> textured;
 };
 
@@ -81,7 +81,7 @@ TEST_F(OnDemandTest, FirstFrameBeforeTheBakeThenBakedTexturesThenNothingToBake) 
         auto walk = walkthrough(baker);
 
         // Frame 0: nothing baked yet; the wall wants textures and is drawn as geometry instead.
-        const walls::FrameResult first = walk->renderFrame(in);
+        const walkthrough::FrameResult first = walk->renderFrame(in);
         ASSERT_NE(wallAB(first), nullptr);
         EXPECT_TRUE(wallAB(first)->fallback);
         EXPECT_TRUE(wallAB(first)->textures.empty());
@@ -97,12 +97,12 @@ TEST_F(OnDemandTest, FirstFrameBeforeTheBakeThenBakedTexturesThenNothingToBake) 
         // Frame 1 hands every bake to the pager (and asks for the wall's textures); once they
         // are decoded and uploaded, frame 2 draws them.
         in.frame = 1;
-        const walls::FrameResult handed = walk->renderFrame(in);
+        const walkthrough::FrameResult handed = walk->renderFrame(in);
         EXPECT_EQ(handed.texturesBakedNow, total);
         EXPECT_EQ(handed.texturesBaked, total);
         walk->waitForTextures();
         in.frame = 2;
-        const walls::FrameResult drawn = walk->renderFrame(in);
+        const walkthrough::FrameResult drawn = walk->renderFrame(in);
         ASSERT_NE(wallAB(drawn), nullptr);
         EXPECT_FALSE(wallAB(drawn)->fallback);
         EXPECT_FALSE(wallAB(drawn)->textures.empty());
@@ -127,7 +127,7 @@ TEST_F(OnDemandTest, FirstFrameBeforeTheBakeThenBakedTexturesThenNothingToBake) 
     again.waitIdle();
     walk->waitForTextures();
     in.frame = 1;
-    const walls::FrameResult r = walk->renderFrame(in);
+    const walkthrough::FrameResult r = walk->renderFrame(in);
     EXPECT_EQ(r.texturesBaked, 0);
     EXPECT_EQ(again.stats().baked, 0);
     ASSERT_NE(wallAB(r), nullptr);
@@ -166,7 +166,7 @@ TEST_F(OnDemandTest, DepthWallsBakedOnDemandAreDrawnWithTheirDepths) {
         walk->renderFrame(in);  // hands the bakes to the pager
         walk->waitForTextures();
         in.frame = 2;
-        const walls::FrameResult drawn = walk->renderFrame(in);
+        const walkthrough::FrameResult drawn = walk->renderFrame(in);
         ASSERT_NE(wallAB(drawn), nullptr);
         ASSERT_FALSE(wallAB(drawn)->textures.empty());
         EXPECT_EQ(wallAB(drawn)->geometryWeight, 0.0);
@@ -183,7 +183,7 @@ TEST_F(OnDemandTest, DepthWallsBakedOnDemandAreDrawnWithTheirDepths) {
     cached.manifest = listed;
     options.synchronousPaging = true;
     auto walk = walkthrough(cached, nullptr);
-    const walls::FrameResult fromCache = walk->renderFrame(in);
+    const walkthrough::FrameResult fromCache = walk->renderFrame(in);
     ASSERT_EQ(fromCache.images.size(), onDemand.size());
     int differing = 0;
     for (std::size_t i = 0; i < onDemand.size(); ++i)
@@ -194,7 +194,7 @@ TEST_F(OnDemandTest, DepthWallsBakedOnDemandAreDrawnWithTheirDepths) {
     for (walls::BakedTexture t : listed.textures) cached.manifest.textures.push_back((t.depthFile.clear(), t));
     options.wallKind = walls::WallKind::Flat;
     auto flat = walkthrough(cached, nullptr);
-    const walls::FrameResult flatFrame = flat->renderFrame(in);
+    const walkthrough::FrameResult flatFrame = flat->renderFrame(in);
     int flatDiffers = 0;
     for (std::size_t i = 0; i < onDemand.size() && i < flatFrame.images.size(); ++i)
         flatDiffers += onDemand[i].pixels.rgba != flatFrame.images[i].pixels.rgba;
@@ -234,9 +234,9 @@ TEST_F(OnDemandTest, DiskBudgetEvictsLeastRecentlyWantedFiles) {
     for (int i = 0; i < static_cast<int>(poses.size()); ++i) {
         in.frame = i;
         in.worldFromCave = poses[i];
-        const walls::FrameResult r = walk->renderFrame(in);
+        const walkthrough::FrameResult r = walk->renderFrame(in);
         baker.waitIdle();
-        for (const walls::WallState& s : r.walls)
+        for (const walkthrough::WallState& s : r.walls)
             EXPECT_TRUE(!s.textures.empty() || s.geometryWeight > 0.0) << "frame " << i << ", wall " << s.wall;
     }
     const gl::BackgroundBakeStats stats = baker.stats();

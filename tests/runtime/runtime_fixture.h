@@ -6,7 +6,7 @@
 #include "display/display.h"
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
-#include "walls/gl/walkthrough.h"
+#include "walkthrough/gl/walkthrough.h"
 
 #include <filesystem>
 #include <optional>

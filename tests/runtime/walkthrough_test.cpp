@@ -1,7 +1,7 @@
 // The walkthrough executor on a small generated plant: one selection per frame for every eye and
 // screen, golden frames in a texture, a blend and a geometry zone, and paging under a tiny
 // budget never leaving a wall missing in the pixels. Which texture a wall keeps while another
-// is paged in is the planner's logic, tested without GL in tests/walls/frame_planner_test.cpp.
+// is paged in is the planner's logic, tested without GL in tests/walkthrough/frame_planner_test.cpp.
 #include "tests/gl/gl_test_support.h"
 #include "tests/runtime/runtime_fixture.h"
 
@@ -30,8 +30,8 @@ protected:
             if (b.wall == wall) return b;
         return {};
     }
-    const walls::WallState* stateOf(const walls::FrameResult& r, int wall) const {
-        for (const walls::WallState& s : r.walls)
+    const walkthrough::WallState* stateOf(const walkthrough::FrameResult& r, int wall) const {
+        for (const walkthrough::WallState& s : r.walls)
             if (s.wall == wall) return &s;
         return nullptr;
     }
@@ -64,9 +64,9 @@ TEST_F(WalkthroughTest, BothEyesAndAllScreensUseTheCyclopeanSelection) {
     gl::WalkthroughOptions options;
     options.synchronousPaging = true;
     gl::Walkthrough walkthrough(plant.scene, plant.description, display, *context, plant.walls, options);
-    walls::FrameInput in;
+    walkthrough::FrameInput in;
     in.worldFromCave = cavePlacedAt(*head);
-    const walls::FrameResult r = walkthrough.renderFrame(in);
+    const walkthrough::FrameResult r = walkthrough.renderFrame(in);
     // The frame's walls are exactly the selection of the cyclopean eye (the head position):
     // the cell's own walls and the far walls of neighbours drawn as geometry.
     EXPECT_NEAR(glm::distance(r.eyeWorld, *head), 0.0, 1e-9);
@@ -76,7 +76,7 @@ TEST_F(WalkthroughTest, BothEyesAndAllScreensUseTheCyclopeanSelection) {
     ASSERT_EQ(r.walls.size(), all.size());
     for (const Blend& want : all) {
         SCOPED_TRACE(want.wall);
-        const walls::WallState* got = stateOf(r, want.wall);
+        const walkthrough::WallState* got = stateOf(r, want.wall);
         ASSERT_NE(got, nullptr);
         EXPECT_EQ(got->textures, want.textures);
         EXPECT_EQ(got->geometryWeight, want.geometryWeight);
@@ -103,11 +103,11 @@ TEST_F(WalkthroughTest, GoldenFramesInTextureBlendAndGeometryZones) {
         SCOPED_TRACE(c.name);
         const auto eye = findEye(c.want);
         ASSERT_TRUE(eye);
-        walls::FrameInput in;
+        walkthrough::FrameInput in;
         in.worldFromCave = cavePlacedAt(*eye);
         in.readImages = true;
-        const walls::FrameResult r = walkthrough.renderFrame(in);
-        const walls::WallState* ab = stateOf(r, wallAB);
+        const walkthrough::FrameResult r = walkthrough.renderFrame(in);
+        const walkthrough::WallState* ab = stateOf(r, wallAB);
         ASSERT_NE(ab, nullptr);
         EXPECT_FALSE(ab->fallback);
         EXPECT_TRUE(c.want(Blend{wallAB, 0, -1, ab->textures, ab->geometryWeight}));
@@ -123,16 +123,16 @@ TEST_F(WalkthroughTest, LevelsOfDetailKeepTheirToleranceAndTheTriangleBudget) {
     gl::Walkthrough free(plant.scene, plant.description, display, *context, plant.walls, options);
     gl::Walkthrough full(plant.scene, plant.description, display, *context, plant.walls);
     // Eyes along the north aisle, through texture, blend and geometry zones.
-    std::vector<walls::FrameInput> frames;
+    std::vector<walkthrough::FrameInput> frames;
     for (double x = -36.0; x <= 36.0; x += 4.5) {
-        walls::FrameInput in;
+        walkthrough::FrameInput in;
         in.frame = static_cast<long>(frames.size());
         in.worldFromCave = cavePlacedAt({x, 1.7, -10.0});
         frames.push_back(in);
     }
     std::vector<std::size_t> loads;
-    for (const walls::FrameInput& in : frames) {
-        const walls::FrameResult r = free.renderFrame(in), f = full.renderFrame(in);
+    for (const walkthrough::FrameInput& in : frames) {
+        const walkthrough::FrameResult r = free.renderFrame(in), f = full.renderFrame(in);
         EXPECT_EQ(r.lodTolerancePx, 1.0);
         EXPECT_LE(r.lodErrorPx, 1.0);
         EXPECT_FALSE(r.lodOverBudget);
@@ -146,8 +146,8 @@ TEST_F(WalkthroughTest, LevelsOfDetailKeepTheirToleranceAndTheTriangleBudget) {
     options.triangleBudget = loads[loads.size() / 2];  // the median: the heavier half must coarsen
     gl::Walkthrough capped(plant.scene, plant.description, display, *context, plant.walls, options);
     int raised = 0;
-    for (const walls::FrameInput& in : frames) {
-        const walls::FrameResult r = capped.renderFrame(in);
+    for (const walkthrough::FrameInput& in : frames) {
+        const walkthrough::FrameResult r = capped.renderFrame(in);
         EXPECT_FALSE(r.lodOverBudget);
         EXPECT_LE(r.geometryTriangles, options.triangleBudget);
         EXPECT_GE(r.lodTolerancePx, 1.0);
@@ -171,7 +171,7 @@ struct GatedDecoder {
 };
 
 // Share of the box (red in `full`) that shows the clear colour (magenta) in `frame`.
-double missingShare(const walls::FrameResult& frame, const walls::FrameResult& full) {
+double missingShare(const walkthrough::FrameResult& frame, const walkthrough::FrameResult& full) {
     std::size_t box = 0, missing = 0;
     for (std::size_t i = 0; i < frame.images.size(); ++i)
         for (std::size_t p = 0; p + 3 < frame.images[i].pixels.rgba.size(); p += 4) {
@@ -189,7 +189,7 @@ TEST_F(WalkthroughTest, TheControlRefusesTheWarpTransition) {
     const display::Display display = testDisplay(48);
     gl::WalkthroughOptions options;
     options.wallTextures = false;
-    options.transition = walls::Transition::Warp;
+    options.transition = walkthrough::Transition::Warp;
     EXPECT_THAT([&] { gl::Walkthrough w(plant.scene, plant.description, display, *context, plant.walls, options); },
                 ::testing::ThrowsMessage<Error>(::testing::HasSubstr(
                     "the control without wall textures draws no warp (expected transition blend, got warp)")));
@@ -212,14 +212,14 @@ TEST_F(WalkthroughTest, PagingUnderATinyBudgetNeverLeavesAWallMissing) {
     // frames (further than the pager prefetches), so the new zone's texture is not there yet.
     for (; frames < 96; ++frames) {
         const double x = -9.0 + frames / 16 * 1.5, z = (frames / 8) % 2 ? 3.5 : -3.5;
-        walls::FrameInput in;
+        walkthrough::FrameInput in;
         in.frame = frames;
         in.worldFromCave = cavePlacedAt({x, 1.7, z});
         in.readImages = true;
-        const walls::FrameResult r = walls.renderFrame(in);
-        const walls::FrameResult full = geometry.renderFrame(in);
+        const walkthrough::FrameResult r = walls.renderFrame(in);
+        const walkthrough::FrameResult full = geometry.renderFrame(in);
         gate.permits.release();  // one more texture may arrive before the next frame
-        for (const walls::WallState& s : r.walls) {
+        for (const walkthrough::WallState& s : r.walls) {
             fallbacks += s.fallback ? 1 : 0;
             previous += s.fallback && !s.textures.empty() ? 1 : 0;  // kept the previous texture
         }

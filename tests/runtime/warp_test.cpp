@@ -134,20 +134,21 @@ protected:
                 }
         return std::nullopt;
     }
-    walls::FrameResult render(const SmallPlant& s, glm::dvec3 eye, walls::Transition transition) {
+    walkthrough::FrameResult render(const SmallPlant& s, glm::dvec3 eye, walkthrough::Transition transition) {
         return render(s, s.walls, eye, transition);
     }
-    walls::FrameResult render(const SmallPlant& s, const walls::WallSetup& walls, glm::dvec3 eye, walls::Transition transition) {
+    walkthrough::FrameResult render(const SmallPlant& s, const walls::WallSetup& walls, glm::dvec3 eye,
+                                    walkthrough::Transition transition) {
         gl::WalkthroughOptions options;
         options.synchronousPaging = true;
         options.transition = transition;
         gl::Walkthrough walkthrough(s.scene, s.description, display, *context, walls, options);
-        walls::FrameInput in;
+        walkthrough::FrameInput in;
         in.worldFromCave = cavePlacedAt(eye);
         in.readImages = true;
         return walkthrough.renderFrame(in);
     }
-    const scenes::Image& front(const walls::FrameResult& r) const {
+    const scenes::Image& front(const walkthrough::FrameResult& r) const {
         for (const gl::ScreenImage& i : r.images)
             if (i.screen == frontScreen()) return i.pixels;
         return r.images.front().pixels;
@@ -173,8 +174,8 @@ TEST_F(WarpTest, StructureCrossingTheWallLinesUpWithTheTextureWithinOnePixel) {
     ASSERT_TRUE(found) << "no eye 0.5 m beside a sampling point with one texture on A|B";
     const auto [eye, samplingPoint] = *found;
     SCOPED_TRACE("eye " + std::to_string(eye.x) + " " + std::to_string(eye.z));
-    const walls::FrameResult warped = render(s, eye, walls::Transition::Warp);
-    const walls::FrameResult blended = render(s, eye, walls::Transition::Blend);
+    const walkthrough::FrameResult warped = render(s, eye, walkthrough::Transition::Warp);
+    const walkthrough::FrameResult blended = render(s, eye, walkthrough::Transition::Blend);
     EXPECT_EQ(warped.warpFallbacks, 0);
     std::cout << "eye " << eye.x << " " << eye.y << " " << eye.z << ", sampling point " << samplingPoint.x << " "
               << samplingPoint.y << " " << samplingPoint.z << "\n";
@@ -221,17 +222,17 @@ TEST_F(WarpTest, AnEyeAtTheWallPlaneFallsBackToGeometryWithoutNaNOrBlackPixels) 
     struct Case {
         const char* name;
         double distance;              // eye in front of the wall plane, metres
-        walls::Transition transition;
+        walkthrough::Transition transition;
         int fallbacks;
     };
     // The warp's condition grows like 3 m / distance (display/warp.h): about 3e4 at 0.1 mm, over
     // kMaxWarpCondition = 1e4; about 60 at 5 cm, well under it. Blend never warps.
-    const Case cases[] = {{"warp at 0.1 mm", 1e-4, walls::Transition::Warp, 1},
-                          {"warp at 5 cm", 0.05, walls::Transition::Warp, 0},
-                          {"blend at 0.1 mm", 1e-4, walls::Transition::Blend, 0}};
+    const Case cases[] = {{"warp at 0.1 mm", 1e-4, walkthrough::Transition::Warp, 1},
+                          {"warp at 5 cm", 0.05, walkthrough::Transition::Warp, 0},
+                          {"blend at 0.1 mm", 1e-4, walkthrough::Transition::Blend, 0}};
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
-        const walls::FrameResult r = render(stripes90, walls, {-c.distance, 1.6, kStripeZ}, c.transition);
+        const walkthrough::FrameResult r = render(stripes90, walls, {-c.distance, 1.6, kStripeZ}, c.transition);
         EXPECT_EQ(r.warpFallbacks, c.fallbacks);
         ASSERT_EQ(r.walls.size(), 1u);
         // The fallback draws the cell behind as geometry instead of the texture.
@@ -277,27 +278,28 @@ TEST_F(WarpTest, WarpMorphMovesTheViewpointFromTheSamplingPointToTheEyeAndEndsEx
     const glm::dvec3 textured(-3.0, 1.6, 1.5), geometry(-1.5, 1.6, 1.5);
     gl::WalkthroughOptions options;
     options.synchronousPaging = true;
-    options.transition = walls::Transition::Warp;
+    options.transition = walkthrough::Transition::Warp;
     options.morphSeconds = 0.5;
     gl::Walkthrough walkthrough(s.scene, s.description, display, *context, s.walls, options);
     auto frame = [&](double t, glm::dvec3 eye) {
-        walls::FrameInput in;
+        walkthrough::FrameInput in;
         in.time = t;
         in.worldFromCave = cavePlacedAt(eye);
         in.readImages = true;
         return walkthrough.renderFrame(in);
     };
-    const walls::FrameResult before = frame(0.0, textured);
+    const walkthrough::FrameResult before = frame(0.0, textured);
     ASSERT_EQ(before.walls.size(), 1u);
     ASSERT_EQ(before.walls[0].textures.size(), 1u);
-    const walls::FrameResult start = frame(0.1, geometry), middle = frame(0.35, geometry), end = frame(0.7, geometry);
-    for (const walls::FrameResult* r : {&start, &middle, &end}) {
+    const walkthrough::FrameResult start = frame(0.1, geometry), middle = frame(0.35, geometry),
+                                   end = frame(0.7, geometry);
+    for (const walkthrough::FrameResult* r : {&start, &middle, &end}) {
         EXPECT_EQ(r->warpFallbacks, 0);
         EXPECT_TRUE(r->walls[0].textures.empty());
         EXPECT_EQ(r->walls[0].geometryWeight, 1.0);
     }
     // After morphSeconds the wall is plain geometry: exactly what Blend draws in a geometry zone.
-    const walls::FrameResult reference = render(s, geometry, walls::Transition::Blend);
+    const walkthrough::FrameResult reference = render(s, geometry, walkthrough::Transition::Blend);
     EXPECT_EQ(front(end).rgba, front(reference).rgba);
     // The red stripe (behind the wall) moves from where the sampling point sees it to where the
     // eye does, and is in between halfway (s = 0.5).
@@ -308,7 +310,7 @@ TEST_F(WarpTest, WarpMorphMovesTheViewpointFromTheSamplingPointToTheEyeAndEndsEx
     EXPECT_GT(std::min(c1 - std::min(c0, c2), std::max(c0, c2) - c1), 1.0);
 
     // Back into the texture zone: a morph from the eye to the sampling point, then the texture.
-    const walls::FrameResult back = frame(1.0, textured), after = frame(1.6, textured);
+    const walkthrough::FrameResult back = frame(1.0, textured), after = frame(1.6, textured);
     EXPECT_TRUE(back.walls[0].textures.empty());
     EXPECT_EQ(after.walls[0].textures, before.walls[0].textures);
 }

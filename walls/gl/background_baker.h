@@ -12,7 +12,7 @@
 // direction of travel) into the same content-keyed cache (files written atomically; the manifest
 // rewritten atomically, listing only finished files, so a killed run keeps a consistent cache),
 // and take() hands the finished entries to the pager (TexturePager::addTexture). Until a texture
-// is resident its wall falls back as for any texture that is not (walls/frame_planner.h).
+// is resident its wall falls back as for any texture that is not (walkthrough/frame_planner.h).
 //
 // Disk budget (BackgroundBakerOptions::cacheBudgetBytes > 0): the scene's bake folder's texture
 // files are kept within it by walls::CacheBudget (least recently wanted first, never one wanted

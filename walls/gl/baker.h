@@ -128,7 +128,7 @@ struct BakeResult {
 // Bakes (or finds in the cache) every texture of `walls` (walls::prepareWalls of `scene` and
 // `description`, loaded from request.scene, whose files key the cache). Throws cavewall::Error
 // for bad settings or unwritable folders; the manifest then lists what was finished. Set the
-// setup's folder and manifest from the result to page its textures (walls/gl/walkthrough.h).
+// setup's folder and manifest from the result to page its textures (walkthrough/gl/walkthrough.h).
 // The calling thread's current context (gl::Context::current) is current again on return.
 BakeResult bakeWalls(const scenes::Scene& scene, const scenes::SceneDescription& description,
                      const walls::WallSetup& walls, const BakeRequest& request);

@@ -51,7 +51,7 @@
 #include "render/gl/scene_renderer.h"
 #include "display/off_axis.h"
 #include "walls/depth_wall.h"
-#include "walls/frame_planner.h"
+#include "walls/frame_select.h"
 
 #include <array>
 #include <vector>

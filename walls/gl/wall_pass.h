@@ -17,7 +17,7 @@
 #include "display/gl/gl_object.h"
 #include "render/gl/scene_renderer.h"
 #include "display/off_axis.h"
-#include "walls/frame_planner.h"
+#include "walls/frame_select.h"
 #include "walls/texture_rect.h"
 
 #include <array>
@@ -25,7 +25,7 @@
 
 namespace cavewall::gl {
 
-using walls::kMaxWallTextures;  // walls/frame_planner.h
+using walls::kMaxWallTextures;  // walls/frame_select.h
 
 struct WallDraw {
     display::ScreenQuad quad;                    // world frame, metres

@@ -19,7 +19,7 @@
 //           paging after a warm-up pass over the path (all textures resident: the timed pass
 //           measures drawing, not decoding).
 //  - walls at `transitionAlphaDeg` (or the first alpha when it is not listed), transition warp
-//           (walls::Transition::Warp), on the same bake.
+//           (walkthrough::Transition::Warp), on the same bake.
 //  - with `lodPixels` > 0, levels of detail (scenes/mesh_lod.h) at that pixel tolerance: full,
 //           near and every walls blend mode once more with them, then every walls blend mode
 //           with them under a triangle budget (`triangleBudget`, or the median triangles of

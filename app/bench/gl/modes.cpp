@@ -11,7 +11,7 @@
 #include "app/cluster_control.h"
 #include "render/cluster_frame.h"
 #include "render/lod_choice.h"
-#include "walls/frame_planner.h"
+#include "walkthrough/frame_planner.h"
 #include "walls/frame_select.h"
 #include "walls/bake_key.h"
 #include "walls/gl/wall_pass.h"
@@ -30,7 +30,7 @@ namespace {
 
 bool compared(const ModeContext& c, long frame) { return frame % c.compareEvery == 0; }
 
-FrameCost frameCost(const walls::FrameResult& r) {
+FrameCost frameCost(const walkthrough::FrameResult& r) {
     return {r.frameMs, r.cpuMs, r.gpuMs, static_cast<double>(r.stats.triangles), static_cast<double>(r.stats.drawCalls),
             r.maxErrorDeg, r.maxErrorPixels, r.pager.residentMB, r.pager.misses, r.perScreen, r.lodErrorPx,
             r.lodTolerancePx, r.lodOverBudget, r.texturesOverAlpha, static_cast<double>(r.uploadedBytes) / 1e6,
@@ -134,10 +134,10 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         std::vector<double> warmTriangles;
     };
     std::vector<Live> live(runs.size());
-    auto render = [](Live& l, walls::FrameInput in) {  // as app/gl/run_session.cpp
+    auto render = [](Live& l, walkthrough::FrameInput in) {  // as app/gl/run_session.cpp
         if (l.frameBudget) in.triangleBudget = l.frameBudget->budget();
         if (l.clusterBudget) in.clusterBudgetMs = app::clusterBudgetFor(*l.clusterBudget);
-        walls::FrameResult r = l.walkthrough->renderFrame(in);
+        walkthrough::FrameResult r = l.walkthrough->renderFrame(in);
         if (l.frameBudget) l.frameBudget->update(r.frameMs, r.geometryTriangles);
         if (l.clusterBudget) app::controlClusters(*l.clusterBudget, r);
         return r;
@@ -181,11 +181,11 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
             l.warmTriangles.push_back(static_cast<double>(render(l, c.path.frames[f]).stats.triangles));
         if (!run.paged && hasWalls) l.walkthrough->waitForTextures();
     }
-    for (const walls::FrameInput& frame : c.path.frames) {
-        walls::FrameInput in = frame;
+    for (const walkthrough::FrameInput& frame : c.path.frames) {
+        walkthrough::FrameInput in = frame;
         in.readImages = compared(c, in.frame);
         for (std::size_t i = 0; i < runs.size(); ++i) {
-            walls::FrameResult r = render(live[i], in);
+            walkthrough::FrameResult r = render(live[i], in);
             runs[i].acc->addFrame(frameCost(r));
             if (!in.readImages) continue;
             if (runs[i].storeReference) reference[in.frame] = std::move(r.images);
@@ -203,10 +203,10 @@ double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, gl::Backgro
     if (c.path.frames.empty()) return display::msSince(start) / 1000.0;
     walkthrough.renderFrame(c.path.frames.front());
     const double firstFrameSeconds = display::msSince(start) / 1000.0;
-    for (const walls::FrameInput& frame : c.path.frames) {
-        walls::FrameInput in = frame;
+    for (const walkthrough::FrameInput& frame : c.path.frames) {
+        walkthrough::FrameInput in = frame;
         in.readImages = compared(c, in.frame);
-        walls::FrameResult r = walkthrough.renderFrame(in);
+        walkthrough::FrameResult r = walkthrough.renderFrame(in);
         acc.addFrame(frameCost(r));
         if (in.readImages) acc.compare(in.frame, in.head, r.images, reference.at(in.frame));
     }
@@ -224,13 +224,13 @@ NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::Wall
     options.lodMaxPixels = c.lodMaxPixels;
     options.wallKind = c.wallKind;
     gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
-    const walls::FrameInput fixed = c.path.frames.at(static_cast<std::size_t>(frameIndex));
-    for (const walls::FrameInput& in : c.path.frames) walkthrough.renderFrame(in);
+    const walkthrough::FrameInput fixed = c.path.frames.at(static_cast<std::size_t>(frameIndex));
+    for (const walkthrough::FrameInput& in : c.path.frames) walkthrough.renderFrame(in);
     walkthrough.waitForTextures();
     std::vector<double> path, repeated;
-    for (const walls::FrameInput& in : c.path.frames) {
+    for (const walkthrough::FrameInput& in : c.path.frames) {
         path.push_back(walkthrough.renderFrame(in).frameMs);
-        walls::FrameInput again = fixed;
+        walkthrough::FrameInput again = fixed;
         again.frame = in.frame;  // the pager's recency moves on as in a run
         repeated.push_back(walkthrough.renderFrame(again).frameMs);
     }
@@ -297,12 +297,12 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
     const gl::WallPass quadPass;
     const gl::GlObject bare = gl::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}});
     const gl::GlObject layer = layerTexture(), sampler = wallSampler();
-    auto draw = [&](const walls::FrameInput& in, CellDraw kind, FrameCost* cost) {
+    auto draw = [&](const walkthrough::FrameInput& in, CellDraw kind, FrameCost* cost) {
         const auto start = std::chrono::steady_clock::now();
         const glm::dvec3 eye(in.worldFromCave * glm::dvec4(in.head.position, 1.0));
         const walls::FrameSelection selection = selector.select(eye);
-        const std::vector<int> objects =
-            walls::objectsOfCells(c.scene, cellMask(selection, c.description.cells.size(), kind == CellDraw::Near));
+        const std::vector<int> objects = walkthrough::objectsOfCells(
+            c.scene, cellMask(selection, c.description.cells.size(), kind == CellDraw::Near));
         render::DrawFilter filter;
         filter.objects = &objects;
         std::vector<gl::WallDraw> quads;
@@ -340,7 +340,7 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
     for (long i = 0; i < std::min<long>(3, c.path.frames.size()); ++i)
         for (const CellRun& r : runs) draw(c.path.frames[i], r.draw, nullptr);
     // Frame by frame, every run in turn: their times are taken in the same seconds.
-    for (const walls::FrameInput& in : c.path.frames)
+    for (const walkthrough::FrameInput& in : c.path.frames)
         for (const CellRun& r : runs) {
             FrameCost cost;
             draw(in, r.draw, &cost);

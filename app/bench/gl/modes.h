@@ -5,7 +5,7 @@
 #include "display/gl/frame_images.h"
 #include "app/bench/path.h"
 #include "app/bench/report.h"
-#include "walls/gl/walkthrough.h"
+#include "walkthrough/gl/walkthrough.h"
 
 #include <chrono>
 #include <map>
@@ -93,7 +93,7 @@ struct WalkRun {
     const scenes::SceneDescription* description = nullptr;
     ModeAccumulator* acc = nullptr;         // not null; its mode's lodPixels, triangleBudget and
                                             // frameBudgetMs set the levels of detail and budgets
-    walls::Transition transition = walls::Transition::Blend;
+    walkthrough::Transition transition = walkthrough::Transition::Blend;
     // As `cavewall run` pages: in the background under the default texture budget and upload
     // limit, from a cold start (three warm-up frames), so the timed frames include every
     // page-in, upload and fallback. Otherwise every texture of the path is made resident in a

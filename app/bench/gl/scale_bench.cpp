@@ -15,10 +15,10 @@
 #include "render/lod_choice.h"
 #include "scenes/generate.h"
 #include "scenes/loader.h"
-#include "walls/frame_planner.h"
+#include "walkthrough/frame_planner.h"
 #include "walls/frame_select.h"
 #include "walls/gl/baker.h"
-#include "walls/gl/walkthrough.h"
+#include "walkthrough/gl/walkthrough.h"
 #include "walls/wall_setup.h"
 
 #include <algorithm>
@@ -67,11 +67,11 @@ std::filesystem::path plantFor(std::size_t triangles, const std::filesystem::pat
 std::set<int> requestedTextures(const scenes::Scene& scene, const scenes::SceneDescription& d,
                                 const display::Display& display, const walls::WallSetup& setup,
                                 const bench::EyePath& path) {
-    walls::FramePlanner planner(scene, d, display, &setup, walls::Transition::Blend, 0.5);
+    walkthrough::FramePlanner planner(scene, d, display, &setup, walkthrough::Transition::Blend, 0.5);
     planner.requestCells(true);
     std::set<int> ids;
-    for (const walls::FrameInput& in : path.frames) {
-        const walls::TextureRequests r = planner.requests(in, display.views(in.head));
+    for (const walkthrough::FrameInput& in : path.frames) {
+        const walkthrough::TextureRequests r = planner.requests(in, display.views(in.head));
         ids.insert(r.now.begin(), r.now.end());
         ids.insert(r.soon.begin(), r.soon.end());
         planner.plan([](int) { return true; });
@@ -109,13 +109,13 @@ struct NearMode {
     }
 
     // Frame ms (submission and GPU) and triangles.
-    std::pair<double, double> draw(const walls::FrameInput& in) {
+    std::pair<double, double> draw(const walkthrough::FrameInput& in) {
         const auto start = Clock::now();
         const glm::dvec3 eye(in.worldFromCave * glm::dvec4(in.head.position, 1.0));
         const walls::FrameSelection selection = selector.select(eye);
         std::vector<bool> mask(cells, false);
         if (selection.cell >= 0 && selection.cell < static_cast<int>(cells)) mask[selection.cell] = true;
-        const std::vector<int> objects = walls::objectsOfCells(scene, mask);
+        const std::vector<int> objects = walkthrough::objectsOfCells(scene, mask);
         render::DrawFilter filter;
         filter.objects = &objects;
         const std::vector<display::ScreenView> views = display.views(in.head);
@@ -305,7 +305,7 @@ std::pair<std::unique_ptr<Walkthrough>, double> firstWalk(const SizeSetting& s, 
 // option's, or the near limit's median.
 std::size_t nearBudget(const ScaleOptions& o, NearMode& nearMode, const bench::EyePath& path) {
     std::vector<double> nearTriangles;
-    for (const walls::FrameInput& in : path.frames) nearTriangles.push_back(nearMode.draw(in).second);
+    for (const walkthrough::FrameInput& in : path.frames) nearTriangles.push_back(nearMode.draw(in).second);
     std::sort(nearTriangles.begin(), nearTriangles.end());
     return o.triangleBudget >= 0 ? static_cast<std::size_t>(o.triangleBudget)
                                  : static_cast<std::size_t>(nearTriangles[nearTriangles.size() / 2]);
@@ -368,7 +368,7 @@ void warmUp(SizeModes& live, const bench::EyePath& path) {
     for (ScaleMode mode : kWarmUpOrder) {
         const SizeMode* m = live.find(mode);
         if (!m) continue;
-        for (const walls::FrameInput& in : path.frames) m->walk->renderFrame(in);
+        for (const walkthrough::FrameInput& in : path.frames) m->walk->renderFrame(in);
         m->walk->waitForTextures();
     }
     Walkthrough& full = *live.find(ScaleMode::Full)->walk;
@@ -376,9 +376,9 @@ void warmUp(SizeModes& live, const bench::EyePath& path) {
 }
 
 // A walls mode's frame; its images (when `reference`) compared with full geometry's.
-void drawWalk(SizeMode& m, const walls::FrameInput& in, long frame, const std::vector<ScreenImage>* reference,
+void drawWalk(SizeMode& m, const walkthrough::FrameInput& in, long frame, const std::vector<ScreenImage>* reference,
               const display::Display& display) {
-    const walls::FrameResult w = m.walk->renderFrame(in);
+    const walkthrough::FrameResult w = m.walk->renderFrame(in);
     Accumulated& a = m.acc;
     a.ms.push_back(w.frameMs);
     a.triangles += static_cast<double>(w.stats.triangles);
@@ -394,10 +394,10 @@ void drawWalk(SizeMode& m, const walls::FrameInput& in, long frame, const std::v
 // One path frame drawn by every mode in kScaleModes' order, full geometry first: its images are
 // the others' reference. Images are read back after each mode's frame is timed (walkthrough.h;
 // NearMode::draw).
-void drawFrame(SizeModes& live, walls::FrameInput in, long frame, bool compare, const display::Display& display) {
+void drawFrame(SizeModes& live, walkthrough::FrameInput in, long frame, bool compare, const display::Display& display) {
     in.readImages = compare;
     SizeMode& full = live.modes.front();
-    const walls::FrameResult f = full.walk->renderFrame(in);
+    const walkthrough::FrameResult f = full.walk->renderFrame(in);
     full.acc.ms.push_back(f.frameMs);
     full.acc.triangles += static_cast<double>(f.stats.triangles);
     for (SizeMode& m : live.modes) {
@@ -465,7 +465,7 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
     SizeMode& nearLimit = *live.find(ScaleMode::Near);
     nearLimit.acc.residentMB = nearLimit.near->residentMB();
     long frame = 0;
-    for (const walls::FrameInput& in : prepared->path.frames) {
+    for (const walkthrough::FrameInput& in : prepared->path.frames) {
         drawFrame(live, in, frame, o.compareEvery > 0 && frame % o.compareEvery == 0, display);
         ++frame;
     }

@@ -25,7 +25,7 @@
 //
 // Bounded baking: a cold bake of the whole 2 M plant takes about 20 minutes on this machine
 // (hours at 32 M), so only the textures the stretch's frames request (now or soon, by
-// walls::FramePlanner from the same eye path) are baked, at `bakeResolution` texels at most,
+// walkthrough::FramePlanner from the same eye path) are baked, at `bakeResolution` texels at most,
 // into their own cache (`data`/bake-cache: a subset bake replaces a folder's manifest, so it
 // never shares folders with full bakes). The report says how many of the plan's textures that
 // is. The walkthrough replays the same frames and requests the same ids (requests depend on the

@@ -1,6 +1,6 @@
 #pragma once
 // The walkthrough's frame planner: everything a frame decides before anything is drawn, GL-free.
-// The GL executor (walls/gl/walkthrough.h) pages, uploads and draws what it returns.
+// The GL executor (walkthrough/gl/walkthrough.h) pages, uploads and draws what it returns.
 //
 // Per frame, in two steps (the executor uploads ready textures in between):
 //  requests(input, views):
@@ -54,7 +54,7 @@
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
 #include "walls/frame_select.h"
-#include "walls/frame_types.h"
+#include "walkthrough/frame_types.h"
 #include "walls/wall_setup.h"
 #include "walls/warp_wall.h"
 
@@ -64,9 +64,8 @@
 #include <utility>
 #include <vector>
 
-namespace cavewall::walls {
+namespace cavewall::walkthrough {
 
-inline constexpr int kMaxWallTextures = 4;  // a blend zone mixes at most 2 rows x 2 columns
 // Prefetching (requests()): the neighbouring zones are those kNeighbourMetres away; when the eye
 // moves faster than kMovingMetresPerSecond, also what it will draw kLookaheadSeconds ahead at its
 // current velocity (from kNeighbourMetres to kLookaheadMetres away).
@@ -111,7 +110,7 @@ struct FramePlan {
     std::vector<bool> geometryCells;               // per description cell: drawn as geometry
     std::vector<int> objects;                      // Scene::objects drawn by the scene renderer
     std::vector<WallDrawPlan> wallDraws;
-    std::vector<WarpWall> warpWalls;               // Transition::Warp: walls drawn warped
+    std::vector<walls::WarpWall> warpWalls;               // Transition::Warp: walls drawn warped
     std::vector<WallMorph> morphs;                 // walls in a warp-morph this frame
     std::vector<WallState> walls;                  // every wall row (walls.csv), errors set
     double maxErrorDeg = 0.0, maxErrorPixels = 0.0;
@@ -132,7 +131,7 @@ public:
     // walls: geometry only), which must outlive it. `screens`: the display screens whose
     // views are given and whose pixels count for the error (empty: all).
     FramePlanner(const scenes::Scene& scene, const scenes::SceneDescription& description,
-                 const display::Display& display, const WallSetup* walls, Transition transition,
+                 const display::Display& display, const walls::WallSetup* walls, Transition transition,
                  double morphSeconds, std::vector<int> screens = {});
     ~FramePlanner();
 
@@ -158,25 +157,25 @@ private:
     bool _drawTextures = true;
     struct Memory;
     struct WarpOutcome;
-    WallState chooseWall(const WallBlend& blend, const Residency& resident, FramePlan& plan);
-    void keepTexturesFor(const WallBlend& blend, const Residency& resident, WallState& state, FramePlan& plan);
-    WarpOutcome warpWall(const WallBlend& blend, const WallState& state);
-    void applyWarp(const WallBlend& blend, const WarpOutcome& outcome, WallState& state, FramePlan& plan);
-    bool withinBound(const std::vector<std::pair<int, double>>& set, const PlannedWall& wall) const;
-    bool warpConditioned(const WarpWall& warp) const;
+    WallState chooseWall(const walls::WallBlend& blend, const Residency& resident, FramePlan& plan);
+    void keepTexturesFor(const walls::WallBlend& blend, const Residency& resident, WallState& state, FramePlan& plan);
+    WarpOutcome warpWall(const walls::WallBlend& blend, const WallState& state);
+    void applyWarp(const walls::WallBlend& blend, const WarpOutcome& outcome, WallState& state, FramePlan& plan);
+    bool withinBound(const std::vector<std::pair<int, double>>& set, const walls::PlannedWall& wall) const;
+    bool warpConditioned(const walls::WarpWall& warp) const;
     bool wallInView(int wall) const;
     void measureError(FramePlan& plan) const;
-    void addDraw(const WallBlend& blend, const WallState& state, FramePlan& plan) const;
+    void addDraw(const walls::WallBlend& blend, const WallState& state, FramePlan& plan) const;
 
     const scenes::Scene& _scene;
     const scenes::SceneDescription& _description;
     const display::Display& _display;
-    const WallSetup* _walls;
+    const walls::WallSetup* _walls;
     Transition _transition;
     double _morphSeconds;
     std::vector<int> _screens;
-    std::optional<FrameSelector> _selector;
-    std::map<int, const Texture*> _textures;       // by id
+    std::optional<walls::FrameSelector> _selector;
+    std::map<int, const walls::Texture*> _textures;       // by id
     std::vector<Memory> _memory;                   // per wall
     // The frame between requests() and plan().
     FrameInput _input;
@@ -185,11 +184,11 @@ private:
     glm::dvec3 _lastEye{0.0};                      // the last requests()' eye and time: the velocity
     double _lastTime = 0.0;
     bool _hasLast = false;
-    FrameSelection _selection, _seen;              // all, and those in view
+    walls::FrameSelection _selection, _seen;              // all, and those in view
     std::vector<WallState> _outOfView;
     bool _planned = true;                          // plan() was called for this frame
     Residency _cellResident;                       // during plan(): geometry paging, or empty
     std::vector<bool> _cellNeeded;                 // during plan(): cells some wall draws as geometry
 };
 
-}  // namespace cavewall::walls
+}  // namespace cavewall::walkthrough

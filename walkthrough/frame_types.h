@@ -1,7 +1,7 @@
 #pragma once
 // The walkthrough's plain data: what a frame is given (FrameInput), what it reports
 // (FrameResult, one WallState per wall) and the settings that are not GL. Shared by the frame
-// planner (walls/frame_planner.h), the GL executor (walls/gl/walkthrough.h), the input side and
+// planner (walkthrough/frame_planner.h), the GL executor (walkthrough/gl/walkthrough.h), the input side and
 // cluster serialisation in tools/, none of which needs a GL context for them.
 //
 // Frames and units: config/conventions.h. Times in seconds, durations in milliseconds.
@@ -19,12 +19,12 @@
 #include <utility>
 #include <vector>
 
-namespace cavewall::walls {
+namespace cavewall::walkthrough {
 
-// How structure crossing a textured wall meets the texture (walls/gl/walkthrough.h).
+// How structure crossing a textured wall meets the texture (walkthrough/gl/walkthrough.h).
 enum class Transition { Blend, Warp };
 
-// The hand cursor's pose (walls/gl/hand_cursor.h draws it).
+// The hand cursor's pose (walkthrough/gl/hand_cursor.h draws it).
 struct HandCursorPose {
     glm::dvec3 position{0.0};                    // cave frame, metres
     glm::dquat orientation{1.0, 0.0, 0.0, 0.0};  // the hand points along its -Z
@@ -37,14 +37,14 @@ struct WalkthroughSettings {
     double uploadMBPerFrame = 8.0;           // texture bytes uploaded per frame at most, MB
     // Wait for the pager to decode and upload every requested texture before drawing, so the
     // frames depend only on the input (tests, replays, golden images). Off: a frame never
-    // waits, missing textures fall back (walls/frame_planner.h).
+    // waits, missing textures fall back (walkthrough/frame_planner.h).
     bool synchronousPaging = false;
     // > 0: page the model's geometry by cell under this GPU budget in MB (walls/geometry_pager.h;
     // with virtual walls only); 0: every cell stays resident.
     double geometryBudgetMB = 0.0;
     // Reads every MIP level of a baked texture file on the pager's thread; empty:
     // scenes::readMipLevels. Tests inject slow or failing decoders here.
-    TexturePager::Decoder decoder;
+    walls::TexturePager::Decoder decoder;
     Transition transition = Transition::Blend;  // Warp: structure behind textured walls warped
     double morphSeconds = 0.5;               // Warp: duration of a warp-morph, seconds, > 0
     // Levels of detail (render.lodPixels > 0): the geometry of every frame is drawn at the
@@ -59,7 +59,7 @@ struct WalkthroughSettings {
     // False: the control of the image error, "cells without textures": every frame draws the
     // geometry cells the walls' selection draws (the viewer's cell, the neighbours in geometry
     // zones and blend strips, structure) and no wall texture; none is requested or loaded
-    // (walls/frame_planner.h FramePlanner::drawTextures). Blend transition only.
+    // (walkthrough/frame_planner.h FramePlanner::drawTextures). Blend transition only.
     bool wallTextures = true;
 };
 
@@ -100,11 +100,11 @@ struct FrameResult {
     double cpuMs = 0.0;                      // CPU time until every command was submitted
     double gpuMs = 0.0;                      // GL_TIME_ELAPSED of the frame's commands
     display::FrameStats stats;               // triangles and draw calls, all views
-    PagerStats pager;
+    walls::PagerStats pager;
     std::size_t uploadedBytes = 0;           // wall texture bytes (all MIP levels) uploaded this
                                              // frame, at most WalkthroughSettings::uploadMBPerFrame
                                              // unless one texture alone is larger
-    GeometryPagerStats geometry;             // geometry paging by cell (zeros when off)
+    walls::GeometryPagerStats geometry;             // geometry paging by cell (zeros when off)
     int geometryMisses = 0;                  // walls kept as textures: cell behind not resident
     int geometryForced = 0;                  // cells drawn though not resident (loaded at once: a stall)
     // Walls drawn as geometry this frame because neither their wanted textures nor the previous
@@ -147,4 +147,4 @@ struct FrameResult {
     std::vector<scenes::ScreenImage> images;  // when FrameInput::readImages
 };
 
-}  // namespace cavewall::walls
+}  // namespace cavewall::walkthrough

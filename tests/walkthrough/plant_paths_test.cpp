@@ -2,10 +2,10 @@
 // 1 m, as `cavewall plan` and the demo plan it), the frame planner draws no texture over alpha
 // along the scene's walk path nor along its wall path, which hugs the virtual walls and crosses
 // their geometry zones and blend strips. Every texture is resident, so nothing falls back; the
-// errors are the exact ones the frame planner reports (walls/frame_planner.h, step 5).
+// errors are the exact ones the frame planner reports (walkthrough/frame_planner.h, step 5).
 #include "config/display_config.h"
 #include "scenes/generate.h"
-#include "walls/frame_planner.h"
+#include "walkthrough/frame_planner.h"
 #include "walls/wall_setup.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -13,8 +13,10 @@
 
 #include <cmath>
 
-namespace cavewall::walls {
+namespace cavewall::walkthrough {
 namespace {
+
+using namespace walls;
 
 struct Walked {
     int frames = 0, overAlpha = 0, beyondTextured = 0;
@@ -108,4 +110,4 @@ TEST_F(PlantPaths, NoTextureOverAlphaAlongTheWallPath) {
 }
 
 }  // namespace
-}  // namespace cavewall::walls
+}  // namespace cavewall::walkthrough

@@ -1,4 +1,4 @@
-// The frame planner (walls/frame_planner.h) without GL: residency is a plain set of texture ids,
+// The frame planner (walkthrough/frame_planner.h) without GL: residency is a plain set of texture ids,
 // time is FrameInput::time, so fallbacks and the warp-morph are tested frame by frame.
 //
 // Scene: the hall of test_scenes.h (wall "middle" on z = 0 from x = -6 to 6, 3 m high, facing
@@ -10,7 +10,7 @@
 #include "scenes/region.h"
 #include "walls/angular_error.h"
 #include "walls/depth_wall.h"
-#include "walls/frame_planner.h"
+#include "walkthrough/frame_planner.h"
 #include "walls/wall_setup.h"
 
 #include <glm/gtc/constants.hpp>
@@ -20,8 +20,10 @@
 #include <algorithm>
 #include <set>
 
-namespace cavewall::walls {
+namespace cavewall::walkthrough {
 namespace {
+
+using namespace walls;
 
 scenes::Object object(const char* name, scenes::Role role, glm::dvec3 min, glm::dvec3 max, int cell) {
     scenes::Object o;
@@ -457,4 +459,4 @@ TEST_F(FramePlannerTest, WithoutWallsEverythingIsGeometryAndNothingIsRequested) 
 }
 
 }  // namespace
-}  // namespace cavewall::walls
+}  // namespace cavewall::walkthrough

@@ -1,4 +1,4 @@
-#include "walls/gl/hand_cursor.h"
+#include "walkthrough/gl/hand_cursor.h"
 
 #include "display/gl/shader.h"
 

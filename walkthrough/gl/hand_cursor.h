@@ -2,7 +2,7 @@
 // The hand cursor: the tracked hand (or the desktop fallback's hand at the view centre) drawn as
 // a small flat hand icon with a pointing ray, so the user sees where navigation and picking aim.
 //
-// Plain data in (walls::HandCursorPose), no dependency on the input library: the caller converts
+// Plain data in (walkthrough::HandCursorPose), no dependency on the input library: the caller converts
 // input::HandCursor.
 // The icon is a palm (6 cm x 8 cm) with a pointing finger along the ray, facing up in the
 // hand's frame (the hand points along its -Z, +Y up); the ray is a line of `rayLength` metres.
@@ -11,13 +11,13 @@
 #include "display/gl/gl_object.h"
 #include "render/gl/scene_renderer.h"
 #include "display/off_axis.h"
-#include "walls/frame_types.h"
+#include "walkthrough/frame_types.h"
 
 #include <glm/gtc/quaternion.hpp>
 
 namespace cavewall::gl {
 
-using walls::HandCursorPose;  // walls/frame_types.h
+using walkthrough::HandCursorPose;  // walkthrough/frame_types.h
 
 class HandCursorPass {
 public:

@@ -1,4 +1,4 @@
-#include "walls/gl/walkthrough.h"
+#include "walkthrough/gl/walkthrough.h"
 
 #include "config/error.h"
 #include "display/timing.h"
@@ -39,10 +39,10 @@ Context& madeCurrent(Context& context) {
 WalkthroughOptions withPaging(WalkthroughOptions options, const scenes::SceneDescription& description,
                               const std::optional<walls::WallSetup>& walls) {
     const bool paging = options.geometryBudgetMB > 0.0 && walls && !walls->plan.walls.empty();
-    if (paging && options.transition == walls::Transition::Warp)
+    if (paging && options.transition == walkthrough::Transition::Warp)
         throw Error("walkthrough: geometry paging (geometry budget " + std::to_string(options.geometryBudgetMB) +
                     " MB) does not support the warp transition yet (expected transition blend, got warp)");
-    if (!options.wallTextures && options.transition == walls::Transition::Warp)
+    if (!options.wallTextures && options.transition == walkthrough::Transition::Warp)
         throw Error("walkthrough: the control without wall textures draws no warp (expected transition blend, "
                     "got warp)");
     if (!options.wallTextures && options.baker)
@@ -158,15 +158,16 @@ Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescript
         _walls->geometry = std::make_unique<CellPaging>(
             scene, _renderer.gpu().meshGroups(), _renderer.hasLods() ? &_renderer.renderScene().lods() : nullptr,
             _options.geometryBudgetMB);
-    _planner = std::make_unique<walls::FramePlanner>(scene, description, display, _walls ? &_walls->setup : nullptr,
-                                                     _options.transition, _options.morphSeconds, _screens);
+    _planner =
+        std::make_unique<walkthrough::FramePlanner>(scene, description, display, _walls ? &_walls->setup : nullptr,
+                                                    _options.transition, _options.morphSeconds, _screens);
     _planner->requestCells(_walls && _walls->geometry);
     _planner->drawTextures(_options.wallTextures);
     if (_options.clusters.enabled)
         _clusters = makeClusters(scene, _options.clusters, _renderer, context.info().renderer,
                                  _options.clusters.costResolution > 0 ? _options.clusters.costResolution
                                                                       : largestScreenSide(display));
-    if (_walls && _options.transition == walls::Transition::Warp)
+    if (_walls && _options.transition == walkthrough::Transition::Warp)
         _warp = std::make_unique<WarpPass>(scene, _renderer.gpu(), _options.render, display.depthRange().near);
 }
 
@@ -205,8 +206,8 @@ const ClusterBakeStats* Walkthrough::clusterBakeStats() const {
 const render::ClusterFramePlan* Walkthrough::lastClusterPlan() const { return _clusters ? &_clusters->last : nullptr; }
 int Walkthrough::clusterCostResolution() const { return _clusters ? _clusters->costResolution : 0; }
 
-void Walkthrough::planClusters(const walls::FrameInput& input, glm::dvec3 eyeWorld, std::vector<int>& objects,
-                               walls::FrameResult& result) {
+void Walkthrough::planClusters(const walkthrough::FrameInput& input, glm::dvec3 eyeWorld, std::vector<int>& objects,
+                               walkthrough::FrameResult& result) {
     ClusterRuntime& c = *_clusters;
     const double budget = input.clusterBudgetMs > 0.0 ? input.clusterBudgetMs : _options.clusters.budgetMs;
     // Over every screen, also those of other cluster ranks (as the levels of detail).
@@ -253,8 +254,9 @@ std::vector<display::ScreenView> Walkthrough::renderedViews(const display::HeadP
 
 // Pages what the planner asks for, uploads what is ready, then lets it decide against what is
 // resident (header, steps 1-2).
-walls::FramePlan Walkthrough::planFrame(const walls::FrameInput& input, const std::vector<display::ScreenView>& views) {
-    const walls::TextureRequests wanted = _planner->requests(input, views);
+walkthrough::FramePlan Walkthrough::planFrame(const walkthrough::FrameInput& input,
+                                              const std::vector<display::ScreenView>& views) {
+    const walkthrough::TextureRequests wanted = _planner->requests(input, views);
     if (!_walls) return _planner->plan([](int) { return false; });
     WallRuntime& w = *_walls;
     if (w.textures) {
@@ -282,7 +284,7 @@ walls::FramePlan Walkthrough::planFrame(const walls::FrameInput& input, const st
     pager.request(wanted.cellsNow, wanted.cellsSoon);
     if (_options.synchronousPaging) pager.waitIdle();
     for (int group : pager.takeReady()) makeResident(group);
-    walls::FramePlan plan = _planner->plan(resident, [&pager](int cell) { return pager.isResident(cell); });
+    walkthrough::FramePlan plan = _planner->plan(resident, [&pager](int cell) { return pager.isResident(cell); });
     // Drawn now: the missing groups are loaded at once (a stall).
     for (int cell : plan.geometryForced)
         for (int group : pager.groupsOf(cell)) makeResident(group);
@@ -297,9 +299,9 @@ void Walkthrough::makeResident(int group) {
     for (int evicted : g.pager.takeEvictions()) _renderer.gpu().freeGroup(evicted);
 }
 
-std::vector<WallDraw> Walkthrough::wallDraws(const walls::FramePlan& plan) const {
+std::vector<WallDraw> Walkthrough::wallDraws(const walkthrough::FramePlan& plan) const {
     std::vector<WallDraw> draws;
-    for (const walls::WallDrawPlan& p : plan.wallDraws) {
+    for (const walkthrough::WallDrawPlan& p : plan.wallDraws) {
         WallDraw d{p.quad, {}, {}, 0, {}};
         for (const auto& [id, weight] : p.textures) {
             d.textures[d.count] = _walls->textures->store.texture(id);
@@ -311,7 +313,8 @@ std::vector<WallDraw> Walkthrough::wallDraws(const walls::FramePlan& plan) const
     return draws;
 }
 
-std::vector<DepthWallDraw> Walkthrough::depthWallDraws(const walls::FramePlan& plan, std::vector<WallDraw>& flat) {
+std::vector<DepthWallDraw> Walkthrough::depthWallDraws(const walkthrough::FramePlan& plan,
+                                                       std::vector<WallDraw>& flat) {
     std::vector<DepthWallDraw> draws;
     if (!_walls || !_walls->textures || !_walls->textures->depthPass) return draws;
     const TextureStore& store = _walls->textures->store;
@@ -337,8 +340,9 @@ std::vector<DepthWallDraw> Walkthrough::depthWallDraws(const walls::FramePlan& p
     return draws;
 }
 
-void Walkthrough::drawViews(const walls::FrameInput& input, const std::vector<display::ScreenView>& views,
-                            const render::DrawFilter& filter, const walls::FramePlan& plan, walls::FrameResult& result) {
+void Walkthrough::drawViews(const walkthrough::FrameInput& input, const std::vector<display::ScreenView>& views,
+                            const render::DrawFilter& filter, const walkthrough::FramePlan& plan,
+                            walkthrough::FrameResult& result) {
     const glm::dmat4 caveFromWorld = glm::inverse(input.worldFromCave);
     const WallRuntime::Textures* textures = _walls ? _walls->textures.get() : nullptr;
     std::vector<WallDraw> walls = textures ? wallDraws(plan) : std::vector<WallDraw>{};
@@ -370,14 +374,14 @@ void Walkthrough::drawViews(const walls::FrameInput& input, const std::vector<di
     result.perScreen = statsPerScreen(views, result.stats, _display.screens().size());
 }
 
-walls::FrameResult Walkthrough::renderFrame(const walls::FrameInput& input) {
+walkthrough::FrameResult Walkthrough::renderFrame(const walkthrough::FrameInput& input) {
     const auto start = Clock::now();
     const std::optional<BackgroundBakeStats> bakeAtStart =
         _options.baker ? std::optional(_options.baker->stats()) : std::nullopt;
     _context.makeCurrent();  // callers may have used another context (a bake) in between
     const std::vector<display::ScreenView> views = renderedViews(input.head);
-    walls::FramePlan plan = planFrame(input, views);
-    walls::FrameResult result;
+    walkthrough::FramePlan plan = planFrame(input, views);
+    walkthrough::FrameResult result;
     result.uploadedBytes = _uploadedBytes;
     result.eyeWorld = plan.eyeWorld;
     result.cell = plan.cell;

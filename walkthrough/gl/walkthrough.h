@@ -2,11 +2,11 @@
 // The walkthrough's GL executor: one frame of a scene with textured virtual walls on every
 // screen and eye of a display. Driven by `cavewall run`, the demo, the bench and cluster mode:
 // the caller owns the input side (tracker, pipeline, navigation) and passes plain
-// walls::FrameInput values (walls/frame_types.h), so rank 0 of a cluster can broadcast them.
+// walkthrough::FrameInput values (walkthrough/frame_types.h), so rank 0 of a cluster can broadcast them.
 //
 // Rule: no pure logic under */gl/ beyond what needs a context. Every decision of a frame (the
 // cell, each wall's textures and weights, the paging requests, the fallbacks, the warp-morph,
-// the error) is made by walls::FramePlanner (walls/frame_planner.h, unit-tested without GL);
+// the error) is made by walkthrough::FramePlanner (walkthrough/frame_planner.h, unit-tested without GL);
 // this class only owns the pager, the texture store and the GL passes, and per frame:
 //  1. asks the planner which textures are wanted (now / soon) and tells the pager (and, baking
 //     on demand, the background baker, whose finished textures join the pager); uploads what
@@ -38,10 +38,10 @@
 #include "render/gl/scene_renderer.h"
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
-#include "walls/frame_planner.h"
-#include "walls/frame_types.h"
+#include "walkthrough/frame_planner.h"
+#include "walkthrough/frame_types.h"
 #include "walls/gl/cluster_impostors.h"
-#include "walls/gl/hand_cursor.h"
+#include "walkthrough/gl/hand_cursor.h"
 #include "walls/depth_wall.h"
 #include "walls/gl/depth_wall_pass.h"
 #include "walls/gl/wall_pass.h"
@@ -74,7 +74,7 @@ struct ClusterOptions {
                                              // 0: the display's largest screen side
 };
 
-struct WalkthroughOptions : walls::WalkthroughSettings {
+struct WalkthroughOptions : walkthrough::WalkthroughSettings {
     ClusterOptions clusters;
     RenderSettings render;                   // clear colour, ambient, levels of detail
     // Depth: walls drawn by gl::DepthWallPass from a depth bake (BakeSettings::kind, the
@@ -109,7 +109,7 @@ public:
                 WalkthroughOptions options = {}, std::vector<int> screens = {});
     ~Walkthrough();
 
-    walls::FrameResult renderFrame(const walls::FrameInput& input);
+    walkthrough::FrameResult renderFrame(const walkthrough::FrameInput& input);
 
     const display::Display& display() const { return _display; }
     const RenderTargets& targets() const { return _targets; }
@@ -129,16 +129,18 @@ public:
 private:
     struct WallRuntime;
     // With clusters: the frame's selection; its objects (plus structure) replace `objects`.
-    void planClusters(const walls::FrameInput& input, glm::dvec3 eyeWorld, std::vector<int>& objects,
-                      walls::FrameResult& result);
+    void planClusters(const walkthrough::FrameInput& input, glm::dvec3 eyeWorld, std::vector<int>& objects,
+                      walkthrough::FrameResult& result);
     struct CellPaging;
     void makeResident(int group);
-    walls::FramePlan planFrame(const walls::FrameInput& input, const std::vector<display::ScreenView>& views);
-    std::vector<WallDraw> wallDraws(const walls::FramePlan& plan) const;
+    walkthrough::FramePlan planFrame(const walkthrough::FrameInput& input,
+                                     const std::vector<display::ScreenView>& views);
+    std::vector<WallDraw> wallDraws(const walkthrough::FramePlan& plan) const;
     // Depth walls: the walls of `flat` whose every texture has its depth move to the result.
-    std::vector<DepthWallDraw> depthWallDraws(const walls::FramePlan& plan, std::vector<WallDraw>& flat);
-    void drawViews(const walls::FrameInput& input, const std::vector<display::ScreenView>& views,
-                   const render::DrawFilter& filter, const walls::FramePlan& plan, walls::FrameResult& result);
+    std::vector<DepthWallDraw> depthWallDraws(const walkthrough::FramePlan& plan, std::vector<WallDraw>& flat);
+    void drawViews(const walkthrough::FrameInput& input, const std::vector<display::ScreenView>& views,
+                   const render::DrawFilter& filter, const walkthrough::FramePlan& plan,
+                   walkthrough::FrameResult& result);
     std::vector<display::ScreenView> renderedViews(const display::HeadPose& head) const;
     void present();
 
@@ -154,7 +156,7 @@ private:
     std::unique_ptr<ClusterRuntime> _clusters;
     std::size_t _uploadedBytes = 0;  // wall texture bytes uploaded by the last planFrame
     int _bakedNow = 0, _bakedTotal = 0;  // baking on demand: textures handed to the pager
-    std::unique_ptr<walls::FramePlanner> _planner;
+    std::unique_ptr<walkthrough::FramePlanner> _planner;
     std::unique_ptr<HandCursorPass> _cursor;
     std::unique_ptr<WarpPass> _warp;         // Transition::Warp with walls only
     GpuTimer _timer;                         // timestamp pairs: llvmpipe's first GL_TIME_ELAPSED is garbage

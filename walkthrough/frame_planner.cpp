@@ -1,4 +1,4 @@
-#include "walls/frame_planner.h"
+#include "walkthrough/frame_planner.h"
 
 #include "display/pixel_scale.h"
 #include "display/warp.h"
@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cassert>
 
-namespace cavewall::walls {
+namespace cavewall::walkthrough {
 
 namespace {
 
@@ -19,7 +19,7 @@ using TextureSet = std::vector<std::pair<int, double>>;
 
 // Transition::Warp: a blend of textures and geometry becomes whichever has the larger weight
 // (the warp-morph replaces the fade); textures keep their relative weights.
-WallBlend binaryBlend(WallBlend b) {
+walls::WallBlend binaryBlend(walls::WallBlend b) {
     if (b.textures.empty() || b.geometryWeight <= 0.0 || b.geometryWeight >= 1.0) return b;
     if (b.geometryWeight >= 0.5) {
         b.textures.clear();
@@ -56,13 +56,13 @@ struct FramePlanner::WarpOutcome {
         Fallback,  // ill-conditioned warp: drawn as geometry
     };
     Kind kind = Kind::None;
-    WarpWall warp;
+    walls::WarpWall warp;
     MorphPhase phase = MorphPhase::Idle;
     double share = 0.0;
 };
 
 FramePlanner::FramePlanner(const scenes::Scene& scene, const scenes::SceneDescription& description,
-                           const display::Display& display, const WallSetup* walls, Transition transition,
+                           const display::Display& display, const walls::WallSetup* walls, Transition transition,
                            double morphSeconds, std::vector<int> screens)
     : _scene(scene), _description(description), _display(display), _walls(walls), _transition(transition),
       _morphSeconds(morphSeconds), _screens(std::move(screens)) {
@@ -74,7 +74,7 @@ FramePlanner::FramePlanner(const scenes::Scene& scene, const scenes::SceneDescri
         return;
     }
     _selector.emplace(_walls->plan, _walls->table, description);
-    for (const Texture& t : _walls->plan.textures) _textures[t.id] = &t;
+    for (const walls::Texture& t : _walls->plan.textures) _textures[t.id] = &t;
     _memory.resize(_walls->plan.walls.size());
 }
 
@@ -109,22 +109,23 @@ TextureRequests FramePlanner::requests(const FrameInput& input, const std::vecto
             lastMetres = metres;
         }
     }
-    std::vector<FrameSelection> aheadSelections;
+    std::vector<walls::FrameSelection> aheadSelections;
     for (const glm::dvec3& p : ahead) aheadSelections.push_back(_selector->select(p));
     _seen = _selection;
-    auto outOfView = [&](const WallBlend& b, bool beyond) {
+    auto outOfView = [&](const walls::WallBlend& b, bool beyond) {
         if (wallInView(b.wall)) return false;
         _outOfView.push_back(WallState{b.wall, {}, b.geometryWeight, false, beyond});
         return true;
     };
-    std::erase_if(_seen.walls, [&](const WallBlend& b) { return outOfView(b, false); });
-    std::erase_if(_seen.beyond, [&](const WallBlend& b) { return outOfView(b, true); });
+    std::erase_if(_seen.walls, [&](const walls::WallBlend& b) { return outOfView(b, false); });
+    std::erase_if(_seen.beyond, [&](const walls::WallBlend& b) { return outOfView(b, true); });
     const glm::dvec2 eye(_eye.x, _eye.z);
-    for (const WallBlend& b : _seen.walls) {
+    for (const walls::WallBlend& b : _seen.walls) {
         for (const auto& [id, weight] : b.textures) r.now.push_back(id);
         const auto& sides = _walls->plan.sides;
-        const auto side = std::find_if(sides.begin(), sides.end(),
-                                       [&](const WallSide& s) { return s.cell == _seen.cell && s.wall == b.wall; });
+        const auto side = std::find_if(sides.begin(), sides.end(), [&](const walls::WallSide& s) {
+            return s.cell == _seen.cell && s.wall == b.wall;
+        });
         if (side == sides.end()) continue;
         // Neighbouring zones: what the selection would draw 1.5 m away in each direction.
         const int sideIndex = static_cast<int>(side - sides.begin());
@@ -133,12 +134,12 @@ TextureRequests FramePlanner::requests(const FrameInput& input, const std::vecto
                 for (const auto& [id, weight] : _selector->blendAt(sideIndex, eye + kNeighbourMetres * glm::dvec2(dx, dz)).textures)
                     r.soon.push_back(id);
     }
-    for (const WallBlend& b : _seen.beyond)
+    for (const walls::WallBlend& b : _seen.beyond)
         for (const auto& [id, weight] : b.textures) r.now.push_back(id);
     // Then what the eye will draw further along its way, nearest first, in view or not.
-    for (const FrameSelection& s : aheadSelections)
-        for (const std::vector<WallBlend>* walls : {&s.walls, &s.beyond})
-            for (const WallBlend& b : *walls)
+    for (const walls::FrameSelection& s : aheadSelections)
+        for (const std::vector<walls::WallBlend>* walls : {&s.walls, &s.beyond})
+            for (const walls::WallBlend& b : *walls)
                 for (const auto& [id, weight] : b.textures) r.soon.push_back(id);
     if (!_drawTextures) r.now.clear(), r.soon.clear();
     if (!_requestCells) return r;
@@ -152,9 +153,9 @@ TextureRequests FramePlanner::requests(const FrameInput& input, const std::vecto
         for (int dz = -1; dz <= 1; ++dz)
             if (dx != 0 || dz != 0)
                 for (int c : _selector->select(_eye + kNeighbourMetres * glm::dvec3(dx, 0, dz)).geometryCells) soon(c);
-    for (const std::vector<WallBlend>* walls : {&_selection.walls, &_selection.beyond})
-        for (const WallBlend& b : *walls) soon(_walls->plan.walls[b.wall].cells[1 - b.side]);
-    for (const FrameSelection& s : aheadSelections)
+    for (const std::vector<walls::WallBlend>* walls : {&_selection.walls, &_selection.beyond})
+        for (const walls::WallBlend& b : *walls) soon(_walls->plan.walls[b.wall].cells[1 - b.side]);
+    for (const walls::FrameSelection& s : aheadSelections)
         for (int c : s.geometryCells) soon(c);
     return r;
 }
@@ -172,7 +173,7 @@ FramePlan FramePlanner::plan(const Residency& resident, const Residency& cellRes
         return p;
     }
     p.cell = _selection.cell;
-    for (const WallBlend& b : _selection.walls)
+    for (const walls::WallBlend& b : _selection.walls)
         if (b.zone >= 0) {
             p.zone = b.zone;
             break;
@@ -184,28 +185,28 @@ FramePlan FramePlanner::plan(const Residency& resident, const Residency& cellRes
     p.walls = _outOfView;
     const bool warp = _transition == Transition::Warp;
     // The control: the selection's geometry weights, no texture.
-    auto bare = [&](const WallBlend& b, bool beyond) {
+    auto bare = [&](const walls::WallBlend& b, bool beyond) {
         if (b.geometryWeight > 0.0) setCell(_cellNeeded, _walls->plan.walls[b.wall].cells[1 - b.side], true);
         p.walls.push_back(WallState{b.wall, {}, b.geometryWeight, false, beyond});
     };
-    for (const WallBlend& selected : _seen.walls) {
+    for (const walls::WallBlend& selected : _seen.walls) {
         if (!_drawTextures) {
             bare(selected, false);
             continue;
         }
-        const WallBlend b = warp ? binaryBlend(selected) : selected;
+        const walls::WallBlend b = warp ? binaryBlend(selected) : selected;
         WallState state = chooseWall(b, resident, p);
         if (warp) applyWarp(b, warpWall(b, state), state, p);
         if (!state.textures.empty()) addDraw(b, state, p);
         p.walls.push_back(std::move(state));
     }
     // Beyond a neighbour drawn as geometry: its far walls, faded like any other (no warp).
-    for (const WallBlend& selected : _seen.beyond) {
+    for (const walls::WallBlend& selected : _seen.beyond) {
         if (!_drawTextures) {
             bare(selected, true);
             continue;
         }
-        const WallBlend b = warp ? binaryBlend(selected) : selected;
+        const walls::WallBlend b = warp ? binaryBlend(selected) : selected;
         WallState state = chooseWall(b, resident, p);
         if (!state.textures.empty()) addDraw(b, state, p);
         state.beyond = true;
@@ -218,15 +219,15 @@ FramePlan FramePlanner::plan(const Residency& resident, const Residency& cellRes
             if (p.geometryCells[c] && !_cellResident(static_cast<int>(c))) p.geometryForced.push_back(static_cast<int>(c));
         }
     // A morphing wall's cell behind is drawn by the warp pass only.
-    for (const WarpWall& w : p.warpWalls) setCell(p.geometryCells, w.cell, false);
+    for (const walls::WarpWall& w : p.warpWalls) setCell(p.geometryCells, w.cell, false);
     p.objects = objectsOfCells(_scene, p.geometryCells);
     measureError(p);
     return p;
 }
 
 // Step 3 of the header; a wall drawn as geometry adds its cell behind to the geometry cells.
-WallState FramePlanner::chooseWall(const WallBlend& b, const Residency& resident, FramePlan& p) {
-    const PlannedWall& planned = _walls->plan.walls[b.wall];
+WallState FramePlanner::chooseWall(const walls::WallBlend& b, const Residency& resident, FramePlan& p) {
+    const walls::PlannedWall& planned = _walls->plan.walls[b.wall];
     WallState state{b.wall, b.textures, b.geometryWeight, false};
     auto allResident = [&](const TextureSet& set) {
         return !set.empty() && std::all_of(set.begin(), set.end(), [&](auto& t) { return resident(t.first); });
@@ -255,7 +256,8 @@ WallState FramePlanner::chooseWall(const WallBlend& b, const Residency& resident
 // Geometry paging (header, step 4): the wall's cell behind is not resident, so it draws
 // textures alone when any within alpha are resident: this frame's without the geometry weight,
 // else the last ones drawn from this side.
-void FramePlanner::keepTexturesFor(const WallBlend& b, const Residency& resident, WallState& state, FramePlan& p) {
+void FramePlanner::keepTexturesFor(const walls::WallBlend& b, const Residency& resident, WallState& state,
+                                   FramePlan& p) {
     auto allResident = [&](const TextureSet& set) {
         return !set.empty() && std::all_of(set.begin(), set.end(), [&](auto& t) { return resident(t.first); });
     };
@@ -278,15 +280,15 @@ void FramePlanner::keepTexturesFor(const WallBlend& b, const Residency& resident
 }
 
 // The quad of a wall drawing textures: the largest weights first, at most kMaxWallTextures.
-void FramePlanner::addDraw(const WallBlend& b, const WallState& state, FramePlan& p) const {
+void FramePlanner::addDraw(const walls::WallBlend& b, const WallState& state, FramePlan& p) const {
     // Textures seen from the back were baked on the mirrored quad (walls/gl/baker.h).
-    WallDrawPlan d{b.wall, quadSeenFrom(_walls->plan.walls[b.wall].quad, b.side), {}};
+    WallDrawPlan d{b.wall, walls::quadSeenFrom(_walls->plan.walls[b.wall].quad, b.side), {}};
     TextureSet set = state.textures;
     std::sort(set.begin(), set.end(), [](auto& a, auto& c) { return a.second > c.second; });
     double total = 0.0, kept = 0.0;
     for (const auto& [id, weight] : set) {
         total += weight;
-        if (static_cast<int>(d.textures.size()) == kMaxWallTextures) continue;
+        if (static_cast<int>(d.textures.size()) == walls::kMaxWallTextures) continue;
         kept += weight;
         d.textures.emplace_back(id, weight);
     }
@@ -298,11 +300,12 @@ void FramePlanner::addDraw(const WallBlend& b, const WallState& state, FramePlan
 
 // True when every texture of `set` is within the plan's alpha for the eye: a stale texture
 // beyond the bound is worse than the geometry.
-bool FramePlanner::withinBound(const TextureSet& set, const PlannedWall& /*wall: the texture ids carry it*/) const {
-    const double alpha = glm::radians(_walls->plan.alphaDeg) + kErrorTolerance;
+bool FramePlanner::withinBound(const TextureSet& set,
+                               const walls::PlannedWall& /*wall: the texture ids carry it*/) const {
+    const double alpha = glm::radians(_walls->plan.alphaDeg) + walls::kErrorTolerance;
     for (const auto& [id, weight] : set) {
         auto it = _textures.find(id);
-        if (it == _textures.end() || textureErrorAt(_walls->plan, *it->second, _eye) > alpha)
+        if (it == _textures.end() || walls::textureErrorAt(_walls->plan, *it->second, _eye) > alpha)
             return false;
     }
     return true;
@@ -310,8 +313,8 @@ bool FramePlanner::withinBound(const TextureSet& set, const PlannedWall& /*wall:
 
 // Transition::Warp after chooseWall (header): starts, continues or ends the wall's warp-morph
 // and says what the warp does to the wall.
-FramePlanner::WarpOutcome FramePlanner::warpWall(const WallBlend& b, const WallState& state) {
-    const PlannedWall& planned = _walls->plan.walls[b.wall];
+FramePlanner::WarpOutcome FramePlanner::warpWall(const walls::WallBlend& b, const WallState& state) {
+    const walls::PlannedWall& planned = _walls->plan.walls[b.wall];
     std::optional<glm::dvec3> samplingPoint;
     if (!state.textures.empty()) {
         const auto largest = std::max_element(state.textures.begin(), state.textures.end(),
@@ -330,9 +333,10 @@ FramePlanner::WarpOutcome FramePlanner::warpWall(const WallBlend& b, const WallS
     if (samplingPoint) m.lastSamplingPoint = samplingPoint;
     const double s = (_input.time - m.start) / _morphSeconds;
     if (m.phase != MorphPhase::Idle && !(s >= 0.0 && s < 1.0)) m.phase = MorphPhase::Idle;
-    WarpOutcome out{WarpOutcome::Kind::None,
-                    WarpWall{quadSeenFrom(planned.quad, b.side), samplingPoint.value_or(glm::dvec3(0.0)), -1},
-                    m.phase, s};
+    WarpOutcome out{
+        WarpOutcome::Kind::None,
+        walls::WarpWall{walls::quadSeenFrom(planned.quad, b.side), samplingPoint.value_or(glm::dvec3(0.0)), -1},
+        m.phase, s};
     if (m.phase != MorphPhase::Idle) {
         // The viewpoint moves from the sampling point to the eye (to geometry) or back.
         out.warp.samplingPoint = m.phase == MorphPhase::ToGeometry ? glm::mix(m.samplingPoint, _eye, s)
@@ -350,7 +354,7 @@ FramePlanner::WarpOutcome FramePlanner::warpWall(const WallBlend& b, const WallS
     return out;
 }
 
-void FramePlanner::applyWarp(const WallBlend& b, const WarpOutcome& outcome, WallState& state, FramePlan& p) {
+void FramePlanner::applyWarp(const walls::WallBlend& b, const WarpOutcome& outcome, WallState& state, FramePlan& p) {
     using Kind = WarpOutcome::Kind;
     if (outcome.kind == Kind::None) return;
     if (outcome.kind == Kind::Warp || outcome.kind == Kind::Morph) p.warpWalls.push_back(outcome.warp);
@@ -367,10 +371,10 @@ void FramePlanner::applyWarp(const WallBlend& b, const WarpOutcome& outcome, Wal
 }
 
 // True when the warp of `warp` is well-conditioned for every given view (display/warp.h).
-bool FramePlanner::warpConditioned(const WarpWall& warp) const {
+bool FramePlanner::warpConditioned(const walls::WarpWall& warp) const {
     const glm::dmat4 caveFromWorld = glm::inverse(_input.worldFromCave);
     for (const display::ScreenView& view : _views)
-        if (!(display::warpCondition(warpFor(warp, view, caveFromWorld, _display.depthRange().near)) <=
+        if (!(display::warpCondition(walls::warpFor(warp, view, caveFromWorld, _display.depthRange().near)) <=
               display::kMaxWarpCondition))
             return false;
     return true;
@@ -400,14 +404,14 @@ bool FramePlanner::wallInView(int wall) const {
 
 void FramePlanner::measureError(FramePlan& p) const {
     // The bounds are within kErrorTolerance of the true maximum (walls/angular_error.h).
-    const double alpha = glm::radians(_walls->plan.alphaDeg) + kErrorTolerance;
+    const double alpha = glm::radians(_walls->plan.alphaDeg) + walls::kErrorTolerance;
     double worst = 0.0;
     for (WallState& s : p.walls) {
         double wall = 0.0;
         for (const auto& [id, weight] : s.textures) {
             auto it = _textures.find(id);
             if (weight <= 0.0 || it == _textures.end()) continue;
-            const double error = textureErrorAt(_walls->plan, *it->second, _eye);
+            const double error = walls::textureErrorAt(_walls->plan, *it->second, _eye);
             wall = std::max(wall, error);
             s.texturesOverAlpha += error > alpha ? 1 : 0;
         }
@@ -432,4 +436,4 @@ std::vector<int> objectsOfCells(const scenes::Scene& scene, const std::vector<bo
     return out;
 }
 
-}  // namespace cavewall::walls
+}  // namespace cavewall::walkthrough
