@@ -91,13 +91,13 @@ struct RunOptions {
     std::size_t triangleBudget = 0;             // --triangle-budget: per frame, 0 none (needs --lod)
     double frameBudgetMs = 0.0;                 // --frame-budget-ms: frame-time target, 0 none (needs --lod)
     double lodMaxPixels = 8.0;                  // --lod-max: the most a budget raises the tolerance to
-    // --clusters: Maciel & Shirley's (1995) textured clusters instead of walls
+    // --hierarchy: Maciel & Shirley's (1995) textured clusters instead of walls
     // (walkthrough/gl/walkthrough.h ClusterOptions); the budget is --frame-budget-ms's controller
     // (predicted ms), else 16.7 ms.
     bool clusters = false;
-    int clusterDivisions = 8;                   // --cluster-divisions N: finest grid N x max(1, N/4) x N
-    int clusterResolution = 64;                 // --cluster-res: face texture's longer side, texels
-    int clusterFadeFrames = 8;                  // --cluster-fade N: frames a switch cross-fades over
+    int clusterDivisions = 8;                   // --hierarchy-divisions N: finest grid N x max(1, N/4) x N
+    int clusterResolution = 64;                 // --hierarchy-res: face texture's longer side, texels
+    int clusterFadeFrames = 8;                  // --hierarchy-fade N: frames a switch cross-fades over
     std::filesystem::path out;                  // output folder (created)
     bool verbose = true;                        // progress and summary on stdout
     bool cluster = false;                       // --cluster: one process per screen group on MPI
@@ -137,7 +137,7 @@ struct RunSummary {
     // loaded, the walls prepared (plan, visibility, bake or cache check), the walkthrough ready
     // (uploads, first textures), and the first frame presented.
     double sceneSeconds = 0.0, wallsSeconds = 0.0, readySeconds = 0.0, firstFrameSeconds = 0.0;
-    // --clusters: clusters in the hierarchy, made now and read from the cache, and the measured
+    // --hierarchy: clusters in the hierarchy, made now and read from the cache, and the measured
     // costs (ms per triangle, per object, per textured and per average box).
     // --bake-on-demand: textures missing from the cache at the start, baked during the run and
     // still missing at the end; files evicted for --cache-budget and the folder's MB then.

@@ -48,6 +48,14 @@ void Args::expectNoPositional(std::string_view command) const {
 
 bool Args::has(std::string_view flag) const { return _flags.find(flag) != _flags.end(); }
 
+std::string_view Args::renamed(std::string_view flag, std::string_view oldName) const {
+    if (has(flag) && has(oldName))
+        throw Error("--" + std::string(flag) + " and --" + std::string(oldName) +
+                    ": expected one of them, got both (--" + std::string(oldName) + " is the old name of --" +
+                    std::string(flag) + ")");
+    return has(oldName) ? oldName : flag;
+}
+
 std::optional<std::string> Args::get(std::string_view flag) const {
     auto it = _flags.find(flag);
     if (it == _flags.end()) return std::nullopt;

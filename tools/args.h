@@ -30,6 +30,10 @@ public:
     void expectFlags(std::initializer_list<std::string_view> allowed) const;
 
     bool has(std::string_view flag) const;
+    // For a flag renamed and still accepted under its old name for one release: `oldName` when
+    // that was given, else `flag`, so that lookups and their messages name the word the user
+    // typed. Both given: an error.
+    std::string_view renamed(std::string_view flag, std::string_view oldName) const;
     std::optional<std::string> get(std::string_view flag) const;
     std::string require(std::string_view flag) const;
     std::string getOr(std::string_view flag, std::string fallback) const;

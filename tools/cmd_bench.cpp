@@ -24,7 +24,7 @@ const char* const kBenchUsage =
     "                      [--stereo mono|separate] [--quick] [--cache DIR] [--compare-every K] [--min-zone M] [--ppd N]\n"
     "                      [--bake-resolution N] [--alphas A,B,...] [--warp-alpha A]\n"
     "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
-    "                      [--walls flat|depth] [--clusters [--cluster-budgets T1,T2,...]]\n"
+    "                      [--walls flat|depth] [--hierarchy [--hierarchy-budgets T1,T2,...]]\n"
     "                      [--compare-scene OTHER,...] [--on-demand] [--texture-format rgba8|bc1|bc3]\n"
     "       cavewall bench --scale 2M,8M,32M [--data DIR] [--scale-metres M] [--frames N] [--resolution N]\n"
     "                      [--triangle-budget N|near] [--lod-max PX] [--min-zone M] [--walls flat|depth|flat,depth]\n"
@@ -57,14 +57,16 @@ const char* const kBenchUsage =
     "         into two --out folders to compare.\n"
     "         --texture-format: storage of the baked colour (as `cavewall bake`, default\n"
     "         " DEFAULT_TEXTURE_FORMAT "); the disk and GPU MB columns and the image error include it.\n"
-    "         --clusters adds Maciel & Shirley's textured clusters (`cavewall run --clusters`)\n"
+    "         --hierarchy adds Maciel & Shirley's textured clusters (`cavewall run --hierarchy`)\n"
     "         held to --frame-budget-ms (16.67 when it is 0) by the controller, drawn in turn\n"
     "         with full geometry and the walls modes (impostors made into the cache first);\n"
-    "         --cluster-budgets 40,60,100 adds one clusters mode per frame time instead. Their\n"
-    "         controller (render/cluster_budget.h) aims the 90th percentile of frame times at the\n"
+    "         --hierarchy-budgets 40,60,100 adds one clusters mode per frame time instead. Their\n"
+    "         controller (hierarchy/cluster_budget.h) aims the 90th percentile of frame times at the\n"
     "         budget; a figure line per budget gives p95 over the budget, the floor (the\n"
     "         cheapest selection's frame time: a budget below it is infeasible),\n"
     "         predicted against measured frame times and a fit of measured on predicted cost.\n"
+    "         --clusters: old name of --hierarchy, kept for one release; likewise\n"
+    "         --cluster-budgets of --hierarchy-budgets.\n"
     "         --compare-scene OTHER[,OTHER2...]: scene.json files of the same model\n"
     "         with other cells and walls (e.g. `cavewall walls`'s proposal for SCENE, given its\n"
     "         texture budget): each one's walls are planned and baked at every alpha and drawn in\n"
@@ -173,11 +175,12 @@ std::vector<double> alphaList(const std::string& text) {
     });
 }
 
-// "--cluster-budgets 40,60,100": frame times in (0, 100000] ms.
-std::vector<double> budgetList(const std::string& text) {
-    return numberList(text, "bench: --cluster-budgets", [](double ms) {
+// "--hierarchy-budgets 40,60,100": frame times in (0, 100000] ms; `flag` names the flag given.
+std::vector<double> budgetList(const std::string& text, std::string_view flag) {
+    const std::string what = "bench: --" + std::string(flag);
+    return numberList(text, what, [&](double ms) {
         if (!(ms > 0.0 && ms <= 1e5))
-            throw Error("bench: --cluster-budgets: expected milliseconds in (0, 100000], got " + config::formatNumber(ms));
+            throw Error(what + ": expected milliseconds in (0, 100000], got " + config::formatNumber(ms));
     });
 }
 
@@ -240,10 +243,13 @@ int runSceneBench(const Args& args) {
     o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);
     o.wallKind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
-    o.clusters = args.has("clusters");
-    if (auto list = args.get("cluster-budgets")) {
-        if (!o.clusters) throw Error("bench: --cluster-budgets needs --clusters");
-        o.clusterBudgetsMs = budgetList(*list);
+    o.clusters = args.has(args.renamed("hierarchy", "clusters"));
+    const std::string_view budgets = args.renamed("hierarchy-budgets", "cluster-budgets");
+    if (auto list = args.get(budgets)) {
+        if (!o.clusters)  // named as the budgets were: old name with old name
+            throw Error("bench: --" + std::string(budgets) + " needs --" +
+                        (budgets == "cluster-budgets" ? "clusters" : "hierarchy"));
+        o.clusterBudgetsMs = budgetList(*list, budgets);
     }
     if (std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg) == o.alphasDeg.end()) {
         std::string list;
@@ -303,12 +309,39 @@ int runScaleBench(const Args& args) {
 }  // namespace
 
 int runBench(const std::vector<std::string>& words) {
-    const Args args(words, {"stability", "quick", "clusters", "on-demand"});
-    args.expectFlags({"stability", "quick", "display", "path", "route", "out", "frames", "resolution", "stereo", "cache",
+    const Args args(words, {"stability", "quick", "hierarchy", "clusters", "on-demand"});
+    args.expectFlags({"stability",
+                      "quick",
+                      "display",
+                      "path",
+                      "route",
+                      "out",
+                      "frames",
+                      "resolution",
+                      "stereo",
+                      "cache",
                       "compare-every",
-                      "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod", "triangle-budget", "frame-budget-ms", "lod-max",
-                      "walls", "clusters", "cluster-budgets", "compare-scene", "on-demand", "scale", "data",
-                      "scale-metres", "geometry-budget", "texture-format"});
+                      "min-zone",
+                      "ppd",
+                      "bake-resolution",
+                      "alphas",
+                      "warp-alpha",
+                      "lod",
+                      "triangle-budget",
+                      "frame-budget-ms",
+                      "lod-max",
+                      "walls",
+                      "hierarchy",
+                      "hierarchy-budgets",
+                      "clusters",
+                      "cluster-budgets",
+                      "compare-scene",
+                      "on-demand",
+                      "scale",
+                      "data",
+                      "scale-metres",
+                      "geometry-budget",
+                      "texture-format"});
     if (args.has("stability")) return runStability();
 #ifdef CAVEWALL_HAVE_GL
     if (args.has("scale")) return runScaleBench(args);

@@ -20,7 +20,7 @@ const char* const kRunUsage =
     "                    [--bake-on-demand [--cache-budget MB] [--bake-nice N] [--bake-interleave N]]\n"
     "                    [--lod PX [--triangle-budget N|--frame-budget-ms T] [--lod-max PX]]\n"
     "                    [--cluster [--cluster-timeout S]] [--texture-format rgba8|bc1|bc3]\n"
-    "                    [--clusters [--cluster-divisions N] [--cluster-res N] [--cluster-fade N]]\n"
+    "                    [--hierarchy [--hierarchy-divisions N] [--hierarchy-res N] [--hierarchy-fade N]]\n"
     "\n"
     "Walks through scene S (a scene.json, a folder holding one, or a bare glTF/GLB file) on the\n"
     "display D (a file or a preset, default cave4) for N frames at a fixed step of 1/60 s. The head\n"
@@ -86,21 +86,23 @@ const char* const kRunUsage =
     "barrier before presenting is the swap lock; rank 0 writes the same files as a single process\n"
     "(frames.csv gains the slowest rank's wait in sync_ms). A rank that fails or does not answer\n"
     "within --cluster-timeout seconds (default 10) ends every rank with a message.\n"
-    "--clusters (Maciel & Shirley 1995; no walls): the objects are clustered bottom up on a\n"
-    "grid of N x max(1, N/4) x N cells (--cluster-divisions, default 8) and every cluster gets a\n"
-    "textured box (one texture per face and viewing region, --cluster-res texels, default 64) and an\n"
+    "--hierarchy (Maciel & Shirley 1995; no walls): the objects are clustered bottom up on a\n"
+    "grid of N x max(1, N/4) x N cells (--hierarchy-divisions, default 8) and every cluster gets a\n"
+    "textured box (one texture per face and viewing region, --hierarchy-res texels, default 64) and an\n"
     "average-colour box, made once into the cache with their accuracy against full detail; each\n"
     "frame draws the selection under a budget of predicted milliseconds (costs measured at the\n"
-    "display's own resolution; with --frame-budget-ms T the controller of render/cluster_budget.h\n"
+    "display's own resolution; with --frame-budget-ms T the controller of hierarchy/cluster_budget.h\n"
     "aims the 90th percentile of frame times at T, else a fixed 16.7 ms of predicted cost), objects\n"
     "as geometry (with --lod at their level of detail) and clusters as boxes (frames.csv:\n"
     "cluster_objects, cluster_textured, cluster_average, cluster_predicted_ms, cluster_budget_ms,\n"
     "cluster_fades, cluster_selected_ms, cluster_cheapest_ms; with T: cluster_target_ms,\n"
     "cluster_predicted_frame_ms, the frame time predicted before drawing, and cluster_floor_ms,\n"
     "the cheapest selection's frame time: above T, T is infeasible). A switch between a cluster's box and\n"
-    "its children, or between its two boxes, is cross-faded over --cluster-fade frames (default 8;\n"
+    "its children, or between its two boxes, is cross-faded over --hierarchy-fade frames (default 8;\n"
     "0 or 1: none): the box drawn over what it replaces, its weight ramping; both are drawn (and\n"
-    "costed) meanwhile.\n";
+    "costed) meanwhile.\n"
+    "--clusters: old name of --hierarchy, kept for one release; likewise --cluster-divisions,\n"
+    "--cluster-res and --cluster-fade of --hierarchy-divisions, --hierarchy-res and --hierarchy-fade.\n";
 
 namespace {
 
@@ -160,12 +162,13 @@ std::string clustersLine(const app::RunSummary& s) {
 }  // namespace
 
 int runRun(const std::vector<std::string>& words) {
-    const Args args(words, {"headless", "window", "no-walls", "no-textures", "sync-paging", "cluster", "clusters",
-                            "bake-on-demand"});
+    const Args args(words, {"headless", "window", "no-walls", "no-textures", "sync-paging", "cluster", "hierarchy",
+                            "clusters", "bake-on-demand"});
     args.expectFlags({"scene", "display", "tracker", "frames", "nav", "pace", "route", "headless", "window", "transition",
                       "no-walls", "no-textures", "alpha", "min-zone", "ppd", "save-frames", "record", "cache", "budget", "geometry-budget", "max-res",
                       "sync-paging", "out", "cluster", "cluster-timeout", "lod", "triangle-budget", "frame-budget-ms", "lod-max",
-                      "walls", "clusters", "cluster-divisions", "cluster-res", "cluster-fade", "bake-on-demand",
+                      "walls", "hierarchy", "hierarchy-divisions", "hierarchy-res", "hierarchy-fade", "clusters",
+                      "cluster-divisions", "cluster-res", "cluster-fade", "bake-on-demand",
                       "cache-budget", "bake-interleave", "bake-nice", "texture-format"});
     if (args.has("headless") && args.has("window")) throw Error("--headless and --window: expected one of them, got both");
     app::RunOptions o;
@@ -203,10 +206,13 @@ int runRun(const std::vector<std::string>& words) {
     o.triangleBudget = static_cast<std::size_t>(args.integer("triangle-budget", 0, 0, 1000000000));
     o.frameBudgetMs = args.number("frame-budget-ms", 0.0, 0.0, 1e5);
     o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);
-    o.clusters = args.has("clusters");
-    o.clusterDivisions = static_cast<int>(args.integer("cluster-divisions", o.clusterDivisions, 1, 1024));
-    o.clusterResolution = static_cast<int>(args.integer("cluster-res", o.clusterResolution, 4, 2048));
-    o.clusterFadeFrames = static_cast<int>(args.integer("cluster-fade", o.clusterFadeFrames, 0, 600));
+    o.clusters = args.has(args.renamed("hierarchy", "clusters"));
+    o.clusterDivisions = static_cast<int>(
+        args.integer(args.renamed("hierarchy-divisions", "cluster-divisions"), o.clusterDivisions, 1, 1024));
+    o.clusterResolution =
+        static_cast<int>(args.integer(args.renamed("hierarchy-res", "cluster-res"), o.clusterResolution, 4, 2048));
+    o.clusterFadeFrames =
+        static_cast<int>(args.integer(args.renamed("hierarchy-fade", "cluster-fade"), o.clusterFadeFrames, 0, 600));
     app::validate(o);
     o.cluster = args.has("cluster");
     o.clusterTimeout = args.number("cluster-timeout", o.clusterTimeout, 0.1, 3600.0);

@@ -132,11 +132,11 @@ struct FrameResult {
     // Clusters (gl::ClusterOptions): nodes drawn by kind, the selection's predicted cost and
     // the budget it was held to, milliseconds. Zeros without clusters.
     int clusterObjects = 0, clusterTextured = 0, clusterAverage = 0;
-    int clusterFades = 0;                    // cross-fades under way (render/cluster_fades.h)
+    int clusterFades = 0;                    // cross-fades under way (hierarchy/cluster_fades.h)
     double clusterPredictedMs = 0.0, clusterBudgetMs = 0.0;
     double clusterSelectedMs = 0.0;          // of clusterPredictedMs, the selection's (no fades)
     double clusterCheapestMs = 0.0;          // the selection at a budget of 0 (the floor's part)
-    // Filled by the caller's frame-time controller (render/cluster_budget.h), zeros without one:
+    // Filled by the caller's frame-time controller (hierarchy/cluster_budget.h), zeros without one:
     // its target, the frame time it predicted for this frame (clusterPredictedMs plus the
     // median of the earlier frames' rest) and the floor (the cheapest selection's frame time).
     double clusterTargetMs = 0.0, clusterPredictedFrameMs = 0.0, clusterFloorMs = 0.0;

@@ -32,7 +32,7 @@ struct FrameSample {
     double frameMs = 0.0, triangles = 0.0, drawCalls = 0.0;
     double uploadedMB = 0.0;           // wall texture MB uploaded in the frame
     int texturesOverAlpha = 0;         // drawn textures whose exact error exceeds alpha
-    // Clusters held to a frame time (render/cluster_budget.h; 0 otherwise): the predicted cost
+    // Clusters held to a frame time (hierarchy/cluster_budget.h; 0 otherwise): the predicted cost
     // of what the frame drew, the frame time the controller predicted before drawing it and the
     // floor, the cheapest selection's frame time.
     double predictedMs = 0.0, predictedFrameMs = 0.0, floorMs = 0.0;

@@ -7,10 +7,10 @@
 #include "input/recording.h"
 #include "input/tracker_source.h"
 #include "input/tracking_pipeline.h"
-#include "render/cluster_diagram.h"
+#include "hierarchy/cluster_diagram.h"
 #include "scenes/image_io.h"
 #include "scenes/loader.h"
-#include "app/cluster_control.h"
+#include "walkthrough/cluster_control.h"
 #include "app/run_cluster.h"
 #include "app/run_input.h"
 #include "app/gl/run_output.h"
@@ -159,7 +159,7 @@ gl::WalkthroughOptions walkthroughOptions(const RunOptions& o, gl::BackgroundBak
 // geometry paging is judged by (resident at most the largest three cells).
 void summarizeWalkthrough(const gl::Walkthrough& walkthrough, RunSummary& summary) {
     summary.walls = walkthrough.hasWalls();
-    if (const render::ClusterModel* m = walkthrough.clusterModel()) {
+    if (const hierarchy::ClusterModel* m = walkthrough.clusterModel()) {
         const gl::ClusterBakeStats& b = *walkthrough.clusterBakeStats();
         summary.clusters = b.clusters;
         summary.clustersMade = b.made;
@@ -202,7 +202,7 @@ void saveFrameImages(const Session& s, long i, const walkthrough::FrameInput& in
     summary.foldouts.push_back(s.output->saveImages(i, r.images));
     if (s.walkthrough.hasClusters())
         scenes::writeImage(summary.foldouts.back().parent_path() / "clusters.png",
-                           render::clusterDiagram(*s.walkthrough.clusterModel(), *s.walkthrough.lastClusterPlan(),
+                           hierarchy::clusterDiagram(*s.walkthrough.clusterModel(), *s.walkthrough.lastClusterPlan(),
                                                   r.eyeWorld));
     if (s.o.keepSavedImages) summary.savedFrames.push_back({i, in.head.position, std::move(r.images)});
 }
@@ -230,9 +230,9 @@ void recordFrame(const Session& s, long i, const walkthrough::FrameInput& in, wa
 void runFrames(const Session& s, RunSummary& summary) {
     const RunOptions& o = s.o;
     // Levels of detail are held to the frame time by triangles (display/frame_budget.h),
-    // clusters by predicted milliseconds (render/cluster_budget.h).
+    // clusters by predicted milliseconds (hierarchy/cluster_budget.h).
     std::optional<display::FrameTimeBudget> frameBudget;
-    std::optional<render::ClusterBudget> clusterBudget;
+    std::optional<hierarchy::ClusterBudget> clusterBudget;
     if (o.frameBudgetMs > 0.0 && !o.clusters) frameBudget.emplace(o.frameBudgetMs);
     if (o.frameBudgetMs > 0.0 && o.clusters) clusterBudget.emplace(o.frameBudgetMs);
     for (long i = 0; i < o.frames; ++i) {
@@ -241,7 +241,7 @@ void runFrames(const Session& s, RunSummary& summary) {
         walkthrough::FrameInput in =
             s.input ? s.input->next(i, save, s.context.takeInputEvents()) : walkthrough::FrameInput{};
         if (frameBudget) in.triangleBudget = frameBudget->budget();
-        if (clusterBudget) in.clusterBudgetMs = app::clusterBudgetFor(*clusterBudget);
+        if (clusterBudget) in.clusterBudgetMs = walkthrough::clusterBudgetFor(*clusterBudget);
         double syncMs = s.cluster ? app::receiveFrame(*s.cluster, in) : 0.0;
         if (s.baker && o.bakeInterleave > 0) s.baker->pause((i / o.bakeInterleave) % 2 == 1);
         walkthrough::FrameResult r = s.walkthrough.renderFrame(in);
@@ -249,7 +249,7 @@ void runFrames(const Session& s, RunSummary& summary) {
         if (s.cluster) syncMs = app::combineFrame(*s.cluster, r, syncMs, s.screens);
         // Rank 0: the slowest rank's time.
         if (frameBudget) frameBudget->update(r.frameMs, r.geometryTriangles);
-        if (clusterBudget) app::controlClusters(*clusterBudget, r);
+        if (clusterBudget) walkthrough::controlClusters(*clusterBudget, r);
         if (s.output) recordFrame(s, i, in, r, syncMs, summary);
     }
 }

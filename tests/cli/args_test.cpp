@@ -29,5 +29,19 @@ TEST(ArgsChoice, ABadWordNamesTheFlagTheWordsAndWhatWasGiven) {
                 ThrowsMessage<Error>(HasSubstr("--nav: expected one of guided, fly, walk, none, got 'Walk'")));
 }
 
+TEST(ArgsRenamed, TheOldNameIsReadWhenGivenAndBothAreAnError) {
+    // The value is read under whichever name was typed, so its messages name that word.
+    const Args old({"--cluster-res", "16"}, {});
+    EXPECT_EQ(old.renamed("hierarchy-res", "cluster-res"), "cluster-res");
+    EXPECT_EQ(old.integer(old.renamed("hierarchy-res", "cluster-res"), 64, 4, 2048), 16);
+    const Args current({"--hierarchy-res", "16"}, {});
+    EXPECT_EQ(current.renamed("hierarchy-res", "cluster-res"), "hierarchy-res");
+    EXPECT_EQ(current.integer(current.renamed("hierarchy-res", "cluster-res"), 64, 4, 2048), 16);
+    // Neither given: the new name, whose lookups give the fallback.
+    EXPECT_EQ(Args({}, {}).renamed("hierarchy-res", "cluster-res"), "hierarchy-res");
+    EXPECT_THAT([] { Args({"--hierarchy", "--clusters"}, {"hierarchy", "clusters"}).renamed("hierarchy", "clusters"); },
+                ThrowsMessage<Error>(HasSubstr("--hierarchy and --clusters: expected one of them, got both")));
+}
+
 }  // namespace
 }  // namespace cavewall::tools

@@ -20,11 +20,22 @@ namespace fs = std::filesystem;
 
 // Textured clusters end to end: `run --clusters` on the small plant's scene.json and on its
 // bare GLB. Every frame's selection stays within its budget of predicted milliseconds and draws
-// something; a second run finds every cluster in the cache.
-std::vector<std::string> clusterRun(const fs::path& scene, const fs::path& out, const std::string& cache) {
+// something; a second run, with the new flag names (`--hierarchy*`; `--clusters*` are their old
+// names), finds every cluster in the cache.
+enum class FlagNames { Old, New };
+
+std::vector<std::string> clusterRun(const fs::path& scene, const fs::path& out, const std::string& cache,
+                                    FlagNames names = FlagNames::Old) {
+    const bool old = names == FlagNames::Old;
     return {"run", "--scene", scene.string(), "--display", testDisplay(), "--tracker", "sim:walk?seed=2",
-            "--frames", "8", "--clusters", "--cluster-divisions", "4", "--cluster-res", "16", "--cache", cache,
-            "--out", out.string()};
+            "--frames", "8", old ? "--clusters" : "--hierarchy", old ? "--cluster-divisions" : "--hierarchy-divisions",
+            "4", old ? "--cluster-res" : "--hierarchy-res", "16", "--cache", cache, "--out", out.string()};
+}
+
+// "run: clusters: N (...": the clusters of the hierarchy (one per node of the tree).
+std::string clusterCount(const std::string& out) {
+    const std::size_t at = out.find("run: clusters: ");
+    return at == std::string::npos ? std::string() : out.substr(at, out.find(' ', at + 15) - at);
 }
 
 // Within the budget, unless the budget is below the least a frame can cost: then the root
@@ -69,16 +80,25 @@ TEST(RunCli, ClustersDrawTheSelectionWithinTheBudgetAndReuseTheirImpostors) {
     double fades = 0.0;
     for (const auto& row : rows) fades = std::max(fades, row.number("cluster_fades"));
     EXPECT_GT(fades, 0.0);
-    r = runCavewall(clusterRun(smallPlant(), second, cache));
+    const std::string firstCount = clusterCount(r.out);
+    // The new names give the same hierarchy: as many clusters, the same impostors (their cache
+    // keys hold the divisions and the resolution), the same frames.
+    r = runCavewall(clusterRun(smallPlant(), second, cache, FlagNames::New));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("(0 made, "));
+    EXPECT_EQ(clusterCount(r.out), firstCount);
+    EXPECT_FALSE(firstCount.empty());
+    const auto secondRows = readCsv(second / "frames.csv");
+    ASSERT_EQ(secondRows.size(), rows.size());
+    expectWithinBudget(secondRows);
+    EXPECT_NEAR(secondRows[0].number("cluster_budget_ms"), rows[0].number("cluster_budget_ms"), 1e-9);
     // A tight budget of 0.5 ms draws clusters as boxes; the controller then sets each budget
     // (frames here take more than 0.5 ms whatever is drawn, so it stays at the root alone), and
     // every frame after the first reports the target as infeasible: its floor (the cheapest
     // selection's frame time) is above it.
     const fs::path tight = outputDir("clusters-tight");
-    std::vector<std::string> args = clusterRun(smallPlant(), tight, cache);
-    args.insert(args.end(), {"--frame-budget-ms", "0.5", "--cluster-fade", "0"});
+    std::vector<std::string> args = clusterRun(smallPlant(), tight, cache, FlagNames::New);
+    args.insert(args.end(), {"--frame-budget-ms", "0.5", "--hierarchy-fade", "0"});
     r = runCavewall(args);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto tightRows = readCsv(tight / "frames.csv");
@@ -98,9 +118,13 @@ TEST(RunCli, ClustersDrawTheSelectionWithinTheBudgetAndReuseTheirImpostors) {
 TEST(RunCli, ClustersRunOnABareGlb) {
     const std::string cache = (fs::path(cacheDir()).parent_path() / "cluster-cache-glb").string();
     const fs::path out = outputDir("clusters-glb");
-    const CliResult r = runCavewall(clusterRun(smallPlant().parent_path() / "plant.glb", out, cache));
+    std::vector<std::string> args = clusterRun(smallPlant().parent_path() / "plant.glb", out, cache);
+    args.insert(args.end(), {"--cluster-fade", "0"});  // the old name of --hierarchy-fade
+    const CliResult r = runCavewall(args);
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    expectWithinBudget(readCsv(out / "frames.csv"));
+    const auto rows = readCsv(out / "frames.csv");
+    expectWithinBudget(rows);
+    for (const auto& row : rows) EXPECT_EQ(row.number("cluster_fades"), 0.0);  // switched off
 }
 
 TEST(RunCli, ClustersRefuseATriangleBudget) {

@@ -4,10 +4,10 @@
 #include "display/timing.h"
 #include "scenes/image_io.h"
 #include "render/gl/view_loop.h"
-#include "render/cluster_fades.h"
+#include "hierarchy/cluster_fades.h"
 #include "render/lod_choice.h"
 #include "walls/gl/background_baker.h"
-#include "walls/gl/cluster_costs.h"
+#include "hierarchy/gl/cluster_costs.h"
 #include "walls/gl/texture_store.h"
 
 
@@ -118,12 +118,12 @@ struct Walkthrough::WallRuntime {
 };
 
 struct Walkthrough::ClusterRuntime {
-    render::ClusterModel model;
+    hierarchy::ClusterModel model;
     std::vector<int> structure;              // always drawn
     std::unique_ptr<ClusterImpostors> impostors;
-    render::ClusterCoherence coherence;
-    render::ClusterFades fades;
-    render::ClusterFramePlan last;
+    hierarchy::ClusterCoherence coherence;
+    hierarchy::ClusterFades fades;
+    hierarchy::ClusterFramePlan last;
     std::vector<int> drawn;                  // the last frame's objects and structure
     int costResolution = 0;                  // the cost view's side, pixels
 };
@@ -177,8 +177,8 @@ std::unique_ptr<Walkthrough::ClusterRuntime> makeClusters(const scenes::Scene& s
                                                           SceneRenderer& renderer, const std::string& rendererName,
                                                           int costResolution) {
     auto c = std::make_unique<Walkthrough::ClusterRuntime>();
-    c->coherence = render::ClusterCoherence(o.coherenceFrames);
-    c->fades = render::ClusterFades(o.fadeFrames);
+    c->coherence = hierarchy::ClusterCoherence(o.coherenceFrames);
+    c->fades = hierarchy::ClusterFades(o.fadeFrames);
     std::vector<scenes::Bounds> bounds;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const scenes::Object& object = scene.objects[i];
@@ -187,7 +187,7 @@ std::unique_ptr<Walkthrough::ClusterRuntime> makeClusters(const scenes::Scene& s
         if (structure) c->structure.push_back(static_cast<int>(i));
         c->model.objectTriangles.push_back(scene.meshes[object.mesh].triangleCount());
     }
-    c->model.tree = render::buildClusterTree(bounds, o.divisions);
+    c->model.tree = hierarchy::buildClusterTree(bounds, o.divisions);
     c->impostors = std::make_unique<ClusterImpostors>(scene, c->model, o.bake, o.cache);
     c->model.costs =
         measureClusterCosts(renderer, *c->impostors, c->model, scene, rendererName, o.cache, costResolution).costs;
@@ -199,11 +199,13 @@ std::unique_ptr<Walkthrough::ClusterRuntime> makeClusters(const scenes::Scene& s
 
 Walkthrough::~Walkthrough() = default;
 
-const render::ClusterModel* Walkthrough::clusterModel() const { return _clusters ? &_clusters->model : nullptr; }
+const hierarchy::ClusterModel* Walkthrough::clusterModel() const { return _clusters ? &_clusters->model : nullptr; }
 const ClusterBakeStats* Walkthrough::clusterBakeStats() const {
     return _clusters ? &_clusters->impostors->stats() : nullptr;
 }
-const render::ClusterFramePlan* Walkthrough::lastClusterPlan() const { return _clusters ? &_clusters->last : nullptr; }
+const hierarchy::ClusterFramePlan* Walkthrough::lastClusterPlan() const {
+    return _clusters ? &_clusters->last : nullptr;
+}
 int Walkthrough::clusterCostResolution() const { return _clusters ? _clusters->costResolution : 0; }
 
 void Walkthrough::planClusters(const walkthrough::FrameInput& input, glm::dvec3 eyeWorld, std::vector<int>& objects,
@@ -211,7 +213,7 @@ void Walkthrough::planClusters(const walkthrough::FrameInput& input, glm::dvec3 
     ClusterRuntime& c = *_clusters;
     const double budget = input.clusterBudgetMs > 0.0 ? input.clusterBudgetMs : _options.clusters.budgetMs;
     // Over every screen, also those of other cluster ranks (as the levels of detail).
-    c.last = render::planClusterFrame(c.model, _display.views(input.head), input.worldFromCave, eyeWorld, budget,
+    c.last = hierarchy::planClusterFrame(c.model, _display.views(input.head), input.worldFromCave, eyeWorld, budget,
                                       &c.coherence);
     c.fades.apply(c.model, eyeWorld, c.last);
     objects = c.last.objects;

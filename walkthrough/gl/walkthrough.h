@@ -40,7 +40,7 @@
 #include "scenes/scene_description.h"
 #include "walkthrough/frame_planner.h"
 #include "walkthrough/frame_types.h"
-#include "walls/gl/cluster_impostors.h"
+#include "hierarchy/gl/cluster_impostors.h"
 #include "walkthrough/gl/hand_cursor.h"
 #include "walls/depth_wall.h"
 #include "walls/gl/depth_wall_pass.h"
@@ -56,8 +56,8 @@ namespace cavewall::gl {
 
 class BackgroundBaker;  // walls/gl/background_baker.h
 
-// Maciel & Shirley's (1995) textured clusters (walls/gl/cluster_impostors.h,
-// render/cluster_frame.h): the content objects are drawn as the frame's selection from the
+// Maciel & Shirley's (1995) textured clusters (hierarchy/gl/cluster_impostors.h,
+// hierarchy/cluster_frame.h): the content objects are drawn as the frame's selection from the
 // model hierarchy under a budget in predicted milliseconds, objects at full detail (or their
 // level of detail) and clusters as textured or average-colour boxes; structure objects are
 // always drawn.
@@ -68,7 +68,7 @@ struct ClusterOptions {
     std::filesystem::path cache;             // the bake cache folder (clusters/ inside it)
     double budgetMs = 1000.0 / 60.0;         // predicted cost per frame unless FrameInput's
     int coherenceFrames = 3;                 // ClusterCoherence threshold
-    int fadeFrames = 8;                      // render::ClusterFades: frames a switch is
+    int fadeFrames = 8;                      // hierarchy::ClusterFades: frames a switch is
                                              // cross-faded over (<= 1: none)
     int costResolution = 0;                  // pixels of the cost view's side (cluster_costs.h);
                                              // 0: the display's largest screen side
@@ -117,9 +117,9 @@ public:
     bool hasClusters() const { return _clusters != nullptr; }
     // With clusters: the hierarchy, measured costs and accuracies, and how the impostors were
     // made; the last frame's plan (what was drawn).
-    const render::ClusterModel* clusterModel() const;
+    const hierarchy::ClusterModel* clusterModel() const;
     const ClusterBakeStats* clusterBakeStats() const;
-    const render::ClusterFramePlan* lastClusterPlan() const;
+    const hierarchy::ClusterFramePlan* lastClusterPlan() const;
     int clusterCostResolution() const;        // the cost view's side in pixels (0 without clusters)
     struct ClusterRuntime;  // walkthrough.cpp
     // Blocks until the pager has decoded everything requested (warm-up for tests and benches).

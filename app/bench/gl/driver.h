@@ -82,7 +82,7 @@ struct BenchOptions {
                                                   // is 0), interleaved with full geometry and the
                                                   // walls modes
     std::vector<double> clusterBudgetsMs;         // with clusters: one clusters mode per budget
-                                                  // (render/cluster_budget.h) instead; each > 0
+                                                  // (hierarchy/cluster_budget.h) instead; each > 0
     // Other scene.json files of the same model (same objects and triangles), each with its own
     // cells and walls, benched beside the scene's walls on the scene's eye path; their modes are
     // labelled with their tags ("walls a=10 blend [auto]"), which must differ.

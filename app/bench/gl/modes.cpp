@@ -8,8 +8,8 @@
 #include "display/gl/render_targets.h"
 #include "render/gl/scene_renderer.h"
 #include "render/gl/view_loop.h"
-#include "app/cluster_control.h"
-#include "render/cluster_frame.h"
+#include "walkthrough/cluster_control.h"
+#include "hierarchy/cluster_frame.h"
 #include "render/lod_choice.h"
 #include "walkthrough/frame_planner.h"
 #include "walls/frame_select.h"
@@ -130,16 +130,16 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
     struct Live {
         std::unique_ptr<gl::Walkthrough> walkthrough;
         std::optional<display::FrameTimeBudget> frameBudget;     // levels of detail: triangles
-        std::optional<render::ClusterBudget> clusterBudget;      // clusters: predicted ms
+        std::optional<hierarchy::ClusterBudget> clusterBudget;      // clusters: predicted ms
         std::vector<double> warmTriangles;
     };
     std::vector<Live> live(runs.size());
     auto render = [](Live& l, walkthrough::FrameInput in) {  // as app/gl/run_session.cpp
         if (l.frameBudget) in.triangleBudget = l.frameBudget->budget();
-        if (l.clusterBudget) in.clusterBudgetMs = app::clusterBudgetFor(*l.clusterBudget);
+        if (l.clusterBudget) in.clusterBudgetMs = walkthrough::clusterBudgetFor(*l.clusterBudget);
         walkthrough::FrameResult r = l.walkthrough->renderFrame(in);
         if (l.frameBudget) l.frameBudget->update(r.frameMs, r.geometryTriangles);
-        if (l.clusterBudget) app::controlClusters(*l.clusterBudget, r);
+        if (l.clusterBudget) walkthrough::controlClusters(*l.clusterBudget, r);
         return r;
     };
     const long frames = static_cast<long>(c.path.frames.size());

@@ -100,7 +100,7 @@ struct WalkRun {
     // warm-up pass over the whole path.
     bool paged = false;
     // Maciel & Shirley's (1995) textured clusters (ClusterOptions) instead of walls, held to
-    // the mode's frameBudgetMs by the frame-time controller as `cavewall run --clusters` holds it.
+    // the mode's frameBudgetMs by the frame-time controller as `cavewall run --hierarchy` holds it.
     bool clusters = false;
     bool storeReference = false;            // its compared images become the reference
     // >= 0: the triangle budget is the median triangles per frame of that earlier run's warm-up

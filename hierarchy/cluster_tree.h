@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace cavewall::render {
+namespace cavewall::hierarchy {
 
 // One node of the model hierarchy. Leaves hold one object; clusters hold two or more children
 // and stand for every object below them.
@@ -108,4 +108,4 @@ private:
 ClusterSelection selectClusters(const ClusterTree& tree, const std::vector<NodeFrame>& frame, double budgetMs,
                                 ClusterCoherence* coherence = nullptr);
 
-}  // namespace cavewall::render
+}  // namespace cavewall::hierarchy

@@ -7,10 +7,10 @@
 // Drawn in that order (later on top); clusters from the largest footprint down, so nested ones
 // stay visible.
 
-#include "render/cluster_frame.h"
+#include "hierarchy/cluster_frame.h"
 #include "scenes/scene.h"
 
-namespace cavewall::render {
+namespace cavewall::hierarchy {
 
 inline constexpr std::uint8_t kDiagramObject[3] = {40, 160, 60};
 inline constexpr std::uint8_t kDiagramTextured[3] = {60, 110, 220};
@@ -20,4 +20,4 @@ inline constexpr std::uint8_t kDiagramAverage[3] = {240, 150, 40};
 scenes::Image clusterDiagram(const ClusterModel& model, const ClusterFramePlan& plan, glm::dvec3 eyeWorld,
                              int width = 640);
 
-}  // namespace cavewall::render
+}  // namespace cavewall::hierarchy

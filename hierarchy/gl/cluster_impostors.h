@@ -1,7 +1,7 @@
 #pragma once
 // Maciel & Shirley's (1995) cluster impostors on the GPU: made (or found in the cache),
 // measured for accuracy and drawn. The geometry and viewing regions are
-// render/cluster_impostor.h's; the drawing is the wall pass's (walls/gl/wall_pass.h: a
+// hierarchy/cluster_impostor.h's; the drawing is the wall pass's (walls/gl/wall_pass.h: a
 // premultiplied texture on a world quad, depth-tested against the geometry, blended over it).
 //
 // Textured boxes: each face's texture for each viewing region is rendered by
@@ -9,10 +9,10 @@
 // face as the screen and the region's sampling eye as the eye, drawing only the cluster's own
 // objects (structure included: a bare glTF has no other), alpha 0 where nothing is drawn,
 // premultiplied MIP chains (walls/texture_mips.h). Average boxes: per face the mean colour and
-// coverage of its centre-region texture (render::faceAverage), drawn as an opaque rectangle.
+// coverage of its centre-region texture (hierarchy::faceAverage), drawn as an opaque rectangle.
 //
 // Accuracy (Maciel & Shirley 1995, section 5.2): per accuracy direction
-// (render::accuracyDirections), the cluster drawn at full detail and as each impostor, from 2.5
+// (hierarchy::accuracyDirections), the cluster drawn at full detail and as each impostor, from 2.5
 // box diagonals away through a square screen facing the eye, on black, compared with LDR-FLIP
 // (metrics/flip.h) at the comparison image's own pixels per degree: accuracy = 1 - mean FLIP.
 //
@@ -25,7 +25,7 @@
 // Needs the rendering context current for every call and for destruction.
 
 #include "display/gl/gl_object.h"
-#include "render/cluster_frame.h"
+#include "hierarchy/cluster_frame.h"
 #include "scenes/scene.h"
 #include "walls/gl/wall_pass.h"
 
@@ -59,37 +59,37 @@ public:
     // Makes (or reads from `cache`, the bake cache folder) the impostors of every cluster of
     // `model.tree` and fills model.accuracy and model.hasImpostors. Throws Error for bad
     // settings or an unwritable cache.
-    ClusterImpostors(const scenes::Scene& scene, render::ClusterModel& model, const ClusterBakeSettings& settings,
+    ClusterImpostors(const scenes::Scene& scene, hierarchy::ClusterModel& model, const ClusterBakeSettings& settings,
                      const std::filesystem::path& cache);
     ~ClusterImpostors();
 
     // The wall-pass draws of one box seen from `eyeWorld`: its faces towards the eye, each with
     // the texture of the eye's region (Textured) or its average rectangle (Average).
-    std::vector<WallDraw> draws(const render::ClusterBoxDraw& box, glm::dvec3 eyeWorld) const;
+    std::vector<WallDraw> draws(const hierarchy::ClusterBoxDraw& box, glm::dvec3 eyeWorld) const;
     // Draws `boxes` in order (back to front) for one view (frustum in the cave frame).
-    void draw(const std::vector<render::ClusterBoxDraw>& boxes, glm::dvec3 eyeWorld,
+    void draw(const std::vector<hierarchy::ClusterBoxDraw>& boxes, glm::dvec3 eyeWorld,
               const display::OffAxisFrustum& frustum, const glm::dmat4& caveFromWorld, FrameStats& stats) const;
 
     // One image of node `node`'s impostor `rep` (or its objects at full detail for Full) seen
     // from `eye` through `screen` (world) at `size` pixels, on black: 8-bit RGBA, sRGB colour,
     // alpha 255, rows top to bottom. What the accuracy is measured on.
-    scenes::Image image(int node, render::ClusterRep rep, const display::ScreenQuad& screen, glm::dvec3 eye,
+    scenes::Image image(int node, hierarchy::ClusterRep rep, const display::ScreenQuad& screen, glm::dvec3 eye,
                         glm::ivec2 size);
 
     const ClusterBakeStats& stats() const { return _stats; }
 
 private:
     struct Node {
-        std::array<std::array<GlObject, render::kFaceRegions>, render::kBoxFaces> textures;
-        std::array<GlObject, render::kBoxFaces> averages;   // 1 x 1, opaque
-        std::array<render::FaceAverage, render::kBoxFaces> faces;
+        std::array<std::array<GlObject, hierarchy::kFaceRegions>, hierarchy::kBoxFaces> textures;
+        std::array<GlObject, hierarchy::kBoxFaces> averages;   // 1 x 1, opaque
+        std::array<hierarchy::FaceAverage, hierarchy::kBoxFaces> faces;
         scenes::Bounds box;
         std::vector<int> objects;
     };
-    bool load(const std::filesystem::path& folder, Node& node, render::ClusterAccuracy& accuracy);
-    void make(const std::filesystem::path& folder, const render::ClusterNode& cluster, int index,
-              render::ClusterAccuracy& accuracy);
-    render::ClusterAccuracy measureAccuracy(int index);
+    bool load(const std::filesystem::path& folder, Node& node, hierarchy::ClusterAccuracy& accuracy);
+    void make(const std::filesystem::path& folder, const hierarchy::ClusterNode& cluster, int index,
+              hierarchy::ClusterAccuracy& accuracy);
+    hierarchy::ClusterAccuracy measureAccuracy(int index);
 
     const scenes::Scene& _scene;
     ClusterBakeSettings _settings;

@@ -3,7 +3,7 @@
 // this machine and renderer (their section 5.2), cached per renderer and model.
 //
 // One offscreen view of `resolution`² pixels (the display's own: its largest screen side, so
-// that every draw pays the fill it pays on the display) sees the whole model (render::viewOfBox from
+// that every draw pays the fill it pays on the display) sees the whole model (hierarchy::viewOfBox from
 // above and aside). Each measurement is the fastest of 7 repetitions (a shared machine's other
 // tenants only add time), each timed from glFinish
 // to glFinish on the calling thread:
@@ -13,15 +13,15 @@
 //    need more draws; negative solutions fall back to triangles alone);
 //  - every cluster's textured box, then the root's alone, from the same view (likewise the
 //    average boxes): two equations for a box's fixed part and its fill per whole view covered
-//    (render::viewShare summed over the boxes), render::solveBoxCost.
+//    (hierarchy::viewShare summed over the boxes), hierarchy::solveBoxCost.
 // Cache: <cache>/clusters/costs-<16 hex digits>.json, keyed by the renderer's name, the
 // resolution and the objects' content keys; a missing or unreadable file is measured again.
 //
 // Needs the rendering context current.
 
 #include "render/gl/scene_renderer.h"
-#include "render/cluster_frame.h"
-#include "walls/gl/cluster_impostors.h"
+#include "hierarchy/cluster_frame.h"
+#include "hierarchy/gl/cluster_impostors.h"
 
 #include <filesystem>
 #include <string>
@@ -31,13 +31,13 @@ namespace cavewall::gl {
 inline constexpr int kCostResolution = 256;  // the default when a caller has no display
 
 struct MeasuredCosts {
-    render::ClusterCosts costs;
+    hierarchy::ClusterCosts costs;
     bool cached = false;            // read from the cache, not measured now
     std::filesystem::path file;
 };
 
 MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostors& impostors,
-                                  const render::ClusterModel& model, const scenes::Scene& scene,
+                                  const hierarchy::ClusterModel& model, const scenes::Scene& scene,
                                   const std::string& rendererName, const std::filesystem::path& cache,
                                   int resolution = kCostResolution);
 

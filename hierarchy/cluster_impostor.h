@@ -25,7 +25,7 @@
 #include <array>
 #include <vector>
 
-namespace cavewall::render {
+namespace cavewall::hierarchy {
 
 inline constexpr int kBoxFaces = 6;
 // Regions per face: 0 the centre (the eye within kCentreRegionDeg of the normal), 1..4 the eye
@@ -99,4 +99,4 @@ BoxView viewOfBox(const scenes::Bounds& box, glm::dvec3 direction);
 // Accuracy in [0, 1] from a mean LDR-FLIP error in [0, 1] (metrics/flip.h): 1 - error.
 double accuracyFromFlip(double flipMean);
 
-}  // namespace cavewall::render
+}  // namespace cavewall::hierarchy

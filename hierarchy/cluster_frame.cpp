@@ -1,10 +1,10 @@
-#include "render/cluster_frame.h"
+#include "hierarchy/cluster_frame.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace cavewall::render {
+namespace cavewall::hierarchy {
 
 namespace {
 
@@ -156,4 +156,4 @@ ClusterFramePlan planClusterFrame(const ClusterModel& model, const std::vector<d
     return plan;
 }
 
-}  // namespace cavewall::render
+}  // namespace cavewall::hierarchy

@@ -1,6 +1,6 @@
-// The clusters' frame-time controller (render/cluster_budget.h), driven by a stated model of
+// The clusters' frame-time controller (hierarchy/cluster_budget.h), driven by a stated model of
 // frame times: m = F + k P (times a noise factor), F the fixed part, P the predicted cost drawn.
-#include "render/cluster_budget.h"
+#include "hierarchy/cluster_budget.h"
 
 #include "display/timing.h"
 
@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-namespace cavewall::render {
+namespace cavewall::hierarchy {
 namespace {
 
 struct Walk {
@@ -153,4 +153,4 @@ TEST(ClusterBudget, BadTimesAreIgnored) {
 }
 
 }  // namespace
-}  // namespace cavewall::render
+}  // namespace cavewall::hierarchy

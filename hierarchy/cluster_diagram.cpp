@@ -1,9 +1,9 @@
-#include "render/cluster_diagram.h"
+#include "hierarchy/cluster_diagram.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace cavewall::render {
+namespace cavewall::hierarchy {
 
 namespace {
 
@@ -82,4 +82,4 @@ scenes::Image clusterDiagram(const ClusterModel& model, const ClusterFramePlan& 
     return canvas.image;
 }
 
-}  // namespace cavewall::render
+}  // namespace cavewall::hierarchy

@@ -20,12 +20,12 @@
 // The fades cost frame time: plan.predictedMs grows by what the extra items cost (objects at
 // full detail, boxes at their measured cost), so the frame-time controller sees it.
 
-#include "render/cluster_frame.h"
+#include "hierarchy/cluster_frame.h"
 
 #include <optional>
 #include <vector>
 
-namespace cavewall::render {
+namespace cavewall::hierarchy {
 
 class ClusterFades {
 public:
@@ -77,4 +77,4 @@ private:
     bool _first = true;
 };
 
-}  // namespace cavewall::render
+}  // namespace cavewall::hierarchy

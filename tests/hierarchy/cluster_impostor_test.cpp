@@ -1,8 +1,8 @@
-// Maciel & Shirley's (1995) cluster impostors (render/cluster_impostor.h) and one frame's plan
-// (render/cluster_frame.h), without GL.
-#include "render/cluster_diagram.h"
-#include "render/cluster_frame.h"
-#include "render/cluster_impostor.h"
+// Maciel & Shirley's (1995) cluster impostors (hierarchy/cluster_impostor.h) and one frame's plan
+// (hierarchy/cluster_frame.h), without GL.
+#include "hierarchy/cluster_diagram.h"
+#include "hierarchy/cluster_frame.h"
+#include "hierarchy/cluster_impostor.h"
 #include "tests/render/render_test_scenes.h"
 
 #include "display/display.h"
@@ -14,10 +14,10 @@
 #include <algorithm>
 #include <cmath>
 
-namespace cavewall::render {
+namespace cavewall::hierarchy {
 namespace {
 
-using testing::box;
+using render::testing::box;
 
 TEST(ClusterImpostor, FacesAreSeenFromOutsideAndCoverTheBox) {
     const scenes::Bounds b = box({-1, 0, -2}, {3, 1, 2});
@@ -277,4 +277,4 @@ TEST(ClusterDiagram, FillsWhatTheFrameDrewByKind) {
 }
 
 }  // namespace
-}  // namespace cavewall::render
+}  // namespace cavewall::hierarchy

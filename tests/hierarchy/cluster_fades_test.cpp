@@ -1,15 +1,15 @@
-// Cross-faded transitions between cluster representations (render/cluster_fades.h), without GL:
+// Cross-faded transitions between cluster representations (hierarchy/cluster_fades.h), without GL:
 // plans are written by hand, frame after frame, as the selection would return them.
-#include "render/cluster_fades.h"
+#include "hierarchy/cluster_fades.h"
 #include "tests/render/render_test_scenes.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-namespace cavewall::render {
+namespace cavewall::hierarchy {
 namespace {
 
-using testing::box;
+using render::testing::box;
 
 // Four objects 1 m wide along x at x = 0, 2, 4, 6; clusters 4 = {0, 1}, 5 = {2, 3}; root 6.
 // Objects cost 0.01 + triangles * 1e-4 ms (100 triangles: 0.02 ms); boxes 0.05 / 0.04 ms.
@@ -181,4 +181,4 @@ TEST(ClusterFades, OneFrameOrLessLeavesThePlanAsSelected) {
 }
 
 }  // namespace
-}  // namespace cavewall::render
+}  // namespace cavewall::hierarchy

@@ -1,4 +1,4 @@
-#include "render/cluster_budget.h"
+#include "hierarchy/cluster_budget.h"
 
 #include "display/timing.h"
 
@@ -6,7 +6,7 @@
 #include <cassert>
 #include <cmath>
 
-namespace cavewall::render {
+namespace cavewall::hierarchy {
 
 ClusterBudget::ClusterBudget(double targetMs, double quantile, int window, double gain)
     : _target(targetMs), _quantile(quantile), _gain(gain), _window(window) {
@@ -38,4 +38,4 @@ void ClusterBudget::update(double frameMs, double predictedMs, double selectedMs
     _fadeMs = std::isfinite(selectedMs) ? std::max(0.0, predictedMs - selectedMs) : 0.0;
 }
 
-}  // namespace cavewall::render
+}  // namespace cavewall::hierarchy

@@ -1,4 +1,4 @@
-#include "walls/gl/cluster_impostors.h"
+#include "hierarchy/gl/cluster_impostors.h"
 
 #include "config/error.h"
 #include "render/vertex_lighting.h"
@@ -23,8 +23,8 @@ namespace cavewall::gl {
 
 namespace {
 
-using render::kBoxFaces;
-using render::kFaceRegions;
+using hierarchy::kBoxFaces;
+using hierarchy::kFaceRegions;
 
 std::string fileName(int face, int region) {
     return "f" + std::to_string(face) + "r" + std::to_string(region) + ".tx";
@@ -41,13 +41,13 @@ GlObject colourTexture(glm::vec3 linear) {
     return upload({texel});
 }
 
-std::uint64_t clusterKey(const render::ClusterNode& cluster, const std::vector<std::uint64_t>& objects,
+std::uint64_t clusterKey(const hierarchy::ClusterNode& cluster, const std::vector<std::uint64_t>& objects,
                          const ClusterBakeSettings& s) {
     walls::KeyHasher h;
     // Bump the text when the impostors, their files or the accuracy measure change.
     h.text("cavewall cluster impostor v1").integer(s.resolution).integer(s.accuracyResolution).number(s.ambient);
     h.text("vertex lighting v1").number(render::kVertexLightingTolerance);  // baker.cpp, settingsKey
-    h.integer(render::kFaceRegions).number(render::kRegionTiltDeg).number(render::kSamplingDistance);
+    h.integer(hierarchy::kFaceRegions).number(hierarchy::kRegionTiltDeg).number(hierarchy::kSamplingDistance);
     for (int o : cluster.objects) h.integer(static_cast<std::int64_t>(objects[o]));
     return h.value();
 }
@@ -69,7 +69,7 @@ void validateClusterBakeSettings(const ClusterBakeSettings& s) {
     if (!(s.ambient >= 0.0f && s.ambient <= 1.0f)) fail("ambient", "[0, 1]", std::to_string(s.ambient));
 }
 
-ClusterImpostors::ClusterImpostors(const scenes::Scene& scene, render::ClusterModel& model,
+ClusterImpostors::ClusterImpostors(const scenes::Scene& scene, hierarchy::ClusterModel& model,
                                    const ClusterBakeSettings& settings, const std::filesystem::path& cache)
     : _scene(scene), _settings(settings), _sampler(createSampler()) {
     validateClusterBakeSettings(settings);
@@ -83,10 +83,10 @@ ClusterImpostors::ClusterImpostors(const scenes::Scene& scene, render::ClusterMo
     model.accuracy.assign(count, {});
     model.hasImpostors.assign(count, false);
     for (std::size_t n = 0; n < count; ++n) {
-        const render::ClusterNode& cluster = model.tree.nodes[n];
+        const hierarchy::ClusterNode& cluster = model.tree.nodes[n];
         if (cluster.leaf() || cluster.bounds.empty()) continue;
         Node& node = _nodes[static_cast<int>(n)];
-        node.box = render::impostorBox(cluster.bounds);
+        node.box = hierarchy::impostorBox(cluster.bounds);
         node.objects = cluster.objects;
         const std::filesystem::path folder = cache / "clusters" / walls::hex64(clusterKey(cluster, objectKeys, settings));
         ++_stats.clusters;
@@ -103,7 +103,7 @@ ClusterImpostors::ClusterImpostors(const scenes::Scene& scene, render::ClusterMo
 
 ClusterImpostors::~ClusterImpostors() = default;
 
-bool ClusterImpostors::load(const std::filesystem::path& folder, Node& node, render::ClusterAccuracy& accuracy) {
+bool ClusterImpostors::load(const std::filesystem::path& folder, Node& node, hierarchy::ClusterAccuracy& accuracy) {
     try {
         std::ifstream in(folder / "cluster.json");
         if (!in) return false;
@@ -113,7 +113,7 @@ bool ClusterImpostors::load(const std::filesystem::path& folder, Node& node, ren
             const auto& a = j.at("averages").at(f);
             node.faces[f] = {{a.at(0).get<float>(), a.at(1).get<float>(), a.at(2).get<float>()}, a.at(3).get<float>()};
         }
-        for (int d = 0; d < render::kAccuracyDirections; ++d) {
+        for (int d = 0; d < hierarchy::kAccuracyDirections; ++d) {
             accuracy.textured[d] = j.at("textured").at(d).get<double>();
             accuracy.average[d] = j.at("average").at(d).get<double>();
         }
@@ -127,8 +127,8 @@ bool ClusterImpostors::load(const std::filesystem::path& folder, Node& node, ren
     }
 }
 
-void ClusterImpostors::make(const std::filesystem::path& folder, const render::ClusterNode& cluster, int index,
-                            render::ClusterAccuracy& accuracy) {
+void ClusterImpostors::make(const std::filesystem::path& folder, const hierarchy::ClusterNode& cluster, int index,
+                            hierarchy::ClusterAccuracy& accuracy) {
     Node& node = _nodes.at(index);
     if (!_renderer) _renderer = std::make_unique<WallTextureRenderer>(_scene, _settings.ambient);
     std::error_code ec;
@@ -137,9 +137,9 @@ void ClusterImpostors::make(const std::filesystem::path& folder, const render::C
     for (int f = 0; f < kBoxFaces; ++f)
         for (int r = 0; r < kFaceRegions; ++r) {
             const scenes::Image straight =
-                _renderer->render(render::boxFace(node.box, f), render::samplingEye(node.box, f, r),
-                                  render::faceResolution(node.box, f, _settings.resolution), cluster.objects);
-            if (r == 0) node.faces[f] = render::faceAverage(straight);
+                _renderer->render(hierarchy::boxFace(node.box, f), hierarchy::samplingEye(node.box, f, r),
+                                  hierarchy::faceResolution(node.box, f, _settings.resolution), cluster.objects);
+            if (r == 0) node.faces[f] = hierarchy::faceAverage(straight);
             std::vector<scenes::Image> levels = walls::premultipliedMipChain(straight);
             walls::writeMipFile(folder / fileName(f, r), levels, {16, "zip"});
             node.textures[f][r] = upload(std::move(levels));
@@ -148,7 +148,7 @@ void ClusterImpostors::make(const std::filesystem::path& folder, const render::C
     accuracy = measureAccuracy(index);
     nlohmann::json j;
     j["version"] = 1;
-    for (const render::FaceAverage& a : node.faces)
+    for (const hierarchy::FaceAverage& a : node.faces)
         j["averages"].push_back({a.linearColour.r, a.linearColour.g, a.linearColour.b, a.coverage});
     j["textured"] = accuracy.textured;
     j["average"] = accuracy.average;
@@ -160,11 +160,11 @@ void ClusterImpostors::make(const std::filesystem::path& folder, const render::C
     });
 }
 
-scenes::Image ClusterImpostors::image(int index, render::ClusterRep rep, const display::ScreenQuad& screen,
+scenes::Image ClusterImpostors::image(int index, hierarchy::ClusterRep rep, const display::ScreenQuad& screen,
                                       glm::dvec3 eye, glm::ivec2 size) {
     if (!_renderer) _renderer = std::make_unique<WallTextureRenderer>(_scene, _settings.ambient);
     const Node& node = _nodes.at(index);
-    if (rep == render::ClusterRep::Full) return opaque(_renderer->render(screen, eye, size, node.objects));
+    if (rep == hierarchy::ClusterRep::Full) return opaque(_renderer->render(screen, eye, size, node.objects));
     if (!_target || _target->size() != size) _target = std::make_unique<OffscreenTarget>(size);
     const display::OffAxisFrustum frustum =
         display::offAxisFrustum(screen, eye, {0.05, std::numeric_limits<double>::infinity()});
@@ -176,47 +176,48 @@ scenes::Image ClusterImpostors::image(int index, render::ClusterRep rep, const d
     return opaque(_target->read("cluster impostor"));
 }
 
-render::ClusterAccuracy ClusterImpostors::measureAccuracy(int index) {
+hierarchy::ClusterAccuracy ClusterImpostors::measureAccuracy(int index) {
     const glm::ivec2 size(_settings.accuracyResolution);
     const Node& node = _nodes.at(index);
-    render::ClusterAccuracy accuracy;
-    const auto directions = render::accuracyDirections();
+    hierarchy::ClusterAccuracy accuracy;
+    const auto directions = hierarchy::accuracyDirections();
     // The screen spans 1.5 diagonals at 2.5 diagonals from the eye: its pixels per degree at the centre.
     const double ppd = std::max(1.0, size.x / (2.0 * std::atan(0.75 / 2.5) * 180.0 / 3.14159265358979323846));
-    for (int d = 0; d < render::kAccuracyDirections; ++d) {
-        const auto [screen, eye] = render::viewOfBox(node.box, directions[d]);
-        const scenes::Image full = image(index, render::ClusterRep::Full, screen, eye, size);
-        for (render::ClusterRep rep : {render::ClusterRep::Textured, render::ClusterRep::Average}) {
-            const double value = render::accuracyFromFlip(metrics::flip(image(index, rep, screen, eye, size), full, {ppd}).mean);
-            (rep == render::ClusterRep::Textured ? accuracy.textured : accuracy.average)[d] = value;
+    for (int d = 0; d < hierarchy::kAccuracyDirections; ++d) {
+        const auto [screen, eye] = hierarchy::viewOfBox(node.box, directions[d]);
+        const scenes::Image full = image(index, hierarchy::ClusterRep::Full, screen, eye, size);
+        for (hierarchy::ClusterRep rep : {hierarchy::ClusterRep::Textured, hierarchy::ClusterRep::Average}) {
+            const double value =
+                hierarchy::accuracyFromFlip(metrics::flip(image(index, rep, screen, eye, size), full, {ppd}).mean);
+            (rep == hierarchy::ClusterRep::Textured ? accuracy.textured : accuracy.average)[d] = value;
         }
     }
     return accuracy;
 }
 
-std::vector<WallDraw> ClusterImpostors::draws(const render::ClusterBoxDraw& box, glm::dvec3 eyeWorld) const {
+std::vector<WallDraw> ClusterImpostors::draws(const hierarchy::ClusterBoxDraw& box, glm::dvec3 eyeWorld) const {
     std::vector<WallDraw> out;
     const auto it = _nodes.find(box.node);
     if (it == _nodes.end()) return out;
     const Node& node = it->second;
     for (int f = 0; f < kBoxFaces; ++f) {
-        if (!render::faceTowards(node.box, f, eyeWorld)) continue;
-        if (box.rep == render::ClusterRep::Textured) {
-            const int r = render::viewRegion(node.box, f, eyeWorld);
-            out.push_back({render::boxFace(node.box, f), {node.textures[f][r].id()}, {box.weight}, 1});
+        if (!hierarchy::faceTowards(node.box, f, eyeWorld)) continue;
+        if (box.rep == hierarchy::ClusterRep::Textured) {
+            const int r = hierarchy::viewRegion(node.box, f, eyeWorld);
+            out.push_back({hierarchy::boxFace(node.box, f), {node.textures[f][r].id()}, {box.weight}, 1});
         } else if (node.faces[f].coverage > 0.0f) {
-            out.push_back({render::averageFaceQuad(render::boxFace(node.box, f), node.faces[f].coverage),
+            out.push_back({hierarchy::averageFaceQuad(hierarchy::boxFace(node.box, f), node.faces[f].coverage),
                            {node.averages[f].id()}, {box.weight}, 1});
         }
     }
     return out;
 }
 
-void ClusterImpostors::draw(const std::vector<render::ClusterBoxDraw>& boxes, glm::dvec3 eyeWorld,
+void ClusterImpostors::draw(const std::vector<hierarchy::ClusterBoxDraw>& boxes, glm::dvec3 eyeWorld,
                             const display::OffAxisFrustum& frustum, const glm::dmat4& caveFromWorld,
                             FrameStats& stats) const {
     std::vector<WallDraw> all;
-    for (const render::ClusterBoxDraw& b : boxes) {
+    for (const hierarchy::ClusterBoxDraw& b : boxes) {
         std::vector<WallDraw> d = draws(b, eyeWorld);
         all.insert(all.end(), d.begin(), d.end());
     }

@@ -10,20 +10,20 @@
 // Costs in milliseconds.
 
 #include "display/display.h"
-#include "render/cluster_impostor.h"
-#include "render/cluster_tree.h"
+#include "hierarchy/cluster_impostor.h"
+#include "hierarchy/cluster_tree.h"
 
 #include <array>
 #include <cstddef>
 #include <vector>
 
-namespace cavewall::render {
+namespace cavewall::hierarchy {
 
 // Representation ids (Representation::id) of a cluster; a leaf has only Full.
 enum class ClusterRep { Full = 0, Textured = 1, Average = 2 };
 
 // Drawing costs measured on this machine and renderer at the display's resolution
-// (walls/gl/cluster_costs.h). A box costs its fixed part plus its fill: the views' shares it
+// (hierarchy/gl/cluster_costs.h). A box costs its fixed part plus its fill: the views' shares it
 // covers (viewShare, summed over the frame's views) times the cost of filling one whole view.
 struct ClusterCosts {
     double msPerTriangle = 1e-5;     // full-detail geometry
@@ -113,4 +113,4 @@ ClusterFramePlan planClusterFrame(const ClusterModel& model, const std::vector<d
                                   const glm::dmat4& worldFromCave, glm::dvec3 eyeWorld, double budgetMs,
                                   ClusterCoherence* coherence);
 
-}  // namespace cavewall::render
+}  // namespace cavewall::hierarchy

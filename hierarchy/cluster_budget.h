@@ -5,7 +5,7 @@
 // frame costs.
 //
 // Model: a frame takes m = P + e ms, P the predicted cost of what it drew (the selection and
-// its cross-fades, costed at the display's own resolution: walls/gl/cluster_costs.h) and e the
+// its cross-fades, costed at the display's own resolution: hierarchy/gl/cluster_costs.h) and e the
 // rest: the fixed part (clearing, structure, every view's set-up), the prediction's error and
 // the machine's noise. The controller keeps e of the last `window` frames. The budget that
 // makes the next frame take at most the target T in a share `quantile` of frames like those is
@@ -27,7 +27,7 @@
 
 #include <vector>
 
-namespace cavewall::render {
+namespace cavewall::hierarchy {
 
 class ClusterBudget {
 public:
@@ -62,4 +62,4 @@ private:
     double _budget = 0.0, _fadeMs = 0.0;
 };
 
-}  // namespace cavewall::render
+}  // namespace cavewall::hierarchy

@@ -1,4 +1,4 @@
-#include "render/cluster_tree.h"
+#include "hierarchy/cluster_tree.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <map>
 #include <queue>
 
-namespace cavewall::render {
+namespace cavewall::hierarchy {
 
 namespace {
 
@@ -192,4 +192,4 @@ ClusterSelection selectClusters(const ClusterTree& tree, const std::vector<NodeF
     return selection;
 }
 
-}  // namespace cavewall::render
+}  // namespace cavewall::hierarchy

@@ -1,6 +1,6 @@
 // Maciel & Shirley's (1995) model hierarchy and its two-pass selection under a frame budget
-// (render/cluster_tree.h).
-#include "render/cluster_tree.h"
+// (hierarchy/cluster_tree.h).
+#include "hierarchy/cluster_tree.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <functional>
 #include <random>
 
-namespace cavewall::render {
+namespace cavewall::hierarchy {
 namespace {
 
 using ::testing::ElementsAre;
@@ -210,7 +210,7 @@ TEST(ClusterSelect, NeverOverBudgetWhenTheRootFits) {
 }
 
 TEST(ClusterSelect, NeverOverBudgetOrTheCheapestSelectionWhateverTheBudgetAndCoherence) {
-    // The frame-time controller (render/cluster_budget.h) relies on this: a frame's selection
+    // The frame-time controller (hierarchy/cluster_budget.h) relies on this: a frame's selection
     // costs at most its budget, or, when the budget is below that, at most the selection at a
     // budget of 0 (the floor's part), also while the coherence counter holds clusters back over
     // a sequence of frames.
@@ -278,4 +278,4 @@ TEST(ClusterSelect, AClusterThatShowsNothingIsRefinedWhenItsChildrenCostLessWhat
 }
 
 }  // namespace
-}  // namespace cavewall::render
+}  // namespace cavewall::hierarchy

@@ -1,4 +1,4 @@
-#include "walls/gl/cluster_costs.h"
+#include "hierarchy/gl/cluster_costs.h"
 
 #include "config/error.h"
 #include "display/timing.h"
@@ -28,7 +28,7 @@ constexpr int kMaxRepeats = 64;
 constexpr double kMinMsPerTriangle = 1e-7;
 
 // The fastest of kRepetitions draws: other tenants of a shared machine only ever add time, and
-// the controller (render/cluster_budget.h) measures what they add frame by frame.
+// the controller (hierarchy/cluster_budget.h) measures what they add frame by frame.
 double fastestMs(const std::function<void()>& draw) {
     double fastest = std::numeric_limits<double>::infinity();
     for (int i = 0; i < kRepetitions; ++i) {
@@ -49,7 +49,7 @@ std::filesystem::path costFile(const scenes::Scene& scene, const std::string& re
     return cache / "clusters" / ("costs-" + walls::hex64(h.value()) + ".json");
 }
 
-bool readCosts(const std::filesystem::path& file, render::ClusterCosts& costs) {
+bool readCosts(const std::filesystem::path& file, hierarchy::ClusterCosts& costs) {
     try {
         std::ifstream in(file);
         if (!in) return false;
@@ -66,7 +66,7 @@ bool readCosts(const std::filesystem::path& file, render::ClusterCosts& costs) {
 }  // namespace
 
 MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostors& impostors,
-                                  const render::ClusterModel& model, const scenes::Scene& scene,
+                                  const hierarchy::ClusterModel& model, const scenes::Scene& scene,
                                   const std::string& rendererName, const std::filesystem::path& cache,
                                   int resolution) {
     if (resolution < 1 || resolution > 16384)
@@ -77,8 +77,9 @@ MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostor
         result.cached = true;
         return result;
     }
-    const scenes::Bounds box = render::impostorBox(scene.bounds().empty() ? scenes::Bounds{{0, 0, 0}, {1, 1, 1}} : scene.bounds());
-    const render::BoxView view = render::viewOfBox(box, glm::normalize(glm::dvec3(0.4, 0.6, 0.7)));
+    const scenes::Bounds box =
+        hierarchy::impostorBox(scene.bounds().empty() ? scenes::Bounds{{0, 0, 0}, {1, 1, 1}} : scene.bounds());
+    const hierarchy::BoxView view = hierarchy::viewOfBox(box, glm::normalize(glm::dvec3(0.4, 0.6, 0.7)));
     const display::OffAxisFrustum frustum =
         display::offAxisFrustum(view.screen, view.eye, {0.05, std::numeric_limits<double>::infinity()});
     OffscreenTarget target{glm::ivec2(resolution)};
@@ -131,15 +132,15 @@ MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostor
     for (std::size_t n = 0; n < model.tree.nodes.size(); ++n)
         if (n < model.hasImpostors.size() && model.hasImpostors[n]) {
             all.push_back(static_cast<int>(n));
-            shares += render::viewShare(render::impostorBox(model.tree.nodes[n].bounds), clipFromWorld);
+            shares += hierarchy::viewShare(hierarchy::impostorBox(model.tree.nodes[n].bounds), clipFromWorld);
         }
     const int root = model.tree.root;
     const bool rootHasBox = root >= 0 && static_cast<std::size_t>(root) < model.hasImpostors.size() &&
                             model.hasImpostors[static_cast<std::size_t>(root)];
     const double rootShare =
-        rootHasBox ? render::viewShare(render::impostorBox(model.tree.nodes[root].bounds), clipFromWorld) : 0.0;
-    auto drawBoxes = [&](const std::vector<int>& nodes, render::ClusterRep rep) {
-        std::vector<render::ClusterBoxDraw> boxes;
+        rootHasBox ? hierarchy::viewShare(hierarchy::impostorBox(model.tree.nodes[root].bounds), clipFromWorld) : 0.0;
+    auto drawBoxes = [&](const std::vector<int>& nodes, hierarchy::ClusterRep rep) {
+        std::vector<hierarchy::ClusterBoxDraw> boxes;
         for (int n : nodes) boxes.push_back({n, rep});
         return std::max(0.0, fastestMs([&] {
                                  const std::vector<int> none;
@@ -150,11 +151,14 @@ MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostor
                                  impostors.draw(boxes, view.eye, frustum, glm::dmat4(1.0), stats);
                              }) - empty);
     };
-    for (render::ClusterRep rep : {render::ClusterRep::Textured, render::ClusterRep::Average}) {
+    for (hierarchy::ClusterRep rep : {hierarchy::ClusterRep::Textured, hierarchy::ClusterRep::Average}) {
         const double ta = all.empty() ? 0.0 : drawBoxes(all, rep), tb = rootHasBox ? drawBoxes({root}, rep) : 0.0;
-        const render::BoxCost cost = render::solveBoxCost(static_cast<double>(all.size()), shares, ta, rootShare, tb);
-        (rep == render::ClusterRep::Textured ? result.costs.texturedBoxMs : result.costs.averageBoxMs) = cost.fixedMs;
-        (rep == render::ClusterRep::Textured ? result.costs.texturedViewMs : result.costs.averageViewMs) = cost.viewMs;
+        const hierarchy::BoxCost cost =
+            hierarchy::solveBoxCost(static_cast<double>(all.size()), shares, ta, rootShare, tb);
+        (rep == hierarchy::ClusterRep::Textured ? result.costs.texturedBoxMs : result.costs.averageBoxMs) =
+            cost.fixedMs;
+        (rep == hierarchy::ClusterRep::Textured ? result.costs.texturedViewMs : result.costs.averageViewMs) =
+            cost.viewMs;
     }
     nlohmann::json j{{"renderer", rendererName}, {"resolution", resolution}, {"msPerTriangle", b},
                      {"msPerObject", c}, {"texturedBoxMs", result.costs.texturedBoxMs},

@@ -1,8 +1,8 @@
-#include "render/cluster_fades.h"
+#include "hierarchy/cluster_fades.h"
 
 #include <algorithm>
 
-namespace cavewall::render {
+namespace cavewall::hierarchy {
 
 ClusterFades::ClusterFades(int frames) : _frames(frames) {}
 
@@ -212,4 +212,4 @@ void ClusterFades::apply(const ClusterModel& model, glm::dvec3 eyeWorld, Cluster
     _first = false;
 }
 
-}  // namespace cavewall::render
+}  // namespace cavewall::hierarchy

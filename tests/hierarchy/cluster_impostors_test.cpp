@@ -1,14 +1,14 @@
-// Maciel & Shirley's (1995) cluster impostors on llvmpipe (walls/gl/cluster_impostors.h,
+// Maciel & Shirley's (1995) cluster impostors on llvmpipe (hierarchy/gl/cluster_impostors.h,
 // cluster_costs.h): a textured box seen from one of its sampling eyes shows what full detail
 // shows; the average box is less accurate than the textured one; impostors and costs come back
 // from the cache.
 #include "render/gl/scene_renderer.h"
-#include "render/cluster_tree.h"
+#include "hierarchy/cluster_tree.h"
 #include "metrics/flip.h"
 #include "tests/gl/gl_test_support.h"
 #include "tests/wallsgl/bake_test_scene.h"
-#include "walls/gl/cluster_costs.h"
-#include "walls/gl/cluster_impostors.h"
+#include "hierarchy/gl/cluster_costs.h"
+#include "hierarchy/gl/cluster_impostors.h"
 #include "config/error.h"
 
 #include <gmock/gmock.h>
@@ -29,14 +29,14 @@ scenes::Scene threeBoxes() {
     return s;
 }
 
-render::ClusterModel modelOf(const scenes::Scene& s) {
-    render::ClusterModel m;
+hierarchy::ClusterModel modelOf(const scenes::Scene& s) {
+    hierarchy::ClusterModel m;
     std::vector<scenes::Bounds> bounds;
     for (const scenes::Object& o : s.objects) {
         bounds.push_back(o.worldBounds);
         m.objectTriangles.push_back(s.meshes[o.mesh].triangleCount());
     }
-    m.tree = render::buildClusterTree(bounds, {1, 1, 1});
+    m.tree = hierarchy::buildClusterTree(bounds, {1, 1, 1});
     return m;
 }
 
@@ -46,30 +46,30 @@ TEST_F(ClusterImpostorsTest, ATexturedBoxShowsFullDetailAtItsSamplingEyeAndIsCac
     const scenes::Scene scene = threeBoxes();
     const std::filesystem::path cache = testOutputFolder("cluster-impostors") / "cache";
     std::filesystem::remove_all(cache);
-    render::ClusterModel model = modelOf(scene);
+    hierarchy::ClusterModel model = modelOf(scene);
     ASSERT_EQ(model.tree.root, 3);  // three leaves, then the cluster
     // Face textures of 64 texels along the longer side, as many as the 64-pixel image's face.
     const gl::ClusterBakeSettings settings{64, 64, 0.35f};
     gl::ClusterImpostors impostors(scene, model, settings, cache);
     EXPECT_EQ(impostors.stats().made, 1);
     ASSERT_TRUE(model.hasImpostors[3]);
-    const scenes::Bounds box = render::impostorBox(model.tree.nodes[3].bounds);
+    const scenes::Bounds box = hierarchy::impostorBox(model.tree.nodes[3].bounds);
     // From face +x's centre-region eye only that face is towards the eye, and its texture is
     // exactly what the eye sees through it: the impostor differs from full detail only by
     // resampling the texture (texel centres on pixel centres along the longer side).
-    const glm::dvec3 eye = render::samplingEye(box, 0, 0);
-    const display::ScreenQuad screen = render::boxFace(box, 0);
-    const scenes::Image full = impostors.image(3, render::ClusterRep::Full, screen, eye, {64, 64});
-    const scenes::Image textured = impostors.image(3, render::ClusterRep::Textured, screen, eye, {64, 64});
-    const scenes::Image average = impostors.image(3, render::ClusterRep::Average, screen, eye, {64, 64});
+    const glm::dvec3 eye = hierarchy::samplingEye(box, 0, 0);
+    const display::ScreenQuad screen = hierarchy::boxFace(box, 0);
+    const scenes::Image full = impostors.image(3, hierarchy::ClusterRep::Full, screen, eye, {64, 64});
+    const scenes::Image textured = impostors.image(3, hierarchy::ClusterRep::Textured, screen, eye, {64, 64});
+    const scenes::Image average = impostors.image(3, hierarchy::ClusterRep::Average, screen, eye, {64, 64});
     const double texturedError = metrics::flip(textured, full, {10.0}).mean;
     const double averageError = metrics::flip(average, full, {10.0}).mean;
     EXPECT_LT(texturedError, 0.05);
     EXPECT_LT(texturedError, averageError);
     // Measured accuracy from the six directions: in [0, 1], textured above average on the whole.
-    const render::ClusterAccuracy a = model.accuracy[3];
+    const hierarchy::ClusterAccuracy a = model.accuracy[3];
     double sumTextured = 0.0, sumAverage = 0.0;
-    for (int d = 0; d < render::kAccuracyDirections; ++d) {
+    for (int d = 0; d < hierarchy::kAccuracyDirections; ++d) {
         EXPECT_GE(a.textured[d], 0.0);
         EXPECT_LE(a.textured[d], 1.0);
         sumTextured += a.textured[d];
@@ -77,7 +77,7 @@ TEST_F(ClusterImpostorsTest, ATexturedBoxShowsFullDetailAtItsSamplingEyeAndIsCac
     }
     EXPECT_GT(sumTextured, sumAverage);
     // Again with the same cache: read, not made, the same accuracies.
-    render::ClusterModel again = modelOf(scene);
+    hierarchy::ClusterModel again = modelOf(scene);
     gl::ClusterImpostors cached(scene, again, settings, cache);
     EXPECT_EQ(cached.stats().made, 0);
     EXPECT_EQ(cached.stats().reused, 1);
@@ -86,7 +86,7 @@ TEST_F(ClusterImpostorsTest, ATexturedBoxShowsFullDetailAtItsSamplingEyeAndIsCac
     scenes::Scene moved = threeBoxes();
     moved.objects[0].worldFromModel[3].x += 0.25;
     moved.updateObjectBounds();
-    render::ClusterModel third = modelOf(moved);
+    hierarchy::ClusterModel third = modelOf(moved);
     gl::ClusterImpostors remade(moved, third, settings, cache);
     EXPECT_EQ(remade.stats().made, 1);
 }
@@ -95,7 +95,7 @@ TEST_F(ClusterImpostorsTest, CostsAreMeasuredPositiveAndCachedPerRendererAndReso
     const scenes::Scene scene = threeBoxes();
     const std::filesystem::path cache = testOutputFolder("cluster-costs") / "cache";
     std::filesystem::remove_all(cache);
-    render::ClusterModel model = modelOf(scene);
+    hierarchy::ClusterModel model = modelOf(scene);
     gl::ClusterImpostors impostors(scene, model, {16, 32, 0.35f}, cache);
     gl::SceneRenderer renderer(scene);
     const gl::MeasuredCosts first = gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache);

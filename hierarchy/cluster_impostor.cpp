@@ -1,10 +1,10 @@
-#include "render/cluster_impostor.h"
+#include "hierarchy/cluster_impostor.h"
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 
-namespace cavewall::render {
+namespace cavewall::hierarchy {
 
 namespace {
 
@@ -144,4 +144,4 @@ BoxView viewOfBox(const scenes::Bounds& box, glm::dvec3 direction) {
 
 double accuracyFromFlip(double flipMean) { return std::clamp(1.0 - flipMean, 0.0, 1.0); }
 
-}  // namespace cavewall::render
+}  // namespace cavewall::hierarchy
