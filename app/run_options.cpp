@@ -20,8 +20,25 @@ void useRoute(scenes::SceneDescription& description, Route route, const std::str
     description.walkPath = description.wallPath;
 }
 
+std::string_view toString(Ending ending) {
+    switch (ending) {
+    case Ending::Frames: return "every frame drawn";
+    case Ending::WindowClosed: return "a window was closed";
+    case Ending::Quit: return "quit";
+    case Ending::Interrupted: return "interrupted";
+    }
+    return "?";
+}
+
 void validate(const RunOptions& o) {
-    if (o.frames < 1) throw Error("--frames: expected at least 1, got " + std::to_string(o.frames));
+    if (o.frames < 0) throw Error("--frames: expected at least 0 (0: until stopped), got " + std::to_string(o.frames));
+    if (o.frames == 0 && o.cluster)
+        throw Error("--frames 0 and --cluster: expected a frame count with --cluster (every rank draws the same "
+                    "frames), got 0");
+    if (o.out.empty() && o.saveEvery > 0)
+        throw Error("--save-frames: needs --out DIR (the folder the frames go to)");
+    if (o.saveWindow && (o.saveEvery == 0 || o.window != WindowMode::Window))
+        throw Error("--save-window: needs --save-frames and windows (it saves what the windows show with the frames)");
     if (o.triangleBudget > 0 && !(o.lodPixels > 0.0))
         throw Error("--triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod " +
                     config::formatNumber(o.lodPixels));

@@ -47,6 +47,22 @@ inline constexpr std::array<std::pair<std::string_view, Navigation>, 4> kNavigat
 inline constexpr std::array<std::pair<std::string_view, Route>, 2> kRouteNames{{
     {"walk", Route::Walk}, {"wall", Route::Wall}}};
 
+// --start: where the viewer starts in a scene without a walk path (a path's start always wins).
+// Origin: the CAVE at the world's origin. Inside: standing on a floor inside the model, else
+// as ViewAll (app/start_pose.h). ViewAll: moved so that the whole model is in view.
+enum class Start { Origin, Inside, ViewAll };
+inline constexpr std::array<std::pair<std::string_view, Start>, 3> kStartNames{{
+    {"inside", Start::Inside}, {"view-all", Start::ViewAll}, {"origin", Start::Origin}}};
+
+// How a session ended (RunSummary::ending).
+enum class Ending {
+    Frames,        // drew every frame asked for
+    WindowClosed,  // a window was closed
+    Quit,          // the quit keys (input/session_keys.h)
+    Interrupted,   // SIGINT or SIGTERM (app/interrupt.h)
+};
+std::string_view toString(Ending ending);
+
 // Makes `route` the path the guided navigator follows (SceneDescription::walkPath): Wall
 // replaces walkPath by wallPath. Throws cavewall::Error, naming the scene, when the scene has no
 // wallPath of at least 2 points.
@@ -59,10 +75,11 @@ struct RunOptions {
     std::filesystem::path scene;                // scene.json (or its folder) or a glTF/GLB file
     config::DisplayConfig display;              // validated
     std::string tracker = "sim:walk";           // input::makeTracker spec, or "desktop"
-    long frames = 120;                          // >= 1
+    long frames = 120;                          // >= 0; 0: until a window closes, quit keys or Ctrl+C
     Navigation nav = Navigation::Auto;
     double guidePace = 1.0;                     // m/s along the walk path (guided)
     Route route = Route::Walk;                  // which of the scene's paths (applied by the session)
+    Start start = Start::Origin;                // without a walk path: where the viewer starts
     WindowMode window = WindowMode::Headless;
     Transition transition = Transition::Blend;
     bool walls = true;                          // false: --no-walls, full (culled) geometry
@@ -74,6 +91,8 @@ struct RunOptions {
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
     std::optional<std::filesystem::path> cache; // bake cache folder (default: the baker's)
     long saveEvery = 0;                         // save frames: 0 none, K every K-th frame
+    bool saveWindow = false;                    // with saveEvery: also what each window shows,
+                                                // overlay included (window-<screen>.png)
     bool keepSavedImages = false;               // also return the saved frames' images
                                                 // (RunSummary::savedFrames; the demo compares them)
     std::optional<std::filesystem::path> record;// write the input stream for replay
@@ -98,17 +117,18 @@ struct RunOptions {
     int clusterDivisions = 8;                   // --hierarchy-divisions N: finest grid N x max(1, N/4) x N
     int clusterResolution = 64;                 // --hierarchy-res: face texture's longer side, texels
     int clusterFadeFrames = 8;                  // --hierarchy-fade N: frames a switch cross-fades over
-    std::filesystem::path out;                  // output folder (created)
+    std::filesystem::path out;                  // output folder (created); empty: no files
     bool verbose = true;                        // progress and summary on stdout
     bool cluster = false;                       // --cluster: one process per screen group on MPI
                                                 // (app/run_cluster.h); run under mpirun
     double clusterTimeout = 10.0;               // s a rank waits for the others before ending all
 };
 
-// Throws cavewall::Error, naming the flags, when options contradict each other: frames < 1, a
+// Throws cavewall::Error, naming the flags, when options contradict each other: frames < 0, a
 // triangle or frame-time budget without levels of detail, or both budgets at once; baking on
 // demand with depth walls, --sync-paging or --cluster; a bad --cache-budget, or one without
-// --bake-on-demand.
+// --bake-on-demand; saving frames or recording without an output folder; --save-window
+// without windows or saved frames.
 void validate(const RunOptions& options);
 
 struct RunSummary {
@@ -152,6 +172,7 @@ struct RunSummary {
     int costResolution = 0;                     // pixels of the cost view's side
     int rank = 0;                               // cluster mode: this process's rank (only rank 0
                                                 // fills the fields above)
+    Ending ending = Ending::Frames;
 };
 
 }  // namespace cavewall::app

@@ -9,7 +9,8 @@
 namespace cavewall::input {
 namespace {
 
-const char* const kEventNames[] = {"buttonDown", "buttonUp", "keyDown", "keyUp", "mouseMove", "scroll", "selectMode", "speedScale"};
+const char* const kEventNames[] = {"buttonDown", "buttonUp", "keyDown", "keyUp", "mouseMove", "scroll", "selectMode", "speedScale",
+                                   "pointerCapture"};
 
 // The shortest text that reads back to the same double (std::to_chars round-trip guarantee).
 std::string num(double v) {
@@ -41,7 +42,7 @@ void readRecord(const config::JsonNode& r, Recording& out) {
     if (r.has("event")) {
         r.expectKeys({"t", "event", "code", "value"});
         const std::string name = r.at("event").oneOf({"buttonDown", "buttonUp", "keyDown", "keyUp", "mouseMove", "scroll",
-                                                      "selectMode", "speedScale"});
+                                                      "selectMode", "speedScale", "pointerCapture"});
         Event e;
         e.time = t;
         for (std::size_t i = 0; i < std::size(kEventNames); ++i)

@@ -43,6 +43,8 @@ struct Sample {
 // Key codes: printable keys are their upper-case ASCII code ('W', '1', ' '); others below.
 inline constexpr int kKeyShift = 256;
 inline constexpr int kKeyEscape = 257;
+inline constexpr int kKeyControl = 258;
+inline constexpr int kKeyF1 = 259;
 
 enum class EventType : std::uint8_t {
     ButtonDown,   // code = wand or mouse button (0 trigger / left, 1 mode / right, ...)
@@ -53,6 +55,7 @@ enum class EventType : std::uint8_t {
     Scroll,       // value.y = wheel steps (positive away from the user)
     SelectMode,   // code = navigation mode (input::NavMode as int)
     SpeedScale,   // value.x = navigation speed multiplier (> 0)
+    PointerCapture,  // code = 1: a window captured the pointer (a click); 0: released it (Escape)
 };
 
 struct Event {

@@ -32,6 +32,10 @@ Args::Args(std::vector<std::string> words, std::initializer_list<std::string_vie
 }
 
 void Args::expectFlags(std::initializer_list<std::string_view> allowed) const {
+    expectFlags(std::vector<std::string_view>(allowed));
+}
+
+void Args::expectFlags(const std::vector<std::string_view>& allowed) const {
     for (const auto& [name, _] : _flags) {
         if (std::find(allowed.begin(), allowed.end(), name) != allowed.end()) continue;
         std::string list;
@@ -117,6 +121,26 @@ std::optional<glm::dvec3> Args::vec3(std::string_view flag) const {
             throw Error(what + ": expected three comma-separated numbers x,y,z, got '" + *s + "'");
         v[i] = parseNumber(std::string_view(*s).substr(start, comma - start), what);
         start = comma + 1;
+    }
+    return v;
+}
+
+std::optional<glm::ivec2> Args::size(std::string_view flag, int lo, int hi) const {
+    const std::optional<std::string> s = get(flag);
+    if (!s) return std::nullopt;
+    const auto fail = [&] {
+        return Error("--" + std::string(flag) + ": expected WxH with integers in [" + std::to_string(lo) + ", " +
+                     std::to_string(hi) + "] (e.g. 1280x720), got '" + *s + "'");
+    };
+    const std::size_t x = s->find('x');
+    if (x == std::string::npos) throw fail();
+    glm::ivec2 v;
+    const char* begin = s->data();
+    for (int i = 0; i < 2; ++i) {
+        const char* from = begin + (i == 0 ? 0 : x + 1);
+        const char* to = begin + (i == 0 ? x : s->size());
+        auto [ptr, ec] = std::from_chars(from, to, v[i]);
+        if (ec != std::errc() || ptr != to || from == to || v[i] < lo || v[i] > hi) throw fail();
     }
     return v;
 }

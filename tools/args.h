@@ -28,6 +28,7 @@ public:
 
     // Fails on any flag not in `allowed` (names without "--").
     void expectFlags(std::initializer_list<std::string_view> allowed) const;
+    void expectFlags(const std::vector<std::string_view>& allowed) const;
 
     bool has(std::string_view flag) const;
     // For a flag renamed and still accepted under its old name for one release: `oldName` when
@@ -54,6 +55,8 @@ public:
     }
     // "x,y,z" in metres (or any unit the flag states); all three finite.
     std::optional<glm::dvec3> vec3(std::string_view flag) const;
+    // "WxH" in pixels, each an integer in [lo, hi].
+    std::optional<glm::ivec2> size(std::string_view flag, int lo, int hi) const;
 
     const std::vector<std::string>& positional() const { return _positional; }
     // Throws "<command>: unexpected word 'x' (expected only --flags)" when there is any

@@ -1,21 +1,19 @@
 #include "app/gl/run_session.h"
+#include "app/interrupt.h"
 #include "config/json_reader.h"
-#include "display/timing.h"
 #include "tools/args.h"
 #include "tools/commands.h"
-#include "walls/cache_budget.h"
-
-#include <cstdio>
-#include <iostream>
+#include "tools/session_args.h"
 
 namespace cavewall::tools {
 
 const char* const kRunUsage =
-    "usage: cavewall run --scene S --tracker SPEC --frames N --out DIR [--display D]\n"
-    "                    [--nav guided|fly|walk|none] [--pace M/S] [--route walk|wall] [--headless|--window]\n"
+    "usage: cavewall run --scene S --tracker SPEC --frames N --out DIR [--display D] [--resolution WxH]\n"
+    "                    [--nav guided|fly|walk|none] [--pace M/S] [--route walk|wall]\n"
+    "                    [--start origin|inside|view-all] [--headless|--window]\n"
     "                    [--transition blend|warp] [--no-walls|--no-textures] [--walls flat|depth] [--alpha DEG]\n"
     "                    [--min-zone M] [--ppd N]\n"
-    "                    [--save-frames none|every:K|all] [--record FILE] [--cache DIR]\n"
+    "                    [--save-frames none|every:K|all [--save-window]] [--record FILE] [--cache DIR]\n"
     "                    [--budget MB] [--geometry-budget MB] [--max-res N] [--sync-paging]\n"
     "                    [--bake-on-demand [--cache-budget MB] [--bake-nice N] [--bake-interleave N]]\n"
     "                    [--lod PX [--triangle-budget N|--frame-budget-ms T] [--lod-max PX]]\n"
@@ -23,15 +21,21 @@ const char* const kRunUsage =
     "                    [--hierarchy [--hierarchy-divisions N] [--hierarchy-res N] [--hierarchy-fade N]]\n"
     "\n"
     "Walks through scene S (a scene.json, a folder holding one, or a bare glTF/GLB file) on the\n"
-    "display D (a file or a preset, default cave4) for N frames at a fixed step of 1/60 s. The head\n"
+    "display D (a file or a preset, default cave4; --resolution WxH renders every screen at WxH\n"
+    "pixels) for N frames at a fixed step of 1/60 s (--frames 0: until a window is closed, the quit\n"
+    "keys or Ctrl+C). Ctrl+C (or SIGTERM) ends the run within a frame with complete files and the\n"
+    "summary, exit code 130 (143); a second Ctrl+C ends it at once. The head\n"
     "comes from the tracker SPEC (sim:walk[?seed=N], file:PATH, replay:PATH, dtrack:udp://HOST:PORT,\n"
     "opentrack:udp://HOST:PORT; see `cavewall track --help`; or `desktop`: keyboard and mouse in\n"
-    "the --window windows, click to capture the pointer, WASD to move, 1-4 for fly/walk/grab/guided)\n"
-    "through the display's calibration,\n"
+    "the --window windows as in `cavewall view --help`) through the display's calibration,\n"
     "the One Euro filter and prediction; navigation moves the CAVE through the scene: --nav\n"
     "defaults to guided along the scene's walkPath at --pace m/s (default 1) when it has one, else\n"
-    "none. --route wall follows the scene's wallPath instead, a second path that hugs the virtual\n"
-    "walls. Scenes with virtual walls are planned (--alpha degrees, default 10; --min-zone, --ppd as\n"
+    "fly with the desktop and none with a tracker. --route wall follows the scene's wallPath\n"
+    "instead, a second path that hugs the virtual walls. Without a walk path the viewer starts\n"
+    "where --start says: origin (default: the CAVE at the world's origin), inside (standing on a\n"
+    "floor inside the model, else as view-all) or view-all (the whole model in view). In windows\n"
+    "F1 or H shows the keys; Escape frees the pointer, and a second Escape or Ctrl+Q quits.\n"
+    "Scenes with virtual walls are planned (--alpha degrees, default 10; --min-zone, --ppd as\n"
     "in `cavewall plan`) and baked into the cache (--cache, default $CAVEWALL_CACHE or\n"
     "~/.cache/cavewall) before the first frame; near cells are drawn as geometry and the rest as\n"
     "wall textures, blended by zone. --no-walls draws the full (frustum-culled) geometry instead.\n"
@@ -76,7 +80,8 @@ const char* const kRunUsage =
     "cell, zone, frame/cpu/gpu ms, triangles, draw calls, paging, max angular error in degrees and\n"
     "pixels), DIR/walls.csv (textures and weights per wall and frame, whether the wall lies\n"
     "beyond a neighbour drawn as geometry, its exact error in degrees) and, with --save-frames,\n"
-    "DIR/frames/<frame>/ with one PNG per screen and eye plus foldout.png. --record writes the\n"
+    "DIR/frames/<frame>/ with one PNG per screen and eye plus foldout.png (--save-window adds\n"
+    "window-<screen>.png: what each window showed, overlay included). --record writes the\n"
     "tracker input for `--tracker replay:FILE`. Headless unless --window. --transition warp draws\n"
     "the structure behind textured walls through the Aliaga-Lastra geometry warp, so it lines up\n"
     "with the textures; walls whose warp is ill-conditioned (eye near the wall plane) are drawn as\n"
@@ -104,132 +109,22 @@ const char* const kRunUsage =
     "--clusters: old name of --hierarchy, kept for one release; likewise --cluster-divisions,\n"
     "--cluster-res and --cluster-fade of --hierarchy-divisions, --hierarchy-res and --hierarchy-fade.\n";
 
-namespace {
-
-long saveEvery(const std::string& spec) {
-    if (spec == "none") return 0;
-    if (spec == "all") return 1;
-    if (spec.rfind("every:", 0) == 0) {
-        const double k = parseNumber(std::string_view(spec).substr(6), "--save-frames every:K");
-        if (k >= 1 && k <= 1e9 && k == static_cast<long>(k)) return static_cast<long>(k);
-    }
-    throw Error("--save-frames: expected none, all or every:K with an integer K >= 1, got '" + spec + "'");
-}
-
-std::string seconds(double s) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3f", s);
-    return text;
-}
-
-std::string geometryLine(const app::RunSummary& s) {
-    char text[256];
-    std::snprintf(text, sizeof text,
-                  "run: geometry paging: at most %.2f MB resident (largest three cells %.2f MB, whole model %.2f MB); "
-                  "page-ins %ld, misses %ld, cells drawn unloaded %ld\n",
-                  s.geometryPeakMB, s.largestThreeCellsMB, s.modelGeometryMB, s.geometryPageIns, s.geometryMisses,
-                  s.geometryForced);
-    return text;
-}
-
-std::string bakeLine(const app::RunSummary& s) {
-    char text[320];
-    std::snprintf(text, sizeof text,
-                  "run: baking on demand: %d textures missing at the start, %d baked during the run, %d still "
-                  "missing; first frame %.2f s after the scene loaded",
-                  s.texturesMissingAtStart, s.texturesBaked, s.texturesStillMissing,
-                  s.firstFrameSeconds - s.sceneSeconds);
-    std::string line = text;
-    if (s.cacheEvictions > 0 || s.cacheMB > 0.0) {
-        std::snprintf(text, sizeof text, "; cache %.1f MB, %ld files evicted", s.cacheMB, s.cacheEvictions);
-        line += text;
-    }
-    for (const std::string& w : s.bakeWarnings) line += "\nrun: warning: " + w;
-    return line + "\n";
-}
-
-std::string clustersLine(const app::RunSummary& s) {
-    char text[400];
-    std::snprintf(text, sizeof text,
-                  "run: clusters: %d (%d made, %d from the cache) in %.2f s; measured costs at %dx%d: %.3g ms per "
-                  "triangle, %.3g ms per object, %.3g ms per textured box plus %.3g ms per whole view it covers, "
-                  "%.3g ms per average box plus %.3g ms per whole view\n",
-                  s.clusters, s.clustersMade, s.clustersReused, s.clustersSeconds, s.costResolution, s.costResolution,
-                  s.msPerTriangle, s.msPerObject, s.texturedBoxMs, s.texturedViewMs, s.averageBoxMs, s.averageViewMs);
-    return text;
-}
-
-}  // namespace
-
 int runRun(const std::vector<std::string>& words) {
-    const Args args(words, {"headless", "window", "no-walls", "no-textures", "sync-paging", "cluster", "hierarchy",
-                            "clusters", "bake-on-demand"});
-    args.expectFlags({"scene", "display", "tracker", "frames", "nav", "pace", "route", "headless", "window", "transition",
-                      "no-walls", "no-textures", "alpha", "min-zone", "ppd", "save-frames", "record", "cache", "budget", "geometry-budget", "max-res",
-                      "sync-paging", "out", "cluster", "cluster-timeout", "lod", "triangle-budget", "frame-budget-ms", "lod-max",
-                      "walls", "hierarchy", "hierarchy-divisions", "hierarchy-res", "hierarchy-fade", "clusters",
-                      "cluster-divisions", "cluster-res", "cluster-fade", "bake-on-demand",
-                      "cache-budget", "bake-interleave", "bake-nice", "texture-format"});
-    if (args.has("headless") && args.has("window")) throw Error("--headless and --window: expected one of them, got both");
-    app::RunOptions o;
-    o.scene = args.require("scene");
-    o.display = config::loadDisplayConfig(args.getOr("display", "cave4"));
-    o.tracker = args.require("tracker");
-    o.frames = args.integer("frames", 0, 1, 10000000);
-    if (!args.has("frames")) throw Error("--frames: required flag is missing");
-    o.out = args.require("out");
-    o.nav = args.choice("nav", app::kNavigationNames, app::Navigation::Auto);
-    o.guidePace = args.number("pace", 1.0, 0.0, 100.0);
-    o.route = args.choice("route", app::kRouteNames, app::Route::Walk);
-    o.window = args.has("window") ? app::WindowMode::Window : app::WindowMode::Headless;
-    o.transition = args.choice("transition", app::kTransitionNames, app::Transition::Blend);
-    o.walls = !args.has("no-walls");
-    o.wallTextures = !args.has("no-textures");
-    o.wallKind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
-    o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
-    o.plan.alphaDeg = args.number("alpha", o.plan.alphaDeg, 1e-3, 90.0);
-    o.plan.minZoneSize = args.number("min-zone", o.plan.minZoneSize, 1e-3, 1e4);
-    o.plan.pixelsPerDegree = args.number("ppd", o.plan.pixelsPerDegree, 0.01, 1000.0);
-    if (auto c = args.get("cache")) o.cache = *c;
-    if (auto r = args.get("record")) o.record = *r;
-    o.saveEvery = saveEvery(args.getOr("save-frames", "none"));
-    o.textureBudgetMB = args.number("budget", o.textureBudgetMB, 1e-3, 1e6);
-    o.geometryBudgetMB = args.number("geometry-budget", 0.0, 0.0, 1e6);
-    o.bakeResolution = static_cast<int>(args.integer("max-res", o.bakeResolution, 16, 16384));
-    o.synchronousPaging = args.has("sync-paging");
-    o.bakeOnDemand = args.has("bake-on-demand");
-    o.bakeInterleave = args.integer("bake-interleave", 0, 0, 1000000);
-    o.bakeNice = static_cast<int>(args.integer("bake-nice", o.bakeNice, 0, 19));
-    if (auto budget = args.get("cache-budget")) o.cacheBudgetMB = parseNumber(*budget, "--cache-budget");
-    if (args.has("cache-budget")) walls::cacheBudgetBytes(o.cacheBudgetMB, "--cache-budget");
-    o.lodPixels = args.number("lod", 0.0, 0.0, 1e4);
-    o.triangleBudget = static_cast<std::size_t>(args.integer("triangle-budget", 0, 0, 1000000000));
-    o.frameBudgetMs = args.number("frame-budget-ms", 0.0, 0.0, 1e5);
-    o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);
-    o.clusters = args.has(args.renamed("hierarchy", "clusters"));
-    o.clusterDivisions = static_cast<int>(
-        args.integer(args.renamed("hierarchy-divisions", "cluster-divisions"), o.clusterDivisions, 1, 1024));
-    o.clusterResolution =
-        static_cast<int>(args.integer(args.renamed("hierarchy-res", "cluster-res"), o.clusterResolution, 4, 2048));
-    o.clusterFadeFrames =
-        static_cast<int>(args.integer(args.renamed("hierarchy-fade", "cluster-fade"), o.clusterFadeFrames, 0, 600));
-    app::validate(o);
-    o.cluster = args.has("cluster");
-    o.clusterTimeout = args.number("cluster-timeout", o.clusterTimeout, 0.1, 3600.0);
-    const app::RunSummary s = gl::runSession(o);
-    if (s.rank != 0) return 0;
-    std::cout << "run: " << s.frameMs.size() << " frames on " << s.renderer
-              << (!s.walls ? ", geometry only" : o.wallTextures ? ", walls" : ", the control (the walls' cells, no textures)")
-              << "; median frame " << display::median(s.frameMs) << " ms; worst error " << s.worstErrorDeg << " deg ("
-              << s.worstErrorPx << " px); page-ins " << s.pageIns << ", misses " << s.misses << "\n"
-              << "run: first frame after " << seconds(s.firstFrameSeconds) << " s (scene loaded at "
-              << seconds(s.sceneSeconds) << " s, walls ready at " << seconds(s.wallsSeconds)
-              << " s, walkthrough ready at " << seconds(s.readySeconds) << " s)\n"
-              << (o.geometryBudgetMB > 0.0 && s.walls ? geometryLine(s) : std::string())
-              << (o.clusters ? clustersLine(s) : std::string())
-              << (o.bakeOnDemand && s.walls ? bakeLine(s) : std::string())
-              << (o.out / "frames.csv").string() << "\n";
-    return 0;
+    const Args args = sessionArgs(words);
+    std::vector<std::string_view> flags = sessionFlags();
+    flags.push_back("scene");
+    args.expectFlags(flags);
+    args.expectNoPositional("run");
+    app::RunOptions defaults;
+    defaults.scene = args.require("scene");
+    defaults.display = config::loadDisplayConfig("cave4");
+    defaults.tracker = args.require("tracker");
+    if (!args.has("frames")) throw Error("--frames: required flag is missing (0: until stopped)");
+    defaults.out = args.require("out");
+    defaults.window = app::WindowMode::Headless;
+    const app::RunOptions o = parseSessionOptions(args, defaults);
+    app::installInterruptHandler();
+    return reportSession("run", o, gl::runSession(o));
 }
 
 }  // namespace cavewall::tools

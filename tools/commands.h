@@ -38,6 +38,8 @@ int runDemo(const std::vector<std::string>& args);
 extern const char* const kDemoUsage;
 int runRun(const std::vector<std::string>& args);
 extern const char* const kRunUsage;
+int runView(const std::vector<std::string>& args);
+extern const char* const kViewUsage;
 int runBake(const std::vector<std::string>& args);
 extern const char* const kBakeUsage;
 int runDrawBench(const std::vector<std::string>& args);

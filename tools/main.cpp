@@ -14,6 +14,9 @@ namespace cavewall::tools {
 namespace {
 
 const Command kCommands[] = {
+#ifdef CAVEWALL_HAVE_GL
+    {"view", "open a window on a model and look around with mouse and keys (F1: help)", kViewUsage, runView},
+#endif
     {"frustum", "print every screen's and eye's off-axis view and projection", kFrustumUsage, runFrustum},
     {"track", "read a head tracker and print calibrated, filtered, predicted head poses", kTrackUsage, runTrack},
     {"bench", "measure error against run time; --stability: the numerical stability report", kBenchUsage, runBench},
@@ -31,11 +34,16 @@ const Command kCommands[] = {
 
 void printHelp() {
     std::cout << "usage: cavewall <command> [options]\n"
-                 "       cavewall <command> --help\n\ncommands:\n";
+                 "       cavewall <command> --help\n"
+                 "       cavewall --version\n\ncommands:\n";
     for (const Command& c : kCommands) std::cout << "  " << c.name << std::string(std::strlen(c.name) < 11 ? 11 - std::strlen(c.name) : 1, ' ') << c.summary << "\n";
 }
 
 int dispatch(int argc, char** argv) {
+    if (argc == 2 && (!std::strcmp(argv[1], "--version") || !std::strcmp(argv[1], "version"))) {
+        std::cout << "cavewall " CAVEWALL_VERSION "\n";
+        return 0;
+    }
     if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
         printHelp();
         return argc < 2 ? 2 : 0;

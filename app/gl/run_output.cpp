@@ -3,7 +3,9 @@
 #include "config/error.h"
 #include "scenes/file_write.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cerrno>
 #include <cstring>
 #include <string>
@@ -41,7 +43,8 @@ RunOutput::RunOutput(std::filesystem::path folder, const scenes::SceneDescriptio
                       "geometry_misses,geometry_kept,geometry_forced,uploaded_mb,cluster_objects,cluster_textured,"
                       "cluster_average,cluster_predicted_ms,cluster_budget_ms,cluster_fades,geometry_fallbacks,"
                       "textures_baked,textures_baked_now,textures_to_bake,baker_busy,cluster_selected_ms,"
-                      "cluster_cheapest_ms,cluster_target_ms,cluster_predicted_frame_ms,cluster_floor_ms\n");
+                      "cluster_cheapest_ms,cluster_target_ms,cluster_predicted_frame_ms,cluster_floor_ms,view_yaw_deg,"
+                      "view_pitch_deg\n");
     _walls = openCsv(_folder / "walls.csv", "frame,wall,textures,geometry_weight,fallback,beyond,err_deg,over_alpha\n");
 }
 
@@ -61,13 +64,17 @@ void RunOutput::close() {
     }
 }
 
-void RunOutput::writeFrame(long frame, double t, glm::dvec3 head, const walkthrough::FrameResult& r, double syncMs) {
+void RunOutput::writeFrame(long frame, double t, glm::dvec3 head, const walkthrough::FrameResult& r, double syncMs,
+                           glm::dvec3 viewWorld) {
+    viewWorld = glm::normalize(viewWorld);
+    const double yawDeg = glm::degrees(std::atan2(-viewWorld.x, -viewWorld.z));
+    const double pitchDeg = glm::degrees(std::asin(std::clamp(viewWorld.y, -1.0, 1.0)));
     const glm::dvec3& w = r.eyeWorld;
     const std::string cell =
         r.cell >= 0 && r.cell < static_cast<int>(_description.cells.size()) ? _description.cells[r.cell].name : "-";
     int fallbacks = 0;
     for (const walkthrough::WallState& s : r.walls) fallbacks += s.fallback ? 1 : 0;
-    std::fprintf(_frames, "%ld,%s,%s,%s,%s,%s,%s,%s,%s,%d,%.3f,%.3f,%.3f,%zu,%d,%d,%ld,%ld,%.4f,%.2f,%d,%.3f,%d,%.3f,%.3f,%d,%zu,%d,%.3f,%ld,%ld,%d,%d,%.3f,%d,%d,%d,%.4f,%.4f,%d,%d,%d,%d,%d,%d,%.4f,%.4f,%.3f,%.3f,%.3f\n", frame,
+    std::fprintf(_frames, "%ld,%s,%s,%s,%s,%s,%s,%s,%s,%d,%.3f,%.3f,%.3f,%zu,%d,%d,%ld,%ld,%.4f,%.2f,%d,%.3f,%d,%.3f,%.3f,%d,%zu,%d,%.3f,%ld,%ld,%d,%d,%.3f,%d,%d,%d,%.4f,%.4f,%d,%d,%d,%d,%d,%d,%.4f,%.4f,%.3f,%.3f,%.3f,%.4f,%.4f\n", frame,
                  exact(t).c_str(), exact(head.x).c_str(), exact(head.y).c_str(), exact(head.z).c_str(),
                  exact(w.x).c_str(), exact(w.y).c_str(), exact(w.z).c_str(), cell.c_str(), r.zone, r.frameMs, r.cpuMs,
                  r.gpuMs, r.stats.triangles, r.stats.drawCalls, r.pager.resident, r.pager.pageIns, r.pager.misses,
@@ -76,7 +83,8 @@ void RunOutput::writeFrame(long frame, double t, glm::dvec3 head, const walkthro
                  r.geometryMisses, r.geometryForced, static_cast<double>(r.uploadedBytes) / 1e6, r.clusterObjects,
                  r.clusterTextured, r.clusterAverage, r.clusterPredictedMs, r.clusterBudgetMs, r.clusterFades,
                  r.geometryFallbacks, r.texturesBaked, r.texturesBakedNow, r.texturesToBake, r.bakerBusy ? 1 : 0,
-                 r.clusterSelectedMs, r.clusterCheapestMs, r.clusterTargetMs, r.clusterPredictedFrameMs, r.clusterFloorMs);
+                 r.clusterSelectedMs, r.clusterCheapestMs, r.clusterTargetMs, r.clusterPredictedFrameMs, r.clusterFloorMs,
+                 yawDeg, pitchDeg);
     for (const walkthrough::WallState& s : r.walls) {
         std::string textures;
         for (const auto& [id, weight] : s.textures)
@@ -86,6 +94,8 @@ void RunOutput::writeFrame(long frame, double t, glm::dvec3 head, const walkthro
         std::fprintf(_walls, "%ld,%s,%s,%s,%d,%d,%.4f,%d\n", frame, name.c_str(), textures.c_str(),
                      exact(s.geometryWeight).c_str(), s.fallback ? 1 : 0, s.beyond ? 1 : 0, s.errorDeg, s.texturesOverAlpha);
     }
+    std::fflush(_frames);
+    std::fflush(_walls);
     if (std::ferror(_frames) || std::ferror(_walls))
         throw Error(_folder.string() + ": writing the CSV files failed (" + scenes::writeErrorText(errno) + ")");
 }

@@ -15,7 +15,9 @@
 //               resident texture), textures_baked (baked by this run's background baker and
 //               handed to the pager, running total), textures_baked_now (this frame),
 //               textures_to_bake (still missing; all three 0 without --bake-on-demand),
-//               baker_busy (1 when a background bake ran during some of the frame)
+//               baker_busy (1 when a background bake ran during some of the frame), ...,
+//               view_yaw_deg, view_pitch_deg (where the head looks in the world: yaw about +Y,
+//               0 looking down -Z and positive turning left; pitch positive looking up)
 //   walls.csv   one row per frame and wall bounding the viewer's cell or beyond a neighbour
 //               drawn as geometry: frame, wall (name), textures ("id:weight" joined by ';'),
 //               geometry_weight, fallback (0/1), beyond (0/1), err_deg (the exact error of its
@@ -44,8 +46,11 @@ public:
     RunOutput(const RunOutput&) = delete;
     RunOutput& operator=(const RunOutput&) = delete;
 
-    // `syncMs`: cluster mode's wait for the frame broadcast and the swap lock (0 otherwise).
-    void writeFrame(long frame, double t, glm::dvec3 head, const walkthrough::FrameResult& result, double syncMs = 0.0);
+    // `syncMs`: cluster mode's wait for the frame broadcast and the swap lock (0 otherwise);
+    // `viewWorld`: the head's forward direction in the world (any length > 0). Both CSV files
+    // are flushed after the frame, so a reader polling them sees whole rows.
+    void writeFrame(long frame, double t, glm::dvec3 head, const walkthrough::FrameResult& result, double syncMs = 0.0,
+                    glm::dvec3 viewWorld = {0.0, 0.0, -1.0});
     // Writes the frame's images and fold-out; returns the fold-out's path.
     std::filesystem::path saveImages(long frame, const std::vector<gl::ScreenImage>& images);
     // Flushes, syncs and closes both CSV files; throws Error with the system's reason (a full

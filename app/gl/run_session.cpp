@@ -11,10 +11,13 @@
 #include "scenes/image_io.h"
 #include "scenes/loader.h"
 #include "walkthrough/cluster_control.h"
+#include "app/interrupt.h"
 #include "app/run_cluster.h"
 #include "app/run_input.h"
 #include "app/gl/run_output.h"
 #include "app/scene_query.h"
+#include "app/view_overlay.h"
+#include "input/session_keys.h"
 #include "walls/cache_budget.h"
 #include "walls/gl/background_baker.h"
 #include "walls/gl/baker.h"
@@ -207,11 +210,21 @@ void saveFrameImages(const Session& s, long i, const walkthrough::FrameInput& in
     if (s.o.keepSavedImages) summary.savedFrames.push_back({i, in.head.position, std::move(r.images)});
 }
 
-// Rank 0: writes frame i and adds it to the summary.
-void recordFrame(const Session& s, long i, const walkthrough::FrameInput& in, walkthrough::FrameResult& r,
-                 double syncMs, RunSummary& summary) {
-    s.output->writeFrame(i, in.time, in.head.position, r, syncMs);
-    if (in.readImages) saveFrameImages(s, i, in, r, summary);
+// Rank 0: what the windows showed at a saved frame (overlay included), beside its images.
+void saveWindowImages(const Session& s, const std::filesystem::path& frameFolder) {
+    const int windows = std::min(s.context.windowCount(), static_cast<int>(s.o.display.screens.size()));
+    for (int w = 0; w < windows; ++w)
+        if (std::optional<scenes::Image> shown = s.context.takeWindowCapture(w))
+            scenes::writeImage(frameFolder / ("window-" + s.o.display.screens[w].name + ".png"), *shown);
+}
+
+// Rank 0: writes frame i (when there is an output folder) and adds it to the summary.
+void recordFrame(const Session& s, long i, const walkthrough::FrameInput& in, walkthrough::FrameResult& r, double syncMs,
+                 RunSummary& summary) {
+    const glm::dvec3 view(in.worldFromCave * glm::dvec4(in.head.orientation * glm::dvec3(0.0, 0.0, -1.0), 0.0));
+    if (s.output) s.output->writeFrame(i, in.time, in.head.position, r, syncMs, view);
+    if (in.readImages && s.output) saveFrameImages(s, i, in, r, summary);
+    if (in.readImages && s.output && s.o.saveWindow) saveWindowImages(s, summary.foldouts.back().parent_path());
     summary.frameMs.push_back(r.frameMs);
     summary.worstErrorDeg = std::max(summary.worstErrorDeg, r.maxErrorDeg);
     summary.worstErrorPx = std::max(summary.worstErrorPx, r.maxErrorPixels);
@@ -222,8 +235,30 @@ void recordFrame(const Session& s, long i, const walkthrough::FrameInput& in, wa
     summary.geometryMisses = r.geometry.misses;
     summary.geometryPageIns = r.geometry.pageIns;
     summary.geometryForced += r.geometryForced;
-    if (s.o.verbose && (i + 1) % 60 == 0)
+    if (s.o.verbose && s.o.frames > 0 && (i + 1) % 60 == 0)
         std::cout << "frame " << i + 1 << "/" << s.o.frames << ": " << r.frameMs << " ms\n" << std::flush;
+}
+
+// Why the session ends before its next frame, if it does: a window closed, the quit keys,
+// Ctrl+C.
+std::optional<app::Ending> endBeforeFrame(const Session& s, const input::SessionKeys& keys) {
+    if (s.context.windowCount() > 0 && s.context.pollCloseRequested()) return app::Ending::WindowClosed;
+    if (keys.quitRequested()) return app::Ending::Quit;
+    if (app::interruptSignal() != 0) return app::Ending::Interrupted;
+    return std::nullopt;
+}
+
+// Each window's title and overlay for the coming frame (rank 0, which navigates).
+void showStatus(const Session& s, const input::SessionKeys& keys, double lastFrameMs) {
+    if (!s.input) return;
+    app::ViewStatus status{.navigation = s.input->navigationName(), .speed = s.input->speed(),
+                           .frameMs = lastFrameMs, .help = keys.helpShown()};
+    const display::OverlayText overlay = app::viewOverlay(status);
+    const int windows = std::min(s.context.windowCount(), static_cast<int>(s.o.display.screens.size()));
+    for (int w = 0; w < windows; ++w) {
+        s.context.setTitle(w, app::windowTitle(s.o.display.screens[w].name, status.navigation));
+        s.context.setOverlay(w, overlay);
+    }
 }
 
 // Draws the session's frames (until a window is closed), each held to the frame budget.
@@ -235,11 +270,19 @@ void runFrames(const Session& s, RunSummary& summary) {
     std::optional<hierarchy::ClusterBudget> clusterBudget;
     if (o.frameBudgetMs > 0.0 && !o.clusters) frameBudget.emplace(o.frameBudgetMs);
     if (o.frameBudgetMs > 0.0 && o.clusters) clusterBudget.emplace(o.frameBudgetMs);
-    for (long i = 0; i < o.frames; ++i) {
+    input::SessionKeys keys;
+    double lastFrameMs = 0.0;
+    for (long i = 0; o.frames == 0 || i < o.frames; ++i) {
         const bool save = o.saveEvery > 0 && i % o.saveEvery == 0;
-        if (s.context.windowCount() > 0 && s.context.pollCloseRequested()) break;  // a window was closed
-        walkthrough::FrameInput in =
-            s.input ? s.input->next(i, save, s.context.takeInputEvents()) : walkthrough::FrameInput{};
+        const std::vector<input::Event> events = s.context.takeInputEvents();
+        for (const input::Event& e : events) keys.handle(e);
+        if (const std::optional<app::Ending> end = endBeforeFrame(s, keys)) {
+            summary.ending = *end;
+            break;
+        }
+        walkthrough::FrameInput in = s.input ? s.input->next(i, save, events) : walkthrough::FrameInput{};
+        showStatus(s, keys, lastFrameMs);
+        for (int w = 0; save && o.saveWindow && w < s.context.windowCount(); ++w) s.context.requestWindowCapture(w);
         if (frameBudget) in.triangleBudget = frameBudget->budget();
         if (clusterBudget) in.clusterBudgetMs = walkthrough::clusterBudgetFor(*clusterBudget);
         double syncMs = s.cluster ? app::receiveFrame(*s.cluster, in) : 0.0;
@@ -250,7 +293,8 @@ void runFrames(const Session& s, RunSummary& summary) {
         // Rank 0: the slowest rank's time.
         if (frameBudget) frameBudget->update(r.frameMs, r.geometryTriangles);
         if (clusterBudget) walkthrough::controlClusters(*clusterBudget, r);
-        if (s.output) recordFrame(s, i, in, r, syncMs, summary);
+        if (s.input) recordFrame(s, i, in, r, syncMs, summary);
+        lastFrameMs = r.frameMs;
     }
 }
 
@@ -293,7 +337,8 @@ RunSummary runSession(const RunOptions& o) {
     gl::Walkthrough walkthrough(scene, description, display, *context, std::move(setup),
                                 walkthroughOptions(o, baker.get()), screens);
 
-    std::unique_ptr<RunOutput> output = rank == 0 ? std::make_unique<RunOutput>(o.out, description, display) : nullptr;
+    std::unique_ptr<RunOutput> output =
+        rank == 0 && !o.out.empty() ? std::make_unique<RunOutput>(o.out, description, display) : nullptr;
     summary.readySeconds = secondsSince(start);
     summary.renderer = context->info().renderer;
     summarizeWalkthrough(walkthrough, summary);

@@ -12,12 +12,14 @@
 // KHR_debug callback that prints driver messages on stderr.
 
 #include "display/display.h"
+#include "display/overlay_text.h"
 #include "input/sample.h"
 #include "scenes/scene.h"
 
 #include <glm/glm.hpp>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -71,10 +73,22 @@ public:
     virtual void present(int window, const PresentImage& image, scenes::Image* capture = nullptr);
     // Processes window events; true once the user asked to close any window.
     virtual bool pollCloseRequested() { return false; }
+    // Text drawn over window `window` at every present from now on (display/overlay_text.h;
+    // no lines: none). Only the window shows it: images the renderer reads back never hold it.
+    virtual void setOverlay(int /*window*/, const display::OverlayText& /*overlay*/) {}
+    // Sets window `window`'s title (nothing is sent when it is unchanged).
+    virtual void setTitle(int /*window*/, const std::string& /*title*/) {}
+    // Asks for what window `window` shows (the image and its overlay) at its next present;
+    // takeWindowCapture then gives it once (8-bit RGBA, rows top to bottom, the window's
+    // size), and nullopt before that or without windows.
+    virtual void requestWindowCapture(int /*window*/) {}
+    virtual std::optional<scenes::Image> takeWindowCapture(int /*window*/) { return std::nullopt; }
     // Keyboard and mouse events of the windows since the last call, for the desktop fallback
-    // (input/desktop.h): keys (printable keys as upper-case ASCII, Shift, Escape), mouse
-    // buttons 0 (left) and 1 (right), wheel steps, and pointer motion in pixels while the
-    // pointer is captured (a left click in a window captures it, Escape releases it). Event
+    // (input/desktop_navigator.h, input/session_keys.h): keys (printable keys as upper-case
+    // ASCII, Shift, Control, Escape, F1), mouse buttons 0 (left) and 1 (right), wheel steps, and
+    // pointer motion in pixels while the pointer is captured. A left click in a window
+    // captures the pointer: that click gives PointerCapture 1 instead of a ButtonDown (its
+    // ButtonUp follows). Escape releases it: KeyDown Escape, then PointerCapture 0. Event
     // times are 0: the caller stamps them with its own clock. Headless contexts have none.
     virtual std::vector<input::Event> takeInputEvents() { return {}; }
 

@@ -2,8 +2,10 @@
 
 #include "config/error.h"
 #include "display/gl/gl_object.h"
+#include "display/gl/overlay_pass.h"
 #include "display/gl/render_targets.h"
 
+#include <memory>
 #include <utility>
 
 #define GLFW_INCLUDE_NONE
@@ -32,6 +34,10 @@ public:
     void present(int window, const PresentImage& image, scenes::Image* capture) override;
     bool pollCloseRequested() override;
     std::vector<input::Event> takeInputEvents() override;
+    void setOverlay(int window, const display::OverlayText& overlay) override;
+    void setTitle(int window, const std::string& title) override;
+    void requestWindowCapture(int window) override { at(window).captureRequested = true; }
+    std::optional<scenes::Image> takeWindowCapture(int window) override { return std::exchange(at(window).capture, {}); }
 
 private:
     static GlfwContext& of(GLFWwindow* w) { return *static_cast<GlfwContext*>(glfwGetWindowUserPointer(w)); }
@@ -46,7 +52,15 @@ private:
     struct Window {
         GLFWwindow* handle = nullptr;
         GlObject readFramebuffer;  // belongs to this window's context (framebuffers are not shared)
+        std::unique_ptr<OverlayPass> overlayPass;  // this window's context too; made when first needed
+        display::OverlayText overlay;
+        std::vector<display::OverlayVertex> overlayVertices;
+        std::string title;
+        bool captureRequested = false;
+        std::optional<scenes::Image> capture;
     };
+    Window& at(int window);
+    void drawOverlay(Window& w, glm::ivec2 windowSize);
     void open(const WindowRequest& request, bool stereo, const ContextOptions& options);
     void blit(Window& w, unsigned texture, glm::ivec2 size, GLenum drawBuffer, glm::ivec2 windowSize);
 
@@ -79,6 +93,7 @@ GlfwContext::~GlfwContext() {
     for (Window& w : _windows) {
         glfwMakeContextCurrent(w.handle);
         w.readFramebuffer.reset();
+        w.overlayPass.reset();
         glfwMakeContextCurrent(nullptr);
         glfwDestroyWindow(w.handle);
     }
@@ -116,7 +131,38 @@ void GlfwContext::open(const WindowRequest& r, bool stereo, const ContextOptions
     glfwSetMouseButtonCallback(handle, onButton);
     glfwSetCursorPosCallback(handle, onCursor);
     glfwSetScrollCallback(handle, onScroll);
-    _windows.push_back({handle, {}});
+    _windows.push_back({});
+    _windows.back().handle = handle;
+    _windows.back().title = r.title;
+}
+
+GlfwContext::Window& GlfwContext::at(int window) {
+    if (window < 0 || window >= windowCount())
+        throw Error("window: expected a window index in [0, " + std::to_string(windowCount() - 1) + "], got " +
+                    std::to_string(window));
+    return _windows[window];
+}
+
+void GlfwContext::setOverlay(int window, const display::OverlayText& overlay) {
+    Window& w = at(window);
+    if (overlay == w.overlay) return;
+    w.overlay = overlay;
+    w.overlayVertices = display::layoutOverlay(overlay);
+}
+
+void GlfwContext::setTitle(int window, const std::string& title) {
+    Window& w = at(window);
+    if (title == w.title) return;
+    w.title = title;
+    glfwSetWindowTitle(w.handle, title.c_str());
+}
+
+// In the window's context, over its back buffer (both of a stereo window's).
+void GlfwContext::drawOverlay(Window& w, glm::ivec2 windowSize) {
+    if (w.overlayVertices.empty()) return;
+    if (!w.overlayPass) w.overlayPass = std::make_unique<OverlayPass>();
+    glDrawBuffer(GL_BACK);
+    w.overlayPass->draw(w.overlayVertices, windowSize);
 }
 
 void GlfwContext::blit(Window& w, unsigned texture, glm::ivec2 size, GLenum drawBuffer, glm::ivec2 windowSize) {
@@ -131,11 +177,8 @@ void GlfwContext::blit(Window& w, unsigned texture, glm::ivec2 size, GLenum draw
 }
 
 void GlfwContext::present(int window, const PresentImage& image, scenes::Image* capture) {
-    if (window < 0 || window >= windowCount())
-        throw Error("present: expected a window index in [0, " + std::to_string(windowCount() - 1) + "], got " +
-                    std::to_string(window));
+    Window& w = at(window);
     glFinish();  // the rendering context's writes must be complete before another context reads them
-    Window& w = _windows[window];
     glfwMakeContextCurrent(w.handle);
     if (!w.readFramebuffer) w.readFramebuffer = createFramebuffer();
     glm::ivec2 windowSize{0, 0};
@@ -147,7 +190,11 @@ void GlfwContext::present(int window, const PresentImage& image, scenes::Image* 
     const bool stereo = _info.stereoWindows;
     blit(w, image.left, image.size, stereo ? GL_BACK_LEFT : GL_BACK, windowSize);
     if (stereo && image.right) blit(w, image.right, image.size, GL_BACK_RIGHT, windowSize);
-    if (capture) *capture = readFramebuffer(0, stereo ? GL_BACK_LEFT : GL_BACK, windowSize, "window " + std::to_string(window));
+    drawOverlay(w, windowSize);
+    const GLenum shown = stereo ? GL_BACK_LEFT : GL_BACK;
+    if (capture) *capture = readFramebuffer(0, shown, windowSize, "window " + std::to_string(window));
+    if (std::exchange(w.captureRequested, false))
+        w.capture = readFramebuffer(0, shown, windowSize, "window " + std::to_string(window));
     glfwSwapBuffers(w.handle);
     makeCurrent();
 }
@@ -169,12 +216,17 @@ void GlfwContext::onKey(GLFWwindow* w, int key, int, int action, int) {
         code = input::kKeyShift;
     else if (key == GLFW_KEY_ESCAPE)
         code = input::kKeyEscape;
+    else if (key == GLFW_KEY_LEFT_CONTROL || key == GLFW_KEY_RIGHT_CONTROL)
+        code = input::kKeyControl;
+    else if (key == GLFW_KEY_F1)
+        code = input::kKeyF1;
     if (code < 0) return;
-    if (code == input::kKeyEscape && action == GLFW_PRESS && c._captured) {
+    c.push(action == GLFW_PRESS ? input::EventType::KeyDown : input::EventType::KeyUp, code);
+    if (code == input::kKeyEscape && action == GLFW_PRESS && c._captured) {  // after the key: see context.h
         glfwSetInputMode(c._captured, GLFW_CURSOR, GLFW_CURSOR_NORMAL);
         c._captured = nullptr;
+        c.push(input::EventType::PointerCapture, 0);
     }
-    c.push(action == GLFW_PRESS ? input::EventType::KeyDown : input::EventType::KeyUp, code);
 }
 
 void GlfwContext::onButton(GLFWwindow* w, int button, int action, int) {
@@ -184,6 +236,7 @@ void GlfwContext::onButton(GLFWwindow* w, int button, int action, int) {
         c._captured = w;  // the first click only captures the pointer
         glfwSetInputMode(w, GLFW_CURSOR, GLFW_CURSOR_DISABLED);
         glfwGetCursorPos(w, &c._lastCursor.x, &c._lastCursor.y);
+        c.push(input::EventType::PointerCapture, 1);
         return;
     }
     c.push(action == GLFW_PRESS ? input::EventType::ButtonDown : input::EventType::ButtonUp,

@@ -23,7 +23,23 @@ TEST(RunOptions, EachRuleNamesItsFlags) {
         const char* message;
     };
     const Case cases[] = {
-        {"no frames", [](RunOptions& o) { o.frames = 0; }, "--frames: expected at least 1, got 0"},
+        {"negative frames", [](RunOptions& o) { o.frames = -1; },
+         "--frames: expected at least 0 (0: until stopped), got -1"},
+        {"until stopped on several PCs",
+         [](RunOptions& o) {
+             o.frames = 0;
+             o.cluster = true;
+         },
+         "--frames 0 and --cluster: expected a frame count with --cluster"},
+        {"saved frames without a folder", [](RunOptions& o) { o.saveEvery = 1; },
+         "--save-frames: needs --out DIR"},
+        {"window images without windows",
+         [](RunOptions& o) {
+             o.out = "x";
+             o.saveEvery = 1;
+             o.saveWindow = true;
+         },
+         "--save-window: needs --save-frames and windows"},
         {"budget without lod", [](RunOptions& o) { o.triangleBudget = 1000; },
          "--triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod 0"},
         {"frame budget without lod", [](RunOptions& o) { o.frameBudgetMs = 16.7; },

@@ -62,7 +62,7 @@ TEST(RunOutput, FramesAndWallsCsvHaveOneRowPerFrameAndWall) {
         out.writeFrame(0, 0.0, head, r);
         r.cell = -1;  // outside every cell
         r.walls.clear();
-        out.writeFrame(1, 1.0 / 60.0, head, r, 2.5);
+        out.writeFrame(1, 1.0 / 60.0, head, r, 2.5, {-1.0, 1.0, -1.0});
     }
     const test::CsvTable frames = test::readCsv(folder / "frames.csv");
     ASSERT_EQ(frames.size(), 2u);
@@ -75,6 +75,10 @@ TEST(RunOutput, FramesAndWallsCsvHaveOneRowPerFrameAndWall) {
     EXPECT_EQ(frames[0].at("geometry_triangles"), "4990");
     EXPECT_EQ(frames[0].at("fallbacks"), "1");  // the one wall's fallback
     EXPECT_EQ(frames[1].at("sync_ms"), "2.500");
+    EXPECT_EQ(frames[0].number("view_yaw_deg"), 0.0);  // the default view, down -Z
+    // (-1, 1, -1): half-way between -Z and -X (45° to the left), 35.26° up (asin(1 / sqrt 3)).
+    EXPECT_NEAR(frames[1].number("view_yaw_deg"), 45.0, 1e-4);
+    EXPECT_NEAR(frames[1].number("view_pitch_deg"), 35.2644, 1e-4);
     EXPECT_EQ(frames[0].at("over_alpha"), "1");
     EXPECT_EQ(frames[0].at("cluster_objects"), "12");
     EXPECT_EQ(frames[0].at("cluster_textured"), "3");

@@ -43,5 +43,24 @@ TEST(ArgsRenamed, TheOldNameIsReadWhenGivenAndBothAreAnError) {
                 ThrowsMessage<Error>(HasSubstr("--hierarchy and --clusters: expected one of them, got both")));
 }
 
+TEST(ArgsSize, WidthByHeight) {
+    EXPECT_EQ(Args({"--resolution", "320x180"}, {}).size("resolution", 1, 16384), glm::ivec2(320, 180));
+    EXPECT_EQ(Args({}, {}).size("resolution", 1, 16384), std::nullopt);
+}
+
+TEST(ArgsSize, ABadSizeNamesTheFlagTheFormAndWhatWasGiven) {
+    const struct {
+        const char* name;
+        const char* given;
+    } cases[] = {{"no x", "320"}, {"no height", "320x"}, {"no width", "x180"}, {"a fraction", "320.5x180"},
+                 {"zero", "0x180"}, {"too large", "320x16385"}, {"a word", "wide"}, {"two x", "3x2x1"}};
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.name);
+        EXPECT_THAT([&] { Args({"--resolution", c.given}, {}).size("resolution", 1, 16384); },
+                    ThrowsMessage<Error>(HasSubstr("--resolution: expected WxH with integers in [1, 16384] (e.g. "
+                                                   "1280x720), got '" + std::string(c.given) + "'")));
+    }
+}
+
 }  // namespace
 }  // namespace cavewall::tools

@@ -108,6 +108,10 @@ std::optional<std::vector<std::string>> CliProcess::waitForLine(const std::regex
     }
 }
 
+void CliProcess::signal(int signal) {
+    if (!exited()) kill(_pid, signal);
+}
+
 bool CliProcess::exited() {
     int status = 0;
     if (!_exitCode && waitpid(_pid, &status, WNOHANG) == _pid) _exitCode = exitCodeOf(status);

@@ -36,6 +36,9 @@ public:
     // True once the child has exited (does not block).
     bool exited();
 
+    // Sends `signal` (SIGINT: Ctrl+C) to the child while it runs.
+    void signal(int signal);
+
     // Reads the rest of stderr and waits for the exit; kills the child after `limit` (exit code
     // -1 then).
     CliResult finish(std::chrono::seconds limit);

@@ -1,4 +1,3 @@
-#include "input/desktop.h"
 #include "input/navigator.h"
 #include "input/pose_math.h"
 
@@ -226,52 +225,6 @@ TEST(Navigator, HandCursorRayInTheCaveFrame) {
     c = nav.handCursor();
     EXPECT_FALSE(c.hit);
     EXPECT_EQ(c.rayLength, 20.0);  // pickDistance
-}
-
-TEST(Desktop, MouseLooksAndTheHandSitsAtTheViewCentre) {
-    DesktopMapper desk;
-    desk.handle({EventType::MouseMove, 0.0, 0, {100.0, 0.0}});  // 100 px right at 0.15°/px
-    // Turned 15° to the right: yaw -15°.
-    EXPECT_NEAR(yawOf(forwardOf(desk.head().orientation)), glm::radians(-15.0), 1e-12);
-    desk.handle({EventType::MouseMove, 0.0, 0, {0.0, -10000.0}});  // far up: clamped at 89°
-    EXPECT_NEAR(forwardOf(desk.head().orientation).y, std::sin(glm::radians(89.0)), 1e-12);
-    // The hand is straight ahead of the eyes: its icon is at the centre of the view.
-    const glm::dvec3 toHand = desk.hand().position - desk.head().position;
-    EXPECT_NEAR(glm::distance(toHand, forwardOf(desk.head().orientation) * 0.5), 0.0, 1e-12);
-    EXPECT_EQ(desk.head().position, glm::dvec3(0, 1.7, 0));
-}
-
-TEST(Desktop, KeysDriveTheNavigator) {
-    DesktopMapper desk;
-    NavigatorConfig config;
-    config.joystickTurns = false;  // desktop: A and D strafe
-    Navigator nav(config);
-    const auto feed = [&](EventType type, int code, glm::dvec2 value = {}) {
-        for (const Event& e : desk.handle({type, 0.0, code, value})) nav.handle(e);
-    };
-    feed(EventType::KeyDown, '2');
-    EXPECT_EQ(nav.mode(), NavMode::Walk);
-    feed(EventType::KeyDown, '1');
-    feed(EventType::KeyDown, 'W');
-    feed(EventType::KeyDown, 'D');
-    EXPECT_EQ(desk.wand().joystick, glm::dvec2(1.0, 1.0));
-    feed(EventType::KeyDown, kKeyShift);  // ×4
-    for (int i = 0; i < 5 * 90; ++i) {
-        nav.setTracking(desk.head(), desk.hand(), desk.wand());
-        nav.update(kDt);
-    }
-    // Forward (-Z) and right (+X) at 3 m/s × 4 each.
-    EXPECT_NEAR(glm::distance(nav.velocity(), glm::dvec3(12.0, 0.0, -12.0)), 0.0, 1e-9);
-    feed(EventType::KeyUp, 'W');
-    feed(EventType::KeyUp, 'D');
-    EXPECT_EQ(desk.wand().joystick, glm::dvec2(0.0));
-    feed(EventType::ButtonDown, 0);
-    EXPECT_TRUE(desk.wand().pressed(0));
-    feed(EventType::Scroll, 0, {0.0, 2.0});  // two steps of 1.25 while Shift is held: 1.5625 × 4
-    feed(EventType::KeyUp, kKeyShift);
-    nav.setTracking(desk.head(), desk.hand(), desk.wand());
-    run(nav, 5.0);
-    EXPECT_NEAR(glm::length(nav.velocity()), 3.0 * 1.5625, 1e-9);  // the trigger flies at the scrolled speed
 }
 
 }  // namespace

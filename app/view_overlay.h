@@ -1,0 +1,35 @@
+#pragma once
+// What a windowed session shows besides the scene: one status line over each window (the
+// navigation mode, the movement speed, the last frame's time and "F1: help"), or the help page
+// while it is toggled on, and each window's title. Plain text; gl::Context draws it
+// (display/overlay_text.h) and never into saved or compared images.
+
+#include "display/overlay_text.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cavewall::app {
+
+struct ViewStatus {
+    std::string_view navigation;     // "fly", "walk", "grab", "guided" or "none"
+    std::optional<double> speed;     // m/s of a movement key (the desktop), else none
+    double frameMs = 0.0;            // the last frame's time
+    bool help = false;               // the help page instead of the status line
+    double degreesPerPixel = 0.15;   // mouse look, for the help page
+};
+
+// The status line, e.g. "fly | 2.50 m/s | 16.7 ms | F1: help"; with help, the help page
+// (helpLines) followed by that line.
+display::OverlayText viewOverlay(const ViewStatus& status);
+
+// The keys of the desktop fallback and the session (input/desktop_navigator.h,
+// input/session_keys.h), one per line.
+std::vector<std::string> helpLines(double degreesPerPixel);
+
+// "cavewall - <screen> - <navigation>".
+std::string windowTitle(std::string_view screen, std::string_view navigation);
+
+}  // namespace cavewall::app

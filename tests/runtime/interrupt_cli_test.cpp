@@ -1,0 +1,72 @@
+// Ctrl+C ends `cavewall run` within a frame, with complete files and the summary (app/interrupt.h).
+#include "tests/runtime/run_cli_support.h"
+#include "tests/support/csv_table.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <thread>
+
+namespace cavewall::test {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+std::string readText(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// Complete lines (ended by '\n') in `file` so far; 0 while it does not exist.
+long completeLines(const fs::path& file) {
+    const std::string text = readText(file);
+    return static_cast<long>(std::count(text.begin(), text.end(), '\n'));
+}
+
+// Polls `file` until it holds `lines` complete lines, the run ends, or a minute passes.
+bool waitForLines(CliProcess& run, const fs::path& file, long lines) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+    while (completeLines(file) < lines) {
+        if (run.exited() || std::chrono::steady_clock::now() > deadline) return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));  // a polling interval, not a wait for a state
+    }
+    return true;
+}
+
+TEST(RunInterrupt, CtrlCEndsTheRunWithCompleteFilesAndTheSummary) {
+    const fs::path out = outputDir("interrupt");
+    std::vector<std::string> args = wallRun(out, "sim:walk?seed=3", 100000);
+    args.insert(args.end(), {"--resolution", "64x64"});
+    CliProcess run(args);
+    // The header and 10 frames' rows (the files are flushed after every frame).
+    ASSERT_TRUE(waitForLines(run, out / "frames.csv", 11)) << run.finish(std::chrono::seconds(10)).err;
+    run.signal(SIGINT);
+    const CliResult r = run.finish(std::chrono::seconds(60));
+    EXPECT_EQ(r.exitCode, 128 + SIGINT) << r.err;
+    // The summary, with the frames drawn, and how the run ended.
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.out, m, std::regex("run: ([0-9]+) frames on "))) << r.out;
+    EXPECT_THAT(r.out, HasSubstr("run: stopped after " + m[1].str() + " frames: interrupted"));
+    // Every row complete (parseCsv refuses a row with fewer cells than the header) and ended
+    // by a line break; one row per frame drawn, numbered 0, 1, ...
+    const std::string frames = readText(out / "frames.csv");
+    ASSERT_FALSE(frames.empty());
+    EXPECT_EQ(frames.back(), '\n');
+    const CsvTable rows = parseCsv(frames, "frames.csv");
+    ASSERT_EQ(rows.size(), std::stoul(m[1]));
+    for (std::size_t i = 0; i < rows.size(); ++i) EXPECT_EQ(rows[i].at("frame"), std::to_string(i));
+    // walls.csv: complete too, and it has the rows of the frames drawn (the plant has walls).
+    const std::string walls = readText(out / "walls.csv");
+    EXPECT_EQ(walls.back(), '\n');
+    const CsvTable wallRows = parseCsv(walls, "walls.csv");
+    EXPECT_FALSE(wallRows.empty());
+    EXPECT_EQ(wallRows.back().at("frame"), rows.back().at("frame"));
+}
+
+}  // namespace
+}  // namespace cavewall::test

@@ -1,0 +1,28 @@
+#pragma once
+// The flags `cavewall run` and `cavewall view` share: parsed once into app::RunOptions, and the
+// session's summary printed the same way for both.
+
+#include "app/run_options.h"
+#include "tools/args.h"
+
+#include <string_view>
+#include <vector>
+
+namespace cavewall::tools {
+
+// The command's words, with the flags that take no value known.
+Args sessionArgs(const std::vector<std::string>& words);
+
+// Every flag both commands accept (names without "--"); `run` adds --scene.
+std::vector<std::string_view> sessionFlags();
+
+// Reads every flag of sessionFlags() present in `args` into a copy of `defaults` (the
+// command's defaults: display, tracker, frames, start, windows) and validates the result.
+// --resolution WxH replaces every screen's resolution. Throws Error naming the flag.
+app::RunOptions parseSessionOptions(const Args& args, app::RunOptions defaults);
+
+// Prints the summary ("<command>: N frames on ...", start-up times, and how the session ended
+// when it was stopped) and returns the exit code: 0, or 128 + the signal when interrupted.
+int reportSession(std::string_view command, const app::RunOptions& options, const app::RunSummary& summary);
+
+}  // namespace cavewall::tools
