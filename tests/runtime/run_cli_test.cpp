@@ -251,7 +251,7 @@ TEST(RunCli, BadFlagsAndSpecsGiveClearErrors) {
         {"nav", {"--nav", "swim"}, "--nav: expected one of guided, fly, walk, none, got 'swim'"},
         {"tracker", {"--tracker", "sim:run"}, "tracker 'sim:run'"},
         {"unknown flag", {"--speed", "2"}, "--speed: unknown flag"},
-        {"frames", {"--frames", "0"}, "--frames: expected an integer in [1, "},
+        {"frames", {"--frames", "-1"}, "--frames: expected an integer in [0, "},
         {"budget without levels", {"--triangle-budget", "5000"},
          "--triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod 0"},
         {"negative lod", {"--lod", "-1"}, "--lod: expected a number in [0"},
