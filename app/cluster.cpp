@@ -125,7 +125,8 @@ std::vector<std::vector<std::uint8_t>> Cluster::gatherBytes(const std::vector<st
         for (int s : sizes) offsets.push_back(total), total += s;
         all.resize(static_cast<std::size_t>(total));
     }
-    MPI_Igatherv(bytes.data(), size, MPI_BYTE, all.data(), sizes.data(), offsets.data(), MPI_BYTE, 0, MPI_COMM_WORLD, &r);
+    MPI_Igatherv(bytes.data(), size, MPI_BYTE, all.data(), sizes.data(), offsets.data(), MPI_BYTE, 0, MPI_COMM_WORLD,
+                 &r);
     wait(&r, "gather", _timeout);
     std::vector<std::vector<std::uint8_t>> out;
     for (int i = 0; i < static_cast<int>(sizes.size()); ++i)

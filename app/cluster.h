@@ -20,12 +20,12 @@ namespace cavewall::app {
 // Everything a rank needs to render frame `frame` exactly as rank 0 would.
 struct FrameState {
     std::uint64_t frame = 0;
-    double time = 0.0;                          // seconds since the run started
-    glm::dvec3 headPosition{0.0};               // cave frame
+    double time = 0.0;             // seconds since the run started
+    glm::dvec3 headPosition{0.0};  // cave frame
     glm::dquat headOrientation{1, 0, 0, 0};
     glm::dmat4 worldFromCave{1.0};
-    std::vector<std::uint8_t> payload;          // runtime state (zones, blend weights), opaque here
-    bool quit = false;                          // rank 0 says: no more frames
+    std::vector<std::uint8_t> payload;  // runtime state (zones, blend weights), opaque here
+    bool quit = false;                  // rank 0 says: no more frames
 };
 
 class Cluster {

@@ -109,7 +109,8 @@ bool decodeImages(const std::vector<std::uint8_t>& bytes, std::vector<scenes::Sc
         scenes::ScreenImage i;
         std::int32_t screen = 0, image = 0, w = 0, h = 0;
         std::vector<std::uint8_t> stem;
-        if (!r.get(screen) || !r.get(image) || !r.getBytes(stem) || !r.get(w) || !r.get(h) || !r.getBytes(i.pixels.rgba))
+        if (!r.get(screen) || !r.get(image) || !r.getBytes(stem) || !r.get(w) || !r.get(h) ||
+            !r.getBytes(i.pixels.rgba))
             return false;
         if (w < 0 || h < 0 || i.pixels.rgba.size() != std::size_t(w) * std::size_t(h) * 4) return false;
         i.screen = screen;

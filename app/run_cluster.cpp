@@ -34,8 +34,16 @@ double receiveFrame(app::Cluster& cluster, walkthrough::FrameInput& input) {
 namespace {
 
 std::vector<std::uint8_t> statsBytes(const walkthrough::FrameResult& r, double syncMs) {
-    const double values[11] = {r.frameMs, r.cpuMs, r.gpuMs, double(r.stats.triangles), double(r.stats.drawCalls), syncMs,
-                               double(r.warpFallbacks), r.maxErrorDeg, r.maxErrorPixels, double(r.geometryTriangles),
+    const double values[11] = {r.frameMs,
+                               r.cpuMs,
+                               r.gpuMs,
+                               double(r.stats.triangles),
+                               double(r.stats.drawCalls),
+                               syncMs,
+                               double(r.warpFallbacks),
+                               r.maxErrorDeg,
+                               r.maxErrorPixels,
+                               double(r.geometryTriangles),
                                double(r.texturesOverAlpha)};
     std::vector<std::uint8_t> bytes(sizeof values);
     std::memcpy(bytes.data(), values, sizeof values);
@@ -52,7 +60,8 @@ double combineFrame(app::Cluster& cluster, walkthrough::FrameResult& r, double s
         return std::find(screens.begin(), screens.end(), i.screen) == screens.end();
     });
     const auto stats = cluster.gatherBytes(statsBytes(r, syncMs));
-    const auto images = cluster.gatherBytes(r.images.empty() ? std::vector<std::uint8_t>{} : app::encodeImages(r.images));
+    const auto images =
+        cluster.gatherBytes(r.images.empty() ? std::vector<std::uint8_t>{} : app::encodeImages(r.images));
     if (cluster.rank() != 0) return syncMs;
     r.stats.triangles = 0;
     r.stats.drawCalls = 0;
@@ -90,7 +99,8 @@ double combineFrame(app::Cluster& cluster, walkthrough::FrameResult& r, double s
 #else  // no MPI in this build
 
 std::unique_ptr<app::Cluster> openCluster(const app::RunOptions& o) {
-    if (o.cluster) throw Error("--cluster: this build has no MPI (configure with -DCAVEWALL_WITH_MPI=ON and install Open MPI)");
+    if (o.cluster)
+        throw Error("--cluster: this build has no MPI (configure with -DCAVEWALL_WITH_MPI=ON and install Open MPI)");
     return nullptr;
 }
 

@@ -8,7 +8,6 @@
 
 namespace cavewall::app {
 
-
 namespace {
 
 // The CAVE floor at the start of the walk path (path points are eye positions), facing along it.
@@ -44,8 +43,9 @@ std::unique_ptr<input::DesktopNavigator> desktopFor(const RunOptions& o, const s
     if (o.window != app::WindowMode::Window)
         throw Error("--tracker desktop: expected --window (keyboard and mouse come from the windows)");
     if (o.record)
-        throw Error("--record: expected a tracker to record, got --tracker desktop (the desktop's keys and mouse "
-                    "are not recorded)");
+        throw Error(
+            "--record: expected a tracker to record, got --tracker desktop (the desktop's keys and mouse "
+            "are not recorded)");
     input::DesktopNavigatorConfig c;
     c.speed = input::viewSpeed(glm::length(scene.bounds().size()));
     c.eyeHeight = d.eyeHeight;
@@ -87,17 +87,17 @@ void placeTracked(input::Navigator& navigator, const RunOptions& o, const scenes
 
 std::optional<input::NavMode> navMode(Navigation nav, const scenes::SceneDescription& d, bool desktop) {
     switch (nav) {
-    case Navigation::Auto:
-        if (d.walkPath.size() >= 2) return input::NavMode::Guided;
-        return desktop ? std::optional(input::NavMode::Fly) : std::nullopt;
-    case Navigation::Guided:
-        if (d.walkPath.size() < 2)
-            throw Error("--nav guided: the scene has no walkPath (expected at least 2 points, got " +
-                        std::to_string(d.walkPath.size()) + ")");
-        return input::NavMode::Guided;
-    case Navigation::Fly: return input::NavMode::Fly;
-    case Navigation::Walk: return input::NavMode::Walk;
-    case Navigation::None: return std::nullopt;
+        case Navigation::Auto:
+            if (d.walkPath.size() >= 2) return input::NavMode::Guided;
+            return desktop ? std::optional(input::NavMode::Fly) : std::nullopt;
+        case Navigation::Guided:
+            if (d.walkPath.size() < 2)
+                throw Error("--nav guided: the scene has no walkPath (expected at least 2 points, got " +
+                            std::to_string(d.walkPath.size()) + ")");
+            return input::NavMode::Guided;
+        case Navigation::Fly: return input::NavMode::Fly;
+        case Navigation::Walk: return input::NavMode::Walk;
+        case Navigation::None: return std::nullopt;
     }
     return std::nullopt;
 }
@@ -107,14 +107,10 @@ std::string RunInput::liveTrackerLine() const {
 }
 
 RunInput::RunInput(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d, bool realTime)
-    : _tracker(trackerFor(o)),
-      _pipeline(input::pipelineConfigFor(o.display)),
-      _query(scene),
-      _desktop(desktopFor(o, scene, d, &_query)),
-      _navigator(navigatorConfig(o), &_query),
+    : _tracker(trackerFor(o)), _pipeline(input::pipelineConfigFor(o.display)), _query(scene),
+      _desktop(desktopFor(o, scene, d, &_query)), _navigator(navigatorConfig(o), &_query),
       _mode(navMode(o.nav, d, _desktop != nullptr)),
-      _replay(dynamic_cast<input::ReplaySource*>(_tracker.get()) != nullptr),
-      _realTime(realTime),
+      _replay(dynamic_cast<input::ReplaySource*>(_tracker.get()) != nullptr), _realTime(realTime),
       _start(std::chrono::steady_clock::now()) {
     placeAtPathStart(_navigator, d);
     placeTracked(_navigator, o, scene, d);
@@ -133,9 +129,7 @@ std::string_view RunInput::navigationName() const {
     return input::toString(_desktop ? _desktop->mode() : _navigator.mode());
 }
 
-std::optional<double> RunInput::speed() const {
-    return _desktop ? std::optional(_desktop->speed()) : std::nullopt;
-}
+std::optional<double> RunInput::speed() const { return _desktop ? std::optional(_desktop->speed()) : std::nullopt; }
 
 walkthrough::FrameInput RunInput::next(long i, bool readImages, const std::vector<input::Event>& windowEvents) {
     const double t = static_cast<double>(i) * kRunStep;

@@ -62,10 +62,10 @@ private:
     walkthrough::FrameInput desktopFrame(long frame, double t, const std::vector<input::Event>& windowEvents);
     walkthrough::FrameInput trackedFrame(long frame, double t);
 
-    std::unique_ptr<input::TrackerSource> _tracker;      // null for the desktop fallback
+    std::unique_ptr<input::TrackerSource> _tracker;  // null for the desktop fallback
     input::TrackingPipeline _pipeline;
     app::SceneQuery _query;
-    std::unique_ptr<input::DesktopNavigator> _desktop;   // the desktop fallback
+    std::unique_ptr<input::DesktopNavigator> _desktop;  // the desktop fallback
     input::Navigator _navigator;
     std::optional<input::NavMode> _mode;
     std::unique_ptr<input::Recorder> _recorder;

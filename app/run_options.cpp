@@ -22,10 +22,10 @@ void useRoute(scenes::SceneDescription& description, Route route, const std::str
 
 std::string_view toString(Ending ending) {
     switch (ending) {
-    case Ending::Frames: return "every frame drawn";
-    case Ending::WindowClosed: return "a window was closed";
-    case Ending::Quit: return "quit";
-    case Ending::Interrupted: return "interrupted";
+        case Ending::Frames: return "every frame drawn";
+        case Ending::WindowClosed: return "a window was closed";
+        case Ending::Quit: return "quit";
+        case Ending::Interrupted: return "interrupted";
     }
     return "?";
 }
@@ -33,18 +33,19 @@ std::string_view toString(Ending ending) {
 void validate(const RunOptions& o) {
     if (o.frames < 0) throw Error("--frames: expected at least 0 (0: until stopped), got " + std::to_string(o.frames));
     if (o.frames == 0 && o.cluster)
-        throw Error("--frames 0 and --cluster: expected a frame count with --cluster (every rank draws the same "
-                    "frames), got 0");
-    if (o.out.empty() && o.saveEvery > 0)
-        throw Error("--save-frames: needs --out DIR (the folder the frames go to)");
+        throw Error(
+            "--frames 0 and --cluster: expected a frame count with --cluster (every rank draws the same "
+            "frames), got 0");
+    if (o.out.empty() && o.saveEvery > 0) throw Error("--save-frames: needs --out DIR (the folder the frames go to)");
     if (o.saveWindow && (o.saveEvery == 0 || o.window != WindowMode::Window))
         throw Error("--save-window: needs --save-frames and windows (it saves what the windows show with the frames)");
     if (o.triangleBudget > 0 && !(o.lodPixels > 0.0))
         throw Error("--triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod " +
                     config::formatNumber(o.lodPixels));
     if (o.clusters && o.triangleBudget > 0)
-        throw Error("--clusters and --triangle-budget: expected --frame-budget-ms with --clusters (a time budget), "
-                    "got --triangle-budget");
+        throw Error(
+            "--clusters and --triangle-budget: expected --frame-budget-ms with --clusters (a time budget), "
+            "got --triangle-budget");
     if (o.frameBudgetMs > 0 && !(o.lodPixels > 0.0) && !o.clusters)
         throw Error("--frame-budget-ms: needs levels of detail (--lod PX with PX > 0) or --clusters, got --lod " +
                     config::formatNumber(o.lodPixels));
@@ -56,18 +57,24 @@ void validate(const RunOptions& o) {
     if (o.bakeInterleave != 0 && !o.bakeOnDemand)
         throw Error("--bake-interleave: needs --bake-on-demand (it pauses the background baker)");
     if (o.bakeOnDemand && o.synchronousPaging)
-        throw Error("--bake-on-demand and --sync-paging: expected one of them, got both (synchronous paging waits "
-                    "for textures a background bake may not have made yet)");
+        throw Error(
+            "--bake-on-demand and --sync-paging: expected one of them, got both (synchronous paging waits "
+            "for textures a background bake may not have made yet)");
     if (!o.wallTextures) {
-        const char* other = !o.walls ? "--no-walls" : o.bakeOnDemand ? "--bake-on-demand" : o.clusters ? "--clusters"
-                          : o.transition == Transition::Warp ? "--transition warp" : nullptr;
+        const char* other = !o.walls                           ? "--no-walls"
+                            : o.bakeOnDemand                   ? "--bake-on-demand"
+                            : o.clusters                       ? "--clusters"
+                            : o.transition == Transition::Warp ? "--transition warp"
+                                                               : nullptr;
         if (other)
-            throw Error(std::string("--no-textures and ") + other + ": expected one of them, got both (the control "
+            throw Error(std::string("--no-textures and ") + other +
+                        ": expected one of them, got both (the control "
                         "draws the walls' cells as geometry and no texture, blended)");
     }
     if (o.bakeOnDemand && o.cluster)
-        throw Error("--bake-on-demand and --cluster: expected one of them, got both (cluster ranks read one "
-                    "finished bake)");
+        throw Error(
+            "--bake-on-demand and --cluster: expected one of them, got both (cluster ranks read one "
+            "finished bake)");
 }
 
 }  // namespace cavewall::app

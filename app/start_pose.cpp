@@ -12,14 +12,14 @@
 namespace cavewall::app {
 namespace {
 
-constexpr int kGrid = 9;              // columns per side of the search grid
-constexpr int kDirections = 16;       // horizontal rays from a candidate eye
-constexpr double kMaxView = 100.0;    // m, the longest ray that counts for the facing
+constexpr int kGrid = 9;            // columns per side of the search grid
+constexpr int kDirections = 16;     // horizontal rays from a candidate eye
+constexpr double kMaxView = 100.0;  // m, the longest ray that counts for the facing
 const double kUpCos = std::cos(glm::radians(25.0));
 
 struct Hit {
     double t = 0.0;
-    glm::dvec3 normal{0.0};           // world, unit, the face's front
+    glm::dvec3 normal{0.0};  // world, unit, the face's front
 };
 
 // Slab test of a ray against a box within [0, maxT].
@@ -46,7 +46,8 @@ void hitsOf(const scenes::Scene& scene, const scenes::Object& o, const glm::dvec
     const glm::dmat4& m = o.worldFromModel;
     for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
         std::array<glm::dvec3, 3> p;
-        for (int k = 0; k < 3; ++k) p[k] = glm::dvec3(m * glm::dvec4(glm::dvec3(mesh.positions[mesh.indices[i + k]]), 1.0));
+        for (int k = 0; k < 3; ++k)
+            p[k] = glm::dvec3(m * glm::dvec4(glm::dvec3(mesh.positions[mesh.indices[i + k]]), 1.0));
         const auto t = rayTriangle(origin, dir, p[0], p[1], p[2]);
         if (!t || *t > maxT) continue;
         glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
@@ -68,7 +69,8 @@ std::optional<double> lowestFloor(const scenes::Scene& scene, const scenes::Boun
     const double maxT = box.size().y + 2.0;
     std::vector<Hit> hits;
     for (const scenes::Object& o : scene.objects)
-        if (large(o, minSide) && meetsBox(origin, down, o.worldBounds, maxT)) hitsOf(scene, o, origin, down, maxT, hits);
+        if (large(o, minSide) && meetsBox(origin, down, o.worldBounds, maxT))
+            hitsOf(scene, o, origin, down, maxT, hits);
     std::optional<double> lowest;
     for (const Hit& h : hits)
         if (h.normal.y >= kUpCos && (!lowest || origin.y - h.t < *lowest)) lowest = origin.y - h.t;
@@ -77,7 +79,7 @@ std::optional<double> lowestFloor(const scenes::Scene& scene, const scenes::Boun
 
 struct Look {
     bool insideSolid = true;
-    double yaw = 0.0;                 // the most open direction
+    double yaw = 0.0;  // the most open direction
 };
 
 // The 16 horizontal rays from `eye` through every object: inside a solid, and the facing.
@@ -91,7 +93,8 @@ Look lookAround(const scenes::Scene& scene, const glm::dvec3& eye) {
         std::vector<Hit> hits;
         for (const scenes::Object& o : scene.objects)
             if (meetsBox(eye, dir, o.worldBounds, kMaxView)) hitsOf(scene, o, eye, dir, kMaxView, hits);
-        const auto first = std::min_element(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) { return a.t < b.t; });
+        const auto first =
+            std::min_element(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) { return a.t < b.t; });
         if (first != hits.end() && glm::dot(first->normal, dir) > 0.0) ++backs;
         const double free = first == hits.end() ? kMaxView : first->t;
         if (free > longest) {

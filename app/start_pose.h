@@ -24,10 +24,10 @@
 namespace cavewall::app {
 
 struct StartPose {
-    glm::dvec3 eye{0.0};          // world, metres: where the head (cyclopean eye) starts
-    double yaw = 0.0;             // radians about +Y; 0 looks down -Z
-    bool onFloor = false;         // true: standing on a floor found inside the model
-    double floorY = 0.0;          // world y of that floor (onFloor only)
+    glm::dvec3 eye{0.0};   // world, metres: where the head (cyclopean eye) starts
+    double yaw = 0.0;      // radians about +Y; 0 looks down -Z
+    bool onFloor = false;  // true: standing on a floor found inside the model
+    double floorY = 0.0;   // world y of that floor (onFloor only)
 };
 
 // The floor search above; nullopt when no column qualifies (an empty scene, an object with no

@@ -14,11 +14,11 @@
 namespace cavewall::app {
 
 struct ViewStatus {
-    std::string_view navigation;     // "fly", "walk", "grab", "guided" or "none"
-    std::optional<double> speed;     // m/s of a movement key (the desktop), else none
-    double frameMs = 0.0;            // the last frame's time
-    bool help = false;               // the help page instead of the status line
-    double degreesPerPixel = 0.15;   // mouse look, for the help page
+    std::string_view navigation;    // "fly", "walk", "grab", "guided" or "none"
+    std::optional<double> speed;    // m/s of a movement key (the desktop), else none
+    double frameMs = 0.0;           // the last frame's time
+    bool help = false;              // the help page instead of the status line
+    double degreesPerPixel = 0.15;  // mouse look, for the help page
 };
 
 // The status line, e.g. "fly | 2.50 m/s | 16.7 ms | F1: help"; with help, the help page

@@ -76,7 +76,8 @@ void BM_BakeTexture(benchmark::State& state) {
         const walls::WallContents c = walls::wallContents(scene, d, table, t.wall, side);
         const glm::ivec2 res = walls::bakeResolution(t.resolution, cap);
         const Clock::time_point a = Clock::now();
-        const scenes::Image image = renderer.render(walls::quadSeenFrom(plan.walls[t.wall].quad, side), t.samplingPoint, res, c.baked);
+        const scenes::Image image =
+            renderer.render(walls::quadSeenFrom(plan.walls[t.wall].quad, side), t.samplingPoint, res, c.baked);
         const Clock::time_point b = Clock::now();
         walls::writeMipFile(benchFolder() / "one.tx", walls::premultipliedMipChain(image));
         renderMs += ms(b - a);
@@ -111,7 +112,8 @@ void BM_BakeLodAgainstFullDetail(benchmark::State& state) {
     options.alphaDeg = 10.0;
     options.minZoneSize = 1.0;
     options.pixelsPerDegree = 10.0;
-    const walls::WallSetup setup = walls::prepareWalls(scene, d, walls::planOptionsFor(options, walls::WallKind::Flat, 512));
+    const walls::WallSetup setup =
+        walls::prepareWalls(scene, d, walls::planOptionsFor(options, walls::WallKind::Flat, 512));
     const Clock::time_point built = Clock::now();
     gl::WallTextureRenderer full(scene, 0.35f, 0.0);
     const Clock::time_point fullMade = Clock::now();

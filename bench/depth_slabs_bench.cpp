@@ -83,7 +83,8 @@ std::vector<double> parseBorders(const std::string& text) {
     while (std::getline(in, item, ',')) {
         char* end = nullptr;
         const double v = std::strtod(item.c_str(), &end);
-        if (item.empty() || *end != '\0' || !(v > 0.0) || !std::isfinite(v) || (!borders.empty() && v <= borders.back()))
+        if (item.empty() || *end != '\0' || !(v > 0.0) || !std::isfinite(v) ||
+            (!borders.empty() && v <= borders.back()))
             throw std::runtime_error("partition \"" + text + "\": expected increasing positive metres, got \"" + item +
                                      "\"");
         borders.push_back(v);
@@ -126,9 +127,10 @@ void tileShares(const std::filesystem::path& folder, const std::vector<double>& 
             }
         if (x1 > x0) boxed += double(x1 - x0) * (y1 - y0);
     }
-    std::printf("bake %s: %zu textures; texels in %d x %d-texel depth tiles with any surface: %.1f %%; in the "
-                "rectangle around those tiles: %.1f %%\n",
-                folder.string().c_str(), manifest.textures.size(), kTile, kTile, 100.0 * any / all, 100.0 * boxed / all);
+    std::printf(
+        "bake %s: %zu textures; texels in %d x %d-texel depth tiles with any surface: %.1f %%; in the "
+        "rectangle around those tiles: %.1f %%\n",
+        folder.string().c_str(), manifest.textures.size(), kTile, kTile, 100.0 * any / all, 100.0 * boxed / all);
     for (std::size_t b = 0; b < borders.size(); ++b)
         std::printf("  with a surface nearer than %g m: %.1f %%\n", borders[b], 100.0 * near[b] / all);
 }
@@ -145,20 +147,26 @@ int main(int argc, char** argv) try {
             if (i + 1 >= argc) throw std::runtime_error(a + ": expected a value");
             return std::strtod(argv[++i], nullptr);
         };
-        if (a == "--alpha") options.alphaDeg = value();
-        else if (a == "--ppd") options.pixelsPerDegree = value();
-        else if (a == "--min-zone") options.minZoneSize = value();
-        else if (a == "--max-res") options.maxResolution = int(value());
+        if (a == "--alpha")
+            options.alphaDeg = value();
+        else if (a == "--ppd")
+            options.pixelsPerDegree = value();
+        else if (a == "--min-zone")
+            options.minZoneSize = value();
+        else if (a == "--max-res")
+            options.maxResolution = int(value());
         else if (a == "--bake") {
             if (i + 1 >= argc) throw std::runtime_error("--bake: expected a depth bake's folder");
             bake = argv[++i];
-        }
-        else if (scenePath.empty()) scenePath = a;
-        else partitions.push_back(a);
+        } else if (scenePath.empty())
+            scenePath = a;
+        else
+            partitions.push_back(a);
     }
     if (scenePath.empty())
-        throw std::runtime_error("usage: cavewall_bench_depth_slabs SCENE [--alpha DEG] [--ppd N] [--min-zone M] "
-                                 "[--max-res N] [--bake DEPTH_BAKE_FOLDER] [PARTITION...]");
+        throw std::runtime_error(
+            "usage: cavewall_bench_depth_slabs SCENE [--alpha DEG] [--ppd N] [--min-zone M] "
+            "[--max-res N] [--bake DEPTH_BAKE_FOLDER] [PARTITION...]");
     if (partitions.empty()) partitions = {"3", "6", "8", "12", "2,6", "4,12", "1.5,4,10"};
     walls::validatePlanOptions(options);
 
@@ -201,8 +209,10 @@ int main(int argc, char** argv) try {
                     double(flat.textures.size()) / total.textures, total.mtexels, total.farMtexels,
                     flatMtexels / total.farMtexels, perLayer.c_str(), seconds);
     }
-    std::printf("floor: a layer of zero depth needs %d textures (%.0f Mtexels): one per wall side and far wall "
-                "at least\n", floor.textures, floor.mtexels);
+    std::printf(
+        "floor: a layer of zero depth needs %d textures (%.0f Mtexels): one per wall side and far wall "
+        "at least\n",
+        floor.textures, floor.mtexels);
     if (!bake.empty()) {
         std::vector<double> borders;
         for (const std::string& p : partitions)

@@ -57,14 +57,14 @@ struct Fixture {
         glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
         const glm::dvec3 up(0, 1, 0);
         for (const glm::dvec3& eye : description.walkPath)
-            for (const glm::dvec3& forward : {glm::dvec3(0, 0, -1), glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1),
-                                              glm::dvec3(-1, 0, 0)}) {
+            for (const glm::dvec3& forward :
+                 {glm::dvec3(0, 0, -1), glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1), glm::dvec3(-1, 0, 0)}) {
                 const glm::dvec3 right = glm::cross(forward, up), centre = eye + forward;
                 const display::ScreenQuad quad{centre - right - up, centre + right - up, centre - right + up};
                 views.push_back(display::offAxisFrustum(quad, eye, {0.05, INFINITY}));
             }
-        std::cerr << "plant: " << scene.objects.size() << " objects, " << scene.triangleCount()
-                  << " triangles; " << views.size() << " views; GL_RENDERER " << context->info().renderer << "\n";
+        std::cerr << "plant: " << scene.objects.size() << " objects, " << scene.triangleCount() << " triangles; "
+                  << views.size() << " views; GL_RENDERER " << context->info().renderer << "\n";
     }
 };
 
@@ -76,7 +76,8 @@ void plantFrame(benchmark::State& state, Fixture& f, bool culling) {
     std::size_t view = 0;
     for (auto _ : state) {
         f.timer.begin();
-        const gl::ViewStats s = f.renderer.renderFrustum(f.views[view++ % f.views.size()], glm::dmat4(1.0), target, filter);
+        const gl::ViewStats s =
+            f.renderer.renderFrustum(f.views[view++ % f.views.size()], glm::dmat4(1.0), target, filter);
         f.timer.end();
         glFinish();
         gpuMs += f.timer.waitMs();

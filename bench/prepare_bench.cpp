@@ -64,8 +64,10 @@ int main(int argc, char** argv) {
     std::vector<std::string> scenes;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
-        else scenes.push_back(a);
+        if (a == "--runs" && i + 1 < argc)
+            runs = std::max(1, std::atoi(argv[++i]));
+        else
+            scenes.push_back(a);
     }
     if (scenes.empty()) {
         std::fprintf(stderr, "usage: cavewall_bench_prepare [--runs N] SCENE_DIR...\n");
@@ -79,12 +81,14 @@ int main(int argc, char** argv) {
             for (int r = 0; r < runs; ++r) {
                 const auto start = std::chrono::steady_clock::now();
                 const double cpu = cpuSeconds();
-                const walls::WallSetup s = walls::prepareWalls(scene, d, walls::planOptionsFor({}, walls::WallKind::Flat, 1024));
+                const walls::WallSetup s =
+                    walls::prepareWalls(scene, d, walls::planOptionsFor({}, walls::WallKind::Flat, 1024));
                 const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 const double cpuUsed = cpuSeconds() - cpu;
-                std::printf("%s,%zu,%zu,%d,%.3f,%.3f,%zu,%zu,%zu,%016llx,%016llx\n", path.c_str(), scene.objects.size(), d.walls.size(),
-                            r, wall, cpuUsed, s.plan.sides.size(), s.plan.beyond.size(), s.plan.textures.size(),
-                            (unsigned long long)planHash(s.plan), (unsigned long long)contentsHash(s));
+                std::printf("%s,%zu,%zu,%d,%.3f,%.3f,%zu,%zu,%zu,%016llx,%016llx\n", path.c_str(), scene.objects.size(),
+                            d.walls.size(), r, wall, cpuUsed, s.plan.sides.size(), s.plan.beyond.size(),
+                            s.plan.textures.size(), (unsigned long long)planHash(s.plan),
+                            (unsigned long long)contentsHash(s));
                 std::fflush(stdout);
             }
         }

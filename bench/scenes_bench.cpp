@@ -29,7 +29,8 @@ struct Fixture {
         plant.scene.objects.clear();
         for (int i = 0; i < tiles; ++i)
             for (int j = 0; j < tiles; ++j) {
-                const glm::dmat4 shift = glm::translate(glm::dmat4(1.0), glm::dvec3(100.0 * (i - tiles / 2), 0, 100.0 * (j - tiles / 2)));
+                const glm::dmat4 shift =
+                    glm::translate(glm::dmat4(1.0), glm::dvec3(100.0 * (i - tiles / 2), 0, 100.0 * (j - tiles / 2)));
                 for (const Object& o : hall) addObject(plant.scene, o.mesh, shift * o.worldFromModel, o.name, o.role);
             }
         // Cell assignment as loadScene does it, so the cell filter has something to filter.
@@ -42,7 +43,8 @@ struct Fixture {
         for (const glm::dvec3& eye : plant.description.walkPath)
             for (int dir = 0; dir < 4; ++dir) {
                 const double a = glm::radians(90.0 * dir);
-                views.push_back(projection * glm::lookAt(eye, eye + glm::dvec3(std::sin(a), 0, -std::cos(a)), {0, 1, 0}));
+                views.push_back(projection *
+                                glm::lookAt(eye, eye + glm::dvec3(std::sin(a), 0, -std::cos(a)), {0, 1, 0}));
                 viewCells.push_back(findCell(plant.description.cells, eye));
             }
     }
@@ -59,8 +61,8 @@ void report(benchmark::State& state, std::size_t objects, std::size_t triangles,
     state.counters["triangles"] = static_cast<double>(s.triangleCount());
     state.counters["keptObjects"] = static_cast<double>(objects) / static_cast<double>(views);
     state.counters["keptTriangles"] = static_cast<double>(triangles) / static_cast<double>(views);
-    state.counters["views/s"] = benchmark::Counter(static_cast<double>(state.iterations() * views),
-                                                   benchmark::Counter::kIsRate);
+    state.counters["views/s"] =
+        benchmark::Counter(static_cast<double>(state.iterations() * views), benchmark::Counter::kIsRate);
 }
 
 std::size_t trianglesOf(const Scene& s, const std::vector<int>& kept) {

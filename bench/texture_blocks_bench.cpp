@@ -51,7 +51,8 @@ const Sample& sample() {
             out.textures.push_back(scenes::readMipLevels(files[i]));
             out.tiffBytes += std::filesystem::file_size(files[i]);
         }
-        std::cerr << "texture sample: " << out.textures.size() << " of " << files.size() << " files in " << folder << "\n";
+        std::cerr << "texture sample: " << out.textures.size() << " of " << files.size() << " files in " << folder
+                  << "\n";
         return out;
     }();
     return s;
@@ -94,7 +95,7 @@ void encode(benchmark::State& state, walls::TextureFormat format) {
             gpuBytes += blocks.bytes();
             rgbaBytes += walls::TextureLevels(s.textures[i]).bytes();
             error += metrics::squaredError(overGrey(walls::decodeLevel(blocks.blocks[0], format)),
-                                          overGrey(s.textures[i][0]));
+                                           overGrey(s.textures[i][0]));
             state.ResumeTiming();
         }
     }

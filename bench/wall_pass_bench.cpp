@@ -151,8 +151,10 @@ struct Fixture {
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, srgbTarget ? framebuffer.id() : unormFramebuffer.id());
         glViewport(0, 0, kSize, kSize);
         glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-        if (srgbTarget) glEnable(GL_FRAMEBUFFER_SRGB);
-        else glDisable(GL_FRAMEBUFFER_SRGB);
+        if (srgbTarget)
+            glEnable(GL_FRAMEBUFFER_SRGB);
+        else
+            glDisable(GL_FRAMEBUFFER_SRGB);
         glDepthMask(GL_TRUE);
         glClearDepth(0.0);
         glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
@@ -168,8 +170,12 @@ double frameMs(Fixture& f, int layers, GLuint texture, GLuint sampler, int textu
         for (int i = 0; i < layers; ++i) {
             gl::DepthWallDraw d{f.wall, {}, texturesPerLayer};
             for (int t = 0; t < texturesPerLayer; ++t)
-                d.layers[t] = {texture, f.depthBlocks.depth.id(), glm::dvec3(0.3, 0.1, 0.2 * (t + 1)), glm::dvec2(1.0, 4.0),
-                               1.0f / texturesPerLayer, f.depthBlocks.skip.id()};
+                d.layers[t] = {texture,
+                               f.depthBlocks.depth.id(),
+                               glm::dvec3(0.3, 0.1, 0.2 * (t + 1)),
+                               glm::dvec2(1.0, 4.0),
+                               1.0f / texturesPerLayer,
+                               f.depthBlocks.skip.id()};
             draws.push_back(d);
         }
         gl::FrameStats stats;
@@ -197,8 +203,10 @@ double fillFrameMs(Fixture& f, const FillCase& c, int layers, GLuint texture = 0
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_GREATER);
         glDepthMask(GL_FALSE);
-        if (c.blend) glEnable(GL_BLEND), glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-        else glDisable(GL_BLEND);
+        if (c.blend)
+            glEnable(GL_BLEND), glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        else
+            glDisable(GL_BLEND);
         glUseProgram(f.fillProgram.id());
         glBindVertexArray(f.fillVertexArray.id());
         glBindTextureUnit(0, texture != 0 ? texture : c.srgbTexture ? f.baked.id() : f.bakedUnorm.id());
@@ -266,9 +274,9 @@ int main(int argc, char** argv) {
                           {"baked_512/linear_mipmap_linear", f.baked.id(), f.linearMip.id(), 1},
                           {"baked_512/linear_no_mipmap", f.baked.id(), f.bilinear.id(), 1},
                           {"baked_512/two_textures_blending", f.baked.id(), f.nearestMip.id(), 2},
-                      {"depth_512/steps_64", f.baked.id(), f.nearestMip.id(), 1, 64},
-                      {"depth_512/steps_16", f.baked.id(), f.nearestMip.id(), 1, 16},
-                      {"depth_512/two_textures_steps_64", f.baked.id(), f.nearestMip.id(), 2, 64}};
+                          {"depth_512/steps_64", f.baked.id(), f.nearestMip.id(), 1, 64},
+                          {"depth_512/steps_16", f.baked.id(), f.nearestMip.id(), 1, 16},
+                          {"depth_512/two_textures_steps_64", f.baked.id(), f.nearestMip.id(), 2, 64}};
     for (const Case& c : cases)
         benchmark::RegisterBenchmark((std::string("WallLayer/") + c.name).c_str(),
                                      [&f, c](benchmark::State& s) {
@@ -290,17 +298,15 @@ int main(int argc, char** argv) {
                                                       {"unorm_target/opaque/unorm_texture", {false, false, false}},
                                                       {"unorm_target/blend/unorm_texture", {false, true, false}}};
     for (const auto& [name, c] : fills)
-        benchmark::RegisterBenchmark((std::string("FillLayer/") + name).c_str(),
-                                     [&f, c = c](benchmark::State& s) {
-                                         layerCost(s, [&](int layers) { return fillFrameMs(f, c, layers); });
-                                     })
+        benchmark::RegisterBenchmark(
+            (std::string("FillLayer/") + name).c_str(),
+            [&f, c = c](benchmark::State& s) { layerCost(s, [&](int layers) { return fillFrameMs(f, c, layers); }); })
             ->Arg(4)
             ->Iterations(10)
             ->UseRealTime()
             ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark("FillLayer/compressed/srgb_target/blend", [&f](benchmark::State& s) {
-        compressedFill(s, f);
-    })
+    benchmark::RegisterBenchmark("FillLayer/compressed/srgb_target/blend",
+                                 [&f](benchmark::State& s) { compressedFill(s, f); })
         ->Arg(4)
         ->Iterations(10)
         ->UseRealTime()

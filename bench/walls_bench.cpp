@@ -78,7 +78,8 @@ void BM_ErrorWithin(benchmark::State& state) {
     std::size_t i = 0;
     for (auto _ : state) {
         const glm::dvec3 e = points[i++ & 1023];
-        benchmark::DoNotOptimize(walls::errorWithin(e, {e.x + 0.7, 1.6, e.z + 0.4}, kWall, walls::kInfiniteDepth, glm::radians(10.0)));
+        benchmark::DoNotOptimize(
+            walls::errorWithin(e, {e.x + 0.7, 1.6, e.z + 0.4}, kWall, walls::kInfiniteDepth, glm::radians(10.0)));
     }
 }
 BENCHMARK(BM_ErrorWithin);
@@ -110,7 +111,14 @@ void BM_PlanLargeHall(benchmark::State& state) {
     for (auto _ : state) textures = walls::planZones(d).textures.size();
     state.counters["textures"] = double(textures);
 }
-BENCHMARK(BM_PlanLargeHall)->Arg(48)->Arg(192)->Arg(1000)->Arg(2000)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK(BM_PlanLargeHall)
+    ->Arg(48)
+    ->Arg(192)
+    ->Arg(1000)
+    ->Arg(2000)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->UseRealTime();
 
 }  // namespace
 

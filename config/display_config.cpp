@@ -17,8 +17,7 @@ std::string vecString(glm::dvec3 v) {
 }
 
 StereoMode parseStereo(const JsonNode& node) {
-    const std::string s = node.oneOf(
-        {"mono", "separate", "side-by-side", "top-bottom", "anaglyph", "quad-buffer"});
+    const std::string s = node.oneOf({"mono", "separate", "side-by-side", "top-bottom", "anaglyph", "quad-buffer"});
     if (s == "separate") return StereoMode::Separate;
     if (s == "side-by-side") return StereoMode::SideBySide;
     if (s == "top-bottom") return StereoMode::TopBottom;
@@ -36,15 +35,14 @@ glm::dvec3 position(const JsonNode& node) {
     const glm::dvec3 v = node.vec3();
     for (int i = 0; i < 3; ++i)
         if (std::abs(v[i]) > kMaxCoordinate)
-            node.fail("expected coordinates in [-" + formatNumber(kMaxCoordinate) + ", " + formatNumber(kMaxCoordinate) +
-                      "] m, got " + vecString(v));
+            node.fail("expected coordinates in [-" + formatNumber(kMaxCoordinate) + ", " +
+                      formatNumber(kMaxCoordinate) + "] m, got " + vecString(v));
     return v;
 }
 
 void parseOutput(const JsonNode& node, Screen& screen) {
     node.expectKeys({"window", "headless"});
-    if (node.has("window") == node.has("headless"))
-        node.fail("expected exactly one of 'window' or 'headless'");
+    if (node.has("window") == node.has("headless")) node.fail("expected exactly one of 'window' or 'headless'");
     if (auto h = node.find("headless")) {
         h->expectKeys({"file"});
         if (auto f = h->find("file")) {
@@ -122,18 +120,20 @@ Tracking parseTracking(const JsonNode& node) {
         double worst = 0.0;
         for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j) worst = std::max(worst, std::abs(rtr[i][j] - (i == j)));
-        const glm::dvec4 lastRow(t.caveFromTracker[0][3], t.caveFromTracker[1][3],
-                                 t.caveFromTracker[2][3], t.caveFromTracker[3][3]);
-        if (lastRow != glm::dvec4(0, 0, 0, 1))
-            n->fail("expected the last row to be [0, 0, 0, 1] (a rigid transform)");
+        const glm::dvec4 lastRow(t.caveFromTracker[0][3], t.caveFromTracker[1][3], t.caveFromTracker[2][3],
+                                 t.caveFromTracker[3][3]);
+        if (lastRow != glm::dvec4(0, 0, 0, 1)) n->fail("expected the last row to be [0, 0, 0, 1] (a rigid transform)");
         if (worst > 1e-4 || glm::determinant(r) < 0)
-            n->fail("expected a rotation in the upper 3x3 (orthonormal within 1e-4, det +1), got an "
-                    "error of " + formatNumber(worst) + " and det " + formatNumber(glm::determinant(r)));
+            n->fail(
+                "expected a rotation in the upper 3x3 (orthonormal within 1e-4, det +1), got an "
+                "error of " +
+                formatNumber(worst) + " and det " + formatNumber(glm::determinant(r)));
     }
     for (int r = 0; r < 3; ++r)
         if (std::abs(t.caveFromTracker[3][r]) > kMaxCoordinate)
-            node.at("caveFromTracker").fail("expected a translation within " + formatNumber(kMaxCoordinate) +
-                                            " m, got " + formatNumber(t.caveFromTracker[3][r]) + " m");
+            node.at("caveFromTracker")
+                .fail("expected a translation within " + formatNumber(kMaxCoordinate) + " m, got " +
+                      formatNumber(t.caveFromTracker[3][r]) + " m");
     if (auto n = node.find("latencyMs")) t.latencyMs = n->number(0.0, 500.0);
     if (auto n = node.find("volume")) t.volume = parseVolume(*n);
     return t;
@@ -143,12 +143,12 @@ Tracking parseTracking(const JsonNode& node) {
 
 std::string_view toString(StereoMode mode) {
     switch (mode) {
-    case StereoMode::Mono: return "mono";
-    case StereoMode::Separate: return "separate";
-    case StereoMode::SideBySide: return "side-by-side";
-    case StereoMode::TopBottom: return "top-bottom";
-    case StereoMode::Anaglyph: return "anaglyph";
-    case StereoMode::QuadBuffer: return "quad-buffer";
+        case StereoMode::Mono: return "mono";
+        case StereoMode::Separate: return "separate";
+        case StereoMode::SideBySide: return "side-by-side";
+        case StereoMode::TopBottom: return "top-bottom";
+        case StereoMode::Anaglyph: return "anaglyph";
+        case StereoMode::QuadBuffer: return "quad-buffer";
     }
     return "?";
 }
@@ -158,8 +158,7 @@ DisplayConfig parseDisplayConfig(std::string_view jsonText, const std::string& s
     const JsonNode root = doc.root();
     root.expectKeys({"name", "screens", "viewer", "stereo", "minEyeDistance", "tracking"});
     DisplayConfig c;
-    c.name = root.has("name") ? root.at("name").string()
-                              : std::filesystem::path(source).stem().string();
+    c.name = root.has("name") ? root.at("name").string() : std::filesystem::path(source).stem().string();
     for (const JsonNode& s : root.at("screens").items(1, 256)) c.screens.push_back(parseScreen(s));
     if (auto n = root.find("viewer")) c.viewer = parseViewer(*n);
     if (auto n = root.find("stereo")) c.stereo = parseStereo(*n);
@@ -173,33 +172,33 @@ void validateDisplayConfig(const DisplayConfig& config, const std::string& sourc
     for (std::size_t i = 0; i < config.screens.size(); ++i) {
         const Screen& s = config.screens[i];
         const std::string where = source + ": screens[" + std::to_string(i) + "] '" + s.name + "'";
-        if (!names.insert(s.name).second)
-            throw Error(where + ": duplicate screen name (expected unique names)");
+        if (!names.insert(s.name).second) throw Error(where + ": duplicate screen name (expected unique names)");
         for (const std::string& n : {s.name, s.headless.file})
             if (!n.empty() && !fileNameProblem(n).empty()) throw Error(where + ": " + fileNameProblem(n));
         std::string stem = s.headless.file.empty() ? s.name : s.headless.file;
         for (char& c : stem) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
         if (!stems.insert(stem).second)
-            throw Error(where + ": image file '" + stem + "' is also another screen's (expected unique names and "
+            throw Error(where + ": image file '" + stem +
+                        "' is also another screen's (expected unique names and "
                         "headless files, compared ignoring case)");
         for (const glm::dvec3& corner : {s.lowerLeft, s.lowerRight, s.upperLeft})
             for (int a = 0; a < 3; ++a)
                 if (!(std::abs(corner[a]) <= kMaxCoordinate))
-                    throw Error(where + ": corner " + vecString(corner) + " is out of range (expected coordinates in [-" +
-                                formatNumber(kMaxCoordinate) + ", " + formatNumber(kMaxCoordinate) + "] m)");
+                    throw Error(where + ": corner " + vecString(corner) +
+                                " is out of range (expected coordinates in [-" + formatNumber(kMaxCoordinate) + ", " +
+                                formatNumber(kMaxCoordinate) + "] m)");
         const glm::dvec3 right = s.lowerRight - s.lowerLeft;
         const glm::dvec3 up = s.upperLeft - s.lowerLeft;
         const double width = glm::length(right), height = glm::length(up);
         const double area = glm::length(glm::cross(right, up));
         if (area < kMinScreenEdge * kMinScreenEdge && width >= kMinScreenEdge && height >= kMinScreenEdge)
-            throw Error(where + ": corners are collinear (expected a non-zero area, got " +
-                        formatNumber(area) + " m²)");
+            throw Error(where + ": corners are collinear (expected a non-zero area, got " + formatNumber(area) +
+                        " m²)");
         if (width < kMinScreenEdge || height < kMinScreenEdge)
             throw Error(where + ": screen is degenerate (expected width and height of at least " +
                         formatNumber(kMinScreenEdge) + " m, got " + formatNumber(width) + " m × " +
-                        formatNumber(height) + " m; lowerLeft " + vecString(s.lowerLeft) +
-                        ", lowerRight " + vecString(s.lowerRight) + ", upperLeft " +
-                        vecString(s.upperLeft) + ")");
+                        formatNumber(height) + " m; lowerLeft " + vecString(s.lowerLeft) + ", lowerRight " +
+                        vecString(s.lowerRight) + ", upperLeft " + vecString(s.upperLeft) + ")");
         const double angleDeg = glm::degrees(std::acos(std::clamp(glm::dot(right, up) / (width * height), -1.0, 1.0)));
         if (std::abs(angleDeg - 90.0) > kMaxRightAngleErrorDeg)
             throw Error(where + ": corners are not a rectangle (expected the edges at lowerLeft to meet at 90° ± " +
@@ -207,8 +206,8 @@ void validateDisplayConfig(const DisplayConfig& config, const std::string& sourc
     }
     const Viewer& v = config.viewer;
     if (!(v.near < v.far))
-        throw Error(source + ": viewer: near must be less than far (got near " + formatNumber(v.near) +
-                    " m, far " + formatNumber(v.far) + " m)");
+        throw Error(source + ": viewer: near must be less than far (got near " + formatNumber(v.near) + " m, far " +
+                    formatNumber(v.far) + " m)");
 }
 
 std::vector<int> screensOfRank(const DisplayConfig& config, int rank, int rankCount) {
@@ -216,9 +215,9 @@ std::vector<int> screensOfRank(const DisplayConfig& config, int rank, int rankCo
     for (int i = 0; i < static_cast<int>(config.screens.size()); ++i) {
         const int r = config.screens[i].rank;
         if (r >= rankCount)
-            throw Error(config.name + ": screens[" + std::to_string(i) + "] '" + config.screens[i].name +
-                        "': rank " + std::to_string(r) + " does not exist (expected a rank below " +
-                        std::to_string(rankCount) + ", the number of processes)");
+            throw Error(config.name + ": screens[" + std::to_string(i) + "] '" + config.screens[i].name + "': rank " +
+                        std::to_string(r) + " does not exist (expected a rank below " + std::to_string(rankCount) +
+                        ", the number of processes)");
         if ((r >= 0 ? r : i % rankCount) == rank) out.push_back(i);
     }
     return out;
@@ -234,8 +233,10 @@ DisplayConfig loadDisplayConfig(const std::string& nameOrPath) {
     const bool bareName = !path.has_parent_path() && !path.has_extension();
     if (bareName) path = presetDirectory() / (nameOrPath + ".json");
     if (bareName && !std::filesystem::exists(path))
-        throw Error(nameOrPath + ": no such display configuration (expected a file path or one of "
-                    "the presets cave4, cave6, powerwall, desktop in " + presetDirectory().string() + ")");
+        throw Error(nameOrPath +
+                    ": no such display configuration (expected a file path or one of "
+                    "the presets cave4, cave6, powerwall, desktop in " +
+                    presetDirectory().string() + ")");
     DisplayConfig config = parseDisplayConfig(readTextFile(path), path.string());
     validateDisplayConfig(config, path.string());
     return config;

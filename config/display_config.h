@@ -42,44 +42,44 @@
 namespace cavewall::config {
 
 struct WindowOutput {
-    int monitor = 0;                 // GLFW monitor index
-    glm::ivec2 position{0, 0};       // window position in screen pixels
-    glm::ivec2 size{0, 0};           // window size in pixels; {0, 0} = the screen's resolution
+    int monitor = 0;            // GLFW monitor index
+    glm::ivec2 position{0, 0};  // window position in screen pixels
+    glm::ivec2 size{0, 0};      // window size in pixels; {0, 0} = the screen's resolution
     bool fullscreen = false;
     bool operator==(const WindowOutput&) const = default;
 };
 
 struct HeadlessOutput {
-    std::string file;                // image file stem; empty = the screen's name
+    std::string file;  // image file stem; empty = the screen's name
     bool operator==(const HeadlessOutput&) const = default;
 };
 
 struct Screen {
-    std::string name;                // unique within the configuration
-    glm::dvec3 lowerLeft{0.0};       // corners in the cave frame, metres
+    std::string name;           // unique within the configuration
+    glm::dvec3 lowerLeft{0.0};  // corners in the cave frame, metres
     glm::dvec3 lowerRight{0.0};
     glm::dvec3 upperLeft{0.0};
-    glm::ivec2 resolution{0, 0};     // pixels, width x height
+    glm::ivec2 resolution{0, 0};         // pixels, width x height
     std::optional<WindowOutput> window;  // unset = headless
     HeadlessOutput headless;
-    int rank = -1;                   // cluster mode: MPI rank that renders it; -1 = round-robin
+    int rank = -1;  // cluster mode: MPI rank that renders it; -1 = round-robin
     bool operator==(const Screen&) const = default;
 };
 
 enum class StereoMode { Mono, Separate, SideBySide, TopBottom, Anaglyph, QuadBuffer };
 
 struct Viewer {
-    glm::dvec3 headPosition{0.0, 1.7, 0.0};   // default head position, cave frame
+    glm::dvec3 headPosition{0.0, 1.7, 0.0};          // default head position, cave frame
     glm::dquat headOrientation{1.0, 0.0, 0.0, 0.0};  // default head orientation (identity: looking down -Z)
-    double eyeSeparation = 0.064;             // metres, in [0, 0.2]
-    double near = 0.05;                       // metres, in [1e-6, 1e6]
-    double far = 1000.0;                      // metres, > near; +infinity = infinite far plane
+    double eyeSeparation = 0.064;                    // metres, in [0, 0.2]
+    double near = 0.05;                              // metres, in [1e-6, 1e6]
+    double far = 1000.0;                             // metres, > near; +infinity = infinite far plane
     bool operator==(const Viewer&) const = default;
 };
 
 struct Tracking {
-    glm::dmat4 caveFromTracker{1.0};          // rigid calibration transform (metres)
-    double latencyMs = 0.0;                   // motion-to-photon latency to predict over, [0, 500]
+    glm::dmat4 caveFromTracker{1.0};  // rigid calibration transform (metres)
+    double latencyMs = 0.0;           // motion-to-photon latency to predict over, [0, 500]
     // Where tracked poses are plausible, [min corner, max corner] in the cave frame (metres);
     // unset: the default of config::trackingVolumeOf (display_limits.h).
     std::optional<std::array<glm::dvec3, 2>> volume;
@@ -87,11 +87,11 @@ struct Tracking {
 };
 
 struct DisplayConfig {
-    std::string name;                         // defaults to the file stem
-    std::vector<Screen> screens;              // at least one
+    std::string name;             // defaults to the file stem
+    std::vector<Screen> screens;  // at least one
     Viewer viewer;
     StereoMode stereo = StereoMode::Mono;
-    double minEyeDistance = 1e-3;             // metres, in [1e-9, 1]; see display/off_axis.h
+    double minEyeDistance = 1e-3;  // metres, in [1e-9, 1]; see display/off_axis.h
     Tracking tracking;
     bool operator==(const DisplayConfig&) const = default;
 };

@@ -8,8 +8,9 @@ std::string fileNameProblem(std::string_view name) {
     auto quoted = [&] {
         std::string q;
         for (char c : name.substr(0, 80))
-            q += (c >= 32 && c < 127) ? std::string(1, c) : "\\x" + std::string(1, "0123456789abcdef"[(c >> 4) & 15]) +
-                                                           "0123456789abcdef"[c & 15];
+            q += (c >= 32 && c < 127)
+                     ? std::string(1, c)
+                     : "\\x" + std::string(1, "0123456789abcdef"[(c >> 4) & 15]) + "0123456789abcdef"[c & 15];
         return "'" + q + (name.size() > 80 ? "...'" : "'");
     };
     if (name.empty() || name.size() > 64)

@@ -19,18 +19,18 @@ std::string formatNumber(double value) {
 
 std::string describeJson(const nlohmann::json& value) {
     switch (value.type()) {
-    case nlohmann::json::value_t::null: return "null";
-    case nlohmann::json::value_t::boolean: return value.get<bool>() ? "true" : "false";
-    case nlohmann::json::value_t::number_integer:
-    case nlohmann::json::value_t::number_unsigned:
-    case nlohmann::json::value_t::number_float: return formatNumber(value.get<double>());
-    case nlohmann::json::value_t::string: {
-        const auto& s = value.get_ref<const std::string&>();
-        return s.size() <= 40 ? "\"" + s + "\"" : "a string of " + std::to_string(s.size()) + " characters";
-    }
-    case nlohmann::json::value_t::array: return "an array of " + std::to_string(value.size());
-    case nlohmann::json::value_t::object: return "an object";
-    default: return "an unsupported value";
+        case nlohmann::json::value_t::null: return "null";
+        case nlohmann::json::value_t::boolean: return value.get<bool>() ? "true" : "false";
+        case nlohmann::json::value_t::number_integer:
+        case nlohmann::json::value_t::number_unsigned:
+        case nlohmann::json::value_t::number_float: return formatNumber(value.get<double>());
+        case nlohmann::json::value_t::string: {
+            const auto& s = value.get_ref<const std::string&>();
+            return s.size() <= 40 ? "\"" + s + "\"" : "a string of " + std::to_string(s.size()) + " characters";
+        }
+        case nlohmann::json::value_t::array: return "an array of " + std::to_string(value.size());
+        case nlohmann::json::value_t::object: return "an object";
+        default: return "an unsupported value";
     }
 }
 
@@ -51,9 +51,7 @@ std::string JsonNode::child(std::string_view key) const {
 
 void JsonNode::expectObject() const { expectType(_value->is_object(), "an object"); }
 
-bool JsonNode::has(std::string_view key) const {
-    return _value->is_object() && _value->contains(key);
-}
+bool JsonNode::has(std::string_view key) const { return _value->is_object() && _value->contains(key); }
 
 JsonNode JsonNode::at(std::string_view key) const {
     expectObject();
@@ -85,15 +83,14 @@ std::vector<JsonNode> JsonNode::items(std::size_t minSize, std::size_t maxSize) 
     expectType(_value->is_array(), "an array");
     const std::size_t n = _value->size();
     if (n < minSize || n > maxSize) {
-        std::string expected = minSize == maxSize ? std::to_string(minSize)
-                             : maxSize == SIZE_MAX ? "at least " + std::to_string(minSize)
-                             : std::to_string(minSize) + " to " + std::to_string(maxSize);
+        std::string expected = minSize == maxSize    ? std::to_string(minSize)
+                               : maxSize == SIZE_MAX ? "at least " + std::to_string(minSize)
+                                                     : std::to_string(minSize) + " to " + std::to_string(maxSize);
         fail("expected an array of " + expected + " elements, got " + std::to_string(n));
     }
     std::vector<JsonNode> out;
     out.reserve(n);
-    for (std::size_t i = 0; i < n; ++i)
-        out.emplace_back((*_value)[i], *_source, _path + "[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < n; ++i) out.emplace_back((*_value)[i], *_source, _path + "[" + std::to_string(i) + "]");
     return out;
 }
 
@@ -107,8 +104,7 @@ double JsonNode::number() const {
 double JsonNode::number(double lo, double hi) const {
     const double v = number();
     if (v < lo || v > hi)
-        fail("expected a number in [" + formatNumber(lo) + ", " + formatNumber(hi) + "], got " +
-             formatNumber(v));
+        fail("expected a number in [" + formatNumber(lo) + ", " + formatNumber(hi) + "], got " + formatNumber(v));
     return v;
 }
 
@@ -116,8 +112,7 @@ int JsonNode::integer(int lo, int hi) const {
     const double v = number();
     if (v != std::floor(v)) fail("expected an integer, got " + formatNumber(v));
     if (v < lo || v > hi)
-        fail("expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-             "], got " + formatNumber(v));
+        fail("expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + formatNumber(v));
     return static_cast<int>(v);
 }
 

@@ -14,8 +14,7 @@ std::vector<ScreenView> Display::views(const HeadPose& head) const {
     std::vector<ScreenView> out;
     for (int i = 0; i < static_cast<int>(_quads.size()); ++i) {
         for (const EyePass& pass : eyePasses(_config.stereo, _config.screens[i].resolution)) {
-            const glm::dvec3 eye =
-                eyePosition(head.position, head.orientation, _config.viewer.eyeSeparation, pass.eye);
+            const glm::dvec3 eye = eyePosition(head.position, head.orientation, _config.viewer.eyeSeparation, pass.eye);
             out.push_back({i, pass, offAxisFrustum(_quads[i], eye, depthRange(), _config.minEyeDistance)});
         }
     }

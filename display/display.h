@@ -22,9 +22,9 @@ struct HeadPose {
 
 // One screen seen by one eye in one frame.
 struct ScreenView {
-    int screen = 0;            // index into Display::screens()
-    EyePass pass;              // which eye, and where its pixels go
-    OffAxisFrustum frustum;    // in the cave frame
+    int screen = 0;          // index into Display::screens()
+    EyePass pass;            // which eye, and where its pixels go
+    OffAxisFrustum frustum;  // in the cave frame
 };
 
 class Display {

@@ -143,8 +143,8 @@ FoldoutLayout foldoutLayout(const std::vector<config::Screen>& screens, double p
     double finest = 0.0;
     for (const config::Screen& s : screens) {
         placed.push_back({screenBasis({s.lowerLeft, s.lowerRight, s.upperLeft}), cornersOf(s)});
-        finest = std::max({finest, s.resolution.x / placed.back().basis.width,
-                           s.resolution.y / placed.back().basis.height});
+        finest =
+            std::max({finest, s.resolution.x / placed.back().basis.width, s.resolution.y / placed.back().basis.height});
     }
     const int root = chooseRoot(placed);
     const std::vector<int> order = unfoldAll(placed, root);

@@ -25,8 +25,8 @@
 namespace cavewall::display {
 
 struct FoldoutTile {
-    int screen = 0;                   // index into the screens
-    glm::ivec2 resolution{0, 0};      // that screen's image size, pixels
+    int screen = 0;               // index into the screens
+    glm::ivec2 resolution{0, 0};  // that screen's image size, pixels
     // Affine map from canvas positions to the screen's image positions (both in pixels, x right,
     // y down, origin at the top-left corner), applied to (x, y, 1).
     glm::dmat3 imageFromCanvas{1.0};
@@ -34,14 +34,14 @@ struct FoldoutTile {
 
 struct FoldoutSample {
     int screen = 0;
-    glm::ivec2 pixel{0, 0};           // pixel in that screen's image (x right, y down)
+    glm::ivec2 pixel{0, 0};  // pixel in that screen's image (x right, y down)
     bool operator==(const FoldoutSample&) const = default;
 };
 
 struct FoldoutLayout {
-    glm::ivec2 size{0, 0};            // canvas pixels
+    glm::ivec2 size{0, 0};  // canvas pixels
     double pixelsPerMetre = 0.0;
-    std::vector<FoldoutTile> tiles;   // root first, then in unfolding order
+    std::vector<FoldoutTile> tiles;  // root first, then in unfolding order
 
     // Which screen pixel shows at canvas pixel `canvas` (sampled at its centre): the first tile
     // that covers it, or nullopt for background.

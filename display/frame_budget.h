@@ -47,11 +47,11 @@ public:
 
 private:
     static constexpr int kWindow = 5;
-    static constexpr double kFloorDecay = 0.98;   // halves in about 35 frames
+    static constexpr double kFloorDecay = 0.98;  // halves in about 35 frames
     double _target, _gain;
     double _floor = 0.0;
     std::size_t _budget = 0;
-    double _costs[kWindow] = {};      // ms per triangle of the last frames, a ring
+    double _costs[kWindow] = {};  // ms per triangle of the last frames, a ring
     int _count = 0, _next = 0;
 };
 

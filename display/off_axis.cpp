@@ -9,10 +9,10 @@ namespace cavewall::display {
 
 const char* toString(EyeGuard guard) {
     switch (guard) {
-    case EyeGuard::None: return "none";
-    case EyeGuard::TooClose: return "too-close";
-    case EyeGuard::Behind: return "behind";
-    case EyeGuard::NonFinite: return "non-finite";
+        case EyeGuard::None: return "none";
+        case EyeGuard::TooClose: return "too-close";
+        case EyeGuard::Behind: return "behind";
+        case EyeGuard::NonFinite: return "non-finite";
     }
     return "?";
 }
@@ -114,18 +114,17 @@ FrustumT<T> offAxisFrustumT(const glm::vec<3, T>& ll, const glm::vec<3, T>& lr, 
     return f;
 }
 
-template FrustumT<float> offAxisFrustumT(const glm::vec3&, const glm::vec3&, const glm::vec3&,
-                                         const glm::vec3&, float, float, float);
-template FrustumT<double> offAxisFrustumT(const glm::dvec3&, const glm::dvec3&, const glm::dvec3&,
-                                          const glm::dvec3&, double, double, double);
+template FrustumT<float> offAxisFrustumT(const glm::vec3&, const glm::vec3&, const glm::vec3&, const glm::vec3&, float,
+                                         float, float);
+template FrustumT<double> offAxisFrustumT(const glm::dvec3&, const glm::dvec3&, const glm::dvec3&, const glm::dvec3&,
+                                          double, double, double);
 template FrustumT<long double> offAxisFrustumT(const glm::vec<3, long double>&, const glm::vec<3, long double>&,
                                                const glm::vec<3, long double>&, const glm::vec<3, long double>&,
                                                long double, long double, long double);
 
-OffAxisFrustum offAxisFrustum(const ScreenQuad& screen, glm::dvec3 eye, DepthRange depth,
-                              double minEyeDistance) {
-    const FrustumT<double> f = offAxisFrustumT(screen.lowerLeft, screen.lowerRight, screen.upperLeft, eye,
-                                               depth.near, depth.far, minEyeDistance);
+OffAxisFrustum offAxisFrustum(const ScreenQuad& screen, glm::dvec3 eye, DepthRange depth, double minEyeDistance) {
+    const FrustumT<double> f = offAxisFrustumT(screen.lowerLeft, screen.lowerRight, screen.upperLeft, eye, depth.near,
+                                               depth.far, minEyeDistance);
     return {f.viewFromFrame, f.clipFromView, f.eye, f.eyeDistance, f.guard};
 }
 

@@ -50,8 +50,8 @@ enum class EyeGuard : std::uint8_t {
 const char* toString(EyeGuard guard);
 
 struct DepthRange {
-    double near = 0.05;     // metres, > 0
-    double far = 1000.0;    // metres, > near; +infinity allowed
+    double near = 0.05;   // metres, > 0
+    double far = 1000.0;  // metres, > near; +infinity allowed
 };
 
 // The orthonormal basis of a screen: right, up, normal (towards the front side), and its size.
@@ -76,8 +76,7 @@ struct OffAxisFrustum {
 
 // Computes view and projection for `eye` (in the frame of `screen`). See the policy above.
 // `minEyeDistance` must be > 0; `depth.near` > 0 and < depth.far.
-OffAxisFrustum offAxisFrustum(const ScreenQuad& screen, glm::dvec3 eye, DepthRange depth,
-                              double minEyeDistance = 1e-3);
+OffAxisFrustum offAxisFrustum(const ScreenQuad& screen, glm::dvec3 eye, DepthRange depth, double minEyeDistance = 1e-3);
 
 // The model-view matrix for the GPU: viewFromFrame * frameFromModel, composed in double and
 // only then rounded to float. Because the view translation cancels the model's large offsets

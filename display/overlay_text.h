@@ -16,18 +16,18 @@
 namespace cavewall::display {
 
 struct OverlayText {
-    std::vector<std::string> lines;            // top to bottom; none: nothing is drawn
-    float scale = 2.0f;                        // pixels per font unit
-    float margin = 8.0f;                       // pixels from the window's top-left corner
-    float padding = 6.0f;                      // pixels of backdrop around the text
-    glm::vec4 colour{1.0f, 1.0f, 1.0f, 1.0f};  // text, straight alpha
-    glm::vec4 backdrop{0.0f, 0.0f, 0.0f, 0.6f};// behind the text, straight alpha
+    std::vector<std::string> lines;              // top to bottom; none: nothing is drawn
+    float scale = 2.0f;                          // pixels per font unit
+    float margin = 8.0f;                         // pixels from the window's top-left corner
+    float padding = 6.0f;                        // pixels of backdrop around the text
+    glm::vec4 colour{1.0f, 1.0f, 1.0f, 1.0f};    // text, straight alpha
+    glm::vec4 backdrop{0.0f, 0.0f, 0.0f, 0.6f};  // behind the text, straight alpha
     bool operator==(const OverlayText&) const = default;
 };
 
 struct OverlayVertex {
-    glm::vec2 position;                        // window pixels, y down
-    glm::vec4 colour;                          // straight alpha
+    glm::vec2 position;  // window pixels, y down
+    glm::vec4 colour;    // straight alpha
 };
 
 // Triangles (three vertices each), the backdrop's first, to be drawn in order with alpha

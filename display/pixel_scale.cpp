@@ -106,8 +106,8 @@ double maxStretch(const glm::dmat3& m) {
     double largest = std::max({a[0][0], a[1][1], a[2][2]});
     if (off > 0.0) {
         const double q = (a[0][0] + a[1][1] + a[2][2]) / 3.0;
-        const double p2 = (a[0][0] - q) * (a[0][0] - q) + (a[1][1] - q) * (a[1][1] - q) +
-                          (a[2][2] - q) * (a[2][2] - q) + 2.0 * off;
+        const double p2 =
+            (a[0][0] - q) * (a[0][0] - q) + (a[1][1] - q) * (a[1][1] - q) + (a[2][2] - q) * (a[2][2] - q) + 2.0 * off;
         const double p = std::sqrt(p2 / 6.0);
         const glm::dmat3 b = (a - q * glm::dmat3(1.0)) / p;
         const double phi = std::acos(std::clamp(0.5 * glm::determinant(b), -1.0, 1.0)) / 3.0;

@@ -24,8 +24,8 @@ namespace cavewall::display {
 // The screen rectangle of a frustum in its view space.
 struct ViewScreen {
     double left = 0.0, right = 0.0, bottom = 0.0, top = 0.0;  // metres, on the plane z = -distance
-    double distance = 0.0;                                     // h: the eye's distance to the plane, > 0
-    double pixelSize = 0.0;                                    // metres, the smaller of width and height
+    double distance = 0.0;                                    // h: the eye's distance to the plane, > 0
+    double pixelSize = 0.0;                                   // metres, the smaller of width and height
 };
 
 // The screen of `frustum` (from its projection) drawn into `viewportSize` pixels.

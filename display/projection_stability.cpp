@@ -27,7 +27,8 @@ std::vector<glm::dvec3> probes(const Setup& s) {
     std::vector<glm::dvec3> out;
     for (int i = 0; i <= 4; ++i)
         for (int j = 0; j <= 4; ++j) {
-            const glm::dvec3 p = s.lowerLeft + 0.25 * i * (s.lowerRight - s.lowerLeft) + 0.25 * j * (s.upperLeft - s.lowerLeft);
+            const glm::dvec3 p =
+                s.lowerLeft + 0.25 * i * (s.lowerRight - s.lowerLeft) + 0.25 * j * (s.upperLeft - s.lowerLeft);
             out.push_back(p);
             out.push_back(s.eye + 2.0 * (p - s.eye));
         }
@@ -65,8 +66,10 @@ double worstPixelError(const Setup& s) {
     double worst = 0.0;
     for (const glm::dvec3& p : probes(s)) {
         glm::dvec2 n;
-        if constexpr (std::is_same_v<T, double>) n = eyeRelativeNdc(f, p);
-        else n = glm::dvec2(ndcOf(f, glm::vec<3, T>(p)));
+        if constexpr (std::is_same_v<T, double>)
+            n = eyeRelativeNdc(f, p);
+        else
+            n = glm::dvec2(ndcOf(f, glm::vec<3, T>(p)));
         const glm::vec<2, long double> r = ndcOf(ref, ldvec3(p));
         const double e = static_cast<double>(std::max(std::abs(n.x - r.x), std::abs(n.y - r.y)));
         worst = std::max(worst, std::isfinite(e) ? e * kPixels / 2 : std::numeric_limits<double>::infinity());
@@ -76,23 +79,24 @@ double worstPixelError(const Setup& s) {
 
 Setup frontWall(double distance, glm::dvec3 offset = glm::dvec3(0.0)) {
     // cave4's front wall with an off-centre eye: 0.7 m right of the left edge, 0.9 m up.
-    return {glm::dvec3(-1.5, 0, -1.5) + offset, glm::dvec3(1.5, 0, -1.5) + offset,
-            glm::dvec3(-1.5, 3, -1.5) + offset, glm::dvec3(-0.8, 0.9, -1.5 + distance) + offset, 1e-12};
+    return {glm::dvec3(-1.5, 0, -1.5) + offset, glm::dvec3(1.5, 0, -1.5) + offset, glm::dvec3(-1.5, 3, -1.5) + offset,
+            glm::dvec3(-0.8, 0.9, -1.5 + distance) + offset, 1e-12};
 }
 
 // cavewall's GPU path: double frustum, float eye-relative model-view of eye-local points.
 double eyeRelativePixelError(const Setup& s) {
     const FrustumT<double> f = frustumIn<double>(s);
     const FrustumT<long double> ref = frustumIn<long double>(s);
-    const glm::dmat4 frameFromModel = glm::dmat4(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 1, 0, 0),
-                                                 glm::dvec4(0, 0, 1, 0), glm::dvec4(s.eye, 1));
+    const glm::dmat4 frameFromModel =
+        glm::dmat4(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 1, 0, 0), glm::dvec4(0, 0, 1, 0), glm::dvec4(s.eye, 1));
     const glm::mat4 clip(f.clipFromView);
     const glm::mat4 modelView(f.viewFromFrame * frameFromModel);
     double worst = 0.0;
     for (const glm::dvec3& p : probes(s)) {
         const glm::vec4 c = clip * modelView * glm::vec4(glm::vec3(p - s.eye), 1.0f);
         const glm::vec<2, long double> r = ndcOf(ref, ldvec3(p));
-        const double e = std::max(std::abs(c.x / c.w - static_cast<double>(r.x)), std::abs(c.y / c.w - static_cast<double>(r.y)));
+        const double e =
+            std::max(std::abs(c.x / c.w - static_cast<double>(r.x)), std::abs(c.y / c.w - static_cast<double>(r.y)));
         worst = std::max(worst, e * kPixels / 2);
     }
     return worst;
@@ -119,8 +123,8 @@ std::vector<StabilityRow> eyeDistanceCases() {
     std::vector<StabilityRow> rows;
     for (double d = 1e-9; d <= 1.5e6; d *= 1000) {
         const Setup s = frontWall(d);
-        rows.push_back({"eye distance " + sci(d) + " m", "px @1024", worstPixelError<float>(s),
-                        worstPixelError<double>(s), 1e-6});
+        rows.push_back(
+            {"eye distance " + sci(d) + " m", "px @1024", worstPixelError<float>(s), worstPixelError<double>(s), 1e-6});
     }
     return rows;
 }
@@ -129,8 +133,8 @@ std::vector<StabilityRow> worldOffsetCases() {
     std::vector<StabilityRow> rows;
     for (double o = 1e3; o <= 1e7; o *= 100) {
         const Setup s = frontWall(1.2, glm::dvec3(o, -0.5 * o, o));
-        rows.push_back({"world offset " + sci(o) + " m", "px @1024", worstPixelError<float>(s),
-                        eyeRelativePixelError(s), 1e-3});
+        rows.push_back(
+            {"world offset " + sci(o) + " m", "px @1024", worstPixelError<float>(s), eyeRelativePixelError(s), 1e-3});
     }
     return rows;
 }
@@ -140,8 +144,8 @@ std::vector<StabilityRow> depthOrderCases() {
     const double near = 1e-3;
     for (double ratio : {1e3, 1e6, 1e9, std::numeric_limits<double>::infinity()}) {
         const double far = near * ratio;
-        const FrustumT<double> f = offAxisFrustumT<double>({-1.5, 0, -1.5}, {1.5, 0, -1.5}, {-1.5, 3, -1.5},
-                                                           {0, 1.5, 0.5}, near, far, 1e-3);
+        const FrustumT<double> f =
+            offAxisFrustumT<double>({-1.5, 0, -1.5}, {1.5, 0, -1.5}, {-1.5, 3, -1.5}, {0, 1.5, 0.5}, near, far, 1e-3);
         const glm::mat4 p(f.clipFromView);
         auto reversed = [&](double z) {
             const glm::vec4 c = p * glm::vec4(0, 0, static_cast<float>(-z), 1);
@@ -149,7 +153,8 @@ std::vector<StabilityRow> depthOrderCases() {
         };
         // Conventional OpenGL depth in [-1, 1] (far must be finite: use 1e9 * near for infinity).
         const double cf = std::isinf(far) ? 1e9 * near : far;
-        const float a = static_cast<float>(-(cf + near) / (cf - near)), b = static_cast<float>(-2 * cf * near / (cf - near));
+        const float a = static_cast<float>(-(cf + near) / (cf - near)),
+                    b = static_cast<float>(-2 * cf * near / (cf - near));
         auto conventional = [&](double z) {
             const float zf = static_cast<float>(-z);
             return (a * zf + b) / -zf;
@@ -164,7 +169,8 @@ std::vector<StabilityRow> screenSizeCases() {
     std::vector<StabilityRow> rows;
     for (double size : {1e-3, 1e3}) {
         const Setup s{{0, 0, 0}, {size, 0, 0}, {0, size, 0}, {0.3 * size, 0.6 * size, 0.7 * size}, 1e-12};
-        rows.push_back({"screen " + sci(size) + " m", "px @1024", worstPixelError<float>(s), worstPixelError<double>(s), 1e-6});
+        rows.push_back(
+            {"screen " + sci(size) + " m", "px @1024", worstPixelError<float>(s), worstPixelError<double>(s), 1e-6});
     }
     return rows;
 }
@@ -176,14 +182,16 @@ namespace {
 double floatWarpPixelError(double distance, double& condition) {
     const ScreenQuad wall{{-3, 0, -10}, {3, 0, -10}, {-3, 4, -10}};
     const glm::dvec3 eye{0.3, 1.6, -10.0 + distance}, shift = eye - glm::dvec3(0, 1.6, 0);
-    const ScreenQuad screen{glm::dvec3(-1.5, 0, -1.5) + shift, glm::dvec3(1.5, 0, -1.5) + shift, glm::dvec3(-1.5, 3, -1.5) + shift};
+    const ScreenQuad screen{glm::dvec3(-1.5, 0, -1.5) + shift, glm::dvec3(1.5, 0, -1.5) + shift,
+                            glm::dvec3(-1.5, 3, -1.5) + shift};
     const double inf = std::numeric_limits<double>::infinity();
     const OffAxisFrustum a = offAxisFrustum(wall, {0.5, 1.7, -4.0}, {0.05, inf});
     const glm::dmat4 warp = warpMatrix(a, wall, offAxisFrustum(screen, eye, {0.05, inf}).clipFromFrame(), 0.05);
     condition = warpCondition(warp);
     // As on the GPU: one float matrix, eye-relative float vertices.
-    const glm::dmat4 full = warp * a.clipFromFrame() * glm::dmat4(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 1, 0, 0),
-                                                                   glm::dvec4(0, 0, 1, 0), glm::dvec4(eye, 1));
+    const glm::dmat4 full =
+        warp * a.clipFromFrame() *
+        glm::dmat4(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 1, 0, 0), glm::dvec4(0, 0, 1, 0), glm::dvec4(eye, 1));
     const glm::mat4 fullF(full);
     double worst = 0.0;
     for (double x = -2.5; x <= 2.5; x += 0.5)

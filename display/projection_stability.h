@@ -11,12 +11,12 @@
 namespace cavewall::display {
 
 struct StabilityRow {
-    std::string name;          // the case, e.g. "eye distance 1e-09 m"
-    std::string unit;          // unit of the errors, e.g. "px @1024"
-    double floatError = 0.0;   // naive float implementation (reported, not judged)
+    std::string name;            // the case, e.g. "eye distance 1e-09 m"
+    std::string unit;            // unit of the errors, e.g. "px @1024"
+    double floatError = 0.0;     // naive float implementation (reported, not judged)
     double cavewallError = 0.0;  // cavewall's path
-    double tolerance = 0.0;    // pass when cavewallError <= tolerance
-    double condition = 0.0;    // warp cases: the warp's condition number (else 0)
+    double tolerance = 0.0;      // pass when cavewallError <= tolerance
+    double condition = 0.0;      // warp cases: the warp's condition number (else 0)
     bool pass() const { return cavewallError <= tolerance; }
 };
 

@@ -34,10 +34,10 @@ struct Viewport {
 // One eye's pass into a screen's output.
 struct EyePass {
     Eye eye = Eye::Center;
-    int image = 0;                      // output image index (separate: 0 = left, 1 = right)
+    int image = 0;  // output image index (separate: 0 = left, 1 = right)
     Viewport viewport;
-    glm::bvec4 colorMask{true};         // anaglyph masks
-    bool backRight = false;             // quad-buffer: draw into GL_BACK_RIGHT
+    glm::bvec4 colorMask{true};  // anaglyph masks
+    bool backRight = false;      // quad-buffer: draw into GL_BACK_RIGHT
 };
 
 // The passes for a stereo mode on a screen of `resolution` pixels, in drawing order.

@@ -6,8 +6,7 @@
 
 namespace cavewall::display {
 
-glm::dmat4 warpMatrix(const OffAxisFrustum& a, const ScreenQuad& wall, const glm::dmat4& clipFromWorldB,
-                      double nearB) {
+glm::dmat4 warpMatrix(const OffAxisFrustum& a, const ScreenQuad& wall, const glm::dmat4& clipFromWorldB, double nearB) {
     const ScreenBasis b = screenBasis(wall);
     const glm::dvec3 right = 0.5 * b.width * b.right, up = 0.5 * b.height * b.up;
     const glm::dvec3 centre = wall.lowerLeft + right + up;

@@ -37,8 +37,7 @@ inline constexpr double kMaxWarpCondition = 1e4;
 // of `wall` (both in the world frame) into the current view `clipFromWorldB` (reversed-Z,
 // e.g. clipFromView · viewFromCave · caveFromWorld of one screen and eye). `nearB` is B's
 // near plane.
-glm::dmat4 warpMatrix(const OffAxisFrustum& a, const ScreenQuad& wall, const glm::dmat4& clipFromWorldB,
-                      double nearB);
+glm::dmat4 warpMatrix(const OffAxisFrustum& a, const ScreenQuad& wall, const glm::dmat4& clipFromWorldB, double nearB);
 
 // The 2-norm condition number of the warp's 3x3 core (1 for a pure similarity, +inf when
 // singular).

@@ -30,8 +30,10 @@ double ClusterBudget::floorMs(double cheapestMs) const {
 void ClusterBudget::update(double frameMs, double predictedMs, double selectedMs) {
     if (!(frameMs > 0.0) || !std::isfinite(frameMs) || !std::isfinite(predictedMs)) return;
     const double e = frameMs - std::max(0.0, predictedMs);
-    if (static_cast<int>(_residuals.size()) < _window) _residuals.push_back(e);
-    else _residuals[static_cast<std::size_t>(_next)] = e;
+    if (static_cast<int>(_residuals.size()) < _window)
+        _residuals.push_back(e);
+    else
+        _residuals[static_cast<std::size_t>(_next)] = e;
     _next = (_next + 1) % _window;
     const double wanted = std::max(0.0, _target - residualQuantile(_quantile));
     _budget = std::max(0.0, _budget + _gain * (wanted - _budget));

@@ -57,7 +57,7 @@ private:
 
     double _target, _quantile, _gain;
     int _window;
-    std::vector<double> _residuals;       // e of the last frames, a ring
+    std::vector<double> _residuals;  // e of the last frames, a ring
     int _next = 0;
     double _budget = 0.0, _fadeMs = 0.0;
 };

@@ -14,14 +14,16 @@ public:
         _scale = (width - 2.0 * kMargin) / size.x;
         const int height = std::max(16, static_cast<int>(std::ceil(size.z * _scale + 2.0 * kMargin)));
         _origin = model.min;
-        image = {"clusters", width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4, 255)};
+        image = {"clusters", width, height,
+                 std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4, 255)};
     }
     // The pixel rectangle of a footprint, clamped to the image.
     void rect(const scenes::Bounds& b, int& x0, int& y0, int& x1, int& y1) const {
         x0 = std::clamp(static_cast<int>(std::floor(kMargin + (b.min.x - _origin.x) * _scale)), 0, image.width - 1);
         x1 = std::clamp(static_cast<int>(std::ceil(kMargin + (b.max.x - _origin.x) * _scale)) - 1, x0, image.width - 1);
         y0 = std::clamp(static_cast<int>(std::floor(kMargin + (b.min.z - _origin.z) * _scale)), 0, image.height - 1);
-        y1 = std::clamp(static_cast<int>(std::ceil(kMargin + (b.max.z - _origin.z) * _scale)) - 1, y0, image.height - 1);
+        y1 =
+            std::clamp(static_cast<int>(std::ceil(kMargin + (b.max.z - _origin.z) * _scale)) - 1, y0, image.height - 1);
     }
     void set(int x, int y, const std::uint8_t* c) {
         std::uint8_t* p = &image.rgba[(static_cast<std::size_t>(y) * image.width + x) * 4];
@@ -61,7 +63,8 @@ scenes::Image clusterDiagram(const ClusterModel& model, const ClusterFramePlan& 
     for (const ClusterNode& n : model.tree.nodes)
         if (n.leaf() && !n.bounds.empty()) canvas.outline(n.bounds, grey);
     for (int o : plan.objects)
-        if (o >= 0 && o < static_cast<int>(model.tree.nodes.size())) canvas.fill(model.tree.nodes[o].bounds, kDiagramObject);
+        if (o >= 0 && o < static_cast<int>(model.tree.nodes.size()))
+            canvas.fill(model.tree.nodes[o].bounds, kDiagramObject);
     std::vector<ClusterBoxDraw> boxes = plan.boxes;
     auto area = [&](const ClusterBoxDraw& b) {
         const glm::dvec3 s = model.tree.nodes[b.node].bounds.size();

@@ -128,27 +128,27 @@ double ClusterFades::addFadeItems(const ClusterModel& model, const std::vector<F
     for (const Fade& f : fades) {
         const float k = static_cast<float>(f.age) / static_cast<float>(_frames);
         switch (f.kind) {
-        case Kind::Refine:
-            plan.boxes.push_back({f.node, f.rep, 1.0f - k});
-            extraMs += fadedBoxMs(model, plan, f.node, f.rep);
-            break;
-        case Kind::Coarsen:
-            weighBox(plan.boxes, f.node, k);
-            for (int o : f.ghostObjects) {
-                plan.objects.push_back(o);
-                extraMs += objectMs(model, o);
-            }
-            for (const ClusterBoxDraw& b : f.ghostBoxes) {
-                plan.boxes.push_back(b);
-                extraMs += fadedBoxMs(model, plan, b.node, b.rep);
-            }
-            plan.ghostObjects += static_cast<int>(f.ghostObjects.size());
-            break;
-        case Kind::Swap:
-            weighBox(plan.boxes, f.node, k);
-            plan.boxes.push_back({f.node, f.oldRep, 1.0f});
-            extraMs += fadedBoxMs(model, plan, f.node, f.oldRep);
-            break;
+            case Kind::Refine:
+                plan.boxes.push_back({f.node, f.rep, 1.0f - k});
+                extraMs += fadedBoxMs(model, plan, f.node, f.rep);
+                break;
+            case Kind::Coarsen:
+                weighBox(plan.boxes, f.node, k);
+                for (int o : f.ghostObjects) {
+                    plan.objects.push_back(o);
+                    extraMs += objectMs(model, o);
+                }
+                for (const ClusterBoxDraw& b : f.ghostBoxes) {
+                    plan.boxes.push_back(b);
+                    extraMs += fadedBoxMs(model, plan, b.node, b.rep);
+                }
+                plan.ghostObjects += static_cast<int>(f.ghostObjects.size());
+                break;
+            case Kind::Swap:
+                weighBox(plan.boxes, f.node, k);
+                plan.boxes.push_back({f.node, f.oldRep, 1.0f});
+                extraMs += fadedBoxMs(model, plan, f.node, f.oldRep);
+                break;
         }
     }
     return extraMs;

@@ -68,11 +68,11 @@ private:
     bool below(int m, int n) const;  // node m strictly below node n
 
     int _frames;
-    std::vector<int> _parent;                      // per node, -1 for the root
-    std::vector<int> _prevBox;                     // per node: rep drawn last frame, -1 none
-    std::vector<char> _prevRefined;                // per node: something below it drawn
-    std::vector<int> _prevObjects;                 // last frame's selected objects
-    std::vector<ClusterBoxDraw> _prevBoxes;        // last frame's selected boxes
+    std::vector<int> _parent;                // per node, -1 for the root
+    std::vector<int> _prevBox;               // per node: rep drawn last frame, -1 none
+    std::vector<char> _prevRefined;          // per node: something below it drawn
+    std::vector<int> _prevObjects;           // last frame's selected objects
+    std::vector<ClusterBoxDraw> _prevBoxes;  // last frame's selected boxes
     std::vector<Fade> _fades;
     bool _first = true;
 };

@@ -137,8 +137,10 @@ ClusterFramePlan planClusterFrame(const ClusterModel& model, const std::vector<d
     plan.boxMs.assign(frames.size(), {0.0, 0.0});
     for (std::size_t n = 0; n < frames.size(); ++n)
         for (const Representation& r : frames[n].representations)
-            if (r.id == static_cast<int>(ClusterRep::Textured)) plan.boxMs[n][0] = r.costMs;
-            else if (r.id == static_cast<int>(ClusterRep::Average)) plan.boxMs[n][1] = r.costMs;
+            if (r.id == static_cast<int>(ClusterRep::Textured))
+                plan.boxMs[n][0] = r.costMs;
+            else if (r.id == static_cast<int>(ClusterRep::Average))
+                plan.boxMs[n][1] = r.costMs;
     for (const ClusterChoice& c : selection.drawn) {
         const ClusterNode& node = model.tree.nodes[c.node];
         const auto rep = static_cast<ClusterRep>(frames[c.node].representations[c.representation].id);
@@ -150,7 +152,9 @@ ClusterFramePlan planClusterFrame(const ClusterModel& model, const std::vector<d
         ++(rep == ClusterRep::Textured ? plan.textured : plan.average);
     }
     std::sort(plan.objects.begin(), plan.objects.end());
-    auto distance = [&](const ClusterBoxDraw& b) { return glm::length(model.tree.nodes[b.node].bounds.centre() - eyeWorld); };
+    auto distance = [&](const ClusterBoxDraw& b) {
+        return glm::length(model.tree.nodes[b.node].bounds.centre() - eyeWorld);
+    };
     std::stable_sort(plan.boxes.begin(), plan.boxes.end(),
                      [&](const ClusterBoxDraw& a, const ClusterBoxDraw& b) { return distance(a) > distance(b); });
     return plan;

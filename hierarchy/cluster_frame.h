@@ -26,12 +26,12 @@ enum class ClusterRep { Full = 0, Textured = 1, Average = 2 };
 // (hierarchy/gl/cluster_costs.h). A box costs its fixed part plus its fill: the views' shares it
 // covers (viewShare, summed over the frame's views) times the cost of filling one whole view.
 struct ClusterCosts {
-    double msPerTriangle = 1e-5;     // full-detail geometry
-    double msPerObject = 1e-3;       // fixed part of one object's draw
-    double texturedBoxMs = 1e-2;     // one textured box (its front faces), fixed part
-    double averageBoxMs = 1e-2;      // one average-colour box, fixed part
-    double texturedViewMs = 0.0;     // a textured box's fill per whole view it covers
-    double averageViewMs = 0.0;      // an average box's fill per whole view it covers
+    double msPerTriangle = 1e-5;  // full-detail geometry
+    double msPerObject = 1e-3;    // fixed part of one object's draw
+    double texturedBoxMs = 1e-2;  // one textured box (its front faces), fixed part
+    double averageBoxMs = 1e-2;   // one average-colour box, fixed part
+    double texturedViewMs = 0.0;  // a textured box's fill per whole view it covers
+    double averageViewMs = 0.0;   // an average box's fill per whole view it covers
     bool operator==(const ClusterCosts&) const = default;
 };
 
@@ -54,7 +54,6 @@ struct BoxCost {
 };
 BoxCost solveBoxCost(double boxesA, double sharesA, double msA, double sharesB, double msB);
 
-
 // Accuracy of a cluster's impostors from each accuracy direction (cluster_impostor.h), [0, 1],
 // measured against full detail.
 struct ClusterAccuracy {
@@ -66,32 +65,32 @@ struct ClusterAccuracy {
 // node (tree index) the accuracy of its impostors (leaves: unused) and whether it has them.
 struct ClusterModel {
     ClusterTree tree;
-    std::vector<std::size_t> objectTriangles;    // per object
-    std::vector<ClusterAccuracy> accuracy;       // per node
-    std::vector<bool> hasImpostors;              // per node: textures and averages were made
+    std::vector<std::size_t> objectTriangles;  // per object
+    std::vector<ClusterAccuracy> accuracy;     // per node
+    std::vector<bool> hasImpostors;            // per node: textures and averages were made
     ClusterCosts costs;
 };
 
 struct ClusterBoxDraw {
     int node = -1;
-    ClusterRep rep = ClusterRep::Textured;       // Textured or Average
-    float weight = 1.0f;                         // (0, 1]: < 1 while cross-fading (cluster_fades.h)
+    ClusterRep rep = ClusterRep::Textured;  // Textured or Average
+    float weight = 1.0f;                    // (0, 1]: < 1 while cross-fading (cluster_fades.h)
 };
 
 struct ClusterFramePlan {
-    std::vector<int> objects;                    // leaves drawn: object indices, ascending
-    std::vector<ClusterBoxDraw> boxes;           // back to front from the eye
-    int textured = 0, average = 0;               // boxes of each kind the selection drew
-    int fades = 0, ghostObjects = 0;             // cross-fades under way, objects they kept
-    double predictedMs = 0.0;                    // the selection's cost, and the fades' extra
-    double selectedMs = 0.0;                     // the selection's cost alone (<= budgetMs, or
-                                                 // cheapestMs when that is above it)
-    double cheapestMs = 0.0;                     // the selection at a budget of 0 (the root's box):
-                                                 // what a frame with nothing to spend draws
-                                                 // (cluster_budget.h's floor)
+    std::vector<int> objects;           // leaves drawn: object indices, ascending
+    std::vector<ClusterBoxDraw> boxes;  // back to front from the eye
+    int textured = 0, average = 0;      // boxes of each kind the selection drew
+    int fades = 0, ghostObjects = 0;    // cross-fades under way, objects they kept
+    double predictedMs = 0.0;           // the selection's cost, and the fades' extra
+    double selectedMs = 0.0;            // the selection's cost alone (<= budgetMs, or
+                                        // cheapestMs when that is above it)
+    double cheapestMs = 0.0;            // the selection at a budget of 0 (the root's box):
+                                        // what a frame with nothing to spend draws
+                                        // (cluster_budget.h's floor)
     double budgetMs = 0.0;
-    std::vector<std::array<double, 2>> boxMs;    // per node: this frame's textured and average
-                                                 // box cost (fill included), for the fades
+    std::vector<std::array<double, 2>> boxMs;  // per node: this frame's textured and average
+                                               // box cost (fill included), for the fades
 };
 
 // The frame's NodeFrame per node: a leaf's benefit is its bounding sphere's solid-angle share

@@ -117,9 +117,13 @@ display::ScreenQuad averageFaceQuad(const display::ScreenQuad& face, float cover
 std::array<glm::dvec3, kAccuracyDirections> accuracyDirections() {
     const double e = 25.0 * kDegree, high = 60.0 * kDegree;
     const double c = std::cos(e), s = std::sin(e);
-    return {glm::dvec3(c, s, 0.0),  glm::dvec3(-c, s, 0.0), glm::dvec3(0.0, s, c), glm::dvec3(0.0, s, -c),
-            glm::dvec3(0.0, 1.0, 0.0),
-            glm::normalize(glm::dvec3(std::cos(high) / std::sqrt(2.0), std::sin(high), std::cos(high) / std::sqrt(2.0)))};
+    return {
+        glm::dvec3(c, s, 0.0),
+        glm::dvec3(-c, s, 0.0),
+        glm::dvec3(0.0, s, c),
+        glm::dvec3(0.0, s, -c),
+        glm::dvec3(0.0, 1.0, 0.0),
+        glm::normalize(glm::dvec3(std::cos(high) / std::sqrt(2.0), std::sin(high), std::cos(high) / std::sqrt(2.0)))};
 }
 
 int nearestAccuracyDirection(const scenes::Bounds& box, glm::dvec3 eye) {

@@ -43,7 +43,7 @@ scenes::Bounds impostorBox(const scenes::Bounds& bounds);
 
 // Face `face` (0..5) of `box` as a screen seen from outside.
 display::ScreenQuad boxFace(const scenes::Bounds& box, int face);
-glm::dvec3 faceNormal(int face);   // outward, unit
+glm::dvec3 faceNormal(int face);  // outward, unit
 
 // Whether `eye` (world) is on the outer side of `face`'s plane: the face is towards the eye.
 bool faceTowards(const scenes::Bounds& box, int face, glm::dvec3 eye);
@@ -65,8 +65,8 @@ glm::ivec2 faceResolution(const scenes::Bounds& box, int face, int maxResolution
 // the pixels something covers in the face's centre-region texture, and the share of the face
 // they cover. Drawn as an opaque rectangle of that colour and area, centred on the face.
 struct FaceAverage {
-    glm::vec3 linearColour{0.0f};   // linear RGB, [0, 1]
-    float coverage = 0.0f;          // [0, 1]: covered texels (alpha-weighted) over all texels
+    glm::vec3 linearColour{0.0f};  // linear RGB, [0, 1]
+    float coverage = 0.0f;         // [0, 1]: covered texels (alpha-weighted) over all texels
     bool operator==(const FaceAverage&) const = default;
 };
 

@@ -61,7 +61,8 @@ ClusterTree buildClusterTree(const std::vector<scenes::Bounds>& objectBounds, gl
                 // The last cell ends exactly at the model's bounds (no rounding left outside).
                 cell.max[a] = c[a] == cells[a] - 1 ? model.max[a] : model.min[a] + (c[a] + 1) * width;
             }
-            if (contains(cell, b, eps)) inCell[(static_cast<long>(c.z) * cells.y + c.y) * cells.x + c.x].push_back(node);
+            if (contains(cell, b, eps))
+                inCell[(static_cast<long>(c.z) * cells.y + c.y) * cells.x + c.x].push_back(node);
         }
         std::vector<int> clustered;
         std::vector<int> added;
@@ -73,7 +74,8 @@ ClusterTree buildClusterTree(const std::vector<scenes::Bounds>& objectBounds, gl
             cluster.level = level + 1;
             for (int m : members) {
                 cluster.bounds.add(tree.nodes[m].bounds);
-                cluster.objects.insert(cluster.objects.end(), tree.nodes[m].objects.begin(), tree.nodes[m].objects.end());
+                cluster.objects.insert(cluster.objects.end(), tree.nodes[m].objects.begin(),
+                                       tree.nodes[m].objects.end());
             }
             std::sort(cluster.objects.begin(), cluster.objects.end());
             clustered.insert(clustered.end(), members.begin(), members.end());
@@ -136,8 +138,8 @@ ClusterSelection selectClusters(const ClusterTree& tree, const std::vector<NodeF
         const auto& reps = frame[n].representations;
         double best = -1.0;
         for (std::size_t r = 0; r < reps.size(); ++r) {
-            const double ratio = reps[r].costMs > 0.0 ? reps[r].accuracy / reps[r].costMs
-                                                      : std::numeric_limits<double>::infinity();
+            const double ratio =
+                reps[r].costMs > 0.0 ? reps[r].accuracy / reps[r].costMs : std::numeric_limits<double>::infinity();
             if (ratio > best) {
                 best = ratio;
                 initial[n] = static_cast<int>(r);
@@ -162,7 +164,8 @@ ClusterSelection selectClusters(const ClusterTree& tree, const std::vector<NodeF
             int chosen = initial[n];
             for (std::size_t r = 0; r < reps.size(); ++r) {
                 const double extra = std::max(0.0, reps[r].costMs) - cost[n];
-                if (reps[r].accuracy > reps[chosen].accuracy && total + extra <= budgetMs + 1e-12) chosen = static_cast<int>(r);
+                if (reps[r].accuracy > reps[chosen].accuracy && total + extra <= budgetMs + 1e-12)
+                    chosen = static_cast<int>(r);
             }
             total += std::max(0.0, reps[chosen].costMs) - cost[n];
             selection.drawn.push_back({n, chosen});

@@ -20,11 +20,11 @@ namespace cavewall::hierarchy {
 // One node of the model hierarchy. Leaves hold one object; clusters hold two or more children
 // and stand for every object below them.
 struct ClusterNode {
-    scenes::Bounds bounds;        // of the objects below, world
-    std::vector<int> children;    // node indices; empty for a leaf
-    std::vector<int> objects;     // the objects below, ascending (a leaf: its one object)
-    int object = -1;              // a leaf's object index; -1 for a cluster
-    int level = 0;                // 0: leaves; clusters: the grid level that made them (1 = finest)
+    scenes::Bounds bounds;      // of the objects below, world
+    std::vector<int> children;  // node indices; empty for a leaf
+    std::vector<int> objects;   // the objects below, ascending (a leaf: its one object)
+    int object = -1;            // a leaf's object index; -1 for a cluster
+    int level = 0;              // 0: leaves; clusters: the grid level that made them (1 = finest)
     bool leaf() const { return children.empty(); }
 };
 
@@ -48,29 +48,29 @@ ClusterTree buildClusterTree(const std::vector<scenes::Bounds>& objectBounds, gl
 // One drawable representation of a node (Maciel & Shirley 1995, section 4.1): its measured cost
 // and its accuracy in [0, 1] (1: the full-detail image) from the current view.
 struct Representation {
-    int id = 0;                   // the caller's (e.g. level of detail, or textured/average box)
-    double costMs = 0.0;          // >= 0
-    double accuracy = 0.0;        // [0, 1]
+    int id = 0;             // the caller's (e.g. level of detail, or textured/average box)
+    double costMs = 0.0;    // >= 0
+    double accuracy = 0.0;  // [0, 1]
 };
 
 // What the caller knows about node n in this frame.
 struct NodeFrame {
-    double benefit = 0.0;         // leaves: e.g. projected size times intrinsic factors; >= 0
-                                  // (clusters: ignored, their benefit is the largest below)
-    bool visible = false;         // leaves: in some view's frustum (clusters: any child visible)
+    double benefit = 0.0;                         // leaves: e.g. projected size times intrinsic factors; >= 0
+                                                  // (clusters: ignored, their benefit is the largest below)
+    bool visible = false;                         // leaves: in some view's frustum (clusters: any child visible)
     std::vector<Representation> representations;  // every node: at least one for a visible node
 };
 
 // The frame's choice: the node and representation of every drawn item, in the order chosen.
 struct ClusterChoice {
     int node = -1;
-    int representation = 0;       // index into NodeFrame::representations
+    int representation = 0;  // index into NodeFrame::representations
 };
 
 struct ClusterSelection {
     std::vector<ClusterChoice> drawn;
-    double costMs = 0.0;          // sum of the drawn representations' costs
-    int clusters = 0, leaves = 0; // drawn items of each kind
+    double costMs = 0.0;           // sum of the drawn representations' costs
+    int clusters = 0, leaves = 0;  // drawn items of each kind
 };
 
 // Temporal coherence (Maciel & Shirley 1995, section 4.6): a cluster is replaced by its
@@ -89,9 +89,9 @@ public:
 private:
     int _threshold;
     long _frame = 0;
-    std::vector<int> _counter;        // per node: consecutive frames refinement was wanted,
-    std::vector<long> _wanted;        // ending in this frame
-    std::vector<long> _refined;       // per node: the last frame it was refined in
+    std::vector<int> _counter;   // per node: consecutive frames refinement was wanted,
+    std::vector<long> _wanted;   // ending in this frame
+    std::vector<long> _refined;  // per node: the last frame it was refined in
 };
 
 // The two passes of Maciel & Shirley 1995, section 4.5. Pass 1 (depth first): each node's

@@ -105,42 +105,44 @@ void DesktopNavigator::look(const glm::dvec2& pixels) {
     _nav.setWorldFromCave(eye - rotateY(yaw, headBody), yaw);
 }
 
-void DesktopNavigator::sendSpeed() {
-    _nav.handle({EventType::SpeedScale, 0.0, 0, {speed() / _config.speed, 0.0}});
-}
+void DesktopNavigator::sendSpeed() { _nav.handle({EventType::SpeedScale, 0.0, 0, {speed() / _config.speed, 0.0}}); }
 
 void DesktopNavigator::handle(const Event& e) {
     switch (e.type) {
-    case EventType::MouseMove:
-        if (!std::isfinite(e.value.x) || !std::isfinite(e.value.y)) break;
-        if (mode() == NavMode::Grab && _leftButton) _grabOffset += e.value * (speed() * _config.grabSecondsPerPixel);
-        else look(e.value);
-        break;
-    case EventType::KeyDown:
-    case EventType::KeyUp: handleKey(e.code, e.type == EventType::KeyDown); break;
-    case EventType::Scroll:
-        if (!std::isfinite(e.value.y)) break;
-        _scale = std::clamp(_scale * std::pow(_config.scrollStep, e.value.y), _config.minScale, _config.maxScale);
-        sendSpeed();
-        break;
-    case EventType::ButtonDown:
-    case EventType::ButtonUp:
-        if (e.code != 0) break;
-        _leftButton = e.type == EventType::ButtonDown;
-        if (mode() == NavMode::Grab) {
-            feedNavigator();  // the grab starts from the hand where it is now
-            _nav.handle(e);
-        }
-        break;
-    default: break;
+        case EventType::MouseMove:
+            if (!std::isfinite(e.value.x) || !std::isfinite(e.value.y)) break;
+            if (mode() == NavMode::Grab && _leftButton)
+                _grabOffset += e.value * (speed() * _config.grabSecondsPerPixel);
+            else
+                look(e.value);
+            break;
+        case EventType::KeyDown:
+        case EventType::KeyUp: handleKey(e.code, e.type == EventType::KeyDown); break;
+        case EventType::Scroll:
+            if (!std::isfinite(e.value.y)) break;
+            _scale = std::clamp(_scale * std::pow(_config.scrollStep, e.value.y), _config.minScale, _config.maxScale);
+            sendSpeed();
+            break;
+        case EventType::ButtonDown:
+        case EventType::ButtonUp:
+            if (e.code != 0) break;
+            _leftButton = e.type == EventType::ButtonDown;
+            if (mode() == NavMode::Grab) {
+                feedNavigator();  // the grab starts from the hand where it is now
+                _nav.handle(e);
+            }
+            break;
+        default: break;
     }
 }
 
 void DesktopNavigator::handleKey(int code, bool down) {
     const bool letter = code >= 'A' && code <= 'Z';
     if (down && letter && _keys.count(kKeyControl)) return;  // Ctrl+Q and the like are the session's
-    if (down) _keys.insert(code);
-    else _keys.erase(code);
+    if (down)
+        _keys.insert(code);
+    else
+        _keys.erase(code);
     if (code == kKeyShift) sendSpeed();
     if (down && code >= '1' && code <= '4') setMode(static_cast<NavMode>(code - '1'));
 }
@@ -166,8 +168,10 @@ void DesktopNavigator::updateFly(double dt) {
 void DesktopNavigator::update(double dt) {
     if (!(dt > 0.0) || !std::isfinite(dt)) return;
     feedNavigator();
-    if (mode() == NavMode::Fly) updateFly(dt);
-    else _nav.update(dt);
+    if (mode() == NavMode::Fly)
+        updateFly(dt);
+    else
+        _nav.update(dt);
 }
 
 }  // namespace cavewall::input

@@ -42,17 +42,17 @@
 namespace cavewall::input {
 
 struct DesktopNavigatorConfig {
-    double degreesPerPixel = 0.15;   // mouse look, degrees per pixel of motion
-    double maxPitchDeg = 89.0;       // looking up or down at most this far
-    double speed = 3.0;              // m/s of a movement key at speed scale 1 (viewSpeed())
-    double fastFactor = 4.0;         // speed multiplier while Shift is held
-    double scrollStep = 1.25;        // speed multiplier per wheel step
+    double degreesPerPixel = 0.15;            // mouse look, degrees per pixel of motion
+    double maxPitchDeg = 89.0;                // looking up or down at most this far
+    double speed = 3.0;                       // m/s of a movement key at speed scale 1 (viewSpeed())
+    double fastFactor = 4.0;                  // speed multiplier while Shift is held
+    double scrollStep = 1.25;                 // speed multiplier per wheel step
     double minScale = 0.05, maxScale = 20.0;  // the wheel's speed scale stays within these
-    double eyeHeight = 1.7;          // m, the standing eye above the body's floor
-    double handDistance = 0.5;       // m, the hand in front of the eyes
-    double accelerationPerSpeed = 8.0;  // walk, guided: acceleration = this * speed, per s
-    double grabSecondsPerPixel = 0.01;  // grab: a pixel of drag moves the hand speed() * this m
-    NavigatorConfig navigator;       // walk and guided: body radius, steps, the guide's pace
+    double eyeHeight = 1.7;                   // m, the standing eye above the body's floor
+    double handDistance = 0.5;                // m, the hand in front of the eyes
+    double accelerationPerSpeed = 8.0;        // walk, guided: acceleration = this * speed, per s
+    double grabSecondsPerPixel = 0.01;        // grab: a pixel of drag moves the hand speed() * this m
+    NavigatorConfig navigator;                // walk and guided: body radius, steps, the guide's pace
 };
 
 // A movement speed for a model of bounding-box diagonal `diagonal` metres: diagonal / 20 per
@@ -81,16 +81,16 @@ public:
     void update(double dt);
 
     glm::dmat4 worldFromCave() const;
-    glm::dvec3 eyeWorld() const;                 // the head's position in the world
-    double yaw() const { return _nav.yaw(); }    // radians about +Y, 0 looking down -Z
-    double pitch() const { return _pitch; }      // radians, positive looks up
-    double speed() const;                        // m/s of a movement key now (scale, Shift)
-    const Pose& head() const { return _head; }   // cave frame
+    glm::dvec3 eyeWorld() const;                // the head's position in the world
+    double yaw() const { return _nav.yaw(); }   // radians about +Y, 0 looking down -Z
+    double pitch() const { return _pitch; }     // radians, positive looks up
+    double speed() const;                       // m/s of a movement key now (scale, Shift)
+    const Pose& head() const { return _head; }  // cave frame
     // The hand (cave frame) and the first surface along its ray (Navigator::handCursor).
     HandCursor handCursor() const;
 
 private:
-    glm::dmat4 caveFromBody() const;             // the display cave from the Navigator's body
+    glm::dmat4 caveFromBody() const;  // the display cave from the Navigator's body
     Pose bodyPose(const Pose& cavePose) const;
     Pose handInBody() const;
     void look(const glm::dvec2& pixels);
@@ -108,7 +108,7 @@ private:
     double _scale = 1.0;
     std::set<int> _keys;
     bool _leftButton = false;
-    glm::dvec2 _grabOffset{0.0};                 // the hand's drag across the floor, m
+    glm::dvec2 _grabOffset{0.0};  // the hand's drag across the floor, m
 };
 
 }  // namespace cavewall::input

@@ -8,10 +8,10 @@ namespace cavewall::input {
 
 std::string_view toString(TrackState state) {
     switch (state) {
-    case TrackState::Tracked: return "tracked";
-    case TrackState::Holding: return "holding";
-    case TrackState::Easing: return "easing";
-    case TrackState::Default: return "default";
+        case TrackState::Tracked: return "tracked";
+        case TrackState::Holding: return "holding";
+        case TrackState::Easing: return "easing";
+        case TrackState::Default: return "default";
     }
     return "?";
 }

@@ -19,8 +19,8 @@
 namespace cavewall::input {
 
 struct DropoutConfig {
-    double holdSeconds = 0.5;    // hold the last pose this long
-    double easeSeconds = 1.0;    // then ease to the default pose over this long (0 = jump)
+    double holdSeconds = 0.5;  // hold the last pose this long
+    double easeSeconds = 1.0;  // then ease to the default pose over this long (0 = jump)
     bool operator==(const DropoutConfig&) const = default;
 };
 

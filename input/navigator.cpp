@@ -28,10 +28,10 @@ double applyDeadZone(double v, double zone) {
 
 std::string_view toString(NavMode mode) {
     switch (mode) {
-    case NavMode::Fly: return "fly";
-    case NavMode::Walk: return "walk";
-    case NavMode::Grab: return "grab";
-    case NavMode::Guided: return "guided";
+        case NavMode::Fly: return "fly";
+        case NavMode::Walk: return "walk";
+        case NavMode::Grab: return "grab";
+        case NavMode::Guided: return "guided";
     }
     return "?";
 }
@@ -53,7 +53,8 @@ void Navigator::setMode(NavMode mode) {
 void Navigator::setGuidePath(std::vector<glm::dvec3> points) {
     _guide = std::move(points);
     _guideLengths.assign(_guide.size(), 0.0);
-    for (std::size_t i = 1; i < _guide.size(); ++i) _guideLengths[i] = _guideLengths[i - 1] + glm::length(_guide[i] - _guide[i - 1]);
+    for (std::size_t i = 1; i < _guide.size(); ++i)
+        _guideLengths[i] = _guideLengths[i - 1] + glm::length(_guide[i] - _guide[i - 1]);
     if (_mode == NavMode::Guided) setMode(NavMode::Guided);
 }
 
@@ -64,31 +65,31 @@ void Navigator::setWorldFromCave(const glm::dvec3& origin, double yaw) {
 
 void Navigator::handle(const Event& e) {
     switch (e.type) {
-    case EventType::ButtonDown:
-    case EventType::ButtonUp: {
-        const bool down = e.type == EventType::ButtonDown;
-        if (e.code == 0) {
-            _trigger = down;
-            if (_mode == NavMode::Grab && down) {
-                _grabbing = true;
-                _grabOrigin = _origin;
-                _grabYaw = _yaw;
-                _grabHand = _hand.position;
-                _grabHandYaw = yawOf(forwardOf(_hand.orientation));
+        case EventType::ButtonDown:
+        case EventType::ButtonUp: {
+            const bool down = e.type == EventType::ButtonDown;
+            if (e.code == 0) {
+                _trigger = down;
+                if (_mode == NavMode::Grab && down) {
+                    _grabbing = true;
+                    _grabOrigin = _origin;
+                    _grabYaw = _yaw;
+                    _grabHand = _hand.position;
+                    _grabHandYaw = yawOf(forwardOf(_hand.orientation));
+                }
+                if (!down) _grabbing = false;
+            } else if (e.code == 1 && down) {
+                setMode(static_cast<NavMode>((static_cast<int>(_mode) + 1) % kNavModeCount));
             }
-            if (!down) _grabbing = false;
-        } else if (e.code == 1 && down) {
-            setMode(static_cast<NavMode>((static_cast<int>(_mode) + 1) % kNavModeCount));
+            break;
         }
-        break;
-    }
-    case EventType::SelectMode:
-        if (e.code >= 0 && e.code < kNavModeCount) setMode(static_cast<NavMode>(e.code));
-        break;
-    case EventType::SpeedScale:
-        if (std::isfinite(e.value.x) && e.value.x > 0.0) _speedScale = std::clamp(e.value.x, 0.01, 100.0);
-        break;
-    default: break;
+        case EventType::SelectMode:
+            if (e.code >= 0 && e.code < kNavModeCount) setMode(static_cast<NavMode>(e.code));
+            break;
+        case EventType::SpeedScale:
+            if (std::isfinite(e.value.x) && e.value.x > 0.0) _speedScale = std::clamp(e.value.x, 0.01, 100.0);
+            break;
+        default: break;
     }
 }
 
@@ -142,10 +143,10 @@ void Navigator::update(double dt) {
     if (_config.joystickTurns && _mode != NavMode::Grab)
         turn(-applyDeadZone(_wand.joystick.x, _config.deadZone) * _config.turnRate * dt);
     switch (_mode) {
-    case NavMode::Fly: updateFly(dt); break;
-    case NavMode::Walk: updateWalk(dt); break;
-    case NavMode::Grab: updateGrab(); break;
-    case NavMode::Guided: updateGuided(dt); break;
+        case NavMode::Fly: updateFly(dt); break;
+        case NavMode::Walk: updateWalk(dt); break;
+        case NavMode::Grab: updateGrab(); break;
+        case NavMode::Guided: updateGuided(dt); break;
     }
 }
 
@@ -169,7 +170,8 @@ double Navigator::freeDistance(const glm::dvec3& move) const {
 
 void Navigator::walkOnFloor(double dt) {
     const glm::dvec3 head = headInWorld();
-    const auto floor = _world->floorBelow({head.x, _origin.y + _config.stepHeight, head.z}, _config.stepHeight + _config.maxFall);
+    const auto floor =
+        _world->floorBelow({head.x, _origin.y + _config.stepHeight, head.z}, _config.stepHeight + _config.maxFall);
     if (!floor) {
         _fallSpeed = 0.0;
     } else if (*floor >= _origin.y) {

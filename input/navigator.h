@@ -54,28 +54,28 @@ public:
 };
 
 struct NavigatorConfig {
-    double maxSpeed = 3.0;           // m/s at full speed command
-    double maxAcceleration = 4.0;    // m/s²
-    double turnRate = 1.0;           // rad/s at full joystick x
-    bool joystickTurns = true;       // joystick x turns (true) or strafes (false)
-    double deadZone = 0.1;           // joystick values below this count as 0
-    double bodyRadius = 0.3;         // m kept between the head and walls (walk)
-    double stepHeight = 0.4;         // m, highest step climbed (walk)
-    double gravity = 9.81;           // m/s² (walk)
-    double maxFall = 100.0;          // m searched below for a floor (walk)
-    double pickDistance = 20.0;      // m, cursor ray length when nothing is hit
-    double guidePace = 1.0;          // m/s of the current (guided)
-    double corridorRadius = 2.0;     // m of free steering around the anchor (guided)
-    double pullBackSeconds = 1.0;    // s, time constant of the pull back into the corridor
-    double alignSeconds = 2.0;       // s, time constant of turning to the path direction
+    double maxSpeed = 3.0;         // m/s at full speed command
+    double maxAcceleration = 4.0;  // m/s²
+    double turnRate = 1.0;         // rad/s at full joystick x
+    bool joystickTurns = true;     // joystick x turns (true) or strafes (false)
+    double deadZone = 0.1;         // joystick values below this count as 0
+    double bodyRadius = 0.3;       // m kept between the head and walls (walk)
+    double stepHeight = 0.4;       // m, highest step climbed (walk)
+    double gravity = 9.81;         // m/s² (walk)
+    double maxFall = 100.0;        // m searched below for a floor (walk)
+    double pickDistance = 20.0;    // m, cursor ray length when nothing is hit
+    double guidePace = 1.0;        // m/s of the current (guided)
+    double corridorRadius = 2.0;   // m of free steering around the anchor (guided)
+    double pullBackSeconds = 1.0;  // s, time constant of the pull back into the corridor
+    double alignSeconds = 2.0;     // s, time constant of turning to the path direction
 };
 
 // What the renderer needs to draw the hand icon and its pointing ray, in the cave frame.
 struct HandCursor {
-    Pose hand;                       // the hand's pose
-    glm::dvec3 rayOrigin{0.0};       // = hand position
+    Pose hand;                                // the hand's pose
+    glm::dvec3 rayOrigin{0.0};                // = hand position
     glm::dvec3 rayDirection{0.0, 0.0, -1.0};  // unit, the hand's -Z
-    double rayLength = 0.0;          // to the first surface hit, else pickDistance
+    double rayLength = 0.0;                   // to the first surface hit, else pickDistance
     bool hit = false;
 };
 
@@ -96,10 +96,10 @@ public:
     void update(double dt);
 
     glm::dmat4 worldFromCave() const;
-    const glm::dvec3& origin() const { return _origin; }   // the cave origin in the world
-    double yaw() const { return _yaw; }                    // radians about +Y
+    const glm::dvec3& origin() const { return _origin; }  // the cave origin in the world
+    double yaw() const { return _yaw; }                   // radians about +Y
     const glm::dvec3& velocity() const { return _velocity; }
-    double guideDistance() const { return _guideS; }       // metres along the guide path
+    double guideDistance() const { return _guideS; }  // metres along the guide path
     HandCursor handCursor() const;
 
 private:
@@ -133,9 +133,9 @@ private:
     glm::dvec3 _grabOrigin{0.0}, _grabHand{0.0};
     double _grabYaw = 0.0, _grabHandYaw = 0.0;
     std::vector<glm::dvec3> _guide;
-    std::vector<double> _guideLengths;     // cumulative arc length at each point
+    std::vector<double> _guideLengths;  // cumulative arc length at each point
     double _guideS = 0.0;
-    glm::dvec3 _guideOffset{0.0};          // cave origin - anchor, horizontal
+    glm::dvec3 _guideOffset{0.0};  // cave origin - anchor, horizontal
 };
 
 }  // namespace cavewall::input

@@ -77,11 +77,13 @@ bool sendUdp(const std::string& address, int port, const std::string& data) {
     return n == static_cast<ssize_t>(data.size());
 }
 
-NetworkSource::NetworkSource(NetworkConfig config) : _config(std::move(config)), _socket(_config.bindAddress, _config.port) {
+NetworkSource::NetworkSource(NetworkConfig config)
+    : _config(std::move(config)), _socket(_config.bindAddress, _config.port) {
     if (_config.trackerHost != "*" && _config.trackerHost != "0.0.0.0") {
         _sender = parseIPv4(_config.trackerHost);
         if (!_sender)
-            throw Error("udp: tracker host: expected a numeric IPv4 address, localhost or *, got '" + _config.trackerHost + "'");
+            throw Error("udp: tracker host: expected a numeric IPv4 address, localhost or *, got '" +
+                        _config.trackerHost + "'");
     }
 }
 
@@ -177,9 +179,15 @@ void parseInvert(const TrackerSpec& spec, OpenTrackInvert& inv) {
         const auto comma = list.find(',');
         const std::string name = list.substr(0, comma);
         list = comma == std::string::npos ? "" : list.substr(comma + 1);
-        bool* slot = name == "x" ? &inv.x : name == "y" ? &inv.y : name == "z" ? &inv.z : name == "yaw" ? &inv.yaw
-                   : name == "pitch" ? &inv.pitch : name == "roll" ? &inv.roll : nullptr;
-        if (!slot) spec.fail("invert: expected a comma-separated list of x, y, z, yaw, pitch, roll, got '" + name + "'");
+        bool* slot = name == "x"       ? &inv.x
+                     : name == "y"     ? &inv.y
+                     : name == "z"     ? &inv.z
+                     : name == "yaw"   ? &inv.yaw
+                     : name == "pitch" ? &inv.pitch
+                     : name == "roll"  ? &inv.roll
+                                       : nullptr;
+        if (!slot)
+            spec.fail("invert: expected a comma-separated list of x, y, z, yaw, pitch, roll, got '" + name + "'");
         *slot = true;
     }
 }
@@ -194,8 +202,9 @@ config::TrackingVolume parseVolume(const TrackerSpec& spec) {
         v[i] = std::strtod(p, &end);
         const bool last = i == 5;
         if (end == p || !std::isfinite(v[i]) || std::abs(v[i]) > config::kMaxCoordinate || *end != (last ? '\0' : ','))
-            spec.fail("volume: expected six comma-separated numbers within " + config::formatNumber(config::kMaxCoordinate) +
-                      " (x0,y0,z0,x1,y1,z1 in metres), got '" + text + "'");
+            spec.fail("volume: expected six comma-separated numbers within " +
+                      config::formatNumber(config::kMaxCoordinate) + " (x0,y0,z0,x1,y1,z1 in metres), got '" + text +
+                      "'");
         p = end + 1;
     }
     const config::TrackingVolume volume{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
@@ -211,8 +220,10 @@ std::unique_ptr<TrackerSource> makeNetworkSource(const TrackerSpec& spec, const 
     c.caveFromTracker = context.caveFromTracker;
     c.volume = context.volume;
     c.protocol = spec.scheme() == "dtrack" ? NetworkProtocol::DTrack : NetworkProtocol::OpenTrack;
-    if (c.protocol == NetworkProtocol::DTrack) spec.expectParams({"body", "hand", "bind", "stale", "volume"});
-    else spec.expectParams({"bind", "stale", "invert", "volume"});
+    if (c.protocol == NetworkProtocol::DTrack)
+        spec.expectParams({"body", "hand", "bind", "stale", "volume"});
+    else
+        spec.expectParams({"bind", "stale", "invert", "volume"});
     if (spec.has("volume")) c.volume = parseVolume(spec);
     const std::string& target = spec.target();
     const auto colon = target.rfind(':');
@@ -228,9 +239,11 @@ std::unique_ptr<TrackerSource> makeNetworkSource(const TrackerSpec& spec, const 
     c.bindAddress = spec.get("bind", "127.0.0.1");
     const auto host = parseIPv4(c.trackerHost);
     const bool anyHost = c.trackerHost == "*" || c.trackerHost == "0.0.0.0";
-    if (!anyHost && !host) spec.fail("host: expected a numeric IPv4 address, localhost or *, got '" + c.trackerHost + "'");
+    if (!anyHost && !host)
+        spec.fail("host: expected a numeric IPv4 address, localhost or *, got '" + c.trackerHost + "'");
     if (!spec.has("bind") && host && (*host >> 24) != 127)
-        spec.fail("host " + c.trackerHost + " is not on this machine but the listener binds to 127.0.0.1 by default "
+        spec.fail("host " + c.trackerHost +
+                  " is not on this machine but the listener binds to 127.0.0.1 by default "
                   "(expected ?bind=0.0.0.0 or the address of the network interface)");
     c.headBody = static_cast<int>(spec.integer("body", 1, 0, 1000000));
     c.handId = static_cast<int>(spec.integer("hand", 0, 0, 1000000));

@@ -32,7 +32,7 @@ public:
     UdpReceiver(const UdpReceiver&) = delete;
     UdpReceiver& operator=(const UdpReceiver&) = delete;
 
-    int port() const { return _port; }    // the bound port (the chosen one for port 0)
+    int port() const { return _port; }  // the bound port (the chosen one for port 0)
     // Takes one pending datagram; false when none is waiting. Never blocks.
     bool receive(std::string& data, std::uint32_t& senderAddress);
 
@@ -52,20 +52,20 @@ enum class NetworkProtocol { DTrack, OpenTrack };
 
 struct NetworkConfig {
     NetworkProtocol protocol = NetworkProtocol::DTrack;
-    std::string trackerHost = "127.0.0.1";   // accepted sender; "*" or "0.0.0.0" = any
-    std::string bindAddress = "127.0.0.1";   // local address to listen on
-    int port = 0;                            // local port; 0 = any free port
-    int headBody = 1;                        // DTrack 6d body id of the head
-    int handId = 0;                          // DTrack Flystick (or 6d body) id of the hand
-    double staleSeconds = 0.1;               // how long a pose stays valid without packets
+    std::string trackerHost = "127.0.0.1";  // accepted sender; "*" or "0.0.0.0" = any
+    std::string bindAddress = "127.0.0.1";  // local address to listen on
+    int port = 0;                           // local port; 0 = any free port
+    int headBody = 1;                       // DTrack 6d body id of the head
+    int handId = 0;                         // DTrack Flystick (or 6d body) id of the hand
+    double staleSeconds = 0.1;              // how long a pose stays valid without packets
     OpenTrackInvert invert;
-    glm::dmat4 caveFromTracker{1.0};         // to check poses against the volume
-    config::TrackingVolume volume;           // cave frame; a pose outside is dropped (stats().outside)
+    glm::dmat4 caveFromTracker{1.0};  // to check poses against the volume
+    config::TrackingVolume volume;    // cave frame; a pose outside is dropped (stats().outside)
 };
 
 class NetworkSource : public TrackerSource {
 public:
-    explicit NetworkSource(NetworkConfig config);   // binds; throws Error
+    explicit NetworkSource(NetworkConfig config);  // binds; throws Error
     Sample poll(double now) override;
     SourceStats stats() const override { return _stats; }
     bool isLive() const override { return true; }
@@ -79,7 +79,7 @@ private:
 
     NetworkConfig _config;
     UdpReceiver _socket;
-    std::optional<std::uint32_t> _sender;    // nullopt = any
+    std::optional<std::uint32_t> _sender;  // nullopt = any
     SourceStats _stats;
     Sample _latest;
     double _headTime = -1e300, _handTime = -1e300;

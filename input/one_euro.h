@@ -18,10 +18,10 @@
 namespace cavewall::input {
 
 struct OneEuroConfig {
-    double minCutoff = 1.0;   // Hz: cutoff at rest; lower = less jitter, more lag when slow
-    double beta = 20.0;       // Hz per unit of speed (m/s or rad/s): higher = less lag when fast
-    double dCutoff = 1.0;     // Hz: cutoff of the speed estimate
-    bool enabled = true;      // false: pass samples through (the speed is still estimated)
+    double minCutoff = 1.0;  // Hz: cutoff at rest; lower = less jitter, more lag when slow
+    double beta = 20.0;      // Hz per unit of speed (m/s or rad/s): higher = less lag when fast
+    double dCutoff = 1.0;    // Hz: cutoff of the speed estimate
+    bool enabled = true;     // false: pass samples through (the speed is still estimated)
     bool operator==(const OneEuroConfig&) const = default;
 };
 
@@ -36,7 +36,7 @@ public:
     explicit OneEuroVec3(OneEuroConfig config = kPositionFilter) : _config(config) {}
     glm::dvec3 filter(const glm::dvec3& x, double time);
     const glm::dvec3& value() const { return _value; }
-    const glm::dvec3& velocity() const { return _velocity; }   // filtered, units per second
+    const glm::dvec3& velocity() const { return _velocity; }  // filtered, units per second
     void reset() { _started = false; }
 
 private:

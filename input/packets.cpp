@@ -163,7 +163,8 @@ std::optional<DTrackFrame> parseDTrack(std::string_view packet, PacketDrop* drop
         if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
         if (line.empty()) continue;
         bool known = false, nonFinite = false;
-        if (!parseLine(line, f, known, nonFinite)) return dropped(drop, nonFinite ? PacketDrop::NonFinite : PacketDrop::Malformed);
+        if (!parseLine(line, f, known, nonFinite))
+            return dropped(drop, nonFinite ? PacketDrop::NonFinite : PacketDrop::Malformed);
         any = any || (known && line.rfind("ts", 0) != 0);
     }
     if (!any) return dropped(drop, PacketDrop::Malformed);
@@ -180,7 +181,8 @@ std::optional<Pose> parseOpenTrack(std::string_view packet, const OpenTrackInver
     double v[6];
     for (int i = 0; i < 6; ++i) {
         std::uint64_t bits = 0;
-        for (int b = 0; b < 8; ++b) bits |= static_cast<std::uint64_t>(static_cast<unsigned char>(packet[i * 8 + b])) << (8 * b);
+        for (int b = 0; b < 8; ++b)
+            bits |= static_cast<std::uint64_t>(static_cast<unsigned char>(packet[i * 8 + b])) << (8 * b);
         v[i] = std::bit_cast<double>(bits);
         if (!std::isfinite(v[i])) return fail(PacketDrop::NonFinite);
         if (std::fabs(v[i]) > (i < 3 ? 10000.0 : 360.0)) return fail(PacketDrop::Malformed);

@@ -42,9 +42,9 @@ namespace cavewall::input {
 enum class PacketDrop : std::uint8_t { None, Malformed, NonFinite };
 
 struct DTrackBody {
-    int id = 0;                      // DTrack's body id (as numbered in DTrack, from 0)
-    double quality = 0.0;            // < 0: not tracked
-    Pose pose;                       // tracker frame, metres
+    int id = 0;            // DTrack's body id (as numbered in DTrack, from 0)
+    double quality = 0.0;  // < 0: not tracked
+    Pose pose;             // tracker frame, metres
     bool tracked() const { return quality >= 0.0; }
 };
 

@@ -38,8 +38,8 @@ glm::dquat normalisedQuat(glm::dquat q, const std::string& where) {
 void checkTimes(const std::vector<PathKey>& keys, const std::string& where) {
     const std::size_t n = keys.size();
     if (n >= 2 && !(keys[n - 1].time > keys[n - 2].time))
-        throw Error(where + ": times must strictly increase (expected more than " + config::formatNumber(keys[n - 2].time) +
-                    ", got " + config::formatNumber(keys[n - 1].time) + ")");
+        throw Error(where + ": times must strictly increase (expected more than " +
+                    config::formatNumber(keys[n - 2].time) + ", got " + config::formatNumber(keys[n - 1].time) + ")");
 }
 
 Pose csvPose(const std::vector<double>& v, std::size_t first, const std::string& where) {
@@ -53,11 +53,12 @@ std::size_t parseCsvHeader(std::string_view line, const std::string& where) {
     const auto cols = splitCommas(line);
     const bool withHand = cols.size() == 15;
     bool ok = cols.size() == 8 || withHand;
-    for (std::size_t i = 0; ok && i < cols.size(); ++i)
-        ok = cols[i] == (i < 8 ? kHeadColumns[i] : kHandColumns[i - 8]);
+    for (std::size_t i = 0; ok && i < cols.size(); ++i) ok = cols[i] == (i < 8 ? kHeadColumns[i] : kHandColumns[i - 8]);
     if (!ok)
-        throw Error(where + ": expected the header t,x,y,z,qx,qy,qz,qw (optionally followed by "
-                    "hx,hy,hz,hqx,hqy,hqz,hqw), got '" + std::string(line) + "'");
+        throw Error(where +
+                    ": expected the header t,x,y,z,qx,qy,qz,qw (optionally followed by "
+                    "hx,hy,hz,hqx,hqy,hqz,hqw), got '" +
+                    std::string(line) + "'");
     return cols.size();
 }
 
@@ -79,7 +80,8 @@ RecordedPath parsePathCsv(std::string_view text, const std::string& source) {
         }
         const auto cells = splitCommas(line);
         if (cells.size() != columns)
-            throw Error(where + ": expected " + std::to_string(columns) + " values, got " + std::to_string(cells.size()));
+            throw Error(where + ": expected " + std::to_string(columns) + " values, got " +
+                        std::to_string(cells.size()));
         std::vector<double> v(columns);
         for (std::size_t i = 0; i < columns; ++i) {
             auto [end, ec] = std::from_chars(cells[i].data(), cells[i].data() + cells[i].size(), v[i]);
@@ -134,7 +136,8 @@ RecordedPath loadRecordedPath(const std::filesystem::path& file) {
 Pose interpolatePath(const std::vector<PathKey>& keys, double time) {
     if (time <= keys.front().time) return keys.front().pose;
     if (time >= keys.back().time) return keys.back().pose;
-    const auto it = std::upper_bound(keys.begin(), keys.end(), time, [](double t, const PathKey& k) { return t < k.time; });
+    const auto it =
+        std::upper_bound(keys.begin(), keys.end(), time, [](double t, const PathKey& k) { return t < k.time; });
     const std::size_t i = static_cast<std::size_t>(it - keys.begin()) - 1, n = keys.size();
     const auto tangent = [&](std::size_t k) {
         const std::size_t a = k == 0 ? 0 : k - 1, b = k + 1 == n ? k : k + 1;
@@ -153,7 +156,8 @@ namespace {
 
 class PathFileSource : public TrackerSource {
 public:
-    PathFileSource(RecordedPath path, bool loop, std::string text) : _path(std::move(path)), _loop(loop), _text(std::move(text)) {}
+    PathFileSource(RecordedPath path, bool loop, std::string text)
+        : _path(std::move(path)), _loop(loop), _text(std::move(text)) {}
 
     Sample poll(double now) override {
         if (!_started) {

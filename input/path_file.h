@@ -29,13 +29,13 @@
 namespace cavewall::input {
 
 struct PathKey {
-    double time = 0.0;               // seconds
+    double time = 0.0;  // seconds
     Pose pose;
 };
 
 struct RecordedPath {
-    std::vector<PathKey> head;       // at least 2 keys, strictly increasing times
-    std::vector<PathKey> hand;       // empty, or the same times as head
+    std::vector<PathKey> head;  // at least 2 keys, strictly increasing times
+    std::vector<PathKey> hand;  // empty, or the same times as head
 };
 
 RecordedPath parsePathCsv(std::string_view text, const std::string& source);

@@ -9,8 +9,8 @@
 namespace cavewall::input {
 namespace {
 
-const char* const kEventNames[] = {"buttonDown", "buttonUp", "keyDown", "keyUp", "mouseMove", "scroll", "selectMode", "speedScale",
-                                   "pointerCapture"};
+const char* const kEventNames[] = {"buttonDown", "buttonUp",   "keyDown",    "keyUp",         "mouseMove",
+                                   "scroll",     "selectMode", "speedScale", "pointerCapture"};
 
 // The shortest text that reads back to the same double (std::to_chars round-trip guarantee).
 std::string num(double v) {
@@ -28,7 +28,8 @@ std::string poseArray(const Pose& p) {
 
 Pose readPose(const config::JsonNode& n) {
     const auto v = n.items(7, 7);
-    return {{v[0].number(), v[1].number(), v[2].number()}, {v[6].number(), v[3].number(), v[4].number(), v[5].number()}};
+    return {{v[0].number(), v[1].number(), v[2].number()},
+            {v[6].number(), v[3].number(), v[4].number(), v[5].number()}};
 }
 
 glm::dvec2 readVec2(const config::JsonNode& n) {
@@ -41,8 +42,8 @@ void readRecord(const config::JsonNode& r, Recording& out) {
     const double t = r.at("t").number();
     if (r.has("event")) {
         r.expectKeys({"t", "event", "code", "value"});
-        const std::string name = r.at("event").oneOf({"buttonDown", "buttonUp", "keyDown", "keyUp", "mouseMove", "scroll",
-                                                      "selectMode", "speedScale", "pointerCapture"});
+        const std::string name = r.at("event").oneOf({"buttonDown", "buttonUp", "keyDown", "keyUp", "mouseMove",
+                                                      "scroll", "selectMode", "speedScale", "pointerCapture"});
         Event e;
         e.time = t;
         for (std::size_t i = 0; i < std::size(kEventNames); ++i)
@@ -71,21 +72,22 @@ void readRecord(const config::JsonNode& r, Recording& out) {
 std::string_view toString(EventType type) { return kEventNames[static_cast<int>(type)]; }
 
 std::string formatSampleLine(const Sample& s) {
-    return "{\"t\":" + num(s.time) + ",\"head\":" + poseArray(s.head) + ",\"headValid\":" + (s.headValid ? "true" : "false") +
-           ",\"hand\":" + poseArray(s.hand) + ",\"handValid\":" + (s.handValid ? "true" : "false") +
-           ",\"buttons\":" + std::to_string(s.wand.buttons) + ",\"joystick\":[" + num(s.wand.joystick.x) + "," +
-           num(s.wand.joystick.y) + "]}";
+    return "{\"t\":" + num(s.time) + ",\"head\":" + poseArray(s.head) +
+           ",\"headValid\":" + (s.headValid ? "true" : "false") + ",\"hand\":" + poseArray(s.hand) +
+           ",\"handValid\":" + (s.handValid ? "true" : "false") + ",\"buttons\":" + std::to_string(s.wand.buttons) +
+           ",\"joystick\":[" + num(s.wand.joystick.x) + "," + num(s.wand.joystick.y) + "]}";
 }
 
 std::string formatEventLine(const Event& e) {
-    return "{\"t\":" + num(e.time) + ",\"event\":\"" + std::string(toString(e.type)) + "\",\"code\":" + std::to_string(e.code) +
-           ",\"value\":[" + num(e.value.x) + "," + num(e.value.y) + "]}";
+    return "{\"t\":" + num(e.time) + ",\"event\":\"" + std::string(toString(e.type)) +
+           "\",\"code\":" + std::to_string(e.code) + ",\"value\":[" + num(e.value.x) + "," + num(e.value.y) + "]}";
 }
 
 Recorder::Recorder(const std::filesystem::path& file, std::string_view sourceDescription) : _file(file) {
     _out = std::fopen(file.c_str(), "w");
     if (!_out) throw Error(file.string() + ": cannot write the recording: " + std::strerror(errno));
-    writeLine("{\"format\":\"cavewall-input\",\"version\":1,\"source\":" + nlohmann::json(std::string(sourceDescription)).dump() + "}");
+    writeLine("{\"format\":\"cavewall-input\",\"version\":1,\"source\":" +
+              nlohmann::json(std::string(sourceDescription)).dump() + "}");
 }
 
 Recorder::~Recorder() {
@@ -129,7 +131,9 @@ Recording parseRecording(std::string_view text, const std::string& sourceName) {
     return out;
 }
 
-Recording loadRecording(const std::filesystem::path& file) { return parseRecording(config::readTextFile(file), file.string()); }
+Recording loadRecording(const std::filesystem::path& file) {
+    return parseRecording(config::readTextFile(file), file.string());
+}
 
 Sample ReplaySource::poll(double now) {
     if (!_started) {

@@ -27,7 +27,7 @@
 
 namespace cavewall::input {
 
-std::string_view toString(EventType type);   // "buttonDown", "keyDown", ...
+std::string_view toString(EventType type);  // "buttonDown", "keyDown", ...
 
 // Non-finite numbers cannot be written (JSON has none); sources never produce them.
 std::string formatSampleLine(const Sample& sample);
@@ -51,9 +51,9 @@ private:
 };
 
 struct Recording {
-    std::string source;             // the recorded source's spec
-    std::vector<Sample> samples;    // in time order
-    std::vector<Event> events;      // in time order
+    std::string source;           // the recorded source's spec
+    std::vector<Sample> samples;  // in time order
+    std::vector<Event> events;    // in time order
 };
 
 Recording parseRecording(std::string_view text, const std::string& sourceName);
@@ -72,7 +72,7 @@ public:
 private:
     Recording _recording;
     bool _started = false;
-    double _offset = 0.0;           // recording time = now + _offset
+    double _offset = 0.0;  // recording time = now + _offset
     double _now = 0.0;
     std::size_t _nextSample = 0, _nextEvent = 0;
     Sample _current;

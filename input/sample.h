@@ -14,15 +14,15 @@
 namespace cavewall::input {
 
 struct Pose {
-    glm::dvec3 position{0.0};                      // metres
-    glm::dquat orientation{1.0, 0.0, 0.0, 0.0};    // unit quaternion (w, x, y, z)
+    glm::dvec3 position{0.0};                    // metres
+    glm::dquat orientation{1.0, 0.0, 0.0, 0.0};  // unit quaternion (w, x, y, z)
     bool operator==(const Pose&) const = default;
 };
 
 // Wand (Flystick) buttons and joystick. Button 0 is the trigger, button 1 the mode button.
 struct WandState {
-    std::uint32_t buttons = 0;       // bit i set = button i held (up to 32 buttons)
-    glm::dvec2 joystick{0.0};        // x right, y forward/up, each in [-1, 1]
+    std::uint32_t buttons = 0;  // bit i set = button i held (up to 32 buttons)
+    glm::dvec2 joystick{0.0};   // x right, y forward/up, each in [-1, 1]
     bool pressed(int button) const { return button >= 0 && button < 32 && ((buttons >> button) & 1u); }
     bool operator==(const WandState&) const = default;
 };
@@ -31,9 +31,9 @@ struct WandState {
 // data for that device (out of view, no packets, simulated drop-out); the pose is then the last
 // one seen and the drop-out policy (input/dropout.h) decides what the viewer gets.
 struct Sample {
-    double time = 0.0;               // seconds on the clock passed to TrackerSource::poll
-    Pose head;                       // tracker frame
-    Pose hand;                       // tracker frame; the wand's pose
+    double time = 0.0;  // seconds on the clock passed to TrackerSource::poll
+    Pose head;          // tracker frame
+    Pose hand;          // tracker frame; the wand's pose
     bool headValid = false;
     bool handValid = false;
     WandState wand;
@@ -47,20 +47,20 @@ inline constexpr int kKeyControl = 258;
 inline constexpr int kKeyF1 = 259;
 
 enum class EventType : std::uint8_t {
-    ButtonDown,   // code = wand or mouse button (0 trigger / left, 1 mode / right, ...)
+    ButtonDown,  // code = wand or mouse button (0 trigger / left, 1 mode / right, ...)
     ButtonUp,
-    KeyDown,      // code = key code
+    KeyDown,  // code = key code
     KeyUp,
-    MouseMove,    // value = pointer motion in pixels (x right, y down)
-    Scroll,       // value.y = wheel steps (positive away from the user)
-    SelectMode,   // code = navigation mode (input::NavMode as int)
-    SpeedScale,   // value.x = navigation speed multiplier (> 0)
+    MouseMove,       // value = pointer motion in pixels (x right, y down)
+    Scroll,          // value.y = wheel steps (positive away from the user)
+    SelectMode,      // code = navigation mode (input::NavMode as int)
+    SpeedScale,      // value.x = navigation speed multiplier (> 0)
     PointerCapture,  // code = 1: a window captured the pointer (a click); 0: released it (Escape)
 };
 
 struct Event {
     EventType type = EventType::KeyDown;
-    double time = 0.0;               // seconds, same clock as samples
+    double time = 0.0;  // seconds, same clock as samples
     int code = 0;
     glm::dvec2 value{0.0};
     bool operator==(const Event&) const = default;

@@ -8,12 +8,12 @@
 namespace cavewall::input {
 namespace {
 
-constexpr double kStepHz = 1.8;          // steps per second while walking
-constexpr double kBob = 0.02;            // metres of vertical step bob at full pace
-constexpr double kSway = 0.02;           // metres of sideways sway at full pace
-constexpr double kJitter = 0.0005;       // metres of position jitter
-constexpr double kAngleJitter = 0.001;   // radians of orientation jitter
-constexpr double kCrouchFraction = 0.65; // crouching eye height / standing eye height
+constexpr double kStepHz = 1.8;           // steps per second while walking
+constexpr double kBob = 0.02;             // metres of vertical step bob at full pace
+constexpr double kSway = 0.02;            // metres of sideways sway at full pace
+constexpr double kJitter = 0.0005;        // metres of position jitter
+constexpr double kAngleJitter = 0.001;    // radians of orientation jitter
+constexpr double kCrouchFraction = 0.65;  // crouching eye height / standing eye height
 
 // Smootherstep and its derivative: the walk eases in and out with zero speed and acceleration.
 double ease(double u) { return u * u * u * (u * (u * 6.0 - 15.0) + 10.0); }
@@ -46,7 +46,8 @@ const SimWalk::Leg& SimWalk::legAt(double t) {
         leg.crouch = uniform(_legState, 0.0, 1.0) < 0.25;
         leg.pauseSeconds = uniform(_legState, leg.crouch ? 2.0 : 0.3, leg.crouch ? 3.5 : 2.5);
         leg.yawFrom = prev.yawTo;
-        leg.yawTo = glm::length(d) > 1e-3 ? leg.yawFrom + angleDifference(leg.yawFrom, yawOf({d.x, 0.0, d.y})) : leg.yawFrom;
+        leg.yawTo =
+            glm::length(d) > 1e-3 ? leg.yawFrom + angleDifference(leg.yawFrom, yawOf({d.x, 0.0, d.y})) : leg.yawFrom;
         _legs.push_back(leg);
     }
     // Legs are sorted by start; find the last one starting at or before t.
@@ -61,7 +62,8 @@ bool SimWalk::droppedAt(std::vector<Interval>& intervals, std::uint64_t stream, 
         const double start = (intervals.empty() ? 0.0 : intervals.back().end) + uniform(state, 2.0, 8.0);
         intervals.push_back({start, start + uniform(state, 0.1, 1.5)});
     }
-    auto it = std::upper_bound(intervals.begin(), intervals.end(), t, [](double v, const Interval& i) { return v < i.end; });
+    auto it =
+        std::upper_bound(intervals.begin(), intervals.end(), t, [](double v, const Interval& i) { return v < i.end; });
     return it != intervals.end() && it->start <= t;
 }
 
@@ -92,16 +94,18 @@ Pose SimWalk::headPose(double t) {
     t = std::max(t, 0.0);
     const glm::dvec3 p = headInCave(t);
     const Leg& leg = legAt(t);
-    const double turn = leg.walkSeconds > 0.0 ? ease(std::clamp((t - leg.start) / std::min(1.0, leg.walkSeconds), 0.0, 1.0)) : 1.0;
+    const double turn =
+        leg.walkSeconds > 0.0 ? ease(std::clamp((t - leg.start) / std::min(1.0, leg.walkSeconds), 0.0, 1.0)) : 1.0;
     const double phase = static_cast<double>(_config.seed % 1000);
     const double yaw = leg.yawFrom + (leg.yawTo - leg.yawFrom) * turn + 0.6 * std::sin(2.0 * M_PI * t / 7.0 + phase) +
                        0.25 * std::sin(2.0 * M_PI * t / 3.1 + 2.0 * phase);
-    const double pitch = -0.1 + 0.2 * std::sin(2.0 * M_PI * t / 5.3 + phase) - 0.4 * (1.0 - p.y / _context.standingEyeHeight);
+    const double pitch =
+        -0.1 + 0.2 * std::sin(2.0 * M_PI * t / 5.3 + phase) - 0.4 * (1.0 - p.y / _context.standingEyeHeight);
     const std::uint64_t seed = _config.seed;
     Pose head;
     head.position = p + kJitter * glm::dvec3(hashNoise(seed, t, 1), hashNoise(seed, t, 2), hashNoise(seed, t, 3));
-    head.orientation = yawPitchRoll(yaw + kAngleJitter * hashNoise(seed, t, 4), pitch + kAngleJitter * hashNoise(seed, t, 5),
-                                    kAngleJitter * hashNoise(seed, t, 6));
+    head.orientation = yawPitchRoll(yaw + kAngleJitter * hashNoise(seed, t, 4),
+                                    pitch + kAngleJitter * hashNoise(seed, t, 5), kAngleJitter * hashNoise(seed, t, 6));
     return head;
 }
 
@@ -110,7 +114,8 @@ Pose SimWalk::handPose(double t, const Pose& head) const {
     const glm::dquat body = yawPitchRoll(headYaw, 0.0);
     Pose hand;
     hand.position = head.position + body * glm::dvec3(0.2, -0.4, -0.35);
-    hand.orientation = yawPitchRoll(headYaw + 0.3 * std::sin(2.0 * M_PI * t / 4.3), -0.2 + 0.3 * std::sin(2.0 * M_PI * t / 6.1));
+    hand.orientation =
+        yawPitchRoll(headYaw + 0.3 * std::sin(2.0 * M_PI * t / 4.3), -0.2 + 0.3 * std::sin(2.0 * M_PI * t / 6.1));
     return hand;
 }
 

@@ -24,8 +24,8 @@
 namespace cavewall::input {
 
 struct SimWalkConfig {
-    std::uint64_t seed = 0;          // any value; the same seed gives the same walk
-    bool dropouts = false;           // simulate tracking drop-outs
+    std::uint64_t seed = 0;  // any value; the same seed gives the same walk
+    bool dropouts = false;   // simulate tracking drop-outs
 };
 
 class SimWalk {
@@ -43,7 +43,9 @@ private:
         double yawFrom = 0.0, yawTo = 0.0;
         bool crouch = false;
     };
-    struct Interval { double start = 0.0, end = 0.0; };
+    struct Interval {
+        double start = 0.0, end = 0.0;
+    };
 
     const Leg& legAt(double t);
     bool droppedAt(std::vector<Interval>& intervals, std::uint64_t stream, double t);
@@ -53,8 +55,8 @@ private:
     SimWalkConfig _config;
     TrackerContext _context;
     glm::dmat4 _trackerFromCave;
-    glm::dvec2 _lo, _hi;             // where the head may go (floor area minus margin)
-    std::uint64_t _legState;         // random stream of the legs
+    glm::dvec2 _lo, _hi;      // where the head may go (floor area minus margin)
+    std::uint64_t _legState;  // random stream of the legs
     std::vector<Leg> _legs;
     std::vector<Interval> _headDrops, _handDrops;
     std::uint64_t _headDropState, _handDropState;

@@ -16,8 +16,9 @@ TrackerSpec TrackerSpec::parse(std::string_view spec) {
     s._text = std::string(spec);
     const auto colon = spec.find(':');
     if (colon == std::string_view::npos || colon == 0)
-        s.fail("expected SCHEME:TARGET such as sim:walk, file:PATH, replay:PATH, dtrack:udp://HOST:PORT or "
-               "opentrack:udp://HOST:PORT");
+        s.fail(
+            "expected SCHEME:TARGET such as sim:walk, file:PATH, replay:PATH, dtrack:udp://HOST:PORT or "
+            "opentrack:udp://HOST:PORT");
     s._scheme = std::string(spec.substr(0, colon));
     std::string_view rest = spec.substr(colon + 1);
     const auto question = rest.find('?');

@@ -34,12 +34,12 @@ namespace cavewall::input {
 
 // Counters of a source; packets are datagrams for network sources.
 struct SourceStats {
-    std::uint64_t packets = 0;        // datagrams received
-    std::uint64_t accepted = 0;       // datagrams that updated at least one device
-    std::uint64_t malformed = 0;      // dropped: garbage, truncated, bad numbers
-    std::uint64_t nonFinite = 0;      // dropped: NaN or infinite values
-    std::uint64_t foreign = 0;        // dropped: from a sender other than HOST
-    std::uint64_t outside = 0;        // dropped: a pose outside the tracking volume
+    std::uint64_t packets = 0;    // datagrams received
+    std::uint64_t accepted = 0;   // datagrams that updated at least one device
+    std::uint64_t malformed = 0;  // dropped: garbage, truncated, bad numbers
+    std::uint64_t nonFinite = 0;  // dropped: NaN or infinite values
+    std::uint64_t foreign = 0;    // dropped: from a sender other than HOST
+    std::uint64_t outside = 0;    // dropped: a pose outside the tracking volume
     std::uint64_t dropped() const { return malformed + nonFinite + foreign + outside; }
 };
 
@@ -83,15 +83,15 @@ public:
     static TrackerSpec parse(std::string_view spec);
 
     const std::string& text() const { return _text; }
-    const std::string& scheme() const { return _scheme; }    // "sim", "file", "dtrack", ...
-    const std::string& target() const { return _target; }    // "walk", a path, "udp://host:port"
+    const std::string& scheme() const { return _scheme; }  // "sim", "file", "dtrack", ...
+    const std::string& target() const { return _target; }  // "walk", a path, "udp://host:port"
     void expectParams(std::initializer_list<std::string_view> allowed) const;
     bool has(std::string_view key) const { return _params.find(std::string(key)) != _params.end(); }
     std::string get(std::string_view key, std::string fallback) const;
     double number(std::string_view key, double fallback, double lo, double hi) const;
     std::int64_t integer(std::string_view key, std::int64_t fallback, std::int64_t lo, std::int64_t hi) const;
-    bool flag(std::string_view key, bool fallback) const;    // 0/1/true/false
-    [[noreturn]] void fail(const std::string& what) const;   // "tracker 'spec': what"
+    bool flag(std::string_view key, bool fallback) const;   // 0/1/true/false
+    [[noreturn]] void fail(const std::string& what) const;  // "tracker 'spec': what"
 
 private:
     std::string _text, _scheme, _target;

@@ -20,9 +20,10 @@ Pose predictPose(const Pose& pose, const glm::dvec3& velocity, const glm::dvec3&
 }
 
 TrackingPipeline::TrackingPipeline(PipelineConfig config)
-    : _config(config),
-      _head{DropoutPolicy(config.dropout, config.defaultHead), OneEuroVec3(config.position), OneEuroQuat(config.orientation)},
-      _hand{DropoutPolicy(config.dropout, config.defaultHand), OneEuroVec3(config.position), OneEuroQuat(config.orientation)} {}
+    : _config(config), _head{DropoutPolicy(config.dropout, config.defaultHead), OneEuroVec3(config.position),
+                             OneEuroQuat(config.orientation)},
+      _hand{DropoutPolicy(config.dropout, config.defaultHand), OneEuroVec3(config.position),
+            OneEuroQuat(config.orientation)} {}
 
 TrackedDevice TrackingPipeline::step(Device& d, double time, bool valid, const Pose& trackerPose) {
     std::optional<Pose> measured;

@@ -19,13 +19,13 @@
 namespace cavewall::input {
 
 struct PipelineConfig {
-    glm::dmat4 caveFromTracker{1.0};      // rigid calibration (config tracking.caveFromTracker)
-    double latencySeconds = 0.0;          // motion-to-photon latency to predict over, >= 0
+    glm::dmat4 caveFromTracker{1.0};  // rigid calibration (config tracking.caveFromTracker)
+    double latencySeconds = 0.0;      // motion-to-photon latency to predict over, >= 0
     OneEuroConfig position = kPositionFilter;
     OneEuroConfig orientation = kOrientationFilter;
     DropoutConfig dropout;
-    Pose defaultHead{{0.0, 1.7, 0.0}, {1.0, 0.0, 0.0, 0.0}};         // cave frame
-    Pose defaultHand{{0.2, 1.3, -0.35}, {1.0, 0.0, 0.0, 0.0}};       // cave frame
+    Pose defaultHead{{0.0, 1.7, 0.0}, {1.0, 0.0, 0.0, 0.0}};    // cave frame
+    Pose defaultHand{{0.2, 1.3, -0.35}, {1.0, 0.0, 0.0, 0.0}};  // cave frame
 };
 
 // caveFromTracker and latency from the display's "tracking"; the default head is the viewer's;
@@ -33,14 +33,14 @@ struct PipelineConfig {
 PipelineConfig pipelineConfigFor(const config::DisplayConfig& display);
 
 struct TrackedDevice {
-    Pose pose;                            // cave frame, filtered and predicted
-    glm::dvec3 velocity{0.0};             // m/s, cave frame (filter estimate)
-    glm::dvec3 angularVelocity{0.0};      // rad/s rotation vector, cave frame
+    Pose pose;                        // cave frame, filtered and predicted
+    glm::dvec3 velocity{0.0};         // m/s, cave frame (filter estimate)
+    glm::dvec3 angularVelocity{0.0};  // rad/s rotation vector, cave frame
     TrackState state = TrackState::Default;
 };
 
 struct TrackedFrame {
-    double time = 0.0;                    // the sample's time, seconds
+    double time = 0.0;  // the sample's time, seconds
     TrackedDevice head, hand;
     WandState wand;
 };

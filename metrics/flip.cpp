@@ -177,11 +177,11 @@ struct RowFilter {
         filterColumns<float>(rows.taps(0, y, k.gaussian.size()), k.gaussian, w, columnG.data());
         filterColumns<float>(rows.taps(0, y, k.edge.size()), k.edge, w, columnD.data());
         filterColumns<float>(rows.taps(0, y, k.point.size()), k.point, w, columnDD.data());
-        filterRow(columnG.data(), w, k.edge, line, out.edges.data());     // d/dx
-        filterRow(columnD.data(), w, k.gaussian, line, row.data());       // d/dy
+        filterRow(columnG.data(), w, k.edge, line, out.edges.data());  // d/dx
+        filterRow(columnD.data(), w, k.gaussian, line, row.data());    // d/dy
         for (int x = 0; x < w; ++x) out.edges[x] = std::sqrt(out.edges[x] * out.edges[x] + row[x] * row[x]) / 116.0f;
-        filterRow(columnG.data(), w, k.point, line, out.points.data());   // d²/dx²
-        filterRow(columnDD.data(), w, k.gaussian, line, row.data());      // d²/dy²
+        filterRow(columnG.data(), w, k.point, line, out.points.data());  // d²/dx²
+        filterRow(columnDD.data(), w, k.gaussian, line, row.data());     // d²/dy²
         for (int x = 0; x < w; ++x) out.points[x] = std::sqrt(out.points[x] * out.points[x] + row[x] * row[x]) / 116.0f;
     }
 
@@ -201,8 +201,8 @@ FilteredRow filteredRow(int width) {
 
 // FLIP of pixel x of two filtered rows: the colour error raised to 1 - feature error.
 double pixelError(const FilteredRow& t, const FilteredRow& r, int x) {
-    const double colour = flipColorError(hyab(huntLabFromOpponent({t.yy[x], t.cx[x], t.cz[x]}),
-                                              huntLabFromOpponent({r.yy[x], r.cx[x], r.cz[x]})));
+    const double colour = flipColorError(
+        hyab(huntLabFromOpponent({t.yy[x], t.cx[x], t.cz[x]}), huntLabFromOpponent({r.yy[x], r.cx[x], r.cz[x]})));
     const double edge = std::abs(t.edges[x] - r.edges[x]), point = std::abs(t.points[x] - r.points[x]);
     const double feature = std::min(1.0, std::sqrt(std::max(edge, point) / std::numbers::sqrt2));  // qf = 0.5
     return feature > 0.0 ? std::pow(static_cast<float>(colour), static_cast<float>(1.0 - feature)) : colour;

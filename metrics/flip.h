@@ -79,13 +79,13 @@ constexpr double kFlipDefaultPixelsPerDegree = 67.0206;
 
 struct FlipOptions {
     double pixelsPerDegree = kFlipDefaultPixelsPerDegree;  // in [1, 1000]
-    ColorEncoding encoding = ColorEncoding::Srgb;           // of both images' R, G and B bytes
+    ColorEncoding encoding = ColorEncoding::Srgb;          // of both images' R, G and B bytes
 };
 
 struct FlipResult {
     int width = 0, height = 0;
-    std::vector<float> errors;  // width * height, rows top to bottom, each in [0, 1]
-    double mean = 0.0;          // mean of `errors`: FLIP's single-number summary
+    std::vector<float> errors;               // width * height, rows top to bottom, each in [0, 1]
+    double mean = 0.0;                       // mean of `errors`: FLIP's single-number summary
     double p50 = 0.0, p95 = 0.0, max = 0.0;  // nearest-rank percentiles of `errors`
 };
 

@@ -11,7 +11,8 @@ namespace {
 
 int pixelDelta(const scenes::Image& a, const scenes::Image& b, std::size_t pixel) {
     int d = 0;
-    for (std::size_t c = 0; c < 4; ++c) d = std::max(d, std::abs(int(a.rgba[pixel * 4 + c]) - int(b.rgba[pixel * 4 + c])));
+    for (std::size_t c = 0; c < 4; ++c)
+        d = std::max(d, std::abs(int(a.rgba[pixel * 4 + c]) - int(b.rgba[pixel * 4 + c])));
     return d;
 }
 
@@ -57,7 +58,8 @@ ImageComparison compareImages(const scenes::Image& actual, const scenes::Image& 
     r.meanDelta = sum / static_cast<double>(pixels);
     r.badFraction = static_cast<double>(bad) / static_cast<double>(pixels);
     // Stable: equal Δ keep row-major order, so the report is deterministic.
-    std::stable_sort(all.begin(), all.end(), [](const PixelDelta& a, const PixelDelta& b) { return a.delta > b.delta; });
+    std::stable_sort(all.begin(), all.end(),
+                     [](const PixelDelta& a, const PixelDelta& b) { return a.delta > b.delta; });
     all.resize(std::min(all.size(), static_cast<std::size_t>(std::max(worstCount, 0))));
     r.worst = std::move(all);
     return r;

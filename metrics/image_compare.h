@@ -24,13 +24,13 @@ struct ImageTolerance {
 };
 
 struct PixelDelta {
-    int x = 0, y = 0;               // pixel, origin top-left (rows as stored in files)
-    int delta = 0;                  // Δ, 0-255
+    int x = 0, y = 0;  // pixel, origin top-left (rows as stored in files)
+    int delta = 0;     // Δ, 0-255
     bool operator==(const PixelDelta&) const = default;
 };
 
 struct ImageComparison {
-    bool sameSize = false;          // false: nothing else is meaningful, and passes() fails
+    bool sameSize = false;  // false: nothing else is meaningful, and passes() fails
     int maxDelta = 0;
     double meanDelta = 0.0;
     double badFraction = 0.0;       // share of pixels with Δ > tolerance.badDelta

@@ -7,9 +7,7 @@
 
 namespace cavewall::metrics {
 
-double psnrFromMse(double mse) {
-    return mse > 0.0 ? -10.0 * std::log10(mse) : std::numeric_limits<double>::infinity();
-}
+double psnrFromMse(double mse) { return mse > 0.0 ? -10.0 * std::log10(mse) : std::numeric_limits<double>::infinity(); }
 
 SquaredError squaredError(const scenes::Image& test, const scenes::Image& reference) {
     expectComparableImages("squared error", test, reference);

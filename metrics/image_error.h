@@ -30,8 +30,8 @@ constexpr double kQuantisationPsnrDb = 58.92262;
 double psnrFromMse(double mse);
 
 struct SquaredError {
-    double sum = 0.0;            // sum of (test - reference)² over R, G, B samples, [0, 1] units
-    std::uint64_t samples = 0;   // R, G, B values compared: 3 per pixel
+    double sum = 0.0;           // sum of (test - reference)² over R, G, B samples, [0, 1] units
+    std::uint64_t samples = 0;  // R, G, B values compared: 3 per pixel
 
     double mse() const { return samples > 0 ? sum / static_cast<double>(samples) : 0.0; }
     double psnrDb() const { return psnrFromMse(mse()); }
@@ -49,7 +49,7 @@ SquaredError squaredError(const scenes::Image& test, const scenes::Image& refere
 struct PooledErrorSummary {
     std::size_t frames = 0;
     double mse = 0.0;  // pooled: all squared errors over all samples of all frames
-    double psnrDb = std::numeric_limits<double>::infinity();  // from the pooled MSE: the headline
+    double psnrDb = std::numeric_limits<double>::infinity();            // from the pooled MSE: the headline
     double worstFramePsnrDb = std::numeric_limits<double>::infinity();  // the lowest per-frame PSNR
     std::int64_t worstFrame = -1;  // its frame id (the first added on ties); -1 without frames
     // 5th percentile (nearest rank) of per-frame PSNR: at least 95 % of frames are this good.

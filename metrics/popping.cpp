@@ -32,7 +32,8 @@ double framePairPopping(const scenes::Image& previousTest, const scenes::Image& 
             const std::size_t i = (static_cast<std::size_t>(y) * test.width + x) * 4;
             for (std::size_t c = i; c < i + 3; ++c) {
                 // (T - R) - (T' - R'), R - R', in bytes: exact in integers.
-                const int errorChange = (test.rgba[c] - reference.rgba[c]) - (previousTest.rgba[c] - previousReference.rgba[c]);
+                const int errorChange =
+                    (test.rgba[c] - reference.rgba[c]) - (previousTest.rgba[c] - previousReference.rgba[c]);
                 const int pictureChange = reference.rgba[c] - previousReference.rgba[c];
                 tile.errorChange += errorChange * errorChange;
                 tile.pictureChange += pictureChange * pictureChange;

@@ -31,15 +31,15 @@
 namespace cavewall::metrics {
 
 struct PoppingOptions {
-    int tileSize = 32;             // pixels, >= 1; 2-3.5 degrees at a CAVE wall's 9-17 ppd
-    double floor = 1.0 / 255.0;    // smallest dR divided by, [0, 1] units RMS, > 0
+    int tileSize = 32;           // pixels, >= 1; 2-3.5 degrees at a CAVE wall's 9-17 ppd
+    double floor = 1.0 / 255.0;  // smallest dR divided by, [0, 1] units RMS, > 0
 };
 
 struct PoppingSummary {
-    std::size_t pairs = 0;         // frame pairs scored
-    double peak = 0.0;             // largest frame-pair popping; 0 without pairs
-    double rms = 0.0;              // sqrt(mean of squared frame-pair popping); 0 without pairs
-    std::int64_t peakFrame = -1;   // id of the later frame of the peak pair (first on ties)
+    std::size_t pairs = 0;        // frame pairs scored
+    double peak = 0.0;            // largest frame-pair popping; 0 without pairs
+    double rms = 0.0;             // sqrt(mean of squared frame-pair popping); 0 without pairs
+    std::int64_t peakFrame = -1;  // id of the later frame of the peak pair (first on ties)
 };
 
 // Scores a sequence frame by frame. Keeps a copy of the previous frame's two images.

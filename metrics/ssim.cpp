@@ -67,7 +67,6 @@ double ssimAt(const Moments& m, int i) {
     return ((2 * ux * uy + kC1) * (2 * cov + kC2)) / ((ux * ux + uy * uy + kC1) * (vx + vy + kC2));
 }
 
-
 }  // namespace
 
 double ssim(const scenes::Image& a, const scenes::Image& b) {

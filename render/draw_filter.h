@@ -10,14 +10,14 @@ namespace cavewall::render {
 // frustum, unless frustumCull is false). The default draws all. Pointers are borrowed for the
 // duration of the call only.
 struct DrawFilter {
-    const std::vector<int>* objects = nullptr;   // only these Scene::objects indices (any order;
-                                                 // duplicates and indices out of range are
-                                                 // ignored); nullptr: all
-    bool skipStructure = false;                  // leave out Role::Structure objects (wall bakes)
-    bool frustumCull = true;                     // false: submit every selected object (tests, benchmarks)
-    const std::vector<int>* lodLevels = nullptr; // per object index, the level of detail to draw
-                                                 // (chooseLods; clamped to the mesh's levels);
-                                                 // nullptr or beyond its end: level 0, full detail
+    const std::vector<int>* objects = nullptr;    // only these Scene::objects indices (any order;
+                                                  // duplicates and indices out of range are
+                                                  // ignored); nullptr: all
+    bool skipStructure = false;                   // leave out Role::Structure objects (wall bakes)
+    bool frustumCull = true;                      // false: submit every selected object (tests, benchmarks)
+    const std::vector<int>* lodLevels = nullptr;  // per object index, the level of detail to draw
+                                                  // (chooseLods; clamped to the mesh's levels);
+                                                  // nullptr or beyond its end: level 0, full detail
 };
 
 }  // namespace cavewall::render

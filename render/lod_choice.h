@@ -17,11 +17,11 @@ namespace cavewall::render {
 
 // The frame's levels of detail (chooseLods).
 struct FrameLod {
-    std::vector<int> levels;     // per object index (DrawFilter::lodLevels); 0 where not drawn
-    double tolerancePx = 0.0;    // the pixel tolerance every drawn object meets
-    double maxErrorPx = 0.0;     // the largest geometric error drawn, in pixels on its screen
-    std::size_t triangles = 0;   // triangles the views will submit at these levels
-    bool overBudget = false;     // the coarsest levels still exceed the triangle budget
+    std::vector<int> levels;    // per object index (DrawFilter::lodLevels); 0 where not drawn
+    double tolerancePx = 0.0;   // the pixel tolerance every drawn object meets
+    double maxErrorPx = 0.0;    // the largest geometric error drawn, in pixels on its screen
+    std::size_t triangles = 0;  // triangles the views will submit at these levels
+    bool overBudget = false;    // the coarsest levels still exceed the triangle budget
 };
 
 // The most pixels one model unit of an object's geometric error covers on `screen`
@@ -40,8 +40,7 @@ double pixelsPerUnit(const scenes::Bounds& worldBounds, double modelStretch, con
 // Without level chains (RenderScene::hasLods false) everything is level 0.
 FrameLod chooseLods(const RenderScene& scene, const std::vector<display::ScreenView>& views,
                     const glm::dmat4& worldFromCave, const DrawFilter& filter, double tolerancePx,
-                    std::size_t triangleBudget = 0,
-                    double maxTolerancePx = std::numeric_limits<double>::infinity());
+                    std::size_t triangleBudget = 0, double maxTolerancePx = std::numeric_limits<double>::infinity());
 
 // Levels of detail for one frustum drawn into `pixels` (a wall texture: screen = the wall quad,
 // eye = the sampling point, frame = the world, pixels = texels): chooseLods for that single view,

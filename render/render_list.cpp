@@ -33,9 +33,8 @@ BatchKey drawKey(const RenderScene& scene, const Draw& draw) {
 void appendBatches(const RenderScene& scene, std::vector<Draw>& draws, bool byKey, int offset,
                    std::vector<Batch>& batches) {
     if (byKey)
-        std::stable_sort(draws.begin(), draws.end(), [&](const Draw& a, const Draw& b) {
-            return drawKey(scene, a) < drawKey(scene, b);
-        });
+        std::stable_sort(draws.begin(), draws.end(),
+                         [&](const Draw& a, const Draw& b) { return drawKey(scene, a) < drawKey(scene, b); });
     const std::size_t firstNew = batches.size();
     for (int d = 0; d < static_cast<int>(draws.size()); ++d) {
         const BatchKey key = drawKey(scene, draws[d]);
@@ -48,9 +47,7 @@ void appendBatches(const RenderScene& scene, std::vector<Draw>& draws, bool byKe
 }
 
 ListBuilder::ListBuilder(const RenderScene& scene)
-    : _scene(scene),
-      _sortKeys(scene.objectCount(), 0.0),
-      _listStamp(scene.objectCount(), 0),
+    : _scene(scene), _sortKeys(scene.objectCount(), 0.0), _listStamp(scene.objectCount(), 0),
       _vertexLightingTolerance(kVertexLightingTolerance) {}
 
 ListBuilder::Selection ListBuilder::select(const glm::dmat4& clipFromWorld, const DrawFilter& filter) {
@@ -130,8 +127,8 @@ void ListBuilder::addDraws(const std::vector<int>& objects, const DrawFilter& fi
         if (indices == 0) continue;
         const double distance =
             std::sqrt(sortedByDistance ? _sortKeys[i] : squaredDistance(_scene.objects()[i].worldBounds, eye));
-        const bool vertexLit = litPerVertex(_scene.flatEdge(mesh, level), _scene.modelStretch(i), distance,
-                                            _vertexLightingTolerance);
+        const bool vertexLit =
+            litPerVertex(_scene.flatEdge(mesh, level), _scene.modelStretch(i), distance, _vertexLightingTolerance);
         _pending.push_back({i, level, vertexLit});
         _list.triangles += indices / 3;
     }

@@ -43,18 +43,18 @@ BatchKey drawKey(const RenderScene& scene, const Draw& draw);
 // A run of draws sharing a batch key: one multi-draw.
 struct Batch {
     BatchKey key;
-    int first = 0;   // into RenderList::draws
+    int first = 0;  // into RenderList::draws
     int count = 0;
 };
 
 struct RenderList {
-    display::OffAxisFrustum frustum;   // the view, in its frame
-    glm::dmat4 frameFromWorld{1.0};    // the frustum's frame from the world
-    std::vector<Draw> draws;           // in draw order; each batch's draws are contiguous
-    std::vector<Batch> batches;        // in draw order
-    std::size_t firstBlended = 0;      // batches from this one on are blended
-    std::size_t triangles = 0;         // of every draw, at its level
-    double cullMs = 0.0;               // wall-clock ms spent filtering and culling
+    display::OffAxisFrustum frustum;  // the view, in its frame
+    glm::dmat4 frameFromWorld{1.0};   // the frustum's frame from the world
+    std::vector<Draw> draws;          // in draw order; each batch's draws are contiguous
+    std::vector<Batch> batches;       // in draw order
+    std::size_t firstBlended = 0;     // batches from this one on are blended
+    std::size_t triangles = 0;        // of every draw, at its level
+    double cullMs = 0.0;              // wall-clock ms spent filtering and culling
 };
 
 // Appends batches of `draws` (keys from `scene`) to `batches`, reordering `draws` as it goes.
@@ -89,14 +89,15 @@ public:
                             const DrawFilter& filter);
 
 private:
-    void addDraws(const std::vector<int>& objects, const DrawFilter& filter, const glm::dvec3& eye, bool sortedByDistance);
+    void addDraws(const std::vector<int>& objects, const DrawFilter& filter, const glm::dvec3& eye,
+                  bool sortedByDistance);
 
     const RenderScene& _scene;
     RenderList _list;
     std::vector<int> _visible, _opaque, _blended;
-    std::vector<Draw> _pending;               // one pass's draws before batching
-    std::vector<double> _sortKeys;            // per object: squared distance of its bounds from the eye
-    std::vector<std::uint32_t> _listStamp;    // per object: == _stamp when in DrawFilter::objects
+    std::vector<Draw> _pending;             // one pass's draws before batching
+    std::vector<double> _sortKeys;          // per object: squared distance of its bounds from the eye
+    std::vector<std::uint32_t> _listStamp;  // per object: == _stamp when in DrawFilter::objects
     std::uint32_t _stamp = 0;
     double _vertexLightingTolerance;
 };

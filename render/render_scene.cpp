@@ -25,8 +25,7 @@ BatchKey batchKey(const scenes::Material& m, bool flipWinding, bool cullBackFace
 }
 
 RenderScene::RenderScene(const scenes::Scene& scene, bool buildLods, bool cullBackFaces)
-    : _objects(scene.objects),
-      _lods(buildLods ? scenes::buildSceneLods(scene) : std::vector<scenes::MeshLod>{}),
+    : _objects(scene.objects), _lods(buildLods ? scenes::buildSceneLods(scene) : std::vector<scenes::MeshLod>{}),
       _bvh(scene) {
     const int materials = static_cast<int>(scene.materials.size());
     const int images = static_cast<int>(scene.images.size());
@@ -58,8 +57,6 @@ RenderScene::RenderScene(const scenes::Scene& scene, bool buildLods, bool cullBa
     }
 }
 
-int RenderScene::clampLevel(int mesh, int level) const {
-    return std::min(std::max(level, 0), levelCount(mesh) - 1);
-}
+int RenderScene::clampLevel(int mesh, int level) const { return std::min(std::max(level, 0), levelCount(mesh) - 1); }
 
 }  // namespace cavewall::render

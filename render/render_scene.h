@@ -49,7 +49,7 @@ public:
     int objectCount() const { return static_cast<int>(_objects.size()); }
     const std::vector<scenes::Object>& objects() const { return _objects; }
     const scenes::Bvh& bvh() const { return _bvh; }
-    bool blended(int object) const { return _blended[object]; }   // its material blends
+    bool blended(int object) const { return _blended[object]; }  // its material blends
     const BatchKey& batchKey(int object) const { return _keys[object]; }
     double modelStretch(int object) const { return _modelStretch[object]; }  // maxStretch of worldFromModel
 
@@ -72,9 +72,9 @@ private:
     std::vector<BatchKey> _keys;
     std::vector<double> _modelStretch;
     std::vector<scenes::MeshLod> _lods;
-    std::vector<int> _levelStart;               // per mesh + 1: first entry in _levelIndices
-    std::vector<std::uint32_t> _levelIndices;   // per mesh and level: index count
-    std::vector<double> _levelFlatEdge;         // per mesh and level: flatMaxEdge
+    std::vector<int> _levelStart;              // per mesh + 1: first entry in _levelIndices
+    std::vector<std::uint32_t> _levelIndices;  // per mesh and level: index count
+    std::vector<double> _levelFlatEdge;        // per mesh and level: flatMaxEdge
     scenes::Bvh _bvh;
 };
 

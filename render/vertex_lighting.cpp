@@ -31,7 +31,7 @@ double flatMaxEdge(const scenes::Mesh& mesh, std::span<const std::uint32_t> indi
         const glm::dvec3 p0(mesh.positions[i[0]]), p1(mesh.positions[i[1]]), p2(mesh.positions[i[2]]);
         const glm::dvec3 cross = glm::cross(p1 - p0, p2 - p0);
         const double area2 = glm::length(cross);
-        if (!(area2 > 0.0)) continue;   // degenerate: rasterises to nothing
+        if (!(area2 > 0.0)) continue;  // degenerate: rasterises to nothing
         if (hasNormals) {
             const glm::dvec3 face = cross / area2;
             for (std::uint32_t v : i)

@@ -43,7 +43,7 @@
 namespace cavewall::render {
 
 inline constexpr double kVertexLightingTolerance = 1.0 / 512.0;
-inline constexpr double kFlatNormalSlack = 1e-4;   // |n_vertex - (+-n_face)|, unit vectors
+inline constexpr double kFlatNormalSlack = 1e-4;  // |n_vertex - (+-n_face)|, unit vectors
 
 // The longest edge (model units) of the triangles `indices` of `mesh` names, when every one of
 // them is flat (vertex normals within kFlatNormalSlack of the face normal or its opposite, equal

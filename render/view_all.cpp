@@ -43,8 +43,7 @@ ViewAll viewAll(const display::Display& display, const display::HeadPose& head, 
     const double radius = std::max(0.5 * glm::length(bounds.size()), 1e-6);
     // Distance of e + d * ray from a side plane through the eye is d * (n . ray): at least r.
     double distance = radius + 1.01 * display.depthRange().near;
-    for (const glm::dvec3& n : sideNormals(f))
-        distance = std::max(distance, radius / std::max(glm::dot(n, ray), 1e-9));
+    for (const glm::dvec3& n : sideNormals(f)) distance = std::max(distance, radius / std::max(glm::dot(n, ray), 1e-9));
     out.distance = distance;
     // worldFromCave maps the cave point e + d * ray onto the sphere's centre.
     out.worldFromCave = glm::translate(glm::dmat4(1.0), bounds.centre() - (f.eye + distance * ray));

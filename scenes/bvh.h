@@ -50,17 +50,17 @@ public:
 private:
     struct Node {
         Bounds bounds;
-        int first = 0;   // range [first, first + count) of _order
+        int first = 0;  // range [first, first + count) of _order
         int count = 0;
-        int left = -1;   // children (node indices); -1 for a leaf
+        int left = -1;  // children (node indices); -1 for a leaf
         int right = -1;
     };
     int build(int first, int count, const std::vector<Bounds>& bounds);
     void addRange(const Node& node, std::vector<int>& out, const std::vector<bool>* cells) const;
 
     std::vector<Node> _nodes;
-    std::vector<int> _order;  // object indices, each node's objects contiguous
-    std::vector<int> _cells;  // per object (original index), -1 = none
+    std::vector<int> _order;      // object indices, each node's objects contiguous
+    std::vector<int> _cells;      // per object (original index), -1 = none
     std::vector<Bounds> _bounds;  // per object (original index)
 };
 

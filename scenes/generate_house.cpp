@@ -17,11 +17,12 @@ constexpr double kHeight = 2.8, kDoorWidth = 0.9, kDoorHeight = 2.1, kThickness 
 enum Kind { TableKind, ChairKind, SofaKind, BedKind, ShelfKind, LampKind };
 
 std::vector<Mesh> houseKinds(int detail) {
-    return {makeTable(detail), makeChair(detail), makeSofa(detail), makeBed(detail), makeShelf(detail), makeLamp(detail)};
+    return {makeTable(detail), makeChair(detail), makeSofa(detail),
+            makeBed(detail),   makeShelf(detail), makeLamp(detail)};
 }
 
 struct WallLine {
-    glm::dvec2 a, b;      // floor points (x, z), axis-aligned
+    glm::dvec2 a, b;            // floor points (x, z), axis-aligned
     int front = -1, back = -1;  // cells on either side when it has a door
     bool door = false;
 };
@@ -45,7 +46,8 @@ std::vector<WallLine> wallLines() {
 // One solid rectangle of wall between floor points p and q, heights y0..y1: geometry (a box)
 // and the matching zero-thickness RealWall on the centre line.
 // Outer walls are lengthened by the thickness so the corners close; pieces next to doorways are not.
-void addWallPiece(GeneratedScene& g, int boxMesh, glm::dvec2 p, glm::dvec2 q, double y0, double y1, bool extend = false) {
+void addWallPiece(GeneratedScene& g, int boxMesh, glm::dvec2 p, glm::dvec2 q, double y0, double y1,
+                  bool extend = false) {
     const glm::dvec2 d = q - p;
     const double len = glm::length(d);
     if (len < 1e-9) return;
@@ -56,8 +58,8 @@ void addWallPiece(GeneratedScene& g, int boxMesh, glm::dvec2 p, glm::dvec2 q, do
     m = glm::scale(m, alongX ? glm::dvec3(l, y1 - y0, kThickness) : glm::dvec3(kThickness, y1 - y0, l));
     const std::string name = "structure/wall-" + std::to_string(g.description.realWalls.size());
     addObject(g.scene, boxMesh, m, name, Role::Structure);
-    g.description.realWalls.push_back({name.substr(10), glm::dvec3(p.x, y0, p.y), glm::dvec3(q.x, y0, q.y),
-                                       glm::dvec3(p.x, y1, p.y)});
+    g.description.realWalls.push_back(
+        {name.substr(10), glm::dvec3(p.x, y0, p.y), glm::dvec3(q.x, y0, q.y), glm::dvec3(p.x, y1, p.y)});
 }
 
 void addWalls(GeneratedScene& g) {
@@ -78,8 +80,13 @@ void addWalls(GeneratedScene& g) {
         const glm::dvec3 a(d0.x, 0, d0.y), b(d1.x, 0, d1.y);
         const bool faces = glm::dot(glm::cross(b - a, glm::dvec3(0, 1, 0)), glm::dvec3(fc.x, 0, fc.y) - a) > 0.0;
         const glm::dvec3 ll = faces ? a : b, lr = faces ? b : a;
-        g.description.walls.push_back({"door " + g.description.cells[w.front].name + "|" + g.description.cells[w.back].name,
-                                       ll, lr, ll + glm::dvec3(0, kDoorHeight, 0), {w.front, w.back}, WallKind::Portal});
+        g.description.walls.push_back(
+            {"door " + g.description.cells[w.front].name + "|" + g.description.cells[w.back].name,
+             ll,
+             lr,
+             ll + glm::dvec3(0, kDoorHeight, 0),
+             {w.front, w.back},
+             WallKind::Portal});
     }
 }
 
@@ -87,7 +94,8 @@ void addRoomsStructure(GeneratedScene& g) {
     const glm::vec4 floorA(0.62f, 0.5f, 0.38f, 1), floorB(0.56f, 0.45f, 0.34f, 1), ceiling(0.93f, 0.93f, 0.9f, 1);
     g.scene.meshes.push_back(makeTiledQuad({-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, 12, 12, floorA, floorB));
     const int floorMesh = static_cast<int>(g.scene.meshes.size()) - 1;
-    g.scene.meshes.push_back(makeTiledQuad({-3, static_cast<float>(kHeight), -3}, {6, 0, 0}, {0, 0, 6}, 2, 2, ceiling, ceiling));
+    g.scene.meshes.push_back(
+        makeTiledQuad({-3, static_cast<float>(kHeight), -3}, {6, 0, 0}, {0, 0, 6}, 2, 2, ceiling, ceiling));
     const int ceilingMesh = floorMesh + 1;
     for (int row = 0; row < 2; ++row)
         for (int col = 0; col < 3; ++col) {
@@ -95,8 +103,10 @@ void addRoomsStructure(GeneratedScene& g) {
             const glm::dmat4 m = glm::translate(glm::dmat4(1.0), glm::dvec3(c.x, 0, c.y));
             addObject(g.scene, floorMesh, m, "structure/floor-" + roomName(row, col), Role::Structure);
             addObject(g.scene, ceilingMesh, m, "structure/ceiling-" + roomName(row, col), Role::Structure);
-            g.description.cells.push_back({roomName(row, col),
-                                           {{c.x - 3, c.y + 3}, {c.x + 3, c.y + 3}, {c.x + 3, c.y - 3}, {c.x - 3, c.y - 3}}, 0.0});
+            g.description.cells.push_back(
+                {roomName(row, col),
+                 {{c.x - 3, c.y + 3}, {c.x + 3, c.y + 3}, {c.x + 3, c.y - 3}, {c.x - 3, c.y - 3}},
+                 0.0});
         }
 }
 
@@ -117,15 +127,27 @@ std::vector<Placement> furniture(Rng& rng) {
                 const glm::dvec2 p = roomCentre(row, col) + 1.7 * s;
                 const double facing = s.y > 0 ? 180.0 : 0.0;  // backs against the wall at z = centre + 3 s.y
                 switch (rng.below(4)) {
-                case 0:
-                    put(TableKind, p, 0.0);
-                    for (int k = 0; k < 4; ++k)
-                        put(ChairKind, p + 0.75 * glm::dvec2(k == 0 ? 1 : k == 1 ? -1 : 0, k == 2 ? 1 : k == 3 ? -1 : 0),
-                            90.0 * k + 90.0);
-                    break;
-                case 1: put(SofaKind, p + glm::dvec2(0, 0.5 * s.y), facing); put(LampKind, p - glm::dvec2(0.9 * s.x, -0.9 * s.y), 0.0); break;
-                case 2: put(BedKind, p, facing); break;
-                default: put(ShelfKind, p + glm::dvec2(0, 0.9 * s.y), facing); put(ChairKind, p, facing + 180.0); break;
+                    case 0:
+                        put(TableKind, p, 0.0);
+                        for (int k = 0; k < 4; ++k)
+                            put(ChairKind,
+                                p + 0.75 * glm::dvec2(k == 0   ? 1
+                                                      : k == 1 ? -1
+                                                               : 0,
+                                                      k == 2   ? 1
+                                                      : k == 3 ? -1
+                                                               : 0),
+                                90.0 * k + 90.0);
+                        break;
+                    case 1:
+                        put(SofaKind, p + glm::dvec2(0, 0.5 * s.y), facing);
+                        put(LampKind, p - glm::dvec2(0.9 * s.x, -0.9 * s.y), 0.0);
+                        break;
+                    case 2: put(BedKind, p, facing); break;
+                    default:
+                        put(ShelfKind, p + glm::dvec2(0, 0.9 * s.y), facing);
+                        put(ChairKind, p, facing + 180.0);
+                        break;
                 }
             }
     return out;

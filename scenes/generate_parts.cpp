@@ -71,8 +71,8 @@ Mesh makeMachineTool(int variant, int detail) {
     const float len = 3.2f + 0.4f * static_cast<float>(variant), tall = 2.0f + 0.4f * static_cast<float>(variant);
     const glm::vec4 paint = variant == 1 ? kMachineGrey : kMachineGreen;
     b.box({0, 0.4f, 0}, {len + 0.6f, 0.8f, 2.0f}, kDark);                 // bed
-    b.box({-0.3f, 0.8f + 0.5f * tall, 0}, {len, tall, 1.6f}, paint);       // enclosure
-    b.box({0.5f * len + 0.1f, 1.4f, 0.9f}, {0.5f, 0.9f, 0.2f}, kDark);     // control panel
+    b.box({-0.3f, 0.8f + 0.5f * tall, 0}, {len, tall, 1.6f}, paint);      // enclosure
+    b.box({0.5f * len + 0.1f, 1.4f, 0.9f}, {0.5f, 0.9f, 0.2f}, kDark);    // control panel
     b.cylinderY({0.2f, 0.8f, 0}, 0.35f, 0.25f, kSteel);                   // table
     b.cylinderY({0.2f, 1.9f, 0}, 0.12f, 0.9f, kSteel);                    // spindle
     b.cylinderAlong(0, {-0.5f * len, 1.4f, -0.6f}, 0.25f, 0.9f, kSteel);  // motor
@@ -109,8 +109,8 @@ Mesh makeRobot(int detail) {
     PartBuilder b{{}, detail, true};
     b.cylinderY({0, 0, 0}, 0.45f, 0.4f, kDark);
     b.cylinderY({0, 0.4f, 0}, 0.35f, 0.5f, kOrange);
-    b.cylinderAlong(2, {0, 1.0f, 0}, 0.22f, 0.6f, kOrange);    // shoulder
-    b.box({0.25f, 1.45f, 0}, {0.25f, 0.9f, 0.25f}, kOrange);   // upper arm
+    b.cylinderAlong(2, {0, 1.0f, 0}, 0.22f, 0.6f, kOrange);   // shoulder
+    b.box({0.25f, 1.45f, 0}, {0.25f, 0.9f, 0.25f}, kOrange);  // upper arm
     b.cylinderAlong(2, {0.25f, 1.9f, 0}, 0.16f, 0.45f, kOrange);
     b.box({0.7f, 1.95f, 0}, {0.9f, 0.18f, 0.18f}, kOrange);    // forearm
     b.cylinderAlong(0, {1.2f, 1.95f, 0}, 0.08f, 0.2f, kDark);  // wrist
@@ -123,8 +123,10 @@ Mesh makeRobot(int detail) {
     }
     for (int i = 0; i < 8 * d; ++i) {  // cable harness up the upper arm and along the forearm
         const float t = static_cast<float>(i) / static_cast<float>(8 * d);
-        if (t < 0.5f) b.cylinderY({0.25f, 1.0f + 1.8f * t, 0.16f}, 0.02f, 0.09f, kDark);
-        else b.cylinderAlong(0, {0.25f + 1.8f * (t - 0.5f), 2.07f, 0.0f}, 0.02f, 0.09f, kDark);
+        if (t < 0.5f)
+            b.cylinderY({0.25f, 1.0f + 1.8f * t, 0.16f}, 0.02f, 0.09f, kDark);
+        else
+            b.cylinderAlong(0, {0.25f + 1.8f * (t - 0.5f), 2.07f, 0.0f}, 0.02f, 0.09f, kDark);
     }
     return b.finish("robot");
 }
@@ -215,7 +217,8 @@ Mesh makeSofa(int detail) {
     b.box({0, 0.25f, 0}, {1.8f, 0.4f, 0.8f}, kFabric);
     b.box({0, 0.6f, -0.3f}, {1.8f, 0.6f, 0.2f}, kFabric);
     for (float x : {-0.95f, 0.95f}) b.cylinderAlong(2, {x, 0.5f, 0}, 0.15f, 0.8f, kFabric);
-    for (int i = 0; i < 3; ++i) b.cylinderAlong(0, {-0.6f + 0.6f * static_cast<float>(i), 0.55f, 0.05f}, 0.1f, 0.5f, kWhite);
+    for (int i = 0; i < 3; ++i)
+        b.cylinderAlong(0, {-0.6f + 0.6f * static_cast<float>(i), 0.55f, 0.05f}, 0.1f, 0.5f, kWhite);
     return b.finish("sofa");
 }
 
@@ -262,8 +265,10 @@ std::vector<Mesh> meshesForTarget(const std::vector<Placement>& placements, std:
     }
     while (lo < hi) {
         const int mid = (lo + hi) / 2;
-        if (drawn(kinds(mid)) >= target) hi = mid;
-        else lo = mid + 1;
+        if (drawn(kinds(mid)) >= target)
+            hi = mid;
+        else
+            lo = mid + 1;
     }
     return kinds(lo);
 }

@@ -26,7 +26,7 @@ public:
     explicit Rng(std::uint64_t seed) : _state(seed) {}
     std::uint64_t next();
     double uniform(double lo, double hi);  // [lo, hi)
-    int below(int n);                       // [0, n)
+    int below(int n);                      // [0, n)
     bool chance(double p) { return uniform(0.0, 1.0) < p; }
 
 private:
@@ -71,7 +71,7 @@ Mesh makeLamp(int detail);
 
 // One placement of a part kind, before meshes exist.
 struct Placement {
-    int kind = 0;                 // index into the generator's kind list
+    int kind = 0;  // index into the generator's kind list
     glm::dmat4 worldFromModel{1.0};
     std::string name;
 };

@@ -37,16 +37,16 @@ enum Kind { Machine0, Machine1, Machine2, RobotKind, ConveyorKind, CabinetKind, 
 
 std::vector<Mesh> plantKinds(int detail) {
     return {makeMachineTool(0, detail), makeMachineTool(1, detail), makeMachineTool(2, detail), makeRobot(detail),
-            makeConveyor(detail), makeCabinet(detail), makePipeRack(detail)};
+            makeConveyor(detail),       makeCabinet(detail),        makePipeRack(detail)};
 }
 
 glm::dmat4 place(double x, double z, double yawDeg) {
     return glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(x, 0, z)), glm::radians(yawDeg), glm::dvec3(0, 1, 0));
 }
 
-constexpr int kColumnsPerStep = 8;                 // cell columns (10 m wide) per kTrianglesPerStep
+constexpr int kColumnsPerStep = 8;  // cell columns (10 m wide) per kTrianglesPerStep
 constexpr std::size_t kTrianglesPerStep = 2'000'000;
-constexpr int kMaxColumns = 8 * 64;                // a 5.12 km hall
+constexpr int kMaxColumns = 8 * 64;  // a 5.12 km hall
 
 // Cell columns for a triangle target: 8 per 2 M triangles, the target rounded to the nearest
 // 2 M (at least one step), so the default and every target below 3 M keep the 80 m hall.
@@ -110,14 +110,19 @@ void addStructure(Scene& s, Mesh mesh, const std::vector<glm::dmat4>& where, con
 void plantStructure(Scene& s, int columns) {
     const glm::vec4 floorA(0.55f, 0.56f, 0.55f, 1), floorB(0.48f, 0.49f, 0.5f, 1);
     const glm::vec4 wallA(0.78f, 0.76f, 0.7f, 1), wallB(0.72f, 0.7f, 0.64f, 1), roof(0.6f, 0.62f, 0.66f, 1);
-    const float hx = static_cast<float>(halfX(columns)), hz = static_cast<float>(kHalfZ), h = static_cast<float>(kHeight);
+    const float hx = static_cast<float>(halfX(columns)), hz = static_cast<float>(kHalfZ),
+                h = static_cast<float>(kHeight);
     const glm::dmat4 id(1.0);
     // Tiles per 80 m of hall as in the default: floor 40, roof 10, long walls 20.
     const int floorTiles = 5 * columns, roofTiles = (10 * columns + 4) / 8, wallTiles = (20 * columns + 4) / 8;
-    addStructure(s, makeTiledQuad({-hx, 0, hz}, {2 * hx, 0, 0}, {0, 0, -2 * hz}, floorTiles, 20, floorA, floorB), {id}, "floor");
-    addStructure(s, makeTiledQuad({-hx, h, -hz}, {2 * hx, 0, 0}, {0, 0, 2 * hz}, roofTiles, 5, roof, roof), {id}, "roof");
-    addStructure(s, makeTiledQuad({-hx, 0, -hz}, {2 * hx, 0, 0}, {0, h, 0}, wallTiles, 2, wallA, wallB), {id}, "wall-north");
-    addStructure(s, makeTiledQuad({hx, 0, hz}, {-2 * hx, 0, 0}, {0, h, 0}, wallTiles, 2, wallA, wallB), {id}, "wall-south");
+    addStructure(s, makeTiledQuad({-hx, 0, hz}, {2 * hx, 0, 0}, {0, 0, -2 * hz}, floorTiles, 20, floorA, floorB), {id},
+                 "floor");
+    addStructure(s, makeTiledQuad({-hx, h, -hz}, {2 * hx, 0, 0}, {0, 0, 2 * hz}, roofTiles, 5, roof, roof), {id},
+                 "roof");
+    addStructure(s, makeTiledQuad({-hx, 0, -hz}, {2 * hx, 0, 0}, {0, h, 0}, wallTiles, 2, wallA, wallB), {id},
+                 "wall-north");
+    addStructure(s, makeTiledQuad({hx, 0, hz}, {-2 * hx, 0, 0}, {0, h, 0}, wallTiles, 2, wallA, wallB), {id},
+                 "wall-south");
     addStructure(s, makeTiledQuad({-hx, 0, hz}, {0, 0, -2 * hz}, {0, h, 0}, 10, 2, wallA, wallB), {id}, "wall-west");
     addStructure(s, makeTiledQuad({hx, 0, -hz}, {0, 0, 2 * hz}, {0, h, 0}, 10, 2, wallA, wallB), {id}, "wall-east");
     std::vector<glm::dmat4> pillars, beams;
@@ -175,16 +180,16 @@ SceneDescription plantDescription(int columns) {
     // Along the north aisle through N1 ... N8, across through M8, back along the south aisle,
     // across through M1 (the end cells' cross aisles, 3 m from the end walls).
     const double end = hx - 3.0;
-    d.walkPath = {{-end, kEye, -kAisle}, {end, kEye, -kAisle}, {end, kEye, kAisle}, {-end, kEye, kAisle},
-                  {-end, kEye, -kAisle}};
+    d.walkPath = {
+        {-end, kEye, -kAisle}, {end, kEye, -kAisle}, {end, kEye, kAisle}, {-end, kEye, kAisle}, {-end, kEye, -kAisle}};
     // kHug from the walls: along the N|M walls on both sides, along M1|M2, along the M|S walls
     // on both sides with a detour along S2|S3 on both sides; every crossing of a wall between
     // two cells of a row passes through both cells' geometry zones and blend strips.
     const double n = -kSplit - kHug, m0 = -kSplit + kHug, m1 = kSplit - kHug, s = kSplit + kHug;
     const double w1 = -hx + 10.0, w2 = -hx + 20.0, top = kHalfZ - 0.5;  // M1|M2, S2|S3
-    d.wallPath = {{-end, kEye, n},        {end, kEye, n},         {end, kEye, m0},        {-end, kEye, m0},
-                  {w1 - kHug, kEye, m0},  {w1 - kHug, kEye, m1},  {end, kEye, m1},        {end, kEye, s},
-                  {w2 - kHug, kEye, s},   {w2 - kHug, kEye, top}, {w2 + kHug, kEye, top}, {w2 + kHug, kEye, s},
+    d.wallPath = {{-end, kEye, n},       {end, kEye, n},         {end, kEye, m0},        {-end, kEye, m0},
+                  {w1 - kHug, kEye, m0}, {w1 - kHug, kEye, m1},  {end, kEye, m1},        {end, kEye, s},
+                  {w2 - kHug, kEye, s},  {w2 - kHug, kEye, top}, {w2 + kHug, kEye, top}, {w2 + kHug, kEye, s},
                   {-end, kEye, s}};
     return d;
 }

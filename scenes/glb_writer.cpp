@@ -89,7 +89,9 @@ struct Builder {
                                                   src.baseColorFactor.a};
         m.pbrMetallicRoughness.metallicFactor = 0.0;
         m.pbrMetallicRoughness.roughnessFactor = 0.8;
-        m.alphaMode = src.alphaMode == AlphaMode::Mask ? "MASK" : src.alphaMode == AlphaMode::Blend ? "BLEND" : "OPAQUE";
+        m.alphaMode = src.alphaMode == AlphaMode::Mask    ? "MASK"
+                      : src.alphaMode == AlphaMode::Blend ? "BLEND"
+                                                          : "OPAQUE";
         m.alphaCutoff = src.alphaCutoff;
         m.doubleSided = src.doubleSided;
         model.materials.push_back(m);

@@ -15,14 +15,14 @@ void GltfContext::fail(const std::string& where, const std::string& what) const 
 
 const char* typeName(int type) {
     switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-    case TINYGLTF_TYPE_VEC2: return "VEC2";
-    case TINYGLTF_TYPE_VEC3: return "VEC3";
-    case TINYGLTF_TYPE_VEC4: return "VEC4";
-    case TINYGLTF_TYPE_MAT2: return "MAT2";
-    case TINYGLTF_TYPE_MAT3: return "MAT3";
-    case TINYGLTF_TYPE_MAT4: return "MAT4";
-    default: return "unknown";
+        case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+        case TINYGLTF_TYPE_VEC2: return "VEC2";
+        case TINYGLTF_TYPE_VEC3: return "VEC3";
+        case TINYGLTF_TYPE_VEC4: return "VEC4";
+        case TINYGLTF_TYPE_MAT2: return "MAT2";
+        case TINYGLTF_TYPE_MAT3: return "MAT3";
+        case TINYGLTF_TYPE_MAT4: return "MAT4";
+        default: return "unknown";
     }
 }
 
@@ -30,13 +30,13 @@ namespace {
 
 int componentSize(int componentType) {
     switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-    default: return 0;
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+        default: return 0;
     }
 }
 
@@ -49,27 +49,27 @@ T load(const unsigned char* p) {
 
 double decode(const unsigned char* p, int componentType, bool normalized) {
     switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE: {
-        const double v = load<std::int8_t>(p);
-        return normalized ? std::max(v / 127.0, -1.0) : v;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
-        const double v = load<std::uint8_t>(p);
-        return normalized ? v / 255.0 : v;
-    }
-    case TINYGLTF_COMPONENT_TYPE_SHORT: {
-        const double v = load<std::int16_t>(p);
-        return normalized ? std::max(v / 32767.0, -1.0) : v;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-        const double v = load<std::uint16_t>(p);
-        return normalized ? v / 65535.0 : v;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-        const double v = load<std::uint32_t>(p);
-        return normalized ? v / 4294967295.0 : v;
-    }
-    default: return static_cast<double>(load<float>(p));
+        case TINYGLTF_COMPONENT_TYPE_BYTE: {
+            const double v = load<std::int8_t>(p);
+            return normalized ? std::max(v / 127.0, -1.0) : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
+            const double v = load<std::uint8_t>(p);
+            return normalized ? v / 255.0 : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_SHORT: {
+            const double v = load<std::int16_t>(p);
+            return normalized ? std::max(v / 32767.0, -1.0) : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            const double v = load<std::uint16_t>(p);
+            return normalized ? v / 65535.0 : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+            const double v = load<std::uint32_t>(p);
+            return normalized ? v / 4294967295.0 : v;
+        }
+        default: return static_cast<double>(load<float>(p));
     }
 }
 
@@ -96,7 +96,8 @@ const unsigned char* viewRange(const GltfContext& ctx, int view, std::uint64_t o
     // Last byte read: offset + stride * (count - 1) + elementSize <= byteLength, checked by
     // subtraction so that no sum of file numbers can wrap around.
     const std::uint64_t span = count - 1 > (UINT64_MAX - elementSize) / std::max<std::uint64_t>(stride, 1)
-                                   ? UINT64_MAX : stride * (count - 1) + elementSize;
+                                   ? UINT64_MAX
+                                   : stride * (count - 1) + elementSize;
     const std::uint64_t need = span > UINT64_MAX - offset ? UINT64_MAX : offset + span;
     if (offset > bv.byteLength || elementSize > bv.byteLength - offset ||
         (count - 1) > (bv.byteLength - offset - elementSize) / std::max<std::uint64_t>(stride, 1))
@@ -123,17 +124,18 @@ void applySparse(const GltfContext& ctx, const tinygltf::Accessor& a, AccessorVa
     if (indexSize == 0 || a.sparse.indices.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
         a.sparse.indices.componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
         a.sparse.indices.componentType == TINYGLTF_COMPONENT_TYPE_SHORT)
-        ctx.fail(sw + ".indices", "expected an unsigned componentType, got " +
-                                      std::to_string(a.sparse.indices.componentType));
+        ctx.fail(sw + ".indices",
+                 "expected an unsigned componentType, got " + std::to_string(a.sparse.indices.componentType));
     const unsigned char* idx = viewRange(ctx, a.sparse.indices.bufferView,
-                                         static_cast<std::uint64_t>(std::max(a.sparse.indices.byteOffset, 0)),
-                                         count, indexSize, indexSize, sw + ".indices");
+                                         static_cast<std::uint64_t>(std::max(a.sparse.indices.byteOffset, 0)), count,
+                                         indexSize, indexSize, sw + ".indices");
     const std::uint64_t elem = static_cast<std::uint64_t>(componentSize(a.componentType)) * out.components;
-    const unsigned char* val = viewRange(ctx, a.sparse.values.bufferView,
-                                         static_cast<std::uint64_t>(std::max(a.sparse.values.byteOffset, 0)),
-                                         count, elem, elem, sw + ".values");
+    const unsigned char* val =
+        viewRange(ctx, a.sparse.values.bufferView, static_cast<std::uint64_t>(std::max(a.sparse.values.byteOffset, 0)),
+                  count, elem, elem, sw + ".values");
     for (std::uint64_t i = 0; i < count; ++i) {
-        const auto target = static_cast<std::uint64_t>(decode(idx + i * indexSize, a.sparse.indices.componentType, false));
+        const auto target =
+            static_cast<std::uint64_t>(decode(idx + i * indexSize, a.sparse.indices.componentType, false));
         if (target >= out.count)
             ctx.fail(sw + ".indices", "index " + std::to_string(target) + " at position " + std::to_string(i) +
                                           " is out of range (expected < " + std::to_string(out.count) + ")");
@@ -167,7 +169,8 @@ AccessorValues readAccessor(const GltfContext& ctx, int accessor, const std::str
     if (a.bufferView >= 0) {
         const std::uint64_t elem = static_cast<std::uint64_t>(size) * components;
         const int viewStride = static_cast<std::size_t>(a.bufferView) < ctx.model.bufferViews.size()
-                                   ? ctx.model.bufferViews[a.bufferView].byteStride : 0;
+                                   ? ctx.model.bufferViews[a.bufferView].byteStride
+                                   : 0;
         stride = viewStride > 0 ? static_cast<std::uint64_t>(viewStride) : elem;
         if (stride < elem)
             ctx.fail(aw, "byteStride " + std::to_string(stride) + " is smaller than one element (expected at least " +
@@ -191,7 +194,8 @@ AccessorValues readAccessorOfType(const GltfContext& ctx, int accessor, std::ini
     if (std::find(types.begin(), types.end(), type) == types.end()) {
         std::string list;
         for (int t : types) list += (list.empty() ? "" : " or ") + std::string(typeName(t));
-        ctx.fail(where, "accessor " + std::to_string(accessor) + " has type " + typeName(type) + " (expected " + list + ")");
+        ctx.fail(where,
+                 "accessor " + std::to_string(accessor) + " has type " + typeName(type) + " (expected " + list + ")");
     }
     return v;
 }

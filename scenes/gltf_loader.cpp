@@ -25,14 +25,14 @@ namespace {
 
 const char* modeName(int mode) {
     switch (mode) {
-    case TINYGLTF_MODE_POINTS: return "POINTS";
-    case TINYGLTF_MODE_LINE: return "LINES";
-    case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
-    case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
-    case TINYGLTF_MODE_TRIANGLES: return "TRIANGLES";
-    case TINYGLTF_MODE_TRIANGLE_STRIP: return "TRIANGLE_STRIP";
-    case TINYGLTF_MODE_TRIANGLE_FAN: return "TRIANGLE_FAN";
-    default: return "unknown";
+        case TINYGLTF_MODE_POINTS: return "POINTS";
+        case TINYGLTF_MODE_LINE: return "LINES";
+        case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
+        case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
+        case TINYGLTF_MODE_TRIANGLES: return "TRIANGLES";
+        case TINYGLTF_MODE_TRIANGLE_STRIP: return "TRIANGLE_STRIP";
+        case TINYGLTF_MODE_TRIANGLE_FAN: return "TRIANGLE_FAN";
+        default: return "unknown";
     }
 }
 
@@ -40,7 +40,8 @@ template <class V, int N>
 std::vector<V> toVectors(const AccessorValues& a) {
     std::vector<V> out(a.count, V(N == 4 ? 1.0f : 0.0f));
     for (std::size_t i = 0; i < a.count; ++i)
-        for (int c = 0; c < std::min(N, a.components); ++c) out[i][c] = static_cast<float>(a.values[i * a.components + c]);
+        for (int c = 0; c < std::min(N, a.components); ++c)
+            out[i][c] = static_cast<float>(a.values[i * a.components + c]);
     return out;
 }
 
@@ -59,9 +60,12 @@ struct Loader {
     // One primitive to a triangle-list Mesh; returns false (with a warning) when skipped.
     bool convertPrimitive(int meshIndex, int primIndex, Mesh& out) {
         const tinygltf::Primitive& p = ctx.model.meshes[meshIndex].primitives[primIndex];
-        const std::string where = "meshes[" + std::to_string(meshIndex) + "].primitives[" + std::to_string(primIndex) + "]";
-        const std::string skip = "ignoring primitive " + std::to_string(primIndex) + " of mesh " + std::to_string(meshIndex);
-        if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != TINYGLTF_MODE_TRIANGLE_STRIP && p.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+        const std::string where =
+            "meshes[" + std::to_string(meshIndex) + "].primitives[" + std::to_string(primIndex) + "]";
+        const std::string skip =
+            "ignoring primitive " + std::to_string(primIndex) + " of mesh " + std::to_string(meshIndex);
+        if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+            p.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
             warn(skip + " because it has mode " + modeName(p.mode) + " (only triangles, strips and fans are drawn)");
             return false;
         }
@@ -75,14 +79,17 @@ struct Loader {
             warn("primitive " + std::to_string(primIndex) + " of mesh " + std::to_string(meshIndex) +
                  ": ignoring its morph targets; drawn with the base shape");
         readAttributes(p, where, out);
-        out.indices = triangleIndices(p, out.positions.size(), where, "primitive " + std::to_string(primIndex) +
-                                                                        " of mesh " + std::to_string(meshIndex));
+        out.indices =
+            triangleIndices(p, out.positions.size(), where,
+                            "primitive " + std::to_string(primIndex) + " of mesh " + std::to_string(meshIndex));
         if (p.material >= static_cast<int>(ctx.model.materials.size()))
             ctx.fail(where + ".material", "material " + std::to_string(p.material) + " is out of range (expected < " +
                                               std::to_string(ctx.model.materials.size()) + " materials)");
         out.material = p.material;
-        if (out.normals.empty()) generateNormals(out);
-        else repairNormals(out);
+        if (out.normals.empty())
+            generateNormals(out);
+        else
+            repairNormals(out);
         updateBounds(out);
         return true;
     }
@@ -103,7 +110,8 @@ struct Loader {
     }
 
     std::vector<glm::vec3> readPositions(int accessor, const std::string& where) {
-        std::vector<glm::vec3> out = toVectors<glm::vec3, 3>(readAccessorOfType(ctx, accessor, {TINYGLTF_TYPE_VEC3}, where));
+        std::vector<glm::vec3> out =
+            toVectors<glm::vec3, 3>(readAccessorOfType(ctx, accessor, {TINYGLTF_TYPE_VEC3}, where));
         for (std::size_t i = 0; i < out.size(); ++i)
             if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y) || !std::isfinite(out[i].z))
                 ctx.fail(where, "vertex " + std::to_string(i) + " is not finite (expected finite numbers, got " +
@@ -116,8 +124,10 @@ struct Loader {
     std::vector<std::uint32_t> triangleIndices(const tinygltf::Primitive& p, std::size_t vertexCount,
                                                const std::string& where, const std::string& what) {
         std::vector<std::uint32_t> idx;
-        if (p.indices >= 0) idx = readIndices(ctx, p.indices, vertexCount, where + ".indices");
-        else for (std::uint32_t i = 0; i < vertexCount; ++i) idx.push_back(i);
+        if (p.indices >= 0)
+            idx = readIndices(ctx, p.indices, vertexCount, where + ".indices");
+        else
+            for (std::uint32_t i = 0; i < vertexCount; ++i) idx.push_back(i);
         if (p.mode == TINYGLTF_MODE_TRIANGLE_STRIP) return stripToList(idx);
         if (p.mode == TINYGLTF_MODE_TRIANGLE_FAN) return fanToList(idx);
         if (idx.size() % 3 != 0) {
@@ -141,7 +151,8 @@ struct Loader {
             // Exporters write NaN normals on degenerate triangles; those are regenerated.
             if (std::string_view(name) != "NORMAL")
                 for (double d : v.values)
-                    if (!std::isfinite(d)) ctx.fail(aw, "contains a value that is not finite (expected finite numbers)");
+                    if (!std::isfinite(d))
+                        ctx.fail(aw, "contains a value that is not finite (expected finite numbers)");
             return v;
         };
         if (auto v = read("NORMAL", {TINYGLTF_TYPE_VEC3})) {
@@ -154,7 +165,8 @@ struct Loader {
         }
         if (auto v = read("TEXCOORD_0", {TINYGLTF_TYPE_VEC2})) out.texCoords0 = toVectors<glm::vec2, 2>(*v);
         if (auto v = read("TEXCOORD_1", {TINYGLTF_TYPE_VEC2})) out.texCoords1 = toVectors<glm::vec2, 2>(*v);
-        if (auto v = read("COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4})) out.colors = toVectors<glm::vec4, 4>(*v);
+        if (auto v = read("COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}))
+            out.colors = toVectors<glm::vec4, 4>(*v);
     }
 
     // glTF mesh index -> the scene meshes made from its primitives (shared by every instance).
@@ -179,7 +191,9 @@ struct Loader {
         const std::string where = "nodes[" + std::to_string(n) + "]";
         auto finite = [&](const std::vector<double>& v, std::size_t size, const char* what) {
             if (v.empty()) return false;
-            if (v.size() != size) ctx.fail(where + "." + what, "expected " + std::to_string(size) + " numbers, got " + std::to_string(v.size()));
+            if (v.size() != size)
+                ctx.fail(where + "." + what,
+                         "expected " + std::to_string(size) + " numbers, got " + std::to_string(v.size()));
             for (double d : v)
                 if (!std::isfinite(d)) ctx.fail(where + "." + what, "expected finite numbers");
             return true;
@@ -203,10 +217,13 @@ struct Loader {
                  std::vector<char>& onPath, const std::string& where, int depth = 0) {
         const int count = static_cast<int>(ctx.model.nodes.size());
         if (n < 0 || n >= count)
-            ctx.fail(where, "node " + std::to_string(n) + " is out of range (expected < " + std::to_string(count) + " nodes)");
-        if (onPath[n]) ctx.fail(where, "node " + std::to_string(n) + " is its own ancestor (expected a tree, got a cycle)");
+            ctx.fail(where,
+                     "node " + std::to_string(n) + " is out of range (expected < " + std::to_string(count) + " nodes)");
+        if (onPath[n])
+            ctx.fail(where, "node " + std::to_string(n) + " is its own ancestor (expected a tree, got a cycle)");
         if (depth > kMaxDepth)
-            ctx.fail(where, "the node hierarchy is deeper than " + std::to_string(kMaxDepth) + " levels (expected a shallower tree)");
+            ctx.fail(where, "the node hierarchy is deeper than " + std::to_string(kMaxDepth) +
+                                " levels (expected a shallower tree)");
         onPath[n] = 1;
         const tinygltf::Node& node = ctx.model.nodes[n];
         const glm::dmat4 world = parent * localMatrix(n);
@@ -216,7 +233,9 @@ struct Loader {
                 ctx.fail(nw + ".mesh", "mesh " + std::to_string(node.mesh) + " is out of range (expected < " +
                                            std::to_string(meshMap.size()) + " meshes)");
             const std::string name = node.name.empty() ? "node " + std::to_string(n) : node.name;
-            if (node.skin >= 0) warn("node " + std::to_string(n) + " ('" + name + "'): ignoring its skin; the mesh is drawn in its bind pose");
+            if (node.skin >= 0)
+                warn("node " + std::to_string(n) + " ('" + name +
+                     "'): ignoring its skin; the mesh is drawn in its bind pose");
             for (int mesh : meshMap[node.mesh]) {
                 // Model units here (a file in millimetres is scaled later): 1000 km in mm.
                 const Bounds b = scene.meshes[mesh].bounds.transformed(world);
@@ -240,7 +259,8 @@ struct Loader {
         if (!m.scenes.empty()) {
             const int s = m.defaultScene >= 0 ? m.defaultScene : 0;
             if (static_cast<std::size_t>(s) >= m.scenes.size())
-                ctx.fail("scene", "scene " + std::to_string(s) + " is out of range (expected < " + std::to_string(m.scenes.size()) + " scenes)");
+                ctx.fail("scene", "scene " + std::to_string(s) + " is out of range (expected < " +
+                                      std::to_string(m.scenes.size()) + " scenes)");
             for (std::size_t i = 0; i < m.scenes[s].nodes.size(); ++i)
                 addNode(m.scenes[s].nodes[i], glm::dmat4(1.0), meshMap, onPath,
                         "scenes[" + std::to_string(s) + "].nodes[" + std::to_string(i) + "]");
@@ -252,13 +272,15 @@ struct Loader {
             for (int c : node.children)
                 if (c >= 0 && static_cast<std::size_t>(c) < m.nodes.size()) isChild[c] = 1;
         for (std::size_t n = 0; n < m.nodes.size(); ++n)
-            if (!isChild[n]) addNode(static_cast<int>(n), glm::dmat4(1.0), meshMap, onPath, "nodes[" + std::to_string(n) + "]");
+            if (!isChild[n])
+                addNode(static_cast<int>(n), glm::dmat4(1.0), meshMap, onPath, "nodes[" + std::to_string(n) + "]");
         // Nodes that are all somebody's child, with no root above them, can only form cycles;
         // walking from one reports the cycle instead of drawing nothing.
         std::vector<char> reached(m.nodes.size(), 0);
         markReached(isChild, reached);
         for (std::size_t n = 0; n < m.nodes.size(); ++n)
-            if (!reached[n]) addNode(static_cast<int>(n), glm::dmat4(1.0), meshMap, onPath, "nodes[" + std::to_string(n) + "]");
+            if (!reached[n])
+                addNode(static_cast<int>(n), glm::dmat4(1.0), meshMap, onPath, "nodes[" + std::to_string(n) + "]");
     }
 
     // Marks every node reachable from a root (a node that is nobody's child), without recursion.
@@ -303,7 +325,8 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
 // tinygltf joins messages with newlines; keep them on one line per message.
 std::string oneLine(std::string s) {
     while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
-    for (char& c : s) if (c == '\n') c = ';';
+    for (char& c : s)
+        if (c == '\n') c = ';';
     return s;
 }
 
@@ -322,8 +345,8 @@ Scene loadGltfFromMemory(std::string_view bytes, const std::filesystem::path& fi
                     " bytes (expected less than 4 GiB, the glTF limit)");
     tinygltf::Model model;
     tinygltf::TinyGLTF parser;
-    tinygltf::FsCallbacks fs{&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readWholeFile, &tinygltf::WriteWholeFile,
-                             nullptr};
+    tinygltf::FsCallbacks fs{&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readWholeFile,
+                             &tinygltf::WriteWholeFile, nullptr};
     parser.SetFsCallbacks(fs);
     std::string err, warn;
     const std::string baseDir = file.parent_path().string();

@@ -9,11 +9,11 @@ void checkRequiredExtensions(const GltfContext& ctx) {
     for (std::size_t i = 0; i < required.size(); ++i) {
         const std::string& e = required[i];
         // These change only shading details or use attribute types the accessor reader handles.
-        if (e == "KHR_texture_transform" || e.rfind("KHR_materials_", 0) == 0 || e == "KHR_mesh_quantization")
-            continue;
+        if (e == "KHR_texture_transform" || e.rfind("KHR_materials_", 0) == 0 || e == "KHR_mesh_quantization") continue;
         ctx.fail("extensionsRequired[" + std::to_string(i) + "]",
-                 "extension '" + e + "' is not supported (supported: KHR_texture_transform, KHR_materials_*, "
-                 "KHR_mesh_quantization)");
+                 "extension '" + e +
+                     "' is not supported (supported: KHR_texture_transform, KHR_materials_*, "
+                     "KHR_mesh_quantization)");
     }
 }
 
@@ -27,7 +27,8 @@ void convertImages(const GltfContext& ctx, Scene& scene, std::vector<std::string
         const bool usable = channels >= 1 && channels <= 4 && (bytes == 1 || bytes == 2) && pixels > 0 &&
                             src.image.size() >= pixels * channels * bytes;
         if (!usable) {
-            warnings.push_back("image " + std::to_string(i) + " ('" + img.name + "') could not be decoded; "
+            warnings.push_back("image " + std::to_string(i) + " ('" + img.name +
+                               "') could not be decoded; "
                                "materials using it are drawn untextured");
             scene.images.push_back(std::move(img));
             continue;
@@ -65,8 +66,8 @@ namespace {
 double numberOr(const tinygltf::Value& obj, const char* key, int index, double fallback) {
     if (!obj.IsObject() || !obj.Has(key)) return fallback;
     const tinygltf::Value& v = obj.Get(key);
-    const tinygltf::Value& n = index < 0 ? v : (v.IsArray() && v.ArrayLen() > static_cast<size_t>(index)
-                                                    ? v.Get(index) : tinygltf::Value());
+    const tinygltf::Value& n =
+        index < 0 ? v : (v.IsArray() && v.ArrayLen() > static_cast<size_t>(index) ? v.Get(index) : tinygltf::Value());
     return n.IsNumber() && std::isfinite(n.GetNumberAsDouble()) ? n.GetNumberAsDouble() : fallback;
 }
 
@@ -102,10 +103,12 @@ TextureRef convertTexture(const GltfContext& ctx, const Scene& scene, const tiny
         ref.transform = textureTransform({numberOr(t, "offset", 0, 0.0), numberOr(t, "offset", 1, 0.0)},
                                          static_cast<float>(numberOr(t, "rotation", -1, 0.0)),
                                          {numberOr(t, "scale", 0, 1.0), numberOr(t, "scale", 1, 1.0)});
-        if (t.IsObject() && t.Has("texCoord") && t.Get("texCoord").IsInt()) ref.texCoord = t.Get("texCoord").GetNumberAsInt();
+        if (t.IsObject() && t.Has("texCoord") && t.Get("texCoord").IsInt())
+            ref.texCoord = t.Get("texCoord").GetNumberAsInt();
     }
     if (ref.texCoord < 0 || ref.texCoord > 1) {
-        warnings.push_back(where + " uses TEXCOORD_" + std::to_string(ref.texCoord) + "; only sets 0 and 1 are "
+        warnings.push_back(where + " uses TEXCOORD_" + std::to_string(ref.texCoord) +
+                           "; only sets 0 and 1 are "
                            "supported, using TEXCOORD_0");
         ref.texCoord = 0;
     }
@@ -124,14 +127,17 @@ void convertMaterials(const GltfContext& ctx, Scene& scene, std::vector<std::str
         const auto& f = src.pbrMetallicRoughness.baseColorFactor;
         if (f.size() == 4)
             for (int k = 0; k < 4; ++k) {
-                if (!std::isfinite(f[k])) ctx.fail(where + ".pbrMetallicRoughness.baseColorFactor", "expected finite numbers");
+                if (!std::isfinite(f[k]))
+                    ctx.fail(where + ".pbrMetallicRoughness.baseColorFactor", "expected finite numbers");
                 m.baseColorFactor[k] = static_cast<float>(f[k]);
             }
         if (src.pbrMetallicRoughness.baseColorTexture.index >= 0)
             m.baseColorTexture = convertTexture(ctx, scene, src.pbrMetallicRoughness.baseColorTexture,
                                                 where + ".pbrMetallicRoughness.baseColorTexture", warnings);
-        if (src.alphaMode == "MASK") m.alphaMode = AlphaMode::Mask;
-        else if (src.alphaMode == "BLEND") m.alphaMode = AlphaMode::Blend;
+        if (src.alphaMode == "MASK")
+            m.alphaMode = AlphaMode::Mask;
+        else if (src.alphaMode == "BLEND")
+            m.alphaMode = AlphaMode::Blend;
         else if (src.alphaMode != "OPAQUE" && !src.alphaMode.empty())
             ctx.fail(where + ".alphaMode", "expected \"OPAQUE\", \"MASK\" or \"BLEND\", got \"" + src.alphaMode + "\"");
         m.alphaCutoff = std::isfinite(src.alphaCutoff) ? static_cast<float>(src.alphaCutoff) : 0.5f;

@@ -17,11 +17,9 @@ namespace {
 
 void writeFile(const std::filesystem::path& file, const std::filesystem::path& real, const Image& image) {
     auto out = OIIO::ImageOutput::create(real.string());
-    if (!out)
-        throw Error(real.string() + ": cannot write this image format (" + OIIO::geterror() + ")");
+    if (!out) throw Error(real.string() + ": cannot write this image format (" + OIIO::geterror() + ")");
     const OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
-    if (!out->open(file.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.rgba.data()) ||
-        !out->close())
+    if (!out->open(file.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.rgba.data()) || !out->close())
         throw Error(real.string() + ": cannot write image (" + out->geterror() + ")");
 }
 
@@ -47,8 +45,8 @@ void writeImage(const std::filesystem::path& file, const Image& image) {
     if (image.width <= 0 || image.height <= 0 ||
         image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4)
         throw Error(file.string() + ": cannot write image '" + image.name + "' (expected " +
-                    std::to_string(image.width) + " x " + std::to_string(image.height) +
-                    " RGBA pixels, got " + std::to_string(image.rgba.size()) + " bytes)");
+                    std::to_string(image.width) + " x " + std::to_string(image.height) + " RGBA pixels, got " +
+                    std::to_string(image.rgba.size()) + " bytes)");
     writeAtomically(file, [&](const std::filesystem::path& tmp) {
         writeFile(tmp, file, image);
         // Image writers do not all report short writes (a full disk leaves a truncated PNG):
@@ -101,8 +99,8 @@ std::vector<Image> readMipLevels(const std::filesystem::path& file) {
         const std::size_t pixels = static_cast<std::size_t>(spec.width) * spec.height;
         std::vector<std::uint8_t> raw(pixels * channels);
         if (!in->read_image(0, level, 0, channels, OIIO::TypeDesc::UINT8, raw.data()))
-            throw Error(file.string() + ": cannot decode MIP level " + std::to_string(level) + " (" +
-                        in->geterror() + ")");
+            throw Error(file.string() + ": cannot decode MIP level " + std::to_string(level) + " (" + in->geterror() +
+                        ")");
         levels.push_back({file.filename().string() + " level " + std::to_string(level), spec.width, spec.height,
                           toRgba(raw, pixels, channels)});
     }

@@ -119,9 +119,8 @@ LodChoice chooseLevels(const std::vector<LodCandidate>& candidates, double toler
             }
         std::sort(steps.begin(), steps.end());
         steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
-        const auto fits = std::partition_point(steps.begin(), steps.end(), [&](double t) {
-            return trianglesWithin(candidates, t) > triangleBudget;
-        });
+        const auto fits = std::partition_point(
+            steps.begin(), steps.end(), [&](double t) { return trianglesWithin(candidates, t) > triangleBudget; });
         if (fits != steps.end()) {
             choice.tolerancePx = *fits;
         } else {

@@ -24,10 +24,10 @@
 namespace cavewall::scenes {
 
 struct LodLevel {
-    std::uint32_t firstIndex = 0;   // into MeshLod::indices
-    std::uint32_t indexCount = 0;   // 3 per triangle
-    double error = 0.0;             // model units: how far this level's surface lies from the
-                                    // full mesh's at most (both ways); 0 for level 0, non-decreasing
+    std::uint32_t firstIndex = 0;  // into MeshLod::indices
+    std::uint32_t indexCount = 0;  // 3 per triangle
+    double error = 0.0;            // model units: how far this level's surface lies from the
+                                   // full mesh's at most (both ways); 0 for level 0, non-decreasing
 };
 
 struct MeshLod {
@@ -39,11 +39,11 @@ struct MeshLod {
 };
 
 struct LodOptions {
-    double levelRatio = 0.5;        // each level aims at this share of the previous level's triangles
-    int maxLevels = 8;              // levels including level 0, >= 1
-    double maxRelativeError = 0.25; // no level whose error exceeds this share of the mesh's extent
-    double minReduction = 0.85;     // a level must keep at most this share of the previous level's
-                                    // triangles, else the chain stops (nothing more to gain)
+    double levelRatio = 0.5;         // each level aims at this share of the previous level's triangles
+    int maxLevels = 8;               // levels including level 0, >= 1
+    double maxRelativeError = 0.25;  // no level whose error exceeds this share of the mesh's extent
+    double minReduction = 0.85;      // a level must keep at most this share of the previous level's
+                                     // triangles, else the chain stops (nothing more to gain)
 };
 
 // The level chain of one mesh. Meshes with fewer than 64 triangles, or that do not simplify,
@@ -55,19 +55,19 @@ std::vector<MeshLod> buildSceneLods(const Scene& scene, const LodOptions& option
 
 // One object a frame draws, as the level choice sees it.
 struct LodCandidate {
-    const MeshLod* lod = nullptr;   // its mesh's levels
+    const MeshLod* lod = nullptr;  // its mesh's levels
     // The most pixels one model unit of error can cover in any view the object is drawn in
     // (see display/pixel_scale.h); +infinity when the eye is inside its bounds (level 0 only).
     double pixelsPerUnit = 0.0;
-    int views = 1;                  // views that draw it: each submits the level's triangles
+    int views = 1;  // views that draw it: each submits the level's triangles
 };
 
 struct LodChoice {
-    std::vector<int> level;         // per candidate
-    double tolerancePx = 0.0;       // the pixel tolerance every level meets
-    double maxErrorPx = 0.0;        // the largest error of a chosen level, pixels (<= tolerancePx)
-    std::size_t triangles = 0;      // sum over candidates of views * the chosen level's triangles
-    bool overBudget = false;        // even the coarsest levels exceed the budget
+    std::vector<int> level;     // per candidate
+    double tolerancePx = 0.0;   // the pixel tolerance every level meets
+    double maxErrorPx = 0.0;    // the largest error of a chosen level, pixels (<= tolerancePx)
+    std::size_t triangles = 0;  // sum over candidates of views * the chosen level's triangles
+    bool overBudget = false;    // even the coarsest levels exceed the budget
 };
 
 // Chooses for every candidate the coarsest level whose error in pixels (error *

@@ -100,8 +100,8 @@ void keepVertices(Mesh& mesh, const std::vector<std::uint32_t>& keep) {
 // Vertices in first-use order; unused ones dropped.
 void compactVertices(Mesh& mesh) {
     std::vector<std::uint32_t> remap(mesh.positions.size());
-    const std::size_t used = meshopt_optimizeVertexFetchRemap(remap.data(), mesh.indices.data(), mesh.indices.size(),
-                                                              mesh.positions.size());
+    const std::size_t used =
+        meshopt_optimizeVertexFetchRemap(remap.data(), mesh.indices.data(), mesh.indices.size(), mesh.positions.size());
     std::vector<std::uint32_t> order(used);
     for (std::uint32_t v = 0; v < remap.size(); ++v)
         if (remap[v] != ~0u) order[remap[v]] = v;

@@ -20,15 +20,15 @@ namespace cavewall::scenes {
 // never below 4 float ulps of its largest coordinate (coordinates far from the origin carry
 // less precision than that).
 struct WeldTolerance {
-    double relativePosition = 1e-6;   // of the largest bounds extent
-    float normal = 1e-4f;             // per component of unit normals
-    float texCoord = 1e-6f;           // per component, texture units
-    float color = 1e-5f;              // per component, linear colour
+    double relativePosition = 1e-6;  // of the largest bounds extent
+    float normal = 1e-4f;            // per component of unit normals
+    float texCoord = 1e-6f;          // per component, texture units
+    float color = 1e-5f;             // per component, linear colour
 };
 
 struct WeldResult {
     std::size_t verticesBefore = 0, verticesAfter = 0;
-    std::size_t positionsSnapped = 0; // vertices moved (by at most the tolerance) onto a twin
+    std::size_t positionsSnapped = 0;  // vertices moved (by at most the tolerance) onto a twin
 };
 
 // Merges vertices whose positions and attributes agree within `tolerance` and rewrites the

@@ -43,7 +43,8 @@ Mesh chunkOf(const Mesh& m, const std::vector<std::uint32_t>& triangles, const s
 SplitStats splitLargeObjects(Scene& scene, std::size_t first, std::size_t end, double chunkMetres,
                              std::size_t minTriangles, Role role) {
     if (!std::isfinite(chunkMetres) || chunkMetres <= 0.0)
-        throw Error("mesh split: chunk size: expected a finite number of metres > 0, got " + std::to_string(chunkMetres));
+        throw Error("mesh split: chunk size: expected a finite number of metres > 0, got " +
+                    std::to_string(chunkMetres));
     SplitStats stats;
     end = std::min(end, scene.objects.size());
     std::vector<Object> added;

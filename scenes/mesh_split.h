@@ -25,8 +25,8 @@
 namespace cavewall::scenes {
 
 struct SplitStats {
-    int objectsCut = 0;       // objects replaced by chunks
-    int chunks = 0;           // objects they became
+    int objectsCut = 0;  // objects replaced by chunks
+    int chunks = 0;      // objects they became
 };
 
 // Throws cavewall::Error when chunkMetres is not finite and > 0.

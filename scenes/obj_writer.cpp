@@ -80,8 +80,6 @@ std::string objText(const Scene& scene) {
     return vertices + normals + faces;
 }
 
-void writeObj(const Scene& scene, const std::filesystem::path& file) {
-    writeBytesAtomically(file, objText(scene));
-}
+void writeObj(const Scene& scene, const std::filesystem::path& file) { writeBytesAtomically(file, objText(scene)); }
 
 }  // namespace cavewall::scenes

@@ -11,8 +11,10 @@ PagedMeshGroups pagedMeshGroups(const Scene& scene, int cellCount) {
     std::vector<std::vector<int>> cellsOfMesh(meshCount);
     for (const Object& o : scene.objects) {
         if (o.mesh < 0 || static_cast<std::size_t>(o.mesh) >= meshCount) continue;
-        if (!pagedWithCell(o, cellCount)) alwaysResident[o.mesh] = true;
-        else cellsOfMesh[o.mesh].push_back(o.cell);
+        if (!pagedWithCell(o, cellCount))
+            alwaysResident[o.mesh] = true;
+        else
+            cellsOfMesh[o.mesh].push_back(o.cell);
     }
     PagedMeshGroups g;
     g.groupOfMesh.assign(meshCount, -1);

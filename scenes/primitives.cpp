@@ -35,12 +35,12 @@ Mesh makeBox(glm::vec3 size, glm::vec4 color) {
     m.name = "box";
     const glm::vec3 h = 0.5f * size;
     const glm::vec3 x(size.x, 0, 0), y(0, size.y, 0), z(0, 0, size.z);
-    addQuad(m, {-h.x, -h.y, h.z}, x, y, color);    // +Z
-    addQuad(m, {h.x, -h.y, -h.z}, -x, y, color);   // -Z
-    addQuad(m, {h.x, -h.y, h.z}, -z, y, color);    // +X
-    addQuad(m, {-h.x, -h.y, -h.z}, z, y, color);   // -X
-    addQuad(m, {-h.x, h.y, h.z}, x, -z, color);    // +Y
-    addQuad(m, {-h.x, -h.y, -h.z}, x, z, color);   // -Y
+    addQuad(m, {-h.x, -h.y, h.z}, x, y, color);   // +Z
+    addQuad(m, {h.x, -h.y, -h.z}, -x, y, color);  // -Z
+    addQuad(m, {h.x, -h.y, h.z}, -z, y, color);   // +X
+    addQuad(m, {-h.x, -h.y, -h.z}, z, y, color);  // -X
+    addQuad(m, {-h.x, h.y, h.z}, x, -z, color);   // +Y
+    addQuad(m, {-h.x, -h.y, -h.z}, x, z, color);  // -Y
     finish(m);
     return m;
 }
@@ -72,16 +72,17 @@ Mesh makeCylinder(float radius, float height, int segments, glm::vec4 color) {
                 m.texCoords0.push_back({0, 0});
                 m.colors.push_back(color);
             }
-            if (y > 0) m.indices.insert(m.indices.end(), {c, c + 1, c + 2});
-            else m.indices.insert(m.indices.end(), {c, c + 2, c + 1});
+            if (y > 0)
+                m.indices.insert(m.indices.end(), {c, c + 1, c + 2});
+            else
+                m.indices.insert(m.indices.end(), {c, c + 2, c + 1});
         }
     }
     finish(m);
     return m;
 }
 
-Mesh makeTiledQuad(glm::vec3 origin, glm::vec3 right, glm::vec3 up, int tilesX, int tilesY,
-                   glm::vec4 a, glm::vec4 b) {
+Mesh makeTiledQuad(glm::vec3 origin, glm::vec3 right, glm::vec3 up, int tilesX, int tilesY, glm::vec4 a, glm::vec4 b) {
     Mesh m;
     m.name = "tiles";
     const glm::vec3 dx = right / static_cast<float>(tilesX), dy = up / static_cast<float>(tilesY);
@@ -124,7 +125,11 @@ Scene builtinTestScene() {
     addStructure(makeTiledQuad({h, 0, h}, {-2 * h, 0, 0}, {0, top, 0}, 10, 3, wallA, wallB), "wall-south");
     addStructure(makeTiledQuad({-h, 0, h}, {0, 0, -2 * h}, {0, top, 0}, 10, 3, wallA, wallB), "wall-west");
     addStructure(makeTiledQuad({h, 0, -h}, {0, 0, 2 * h}, {0, top, 0}, 10, 3, wallA, wallB), "wall-east");
-    struct Box { glm::vec3 centre, size; glm::vec4 color; const char* name; };
+    struct Box {
+        glm::vec3 centre, size;
+        glm::vec4 color;
+        const char* name;
+    };
     const Box boxes[] = {
         {{0.0f, 0.5f, -3.0f}, {1.0f, 1.0f, 1.0f}, {0.85f, 0.15f, 0.12f, 1}, "red"},
         {{-3.0f, 0.75f, -1.0f}, {0.8f, 1.5f, 0.8f}, {0.15f, 0.7f, 0.2f, 1}, "green"},
@@ -134,8 +139,8 @@ Scene builtinTestScene() {
     };
     for (const Box& b : boxes) {
         s.meshes.push_back(makeBox(b.size, b.color));
-        addObject(s, static_cast<int>(s.meshes.size()) - 1,
-                  glm::translate(glm::dmat4(1.0), glm::dvec3(b.centre)), b.name, Role::Content);
+        addObject(s, static_cast<int>(s.meshes.size()) - 1, glm::translate(glm::dmat4(1.0), glm::dvec3(b.centre)),
+                  b.name, Role::Content);
     }
     return s;
 }

@@ -14,8 +14,7 @@ Mesh makeCylinder(float radius, float height, int segments, glm::vec4 color);
 
 // A quad from `origin` spanned by `right` and `up` (front face towards cross(right, up)), cut
 // into tilesX x tilesY tiles coloured alternately `a` and `b` (a checkerboard grid).
-Mesh makeTiledQuad(glm::vec3 origin, glm::vec3 right, glm::vec3 up, int tilesX, int tilesY,
-                   glm::vec4 a, glm::vec4 b);
+Mesh makeTiledQuad(glm::vec3 origin, glm::vec3 right, glm::vec3 up, int tilesX, int tilesY, glm::vec4 a, glm::vec4 b);
 
 // Appends `src` (transformed by `m`, normals by its inverse transpose) to `dst`.
 void appendMesh(Mesh& dst, const Mesh& src, const glm::mat4& m = glm::mat4(1.0f));

@@ -95,7 +95,9 @@ double segmentRegionDistance(glm::dvec2 a, glm::dvec2 b, const std::vector<glm::
     for (std::size_t i = 0; i < region.size(); ++i) {
         const glm::dvec2 p = region[i], q = region[(i + 1) % region.size()];
         // Proper crossing of the two segments: opposite sides both ways.
-        auto side = [](glm::dvec2 o, glm::dvec2 u, glm::dvec2 v) { return (u.x - o.x) * (v.y - o.y) - (u.y - o.y) * (v.x - o.x); };
+        auto side = [](glm::dvec2 o, glm::dvec2 u, glm::dvec2 v) {
+            return (u.x - o.x) * (v.y - o.y) - (u.y - o.y) * (v.x - o.x);
+        };
         if (side(a, b, p) * side(a, b, q) < 0 && side(p, q, a) * side(p, q, b) < 0) return 0.0;
         d = std::min({d, pointSegmentDistance(p, a, b), pointSegmentDistance(a, p, q), pointSegmentDistance(b, p, q)});
     }

@@ -21,21 +21,21 @@ namespace cavewall::scenes {
 enum class UpAxis { Y, Z };
 
 struct ModelFile {
-    std::filesystem::path file;            // glTF/GLB, relative to the scene.json folder
-    glm::dmat4 worldFromFile{1.0};         // placement (after units and up-axis conversion)
-    double metresPerUnit = 1.0;            // units conversion of the file
-    UpAxis up = UpAxis::Y;                 // Z-up files are rotated to Y-up
-    bool structure = false;                // every object of this file is structure
+    std::filesystem::path file;               // glTF/GLB, relative to the scene.json folder
+    glm::dmat4 worldFromFile{1.0};            // placement (after units and up-axis conversion)
+    double metresPerUnit = 1.0;               // units conversion of the file
+    UpAxis up = UpAxis::Y;                    // Z-up files are rotated to Y-up
+    bool structure = false;                   // every object of this file is structure
     std::vector<std::string> structureNodes;  // node-name patterns ('*' wildcard) that are structure
-    double splitMetres = 0.0;              // > 0: objects wider cut into chunks (scenes/mesh_split.h)
+    double splitMetres = 0.0;                 // > 0: objects wider cut into chunks (scenes/mesh_split.h)
 
     bool operator==(const ModelFile&) const = default;
 };
 
 struct Cell {
     std::string name;
-    std::vector<glm::dvec2> region;        // convex floor polygon (x, z), CCW from above
-    double floorY = 0.0;                   // floor height
+    std::vector<glm::dvec2> region;  // convex floor polygon (x, z), CCW from above
+    double floorY = 0.0;             // floor height
 
     bool operator==(const Cell&) const = default;
 };
@@ -48,7 +48,7 @@ enum class WallKind {
 struct VirtualWall {
     std::string name;
     glm::dvec3 lowerLeft{0.0}, lowerRight{0.0}, upperLeft{0.0};
-    std::array<int, 2> cells{-1, -1};      // [front, back]: indices into SceneDescription::cells
+    std::array<int, 2> cells{-1, -1};  // [front, back]: indices into SceneDescription::cells
     WallKind kind = WallKind::Virtual;
 
     bool operator==(const VirtualWall&) const = default;
@@ -64,7 +64,7 @@ struct RealWall {
 
 struct SceneDescription {
     std::string name;
-    std::filesystem::path folder;          // where scene.json lives; files are relative to it
+    std::filesystem::path folder;  // where scene.json lives; files are relative to it
     std::vector<ModelFile> models;
     std::vector<Cell> cells;
     std::vector<VirtualWall> walls;

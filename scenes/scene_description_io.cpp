@@ -103,7 +103,8 @@ VirtualWall parseWall(const JsonNode& n, const std::map<std::string, int>& cells
     n.expectKeys({"name", "kind", "cells", "lowerLeft", "lowerRight", "upperLeft"});
     VirtualWall w;
     w.name = n.at("name").string();
-    if (auto k = n.find("kind")) w.kind = k->oneOf({"virtual", "portal"}) == "portal" ? WallKind::Portal : WallKind::Virtual;
+    if (auto k = n.find("kind"))
+        w.kind = k->oneOf({"virtual", "portal"}) == "portal" ? WallKind::Portal : WallKind::Virtual;
     const auto names = n.at("cells").items(2, 2);
     for (int i = 0; i < 2; ++i) {
         const std::string name = names[i].string();
@@ -193,7 +194,8 @@ nlohmann::json modelJson(const ModelFile& m) {
     if (m.worldFromFile != glm::dmat4(1.0)) {
         nlohmann::json rows = nlohmann::json::array();
         for (int r = 0; r < 4; ++r)
-            rows.push_back({m.worldFromFile[0][r], m.worldFromFile[1][r], m.worldFromFile[2][r], m.worldFromFile[3][r]});
+            rows.push_back(
+                {m.worldFromFile[0][r], m.worldFromFile[1][r], m.worldFromFile[2][r], m.worldFromFile[3][r]});
         j["matrix"] = rows;
     }
     if (m.structure) j["structure"] = true;
@@ -217,7 +219,8 @@ void dumpCompact(const nlohmann::json& j, int indent, std::string& out) {
         out += std::string(static_cast<std::size_t>(indent), ' ') + "}";
         return;
     }
-    if (j.is_array() && !j.empty() && !std::all_of(j.begin(), j.end(), [](const auto& e) { return e.is_primitive(); })) {
+    if (j.is_array() && !j.empty() &&
+        !std::all_of(j.begin(), j.end(), [](const auto& e) { return e.is_primitive(); })) {
         out += "[\n";
         for (std::size_t i = 0; i < j.size(); ++i) {
             out += pad;
@@ -260,7 +263,8 @@ std::string writeSceneDescription(const SceneDescription& d) {
         j["walls"].push_back(wj);
     }
     j["realWalls"] = nlohmann::json::array();
-    for (const RealWall& w : d.realWalls) j["realWalls"].push_back(quadJson(w.name, w.lowerLeft, w.lowerRight, w.upperLeft));
+    for (const RealWall& w : d.realWalls)
+        j["realWalls"].push_back(quadJson(w.name, w.lowerLeft, w.lowerRight, w.upperLeft));
     j["walkPath"] = nlohmann::json::array();
     for (glm::dvec3 p : d.walkPath) j["walkPath"].push_back(vecJson(p));
     if (!d.wallPath.empty()) {  // optional: scenes without one keep their bytes

@@ -31,7 +31,8 @@ struct Checker {
         const glm::dvec3 right = lr - ll, up = ul - ll;
         const double area = glm::length(glm::cross(right, up));
         if (!(area > 1e-9))
-            fail(where, "corners are collinear or repeated (expected a non-zero area, got " + formatNumber(area) + " m²)");
+            fail(where,
+                 "corners are collinear or repeated (expected a non-zero area, got " + formatNumber(area) + " m²)");
         const double cosAngle = glm::dot(right, up) / (glm::length(right) * glm::length(up));
         if (std::abs(cosAngle) > 1e-6)
             fail(where, "not a rectangle (expected a right angle at lowerLeft, got " +
@@ -40,7 +41,8 @@ struct Checker {
         if (std::abs(normal.y) > 1e-6)
             fail(where, "not vertical (expected a normal with no vertical component, got normal " + fmt(normal) + ")");
         if (up.y <= 0.0)
-            fail(where, "upperLeft is not above lowerLeft (expected a positive height, got " + formatNumber(up.y) + " m)");
+            fail(where,
+                 "upperLeft is not above lowerLeft (expected a positive height, got " + formatNumber(up.y) + " m)");
     }
 
     void checkCell(std::size_t i) const {
@@ -59,9 +61,9 @@ struct Checker {
             if (std::abs(d.cells[j].floorY - c.floorY) > 1e-6) continue;  // different storeys may overlap in plan
             const double overlap = overlapArea(c.region, d.cells[j].region);
             if (overlap > 1e-6)
-                fail("cells[" + std::to_string(i) + "]", "overlaps cells[" + std::to_string(j) + "] '" + d.cells[j].name +
-                                                             "' (expected cells that at most touch, got " +
-                                                             formatNumber(overlap) + " m² in common)");
+                fail("cells[" + std::to_string(i) + "]",
+                     "overlaps cells[" + std::to_string(j) + "] '" + d.cells[j].name +
+                         "' (expected cells that at most touch, got " + formatNumber(overlap) + " m² in common)");
         }
     }
 
@@ -73,14 +75,16 @@ struct Checker {
         for (int k = 0; k < 2; ++k)
             if (w.cells[k] < 0 || w.cells[k] >= n)
                 fail(where + ".cells[" + std::to_string(k) + "]", "cell " + std::to_string(w.cells[k]) +
-                                                                      " does not exist (expected < " + std::to_string(n) + " cells)");
+                                                                      " does not exist (expected < " +
+                                                                      std::to_string(n) + " cells)");
         if (w.cells[0] == w.cells[1])
             fail(where + ".cells", "names the same cell twice (expected two different cells, got '" +
                                        d.cells[w.cells[0]].name + "' twice)");
         // A wall joins its cells: its footprint must touch both regions.
         for (int k = 0; k < 2; ++k) {
             const Cell& cell = d.cells[w.cells[k]];
-            const double gap = segmentRegionDistance({w.lowerLeft.x, w.lowerLeft.z}, {w.lowerRight.x, w.lowerRight.z}, cell.region);
+            const double gap =
+                segmentRegionDistance({w.lowerLeft.x, w.lowerLeft.z}, {w.lowerRight.x, w.lowerRight.z}, cell.region);
             if (gap > kMaxWallCellGap)
                 fail(where, "'" + w.name + "' is " + formatNumber(gap) + " m from cell '" + cell.name +
                                 "' that it joins (expected its footprint within " + formatNumber(kMaxWallCellGap) +
@@ -114,14 +118,16 @@ struct Checker {
 
     void checkModels() const {
         for (std::size_t i = 0; i < d.models.size(); ++i) {
-            const std::filesystem::path file = d.models[i].file.is_absolute() ? d.models[i].file : d.folder / d.models[i].file;
+            const std::filesystem::path file =
+                d.models[i].file.is_absolute() ? d.models[i].file : d.folder / d.models[i].file;
             std::error_code ec;
             if (!std::filesystem::is_regular_file(file, ec))
-                fail("models[" + std::to_string(i) + "].file", "'" + d.models[i].file.string() +
-                                                                   "' does not exist (expected a glTF/GLB file, looked for " +
-                                                                   file.string() + ")");
+                fail("models[" + std::to_string(i) + "].file",
+                     "'" + d.models[i].file.string() + "' does not exist (expected a glTF/GLB file, looked for " +
+                         file.string() + ")");
             if (std::abs(glm::determinant(d.models[i].worldFromFile)) < 1e-12)
-                fail("models[" + std::to_string(i) + "]", "placement matrix is singular (expected a non-zero determinant)");
+                fail("models[" + std::to_string(i) + "]",
+                     "placement matrix is singular (expected a non-zero determinant)");
         }
     }
 };
@@ -136,14 +142,16 @@ void validateSceneDescription(const SceneDescription& d, const std::string& sour
     for (std::size_t i = 0; i < d.cells.size(); ++i) {
         for (std::size_t j = 0; j < i; ++j)
             if (d.cells[j].name == d.cells[i].name)
-                c.fail("cells[" + std::to_string(i) + "].name", "duplicate cell name '" + d.cells[i].name + "' (expected unique names)");
+                c.fail("cells[" + std::to_string(i) + "].name",
+                       "duplicate cell name '" + d.cells[i].name + "' (expected unique names)");
         c.checkCell(i);
     }
     for (std::size_t i = 0; i < d.walls.size(); ++i) c.checkWall(i);
     for (std::size_t i = 0; i < d.realWalls.size(); ++i)
         c.checkQuad("realWalls[" + std::to_string(i) + "]", d.realWalls[i].lowerLeft, d.realWalls[i].lowerRight,
                     d.realWalls[i].upperLeft);
-    if (!(d.eyeHeight > 0.0)) c.fail("viewer.eyeHeight", "expected a positive height, got " + formatNumber(d.eyeHeight));
+    if (!(d.eyeHeight > 0.0))
+        c.fail("viewer.eyeHeight", "expected a positive height, got " + formatNumber(d.eyeHeight));
     if (!(d.headHeightRange.x < d.headHeightRange.y)) c.fail("viewer.headHeightRange", "expected low < high");
     if (d.cells.empty()) return;
     for (const auto& [name, path] : {std::pair{"walkPath", &d.walkPath}, std::pair{"wallPath", &d.wallPath}})

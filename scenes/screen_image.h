@@ -11,8 +11,8 @@ namespace cavewall::scenes {
 
 struct ScreenImage {
     int screen = 0;
-    int image = 0;           // RenderTargets image index (separate stereo: 0 left, 1 right)
-    std::string stem;        // file name without extension (display::imageStem)
+    int image = 0;     // RenderTargets image index (separate stereo: 0 left, 1 right)
+    std::string stem;  // file name without extension (display::imageStem)
     Image pixels;
 };
 

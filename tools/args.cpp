@@ -23,8 +23,10 @@ Args::Args(std::vector<std::string> words, std::initializer_list<std::string_vie
             name.resize(eq);
         } else if (std::find(switches.begin(), switches.end(), name) == switches.end()) {
             // Reported later (expectFlags, get): an unknown last flag is unknown first.
-            if (i + 1 >= words.size()) _missingValue = name;
-            else value = words[++i];
+            if (i + 1 >= words.size())
+                _missingValue = name;
+            else
+                value = words[++i];
         }
         if (_flags.count(name)) throw Error("--" + name + ": given more than once");
         _flags[name] = value;
@@ -93,8 +95,8 @@ double Args::number(std::string_view flag, double fallback, double lo, double hi
     const std::string what = "--" + std::string(flag);
     const double v = parseNumber(*s, what);
     if (v < lo || v > hi)
-        throw Error(what + ": expected a number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                    "], got " + *s);
+        throw Error(what + ": expected a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
+                    *s);
     return v;
 }
 

@@ -47,7 +47,8 @@ const char* const kBakeUsage =
     "--texture-format: how colour is stored on disk and on the GPU (walls/texture_blocks.h): rgba8,\n"
     "zip-compressed TIFF, 4 bytes per texel on the GPU; bc1 (S3TC DXT1, 0.5 byte per texel, 1-bit\n"
     "alpha) or bc3 (DXT5, 1 byte per texel, 8-bit alpha), deflated S3TC blocks in .bct files, uploaded\n"
-    "compressed; default " DEFAULT_TEXTURE_FORMAT "; keys the cache.\n"
+    "compressed; default " DEFAULT_TEXTURE_FORMAT
+    "; keys the cache.\n"
     "Progress goes to stderr (a bar with ETA on a terminal, plain lines otherwise); a summary and,\n"
     "as the last line, the bake folder go to stdout; before it, where the time went (seconds; the\n"
     "writer threads' stages overlap rendering).\n";
@@ -82,8 +83,8 @@ void ProgressPrinter::operator()(const gl::BakeProgress& p) {
     const bool last = p.done == p.total;
     const double eta = p.baked > 0 ? p.seconds / std::max(1, p.done) * (p.total - p.done) : 0.0;
     char line[200];
-    std::snprintf(line, sizeof line, "%d/%d textures (%d baked, %d reused), %.1f MB, %.1f s", p.done, p.total,
-                  p.baked, p.reused, megabytes(p.bytesWritten), p.seconds);
+    std::snprintf(line, sizeof line, "%d/%d textures (%d baked, %d reused), %.1f MB, %.1f s", p.done, p.total, p.baked,
+                  p.reused, megabytes(p.bytesWritten), p.seconds);
     if (_terminal) {
         constexpr int kWidth = 30;
         const int filled = p.total > 0 ? kWidth * p.done / p.total : kWidth;
@@ -114,7 +115,8 @@ int runBake(const std::vector<std::string>& words) {
     walls::validatePlanOptions(request.plan);
     request.settings.jobs = static_cast<int>(args.integer("jobs", 1, 1, 64));
     request.settings.drawThreads = static_cast<int>(args.integer("draw-threads", 2, 1, 8));
-    request.settings.maxResolution = static_cast<int>(args.integer("max-res", request.settings.maxResolution, 16, 16384));
+    request.settings.maxResolution =
+        static_cast<int>(args.integer("max-res", request.settings.maxResolution, 16, 16384));
     request.settings.tileSize = static_cast<int>(args.integer("tile", request.settings.tileSize, 16, 1024));
     request.settings.kind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
     request.settings.lodTexels = args.number("lod-texels", request.settings.lodTexels, 0.0, 4.0);
@@ -133,15 +135,17 @@ int runBake(const std::vector<std::string>& words) {
     printer.end();
     for (const std::string& w : result.warnings) std::cerr << "cavewall: warning: " << w << "\n";
     const int total = static_cast<int>(result.manifest.textures.size());
-    std::printf("bake: %d textures: %d baked, %d reused (%d from earlier bakes) in %s; wrote %.1f MB, folder holds %.1f MB\n",
-                total, result.baked, result.reused, result.linked, formatSeconds(result.seconds).c_str(),
-                megabytes(result.bytesWritten), megabytes(result.totalBytes));
+    std::printf(
+        "bake: %d textures: %d baked, %d reused (%d from earlier bakes) in %s; wrote %.1f MB, folder holds %.1f MB\n",
+        total, result.baked, result.reused, result.linked, formatSeconds(result.seconds).c_str(),
+        megabytes(result.bytesWritten), megabytes(result.totalBytes));
     const gl::BakeTimes& t = result.times;
     if (result.baked > 0)
-        std::printf("bake: time: prepare %.2f, draw %.2f, read back %.2f, queue wait %.2f, MIP %.2f, encode+write %.2f, "
-                    "hash %.2f, manifest %.2f s; %.0f triangles per texture; LOD error <= %.3g texels\n",
-                    t.prepare, t.draw, t.read, t.queue, t.mips, t.encode, t.hash, t.manifest,
-                    double(result.trianglesDrawn) / result.baked, result.maxLodErrorTexels);
+        std::printf(
+            "bake: time: prepare %.2f, draw %.2f, read back %.2f, queue wait %.2f, MIP %.2f, encode+write %.2f, "
+            "hash %.2f, manifest %.2f s; %.0f triangles per texture; LOD error <= %.3g texels\n",
+            t.prepare, t.draw, t.read, t.queue, t.mips, t.encode, t.hash, t.manifest,
+            double(result.trianglesDrawn) / result.baked, result.maxLodErrorTexels);
     std::printf("%s\n", result.folder.string().c_str());
     return 0;
 }

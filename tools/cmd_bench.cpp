@@ -20,8 +20,10 @@
 namespace cavewall::tools {
 
 const char* const kBenchUsage =
-    "usage: cavewall bench SCENE [--display D] [--path P] [--route walk|wall] [--out DIR] [--frames N] [--resolution N]\n"
-    "                      [--stereo mono|separate] [--quick] [--cache DIR] [--compare-every K] [--min-zone M] [--ppd N]\n"
+    "usage: cavewall bench SCENE [--display D] [--path P] [--route walk|wall] [--out DIR] [--frames N] [--resolution "
+    "N]\n"
+    "                      [--stereo mono|separate] [--quick] [--cache DIR] [--compare-every K] [--min-zone M] [--ppd "
+    "N]\n"
     "                      [--bake-resolution N] [--alphas A,B,...] [--warp-alpha A]\n"
     "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
     "                      [--walls flat|depth] [--hierarchy [--hierarchy-budgets T1,T2,...]]\n"
@@ -56,7 +58,8 @@ const char* const kBenchUsage =
     "         pixel to the eye (walls/gl/depth_wall_pass.h); default flat. Run both\n"
     "         into two --out folders to compare.\n"
     "         --texture-format: storage of the baked colour (as `cavewall bake`, default\n"
-    "         " DEFAULT_TEXTURE_FORMAT "); the disk and GPU MB columns and the image error include it.\n"
+    "         " DEFAULT_TEXTURE_FORMAT
+    "); the disk and GPU MB columns and the image error include it.\n"
     "         --hierarchy adds Maciel & Shirley's textured clusters (`cavewall run --hierarchy`)\n"
     "         held to --frame-budget-ms (16.67 when it is 0) by the controller, drawn in turn\n"
     "         with full geometry and the walls modes (impostors made into the cache first);\n"
@@ -145,9 +148,11 @@ int runStability() {
         const bool fellBack = r.condition > display::kMaxWarpCondition;
         std::printf("| %s | %s | %s | %s | %s | %s | %s |\n", r.name.c_str(), r.unit.c_str(),
                     std::isnan(r.floatError) ? "–" : config::formatNumber(r.floatError).c_str(),
-                    config::formatNumber(r.cavewallError).c_str(),
-                    config::formatNumber(r.tolerance).c_str(), r.condition > 0 ? config::formatNumber(r.condition).c_str() : "",
-                    !r.pass() ? "FAIL" : fellBack ? "pass (geometry fallback)" : "pass");
+                    config::formatNumber(r.cavewallError).c_str(), config::formatNumber(r.tolerance).c_str(),
+                    r.condition > 0 ? config::formatNumber(r.condition).c_str() : "",
+                    !r.pass()  ? "FAIL"
+                    : fellBack ? "pass (geometry fallback)"
+                               : "pass");
     }
     std::printf("\n%zu cases, %d failed\n", rows.size(), failed);
     return failed ? 1 : 0;
@@ -155,7 +160,8 @@ int runStability() {
 
 #ifdef CAVEWALL_HAVE_GL
 // "10,20,30": at least one number, each checked by `check` (which throws on a bad one).
-std::vector<double> numberList(const std::string& text, const std::string& what, const std::function<void(double)>& check) {
+std::vector<double> numberList(const std::string& text, const std::string& what,
+                               const std::function<void(double)>& check) {
     std::vector<double> out;
     std::size_t start = 0;
     while (start <= text.size()) {
@@ -223,12 +229,14 @@ int runSceneBench(const Args& args) {
         o.display = gl::withResolution(display, pixels);
     }
     if (auto stereo = args.get("stereo")) {
-        if (*stereo == "mono") o.display.stereo = config::StereoMode::Mono;
-        else if (*stereo == "separate") o.display.stereo = config::StereoMode::Separate;
-        else throw Error("bench: --stereo: expected mono or separate, got '" + *stereo + "'");
+        if (*stereo == "mono")
+            o.display.stereo = config::StereoMode::Mono;
+        else if (*stereo == "separate")
+            o.display.stereo = config::StereoMode::Separate;
+        else
+            throw Error("bench: --stereo: expected mono or separate, got '" + *stereo + "'");
     }
-    if (auto path = args.get("path"))
-        o.tracker = std::filesystem::is_regular_file(*path) ? "replay:" + *path : *path;
+    if (auto path = args.get("path")) o.tracker = std::filesystem::is_regular_file(*path) ? "replay:" + *path : *path;
     o.route = args.choice("route", app::kRouteNames, app::Route::Walk);
     o.frames = args.integer("frames", quick ? 24 : 120, 1, 100000);
     o.compareEvery = static_cast<int>(args.integer("compare-every", quick ? 3 : 4, 1, 100000));
@@ -264,8 +272,11 @@ int runSceneBench(const Args& args) {
     if (args.has("on-demand")) o.onDemandCache = out / "on-demand-cache";
     const bench::BenchReport report = gl::runBenchmark(o);
     bench::writeReport(out, report);
-    std::cout << "\n" << bench::markdownReport(report) << "\n" << (out / "bench.csv").string() << "\n"
-              << (out / "bench.md").string() << "\n" << (out / "bench.png").string() << "\n";
+    std::cout << "\n"
+              << bench::markdownReport(report) << "\n"
+              << (out / "bench.csv").string() << "\n"
+              << (out / "bench.md").string() << "\n"
+              << (out / "bench.png").string() << "\n";
     return 0;
 }
 
@@ -300,7 +311,9 @@ int runScaleBench(const Args& args) {
     o.afterSize = [&](const bench::ScaleReport& soFar) { bench::writeScaleReport(out, soFar); };
     const bench::ScaleReport report = gl::runScaleBench(o);
     bench::writeScaleReport(out, report);
-    std::cout << "\n" << bench::scaleMarkdown(report) << "\n" << (out / "scale.csv").string() << "\n"
+    std::cout << "\n"
+              << bench::scaleMarkdown(report) << "\n"
+              << (out / "scale.csv").string() << "\n"
               << (out / "scale.md").string() << "\n";
     return 0;
 }

@@ -36,8 +36,8 @@ const char* const kDemoUsage =
     "Headless without $DISPLAY, windowed otherwise. Walls are planned with alpha 10 degrees\n"
     "(Ebbesmeyer 1997 used 10 and advises at most 15), zones of at least 2 m and 2 texels per\n"
     "degree (2,142 textures: about 10 s to bake on 2 cores the first time).\n"
-    "--texture-format: storage of the baked wall colour, as for `cavewall bake` (default\n"
-    DEFAULT_TEXTURE_FORMAT ").\n";
+    "--texture-format: storage of the baked wall colour, as for `cavewall bake` (default\n" DEFAULT_TEXTURE_FORMAT
+    ").\n";
 
 namespace {
 
@@ -78,8 +78,8 @@ std::string resolutionText(const config::DisplayConfig& d) {
 
 std::string errorText(const bench::ImageError& e) {
     std::ostringstream s;
-    s << e.psnrDb << " dB pooled (worst frame " << e.worstFramePsnrDb << " dB), FLIP mean " << e.flipMean
-      << " (p95 " << e.flipP95 << ")";
+    s << e.psnrDb << " dB pooled (worst frame " << e.worstFramePsnrDb << " dB), FLIP mean " << e.flipMean << " (p95 "
+      << e.flipP95 << ")";
     return s.str();
 }
 
@@ -117,8 +117,8 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
     row(r, "worst wall texture error (px)", d.walls.worstErrorPx, "-", ifLod("-"), "-");
     row(r, "worst level-of-detail error (px)", d.walls.worstLodErrorPx, d.control.worstLodErrorPx,
         ifLod(d.lod ? d.lod->worstLodErrorPx : 0.0), 0);
-    row(r, "texture page-ins / misses", std::to_string(d.walls.pageIns) + " / " + std::to_string(d.walls.misses),
-        "-", ifLod("-"), "-");
+    row(r, "texture page-ins / misses", std::to_string(d.walls.pageIns) + " / " + std::to_string(d.walls.misses), "-",
+        ifLod("-"), "-");
     r << "\nThe control draws, frame by frame, the cells the walls draw as geometry (the viewer's cell, "
          "the neighbours in geometry zones and blend strips, structure) and leaves the walls empty: the "
          "walls' image error against the control's is what the textures buy.\n";
@@ -176,7 +176,12 @@ int runDemo(const std::vector<std::string>& words) {
         r.lodPixels = lodPixels;
         return gl::runSession(r);
     };
-    DemoRuns d{run("walls", true, o.lodPixels), run("cells", true, o.lodPixels, false), std::nullopt, {}, {}, {},
+    DemoRuns d{run("walls", true, o.lodPixels),
+               run("cells", true, o.lodPixels, false),
+               std::nullopt,
+               {},
+               {},
+               {},
                std::nullopt};
     if (o.lodPixels > 0.0) d.lod = run("lod", false, o.lodPixels);
     d.geometry = run("geometry", false, 0.0);
@@ -191,9 +196,10 @@ int runDemo(const std::vector<std::string>& words) {
               << (d.lod ? " and levels of detail" : "") << ", ";
     if (d.lod) std::cout << display::median(d.lod->frameMs) << " ms full geometry with levels of detail, ";
     std::cout << mg << " ms full geometry, speed-up " << (mw > 0 ? mg / mw : 0.0) << "x at "
-              << errorText(d.wallsError.error) << " (the control, the same cells without textures: "
-              << errorText(d.controlError.error) << "); worst wall error " << d.walls.worstErrorDeg << " deg ("
-              << d.walls.worstErrorPx << " px), worst level-of-detail error " << d.walls.worstLodErrorPx
+              << errorText(d.wallsError.error)
+              << " (the control, the same cells without textures: " << errorText(d.controlError.error)
+              << "); worst wall error " << d.walls.worstErrorDeg << " deg (" << d.walls.worstErrorPx
+              << " px), worst level-of-detail error " << d.walls.worstLodErrorPx
               << " px\nGL_RENDERER: " << d.walls.renderer << "\nworst frame: " << d.wallsError.foldout.string()
               << "\nreport: " << (out / "report.md").string() << "\n";
     return 0;

@@ -35,7 +35,8 @@ scenes::Image sideBySide(const std::vector<const scenes::Image*>& images) {
     }
     width -= kGap;
     scenes::Image out{"worst_frame", width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 4)};
-    for (std::size_t p = 0; p < out.rgba.size(); p += 4) out.rgba[p] = 24, out.rgba[p + 1] = 24, out.rgba[p + 2] = 28, out.rgba[p + 3] = 255;
+    for (std::size_t p = 0; p < out.rgba.size(); p += 4)
+        out.rgba[p] = 24, out.rgba[p + 1] = 24, out.rgba[p + 2] = 28, out.rgba[p + 3] = 255;
     int x0 = 0;
     for (const scenes::Image* i : images) {
         for (int y = 0; y < i->height; ++y)
@@ -67,7 +68,8 @@ DemoComparison compareRuns(const display::Display& display, const app::RunSummar
     }
     DemoComparison out;
     out.error = pool.result();
-    if (out.error.frames == 0) throw Error("demo: the runs saved no common frame to compare (expected at least 1, got 0)");
+    if (out.error.frames == 0)
+        throw Error("demo: the runs saved no common frame to compare (expected at least 1, got 0)");
     out.worstFrame = static_cast<long>(pool.worstFlip().frame);
     out.worstFlipMean = pool.worstFlip().mean;
     const app::RunSummary::SavedFrame& t = *findFrame(test, out.worstFrame);
@@ -77,7 +79,8 @@ DemoComparison compareRuns(const display::Display& display, const app::RunSummar
         const scenes::ScreenImage& s = t.images[i];
         metrics::FlipOptions options;
         options.pixelsPerDegree = pixelsPerDegree(display, s.screen, t.head, s.pixels);
-        maps.push_back({s.screen, s.image, s.stem, metrics::flipErrorImage(metrics::flip(s.pixels, r.images[i].pixels, options))});
+        maps.push_back(
+            {s.screen, s.image, s.stem, metrics::flipErrorImage(metrics::flip(s.pixels, r.images[i].pixels, options))});
     }
     const scenes::Image a = gl::foldoutOf(display, t.images), b = gl::foldoutOf(display, r.images),
                         c = gl::foldoutOf(display, maps);

@@ -13,10 +13,10 @@
 namespace cavewall::tools {
 
 struct DemoComparison {
-    bench::ImageError error;           // every saved frame, all screens and eyes
-    long worstFrame = -1;              // the frame of the image with the highest FLIP mean
-    double worstFlipMean = 0.0;        // that image's FLIP mean
-    std::filesystem::path foldout;     // worst_frame.png: test | reference | FLIP map, side by side
+    bench::ImageError error;        // every saved frame, all screens and eyes
+    long worstFrame = -1;           // the frame of the image with the highest FLIP mean
+    double worstFlipMean = 0.0;     // that image's FLIP mean
+    std::filesystem::path foldout;  // worst_frame.png: test | reference | FLIP map, side by side
 };
 
 // Compares `test` with `reference` frame by frame (the frames both saved; both runs kept their

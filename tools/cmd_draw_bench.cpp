@@ -43,12 +43,14 @@ std::string fixed(double v, int decimals) {
 }
 
 std::string csvText(const gl::DrawBenchResult& r) {
-    std::string csv = "culling,lighting,triangles,median_ms,p90_ms,cpu_median_ms,mtriangles_per_s,mpixels_per_s,vertex_bytes_per_triangle,"
-                      "index_bytes_per_triangle\n";
+    std::string csv =
+        "culling,lighting,triangles,median_ms,p90_ms,cpu_median_ms,mtriangles_per_s,mpixels_per_s,vertex_bytes_per_"
+        "triangle,"
+        "index_bytes_per_triangle\n";
     for (const gl::DrawBenchRow& row : r.rows)
-        csv += std::string(row.cullBackFaces ? "on" : "off") + "," + (row.perPixelOnly ? "per-pixel" : "default") + "," +
-               std::to_string(row.trianglesSubmitted) + "," +
-               fixed(row.timing.medianMs, 3) + "," + fixed(row.timing.p90Ms, 3) + "," + fixed(row.timing.cpuMedianMs, 3) + "," +
+        csv += std::string(row.cullBackFaces ? "on" : "off") + "," + (row.perPixelOnly ? "per-pixel" : "default") +
+               "," + std::to_string(row.trianglesSubmitted) + "," + fixed(row.timing.medianMs, 3) + "," +
+               fixed(row.timing.p90Ms, 3) + "," + fixed(row.timing.cpuMedianMs, 3) + "," +
                fixed(row.timing.mtrianglesPerS, 2) + "," + fixed(row.timing.mpixelsPerS, 2) + "," +
                fixed(r.vertexBytesPerTriangle, 2) + "," + fixed(r.indexBytesPerTriangle, 2) + "\n";
     return csv;
@@ -63,13 +65,15 @@ void print(const gl::DrawBenchResult& r, const gl::DrawBenchOptions& o) {
               << "GL_RENDERER: " << r.glRenderer << "\n"
               << "GPU memory per triangle: " << fixed(r.vertexBytesPerTriangle, 2) << " vertex bytes, "
               << fixed(r.indexBytesPerTriangle, 2) << " index bytes\n\n"
-              << "| back faces | lighting | triangles submitted | median ms | p90 ms | CPU ms (median) | Mtriangles/s | Mpixels/s |\n"
+              << "| back faces | lighting | triangles submitted | median ms | p90 ms | CPU ms (median) | Mtriangles/s "
+                 "| Mpixels/s |\n"
               << "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const gl::DrawBenchRow& row : r.rows)
         std::cout << "| " << (row.cullBackFaces ? "culled" : "drawn (culling off)") << " | "
-                  << (row.perPixelOnly ? "per pixel only" : "default") << " | " << row.trianglesSubmitted
-                  << " | " << fixed(row.timing.medianMs, 2) << " | " << fixed(row.timing.p90Ms, 2) << " | " << fixed(row.timing.cpuMedianMs, 2) << " | "
-                  << fixed(row.timing.mtrianglesPerS, 1) << " | " << fixed(row.timing.mpixelsPerS, 1) << " |\n";
+                  << (row.perPixelOnly ? "per pixel only" : "default") << " | " << row.trianglesSubmitted << " | "
+                  << fixed(row.timing.medianMs, 2) << " | " << fixed(row.timing.p90Ms, 2) << " | "
+                  << fixed(row.timing.cpuMedianMs, 2) << " | " << fixed(row.timing.mtrianglesPerS, 1) << " | "
+                  << fixed(row.timing.mpixelsPerS, 1) << " |\n";
 }
 
 }  // namespace

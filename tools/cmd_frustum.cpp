@@ -32,10 +32,11 @@ int runFrustum(const std::vector<std::string>& words) {
     for (int a = 0; a < 3; ++a)
         if (std::abs(head.position[a]) > config::kMaxCoordinate)
             throw Error("--eye: expected coordinates in [-" + config::formatNumber(config::kMaxCoordinate) + ", " +
-                        config::formatNumber(config::kMaxCoordinate) + "] m, got " + config::formatNumber(head.position[a]));
+                        config::formatNumber(config::kMaxCoordinate) + "] m, got " +
+                        config::formatNumber(head.position[a]));
     if (args.has("head-yaw"))
-        head.orientation = glm::angleAxis(glm::radians(args.number("head-yaw", 0.0, -360.0, 360.0)),
-                                          glm::dvec3(0, 1, 0));
+        head.orientation =
+            glm::angleAxis(glm::radians(args.number("head-yaw", 0.0, -360.0, 360.0)), glm::dvec3(0, 1, 0));
     const auto views = disp.views(head);
     if (args.has("json")) {
         std::cout << std::setprecision(17) << display::frustumJson(disp, views).dump(2) << "\n";
@@ -43,8 +44,8 @@ int runFrustum(const std::vector<std::string>& words) {
     }
     for (const auto& v : views) {
         const auto& f = v.frustum;
-        std::cout << disp.screens()[v.screen].name << " (" << display::toString(v.pass.eye)
-                  << "): eye distance " << f.eyeDistance << " m, guard " << display::toString(f.guard) << "\n";
+        std::cout << disp.screens()[v.screen].name << " (" << display::toString(v.pass.eye) << "): eye distance "
+                  << f.eyeDistance << " m, guard " << display::toString(f.guard) << "\n";
     }
     return 0;
 }

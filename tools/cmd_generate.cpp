@@ -56,7 +56,8 @@ int runGenerate(const std::vector<std::string>& words) {
     args.expectFlags({"out", "seed", "triangles"});
     const std::string kind = args.positional(0, "the scene kind (plant, house or boxes)");
     if (args.positional().size() > 1)
-        throw Error("generate: unexpected argument '" + args.positional()[1] + "' (expected only plant, house or boxes)");
+        throw Error("generate: unexpected argument '" + args.positional()[1] +
+                    "' (expected only plant, house or boxes)");
     if (kind != "plant" && kind != "house" && kind != "boxes")
         throw Error("generate: unknown scene kind '" + kind + "' (expected plant, house or boxes)");
     scenes::GenerateOptions options;
@@ -73,10 +74,9 @@ int runGenerate(const std::vector<std::string>& words) {
     std::size_t unique = 0;
     for (const auto& m : g.scene.meshes) unique += m.triangleCount();
     std::cout << kind << ": " << g.scene.objects.size() << " objects, " << g.scene.meshes.size() << " meshes, "
-              << g.scene.triangleCount() << " triangles drawn (" << unique << " stored), "
-              << g.description.cells.size() << " cells, " << g.description.walls.size() << " "
-              << (kind == "plant" ? "virtual walls" : "portals") << ", " << g.description.realWalls.size()
-              << " real walls\n"
+              << g.scene.triangleCount() << " triangles drawn (" << unique << " stored), " << g.description.cells.size()
+              << " cells, " << g.description.walls.size() << " " << (kind == "plant" ? "virtual walls" : "portals")
+              << ", " << g.description.realWalls.size() << " real walls\n"
               << json.string() << "\n";
     return 0;
 }

@@ -57,7 +57,8 @@ int runPlan(const std::vector<std::string>& words) {
     if (auto kind = args.get("walls")) options.wallKind = walls::parseWallKind(*kind, "--walls");
     walls::validatePlanOptions(options);
     const std::string& path = args.positional(0, "SCENE");
-    if (args.positional().size() > 1) throw Error("plan: expected one SCENE, got " + std::to_string(args.positional().size()) + " words");
+    if (args.positional().size() > 1)
+        throw Error("plan: expected one SCENE, got " + std::to_string(args.positional().size()) + " words");
     scenes::SceneDescription description;
     const scenes::Scene scene = scenes::loadSceneFile(path, &description);
     const walls::VisibilityTable table = walls::computeVisibility(description);

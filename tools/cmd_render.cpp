@@ -73,7 +73,8 @@ int runRender(const std::vector<std::string>& words) {
     display::HeadPose head = disp.defaultHead();
     if (auto eye = args.vec3("eye")) head.position = *eye;
     if (args.has("head-yaw"))
-        head.orientation = glm::angleAxis(glm::radians(args.number("head-yaw", 0.0, -360.0, 360.0)), glm::dvec3(0, 1, 0));
+        head.orientation =
+            glm::angleAxis(glm::radians(args.number("head-yaw", 0.0, -360.0, 360.0)), glm::dvec3(0, 1, 0));
 
     glm::dmat4 worldFromCave(1.0);
     if (args.has("view-all")) worldFromCave = render::viewAll(disp, head, scene.bounds()).worldFromCave;
@@ -81,12 +82,12 @@ int runRender(const std::vector<std::string>& words) {
     const auto context = openContext(disp, args.has("window"));
     gl::Snapshotter snapshotter(disp, scene, *context);
     const gl::Snapshot frame = snapshotter.render(head, worldFromCave);
-    for (const auto& file : gl::writeFrame(out, frame.images, frame.foldout)) std::cout << "wrote " << file.string() << "\n";
+    for (const auto& file : gl::writeFrame(out, frame.images, frame.foldout))
+        std::cout << "wrote " << file.string() << "\n";
     std::cout << "GL_RENDERER: " << context->info().renderer << " (" << context->info().provider << ")\n"
               << frame.stats.objectsDrawn << " objects, " << frame.stats.triangles << " triangles, "
-              << frame.stats.drawCalls << " draw calls in " << frame.stats.views << " views; CPU "
-              << frame.stats.cpuMs << " ms (culling " << frame.stats.cullMs << " ms), GPU " << frame.stats.gpuMs
-              << " ms\n";
+              << frame.stats.drawCalls << " draw calls in " << frame.stats.views << " views; CPU " << frame.stats.cpuMs
+              << " ms (culling " << frame.stats.cullMs << " ms), GPU " << frame.stats.gpuMs << " ms\n";
     return 0;
 }
 

@@ -64,7 +64,8 @@ struct Output {
 // One tracker read at a fixed rate: poll, record, filter, print.
 class TrackLoop {
 public:
-    TrackLoop(input::TrackerSource& source, const input::PipelineConfig& config, input::Recorder* recorder, std::FILE* out)
+    TrackLoop(input::TrackerSource& source, const input::PipelineConfig& config, input::Recorder* recorder,
+              std::FILE* out)
         : _source(source), _replay(dynamic_cast<input::ReplaySource*>(&source)), _pipeline(config), _recorder(recorder),
           _out(out) {}
 
@@ -110,8 +111,8 @@ void printSummary(const input::TrackerSource& source, const TrackLoop& loop) {
     std::cerr << "track: " << source.describe() << ": " << loop.rows << " samples, " << loop.untracked
               << " without head tracking";
     if (source.isLive())
-        std::cerr << "; packets " << s.packets << ", accepted " << s.accepted << ", dropped " << s.dropped() << " (malformed "
-                  << s.malformed << ", non-finite " << s.nonFinite << ", foreign " << s.foreign
+        std::cerr << "; packets " << s.packets << ", accepted " << s.accepted << ", dropped " << s.dropped()
+                  << " (malformed " << s.malformed << ", non-finite " << s.nonFinite << ", foreign " << s.foreign
                   << ", outside the tracking volume " << s.outside << ")";
     std::cerr << "\n";
 }

@@ -71,7 +71,8 @@ int runWalls(const std::vector<std::string>& words) {
     const std::filesystem::path out = args.require("out");
 
     const double split = args.number("split", options.minCellSize / 2.0, 0.0, 1e6);
-    if (split > 0.0 && split < 0.1) throw Error("--split: expected 0 (no cutting) or at least 0.1 metres, got " + std::to_string(split));
+    if (split > 0.0 && split < 0.1)
+        throw Error("--split: expected 0 (no cutting) or at least 0.1 metres, got " + std::to_string(split));
 
     scenes::SceneDescription base;
     scenes::Scene scene = scenes::loadSceneFile(path, &base);
@@ -100,9 +101,10 @@ int runWalls(const std::vector<std::string>& words) {
             if (models > 0) {
                 const std::size_t before = scene.objects.size();
                 scene = scenes::loadScene(base);
-                std::printf("split: %d content object(s) wider than %.1f m hold %.0f %% of the content triangles; "
-                            "models cut into chunks of %.2f m: %zu objects -> %zu (\"splitMetres\" in the proposal)\n",
-                            widest, 2.0 * options.minCellSize, 100.0 * wide / all, split, before, scene.objects.size());
+                std::printf(
+                    "split: %d content object(s) wider than %.1f m hold %.0f %% of the content triangles; "
+                    "models cut into chunks of %.2f m: %zu objects -> %zu (\"splitMetres\" in the proposal)\n",
+                    widest, 2.0 * options.minCellSize, 100.0 * wide / all, split, before, scene.objects.size());
             }
         }
     }
@@ -117,11 +119,11 @@ int runWalls(const std::vector<std::string>& words) {
         m.file = std::filesystem::relative(std::filesystem::absolute(base.folder / m.file), outFolder);
     result.description.folder = outFolder;
     if (args.has("keep-paths")) {
-        if (base.walkPath.empty())
-            throw Error("walls: --keep-paths: expected a walkPath in " + path + ", got none");
+        if (base.walkPath.empty()) throw Error("walls: --keep-paths: expected a walkPath in " + path + ", got none");
         result.description.walkPath = base.walkPath;
         result.description.wallPath = base.wallPath;
-        scenes::validateSceneDescription(result.description, out.string() + " (--keep-paths: the paths of " + path + ")");
+        scenes::validateSceneDescription(result.description,
+                                         out.string() + " (--keep-paths: the paths of " + path + ")");
     }
 
     std::printf("floor y %.3f m, ceiling y %.3f m, walkable x [%.2f, %.2f] z [%.2f, %.2f] m, %zu structure objects\n",

@@ -20,15 +20,20 @@ const Command kCommands[] = {
     {"frustum", "print every screen's and eye's off-axis view and projection", kFrustumUsage, runFrustum},
     {"track", "read a head tracker and print calibrated, filtered, predicted head poses", kTrackUsage, runTrack},
     {"bench", "measure error against run time; --stability: the numerical stability report", kBenchUsage, runBench},
-    {"generate", "write a generated plant or house (.glb + scene.json) deterministically from a seed", kGenerateUsage, runGenerate},
+    {"generate", "write a generated plant or house (.glb + scene.json) deterministically from a seed", kGenerateUsage,
+     runGenerate},
     {"plan", "plan the zones and textures of every virtual wall (summary, JSON, PNG diagram)", kPlanUsage, runPlan},
-    {"walls", "propose cells and virtual walls for a model nobody prepared (scene.json, diagram)", kWallsUsage, runWalls},
+    {"walls", "propose cells and virtual walls for a model nobody prepared (scene.json, diagram)", kWallsUsage,
+     runWalls},
 #ifdef CAVEWALL_HAVE_GL
-    {"render", "render one frame of a scene to PNG files (one per screen and eye, plus a fold-out)", kRenderUsage, runRender},
+    {"render", "render one frame of a scene to PNG files (one per screen and eye, plus a fold-out)", kRenderUsage,
+     runRender},
     {"demo", "walk cave4 through the generated plant with and without virtual walls (report.md)", kDemoUsage, runDemo},
     {"run", "walk through a scene with textured virtual walls: frames.csv, walls.csv, images", kRunUsage, runRun},
-    {"draw-bench", "time the draw path alone on osgviewer's home view (culling on and off)", kDrawBenchUsage, runDrawBench},
-    {"bake", "bake the textures of every virtual wall into the cache (tiled MIP-mapped files + manifest)", kBakeUsage, runBake},
+    {"draw-bench", "time the draw path alone on osgviewer's home view (culling on and off)", kDrawBenchUsage,
+     runDrawBench},
+    {"bake", "bake the textures of every virtual wall into the cache (tiled MIP-mapped files + manifest)", kBakeUsage,
+     runBake},
 #endif
 };
 
@@ -36,7 +41,9 @@ void printHelp() {
     std::cout << "usage: cavewall <command> [options]\n"
                  "       cavewall <command> --help\n"
                  "       cavewall --version\n\ncommands:\n";
-    for (const Command& c : kCommands) std::cout << "  " << c.name << std::string(std::strlen(c.name) < 11 ? 11 - std::strlen(c.name) : 1, ' ') << c.summary << "\n";
+    for (const Command& c : kCommands)
+        std::cout << "  " << c.name << std::string(std::strlen(c.name) < 11 ? 11 - std::strlen(c.name) : 1, ' ')
+                  << c.summary << "\n";
 }
 
 int dispatch(int argc, char** argv) {

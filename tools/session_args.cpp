@@ -111,17 +111,56 @@ Args sessionArgs(const std::vector<std::string>& words) {
 }
 
 std::vector<std::string_view> sessionFlags() {
-    return {"display", "tracker", "frames", "nav", "pace", "route", "start", "headless", "window", "transition",
-            "no-walls", "no-textures", "alpha", "min-zone", "ppd", "save-frames", "save-window", "record", "cache",
-            "budget", "geometry-budget", "max-res", "sync-paging", "out", "cluster", "cluster-timeout", "lod",
-            "triangle-budget", "frame-budget-ms", "lod-max", "walls", "hierarchy", "hierarchy-divisions",
-            "hierarchy-res", "hierarchy-fade", "clusters", "cluster-divisions", "cluster-res", "cluster-fade",
-            "bake-on-demand", "cache-budget", "bake-interleave", "bake-nice", "texture-format",
+    return {"display",
+            "tracker",
+            "frames",
+            "nav",
+            "pace",
+            "route",
+            "start",
+            "headless",
+            "window",
+            "transition",
+            "no-walls",
+            "no-textures",
+            "alpha",
+            "min-zone",
+            "ppd",
+            "save-frames",
+            "save-window",
+            "record",
+            "cache",
+            "budget",
+            "geometry-budget",
+            "max-res",
+            "sync-paging",
+            "out",
+            "cluster",
+            "cluster-timeout",
+            "lod",
+            "triangle-budget",
+            "frame-budget-ms",
+            "lod-max",
+            "walls",
+            "hierarchy",
+            "hierarchy-divisions",
+            "hierarchy-res",
+            "hierarchy-fade",
+            "clusters",
+            "cluster-divisions",
+            "cluster-res",
+            "cluster-fade",
+            "bake-on-demand",
+            "cache-budget",
+            "bake-interleave",
+            "bake-nice",
+            "texture-format",
             "resolution"};
 }
 
 app::RunOptions parseSessionOptions(const Args& args, app::RunOptions o) {
-    if (args.has("headless") && args.has("window")) throw Error("--headless and --window: expected one of them, got both");
+    if (args.has("headless") && args.has("window"))
+        throw Error("--headless and --window: expected one of them, got both");
     if (auto display = args.get("display")) o.display = config::loadDisplayConfig(*display);
     if (const std::optional<glm::ivec2> pixels = args.size("resolution", 1, 16384))
         for (config::Screen& screen : o.display.screens) screen.resolution = *pixels;
@@ -147,7 +186,9 @@ int reportSession(std::string_view command, const app::RunOptions& o, const app:
     if (s.rank != 0) return 0;
     const std::string c(command);
     std::cout << c << ": " << s.frameMs.size() << " frames on " << s.renderer
-              << (!s.walls ? ", geometry only" : o.wallTextures ? ", walls" : ", the control (the walls' cells, no textures)")
+              << (!s.walls         ? ", geometry only"
+                  : o.wallTextures ? ", walls"
+                                   : ", the control (the walls' cells, no textures)")
               << "; median frame " << display::median(s.frameMs) << " ms; worst error " << s.worstErrorDeg << " deg ("
               << s.worstErrorPx << " px); page-ins " << s.pageIns << ", misses " << s.misses << "\n"
               << c << ": first frame after " << seconds(s.firstFrameSeconds) << " s (scene loaded at "

@@ -38,13 +38,13 @@ void setCell(std::vector<bool>& cells, int cell, bool value) {
 
 // Per wall, across frames.
 struct FramePlanner::Memory {
-    int lastSide = 0;                      // the side and textures drawn last; reused only
-    TextureSet lastTextures;               // from the same side
-    Look look = Look::Nothing;             // Transition::Warp: what it drew last
+    int lastSide = 0;           // the side and textures drawn last; reused only
+    TextureSet lastTextures;    // from the same side
+    Look look = Look::Nothing;  // Transition::Warp: what it drew last
     std::optional<glm::dvec3> lastSamplingPoint;
     MorphPhase phase = MorphPhase::Idle;
-    double start = 0.0;                    // FrameInput::time of the switch
-    glm::dvec3 samplingPoint{0.0};         // the texture's end of the morph
+    double start = 0.0;             // FrameInput::time of the switch
+    glm::dvec3 samplingPoint{0.0};  // the texture's end of the morph
 };
 
 // What the warp does to one wall this frame.
@@ -131,7 +131,8 @@ TextureRequests FramePlanner::requests(const FrameInput& input, const std::vecto
         const int sideIndex = static_cast<int>(side - sides.begin());
         for (int dx = -1; dx <= 1; ++dx)
             for (int dz = -1; dz <= 1; ++dz)
-                for (const auto& [id, weight] : _selector->blendAt(sideIndex, eye + kNeighbourMetres * glm::dvec2(dx, dz)).textures)
+                for (const auto& [id, weight] :
+                     _selector->blendAt(sideIndex, eye + kNeighbourMetres * glm::dvec2(dx, dz)).textures)
                     r.soon.push_back(id);
     }
     for (const walls::WallBlend& b : _seen.beyond)
@@ -215,8 +216,10 @@ FramePlan FramePlanner::plan(const Residency& resident, const Residency& cellRes
     // Geometry paging: a cell that only walls kept as textures wanted is not drawn.
     if (_cellResident)
         for (std::size_t c = 0; c < p.geometryCells.size(); ++c) {
-            if (p.geometryCells[c] && !_cellNeeded[c] && !_cellResident(static_cast<int>(c))) p.geometryCells[c] = false;
-            if (p.geometryCells[c] && !_cellResident(static_cast<int>(c))) p.geometryForced.push_back(static_cast<int>(c));
+            if (p.geometryCells[c] && !_cellNeeded[c] && !_cellResident(static_cast<int>(c)))
+                p.geometryCells[c] = false;
+            if (p.geometryCells[c] && !_cellResident(static_cast<int>(c)))
+                p.geometryForced.push_back(static_cast<int>(c));
         }
     // A morphing wall's cell behind is drawn by the warp pass only.
     for (const walls::WarpWall& w : p.warpWalls) setCell(p.geometryCells, w.cell, false);
@@ -266,7 +269,8 @@ void FramePlanner::keepTexturesFor(const walls::WallBlend& b, const Residency& r
         kept = state.textures;
     } else {
         const Memory& m = _memory[b.wall];
-        if (m.lastSide == b.side && allResident(m.lastTextures) && withinBound(m.lastTextures, _walls->plan.walls[b.wall]))
+        if (m.lastSide == b.side && allResident(m.lastTextures) &&
+            withinBound(m.lastTextures, _walls->plan.walls[b.wall]))
             kept = m.lastTextures;
     }
     double total = 0.0;
@@ -305,8 +309,7 @@ bool FramePlanner::withinBound(const TextureSet& set,
     const double alpha = glm::radians(_walls->plan.alphaDeg) + walls::kErrorTolerance;
     for (const auto& [id, weight] : set) {
         auto it = _textures.find(id);
-        if (it == _textures.end() || walls::textureErrorAt(_walls->plan, *it->second, _eye) > alpha)
-            return false;
+        if (it == _textures.end() || walls::textureErrorAt(_walls->plan, *it->second, _eye) > alpha) return false;
     }
     return true;
 }
@@ -339,8 +342,8 @@ FramePlanner::WarpOutcome FramePlanner::warpWall(const walls::WallBlend& b, cons
         m.phase, s};
     if (m.phase != MorphPhase::Idle) {
         // The viewpoint moves from the sampling point to the eye (to geometry) or back.
-        out.warp.samplingPoint = m.phase == MorphPhase::ToGeometry ? glm::mix(m.samplingPoint, _eye, s)
-                                                                   : glm::mix(_eye, m.samplingPoint, s);
+        out.warp.samplingPoint =
+            m.phase == MorphPhase::ToGeometry ? glm::mix(m.samplingPoint, _eye, s) : glm::mix(_eye, m.samplingPoint, s);
         out.warp.cell = planned.cells[1 - b.side];
     } else if (!samplingPoint || state.geometryWeight > 0.0) {
         return out;
@@ -421,16 +424,18 @@ void FramePlanner::measureError(FramePlan& p) const {
     }
     p.maxErrorDeg = glm::degrees(worst);
     for (int screen : _screens)
-        p.maxErrorPixels = std::max(
-            p.maxErrorPixels, worst * display::maxPixelsPerRadian(display::viewScreen(
-                                          _display.quad(screen), _input.head.position, _display.screens()[screen].resolution)));
+        p.maxErrorPixels =
+            std::max(p.maxErrorPixels,
+                     worst * display::maxPixelsPerRadian(display::viewScreen(
+                                 _display.quad(screen), _input.head.position, _display.screens()[screen].resolution)));
 }
 
 std::vector<int> objectsOfCells(const scenes::Scene& scene, const std::vector<bool>& cells) {
     std::vector<int> out;
     for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
         const scenes::Object& o = scene.objects[i];
-        if (o.role == scenes::Role::Structure || o.cell < 0 || o.cell >= static_cast<int>(cells.size()) || cells[o.cell])
+        if (o.role == scenes::Role::Structure || o.cell < 0 || o.cell >= static_cast<int>(cells.size()) ||
+            cells[o.cell])
             out.push_back(i);
     }
     return out;

@@ -78,8 +78,8 @@ inline constexpr double kLookaheadMetres = 12.0;
 using Residency = std::function<bool(int id)>;
 
 struct TextureRequests {
-    std::vector<int> now;    // drawn this frame (weight > 0), the cell's and beyond walls'
-    std::vector<int> soon;   // of the neighbouring zones (may repeat ids of `now`)
+    std::vector<int> now;   // drawn this frame (weight > 0), the cell's and beyond walls'
+    std::vector<int> soon;  // of the neighbouring zones (may repeat ids of `now`)
     // Geometry paging by cell (walls/geometry_pager.h): the cells the selection draws as
     // geometry now; soon, those it draws as geometry 1.5 m away in each of 8 directions and
     // those behind every wall it selects, in view or not (a turn of the head shows them).
@@ -88,8 +88,8 @@ struct TextureRequests {
 
 // One wall quad to draw with its textures (walls/gl/wall_pass.h).
 struct WallDrawPlan {
-    int wall = 0;                                  // index into Plan::walls
-    display::ScreenQuad quad;                      // world, as seen from the viewer's side (quadSeenFrom)
+    int wall = 0;              // index into Plan::walls
+    display::ScreenQuad quad;  // world, as seen from the viewer's side (quadSeenFrom)
     // (texture id, weight), largest weight first, at most kMaxWallTextures (more are never
     // planned: the kept ones would take the dropped weight); sum = 1 - geometryWeight.
     std::vector<std::pair<int, double>> textures;
@@ -101,24 +101,24 @@ enum class MorphPhase { Idle, ToGeometry, ToTexture };
 struct WallMorph {
     int wall = 0;
     MorphPhase phase = MorphPhase::Idle;
-    double share = 0.0;                            // elapsed share s in [0, 1)
+    double share = 0.0;  // elapsed share s in [0, 1)
 };
 
 struct FramePlan {
-    glm::dvec3 eyeWorld{0.0};                      // cyclopean eye in the world
-    int cell = -1, zone = -1;                      // as FrameResult
-    std::vector<bool> geometryCells;               // per description cell: drawn as geometry
-    std::vector<int> objects;                      // Scene::objects drawn by the scene renderer
+    glm::dvec3 eyeWorld{0.0};         // cyclopean eye in the world
+    int cell = -1, zone = -1;         // as FrameResult
+    std::vector<bool> geometryCells;  // per description cell: drawn as geometry
+    std::vector<int> objects;         // Scene::objects drawn by the scene renderer
     std::vector<WallDrawPlan> wallDraws;
-    std::vector<walls::WarpWall> warpWalls;               // Transition::Warp: walls drawn warped
-    std::vector<WallMorph> morphs;                 // walls in a warp-morph this frame
-    std::vector<WallState> walls;                  // every wall row (walls.csv), errors set
+    std::vector<walls::WarpWall> warpWalls;  // Transition::Warp: walls drawn warped
+    std::vector<WallMorph> morphs;           // walls in a warp-morph this frame
+    std::vector<WallState> walls;            // every wall row (walls.csv), errors set
     double maxErrorDeg = 0.0, maxErrorPixels = 0.0;
-    int texturesOverAlpha = 0;                     // as FrameResult
+    int texturesOverAlpha = 0;  // as FrameResult
     int warpFallbacks = 0;
-    int geometryMisses = 0;                        // walls kept as textures: their cell behind was not resident
-    int geometryFallbacks = 0;                     // walls drawn as geometry for want of a resident texture (step 3)
-    std::vector<int> geometryForced;               // cells drawn as geometry though not resident (step 4)
+    int geometryMisses = 0;           // walls kept as textures: their cell behind was not resident
+    int geometryFallbacks = 0;        // walls drawn as geometry for want of a resident texture (step 3)
+    std::vector<int> geometryForced;  // cells drawn as geometry though not resident (step 4)
 };
 
 // The objects drawn as geometry when `cells` (per cell index, true = drawn) are: all structure,
@@ -175,20 +175,20 @@ private:
     double _morphSeconds;
     std::vector<int> _screens;
     std::optional<walls::FrameSelector> _selector;
-    std::map<int, const walls::Texture*> _textures;       // by id
-    std::vector<Memory> _memory;                   // per wall
+    std::map<int, const walls::Texture*> _textures;  // by id
+    std::vector<Memory> _memory;                     // per wall
     // The frame between requests() and plan().
     FrameInput _input;
     std::vector<display::ScreenView> _views;
     glm::dvec3 _eye{0.0};
-    glm::dvec3 _lastEye{0.0};                      // the last requests()' eye and time: the velocity
+    glm::dvec3 _lastEye{0.0};  // the last requests()' eye and time: the velocity
     double _lastTime = 0.0;
     bool _hasLast = false;
-    walls::FrameSelection _selection, _seen;              // all, and those in view
+    walls::FrameSelection _selection, _seen;  // all, and those in view
     std::vector<WallState> _outOfView;
-    bool _planned = true;                          // plan() was called for this frame
-    Residency _cellResident;                       // during plan(): geometry paging, or empty
-    std::vector<bool> _cellNeeded;                 // during plan(): cells some wall draws as geometry
+    bool _planned = true;           // plan() was called for this frame
+    Residency _cellResident;        // during plan(): geometry paging, or empty
+    std::vector<bool> _cellNeeded;  // during plan(): cells some wall draws as geometry
 };
 
 }  // namespace cavewall::walkthrough

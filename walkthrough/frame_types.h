@@ -33,8 +33,8 @@ struct HandCursorPose {
 
 // Everything about a walkthrough that is not GL (gl::WalkthroughOptions adds the renderer's).
 struct WalkthroughSettings {
-    double textureBudgetMB = 256.0;          // GPU budget of resident wall textures, MB, > 0
-    double uploadMBPerFrame = 8.0;           // texture bytes uploaded per frame at most, MB
+    double textureBudgetMB = 256.0;  // GPU budget of resident wall textures, MB, > 0
+    double uploadMBPerFrame = 8.0;   // texture bytes uploaded per frame at most, MB
     // Wait for the pager to decode and upload every requested texture before drawing, so the
     // frames depend only on the input (tests, replays, golden images). Off: a frame never
     // waits, missing textures fall back (walkthrough/frame_planner.h).
@@ -46,7 +46,7 @@ struct WalkthroughSettings {
     // scenes::readMipLevels. Tests inject slow or failing decoders here.
     walls::TexturePager::Decoder decoder;
     Transition transition = Transition::Blend;  // Warp: structure behind textured walls warped
-    double morphSeconds = 0.5;               // Warp: duration of a warp-morph, seconds, > 0
+    double morphSeconds = 0.5;                  // Warp: duration of a warp-morph, seconds, > 0
     // Levels of detail (render.lodPixels > 0): the geometry of every frame is drawn at the
     // levels SceneRenderer::chooseLods picks for render.lodPixels, over all screens and eyes
     // at once. triangleBudget > 0 caps the triangles the scene renderer submits per frame (all
@@ -64,12 +64,12 @@ struct WalkthroughSettings {
 };
 
 struct FrameInput {
-    long frame = 0;                          // frame number (for the pager's recency)
-    double time = 0.0;                       // seconds
-    display::HeadPose head;                  // cave frame
+    long frame = 0;          // frame number (for the pager's recency)
+    double time = 0.0;       // seconds
+    display::HeadPose head;  // cave frame
     glm::dmat4 worldFromCave{1.0};
-    std::optional<HandCursorPose> hand;      // drawn when given
-    bool readImages = false;                 // read every rendered image back into FrameResult
+    std::optional<HandCursorPose> hand;  // drawn when given
+    bool readImages = false;             // read every rendered image back into FrameResult
     // This frame's triangle budget (with levels of detail), > 0 overrides
     // WalkthroughSettings::triangleBudget: a frame-time controller (display/frame_budget.h)
     // sets it frame by frame, the same on every cluster rank.
@@ -81,41 +81,41 @@ struct FrameInput {
 
 // One wall's state in a frame (walls.csv).
 struct WallState {
-    int wall = 0;                            // index into Plan::walls
+    int wall = 0;                                  // index into Plan::walls
     std::vector<std::pair<int, double>> textures;  // drawn (texture id, weight)
-    double geometryWeight = 0.0;             // weight of the cell behind as geometry
-    bool fallback = false;                   // wanted textures missing: previous or geometry drawn
-    bool beyond = false;                     // a far wall of a neighbour drawn as geometry
-                                             // (FrameSelection::beyond), planned like the others
-    double errorDeg = 0.0;                   // exact worst angular error of its drawn textures
-    int texturesOverAlpha = 0;               // of its drawn textures, those whose exact error
-                                             // exceeds the plan's alpha (0 when the bound holds)
+    double geometryWeight = 0.0;                   // weight of the cell behind as geometry
+    bool fallback = false;                         // wanted textures missing: previous or geometry drawn
+    bool beyond = false;                           // a far wall of a neighbour drawn as geometry
+                                                   // (FrameSelection::beyond), planned like the others
+    double errorDeg = 0.0;                         // exact worst angular error of its drawn textures
+    int texturesOverAlpha = 0;                     // of its drawn textures, those whose exact error
+                                                   // exceeds the plan's alpha (0 when the bound holds)
 };
 
 struct FrameResult {
-    glm::dvec3 eyeWorld{0.0};                // cyclopean eye in the world
-    int cell = -1, zone = -1;                // viewer's cell (also without walls); zone of the
-                                             // first wall with one (-1 without walls)
-    double frameMs = 0.0;                    // renderFrame wall-clock time, until the GPU finished
-    double cpuMs = 0.0;                      // CPU time until every command was submitted
-    double gpuMs = 0.0;                      // GL_TIME_ELAPSED of the frame's commands
-    display::FrameStats stats;               // triangles and draw calls, all views
+    glm::dvec3 eyeWorld{0.0};   // cyclopean eye in the world
+    int cell = -1, zone = -1;   // viewer's cell (also without walls); zone of the
+                                // first wall with one (-1 without walls)
+    double frameMs = 0.0;       // renderFrame wall-clock time, until the GPU finished
+    double cpuMs = 0.0;         // CPU time until every command was submitted
+    double gpuMs = 0.0;         // GL_TIME_ELAPSED of the frame's commands
+    display::FrameStats stats;  // triangles and draw calls, all views
     walls::PagerStats pager;
-    std::size_t uploadedBytes = 0;           // wall texture bytes (all MIP levels) uploaded this
-                                             // frame, at most WalkthroughSettings::uploadMBPerFrame
-                                             // unless one texture alone is larger
-    walls::GeometryPagerStats geometry;             // geometry paging by cell (zeros when off)
-    int geometryMisses = 0;                  // walls kept as textures: cell behind not resident
-    int geometryForced = 0;                  // cells drawn though not resident (loaded at once: a stall)
+    std::size_t uploadedBytes = 0;       // wall texture bytes (all MIP levels) uploaded this
+                                         // frame, at most WalkthroughSettings::uploadMBPerFrame
+                                         // unless one texture alone is larger
+    walls::GeometryPagerStats geometry;  // geometry paging by cell (zeros when off)
+    int geometryMisses = 0;              // walls kept as textures: cell behind not resident
+    int geometryForced = 0;              // cells drawn though not resident (loaded at once: a stall)
     // Walls drawn as geometry this frame because neither their wanted textures nor the previous
     // ones (within alpha) were resident (FramePlan::geometryFallbacks).
     int geometryFallbacks = 0;
     // Baking on demand (WalkthroughSettings via gl::WalkthroughOptions::baker): textures baked
     // by this run and handed to the pager, so far and this frame; textures still to bake.
     int texturesBaked = 0, texturesBakedNow = 0, texturesToBake = 0;
-    bool bakerBusy = false;                  // a background bake ran during some of the frame
-    double maxErrorDeg = 0.0;                // max over drawn textures (0 without textures)
-    int texturesOverAlpha = 0;               // sum of WallState::texturesOverAlpha (must be 0)
+    bool bakerBusy = false;     // a background bake ran during some of the frame
+    double maxErrorDeg = 0.0;   // max over drawn textures (0 without textures)
+    int texturesOverAlpha = 0;  // sum of WallState::texturesOverAlpha (must be 0)
     // maxErrorDeg converted to pixels on the screens this instance renders: error (rad) times
     // the largest pixels per radian of each screen from the eye (display/pixel_scale.h).
     double maxErrorPixels = 0.0;
@@ -124,18 +124,18 @@ struct FrameResult {
     // in pixels, and whether even the coarsest levels exceeded the budget. 0 without levels.
     double lodTolerancePx = 0.0, lodErrorPx = 0.0;
     bool lodOverBudget = false;
-    std::size_t geometryTriangles = 0;       // of stats.triangles, what the scene renderer submitted
-                                             // (what triangleBudget caps)
-    int warpFallbacks = 0;                   // Transition::Warp: walls drawn as geometry because
-                                             // their warp was ill-conditioned (eye near the plane)
+    std::size_t geometryTriangles = 0;  // of stats.triangles, what the scene renderer submitted
+                                        // (what triangleBudget caps)
+    int warpFallbacks = 0;              // Transition::Warp: walls drawn as geometry because
+                                        // their warp was ill-conditioned (eye near the plane)
     std::vector<WallState> walls;
     // Clusters (gl::ClusterOptions): nodes drawn by kind, the selection's predicted cost and
     // the budget it was held to, milliseconds. Zeros without clusters.
     int clusterObjects = 0, clusterTextured = 0, clusterAverage = 0;
-    int clusterFades = 0;                    // cross-fades under way (hierarchy/cluster_fades.h)
+    int clusterFades = 0;  // cross-fades under way (hierarchy/cluster_fades.h)
     double clusterPredictedMs = 0.0, clusterBudgetMs = 0.0;
-    double clusterSelectedMs = 0.0;          // of clusterPredictedMs, the selection's (no fades)
-    double clusterCheapestMs = 0.0;          // the selection at a budget of 0 (the floor's part)
+    double clusterSelectedMs = 0.0;  // of clusterPredictedMs, the selection's (no fades)
+    double clusterCheapestMs = 0.0;  // the selection at a budget of 0 (the floor's part)
     // Filled by the caller's frame-time controller (hierarchy/cluster_budget.h), zeros without one:
     // its target, the frame time it predicted for this frame (clusterPredictedMs plus the
     // median of the earlier frames' rest) and the floor (the cheapest selection's frame time).

@@ -44,9 +44,7 @@ glm::dvec3 nearestOnRect(const Rect& r, glm::dvec3 p) {
     return rectPoint(r, std::clamp(glm::dot(p, r.right), 0.0, r.width), std::clamp(glm::dot(p, r.up), 0.0, r.height));
 }
 
-double angleBetween(glm::dvec3 a, glm::dvec3 b) {
-    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
-}
+double angleBetween(glm::dvec3 a, glm::dvec3 b) { return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)); }
 
 // The angle segment [a, b] subtends at q.
 double subtended(glm::dvec3 q, glm::dvec3 a, glm::dvec3 b) { return angleBetween(a - q, b - q); }
@@ -100,7 +98,10 @@ Witness decide(const Rect& r, glm::dvec3 a, glm::dvec3 b, double t) {
     const double rho = t >= kHalfPi ? 0.0 : len / (2.0 * std::tan(t));
     const double eps = 1e-12 * (radius + glm::length(mid) + r.width + r.height);
     const HalfTable& table = halfTable();
-    struct Interval { double cs, sn; int level; };  // cos and sin of the centre; half = table.half[level]
+    struct Interval {
+        double cs, sn;
+        int level;
+    };  // cos and sin of the centre; half = table.half[level]
     // Depth first: each level down adds one entry net, so kStart + kLevels entries suffice (a
     // fixed array: the planner calls this millions of times).
     std::array<Interval, kStart + kLevels> stack;
@@ -152,7 +153,8 @@ double sampledMaximum(const Rect& r, glm::dvec3 a, glm::dvec3 b) {
         bool moved = false;
         const double ds[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
         for (const auto& d : ds) {
-            const double s = std::clamp(bs + d[0] * step, 0.0, r.width), t = std::clamp(bt + d[1] * step, 0.0, r.height);
+            const double s = std::clamp(bs + d[0] * step, 0.0, r.width),
+                         t = std::clamp(bt + d[1] * step, 0.0, r.height);
             const double v = subtended(rectPoint(r, s, t), a, b);
             if (v > best) {
                 best = v;
@@ -169,7 +171,9 @@ double sampledMaximum(const Rect& r, glm::dvec3 a, glm::dvec3 b) {
 // First-order branch and bound over the rectangle, used only when the error reaches 90°,
 // where the circle characterisation no longer applies. Returns an upper bound (<= pi).
 double boundAbove90(const Rect& r, glm::dvec3 a, glm::dvec3 b, double lower) {
-    struct Cell { double s, t, hs, ht, bound; };
+    struct Cell {
+        double s, t, hs, ht, bound;
+    };
     auto bound = [&](double s, double t, double hs, double ht) {
         const glm::dvec3 q = rectPoint(r, s, t);
         const double reach = std::hypot(hs, ht);
@@ -200,8 +204,7 @@ double boundAbove90(const Rect& r, glm::dvec3 a, glm::dvec3 b, double lower) {
 double maxSubtended(const Rect& r, glm::dvec3 a, glm::dvec3 b) {
     if (glm::length(b - a) <= 1e-300) return 0.0;
     double lower = sampledMaximum(r, a, b);
-    if (lower >= kHalfPi || decide(r, a, b, kHalfPi).decision != Decision::Below)
-        return boundAbove90(r, a, b, lower);
+    if (lower >= kHalfPi || decide(r, a, b, kHalfPi).decision != Decision::Below) return boundAbove90(r, a, b, lower);
     double upper = kHalfPi;
     // Usually the refined sample is the maximum and one decision proves it.
     const double first = std::min(upper, lower + kErrorTolerance);
@@ -209,8 +212,10 @@ double maxSubtended(const Rect& r, glm::dvec3 a, glm::dvec3 b) {
     while (upper - lower > kErrorTolerance) {
         const double t = 0.5 * (lower + upper);
         const Witness w = decide(r, a, b, t);
-        if (w.decision == Decision::Below) upper = t;
-        else lower = std::max(t, w.decision == Decision::Above ? subtended(w.point, a, b) : t);
+        if (w.decision == Decision::Below)
+            upper = t;
+        else
+            lower = std::max(t, w.decision == Decision::Above ? subtended(w.point, a, b) : t);
     }
     return upper;
 }
@@ -245,8 +250,8 @@ double maxAngularError(glm::dvec3 eye, glm::dvec3 samplingPoint, const ScreenQua
 namespace {
 
 // errorWithin with the wall's rectangle r = rectOf(wall) computed by the caller.
-bool errorWithinRect(const Rect& r, glm::dvec3 eye, glm::dvec3 samplingPoint, const ScreenQuad& wall, double depthBehind,
-                     double alpha) {
+bool errorWithinRect(const Rect& r, glm::dvec3 eye, glm::dvec3 samplingPoint, const ScreenQuad& wall,
+                     double depthBehind, double alpha) {
     if (!finite(eye) || !finite(samplingPoint) || !(alpha > 0) || std::isnan(depthBehind)) return false;
     if (depthBehind <= 0) return true;
     const glm::dvec3 e = eye - wall.lowerLeft, s = samplingPoint - wall.lowerLeft;
@@ -255,8 +260,7 @@ bool errorWithinRect(const Rect& r, glm::dvec3 eye, glm::dvec3 samplingPoint, co
 
 }  // namespace
 
-bool errorWithin(glm::dvec3 eye, glm::dvec3 samplingPoint, const ScreenQuad& wall, double depthBehind,
-                 double alpha) {
+bool errorWithin(glm::dvec3 eye, glm::dvec3 samplingPoint, const ScreenQuad& wall, double depthBehind, double alpha) {
     return errorWithinRect(rectOf(wall), eye, samplingPoint, wall, depthBehind, alpha);
 }
 
@@ -276,7 +280,10 @@ double refineFiniteDepth(const ZoneVolume& zone, glm::dvec3 s, const ScreenQuad&
     const double hs = std::abs(glm::dot(s - wall.lowerLeft, b.normal));
     if (hs < 1e-12) return upper;
     const double slope = depth / hs * farthest;
-    struct Box { glm::dvec3 lo, hi; double bound; };
+    struct Box {
+        glm::dvec3 lo, hi;
+        double bound;
+    };
     double lower = 0.0;
     // Bound over box ∩ zone from one eye inside it; nullopt when the box misses the zone.
     auto evaluate = [&](glm::dvec3 lo, glm::dvec3 hi) -> std::optional<Box> {
@@ -284,7 +291,9 @@ double refineFiniteDepth(const ZoneVolume& zone, glm::dvec3 s, const ScreenQuad&
         if (part.empty()) return std::nullopt;
         double h = kInfiniteDepth;
         for (int i = 0; i < 8; ++i)
-            h = std::min(h, glm::dot(glm::dvec3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z) - wall.lowerLeft, b.normal));
+            h = std::min(
+                h, glm::dot(glm::dvec3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z) - wall.lowerLeft,
+                            b.normal));
         const glm::dvec2 c = centroid(part);
         const double v = maxAngularError({c.x, 0.5 * (lo.y + hi.y), c.y}, s, wall, depth);
         lower = std::max(lower, v);
@@ -336,7 +345,10 @@ bool zoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const ScreenQu
     // The answer is the conjunction over the eyes, so their order does not change it; eyes far
     // from the sampling point for their distance to the wall usually fail first, and a zone
     // that fails (half of the planner's bisection probes) then costs one decision, not many.
-    struct Eye { glm::dvec3 p; double score; };
+    struct Eye {
+        glm::dvec3 p;
+        double score;
+    };
     std::vector<Eye> eyes;
     eyes.reserve(2 * zone.floor.size());
     const Rect r = rectOf(wall);

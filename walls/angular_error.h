@@ -49,8 +49,7 @@ double maxAngularError(glm::dvec3 eye, glm::dvec3 samplingPoint, const ScreenQua
 
 // True when maxAngularError(eye, ...) <= `alpha` is proven (alpha in (0, 90°]). One
 // one-dimensional search; the planner's predicate. False when the bound cannot be proven.
-bool errorWithin(glm::dvec3 eye, glm::dvec3 samplingPoint, const ScreenQuad& wall, double depthBehind,
-                 double alpha);
+bool errorWithin(glm::dvec3 eye, glm::dvec3 samplingPoint, const ScreenQuad& wall, double depthBehind, double alpha);
 
 // A zone: a convex floor polygon (x, z) times an absolute head height range [y0, y1].
 struct ZoneVolume {

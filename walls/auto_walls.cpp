@@ -33,8 +33,9 @@ Shape shapeOf(const scenes::Bounds& b) {
     return shape;
 }
 
-
-double overlap1d(double a0, double a1, double b0, double b1) { return std::max(0.0, std::min(a1, b1) - std::max(a0, b0)); }
+double overlap1d(double a0, double a1, double b0, double b1) {
+    return std::max(0.0, std::min(a1, b1) - std::max(a0, b0));
+}
 
 // Cuts `count` cells over [lo, hi], each interior cut moved within a quarter cell to where the
 // fewest content boxes straddle it.
@@ -85,9 +86,9 @@ struct Grid {
 
 // A piece of real wall: a thin vertical structure box, as the plane through its middle.
 struct WallPiece {
-    int axis = 0;                // its normal: 0 (x) or 2 (z)
-    double at = 0.0;             // its plane's position along the normal
-    double from = 0.0, to = 0.0; // its extent along the other horizontal axis
+    int axis = 0;                 // its normal: 0 (x) or 2 (z)
+    double at = 0.0;              // its plane's position along the normal
+    double from = 0.0, to = 0.0;  // its extent along the other horizontal axis
     double bottom = 0.0, top = 0.0;
 };
 
@@ -137,7 +138,8 @@ void makeRooms(scenes::SceneDescription& d, const std::vector<WallPiece>& pieces
         for (const auto& [a, b] : gapsIn(from, to, full, kMinDoor)) {
             double top = ceilingY;
             for (const WallPiece* p : onLine)
-                if (p->bottom > floorY + kFloorSlack && overlap1d(p->from, p->to, a, b) > 0.0) top = std::min(top, p->bottom);
+                if (p->bottom > floorY + kFloorSlack && overlap1d(p->from, p->to, a, b) > 0.0)
+                    top = std::min(top, p->bottom);
             const glm::dvec2 pa = axis == 0 ? glm::dvec2(at, a) : glm::dvec2(a, at);
             const glm::dvec2 pb = axis == 0 ? glm::dvec2(at, b) : glm::dvec2(b, at);
             scenes::VirtualWall portal = wallBetween(pa, pb, floorY, top, front);
@@ -214,14 +216,16 @@ scenes::SceneDescription describe(const scenes::SceneDescription& base, const Gr
             const int here = index(i, k);
             if (i + 1 < nx) {
                 const int there = index(i + 1, k);
-                scenes::VirtualWall w = wallBetween({g.xs[i + 1], g.zs[k]}, {g.xs[i + 1], g.zs[k + 1]}, floorY, ceilingY, centre(here));
+                scenes::VirtualWall w =
+                    wallBetween({g.xs[i + 1], g.zs[k]}, {g.xs[i + 1], g.zs[k + 1]}, floorY, ceilingY, centre(here));
                 w.name = d.cells[here].name + "|" + d.cells[there].name;
                 w.cells = {here, there};
                 d.walls.push_back(w);
             }
             if (k + 1 < nz) {
                 const int there = index(i, k + 1);
-                scenes::VirtualWall w = wallBetween({g.xs[i], g.zs[k + 1]}, {g.xs[i + 1], g.zs[k + 1]}, floorY, ceilingY, centre(here));
+                scenes::VirtualWall w =
+                    wallBetween({g.xs[i], g.zs[k + 1]}, {g.xs[i + 1], g.zs[k + 1]}, floorY, ceilingY, centre(here));
                 w.name = d.cells[here].name + "|" + d.cells[there].name;
                 w.cells = {here, there};
                 d.walls.push_back(w);
@@ -230,8 +234,13 @@ scenes::SceneDescription describe(const scenes::SceneDescription& base, const Gr
     // A loop a quarter of the way in from the floor's edges, at eye height.
     const double x0 = g.xs.front(), x1 = g.xs.back(), z0 = g.zs.front(), z1 = g.zs.back();
     const double ix = 0.25 * (x1 - x0), iz = 0.25 * (z1 - z0), y = floorY + eyeHeight;
-    d.walkPath = {{x0 + ix, y, z0 + iz}, {x1 - ix, y, z0 + iz}, {x1 - ix, y, z1 - iz}, {x0 + ix, y, z1 - iz}, {x0 + ix, y, z0 + iz}};
-    const double headLow = floorY + std::max(0.5, eyeHeight - 0.5), headHigh = std::min(ceilingY, floorY + eyeHeight + 0.3);
+    d.walkPath = {{x0 + ix, y, z0 + iz},
+                  {x1 - ix, y, z0 + iz},
+                  {x1 - ix, y, z1 - iz},
+                  {x0 + ix, y, z1 - iz},
+                  {x0 + ix, y, z0 + iz}};
+    const double headLow = floorY + std::max(0.5, eyeHeight - 0.5),
+                 headHigh = std::min(ceilingY, floorY + eyeHeight + 0.3);
     d.headHeightRange = {headLow, std::max(headLow, headHigh)};
     return d;
 }
@@ -302,7 +311,8 @@ AutoWallsCandidate evaluate(const scenes::SceneDescription& d, const std::vector
                 overlap1d(content[o].min.z, content[o].max.z, lo.y, hi.y) > 0.0)
                 triangles += static_cast<double>(contentTriangles[o]);
         int sides = 0;
-        for (const scenes::VirtualWall& w : d.walls) sides += (w.cells[0] == static_cast<int>(i)) + (w.cells[1] == static_cast<int>(i));
+        for (const scenes::VirtualWall& w : d.walls)
+            sides += (w.cells[0] == static_cast<int>(i)) + (w.cells[1] == static_cast<int>(i));
         cellTriangles[i] = triangles;
         cellSides[i] = sides;
         c.meanCellTriangles += share * triangles;
@@ -339,12 +349,12 @@ std::vector<glm::dvec3> costEyes(const std::vector<glm::dvec3>& walkPath, glm::d
 
 // 1.'s findings over the model's objects.
 struct ModelParts {
-    std::vector<std::string> structure;                 // structure objects' names, in object order
-    std::vector<const scenes::Object*> verticalPlanes;  // large vertical structure planes (hall walls)
-    std::vector<WallPiece> pieces;                      // thin vertical structure boxes (5.)
-    std::vector<scenes::Bounds> content;                // every other object's box
-    std::vector<std::size_t> contentTriangles;          // and its triangles
-    scenes::Bounds floorBox;                            // the floor planes'
+    std::vector<std::string> structure;                               // structure objects' names, in object order
+    std::vector<const scenes::Object*> verticalPlanes;                // large vertical structure planes (hall walls)
+    std::vector<WallPiece> pieces;                                    // thin vertical structure boxes (5.)
+    std::vector<scenes::Bounds> content;                              // every other object's box
+    std::vector<std::size_t> contentTriangles;                        // and its triangles
+    scenes::Bounds floorBox;                                          // the floor planes'
     double floorTop = std::numeric_limits<double>::infinity();        // the lowest floor plane's top
     double ceilingBottom = -std::numeric_limits<double>::infinity();  // the highest ceiling's bottom
 };
@@ -352,7 +362,8 @@ struct ModelParts {
 // The description's structure patterns, over all its models.
 std::vector<std::string> structurePatterns(const scenes::SceneDescription& base) {
     std::vector<std::string> patterns;
-    for (const scenes::ModelFile& m : base.models) patterns.insert(patterns.end(), m.structureNodes.begin(), m.structureNodes.end());
+    for (const scenes::ModelFile& m : base.models)
+        patterns.insert(patterns.end(), m.structureNodes.begin(), m.structureNodes.end());
     return patterns;
 }
 
@@ -411,7 +422,8 @@ ModelParts classifyObjects(const scenes::Scene& scene, const std::vector<std::st
         }
         parts.content.push_back(o.worldBounds);
         parts.contentTriangles.push_back(o.mesh >= 0 && o.mesh < static_cast<int>(scene.meshes.size())
-                                             ? scene.meshes[o.mesh].indices.size() / 3 : 0);
+                                             ? scene.meshes[o.mesh].indices.size() / 3
+                                             : 0);
     }
     return parts;
 }
@@ -438,8 +450,10 @@ Rect walkableRect(const ModelParts& parts, const scenes::Bounds& all) {
         const int axis = shapeOf(b).thinAxis == 0 ? 0 : 2;  // the wall's normal axis (x or z)
         const int k = axis == 0 ? 0 : 1;
         const double c = b.centre()[axis];
-        if (c < 0.5 * (lo[k] + hi[k])) lo[k] = std::max(lo[k], b.max[axis]);
-        else hi[k] = std::min(hi[k], b.min[axis]);
+        if (c < 0.5 * (lo[k] + hi[k]))
+            lo[k] = std::max(lo[k], b.max[axis]);
+        else
+            hi[k] = std::min(hi[k], b.min[axis]);
     }
     if (hi.x - lo.x < 1e-3 || hi.y - lo.y < 1e-3) return {{all.min.x, all.min.z}, {all.max.x, all.max.z}};
     return {lo, hi};
@@ -453,7 +467,8 @@ scenes::SceneDescription withStructure(const scenes::SceneDescription& base, con
     if (!named.models.empty()) {
         std::vector<std::string>& nodes = named.models.front().structureNodes;
         for (const std::string& s : structure)
-            if (std::none_of(patterns.begin(), patterns.end(), [&](const std::string& p) { return scenes::matchesNodePattern(s, p); }))
+            if (std::none_of(patterns.begin(), patterns.end(),
+                             [&](const std::string& p) { return scenes::matchesNodePattern(s, p); }))
                 nodes.push_back(s);
     }
     return named;
@@ -464,7 +479,7 @@ struct CandidateInputs {
     const scenes::SceneDescription& named;  // withStructure's
     const ModelParts& parts;                // content, its triangles and the wall pieces
     const AutoWallsOptions& options;
-    const std::vector<glm::dvec3>& eyes;    // the walk cost's (6.); empty: the floor cost (4.)
+    const std::vector<glm::dvec3>& eyes;  // the walk cost's (6.); empty: the floor cost (4.)
     double floorY = 0.0, ceilingY = 0.0, eyeHeight = 0.0;
 };
 
@@ -544,7 +559,9 @@ int chooseCandidate(const std::vector<AutoWallsCandidate>& candidates, bool pref
 void validateAutoWallsOptions(const AutoWallsOptions& o) {
     validatePlanOptions(o.plan);
     auto check = [](bool ok, const std::string& name, const std::string& expected, double got) {
-        if (!ok) throw Error("auto walls: " + name + " out of range (expected " + expected + ", got " + std::to_string(got) + ")");
+        if (!ok)
+            throw Error("auto walls: " + name + " out of range (expected " + expected + ", got " + std::to_string(got) +
+                        ")");
     };
     check(std::isfinite(o.textureBudgetMB) && o.textureBudgetMB > 0.0, "texture budget", "> 0 MiB", o.textureBudgetMB);
     check(std::isfinite(o.msPerMillionTriangles) && o.msPerMillionTriangles >= 0.0, "ms per million triangles", ">= 0",
@@ -556,11 +573,11 @@ void validateAutoWallsOptions(const AutoWallsOptions& o) {
     check(o.planarExtent > 0.0 && o.planarExtent <= 1.0, "planar extent", "in (0, 1]", o.planarExtent);
 }
 
-
 AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDescription& base,
                              const AutoWallsOptions& options, std::vector<std::string>* warnings) {
     validateAutoWallsOptions(options);
-    if (scene.objects.empty()) throw Error("auto walls: scene '" + scene.name + "' has no objects (expected at least one)");
+    if (scene.objects.empty())
+        throw Error("auto walls: scene '" + scene.name + "' has no objects (expected at least one)");
     if (warnings && (!base.realWalls.empty() || !base.walls.empty()))
         warnings->push_back("auto walls: the description's " + std::to_string(base.walls.size()) + " walls and " +
                             std::to_string(base.realWalls.size()) + " real walls are replaced (by the proposal's own)");

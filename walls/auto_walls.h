@@ -54,17 +54,17 @@
 namespace cavewall::walls {
 
 struct AutoWallsOptions {
-    PlanOptions plan;                       // alpha, texel density, resolution cap
-    double textureBudgetMB = 4096.0;        // MiB of wall textures (RGBA8 + MIP chain), > 0
-    double msPerMillionTriangles = 150.0;   // frame ms per million triangles drawn, >= 0
-    double msPerWallSide = 5.0;             // frame ms per wall side the viewer's cell shows, >= 0
-    double minCellSize = 4.0;               // metres, smallest cell width, > 0
-    int maxCellsPerAxis = 8;                // 1 to 26
-    double planarThickness = 0.05;          // a plane's thickness / its second extent
-    double planarExtent = 0.5;              // a plane's extent / the model's, per axis
-    bool preferRooms = false;               // choose the rooms (5.) whatever the cost model says,
-                                            // when there are rooms within the budget (the model
-                                            // does not count what real walls hide)
+    PlanOptions plan;                      // alpha, texel density, resolution cap
+    double textureBudgetMB = 4096.0;       // MiB of wall textures (RGBA8 + MIP chain), > 0
+    double msPerMillionTriangles = 150.0;  // frame ms per million triangles drawn, >= 0
+    double msPerWallSide = 5.0;            // frame ms per wall side the viewer's cell shows, >= 0
+    double minCellSize = 4.0;              // metres, smallest cell width, > 0
+    int maxCellsPerAxis = 8;               // 1 to 26
+    double planarThickness = 0.05;         // a plane's thickness / its second extent
+    double planarExtent = 0.5;             // a plane's extent / the model's, per axis
+    bool preferRooms = false;              // choose the rooms (5.) whatever the cost model says,
+                                           // when there are rooms within the budget (the model
+                                           // does not count what real walls hide)
     // The walk cost (6.) instead of 4.'s floor cost: eyes along the input's walk path, each
     // also drawing the neighbours whose geometry zones hold it (`cavewall walls --walk-cost`).
     bool walkCost = false;
@@ -74,25 +74,25 @@ struct AutoWallsOptions {
 void validateAutoWallsOptions(const AutoWallsOptions& options);
 
 struct AutoWallsCandidate {
-    int nx = 1, nz = 1;                     // cells along x and z
-    double expectedMs = 0.0;                // E[ms] above
-    double meanCellTriangles = 0.0;         // area-weighted triangles drawn as geometry
-    int textures = 0;                       // planned textures (own and beyond walls)
-    double textureMB = 0.0;                 // their MiB (RGBA8 + MIP chain)
+    int nx = 1, nz = 1;              // cells along x and z
+    double expectedMs = 0.0;         // E[ms] above
+    double meanCellTriangles = 0.0;  // area-weighted triangles drawn as geometry
+    int textures = 0;                // planned textures (own and beyond walls)
+    double textureMB = 0.0;          // their MiB (RGBA8 + MIP chain)
     bool withinBudget = true;
-    bool rooms = false;                     // cut along real walls (5. below), not a grid
-    int portals = 0, virtualWalls = 0;      // rooms: its portals and virtual walls
+    bool rooms = false;                 // cut along real walls (5. below), not a grid
+    int portals = 0, virtualWalls = 0;  // rooms: its portals and virtual walls
 };
 
 struct AutoWallsResult {
-    scenes::SceneDescription description;   // the proposal: the input's models, with structure
-                                            // patterns added, and new cells, walls and walk path
+    scenes::SceneDescription description;  // the proposal: the input's models, with structure
+                                           // patterns added, and new cells, walls and walk path
     double floorY = 0.0, ceilingY = 0.0;
-    glm::dvec2 floorMin{0.0}, floorMax{0.0};  // walkable rectangle (x, z)
-    std::vector<std::string> structure;     // names of the objects found to be structure
+    glm::dvec2 floorMin{0.0}, floorMax{0.0};     // walkable rectangle (x, z)
+    std::vector<std::string> structure;          // names of the objects found to be structure
     std::vector<AutoWallsCandidate> candidates;  // in the order tried (nx, then nz; a row of nz
-                                            // stops at its first candidate over the budget)
-    int chosen = 0;                         // index into candidates
+                                                 // stops at its first candidate over the budget)
+    int chosen = 0;                              // index into candidates
     // The same figures for the input's own cells and walls (hand-placed), when it has walls;
     // nx = nz = 0. A cell's triangles are counted over its region's bounding rectangle.
     std::optional<AutoWallsCandidate> given;

@@ -60,7 +60,7 @@ bool linkFile(const std::filesystem::path& source, const std::filesystem::path& 
 }  // namespace
 
 std::optional<walls::BakedTexture> linkCachedTexture(const CacheIndex& index, const std::filesystem::path& folder,
-                                              const walls::BakedTexture& wanted) {
+                                                     const walls::BakedTexture& wanted) {
     const auto key = textureKeyOf(wanted.file);
     if (!key) return std::nullopt;
     const auto it = index.find(*key);

@@ -31,7 +31,7 @@ CacheIndex indexCache(const std::filesystem::path& cache, const std::filesystem:
 // link, else copy) atomically into `folder` under `wanted.file`, checks it again and returns
 // `wanted` with its bytes and hash; nullopt otherwise.
 std::optional<walls::BakedTexture> linkCachedTexture(const CacheIndex& index, const std::filesystem::path& folder,
-                                              const walls::BakedTexture& wanted);
+                                                     const walls::BakedTexture& wanted);
 
 // Removes texture files (textureFileName pattern) in `folder` that `manifest` does not list.
 // Returns how many were removed.

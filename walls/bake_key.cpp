@@ -75,8 +75,10 @@ std::uint64_t sceneFilesKey(const std::filesystem::path& scenePath, const scenes
     h.text("cavewall scene files v1");
     std::error_code ec;
     std::filesystem::path json;
-    if (std::filesystem::is_directory(scenePath, ec)) json = scenePath / "scene.json";
-    else if (scenePath.extension() == ".json") json = scenePath;
+    if (std::filesystem::is_directory(scenePath, ec))
+        json = scenePath / "scene.json";
+    else if (scenePath.extension() == ".json")
+        json = scenePath;
     if (!json.empty()) h.file(json);
     for (const scenes::ModelFile& model : description.models) {
         const std::filesystem::path file = model.file.is_absolute() ? model.file : description.folder / model.file;

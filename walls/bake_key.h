@@ -27,12 +27,13 @@ namespace cavewall::walls {
 class KeyHasher {
 public:
     KeyHasher& bytes(const void* data, std::size_t size);
-    KeyHasher& text(std::string_view s);          // length-prefixed, so "ab"+"c" != "a"+"bc"
+    KeyHasher& text(std::string_view s);  // length-prefixed, so "ab"+"c" != "a"+"bc"
     KeyHasher& integer(std::int64_t v) { return bytes(&v, sizeof v); }
     KeyHasher& number(double v) { return bytes(&v, sizeof v); }
     KeyHasher& vec(glm::dvec3 v) { return number(v.x).number(v.y).number(v.z); }
     KeyHasher& file(const std::filesystem::path& file);  // its name and bytes; "missing" when unreadable
-    template <class T> KeyHasher& array(const std::vector<T>& v) {
+    template <class T>
+    KeyHasher& array(const std::vector<T>& v) {
         integer(static_cast<std::int64_t>(v.size()));
         return bytes(v.data(), v.size() * sizeof(T));
     }

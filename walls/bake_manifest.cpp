@@ -65,12 +65,20 @@ std::int64_t parseInt64(const config::JsonNode& node) {
 std::string manifestToJson(const BakeManifest& m) {
     nlohmann::json textures = nlohmann::json::array();
     for (const BakedTexture& t : m.textures) {
-        textures.push_back({{"id", t.id}, {"cell", t.cell}, {"wall", t.wall},
+        textures.push_back({{"id", t.id},
+                            {"cell", t.cell},
+                            {"wall", t.wall},
                             {"samplingPoint", {t.samplingPoint.x, t.samplingPoint.y, t.samplingPoint.z}},
-                            {"resolution", {t.resolution.x, t.resolution.y}}, {"file", t.file},
-                            {"bytes", t.bytes}, {"hash", hex64(t.hash)}, {"mtimeNs", t.mtimeNs}, {"inode", t.inode}});
+                            {"resolution", {t.resolution.x, t.resolution.y}},
+                            {"file", t.file},
+                            {"bytes", t.bytes},
+                            {"hash", hex64(t.hash)},
+                            {"mtimeNs", t.mtimeNs},
+                            {"inode", t.inode}});
         if (!t.depthFile.empty())
-            textures.back()["depth"] = {{"file", t.depthFile}, {"bytes", t.depthBytes}, {"hash", hex64(t.depthHash)},
+            textures.back()["depth"] = {{"file", t.depthFile},
+                                        {"bytes", t.depthBytes},
+                                        {"hash", hex64(t.depthHash)},
                                         {"range", {t.depthRange.x, t.depthRange.y}}};
     }
     const nlohmann::json j{{"version", 2}, {"key", hex64(m.key)}, {"alphaDeg", m.alphaDeg}, {"textures", textures}};
@@ -86,8 +94,11 @@ BakeManifest manifestFromJson(std::string_view text, const std::string& source) 
     m.key = parseHex64(root.at("key"));
     m.alphaDeg = root.at("alphaDeg").number(0.0, 90.0);
     for (const config::JsonNode& n : root.at("textures").items()) {
-        if (version == 1) n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "file", "bytes", "hash", "depth"});
-        else n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "file", "bytes", "hash", "mtimeNs", "inode", "depth"});
+        if (version == 1)
+            n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "file", "bytes", "hash", "depth"});
+        else
+            n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "file", "bytes", "hash", "mtimeNs",
+                          "inode", "depth"});
         BakedTexture t;
         t.id = n.at("id").integer(0, 1 << 30);
         t.cell = n.at("cell").integer(0, 1 << 30);
@@ -106,7 +117,8 @@ BakeManifest manifestFromJson(std::string_view text, const std::string& source) 
         if (const auto d = n.find("depth")) {
             d->expectKeys({"file", "bytes", "hash", "range"});
             t.depthFile = d->at("file").string();
-            if (t.depthFile.empty() || t.depthFile.find('/') != std::string::npos || t.depthFile.find("..") != std::string::npos)
+            if (t.depthFile.empty() || t.depthFile.find('/') != std::string::npos ||
+                t.depthFile.find("..") != std::string::npos)
                 d->at("file").fail("expected a plain file name in the manifest's folder, got \"" + t.depthFile + "\"");
             t.depthBytes = static_cast<std::uint64_t>(d->at("bytes").number(0.0, 1e15));
             t.depthHash = parseHex64(d->at("hash"));

@@ -39,15 +39,15 @@
 namespace cavewall::walls {
 
 struct BakedTexture {
-    int id = 0;                       // Plan texture id
+    int id = 0;  // Plan texture id
     int cell = 0, wall = 0;
     glm::dvec3 samplingPoint{0.0};
     glm::ivec2 resolution{0, 0};
-    std::string file;                 // relative to the manifest's folder
+    std::string file;  // relative to the manifest's folder
     std::uint64_t bytes = 0;
-    std::uint64_t hash = 0;           // FNV-1a 64 of the file's bytes
-    std::int64_t mtimeNs = 0;         // last-write time when the hash was checked; 0: unknown
-    std::uint64_t inode = 0;          // inode number then
+    std::uint64_t hash = 0;    // FNV-1a 64 of the file's bytes
+    std::int64_t mtimeNs = 0;  // last-write time when the hash was checked; 0: unknown
+    std::uint64_t inode = 0;   // inode number then
     // Depth walls only (walls/depth_file.h): the depth file beside `file`, its size and hash,
     // and the range of its finite depths (metres behind the wall). Empty for flat walls.
     std::string depthFile;

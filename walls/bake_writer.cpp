@@ -19,7 +19,8 @@ constexpr int kWorkerNice = 4;  // nice steps below the thread that made the wri
 }  // namespace
 
 BakeWriter::BakeWriter(std::filesystem::path folder, int jobs, MipFileOptions options, TextureFormat format)
-    : _folder(std::move(folder)), _options(std::move(options)), _format(format), _maxQueued(std::size_t(4 * std::max(1, jobs))) {
+    : _folder(std::move(folder)), _options(std::move(options)), _format(format),
+      _maxQueued(std::size_t(4 * std::max(1, jobs))) {
     for (int i = 0; i < std::max(1, jobs); ++i) _threads.emplace_back([this] { worker(); });
 }
 
@@ -98,8 +99,10 @@ void BakeWriter::worker() {
             const std::filesystem::path file = _folder / job.entry.file;
             const std::vector<scenes::Image> levels = premultipliedMipChain(job.image);
             lap(spent.mips);
-            if (_format == TextureFormat::Rgba8) writeMipFile(file, levels, _options);
-            else writeBlockFile(file, encodeLevels(levels, _format));
+            if (_format == TextureFormat::Rgba8)
+                writeMipFile(file, levels, _options);
+            else
+                writeBlockFile(file, encodeLevels(levels, _format));
             lap(spent.encode);
             std::error_code ec;
             job.entry.bytes = std::filesystem::file_size(file, ec);
@@ -116,7 +119,9 @@ void BakeWriter::worker() {
                 writeDepthFile(depthFile, *job.depth);
                 lap(spent.encode);
                 job.entry.depthBytes = std::filesystem::file_size(depthFile, ec);
-                if (ec) throw Error(depthFile.string() + ": cannot read the size of the written file (" + ec.message() + ")");
+                if (ec)
+                    throw Error(depthFile.string() + ": cannot read the size of the written file (" + ec.message() +
+                                ")");
                 job.entry.depthHash = walls::hashFile(depthFile);
                 job.entry.depthRange = depthRange(*job.depth);
                 lap(spent.hash);

@@ -46,10 +46,10 @@ public:
 
     // Seconds the worker threads spent so far, summed over threads.
     struct Times {
-        double mips = 0.0;     // premultipliedMipChain
-        double encode = 0.0;   // writeMipFile or block encoding and writeBlockFile (and the
-                               // depth file): encoding and writing
-        double hash = 0.0;     // hashing the written files
+        double mips = 0.0;    // premultipliedMipChain
+        double encode = 0.0;  // writeMipFile or block encoding and writeBlockFile (and the
+                              // depth file): encoding and writing
+        double hash = 0.0;    // hashing the written files
     };
     Times times() const;
 

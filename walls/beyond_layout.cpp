@@ -15,8 +15,8 @@ constexpr int kLevels = 2;
 struct EyeRegion {
     int cell = 0, via = -1, neighbour = 0;
     Polygon2 floor;
-    int parent = -1;                    // the beyond side whose geometry draws the neighbour
-    int drawn = -1;                     // a cell drawn there anyway (the parent's neighbour)
+    int parent = -1;  // the beyond side whose geometry draws the neighbour
+    int drawn = -1;   // a cell drawn there anyway (the parent's neighbour)
 };
 
 // The part of `region` where the side's geometry weight is non-zero: d < dG + blend (the
@@ -62,13 +62,15 @@ void regionInputs(const Plan& plan, const scenes::SceneDescription& d, const Vis
         if (far.cell != r.neighbour || far.wall == r.via) continue;
         // A cell behind that is drawn anyway needs no texture.
         const int behind = plan.walls[far.wall].cells[1 - far.side];
-        if (behind == r.cell || behind == r.drawn || (behind >= 0 && table.at(r.cell, behind) == CellVisibility::Geometry))
+        if (behind == r.cell || behind == r.drawn ||
+            (behind >= 0 && table.at(r.cell, behind) == CellVisibility::Geometry))
             continue;
         // Only eyes on the neighbour's side of the far wall's plane face its textures.
         Polygon2 floor = clipHalfPlane(r.floor, -far.inward, -glm::dot(far.inward, far.origin));
         if (std::abs(signedArea(floor)) <= kMinRegionArea) continue;
         const SideFrame frame{far.origin, far.along, far.inward};
-        inputs.push_back({far.cell, far.wall, far.side, frame, std::move(floor), plan.walls[far.wall].quad, d.headHeightRange});
+        inputs.push_back(
+            {far.cell, far.wall, far.side, frame, std::move(floor), plan.walls[far.wall].quad, d.headHeightRange});
         regions.push_back(&r);
     }
 }
@@ -81,7 +83,8 @@ void planRegions(Plan& plan, const scenes::SceneDescription& d, const Visibility
     for (const EyeRegion& r : eyeRegions) regionInputs(plan, d, table, r, sideCount, inputs, regions);
     std::vector<WallSide> sides = planSides(plan, inputs, plan.beyondZones);
     for (std::size_t i = 0; i < sides.size(); ++i)
-        plan.beyond.push_back({regions[i]->cell, regions[i]->via, inputs[i].cellRegion, std::move(sides[i]), regions[i]->parent});
+        plan.beyond.push_back(
+            {regions[i]->cell, regions[i]->via, inputs[i].cellRegion, std::move(sides[i]), regions[i]->parent});
 }
 
 }  // namespace

@@ -55,8 +55,7 @@ void writeDepthFile(const std::filesystem::path& file, const DepthImage& image) 
         spec.attribute("DateTime", "2000:01:01 00:00:00");  // same depths, same bytes
         std::vector<std::uint16_t> codes(image.depth.size());
         std::transform(image.depth.begin(), image.depth.end(), codes.begin(), encodeDepth);
-        if (!out->open(tmp.string(), spec) ||
-            !out->write_image(OIIO::TypeDesc::UINT16, codes.data()) || !out->close())
+        if (!out->open(tmp.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT16, codes.data()) || !out->close())
             throw Error(file.string() + ": cannot write the depth file (" + out->geterror() + ")");
     });
 }
@@ -66,8 +65,8 @@ DepthImage readDepthFile(const std::filesystem::path& file) {
     if (!in) throw Error(file.string() + ": cannot read the depth file (" + OIIO::geterror() + ")");
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.nchannels != 1 || spec.width <= 0 || spec.height <= 0)
-        throw Error(file.string() + ": expected one depth channel, got " + std::to_string(spec.nchannels) + " channels of " +
-                    std::to_string(spec.width) + " x " + std::to_string(spec.height));
+        throw Error(file.string() + ": expected one depth channel, got " + std::to_string(spec.nchannels) +
+                    " channels of " + std::to_string(spec.width) + " x " + std::to_string(spec.height));
     if (spec.format != OIIO::TypeDesc::UINT16 && spec.format != OIIO::TypeDesc::FLOAT)
         throw Error(file.string() + ": expected 16-bit depth codes or 32-bit float depths, got " +
                     std::string(spec.format.c_str()));

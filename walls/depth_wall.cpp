@@ -103,7 +103,7 @@ TextureRect depthDrawRect(const WallFrame& frame, glm::dvec3 e, glm::dvec3 s, co
         for (double t : {content.lo.y, content.hi.y})
             for (double d : {range.x, range.y}) {
                 const glm::dvec2 T = toWall(u, t);
-                const glm::dvec2 c = T + (d / ds) * (T - glm::dvec2(s));           // the content corner
+                const glm::dvec2 c = T + (d / ds) * (T - glm::dvec2(s));                     // the content corner
                 const glm::dvec2 p = glm::dvec2(e) + (de / (de + d)) * (c - glm::dvec2(e));  // seen from E
                 lo = glm::min(lo, p);
                 hi = glm::max(hi, p);
@@ -113,8 +113,8 @@ TextureRect depthDrawRect(const WallFrame& frame, glm::dvec3 e, glm::dvec3 s, co
     const glm::dvec2 a = glm::clamp(lo / size, 0.0, 1.0), b = glm::clamp(hi / size, 0.0, 1.0);
     // Back to fractions with t down.
     const TextureRect r{glm::dvec2(a.x, 1.0 - b.y), glm::dvec2(b.x, 1.0 - a.y)};
-    const bool finite = std::isfinite(r.lo.x) && std::isfinite(r.lo.y) && std::isfinite(r.hi.x) &&
-                        std::isfinite(r.hi.y);
+    const bool finite =
+        std::isfinite(r.lo.x) && std::isfinite(r.lo.y) && std::isfinite(r.hi.x) && std::isfinite(r.hi.y);
     return !finite || r.empty() ? none : r;
 }
 
@@ -225,7 +225,8 @@ DepthImage depthBlockMinimum(const DepthImage& image, int block, int dilate) {
         for (int bx = 0; bx < bw; ++bx) {
             float m = kNoSurface;
             for (int j = std::max(0, by - dilate); j <= std::min(bh - 1, by + dilate); ++j)
-                for (int i = std::max(0, bx - dilate); i <= std::min(bw - 1, bx + dilate); ++i) m = std::min(m, blocks.at(i, j));
+                for (int i = std::max(0, bx - dilate); i <= std::min(bw - 1, bx + dilate); ++i)
+                    m = std::min(m, blocks.at(i, j));
             out.depth[static_cast<std::size_t>(by) * bw + bx] = m;
         }
     return out;
@@ -246,7 +247,8 @@ ReprojectHit reproject(const DepthImage& image, const WallFrame& f, glm::dvec3 e
     const double s0 = range.x / (ds + range.x), s1 = range.y / (ds + range.y);
     // Steps of at most one texel per axis (the texels crossed on the longer axis).
     const glm::dvec2 span = glm::abs(tb - ta) * (s1 - s0);
-    const int steps = std::clamp(static_cast<int>(std::ceil(std::max(span.x, span.y))), 1, std::max(1, settings.maxSteps));
+    const int steps =
+        std::clamp(static_cast<int>(std::ceil(std::max(span.x, span.y))), 1, std::max(1, settings.maxSteps));
     double lo = s0, hi = -1.0;
     float depthHi = kNoSurface;
     for (int i = 0; i <= steps; ++i) {
@@ -295,7 +297,8 @@ double stepAngle(glm::dvec3 eye, glm::dvec3 sample, glm::dvec2 t, double d1, dou
 
 double reprojectionErrorBound(const WallFrame& f, glm::dvec3 eye, glm::dvec3 sample, double d1, double d2) {
     double v = 0.0;
-    for (glm::dvec2 c : {glm::dvec2(0, 0), glm::dvec2(f.width, 0), glm::dvec2(0, f.height), glm::dvec2(f.width, f.height)})
+    for (glm::dvec2 c :
+         {glm::dvec2(0, 0), glm::dvec2(f.width, 0), glm::dvec2(0, f.height), glm::dvec2(f.width, f.height)})
         v = std::max(v, glm::length(parallaxVector(eye, sample, c)));
     const double de = -eye.z;
     return std::abs(kOf(d2, de) - kOf(d1, de)) * v / de;
@@ -313,8 +316,7 @@ double borderAngle(const WallFrame& f, glm::dvec3 eye, glm::dvec3 sample) {
     const Edge edges[4] = {{0, 2, {1, 0}}, {1, 3, {-1, 0}}, {0, 1, {0, 1}}, {2, 3, {0, -1}}};
     double worst = 0.0;
     for (const Edge& e : edges)
-        for (int end : {e.a, e.b})
-            worst = std::max(worst, glm::dot(parallaxVector(eye, sample, c[end]), e.inward));
+        for (int end : {e.a, e.b}) worst = std::max(worst, glm::dot(parallaxVector(eye, sample, c[end]), e.inward));
     return worst / -eye.z;
 }
 
@@ -326,7 +328,8 @@ DepthWallBound depthWallErrorBound(const DepthImage& image, const WallFrame& f, 
             const float d = image.at(i, j);
             if (!std::isfinite(d)) continue;
             const glm::dvec2 t = texelCentre(f, image.width, image.height, i, j);
-            for (glm::ivec2 n : {glm::ivec2(i + 1, j), glm::ivec2(i, j + 1), glm::ivec2(i + 1, j + 1), glm::ivec2(i - 1, j + 1)}) {
+            for (glm::ivec2 n :
+                 {glm::ivec2(i + 1, j), glm::ivec2(i, j + 1), glm::ivec2(i + 1, j + 1), glm::ivec2(i - 1, j + 1)}) {
                 if (n.x < 0 || n.x >= image.width || n.y >= image.height) continue;
                 const float e = image.at(n.x, n.y);
                 if (!std::isfinite(e) || e == d) continue;
@@ -454,7 +457,8 @@ double depthZoneSearch(const ZoneVolume& zone, glm::dvec3 samplingPoint, const d
     auto upperOf = [&](glm::dvec2 lo, glm::dvec2 hi) {
         double v = 0.0;
         for (const glm::dvec3& e : eyes)
-            for (glm::dvec2 c : {lo, hi, glm::dvec2(lo.x, hi.y), glm::dvec2(hi.x, lo.y)}) v = std::max(v, parallax(e, c));
+            for (glm::dvec2 c : {lo, hi, glm::dvec2(lo.x, hi.y), glm::dvec2(hi.x, lo.y)})
+                v = std::max(v, parallax(e, c));
         const glm::dvec2 gap = glm::max(glm::dvec2(0.0), glm::max(lo - eyeHi, eyeLo - hi));
         // kdiff(D) / max(D, far) <= min(kdiff(dmin) / dmin, kdMax / far): kdiff(D) / D decreases.
         const double far = std::sqrt(dmin * dmin + glm::dot(gap, gap)) - (reach + kFar * v);
@@ -465,7 +469,8 @@ double depthZoneSearch(const ZoneVolume& zone, glm::dvec3 samplingPoint, const d
     auto estimate = [&](glm::dvec2 c) {
         double best = 0.0;
         for (const glm::dvec3& e : eyes)
-            best = std::max(best, kdiff(e.z) * parallax(e, c) / std::sqrt(e.z * e.z + glm::dot(glm::dvec2(e) - c, glm::dvec2(e) - c)));
+            best = std::max(best, kdiff(e.z) * parallax(e, c) /
+                                      std::sqrt(e.z * e.z + glm::dot(glm::dvec2(e) - c, glm::dvec2(e) - c)));
         return best;
     };
     auto lower = [](const Box& a, const Box& b) { return a.upper < b.upper; };
@@ -497,14 +502,15 @@ double depthZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const di
     return depthZoneSearch(zone, samplingPoint, wall, span, texelDiagonal, std::numeric_limits<double>::quiet_NaN());
 }
 
-bool depthZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
-                     glm::dvec2 span, double texelDiagonal, double alpha) {
+bool depthZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall, glm::dvec2 span,
+                     double texelDiagonal, double alpha) {
     return alpha > 0.0 && depthZoneSearch(zone, samplingPoint, wall, span, texelDiagonal, alpha) <= alpha;
 }
 
 display::ScreenQuad nearWall(const display::ScreenQuad& wall, glm::dvec3 samplingPoint, double depth) {
     const double ds = std::abs(glm::dot(samplingPoint - wall.lowerLeft, display::screenBasis(wall).normal));
-    if (!(ds > 0.0)) throw Error("nearWall: the sampling point is on the wall's plane (expected a distance > 0, got 0)");
+    if (!(ds > 0.0))
+        throw Error("nearWall: the sampling point is on the wall's plane (expected a distance > 0, got 0)");
     const double a = depth / ds;
     auto moved = [&](glm::dvec3 c) { return c + a * (c - samplingPoint); };
     return {moved(wall.lowerLeft), moved(wall.lowerRight), moved(wall.upperLeft)};
@@ -517,7 +523,8 @@ double depthSegmentEyeBound(glm::dvec3 eye, glm::dvec3 samplingPoint, const disp
     if (!(e.z * s.z > 0.0) || !(texelDiagonal >= 0.0) || !(span.x >= 0.0) || std::isnan(span.y)) return kPi;
     const double de = std::abs(e.z), ds = std::abs(s.z);
     const glm::dvec2 sp = widened(span, ds);
-    const double seg = sp.y > sp.x ? maxAngularError(eye, samplingPoint, nearWall(wall, samplingPoint, sp.x), sp.y - sp.x) : 0.0;
+    const double seg =
+        sp.y > sp.x ? maxAngularError(eye, samplingPoint, nearWall(wall, samplingPoint, sp.x), sp.y - sp.x) : 0.0;
     const double bound = seg + 0.5 * texelDiagonal * std::max(1.0 / de, 1.0 / ds);
     return std::isfinite(bound) ? std::min(bound, kPi) : kPi;
 }
@@ -532,8 +539,8 @@ struct SegmentZone {
     double texel;
     glm::dvec2 span;
 };
-std::optional<SegmentZone> segmentZone(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
-                                       glm::dvec2 span, double texelDiagonal) {
+std::optional<SegmentZone> segmentZone(const ZoneVolume& zone, glm::dvec3 samplingPoint,
+                                       const display::ScreenQuad& wall, glm::dvec2 span, double texelDiagonal) {
     const WallFrame f = wallFrame(wall);
     const glm::dvec3 s = f.toWall(samplingPoint);
     if (zone.floor.empty() || !(texelDiagonal >= 0.0) || !(span.x >= 0.0) || !std::isfinite(span.x) ||
@@ -557,7 +564,8 @@ double depthSegmentZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, c
     const std::optional<SegmentZone> z = segmentZone(zone, samplingPoint, wall, span, texelDiagonal);
     if (!z) return kPi;
     const glm::dvec2 sp = z->span;
-    const double seg = sp.y > sp.x ? zoneDepthBound(zone, samplingPoint, nearWall(wall, samplingPoint, sp.x), sp.y - sp.x) : 0.0;
+    const double seg =
+        sp.y > sp.x ? zoneDepthBound(zone, samplingPoint, nearWall(wall, samplingPoint, sp.x), sp.y - sp.x) : 0.0;
     const double bound = seg + z->texel;
     return std::isfinite(bound) ? std::min(bound, kPi) : kPi;
 }

@@ -59,18 +59,18 @@ namespace cavewall::walls {
 enum class WallKind : std::uint8_t { Flat, Depth };
 std::string_view wallKindName(WallKind kind);
 // The words `--walls` accepts, in the order its help lists them.
-inline constexpr std::array<std::pair<std::string_view, WallKind>, 2> kWallKindNames{{
-    {"flat", WallKind::Flat}, {"depth", WallKind::Depth}}};
+inline constexpr std::array<std::pair<std::string_view, WallKind>, 2> kWallKindNames{
+    {{"flat", WallKind::Flat}, {"depth", WallKind::Depth}}};
 // Throws cavewall::Error naming `where`, expected "flat" or "depth", for anything else.
 WallKind parseWallKind(std::string_view text, const std::string& where);
 
 inline constexpr float kNoSurface = std::numeric_limits<float>::infinity();
 
 struct WallFrame {
-    glm::dvec3 origin{0.0};            // lowerLeft
-    glm::dvec3 x{1, 0, 0}, y{0, 1, 0}; // unit axes along the quad's edges
-    glm::dvec3 behind{0, 0, -1};       // unit normal pointing behind the plane
-    double width = 0.0, height = 0.0;  // metres
+    glm::dvec3 origin{0.0};             // lowerLeft
+    glm::dvec3 x{1, 0, 0}, y{0, 1, 0};  // unit axes along the quad's edges
+    glm::dvec3 behind{0, 0, -1};        // unit normal pointing behind the plane
+    double width = 0.0, height = 0.0;   // metres
 
     // World -> wall frame (x, y lateral in metres, z metres behind the plane) and back.
     glm::dvec3 toWall(glm::dvec3 world) const;
@@ -227,8 +227,7 @@ double stepAngle(glm::dvec3 eye, glm::dvec3 samplingPoint, glm::dvec2 wallPoint,
 // [d1, d2] behind the plane, for any texel of the wall (v(T) is affine in T, so |v| is largest
 // at a corner): (k(d2) - k(d1)) max|v| / D_E. With d1 = 0 and d2 the content's far depth it is
 // the flat wall's error scale; with the largest depth step it is the depth wall's.
-double reprojectionErrorBound(const WallFrame& frame, glm::dvec3 eye, glm::dvec3 samplingPoint, double d1,
-                              double d2);
+double reprojectionErrorBound(const WallFrame& frame, glm::dvec3 eye, glm::dvec3 samplingPoint, double d1, double d2);
 
 // The depth wall's bound for one baked depth image, in parts (radians):
 //  - steps: over every pair of adjacent texels with finite depths d1 < d2, the angle of the
@@ -248,7 +247,7 @@ double borderAngle(const WallFrame& frame, glm::dvec3 eye, glm::dvec3 samplingPo
 
 struct DepthWallBound {
     double steps = 0.0, border = 0.0, texel = 0.0;
-    double interior() const { return steps + texel; }      // away from the wall's edges
+    double interior() const { return steps + texel; }  // away from the wall's edges
     double total() const { return std::max(steps, border) + texel; }
 };
 DepthWallBound depthWallErrorBound(const DepthImage& image, const WallFrame& frame, glm::dvec3 eye,
@@ -321,8 +320,8 @@ double depthZoneBound(const ZoneVolume& zone, glm::dvec3 samplingPoint, const di
                       glm::dvec2 span, double texelDiagonal);
 // depthZoneBound(...) <= alpha, the planner's predicate: the same answer, but the search stops
 // as soon as it is known (most of the planner's probes are decided by the first boxes).
-bool depthZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall,
-                     glm::dvec2 span, double texelDiagonal, double alpha);
+bool depthZoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const display::ScreenQuad& wall, glm::dvec2 span,
+                     double texelDiagonal, double alpha);
 
 // ---- The segment form of the planner's bound ----
 //

@@ -22,7 +22,8 @@ double tent(double distance, double width) {
 
 }  // namespace
 
-FrameSelector::FrameSelector(const Plan& plan, const VisibilityTable& table, const scenes::SceneDescription& description)
+FrameSelector::FrameSelector(const Plan& plan, const VisibilityTable& table,
+                             const scenes::SceneDescription& description)
     : _plan(plan), _table(table), _description(description), _zones(plan) {
     for (const WallSide& side : plan.sides) _sides.push_back(buildSide(side));
     for (const BeyondSide& b : plan.beyond) _beyond.push_back(buildSide(b.side));
@@ -64,8 +65,10 @@ WallBlend FrameSelector::blend(const WallSide& side, const SideCores& sc, glm::d
         const double w = tent(distanceTo(p.y, c.d), b) * (c.texture < 0 ? 1.0 : tent(distanceTo(p.x, c.s), b));
         if (w <= 0.0) continue;
         total += w;
-        if (c.texture < 0) out.geometryWeight += w;
-        else out.textures.emplace_back(c.texture, w);
+        if (c.texture < 0)
+            out.geometryWeight += w;
+        else
+            out.textures.emplace_back(c.texture, w);
     }
     if (total <= 0.0) {  // outside every core's reach (the eye left the cell): geometry
         out.textures.clear();
@@ -117,7 +120,7 @@ void FrameSelector::addBeyond(glm::dvec3 eye, FrameSelection& f) const {
     for (int i = 0; i < int(_plan.beyond.size()); ++i) {
         const BeyondSide& b = _plan.beyond[i];
         if (b.eyeCell != f.cell) continue;
-        const bool active = b.parent >= 0    ? has(parents, b.parent)
+        const bool active = b.parent >= 0   ? has(parents, b.parent)
                             : b.viaWall < 0 ? _table.at(f.cell, b.side.cell) == CellVisibility::Geometry
                                             : has(vias, b.viaWall);
         const int behind = _plan.walls[b.side.wall].cells[1 - b.side.side];

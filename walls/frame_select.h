@@ -32,16 +32,16 @@ namespace cavewall::walls {
 inline constexpr int kMaxWallTextures = 4;  // a blend zone mixes at most 2 rows x 2 columns
 
 struct WallBlend {
-    int wall = 0;                     // index into Plan::walls
-    int side = 0;                     // 0: the viewer is in front of the wall
-    int zone = -1;                    // zone containing the eye, -1 if none
+    int wall = 0;                                  // index into Plan::walls
+    int side = 0;                                  // 0: the viewer is in front of the wall
+    int zone = -1;                                 // zone containing the eye, -1 if none
     std::vector<std::pair<int, double>> textures;  // (texture id, weight > 0), by id
-    double geometryWeight = 0.0;      // weight of the cell behind, drawn as geometry
+    double geometryWeight = 0.0;                   // weight of the cell behind, drawn as geometry
 };
 
 struct FrameSelection {
-    int cell = -1;                    // the viewer's cell, -1 outside every cell (all geometry)
-    std::vector<WallBlend> walls;     // every wall bounding the cell
+    int cell = -1;                 // the viewer's cell, -1 outside every cell (all geometry)
+    std::vector<WallBlend> walls;  // every wall bounding the cell
     // The far walls of the neighbours drawn as geometry (the cell behind a wall in its geometry
     // zone or texture->geometry blend strip, or a cell seen through an open boundary): what lies
     // beyond them, blended like a cell's own walls over the zones the planner proved for the
@@ -50,7 +50,7 @@ struct FrameSelection {
     // adds its cell behind, whose far walls are selected the same way (second level); the far
     // walls of a cell added at the second level are not drawn.
     std::vector<WallBlend> beyond;
-    std::vector<int> geometryCells;   // cells drawn as geometry this frame, sorted
+    std::vector<int> geometryCells;  // cells drawn as geometry this frame, sorted
     bool allGeometry() const { return cell < 0; }
 };
 
@@ -67,8 +67,8 @@ public:
 
 private:
     struct Core {
-        int texture = -1;             // -1 for the geometry core
-        glm::dvec2 s{0.0}, d{0.0};    // core ranges in the side frame (may be infinite)
+        int texture = -1;           // -1 for the geometry core
+        glm::dvec2 s{0.0}, d{0.0};  // core ranges in the side frame (may be infinite)
     };
     struct SideCores {
         glm::dvec2 origin{0.0}, along{1, 0}, inward{0, 1};
@@ -82,8 +82,8 @@ private:
     const VisibilityTable& _table;
     const scenes::SceneDescription& _description;
     ZoneIndex _zones;
-    std::vector<SideCores> _sides;    // parallel to Plan::sides
-    std::vector<SideCores> _beyond;   // parallel to Plan::beyond
+    std::vector<SideCores> _sides;   // parallel to Plan::sides
+    std::vector<SideCores> _beyond;  // parallel to Plan::beyond
 };
 
 }  // namespace cavewall::walls

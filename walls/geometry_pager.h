@@ -42,7 +42,7 @@
 
 namespace cavewall::walls {
 
-inline constexpr std::size_t kVertexBytes = 24;     // display/gl's compact vertex
+inline constexpr std::size_t kVertexBytes = 24;  // display/gl's compact vertex
 inline constexpr std::size_t kIndexBytes = 4;
 
 // Bytes of each cell's geometry (index = cell, `cellCount` cells); structure and objects
@@ -58,11 +58,11 @@ std::vector<std::size_t> groupGeometryBytes(const scenes::Scene& scene, const sc
 std::size_t largestBytes(std::vector<std::size_t> bytes, std::size_t n);
 
 struct GeometryPagerStats {
-    int resident = 0;                        // groups resident (cells, with one group per cell)
-    double residentMB = 0.0;                 // bytes of the resident groups (each once)
-    long pageIns = 0;                        // groups made resident so far
-    long misses = 0;                         // wanted-now cells that were not resident, summed over frames
-    long evictions = 0;                      // groups evicted so far
+    int resident = 0;         // groups resident (cells, with one group per cell)
+    double residentMB = 0.0;  // bytes of the resident groups (each once)
+    long pageIns = 0;         // groups made resident so far
+    long misses = 0;          // wanted-now cells that were not resident, summed over frames
+    long evictions = 0;       // groups evicted so far
 };
 
 class GeometryPager {
@@ -107,8 +107,8 @@ private:
 
     bool cellResident(int cell) const;  // under the lock
 
-    std::vector<std::size_t> _bytes;           // per group
-    std::vector<std::vector<int>> _cellGroups; // per cell
+    std::vector<std::size_t> _bytes;            // per group
+    std::vector<std::vector<int>> _cellGroups;  // per cell
     Loader _loader;
 
     mutable std::mutex _mutex;
@@ -116,8 +116,8 @@ private:
     std::deque<int> _queue;
     std::set<int> _loading;
     std::vector<int> _ready;
-    ResidencyCore _residency;        // resident groups, budget and eviction (walls/residency.h)
-    GeometryPagerStats _stats;   // misses (the rest from _residency)
+    ResidencyCore _residency;   // resident groups, budget and eviction (walls/residency.h)
+    GeometryPagerStats _stats;  // misses (the rest from _residency)
     bool _stop = false;
     std::thread _thread;
 };

@@ -23,7 +23,8 @@ SideFrame frameOf(const scenes::VirtualWall& wall, int side) {
     const glm::dvec2 n(b.normal.x, b.normal.z);
     // A wall tilted by more than 60° has no useful floor frame.
     if (glm::length(n) < 0.5)
-        throw Error("wall '" + wall.name + "': cannot plan zones for a wall that is not upright (expected a tilt below 60°, got a normal of " +
+        throw Error("wall '" + wall.name +
+                    "': cannot plan zones for a wall that is not upright (expected a tilt below 60°, got a normal of " +
                     formatNumber(b.normal.x) + ", " + formatNumber(b.normal.y) + ", " + formatNumber(b.normal.z) + ")");
     SideFrame f;
     f.origin = {wall.lowerLeft.x, wall.lowerLeft.z};
@@ -41,23 +42,24 @@ void checkExtent(const scenes::Cell& cell) {
     }
     const double extent = std::max(hi.x - lo.x, hi.y - lo.y);
     if (!(extent <= kMaxCellExtent))
-        throw Error("cell '" + cell.name + "': extent of " + formatNumber(extent) + " m is too large to plan (expected at most " +
-                    formatNumber(kMaxCellExtent) + " m)");
+        throw Error("cell '" + cell.name + "': extent of " + formatNumber(extent) +
+                    " m is too large to plan (expected at most " + formatNumber(kMaxCellExtent) + " m)");
 }
 
 }  // namespace
 
 const char* toString(ZoneKind kind) {
     switch (kind) {
-    case ZoneKind::Texture: return "texture";
-    case ZoneKind::Blend: return "blend";
-    case ZoneKind::Geometry: return "geometry";
+        case ZoneKind::Texture: return "texture";
+        case ZoneKind::Blend: return "blend";
+        case ZoneKind::Geometry: return "geometry";
     }
     return "?";
 }
 
 void validatePlanOptions(const PlanOptions& o) {
-    require(o.alphaDeg > 0 && o.alphaDeg <= 90, "alpha: expected an angle in (0, 90] degrees, got " + formatNumber(o.alphaDeg));
+    require(o.alphaDeg > 0 && o.alphaDeg <= 90,
+            "alpha: expected an angle in (0, 90] degrees, got " + formatNumber(o.alphaDeg));
     require(o.blendWidth >= 0 && std::isfinite(o.blendWidth),
             "blendWidth: expected a finite width >= 0 m, got " + formatNumber(o.blendWidth));
     require(o.minZoneSize > 2 * o.blendWidth && std::isfinite(o.minZoneSize),
@@ -109,7 +111,8 @@ double texelDiagonal(const display::ScreenQuad& q, glm::ivec2 resolution) {
 
 double depthTextureBound(const ZoneVolume& volume, glm::dvec3 samplingPoint, const ScreenQuad& wall, glm::dvec2 span,
                          const PlanOptions& options) {
-    const glm::ivec2 resolution = textureResolution(nearestDistance(volume.floor, samplingPoint.y, wall), wall, options);
+    const glm::ivec2 resolution =
+        textureResolution(nearestDistance(volume.floor, samplingPoint.y, wall), wall, options);
     const double h = texelDiagonal(wall, resolution);
     return std::min(depthZoneBound(volume, samplingPoint, wall, span, h),
                     depthSegmentZoneBound(volume, samplingPoint, wall, span, h));
@@ -117,7 +120,8 @@ double depthTextureBound(const ZoneVolume& volume, glm::dvec3 samplingPoint, con
 
 bool depthTextureWithin(const ZoneVolume& volume, glm::dvec3 samplingPoint, const ScreenQuad& wall, glm::dvec2 span,
                         const PlanOptions& options, double alpha) {
-    const glm::ivec2 resolution = textureResolution(nearestDistance(volume.floor, samplingPoint.y, wall), wall, options);
+    const glm::ivec2 resolution =
+        textureResolution(nearestDistance(volume.floor, samplingPoint.y, wall), wall, options);
     const double h = texelDiagonal(wall, resolution);
     return depthSegmentZoneWithin(volume, samplingPoint, wall, span, h, alpha) ||
            depthZoneWithin(volume, samplingPoint, wall, span, h, alpha);
@@ -145,15 +149,16 @@ Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options, co
         const scenes::VirtualWall& wall = d.walls[w];
         const glm::dvec2 span = spans.empty() ? glm::dvec2(0.0, std::numeric_limits<double>::infinity()) : spans[w];
         if (!(span.x >= 0.0 && span.y >= span.x))
-            throw Error("wall '" + wall.name + "': expected a depth span 0 <= near <= far, got " + formatNumber(span.x) +
-                        " .. " + formatNumber(span.y) + " m");
-        plan.walls.push_back({w, wall.name, {wall.lowerLeft, wall.lowerRight, wall.upperLeft}, wall.cells, span.y, span.x});
+            throw Error("wall '" + wall.name + "': expected a depth span 0 <= near <= far, got " +
+                        formatNumber(span.x) + " .. " + formatNumber(span.y) + " m");
+        plan.walls.push_back(
+            {w, wall.name, {wall.lowerLeft, wall.lowerRight, wall.upperLeft}, wall.cells, span.y, span.x});
         for (int side = 0; side < 2; ++side) {
             const int cell = wall.cells[side];
             if (cell < 0 || cell >= int(d.cells.size())) continue;
             checkExtent(d.cells[cell]);
-            inputs.push_back({cell, w, side, frameOf(wall, side), d.cells[cell].region, plan.walls.back().quad,
-                              d.headHeightRange});
+            inputs.push_back(
+                {cell, w, side, frameOf(wall, side), d.cells[cell].region, plan.walls.back().quad, d.headHeightRange});
         }
     }
     plan.sides = planSides(plan, inputs, plan.zones);

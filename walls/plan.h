@@ -55,17 +55,17 @@
 namespace cavewall::walls {
 
 struct PlanOptions {
-    double alphaDeg = 10.0;          // error bound, degrees, in (0, 90]
-    double blendWidth = 0.2;         // metres, width of blend strips, >= 0
-    double minZoneSize = 1.0;        // metres, smallest zone width/depth (at walking speed, at most
-                                     // about one texture switch per second); > 2 * blendWidth
-    double pixelsPerDegree = 10.0;   // texel density target at the zone's nearest distance
-    int maxResolution = 4096;        // texels per texture side (cap); for depth walls also the
-                                     // texel size their bound reserves, so at most the bake's cap
+    double alphaDeg = 10.0;              // error bound, degrees, in (0, 90]
+    double blendWidth = 0.2;             // metres, width of blend strips, >= 0
+    double minZoneSize = 1.0;            // metres, smallest zone width/depth (at walking speed, at most
+                                         // about one texture switch per second); > 2 * blendWidth
+    double pixelsPerDegree = 10.0;       // texel density target at the zone's nearest distance
+    int maxResolution = 4096;            // texels per texture side (cap); for depth walls also the
+                                         // texel size their bound reserves, so at most the bake's cap
     WallKind wallKind = WallKind::Flat;  // flat: the flat bound (angular_error.h); depth: the depth
-                                     // walls' bound (depthTextureBound: the smaller of
-                                     // depth_wall.h's span form and its segment form, from each
-                                     // wall's depth span PlannedWall::depthNear .. depthBehind)
+                                         // walls' bound (depthTextureBound: the smaller of
+                                         // depth_wall.h's span form and its segment form, from each
+                                         // wall's depth span PlannedWall::depthNear .. depthBehind)
 };
 
 // Throws cavewall::Error naming the option when it is out of range.
@@ -77,28 +77,28 @@ const char* toString(ZoneKind kind);
 struct Texture {
     int id = 0;
     int cell = 0, wall = 0;
-    glm::dvec3 samplingPoint{0.0};   // world
-    Polygon2 validRegion;            // floor polygon (x, z) where the bound is proven
-    double maxError = 0.0;           // radians, over validRegion: flat walls the exact
-                                     // depth-independent maximum; depth walls depthTextureBound
-    glm::ivec2 resolution{0};        // texels, from pixelsPerDegree (see texelSize)
+    glm::dvec3 samplingPoint{0.0};  // world
+    Polygon2 validRegion;           // floor polygon (x, z) where the bound is proven
+    double maxError = 0.0;          // radians, over validRegion: flat walls the exact
+                                    // depth-independent maximum; depth walls depthTextureBound
+    glm::ivec2 resolution{0};       // texels, from pixelsPerDegree (see texelSize)
 };
 
 struct Zone {
     int id = 0;
     int cell = 0, wall = 0;
     ZoneKind kind = ZoneKind::Geometry;
-    Polygon2 floorPolygon;            // convex, (x, z), orientation of the cell's region
-    glm::dvec2 heightRange{1.2, 2.0}; // absolute y
-    std::vector<int> textures;        // texture ids: one for texture zones, all mixed for blends
-    bool mixesGeometry = false;       // blend zones next to a geometry zone
+    Polygon2 floorPolygon;             // convex, (x, z), orientation of the cell's region
+    glm::dvec2 heightRange{1.2, 2.0};  // absolute y
+    std::vector<int> textures;         // texture ids: one for texture zones, all mixed for blends
+    bool mixesGeometry = false;        // blend zones next to a geometry zone
 };
 
 struct PlannedWall {
-    int id = 0;                       // index into SceneDescription::walls
+    int id = 0;  // index into SceneDescription::walls
     std::string name;
     display::ScreenQuad quad;
-    std::array<int, 2> cells{-1, -1}; // [front, back]
+    std::array<int, 2> cells{-1, -1};  // [front, back]
     // Largest distance behind the plane of geometry baked into its textures (both sides),
     // metres; infinity until known (assignDepthBehind in walls/visibility.h).
     double depthBehind = std::numeric_limits<double>::infinity();
@@ -112,19 +112,19 @@ struct PlannedWall {
 // proven on that span widened by blendWidth / 2 at interior cuts, times `validated` in d, all
 // clipped to the cell.
 struct PlannedRow {
-    double near = 0.0, far = 0.0;     // d range of the row (metres)
-    glm::dvec2 validated{0.0};        // d range its textures are proven for (may be infinite)
-    std::vector<double> cuts;         // column borders (s), increasing
-    std::vector<int> textures;        // texture id per column: cuts.size() + 1 entries
+    double near = 0.0, far = 0.0;  // d range of the row (metres)
+    glm::dvec2 validated{0.0};     // d range its textures are proven for (may be infinite)
+    std::vector<double> cuts;      // column borders (s), increasing
+    std::vector<int> textures;     // texture id per column: cuts.size() + 1 entries
 };
 
 // The zones of one cell for one wall: zones[firstZone, firstZone + zoneCount).
 struct WallSide {
-    int cell = 0, wall = 0, side = 0; // side 0: the cell is in front of the wall
+    int cell = 0, wall = 0, side = 0;  // side 0: the cell is in front of the wall
     int firstZone = 0, zoneCount = 0;
     int textureCount = 0;
-    double geometryDistance = 0.0;    // dG, metres from the wall's footprint line (no geometry
-                                      // zone when it equals the cell's nearest d)
+    double geometryDistance = 0.0;  // dG, metres from the wall's footprint line (no geometry
+                                    // zone when it equals the cell's nearest d)
     bool hasGeometry = false;
     // The floor frame: world (x, z) = origin + s * along + d * inward; inward points into the
     // cell. Rows are ordered by distance from the wall.
@@ -138,12 +138,12 @@ struct WallSide {
 // those of side) tile eyeRegion, and their textures (in Plan::textures, cell and wall those of
 // side) are proven over their validRegion, which lies in eyeRegion.
 struct BeyondSide {
-    int eyeCell = 0;                  // the cell holding the eye region
-    int viaWall = -1;                 // the wall whose geometry zone and blend strip draw the
-                                      // neighbour: the eye cell's own, or the parent's far wall;
-                                      // -1: an open boundary (whole cell)
-    Polygon2 eyeRegion;               // convex floor polygon (x, z), within eyeCell, on the
-                                      // neighbour's side of the far wall's plane; x heightRange
+    int eyeCell = 0;     // the cell holding the eye region
+    int viaWall = -1;    // the wall whose geometry zone and blend strip draw the
+                         // neighbour: the eye cell's own, or the parent's far wall;
+                         // -1: an open boundary (whole cell)
+    Polygon2 eyeRegion;  // convex floor polygon (x, z), within eyeCell, on the
+                         // neighbour's side of the far wall's plane; x heightRange
     WallSide side;
     // Second level: the index in Plan::beyond of the far wall whose geometry zone (and blend
     // strip) draws this side's neighbour as geometry; -1 for a neighbour of the eye's cell.
@@ -156,10 +156,10 @@ struct Plan {
     PlanOptions options;
     std::vector<PlannedWall> walls;
     std::vector<WallSide> sides;
-    std::vector<Texture> textures;    // of sides and beyond sides
-    std::vector<Zone> zones;          // of sides
+    std::vector<Texture> textures;  // of sides and beyond sides
+    std::vector<Zone> zones;        // of sides
     std::vector<BeyondSide> beyond;
-    std::vector<Zone> beyondZones;    // of beyond sides (ids index this vector)
+    std::vector<Zone> beyondZones;  // of beyond sides (ids index this vector)
 };
 
 // Plans every cell/wall pair of a validated description. Walls must not be horizontal.

@@ -10,10 +10,10 @@ using Rgb = glm::dvec3;
 
 struct Canvas {
     scenes::Image& image;
-    glm::ivec2 origin;      // panel's top-left pixel
-    glm::ivec2 size;        // panel's size in pixels
+    glm::ivec2 origin;  // panel's top-left pixel
+    glm::ivec2 size;    // panel's size in pixels
     glm::dvec2 worldMin;
-    double scale;           // pixels per metre
+    double scale;  // pixels per metre
 
     glm::dvec2 toPixel(glm::dvec2 p) const { return glm::dvec2(origin) + 8.0 + (p - worldMin) * scale; }
 
@@ -67,11 +67,12 @@ void drawPanel(Canvas& c, const Plan& plan, const scenes::SceneDescription& d, c
             const glm::dvec3 lo = o.worldBounds.min, hi = o.worldBounds.max;
             c.outline({{lo.x, lo.z}, {hi.x, lo.z}, {hi.x, hi.z}, {lo.x, hi.z}}, {90, 90, 90}, 1);
         }
-    for (const scenes::RealWall& w : d.realWalls) c.line({w.lowerLeft.x, w.lowerLeft.z}, {w.lowerRight.x, w.lowerRight.z}, {0, 0, 0}, 3);
+    for (const scenes::RealWall& w : d.realWalls)
+        c.line({w.lowerLeft.x, w.lowerLeft.z}, {w.lowerRight.x, w.lowerRight.z}, {0, 0, 0}, 3);
     for (int i = 0; i < int(d.walls.size()); ++i) {
         const scenes::VirtualWall& w = d.walls[i];
-        c.line({w.lowerLeft.x, w.lowerLeft.z}, {w.lowerRight.x, w.lowerRight.z}, i == wall ? Rgb{20, 40, 200} : Rgb{120, 170, 240},
-               i == wall ? 3 : 2);
+        c.line({w.lowerLeft.x, w.lowerLeft.z}, {w.lowerRight.x, w.lowerRight.z},
+               i == wall ? Rgb{20, 40, 200} : Rgb{120, 170, 240}, i == wall ? 3 : 2);
     }
     for (const Texture& t : plan.textures)
         if (t.wall == wall) c.dot(c.toPixel({t.samplingPoint.x, t.samplingPoint.z}), 3, {0, 0, 0});
@@ -79,7 +80,8 @@ void drawPanel(Canvas& c, const Plan& plan, const scenes::SceneDescription& d, c
 
 }  // namespace
 
-scenes::Image planDiagram(const Plan& plan, const scenes::SceneDescription& d, const scenes::Scene* scene, int panelSize) {
+scenes::Image planDiagram(const Plan& plan, const scenes::SceneDescription& d, const scenes::Scene* scene,
+                          int panelSize) {
     const int panels = std::max<int>(1, int(plan.walls.size()));
     const int columns = int(std::ceil(std::sqrt(double(panels))));
     const int rows = (panels + columns - 1) / columns;
@@ -110,8 +112,11 @@ scenes::Image planDiagram(const Plan& plan, const scenes::SceneDescription& d, c
     for (int p = 0; p < panels; ++p) {
         Canvas c{image, {(p % columns) * panel.x, (p / columns) * panel.y}, panel, lo, scale};
         drawPanel(c, plan, d, scene, plan.walls.empty() ? -1 : p);
-        c.outline({lo - 0.5 * 8 / c.scale, {hi.x + 4 / c.scale, lo.y - 4 / c.scale}, hi + 0.5 * 8 / c.scale,
-                   {lo.x - 4 / c.scale, hi.y + 4 / c.scale}}, {200, 200, 200}, 1);
+        c.outline({lo - 0.5 * 8 / c.scale,
+                   {hi.x + 4 / c.scale, lo.y - 4 / c.scale},
+                   hi + 0.5 * 8 / c.scale,
+                   {lo.x - 4 / c.scale, hi.y + 4 / c.scale}},
+                  {200, 200, 200}, 1);
     }
     return image;
 }

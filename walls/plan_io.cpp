@@ -57,7 +57,8 @@ Zone zoneFrom(const config::JsonNode& n, int index, Plan& plan, TextureIds& ids)
     z.heightRange = n.at("heightRange").vec2();
     if (z.kind == ZoneKind::Texture) z.textures.push_back(textureFor(plan, ids, z, pointFrom(n.at("samplingPoint"))));
     if (z.kind == ZoneKind::Blend) {
-        for (const auto& p : n.at("samplingPoints").items(1)) z.textures.push_back(textureFor(plan, ids, z, pointFrom(p)));
+        for (const auto& p : n.at("samplingPoints").items(1))
+            z.textures.push_back(textureFor(plan, ids, z, pointFrom(p)));
         z.mixesGeometry = n.at("mixesGeometry").boolean();
     }
     return z;
@@ -92,8 +93,12 @@ void readBeyond(const std::vector<config::JsonNode>& zones, Plan& plan, TextureI
 nlohmann::json zoneToJson(const Plan& plan, const Zone& z) {
     nlohmann::json polygon = nlohmann::json::array();
     for (const glm::dvec2& p : z.floorPolygon) polygon.push_back({p.x, p.y});
-    nlohmann::json j = {{"id", z.id}, {"cell", z.cell}, {"wall", z.wall}, {"kind", toString(z.kind)},
-                        {"floorPolygon", polygon}, {"heightRange", {z.heightRange.x, z.heightRange.y}}};
+    nlohmann::json j = {{"id", z.id},
+                        {"cell", z.cell},
+                        {"wall", z.wall},
+                        {"kind", toString(z.kind)},
+                        {"floorPolygon", polygon},
+                        {"heightRange", {z.heightRange.x, z.heightRange.y}}};
     if (z.kind == ZoneKind::Texture) j["samplingPoint"] = vec(plan.textures[z.textures.at(0)].samplingPoint);
     if (z.kind == ZoneKind::Blend) {
         nlohmann::json points = nlohmann::json::array();
@@ -115,10 +120,14 @@ int eyeRegionCount(const Plan& plan) {
 nlohmann::json planToJson(const Plan& plan) {
     nlohmann::json walls = nlohmann::json::array(), zones = nlohmann::json::array();
     for (const PlannedWall& w : plan.walls)
-        walls.push_back({{"id", w.id}, {"lowerLeft", vec(w.quad.lowerLeft)}, {"lowerRight", vec(w.quad.lowerRight)},
-                         {"upperLeft", vec(w.quad.upperLeft)}, {"cells", {w.cells[0], w.cells[1]}},
-                         {"depthBehind", std::isfinite(w.depthBehind) ? nlohmann::json(w.depthBehind) : nlohmann::json()},
-                         {"depthNear", w.depthNear}});
+        walls.push_back(
+            {{"id", w.id},
+             {"lowerLeft", vec(w.quad.lowerLeft)},
+             {"lowerRight", vec(w.quad.lowerRight)},
+             {"upperLeft", vec(w.quad.upperLeft)},
+             {"cells", {w.cells[0], w.cells[1]}},
+             {"depthBehind", std::isfinite(w.depthBehind) ? nlohmann::json(w.depthBehind) : nlohmann::json()},
+             {"depthNear", w.depthNear}});
     for (const Zone& z : plan.zones) zones.push_back(zoneToJson(plan, z));
     nlohmann::json beyond = nlohmann::json::array();
     for (const BeyondSide& b : plan.beyond)
@@ -130,10 +139,18 @@ nlohmann::json planToJson(const Plan& plan) {
         }
     nlohmann::json textures = nlohmann::json::array();
     for (const Texture& t : plan.textures)
-        textures.push_back({{"id", t.id}, {"cell", t.cell}, {"wall", t.wall}, {"samplingPoint", vec(t.samplingPoint)},
-                            {"resolution", {t.resolution.x, t.resolution.y}}, {"maxError", t.maxError}});
-    return {{"alphaDeg", plan.alphaDeg}, {"wallKind", std::string(wallKindName(plan.options.wallKind))}, {"walls", walls},
-            {"zones", zones},      {"beyondZones", beyond}, {"textures", textures}};
+        textures.push_back({{"id", t.id},
+                            {"cell", t.cell},
+                            {"wall", t.wall},
+                            {"samplingPoint", vec(t.samplingPoint)},
+                            {"resolution", {t.resolution.x, t.resolution.y}},
+                            {"maxError", t.maxError}});
+    return {{"alphaDeg", plan.alphaDeg},
+            {"wallKind", std::string(wallKindName(plan.options.wallKind))},
+            {"walls", walls},
+            {"zones", zones},
+            {"beyondZones", beyond},
+            {"textures", textures}};
 }
 
 Plan planFromJson(std::string_view text, const std::string& source) {
@@ -144,7 +161,8 @@ Plan planFromJson(std::string_view text, const std::string& source) {
     plan.alphaDeg = root.at("alphaDeg").number(1e-9, 90);
     plan.options.alphaDeg = plan.alphaDeg;
     if (root.has("wallKind"))
-        plan.options.wallKind = root.at("wallKind").oneOf({"flat", "depth"}) == "depth" ? WallKind::Depth : WallKind::Flat;
+        plan.options.wallKind =
+            root.at("wallKind").oneOf({"flat", "depth"}) == "depth" ? WallKind::Depth : WallKind::Flat;
     const auto walls = root.at("walls").items();
     for (int i = 0; i < int(walls.size()); ++i) plan.walls.push_back(wallFrom(walls[i], i));
     TextureIds ids;
@@ -168,8 +186,8 @@ Plan planFromJson(std::string_view text, const std::string& source) {
     }
     const auto zones = root.at("zones").items();
     for (int i = 0; i < int(zones.size()); ++i) {
-        zones[i].expectKeys({"id", "cell", "wall", "kind", "floorPolygon", "heightRange", "samplingPoint", "samplingPoints",
-                             "mixesGeometry"});
+        zones[i].expectKeys({"id", "cell", "wall", "kind", "floorPolygon", "heightRange", "samplingPoint",
+                             "samplingPoints", "mixesGeometry"});
         plan.zones.push_back(zoneFrom(zones[i], i, plan, ids));
     }
     if (root.has("beyondZones")) readBeyond(root.at("beyondZones").items(), plan, ids);
@@ -206,8 +224,9 @@ PlanTotals planTotals(const Plan& plan) {
 void printPlanSummary(std::ostream& out, const Plan& plan, const scenes::SceneDescription& d) {
     const PlanTotals totals = planTotals(plan);
     char line[256];
-    std::snprintf(line, sizeof line, "plan '%s': alpha %g°, %zu cells, %zu walls, head heights %g-%g m\n", d.name.c_str(),
-                  plan.alphaDeg, d.cells.size(), plan.walls.size(), d.headHeightRange.x, d.headHeightRange.y);
+    std::snprintf(line, sizeof line, "plan '%s': alpha %g°, %zu cells, %zu walls, head heights %g-%g m\n",
+                  d.name.c_str(), plan.alphaDeg, d.cells.size(), plan.walls.size(), d.headHeightRange.x,
+                  d.headHeightRange.y);
     out << line;
     std::snprintf(line, sizeof line, "%-16s %-16s %10s %9s %9s %9s %9s %10s\n", "cell", "wall", "geometry", "texture",
                   "blend", "geom", "textures", "Mtexels");
@@ -228,22 +247,24 @@ void printPlanSummary(std::ostream& out, const Plan& plan, const scenes::SceneDe
                   plan.beyond.size(), eyeRegionCount(plan), totals.beyondZones, totals.beyondTextures);
     out << line;
     const bool depth = plan.options.wallKind == WallKind::Depth;
-    std::snprintf(line, sizeof line,
-                  "total: %d texture, %d blend, %d geometry zones; %d textures, %.2f Mtexels; GPU %.1f MiB (RGBA8 + MIP "
-                  "chain%s); disk <= %.1f MiB (uncompressed tiled + MIP%s)\n",
-                  totals.textureZones, totals.blendZones, totals.geometryZones, totals.textures, totals.texels * 1e-6,
-                  totals.gpuBytes / 1048576.0, depth ? " + R32F depth" : "", totals.diskBytes / 1048576.0,
-                  depth ? " + 16-bit depth" : "");
+    std::snprintf(
+        line, sizeof line,
+        "total: %d texture, %d blend, %d geometry zones; %d textures, %.2f Mtexels; GPU %.1f MiB (RGBA8 + MIP "
+        "chain%s); disk <= %.1f MiB (uncompressed tiled + MIP%s)\n",
+        totals.textureZones, totals.blendZones, totals.geometryZones, totals.textures, totals.texels * 1e-6,
+        totals.gpuBytes / 1048576.0, depth ? " + R32F depth" : "", totals.diskBytes / 1048576.0,
+        depth ? " + 16-bit depth" : "");
     out << line;
     std::snprintf(line, sizeof line, "%s walls: largest texture error bound %.3f° (alpha %g°; %s)\n",
                   depth ? "depth" : "flat", totals.maxErrorDeg, plan.alphaDeg,
                   depth ? "depth reprojection bound, span or segment form, walls/depth_wall.h"
                         : "flat bound at any depth, walls/angular_error.h");
     out << line;
-    std::snprintf(line, sizeof line,
-                  "texel density: %g px/degree at the nearest point of each texture's valid region, capped at %d texels "
-                  "per side\n",
-                  plan.options.pixelsPerDegree, plan.options.maxResolution);
+    std::snprintf(
+        line, sizeof line,
+        "texel density: %g px/degree at the nearest point of each texture's valid region, capped at %d texels "
+        "per side\n",
+        plan.options.pixelsPerDegree, plan.options.maxResolution);
     out << line;
 }
 

@@ -46,8 +46,8 @@ struct PlanTotals {
     int textureZones = 0, blendZones = 0, geometryZones = 0;  // of the cells' own sides
     int beyondZones = 0, beyondTextures = 0;                  // of Plan::beyond
     int textures = 0;                                         // all, beyond ones included
-    double texels = 0;       // base level texels over all textures
-    double gpuBytes = 0;     // RGBA8 with a full MIP chain (4/3 of the base level)
+    double texels = 0;                                        // base level texels over all textures
+    double gpuBytes = 0;                                      // RGBA8 with a full MIP chain (4/3 of the base level)
     double diskBytes = 0;    // same, uncompressed: an upper bound for tiled MIP-mapped files
                              // (depth walls: both + 4 bytes of depth per base-level texel)
     double maxErrorDeg = 0;  // largest Texture::maxError, degrees

@@ -97,11 +97,12 @@ std::vector<display::StabilityRow> alphaExtremeCases() {
         for (const Zone& zone : plan.zones)
             for (int t : zone.textures) {
                 const Texture& tex = plan.textures[t];
-                const double e = zoneMaxError({zone.floorPolygon, zone.heightRange}, tex.samplingPoint, plan.walls[zone.wall].quad);
+                const double e =
+                    zoneMaxError({zone.floorPolygon, zone.heightRange}, tex.samplingPoint, plan.walls[zone.wall].quad);
                 ratio = std::max(ratio, e / glm::radians(alphaDeg));
             }
-        rows.push_back({"plan at alpha " + config::formatNumber(alphaDeg) + "° (" + std::to_string(plan.textures.size()) +
-                            " textures): max zone error / alpha",
+        rows.push_back({"plan at alpha " + config::formatNumber(alphaDeg) + "° (" +
+                            std::to_string(plan.textures.size()) + " textures): max zone error / alpha",
                         "ratio", kNaN, ratio, 1.0});
     }
     return rows;

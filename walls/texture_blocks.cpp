@@ -171,9 +171,9 @@ constexpr std::size_t kMaxInflation = 1100;
 
 std::string_view textureFormatName(TextureFormat format) {
     switch (format) {
-    case TextureFormat::Rgba8: return "rgba8";
-    case TextureFormat::Bc1: return "bc1";
-    case TextureFormat::Bc3: return "bc3";
+        case TextureFormat::Rgba8: return "rgba8";
+        case TextureFormat::Bc1: return "bc1";
+        case TextureFormat::Bc3: return "bc3";
     }
     return "?";
 }
@@ -228,9 +228,12 @@ BlockLevel encodeLevel(const scenes::Image& image, TextureFormat format) {
                     opaque = opaque && t[3] == 255;
                     mask |= 1 << (y * 4 + x);
                 }
-            if (transparent) transparentBlock(format, block);
-            else if (format == TextureFormat::Bc1 && opaque) bc1OpaqueBlock(texels, mask, block);
-            else squish::CompressMasked(texels, mask, block, flags);
+            if (transparent)
+                transparentBlock(format, block);
+            else if (format == TextureFormat::Bc1 && opaque)
+                bc1OpaqueBlock(texels, mask, block);
+            else
+                squish::CompressMasked(texels, mask, block, flags);
         }
     return out;
 }
@@ -238,8 +241,8 @@ BlockLevel encodeLevel(const scenes::Image& image, TextureFormat format) {
 scenes::Image decodeLevel(const BlockLevel& level, TextureFormat format) {
     requireBlocks(format, "decoding a level");
     if (level.width <= 0 || level.height <= 0 || level.blocks.size() != levelBytes(format, level.width, level.height))
-        throw Error("decoding a " + std::string(textureFormatName(format)) + " level of " + std::to_string(level.width) +
-                    " x " + std::to_string(level.height) + ": expected " +
+        throw Error("decoding a " + std::string(textureFormatName(format)) + " level of " +
+                    std::to_string(level.width) + " x " + std::to_string(level.height) + ": expected " +
                     std::to_string(levelBytes(format, level.width, level.height)) + " bytes of blocks, got " +
                     std::to_string(level.blocks.size()));
     scenes::Image image{"decoded", level.width, level.height,
@@ -258,7 +261,8 @@ void writeBlockFile(const std::filesystem::path& file, const TextureLevels& leve
     requireBlocks(levels.format, file.string().c_str());
     const auto& l = levels.blocks;
     if (l.empty()) throw Error(file.string() + ": expected at least one MIP level, got none");
-    if (l[0].width < 1 || l[0].height < 1 || std::uint32_t(l[0].width) > kMaxSide || std::uint32_t(l[0].height) > kMaxSide)
+    if (l[0].width < 1 || l[0].height < 1 || std::uint32_t(l[0].width) > kMaxSide ||
+        std::uint32_t(l[0].height) > kMaxSide)
         throw Error(file.string() + ": level 0: expected a size in [1, 16384], got " + std::to_string(l[0].width) +
                     " x " + std::to_string(l[0].height));
     for (std::size_t i = 0; i < l.size(); ++i) {
@@ -296,7 +300,8 @@ TextureLevels readBlockFile(const std::filesystem::path& file) { return blocksFr
 TextureLevels blocksFromBytes(std::string_view view, const std::string& file) {
     const std::string bytes(view);
     if (bytes.size() < kHeaderBytes)
-        bad(file, "header", "expected at least " + std::to_string(kHeaderBytes) + " bytes, got " + std::to_string(bytes.size()));
+        bad(file, "header",
+            "expected at least " + std::to_string(kHeaderBytes) + " bytes, got " + std::to_string(bytes.size()));
     if (bytes.compare(0, 4, kMagic, 4) != 0) bad(file, "header", "expected the magic 'CWBC', got other bytes");
     if (const std::uint32_t v = getU32(bytes, 4); v != kVersion)
         bad(file, "header", "expected version 1, got " + std::to_string(v));
@@ -305,39 +310,45 @@ TextureLevels blocksFromBytes(std::string_view view, const std::string& file) {
     const TextureFormat format = code == 1 ? TextureFormat::Bc1 : TextureFormat::Bc3;
     const std::uint32_t width = getU32(bytes, 12), height = getU32(bytes, 16), count = getU32(bytes, 20);
     if (width < 1 || width > kMaxSide || height < 1 || height > kMaxSide)
-        bad(file, "header", "expected a size in [1, 16384], got " + std::to_string(width) + " x " + std::to_string(height));
+        bad(file, "header",
+            "expected a size in [1, 16384], got " + std::to_string(width) + " x " + std::to_string(height));
     const int chain = mipCount(int(width), int(height));
     if (count < 1 || count > std::uint32_t(chain))
         bad(file, "header", "expected 1 to " + std::to_string(chain) + " MIP levels, got " + std::to_string(count));
     std::size_t at = kHeaderBytes + 4ull * count;
     if (bytes.size() < at)
-        bad(file, "header", "expected " + std::to_string(at) + " bytes of level sizes, got a file of " + std::to_string(bytes.size()));
+        bad(file, "header",
+            "expected " + std::to_string(at) + " bytes of level sizes, got a file of " + std::to_string(bytes.size()));
     TextureLevels out(format, {});
     int w = int(width), h = int(height);
     for (std::uint32_t i = 0; i < count; ++i) {
         const std::string where = "MIP level " + std::to_string(i);
         const std::size_t stored = getU32(bytes, kHeaderBytes + 4ull * i);
         if (bytes.size() - at < stored)
-            bad(file, where, "expected " + std::to_string(stored) + " stored bytes, got " + std::to_string(bytes.size() - at) +
-                                 " (the file is truncated)");
+            bad(file, where,
+                "expected " + std::to_string(stored) + " stored bytes, got " + std::to_string(bytes.size() - at) +
+                    " (the file is truncated)");
         const std::size_t expected = levelBytes(format, w, h);
         if (expected > stored * kMaxInflation + 64)
-            bad(file, where, "expected " + std::to_string(stored) + " deflated bytes to hold " + std::to_string(expected) +
-                                 " bytes of blocks, got too few for that");
+            bad(file, where,
+                "expected " + std::to_string(stored) + " deflated bytes to hold " + std::to_string(expected) +
+                    " bytes of blocks, got too few for that");
         std::vector<std::uint8_t> fields(expected);
         uLongf size = expected;
         const int z = uncompress(fields.data(), &size, reinterpret_cast<const Bytef*>(bytes.data() + at), stored);
         if (z != Z_OK || size != expected)
-            bad(file, where, "expected " + std::to_string(stored) + " deflated bytes that inflate to " +
-                                 std::to_string(expected) + " bytes of " + std::string(textureFormatName(format)) +
-                                 " blocks, got " + (z == Z_OK ? std::to_string(size) + " bytes" : std::string("corrupt data (") + zError(z) + ")"));
+            bad(file, where,
+                "expected " + std::to_string(stored) + " deflated bytes that inflate to " + std::to_string(expected) +
+                    " bytes of " + std::string(textureFormatName(format)) + " blocks, got " +
+                    (z == Z_OK ? std::to_string(size) + " bytes" : std::string("corrupt data (") + zError(z) + ")"));
         out.blocks.push_back({w, h, joinFields(fields, format)});
         at += stored;
         w = std::max(1, w / 2);
         h = std::max(1, h / 2);
     }
     if (at != bytes.size())
-        bad(file, "end", "expected " + std::to_string(at) + " bytes, got " + std::to_string(bytes.size()) + " (extra bytes)");
+        bad(file, "end",
+            "expected " + std::to_string(at) + " bytes, got " + std::to_string(bytes.size()) + " (extra bytes)");
     return out;
 }
 
@@ -353,14 +364,13 @@ TextureLevels readBakedTexture(const std::filesystem::path& file) {
 
 TextureRect coveredRect(const TextureLevels& levels, int margin) {
     if (levels.count() == 0) return noRect();
-    const scenes::Image decoded = levels.format == TextureFormat::Rgba8 ? scenes::Image{} : decodeLevel(levels.blocks[0], levels.format);
+    const scenes::Image decoded =
+        levels.format == TextureFormat::Rgba8 ? scenes::Image{} : decodeLevel(levels.blocks[0], levels.format);
     const scenes::Image& image = levels.format == TextureFormat::Rgba8 ? levels.rgba[0] : decoded;
     return texelBounds(image.width, image.height, margin,
                        [&](int i, int j) { return image.rgba[(std::size_t(j) * image.width + i) * 4 + 3] != 0; });
 }
 
-std::string_view textureFileExtension(TextureFormat format) {
-    return format == TextureFormat::Rgba8 ? ".tx" : ".bct";
-}
+std::string_view textureFileExtension(TextureFormat format) { return format == TextureFormat::Rgba8 ? ".tx" : ".bct"; }
 
 }  // namespace cavewall::walls

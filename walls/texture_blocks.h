@@ -67,8 +67,8 @@ namespace cavewall::walls {
 enum class TextureFormat : std::uint8_t { Rgba8, Bc1, Bc3 };
 std::string_view textureFormatName(TextureFormat format);
 // The words `--texture-format` accepts, in the order its help lists them.
-inline constexpr std::array<std::pair<std::string_view, TextureFormat>, 3> kTextureFormatNames{{
-    {"rgba8", TextureFormat::Rgba8}, {"bc1", TextureFormat::Bc1}, {"bc3", TextureFormat::Bc3}}};
+inline constexpr std::array<std::pair<std::string_view, TextureFormat>, 3> kTextureFormatNames{
+    {{"rgba8", TextureFormat::Rgba8}, {"bc1", TextureFormat::Bc1}, {"bc3", TextureFormat::Bc3}}};
 
 // `--texture-format`'s default on bake, run, bench and demo (chosen from measurements:
 // docs/virtual-walls.md, texture storage). BakeSettings, RunOptions and BenchOptions default
@@ -81,8 +81,8 @@ int blockBytes(TextureFormat format);
 std::size_t levelBytes(TextureFormat format, int width, int height);
 
 struct BlockLevel {
-    int width = 0, height = 0;           // texels
-    std::vector<std::uint8_t> blocks;    // levelBytes(format, width, height) bytes
+    int width = 0, height = 0;         // texels
+    std::vector<std::uint8_t> blocks;  // levelBytes(format, width, height) bytes
 };
 
 // Every MIP level of one texture as the GPU takes it: RGBA8 images (walls/texture_mips.h
@@ -90,16 +90,16 @@ struct BlockLevel {
 // std::vector<scenes::Image> is one that returns TextureLevels.
 struct TextureLevels {
     TextureFormat format = TextureFormat::Rgba8;
-    std::vector<scenes::Image> rgba;     // format Rgba8: largest first
-    std::vector<BlockLevel> blocks;      // Bc1, Bc3: largest first
+    std::vector<scenes::Image> rgba;  // format Rgba8: largest first
+    std::vector<BlockLevel> blocks;   // Bc1, Bc3: largest first
 
     TextureLevels() = default;
     TextureLevels(std::vector<scenes::Image> levels) : rgba(std::move(levels)) {}  // NOLINT: implicit
     TextureLevels(TextureFormat f, std::vector<BlockLevel> levels) : format(f), blocks(std::move(levels)) {}
     std::size_t count() const { return format == TextureFormat::Rgba8 ? rgba.size() : blocks.size(); }
-    int width() const;                   // of level 0; 0 when empty
+    int width() const;  // of level 0; 0 when empty
     int height() const;
-    std::size_t bytes() const;           // GPU bytes of every level
+    std::size_t bytes() const;  // GPU bytes of every level
 };
 
 // Encodes one level (8-bit RGBA, premultiplied as walls/texture_mips.h says) into `format`

@@ -20,13 +20,9 @@
 
 namespace cavewall::walls {
 
-float srgbToLinear(float e) {
-    return e <= 0.04045f ? e / 12.92f : std::pow((e + 0.055f) / 1.055f, 2.4f);
-}
+float srgbToLinear(float e) { return e <= 0.04045f ? e / 12.92f : std::pow((e + 0.055f) / 1.055f, 2.4f); }
 
-float linearToSrgb(float l) {
-    return l <= 0.0031308f ? l * 12.92f : 1.055f * std::pow(l, 1.0f / 2.4f) - 0.055f;
-}
+float linearToSrgb(float l) { return l <= 0.0031308f ? l * 12.92f : 1.055f * std::pow(l, 1.0f / 2.4f) - 0.055f; }
 
 namespace {
 
@@ -83,9 +79,7 @@ FloatImage downsample(const FloatImage& in) {
     return out;
 }
 
-std::uint8_t toByte(float v) {
-    return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
-}
+std::uint8_t toByte(float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
 
 std::uint8_t formulaByte(float v) { return toByte(linearToSrgb(std::clamp(v, 0.0f, 1.0f))); }
 
@@ -100,8 +94,10 @@ const std::array<float, 256>& thresholds() {
             std::uint32_t lo = bits(0.0f), hi = bits(1.0f);
             while (lo < hi) {
                 const std::uint32_t mid = lo + (hi - lo) / 2;
-                if (formulaByte(std::bit_cast<float>(mid)) >= k) hi = mid;
-                else lo = mid + 1;
+                if (formulaByte(std::bit_cast<float>(mid)) >= k)
+                    hi = mid;
+                else
+                    lo = mid + 1;
             }
             t[k] = std::bit_cast<float>(lo);
         }
@@ -235,8 +231,9 @@ void writeLevels(const std::filesystem::path& tmp, const std::filesystem::path& 
         spec.attribute("compression", options.compression);
         spec.attribute("oiio:ColorSpace", "sRGB");
         spec.attribute("oiio:UnassociatedAlpha", 0);
-        spec.attribute("ImageDescription", "cavewall baked wall texture: premultiplied (associated) alpha, "
-                                           "RGB = sRGB encoding of linear premultiplied colour");
+        spec.attribute("ImageDescription",
+                       "cavewall baked wall texture: premultiplied (associated) alpha, "
+                       "RGB = sRGB encoding of linear premultiplied colour");
         spec.attribute("textureformat", "Plain Texture");
         // A fixed date instead of the writer's clock: the same texture gives the same bytes.
         spec.attribute("DateTime", "2000:01:01 00:00:00");

@@ -42,8 +42,8 @@ const std::array<std::uint8_t, 256>& srgbByteRoundTrip();
 std::vector<scenes::Image> premultipliedMipChain(const scenes::Image& straight);
 
 struct MipFileOptions {
-    int tileSize = 64;                   // tile edge in texels; a multiple of 16 in [16, 1024]
-    std::string compression = "zip";     // OIIO "compression" attribute ("none", "zip", "lzw")
+    int tileSize = 64;                // tile edge in texels; a multiple of 16 in [16, 1024]
+    std::string compression = "zip";  // OIIO "compression" attribute ("none", "zip", "lzw")
 };
 
 // Writes `levels` (largest first, each level the next MIP size of the previous one) as one tiled,

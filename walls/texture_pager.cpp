@@ -34,8 +34,9 @@ void TexturePager::request(const std::vector<int>& now, const std::vector<int>& 
         _residency.touch(id);
         if (_residency.isResident(id)) return;
         _stats.misses += isNow;
-        const bool pending = _decoding.count(id) || _uploading.count(id) ||
-                             std::any_of(_ready.begin(), _ready.end(), [&](const DecodedTexture& r) { return r.id == id; });
+        const bool pending =
+            _decoding.count(id) || _uploading.count(id) ||
+            std::any_of(_ready.begin(), _ready.end(), [&](const DecodedTexture& r) { return r.id == id; });
         if (!pending && std::find(queue.begin(), queue.end(), id) == queue.end()) queue.push_back(id);
     };
     for (int id : now) want(id, true);
@@ -94,15 +95,18 @@ void TexturePager::worker() {
         }
         lock.lock();
         _decoding.erase(id);
-        if (ok) _ready.push_back(std::move(d));
-        else if (_failed.insert(id).second) ++_stats.failures;
+        if (ok)
+            _ready.push_back(std::move(d));
+        else if (_failed.insert(id).second)
+            ++_stats.failures;
         if (_queue.empty() && _decoding.empty()) _idle.notify_all();
     }
 }
 
 std::optional<DecodedTexture> TexturePager::takeNext(bool nowOnly) {
     std::lock_guard lock(_mutex);
-    auto it = std::find_if(_ready.begin(), _ready.end(), [&](const DecodedTexture& d) { return _residency.wantedNow(d.id); });
+    auto it =
+        std::find_if(_ready.begin(), _ready.end(), [&](const DecodedTexture& d) { return _residency.wantedNow(d.id); });
     if (it == _ready.end() && !nowOnly) it = _ready.begin();
     if (it == _ready.end()) return std::nullopt;
     DecodedTexture d = std::move(*it);

@@ -41,7 +41,7 @@ inline constexpr int kCoveredMargin = 8;
 
 struct DecodedTexture {
     int id = 0;
-    TextureLevels levels;                // MIP levels, largest first: RGBA8 premultiplied or blocks
+    TextureLevels levels;  // MIP levels, largest first: RGBA8 premultiplied or blocks
     // Depth walls: the texture's depth file (when the manifest lists one; the march's halved
     // depths, marchDepthSize of the colour's size), decoded, clamped to its baked range
     // (clampDepths) and with its skip blocks: paged, budgeted and evicted with the colour.
@@ -50,17 +50,17 @@ struct DecodedTexture {
     // kCoveredMargin texels, or for depth walls the depth's contentRect (which the depth pass
     // projects per eye, depth->content) grown by as many texels.
     TextureRect content;
-    std::size_t bytes = 0;               // GPU bytes, summed over levels (compressed when blocks),
-                                         // the depth texture's included
+    std::size_t bytes = 0;  // GPU bytes, summed over levels (compressed when blocks),
+                            // the depth texture's included
 };
 
 struct PagerStats {
-    int resident = 0;                    // textures uploaded and not evicted
+    int resident = 0;  // textures uploaded and not evicted
     double residentMB = 0.0;
-    long pageIns = 0;                    // textures made resident so far
-    long misses = 0;                     // wanted-now textures that were not resident, summed over frames
+    long pageIns = 0;  // textures made resident so far
+    long misses = 0;   // wanted-now textures that were not resident, summed over frames
     long evictions = 0;
-    long failures = 0;                   // textures whose file could not be decoded
+    long failures = 0;  // textures whose file could not be decoded
 };
 
 class TexturePager {
@@ -108,17 +108,17 @@ private:
     void worker();
 
     std::filesystem::path _folder;
-    std::map<int, BakedTexture> _textures;   // by id
+    std::map<int, BakedTexture> _textures;  // by id
     Decoder _decoder;
 
     mutable std::mutex _mutex;
     std::condition_variable _wake, _idle;
-    std::deque<int> _queue;                  // ids to decode, priority order
+    std::deque<int> _queue;  // ids to decode, priority order
     std::set<int> _queued, _decoding, _failed;
-    std::set<int> _uploading;                // taken for upload, not yet marked resident
+    std::set<int> _uploading;  // taken for upload, not yet marked resident
     std::vector<DecodedTexture> _ready;
-    ResidencyCore _residency;                    // resident ids, budget and eviction (walls/residency.h)
-    PagerStats _stats;                       // misses and failures (the rest from _residency)
+    ResidencyCore _residency;  // resident ids, budget and eviction (walls/residency.h)
+    PagerStats _stats;         // misses and failures (the rest from _residency)
     bool _stop = false;
     std::thread _thread;
 };

@@ -29,7 +29,8 @@ UploadPiece UploadCursor::next(std::size_t maxBytes) {
     const int height = levelHeight(_level);
     const std::size_t unitBytes = std::max<std::size_t>(rowUnitBytes(_level), 1);
     const int unitsLeft = (height - _y + rowsPerUnit - 1) / rowsPerUnit;
-    const int units = static_cast<int>(std::clamp<std::size_t>(maxBytes / unitBytes, 1, static_cast<std::size_t>(unitsLeft)));
+    const int units =
+        static_cast<int>(std::clamp<std::size_t>(maxBytes / unitBytes, 1, static_cast<std::size_t>(unitsLeft)));
     UploadPiece p;
     p.level = static_cast<int>(_level);
     p.y = _y;

@@ -20,8 +20,8 @@ namespace cavewall::walls {
 
 struct UploadPiece {
     int level = 0;
-    int y = 0, rows = 0;                 // texel rows [y, y + rows) of the level
-    std::size_t offset = 0, bytes = 0;   // of the level's stored bytes
+    int y = 0, rows = 0;                // texel rows [y, y + rows) of the level
+    std::size_t offset = 0, bytes = 0;  // of the level's stored bytes
 };
 
 class UploadCursor {
@@ -43,7 +43,7 @@ private:
 
     const TextureLevels& _levels;
     std::size_t _level = 0;
-    int _y = 0;                          // next texel row of _level
+    int _y = 0;  // next texel row of _level
     std::size_t _remaining = 0;
 };
 

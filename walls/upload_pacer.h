@@ -47,9 +47,9 @@ private:
     static constexpr double kHeadroom = 1.1;
     static constexpr double kDrainFrames = 48.0;
     std::size_t _max;
-    std::size_t _leftWaiting = 0;       // what waited after the last frame's uploads
+    std::size_t _leftWaiting = 0;  // what waited after the last frame's uploads
     double _meanInflow = 0.0;
-    double _frames = 0.0;               // the window now: frames seen, from kFirstWindow to kWindow
+    double _frames = 0.0;  // the window now: frames seen, from kFirstWindow to kWindow
 };
 
 }  // namespace cavewall::walls

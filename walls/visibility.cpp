@@ -67,7 +67,8 @@ bool partlyBehind(const scenes::Cell& cell, const scenes::VirtualWall& w, int si
 
 // Convex hull (Andrew's monotone chain) of a few points.
 Polygon2 hull(std::vector<glm::dvec2> pts) {
-    std::sort(pts.begin(), pts.end(), [](glm::dvec2 a, glm::dvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    std::sort(pts.begin(), pts.end(),
+              [](glm::dvec2 a, glm::dvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     if (pts.size() < 3) return pts;
     Polygon2 h(2 * pts.size());
     std::size_t k = 0;
@@ -99,8 +100,10 @@ std::vector<bool> cellsShownThrough(const VisibilityTable& table, int viewer, in
 // rectangle's size) so that a box classify() finds crossing the rectangle always overlaps it.
 scenes::Bounds rectangleBox(const display::ScreenQuad& q) {
     scenes::Bounds b;
-    for (const glm::dvec3& p : {q.lowerLeft, q.lowerRight, q.upperLeft, q.lowerRight + (q.upperLeft - q.lowerLeft)}) b.add(p);
-    const double margin = 1e-6 + 1e-9 * glm::length(b.size()) + 1e-12 * glm::length(glm::max(glm::abs(b.min), glm::abs(b.max)));
+    for (const glm::dvec3& p : {q.lowerLeft, q.lowerRight, q.upperLeft, q.lowerRight + (q.upperLeft - q.lowerLeft)})
+        b.add(p);
+    const double margin =
+        1e-6 + 1e-9 * glm::length(b.size()) + 1e-12 * glm::length(glm::max(glm::abs(b.min), glm::abs(b.max)));
     b.min -= glm::dvec3(margin);
     b.max += glm::dvec3(margin);
     return b;
@@ -115,19 +118,19 @@ bool overlaps(const scenes::Bounds& a, const scenes::Bounds& b) {
 
 const char* toString(CellVisibility v) {
     switch (v) {
-    case CellVisibility::Hidden: return "hidden";
-    case CellVisibility::Geometry: return "geometry";
-    case CellVisibility::Texture: return "texture";
+        case CellVisibility::Hidden: return "hidden";
+        case CellVisibility::Geometry: return "geometry";
+        case CellVisibility::Texture: return "texture";
     }
     return "?";
 }
 
 const char* toString(Placement p) {
     switch (p) {
-    case Placement::Behind: return "behind";
-    case Placement::Intersecting: return "intersecting";
-    case Placement::InFront: return "in front";
-    case Placement::Beside: return "beside";
+        case Placement::Behind: return "behind";
+        case Placement::Intersecting: return "intersecting";
+        case Placement::InFront: return "in front";
+        case Placement::Beside: return "beside";
     }
     return "?";
 }
@@ -171,7 +174,9 @@ std::vector<std::array<glm::dvec2, 2>> cellBoxes(const scenes::SceneDescription&
 
 }  // namespace
 
-double openBoundaryLength(const scenes::SceneDescription& d, int a, int b) { return openLength(d, allFootprints(d), a, b); }
+double openBoundaryLength(const scenes::SceneDescription& d, int a, int b) {
+    return openLength(d, allFootprints(d), a, b);
+}
 
 VisibilityTable computeVisibility(const scenes::SceneDescription& d) {
     const int n = int(d.cells.size());
@@ -192,7 +197,8 @@ VisibilityTable computeVisibility(const scenes::SceneDescription& d) {
         }
     for (int a = 0; a < n; ++a) passable[a] = open[a];
     for (const auto& w : d.walls)
-        if (w.cells[0] >= 0 && w.cells[1] >= 0) passable[w.cells[0]].push_back(w.cells[1]), passable[w.cells[1]].push_back(w.cells[0]);
+        if (w.cells[0] >= 0 && w.cells[1] >= 0)
+            passable[w.cells[0]].push_back(w.cells[1]), passable[w.cells[1]].push_back(w.cells[0]);
     auto flood = [&](int start, const std::vector<std::vector<int>>& links, const std::vector<bool>& blocked) {
         std::vector<bool> seen(n, false);
         std::deque<int> queue{start};
@@ -238,7 +244,9 @@ Placement classify(const scenes::Bounds& box, const display::ScreenQuad& wall, i
     if (lo >= 0) return Placement::InFront;
     // The box's cross-section with the plane, in wall coordinates, against the rectangle.
     std::vector<glm::dvec2> section;
-    auto toWall = [&](glm::dvec3 p) { return glm::dvec2(glm::dot(p - wall.lowerLeft, b.right), glm::dot(p - wall.lowerLeft, b.up)); };
+    auto toWall = [&](glm::dvec3 p) {
+        return glm::dvec2(glm::dot(p - wall.lowerLeft, b.right), glm::dot(p - wall.lowerLeft, b.up));
+    };
     for (int i = 0; i < 8; ++i) {
         if (dist[i] == 0) section.push_back(toWall(corners[i]));
         for (int axis = 1; axis <= 4; axis <<= 1) {
@@ -250,8 +258,7 @@ Placement classify(const scenes::Bounds& box, const display::ScreenQuad& wall, i
     const Polygon2 h = hull(section);
     const Polygon2 inside = clipBox(h, {0, 0}, {b.width, b.height});
     bool touches = !inside.empty();
-    for (const glm::dvec2& p : h)
-        touches = touches || (p.x >= 0 && p.x <= b.width && p.y >= 0 && p.y <= b.height);
+    for (const glm::dvec2& p : h) touches = touches || (p.x >= 0 && p.x <= b.width && p.y >= 0 && p.y <= b.height);
     return touches ? Placement::Intersecting : Placement::Beside;
 }
 
@@ -283,7 +290,8 @@ WallContents wallContents(const scenes::Scene& scene, const scenes::SceneDescrip
         out.baked.push_back(i);
         double nearest = std::numeric_limits<double>::infinity();
         for (int c = 0; c < 8; ++c) {
-            const glm::dvec3 corner{c & 1 ? o.worldBounds.max.x : o.worldBounds.min.x, c & 2 ? o.worldBounds.max.y : o.worldBounds.min.y,
+            const glm::dvec3 corner{c & 1 ? o.worldBounds.max.x : o.worldBounds.min.x,
+                                    c & 2 ? o.worldBounds.max.y : o.worldBounds.min.y,
                                     c & 4 ? o.worldBounds.max.z : o.worldBounds.min.z};
             out.depthBehind = std::max(out.depthBehind, -signedDistance(corner, q, b, side));
             nearest = std::min(nearest, std::max(0.0, -signedDistance(corner, q, b, side)));

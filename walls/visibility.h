@@ -22,8 +22,8 @@ const char* toString(CellVisibility v);
 
 struct VisibilityTable {
     int cellCount = 0;
-    std::vector<CellVisibility> entries;   // [from * cellCount + to]
-    std::vector<std::vector<int>> walls;   // [from * cellCount + to]: walls whose textures show `to`
+    std::vector<CellVisibility> entries;  // [from * cellCount + to]
+    std::vector<std::vector<int>> walls;  // [from * cellCount + to]: walls whose textures show `to`
 
     CellVisibility at(int from, int to) const { return entries[std::size_t(from) * cellCount + to]; }
     const std::vector<int>& throughWalls(int from, int to) const { return walls[std::size_t(from) * cellCount + to]; }
@@ -47,11 +47,11 @@ const char* toString(Placement p);
 Placement classify(const scenes::Bounds& bounds, const display::ScreenQuad& wall, int side);
 
 struct WallContents {
-    std::vector<int> baked;          // object indices in the wall's texture for this side
-    std::vector<int> intersecting;   // content objects crossing the wall (drawn as geometry)
-    double depthBehind = 0.0;        // metres: deepest baked box corner behind the plane
-    double depthNear = 0.0;          // metres: nearest baked box corner behind the plane (>= 0;
-                                     // 0 when nothing is baked)
+    std::vector<int> baked;         // object indices in the wall's texture for this side
+    std::vector<int> intersecting;  // content objects crossing the wall (drawn as geometry)
+    double depthBehind = 0.0;       // metres: deepest baked box corner behind the plane
+    double depthNear = 0.0;         // metres: nearest baked box corner behind the plane (>= 0;
+                                    // 0 when nothing is baked)
 };
 
 // What the textures of `wall` seen from `side` show: content objects behind the plane whose

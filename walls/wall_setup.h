@@ -17,7 +17,7 @@
 namespace cavewall::walls {
 
 struct WallSetup {
-    Plan plan;                    // Plan::options as given; PlannedWall::depthBehind assigned
+    Plan plan;  // Plan::options as given; PlannedWall::depthBehind assigned
     VisibilityTable table;
     // What each wall side shows, by (wall, side): every side with a cell in front of it.
     std::map<std::pair<int, int>, WallContents> contents;

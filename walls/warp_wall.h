@@ -12,9 +12,9 @@
 namespace cavewall::walls {
 
 struct WarpWall {
-    display::ScreenQuad quad;      // world frame, as seen from the texture's side (quadSeenFrom)
-    glm::dvec3 samplingPoint{0.0}; // world, of the texture the structure is warped to
-    int cell = -1;                 // also draw this cell's objects warped (warp-morph); -1: structure only
+    display::ScreenQuad quad;       // world frame, as seen from the texture's side (quadSeenFrom)
+    glm::dvec3 samplingPoint{0.0};  // world, of the texture the structure is warped to
+    int cell = -1;                  // also draw this cell's objects warped (warp-morph); -1: structure only
 };
 
 inline constexpr double kWarpTextureNear = 0.05;  // the baker's near plane (walls/gl/wall_renderer.h)

@@ -40,8 +40,10 @@ ZoneIndex::ZoneIndex(const Plan& plan) {
             for (int z = s.firstZone; z < s.firstZone + s.zoneCount; ++z) {
                 glm::dvec2 zl, zh;
                 bounds(_polygons[z], zl, zh);
-                const glm::ivec2 a = glm::clamp(glm::ivec2(glm::floor((zl - lo) / g.square)), glm::ivec2(0), g.count - 1);
-                const glm::ivec2 b = glm::clamp(glm::ivec2(glm::floor((zh - lo) / g.square)), glm::ivec2(0), g.count - 1);
+                const glm::ivec2 a =
+                    glm::clamp(glm::ivec2(glm::floor((zl - lo) / g.square)), glm::ivec2(0), g.count - 1);
+                const glm::ivec2 b =
+                    glm::clamp(glm::ivec2(glm::floor((zh - lo) / g.square)), glm::ivec2(0), g.count - 1);
                 for (int y = a.y; y <= b.y; ++y)
                     for (int x = a.x; x <= b.x; ++x) g.squares[std::size_t(y) * g.count.x + x].push_back(z);
             }

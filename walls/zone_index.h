@@ -21,12 +21,12 @@ private:
     struct SideGrid {
         int cell = 0, wall = 0;
         glm::dvec2 origin{0.0};
-        double square = 1.0;              // metres per grid square
+        double square = 1.0;  // metres per grid square
         glm::ivec2 count{0};
         std::vector<std::vector<int>> squares;  // zone ids per square, row-major
     };
     std::vector<SideGrid> _sides;
-    std::vector<Polygon2> _polygons;      // by zone id
+    std::vector<Polygon2> _polygons;  // by zone id
 };
 
 }  // namespace cavewall::walls

@@ -10,26 +10,26 @@ namespace cavewall::walls {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kMinPieceArea = 1e-8;  // m²; slivers from clipping are dropped
+constexpr double kMinPieceArea = 1e-8;             // m²; slivers from clipping are dropped
 constexpr double kNearerSampling[] = {0.75, 0.5};  // share of the core kept, nearest the wall
 constexpr double kMaxBorderTries = 32;             // geometry borders tried after the first
 constexpr double kCutPrecision = 1e-3;             // metres: column borders of the planned rows
 
 struct Row {
     double a = 0, b = 0;
-    double dLo = 0, dHi = 0;            // the extended (validated) depth range
-    std::vector<double> cuts;           // column borders (s)
-    std::vector<glm::dvec3> samples;    // one per column
+    double dLo = 0, dHi = 0;          // the extended (validated) depth range
+    std::vector<double> cuts;         // column borders (s)
+    std::vector<glm::dvec3> samples;  // one per column
 };
 
 struct Context {
     const SideInput& in;
-    Polygon2 cell;                      // local (s, d)
+    Polygon2 cell;  // local (s, d)
     double alpha, blend, minSize;
     double sLo, sHi, dMin, dMax;
     const PlanOptions* options = nullptr;
-    glm::dvec2 span{0.0, kInf};         // the wall's depth span (depth walls)
-    bool flatBound = false;             // prove with the flat bound whatever the wall kind
+    glm::dvec2 span{0.0, kInf};  // the wall's depth span (depth walls)
+    bool flatBound = false;      // prove with the flat bound whatever the wall kind
 
     // Is the volume proven within alpha for the texture baked from `sample`?
     bool proven(const ZoneVolume& volume, glm::dvec3 sample) const {
@@ -58,7 +58,8 @@ struct Context {
         // the zone often serves the whole zone when the centroid does not.
         for (double f : kNearerSampling) {
             const double d = glm::dot(in.frame.toLocal({sample->x, sample->z}), glm::dvec2(0, 1));
-            const Polygon2 nearer = clipBox(core.empty() ? ext : core, {-kInf, -kInf}, {kInf, row.a + f * (d - row.a) * 2});
+            const Polygon2 nearer =
+                clipBox(core.empty() ? ext : core, {-kInf, -kInf}, {kInf, row.a + f * (d - row.a) * 2});
             if (nearer.empty()) continue;
             const glm::dvec3 s = sampling(nearer);
             if (proven(volume, s)) return *sample = s, true;
@@ -114,7 +115,8 @@ std::optional<Row> greedyColumns(const Context& c, Row row, double sLo, double s
             if (c.valid(row, left, mid, &trial)) {
                 good = mid;
                 goodSample = trial;
-            } else bad = mid;
+            } else
+                bad = mid;
         }
         row.cuts.push_back(good);
         row.samples.push_back(goodSample);
@@ -128,7 +130,8 @@ std::optional<Row> equalColumns(const Context& c, Row row, double sLo, double sH
     for (int k = 1; k < n; ++k) row.cuts.push_back(sLo + (sHi - sLo) * k / n);
     for (int k = 0; k < n; ++k) {
         glm::dvec3 sample;
-        if (!c.valid(row, k == 0 ? -kInf : row.cuts[k - 1], k + 1 == n ? kInf : row.cuts[k], &sample)) return std::nullopt;
+        if (!c.valid(row, k == 0 ? -kInf : row.cuts[k - 1], k + 1 == n ? kInf : row.cuts[k], &sample))
+            return std::nullopt;
         row.samples.push_back(sample);
     }
     return row;
@@ -171,9 +174,8 @@ std::optional<std::vector<Row>> planRows(const Context& c, double start, bool ge
             if (b >= c.dMax) break;
         }
         std::vector<std::optional<Row>> candidates(ends.size());
-        parallelFor(int(ends.size()), [&](int i) {
-            candidates[i] = planRow(c, makeRow(c, a, ends[i], geometryBelow, rows.empty()));
-        });
+        parallelFor(int(ends.size()),
+                    [&](int i) { candidates[i] = planRow(c, makeRow(c, a, ends[i], geometryBelow, rows.empty())); });
         std::optional<Row> best;
         double bestScore = -1;
         for (std::size_t i = 0; i < ends.size(); ++i) {
@@ -200,7 +202,7 @@ bool firstRowFeasible(const Context& c, double d) {
 struct Layout {
     bool geometryBelow = false;
     double dG = 0;
-    std::vector<Row> rows;              // empty: the whole cell is geometry
+    std::vector<Row> rows;  // empty: the whole cell is geometry
 };
 
 Layout layout(const Context& c) {
@@ -299,7 +301,8 @@ struct Emitter {
 };
 
 Context contextOf(const Plan& plan, const SideInput& in) {
-    Context c{in, {}, glm::radians(plan.options.alphaDeg), plan.options.blendWidth, plan.options.minZoneSize, 0, 0, 0, 0};
+    Context c{in, {}, glm::radians(plan.options.alphaDeg), plan.options.blendWidth, plan.options.minZoneSize, 0, 0,
+              0,  0};
     c.options = &plan.options;
     c.span = {plan.walls[in.wall].depthNear, plan.walls[in.wall].depthBehind};
     for (const glm::dvec2& p : in.cellRegion) c.cell.push_back(in.frame.toLocal(p));

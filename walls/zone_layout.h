@@ -9,9 +9,9 @@ namespace cavewall::walls {
 
 // The wall's floor frame as seen from one side.
 struct SideFrame {
-    glm::dvec2 origin{0.0};      // the wall's lower-left corner (x, z)
-    glm::dvec2 along{1.0, 0.0};  // unit, along the footprint
-    glm::dvec2 inward{0.0, 1.0}; // unit, towards the viewing cell
+    glm::dvec2 origin{0.0};       // the wall's lower-left corner (x, z)
+    glm::dvec2 along{1.0, 0.0};   // unit, along the footprint
+    glm::dvec2 inward{0.0, 1.0};  // unit, towards the viewing cell
 
     glm::dvec2 toLocal(glm::dvec2 p) const { return {glm::dot(p - origin, along), glm::dot(p - origin, inward)}; }
     glm::dvec2 toWorld(glm::dvec2 l) const { return origin + l.x * along + l.y * inward; }
@@ -20,7 +20,7 @@ struct SideFrame {
 struct SideInput {
     int cell = 0, wall = 0, side = 0;
     SideFrame frame;
-    Polygon2 cellRegion;         // world (x, z)
+    Polygon2 cellRegion;  // world (x, z)
     ScreenQuad quad;
     glm::dvec2 heightRange{1.2, 2.0};
 };

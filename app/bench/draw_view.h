@@ -22,10 +22,10 @@ namespace cavewall::bench {
 inline constexpr double kOsgViewerFovDeg = 29.148;  // 2 atan(0.13 / 0.5), degrees
 
 struct HomeView {
-    glm::dvec3 eye{0.0};             // world, metres
-    double distance = 0.0;           // eye to the bounding sphere's centre, metres
-    double radius = 0.0;             // of the bounding sphere, metres
-    display::ScreenQuad screen;      // world; 1 m in front of the eye, symmetric about the view axis
+    glm::dvec3 eye{0.0};         // world, metres
+    double distance = 0.0;       // eye to the bounding sphere's centre, metres
+    double radius = 0.0;         // of the bounding sphere, metres
+    display::ScreenQuad screen;  // world; 1 m in front of the eye, symmetric about the view axis
 };
 
 // The home view of `bounds` (world, Y-up; not empty) for a symmetric frustum of
@@ -36,10 +36,10 @@ HomeView osgHomeView(const scenes::Bounds& bounds, double verticalFovDeg = kOsgV
 // viewer sees; process CPU time (every thread, llvmpipe's included) is what the frame cost,
 // and holds still when other processes share the cores.
 struct DrawTiming {
-    double medianMs = 0.0, p90Ms = 0.0;   // wall clock, nearest-rank (display/timing.h)
-    double cpuMedianMs = 0.0;             // process CPU time per frame, median
-    double mtrianglesPerS = 0.0;          // triangles submitted per frame / median, millions
-    double mpixelsPerS = 0.0;             // pixels of the view per frame / median, millions
+    double medianMs = 0.0, p90Ms = 0.0;  // wall clock, nearest-rank (display/timing.h)
+    double cpuMedianMs = 0.0;            // process CPU time per frame, median
+    double mtrianglesPerS = 0.0;         // triangles submitted per frame / median, millions
+    double mpixelsPerS = 0.0;            // pixels of the view per frame / median, millions
 };
 
 // `frameMs` (wall, at least one) and `cpuMs` (process CPU time, may be empty) of frames that

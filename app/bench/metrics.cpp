@@ -64,8 +64,10 @@ void ErrorPool::addFrame(std::int64_t frame, const std::vector<ComparedImage>& i
             s->pixels += flip.errors.size();
             s->flipSum += flip.mean * static_cast<double>(flip.errors.size());
             for (float v : flip.errors) {
-                if (v <= 0.0f) ++s->flipZeros;
-                else ++s->flipHistogram[std::min(kFlipBins - 1, static_cast<std::size_t>(v * kFlipBins))];
+                if (v <= 0.0f)
+                    ++s->flipZeros;
+                else
+                    ++s->flipHistogram[std::min(kFlipBins - 1, static_cast<std::size_t>(v * kFlipBins))];
             }
         }
         if (_worst.frame < 0 || flip.mean > _worst.mean) {
@@ -126,7 +128,8 @@ std::vector<std::size_t> paretoFront(const std::vector<TradeOff>& points) {
         }
         if (!dominated) front.push_back(i);
     }
-    std::stable_sort(front.begin(), front.end(), [&](std::size_t a, std::size_t b) { return points[a].time < points[b].time; });
+    std::stable_sort(front.begin(), front.end(),
+                     [&](std::size_t a, std::size_t b) { return points[a].time < points[b].time; });
     return front;
 }
 

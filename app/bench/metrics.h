@@ -41,35 +41,35 @@ using metrics::psnrFromMse;
 
 // A set of comparisons, summarised.
 struct ImageError {
-    std::size_t frames = 0;   // compared frames
-    double mse = 0.0;         // pooled over R, G, B of every compared pixel, [0, 1] units
-    double rmse = 0.0;        // sqrt(mse)
+    std::size_t frames = 0;  // compared frames
+    double mse = 0.0;        // pooled over R, G, B of every compared pixel, [0, 1] units
+    double rmse = 0.0;       // sqrt(mse)
     double psnrDb = std::numeric_limits<double>::infinity();  // pooled: the headline
     double worstFramePsnrDb = std::numeric_limits<double>::infinity();
-    std::int64_t worstFrame = -1;                              // its frame; -1 without frames
+    std::int64_t worstFrame = -1;                                    // its frame; -1 without frames
     double p5FramePsnrDb = std::numeric_limits<double>::infinity();  // 5th percentile per frame
-    double meanPsnrDb = kQuantisationPsnrDb;  // labelled only: capped mean of per-frame PSNRs
-    double ssim = 1.0;        // mean over compared images, 1 = identical
-    double flipMean = 0.0;    // over all compared pixels, [0, 1]
-    double flipP95 = 0.0;     // nearest-rank over all compared pixels (histogram, see above)
+    double meanPsnrDb = kQuantisationPsnrDb;                         // labelled only: capped mean of per-frame PSNRs
+    double ssim = 1.0;                                               // mean over compared images, 1 = identical
+    double flipMean = 0.0;                                           // over all compared pixels, [0, 1]
+    double flipP95 = 0.0;  // nearest-rank over all compared pixels (histogram, see above)
     double poppingPeak = 0.0, poppingRms = 0.0;
 };
 
 // One image of a compared frame. The images are only read during ErrorPool::addFrame.
 struct ComparedImage {
-    int screen = 0;                   // index of the display screen, < the pool's screen count
-    int image = 0;                    // eye (RenderTargets image index)
+    int screen = 0;  // index of the display screen, < the pool's screen count
+    int image = 0;   // eye (RenderTargets image index)
     const scenes::Image* test = nullptr;
     const scenes::Image* reference = nullptr;
-    double pixelsPerDegree = 0.0;     // FLIP's angular resolution for this image, in [1, 1000]
+    double pixelsPerDegree = 0.0;  // FLIP's angular resolution for this image, in [1, 1000]
 };
 
 // The worst image's FLIP map.
 struct FlipMap {
-    scenes::Image image;              // metrics::flipErrorImage; empty when nothing was compared
+    scenes::Image image;  // metrics::flipErrorImage; empty when nothing was compared
     std::int64_t frame = -1;
     int screen = -1, eye = 0;
-    double mean = 0.0;                // that image's FLIP mean
+    double mean = 0.0;  // that image's FLIP mean
 };
 
 // Accumulates a mode's compared frames (see the header comment).
@@ -81,7 +81,7 @@ public:
     // its reference differ in size; a screen out of range is a programmer error (assert).
     void addFrame(std::int64_t frame, const std::vector<ComparedImage>& images);
 
-    ImageError result() const;                      // all screens
+    ImageError result() const;  // all screens
     ImageError screenResult(std::size_t screen) const;
     const FlipMap& worstFlip() const { return _worst; }
 

@@ -14,8 +14,8 @@ double pathLength(const std::vector<glm::dvec3>& points) {
     return length;
 }
 
-EyePath recordEyePath(const scenes::Scene& scene, const scenes::SceneDescription& d, const config::DisplayConfig& display,
-                      const std::string& trackerSpec, long frames) {
+EyePath recordEyePath(const scenes::Scene& scene, const scenes::SceneDescription& d,
+                      const config::DisplayConfig& display, const std::string& trackerSpec, long frames) {
     std::vector<glm::dvec3> floorPath;
     for (const glm::dvec3& p : d.walkPath) floorPath.push_back(p - glm::dvec3(0.0, d.eyeHeight, 0.0));
     const bool guided = floorPath.size() >= 2;

@@ -21,7 +21,7 @@ namespace cavewall::bench {
 
 struct EyePath {
     std::vector<walkthrough::FrameInput> frames;  // readImages false; no hand cursor
-    std::string description;             // one line for the report header
+    std::string description;                      // one line for the report header
 };
 
 // Throws cavewall::Error for a bad tracker spec.

@@ -11,9 +11,9 @@ namespace {
 
 // 3x5 glyphs, one row per 3 bits (bit 2 = left column), top row first.
 const unsigned char* glyph(char c) {
-    static const unsigned char kDigits[10][5] = {
-        {7, 5, 5, 5, 7}, {2, 6, 2, 2, 7}, {7, 1, 7, 4, 7}, {7, 1, 7, 1, 7}, {5, 5, 7, 1, 1},
-        {7, 4, 7, 1, 7}, {7, 4, 7, 5, 7}, {7, 1, 1, 1, 1}, {7, 5, 7, 5, 7}, {7, 5, 7, 1, 7}};
+    static const unsigned char kDigits[10][5] = {{7, 5, 5, 5, 7}, {2, 6, 2, 2, 7}, {7, 1, 7, 4, 7}, {7, 1, 7, 1, 7},
+                                                 {5, 5, 7, 1, 1}, {7, 4, 7, 1, 7}, {7, 4, 7, 5, 7}, {7, 1, 1, 1, 1},
+                                                 {7, 5, 7, 5, 7}, {7, 5, 7, 1, 7}};
     static const unsigned char kDot[5] = {0, 0, 0, 0, 2}, kMinus[5] = {0, 0, 7, 0, 0}, kE[5] = {7, 4, 7, 4, 7},
                                kPlus[5] = {0, 2, 7, 2, 0};
     if (c >= '0' && c <= '9') return kDigits[c - '0'];
@@ -42,7 +42,8 @@ void drawLine(scenes::Image& image, int x0, int y0, int x1, int y1, const unsign
     const int steps = std::max(std::abs(x1 - x0), std::abs(y1 - y0));
     for (int i = 0; i <= steps; ++i) {
         const double t = steps ? static_cast<double>(i) / steps : 0.0;
-        setPixel(image, static_cast<int>(std::lround(x0 + t * (x1 - x0))), static_cast<int>(std::lround(y0 + t * (y1 - y0))), rgb);
+        setPixel(image, static_cast<int>(std::lround(x0 + t * (x1 - x0))),
+                 static_cast<int>(std::lround(y0 + t * (y1 - y0))), rgb);
     }
 }
 
@@ -108,7 +109,8 @@ Axes drawAxes(scenes::Image& image, int left, int right, int top, int bottom, do
 scenes::Image plotTradeOff(const std::vector<PlotPoint>& points, int width, int height) {
     assert(width >= 160 && height >= 120);
     static const unsigned char kWhite[3] = {255, 255, 255}, kBlue[3] = {40, 90, 200}, kRed[3] = {210, 30, 30};
-    scenes::Image image{"bench.png", width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4)};
+    scenes::Image image{"bench.png", width, height,
+                        std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4)};
     fillRect(image, 0, 0, width, height, kWhite);
     const int left = 56, right = width - 20, top = 16, bottom = height - 36;
     double maxX = 0.0, maxY = 0.0;
@@ -142,7 +144,8 @@ scenes::Image plotSeries(const std::vector<PlotSeries>& series, int width, int h
     assert(width >= 160 && height >= 120);
     static const unsigned char kWhite[3] = {255, 255, 255};
     static const unsigned char kColours[4][3] = {{40, 90, 200}, {210, 30, 30}, {30, 150, 60}, {230, 130, 20}};
-    scenes::Image image{"plot.png", width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4)};
+    scenes::Image image{"plot.png", width, height,
+                        std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4)};
     fillRect(image, 0, 0, width, height, kWhite);
     const int left = 64, right = width - 40, top = 16, bottom = height - 36;
     double maxX = 0.0, maxY = 0.0;
@@ -162,7 +165,8 @@ scenes::Image plotSeries(const std::vector<PlotSeries>& series, int width, int h
         std::sort(points.begin(), points.end(), [](const PlotPoint& a, const PlotPoint& b) { return a.x < b.x; });
         for (std::size_t i = 0; i < points.size(); ++i) {
             fillRect(image, px(points[i].x) - 3, py(points[i].y) - 3, 7, 7, colour);
-            if (i > 0) drawLine(image, px(points[i - 1].x), py(points[i - 1].y), px(points[i].x), py(points[i].y), colour);
+            if (i > 0)
+                drawLine(image, px(points[i - 1].x), py(points[i - 1].y), px(points[i].x), py(points[i].y), colour);
         }
         if (!points.empty())
             drawText(image, px(points.back().x) + 6, py(points.back().y) - 12, std::to_string(s.label), 2, colour);

@@ -12,9 +12,9 @@
 namespace cavewall::bench {
 
 struct PlotPoint {
-    double x = 0.0, y = 0.0;   // finite; frame ms and RMSE
-    int label = 0;             // drawn next to the point
-    bool front = false;        // on the Pareto front
+    double x = 0.0, y = 0.0;  // finite; frame ms and RMSE
+    int label = 0;            // drawn next to the point
+    bool front = false;       // on the Pareto front
 };
 
 // An opaque RGBA image of `width` x `height` pixels (at least 160 x 120).

@@ -32,14 +32,16 @@ void checkPrivateCache(const fs::path& folder, const fs::path& sharedCache) {
     const fs::path shared = resolved(sharedCache);
     if (within(mine, shared) || within(shared, mine))
         throw Error("on-demand cache " + folder.string() + ": expected a folder apart from the shared bake cache " +
-                    sharedCache.string() + ", got " + (within(mine, shared) ? "the cache or a folder inside it"
-                                                                              : "a folder that holds it"));
+                    sharedCache.string() + ", got " +
+                    (within(mine, shared) ? "the cache or a folder inside it" : "a folder that holds it"));
     if (fs::exists(mine)) {
         if (!fs::is_directory(mine))
             throw Error("on-demand cache " + folder.string() + ": expected a folder, got a file");
         if (!fs::is_empty(mine) && !fs::exists(mine / kPrivateCacheMarker))
-            throw Error("on-demand cache " + folder.string() + ": expected an empty folder or an earlier on-demand "
-                        "cache (with " + kPrivateCacheMarker + "), got a folder with other files; not deleting it");
+            throw Error("on-demand cache " + folder.string() +
+                        ": expected an empty folder or an earlier on-demand "
+                        "cache (with " +
+                        kPrivateCacheMarker + "), got a folder with other files; not deleting it");
     }
 }
 

@@ -29,9 +29,10 @@ void writeText(const std::filesystem::path& file, const std::string& text) {
 }
 
 std::string screensCsv(const BenchReport& report) {
-    std::string out = "mode,alpha_deg,transition,screen,psnr_db,rmse,ssim,cpu_ms_p50,cpu_ms_p95,cpu_ms_p99,triangles,"
-                      "draw_calls,lod_px,triangle_budget,worst_frame_psnr_db,p5_frame_psnr_db,capped_mean_psnr_db,"
-                      "flip_mean,flip_p95,popping_peak,popping_rms\n";
+    std::string out =
+        "mode,alpha_deg,transition,screen,psnr_db,rmse,ssim,cpu_ms_p50,cpu_ms_p95,cpu_ms_p99,triangles,"
+        "draw_calls,lod_px,triangle_budget,worst_frame_psnr_db,p5_frame_psnr_db,capped_mean_psnr_db,"
+        "flip_mean,flip_p95,popping_peak,popping_rms\n";
     for (const ModeResult& m : report.modes)
         for (const ScreenResult& s : m.screens) {
             const ImageError& e = s.error;
@@ -50,7 +51,8 @@ std::string screensCsv(const BenchReport& report) {
 // The first mode named `mode` drawing at the same level-of-detail tolerance as `like`.
 const ModeResult* findMode(const BenchReport& report, Mode mode, const ModeResult& like) {
     for (const ModeResult& m : report.modes)
-        if (m.mode == mode && m.lodPixels == like.lodPixels && m.triangleBudget == 0 && m.frameBudgetMs == 0.0) return &m;
+        if (m.mode == mode && m.lodPixels == like.lodPixels && m.triangleBudget == 0 && m.frameBudgetMs == 0.0)
+            return &m;
     return nullptr;
 }
 
@@ -89,8 +91,8 @@ std::optional<std::string> layerLine(const BenchReport& report) {
     const ModeResult* layer = findMode(report, Mode::CellsLayer, *control);
     const ModeResult* near = findMode(report, Mode::Near, *control);
     if (!layer || !near) return std::nullopt;
-    return "the limit (near geometry and bare wall quads) takes " + num(near->frameMs.p50, 3) +
-           " ms (p50) against " + num(layer->frameMs.p50, 3) + " ms for the control plus one textured full-screen layer (" +
+    return "the limit (near geometry and bare wall quads) takes " + num(near->frameMs.p50, 3) + " ms (p50) against " +
+           num(layer->frameMs.p50, 3) + " ms for the control plus one textured full-screen layer (" +
            num(control->frameMs.p50, 3) + " ms without the layer)";
 }
 
@@ -107,10 +109,10 @@ std::vector<std::string> wallsFigureLines(const BenchReport& report) {
             ++wallsModes;
         }
     if (wallsModes > 0)
-        lines.push_back("figures: textures drawn over alpha in " + std::to_string(wallsModes) + " walls modes: " +
-                        std::to_string(overAlpha));
-    const ModeResult* best = nullptr;      // fastest eligible
-    const ModeResult* closest = nullptr;   // best pooled PSNR among the candidates
+        lines.push_back("figures: textures drawn over alpha in " + std::to_string(wallsModes) +
+                        " walls modes: " + std::to_string(overAlpha));
+    const ModeResult* best = nullptr;     // fastest eligible
+    const ModeResult* closest = nullptr;  // best pooled PSNR among the candidates
     for (const ModeResult& m : report.modes) {
         if (m.mode != Mode::Walls || m.alphaDeg > kAlpha || m.lodPixels <= 0.0 || !m.sceneTag.empty() || m.onDemand)
             continue;
@@ -122,9 +124,11 @@ std::vector<std::string> wallsFigureLines(const BenchReport& report) {
         return lines;
     }
     if (!best) {
-        lines.push_back("figures: no walls mode at alpha <= 10 with levels of detail reaches a pooled PSNR >= 32 dB; "
-                        "the closest, " + modeLabel(*closest) + ", has " + num(closest->error.psnrDb, 3) +
-                        " dB pooled at a speed-up of " + num(closest->speedup, 3));
+        lines.push_back(
+            "figures: no walls mode at alpha <= 10 with levels of detail reaches a pooled PSNR >= 32 dB; "
+            "the closest, " +
+            modeLabel(*closest) + ", has " + num(closest->error.psnrDb, 3) + " dB pooled at a speed-up of " +
+            num(closest->speedup, 3));
         best = closest;
     } else {
         lines.push_back("figures: fastest walls mode at alpha <= 10 with levels of detail and pooled PSNR >= 32 dB: " +
@@ -133,8 +137,9 @@ std::vector<std::string> wallsFigureLines(const BenchReport& report) {
                         " dB)");
     }
     if (!std::isnan(best->flipRatio))
-        lines.push_back("figures: its FLIP mean is " + num(best->flipRatio, 3) + "x the control's (cells, no textures; " +
-                        num(best->error.flipMean, 3) + " against " + num(controlMode(report)->error.flipMean, 3) + ")");
+        lines.push_back("figures: its FLIP mean is " + num(best->flipRatio, 3) +
+                        "x the control's (cells, no textures; " + num(best->error.flipMean, 3) + " against " +
+                        num(controlMode(report)->error.flipMean, 3) + ")");
     const double ratio = best->frameMs.p50 > 0 ? best->frameMs.p99 / best->frameMs.p50 : 0.0;
     std::string stability = "figures: its frame time p99/p50 is " + num(ratio, 3);
     stability += noiseFloorClause(ratio, report.noiseFloorRatio);
@@ -183,13 +188,12 @@ std::vector<std::string> compareLines(const BenchReport& report) {
         const ModeResult* own = ownSceneMode(report, m);
         if (!own || own->speedup <= 0.0) continue;
         const double ratio = m.speedup / own->speedup;
-        lines.push_back("figures: " + modeLabel(m) + " against " + modeLabel(*own) + ": speed-up " +
-                        num(m.speedup, 3) + " against " + num(own->speedup, 3) + " (ratio " + num(ratio, 3) +
-                        "), PSNR " + num(m.error.psnrDb, 3) + " against " + num(own->error.psnrDb, 3) +
-                        " dB pooled, FLIP mean " + num(m.error.flipMean, 3) +
-                        " against " + num(own->error.flipMean, 3) + ", " + std::to_string(m.textures) + " against " +
-                        std::to_string(own->textures) + " textures, " + num(m.diskMB, 4) + " against " +
-                        num(own->diskMB, 4) + " MB on disk, textures over alpha " +
+        lines.push_back("figures: " + modeLabel(m) + " against " + modeLabel(*own) + ": speed-up " + num(m.speedup, 3) +
+                        " against " + num(own->speedup, 3) + " (ratio " + num(ratio, 3) + "), PSNR " +
+                        num(m.error.psnrDb, 3) + " against " + num(own->error.psnrDb, 3) + " dB pooled, FLIP mean " +
+                        num(m.error.flipMean, 3) + " against " + num(own->error.flipMean, 3) + ", " +
+                        std::to_string(m.textures) + " against " + std::to_string(own->textures) + " textures, " +
+                        num(m.diskMB, 4) + " against " + num(own->diskMB, 4) + " MB on disk, textures over alpha " +
                         std::to_string(m.texturesOverAlpha) + " against " + std::to_string(own->texturesOverAlpha));
     }
     return lines;
@@ -202,15 +206,14 @@ std::vector<std::string> onDemandLines(const BenchReport& report) {
         if (!m.onDemand) continue;
         const OnDemandFigures& f = *m.onDemand;
         const double ratio = m.frameMs.p50 > 0 ? m.frameMs.p99 / m.frameMs.p50 : 0.0;
-        std::string line = "figures: " + modeLabel(m) + " from an empty cache: first frame " +
-                           num(f.firstFrameSeconds, 3) + " s after the scene's load; " +
-                           std::to_string(f.geometryFallbacks) + " geometry fallbacks (wall-frames) in " +
-                           std::to_string(f.fallbackFrames) + " of " + std::to_string(m.frames.size()) +
-                           " frames, the last in frame " + std::to_string(f.fallbacksUntilFrame) + " (counted from 1), " +
-                           num(f.firstQuarterFallbacks, 3) + " per frame in the first quarter and " +
-                           num(f.lastQuarterFallbacks, 3) + " in the last; " + std::to_string(f.texturesBaked) +
-                           " of " + std::to_string(f.texturesMissingAtStart) + " textures baked; frame p99/p50 " +
-                           num(ratio, 3);
+        std::string line =
+            "figures: " + modeLabel(m) + " from an empty cache: first frame " + num(f.firstFrameSeconds, 3) +
+            " s after the scene's load; " + std::to_string(f.geometryFallbacks) +
+            " geometry fallbacks (wall-frames) in " + std::to_string(f.fallbackFrames) + " of " +
+            std::to_string(m.frames.size()) + " frames, the last in frame " + std::to_string(f.fallbacksUntilFrame) +
+            " (counted from 1), " + num(f.firstQuarterFallbacks, 3) + " per frame in the first quarter and " +
+            num(f.lastQuarterFallbacks, 3) + " in the last; " + std::to_string(f.texturesBaked) + " of " +
+            std::to_string(f.texturesMissingAtStart) + " textures baked; frame p99/p50 " + num(ratio, 3);
         line += noiseFloorClause(ratio, report.noiseFloorRatio);
         if (const ModeResult* warm = ownSceneMode(report, m); warm && warm->frameMs.p50 > 0)
             line += "; p50 " + num(m.frameMs.p50, 3) + " ms against " + num(warm->frameMs.p50, 3) + " ms for " +
@@ -263,7 +266,8 @@ std::string clusterBudgetLine(const BenchReport& report, const ModeResult& m) {
     const bool feasible = floor <= m.frameBudgetMs;
     std::vector<double> errors;
     for (const FrameSample& f : m.frames)
-        if (f.predictedFrameMs > 0.0 && f.frameMs > 0.0) errors.push_back(std::abs(f.frameMs - f.predictedFrameMs) / f.frameMs);
+        if (f.predictedFrameMs > 0.0 && f.frameMs > 0.0)
+            errors.push_back(std::abs(f.frameMs - f.predictedFrameMs) / f.frameMs);
     const TimeStats e = timeStats(errors);
     std::string line = "figures: " + modeLabel(m) + ": p50 " + num(m.frameMs.p50, 3) + " ms, p95 " +
                        num(m.frameMs.p95, 3) + " ms = " + num(ratio, 3) + "x the budget";
@@ -324,18 +328,19 @@ std::vector<std::string> figureLines(const BenchReport& report) {
     for (std::string& line : compareLines(report)) lines.push_back(std::move(line));
     for (std::string& line : onDemandLines(report)) lines.push_back(std::move(line));
     if (!report.resolution.empty())
-        for (std::string& line : lines) line = "figures (" + report.resolution + "):" + line.substr(std::string("figures:").size());
+        for (std::string& line : lines)
+            line = "figures (" + report.resolution + "):" + line.substr(std::string("figures:").size());
     return lines;
 }
 
 std::string_view toString(Mode mode) {
     switch (mode) {
-    case Mode::Full: return "full";
-    case Mode::Cells: return "cells";
-    case Mode::CellsLayer: return "cells+layer";
-    case Mode::Near: return "near";
-    case Mode::Walls: return "walls";
-    case Mode::Clusters: return "clusters";
+        case Mode::Full: return "full";
+        case Mode::Cells: return "cells";
+        case Mode::CellsLayer: return "cells+layer";
+        case Mode::Near: return "near";
+        case Mode::Walls: return "walls";
+        case Mode::Clusters: return "clusters";
     }
     return "?";
 }
@@ -346,8 +351,8 @@ std::string transitionLabel(const ModeResult& m) {
 }
 
 std::string modeLabel(const ModeResult& m) {
-    std::string label = m.mode == Mode::Walls ? "walls a=" + num(m.alphaDeg) + " " + transitionLabel(m)
-                                              : std::string(toString(m.mode));
+    std::string label =
+        m.mode == Mode::Walls ? "walls a=" + num(m.alphaDeg) + " " + transitionLabel(m) : std::string(toString(m.mode));
     if (m.lodPixels > 0.0) label += " lod " + num(m.lodPixels) + "px";
     if (m.triangleBudget > 0) label += " budget " + std::to_string(m.triangleBudget);
     if (m.frameBudgetMs > 0.0) label += " frame " + num(m.frameBudgetMs, 3) + "ms";
@@ -369,22 +374,59 @@ std::string csvHeader() {
     return "mode,alpha_deg,transition,frame_ms_p50,frame_ms_p95,frame_ms_p99,speedup,psnr_db,rmse,ssim,max_err_deg,"
            "max_err_px,triangles,draw_calls,textures,disk_mb,gpu_mb,cpu_ms_p50,cpu_ms_p95,cpu_ms_p99,gpu_ms_p50,"
            "gpu_ms_p95,gpu_ms_p99,texels,misses,mean_psnr_db,load_p99_p50,lod_px,triangle_budget,max_lod_err_px,"
-           "mean_lod_tolerance_px,over_budget_frames,frame_budget_ms,worst_frame_psnr_db,p5_frame_psnr_db,flip_mean,flip_p95,"
-           "popping_peak,popping_rms,psnr_gain_db,flip_ratio,over_alpha,uploaded_mb_p50,uploaded_mb_p99,uploaded_mb_mean,"
-           "p95_over_budget,floor_ms,first_frame_s,geometry_fallbacks,fallback_frames,fallbacks_until_frame,textures_baked,scene";
+           "mean_lod_tolerance_px,over_budget_frames,frame_budget_ms,worst_frame_psnr_db,p5_frame_psnr_db,flip_mean,"
+           "flip_p95,"
+           "popping_peak,popping_rms,psnr_gain_db,flip_ratio,over_alpha,uploaded_mb_p50,uploaded_mb_p99,uploaded_mb_"
+           "mean,"
+           "p95_over_budget,floor_ms,first_frame_s,geometry_fallbacks,fallback_frames,fallbacks_until_frame,textures_"
+           "baked,scene";
 }
 
 std::string csvRow(const ModeResult& m) {
-    const double values[] = {m.frameMs.p50, m.frameMs.p95, m.frameMs.p99, m.speedup, m.error.psnrDb, m.error.rmse,
-                             m.error.ssim, m.maxErrDeg, m.maxErrPx, m.triangles, m.drawCalls,
-                             static_cast<double>(m.textures), m.diskMB, m.gpuMB, m.cpuMs.p50, m.cpuMs.p95, m.cpuMs.p99,
-                             m.gpuMs.p50, m.gpuMs.p95, m.gpuMs.p99, m.texels, static_cast<double>(m.misses),
-                             m.error.meanPsnrDb, m.loadRatio, m.lodPixels, static_cast<double>(m.triangleBudget),
-                             m.maxLodErrPx, m.meanLodTolerancePx, static_cast<double>(m.overBudgetFrames),
-                             m.frameBudgetMs, m.error.worstFramePsnrDb, m.error.p5FramePsnrDb, m.error.flipMean,
-                             m.error.flipP95, m.error.poppingPeak, m.error.poppingRms, m.psnrGainDb, m.flipRatio,
-                             static_cast<double>(m.texturesOverAlpha), m.uploadedMB.p50, m.uploadedMB.p99,
-                             m.uploadedMB.mean, p95OverBudget(m), medianFloorMs(m)};
+    const double values[] = {m.frameMs.p50,
+                             m.frameMs.p95,
+                             m.frameMs.p99,
+                             m.speedup,
+                             m.error.psnrDb,
+                             m.error.rmse,
+                             m.error.ssim,
+                             m.maxErrDeg,
+                             m.maxErrPx,
+                             m.triangles,
+                             m.drawCalls,
+                             static_cast<double>(m.textures),
+                             m.diskMB,
+                             m.gpuMB,
+                             m.cpuMs.p50,
+                             m.cpuMs.p95,
+                             m.cpuMs.p99,
+                             m.gpuMs.p50,
+                             m.gpuMs.p95,
+                             m.gpuMs.p99,
+                             m.texels,
+                             static_cast<double>(m.misses),
+                             m.error.meanPsnrDb,
+                             m.loadRatio,
+                             m.lodPixels,
+                             static_cast<double>(m.triangleBudget),
+                             m.maxLodErrPx,
+                             m.meanLodTolerancePx,
+                             static_cast<double>(m.overBudgetFrames),
+                             m.frameBudgetMs,
+                             m.error.worstFramePsnrDb,
+                             m.error.p5FramePsnrDb,
+                             m.error.flipMean,
+                             m.error.flipP95,
+                             m.error.poppingPeak,
+                             m.error.poppingRms,
+                             m.psnrGainDb,
+                             m.flipRatio,
+                             static_cast<double>(m.texturesOverAlpha),
+                             m.uploadedMB.p50,
+                             m.uploadedMB.p99,
+                             m.uploadedMB.mean,
+                             p95OverBudget(m),
+                             medianFloorMs(m)};
     const OnDemandFigures f = m.onDemand.value_or(OnDemandFigures{});
     const double onDemand[] = {f.firstFrameSeconds, static_cast<double>(f.geometryFallbacks),
                                static_cast<double>(f.fallbackFrames), static_cast<double>(f.fallbacksUntilFrame),
@@ -401,8 +443,8 @@ namespace {
 std::string errorCells(const ModeResult& m) {
     const ImageError& e = m.error;
     return num(e.psnrDb, 3) + " (" + num(e.worstFramePsnrDb, 3) + " / " + num(e.p5FramePsnrDb, 3) + ") | " +
-           num(e.meanPsnrDb, 3) + " | " + num(e.rmse, 3) + " | " + num(e.ssim, 3) + " | " + num(e.flipMean, 3) +
-           " / " + num(e.flipP95, 3) + " | " + num(e.poppingPeak, 3) + " / " + num(e.poppingRms, 3) + " | " +
+           num(e.meanPsnrDb, 3) + " | " + num(e.rmse, 3) + " | " + num(e.ssim, 3) + " | " + num(e.flipMean, 3) + " / " +
+           num(e.flipP95, 3) + " | " + num(e.poppingPeak, 3) + " / " + num(e.poppingRms, 3) + " | " +
            (m.mode == Mode::Walls ? num(m.psnrGainDb, 3) + " / " + num(m.flipRatio, 3) : std::string("-")) + " | ";
 }
 
@@ -412,24 +454,26 @@ std::string markdownReport(const BenchReport& report) {
     std::ostringstream md;
     for (const std::string& line : report.header) md << "- " << line << "\n";
     md << "\n| # | mode | frame ms p50 / p95 / p99 | p99/p50 | load p99/p50 | CPU ms p50 | GPU ms p50 | speed-up "
-          "| PSNR dB pooled (worst frame / p5 frame) | capped mean PSNR dB (not ranked) | RMSE | SSIM | FLIP mean / p95 "
+          "| PSNR dB pooled (worst frame / p5 frame) | capped mean PSNR dB (not ranked) | RMSE | SSIM | FLIP mean / "
+          "p95 "
           "| popping peak / RMS | vs control: PSNR gain dB / FLIP ratio | max err deg / px "
-          "| textures over alpha | LOD err px max (tolerance mean) | triangles | draw calls | textures | texels M | disk MB "
+          "| textures over alpha | LOD err px max (tolerance mean) | triangles | draw calls | textures | texels M | "
+          "disk MB "
           "| GPU MB | uploaded MB per frame p50 / p99 |\n"
        << "| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | "
           "---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
     int index = 1;
     for (const ModeResult& m : report.modes) {
         const double ratio = m.frameMs.p50 > 0 ? m.frameMs.p99 / m.frameMs.p50 : 0.0;
-        md << "| " << index++ << " | " << modeLabel(m) << " | " << num(m.frameMs.p50, 3) << " / " << num(m.frameMs.p95, 3)
-           << " / " << num(m.frameMs.p99, 3) << " | " << num(ratio, 3) << " | " << num(m.loadRatio, 3) << " | "
-           << num(m.cpuMs.p50, 3) << " | " << num(m.gpuMs.p50, 3) << " | " << num(m.speedup, 3) << " | "
-           << errorCells(m) << num(m.maxErrDeg, 3) << " / " << num(m.maxErrPx, 3) << " | "
+        md << "| " << index++ << " | " << modeLabel(m) << " | " << num(m.frameMs.p50, 3) << " / "
+           << num(m.frameMs.p95, 3) << " / " << num(m.frameMs.p99, 3) << " | " << num(ratio, 3) << " | "
+           << num(m.loadRatio, 3) << " | " << num(m.cpuMs.p50, 3) << " | " << num(m.gpuMs.p50, 3) << " | "
+           << num(m.speedup, 3) << " | " << errorCells(m) << num(m.maxErrDeg, 3) << " / " << num(m.maxErrPx, 3) << " | "
            << (m.mode == Mode::Walls ? std::to_string(m.texturesOverAlpha) : std::string("-")) << " | "
            << (m.lodPixels > 0.0 ? num(m.maxLodErrPx, 3) + " (" + num(m.meanLodTolerancePx, 3) + ")" : std::string("-"))
-           << " | " << num(std::round(m.triangles), 7) << " | " << num(m.drawCalls, 3) << " | "
-           << m.textures << " | " << num(m.texels / 1e6, 3) << " | " << num(m.diskMB, 3) << " | " << num(m.gpuMB, 3)
-           << " | " << num(m.uploadedMB.p50, 3) << " / " << num(m.uploadedMB.p99, 3) << " |\n";
+           << " | " << num(std::round(m.triangles), 7) << " | " << num(m.drawCalls, 3) << " | " << m.textures << " | "
+           << num(m.texels / 1e6, 3) << " | " << num(m.diskMB, 3) << " | " << num(m.gpuMB, 3) << " | "
+           << num(m.uploadedMB.p50, 3) << " / " << num(m.uploadedMB.p99, 3) << " |\n";
     }
     md << "\n- load p99/p50: p99/p50 of the triangles drawn per frame, how much the path's load alone varies "
           "(frame time grows with it on llvmpipe); PSNR pooled: from the mean squared error of all compared "
@@ -456,8 +500,9 @@ std::string markdownReport(const BenchReport& report) {
 }
 
 std::string framesCsv(const BenchReport& report) {
-    std::string out = "mode,frame,frame_ms,triangles,draw_calls,uploaded_mb,over_alpha,predicted_ms,predicted_frame_ms,"
-                      "floor_ms,geometry_fallbacks,textures_baked\n";
+    std::string out =
+        "mode,frame,frame_ms,triangles,draw_calls,uploaded_mb,over_alpha,predicted_ms,predicted_frame_ms,"
+        "floor_ms,geometry_fallbacks,textures_baked\n";
     for (const ModeResult& m : report.modes)
         for (std::size_t i = 0; i < m.frames.size(); ++i)
             out += modeLabel(m) + "," + std::to_string(i) + "," + num(m.frames[i].frameMs, 6) + "," +
@@ -480,12 +525,14 @@ std::vector<std::filesystem::path> writeReport(const std::filesystem::path& fold
     writeText(files[1], screensCsv(report));
     writeText(files[4], framesCsv(report));
     writeText(files[2], "# cavewall bench\n\n" + markdownReport(report) +
-                            "\n![error (pooled RMSE, the pooled PSNR's, y) against median frame ms (x); red: Pareto front; numbers: # above]"
+                            "\n![error (pooled RMSE, the pooled PSNR's, y) against median frame ms (x); red: Pareto "
+                            "front; numbers: # above]"
                             "(bench.png)\n");
     std::vector<TradeOff> points;
     for (const ModeResult& m : report.modes) points.push_back({m.frameMs.p50, m.error.rmse});
     std::vector<PlotPoint> plot;
-    for (std::size_t i = 0; i < points.size(); ++i) plot.push_back({points[i].time, points[i].error, static_cast<int>(i + 1), false});
+    for (std::size_t i = 0; i < points.size(); ++i)
+        plot.push_back({points[i].time, points[i].error, static_cast<int>(i + 1), false});
     for (std::size_t i : paretoFront(points)) plot[i].front = true;
     scenes::writeImage(files[3], plotTradeOff(plot));
     std::vector<std::filesystem::path> written = files;

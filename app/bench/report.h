@@ -21,40 +21,40 @@
 namespace cavewall::bench {
 
 struct ScreenResult {
-    std::string screen;                // display screen name
+    std::string screen;  // display screen name
     ImageError error;
-    TimeStats cpuMs;                   // wall-clock CPU ms of the screen's views per frame
+    TimeStats cpuMs;                          // wall-clock CPU ms of the screen's views per frame
     double triangles = 0.0, drawCalls = 0.0;  // means per frame
 };
 
 // One timed frame of a mode, as bench_frames.csv lists it.
 struct FrameSample {
     double frameMs = 0.0, triangles = 0.0, drawCalls = 0.0;
-    double uploadedMB = 0.0;           // wall texture MB uploaded in the frame
-    int texturesOverAlpha = 0;         // drawn textures whose exact error exceeds alpha
+    double uploadedMB = 0.0;    // wall texture MB uploaded in the frame
+    int texturesOverAlpha = 0;  // drawn textures whose exact error exceeds alpha
     // Clusters held to a frame time (hierarchy/cluster_budget.h; 0 otherwise): the predicted cost
     // of what the frame drew, the frame time the controller predicted before drawing it and the
     // floor, the cheapest selection's frame time.
     double predictedMs = 0.0, predictedFrameMs = 0.0, floorMs = 0.0;
-    int geometryFallbacks = 0;         // walls drawn as geometry for want of a texture
-                                       // (FrameResult::geometryFallbacks)
-    int texturesBaked = 0;             // baking on demand: textures baked so far (running total)
+    int geometryFallbacks = 0;  // walls drawn as geometry for want of a texture
+                                // (FrameResult::geometryFallbacks)
+    int texturesBaked = 0;      // baking on demand: textures baked so far (running total)
 };
 
 // The on-demand mode's figures: the walk from an empty, private bake cache with
 // the background baker (`cavewall run --bake-on-demand`). Fallbacks are wall-frames: a wall
 // drawn as geometry in one frame for want of a texture counts once.
 struct OnDemandFigures {
-    double firstFrameSeconds = 0.0;    // planning the walls, keying the empty cache, building the
-                                       // walkthrough and drawing the first frame (the scene loaded)
-    long geometryFallbacks = 0;        // over the timed frames
-    int fallbackFrames = 0;            // timed frames with at least one
-    int fallbacksUntilFrame = 0;       // 1 + the index of the last timed frame with one (0: none)
+    double firstFrameSeconds = 0.0;  // planning the walls, keying the empty cache, building the
+                                     // walkthrough and drawing the first frame (the scene loaded)
+    long geometryFallbacks = 0;      // over the timed frames
+    int fallbackFrames = 0;          // timed frames with at least one
+    int fallbacksUntilFrame = 0;     // 1 + the index of the last timed frame with one (0: none)
     double firstQuarterFallbacks = 0.0, lastQuarterFallbacks = 0.0;  // per frame, the first and
-                                       // last quarter of the timed frames (both 0 without frames)
-    int texturesMissingAtStart = 0;    // the plan's textures (the cache is empty)
-    int texturesBaked = 0;             // baked by the end of the run
-    std::string cache;                 // the private cache folder
+        // last quarter of the timed frames (both 0 without frames)
+    int texturesMissingAtStart = 0;  // the plan's textures (the cache is empty)
+    int texturesBaked = 0;           // baked by the end of the run
+    std::string cache;               // the private cache folder
 };
 
 // Fills the fallback counts of `figures` from the timed frames (the rest is left as is).
@@ -68,34 +68,34 @@ std::string_view toString(Mode mode);
 
 struct ModeResult {
     Mode mode = Mode::Full;
-    double alphaDeg = 0.0;             // walls modes; 0 otherwise
+    double alphaDeg = 0.0;                      // walls modes; 0 otherwise
     std::optional<app::Transition> transition;  // walls modes; none otherwise
-    bool paged = false;                // walls modes: paged from a cold start (`cavewall run`'s paging)
-    double lodPixels = 0.0;            // level-of-detail tolerance in pixels; 0: full detail
-    std::size_t triangleBudget = 0;    // per frame (with levels of detail); 0: none
-    double frameBudgetMs = 0.0;        // frame-time target of the budget controller; 0: none
+    bool paged = false;                         // walls modes: paged from a cold start (`cavewall run`'s paging)
+    double lodPixels = 0.0;                     // level-of-detail tolerance in pixels; 0: full detail
+    std::size_t triangleBudget = 0;             // per frame (with levels of detail); 0: none
+    double frameBudgetMs = 0.0;                 // frame-time target of the budget controller; 0: none
     TimeStats frameMs, cpuMs, gpuMs;
-    double speedup = 1.0;              // full-geometry frame_ms_p50 / this mode's
-    ImageError error;                  // all screens
-    FlipMap flipWorst;                 // the FLIP map of the compared image with the highest mean
+    double speedup = 1.0;  // full-geometry frame_ms_p50 / this mode's
+    ImageError error;      // all screens
+    FlipMap flipWorst;     // the FLIP map of the compared image with the highest mean
     // Against the control (compareWithControl): pooled PSNR minus the control's (dB, > 0: less
     // error) and FLIP mean over the control's (< 1: less error). NaN without a control.
     double psnrGainDb = std::numeric_limits<double>::quiet_NaN();
     double flipRatio = std::numeric_limits<double>::quiet_NaN();
-    double maxErrDeg = 0.0;            // worst angular error of a drawn texture (0 without textures)
-    double maxErrPx = 0.0;             // the same in screen pixels
-    double maxLodErrPx = 0.0;          // worst geometric error of a drawn level of detail, pixels
-    double meanLodTolerancePx = 0.0;   // the frames' mean LOD tolerance (above lodPixels where the
-                                       // budget raised it)
-    int overBudgetFrames = 0;          // frames whose coarsest levels still exceeded the budget
+    double maxErrDeg = 0.0;           // worst angular error of a drawn texture (0 without textures)
+    double maxErrPx = 0.0;            // the same in screen pixels
+    double maxLodErrPx = 0.0;         // worst geometric error of a drawn level of detail, pixels
+    double meanLodTolerancePx = 0.0;  // the frames' mean LOD tolerance (above lodPixels where the
+                                      // budget raised it)
+    int overBudgetFrames = 0;         // frames whose coarsest levels still exceeded the budget
     double triangles = 0.0, drawCalls = 0.0;
-    int textures = 0;                  // baked textures of the plan
-    double texels = 0.0;               // sum of their base-level texels
-    double diskMB = 0.0;               // bytes of the baked files / 1e6
-    double gpuMB = 0.0;                // peak resident texture MB (the pager's count)
-    long misses = 0;                   // wanted textures not resident, over the run
+    int textures = 0;     // baked textures of the plan
+    double texels = 0.0;  // sum of their base-level texels
+    double diskMB = 0.0;  // bytes of the baked files / 1e6
+    double gpuMB = 0.0;   // peak resident texture MB (the pager's count)
+    long misses = 0;      // wanted textures not resident, over the run
     std::vector<ScreenResult> screens;
-    std::vector<FrameSample> frames;   // every timed frame, in path order
+    std::vector<FrameSample> frames;  // every timed frame, in path order
     // p99/p50 of the triangles drawn per frame: how much the path's load alone varies, to
     // read next to the frame time's p99/p50 (the rest is stalls and noise).
     double loadRatio = 0.0;
@@ -111,11 +111,11 @@ struct ModeResult {
 };
 
 struct BenchReport {
-    std::vector<std::string> header;   // settings and machine, one line each
-    std::vector<ModeResult> modes;     // the full-geometry reference first
-    double noiseFloorRatio = 0.0;      // p99/p50 of one frame drawn again and again (0: not measured)
-    double noiseFloorP95Ratio = 0.0;   // p95/p50 of the same (0: not measured)
-    std::string resolution;            // "1024x1024 per screen, mono": stated with every figure line
+    std::vector<std::string> header;  // settings and machine, one line each
+    std::vector<ModeResult> modes;    // the full-geometry reference first
+    double noiseFloorRatio = 0.0;     // p99/p50 of one frame drawn again and again (0: not measured)
+    double noiseFloorP95Ratio = 0.0;  // p95/p50 of the same (0: not measured)
+    std::string resolution;           // "1024x1024 per screen, mono": stated with every figure line
 };
 
 // `v` with `decimals` digits after the point (no exponent); inf, -inf and nan spelled so.

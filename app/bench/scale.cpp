@@ -50,12 +50,12 @@ void writeText(const std::filesystem::path& file, const std::string& text) {
 
 std::string_view toString(ScaleMode mode) {
     switch (mode) {
-    case ScaleMode::Full: return "full";
-    case ScaleMode::Near: return "near";
-    case ScaleMode::Walls: return "walls";
-    case ScaleMode::WallsBudget: return "walls-budget";
-    case ScaleMode::DepthWalls: return "walls-depth";
-    case ScaleMode::Cells: return "cells";
+        case ScaleMode::Full: return "full";
+        case ScaleMode::Near: return "near";
+        case ScaleMode::Walls: return "walls";
+        case ScaleMode::WallsBudget: return "walls-budget";
+        case ScaleMode::DepthWalls: return "walls-depth";
+        case ScaleMode::Cells: return "cells";
     }
     return "?";
 }
@@ -86,18 +86,19 @@ double growth(const ScaleReport& report, ScaleMode mode) {
 }
 
 std::string scaleCsv(const ScaleReport& report) {
-    std::string out = "target_triangles,triangles,cells,mode,triangle_budget,frame_ms_p50,frame_ms_p95,frame_ms_p99,"
-                      "triangles_per_frame,"
-                      "resident_mb,paged_peak_mb,whole_model_mb,largest_three_cells_mb,load_s,first_frame_s,"
-                      "geometry_misses,geometry_page_ins,textures_over_alpha,compared_frames,psnr_db,"
-                      "worst_frame_psnr_db,flip_mean\n";
+    std::string out =
+        "target_triangles,triangles,cells,mode,triangle_budget,frame_ms_p50,frame_ms_p95,frame_ms_p99,"
+        "triangles_per_frame,"
+        "resident_mb,paged_peak_mb,whole_model_mb,largest_three_cells_mb,load_s,first_frame_s,"
+        "geometry_misses,geometry_page_ins,textures_over_alpha,compared_frames,psnr_db,"
+        "worst_frame_psnr_db,flip_mean\n";
     for (const ScaleRow& r : report.rows)
-        out += std::to_string(r.targetTriangles) + "," + std::to_string(r.triangles) + "," + std::to_string(r.cells) + "," +
-               std::string(toString(r.mode)) + "," + std::to_string(r.triangleBudget) + "," + fixed(r.frameMs.p50, 3) +
-               "," + fixed(r.frameMs.p95, 3) + "," +
-               fixed(r.frameMs.p99, 3) + "," + fixed(r.trianglesPerFrame, 0) + "," + fixed(r.residentMB, 3) + "," +
-               fixed(r.pagedPeakMB, 3) + "," + fixed(r.wholeModelMB, 3) + "," + fixed(r.largestThreeCellsMB, 3) + "," +
-               fixed(r.loadSeconds, 3) + "," + fixed(r.firstFrameSeconds, 3) + "," + std::to_string(r.geometryMisses) + "," +
+        out += std::to_string(r.targetTriangles) + "," + std::to_string(r.triangles) + "," + std::to_string(r.cells) +
+               "," + std::string(toString(r.mode)) + "," + std::to_string(r.triangleBudget) + "," +
+               fixed(r.frameMs.p50, 3) + "," + fixed(r.frameMs.p95, 3) + "," + fixed(r.frameMs.p99, 3) + "," +
+               fixed(r.trianglesPerFrame, 0) + "," + fixed(r.residentMB, 3) + "," + fixed(r.pagedPeakMB, 3) + "," +
+               fixed(r.wholeModelMB, 3) + "," + fixed(r.largestThreeCellsMB, 3) + "," + fixed(r.loadSeconds, 3) + "," +
+               fixed(r.firstFrameSeconds, 3) + "," + std::to_string(r.geometryMisses) + "," +
                std::to_string(r.geometryPageIns) + "," + std::to_string(r.texturesOverAlpha) + "," +
                std::to_string(r.comparedFrames) + "," + fixed(r.psnrDb, 3) + "," + fixed(r.worstFramePsnrDb, 3) + "," +
                fixed(r.flipMean, 5) + "\n";
@@ -107,21 +108,26 @@ std::string scaleCsv(const ScaleReport& report) {
 std::string scaleMarkdown(const ScaleReport& report) {
     std::string out;
     for (const std::string& line : report.header) out += "- " + line + "\n";
-    out += "\n| triangles | cells | mode | frame ms p50 | p95 | triangles/frame | resident MB | paged peak MB | "
-           "whole model MB | largest 3 cells MB | load s | first frame s | geometry misses | over alpha | "
-           "PSNR dB pooled (worst frame) | FLIP mean |\n"
-           "| ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+    out +=
+        "\n| triangles | cells | mode | frame ms p50 | p95 | triangles/frame | resident MB | paged peak MB | "
+        "whole model MB | largest 3 cells MB | load s | first frame s | geometry misses | over alpha | "
+        "PSNR dB pooled (worst frame) | FLIP mean |\n"
+        "| ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | "
+        "---: |\n";
     for (const ScaleRow& r : report.rows)
-        out += "| " + fixed(millions(r.triangles), 2) + " M | " + std::to_string(r.cells) + " | " +
-               std::string(toString(r.mode)) + " | " + fixed(r.frameMs.p50, 2) + " | " + fixed(r.frameMs.p95, 2) + " | " +
-               fixed(r.trianglesPerFrame, 0) + " | " + fixed(r.residentMB, 2) + " | " +
-               (pagesGeometry(r.mode) ? fixed(r.pagedPeakMB, 2) : std::string("–")) + " | " + fixed(r.wholeModelMB, 2) +
-               " | " + fixed(r.largestThreeCellsMB, 2) + " | " + fixed(r.loadSeconds, 2) + " | " + fixed(r.firstFrameSeconds, 2) +
-               " | " + std::to_string(r.geometryMisses) + " | " + std::to_string(r.texturesOverAlpha) + " | " +
-               (r.comparedFrames > 0 ? fixed(r.psnrDb, 1) + " (" + fixed(r.worstFramePsnrDb, 1) + ")" : std::string("–")) +
-               " | " + (r.comparedFrames > 0 ? fixed(r.flipMean, 4) : std::string("–")) + " |\n";
-    out += "\nSlopes (least squares of the median frame ms against millions of triangles) and growth (median at the "
-           "largest size over the smallest):\n\n";
+        out +=
+            "| " + fixed(millions(r.triangles), 2) + " M | " + std::to_string(r.cells) + " | " +
+            std::string(toString(r.mode)) + " | " + fixed(r.frameMs.p50, 2) + " | " + fixed(r.frameMs.p95, 2) + " | " +
+            fixed(r.trianglesPerFrame, 0) + " | " + fixed(r.residentMB, 2) + " | " +
+            (pagesGeometry(r.mode) ? fixed(r.pagedPeakMB, 2) : std::string("–")) + " | " + fixed(r.wholeModelMB, 2) +
+            " | " + fixed(r.largestThreeCellsMB, 2) + " | " + fixed(r.loadSeconds, 2) + " | " +
+            fixed(r.firstFrameSeconds, 2) + " | " + std::to_string(r.geometryMisses) + " | " +
+            std::to_string(r.texturesOverAlpha) + " | " +
+            (r.comparedFrames > 0 ? fixed(r.psnrDb, 1) + " (" + fixed(r.worstFramePsnrDb, 1) + ")" : std::string("–")) +
+            " | " + (r.comparedFrames > 0 ? fixed(r.flipMean, 4) : std::string("–")) + " |\n";
+    out +=
+        "\nSlopes (least squares of the median frame ms against millions of triangles) and growth (median at the "
+        "largest size over the smallest):\n\n";
     for (ScaleMode m : kScaleModes) {
         if (mayBeLeftOut(m) && rowsOf(report, m).empty()) continue;  // not run
         const double slope = msPerMillionTriangles(report, m);
@@ -130,26 +136,29 @@ std::string scaleMarkdown(const ScaleReport& report) {
                                   : fixed(slope, 3) + " ms per M triangles, " + fixed(growth(report, m), 2) + "x") +
                "\n";
     }
-    out += "\nWalls against full geometry at each size (median frame ms over median frame ms, and the walls' image "
-           "error):\n\n";
+    out +=
+        "\nWalls against full geometry at each size (median frame ms over median frame ms, and the walls' image "
+        "error):\n\n";
     for (ScaleMode m : {ScaleMode::Walls, ScaleMode::WallsBudget, ScaleMode::DepthWalls})
         for (const ScaleRow* w : rowsOf(report, m))
             for (const ScaleRow* f : rowsOf(report, ScaleMode::Full)) {
                 if (f->targetTriangles != w->targetTriangles || !(w->frameMs.p50 > 0.0)) continue;
                 const std::string budget =
                     m == ScaleMode::WallsBudget ? " (" + std::to_string(w->triangleBudget) + " triangles a frame)" : "";
-                const std::string error =
-                    w->comparedFrames > 0 ? "pooled PSNR " + fixed(w->psnrDb, 1) + " dB (worst frame " +
-                                                fixed(w->worstFramePsnrDb, 1) + " dB), FLIP mean " + fixed(w->flipMean, 4) +
-                                                " over " + std::to_string(w->comparedFrames) + " compared frames"
-                                          : std::string("image error not compared");
+                const std::string error = w->comparedFrames > 0
+                                              ? "pooled PSNR " + fixed(w->psnrDb, 1) + " dB (worst frame " +
+                                                    fixed(w->worstFramePsnrDb, 1) + " dB), FLIP mean " +
+                                                    fixed(w->flipMean, 4) + " over " +
+                                                    std::to_string(w->comparedFrames) + " compared frames"
+                                              : std::string("image error not compared");
                 out += "- " + fixed(millions(w->triangles), 2) + " M triangles, " + std::string(toString(m)) + budget +
                        ": speed-up " + fixed(f->frameMs.p50 / w->frameMs.p50, 2) + "x, " + error + ", " +
                        std::to_string(w->texturesOverAlpha) + " textures over alpha\n";
             }
     if (!rowsOf(report, ScaleMode::Cells).empty()) {
-        out += "\nAgainst the control, cells without textures (the walls' geometry cells, no texture): what the "
-               "textures buy (pooled PSNR gain, FLIP mean over the control's):\n\n";
+        out +=
+            "\nAgainst the control, cells without textures (the walls' geometry cells, no texture): what the "
+            "textures buy (pooled PSNR gain, FLIP mean over the control's):\n\n";
         for (const ScaleRow* c : rowsOf(report, ScaleMode::Cells)) {
             if (c->comparedFrames <= 0) continue;
             std::string line = "- " + fixed(millions(c->triangles), 2) + " M triangles: cells " + fixed(c->psnrDb, 1) +
@@ -165,8 +174,9 @@ std::string scaleMarkdown(const ScaleReport& report) {
         }
     }
     if (!rowsOf(report, ScaleMode::DepthWalls).empty()) {
-        out += "\nDepth walls against flat walls, drawn frame by frame in turn in this run (median frame ms over "
-               "median frame ms):\n\n";
+        out +=
+            "\nDepth walls against flat walls, drawn frame by frame in turn in this run (median frame ms over "
+            "median frame ms):\n\n";
         for (const ScaleRow* d : rowsOf(report, ScaleMode::DepthWalls))
             for (const ScaleRow* f : rowsOf(report, ScaleMode::Walls))
                 if (f->targetTriangles == d->targetTriangles && f->frameMs.p50 > 0.0)
@@ -179,15 +189,17 @@ std::string scaleMarkdown(const ScaleReport& report) {
 
 std::vector<std::filesystem::path> writeScaleReport(const std::filesystem::path& folder, const ScaleReport& report) {
     std::filesystem::create_directories(folder);
-    const std::vector<std::filesystem::path> files = {folder / "scale.csv", folder / "scale.md", folder / "scale_ms.png",
-                                                      folder / "scale_mb.png", folder / "scale_load.png"};
+    const std::vector<std::filesystem::path> files = {folder / "scale.csv", folder / "scale.md",
+                                                      folder / "scale_ms.png", folder / "scale_mb.png",
+                                                      folder / "scale_load.png"};
     writeText(files[0], scaleCsv(report));
-    writeText(files[1], "# cavewall bench --scale\n\n" + scaleMarkdown(report) +
-                            "\nPlots against millions of triangles (x); lines numbered 0 full, 1 near, 2 walls, "
-                            "3 walls-budget, 4 walls-depth, 5 cells (those run): "
-                            "median frame ms (scale_ms.png), resident geometry MB (scale_mb.png), seconds from the "
-                            "loaded scene to the first frame plus the load (scale_load.png).\n\n"
-                            "![frame ms](scale_ms.png) ![resident MB](scale_mb.png) ![first frame s](scale_load.png)\n");
+    writeText(files[1],
+              "# cavewall bench --scale\n\n" + scaleMarkdown(report) +
+                  "\nPlots against millions of triangles (x); lines numbered 0 full, 1 near, 2 walls, "
+                  "3 walls-budget, 4 walls-depth, 5 cells (those run): "
+                  "median frame ms (scale_ms.png), resident geometry MB (scale_mb.png), seconds from the "
+                  "loaded scene to the first frame plus the load (scale_load.png).\n\n"
+                  "![frame ms](scale_ms.png) ![resident MB](scale_mb.png) ![first frame s](scale_load.png)\n");
     auto plot = [&](double ScaleRow::*field, bool timeStat, bool plusLoad) {
         std::vector<PlotSeries> series;
         for (ScaleMode m : kScaleModes) {
@@ -215,8 +227,10 @@ std::vector<std::size_t> parseScaleList(const std::string& text) {
         const std::string entry = text.substr(start, end - start);
         double factor = 1.0;
         std::string digits = entry;
-        if (!digits.empty() && (digits.back() == 'M' || digits.back() == 'm')) factor = 1e6, digits.pop_back();
-        else if (!digits.empty() && (digits.back() == 'k' || digits.back() == 'K')) factor = 1e3, digits.pop_back();
+        if (!digits.empty() && (digits.back() == 'M' || digits.back() == 'm'))
+            factor = 1e6, digits.pop_back();
+        else if (!digits.empty() && (digits.back() == 'k' || digits.back() == 'K'))
+            factor = 1e3, digits.pop_back();
         char* stop = nullptr;
         const double value = digits.empty() ? kNaN : std::strtod(digits.c_str(), &stop) * factor;
         if (!std::isfinite(value) || stop != digits.c_str() + digits.size() || value < 1.0 || value >= 2147483648.0)

@@ -29,29 +29,29 @@ namespace cavewall::bench {
 // cells without textures (the flat walls' geometry cells, no texture), numbered
 // last so that the plots' earlier line numbers stay.
 enum class ScaleMode { Full, Near, Walls, WallsBudget, DepthWalls, Cells };
-inline constexpr ScaleMode kScaleModes[] = {ScaleMode::Full, ScaleMode::Near, ScaleMode::Cells, ScaleMode::Walls,
-                                            ScaleMode::WallsBudget, ScaleMode::DepthWalls};
+inline constexpr ScaleMode kScaleModes[] = {ScaleMode::Full,  ScaleMode::Near,        ScaleMode::Cells,
+                                            ScaleMode::Walls, ScaleMode::WallsBudget, ScaleMode::DepthWalls};
 // "full" | "near" | "cells" | "walls" | "walls-budget" | "walls-depth"
 std::string_view toString(ScaleMode mode);
 
 struct ScaleRow {
-    std::size_t targetTriangles = 0;     // the --scale entry the plant was generated for
-    std::size_t triangles = 0;           // drawn triangles of the whole model (instances counted)
-    std::size_t triangleBudget = 0;      // walls-budget: its budget per frame (all views); else 0
+    std::size_t targetTriangles = 0;  // the --scale entry the plant was generated for
+    std::size_t triangles = 0;        // drawn triangles of the whole model (instances counted)
+    std::size_t triangleBudget = 0;   // walls-budget: its budget per frame (all views); else 0
     int cells = 0;
     ScaleMode mode = ScaleMode::Full;
     TimeStats frameMs;
-    double trianglesPerFrame = 0.0;      // mean drawn per frame (all views)
+    double trianglesPerFrame = 0.0;  // mean drawn per frame (all views)
     // Geometry on the GPU, MB: the most at once over the timed frames. Full and near: the whole
     // model (uploaded at start). Walls: the always-resident shared buffers plus the resident
     // paged mesh groups.
     double residentMB = 0.0;
-    double pagedPeakMB = 0.0;            // walls: the paged groups alone (what paging decides)
+    double pagedPeakMB = 0.0;                              // walls: the paged groups alone (what paging decides)
     double wholeModelMB = 0.0, largestThreeCellsMB = 0.0;  // yardsticks (walkthrough/gl/walkthrough.h)
-    double loadSeconds = 0.0;            // reading the scene files into memory
-    double firstFrameSeconds = 0.0;      // from the loaded scene to the end of the first frame
-    long geometryMisses = 0, geometryPageIns = 0;  // walls: cumulative over the run
-    int texturesOverAlpha = 0;           // walls: the most in a frame
+    double loadSeconds = 0.0;                              // reading the scene files into memory
+    double firstFrameSeconds = 0.0;                        // from the loaded scene to the end of the first frame
+    long geometryMisses = 0, geometryPageIns = 0;          // walls: cumulative over the run
+    int texturesOverAlpha = 0;                             // walls: the most in a frame
     // Image error against full geometry's image of the same frame (ScaleOptions::compareEvery;
     // full, the reference, and runs without comparisons keep these defaults): compared frames,
     // pooled PSNR over all their pixels (infinite: identical), the worst frame's PSNR and the
@@ -63,7 +63,7 @@ struct ScaleRow {
 };
 
 struct ScaleReport {
-    std::vector<std::string> header;     // lines for the Markdown report
+    std::vector<std::string> header;  // lines for the Markdown report
     std::vector<ScaleRow> rows;
 };
 

@@ -36,15 +36,17 @@ RunOutput::RunOutput(std::filesystem::path folder, const scenes::SceneDescriptio
     std::error_code ec;
     std::filesystem::create_directories(_folder, ec);
     if (ec) throw Error("--out: cannot create '" + _folder.string() + "' (" + ec.message() + ")");
-    _frames = openCsv(_folder / "frames.csv",
-                      "frame,t,head_x,head_y,head_z,world_x,world_y,world_z,cell,zone,frame_ms,cpu_ms,gpu_ms,"
-                      "triangles,draw_calls,textures_resident,page_ins,misses,max_err_deg,max_err_px,fallbacks,sync_ms,warp_fallbacks,"
-                      "lod_px,lod_err_px,lod_over_budget,geometry_triangles,over_alpha,geometry_resident_mb,geometry_page_ins,"
-                      "geometry_misses,geometry_kept,geometry_forced,uploaded_mb,cluster_objects,cluster_textured,"
-                      "cluster_average,cluster_predicted_ms,cluster_budget_ms,cluster_fades,geometry_fallbacks,"
-                      "textures_baked,textures_baked_now,textures_to_bake,baker_busy,cluster_selected_ms,"
-                      "cluster_cheapest_ms,cluster_target_ms,cluster_predicted_frame_ms,cluster_floor_ms,view_yaw_deg,"
-                      "view_pitch_deg\n");
+    _frames = openCsv(
+        _folder / "frames.csv",
+        "frame,t,head_x,head_y,head_z,world_x,world_y,world_z,cell,zone,frame_ms,cpu_ms,gpu_ms,"
+        "triangles,draw_calls,textures_resident,page_ins,misses,max_err_deg,max_err_px,fallbacks,sync_ms,warp_"
+        "fallbacks,"
+        "lod_px,lod_err_px,lod_over_budget,geometry_triangles,over_alpha,geometry_resident_mb,geometry_page_ins,"
+        "geometry_misses,geometry_kept,geometry_forced,uploaded_mb,cluster_objects,cluster_textured,"
+        "cluster_average,cluster_predicted_ms,cluster_budget_ms,cluster_fades,geometry_fallbacks,"
+        "textures_baked,textures_baked_now,textures_to_bake,baker_busy,cluster_selected_ms,"
+        "cluster_cheapest_ms,cluster_target_ms,cluster_predicted_frame_ms,cluster_floor_ms,view_yaw_deg,"
+        "view_pitch_deg\n");
     _walls = openCsv(_folder / "walls.csv", "frame,wall,textures,geometry_weight,fallback,beyond,err_deg,over_alpha\n");
 }
 
@@ -74,25 +76,29 @@ void RunOutput::writeFrame(long frame, double t, glm::dvec3 head, const walkthro
         r.cell >= 0 && r.cell < static_cast<int>(_description.cells.size()) ? _description.cells[r.cell].name : "-";
     int fallbacks = 0;
     for (const walkthrough::WallState& s : r.walls) fallbacks += s.fallback ? 1 : 0;
-    std::fprintf(_frames, "%ld,%s,%s,%s,%s,%s,%s,%s,%s,%d,%.3f,%.3f,%.3f,%zu,%d,%d,%ld,%ld,%.4f,%.2f,%d,%.3f,%d,%.3f,%.3f,%d,%zu,%d,%.3f,%ld,%ld,%d,%d,%.3f,%d,%d,%d,%.4f,%.4f,%d,%d,%d,%d,%d,%d,%.4f,%.4f,%.3f,%.3f,%.3f,%.4f,%.4f\n", frame,
-                 exact(t).c_str(), exact(head.x).c_str(), exact(head.y).c_str(), exact(head.z).c_str(),
-                 exact(w.x).c_str(), exact(w.y).c_str(), exact(w.z).c_str(), cell.c_str(), r.zone, r.frameMs, r.cpuMs,
-                 r.gpuMs, r.stats.triangles, r.stats.drawCalls, r.pager.resident, r.pager.pageIns, r.pager.misses,
-                 r.maxErrorDeg, r.maxErrorPixels, fallbacks, syncMs, r.warpFallbacks, r.lodTolerancePx, r.lodErrorPx, r.lodOverBudget ? 1 : 0, r.geometryTriangles,
-                 r.texturesOverAlpha, r.geometry.residentMB, r.geometry.pageIns, r.geometry.misses,
-                 r.geometryMisses, r.geometryForced, static_cast<double>(r.uploadedBytes) / 1e6, r.clusterObjects,
-                 r.clusterTextured, r.clusterAverage, r.clusterPredictedMs, r.clusterBudgetMs, r.clusterFades,
-                 r.geometryFallbacks, r.texturesBaked, r.texturesBakedNow, r.texturesToBake, r.bakerBusy ? 1 : 0,
-                 r.clusterSelectedMs, r.clusterCheapestMs, r.clusterTargetMs, r.clusterPredictedFrameMs, r.clusterFloorMs,
-                 yawDeg, pitchDeg);
+    std::fprintf(
+        _frames,
+        "%ld,%s,%s,%s,%s,%s,%s,%s,%s,%d,%.3f,%.3f,%.3f,%zu,%d,%d,%ld,%ld,%.4f,%.2f,%d,%.3f,%d,%.3f,%.3f,%d,%zu,%d,%.3f,"
+        "%ld,%ld,%d,%d,%.3f,%d,%d,%d,%.4f,%.4f,%d,%d,%d,%d,%d,%d,%.4f,%.4f,%.3f,%.3f,%.3f,%.4f,%.4f\n",
+        frame, exact(t).c_str(), exact(head.x).c_str(), exact(head.y).c_str(), exact(head.z).c_str(),
+        exact(w.x).c_str(), exact(w.y).c_str(), exact(w.z).c_str(), cell.c_str(), r.zone, r.frameMs, r.cpuMs, r.gpuMs,
+        r.stats.triangles, r.stats.drawCalls, r.pager.resident, r.pager.pageIns, r.pager.misses, r.maxErrorDeg,
+        r.maxErrorPixels, fallbacks, syncMs, r.warpFallbacks, r.lodTolerancePx, r.lodErrorPx, r.lodOverBudget ? 1 : 0,
+        r.geometryTriangles, r.texturesOverAlpha, r.geometry.residentMB, r.geometry.pageIns, r.geometry.misses,
+        r.geometryMisses, r.geometryForced, static_cast<double>(r.uploadedBytes) / 1e6, r.clusterObjects,
+        r.clusterTextured, r.clusterAverage, r.clusterPredictedMs, r.clusterBudgetMs, r.clusterFades,
+        r.geometryFallbacks, r.texturesBaked, r.texturesBakedNow, r.texturesToBake, r.bakerBusy ? 1 : 0,
+        r.clusterSelectedMs, r.clusterCheapestMs, r.clusterTargetMs, r.clusterPredictedFrameMs, r.clusterFloorMs,
+        yawDeg, pitchDeg);
     for (const walkthrough::WallState& s : r.walls) {
         std::string textures;
         for (const auto& [id, weight] : s.textures)
             textures += (textures.empty() ? "" : ";") + std::to_string(id) + ":" + exact(weight);
         const std::string name = s.wall < static_cast<int>(_description.walls.size()) ? _description.walls[s.wall].name
-                                                                                       : std::to_string(s.wall);
+                                                                                      : std::to_string(s.wall);
         std::fprintf(_walls, "%ld,%s,%s,%s,%d,%d,%.4f,%d\n", frame, name.c_str(), textures.c_str(),
-                     exact(s.geometryWeight).c_str(), s.fallback ? 1 : 0, s.beyond ? 1 : 0, s.errorDeg, s.texturesOverAlpha);
+                     exact(s.geometryWeight).c_str(), s.fallback ? 1 : 0, s.beyond ? 1 : 0, s.errorDeg,
+                     s.texturesOverAlpha);
     }
     std::fflush(_frames);
     std::fflush(_walls);

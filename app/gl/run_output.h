@@ -41,7 +41,8 @@ class RunOutput {
 public:
     // Creates `folder` and both CSV files; throws Error when they cannot be written.
     // Keeps references to `description` and `display`.
-    RunOutput(std::filesystem::path folder, const scenes::SceneDescription& description, const display::Display& display);
+    RunOutput(std::filesystem::path folder, const scenes::SceneDescription& description,
+              const display::Display& display);
     ~RunOutput();
     RunOutput(const RunOutput&) = delete;
     RunOutput& operator=(const RunOutput&) = delete;

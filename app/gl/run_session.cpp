@@ -52,10 +52,9 @@ gl::BakeRequest bakeRequest(const RunOptions& o, gl::Context* context) {
 
 // --bake-on-demand: plans the walls and takes what the cache holds; the baker bakes the rest in
 // the background with a context of its own.
-walls::WallSetup prepareWallsOnDemand(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
-                                      std::unique_ptr<gl::BackgroundBaker>& baker) {
-    walls::WallSetup setup =
-        walls::prepareWalls(scene, d, walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution));
+walls::WallSetup prepareWallsOnDemand(const RunOptions& o, const scenes::Scene& scene,
+                                      const scenes::SceneDescription& d, std::unique_ptr<gl::BackgroundBaker>& baker) {
+    walls::WallSetup setup = walls::prepareWalls(scene, d, walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution));
     gl::BackgroundBakerOptions options;
     options.niceness = o.bakeNice;
     if (o.cacheBudgetMB > 0.0) options.cacheBudgetBytes = walls::cacheBudgetBytes(o.cacheBudgetMB, "--cache-budget");
@@ -72,14 +71,14 @@ walls::WallSetup prepareWallsOnDemand(const RunOptions& o, const scenes::Scene& 
 // Prepares the walls and bakes (or finds in the cache) their textures.
 walls::WallSetup prepareWalls(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
                               gl::Context& context) {
-    walls::WallSetup setup =
-        walls::prepareWalls(scene, d, walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution));
+    walls::WallSetup setup = walls::prepareWalls(scene, d, walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution));
     gl::BakeRequest request = bakeRequest(o, &context);
     if (o.verbose)
         request.progress = [](const gl::BakeProgress& p) {
             if (p.baked > 0 && (p.done % 10 == 0 || p.done == p.total))
                 std::cout << "bake: " << p.done << "/" << p.total << " textures (" << p.baked << " baked) "
-                          << std::lround(p.seconds) << " s\n" << std::flush;
+                          << std::lround(p.seconds) << " s\n"
+                          << std::flush;
         };
     gl::BakeResult baked = gl::bakeWalls(scene, d, setup, request);
     setup.folder = baked.folder;
@@ -106,7 +105,7 @@ std::unique_ptr<gl::Context> makeContext(const RunOptions& o, const display::Dis
 constexpr double kBakeWaitSeconds = 3600.0;
 
 walls::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
-                               gl::Context& context, app::Cluster* cluster) {
+                                  gl::Context& context, app::Cluster* cluster) {
     if (!cluster) return prepareWalls(o, scene, d, context);
     std::optional<walls::WallSetup> setup;
     if (cluster->rank() == 0) setup = prepareWalls(o, scene, d, context);
@@ -189,8 +188,8 @@ struct Session {
     app::Cluster* cluster = nullptr;       // cluster mode
     gl::BackgroundBaker* baker = nullptr;  // --bake-on-demand
     gl::Walkthrough& walkthrough;
-    RunOutput* output = nullptr;           // rank 0
-    const std::vector<int>& screens;       // this rank's, cluster mode
+    RunOutput* output = nullptr;      // rank 0
+    const std::vector<int>& screens;  // this rank's, cluster mode
     std::chrono::steady_clock::time_point start;
 };
 
@@ -204,9 +203,9 @@ void saveFrameImages(const Session& s, long i, const walkthrough::FrameInput& in
                      RunSummary& summary) {
     summary.foldouts.push_back(s.output->saveImages(i, r.images));
     if (s.walkthrough.hasClusters())
-        scenes::writeImage(summary.foldouts.back().parent_path() / "clusters.png",
-                           hierarchy::clusterDiagram(*s.walkthrough.clusterModel(), *s.walkthrough.lastClusterPlan(),
-                                                  r.eyeWorld));
+        scenes::writeImage(
+            summary.foldouts.back().parent_path() / "clusters.png",
+            hierarchy::clusterDiagram(*s.walkthrough.clusterModel(), *s.walkthrough.lastClusterPlan(), r.eyeWorld));
     if (s.o.keepSavedImages) summary.savedFrames.push_back({i, in.head.position, std::move(r.images)});
 }
 
@@ -219,8 +218,8 @@ void saveWindowImages(const Session& s, const std::filesystem::path& frameFolder
 }
 
 // Rank 0: writes frame i (when there is an output folder) and adds it to the summary.
-void recordFrame(const Session& s, long i, const walkthrough::FrameInput& in, walkthrough::FrameResult& r, double syncMs,
-                 RunSummary& summary) {
+void recordFrame(const Session& s, long i, const walkthrough::FrameInput& in, walkthrough::FrameResult& r,
+                 double syncMs, RunSummary& summary) {
     const glm::dvec3 view(in.worldFromCave * glm::dvec4(in.head.orientation * glm::dvec3(0.0, 0.0, -1.0), 0.0));
     if (s.output) s.output->writeFrame(i, in.time, in.head.position, r, syncMs, view);
     if (in.readImages && s.output) saveFrameImages(s, i, in, r, summary);
@@ -251,8 +250,10 @@ std::optional<app::Ending> endBeforeFrame(const Session& s, const input::Session
 // Each window's title and overlay for the coming frame (rank 0, which navigates).
 void showStatus(const Session& s, const input::SessionKeys& keys, double lastFrameMs) {
     if (!s.input) return;
-    app::ViewStatus status{.navigation = s.input->navigationName(), .speed = s.input->speed(),
-                           .frameMs = lastFrameMs, .help = keys.helpShown()};
+    app::ViewStatus status{.navigation = s.input->navigationName(),
+                           .speed = s.input->speed(),
+                           .frameMs = lastFrameMs,
+                           .help = keys.helpShown()};
     const display::OverlayText overlay = app::viewOverlay(status);
     const int windows = std::min(s.context.windowCount(), static_cast<int>(s.o.display.screens.size()));
     for (int w = 0; w < windows; ++w) {
@@ -333,7 +334,8 @@ RunSummary runSession(const RunOptions& o) {
     std::optional<walls::WallSetup> setup = sessionWalls(o, scene, description, *context, cluster.get(), baker);
     summary.textures = setup ? static_cast<int>(setup->plan.textures.size()) : 0;
     summary.wallsSeconds = secondsSince(start);
-    const std::vector<int> screens = cluster ? config::screensOfRank(o.display, rank, cluster->size()) : std::vector<int>{};
+    const std::vector<int> screens =
+        cluster ? config::screensOfRank(o.display, rank, cluster->size()) : std::vector<int>{};
     gl::Walkthrough walkthrough(scene, description, display, *context, std::move(setup),
                                 walkthroughOptions(o, baker.get()), screens);
 
@@ -342,8 +344,14 @@ RunSummary runSession(const RunOptions& o) {
     summary.readySeconds = secondsSince(start);
     summary.renderer = context->info().renderer;
     summarizeWalkthrough(walkthrough, summary);
-    const Session session{.o = o, .context = *context, .input = input.get(), .cluster = cluster.get(),
-                          .baker = baker.get(), .walkthrough = walkthrough, .output = output.get(), .screens = screens,
+    const Session session{.o = o,
+                          .context = *context,
+                          .input = input.get(),
+                          .cluster = cluster.get(),
+                          .baker = baker.get(),
+                          .walkthrough = walkthrough,
+                          .output = output.get(),
+                          .screens = screens,
                           .start = start};
     runFrames(session, summary);
     if (output) output->close();

@@ -15,18 +15,18 @@ namespace {
 
 const char* severityName(GLenum severity) {
     switch (severity) {
-    case GL_DEBUG_SEVERITY_HIGH: return "high";
-    case GL_DEBUG_SEVERITY_MEDIUM: return "medium";
-    case GL_DEBUG_SEVERITY_LOW: return "low";
-    default: return "note";
+        case GL_DEBUG_SEVERITY_HIGH: return "high";
+        case GL_DEBUG_SEVERITY_MEDIUM: return "medium";
+        case GL_DEBUG_SEVERITY_LOW: return "low";
+        default: return "note";
     }
 }
 
 void GLAPIENTRY printDebugMessage(GLenum, GLenum type, GLuint id, GLenum severity, GLsizei, const GLchar* message,
                                   const void*) {
     if (severity == GL_DEBUG_SEVERITY_NOTIFICATION) return;
-    std::cerr << "cavewall: GL " << severityName(severity) << (type == GL_DEBUG_TYPE_ERROR ? " error" : "")
-              << " (" << id << "): " << message << "\n";
+    std::cerr << "cavewall: GL " << severityName(severity) << (type == GL_DEBUG_TYPE_ERROR ? " error" : "") << " ("
+              << id << "): " << message << "\n";
 }
 
 std::string glString(GLenum name) {
@@ -79,8 +79,8 @@ void initialiseCurrentContext(ContextInfo& info, const ContextOptions& options) 
     info.renderer = glString(GL_RENDERER);
     info.version = glString(GL_VERSION);
     if (epoxy_gl_version() < 45)
-        throw Error(info.provider + " context: expected OpenGL 4.5 core, got " + info.version + " (" +
-                    info.renderer + ")");
+        throw Error(info.provider + " context: expected OpenGL 4.5 core, got " + info.version + " (" + info.renderer +
+                    ")");
     if (options.debug) {
         // Synchronous, so a message is printed from inside the call that caused it.
         glEnable(GL_DEBUG_OUTPUT);
@@ -122,8 +122,9 @@ std::string windowsUnavailableReason() {
 
 #ifndef CAVEWALL_WITH_GLFW
 std::unique_ptr<Context> createWindowedContext(const std::vector<WindowRequest>&, bool, const ContextOptions&) {
-    throw Error("windowed output: this cavewall was built without GLFW (CAVEWALL_WITH_GLFW=OFF); "
-                "render headless instead");
+    throw Error(
+        "windowed output: this cavewall was built without GLFW (CAVEWALL_WITH_GLFW=OFF); "
+        "render headless instead");
 }
 #endif
 

@@ -38,17 +38,17 @@ struct ContextOptions {
 };
 
 struct ContextInfo {
-    std::string provider;            // "EGL surfaceless", "EGL device", "EGL default", "GLFW"
-    std::string renderer;            // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
-    std::string version;             // GL_VERSION
-    bool stereoWindows = false;      // windows have GL_BACK_LEFT and GL_BACK_RIGHT (quad-buffer)
+    std::string provider;        // "EGL surfaceless", "EGL device", "EGL default", "GLFW"
+    std::string renderer;        // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+    std::string version;         // GL_VERSION
+    bool stereoWindows = false;  // windows have GL_BACK_LEFT and GL_BACK_RIGHT (quad-buffer)
 };
 
 // What the renderer produced for one screen, to be shown in a window: colour textures (in the
 // rendering context's share group) of `size` pixels. `right` is the quad-buffer right eye.
 struct PresentImage {
-    unsigned left = 0;               // GL texture name
-    unsigned right = 0;              // GL texture name or 0
+    unsigned left = 0;   // GL texture name
+    unsigned right = 0;  // GL texture name or 0
     glm::ivec2 size{0, 0};
 };
 
@@ -122,9 +122,9 @@ std::unique_ptr<Context> createHeadlessContext(const ContextOptions& options = {
 
 struct WindowRequest {
     std::string title;
-    glm::ivec2 size{0, 0};           // pixels
-    glm::ivec2 position{0, 0};       // screen pixels (ignored in fullscreen)
-    int monitor = 0;                 // GLFW monitor index, for fullscreen
+    glm::ivec2 size{0, 0};      // pixels
+    glm::ivec2 position{0, 0};  // screen pixels (ignored in fullscreen)
+    int monitor = 0;            // GLFW monitor index, for fullscreen
     bool fullscreen = false;
 };
 

@@ -29,7 +29,8 @@ public:
 
 private:
     void release() {
-        if (eglGetCurrentContext() == _context) eglMakeCurrent(_display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        if (eglGetCurrentContext() == _context)
+            eglMakeCurrent(_display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(_display, _context);
     }
 
@@ -65,7 +66,8 @@ std::vector<Candidate> candidateDisplays(HeadlessPlatform wanted) {
         const bool ok = epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_device_enumeration") &&
                         epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_platform_device") &&
                         eglQueryDevicesEXT(1, &device, &count) && count > 0;
-        out.push_back({"EGL device", ok ? eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, device, nullptr) : EGL_NO_DISPLAY});
+        out.push_back(
+            {"EGL device", ok ? eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, device, nullptr) : EGL_NO_DISPLAY});
     }
     if (any || wanted == HeadlessPlatform::Default) out.push_back({"EGL default", eglGetDisplay(EGL_DEFAULT_DISPLAY)});
     return out;
@@ -90,9 +92,15 @@ EGLContext createCoreContext(EGLDisplay display, bool debug, std::string& why) {
         if (!eglChooseConfig(display, wanted, &config, 1, &count) || count < 1)
             return fail(why, "no OpenGL-renderable config");
     }
-    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                 EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                 EGL_CONTEXT_OPENGL_DEBUG, debug ? EGL_TRUE : EGL_FALSE, EGL_NONE};
+    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                 4,
+                                 EGL_CONTEXT_MINOR_VERSION,
+                                 5,
+                                 EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                 EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                 EGL_CONTEXT_OPENGL_DEBUG,
+                                 debug ? EGL_TRUE : EGL_FALSE,
+                                 EGL_NONE};
     EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, attributes);
     if (context == EGL_NO_CONTEXT) return fail(why, "no OpenGL 4.5 core context, error " + hex(eglGetError()));
     if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {

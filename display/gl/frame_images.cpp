@@ -55,8 +55,8 @@ scenes::Image foldoutOf(const display::Display& display, const std::vector<Scree
     return composeFoldout(display::foldoutLayout(display.screens(), pixelsPerMetre), byScreen);
 }
 
-std::vector<std::filesystem::path> writeFrame(const std::filesystem::path& folder, const std::vector<ScreenImage>& frame,
-                                              const scenes::Image& foldout) {
+std::vector<std::filesystem::path> writeFrame(const std::filesystem::path& folder,
+                                              const std::vector<ScreenImage>& frame, const scenes::Image& foldout) {
     std::vector<std::filesystem::path> written;
     for (const ScreenImage& s : frame) {
         written.push_back(folder / (s.stem + ".png"));

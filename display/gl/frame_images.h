@@ -31,7 +31,7 @@ scenes::Image foldoutOf(const display::Display& display, const std::vector<Scree
 
 // Writes `<folder>/<stem>.png` for every image, then `<folder>/foldout.png`; returns the files
 // written, in that order.
-std::vector<std::filesystem::path> writeFrame(const std::filesystem::path& folder, const std::vector<ScreenImage>& frame,
-                                              const scenes::Image& foldout);
+std::vector<std::filesystem::path> writeFrame(const std::filesystem::path& folder,
+                                              const std::vector<ScreenImage>& frame, const scenes::Image& foldout);
 
 }  // namespace cavewall::gl

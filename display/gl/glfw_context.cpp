@@ -37,7 +37,9 @@ public:
     void setOverlay(int window, const display::OverlayText& overlay) override;
     void setTitle(int window, const std::string& title) override;
     void requestWindowCapture(int window) override { at(window).captureRequested = true; }
-    std::optional<scenes::Image> takeWindowCapture(int window) override { return std::exchange(at(window).capture, {}); }
+    std::optional<scenes::Image> takeWindowCapture(int window) override {
+        return std::exchange(at(window).capture, {});
+    }
 
 private:
     static GlfwContext& of(GLFWwindow* w) { return *static_cast<GlfwContext*>(glfwGetWindowUserPointer(w)); }
@@ -51,7 +53,7 @@ private:
 
     struct Window {
         GLFWwindow* handle = nullptr;
-        GlObject readFramebuffer;  // belongs to this window's context (framebuffers are not shared)
+        GlObject readFramebuffer;                  // belongs to this window's context (framebuffers are not shared)
         std::unique_ptr<OverlayPass> overlayPass;  // this window's context too; made when first needed
         display::OverlayText overlay;
         std::vector<display::OverlayVertex> overlayVertices;
@@ -66,13 +68,14 @@ private:
 
     std::vector<Window> _windows;
     std::vector<input::Event> _events;
-    GLFWwindow* _captured = nullptr;       // the window holding the pointer, if any
+    GLFWwindow* _captured = nullptr;  // the window holding the pointer, if any
     glm::dvec2 _lastCursor{0.0};
 };
 
 GlfwContext::GlfwContext(const std::vector<WindowRequest>& requests, bool stereo, const ContextOptions& options) {
     if (requests.empty()) throw Error("windowed output: expected at least one window, got none");
-    if (gLiveGlfwContexts == 0 && !glfwInit()) throw Error("windowed output: cannot start GLFW (" + glfwFailure() + ")");
+    if (gLiveGlfwContexts == 0 && !glfwInit())
+        throw Error("windowed output: cannot start GLFW (" + glfwFailure() + ")");
     ++gLiveGlfwContexts;
     _info.provider = "GLFW";
     try {

@@ -36,7 +36,7 @@ public:
 
 private:
     static constexpr int kRing = 4;
-    void collect();  // moves available results into _latestMs
+    void collect();             // moves available results into _latestMs
     double resultMs(int slot);  // reads (waiting if needed) and frees a slot
 
     std::array<GlObject, kRing> _starts, _ends;

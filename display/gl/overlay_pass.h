@@ -26,7 +26,7 @@ public:
 private:
     GlObject _program, _vertexArray, _buffer;
     GLint _size = -1;
-    std::size_t _capacity = 0;   // vertices the buffer holds
+    std::size_t _capacity = 0;  // vertices the buffer holds
 };
 
 }  // namespace cavewall::gl

@@ -22,9 +22,11 @@ GlObject texture2d(GLenum format, glm::ivec2 size) {
 RenderTargets::RenderTargets(const display::Display& display, const Context& context) {
     const config::StereoMode mode = display.config().stereo;
     if (mode == config::StereoMode::QuadBuffer && !context.info().stereoWindows)
-        throw Error("display '" + display.config().name + "': stereo mode quad-buffer needs windows with "
-                    "quad-buffer stereo (GL_BACK_LEFT and GL_BACK_RIGHT), but the " + context.info().provider +
-                    " context (" + context.info().renderer + ") has none; use separate, side-by-side, "
+        throw Error("display '" + display.config().name +
+                    "': stereo mode quad-buffer needs windows with "
+                    "quad-buffer stereo (GL_BACK_LEFT and GL_BACK_RIGHT), but the " +
+                    context.info().provider + " context (" + context.info().renderer +
+                    ") has none; use separate, side-by-side, "
                     "top-bottom or anaglyph");
     const int images = mode == config::StereoMode::QuadBuffer ? 2 : display::imagesPerScreen(mode);
     for (const config::Screen& s : display.screens()) {

@@ -33,9 +33,9 @@ GlObject compile(std::string_view name, GLenum stage, std::string_view source) {
     GLint ok = GL_FALSE;
     glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
     if (!ok)
-        throw Error("shader program '" + std::string(name) + "': " +
-                    (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") + " stage failed to compile: " +
-                    shaderLog(shader.id()));
+        throw Error("shader program '" + std::string(name) +
+                    "': " + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
+                    " stage failed to compile: " + shaderLog(shader.id()));
     return shader;
 }
 
@@ -50,8 +50,7 @@ GlObject buildProgram(std::string_view name, std::string_view vertexSource, std:
     glLinkProgram(program.id());
     GLint ok = GL_FALSE;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
-    if (!ok)
-        throw Error("shader program '" + std::string(name) + "': link stage failed: " + programLog(program.id()));
+    if (!ok) throw Error("shader program '" + std::string(name) + "': link stage failed: " + programLog(program.id()));
     glDetachShader(program.id(), vertex.id());
     glDetachShader(program.id(), fragment.id());
     return program;
@@ -60,8 +59,8 @@ GlObject buildProgram(std::string_view name, std::string_view vertexSource, std:
 GLint uniformLocation(GLuint program, std::string_view programName, const char* uniform) {
     const GLint location = glGetUniformLocation(program, uniform);
     if (location < 0)
-        throw Error("shader program '" + std::string(programName) + "': expected an active uniform '" +
-                    uniform + "', got none");
+        throw Error("shader program '" + std::string(programName) + "': expected an active uniform '" + uniform +
+                    "', got none");
     return location;
 }
 

@@ -36,7 +36,8 @@ double fastestMs(const std::function<void()>& draw) {
         const auto start = std::chrono::steady_clock::now();
         draw();
         glFinish();
-        fastest = std::min(fastest, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        fastest = std::min(fastest,
+                           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
     return fastest;
 }
@@ -54,8 +55,8 @@ bool readCosts(const std::filesystem::path& file, hierarchy::ClusterCosts& costs
         std::ifstream in(file);
         if (!in) return false;
         const nlohmann::json j = nlohmann::json::parse(in);
-        costs = {j.at("msPerTriangle").get<double>(), j.at("msPerObject").get<double>(),
-                 j.at("texturedBoxMs").get<double>(), j.at("averageBoxMs").get<double>(),
+        costs = {j.at("msPerTriangle").get<double>(),  j.at("msPerObject").get<double>(),
+                 j.at("texturedBoxMs").get<double>(),  j.at("averageBoxMs").get<double>(),
                  j.at("texturedViewMs").get<double>(), j.at("averageViewMs").get<double>()};
         return true;
     } catch (const std::exception&) {
@@ -67,8 +68,7 @@ bool readCosts(const std::filesystem::path& file, hierarchy::ClusterCosts& costs
 
 MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostors& impostors,
                                   const hierarchy::ClusterModel& model, const scenes::Scene& scene,
-                                  const std::string& rendererName, const std::filesystem::path& cache,
-                                  int resolution) {
+                                  const std::string& rendererName, const std::filesystem::path& cache, int resolution) {
     if (resolution < 1 || resolution > 16384)
         throw Error("cluster costs: resolution: expected 1 to 16384 pixels, got " + std::to_string(resolution));
     MeasuredCosts result;
@@ -93,13 +93,16 @@ MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostor
         filter.frustumCull = false;
         return fastestMs([&] {
                    for (int i = 0; i < times; ++i) renderer.renderFrustum(frustum, glm::dmat4(1.0), vt, filter);
-               }) / times;
+               }) /
+               times;
     };
     // Objects by triangles: the smaller half and the larger half.
     std::vector<int> order(model.objectTriangles.size());
     std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return model.objectTriangles[a] < model.objectTriangles[b]; });
-    const std::vector<int> small(order.begin(), order.begin() + order.size() / 2), large(order.begin() + order.size() / 2, order.end());
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return model.objectTriangles[a] < model.objectTriangles[b]; });
+    const std::vector<int> small(order.begin(), order.begin() + order.size() / 2),
+        large(order.begin() + order.size() / 2, order.end());
     auto triangles = [&](const std::vector<int>& set) {
         double t = 0.0;
         for (int o : set) t += static_cast<double>(model.objectTriangles[o]);
@@ -109,7 +112,8 @@ MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostor
     const int times = static_cast<int>(std::clamp(std::ceil(kMinTimedTriangles / std::max(1.0, std::min(gs, gl))), 1.0,
                                                   static_cast<double>(kMaxRepeats)));
     const double empty = drawObjects({}, times);
-    const double ts = std::max(0.0, drawObjects(small, times) - empty), tl = std::max(0.0, drawObjects(large, times) - empty);
+    const double ts = std::max(0.0, drawObjects(small, times) - empty),
+                 tl = std::max(0.0, drawObjects(large, times) - empty);
     const double ns = static_cast<double>(small.size()), nl = static_cast<double>(large.size());
     // ts = c ns + b gs, tl = c nl + b gl.
     const double det = ns * gl - nl * gs;
@@ -160,9 +164,13 @@ MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostor
         (rep == hierarchy::ClusterRep::Textured ? result.costs.texturedViewMs : result.costs.averageViewMs) =
             cost.viewMs;
     }
-    nlohmann::json j{{"renderer", rendererName}, {"resolution", resolution}, {"msPerTriangle", b},
-                     {"msPerObject", c}, {"texturedBoxMs", result.costs.texturedBoxMs},
-                     {"averageBoxMs", result.costs.averageBoxMs}, {"texturedViewMs", result.costs.texturedViewMs},
+    nlohmann::json j{{"renderer", rendererName},
+                     {"resolution", resolution},
+                     {"msPerTriangle", b},
+                     {"msPerObject", c},
+                     {"texturedBoxMs", result.costs.texturedBoxMs},
+                     {"averageBoxMs", result.costs.averageBoxMs},
+                     {"texturedViewMs", result.costs.texturedViewMs},
                      {"averageViewMs", result.costs.averageViewMs}};
     scenes::writeAtomically(result.file, [&](const std::filesystem::path& temporary) {
         std::ofstream out(temporary);

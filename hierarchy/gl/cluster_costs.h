@@ -32,7 +32,7 @@ inline constexpr int kCostResolution = 256;  // the default when a caller has no
 
 struct MeasuredCosts {
     hierarchy::ClusterCosts costs;
-    bool cached = false;            // read from the cache, not measured now
+    bool cached = false;  // read from the cache, not measured now
     std::filesystem::path file;
 };
 

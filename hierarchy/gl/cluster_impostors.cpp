@@ -26,9 +26,7 @@ namespace {
 using hierarchy::kBoxFaces;
 using hierarchy::kFaceRegions;
 
-std::string fileName(int face, int region) {
-    return "f" + std::to_string(face) + "r" + std::to_string(region) + ".tx";
-}
+std::string fileName(int face, int region) { return "f" + std::to_string(face) + "r" + std::to_string(region) + ".tx"; }
 
 // Premultiplied MIP levels as the wall pass samples them (walls/gl/wall_quad.h).
 GlObject upload(std::vector<scenes::Image> levels) { return uploadWallTexture(std::move(levels)); }
@@ -37,7 +35,8 @@ GlObject upload(std::vector<scenes::Image> levels) { return uploadWallTexture(st
 GlObject colourTexture(glm::vec3 linear) {
     scenes::Image texel{"average", 1, 1, {0, 0, 0, 255}};
     for (int c = 0; c < 3; ++c)
-        texel.rgba[c] = static_cast<std::uint8_t>(std::lround(255.0f * walls::linearToSrgb(std::clamp(linear[c], 0.0f, 1.0f))));
+        texel.rgba[c] =
+            static_cast<std::uint8_t>(std::lround(255.0f * walls::linearToSrgb(std::clamp(linear[c], 0.0f, 1.0f))));
     return upload({texel});
 }
 
@@ -88,7 +87,8 @@ ClusterImpostors::ClusterImpostors(const scenes::Scene& scene, hierarchy::Cluste
         Node& node = _nodes[static_cast<int>(n)];
         node.box = hierarchy::impostorBox(cluster.bounds);
         node.objects = cluster.objects;
-        const std::filesystem::path folder = cache / "clusters" / walls::hex64(clusterKey(cluster, objectKeys, settings));
+        const std::filesystem::path folder =
+            cache / "clusters" / walls::hex64(clusterKey(cluster, objectKeys, settings));
         ++_stats.clusters;
         if (load(folder, node, model.accuracy[n])) {
             ++_stats.reused;
@@ -118,7 +118,8 @@ bool ClusterImpostors::load(const std::filesystem::path& folder, Node& node, hie
             accuracy.average[d] = j.at("average").at(d).get<double>();
         }
         for (int f = 0; f < kBoxFaces; ++f) {
-            for (int r = 0; r < kFaceRegions; ++r) node.textures[f][r] = upload(scenes::readMipLevels(folder / fileName(f, r)));
+            for (int r = 0; r < kFaceRegions; ++r)
+                node.textures[f][r] = upload(scenes::readMipLevels(folder / fileName(f, r)));
             node.averages[f] = colourTexture(node.faces[f].linearColour);
         }
         return true;
@@ -207,7 +208,9 @@ std::vector<WallDraw> ClusterImpostors::draws(const hierarchy::ClusterBoxDraw& b
             out.push_back({hierarchy::boxFace(node.box, f), {node.textures[f][r].id()}, {box.weight}, 1});
         } else if (node.faces[f].coverage > 0.0f) {
             out.push_back({hierarchy::averageFaceQuad(hierarchy::boxFace(node.box, f), node.faces[f].coverage),
-                           {node.averages[f].id()}, {box.weight}, 1});
+                           {node.averages[f].id()},
+                           {box.weight},
+                           1});
         }
     }
     return out;

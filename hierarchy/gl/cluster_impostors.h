@@ -41,9 +41,9 @@ class OffscreenTarget;
 class WallTextureRenderer;
 
 struct ClusterBakeSettings {
-    int resolution = 64;            // texels along a face texture's longer side, [4, 2048]
-    int accuracyResolution = 64;    // side of the accuracy comparison images, [16, 1024]
-    float ambient = 0.35f;          // as RenderSettings::ambient
+    int resolution = 64;          // texels along a face texture's longer side, [4, 2048]
+    int accuracyResolution = 64;  // side of the accuracy comparison images, [16, 1024]
+    float ambient = 0.35f;        // as RenderSettings::ambient
 };
 
 // Throws cavewall::Error naming the setting when it is out of range.
@@ -81,7 +81,7 @@ public:
 private:
     struct Node {
         std::array<std::array<GlObject, hierarchy::kFaceRegions>, hierarchy::kBoxFaces> textures;
-        std::array<GlObject, hierarchy::kBoxFaces> averages;   // 1 x 1, opaque
+        std::array<GlObject, hierarchy::kBoxFaces> averages;  // 1 x 1, opaque
         std::array<hierarchy::FaceAverage, hierarchy::kBoxFaces> faces;
         scenes::Bounds box;
         std::vector<int> objects;
@@ -93,9 +93,9 @@ private:
 
     const scenes::Scene& _scene;
     ClusterBakeSettings _settings;
-    std::map<int, Node> _nodes;                        // by tree node index
-    std::unique_ptr<WallTextureRenderer> _renderer;    // made when something is rendered
-    std::unique_ptr<OffscreenTarget> _target;          // image(): reallocated when the size changes
+    std::map<int, Node> _nodes;                      // by tree node index
+    std::unique_ptr<WallTextureRenderer> _renderer;  // made when something is rendered
+    std::unique_ptr<OffscreenTarget> _target;        // image(): reallocated when the size changes
     WallPass _pass;
     GlObject _sampler;
     ClusterBakeStats _stats;

@@ -23,9 +23,7 @@ std::pair<glm::vec<N, double>, glm::vec<N, double>> box(const std::vector<glm::v
     return {lo, hi - lo};
 }
 
-std::uint16_t unorm16(double v) {
-    return static_cast<std::uint16_t>(std::lround(std::clamp(v, 0.0, 1.0) * 65535.0));
-}
+std::uint16_t unorm16(double v) { return static_cast<std::uint16_t>(std::lround(std::clamp(v, 0.0, 1.0) * 65535.0)); }
 
 // `v` - offset over extent, per component (0 along a flat axis).
 template <int N>
@@ -94,7 +92,12 @@ GlObject immutableBuffer(std::size_t bytes, const void* data) {
 void describeVertexArray(GLuint vao, GLuint vertices, GLuint indices) {
     glVertexArrayVertexBuffer(vao, 0, vertices, 0, sizeof(GpuVertex));
     glVertexArrayElementBuffer(vao, indices);
-    struct Attribute { GLuint location; GLint size; GLenum type; std::size_t offset; };
+    struct Attribute {
+        GLuint location;
+        GLint size;
+        GLenum type;
+        std::size_t offset;
+    };
     const Attribute attributes[] = {
         {0, 3, GL_UNSIGNED_SHORT, offsetof(GpuVertex, position)},
         {1, 4, GL_INT_2_10_10_10_REV, offsetof(GpuVertex, normal)},
@@ -113,8 +116,8 @@ void describeVertexArray(GLuint vao, GLuint vertices, GLuint indices) {
 const scenes::Image kMissingImage{"missing", 1, 1, {255, 0, 255, 255}};
 
 GlObject uploadTexture(const scenes::Image& given) {
-    const bool valid = given.width > 0 && given.height > 0 &&
-                       given.rgba.size() == std::size_t(given.width) * given.height * 4;
+    const bool valid =
+        given.width > 0 && given.height > 0 && given.rgba.size() == std::size_t(given.width) * given.height * 4;
     const scenes::Image& image = valid ? given : kMissingImage;
     GlObject t = createTexture(GL_TEXTURE_2D);
     const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
@@ -129,9 +132,9 @@ GlObject uploadTexture(const scenes::Image& given) {
 
 GLint wrapMode(int w) {
     switch (static_cast<scenes::Wrap>(w)) {
-    case scenes::Wrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
-    case scenes::Wrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
-    case scenes::Wrap::Repeat: break;
+        case scenes::Wrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
+        case scenes::Wrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
+        case scenes::Wrap::Repeat: break;
     }
     return GL_REPEAT;
 }
@@ -148,7 +151,8 @@ PackedGeometry packMeshes(const scenes::Scene& scene, const std::vector<scenes::
         std::vector<GpuMeshRange> levels;
         if (lods && static_cast<std::size_t>(i) < lods->size() && !(*lods)[i].levels.empty()) {
             const scenes::MeshLod& lod = (*lods)[i];
-            for (const scenes::LodLevel& l : lod.levels) levels.push_back({first + l.firstIndex, l.indexCount, baseVertex});
+            for (const scenes::LodLevel& l : lod.levels)
+                levels.push_back({first + l.firstIndex, l.indexCount, baseVertex});
             p.indices.insert(p.indices.end(), lod.indices.begin(), lod.indices.end());
         } else {
             levels.push_back({first, static_cast<std::uint32_t>(m.indices.size()), baseVertex});
@@ -233,7 +237,8 @@ void GpuScene::freeGroup(int group) {
 
 void GpuScene::bindSet(int set) const {
     const GroupBuffers* group = set > 0 && groupResident(set - 1) ? _groupBuffers[set - 1].get() : nullptr;
-    glVertexArrayVertexBuffer(_vertexArray.id(), 0, group ? group->vertices.id() : _vertices.id(), 0, sizeof(GpuVertex));
+    glVertexArrayVertexBuffer(_vertexArray.id(), 0, group ? group->vertices.id() : _vertices.id(), 0,
+                              sizeof(GpuVertex));
     glVertexArrayElementBuffer(_vertexArray.id(), group ? group->indices.id() : _indices.id());
 }
 

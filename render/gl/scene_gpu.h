@@ -45,9 +45,9 @@ namespace cavewall::gl {
 // Interleaved vertex, 24 bytes (see above). Missing attributes get neutral values: normal 0
 // (drawn unlit), texture coordinates 0, colour white.
 struct GpuVertex {
-    std::array<std::uint16_t, 4> position{};   // unorm16 within the mesh's box (w unused)
-    std::uint32_t normal = 0;                   // snorm 2_10_10_10_REV, xyz (w 0)
-    std::array<std::uint16_t, 2> texCoord{};    // unorm16 within the mesh's texture-coordinate box
+    std::array<std::uint16_t, 4> position{};  // unorm16 within the mesh's box (w unused)
+    std::uint32_t normal = 0;                 // snorm 2_10_10_10_REV, xyz (w 0)
+    std::array<std::uint16_t, 2> texCoord{};  // unorm16 within the mesh's texture-coordinate box
     std::array<std::uint16_t, 4> color{0xffff, 0xffff, 0xffff, 0xffff};  // unorm16 linear RGBA
 };
 static_assert(sizeof(GpuVertex) == 24);
@@ -143,11 +143,11 @@ private:
 
     GlObject _vertices, _indices, _vertexArray;
     bool _paging = false;
-    scenes::PagedMeshGroups _groups;                            // with paging
-    std::vector<int> _objectSets;                               // per object, with paging
+    scenes::PagedMeshGroups _groups;                           // with paging
+    std::vector<int> _objectSets;                              // per object, with paging
     std::vector<std::unique_ptr<GroupBuffers>> _groupBuffers;  // per group, null when not resident
     std::size_t _residentPagedBytes = 0;
-    std::vector<Decode> _decode;                      // per mesh
+    std::vector<Decode> _decode;                     // per mesh
     std::vector<std::vector<GpuMeshRange>> _meshes;  // per mesh, its levels (finest first)
     std::vector<GlObject> _textures;
     std::array<GlObject, 9> _samplers;

@@ -25,9 +25,9 @@ using display::msSince;
 
 int alphaModeIndex(scenes::AlphaMode mode) {
     switch (mode) {
-    case scenes::AlphaMode::Mask: return 1;
-    case scenes::AlphaMode::Blend: return 2;
-    case scenes::AlphaMode::Opaque: break;
+        case scenes::AlphaMode::Mask: return 1;
+        case scenes::AlphaMode::Blend: return 2;
+        case scenes::AlphaMode::Opaque: break;
     }
     return 0;
 }
@@ -66,9 +66,7 @@ void setViewport(const display::Viewport& vp, glm::bvec4 colorMask) {
 }  // namespace
 
 SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings)
-    : _settings(settings),
-      _scene(scene, settings.lodPixels > 0.0, settings.cullBackFaces),
-      _lists(_scene),
+    : _settings(settings), _scene(scene, settings.lodPixels > 0.0, settings.cullBackFaces), _lists(_scene),
       _gpu(scene, _scene.hasLods() ? &_scene.lods() : nullptr, settings.pagedCells) {
     _lists.setVertexLightingTolerance(settings.vertexLightingTolerance);
     const bool textured = _gpu.textureCount() > 0;
@@ -76,9 +74,8 @@ SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings
         for (bool vertexLit : {false, true}) {
             Program& p = _programs[programIndex(alphaTest, vertexLit)];
             const std::string name = programName(alphaTest, vertexLit);
-            p.program =
-                buildProgram(name, shaders::sceneShader(shaders::kSceneVertex, textured, alphaTest, vertexLit),
-                             shaders::sceneShader(shaders::kSceneFragment, textured, alphaTest, vertexLit));
+            p.program = buildProgram(name, shaders::sceneShader(shaders::kSceneVertex, textured, alphaTest, vertexLit),
+                                     shaders::sceneShader(shaders::kSceneFragment, textured, alphaTest, vertexLit));
             p.projection = uniformLocation(p.program.id(), name, "uProjection");
             p.ambient = uniformLocation(p.program.id(), name, "uAmbient");
         }
@@ -232,7 +229,8 @@ ViewStats SceneRenderer::draw(const render::RenderList& list) {
         const glm::dmat4 frameFromModel = list.frameFromWorld * o.worldFromModel;
         shaders::DrawRecord r;
         // Stored positions decode into the model frame; normals need no decoding.
-        const glm::mat4 modelView = display::eyeRelativeModelView(frustum, frameFromModel * _gpu.modelFromStored(o.mesh));
+        const glm::mat4 modelView =
+            display::eyeRelativeModelView(frustum, frameFromModel * _gpu.modelFromStored(o.mesh));
         for (int row = 0; row < 3; ++row) r.modelViewRows[row] = glm::row(modelView, row);
         const glm::dmat3 normal = glm::transpose(glm::inverse(glm::dmat3(frustum.viewFromFrame * frameFromModel)));
         for (int c = 0; c < 3; ++c) r.normalMatrix[c] = glm::vec4(glm::vec3(normal[c]), 0.0f);
@@ -242,8 +240,8 @@ ViewStats SceneRenderer::draw(const render::RenderList& list) {
         const GpuMeshRange* range = _gpu.mesh(set, o.mesh, d.level);
         const GpuMeshRange drawn = range ? *range : GpuMeshRange{};
         objectsDrawn += range != nullptr;
-        _commands.push_back({drawn.indexCount, 1, drawn.firstIndex, drawn.baseVertex,
-                             static_cast<std::uint32_t>(_records.size())});
+        _commands.push_back(
+            {drawn.indexCount, 1, drawn.firstIndex, drawn.baseVertex, static_cast<std::uint32_t>(_records.size())});
         _commandSets.push_back(set);
         _records.push_back(r);
     }
@@ -272,7 +270,8 @@ void SceneRenderer::groupBySet(const render::RenderList& list) {
         const auto count = static_cast<std::size_t>(list.batches[b].count);
         order.resize(count);
         for (std::size_t i = 0; i < count; ++i) order[i] = first + i;
-        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t c) { return _commandSets[a] < _commandSets[c]; });
+        std::stable_sort(order.begin(), order.end(),
+                         [&](std::size_t a, std::size_t c) { return _commandSets[a] < _commandSets[c]; });
         commands.clear();
         sets.clear();
         for (std::size_t i : order) commands.push_back(_commands[i]), sets.push_back(_commandSets[i]);
@@ -301,7 +300,8 @@ void SceneRenderer::issueBatches(const render::RenderList& list) {
             while (next < end && _commandSets[static_cast<std::size_t>(next)] == set) ++next;
             if (set != boundSet) _gpu.bindSet(set), boundSet = set;
             const auto offset = static_cast<std::uintptr_t>(run) * sizeof(shaders::DrawCommand);
-            glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(offset), next - run, 0);
+            glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(offset),
+                                        next - run, 0);
             ++calls;
             run = next;
         }

@@ -93,9 +93,9 @@ using display::ViewStats;
 // an optional clear of colour (linear RGBA; alpha 0 marks "nothing drawn") within it. Depth
 // is always cleared within the viewport; the framebuffer needs a depth attachment.
 struct ViewTarget {
-    GLuint framebuffer = 0;                // 0: the default framebuffer
-    display::Viewport viewport;            // pixels, origin lower-left
-    std::optional<glm::vec4> clearColor;   // nullopt: keep the colour already there
+    GLuint framebuffer = 0;               // 0: the default framebuffer
+    display::Viewport viewport;           // pixels, origin lower-left
+    std::optional<glm::vec4> clearColor;  // nullopt: keep the colour already there
     glm::bvec4 colorMask{true};
 };
 
@@ -208,11 +208,11 @@ private:
     // Per-view scratch, kept to avoid allocating per view.
     std::vector<shaders::DrawRecord> _records;
     std::vector<shaders::DrawCommand> _commands;
-    std::vector<int> _commandSets;  // per command: GpuScene buffer set
-    std::vector<std::size_t> _sortOrder;            // groupBySet's scratch
+    std::vector<int> _commandSets;        // per command: GpuScene buffer set
+    std::vector<std::size_t> _sortOrder;  // groupBySet's scratch
     std::vector<shaders::DrawCommand> _sortCommands;
     std::vector<int> _sortSets;
-    int _multiDraws = 0;            // by the last issueBatches
+    int _multiDraws = 0;  // by the last issueBatches
 };
 
 }  // namespace cavewall::gl

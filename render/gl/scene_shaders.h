@@ -20,10 +20,10 @@ namespace cavewall::gl::shaders {
 // A mesh's material as the shader sees it: its material (or the default one), with the
 // mesh's texture-coordinate decoding folded into the texture transform (GpuScene::uvFromStored).
 struct MaterialRecord {
-    glm::vec4 baseColor{1.0f};        // linear RGBA
-    glm::vec4 uvRows[2]{};            // rows 0 and 1 of the KHR_texture_transform 3x3 (xyz)
-    glm::vec4 params{0.0f};           // x: alpha mode (0 opaque, 1 mask, 2 blend), y: textured
-                                      // (0/1), z: alpha cutoff
+    glm::vec4 baseColor{1.0f};  // linear RGBA
+    glm::vec4 uvRows[2]{};      // rows 0 and 1 of the KHR_texture_transform 3x3 (xyz)
+    glm::vec4 params{0.0f};     // x: alpha mode (0 opaque, 1 mask, 2 blend), y: textured
+                                // (0/1), z: alpha cutoff
 };
 static_assert(sizeof(MaterialRecord) == 64);
 
@@ -31,20 +31,20 @@ static_assert(sizeof(MaterialRecord) == 64);
 // origin at the eye) and affine, so three rows hold it. Attribute locations of the fields:
 // kDrawAttributes (llvmpipe has 16 vertex attributes: the record takes 5 to 14).
 struct DrawRecord {
-    glm::vec4 modelViewRows[3]{};     // locations 5-7: rows 0-2 of the model-view matrix
-    glm::vec4 normalMatrix[3]{};      // 8-10: columns of the model-view's inverse transpose (xyz)
-    MaterialRecord material;          // 11: base colour, 12-13: uv rows, 14: params
+    glm::vec4 modelViewRows[3]{};  // locations 5-7: rows 0-2 of the model-view matrix
+    glm::vec4 normalMatrix[3]{};   // 8-10: columns of the model-view's inverse transpose (xyz)
+    MaterialRecord material;       // 11: base colour, 12-13: uv rows, 14: params
 };
 static_assert(sizeof(DrawRecord) == 160);
 
 // Memory layout of GL's DrawElementsIndirectCommand (20 bytes, tightly packed): one per draw
 // in the indirect buffer.
 struct DrawCommand {
-    std::uint32_t count = 0;          // indices
+    std::uint32_t count = 0;  // indices
     std::uint32_t instanceCount = 1;
-    std::uint32_t firstIndex = 0;     // in indices
+    std::uint32_t firstIndex = 0;  // in indices
     std::int32_t baseVertex = 0;
-    std::uint32_t baseInstance = 0;   // the draw's record index
+    std::uint32_t baseInstance = 0;  // the draw's record index
 };
 static_assert(sizeof(DrawCommand) == 20);
 

@@ -19,7 +19,7 @@ namespace cavewall::gl {
 struct Snapshot {
     std::vector<ScreenImage> images;  // every output image (readFrame order)
     scenes::Image foldout;
-    FrameStats stats;                 // gpuMs of this frame (not an earlier one)
+    FrameStats stats;  // gpuMs of this frame (not an earlier one)
 };
 
 class Snapshotter {

@@ -31,8 +31,7 @@ TEST(RunOptions, EachRuleNamesItsFlags) {
              o.cluster = true;
          },
          "--frames 0 and --cluster: expected a frame count with --cluster"},
-        {"saved frames without a folder", [](RunOptions& o) { o.saveEvery = 1; },
-         "--save-frames: needs --out DIR"},
+        {"saved frames without a folder", [](RunOptions& o) { o.saveEvery = 1; }, "--save-frames: needs --out DIR"},
         {"window images without windows",
          [](RunOptions& o) {
              o.out = "x";

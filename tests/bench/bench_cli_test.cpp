@@ -43,8 +43,9 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     EXPECT_THAT(r.out, HasSubstr("4 screens at 128x128 pixels, mono stereo mode"));
     // Full geometry, the walls modes (but the paged one) and the clusters (--clusters, held to
     // 60 Hz by the controller) are timed in the same seconds.
-    EXPECT_THAT(r.out, HasSubstr("drawn frame by frame in turn (the same seconds): full, full lod 1px, walls a=20 blend, "
-                                 "walls a=30 blend, walls a=20 blend lod 1px"));
+    EXPECT_THAT(r.out,
+                HasSubstr("drawn frame by frame in turn (the same seconds): full, full lod 1px, walls a=20 blend, "
+                          "walls a=30 blend, walls a=20 blend lod 1px"));
     EXPECT_THAT(r.out, HasSubstr("walls a=30 blend lod 1px frame 16.7ms, clusters frame 0.5ms, clusters frame 200ms, "
                                  "frame by frame in turn"));
     // One clusters mode per --cluster-budgets entry, each with its budget line: no frame at
@@ -85,8 +86,10 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
             // +infinity; every other number is finite. Only a gain over the control may be negative.
             const bool psnr = name == "psnr_db" || name == "worst_frame_psnr_db" || name == "p5_frame_psnr_db" ||
                               name == "psnr_gain_db";
-            if (psnr && mode == "full" && !lod) EXPECT_TRUE(std::isinf(v) && v > 0) << name;
-            else EXPECT_TRUE(std::isfinite(v)) << name << " = " << row.at(name);
+            if (psnr && mode == "full" && !lod)
+                EXPECT_TRUE(std::isinf(v) && v > 0) << name;
+            else
+                EXPECT_TRUE(std::isfinite(v)) << name << " = " << row.at(name);
             if (name != "psnr_gain_db") EXPECT_GE(v, 0.0) << name;
         }
         EXPECT_LE(row.number("flip_p95"), 1.0);
@@ -101,17 +104,31 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         EXPECT_EQ(row.number("over_alpha"), 0.0);
         // Paged from a cold start, textures arrive during the timed frames; every other mode
         // made them resident before (and modes without walls have none).
-        if (key == "walls 30 blend paged") EXPECT_GT(row.number("uploaded_mb_mean"), 0.0);
-        else EXPECT_EQ(row.number("uploaded_mb_p99"), 0.0);
+        if (key == "walls 30 blend paged")
+            EXPECT_GT(row.number("uploaded_mb_mean"), 0.0);
+        else
+            EXPECT_EQ(row.number("uploaded_mb_p99"), 0.0);
     }
     // With levels of detail (--lod defaults to 1 px): full, near and every blend mode again,
     // every blend mode with them under a triangle budget, and every blend mode with them held
     // to 60 Hz by the frame-time controller.
-    const std::map<std::string, int> expected = {
-        {"full", 1}, {"full lod", 1}, {"cells", 1}, {"cells+layer", 1}, {"near", 1}, {"near lod", 1}, {"walls 20 blend", 1},
-        {"walls 30 blend", 1}, {"walls 20 blend lod", 1}, {"walls 30 blend lod", 1}, {"walls 30 warp", 1},
-        {"walls 30 blend paged", 1}, {"walls 20 blend lod budget", 1}, {"walls 30 blend lod budget", 1},
-        {"walls 20 blend lod frame", 1}, {"walls 30 blend lod frame", 1}, {"clusters frame", 2}};
+    const std::map<std::string, int> expected = {{"full", 1},
+                                                 {"full lod", 1},
+                                                 {"cells", 1},
+                                                 {"cells+layer", 1},
+                                                 {"near", 1},
+                                                 {"near lod", 1},
+                                                 {"walls 20 blend", 1},
+                                                 {"walls 30 blend", 1},
+                                                 {"walls 20 blend lod", 1},
+                                                 {"walls 30 blend lod", 1},
+                                                 {"walls 30 warp", 1},
+                                                 {"walls 30 blend paged", 1},
+                                                 {"walls 20 blend lod budget", 1},
+                                                 {"walls 30 blend lod budget", 1},
+                                                 {"walls 20 blend lod frame", 1},
+                                                 {"walls 30 blend lod frame", 1},
+                                                 {"clusters frame", 2}};
     EXPECT_EQ(rows, expected);
     EXPECT_TRUE(fs::is_regular_file(out / "bench.png"));
     EXPECT_TRUE(fs::is_regular_file(out / "bench.md"));
@@ -128,7 +145,8 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     EXPECT_EQ(screenRows, 18u * 4);
     // A FLIP map of the worst image of every mode but the reference (mode 1).
     EXPECT_FALSE(fs::exists(out / "flip_worst_1.png"));
-    for (int mode = 2; mode <= 18; ++mode) EXPECT_TRUE(fs::is_regular_file(out / ("flip_worst_" + std::to_string(mode) + ".png")));
+    for (int mode = 2; mode <= 18; ++mode)
+        EXPECT_TRUE(fs::is_regular_file(out / ("flip_worst_" + std::to_string(mode) + ".png")));
 }
 
 // Automatic walls and baking on demand end to end on the small plant: `walls --keep-paths`
@@ -143,16 +161,33 @@ TEST(BenchSceneCli, ComparesAnotherSceneAndBakesOnDemandFromAnEmptyCache) {
     ASSERT_EQ(g.exitCode, 0) << g.err;
     const fs::path automatic = root / "auto" / "scene.json";
     fs::create_directories(automatic.parent_path());
-    const CliResult w = runCavewall({"walls", (plant / "scene.json").string(), "--out", automatic.string(), "--keep-paths",
-                                     "--max-res", "128", "--max-cells", "3", "--min-cell", "8", "--alpha", "30",
-                                     "--ms-per-wall", "0"});  // free wall layers: 20 k triangles still pay for cells
+    const CliResult w =
+        runCavewall({"walls", (plant / "scene.json").string(), "--out", automatic.string(), "--keep-paths", "--max-res",
+                     "128", "--max-cells", "3", "--min-cell", "8", "--alpha", "30", "--ms-per-wall",
+                     "0"});  // free wall layers: 20 k triangles still pay for cells
     ASSERT_EQ(w.exitCode, 0) << w.out << w.err;
     const fs::path out = root / "out", cache = root / "cache";
     fs::remove_all(out);
     fs::remove_all(cache);
-    const CliResult r = runCavewall({"bench", (plant / "scene.json").string(), "--quick", "--frames", "12", "--out",
-                                     out.string(), "--cache", cache.string(), "--alphas", "30", "--warp-alpha", "30",
-                                     "--lod", "0", "--frame-budget-ms", "0", "--compare-scene", automatic.string(),
+    const CliResult r = runCavewall({"bench",
+                                     (plant / "scene.json").string(),
+                                     "--quick",
+                                     "--frames",
+                                     "12",
+                                     "--out",
+                                     out.string(),
+                                     "--cache",
+                                     cache.string(),
+                                     "--alphas",
+                                     "30",
+                                     "--warp-alpha",
+                                     "30",
+                                     "--lod",
+                                     "0",
+                                     "--frame-budget-ms",
+                                     "0",
+                                     "--compare-scene",
+                                     automatic.string(),
                                      "--on-demand"});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     // The compare scene's walls are drawn frame by frame in turn with full geometry and the
@@ -160,8 +195,9 @@ TEST(BenchSceneCli, ComparesAnotherSceneAndBakesOnDemandFromAnEmptyCache) {
     EXPECT_THAT(r.out, HasSubstr("drawn frame by frame in turn (the same seconds): full, walls a=30 blend, walls a=30 "
                                  "warp, walls a=30 blend [auto]"));
     EXPECT_THAT(r.out, HasSubstr("compare scene [auto]: " + automatic.string()));
-    EXPECT_THAT(r.out, HasSubstr("figures (128x128 per screen, mono): walls a=30 blend [auto] against walls a=30 blend: "
-                                 "speed-up"));
+    EXPECT_THAT(r.out,
+                HasSubstr("figures (128x128 per screen, mono): walls a=30 blend [auto] against walls a=30 blend: "
+                          "speed-up"));
     EXPECT_THAT(r.out, HasSubstr("figures (128x128 per screen, mono): walls a=30 blend on demand from an empty cache: "
                                  "first frame"));
     EXPECT_THAT(r.out, Not(HasSubstr("met)")));
@@ -169,10 +205,11 @@ TEST(BenchSceneCli, ComparesAnotherSceneAndBakesOnDemandFromAnEmptyCache) {
     const test::CsvTable csv = test::readCsv(out / "bench.csv");
     std::map<std::string, int> rows;
     for (const test::CsvRow& row : csv) ++rows[row.at("mode") + " " + row.at("transition") + " " + row.at("scene")];
-    const std::map<std::string, int> expected = {
-        {"full none bench", 1}, {"cells none bench", 1}, {"cells+layer none bench", 1}, {"near none bench", 1},
-        {"walls blend bench", 1}, {"walls warp bench", 1}, {"walls blend paged bench", 1},
-        {"walls blend on demand bench", 1}, {"walls blend auto", 1}};
+    const std::map<std::string, int> expected = {{"full none bench", 1},         {"cells none bench", 1},
+                                                 {"cells+layer none bench", 1},  {"near none bench", 1},
+                                                 {"walls blend bench", 1},       {"walls warp bench", 1},
+                                                 {"walls blend paged bench", 1}, {"walls blend on demand bench", 1},
+                                                 {"walls blend auto", 1}};
     EXPECT_EQ(rows, expected);
     for (const test::CsvRow& row : csv) {
         SCOPED_TRACE(row.at("mode") + " " + row.at("transition") + " " + row.at("scene"));
@@ -246,9 +283,11 @@ TEST(BenchSceneCli, BadCompareSceneOrOnDemandCacheIsAClearError) {
          "--compare-scene: expected scene files separated by commas, got an empty entry 2"},
         {{"bench", scene, "--quick", "--on-demand", "--walls", "depth"},
          "--on-demand: baking on demand draws flat walls only, got --walls depth"},
-        {{"bench", scene, "--quick", "--on-demand", "--out", out.string(), "--cache", (out / "on-demand-cache").string()},
+        {{"bench", scene, "--quick", "--on-demand", "--out", out.string(), "--cache",
+          (out / "on-demand-cache").string()},
          "expected a folder apart from the shared bake cache"},
-        {{"bench", scene, "--quick", "--on-demand", "--out", root.path().string(), "--cache", (root / "cache").string()},
+        {{"bench", scene, "--quick", "--on-demand", "--out", root.path().string(), "--cache",
+          (root / "cache").string()},
          "got a folder with other files; not deleting it"},  // root/on-demand-cache holds a stray file
     };
     fs::create_directories(root / "on-demand-cache");
@@ -272,9 +311,23 @@ TEST(BenchSceneCli, BadCompareSceneOrOnDemandCacheIsAClearError) {
 // over 10 m, 16-texel bakes, images compared every 2 frames; `sizes` and `extra` flags added.
 CliResult runTinyScale(const fs::path& root, const std::string& sizes, std::vector<std::string> extra = {}) {
     fs::remove_all(root / "data");
-    std::vector<std::string> args{"bench", "--scale", sizes, "--resolution", "32", "--frames", "4",
-                                  "--bake-resolution", "16", "--scale-metres", "10", "--compare-every", "2",
-                                  "--data", (root / "data").string(), "--out", (root / "out").string()};
+    std::vector<std::string> args{"bench",
+                                  "--scale",
+                                  sizes,
+                                  "--resolution",
+                                  "32",
+                                  "--frames",
+                                  "4",
+                                  "--bake-resolution",
+                                  "16",
+                                  "--scale-metres",
+                                  "10",
+                                  "--compare-every",
+                                  "2",
+                                  "--data",
+                                  (root / "data").string(),
+                                  "--out",
+                                  (root / "out").string()};
     args.insert(args.end(), extra.begin(), extra.end());
     return runCavewall(args);
 }
@@ -348,7 +401,8 @@ std::size_t depthImages(const fs::path& cache) {
 TEST(BenchSceneCli, ScaleRunDrawsDepthWallsWithTheZonesAsked) {
     const test::TempFolder root("bench_cli_scale_depth");
     const fs::path out = root / "out";
-    const CliResult r = runTinyScale(root.path(), "20k", {"--walls", "depth", "--min-zone", "2", "--triangle-budget", "0"});
+    const CliResult r =
+        runTinyScale(root.path(), "20k", {"--walls", "depth", "--min-zone", "2", "--triangle-budget", "0"});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_THAT(r.out, HasSubstr("walls: depth walls at alpha 10 deg"));
     EXPECT_THAT(r.out, HasSubstr("walls planned (zones of at least 2.00 m)"));

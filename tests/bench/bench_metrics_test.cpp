@@ -83,7 +83,7 @@ TEST(BenchMetrics, PsnrIsPooledOverPixelsWithWorstFrameAndCappedMeanApart) {
     EXPECT_NEAR(all.psnrDb, -10 * std::log10(imageMse / 4), 1e-9);
     EXPECT_EQ(all.worstFrame, 1);
     EXPECT_NEAR(all.worstFramePsnrDb, -10 * std::log10(imageMse / 2), 1e-9);  // frame 1: two screens
-    EXPECT_EQ(all.p5FramePsnrDb, all.worstFramePsnrDb);  // nearest rank of two frames: the lowest
+    EXPECT_EQ(all.p5FramePsnrDb, all.worstFramePsnrDb);                       // nearest rank of two frames: the lowest
     EXPECT_NEAR(all.meanPsnrDb, 0.5 * (kQuantisationPsnrDb + all.worstFramePsnrDb), 1e-9);
     EXPECT_GT(all.meanPsnrDb, all.psnrDb);  // the capped mean flatters
     EXPECT_NEAR(pool.screenResult(0).psnrDb, -10 * std::log10(imageMse / 2), 1e-9);

@@ -56,8 +56,8 @@ ModeResult sample(Mode mode, double alpha, double p50, double rmse) {
 void expectNoVerdicts(const std::vector<std::string>& lines) {
     for (const std::string& line : lines) {
         SCOPED_TRACE(line);
-        for (const char* verdict : {"met)", "met;", ": met", "not met", "target", "<= 0.5", "<= 1.1", "<= 1.2", "<= 1.3",
-                                    ">= 0.9", ">= 10", "<= 5 s", "no slower"})
+        for (const char* verdict : {"met)", "met;", ": met", "not met", "target", "<= 0.5", "<= 1.1", "<= 1.2",
+                                    "<= 1.3", ">= 0.9", ">= 10", "<= 5 s", "no slower"})
             EXPECT_THAT(line, Not(HasSubstr(verdict)));
     }
 }
@@ -110,8 +110,8 @@ ModeResult clustersAt(double budget, std::vector<double> frameMs, double floorMs
     for (std::size_t i = 0; i < frameMs.size(); ++i) {
         FrameSample f;
         f.frameMs = frameMs[i];
-        f.predictedMs = frameMs[i] - 20.0;       // the fixed part: 20 ms
-        f.predictedFrameMs = 0.9 * frameMs[i];   // 10 % low
+        f.predictedMs = frameMs[i] - 20.0;      // the fixed part: 20 ms
+        f.predictedFrameMs = 0.9 * frameMs[i];  // 10 % low
         f.floorMs = floorMs;
         m.frames.push_back(f);
     }
@@ -127,23 +127,26 @@ TEST(BenchReport, ClusterBudgetLinesGiveP95OverTheBudgetOrInfeasibleAndFitThePre
     report.resolution = "1024x1024 per screen, mono";
     report.noiseFloorP95Ratio = 1.25;
     report.modes = {sample(Mode::Full, 0, 300.0, 0.0),
-                    clustersAt(50.0, {40, 45, 50, 52, 54}, 24.0),    // p95 54 = 1.08x the budget
-                    clustersAt(30.0, {30, 34, 36, 38, 40}, 24.0),    // p95 40 = 1.33x the budget
-                    clustersAt(16.0, {24, 25, 26, 27, 32}, 24.0)};   // floor 24 > 16: infeasible
+                    clustersAt(50.0, {40, 45, 50, 52, 54}, 24.0),   // p95 54 = 1.08x the budget
+                    clustersAt(30.0, {30, 34, 36, 38, 40}, 24.0),   // p95 40 = 1.33x the budget
+                    clustersAt(16.0, {24, 25, 26, 27, 32}, 24.0)};  // floor 24 > 16: infeasible
     EXPECT_NEAR(p95OverBudget(report.modes[1]), 54.0 / 50.0, 1e-12);
     EXPECT_EQ(p95OverBudget(report.modes[0]), 0.0);  // no budget
     EXPECT_EQ(medianFloorMs(report.modes[1]), 24.0);
     const std::vector<std::string> lines = figureLines(report);
     auto has = [&](const std::string& text) {
-        return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(text) != std::string::npos; });
+        return std::any_of(lines.begin(), lines.end(),
+                           [&](const std::string& l) { return l.find(text) != std::string::npos; });
     };
-    EXPECT_TRUE(has("figures (1024x1024 per screen, mono): clusters frame 50ms: p50 50 ms, p95 54 ms = 1.08x the budget; "
-                    "floor (the cheapest selection's frame time, median) 24 ms; predicted frame time off by "
-                    "10 % (median), 10 % (p95)"));
+    EXPECT_TRUE(
+        has("figures (1024x1024 per screen, mono): clusters frame 50ms: p50 50 ms, p95 54 ms = 1.08x the budget; "
+            "floor (the cheapest selection's frame time, median) 24 ms; predicted frame time off by "
+            "10 % (median), 10 % (p95)"));
     EXPECT_TRUE(has("clusters frame 30ms: p50 36 ms, p95 40 ms = 1.33x the budget; floor"));
     // A budget below the floor is a fact about the budget, not a judgement of the frames.
-    EXPECT_TRUE(has("clusters frame 16ms: p50 26 ms, p95 32 ms = 2x the budget (infeasible: the floor is above the "
-                    "budget)"));
+    EXPECT_TRUE(
+        has("clusters frame 16ms: p50 26 ms, p95 32 ms = 2x the budget (infeasible: the floor is above the "
+            "budget)"));
     EXPECT_TRUE(has("noise floor p95/p50 1.25"));
     // measured = 20 + 1 x predicted in every frame of the three modes.
     EXPECT_TRUE(has("over 15 frames: measured = 20 + 1 x predicted (r2 1;"));
@@ -173,29 +176,38 @@ TEST(BenchReport, FiguresDescribeTheFastestWallsModeAtAlpha10WithLevelsOfDetailA
         m.speedup = speedup;
         return m;
     };
-    ModeResult fastButBad = walls(10, 1.0, 0.1, 30.0);     // PSNR 20 dB: not eligible
+    ModeResult fastButBad = walls(10, 1.0, 0.1, 30.0);  // PSNR 20 dB: not eligible
     // Pooled 20 dB but a capped mean of 40 dB: not eligible either, the capped mean ranks nothing.
     ModeResult meanOnly = walls(10, 1.5, 0.1, 20.0);
     meanOnly.error.meanPsnrDb = 40.0;
-    ModeResult wideAlpha = walls(20, 1.2, 0.01, 25.0);     // 40 dB but alpha 20: not eligible
+    ModeResult wideAlpha = walls(20, 1.2, 0.01, 25.0);  // 40 dB but alpha 20: not eligible
     ModeResult noLod = walls(10, 1.4, 0.01, 21.0);
-    noLod.lodPixels = 0.0;                                   // 40 dB but no levels of detail
-    ModeResult at31 = walls(10, 1.8, 0.0282, 16.0);          // 31 dB: below the 32 dB bar
-    ModeResult good = walls(10, 2.0, 0.01, 15.0);            // 40 dB; p99/p50 1.2 from sample()
+    noLod.lodPixels = 0.0;                           // 40 dB but no levels of detail
+    ModeResult at31 = walls(10, 1.8, 0.0282, 16.0);  // 31 dB: below the 32 dB bar
+    ModeResult good = walls(10, 2.0, 0.01, 15.0);    // 40 dB; p99/p50 1.2 from sample()
     good.texturesOverAlpha = 0;
-    at31.texturesOverAlpha = 2;                              // counted over every walls mode
-    ModeResult steady = walls(10, 2.5, 0.01, 5.0);          // eligible, slower than `good`
+    at31.texturesOverAlpha = 2;                     // counted over every walls mode
+    ModeResult steady = walls(10, 2.5, 0.01, 5.0);  // eligible, slower than `good`
     steady.loadRatio = 1.2;
     steady.transition = app::Transition::Warp;
-    ModeResult paged = walls(10, 3.0, 0.01, 4.0);           // the only one that uploads
+    ModeResult paged = walls(10, 3.0, 0.01, 4.0);  // the only one that uploads
     paged.paged = true;
     paged.loadRatio = 1.2;
     paged.uploadedMB = {1.0, 1.4, 1.6, 1.1};
     ModeResult near = sample(Mode::Near, 0, 1.6, 0.05);
     near.lodPixels = 1.0;
     ModeResult control = sample(Mode::Cells, 0, 1.8, 0.04);  // FLIP mean 0.04
-    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), control, near, fastButBad, meanOnly, wideAlpha, noLod, at31, good,
-                    steady, paged};
+    report.modes = {sample(Mode::Full, 0, 30.0, 0.0),
+                    control,
+                    near,
+                    fastButBad,
+                    meanOnly,
+                    wideAlpha,
+                    noLod,
+                    at31,
+                    good,
+                    steady,
+                    paged};
     compareWithControl(report);
     const auto lines = figureLines(report);
     ASSERT_EQ(lines.size(), 6u);
@@ -207,7 +219,8 @@ TEST(BenchReport, FiguresDescribeTheFastestWallsModeAtAlpha10WithLevelsOfDetailA
     EXPECT_THAT(lines[3], HasSubstr("p99/p50 is 1.2, 1.09x the noise floor (one frame drawn again and again: 1.1); "
                                     "per-frame work p99/p50: triangles 1.5, texture MB uploaded p50 0"));
     // Uploads are given where they happen, in the paged mode: 1.6 / 1.0.
-    EXPECT_THAT(lines[4], HasSubstr("walls a=10 blend paged lod 1px: texture MB uploaded per frame p99/p50 1.6 (1.6 / 1)"));
+    EXPECT_THAT(lines[4],
+                HasSubstr("walls a=10 blend paged lod 1px: texture MB uploaded per frame p99/p50 1.6 (1.6 / 1)"));
     EXPECT_THAT(lines[5], HasSubstr("1.25x the limit's"));  // 2.0 / 1.6
     EXPECT_THAT(lines[5], HasSubstr("(2 ms against 1.6 ms)"));
     expectNoVerdicts(lines);
@@ -220,7 +233,8 @@ TEST(BenchReport, FiguresDescribeTheFastestWallsModeAtAlpha10WithLevelsOfDetailA
                                      "has 31 dB pooled at a speed-up of 16"));
     expectNoVerdicts(missed);
     report.modes = {sample(Mode::Full, 0, 30.0, 0.0), near};
-    EXPECT_THAT(figureLines(report), ::testing::ElementsAre(HasSubstr("no walls mode at alpha <= 10 with levels of detail")));
+    EXPECT_THAT(figureLines(report),
+                ::testing::ElementsAre(HasSubstr("no walls mode at alpha <= 10 with levels of detail")));
 }
 
 // A --compare-scene mode is set against the bench scene's same mode, in speed-up and their
@@ -270,7 +284,7 @@ TEST(BenchReport, FallbacksAreCountedOffTheFrames) {
     countFallbacks(frames, f);
     EXPECT_EQ(f.geometryFallbacks, 6);
     EXPECT_EQ(f.fallbackFrames, 3);
-    EXPECT_EQ(f.fallbacksUntilFrame, 4);        // the last is frame index 3
+    EXPECT_EQ(f.fallbacksUntilFrame, 4);             // the last is frame index 3
     EXPECT_DOUBLE_EQ(f.firstQuarterFallbacks, 2.5);  // (3 + 2) / 2 frames
     EXPECT_DOUBLE_EQ(f.lastQuarterFallbacks, 0.0);
     countFallbacks({}, f);
@@ -298,12 +312,13 @@ TEST(BenchReport, TheOnDemandModeHasItsOwnFigureLine) {
     EXPECT_EQ(transitionLabel(cold), "blend on demand");
     const auto lines = figureLines(report);
     EXPECT_THAT(lines, ::testing::Contains(HasSubstr("no walls mode at alpha <= 10 with levels of detail")));
-    EXPECT_THAT(lines, ::testing::Contains(AllOf(
-                           HasSubstr("walls a=10 blend on demand lod 1px from an empty cache: first frame 2.25 s after "
-                                     "the scene's load; 4 geometry fallbacks (wall-frames) in 1 of 2 frames, the last "
-                                     "in frame 1 (counted from 1)"),
-                           HasSubstr("12 of 40 textures baked; frame p99/p50 1.2, 0.8x the noise floor (one frame drawn "
-                                     "again and again: 1.5)"))));
+    EXPECT_THAT(lines,
+                ::testing::Contains(
+                    AllOf(HasSubstr("walls a=10 blend on demand lod 1px from an empty cache: first frame 2.25 s after "
+                                    "the scene's load; 4 geometry fallbacks (wall-frames) in 1 of 2 frames, the last "
+                                    "in frame 1 (counted from 1)"),
+                          HasSubstr("12 of 40 textures baked; frame p99/p50 1.2, 0.8x the noise floor (one frame drawn "
+                                    "again and again: 1.5)"))));
     expectNoVerdicts(lines);
     const auto row = parseCsv(csvHeader() + "\n" + csvRow(cold) + "\n")[0];
     EXPECT_EQ(row.at("transition"), "blend on demand");
@@ -352,7 +367,8 @@ TEST(BenchReport, WritesFilesAndMarksTheFrontInThePlot) {
     const test::TempFolder folder("bench_report");
     BenchReport report;
     // full and the fast walls mode form the front; the slow, worse one is dominated.
-    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), sample(Mode::Walls, 10, 3.0, 0.02), sample(Mode::Walls, 20, 5.0, 0.05)};
+    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), sample(Mode::Walls, 10, 3.0, 0.02),
+                    sample(Mode::Walls, 20, 5.0, 0.05)};
     report.modes[2].flipWorst.image = scenes::Image{"flip", 3, 2, std::vector<std::uint8_t>(3 * 2 * 4, 200)};
     report.modes[2].flipWorst.frame = 12;
     const auto files = writeReport(folder.path(), report);
@@ -362,9 +378,10 @@ TEST(BenchReport, WritesFilesAndMarksTheFrontInThePlot) {
     EXPECT_FALSE(std::filesystem::exists(folder / "flip_worst_2.png"));
     const test::CsvTable frames = test::readCsv(folder / "bench_frames.csv");
     ASSERT_EQ(frames.size(), 3u * 2);  // 2 frames per mode
-    EXPECT_EQ(frames.columns, (std::vector<std::string>{"mode", "frame", "frame_ms", "triangles", "draw_calls", "uploaded_mb",
-                                                        "over_alpha", "predicted_ms", "predicted_frame_ms", "floor_ms",
-                                                        "geometry_fallbacks", "textures_baked"}));
+    EXPECT_EQ(frames.columns,
+              (std::vector<std::string>{"mode", "frame", "frame_ms", "triangles", "draw_calls", "uploaded_mb",
+                                        "over_alpha", "predicted_ms", "predicted_frame_ms", "floor_ms",
+                                        "geometry_fallbacks", "textures_baked"}));
     // The second mode's second frame: 1.2 x its p50 of 3 ms.
     EXPECT_EQ(frames[3].at("mode"), "walls a=10 blend");
     EXPECT_EQ(frames[3].at("frame"), "1");

@@ -23,10 +23,16 @@ TEST(ArgsChoice, WordsBecomeEnumsAndAbsentFlagsTheFallback) {
 
 TEST(ArgsChoice, ABadWordNamesTheFlagTheWordsAndWhatWasGiven) {
     // Two words read "a or b"; more read "one of a, b, c" (the messages `cavewall run` had).
-    EXPECT_THAT([] { Args({"--transition", "morph"}, {}).choice("transition", app::kTransitionNames, app::Transition::Blend); },
-                ThrowsMessage<Error>(HasSubstr("--transition: expected blend or warp, got 'morph'")));
-    EXPECT_THAT([] { Args({"--nav", "Walk"}, {}).choice("nav", app::kNavigationNames, app::Navigation::Auto); },
-                ThrowsMessage<Error>(HasSubstr("--nav: expected one of guided, fly, walk, none, got 'Walk'")));
+    EXPECT_THAT(
+        [] {
+            Args({"--transition", "morph"}, {}).choice("transition", app::kTransitionNames, app::Transition::Blend);
+        },
+        ThrowsMessage<Error>(HasSubstr("--transition: expected blend or warp, got 'morph'")));
+    EXPECT_THAT(
+        [] {
+            Args({"--nav", "Walk"}, {}).choice("nav", app::kNavigationNames, app::Navigation::Auto);
+        },
+        ThrowsMessage<Error>(HasSubstr("--nav: expected one of guided, fly, walk, none, got 'Walk'")));
 }
 
 TEST(ArgsRenamed, TheOldNameIsReadWhenGivenAndBothAreAnError) {
@@ -39,8 +45,11 @@ TEST(ArgsRenamed, TheOldNameIsReadWhenGivenAndBothAreAnError) {
     EXPECT_EQ(current.integer(current.renamed("hierarchy-res", "cluster-res"), 64, 4, 2048), 16);
     // Neither given: the new name, whose lookups give the fallback.
     EXPECT_EQ(Args({}, {}).renamed("hierarchy-res", "cluster-res"), "hierarchy-res");
-    EXPECT_THAT([] { Args({"--hierarchy", "--clusters"}, {"hierarchy", "clusters"}).renamed("hierarchy", "clusters"); },
-                ThrowsMessage<Error>(HasSubstr("--hierarchy and --clusters: expected one of them, got both")));
+    EXPECT_THAT(
+        [] {
+            Args({"--hierarchy", "--clusters"}, {"hierarchy", "clusters"}).renamed("hierarchy", "clusters");
+        },
+        ThrowsMessage<Error>(HasSubstr("--hierarchy and --clusters: expected one of them, got both")));
 }
 
 TEST(ArgsSize, WidthByHeight) {
@@ -52,13 +61,17 @@ TEST(ArgsSize, ABadSizeNamesTheFlagTheFormAndWhatWasGiven) {
     const struct {
         const char* name;
         const char* given;
-    } cases[] = {{"no x", "320"}, {"no height", "320x"}, {"no width", "x180"}, {"a fraction", "320.5x180"},
-                 {"zero", "0x180"}, {"too large", "320x16385"}, {"a word", "wide"}, {"two x", "3x2x1"}};
+    } cases[] = {{"no x", "320"},   {"no height", "320x"},      {"no width", "x180"}, {"a fraction", "320.5x180"},
+                 {"zero", "0x180"}, {"too large", "320x16385"}, {"a word", "wide"},   {"two x", "3x2x1"}};
     for (const auto& c : cases) {
         SCOPED_TRACE(c.name);
-        EXPECT_THAT([&] { Args({"--resolution", c.given}, {}).size("resolution", 1, 16384); },
-                    ThrowsMessage<Error>(HasSubstr("--resolution: expected WxH with integers in [1, 16384] (e.g. "
-                                                   "1280x720), got '" + std::string(c.given) + "'")));
+        EXPECT_THAT(
+            [&] {
+                Args({"--resolution", c.given}, {}).size("resolution", 1, 16384);
+            },
+            ThrowsMessage<Error>(HasSubstr("--resolution: expected WxH with integers in [1, 16384] (e.g. "
+                                           "1280x720), got '" +
+                                           std::string(c.given) + "'")));
     }
 }
 

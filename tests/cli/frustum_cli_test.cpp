@@ -19,7 +19,8 @@ glm::dmat4 matrixFrom(const nlohmann::json& a) {
 glm::dvec3 vec3From(const nlohmann::json& a) { return {a[0].get<double>(), a[1].get<double>(), a[2].get<double>()}; }
 
 TEST(FrustumCli, JsonMatricesMapEveryScreensCornersToNdcCorners) {
-    const CliResult r = runCavewall({"frustum", "--display", "cave4", "--eye", "0.4,1.5,-0.3", "--head-yaw", "30", "--json"});
+    const CliResult r =
+        runCavewall({"frustum", "--display", "cave4", "--eye", "0.4,1.5,-0.3", "--head-yaw", "30", "--json"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     ASSERT_EQ(j["screens"].size(), 4u);

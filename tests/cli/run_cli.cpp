@@ -82,7 +82,8 @@ CliProcess::~CliProcess() {
 }
 
 bool CliProcess::readSome(std::chrono::steady_clock::time_point deadline) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) return false;
     pollfd p{_errFd, POLLIN, 0};
     if (poll(&p, 1, static_cast<int>(left.count())) <= 0) return false;
@@ -120,8 +121,7 @@ bool CliProcess::exited() {
 
 CliResult CliProcess::finish(std::chrono::seconds limit) {
     const auto deadline = std::chrono::steady_clock::now() + limit;
-    while (readSome(deadline)) {
-    }
+    while (readSome(deadline)) {}
     CliResult r;
     if (!exited() && std::chrono::steady_clock::now() >= deadline) {
         kill(_pid, SIGKILL);

@@ -49,8 +49,8 @@ private:
     pid_t _pid = -1;
     int _errFd = -1;
     std::string _outPath;
-    std::string _err;                 // stderr read so far
-    std::size_t _scanned = 0;         // bytes of _err already matched line by line
+    std::string _err;          // stderr read so far
+    std::size_t _scanned = 0;  // bytes of _err already matched line by line
     std::optional<int> _exitCode;
 };
 

@@ -60,7 +60,8 @@ int finish(const Proc& p, double seconds) {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
     int status = 0;
     while (std::chrono::steady_clock::now() < deadline) {
-        if (waitpid(p.pid, &status, WNOHANG) == p.pid) return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        if (waitpid(p.pid, &status, WNOHANG) == p.pid)
+            return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
     kill(-p.pid, SIGKILL);
@@ -93,7 +94,8 @@ const fs::path& smallPlant() {
     static const fs::path scene = [] {
         fs::create_directories(kWork);
         const Proc p = start({CAVEWALL_EXE, "generate", "plant", "--triangles", "20000", "--seed", "3", "--out",
-                              (kWork / "plant").string()}, "generate");
+                              (kWork / "plant").string()},
+                             "generate");
         EXPECT_EQ(finish(p, 120), 0) << readFile(p.err);
         return kWork / "plant" / "scene.json";
     }();
@@ -102,10 +104,26 @@ const fs::path& smallPlant() {
 
 // Each test bakes into its own cache (ctest runs them in parallel) next to its output folder.
 std::vector<std::string> runArgs(const fs::path& out) {
-    return {"run", "--scene", smallPlant().string(), "--display", CAVEWALL_SOURCE_DIR "/tests/gl/cave4_128.json",
-            "--tracker", "sim:walk?seed=5", "--frames", "8", "--save-frames", "every:4", "--sync-paging",
-            "--min-zone", "3", "--ppd", "2", "--cache", (kWork / (out.filename().string() + "-cache")).string(),
-            "--out", out.string()};
+    return {"run",
+            "--scene",
+            smallPlant().string(),
+            "--display",
+            CAVEWALL_SOURCE_DIR "/tests/gl/cave4_128.json",
+            "--tracker",
+            "sim:walk?seed=5",
+            "--frames",
+            "8",
+            "--save-frames",
+            "every:4",
+            "--sync-paging",
+            "--min-zone",
+            "3",
+            "--ppd",
+            "2",
+            "--cache",
+            (kWork / (out.filename().string() + "-cache")).string(),
+            "--out",
+            out.string()};
 }
 
 TEST(ClusterRun, FourRanksRenderTheSameFramesAsOneProcess) {
@@ -155,7 +173,8 @@ pid_t rankPid(int rank, const std::string& tag) {
         const std::string cmd = procFile(e.path() / "cmdline");
         if (cmd.find("cavewall") == std::string::npos || cmd.find("mpirun") == 0) continue;
         if (env.find(std::string("OMPI_COMM_WORLD_RANK=") + std::to_string(rank) + '\0') != std::string::npos &&
-            (std::string(1, '\0') + env).find(std::string(1, '\0') + "CAVEWALL_TEST_TAG=" + tag + '\0') != std::string::npos)
+            (std::string(1, '\0') + env).find(std::string(1, '\0') + "CAVEWALL_TEST_TAG=" + tag + '\0') !=
+                std::string::npos)
             return std::stoi(name);
     }
     return -1;
@@ -172,7 +191,8 @@ void expectEndsAllRanks(int signal, const char* message) {
     ASSERT_EQ(finish(w, 600), 0) << readFile(w.err);
     fs::remove_all(out);
     const std::string tag = out.string();
-    std::vector<std::string> mpi{"mpirun", "--oversubscribe", "-np", "3", "-x", "CAVEWALL_TEST_TAG=" + tag, CAVEWALL_EXE};
+    std::vector<std::string> mpi{"mpirun", "--oversubscribe",          "-np",       "3",
+                                 "-x",     "CAVEWALL_TEST_TAG=" + tag, CAVEWALL_EXE};
     auto args = runArgs(out);
     args[std::find(args.begin(), args.end(), "8") - args.begin()] = "100000";  // long enough to be interrupted
     for (const auto& a : args) mpi.push_back(a);

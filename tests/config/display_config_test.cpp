@@ -78,32 +78,58 @@ TEST(DisplayConfig, EveryRuleHasItsMessage) {
          "lab.json: unknown key 'stero' (expected one of: name, screens, viewer"},
         {"unknown screen key", withScreens(R"({"name": "a", "lowerleft": [0,0,0]})"),
          "lab.json: screens[0]: unknown key 'lowerleft'"},
-        {"missing corner", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "resolution": [1,1]})"),
+        {"missing corner",
+         withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "resolution": [1,1]})"),
          "screens[0]: missing required key 'upperLeft'"},
-        {"corner of two numbers", withScreens(R"({"name": "a", "lowerLeft": [0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
+        {"corner of two numbers",
+         withScreens(
+             R"({"name": "a", "lowerLeft": [0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
          "screens[0].lowerLeft: expected an array of 3 elements, got 2"},
-        {"string in corner", withScreens(R"({"name": "a", "lowerLeft": [0,"x",0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
+        {"string in corner",
+         withScreens(
+             R"({"name": "a", "lowerLeft": [0,"x",0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
          "screens[0].lowerLeft[1]: expected a number, got \"x\""},
-        {"number overflow", withScreens(R"({"name": "a", "lowerLeft": [0,1e999,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
+        {"number overflow",
+         withScreens(
+             R"({"name": "a", "lowerLeft": [0,1e999,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
          "lab.json: not valid JSON: number overflow parsing '1e999'"},
-        {"zero resolution", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [0,768]})"),
+        {"zero resolution",
+         withScreens(
+             R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [0,768]})"),
          "screens[0].resolution[0]: expected an integer in [1, 16384], got 0"},
-        {"negative resolution", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1024,-1]})"),
+        {"negative resolution",
+         withScreens(
+             R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1024,-1]})"),
          "screens[0].resolution[1]: expected an integer in [1, 16384], got -1"},
-        {"fractional resolution", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [10.5,1]})"),
+        {"fractional resolution",
+         withScreens(
+             R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [10.5,1]})"),
          "screens[0].resolution[0]: expected an integer, got 10.5"},
-        {"zero window size", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1], "output": {"window": {"size": [0, 10]}}})"),
+        {"zero window size",
+         withScreens(
+             R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1], "output": {"window": {"size": [0, 10]}}})"),
          "screens[0].output.window.size[0]: expected an integer in [1, 16384], got 0"},
-        {"both outputs", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1], "output": {"window": {}, "headless": {}}})"),
+        {"both outputs",
+         withScreens(
+             R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1], "output": {"window": {}, "headless": {}}})"),
          "screens[0].output: expected exactly one of 'window' or 'headless'"},
-        {"empty name", withScreens(R"({"name": "", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
+        {"empty name",
+         withScreens(
+             R"({"name": "", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
          "screens[0].name: expected a name of 1 to 64 characters (it names an output file), got 0"},
-        {"collinear corners", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [2,0,0], "resolution": [1,1]})"),
+        {"collinear corners",
+         withScreens(
+             R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [2,0,0], "resolution": [1,1]})"),
          "lab.json: screens[0] 'a': corners are collinear (expected a non-zero area, got 0 m²)"},
-        {"zero width", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [0,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
+        {"zero width",
+         withScreens(
+             R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [0,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
          "screens[0] 'a': screen is degenerate (expected width and height of at least 0.0001 m, got 0 m × 1 m"},
-        {"not a rectangle", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0.1,1,0], "resolution": [1,1]})"),
-         "screens[0] 'a': corners are not a rectangle (expected the edges at lowerLeft to meet at 90° ± 0.1°, got 84.2894°)"},
+        {"not a rectangle",
+         withScreens(
+             R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0.1,1,0], "resolution": [1,1]})"),
+         "screens[0] 'a': corners are not a rectangle (expected the edges at lowerLeft to meet at 90° ± 0.1°, got "
+         "84.2894°)"},
         {"duplicate names", withScreens(std::string(kScreen) + "," + kScreen),
          "lab.json: screens[1] 'front': duplicate screen name"},
         {"eye separation too large", withScreens(kScreen, R"(, "viewer": {"eyeSeparation": 0.5})"),
@@ -117,10 +143,13 @@ TEST(DisplayConfig, EveryRuleHasItsMessage) {
         {"near not below far", withScreens(kScreen, R"(, "viewer": {"near": 10, "far": 10})"),
          "lab.json: viewer: near must be less than far (got near 10 m, far 10 m)"},
         {"unknown stereo", withScreens(kScreen, R"(, "stereo": "checkerboard")"),
-         "stereo: expected one of \"mono\", \"separate\", \"side-by-side\", \"top-bottom\", \"anaglyph\", \"quad-buffer\", got \"checkerboard\""},
-        {"non-rigid calibration", withScreens(kScreen, R"(, "tracking": {"caveFromTracker": [[2,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]})"),
+         "stereo: expected one of \"mono\", \"separate\", \"side-by-side\", \"top-bottom\", \"anaglyph\", "
+         "\"quad-buffer\", got \"checkerboard\""},
+        {"non-rigid calibration",
+         withScreens(kScreen, R"(, "tracking": {"caveFromTracker": [[2,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]})"),
          "tracking.caveFromTracker: expected a rotation in the upper 3x3"},
-        {"projective calibration", withScreens(kScreen, R"(, "tracking": {"caveFromTracker": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,1,1]]})"),
+        {"projective calibration",
+         withScreens(kScreen, R"(, "tracking": {"caveFromTracker": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,1,1]]})"),
          "tracking.caveFromTracker: expected the last row to be [0, 0, 0, 1]"},
         {"bad quaternion", withScreens(kScreen, R"(, "viewer": {"headOrientation": [0, 0, 0, 0]})"),
          "viewer.headOrientation: expected a unit quaternion [x, y, z, w], got length 0"},
@@ -146,12 +175,16 @@ TEST(DisplayConfig, NamesThatBecomeFilesFollowTheRule) {
         {"headless file up", withScreens(named("front", "../../x")),
          "screens[0].output.headless.file: expected only letters, digits, '_', '-' and '.' (it names an output file), "
          "got '../../x'"},
-        {"absolute headless file", withScreens(named("front", "/tmp/x")), "screens[0].output.headless.file: expected only"},
-        {"NUL in name", withScreens(named("a\\u0000b")), "screens[0].name: expected only letters, digits, '_', '-' and "
-                                                         "'.' (it names an output file), got 'a\\x00b'"},
-        {"hidden", withScreens(named(".front")), "screens[0].name: expected a name that does not start with '.' or '-'"},
-        {"dot dot", withScreens(named("front", "..")), "screens[0].output.headless.file: expected a name that does not "
-                                                       "start with '.' or '-'"},
+        {"absolute headless file", withScreens(named("front", "/tmp/x")),
+         "screens[0].output.headless.file: expected only"},
+        {"NUL in name", withScreens(named("a\\u0000b")),
+         "screens[0].name: expected only letters, digits, '_', '-' and "
+         "'.' (it names an output file), got 'a\\x00b'"},
+        {"hidden", withScreens(named(".front")),
+         "screens[0].name: expected a name that does not start with '.' or '-'"},
+        {"dot dot", withScreens(named("front", "..")),
+         "screens[0].output.headless.file: expected a name that does not "
+         "start with '.' or '-'"},
         {"fold-out", withScreens(named("foldout")),
          "screens[0].name: the name 'foldout' is reserved for the program's own output files (expected another name)"},
         {"fold-out any case", withScreens(named("front", "FoldOut")), "the name 'FoldOut' is reserved"},
@@ -169,11 +202,14 @@ TEST(DisplayConfig, NamesThatBecomeFilesFollowTheRule) {
 
 TEST(DisplayConfig, MagnitudesAreWithinAStatedRange) {
     const BadCase cases[] = {
-        {"corner at 1e308", withScreens(R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1e308,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
+        {"corner at 1e308",
+         withScreens(
+             R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1e308,0,0], "upperLeft": [0,1,0], "resolution": [1,1]})"),
          "lab.json: screens[0].lowerRight: expected coordinates in [-1000, 1000] m, got [1e+308, 0, 0]"},
         {"head at 1e308", withScreens(kScreen, R"(, "viewer": {"headPosition": [0, 1e308, 0]})"),
          "lab.json: viewer.headPosition: expected coordinates in [-1000, 1000] m, got [0, 1e+308, 0]"},
-        {"calibration far away", withScreens(kScreen, R"(, "tracking": {"caveFromTracker": [[1,0,0,1e9],[0,1,0,0],[0,0,1,0],[0,0,0,1]]})"),
+        {"calibration far away",
+         withScreens(kScreen, R"(, "tracking": {"caveFromTracker": [[1,0,0,1e9],[0,1,0,0],[0,0,1,0],[0,0,0,1]]})"),
          "lab.json: tracking.caveFromTracker: expected a translation within 1000 m, got 1e+09 m"},
     };
     for (const BadCase& c : cases) {
@@ -183,8 +219,9 @@ TEST(DisplayConfig, MagnitudesAreWithinAStatedRange) {
     // The same rule holds for configurations built in code.
     DisplayConfig c = load(withScreens(kScreen));
     c.screens[0].upperLeft.y = 1e300;
-    EXPECT_THAT([&] { validateDisplayConfig(c, "code"); },
-                ThrowsMessage<Error>(HasSubstr("code: screens[0] 'front': corner [-1.5, 1e+300, -1.5] is out of range")));
+    EXPECT_THAT(
+        [&] { validateDisplayConfig(c, "code"); },
+        ThrowsMessage<Error>(HasSubstr("code: screens[0] 'front': corner [-1.5, 1e+300, -1.5] is out of range")));
 }
 
 // The plausible tracking volume is a configuration key; without it the default box around the

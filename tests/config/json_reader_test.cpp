@@ -21,7 +21,8 @@ TEST(JsonReader, IntegerAndRangeChecks) {
     const auto v = doc.root().items(3, 3);
     EXPECT_EQ(v[0].integer(0, 10), 3);
     EXPECT_THAT([&] { v[1].integer(0, 10); }, ThrowsMessage<Error>(HasSubstr("[1]: expected an integer, got 2.5")));
-    EXPECT_THAT([&] { v[2].number(0, 1); }, ThrowsMessage<Error>(HasSubstr("[2]: expected a number in [0, 1], got -7")));
+    EXPECT_THAT([&] { v[2].number(0, 1); },
+                ThrowsMessage<Error>(HasSubstr("[2]: expected a number in [0, 1], got -7")));
 }
 
 TEST(JsonReader, RotationFromAnglesAndQuaternion) {

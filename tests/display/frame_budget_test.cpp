@@ -136,7 +136,8 @@ TEST(FrameTimeBudget, AnInfeasibleTargetHoldsTheLoadSteadyInsteadOfFollowingTheC
     }
     // Without the floor every light frame would draw 100 k: p99/p50 1.3. With it the lightest
     // frame after a heavy stretch of 6 keeps 0.98^6 of 130 k.
-    EXPECT_GE(*std::min_element(g.begin(), g.end()), static_cast<std::size_t>(0.98 * 0.98 * 0.98 * 0.98 * 0.98 * 0.98 * 130000.0) - 1);
+    EXPECT_GE(*std::min_element(g.begin(), g.end()),
+              static_cast<std::size_t>(0.98 * 0.98 * 0.98 * 0.98 * 0.98 * 0.98 * 130000.0) - 1);
     EXPECT_GT(c.floor(), 0.0);
 }
 

@@ -45,7 +45,8 @@ void expectScreenPointsOnTheirNdc(const ScreenQuad& s, glm::dvec3 eye, double mi
         const double u = unit(rng), v = unit(rng);
         const glm::dvec3 n = ndc(f, pointOnScreen(s, u, v));
         // Half the image is one NDC unit, so an NDC error e is e * pixels / 2 pixels.
-        EXPECT_NEAR(n.x, 2 * u - 1, 2 * tolPx / kPixels) << "u " << u << " eye " << eye.x << "," << eye.y << "," << eye.z;
+        EXPECT_NEAR(n.x, 2 * u - 1, 2 * tolPx / kPixels)
+            << "u " << u << " eye " << eye.x << "," << eye.y << "," << eye.z;
         EXPECT_NEAR(n.y, 2 * v - 1, 2 * tolPx / kPixels) << "v " << v;
     }
 }
@@ -120,8 +121,8 @@ TEST(OffAxis, EyeRelativeFloatMatricesDoNotJitterFarFromTheOrigin) {
         const ScreenQuad s{kFront.lowerLeft + o, kFront.lowerRight + o, kFront.upperLeft + o};
         const OffAxisFrustum f = offAxisFrustum(s, eye + o, kDepth);
         const glm::dmat4 frameFromModel = glm::translate(glm::dmat4(1.0), eye + o);
-        const glm::vec4 c = glm::mat4(f.clipFromView) * eyeRelativeModelView(f, frameFromModel) *
-                            glm::vec4(glm::vec3(local), 1.0f);
+        const glm::vec4 c =
+            glm::mat4(f.clipFromView) * eyeRelativeModelView(f, frameFromModel) * glm::vec4(glm::vec3(local), 1.0f);
         return glm::dvec2(c.x / c.w, c.y / c.w);
     };
     const glm::dvec2 reference = projectFloat(glm::dvec3(0.0));

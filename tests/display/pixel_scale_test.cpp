@@ -207,7 +207,11 @@ TEST(PixelScale, NoTinyTurnMovesAHitFartherThanTheBoundAndTheFarCornerReachesIt)
 TEST(PixelScale, BoxesBesideBehindAndAround) {
     const ViewScreen s = viewScreen(offAxisFrustum(kFront, kEye, kDepth), {kPixels, kPixels});
     const double whole = maxPixelsPerRadian(s);
-    struct Case { const char* name; glm::dvec3 lo, hi; double expected; };
+    struct Case {
+        const char* name;
+        glm::dvec3 lo, hi;
+        double expected;
+    };
     // The screen spans x in [-1.9, 1.1], y in [-1.2, 1.8] at z = -1.8 (view frame).
     const Case cases[] = {
         // The least projected x is 5 * 1.8 / 3 = 3 > 1.1; the least projected y 4 * 1.8 / 2 =
@@ -236,7 +240,11 @@ TEST(PixelScale, BoxesBesideBehindAndAround) {
 }
 
 TEST(PixelScale, NearestDistanceIsZeroInsideAndExactOutside) {
-    struct Case { const char* name; std::vector<glm::dvec3> points; double expected; };
+    struct Case {
+        const char* name;
+        std::vector<glm::dvec3> points;
+        double expected;
+    };
     const Case cases[] = {
         {"eye inside", {{-1, -1, -1}, {1, 2, 3}}, 0.0},
         {"eye on a face", {{0, -1, -1}, {1, 1, 1}}, 0.0},
@@ -301,7 +309,9 @@ double referenceStretch(const glm::dmat3& m) {
     return std::sqrt(std::max(0.0, largestEigenvalue(glm::transpose(m) * m)));
 }
 
-glm::dmat3 diag(double a, double b, double c) { return {glm::dvec3(a, 0, 0), glm::dvec3(0, b, 0), glm::dvec3(0, 0, c)}; }
+glm::dmat3 diag(double a, double b, double c) {
+    return {glm::dvec3(a, 0, 0), glm::dvec3(0, b, 0), glm::dvec3(0, 0, c)};
+}
 
 glm::dmat3 rotation(std::mt19937_64& rng) {
     std::normal_distribution<double> g;
@@ -310,7 +320,11 @@ glm::dmat3 rotation(std::mt19937_64& rng) {
 
 TEST(PixelScale, MaxStretchOfKnownMatrices) {
     std::mt19937_64 rng(3);
-    struct Case { const char* name; glm::dmat3 m; double expected; };
+    struct Case {
+        const char* name;
+        glm::dmat3 m;
+        double expected;
+    };
     const glm::dmat3 r1 = rotation(rng), r2 = rotation(rng);
     const glm::dvec3 u(1, 2, 2), v(0, 3, 4);  // |u| = 3, |v| = 5
     const Case cases[] = {
@@ -397,7 +411,8 @@ TEST(PixelScale, MinPixelsPerDegreeIsTheLeastAnywhereOnTheScreen) {
         for (int i = 0; i <= kSteps; ++i)
             for (int j = 0; j <= kSteps; ++j)
                 for (int d = 0; d < 36; ++d) {
-                    const glm::dvec2 p(s.left + (s.right - s.left) * i / kSteps, s.bottom + (s.top - s.bottom) * j / kSteps);
+                    const glm::dvec2 p(s.left + (s.right - s.left) * i / kSteps,
+                                       s.bottom + (s.top - s.bottom) * j / kSteps);
                     const double angle = d * std::numbers::pi / 36;  // 5° steps over a half turn
                     least = std::min(least, measuredPixelsPerDegree(s, p, {std::cos(angle), std::sin(angle)}));
                 }

@@ -37,8 +37,8 @@ TEST(Stereo, PassesCoverTheImageForEveryMode) {
     EXPECT_EQ(sep[1].image, 1);
     EXPECT_EQ(imagesPerScreen(StereoMode::Separate), 2);
     const auto ana = eyePasses(StereoMode::Anaglyph, res);
-    EXPECT_EQ(ana[0].colorMask, glm::bvec4(true, false, false, true));   // left: red
-    EXPECT_EQ(ana[1].colorMask, glm::bvec4(false, true, true, true));    // right: cyan
+    EXPECT_EQ(ana[0].colorMask, glm::bvec4(true, false, false, true));  // left: red
+    EXPECT_EQ(ana[1].colorMask, glm::bvec4(false, true, true, true));   // right: cyan
     EXPECT_TRUE(eyePasses(StereoMode::QuadBuffer, res)[1].backRight);
 }
 

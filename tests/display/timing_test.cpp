@@ -19,9 +19,9 @@ TEST(Percentile, NearestRankOnOneToOneHundred) {
     EXPECT_EQ(percentile(v, 0.95), 95.0);
     EXPECT_EQ(percentile(v, 0.99), 99.0);
     EXPECT_EQ(percentile(v, 1.00), 100.0);
-    EXPECT_EQ(percentile(v, 0.0), 1.0);     // rank clamped to 1: the smallest
-    EXPECT_EQ(percentile(v, 0.001), 1.0);   // ceil(0.1) = 1
-    EXPECT_EQ(percentile(v, 0.011), 2.0);   // ceil(1.1) = 2
+    EXPECT_EQ(percentile(v, 0.0), 1.0);    // rank clamped to 1: the smallest
+    EXPECT_EQ(percentile(v, 0.001), 1.0);  // ceil(0.1) = 1
+    EXPECT_EQ(percentile(v, 0.011), 2.0);  // ceil(1.1) = 2
 }
 
 TEST(Percentile, MedianIsASampleNeverAnInterpolation) {

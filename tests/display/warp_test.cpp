@@ -53,7 +53,8 @@ glm::dvec3 textureImage(glm::dvec3 x) {
 TEST(Warp, GeometryOnTheWallPlaneStaysPut) {
     // C0 continuity: a floor or side wall crossing the wall plane is continuous there.
     const Views v = views({0.3, 1.5, 0.6});
-    for (glm::dvec3 q : {glm::dvec3(-3, 0, -10), glm::dvec3(3, 4, -10), glm::dvec3(1.2, 0.0, -10), glm::dvec3(-2, 3.3, -10)}) {
+    for (glm::dvec3 q :
+         {glm::dvec3(-3, 0, -10), glm::dvec3(3, 4, -10), glm::dvec3(1.2, 0.0, -10), glm::dvec3(-2, 3.3, -10)}) {
         const glm::dvec3 w = warped(v, q), b = seenByB(v, q);
         EXPECT_NEAR(w.x, b.x, 1e-12);
         EXPECT_NEAR(w.y, b.y, 1e-12);
@@ -80,7 +81,7 @@ TEST(Warp, WarpedDepthIsBehindTheWallAndKeepsTheSamplingPointsOrder) {
         const glm::dvec3 p = kSamplingPoint + t * dir;
         const double d = warped(v, p).z;
         EXPECT_LE(d, seenByB(v, textureImage(p)).z + 1e-15);  // never in front of the wall (reversed-Z)
-        EXPECT_LT(d, previous);  // deeper from the sampling point is deeper on screen
+        EXPECT_LT(d, previous);                               // deeper from the sampling point is deeper on screen
         EXPECT_GT(d, 0.0);
         previous = d;
     }

@@ -12,8 +12,10 @@ std::string withoutCodeSpans(const std::string& line) {
     std::string out;
     bool inCode = false;
     for (char c : line) {
-        if (c == '`') inCode = !inCode;
-        else if (!inCode) out += c;
+        if (c == '`')
+            inCode = !inCode;
+        else if (!inCode)
+            out += c;
     }
     return out;
 }

@@ -11,7 +11,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                                          "manifest.json");
         // What is accepted writes back and reads back the same.
         if (cavewall::walls::manifestFromJson(cavewall::walls::manifestToJson(m), "again.json") != m) __builtin_trap();
-    } catch (const cavewall::Error&) {
-    }
+    } catch (const cavewall::Error&) {}
     return 0;
 }

@@ -10,7 +10,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
         const auto config = cavewall::config::parseDisplayConfig(text, "fuzz.json");
         cavewall::config::validateDisplayConfig(config, "fuzz.json");
-    } catch (const cavewall::Error&) {
-    }
+    } catch (const cavewall::Error&) {}
     return 0;
 }

@@ -10,11 +10,11 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view bytes(reinterpret_cast<const char*>(data), size);
     try {
-        const cavewall::scenes::Scene scene = cavewall::scenes::loadGltfFromMemory(bytes, "/nonexistent-fuzz-dir/fuzz.glb");
+        const cavewall::scenes::Scene scene =
+            cavewall::scenes::loadGltfFromMemory(bytes, "/nonexistent-fuzz-dir/fuzz.glb");
         for (const auto& mesh : scene.meshes)
             for (std::uint32_t index : mesh.indices)
                 if (index >= mesh.positions.size()) __builtin_trap();  // an index past the vertices: a loader bug
-    } catch (const cavewall::Error&) {
-    }
+    } catch (const cavewall::Error&) {}
     return 0;
 }

@@ -8,7 +8,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     cavewall::input::PacketDrop drop = cavewall::input::PacketDrop::None;
-    const auto pose = cavewall::input::parseOpenTrack(std::string_view(reinterpret_cast<const char*>(data), size), {}, &drop);
+    const auto pose =
+        cavewall::input::parseOpenTrack(std::string_view(reinterpret_cast<const char*>(data), size), {}, &drop);
     if (pose && !std::isfinite(pose->position.x + pose->position.y + pose->position.z)) __builtin_trap();
     return 0;
 }

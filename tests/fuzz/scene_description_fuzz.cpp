@@ -11,7 +11,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
         const auto d = cavewall::scenes::parseSceneDescription(text, "scene.json", "/nonexistent-fuzz-dir");
         cavewall::scenes::validateSceneDescription(d, "scene.json");
-    } catch (const cavewall::Error&) {
-    }
+    } catch (const cavewall::Error&) {}
     return 0;
 }

@@ -74,9 +74,9 @@ TEST_F(HeadlessContext, EveryOfferedPlatformDrawsTheSamePicture) {
     const scenes::Image reference = Snapshotter(cave, scene, *context).render(head).foldout;
     context.reset();
     int offered = 0;
-    for (auto [platform, name] : {std::pair{HeadlessPlatform::Surfaceless, "surfaceless"},
-                                  std::pair{HeadlessPlatform::Device, "device"},
-                                  std::pair{HeadlessPlatform::Default, "default"}}) {
+    for (auto [platform, name] :
+         {std::pair{HeadlessPlatform::Surfaceless, "surfaceless"}, std::pair{HeadlessPlatform::Device, "device"},
+          std::pair{HeadlessPlatform::Default, "default"}}) {
         SCOPED_TRACE(name);
         ContextOptions options;
         options.headless = platform;

@@ -28,8 +28,8 @@ void addSquare(scenes::Scene& scene, glm::dvec3 centre, glm::vec4 color, scenes:
     material.baseColorFactor = color;
     material.alphaMode = mode;
     scene.materials.push_back(material);
-    scenes::Mesh m = scenes::makeTiledQuad({-0.25f, -0.25f, 0}, {0.5f, 0, 0}, {0, 0.5f, 0}, 1, 1, glm::vec4(1.0f),
-                                           glm::vec4(1.0f));
+    scenes::Mesh m =
+        scenes::makeTiledQuad({-0.25f, -0.25f, 0}, {0.5f, 0, 0}, {0, 0.5f, 0}, 1, 1, glm::vec4(1.0f), glm::vec4(1.0f));
     m.material = static_cast<int>(scene.materials.size()) - 1;
     scene.meshes.push_back(std::move(m));
     scenes::addObject(scene, static_cast<int>(scene.meshes.size()) - 1, glm::translate(glm::dmat4(1.0), centre),

@@ -50,8 +50,7 @@ protected:
 std::filesystem::path testOutputFolder(const std::string& name);
 
 // Golden comparison as described above; records a non-fatal failure on mismatch.
-void expectMatchesGolden(const scenes::Image& actual, const std::string& name,
-                         metrics::ImageTolerance tolerance = {});
+void expectMatchesGolden(const scenes::Image& actual, const std::string& name, metrics::ImageTolerance tolerance = {});
 
 // The folder of the test display configurations (tests/gl in the source tree).
 std::filesystem::path testConfigFolder();

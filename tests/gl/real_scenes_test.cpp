@@ -39,7 +39,8 @@ protected:
     };
     // Renders `scene`; `worldFromCave` defaults to viewAll of the scene's bounds.
     Frame render(const scenes::Scene& scene, RenderSettings settings = {}, const glm::dmat4* worldFromCave = nullptr) {
-        const glm::dmat4 place = worldFromCave ? *worldFromCave : render::viewAll(display, kEye, scene.bounds()).worldFromCave;
+        const glm::dmat4 place =
+            worldFromCave ? *worldFromCave : render::viewAll(display, kEye, scene.bounds()).worldFromCave;
         Snapshotter s(display, scene, *context, settings);
         Snapshot shot = s.render(kEye, place);
         return {std::move(shot.images.at(0).pixels), shot.stats};
@@ -59,13 +60,21 @@ protected:
 
 TEST_F(RealScenes, EveryModelLoadsAndRendersSomethingThatIsNotUniform) {
     const char* files[] = {
-        "BoxInterleaved/BoxInterleaved.glb", "MeshPrimitiveModes/MeshPrimitiveModes.gltf",
-        "MultiUVTest/MultiUVTest.gltf", "NegativeScaleTest/NegativeScaleTest.gltf",
-        "NodeMatrixVsTRS/Node_Attribute_07.gltf", "NodeMatrixVsTRS/Node_Attribute_08.gltf",
-        "OcclusionRoom/room.glb", "OrientationTest/OrientationTest.gltf", "SheenChair/SheenChair.gltf",
-        "SimpleSparseAccessor/SimpleSparseAccessor.gltf", "SponzaLOD4/sponza_s_lod4.glb",
-        "TextureTransformTest/TextureTransformTest.gltf", "ToyCar/ToyCar.gltf",
-        "WoodenBookshelf/wooden_bookshelf_worn_1k.gltf", "zdm2/zdm2.glb",
+        "BoxInterleaved/BoxInterleaved.glb",
+        "MeshPrimitiveModes/MeshPrimitiveModes.gltf",
+        "MultiUVTest/MultiUVTest.gltf",
+        "NegativeScaleTest/NegativeScaleTest.gltf",
+        "NodeMatrixVsTRS/Node_Attribute_07.gltf",
+        "NodeMatrixVsTRS/Node_Attribute_08.gltf",
+        "OcclusionRoom/room.glb",
+        "OrientationTest/OrientationTest.gltf",
+        "SheenChair/SheenChair.gltf",
+        "SimpleSparseAccessor/SimpleSparseAccessor.gltf",
+        "SponzaLOD4/sponza_s_lod4.glb",
+        "TextureTransformTest/TextureTransformTest.gltf",
+        "ToyCar/ToyCar.gltf",
+        "WoodenBookshelf/wooden_bookshelf_worn_1k.gltf",
+        "zdm2/zdm2.glb",
     };
     for (const char* file : files) {
         SCOPED_TRACE(file);

@@ -30,7 +30,8 @@ class RenderCli : public testing::GlTest {};
 
 TEST_F(RenderCli, WritesOnePngPerScreenAndAFoldoutAndNamesTheRenderer) {
     const auto out = freshFolder("render-cli");
-    const CliResult r = runCavewall({"render", "--display", testDisplay(), "--eye", "0.3,1.5,0.2", "--out", out.string()});
+    const CliResult r =
+        runCavewall({"render", "--display", testDisplay(), "--eye", "0.3,1.5,0.2", "--out", out.string()});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     for (const char* stem : {"front", "left", "right", "floor", "foldout"}) {
         SCOPED_TRACE(stem);
@@ -47,8 +48,8 @@ TEST_F(RenderCli, RendersAGltfFileWithViewAllAndPrintsTheFrameStatistics) {
     const auto out = freshFolder("render-cli-gltf");
     const std::string model =
         (std::filesystem::path(CAVEWALL_REAL_SCENES) / "BoxInterleaved/BoxInterleaved.glb").string();
-    const CliResult r = runCavewall({"render", "--display", testDisplay(), "--scene", model, "--view-all", "--out",
-                                     out.string()});
+    const CliResult r =
+        runCavewall({"render", "--display", testDisplay(), "--scene", model, "--view-all", "--out", out.string()});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     // The box is one object of 12 triangles; cave4 has 4 screens (mono), so 4 views. viewAll
     // frames it in the front screen only, so culling leaves it out of the other three.
@@ -68,7 +69,8 @@ TEST_F(RenderCli, RendersAGltfFileWithViewAllAndPrintsTheFrameStatistics) {
 
 TEST_F(RenderCli, SeparateStereoWritesBothEyes) {
     const auto out = freshFolder("render-cli-separate");
-    const CliResult r = runCavewall({"render", "--display", testDisplay(), "--stereo", "separate", "--out", out.string()});
+    const CliResult r =
+        runCavewall({"render", "--display", testDisplay(), "--stereo", "separate", "--out", out.string()});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_TRUE(std::filesystem::exists(out / "front-left.png"));
     EXPECT_TRUE(std::filesystem::exists(out / "front-right.png"));
@@ -82,15 +84,20 @@ TEST_F(RenderCli, BadInputGivesAClearErrorAndNonZeroExit) {
         const char* message;
     } cases[] = {
         {"missing scene file", {"--scene", "missing-lab.glb"}, "missing-lab.glb: cannot open the glTF file"},
-        {"stereo", {"--stereo", "wobble"}, "--stereo: expected one of mono, separate, side-by-side, top-bottom, anaglyph, quad-buffer, got 'wobble'"},
-        {"quad-buffer headless", {"--stereo", "quad-buffer"}, "stereo mode quad-buffer needs windows with quad-buffer stereo"},
+        {"stereo",
+         {"--stereo", "wobble"},
+         "--stereo: expected one of mono, separate, side-by-side, top-bottom, anaglyph, quad-buffer, got 'wobble'"},
+        {"quad-buffer headless",
+         {"--stereo", "quad-buffer"},
+         "stereo mode quad-buffer needs windows with quad-buffer stereo"},
         {"no output folder", {}, "--out: required flag is missing"},
     };
     for (const auto& c : cases) {
         SCOPED_TRACE(c.name);
         std::vector<std::string> args{"render", "--display", testDisplay()};
         args.insert(args.end(), c.args.begin(), c.args.end());
-        if (std::string(c.name) != "no output folder") args.insert(args.end(), {"--out", freshFolder("render-cli-bad").string()});
+        if (std::string(c.name) != "no output folder")
+            args.insert(args.end(), {"--out", freshFolder("render-cli-bad").string()});
         const CliResult r = runCavewall(args);
         EXPECT_EQ(r.exitCode, 1);
         EXPECT_THAT(r.err, HasSubstr(c.message));
@@ -101,8 +108,8 @@ TEST_F(RenderCli, WindowWithoutAWindowSystemIsAClearError) {
     // The child inherits this process' environment: take the window system away.
     ::unsetenv("DISPLAY");
     ::unsetenv("WAYLAND_DISPLAY");
-    const CliResult r = runCavewall({"render", "--display", testDisplay(), "--window", "--out",
-                                     freshFolder("render-cli-window").string()});
+    const CliResult r = runCavewall(
+        {"render", "--display", testDisplay(), "--window", "--out", freshFolder("render-cli-window").string()});
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("--window: cannot open windows: "));
     EXPECT_THAT(r.err, HasSubstr("leave out --window to render headless"));

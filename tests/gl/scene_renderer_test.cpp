@@ -30,12 +30,12 @@ const display::HeadPose kEyeAtOrigin{{0, 0, 0}, glm::dquat(1, 0, 0, 0)};
 
 // A square of `size` metres facing +Z (towards the eye) centred at `centre`, with `material`.
 void addQuad(scenes::Scene& scene, glm::dvec3 centre, float size, int material, glm::dmat4 extra = glm::dmat4(1.0)) {
-    scenes::Mesh m = scenes::makeTiledQuad({-size / 2, -size / 2, 0}, {size, 0, 0}, {0, size, 0}, 1, 1,
-                                           glm::vec4(1.0f), glm::vec4(1.0f));
+    scenes::Mesh m = scenes::makeTiledQuad({-size / 2, -size / 2, 0}, {size, 0, 0}, {0, size, 0}, 1, 1, glm::vec4(1.0f),
+                                           glm::vec4(1.0f));
     m.material = material;
     scene.meshes.push_back(std::move(m));
-    scenes::addObject(scene, static_cast<int>(scene.meshes.size()) - 1,
-                      glm::translate(glm::dmat4(1.0), centre) * extra, "quad");
+    scenes::addObject(scene, static_cast<int>(scene.meshes.size()) - 1, glm::translate(glm::dmat4(1.0), centre) * extra,
+                      "quad");
 }
 
 int addMaterial(scenes::Scene& scene, glm::vec4 color, scenes::AlphaMode mode = scenes::AlphaMode::Opaque,
@@ -219,26 +219,30 @@ TEST_F(SceneRendererTest, LightingPerVertexMatchesPerPixelWithinOneLevel) {
         scenes::Mesh box = scenes::makeBox({size, size, size}, glm::vec4(1.0f));
         box.material = material;
         scene.meshes.push_back(std::move(box));
-        const glm::dmat4 place = glm::rotate(glm::translate(glm::dmat4(1.0), {0.08 * z * std::sin(i), 0.08 * z * std::cos(i), z}),
-                                             0.7 * i, glm::normalize(glm::dvec3(1.0, 0.5 * i, 0.3)));
+        const glm::dmat4 place =
+            glm::rotate(glm::translate(glm::dmat4(1.0), {0.08 * z * std::sin(i), 0.08 * z * std::cos(i), z}), 0.7 * i,
+                        glm::normalize(glm::dvec3(1.0, 0.5 * i, 0.3)));
         scenes::addObject(scene, static_cast<int>(scene.meshes.size()) - 1, place, "box");
     }
     // A floor of two big triangles 1.5 m under the eye: per vertex it would lose the light's
     // peak under the eye by far more than a level (that is what makes this test fail when the
     // bound is ignored).
-    addQuad(scene, {0, -1.5, -10}, 20.0f, material, glm::rotate(glm::dmat4(1.0), -glm::half_pi<double>(), {1.0, 0.0, 0.0}));
+    addQuad(scene, {0, -1.5, -10}, 20.0f, material,
+            glm::rotate(glm::dmat4(1.0), -glm::half_pi<double>(), {1.0, 0.0, 0.0}));
     render::RenderScene rs(scene, false);
     render::ListBuilder lists(rs);
     const display::Display d(oneScreen());
     const render::RenderList& list = lists.build(d.views(kEyeAtOrigin).at(0).frustum, glm::dmat4(1.0), {});
-    const auto perVertex = std::count_if(list.draws.begin(), list.draws.end(), [](const render::Draw& x) { return x.vertexLit; });
+    const auto perVertex =
+        std::count_if(list.draws.begin(), list.draws.end(), [](const render::Draw& x) { return x.vertexLit; });
     EXPECT_GT(perVertex, 5);
     EXPECT_LT(perVertex, static_cast<long>(list.draws.size()));
     RenderSettings perPixelOnly;
     perPixelOnly.vertexLightingTolerance = 0.0;
     const scenes::Image mixed = render(scene), exact = render(scene, glm::dmat4(1.0), perPixelOnly);
     int worst = 0;
-    for (std::size_t i = 0; i < mixed.rgba.size(); ++i) worst = std::max(worst, std::abs(mixed.rgba[i] - exact.rgba[i]));
+    for (std::size_t i = 0; i < mixed.rgba.size(); ++i)
+        worst = std::max(worst, std::abs(mixed.rgba[i] - exact.rgba[i]));
     EXPECT_LE(worst, 1);
 }
 
@@ -252,8 +256,7 @@ TEST_F(SceneRendererTest, MovingTheCaveAndTheSceneTogetherChangesNothingEvenFarA
     for (scenes::Object& o : farScene.objects) o.worldFromModel = far * o.worldFromModel;
     farScene.updateObjectBounds();
     const glm::dmat4 stand = glm::translate(glm::dmat4(1.0), glm::dvec3(0.37, 1.6, -0.61));
-    const metrics::ImageComparison r =
-        metrics::compareImages(render(farScene, far * stand), render(nearScene, stand));
+    const metrics::ImageComparison r = metrics::compareImages(render(farScene, far * stand), render(nearScene, stand));
     EXPECT_TRUE(r.passes()) << r.describe();
 }
 
@@ -269,8 +272,11 @@ TEST_F(SceneRendererTest, ShaderErrorsNameTheStageAndCarryTheLog) {
     const char* vertex = "#version 450 core\nvoid main() { gl_Position = vec4(0.0); }\n";
     EXPECT_THAT([&] { buildProgram("broken", vertex, "#version 450 core\nvoid main() { undefined_thing; }\n"); },
                 ThrowsMessage<Error>(HasSubstr("shader program 'broken': fragment stage failed to compile: ")));
-    EXPECT_THAT([&] { buildProgram("broken", "#version 450 core\nvoid main() { x }\n", "#version 450 core\nvoid main() {}\n"); },
-                ThrowsMessage<Error>(HasSubstr("vertex stage failed to compile")));
+    EXPECT_THAT(
+        [&] {
+            buildProgram("broken", "#version 450 core\nvoid main() { x }\n", "#version 450 core\nvoid main() {}\n");
+        },
+        ThrowsMessage<Error>(HasSubstr("vertex stage failed to compile")));
     const GlObject ok = buildProgram("empty", vertex, "#version 450 core\nvoid main() {}\n");
     EXPECT_THAT([&] { uniformLocation(ok.id(), "empty", "uMissing"); },
                 ThrowsMessage<Error>(HasSubstr("expected an active uniform 'uMissing'")));

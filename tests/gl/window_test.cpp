@@ -28,8 +28,10 @@ protected:
 TEST_F(Window, RenderWithWindowMatchesHeadless) {
     const std::filesystem::path out = testing::testOutputFolder("window");
     std::filesystem::remove_all(out);
-    const std::vector<std::string> common{"render", "--display", (testing::testConfigFolder() / "cave4_128.json").string(),
-                                          "--eye", "-0.6,1.45,-0.4", "--head-yaw", "20", "--out"};
+    const std::vector<std::string> common{
+        "render", "--display",      (testing::testConfigFolder() / "cave4_128.json").string(),
+        "--eye",  "-0.6,1.45,-0.4", "--head-yaw",
+        "20",     "--out"};
     auto run = [&](std::vector<std::string> args) {
         args.insert(args.begin(), common.begin(), common.end());
         const test::CliResult r = test::runCavewall(args);
@@ -43,8 +45,8 @@ TEST_F(Window, RenderWithWindowMatchesHeadless) {
     for (const char* stem : {"front", "left", "right", "floor", "foldout"}) {
         SCOPED_TRACE(stem);
         const std::string file = std::string(stem) + ".png";
-        const metrics::ImageComparison r =
-            metrics::compareImages(scenes::readImage(out / "window" / file), scenes::readImage(out / "headless" / file));
+        const metrics::ImageComparison r = metrics::compareImages(scenes::readImage(out / "window" / file),
+                                                                  scenes::readImage(out / "headless" / file));
         EXPECT_TRUE(r.passes()) << r.describe();
     }
 }

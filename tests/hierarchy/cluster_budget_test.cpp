@@ -21,8 +21,9 @@ struct Walk {
 };
 
 // `frames` frames: each draws `drawn(budget)` predicted ms and takes (F + k drawn) x noise(i).
-Walk drive(ClusterBudget& c, int frames, double fixedMs, double k, const std::function<double(int)>& noise,
-           const std::function<double(double)>& drawn = [](double b) { return b; }) {
+Walk drive(
+    ClusterBudget& c, int frames, double fixedMs, double k, const std::function<double(int)>& noise,
+    const std::function<double(double)>& drawn = [](double b) { return b; }) {
     Walk w;
     for (int i = 0; i < frames; ++i) {
         const double p = drawn(c.selectionBudgetMs());

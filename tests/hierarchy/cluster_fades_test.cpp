@@ -158,7 +158,7 @@ TEST(ClusterFades, AnUndoneSwitchEndsItsFadeAndABackSwitchFadesTheOtherWay) {
     EXPECT_EQ(p.fades, 1);
     p = plan({}, {{4, ClusterRep::Textured}, {5, ClusterRep::Textured}});  // and back
     fades.apply(m, kEye, p);
-    EXPECT_EQ(p.fades, 1);                           // the refine fade ended, a coarsen began
+    EXPECT_EQ(p.fades, 1);  // the refine fade ended, a coarsen began
     EXPECT_THAT(p.objects, ::testing::ElementsAre(0, 1));
     ASSERT_EQ(p.boxes.size(), 2u);
     const auto four = std::find_if(p.boxes.begin(), p.boxes.end(), [](const ClusterBoxDraw& b) { return b.node == 4; });

@@ -81,7 +81,8 @@ TEST(ClusterImpostor, AccuracyDirectionsAreUnitAndTheNearestIsPicked) {
 // Two objects side by side under one cluster, seen from cave4's default head.
 ClusterModel twoObjects(double x) {
     ClusterModel m;
-    m.tree = buildClusterTree({box({x, 1, -5}, {x + 0.5, 1.5, -4.5}), box({x + 1, 1, -5}, {x + 1.5, 1.5, -4.5})}, {1, 1, 1});
+    m.tree =
+        buildClusterTree({box({x, 1, -5}, {x + 0.5, 1.5, -4.5}), box({x + 1, 1, -5}, {x + 1.5, 1.5, -4.5})}, {1, 1, 1});
     m.objectTriangles = {1000, 3000};
     m.accuracy.assign(m.tree.nodes.size(), {});
     m.accuracy[m.tree.root].textured.fill(0.9);
@@ -142,9 +143,9 @@ TEST(ClusterFrame, ViewShareIsTheClippedRectangleOfTheProjectedCorners) {
     // x in [-0.5, 0.5] at depth 1 to 2: NDC [-0.5, 0.5] (the nearer depth), y [-1, 1] clipped:
     // a quarter of the width doubled in height -> 0.5 x 1.
     EXPECT_NEAR(viewShare(box({-0.5, -5, -2}, {0.5, 5, -1}), clip), 0.5, 1e-12);
-    EXPECT_EQ(viewShare(box({50, 0, -3}, {51, 1, -2}), clip), 0.0);   // beside the view
-    EXPECT_EQ(viewShare(box({-1, -1, 2}, {1, 1, 3}), clip), 0.0);     // behind the eye
-    EXPECT_EQ(viewShare(box({-1, -1, -1}, {1, 1, 1}), clip), 1.0);    // around the eye
+    EXPECT_EQ(viewShare(box({50, 0, -3}, {51, 1, -2}), clip), 0.0);  // beside the view
+    EXPECT_EQ(viewShare(box({-1, -1, 2}, {1, 1, 3}), clip), 0.0);    // behind the eye
+    EXPECT_EQ(viewShare(box({-1, -1, -1}, {1, 1, 1}), clip), 1.0);   // around the eye
     EXPECT_EQ(viewShare(scenes::Bounds{}, clip), 0.0);
 }
 
@@ -173,7 +174,8 @@ TEST(ClusterFrame, BoxCostsAreSolvedFromAllBoxesAndTheRootAlone) {
 // default head), costs as twoObjects' plus a fill per whole view.
 ClusterModel pairAt(double x0, double x1) {
     ClusterModel m = twoObjects(-0.75);
-    m.tree = buildClusterTree({box({x0, 1, -5}, {x0 + 0.5, 1.5, -4.5}), box({x1, 1, -5}, {x1 + 0.5, 1.5, -4.5})}, {1, 1, 1});
+    m.tree =
+        buildClusterTree({box({x0, 1, -5}, {x0 + 0.5, 1.5, -4.5}), box({x1, 1, -5}, {x1 + 0.5, 1.5, -4.5})}, {1, 1, 1});
     m.costs.texturedViewMs = 8.0;
     m.costs.averageViewMs = 2.0;
     return m;
@@ -272,7 +274,7 @@ TEST(ClusterDiagram, FillsWhatTheFrameDrewByKind) {
     plan.boxes.clear();
     plan.objects = {0, 1};
     image = clusterDiagram(m, plan, {10, 0, 10}, 200);
-    EXPECT_EQ(pixel(image, 0.2, 0.5), green);                               // inside object 0
+    EXPECT_EQ(pixel(image, 0.2, 0.5), green);                              // inside object 0
     EXPECT_EQ(pixel(image, 0.5, 0.5), (std::vector<int>{255, 255, 255}));  // the gap between them
 }
 

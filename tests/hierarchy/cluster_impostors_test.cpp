@@ -111,7 +111,8 @@ TEST_F(ClusterImpostorsTest, CostsAreMeasuredPositiveAndCachedPerRendererAndReso
     // Another renderer measures again.
     EXPECT_FALSE(gl::measureClusterCosts(renderer, impostors, model, scene, "other renderer", cache).cached);
     // So does another resolution (the display's own fill), into its own file; 256 is the default.
-    const gl::MeasuredCosts at64 = gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache, 64);
+    const gl::MeasuredCosts at64 =
+        gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache, 64);
     EXPECT_FALSE(at64.cached);
     EXPECT_NE(at64.file, first.file);
     EXPECT_TRUE(gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache, 64).cached);

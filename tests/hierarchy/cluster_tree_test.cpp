@@ -116,7 +116,8 @@ TEST(ClusterTree, SmallModels) {
     EXPECT_EQ(buildClusterTree({}, {4, 4, 4}).root, -1);
     EXPECT_EQ(buildClusterTree({scenes::Bounds{}}, {4, 4, 4}).root, -1);
     EXPECT_EQ(buildClusterTree({box(0, 1)}, {4, 4, 4}).root, 0);
-    const ClusterTree flat = buildClusterTree({box(0, 1, 0, 0), box(2, 3, 0, 0)}, {0, -3, 2});  // flat in y; divisions clamped
+    const ClusterTree flat =
+        buildClusterTree({box(0, 1, 0, 0), box(2, 3, 0, 0)}, {0, -3, 2});  // flat in y; divisions clamped
     EXPECT_EQ(flat.divisions, glm::ivec3(1, 1, 2));
     EXPECT_THAT(flat.nodes[flat.root].children, ElementsAre(0, 1));
 }

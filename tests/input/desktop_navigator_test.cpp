@@ -189,10 +189,10 @@ TEST(DesktopNavigator, TheHandSitsAtTheViewCentreAndItsRayStopsAtWalls) {
 }
 
 TEST(DesktopNavigator, SpeedFollowsTheModelsSize) {
-    EXPECT_EQ(viewSpeed(60.0), 3.0);     // a 60 m building: crossed in 20 s
-    EXPECT_EQ(viewSpeed(1000.0), 5.0);   // a 1 km plant: no faster than a brisk run
-    EXPECT_EQ(viewSpeed(0.2), 0.05);     // a 20 cm object still moves
-    EXPECT_EQ(viewSpeed(0.0), 1.0);      // no size: walking pace
+    EXPECT_EQ(viewSpeed(60.0), 3.0);    // a 60 m building: crossed in 20 s
+    EXPECT_EQ(viewSpeed(1000.0), 5.0);  // a 1 km plant: no faster than a brisk run
+    EXPECT_EQ(viewSpeed(0.2), 0.05);    // a 20 cm object still moves
+    EXPECT_EQ(viewSpeed(0.0), 1.0);     // no size: walking pace
     EXPECT_EQ(viewSpeed(NAN), 1.0);
 }
 

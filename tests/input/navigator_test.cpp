@@ -92,7 +92,7 @@ TEST(Navigator, WalkStaysOnTheFloorClimbsStepsAndStopsAtWalls) {
     // The wall at x = 10 stops the head (at cave x = 0) bodyRadius = 0.3 m before it.
     EXPECT_NEAR(nav.origin().x, 9.7, 1e-9);
     EXPECT_LT(glm::length(nav.velocity()), 1e-9);  // stopped (up to the wand's rounding in z)
-    EXPECT_NEAR(nav.origin().y, 0.0, 1e-12);  // past the platform, back on the floor
+    EXPECT_NEAR(nav.origin().y, 0.0, 1e-12);       // past the platform, back on the floor
 }
 
 TEST(Navigator, WalkSlidesAlongWalls) {
@@ -220,7 +220,7 @@ TEST(Navigator, HandCursorRayInTheCaveFrame) {
     EXPECT_EQ(c.rayOrigin, glm::dvec3(0.2, 1.3, -0.3));
     EXPECT_NEAR(glm::distance(c.rayDirection, glm::dvec3(1, 0, 0)), 0.0, 1e-12);
     EXPECT_TRUE(c.hit);
-    EXPECT_NEAR(c.rayLength, 9.8, 1e-12);  // from x = 0.2 to the wall at x = 10
+    EXPECT_NEAR(c.rayLength, 9.8, 1e-12);                     // from x = 0.2 to the wall at x = 10
     nav.setTracking(kHead, handPointing(M_PI / 2, 0.0), {});  // away from the wall
     c = nav.handCursor();
     EXPECT_FALSE(c.hit);

@@ -14,12 +14,12 @@ namespace {
 // Body 1 at (100, 1700, -200) mm, rotated 90° about +Y: the matrix columns are the images of
 // the axes, x -> -z (0 0 -1), y -> y (0 1 0), z -> x (1 0 0), sent column by column.
 const std::string kHead6d = "6d 1 [1 1.000][100 1700 -200 0 90 0][0 0 -1 0 1 0 1 0 0]";
-const std::string kFlystick =
-    "6df2 1 1 [0 1.000 6 2][250 1200 -400][1 0 0 0 1 0 0 0 1][5 -0.5 0.25]";
+const std::string kFlystick = "6df2 1 1 [0 1.000 6 2][250 1200 -400][1 0 0 0 1 0 0 0 1][5 -0.5 0.25]";
 
 TEST(DTrack, ParsesFrameBodyAndFlystick) {
     PacketDrop why = PacketDrop::Malformed;
-    const auto f = parseDTrack("fr 123\r\nts 39596.024831\r\n6dcal 2\r\n" + kHead6d + "\r\n" + kFlystick + "\r\n", &why);
+    const auto f =
+        parseDTrack("fr 123\r\nts 39596.024831\r\n6dcal 2\r\n" + kHead6d + "\r\n" + kFlystick + "\r\n", &why);
     ASSERT_TRUE(f.has_value());
     EXPECT_EQ(why, PacketDrop::None);
     EXPECT_EQ(f->frame, 123u);
@@ -56,7 +56,8 @@ TEST(DTrack, UntrackedDevicesKeepIdentityAndAreFlagged) {
 
 TEST(DTrack, SeveralBodiesAndUnknownLines) {
     const auto f = parseDTrack(
-        "fr 7\n3d 1 [0 1.0][1 2 3]\n6d 2 [0 1.0][0 0 0 0 0 0][1 0 0 0 1 0 0 0 1] [1 0.5][10 20 30 0 0 0][1 0 0 0 1 0 0 0 1]\n");
+        "fr 7\n3d 1 [0 1.0][1 2 3]\n6d 2 [0 1.0][0 0 0 0 0 0][1 0 0 0 1 0 0 0 1] [1 0.5][10 20 30 0 0 0][1 0 0 0 1 0 0 "
+        "0 1]\n");
     ASSERT_TRUE(f.has_value());
     ASSERT_EQ(f->bodies.size(), 2u);
     EXPECT_EQ(f->bodies[1].id, 1);
@@ -86,7 +87,8 @@ TEST(DTrack, DropsGarbageTruncatedAndNonFinitePackets) {
         {"a reflection", "fr 1\n6d 1 [1 1.0][0 0 0 0 0 0][-1 0 0 0 1 0 0 0 1]", PacketDrop::Malformed},
         {"overflow", "fr 1\n6d 1 [1 1.0][1e999 0 0 0 0 0][1 0 0 0 1 0 0 0 1]", PacketDrop::Malformed},
         {"upper-case line id", "FR 1\n", PacketDrop::Malformed},
-        {"truncated flystick", "fr 1\n6df2 1 1 [0 1.000 6 2][250 1200 -400][1 0 0 0 1 0 0 0 1][5 -0.5", PacketDrop::Malformed},
+        {"truncated flystick", "fr 1\n6df2 1 1 [0 1.000 6 2][250 1200 -400][1 0 0 0 1 0 0 0 1][5 -0.5",
+         PacketDrop::Malformed},
         {"more flysticks than defined", "fr 1\n6df2 1 2 [0 1 0 0][0 0 0][1 0 0 0 1 0 0 0 1][]", PacketDrop::Malformed},
         {"NaN position", "fr 1\n6d 1 [1 1.0][nan 0 0 0 0 0][1 0 0 0 1 0 0 0 1]", PacketDrop::NonFinite},
         {"infinite timestamp", "fr 1\nts inf\n", PacketDrop::NonFinite},
@@ -134,8 +136,8 @@ TEST(DTrack, MutatedPacketsNeverCrashAndAreAllAccountedFor) {
         for (const auto& b : f->bodies) ASSERT_TRUE(isFinite(b.pose));
         for (const auto& s : f->flysticks) ASSERT_TRUE(isFinite(s.pose) && std::isfinite(s.wand.joystick.x));
     }
-    EXPECT_GT(dropped, 1000);   // most byte changes break the syntax
-    EXPECT_GT(accepted, 100);   // some only change a digit
+    EXPECT_GT(dropped, 1000);  // most byte changes break the syntax
+    EXPECT_GT(accepted, 100);  // some only change a digit
 }
 
 TEST(OpenTrack, DecodesCentimetresAndDegrees) {

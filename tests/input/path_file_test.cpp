@@ -51,8 +51,10 @@ TEST(PathFile, SplineIsC1AcrossSamples) {
     const double h = 1e-6;
     for (double t : {1.0, 3.0}) {
         SCOPED_TRACE(t);
-        const glm::dvec3 before = (interpolatePath(path.head, t).position - interpolatePath(path.head, t - h).position) / h;
-        const glm::dvec3 after = (interpolatePath(path.head, t + h).position - interpolatePath(path.head, t).position) / h;
+        const glm::dvec3 before =
+            (interpolatePath(path.head, t).position - interpolatePath(path.head, t - h).position) / h;
+        const glm::dvec3 after =
+            (interpolatePath(path.head, t + h).position - interpolatePath(path.head, t).position) / h;
         EXPECT_LT(glm::distance(before, after), 1e-4);
     }
 }
@@ -91,8 +93,10 @@ TEST(PathFile, BadFilesNameTheLineOrJsonPath) {
         {"empty", "", false, "p.csv: expected a header line t,x,y,z,qx,qy,qz,qw, got an empty file"},
         {"wrong header", "time,x,y,z\n", false, "p.csv:1: expected the header t,x,y,z,qx,qy,qz,qw"},
         {"short row", "t,x,y,z,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n1,0,0\n", false, "p.csv:3: expected 8 values, got 3"},
-        {"word", "t,x,y,z,qx,qy,qz,qw\n0,0,abc,0,0,0,0,1\n", false, "p.csv:2: column y: expected a finite number, got 'abc'"},
-        {"nan", "t,x,y,z,qx,qy,qz,qw\n0,nan,0,0,0,0,0,1\n", false, "p.csv:2: column x: expected a finite number, got 'nan'"},
+        {"word", "t,x,y,z,qx,qy,qz,qw\n0,0,abc,0,0,0,0,1\n", false,
+         "p.csv:2: column y: expected a finite number, got 'abc'"},
+        {"nan", "t,x,y,z,qx,qy,qz,qw\n0,nan,0,0,0,0,0,1\n", false,
+         "p.csv:2: column x: expected a finite number, got 'nan'"},
         {"zero quaternion", "t,x,y,z,qx,qy,qz,qw\n0,0,0,0,0,0,0,0\n", false,
          "p.csv:2: expected a unit quaternion, got one of length 0"},
         {"time backwards", "t,x,y,z,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n2,0,0,0,0,0,0,1\n1,0,0,0,0,0,0,1\n", false,
@@ -103,12 +107,14 @@ TEST(PathFile, BadFilesNameTheLineOrJsonPath) {
         {"json bad position", R"({"samples": [{"t": 0, "position": [0,0], "orientation": [0,0,0,1]}, {}]})", true,
          "p.json: samples[0].position: expected an array of 3 elements, got 2"},
         {"json time", R"({"samples": [{"t": 1, "position": [0,0,0], "orientation": [0,0,0,1]},
-                                      {"t": 1, "position": [0,0,0], "orientation": [0,0,0,1]}]})", true,
-         "p.json: samples[1].t: times must strictly increase (expected more than 1, got 1)"},
-        {"json hand missing", R"({"samples": [{"t": 0, "position": [0,0,0], "orientation": [0,0,0,1], "hand": {"position": [0,0,0], "orientation": [0,0,0,1]}},
-                                              {"t": 1, "position": [0,0,0], "orientation": [0,0,0,1]}]})", true,
-         "p.json: samples[1]: missing required key 'hand' (the first sample has one)"},
-        {"json typo", R"({"samples": [{"t": 0, "postion": [0,0,0]}, {}]})", true, "p.json: samples[0]: unknown key 'postion'"},
+                                      {"t": 1, "position": [0,0,0], "orientation": [0,0,0,1]}]})",
+         true, "p.json: samples[1].t: times must strictly increase (expected more than 1, got 1)"},
+        {"json hand missing",
+         R"({"samples": [{"t": 0, "position": [0,0,0], "orientation": [0,0,0,1], "hand": {"position": [0,0,0], "orientation": [0,0,0,1]}},
+                                              {"t": 1, "position": [0,0,0], "orientation": [0,0,0,1]}]})",
+         true, "p.json: samples[1]: missing required key 'hand' (the first sample has one)"},
+        {"json typo", R"({"samples": [{"t": 0, "postion": [0,0,0]}, {}]})", true,
+         "p.json: samples[0]: unknown key 'postion'"},
     };
     for (const auto& c : cases) {
         SCOPED_TRACE(c.name);

@@ -92,20 +92,27 @@ TEST(Recording, FormatsRoundTripExactly) {
 
 TEST(Recording, BadFilesNameLineAndKey) {
     const std::string header = "{\"format\":\"cavewall-input\",\"version\":1,\"source\":\"x\"}\n";
-    const std::string sample = R"({"t":0,"head":[0,0,0,0,0,0,1],"headValid":true,"hand":[0,0,0,0,0,0,1],"handValid":false,"buttons":0,"joystick":[0,0]})";
+    const std::string sample =
+        R"({"t":0,"head":[0,0,0,0,0,0,1],"headValid":true,"hand":[0,0,0,0,0,0,1],"handValid":false,"buttons":0,"joystick":[0,0]})";
     const struct {
         const char* name;
         std::string text;
         const char* message;
     } cases[] = {
         {"empty", "", "r.jsonl: expected a cavewall-input recording, got an empty file"},
-        {"other format", "{\"format\":\"csv\",\"version\":1,\"source\":\"x\"}\n", "r.jsonl:1: format: expected \"cavewall-input\", got \"csv\""},
+        {"other format", "{\"format\":\"csv\",\"version\":1,\"source\":\"x\"}\n",
+         "r.jsonl:1: format: expected \"cavewall-input\", got \"csv\""},
         {"no samples", header, "r.jsonl: expected at least one sample, got none"},
         {"not json", header + "{\"t\":\n", "r.jsonl:2: not valid JSON"},
-        {"short pose", header + R"({"t":0,"head":[0,0,0],"headValid":true,"hand":[0,0,0,0,0,0,1],"handValid":false,"buttons":0,"joystick":[0,0]})",
+        {"short pose",
+         header +
+             R"({"t":0,"head":[0,0,0],"headValid":true,"hand":[0,0,0,0,0,0,1],"handValid":false,"buttons":0,"joystick":[0,0]})",
          "r.jsonl:2: head: expected an array of 7 elements, got 3"},
-        {"unknown event", header + R"({"t":0,"event":"jump","code":0,"value":[0,0]})", "r.jsonl:2: event: expected one of"},
-        {"time backwards", header + sample + "\n" + R"({"t":-1,"head":[0,0,0,0,0,0,1],"headValid":true,"hand":[0,0,0,0,0,0,1],"handValid":false,"buttons":0,"joystick":[0,0]})",
+        {"unknown event", header + R"({"t":0,"event":"jump","code":0,"value":[0,0]})",
+         "r.jsonl:2: event: expected one of"},
+        {"time backwards",
+         header + sample + "\n" +
+             R"({"t":-1,"head":[0,0,0,0,0,0,1],"headValid":true,"hand":[0,0,0,0,0,0,1],"handValid":false,"buttons":0,"joystick":[0,0]})",
          "r.jsonl:3: t: samples must be in time order"},
     };
     for (const auto& c : cases) {

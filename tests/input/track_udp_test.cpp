@@ -46,13 +46,15 @@ TEST(TrackCli, DTrackSenderDrivesTheHeadThroughCalibration) {
     // Port 0: the child binds a free port and names it on stderr before it starts polling.
     test::CliProcess child({"track", "--tracker", "dtrack:udp://127.0.0.1:0", "--display", display, "--seconds", "2.5",
                             "--rate", "100", "--csv", csv});
-    const auto listening = child.waitForLine(std::regex("listening on 127\\.0\\.0\\.1:([0-9]+)"), std::chrono::seconds(60));
+    const auto listening =
+        child.waitForLine(std::regex("listening on 127\\.0\\.0\\.1:([0-9]+)"), std::chrono::seconds(60));
     ASSERT_TRUE(listening) << child.finish(std::chrono::seconds(1)).err;
     const int port = std::stoi((*listening)[1]);
     // Head (body 1) at (100, 1600, -200) mm at 100 Hz while the child runs, with a garbage
     // datagram every 10th.
     const test::CliResult r = sendUntilExit(child, std::chrono::seconds(60), [&](int i) {
-        sendUdp("127.0.0.1", port, "fr " + std::to_string(i) + "\n6d 1 [1 1.0][100 1600 -200 0 0 0][1 0 0 0 1 0 0 0 1]\n");
+        sendUdp("127.0.0.1", port,
+                "fr " + std::to_string(i) + "\n6d 1 [1 1.0][100 1600 -200 0 0 0][1 0 0 0 1 0 0 0 1]\n");
         if (i % 10 == 0) sendUdp("127.0.0.1", port, "\x7f garbage");
     });
     ASSERT_EQ(r.exitCode, 0) << r.err;

@@ -125,8 +125,8 @@ TEST(UdpLoopback, DTrackFloodOutsideTheTrackingVolumeIsDropped) {
     const char* bad[] = {"1e300 0 0", "-4e9 1700 0", "0 5.5e3 0", "100 1700 -3600"};
     EXPECT_TRUE(sendUdp("127.0.0.1", port, "fr 1\n6d 1 [1 1.0][100 1700 -200 0 0 0][1 0 0 0 1 0 0 0 1]\n"));
     for (int i = 0; i < 100; ++i)
-        EXPECT_TRUE(sendUdp("127.0.0.1", port, "fr 2\n6d 1 [1 1.0][" + std::string(bad[i % 4]) +
-                                                   " 0 0 0][1 0 0 0 1 0 0 0 1]\n"));
+        EXPECT_TRUE(sendUdp("127.0.0.1", port,
+                            "fr 2\n6d 1 [1 1.0][" + std::string(bad[i % 4]) + " 0 0 0][1 0 0 0 1 0 0 0 1]\n"));
     const Sample s = pollUntil(*source, [&](const Sample&) { return source->stats().packets == 101; });
     EXPECT_EQ(source->stats().accepted, 1u);
     EXPECT_EQ(source->stats().outside, 100u);
@@ -144,7 +144,10 @@ TEST(UdpLoopback, OpenTrackRandomFloodNeverMovesTheHead) {
     const double good[6] = {10, 170, -20, 0, 0, 0};
     EXPECT_TRUE(sendUdp("127.0.0.1", port, encodeOpenTrack(good)));
     std::uint64_t state = 18;
-    auto next = [&] { state = state * 6364136223846793005ull + 1442695040888963407ull; return state; };
+    auto next = [&] {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        return state;
+    };
     for (int i = 0; i < 100; ++i) {
         std::string packet(48, '\0');
         for (int k = 0; k < 48; k += 8) {
@@ -172,14 +175,20 @@ TEST(UdpLoopback, BadSpecsAreErrors) {
         {"dtrack:udp://127.0.0.1:99999", "port: expected an integer in [0, 65535], got \"99999\""},
         {"dtrack:udp://nowhere:5000", "host: expected a numeric IPv4 address, localhost or *, got 'nowhere'"},
         {"dtrack:udp://127.0.0.1:0?body=x", "body: expected an integer in [0, 1000000], got \"x\""},
-        {"opentrack:udp://127.0.0.1:0?body=1", "unknown parameter 'body' (expected one of: bind, stale, invert, volume)"},
-        {"dtrack:udp://127.0.0.1:0?volume=1,2,3", "volume: expected six comma-separated numbers within 1000 (x0,y0,z0,x1,y1,z1 "
-                                                  "in metres), got '1,2,3'"},
-        {"dtrack:udp://127.0.0.1:0?volume=-3,0,-3,3,1e300,3", "volume: expected six comma-separated numbers within 1000"},
-        {"opentrack:udp://127.0.0.1:0?volume=3,0,-3,-3,4,3", "volume: expected the first corner below the second on "
-                                                             "every axis, got '3,0,-3,-3,4,3'"},
-        {"opentrack:udp://127.0.0.1:0?invert=yaw,spin", "invert: expected a comma-separated list of x, y, z, yaw, pitch, roll, got 'spin'"},
-        {"dtrack:udp://127.0.0.1:0?bind=1.2.3", "bind address: expected a numeric IPv4 address or localhost, got '1.2.3'"},
+        {"opentrack:udp://127.0.0.1:0?body=1",
+         "unknown parameter 'body' (expected one of: bind, stale, invert, volume)"},
+        {"dtrack:udp://127.0.0.1:0?volume=1,2,3",
+         "volume: expected six comma-separated numbers within 1000 (x0,y0,z0,x1,y1,z1 "
+         "in metres), got '1,2,3'"},
+        {"dtrack:udp://127.0.0.1:0?volume=-3,0,-3,3,1e300,3",
+         "volume: expected six comma-separated numbers within 1000"},
+        {"opentrack:udp://127.0.0.1:0?volume=3,0,-3,-3,4,3",
+         "volume: expected the first corner below the second on "
+         "every axis, got '3,0,-3,-3,4,3'"},
+        {"opentrack:udp://127.0.0.1:0?invert=yaw,spin",
+         "invert: expected a comma-separated list of x, y, z, yaw, pitch, roll, got 'spin'"},
+        {"dtrack:udp://127.0.0.1:0?bind=1.2.3",
+         "bind address: expected a numeric IPv4 address or localhost, got '1.2.3'"},
         {"dtrack:udp://192.168.1.5:5000", "is not on this machine but the listener binds to 127.0.0.1 by default"},
     };
     for (const auto& c : cases) {

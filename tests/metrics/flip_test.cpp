@@ -19,10 +19,10 @@ namespace {
 using scenes::Image;
 
 using testing::flatImage;
+using ::testing::HasSubstr;
 using testing::makeImage;
 using testing::Rgb;
 using testing::texturedImage;
-using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
 FlipResult flipAt(const Image& test, const Image& reference, double ppd) {
@@ -37,8 +37,8 @@ TEST(FlipColor, WhiteIsTheReferenceAndTheRemapHitsItsKnots) {
     EXPECT_NEAR(glm::distance(huntLabFromOpponent(white), glm::dvec3(100, 0, 0)), 0.0, 1e-6);
     // Green against blue is the largest difference, HyAB 203.30 (derived in BlackAgainstWhite
     // below): it maps to 1, and 0.4^(1 / 0.7) of it, where e^0.7 = 0.4 cmax, to 0.95.
-    const double top = hyab(huntLabFromOpponent(opponentFromLinear({0, 1, 0})),
-                            huntLabFromOpponent(opponentFromLinear({0, 0, 1})));
+    const double top =
+        hyab(huntLabFromOpponent(opponentFromLinear({0, 1, 0})), huntLabFromOpponent(opponentFromLinear({0, 0, 1})));
     EXPECT_NEAR(top, 203.30, 1e-2);
     EXPECT_NEAR(flipColorError(top), 1.0, 1e-5);
     EXPECT_NEAR(flipColorError(top * std::pow(0.4, 1 / 0.7)), 0.95, 1e-5);
@@ -66,7 +66,8 @@ TEST(Flip, ErrorsAreInZeroOneAndSummariesMatchTheMap) {
         SCOPED_TRACE(ppd);
         const FlipResult r = flipAt(a, b, ppd);
         for (float e : r.errors) ASSERT_TRUE(e >= 0.0f && e <= 1.0f) << e;
-        const double mean = std::accumulate(r.errors.begin(), r.errors.end(), 0.0) / static_cast<double>(r.errors.size());
+        const double mean =
+            std::accumulate(r.errors.begin(), r.errors.end(), 0.0) / static_cast<double>(r.errors.size());
         EXPECT_NEAR(r.mean, mean, 1e-9);
         EXPECT_EQ(r.max, *std::max_element(r.errors.begin(), r.errors.end()));
         EXPECT_LE(r.p50, r.p95);
@@ -140,8 +141,8 @@ TEST(Flip, AFinePatternIsHiddenAtHighPixelsPerDegree) {
     for (double ppd : {5.0, 10.0, 20.0, 40.0, 80.0}) means.push_back(flipAt(grey, grating, ppd).mean);
     EXPECT_GE(means[0], means[1] - 1e-3);  // saturated
     for (std::size_t i = 2; i < means.size(); ++i) EXPECT_LT(means[i], means[i - 1] - 0.02) << i;
-    EXPECT_GT(means[1], 0.9);   // plainly visible on a CAVE wall (9-17 ppd)
-    EXPECT_LT(means[4], 0.1);   // nearly invisible at a desktop's 67+ ppd
+    EXPECT_GT(means[1], 0.9);  // plainly visible on a CAVE wall (9-17 ppd)
+    EXPECT_LT(means[4], 0.1);  // nearly invisible at a desktop's 67+ ppd
 }
 
 TEST(Flip, SeesColourAtEqualLuminanceAndDimsItInTheDark) {
@@ -171,9 +172,10 @@ TEST(Flip, LinearEncodingReadsBytesAsLight) {
 
 TEST(Flip, DifferentSizesAreAnError) {
     Image a = flatImage(4, 4, {0, 0, 0}, "a"), b = flatImage(4, 5, {0, 0, 0}, "b");
-    EXPECT_THAT([&] { flip(a, b); },
-                ThrowsMessage<Error>(HasSubstr(
-                    "flip: comparing 'a' with 'b': expected two non-empty RGBA images of the same size, got 4x4 and 4x5")));
+    EXPECT_THAT(
+        [&] { flip(a, b); },
+        ThrowsMessage<Error>(HasSubstr(
+            "flip: comparing 'a' with 'b': expected two non-empty RGBA images of the same size, got 4x4 and 4x5")));
 }
 
 TEST(Flip, ErrorImageMapsZeroToBlackAndOneToPaleYellow) {

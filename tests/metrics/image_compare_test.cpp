@@ -73,7 +73,7 @@ TEST(ImageCompare, AChangedBlockFailsWithTheRightFigures) {
 TEST(ImageCompare, SmallNoiseWithinTolerancePasses) {
     Image noisy = gradient();
     for (int x = 0; x < 100; x += 2) red(noisy, x, 50) += 3;  // Δ = 3 is not "bad"
-    red(noisy, 5, 5) += 50;                                 // 1 bad pixel = 0.01 % ≤ 0.1 %
+    red(noisy, 5, 5) += 50;                                   // 1 bad pixel = 0.01 % ≤ 0.1 %
     const ImageComparison r = compareImages(noisy, gradient());
     EXPECT_TRUE(r.passes()) << r.describe();
     EXPECT_FALSE(compareImages(noisy, gradient(), ImageTolerance::exact()).passes());

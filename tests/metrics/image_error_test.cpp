@@ -16,9 +16,9 @@ namespace {
 using scenes::Image;
 
 using testing::flatImage;
+using ::testing::HasSubstr;
 using testing::makeImage;
 using testing::Rgb;
-using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
 TEST(ImageError, SquaredErrorCountsRgbSamplesInUnitRange) {
@@ -26,8 +26,9 @@ TEST(ImageError, SquaredErrorCountsRgbSamplesInUnitRange) {
     // 2 * 0.04 = 0.08 over 8 * 3 = 24 samples, MSE 0.08 / 24 = 1/300, PSNR 10 log10(300) =
     // 24.771 dB.
     const Image reference = flatImage(4, 2, {100, 100, 100});
-    const Image twoOff =
-        makeImage(4, 2, [](int x, int y) { return x < 2 && y == 0 ? Rgb{151, 100, 100} : Rgb{100, 100, 100}; });
+    const Image twoOff = makeImage(4, 2, [](int x, int y) {
+        return x < 2 && y == 0 ? Rgb{151, 100, 100} : Rgb{100, 100, 100};
+    });
     const SquaredError e = squaredError(twoOff, reference);
     EXPECT_EQ(e.samples, 24u);
     EXPECT_NEAR(e.sum, 0.08, 1e-12);
@@ -100,8 +101,11 @@ TEST(ImageError, NoFramesIsIdentical) {
 }
 
 TEST(ImageError, DifferentSizesAreAnError) {
-    EXPECT_THAT([] { squaredError(flatImage(2, 2, {0, 0, 0}, "a"), flatImage(3, 2, {0, 0, 0}, "b")); },
-                ThrowsMessage<Error>(HasSubstr("squared error: comparing 'a' with 'b'")));
+    EXPECT_THAT(
+        [] {
+            squaredError(flatImage(2, 2, {0, 0, 0}, "a"), flatImage(3, 2, {0, 0, 0}, "b"));
+        },
+        ThrowsMessage<Error>(HasSubstr("squared error: comparing 'a' with 'b'")));
 }
 
 }  // namespace

@@ -16,10 +16,10 @@ namespace {
 
 using scenes::Image;
 
+using ::testing::HasSubstr;
 using testing::makeImage;
 using testing::Rgb;
 using testing::texturedImage;
-using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
 // `base` with `offset` levels added to R, G and B of the pixels `where` selects.
@@ -88,9 +88,10 @@ TEST(Popping, ASwitchOnOneTileIsNotDilutedByTheRest) {
     // full-screen switch scores (40); an RMS over the whole screen would show 40 / 8 = 5.
     const Image reference = texturedImage(256, 256, 13);
     const auto inTile = [](int x, int y) { return x >= 96 && x < 128 && y >= 32 && y < 64; };
-    const double local = framePairPopping(offsetImage(reference, 20, inTile), reference,
-                                          offsetImage(reference, -20, inTile), reference);
-    const double whole = framePairPopping(offsetImage(reference, 20), reference, offsetImage(reference, -20), reference);
+    const double local =
+        framePairPopping(offsetImage(reference, 20, inTile), reference, offsetImage(reference, -20, inTile), reference);
+    const double whole =
+        framePairPopping(offsetImage(reference, 20), reference, offsetImage(reference, -20), reference);
     EXPECT_NEAR(local, 40.0, 1e-9);
     EXPECT_NEAR(whole, 40.0, 1e-9);
 }

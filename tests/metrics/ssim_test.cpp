@@ -16,10 +16,10 @@ namespace {
 using scenes::Image;
 
 using testing::flatImage;
+using ::testing::HasSubstr;
 using testing::makeImage;
 using testing::Rgb;
 using testing::texturedImage;
-using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
 // `base` with every R, G, B value moved by a seeded uniform offset in [-amplitude, amplitude].
@@ -73,7 +73,9 @@ TEST(Ssim, InvertedStripesScoreTheirStructureTerm) {
     // 1 * (-2 d² + C2) / (2 d² + C2), C2 = (0.03 * 255)² = 58.5225:
     // (-5000 + 58.5225) / (5000 + 58.5225) = -0.976862.
     const auto stripes = [](int phase) {
-        return makeImage(24, 16, [phase](int x, int) { return (x + phase) % 2 ? Rgb{178, 178, 178} : Rgb{78, 78, 78}; });
+        return makeImage(24, 16, [phase](int x, int) {
+            return (x + phase) % 2 ? Rgb{178, 178, 178} : Rgb{78, 78, 78};
+        });
     };
     EXPECT_NEAR(ssim(stripes(0), stripes(1)), -0.976862, 1e-5);
 }

@@ -19,13 +19,15 @@ inline scenes::Image makeImage(int w, int h, const std::function<Rgb(int, int)>&
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const Rgb c = colour(x, y);
-            for (int i = 0; i < 3; ++i) image.rgba[(static_cast<std::size_t>(y) * w + x) * 4 + i] = static_cast<std::uint8_t>(c[i]);
+            for (int i = 0; i < 3; ++i)
+                image.rgba[(static_cast<std::size_t>(y) * w + x) * 4 + i] = static_cast<std::uint8_t>(c[i]);
         }
     return image;
 }
 
 inline scenes::Image flatImage(int w, int h, Rgb c, std::string name = "flat") {
-    return makeImage(w, h, [c](int, int) { return c; }, std::move(name));
+    return makeImage(
+        w, h, [c](int, int) { return c; }, std::move(name));
 }
 
 // A textured image: smooth gradients plus seeded noise of +-`noise` levels, within 16..239.
@@ -35,7 +37,8 @@ inline scenes::Image texturedImage(int w, int h, unsigned seed, int noise = 12, 
     return makeImage(
         w, h,
         [&](int x, int y) {
-            return Rgb{40 + (160 * x) / w + n(rng), 60 + (120 * y) / h + n(rng), 200 - (150 * (x + y)) / (w + h) + n(rng)};
+            return Rgb{40 + (160 * x) / w + n(rng), 60 + (120 * y) / h + n(rng),
+                       200 - (150 * (x + y)) / (w + h) + n(rng)};
         },
         std::move(name));
 }

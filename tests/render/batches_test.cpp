@@ -90,7 +90,7 @@ TEST(Batches, InGivenOrderOnlyNeighboursMergeAndBatchesFollowEarlierOnes) {
     // The one before + [1, 4], [0, 3], [2], then [0] again: equal keys apart stay apart.
     ASSERT_EQ(batches.size(), 5u);
     ASSERT_EQ(list.size(), 6u);
-    EXPECT_EQ(list[4].object, 2);   // the order is untouched
+    EXPECT_EQ(list[4].object, 2);  // the order is untouched
     EXPECT_EQ(batches[1].first, 7);
     EXPECT_EQ(batches[1].count, 2);
     EXPECT_EQ(batches[2].first, 9);

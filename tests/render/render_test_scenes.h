@@ -16,9 +16,9 @@ config::DisplayConfig oneScreen(int pixels = 64);
 struct Look {
     glm::vec4 color{1.0f};
     scenes::AlphaMode alpha = scenes::AlphaMode::Opaque;
-    int image = -1;            // base-colour texture (a Scene::images index), -1: none
+    int image = -1;  // base-colour texture (a Scene::images index), -1: none
     bool doubleSided = false;
-    bool mirrored = false;     // worldFromModel mirrors x: clockwise front faces
+    bool mirrored = false;  // worldFromModel mirrors x: clockwise front faces
     scenes::Role role = scenes::Role::Content;
 };
 

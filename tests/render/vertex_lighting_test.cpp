@@ -21,8 +21,8 @@ namespace {
 double diffuse(const glm::dvec3& n, const glm::dvec3& x) { return std::abs(glm::dot(n, -glm::normalize(x))); }
 
 struct Worst {
-    double error = 0.0;   // the largest |per pixel - per vertex| found
-    double ratio = 0.0;   // the largest error / bound found
+    double error = 0.0;  // the largest |per pixel - per vertex| found
+    double ratio = 0.0;  // the largest error / bound found
 };
 
 // Samples barycentric points of the triangle p[0..2] (eye at the origin) and compares the
@@ -53,8 +53,8 @@ TEST(VertexLighting, BoundHoldsOnRandomFlatTrianglesFromRandomEyes) {
     double worstRatio = 0.0;
     for (int t = 0; t < 3000; ++t) {
         // A triangle of size up to a few metres 1-20 m away in a random direction.
-        const glm::dvec3 centre = glm::normalize(glm::dvec3(unit(random), unit(random), unit(random))) *
-                                  (1.0 + 19.0 * scale(random));
+        const glm::dvec3 centre =
+            glm::normalize(glm::dvec3(unit(random), unit(random), unit(random))) * (1.0 + 19.0 * scale(random));
         const double size = 3.0 * scale(random);
         glm::dvec3 p[3];
         for (glm::dvec3& v : p) v = centre + size * glm::dvec3(unit(random), unit(random), unit(random));

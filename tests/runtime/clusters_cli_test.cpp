@@ -27,9 +27,24 @@ enum class FlagNames { Old, New };
 std::vector<std::string> clusterRun(const fs::path& scene, const fs::path& out, const std::string& cache,
                                     FlagNames names = FlagNames::Old) {
     const bool old = names == FlagNames::Old;
-    return {"run", "--scene", scene.string(), "--display", testDisplay(), "--tracker", "sim:walk?seed=2",
-            "--frames", "8", old ? "--clusters" : "--hierarchy", old ? "--cluster-divisions" : "--hierarchy-divisions",
-            "4", old ? "--cluster-res" : "--hierarchy-res", "16", "--cache", cache, "--out", out.string()};
+    return {"run",
+            "--scene",
+            scene.string(),
+            "--display",
+            testDisplay(),
+            "--tracker",
+            "sim:walk?seed=2",
+            "--frames",
+            "8",
+            old ? "--clusters" : "--hierarchy",
+            old ? "--cluster-divisions" : "--hierarchy-divisions",
+            "4",
+            old ? "--cluster-res" : "--hierarchy-res",
+            "16",
+            "--cache",
+            cache,
+            "--out",
+            out.string()};
 }
 
 // "run: clusters: N (...": the clusters of the hierarchy (one per node of the tree).

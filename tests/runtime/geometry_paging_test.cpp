@@ -123,8 +123,15 @@ TEST_F(GeometryPagingTest, TheWalkthroughFreesEvictedGroupsOnTheGpu) {
     const SmallPlant& plant = smallPlant();
     const int cells = static_cast<int>(plant.description.cells.size());
     const scenes::Scene scene = unshared(plant.scene, cells);
-    ASSERT_EQ(gl::SceneRenderer(scene, [&] { gl::RenderSettings s; s.pagedCells = cells; return s; }())
-                  .gpu().meshGroups().groupCount(),
+    ASSERT_EQ(gl::SceneRenderer(scene,
+                                [&] {
+                                    gl::RenderSettings s;
+                                    s.pagedCells = cells;
+                                    return s;
+                                }())
+                  .gpu()
+                  .meshGroups()
+                  .groupCount(),
               cells);
     std::vector<std::size_t> cellBytes = walls::cellGeometryBytes(scene, cells);
     std::sort(cellBytes.rbegin(), cellBytes.rend());

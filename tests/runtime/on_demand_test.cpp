@@ -31,8 +31,8 @@ protected:
         root = testOutputFolder("on_demand") / ::testing::UnitTest::GetInstance()->current_test_info()->name();
         std::filesystem::remove_all(root);
         request.scene = scene.sceneFile;
-        request.cache = root / "cache";               // empty: a cold cache
-        request.settings.maxResolution = 32;          // small textures: the order does not depend on size
+        request.cache = root / "cache";       // empty: a cold cache
+        request.settings.maxResolution = 32;  // small textures: the order does not depend on size
         // An eye in cell A, facing A|B, where the selection draws A|B from textures alone.
         const walls::FrameSelector selector(scene.walls.plan, scene.walls.table, scene.description);
         for (double x = -9.75; x < -0.25 && !textured; x += 0.25) {
@@ -114,7 +114,8 @@ TEST_F(OnDemandTest, FirstFrameBeforeTheBakeThenBakedTexturesThenNothingToBake) 
         // The cache lists every texture of the plan, each file valid (size and hash).
         const walls::BakeManifest listed = walls::readManifest(baker.folder());
         ASSERT_EQ(static_cast<int>(listed.textures.size()), total);
-        for (const walls::BakedTexture& t : listed.textures) EXPECT_TRUE(walls::textureFileValid(baker.folder(), t)) << t.file;
+        for (const walls::BakedTexture& t : listed.textures)
+            EXPECT_TRUE(walls::textureFileValid(baker.folder(), t)) << t.file;
     }
 
     // A second run finds everything and bakes nothing.
@@ -147,7 +148,8 @@ TEST_F(OnDemandTest, DepthWallsBakedOnDemandAreDrawnWithTheirDepths) {
     options.wallKind = walls::WallKind::Depth;
     auto walkthrough = [&](walls::WallSetup setup, gl::BackgroundBaker* baker) {
         options.baker = baker;
-        return std::make_unique<gl::Walkthrough>(scene.scene, scene.description, display, *context, std::move(setup), options);
+        return std::make_unique<gl::Walkthrough>(scene.scene, scene.description, display, *context, std::move(setup),
+                                                 options);
     };
     // The eye off every texture's sampling point, where depth and flat walls differ.
     in.worldFromCave = cavePlacedAt(*textured + glm::dvec3(0.0, 0.0, 0.35));
@@ -240,7 +242,8 @@ TEST_F(OnDemandTest, DiskBudgetEvictsLeastRecentlyWantedFiles) {
             EXPECT_TRUE(!s.textures.empty() || s.geometryWeight > 0.0) << "frame " << i << ", wall " << s.wall;
     }
     const gl::BackgroundBakeStats stats = baker.stats();
-    EXPECT_GT(stats.evictions, 0) << "textures " << scene.walls.plan.textures.size() << ", baked " << stats.baked << ", cache MB " << stats.cacheMB << ", file " << fileBytes;
+    EXPECT_GT(stats.evictions, 0) << "textures " << scene.walls.plan.textures.size() << ", baked " << stats.baked
+                                  << ", cache MB " << stats.cacheMB << ", file " << fileBytes;
     const walls::BakeManifest listed = walls::readManifest(baker.folder());
     std::uint64_t bytes = 0;
     for (const walls::BakedTexture& t : listed.textures) {

@@ -45,9 +45,13 @@ inline std::string testDisplay() { return std::string(CAVEWALL_SOURCE_DIR) + "/t
 
 // `cavewall run` with walls on the small plant, into `out`.
 inline std::vector<std::string> wallRun(const std::filesystem::path& out, const std::string& tracker, long frames) {
-    return {"run", "--scene", smallPlant().string(), "--display", testDisplay(), "--tracker", tracker,
-            "--frames", std::to_string(frames), "--alpha", "20", "--min-zone", "3", "--ppd", "2",
-            "--cache", cacheDir(), "--out", out.string()};
+    return {"run",       "--scene",     smallPlant().string(),
+            "--display", testDisplay(), "--tracker",
+            tracker,     "--frames",    std::to_string(frames),
+            "--alpha",   "20",          "--min-zone",
+            "3",         "--ppd",       "2",
+            "--cache",   cacheDir(),    "--out",
+            out.string()};
 }
 
 }  // namespace cavewall::test

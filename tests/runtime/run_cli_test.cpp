@@ -60,8 +60,9 @@ TEST(RunCli, BakeOnDemandStartsColdAndLeavesItsBakesInTheCache) {
         args[std::find(args.begin(), args.end(), "--cache") - args.begin() + 1] = cache.string();
         return runCavewall(args);
     };
-    const std::regex line("baking on demand: (\\d+) textures missing at the start, (\\d+) baked during the run, "
-                          "(\\d+) still missing; first frame [0-9.]+ s after the scene loaded");
+    const std::regex line(
+        "baking on demand: (\\d+) textures missing at the start, (\\d+) baked during the run, "
+        "(\\d+) still missing; first frame [0-9.]+ s after the scene loaded");
     const CliResult first = run(out);
     ASSERT_EQ(first.exitCode, 0) << first.err;
     std::smatch m1;
@@ -98,7 +99,8 @@ TEST(RunCli, BakeOnDemandRefusesBadCombinations) {
         const char* message;
     };
     const Case cases[] = {
-        {{"--bake-on-demand", "--cache-budget", "0"}, "--cache-budget: expected a disk budget in MB in (0, 1e9], got 0"},
+        {{"--bake-on-demand", "--cache-budget", "0"},
+         "--cache-budget: expected a disk budget in MB in (0, 1e9], got 0"},
         {{"--bake-on-demand", "--cache-budget", "lots"}, "--cache-budget"},
         {{"--cache-budget", "100"}, "--cache-budget: needs --bake-on-demand"},
         {{"--bake-on-demand", "--sync-paging"}, "--bake-on-demand and --sync-paging: expected one of them, got both"},
@@ -117,7 +119,8 @@ TEST(RunCli, BakeOnDemandRefusesBadCombinations) {
 // drawn on the walls; the same frames as the walls' less their quads. Combinations that would
 // draw textures or no walls are refused.
 TEST(RunCli, NoTexturesDrawsTheWallsCellsAndNothingOnTheWalls) {
-    const fs::path walls = outputDir("control-walls"), control = outputDir("control"), cache = outputDir("control-cache");
+    const fs::path walls = outputDir("control-walls"), control = outputDir("control"),
+                   cache = outputDir("control-cache");
     std::vector<std::string> args = wallRun(walls, "sim:walk?seed=2", 12);
     args.push_back("--sync-paging");
     ASSERT_EQ(runCavewall(args).exitCode, 0);
@@ -157,9 +160,10 @@ TEST(RunCli, WritesFramesWallsAndImagesOnTheSmallPlant) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto rows = readCsv(out / "frames.csv");
     ASSERT_EQ(rows.size(), 40u);
-    for (const char* column : {"frame", "t", "head_x", "head_y", "head_z", "world_x", "world_y", "world_z", "cell",
-                               "zone", "frame_ms", "cpu_ms", "gpu_ms", "triangles", "draw_calls", "textures_resident",
-                               "page_ins", "misses", "max_err_deg", "max_err_px"})
+    for (const char* column :
+         {"frame",    "t",      "head_x",      "head_y",    "head_z", "world_x",   "world_y",    "world_z",
+          "cell",     "zone",   "frame_ms",    "cpu_ms",    "gpu_ms", "triangles", "draw_calls", "textures_resident",
+          "page_ins", "misses", "max_err_deg", "max_err_px"})
         EXPECT_EQ(rows.hasColumn(column), true) << column;
     for (const auto& row : rows) {
         SCOPED_TRACE(row.at("frame"));
@@ -195,8 +199,9 @@ TEST(RunCli, WritesFramesWallsAndImagesOnTheSmallPlant) {
     EXPECT_THAT(r.out, HasSubstr("frames.csv"));
     // Start-up is reported in order: scene, walls, walkthrough, first frame.
     std::smatch m;
-    ASSERT_TRUE(std::regex_search(r.out, m, std::regex("first frame after ([0-9.]+) s \\(scene loaded at ([0-9.]+) s, "
-                                                         "walls ready at ([0-9.]+) s, walkthrough ready at ([0-9.]+) s\\)")))
+    ASSERT_TRUE(std::regex_search(r.out, m,
+                                  std::regex("first frame after ([0-9.]+) s \\(scene loaded at ([0-9.]+) s, "
+                                             "walls ready at ([0-9.]+) s, walkthrough ready at ([0-9.]+) s\\)")))
         << r.out;
     const double first = std::stod(m[1]), scene = std::stod(m[2]), walls = std::stod(m[3]), ready = std::stod(m[4]);
     EXPECT_GT(scene, 0.0);
@@ -252,18 +257,24 @@ TEST(RunCli, BadFlagsAndSpecsGiveClearErrors) {
         {"tracker", {"--tracker", "sim:run"}, "tracker 'sim:run'"},
         {"unknown flag", {"--speed", "2"}, "--speed: unknown flag"},
         {"frames", {"--frames", "-1"}, "--frames: expected an integer in [0, "},
-        {"budget without levels", {"--triangle-budget", "5000"},
+        {"budget without levels",
+         {"--triangle-budget", "5000"},
          "--triangle-budget: needs levels of detail (--lod PX with PX > 0), got --lod 0"},
         {"negative lod", {"--lod", "-1"}, "--lod: expected a number in [0"},
-        {"frame budget without levels", {"--frame-budget-ms", "16.7"},
+        {"frame budget without levels",
+         {"--frame-budget-ms", "16.7"},
          "--frame-budget-ms: needs levels of detail (--lod PX with PX > 0) or --clusters, got --lod 0"},
-        {"both budgets", {"--lod", "1", "--frame-budget-ms", "16.7", "--triangle-budget", "5000"},
+        {"both budgets",
+         {"--lod", "1", "--frame-budget-ms", "16.7", "--triangle-budget", "5000"},
          "--frame-budget-ms and --triangle-budget: expected one of them, got both"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
-        std::map<std::string, std::string> flags = {{"--scene", scene}, {"--tracker", "sim:walk"}, {"--frames", "2"},
-                                                    {"--out", out.string()}, {"--display", testDisplay()}};
+        std::map<std::string, std::string> flags = {{"--scene", scene},
+                                                    {"--tracker", "sim:walk"},
+                                                    {"--frames", "2"},
+                                                    {"--out", out.string()},
+                                                    {"--display", testDisplay()}};
         std::vector<std::string> args = {"run", "--no-walls"};
         for (std::size_t i = 0; i + 1 < c.extra.size(); i += 2) flags[c.extra[i]] = c.extra[i + 1];
         for (const auto& [k, v] : flags) args.insert(args.end(), {k, v});
@@ -278,8 +289,8 @@ TEST(RunCli, LevelsOfDetailReportTheirToleranceErrorAndBudget) {
     // of half the 1 px frames' median: frames.csv reports the tolerance used and the largest
     // error drawn, which never exceeds it.
     std::map<std::string, CsvTable> runs;
-    for (const auto& [name, extra] : std::vector<std::pair<std::string, std::vector<std::string>>>{
-             {"full", {}}, {"lod", {"--lod", "1"}}}) {
+    for (const auto& [name, extra] :
+         std::vector<std::pair<std::string, std::vector<std::string>>>{{"full", {}}, {"lod", {"--lod", "1"}}}) {
         const fs::path out = outputDir("lod-" + name);
         std::vector<std::string> args = wallRun(out, "sim:walk?seed=2", 12);
         args.insert(args.end(), {"--pace", "3", "--sync-paging"});
@@ -304,7 +315,8 @@ TEST(RunCli, LevelsOfDetailReportTheirToleranceErrorAndBudget) {
     const long budget = lodTriangles[6] * 85 / 100;
     const fs::path out = outputDir("lod-budget");
     std::vector<std::string> args = wallRun(out, "sim:walk?seed=2", 12);
-    args.insert(args.end(), {"--pace", "3", "--sync-paging", "--lod", "1", "--triangle-budget", std::to_string(budget)});
+    args.insert(args.end(),
+                {"--pace", "3", "--sync-paging", "--lod", "1", "--triangle-budget", std::to_string(budget)});
     const CliResult r = runCavewall(args);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     int coarsened = 0;
@@ -335,8 +347,8 @@ TEST(RunCli, AFrameBudgetCoarsensLevelsUntilFramesFitIt) {
     // its coarsest levels or drawn at the floor, no lighter than 0.98 of the frame before.
     const fs::path out = outputDir("frame-budget");
     std::vector<std::string> args = wallRun(out, "sim:walk?seed=2", 12);
-    args.insert(args.end(), {"--pace", "3", "--sync-paging", "--lod", "1", "--frame-budget-ms", "0.01",
-                             "--lod-max", "3"});
+    args.insert(args.end(),
+                {"--pace", "3", "--sync-paging", "--lod", "1", "--frame-budget-ms", "0.01", "--lod-max", "3"});
     const CliResult r = runCavewall(args);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto rows = readCsv(out / "frames.csv");
@@ -350,8 +362,11 @@ TEST(RunCli, AFrameBudgetCoarsensLevelsUntilFramesFitIt) {
         EXPECT_GT(std::stod(rows[i].at("lod_px")), 1.0);
         EXPECT_LE(std::stod(rows[i].at("lod_px")), 3.0);
         EXPECT_LE(std::stod(rows[i].at("lod_err_px")), std::stod(rows[i].at("lod_px")) + 1e-3);
-        if (rows[i].at("lod_over_budget") == "1") ++over;
-        else EXPECT_GE(std::stod(rows[i].at("geometry_triangles")), 0.98 * std::stod(rows[i - 1].at("geometry_triangles")) - 1.0);
+        if (rows[i].at("lod_over_budget") == "1")
+            ++over;
+        else
+            EXPECT_GE(std::stod(rows[i].at("geometry_triangles")),
+                      0.98 * std::stod(rows[i - 1].at("geometry_triangles")) - 1.0);
     }
     EXPECT_GE(over, 3);  // the target stays infeasible: the floor is probed and raised again
 }
@@ -370,8 +385,8 @@ TEST(RunCli, ReplayReproducesPosesAndFramesExactly) {
     ASSERT_EQ(rowsA.size(), 30u);
     ASSERT_EQ(rowsB.size(), rowsA.size());
     for (std::size_t i = 0; i < rowsA.size(); ++i)
-        for (const char* column : {"t", "head_x", "head_y", "head_z", "world_x", "world_y", "world_z", "cell", "zone",
-                                   "max_err_deg"}) {
+        for (const char* column :
+             {"t", "head_x", "head_y", "head_z", "world_x", "world_y", "world_z", "cell", "zone", "max_err_deg"}) {
             SCOPED_TRACE(std::to_string(i) + " " + column);
             EXPECT_EQ(rowsA[i].at(column), rowsB[i].at(column));
         }
@@ -395,14 +410,16 @@ TEST(RunCli, DTrackSenderOverLoopbackDrivesTheHead) {
     // Port 0: the child binds a free port and names it on stderr before its first frame.
     CliProcess child({"run", "--scene", glb, "--display", (out / "lab.json").string(), "--tracker",
                       "dtrack:udp://127.0.0.1:0", "--frames", "120", "--nav", "none", "--out", out.string()});
-    const auto listening = child.waitForLine(std::regex("listening on 127\\.0\\.0\\.1:([0-9]+)"), std::chrono::seconds(120));
+    const auto listening =
+        child.waitForLine(std::regex("listening on 127\\.0\\.0\\.1:([0-9]+)"), std::chrono::seconds(120));
     ASSERT_TRUE(listening) << child.finish(std::chrono::seconds(1)).err;
     const int port = std::stoi((*listening)[1]);
     std::atomic<bool> stop{false};
     // Head (body 1) at (100, 1600, -200) mm at a tracker's 100 Hz until the run ends.
     std::thread sender([&] {
         for (int i = 0; !stop; ++i) {
-            input::sendUdp("127.0.0.1", port, "fr " + std::to_string(i) + "\n6d 1 [1 1.0][100 1600 -200 0 0 0][1 0 0 0 1 0 0 0 1]\n");
+            input::sendUdp("127.0.0.1", port,
+                           "fr " + std::to_string(i) + "\n6d 1 [1 1.0][100 1600 -200 0 0 0][1 0 0 0 1 0 0 0 1]\n");
             std::this_thread::sleep_for(std::chrono::milliseconds(10));  // the tracker's pace
         }
     });
@@ -426,8 +443,8 @@ TEST(RunCli, DemoWritesTheReportWithAllFourRuns) {
     ::setenv("CAVEWALL_CACHE", (out / "cache").c_str(), 1);
     ::unsetenv("DISPLAY");
     ::unsetenv("WAYLAND_DISPLAY");
-    const CliResult r = runCavewall({"demo", "--out", out.string(), "--frames", "6", "--resolution", "32",
-                                     "--triangles", "20000"});
+    const CliResult r =
+        runCavewall({"demo", "--out", out.string(), "--frames", "6", "--resolution", "32", "--triangles", "20000"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("speed-up"));
     // Smaller than cave4's own 1024 x 1024 only when asked, and then printed with the figures.

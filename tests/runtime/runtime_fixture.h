@@ -17,7 +17,7 @@ struct SmallPlant {
     std::filesystem::path sceneFile;
     scenes::Scene scene;
     scenes::SceneDescription description;
-    walls::WallSetup walls;          // planned with alpha 20°, zones >= 4 m, 2 texels/degree
+    walls::WallSetup walls;  // planned with alpha 20°, zones >= 4 m, 2 texels/degree
 };
 
 // Generated, planned and baked on first use (bakes with its own headless context).

@@ -17,7 +17,8 @@ scenes::Scene room() {
     scenes::Scene s;
     auto add = [&](glm::vec3 size, glm::dvec3 centre, scenes::Role role) {
         s.meshes.push_back(scenes::makeBox(size, glm::vec4(1.0f)));
-        scenes::addObject(s, static_cast<int>(s.meshes.size()) - 1, glm::translate(glm::dmat4(1.0), centre), "box", role);
+        scenes::addObject(s, static_cast<int>(s.meshes.size()) - 1, glm::translate(glm::dmat4(1.0), centre), "box",
+                          role);
     };
     add({10, 0.2f, 10}, {0, -0.1, 0}, scenes::Role::Structure);
     add({2, 0.3f, 10}, {3, 0.15, 0}, scenes::Role::Structure);
@@ -35,9 +36,9 @@ TEST(SceneQuery, FindsTheFloorBelowAndIgnoresContent) {
         std::optional<double> expected;
     };
     const Case cases[] = {
-        {"open floor", {0, 1.0, 0}, 5.0, 0.0},            // the floor's top face
-        {"on the step", {3, 1.0, 0}, 5.0, 0.3},           // the step's top is the highest floor below
-        {"below the step top", {3, 0.2, 0}, 5.0, 0.0},    // under the step's top: the floor beneath
+        {"open floor", {0, 1.0, 0}, 5.0, 0.0},          // the floor's top face
+        {"on the step", {3, 1.0, 0}, 5.0, 0.3},         // the step's top is the highest floor below
+        {"below the step top", {3, 0.2, 0}, 5.0, 0.0},  // under the step's top: the floor beneath
         {"too far to drop", {0, 3.0, 0}, 1.0, std::nullopt},
         {"content is no floor", {-2, 2.0, 0}, 5.0, 0.0},  // the content box's top (y = 1) is skipped
         {"outside the room", {20, 1.0, 0}, 5.0, std::nullopt},

@@ -51,9 +51,8 @@ TEST(ViewCli, BadWordsGiveClearErrors) {
 
 TEST(ViewCli, StartsInsideTheModelAtEyeHeightAndRendersAtTheResolutionAsked) {
     const fs::path out = outputDir("view-headless");
-    const CliResult r = runCavewall({"view", kRoom, "--headless", "--tracker", "sim:walk", "--nav", "none",
-                                     "--frames", "2", "--resolution", "96x54", "--save-frames", "all", "--out",
-                                     out.string()});
+    const CliResult r = runCavewall({"view", kRoom, "--headless", "--tracker", "sim:walk", "--nav", "none", "--frames",
+                                     "2", "--resolution", "96x54", "--save-frames", "all", "--out", out.string()});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("view: 2 frames on "));
     const CsvTable rows = readCsv(out / "frames.csv");
@@ -72,9 +71,9 @@ TEST(ViewCli, StartsInsideTheModelAtEyeHeightAndRendersAtTheResolutionAsked) {
 TEST(ViewCli, RunStartsAtTheOriginUnlessAskedAndViewAllStepsBack) {
     const auto firstEye = [](const std::string& start) {
         const fs::path out = outputDir("run-start-" + start);
-        const CliResult r = runCavewall({"run", "--scene", kRoom, "--display", "desktop", "--tracker", "sim:walk",
-                                         "--nav", "none", "--frames", "1", "--resolution", "32x18", "--start", start,
-                                         "--out", out.string()});
+        const CliResult r =
+            runCavewall({"run", "--scene", kRoom, "--display", "desktop", "--tracker", "sim:walk", "--nav", "none",
+                         "--frames", "1", "--resolution", "32x18", "--start", start, "--out", out.string()});
         EXPECT_EQ(r.exitCode, 0) << r.err;
         const CsvTable rows = readCsv(out / "frames.csv");
         return glm::dvec3(rows[0].number("world_x"), rows[0].number("world_y"), rows[0].number("world_z"));

@@ -26,8 +26,8 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 const std::string kRoom = std::string(CAVEWALL_REAL_SCENES) + "/OcclusionRoom/room.glb";
-constexpr int kSaveEvery = 5;                // frames between saved frames
-constexpr double kDegreesPerPixel = 0.15;    // view --help's mouse look
+constexpr int kSaveEvery = 5;              // frames between saved frames
+constexpr double kDegreesPerPixel = 0.15;  // view --help's mouse look
 
 // A desktop monitor drawn at 160 x 90 in a 640 x 360 window (the help page fits at scale 2).
 fs::path smallDesktop(const fs::path& folder) {
@@ -115,9 +115,7 @@ protected:
     std::string _window;
 };
 
-glm::dvec3 world(const CsvRow& row) {
-    return {row.number("world_x"), row.number("world_y"), row.number("world_z")};
-}
+glm::dvec3 world(const CsvRow& row) { return {row.number("world_x"), row.number("world_y"), row.number("world_z")}; }
 
 std::size_t distinctColours(const scenes::Image& image) {
     std::set<std::uint32_t> colours;
@@ -156,7 +154,8 @@ TEST_F(ViewWindow, KeysAndMouseMoveTheViewF1ShowsHelpAndEscapeTwiceQuits) {
     const double yaw = glm::radians(t.back().number("view_yaw_deg"));
     const long savedBefore = lastSaved(t);
     xdotool("keydown w");
-    t = waitFor(view, "a step forward", [&](const CsvTable& r) { return glm::distance(world(r.back()), before) > 0.2; });
+    t = waitFor(view, "a step forward",
+                [&](const CsvTable& r) { return glm::distance(world(r.back()), before) > 0.2; });
     xdotool("keyup w");
     const glm::dvec3 moved = world(t.back()) - before;
     EXPECT_NEAR(glm::distance(glm::normalize(moved), glm::dvec3(-std::sin(yaw), 0.0, -std::cos(yaw))), 0.0, 1e-6);
@@ -170,9 +169,8 @@ TEST_F(ViewWindow, KeysAndMouseMoveTheViewF1ShowsHelpAndEscapeTwiceQuits) {
     t = waitFrames(view, t, 3);  // the window has taken the press and captured the pointer
     xdotool("mousemove_relative -- 100 0 mouseup 1");
     const double turned = yawBefore - 100.0 * kDegreesPerPixel;
-    t = waitFor(view, "the turn", [&](const CsvTable& r) {
-        return std::abs(r.back().number("view_yaw_deg") - yawBefore) > 1.0;
-    });
+    t = waitFor(view, "the turn",
+                [&](const CsvTable& r) { return std::abs(r.back().number("view_yaw_deg") - yawBefore) > 1.0; });
     t = waitFrames(view, t, 3);  // and no more motion arrives
     EXPECT_NEAR(t.back().number("view_yaw_deg"), turned, 1e-3);
 

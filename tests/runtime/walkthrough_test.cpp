@@ -199,8 +199,8 @@ TEST_F(WalkthroughTest, PagingUnderATinyBudgetNeverLeavesAWallMissing) {
     const SmallPlant& scene = twoCells();
     const display::Display display = testDisplay(48);
     gl::WalkthroughOptions options;
-    options.textureBudgetMB = 1.0;        // about 4 of its 10 textures: constant eviction
-    options.uploadMBPerFrame = 0.001;     // one texture per frame at most
+    options.textureBudgetMB = 1.0;                         // about 4 of its 10 textures: constant eviction
+    options.uploadMBPerFrame = 0.001;                      // one texture per frame at most
     options.render.clearColor = {1.0f, 0.0f, 1.0f, 1.0f};  // magenta: nothing drawn
     GatedDecoder gate;
     options.decoder = [&gate](const std::filesystem::path& file) { return gate(file); };
@@ -228,8 +228,7 @@ TEST_F(WalkthroughTest, PagingUnderATinyBudgetNeverLeavesAWallMissing) {
         worstMissing = std::max(worstMissing, missingShare(r, full));
     }
     std::cout << frames << " frames, " << fallbacks << " wall fallbacks (" << previous
-              << " to the previous texture), worst share of the box missing "
-              << worstMissing << "\n";
+              << " to the previous texture), worst share of the box missing " << worstMissing << "\n";
     // The texture's angular error (<= 10 degrees) may move the box's edges by a few pixels;
     // a missing wall would lose all of it.
     EXPECT_LT(worstMissing, 0.1);

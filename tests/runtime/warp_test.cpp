@@ -221,7 +221,7 @@ TEST_F(WarpTest, AnEyeAtTheWallPlaneFallsBackToGeometryWithoutNaNOrBlackPixels) 
     for (walls::WallSide& side : walls.plan.sides) side.hasGeometry = false;
     struct Case {
         const char* name;
-        double distance;              // eye in front of the wall plane, metres
+        double distance;  // eye in front of the wall plane, metres
         walkthrough::Transition transition;
         int fallbacks;
     };

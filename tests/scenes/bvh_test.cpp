@@ -35,7 +35,11 @@ Bounds box(glm::dvec3 centre, double half) { return {centre - glm::dvec3(half), 
 TEST(Frustum, InFrontBehindBesideInsideAndFar) {
     const glm::dmat4 infinite = reversedZ(90.0, 1.0, 0.1, std::numeric_limits<double>::infinity());
     const glm::dmat4 finite = reversedZ(90.0, 1.0, 0.1, 100.0);
-    struct Case { const char* name; Bounds b; bool infiniteVisible, finiteVisible; };
+    struct Case {
+        const char* name;
+        Bounds b;
+        bool infiniteVisible, finiteVisible;
+    };
     const Case cases[] = {
         {"in front", box({0, 0, -5}, 0.5), true, true},
         {"behind the eye", box({0, 0, 5}, 0.5), false, false},

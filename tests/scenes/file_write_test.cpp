@@ -65,7 +65,8 @@ TEST(FileWrite, TruncatedImagesAreErrors) {
     Image noise{"noise", 128, 128, {}};
     std::uint32_t state = 1;
     for (int i = 0; i < 128 * 128 * 4; ++i)  // opaque noise: the PNG reader associates alpha
-        noise.rgba.push_back(i % 4 == 3 ? 255 : static_cast<std::uint8_t>((state = state * 1664525u + 1013904223u) >> 24));
+        noise.rgba.push_back(i % 4 == 3 ? 255
+                                        : static_cast<std::uint8_t>((state = state * 1664525u + 1013904223u) >> 24));
     {
         const FileSizeLimit limit(8192);  // the PNG of 48 KiB of noise is about 48 KiB
         EXPECT_THAT([&] { writeImage(dir / "frame.png", noise); }, ThrowsMessage<Error>(HasSubstr("frame.png")));

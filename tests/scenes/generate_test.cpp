@@ -46,7 +46,7 @@ TEST(GeneratePlant, DefaultHasTwoMillionTriangles24CellsAndSharedMeshes) {
     std::size_t stored = 0;
     for (const Mesh& m : g.scene.meshes) stored += m.triangleCount();
     EXPECT_LT(stored * 5, g.scene.triangleCount());  // instancing: far fewer stored than drawn
-    EXPECT_EQ(g.description.cells.size(), 24u);       // rows N, M, S of 8 cells, 10 m wide
+    EXPECT_EQ(g.description.cells.size(), 24u);      // rows N, M, S of 8 cells, 10 m wide
     EXPECT_EQ(g.description.walls.size(), 37u);
     for (const VirtualWall& w : g.description.walls) EXPECT_EQ(w.kind, WallKind::Virtual);
     const Bounds b = g.scene.bounds();
@@ -132,7 +132,7 @@ TEST(GeneratePlant, LargerTargetsMakeALongerHallWithCellsOfTheSameWeight) {
     const GeneratedScene small = generatePlant({1, 2'000'000});
     const GeneratedScene large = generatePlant({1, 6'000'000});
     EXPECT_GE(large.scene.triangleCount(), 6'000'000u);
-    EXPECT_EQ(large.description.cells.size(), 3u * 24u);              // 24 bays of 3 cells
+    EXPECT_EQ(large.description.cells.size(), 3u * 24u);             // 24 bays of 3 cells
     EXPECT_EQ(large.description.walls.size(), 3u * 23u + 2u * 24u);  // 69 cross walls, 48 along
     EXPECT_NEAR(large.scene.bounds().size().x, 3.0 * small.scene.bounds().size().x, 1.0);
     const double perCellSmall = double(small.scene.triangleCount()) / double(small.description.cells.size());
@@ -179,7 +179,11 @@ TEST(Generate, SameSeedSameBytesOtherSeedOtherBytes) {
 }
 
 TEST(Generate, WrittenScenesValidateAndLoadBackWithTheirCells) {
-    struct Case { const char* name; GeneratedScene (*make)(const GenerateOptions&); std::size_t cells, walls; };
+    struct Case {
+        const char* name;
+        GeneratedScene (*make)(const GenerateOptions&);
+        std::size_t cells, walls;
+    };
     const Case cases[] = {{"plant", generatePlant, 24, 37}, {"house", generateHouse, 6, 6}};
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);

@@ -64,13 +64,17 @@ TEST(GlbWriter, WhatIsWrittenLoadsBackUnchanged) {
 TEST(GlbWriter, ContainerHeaderAndChunksAreWellFormed) {
     const std::vector<std::uint8_t> b = glbBytes(sampleScene());
     ASSERT_GE(b.size(), 28u);
-    auto u32 = [&](std::size_t at) { std::uint32_t v; std::memcpy(&v, b.data() + at, 4); return v; };
+    auto u32 = [&](std::size_t at) {
+        std::uint32_t v;
+        std::memcpy(&v, b.data() + at, 4);
+        return v;
+    };
     EXPECT_EQ(std::string(b.begin(), b.begin() + 4), "glTF");
-    EXPECT_EQ(u32(4), 2u);         // container version 2
-    EXPECT_EQ(u32(8), b.size());   // total length
+    EXPECT_EQ(u32(4), 2u);        // container version 2
+    EXPECT_EQ(u32(8), b.size());  // total length
     const std::uint32_t jsonLength = u32(12);
-    EXPECT_EQ(u32(16), 0x4E4F534Au);  // "JSON"
-    EXPECT_EQ(jsonLength % 4, 0u);    // chunks are 4-byte aligned
+    EXPECT_EQ(u32(16), 0x4E4F534Au);                   // "JSON"
+    EXPECT_EQ(jsonLength % 4, 0u);                     // chunks are 4-byte aligned
     EXPECT_EQ(u32(20 + jsonLength + 4), 0x004E4942u);  // "BIN\0"
     EXPECT_EQ(20 + jsonLength + 8 + u32(20 + jsonLength), b.size());
     const auto json = nlohmann::json::parse(b.begin() + 20, b.begin() + 20 + jsonLength);

@@ -20,8 +20,8 @@ inline std::string base64(const std::vector<std::uint8_t>& data) {
     static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     std::string out;
     for (std::size_t i = 0; i < data.size(); i += 3) {
-        const std::uint32_t n = (data[i] << 16) | ((i + 1 < data.size() ? data[i + 1] : 0) << 8) |
-                                (i + 2 < data.size() ? data[i + 2] : 0);
+        const std::uint32_t n =
+            (data[i] << 16) | ((i + 1 < data.size() ? data[i + 1] : 0) << 8) | (i + 2 < data.size() ? data[i + 2] : 0);
         out += k[(n >> 18) & 63];
         out += k[(n >> 12) & 63];
         out += i + 1 < data.size() ? k[(n >> 6) & 63] : '=';
@@ -40,8 +40,10 @@ inline std::filesystem::path testOutput(const std::string& sub) {
 
 struct GltfBuilder {
     std::vector<std::uint8_t> bin;
-    nlohmann::json j = {{"asset", {{"version", "2.0"}}}, {"bufferViews", nlohmann::json::array()},
-                        {"accessors", nlohmann::json::array()}, {"meshes", nlohmann::json::array()},
+    nlohmann::json j = {{"asset", {{"version", "2.0"}}},
+                        {"bufferViews", nlohmann::json::array()},
+                        {"accessors", nlohmann::json::array()},
+                        {"meshes", nlohmann::json::array()},
                         {"nodes", nlohmann::json::array()}};
 
     int addView(const void* data, std::size_t bytes, int stride = 0) {
@@ -85,9 +87,11 @@ struct GltfBuilder {
         std::vector<bool> child(out["nodes"].size(), false);
         for (auto& n : out["nodes"])
             if (n.contains("children"))
-                for (auto& c : n["children"]) if (c.get<std::size_t>() < child.size()) child[c.get<std::size_t>()] = true;
+                for (auto& c : n["children"])
+                    if (c.get<std::size_t>() < child.size()) child[c.get<std::size_t>()] = true;
         nlohmann::json roots = nlohmann::json::array();
-        for (std::size_t i = 0; i < child.size(); ++i) if (!child[i]) roots.push_back(i);
+        for (std::size_t i = 0; i < child.size(); ++i)
+            if (!child[i]) roots.push_back(i);
         if (!out.contains("scenes")) out["scenes"] = {{{"nodes", roots}}};
         const std::string uri = embed ? "data:application/octet-stream;base64," + base64(bin) : binUri;
         if (!out.contains("buffers")) out["buffers"] = {{{"byteLength", bin.size()}, {"uri", uri}}};

@@ -14,10 +14,10 @@
 namespace cavewall::scenes {
 namespace {
 
-using ::testing::HasSubstr;
-using ::testing::ThrowsMessage;
 using testing::GltfBuilder;
+using ::testing::HasSubstr;
 using testing::testOutput;
+using ::testing::ThrowsMessage;
 using testing::triangleFile;
 
 void put32(std::string& s, std::size_t at, std::uint32_t v) { std::memcpy(s.data() + at, &v, 4); }
@@ -56,25 +56,40 @@ struct Case {
 TEST(GltfHostile, SizesFromTheFileAreCheckedWithoutOverflow) {
     const Case cases[] = {
         // offset + stride * (count - 1) wrapped around to a small number before (a SIGSEGV).
-        {"byteOffset near 2^64", [](GltfBuilder& b) {
-             b.j["accessors"][0]["byteOffset"] = 18446744073457893632ull; b.j["accessors"][0]["count"] = 1000000;
-             b.j["bufferViews"][0]["byteStride"] = 252; },
+        {"byteOffset near 2^64",
+         [](GltfBuilder& b) {
+             b.j["accessors"][0]["byteOffset"] = 18446744073457893632ull;
+             b.j["accessors"][0]["count"] = 1000000;
+             b.j["bufferViews"][0]["byteStride"] = 252;
+         },
          "broken.gltf: accessors[0]: 1000000 elements of 12 bytes, 252 apart from byte 18446744073457893632, need more "
          "than 2^64 bytes of bufferView 0 (expected at most 36)"},
         // 2^31 VEC3 doubles would be 48 GiB; the range check comes before the allocation.
         {"count 2^31", [](GltfBuilder& b) { b.j["accessors"][0]["count"] = 2147483648ull; },
          "broken.gltf: accessors[0]: 2147483648 elements of 12 bytes, 12 apart from byte 0, need 25769803776 bytes of "
          "bufferView 0 (expected at most 36)"},
-        {"count 2^31 without a view", [](GltfBuilder& b) {
-             b.j["accessors"][0].erase("bufferView"); b.j["accessors"][0]["count"] = 2147483648ull; },
+        {"count 2^31 without a view",
+         [](GltfBuilder& b) {
+             b.j["accessors"][0].erase("bufferView");
+             b.j["accessors"][0]["count"] = 2147483648ull;
+         },
          "broken.gltf: accessors[0]: count 2147483648 without a bufferView (expected at most 16777216)"},
-        {"sparse count -5", [](GltfBuilder& b) {
-             b.j["accessors"][0]["sparse"] = {{"count", -5}, {"indices", {{"bufferView", 0}, {"componentType", 5125}}},
-                                               {"values", {{"bufferView", 0}}}}; },
+        {"sparse count -5",
+         [](GltfBuilder& b) {
+             b.j["accessors"][0]["sparse"] = {{"count", -5},
+                                              {"indices", {{"bufferView", 0}, {"componentType", 5125}}},
+                                              {"values", {{"bufferView", 0}}}};
+         },
          "broken.gltf: accessors[0].sparse.count: expected at least 1 sparse value, got -5"},
-        {"buffer byteLength 0", [](GltfBuilder& b) { b.j["buffers"] = {{{"byteLength", 0}}}; },
+        {"buffer byteLength 0",
+         [](GltfBuilder& b) {
+             b.j["buffers"] = {{{"byteLength", 0}}};
+         },
          "broken.gltf: not a valid glTF file"},
-        {"buffer URI '.'", [](GltfBuilder& b) { b.j["buffers"] = {{{"byteLength", 36}, {"uri", "."}}}; },
+        {"buffer URI '.'",
+         [](GltfBuilder& b) {
+             b.j["buffers"] = {{{"byteLength", 36}, {"uri", "."}}};
+         },
          "is not a regular file (expected a buffer or image file)"},
     };
     for (const Case& c : cases) {
@@ -116,13 +131,18 @@ struct GlbCase {
 
 TEST(GltfHostile, GlbHeadersSayWhichChunkAndOffset) {
     const std::string good = glb(triangleFile());
-    const std::uint32_t jsonLength = [&] { std::uint32_t v; std::memcpy(&v, good.data() + 12, 4); return v; }();
+    const std::uint32_t jsonLength = [&] {
+        std::uint32_t v;
+        std::memcpy(&v, good.data() + 12, 4);
+        return v;
+    }();
     const std::size_t binAt = 20 + jsonLength;
     const std::string at = std::to_string(binAt), at4 = std::to_string(binAt + 4);
     const GlbCase cases[] = {
         {"short header", [](std::string& s) { s.resize(7); },
          "GLB header at byte 0: the file is truncated (expected 12 bytes of header, got 7)"},
-        {"version 1", [](std::string& s) { put32(s, 4, 1); }, "GLB header at byte 4: unsupported version (expected 2, got 1)"},
+        {"version 1", [](std::string& s) { put32(s, 4, 1); },
+         "GLB header at byte 4: unsupported version (expected 2, got 1)"},
         {"truncated file", [](std::string& s) { s.resize(s.size() - 10); },
          "GLB header at byte 8: total length is " + std::to_string(good.size()) + " but the file has " +
              std::to_string(good.size() - 10) + " bytes (expected at most " + std::to_string(good.size() - 10) +
@@ -138,10 +158,15 @@ TEST(GltfHostile, GlbHeadersSayWhichChunkAndOffset) {
         {"BIN length odd", [binAt](std::string& s) { put32(s, binAt, 3); },
          "GLB chunk 1 (BIN) at byte " + at + ": bad length (expected a multiple of 4 of at least 4, got 3)"},
         // tinygltf compared the BIN length without its 8-byte header: 8 bytes past the end.
-        {"BIN length 8 too long", [binAt](std::string& s) {
-             std::uint32_t n; std::memcpy(&n, s.data() + binAt, 4); put32(s, binAt, n + 8); },
-         "GLB chunk 1 (BIN) at byte " + at + ": length 44 runs past the end (expected at most 36 bytes after the "
-         "chunk header)"},
+        {"BIN length 8 too long",
+         [binAt](std::string& s) {
+             std::uint32_t n;
+             std::memcpy(&n, s.data() + binAt, 4);
+             put32(s, binAt, n + 8);
+         },
+         "GLB chunk 1 (BIN) at byte " + at +
+             ": length 44 runs past the end (expected at most 36 bytes after the "
+             "chunk header)"},
     };
     for (const GlbCase& c : cases) {
         SCOPED_TRACE(c.name);
@@ -186,7 +211,8 @@ TEST(GltfHostile, NonFiniteNormalsAreRegeneratedWithAWarning) {
     GltfBuilder b;
     const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
     const int nrm = b.addFloats({0, 0, 1, nan, nan, nan, 0, 0, 1}, "VEC3", 3);
-    b.j["meshes"].push_back({{"name", "bracket"}, {"primitives", {{{"attributes", {{"POSITION", pos}, {"NORMAL", nrm}}}}}}});
+    b.j["meshes"].push_back(
+        {{"name", "bracket"}, {"primitives", {{{"attributes", {{"POSITION", pos}, {"NORMAL", nrm}}}}}}});
     b.addNode({{"mesh", 0}});
     const Scene s = loadGltf(writeBytes("nan_normals.gltf", b.text()));
     ASSERT_EQ(s.meshes.size(), 1u);

@@ -62,9 +62,9 @@ TEST(GltfLoader, IndexWidths8And16And32BitGiveTheSameTriangles) {
         GltfBuilder b;
         const int pos = b.addFloats({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, "VEC3", 3);
         const std::vector<std::uint32_t> quad = {0, 1, 2, 0, 2, 3};
-        int idx = width == 1 ? b.addIndices(std::vector<std::uint8_t>(quad.begin(), quad.end()))
-                : width == 2 ? b.addIndices(std::vector<std::uint16_t>(quad.begin(), quad.end()))
-                             : b.addIndices(quad);
+        int idx = width == 1   ? b.addIndices(std::vector<std::uint8_t>(quad.begin(), quad.end()))
+                  : width == 2 ? b.addIndices(std::vector<std::uint16_t>(quad.begin(), quad.end()))
+                               : b.addIndices(quad);
         b.addNode({{"mesh", b.addMesh({{"attributes", {{"POSITION", pos}}}, {"indices", idx}})}});
         const Scene s = loadGltf(b.write("widths.gltf"));
         EXPECT_EQ(s.meshes[0].indices, quad);
@@ -100,8 +100,9 @@ TEST(GltfLoader, PointsAndLinesAreSkippedWithAWarning) {
     const Scene s = loadGltf(b.write("lines.gltf"));
     EXPECT_EQ(s.meshes.size(), 1u);  // only the triangle
     ASSERT_EQ(s.warnings.size(), 1u);
-    EXPECT_EQ(s.warnings[0], "scene 'lines.gltf': ignoring primitive 1 of mesh 0 because it has mode LINES "
-                             "(only triangles, strips and fans are drawn)");
+    EXPECT_EQ(s.warnings[0],
+              "scene 'lines.gltf': ignoring primitive 1 of mesh 0 because it has mode LINES "
+              "(only triangles, strips and fans are drawn)");
 }
 
 TEST(GltfLoader, LeftoverIndicesAreDroppedWithAWarning) {
@@ -110,14 +111,19 @@ TEST(GltfLoader, LeftoverIndicesAreDroppedWithAWarning) {
     const Scene s = loadGltf(b.write("leftover.gltf"));
     EXPECT_EQ(s.meshes[0].indices, (std::vector<std::uint32_t>{0, 1, 2}));
     ASSERT_EQ(s.warnings.size(), 1u);
-    EXPECT_EQ(s.warnings[0], "scene 'leftover.gltf': primitive 0 of mesh 0 has 5 indices, not a multiple of 3; "
-                             "dropping the last 2");
+    EXPECT_EQ(s.warnings[0],
+              "scene 'leftover.gltf': primitive 0 of mesh 0 has 5 indices, not a multiple of 3; "
+              "dropping the last 2");
 }
 
 TEST(GltfLoader, InterleavedNormalizedAttributesAreDecoded) {
     // One vertex = position (3 floats) + unsigned-byte normalized RGBA colour + signed-short
     // normalized normal (padded to 4 shorts): stride 12 + 4 + 8 = 24 bytes.
-    struct Vertex { float p[3]; std::uint8_t c[4]; std::int16_t n[4]; };
+    struct Vertex {
+        float p[3];
+        std::uint8_t c[4];
+        std::int16_t n[4];
+    };
     const Vertex v[3] = {{{0, 0, 0}, {255, 0, 51, 255}, {0, 0, 32767, 0}},
                          {{1, 0, 0}, {0, 255, 0, 255}, {0, 0, 32767, 0}},
                          {{0, 1, 0}, {0, 0, 255, 0}, {0, 0, -32768, 0}}};
@@ -129,10 +135,10 @@ TEST(GltfLoader, InterleavedNormalizedAttributesAreDecoded) {
     b.addNode({{"mesh", b.addMesh({{"attributes", {{"POSITION", pos}, {"COLOR_0", col}, {"NORMAL", nrm}}}})}});
     const Mesh m = loadGltf(b.write("interleaved.gltf")).meshes[0];
     EXPECT_EQ(m.positions[2], glm::vec3(0, 1, 0));
-    EXPECT_NEAR(m.colors[0].b, 0.2f, 1e-6f);   // 51 / 255
+    EXPECT_NEAR(m.colors[0].b, 0.2f, 1e-6f);  // 51 / 255
     EXPECT_EQ(m.colors[2].a, 0.0f);
-    EXPECT_EQ(m.normals[0], glm::vec3(0, 0, 1));  // 32767 / 32767
-    EXPECT_EQ(m.normals[2], glm::vec3(0, 0, -1)); // -32768 / 32767 clamps to -1
+    EXPECT_EQ(m.normals[0], glm::vec3(0, 0, 1));   // 32767 / 32767
+    EXPECT_EQ(m.normals[2], glm::vec3(0, 0, -1));  // -32768 / 32767 clamps to -1
 }
 
 TEST(GltfLoader, SparseAccessorWithoutBufferViewStartsFromZeros) {
@@ -141,8 +147,8 @@ TEST(GltfLoader, SparseAccessorWithoutBufferViewStartsFromZeros) {
     const std::vector<float> values = {0, 5, 0};
     const int iv = b.addView(which.data(), 2), vv = b.addView(values.data(), 12);
     const int pos = b.addAccessor(-1, 5126, 3, "VEC3");
-    b.j["accessors"][pos]["sparse"] = {{"count", 1}, {"indices", {{"bufferView", iv}, {"componentType", 5123}}},
-                                       {"values", {{"bufferView", vv}}}};
+    b.j["accessors"][pos]["sparse"] = {
+        {"count", 1}, {"indices", {{"bufferView", iv}, {"componentType", 5123}}}, {"values", {{"bufferView", vv}}}};
     b.addNode({{"mesh", b.addMesh({{"attributes", {{"POSITION", pos}}}})}});
     const Mesh m = loadGltf(b.write("sparse.gltf")).meshes[0];
     EXPECT_EQ(m.positions[0], glm::vec3(0));
@@ -180,7 +186,9 @@ TEST(GltfLoader, AreaWeightedNormalsFavourTheLargerFace) {
 TEST(GltfLoader, SharedMeshMatrixAndTrsAndNegativeDeterminant) {
     GltfBuilder b = triangleFile();
     // Node 0 (triangleFile) plus: a TRS node, a matrix node, and a mirrored parent of a mirrored child.
-    b.addNode({{"mesh", 0}, {"translation", {1, 2, 3}}, {"rotation", {0, 0.7071067811865476, 0, 0.7071067811865476}},
+    b.addNode({{"mesh", 0},
+               {"translation", {1, 2, 3}},
+               {"rotation", {0, 0.7071067811865476, 0, 0.7071067811865476}},
                {"scale", {2, 2, 2}}});
     b.addNode({{"mesh", 0}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1, 0, 5, 0, 0, 1}}});
     const int child = b.addNode({{"mesh", 0}, {"scale", {-1, 1, 1}}});
@@ -191,7 +199,9 @@ TEST(GltfLoader, SharedMeshMatrixAndTrsAndNegativeDeterminant) {
     for (const Object& o : s.objects) EXPECT_EQ(o.mesh, 0);
     // TRS = T * R * S: vertex (1,0,0) scaled to (2,0,0), turned 90° about +Y to (0,0,-2), moved by (1,2,3).
     const glm::dvec4 p = s.objects[1].worldFromModel * glm::dvec4(1, 0, 0, 1);
-    EXPECT_NEAR(p.x, 1.0, 1e-9); EXPECT_NEAR(p.y, 2.0, 1e-9); EXPECT_NEAR(p.z, 1.0, 1e-9);
+    EXPECT_NEAR(p.x, 1.0, 1e-9);
+    EXPECT_NEAR(p.y, 2.0, 1e-9);
+    EXPECT_NEAR(p.z, 1.0, 1e-9);
     // The matrix is column-major: translation (5, 0, 0) in elements 12..14, z mirrored.
     EXPECT_EQ(s.objects[2].worldFromModel[3], glm::dvec4(5, 0, 0, 1));
     EXPECT_TRUE(s.objects[2].flipWinding);
@@ -219,12 +229,17 @@ TEST(GltfLoader, MaterialsTexturesAndTextureTransform) {
     b.j["extensionsRequired"] = {"KHR_texture_transform", "KHR_materials_variants"};
     b.j["materials"] = {
         {{"alphaMode", "MASK"}, {"alphaCutoff", 0.25}},
-        {{"name", "tex"}, {"doubleSided", true}, {"alphaMode", "BLEND"},
-         {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.25, 1, 0.75}},
-                                   {"baseColorTexture", {{"index", 0}, {"texCoord", 0},
-                                    {"extensions", {{"KHR_texture_transform",
-                                        {{"offset", {0.5, 0}}, {"rotation", 1.5707963267948966},
-                                         {"scale", {2, 3}}, {"texCoord", 1}}}}}}}}}}};
+        {{"name", "tex"},
+         {"doubleSided", true},
+         {"alphaMode", "BLEND"},
+         {"pbrMetallicRoughness",
+          {{"baseColorFactor", {0.5, 0.25, 1, 0.75}},
+           {"baseColorTexture",
+            {{"index", 0},
+             {"texCoord", 0},
+             {"extensions",
+              {{"KHR_texture_transform",
+                {{"offset", {0.5, 0}}, {"rotation", 1.5707963267948966}, {"scale", {2, 3}}, {"texCoord", 1}}}}}}}}}}};
     const Scene s = loadGltf(b.write("material.gltf"));
     ASSERT_EQ(s.materials.size(), 2u);
     EXPECT_EQ(s.materials[0].alphaMode, AlphaMode::Mask);
@@ -255,8 +270,10 @@ TEST(GltfLoader, TextureTransformMatchesTheSpecExample) {
     const glm::mat3 m = textureTransform({0, 1}, 1.5707963267948966f, {0.5f, 0.5f});
     for (glm::vec2 uv : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(0, 1), glm::vec2(1, 1), glm::vec2(0.3f, 0.7f)}) {
         const glm::vec3 t = m * glm::vec3(uv, 1);
-        EXPECT_GE(t.x, -1e-6f); EXPECT_LE(t.x, 0.5f + 1e-6f);
-        EXPECT_GE(t.y, 0.5f - 1e-6f); EXPECT_LE(t.y, 1.0f + 1e-6f);
+        EXPECT_GE(t.x, -1e-6f);
+        EXPECT_LE(t.x, 0.5f + 1e-6f);
+        EXPECT_GE(t.y, 0.5f - 1e-6f);
+        EXPECT_LE(t.y, 1.0f + 1e-6f);
     }
     // Corner (1, 0) goes to (0, 0.5): scaled to (0.5, 0), turned to (0, -0.5), moved down by 1.
     const glm::vec3 corner = m * glm::vec3(1, 0, 1);
@@ -267,8 +284,8 @@ TEST(GltfLoader, TextureTransformMatchesTheSpecExample) {
 TEST(GltfLoader, UrisWithSpacesAndPercentEncodingResolve) {
     GltfBuilder b = triangleFile();
     const auto dir = testOutput("gltf");
-    std::ofstream(dir / "my data.bin", std::ios::binary).write(reinterpret_cast<const char*>(b.bin.data()),
-                                                               static_cast<std::streamsize>(b.bin.size()));
+    std::ofstream(dir / "my data.bin", std::ios::binary)
+        .write(reinterpret_cast<const char*>(b.bin.data()), static_cast<std::streamsize>(b.bin.size()));
     for (const char* uri : {"my data.bin", "my%20data.bin"}) {
         SCOPED_TRACE(uri);
         const Scene s = loadGltf(b.write("spaces.gltf", false, uri));

@@ -69,16 +69,27 @@ TEST(LodChoice, HandMadeCases) {
         {"infinite pixels per unit", {{&a, kInf, 1}}, 100.0, 0, {0}, 100.0, 1000, false},
         {"infinite pixels per unit under a budget", {{&a, kInf, 1}}, 0.5, 10, {0}, 0.5, 1000, true},
         // 1200 triangles at 0.3 px; 0.5 px gives 400 + 200 = 600, which fits exactly.
-        {"budget raises the tolerance to the first fitting breakpoint", {{&a, 64, 1}, {&b, 64, 1}}, 0.3, 600,
-         {1, 1}, 0.5, 600, false},
+        {"budget raises the tolerance to the first fitting breakpoint",
+         {{&a, 64, 1}, {&b, 64, 1}},
+         0.3,
+         600,
+         {1, 1},
+         0.5,
+         600,
+         false},
         // 600 does not fit 599; the next breakpoint, 1 px (B's level 2), gives 450.
-        {"one triangle less needs the next breakpoint", {{&a, 64, 1}, {&b, 64, 1}}, 0.3, 599,
-         {1, 2}, 1.0, 450, false},
+        {"one triangle less needs the next breakpoint", {{&a, 64, 1}, {&b, 64, 1}}, 0.3, 599, {1, 2}, 1.0, 450, false},
         {"budget already met: the tolerance stays", {{&a, 64, 1}, {&b, 64, 1}}, 0.3, 1200, {0, 1}, 0.3, 1200, false},
         // Coarsest everywhere is 20 + 50 + 12 = 82 triangles, the largest breakpoint A's 8 px;
         // with B's eye inside, 20 + 500 = 520.
-        {"impossible budget: coarsest levels, flagged", {{&a, 64, 1}, {&b, 64, 1}, {&box, 64, 1}}, 0.3, 81,
-         {3, 2, 0}, 8.0, 82, true},
+        {"impossible budget: coarsest levels, flagged",
+         {{&a, 64, 1}, {&b, 64, 1}, {&box, 64, 1}},
+         0.3,
+         81,
+         {3, 2, 0},
+         8.0,
+         82,
+         true},
         {"impossible budget with the eye inside one", {{&a, 64, 1}, {&b, kInf, 1}}, 0.3, 100, {3, 0}, 8.0, 520, true},
         {"no candidates", {}, 1.0, 100, {}, 1.0, 0, false},
     };
@@ -181,8 +192,8 @@ TEST(LodChoice, BudgetPicksTheSmallestFittingBreakpointByBruteForce) {
             rng.chance(0.15) && least > 1 ? 1 + below(least - 1) : least + below(most - least + 1);
         const LodChoice choice = chooseLevels(candidates, tolerance, budget);
         expectConsistent(candidates, choice);
-        const auto fit = std::find_if(steps.begin(), steps.end(),
-                                      [&](double t) { return trianglesAt(candidates, t) <= budget; });
+        const auto fit =
+            std::find_if(steps.begin(), steps.end(), [&](double t) { return trianglesAt(candidates, t) <= budget; });
         if (fit == steps.end()) {
             ++impossible;
             EXPECT_TRUE(choice.overBudget) << "budget " << budget << ", coarsest " << least;

@@ -144,9 +144,9 @@ TEST(MeshLod, NoLevelExceedsTheMaximumRelativeError) {
             const MeshLod lod = buildMeshLod(mesh, options);
             const double limit = options.maxRelativeError * largestExtent(mesh);
             for (std::size_t l = 1; l < lod.levels.size(); ++l)
-                EXPECT_LE(lod.levels[l].error, limit) << "level " << l << " of " << lod.levels.size() << " ("
-                                                      << lod.triangles(static_cast<int>(l)) << " triangles): error "
-                                                      << lod.levels[l].error << ", extent " << largestExtent(mesh);
+                EXPECT_LE(lod.levels[l].error, limit)
+                    << "level " << l << " of " << lod.levels.size() << " (" << lod.triangles(static_cast<int>(l))
+                    << " triangles): error " << lod.levels[l].error << ", extent " << largestExtent(mesh);
         }
     }
 }
@@ -200,9 +200,9 @@ TEST(MeshLod, StoredErrorsAreWithinOnePercentOfDenseSampling) {
             const double dense = sampledHausdorffDistance(mesh, mesh.indices, levelIndices(lod, l), 8);
             EXPECT_GT(dense, 0.0) << "level " << l << " should differ from the full mesh";
             const double stored = lod.levels[l].error;
-            EXPECT_LE(dense, 1.01 * stored) << "level " << l << " (" << lod.triangles(static_cast<int>(l))
-                                            << " triangles): stored " << stored << ", dense sampling " << dense
-                                            << ", ratio " << dense / stored;
+            EXPECT_LE(dense, 1.01 * stored)
+                << "level " << l << " (" << lod.triangles(static_cast<int>(l)) << " triangles): stored " << stored
+                << ", dense sampling " << dense << ", ratio " << dense / stored;
             const double sampled = sampledHausdorffDistance(mesh, mesh.indices, levelIndices(lod, l));
             EXPECT_LE(sampled, stored) << "level " << l << ": the stored error is at least the sampled one";
             EXPECT_LE(dense, 1.01 * sampled) << "level " << l << ": header sampling " << sampled << ", dense " << dense;

@@ -134,8 +134,7 @@ TEST(MeshWeld, FlatGridWeldsToItsLatticePoints) {
 
 TEST(MeshWeld, TrianglesKeepTheirCornersAndAttributes) {
     const WeldTolerance tol;
-    const Mesh meshes[] = {makeCylinder(0.3f, 1.5f, 48, kGrey), makeBox({1, 2, 3}, kGrey),
-                           makeMachineTool(0, 4)};
+    const Mesh meshes[] = {makeCylinder(0.3f, 1.5f, 48, kGrey), makeBox({1, 2, 3}, kGrey), makeMachineTool(0, 4)};
     for (const Mesh& original : meshes) {
         SCOPED_TRACE(original.name);
         Mesh m = original;
@@ -188,8 +187,8 @@ TEST(MeshWeld, SeamVerticesStaySeparateWithBitIdenticalPositions) {
             if (chebyshev(m.positions[i], m.positions[j]) > tol) continue;
             ++pairs;
             EXPECT_TRUE(bitIdentical(m.positions[i], m.positions[j])) << "vertices " << i << " and " << j;
-            EXPECT_GT(chebyshev(m.normals[i], m.normals[j]), 0.5) << "vertices " << i << " and " << j
-                                                                  << " have the same normal but were not merged";
+            EXPECT_GT(chebyshev(m.normals[i], m.normals[j]), 0.5)
+                << "vertices " << i << " and " << j << " have the same normal but were not merged";
         }
     EXPECT_EQ(pairs, 2u * n);  // one side/cap pair per rim point
 
@@ -208,7 +207,11 @@ TEST(MeshWeld, MergesWithinTheToleranceAndNotBeyond) {
     // Two triangles inside the unit cube, extent 1 (so the tolerance is 1e-6; 4 ulps of 1 are
     // only 4.8e-7), the second's first corner offset from the first's first corner (the origin)
     // by `offset`; same normal and colour.
-    struct Case { const char* name; glm::vec3 offset; std::size_t vertices; };
+    struct Case {
+        const char* name;
+        glm::vec3 offset;
+        std::size_t vertices;
+    };
     const float t = 1e-6f;
     const Case cases[] = {
         {"0.5x along x", {0.5f * t, 0, 0}, 5},
@@ -219,8 +222,8 @@ TEST(MeshWeld, MergesWithinTheToleranceAndNotBeyond) {
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
-        Mesh m = soup({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}, {{c.offset, {1, 1, 1}, {0, 1, 1}}}},
-                      {{0, 0, 1}, {0, 0, 1}});
+        Mesh m =
+            soup({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}, {{c.offset, {1, 1, 1}, {0, 1, 1}}}}, {{0, 0, 1}, {0, 0, 1}});
         const Mesh original = m;
         const WeldResult r = weldVertices(m);
         EXPECT_EQ(r.verticesAfter, c.vertices);
@@ -289,7 +292,11 @@ TEST(MeshOptimize, KeepsTrianglesAndLowersCacheMisses) {
     //   cylinder 256: soup 3, welded 1.129, optimised 1.033; least possible 1026 / 1024 = 1.002
     //     (a long ring of quads and two fans: almost every vertex serves only 2 triangles).
     // The bounds sit a little above the measurements, far below the soup's 3.
-    struct Case { const char* name; Mesh mesh; double maxAcmr; };
+    struct Case {
+        const char* name;
+        Mesh mesh;
+        double maxAcmr;
+    };
     const Case cases[] = {
         {"grid 32 x 32", deindexed(flatGrid(32)), 0.7},
         {"cylinder 256", deindexed(makeCylinder(1.0f, 2.0f, 256, kGrey)), 1.1},

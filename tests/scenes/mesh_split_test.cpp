@@ -29,7 +29,9 @@ Mesh floorGrid(int n, const std::string& name) {
         }
     auto v = [&](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
     for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) m.indices.insert(m.indices.end(), {v(i, j), v(i, j + 1), v(i + 1, j + 1), v(i, j), v(i + 1, j + 1), v(i + 1, j)});
+        for (int i = 0; i < n; ++i)
+            m.indices.insert(m.indices.end(),
+                             {v(i, j), v(i, j + 1), v(i + 1, j + 1), v(i, j), v(i + 1, j + 1), v(i + 1, j)});
     return m;
 }
 
@@ -110,11 +112,11 @@ TEST(MeshSplit, LeavesSmallObjectsSharedMeshesOutsideTheRangeAndUnusedMeshesAlon
     EXPECT_EQ(stats.objectsCut, 1);
     ASSERT_EQ(s.objects.size(), 2u + 9u);
     EXPECT_EQ(s.objects[0].name, "outside");
-    EXPECT_EQ(s.meshes[s.objects[0].mesh].name, "big");    // still whole
+    EXPECT_EQ(s.meshes[s.objects[0].mesh].name, "big");  // still whole
     EXPECT_EQ(s.meshes[s.objects[0].mesh].triangleCount(), 200u);
-    EXPECT_EQ(s.objects[2].name, "small");                 // order kept: chunks after the range
+    EXPECT_EQ(s.objects[2].name, "small");  // order kept: chunks after the range
     EXPECT_EQ(s.meshes[s.objects[2].mesh].name, "small");
-    EXPECT_EQ(s.meshes.size(), 3u + 9u);                   // nothing removed: mesh 0 still used
+    EXPECT_EQ(s.meshes.size(), 3u + 9u);  // nothing removed: mesh 0 still used
     EXPECT_EQ(s.meshes[2].name, "unused");
 }
 
@@ -124,7 +126,7 @@ TEST(MeshSplit, CutsOnlyObjectsOfTheRoleAsked) {
     addObject(s, 1, glm::translate(glm::dmat4(1.0), {20, 0, 0}), "slab", Role::Content);
     EXPECT_EQ(splitLargeObjects(s, 0, 2, 4.0, 1).objectsCut, 1);  // content by default
     ASSERT_EQ(s.objects.size(), 1u + 9u);
-    EXPECT_EQ(s.objects[0].name, "structure/floor");               // structure left whole
+    EXPECT_EQ(s.objects[0].name, "structure/floor");  // structure left whole
     const SplitStats stats = splitLargeObjects(s, 0, s.objects.size(), 4.0, 1, Role::Structure);
     EXPECT_EQ(stats.objectsCut, 1);
     EXPECT_EQ(stats.chunks, 9);
@@ -147,8 +149,7 @@ TEST(MeshSplit, NeedsEnoughTrianglesAndAPositiveChunk) {
     EXPECT_EQ(splitLargeObjects(s, 0, 1, 4.0, 201).objectsCut, 0);  // 200 triangles
     EXPECT_EQ(splitLargeObjects(s, 0, 1, 20.0, 1).objectsCut, 0);   // narrower than a chunk
     EXPECT_EQ(s.objects.size(), 1u);
-    for (double bad : {0.0, -1.0, std::nan("")})
-        EXPECT_THROW(splitLargeObjects(s, 0, 1, bad, 1), Error) << bad;
+    for (double bad : {0.0, -1.0, std::nan("")}) EXPECT_THROW(splitLargeObjects(s, 0, 1, bad, 1), Error) << bad;
 }
 
 }  // namespace

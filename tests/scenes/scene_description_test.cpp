@@ -73,16 +73,20 @@ TEST(SceneDescription, PlacementUnitsAndUpAxisMoveObjects) {
     // Vertex (0, 1, 0) of the triangle: halved to (0, 0.5, 0); Z-up to Y-up sends +Y to -Z:
     // (0, 0, -0.5); then moved by (10, 0, 0).
     const glm::dvec4 p = s.objects[0].worldFromModel * glm::dvec4(0, 1, 0, 1);
-    EXPECT_NEAR(p.x, 10.0, 1e-12); EXPECT_NEAR(p.y, 0.0, 1e-12); EXPECT_NEAR(p.z, -0.5, 1e-12);
+    EXPECT_NEAR(p.x, 10.0, 1e-12);
+    EXPECT_NEAR(p.y, 0.0, 1e-12);
+    EXPECT_NEAR(p.z, -0.5, 1e-12);
     EXPECT_EQ(s.objects[0].role, Role::Structure);  // "node 0" matches "no*e 0"
     EXPECT_EQ(s.objects[0].cell, -1);               // no cells
 }
 
 TEST(SceneDescription, UnitNamesGiveMetresPerUnit) {
-    const std::pair<const char*, double> units[] = {{"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}, {"in", 0.0254}, {"ft", 0.3048}};
+    const std::pair<const char*, double> units[] = {
+        {"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}, {"in", 0.0254}, {"ft", 0.3048}};
     for (const auto& [name, metres] : units) {
         SCOPED_TRACE(name);
-        const SceneDescription d = load(std::string(R"({"models": [{"file": "model.gltf", "units": ")") + name + "\"}]}");
+        const SceneDescription d =
+            load(std::string(R"({"models": [{"file": "model.gltf", "units": ")") + name + "\"}]}");
         EXPECT_EQ(d.models[0].metresPerUnit, metres);
     }
 }
@@ -123,7 +127,8 @@ TEST(SceneDescription, EveryRuleHasItsMessage) {
            "lowerRight": [0,0,-2], "upperLeft": [0,0,4]})"),
          "scene.json: walls[0]: corners are collinear or repeated (expected a non-zero area, got 0 m²)"},
         {"real wall upside down", scene(R"(, "realWalls": [{"name": "r", "lowerLeft": [0,3,2], "lowerRight": [0,3,-2],
-           "upperLeft": [0,0,2]}])"), "scene.json: realWalls[0]: upperLeft is not above lowerLeft"},
+           "upperLeft": [0,0,2]}])"),
+         "scene.json: realWalls[0]: upperLeft is not above lowerLeft"},
         {"cell without region", scene("", "", R"("cells": [{"name": "A"}])"),
          "scene.json: cells[0]: missing required key 'region'"},
         {"cell with two points", scene("", "", R"("cells": [{"name": "A", "region": [[0,0],[1,0]]}])"),
@@ -131,7 +136,8 @@ TEST(SceneDescription, EveryRuleHasItsMessage) {
         {"degenerate cell", scene("", "", R"("cells": [{"name": "A", "region": [[0,0],[1,0],[2,0]]}])"),
          "scene.json: cells[0].region: degenerate polygon (expected a non-zero area, got 0 m²)"},
         {"non-convex cell", scene("", "", R"("cells": [{"name": "A", "region": [[0,0],[4,0],[4,-4],[2,-1],[0,-4]]}])"),
-         "scene.json: cells[0].region: not convex (expected every corner to turn left seen from above, got a right turn at point 3)"},
+         "scene.json: cells[0].region: not convex (expected every corner to turn left seen from above, got a right "
+         "turn at point 3)"},
         {"overlapping cells", scene("", "", R"("cells": [{"name": "A", "region": [[0,0],[4,0],[4,-4],[0,-4]]},
            {"name": "B", "region": [[3,0],[6,0],[6,-4],[3,-4]]}])"),
          "scene.json: cells[1]: overlaps cells[0] 'A' (expected cells that at most touch, got 4 m² in common)"},
@@ -161,8 +167,10 @@ TEST(SceneDescription, EveryRuleHasItsMessage) {
          "scene.json: walls[0]: 'x' is 100 m from cell 'A' that it joins (expected its footprint within 0.5 m of "
          "the cell's region)"},
         {"model at 1e300", R"({"models": [{"file": "model.gltf", "position": [1e300, 0, 0]}]})",
-         "scene.json: models[0]: point (1e+300, 0, 0) is out of range (expected coordinates within 100000 m of the origin)"},
-        {"cell of 1e308", scene("", "", R"("cells": [{"name": "A", "region": [[0,0],[1e308,0],[1e308,-1e308],[0,-1e308]]}])"),
+         "scene.json: models[0]: point (1e+300, 0, 0) is out of range (expected coordinates within 100000 m of the "
+         "origin)"},
+        {"cell of 1e308",
+         scene("", "", R"("cells": [{"name": "A", "region": [[0,0],[1e308,0],[1e308,-1e308],[0,-1e308]]}])"),
          "scene.json: cells[0].region[1]: point (1e+308, 0, 0) is out of range"},
     };
     for (const BadCase& c : cases) {
@@ -182,7 +190,8 @@ TEST(SceneDescription, LoadSceneFileAcceptsFolderJsonAndBareGltf) {
     const Scene bare = loadSceneFile(dir / "model.gltf", &d);
     EXPECT_TRUE(d.cells.empty());
     EXPECT_EQ(bare.triangleCount(), 1u);
-    EXPECT_THAT([&] { loadSceneFile(dir / "absent.json"); }, ThrowsMessage<Error>(HasSubstr("absent.json: cannot open")));
+    EXPECT_THAT([&] { loadSceneFile(dir / "absent.json"); },
+                ThrowsMessage<Error>(HasSubstr("absent.json: cannot open")));
 }
 
 TEST(Region, ContainsOverlapAndConvexity) {

@@ -51,7 +51,8 @@ TEST(SharedModels, EveryModelLoadsWithTheReadmeTriangleCount) {
             for (const glm::vec3& n : mesh.normals) ASSERT_NEAR(glm::length(n), 1.0f, 1e-4f);
             for (std::uint32_t i : mesh.indices) ASSERT_LT(i, mesh.positions.size());
         }
-        for (const Image& img : s.images) EXPECT_EQ(img.rgba.size(), std::size_t(img.width) * img.height * 4) << img.name;
+        for (const Image& img : s.images)
+            EXPECT_EQ(img.rgba.size(), std::size_t(img.width) * img.height * 4) << img.name;
     }
 }
 
@@ -73,8 +74,12 @@ TEST(SharedModels, NodeMatrixAndTrsGiveTheSameWorldTransforms) {
     // README: world bounds of both are (-11, -2.5, -11) to (7.5, 11, 7.5).
     for (const Scene* s : {&trs, &mat}) {
         const Bounds b = s->bounds();
-        EXPECT_NEAR(b.min.x, -11.0, 1e-5); EXPECT_NEAR(b.min.y, -2.5, 1e-5); EXPECT_NEAR(b.min.z, -11.0, 1e-5);
-        EXPECT_NEAR(b.max.x, 7.5, 1e-5); EXPECT_NEAR(b.max.y, 11.0, 1e-5); EXPECT_NEAR(b.max.z, 7.5, 1e-5);
+        EXPECT_NEAR(b.min.x, -11.0, 1e-5);
+        EXPECT_NEAR(b.min.y, -2.5, 1e-5);
+        EXPECT_NEAR(b.min.z, -11.0, 1e-5);
+        EXPECT_NEAR(b.max.x, 7.5, 1e-5);
+        EXPECT_NEAR(b.max.y, 11.0, 1e-5);
+        EXPECT_NEAR(b.max.z, 7.5, 1e-5);
     }
 }
 

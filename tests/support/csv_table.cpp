@@ -14,7 +14,8 @@ std::vector<std::string> splitCells(std::string_view line) {
     std::size_t start = 0;
     for (;;) {
         const std::size_t comma = line.find(',', start);
-        cells.emplace_back(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+        cells.emplace_back(
+            line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
         if (comma == std::string_view::npos) return cells;
         start = comma + 1;
     }
@@ -68,7 +69,8 @@ CsvTable parseCsv(std::string_view text, std::string_view where) {
         std::vector<std::string> cells = splitCells(line);
         if (cells.size() != table.columns.size())
             throw std::runtime_error(std::string(where) + ":" + std::to_string(lineNumber) + ": expected " +
-                                     std::to_string(table.columns.size()) + " cells, got " + std::to_string(cells.size()));
+                                     std::to_string(table.columns.size()) + " cells, got " +
+                                     std::to_string(cells.size()));
         std::map<std::string, std::string, std::less<>> row;
         for (std::size_t i = 0; i < cells.size(); ++i) row.emplace(table.columns[i], std::move(cells[i]));
         table.rows.emplace_back(std::move(row));

@@ -61,8 +61,8 @@ protected:
     static FrameInput at(glm::dvec3 eye, double time = 0.0, double yaw = 0.0) {
         FrameInput in;
         in.time = time;
-        in.worldFromCave = glm::rotate(glm::translate(glm::dmat4(1.0), eye - glm::dvec3(0, 1.7, 0)), yaw,
-                                       glm::dvec3(0, 1, 0));
+        in.worldFromCave =
+            glm::rotate(glm::translate(glm::dmat4(1.0), eye - glm::dvec3(0, 1.7, 0)), yaw, glm::dvec3(0, 1, 0));
         return in;
     }
     std::vector<display::ScreenView> views(const FrameInput& in) const { return display.views(in.head); }
@@ -96,7 +96,8 @@ TEST_F(FramePlannerTest, ACellNotResidentKeepsTheWallTexturesUnlessNoneIsProven)
     std::optional<glm::dvec3> strip, zone;  // blending textures and geometry; geometry alone
     for (double z = 9.5; z > 0.05; z -= 0.05) {
         const WallBlend b = blendAt(selector, 0.0, z);
-        if (!strip && !b.textures.empty() && b.geometryWeight > 0.0 && b.geometryWeight < 1.0) strip = glm::dvec3(0, 1.7, z);
+        if (!strip && !b.textures.empty() && b.geometryWeight > 0.0 && b.geometryWeight < 1.0)
+            strip = glm::dvec3(0, 1.7, z);
         if (!zone && b.textures.empty()) zone = glm::dvec3(0, 1.7, z);
     }
     ASSERT_TRUE(strip && zone);
@@ -109,7 +110,7 @@ TEST_F(FramePlannerTest, ACellNotResidentKeepsTheWallTexturesUnlessNoneIsProven)
         const FrameInput in = at(eye);
         planner.requestCells(true);
         const TextureRequests r = planner.requests(in, views(in));
-        EXPECT_EQ(std::count(r.cellsNow.begin(), r.cellsNow.end(), 0), 1);  // the viewer's cell
+        EXPECT_EQ(std::count(r.cellsNow.begin(), r.cellsNow.end(), 0), 1);    // the viewer's cell
         EXPECT_EQ(std::count(r.cellsSoon.begin(), r.cellsSoon.end(), 1), 1);  // one wall away
         return planner.plan([&](int id) { return everything.count(id) > 0; },
                             [&](int cell) { return cell == 0 || backResident; });
@@ -304,7 +305,8 @@ TEST_F(FramePlannerTest, AWarpMorphStartsOnASwitchLastsMorphSecondsThenEnds) {
         if (b.geometryWeight == 1.0) geometry = glm::dvec3(0, 1.7, z);
     }
     ASSERT_TRUE(textured && geometry);
-    const glm::dvec3 samplingPoint = walls.plan.textures[blendAt(selector, 0.0, textured->z).textures[0].first].samplingPoint;
+    const glm::dvec3 samplingPoint =
+        walls.plan.textures[blendAt(selector, 0.0, textured->z).textures[0].first].samplingPoint;
     const double morph = 0.5;
     FramePlanner planner(scene, description, display, &walls, Transition::Warp, morph);
     const FramePlan before = frame(planner, at(*textured, 0.0));
@@ -385,8 +387,8 @@ TEST_F(FramePlannerTest, DrawnWeightsSumToOneAndErrorsAreTheExactAngularError) {
             double sum = s.geometryWeight, worst = 0.0;
             for (const auto& [id, weight] : s.textures) {
                 sum += weight;
-                worst = std::max(worst, maxAngularError(eye, walls.plan.textures[id].samplingPoint, wall.quad,
-                                                        wall.depthBehind));
+                worst = std::max(
+                    worst, maxAngularError(eye, walls.plan.textures[id].samplingPoint, wall.quad, wall.depthBehind));
             }
             // Continuous weights meet at zone borders; 1e-12 covers their rounding.
             EXPECT_NEAR(sum, 1.0, 1e-12) << "eye " << x << ", " << z;

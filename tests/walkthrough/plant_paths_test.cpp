@@ -103,7 +103,7 @@ TEST_F(PlantPaths, NoTextureOverAlphaAlongTheWalkPath) {
 TEST_F(PlantPaths, NoTextureOverAlphaAlongTheWallPath) {
     const Walked w = walk(generated->description.wallPath);
     report("wall path", w);
-    EXPECT_GT(w.frames, 6000);       // about 340 m in 5 cm steps
+    EXPECT_GT(w.frames, 6000);  // about 340 m in 5 cm steps
     EXPECT_GT(w.beyondTextured, 1000);
     EXPECT_EQ(w.overAlpha, 0);
     EXPECT_LE(w.maxErrorDeg, 10.0 + 1e-6);

@@ -120,7 +120,8 @@ TEST(AngularError, FiniteDepthZoneMaximumIsBracketedByEyes) {
             for (double y : {1.2, 2.0}) best = std::max(best, maxAngularError({v.x, y, v.y}, s, kWall, depth));
         for (int i = 0; i < 300; ++i) {
             const double a = u(rng), b = u(rng);
-            const glm::dvec2 f = (1 - a) * ((1 - b) * zone.floor[0] + b * zone.floor[1]) + a * ((1 - b) * zone.floor[3] + b * zone.floor[2]);
+            const glm::dvec2 f = (1 - a) * ((1 - b) * zone.floor[0] + b * zone.floor[1]) +
+                                 a * ((1 - b) * zone.floor[3] + b * zone.floor[2]);
             best = std::max(best, maxAngularError({f.x, 1.2 + 0.8 * u(rng), f.y}, s, kWall, depth));
         }
         EXPECT_GE(bound, best);
@@ -141,7 +142,8 @@ TEST(AngularError, FiniteDepthZoneBoundCoversEveryEyeAndIsTight) {
     std::vector<double> ratios;
     for (int i = 0; i < 60; ++i) {
         const double x = -4 + 6 * u(rng), z = 1.5 + 5 * u(rng), w = 0.5 + 1.5 * u(rng), d = 0.5 + 1.5 * u(rng);
-        const ZoneVolume zone{{{x, z}, {x + w, z}, {x + w + 0.2 * u(rng), z + d}, {x - 0.2 * u(rng), z + d}}, {1.2, 2.0}};
+        const ZoneVolume zone{{{x, z}, {x + w, z}, {x + w + 0.2 * u(rng), z + d}, {x - 0.2 * u(rng), z + d}},
+                              {1.2, 2.0}};
         const glm::dvec3 s(x + w * u(rng), 1.6, z + d * u(rng));
         const double depth = 0.5 + 50 * u(rng) * u(rng);
         const double bound = zoneDepthBound(zone, s, kWall, depth);
@@ -150,8 +152,9 @@ TEST(AngularError, FiniteDepthZoneBoundCoversEveryEyeAndIsTight) {
         for (int a = 0; a <= 10; ++a)
             for (int b = 0; b <= 10; ++b)
                 for (double y : {1.2, 1.4, 1.6, 1.8, 2.0}) {
-                    const glm::dvec2 f = (1 - a / 10.0) * ((1 - b / 10.0) * zone.floor[0] + (b / 10.0) * zone.floor[1]) +
-                                         (a / 10.0) * ((1 - b / 10.0) * zone.floor[3] + (b / 10.0) * zone.floor[2]);
+                    const glm::dvec2 f =
+                        (1 - a / 10.0) * ((1 - b / 10.0) * zone.floor[0] + (b / 10.0) * zone.floor[1]) +
+                        (a / 10.0) * ((1 - b / 10.0) * zone.floor[3] + (b / 10.0) * zone.floor[2]);
                     best = std::max(best, maxAngularError({f.x, y, f.y}, s, kWall, depth));
                 }
         EXPECT_GE(bound, best) << "zone " << i << " depth " << depth;
@@ -193,10 +196,8 @@ TEST(AngularError, SeedRuleUnderestimatesTheTrue3DError) {
     };
     const Case cases[] = {
         // Even in 2D the worst wall point is in front of the midpoint of BB': 2 atan(0.5 / x) > atan(1 / x).
-        {"same height, parallel", {1.0, 1.6, xMin}},
-        {"head 0.4 m higher", {1.0, 2.0, xMin}},
-        {"0.5 m towards the wall", {1.0, 1.6, xMin - 0.5}},
-        {"0.5 m away from the wall", {1.0, 1.6, xMin + 0.5}},
+        {"same height, parallel", {1.0, 1.6, xMin}},        {"head 0.4 m higher", {1.0, 2.0, xMin}},
+        {"0.5 m towards the wall", {1.0, 1.6, xMin - 0.5}}, {"0.5 m away from the wall", {1.0, 1.6, xMin + 0.5}},
         {"lower and closer", {1.0, 1.2, xMin - 0.5}},
     };
     for (const Case& c : cases) {
@@ -231,8 +232,8 @@ TEST(AngularError, ZoneWithinIsEveryEyeWithin) {
         const glm::dvec2 c(x(rng), z(rng));
         const double w = size(rng), d = size(rng);
         // A convex quad: a rectangle with one corner pulled in, not aligned with the wall.
-        const ZoneVolume zone{{{c.x - w, c.y}, {c.x + w, c.y + 0.3 * d}, {c.x + 0.7 * w, c.y + d}, {c.x - w, c.y + 0.8 * d}},
-                              {1.2, 2.0}};
+        const ZoneVolume zone{
+            {{c.x - w, c.y}, {c.x + w, c.y + 0.3 * d}, {c.x + 0.7 * w, c.y + d}, {c.x - w, c.y + 0.8 * d}}, {1.2, 2.0}};
         const glm::dvec3 s(x(rng), y(rng), z(rng));
         std::vector<double> alphas;
         double worst = 0;

@@ -76,7 +76,8 @@ TEST(AutoWalls, FindsFloorCeilingAndHallWallsAsStructure) {
     EXPECT_NEAR(r.floorMin.y, -4.95, 1e-9);
     EXPECT_NEAR(r.floorMax.y, 4.95, 1e-9);
     // The proposal names them as structure nodes of the model.
-    EXPECT_THAT(r.description.models.front().structureNodes, ElementsAre("ceiling", "floor", "wall-north", "wall-south"));
+    EXPECT_THAT(r.description.models.front().structureNodes,
+                ElementsAre("ceiling", "floor", "wall-north", "wall-south"));
 }
 
 TEST(AutoWalls, TheProposalIsValidAndNoWallCutsACrate) {
@@ -205,16 +206,20 @@ TEST(AutoWalls, FindsTheRoomsOfAHouseAndItsDoorwaysAsPortals) {
         EXPECT_EQ(w.kind, scenes::WallKind::Portal);
         EXPECT_NEAR(w.upperLeft.y - w.lowerLeft.y, 2.1, 1e-6);
         const glm::dvec3 mid = 0.5 * (w.lowerLeft + w.lowerRight);
-        const bool known = std::any_of(house.description.walls.begin(), house.description.walls.end(), [&](const scenes::VirtualWall& d) {
-            return glm::length(0.5 * (d.lowerLeft + d.lowerRight) - mid) < 0.08 &&
-                   std::abs(glm::length(d.lowerRight - d.lowerLeft) - glm::length(w.lowerRight - w.lowerLeft)) < 1e-6;
-        });
+        const bool known = std::any_of(
+            house.description.walls.begin(), house.description.walls.end(), [&](const scenes::VirtualWall& d) {
+                return glm::length(0.5 * (d.lowerLeft + d.lowerRight) - mid) < 0.08 &&
+                       std::abs(glm::length(d.lowerRight - d.lowerLeft) - glm::length(w.lowerRight - w.lowerLeft)) <
+                           1e-6;
+            });
         EXPECT_TRUE(known);
     }
     // Without --rooms the cost model decides; the rooms stay among the candidates.
     o.preferRooms = false;
     const AutoWallsResult free = proposeWalls(house.scene, base, o);
-    EXPECT_EQ(std::count_if(free.candidates.begin(), free.candidates.end(), [](const AutoWallsCandidate& c) { return c.rooms; }), 1);
+    EXPECT_EQ(std::count_if(free.candidates.begin(), free.candidates.end(),
+                            [](const AutoWallsCandidate& c) { return c.rooms; }),
+              1);
 }
 
 TEST(AutoWalls, RejectsBadOptionsByName) {

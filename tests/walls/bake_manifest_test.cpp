@@ -31,8 +31,18 @@ TEST(BakeManifest, Fnv1aMatchesPublishedVectors) {
 TEST(BakeManifest, RoundTripsThroughDisk) {
     const auto dir = scratch("roundtrip");
     // A time in nanoseconds needs all 64 bits (a double would round it to 256 ns).
-    BakeManifest m{0x0123456789abcdefull, 10.0,
-                   {{3, 1, 2, {0.5, 1.6, -2.25}, {512, 256}, "tex_0003.tx", 42, 0xfeedull, 1796212345123456789, 9007199254740993}}};
+    BakeManifest m{0x0123456789abcdefull,
+                   10.0,
+                   {{3,
+                     1,
+                     2,
+                     {0.5, 1.6, -2.25},
+                     {512, 256},
+                     "tex_0003.tx",
+                     42,
+                     0xfeedull,
+                     1796212345123456789,
+                     9007199254740993}}};
     writeManifest(dir, m);
     EXPECT_EQ(readManifest(dir), m);
     // Nothing but the manifest is left behind: the temporary file was renamed.
@@ -42,7 +52,8 @@ TEST(BakeManifest, RoundTripsThroughDisk) {
 TEST(BakeManifest, Version1ManifestsReadWithoutStamps) {
     const BakeManifest m = manifestFromJson(R"({"version": 1, "key": "0000000000000001", "alphaDeg": 10, "textures": [
         {"id": 0, "cell": 0, "wall": 0, "samplingPoint": [0,0,0], "resolution": [4,4], "file": "t.tx", "bytes": 1,
-         "hash": "00000000000000ff"}]})", "m.json");
+         "hash": "00000000000000ff"}]})",
+                                            "m.json");
     ASSERT_EQ(m.textures.size(), 1u);
     EXPECT_EQ(m.textures[0].hash, 0xffu);
     EXPECT_EQ(m.textures[0].mtimeNs, 0);  // unknown: the start-up check hashes it once
@@ -116,8 +127,10 @@ TEST(BakeManifest, BadManifestsNameThePath) {
         const char* json;
         const char* message;
     } cases[] = {
-        {R"({"version": 3, "key": "0000000000000000", "alphaDeg": 10, "textures": []})", "m.json: version: expected an integer in [1, 2], got 3"},
-        {R"({"version": 1, "key": "xyz", "alphaDeg": 10, "textures": []})", "m.json: key: expected 16 lower-case hex digits"},
+        {R"({"version": 3, "key": "0000000000000000", "alphaDeg": 10, "textures": []})",
+         "m.json: version: expected an integer in [1, 2], got 3"},
+        {R"({"version": 1, "key": "xyz", "alphaDeg": 10, "textures": []})",
+         "m.json: key: expected 16 lower-case hex digits"},
         {R"({"version": 1, "key": "0000000000000000", "alphaDeg": 10, "textures": [{"id": 0, "cell": 0, "wall": 0,
             "samplingPoint": [0,0,0], "resolution": [4,4], "file": "../etc/passwd", "bytes": 1, "hash": "0000000000000000"}]})",
          "m.json: textures[0].file: expected a plain file name"},

@@ -37,9 +37,9 @@ scenes::SceneDescription grid() {
     d.cells.push_back({"B", {{0, 0}, {10, 0}, {10, 10}, {0, 10}}, 0.0});
     d.cells.push_back({"C", {{-10, -10}, {0, -10}, {0, 0}, {-10, 0}}, 0.0});
     d.cells.push_back({"D", {{0, -10}, {10, -10}, {10, 0}, {0, 0}}, 0.0});
-    d.walls.push_back(wall("A|B", {0, 0}, {0, 10}, 0, 1));     // normal -x, towards A
+    d.walls.push_back(wall("A|B", {0, 0}, {0, 10}, 0, 1));  // normal -x, towards A
     d.walls.push_back(wall("C|D", {0, -10}, {0, 0}, 2, 3));
-    d.walls.push_back(wall("A|C", {-10, 0}, {0, 0}, 0, 2));    // normal +z, towards A
+    d.walls.push_back(wall("A|C", {-10, 0}, {0, 0}, 0, 2));  // normal +z, towards A
     d.walls.push_back(wall("B|D", {0, 0}, {10, 0}, 1, 3));
     d.headHeightRange = {1.3, 1.9};
     return d;
@@ -93,7 +93,8 @@ TEST_P(BeyondTest, ZonesTileTheEyeRegionAndEveryTextureIsWithinAlphaThere) {
     for (const BeyondSide& b : plan.beyond) {
         SCOPED_TRACE("eye cell " + std::to_string(b.eyeCell) + ", far wall " + plan.walls[b.side.wall].name);
         // The region lies in the eye's cell and outside the neighbour whose wall it serves.
-        for (const glm::dvec2& p : b.eyeRegion) ASSERT_TRUE(containsConvex(description.cells[b.eyeCell].region, p, 1e-9));
+        for (const glm::dvec2& p : b.eyeRegion)
+            ASSERT_TRUE(containsConvex(description.cells[b.eyeCell].region, p, 1e-9));
         EXPECT_NE(b.eyeCell, b.side.cell);
         double area = 0.0;
         for (int z = b.side.firstZone; z < b.side.firstZone + b.side.zoneCount; ++z) {
@@ -113,7 +114,8 @@ TEST_P(BeyondTest, ZonesTileTheEyeRegionAndEveryTextureIsWithinAlphaThere) {
                 ++found;
                 for (int t : zone.textures) {
                     EXPECT_EQ(plan.textures[t].wall, b.side.wall);
-                    ASSERT_LE(errorOf(t, eye), alpha()) << "texture " << t << " at " << eye.x << "," << eye.y << "," << eye.z;
+                    ASSERT_LE(errorOf(t, eye), alpha())
+                        << "texture " << t << " at " << eye.x << "," << eye.y << "," << eye.z;
                 }
             }
             ASSERT_GE(found, 1) << "no zone holds " << eye.x << "," << eye.z;
@@ -207,7 +209,8 @@ TEST_P(BeyondTest, JsonCarriesTheBeyondZonesAndReadsThemBack) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BeyondTest,
-                         ::testing::Values(Case{"parallel_10", testing::threeInARow, 10.0}, Case{"parallel_20", testing::threeInARow, 20.0},
+                         ::testing::Values(Case{"parallel_10", testing::threeInARow, 10.0},
+                                           Case{"parallel_20", testing::threeInARow, 20.0},
                                            Case{"perpendicular_10", grid, 10.0}, Case{"perpendicular_30", grid, 30.0}),
                          [](const auto& info) { return std::string(info.param.name); });
 

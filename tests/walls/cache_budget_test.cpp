@@ -57,7 +57,7 @@ TEST(CacheBudget, NeverEvictsAFileWantedNow) {
 TEST(CacheBudget, FullSaysWhetherAFileFits) {
     CacheBudget budget(2 * kFile);
     budget.add(1, kFile);
-    EXPECT_FALSE(budget.full(kFile));      // 1000 + 1000 <= 2000
+    EXPECT_FALSE(budget.full(kFile));  // 1000 + 1000 <= 2000
     EXPECT_TRUE(budget.full(kFile + 1));
 }
 

@@ -38,9 +38,9 @@ TEST(DepthFile, CodesAreWithinTheirStatedPrecision) {
     EXPECT_EQ(decodeDepth(0), kNoSurface);
     EXPECT_EQ(encodeDepth(0.0f), 65535);
     EXPECT_EQ(decodeDepth(65535), 0.0f);
-    EXPECT_EQ(encodeDepth(-1.0f), 65535);                 // in front of the plane: 0
-    EXPECT_EQ(encodeDepth(std::nanf("")), 65535);         // never a NaN back
-    EXPECT_EQ(encodeDepth(1e9f), 2);                      // beyond the codes: the farthest
+    EXPECT_EQ(encodeDepth(-1.0f), 65535);          // in front of the plane: 0
+    EXPECT_EQ(encodeDepth(std::nanf("")), 65535);  // never a NaN back
+    EXPECT_EQ(encodeDepth(1e9f), 2);               // beyond the codes: the farthest
     EXPECT_TRUE(std::isfinite(decodeDepth(2)));
     double worstShare = 0.0;
     std::uint16_t last = 65535;
@@ -53,7 +53,7 @@ TEST(DepthFile, CodesAreWithinTheirStatedPrecision) {
         worstShare = std::max(worstShare, error / depthFileError(d));
     }
     EXPECT_GT(worstShare, 0.5);
-    EXPECT_NEAR(depthFileError(1.0), 3.05e-5, 1e-6);      // the header's figures
+    EXPECT_NEAR(depthFileError(1.0), 3.05e-5, 1e-6);  // the header's figures
     EXPECT_NEAR(depthFileError(10.0), 9.2e-4, 1e-5);
     EXPECT_NEAR(depthFileError(100.0), 0.078, 1e-3);
 }
@@ -102,7 +102,8 @@ TEST(DepthFile, FloatDepthFilesAreStillReadBitForBit) {
     auto byteOut = OIIO::ImageOutput::create(bytes);
     OIIO::ImageSpec byteSpec(2, 1, 1, OIIO::TypeDesc::UINT8);
     const unsigned char pixels[2] = {1, 2};
-    ASSERT_TRUE(byteOut->open(bytes, byteSpec) && byteOut->write_image(OIIO::TypeDesc::UINT8, pixels) && byteOut->close());
+    ASSERT_TRUE(byteOut->open(bytes, byteSpec) && byteOut->write_image(OIIO::TypeDesc::UINT8, pixels) &&
+                byteOut->close());
     try {
         readDepthFile(bytes);
         FAIL();

@@ -25,7 +25,8 @@ namespace {
 // pixel shows: what S saw through the centre of the texel hit, at the stored depth.
 double shownError(const DepthImage& image, const WallFrame& f, glm::dvec3 eye, glm::dvec3 sample, glm::dvec2 w,
                   const ReprojectHit& hit) {
-    const double i = std::floor(hit.texture.x / f.width * image.width), j = std::floor((f.height - hit.texture.y) / f.height * image.height);
+    const double i = std::floor(hit.texture.x / f.width * image.width),
+                 j = std::floor((f.height - hit.texture.y) / f.height * image.height);
     const glm::dvec2 tc = texelCentre(f, image.width, image.height, int(i), int(j));
     const double ds = -sample.z;
     const glm::dvec3 p(tc + (hit.surface / ds) * (tc - glm::dvec2(sample)), hit.surface);
@@ -72,14 +73,15 @@ TEST(DepthPlan, EyeBoundHoldsForEveryDrawnPixelAndIsReached) {
             ++drawn;
             worst = std::max(worst, shownError(image, f, e, s, w, hit));
         }
-    std::printf("depth eye bound %.5f rad, largest error of %d drawn pixels %.5f rad (ratio %.3f)\n", bound, drawn, worst,
-                worst / bound);
+    std::printf("depth eye bound %.5f rad, largest error of %d drawn pixels %.5f rad (ratio %.3f)\n", bound, drawn,
+                worst, worst / bound);
     EXPECT_GT(drawn, 16000);  // of 18000: the rest see past the wall's edges (no texel holds that)
     EXPECT_LE(worst, bound);
     EXPECT_GE(worst, 0.5 * bound);
     // The segment form: the exact angle where the span form is linear in k, so at most it, and
     // reached as closely.
-    const double segment = depthSegmentEyeBound(f.toWorld(e), f.toWorld(s), kQuad, span, std::hypot(4.0 / n, 3.0 / (n * 3 / 4)));
+    const double segment =
+        depthSegmentEyeBound(f.toWorld(e), f.toWorld(s), kQuad, span, std::hypot(4.0 / n, 3.0 / (n * 3 / 4)));
     std::printf("segment form %.5f rad (ratio %.3f)\n", segment, worst / segment);
     EXPECT_LE(segment, bound);
     EXPECT_LE(worst, segment);
@@ -105,7 +107,11 @@ TEST(DepthPlan, SegmentFormHoldsForEveryDrawnPixelAndIsReached) {
     const double h = std::hypot(4.0 / n, 3.0 / m);
     const double form = depthSegmentEyeBound(f.toWorld(e), f.toWorld(s), kQuad, span, h);
     const double nearDepth = span.x - 1e-6 * (3.0 + span.x), farDepth = span.y + 1e-6 * (3.0 + span.y);  // widened
-    EXPECT_NEAR(form, maxAngularError(f.toWorld(e), f.toWorld(s), nearWall(kQuad, f.toWorld(s), nearDepth), farDepth - nearDepth) + 0.5 * h / 3.0, 1e-9);
+    EXPECT_NEAR(
+        form,
+        maxAngularError(f.toWorld(e), f.toWorld(s), nearWall(kQuad, f.toWorld(s), nearDepth), farDepth - nearDepth) +
+            0.5 * h / 3.0,
+        1e-9);
     // Below the flat texture's own error up to the far depth (the form with dNear = 0).
     EXPECT_LT(form, depthSegmentEyeBound(f.toWorld(e), f.toWorld(s), kQuad, {0.0, span.y}, h));
     double worst = 0.0;
@@ -176,48 +182,49 @@ TEST(DepthPlan, SegmentZoneFormCoversEveryEyeOfTheZone) {
     const glm::dvec3 s(0.7, 1.6, 2.4);
     const double h = 0.004;
     for (const ZoneVolume* z : {&large, &planned})
-    for (double nearDepth : {0.0, 0.3, 2.0, 10.0})
-        for (double farDepth : {nearDepth + 0.5, nearDepth + 5.0, nearDepth + 1e6}) {
-            const ZoneVolume& zone = *z;
-            const glm::dvec2 span(nearDepth, farDepth);
-            const double bound = depthSegmentZoneBound(zone, s, kQuad, span, h);
-            double worst = 0.0;
-            std::mt19937 rng(3);
-            std::uniform_real_distribution<double> u(0.0, 1.0);
-            for (int k = 0; k < 400; ++k) {
-                // A point of the zone: a vertex, or a random mix of its vertices.
-                glm::dvec2 p(0.0);
-                if (k < 8) {
-                    p = zone.floor[k % 4];
-                } else {
-                    double total = 0.0;
-                    for (const glm::dvec2& v : zone.floor) {
-                        const double w = u(rng);
-                        p += w * v;
-                        total += w;
+        for (double nearDepth : {0.0, 0.3, 2.0, 10.0})
+            for (double farDepth : {nearDepth + 0.5, nearDepth + 5.0, nearDepth + 1e6}) {
+                const ZoneVolume& zone = *z;
+                const glm::dvec2 span(nearDepth, farDepth);
+                const double bound = depthSegmentZoneBound(zone, s, kQuad, span, h);
+                double worst = 0.0;
+                std::mt19937 rng(3);
+                std::uniform_real_distribution<double> u(0.0, 1.0);
+                for (int k = 0; k < 400; ++k) {
+                    // A point of the zone: a vertex, or a random mix of its vertices.
+                    glm::dvec2 p(0.0);
+                    if (k < 8) {
+                        p = zone.floor[k % 4];
+                    } else {
+                        double total = 0.0;
+                        for (const glm::dvec2& v : zone.floor) {
+                            const double w = u(rng);
+                            p += w * v;
+                            total += w;
+                        }
+                        p /= total;
                     }
-                    p /= total;
+                    const glm::dvec3 e(p.x, k < 8 ? (k < 4 ? 1.2 : 2.0) : 1.2 + 0.8 * u(rng), p.y);
+                    const double eye = depthSegmentEyeBound(e, s, kQuad, span, h);
+                    EXPECT_LE(eye, bound + 1e-9) << "near " << nearDepth << " far " << farDepth;
+                    worst = std::max(worst, eye);
                 }
-                const glm::dvec3 e(p.x, k < 8 ? (k < 4 ? 1.2 : 2.0) : 1.2 + 0.8 * u(rng), p.y);
-                const double eye = depthSegmentEyeBound(e, s, kQuad, span, h);
-                EXPECT_LE(eye, bound + 1e-9) << "near " << nearDepth << " far " << farDepth;
-                worst = std::max(worst, eye);
+                std::printf("near %.1f far %.1f: zone form %.5f rad, largest eye %.5f (ratio %.3f)\n", nearDepth,
+                            farDepth, bound, worst, worst / bound);
+                if (z == &planned) {
+                    EXPECT_GE(worst, 0.8 * bound) << "near " << nearDepth << " far " << farDepth;
+                }
+                EXPECT_LE(bound, depthSegmentZoneBound(zone, s, kQuad, {nearDepth, nearDepth + 1e6}, h) + 1e-12);
+                if (nearDepth > 0.0) {
+                    EXPECT_LT(bound, depthSegmentZoneBound(zone, s, kQuad, {0.0, farDepth}, h));
+                }
             }
-            std::printf("near %.1f far %.1f: zone form %.5f rad, largest eye %.5f (ratio %.3f)\n", nearDepth, farDepth, bound,
-                        worst, worst / bound);
-            if (z == &planned) {
-                EXPECT_GE(worst, 0.8 * bound) << "near " << nearDepth << " far " << farDepth;
-            }
-            EXPECT_LE(bound, depthSegmentZoneBound(zone, s, kQuad, {nearDepth, nearDepth + 1e6}, h) + 1e-12);
-            if (nearDepth > 0.0) {
-                EXPECT_LT(bound, depthSegmentZoneBound(zone, s, kQuad, {0.0, farDepth}, h));
-            }
-        }
 }
 
 TEST(DepthPlan, EyeBoundShrinksWithTheSpanAndIsSymmetricAcrossTheWall) {
     const glm::dvec3 s(0.5, 1.5, 3.0), e(1.5, 1.7, 2.0);
-    const double wide = depthEyeBound(e, s, kQuad, {0.0, 1e9}, 0.0), narrow = depthEyeBound(e, s, kQuad, {2.0, 3.0}, 0.0);
+    const double wide = depthEyeBound(e, s, kQuad, {0.0, 1e9}, 0.0),
+                 narrow = depthEyeBound(e, s, kQuad, {2.0, 3.0}, 0.0);
     EXPECT_GT(wide, 3.0 * narrow);
     EXPECT_LT(depthEyeBound(e, s, kQuad, {2.0, 2.0}, 0.0), 1e-5);  // one depth: exact but for the widening
     // The same eye and sampling point mirrored behind the wall (a texture of the back side).
@@ -246,7 +253,8 @@ TEST(DepthPlan, ZoneBoundCoversEveryEyeOfTheZone) {
         const glm::dvec3 eye(p.x, 1.2 + 0.8 * u(rng), p.y);
         worst = std::max(worst, depthEyeBound(eye, s, kQuad, span, 0.004));
     }
-    std::printf("zone bound %.4f rad, largest per-eye bound of 4000 eyes %.4f rad (ratio %.3f)\n", bound, worst, worst / bound);
+    std::printf("zone bound %.4f rad, largest per-eye bound of 4000 eyes %.4f rad (ratio %.3f)\n", bound, worst,
+                worst / bound);
     EXPECT_LE(worst, bound);
     // This zone spans 1 to 4 m from the wall: the zone bound takes the nearest distance with the
     // largest parallax of any eye, so it is looser than at one eye (0.44 here), not unbounded.
@@ -263,7 +271,8 @@ TEST(DepthPlan, WithinPredicatesGiveTheBoundsAnswer) {
     int spanYes = 0, spanNo = 0, segmentYes = 0, segmentNo = 0;
     for (int i = 0; i < 300; ++i) {
         const double x = -3.0 + 6.0 * u(rng), z = 0.5 + 5.0 * u(rng), w = 0.2 + 2.0 * u(rng), d = 0.2 + 2.0 * u(rng);
-        const ZoneVolume zone{{{x, z}, {x + w, z}, {x + w + 0.3 * u(rng), z + d}, {x - 0.3 * u(rng), z + d}}, {1.2, 2.0}};
+        const ZoneVolume zone{{{x, z}, {x + w, z}, {x + w + 0.3 * u(rng), z + d}, {x - 0.3 * u(rng), z + d}},
+                              {1.2, 2.0}};
         const glm::dvec3 s(x + w * u(rng), 1.6, z + d * u(rng));
         const double nearDepth = 2.0 * u(rng);
         const glm::dvec2 span(nearDepth, u(rng) < 0.1 ? kInfiniteDepth : nearDepth + 8.0 * u(rng));
@@ -305,7 +314,8 @@ DepthImage blockImage(int width, int height, glm::dvec2 span, std::mt19937& rng)
     depth[1] = static_cast<float>(span.y);  // the extremes occur
     DepthImage image{width, height, {}};
     for (int j = 0; j < height; ++j)
-        for (int i = 0; i < width; ++i) image.depth.push_back(depth[(j * blocks / height) * blocks + i * blocks / width]);
+        for (int i = 0; i < width; ++i)
+            image.depth.push_back(depth[(j * blocks / height) * blocks + i * blocks / width]);
     return image;
 }
 
@@ -398,7 +408,8 @@ TEST(DepthPlan, SpansAreCheckedAndCarriedByTheJson) {
         planZones(testing::hall(), o, {{3.0, 2.0}});
         FAIL() << "expected an Error";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("wall 'middle': expected a depth span 0 <= near <= far"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("wall 'middle': expected a depth span 0 <= near <= far"),
+                  std::string::npos)
             << e.what();
     }
     EXPECT_THROW(planZones(testing::hall(), o, {{1.0, 2.0}, {1.0, 2.0}}), Error);
@@ -424,14 +435,15 @@ TEST(BakeResolution, PlanResolutionIsCappedKeepingTheAspect) {
         glm::ivec2 expected;
     };
     const Case cases[] = {
-        {{100, 50}, 1024, {100, 50}},     // within the cap: as planned
+        {{100, 50}, 1024, {100, 50}},       // within the cap: as planned
         {{4000, 1000}, 1024, {1024, 256}},  // scaled by 1024 / 4000, aspect 4:1 kept
-        {{300, 3000}, 64, {6, 64}},       // 300 * 64 / 3000 = 6.4 rounds to 6
-        {{5000, 1}, 16, {16, 1}},         // never below one texel
-        {{0, 0}, 16, {1, 1}},             // a plan without resolutions still bakes one texel
+        {{300, 3000}, 64, {6, 64}},         // 300 * 64 / 3000 = 6.4 rounds to 6
+        {{5000, 1}, 16, {16, 1}},           // never below one texel
+        {{0, 0}, 16, {1, 1}},               // a plan without resolutions still bakes one texel
     };
     for (const Case& c : cases) {
-        SCOPED_TRACE(std::to_string(c.planned.x) + " x " + std::to_string(c.planned.y) + " cap " + std::to_string(c.cap));
+        SCOPED_TRACE(std::to_string(c.planned.x) + " x " + std::to_string(c.planned.y) + " cap " +
+                     std::to_string(c.cap));
         EXPECT_EQ(bakeResolution(c.planned, c.cap), c.expected);
     }
     // Depth walls: even sides, so that the march reads halved depths; never past the cap.
@@ -456,7 +468,8 @@ TEST(DepthPlan, ACapKeepsEachTexturesAspect) {
     int scaled = 0;
     for (std::size_t i = 0; i < full.textures.size(); ++i) {
         const glm::ivec2 a = full.textures[i].resolution, b = capped.textures[i].resolution;
-        SCOPED_TRACE(std::to_string(a.x) + " x " + std::to_string(a.y) + " -> " + std::to_string(b.x) + " x " + std::to_string(b.y));
+        SCOPED_TRACE(std::to_string(a.x) + " x " + std::to_string(a.y) + " -> " + std::to_string(b.x) + " x " +
+                     std::to_string(b.y));
         EXPECT_EQ(b, capResolution(glm::dvec2(a), 64));
         if (std::max(a.x, a.y) <= 64) {
             EXPECT_EQ(b, a);
@@ -470,7 +483,7 @@ TEST(DepthPlan, ACapKeepsEachTexturesAspect) {
     }
     EXPECT_GT(scaled, 0);  // the 7 m x 3 m wall's near textures exceed 64 texels
     EXPECT_EQ(capResolution({300, 3000}, 64), glm::ivec2(6, 64));  // 6.4 rounds to 6
-    EXPECT_EQ(capResolution({5000, 1}, 16), glm::ivec2(16, 1));   // never below one texel
+    EXPECT_EQ(capResolution({5000, 1}, 16), glm::ivec2(16, 1));    // never below one texel
     EXPECT_EQ(capResolution({0, 0}, 16), glm::ivec2(1, 1));
 }
 

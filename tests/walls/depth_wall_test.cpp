@@ -161,7 +161,8 @@ TEST(DepthWall, ReprojectionMatchesTruthOutsideThePredictedDisocclusion) {
             // hit itself is always on the eye's ray; a wrong one shows the wrong surface).
             const glm::dvec2 p = hit.texture + (hit.surface / 3.0) * (hit.texture - glm::dvec2(s));
             const glm::dvec3 got(p, hit.surface), want(truth.at, truth.depth), eye(e);
-            const double angle = std::acos(std::clamp(glm::dot(glm::normalize(got - eye), glm::normalize(want - eye)), -1.0, 1.0));
+            const double angle =
+                std::acos(std::clamp(glm::dot(glm::normalize(got - eye), glm::normalize(want - eye)), -1.0, 1.0));
             ok = angle <= bound.texel + 1e-9;
         }
         if (!ok) {
@@ -181,8 +182,9 @@ TEST(DepthWall, ReprojectionMatchesTruthOutsideThePredictedDisocclusion) {
             run = 0.0;
         }
     }
-    std::printf("reprojection at 512 x 384 texels: %d of %d samples wrong, widest %.4f rad, bound steps %.4f + texel %.5f\n",
-                wrong, samples, widest / de, bound.steps, bound.texel);
+    std::printf(
+        "reprojection at 512 x 384 texels: %d of %d samples wrong, widest %.4f rad, bound steps %.4f + texel %.5f\n",
+        wrong, samples, widest / de, bound.steps, bound.texel);
     EXPECT_GT(wrong, 0);  // the eye does see something S did not
     EXPECT_EQ(outside, 0);
     // The widest wrong interval's angle against the bound's step term: within it, and not
@@ -266,7 +268,7 @@ TEST(DepthWall, MarchDepthsAreTheNearestOfEachTwoByTwoBlock) {
     DepthImage image{6, 4, {}};
     for (int j = 0; j < 4; ++j)
         for (int i = 0; i < 6; ++i) image.depth.push_back(1.0f + 0.25f * float(i) + 2.0f * float(j));
-    image.depth[0] = kNoSurface;   // block (0, 0): three surfaces and an empty texel
+    image.depth[0] = kNoSurface;  // block (0, 0): three surfaces and an empty texel
     for (int k : {4, 5, 10, 11}) image.depth[static_cast<std::size_t>(k)] = kNoSurface;  // block (2, 0): empty
     const DepthImage half = marchDepths(image);
     ASSERT_EQ(half.width, 3);
@@ -333,14 +335,16 @@ TEST(DepthWall, MarchBoundHoldsForEveryDrawnPixelAndIsTight) {
         const DepthImage image = bakeAnalytic(f, s, size.x, size.y);
         const bool halved = marchDepths(image).width != image.width;
         EXPECT_EQ(halved, size.x % 2 == 0);
-        for (const glm::dvec3 e : {glm::dvec3(2.6, 1.5, -2.5), glm::dvec3(1.2, 2.1, -2.0), glm::dvec3(2.0, 1.5, -4.5)}) {
+        for (const glm::dvec3 e :
+             {glm::dvec3(2.6, 1.5, -2.5), glm::dvec3(1.2, 2.1, -2.0), glm::dvec3(2.0, 1.5, -4.5)}) {
             SCOPED_TRACE(std::to_string(size.x) + " x " + std::to_string(size.y) + ", eye x " + std::to_string(e.x));
             const MarchBound bound = marchErrorBound(image, f, e, s, depthRange(image));
             const MarchCheck check = worstMarchedAngle(image, f, e, s, 400);
-            std::printf("march %s %d x %d, eye (%.1f, %.1f, %.1f): worst drawn pixel %.5f rad of %d, bound %.5f "
-                        "(depth %.5f + texel %.5f)\n",
-                        halved ? "halved" : "full", size.x, size.y, e.x, e.y, e.z, check.worst, check.drawn,
-                        bound.total(), bound.depth, bound.texel);
+            std::printf(
+                "march %s %d x %d, eye (%.1f, %.1f, %.1f): worst drawn pixel %.5f rad of %d, bound %.5f "
+                "(depth %.5f + texel %.5f)\n",
+                halved ? "halved" : "full", size.x, size.y, e.x, e.y, e.z, check.worst, check.drawn, bound.total(),
+                bound.depth, bound.texel);
             EXPECT_GT(check.drawn, 400 * 300 / 2);
             EXPECT_LE(check.worst, bound.total() + 1e-9);
             EXPECT_GE(check.worst, 0.6 * bound.total());
@@ -442,7 +446,7 @@ TEST(DepthWall, BlockMinimumBoundsEveryTexelAStepRunCanReach) {
     for (int k = 0; k < 16; ++k) ramp.depth.push_back(float(k));
     const DepthImage half = depthBlockMinimum(ramp, 2, 0);
     EXPECT_EQ(half.depth, (std::vector<float>{0.0f, 2.0f, 8.0f, 10.0f}));
-    EXPECT_THROW(depthBlockMinimum(ramp, 8, 1), Error);   // no whole block
+    EXPECT_THROW(depthBlockMinimum(ramp, 8, 1), Error);  // no whole block
     EXPECT_THROW(depthBlockMinimum(ramp, 0, 0), Error);
     EXPECT_THROW(depthBlockMinimum(ramp, 2, -1), Error);
 }

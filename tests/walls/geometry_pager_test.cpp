@@ -61,8 +61,8 @@ TEST(GeometryPager, LoadsWhatIsWantedAndCountsMisses) {
     std::atomic<int> loads{0};
     GeometryPager pager({kMB, kMB, kMB, kMB}, 8.0, [&](int) { ++loads; });
     pager.request({0}, {1, 2});
-    EXPECT_EQ(pager.stats().misses, 1);   // cell 0 was wanted now and is not resident
-    EXPECT_FALSE(pager.isResident(0));    // request never waits for the loader
+    EXPECT_EQ(pager.stats().misses, 1);  // cell 0 was wanted now and is not resident
+    EXPECT_FALSE(pager.isResident(0));   // request never waits for the loader
     uploadAll(pager);
     EXPECT_EQ(loads.load(), 3);
     EXPECT_TRUE(pager.isResident(0) && pager.isResident(1) && pager.isResident(2));
@@ -194,8 +194,8 @@ TEST(GeometryPager, AMeshSharedByCellsIsResidentOnce) {
     EXPECT_EQ(modelGeometryBytes(s), resident + bytes(3) + bytes(4));
     // The yardstick counts each cell's own meshes (cell 1's include the always-resident mesh 3).
     const std::vector<std::size_t> cellBytes = cellGeometryBytes(s, 3);
-    EXPECT_EQ(cellBytes, (std::vector<std::size_t>{bytes(0) + bytes(1), bytes(0) + bytes(2) + bytes(3),
-                                                   bytes(0) + bytes(2)}));
+    EXPECT_EQ(cellBytes,
+              (std::vector<std::size_t>{bytes(0) + bytes(1), bytes(0) + bytes(2) + bytes(3), bytes(0) + bytes(2)}));
     EXPECT_EQ(largestBytes(cellBytes, 3), 3 * bytes(0) + bytes(1) + 2 * bytes(2) + bytes(3));
     EXPECT_LT(resident, largestBytes(cellBytes, 3));
     // Cells 1 and 2 are the largest two: cell 2 (mesh 2, 732 B) outweighs cell 0 (mesh 1, 492 B).

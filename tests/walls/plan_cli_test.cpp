@@ -51,7 +51,8 @@ TEST(PlanCli, PlansAGeneratedHouseAndTheJsonKeepsTheBound) {
         if (z["kind"] == "geometry") continue;
         const auto& w = j["walls"][z["wall"].get<int>()];
         const walls::ScreenQuad quad{vec3(w["lowerLeft"]), vec3(w["lowerRight"]), vec3(w["upperLeft"])};
-        const nlohmann::json points = z["kind"] == "texture" ? nlohmann::json::array({z["samplingPoint"]}) : z["samplingPoints"];
+        const nlohmann::json points =
+            z["kind"] == "texture" ? nlohmann::json::array({z["samplingPoint"]}) : z["samplingPoints"];
         for (const auto& s : points)
             for (const auto& v : z["floorPolygon"])
                 for (double y : {z["heightRange"][0].get<double>(), z["heightRange"][1].get<double>()}) {
@@ -91,7 +92,8 @@ TEST(PlanCli, DepthWallsJsonKeepsTheirOwnBound) {
         const auto& w = j["walls"][z["wall"].get<int>()];
         const walls::ScreenQuad quad{vec3(w["lowerLeft"]), vec3(w["lowerRight"]), vec3(w["upperLeft"])};
         const glm::dvec2 span(w["depthNear"].get<double>(), w["depthBehind"].get<double>());
-        const nlohmann::json points = z["kind"] == "texture" ? nlohmann::json::array({z["samplingPoint"]}) : z["samplingPoints"];
+        const nlohmann::json points =
+            z["kind"] == "texture" ? nlohmann::json::array({z["samplingPoint"]}) : z["samplingPoints"];
         for (const auto& p : points) {
             const glm::dvec3 s = vec3(p);
             const nlohmann::json& t = textures.at({z["cell"].get<int>(), z["wall"].get<int>(), s.x, s.y, s.z});
@@ -135,13 +137,14 @@ TEST(PlanCli, BadArgumentsFailClearly) {
 // replaced), writes a scene.json that `plan` accepts and a diagram.
 TEST(WallsCli, ProposesWallsThatPlanAccepts) {
     const auto dir = outputDir();
-    const CliResult gen = runCavewall({"generate", "house", "--out", (dir / "auto-house").string(), "--triangles", "2000"});
+    const CliResult gen =
+        runCavewall({"generate", "house", "--out", (dir / "auto-house").string(), "--triangles", "2000"});
     ASSERT_EQ(gen.exitCode, 0) << gen.err;
     std::filesystem::create_directories(dir / "auto-proposal");
     const auto scene = dir / "auto-proposal" / "scene.json";
     const CliResult r = runCavewall({"walls", (dir / "auto-house").string(), "--out", scene.string(), "--png",
-                                     (dir / "auto-proposal" / "top.png").string(), "--max-cells", "3",
-                                     "--max-res", "64", "--min-cell", "2"});
+                                     (dir / "auto-proposal" / "top.png").string(), "--max-cells", "3", "--max-res",
+                                     "64", "--min-cell", "2"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("<- chosen"));
     EXPECT_THAT(r.out, HasSubstr("(the input's own cells and walls)"));
@@ -164,8 +167,8 @@ TEST(WallsCli, ProposesWallsThatPlanAccepts) {
     EXPECT_EQ(walkPath(kept), walkPath(dir / "auto-house" / "scene.json"));
     EXPECT_NE(walkPath(scene), walkPath(kept));  // without the flag: the proposal's own loop
     const CliResult bare = runCavewall({"walls", (dir / "auto-house" / "house.glb").string(), "--out",
-                                        (dir / "auto-proposal" / "bare.json").string(), "--max-cells", "2",
-                                        "--max-res", "32", "--keep-paths"});
+                                        (dir / "auto-proposal" / "bare.json").string(), "--max-cells", "2", "--max-res",
+                                        "32", "--keep-paths"});
     EXPECT_NE(bare.exitCode, 0);
     EXPECT_THAT(bare.err, HasSubstr("--keep-paths: expected a walkPath in"));
     EXPECT_FALSE(std::filesystem::exists(dir / "auto-proposal" / "bare.json"));
@@ -176,12 +179,13 @@ TEST(WallsCli, ProposesWallsThatPlanAccepts) {
 // cell and writes "splitMetres" so that loading the proposal cuts it the same way.
 TEST(WallsCli, CutsAOneMeshRealModelIntoChunksAndProposesCells) {
     const auto dir = outputDir();
-    const std::filesystem::path model = std::filesystem::path(CAVEWALL_REAL_SCENES) / "SponzaLOD4" / "sponza_s_lod4.glb";
+    const std::filesystem::path model =
+        std::filesystem::path(CAVEWALL_REAL_SCENES) / "SponzaLOD4" / "sponza_s_lod4.glb";
     ASSERT_TRUE(std::filesystem::exists(model)) << model;
     std::filesystem::create_directories(dir / "auto-sponza");
     const auto scene = dir / "auto-sponza" / "scene.json";
-    const CliResult r = runCavewall({"walls", model.string(), "--out", scene.string(), "--max-cells", "3",
-                                     "--max-res", "32"});
+    const CliResult r =
+        runCavewall({"walls", model.string(), "--out", scene.string(), "--max-cells", "3", "--max-res", "32"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("split: 1 content object(s) wider than 8.0 m hold 100 % of the content triangles; "
                                  "models cut into chunks of 2.00 m: 1 objects -> "));
@@ -192,8 +196,9 @@ TEST(WallsCli, CutsAOneMeshRealModelIntoChunksAndProposesCells) {
     const CliResult plan = runCavewall({"plan", scene.string()});
     EXPECT_EQ(plan.exitCode, 0) << plan.err;
     // --split 0 leaves the one mesh whole: one cell is all a proposal can be.
-    const CliResult whole = runCavewall({"walls", model.string(), "--out", (dir / "auto-sponza" / "whole.json").string(),
-                                         "--max-cells", "3", "--max-res", "32", "--split", "0"});
+    const CliResult whole =
+        runCavewall({"walls", model.string(), "--out", (dir / "auto-sponza" / "whole.json").string(), "--max-cells",
+                     "3", "--max-res", "32", "--split", "0"});
     ASSERT_EQ(whole.exitCode, 0) << whole.err;
     EXPECT_THAT(whole.out, Not(HasSubstr("split:")));
     EXPECT_THAT(whole.out, HasSubstr("(1 cells, 0 virtual walls, 0 portals)"));
@@ -204,8 +209,8 @@ TEST(WallsCli, BadInputSaysWhatIsWrong) {
     const CliResult noOut = runCavewall({"walls", (dir / "nowhere.glb").string()});
     EXPECT_NE(noOut.exitCode, 0);
     EXPECT_THAT(noOut.err, HasSubstr("--out"));
-    const CliResult badBudget = runCavewall({"walls", (dir / "nowhere.glb").string(), "--out", (dir / "x.json").string(),
-                                             "--texture-budget", "-3"});
+    const CliResult badBudget = runCavewall(
+        {"walls", (dir / "nowhere.glb").string(), "--out", (dir / "x.json").string(), "--texture-budget", "-3"});
     EXPECT_NE(badBudget.exitCode, 0);
     EXPECT_THAT(badBudget.err, HasSubstr("--texture-budget"));
     EXPECT_FALSE(std::filesystem::exists(dir / "x.json"));

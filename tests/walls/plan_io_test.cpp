@@ -55,12 +55,14 @@ TEST(PlanIo, BadDocumentsNameThePath) {
         const char* message;
     } cases[] = {
         {"missing zones", R"({"alphaDeg": 10, "walls": []})", "plan.json: missing required key 'zones'"},
-        {"bad kind", R"({"alphaDeg": 10, "walls": [{"id": 0, "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "cells": [0, 1], "depthBehind": 2}],
+        {"bad kind",
+         R"({"alphaDeg": 10, "walls": [{"id": 0, "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "cells": [0, 1], "depthBehind": 2}],
                          "zones": [{"id": 0, "cell": 0, "wall": 0, "kind": "mesh", "floorPolygon": [[0,1],[1,1],[1,2]], "heightRange": [1, 2]}]})",
          "plan.json: zones[0].kind: expected one of \"texture\", \"blend\", \"geometry\", got \"mesh\""},
         {"wall out of range", R"({"alphaDeg": 10, "walls": [], "zones": [{"id": 0, "cell": 0, "wall": 3}]})",
          "zones[0].wall: expected an integer in [0, -1], got 3"},
-        {"alpha zero", R"({"alphaDeg": 0, "walls": [], "zones": []})", "alphaDeg: expected a number in [1e-09, 90], got 0"},
+        {"alpha zero", R"({"alphaDeg": 0, "walls": [], "zones": []})",
+         "alphaDeg: expected a number in [1e-09, 90], got 0"},
     };
     for (const auto& c : cases) {
         SCOPED_TRACE(c.name);

@@ -60,7 +60,8 @@ void expectPlanKeepsItsPromises(const scenes::SceneDescription& d, const Plan& p
                 // And random eyes against random scene points at random depths.
                 for (int i = 0; i < 20; ++i) {
                     const glm::dvec2 f = randomPointIn(zone.floorPolygon, rng);
-                    const glm::dvec3 eye(f.x, zone.heightRange.x + u(rng) * (zone.heightRange.y - zone.heightRange.x), f.y);
+                    const glm::dvec3 eye(f.x, zone.heightRange.x + u(rng) * (zone.heightRange.y - zone.heightRange.x),
+                                         f.y);
                     const glm::dvec3 q = quad.lowerLeft + u(rng) * (quad.lowerRight - quad.lowerLeft) +
                                          u(rng) * (quad.upperLeft - quad.lowerLeft);
                     const glm::dvec3 p = q + (0.1 + 100 * std::pow(u(rng), 3)) * (q - tex.samplingPoint);
@@ -225,7 +226,8 @@ TEST(Plan, OptionsAreValidated) {
     const Bad cases[] = {
         {"zero alpha", zeroAlpha, "alpha: expected an angle in (0, 90] degrees, got 0"},
         {"alpha above 90", bigAlpha, "got 91"},
-        {"zones thinner than two blends", thinZones, "minZoneSize: expected more than twice blendWidth (0.4 m), got 0.3 m"},
+        {"zones thinner than two blends", thinZones,
+         "minZoneSize: expected more than twice blendWidth (0.4 m), got 0.3 m"},
         {"negative blend", badBlend, "blendWidth: expected a finite width >= 0 m, got -1"},
     };
     for (const Bad& c : cases) {
@@ -241,8 +243,7 @@ TEST(Plan, AbsurdCellsAreRefusedNotPlanned) {
         SCOPED_TRACE(size);
         scenes::SceneDescription d = testing::hall();
         d.cells[0].region = {{6, 0}, {6, size}, {-6, size}, {-6, 0}};
-        EXPECT_THAT([&] { planZones(d); },
-                    ThrowsMessage<Error>(HasSubstr("cell 'front': extent of ")));
+        EXPECT_THAT([&] { planZones(d); }, ThrowsMessage<Error>(HasSubstr("cell 'front': extent of ")));
         EXPECT_THAT([&] { planZones(d); },
                     ThrowsMessage<Error>(HasSubstr(" m is too large to plan (expected at most 20000 m)")));
     }

@@ -170,9 +170,9 @@ TEST(TextureBlocks, OpaqueBc1BlocksDecodeOpaqueWhateverTheirColours) {
             std::uint8_t* t = &image.rgba[(std::size_t(y) * 64 + x) * 4];
             const int block = x / 4;
             for (int c = 0; c < 3; ++c)
-                t[c] = block % 4 == 0   ? std::uint8_t(17 * block)                        // one colour
-                       : block % 4 == 1 ? std::uint8_t((x + y) % 2 ? 250 : 3)             // two
-                       : block % 4 == 2 ? std::uint8_t(rng() % 256)                       // noise
+                t[c] = block % 4 == 0   ? std::uint8_t(17 * block)                          // one colour
+                       : block % 4 == 1 ? std::uint8_t((x + y) % 2 ? 250 : 3)               // two
+                       : block % 4 == 2 ? std::uint8_t(rng() % 256)                         // noise
                                         : std::uint8_t(128 + (x % 4) * 40 - (y % 4) * 30);  // a ramp
         }
     const scenes::Image decoded = decodeLevel(encodeLevel(image, TextureFormat::Bc1), TextureFormat::Bc1);
@@ -183,7 +183,8 @@ TEST(TextureBlocks, OpaqueBc1BlocksDecodeOpaqueWhateverTheirColours) {
     }
     // One-colour blocks within the 565 rounding, the rest as a four-colour fit allows.
     for (int x = 0; x < 64; x += 16)
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(decoded.rgba[std::size_t(x) * 4 + c], image.rgba[std::size_t(x) * 4 + c], 4);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(decoded.rgba[std::size_t(x) * 4 + c], image.rgba[std::size_t(x) * 4 + c], 4);
     EXPECT_LT(error / (64.0 * 16.0 * 3.0), 40.0);
 }
 
@@ -193,7 +194,8 @@ TEST(TextureBlocks, Bc1StoresOpaqueTexelsUnpremultiplied) {
     const float grey = 0.5f;
     const std::uint8_t premultiplied = encodeSrgbByte(grey * (160 / 255.0f));
     scenes::Image image{"edge", 4, 4, {}};
-    for (int i = 0; i < 16; ++i) image.rgba.insert(image.rgba.end(), {premultiplied, premultiplied, premultiplied, 160});
+    for (int i = 0; i < 16; ++i)
+        image.rgba.insert(image.rgba.end(), {premultiplied, premultiplied, premultiplied, 160});
     const scenes::Image decoded = decodeLevel(encodeLevel(image, TextureFormat::Bc1), TextureFormat::Bc1);
     EXPECT_EQ(decoded.rgba[3], 255);
     EXPECT_NEAR(decoded.rgba[0], encodeSrgbByte(grey), 4);  // 188 in sRGB; 565 steps are 8 and 4 levels
@@ -276,20 +278,22 @@ TEST(TextureBlocks, DamagedFilesGiveClearErrors) {
     cases.push_back({"data cut", bytes.substr(0, bytes.size() - 3), "(the file is truncated)"});
     cases.push_back({"level size", with(24, 1'000'000), "MIP level 0: expected 1000000 stored bytes"});
     cases.push_back({"corrupt", flipped, "MIP level 0: expected"});
-    cases.push_back({"extra", bytes + "xx", "end: expected " + std::to_string(bytes.size()) + " bytes, got " +
-                                                std::to_string(bytes.size() + 2) + " (extra bytes)"});
+    cases.push_back({"extra", bytes + "xx",
+                     "end: expected " + std::to_string(bytes.size()) + " bytes, got " +
+                         std::to_string(bytes.size() + 2) + " (extra bytes)"});
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
         const std::filesystem::path file = folder / (std::string(c.name) + ".bct");
         test::writeFile(file, c.bytes);
-        EXPECT_THAT([&] { readBlockFile(file); }, ThrowsMessage<Error>(AllOf(HasSubstr(file.string() + ": "),
-                                                                               HasSubstr(c.expected))));
+        EXPECT_THAT([&] { readBlockFile(file); },
+                    ThrowsMessage<Error>(AllOf(HasSubstr(file.string() + ": "), HasSubstr(c.expected))));
     }
     // A corrupt level says what it expected and what it got.
     test::writeFile(folder / "c.bct", flipped);
     EXPECT_THAT([&] { readBakedTexture(folder / "c.bct"); },
                 ThrowsMessage<Error>(AllOf(HasSubstr("inflate to 3600 bytes of bc1 blocks, got"))));
-    EXPECT_THAT([&] { readBlockFile(folder / "missing.bct"); }, ThrowsMessage<Error>(HasSubstr("missing.bct: cannot open")));
+    EXPECT_THAT([&] { readBlockFile(folder / "missing.bct"); },
+                ThrowsMessage<Error>(HasSubstr("missing.bct: cannot open")));
 }
 
 }  // namespace

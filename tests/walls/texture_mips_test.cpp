@@ -31,12 +31,15 @@ glm::dvec4 texel(const scenes::Image& i, int x, int y) {
 glm::dvec3 unpremultiplied(const scenes::Image& i, int x, int y) {
     const glm::dvec4 t = texel(i, x, y);
     const double a = t.a / 255.0;
-    return glm::dvec3(srgbToLinear(float(t.r / 255.0)), srgbToLinear(float(t.g / 255.0)), srgbToLinear(float(t.b / 255.0))) / a;
+    return glm::dvec3(srgbToLinear(float(t.r / 255.0)), srgbToLinear(float(t.g / 255.0)),
+                      srgbToLinear(float(t.b / 255.0))) /
+           a;
 }
 
 // The formula encodeSrgbByte replaces (texture_mips.h), evaluated directly.
 std::uint8_t formulaByte(float v) {
-    return static_cast<std::uint8_t>(std::lround(std::clamp(linearToSrgb(std::clamp(v, 0.0f, 1.0f)), 0.0f, 1.0f) * 255.0f));
+    return static_cast<std::uint8_t>(
+        std::lround(std::clamp(linearToSrgb(std::clamp(v, 0.0f, 1.0f)), 0.0f, 1.0f) * 255.0f));
 }
 
 TEST(TextureMips, TableEncodingIsTheFormulaExactly) {
@@ -119,9 +122,11 @@ TEST(TextureMips, LevelSizesHalveDownToOneTexel) {
                           {64, 32, {{64, 32}, {32, 16}, {16, 8}, {8, 4}, {4, 2}, {2, 1}, {1, 1}}}};
     for (const Case& c : cases) {
         SCOPED_TRACE(std::to_string(c.w) + " x " + std::to_string(c.h));
-        const auto levels = premultipliedMipChain(image(c.w, c.h, std::vector<std::uint8_t>(std::size_t(c.w) * c.h * 4, 200)));
+        const auto levels =
+            premultipliedMipChain(image(c.w, c.h, std::vector<std::uint8_t>(std::size_t(c.w) * c.h * 4, 200)));
         ASSERT_EQ(levels.size(), c.sizes.size());
-        for (std::size_t i = 0; i < levels.size(); ++i) EXPECT_EQ(glm::ivec2(levels[i].width, levels[i].height), c.sizes[i]);
+        for (std::size_t i = 0; i < levels.size(); ++i)
+            EXPECT_EQ(glm::ivec2(levels[i].width, levels[i].height), c.sizes[i]);
     }
 }
 
@@ -145,7 +150,8 @@ TEST(TextureMips, BoxFilterKeepsMeanCoverageAndColour) {
     };
     const glm::dvec4 base = mean(levels[0]);
     for (std::size_t i = 1; i < levels.size(); ++i)
-        for (int k = 0; k < 4; ++k) EXPECT_NEAR(mean(levels[i])[k], base[k], 0.006) << "level " << i << " channel " << k;
+        for (int k = 0; k < 4; ++k)
+            EXPECT_NEAR(mean(levels[i])[k], base[k], 0.006) << "level " << i << " channel " << k;
 }
 
 TEST(TextureMips, FileRoundTripIsExactTiledAndMipMapped) {
@@ -156,7 +162,8 @@ TEST(TextureMips, FileRoundTripIsExactTiledAndMipMapped) {
     writeMipFile(file, levels, {32, "zip"});
     const auto back = scenes::readMipLevels(file);
     ASSERT_EQ(back.size(), levels.size());
-    for (std::size_t i = 0; i < levels.size(); ++i) EXPECT_EQ(back[i].rgba, levels[i].rgba) << "level " << i;  // pure data: exact
+    for (std::size_t i = 0; i < levels.size(); ++i)
+        EXPECT_EQ(back[i].rgba, levels[i].rgba) << "level " << i;  // pure data: exact
 
     auto in = OIIO::ImageInput::open(file.string());
     ASSERT_TRUE(in);
@@ -172,8 +179,11 @@ TEST(TextureMips, FileRoundTripIsExactTiledAndMipMapped) {
 TEST(TextureMips, WriteRejectsBadInput) {
     const auto levels = premultipliedMipChain(image(4, 4, std::vector<std::uint8_t>(64, 255)));
     const std::filesystem::path file = std::filesystem::temp_directory_path() / "cavewall-mips-test" / "bad.tx";
-    EXPECT_THAT([&] { writeMipFile(file, levels, {10, "zip"}); },
-                ThrowsMessage<Error>(HasSubstr("tile size: expected a multiple of 16 in [16, 1024], got 10")));
+    EXPECT_THAT(
+        [&] {
+            writeMipFile(file, levels, {10, "zip"});
+        },
+        ThrowsMessage<Error>(HasSubstr("tile size: expected a multiple of 16 in [16, 1024], got 10")));
     std::vector<scenes::Image> skipped{levels[0], levels[2]};
     EXPECT_THAT([&] { writeMipFile(file, skipped); },
                 ThrowsMessage<Error>(HasSubstr("MIP level 1: expected half the size of level 0, got 1 x 1")));

@@ -34,7 +34,8 @@ BakeManifest manifest() {
     BakeManifest m;
     for (int i = 0; i < 10; ++i) {
         const std::string file = "tex_" + std::to_string(i);
-        m.textures.push_back({i, 0, 0, {}, {256, 256}, file, std::filesystem::file_size(dir / file), hashFile(dir / file)});
+        m.textures.push_back(
+            {i, 0, 0, {}, {256, 256}, file, std::filesystem::file_size(dir / file), hashFile(dir / file)});
     }
     return m;
 }
@@ -221,8 +222,8 @@ TEST(TexturePager, TakeNextGivesWantedNowFirstAndATakenTextureIsNotDecodedAgain)
     const int before = decodes;
     std::optional<DecodedTexture> first = pager.takeNext(false);
     ASSERT_TRUE(first);
-    EXPECT_EQ(first->id, 4);                      // wanted now, though decoded second
-    EXPECT_FALSE(pager.takeNext(true));           // no other wanted-now texture is ready
+    EXPECT_EQ(first->id, 4);             // wanted now, though decoded second
+    EXPECT_FALSE(pager.takeNext(true));  // no other wanted-now texture is ready
     std::optional<DecodedTexture> second = pager.takeNext(false);
     ASSERT_TRUE(second);
     EXPECT_EQ(second->id, 3);
@@ -246,7 +247,8 @@ TEST(TexturePager, PagesBlockFilesAsCompressedBytes) {
     for (int i = 0; i < 2; ++i) {
         const std::string file = "tex_" + std::to_string(i) + ".bct";
         writeBlockFile(dir / file, encodeLevels(premultipliedMipChain(image), TextureFormat::Bc1));
-        m.textures.push_back({i, 0, 0, {}, {256, 256}, file, std::filesystem::file_size(dir / file), hashFile(dir / file)});
+        m.textures.push_back(
+            {i, 0, 0, {}, {256, 256}, file, std::filesystem::file_size(dir / file), hashFile(dir / file)});
     }
     TexturePager pager(dir, m, 4.0, readBakedTexture);
     pager.request({0, 1}, {});

@@ -23,10 +23,15 @@ enum Cells { kHall, kKitchen, kAnnex, kGarden, kCellar };
 scenes::SceneDescription house() {
     scenes::SceneDescription d;
     auto square = [](double x, double z) { return Polygon2{{x, z}, {x + 4, z}, {x + 4, z + 4}, {x, z + 4}}; };
-    d.cells = {{"hall", square(0, 0), 0}, {"kitchen", square(4, 0), 0}, {"annex", square(8, 0), 0},
-               {"garden", square(0, 4), 0}, {"cellar", square(4, 4), 0}};
-    scenes::VirtualWall door{"door", {4, 0, 1.5}, {4, 0, 2.5}, {4, 2.1, 1.5}, {kHall, kKitchen}, scenes::WallKind::Portal};
-    scenes::VirtualWall cut{"hall|garden", {4, 0, 4}, {0, 0, 4}, {4, 3, 4}, {kHall, kGarden}, scenes::WallKind::Virtual};
+    d.cells = {{"hall", square(0, 0), 0},
+               {"kitchen", square(4, 0), 0},
+               {"annex", square(8, 0), 0},
+               {"garden", square(0, 4), 0},
+               {"cellar", square(4, 4), 0}};
+    scenes::VirtualWall door{"door",        {4, 0, 1.5},       {4, 0, 2.5},
+                             {4, 2.1, 1.5}, {kHall, kKitchen}, scenes::WallKind::Portal};
+    scenes::VirtualWall cut{"hall|garden", {4, 0, 4},        {0, 0, 4},
+                            {4, 3, 4},     {kHall, kGarden}, scenes::WallKind::Virtual};
     d.walls = {door, cut};
     d.realWalls = {{"hall|kitchen a", {4, 0, 0}, {4, 0, 1.5}, {4, 3, 0}},
                    {"hall|kitchen b", {4, 0, 2.5}, {4, 0, 4}, {4, 3, 2.5}},
@@ -37,7 +42,7 @@ scenes::SceneDescription house() {
 
 TEST(Visibility, OpenBoundariesAreWhatNoWallCovers) {
     const auto d = house();
-    EXPECT_NEAR(openBoundaryLength(d, kKitchen, kAnnex), 4.0, 1e-12);   // nothing on x = 8
+    EXPECT_NEAR(openBoundaryLength(d, kKitchen, kAnnex), 4.0, 1e-12);  // nothing on x = 8
     EXPECT_NEAR(openBoundaryLength(d, kHall, kKitchen), 0.0, 1e-12);   // real walls + the door
     EXPECT_NEAR(openBoundaryLength(d, kHall, kGarden), 0.0, 1e-12);    // the virtual wall
     EXPECT_NEAR(openBoundaryLength(d, kHall, kAnnex), 0.0, 1e-12);     // not neighbours
@@ -68,8 +73,8 @@ TEST(Visibility, HouseTable) {
             SCOPED_TRACE(d.cells[a].name + " -> " + d.cells[b].name);
             EXPECT_EQ(t.at(a, b), expected[a][b]) << toString(t.at(a, b));
         }
-    EXPECT_EQ(t.throughWalls(kHall, kAnnex), std::vector<int>{0});    // the door
-    EXPECT_EQ(t.throughWalls(kHall, kGarden), std::vector<int>{1});   // the virtual wall
+    EXPECT_EQ(t.throughWalls(kHall, kAnnex), std::vector<int>{0});   // the door
+    EXPECT_EQ(t.throughWalls(kHall, kGarden), std::vector<int>{1});  // the virtual wall
     EXPECT_EQ(t.throughWalls(kKitchen, kGarden), std::vector<int>{0});
 }
 
@@ -95,7 +100,8 @@ TEST(Visibility, ClassifiesBoxesAgainstAWall) {
         {"above the wall", box({-1, 3.5, -1}, {1, 4, 1}), Placement::Beside, Placement::Beside},
         // Crosses the plane only in its corner region beyond x = 2 although its box spans
         // x = 1.9..: the section at z = 0 is x in [1.9, 2.5], which overlaps [-2, 2].
-        {"just overlapping the side", box({1.9, 0, -0.1}, {2.5, 0.5, 0.1}), Placement::Intersecting, Placement::Intersecting},
+        {"just overlapping the side", box({1.9, 0, -0.1}, {2.5, 0.5, 0.1}), Placement::Intersecting,
+         Placement::Intersecting},
     };
     for (const auto& c : cases) {
         SCOPED_TRACE(c.name);
@@ -114,7 +120,7 @@ TEST(Visibility, WallContentsAndDepthBehind) {
         scene.objects[i].cell = cell;
         return i;
     };
-    const int deep = place({0, 0.5, -7.5}, scenes::Role::Content, 1);       // 8 m behind at its far face
+    const int deep = place({0, 0.5, -7.5}, scenes::Role::Content, 1);  // 8 m behind at its far face
     const int shallow = place({2, 0.5, -1}, scenes::Role::Content, 1);
     const int structure = place({0, 0.5, -9.5}, scenes::Role::Structure, 1);  // never baked
     const int crossing = place({-3, 0.5, 0}, scenes::Role::Content, 0);
@@ -132,8 +138,8 @@ TEST(Visibility, WallContentsAndDepthBehind) {
 
 // The rule of wallContents (visibility.h) applied to every object, without any filtering: the
 // reference the filtered implementation must equal.
-WallContents everyObjectContents(const scenes::Scene& scene, const scenes::SceneDescription& d, const VisibilityTable& t,
-                                 int wall, int side) {
+WallContents everyObjectContents(const scenes::Scene& scene, const scenes::SceneDescription& d,
+                                 const VisibilityTable& t, int wall, int side) {
     WallContents out;
     const scenes::VirtualWall& w = d.walls[wall];
     const display::ScreenQuad q{w.lowerLeft, w.lowerRight, w.upperLeft};
@@ -175,8 +181,10 @@ TEST(Visibility, WallContentsEqualsClassifyingEveryObject) {
             // Every third box is centred near a wall's rectangle (within a metre of its plane).
             const scenes::VirtualWall& w = d.walls[i % d.walls.size()];
             const glm::dvec3 onWall = w.lowerLeft + (u(rng) * 1.4 - 0.2) * (w.lowerRight - w.lowerLeft) +
-                                      (u(rng) * 1.4 - 0.2) * (w.upperLeft - w.lowerLeft) + glm::dvec3(u(rng) - 0.5, 0, u(rng) - 0.5);
-            const glm::dvec3 centre = i % 3 == 0 ? onWall : lo - 1.0 + (hi - lo + 2.0) * glm::dvec3(u(rng), u(rng), u(rng));
+                                      (u(rng) * 1.4 - 0.2) * (w.upperLeft - w.lowerLeft) +
+                                      glm::dvec3(u(rng) - 0.5, 0, u(rng) - 0.5);
+            const glm::dvec3 centre =
+                i % 3 == 0 ? onWall : lo - 1.0 + (hi - lo + 2.0) * glm::dvec3(u(rng), u(rng), u(rng));
             const glm::dvec3 half = glm::dvec3(u(rng), u(rng), u(rng)) * (i % 10 == 0 ? 4.0 : 0.6);
             o.worldBounds.add(centre - half), o.worldBounds.add(centre + half);
             o.cell = int(u(rng) * (d.cells.size() + 2)) - 1;  // -1 (unknown) .. cellCount (out of the table)
@@ -186,7 +194,8 @@ TEST(Visibility, WallContentsEqualsClassifyingEveryObject) {
         // A box exactly on a wall's plane edge-to-edge with its rectangle, and an empty one.
         const scenes::VirtualWall& w0 = d.walls[0];
         scene.objects.push_back({});
-        scene.objects.back().worldBounds.add(w0.lowerLeft), scene.objects.back().worldBounds.add(w0.upperLeft + (w0.lowerRight - w0.lowerLeft));
+        scene.objects.back().worldBounds.add(w0.lowerLeft),
+            scene.objects.back().worldBounds.add(w0.upperLeft + (w0.lowerRight - w0.lowerLeft));
         scene.objects.push_back({});
         const VisibilityTable t = computeVisibility(d);
         for (int wall = 0; wall < int(d.walls.size()); ++wall)

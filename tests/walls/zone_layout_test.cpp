@@ -15,8 +15,13 @@ namespace {
 std::vector<SideInput> inputsOf(const Plan& plan, const scenes::SceneDescription& d) {
     std::vector<SideInput> inputs;
     for (const WallSide& s : plan.sides)
-        inputs.push_back({s.cell, s.wall, s.side, {s.origin, s.along, s.inward}, d.cells[s.cell].region,
-                          plan.walls[s.wall].quad, d.headHeightRange});
+        inputs.push_back({s.cell,
+                          s.wall,
+                          s.side,
+                          {s.origin, s.along, s.inward},
+                          d.cells[s.cell].region,
+                          plan.walls[s.wall].quad,
+                          d.headHeightRange});
     return inputs;
 }
 
@@ -74,7 +79,8 @@ TEST(ZoneLayout, PlanSidesAfterExistingSidesContinuesTheirIds) {
     const scenes::SceneDescription d = testing::threeInARow();
     const Plan planned = planZones(d);
     const std::vector<SideInput> inputs = inputsOf(planned, d);
-    const std::vector<SideInput> firstHalf(inputs.begin(), inputs.begin() + 2), secondHalf(inputs.begin() + 2, inputs.end());
+    const std::vector<SideInput> firstHalf(inputs.begin(), inputs.begin() + 2),
+        secondHalf(inputs.begin() + 2, inputs.end());
     Plan serial = wallsOnly(planned), batched = wallsOnly(planned);
     for (const SideInput& in : inputs) serial.sides.push_back(planSide(serial, in, serial.zones));
     batched.sides = planSides(batched, firstHalf, batched.zones);

@@ -110,7 +110,8 @@ TEST_F(BakeCacheTest, DamagedFileIsReBakedAlone) {
         void (*apply)(const std::filesystem::path&);
     };
     const Damage damages[] = {
-        {"torn", [](const std::filesystem::path& f) { std::filesystem::resize_file(f, std::filesystem::file_size(f) / 2); }},
+        {"torn",
+         [](const std::filesystem::path& f) { std::filesystem::resize_file(f, std::filesystem::file_size(f) / 2); }},
         {"one byte changed",
          [](const std::filesystem::path& f) {
              std::fstream s(f, std::ios::in | std::ios::out | std::ios::binary);
@@ -151,12 +152,13 @@ TEST_F(BakeCacheTest, SwappedFilesAreReMadeAndAllListed) {
     std::filesystem::rename(b, a);
     std::filesystem::rename(tmp, b);
     const BakeResult again = bakeScene(request);
-    EXPECT_EQ(again.baked + again.reused, n) << again.baked << " baked, " << again.reused << " reused, "
-                                                            << again.linked << " linked";
+    EXPECT_EQ(again.baked + again.reused, n)
+        << again.baked << " baked, " << again.reused << " reused, " << again.linked << " linked";
     ASSERT_EQ(static_cast<int>(again.manifest.textures.size()), n);
     const walls::BakeManifest onDisk = walls::readManifest(again.folder);
     ASSERT_EQ(static_cast<int>(onDisk.textures.size()), n);
-    for (const walls::BakedTexture& t : onDisk.textures) EXPECT_TRUE(walls::textureFileValid(again.folder, t)) << t.file;
+    for (const walls::BakedTexture& t : onDisk.textures)
+        EXPECT_TRUE(walls::textureFileValid(again.folder, t)) << t.file;
     EXPECT_EQ(withoutStamps(onDisk), withoutStamps(first.manifest));
 }
 
@@ -206,7 +208,7 @@ TEST_F(BakeCacheTest, ChangeTheStartUpCheckCannotSeeIsRefusedByThePager) {
     EXPECT_TRUE(pager.hasFailed(t.id));
     EXPECT_FALSE(pager.hasFailed(first.manifest.textures[1].id));
     EXPECT_EQ(pager.stats().failures, 1);
-    ASSERT_TRUE(pager.takeNext(false));   // only the intact texture can be uploaded
+    ASSERT_TRUE(pager.takeNext(false));  // only the intact texture can be uploaded
     EXPECT_FALSE(pager.takeNext(false));
 
     std::filesystem::last_write_time(file, stamped + std::chrono::seconds(5));
@@ -224,7 +226,7 @@ TEST_F(BakeCacheTest, ChangedAlphaGetsANewKey) {
     EXPECT_NE(second.folder, first.folder);
     EXPECT_EQ(second.manifest.alphaDeg, 20.0);
     EXPECT_TRUE(std::filesystem::exists(first.folder / "manifest.json"));  // the old bake stays valid
-    request.settings.maxResolution = 64;  // a bake setting is part of the key too
+    request.settings.maxResolution = 64;                                   // a bake setting is part of the key too
     EXPECT_NE(bakeScene(request).key, second.key);
 }
 
@@ -321,7 +323,8 @@ TEST_F(BakeCacheTest, BadSettingsAndFoldersAreErrors) {
     EXPECT_THAT([&] { bakeScene(request); }, ThrowsMessage<Error>(HasSubstr(": cannot create the bake folder")));
     request.cache = root / "cache";
     request.settings.jobs = 0;
-    EXPECT_THAT([&] { bakeScene(request); }, ThrowsMessage<Error>(HasSubstr("bake settings: jobs: expected [1, 64], got 0")));
+    EXPECT_THAT([&] { bakeScene(request); },
+                ThrowsMessage<Error>(HasSubstr("bake settings: jobs: expected [1, 64], got 0")));
     request.settings.jobs = 1;
     request.settings.tileSize = 40;
     EXPECT_THAT([&] { bakeScene(request); },
@@ -399,7 +402,6 @@ TEST_F(BakeCacheTest, DepthBakesKeyTheirKindAndKeepDepthFilesValid) {
     const BakeResult repaired = bakeScene(request);
     EXPECT_EQ(repaired.baked, 1);
     EXPECT_TRUE(walls::textureFileValid(repaired.folder, repaired.manifest.textures[0]));
-
 }
 
 }  // namespace

@@ -32,8 +32,12 @@ TEST_F(BakeCli, BakesAGeneratedPlantAndReusesItsCache) {
     std::filesystem::remove_all(out);
     const CliResult gen = runCavewall({"generate", "plant", "--triangles", "20000", "--out", (out / "plant").string()});
     ASSERT_EQ(gen.exitCode, 0) << gen.err;
-    const std::vector<std::string> bake{"bake", (out / "plant").string(), "--cache", (out / "cache").string(),
-                                        "--alpha", "30", "--min-zone", "5", "--max-res", "64", "--jobs", "2"};
+    const std::vector<std::string> bake{"bake",       (out / "plant").string(),
+                                        "--cache",    (out / "cache").string(),
+                                        "--alpha",    "30",
+                                        "--min-zone", "5",
+                                        "--max-res",  "64",
+                                        "--jobs",     "2"};
     const CliResult first = runCavewall(bake);
     ASSERT_EQ(first.exitCode, 0) << first.err;
     // The last line is the bake folder, under the cache, holding a manifest of every texture.
@@ -67,7 +71,8 @@ TEST_F(BakeCli, BadArgumentsAreClearErrors) {
         {"lod texels out of range", {"bake", "x", "--lod-texels", "5"}, "--lod-texels"},
         {"negative limit", {"bake", "x", "--limit", "-1"}, "--limit"},
         {"unknown flag", {"bake", "x", "--colour", "red"}, "--colour"},
-        {"texture format", {"bake", "x", "--texture-format", "dxt9"},
+        {"texture format",
+         {"bake", "x", "--texture-format", "dxt9"},
          "--texture-format: expected one of rgba8, bc1, bc3, got 'dxt9'"},
         {"missing scene", {"bake", "/nonexistent/scene.json", "--cache", "/tmp"}, "/nonexistent/scene.json"},
     };

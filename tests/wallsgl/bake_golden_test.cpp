@@ -75,13 +75,15 @@ TEST_F(BakeGoldenTest, BakedTextureMatchesGeometryFromItsSamplingPoint) {
         ASSERT_EQ(frustum.guard, display::EyeGuard::None);  // the sampling point is in front of its side
 
         const OffscreenTarget target(baked.resolution);
-        gl::ViewTarget view{target.framebuffer(), {0, 0, baked.resolution.x, baked.resolution.y}, kClear, glm::bvec4(true)};
+        gl::ViewTarget view{
+            target.framebuffer(), {0, 0, baked.resolution.x, baked.resolution.y}, kClear, glm::bvec4(true)};
         render::DrawFilter filter;
         filter.objects = &shown[side];
         renderer.renderFrustum(frustum, glm::dmat4(1.0), view, filter);
         const scenes::Image geometry = target.read("geometry");
 
-        const std::vector<scenes::Image> levels = scenes::readMipLevels(request.cache / walls::hex64(result.key) / baked.file);
+        const std::vector<scenes::Image> levels =
+            scenes::readMipLevels(request.cache / walls::hex64(result.key) / baked.file);
         ASSERT_EQ(levels[0].width, baked.resolution.x);
         const gl::GlObject texture = uploadWallTexture(levels);
         target.bindAndClear(kClear);
@@ -91,7 +93,8 @@ TEST_F(BakeGoldenTest, BakedTextureMatchesGeometryFromItsSamplingPoint) {
         const metrics::ImageComparison c = metrics::compareImages(wall, geometry);
         EXPECT_TRUE(c.passes()) << c.describe();
         if (!c.passes()) {
-            const std::filesystem::path out = cavewall::testing::testOutputFolder("bake_golden/texture_" + std::to_string(baked.id));
+            const std::filesystem::path out =
+                cavewall::testing::testOutputFolder("bake_golden/texture_" + std::to_string(baked.id));
             scenes::writeImage(out / "actual.png", wall);
             scenes::writeImage(out / "expected.png", geometry);
             scenes::writeImage(out / "diff.png", metrics::differenceImage(wall, geometry));

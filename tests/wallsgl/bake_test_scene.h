@@ -32,8 +32,8 @@ inline scenes::GeneratedScene bakeTestScene(BakeTestObjects* objects = nullptr, 
     scenes::Scene& s = g.scene;
     s.name = "bake-test";
     BakeTestObjects o{};
-    s.meshes.push_back(scenes::makeTiledQuad({-3, 0, 8}, {6, 0, 0}, {0, 0, -16}, 6, 16, {0.5f, 0.5f, 0.5f, 1},
-                                             {0.3f, 0.3f, 0.3f, 1}));
+    s.meshes.push_back(
+        scenes::makeTiledQuad({-3, 0, 8}, {6, 0, 0}, {0, 0, -16}, 6, 16, {0.5f, 0.5f, 0.5f, 1}, {0.3f, 0.3f, 0.3f, 1}));
     o.floor = scenes::addObject(s, 0, glm::dmat4(1.0), "structure/floor", scenes::Role::Structure);
     o.red = addBox(s, {1.0f, 1.5f, 1.0f}, {0.9f, 0.1f, 0.1f, 1}, {-1.2 + shift, 0.75, -2.5}, "red");
     o.green = addBox(s, {1.5f, 2.5f, 0.8f}, {0.1f, 0.8f, 0.2f, 1}, {1.0, 1.25, -5.0}, "green");

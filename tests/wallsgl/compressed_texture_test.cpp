@@ -116,7 +116,8 @@ TEST_F(CompressedTextureTest, BlocksStayCompressedAndDecodeLikeRgba8) {
         std::vector<scenes::Image> decoded;
         for (const walls::BlockLevel& l : blocks.blocks) decoded.push_back(walls::decodeLevel(l, format));
         const GlObject reference = uploadWallTexture(decoded);
-        const scenes::Image gpu = drawFilling(drawer, compressed.id(), 64), cpu = drawFilling(drawer, reference.id(), 64);
+        const scenes::Image gpu = drawFilling(drawer, compressed.id(), 64),
+                            cpu = drawFilling(drawer, reference.id(), 64);
         const metrics::ImageComparison c = metrics::compareImages(gpu, cpu);
         EXPECT_TRUE(c.passes()) << c.describe();
         // Not vacuous: the square is drawn over the grey.
@@ -139,8 +140,8 @@ TEST_F(CompressedTextureTest, BandByBandUploadsHoldTheSameTexelsAsAWholeUpload) 
         for (TextureFormat format : {TextureFormat::Rgba8, TextureFormat::Bc1, TextureFormat::Bc3}) {
             SCOPED_TRACE(std::string(walls::textureFormatName(format)) + " " + std::to_string(image.width));
             const std::vector<scenes::Image> rgba = walls::premultipliedMipChain(image);
-            const walls::TextureLevels levels = format == TextureFormat::Rgba8 ? walls::TextureLevels(rgba)
-                                                                               : walls::encodeLevels(rgba, format);
+            const walls::TextureLevels levels =
+                format == TextureFormat::Rgba8 ? walls::TextureLevels(rgba) : walls::encodeLevels(rgba, format);
             const GlObject whole = uploadWallTexture(levels);
             const GlObject banded = createWallTexture(levels);
             walls::UploadCursor cursor(levels);
@@ -152,8 +153,8 @@ TEST_F(CompressedTextureTest, BandByBandUploadsHoldTheSameTexelsAsAWholeUpload) 
             EXPECT_GT(bands, static_cast<int>(levels.count()));  // level 0 took several bands
             ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
             for (std::size_t l = 0; l < levels.count(); ++l) {
-                const std::size_t bytes = format == TextureFormat::Rgba8 ? levels.rgba[l].rgba.size()
-                                                                         : levels.blocks[l].blocks.size();
+                const std::size_t bytes =
+                    format == TextureFormat::Rgba8 ? levels.rgba[l].rgba.size() : levels.blocks[l].blocks.size();
                 std::vector<std::uint8_t> a(bytes, 1), b(bytes, 2);
                 glPixelStorei(GL_PACK_ALIGNMENT, 1);
                 if (format == TextureFormat::Rgba8) {
@@ -221,7 +222,8 @@ TEST_F(CompressedTextureTest, CompressedBakeRendersWithinToleranceOfRgba8) {
                 return target.read(file);
             };
             ASSERT_EQ(compressed->manifest.textures[i].id, baked.id);
-            error += metrics::squaredError(draw(*compressed, compressed->manifest.textures[i].file), draw(rgba, baked.file));
+            error +=
+                metrics::squaredError(draw(*compressed, compressed->manifest.textures[i].file), draw(rgba, baked.file));
         }
         const std::string name(walls::textureFormatName(compressed == &bc1 ? TextureFormat::Bc1 : TextureFormat::Bc3));
         std::cout << name << ": pooled PSNR against the rgba8 bake over " << rgba.manifest.textures.size()

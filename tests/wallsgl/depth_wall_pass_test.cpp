@@ -143,7 +143,8 @@ void DepthWallPassTest::matchesGeometryExceptWherePredicted(bool halved) {
     const gl::DepthWallPass depthPass;
     gl::DepthWallDraw d{kQuad, {}, 1};
     d.layers[0] = {colourTexture.id(), depthTexture.depth.id(), kSample, range, 1.0f, depthTexture.skip.id()};
-    const scenes::Image depthWall = drawWith([&](gl::FrameStats& s) { depthPass.draw({d}, frustum, glm::dmat4(1.0), 0, s); });
+    const scenes::Image depthWall =
+        drawWith([&](gl::FrameStats& s) { depthPass.draw({d}, frustum, glm::dmat4(1.0), 0, s); });
     const gl::WallPass flatPass;
     const scenes::Image flatWall = drawWith([&](gl::FrameStats& s) {
         flatPass.draw({gl::WallDraw{kQuad, {colourTexture.id()}, {1.0f}, 1}}, frustum, glm::dmat4(1.0), 0, s);
@@ -156,7 +157,8 @@ void DepthWallPassTest::matchesGeometryExceptWherePredicted(bool halved) {
         const int n = 2 + static_cast<int>(glm::length(b - a) / (0.25 * pitch));
         for (int k = 0; k <= n; ++k) {
             const glm::dvec2 p = a + (b - a) * (double(k) / n);
-            const int x = static_cast<int>(std::floor(p.x / pitch)), y = static_cast<int>(std::floor((frame.height - p.y) / pitch));
+            const int x = static_cast<int>(std::floor(p.x / pitch)),
+                      y = static_cast<int>(std::floor((frame.height - p.y) / pitch));
             for (int dy = -slack; dy <= slack; ++dy)  // either side: depth texel and pixel rounding
                 for (int dx = -slack; dx <= slack; ++dx)
                     if (x + dx >= 0 && y + dy >= 0 && x + dx < kWidth && y + dy < kHeight)
@@ -169,13 +171,23 @@ void DepthWallPassTest::matchesGeometryExceptWherePredicted(bool halved) {
             const glm::dvec2 t = walls::texelCentre(frame, kWidth, kHeight, i, j);
             if (i == 0 || j == 0 || i == kWidth - 1 || j == kHeight - 1) {
                 // The border band: from the edge inwards by v . n_in (walls::borderAngle).
-                const glm::dvec2 edge(i == 0 ? 0.0 : i == kWidth - 1 ? frame.width : t.x,
-                                      j == 0 ? frame.height : j == kHeight - 1 ? 0.0 : t.y);
-                const glm::dvec2 inward(i == 0 ? 1.0 : i == kWidth - 1 ? -1.0 : 0.0, j == 0 ? -1.0 : j == kHeight - 1 ? 1.0 : 0.0);
+                const glm::dvec2 edge(i == 0            ? 0.0
+                                      : i == kWidth - 1 ? frame.width
+                                                        : t.x,
+                                      j == 0             ? frame.height
+                                      : j == kHeight - 1 ? 0.0
+                                                         : t.y);
+                const glm::dvec2 inward(i == 0            ? 1.0
+                                        : i == kWidth - 1 ? -1.0
+                                                          : 0.0,
+                                        j == 0             ? -1.0
+                                        : j == kHeight - 1 ? 1.0
+                                                           : 0.0);
                 const glm::dvec2 v = walls::parallaxVector(eye, sample, edge);
                 if (glm::dot(v, inward) > 0.0) mark(edge, edge + inward * glm::dot(v, inward), 2);
             }
-            for (glm::ivec2 n : {glm::ivec2(i + 1, j), glm::ivec2(i, j + 1), glm::ivec2(i - 1, j), glm::ivec2(i, j - 1)}) {
+            for (glm::ivec2 n :
+                 {glm::ivec2(i + 1, j), glm::ivec2(i, j + 1), glm::ivec2(i - 1, j), glm::ivec2(i, j - 1)}) {
                 if (n.x < 0 || n.y < 0 || n.x >= kWidth || n.y >= kHeight) continue;
                 const float b = depth.at(n.x, n.y);
                 if (!(b > a)) continue;  // from the near texel (a) to the far one (b)
@@ -196,8 +208,10 @@ void DepthWallPassTest::matchesGeometryExceptWherePredicted(bool halved) {
                 ++(inside ? wrongInside : wrongOutside);
                 // Runs along rows in a step's interval away from the border band (the bound's
                 // step term: the eye moved along x, so the opening steps open along rows).
-                if (mask == 1) widestRun = std::max(widestRun, ++run);
-                else run = 0;
+                if (mask == 1)
+                    widestRun = std::max(widestRun, ++run);
+                else
+                    run = 0;
             } else {
                 run = 0;
             }
@@ -205,10 +219,11 @@ void DepthWallPassTest::matchesGeometryExceptWherePredicted(bool halved) {
     }
     const double de = -eye.z;
     const double widest = widestRun * pitch / de;  // radians, near the wall's centre row
-    std::printf("%sdepth wall %d x %d: wrong outside the prediction %d, inside %d; flat wall wrong %d; widest run %d px "
-                "= %.4f rad; bound steps %.4f, texel %.5f, border %.4f\n",
-                halved ? "halved " : "", kWidth, kHeight, wrongOutside, wrongInside, flatWrong, widestRun, widest, bound.steps, bound.texel,
-                bound.border);
+    std::printf(
+        "%sdepth wall %d x %d: wrong outside the prediction %d, inside %d; flat wall wrong %d; widest run %d px "
+        "= %.4f rad; bound steps %.4f, texel %.5f, border %.4f\n",
+        halved ? "halved " : "", kWidth, kHeight, wrongOutside, wrongInside, flatWrong, widestRun, widest, bound.steps,
+        bound.texel, bound.border);
     EXPECT_LE(wrongOutside, kWidth * kHeight / 1000);  // 0.1 %: isolated rounding at tile edges
     EXPECT_GT(wrongInside, 0);                         // the eye does see what S did not
     EXPECT_GT(flatWrong, 4 * (wrongInside + wrongOutside));
@@ -229,7 +244,8 @@ void DepthWallPassTest::matchesGeometryExceptWherePredicted(bool halved) {
                     p[0] = 255;
                     p[1] = inside ? 255 : 0;
                     p[2] = 0;
-                } else if (inside) p[2] = 255;
+                } else if (inside)
+                    p[2] = 255;
             }
         scenes::writeImage(dir / "truth.png", truth);
         scenes::writeImage(dir / "depth_wall.png", depthWall);
@@ -255,7 +271,7 @@ TEST_F(DepthWallPassTest, GeometryInFrontOfTheWallHidesIt) {
     const gl::DepthTexture depthTexture = gl::uploadDepthTexture(depth);
     const gl::DepthWallPass pass;
     gl::DepthWallDraw d{kQuad, {}, 1};
-    d.layers[0] = {colourTexture.id(), depthTexture.depth.id(), kSample, walls::depthRange(depth), 1.0f,
+    d.layers[0] = {colourTexture.id(),    depthTexture.depth.id(), kSample, walls::depthRange(depth), 1.0f,
                    depthTexture.skip.id()};
 
     const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, kEye, {0.05, kInf});
@@ -317,17 +333,20 @@ TEST_F(DepthWallPassTest, BlendedLayersShareTheHeaviestLayersMarch) {
     }
     scenes::Image emptyColour = colour;
     std::fill(emptyColour.rgba.begin(), emptyColour.rgba.end(), std::uint8_t(0));
-    const walls::DepthImage emptyDepth{kWidth, kHeight, std::vector<float>(std::size_t(kWidth) * kHeight, walls::kNoSurface)};
+    const walls::DepthImage emptyDepth{kWidth, kHeight,
+                                       std::vector<float>(std::size_t(kWidth) * kHeight, walls::kNoSurface)};
     const gl::GlObject colourTexture = gl::uploadWallTexture({colour}), otherColour = gl::uploadWallTexture({other});
     const gl::GlObject emptyTexture = gl::uploadWallTexture({emptyColour});
-    const gl::DepthTexture depthTexture = gl::uploadDepthTexture(depth), otherDepthTexture = gl::uploadDepthTexture(otherDepth);
+    const gl::DepthTexture depthTexture = gl::uploadDepthTexture(depth),
+                           otherDepthTexture = gl::uploadDepthTexture(otherDepth);
     const gl::DepthTexture emptyDepthTexture = gl::uploadDepthTexture(emptyDepth);
-    const gl::DepthWallLayer real{colourTexture.id(), depthTexture.depth.id(), kSample, walls::depthRange(depth), 1.0f,
-                                  depthTexture.skip.id()};
-    const gl::DepthWallLayer second{otherColour.id(), otherDepthTexture.depth.id(), otherSample,
-                                    walls::depthRange(otherDepth), 1.0f, otherDepthTexture.skip.id()};
-    const gl::DepthWallLayer nothing{emptyTexture.id(), emptyDepthTexture.depth.id(), kSample, glm::dvec2(0.0), 1.0f,
-                                     emptyDepthTexture.skip.id()};
+    const gl::DepthWallLayer real{
+        colourTexture.id(), depthTexture.depth.id(), kSample, walls::depthRange(depth), 1.0f, depthTexture.skip.id()};
+    const gl::DepthWallLayer second{
+        otherColour.id(),           otherDepthTexture.depth.id(), otherSample, walls::depthRange(otherDepth), 1.0f,
+        otherDepthTexture.skip.id()};
+    const gl::DepthWallLayer nothing{
+        emptyTexture.id(), emptyDepthTexture.depth.id(), kSample, glm::dvec2(0.0), 1.0f, emptyDepthTexture.skip.id()};
 
     const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, kEye, {0.05, kInf});
     gl::OffscreenTarget target({kWidth, kHeight});
@@ -346,7 +365,8 @@ TEST_F(DepthWallPassTest, BlendedLayersShareTheHeaviestLayersMarch) {
     };
     auto largestDifference = [](const scenes::Image& a, const scenes::Image& b) {
         int most = 0;
-        for (std::size_t i = 0; i < a.rgba.size(); ++i) most = std::max(most, std::abs(int(a.rgba[i]) - int(b.rgba[i])));
+        for (std::size_t i = 0; i < a.rgba.size(); ++i)
+            most = std::max(most, std::abs(int(a.rgba[i]) - int(b.rgba[i])));
         return most;
     };
     const scenes::Image alone = draw({{real, 1.0f}});
@@ -355,8 +375,8 @@ TEST_F(DepthWallPassTest, BlendedLayersShareTheHeaviestLayersMarch) {
     EXPECT_LE(largestDifference(draw({{nothing, 0.5f}, {real, 0.5f}}), half), 1);
     // Shared, not marched per layer: a lighter layer with the same colour and no depth at all
     // is sampled where the heaviest layer's ray landed (its own march would find nothing).
-    const gl::DepthWallLayer colourOnly{colourTexture.id(), emptyDepthTexture.depth.id(), kSample, glm::dvec2(0.0), 1.0f,
-                                        emptyDepthTexture.skip.id()};
+    const gl::DepthWallLayer colourOnly{
+        colourTexture.id(), emptyDepthTexture.depth.id(), kSample, glm::dvec2(0.0), 1.0f, emptyDepthTexture.skip.id()};
     const scenes::Image shared = draw({{real, 0.5f}, {colourOnly, 0.5f}});
     EXPECT_LE(largestDifference(shared, alone), 1);
     EXPECT_GT(largestDifference(shared, half), 1);
@@ -399,7 +419,7 @@ TEST_F(DepthWallPassTest, TheShaderMarchesHalvedDepthsAsItsReference) { marchesA
 
 void DepthWallPassTest::marchesAsItsReference(bool halved) {
     if (!context) GTEST_SKIP();
-    constexpr int tw = 64, th = 48, vw = 320, vh = 240;  // depth texels; pixels of the view (5 a texel)
+    constexpr int tw = 64, th = 48, vw = 320, vh = 240;                  // depth texels; pixels of the view (5 a texel)
     const int scale = halved ? 2 : 1, cw = tw * scale, ch = th * scale;  // colour texels
     const walls::WallFrame frame = walls::wallFrame(kQuad);
     std::srand(17);
@@ -415,7 +435,8 @@ void DepthWallPassTest::marchesAsItsReference(bool halved) {
     ASSERT_EQ(glm::ivec2(depth.width, depth.height), glm::ivec2(tw, th));
     const glm::dvec2 range = walls::depthRange(depth);
     // Each colour texel's id in red and green (4i + 2, 5j + 2; halved 2i + 1, 2j + 1).
-    const glm::ivec2 idStep = halved ? glm::ivec2(2, 2) : glm::ivec2(4, 5), idBase = halved ? glm::ivec2(1) : glm::ivec2(2);
+    const glm::ivec2 idStep = halved ? glm::ivec2(2, 2) : glm::ivec2(4, 5),
+                     idBase = halved ? glm::ivec2(1) : glm::ivec2(2);
     scenes::Image colour{"ids", cw, ch, std::vector<std::uint8_t>(std::size_t(cw) * ch * 4, 255)};
     for (int j = 0; j < ch; ++j)
         for (int i = 0; i < cw; ++i) {
@@ -437,49 +458,53 @@ void DepthWallPassTest::marchesAsItsReference(bool halved) {
     const glm::dvec3 eyes[] = {{0.6, 1.5, 2.5}, {-0.9, 2.4, 2.2}, {1.5, 0.4, 3.4}};
     // The default settings, and at most 3 steps: longer steps, bisected before the crossing.
     for (const walls::ReprojectSettings settings : {walls::ReprojectSettings{}, walls::ReprojectSettings{3, 6}})
-    for (const glm::dvec3& eyeWorld : eyes) {
-        const gl::DepthWallPass pass(settings);
-        SCOPED_TRACE(::testing::Message() << "eye " << eyeWorld.x << ", " << eyeWorld.y << ", " << eyeWorld.z
-                                          << ", at most " << settings.maxSteps << " steps");
-        const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, eyeWorld, {0.05, kInf});
-        target.bindAndClear(glm::vec4(0.0f));
-        glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-        gl::DepthWallDraw d{kQuad, {}, 1};
-        d.layers[0] = {colourTexture.id(), depthTexture.depth.id(), sample, range, 1.0f, depthTexture.skip.id()};
-        gl::FrameStats stats;
-        pass.draw({d}, frustum, glm::dmat4(1.0), nearest.id(), stats);
-        const scenes::Image got = target.read("march");
-        const glm::dvec3 eye = frame.toWall(eyeWorld), s = frame.toWall(sample);
-        int hits = 0, wrong = 0, edges = 0;
-        for (int y = 0; y < vh; ++y)
-            for (int x = 0; x < vw; ++x) {
-                const std::uint8_t* p = &got.rgba[(std::size_t(y) * vw + x) * 4];
-                const glm::dvec2 w((x + 0.5) * frame.width / vw, frame.height - (y + 0.5) * frame.height / vh);
-                const walls::ReprojectHit ref = walls::reproject(depth, frame, eye, s, w, range, settings);
-                // The pass leaves the target's alpha as it was (blending): blue marks a hit.
-                const bool shown = p[2] > 64;
-                if (!ref.hit) {
-                    wrong += shown;
-                    continue;
+        for (const glm::dvec3& eyeWorld : eyes) {
+            const gl::DepthWallPass pass(settings);
+            SCOPED_TRACE(::testing::Message() << "eye " << eyeWorld.x << ", " << eyeWorld.y << ", " << eyeWorld.z
+                                              << ", at most " << settings.maxSteps << " steps");
+            const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, eyeWorld, {0.05, kInf});
+            target.bindAndClear(glm::vec4(0.0f));
+            glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+            gl::DepthWallDraw d{kQuad, {}, 1};
+            d.layers[0] = {colourTexture.id(), depthTexture.depth.id(), sample, range, 1.0f, depthTexture.skip.id()};
+            gl::FrameStats stats;
+            pass.draw({d}, frustum, glm::dmat4(1.0), nearest.id(), stats);
+            const scenes::Image got = target.read("march");
+            const glm::dvec3 eye = frame.toWall(eyeWorld), s = frame.toWall(sample);
+            int hits = 0, wrong = 0, edges = 0;
+            for (int y = 0; y < vh; ++y)
+                for (int x = 0; x < vw; ++x) {
+                    const std::uint8_t* p = &got.rgba[(std::size_t(y) * vw + x) * 4];
+                    const glm::dvec2 w((x + 0.5) * frame.width / vw, frame.height - (y + 0.5) * frame.height / vh);
+                    const walls::ReprojectHit ref = walls::reproject(depth, frame, eye, s, w, range, settings);
+                    // The pass leaves the target's alpha as it was (blending): blue marks a hit.
+                    const bool shown = p[2] > 64;
+                    if (!ref.hit) {
+                        wrong += shown;
+                        continue;
+                    }
+                    ++hits;
+                    const glm::dvec2 t(ref.texture.x / frame.width * cw,
+                                       (frame.height - ref.texture.y) / frame.height * ch);
+                    const int gi = (int(p[0]) - idBase.x + idStep.x / 2) / idStep.x;  // nearest id
+                    const int gj = (int(p[1]) - idBase.y + idStep.y / 2) / idStep.y;
+                    const bool same = shown && gi == int(std::floor(t.x)) && gj == int(std::floor(t.y));
+                    if (same) continue;
+                    const double fx = t.x - std::floor(t.x), fy = t.y - std::floor(t.y);
+                    const bool nearEdge = std::min(fx, 1.0 - fx) < 0.01 || std::min(fy, 1.0 - fy) < 0.01;
+                    const bool neighbour =
+                        shown && std::abs(gi - int(std::floor(t.x))) <= 1 && std::abs(gj - int(std::floor(t.y))) <= 1;
+                    if (nearEdge && neighbour)
+                        ++edges;
+                    else
+                        ++wrong;
                 }
-                ++hits;
-                const glm::dvec2 t(ref.texture.x / frame.width * cw, (frame.height - ref.texture.y) / frame.height * ch);
-                const int gi = (int(p[0]) - idBase.x + idStep.x / 2) / idStep.x;  // nearest id
-                const int gj = (int(p[1]) - idBase.y + idStep.y / 2) / idStep.y;
-                const bool same = shown && gi == int(std::floor(t.x)) && gj == int(std::floor(t.y));
-                if (same) continue;
-                const double fx = t.x - std::floor(t.x), fy = t.y - std::floor(t.y);
-                const bool nearEdge = std::min(fx, 1.0 - fx) < 0.01 || std::min(fy, 1.0 - fy) < 0.01;
-                const bool neighbour = shown && std::abs(gi - int(std::floor(t.x))) <= 1 &&
-                                       std::abs(gj - int(std::floor(t.y))) <= 1;
-                if (nearEdge && neighbour) ++edges;
-                else ++wrong;
-            }
-        std::printf("march against reference%s, at most %d steps: %d of %d pixels hit, %d on a texel edge, %d wrong\n",
-                    halved ? " (halved depths)" : "", settings.maxSteps, hits, vw * vh, edges, wrong);
-        EXPECT_GT(hits, vw * vh / 2);
-        EXPECT_LE(wrong, vw * vh / 1000);  // float against double: a few pixels at most
-    }
+            std::printf(
+                "march against reference%s, at most %d steps: %d of %d pixels hit, %d on a texel edge, %d wrong\n",
+                halved ? " (halved depths)" : "", settings.maxSteps, hits, vw * vh, edges, wrong);
+            EXPECT_GT(hits, vw * vh / 2);
+            EXPECT_LE(wrong, vw * vh / 1000);  // float against double: a few pixels at most
+        }
 }
 
 // The pass draws each wall only over walls::depthDrawRect (the union of its layers', grown by a
@@ -507,8 +532,8 @@ TEST_F(DepthWallPassTest, DrawsOnlyWhereAMarchCanHit) {
     const gl::DepthWallPass pass;
     auto draw = [&](walls::TextureRect rect, glm::ivec2 texels) {
         gl::DepthWallDraw d{kQuad, {}, 1};
-        d.layers[0] = {colourTexture.id(), depthTexture.depth.id(), kSample, range, 1.0f, depthTexture.skip.id(),
-                       rect,               texels};
+        d.layers[0] = {
+            colourTexture.id(), depthTexture.depth.id(), kSample, range, 1.0f, depthTexture.skip.id(), rect, texels};
         target.bindAndClear(glm::vec4(0.0f));
         glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
         gl::FrameStats stats;

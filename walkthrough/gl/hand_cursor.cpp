@@ -30,9 +30,15 @@ void main() { fragColor = uColor; }
 // The icon in the hand frame (metres): palm quad and a pointing finger, then the ray's start.
 constexpr int kIconVertices = 9;
 const std::array<glm::dvec3, kIconVertices> kIcon = {{
-    {-0.03, 0.0, 0.04}, {0.03, 0.0, 0.04}, {-0.03, 0.0, -0.04},   // palm
-    {0.03, 0.0, 0.04}, {0.03, 0.0, -0.04}, {-0.03, 0.0, -0.04},
-    {-0.01, 0.0, -0.04}, {0.01, 0.0, -0.04}, {0.0, 0.0, -0.09},   // finger
+    {-0.03, 0.0, 0.04},
+    {0.03, 0.0, 0.04},
+    {-0.03, 0.0, -0.04},  // palm
+    {0.03, 0.0, 0.04},
+    {0.03, 0.0, -0.04},
+    {-0.03, 0.0, -0.04},
+    {-0.01, 0.0, -0.04},
+    {0.01, 0.0, -0.04},
+    {0.0, 0.0, -0.09},  // finger
 }};
 
 }  // namespace
@@ -49,8 +55,8 @@ HandCursorPass::HandCursorPass()
 }
 
 void HandCursorPass::draw(const HandCursorPose& hand, const display::OffAxisFrustum& frustum, FrameStats& stats) {
-    const glm::dmat4 viewFromHand = frustum.viewFromFrame * glm::translate(glm::dmat4(1.0), hand.position) *
-                                    glm::mat4_cast(hand.orientation);
+    const glm::dmat4 viewFromHand =
+        frustum.viewFromFrame * glm::translate(glm::dmat4(1.0), hand.position) * glm::mat4_cast(hand.orientation);
     std::array<glm::vec3, kIconVertices + 2> vertices;
     for (int i = 0; i < kIconVertices; ++i) vertices[i] = glm::vec3(viewFromHand * glm::dvec4(kIcon[i], 1.0));
     vertices[kIconVertices] = glm::vec3(viewFromHand * glm::dvec4(0.0, 0.0, -0.09, 1.0));

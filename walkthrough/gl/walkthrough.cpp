@@ -10,7 +10,6 @@
 #include "hierarchy/gl/cluster_costs.h"
 #include "walls/gl/texture_store.h"
 
-
 #include <algorithm>
 #include <chrono>
 #include <map>
@@ -43,11 +42,13 @@ WalkthroughOptions withPaging(WalkthroughOptions options, const scenes::SceneDes
         throw Error("walkthrough: geometry paging (geometry budget " + std::to_string(options.geometryBudgetMB) +
                     " MB) does not support the warp transition yet (expected transition blend, got warp)");
     if (!options.wallTextures && options.transition == walkthrough::Transition::Warp)
-        throw Error("walkthrough: the control without wall textures draws no warp (expected transition blend, "
-                    "got warp)");
+        throw Error(
+            "walkthrough: the control without wall textures draws no warp (expected transition blend, "
+            "got warp)");
     if (!options.wallTextures && options.baker)
-        throw Error("walkthrough: the control without wall textures bakes nothing (expected no background "
-                    "baker, got one)");
+        throw Error(
+            "walkthrough: the control without wall textures bakes nothing (expected no background "
+            "baker, got one)");
     options.render.pagedCells = paging ? static_cast<int>(description.cells.size()) : 0;
     return options;
 }
@@ -119,13 +120,13 @@ struct Walkthrough::WallRuntime {
 
 struct Walkthrough::ClusterRuntime {
     hierarchy::ClusterModel model;
-    std::vector<int> structure;              // always drawn
+    std::vector<int> structure;  // always drawn
     std::unique_ptr<ClusterImpostors> impostors;
     hierarchy::ClusterCoherence coherence;
     hierarchy::ClusterFades fades;
     hierarchy::ClusterFramePlan last;
-    std::vector<int> drawn;                  // the last frame's objects and structure
-    int costResolution = 0;                  // the cost view's side, pixels
+    std::vector<int> drawn;  // the last frame's objects and structure
+    int costResolution = 0;  // the cost view's side, pixels
 };
 
 namespace {
@@ -155,18 +156,18 @@ Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescript
         for (int s = 0; s < static_cast<int>(display.screens().size()); ++s) _screens.push_back(s);
     if (walls && !walls->plan.walls.empty()) _walls = std::make_unique<WallRuntime>(std::move(*walls), _options);
     if (_walls && _options.render.pagedCells > 0)
-        _walls->geometry = std::make_unique<CellPaging>(
-            scene, _renderer.gpu().meshGroups(), _renderer.hasLods() ? &_renderer.renderScene().lods() : nullptr,
-            _options.geometryBudgetMB);
+        _walls->geometry = std::make_unique<CellPaging>(scene, _renderer.gpu().meshGroups(),
+                                                        _renderer.hasLods() ? &_renderer.renderScene().lods() : nullptr,
+                                                        _options.geometryBudgetMB);
     _planner =
         std::make_unique<walkthrough::FramePlanner>(scene, description, display, _walls ? &_walls->setup : nullptr,
                                                     _options.transition, _options.morphSeconds, _screens);
     _planner->requestCells(_walls && _walls->geometry);
     _planner->drawTextures(_options.wallTextures);
     if (_options.clusters.enabled)
-        _clusters = makeClusters(scene, _options.clusters, _renderer, context.info().renderer,
-                                 _options.clusters.costResolution > 0 ? _options.clusters.costResolution
-                                                                      : largestScreenSide(display));
+        _clusters = makeClusters(
+            scene, _options.clusters, _renderer, context.info().renderer,
+            _options.clusters.costResolution > 0 ? _options.clusters.costResolution : largestScreenSide(display));
     if (_walls && _options.transition == walkthrough::Transition::Warp)
         _warp = std::make_unique<WarpPass>(scene, _renderer.gpu(), _options.render, display.depthRange().near);
 }
@@ -214,7 +215,7 @@ void Walkthrough::planClusters(const walkthrough::FrameInput& input, glm::dvec3 
     const double budget = input.clusterBudgetMs > 0.0 ? input.clusterBudgetMs : _options.clusters.budgetMs;
     // Over every screen, also those of other cluster ranks (as the levels of detail).
     c.last = hierarchy::planClusterFrame(c.model, _display.views(input.head), input.worldFromCave, eyeWorld, budget,
-                                      &c.coherence);
+                                         &c.coherence);
     c.fades.apply(c.model, eyeWorld, c.last);
     objects = c.last.objects;
     objects.insert(objects.end(), c.structure.begin(), c.structure.end());
@@ -240,7 +241,8 @@ GeometryYardsticks Walkthrough::geometryYardsticks() const {
     const int cells = static_cast<int>(_description.cells.size());
     GeometryYardsticks y;
     y.wholeModelMB = static_cast<double>(walls::modelGeometryBytes(_scene, lods)) / kMB;
-    y.largestThreeCellsMB = static_cast<double>(walls::largestBytes(walls::cellGeometryBytes(_scene, cells, lods), 3)) / kMB;
+    y.largestThreeCellsMB =
+        static_cast<double>(walls::largestBytes(walls::cellGeometryBytes(_scene, cells, lods), 3)) / kMB;
     y.sharedMB = static_cast<double>(_renderer.gpu().vertexBytes() + _renderer.gpu().indexBytes()) / kMB;
     return y;
 }
@@ -264,7 +266,8 @@ walkthrough::FramePlan Walkthrough::planFrame(const walkthrough::FrameInput& inp
     if (w.textures) {
         WallRuntime::Textures& t = *w.textures;
         if (_options.baker) {  // baking on demand: this frame's wishes out, finished bakes in
-            _options.baker->want(wanted.now, wanted.soon, glm::dvec3(input.worldFromCave * glm::dvec4(input.head.position, 1.0)));
+            _options.baker->want(wanted.now, wanted.soon,
+                                 glm::dvec3(input.worldFromCave * glm::dvec4(input.head.position, 1.0)));
             _bakedNow = 0;
             for (BakeEvent& e : _options.baker->take()) {
                 if (e.evicted) {
@@ -335,8 +338,10 @@ std::vector<DepthWallDraw> Walkthrough::depthWallDraws(const walkthrough::FrameP
             layer->weight = static_cast<float>(weight);
             d.layers[d.count++] = *layer;
         }
-        if (all) draws.push_back(d);
-        else left.push_back(flat[i]);
+        if (all)
+            draws.push_back(d);
+        else
+            left.push_back(flat[i]);
     }
     flat = std::move(left);
     return draws;
@@ -414,10 +419,9 @@ walkthrough::FrameResult Walkthrough::renderFrame(const walkthrough::FrameInput&
     if (_renderer.hasLods()) {
         // Over every screen, also those of other cluster ranks: each rank then picks the same
         // levels for what several draw, and the budget is the whole display's.
-        lod = render::chooseLods(_renderer.renderScene(), _display.views(input.head), input.worldFromCave, filter,
-                                 _options.render.lodPixels,
-                                 input.triangleBudget > 0 ? input.triangleBudget : _options.triangleBudget,
-                                 _options.lodMaxPixels);
+        lod = render::chooseLods(
+            _renderer.renderScene(), _display.views(input.head), input.worldFromCave, filter, _options.render.lodPixels,
+            input.triangleBudget > 0 ? input.triangleBudget : _options.triangleBudget, _options.lodMaxPixels);
         filter.lodLevels = &lod.levels;
         result.lodTolerancePx = lod.tolerancePx;
         result.lodErrorPx = lod.maxErrorPx;

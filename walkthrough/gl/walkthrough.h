@@ -63,20 +63,20 @@ class BackgroundBaker;  // walls/gl/background_baker.h
 // always drawn.
 struct ClusterOptions {
     bool enabled = false;
-    glm::ivec3 divisions{8, 2, 8};           // the hierarchy's finest grid, cells per axis
+    glm::ivec3 divisions{8, 2, 8};  // the hierarchy's finest grid, cells per axis
     ClusterBakeSettings bake;
-    std::filesystem::path cache;             // the bake cache folder (clusters/ inside it)
-    double budgetMs = 1000.0 / 60.0;         // predicted cost per frame unless FrameInput's
-    int coherenceFrames = 3;                 // ClusterCoherence threshold
-    int fadeFrames = 8;                      // hierarchy::ClusterFades: frames a switch is
-                                             // cross-faded over (<= 1: none)
-    int costResolution = 0;                  // pixels of the cost view's side (cluster_costs.h);
-                                             // 0: the display's largest screen side
+    std::filesystem::path cache;      // the bake cache folder (clusters/ inside it)
+    double budgetMs = 1000.0 / 60.0;  // predicted cost per frame unless FrameInput's
+    int coherenceFrames = 3;          // ClusterCoherence threshold
+    int fadeFrames = 8;               // hierarchy::ClusterFades: frames a switch is
+                                      // cross-faded over (<= 1: none)
+    int costResolution = 0;           // pixels of the cost view's side (cluster_costs.h);
+                                      // 0: the display's largest screen side
 };
 
 struct WalkthroughOptions : walkthrough::WalkthroughSettings {
     ClusterOptions clusters;
-    RenderSettings render;                   // clear colour, ambient, levels of detail
+    RenderSettings render;  // clear colour, ambient, levels of detail
     // Depth: walls drawn by gl::DepthWallPass from a depth bake (BakeSettings::kind, the
     // manifest's depth files, paged and budgeted with the colour by walls::TexturePager and
     // gl::TextureStore); a texture without a depth file is drawn flat, one whose depth file is
@@ -120,8 +120,8 @@ public:
     const hierarchy::ClusterModel* clusterModel() const;
     const ClusterBakeStats* clusterBakeStats() const;
     const hierarchy::ClusterFramePlan* lastClusterPlan() const;
-    int clusterCostResolution() const;        // the cost view's side in pixels (0 without clusters)
-    struct ClusterRuntime;  // walkthrough.cpp
+    int clusterCostResolution() const;  // the cost view's side in pixels (0 without clusters)
+    struct ClusterRuntime;              // walkthrough.cpp
     // Blocks until the pager has decoded everything requested (warm-up for tests and benches).
     void waitForTextures();
     GeometryYardsticks geometryYardsticks() const;
@@ -154,12 +154,12 @@ private:
     SceneRenderer _renderer;
     std::unique_ptr<WallRuntime> _walls;
     std::unique_ptr<ClusterRuntime> _clusters;
-    std::size_t _uploadedBytes = 0;  // wall texture bytes uploaded by the last planFrame
+    std::size_t _uploadedBytes = 0;      // wall texture bytes uploaded by the last planFrame
     int _bakedNow = 0, _bakedTotal = 0;  // baking on demand: textures handed to the pager
     std::unique_ptr<walkthrough::FramePlanner> _planner;
     std::unique_ptr<HandCursorPass> _cursor;
-    std::unique_ptr<WarpPass> _warp;         // Transition::Warp with walls only
-    GpuTimer _timer;                         // timestamp pairs: llvmpipe's first GL_TIME_ELAPSED is garbage
+    std::unique_ptr<WarpPass> _warp;  // Transition::Warp with walls only
+    GpuTimer _timer;                  // timestamp pairs: llvmpipe's first GL_TIME_ELAPSED is garbage
 };
 
 }  // namespace cavewall::gl

@@ -41,7 +41,7 @@
 namespace cavewall::gl {
 
 struct BackgroundBakerOptions {
-    std::uint64_t cacheBudgetBytes = 0;        // 0: no disk budget (walls::cacheBudgetBytes)
+    std::uint64_t cacheBudgetBytes = 0;  // 0: no disk budget (walls::cacheBudgetBytes)
     // Nice value of the baker's thread (Linux: per thread), so drawing wins the CPU when both
     // want it; llvmpipe's rasteriser threads are shared and not affected. [0, 19].
     int niceness = 10;
@@ -53,18 +53,18 @@ struct BackgroundBakerOptions {
 // A texture that became available (baked) or went away (evicted from the disk).
 struct BakeEvent {
     bool evicted = false;
-    walls::BakedTexture texture;               // evicted: only id is meaningful
+    walls::BakedTexture texture;  // evicted: only id is meaningful
 };
 
 struct BackgroundBakeStats {
-    int missingAtStart = 0;                    // textures the cache lacked when the run began
-    int baked = 0;                             // rendered and written by this run
-    int missing = 0;                           // still to bake (including one being baked)
-    bool busy = false;                         // a texture is being baked now
-    long started = 0;                          // bakes started so far
-    long evictions = 0;                        // files deleted for the disk budget
-    double cacheMB = 0.0;                      // texture files of the folder counted by the budget
-    std::vector<std::string> warnings;         // files that could not be deleted
+    int missingAtStart = 0;             // textures the cache lacked when the run began
+    int baked = 0;                      // rendered and written by this run
+    int missing = 0;                    // still to bake (including one being baked)
+    bool busy = false;                  // a texture is being baked now
+    long started = 0;                   // bakes started so far
+    long evictions = 0;                 // files deleted for the disk budget
+    double cacheMB = 0.0;               // texture files of the folder counted by the budget
+    std::vector<std::string> warnings;  // files that could not be deleted
 };
 
 class BackgroundBaker {
@@ -110,22 +110,22 @@ private:
     std::unique_ptr<TextureBaker> _baker;
     std::filesystem::path _folder;
     walls::BakeManifest _initial;
-    std::map<int, glm::dvec3> _samplingPoints;        // by texture id
+    std::map<int, glm::dvec3> _samplingPoints;  // by texture id
 
     mutable std::mutex _mutex;
     std::condition_variable _wake, _idle;
     walls::BakeQueue _queue;
     std::optional<walls::CacheBudget> _budget;
-    std::map<int, std::vector<std::string>> _files;   // finished texture id -> its files
-    std::uint64_t _bakedBytes = 0;                    // of files baked by this run
+    std::map<int, std::vector<std::string>> _files;  // finished texture id -> its files
+    std::uint64_t _bakedBytes = 0;                   // of files baked by this run
     std::vector<BakeEvent> _events;
     BackgroundBakeStats _stats;
-    int _busy = -1;                                   // id being baked
+    int _busy = -1;  // id being baked
     bool _wanted = false, _registered = false, _stop = false;
     bool _flushing = false;
-    bool _paused = false;                           // writing the manifest after the last bake
+    bool _paused = false;  // writing the manifest after the last bake
     std::exception_ptr _error;
-    std::thread _thread;                              // last: started once the rest exists
+    std::thread _thread;  // last: started once the rest exists
 };
 
 }  // namespace cavewall::gl

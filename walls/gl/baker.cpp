@@ -37,7 +37,8 @@ void validateBakeSettings(const BakeSettings& s) {
     auto fail = [](const char* name, const std::string& expected, const std::string& got) {
         throw Error(std::string("bake settings: ") + name + ": expected " + expected + ", got " + got);
     };
-    if (s.maxResolution < 16 || s.maxResolution > 16384) fail("maxResolution", "[16, 16384]", std::to_string(s.maxResolution));
+    if (s.maxResolution < 16 || s.maxResolution > 16384)
+        fail("maxResolution", "[16, 16384]", std::to_string(s.maxResolution));
     if (s.tileSize < 16 || s.tileSize > 1024 || s.tileSize % 16 != 0)
         fail("tileSize", "a multiple of 16 in [16, 1024]", std::to_string(s.tileSize));
     if (s.jobs < 1 || s.jobs > 64) fail("jobs", "[1, 64]", std::to_string(s.jobs));
@@ -48,7 +49,8 @@ void validateBakeSettings(const BakeSettings& s) {
 
 std::filesystem::path defaultCacheFolder() {
     if (const char* cache = std::getenv("CAVEWALL_CACHE"); cache && *cache) return cache;
-    if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "cavewall";
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return std::filesystem::path(home) / ".cache" / "cavewall";
     throw Error("bake cache: expected $CAVEWALL_CACHE or $HOME to be set, got neither (use --cache DIR)");
 }
 
@@ -102,7 +104,7 @@ struct Item {
     const walls::Texture* texture = nullptr;
     int side = 0;
     glm::ivec2 resolution{0};
-    walls::BakedTexture entry;           // id, cell, wall, samplingPoint, resolution (+ file once keyed)
+    walls::BakedTexture entry;  // id, cell, wall, samplingPoint, resolution (+ file once keyed)
 };
 
 // The content key of every wall side: the keys of the objects its textures show.
@@ -122,7 +124,9 @@ std::map<std::pair<int, int>, std::uint64_t> contentKeys(const scenes::Scene& sc
 std::uint64_t textureKey(const Item& item, const walls::Plan& plan, std::uint64_t contentKey, std::uint64_t settings) {
     const display::ScreenQuad q = walls::quadSeenFrom(plan.walls[item.texture->wall].quad, item.side);
     KeyHasher h;
-    h.text("cavewall texture v1").integer(static_cast<std::int64_t>(settings)).integer(static_cast<std::int64_t>(contentKey));
+    h.text("cavewall texture v1")
+        .integer(static_cast<std::int64_t>(settings))
+        .integer(static_cast<std::int64_t>(contentKey));
     h.vec(q.lowerLeft).vec(q.lowerRight).vec(q.upperLeft).vec(item.texture->samplingPoint);
     return h.integer(item.resolution.x).integer(item.resolution.y).value();
 }
@@ -173,14 +177,14 @@ private:
     const walls::WallSetup& _walls;
     const walls::Plan& _plan;
     BakeResult _result;
-    std::map<int, walls::BakedTexture> _done;   // finished entries by id
+    std::map<int, walls::BakedTexture> _done;  // finished entries by id
     std::vector<Item> _pending;
-    walls::BakeManifest _listed;                 // what the folder's manifest.json lists
+    walls::BakeManifest _listed;  // what the folder's manifest.json lists
     // Made at the first render and kept (baking on demand renders one texture per call).
     std::unique_ptr<gl::Context> _ownContext;
     std::unique_ptr<WallTextureRenderer> _renderer;
     std::unique_ptr<BakeWriter> _writer;
-    std::vector<walls::BakedTexture> _fresh;     // baked since the last bakeIds
+    std::vector<walls::BakedTexture> _fresh;                    // baked since the last bakeIds
     std::map<std::pair<int, int>, std::uint64_t> _contentKeys;  // by (wall, side), made by keyPending
 };
 
@@ -284,7 +288,9 @@ void Bake::key() {
 }
 
 Item Bake::itemOf(const walls::Texture& t) const {
-    Item item{&t, sideOf(_plan, t), walls::bakeResolution(t.resolution, _request.settings.maxResolution, _request.settings.kind),
+    Item item{&t,
+              sideOf(_plan, t),
+              walls::bakeResolution(t.resolution, _request.settings.maxResolution, _request.settings.kind),
               {}};
     item.entry = walls::BakedTexture{};
     item.entry.id = t.id;
@@ -333,7 +339,8 @@ bool Bake::reuseFile(const walls::BakedTexture& listed) {
     }
     ++_result.hashed;
     walls::BakedTexture stamped = listed;
-    if (!walls::stampTexture(_result.folder, stamped) || !walls::textureFileValid(_result.folder, stamped)) return false;
+    if (!walls::stampTexture(_result.folder, stamped) || !walls::textureFileValid(_result.folder, stamped))
+        return false;
     finish(stamped, false, 0);
     return true;
 }
@@ -346,7 +353,8 @@ void Bake::keyPending(std::uint64_t settings) {
         const std::uint64_t content = _contentKeys.at({item.texture->wall, item.side});
         item.entry.file = textureFileName(item.texture->id, textureKey(item, _plan, content, settings),
                                           _request.settings.textureFormat);
-        if (_request.settings.kind == walls::WallKind::Depth) item.entry.depthFile = walls::depthFileName(item.entry.file);
+        if (_request.settings.kind == walls::WallKind::Depth)
+            item.entry.depthFile = walls::depthFileName(item.entry.file);
     }
 }
 
@@ -382,7 +390,8 @@ void Bake::render(const std::vector<Item>& items) {
     renderContext()->makeCurrent();
     ensureFolder(_result.folder);
     if (!_renderer)
-        _renderer = std::make_unique<WallTextureRenderer>(_scene, _request.settings.ambient, _request.settings.lodTexels);
+        _renderer =
+            std::make_unique<WallTextureRenderer>(_scene, _request.settings.ambient, _request.settings.lodTexels);
     if (!_writer)
         _writer = std::make_unique<BakeWriter>(_result.folder, _request.settings.jobs,
                                                walls::MipFileOptions{_request.settings.tileSize},

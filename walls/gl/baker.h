@@ -45,15 +45,15 @@
 namespace cavewall::gl {
 
 struct BakeSettings {
-    int maxResolution = 1024;   // texels per texture side at most, [16, 16384]; larger plan
-                                // resolutions are scaled down to fit, keeping the aspect
-    int tileSize = 64;          // file tile edge in texels, a multiple of 16 in [16, 1024]
-    int jobs = 1;               // threads building MIP chains and writing files, [1, 64]
+    int maxResolution = 1024;  // texels per texture side at most, [16, 16384]; larger plan
+                               // resolutions are scaled down to fit, keeping the aspect
+    int tileSize = 64;         // file tile edge in texels, a multiple of 16 in [16, 1024]
+    int jobs = 1;              // threads building MIP chains and writing files, [1, 64]
     // GL contexts drawing textures, [1, 8]: the calling thread's (BakeRequest::context or the
     // bake's own) and drawThreads - 1 headless ones, each on a thread of its own with its own
     // copy of the scene on the GPU. The same files whatever the count (not part of the key).
     int drawThreads = 1;
-    float ambient = 0.35f;      // as RenderSettings::ambient, [0, 1]
+    float ambient = 0.35f;  // as RenderSettings::ambient, [0, 1]
     // Flat: colour only. Depth: colour plus a depth file of 16-bit codes per texture
     // (walls/depth_file.h), read back from the same render's depth buffer; keys the cache.
     walls::WallKind kind = walls::WallKind::Flat;
@@ -72,32 +72,32 @@ struct BakeSettings {
 void validateBakeSettings(const BakeSettings& settings);
 
 struct BakeProgress {
-    int done = 0, total = 0;        // textures finished (baked or reused) of all in the plan
+    int done = 0, total = 0;  // textures finished (baked or reused) of all in the plan
     int baked = 0, reused = 0;
-    double seconds = 0.0;           // since the bake started
-    std::uint64_t bytesWritten = 0; // of files written or linked by this bake
+    double seconds = 0.0;            // since the bake started
+    std::uint64_t bytesWritten = 0;  // of files written or linked by this bake
 };
 
 // Where a bake's time went, in seconds, summed over textures. Rendering runs on the calling
 // thread; MIP chains, files and hashes on the writer threads (jobs), overlapping it, so these are
 // thread-seconds and may add up to more than BakeResult::seconds.
 struct BakeTimes {
-    double prepare = 0.0;    // making the context, uploading the scene, building level chains
-    double draw = 0.0;       // level choice, culling, submission and GL work until finished
-                             // (summed over drawing threads)
-    double read = 0.0;       // reading textures back from GL (summed over drawing threads)
-    double queue = 0.0;      // drawing threads waiting for a writer thread to take a texture
-    double mips = 0.0;       // premultiplied MIP chains (writer threads)
-    double encode = 0.0;     // tiled, compressed TIFF encoding and writing (writer threads)
-    double hash = 0.0;       // hashing written files (writer threads)
-    double manifest = 0.0;   // writing manifest.json
+    double prepare = 0.0;   // making the context, uploading the scene, building level chains
+    double draw = 0.0;      // level choice, culling, submission and GL work until finished
+                            // (summed over drawing threads)
+    double read = 0.0;      // reading textures back from GL (summed over drawing threads)
+    double queue = 0.0;     // drawing threads waiting for a writer thread to take a texture
+    double mips = 0.0;      // premultiplied MIP chains (writer threads)
+    double encode = 0.0;    // tiled, compressed TIFF encoding and writing (writer threads)
+    double hash = 0.0;      // hashing written files (writer threads)
+    double manifest = 0.0;  // writing manifest.json
 };
 
 struct BakeRequest {
-    std::filesystem::path scene;    // scene.json, a folder holding one, or a bare glTF/GLB
-    walls::PlanOptions plan;        // bakeScene only (bakeWalls takes the setup's plan)
+    std::filesystem::path scene;  // scene.json, a folder holding one, or a bare glTF/GLB
+    walls::PlanOptions plan;      // bakeScene only (bakeWalls takes the setup's plan)
     BakeSettings settings;
-    std::filesystem::path cache;    // empty: defaultCacheFolder()
+    std::filesystem::path cache;  // empty: defaultCacheFolder()
     // A context to render with (made current before use); null: a headless one is created
     // only when something has to be rendered.
     Context* context = nullptr;
@@ -109,16 +109,16 @@ struct BakeRequest {
 };
 
 struct BakeResult {
-    std::filesystem::path folder;   // <cache>/<hex key>
-    walls::BakeManifest manifest;   // every texture of the plan, by id
+    std::filesystem::path folder;  // <cache>/<hex key>
+    walls::BakeManifest manifest;  // every texture of the plan, by id
     std::uint64_t key = 0;
-    int baked = 0;                  // rendered and written by this bake
-    int reused = 0;                 // valid already (in this folder or taken from another)
-    int linked = 0;                 // of `reused`: taken from another folder of the cache
-    int hashed = 0;                 // listed textures read in full to check them (size or time changed)
+    int baked = 0;   // rendered and written by this bake
+    int reused = 0;  // valid already (in this folder or taken from another)
+    int linked = 0;  // of `reused`: taken from another folder of the cache
+    int hashed = 0;  // listed textures read in full to check them (size or time changed)
     double seconds = 0.0;
-    std::uint64_t bytesWritten = 0; // of files baked or linked by this bake
-    std::uint64_t totalBytes = 0;   // of all files in the manifest
+    std::uint64_t bytesWritten = 0;  // of files baked or linked by this bake
+    std::uint64_t totalBytes = 0;    // of all files in the manifest
     BakeTimes times;
     std::uint64_t trianglesDrawn = 0;  // summed over the textures rendered by this bake
     double maxLodErrorTexels = 0.0;    // the largest level-of-detail error drawn, texels
@@ -149,8 +149,8 @@ BakeResult bakeScene(const BakeRequest& request);
 // endRendering(), listing only finished files.
 class TextureBaker {
 public:
-    TextureBaker(const scenes::Scene& scene, const scenes::SceneDescription& description,
-                 const walls::WallSetup& walls, BakeRequest request);
+    TextureBaker(const scenes::Scene& scene, const scenes::SceneDescription& description, const walls::WallSetup& walls,
+                 BakeRequest request);
     ~TextureBaker();  // no GL: call endRendering() on the rendering thread first
     TextureBaker(const TextureBaker&) = delete;
     TextureBaker& operator=(const TextureBaker&) = delete;

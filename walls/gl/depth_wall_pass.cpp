@@ -135,15 +135,16 @@ std::string samplers(int layers, bool fragment) {
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
         if (fragment)
-            s += "layout(binding = " + std::to_string(2 * i) + ") uniform sampler2D uColour" + n + ";\nlayout(binding = " +
-                 std::to_string(kSkipBinding + i) + ") uniform sampler2D uSkip" + n + ";\n";
+            s += "layout(binding = " + std::to_string(2 * i) + ") uniform sampler2D uColour" + n +
+                 ";\nlayout(binding = " + std::to_string(kSkipBinding + i) + ") uniform sampler2D uSkip" + n + ";\n";
         s += "layout(binding = " + std::to_string(2 * i + 1) + ") uniform sampler2D uDepth" + n + ";\n";
     }
     return s;
 }
 
 std::string vertexSource(int layers) {
-    std::string s = "#version 450 core\n" + samplers(layers, false) + "out vec4 vRay[" + std::to_string(layers) + "];\n" + kVertex;
+    std::string s =
+        "#version 450 core\n" + samplers(layers, false) + "out vec4 vRay[" + std::to_string(layers) + "];\n" + kVertex;
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
         s += "    vRay[" + n + "] = ray(uDepth" + n + ", uSample[" + n + "], wall);\n";
@@ -161,13 +162,14 @@ std::string fragmentSource(int layers) {
     s += "void main() {\n    vec2 gx = dFdx(vUv), gy = dFdy(vUv);\n    float s = -1.0;\n";
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
-        s += "    if (s < 0.0) s = march(uDepth" + n + ", uSkip" + n + ", uSample[" + n + "], uRange[" + n + "], vRay[" + n + "].xy, vRay[" + n + "].zw);\n";
+        s += "    if (s < 0.0) s = march(uDepth" + n + ", uSkip" + n + ", uSample[" + n + "], uRange[" + n +
+             "], vRay[" + n + "].xy, vRay[" + n + "].zw);\n";
     }
     s += "    vec4 c = vec4(0.0);\n    if (s >= 0.0) c = vec4(0.0)";
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
-        s += "\n        + uWeights[" + n + "] * colourAt(uColour" + n + ", uDepth" + n + ", uSample[" + n + "], s, vRay[" + n +
-             "].xy, vRay[" + n + "].zw, gx, gy)";
+        s += "\n        + uWeights[" + n + "] * colourAt(uColour" + n + ", uDepth" + n + ", uSample[" + n +
+             "], s, vRay[" + n + "].xy, vRay[" + n + "].zw, gx, gy)";
     }
     // Where no layer hits there is nothing behind the wall: the sum is 0 and leaves the pixel
     // as it was (premultiplied blending, no depth writes).

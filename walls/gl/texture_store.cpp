@@ -23,8 +23,10 @@ std::size_t TextureStore::update() {
     // Wanted now: whole and at once, a prefetch in flight included.
     if (_inFlight && _pager.wantedNow(_inFlight->decoded.id)) uploaded += finishInFlight();
     while (uploaded < _uploadBytes)
-        if (std::optional<walls::DecodedTexture> d = _pager.takeNext(true)) uploaded += finishWhole(std::move(*d));
-        else break;
+        if (std::optional<walls::DecodedTexture> d = _pager.takeNext(true))
+            uploaded += finishWhole(std::move(*d));
+        else
+            break;
     // Prefetches: bands within what the pacer allows, what the frame wants now counted in.
     while (uploaded < allowed) {
         if (!_inFlight) {
@@ -56,8 +58,11 @@ std::size_t TextureStore::finishWhole(walls::DecodedTexture d) {
 std::size_t TextureStore::makeResident(walls::DecodedTexture& d, GlObject colour) {
     std::size_t depthBytes = 0;
     if (d.depth) {
-        _depthTextures[d.id] = {uploadDepthTexture(*d.depth), d.depth->samplingPoint, d.depth->range, d.depth->content,
-                                 {d.depth->depth.width, d.depth->depth.height}};
+        _depthTextures[d.id] = {uploadDepthTexture(*d.depth),
+                                d.depth->samplingPoint,
+                                d.depth->range,
+                                d.depth->content,
+                                {d.depth->depth.width, d.depth->depth.height}};
         depthBytes = d.depth->gpuBytes();
     }
     _textures[d.id] = std::move(colour);
@@ -100,8 +105,8 @@ std::optional<DepthWallLayer> TextureStore::depthLayer(int id) const {
     const GLuint colour = texture(id);
     if (depth == _depthTextures.end() || colour == 0) return std::nullopt;
     const ResidentDepth& d = depth->second;
-    return DepthWallLayer{colour,    d.texture.depth.id(), d.samplingPoint, d.range, 0.0f, d.texture.skip.id(),
-                          d.content, d.texels};
+    return DepthWallLayer{colour, d.texture.depth.id(), d.samplingPoint, d.range,
+                          0.0f,   d.texture.skip.id(),  d.content,       d.texels};
 }
 
 }  // namespace cavewall::gl

@@ -29,7 +29,8 @@ void main() {
 // conditional samples paid for four samples on every wall (2.5x the fill time of one sample
 // at 1024 x 1024; bench/wall_pass_bench.cpp).
 std::string fragmentSource(int textures) {
-    std::string s = "#version 450 core\nin vec2 vUv;\nuniform vec4 uWeights;\nout vec4 fragColor;  // premultiplied, linear\n";
+    std::string s =
+        "#version 450 core\nin vec2 vUv;\nuniform vec4 uWeights;\nout vec4 fragColor;  // premultiplied, linear\n";
     for (int i = 0; i < textures; ++i)
         s += "layout(binding = " + std::to_string(i) + ") uniform sampler2D uTexture" + std::to_string(i) + ";\n";
     s += "void main() {\n    fragColor = uWeights.x * texture(uTexture0, vUv)";

@@ -28,10 +28,10 @@ namespace cavewall::gl {
 using walls::kMaxWallTextures;  // walls/frame_select.h
 
 struct WallDraw {
-    display::ScreenQuad quad;                    // world frame, metres
+    display::ScreenQuad quad;  // world frame, metres
     std::array<GLuint, kMaxWallTextures> textures{};
     std::array<float, kMaxWallTextures> weights{};  // >= 0, sum <= 1
-    int count = 0;                               // textures used
+    int count = 0;                                  // textures used
     // Where each texture has content (walls::coveredRect, grown for MIP filtering; the whole
     // texture by default): the wall is drawn over their union only.
     std::array<walls::TextureRect, kMaxWallTextures> contents{};

@@ -46,9 +46,9 @@ bool supportsTextureFormat(walls::TextureFormat format) {
 
 unsigned glInternalFormat(walls::TextureFormat format) {
     switch (format) {
-    case walls::TextureFormat::Bc1: return GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT;
-    case walls::TextureFormat::Bc3: return GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT;
-    case walls::TextureFormat::Rgba8: break;
+        case walls::TextureFormat::Bc1: return GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT;
+        case walls::TextureFormat::Bc3: return GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT;
+        case walls::TextureFormat::Rgba8: break;
     }
     return GL_SRGB8_ALPHA8;
 }
@@ -60,17 +60,18 @@ void checkLevels(const walls::TextureLevels& levels) {
     if (levels.count() == 0 || levels.width() <= 0 || levels.height() <= 0)
         throw Error("wall texture: expected at least one non-empty MIP level, got none");
     const bool rgba = levels.format == walls::TextureFormat::Rgba8;
-    const std::string name = rgba ? "'" + levels.rgba[0].name + "'" : std::string(walls::textureFormatName(levels.format));
+    const std::string name =
+        rgba ? "'" + levels.rgba[0].name + "'" : std::string(walls::textureFormatName(levels.format));
     for (std::size_t i = 0; i < levels.count(); ++i) {
         const int w = std::max(1, levels.width() >> i), h = std::max(1, levels.height() >> i);
         const int gotW = rgba ? levels.rgba[i].width : levels.blocks[i].width;
         const int gotH = rgba ? levels.rgba[i].height : levels.blocks[i].height;
         const std::size_t bytes = rgba ? levels.rgba[i].rgba.size() : levels.blocks[i].blocks.size();
         if (gotW != w || gotH != h || bytes != walls::levelBytes(levels.format, w, h))
-            throw Error("wall texture " + name + ": MIP level " + std::to_string(i) + ": expected " + std::to_string(w) +
-                        " x " + std::to_string(h) + " (" + std::to_string(walls::levelBytes(levels.format, w, h)) +
-                        " bytes), got " + std::to_string(gotW) + " x " + std::to_string(gotH) + " (" +
-                        std::to_string(bytes) + " bytes)");
+            throw Error("wall texture " + name + ": MIP level " + std::to_string(i) + ": expected " +
+                        std::to_string(w) + " x " + std::to_string(h) + " (" +
+                        std::to_string(walls::levelBytes(levels.format, w, h)) + " bytes), got " +
+                        std::to_string(gotW) + " x " + std::to_string(gotH) + " (" + std::to_string(bytes) + " bytes)");
     }
 }
 
@@ -78,8 +79,9 @@ void checkLevels(const walls::TextureLevels& levels) {
 
 gl::GlObject createWallTexture(const walls::TextureLevels& levels) {
     if (levels.format != walls::TextureFormat::Rgba8 && !supportsTextureFormat(levels.format))
-        throw Error("wall texture: expected a context that samples " + std::string(walls::textureFormatName(levels.format)) +
-                    " (GL_EXT_texture_compression_s3tc with sRGB), got one without it; bake with --texture-format rgba8");
+        throw Error(
+            "wall texture: expected a context that samples " + std::string(walls::textureFormatName(levels.format)) +
+            " (GL_EXT_texture_compression_s3tc with sRGB), got one without it; bake with --texture-format rgba8");
     checkLevels(levels);
     gl::GlObject t = gl::createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(t.id(), static_cast<GLsizei>(levels.count()), glInternalFormat(levels.format), levels.width(),
@@ -103,8 +105,9 @@ void uploadWallTextureBand(GLuint texture, const walls::TextureLevels& levels, c
         return;
     }
     const walls::BlockLevel& l = levels.blocks[level];
-    glCompressedTextureSubImage2D(texture, piece.level, 0, piece.y, l.width, piece.rows, glInternalFormat(levels.format),
-                                  static_cast<GLsizei>(piece.bytes), l.blocks.data() + piece.offset);
+    glCompressedTextureSubImage2D(texture, piece.level, 0, piece.y, l.width, piece.rows,
+                                  glInternalFormat(levels.format), static_cast<GLsizei>(piece.bytes),
+                                  l.blocks.data() + piece.offset);
 }
 
 gl::GlObject uploadWallTexture(const walls::TextureLevels& levels) {
@@ -128,8 +131,8 @@ WallQuadDrawer::WallQuadDrawer()
 void WallQuadDrawer::draw(const display::OffAxisFrustum& frustum, const display::ScreenQuad& quad, unsigned texture,
                           float weight) {
     const glm::dvec3 right = quad.lowerRight - quad.lowerLeft, up = quad.upperLeft - quad.lowerLeft;
-    const glm::dmat4 frameFromModel(glm::dvec4(right, 0.0), glm::dvec4(up, 0.0),
-                                    glm::dvec4(glm::cross(right, up), 0.0), glm::dvec4(quad.lowerLeft, 1.0));
+    const glm::dmat4 frameFromModel(glm::dvec4(right, 0.0), glm::dvec4(up, 0.0), glm::dvec4(glm::cross(right, up), 0.0),
+                                    glm::dvec4(quad.lowerLeft, 1.0));
     const glm::mat4 modelView = display::eyeRelativeModelView(frustum, frameFromModel);
     const glm::mat4 projection(frustum.clipFromView);
     glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);

@@ -49,8 +49,8 @@ public:
 
     // Wall-clock milliseconds of the last render() on the calling thread.
     struct Timing {
-        double drawMs = 0.0;   // level choice, culling, submission and the GL work until finished
-        double readMs = 0.0;   // reading the colour (and depth) back, rows flipped
+        double drawMs = 0.0;  // level choice, culling, submission and the GL work until finished
+        double readMs = 0.0;  // reading the colour (and depth) back, rows flipped
     };
     const Timing& lastTiming() const { return _timing; }
 

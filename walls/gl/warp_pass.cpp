@@ -13,7 +13,6 @@ namespace cavewall::gl {
 
 namespace {
 
-
 constexpr const char* kHoleVertex = R"(#version 450 core
 layout(location = 0) uniform vec3 uCorners[4];  // lowerLeft, lowerRight, upperLeft, upperRight, B's view frame
 layout(location = 4) uniform mat4 uProjection;
@@ -114,8 +113,7 @@ bool meetsTextureView(const scenes::Bounds& b, glm::dvec3 n, double d, const glm
 WarpPass::WarpPass(const scenes::Scene& scene, const GpuScene& gpu, RenderSettings settings, double nearB)
     : _scene(scene), _gpu(gpu), _settings(settings), _nearB(nearB),
       _holeProgram(buildProgram("warp hole", kHoleVertex, kHoleFragment)),
-      _warpProgram(buildProgram("warp structure", kWarpVertex, kWarpFragment)),
-      _emptyVertexArray(createVertexArray()) {
+      _warpProgram(buildProgram("warp structure", kWarpVertex, kWarpFragment)), _emptyVertexArray(createVertexArray()) {
     for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i)
         if (scene.objects[i].role == scenes::Role::Structure)
             _structure.push_back(i);
@@ -133,8 +131,8 @@ GLuint WarpPass::depthCopy(GLuint depth, glm::ivec2 size) {
     }
     GLint viewport[4];
     glGetIntegerv(GL_VIEWPORT, viewport);
-    glCopyImageSubData(depth, GL_TEXTURE_2D, 0, viewport[0], viewport[1], 0, copy.id(), GL_TEXTURE_2D, 0,
-                       viewport[0], viewport[1], 0, viewport[2], viewport[3], 1);
+    glCopyImageSubData(depth, GL_TEXTURE_2D, 0, viewport[0], viewport[1], 0, copy.id(), GL_TEXTURE_2D, 0, viewport[0],
+                       viewport[1], 0, viewport[2], viewport[3], 1);
     return copy.id();
 }
 
@@ -149,7 +147,8 @@ void WarpPass::punch(const WarpWall& wall, const glm::dmat4& viewFromWorldB, con
     glBindSampler(0, 0);
     glUseProgram(_holeProgram.id());
     glBindVertexArray(_emptyVertexArray.id());
-    const glm::dvec3 corners[4] = {wall.quad.lowerLeft, wall.quad.lowerRight, wall.quad.upperLeft, upperRight(wall.quad)};
+    const glm::dvec3 corners[4] = {wall.quad.lowerLeft, wall.quad.lowerRight, wall.quad.upperLeft,
+                                   upperRight(wall.quad)};
     glm::vec3 view[4];
     for (int i = 0; i < 4; ++i) view[i] = glm::vec3(viewFromWorldB * glm::dvec4(corners[i], 1.0));
     glUniform3fv(0, 4, glm::value_ptr(view[0]));
@@ -210,7 +209,8 @@ void WarpPass::drawStructure(const WarpWall& wall, const display::ScreenView& vi
         const glm::dmat4 bFromModel = viewFromWorldB * o.worldFromModel;
         // Stored positions decode into the model frame (GpuScene::modelFromStored).
         const glm::dmat4& modelFromStored = _gpu.modelFromStored(o.mesh);
-        glUniformMatrix4fv(0, 1, GL_FALSE, glm::value_ptr(glm::mat4(a.viewFromFrame * o.worldFromModel * modelFromStored)));
+        glUniformMatrix4fv(0, 1, GL_FALSE,
+                           glm::value_ptr(glm::mat4(a.viewFromFrame * o.worldFromModel * modelFromStored)));
         glUniformMatrix4fv(1, 1, GL_FALSE, glm::value_ptr(glm::mat4(bFromModel * modelFromStored)));
         const glm::mat3 normalB(glm::transpose(glm::inverse(glm::dmat3(bFromModel))));
         glUniformMatrix3fv(5, 1, GL_FALSE, glm::value_ptr(normalB));

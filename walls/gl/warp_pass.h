@@ -63,7 +63,7 @@ private:
     const GpuScene& _gpu;
     RenderSettings _settings;
     double _nearB;
-    std::vector<int> _structure;                // structure object indices
+    std::vector<int> _structure;                   // structure object indices
     std::map<int, std::vector<int>> _cellObjects;  // non-structure object indices by cell
     GlObject _holeProgram, _warpProgram, _emptyVertexArray;
     std::map<std::pair<int, int>, GlObject> _depthCopies;  // by size

@@ -26,11 +26,11 @@
 namespace cavewall::gl {
 
 struct DrawBenchOptions {
-    int frames = 40;                                   // timed frames per configuration, >= 1
-    int warmup = 5;                                    // untimed frames before them, >= 0
-    int resolution = 1024;                             // pixels per side of the square view
-    double fovDeg = bench::kOsgViewerFovDeg;           // vertical (and horizontal) field of view
-    std::optional<std::filesystem::path> imageDir;     // write culled.png and both.png there
+    int frames = 40;                                // timed frames per configuration, >= 1
+    int warmup = 5;                                 // untimed frames before them, >= 0
+    int resolution = 1024;                          // pixels per side of the square view
+    double fovDeg = bench::kOsgViewerFovDeg;        // vertical (and horizontal) field of view
+    std::optional<std::filesystem::path> imageDir;  // write culled.png and both.png there
     // Also time both configurations with every draw lit per pixel (vertex lighting off,
     // render/vertex_lighting.h), in the same rotation: what lighting per vertex gains.
     bool compareLighting = false;
@@ -38,22 +38,22 @@ struct DrawBenchOptions {
 
 struct DrawBenchRow {
     bool cullBackFaces = true;
-    bool perPixelOnly = false;                         // vertex lighting off
+    bool perPixelOnly = false;  // vertex lighting off
     bench::DrawTiming timing;
-    std::size_t trianglesSubmitted = 0;                // per frame, after frustum culling
-    std::vector<double> frameMs;                       // every timed frame, in order (wall clock)
-    std::vector<double> cpuMs;                         // the same frames' process CPU time
+    std::size_t trianglesSubmitted = 0;  // per frame, after frustum culling
+    std::vector<double> frameMs;         // every timed frame, in order (wall clock)
+    std::vector<double> cpuMs;           // the same frames' process CPU time
 };
 
 struct DrawBenchResult {
-    std::string glRenderer;                            // GL_RENDERER
+    std::string glRenderer;  // GL_RENDERER
     bench::HomeView view;
-    std::size_t triangles = 0;                         // the scene's drawn triangles
-    double vertexBytesPerTriangle = 0.0;               // GPU vertex buffer / triangles
-    double indexBytesPerTriangle = 0.0;                // GPU index buffer / triangles
-    std::vector<DrawBenchRow> rows;                    // culling on, then off (each with the
-                                                       // default lighting, then per pixel only
-                                                       // with compareLighting)
+    std::size_t triangles = 0;            // the scene's drawn triangles
+    double vertexBytesPerTriangle = 0.0;  // GPU vertex buffer / triangles
+    double indexBytesPerTriangle = 0.0;   // GPU index buffer / triangles
+    std::vector<DrawBenchRow> rows;       // culling on, then off (each with the
+                                          // default lighting, then per pixel only
+                                          // with compareLighting)
 };
 
 // Runs both configurations in a headless context. `scene` must have at least one object.

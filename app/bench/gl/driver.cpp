@@ -55,8 +55,8 @@ BakedWalls bakeWalls(const BenchOptions& o, const std::filesystem::path& sceneFi
     out.diskMB = static_cast<double>(baked.totalBytes) / 1e6;
     out.setup.manifest = std::move(baked.manifest);
     out.summary = "a=" + config::formatNumber(alphaDeg) + ": " + std::to_string(out.setup.plan.textures.size()) +
-                  " textures (" + std::string(walls::textureFormatName(o.textureFormat)) + ", " +
-                  fixed(out.diskMB) + " MB on disk), " + std::to_string(baked.baked) + " baked now in " + fixed(baked.seconds) + " s, " +
+                  " textures (" + std::string(walls::textureFormatName(o.textureFormat)) + ", " + fixed(out.diskMB) +
+                  " MB on disk), " + std::to_string(baked.baked) + " baked now in " + fixed(baked.seconds) + " s, " +
                   std::to_string(baked.reused) + " from the cache";
     return out;
 }
@@ -132,9 +132,10 @@ std::vector<std::vector<BakedWalls>> bakeCompareScenes(const BenchOptions& o,
         const CompareScene& other = *others[k];
         report.header.push_back("compare scene [" + which.tag + "]: " + which.scene.string() + " (" +
                                 std::to_string(other.description.cells.size()) + " cells, " +
-                                std::to_string(other.description.walls.size()) + " walls; the bench scene: " +
-                                std::to_string(description.cells.size()) + " cells, " +
-                                std::to_string(description.walls.size()) + " walls), drawn on the bench scene's eye "
+                                std::to_string(other.description.walls.size()) +
+                                " walls; the bench scene: " + std::to_string(description.cells.size()) + " cells, " +
+                                std::to_string(description.walls.size()) +
+                                " walls), drawn on the bench scene's eye "
                                 "path, its own plan and bake at every alpha");
         for (double alpha : o.alphasDeg) {
             say(o, "bench: plan and bake [" + which.tag + "]'s walls at a=" + config::formatNumber(alpha) + " deg");
@@ -192,33 +193,39 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                 std::string(config::toString(o.display.stereo)) + " stereo mode",
             path.description,
             "image error against the full-geometry image of the same frame, eye and screen, every " +
-                std::to_string(o.compareEvery) + " frames; PSNR on sRGB RGB in [0,1] pooled over all compared pixels "
+                std::to_string(o.compareEvery) +
+                " frames; PSNR on sRGB RGB in [0,1] pooled over all compared pixels "
                 "(scenes/image_error.h), SSIM on luma (11x11 Gaussian window, sigma 1.5), LDR-FLIP at each screen's "
                 "fewest pixels per degree from the frame's head position (display::minPixelsPerDegree, clamped to "
                 "[1, 1000]), popping between consecutive compared frames of each screen (32-pixel tiles)",
             "walls: plan minZoneSize " + config::formatNumber(o.plan.minZoneSize) + " m, pixelsPerDegree " +
-                config::formatNumber(o.plan.pixelsPerDegree) + ", blendWidth " + config::formatNumber(o.plan.blendWidth) +
-                " m; bake maxResolution " + std::to_string(o.bakeResolution) +
+                config::formatNumber(o.plan.pixelsPerDegree) + ", blendWidth " +
+                config::formatNumber(o.plan.blendWidth) + " m; bake maxResolution " + std::to_string(o.bakeResolution) +
                 " texels; textures all resident (warm-up pass, synchronous paging) except in the paged mode",
             "machine: " + context.info().renderer + ", " + std::to_string(std::thread::hardware_concurrency()) +
                 " hardware threads",
             "transitions: blend at every alpha; warp (structure behind textured walls warped into the texture's "
-            "view) at alpha " + config::formatNumber(o.transitionAlphaDeg) + "; 'blend paged' at the same alpha pages "
-            "as `cavewall run` does (background decoding, default budget and upload limit, cold start)",
+            "view) at alpha " +
+                config::formatNumber(o.transitionAlphaDeg) +
+                "; 'blend paged' at the same alpha pages "
+                "as `cavewall run` does (background decoding, default budget and upload limit, cold start)",
             "near: the near-geometry limit, the viewer's cell plus its walls as bare quads (one 1x1 texture); "
             "cells: the cells the walls mode draws as geometry, without textures; cells+layer: the same plus one "
             "textured full-screen layer per view through the wall pass (512x512 MIP-mapped sRGB, weight 0: the "
             "control's image at one wall layer's cost)",
             o.lodPixels > 0.0 ? "lod: levels of detail built when the mode starts (meshoptimizer, sampled Hausdorff "
                                 "error), each object drawn at the coarsest level within " +
-                                    config::formatNumber(o.lodPixels) + " px on every screen it appears on; budgets "
-                                    "raise that tolerance to at most " + config::formatNumber(o.lodMaxPixels) + " px"
+                                    config::formatNumber(o.lodPixels) +
+                                    " px on every screen it appears on; budgets "
+                                    "raise that tolerance to at most " +
+                                    config::formatNumber(o.lodMaxPixels) + " px"
                               : "lod: off (--lod 0)"};
 }
 
 // The checks that need no file: they fail before anything is loaded.
 void checkOptions(const BenchOptions& o) {
-    if (o.compareEvery < 1) throw Error("bench: compareEvery: expected at least 1, got " + std::to_string(o.compareEvery));
+    if (o.compareEvery < 1)
+        throw Error("bench: compareEvery: expected at least 1, got " + std::to_string(o.compareEvery));
     if (o.alphasDeg.empty()) throw Error("bench: expected at least one alpha for the walls modes, got none");
     if (o.frames < 1) throw Error("--frames: expected at least 1, got " + std::to_string(o.frames));
     for (double budget : o.clusterBudgetsMs)
@@ -291,16 +298,18 @@ struct Bench {
     const std::vector<BakedWalls>& baked;                    // per alpha
     const std::vector<std::vector<BakedWalls>>& otherBaked;  // per compare scene, per alpha
     const std::vector<std::unique_ptr<CompareScene>>& others;
-    std::size_t transitionIndex = 0;                         // of transitionAlphaDeg in alphasDeg
+    std::size_t transitionIndex = 0;  // of transitionAlphaDeg in alphasDeg
     ReferenceImages reference{};
-    double fullP50 = 0.0;                                    // full geometry's (the reference's) median ms
+    double fullP50 = 0.0;  // full geometry's (the reference's) median ms
 };
 
 // A walls mode at alphasDeg[alphaIndex] of the bench scene or of compare scene `compare`, with
 // the textures of its walls.
 BenchMode wallsAt(const Bench& b, std::size_t alphaIndex, const WallsModeOptions& options,
                   std::optional<std::size_t> compare = std::nullopt, Phase phase = Phase::Interleaved) {
-    BenchMode m{.phase = phase, .mode = wallsMode(b.o.alphasDeg[alphaIndex], options), .alphaIndex = alphaIndex,
+    BenchMode m{.phase = phase,
+                .mode = wallsMode(b.o.alphasDeg[alphaIndex], options),
+                .alphaIndex = alphaIndex,
                 .compare = compare};
     const BakedWalls& walls = compare ? b.otherBaked[*compare][alphaIndex] : b.baked[alphaIndex];
     m.mode.textures = static_cast<int>(walls.setup.plan.textures.size());
@@ -361,8 +370,8 @@ std::vector<BenchMode> planModes(const Bench& b) {
         table.push_back(cellMode(Phase::Cells, draw, 0.0));
     if (lod) table.push_back(cellMode(Phase::CellsLod, CellDraw::Near, o.lodPixels));
     addWallsModes(table, b, {});
-    const std::vector<std::size_t> lodModes = lod ? addWallsModes(table, b, {.lodPixels = o.lodPixels})
-                                                  : std::vector<std::size_t>{};
+    const std::vector<std::size_t> lodModes =
+        lod ? addWallsModes(table, b, {.lodPixels = o.lodPixels}) : std::vector<std::size_t>{};
     table.push_back(wallsAt(b, b.transitionIndex, {.transition = app::Transition::Warp}));
     table.push_back(wallsAt(b, b.transitionIndex, {.paged = true}, std::nullopt, Phase::Paged));
     if (o.onDemandCache) table.push_back({.phase = Phase::OnDemand, .mode = wallsMode(o.transitionAlphaDeg)});
@@ -450,15 +459,17 @@ void runCellPhase(std::vector<BenchMode>& table, Phase phase, Bench& b) {
 void runOnDemandPhase(std::vector<BenchMode>& table, Bench& b, BenchReport& report) {
     const BenchOptions& o = b.o;
     for (std::size_t i : modesOf(table, Phase::OnDemand)) {
-        say(o, "bench: walls a=" + config::formatNumber(o.transitionAlphaDeg) + " blend on demand, from an empty cache " +
-                   o.onDemandCache->string());
+        say(o, "bench: walls a=" + config::formatNumber(o.transitionAlphaDeg) +
+                   " blend on demand, from an empty cache " + o.onDemandCache->string());
         table[i].result = onDemandMode(o, o.transitionAlphaDeg, b.c, b.reference, b.fullP50);
-        report.header.push_back("on demand: walls at alpha " + config::formatNumber(o.transitionAlphaDeg) +
-                                " baked while walking (background baker at nice 10, as `cavewall run "
-                                "--bake-on-demand`) from an empty private cache " + o.onDemandCache->string() +
-                                ", alone after the paged mode; the first path frame drawn once first (first frame "
-                                "after the scene's load: planning, keying the cache, the walkthrough, that frame), then "
-                                "every path frame timed");
+        report.header.push_back(
+            "on demand: walls at alpha " + config::formatNumber(o.transitionAlphaDeg) +
+            " baked while walking (background baker at nice 10, as `cavewall run "
+            "--bake-on-demand`) from an empty private cache " +
+            o.onDemandCache->string() +
+            ", alone after the paged mode; the first path frame drawn once first (first frame "
+            "after the scene's load: planning, keying the cache, the walkthrough, that frame), then "
+            "every path frame timed");
     }
 }
 
@@ -477,12 +488,12 @@ void addNoiseFloor(BenchReport& report, const Bench& b) {
     auto ratio = [](const TimeStats& t) { return fixed(t.p50 > 0 ? t.p99 / t.p50 : 0.0, 2); };
     report.noiseFloorRatio = n.repeated.p50 > 0 ? n.repeated.p99 / n.repeated.p50 : 0.0;
     report.noiseFloorP95Ratio = n.repeated.p50 > 0 ? n.repeated.p95 / n.repeated.p50 : 0.0;
-    report.header.push_back(
-        "noise floor: " + modeLabel(last) + " along the path, each frame followed by frame " +
-        std::to_string(middle) + " again: the path's frames p50 " + fixed(n.path.p50, 2) + " ms, p99/p50 " +
-        ratio(n.path) + "; the repeated frame (the same work every time) p50 " + fixed(n.repeated.p50, 2) +
-        " ms, p99/p50 " + ratio(n.repeated) + ": what the repeated frame shows is the machine's noise, not the "
-        "renderer's");
+    report.header.push_back("noise floor: " + modeLabel(last) + " along the path, each frame followed by frame " +
+                            std::to_string(middle) + " again: the path's frames p50 " + fixed(n.path.p50, 2) +
+                            " ms, p99/p50 " + ratio(n.path) + "; the repeated frame (the same work every time) p50 " +
+                            fixed(n.repeated.p50, 2) + " ms, p99/p50 " + ratio(n.repeated) +
+                            ": what the repeated frame shows is the machine's noise, not the "
+                            "renderer's");
 }
 
 // Runs every phase of `table` and adds the modes to `report` in the table's order.
@@ -518,7 +529,8 @@ BenchReport runBenchmark(const BenchOptions& o) {
     scenes::SceneDescription description;
     const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description);
     app::useRoute(description, o.route, o.scene.string());
-    if (description.walls.empty()) throw Error(o.scene.string() + ": the scene has no virtual walls (expected at least 1 to bench)");
+    if (description.walls.empty())
+        throw Error(o.scene.string() + ": the scene has no virtual walls (expected at least 1 to bench)");
     // Checked before anything is baked: a bad compare scene or cache folder fails at once.
     const std::vector<std::unique_ptr<CompareScene>> others = loadCompareScenes(o, scene);
     checkOnDemand(o);
@@ -531,25 +543,38 @@ BenchReport runBenchmark(const BenchOptions& o) {
     const auto& s0 = o.display.screens.front();
     report.resolution = std::to_string(s0.resolution.x) + "x" + std::to_string(s0.resolution.y) + " per screen, " +
                         std::string(config::toString(o.display.stereo));
-    const ModeContext c{scene, description, display, *context, path, o.compareEvery, o.lodMaxPixels, o.wallKind,
+    const ModeContext c{scene,
+                        description,
+                        display,
+                        *context,
+                        path,
+                        o.compareEvery,
+                        o.lodMaxPixels,
+                        o.wallKind,
                         o.clusters ? (o.cache ? *o.cache : defaultCacheFolder()) : std::filesystem::path()};
 
     const std::vector<BakedWalls> baked = bakeOwnWalls(o, scene, description, *context, report);
     const std::vector<std::vector<BakedWalls>> otherBaked = bakeCompareScenes(o, others, description, *context, report);
     const auto listed = std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg);  // checked on entry
-    Bench b{.o = o, .display = display, .c = c, .baked = baked, .otherBaked = otherBaked, .others = others,
+    Bench b{.o = o,
+            .display = display,
+            .c = c,
+            .baked = baked,
+            .otherBaked = otherBaked,
+            .others = others,
             .transitionIndex = static_cast<std::size_t>(listed - o.alphasDeg.begin())};
     std::vector<BenchMode> table = planModes(b);
     runModes(table, b, report);
     if (o.lodPixels > 0.0 && o.triangleBudget == 0)
-        report.header.push_back("triangle budgets: per alpha, the median triangles of the same walls mode without a "
-                                "budget");
+        report.header.push_back(
+            "triangle budgets: per alpha, the median triangles of the same walls mode without a "
+            "budget");
     addNoiseFloor(report, b);
     compareWithControl(report);
-    report.header.push_back("control: 'cells' (the cells the walls draw as geometry, no textures); 'vs control' is "
-                            "every walls mode's pooled PSNR gain over it and its FLIP mean as a fraction of its");
-    report.header.push_back("bench time: " +
-                            fixed(display::msSince(start) / 1000.0, 0) +
+    report.header.push_back(
+        "control: 'cells' (the cells the walls draw as geometry, no textures); 'vs control' is "
+        "every walls mode's pooled PSNR gain over it and its FLIP mean as a fraction of its");
+    report.header.push_back("bench time: " + fixed(display::msSince(start) / 1000.0, 0) +
                             " s in total (all modes, bakes included)");
     return report;
 }

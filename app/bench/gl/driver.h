@@ -58,31 +58,31 @@
 namespace cavewall::gl {
 
 struct BenchOptions {
-    std::filesystem::path scene;                  // scene.json, its folder, or glTF/GLB
-    config::DisplayConfig display;                // validated; drawn at its screens' resolutions
-    std::string tracker = "sim:walk";             // head source (input::makeTracker spec)
-    app::Route route = app::Route::Walk;          // the scene's path the eye follows
-    long frames = 120;                            // frames of the eye path
-    int compareEvery = 4;                         // frames between image comparisons, >= 1
+    std::filesystem::path scene;          // scene.json, its folder, or glTF/GLB
+    config::DisplayConfig display;        // validated; drawn at its screens' resolutions
+    std::string tracker = "sim:walk";     // head source (input::makeTracker spec)
+    app::Route route = app::Route::Walk;  // the scene's path the eye follows
+    long frames = 120;                    // frames of the eye path
+    int compareEvery = 4;                 // frames between image comparisons, >= 1
     std::vector<double> alphasDeg{10, 20, 30};
-    double transitionAlphaDeg = 20.0;             // warp and paged modes; plan of the cells modes
-    walls::PlanOptions plan;                      // alphaDeg replaced per mode
-    int bakeResolution = 512;                     // BakeSettings::maxResolution
-    double lodPixels = 1.0;                       // level-of-detail modes' tolerance; 0: none
-    std::size_t triangleBudget = 0;               // the budget mode's; 0: the median of its mode
-                                                  // without a budget
-    double frameBudgetMs = 1000.0 / 60.0;         // the frame-time modes' target; 0: none
-    double lodMaxPixels = 8.0;                    // the most a budget may raise the tolerance to
+    double transitionAlphaDeg = 20.0;                  // warp and paged modes; plan of the cells modes
+    walls::PlanOptions plan;                           // alphaDeg replaced per mode
+    int bakeResolution = 512;                          // BakeSettings::maxResolution
+    double lodPixels = 1.0;                            // level-of-detail modes' tolerance; 0: none
+    std::size_t triangleBudget = 0;                    // the budget mode's; 0: the median of its mode
+                                                       // without a budget
+    double frameBudgetMs = 1000.0 / 60.0;              // the frame-time modes' target; 0: none
+    double lodMaxPixels = 8.0;                         // the most a budget may raise the tolerance to
     walls::WallKind wallKind = walls::WallKind::Flat;  // --walls: flat or depth walls (bake and draw)
     // --texture-format: storage of the baked colour (walls/texture_blocks.h), disk and GPU
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
-    std::optional<std::filesystem::path> cache;   // bake cache (default: the baker's)
-    bool clusters = false;                        // also Maciel & Shirley's (1995) textured
-                                                  // clusters held to frameBudgetMs (16.67 when it
-                                                  // is 0), interleaved with full geometry and the
-                                                  // walls modes
-    std::vector<double> clusterBudgetsMs;         // with clusters: one clusters mode per budget
-                                                  // (hierarchy/cluster_budget.h) instead; each > 0
+    std::optional<std::filesystem::path> cache;  // bake cache (default: the baker's)
+    bool clusters = false;                       // also Maciel & Shirley's (1995) textured
+                                                 // clusters held to frameBudgetMs (16.67 when it
+                                                 // is 0), interleaved with full geometry and the
+                                                 // walls modes
+    std::vector<double> clusterBudgetsMs;        // with clusters: one clusters mode per budget
+                                                 // (hierarchy/cluster_budget.h) instead; each > 0
     // Other scene.json files of the same model (same objects and triangles), each with its own
     // cells and walls, benched beside the scene's walls on the scene's eye path; their modes are
     // labelled with their tags ("walls a=10 blend [auto]"), which must differ.
@@ -94,7 +94,7 @@ struct BenchOptions {
     // The on-demand mode's private bake cache (bench::makeEmptyPrivateCache: emptied first,
     // never the shared cache); unset: no on-demand mode. Flat walls only.
     std::optional<std::filesystem::path> onDemandCache;
-    bool verbose = true;                          // progress on stdout
+    bool verbose = true;  // progress on stdout
 };
 
 // Runs every mode; throws cavewall::Error on bad input (scene, tracker spec, options).

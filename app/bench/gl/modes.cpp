@@ -31,17 +31,34 @@ namespace {
 bool compared(const ModeContext& c, long frame) { return frame % c.compareEvery == 0; }
 
 FrameCost frameCost(const walkthrough::FrameResult& r) {
-    return {r.frameMs, r.cpuMs, r.gpuMs, static_cast<double>(r.stats.triangles), static_cast<double>(r.stats.drawCalls),
-            r.maxErrorDeg, r.maxErrorPixels, r.pager.residentMB, r.pager.misses, r.perScreen, r.lodErrorPx,
-            r.lodTolerancePx, r.lodOverBudget, r.texturesOverAlpha, static_cast<double>(r.uploadedBytes) / 1e6,
-            r.clusterPredictedMs, r.clusterPredictedFrameMs, r.clusterFloorMs, r.geometryFallbacks, r.texturesBaked};
+    return {r.frameMs,
+            r.cpuMs,
+            r.gpuMs,
+            static_cast<double>(r.stats.triangles),
+            static_cast<double>(r.stats.drawCalls),
+            r.maxErrorDeg,
+            r.maxErrorPixels,
+            r.pager.residentMB,
+            r.pager.misses,
+            r.perScreen,
+            r.lodErrorPx,
+            r.lodTolerancePx,
+            r.lodOverBudget,
+            r.texturesOverAlpha,
+            static_cast<double>(r.uploadedBytes) / 1e6,
+            r.clusterPredictedMs,
+            r.clusterPredictedFrameMs,
+            r.clusterFloorMs,
+            r.geometryFallbacks,
+            r.texturesBaked};
 }
 
 }  // namespace
 
 ModeAccumulator::ModeAccumulator(ModeResult mode, const display::Display& display)
-    : _mode(std::move(mode)), _display(display), _errors(display.screens().size()), _screenCpu(display.screens().size()),
-      _screenTriangles(display.screens().size()), _screenDrawCalls(display.screens().size()) {
+    : _mode(std::move(mode)), _display(display), _errors(display.screens().size()),
+      _screenCpu(display.screens().size()), _screenTriangles(display.screens().size()),
+      _screenDrawCalls(display.screens().size()) {
     _mode.screens.clear();
     for (const auto& s : display.screens()) {
         ScreenResult screen;
@@ -78,8 +95,8 @@ std::vector<ComparedImage> comparedImages(const display::Display& display, const
                                           const std::vector<gl::ScreenImage>& images,
                                           const std::vector<gl::ScreenImage>& reference, const std::string& mode) {
     if (images.size() != reference.size())
-        throw Error("bench: mode " + mode + " read " + std::to_string(images.size()) + " images, expected the reference's " +
-                    std::to_string(reference.size()));
+        throw Error("bench: mode " + mode + " read " + std::to_string(images.size()) +
+                    " images, expected the reference's " + std::to_string(reference.size()));
     std::vector<ComparedImage> compared;
     for (std::size_t i = 0; i < images.size(); ++i) {
         const int screen = images[i].screen;
@@ -129,8 +146,8 @@ ModeResult ModeAccumulator::finish(double fullP50) const {
 void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, ReferenceImages& reference) {
     struct Live {
         std::unique_ptr<gl::Walkthrough> walkthrough;
-        std::optional<display::FrameTimeBudget> frameBudget;     // levels of detail: triangles
-        std::optional<hierarchy::ClusterBudget> clusterBudget;      // clusters: predicted ms
+        std::optional<display::FrameTimeBudget> frameBudget;    // levels of detail: triangles
+        std::optional<hierarchy::ClusterBudget> clusterBudget;  // clusters: predicted ms
         std::vector<double> warmTriangles;
     };
     std::vector<Live> live(runs.size());
@@ -148,7 +165,8 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         Live& l = live[i];
         if (run.budgetFrom >= 0) {
             const auto& t = live.at(static_cast<std::size_t>(run.budgetFrom)).warmTriangles;
-            run.acc->setTriangleBudget(std::max<std::size_t>(1, t.empty() ? 1 : static_cast<std::size_t>(display::median(t))));
+            run.acc->setTriangleBudget(
+                std::max<std::size_t>(1, t.empty() ? 1 : static_cast<std::size_t>(display::median(t))));
         }
         const ModeResult& mode = run.acc->mode();
         gl::WalkthroughOptions options;
@@ -168,8 +186,8 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         const bool hasWalls = run.walls.has_value();
         assert((run.scene == nullptr) == (run.description == nullptr));
         l.walkthrough = std::make_unique<gl::Walkthrough>(run.scene ? *run.scene : c.scene,
-                                                          run.description ? *run.description : c.description,
-                                                          c.display, c.context, run.walls, options);
+                                                          run.description ? *run.description : c.description, c.display,
+                                                          c.context, run.walls, options);
         if (mode.frameBudgetMs > 0.0 && !run.clusters) l.frameBudget.emplace(mode.frameBudgetMs);
         if (mode.frameBudgetMs > 0.0 && run.clusters) l.clusterBudget.emplace(mode.frameBudgetMs);
         // Warm-up: shaders, buffers and (with walls, unless paged) every texture of the path made
@@ -188,8 +206,10 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
             walkthrough::FrameResult r = render(live[i], in);
             runs[i].acc->addFrame(frameCost(r));
             if (!in.readImages) continue;
-            if (runs[i].storeReference) reference[in.frame] = std::move(r.images);
-            else runs[i].acc->compare(in.frame, in.head, r.images, reference.at(in.frame));
+            if (runs[i].storeReference)
+                reference[in.frame] = std::move(r.images);
+            else
+                runs[i].acc->compare(in.frame, in.head, r.images, reference.at(in.frame));
         }
     }
 }
@@ -312,7 +332,8 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
         const glm::dmat4 caveFromWorld = glm::inverse(in.worldFromCave);
         gl::FrameStats quadStats;
         auto afterView = [&](const display::ScreenView& view) {
-            if (kind == CellDraw::Near) quadPass.draw(quads, view.frustum, caveFromWorld, 0, quadStats);
+            if (kind == CellDraw::Near)
+                quadPass.draw(quads, view.frustum, caveFromWorld, 0, quadStats);
             else  // the view's screen, in the cave frame
                 quadPass.draw({{c.display.quad(view.screen), {layer.id()}, {0.0f}, 1}}, view.frustum, glm::dmat4(1.0),
                               sampler.id(), quadStats);

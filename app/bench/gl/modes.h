@@ -23,17 +23,17 @@ struct FrameCost {
     double triangles = 0.0, drawCalls = 0.0;
     double errorDeg = 0.0, errorPx = 0.0;
     double residentMB = 0.0;
-    long misses = 0;                    // cumulative, as the pager counts
-    std::vector<gl::ViewStats> perScreen;  // per display screen: CPU ms, triangles, draw calls
+    long misses = 0;                                // cumulative, as the pager counts
+    std::vector<gl::ViewStats> perScreen;           // per display screen: CPU ms, triangles, draw calls
     double lodErrorPx = 0.0, lodTolerancePx = 0.0;  // FrameResult's (0 without levels of detail)
     bool overBudget = false;
-    int texturesOverAlpha = 0;          // FrameResult's: drawn textures whose exact error exceeds alpha
-    double uploadedMB = 0.0;            // wall texture MB uploaded this frame
+    int texturesOverAlpha = 0;  // FrameResult's: drawn textures whose exact error exceeds alpha
+    double uploadedMB = 0.0;    // wall texture MB uploaded this frame
     // Clusters held to a frame time (FrameResult's): the predicted cost of what was drawn, the
     // frame time the controller predicted and the floor (0 without one).
     double clusterPredictedMs = 0.0, clusterPredictedFrameMs = 0.0, clusterFloorMs = 0.0;
-    int geometryFallbacks = 0;          // FrameResult's: walls drawn as geometry for want of a texture
-    int texturesBaked = 0;              // FrameResult's: baking on demand, baked so far
+    int geometryFallbacks = 0;  // FrameResult's: walls drawn as geometry for want of a texture
+    int texturesBaked = 0;      // FrameResult's: baking on demand, baked so far
 };
 
 // One compared frame's images for bench::ErrorPool: `images` against the `reference` of the
@@ -66,7 +66,7 @@ private:
     std::vector<double> _frame, _cpu, _gpu;
     double _triangles = 0.0, _drawCalls = 0.0, _lodTolerance = 0.0;
     bench::ErrorPool _errors;
-    std::vector<std::vector<double>> _screenCpu;           // per screen, per frame
+    std::vector<std::vector<double>> _screenCpu;             // per screen, per frame
     std::vector<double> _screenTriangles, _screenDrawCalls;  // per screen, summed over frames
 };
 
@@ -78,9 +78,9 @@ struct ModeContext {
     gl::Context& context;
     const bench::EyePath& path;
     int compareEvery = 4;
-    double lodMaxPixels = 8.0;  // WalkthroughOptions::lodMaxPixels of the budgeted modes
+    double lodMaxPixels = 8.0;                         // WalkthroughOptions::lodMaxPixels of the budgeted modes
     walls::WallKind wallKind = walls::WallKind::Flat;  // WalkthroughOptions::wallKind of the walls modes
-    std::filesystem::path clusterCache;          // ClusterOptions::cache of the clusters modes
+    std::filesystem::path clusterCache;                // ClusterOptions::cache of the clusters modes
 };
 
 // One walkthrough mode of a runWalkthroughModes call.
@@ -91,8 +91,8 @@ struct WalkRun {
     // owned; both or neither.
     const scenes::Scene* scene = nullptr;
     const scenes::SceneDescription* description = nullptr;
-    ModeAccumulator* acc = nullptr;         // not null; its mode's lodPixels, triangleBudget and
-                                            // frameBudgetMs set the levels of detail and budgets
+    ModeAccumulator* acc = nullptr;  // not null; its mode's lodPixels, triangleBudget and
+                                     // frameBudgetMs set the levels of detail and budgets
     walkthrough::Transition transition = walkthrough::Transition::Blend;
     // As `cavewall run` pages: in the background under the default texture budget and upload
     // limit, from a cold start (three warm-up frames), so the timed frames include every
@@ -102,7 +102,7 @@ struct WalkRun {
     // Maciel & Shirley's (1995) textured clusters (ClusterOptions) instead of walls, held to
     // the mode's frameBudgetMs by the frame-time controller as `cavewall run --hierarchy` holds it.
     bool clusters = false;
-    bool storeReference = false;            // its compared images become the reference
+    bool storeReference = false;  // its compared images become the reference
     // >= 0: the triangle budget is the median triangles per frame of that earlier run's warm-up
     // pass over the path (the same frames, drawn as its timed pass draws them), set on `acc`.
     int budgetFrom = -1;

@@ -148,7 +148,7 @@ struct Accumulated {
     double triangles = 0.0, residentMB = 0.0, pagedMB = 0.0;
     int overAlpha = 0;
     long misses = 0, pageIns = 0;
-    bench::ErrorPool errors;   // against full geometry (near and walls)
+    bench::ErrorPool errors;  // against full geometry (near and walls)
 };
 
 bench::ScaleRow rowOf(bench::ScaleMode mode, const Accumulated& a, const bench::ScaleRow& base) {
@@ -194,7 +194,8 @@ std::unique_ptr<PreparedSize> prepareSize(const ScaleOptions& o, std::size_t tar
                                           Context& context) {
     auto p = std::make_unique<PreparedSize>();
     double generateSeconds = 0.0;
-    const std::filesystem::path sceneFile = plantFor(target, o.data / ("plant-" + std::to_string(target)), generateSeconds);
+    const std::filesystem::path sceneFile =
+        plantFor(target, o.data / ("plant-" + std::to_string(target)), generateSeconds);
     auto start = Clock::now();
     scenes::SceneDescription& d = p->description;
     p->scene = scenes::loadSceneFile(sceneFile, &d);
@@ -332,7 +333,8 @@ SizeModes makeModes(const SizeSetting& s) {
     WalkthroughOptions fullOptions;
     std::tie(full.walk, full.firstFrameSeconds) = timeFirst(
         [&] {
-            return std::make_unique<Walkthrough>(p.scene, p.description, s.display, s.context, std::nullopt, fullOptions);
+            return std::make_unique<Walkthrough>(p.scene, p.description, s.display, s.context, std::nullopt,
+                                                 fullOptions);
         },
         [&](Walkthrough& w) { w.renderFrame(p.path.frames.front()); });
     SizeMode& nearLimit = made.emplace_back(ScaleMode::Near, screens);
@@ -502,12 +504,15 @@ bench::ScaleReport runScaleBench(const ScaleOptions& o) {
             std::to_string(s0.resolution.x) + "x" + std::to_string(s0.resolution.y) + " pixels, " +
             std::string(config::toString(o.display.stereo)) + "; " + context->info().renderer + ", " +
             std::to_string(std::thread::hardware_concurrency()) + " hardware threads",
-        "path: the first " + config::formatNumber(o.pathMetres) + " m of each plant's walk path (the same bays at every "
-            "size), " + std::to_string(o.frames) + " frames, head " + o.tracker + "; modes drawn frame by frame in turn",
+        "path: the first " + config::formatNumber(o.pathMetres) +
+            " m of each plant's walk path (the same bays at every "
+            "size), " +
+            std::to_string(o.frames) + " frames, head " + o.tracker + "; modes drawn frame by frame in turn",
         "full: all geometry, frustum-culled, full detail; near: the viewer's cell and structure at lod " +
             config::formatNumber(o.lodPixels) + " px; walls: " + std::string(walls::wallKindName(o.wallKind)) +
-            " walls at alpha " + config::formatNumber(o.alphaDeg) + " deg, lod " + config::formatNumber(o.lodPixels) + " px, geometry paging under " +
-            config::formatNumber(o.geometryBudgetMB) + " MB (mesh groups shared by cells stored once), synchronous "
+            " walls at alpha " + config::formatNumber(o.alphaDeg) + " deg, lod " + config::formatNumber(o.lodPixels) +
+            " px, geometry paging under " + config::formatNumber(o.geometryBudgetMB) +
+            " MB (mesh groups shared by cells stored once), synchronous "
             "paging (the first frame complete; textures and groups of the stretch resident after a warm-up pass); "
             "cells: the control, the walls' geometry cells (the viewer's, the neighbours in geometry zones and "
             "blend strips, structure) as the walls draw them, no texture; "
@@ -524,8 +529,10 @@ bench::ScaleReport runScaleBench(const ScaleOptions& o) {
                              "reprojected to the eye)"
                            : ""),
         o.compareEvery > 0
-            ? "image error: near, cells and walls (both kinds) against full geometry's image of the same frame, every " +
-                  std::to_string(o.compareEvery) + " frames (read back after the frame is timed): PSNR on sRGB RGB "
+            ? "image error: near, cells and walls (both kinds) against full geometry's image of the same frame, "
+              "every " +
+                  std::to_string(o.compareEvery) +
+                  " frames (read back after the frame is timed): PSNR on sRGB RGB "
                   "pooled over all compared pixels, the worst frame's, LDR-FLIP mean at each screen's fewest pixels "
                   "per degree"
             : std::string("image error: not compared (--compare-every 0)"),
@@ -534,7 +541,8 @@ bench::ScaleReport runScaleBench(const ScaleOptions& o) {
         runSize(o, target, display, *context, report);
         if (o.afterSize) o.afterSize(report);
     }
-    report.header.push_back("load average at end: " + loadAverage() + "; bench time " + fixed(secondsSince(start), 0) + " s");
+    report.header.push_back("load average at end: " + loadAverage() + "; bench time " + fixed(secondsSince(start), 0) +
+                            " s");
     return report;
 }
 

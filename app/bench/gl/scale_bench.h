@@ -43,25 +43,25 @@
 namespace cavewall::gl {
 
 struct ScaleOptions {
-    std::vector<std::size_t> sizes;         // triangle targets (generatePlant), in order
-    std::filesystem::path data;             // plants and the subset bake cache
-    config::DisplayConfig display;          // validated
-    std::string tracker = "sim:walk";       // head source
-    double pathMetres = 40.0;               // the stretch of the walk path, metres
-    long frames = 60;                       // timed frames over the stretch
+    std::vector<std::size_t> sizes;    // triangle targets (generatePlant), in order
+    std::filesystem::path data;        // plants and the subset bake cache
+    config::DisplayConfig display;     // validated
+    std::string tracker = "sim:walk";  // head source
+    double pathMetres = 40.0;          // the stretch of the walk path, metres
+    long frames = 60;                  // timed frames over the stretch
     double alphaDeg = 10.0;
-    walls::PlanOptions plan;                // alphaDeg replaced
+    walls::PlanOptions plan;                           // alphaDeg replaced
     walls::WallKind wallKind = walls::WallKind::Flat;  // of both walls modes: flat or depth
     // Also walls-depth (`--walls flat,depth`; wallKind flat): depth walls, planned and baked with
     // their own bound, drawn in turn with the other modes, so depth / flat frame time is
     // measured within one run.
     bool depthBeside = false;
-    int bakeResolution = 128;               // texels per texture side at most
-    double lodPixels = 1.0;                 // the walls and near modes' tolerance
-    double geometryBudgetMB = 64.0;         // the walls mode's geometry paging budget
+    int bakeResolution = 128;        // texels per texture side at most
+    double lodPixels = 1.0;          // the walls and near modes' tolerance
+    double geometryBudgetMB = 64.0;  // the walls mode's geometry paging budget
     // walls-budget's triangles per frame: < 0 the near limit's median, 0 no such mode.
     long triangleBudget = -1;
-    double lodMaxPixels = 8.0;              // the most its budget may raise the tolerance to
+    double lodMaxPixels = 8.0;  // the most its budget may raise the tolerance to
     // Every compareEvery-th timed frame (0: none) the near and walls modes' images are compared
     // with full geometry's of the same frame (bench::ErrorPool: pooled PSNR, worst frame, FLIP),
     // read back after each mode's frame is timed.
