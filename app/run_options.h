@@ -126,7 +126,7 @@ struct RunOptions {
 
 // Throws cavewall::Error, naming the flags, when options contradict each other: frames < 0, a
 // triangle or frame-time budget without levels of detail, or both budgets at once; baking on
-// demand with depth walls, --sync-paging or --cluster; a bad --cache-budget, or one without
+// demand with --sync-paging or --cluster; a bad --cache-budget, or one without
 // --bake-on-demand; saving frames or recording without an output folder; --save-window
 // without windows or saved frames.
 void validate(const RunOptions& options);
