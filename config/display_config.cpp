@@ -3,9 +3,12 @@
 #include "config/display_limits.h"
 #include "config/json_reader.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <iostream>
 #include <set>
 
 namespace cavewall::config {
@@ -52,12 +55,13 @@ void parseOutput(const JsonNode& node, Screen& screen) {
         return;
     }
     const JsonNode w = node.at("window");
-    w.expectKeys({"monitor", "position", "size", "fullscreen"});
+    w.expectKeys({"monitor", "position", "size", "fullscreen", "borderless"});
     WindowOutput out;
     if (auto n = w.find("monitor")) out.monitor = n->integer(0, 64);
     if (auto n = w.find("position")) out.position = n->ivec2(-kMaxResolution * 4, kMaxResolution * 4);
     if (auto n = w.find("size")) out.size = n->ivec2(1, kMaxResolution);
     if (auto n = w.find("fullscreen")) out.fullscreen = n->boolean();
+    if (auto n = w.find("borderless")) out.borderless = n->boolean();
     screen.window = out;
 }
 
@@ -203,11 +207,56 @@ void validateDisplayConfig(const DisplayConfig& config, const std::string& sourc
         if (std::abs(angleDeg - 90.0) > kMaxRightAngleErrorDeg)
             throw Error(where + ": corners are not a rectangle (expected the edges at lowerLeft to meet at 90° ± " +
                         formatNumber(kMaxRightAngleErrorDeg) + "°, got " + formatNumber(angleDeg) + "°)");
+        // The head must see the screen's front, where off-axis projection puts the image.
+        const glm::dvec3 front = glm::normalize(glm::cross(right, up));
+        const double ahead = glm::dot(front, config.viewer.headPosition - s.lowerLeft);
+        if (!(ahead > 0.0))
+            throw Error(where + ": faces away from the default head " + vecString(config.viewer.headPosition) +
+                        " (its front, lowerLeft->lowerRight x lowerLeft->upperLeft, points to " + vecString(front) +
+                        "; the head is " + formatNumber(-ahead) +
+                        " m behind it); expected the head in front: swap lowerLeft with lowerRight and make "
+                        "upperLeft the corner above the new lowerLeft, as seen from inside the CAVE");
     }
     const Viewer& v = config.viewer;
     if (!(v.near < v.far))
         throw Error(source + ": viewer: near must be less than far (got near " + formatNumber(v.near) + " m, far " +
                     formatNumber(v.far) + " m)");
+}
+
+std::vector<std::string> displayWarnings(const DisplayConfig& config, const std::string& source) {
+    std::vector<std::string> out;
+    char text[320];
+    for (std::size_t i = 0; i < config.screens.size(); ++i) {
+        const Screen& s = config.screens[i];
+        const std::string where = source + ": screens[" + std::to_string(i) + "] '" + s.name + "'";
+        const glm::dvec3 right = s.lowerRight - s.lowerLeft, up = s.upperLeft - s.lowerLeft;
+        const double width = glm::length(right), height = glm::length(up);
+        const double pixelAspect = (width / s.resolution.x) / (height / s.resolution.y);
+        if (std::abs(pixelAspect - 1.0) > kMaxPixelAspectError) {
+            std::snprintf(text, sizeof text,
+                          ": pixels are not square: %.3f x %.3f m at %d x %d pixels gives pixels %.3f times as wide "
+                          "as high (expected 1 within %.2f; check the resolution against the corners)",
+                          width, height, s.resolution.x, s.resolution.y, pixelAspect, kMaxPixelAspectError);
+            out.push_back(where + text);
+        }
+        // Upright: the front horizontal; flat (floor, ceiling): the front along +-y.
+        const glm::dvec3 front = glm::normalize(glm::cross(right, up));
+        const double fromUpright = glm::degrees(std::asin(std::clamp(std::abs(front.y), 0.0, 1.0)));
+        const double fromFlat = 90.0 - fromUpright;
+        const double rolled = glm::degrees(std::asin(std::clamp(std::abs(right.y) / width, 0.0, 1.0)));
+        if (std::min(fromUpright, fromFlat) > kMaxTiltDeg) {
+            std::snprintf(text, sizeof text,
+                          ": tilted %.1f deg from upright (%.1f deg from flat); expected within %.1f deg of either "
+                          "unless the screen really is tilted",
+                          fromUpright, fromFlat, kMaxTiltDeg);
+            out.push_back(where + text);
+        } else if (fromUpright <= kMaxTiltDeg && rolled > kMaxTiltDeg) {
+            std::snprintf(text, sizeof text, ": the bottom edge rises %.1f deg (expected level within %.1f deg)",
+                          rolled, kMaxTiltDeg);
+            out.push_back(where + text);
+        }
+    }
+    return out;
 }
 
 std::vector<int> screensOfRank(const DisplayConfig& config, int rank, int rankCount) {
@@ -239,6 +288,7 @@ DisplayConfig loadDisplayConfig(const std::string& nameOrPath) {
                     presetDirectory().string() + ")");
     DisplayConfig config = parseDisplayConfig(readTextFile(path), path.string());
     validateDisplayConfig(config, path.string());
+    for (const std::string& w : displayWarnings(config, path.string())) std::cerr << "warning: " << w << "\n";
     return config;
 }
 

@@ -15,7 +15,8 @@
 //                 "upperLeft": [-1.5, 3, -1.5], "resolution": [1024, 1024],
 //                 "output": {"headless": {"file": "front"}}       // or:
 //                 "output": {"window": {"monitor": 0, "position": [0, 0],
-//                                       "size": [1024, 1024], "fullscreen": false}},
+//                                       "size": [1024, 1024], "fullscreen": false,
+//                                       "borderless": false}},
 //                 "rank": 0 }],                                  // cluster mode only; optional
 //   "viewer": { "headPosition": [0, 1.7, 0], "headOrientation": {"yawDeg": 0},
 //               "eyeSeparation": 0.064, "near": 0.05, "far": 1000 },   // far: number or "infinite"
@@ -42,10 +43,13 @@
 namespace cavewall::config {
 
 struct WindowOutput {
-    int monitor = 0;            // GLFW monitor index
-    glm::ivec2 position{0, 0};  // window position in screen pixels
-    glm::ivec2 size{0, 0};      // window size in pixels; {0, 0} = the screen's resolution
+    int monitor = 0;  // monitor index (GLFW's order), for windowed and fullscreen windows
+    // Top-left corner of the window's content, pixels from the monitor's top-left corner; none:
+    // tiled with the other unplaced windows of its monitor (display/window_layout.h).
+    std::optional<glm::ivec2> position;
+    glm::ivec2 size{0, 0};  // window size in pixels; {0, 0} = the screen's resolution
     bool fullscreen = false;
+    bool borderless = false;  // no title bar or frame (a projector's window)
     bool operator==(const WindowOutput&) const = default;
 };
 
@@ -100,14 +104,24 @@ struct DisplayConfig {
 inline constexpr double kMinScreenEdge = 1e-4;         // metres: shortest screen edge (0.1 mm)
 inline constexpr double kMaxRightAngleErrorDeg = 0.1;  // corners must meet at 90° ± this
 inline constexpr int kMaxResolution = 16384;           // pixels per side
+inline constexpr double kMaxPixelAspectError = 0.02;   // warn when pixels are not square by more
+inline constexpr double kMaxTiltDeg = 1.0;             // warn when a screen is this far from upright
+                                                       // (or flat, for floors and ceilings)
 
 // Parses JSON text into a DisplayConfig (types, ranges, unknown keys). `source` names the file
 // in messages. Throws Error. Does not run the geometric rules: call validateDisplayConfig().
 DisplayConfig parseDisplayConfig(std::string_view jsonText, const std::string& source);
 
-// Checks the rules that span fields: rectangular, non-degenerate screens; unique names;
-// near < far. Throws Error naming the source and the screen.
+// Checks the rules that span fields: rectangular, non-degenerate screens; unique names; each
+// screen's front (the side lowerLeft->lowerRight x lowerLeft->upperLeft points to) facing the
+// default head; near < far. Throws Error naming the source and the screen, with the fix.
 void validateDisplayConfig(const DisplayConfig& config, const std::string& source);
+
+// What is allowed but probably a mistake, one line per finding naming the source, the screen and
+// the figure: pixels that are not square (the corners' aspect against the resolution's, more
+// than kMaxPixelAspectError apart), screens tilted by more than kMaxTiltDeg from upright or
+// flat, or rolled (a bottom edge that is not level). loadDisplayConfig prints them on stderr.
+std::vector<std::string> displayWarnings(const DisplayConfig& config, const std::string& source);
 
 // Reads, parses and validates a file. `nameOrPath` may also be a preset name ("cave4",
 // "cave6", "powerwall", "desktop"), looked up in presetDirectory().

@@ -91,18 +91,16 @@ void initialiseCurrentContext(ContextInfo& info, const ContextOptions& options) 
 
 std::vector<WindowRequest> windowRequests(const display::Display& display) {
     std::vector<WindowRequest> out;
-    const auto& screens = display.screens();
-    for (std::size_t i = 0; i < screens.size(); ++i) {
-        const config::Screen& s = screens[i];
+    for (const config::Screen& s : display.screens()) {
         WindowRequest w;
         w.title = display.config().name + ": " + s.name;
         w.size = s.resolution;
-        w.position = glm::ivec2(40 * static_cast<int>(i) + 20);
         if (s.window) {
             if (s.window->size != glm::ivec2(0)) w.size = s.window->size;
             w.position = s.window->position;
             w.monitor = s.window->monitor;
             w.fullscreen = s.window->fullscreen;
+            w.borderless = s.window->borderless;
         }
         out.push_back(w);
     }

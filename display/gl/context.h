@@ -122,14 +122,17 @@ std::unique_ptr<Context> createHeadlessContext(const ContextOptions& options = {
 
 struct WindowRequest {
     std::string title;
-    glm::ivec2 size{0, 0};      // pixels
-    glm::ivec2 position{0, 0};  // screen pixels (ignored in fullscreen)
-    int monitor = 0;            // GLFW monitor index, for fullscreen
+    glm::ivec2 size{0, 0};               // pixels, as wished (tiled windows may get less)
+    std::optional<glm::ivec2> position;  // content's top-left relative to the monitor; none: tiled
+    int monitor = 0;                     // monitor index, windowed or fullscreen
     bool fullscreen = false;
+    bool borderless = false;  // undecorated
 };
 
 // One window per screen of `display`: the screen's window output when it has one, else a
-// window of the screen's resolution at a cascading position.
+// window of the screen's resolution, tiled. Windows without a position are tiled over their
+// monitor's work area without overlap, scaled down to fit when needed
+// (display/window_layout.h); images keep the screens' resolution.
 std::vector<WindowRequest> windowRequests(const display::Display& display);
 
 // A windowed context with `windows` (at least one); `stereo` asks for quad-buffer windows.

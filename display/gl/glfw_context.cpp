@@ -4,6 +4,7 @@
 #include "display/gl/gl_object.h"
 #include "display/gl/overlay_pass.h"
 #include "display/gl/render_targets.h"
+#include "display/window_layout.h"
 
 #include <memory>
 #include <utility>
@@ -63,7 +64,8 @@ private:
     };
     Window& at(int window);
     void drawOverlay(Window& w, glm::ivec2 windowSize);
-    void open(const WindowRequest& request, bool stereo, const ContextOptions& options);
+    void open(const WindowRequest& request, const display::WindowPlacement& place, GLFWmonitor* fullscreen, bool stereo,
+              const ContextOptions& options);
     void blit(Window& w, unsigned texture, glm::ivec2 size, GLenum drawBuffer, glm::ivec2 windowSize);
 
     std::vector<Window> _windows;
@@ -79,7 +81,29 @@ GlfwContext::GlfwContext(const std::vector<WindowRequest>& requests, bool stereo
     ++gLiveGlfwContexts;
     _info.provider = "GLFW";
     try {
-        for (const WindowRequest& r : requests) open(r, stereo, options);
+        // The monitors' work areas (GLFW's order), and each window's place on them.
+        int count = 0;
+        GLFWmonitor** monitors = glfwGetMonitors(&count);
+        std::vector<display::MonitorArea> areas;
+        for (int m = 0; m < count; ++m) {
+            display::MonitorArea a;
+            glfwGetMonitorWorkarea(monitors[m], &a.position.x, &a.position.y, &a.size.x, &a.size.y);
+            if (a.size.x <= 0 || a.size.y <= 0) {  // no work area reported: the whole mode
+                const GLFWvidmode* mode = glfwGetVideoMode(monitors[m]);
+                glfwGetMonitorPos(monitors[m], &a.position.x, &a.position.y);
+                a.size = mode ? glm::ivec2(mode->width, mode->height) : glm::ivec2(1920, 1080);
+            }
+            areas.push_back(a);
+        }
+        if (areas.empty()) areas.push_back({{0, 0}, {1920, 1080}});  // no monitor reported
+        std::vector<display::WindowWish> wishes;
+        for (const WindowRequest& r : requests)
+            wishes.push_back({r.title, r.size, r.position, r.monitor, r.fullscreen, r.borderless});
+        const std::vector<display::WindowPlacement> places = display::layoutWindows(wishes, areas);
+        for (std::size_t i = 0; i < requests.size(); ++i)
+            open(requests[i], places[i],
+                 requests[i].fullscreen && requests[i].monitor < count ? monitors[requests[i].monitor] : nullptr,
+                 stereo, options);
         makeCurrent();
         initialiseCurrentContext(_info, options);
         GLboolean hasStereo = GL_FALSE;
@@ -103,7 +127,8 @@ GlfwContext::~GlfwContext() {
     if (--gLiveGlfwContexts == 0) glfwTerminate();
 }
 
-void GlfwContext::open(const WindowRequest& r, bool stereo, const ContextOptions& options) {
+void GlfwContext::open(const WindowRequest& r, const display::WindowPlacement& place, GLFWmonitor* monitor, bool stereo,
+                       const ContextOptions& options) {
     glfwDefaultWindowHints();
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
@@ -111,22 +136,17 @@ void GlfwContext::open(const WindowRequest& r, bool stereo, const ContextOptions
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, options.debug ? GLFW_TRUE : GLFW_FALSE);
     glfwWindowHint(GLFW_STEREO, stereo ? GLFW_TRUE : GLFW_FALSE);
-    GLFWmonitor* monitor = nullptr;
-    if (r.fullscreen) {
-        int count = 0;
-        GLFWmonitor** monitors = glfwGetMonitors(&count);
-        if (r.monitor < 0 || r.monitor >= count)
-            throw Error("window '" + r.title + "': expected a monitor index in [0, " + std::to_string(count - 1) +
-                        "], got " + std::to_string(r.monitor));
-        monitor = monitors[r.monitor];
-    }
+    glfwWindowHint(GLFW_DECORATED, r.borderless ? GLFW_FALSE : GLFW_TRUE);
+    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);  // shown once placed, so it never appears elsewhere first
+    const glm::ivec2 size = monitor ? r.size : place.size;
     GLFWwindow* share = _windows.empty() ? nullptr : _windows.front().handle;
-    GLFWwindow* handle = glfwCreateWindow(r.size.x, r.size.y, r.title.c_str(), monitor, share);
+    GLFWwindow* handle = glfwCreateWindow(size.x, size.y, r.title.c_str(), monitor, share);
     if (!handle)
-        throw Error("window '" + r.title + "': cannot open a " + std::to_string(r.size.x) + " x " +
-                    std::to_string(r.size.y) + (stereo ? " quad-buffer stereo" : "") +
-                    " window with OpenGL 4.5 core (" + glfwFailure() + ")");
-    if (!monitor) glfwSetWindowPos(handle, r.position.x, r.position.y);
+        throw Error("window '" + r.title + "': cannot open a " + std::to_string(size.x) + " x " +
+                    std::to_string(size.y) + (stereo ? " quad-buffer stereo" : "") + " window with OpenGL 4.5 core (" +
+                    glfwFailure() + ")");
+    if (!monitor) glfwSetWindowPos(handle, place.position.x, place.position.y);
+    glfwShowWindow(handle);
     glfwMakeContextCurrent(handle);
     glfwSwapInterval(0);  // several windows swap in turn; waiting for vsync on each would stack up
     glfwSetWindowUserPointer(handle, this);

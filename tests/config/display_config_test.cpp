@@ -43,14 +43,15 @@ TEST(DisplayConfig, ParsesEveryField) {
     const DisplayConfig c = load(withScreens(
         R"({"name": "w", "lowerLeft": [0,0,0], "lowerRight": [2,0,0], "upperLeft": [0,1,0],
             "resolution": [640, 320],
-            "output": {"window": {"monitor": 1, "position": [10, 20], "size": [320, 160], "fullscreen": true}}})",
+            "output": {"window": {"monitor": 1, "position": [10, 20], "size": [320, 160], "fullscreen": true,
+                                  "borderless": true}}})",
         R"(, "viewer": {"headPosition": [0, 1.6, 1], "headOrientation": {"yawDeg": 90},
                         "eyeSeparation": 0.07, "near": 0.1, "far": "infinite"},
              "stereo": "side-by-side", "minEyeDistance": 0.01,
              "tracking": {"caveFromTracker": [[1,0,0,0.5],[0,1,0,0],[0,0,1,-2],[0,0,0,1]], "latencyMs": 20})"));
     const Screen& s = c.screens[0];
     ASSERT_TRUE(s.window.has_value());
-    EXPECT_EQ(*s.window, (WindowOutput{1, {10, 20}, {320, 160}, true}));
+    EXPECT_EQ(*s.window, (WindowOutput{1, glm::ivec2(10, 20), {320, 160}, true, true}));
     EXPECT_EQ(c.viewer.headPosition, glm::dvec3(0, 1.6, 1));
     // Yaw 90° turns -Z (forward) into -X.
     const glm::dvec3 forward = c.viewer.headOrientation * glm::dvec3(0, 0, -1);
@@ -151,6 +152,12 @@ TEST(DisplayConfig, EveryRuleHasItsMessage) {
         {"projective calibration",
          withScreens(kScreen, R"(, "tracking": {"caveFromTracker": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,1,1]]})"),
          "tracking.caveFromTracker: expected the last row to be [0, 0, 0, 1]"},
+        {"screen facing away from the head",
+         withScreens(
+             R"({"name": "left", "lowerLeft": [-1.5,0,-1.5], "lowerRight": [-1.5,0,1.5], "upperLeft": [-1.5,3,-1.5], "resolution": [1,1]})"),
+         "lab.json: screens[0] 'left': faces away from the default head [0, 1.7, 0] (its front, "
+         "lowerLeft->lowerRight x lowerLeft->upperLeft, points to [-1, 0, 0]; the head is 1.5 m behind it); expected "
+         "the head in front: swap lowerLeft with lowerRight"},
         {"bad quaternion", withScreens(kScreen, R"(, "viewer": {"headOrientation": [0, 0, 0, 0]})"),
          "viewer.headOrientation: expected a unit quaternion [x, y, z, w], got length 0"},
     };
@@ -273,9 +280,38 @@ TEST(DisplayConfig, NaNCannotBeWrittenInJson) {
 TEST(DisplayConfig, SlightlyOffSquareScreenWithinToleranceIsAccepted) {
     // 0.05° off square is inside the stated 0.1° tolerance.
     const double dx = std::tan(glm::radians(0.05));
-    const std::string s = R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [)" +
-                          std::to_string(dx) + R"(,1,0], "resolution": [1,1]})";
+    const std::string s = R"({"name": "a", "lowerLeft": [0,0,-1], "lowerRight": [1,0,-1], "upperLeft": [)" +
+                          std::to_string(dx) + R"(,1,-1], "resolution": [1,1]})";
     EXPECT_NO_THROW(load(withScreens(s)));
+}
+
+TEST(DisplayConfig, NonSquarePixelsAndTiltedScreensAreWarnedWithTheFigure) {
+    // 3 m x 3 m at 1024 x 768: pixels 0.75 times as wide as high.
+    const DisplayConfig wide = load(withScreens(
+        R"({"name": "front", "lowerLeft": [-1.5, 0, -1.5], "lowerRight": [1.5, 0, -1.5],
+            "upperLeft": [-1.5, 3, -1.5], "resolution": [1024, 768]})"));
+    EXPECT_THAT(displayWarnings(wide, "lab.json"),
+                ::testing::ElementsAre(HasSubstr("lab.json: screens[0] 'front': pixels are not square: 3.000 x 3.000 m "
+                                                 "at 1024 x 768 pixels gives pixels 0.750 times as wide as high")));
+    // Leaning back by 10 degrees: the upper edge 3 sin 10 deg further away.
+    const double back = 3.0 * std::sin(glm::radians(10.0)), high = 3.0 * std::cos(glm::radians(10.0));
+    const DisplayConfig leaning = load(withScreens(
+        R"({"name": "front", "lowerLeft": [-1.5, 0, -1.5], "lowerRight": [1.5, 0, -1.5], "upperLeft": [-1.5, )" +
+        std::to_string(high) + ", " + std::to_string(-1.5 - back) + R"(], "resolution": [1024, 1024]})"));
+    EXPECT_THAT(
+        displayWarnings(leaning, "lab.json"),
+        ::testing::ElementsAre(HasSubstr("screens[0] 'front': tilted 10.0 deg from upright (80.0 deg from flat)")));
+    // Rolled: the bottom edge rises 2 degrees; the corners stay a rectangle.
+    const double rise = 3.0 * std::sin(glm::radians(2.0)), run = 3.0 * std::cos(glm::radians(2.0));
+    const DisplayConfig rolled = load(withScreens(R"({"name": "front", "lowerLeft": [-1.5, 0, -1.5], "lowerRight": [)" +
+                                                  std::to_string(-1.5 + run) + ", " + std::to_string(rise) +
+                                                  R"(, -1.5], "upperLeft": [)" + std::to_string(-1.5 - rise) + ", " +
+                                                  std::to_string(run) + R"(, -1.5], "resolution": [1024, 1024]})"));
+    EXPECT_THAT(displayWarnings(rolled, "lab.json"),
+                ::testing::ElementsAre(HasSubstr("screens[0] 'front': the bottom edge rises 2.0 deg")));
+    // The presets are square, upright or flat: no warning.
+    for (const char* preset : {"cave4", "cave6", "powerwall", "desktop"})
+        EXPECT_THAT(displayWarnings(loadDisplayConfig(preset), preset), ::testing::IsEmpty()) << preset;
 }
 
 TEST(DisplayConfig, UnreadableFileNamesTheFile) {

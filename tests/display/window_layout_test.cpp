@@ -1,0 +1,97 @@
+// Windows of a CAVE's screens on a desktop or an image generator (display/window_layout.h):
+// tiled windows never overlap and stay on their monitor, scaled down only when needed;
+// configured positions and fullscreen windows keep to their monitor.
+#include "display/window_layout.h"
+
+#include "config/error.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace cavewall::display {
+namespace {
+
+using ::testing::HasSubstr;
+
+// Each window's frame: its content plus the title bar above it (`aTitle`, `bTitle` pixels).
+bool overlap(const WindowPlacement& a, const WindowPlacement& b, int aTitle, int bTitle) {
+    const glm::ivec2 a0 = a.position - glm::ivec2(0, aTitle), a1 = a.position + a.size;
+    const glm::ivec2 b0 = b.position - glm::ivec2(0, bTitle), b1 = b.position + b.size;
+    return a0.x < b1.x && b0.x < a1.x && a0.y < b1.y && b0.y < a1.y;
+}
+
+bool inside(const WindowPlacement& w, const MonitorArea& m, int titleBar) {
+    return w.position.x >= m.position.x && w.position.y - titleBar >= m.position.y &&
+           w.position.x + w.size.x <= m.position.x + m.size.x && w.position.y + w.size.y <= m.position.y + m.size.y;
+}
+
+std::vector<WindowWish> squares(int count, int side) {
+    std::vector<WindowWish> wishes;
+    for (int i = 0; i < count; ++i) wishes.push_back({.name = "s" + std::to_string(i), .size = {side, side}, .position = std::nullopt});
+    return wishes;
+}
+
+TEST(WindowLayout, FourCaveScreensOnAFullHdMonitorTileTwoByTwoWithoutOverlap) {
+    const MonitorArea monitor{{0, 0}, {1920, 1080}};
+    const std::vector<WindowPlacement> p = layoutWindows(squares(4, 1024), {monitor});
+    ASSERT_EQ(p.size(), 4u);
+    // 2 x 2 cells of 960 x 540 with a 32-pixel title bar: 508 / 1024 of the wished side.
+    for (const WindowPlacement& w : p) {
+        EXPECT_EQ(w.size, glm::ivec2(508));
+        EXPECT_TRUE(inside(w, monitor, kTitleBarPixels));
+    }
+    for (std::size_t i = 0; i < p.size(); ++i)
+        for (std::size_t j = i + 1; j < p.size(); ++j) EXPECT_FALSE(overlap(p[i], p[j], kTitleBarPixels, kTitleBarPixels)) << i << j;
+    EXPECT_EQ(p[1].position, glm::ivec2(960, 32));  // second column, first row
+}
+
+TEST(WindowLayout, WindowsThatFitKeepTheirSize) {
+    const std::vector<WindowPlacement> p = layoutWindows(squares(2, 300), {{{0, 0}, {1280, 1024}}});
+    EXPECT_EQ(p[0].size, glm::ivec2(300));
+    EXPECT_EQ(p[1].size, glm::ivec2(300));
+    EXPECT_EQ(p[0].scale, 1.0);
+    EXPECT_FALSE(overlap(p[0], p[1], kTitleBarPixels, kTitleBarPixels));
+}
+
+TEST(WindowLayout, ManyWindowsOfEveryShapeNeverOverlapAndStayOnScreen) {
+    const std::vector<MonitorArea> monitors{{{0, 0}, {1000, 700}}, {{1000, 24}, {800, 576}}};
+    for (int count = 1; count <= 9; ++count) {
+        std::vector<WindowWish> wishes;
+        for (int i = 0; i < count; ++i)
+            wishes.push_back({.name = "s", .size = {400 + 173 * i, 900 - 61 * i}, .position = std::nullopt,
+                              .monitor = i % 2,
+                              .borderless = i % 3 == 0});
+        const std::vector<WindowPlacement> p = layoutWindows(wishes, monitors);
+        for (int i = 0; i < count; ++i) {
+            SCOPED_TRACE("count " + std::to_string(count) + ", window " + std::to_string(i));
+            const auto title = [&](int k) { return wishes[k].borderless ? 0 : kTitleBarPixels; };
+            EXPECT_TRUE(inside(p[i], monitors[i % 2], title(i)));
+            EXPECT_LE(p[i].size.x, wishes[i].size.x);
+            for (int j = i + 1; j < count; ++j) EXPECT_FALSE(overlap(p[i], p[j], title(i), title(j))) << j;
+        }
+    }
+}
+
+TEST(WindowLayout, ConfiguredPositionsAreOnTheirMonitor) {
+    const std::vector<MonitorArea> monitors{{{0, 0}, {1920, 1080}}, {{1920, 0}, {1024, 768}}};
+    std::vector<WindowWish> wishes = squares(1, 500);
+    wishes[0].monitor = 1;
+    wishes[0].position = glm::ivec2(10, 20);
+    EXPECT_EQ(layoutWindows(wishes, monitors)[0].position, glm::ivec2(1930, 20));
+    wishes[0].fullscreen = true;
+    const WindowPlacement full = layoutWindows(wishes, monitors)[0];
+    EXPECT_EQ(full.position, glm::ivec2(1920, 0));
+    EXPECT_EQ(full.size, glm::ivec2(1024, 768));
+}
+
+TEST(WindowLayout, AMonitorThatIsNotConnectedIsAnErrorNamingTheScreen) {
+    std::vector<WindowWish> wishes = squares(1, 500);
+    wishes[0].name = "left";
+    wishes[0].monitor = 3;
+    EXPECT_THAT([&] { layoutWindows(wishes, {{{0, 0}, {1920, 1080}}}); },
+                ::testing::ThrowsMessage<Error>(
+                    HasSubstr("screen 'left': window.monitor: expected a monitor index in [0, 0] (1 monitor), got 3")));
+}
+
+}  // namespace
+}  // namespace cavewall::display
