@@ -4,6 +4,7 @@
 #include "display/display.h"
 
 #include <cmath>
+#include <iostream>
 #include <thread>
 
 namespace cavewall::app {
@@ -38,7 +39,8 @@ std::unique_ptr<input::TrackerSource> trackerFor(const RunOptions& o) {
 }
 
 std::unique_ptr<input::DesktopNavigator> desktopFor(const RunOptions& o, const scenes::Scene& scene,
-                                                    const scenes::SceneDescription& d, const input::WorldQuery* world) {
+                                                    const scenes::SceneDescription& d, const input::WorldQuery* world,
+                                                    const std::optional<StartPose>& start) {
     if (o.tracker != kDesktop) return nullptr;
     if (o.window != app::WindowMode::Window)
         throw Error("--tracker desktop: expected --window (keyboard and mouse come from the windows)");
@@ -47,36 +49,37 @@ std::unique_ptr<input::DesktopNavigator> desktopFor(const RunOptions& o, const s
             "--record: expected a tracker to record, got --tracker desktop (the desktop's keys and mouse "
             "are not recorded)");
     input::DesktopNavigatorConfig c;
-    c.speed = input::viewSpeed(glm::length(scene.bounds().size()));
+    c.speed = input::viewSpeed(glm::length(scene.bounds().size()), start && start->onFloor);
     c.eyeHeight = d.eyeHeight;
     c.navigator = navigatorConfig(o);
     const config::Viewer& v = o.display.viewer;
     return std::make_unique<input::DesktopNavigator>(c, input::Pose{v.headPosition, v.headOrientation}, world);
 }
 
-StartPose startFor(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d) {
+// Where a session without a walk path starts (RunOptions::start); none with a walk path or at
+// the origin.
+std::optional<StartPose> startFor(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d) {
+    if (d.walkPath.size() >= 2 || o.start == Start::Origin) return std::nullopt;
     const display::Display display(o.display);
     return o.start == Start::ViewAll ? viewAllPose(scene, display) : startPose(scene, display, d.eyeHeight);
 }
 
-// The desktop's start: the walk path's, else where RunOptions::start says.
-void placeDesktop(input::DesktopNavigator& desktop, const RunOptions& o, const scenes::Scene& scene,
+// The desktop's start: the walk path's, else `start`.
+void placeDesktop(input::DesktopNavigator& desktop, const std::optional<StartPose>& start,
                   const scenes::SceneDescription& d) {
     if (d.walkPath.size() >= 2) {
         const glm::dvec3 dir = d.walkPath[1] - d.walkPath[0];
         desktop.setEye(d.walkPath[0], std::atan2(-dir.x, -dir.z));
-    } else if (o.start != Start::Origin) {
-        const StartPose pose = startFor(o, scene, d);
-        desktop.setEye(pose.eye, pose.yaw);
+    } else if (start) {
+        desktop.setEye(start->eye, start->yaw);
     }
 }
 
 // A tracked CAVE's start without a walk path: its floor on the floor found, or moved so that
 // the default head sees the whole model.
-void placeTracked(input::Navigator& navigator, const RunOptions& o, const scenes::Scene& scene,
-                  const scenes::SceneDescription& d) {
-    if (d.walkPath.size() >= 2 || o.start == Start::Origin) return;
-    const StartPose pose = startFor(o, scene, d);
+void placeTracked(input::Navigator& navigator, const RunOptions& o, const std::optional<StartPose>& start) {
+    if (!start) return;
+    const StartPose& pose = *start;
     const glm::dvec3 head = o.display.viewer.headPosition;
     const glm::dvec3 onFloor(head.x, pose.onFloor ? 0.0 : head.y, head.z);
     const glm::dvec3 floorEye = pose.onFloor ? glm::dvec3(pose.eye.x, pose.floorY, pose.eye.z) : pose.eye;
@@ -85,11 +88,11 @@ void placeTracked(input::Navigator& navigator, const RunOptions& o, const scenes
 
 }  // namespace
 
-std::optional<input::NavMode> navMode(Navigation nav, const scenes::SceneDescription& d, bool desktop) {
+std::optional<input::NavMode> navMode(Navigation nav, const scenes::SceneDescription& d, bool interactive) {
     switch (nav) {
         case Navigation::Auto:
             if (d.walkPath.size() >= 2) return input::NavMode::Guided;
-            return desktop ? std::optional(input::NavMode::Fly) : std::nullopt;
+            return interactive ? std::optional(input::NavMode::Fly) : std::nullopt;
         case Navigation::Guided:
             if (d.walkPath.size() < 2)
                 throw Error("--nav guided: the scene has no walkPath (expected at least 2 points, got " +
@@ -108,13 +111,14 @@ std::string RunInput::liveTrackerLine() const {
 
 RunInput::RunInput(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d, bool realTime)
     : _tracker(trackerFor(o)), _pipeline(input::pipelineConfigFor(o.display)), _query(scene),
-      _desktop(desktopFor(o, scene, d, &_query)), _navigator(navigatorConfig(o), &_query),
-      _mode(navMode(o.nav, d, _desktop != nullptr)),
+      _start(startFor(o, scene, d)), _desktop(desktopFor(o, scene, d, &_query, _start)),
+      _navigator(navigatorConfig(o), &_query),
+      _mode(navMode(o.nav, d, _desktop != nullptr || (o.window == WindowMode::Window && o.frames == 0))),
       _replay(dynamic_cast<input::ReplaySource*>(_tracker.get()) != nullptr), _realTime(realTime),
-      _start(std::chrono::steady_clock::now()) {
+      _clockStart(std::chrono::steady_clock::now()) {
     placeAtPathStart(_navigator, d);
-    placeTracked(_navigator, o, scene, d);
-    if (_desktop) placeDesktop(*_desktop, o, scene, d);
+    placeTracked(_navigator, o, _start);
+    if (_desktop) placeDesktop(*_desktop, _start, d);
     if (_mode) {
         _navigator.setMode(*_mode);
         if (_desktop) _desktop->setMode(*_mode);
@@ -122,7 +126,10 @@ RunInput::RunInput(const RunOptions& o, const scenes::Scene& scene, const scenes
     }
     if (_desktop) _desktop->setGuidePath(floorPath(d));
     if (o.record) _recorder = std::make_unique<input::Recorder>(*o.record, o.tracker);
+    if (_tracker && _tracker->isLive()) _watch.emplace(_tracker->describe());
 }
+
+std::string_view RunInput::trackerState() const { return _watch ? input::toString(_watch->state()) : ""; }
 
 std::string_view RunInput::navigationName() const {
     if (!_mode) return "none";
@@ -134,8 +141,8 @@ std::optional<double> RunInput::speed() const { return _desktop ? std::optional(
 walkthrough::FrameInput RunInput::next(long i, bool readImages, const std::vector<input::Event>& windowEvents) {
     const double t = static_cast<double>(i) * kRunStep;
     if (_realTime && (_desktop || _tracker->isLive()))
-        std::this_thread::sleep_until(_start + std::chrono::duration<double>(t));
-    walkthrough::FrameInput in = _desktop ? desktopFrame(i, t, windowEvents) : trackedFrame(i, t);
+        std::this_thread::sleep_until(_clockStart + std::chrono::duration<double>(t));
+    walkthrough::FrameInput in = _desktop ? desktopFrame(i, t, windowEvents) : trackedFrame(i, t, windowEvents);
     in.frame = i;
     in.time = t;
     in.readImages = readImages;
@@ -159,9 +166,15 @@ walkthrough::FrameInput RunInput::desktopFrame(long i, double t, const std::vect
     return in;
 }
 
-// A tracker: sample -> pipeline -> navigator, recorded when asked.
-walkthrough::FrameInput RunInput::trackedFrame(long i, double t) {
-    const input::Sample sample = _tracker->poll(t);
+// A tracker: sample -> pipeline -> navigator, recorded when asked; the windows' keys act as a
+// wand (input/keyboard_wand.h), unrecorded.
+walkthrough::FrameInput RunInput::trackedFrame(long i, double t, const std::vector<input::Event>& windowEvents) {
+    input::Sample sample = _tracker->poll(t);
+    if (_watch) {
+        _watch->update(t, _tracker->stats());
+        if (const std::optional<std::string> warning = _watch->warning())
+            std::cerr << "run: warning: " << *warning << std::endl;
+    }
     std::vector<input::Event> events = _tracker->takeEvents();
     if (!_replay) input::appendWandEvents(_lastWand, sample.wand, t, events);
     _lastWand = sample.wand;
@@ -169,6 +182,11 @@ walkthrough::FrameInput RunInput::trackedFrame(long i, double t) {
         _recorder->write(sample);
         for (const input::Event& e : events) _recorder->write(e);
     }
+    for (input::Event e : windowEvents) {
+        e.time = t;
+        if (std::optional<input::Event> mode = _keyboard.handle(e)) events.push_back(*mode);
+    }
+    sample.wand = _keyboard.apply(sample.wand);
     const input::TrackedFrame tracked = _pipeline.update(sample);
     _navigator.setTracking(tracked.head.pose, tracked.hand.pose, tracked.wand);
     if (_mode) {

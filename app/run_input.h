@@ -3,19 +3,26 @@
 // recorder) turned into one walkthrough::FrameInput per frame at the fixed step kRunStep. In cluster mode
 // only rank 0 has one; the other ranks receive its FrameInput.
 //
+// With a tracker, the windows' keys act as a wand (input/keyboard_wand.h): W/S/A/D the joystick,
+// 1-4 the modes; a session in windows until stopped flies by default.
+//
 // The tracker spec "desktop" is the desktop fallback: keyboard and mouse events of the windows
 // (gl::Context::takeInputEvents) drive an input::DesktopNavigator (mouse look, WASD; the head
 // stays at the display's default head and the world turns). It needs windows. Its speed is
-// input::viewSpeed of the model's bounding-box diagonal, and without a walk path it starts
+// input::viewSpeed of the model's bounding-box diagonal (walking pace when it starts standing on
+// a floor inside), and without a walk path it starts
 // where RunOptions::start says (app/start_pose.h).
 
 #include "app/run_options.h"
 #include "app/scene_query.h"
+#include "app/start_pose.h"
 #include "input/desktop_navigator.h"
+#include "input/keyboard_wand.h"
 #include "input/navigator.h"
 #include "input/recording.h"
 #include "input/tracker_source.h"
 #include "input/tracking_pipeline.h"
+#include "input/tracker_watch.h"
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
 #include "walkthrough/frame_types.h"
@@ -27,10 +34,10 @@
 namespace cavewall::app {
 
 // The navigator's mode for `nav` (Auto: guided along the walk path when there is one, else fly
-// on the desktop and none with a tracker); None is an empty optional. Throws Error for guided
-// without a walk path.
+// when `interactive` (the desktop, or windows until stopped) and none for a batch run with a
+// tracker); None is an empty optional. Throws Error for guided without a walk path.
 std::optional<input::NavMode> navMode(app::Navigation nav, const scenes::SceneDescription& description,
-                                      bool desktop = false);
+                                      bool interactive = false);
 
 class RunInput {
 public:
@@ -54,25 +61,33 @@ public:
     std::string_view navigationName() const;
     std::optional<double> speed() const;
 
+    // A live network tracker's state for the overlay ("waiting", "data", "no data"); empty for
+    // the desktop and for simulated and recorded trackers. A second without accepted data also
+    // prints one warning on stderr (input/tracker_watch.h).
+    std::string_view trackerState() const;
+
     // For the log: "dtrack listening on 127.0.0.1:5000 for ..." when the tracker is a live
     // network listener (its bound port, the chosen one for port 0), empty otherwise.
     std::string liveTrackerLine() const;
 
 private:
     walkthrough::FrameInput desktopFrame(long frame, double t, const std::vector<input::Event>& windowEvents);
-    walkthrough::FrameInput trackedFrame(long frame, double t);
+    walkthrough::FrameInput trackedFrame(long frame, double t, const std::vector<input::Event>& windowEvents);
 
     std::unique_ptr<input::TrackerSource> _tracker;  // null for the desktop fallback
     input::TrackingPipeline _pipeline;
     app::SceneQuery _query;
+    std::optional<StartPose> _start;                    // without a walk path (RunOptions::start)
     std::unique_ptr<input::DesktopNavigator> _desktop;  // the desktop fallback
     input::Navigator _navigator;
     std::optional<input::NavMode> _mode;
     std::unique_ptr<input::Recorder> _recorder;
     bool _replay = false;
     bool _realTime = true;
+    std::optional<input::TrackerWatch> _watch;  // live trackers
     input::WandState _lastWand;
-    std::chrono::steady_clock::time_point _start;
+    input::KeyboardWand _keyboard;  // the windows' keys as a wand, with a tracker
+    std::chrono::steady_clock::time_point _clockStart;
 };
 
 }  // namespace cavewall::app

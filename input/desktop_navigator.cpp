@@ -22,9 +22,10 @@ NavigatorConfig bodyConfig(const DesktopNavigatorConfig& c) {
 
 }  // namespace
 
-double viewSpeed(double diagonal) {
+double viewSpeed(double diagonal, bool standingInside) {
     if (!std::isfinite(diagonal) || !(diagonal > 0.0)) return 1.0;
-    return std::clamp(diagonal / 20.0, 0.05, 5.0);
+    const double speed = std::clamp(diagonal / 20.0, 0.05, 5.0);
+    return standingInside ? std::min(speed, kWalkingSpeed) : speed;
 }
 
 DesktopNavigator::DesktopNavigator(DesktopNavigatorConfig config, Pose head, const WorldQuery* world)

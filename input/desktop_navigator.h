@@ -57,8 +57,11 @@ struct DesktopNavigatorConfig {
 
 // A movement speed for a model of bounding-box diagonal `diagonal` metres: diagonal / 20 per
 // second (a building crossed in 20 s), within [0.05, 5] m/s (no faster than a brisk run, and a
-// model of centimetres still moves). A non-finite or non-positive diagonal gives 1 m/s.
-double viewSpeed(double diagonal);
+// model of centimetres still moves); `standingInside` (the viewer starts on a floor inside a
+// building) caps it at kWalkingSpeed, a brisk walk (Shift and the wheel go faster). A non-finite
+// or non-positive diagonal gives 1 m/s.
+inline constexpr double kWalkingSpeed = 2.0;  // m/s
+double viewSpeed(double diagonal, bool standingInside = false);
 
 class DesktopNavigator {
 public:

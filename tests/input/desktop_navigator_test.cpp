@@ -194,6 +194,9 @@ TEST(DesktopNavigator, SpeedFollowsTheModelsSize) {
     EXPECT_EQ(viewSpeed(0.2), 0.05);    // a 20 cm object still moves
     EXPECT_EQ(viewSpeed(0.0), 1.0);     // no size: walking pace
     EXPECT_EQ(viewSpeed(NAN), 1.0);
+    // Standing on a floor inside: at most a brisk walk, however large the building.
+    EXPECT_EQ(viewSpeed(96.0, true), kWalkingSpeed);  // a 96 m clinic: 4.8 m/s would be a run
+    EXPECT_EQ(viewSpeed(20.0, true), 1.0);            // a small house keeps diagonal / 20
 }
 
 }  // namespace
