@@ -12,8 +12,16 @@ std::string statusLine(const ViewStatus& s) {
         std::snprintf(text, sizeof text, " | %.2f m/s", *s.speed);
         line += text;
     }
-    std::snprintf(text, sizeof text, " | %.1f ms | F1: help", s.frameMs);
-    return line + text;
+    std::snprintf(text, sizeof text, " | %.1f ms", s.frameMs);
+    line += text;
+    if (!s.drawing.empty()) line += " | " + std::string(s.drawing);
+    if (s.texturesToBake > 0) {
+        std::snprintf(text, sizeof text, " | baking %d of %d wall textures (geometry meanwhile)", s.texturesBaked,
+                      s.texturesBaked + s.texturesToBake);
+        line += text;
+    }
+    if (!s.tracker.empty()) line += " | tracker: " + std::string(s.tracker);
+    return line + " | F1: help";
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 #pragma once
 // What a windowed session shows besides the scene: one status line over each window (the
-// navigation mode, the movement speed, the last frame's time and "F1: help"), or the help page
-// while it is toggled on, and each window's title. Plain text; gl::Context draws it
+// navigation mode, the movement speed, the last frame's time, what the walls draw and how far
+// baking has come, the tracker's state and "F1: help"), or the help page while it is toggled
+// on, and each window's title. Plain text; gl::Context draws it
 // (display/overlay_text.h) and never into saved or compared images.
 
 #include "display/overlay_text.h"
@@ -19,10 +20,17 @@ struct ViewStatus {
     double frameMs = 0.0;           // the last frame's time
     bool help = false;              // the help page instead of the status line
     double degreesPerPixel = 0.15;  // mouse look, for the help page
+    // What the walls draw: "geometry" (no walls), "control" (cells without textures), "walls"
+    // (textures), "hierarchy" (Maciel & Shirley's clusters); empty: not shown.
+    std::string_view drawing;
+    int texturesToBake = 0;    // baking on demand: textures still to bake (0: none or done)
+    int texturesBaked = 0;     // baked so far by this session
+    std::string_view tracker;  // "" (desktop or simulated), "no data", "data"
 };
 
-// The status line, e.g. "fly | 2.50 m/s | 16.7 ms | F1: help"; with help, the help page
-// (helpLines) followed by that line.
+// The status line, e.g. "fly | 2.50 m/s | 16.7 ms | walls | F1: help", with "baking 12 of 340
+// wall textures (geometry meanwhile)" while baking on demand and "tracker: no data" for a tracker;
+// with help, the help page (helpLines) followed by that line.
 display::OverlayText viewOverlay(const ViewStatus& status);
 
 // The keys of the desktop fallback and the session (input/desktop_navigator.h,

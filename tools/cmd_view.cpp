@@ -32,8 +32,12 @@ const char* const kViewUsage =
     "the viewer starts (--start, default inside) standing 1.7 m above a floor inside the model: the\n"
     "lowest large upward surface found under the model's centre (or near it); a model with no floor\n"
     "is shown whole (view-all). The window's title names the screen and the navigation; the overlay\n"
-    "shows the navigation, the speed, the frame time and \"F1: help\", and never appears in saved\n"
-    "frames. Every other `cavewall run` flag works the same (see `cavewall run --help`).\n";
+    "shows the navigation, the speed, the frame time, what is drawn (walls, geometry), how many wall\n"
+    "textures are still baking, a network tracker's state and \"F1: help\", and never appears in\n"
+    "saved frames. A scene with virtual walls draws at once: textures the cache lacks are baked\n"
+    "in the background, those wanted now first, and their walls show geometry until then\n"
+    "(--bake-first bakes them all before the first frame). Every other `cavewall run` flag works\n"
+    "the same (see `cavewall run --help`).\n";
 
 int runView(const std::vector<std::string>& words) {
     const Args args = sessionArgs(words);

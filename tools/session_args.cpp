@@ -5,6 +5,7 @@
 #include "display/timing.h"
 #include "walls/cache_budget.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -87,19 +88,26 @@ void parseDrawing(const Args& args, app::RunOptions& o) {
 
 // Baking on demand and the two kinds of cluster.
 void parseBakingAndClusters(const Args& args, app::RunOptions& o) {
-    o.bakeOnDemand = args.has("bake-on-demand");
+    if (args.has("bake-on-demand") && args.has("bake-first"))
+        throw Error("--bake-on-demand and --bake-first: expected one of them, got both");
+    o.clusters = args.has(args.renamed("hierarchy", "clusters"));
+    o.cluster = args.has("cluster");
+    // A session that runs until stopped is a person at the controls: it draws at once and bakes
+    // what the cache lacks while walking, unless told to bake first or asked for what baking on
+    // demand cannot do. Runs of N frames keep their reproducible default.
+    const bool interactive =
+        o.frames == 0 && !args.has("bake-first") && !o.synchronousPaging && !o.cluster && o.wallTextures && !o.clusters;
+    o.bakeOnDemand = args.has("bake-on-demand") || interactive;
     o.bakeInterleave = args.integer("bake-interleave", 0, 0, 1000000);
     o.bakeNice = static_cast<int>(args.integer("bake-nice", o.bakeNice, 0, 19));
     if (auto budget = args.get("cache-budget")) o.cacheBudgetMB = parseNumber(*budget, "--cache-budget");
     if (args.has("cache-budget")) walls::cacheBudgetBytes(o.cacheBudgetMB, "--cache-budget");
-    o.clusters = args.has(args.renamed("hierarchy", "clusters"));
     o.clusterDivisions = static_cast<int>(
         args.integer(args.renamed("hierarchy-divisions", "cluster-divisions"), o.clusterDivisions, 1, 1024));
     o.clusterResolution =
         static_cast<int>(args.integer(args.renamed("hierarchy-res", "cluster-res"), o.clusterResolution, 4, 2048));
     o.clusterFadeFrames =
         static_cast<int>(args.integer(args.renamed("hierarchy-fade", "cluster-fade"), o.clusterFadeFrames, 0, 600));
-    o.cluster = args.has("cluster");
     o.clusterTimeout = args.number("cluster-timeout", o.clusterTimeout, 0.1, 3600.0);
 }
 
@@ -107,7 +115,7 @@ void parseBakingAndClusters(const Args& args, app::RunOptions& o) {
 
 Args sessionArgs(const std::vector<std::string>& words) {
     return Args(words, {"headless", "window", "no-walls", "no-textures", "sync-paging", "cluster", "hierarchy",
-                        "clusters", "bake-on-demand", "save-window"});
+                        "clusters", "bake-on-demand", "bake-first", "save-window"});
 }
 
 std::vector<std::string_view> sessionFlags() {
@@ -151,6 +159,7 @@ std::vector<std::string_view> sessionFlags() {
             "cluster-res",
             "cluster-fade",
             "bake-on-demand",
+            "bake-first",
             "cache-budget",
             "bake-interleave",
             "bake-nice",
@@ -185,12 +194,23 @@ app::RunOptions parseSessionOptions(const Args& args, app::RunOptions o) {
 int reportSession(std::string_view command, const app::RunOptions& o, const app::RunSummary& s) {
     if (s.rank != 0) return 0;
     const std::string c(command);
+    if (s.frameMs.empty()) {
+        std::cout << c << ": stopped before the first frame: " << app::toString(s.ending) << " (scene loaded at "
+                  << seconds(s.sceneSeconds) << " s, stopped at " << seconds(s.wallsSeconds) << " s)\n";
+        if (!o.out.empty()) std::cout << (o.out / "frames.csv").string() << "\n";
+        const int signal = s.ending == app::Ending::Interrupted ? app::interruptSignal() : 0;
+        return signal != 0 ? 128 + signal : 0;
+    }
+    const double worst = *std::max_element(s.frameMs.begin(), s.frameMs.end());
+    const double worstAfterFirst =
+        s.frameMs.size() > 1 ? *std::max_element(s.frameMs.begin() + 1, s.frameMs.end()) : worst;
     std::cout << c << ": " << s.frameMs.size() << " frames on " << s.renderer
               << (!s.walls         ? ", geometry only"
                   : o.wallTextures ? ", walls"
                                    : ", the control (the walls' cells, no textures)")
-              << "; median frame " << display::median(s.frameMs) << " ms; worst error " << s.worstErrorDeg << " deg ("
-              << s.worstErrorPx << " px); page-ins " << s.pageIns << ", misses " << s.misses << "\n"
+              << "; median frame " << display::median(s.frameMs) << " ms, worst " << worst << " ms (after the first "
+              << worstAfterFirst << " ms); worst error " << s.worstErrorDeg << " deg (" << s.worstErrorPx
+              << " px); page-ins " << s.pageIns << ", misses " << s.misses << "\n"
               << c << ": first frame after " << seconds(s.firstFrameSeconds) << " s (scene loaded at "
               << seconds(s.sceneSeconds) << " s, walls ready at " << seconds(s.wallsSeconds)
               << " s, walkthrough ready at " << seconds(s.readySeconds) << " s)\n"

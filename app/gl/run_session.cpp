@@ -68,24 +68,47 @@ walls::WallSetup prepareWallsOnDemand(const RunOptions& o, const scenes::Scene& 
     return setup;
 }
 
-// Prepares the walls and bakes (or finds in the cache) their textures.
+// Why the session ends before drawing a frame, asked between stages and between textures of a
+// bake: a window closed, the quit keys (Escape twice, Ctrl+Q), Ctrl+C or SIGTERM.
+struct StopCheck {
+    gl::Context& context;
+    input::SessionKeys keys;
+    std::optional<app::Ending> ending;
+
+    bool operator()() {
+        if (ending) return true;
+        for (const input::Event& e : context.takeInputEvents()) keys.handle(e);
+        if (context.windowCount() > 0 && context.pollCloseRequested()) ending = app::Ending::WindowClosed;
+        if (keys.quitRequested()) ending = app::Ending::Quit;
+        if (app::interruptSignal() != 0) ending = app::Ending::Interrupted;
+        return ending.has_value();
+    }
+};
+
+// Prepares the walls and bakes (or finds in the cache) their textures. Stops between textures
+// when `stop` says so (the finished textures stay in the cache).
 walls::WallSetup prepareWalls(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
-                              gl::Context& context) {
+                              gl::Context& context, StopCheck* stop) {
     walls::WallSetup setup = walls::prepareWalls(scene, d, walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution));
     gl::BakeRequest request = bakeRequest(o, &context);
-    if (o.verbose)
-        request.progress = [](const gl::BakeProgress& p) {
-            if (p.baked > 0 && (p.done % 10 == 0 || p.done == p.total))
-                std::cout << "bake: " << p.done << "/" << p.total << " textures (" << p.baked << " baked) "
-                          << std::lround(p.seconds) << " s\n"
-                          << std::flush;
-        };
+    if (stop) request.stop = [stop] { return (*stop)(); };
+    request.progress = [&o, &context](const gl::BakeProgress& p) {
+        const int windows = std::min(context.windowCount(), static_cast<int>(o.display.screens.size()));
+        for (int w = 0; w < windows && p.baked > 0; ++w)
+            context.setTitle(w, "cavewall - " + o.display.screens[w].name + " - baking wall textures " +
+                                    std::to_string(p.done) + " of " + std::to_string(p.total));
+        if (o.verbose && p.baked > 0 && (p.done % 10 == 0 || p.done == p.total))
+            std::cout << "bake: " << p.done << "/" << p.total << " textures (" << p.baked << " baked) "
+                      << std::lround(p.seconds) << " s\n"
+                      << std::flush;
+    };
     gl::BakeResult baked = gl::bakeWalls(scene, d, setup, request);
     setup.folder = baked.folder;
     setup.manifest = std::move(baked.manifest);
     if (o.verbose)
         std::cout << "walls: " << setup.plan.textures.size() << " textures in " << setup.folder.string() << " ("
-                  << baked.baked << " baked now, " << baked.reused << " reused)\n";
+                  << baked.baked << " baked now, " << baked.reused << " reused"
+                  << (baked.stopped ? "; stopped before the rest" : "") << ")\n";
     return setup;
 }
 
@@ -105,15 +128,15 @@ std::unique_ptr<gl::Context> makeContext(const RunOptions& o, const display::Dis
 constexpr double kBakeWaitSeconds = 3600.0;
 
 walls::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
-                                  gl::Context& context, app::Cluster* cluster) {
-    if (!cluster) return prepareWalls(o, scene, d, context);
+                                  gl::Context& context, app::Cluster* cluster, StopCheck& stop) {
+    if (!cluster) return prepareWalls(o, scene, d, context, &stop);
     std::optional<walls::WallSetup> setup;
-    if (cluster->rank() == 0) setup = prepareWalls(o, scene, d, context);
+    if (cluster->rank() == 0) setup = prepareWalls(o, scene, d, context, nullptr);
     cluster->barrier(kBakeWaitSeconds, "waiting for rank 0 to bake the wall textures");
     if (cluster->rank() != 0) {
         RunOptions quiet = o;
         quiet.verbose = false;
-        setup = prepareWalls(quiet, scene, d, context);
+        setup = prepareWalls(quiet, scene, d, context, nullptr);
     }
     // The other ranks plan again after the bake; the first frame's broadcast (bounded by
     // --cluster-timeout) waits for the slowest of them here instead.
@@ -123,15 +146,16 @@ walls::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scen
 
 // The walls the session draws: none in cluster mode, without walls or in a scene without them;
 // the plan alone for the control (no textures, nothing baked); planned and baked while walking
-// by `baker` (--bake-on-demand); or planned and baked now.
+// by `baker` (--bake-on-demand); or planned and baked now, until `stop` says so.
 std::optional<walls::WallSetup> sessionWalls(const RunOptions& o, const scenes::Scene& scene,
                                              const scenes::SceneDescription& d, gl::Context& context,
-                                             app::Cluster* cluster, std::unique_ptr<gl::BackgroundBaker>& baker) {
+                                             app::Cluster* cluster, std::unique_ptr<gl::BackgroundBaker>& baker,
+                                             StopCheck& stop) {
     if (!o.walls || o.clusters || d.walls.empty()) return std::nullopt;
     if (!o.wallTextures)  // the control draws no texture: the plan alone, nothing baked
         return walls::prepareWalls(scene, d, walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution));
     if (o.bakeOnDemand) return prepareWallsOnDemand(o, scene, d, baker);
-    return prepareWallsOnce(o, scene, d, context, cluster);
+    return prepareWallsOnce(o, scene, d, context, cluster, stop);
 }
 
 gl::WalkthroughOptions walkthroughOptions(const RunOptions& o, gl::BackgroundBaker* baker) {
@@ -247,13 +271,25 @@ std::optional<app::Ending> endBeforeFrame(const Session& s, const input::Session
     return std::nullopt;
 }
 
-// Each window's title and overlay for the coming frame (rank 0, which navigates).
-void showStatus(const Session& s, const input::SessionKeys& keys, double lastFrameMs) {
-    if (!s.input) return;
+// What the walls draw, for the overlay.
+std::string_view drawingName(const Session& s) {
+    if (s.walkthrough.hasClusters()) return "hierarchy";
+    if (!s.walkthrough.hasWalls()) return "geometry";
+    return s.o.wallTextures ? "walls" : "control";
+}
+
+// Each window's title and overlay for the coming frame (rank 0, which navigates), from the last
+// frame's result.
+void showStatus(const Session& s, const input::SessionKeys& keys, const walkthrough::FrameResult& last) {
+    if (!s.input || s.context.windowCount() == 0) return;
     app::ViewStatus status{.navigation = s.input->navigationName(),
                            .speed = s.input->speed(),
-                           .frameMs = lastFrameMs,
-                           .help = keys.helpShown()};
+                           .frameMs = last.frameMs,
+                           .help = keys.helpShown(),
+                           .drawing = drawingName(s),
+                           .texturesToBake = last.texturesToBake,
+                           .texturesBaked = last.texturesBaked,
+                           .tracker = s.input->trackerState()};
     const display::OverlayText overlay = app::viewOverlay(status);
     const int windows = std::min(s.context.windowCount(), static_cast<int>(s.o.display.screens.size()));
     for (int w = 0; w < windows; ++w) {
@@ -272,7 +308,7 @@ void runFrames(const Session& s, RunSummary& summary) {
     if (o.frameBudgetMs > 0.0 && !o.clusters) frameBudget.emplace(o.frameBudgetMs);
     if (o.frameBudgetMs > 0.0 && o.clusters) clusterBudget.emplace(o.frameBudgetMs);
     input::SessionKeys keys;
-    double lastFrameMs = 0.0;
+    walkthrough::FrameResult last;  // the previous frame's figures, for the overlay
     for (long i = 0; o.frames == 0 || i < o.frames; ++i) {
         const bool save = o.saveEvery > 0 && i % o.saveEvery == 0;
         const std::vector<input::Event> events = s.context.takeInputEvents();
@@ -282,7 +318,7 @@ void runFrames(const Session& s, RunSummary& summary) {
             break;
         }
         walkthrough::FrameInput in = s.input ? s.input->next(i, save, events) : walkthrough::FrameInput{};
-        showStatus(s, keys, lastFrameMs);
+        showStatus(s, keys, last);
         for (int w = 0; save && o.saveWindow && w < s.context.windowCount(); ++w) s.context.requestWindowCapture(w);
         if (frameBudget) in.triangleBudget = frameBudget->budget();
         if (clusterBudget) in.clusterBudgetMs = walkthrough::clusterBudgetFor(*clusterBudget);
@@ -295,7 +331,9 @@ void runFrames(const Session& s, RunSummary& summary) {
         if (frameBudget) frameBudget->update(r.frameMs, r.geometryTriangles);
         if (clusterBudget) walkthrough::controlClusters(*clusterBudget, r);
         if (s.input) recordFrame(s, i, in, r, syncMs, summary);
-        lastFrameMs = r.frameMs;
+        last.frameMs = r.frameMs;
+        last.texturesToBake = r.texturesToBake;
+        last.texturesBaked = r.texturesBaked;
     }
 }
 
@@ -330,19 +368,28 @@ RunSummary runSession(const RunOptions& o) {
     if (input && !input->liveTrackerLine().empty()) std::cerr << "run: " << input->liveTrackerLine() << std::endl;
     const auto context = makeContext(o, display);
 
+    // The output files exist from here on, so a session stopped while baking leaves them complete.
+    std::unique_ptr<RunOutput> output =
+        rank == 0 && !o.out.empty() ? std::make_unique<RunOutput>(o.out, description, display) : nullptr;
+    summary.renderer = context->info().renderer;
+    StopCheck stop{.context = *context};
     std::unique_ptr<gl::BackgroundBaker> baker;  // --bake-on-demand; outlives the walkthrough
-    std::optional<walls::WallSetup> setup = sessionWalls(o, scene, description, *context, cluster.get(), baker);
+    std::optional<walls::WallSetup> setup =
+        stop() ? std::nullopt : sessionWalls(o, scene, description, *context, cluster.get(), baker, stop);
     summary.textures = setup ? static_cast<int>(setup->plan.textures.size()) : 0;
     summary.wallsSeconds = secondsSince(start);
+    if (stop()) {
+        summary.ending = *stop.ending;
+        if (output) output->close();
+        summary.rank = rank;
+        return summary;
+    }
     const std::vector<int> screens =
         cluster ? config::screensOfRank(o.display, rank, cluster->size()) : std::vector<int>{};
     gl::Walkthrough walkthrough(scene, description, display, *context, std::move(setup),
                                 walkthroughOptions(o, baker.get()), screens);
 
-    std::unique_ptr<RunOutput> output =
-        rank == 0 && !o.out.empty() ? std::make_unique<RunOutput>(o.out, description, display) : nullptr;
     summary.readySeconds = secondsSince(start);
-    summary.renderer = context->info().renderer;
     summarizeWalkthrough(walkthrough, summary);
     const Session session{.o = o,
                           .context = *context,

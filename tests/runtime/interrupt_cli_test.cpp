@@ -68,5 +68,58 @@ TEST(RunInterrupt, CtrlCEndsTheRunWithCompleteFilesAndTheSummary) {
     EXPECT_EQ(wallRows.back().at("frame"), rows.back().at("frame"));
 }
 
+// Texture files written so far under `folder` (a bake cache).
+int textureFiles(const fs::path& folder) {
+    int n = 0;
+    std::error_code ec;
+    for (fs::recursive_directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
+        if (it->path().extension() == ".bct" || it->path().extension() == ".tx") ++n;
+    return n;
+}
+
+TEST(RunInterrupt, CtrlCWhileBakingStopsTheBakeKeepingWhatWasFinished) {
+    const fs::path out = outputDir("interrupt-bake");
+    const fs::path cache = out / "cache";  // empty: the run must bake before its first frame
+    // A fine plan (many small zones) bakes for much longer than the test waits.
+    std::vector<std::string> args = wallRun(out / "run", "sim:walk?seed=3", 100);
+    for (std::size_t i = 0; i + 1 < args.size(); ++i) {
+        if (args[i] == "--alpha") args[i + 1] = "2";
+        if (args[i] == "--min-zone") args[i + 1] = "0.5";
+        if (args[i] == "--cache") args[i + 1] = cache.string();
+    }
+    args.insert(args.end(), {"--resolution", "64x64"});
+    CliProcess run(args);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
+    while (textureFiles(cache) < 2) {  // baking has begun
+        ASSERT_FALSE(run.exited()) << run.finish(std::chrono::seconds(5)).err;
+        ASSERT_LT(std::chrono::steady_clock::now(), deadline);
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));  // a polling interval, not a wait for a state
+    }
+    run.signal(SIGINT);
+    const CliResult r = run.finish(std::chrono::seconds(60));
+    EXPECT_EQ(r.exitCode, 128 + SIGINT) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("; stopped before the rest)"));
+    EXPECT_THAT(r.out, HasSubstr("run: stopped before the first frame: interrupted"));
+    // The output files are complete: each a header line and no row.
+    for (const char* file : {"frames.csv", "walls.csv"}) {
+        SCOPED_TRACE(file);
+        const std::string text = readText(out / "run" / file);
+        ASSERT_FALSE(text.empty());
+        EXPECT_EQ(text.back(), '\n');
+        EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1);
+        EXPECT_TRUE(parseCsv(text, file).empty());
+    }
+    // What was finished is listed for the next run: a manifest naming fewer textures than the plan.
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.out, m, std::regex("walls: ([0-9]+) textures in .* \\(([0-9]+) baked now")))
+        << r.out;
+    EXPECT_GT(std::stoi(m[2]), 0);
+    EXPECT_LT(std::stoi(m[2]), std::stoi(m[1]));
+    int manifests = 0;
+    for (const fs::directory_entry& e : fs::recursive_directory_iterator(cache))
+        manifests += e.path().filename() == "manifest.json";
+    EXPECT_EQ(manifests, 1);
+}
+
 }  // namespace
 }  // namespace cavewall::test

@@ -424,6 +424,11 @@ void Bake::render(const std::vector<Item>& items) {
     Drawn drawn;
     try {
         for (std::size_t i; (i = next++) < items.size();) {
+            if (_request.stop && _request.stop()) {
+                next = items.size();  // the helpers finish the texture they hold and stop
+                _result.stopped = true;
+                break;
+            }
             renderOne(items[i], renderer, writer, drawn);
             absorb(false);
         }

@@ -102,6 +102,10 @@ struct BakeRequest {
     // only when something has to be rendered.
     Context* context = nullptr;
     std::function<void(const BakeProgress&)> progress;  // after each texture (may be empty)
+    // Asked on the calling thread before each texture it draws (may be empty): true stops the
+    // bake there. The textures in hand are finished and listed, as after an interrupted bake,
+    // and BakeResult::stopped is set. A window closed or Ctrl+C during a run's bake.
+    std::function<bool()> stop;
     // > 0: render at most this many of the textures that need rendering, spread evenly over
     // them (every k-th, for timing a bake on a sample); the manifest lists only what was
     // finished, as after an interrupted bake. 0: all.
@@ -123,6 +127,7 @@ struct BakeResult {
     std::uint64_t trianglesDrawn = 0;  // summed over the textures rendered by this bake
     double maxLodErrorTexels = 0.0;    // the largest level-of-detail error drawn, texels
     std::vector<std::string> warnings;
+    bool stopped = false;  // BakeRequest::stop ended the bake early
 };
 
 // Bakes (or finds in the cache) every texture of `walls` (walls::prepareWalls of `scene` and
