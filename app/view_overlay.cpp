@@ -15,13 +15,20 @@ std::string statusLine(const ViewStatus& s) {
     std::snprintf(text, sizeof text, " | %.1f ms", s.frameMs);
     line += text;
     if (!s.drawing.empty()) line += " | " + std::string(s.drawing);
-    if (s.texturesToBake > 0) {
-        std::snprintf(text, sizeof text, " | baking %d of %d wall textures (geometry meanwhile)", s.texturesBaked,
-                      s.texturesBaked + s.texturesToBake);
-        line += text;
-    }
-    if (!s.tracker.empty()) line += " | tracker: " + std::string(s.tracker);
     return line + " | F1: help";
+}
+
+// Baking and the tracker, when there is something to say; empty otherwise.
+std::string stateLine(const ViewStatus& s) {
+    char text[160];
+    std::string line;
+    if (s.texturesToBake > 0) {
+        std::snprintf(text, sizeof text, "baking walls %d/%d, geometry meanwhile", s.texturesBaked,
+                      s.texturesBaked + s.texturesToBake);
+        line = text;
+    }
+    if (!s.tracker.empty()) line += (line.empty() ? "" : " | ") + std::string("tracker: ") + std::string(s.tracker);
+    return line;
 }
 
 }  // namespace
@@ -44,6 +51,7 @@ display::OverlayText viewOverlay(const ViewStatus& s) {
     display::OverlayText overlay;
     if (s.help) overlay.lines = helpLines(s.degreesPerPixel);
     overlay.lines.push_back(statusLine(s));
+    if (const std::string state = stateLine(s); !state.empty()) overlay.lines.push_back(state);
     return overlay;
 }
 

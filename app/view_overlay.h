@@ -28,9 +28,9 @@ struct ViewStatus {
     std::string_view tracker;  // "" (desktop or simulated), "no data", "data"
 };
 
-// The status line, e.g. "fly | 2.50 m/s | 16.7 ms | walls | F1: help", with "baking 12 of 340
-// wall textures (geometry meanwhile)" while baking on demand and "tracker: no data" for a tracker;
-// with help, the help page (helpLines) followed by that line.
+// The status line, e.g. "fly | 2.50 m/s | 16.7 ms | walls | F1: help", then a second line while
+// there is more to say: "baking walls 12/340, geometry meanwhile" while baking on demand,
+// "tracker: no data" for a network tracker. With help, the help page (helpLines) comes first.
 display::OverlayText viewOverlay(const ViewStatus& status);
 
 // The keys of the desktop fallback and the session (input/desktop_navigator.h,

@@ -52,6 +52,13 @@ glm::vec2 overlayTextSize(const OverlayText& t) {
     return glm::vec2(width, kLineHeight * static_cast<float>(t.lines.size())) * t.scale;
 }
 
+OverlayText fitOverlay(OverlayText t, float windowWidth) {
+    const float unitWidth = overlayTextSize(t).x / t.scale;  // the widest line at scale 1
+    const float room = windowWidth - 2.0f * (t.margin + t.padding);
+    if (unitWidth > 0.0f && unitWidth * t.scale > room) t.scale = std::max(1.0f, room / unitWidth);
+    return t;
+}
+
 std::vector<OverlayVertex> layoutOverlay(const OverlayText& t) {
     std::vector<OverlayVertex> out;
     if (t.lines.empty()) return out;

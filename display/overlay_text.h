@@ -37,4 +37,8 @@ std::vector<OverlayVertex> layoutOverlay(const OverlayText& text);
 // The text's size in pixels without margin and padding: the widest line and the lines' height.
 glm::vec2 overlayTextSize(const OverlayText& text);
 
+// `text` with its scale lowered, if needed, so that the widest line with margin and padding fits
+// `windowWidth` pixels; never below 1 pixel per font unit (a narrower window cuts the line).
+OverlayText fitOverlay(OverlayText text, float windowWidth);
+
 }  // namespace cavewall::display

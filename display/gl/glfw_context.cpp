@@ -58,6 +58,7 @@ private:
         std::unique_ptr<OverlayPass> overlayPass;  // this window's context too; made when first needed
         display::OverlayText overlay;
         std::vector<display::OverlayVertex> overlayVertices;
+        int overlayWidth = -1;  // the window width overlayVertices were laid out for
         std::string title;
         bool captureRequested = false;
         std::optional<scenes::Image> capture;
@@ -170,7 +171,7 @@ void GlfwContext::setOverlay(int window, const display::OverlayText& overlay) {
     Window& w = at(window);
     if (overlay == w.overlay) return;
     w.overlay = overlay;
-    w.overlayVertices = display::layoutOverlay(overlay);
+    w.overlayWidth = -1;  // laid out again at the next present, for the window's width
 }
 
 void GlfwContext::setTitle(int window, const std::string& title) {
@@ -182,6 +183,10 @@ void GlfwContext::setTitle(int window, const std::string& title) {
 
 // In the window's context, over its back buffer (both of a stereo window's).
 void GlfwContext::drawOverlay(Window& w, glm::ivec2 windowSize) {
+    if (w.overlayWidth != windowSize.x) {  // a narrow window gets smaller text (display::fitOverlay)
+        w.overlayVertices = display::layoutOverlay(display::fitOverlay(w.overlay, static_cast<float>(windowSize.x)));
+        w.overlayWidth = windowSize.x;
+    }
     if (w.overlayVertices.empty()) return;
     if (!w.overlayPass) w.overlayPass = std::make_unique<OverlayPass>();
     glDrawBuffer(GL_BACK);

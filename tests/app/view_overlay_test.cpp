@@ -30,6 +30,20 @@ TEST(ViewOverlay, TheHelpPageListsTheKeysAboveTheStatusLine) {
         EXPECT_THAT(o.lines, Contains(HasSubstr(key))) << key;
 }
 
+TEST(ViewOverlay, WhatIsDrawnBakingAndTheTrackerAreShown) {
+    // What the walls draw goes on the status line.
+    EXPECT_EQ(viewOverlay({.navigation = "fly", .frameMs = 20.0, .drawing = "walls"}).lines,
+              std::vector<std::string>{"fly | 20.0 ms | walls | F1: help"});
+    // Baking on demand and a network tracker get a second line.
+    const display::OverlayText o = viewOverlay(
+        {.navigation = "none", .frameMs = 20.0, .drawing = "walls", .texturesToBake = 300, .texturesBaked = 40,
+         .tracker = "no data"});
+    ASSERT_EQ(o.lines.size(), 2u);
+    EXPECT_EQ(o.lines[1], "baking walls 40/340, geometry meanwhile | tracker: no data");
+    // Once everything is baked the second line goes.
+    EXPECT_EQ(viewOverlay({.navigation = "fly", .drawing = "walls", .texturesBaked = 340}).lines.size(), 1u);
+}
+
 TEST(ViewOverlay, TheTitleNamesTheScreenAndTheNavigation) {
     EXPECT_EQ(windowTitle("monitor", "fly"), "cavewall - monitor - fly");
 }

@@ -50,6 +50,21 @@ TEST(OverlayText, ScaleMultipliesTheSize) {
     EXPECT_EQ(overlayTextSize(one).y, 12.0f);  // one line of stb_easy_font
 }
 
+TEST(OverlayText, ANarrowWindowGetsSmallerTextDownToOnePixelPerUnit) {
+    OverlayText t;
+    t.lines = {"guided | 4.49 m/s | 159.4 ms | walls | F1: help"};
+    const float unitWidth = overlayTextSize(t).x / t.scale;
+    const float wide = unitWidth * t.scale + 2 * (t.margin + t.padding);
+    EXPECT_EQ(fitOverlay(t, wide).scale, t.scale) << "fits: unchanged";
+    EXPECT_EQ(fitOverlay(t, wide + 100).scale, t.scale) << "never larger";
+    // Half the room: the scale that makes the widest line fill it exactly.
+    const float half = 0.5f * unitWidth * t.scale + 2 * (t.margin + t.padding);
+    EXPECT_FLOAT_EQ(fitOverlay(t, half).scale, 0.5f * t.scale);
+    const OverlayText fitted = fitOverlay(t, half);
+    EXPECT_LE(overlayTextSize(fitted).x + 2 * (t.margin + t.padding), half + 1e-3f);
+    EXPECT_EQ(fitOverlay(t, 50.0f).scale, 1.0f) << "not below 1";
+}
+
 TEST(OverlayText, BytesOutsidePrintableAsciiDrawNothing) {
     OverlayText plain, odd;
     plain.lines = {"ab"};
