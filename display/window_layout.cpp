@@ -43,8 +43,8 @@ std::vector<WindowPlacement> layoutWindows(const std::vector<WindowWish>& wishes
                         "), got " + std::to_string(w.monitor));
         const MonitorArea& m = monitors[static_cast<std::size_t>(w.monitor)];
         if (w.fullscreen)
-            out[i] = {m.position, m.size, std::min(static_cast<double>(m.size.x) / w.size.x,
-                                                   static_cast<double>(m.size.y) / w.size.y)};
+            out[i] = {m.position, m.size,
+                      std::min(static_cast<double>(m.size.x) / w.size.x, static_cast<double>(m.size.y) / w.size.y)};
         else if (w.position)
             out[i] = {m.position + *w.position, w.size, 1.0};
         else

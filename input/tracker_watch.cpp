@@ -37,11 +37,11 @@ std::optional<std::string> TrackerWatch::warning() {
                   _silence, static_cast<unsigned long long>(_last.packets));
     std::string line = text;
     if (_last.dropped() > 0) {
-        std::snprintf(text, sizeof text, "; dropped: %llu from another sender, %llu malformed, %llu not finite, %llu "
+        std::snprintf(text, sizeof text,
+                      "; dropped: %llu from another sender, %llu malformed, %llu not finite, %llu "
                       "outside the tracking volume",
                       static_cast<unsigned long long>(_last.foreign), static_cast<unsigned long long>(_last.malformed),
-                      static_cast<unsigned long long>(_last.nonFinite),
-                      static_cast<unsigned long long>(_last.outside));
+                      static_cast<unsigned long long>(_last.nonFinite), static_cast<unsigned long long>(_last.outside));
         line += text;
     }
     line += _last.packets == 0 ? "); check that the tracker PC sends to this address and port, and that no "

@@ -74,6 +74,22 @@ void compareWithControl(BenchReport& report) {
     }
 }
 
+const ModeResult* lodBaseline(const BenchReport& report) {
+    for (const ModeResult& m : report.modes)
+        if (m.mode == Mode::Full && m.lodPixels > 0.0 && m.triangleBudget == 0 && m.frameBudgetMs == 0.0 &&
+            m.sceneTag.empty())
+            return &m;
+    return nullptr;
+}
+
+void compareWithLodBaseline(BenchReport& report) {
+    const ModeResult* baseline = lodBaseline(report);
+    const double p50 = baseline ? baseline->frameMs.p50 : 0.0;
+    for (ModeResult& m : report.modes)
+        m.speedupLod =
+            p50 > 0.0 && m.frameMs.p50 > 0.0 ? p50 / m.frameMs.p50 : std::numeric_limits<double>::quiet_NaN();
+}
+
 namespace {
 
 // ", Rx the noise floor (one frame drawn again and again: F)" for a frame-time p99/p50 `ratio`
@@ -379,7 +395,7 @@ std::string csvHeader() {
            "popping_peak,popping_rms,psnr_gain_db,flip_ratio,over_alpha,uploaded_mb_p50,uploaded_mb_p99,uploaded_mb_"
            "mean,"
            "p95_over_budget,floor_ms,first_frame_s,geometry_fallbacks,fallback_frames,fallbacks_until_frame,textures_"
-           "baked,scene";
+           "baked,speedup_lod,scene";
 }
 
 std::string csvRow(const ModeResult& m) {
@@ -434,7 +450,7 @@ std::string csvRow(const ModeResult& m) {
     std::string row = std::string(toString(m.mode)) + "," + num(m.alphaDeg) + "," + transitionLabel(m);
     for (double v : values) row += "," + num(v);
     for (double v : onDemand) row += "," + num(v);
-    return row + "," + (m.sceneTag.empty() ? "bench" : m.sceneTag);
+    return row + "," + num(m.speedupLod) + "," + (m.sceneTag.empty() ? "bench" : m.sceneTag);
 }
 
 namespace {
@@ -454,7 +470,8 @@ std::string markdownReport(const BenchReport& report) {
     std::ostringstream md;
     for (const std::string& line : report.header) md << "- " << line << "\n";
     md << "\n| # | mode | frame ms p50 / p95 / p99 | p99/p50 | load p99/p50 | CPU ms p50 | GPU ms p50 | speed-up "
-          "| PSNR dB pooled (worst frame / p5 frame) | capped mean PSNR dB (not ranked) | RMSE | SSIM | FLIP mean / "
+          "(against full geometry with LOD) | PSNR dB pooled (worst frame / p5 frame) | capped mean PSNR dB (not "
+          "ranked) | RMSE | SSIM | FLIP mean / "
           "p95 "
           "| popping peak / RMS | vs control: PSNR gain dB / FLIP ratio | max err deg / px "
           "| textures over alpha | LOD err px max (tolerance mean) | triangles | draw calls | textures | texels M | "
@@ -468,7 +485,8 @@ std::string markdownReport(const BenchReport& report) {
         md << "| " << index++ << " | " << modeLabel(m) << " | " << num(m.frameMs.p50, 3) << " / "
            << num(m.frameMs.p95, 3) << " / " << num(m.frameMs.p99, 3) << " | " << num(ratio, 3) << " | "
            << num(m.loadRatio, 3) << " | " << num(m.cpuMs.p50, 3) << " | " << num(m.gpuMs.p50, 3) << " | "
-           << num(m.speedup, 3) << " | " << errorCells(m) << num(m.maxErrDeg, 3) << " / " << num(m.maxErrPx, 3) << " | "
+           << num(m.speedup, 3) << (std::isnan(m.speedupLod) ? std::string() : " (" + num(m.speedupLod, 3) + ")")
+           << " | " << errorCells(m) << num(m.maxErrDeg, 3) << " / " << num(m.maxErrPx, 3) << " | "
            << (m.mode == Mode::Walls ? std::to_string(m.texturesOverAlpha) : std::string("-")) << " | "
            << (m.lodPixels > 0.0 ? num(m.maxLodErrPx, 3) + " (" + num(m.meanLodTolerancePx, 3) + ")" : std::string("-"))
            << " | " << num(std::round(m.triangles), 7) << " | " << num(m.drawCalls, 3) << " | " << m.textures << " | "

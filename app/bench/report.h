@@ -76,8 +76,11 @@ struct ModeResult {
     double frameBudgetMs = 0.0;                 // frame-time target of the budget controller; 0: none
     TimeStats frameMs, cpuMs, gpuMs;
     double speedup = 1.0;  // full-geometry frame_ms_p50 / this mode's
-    ImageError error;      // all screens
-    FlipMap flipWorst;     // the FLIP map of the compared image with the highest mean
+    // Against the alternative a user would pick, full geometry with levels of detail at the
+    // bench's tolerance (compareWithLodBaseline): its frame_ms_p50 / this mode's; NaN without it.
+    double speedupLod = std::numeric_limits<double>::quiet_NaN();
+    ImageError error;   // all screens
+    FlipMap flipWorst;  // the FLIP map of the compared image with the highest mean
     // Against the control (compareWithControl): pooled PSNR minus the control's (dB, > 0: less
     // error) and FLIP mean over the control's (< 1: less error). NaN without a control.
     double psnrGainDb = std::numeric_limits<double>::quiet_NaN();
@@ -131,6 +134,13 @@ std::string markdownReport(const BenchReport& report);
 // The control of `report`: its first "cells" mode without levels of detail or budgets; null
 // when there is none.
 const ModeResult* controlMode(const BenchReport& report);
+
+// The baseline a user would pick instead of walls: the first full-geometry mode with levels of
+// detail (the bench's --lod tolerance); null when the bench ran without levels of detail.
+const ModeResult* lodBaseline(const BenchReport& report);
+
+// Fills every mode's speedupLod against lodBaseline (NaN without one).
+void compareWithLodBaseline(BenchReport& report);
 
 // Fills every mode's psnrGainDb and flipRatio against the control (NaN without one; a control
 // FLIP mean of 0 gives a NaN or infinite ratio).

@@ -37,7 +37,8 @@ bool pagesGeometry(ScaleMode mode) {
 
 // Modes a run may leave out (their slopes are not printed then).
 bool mayBeLeftOut(ScaleMode mode) {
-    return mode == ScaleMode::WallsBudget || mode == ScaleMode::DepthWalls || mode == ScaleMode::Cells;
+    return mode == ScaleMode::WallsBudget || mode == ScaleMode::DepthWalls || mode == ScaleMode::Cells ||
+           mode == ScaleMode::FullLod;
 }
 
 void writeText(const std::filesystem::path& file, const std::string& text) {
@@ -51,6 +52,7 @@ void writeText(const std::filesystem::path& file, const std::string& text) {
 std::string_view toString(ScaleMode mode) {
     switch (mode) {
         case ScaleMode::Full: return "full";
+        case ScaleMode::FullLod: return "full-lod";
         case ScaleMode::Near: return "near";
         case ScaleMode::Walls: return "walls";
         case ScaleMode::WallsBudget: return "walls-budget";
@@ -137,8 +139,8 @@ std::string scaleMarkdown(const ScaleReport& report) {
                "\n";
     }
     out +=
-        "\nWalls against full geometry at each size (median frame ms over median frame ms, and the walls' image "
-        "error):\n\n";
+        "\nWalls against full geometry at each size (median frame ms over median frame ms; in parentheses against "
+        "full geometry with levels of detail at the walls' tolerance, when run; and the walls' image error):\n\n";
     for (ScaleMode m : {ScaleMode::Walls, ScaleMode::WallsBudget, ScaleMode::DepthWalls})
         for (const ScaleRow* w : rowsOf(report, m))
             for (const ScaleRow* f : rowsOf(report, ScaleMode::Full)) {
@@ -151,8 +153,13 @@ std::string scaleMarkdown(const ScaleReport& report) {
                                                     fixed(w->flipMean, 4) + " over " +
                                                     std::to_string(w->comparedFrames) + " compared frames"
                                               : std::string("image error not compared");
+                std::string lod;  // against the alternative a user would pick
+                for (const ScaleRow* l : rowsOf(report, ScaleMode::FullLod))
+                    if (l->targetTriangles == w->targetTriangles)
+                        lod = " (" + fixed(l->frameMs.p50 / w->frameMs.p50, 2) +
+                              "x against full geometry with levels of detail)";
                 out += "- " + fixed(millions(w->triangles), 2) + " M triangles, " + std::string(toString(m)) + budget +
-                       ": speed-up " + fixed(f->frameMs.p50 / w->frameMs.p50, 2) + "x, " + error + ", " +
+                       ": speed-up " + fixed(f->frameMs.p50 / w->frameMs.p50, 2) + "x" + lod + ", " + error + ", " +
                        std::to_string(w->texturesOverAlpha) + " textures over alpha\n";
             }
     if (!rowsOf(report, ScaleMode::Cells).empty()) {

@@ -28,10 +28,13 @@ namespace cavewall::bench {
 // their frame-time ratio shares the machine's load of the same seconds. Cells: the control,
 // cells without textures (the flat walls' geometry cells, no texture), numbered
 // last so that the plots' earlier line numbers stay.
-enum class ScaleMode { Full, Near, Walls, WallsBudget, DepthWalls, Cells };
-inline constexpr ScaleMode kScaleModes[] = {ScaleMode::Full,  ScaleMode::Near,        ScaleMode::Cells,
-                                            ScaleMode::Walls, ScaleMode::WallsBudget, ScaleMode::DepthWalls};
-// "full" | "near" | "cells" | "walls" | "walls-budget" | "walls-depth"
+// FullLod: full geometry with levels of detail at the walls' tolerance, the alternative a user
+// would pick (left out without levels of detail).
+enum class ScaleMode { Full, Near, Walls, WallsBudget, DepthWalls, Cells, FullLod };
+inline constexpr ScaleMode kScaleModes[] = {ScaleMode::Full,      ScaleMode::FullLod, ScaleMode::Near,
+                                            ScaleMode::Cells,     ScaleMode::Walls,   ScaleMode::WallsBudget,
+                                            ScaleMode::DepthWalls};
+// "full" | "full-lod" | "near" | "cells" | "walls" | "walls-budget" | "walls-depth"
 std::string_view toString(ScaleMode mode);
 
 struct ScaleRow {

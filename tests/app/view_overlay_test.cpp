@@ -35,9 +35,12 @@ TEST(ViewOverlay, WhatIsDrawnBakingAndTheTrackerAreShown) {
     EXPECT_EQ(viewOverlay({.navigation = "fly", .frameMs = 20.0, .drawing = "walls"}).lines,
               std::vector<std::string>{"fly | 20.0 ms | walls | F1: help"});
     // Baking on demand and a network tracker get a second line.
-    const display::OverlayText o = viewOverlay(
-        {.navigation = "none", .frameMs = 20.0, .drawing = "walls", .texturesToBake = 300, .texturesBaked = 40,
-         .tracker = "no data"});
+    const display::OverlayText o = viewOverlay({.navigation = "none",
+                                                .frameMs = 20.0,
+                                                .drawing = "walls",
+                                                .texturesToBake = 300,
+                                                .texturesBaked = 40,
+                                                .tracker = "no data"});
     ASSERT_EQ(o.lines.size(), 2u);
     EXPECT_EQ(o.lines[1], "baking walls 40/340, geometry meanwhile | tracker: no data");
     // Once everything is baked the second line goes.

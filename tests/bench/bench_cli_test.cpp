@@ -303,7 +303,8 @@ TEST(BenchSceneCli, BadCompareSceneOrOnDemandCacheIsAClearError) {
 }
 
 // `bench --scale` end to end on two tiny sizes (both below 2 M triangles: the same 80 m plant,
-// generated into a folder each): four modes per size, the walls' paged geometry no more than
+// generated into a folder each): six modes per size (full geometry with levels of detail the
+// alternative a user would pick), the walls' paged geometry no more than
 // the whole model (shared meshes stored once), only the requested textures baked, the second
 // size's bake found in the scale cache (the same scene bytes, plan and settings), and the
 // budgeted walls drawing no more triangles than the walls under the near limit's median.
@@ -344,18 +345,22 @@ TEST(BenchSceneCli, ScaleRunHasFourModesPerSize) {
     for (const char* file : {"scale.md", "scale_ms.png", "scale_mb.png", "scale_load.png"})
         EXPECT_TRUE(fs::exists(out / file)) << file;
     const test::CsvTable csv = test::readCsv(out / "scale.csv");
-    ASSERT_EQ(csv.size(), 10u);
-    EXPECT_EQ(csv.column("mode"), (std::vector<std::string>{"full", "near", "cells", "walls", "walls-budget", "full",
-                                                            "near", "cells", "walls", "walls-budget"}));
-    for (std::size_t size : {0u, 5u}) {
-        EXPECT_EQ(csv[size + 3].number("triangle_budget"), 0.0);
-        EXPECT_GT(csv[size + 4].number("triangle_budget"), 0.0);
-        EXPECT_LE(csv[size + 4].number("triangles_per_frame"), csv[size + 3].number("triangles_per_frame"));
+    ASSERT_EQ(csv.size(), 12u);
+    EXPECT_EQ(csv.column("mode"),
+              (std::vector<std::string>{"full", "full-lod", "near", "cells", "walls", "walls-budget", "full",
+                                        "full-lod", "near", "cells", "walls", "walls-budget"}));
+    for (std::size_t size : {0u, 6u}) {
+        EXPECT_EQ(csv[size + 4].number("triangle_budget"), 0.0);
+        EXPECT_GT(csv[size + 5].number("triangle_budget"), 0.0);
+        EXPECT_LE(csv[size + 5].number("triangles_per_frame"), csv[size + 4].number("triangles_per_frame"));
         // The control draws the walls' cells without their quads, and no texture over alpha.
-        EXPECT_LT(csv[size + 2].number("triangles_per_frame"), csv[size + 3].number("triangles_per_frame"));
-        EXPECT_EQ(csv[size + 2].number("textures_over_alpha"), 0.0);
+        EXPECT_LT(csv[size + 3].number("triangles_per_frame"), csv[size + 4].number("triangles_per_frame"));
+        EXPECT_EQ(csv[size + 3].number("textures_over_alpha"), 0.0);
+        // Full geometry with levels of detail (1 px) draws fewer triangles than at full detail.
+        EXPECT_LT(csv[size + 1].number("triangles_per_frame"), csv[size].number("triangles_per_frame"));
     }
-    EXPECT_THAT(r.out, HasSubstr("walls-budget (" + csv[4].at("triangle_budget") + " triangles a frame): speed-up"));
+    EXPECT_THAT(r.out, HasSubstr("walls-budget (" + csv[5].at("triangle_budget") + " triangles a frame): speed-up"));
+    EXPECT_THAT(r.out, HasSubstr("x against full geometry with levels of detail)"));
     EXPECT_THAT(r.out, HasSubstr("Against the control, cells without textures"));
     EXPECT_THAT(r.out, HasSubstr(" M triangles: cells "));
     for (const test::CsvRow& row : csv) {
@@ -382,9 +387,9 @@ TEST(BenchSceneCli, ScaleRunHasFourModesPerSize) {
     // The near limit leaves out every cell but the viewer's: it must lose to full geometry
     // somewhere in the compared frames, and the walls (and the control, which draws at least
     // the viewer's cell) must do better than it.
-    EXPECT_LT(csv[1].number("psnr_db"), 60.0);
-    EXPECT_GE(csv[3].number("psnr_db"), csv[1].number("psnr_db"));
-    EXPECT_GE(csv[2].number("psnr_db"), csv[1].number("psnr_db"));
+    EXPECT_LT(csv[2].number("psnr_db"), 60.0);
+    EXPECT_GE(csv[4].number("psnr_db"), csv[2].number("psnr_db"));
+    EXPECT_GE(csv[3].number("psnr_db"), csv[2].number("psnr_db"));
     EXPECT_THAT(r.out, HasSubstr("textures over alpha"));
 }
 
@@ -408,10 +413,10 @@ TEST(BenchSceneCli, ScaleRunDrawsDepthWallsWithTheZonesAsked) {
     EXPECT_THAT(r.out, HasSubstr("walls planned (zones of at least 2.00 m)"));
     EXPECT_GT(depthImages(root / "data" / "bake-cache"), 0u);
     const test::CsvTable csv = test::readCsv(out / "scale.csv");
-    ASSERT_EQ(csv.size(), 4u);  // full, near, cells, walls (no budget)
-    EXPECT_EQ(csv[3].at("mode"), "walls");
-    EXPECT_EQ(csv[3].number("textures_over_alpha"), 0.0);
-    EXPECT_EQ(csv[3].number("compared_frames"), 2.0);
+    ASSERT_EQ(csv.size(), 5u);  // full, full-lod, near, cells, walls (no budget)
+    EXPECT_EQ(csv[4].at("mode"), "walls");
+    EXPECT_EQ(csv[4].number("textures_over_alpha"), 0.0);
+    EXPECT_EQ(csv[4].number("compared_frames"), 2.0);
 }
 
 // --walls flat,depth: the flat walls as usual and walls-depth beside them, planned with the
@@ -427,9 +432,10 @@ TEST(BenchSceneCli, ScaleRunDrawsDepthWallsBesideFlatOnes) {
     EXPECT_THAT(r.out, HasSubstr("; depth walls planned (zones of at least"));
     EXPECT_GT(depthImages(root / "data" / "bake-cache"), 0u);
     const test::CsvTable csv = test::readCsv(out / "scale.csv");
-    ASSERT_EQ(csv.size(), 5u);
-    EXPECT_EQ(csv.column("mode"), (std::vector<std::string>{"full", "near", "cells", "walls", "walls-depth"}));
-    for (std::size_t m : {3u, 4u}) {
+    ASSERT_EQ(csv.size(), 6u);
+    EXPECT_EQ(csv.column("mode"),
+              (std::vector<std::string>{"full", "full-lod", "near", "cells", "walls", "walls-depth"}));
+    for (std::size_t m : {4u, 5u}) {
         EXPECT_EQ(csv[m].number("textures_over_alpha"), 0.0);
         EXPECT_EQ(csv[m].number("compared_frames"), 2.0);
         EXPECT_GT(csv[m].number("paged_peak_mb"), 0.0);
@@ -439,7 +445,7 @@ TEST(BenchSceneCli, ScaleRunDrawsDepthWallsBesideFlatOnes) {
     const std::size_t at = r.out.find(line);
     ASSERT_NE(at, std::string::npos) << r.out;
     const double printed = std::strtod(r.out.c_str() + at + line.size(), nullptr);
-    EXPECT_NEAR(printed, csv[4].number("frame_ms_p50") / csv[3].number("frame_ms_p50"), 0.002);
+    EXPECT_NEAR(printed, csv[5].number("frame_ms_p50") / csv[4].number("frame_ms_p50"), 0.002);
 }
 
 TEST(BenchSceneCli, BadInputIsAClearError) {

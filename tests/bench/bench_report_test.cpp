@@ -84,6 +84,29 @@ TEST(BenchReport, RowsMatchTheHeader) {
     EXPECT_TRUE(std::isinf(full.number("psnr_db")));
 }
 
+TEST(BenchReport, EveryModeIsComparedWithFullGeometryWithLevelsOfDetail) {
+    BenchReport report;
+    report.modes = {sample(Mode::Full, 0, 215.0, 0.0), sample(Mode::Full, 0, 115.0, 0.01),
+                    sample(Mode::Walls, 10, 73.0, 0.02)};
+    report.modes[1].lodPixels = 1.0;  // the alternative a user would pick
+    report.modes[2].lodPixels = 1.0;
+    compareWithLodBaseline(report);
+    EXPECT_EQ(lodBaseline(report), &report.modes[1]);
+    EXPECT_NEAR(report.modes[2].speedupLod, 115.0 / 73.0, 1e-12);
+    EXPECT_NEAR(report.modes[0].speedupLod, 115.0 / 215.0, 1e-12);  // full detail is slower than it
+    const auto row = parseCsv(csvHeader() + "\n" + csvRow(report.modes[2]) + "\n")[0];
+    EXPECT_NEAR(row.number("speedup_lod"), 115.0 / 73.0, 1e-3);
+    // The Markdown table gives it in parentheses after the speed-up against full detail.
+    EXPECT_THAT(markdownReport(report), HasSubstr(" (1.58) |"));
+    // Without levels of detail there is no such baseline: NaN, and nothing in parentheses.
+    BenchReport plain;
+    plain.modes = {sample(Mode::Full, 0, 215.0, 0.0), sample(Mode::Walls, 10, 73.0, 0.02)};
+    compareWithLodBaseline(plain);
+    EXPECT_EQ(lodBaseline(plain), nullptr);
+    EXPECT_TRUE(std::isnan(plain.modes[1].speedupLod));
+    EXPECT_EQ(parseCsv(csvHeader() + "\n" + csvRow(plain.modes[1]) + "\n")[0].at("speedup_lod"), "nan");
+}
+
 TEST(BenchReport, LinesAreFittedByLeastSquares) {
     // y = 20 + 1.5 x exactly: slope, intercept and r2 1.
     const LineFit exact = fitLine({0, 10, 20, 30}, {20, 35, 50, 65});

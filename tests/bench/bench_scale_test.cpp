@@ -73,6 +73,19 @@ TEST(BenchScale, BudgetedWallsReportTheirBudgetBesideTheirSpeedUp) {
     EXPECT_THAT(scaleCsv(r), HasSubstr(",walls,0,8.000,"));
 }
 
+// Full geometry with levels of detail, the alternative a user would pick, gets its row and every
+// walls mode's speed-up against it beside the one against full detail.
+TEST(BenchScale, WallsAreComparedWithFullGeometryWithLevelsOfDetail) {
+    ScaleReport r = sample();
+    EXPECT_THAT(scaleMarkdown(r), ::testing::Not(HasSubstr("against full geometry with levels of detail)")));
+    r.rows.push_back(row(8'000'000, ScaleMode::FullLod, 16.0));
+    const std::string md = scaleMarkdown(r);
+    EXPECT_THAT(md, HasSubstr("- 8.00 M triangles, walls: speed-up 10.00x (2.00x against full geometry with levels "
+                              "of detail), "));
+    EXPECT_THAT(md, HasSubstr("- 2.00 M triangles, walls: speed-up 4.00x, "));  // no full-lod row at 2 M
+    EXPECT_THAT(scaleCsv(r), HasSubstr(",full-lod,0,16.000,"));
+}
+
 // Depth walls drawn beside flat ones get their own row, slope and speed-up line, and a line of
 // their median frame time over the flat walls' at each size; a report without them has none.
 TEST(BenchScale, DepthWallsBesideFlatOnesReportTheirRatio) {

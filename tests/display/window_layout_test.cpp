@@ -27,7 +27,8 @@ bool inside(const WindowPlacement& w, const MonitorArea& m, int titleBar) {
 
 std::vector<WindowWish> squares(int count, int side) {
     std::vector<WindowWish> wishes;
-    for (int i = 0; i < count; ++i) wishes.push_back({.name = "s" + std::to_string(i), .size = {side, side}, .position = std::nullopt});
+    for (int i = 0; i < count; ++i)
+        wishes.push_back({.name = "s" + std::to_string(i), .size = {side, side}, .position = std::nullopt});
     return wishes;
 }
 
@@ -41,7 +42,8 @@ TEST(WindowLayout, FourCaveScreensOnAFullHdMonitorTileTwoByTwoWithoutOverlap) {
         EXPECT_TRUE(inside(w, monitor, kTitleBarPixels));
     }
     for (std::size_t i = 0; i < p.size(); ++i)
-        for (std::size_t j = i + 1; j < p.size(); ++j) EXPECT_FALSE(overlap(p[i], p[j], kTitleBarPixels, kTitleBarPixels)) << i << j;
+        for (std::size_t j = i + 1; j < p.size(); ++j)
+            EXPECT_FALSE(overlap(p[i], p[j], kTitleBarPixels, kTitleBarPixels)) << i << j;
     EXPECT_EQ(p[1].position, glm::ivec2(960, 32));  // second column, first row
 }
 
@@ -58,7 +60,9 @@ TEST(WindowLayout, ManyWindowsOfEveryShapeNeverOverlapAndStayOnScreen) {
     for (int count = 1; count <= 9; ++count) {
         std::vector<WindowWish> wishes;
         for (int i = 0; i < count; ++i)
-            wishes.push_back({.name = "s", .size = {400 + 173 * i, 900 - 61 * i}, .position = std::nullopt,
+            wishes.push_back({.name = "s",
+                              .size = {400 + 173 * i, 900 - 61 * i},
+                              .position = std::nullopt,
                               .monitor = i % 2,
                               .borderless = i % 3 == 0});
         const std::vector<WindowPlacement> p = layoutWindows(wishes, monitors);
@@ -88,9 +92,12 @@ TEST(WindowLayout, AMonitorThatIsNotConnectedIsAnErrorNamingTheScreen) {
     std::vector<WindowWish> wishes = squares(1, 500);
     wishes[0].name = "left";
     wishes[0].monitor = 3;
-    EXPECT_THAT([&] { layoutWindows(wishes, {{{0, 0}, {1920, 1080}}}); },
-                ::testing::ThrowsMessage<Error>(
-                    HasSubstr("screen 'left': window.monitor: expected a monitor index in [0, 0] (1 monitor), got 3")));
+    EXPECT_THAT(
+        [&] {
+            layoutWindows(wishes, {{{0, 0}, {1920, 1080}}});
+        },
+        ::testing::ThrowsMessage<Error>(
+            HasSubstr("screen 'left': window.monitor: expected a monitor index in [0, 0] (1 monitor), got 3")));
 }
 
 }  // namespace

@@ -84,8 +84,8 @@ TEST(WindowTiling, Cave4OnAFullHdMonitorGetsFourWindowsSideBySideAtItsOwnResolut
     ASSERT_EQ(windows.size(), 4u);
     for (std::size_t i = 0; i < windows.size(); ++i) {
         const Rect& w = windows[i];
-        SCOPED_TRACE("window at " + std::to_string(w.x) + "," + std::to_string(w.y) + " " + std::to_string(w.w) +
-                     "x" + std::to_string(w.h));
+        SCOPED_TRACE("window at " + std::to_string(w.x) + "," + std::to_string(w.y) + " " + std::to_string(w.w) + "x" +
+                     std::to_string(w.h));
         EXPECT_GE(w.x, 0);
         EXPECT_GE(w.y, 0);
         EXPECT_LE(w.x + w.w, 1920);

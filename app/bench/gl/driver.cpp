@@ -571,6 +571,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
             "budget");
     addNoiseFloor(report, b);
     compareWithControl(report);
+    compareWithLodBaseline(report);
     report.header.push_back(
         "control: 'cells' (the cells the walls draw as geometry, no textures); 'vs control' is "
         "every walls mode's pooled PSNR gain over it and its FLIP mean as a fraction of its");

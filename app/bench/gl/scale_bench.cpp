@@ -244,7 +244,9 @@ struct SizeMode {
 };
 
 // The modes with walls (cells: their geometry cells without textures), which page geometry.
-bool hasWalls(ScaleMode mode) { return mode != ScaleMode::Full && mode != ScaleMode::Near; }
+bool hasWalls(ScaleMode mode) {
+    return mode != ScaleMode::Full && mode != ScaleMode::FullLod && mode != ScaleMode::Near;
+}
 
 // The walls modes' warm-up order over the stretch (each frame they are drawn in kScaleModes').
 constexpr ScaleMode kWarmUpOrder[] = {ScaleMode::Walls, ScaleMode::WallsBudget, ScaleMode::DepthWalls,
@@ -337,6 +339,17 @@ SizeModes makeModes(const SizeSetting& s) {
                                                  fullOptions);
         },
         [&](Walkthrough& w) { w.renderFrame(p.path.frames.front()); });
+    if (o.lodPixels > 0.0) {  // full geometry with levels of detail at the walls' tolerance
+        SizeMode& fullLod = made.emplace_back(ScaleMode::FullLod, screens);
+        WalkthroughOptions lodOptions;
+        lodOptions.render.lodPixels = o.lodPixels;
+        std::tie(fullLod.walk, fullLod.firstFrameSeconds) = timeFirst(
+            [&] {
+                return std::make_unique<Walkthrough>(p.scene, p.description, s.display, s.context, std::nullopt,
+                                                     lodOptions);
+            },
+            [&](Walkthrough& w) { w.renderFrame(p.path.frames.front()); });
+    }
     SizeMode& nearLimit = made.emplace_back(ScaleMode::Near, screens);
     std::tie(nearLimit.near, nearLimit.firstFrameSeconds) = timeFirst(
         [&] { return std::make_unique<NearMode>(p.scene, p.description, s.display, s.context, p.setup, o.lodPixels); },
@@ -365,7 +378,8 @@ SizeModes makeModes(const SizeSetting& s) {
     return out;
 }
 
-// Every walls mode over the whole stretch (kWarmUpOrder), then full geometry's first frames.
+// Every walls mode over the whole stretch (kWarmUpOrder), then full geometry's first frames (with
+// and without levels of detail).
 void warmUp(SizeModes& live, const bench::EyePath& path) {
     for (ScaleMode mode : kWarmUpOrder) {
         const SizeMode* m = live.find(mode);
@@ -373,8 +387,10 @@ void warmUp(SizeModes& live, const bench::EyePath& path) {
         for (const walkthrough::FrameInput& in : path.frames) m->walk->renderFrame(in);
         m->walk->waitForTextures();
     }
-    Walkthrough& full = *live.find(ScaleMode::Full)->walk;
-    for (std::size_t i = 0; i < std::min<std::size_t>(3, path.frames.size()); ++i) full.renderFrame(path.frames[i]);
+    for (ScaleMode mode : {ScaleMode::Full, ScaleMode::FullLod})
+        if (SizeMode* m = live.find(mode))
+            for (std::size_t i = 0; i < std::min<std::size_t>(3, path.frames.size()); ++i)
+                m->walk->renderFrame(path.frames[i]);
 }
 
 // A walls mode's frame; its images (when `reference`) compared with full geometry's.
@@ -410,7 +426,7 @@ void drawFrame(SizeModes& live, walkthrough::FrameInput in, long frame, bool com
             if (compare)
                 m.acc.errors.addFrame(frame, comparedImages(display, in.head, readFrame(display, m.near->targets),
                                                             f.images, std::string(bench::toString(m.mode))));
-        } else if (hasWalls(m.mode)) {
+        } else if (hasWalls(m.mode) || m.mode == ScaleMode::FullLod) {
             drawWalk(m, in, frame, compare ? &f.images : nullptr, display);
         }
     }
@@ -424,7 +440,7 @@ void addRows(const SizeModes& live, const bench::ScaleRow& base, const GeometryY
         bench::ScaleRow r = rowOf(m.mode, m.acc, base);
         if (m.mode == ScaleMode::WallsBudget) r.triangleBudget = live.budget;
         r.firstFrameSeconds = m.firstFrameSeconds;
-        const GeometryYardsticks& y = m.mode == ScaleMode::Full ? fullYard : yard;
+        const GeometryYardsticks& y = m.mode == ScaleMode::Full || m.mode == ScaleMode::FullLod ? fullYard : yard;
         r.wholeModelMB = y.wholeModelMB;
         r.largestThreeCellsMB = y.largestThreeCellsMB;
         report.rows.push_back(r);
@@ -461,9 +477,10 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
     const std::string budgetWords = live.find(ScaleMode::WallsBudget)
                                         ? " and walls-budget (" + std::to_string(live.budget) + " triangles a frame)"
                                         : "";
-    say(size + ": full, near, cells, walls" + budgetWords +
+    say(size + ": full" + (live.find(ScaleMode::FullLod) ? ", full-lod" : "") + ", near, cells, walls" + budgetWords +
         (live.find(ScaleMode::DepthWalls) ? " and walls-depth" : "") + " frame by frame in turn");
     live.find(ScaleMode::Full)->acc.residentMB = fullYard.sharedMB;
+    if (SizeMode* fullLod = live.find(ScaleMode::FullLod)) fullLod->acc.residentMB = fullYard.sharedMB;
     SizeMode& nearLimit = *live.find(ScaleMode::Near);
     nearLimit.acc.residentMB = nearLimit.near->residentMB();
     long frame = 0;
@@ -508,7 +525,9 @@ bench::ScaleReport runScaleBench(const ScaleOptions& o) {
             " m of each plant's walk path (the same bays at every "
             "size), " +
             std::to_string(o.frames) + " frames, head " + o.tracker + "; modes drawn frame by frame in turn",
-        "full: all geometry, frustum-culled, full detail; near: the viewer's cell and structure at lod " +
+        "full: all geometry, frustum-culled, full detail; full-lod: the same at lod " +
+            config::formatNumber(o.lodPixels) +
+            " px, the alternative a user would pick; near: the viewer's cell and structure at lod " +
             config::formatNumber(o.lodPixels) + " px; walls: " + std::string(walls::wallKindName(o.wallKind)) +
             " walls at alpha " + config::formatNumber(o.alphaDeg) + " deg, lod " + config::formatNumber(o.lodPixels) +
             " px, geometry paging under " + config::formatNumber(o.geometryBudgetMB) +
