@@ -3,13 +3,13 @@
 #include "config/error.h"
 #include "app/bench/plot.h"
 #include "app/bench/report.h"
+#include "scenes/file_write.h"
 #include "scenes/image_io.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <limits>
 #include <map>
 
@@ -40,11 +40,7 @@ bool mayBeLeftOut(ScaleMode mode) {
     return mode == ScaleMode::WallsBudget || mode == ScaleMode::DepthWalls || mode == ScaleMode::Cells;
 }
 
-void writeText(const std::filesystem::path& file, const std::string& text) {
-    std::ofstream out(file, std::ios::binary);
-    out << text;
-    if (!out) throw Error(file.string() + ": could not write the file");
-}
+void writeText(const std::filesystem::path& file, const std::string& text) { scenes::writeBytesAtomically(file, text); }
 
 }  // namespace
 
