@@ -477,6 +477,14 @@ TEST(BenchSceneCli, BadInputIsAClearError) {
         {{"bench", "--scale", "2M", "--walls", "depth,flat"}, "--walls: expected flat, depth or flat,depth"},
         {{"bench", "--scale", "2M", "--min-zone", "0.25"},
          "bench --scale: plan options: minZoneSize: expected more than twice blendWidth (0.4 m), got 0.25 m"},
+        // An empty path is refused, not replaced by the default folder.
+        {{"bench", "x.json", "--cache", ""}, "--cache: expected a path, got an empty word"},
+        {{"bench", "--scale", "2M", "--data", ""}, "--data: expected a path, got an empty word"},
+        // --stability is a bench of its own.
+        {{"bench", "--stability", "--scale", "2M"},
+         "bench: --stability runs alone (expected no other flags or words, got --scale)"},
+        {{"bench", "x.json", "--stability"},
+         "bench: --stability runs alone (expected no other flags or words, got 'x.json')"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.message);
