@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 namespace cavewall::tools {
 
@@ -69,6 +70,9 @@ int runWalls(const std::vector<std::string>& words) {
     if (args.positional().size() > 1)
         throw Error("walls: expected one MODEL, got " + std::to_string(args.positional().size()) + " words");
     const std::filesystem::path out = args.require("out");
+    const std::optional<std::filesystem::path> png = args.path("png");
+    scenes::checkWriteTarget(out, "--out");  // before the work, not after it
+    if (png) scenes::checkWriteTarget(*png, "--png");
 
     const double split = args.number("split", options.minCellSize / 2.0, 0.0, 1e6);
     if (split > 0.0 && split < 0.1)
@@ -76,6 +80,9 @@ int runWalls(const std::vector<std::string>& words) {
 
     scenes::SceneDescription base;
     scenes::Scene scene = scenes::loadSceneFile(path, &base);
+    const std::vector<std::filesystem::path> inputs = scenes::sceneInputFiles(path, base);
+    scenes::checkNotAnInput(out, "--out", inputs);
+    if (png) scenes::checkNotAnInput(*png, "--png", inputs);
     if (split > 0.0) {
         // When content objects wider than two cells hold a quarter of the content triangles or
         // more, cells cannot leave much out: the models get cut and the scene is loaded again.
@@ -151,10 +158,10 @@ int runWalls(const std::vector<std::string>& words) {
     for (const scenes::VirtualWall& w : result.description.walls) portals += w.kind == scenes::WallKind::Portal;
     std::cout << "wrote " << out.string() << " (" << result.description.cells.size() << " cells, "
               << result.description.walls.size() - portals << " virtual walls, " << portals << " portals)\n";
-    if (auto png = args.get("png")) {
+    if (png) {
         const walls::Plan plan = walls::planZones(result.description, options.plan);
         scenes::writeImage(*png, walls::planDiagram(plan, result.description, &scene, 200));
-        std::cout << "wrote " << *png << "\n";
+        std::cout << "wrote " << png->string() << "\n";
     }
     return 0;
 }
