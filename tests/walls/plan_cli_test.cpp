@@ -290,5 +290,23 @@ TEST(WritersCli, OutputsThatAreNotRegularFilesOrInputsAreRefused) {
     EXPECT_FALSE(std::filesystem::exists(dir / "w.json"));  // refused before the work
 }
 
+// --min-cell 0.1, the smallest documented value, is accepted: the default --split (half of it)
+// is held to its smallest chunk, 0.1 m; only a --split given below that is refused, by name.
+TEST(WallsCli, TheSmallestMinCellIsAcceptedAndASmallSplitIsNamed) {
+    const auto dir = outputDir() / "min-cell";
+    std::filesystem::remove_all(dir);
+    const CliResult gen = runCavewall({"generate", "house", "--out", (dir / "house").string(), "--triangles", "2000"});
+    ASSERT_EQ(gen.exitCode, 0) << gen.err;
+    const CliResult r = runCavewall({"walls", (dir / "house").string(), "--out", (dir / "scene.json").string(),
+                                     "--min-cell", "0.1", "--max-cells", "2", "--max-res", "32"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.err, Not(HasSubstr("--split")));
+    EXPECT_TRUE(std::filesystem::exists(dir / "scene.json"));
+    const CliResult small = runCavewall({"walls", (dir / "house").string(), "--out", (dir / "small.json").string(),
+                                         "--min-cell", "0.1", "--split", "0.05"});
+    EXPECT_EQ(small.exitCode, 1);
+    EXPECT_THAT(small.err, HasSubstr("--split: expected 0 (no cutting) or at least 0.1 metres, got 0.05"));
+}
+
 }  // namespace
 }  // namespace cavewall::test
