@@ -78,8 +78,9 @@ std::string scaleMarkdown(const ScaleReport& report);
 // Writes scale.csv, scale.md and the three plots into `folder` (created); returns the files.
 std::vector<std::filesystem::path> writeScaleReport(const std::filesystem::path& folder, const ScaleReport& report);
 
-// "2M,8M,32M" (k and M suffixes, plain integers too): triangle targets, each in [1, 2^31).
-// Throws cavewall::Error naming the entry.
+// "2M,8M,32M" (k and M suffixes, plain decimal integers too): triangle targets, each from 1 to
+// scenes::kPlantMaxTriangles (the largest plant the generator makes). Throws cavewall::Error
+// naming the entry.
 std::vector<std::size_t> parseScaleList(const std::string& text);
 
 // The first `metres` of the polyline `points` (all of it when shorter; the last point

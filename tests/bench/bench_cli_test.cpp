@@ -480,6 +480,15 @@ TEST(BenchSceneCli, BadInputIsAClearError) {
         // An empty path is refused, not replaced by the default folder.
         {{"bench", "x.json", "--cache", ""}, "--cache: expected a path, got an empty word"},
         {{"bench", "--scale", "2M", "--data", ""}, "--data: expected a path, got an empty word"},
+        // Sizes the generator cannot make are refused up front, naming the limit.
+        {{"bench", "--scale", "129M"},
+         "bench: --scale: entry 1 '129M': expected at most 128000000 triangles (128M, the largest plant the "
+         "generator makes), got 129000000"},
+        {{"bench", "--scale", "1k,1000M"}, "bench: --scale: entry 2 '1000M': expected at most 128000000 triangles"},
+        {{"bench", "--scale", "2147483647"}, "bench: --scale: entry 1 '2147483647': expected at most 128000000"},
+        {{"bench", "--scale", "0x400"},
+         "bench: --scale: entry 1 '0x400': expected a triangle count such as 2M, 500k or 8000000 (decimal digits, "
+         "then k or M; at least 1)"},
         // --stability is a bench of its own.
         {{"bench", "--stability", "--scale", "2M"},
          "bench: --stability runs alone (expected no other flags or words, got --scale)"},
