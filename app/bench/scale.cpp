@@ -1,6 +1,8 @@
 #include "app/bench/scale.h"
 
 #include "config/error.h"
+#include "config/json_depth.h"
+#include "config/json_reader.h"
 #include "app/bench/plot.h"
 #include "app/bench/report.h"
 #include "scenes/file_write.h"
@@ -13,6 +15,7 @@
 #include <cstdlib>
 #include <limits>
 #include <map>
+#include <nlohmann/json.hpp>
 
 namespace cavewall::bench {
 
@@ -247,6 +250,40 @@ std::size_t scaleEntry(const std::string& entry, std::size_t index) {
 }
 
 }  // namespace
+
+void writePlantStamp(const std::filesystem::path& folder, std::size_t target, std::size_t triangles) {
+    const nlohmann::json stamp{{"generator", "cavewall bench --scale"}, {"target", target}, {"triangles", triangles}};
+    scenes::writeBytesAtomically(folder / kPlantStamp, stamp.dump(1) + "\n");
+}
+
+void checkPlantFolder(const std::filesystem::path& folder, std::size_t target, std::size_t triangles,
+                      const std::function<std::size_t()>& generatedTriangles) {
+    const std::filesystem::path file = folder / kPlantStamp;
+    const std::string where = "bench --scale: " + folder.string() + ": ";
+    const std::string fix = "; remove the folder to generate the plant again, or give another --data";
+    std::size_t stampedTarget = target, expected = 0;
+    if (std::filesystem::exists(file)) {
+        try {
+            const std::string text = config::readTextFile(file);
+            config::checkJsonDepth(text, file.string());
+            const nlohmann::json stamp = nlohmann::json::parse(text);
+            stampedTarget = stamp.at("target").get<std::size_t>();
+            expected = stamp.at("triangles").get<std::size_t>();
+        } catch (const std::exception& e) {
+            throw Error(where + "expected a readable " + kPlantStamp + ", got " + e.what() + fix);
+        }
+    } else {
+        expected = generatedTriangles();
+    }
+    if (stampedTarget != target)
+        throw Error(where + "expected the plant generated for " + std::to_string(target) + " triangles, got one for " +
+                    std::to_string(stampedTarget) + " (" + kPlantStamp + ")" + fix);
+    if (triangles != expected)
+        throw Error(where + "expected the plant generated for " + std::to_string(target) + " triangles (" +
+                    std::to_string(expected) + " drawn), got a model of " + std::to_string(triangles) +
+                    " drawn triangles" + fix);
+    if (!std::filesystem::exists(file)) writePlantStamp(folder, target, triangles);
+}
 
 std::vector<std::size_t> parseScaleList(const std::string& text) {
     std::vector<std::size_t> out;

@@ -341,6 +341,7 @@ TEST(BenchSceneCli, ScaleRunHasFourModesPerSize) {
     EXPECT_THAT(r.out, HasSubstr("textures (those the stretch requests) at most 16 texels"));
     EXPECT_THAT(r.out, HasSubstr("texels: 0 rendered in"));  // the second size: all from the cache
     EXPECT_TRUE(fs::exists(root / "data" / "plant-20000" / "scene.json"));
+    EXPECT_TRUE(fs::exists(root / "data" / "plant-20000" / "cavewall-plant.json"));  // the plant's stamp
     for (const char* file : {"scale.md", "scale_ms.png", "scale_mb.png", "scale_load.png"})
         EXPECT_TRUE(fs::exists(out / file)) << file;
     const test::CsvTable csv = test::readCsv(out / "scale.csv");
@@ -440,6 +441,23 @@ TEST(BenchSceneCli, ScaleRunDrawsDepthWallsBesideFlatOnes) {
     ASSERT_NE(at, std::string::npos) << r.out;
     const double printed = std::strtod(r.out.c_str() + at + line.size(), nullptr);
     EXPECT_NEAR(printed, csv[4].number("frame_ms_p50") / csv[3].number("frame_ms_p50"), 0.002);
+}
+
+// A --data folder whose plant-N holds another model (here a house) is refused before it is
+// benchmarked as the plant for N, and the folder is left as it was.
+TEST(BenchSceneCli, ScaleRefusesAnotherModelInAPlantFolder) {
+    const test::TempFolder root("bench_cli_scale_other");
+    const fs::path folder = root / "data" / "plant-1000";
+    const CliResult g = runCavewall({"generate", "house", "--triangles", "2000", "--out", folder.string()});
+    ASSERT_EQ(g.exitCode, 0) << g.err;
+    const CliResult r = runCavewall({"bench", "--scale", "1k", "--resolution", "32", "--frames", "4", "--data",
+                                     (root / "data").string(), "--out", (root / "out").string()});
+    EXPECT_EQ(r.exitCode, 1) << r.out;
+    EXPECT_THAT(r.err,
+                HasSubstr("bench --scale: " + folder.string() + ": expected the plant generated for 1000 triangles ("));
+    EXPECT_THAT(r.err, HasSubstr(" drawn triangles; remove the folder to generate the plant again, or give another "
+                                 "--data"));
+    EXPECT_FALSE(fs::exists(folder / "cavewall-plant.json"));
 }
 
 TEST(BenchSceneCli, BadInputIsAClearError) {

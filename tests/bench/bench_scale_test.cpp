@@ -150,6 +150,47 @@ TEST(BenchScale, SizeListTakesSuffixesAndRejectsBadEntries) {
     }
 }
 
+// A reused plant folder holds the plant asked for: its stamp names the target and the drawn
+// triangles; a folder from before stamps is checked against the plant made again, then stamped.
+TEST(BenchScale, APlantFolderHoldingAnotherModelIsRefused) {
+    const test::TempFolder root("bench_scale_plant");
+    const auto never = []() -> std::size_t {
+        ADD_FAILURE() << "a stamped folder needs no plant made again";
+        return 0;
+    };
+    writePlantStamp(root / "stamped", 1000, 52'000);
+    EXPECT_NO_THROW(checkPlantFolder(root / "stamped", 1000, 52'000, never));
+    // Without a stamp, a model with the plant's triangles passes and is stamped.
+    std::filesystem::create_directories(root / "old");
+    EXPECT_NO_THROW(checkPlantFolder(root / "old", 1000, 52'000, [] { return std::size_t{52'000}; }));
+    EXPECT_TRUE(std::filesystem::exists(root / "old" / kPlantStamp));
+    EXPECT_NO_THROW(checkPlantFolder(root / "old", 1000, 52'000, never));
+    std::filesystem::create_directories(root / "other");
+    test::writeFile(root / "broken" / kPlantStamp, "{\"target\": \"many\"}");
+    const std::string fix = "; remove the folder to generate the plant again, or give another --data";
+    const struct {
+        const char* name;
+        std::filesystem::path folder;
+        std::size_t target, triangles;
+        std::string message;
+    } cases[] = {
+        {"another model, stamped", root / "stamped", 1000, 7'000,
+         "expected the plant generated for 1000 triangles (52000 drawn), got a model of 7000 drawn triangles" + fix},
+        {"another target's plant", root / "stamped", 2000, 52'000,
+         "expected the plant generated for 2000 triangles, got one for 1000 (cavewall-plant.json)" + fix},
+        {"another model, no stamp", root / "other", 1000, 7'000,
+         "expected the plant generated for 1000 triangles (52000 drawn), got a model of 7000 drawn triangles" + fix},
+        {"a broken stamp", root / "broken", 1000, 52'000, "expected a readable cavewall-plant.json, got "},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.name);
+        EXPECT_THAT(
+            [&] { checkPlantFolder(c.folder, c.target, c.triangles, [] { return std::size_t{52'000}; }); },
+            ::testing::ThrowsMessage<Error>(HasSubstr("bench --scale: " + c.folder.string() + ": " + c.message)));
+    }
+    EXPECT_FALSE(std::filesystem::exists(root / "other" / kPlantStamp));  // a refused folder is not stamped
+}
+
 TEST(BenchScale, PathPrefixCutsThePolylineAtTheLength) {
     const std::vector<glm::dvec3> path{{0, 0, 0}, {10, 0, 0}, {10, 0, 10}};
     // 15 m: all of the first leg and half of the second.
