@@ -52,7 +52,7 @@ void checkNotAnInput(const std::filesystem::path& output, std::string_view flag,
     for (const std::filesystem::path& input : inputs) {
         std::error_code ec;
         if (!std::filesystem::equivalent(output, input, ec) || ec) continue;
-        throw Error(std::string(flag) + " " + output.string() +
+        throw Error((flag.empty() ? "" : std::string(flag) + " ") + output.string() +
                     ": expected a file apart from the command's inputs, got the input " + input.string());
     }
 }
