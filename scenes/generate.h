@@ -38,6 +38,8 @@ struct GeneratedScene {
 };
 
 GeneratedScene generatePlant(const GenerateOptions& options);
+// The largest triangle target the plant is made for: 512 bays of 10 m (8 per 2 M triangles).
+inline constexpr std::size_t kPlantMaxTriangles = 128'000'000;
 GeneratedScene generateHouse(const GenerateOptions& options);
 
 inline constexpr std::size_t kBoxHallDefaultTriangles = 1'000'000;

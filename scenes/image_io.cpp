@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <string>
 #include <system_error>
 #include <unistd.h>
@@ -19,8 +20,13 @@ void writeFile(const std::filesystem::path& file, const std::filesystem::path& r
     auto out = OIIO::ImageOutput::create(real.string());
     if (!out) throw Error(real.string() + ": cannot write this image format (" + OIIO::geterror() + ")");
     const OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
-    if (!out->open(file.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.rgba.data()) || !out->close())
-        throw Error(real.string() + ": cannot write image (" + out->geterror() + ")");
+    errno = 0;
+    if (!out->open(file.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.rgba.data()) ||
+        !out->close()) {
+        const int error = errno;
+        throw Error(real.string() + ": cannot write image" + diskFullText(file, image.rgba.size(), error) + " (" +
+                    out->geterror() + ")");
+    }
 }
 
 // Expands `channels` per pixel (1 grey, 2 grey+alpha, 3 RGB, >= 4 RGBA...) to RGBA.
@@ -55,7 +61,9 @@ void writeImage(const std::filesystem::path& file, const Image& image) {
         try {
             back = readImage(tmp);
         } catch (const Error& e) {
-            throw Error(file.string() + ": the written image does not read back (" + e.what() + "; is the disk full?)");
+            const std::string full = diskFullText(tmp, image.rgba.size(), 0);
+            throw Error(file.string() + ": the written image does not read back" + full + " (" + e.what() +
+                        (full.empty() ? "; is the disk full?)" : ")"));
         }
         // Sizes only: the reader associates alpha, so translucent pixels read back changed.
         if (back.width != image.width || back.height != image.height)
@@ -123,13 +131,14 @@ std::filesystem::path temporarySibling(const std::filesystem::path& file) {
 
 void writeAtomically(const std::filesystem::path& file,
                      const std::function<void(const std::filesystem::path& temporary)>& write) {
+    checkWriteTarget(file);
     std::error_code ec;
     if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
     if (ec) throw Error(file.parent_path().string() + ": cannot create folder (" + ec.message() + ")");
     const std::filesystem::path tmp = temporarySibling(file);
     try {
         write(tmp);
-        syncToDisk(tmp);  // a full disk may only show when the data reaches it
+        syncToDisk(tmp, file);  // a full disk may only show when the data reaches it
     } catch (...) {
         std::filesystem::remove(tmp, ec);
         throw;

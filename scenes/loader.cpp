@@ -120,4 +120,12 @@ Scene loadSceneFile(const std::filesystem::path& path, SceneDescription* descrip
     return scene;
 }
 
+std::vector<std::filesystem::path> sceneInputFiles(const std::filesystem::path& path,
+                                                   const SceneDescription& description) {
+    std::error_code ec;
+    std::vector<std::filesystem::path> files{std::filesystem::is_directory(path, ec) ? path / "scene.json" : path};
+    for (const ModelFile& m : description.models) files.push_back(description.folder / m.file);
+    return files;
+}
+
 }  // namespace cavewall::scenes

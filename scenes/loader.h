@@ -40,4 +40,10 @@ Scene loadScene(const SceneDescription& description);
 // (then the description has no cells or walls). `description` receives the description used.
 Scene loadSceneFile(const std::filesystem::path& path, SceneDescription* description = nullptr);
 
+// The files a scene loaded by loadSceneFile(`path`) was read from, for commands that must not
+// write over their inputs: the scene.json (`path`, or the one in the folder `path`) and every
+// model file of `description` (the description loadSceneFile gave).
+std::vector<std::filesystem::path> sceneInputFiles(const std::filesystem::path& path,
+                                                   const SceneDescription& description);
+
 }  // namespace cavewall::scenes

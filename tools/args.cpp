@@ -75,6 +75,23 @@ std::string Args::require(std::string_view flag) const {
     return *v;
 }
 
+std::optional<std::filesystem::path> Args::path(std::string_view flag) const {
+    const std::optional<std::string> v = get(flag);
+    if (v && v->empty()) throw Error("--" + std::string(flag) + ": expected a path, got an empty word");
+    return v ? std::optional<std::filesystem::path>(*v) : std::nullopt;
+}
+
+void Args::expectAlone(std::string_view flag, std::string_view command) const {
+    if (!has(flag)) return;
+    std::string other;
+    for (const auto& [name, _] : _flags)
+        if (name != flag) other += (other.empty() ? "--" : ", --") + name;
+    for (const std::string& word : _positional) other += (other.empty() ? "'" : ", '") + word + "'";
+    if (!other.empty())
+        throw Error(std::string(command) + ": --" + std::string(flag) +
+                    " runs alone (expected no other flags or words, got " + other + ")");
+}
+
 std::string Args::getOr(std::string_view flag, std::string fallback) const {
     auto v = get(flag);
     return v ? *v : fallback;

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <filesystem>
 #include <initializer_list>
 #include <map>
 #include <optional>
@@ -38,6 +39,12 @@ public:
     std::optional<std::string> get(std::string_view flag) const;
     std::string require(std::string_view flag) const;
     std::string getOr(std::string_view flag, std::string fallback) const;
+    // A path; an empty word is an error ("--cache: expected a path, got an empty word"), never
+    // a silent fallback to a default folder.
+    std::optional<std::filesystem::path> path(std::string_view flag) const;
+    // For a flag that is a command of its own (`bench --stability`): throws "<command>: --flag
+    // runs alone (expected no other flags or words, got --x)" when anything else is given.
+    void expectAlone(std::string_view flag, std::string_view command) const;
     double number(std::string_view flag, double fallback, double lo, double hi) const;
     long integer(std::string_view flag, long fallback, long lo, long hi) const;
     // The value whose word in `names` the flag gives, or `fallback` when the flag is absent.

@@ -127,7 +127,7 @@ int runBake(const std::vector<std::string>& words) {
     request.scene = args.positional(0, "SCENE");
     if (args.positional().size() > 1)
         throw Error("bake: expected one SCENE, got " + std::to_string(args.positional().size()) + " words");
-    if (auto cache = args.get("cache")) request.cache = *cache;
+    if (auto cache = args.path("cache")) request.cache = *cache;
 
     ProgressPrinter printer(::isatty(STDERR_FILENO) == 1);
     request.progress = [&printer](const gl::BakeProgress& p) { printer(p); };

@@ -32,7 +32,7 @@ const char* const kBenchUsage =
     "                      [--triangle-budget N|near] [--lod-max PX] [--min-zone M] [--walls flat|depth|flat,depth]\n"
     "                      [--display D] [--bake-resolution N] [--geometry-budget MB] [--lod PX] [--compare-every K]\n"
     "                      [--out DIR]\n"
-    "       cavewall bench --stability\n"
+    "       cavewall bench --stability (no other flags)\n"
     "\n"
     "SCENE    error against run time in one run (a scene.json, its folder, or glTF/GLB with\n"
     "         virtual walls). One eye path (the guided navigator along the scene's walkPath,\n"
@@ -104,8 +104,10 @@ const char* const kBenchUsage =
     "         128 texels. The resolution is printed with every figure.\n"
     "\n"
     "--scale LIST  frame time, resident geometry and time to the first frame against the model's\n"
-    "         size: per entry (2M, 500k, ...) the generated plant (written once into\n"
-    "         --data DIR/plant-N, default bench-scale-data, then reused) is walked along the same\n"
+    "         size: per entry (2M, 500k or 8000000: decimal, k or M, at most 128M, the largest\n"
+    "         plant the generator makes) the generated plant (written once into --data\n"
+    "         DIR/plant-N, default bench-scale-data, with a stamp, then reused; a folder holding\n"
+    "         another model is refused) is walked along the same\n"
     "         first --scale-metres (default 40) of its walk path in --frames frames (default 60)\n"
     "         by full geometry (frustum-culled), the near-geometry limit and virtual walls at\n"
     "         alpha 10 with levels of detail (--lod, default 1 px) and geometry paging\n"
@@ -265,8 +267,8 @@ int runSceneBench(const Args& args) {
         throw Error("bench: --warp-alpha " + config::formatNumber(o.transitionAlphaDeg) +
                     " is not one of the planned alphas (" + list + "); add it to --alphas");
     }
-    if (auto cache = args.get("cache")) o.cache = *cache;
-    const std::filesystem::path out = args.getOr("out", "bench-out");
+    if (auto cache = args.path("cache")) o.cache = *cache;
+    const std::filesystem::path out = args.path("out").value_or("bench-out");
     if (auto list = args.get("compare-scene"))
         for (const std::string& scene : sceneList(*list)) o.compareScenes.push_back({scene, compareTag(scene)});
     if (args.has("on-demand")) o.onDemandCache = out / "on-demand-cache";
@@ -283,7 +285,7 @@ int runSceneBench(const Args& args) {
 int runScaleBench(const Args& args) {
     gl::ScaleOptions o;
     o.sizes = bench::parseScaleList(*args.get("scale"));
-    o.data = args.getOr("data", "bench-scale-data");
+    o.data = args.path("data").value_or("bench-scale-data");
     o.display = config::loadDisplayConfig(args.getOr("display", "cave4"));
     if (args.has("resolution"))
         o.display = gl::withResolution(o.display, static_cast<int>(args.integer("resolution", 1024, 16, 4096)));
@@ -307,7 +309,7 @@ int runScaleBench(const Args& args) {
     } else {
         throw Error("--walls: expected flat, depth or flat,depth (both kinds in one run), got '" + kinds + "'");
     }
-    const std::filesystem::path out = args.getOr("out", "bench-scale-out");
+    const std::filesystem::path out = args.path("out").value_or("bench-scale-out");
     o.afterSize = [&](const bench::ScaleReport& soFar) { bench::writeScaleReport(out, soFar); };
     const bench::ScaleReport report = gl::runScaleBench(o);
     bench::writeScaleReport(out, report);
@@ -355,6 +357,8 @@ int runBench(const std::vector<std::string>& words) {
                       "scale-metres",
                       "geometry-budget",
                       "texture-format"});
+    // --stability is a bench of its own: with --scale or a SCENE it would silently ignore them.
+    args.expectAlone("stability", "bench");
     if (args.has("stability")) return runStability();
 #ifdef CAVEWALL_HAVE_GL
     if (args.has("scale")) return runScaleBench(args);

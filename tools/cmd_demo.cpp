@@ -1,5 +1,6 @@
 #include "app/gl/run_session.h"
 #include "config/display_config.h"
+#include "scenes/file_write.h"
 #include "scenes/generate.h"
 #include "display/timing.h"
 #include "tools/args.h"
@@ -8,7 +9,6 @@
 
 #include <cstdlib>
 #include <optional>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -98,7 +98,7 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
     const bench::ImageError& c = d.controlError.error;
     auto ifLod = [&](auto value) { return d.lod ? std::optional(value) : std::nullopt; };
     auto lodError = [&](auto field) { return d.lodError ? std::optional((*d.lodError).error.*field) : std::nullopt; };
-    std::ofstream r(out / "report.md");
+    std::ostringstream r;
     r << "# cavewall demo\n\nThe generated plant on cave4 (" << resolutionText(o.display)
       << "), guided along its walk path at " << o.guidePace << " m/s with `" << o.tracker << "`, " << o.frames
       << " frames at 1/60 s, rendered by " << d.walls.renderer << ". Image error: every " << o.saveEvery
@@ -136,7 +136,7 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
     for (std::size_t i = 0; i < d.walls.foldouts.size() && i < d.geometry.foldouts.size(); ++i)
         r << "![walls](" << std::filesystem::relative(d.walls.foldouts[i], out).string() << ") ![geometry]("
           << std::filesystem::relative(d.geometry.foldouts[i], out).string() << ")\n\n";
-    if (!r) throw Error((out / "report.md").string() + ": cannot write the report");
+    scenes::writeBytesAtomically(out / "report.md", r.str());  // checked to its end, like every writer
 }
 
 }  // namespace

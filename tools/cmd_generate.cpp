@@ -64,7 +64,8 @@ int runGenerate(const std::vector<std::string>& words) {
     options.seed = static_cast<std::uint64_t>(args.integer("seed", 0, 0, 2147483647L));
     // The plant grows by 10 m bays (8 per 2 M triangles, up to 512 bays: about 128 M drawn);
     // larger targets could not be met, so they are refused. The house grows by detail only.
-    options.triangles = static_cast<std::size_t>(args.integer("triangles", 0, 0, 128'000'000L));
+    options.triangles =
+        static_cast<std::size_t>(args.integer("triangles", 0, 0, static_cast<long>(scenes::kPlantMaxTriangles)));
     if (kind == "boxes") return writeBoxHall(options, args.require("out"));
     scenes::GeneratedScene g = kind == "plant" ? scenes::generatePlant(options) : scenes::generateHouse(options);
     if (g.scene.triangleCount() < options.triangles)

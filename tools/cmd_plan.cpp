@@ -12,7 +12,9 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
+#include <utility>
 
 namespace cavewall::tools {
 
@@ -59,21 +61,27 @@ int runPlan(const std::vector<std::string>& words) {
     const std::string& path = args.positional(0, "SCENE");
     if (args.positional().size() > 1)
         throw Error("plan: expected one SCENE, got " + std::to_string(args.positional().size()) + " words");
+    const std::optional<std::filesystem::path> json = args.path("json"), png = args.path("png");
+    for (const auto& [file, flag] : {std::pair{json, "--json"}, std::pair{png, "--png"}})
+        if (file) scenes::checkWriteTarget(*file, flag);  // before the work, not after it
     scenes::SceneDescription description;
     const scenes::Scene scene = scenes::loadSceneFile(path, &description);
+    const std::vector<std::filesystem::path> inputs = scenes::sceneInputFiles(path, description);
+    for (const auto& [file, flag] : {std::pair{json, "--json"}, std::pair{png, "--png"}})
+        if (file) scenes::checkNotAnInput(*file, flag, inputs);
     const walls::VisibilityTable table = walls::computeVisibility(description);
     const walls::Plan plan = walls::planZones(description, options, walls::wallDepthSpans(scene, description, table));
     for (const std::string& w : scene.warnings) std::cerr << "cavewall: warning: " << w << "\n";
     walls::printPlanSummary(std::cout, plan, description);
-    if (auto json = args.get("json")) {
+    if (json) {
         std::ostringstream text;
         text << std::setprecision(17) << walls::planToJson(plan).dump(1) << "\n";
         writeText(*json, text.str());
-        std::cout << "wrote " << *json << "\n";
+        std::cout << "wrote " << json->string() << "\n";
     }
-    if (auto png = args.get("png")) {
+    if (png) {
         scenes::writeImage(*png, walls::planDiagram(plan, description, &scene));
-        std::cout << "wrote " << *png << "\n";
+        std::cout << "wrote " << png->string() << "\n";
     }
     return 0;
 }

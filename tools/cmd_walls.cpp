@@ -1,3 +1,4 @@
+#include "config/json_reader.h"
 #include "scenes/file_write.h"
 #include "scenes/image_io.h"
 #include "scenes/loader.h"
@@ -7,11 +8,17 @@
 #include "walls/auto_walls.h"
 #include "walls/plan_diagram.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 namespace cavewall::tools {
+
+namespace {
+constexpr double kMinSplitMetres = 0.1;  // the smallest chunk --split cuts
+}  // namespace
 
 const char* const kWallsUsage =
     "usage: cavewall walls MODEL --out SCENE_JSON [--texture-budget MB] [--alpha DEG] [--max-res N]\n"
@@ -34,9 +41,9 @@ const char* const kWallsUsage =
     "A model exported as a few huge meshes (a game level, a merged CAD export) has nothing a\n"
     "cell could leave out: when content objects wider than twice --min-cell (with at least 1024\n"
     "triangles each) hold a quarter of the content triangles or more, content objects are first\n"
-    "cut into chunks of --split metres (default half of --min-cell; 0: no cutting), and the\n"
-    "proposal's models get \"splitMetres\" so that `run` and `bake` cut them the same way\n"
-    "(scenes/mesh_split.h). A model that already has \"splitMetres\" keeps it.\n"
+    "cut into chunks of --split metres (default half of --min-cell and at least 0.1; 0: no\n"
+    "cutting), and the proposal's models get \"splitMetres\" so that `run` and `bake` cut them\n"
+    "the same way (scenes/mesh_split.h). A model that already has \"splitMetres\" keeps it.\n"
     "A building with real walls (thin vertical structure pieces) gets one more candidate, the\n"
     "rooms: cells cut along the lines of real walls, each doorway a portal (as high as its lintel)\n"
     "and every piece a real wall; --rooms chooses it whatever the cost model says (the model\n"
@@ -69,13 +76,21 @@ int runWalls(const std::vector<std::string>& words) {
     if (args.positional().size() > 1)
         throw Error("walls: expected one MODEL, got " + std::to_string(args.positional().size()) + " words");
     const std::filesystem::path out = args.require("out");
+    const std::optional<std::filesystem::path> png = args.path("png");
+    scenes::checkWriteTarget(out, "--out");  // before the work, not after it
+    if (png) scenes::checkWriteTarget(*png, "--png");
 
-    const double split = args.number("split", options.minCellSize / 2.0, 0.0, 1e6);
-    if (split > 0.0 && split < 0.1)
-        throw Error("--split: expected 0 (no cutting) or at least 0.1 metres, got " + std::to_string(split));
+    // The default, half of --min-cell, is held to the smallest chunk (a --min-cell of 0.1 m
+    // cuts into 0.1 m chunks): only a --split the user gives can be refused for its size.
+    const double split = args.number("split", std::max(kMinSplitMetres, options.minCellSize / 2.0), 0.0, 1e6);
+    if (split > 0.0 && split < kMinSplitMetres)
+        throw Error("--split: expected 0 (no cutting) or at least 0.1 metres, got " + config::formatNumber(split));
 
     scenes::SceneDescription base;
     scenes::Scene scene = scenes::loadSceneFile(path, &base);
+    const std::vector<std::filesystem::path> inputs = scenes::sceneInputFiles(path, base);
+    scenes::checkNotAnInput(out, "--out", inputs);
+    if (png) scenes::checkNotAnInput(*png, "--png", inputs);
     if (split > 0.0) {
         // When content objects wider than two cells hold a quarter of the content triangles or
         // more, cells cannot leave much out: the models get cut and the scene is loaded again.
@@ -151,10 +166,10 @@ int runWalls(const std::vector<std::string>& words) {
     for (const scenes::VirtualWall& w : result.description.walls) portals += w.kind == scenes::WallKind::Portal;
     std::cout << "wrote " << out.string() << " (" << result.description.cells.size() << " cells, "
               << result.description.walls.size() - portals << " virtual walls, " << portals << " portals)\n";
-    if (auto png = args.get("png")) {
+    if (png) {
         const walls::Plan plan = walls::planZones(result.description, options.plan);
         scenes::writeImage(*png, walls::planDiagram(plan, result.description, &scene, 200));
-        std::cout << "wrote " << *png << "\n";
+        std::cout << "wrote " << png->string() << "\n";
     }
     return 0;
 }

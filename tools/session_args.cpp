@@ -75,7 +75,7 @@ void parseDrawing(const Args& args, app::RunOptions& o) {
     o.plan.alphaDeg = args.number("alpha", o.plan.alphaDeg, 1e-3, 90.0);
     o.plan.minZoneSize = args.number("min-zone", o.plan.minZoneSize, 1e-3, 1e4);
     o.plan.pixelsPerDegree = args.number("ppd", o.plan.pixelsPerDegree, 0.01, 1000.0);
-    if (auto c = args.get("cache")) o.cache = *c;
+    if (auto c = args.path("cache")) o.cache = *c;
     o.textureBudgetMB = args.number("budget", o.textureBudgetMB, 1e-3, 1e6);
     o.geometryBudgetMB = args.number("geometry-budget", 0.0, 0.0, 1e6);
     o.bakeResolution = static_cast<int>(args.integer("max-res", o.bakeResolution, 16, 16384));

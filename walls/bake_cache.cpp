@@ -41,10 +41,14 @@ CacheIndex indexCache(const std::filesystem::path& cache, const std::filesystem:
 
 namespace {
 
-// Hard link (else copy) `source` to `target` through a temporary name; false on failure.
+// Hard link (else copy) `source` to `target` through a temporary name; false on failure (a
+// target that is not a regular file is one).
 bool linkFile(const std::filesystem::path& source, const std::filesystem::path& folder, const std::string& name) {
     std::error_code ec;
     const std::filesystem::path target = folder / name;
+    // The rule of every writer (scenes::checkWriteTarget): only a regular file is replaced.
+    const std::filesystem::file_type type = std::filesystem::status(target, ec).type();
+    if (type != std::filesystem::file_type::not_found && type != std::filesystem::file_type::regular) return false;
     const std::filesystem::path tmp = folder / ("." + name + ".link-" + std::to_string(::getpid()));
     std::filesystem::remove(tmp, ec);
     std::filesystem::create_hard_link(source, tmp, ec);

@@ -1,11 +1,13 @@
 #include "walls/depth_file.h"
 
 #include "config/error.h"
+#include "scenes/file_write.h"
 #include "scenes/image_io.h"
 
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 
 namespace cavewall::walls {
@@ -55,8 +57,14 @@ void writeDepthFile(const std::filesystem::path& file, const DepthImage& image) 
         spec.attribute("DateTime", "2000:01:01 00:00:00");  // same depths, same bytes
         std::vector<std::uint16_t> codes(image.depth.size());
         std::transform(image.depth.begin(), image.depth.end(), codes.begin(), encodeDepth);
-        if (!out->open(tmp.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT16, codes.data()) || !out->close())
-            throw Error(file.string() + ": cannot write the depth file (" + out->geterror() + ")");
+        errno = 0;
+        if (!out->open(tmp.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT16, codes.data()) ||
+            !out->close()) {
+            const int error = errno;  // libtiff leaves the system's reason here
+            throw Error(file.string() + ": cannot write the depth file" +
+                        scenes::diskFullText(tmp, codes.size() * sizeof(std::uint16_t), error) + " (" +
+                        out->geterror() + ")");
+        }
     });
 }
 

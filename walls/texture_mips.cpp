@@ -205,12 +205,13 @@ bool writeTiles(OIIO::ImageOutput& out, const scenes::Image& l, int tile) {
 }
 
 // The writer's message plus the system's reason, which libtiff leaves in errno ("TIFFWriteTile
-// failed" alone does not say that the disk is full).
-std::string failure(OIIO::ImageOutput& out) {
+// failed" alone does not say that the disk is full), said first when the disk is full:
+// ": the disk is full (N bytes needed, M free) (TIFFWriteTile failed: ...)".
+std::string failure(OIIO::ImageOutput& out, const std::filesystem::path& tmp, std::uintmax_t bytes) {
     const int error = errno;
     std::string why = out.geterror();
     if (error) why += (why.empty() ? "" : ": ") + scenes::writeErrorText(error);
-    return why;
+    return scenes::diskFullText(tmp, bytes, error) + " (" + why + ")";
 }
 
 void writeLevels(const std::filesystem::path& tmp, const std::filesystem::path& file,
@@ -223,6 +224,8 @@ void writeLevels(const std::filesystem::path& tmp, const std::filesystem::path& 
     if (!out->supports("tiles") || !(nativeMips || out->supports("appendsubimage")))
         throw Error(file.string() + ": expected a format with tiles and MIP maps (.tx, .tif), got '" +
                     std::string(out->format_name()) + "'");
+    std::uintmax_t bytes = 0;  // uncompressed: what the file needs at most, about
+    for (const scenes::Image& l : levels) bytes += l.rgba.size();
     for (std::size_t i = 0; i < levels.size(); ++i) {
         const scenes::Image& l = levels[i];
         OIIO::ImageSpec spec(l.width, l.height, 4, OIIO::TypeDesc::UINT8);
@@ -241,10 +244,10 @@ void writeLevels(const std::filesystem::path& tmp, const std::filesystem::path& 
         const auto mode = i == 0 ? OIIO::ImageOutput::Create : append;
         errno = 0;
         if (!out->open(tmp.string(), spec, mode) || !writeTiles(*out, l, options.tileSize))
-            throw Error(file.string() + ": cannot write MIP level " + std::to_string(i) + " (" + failure(*out) + ")");
+            throw Error(file.string() + ": cannot write MIP level " + std::to_string(i) + failure(*out, tmp, bytes));
     }
     errno = 0;
-    if (!out->close()) throw Error(file.string() + ": cannot finish the file (" + failure(*out) + ")");
+    if (!out->close()) throw Error(file.string() + ": cannot finish the file" + failure(*out, tmp, bytes));
 }
 
 }  // namespace

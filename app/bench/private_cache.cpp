@@ -30,18 +30,19 @@ bool within(const fs::path& inner, const fs::path& outer) {
 void checkPrivateCache(const fs::path& folder, const fs::path& sharedCache) {
     const fs::path mine = resolved(folder);
     const fs::path shared = resolved(sharedCache);
+    // The folder comes from --out (DIR/on-demand-cache), the shared cache from --cache (or its
+    // default): the messages name both flags, so that the user knows which one to change.
+    const std::string where = "on-demand cache " + folder.string() + " (--out DIR/on-demand-cache)";
     if (within(mine, shared) || within(shared, mine))
-        throw Error("on-demand cache " + folder.string() + ": expected a folder apart from the shared bake cache " +
-                    sharedCache.string() + ", got " +
-                    (within(mine, shared) ? "the cache or a folder inside it" : "a folder that holds it"));
+        throw Error(where + ": expected a folder apart from the shared bake cache --cache " + sharedCache.string() +
+                    " (default $CAVEWALL_CACHE or ~/.cache/cavewall), got " +
+                    (within(mine, shared) ? "the cache or a folder inside it" : "a folder that holds it") +
+                    "; give another --out or --cache");
     if (fs::exists(mine)) {
-        if (!fs::is_directory(mine))
-            throw Error("on-demand cache " + folder.string() + ": expected a folder, got a file");
+        if (!fs::is_directory(mine)) throw Error(where + ": expected a folder, got a file; give another --out");
         if (!fs::is_empty(mine) && !fs::exists(mine / kPrivateCacheMarker))
-            throw Error("on-demand cache " + folder.string() +
-                        ": expected an empty folder or an earlier on-demand "
-                        "cache (with " +
-                        kPrivateCacheMarker + "), got a folder with other files; not deleting it");
+            throw Error(where + ": expected an empty folder or an earlier on-demand cache (with " +
+                        kPrivateCacheMarker + "), got a folder with other files; not deleting it (give another --out)");
     }
 }
 

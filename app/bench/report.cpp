@@ -1,13 +1,13 @@
 #include "app/bench/report.h"
 
 #include "config/error.h"
+#include "scenes/file_write.h"
 #include "scenes/image_io.h"
 #include "app/bench/plot.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 namespace cavewall::bench {
@@ -22,11 +22,7 @@ std::string num(double v, int digits = 6) {
     return buffer;
 }
 
-void writeText(const std::filesystem::path& file, const std::string& text) {
-    std::ofstream out(file, std::ios::binary);
-    out << text;
-    if (!out) throw Error(file.string() + ": could not write the file");
-}
+void writeText(const std::filesystem::path& file, const std::string& text) { scenes::writeBytesAtomically(file, text); }
 
 std::string screensCsv(const BenchReport& report) {
     std::string out =

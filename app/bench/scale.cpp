@@ -1,17 +1,21 @@
 #include "app/bench/scale.h"
 
 #include "config/error.h"
+#include "config/json_depth.h"
+#include "config/json_reader.h"
 #include "app/bench/plot.h"
 #include "app/bench/report.h"
+#include "scenes/file_write.h"
+#include "scenes/generate.h"
 #include "scenes/image_io.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <limits>
 #include <map>
+#include <nlohmann/json.hpp>
 
 namespace cavewall::bench {
 
@@ -41,11 +45,7 @@ bool mayBeLeftOut(ScaleMode mode) {
            mode == ScaleMode::FullLod;
 }
 
-void writeText(const std::filesystem::path& file, const std::string& text) {
-    std::ofstream out(file, std::ios::binary);
-    out << text;
-    if (!out) throw Error(file.string() + ": could not write the file");
-}
+void writeText(const std::filesystem::path& file, const std::string& text) { scenes::writeBytesAtomically(file, text); }
 
 }  // namespace
 
@@ -226,24 +226,78 @@ std::vector<std::filesystem::path> writeScaleReport(const std::filesystem::path&
     return files;
 }
 
+namespace {
+
+// One --scale entry: decimal digits (one '.' at most), then k or M in either case. Hexadecimal,
+// exponents, signs and spaces, which strtod would read, are refused: the help promises none.
+std::size_t scaleEntry(const std::string& entry, std::size_t index) {
+    const std::string where = "bench: --scale: entry " + std::to_string(index) + " '" + entry + "': ";
+    std::string digits = entry;
+    double factor = 1.0;
+    if (!digits.empty() && (digits.back() == 'M' || digits.back() == 'm')) {
+        factor = 1e6;
+        digits.pop_back();
+    } else if (!digits.empty() && (digits.back() == 'k' || digits.back() == 'K')) {
+        factor = 1e3;
+        digits.pop_back();
+    }
+    const bool decimal = digits.find_first_not_of("0123456789.") == std::string::npos &&
+                         std::count(digits.begin(), digits.end(), '.') <= 1 &&
+                         digits.find_first_of("0123456789") != std::string::npos;
+    const double value = decimal ? std::strtod(digits.c_str(), nullptr) * factor : kNaN;
+    if (!(value >= 0.5))  // rounds to at least one triangle
+        throw Error(where +
+                    "expected a triangle count such as 2M, 500k or 8000000 (decimal digits, then k or M; at least 1)");
+    const auto triangles = static_cast<std::size_t>(std::llround(std::min(value, 1e18)));
+    if (triangles > scenes::kPlantMaxTriangles)
+        throw Error(where + "expected at most " + std::to_string(scenes::kPlantMaxTriangles) +
+                    " triangles (128M, the largest plant the generator makes), got " +
+                    (value < 1e18 ? std::to_string(triangles) : std::string("more")));
+    return triangles;
+}
+
+}  // namespace
+
+void writePlantStamp(const std::filesystem::path& folder, std::size_t target, std::size_t triangles) {
+    const nlohmann::json stamp{{"generator", "cavewall bench --scale"}, {"target", target}, {"triangles", triangles}};
+    scenes::writeBytesAtomically(folder / kPlantStamp, stamp.dump(1) + "\n");
+}
+
+void checkPlantFolder(const std::filesystem::path& folder, std::size_t target, std::size_t triangles,
+                      const std::function<std::size_t()>& generatedTriangles) {
+    const std::filesystem::path file = folder / kPlantStamp;
+    const std::string where = "bench --scale: " + folder.string() + ": ";
+    const std::string fix = "; remove the folder to generate the plant again, or give another --data";
+    std::size_t stampedTarget = target, expected = 0;
+    if (std::filesystem::exists(file)) {
+        try {
+            const std::string text = config::readTextFile(file);
+            config::checkJsonDepth(text, file.string());
+            const nlohmann::json stamp = nlohmann::json::parse(text);
+            stampedTarget = stamp.at("target").get<std::size_t>();
+            expected = stamp.at("triangles").get<std::size_t>();
+        } catch (const std::exception& e) {
+            throw Error(where + "expected a readable " + kPlantStamp + ", got " + e.what() + fix);
+        }
+    } else {
+        expected = generatedTriangles();
+    }
+    if (stampedTarget != target)
+        throw Error(where + "expected the plant generated for " + std::to_string(target) + " triangles, got one for " +
+                    std::to_string(stampedTarget) + " (" + kPlantStamp + ")" + fix);
+    if (triangles != expected)
+        throw Error(where + "expected the plant generated for " + std::to_string(target) + " triangles (" +
+                    std::to_string(expected) + " drawn), got a model of " + std::to_string(triangles) +
+                    " drawn triangles" + fix);
+    if (!std::filesystem::exists(file)) writePlantStamp(folder, target, triangles);
+}
+
 std::vector<std::size_t> parseScaleList(const std::string& text) {
     std::vector<std::size_t> out;
     std::size_t start = 0;
     while (start <= text.size()) {
         const std::size_t end = std::min(text.find(',', start), text.size());
-        const std::string entry = text.substr(start, end - start);
-        double factor = 1.0;
-        std::string digits = entry;
-        if (!digits.empty() && (digits.back() == 'M' || digits.back() == 'm'))
-            factor = 1e6, digits.pop_back();
-        else if (!digits.empty() && (digits.back() == 'k' || digits.back() == 'K'))
-            factor = 1e3, digits.pop_back();
-        char* stop = nullptr;
-        const double value = digits.empty() ? kNaN : std::strtod(digits.c_str(), &stop) * factor;
-        if (!std::isfinite(value) || stop != digits.c_str() + digits.size() || value < 1.0 || value >= 2147483648.0)
-            throw Error("bench: --scale: entry " + std::to_string(out.size() + 1) + " '" + entry +
-                        "': expected a triangle count such as 2M, 500k or 8000000 (at least 1, below 2^31)");
-        out.push_back(static_cast<std::size_t>(std::llround(value)));
+        out.push_back(scaleEntry(text.substr(start, end - start), out.size() + 1));
         start = end + 1;
     }
     return out;

@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -81,8 +82,25 @@ std::string scaleMarkdown(const ScaleReport& report);
 // Writes scale.csv, scale.md and the three plots into `folder` (created); returns the files.
 std::vector<std::filesystem::path> writeScaleReport(const std::filesystem::path& folder, const ScaleReport& report);
 
-// "2M,8M,32M" (k and M suffixes, plain integers too): triangle targets, each in [1, 2^31).
-// Throws cavewall::Error naming the entry.
+// The stamp in a generated plant's folder (DIR/plant-N of --data): the --scale entry the plant
+// was generated for and its drawn triangles, so that a folder reused by a later run is known to
+// hold that plant and not another model put there.
+inline constexpr const char* kPlantStamp = "cavewall-plant.json";
+
+// Writes `folder`'s stamp: the plant in it was generated for `target` and draws `triangles`.
+void writePlantStamp(const std::filesystem::path& folder, std::size_t target, std::size_t triangles);
+
+// Checks a reused plant folder before its model is benchmarked as the plant for `target`:
+// `triangles` (the loaded model's drawn triangles) must be what the folder's stamp says, and
+// the stamp must name `target`. A folder without a stamp (written before stamps were) is
+// checked against `generatedTriangles()` (the plant made again in memory) and then stamped.
+// Throws cavewall::Error naming the folder, what was expected and what it holds.
+void checkPlantFolder(const std::filesystem::path& folder, std::size_t target, std::size_t triangles,
+                      const std::function<std::size_t()>& generatedTriangles);
+
+// "2M,8M,32M" (k and M suffixes, plain decimal integers too): triangle targets, each from 1 to
+// scenes::kPlantMaxTriangles (the largest plant the generator makes). Throws cavewall::Error
+// naming the entry.
 std::vector<std::size_t> parseScaleList(const std::string& text);
 
 // The first `metres` of the polyline `points` (all of it when shorter; the last point

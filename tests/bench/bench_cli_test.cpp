@@ -342,6 +342,7 @@ TEST(BenchSceneCli, ScaleRunHasFourModesPerSize) {
     EXPECT_THAT(r.out, HasSubstr("textures (those the stretch requests) at most 16 texels"));
     EXPECT_THAT(r.out, HasSubstr("texels: 0 rendered in"));  // the second size: all from the cache
     EXPECT_TRUE(fs::exists(root / "data" / "plant-20000" / "scene.json"));
+    EXPECT_TRUE(fs::exists(root / "data" / "plant-20000" / "cavewall-plant.json"));  // the plant's stamp
     for (const char* file : {"scale.md", "scale_ms.png", "scale_mb.png", "scale_load.png"})
         EXPECT_TRUE(fs::exists(out / file)) << file;
     const test::CsvTable csv = test::readCsv(out / "scale.csv");
@@ -448,6 +449,23 @@ TEST(BenchSceneCli, ScaleRunDrawsDepthWallsBesideFlatOnes) {
     EXPECT_NEAR(printed, csv[5].number("frame_ms_p50") / csv[4].number("frame_ms_p50"), 0.002);
 }
 
+// A --data folder whose plant-N holds another model (here a house) is refused before it is
+// benchmarked as the plant for N, and the folder is left as it was.
+TEST(BenchSceneCli, ScaleRefusesAnotherModelInAPlantFolder) {
+    const test::TempFolder root("bench_cli_scale_other");
+    const fs::path folder = root / "data" / "plant-1000";
+    const CliResult g = runCavewall({"generate", "house", "--triangles", "2000", "--out", folder.string()});
+    ASSERT_EQ(g.exitCode, 0) << g.err;
+    const CliResult r = runCavewall({"bench", "--scale", "1k", "--resolution", "32", "--frames", "4", "--data",
+                                     (root / "data").string(), "--out", (root / "out").string()});
+    EXPECT_EQ(r.exitCode, 1) << r.out;
+    EXPECT_THAT(r.err,
+                HasSubstr("bench --scale: " + folder.string() + ": expected the plant generated for 1000 triangles ("));
+    EXPECT_THAT(r.err, HasSubstr(" drawn triangles; remove the folder to generate the plant again, or give another "
+                                 "--data"));
+    EXPECT_FALSE(fs::exists(folder / "cavewall-plant.json"));
+}
+
 TEST(BenchSceneCli, BadInputIsAClearError) {
     struct Case {
         std::vector<std::string> args;
@@ -483,6 +501,23 @@ TEST(BenchSceneCli, BadInputIsAClearError) {
         {{"bench", "--scale", "2M", "--walls", "depth,flat"}, "--walls: expected flat, depth or flat,depth"},
         {{"bench", "--scale", "2M", "--min-zone", "0.25"},
          "bench --scale: plan options: minZoneSize: expected more than twice blendWidth (0.4 m), got 0.25 m"},
+        // An empty path is refused, not replaced by the default folder.
+        {{"bench", "x.json", "--cache", ""}, "--cache: expected a path, got an empty word"},
+        {{"bench", "--scale", "2M", "--data", ""}, "--data: expected a path, got an empty word"},
+        // Sizes the generator cannot make are refused up front, naming the limit.
+        {{"bench", "--scale", "129M"},
+         "bench: --scale: entry 1 '129M': expected at most 128000000 triangles (128M, the largest plant the "
+         "generator makes), got 129000000"},
+        {{"bench", "--scale", "1k,1000M"}, "bench: --scale: entry 2 '1000M': expected at most 128000000 triangles"},
+        {{"bench", "--scale", "2147483647"}, "bench: --scale: entry 1 '2147483647': expected at most 128000000"},
+        {{"bench", "--scale", "0x400"},
+         "bench: --scale: entry 1 '0x400': expected a triangle count such as 2M, 500k or 8000000 (decimal digits, "
+         "then k or M; at least 1)"},
+        // --stability is a bench of its own.
+        {{"bench", "--stability", "--scale", "2M"},
+         "bench: --stability runs alone (expected no other flags or words, got --scale)"},
+        {{"bench", "x.json", "--stability"},
+         "bench: --stability runs alone (expected no other flags or words, got 'x.json')"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.message);

@@ -127,10 +127,81 @@ TEST(BenchScale, TheControlSetsEachWallsModeAgainstIt) {
 TEST(BenchScale, SizeListTakesSuffixesAndRejectsBadEntries) {
     EXPECT_EQ(parseScaleList("2M,500k,8000000"), (std::vector<std::size_t>{2'000'000, 500'000, 8'000'000}));
     EXPECT_EQ(parseScaleList("1.5M"), std::vector<std::size_t>{1'500'000});
-    EXPECT_THAT([] { parseScaleList("2M,x"); },
-                ::testing::ThrowsMessage<Error>(HasSubstr("entry 2 'x': expected a triangle count")));
-    EXPECT_THAT([] { parseScaleList("4096M"); }, ::testing::ThrowsMessage<Error>(HasSubstr("below 2^31")));
-    EXPECT_THAT([] { parseScaleList(""); }, ::testing::ThrowsMessage<Error>(HasSubstr("entry 1 ''")));
+    EXPECT_EQ(parseScaleList("128M,1"), (std::vector<std::size_t>{128'000'000, 1}));  // the plant's limits
+    // What strtod would read but the help does not promise ("2M, 500k or 8000000").
+    const std::string form =
+        "expected a triangle count such as 2M, 500k or 8000000 (decimal digits, then k or M; "
+        "at least 1)";
+    // The generator makes plants up to 128 M triangles (512 bays): larger targets would run
+    // for minutes and then not be met.
+    const std::string limit =
+        "expected at most 128000000 triangles (128M, the largest plant the generator makes), got ";
+    const struct {
+        const char* list;
+        std::string message;
+    } cases[] = {
+        {"2M,x", "entry 2 'x': " + form},
+        {"", "entry 1 '': " + form},
+        {"0x400", "entry 1 '0x400': " + form},
+        {"1e6", "entry 1 '1e6': " + form},
+        {"-5k", "entry 1 '-5k': " + form},
+        {" 5k", "entry 1 ' 5k': " + form},
+        {"1..5M", "entry 1 '1..5M': " + form},
+        {"M", "entry 1 'M': " + form},
+        {"0", "entry 1 '0': " + form},
+        {"inf", "entry 1 'inf': " + form},
+        {"129M", "entry 1 '129M': " + limit + "129000000"},
+        {"1k,1000M", "entry 2 '1000M': " + limit + "1000000000"},
+        {"2147483647", "entry 1 '2147483647': " + limit + "2147483647"},
+        {"4096M", "entry 1 '4096M': " + limit + "4096000000"},
+        {"99999999999999999999M", "entry 1 '99999999999999999999M': " + limit + "more"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.list);
+        EXPECT_THAT([&] { parseScaleList(c.list); },
+                    ::testing::ThrowsMessage<Error>(HasSubstr("bench: --scale: " + c.message)));
+    }
+}
+
+// A reused plant folder holds the plant asked for: its stamp names the target and the drawn
+// triangles; a folder from before stamps is checked against the plant made again, then stamped.
+TEST(BenchScale, APlantFolderHoldingAnotherModelIsRefused) {
+    const test::TempFolder root("bench_scale_plant");
+    const auto never = []() -> std::size_t {
+        ADD_FAILURE() << "a stamped folder needs no plant made again";
+        return 0;
+    };
+    writePlantStamp(root / "stamped", 1000, 52'000);
+    EXPECT_NO_THROW(checkPlantFolder(root / "stamped", 1000, 52'000, never));
+    // Without a stamp, a model with the plant's triangles passes and is stamped.
+    std::filesystem::create_directories(root / "old");
+    EXPECT_NO_THROW(checkPlantFolder(root / "old", 1000, 52'000, [] { return std::size_t{52'000}; }));
+    EXPECT_TRUE(std::filesystem::exists(root / "old" / kPlantStamp));
+    EXPECT_NO_THROW(checkPlantFolder(root / "old", 1000, 52'000, never));
+    std::filesystem::create_directories(root / "other");
+    test::writeFile(root / "broken" / kPlantStamp, "{\"target\": \"many\"}");
+    const std::string fix = "; remove the folder to generate the plant again, or give another --data";
+    const struct {
+        const char* name;
+        std::filesystem::path folder;
+        std::size_t target, triangles;
+        std::string message;
+    } cases[] = {
+        {"another model, stamped", root / "stamped", 1000, 7'000,
+         "expected the plant generated for 1000 triangles (52000 drawn), got a model of 7000 drawn triangles" + fix},
+        {"another target's plant", root / "stamped", 2000, 52'000,
+         "expected the plant generated for 2000 triangles, got one for 1000 (cavewall-plant.json)" + fix},
+        {"another model, no stamp", root / "other", 1000, 7'000,
+         "expected the plant generated for 1000 triangles (52000 drawn), got a model of 7000 drawn triangles" + fix},
+        {"a broken stamp", root / "broken", 1000, 52'000, "expected a readable cavewall-plant.json, got "},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.name);
+        EXPECT_THAT(
+            [&] { checkPlantFolder(c.folder, c.target, c.triangles, [] { return std::size_t{52'000}; }); },
+            ::testing::ThrowsMessage<Error>(HasSubstr("bench --scale: " + c.folder.string() + ": " + c.message)));
+    }
+    EXPECT_FALSE(std::filesystem::exists(root / "other" / kPlantStamp));  // a refused folder is not stamped
 }
 
 TEST(BenchScale, PathPrefixCutsThePolylineAtTheLength) {

@@ -47,12 +47,14 @@ TEST(PrivateCache, RefusesTheSharedCacheAndFoldersItDidNotMake) {
         std::string message;
     };
     const Case cases[] = {
-        {shared, "expected a folder apart from the shared bake cache"},
+        {shared, "expected a folder apart from the shared bake cache --cache " + shared.string() +
+                     " (default $CAVEWALL_CACHE or ~/.cache/cavewall), got the cache or a folder inside it; give "
+                     "another --out or --cache"},
         {shared / "sub" / "..", "the cache or a folder inside it"},
         {shared / "private", "the cache or a folder inside it"},
         {root.path(), "a folder that holds it"},
         {root / "user", "got a folder with other files; not deleting it"},
-        {root / "file", "expected a folder, got a file"},
+        {root / "file", "expected a folder, got a file; give another --out"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.folder.string());
@@ -62,7 +64,8 @@ TEST(PrivateCache, RefusesTheSharedCacheAndFoldersItDidNotMake) {
                     makeEmptyPrivateCache(c.folder, shared);
                 } catch (const Error& e) {
                     EXPECT_THAT(e.what(), HasSubstr(c.message));
-                    EXPECT_THAT(e.what(), HasSubstr("on-demand cache " + c.folder.string()));
+                    EXPECT_THAT(e.what(),
+                                HasSubstr("on-demand cache " + c.folder.string() + " (--out DIR/on-demand-cache): "));
                     throw;
                 }
             },

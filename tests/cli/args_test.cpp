@@ -75,5 +75,39 @@ TEST(ArgsSize, ABadSizeNamesTheFlagTheFormAndWhatWasGiven) {
     }
 }
 
+// An empty path is refused, never replaced by a default folder (`--cache ''` once meant the
+// default cache).
+TEST(ArgsPath, AnEmptyPathIsAnErrorNamingTheFlag) {
+    EXPECT_EQ(Args({"--cache", "c"}, {}).path("cache"), std::filesystem::path("c"));
+    EXPECT_EQ(Args({}, {}).path("cache"), std::nullopt);
+    for (const std::vector<std::string>& words : {std::vector<std::string>{"--cache", ""}, {"--cache="}}) {
+        SCOPED_TRACE(words.size());
+        EXPECT_THAT([&] { Args(words, {}).path("cache"); },
+                    ThrowsMessage<Error>(HasSubstr("--cache: expected a path, got an empty word")));
+    }
+}
+
+// A flag that is a command of its own names whatever else was given.
+TEST(ArgsAlone, AFlagThatRunsAloneNamesWhatElseWasGiven) {
+    EXPECT_NO_THROW(Args({"--stability"}, {"stability"}).expectAlone("stability", "bench"));
+    EXPECT_NO_THROW(Args({"--scale", "2M"}, {"stability"}).expectAlone("stability", "bench"));
+    const struct {
+        std::vector<std::string> words;
+        const char* got;
+    } cases[] = {{{"--stability", "--scale", "2M"}, "got --scale)"},
+                 {{"scene.json", "--stability"}, "got 'scene.json')"},
+                 {{"--stability", "--quick", "--frames", "3", "x"}, "got --frames, --quick, 'x')"}};
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.got);
+        EXPECT_THAT(
+            [&] {
+                Args(c.words, {"stability", "quick"}).expectAlone("stability", "bench");
+            },
+            ThrowsMessage<Error>(HasSubstr(std::string("bench: --stability runs alone (expected no other "
+                                                       "flags or words, ") +
+                                           c.got)));
+    }
+}
+
 }  // namespace
 }  // namespace cavewall::tools

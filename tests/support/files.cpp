@@ -1,9 +1,13 @@
 #include "tests/support/files.h"
 
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <sys/mount.h>
+#include <utility>
 
 namespace cavewall::test {
 
@@ -30,6 +34,17 @@ std::filesystem::path testOutputRoot() {
 TempFolder::TempFolder(std::string_view name) : _path(testOutputRoot() / std::string(name)) {
     std::filesystem::remove_all(_path);
     std::filesystem::create_directories(_path);
+}
+
+SmallDisk::SmallDisk(std::filesystem::path folder, std::size_t bytes) : _folder(std::move(folder)) {
+    std::filesystem::create_directories(_folder);
+    const std::string options = "size=" + std::to_string(bytes);
+    _mounted = ::mount("tmpfs", _folder.c_str(), "tmpfs", 0, options.c_str()) == 0;
+    if (!_mounted) _why = "cannot mount a small tmpfs on " + _folder.string() + " (" + std::strerror(errno) + ")";
+}
+
+SmallDisk::~SmallDisk() {
+    if (_mounted) ::umount2(_folder.c_str(), MNT_DETACH);
 }
 
 }  // namespace cavewall::test

@@ -1,6 +1,7 @@
 #pragma once
 // File helpers for tests: whole-file reads and writes and a fresh folder per test.
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -28,6 +29,25 @@ public:
 
 private:
     std::filesystem::path _path;
+};
+
+// A full disk made small on purpose: a tmpfs of `bytes` mounted on `folder` (created) while
+// alive, unmounted by the destructor. Mounting needs root (CAP_SYS_ADMIN); where it is not
+// allowed, mounted() is false and why() says so, and the test skips.
+class SmallDisk {
+public:
+    SmallDisk(std::filesystem::path folder, std::size_t bytes);
+    ~SmallDisk();
+    SmallDisk(const SmallDisk&) = delete;
+    SmallDisk& operator=(const SmallDisk&) = delete;
+    bool mounted() const { return _mounted; }
+    const std::string& why() const { return _why; }
+    const std::filesystem::path& path() const { return _folder; }
+
+private:
+    std::filesystem::path _folder;
+    bool _mounted = false;
+    std::string _why;
 };
 
 }  // namespace cavewall::test

@@ -4,6 +4,7 @@
 // rejected naming the JSON path.
 #include "walls/bake_manifest.h"
 #include "walls/depth_file.h"
+#include "tests/support/files.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -85,6 +86,24 @@ TEST(DepthFile, DepthsRoundTripWithinTheCodesPrecision) {
 }
 
 // Bakes from before the 16-bit codes stored 32-bit floats: still read, bit for bit.
+// A full disk while baking depth (on demand, mid-run) says so, naming the file and the bytes
+// needed, before the image library's own words (which say only "Could not write").
+TEST(DepthFile, AFullDiskSaysSoNamingTheFile) {
+    const test::TempFolder dir("depth_file_full");
+    const test::SmallDisk disk(dir / "disk", 64 * 1024);
+    if (!disk.mounted()) GTEST_SKIP() << disk.why();
+    DepthImage image{256, 256, {}};
+    std::uint32_t state = 1;             // noise: zip cannot shrink 128 KiB of codes to fit 64 KiB
+    for (int i = 0; i < 256 * 256; ++i)  // 0 to 10 m: codes over most of their range
+        image.depth.push_back(float((state = state * 1664525u + 1013904223u) >> 8) / 16777216.0f * 10.0f);
+    // 256 x 256 codes of 2 bytes: 131072 bytes before compression.
+    EXPECT_THAT([&] { writeDepthFile(disk.path() / "t.depth.tif", image); },
+                ::testing::ThrowsMessage<Error>(HasSubstr((disk.path() / "t.depth.tif").string() +
+                                                          ": cannot write the depth file: the disk is full (131072 "
+                                                          "bytes needed, ")));
+    EXPECT_TRUE(std::filesystem::is_empty(disk.path()));  // no temporary left
+}
+
 TEST(DepthFile, FloatDepthFilesAreStillReadBitForBit) {
     const auto dir = scratch("float");
     const std::vector<float> depths{0.25f, kNoSurface, 1.0f / 3.0f, 17.5f, 0.0f, 123.456f};

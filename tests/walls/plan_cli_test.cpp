@@ -10,8 +10,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
-#include <tuple>
 #include <fstream>
+#include <iterator>
+#include <sys/stat.h>
+#include <tuple>
 
 namespace cavewall::test {
 namespace {
@@ -214,6 +216,96 @@ TEST(WallsCli, BadInputSaysWhatIsWrong) {
     EXPECT_NE(badBudget.exitCode, 0);
     EXPECT_THAT(badBudget.err, HasSubstr("--texture-budget"));
     EXPECT_FALSE(std::filesystem::exists(dir / "x.json"));
+}
+
+std::string bytesOf(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// Writing replaces the path, so `walls` and `plan` refuse an output that exists and is not a
+// regular file (a device such as /dev/null or /dev/full would become a regular file, exit 0)
+// and an output that is one of their inputs (the model or the scene.json would be lost); each
+// refusal says which, before any work, and leaves the path as it was.
+TEST(WritersCli, OutputsThatAreNotRegularFilesOrInputsAreRefused) {
+    const auto dir = outputDir() / "writers";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir / "folder");
+    const auto house = dir / "house";
+    const CliResult gen = runCavewall({"generate", "house", "--out", house.string(), "--triangles", "2000"});
+    ASSERT_EQ(gen.exitCode, 0) << gen.err;
+    const auto fifo = dir / "fifo", link = dir / "link-to-folder", glb = house / "house.glb",
+               json = house / "scene.json";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+    std::filesystem::create_directory_symlink(dir / "folder", link);
+    const std::string model = bytesOf(glb), scene = bytesOf(json);
+    const std::string notRegular = ": expected a regular file or a new name, got ";
+    const std::string anInput = ": expected a file apart from the command's inputs, got the input ";
+    const struct {
+        const char* name;
+        std::vector<std::string> args;
+        std::string message;
+    } cases[] = {
+        {"walls --out /dev/null",
+         {"walls", house.string(), "--out", "/dev/null"},
+         "--out /dev/null" + notRegular + "a character device"},
+        {"walls --png fifo",
+         {"walls", house.string(), "--out", (dir / "w.json").string(), "--png", fifo.string()},
+         "--png " + fifo.string() + notRegular + "a fifo"},
+        {"walls --out MODEL",
+         {"walls", glb.string(), "--out", glb.string()},
+         "--out " + glb.string() + anInput + glb.string()},
+        {"walls --out its scene.json",
+         {"walls", house.string(), "--out", json.string()},
+         "--out " + json.string() + anInput + json.string()},
+        {"walls --png MODEL",
+         {"walls", json.string(), "--out", (dir / "w.json").string(), "--png", glb.string()},
+         "--png " + glb.string() + anInput + glb.string()},
+        {"plan --json /dev/null",
+         {"plan", house.string(), "--json", "/dev/null"},
+         "--json /dev/null" + notRegular + "a character device"},
+        {"plan --png /dev/full",
+         {"plan", house.string(), "--png", "/dev/full"},
+         "--png /dev/full" + notRegular + "a character device"},
+        {"plan --png link to a folder",
+         {"plan", house.string(), "--png", link.string()},
+         "--png " + link.string() + notRegular + "a directory"},
+        {"plan --json its scene.json",
+         {"plan", house.string(), "--json", json.string()},
+         "--json " + json.string() + anInput + json.string()},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.name);
+        const CliResult r = runCavewall(c.args);
+        EXPECT_EQ(r.exitCode, 1) << r.out;
+        EXPECT_THAT(r.err, HasSubstr(c.message));
+    }
+    EXPECT_EQ(std::filesystem::status("/dev/null").type(), std::filesystem::file_type::character);
+    EXPECT_EQ(std::filesystem::status("/dev/full").type(), std::filesystem::file_type::character);
+    EXPECT_EQ(std::filesystem::status(fifo).type(), std::filesystem::file_type::fifo);
+    EXPECT_TRUE(std::filesystem::is_symlink(link));
+    EXPECT_TRUE(std::filesystem::is_empty(dir / "folder"));
+    EXPECT_EQ(bytesOf(glb), model);
+    EXPECT_EQ(bytesOf(json), scene);
+    EXPECT_FALSE(std::filesystem::exists(dir / "w.json"));  // refused before the work
+}
+
+// --min-cell 0.1, the smallest documented value, is accepted: the default --split (half of it)
+// is held to its smallest chunk, 0.1 m; only a --split given below that is refused, by name.
+TEST(WallsCli, TheSmallestMinCellIsAcceptedAndASmallSplitIsNamed) {
+    const auto dir = outputDir() / "min-cell";
+    std::filesystem::remove_all(dir);
+    const CliResult gen = runCavewall({"generate", "house", "--out", (dir / "house").string(), "--triangles", "2000"});
+    ASSERT_EQ(gen.exitCode, 0) << gen.err;
+    const CliResult r = runCavewall({"walls", (dir / "house").string(), "--out", (dir / "scene.json").string(),
+                                     "--min-cell", "0.1", "--max-cells", "2", "--max-res", "32"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.err, Not(HasSubstr("--split")));
+    EXPECT_TRUE(std::filesystem::exists(dir / "scene.json"));
+    const CliResult small = runCavewall({"walls", (dir / "house").string(), "--out", (dir / "small.json").string(),
+                                         "--min-cell", "0.1", "--split", "0.05"});
+    EXPECT_EQ(small.exitCode, 1);
+    EXPECT_THAT(small.err, HasSubstr("--split: expected 0 (no cutting) or at least 0.1 metres, got 0.05"));
 }
 
 }  // namespace

@@ -49,7 +49,8 @@ std::string loadAverage() {
     return in ? one + " " + five + " " + fifteen : std::string("unknown");
 }
 
-// The plant for `triangles`, generated into `folder` unless it is there already.
+// The plant for `triangles`, generated into `folder` (and stamped, bench::kPlantStamp) unless
+// it is there already.
 std::filesystem::path plantFor(std::size_t triangles, const std::filesystem::path& folder, double& generateSeconds) {
     const std::filesystem::path sceneFile = folder / "scene.json";
     generateSeconds = 0.0;
@@ -59,8 +60,17 @@ std::filesystem::path plantFor(std::size_t triangles, const std::filesystem::pat
     g.triangles = triangles;
     scenes::GeneratedScene generated = scenes::generatePlant(g);
     scenes::writeGenerated(generated, folder);
+    bench::writePlantStamp(folder, triangles, generated.scene.triangleCount());
     generateSeconds = secondsSince(start);
     return sceneFile;
+}
+
+// The drawn triangles of the plant generated for `triangles`, made again in memory (for a
+// folder without a stamp).
+std::size_t plantTriangles(std::size_t triangles) {
+    scenes::GenerateOptions g;
+    g.triangles = triangles;
+    return scenes::generatePlant(g).scene.triangleCount();
 }
 
 // The textures the path's frames request (now or soon) with every texture resident, in id order.
@@ -194,12 +204,13 @@ std::unique_ptr<PreparedSize> prepareSize(const ScaleOptions& o, std::size_t tar
                                           Context& context) {
     auto p = std::make_unique<PreparedSize>();
     double generateSeconds = 0.0;
-    const std::filesystem::path sceneFile =
-        plantFor(target, o.data / ("plant-" + std::to_string(target)), generateSeconds);
+    const std::filesystem::path folder = o.data / ("plant-" + std::to_string(target));
+    const std::filesystem::path sceneFile = plantFor(target, folder, generateSeconds);
     auto start = Clock::now();
     scenes::SceneDescription& d = p->description;
     p->scene = scenes::loadSceneFile(sceneFile, &d);
     p->loadSeconds = secondsSince(start);
+    bench::checkPlantFolder(folder, target, p->scene.triangleCount(), [&] { return plantTriangles(target); });
     if (d.walls.empty() || d.walkPath.size() < 2)
         throw Error(sceneFile.string() + ": expected a plant with virtual walls and a walk path");
     d.walkPath = bench::pathPrefix(d.walkPath, o.pathMetres);
