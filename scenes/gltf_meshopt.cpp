@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <climits>
 #include <cstdio>
-#include <cstring>
 #include <set>
 
 namespace cavewall::scenes {
@@ -16,6 +15,15 @@ namespace {
 
 using Json = nlohmann::json;
 constexpr const char* kExt = "EXT_meshopt_compression";
+
+// File text quoted in a message, cut short: a hostile file may put megabytes there.
+std::string quoted(std::string text) {
+    if (text.size() > 40) text = text.substr(0, 40) + "...";
+    return text;
+}
+
+// A JSON value as text (invalid UTF-8 replaced), cut short.
+std::string quoted(const Json& value) { return quoted(value.dump(-1, ' ', false, Json::error_handler_t::replace)); }
 
 [[noreturn]] void fail(const std::string& file, const std::string& where, const std::string& what) {
     throw Error(file + ": " + where + ": " + what);
@@ -29,7 +37,7 @@ std::uint64_t unsignedField(const Json& e, const char* key, bool required, const
         return 0;
     }
     if (!it->is_number_unsigned() && !(it->is_number_integer() && it->get<std::int64_t>() >= 0))
-        fail(file, where + "." + key, "expected a non-negative integer, got " + it->dump());
+        fail(file, where + "." + key, "expected a non-negative integer, got " + quoted(*it));
     return it->get<std::uint64_t>();
 }
 
@@ -37,7 +45,7 @@ std::string stringField(const Json& e, const char* key, const char* fallback, co
                         const std::string& file) {
     const auto it = e.find(key);
     if (it == e.end()) return fallback;
-    if (!it->is_string()) fail(file, where + "." + key, "expected a string, got " + it->dump());
+    if (!it->is_string()) fail(file, where + "." + key, "expected a string, got " + quoted(*it));
     return it->get<std::string>();
 }
 
@@ -45,7 +53,7 @@ MeshoptMode parseMode(const std::string& s, const std::string& where, const std:
     if (s == "ATTRIBUTES") return MeshoptMode::Attributes;
     if (s == "TRIANGLES") return MeshoptMode::Triangles;
     if (s == "INDICES") return MeshoptMode::Indices;
-    fail(file, where, "unknown mode '" + s + "' (expected ATTRIBUTES, TRIANGLES or INDICES)");
+    fail(file, where, "unknown mode '" + quoted(s) + "' (expected ATTRIBUTES, TRIANGLES or INDICES)");
 }
 
 MeshoptFilter parseFilter(const std::string& s, const std::string& where, const std::string& file) {
@@ -53,7 +61,7 @@ MeshoptFilter parseFilter(const std::string& s, const std::string& where, const 
     if (s == "OCTAHEDRAL") return MeshoptFilter::Octahedral;
     if (s == "QUATERNION") return MeshoptFilter::Quaternion;
     if (s == "EXPONENTIAL") return MeshoptFilter::Exponential;
-    fail(file, where, "unknown filter '" + s + "' (expected NONE, OCTAHEDRAL, QUATERNION or EXPONENTIAL)");
+    fail(file, where, "unknown filter '" + quoted(s) + "' (expected NONE, OCTAHEDRAL, QUATERNION or EXPONENTIAL)");
 }
 
 // The extension's rules on byteStride and count per mode and filter; meshoptimizer asserts
@@ -157,7 +165,7 @@ std::vector<MeshoptView> readMeshoptViews(const nlohmann::json& doc, const std::
         const auto e = bv["extensions"].find(kExt);
         if (e == bv["extensions"].end()) continue;
         const std::string where = "bufferViews[" + std::to_string(i) + "].extensions." + kExt;
-        if (!e->is_object()) fail(file, where, "expected an object, got " + e->dump());
+        if (!e->is_object()) fail(file, where, "expected an object, got " + quoted(*e));
         MeshoptView v;
         v.view = static_cast<int>(i);
         const std::uint64_t buffer = unsignedField(*e, "buffer", true, where, file);
@@ -187,7 +195,7 @@ std::vector<int> standInFallbackBuffers(nlohmann::json& doc, bool glb) {
         bool fallback = !b.contains("uri") && !(glb && i == 0);
         if (b.contains("extensions") && b["extensions"].is_object() && b["extensions"].contains(kExt)) {
             const Json& e = b["extensions"][kExt];
-            fallback = fallback || (e.is_object() && e.value("fallback", false) == true);
+            fallback = fallback || (e.is_object() && e.contains("fallback") && e["fallback"] == true);
         }
         if (!fallback) continue;
         b["uri"] = "data:application/octet-stream;base64,AA==";
