@@ -362,10 +362,17 @@ std::string oneLine(std::string s) {
     return s;
 }
 
+void checkSize(std::string_view bytes, const std::filesystem::path& file) {
+    if (bytes.size() > std::numeric_limits<std::uint32_t>::max())
+        throw Error(file.string() + ": the file is " + std::to_string(bytes.size()) +
+                    " bytes (expected less than 4 GiB, the glTF limit)");
+}
+
 // The container and the JSON's nesting are checked before tinygltf sees anything, and compressed
 // files are adjusted so that it accepts them (gltf_prepass.h); EXT_meshopt_compression's views
 // are decoded once it has parsed (gltf_meshopt.h).
 tinygltf::Model parseModel(std::string_view bytes, const std::filesystem::path& file, std::string& warn) {
+    checkSize(bytes, file);
     std::optional<PreparedGltf> prepared;
     const bool glb = bytes.substr(0, 4) == "glTF";
     if (glb) {
@@ -377,9 +384,7 @@ tinygltf::Model parseModel(std::string_view bytes, const std::filesystem::path& 
         prepared = prepareCompressedGltf(bytes, nullptr, file.string());
     }
     if (prepared && !prepared->bytes.empty()) bytes = prepared->bytes;
-    if (bytes.size() > std::numeric_limits<std::uint32_t>::max())
-        throw Error(file.string() + ": the file is " + std::to_string(bytes.size()) +
-                    " bytes (expected less than 4 GiB, the glTF limit)");
+    checkSize(bytes, file);  // the adjusted copy may be a little longer
     tinygltf::Model model;
     tinygltf::TinyGLTF parser;
     tinygltf::FsCallbacks fs{&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readWholeFile,
