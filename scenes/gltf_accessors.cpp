@@ -200,6 +200,12 @@ AccessorValues readAccessorOfType(const GltfContext& ctx, int accessor, std::ini
     return v;
 }
 
+ViewBytes readViewBytes(const GltfContext& ctx, int view, const std::string& where) {
+    const unsigned char* p = viewRange(ctx, view, 0, 0, 0, 1, where);
+    const tinygltf::BufferView& bv = ctx.model.bufferViews[view];
+    return {p + bv.byteOffset, bv.byteLength};
+}
+
 std::vector<std::uint32_t> readIndices(const GltfContext& ctx, int accessor, std::size_t vertexCount,
                                        const std::string& where) {
     const AccessorValues v = readAccessorOfType(ctx, accessor, {TINYGLTF_TYPE_SCALAR}, where);

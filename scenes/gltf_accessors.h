@@ -42,4 +42,12 @@ std::vector<std::uint32_t> readIndices(const GltfContext& ctx, int accessor, std
 
 const char* typeName(int tinygltfType);
 
+// The whole byte range of buffer view `view`, validated against its buffer (for data that is not
+// read through an accessor, such as a Draco bitstream).
+struct ViewBytes {
+    const unsigned char* data = nullptr;
+    std::size_t size = 0;
+};
+ViewBytes readViewBytes(const GltfContext& ctx, int view, const std::string& where);
+
 }  // namespace cavewall::scenes

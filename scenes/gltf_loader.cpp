@@ -8,7 +8,10 @@
 #include "config/json_depth.h"
 #include "config/json_reader.h"
 #include "scenes/glb_container.h"
+#include "scenes/gltf_draco.h"
 #include "scenes/gltf_memory.h"
+#include "scenes/gltf_meshopt.h"
+#include "scenes/gltf_prepass.h"
 #include "scenes/load_limits.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -69,19 +72,23 @@ struct Loader {
             warn(skip + " because it has mode " + modeName(p.mode) + " (only triangles, strips and fans are drawn)");
             return false;
         }
-        auto pos = p.attributes.find("POSITION");
-        if (pos == p.attributes.end()) {
+        std::optional<DracoPrimitive> draco;
+        if (dracoExtension(p)) draco = decodeDracoPrimitive(ctx, p, where);
+        const Source src{p, draco ? &*draco : nullptr, where};
+        std::optional<AccessorValues> pos = attribute(src, "POSITION", {TINYGLTF_TYPE_VEC3});
+        if (!pos) {
             warn(skip + " because it has no POSITION");
             return false;
         }
-        out.positions = readPositions(pos->second, where + ".attributes.POSITION");
+        out.positions = readPositions(*pos, where + ".attributes.POSITION");
         if (!p.targets.empty())
             warn("primitive " + std::to_string(primIndex) + " of mesh " + std::to_string(meshIndex) +
                  ": ignoring its morph targets; drawn with the base shape");
-        readAttributes(p, where, out);
+        readAttributes(src, out);
         out.indices =
-            triangleIndices(p, out.positions.size(), where,
-                            "primitive " + std::to_string(primIndex) + " of mesh " + std::to_string(meshIndex));
+            draco ? std::move(draco->indices)
+                  : triangleIndices(p, out.positions.size(), where,
+                                    "primitive " + std::to_string(primIndex) + " of mesh " + std::to_string(meshIndex));
         if (p.material >= static_cast<int>(ctx.model.materials.size()))
             ctx.fail(where + ".material", "material " + std::to_string(p.material) + " is out of range (expected < " +
                                               std::to_string(ctx.model.materials.size()) + " materials)");
@@ -109,9 +116,34 @@ struct Loader {
              std::to_string(mesh.normals.size()) + " normals that were not finite (NaN or infinite in the file)");
     }
 
-    std::vector<glm::vec3> readPositions(int accessor, const std::string& where) {
-        std::vector<glm::vec3> out =
-            toVectors<glm::vec3, 3>(readAccessorOfType(ctx, accessor, {TINYGLTF_TYPE_VEC3}, where));
+    // Where a primitive's attributes come from: its accessors, or for the attributes a Draco
+    // bitstream holds, the decoded values.
+    struct Source {
+        const tinygltf::Primitive& p;
+        const DracoPrimitive* draco;
+        std::string where;
+    };
+
+    // An attribute of one of `types` (TINYGLTF_TYPE_*), or nothing when the primitive lacks it.
+    std::optional<AccessorValues> attribute(const Source& s, const char* name, std::initializer_list<int> types) {
+        const std::string aw = s.where + ".attributes." + name;
+        if (s.draco) {
+            auto d = s.draco->attributes.find(name);
+            if (d != s.draco->attributes.end()) {
+                for (int t : types)
+                    if (tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(t)) == d->second.components)
+                        return d->second;
+                ctx.fail(aw, "the Draco attribute has " + std::to_string(d->second.components) +
+                                 " components (expected " + typeName(*types.begin()) + ")");
+            }
+        }
+        auto it = s.p.attributes.find(name);
+        if (it == s.p.attributes.end()) return std::nullopt;
+        return readAccessorOfType(ctx, it->second, types, aw);
+    }
+
+    std::vector<glm::vec3> readPositions(const AccessorValues& values, const std::string& where) {
+        std::vector<glm::vec3> out = toVectors<glm::vec3, 3>(values);
         for (std::size_t i = 0; i < out.size(); ++i)
             if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y) || !std::isfinite(out[i].z))
                 ctx.fail(where, "vertex " + std::to_string(i) + " is not finite (expected finite numbers, got " +
@@ -138,16 +170,16 @@ struct Loader {
         return idx;
     }
 
-    void readAttributes(const tinygltf::Primitive& p, const std::string& where, Mesh& out) {
+    void readAttributes(const Source& s, Mesh& out) {
         const std::size_t n = out.positions.size();
         auto read = [&](const char* name, std::initializer_list<int> types) -> std::optional<AccessorValues> {
-            auto it = p.attributes.find(name);
-            if (it == p.attributes.end()) return std::nullopt;
-            const std::string aw = where + ".attributes." + name;
-            AccessorValues v = readAccessorOfType(ctx, it->second, types, aw);
+            std::optional<AccessorValues> found = attribute(s, name, types);
+            if (!found) return std::nullopt;
+            AccessorValues& v = *found;
+            const std::string aw = s.where + ".attributes." + name;
             if (v.count != n)
-                ctx.fail(aw, "accessor " + std::to_string(it->second) + " has " + std::to_string(v.count) +
-                                 " elements (expected " + std::to_string(n) + ", as many as POSITION)");
+                ctx.fail(aw, "has " + std::to_string(v.count) + " elements (expected " + std::to_string(n) +
+                                 ", as many as POSITION)");
             // Exporters write NaN normals on degenerate triangles; those are regenerated.
             if (std::string_view(name) != "NORMAL")
                 for (double d : v.values)
@@ -330,6 +362,45 @@ std::string oneLine(std::string s) {
     return s;
 }
 
+void checkSize(std::string_view bytes, const std::filesystem::path& file) {
+    if (bytes.size() > std::numeric_limits<std::uint32_t>::max())
+        throw Error(file.string() + ": the file is " + std::to_string(bytes.size()) +
+                    " bytes (expected less than 4 GiB, the glTF limit)");
+}
+
+// The container and the JSON's nesting are checked before tinygltf sees anything, and compressed
+// files are adjusted so that it accepts them (gltf_prepass.h); EXT_meshopt_compression's views
+// are decoded once it has parsed (gltf_meshopt.h).
+tinygltf::Model parseModel(std::string_view bytes, const std::filesystem::path& file, std::string& warn) {
+    checkSize(bytes, file);
+    std::optional<PreparedGltf> prepared;
+    const bool glb = bytes.substr(0, 4) == "glTF";
+    if (glb) {
+        const GlbChunks chunks = splitGlb(bytes, file.string());
+        config::checkJsonDepth(chunks.json, file.string() + ": JSON chunk");
+        prepared = prepareCompressedGltf(chunks.json, &chunks, file.string());
+    } else {
+        config::checkJsonDepth(bytes, file.string());
+        prepared = prepareCompressedGltf(bytes, nullptr, file.string());
+    }
+    if (prepared && !prepared->bytes.empty()) bytes = prepared->bytes;
+    checkSize(bytes, file);  // the adjusted copy may be a little longer
+    tinygltf::Model model;
+    tinygltf::TinyGLTF parser;
+    tinygltf::FsCallbacks fs{&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readWholeFile,
+                             &tinygltf::WriteWholeFile, nullptr};
+    parser.SetFsCallbacks(fs);
+    std::string err;
+    const std::string baseDir = file.parent_path().string();
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    const auto size = static_cast<unsigned int>(bytes.size());
+    const bool ok = glb ? parser.LoadBinaryFromMemory(&model, &err, &warn, data, size, baseDir)
+                        : parser.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, baseDir);
+    if (!ok) throw Error(file.string() + ": not a valid glTF file: " + oneLine(err.empty() ? warn : err));
+    if (prepared) decodeMeshoptViews(model, prepared->meshopt, file.string());
+    return model;
+}
+
 }  // namespace
 
 Scene loadGltf(const std::filesystem::path& file) {
@@ -340,27 +411,8 @@ Scene loadGltf(const std::filesystem::path& file) {
 }
 
 Scene loadGltfFromMemory(std::string_view bytes, const std::filesystem::path& file) {
-    if (bytes.size() > std::numeric_limits<std::uint32_t>::max())
-        throw Error(file.string() + ": the file is " + std::to_string(bytes.size()) +
-                    " bytes (expected less than 4 GiB, the glTF limit)");
-    tinygltf::Model model;
-    tinygltf::TinyGLTF parser;
-    tinygltf::FsCallbacks fs{&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readWholeFile,
-                             &tinygltf::WriteWholeFile, nullptr};
-    parser.SetFsCallbacks(fs);
-    std::string err, warn;
-    const std::string baseDir = file.parent_path().string();
-    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-    const auto size = static_cast<unsigned int>(bytes.size());
-    bool ok = false;
-    if (bytes.substr(0, 4) == "glTF") {
-        config::checkJsonDepth(splitGlb(bytes, file.string()).json, file.string() + ": JSON chunk");
-        ok = parser.LoadBinaryFromMemory(&model, &err, &warn, data, size, baseDir);
-    } else {
-        config::checkJsonDepth(bytes, file.string());
-        ok = parser.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, baseDir);
-    }
-    if (!ok) throw Error(file.string() + ": not a valid glTF file: " + oneLine(err.empty() ? warn : err));
+    std::string warn;
+    tinygltf::Model model = parseModel(bytes, file, warn);
     Loader l{GltfContext{model, file.string()}, Scene{}, "scene '" + file.filename().string() + "'"};
     l.scene.name = file.stem().string();
     if (!warn.empty()) l.warn("glTF parser: " + oneLine(warn));

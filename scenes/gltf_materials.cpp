@@ -8,12 +8,18 @@ void checkRequiredExtensions(const GltfContext& ctx) {
     const auto& required = ctx.model.extensionsRequired;
     for (std::size_t i = 0; i < required.size(); ++i) {
         const std::string& e = required[i];
-        // These change only shading details or use attribute types the accessor reader handles.
-        if (e == "KHR_texture_transform" || e.rfind("KHR_materials_", 0) == 0 || e == "KHR_mesh_quantization") continue;
+        // These change only shading details, use attribute types the accessor reader handles, or
+        // are decoded on loading (gltf_meshopt.h, gltf_draco.h).
+        if (e == "KHR_texture_transform" || e.rfind("KHR_materials_", 0) == 0 || e == "KHR_mesh_quantization" ||
+            e == "EXT_meshopt_compression" || e == "KHR_draco_mesh_compression")
+            continue;
+        const std::string hint = e == "KHR_texture_basisu" || e == "EXT_texture_webp" || e == "MSFT_texture_dds"
+                                     ? "; textures must have a PNG or JPEG image"
+                                     : "";
         ctx.fail("extensionsRequired[" + std::to_string(i) + "]",
-                 "extension '" + e +
-                     "' is not supported (supported: KHR_texture_transform, KHR_materials_*, "
-                     "KHR_mesh_quantization)");
+                 "extension '" + e + "' is not supported" + hint +
+                     " (supported: KHR_texture_transform, KHR_materials_*, KHR_mesh_quantization, "
+                     "EXT_meshopt_compression, KHR_draco_mesh_compression)");
     }
 }
 
@@ -86,6 +92,9 @@ TextureRef convertTexture(const GltfContext& ctx, const Scene& scene, const tiny
                                        std::to_string(textures.size()) + " textures)");
     const tinygltf::Texture& tex = textures[info.index];
     const std::string tw = "textures[" + std::to_string(info.index) + "]";
+    if (tex.source < 0 && !tex.extensions.empty())
+        ctx.fail(tw, "has no PNG or JPEG source, only an image of extension '" + tex.extensions.begin()->first +
+                         "', which is not supported (expected a 'source' image)");
     if (tex.source < 0 || static_cast<std::size_t>(tex.source) >= scene.images.size())
         ctx.fail(tw + ".source", "image " + std::to_string(tex.source) + " is out of range (expected < " +
                                      std::to_string(scene.images.size()) + " images)");

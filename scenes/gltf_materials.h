@@ -9,8 +9,10 @@
 
 namespace cavewall::scenes {
 
-// Throws when the file requires an extension we cannot ignore safely. Supported or harmless:
-// KHR_texture_transform, KHR_materials_*, KHR_mesh_quantization, KHR_texture_basisu is not.
+// Throws when the file requires an extension we cannot ignore safely, naming it. Supported or
+// harmless: KHR_texture_transform, KHR_materials_*, KHR_mesh_quantization,
+// EXT_meshopt_compression, KHR_draco_mesh_compression. KHR_texture_basisu (KTX2 images) is not:
+// a file that only uses it loads its PNG/JPEG fallback images; a texture without one throws.
 void checkRequiredExtensions(const GltfContext& ctx);
 
 // Decoded images (8-bit RGBA). An image that could not be decoded becomes an empty Image and a

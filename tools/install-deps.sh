@@ -7,10 +7,10 @@ export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   cmake ninja-build g++ pkg-config git ca-certificates \
-  libglm-dev nlohmann-json3-dev libtinygltf-dev libopenimageio-dev libmeshoptimizer-dev libsquish-dev libstb-dev zlib1g-dev \
+  libglm-dev nlohmann-json3-dev libtinygltf-dev libopenimageio-dev libmeshoptimizer-dev libdraco-dev libsquish-dev libstb-dev zlib1g-dev \
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libepoxy-dev libglfw3-dev \
   libgtest-dev libgmock-dev libbenchmark-dev \
   libopenmpi-dev openmpi-bin \
-  xvfb xauth xdotool openscenegraph \
+  xvfb xauth xdotool openscenegraph gltfpack draco \
   clang >/dev/null
 echo "install-deps: done"

@@ -60,8 +60,8 @@ TEST(GltfLoader, BrokenFilesNameTheFileAndTheGltfPath) {
          "broken.gltf: nodes[0].children[0]: node 0 is its own ancestor (expected a tree, got a cycle)"},
         {"material", [](GltfBuilder& b) { b.j["meshes"][0]["primitives"][0]["material"] = 2; },
          "broken.gltf: meshes[0].primitives[0].material: material 2 is out of range (expected < 0 materials)"},
-        {"required extension", [](GltfBuilder& b) { b.j["extensionsRequired"] = {"KHR_draco_mesh_compression"}; },
-         "broken.gltf: extensionsRequired[0]: extension 'KHR_draco_mesh_compression' is not supported"},
+        {"required extension", [](GltfBuilder& b) { b.j["extensionsRequired"] = {"EXT_lights_image_based"}; },
+         "broken.gltf: extensionsRequired[0]: extension 'EXT_lights_image_based' is not supported"},
         {"texture",
          [](GltfBuilder& b) {
              b.j["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 4}}}}}}};
