@@ -325,38 +325,15 @@ int runScaleBench(const Args& args) {
 
 int runBench(const std::vector<std::string>& words) {
     const Args args(words, {"stability", "quick", "hierarchy", "clusters", "on-demand"});
-    args.expectFlags({"stability",
-                      "quick",
-                      "display",
-                      "path",
-                      "route",
-                      "out",
-                      "frames",
-                      "resolution",
-                      "stereo",
-                      "cache",
-                      "compare-every",
-                      "min-zone",
-                      "ppd",
-                      "bake-resolution",
-                      "alphas",
-                      "warp-alpha",
-                      "lod",
-                      "triangle-budget",
-                      "frame-budget-ms",
-                      "lod-max",
-                      "walls",
-                      "hierarchy",
-                      "hierarchy-budgets",
-                      "clusters",
-                      "cluster-budgets",
-                      "compare-scene",
-                      "on-demand",
-                      "scale",
-                      "data",
-                      "scale-metres",
-                      "geometry-budget",
-                      "texture-format"});
+    // One flag list, packed.
+    // clang-format off
+    args.expectFlags({
+        "stability", "quick", "display", "path", "route", "out", "frames", "resolution", "stereo", "cache",
+        "compare-every", "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod",
+        "triangle-budget", "frame-budget-ms", "lod-max", "walls", "hierarchy", "hierarchy-budgets", "clusters",
+        "cluster-budgets", "compare-scene", "on-demand", "scale", "data", "scale-metres", "geometry-budget",
+        "texture-format"});
+    // clang-format on
     // --stability is a bench of its own: with --scale or a SCENE it would silently ignore them.
     args.expectAlone("stability", "bench");
     if (args.has("stability")) return runStability();
