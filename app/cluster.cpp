@@ -103,6 +103,24 @@ double Cluster::broadcast(FrameState& state) {
     return display::msSince(start) / 1000.0;
 }
 
+void Cluster::waitForRankZero(double timeoutSeconds, const char* what) {
+    std::uint8_t arrived = 1;
+    MPI_Request r;
+    MPI_Ibcast(&arrived, 1, MPI_BYTE, 0, MPI_COMM_WORLD, &r);
+    wait(&r, what, _rank == 0 ? _timeout : timeoutSeconds);
+}
+
+void Cluster::expectSame(const std::string& fingerprint, const char* what) {
+    const std::vector<std::vector<std::uint8_t>> all =
+        gatherBytes(std::vector<std::uint8_t>(fingerprint.begin(), fingerprint.end()));
+    for (std::size_t rank = 1; rank < all.size(); ++rank) {
+        const std::string other(all[rank].begin(), all[rank].end());
+        if (other != fingerprint)
+            abortAll(std::string(what) + ": rank " + std::to_string(rank) + " has " + other + ", rank 0 has " +
+                     fingerprint + " (expected every rank to run the same)");
+    }
+}
+
 double Cluster::swapBarrier() { return barrier(_timeout, "swap barrier"); }
 
 double Cluster::barrier(double timeoutSeconds, const char* what) {

@@ -43,12 +43,20 @@ public:
     double broadcast(FrameState& state);
     // The swap lock: returns once every rank has arrived; the seconds spent waiting.
     double swapBarrier();
-    // A barrier with its own time limit (e.g. while rank 0 bakes textures for minutes).
+    // A barrier with its own time limit.
     double barrier(double timeoutSeconds, const char* what);
+    // Every rank but 0 waits up to `timeoutSeconds` for rank 0 to arrive (e.g. while it bakes
+    // for minutes); rank 0 arrives within the cluster's timeout. A rank that stopped is found
+    // by the next barrier or broadcast, within the cluster's timeout.
+    void waitForRankZero(double timeoutSeconds, const char* what);
     // Gathers one double per rank on rank 0 (e.g. render times); other ranks get an empty vector.
     std::vector<double> gather(double value);
     // Gathers every rank's bytes on rank 0 (index = rank); other ranks get an empty vector.
     std::vector<std::vector<std::uint8_t>> gatherBytes(const std::vector<std::uint8_t>& bytes);
+    // Rank 0 compares every rank's `fingerprint` (e.g. of the scene and display it loaded) with
+    // its own and ends every rank, naming the first that differs and both fingerprints, when
+    // one does. Every rank calls it.
+    void expectSame(const std::string& fingerprint, const char* what);
     // Ends every rank of the job with `message` on stderr and exit code 1.
     [[noreturn]] void abortAll(const std::string& message) const;
 

@@ -1,5 +1,7 @@
 #include "app/run_cluster.h"
 
+#include <cstdio>
+
 #include "config/error.h"
 
 #ifdef CAVEWALL_HAVE_MPI
@@ -10,6 +12,25 @@
 #endif
 
 namespace cavewall::app {
+
+std::string sessionFingerprint(const app::RunOptions& o, const scenes::Scene& scene,
+                               const scenes::SceneDescription& d) {
+    char text[256];
+    const glm::dvec3 lo = scene.bounds().min, hi = scene.bounds().max;
+    std::snprintf(text, sizeof text,
+                  "scene '%s' (%zu triangles, %zu objects, %zu cells, %zu walls, bounds [%.3f, %.3f, %.3f]-[%.3f, "
+                  "%.3f, %.3f])",
+                  o.scene.filename().string().c_str(), scene.triangleCount(), scene.objects.size(), d.cells.size(),
+                  d.walls.size(), lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
+    std::string out = text;
+    out += " and display '" + o.display.name + "' (";
+    for (const config::Screen& s : o.display.screens) {
+        std::snprintf(text, sizeof text, "%s %dx%d at [%.3f, %.3f, %.3f]; ", s.name.c_str(), s.resolution.x,
+                      s.resolution.y, s.lowerLeft.x, s.lowerLeft.y, s.lowerLeft.z);
+        out += text;
+    }
+    return out + std::string(config::toString(o.display.stereo)) + ")";
+}
 
 #ifdef CAVEWALL_HAVE_MPI
 
@@ -110,6 +131,8 @@ double combineFrame(app::Cluster&, walkthrough::FrameResult&, double syncMs, con
 // openCluster never makes an app::Cluster here; these keep the unique_ptr and the call sites linking.
 app::Cluster::~Cluster() = default;
 double app::Cluster::barrier(double, const char*) { return 0.0; }
+void app::Cluster::waitForRankZero(double, const char*) {}
+void app::Cluster::expectSame(const std::string&, const char*) {}
 
 #endif
 

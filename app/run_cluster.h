@@ -7,15 +7,24 @@
 
 #include "app/cluster.h"
 #include "app/run_options.h"
+#include "scenes/scene.h"
+#include "scenes/scene_description.h"
 #include "walkthrough/frame_types.h"
 
 #include <memory>
+#include <string>
 
 namespace cavewall::app {
 
 // nullptr unless options.cluster; throws Error when the build has no MPI or when there are
 // more ranks than screens.
 std::unique_ptr<app::Cluster> openCluster(const app::RunOptions& options);
+
+// What every rank must agree on, in words: the scene (its file, triangles, objects, cells and
+// walls, bounds) and the display (its name, screens with corners and resolutions, stereo), for
+// Cluster::expectSame.
+std::string sessionFingerprint(const app::RunOptions& options, const scenes::Scene& scene,
+                               const scenes::SceneDescription& description);
 
 // Rank 0's `input` is sent to every rank; the others' is replaced. Returns milliseconds waited.
 double receiveFrame(app::Cluster& cluster, walkthrough::FrameInput& input);

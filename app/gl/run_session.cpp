@@ -124,7 +124,8 @@ std::unique_ptr<gl::Context> makeContext(const RunOptions& o, const display::Dis
 }
 
 // In cluster mode rank 0 plans and bakes first and the others then find everything in the
-// cache (one bake per cache folder at a time); the wait is bounded by kBakeWaitSeconds.
+// cache (one bake per cache folder at a time). They wait for rank 0 up to kBakeWaitSeconds; a
+// rank that stopped meanwhile is found by the barrier after it, within --cluster-timeout.
 constexpr double kBakeWaitSeconds = 3600.0;
 
 walls::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
@@ -132,7 +133,8 @@ walls::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scen
     if (!cluster) return prepareWalls(o, scene, d, context, &stop);
     std::optional<walls::WallSetup> setup;
     if (cluster->rank() == 0) setup = prepareWalls(o, scene, d, context, nullptr);
-    cluster->barrier(kBakeWaitSeconds, "waiting for rank 0 to bake the wall textures");
+    cluster->waitForRankZero(kBakeWaitSeconds, "waiting for rank 0 to bake the wall textures");
+    cluster->barrier(o.clusterTimeout, "every rank after rank 0's bake");
     if (cluster->rank() != 0) {
         RunOptions quiet = o;
         quiet.verbose = false;
@@ -363,6 +365,7 @@ RunSummary runSession(const RunOptions& o) {
     summary.sceneSeconds = secondsSince(start);
     std::unique_ptr<app::Cluster> cluster = app::openCluster(o);
     const int rank = cluster ? cluster->rank() : 0;
+    if (cluster) cluster->expectSame(app::sessionFingerprint(o, scene, description), "--cluster");
     // Only rank 0 reads input (a network tracker binds its port once).
     std::unique_ptr<app::RunInput> input = rank == 0 ? std::make_unique<app::RunInput>(o, scene, description) : nullptr;
     if (input && !input->liveTrackerLine().empty()) std::cerr << "run: " << input->liveTrackerLine() << std::endl;

@@ -218,4 +218,66 @@ TEST(ClusterRun, ARankThatStopsAnsweringEndsEveryRankAfterTheTimeout) {
     expectEndsAllRanks(SIGSTOP, "another rank did not answer within 3");
 }
 
+// Rank 2 stopped while rank 0 bakes: the others no longer wait an hour for it. Once rank 0's
+// bake ends, the barrier after it finds rank 2 missing within --cluster-timeout.
+TEST(ClusterRun, ARankStoppedWhileRankZeroBakesEndsEveryRankAfterTheBake) {
+    const fs::path out = kWork / "stopped-baking";
+    fs::remove_all(out);
+    fs::remove_all(kWork / "stopped-baking-cache");  // a cold cache: rank 0 bakes first
+    const std::string tag = out.string();
+    std::vector<std::string> mpi{"mpirun", "--oversubscribe",          "-np",       "3",
+                                 "-x",     "CAVEWALL_TEST_TAG=" + tag, CAVEWALL_EXE};
+    for (const auto& a : runArgs(out)) mpi.push_back(a);
+    for (const char* a : {"--cluster", "--cluster-timeout", "3", "--max-res", "32"}) mpi.push_back(a);
+    const Proc p = start(mpi, out.filename().string());
+    // Once rank 0 writes its first texture every rank is past MPI's start and the scene check,
+    // waiting for the bake: then rank 2 stops.
+    const fs::path cache = kWork / "stopped-baking-cache";
+    auto baking = [&] {
+        std::error_code ec;
+        for (fs::recursive_directory_iterator it(cache, ec), end; !ec && it != end; it.increment(ec))
+            if (it->path().extension() == ".bct" || it->path().extension() == ".tx") return true;
+        return false;
+    };
+    pid_t victim = -1;
+    for (int i = 0; i < 6000 && (victim < 0 || !baking()); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));  // a polling interval
+        if (victim < 0) victim = rankPid(2, tag);
+    }
+    ASSERT_GT(victim, 0) << readFile(p.err);
+    ASSERT_TRUE(baking()) << readFile(p.err);
+    kill(victim, SIGSTOP);
+    const int code = finish(p, 300);  // the rest of the bake, then 3 s, then MPI's teardown
+    kill(victim, SIGKILL);
+    EXPECT_NE(code, -1) << "mpirun did not end within 300 s";
+    EXPECT_NE(code, 0);
+    const std::string said = readFile(p.err) + readFile(p.out);
+    EXPECT_THAT(said,
+                ::testing::AnyOf(HasSubstr("every rank after rank 0's bake: another rank did not answer within 3"),
+                                 HasSubstr("--cluster: another rank did not answer within 3")));
+}
+
+// Ranks given different displays (here: another resolution on rank 1) are refused before
+// drawing, naming the rank and both displays.
+TEST(ClusterRun, RanksGivenDifferentDisplaysAreRefusedNamingTheRank) {
+    const fs::path out = kWork / "mismatch";
+    fs::remove_all(out);
+    std::vector<std::string> mpi{"mpirun", "--oversubscribe", "-np", "1", CAVEWALL_EXE};
+    for (const auto& a : runArgs(out)) mpi.push_back(a);
+    mpi.push_back("--cluster");
+    for (const char* a : {":", "-np", "1", CAVEWALL_EXE}) mpi.push_back(a);
+    for (const auto& a : runArgs(out)) mpi.push_back(a);
+    for (const char* a : {"--cluster", "--resolution", "64x64"}) mpi.push_back(a);
+    const Proc p = start(mpi, out.filename().string());
+    const int code = finish(p, 300);
+    EXPECT_NE(code, -1) << "mpirun did not end within 300 s";
+    EXPECT_NE(code, 0);
+    const std::string said = readFile(p.err) + readFile(p.out);
+    EXPECT_THAT(said, HasSubstr("--cluster: rank 1 has scene 'scene.json'"));
+    EXPECT_THAT(said, HasSubstr("front 64x64 at"));
+    EXPECT_THAT(said, HasSubstr("front 128x128 at"));
+    EXPECT_THAT(said, HasSubstr("(expected every rank to run the same)"));
+    EXPECT_FALSE(fs::exists(out / "frames.csv") && rowsWritten(out / "frames.csv") > 0) << "no frame drawn";
+}
+
 }  // namespace
