@@ -92,6 +92,27 @@ struct Checker {
         }
     }
 
+    // A wall's front faces its first cell (cells[0]): the side lowerLeft->lowerRight x
+    // lowerLeft->upperLeft points to. Judged by the cells' centroids; a wall whose two cells lie
+    // on one side is left to the other checks.
+    void checkFacing(std::size_t i) const {
+        const VirtualWall& w = d.walls[i];
+        const glm::dvec3 n = glm::normalize(glm::cross(w.lowerRight - w.lowerLeft, w.upperLeft - w.lowerLeft));
+        double side[2];
+        for (int k = 0; k < 2; ++k) {
+            glm::dvec2 centroid(0.0);
+            for (const glm::dvec2& p : d.cells[w.cells[k]].region) centroid += p;
+            centroid /= static_cast<double>(d.cells[w.cells[k]].region.size());
+            side[k] = n.x * (centroid.x - w.lowerLeft.x) + n.z * (centroid.y - w.lowerLeft.z);
+        }
+        if (side[0] < 0.0 && side[1] > 0.0)
+            fail("walls[" + std::to_string(i) + "]",
+                 "'" + w.name + "' faces its second cell '" + d.cells[w.cells[1]].name +
+                     "' (expected its front, lowerLeft->lowerRight x lowerLeft->upperLeft, pointing to " +
+                     fmt(glm::dvec3(n.x, 0.0, n.z)) + ", to face its first cell '" + d.cells[w.cells[0]].name +
+                     "'); swap the two cells, or lowerLeft with lowerRight (and upperLeft to the new lowerLeft)");
+    }
+
     // Every coordinate the planner and the renderer work with is bounded (absurd extents
     // would make the planner's work and float precision meaningless).
     void checkExtent(const std::string& where, glm::dvec3 p) const {
@@ -146,7 +167,10 @@ void validateSceneDescription(const SceneDescription& d, const std::string& sour
                        "duplicate cell name '" + d.cells[i].name + "' (expected unique names)");
         c.checkCell(i);
     }
-    for (std::size_t i = 0; i < d.walls.size(); ++i) c.checkWall(i);
+    for (std::size_t i = 0; i < d.walls.size(); ++i) {
+        c.checkWall(i);
+        c.checkFacing(i);
+    }
     for (std::size_t i = 0; i < d.realWalls.size(); ++i)
         c.checkQuad("realWalls[" + std::to_string(i) + "]", d.realWalls[i].lowerLeft, d.realWalls[i].lowerRight,
                     d.realWalls[i].upperLeft);

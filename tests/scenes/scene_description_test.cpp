@@ -18,8 +18,9 @@ using ::testing::ThrowsMessage;
 const std::string kCells = R"(
   "cells": [{"name": "A", "region": [[-4, 2], [0, 2], [0, -2], [-4, -2]]},
             {"name": "B", "region": [[0, 2], [4, 2], [4, -2], [0, -2]]}])";
+// Its front (lowerLeft->lowerRight x lowerLeft->upperLeft) points to -x: A, its first cell.
 const std::string kWall = R"({"name": "AB", "cells": ["A", "B"],
-   "lowerLeft": [0, 0, 2], "lowerRight": [0, 0, -2], "upperLeft": [0, 3, 2]})";
+   "lowerLeft": [0, 0, -2], "lowerRight": [0, 0, 2], "upperLeft": [0, 3, -2]})";
 
 std::filesystem::path folder() {
     const auto dir = testing::testOutput("description");
@@ -120,6 +121,11 @@ TEST(SceneDescription, EveryRuleHasItsMessage) {
            "lowerRight": [0,0,-2], "upperLeft": [0,3,3]})"),
          // right = (0, 0, -4), up = (0, 3, 1): cos = -4 / (4 * sqrt(10)), acos = 108.435°.
          "scene.json: walls[0]: not a rectangle (expected a right angle at lowerLeft, got 108.435°)"},
+        {"wall facing its second cell", scene("", R"({"name": "x", "cells": ["A", "B"], "lowerLeft": [0,0,2],
+           "lowerRight": [0,0,-2], "upperLeft": [0,3,2]})"),
+         "scene.json: walls[0]: 'x' faces its second cell 'B' (expected its front, lowerLeft->lowerRight x "
+         "lowerLeft->upperLeft, pointing to (1, 0, 0), to face its first cell 'A'); swap the two cells, or lowerLeft "
+         "with lowerRight"},
         {"wall not vertical", scene("", R"({"name": "x", "cells": ["A", "B"], "lowerLeft": [0,0,2],
            "lowerRight": [0,0,-2], "upperLeft": [1,3,2]})"),
          "scene.json: walls[0]: not vertical (expected a normal with no vertical component"},
