@@ -78,10 +78,21 @@ DepthImage readDepthFile(const std::filesystem::path& file) {
     if (spec.format != OIIO::TypeDesc::UINT16 && spec.format != OIIO::TypeDesc::FLOAT)
         throw Error(file.string() + ": expected 16-bit depth codes or 32-bit float depths, got " +
                     std::string(spec.format.c_str()));
+    if (spec.width > kMaxDepthFileSide || spec.height > kMaxDepthFileSide || spec.depth > 1)
+        throw Error(file.string() + ": expected at most " + std::to_string(kMaxDepthFileSide) + " x " +
+                    std::to_string(kMaxDepthFileSide) + " texels (the largest bake), got " +
+                    std::to_string(spec.width) + " x " + std::to_string(spec.height) +
+                    (spec.depth > 1 ? " x " + std::to_string(spec.depth) : std::string()));
     DepthImage image{spec.width, spec.height, std::vector<float>(std::size_t(spec.width) * spec.height)};
     if (spec.format == OIIO::TypeDesc::FLOAT) {  // a bake from before the 16-bit codes
         if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, image.depth.data()))
             throw Error(file.string() + ": cannot read the depths (" + in->geterror() + ")");
+        for (std::size_t i = 0; i < image.depth.size(); ++i)
+            if (std::isnan(image.depth[i]) || image.depth[i] < 0.0f)
+                throw Error(file.string() + ": texel (" + std::to_string(i % std::size_t(spec.width)) + ", " +
+                            std::to_string(i / std::size_t(spec.width)) +
+                            "): expected a depth >= 0 m or +infinity (nothing drawn), got " +
+                            std::to_string(image.depth[i]));
         return image;
     }
     std::vector<std::uint16_t> codes(image.depth.size());

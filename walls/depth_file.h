@@ -22,6 +22,7 @@
 namespace cavewall::walls {
 
 inline constexpr double kDepthFileMetres = 1.0;  // L of the 16-bit code
+inline constexpr int kMaxDepthFileSide = 16384;  // texels per side at most (the largest bake)
 
 // "tex_0003_<key>.tx" -> "tex_0003_<key>.depth.tif"
 std::string depthFileName(const std::string& colourFile);
@@ -35,8 +36,9 @@ double depthFileError(double d);
 
 // Throws cavewall::Error naming the file when it cannot be written or the image is inconsistent.
 void writeDepthFile(const std::filesystem::path& file, const DepthImage& image);
-// Throws cavewall::Error naming the file when it is unreadable or not one channel of 16-bit
-// codes or 32-bit floats.
+// Throws cavewall::Error naming the file when it is unreadable, not one channel of 16-bit codes
+// or 32-bit floats, larger than kMaxDepthFileSide on a side, or (floats) holds a NaN or a
+// negative depth.
 DepthImage readDepthFile(const std::filesystem::path& file);
 
 }  // namespace cavewall::walls

@@ -131,6 +131,37 @@ TEST(DepthFile, FloatDepthFilesAreStillReadBitForBit) {
     }
 }
 
+// Float files holding what no bake writes, and sizes beyond any bake, are refused naming the
+// texel or the size: a NaN would reach the screen, a huge header would allocate gigabytes.
+TEST(DepthFile, NaNNegativeDepthsAndHugeSizesAreRefused) {
+    const auto dir = scratch("float-bad");
+    auto writeFloats = [&](const std::string& name, int w, int h, const std::vector<float>& v) {
+        const std::string file = (dir / name).string();
+        auto out = OIIO::ImageOutput::create(file);
+        OIIO::ImageSpec spec(w, h, 1, OIIO::TypeDesc::FLOAT);
+        EXPECT_TRUE(out->open(file, spec) && out->write_image(OIIO::TypeDesc::FLOAT, v.data()) && out->close());
+        return file;
+    };
+    const struct {
+        std::vector<float> depths;
+        const char* message;
+    } cases[] = {
+        {{1.0f, std::nanf(""), 2.0f, 3.0f},
+         "texel (1, 0): expected a depth >= 0 m or +infinity (nothing drawn), got nan"},
+        {{1.0f, 2.0f, -0.5f, 3.0f}, "texel (0, 1): expected a depth >= 0 m or +infinity (nothing drawn), got -0.5"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.message);
+        const std::string file = writeFloats("bad.depth.tif", 2, 2, c.depths);
+        EXPECT_THAT([&] { readDepthFile(file); }, ::testing::ThrowsMessage<Error>(HasSubstr(c.message)));
+    }
+    const std::string wide =
+        writeFloats("wide.depth.tif", kMaxDepthFileSide + 1, 1, std::vector<float>(kMaxDepthFileSide + 1, 1.0f));
+    EXPECT_THAT([&] { readDepthFile(wide); },
+                ::testing::ThrowsMessage<Error>(HasSubstr("expected at most 16384 x 16384 texels (the largest bake), "
+                                                          "got 16385 x 1")));
+}
+
 TEST(DepthFile, ATextureIsValidOnlyWithItsDepthFile) {
     const auto dir = scratch("valid");
     std::ofstream(dir / "tex_0000_0000000000000001.tx") << "colour";
