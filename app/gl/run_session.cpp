@@ -43,6 +43,7 @@ gl::BakeRequest bakeRequest(const RunOptions& o, gl::Context* context) {
     gl::BakeRequest request;
     request.scene = o.scene;
     request.context = context;
+    request.trustStamps = true;  // the pager checks each file's content as it pages it in
     request.settings.maxResolution = o.bakeResolution;
     request.settings.kind = o.wallKind;
     request.settings.textureFormat = o.textureFormat;
@@ -103,6 +104,7 @@ walls::WallSetup prepareWalls(const RunOptions& o, const scenes::Scene& scene, c
                       << std::flush;
     };
     gl::BakeResult baked = gl::bakeWalls(scene, d, setup, request);
+    for (const std::string& w : baked.warnings) std::cerr << "run: warning: " << w << std::endl;
     setup.folder = baked.folder;
     setup.manifest = std::move(baked.manifest);
     if (o.verbose)

@@ -34,8 +34,14 @@ BakeManifest manifest() {
     BakeManifest m;
     for (int i = 0; i < 10; ++i) {
         const std::string file = "tex_" + std::to_string(i);
-        m.textures.push_back(
-            {i, 0, 0, {}, {256, 256}, file, std::filesystem::file_size(dir / file), hashFile(dir / file)});
+        m.textures.push_back({i,
+                              0,
+                              0,
+                              {},
+                              {256, 256},
+                              file,
+                              std::filesystem::file_size(dir / file),
+                              contentHashFile(dir / file).value()});
     }
     return m;
 }
@@ -247,8 +253,14 @@ TEST(TexturePager, PagesBlockFilesAsCompressedBytes) {
     for (int i = 0; i < 2; ++i) {
         const std::string file = "tex_" + std::to_string(i) + ".bct";
         writeBlockFile(dir / file, encodeLevels(premultipliedMipChain(image), TextureFormat::Bc1));
-        m.textures.push_back(
-            {i, 0, 0, {}, {256, 256}, file, std::filesystem::file_size(dir / file), hashFile(dir / file)});
+        m.textures.push_back({i,
+                              0,
+                              0,
+                              {},
+                              {256, 256},
+                              file,
+                              std::filesystem::file_size(dir / file),
+                              contentHashFile(dir / file).value()});
     }
     TexturePager pager(dir, m, 4.0, readBakedTexture);
     pager.request({0, 1}, {});
@@ -274,7 +286,8 @@ TEST(TexturePager, FindsWhereATextureHasContent) {
     const std::string file = "patch.bct";
     writeBlockFile(dir / file, encodeLevels(premultipliedMipChain(image), TextureFormat::Bc1));
     BakeManifest m;
-    m.textures.push_back({0, 0, 0, {}, {256, 256}, file, std::filesystem::file_size(dir / file), hashFile(dir / file)});
+    m.textures.push_back(
+        {0, 0, 0, {}, {256, 256}, file, std::filesystem::file_size(dir / file), contentHashFile(dir / file).value()});
     TexturePager pager(dir, m, 4.0, readBakedTexture);
     pager.request({0}, {});
     pager.waitIdle();
@@ -312,7 +325,7 @@ TEST(TexturePager, PagesADepthWallsDepthWithItsColourAndBudgetsBoth) {
         t.depthFile = "depth_" + std::to_string(t.id) + ".depth.tif";
         writeDepthFile(dir / t.depthFile, marchDepths(image));  // as the bake writes it
         t.depthBytes = std::filesystem::file_size(dir / t.depthFile);
-        t.depthHash = hashFile(dir / t.depthFile);
+        t.depthHash = contentHashFile(dir / t.depthFile).value();
         t.depthRange = depthRange(marchDepths(image));
     };
     addDepth(m.textures[1], depth);
