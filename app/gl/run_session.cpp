@@ -60,6 +60,7 @@ walls::WallSetup prepareWallsOnDemand(const RunOptions& o, const scenes::Scene& 
     options.niceness = o.bakeNice;
     if (o.cacheBudgetMB > 0.0) options.cacheBudgetBytes = walls::cacheBudgetBytes(o.cacheBudgetMB, "--cache-budget");
     baker = std::make_unique<gl::BackgroundBaker>(scene, d, setup, bakeRequest(o, nullptr), options);
+    for (const std::string& w : baker->startWarnings()) std::cerr << "run: warning: " << w << std::endl;
     setup.folder = baker->folder();
     setup.manifest = baker->manifest();
     if (o.verbose)
@@ -256,6 +257,8 @@ void recordFrame(const Session& s, long i, const walkthrough::FrameInput& in, wa
     summary.worstLodErrorPx = std::max(summary.worstLodErrorPx, r.lodErrorPx);
     summary.misses = r.pager.misses;
     summary.pageIns = r.pager.pageIns;
+    summary.checkFailures = r.pager.checkFailures;
+    for (const std::string& w : r.warnings) std::cerr << "run: warning: " << w << std::endl;
     summary.geometryPeakMB = std::max(summary.geometryPeakMB, r.geometry.residentMB);
     summary.geometryMisses = r.geometry.misses;
     summary.geometryPageIns = r.geometry.pageIns;
