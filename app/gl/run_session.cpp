@@ -194,6 +194,7 @@ void summarizeWalkthrough(const gl::Walkthrough& walkthrough, RunSummary& summar
         summary.clustersMade = b.made;
         summary.clustersReused = b.reused;
         summary.clustersSeconds = b.seconds;
+        for (const std::string& w : b.warnings) std::cerr << "run: warning: " << w << std::endl;
         summary.msPerTriangle = m->costs.msPerTriangle;
         summary.msPerObject = m->costs.msPerObject;
         summary.texturedBoxMs = m->costs.texturedBoxMs;
