@@ -139,6 +139,9 @@ struct RunSummary {
     double worstErrorDeg = 0.0, worstErrorPx = 0.0;
     double worstLodErrorPx = 0.0;  // largest level-of-detail error drawn, pixels
     long misses = 0, pageIns = 0;
+    // Wall textures refused when paged in because a file's size or content hash was not the
+    // manifest's (walls/texture_pager.h); each was reported once on stderr as it happened.
+    long checkFailures = 0;
     // Geometry paging (--geometry-budget): the most resident at once, the largest three cells'
     // geometry and the whole model's (walls/geometry_pager.h sizes), MB; cumulative misses and
     // page-ins; cells drawn though not resident, summed over frames.

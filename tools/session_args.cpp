@@ -175,7 +175,11 @@ int reportSession(std::string_view command, const app::RunOptions& o, const app:
                                    : ", the control (the walls' cells, no textures)")
               << "; median frame " << display::median(s.frameMs) << " ms, worst " << worst << " ms (after the first "
               << worstAfterFirst << " ms); worst error " << s.worstErrorDeg << " deg (" << s.worstErrorPx
-              << " px); page-ins " << s.pageIns << ", misses " << s.misses << "\n"
+              << " px); page-ins " << s.pageIns << ", misses " << s.misses
+              << (s.checkFailures > 0
+                      ? ", " + std::to_string(s.checkFailures) + " textures refused by the content check"
+                      : std::string())
+              << "\n"
               << c << ": first frame after " << seconds(s.firstFrameSeconds) << " s (scene loaded at "
               << seconds(s.sceneSeconds) << " s, walls ready at " << seconds(s.wallsSeconds)
               << " s, walkthrough ready at " << seconds(s.readySeconds) << " s)\n"

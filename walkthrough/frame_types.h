@@ -42,8 +42,8 @@ struct WalkthroughSettings {
     // > 0: page the model's geometry by cell under this GPU budget in MB (walls/geometry_pager.h;
     // with virtual walls only); 0: every cell stays resident.
     double geometryBudgetMB = 0.0;
-    // Reads every MIP level of a baked texture file on the pager's thread; empty:
-    // scenes::readMipLevels. Tests inject slow or failing decoders here.
+    // Reads every MIP level of a baked texture file on the pager's thread; empty: the pager's
+    // own (walls/texture_pager.h). Tests inject slow or failing decoders here.
     walls::TexturePager::Decoder decoder;
     Transition transition = Transition::Blend;  // Warp: structure behind textured walls warped
     double morphSeconds = 0.5;                  // Warp: duration of a warp-morph, seconds, > 0
@@ -101,6 +101,9 @@ struct FrameResult {
     double gpuMs = 0.0;         // GL_TIME_ELAPSED of the frame's commands
     display::FrameStats stats;  // triangles and draw calls, all views
     walls::PagerStats pager;
+    // Textures refused this frame (walls::TexturePager::takeWarnings: a failed content check or
+    // decode), one line each, naming the file; each texture is reported once per run.
+    std::vector<std::string> warnings;
     std::size_t uploadedBytes = 0;       // wall texture bytes (all MIP levels) uploaded this
                                          // frame, at most WalkthroughSettings::uploadMBPerFrame
                                          // unless one texture alone is larger

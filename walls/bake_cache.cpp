@@ -33,6 +33,8 @@ CacheIndex indexCache(const std::filesystem::path& cache, const std::filesystem:
         } catch (const Error&) {
             continue;
         }
+        // An older manifest's hashes are not content checks: nothing of it is linked.
+        if (manifest.version < walls::kManifestVersion) continue;
         for (const walls::BakedTexture& t : manifest.textures)
             if (const auto key = textureKeyOf(t.file)) index.emplace(*key, CachedTexture{dir.path(), t});
     }
@@ -88,6 +90,39 @@ std::optional<walls::BakedTexture> linkCachedTexture(const CacheIndex& index, co
     // The source may have changed between the check and the link: check the copy itself.
     if (!walls::textureFileValid(folder, got)) return std::nullopt;
     return got;
+}
+
+bool isBakeTemporary(const std::string& name) {
+    const auto digitsAt = [&](std::size_t at, char end) {
+        std::size_t i = at;
+        while (i < name.size() && name[i] >= '0' && name[i] <= '9') ++i;
+        return i > at && (end == '\0' ? i == name.size() : i < name.size() && name[i] == end) ? i : std::string::npos;
+    };
+    if (name.size() < 2 || name[0] != '.') return false;
+    if (const std::size_t at = name.rfind(".tmp-"); at != std::string::npos && at > 1) {
+        const std::size_t dash = digitsAt(at + 5, '-');
+        if (dash == std::string::npos) return false;
+        std::size_t i = dash + 1;
+        while (i < name.size() && name[i] >= '0' && name[i] <= '9') ++i;
+        return i > dash + 1 && (i == name.size() || name[i] == '.');
+    }
+    if (const std::size_t at = name.rfind(".link-"); at != std::string::npos && at > 1)
+        return digitsAt(at + 6, '\0') != std::string::npos;
+    return false;
+}
+
+int removeStaleTemporaries(const std::filesystem::path& folder, std::chrono::seconds age) {
+    int removed = 0;
+    std::error_code ec;
+    const auto now = std::filesystem::file_time_type::clock::now();
+    for (const auto& file : std::filesystem::directory_iterator(folder, ec)) {
+        std::error_code fileEc;
+        if (!file.is_regular_file(fileEc) || !isBakeTemporary(file.path().filename().string())) continue;
+        const auto written = file.last_write_time(fileEc);
+        if (fileEc || now - written < age) continue;
+        if (std::filesystem::remove(file.path(), fileEc)) ++removed;
+    }
+    return removed;
 }
 
 int removeUnlistedTextures(const std::filesystem::path& folder, const walls::BakeManifest& manifest) {

@@ -5,6 +5,7 @@
 
 #include "walls/bake_manifest.h"
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -32,6 +33,19 @@ CacheIndex indexCache(const std::filesystem::path& cache, const std::filesystem:
 // `wanted` with its bytes and hash; nullopt otherwise.
 std::optional<walls::BakedTexture> linkCachedTexture(const CacheIndex& index, const std::filesystem::path& folder,
                                                      const walls::BakedTexture& wanted);
+
+// A temporary file older than this was left by a bake that died (a live writer's file is
+// written to at least this often): removeStaleTemporaries may delete it.
+inline constexpr std::chrono::minutes kStaleTemporaryAge{10};
+
+// True for the names of temporary files this code writes in a bake folder: ".<stem>.tmp-<pid>-<n><ext>"
+// (scenes::writeAtomically) and ".<name>.link-<pid>" (linkCachedTexture).
+bool isBakeTemporary(const std::string& fileName);
+
+// Removes the regular files in `folder` whose names isBakeTemporary accepts and whose
+// last-write time is at least `age` ago (only those: another process's bake still writing keeps
+// its files); returns how many. A folder that does not exist holds none.
+int removeStaleTemporaries(const std::filesystem::path& folder, std::chrono::seconds age);
 
 // Removes texture files (textureFileName pattern) in `folder` that `manifest` does not list.
 // Returns how many were removed.

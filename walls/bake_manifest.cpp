@@ -1,12 +1,14 @@
 #include "walls/bake_manifest.h"
 
 #include "config/json_reader.h"
+#include "walls/content_hash.h"
 #include "scenes/file_write.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <optional>
 
@@ -60,7 +62,70 @@ std::int64_t parseInt64(const config::JsonNode& node) {
     return v.get<std::int64_t>();
 }
 
+// The texture id and key in a baked file name, "tex_<id>_<16 hex>.<ext>" (walls/bake_key.h
+// textureFileName); nullopt for other names.
+struct NamedTexture {
+    int id = 0;
+    std::uint64_t key = 0;
+};
+std::optional<NamedTexture> textureOfName(const std::string& name) {
+    const std::size_t dot = name.find('.');
+    const std::size_t under = name.rfind('_', dot);
+    if (name.rfind("tex_", 0) != 0 || dot == std::string::npos || under == std::string::npos || under < 5 ||
+        dot - under - 1 != 16)
+        return std::nullopt;
+    const std::string id = name.substr(4, under - 4), key = name.substr(under + 1, 16);
+    if (id.empty() || id.size() > 9 || id.find_first_not_of("0123456789") != std::string::npos ||
+        key.find_first_not_of("0123456789abcdef") != std::string::npos)
+        return std::nullopt;
+    return NamedTexture{std::stoi(id), std::stoull(key, nullptr, 16)};
+}
+
+// Field by field, in a fixed order, so that any edit of what the check covers changes it.
+class CheckHasher {
+public:
+    CheckHasher& text(std::string_view s) {
+        integer(static_cast<std::uint64_t>(s.size()));
+        _h = contentHash(s, _h);
+        return *this;
+    }
+    CheckHasher& integer(std::uint64_t v) {
+        char b[8];
+        std::memcpy(b, &v, 8);
+        _h = contentHash(std::string_view(b, 8), _h);
+        return *this;
+    }
+    CheckHasher& number(double v) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &v, 8);
+        return integer(bits);
+    }
+    std::uint64_t value() const { return _h; }
+
+private:
+    std::uint64_t _h = 0;
+};
+
 }  // namespace
+
+std::uint64_t depthCheck(const BakedTexture& t) {
+    CheckHasher h;
+    h.text("depth v1").integer(static_cast<std::uint64_t>(t.id)).text(t.file);
+    h.text(t.depthFile).integer(t.depthBytes).integer(t.depthHash).number(t.depthRange.x).number(t.depthRange.y);
+    return h.value();
+}
+
+std::uint64_t entryCheck(const BakedTexture& t) {
+    CheckHasher h;
+    h.text("texture v1").integer(static_cast<std::uint64_t>(t.id));
+    h.integer(static_cast<std::uint64_t>(t.cell)).integer(static_cast<std::uint64_t>(t.wall));
+    h.number(t.samplingPoint.x).number(t.samplingPoint.y).number(t.samplingPoint.z);
+    h.integer(static_cast<std::uint64_t>(t.resolution.x)).integer(static_cast<std::uint64_t>(t.resolution.y));
+    h.text(t.file).integer(t.bytes).integer(t.hash);
+    h.integer(t.depthFile.empty() ? 0 : 1);
+    if (!t.depthFile.empty()) h.integer(depthCheck(t));
+    return h.value();
+}
 
 std::string manifestToJson(const BakeManifest& m) {
     nlohmann::json textures = nlohmann::json::array();
@@ -74,31 +139,65 @@ std::string manifestToJson(const BakeManifest& m) {
                             {"bytes", t.bytes},
                             {"hash", hex64(t.hash)},
                             {"mtimeNs", t.mtimeNs},
-                            {"inode", t.inode}});
+                            {"inode", t.inode},
+                            {"check", hex64(entryCheck(t))}});
+        if (const auto named = textureOfName(t.file)) textures.back()["texture"] = hex64(named->key);
         if (!t.depthFile.empty())
             textures.back()["depth"] = {{"file", t.depthFile},
                                         {"bytes", t.depthBytes},
                                         {"hash", hex64(t.depthHash)},
-                                        {"range", {t.depthRange.x, t.depthRange.y}}};
+                                        {"range", {t.depthRange.x, t.depthRange.y}},
+                                        {"check", hex64(depthCheck(t))}};
     }
-    const nlohmann::json j{{"version", 2}, {"key", hex64(m.key)}, {"alphaDeg", m.alphaDeg}, {"textures", textures}};
+    const nlohmann::json j{
+        {"version", kManifestVersion}, {"key", hex64(m.key)}, {"alphaDeg", m.alphaDeg}, {"textures", textures}};
     return j.dump(1) + "\n";
 }
+
+namespace {
+
+// The checks of a version 3 entry: its texture key against its file name, its own check, its
+// depth block's. An empty string when they hold, else why not.
+std::string entryProblem(const config::JsonNode& n, const BakedTexture& t) {
+    const std::optional<NamedTexture> named = textureOfName(t.file);
+    if (named && named->id != t.id)
+        return "names texture " + std::to_string(t.id) + " but its file \"" + t.file + "\" is texture " +
+               std::to_string(named->id) + "'s";
+    if (const auto key = n.find("texture"); named && (!key || key->string() != hex64(named->key)))
+        return "is for texture key " + (key ? key->string() : std::string("(none)")) + " but its file \"" + t.file +
+               "\" has key " + hex64(named->key);
+    if (!t.depthFile.empty()) {
+        const config::JsonNode d = n.at("depth");
+        const std::string got = d.has("check") ? d.at("check").string() : "(none)";
+        if (got != hex64(depthCheck(t)))
+            return "depth: its check does not match its fields (expected " + hex64(depthCheck(t)) + ", got " + got +
+                   ")";
+    }
+    const std::string got = n.has("check") ? n.at("check").string() : "(none)";
+    if (got != hex64(entryCheck(t)))
+        return "its check does not match its fields (expected " + hex64(entryCheck(t)) + ", got " + got + ")";
+    return {};
+}
+
+}  // namespace
 
 BakeManifest manifestFromJson(std::string_view text, const std::string& source) {
     const auto doc = config::JsonDocument::fromText(text, source);
     const config::JsonNode root = doc.root();
     root.expectKeys({"version", "key", "alphaDeg", "textures"});
-    const int version = root.at("version").integer(1, 2);
     BakeManifest m;
+    m.version = root.at("version").integer(1, kManifestVersion);
     m.key = parseHex64(root.at("key"));
     m.alphaDeg = root.at("alphaDeg").number(0.0, 90.0);
     for (const config::JsonNode& n : root.at("textures").items()) {
-        if (version == 1)
+        if (m.version == 1)
             n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "file", "bytes", "hash", "depth"});
-        else
+        else if (m.version == 2)
             n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "file", "bytes", "hash", "mtimeNs",
                           "inode", "depth"});
+        else
+            n.expectKeys({"id", "cell", "wall", "samplingPoint", "resolution", "texture", "file", "bytes", "hash",
+                          "mtimeNs", "inode", "depth", "check"});
         BakedTexture t;
         t.id = n.at("id").integer(0, 1 << 30);
         t.cell = n.at("cell").integer(0, 1 << 30);
@@ -110,12 +209,15 @@ BakeManifest manifestFromJson(std::string_view text, const std::string& source) 
             n.at("file").fail("expected a plain file name in the manifest's folder, got \"" + t.file + "\"");
         t.bytes = static_cast<std::uint64_t>(n.at("bytes").number(0.0, 1e15));
         t.hash = parseHex64(n.at("hash"));
-        if (version >= 2) {
+        if (m.version >= 2) {
             t.mtimeNs = parseInt64(n.at("mtimeNs"));
             t.inode = static_cast<std::uint64_t>(parseInt64(n.at("inode")));
         }
         if (const auto d = n.find("depth")) {
-            d->expectKeys({"file", "bytes", "hash", "range"});
+            if (m.version >= 3)
+                d->expectKeys({"file", "bytes", "hash", "range", "check"});
+            else
+                d->expectKeys({"file", "bytes", "hash", "range"});
             t.depthFile = d->at("file").string();
             if (t.depthFile.empty() || t.depthFile.find('/') != std::string::npos ||
                 t.depthFile.find("..") != std::string::npos)
@@ -125,6 +227,12 @@ BakeManifest manifestFromJson(std::string_view text, const std::string& source) 
             t.depthRange = d->at("range").vec2();
             if (!(t.depthRange.x >= 0.0 && t.depthRange.y >= t.depthRange.x))
                 d->at("range").fail("expected 0 <= near <= far");
+        }
+        if (m.version >= 3) {
+            if (const std::string problem = entryProblem(n, t); !problem.empty()) {
+                m.rejected.push_back(n.where() + " (\"" + t.file + "\"): " + problem);
+                continue;
+            }
         }
         m.textures.push_back(std::move(t));
     }
@@ -147,21 +255,31 @@ void writeManifest(const std::filesystem::path& folder, const BakeManifest& mani
 
 namespace {
 
-bool fileValid(const std::filesystem::path& path, std::uint64_t bytes, std::uint64_t hash) {
+std::string fileProblem(const std::filesystem::path& path, std::uint64_t bytes, std::uint64_t hash) {
     std::error_code ec;
-    if (std::filesystem::file_size(path, ec) != bytes || ec) return false;
-    try {
-        return hashFile(path) == hash;
-    } catch (const Error&) {
-        return false;
-    }
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec) return path.string() + ": missing or unreadable (" + ec.message() + ")";
+    if (size != bytes)
+        return path.string() + ": expected " + std::to_string(bytes) + " bytes, got " + std::to_string(size);
+    const std::optional<std::string> got = readFileBytes(path);
+    if (!got) return path.string() + ": cannot be read";
+    if (got->size() != bytes)
+        return path.string() + ": expected " + std::to_string(bytes) + " bytes, got " + std::to_string(got->size());
+    if (const std::uint64_t h = contentHash(*got); h != hash)
+        return path.string() + ": content check failed (expected hash " + hex64(hash) + ", got " + hex64(h) + ")";
+    return {};
 }
 
 }  // namespace
 
+std::string textureFileProblem(const std::filesystem::path& folder, const BakedTexture& t) {
+    std::string problem = fileProblem(folder / t.file, t.bytes, t.hash);
+    if (problem.empty() && !t.depthFile.empty()) problem = fileProblem(folder / t.depthFile, t.depthBytes, t.depthHash);
+    return problem;
+}
+
 bool textureFileValid(const std::filesystem::path& folder, const BakedTexture& t) {
-    return fileValid(folder / t.file, t.bytes, t.hash) &&
-           (t.depthFile.empty() || fileValid(folder / t.depthFile, t.depthBytes, t.depthHash));
+    return textureFileProblem(folder, t).empty();
 }
 
 namespace {

@@ -3,30 +3,39 @@
 // one tiled, MIP-mapped image file per texture (written by walls/gl/baker.h).
 //
 // manifest.json:
-//   {"version": 2, "key": "<16 hex digits>", "alphaDeg": 10,
+//   {"version": 3, "key": "<16 hex digits>", "alphaDeg": 10,
 //    "textures": [{"id": 0, "cell": 0, "wall": 0, "samplingPoint": [x, y, z],
-//                  "resolution": [w, h], "file": "tex_0000.tx", "bytes": 123, "hash": "<16 hex>",
-//                  "mtimeNs": 1796212345123456789, "inode": 1234,
-//                  "depth": {"file": "tex_0000.depth.tif", "bytes": 45, "hash": "<16 hex>",
-//                            "range": [near, far]}}]}
+//                  "resolution": [w, h], "texture": "<16 hex>", "file": "tex_0000_<16 hex>.bct",
+//                  "bytes": 123, "hash": "<16 hex>", "mtimeNs": 1796212345123456789,
+//                  "inode": 1234, "check": "<16 hex>",
+//                  "depth": {"file": "tex_0000_<16 hex>.depth.tif", "bytes": 45,
+//                            "hash": "<16 hex>", "range": [near, far], "check": "<16 hex>"}}]}
 // ("depth" only for depth walls, walls/depth_file.h; the texture is valid when both files are.)
 // `key` is a content hash of everything the textures depend on (scene files, plan, bake
-// settings); `hash` is the FNV-1a 64 hash of the texture file's bytes. A texture is valid when
-// its file exists with exactly `bytes` bytes and hash; anything else (missing, torn, replaced)
-// is re-baked and never drawn. Manifests are written atomically (temporary file + rename), and
-// after every texture file they list, so a manifest never names a file that was not complete.
+// settings). `hash` is the content check of the file's bytes (walls/content_hash.h, XXH64),
+// recorded when the file is written and compared whenever the file is read for drawing: a
+// texture is valid when its file exists with exactly `bytes` bytes and that hash; anything else
+// (missing, torn, flipped, replaced, swapped) is re-baked and never drawn. Manifests are written
+// atomically (temporary file + rename), and after every texture file they list, so a manifest
+// never names a file that was not complete.
 //
-// Two checks, cheap and exact: `mtimeNs` and `inode` are the file's last-write time (ns since
-// the Unix epoch) and inode number when its bytes were last hashed. At start-up a bake trusts a
-// file whose size, last-write time and inode still equal the manifest's (textureFileUnchanged:
-// one stat, no read) and hashes only the others. The inode catches files renamed or swapped
-// (which keep their times) and files replaced atomically; the time catches writes in place. The
-// file system's clock is coarse (a few ms), so a same-size write in place within that tick of
-// the stamp is not seen by the stat: the texture pager (walls/texture_pager.h) checks the hash
-// before drawing, so such a file is still never drawn (it falls back). Version 1 manifests (no
-// `mtimeNs`, `inode`) read with zeros: those files are hashed once, then stamped.
+// Which texture an entry is for: `texture` is the texture key (walls/bake_key.h) that its file
+// name carries too, and the id in the file name must be the entry's `id`. `check` is a hash of
+// the entry's own fields (id, cell, wall, sampling point, resolution, file, bytes, hash, and
+// the depth block's check, or that there is none); the depth block's `check` covers its file,
+// bytes, hash and range and the texture's id and file. An entry whose checks fail on reading
+// (an edited range, a deleted depth block, a file name pointed at another texture's) is dropped
+// and reported in BakeManifest::rejected: it is re-baked, never drawn.
+//
+// Stamps: `mtimeNs` and `inode` are the file's last-write time (ns since the Unix epoch) and
+// inode number when its bytes were last hashed. A run starting up may trust a file whose size,
+// time and inode still equal the manifest's (textureFileUnchanged: one stat, no read), because
+// the texture pager (walls/texture_pager.h) checks the hash of every file it pages in anyway;
+// `cavewall bake` hashes every listed file. Manifests of versions 1 and 2 (an older hash, no
+// checks) read with `version` set: their textures are stale and re-baked.
 
 #include "config/error.h"
+#include "walls/content_hash.h"
 
 #include <glm/glm.hpp>
 
@@ -45,7 +54,7 @@ struct BakedTexture {
     glm::ivec2 resolution{0, 0};
     std::string file;  // relative to the manifest's folder
     std::uint64_t bytes = 0;
-    std::uint64_t hash = 0;    // FNV-1a 64 of the file's bytes
+    std::uint64_t hash = 0;    // contentHash of the file's bytes (walls/content_hash.h)
     std::int64_t mtimeNs = 0;  // last-write time when the hash was checked; 0: unknown
     std::uint64_t inode = 0;   // inode number then
     // Depth walls only (walls/depth_file.h): the depth file beside `file`, its size and hash,
@@ -57,17 +66,29 @@ struct BakedTexture {
     bool operator==(const BakedTexture&) const = default;
 };
 
+// The manifest version written; older ones read (see above).
+inline constexpr int kManifestVersion = 3;
+
 struct BakeManifest {
     std::uint64_t key = 0;
     double alphaDeg = 0.0;
     std::vector<BakedTexture> textures;  // sorted by id
+    int version = kManifestVersion;      // as read; < kManifestVersion: every texture is stale
+    // Read only: one message per entry dropped because its checks failed ("<file>: textures[3]
+    // ("tex_0003_....bct"): its check does not match its fields (expected ..., got ...)").
+    std::vector<std::string> rejected;
     bool operator==(const BakeManifest&) const = default;
 };
 
-// FNV-1a 64-bit hash, incremental: pass the previous result as `seed` to continue.
+// The checks written with an entry (see above): of its depth block, and of the whole entry.
+std::uint64_t depthCheck(const BakedTexture& texture);
+std::uint64_t entryCheck(const BakedTexture& texture);
+
+// FNV-1a 64-bit hash (bake keys, walls/bake_key.h), incremental: pass the previous result as `seed` to continue.
 std::uint64_t fnv1a(std::string_view bytes, std::uint64_t seed = 0xcbf29ce484222325ull);
-std::uint64_t hashFile(const std::filesystem::path& file);  // throws Error when unreadable
-std::string hex64(std::uint64_t value);                     // 16 lower-case hex digits
+// fnv1a of a file (bake keys of scene files); throws Error when unreadable.
+std::uint64_t hashFile(const std::filesystem::path& file);
+std::string hex64(std::uint64_t value);  // 16 lower-case hex digits
 
 std::string manifestToJson(const BakeManifest& manifest);
 // Throws Error naming `source` and the JSON path on bad input.
@@ -80,8 +101,12 @@ void writeManifest(const std::filesystem::path& folder, const BakeManifest& mani
 // Writes bytes to `file` atomically (scenes::writeAtomically).
 void writeFileAtomically(const std::filesystem::path& file, std::string_view bytes);
 
-// True when the texture's file (and its depth file, if any) exists with the recorded size and hash.
+// True when the texture's file (and its depth file, if any) exists with the recorded size and
+// content hash (each file read once).
 bool textureFileValid(const std::filesystem::path& folder, const BakedTexture& texture);
+// Why textureFileValid is false, naming the file ("<folder>/<file>: content check failed
+// (expected hash ..., got ...)"); empty when it is true.
+std::string textureFileProblem(const std::filesystem::path& folder, const BakedTexture& texture);
 // Sets the texture's mtimeNs and inode from its file now (one stat); false (and zeros) when the
 // file cannot be read. Stamp before hashing: a write during the hash then shows next time.
 bool stampTexture(const std::filesystem::path& folder, BakedTexture& texture);

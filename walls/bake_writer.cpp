@@ -1,5 +1,6 @@
 #include "walls/bake_writer.h"
 
+#include "walls/content_hash.h"
 #include "walls/depth_file.h"
 
 #include "config/error.h"
@@ -15,6 +16,13 @@
 namespace cavewall::walls {
 
 namespace {
+
+// The content check of a file just written, read back from the disk.
+std::uint64_t writtenHash(const std::filesystem::path& file) {
+    const std::optional<std::uint64_t> hash = contentHashFile(file);
+    if (!hash) throw Error(file.string() + ": cannot read the written file back to hash it");
+    return *hash;
+}
 constexpr int kWorkerNice = 4;  // nice steps below the thread that made the writer
 }  // namespace
 
@@ -109,7 +117,7 @@ void BakeWriter::worker() {
             if (ec) throw Error(file.string() + ": cannot read the size of the written file (" + ec.message() + ")");
             // The time first: a change while hashing then shows as a changed time next start.
             walls::stampTexture(_folder, job.entry);
-            job.entry.hash = walls::hashFile(file);
+            job.entry.hash = writtenHash(file);
             lap(spent.hash);
             if (job.depth) {
                 // What the march reads (walls::marchDepths): a quarter of the texels when both
@@ -122,7 +130,7 @@ void BakeWriter::worker() {
                 if (ec)
                     throw Error(depthFile.string() + ": cannot read the size of the written file (" + ec.message() +
                                 ")");
-                job.entry.depthHash = walls::hashFile(depthFile);
+                job.entry.depthHash = writtenHash(depthFile);
                 job.entry.depthRange = depthRange(*job.depth);
                 lap(spent.hash);
             }

@@ -13,7 +13,15 @@ std::uint64_t cacheBudgetBytes(double megabytes, const std::string& flag) {
         got << megabytes;
         throw Error(flag + ": expected a disk budget in MB in (0, 1e9], got " + got.str());
     }
-    return static_cast<std::uint64_t>(std::llround(megabytes * 1024.0 * 1024.0));
+    const auto bytes = static_cast<std::uint64_t>(std::llround(megabytes * 1024.0 * 1024.0));
+    if (bytes == 0) {
+        std::ostringstream got;
+        got << megabytes;
+        // Zero bytes would read as "no budget": refused rather than rounded away.
+        throw Error(flag + ": expected a disk budget of at least one byte, got " + got.str() +
+                    " MB (0 bytes once rounded)");
+    }
+    return bytes;
 }
 
 void CacheBudget::frame(const std::vector<int>& now, const std::vector<int>& soon) {

@@ -19,8 +19,9 @@
 
 namespace cavewall::walls {
 
-// MB as given on the command line -> bytes. Throws cavewall::Error naming `flag` unless
-// 0 < megabytes <= 1e9 (a petabyte) and finite.
+// MB as given on the command line -> bytes (rounded to the nearest). Throws cavewall::Error
+// naming `flag` unless 0 < megabytes <= 1e9 (a petabyte), finite, and at least one byte once
+// rounded (a budget of 0 bytes would mean none).
 std::uint64_t cacheBudgetBytes(double megabytes, const std::string& flag = "--cache-budget");
 
 class CacheBudget {

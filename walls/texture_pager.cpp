@@ -1,5 +1,7 @@
 #include "walls/texture_pager.h"
 
+#include "config/error.h"
+#include "walls/content_hash.h"
 #include "walls/depth_file.h"
 
 #include <algorithm>
@@ -47,6 +49,88 @@ void TexturePager::request(const std::vector<int>& now, const std::vector<int>& 
     if (!_queue.empty()) _wake.notify_one();
 }
 
+namespace {
+
+// The content check of one file as the manifest lists it: its bytes (read once) when they are
+// the listed size and hash, else why not.
+struct CheckedFile {
+    std::optional<std::string> bytes;
+    std::string problem;  // empty when `bytes` holds
+};
+
+CheckedFile checkFile(const std::filesystem::path& file, std::uint64_t size, std::uint64_t hash) {
+    CheckedFile c;
+    std::optional<std::string> got = readFileBytes(file);
+    if (!got) {
+        c.problem = "cannot be read";
+    } else if (got->size() != size) {
+        c.problem = "expected " + std::to_string(size) + " bytes, got " + std::to_string(got->size());
+    } else if (const std::uint64_t h = contentHash(*got); h != hash) {
+        c.problem = "content check failed (expected hash " + hex64(hash) + ", got " + hex64(h) + ")";
+    } else {
+        c.bytes = std::move(got);
+    }
+    return c;
+}
+
+bool isBlockFile(std::string_view bytes) { return bytes.size() >= 4 && bytes.substr(0, 4) == "CWBC"; }
+
+}  // namespace
+
+// One page-in on the loader thread: each file is read once and checked against the manifest
+// before it is decoded. Block files (".bct", the default format) decode from the checked bytes
+// themselves; files decoded from their path (TIFF, a depth file, a caller's decoder) are
+// checked again after decoding, so a file replaced meanwhile is refused too.
+std::optional<DecodedTexture> TexturePager::load(int id, const BakedTexture& texture, std::string& problem) const {
+    const auto path = _folder / texture.file;
+    const auto refuse = [&](const std::filesystem::path& file, const std::string& why) {
+        problem = file.string() + ": " + why;
+        return std::nullopt;
+    };
+    CheckedFile colour = checkFile(path, texture.bytes, texture.hash);
+    if (!colour.bytes) return refuse(path, colour.problem);
+    DecodedTexture d{id, {}, std::nullopt, {}, 0};
+    const bool fromBytes = !_decoder && isBlockFile(*colour.bytes);
+    d.levels = fromBytes ? blocksFromBytes(*colour.bytes, path.string())
+                         : (_decoder ? _decoder(path) : readBakedTexture(path));
+    colour.bytes.reset();
+    if (!texture.depthFile.empty()) {
+        const auto depthPath = _folder / texture.depthFile;
+        const CheckedFile depthBytes = checkFile(depthPath, texture.depthBytes, texture.depthHash);
+        if (!depthBytes.bytes) return refuse(depthPath, depthBytes.problem);
+        DepthImage depth = readDepthFile(depthPath);
+        // The file holds the march's depths (marchDepths, done by the bake).
+        const glm::ivec2 march = marchDepthSize(d.levels.width(), d.levels.height());
+        if (glm::ivec2(depth.width, depth.height) != march)
+            throw Error(depthPath.string() + ": expected the march's depths of its colour, " + std::to_string(march.x) +
+                        " x " + std::to_string(march.y) + ", got " + std::to_string(depth.width) + " x " +
+                        std::to_string(depth.height));
+        const CheckedFile again = checkFile(depthPath, texture.depthBytes, texture.depthHash);
+        if (!again.bytes) return refuse(depthPath, again.problem + " (while decoding)");
+        clampDepths(depth, texture.depthRange);
+        d.depth = depthTextureData(std::move(depth));
+        d.depth->samplingPoint = texture.samplingPoint;
+        d.depth->range = texture.depthRange;
+    }
+    if (!fromBytes) {
+        const CheckedFile again = checkFile(path, texture.bytes, texture.hash);
+        if (!again.bytes) return refuse(path, again.problem + " (while decoding)");
+    }
+    if (d.depth) {
+        // The depths cover every texel of colour; a depth texture drawn flat (a wall whose
+        // other texture has no depth) needs the same margin as a flat one.
+        const glm::dvec2 colourTexels(d.levels.width(), d.levels.height());
+        d.content = grown(d.depth->content, double(kCoveredMargin) / colourTexels);
+    } else {
+        d.content = coveredRect(d.levels, kCoveredMargin);
+    }
+    d.bytes = d.levels.bytes() + (d.depth ? d.depth->gpuBytes() : 0);
+    // The uploader relies on at least one level of non-zero size.
+    if (d.levels.count() == 0 || d.levels.width() <= 0 || d.levels.height() <= 0)
+        throw Error(path.string() + ": expected texels, got none");
+    return d;
+}
+
 void TexturePager::worker() {
     std::unique_lock lock(_mutex);
     for (;;) {
@@ -57,50 +141,38 @@ void TexturePager::worker() {
         _queued.erase(id);
         _decoding.insert(id);
         const BakedTexture texture = _textures.at(id);
-        const auto path = _folder / texture.file;
         lock.unlock();
-        DecodedTexture d{id, {}, std::nullopt, {}, 0};
-        bool ok = true;
+        std::optional<DecodedTexture> d;
+        std::string problem;
+        bool checkFailed = false;
         try {
-            // Only the bytes the manifest vouches for are drawn: checked before decoding and
-            // again after, so a file replaced meanwhile is refused too (both files of a depth
-            // wall's texture).
-            ok = textureFileValid(_folder, texture);
-            if (ok) d.levels = _decoder(path);
-            if (ok && !texture.depthFile.empty()) {
-                DepthImage depth = readDepthFile(_folder / texture.depthFile);
-                // The file holds the march's depths (marchDepths, done by the bake).
-                ok = glm::ivec2(depth.width, depth.height) == marchDepthSize(d.levels.width(), d.levels.height());
-                if (ok) {
-                    clampDepths(depth, texture.depthRange);
-                    d.depth = depthTextureData(std::move(depth));
-                    d.depth->samplingPoint = texture.samplingPoint;
-                    d.depth->range = texture.depthRange;
-                }
-            }
-            ok = ok && textureFileValid(_folder, texture);
-            if (ok && d.depth) {
-                // The depths cover every texel of colour; a depth texture drawn flat (a wall
-                // whose other texture has no depth) needs the same margin as a flat one.
-                const glm::dvec2 colourTexels(d.levels.width(), d.levels.height());
-                d.content = grown(d.depth->content, double(kCoveredMargin) / colourTexels);
-            } else if (ok) {
-                d.content = coveredRect(d.levels, kCoveredMargin);
-            }
-            d.bytes = d.levels.bytes() + (d.depth ? d.depth->gpuBytes() : 0);
-            // The uploader relies on at least one level of non-zero size.
-            ok = ok && d.levels.count() > 0 && d.levels.width() > 0 && d.levels.height() > 0;
-        } catch (const std::exception&) {
-            ok = false;
+            d = load(id, texture, problem);
+            checkFailed = !d;
+        } catch (const std::exception& e) {
+            problem = e.what();
         }
         lock.lock();
         _decoding.erase(id);
-        if (ok)
-            _ready.push_back(std::move(d));
-        else if (_failed.insert(id).second)
+        if (d) {
+            _ready.push_back(std::move(*d));
+        } else if (_failed.insert(id).second) {
             ++_stats.failures;
+            _stats.checkFailures += checkFailed;
+            if (checkFailed) _refused.push_back(id);
+            _warnings.push_back(problem + (checkFailed ? " (not drawn: the wall falls back)" : " (cannot decode it)"));
+        }
         if (_queue.empty() && _decoding.empty()) _idle.notify_all();
     }
+}
+
+std::vector<int> TexturePager::takeRefused() {
+    std::lock_guard lock(_mutex);
+    return std::exchange(_refused, {});
+}
+
+std::vector<std::string> TexturePager::takeWarnings() {
+    std::lock_guard lock(_mutex);
+    return std::exchange(_warnings, {});
 }
 
 std::optional<DecodedTexture> TexturePager::takeNext(bool nowOnly) {

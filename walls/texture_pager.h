@@ -10,9 +10,13 @@
 // when a new texture would exceed it, the least recently wanted textures that are not wanted
 // now are evicted. A texture that is not resident is a miss for that frame: the runtime keeps
 // drawing what it drew before (the previous texture, or the geometry) — never a black wall.
-// A file whose size or hash differs from the manifest's (checked before and after decoding:
-// replaced, torn, swapped with another) is never drawn. Such files and decoding failures mark
-// the texture failed for good and count it.
+// Content check: every page-in reads each file once and compares its size and content hash
+// (walls/content_hash.h) with the manifest's before decoding; a ".bct" file decodes from the
+// bytes it checked, other files are checked again after decoding. A file that differs (flipped,
+// torn, replaced, swapped with another) is never drawn: the texture is marked failed for good,
+// its wall falls back as for any miss, and the failure is counted (checkFailures) and reported
+// once (takeWarnings: one line naming the file). Decoding failures are marked, counted and
+// reported the same way.
 
 #include "scenes/scene.h"
 #include "walls/bake_manifest.h"
@@ -28,6 +32,7 @@
 #include <mutex>
 #include <optional>
 #include <set>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -60,16 +65,18 @@ struct PagerStats {
     long pageIns = 0;  // textures made resident so far
     long misses = 0;   // wanted-now textures that were not resident, summed over frames
     long evictions = 0;
-    long failures = 0;  // textures whose file could not be decoded
+    long failures = 0;       // textures refused for good: decoding failed or a content check did
+    long checkFailures = 0;  // of `failures`: files whose size or content hash is not the manifest's
 };
 
 class TexturePager {
 public:
-    // A function returning std::vector<scenes::Image> (RGBA8 levels) converts to this.
+    // A function returning std::vector<scenes::Image> (RGBA8 levels) converts to this. Empty: the
+    // pager's own (readBakedTexture; ".bct" files decoded from the bytes it checked).
     using Decoder = std::function<TextureLevels(const std::filesystem::path&)>;
 
     // `folder` holds the manifest's files. `budgetMB` > 0. `decoder` reads every MIP level of a
-    // file (throws cavewall::Error on failure; walls::readBakedTexture reads every format).
+    // file (throws cavewall::Error on failure), or empty for the pager's own.
     TexturePager(std::filesystem::path folder, BakeManifest manifest, double budgetMB, Decoder decoder);
     ~TexturePager();
     TexturePager(const TexturePager&) = delete;
@@ -100,12 +107,19 @@ public:
     bool isResident(int id) const;
     bool hasFailed(int id) const;
     PagerStats stats() const;
+    // One line per texture refused since the last call ("<file>: content check failed (expected
+    // hash ..., got ...) (not drawn: the wall falls back)"), for the caller to print once.
+    std::vector<std::string> takeWarnings();
+    // The ids of textures refused by the content check since the last call (baking on demand
+    // bakes them again: gl::BackgroundBaker::rebake; addTexture then clears the failure).
+    std::vector<int> takeRefused();
     // Blocks until the decoder is idle (nothing queued or decoding). For tests and for the
     // bench's warm-up; the runtime never calls it per frame.
     void waitIdle();
 
 private:
     void worker();
+    std::optional<DecodedTexture> load(int id, const BakedTexture& texture, std::string& problem) const;
 
     std::filesystem::path _folder;
     std::map<int, BakedTexture> _textures;  // by id
@@ -119,6 +133,8 @@ private:
     std::vector<DecodedTexture> _ready;
     ResidencyCore _residency;  // resident ids, budget and eviction (walls/residency.h)
     PagerStats _stats;         // misses and failures (the rest from _residency)
+    std::vector<std::string> _warnings;
+    std::vector<int> _refused;
     bool _stop = false;
     std::thread _thread;
 };

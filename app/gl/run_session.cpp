@@ -43,6 +43,7 @@ gl::BakeRequest bakeRequest(const RunOptions& o, gl::Context* context) {
     gl::BakeRequest request;
     request.scene = o.scene;
     request.context = context;
+    request.trustStamps = true;  // the pager checks each file's content as it pages it in
     request.settings.maxResolution = o.bakeResolution;
     request.settings.kind = o.wallKind;
     request.settings.textureFormat = o.textureFormat;
@@ -59,6 +60,7 @@ walls::WallSetup prepareWallsOnDemand(const RunOptions& o, const scenes::Scene& 
     options.niceness = o.bakeNice;
     if (o.cacheBudgetMB > 0.0) options.cacheBudgetBytes = walls::cacheBudgetBytes(o.cacheBudgetMB, "--cache-budget");
     baker = std::make_unique<gl::BackgroundBaker>(scene, d, setup, bakeRequest(o, nullptr), options);
+    for (const std::string& w : baker->startWarnings()) std::cerr << "run: warning: " << w << std::endl;
     setup.folder = baker->folder();
     setup.manifest = baker->manifest();
     if (o.verbose)
@@ -103,6 +105,7 @@ walls::WallSetup prepareWalls(const RunOptions& o, const scenes::Scene& scene, c
                       << std::flush;
     };
     gl::BakeResult baked = gl::bakeWalls(scene, d, setup, request);
+    for (const std::string& w : baked.warnings) std::cerr << "run: warning: " << w << std::endl;
     setup.folder = baked.folder;
     setup.manifest = std::move(baked.manifest);
     if (o.verbose)
@@ -193,6 +196,7 @@ void summarizeWalkthrough(const gl::Walkthrough& walkthrough, RunSummary& summar
         summary.clustersMade = b.made;
         summary.clustersReused = b.reused;
         summary.clustersSeconds = b.seconds;
+        for (const std::string& w : b.warnings) std::cerr << "run: warning: " << w << std::endl;
         summary.msPerTriangle = m->costs.msPerTriangle;
         summary.msPerObject = m->costs.msPerObject;
         summary.texturedBoxMs = m->costs.texturedBoxMs;
@@ -256,6 +260,8 @@ void recordFrame(const Session& s, long i, const walkthrough::FrameInput& in, wa
     summary.worstLodErrorPx = std::max(summary.worstLodErrorPx, r.lodErrorPx);
     summary.misses = r.pager.misses;
     summary.pageIns = r.pager.pageIns;
+    summary.checkFailures = r.pager.checkFailures;
+    for (const std::string& w : r.warnings) std::cerr << "run: warning: " << w << std::endl;
     summary.geometryPeakMB = std::max(summary.geometryPeakMB, r.geometry.residentMB);
     summary.geometryMisses = r.geometry.misses;
     summary.geometryPageIns = r.geometry.pageIns;

@@ -6,6 +6,7 @@
 #include "scenes/image_io.h"
 #include "walls/bake_key.h"
 #include "walls/bake_manifest.h"
+#include "walls/content_hash.h"
 #include "walls/gl/offscreen_target.h"
 #include "walls/gl/wall_quad.h"
 #include "walls/gl/wall_renderer.h"
@@ -25,6 +26,9 @@ namespace {
 
 using hierarchy::kBoxFaces;
 using hierarchy::kFaceRegions;
+
+// The cluster.json version written: 2 lists each file's size and content hash.
+constexpr int kClusterVersion = 2;
 
 std::string fileName(int face, int region) { return "f" + std::to_string(face) + "r" + std::to_string(region) + ".tx"; }
 
@@ -98,17 +102,44 @@ ClusterImpostors::ClusterImpostors(const scenes::Scene& scene, hierarchy::Cluste
         }
         model.hasImpostors[n] = true;
     }
+    if (_stats.stale > 0)
+        _stats.warnings.push_back((cache / "clusters").string() + ": " + std::to_string(_stats.stale) +
+                                  " cluster folders of an older version without content checks (expected version " +
+                                  std::to_string(kClusterVersion) + "): made again");
     _stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 ClusterImpostors::~ClusterImpostors() = default;
 
+namespace {
+
+// Why `file` is not the one listed (size, content hash; walls/content_hash.h), else empty.
+std::string listedFileProblem(const std::filesystem::path& file, const nlohmann::json& listed) {
+    const std::optional<std::string> bytes = walls::readFileBytes(file);
+    if (!bytes) return file.string() + ": cannot be read";
+    const auto size = listed.at("bytes").get<std::uint64_t>();
+    if (bytes->size() != size)
+        return file.string() + ": expected " + std::to_string(size) + " bytes, got " + std::to_string(bytes->size());
+    const std::string expected = listed.at("hash").get<std::string>();
+    if (const std::string got = walls::hex64(walls::contentHash(*bytes)); got != expected)
+        return file.string() + ": content check failed (expected hash " + expected + ", got " + got + ")";
+    return {};
+}
+
+}  // namespace
+
+// Each texture file is checked against cluster.json's size and hash before it is decoded and
+// again after (it is decoded from its path): a file that differs is never drawn, the cluster
+// is made again, and the file is named once in the warnings.
 bool ClusterImpostors::load(const std::filesystem::path& folder, Node& node, hierarchy::ClusterAccuracy& accuracy) {
     try {
         std::ifstream in(folder / "cluster.json");
         if (!in) return false;
         const nlohmann::json j = nlohmann::json::parse(in);
-        if (j.at("version").get<int>() != 1) return false;
+        if (j.at("version").get<int>() != kClusterVersion) {
+            ++_stats.stale;
+            return false;
+        }
         for (int f = 0; f < kBoxFaces; ++f) {
             const auto& a = j.at("averages").at(f);
             node.faces[f] = {{a.at(0).get<float>(), a.at(1).get<float>(), a.at(2).get<float>()}, a.at(3).get<float>()};
@@ -118,8 +149,20 @@ bool ClusterImpostors::load(const std::filesystem::path& folder, Node& node, hie
             accuracy.average[d] = j.at("average").at(d).get<double>();
         }
         for (int f = 0; f < kBoxFaces; ++f) {
-            for (int r = 0; r < kFaceRegions; ++r)
-                node.textures[f][r] = upload(scenes::readMipLevels(folder / fileName(f, r)));
+            for (int r = 0; r < kFaceRegions; ++r) {
+                const std::filesystem::path file = folder / fileName(f, r);
+                const nlohmann::json& listed = j.at("files").at(fileName(f, r));
+                std::string problem = listedFileProblem(file, listed);
+                std::vector<scenes::Image> levels;
+                if (problem.empty()) levels = scenes::readMipLevels(file);
+                if (problem.empty()) problem = listedFileProblem(file, listed);
+                if (!problem.empty()) {
+                    ++_stats.checkFailures;
+                    _stats.warnings.push_back(problem + " (making the cluster's impostors again)");
+                    return false;
+                }
+                node.textures[f][r] = upload(std::move(levels));
+            }
             node.averages[f] = colourTexture(node.faces[f].linearColour);
         }
         return true;
@@ -135,6 +178,7 @@ void ClusterImpostors::make(const std::filesystem::path& folder, const hierarchy
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
     if (ec) throw Error(folder.string() + ": cannot create the cluster cache folder (" + ec.message() + ")");
+    nlohmann::json files = nlohmann::json::object();
     for (int f = 0; f < kBoxFaces; ++f)
         for (int r = 0; r < kFaceRegions; ++r) {
             const scenes::Image straight =
@@ -142,13 +186,18 @@ void ClusterImpostors::make(const std::filesystem::path& folder, const hierarchy
                                   hierarchy::faceResolution(node.box, f, _settings.resolution), cluster.objects);
             if (r == 0) node.faces[f] = hierarchy::faceAverage(straight);
             std::vector<scenes::Image> levels = walls::premultipliedMipChain(straight);
-            walls::writeMipFile(folder / fileName(f, r), levels, {16, "zip"});
+            const std::filesystem::path file = folder / fileName(f, r);
+            walls::writeMipFile(file, levels, {16, "zip"});
+            const std::optional<std::string> written = walls::readFileBytes(file);
+            if (!written) throw Error(file.string() + ": cannot read the written file back to hash it");
+            files[fileName(f, r)] = {{"bytes", written->size()}, {"hash", walls::hex64(walls::contentHash(*written))}};
             node.textures[f][r] = upload(std::move(levels));
         }
     for (int f = 0; f < kBoxFaces; ++f) node.averages[f] = colourTexture(node.faces[f].linearColour);
     accuracy = measureAccuracy(index);
     nlohmann::json j;
-    j["version"] = 1;
+    j["version"] = kClusterVersion;
+    j["files"] = files;
     for (const hierarchy::FaceAverage& a : node.faces)
         j["averages"].push_back({a.linearColour.r, a.linearColour.g, a.linearColour.b, a.coverage});
     j["textured"] = accuracy.textured;

@@ -19,8 +19,12 @@
 // Cache: <cache>/clusters/<16 hex digits>/ per cluster, keyed by the content keys of its objects
 // (walls::objectKeys: meshes, materials, images, placement) and the settings, so an unchanged
 // cluster is found again whatever else changed. A folder holds one MIP file per face and region
-// (f<face>r<region>.tx) and cluster.json (averages, accuracies), written last and atomically: a
-// folder without a readable cluster.json is made again.
+// (f<face>r<region>.tx) and cluster.json (version 2: averages, accuracies, and each file's size
+// and content hash, walls/content_hash.h), written last and atomically: a folder without a
+// readable cluster.json is made again. Reading, each file is checked against its size and hash
+// before it is decoded and again after; a file that differs (flipped, torn, swapped) is never
+// drawn: the cluster is made again, counted (checkFailures) and the file named once in
+// `warnings`. Folders of version 1 (no hashes) are stale: made again, said once.
 //
 // Needs the rendering context current for every call and for destruction.
 
@@ -33,6 +37,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace cavewall::gl {
@@ -51,7 +56,10 @@ void validateClusterBakeSettings(const ClusterBakeSettings& settings);
 
 struct ClusterBakeStats {
     int clusters = 0, made = 0, reused = 0;  // made: rendered now; reused: read from the cache
+    int checkFailures = 0;                   // of `made`: a file failed its content check
+    int stale = 0;                           // of `made`: an older folder without content checks
     double seconds = 0.0;
+    std::vector<std::string> warnings;  // one line per failed file, one for all stale folders
 };
 
 class ClusterImpostors {

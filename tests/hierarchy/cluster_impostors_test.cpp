@@ -15,6 +15,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 
 namespace cavewall::testing {
 namespace {
@@ -89,6 +91,54 @@ TEST_F(ClusterImpostorsTest, ATexturedBoxShowsFullDetailAtItsSamplingEyeAndIsCac
     hierarchy::ClusterModel third = modelOf(moved);
     gl::ClusterImpostors remade(moved, third, settings, cache);
     EXPECT_EQ(remade.stats().made, 1);
+}
+
+// A flipped byte in a cached face texture (same size, same time) is caught by its content
+// check: the cluster is made again, counted, and the file named once; then it reads again. A
+// folder of the older version (no hashes) is made again, said in one line.
+TEST_F(ClusterImpostorsTest, AFlippedOrStaleImpostorIsMadeAgainAndSaidOnce) {
+    const scenes::Scene scene = threeBoxes();
+    const std::filesystem::path cache = testOutputFolder("cluster-impostors-check") / "cache";
+    std::filesystem::remove_all(cache);
+    const gl::ClusterBakeSettings settings{16, 16, 0.35f};
+    hierarchy::ClusterModel first = modelOf(scene);
+    ASSERT_EQ(gl::ClusterImpostors(scene, first, settings, cache).stats().made, 1);
+    const std::filesystem::path folder = std::filesystem::directory_iterator(cache / "clusters")->path();
+    const std::filesystem::path file = folder / "f2r3.tx";
+    const auto stamp = std::filesystem::last_write_time(file);
+    {
+        std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+        f.seekg(-20, std::ios::end);
+        const char c = static_cast<char>(f.get());
+        f.seekp(-20, std::ios::end);
+        f.put(static_cast<char>(c ^ 0x55));
+    }
+    std::filesystem::last_write_time(file, stamp);
+    hierarchy::ClusterModel second = modelOf(scene);
+    const gl::ClusterImpostors flipped(scene, second, settings, cache);
+    EXPECT_EQ(flipped.stats().made, 1);
+    EXPECT_EQ(flipped.stats().checkFailures, 1);
+    ASSERT_EQ(flipped.stats().warnings.size(), 1u);
+    EXPECT_THAT(flipped.stats().warnings[0],
+                ::testing::StartsWith(file.string() + ": content check failed (expected hash "));
+    EXPECT_THAT(flipped.stats().warnings[0], ::testing::EndsWith("(making the cluster's impostors again)"));
+    hierarchy::ClusterModel third = modelOf(scene);
+    const gl::ClusterImpostors again(scene, third, settings, cache);
+    EXPECT_EQ(again.stats().reused, 1);
+    EXPECT_TRUE(again.stats().warnings.empty());
+
+    // cluster.json as the older version wrote it: no "files".
+    nlohmann::json j = nlohmann::json::parse(std::ifstream(folder / "cluster.json"));
+    j["version"] = 1;
+    j.erase("files");
+    std::ofstream(folder / "cluster.json") << j.dump();
+    hierarchy::ClusterModel fourth = modelOf(scene);
+    const gl::ClusterImpostors stale(scene, fourth, settings, cache);
+    EXPECT_EQ(stale.stats().made, 1);
+    EXPECT_EQ(stale.stats().stale, 1);
+    ASSERT_EQ(stale.stats().warnings.size(), 1u);
+    EXPECT_THAT(stale.stats().warnings[0], ::testing::HasSubstr("1 cluster folders of an older version without "
+                                                                "content checks (expected version 2): made again"));
 }
 
 TEST_F(ClusterImpostorsTest, CostsAreMeasuredPositiveAndCachedPerRendererAndResolution) {

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <latch>
 #include <optional>
 
@@ -133,6 +134,59 @@ TEST_F(OnDemandTest, FirstFrameBeforeTheBakeThenBakedTexturesThenNothingToBake) 
     EXPECT_EQ(again.stats().baked, 0);
     ASSERT_NE(wallAB(r), nullptr);
     EXPECT_FALSE(wallAB(r)->textures.empty());
+}
+
+// A run's start trusts unchanged stamps (BakeRequest::trustStamps); a file flipped in place
+// keeping its size, time and inode is caught when the pager pages it in: never drawn, handed
+// back to the baker (rebake) and baked again, then drawn.
+TEST_F(OnDemandTest, AFileThatFailsItsContentCheckIsBakedAgain) {
+    {
+        gl::BackgroundBaker first(scene.scene, scene.description, scene.walls, request);
+        first.want({}, {}, *textured);
+        first.waitIdle();
+    }
+    const std::filesystem::path folder = std::filesystem::directory_iterator(root / "cache")->path();
+    const walls::BakeManifest baked = walls::readManifest(folder);
+    ASSERT_FALSE(baked.textures.empty());
+    for (const walls::BakedTexture& t : baked.textures) {
+        const auto stamp = std::filesystem::last_write_time(folder / t.file);
+        std::fstream f(folder / t.file, std::ios::in | std::ios::out | std::ios::binary);
+        f.seekg(-5, std::ios::end);
+        const char c = static_cast<char>(f.get());
+        f.seekp(-5, std::ios::end);
+        f.put(static_cast<char>(c ^ 0x20));
+        f.close();
+        std::filesystem::last_write_time(folder / t.file, stamp);
+    }
+    request.trustStamps = true;
+    gl::BackgroundBaker baker(scene.scene, scene.description, scene.walls, request);
+    EXPECT_EQ(baker.stats().missingAtStart, 0);  // the stamps are unchanged: trusted at the start
+    auto walk = walkthrough(baker);
+    const walkthrough::FrameResult first = walk->renderFrame(in);
+    walk->waitForTextures();
+    in.frame = 1;
+    const walkthrough::FrameResult refused = walk->renderFrame(in);  // hands the refusals back
+    ASSERT_NE(wallAB(refused), nullptr);
+    EXPECT_TRUE(wallAB(refused)->textures.empty());  // never drawn
+    EXPECT_GE(refused.pager.checkFailures, 1);
+    EXPECT_FALSE(first.warnings.empty() && refused.warnings.empty());
+    baker.waitIdle();
+    EXPECT_GE(baker.stats().rebakes, 1);
+    EXPECT_EQ(baker.stats().rebakes, baker.stats().baked);
+    in.frame = 2;
+    walk->renderFrame(in);  // takes the new bakes
+    walk->waitForTextures();
+    in.frame = 3;
+    const walkthrough::FrameResult drawn = walk->renderFrame(in);
+    ASSERT_NE(wallAB(drawn), nullptr);
+    EXPECT_FALSE(wallAB(drawn)->textures.empty());
+    for (const auto& [id, weight] : wallAB(drawn)->textures) {
+        const walls::BakeManifest now = walls::readManifest(folder);
+        const auto t = std::find_if(now.textures.begin(), now.textures.end(),
+                                    [&, id = id](const walls::BakedTexture& e) { return e.id == id; });
+        ASSERT_NE(t, now.textures.end());
+        EXPECT_TRUE(walls::textureFileValid(folder, *t)) << t->file;
+    }
 }
 
 // Depth walls baked on demand: each texture arrives with its depth file and is drawn by the

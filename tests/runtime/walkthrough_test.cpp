@@ -237,5 +237,61 @@ TEST_F(WalkthroughTest, PagingUnderATinyBudgetNeverLeavesAWallMissing) {
     gate.permits.release(1 << 19);  // let the pager's thread finish before the walkthrough ends
 }
 
+// Two wall textures swapped on disk after the bake checked them (the walkthrough is given the
+// checked manifest): each page-in checks the file's content, so neither swapped texture is
+// ever drawn; the wall falls back, the refusals are counted and each file is named once.
+TEST_F(WalkthroughTest, TexturesSwappedOnDiskAfterTheCheckAreNeverDrawn) {
+    const SmallPlant& scene = twoCells();
+    const display::Display display = testDisplay(32);
+    gl::WalkthroughOptions options;
+    options.synchronousPaging = true;  // every wanted texture is paged in before the frame draws
+    walls::WallSetup copy = scene.walls;
+    copy.folder = testOutputFolder("walkthrough-swapped") / "bake";
+    std::filesystem::remove_all(copy.folder);
+    std::filesystem::create_directories(copy.folder.parent_path());
+    std::filesystem::copy(scene.walls.folder, copy.folder, std::filesystem::copy_options::recursive);
+    walkthrough::FrameInput in;
+    // The first place in A, facing the wall A|B, where the intact copy draws a texture on it.
+    std::vector<int> drawn;
+    {
+        gl::Walkthrough intact(scene.scene, scene.description, display, *context, copy, options);
+        for (double x = -9.5; x < 0.0 && drawn.empty(); x += 0.5) {
+            in.worldFromCave = cavePlacedAt({x, 1.7, 0.0});
+            for (const walkthrough::WallState& s : intact.renderFrame(in).walls)
+                for (const auto& [id, weight] : s.textures) drawn.push_back(id);
+        }
+    }
+    ASSERT_FALSE(drawn.empty());
+    // Swap the first drawn texture's file with another texture's file.
+    const auto entry = [&](int id) {
+        return *std::find_if(copy.manifest.textures.begin(), copy.manifest.textures.end(),
+                             [&](const walls::BakedTexture& t) { return t.id == id; });
+    };
+    const walls::BakedTexture a = entry(drawn[0]);
+    const walls::BakedTexture b = *std::find_if(copy.manifest.textures.begin(), copy.manifest.textures.end(),
+                                                [&](const walls::BakedTexture& t) { return t.id != a.id; });
+    std::filesystem::rename(copy.folder / a.file, copy.folder / "swap");
+    std::filesystem::rename(copy.folder / b.file, copy.folder / a.file);
+    std::filesystem::rename(copy.folder / "swap", copy.folder / b.file);
+    gl::Walkthrough swapped(scene.scene, scene.description, display, *context, copy, options);
+    std::vector<std::string> warnings;
+    long refused = 0;
+    for (int frame = 0; frame < 4; ++frame) {
+        in.frame = frame;
+        const walkthrough::FrameResult r = swapped.renderFrame(in);
+        for (const walkthrough::WallState& s : r.walls)
+            for (const auto& [id, weight] : s.textures) {
+                EXPECT_NE(id, a.id) << "frame " << frame;
+                EXPECT_NE(id, b.id) << "frame " << frame;
+            }
+        warnings.insert(warnings.end(), r.warnings.begin(), r.warnings.end());
+        refused = r.pager.checkFailures;
+    }
+    EXPECT_GE(refused, 1);
+    // Only the textures wanted from here are paged in: a's file surely, b's when it is wanted.
+    EXPECT_EQ(warnings.size(), static_cast<std::size_t>(refused));  // each named once
+    EXPECT_THAT(warnings, ::testing::Contains(::testing::StartsWith((copy.folder / a.file).string() + ": ")));
+}
+
 }  // namespace
 }  // namespace cavewall::testing

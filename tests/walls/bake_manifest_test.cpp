@@ -2,6 +2,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <fstream>
@@ -68,7 +69,7 @@ TEST(BakeManifest, StatCheckSeesChangesExceptASameSizeWriteAtTheSameTime) {
     const auto dir = scratch("stamp");
     writeFileAtomically(dir / "tex.tx", "0123456789");
     writeFileAtomically(dir / "other.tx", "abcdefghij");
-    BakedTexture t{0, 0, 0, {}, {1, 1}, "tex.tx", 10, hashFile(dir / "tex.tx")};
+    BakedTexture t{0, 0, 0, {}, {1, 1}, "tex.tx", 10, contentHashFile(dir / "tex.tx").value()};
     EXPECT_FALSE(textureFileUnchanged(dir, t));  // never stamped
     ASSERT_TRUE(stampTexture(dir, t));
     EXPECT_NE(t.mtimeNs, 0);
@@ -112,7 +113,7 @@ TEST(BakeManifest, MissingManifestIsEmpty) { EXPECT_EQ(readManifest(scratch("non
 TEST(BakeManifest, TornOrReplacedTextureFilesAreDetected) {
     const auto dir = scratch("torn");
     writeFileAtomically(dir / "tex.tx", "0123456789");
-    BakedTexture t{0, 0, 0, {}, {1, 1}, "tex.tx", 10, hashFile(dir / "tex.tx")};
+    BakedTexture t{0, 0, 0, {}, {1, 1}, "tex.tx", 10, contentHashFile(dir / "tex.tx").value()};
     EXPECT_TRUE(textureFileValid(dir, t));
     std::filesystem::resize_file(dir / "tex.tx", 5);  // torn
     EXPECT_FALSE(textureFileValid(dir, t));
@@ -122,13 +123,104 @@ TEST(BakeManifest, TornOrReplacedTextureFilesAreDetected) {
     EXPECT_FALSE(textureFileValid(dir, t));
 }
 
+// A depth wall's entry as a bake writes it: the texture key in its file names.
+BakedTexture depthEntry() {
+    BakedTexture t{3, 1, 2, {0.5, 1.6, -2.25}, {512, 256}, "tex_0003_00000000000000aa.bct", 42, 0xfeedull};
+    t.depthFile = "tex_0003_00000000000000aa.depth.tif";
+    t.depthBytes = 99;
+    t.depthHash = 0xbeefull;
+    t.depthRange = {0.25, 18.5};
+    return t;
+}
+
+TEST(BakeManifest, EntriesCarryTheirTextureAndChecks) {
+    const BakeManifest m{1, 10.0, {depthEntry()}};
+    const nlohmann::json j = nlohmann::json::parse(manifestToJson(m));
+    EXPECT_EQ(j["version"], 3);
+    EXPECT_EQ(j["textures"][0]["texture"], "00000000000000aa");
+    EXPECT_EQ(j["textures"][0]["check"], hex64(entryCheck(depthEntry())));
+    EXPECT_EQ(j["textures"][0]["depth"]["check"], hex64(depthCheck(depthEntry())));
+    EXPECT_EQ(manifestFromJson(j.dump(), "m.json"), m);
+}
+
+// Each edit of a written entry drops that entry (re-baked, never drawn) with a message naming
+// the manifest, the entry and its file; the other entries are kept.
+TEST(BakeManifest, EditedEntriesAreRejected) {
+    BakedTexture other = depthEntry();
+    other.id = 4;
+    other.file = "tex_0004_00000000000000bb.bct";
+    other.depthFile = "tex_0004_00000000000000bb.depth.tif";
+    const std::string written = manifestToJson(BakeManifest{1, 10.0, {depthEntry(), other}});
+    const struct {
+        const char* name;
+        void (*edit)(nlohmann::json& entry);
+        const char* message;
+    } cases[] = {
+        {"depth range edited", [](nlohmann::json& e) { e["depth"]["range"][1] = 30.0; },
+         "depth: its check does not match its fields"},
+        {"depth block deleted (would be drawn flat)", [](nlohmann::json& e) { e.erase("depth"); },
+         "its check does not match its fields"},
+        {"depth check deleted", [](nlohmann::json& e) { e["depth"].erase("check"); }, "got (none)"},
+        {"pointed at another texture's files",
+         [](nlohmann::json& e) {
+             e["file"] = "tex_0004_00000000000000bb.bct";
+             e["texture"] = "00000000000000bb";
+         },
+         "names texture 3 but its file \"tex_0004_00000000000000bb.bct\" is texture 4's"},
+        {"pointed at the same texture's file of another key",
+         [](nlohmann::json& e) { e["file"] = "tex_0003_00000000000000cc.bct"; },
+         "is for texture key 00000000000000aa but its file \"tex_0003_00000000000000cc.bct\" has key "
+         "00000000000000cc"},
+        {"depth file pointed at another texture's",
+         [](nlohmann::json& e) { e["depth"]["file"] = "tex_0004_00000000000000bb.depth.tif"; },
+         "depth: its check does not match its fields"},
+        {"size edited", [](nlohmann::json& e) { e["bytes"] = 43; }, "its check does not match its fields"},
+        {"hash edited", [](nlohmann::json& e) { e["hash"] = "000000000000feee"; }, "its check does not match"},
+        {"sampling point edited", [](nlohmann::json& e) { e["samplingPoint"][0] = 0.75; }, "its check does not"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.name);
+        nlohmann::json j = nlohmann::json::parse(written);
+        c.edit(j["textures"][0]);
+        const BakeManifest m = manifestFromJson(j.dump(), "m.json");
+        ASSERT_EQ(m.textures.size(), 1u);
+        EXPECT_EQ(m.textures[0].id, 4);
+        ASSERT_EQ(m.rejected.size(), 1u);
+        EXPECT_THAT(m.rejected[0], HasSubstr("m.json: textures[0] (\""));
+        EXPECT_THAT(m.rejected[0], HasSubstr(c.message));
+    }
+}
+
+TEST(BakeManifest, OlderVersionsReadAsStale) {
+    const BakeManifest m = manifestFromJson(R"({"version": 2, "key": "0000000000000001", "alphaDeg": 10, "textures": [
+        {"id": 0, "cell": 0, "wall": 0, "samplingPoint": [0,0,0], "resolution": [4,4], "file": "t.tx", "bytes": 1,
+         "hash": "00000000000000ff", "mtimeNs": 5, "inode": 6}]})",
+                                            "m.json");
+    EXPECT_EQ(m.version, 2);  // < kManifestVersion: the baker re-bakes every texture it lists
+    EXPECT_EQ(m.textures.size(), 1u);
+    EXPECT_TRUE(m.rejected.empty());
+}
+
+TEST(BakeManifest, ProblemsNameTheFileAndTheHashes) {
+    const auto dir = scratch("problem");
+    writeFileAtomically(dir / "tex.bct", "0123456789");
+    BakedTexture t{0, 0, 0, {}, {1, 1}, "tex.bct", 10, contentHash("0123456789")};
+    EXPECT_EQ(textureFileProblem(dir, t), "");
+    writeFileAtomically(dir / "tex.bct", "0123456788");
+    EXPECT_EQ(textureFileProblem(dir, t), (dir / "tex.bct").string() + ": content check failed (expected hash " +
+                                              hex64(contentHash("0123456789")) + ", got " +
+                                              hex64(contentHash("0123456788")) + ")");
+    writeFileAtomically(dir / "tex.bct", "01234");
+    EXPECT_EQ(textureFileProblem(dir, t), (dir / "tex.bct").string() + ": expected 10 bytes, got 5");
+}
+
 TEST(BakeManifest, BadManifestsNameThePath) {
     const struct {
         const char* json;
         const char* message;
     } cases[] = {
-        {R"({"version": 3, "key": "0000000000000000", "alphaDeg": 10, "textures": []})",
-         "m.json: version: expected an integer in [1, 2], got 3"},
+        {R"({"version": 4, "key": "0000000000000000", "alphaDeg": 10, "textures": []})",
+         "m.json: version: expected an integer in [1, 3], got 4"},
         {R"({"version": 1, "key": "xyz", "alphaDeg": 10, "textures": []})",
          "m.json: key: expected 16 lower-case hex digits"},
         {R"({"version": 1, "key": "0000000000000000", "alphaDeg": 10, "textures": [{"id": 0, "cell": 0, "wall": 0,

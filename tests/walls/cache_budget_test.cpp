@@ -73,12 +73,16 @@ TEST(CacheBudget, BadBudgetsNameTheFlagAndValue) {
         {"not a number", std::numeric_limits<double>::quiet_NaN(), "got nan"},
         {"infinite", std::numeric_limits<double>::infinity(), "got inf"},
         {"too large", 2e9, "got 2e+09"},
+        // 1e-9 MB is about 0.001 bytes: it would round to 0, which means "no budget".
+        {"rounds to zero bytes", 1e-9,
+         "--cache-budget: expected a disk budget of at least one byte, got 1e-09 MB (0 bytes once rounded)"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
         EXPECT_THAT([&] { cacheBudgetBytes(c.megabytes); }, ThrowsMessage<Error>(HasSubstr(c.message)));
     }
     EXPECT_EQ(cacheBudgetBytes(1.5), 1572864u);  // 1.5 * 2^20
+    EXPECT_EQ(cacheBudgetBytes(1e-6), 1u);       // 1.05 bytes rounds to one byte: kept
 }
 
 }  // namespace

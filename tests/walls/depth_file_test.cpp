@@ -169,11 +169,11 @@ TEST(DepthFile, ATextureIsValidOnlyWithItsDepthFile) {
     BakedTexture t;
     t.file = "tex_0000_0000000000000001.tx";
     t.bytes = 6;
-    t.hash = hashFile(dir / t.file);
+    t.hash = contentHashFile(dir / t.file).value();
     EXPECT_TRUE(textureFileValid(dir, t));  // a flat texture: no depth file needed
     t.depthFile = depthFileName(t.file);
     t.depthBytes = std::filesystem::file_size(dir / t.depthFile);
-    t.depthHash = hashFile(dir / t.depthFile);
+    t.depthHash = contentHashFile(dir / t.depthFile).value();
     EXPECT_TRUE(textureFileValid(dir, t));
     writeDepthFile(dir / t.depthFile, DepthImage{2, 1, {1.0f, 2.5f}});  // replaced: same size, other hash
     EXPECT_FALSE(textureFileValid(dir, t));

@@ -34,8 +34,14 @@ BakeManifest manifest() {
     BakeManifest m;
     for (int i = 0; i < 10; ++i) {
         const std::string file = "tex_" + std::to_string(i);
-        m.textures.push_back(
-            {i, 0, 0, {}, {256, 256}, file, std::filesystem::file_size(dir / file), hashFile(dir / file)});
+        m.textures.push_back({i,
+                              0,
+                              0,
+                              {},
+                              {256, 256},
+                              file,
+                              std::filesystem::file_size(dir / file),
+                              contentHashFile(dir / file).value()});
     }
     return m;
 }
@@ -247,8 +253,14 @@ TEST(TexturePager, PagesBlockFilesAsCompressedBytes) {
     for (int i = 0; i < 2; ++i) {
         const std::string file = "tex_" + std::to_string(i) + ".bct";
         writeBlockFile(dir / file, encodeLevels(premultipliedMipChain(image), TextureFormat::Bc1));
-        m.textures.push_back(
-            {i, 0, 0, {}, {256, 256}, file, std::filesystem::file_size(dir / file), hashFile(dir / file)});
+        m.textures.push_back({i,
+                              0,
+                              0,
+                              {},
+                              {256, 256},
+                              file,
+                              std::filesystem::file_size(dir / file),
+                              contentHashFile(dir / file).value()});
     }
     TexturePager pager(dir, m, 4.0, readBakedTexture);
     pager.request({0, 1}, {});
@@ -264,6 +276,81 @@ TEST(TexturePager, PagesBlockFilesAsCompressedBytes) {
     EXPECT_DOUBLE_EQ(pager.stats().residentMB, 2 * 43704 / (1024.0 * 1024.0));
 }
 
+// Two real block files and a third, as a bake lists them; `flip` flips one byte of texture 0's
+// file in place (same size), `swap` swaps the files of textures 1 and 2 on disk after the
+// manifest was written. The pager's own decoder (none given) decodes from the checked bytes.
+struct Damaged {
+    std::filesystem::path dir;
+    BakeManifest manifest;
+};
+Damaged damagedBlockFiles(bool flip, bool swap) {
+    Damaged d{folder(), {}};
+    for (int i = 0; i < 3; ++i) {
+        const scenes::Image image{"grey", 64, 64, std::vector<std::uint8_t>(64 * 64 * 4, std::uint8_t(60 + 60 * i))};
+        const std::string file = "tex_" + std::to_string(i) + ".bct";
+        writeBlockFile(d.dir / file, encodeLevels(premultipliedMipChain(image), TextureFormat::Bc1));
+        d.manifest.textures.push_back({i,
+                                       0,
+                                       0,
+                                       {},
+                                       {64, 64},
+                                       file,
+                                       std::filesystem::file_size(d.dir / file),
+                                       contentHashFile(d.dir / file).value()});
+    }
+    if (flip) {
+        std::fstream f(d.dir / "tex_0.bct", std::ios::in | std::ios::out | std::ios::binary);
+        f.seekg(40);
+        const char c = static_cast<char>(f.get());
+        f.seekp(40);
+        f.put(static_cast<char>(c ^ 0x10));
+    }
+    if (swap) {
+        std::filesystem::rename(d.dir / "tex_1.bct", d.dir / "swap.bct");
+        std::filesystem::rename(d.dir / "tex_2.bct", d.dir / "tex_1.bct");
+        std::filesystem::rename(d.dir / "swap.bct", d.dir / "tex_2.bct");
+    }
+    return d;
+}
+
+TEST(TexturePager, FlippedAndSwappedFilesAreRefusedCountedAndReportedOnce) {
+    const Damaged d = damagedBlockFiles(true, true);
+    TexturePager pager(d.dir, d.manifest, 4.0, {});
+    pager.request({0, 1, 2}, {});
+    pager.waitIdle();
+    EXPECT_TRUE(takeAll(pager).empty());  // none is drawn: each wall falls back
+    EXPECT_EQ(pager.stats().failures, 3);
+    EXPECT_EQ(pager.stats().checkFailures, 3);
+    const std::vector<std::string> warnings = pager.takeWarnings();
+    ASSERT_EQ(warnings.size(), 3u);
+    // The flipped file has its size: its hash tells. The swapped ones (compressed to other
+    // sizes) fail on their size first.
+    EXPECT_THAT(warnings, ::testing::Contains(::testing::StartsWith((d.dir / "tex_0.bct").string() +
+                                                                    ": content check failed (expected hash ")));
+    for (const std::string& w : warnings) EXPECT_THAT(w, ::testing::EndsWith("(not drawn: the wall falls back)"));
+    EXPECT_THAT(warnings, ::testing::Contains(::testing::HasSubstr("tex_1.bct: expected ")));
+    EXPECT_THAT(warnings, ::testing::Contains(::testing::HasSubstr("tex_2.bct: expected ")));
+    // Baking on demand bakes the refused ones again (gl::BackgroundBaker::rebake).
+    EXPECT_THAT(pager.takeRefused(), ::testing::UnorderedElementsAre(0, 1, 2));
+    EXPECT_TRUE(pager.takeRefused().empty());
+    // Wanted again: neither decoded again nor reported again.
+    pager.request({0, 1, 2}, {});
+    pager.waitIdle();
+    EXPECT_TRUE(takeAll(pager).empty());
+    EXPECT_TRUE(pager.takeWarnings().empty());
+    EXPECT_EQ(pager.stats().checkFailures, 3);
+}
+
+TEST(TexturePager, IntactBlockFilesPageFromTheBytesTheyChecked) {
+    const Damaged d = damagedBlockFiles(false, false);
+    TexturePager pager(d.dir, d.manifest, 4.0, {});
+    pager.request({0, 1, 2}, {});
+    pager.waitIdle();
+    EXPECT_EQ(takeAll(pager).size(), 3u);
+    EXPECT_EQ(pager.stats().failures, 0);
+    EXPECT_TRUE(pager.takeWarnings().empty());
+}
+
 // A decoded texture says where it has content (coveredRect with kCoveredMargin texels), made on
 // the pager's thread: the flat pass draws only that part of its wall.
 TEST(TexturePager, FindsWhereATextureHasContent) {
@@ -274,7 +361,8 @@ TEST(TexturePager, FindsWhereATextureHasContent) {
     const std::string file = "patch.bct";
     writeBlockFile(dir / file, encodeLevels(premultipliedMipChain(image), TextureFormat::Bc1));
     BakeManifest m;
-    m.textures.push_back({0, 0, 0, {}, {256, 256}, file, std::filesystem::file_size(dir / file), hashFile(dir / file)});
+    m.textures.push_back(
+        {0, 0, 0, {}, {256, 256}, file, std::filesystem::file_size(dir / file), contentHashFile(dir / file).value()});
     TexturePager pager(dir, m, 4.0, readBakedTexture);
     pager.request({0}, {});
     pager.waitIdle();
@@ -312,7 +400,7 @@ TEST(TexturePager, PagesADepthWallsDepthWithItsColourAndBudgetsBoth) {
         t.depthFile = "depth_" + std::to_string(t.id) + ".depth.tif";
         writeDepthFile(dir / t.depthFile, marchDepths(image));  // as the bake writes it
         t.depthBytes = std::filesystem::file_size(dir / t.depthFile);
-        t.depthHash = hashFile(dir / t.depthFile);
+        t.depthHash = contentHashFile(dir / t.depthFile).value();
         t.depthRange = depthRange(marchDepths(image));
     };
     addDepth(m.textures[1], depth);
@@ -332,6 +420,7 @@ TEST(TexturePager, PagesADepthWallsDepthWithItsColourAndBudgetsBoth) {
     ASSERT_EQ(ready.size(), 2u);  // 2 and 3 failed
     EXPECT_TRUE(pager.hasFailed(2) && pager.hasFailed(3));
     EXPECT_EQ(pager.stats().failures, 2);
+    EXPECT_EQ(pager.stats().checkFailures, 1);  // 3's depth file: its size is not the manifest's
     EXPECT_FALSE(ready.at(0).depth);
     EXPECT_EQ(ready.at(0).bytes, kBytes);
     const DecodedTexture& withDepth = ready.at(1);

@@ -84,11 +84,18 @@ TEST_F(BakeCacheTest, UnchangedSceneDoesNoWork) {
     ASSERT_EQ(progress.size(), 1u);  // one report: everything was found at once
     EXPECT_EQ(progress[0].reused, n);
     EXPECT_EQ(second.manifest, first.manifest);
-    EXPECT_EQ(second.hashed, 0);  // every file's size, time and inode were the manifest's: none was read
+    EXPECT_EQ(second.hashed, n);  // `bake` reads and checks every listed file
+    EXPECT_TRUE(second.warnings.empty());
     for (const walls::BakedTexture& t : first.manifest.textures) EXPECT_NE(t.mtimeNs, 0) << t.file;
     // Nothing was written: neither the manifest nor a texture file.
     EXPECT_EQ(modified(second.folder / "manifest.json"), manifestTime);
     EXPECT_EQ(modified(second.folder / second.manifest.textures[0].file), textureTime);
+    // A run's start trusts the stamps: every file's size, time and inode were the manifest's,
+    // so none was read.
+    request.trustStamps = true;
+    const BakeResult third = bakeScene(request);
+    EXPECT_EQ(third.hashed, 0);
+    EXPECT_EQ(third.reused, n);
 }
 
 // Without the caller's context the bake makes its own current; the caller's is current again
@@ -162,9 +169,10 @@ TEST_F(BakeCacheTest, SwappedFilesAreReMadeAndAllListed) {
     EXPECT_EQ(withoutStamps(onDisk), withoutStamps(first.manifest));
 }
 
-// A file whose time changed but not its bytes (touched, copied back) is hashed once, kept, and
-// stamped again: the next start reads nothing.
+// Trusting stamps (a run's start): a file whose time changed but not its bytes (touched,
+// copied back) is hashed once, kept, and stamped again: the next start reads nothing.
 TEST_F(BakeCacheTest, TouchedFileIsHashedOnceAndKept) {
+    request.trustStamps = true;
     const BakeResult first = bakeScene(request);
     const int n = static_cast<int>(first.manifest.textures.size());
     const walls::BakedTexture& t = first.manifest.textures[1];
@@ -181,10 +189,11 @@ TEST_F(BakeCacheTest, TouchedFileIsHashedOnceAndKept) {
 }
 
 // A same-size write in place that leaves the file's time as the manifest has it (as a write
-// within the clock tick of the stamp would) passes the start-up check; the pager's hash refuses
-// it, so the wall falls back and the failure is counted, and the next bake that sees its time
-// change re-bakes it.
+// within the clock tick of the stamp would) passes a run's start-up check (stamps trusted); the
+// pager's content check refuses it, so the wall falls back and the failure is counted; `bake`,
+// which checks every file's content, re-bakes it and names it.
 TEST_F(BakeCacheTest, ChangeTheStartUpCheckCannotSeeIsRefusedByThePager) {
+    request.trustStamps = true;
     const BakeResult first = bakeScene(request);
     const walls::BakedTexture& t = first.manifest.textures[0];
     const std::filesystem::path file = first.folder / t.file;
@@ -211,11 +220,14 @@ TEST_F(BakeCacheTest, ChangeTheStartUpCheckCannotSeeIsRefusedByThePager) {
     ASSERT_TRUE(pager.takeNext(false));  // only the intact texture can be uploaded
     EXPECT_FALSE(pager.takeNext(false));
 
-    std::filesystem::last_write_time(file, stamped + std::chrono::seconds(5));
+    request.trustStamps = false;
     const BakeResult third = bakeScene(request);
-    EXPECT_EQ(third.hashed, 1);
+    EXPECT_EQ(third.hashed, static_cast<int>(first.manifest.textures.size()));
     EXPECT_EQ(third.baked, 1);
     EXPECT_TRUE(walls::textureFileValid(third.folder, third.manifest.textures[t.id]));
+    ASSERT_EQ(third.warnings.size(), 1u);
+    EXPECT_THAT(third.warnings[0], ::testing::StartsWith(file.string() + ": content check failed (expected hash "));
+    EXPECT_THAT(third.warnings[0], ::testing::EndsWith("(re-baking it)"));
 }
 
 TEST_F(BakeCacheTest, ChangedAlphaGetsANewKey) {

@@ -21,8 +21,14 @@ protected:
         for (int i = 0; i < 4; ++i) {
             const std::string file = "tex_" + std::to_string(i);
             std::ofstream(dir / file) << "texture " << i;
-            m.textures.push_back(
-                {i, 0, 0, {}, {256, 256}, file, std::filesystem::file_size(dir / file), walls::hashFile(dir / file)});
+            m.textures.push_back({i,
+                                  0,
+                                  0,
+                                  {},
+                                  {256, 256},
+                                  file,
+                                  std::filesystem::file_size(dir / file),
+                                  walls::contentHashFile(dir / file).value()});
         }
         return m;
     }

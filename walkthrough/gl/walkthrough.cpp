@@ -23,9 +23,6 @@ using Clock = std::chrono::steady_clock;
 
 using display::msSince;
 
-// Every MIP level of a baked texture file of any format (walls/texture_blocks.h).
-walls::TextureLevels decodeBakedTexture(const std::filesystem::path& file) { return walls::readBakedTexture(file); }
-
 // Makes `context` current before any member touches GL: a bake that made (and dropped) its own
 // context, for one, leaves no context current on this thread.
 Context& madeCurrent(Context& context) {
@@ -96,8 +93,7 @@ struct Walkthrough::WallRuntime {
     // The textures' side: their paging, GPU residency and the passes that draw them.
     struct Textures {
         Textures(const walls::WallSetup& setup, const WalkthroughOptions& options)
-            : pager(setup.folder, setup.manifest, options.textureBudgetMB,
-                    options.decoder ? options.decoder : walls::TexturePager::Decoder(decodeBakedTexture)),
+            : pager(setup.folder, setup.manifest, options.textureBudgetMB, options.decoder),
               store(pager, static_cast<std::size_t>(options.uploadMBPerFrame * 1024 * 1024)) {
             if (options.wallKind == walls::WallKind::Depth) depthPass = std::make_unique<DepthWallPass>();
         }
@@ -266,6 +262,7 @@ walkthrough::FramePlan Walkthrough::planFrame(const walkthrough::FrameInput& inp
     if (w.textures) {
         WallRuntime::Textures& t = *w.textures;
         if (_options.baker) {  // baking on demand: this frame's wishes out, finished bakes in
+            _options.baker->rebake(t.pager.takeRefused());  // files that failed their content check
             _options.baker->want(wanted.now, wanted.soon,
                                  glm::dvec3(input.worldFromCave * glm::dvec4(input.head.position, 1.0)));
             _bakedNow = 0;
@@ -398,7 +395,10 @@ walkthrough::FrameResult Walkthrough::renderFrame(const walkthrough::FrameInput&
     result.texturesOverAlpha = plan.texturesOverAlpha;
     result.warpFallbacks = plan.warpFallbacks;
     result.walls = std::move(plan.walls);
-    if (_walls && _walls->textures) result.pager = _walls->textures->pager.stats();
+    if (_walls && _walls->textures) {
+        result.pager = _walls->textures->pager.stats();
+        result.warnings = _walls->textures->pager.takeWarnings();
+    }
     if (_walls && _walls->geometry) {
         result.geometry = _walls->geometry->pager.stats();
         result.geometry.residentMB = static_cast<double>(_renderer.gpu().residentPagedBytes()) / (1024.0 * 1024.0);

@@ -15,6 +15,7 @@ BackgroundBaker::BackgroundBaker(const scenes::Scene& scene, const scenes::Scene
     _baker = std::make_unique<TextureBaker>(scene, description, _walls, std::move(request));
     _folder = _baker->result().folder;
     _initial = _baker->result().manifest;
+    _startWarnings = _baker->result().warnings;
     for (const walls::Texture& t : _walls.plan.textures) _samplingPoints[t.id] = t.samplingPoint;
     std::map<int, glm::dvec3> missing;
     for (int id : _baker->missing()) missing[id] = _samplingPoints.at(id);
@@ -46,6 +47,15 @@ void BackgroundBaker::want(const std::vector<int>& now, const std::vector<int>& 
         _queue.want(now, soon, eye);
         if (_budget) _budget->frame(now, soon);
         _wanted = true;
+    }
+    _wake.notify_one();
+}
+
+void BackgroundBaker::rebake(const std::vector<int>& ids) {
+    if (ids.empty()) return;
+    {
+        std::lock_guard lock(_mutex);
+        _rebake.insert(ids.begin(), ids.end());
     }
     _wake.notify_one();
 }
@@ -84,7 +94,19 @@ void BackgroundBaker::waitIdle() {
 // With a full disk budget only textures wanted now are baked (header).
 bool BackgroundBaker::hasWork() const {
     const std::uint64_t typical = _stats.baked > 0 ? _bakedBytes / _stats.baked : 0;
-    return _queue.peek(_budget && _budget->full(typical)).has_value();
+    return !_rebake.empty() || _queue.peek(_budget && _budget->full(typical)).has_value();
+}
+
+// Textures whose files the pager refused leave the manifest and join the missing ones; their
+// files are replaced when they are baked again.
+void BackgroundBaker::takeRebakes() {
+    if (_rebake.empty()) return;
+    const std::vector<int> ids(_rebake.begin(), _rebake.end());
+    _rebake.clear();
+    for (int id : _baker->forget(ids)) {
+        _queue.add(id, _samplingPoints.at(id));
+        ++_stats.rebakes;
+    }
 }
 
 void BackgroundBaker::run() {
@@ -95,6 +117,7 @@ void BackgroundBaker::run() {
         _wake.wait(lock, [&] { return _stop || (_wanted && !_paused && hasWork()); });
         if (_stop) break;
         registerFiles();
+        takeRebakes();
         const std::uint64_t typical = _stats.baked > 0 ? _bakedBytes / _stats.baked : 0;
         const std::optional<int> id = _queue.next(_budget && _budget->full(typical));
         if (!id) continue;

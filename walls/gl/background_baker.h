@@ -13,6 +13,8 @@
 // rewritten atomically, listing only finished files, so a killed run keeps a consistent cache),
 // and take() hands the finished entries to the pager (TexturePager::addTexture). Until a texture
 // is resident its wall falls back as for any texture that is not (walkthrough/frame_planner.h).
+// A texture whose file fails its content check when the pager pages it in (flipped, swapped)
+// is handed back through rebake() and baked again like a missing one.
 //
 // Disk budget (BackgroundBakerOptions::cacheBudgetBytes > 0): the scene's bake folder's texture
 // files are kept within it by walls::CacheBudget (least recently wanted first, never one wanted
@@ -34,6 +36,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
@@ -65,6 +68,7 @@ struct BackgroundBakeStats {
     long evictions = 0;                 // files deleted for the disk budget
     double cacheMB = 0.0;               // texture files of the folder counted by the budget
     std::vector<std::string> warnings;  // files that could not be deleted
+    int rebakes = 0;                    // textures baked again because rebake() named them
 };
 
 class BackgroundBaker {
@@ -84,10 +88,17 @@ public:
     // The bake folder and the textures it held at construction (for WallSetup::folder, manifest).
     const std::filesystem::path& folder() const { return _folder; }
     const walls::BakeManifest& manifest() const { return _initial; }
+    // What reading the cache found at construction (gl::BakeResult::warnings: files that failed
+    // their content check, rejected or stale manifest entries, temporary files removed).
+    const std::vector<std::string>& startWarnings() const { return _startWarnings; }
 
     // This frame's wishes (texture ids) and the cyclopean eye (world, metres). Never blocks on
     // a bake.
     void want(const std::vector<int>& now, const std::vector<int>& soon, glm::dvec3 eye);
+    // Textures whose files failed their content check when paged in
+    // (walls::TexturePager::takeRefused): they leave the manifest and are baked again, as
+    // missing ones are (their new files replace the refused ones). Never blocks on a bake.
+    void rebake(const std::vector<int>& ids);
     // Textures baked or evicted since the last call, in order. Rethrows the baker thread's
     // error (cavewall::Error), after which nothing more is baked.
     std::vector<BakeEvent> take();
@@ -104,12 +115,14 @@ private:
     bool hasWork() const;
     void registerFiles();
     void evict(const std::vector<int>& ids);
+    void takeRebakes();
 
     const walls::WallSetup _walls;
     BackgroundBakerOptions _options;
     std::unique_ptr<TextureBaker> _baker;
     std::filesystem::path _folder;
     walls::BakeManifest _initial;
+    std::vector<std::string> _startWarnings;
     std::map<int, glm::dvec3> _samplingPoints;  // by texture id
 
     mutable std::mutex _mutex;
@@ -117,6 +130,7 @@ private:
     walls::BakeQueue _queue;
     std::optional<walls::CacheBudget> _budget;
     std::map<int, std::vector<std::string>> _files;  // finished texture id -> its files
+    std::set<int> _rebake;                           // rebake() ids the thread has not taken
     std::uint64_t _bakedBytes = 0;                   // of files baked by this run
     std::vector<BakeEvent> _events;
     BackgroundBakeStats _stats;

@@ -203,6 +203,9 @@ BakeResult Bake::run() {
 void Bake::prepare() {
     validateBakeSettings(_request.settings);
     key();
+    if (const int removed = walls::removeStaleTemporaries(_result.folder, walls::kStaleTemporaryAge); removed > 0)
+        _result.warnings.push_back(_result.folder.string() + ": removed " + std::to_string(removed) +
+                                   " temporary files an interrupted bake left behind");
     reuseListed();
     if (!_pending.empty()) {
         _result.warnings.insert(_result.warnings.end(), _scene.warnings.begin(), _scene.warnings.end());
@@ -308,9 +311,16 @@ void Bake::reuseListed() {
     } catch (const Error& e) {
         _result.warnings.push_back(std::string(e.what()) + " (re-baking everything it listed)");
     }
+    for (const std::string& r : listed.rejected) _result.warnings.push_back(r + " (re-baking it)");
     std::map<int, const walls::BakedTexture*> byId;
     _listed = listed;
-    if (listed.key == _result.key)
+    const bool stale = listed.version < walls::kManifestVersion;
+    if (stale && listed.key == _result.key && !listed.textures.empty())
+        _result.warnings.push_back((_result.folder / "manifest.json").string() + ": version " +
+                                   std::to_string(listed.version) + " has no content checks (expected version " +
+                                   std::to_string(walls::kManifestVersion) + "): re-baking its " +
+                                   std::to_string(listed.textures.size()) + " textures");
+    if (listed.key == _result.key && !stale)
         for (const walls::BakedTexture& t : listed.textures) byId[t.id] = &t;
     for (const walls::Texture& t : _plan.textures) {
         Item item = itemOf(t);
@@ -322,25 +332,34 @@ void Bake::reuseListed() {
             expected.wall = t.wall;
             expected.samplingPoint = t.samplingPoint;
             expected.resolution = item.resolution;
-            if (expected == got && reuseFile(got)) continue;
+            // A depth bake's textures have depth files, a flat bake's none.
+            const bool kindMatches = got.depthFile.empty() == (_request.settings.kind == walls::WallKind::Flat);
+            if (expected == got && kindMatches && reuseFile(got)) continue;
         }
         _pending.push_back(item);
     }
     report();
 }
 
-// A listed file whose size, time and inode are the manifest's is trusted without reading it (the
-// pager checks its hash before drawing it); any other is read and hashed, and stamped with its
-// time when it is valid, so the next start trusts it again.
+// With BakeRequest::trustStamps, a listed file whose size, time and inode are the manifest's is
+// trusted without reading it (the pager checks its content before drawing it); otherwise every
+// listed file is read and its content checked, and stamped with its time when it is valid, so a
+// later start may trust it.
 bool Bake::reuseFile(const walls::BakedTexture& listed) {
-    if (walls::textureFileUnchanged(_result.folder, listed)) {
+    if (_request.trustStamps && walls::textureFileUnchanged(_result.folder, listed)) {
         finish(listed, false, 0);
         return true;
     }
     ++_result.hashed;
     walls::BakedTexture stamped = listed;
-    if (!walls::stampTexture(_result.folder, stamped) || !walls::textureFileValid(_result.folder, stamped))
+    if (!walls::stampTexture(_result.folder, stamped)) {
+        _result.warnings.push_back((_result.folder / listed.file).string() + ": missing (re-baking it)");
         return false;
+    }
+    if (const std::string problem = walls::textureFileProblem(_result.folder, stamped); !problem.empty()) {
+        _result.warnings.push_back(problem + " (re-baking it)");
+        return false;
+    }
     finish(stamped, false, 0);
     return true;
 }

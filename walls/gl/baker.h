@@ -21,12 +21,18 @@
 // Cache (bake_key.h): the folder is <cache>/<hex bake key>/, the key covering the bytes of the
 // scene files, the plan options and the settings. Baking again with an unchanged scene, plan
 // and settings renders nothing (it does not make a GL context): it checks each listed file's
-// size and hash. A missing, torn or replaced file is
-// re-baked (only that one). After a change, textures whose texture key is unchanged are taken
+// size and content hash (walls/content_hash.h; a run may trust unchanged stamps instead,
+// BakeRequest::trustStamps). A missing, torn, flipped, swapped or replaced file, and an entry
+// whose own check fails (walls/bake_manifest.h), is re-baked (only that one), with one warning
+// naming the file; a manifest of an older version without content checks is re-baked whole,
+// with one warning. After a change, textures whose texture key is unchanged are taken
 // from other folders of the same cache (hard link, else copy, then re-checked) instead of being
 // rendered. While baking, the manifest is rewritten atomically at most about once every 5
 // seconds (and at the end), listing only finished files, so an interrupted bake keeps most of its
-// progress. One bake per folder at a time; temporary files of a killed bake stay behind.
+// progress. One bake per folder at a time. Temporary files a killed bake left in the folder
+// (walls/bake_cache.h removeStaleTemporaries: only the names this code writes, only when older
+// than kStaleTemporaryAge, so a bake still writing keeps its own) are removed when a bake
+// starts, with one warning.
 
 #include "display/gl/context.h"
 #include "walls/bake_manifest.h"
@@ -110,6 +116,11 @@ struct BakeRequest {
     // them (every k-th, for timing a bake on a sample); the manifest lists only what was
     // finished, as after an interrupted bake. 0: all.
     int limit = 0;
+    // false (`cavewall bake`): every listed file is read and its content checked (a flipped or
+    // swapped file is re-baked). true (a run): a file whose size, time and inode are the
+    // manifest's is trusted without reading it, because the texture pager checks each file's
+    // content when it pages it in (walls/bake_manifest.h, stamps).
+    bool trustStamps = false;
 };
 
 struct BakeResult {
@@ -150,7 +161,7 @@ BakeResult bakeScene(const BakeRequest& request);
 // context it makes on the calling thread at the first bake; call bake(), forget() and
 // endRendering() on that one thread. Whichever context was current there before
 // (gl::Context::current) is current again when bake() and endRendering() return. The manifest is
-// rewritten atomically at most about once a second while baking, at forget() and at
+// rewritten atomically at most about once every 5 seconds while baking, at forget() and at
 // endRendering(), listing only finished files.
 class TextureBaker {
 public:
