@@ -8,7 +8,9 @@ namespace cavewall::input {
 Pose transformPose(const glm::dmat4& bFromA, const Pose& pose) {
     Pose out;
     out.position = glm::dvec3(bFromA * glm::dvec4(pose.position, 1.0));
-    out.orientation = glm::normalize(glm::quat_cast(glm::dmat3(bFromA)) * pose.orientation);
+    // A calibration may carry a uniform scale: the rotation is the 3x3 divided by it.
+    const glm::dmat3 m(bFromA);
+    out.orientation = glm::normalize(glm::quat_cast(m / std::cbrt(glm::determinant(m))) * pose.orientation);
     return out;
 }
 
