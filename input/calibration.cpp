@@ -110,14 +110,42 @@ void checkInput(const std::vector<PointPair>& pairs, const std::string& source) 
 PairsFile parsePairsFile(std::string_view jsonText, const std::string& source) {
     const config::JsonDocument doc = config::JsonDocument::fromText(jsonText, source);
     const config::JsonNode root = doc.root();
-    root.expectKeys({"pairs"});
+    root.expectKeys({"pairs", "screens"});
     PairsFile file;
     for (const config::JsonNode& item : root.at("pairs").items(0, 10000)) {
         item.expectKeys({"tracker", "cave", "label"});
         file.pairs.push_back({item.at("tracker").vec3(), item.at("cave").vec3()});
         file.labels.push_back(item.has("label") ? item.at("label").string() : std::string());
     }
+    if (auto screens = root.find("screens")) {
+        screens->expectObject();
+        for (const auto& [name, value] : screens->raw().items()) {
+            const config::JsonNode s = screens->at(name);
+            s.expectKeys({"lowerLeft", "lowerRight", "upperLeft"});
+            file.screens.push_back(
+                {name, s.at("lowerLeft").vec3(), s.at("lowerRight").vec3(), s.at("upperLeft").vec3()});
+        }
+    }
     return file;
+}
+
+ScreenCorners fitScreenCorners(const glm::dmat4& caveFromTracker, const TrackedScreen& tracked) {
+    auto map = [&](const glm::dvec3& p) { return glm::dvec3(caveFromTracker * glm::dvec4(p, 1.0)); };
+    ScreenCorners out;
+    out.lowerLeft = map(tracked.lowerLeft);
+    const glm::dvec3 right = map(tracked.lowerRight) - out.lowerLeft, up = map(tracked.upperLeft) - out.lowerLeft;
+    const double width = glm::length(right), height = glm::length(up);
+    if (!(width > 0.0 && height > 0.0)) return {out.lowerLeft, out.lowerLeft + right, out.lowerLeft + up, 0.0};
+    // The bisector and its normal in the edges' plane; the square edges are at 45° to both.
+    const glm::dvec3 r = right / width, u = up / height;
+    const glm::dvec3 sum = r + u, diff = r - u;
+    if (!(glm::length(sum) > 1e-9 && glm::length(diff) > 1e-9))
+        return {out.lowerLeft, out.lowerLeft + right, out.lowerLeft + up, 0.0};
+    const glm::dvec3 a = glm::normalize(sum), b = glm::normalize(diff);
+    out.lowerRight = out.lowerLeft + width * (a + b) / std::sqrt(2.0);
+    out.upperLeft = out.lowerLeft + height * (a - b) / std::sqrt(2.0);
+    out.squaredByDeg = glm::degrees(std::acos(std::clamp(glm::dot(r, u), -1.0, 1.0))) - 90.0;
+    return out;
 }
 
 SymmetricEigen4 symmetricEigen(const glm::dmat4& m) {

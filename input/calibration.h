@@ -31,12 +31,23 @@ struct PointPair {
     bool operator==(const PointPair&) const = default;
 };
 
-// A pairs file, JSON, metres in both frames; "label" is optional and only printed:
+// A screen's corners as measured by the tracker (tracker frame, metres), to be placed in the
+// cave frame by the fitted calibration (fitScreenCorners).
+struct TrackedScreen {
+    std::string name;  // the screen of the display configuration
+    glm::dvec3 lowerLeft{0.0}, lowerRight{0.0}, upperLeft{0.0};
+    bool operator==(const TrackedScreen&) const = default;
+};
+
+// A pairs file, JSON, metres in both frames; "label" is optional and only printed; "screens" is
+// optional and gives screens' corners measured in the tracker frame:
 //   {"pairs": [{"tracker": [0.12, 0.03, 1.51], "cave": [-1.5, 0, -1.5], "label": "front lowerLeft"},
-//              ...]}
+//              ...],
+//    "screens": {"front": {"lowerLeft": [x, y, z], "lowerRight": [x, y, z], "upperLeft": [x, y, z]}}}
 struct PairsFile {
     std::vector<PointPair> pairs;
-    std::vector<std::string> labels;  // one per pair; empty when not given
+    std::vector<std::string> labels;     // one per pair; empty when not given
+    std::vector<TrackedScreen> screens;  // by name
 };
 // Parses a pairs file's text (types, finiteness, unknown keys; at most 10000 pairs). `source`
 // names the file in messages. Throws Error. The geometric rules are fitCaveFromTracker's.
@@ -81,6 +92,16 @@ struct HornRotation {
     double lambdaMax = 0.0;
 };
 HornRotation hornRotation(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b);
+
+// A screen's corners in the cave frame from its corners measured in the tracker frame: mapped
+// by caveFromTracker, then squared into a rectangle (measured corners never meet at exactly
+// 90°, and the display configuration requires 90° within 0.1°). lowerLeft and the two edge
+// lengths are kept; both edges turn by half the error, in their plane, towards 90°.
+struct ScreenCorners {
+    glm::dvec3 lowerLeft{0.0}, lowerRight{0.0}, upperLeft{0.0};  // cave frame, metres
+    double squaredByDeg = 0.0;                                   // how far the measured corner angle was from 90°
+};
+ScreenCorners fitScreenCorners(const glm::dmat4& caveFromTracker, const TrackedScreen& tracked);
 
 // The angles (radians) of input::yawPitchRoll that give rotation `r`: {yaw about +Y, pitch about
 // the turned +X, roll about the turned +Z}; pitch in [-pi/2, pi/2]. At pitch +-pi/2, roll is 0.

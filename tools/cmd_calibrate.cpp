@@ -6,6 +6,7 @@
 #include "tools/args.h"
 #include "tools/commands.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -25,6 +26,9 @@ const char* const kCalibrateUsage =
     "pitch and roll (degrees, as viewer.headOrientation) and the translation (metres).\n"
     "--scale fits a uniform scale too (refused outside [0.5, 2]). --noise is the expected noise\n"
     "of one measured point (default 2 mm): residuals above 5 times it are warned about.\n"
+    "Screens whose corners were measured in the tracker frame (\"screens\": {\"front\":\n"
+    "{\"lowerLeft\": [x, y, z], \"lowerRight\": [...], \"upperLeft\": [...]}} in the pairs file) are\n"
+    "placed by the fit, squared into a rectangle keeping lowerLeft and the edge lengths.\n"
     "Refused: fewer than 3 pairs, non-finite values, points closer than 10 mm, collinear points,\n"
     "and points that fit a mirror image better than a rotation.\n";
 
@@ -62,6 +66,31 @@ void printFit(const input::PairsFile& file, const input::CalibrationFit& fit) {
               << fixed(fit.scale, 6) << "\n";
 }
 
+// Places each tracked screen's corners by the fit, squared into a rectangle, and prints how far
+// each corner moved.
+void placeScreens(const input::PairsFile& file, const input::CalibrationFit& fit, config::DisplayConfig& c,
+                  const std::string& pairsSource, const std::string& displaySource) {
+    for (const input::TrackedScreen& tracked : file.screens) {
+        auto screen = std::find_if(c.screens.begin(), c.screens.end(),
+                                   [&](const config::Screen& s) { return s.name == tracked.name; });
+        if (screen == c.screens.end()) {
+            std::string names;
+            for (const config::Screen& s : c.screens) names += (names.empty() ? "" : ", ") + s.name;
+            throw Error(pairsSource + ": screens." + tracked.name + ": no such screen in " + displaySource +
+                        " (expected one of: " + names + ")");
+        }
+        const input::ScreenCorners corners = input::fitScreenCorners(fit.caveFromTracker, tracked);
+        std::cout << "screen " << tracked.name << ": lowerLeft moved "
+                  << fixed(glm::distance(screen->lowerLeft, corners.lowerLeft) * 1000.0, 1) << " mm, lowerRight "
+                  << fixed(glm::distance(screen->lowerRight, corners.lowerRight) * 1000.0, 1) << " mm, upperLeft "
+                  << fixed(glm::distance(screen->upperLeft, corners.upperLeft) * 1000.0, 1)
+                  << " mm; measured corner angle " << fixed(90.0 + corners.squaredByDeg, 3) << " deg, squared to 90\n";
+        screen->lowerLeft = corners.lowerLeft;
+        screen->lowerRight = corners.lowerRight;
+        screen->upperLeft = corners.upperLeft;
+    }
+}
+
 }  // namespace
 
 int runCalibrate(const std::vector<std::string>& words) {
@@ -84,6 +113,7 @@ int runCalibrate(const std::vector<std::string>& words) {
     for (const std::string& w : fit.warnings) std::cerr << "warning: " << w << "\n";
 
     c.tracking.caveFromTracker = fit.caveFromTracker;
+    placeScreens(file, fit, c, pairsPath.string(), displayPath.string());
     const std::string text = config::displayConfigJson(c);
     // What is written must load as what was meant (the parser's rules include the calibration's).
     const config::DisplayConfig back = config::parseDisplayConfig(text, out.string());

@@ -73,6 +73,40 @@ TEST(CalibrateCli, WritesAConfigThatLoadsAndMapsThePoints) {
     EXPECT_LT(glm::distance(glm::dvec3(c.tracking.caveFromTracker[3]), kTranslation), 0.001);
 }
 
+TEST(CalibrateCli, PlacesMeasuredScreens) {
+    const fs::path dir = workFolder("screens");
+    // The front wall really stands 5 cm further back than cave4 says; its corners are measured.
+    const glm::dmat4 trackerFromCave = glm::inverse(trueCaveFromTracker());
+    auto tracked = [&](double x, double y) {
+        const glm::dvec3 t(trackerFromCave * glm::dvec4(x, y, -1.55, 1.0));
+        return nlohmann::json{t.x, t.y, t.z};
+    };
+    nlohmann::json pairs = pairsJson(8);
+    pairs["screens"] = {
+        {"front", {{"lowerLeft", tracked(-1.5, 0)}, {"lowerRight", tracked(1.5, 0)}, {"upperLeft", tracked(-1.5, 3)}}}};
+    const fs::path pairsFile = writeFile(dir / "pairs.json", pairs.dump());
+    const fs::path out = dir / "lab.json";
+    const CliResult r =
+        runCavewall({"calibrate", "--pairs", pairsFile.string(), "--display", "cave4", "--out", out.string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("screen front: lowerLeft moved 50.0 mm"));
+    const config::DisplayConfig c = config::loadDisplayConfig(out.string());
+    // Within the fit's error (under 1 mm, as above).
+    EXPECT_LT(glm::distance(c.screens[0].lowerLeft, glm::dvec3(-1.5, 0, -1.55)), 0.001);
+    EXPECT_LT(glm::distance(c.screens[0].lowerRight, glm::dvec3(1.5, 0, -1.55)), 0.001);
+    EXPECT_LT(glm::distance(c.screens[0].upperLeft, glm::dvec3(-1.5, 3, -1.55)), 0.001);
+    EXPECT_EQ(c.screens[1], config::loadDisplayConfig("cave4").screens[1]);  // the others stay
+
+    pairs["screens"] = {{"back", pairs["screens"]["front"]}};
+    const fs::path unknown = writeFile(dir / "unknown.json", pairs.dump());
+    const CliResult bad = runCavewall(
+        {"calibrate", "--pairs", unknown.string(), "--display", "cave4", "--out", (dir / "bad.json").string()});
+    EXPECT_EQ(bad.exitCode, 1);
+    EXPECT_THAT(bad.err, HasSubstr(unknown.string() + ": screens.back: no such screen in "));
+    EXPECT_THAT(bad.err, HasSubstr("cave4.json (expected one of: front, left, right, floor)"));
+    EXPECT_FALSE(fs::exists(dir / "bad.json"));
+}
+
 TEST(CalibrateCli, RefusesBadInputWithItsMessage) {
     const fs::path dir = workFolder("refusals");
     const fs::path good = writeFile(dir / "good.json", pairsJson(8).dump());

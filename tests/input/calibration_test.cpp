@@ -241,6 +241,25 @@ TEST(Calibration, YawPitchRollOfInvertsYawPitchRoll) {
     EXPECT_EQ(up.z, 0.0);
 }
 
+TEST(Calibration, ScreenCornersAreMappedAndSquared) {
+    const glm::dmat4 caveFromTracker = transformOf(yawPitchRoll(0.4, 0.0, 0.0), {1, 0, -2});
+    const glm::dmat4 trackerFromCave = glm::inverse(caveFromTracker);
+    auto tracked = [&](const glm::dvec3& cave) { return glm::dvec3(trackerFromCave * glm::dvec4(cave, 1.0)); };
+    // The front wall of cave4 with upperLeft measured 3 mm too far right: 0.057° off square.
+    const TrackedScreen front{"front", tracked({-1.5, 0, -1.5}), tracked({1.5, 0, -1.5}), tracked({-1.497, 3, -1.5})};
+    const ScreenCorners c = fitScreenCorners(caveFromTracker, front);
+    EXPECT_LT(glm::distance(c.lowerLeft, glm::dvec3(-1.5, 0, -1.5)), 1e-12);
+    const glm::dvec3 right = c.lowerRight - c.lowerLeft, up = c.upperLeft - c.lowerLeft;
+    EXPECT_NEAR(glm::dot(right, up), 0.0, 1e-12);  // a rectangle
+    EXPECT_NEAR(glm::length(right), 3.0, 1e-12);   // the measured edge lengths
+    EXPECT_NEAR(glm::length(up), std::sqrt(9.0 + 0.003 * 0.003), 1e-12);
+    EXPECT_NEAR(right.z, 0.0, 1e-12);  // still in the wall's plane, z = -1.5
+    EXPECT_NEAR(up.z, 0.0, 1e-12);
+    // atan(0.003 / 3) = 0.0573°: the corner was that much under 90°, and each edge turned half.
+    EXPECT_NEAR(c.squaredByDeg, -0.0573, 1e-4);
+    EXPECT_NEAR(c.lowerRight.y, -0.0015, 1e-5);
+}
+
 TEST(Calibration, ParsesAPairsFile) {
     const PairsFile f = parsePairsFile(
         R"({"pairs": [{"tracker": [1, 2, 3], "cave": [4, 5, 6], "label": "front lowerLeft"},
@@ -250,11 +269,19 @@ TEST(Calibration, ParsesAPairsFile) {
     EXPECT_EQ(f.pairs[0], (PointPair{{1, 2, 3}, {4, 5, 6}}));
     EXPECT_EQ(f.labels[0], "front lowerLeft");
     EXPECT_EQ(f.labels[1], "");
+    const PairsFile withScreens = parsePairsFile(
+        R"({"pairs": [], "screens": {"front": {"lowerLeft": [0, 0, 0], "lowerRight": [1, 0, 0], "upperLeft": [0, 1, 0]}}})",
+        "p.json");
+    ASSERT_EQ(withScreens.screens.size(), 1u);
+    EXPECT_EQ(withScreens.screens[0], (TrackedScreen{"front", {0, 0, 0}, {1, 0, 0}, {0, 1, 0}}));
     const std::pair<const char*, const char*> errors[] = {
         {R"({"pair": []})", "p.json: unknown key 'pair'"},
         {R"({"pairs": [{"tracker": [1, 2, 3]}]})", "p.json: pairs[0]: missing required key 'cave'"},
         {R"({"pairs": [{"tracker": [1, 2], "cave": [4, 5, 6]}]})", "p.json: pairs[0].tracker"},
         {R"({"pairs": [{"tracker": [1, 2, 3], "cave": [4, 5, 6], "tip": 1}]})", "p.json: pairs[0]: unknown key 'tip'"},
+        {R"({"pairs": [], "screens": {"front": {"lowerLeft": [0, 0, 0], "upperLeft": [0, 1, 0]}}})",
+         "p.json: screens.front: missing required key 'lowerRight'"},
+        {R"({"pairs": [], "screens": [1]})", "p.json: screens: expected an object"},
     };
     for (const auto& [text, message] : errors) {
         SCOPED_TRACE(text);
