@@ -76,11 +76,11 @@ struct CalibrationFit {
 
 // The fit of `pairs` (at least 3, finite, distinct, not collinear in either frame). `source`
 // names the input in messages. Throws Error naming the problem and the measured figure:
-// "pairs.json: the cave points are collinear: the smallest spread across their line is 0.3 mm,
-// expected at least 10 mm". Refuses fewer than 3 pairs, non-finite values, two points closer
-// than minSpread, collinear points, points that fit a mirror image better than a rotation, and
-// (with fitScale) a scale outside [minScale, maxScale]. Residuals above outlierFactor * noise
-// come back as warnings.
+// "pairs.json: the cave points are collinear: their spread across their common line is 0.3 mm,
+// expected at least 10.0 mm" (the spread: the largest distance of a point from the line).
+// Refuses fewer than 3 pairs, non-finite values, two points closer than minSpread, collinear
+// points, points that fit a mirror image better than a rotation, and (with fitScale) a scale
+// outside [minScale, maxScale]. Residuals above outlierFactor * noise come back as warnings.
 CalibrationFit fitCaveFromTracker(const std::vector<PointPair>& pairs, const CalibrationOptions& options,
                                   const std::string& source);
 
@@ -99,7 +99,7 @@ HornRotation hornRotation(const std::vector<glm::dvec3>& a, const std::vector<gl
 // lengths are kept; both edges turn by half the error, in their plane, towards 90°.
 struct ScreenCorners {
     glm::dvec3 lowerLeft{0.0}, lowerRight{0.0}, upperLeft{0.0};  // cave frame, metres
-    double squaredByDeg = 0.0;                                   // how far the measured corner angle was from 90°
+    double squaredByDeg = 0.0;                                   // the measured angle at lowerLeft minus 90°
 };
 ScreenCorners fitScreenCorners(const glm::dmat4& caveFromTracker, const TrackedScreen& tracked);
 
