@@ -119,19 +119,26 @@ Tracking parseTracking(const JsonNode& node) {
     Tracking t;
     if (auto n = node.find("caveFromTracker")) {
         t.caveFromTracker = n->mat4Rows();
-        const glm::dmat3 r(t.caveFromTracker);
+        const glm::dvec4 lastRow(t.caveFromTracker[0][3], t.caveFromTracker[1][3], t.caveFromTracker[2][3],
+                                 t.caveFromTracker[3][3]);
+        if (lastRow != glm::dvec4(0, 0, 0, 1)) n->fail("expected the last row to be [0, 0, 0, 1] (a rigid transform)");
+        const glm::dmat3 m(t.caveFromTracker);
+        const double scale = std::cbrt(glm::determinant(m));
+        if (!(scale >= kMinCalibrationScale && scale <= kMaxCalibrationScale))
+            n->fail("expected a rotation, or a rotation times a uniform scale in [" +
+                    formatNumber(kMinCalibrationScale) + ", " + formatNumber(kMaxCalibrationScale) +
+                    "], in the upper 3x3, got det " + formatNumber(glm::determinant(m)) +
+                    (scale < 0 ? " (a reflection)" : ""));
+        const glm::dmat3 r = m / scale;
         const glm::dmat3 rtr = glm::transpose(r) * r;
         double worst = 0.0;
         for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j) worst = std::max(worst, std::abs(rtr[i][j] - (i == j)));
-        const glm::dvec4 lastRow(t.caveFromTracker[0][3], t.caveFromTracker[1][3], t.caveFromTracker[2][3],
-                                 t.caveFromTracker[3][3]);
-        if (lastRow != glm::dvec4(0, 0, 0, 1)) n->fail("expected the last row to be [0, 0, 0, 1] (a rigid transform)");
-        if (worst > 1e-4 || glm::determinant(r) < 0)
+        if (worst > 1e-4)
             n->fail(
-                "expected a rotation in the upper 3x3 (orthonormal within 1e-4, det +1), got an "
-                "error of " +
-                formatNumber(worst) + " and det " + formatNumber(glm::determinant(r)));
+                "expected a rotation, or a rotation times a uniform scale, in the upper 3x3 (orthonormal within "
+                "1e-4 after dividing by the scale " +
+                formatNumber(scale) + "), got an error of " + formatNumber(worst));
     }
     for (int r = 0; r < 3; ++r)
         if (std::abs(t.caveFromTracker[3][r]) > kMaxCoordinate)
@@ -277,7 +284,7 @@ std::filesystem::path presetDirectory() {
     return CAVEWALL_PRESET_DIR;
 }
 
-DisplayConfig loadDisplayConfig(const std::string& nameOrPath) {
+std::filesystem::path displayConfigPath(const std::string& nameOrPath) {
     std::filesystem::path path(nameOrPath);
     const bool bareName = !path.has_parent_path() && !path.has_extension();
     if (bareName) path = presetDirectory() / (nameOrPath + ".json");
@@ -286,6 +293,11 @@ DisplayConfig loadDisplayConfig(const std::string& nameOrPath) {
                     ": no such display configuration (expected a file path or one of "
                     "the presets cave4, cave6, powerwall, desktop in " +
                     presetDirectory().string() + ")");
+    return path;
+}
+
+DisplayConfig loadDisplayConfig(const std::string& nameOrPath) {
+    const std::filesystem::path path = displayConfigPath(nameOrPath);
     DisplayConfig config = parseDisplayConfig(readTextFile(path), path.string());
     validateDisplayConfig(config, path.string());
     for (const std::string& w : displayWarnings(config, path.string())) std::cerr << "warning: " << w << "\n";

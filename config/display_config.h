@@ -82,7 +82,7 @@ struct Viewer {
 };
 
 struct Tracking {
-    glm::dmat4 caveFromTracker{1.0};  // rigid calibration transform (metres)
+    glm::dmat4 caveFromTracker{1.0};  // calibration (metres): rotation (x uniform scale) + translation
     double latencyMs = 0.0;           // motion-to-photon latency to predict over, [0, 500]
     // Where tracked poses are plausible, [min corner, max corner] in the cave frame (metres);
     // unset: the default of config::trackingVolumeOf (display_limits.h).
@@ -107,6 +107,8 @@ inline constexpr int kMaxResolution = 16384;           // pixels per side
 inline constexpr double kMaxPixelAspectError = 0.02;   // warn when pixels are not square by more
 inline constexpr double kMaxTiltDeg = 1.0;             // warn when a screen is this far from upright
                                                        // (or flat, for floors and ceilings)
+inline constexpr double kMinCalibrationScale = 0.5;    // the uniform scale tracking.caveFromTracker
+inline constexpr double kMaxCalibrationScale = 2.0;    // may carry, in [min, max]
 
 // Parses JSON text into a DisplayConfig (types, ranges, unknown keys). `source` names the file
 // in messages. Throws Error. Does not run the geometric rules: call validateDisplayConfig().
@@ -126,6 +128,10 @@ std::vector<std::string> displayWarnings(const DisplayConfig& config, const std:
 // Reads, parses and validates a file. `nameOrPath` may also be a preset name ("cave4",
 // "cave6", "powerwall", "desktop"), looked up in presetDirectory().
 DisplayConfig loadDisplayConfig(const std::string& nameOrPath);
+
+// The file loadDisplayConfig reads for `nameOrPath`: the path itself, or the preset's file.
+// Throws Error for a bare name that is no preset.
+std::filesystem::path displayConfigPath(const std::string& nameOrPath);
 
 // The folder holding the preset configurations (config/ of the source tree, or
 // $CAVEWALL_CONFIG_DIR when set).

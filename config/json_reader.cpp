@@ -168,7 +168,8 @@ glm::dquat JsonNode::rotation() const {
         const double len = glm::length(q);
         if (std::abs(len - 1.0) > 1e-3)
             fail("expected a unit quaternion [x, y, z, w], got length " + formatNumber(len));
-        return q / len;
+        // A quaternion that is already unit (as written by displayConfigJson) reads back unchanged.
+        return std::abs(len - 1.0) <= 1e-12 ? q : q / len;
     }
     expectKeys({"yawDeg", "pitchDeg", "rollDeg"});
     auto angle = [&](const char* key) {

@@ -65,7 +65,8 @@ public:
     // [[1,0,0,tx],[0,1,0,ty],[0,0,1,tz],[0,0,0,1]] translates by t.
     glm::dmat4 mat4Rows() const;
     // A rotation as {"yawDeg","pitchDeg","rollDeg"} (Y, then X, then Z; intrinsic) or as a unit
-    // quaternion [x, y, z, w]; a quaternion is normalised and must not be near zero.
+    // quaternion [x, y, z, w]; a quaternion is normalised (unless unit within 1e-12, so that a
+    // written one reads back bit for bit) and must have a length within 1e-3 of 1.
     glm::dquat rotation() const;
 
 private:

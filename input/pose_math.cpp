@@ -8,7 +8,12 @@ namespace cavewall::input {
 Pose transformPose(const glm::dmat4& bFromA, const Pose& pose) {
     Pose out;
     out.position = glm::dvec3(bFromA * glm::dvec4(pose.position, 1.0));
-    out.orientation = glm::normalize(glm::quat_cast(glm::dmat3(bFromA)) * pose.orientation);
+    // A calibration may carry a uniform scale: the rotation is the 3x3 divided by it. A rigid
+    // transform is used as it is, so its poses stay bit for bit what they were.
+    const glm::dmat3 m(bFromA);
+    const double scale = std::cbrt(glm::determinant(m));
+    const glm::dmat3 rotation = std::abs(scale - 1.0) <= 1e-9 ? m : m / scale;
+    out.orientation = glm::normalize(glm::quat_cast(rotation) * pose.orientation);
     return out;
 }
 

@@ -10,7 +10,8 @@
 
 namespace cavewall::input {
 
-// `pose` moved by the rigid transform `bFromA` (pose in frame a -> pose in frame b).
+// `pose` moved by `bFromA` (pose in frame a -> pose in frame b): a rotation, or a rotation times
+// a uniform scale, then a translation (a calibration); the orientation takes the rotation only.
 Pose transformPose(const glm::dmat4& bFromA, const Pose& pose);
 
 // Yaw about +Y (positive turns left, -Z towards -X), then pitch about the turned +X (positive

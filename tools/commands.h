@@ -23,6 +23,8 @@ int runFrustum(const std::vector<std::string>& args);
 extern const char* const kFrustumUsage;
 int runTrack(const std::vector<std::string>& args);
 extern const char* const kTrackUsage;
+int runCalibrate(const std::vector<std::string>& args);
+extern const char* const kCalibrateUsage;
 int runBench(const std::vector<std::string>& args);
 extern const char* const kBenchUsage;
 int runGenerate(const std::vector<std::string>& args);

@@ -19,6 +19,8 @@ const Command kCommands[] = {
 #endif
     {"frustum", "print every screen's and eye's off-axis view and projection", kFrustumUsage, runFrustum},
     {"track", "read a head tracker and print calibrated, filtered, predicted head poses", kTrackUsage, runTrack},
+    {"calibrate", "fit tracking.caveFromTracker to tracked points paired with known cave points", kCalibrateUsage,
+     runCalibrate},
     {"bench", "measure error against run time; --stability: the numerical stability report", kBenchUsage, runBench},
     {"generate", "write a generated plant or house (.glb + scene.json) deterministically from a seed", kGenerateUsage,
      runGenerate},

@@ -64,6 +64,14 @@ TEST(DisplayConfig, ParsesEveryField) {
     EXPECT_EQ(c.tracking.latencyMs, 20.0);
 }
 
+TEST(DisplayConfig, CalibrationMayCarryAUniformScale) {
+    // A 1 % scale, as a calibration fitted with `cavewall calibrate --scale` gives, times a
+    // rotation of 90° about +Y.
+    const DisplayConfig c = load(withScreens(
+        kScreen, R"(, "tracking": {"caveFromTracker": [[0,0,1.01,0],[0,1.01,0,0],[-1.01,0,0,0],[0,0,0,1]]})"));
+    EXPECT_EQ(c.tracking.caveFromTracker[1], glm::dvec4(0, 1.01, 0, 0));
+}
+
 struct BadCase {
     const char* name;
     std::string json;
@@ -146,9 +154,19 @@ TEST(DisplayConfig, EveryRuleHasItsMessage) {
         {"unknown stereo", withScreens(kScreen, R"(, "stereo": "checkerboard")"),
          "stereo: expected one of \"mono\", \"separate\", \"side-by-side\", \"top-bottom\", \"anaglyph\", "
          "\"quad-buffer\", got \"checkerboard\""},
-        {"non-rigid calibration",
+        {"non-uniform scale in the calibration",
          withScreens(kScreen, R"(, "tracking": {"caveFromTracker": [[2,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]})"),
-         "tracking.caveFromTracker: expected a rotation in the upper 3x3"},
+         "tracking.caveFromTracker: expected a rotation, or a rotation times a uniform scale, in the upper 3x3 "
+         // det 2 gives the scale 2^(1/3) = 1.25992; the x axis is then 2 / 1.25992 = 1.5874 long, and
+         // its squared length 2.51984 is 1.51984 away from 1.
+         "(orthonormal within 1e-4 after dividing by the scale 1.25992), got an error of 1.51984"},
+        {"calibration scale too large",
+         withScreens(kScreen, R"(, "tracking": {"caveFromTracker": [[3,0,0,0],[0,3,0,0],[0,0,3,0],[0,0,0,1]]})"),
+         "tracking.caveFromTracker: expected a rotation, or a rotation times a uniform scale in [0.5, 2], in the "
+         "upper 3x3, got det 27"},
+        {"mirrored calibration",
+         withScreens(kScreen, R"(, "tracking": {"caveFromTracker": [[-1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]})"),
+         "got det -1 (a reflection)"},
         {"projective calibration",
          withScreens(kScreen, R"(, "tracking": {"caveFromTracker": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,1,1]]})"),
          "tracking.caveFromTracker: expected the last row to be [0, 0, 0, 1]"},
