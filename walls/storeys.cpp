@@ -97,7 +97,7 @@ bool climbs(const std::vector<double>& heights, double low, double high, double 
 void addStairs(Storeys& out, const std::vector<Facet>& facets, int from, const StoreyOptions& options) {
     const double low = out.storeys[from].floorY + options.minHeadroom / 4.0;
     const double high = out.storeys[from + 1].floorY - options.minHeadroom / 4.0;
-    std::map<Column, std::vector<double>> heights;
+    std::map<Column, std::vector<double>> heights;  // sorted once gathered
     std::map<Column, double> columnArea;
     for (const Facet& f : facets) {
         if (!f.up || f.y <= low || f.y >= high) continue;
@@ -108,6 +108,7 @@ void addStairs(Storeys& out, const std::vector<Facet>& facets, int from, const S
     std::set<Column> open;
     for (const auto& [c, area] : columnArea)
         if (area >= 0.05) open.insert(c);
+    for (auto& [c, ys] : heights) std::sort(ys.begin(), ys.end());
     while (!open.empty()) {
         std::vector<Column> stack{*open.begin()}, component;
         open.erase(open.begin());
@@ -125,10 +126,21 @@ void addStairs(Storeys& out, const std::vector<Facet>& facets, int from, const S
         if (static_cast<double>(component.size()) > options.maxStairArea) continue;
         std::vector<double> ys;
         Stair s{from, glm::dvec2(1e300), glm::dvec2(-1e300)};
+        double lowest = high, highest = low;
         for (const Column& c : component) {
-            ys.insert(ys.end(), heights[c].begin(), heights[c].end());
-            s.lo = glm::min(s.lo, glm::dvec2(c.first, c.second));
-            s.hi = glm::max(s.hi, glm::dvec2(c.first + 1, c.second + 1));
+            const std::vector<double>& here = heights[c];
+            ys.insert(ys.end(), here.begin(), here.end());
+            const glm::dvec2 corner(c.first, c.second);
+            s.lo = glm::min(s.lo, corner);
+            s.hi = glm::max(s.hi, corner + 1.0);
+            if (here.front() < lowest) {
+                lowest = here.front();
+                s.bottom = corner + 0.5;
+            }
+            if (here.back() > highest) {
+                highest = here.back();
+                s.top = corner + 0.5;
+            }
         }
         std::sort(ys.begin(), ys.end());
         if (climbs(ys, low, high, options.maxRise)) out.stairs.push_back(s);
@@ -152,7 +164,8 @@ std::vector<Facet> horizontalFacets(const scenes::Scene& scene, const StoreyOpti
             const double length = glm::length(n);
             if (!(length > 0.0) || std::abs(n.y) < cosTilt * length) continue;
             const glm::dvec3 c = (p[0] + p[1] + p[2]) / 3.0;
-            facets.push_back({c.y, 0.5 * std::abs(n.y), {c.x, c.z}, n.y > 0.0});
+            const glm::dvec3 lo = glm::min(p[0], glm::min(p[1], p[2])), hi = glm::max(p[0], glm::max(p[1], p[2]));
+            facets.push_back({c.y, 0.5 * std::abs(n.y), {c.x, c.z}, n.y > 0.0, {lo.x, lo.z}, {hi.x, hi.z}});
         }
     }
     return facets;
@@ -171,6 +184,13 @@ Storeys findStoreys(const std::vector<Facet>& facets, double bottomY, double top
             areaAbove(ceilings, l.y + 0.5 * options.minHeadroom) >= options.minFloorShare * l.area)
             out.storeys.push_back({l.y, topY, l.area});
     if (out.storeys.empty()) return {{{bottomY, topY, 0.0}}, {}};
+    for (Storey& s : out.storeys)
+        for (const Facet& f : facets)
+            if (f.up && std::abs(f.y - s.floorY) <= 0.25) {
+                const bool first = s.floorMin.x > s.floorMax.x;
+                s.floorMin = first ? f.lo : glm::min(s.floorMin, f.lo);
+                s.floorMax = first ? f.hi : glm::max(s.floorMax, f.hi);
+            }
     for (std::size_t i = 0; i < out.storeys.size(); ++i) {
         Storey& s = out.storeys[i];
         const bool top = i + 1 == out.storeys.size();

@@ -41,23 +41,29 @@ struct StoreyOptions {
 };
 
 // One horizontal-ish triangle's contribution: its mean height (world y, metres) and its area
-// projected on (x, z) in m², with its centre for the stair columns.
+// projected on (x, z) in m², its centre for the stair columns and its (x, z) bounds.
 struct Facet {
     double y = 0.0;
     double area = 0.0;
-    glm::dvec2 centre{0.0};  // (x, z)
-    bool up = true;          // faces +Y (a floor); false: faces -Y (a ceiling)
+    glm::dvec2 centre{0.0};       // (x, z)
+    bool up = true;               // faces +Y (a floor); false: faces -Y (a ceiling)
+    glm::dvec2 lo{0.0}, hi{0.0};  // (x, z)
 };
 
 struct Storey {
     double floorY = 0.0, ceilingY = 0.0;  // world y, metres
     double floorArea = 0.0;               // upward area at the floor level, m²
+    // The (x, z) bounds of the upward facets within 0.25 m of floorY (empty, lo > hi, for
+    // the one storey of a model without floors).
+    glm::dvec2 floorMin{1.0}, floorMax{-1.0};
 };
 
-// A stair or ramp between storeys `from` and `from + 1`: its (x, z) rectangle.
+// A stair or ramp between storeys `from` and `from + 1`: its (x, z) rectangle, and the centres
+// of the 1 m columns holding its lowest and its highest step (where a walk enters and leaves).
 struct Stair {
     int from = 0;
     glm::dvec2 lo{0.0}, hi{0.0};
+    glm::dvec2 bottom{0.0}, top{0.0};
 };
 
 struct Storeys {

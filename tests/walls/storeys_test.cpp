@@ -43,6 +43,9 @@ TEST(Storeys, TwoSlabsAndARoofMakeTwoStoreys) {
     EXPECT_NEAR(found.storeys[1].floorY, 4.0, 1e-6);
     EXPECT_NEAR(found.storeys[1].ceilingY, 7.7, 1e-6);
     EXPECT_NEAR(found.storeys[0].floorArea, 400.0, 1e-6);  // 20 m x 20 m seen from above
+    // The slab's top, 20 m x 20 m about the origin (the walls' tops are higher).
+    EXPECT_NEAR(found.storeys[1].floorMin.x, -10.0, 1e-6);
+    EXPECT_NEAR(found.storeys[1].floorMax.y, 10.0, 1e-6);
     EXPECT_TRUE(found.stairs.empty());
 }
 
@@ -84,6 +87,8 @@ TEST(Storeys, AStairIsNoStoreyAndIsFoundBetweenTheFloors) {
     // x 5.4 and 5.8 and z 0.72 to 5.02: the 1 m columns x 5 to 6, z 0 to 6.
     EXPECT_EQ(stair.lo, glm::dvec2(5.0, 0.0));
     EXPECT_EQ(stair.hi, glm::dvec2(6.0, 6.0));
+    EXPECT_EQ(stair.bottom, glm::dvec2(5.5, 0.5));  // the 3rd tread's column
+    EXPECT_EQ(stair.top, glm::dvec2(5.5, 4.5));     // the 17th's (the first of its two columns)
 }
 
 TEST(Storeys, TablesAreNoStairs) {
