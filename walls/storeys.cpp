@@ -1,5 +1,7 @@
 #include "walls/storeys.h"
 
+#include "scenes/region.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -209,6 +211,55 @@ Storeys findStoreys(const scenes::Scene& scene, const StoreyOptions& options) {
     const scenes::Bounds b = scene.bounds();
     if (b.empty()) return {{{0.0, 0.0, 0.0}}, {}};
     return findStoreys(horizontalFacets(scene, options), b.min.y, b.max.y, options);
+}
+
+scenes::SceneDescription stackStoreys(const std::vector<scenes::SceneDescription>& perStorey, const Storeys& found,
+                                      double eyeHeight) {
+    assert(!perStorey.empty() && perStorey.size() == found.storeys.size());
+    scenes::SceneDescription out = perStorey.front();
+    out.cells.clear();
+    out.walls.clear();
+    out.realWalls.clear();
+    out.walkPath.clear();
+    out.wallPath.clear();
+    for (std::size_t i = 0; i < perStorey.size(); ++i) {
+        const scenes::SceneDescription& d = perStorey[i];
+        const std::string prefix = std::to_string(i) + "/";
+        const int first = static_cast<int>(out.cells.size());
+        for (scenes::Cell c : d.cells) {
+            c.name = prefix + c.name;
+            out.cells.push_back(std::move(c));
+        }
+        for (scenes::VirtualWall w : d.walls) {
+            w.name = prefix + w.name;
+            for (int& c : w.cells) c += c >= 0 ? first : 0;
+            out.walls.push_back(std::move(w));
+        }
+        for (scenes::RealWall w : d.realWalls) {
+            w.name = prefix + w.name;
+            out.realWalls.push_back(std::move(w));
+        }
+    }
+    for (std::size_t i = 0; i < perStorey.size(); ++i) {
+        const std::vector<glm::dvec3>& path = perStorey[i].walkPath;
+        if (path.empty()) continue;
+        if (i > 0 && !out.walkPath.empty()) {
+            const double below = found.storeys[i - 1].floorY + eyeHeight, above = found.storeys[i].floorY + eyeHeight;
+            const auto stair = std::find_if(found.stairs.begin(), found.stairs.end(), [&](const Stair& s) {
+                return s.from == static_cast<int>(i) - 1 &&
+                       scenes::findCell(out.cells, {s.bottom.x, below, s.bottom.y}) >= 0 &&
+                       scenes::findCell(out.cells, {s.top.x, above, s.top.y}) >= 0;
+            });
+            if (stair != found.stairs.end()) {
+                out.walkPath.push_back({stair->bottom.x, below, stair->bottom.y});
+                out.walkPath.push_back({stair->top.x, above, stair->top.y});
+            } else {
+                out.walkPath.push_back({path.front().x, below, path.front().z});
+            }
+        }
+        out.walkPath.insert(out.walkPath.end(), path.begin(), path.end());
+    }
+    return out;
 }
 
 int storeyAt(const std::vector<Storey>& storeys, double y) {

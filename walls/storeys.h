@@ -23,6 +23,7 @@
 // floor above; a large group is clutter, not a stair.
 
 #include "scenes/scene.h"
+#include "scenes/scene_description.h"
 
 #include <glm/glm.hpp>
 
@@ -84,5 +85,15 @@ Storeys findStoreys(const scenes::Scene& scene, const StoreyOptions& options = {
 // The storey holding height y: the highest whose floor is at or below y + 0.5 m, else the
 // lowest (the rule scenes::findCell uses for cells).
 int storeyAt(const std::vector<Storey>& storeys, double y);
+
+// One description of every storey's cells, walls and real walls (perStorey[i]: storey i's own,
+// all from one base), their names prefixed with the storey's number from 0 at the lowest
+// ("1/A1"), the walls' cell indices moved along, and one walk path: each storey's in turn,
+// going from one to the next up the first stair found between them whose ends lie in cells
+// (from its bottom at the lower floor's eye height to its top at the upper floor's), else
+// straight up at the upper path's start (as a lift would). Everything else (models, viewer) is perStorey[0]'s.
+// `perStorey` and `found.storeys` have the same size.
+scenes::SceneDescription stackStoreys(const std::vector<scenes::SceneDescription>& perStorey, const Storeys& found,
+                                      double eyeHeight);
 
 }  // namespace cavewall::walls
