@@ -253,8 +253,8 @@ scenes::SceneDescription stackStoreys(const std::vector<scenes::SceneDescription
             if (stair != found.stairs.end()) {
                 out.walkPath.push_back({stair->bottom.x, below, stair->bottom.y});
                 out.walkPath.push_back({stair->top.x, above, stair->top.y});
-            } else {
-                out.walkPath.push_back({path.front().x, below, path.front().z});
+            } else if (const glm::dvec3 foot{path.front().x, below, path.front().z}; out.walkPath.back() != foot) {
+                out.walkPath.push_back(foot);  // no zero-length step where the loops line up
             }
         }
         out.walkPath.insert(out.walkPath.end(), path.begin(), path.end());

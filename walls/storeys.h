@@ -6,10 +6,10 @@
 // to a histogram of heights (bins of `binMetres`, the triangle's mean y). Runs of adjacent
 // non-empty bins form levels (a level's height is its area-weighted mean); levels closer than
 // `mergeMetres` merge into the one with more area (a slab's top and a floor finish, a raised
-// step). A level is a floor when its area is at least `minFloorShare` of the largest level's:
-// a mezzanine, a table top or a stair tread is not a floor. The highest such level is a roof,
-// not a floor, when no downward-facing area of at least `minFloorShare` of its own lies above
-// it (nothing covers it). Downward-facing triangles make the same histogram for ceilings.
+// step). A level is a floor when its area is at least `minFloorShare` of the largest level's
+// (a mezzanine, a table top or a stair tread is not a floor) and downward-facing area of at
+// least `minFloorShare` of its own lies more than `minHeadroom` / 2 above it (a roof is covered
+// by nothing). Downward-facing triangles make the same histogram for ceilings.
 // Each storey spans from its floor to its ceiling: the highest ceiling level (area at least
 // `minFloorShare` of the floor's) between the floor + `minHeadroom` and the next floor (a
 // slab's underside), else the next floor; for the top storey the highest ceiling level above

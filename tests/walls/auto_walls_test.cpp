@@ -192,6 +192,7 @@ TEST(AutoWalls, EveryStoreyGetsItsOwnCellsWallsAndWalk) {
             EXPECT_EQ(d.walkPath[i].z, d.walkPath[i + 1].z);
         }
     EXPECT_EQ(rises, 1);
+    for (std::size_t i = 0; i + 1 < d.walkPath.size(); ++i) EXPECT_NE(d.walkPath[i], d.walkPath[i + 1]) << i;
     // It plans: the storeys' walls do not see each other.
     EXPECT_NO_THROW(planZones(d, options().plan));
 }
