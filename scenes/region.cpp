@@ -78,6 +78,13 @@ int findCell(const std::vector<Cell>& cells, glm::dvec3 p) {
     return best >= 0 ? best : lowest;
 }
 
+glm::dvec2 cellHeadHeights(const SceneDescription& d, int cell) {
+    if (cell < 0 || cell >= static_cast<int>(d.cells.size())) return d.headHeightRange;
+    double lowest = d.cells[cell].floorY;
+    for (const Cell& c : d.cells) lowest = std::min(lowest, c.floorY);
+    return d.headHeightRange + (d.cells[cell].floorY - lowest);
+}
+
 namespace {
 
 double pointSegmentDistance(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {

@@ -31,4 +31,9 @@ double segmentRegionDistance(glm::dvec2 a, glm::dvec2 b, const std::vector<glm::
 
 int findCell(const std::vector<Cell>& cells, glm::dvec3 p);
 
+// The absolute head heights (y) the walls of cell `cell` serve: d.headHeightRange, raised by
+// the height of the cell's floor above the lowest cell floor (a storey above serves the same
+// heads over its own floor). Cells that all share one floor serve d.headHeightRange itself.
+glm::dvec2 cellHeadHeights(const SceneDescription& d, int cell);
+
 }  // namespace cavewall::scenes

@@ -28,7 +28,8 @@ const char* const kWallsUsage =
     "\n"
     "Proposes cells and virtual walls for MODEL (a glTF/GLB nobody prepared, or a scene.json or\n"
     "its folder, whose cells and walls are replaced): finds structure (large planes, or the\n"
-    "scene's structure node names), the floor, ceiling and walkable rectangle, and tries every\n"
+    "scene's structure node names), the storeys (floors where much upward-facing area lies at one\n"
+    "height, each up to the ceiling above it), the walkable rectangle, and tries every\n"
     "grid of cells at least --min-cell metres wide (default 4, at most --max-cells per axis,\n"
     "default 8; each cut moved to where the fewest objects straddle it). Each grid is planned\n"
     "with the zone planner at --alpha (default 10 degrees), --ppd (default 10) and --max-res\n"
@@ -48,6 +49,9 @@ const char* const kWallsUsage =
     "rooms: cells cut along the lines of real walls, each doorway a portal (as high as its lintel)\n"
     "and every piece a real wall; --rooms chooses it whatever the cost model says (the model\n"
     "does not count what real walls hide).\n"
+    "A building of several storeys gets cells for each storey on its own (named \"<storey>/<cell>\",\n"
+    "with the storey's floorY, its walls from its floor to its ceiling, an equal share of\n"
+    "--texture-budget each) and one walk path through every storey, up the stairs found.\n"
     "--keep-paths keeps the input scene's walkPath and wallPath instead of the proposal's loop\n"
     "(so that `run` and `bench` walk the same path on both), each point checked to lie in a\n"
     "proposed cell.\n"
@@ -55,6 +59,32 @@ const char* const kWallsUsage =
     "one, a 0.5 m grid over the floor), each drawing its cell plus every neighbour whose wall's\n"
     "geometry zone or texture->geometry blend strip holds it, as the walkthrough does (the\n"
     "default counts the viewer's cell only, weighted by floor area).\n";
+
+namespace {
+
+// "storeys: 2 (floors at y 0.00 and 4.60 m)", then a line per storey and the stairs.
+void printStoreys(const walls::AutoWallsResult& result) {
+    const std::size_t n = result.storeys.size();
+    std::string floors;
+    for (std::size_t i = 0; i < n; ++i) {
+        char y[32];
+        std::snprintf(y, sizeof y, "%.2f", result.storeys[i].storey.floorY);
+        floors += (i == 0 ? "" : i + 1 == n ? " and " : ", ") + std::string(y);
+    }
+    std::printf("storeys: %zu (%s at y %s m)\n", n, n == 1 ? "floor" : "floors", floors.c_str());
+    for (std::size_t i = 0; i < n; ++i) {
+        const walls::AutoWallsStorey& s = result.storeys[i];
+        std::printf(
+            "storey %zu: floor y %.3f m, ceiling y %.3f m, walkable x [%.2f, %.2f] z [%.2f, %.2f] m, %d cells\n", i,
+            s.storey.floorY, s.storey.ceilingY, s.floorMin.x, s.floorMax.x, s.floorMin.y, s.floorMax.y, s.cells);
+    }
+    if (n > 1 && result.stairs.empty()) std::printf("stairs: none found (the walk path rises straight up)\n");
+    for (const walls::Stair& s : result.stairs)
+        std::printf("stair: storey %d to %d at x [%.0f, %.0f] z [%.0f, %.0f] m, from (%.1f, %.1f) to (%.1f, %.1f)\n",
+                    s.from, s.from + 1, s.lo.x, s.hi.x, s.lo.y, s.hi.y, s.bottom.x, s.bottom.y, s.top.x, s.top.y);
+}
+
+}  // namespace
 
 int runWalls(const std::vector<std::string>& words) {
     const Args args(words, {"rooms", "keep-paths", "walk-cost"});
@@ -141,13 +171,17 @@ int runWalls(const std::vector<std::string>& words) {
                                          out.string() + " (--keep-paths: the paths of " + path + ")");
     }
 
-    std::printf("floor y %.3f m, ceiling y %.3f m, walkable x [%.2f, %.2f] z [%.2f, %.2f] m, %zu structure objects\n",
-                result.floorY, result.ceilingY, result.floorMin.x, result.floorMax.x, result.floorMin.y,
-                result.floorMax.y, result.structure.size());
+    printStoreys(result);
+    std::printf("%zu structure objects\n", result.structure.size());
     std::printf("%-7s %6s %12s %16s %9s %12s %7s\n", "grid", "cells", "expected ms", "cell triangles", "textures",
                 "texture MiB", "budget");
     for (std::size_t i = 0; i < result.candidates.size(); ++i) {
         const walls::AutoWallsCandidate& c = result.candidates[i];
+        if (result.storeys.size() > 1 && (i == 0 || result.candidates[i - 1].storey != c.storey))
+            std::printf("storey %d:\n", c.storey);
+        const bool chosen =
+            std::any_of(result.storeys.begin(), result.storeys.end(),
+                        [&](const walls::AutoWallsStorey& s) { return s.chosen == static_cast<int>(i); });
         const std::string grid = c.rooms ? "rooms" : std::to_string(c.nx) + "x" + std::to_string(c.nz);
         const std::string rooms = c.rooms ? "  (" + std::to_string(c.nx) + " x " + std::to_string(c.nz) +
                                                 " along real walls: " + std::to_string(c.portals) + " portals, " +
@@ -155,7 +189,7 @@ int runWalls(const std::vector<std::string>& words) {
                                           : "";
         std::printf("%-7s %6d %12.1f %16.0f %9d %12.1f %7s%s%s\n", grid.c_str(), c.nx * c.nz, c.expectedMs,
                     c.meanCellTriangles, c.textures, c.textureMB, c.withinBudget ? "fits" : "over",
-                    static_cast<int>(i) == result.chosen ? "  <- chosen" : "", rooms.c_str());
+                    chosen ? "  <- chosen" : "", rooms.c_str());
     }
     if (const auto& g = result.given)
         std::printf("%-7s %6zu %12.1f %16.0f %9d %12.1f %7s  (the input's own cells and walls)\n", "given",

@@ -5,6 +5,7 @@
 #include "scenes/region.h"
 #include "scenes/scene_description_io.h"
 #include "walls/plan_io.h"
+#include "walls/storeys.h"
 
 #include <algorithm>
 #include <array>
@@ -554,6 +555,78 @@ int chooseCandidate(const std::vector<AutoWallsCandidate>& candidates, bool pref
     return chosen;
 }
 
+// The parts of the storey [floorY, ceilingY): content and wall pieces whose boxes reach into it,
+// each piece cut to that range.
+ModelParts storeyParts(const ModelParts& parts, double floorY, double ceilingY) {
+    constexpr double kReach = 0.05;  // metres into the storey: a slab's edge is not in it
+    ModelParts own;
+    for (std::size_t i = 0; i < parts.content.size(); ++i)
+        if (parts.content[i].max.y > floorY + kReach && parts.content[i].min.y < ceilingY - kReach) {
+            own.content.push_back(parts.content[i]);
+            own.contentTriangles.push_back(parts.contentTriangles[i]);
+        }
+    for (WallPiece p : parts.pieces)
+        if (p.top > floorY + kReach && p.bottom < ceilingY - kReach) {
+            p.bottom = std::max(p.bottom, floorY);
+            p.top = std::min(p.top, ceilingY);
+            own.pieces.push_back(p);
+        }
+    return own;
+}
+
+// 7.'s walkable rectangle of storey `s`: the part of `hall` (2.'s) within its floor's bounds,
+// the floor's bounds when they do not meet, `hall` when the storey has no floor.
+Rect storeyRect(const Storey& s, const Rect& hall) {
+    if (s.floorMin.x > s.floorMax.x) return hall;
+    const Rect r{glm::max(hall.lo, s.floorMin), glm::min(hall.hi, s.floorMax)};
+    if (r.hi.x - r.lo.x < 1e-3 || r.hi.y - r.lo.y < 1e-3) return {s.floorMin, s.floorMax};
+    return r;
+}
+
+// 7. Every storey of `found` (two or more) cut on its own; the proposal stacks the chosen ones.
+void proposeStoreys(AutoWallsResult& result, const Storeys& found, const ModelParts& parts,
+                    const scenes::SceneDescription& named, const scenes::SceneDescription& base,
+                    const AutoWallsOptions& options, const Rect& hall) {
+    AutoWallsOptions each = options;
+    each.textureBudgetMB = options.textureBudgetMB / static_cast<double>(found.storeys.size());
+    std::vector<scenes::SceneDescription> chosen;
+    for (std::size_t i = 0; i < found.storeys.size(); ++i) {
+        const Storey& s = found.storeys[i];
+        const ModelParts own = storeyParts(parts, s.floorY, s.ceilingY);
+        const Rect walkable = storeyRect(s, hall);
+        std::vector<glm::dvec3> eyes;
+        if (options.walkCost) {
+            const double eyeY = s.floorY + base.eyeHeight;
+            eyes = costEyes(base.walkPath, walkable.lo, walkable.hi, eyeY);
+            std::erase_if(eyes, [&](const glm::dvec3& e) {
+                return storeyAt(found.storeys, e.y - base.eyeHeight) != static_cast<int>(i);
+            });
+            if (eyes.empty()) eyes = costEyes({}, walkable.lo, walkable.hi, eyeY);
+        }
+        const CandidateInputs in{named, own, each, eyes, s.floorY, s.ceilingY, base.eyeHeight};
+        Proposals proposals;
+        addGrids(proposals, in, walkable);
+        addRooms(proposals, in, walkable);
+        const int pick = chooseCandidate(proposals.candidates, options.preferRooms);
+        const int first = static_cast<int>(result.candidates.size());
+        for (AutoWallsCandidate& c : proposals.candidates) {
+            c.storey = static_cast<int>(i);
+            result.candidates.push_back(c);
+        }
+        const int cells = static_cast<int>(proposals.descriptions[pick].cells.size());
+        result.storeys.push_back({s, walkable.lo, walkable.hi, first + pick, cells});
+        chosen.push_back(std::move(proposals.descriptions[pick]));
+    }
+    result.description = stackStoreys(chosen, found, base.eyeHeight);
+    scenes::validateSceneDescription(result.description, "auto walls (storeys)");
+    const AutoWallsStorey& lowest = result.storeys.front();
+    result.floorY = lowest.storey.floorY;
+    result.ceilingY = lowest.storey.ceilingY;
+    result.floorMin = lowest.floorMin;
+    result.floorMax = lowest.floorMax;
+    result.chosen = lowest.chosen;
+}
+
 }  // namespace
 
 void validateAutoWallsOptions(const AutoWallsOptions& o) {
@@ -594,17 +667,32 @@ AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDesc
     result.structure.erase(std::unique(result.structure.begin(), result.structure.end()), result.structure.end());
     const scenes::SceneDescription named = withStructure(base, result.structure, patterns);
 
-    // 3-5. Candidates, cost and budget (6.: the walk cost's eyes).
+    // 7. More than one storey: each cut on its own.
+    const Storeys found = findStoreys(horizontalFacets(scene), all.min.y, all.max.y);
+    result.stairs = found.stairs;
+    if (found.storeys.size() > 1) {
+        proposeStoreys(result, found, parts, named, base, options, walkable);
+    } else {
+        // 3-5. Candidates, cost and budget (6.: the walk cost's eyes).
+        const std::vector<glm::dvec3> eyes =
+            options.walkCost ? costEyes(base.walkPath, walkable.lo, walkable.hi, result.floorY + base.eyeHeight)
+                             : std::vector<glm::dvec3>{};
+        const CandidateInputs in{named, parts, options, eyes, result.floorY, result.ceilingY, base.eyeHeight};
+        Proposals proposals;
+        addGrids(proposals, in, walkable);
+        addRooms(proposals, in, walkable);
+        result.candidates = std::move(proposals.candidates);
+        result.chosen = chooseCandidate(result.candidates, options.preferRooms);
+        result.description = std::move(proposals.descriptions[result.chosen]);
+        Storey one = found.storeys.front();
+        one.floorY = result.floorY;  // 1.'s structure planes, as before storeys were found
+        one.ceilingY = result.ceilingY;
+        result.storeys.push_back(
+            {one, walkable.lo, walkable.hi, result.chosen, static_cast<int>(result.description.cells.size())});
+    }
     const std::vector<glm::dvec3> eyes =
         options.walkCost ? costEyes(base.walkPath, walkable.lo, walkable.hi, result.floorY + base.eyeHeight)
                          : std::vector<glm::dvec3>{};
-    const CandidateInputs in{named, parts, options, eyes, result.floorY, result.ceilingY, base.eyeHeight};
-    Proposals proposals;
-    addGrids(proposals, in, walkable);
-    addRooms(proposals, in, walkable);
-    result.candidates = std::move(proposals.candidates);
-    result.chosen = chooseCandidate(result.candidates, options.preferRooms);
-    result.description = std::move(proposals.descriptions[result.chosen]);
     if (!base.walls.empty()) result.given = evaluate(base, parts.content, parts.contentTriangles, options, eyes);
     return result;
 }

@@ -41,11 +41,22 @@
 //    The costs per triangle and per texture are inputs: measure them on the target machine
 //    (`cavewall bench`'s full-geometry and walls rows give both); the defaults are this
 //    project's llvmpipe figures at 1024 x 1024 per screen (docs/virtual-walls.md).
+// 7. Storeys. walls/storeys.h finds the floors from the geometry's horizontal area. With one
+//    storey, 1.-6. apply as they stand. With more, each storey is cut on its own: its floor and
+//    ceiling from walls/storeys.h, its walkable rectangle the part of 2.'s within its floor's
+//    (x, z) bounds, its content and wall pieces those whose boxes reach into [floor, ceiling),
+//    a wall piece cut to that range, and an equal share of textureBudgetMB; the walk cost's eyes
+//    are those of the storey holding them (storeyAt, at eye height above its floor). The
+//    cheapest candidate of every storey is chosen, and the proposal stacks them: cells named
+//    "<storey>/<cell>" with their storey's floorY (scenes::findCell picks a cell by height), one
+//    walk path visiting every storey in turn, up the stairs found (walls/storeys.h,
+//    stackStoreys).
 // Deterministic: the same scene and options give the same description, byte for byte.
 
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
 #include "walls/plan.h"
+#include "walls/storeys.h"
 
 #include <optional>
 #include <string>
@@ -82,6 +93,16 @@ struct AutoWallsCandidate {
     bool withinBudget = true;
     bool rooms = false;                 // cut along real walls (5. below), not a grid
     int portals = 0, virtualWalls = 0;  // rooms: its portals and virtual walls
+    int storey = 0;                     // the storey it cuts (AutoWallsResult::storeys)
+};
+
+// One storey of the proposal: its floor and ceiling, its walkable rectangle (x, z), the
+// candidate chosen for it and that candidate's cells.
+struct AutoWallsStorey {
+    Storey storey;
+    glm::dvec2 floorMin{0.0}, floorMax{0.0};
+    int chosen = 0;  // index into AutoWallsResult::candidates
+    int cells = 0;
 };
 
 struct AutoWallsResult {
@@ -93,6 +114,10 @@ struct AutoWallsResult {
     std::vector<AutoWallsCandidate> candidates;  // in the order tried (nx, then nz; a row of nz
                                                  // stops at its first candidate over the budget)
     int chosen = 0;                              // index into candidates
+    // The storeys (7.), bottom to top, at least one; floorY, ceilingY, floorMin, floorMax and
+    // chosen above are the lowest storey's.
+    std::vector<AutoWallsStorey> storeys;
+    std::vector<Stair> stairs;  // between the storeys (walls/storeys.h)
     // The same figures for the input's own cells and walls (hand-placed), when it has walls;
     // nx = nz = 0. A cell's triangles are counted over its region's bounding rectangle.
     std::optional<AutoWallsCandidate> given;

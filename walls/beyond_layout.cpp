@@ -1,6 +1,8 @@
 #include "walls/visibility.h"
 #include "walls/zone_layout.h"
 
+#include "scenes/region.h"
+
 #include <cmath>
 
 namespace cavewall::walls {
@@ -69,8 +71,8 @@ void regionInputs(const Plan& plan, const scenes::SceneDescription& d, const Vis
         Polygon2 floor = clipHalfPlane(r.floor, -far.inward, -glm::dot(far.inward, far.origin));
         if (std::abs(signedArea(floor)) <= kMinRegionArea) continue;
         const SideFrame frame{far.origin, far.along, far.inward};
-        inputs.push_back(
-            {far.cell, far.wall, far.side, frame, std::move(floor), plan.walls[far.wall].quad, d.headHeightRange});
+        inputs.push_back({far.cell, far.wall, far.side, frame, std::move(floor), plan.walls[far.wall].quad,
+                          scenes::cellHeadHeights(d, far.cell)});
         regions.push_back(&r);
     }
 }

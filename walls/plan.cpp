@@ -2,6 +2,7 @@
 
 #include "config/error.h"
 #include "config/json_reader.h"
+#include "scenes/region.h"
 #include "walls/angular_error.h"
 #include "walls/parallel_for.h"
 #include "walls/zone_layout.h"
@@ -157,8 +158,8 @@ Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options, co
             const int cell = wall.cells[side];
             if (cell < 0 || cell >= int(d.cells.size())) continue;
             checkExtent(d.cells[cell]);
-            inputs.push_back(
-                {cell, w, side, frameOf(wall, side), d.cells[cell].region, plan.walls.back().quad, d.headHeightRange});
+            inputs.push_back({cell, w, side, frameOf(wall, side), d.cells[cell].region, plan.walls.back().quad,
+                              scenes::cellHeadHeights(d, cell)});
         }
     }
     plan.sides = planSides(plan, inputs, plan.zones);
@@ -166,7 +167,7 @@ Plan planZones(const scenes::SceneDescription& d, const PlanOptions& options, co
     parallelFor(int(plan.textures.size()), [&](int i) {
         Texture& t = plan.textures[i];
         const PlannedWall& w = plan.walls[t.wall];
-        const ZoneVolume volume{t.validRegion, d.headHeightRange};
+        const ZoneVolume volume{t.validRegion, scenes::cellHeadHeights(d, t.cell)};
         t.resolution = textureResolution(nearestDistance(t.validRegion, t.samplingPoint.y, w.quad), w.quad, options);
         t.maxError = options.wallKind == WallKind::Flat
                          ? zoneMaxError(volume, t.samplingPoint, w.quad)

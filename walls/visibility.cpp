@@ -11,13 +11,20 @@ namespace {
 
 constexpr double kOnLine = 1e-6;      // metres: an edge lies on another's line
 constexpr double kMinOpening = 1e-3;  // metres of open boundary that count as a connection
+// Cells whose floors differ by more than this are on different storeys: they share no open
+// boundary, and a wall covers a cell's edge only when it reaches into [floorY, floorY + this].
+constexpr double kStoreyStep = 1.0;
 
 struct Segment {
     glm::dvec2 a, b;
+    double bottom = 0.0, top = 0.0;  // the wall's y range
 };
 
-Segment footprint(glm::dvec3 lowerLeft, glm::dvec3 lowerRight) {
-    return {{lowerLeft.x, lowerLeft.z}, {lowerRight.x, lowerRight.z}};
+Segment footprint(glm::dvec3 lowerLeft, glm::dvec3 lowerRight, glm::dvec3 upperLeft) {
+    return {{lowerLeft.x, lowerLeft.z},
+            {lowerRight.x, lowerRight.z},
+            std::min(lowerLeft.y, upperLeft.y),
+            std::max(lowerLeft.y, upperLeft.y)};
 }
 
 double cross2(glm::dvec2 u, glm::dvec2 v) { return u.x * v.y - u.y * v.x; }
@@ -36,8 +43,8 @@ bool onLine(const Segment& e, const Segment& s, glm::dvec2& interval) {
 
 std::vector<Segment> allFootprints(const scenes::SceneDescription& d) {
     std::vector<Segment> out;
-    for (const auto& w : d.walls) out.push_back(footprint(w.lowerLeft, w.lowerRight));
-    for (const auto& w : d.realWalls) out.push_back(footprint(w.lowerLeft, w.lowerRight));
+    for (const auto& w : d.walls) out.push_back(footprint(w.lowerLeft, w.lowerRight, w.upperLeft));
+    for (const auto& w : d.realWalls) out.push_back(footprint(w.lowerLeft, w.lowerRight, w.upperLeft));
     return out;
 }
 
@@ -140,6 +147,8 @@ namespace {
 double openLength(const scenes::SceneDescription& d, const std::vector<Segment>& walls, int a, int b) {
     const auto& ra = d.cells[a].region;
     const auto& rb = d.cells[b].region;
+    const double floorY = d.cells[a].floorY;
+    if (std::abs(d.cells[b].floorY - floorY) > kStoreyStep) return 0.0;
     double open = 0;
     for (std::size_t i = 0; i < ra.size(); ++i) {
         const Segment e{ra[i], ra[(i + 1) % ra.size()]};
@@ -149,7 +158,7 @@ double openLength(const scenes::SceneDescription& d, const std::vector<Segment>&
             std::vector<glm::dvec2> covers;
             for (const Segment& w : walls) {
                 glm::dvec2 c;
-                if (onLine(e, w, c)) covers.push_back(c);
+                if (w.top > floorY && w.bottom < floorY + kStoreyStep && onLine(e, w, c)) covers.push_back(c);
             }
             open += uncovered(shared, covers);
         }

@@ -32,7 +32,8 @@ struct VisibilityTable {
 VisibilityTable computeVisibility(const scenes::SceneDescription& description);
 
 // Length (metres) of the boundary cells a and b share that no wall (virtual, portal or real)
-// covers.
+// reaching into the first metre above a's floor covers; 0 between cells whose floors differ by
+// more than 1 m (different storeys, stacked or side by side).
 double openBoundaryLength(const scenes::SceneDescription& description, int a, int b);
 
 // Where an axis-aligned box is relative to a wall seen from `side` (0: the front, i.e. the side

@@ -3,6 +3,7 @@
 #include "config/error.h"
 #include "scenes/generate.h"
 #include "scenes/primitives.h"
+#include "scenes/region.h"
 #include "scenes/scene_description_io.h"
 #include "tests/support/files.h"
 
@@ -125,6 +126,102 @@ TEST(AutoWalls, ATinyBudgetLeavesOneCellWithoutWalls) {
     EXPECT_EQ(r.description.cells.size(), 1u);
     EXPECT_TRUE(r.description.walls.empty());
     for (std::size_t i = 1; i < r.candidates.size(); ++i) EXPECT_FALSE(r.candidates[i].withinBudget);
+}
+
+// hall() with a second storey instead of its ceiling: a slab from y 3.8 to 4, a roof slab from
+// 7.8 to 8, the hall walls 8 m high, and ten crates upstairs (along x at z = 2.5).
+scenes::Scene twoStoreyHall() {
+    scenes::Scene s = hall();
+    std::erase_if(s.objects, [](const scenes::Object& o) { return o.name == "ceiling"; });
+    auto box = [&](glm::dvec3 size, glm::dvec3 centre, const std::string& name) {
+        s.meshes.push_back(scenes::makeBox(glm::vec3(size), glm::vec4(0.5f, 0.5f, 0.5f, 1.0f)));
+        scenes::addObject(s, static_cast<int>(s.meshes.size()) - 1, glm::translate(glm::dmat4(1.0), centre), name);
+    };
+    box({40, 0.2, 10}, {0, 3.9, 0}, "slab");
+    box({40, 0.2, 10}, {0, 7.9, 0}, "roof");
+    box({40, 8, 0.1}, {0, 4, -5}, "upper-north");
+    box({40, 8, 0.1}, {0, 4, 5}, "upper-south");
+    for (int i = 0; i < 10; ++i) box({1, 1, 1}, {-18.0 + 4.0 * i, 4.5, 2.5}, "upper crate " + std::to_string(i));
+    return s;
+}
+
+TEST(AutoWalls, EveryStoreyGetsItsOwnCellsWallsAndWalk) {
+    const AutoWallsResult r = proposeWalls(twoStoreyHall(), bare(), options());
+    ASSERT_EQ(r.storeys.size(), 2u);
+    // Floors at the slabs' tops; ceilings at the undersides of the slab and the roof above them.
+    EXPECT_NEAR(r.storeys[0].storey.floorY, 0.0, 1e-6);
+    EXPECT_NEAR(r.storeys[0].storey.ceilingY, 3.8, 1e-6);
+    EXPECT_NEAR(r.storeys[1].storey.floorY, 4.0, 1e-6);
+    EXPECT_NEAR(r.storeys[1].storey.ceilingY, 7.8, 1e-6);
+    EXPECT_TRUE(r.stairs.empty());
+    // Each storey's candidates count its own crates only: one cell draws 41 crates downstairs
+    // and 10 upstairs, 12 triangles each.
+    for (int storey : {0, 1}) {
+        const auto first = std::find_if(r.candidates.begin(), r.candidates.end(),
+                                        [&](const AutoWallsCandidate& c) { return c.storey == storey; });
+        ASSERT_NE(first, r.candidates.end());
+        EXPECT_DOUBLE_EQ(first->meanCellTriangles, (storey == 0 ? 41.0 : 10.0) * 12.0);
+        EXPECT_EQ(r.candidates[r.storeys[storey].chosen].storey, storey);
+    }
+    // Cells of each storey carry its floor and are named by it; walls span their storey.
+    const scenes::SceneDescription& d = r.description;
+    EXPECT_EQ(static_cast<int>(d.cells.size()), r.storeys[0].cells + r.storeys[1].cells);
+    for (const scenes::Cell& c : d.cells) {
+        const bool upper = c.name.rfind("1/", 0) == 0;
+        EXPECT_TRUE(upper || c.name.rfind("0/", 0) == 0) << c.name;
+        EXPECT_NEAR(c.floorY, upper ? 4.0 : 0.0, 1e-6) << c.name;
+    }
+    for (const scenes::VirtualWall& w : d.walls) {
+        const double floorY = d.cells[w.cells[0]].floorY;
+        EXPECT_NEAR(d.cells[w.cells[1]].floorY, floorY, 1e-9) << w.name;
+        EXPECT_NEAR(w.lowerLeft.y, floorY, 1e-6) << w.name;
+        EXPECT_NEAR(w.upperLeft.y, floorY + 3.8, 1e-6) << w.name;
+    }
+    // A viewer at eye height above either floor is in that storey's cell.
+    EXPECT_NEAR(d.cells[scenes::findCell(d.cells, {1.0, 1.7, 1.0})].floorY, 0.0, 1e-6);
+    EXPECT_NEAR(d.cells[scenes::findCell(d.cells, {1.0, 5.7, 1.0})].floorY, 4.0, 1e-6);
+    // The walk visits both storeys and, without stairs, rises straight between them.
+    ASSERT_FALSE(d.walkPath.empty());
+    EXPECT_NEAR(d.walkPath.front().y, 1.7, 1e-6);
+    EXPECT_NEAR(d.walkPath.back().y, 5.7, 1e-6);
+    int rises = 0;
+    for (std::size_t i = 0; i + 1 < d.walkPath.size(); ++i)
+        if (d.walkPath[i + 1].y > d.walkPath[i].y + 1.0) {
+            ++rises;
+            EXPECT_EQ(d.walkPath[i].x, d.walkPath[i + 1].x);
+            EXPECT_EQ(d.walkPath[i].z, d.walkPath[i + 1].z);
+        }
+    EXPECT_EQ(rises, 1);
+    for (std::size_t i = 0; i + 1 < d.walkPath.size(); ++i) EXPECT_NE(d.walkPath[i], d.walkPath[i + 1]) << i;
+    // It plans: the storeys' walls do not see each other.
+    EXPECT_NO_THROW(planZones(d, options().plan));
+}
+
+TEST(AutoWalls, AStairCarriesTheWalkBetweenStoreys) {
+    scenes::Scene s = twoStoreyHall();
+    // Treads 0.8 m wide (z -4.9 to -4.1, two metres clear of the crates: furniture next to a
+    // stair joins its group), 0.3 m deep along +x from x = 5.02, rising 0.2 m to 3.8 m.
+    for (int i = 0; i < 19; ++i) {
+        s.meshes.push_back(scenes::makeBox(glm::vec3(0.3f, 0.05f, 0.8f), glm::vec4(1.0f)));
+        scenes::addObject(s, static_cast<int>(s.meshes.size()) - 1,
+                          glm::translate(glm::dmat4(1.0), glm::dvec3(5.17 + 0.3 * i, 0.2 * (i + 1) - 0.025, -4.5)),
+                          "tread");
+    }
+    const AutoWallsResult r = proposeWalls(s, bare(), options());
+    ASSERT_EQ(r.storeys.size(), 2u);
+    ASSERT_EQ(r.stairs.size(), 1u);
+    const Stair& stair = r.stairs.front();
+    // The walk climbs from the stair's bottom at the ground floor's eye height to its top at
+    // the upper floor's.
+    const std::vector<glm::dvec3>& path = r.description.walkPath;
+    auto near = [](glm::dvec3 a, glm::dvec3 b) { return glm::length(a - b) < 1e-6; };
+    const auto at = std::find_if(path.begin(), path.end(), [&](const glm::dvec3& p) {
+        return near(p, {stair.bottom.x, 1.7, stair.bottom.y});
+    });
+    ASSERT_NE(at, path.end());
+    ASSERT_NE(at + 1, path.end());
+    EXPECT_TRUE(near(*(at + 1), {stair.top.x, 5.7, stair.top.y}));
+    EXPECT_LT(stair.bottom.x, stair.top.x);  // the treads climb along +x
 }
 
 TEST(AutoWalls, IsDeterministic) {

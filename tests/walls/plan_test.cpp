@@ -1,6 +1,7 @@
 #include "config/error.h"
 #include "walls/angular_error.h"
 #include "walls/plan.h"
+#include "walls/visibility.h"
 #include "walls/zone_index.h"
 
 #include "tests/walls/test_scenes.h"
@@ -91,6 +92,46 @@ TEST(Plan, HallKeepsTheBoundEverywhere) {
         EXPECT_GT(s.textureCount, 0);
     }
     EXPECT_EQ(plan.textures.size(), size_t(plan.sides[0].textureCount + plan.sides[1].textureCount));
+}
+
+TEST(Plan, AStoreyAboveServesHeadsOverItsOwnFloor) {
+    // The hall and a copy of it 4 m higher (cells with floorY 4, walls raised by 4 m): the
+    // upper storey's heads are the hall's head range raised by 4 m, so its zones are the hall's
+    // zones with heights 4 m higher and its textures keep the same bound.
+    const auto hall = testing::hall();
+    auto d = hall;
+    const int n = static_cast<int>(hall.cells.size());
+    for (scenes::Cell c : hall.cells) {
+        c.name += " upstairs";
+        c.floorY += 4.0;
+        d.cells.push_back(c);
+    }
+    for (scenes::VirtualWall w : hall.walls) {
+        w.name += " upstairs";
+        for (glm::dvec3* p : {&w.lowerLeft, &w.lowerRight, &w.upperLeft}) p->y += 4.0;
+        for (int& c : w.cells) c += c >= 0 ? n : 0;
+        d.walls.push_back(w);
+    }
+    // Stacked cells share their outlines in plan but no open boundary: each storey sees only
+    // itself.
+    const VisibilityTable table = computeVisibility(d);
+    for (int a = 0; a < n; ++a)
+        for (int b = n; b < 2 * n; ++b) {
+            EXPECT_EQ(table.at(a, b), CellVisibility::Hidden) << a << " -> " << b;
+            EXPECT_EQ(table.at(b, a), CellVisibility::Hidden) << b << " -> " << a;
+        }
+    const Plan one = planZones(hall), two = planZones(d);
+    expectPlanKeepsItsPromises(d, two);
+    ASSERT_EQ(two.zones.size(), 2 * one.zones.size());
+    ASSERT_EQ(two.textures.size(), 2 * one.textures.size());
+    for (std::size_t i = 0; i < one.zones.size(); ++i) {
+        const Zone& up = two.zones[one.zones.size() + i];
+        EXPECT_EQ(up.kind, one.zones[i].kind);
+        EXPECT_NEAR(up.heightRange.x, one.zones[i].heightRange.x + 4.0, 1e-9);
+        EXPECT_NEAR(up.heightRange.y, one.zones[i].heightRange.y + 4.0, 1e-9);
+    }
+    for (std::size_t i = 0; i < one.textures.size(); ++i)
+        EXPECT_NEAR(two.textures[one.textures.size() + i].maxError, one.textures[i].maxError, 1e-9);
 }
 
 TEST(Plan, ObliqueWallAndNonRectangularCells) {
