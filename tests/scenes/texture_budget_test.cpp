@@ -123,14 +123,14 @@ TEST(TextureBudget, ThousandsAreSeparatedInTheLine) {
 
 // The loader reduces at decode and the scene fits the budget; the line says what happened.
 TEST(TextureBudget, LoadedScenesKeepReducedImagesWithinTheLimits) {
-    const auto file = testing::writeTexturedQuads("texture-budget-load", {{4096, 4096}, {4096, 2048}, {1000, 3000}});
-    const TextureLimits limits{1024, std::size_t{5} << 20};
+    const auto file = testing::writeTexturedQuads("texture-budget-load", {{2048, 2048}, {2048, 1024}, {500, 1500}});
+    const TextureLimits limits{512, std::size_t{3} << 19};  // 1.5 MB
     const Scene scene = loadSceneFile(file, nullptr, limits);
     ASSERT_EQ(scene.images.size(), 3u);
-    // At decode: 4096 / 4 = 1024, 4096 x 2048 / 4, 3000 / 4 = 750 (1000 / 4 = 250). That is
-    // 4 MB + 2 MB + 750,000 bytes, over 5 MB, so the largest, 1024², is halved: 3.7 MB.
-    const glm::ivec2 expected[] = {{512, 512}, {1024, 512}, {250, 750}};
-    const glm::ivec2 source[] = {{4096, 4096}, {4096, 2048}, {1000, 3000}};
+    // At decode: 2048 / 4 = 512, 2048 x 1024 / 4, 1500 / 4 = 375 (500 / 4 = 125). That is
+    // 1 MB + 0.5 MB + 187,500 bytes, over 1.5 MB, so the largest, 512², is halved: 0.9 MB.
+    const glm::ivec2 expected[] = {{256, 256}, {512, 256}, {125, 375}};
+    const glm::ivec2 source[] = {{2048, 2048}, {2048, 1024}, {500, 1500}};
     std::size_t total = 0;
     for (int i = 0; i < 3; ++i) {
         SCOPED_TRACE(i);
@@ -151,10 +151,10 @@ TEST(TextureBudget, LoadedScenesKeepReducedImagesWithinTheLimits) {
     }
     EXPECT_LE(total, limits.budgetBytes);
     ASSERT_EQ(scene.notes.size(), 1u);
-    // Full size: 64 MB + 32 MB + 12,000,000 bytes = 107.4 MB; kept 3.7 MB.
+    // Full size: 16 MB + 8 MB + 3,000,000 bytes = 26.9 MB; kept 974,220 bytes = 0.93 MB.
     EXPECT_EQ(scene.notes[0],
-              "textures: 3 images, 107 MB decoded at full size -> 3.7 MB, largest side 1024 px (limits: 1024 px, "
-              "budget 5.0 MB)");
+              "textures: 3 images, 27 MB decoded at full size -> 0.9 MB, largest side 512 px (limits: 512 px, "
+              "budget 1.5 MB)");
 }
 
 TEST(TextureBudget, ImagesWithinTheLimitsAreKeptAsInTheFile) {
