@@ -6,6 +6,7 @@
 
 #include "config/display_config.h"
 #include "scenes/scene_description.h"
+#include "scenes/texture_budget.h"
 #include "walkthrough/frame_types.h"
 #include "walls/depth_wall.h"
 #include "walls/plan.h"
@@ -98,7 +99,8 @@ struct RunOptions {
     std::optional<std::filesystem::path> record;  // write the input stream for replay
     bool synchronousPaging = false;               // see gl::WalkthroughOptions
     double textureBudgetMB = 256.0;
-    int bakeResolution = 1024;  // --max-res: BakeSettings::maxResolution (bench, demo: 512)
+    scenes::TextureLimits sceneTextures;  // --texture-max, --texture-budget: the scene's own images
+    int bakeResolution = 1024;            // --max-res: BakeSettings::maxResolution (bench, demo: 512)
     // --bake-on-demand: start at once and bake missing textures in the background while walking
     // (walls/gl/background_baker.h); flat walls, without --sync-paging and --cluster.
     bool bakeOnDemand = false;

@@ -13,6 +13,7 @@
 #include "scenes/gltf_meshopt.h"
 #include "scenes/gltf_prepass.h"
 #include "scenes/load_limits.h"
+#include "scenes/texture_budget.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -354,6 +355,40 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
     return true;
 }
 
+// tinygltf's image callback: decodes one image (tinygltf's own decoder), reduces it to
+// `maxSide` (scenes/texture_budget.h) into `images[index]` and releases the full-size decode
+// before the next image is read, so that at most one full-size image is held at a time. An
+// image that decoded to something unexpected is left to convertImages' warning.
+struct ImageDecoder {
+    int maxSide = 0;
+    std::vector<Image> images;  // by glTF image index; empty where nothing was decoded
+
+    static bool decode(tinygltf::Image* image, const int index, std::string* err, std::string* warn, int width,
+                       int height, const unsigned char* bytes, int size, void* self) {
+        if (!tinygltf::LoadImageData(image, index, err, warn, width, height, bytes, size, nullptr)) return false;
+        const int w = image->width, h = image->height, sampleBytes = image->bits / 8;
+        if (index < 0 || image->component != 4 || (sampleBytes != 1 && sampleBytes != 2) || w <= 0 || h <= 0 ||
+            image->image.size() < static_cast<std::size_t>(w) * h * 4 * sampleBytes)
+            return true;
+        auto& images = static_cast<ImageDecoder*>(self)->images;
+        const int factor = reductionFactor(w, h, static_cast<ImageDecoder*>(self)->maxSide);
+        Image img;
+        if (factor == 1 && sampleBytes == 1) {
+            img.width = w;
+            img.height = h;
+            img.rgba = std::move(image->image);
+        } else {
+            img = reduceImage(image->image.data(), w, h, sampleBytes, factor);
+        }
+        img.sourceWidth = w;
+        img.sourceHeight = h;
+        std::vector<unsigned char>().swap(image->image);
+        if (images.size() <= static_cast<std::size_t>(index)) images.resize(static_cast<std::size_t>(index) + 1);
+        images[static_cast<std::size_t>(index)] = std::move(img);
+        return true;
+    }
+};
+
 // tinygltf joins messages with newlines; keep them on one line per message.
 std::string oneLine(std::string s) {
     while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
@@ -371,7 +406,8 @@ void checkSize(std::string_view bytes, const std::filesystem::path& file) {
 // The container and the JSON's nesting are checked before tinygltf sees anything, and compressed
 // files are adjusted so that it accepts them (gltf_prepass.h); EXT_meshopt_compression's views
 // are decoded once it has parsed (gltf_meshopt.h).
-tinygltf::Model parseModel(std::string_view bytes, const std::filesystem::path& file, std::string& warn) {
+tinygltf::Model parseModel(std::string_view bytes, const std::filesystem::path& file, std::string& warn,
+                           ImageDecoder& images) {
     checkSize(bytes, file);
     std::optional<PreparedGltf> prepared;
     const bool glb = bytes.substr(0, 4) == "glTF";
@@ -390,6 +426,7 @@ tinygltf::Model parseModel(std::string_view bytes, const std::filesystem::path& 
     tinygltf::FsCallbacks fs{&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readWholeFile,
                              &tinygltf::WriteWholeFile, nullptr};
     parser.SetFsCallbacks(fs);
+    parser.SetImageLoader(&ImageDecoder::decode, &images);
     std::string err;
     const std::string baseDir = file.parent_path().string();
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
@@ -403,22 +440,23 @@ tinygltf::Model parseModel(std::string_view bytes, const std::filesystem::path& 
 
 }  // namespace
 
-Scene loadGltf(const std::filesystem::path& file) {
+Scene loadGltf(const std::filesystem::path& file, int textureMaxSide) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(file, ec))
         throw Error(file.string() + ": cannot open the glTF file (expected an existing .gltf or .glb file)");
-    return loadGltfFromMemory(config::readTextFile(file), file);
+    return loadGltfFromMemory(config::readTextFile(file), file, textureMaxSide);
 }
 
-Scene loadGltfFromMemory(std::string_view bytes, const std::filesystem::path& file) {
+Scene loadGltfFromMemory(std::string_view bytes, const std::filesystem::path& file, int textureMaxSide) {
     std::string warn;
-    tinygltf::Model model = parseModel(bytes, file, warn);
+    ImageDecoder images{textureMaxSide, {}};
+    tinygltf::Model model = parseModel(bytes, file, warn, images);
     Loader l{GltfContext{model, file.string()}, Scene{}, "scene '" + file.filename().string() + "'"};
     l.scene.name = file.stem().string();
     if (!warn.empty()) l.warn("glTF parser: " + oneLine(warn));
     checkRequiredExtensions(l.ctx);
     std::vector<std::string> warnings;
-    convertImages(l.ctx, l.scene, warnings);
+    convertImages(l.ctx, std::move(images.images), l.scene, warnings);
     convertMaterials(l.ctx, l.scene, warnings);
     for (const auto& w : warnings) l.warn(w);
     const auto meshMap = l.convertMeshes();

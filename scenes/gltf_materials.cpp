@@ -23,36 +23,17 @@ void checkRequiredExtensions(const GltfContext& ctx) {
     }
 }
 
-void convertImages(const GltfContext& ctx, Scene& scene, std::vector<std::string>& warnings) {
+void convertImages(const GltfContext& ctx, std::vector<Image> decoded, Scene& scene,
+                   std::vector<std::string>& warnings) {
     for (std::size_t i = 0; i < ctx.model.images.size(); ++i) {
         const tinygltf::Image& src = ctx.model.images[i];
         Image img;
+        if (i < decoded.size()) img = std::move(decoded[i]);
         img.name = !src.uri.empty() && src.uri.rfind("data:", 0) != 0 ? src.uri : "image " + std::to_string(i);
-        const int channels = src.component, bytes = src.bits / 8;
-        const std::size_t pixels = static_cast<std::size_t>(std::max(src.width, 0)) * std::max(src.height, 0);
-        const bool usable = channels >= 1 && channels <= 4 && (bytes == 1 || bytes == 2) && pixels > 0 &&
-                            src.image.size() >= pixels * channels * bytes;
-        if (!usable) {
+        if (img.rgba.empty())
             warnings.push_back("image " + std::to_string(i) + " ('" + img.name +
                                "') could not be decoded; "
                                "materials using it are drawn untextured");
-            scene.images.push_back(std::move(img));
-            continue;
-        }
-        img.width = src.width;
-        img.height = src.height;
-        img.rgba.resize(pixels * 4);
-        for (std::size_t p = 0; p < pixels; ++p) {
-            std::uint8_t c[4] = {0, 0, 0, 255};
-            for (int k = 0; k < channels; ++k)
-                // 16-bit samples are little-endian in tinygltf's buffer; keep the high byte.
-                c[k] = src.image[(p * channels + k) * bytes + (bytes - 1)];
-            if (channels <= 2) {  // grey (+ alpha)
-                c[3] = channels == 2 ? c[1] : 255;
-                c[1] = c[2] = c[0];
-            }
-            std::copy(c, c + 4, img.rgba.begin() + static_cast<std::ptrdiff_t>(p * 4));
-        }
         scene.images.push_back(std::move(img));
     }
 }

@@ -15,9 +15,11 @@ namespace cavewall::scenes {
 // a file that only uses it loads its PNG/JPEG fallback images; a texture without one throws.
 void checkRequiredExtensions(const GltfContext& ctx);
 
-// Decoded images (8-bit RGBA). An image that could not be decoded becomes an empty Image and a
-// warning; textures using it are dropped with a warning.
-void convertImages(const GltfContext& ctx, Scene& scene, std::vector<std::string>& warnings);
+// The images the loader decoded (8-bit RGBA, by glTF image index, reduced: gltf_loader.cpp's
+// ImageDecoder) into scene.images, named. An image that could not be decoded becomes an empty
+// Image and a warning; textures using it are dropped with a warning.
+void convertImages(const GltfContext& ctx, std::vector<Image> decoded, Scene& scene,
+                   std::vector<std::string>& warnings);
 
 // Materials in glTF order (same indices). Texture and image references are validated.
 void convertMaterials(const GltfContext& ctx, Scene& scene, std::vector<std::string>& warnings);

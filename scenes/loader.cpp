@@ -86,25 +86,27 @@ bool matchesNodePattern(std::string_view name, std::string_view pattern) {
     return p == pattern.size();
 }
 
-Scene loadScene(const SceneDescription& description) {
+Scene loadScene(const SceneDescription& description, const TextureLimits& textures) {
     Scene scene;
     scene.name = description.name;
     for (const ModelFile& m : description.models) {
         const std::filesystem::path file = m.file.is_absolute() ? m.file : description.folder / m.file;
         const std::size_t first = scene.objects.size();
-        merge(scene, loadGltf(file), fileTransform(m), m);
+        merge(scene, loadGltf(file, textures.maxSide), fileTransform(m), m);
         if (m.splitMetres > 0.0 && splitLargeObjects(scene, first, scene.objects.size(), m.splitMetres).objectsCut > 0)
             for (std::size_t i = first; i < scene.objects.size(); ++i)  // patterns may name a chunk
                 for (const std::string& p : m.structureNodes)
                     if (matchesNodePattern(scene.objects[i].name, p)) scene.objects[i].role = Role::Structure;
         splitLargeObjects(scene, first, scene.objects.size(), kStructureChunkMetres, 1024, Role::Structure);
     }
+    if (const TextureReport report = fitTextures(scene.images, textures); report.images > 0)
+        scene.notes.push_back(describe(report));
     prepareForDrawing(scene);
     for (Object& o : scene.objects) o.cell = findCell(description.cells, o.worldBounds.centre());
     return scene;
 }
 
-Scene loadSceneFile(const std::filesystem::path& path, SceneDescription* description) {
+Scene loadSceneFile(const std::filesystem::path& path, SceneDescription* description, const TextureLimits& textures) {
     std::error_code ec;
     const bool isJson = std::filesystem::is_directory(path, ec) || path.extension() == ".json";
     SceneDescription d;
@@ -115,7 +117,7 @@ Scene loadSceneFile(const std::filesystem::path& path, SceneDescription* descrip
         d.folder = path.parent_path().empty() ? "." : path.parent_path();
         d.models.push_back(ModelFile{path.filename(), glm::dmat4(1.0), 1.0, UpAxis::Y, false, {}});
     }
-    Scene scene = loadScene(d);
+    Scene scene = loadScene(d, textures);
     if (description) *description = std::move(d);
     return scene;
 }

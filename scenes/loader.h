@@ -9,6 +9,7 @@
 
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
+#include "scenes/texture_budget.h"
 
 #include <filesystem>
 #include <string_view>
@@ -20,8 +21,9 @@ namespace cavewall::scenes {
 bool matchesNodePattern(std::string_view name, std::string_view pattern);
 
 // Loads one glTF/GLB file; objects are in the file's own frame (glTF: metres, +Y up). Vertex
-// data is as the file stores it (no welding or reordering).
-Scene loadGltf(const std::filesystem::path& file);
+// data is as the file stores it (no welding or reordering). Images are reduced to at most
+// `textureMaxSide` pixels a side as they are decoded (scenes/texture_budget.h); no budget.
+Scene loadGltf(const std::filesystem::path& file, int textureMaxSide = TextureLimits{}.maxSide);
 
 // Structure objects (always drawn, never paged) wider than this along x or z and of at least
 // 1024 triangles are cut into square columns of this side at load (scenes/mesh_split.h; they
@@ -33,12 +35,15 @@ inline constexpr double kStructureChunkMetres = 10.0;
 // structure objects (and cuts wide ones, kStructureChunkMetres), prepares the meshes for
 // drawing (vertices welded, triangles ordered for the vertex cache unless the material
 // blends: scenes/mesh_optimize.h; the shape and the triangle count stay) and assigns each
-// object to the cell containing its centre.
-Scene loadScene(const SceneDescription& description);
+// object to the cell containing its centre. Images are reduced to `textures`
+// (scenes/texture_budget.h) and the outcome is one line of Scene::notes
+// ("textures: 41 images, ... MB decoded at full size -> ... MB, ...").
+Scene loadScene(const SceneDescription& description, const TextureLimits& textures = {});
 
 // Loads a scene from a path: a scene.json (or a folder holding one) or a bare glTF/GLB file
 // (then the description has no cells or walls). `description` receives the description used.
-Scene loadSceneFile(const std::filesystem::path& path, SceneDescription* description = nullptr);
+Scene loadSceneFile(const std::filesystem::path& path, SceneDescription* description = nullptr,
+                    const TextureLimits& textures = {});
 
 // The files a scene loaded by loadSceneFile(`path`) was read from, for commands that must not
 // write over their inputs: the scene.json (`path`, or the one in the folder `path`) and every

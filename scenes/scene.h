@@ -58,6 +58,9 @@ struct Image {
     std::string name;  // file name or "image N" for messages
     int width = 0, height = 0;
     std::vector<std::uint8_t> rgba;  // width * height * 4
+    // The size in the file; larger than width x height when the loader reduced the image
+    // (scenes/texture_budget.h). 0 for images that were not read from a file.
+    int sourceWidth = 0, sourceHeight = 0;
 };
 
 enum class Wrap : std::uint8_t { Repeat, ClampToEdge, MirroredRepeat };
@@ -110,6 +113,7 @@ struct Scene {
     std::vector<Image> images;
     std::vector<Object> objects;
     std::vector<std::string> warnings;  // content that was skipped, with context
+    std::vector<std::string> notes;     // what loading did to the content (texture sizes), one line each
 
     Bounds bounds() const;              // union of all objects' world bounds
     std::size_t triangleCount() const;  // drawn triangles (instances counted)

@@ -7,6 +7,7 @@
 #include "scenes/primitives.h"
 #include "tools/args.h"
 #include "tools/commands.h"
+#include "tools/session_args.h"
 
 #include <iostream>
 
@@ -14,7 +15,8 @@ namespace cavewall::tools {
 
 const char* const kRenderUsage =
     "usage: cavewall render --display FILE|PRESET [--scene builtin|FILE] [--view-all] [--eye x,y,z]\n"
-    "                       [--head-yaw DEG] [--stereo MODE] [--window] --out DIR\n"
+    "                       [--head-yaw DEG] [--stereo MODE] [--window] [--texture-max PX]\n"
+    "                       [--texture-budget MB] --out DIR\n"
     "\n"
     "Renders one frame of --scene for a head at --eye (cave frame, metres; default: the display's\n"
     "default head) turned by --head-yaw degrees about +Y (positive turns left), and writes one PNG\n"
@@ -28,17 +30,22 @@ const char* const kRenderUsage =
     "            (default: the display's; quad-buffer needs stereo windows)\n"
     "  --window  show the frame in one window per screen (needs $DISPLAY) and write what the\n"
     "            windows showed; without it rendering is headless (EGL)\n"
+    "  --texture-max  reduce every texture at load to at most PX pixels a side (default 2048)\n"
+    "  --texture-budget  then halve the largest textures until all fit MB megabytes (2^20\n"
+    "            bytes, 8-bit RGBA, base level; default 512)\n"
     "Prints the files written, the OpenGL renderer and the frame's statistics (objects,\n"
-    "triangles and draw calls submitted, CPU and GPU milliseconds). Scene warnings (skipped\n"
-    "content) go to stderr.\n";
+    "triangles and draw calls submitted, CPU and GPU milliseconds), after a line on the scene's\n"
+    "textures (their size in the files and as kept). Scene warnings (skipped content) go to\n"
+    "stderr.\n";
 
 namespace {
 
 // The scene to render. One call, so that scene files are one line away.
-scenes::Scene loadSceneSource(const std::string& source) {
+scenes::Scene loadSceneSource(const std::string& source, const scenes::TextureLimits& textures) {
     if (source == "builtin") return scenes::builtinTestScene();
-    scenes::Scene scene = scenes::loadSceneFile(source);
+    scenes::Scene scene = scenes::loadSceneFile(source, nullptr, textures);
     for (const std::string& warning : scene.warnings) std::cerr << "warning: " << warning << "\n";
+    for (const std::string& note : scene.notes) std::cout << note << "\n";
     return scene;
 }
 
@@ -64,11 +71,12 @@ std::unique_ptr<gl::Context> openContext(const display::Display& disp, bool wind
 
 int runRender(const std::vector<std::string>& words) {
     const Args args(words, {"window", "view-all"});
-    args.expectFlags({"display", "scene", "view-all", "eye", "head-yaw", "stereo", "window", "out"});
+    args.expectFlags({"display", "scene", "view-all", "eye", "head-yaw", "stereo", "window", "texture-max",
+                      "texture-budget", "out"});
     config::DisplayConfig config = config::loadDisplayConfig(args.require("display"));
     if (auto stereo = args.get("stereo")) config.stereo = parseStereo(*stereo);
     const std::string out = args.require("out");
-    const scenes::Scene scene = loadSceneSource(args.getOr("scene", "builtin"));
+    const scenes::Scene scene = loadSceneSource(args.getOr("scene", "builtin"), parseTextureLimits(args));
     const display::Display disp(std::move(config));
     display::HeadPose head = disp.defaultHead();
     if (auto eye = args.vec3("eye")) head.position = *eye;

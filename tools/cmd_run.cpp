@@ -19,6 +19,7 @@ const char* const kRunUsage =
     "                    [--lod PX [--triangle-budget N|--frame-budget-ms T] [--lod-max PX]]\n"
     "                    [--cluster [--cluster-timeout S]] [--texture-format rgba8|bc1|bc3]\n"
     "                    [--hierarchy [--hierarchy-divisions N] [--hierarchy-res N] [--hierarchy-fade N]]\n"
+    "                    [--texture-max PX] [--texture-budget MB]\n"
     "\n"
     "Walks through scene S (a scene.json, a folder holding one, or a bare glTF/GLB file) on the\n"
     "display D (a file or a preset, default cave4; --resolution WxH renders every screen at WxH\n"
@@ -53,6 +54,9 @@ const char* const kRunUsage =
     "geometry_kept walls kept as textures and geometry_forced cells drawn unloaded, per frame).\n"
     "--walls depth bakes depth with colour and reprojects every wall pixel to the eye\n"
     "(walls/gl/depth_wall_pass.h); default flat.\n"
+    "--texture-max PX reduces the scene's own textures (glTF images) at load to at most PX pixels a\n"
+    "side (default 2048); --texture-budget MB then halves the largest until all fit MB (2^20 bytes,\n"
+    "8-bit RGBA, base level; default 512). The outcome is one line on stderr (\"run: textures: ...\").\n"
     "--texture-format: storage of baked colour on disk and GPU, as for `cavewall bake` "
     "(default\n" DEFAULT_TEXTURE_FORMAT
     "; keys the cache).\n"

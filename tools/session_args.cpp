@@ -128,8 +128,17 @@ std::vector<std::string_view> sessionFlags() {
         "triangle-budget", "frame-budget-ms", "lod-max", "walls", "hierarchy", "hierarchy-divisions",
         "hierarchy-res", "hierarchy-fade", "clusters", "cluster-divisions", "cluster-res", "cluster-fade",
         "bake-on-demand", "bake-first", "cache-budget", "bake-interleave", "bake-nice", "texture-format",
-        "resolution"};
+        "texture-max", "texture-budget", "resolution"};
     // clang-format on
+}
+
+scenes::TextureLimits parseTextureLimits(const Args& args) {
+    scenes::TextureLimits limits;
+    limits.maxSide = static_cast<int>(args.integer("texture-max", limits.maxSide, 1, 16384));
+    limits.budgetBytes = static_cast<std::size_t>(
+                             args.integer("texture-budget", static_cast<long>(limits.budgetBytes >> 20), 1, 1048576))
+                         << 20;
+    return limits;
 }
 
 app::RunOptions parseSessionOptions(const Args& args, app::RunOptions o) {
@@ -152,6 +161,7 @@ app::RunOptions parseSessionOptions(const Args& args, app::RunOptions o) {
     o.saveWindow = args.has("save-window");
     parseDrawing(args, o);
     parseBakingAndClusters(args, o);
+    o.sceneTextures = parseTextureLimits(args);
     app::validate(o);
     return o;
 }

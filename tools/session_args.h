@@ -3,6 +3,7 @@
 // session's summary printed the same way for both.
 
 #include "app/run_options.h"
+#include "scenes/texture_budget.h"
 #include "tools/args.h"
 
 #include <string_view>
@@ -20,6 +21,11 @@ std::vector<std::string_view> sessionFlags();
 // command's defaults: display, tracker, frames, start, windows) and validates the result.
 // --resolution WxH replaces every screen's resolution. Throws Error naming the flag.
 app::RunOptions parseSessionOptions(const Args& args, app::RunOptions defaults);
+
+// --texture-max PX (default 2048, [1, 16384]) and --texture-budget MB (2^20 bytes, default 512,
+// [1, 1048576]): the sizes the scene's own textures (glTF images) are reduced to at load
+// (scenes/texture_budget.h). `render`, `run` and `view` take them.
+scenes::TextureLimits parseTextureLimits(const Args& args);
 
 // Prints the summary ("<command>: N frames on ...", start-up times, and how the session ended
 // when it was stopped) and returns the exit code: 0, or 128 + the signal when interrupted.

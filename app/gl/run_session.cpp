@@ -365,7 +365,8 @@ RunSummary runSession(const RunOptions& o) {
     app::validate(o);
     const display::Display display(o.display);
     scenes::SceneDescription description;
-    const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description);
+    const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description, o.sceneTextures);
+    for (const std::string& note : scene.notes) std::cerr << "run: " << note << std::endl;
     app::useRoute(description, o.route, o.scene.string());
     RunSummary summary;
     summary.sceneSeconds = secondsSince(start);

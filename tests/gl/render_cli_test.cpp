@@ -67,6 +67,17 @@ TEST_F(RenderCli, RendersAGltfFileWithViewAllAndPrintsTheFrameStatistics) {
     EXPECT_EQ(distinct(left), 1u);   // background only
 }
 
+TEST_F(RenderCli, ReducesTexturesToTheLimitsAndPrintsTheOutcome) {
+    const auto out = freshFolder("render-cli-textures");
+    const std::string model = (std::filesystem::path(CAVEWALL_REAL_SCENES) / "MultiUVTest/MultiUVTest.gltf").string();
+    const CliResult r = runCavewall({"render", "--display", testDisplay(), "--scene", model, "--view-all",
+                                     "--texture-max", "256", "--texture-budget", "1", "--out", out.string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    // Two 1024² images (8 MB of RGBA) reduced by 4 to 256² each: 0.5 MB, within 1 MB.
+    EXPECT_THAT(r.out, HasSubstr("textures: 2 images, 8.0 MB decoded at full size -> 0.5 MB, largest side 256 px "
+                                 "(limits: 256 px, budget 1.0 MB)\n"));
+}
+
 TEST_F(RenderCli, SeparateStereoWritesBothEyes) {
     const auto out = freshFolder("render-cli-separate");
     const CliResult r =
@@ -91,6 +102,10 @@ TEST_F(RenderCli, BadInputGivesAClearErrorAndNonZeroExit) {
          {"--stereo", "quad-buffer"},
          "stereo mode quad-buffer needs windows with quad-buffer stereo"},
         {"no output folder", {}, "--out: required flag is missing"},
+        {"texture side", {"--texture-max", "0"}, "--texture-max: expected an integer in [1, 16384], got '0'"},
+        {"texture budget",
+         {"--texture-budget", "-5"},
+         "--texture-budget: expected an integer in [1, 1048576], got '-5'"},
     };
     for (const auto& c : cases) {
         SCOPED_TRACE(c.name);

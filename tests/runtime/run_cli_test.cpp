@@ -242,6 +242,17 @@ TEST(RunCli, TransitionWarpRunsAndReportsWarpFallbacks) {
     EXPECT_GT(warpCalls, blendCalls);
 }
 
+TEST(RunCli, ReducesTheScenesTexturesAndSaysSo) {
+    const std::string toyCar = std::string(CAVEWALL_REAL_SCENES) + "/ToyCar/ToyCar.gltf";
+    const CliResult r =
+        runCavewall({"run", "--no-walls", "--scene", toyCar, "--tracker", "sim:walk", "--frames", "2", "--display",
+                     testDisplay(), "--texture-max", "256", "--out", outputDir("textures").string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    // Eight images (26 MB of RGBA), each reduced to at most 256² (2 MB in all).
+    EXPECT_THAT(r.err, HasSubstr("run: textures: 8 images, 26 MB decoded at full size -> 2.0 MB, largest side 256 px "
+                                 "(limits: 256 px, budget 512 MB)\n"));
+}
+
 TEST(RunCli, BadFlagsAndSpecsGiveClearErrors) {
     const fs::path out = outputDir("errors");
     const std::string scene = smallPlant().string();
@@ -264,6 +275,8 @@ TEST(RunCli, BadFlagsAndSpecsGiveClearErrors) {
         {"frame budget without levels",
          {"--frame-budget-ms", "16.7"},
          "--frame-budget-ms: needs levels of detail (--lod PX with PX > 0) or --clusters, got --lod 0"},
+        {"texture side", {"--texture-max", "0"}, "--texture-max: expected an integer in [1, 16384], got '0'"},
+        {"texture budget", {"--texture-budget", "0"}, "--texture-budget: expected an integer in [1, 1048576], got '0'"},
         {"both budgets",
          {"--lod", "1", "--frame-budget-ms", "16.7", "--triangle-budget", "5000"},
          "--frame-budget-ms and --triangle-budget: expected one of them, got both"},
