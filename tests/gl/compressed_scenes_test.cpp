@@ -9,6 +9,7 @@
 #include "scenes/image_io.h"
 #include "scenes/loader.h"
 #include "tests/gl/gl_test_support.h"
+#include "tests/scenes/packed_variants.h"
 
 #include <filesystem>
 #include <iostream>
@@ -20,26 +21,8 @@ const std::filesystem::path kReal = CAVEWALL_REAL_SCENES;
 const std::filesystem::path kPacked = CAVEWALL_BINARY_DIR "/tests/scenes/packed";
 const display::HeadPose kEye{{0, 0, 0}, glm::dquat(1, 0, 0, 0)};
 
-struct Variant {
-    const char* model;   // under scenes-real
-    const char* packed;  // under the fixture's folder
-};
-
-const Variant kVariants[] = {
-    {"NegativeScaleTest/NegativeScaleTest.gltf", "NegativeScaleTest-q.glb"},
-    {"NegativeScaleTest/NegativeScaleTest.gltf", "NegativeScaleTest-c.glb"},
-    {"NegativeScaleTest/NegativeScaleTest.gltf", "NegativeScaleTest-cc.glb"},
-    {"NegativeScaleTest/NegativeScaleTest.gltf", "NegativeScaleTest-noq.glb"},
-    {"NegativeScaleTest/NegativeScaleTest.gltf", "NegativeScaleTest-c-noq.glb"},
-    {"NegativeScaleTest/NegativeScaleTest.gltf", "NegativeScaleTest-cc-noq.glb"},
-    {"NegativeScaleTest/NegativeScaleTest.gltf", "NegativeScaleTest-text/NegativeScaleTest-cc.gltf"},
-    {"NegativeScaleTest/NegativeScaleTest.gltf", "NegativeScaleTest-draco.glb"},
-    {"TextureTransformTest/TextureTransformTest.gltf", "TextureTransformTest-q.glb"},
-    {"TextureTransformTest/TextureTransformTest.gltf", "TextureTransformTest-cc.glb"},
-    {"TextureTransformTest/TextureTransformTest.gltf", "TextureTransformTest-cc-noq.glb"},
-    {"TextureTransformTest/TextureTransformTest.gltf", "TextureTransformTest-text/TextureTransformTest-cc.gltf"},
-    {"TextureTransformTest/TextureTransformTest.gltf", "TextureTransformTest-draco.glb"},
-};
+using test::kVariants;
+using test::Variant;
 
 class CompressedScenes : public testing::GlTest {
 protected:

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -52,6 +53,17 @@ inline std::vector<std::string> wallRun(const std::filesystem::path& out, const 
             "3",         "--ppd",       "2",
             "--cache",   cacheDir(),    "--out",
             out.string()};
+}
+
+// Runs a shell command (xdotool, under the tests' virtual X server); its standard output.
+inline std::string shell(const std::string& command) {
+    std::string out;
+    if (FILE* p = popen(command.c_str(), "r")) {
+        char buffer[256];
+        while (fgets(buffer, sizeof buffer, p)) out += buffer;
+        pclose(p);
+    }
+    return out;
 }
 
 }  // namespace cavewall::test

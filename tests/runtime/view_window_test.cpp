@@ -39,17 +39,6 @@ fs::path smallDesktop(const fs::path& folder) {
     return file;
 }
 
-// Runs a shell command (xdotool); its standard output.
-std::string shell(const std::string& command) {
-    std::string out;
-    if (FILE* p = popen(command.c_str(), "r")) {
-        char buffer[256];
-        while (fgets(buffer, sizeof buffer, p)) out += buffer;
-        pclose(p);
-    }
-    return out;
-}
-
 class ViewWindow : public ::testing::Test {
 protected:
     void SetUp() override {

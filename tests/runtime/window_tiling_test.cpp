@@ -24,16 +24,6 @@ namespace fs = std::filesystem;
 
 const std::string kRoom = std::string(CAVEWALL_REAL_SCENES) + "/OcclusionRoom/room.glb";
 
-std::string shell(const std::string& command) {
-    std::string out;
-    if (FILE* p = popen(command.c_str(), "r")) {
-        char buffer[256];
-        while (fgets(buffer, sizeof buffer, p)) out += buffer;
-        pclose(p);
-    }
-    return out;
-}
-
 struct Rect {
     int x = 0, y = 0, w = 0, h = 0;
 };

@@ -5,6 +5,7 @@
 #include "config/error.h"
 #include "scenes/loader.h"
 #include "tests/scenes/gltf_builder.h"
+#include "tests/scenes/packed_variants.h"
 
 #include <meshoptimizer.h>
 
@@ -277,26 +278,8 @@ std::size_t drawnTriangles(const Scene& s) {
     return n;
 }
 
-struct Variant {
-    const char* model;   // under scenes-real
-    const char* packed;  // under the fixture's folder
-};
-
-const Variant kVariants[] = {
-    {"NegativeScaleTest/NegativeScaleTest.gltf", "NegativeScaleTest-q.glb"},
-    {"NegativeScaleTest/NegativeScaleTest.gltf", "NegativeScaleTest-c.glb"},
-    {"NegativeScaleTest/NegativeScaleTest.gltf", "NegativeScaleTest-cc.glb"},
-    {"NegativeScaleTest/NegativeScaleTest.gltf", "NegativeScaleTest-noq.glb"},
-    {"NegativeScaleTest/NegativeScaleTest.gltf", "NegativeScaleTest-c-noq.glb"},
-    {"NegativeScaleTest/NegativeScaleTest.gltf", "NegativeScaleTest-cc-noq.glb"},
-    {"NegativeScaleTest/NegativeScaleTest.gltf", "NegativeScaleTest-text/NegativeScaleTest-cc.gltf"},
-    {"NegativeScaleTest/NegativeScaleTest.gltf", "NegativeScaleTest-draco.glb"},
-    {"TextureTransformTest/TextureTransformTest.gltf", "TextureTransformTest-q.glb"},
-    {"TextureTransformTest/TextureTransformTest.gltf", "TextureTransformTest-cc.glb"},
-    {"TextureTransformTest/TextureTransformTest.gltf", "TextureTransformTest-cc-noq.glb"},
-    {"TextureTransformTest/TextureTransformTest.gltf", "TextureTransformTest-text/TextureTransformTest-cc.gltf"},
-    {"TextureTransformTest/TextureTransformTest.gltf", "TextureTransformTest-draco.glb"},
-};
+using test::kVariants;
+using test::Variant;
 
 TEST(CompressedGltf, PackedCopiesOfSharedModelsKeepTheirTrianglesAndBounds) {
     std::vector<std::string> missing;  // files a missing tool did not write
