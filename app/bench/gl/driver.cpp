@@ -540,7 +540,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
     const auto context = gl::createHeadlessContext();
     BenchReport report;
     report.header = headerLines(o, scene, *context, path);
-    if (display.isStereo())
+    if (measuresStereo(display))
         report.header.push_back(
             "stereo: both eyes drawn and every image metric computed per eye; stereo error (metrics/stereo_error.h) "
             "per eye and pixel against full geometry, eye separation " +

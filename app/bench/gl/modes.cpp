@@ -114,7 +114,7 @@ std::vector<ComparedImage> comparedImages(const display::Display& display, const
 void ModeAccumulator::compare(long frame, const display::HeadPose& head, const std::vector<gl::ScreenImage>& images,
                               const std::vector<walkthrough::ViewDepth>& depths, const ReferenceFrame& reference) {
     _errors.addFrame(frame, comparedImages(_display, head, images, reference.images, modeLabel(_mode)));
-    if (_display.isStereo()) compareDepths(depths, reference.depths);
+    if (measuresStereo(_display)) compareDepths(depths, reference.depths);
 }
 
 namespace {
@@ -148,7 +148,11 @@ void ModeAccumulator::compareDepths(const std::vector<walkthrough::ViewDepth>& d
     }
 }
 
-bool readsDepth(const ModeContext& c) { return c.display.isStereo(); }
+bool measuresStereo(const display::Display& display) {
+    return display.isStereo() && display.config().stereo != config::StereoMode::Anaglyph;
+}
+
+bool readsDepth(const ModeContext& c) { return measuresStereo(c.display); }
 
 ModeResult ModeAccumulator::finish(double fullP50) const {
     ModeResult m = _mode;
@@ -168,12 +172,12 @@ ModeResult ModeAccumulator::finish(double fullP50) const {
     for (const FrameSample& f : m.frames) uploads.push_back(f.uploadedMB);
     m.uploadedMB = timeStats(uploads);
     m.error = _errors.result();
-    m.error.stereoMeasured = _display.isStereo();
+    m.error.stereoMeasured = measuresStereo(_display);
     m.error.stereo = _stereo;
     m.flipWorst = _errors.worstFlip();
     for (std::size_t s = 0; s < m.screens.size(); ++s) {
         m.screens[s].error = _errors.screenResult(s);
-        m.screens[s].error.stereoMeasured = _display.isStereo();
+        m.screens[s].error.stereoMeasured = measuresStereo(_display);
         m.screens[s].error.stereo = _screenStereo[s];
         m.screens[s].cpuMs = timeStats(_screenCpu[s]);
         m.screens[s].triangles = _screenTriangles[s] / n;

@@ -59,7 +59,7 @@ public:
     const bench::ModeResult& mode() const { return _mode; }
     // Compares `images` of frame `frame`, seen from `head` (cave frame), with the reference of
     // the same frame (same screens and images); FLIP at each screen's minPixelsPerDegree from
-    // the head position (the cyclopean eye, also in stereo). On a stereo display also every
+    // the head position (the cyclopean eye, also in stereo). Where measuresStereo, also every
     // view's `depths` with the reference's (the stereo error, at the viewer's eye separation);
     // throws cavewall::Error naming the mode when the views differ from the reference's.
     void compare(long frame, const display::HeadPose& head, const std::vector<gl::ScreenImage>& images,
@@ -120,7 +120,10 @@ struct WalkRun {
     int budgetFrom = -1;
 };
 
-// Whether compared frames read depth back: on stereo displays, for the stereo error.
+// Whether a display's modes get the stereo error: stereo, with each eye's pixels apart (all
+// but anaglyph, whose eyes share one image and so one depth buffer).
+bool measuresStereo(const display::Display& display);
+// Whether compared frames read depth back: where the display's modes get the stereo error.
 bool readsDepth(const ModeContext& c);
 
 // Runs walkthrough modes over the path, interleaved: after every run's warm-up, each path frame
