@@ -169,7 +169,8 @@ TEST(BenchSceneCli, StereoRunMeasuresTheStereoErrorPerEye) {
                      out.string(), "--cache", (root / "cache").string()});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_THAT(r.out, HasSubstr("4 screens at 128x128 pixels, separate stereo mode"));
-    EXPECT_THAT(r.out, HasSubstr("stereo: both eyes drawn and every image metric computed per eye"));
+    EXPECT_THAT(r.out, HasSubstr("stereo: both eyes drawn, every image metric computed per output image (per eye in "
+                                 "separate mode); stereo error"));
     EXPECT_THAT(r.out, HasSubstr("figures (128x128 per screen, separate)"));
     const test::CsvTable csv = test::readCsv(out / "bench.csv");
     ASSERT_EQ(csv.size(), 7u);  // full, cells, cells+layer, near, blend, warp, paged

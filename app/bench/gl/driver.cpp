@@ -542,8 +542,8 @@ BenchReport runBenchmark(const BenchOptions& o) {
     report.header = headerLines(o, scene, *context, path);
     if (measuresStereo(display))
         report.header.push_back(
-            "stereo: both eyes drawn and every image metric computed per eye; stereo error (metrics/stereo_error.h) "
-            "per eye and pixel against full geometry, eye separation " +
+            "stereo: both eyes drawn, every image metric computed per output image (per eye in separate mode); "
+            "stereo error (metrics/stereo_error.h) per eye and pixel against full geometry, eye separation " +
             config::formatNumber(o.display.viewer.eyeSeparation) +
             " m, threshold 1 arcmin; depth read back after each compared frame is timed, virtual walls drawn again "
             "depth only (the depth each eye sees on them)");
