@@ -70,6 +70,9 @@ struct FrameInput {
     glm::dmat4 worldFromCave{1.0};
     std::optional<HandCursorPose> hand;  // drawn when given
     bool readImages = false;             // read every rendered image back into FrameResult
+    // Read every view's depth back into FrameResult::depths, after the frame is timed (walls
+    // redrawn depth-only: the depth a viewer sees, gl::Walkthrough). Not sent to cluster ranks.
+    bool readDepth = false;
     // This frame's triangle budget (with levels of detail), > 0 overrides
     // WalkthroughSettings::triangleBudget: a frame-time controller (display/frame_budget.h)
     // sets it frame by frame, the same on every cluster rank.
@@ -90,6 +93,16 @@ struct WallState {
     double errorDeg = 0.0;                         // exact worst angular error of its drawn textures
     int texturesOverAlpha = 0;                     // of its drawn textures, those whose exact error
                                                    // exceeds the plan's alpha (0 when the bound holds)
+};
+
+// One view's depth (FrameInput::readDepth): the distance in metres from the view's eye to
+// what each pixel of its viewport shows (display/eye_distance.h), virtual walls included.
+struct ViewDepth {
+    int screen = 0;
+    int image = 0;  // RenderTargets image index (separate stereo: 0 left, 1 right)
+    display::Eye eye = display::Eye::Center;
+    int width = 0, height = 0;  // the view's viewport, pixels
+    std::vector<float> metres;  // rows top to bottom; +inf: nothing drawn; NaN: invalid
 };
 
 struct FrameResult {
@@ -148,6 +161,7 @@ struct FrameResult {
     // render stay zero.
     std::vector<display::ViewStats> perScreen;
     std::vector<scenes::ScreenImage> images;  // when FrameInput::readImages
+    std::vector<ViewDepth> depths;            // when FrameInput::readDepth, views in drawing order
 };
 
 }  // namespace cavewall::walkthrough

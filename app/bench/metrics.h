@@ -21,9 +21,13 @@
 //    *compared* frames (every compareEvery-th frame, not every frame: a cross-fade shorter than
 //    that interval scores as a hard switch). Peak: the largest pair over all screens; RMS over
 //    all pairs of all screens.
+//  - Stereo error (metrics/stereo_error.h), on stereo displays: per eye and pixel, the
+//    disparity error in arc minutes of the eye's depth against the reference's (the viewer's
+//    interocular distance), mean and share beyond 1 arcmin, over all compared pixels.
 
 #include "metrics/image_error.h"
 #include "metrics/popping.h"
+#include "metrics/stereo_error.h"
 #include "scenes/scene.h"
 
 #include <array>
@@ -53,6 +57,11 @@ struct ImageError {
     double flipMean = 0.0;                                           // over all compared pixels, [0, 1]
     double flipP95 = 0.0;  // nearest-rank over all compared pixels (histogram, see above)
     double poppingPeak = 0.0, poppingRms = 0.0;
+    // On a stereo display: the stereo error (metrics/stereo_error.h) of every eye's depth
+    // against the reference's at the same frame, eye and screen, pooled over all compared
+    // pixels (the bench's ModeAccumulator fills it). Not measured in mono.
+    bool stereoMeasured = false;
+    metrics::StereoError stereo;
 };
 
 // One image of a compared frame. The images are only read during ErrorPool::addFrame.

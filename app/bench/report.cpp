@@ -22,13 +22,26 @@ std::string num(double v, int digits = 6) {
     return buffer;
 }
 
+// The stereo error's CSV cells: mean arc minutes and the share of pixels beyond the
+// threshold; nan when it was not measured (mono).
+std::string stereoCsv(const ImageError& e) {
+    if (!e.stereoMeasured) return "nan,nan";
+    return num(e.stereo.meanArcmin()) + "," + num(e.stereo.shareBeyond());
+}
+
+// The stereo error's bench.md cell: "mean / % beyond"; "-" when not measured (mono).
+std::string stereoCell(const ImageError& e) {
+    if (!e.stereoMeasured) return "-";
+    return num(e.stereo.meanArcmin(), 3) + " / " + num(100.0 * e.stereo.shareBeyond(), 3);
+}
+
 void writeText(const std::filesystem::path& file, const std::string& text) { scenes::writeBytesAtomically(file, text); }
 
 std::string screensCsv(const BenchReport& report) {
     std::string out =
         "mode,alpha_deg,transition,screen,psnr_db,rmse,ssim,cpu_ms_p50,cpu_ms_p95,cpu_ms_p99,triangles,"
         "draw_calls,lod_px,triangle_budget,worst_frame_psnr_db,p5_frame_psnr_db,capped_mean_psnr_db,"
-        "flip_mean,flip_p95,popping_peak,popping_rms\n";
+        "flip_mean,flip_p95,popping_peak,popping_rms,stereo_mean_arcmin,stereo_beyond_share\n";
     for (const ModeResult& m : report.modes)
         for (const ScreenResult& s : m.screens) {
             const ImageError& e = s.error;
@@ -39,7 +52,7 @@ std::string screensCsv(const BenchReport& report) {
             for (double v : {e.worstFramePsnrDb, e.p5FramePsnrDb, e.meanPsnrDb, e.flipMean, e.flipP95, e.poppingPeak,
                              e.poppingRms})
                 out += "," + num(v);
-            out += "\n";
+            out += "," + stereoCsv(e) + "\n";
         }
     return out;
 }
@@ -391,7 +404,7 @@ std::string csvHeader() {
            "popping_peak,popping_rms,psnr_gain_db,flip_ratio,over_alpha,uploaded_mb_p50,uploaded_mb_p99,uploaded_mb_"
            "mean,"
            "p95_over_budget,floor_ms,first_frame_s,geometry_fallbacks,fallback_frames,fallbacks_until_frame,textures_"
-           "baked,speedup_lod,scene";
+           "baked,speedup_lod,scene,stereo_mean_arcmin,stereo_beyond_share";
 }
 
 std::string csvRow(const ModeResult& m) {
@@ -446,7 +459,7 @@ std::string csvRow(const ModeResult& m) {
     std::string row = std::string(toString(m.mode)) + "," + num(m.alphaDeg) + "," + transitionLabel(m);
     for (double v : values) row += "," + num(v);
     for (double v : onDemand) row += "," + num(v);
-    return row + "," + num(m.speedupLod) + "," + (m.sceneTag.empty() ? "bench" : m.sceneTag);
+    return row + "," + num(m.speedupLod) + "," + (m.sceneTag.empty() ? "bench" : m.sceneTag) + "," + stereoCsv(m.error);
 }
 
 namespace {
@@ -456,8 +469,9 @@ std::string errorCells(const ModeResult& m) {
     const ImageError& e = m.error;
     return num(e.psnrDb, 3) + " (" + num(e.worstFramePsnrDb, 3) + " / " + num(e.p5FramePsnrDb, 3) + ") | " +
            num(e.meanPsnrDb, 3) + " | " + num(e.rmse, 3) + " | " + num(e.ssim, 3) + " | " + num(e.flipMean, 3) + " / " +
-           num(e.flipP95, 3) + " | " + num(e.poppingPeak, 3) + " / " + num(e.poppingRms, 3) + " | " +
-           (m.mode == Mode::Walls ? num(m.psnrGainDb, 3) + " / " + num(m.flipRatio, 3) : std::string("-")) + " | ";
+           num(e.flipP95, 3) + " | " + stereoCell(e) + " | " + num(e.poppingPeak, 3) + " / " + num(e.poppingRms, 3) +
+           " | " + (m.mode == Mode::Walls ? num(m.psnrGainDb, 3) + " / " + num(m.flipRatio, 3) : std::string("-")) +
+           " | ";
 }
 
 }  // namespace
@@ -469,12 +483,13 @@ std::string markdownReport(const BenchReport& report) {
           "(against full geometry with LOD) | PSNR dB pooled (worst frame / p5 frame) | capped mean PSNR dB (not "
           "ranked) | RMSE | SSIM | FLIP mean / "
           "p95 "
-          "| popping peak / RMS | vs control: PSNR gain dB / FLIP ratio | max err deg / px "
+          "| stereo err arcmin mean / % > 1 arcmin | popping peak / RMS | vs control: PSNR gain dB / FLIP ratio | max "
+          "err deg / px "
           "| textures over alpha | LOD err px max (tolerance mean) | triangles | draw calls | textures | texels M | "
           "disk MB "
           "| GPU MB | uploaded MB per frame p50 / p99 |\n"
        << "| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | "
-          "---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+          "---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
     int index = 1;
     for (const ModeResult& m : report.modes) {
         const double ratio = m.frameMs.p50 > 0 ? m.frameMs.p99 / m.frameMs.p50 : 0.0;
@@ -495,7 +510,11 @@ std::string markdownReport(const BenchReport& report) {
           "(all screens), p5 frame: the 5th percentile of per-frame PSNR; capped mean: the mean of per-frame PSNRs, "
           "each capped at 58.9 dB (8-bit quantisation), which flatters and is not ranked by; FLIP: LDR-FLIP per "
           "image at its screen's pixels per degree from the frame's eye, mean and p95 over all compared pixels "
-          "(flip_worst_N.png: the map of mode N's worst image); popping: the frame-to-frame change of the error "
+          "(flip_worst_N.png: the map of mode N's worst image); stereo err (stereo displays only): per eye and pixel, "
+          "|v(z) - v(z_full)| with v(z) = 2 atan(b / 2z) the vergence angle of the surface the pixel shows at distance "
+          "z from that eye, b the viewer's eye separation (metrics/stereo_error.h), mean over all compared pixels "
+          "in arc minutes and the share beyond 1 arcmin, a stereoacuity most viewers reach; popping: the "
+          "frame-to-frame change of the error "
           "image against the reference's own change between consecutive compared frames, peak and RMS over frame "
           "pairs; vs control: pooled PSNR minus that of 'cells' (cell culling without textures), and FLIP mean over "
           "its; LOD err px: the largest geometric error of a drawn level of detail in pixels on its screen (sampled "

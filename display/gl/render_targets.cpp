@@ -3,6 +3,7 @@
 #include "config/error.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cstring>
 
 namespace cavewall::gl {
@@ -30,11 +31,12 @@ RenderTargets::RenderTargets(const display::Display& display, const Context& con
                     "top-bottom or anaglyph");
     const int images = mode == config::StereoMode::QuadBuffer ? 2 : display::imagesPerScreen(mode);
     for (const config::Screen& s : display.screens()) {
-        Screen screen{s.name, s.resolution, texture2d(GL_DEPTH_COMPONENT32F, s.resolution), {}};
+        Screen screen{s.name, s.resolution, {}};
         for (int i = 0; i < images; ++i) {
-            Output out{texture2d(GL_SRGB8_ALPHA8, s.resolution), createFramebuffer()};
+            Output out{texture2d(GL_SRGB8_ALPHA8, s.resolution), texture2d(GL_DEPTH_COMPONENT32F, s.resolution),
+                       createFramebuffer()};
             glNamedFramebufferTexture(out.framebuffer.id(), GL_COLOR_ATTACHMENT0, out.color.id(), 0);
-            glNamedFramebufferTexture(out.framebuffer.id(), GL_DEPTH_ATTACHMENT, screen.depth.id(), 0);
+            glNamedFramebufferTexture(out.framebuffer.id(), GL_DEPTH_ATTACHMENT, out.depth.id(), 0);
             const GLenum status = glCheckNamedFramebufferStatus(out.framebuffer.id(), GL_FRAMEBUFFER);
             if (status != GL_FRAMEBUFFER_COMPLETE)
                 throw Error("screen '" + s.name + "': render target is incomplete (GL status " +
@@ -52,6 +54,23 @@ void RenderTargets::bind(int screen, int image) const {
 scenes::Image RenderTargets::read(int screen, int image) const {
     const Screen& s = _screens[screen];
     return readFramebuffer(s.images[image].framebuffer.id(), GL_COLOR_ATTACHMENT0, s.size, s.name);
+}
+
+std::vector<float> RenderTargets::readDepth(int screen, int image, const display::Viewport& viewport) const {
+    const Screen& s = _screens[screen];
+    assert(viewport.x >= 0 && viewport.y >= 0 && viewport.width > 0 && viewport.height > 0 &&
+           viewport.x + viewport.width <= s.size.x && viewport.y + viewport.height <= s.size.y);
+    std::vector<float> bottomUp(std::size_t(viewport.width) * viewport.height);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, s.images[image].framebuffer.id());
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(viewport.x, viewport.y, viewport.width, viewport.height, GL_DEPTH_COMPONENT, GL_FLOAT,
+                 bottomUp.data());
+    std::vector<float> depth(bottomUp.size());
+    const std::size_t row = std::size_t(viewport.width);
+    for (int y = 0; y < viewport.height; ++y)
+        std::memcpy(&depth[y * row], &bottomUp[(viewport.height - 1 - y) * row], row * sizeof(float));
+    return depth;
 }
 
 scenes::Image readFramebuffer(unsigned framebuffer, unsigned buffer, glm::ivec2 size, std::string name) {

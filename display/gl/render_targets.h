@@ -1,6 +1,7 @@
 #pragma once
-// Offscreen render targets: for every screen of a display, its output images (colour) and one
-// depth buffer, at the screen's resolution.
+// Offscreen render targets: for every screen of a display, its output images, each with its
+// colour and its own depth buffer (so each eye's depth outlives the frame), at the screen's
+// resolution.
 //
 // sRGB policy: colour is GL_SRGB8_ALPHA8 and the renderer draws with GL_FRAMEBUFFER_SRGB on, so
 // shaders work in linear light and the stored bytes are sRGB-encoded, as PNG files and window
@@ -37,16 +38,19 @@ public:
     unsigned colorTexture(int screen, int image) const { return _screens[screen].images[image].color.id(); }
     // Reads an image back: 8-bit RGBA, sRGB-encoded, rows top to bottom.
     scenes::Image read(int screen, int image) const;
+    // Reads the depth of `viewport` (pixels of the image, origin lower-left, inside it) of an
+    // image back: reversed-Z window depth (display/off_axis.h), rows top to bottom.
+    std::vector<float> readDepth(int screen, int image, const display::Viewport& viewport) const;
 
 private:
     struct Output {
         GlObject color;
+        GlObject depth;
         GlObject framebuffer;
     };
     struct Screen {
         std::string name;
         glm::ivec2 size{0, 0};
-        GlObject depth;
         std::vector<Output> images;
     };
     std::vector<Screen> _screens;

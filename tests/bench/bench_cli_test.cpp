@@ -86,6 +86,11 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
             // +infinity; every other number is finite. Only a gain over the control may be negative.
             const bool psnr = name == "psnr_db" || name == "worst_frame_psnr_db" || name == "p5_frame_psnr_db" ||
                               name == "psnr_gain_db";
+            const bool stereo = name == "stereo_mean_arcmin" || name == "stereo_beyond_share";
+            if (stereo) {  // a mono display: not measured
+                EXPECT_TRUE(std::isnan(v)) << name;
+                continue;
+            }
             if (psnr && mode == "full" && !lod)
                 EXPECT_TRUE(std::isinf(v) && v > 0) << name;
             else
@@ -147,6 +152,40 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     EXPECT_FALSE(fs::exists(out / "flip_worst_1.png"));
     for (int mode = 2; mode <= 18; ++mode)
         EXPECT_TRUE(fs::is_regular_file(out / ("flip_worst_" + std::to_string(mode) + ".png")));
+}
+
+// In stereo (--stereo separate) both eyes are drawn and compared, and every mode's stereo
+// error is measured from the depth read back for each eye: zero for the reference, finite and
+// non-zero where a mode leaves cells out or puts them on the walls.
+TEST(BenchSceneCli, StereoRunMeasuresTheStereoErrorPerEye) {
+    const test::TempFolder root("bench_cli_stereo");
+    const fs::path plant = root / "plant20k";
+    const CliResult g = runCavewall({"generate", "plant", "--triangles", "20000", "--out", plant.string()});
+    ASSERT_EQ(g.exitCode, 0) << g.err;
+    const fs::path out = root / "out";
+    const CliResult r =
+        runCavewall({"bench", (plant / "scene.json").string(), "--quick", "--frames", "6", "--stereo", "separate",
+                     "--lod", "0", "--frame-budget-ms", "0", "--alphas", "20", "--warp-alpha", "20", "--out",
+                     out.string(), "--cache", (root / "cache").string()});
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    EXPECT_THAT(r.out, HasSubstr("4 screens at 128x128 pixels, separate stereo mode"));
+    EXPECT_THAT(r.out, HasSubstr("stereo: both eyes drawn, every image metric computed per output image (per eye in "
+                                 "separate mode); stereo error"));
+    EXPECT_THAT(r.out, HasSubstr("figures (128x128 per screen, separate)"));
+    const test::CsvTable csv = test::readCsv(out / "bench.csv");
+    ASSERT_EQ(csv.size(), 7u);  // full, cells, cells+layer, near, blend, warp, paged
+    for (const test::CsvRow& row : csv) {
+        SCOPED_TRACE(row.at("mode") + " " + row.at("transition"));
+        const double mean = row.number("stereo_mean_arcmin"), share = row.number("stereo_beyond_share");
+        if (row.at("mode") == "full") {  // the reference against itself: nothing compared, no error
+            EXPECT_EQ(mean, 0.0);
+            continue;
+        }
+        EXPECT_TRUE(std::isfinite(mean) && mean > 0.0) << mean;
+        EXPECT_TRUE(share >= 0.0 && share <= 1.0) << share;
+    }
+    for (const test::CsvRow& row : test::readCsv(out / "bench_screens.csv"))
+        EXPECT_TRUE(std::isfinite(row.number("stereo_mean_arcmin"))) << row.at("screen");
 }
 
 // Automatic walls and baking on demand end to end on the small plant: `walls --keep-paths`

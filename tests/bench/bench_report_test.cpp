@@ -386,6 +386,26 @@ TEST(BenchReport, EveryModeIsComparedWithTheCellsControl) {
     EXPECT_TRUE(std::isnan(parseCsv(csvHeader() + "\n" + csvRow(none.modes[1]) + "\n")[0].number("flip_ratio")));
 }
 
+TEST(BenchReport, StereoErrorColumnsOnlyWhenMeasured) {
+    ModeResult mono = sample(Mode::Walls, 10, 3.0, 0.01);
+    ModeResult stereo = mono;
+    stereo.error.stereoMeasured = true;
+    // 1000 pixels summing 250 arcmin (a mean of 0.25), 40 of them beyond the threshold (4 %).
+    stereo.error.stereo = {.pixels = 1000, .sumArcmin = 250.0, .beyond = 40};
+    stereo.screens[0].error = stereo.error;
+    const auto rows = parseCsv(csvHeader() + "\n" + csvRow(mono) + "\n" + csvRow(stereo) + "\n");
+    EXPECT_TRUE(std::isnan(rows[0].number("stereo_mean_arcmin")));  // mono: not measured, not 0
+    EXPECT_TRUE(std::isnan(rows[0].number("stereo_beyond_share")));
+    EXPECT_DOUBLE_EQ(rows[1].number("stereo_mean_arcmin"), 0.25);
+    EXPECT_DOUBLE_EQ(rows[1].number("stereo_beyond_share"), 0.04);
+    BenchReport report;
+    report.modes = {mono, stereo};
+    const std::string md = markdownReport(report);
+    EXPECT_THAT(md, HasSubstr("| stereo err arcmin mean / % > 1 arcmin |"));
+    EXPECT_THAT(md, HasSubstr(" | 0.25 / 4 | "));         // the stereo row: mean / percent beyond
+    EXPECT_THAT(md, HasSubstr(" | 0.01 / 0.04 | - | "));  // the mono row: FLIP, then no stereo figure
+}
+
 TEST(BenchReport, WritesFilesAndMarksTheFrontInThePlot) {
     const test::TempFolder folder("bench_report");
     BenchReport report;

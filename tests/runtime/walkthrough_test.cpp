@@ -115,6 +115,51 @@ TEST_F(WalkthroughTest, GoldenFramesInTextureBlendAndGeometryZones) {
     }
 }
 
+// FrameInput::readDepth: every view's eye distances, read after the frame without changing its
+// images; a flat wall shows the box behind it at the wall's distance, full geometry at the box's.
+TEST_F(WalkthroughTest, ReadDepthGivesEachEyeWhatItSeesAndLeavesTheImages) {
+    const SmallPlant& cells = twoCells();
+    const int wall = wallIndex(cells.walls, "A|B");
+    ASSERT_GE(wall, 0);
+    walls::FrameSelector selector(cells.walls.plan, cells.walls.table, cells.description);
+    std::optional<glm::dvec3> eye;  // the first eye in A, walking to the wall, in a texture zone
+    for (double x = -8.0; x < -1.0 && !eye; x += 0.25) {
+        const Blend b = blendOf(selector.select({x, 1.7, 0.0}), wall);
+        if (b.textures.size() == 1 && b.geometryWeight == 0.0) eye = glm::dvec3(x, 1.7, 0.0);
+    }
+    ASSERT_TRUE(eye) << "no texture zone of A|B on z = 0";
+    const display::Display display = testDisplay(32, true);
+    gl::WalkthroughOptions options;
+    options.synchronousPaging = true;
+    gl::Walkthrough walls(cells.scene, cells.description, display, *context, cells.walls, options);
+    gl::Walkthrough full(cells.scene, cells.description, display, *context, std::nullopt, options);
+    walkthrough::FrameInput in;
+    in.worldFromCave = cavePlacedAt(*eye);
+    in.readImages = true;
+    const walkthrough::FrameResult imagesOnly = walls.renderFrame(in);
+    in.readDepth = true;
+    const walkthrough::FrameResult withDepth = walls.renderFrame(in);
+    const walkthrough::FrameResult reference = full.renderFrame(in);
+    ASSERT_EQ(withDepth.images.size(), imagesOnly.images.size());
+    for (std::size_t i = 0; i < withDepth.images.size(); ++i)
+        EXPECT_EQ(withDepth.images[i].pixels.rgba, imagesOnly.images[i].pixels.rgba) << withDepth.images[i].stem;
+    EXPECT_TRUE(imagesOnly.depths.empty());
+    ASSERT_EQ(withDepth.depths.size(), 8u);  // four screens, two eyes each, in drawing order
+    ASSERT_EQ(reference.depths.size(), 8u);
+    const walkthrough::ViewDepth& front = withDepth.depths[0];
+    EXPECT_EQ(front.screen, 0);
+    EXPECT_EQ(front.eye, display::Eye::Left);
+    EXPECT_EQ(withDepth.depths[1].eye, display::Eye::Right);
+    ASSERT_EQ(front.metres.size(), 32u * 32u);
+    // Pixel (16, 13) of the front screen looks along +X within 2 degrees (its centre is 0.03 m
+    // above the eyes and 0.05 m to the right, 1.5 m ahead), at the red box through the wall:
+    // the wall is at x = 0, the box's near face at x = 4.5 (the floor, structure, is drawn in
+    // both and is left out here).
+    const std::size_t pixel = 13 * 32 + 16;
+    EXPECT_NEAR(front.metres[pixel], -eye->x, 0.02 * -eye->x);
+    EXPECT_NEAR(reference.depths[0].metres[pixel], 4.5 - eye->x, 0.02 * (4.5 - eye->x));
+}
+
 TEST_F(WalkthroughTest, LevelsOfDetailKeepTheirToleranceAndTheTriangleBudget) {
     const display::Display display = testDisplay(64);
     gl::WalkthroughOptions options;

@@ -1,6 +1,7 @@
 #include "walkthrough/gl/walkthrough.h"
 
 #include "config/error.h"
+#include "display/eye_distance.h"
 #include "display/timing.h"
 #include "scenes/image_io.h"
 #include "render/gl/view_loop.h"
@@ -344,13 +345,47 @@ std::vector<DepthWallDraw> Walkthrough::depthWallDraws(const walkthrough::FrameP
     return draws;
 }
 
-void Walkthrough::drawViews(const walkthrough::FrameInput& input, const std::vector<display::ScreenView>& views,
-                            const render::DrawFilter& filter, const walkthrough::FramePlan& plan,
-                            walkthrough::FrameResult& result) {
+Walkthrough::WallDraws Walkthrough::allWallDraws(const walkthrough::FramePlan& plan) {
+    WallDraws draws;
+    if (_walls && _walls->textures) draws.flat = wallDraws(plan);
+    draws.depth = depthWallDraws(plan, draws.flat);
+    return draws;
+}
+
+std::vector<walkthrough::ViewDepth> Walkthrough::readDepths(const walkthrough::FrameInput& input,
+                                                            const std::vector<display::ScreenView>& views,
+                                                            const WallDraws& walls) const {
     const glm::dmat4 caveFromWorld = glm::inverse(input.worldFromCave);
     const WallRuntime::Textures* textures = _walls ? _walls->textures.get() : nullptr;
-    std::vector<WallDraw> walls = textures ? wallDraws(plan) : std::vector<WallDraw>{};
-    const std::vector<DepthWallDraw> depthWalls = depthWallDraws(plan, walls);
+    std::vector<walkthrough::ViewDepth> depths;
+    for (const display::ScreenView& view : views) {
+        const int image = RenderTargets::imageOf(view.pass);
+        const display::Viewport& v = view.pass.viewport;
+        _targets.bind(view.screen, image);
+        glViewport(v.x, v.y, v.width, v.height);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(v.x, v.y, v.width, v.height);
+        FrameStats ignored;
+        if (textures)
+            textures->pass.drawDepth(walls.flat, view.frustum, caveFromWorld, textures->store.sampler(), ignored);
+        if (textures && textures->depthPass)
+            textures->depthPass->drawDepth(walls.depth, view.frustum, caveFromWorld, textures->store.sampler(),
+                                           ignored);
+        glDisable(GL_SCISSOR_TEST);
+        const std::vector<float> depth = _targets.readDepth(view.screen, image, v);
+        depths.push_back({view.screen, image, view.pass.eye, v.width, v.height,
+                          display::eyeDistances(view.frustum, {v.width, v.height}, depth)});
+    }
+    return depths;
+}
+
+void Walkthrough::drawViews(const walkthrough::FrameInput& input, const std::vector<display::ScreenView>& views,
+                            const render::DrawFilter& filter, const walkthrough::FramePlan& plan,
+                            const WallDraws& draws, walkthrough::FrameResult& result) {
+    const glm::dmat4 caveFromWorld = glm::inverse(input.worldFromCave);
+    const WallRuntime::Textures* textures = _walls ? _walls->textures.get() : nullptr;
+    const std::vector<WallDraw>& walls = draws.flat;
+    const std::vector<DepthWallDraw>& depthWalls = draws.depth;
     _renderer.beginFrame(_targets, _screens);
     result.stats = forEachView(views, _targets, [&](const display::ScreenView& view) {
         ViewStats stats = _renderer.renderView(view, input.worldFromCave, filter);
@@ -428,7 +463,8 @@ walkthrough::FrameResult Walkthrough::renderFrame(const walkthrough::FrameInput&
         result.lodOverBudget = lod.overBudget;
     }
     _timer.begin();
-    drawViews(input, views, filter, plan, result);
+    const WallDraws walls = allWallDraws(plan);
+    drawViews(input, views, filter, plan, walls, result);
     _timer.end();
     result.cpuMs = msSince(start);
     glFinish();
@@ -440,6 +476,7 @@ walkthrough::FrameResult Walkthrough::renderFrame(const walkthrough::FrameInput&
         result.bakerBusy = bakeAtStart->busy || end.busy || end.started != bakeAtStart->started;
     }
     if (input.readImages) result.images = readFrame(_display, _targets);
+    if (input.readDepth) result.depths = readDepths(input, views, walls);
     return result;
 }
 

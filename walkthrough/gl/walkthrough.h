@@ -21,7 +21,12 @@
 //  4. per screen and eye (drawViews): the planned geometry (frustum-culled by the scene
 //     renderer), the warp pass (Transition::Warp, warp_pass.h), the wall quads (wall_pass.h),
 //     the hand cursor;
-//  5. presents to the windows, times the frame and reads images back when asked.
+//  5. presents to the windows, times the frame and reads images back when asked;
+//  6. with FrameInput::readDepth, after the frame is timed: per view, the walls drawn again
+//     depth only (WallPass::drawDepth, DepthWallPass::drawDepth: the depth each eye sees on a
+//     flat wall or a depth wall), then the view's depth read back as eye distances. Each image
+//     has its own depth buffer, so every eye's geometry depth is still there. The warp and the
+//     clusters' impostors keep the depth their own passes write.
 // A scene without virtual walls (or no WallSetup) draws all geometry (frustum-culled) and never
 // builds the wall program, the pager or the selector.
 //
@@ -138,9 +143,18 @@ private:
     std::vector<WallDraw> wallDraws(const walkthrough::FramePlan& plan) const;
     // Depth walls: the walls of `flat` whose every texture has its depth move to the result.
     std::vector<DepthWallDraw> depthWallDraws(const walkthrough::FramePlan& plan, std::vector<WallDraw>& flat);
+    struct WallDraws {
+        std::vector<WallDraw> flat;
+        std::vector<DepthWallDraw> depth;
+    };
+    WallDraws allWallDraws(const walkthrough::FramePlan& plan);
     void drawViews(const walkthrough::FrameInput& input, const std::vector<display::ScreenView>& views,
-                   const render::DrawFilter& filter, const walkthrough::FramePlan& plan,
+                   const render::DrawFilter& filter, const walkthrough::FramePlan& plan, const WallDraws& walls,
                    walkthrough::FrameResult& result);
+    // After the frame: every view's walls again, depth only, then its depth read back.
+    std::vector<walkthrough::ViewDepth> readDepths(const walkthrough::FrameInput& input,
+                                                   const std::vector<display::ScreenView>& views,
+                                                   const WallDraws& walls) const;
     std::vector<display::ScreenView> renderedViews(const display::HeadPose& head) const;
     void present();
 

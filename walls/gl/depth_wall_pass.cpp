@@ -176,6 +176,25 @@ std::string fragmentSource(int layers) {
     return s + ";\n    fragColor = c;\n}\n";
 }
 
+// The depth-only variant (DepthWallPass::drawDepth): the same march, without the early depth
+// test, writing the hit's depth. The hit lies on the eye's ray through the quad's pixel,
+// (D_E + s) / D_E times as far from the eye as the quad, and reversed-Z window depth is
+// B + A / distance along the view axis (B = -clipFromView[2][2]), so its depth is B plus the
+// quad's depth minus B over that ratio. It is never nearer than the quad (depth_less).
+std::string depthFragmentSource(int layers) {
+    std::string s = fragmentSource(layers);
+    const std::string early = "layout(early_fragment_tests) in;";
+    s.replace(s.find(early), early.size(),
+              "layout(depth_less) out float gl_FragDepth;\nuniform mat4 uProjection;\nuniform vec3 uEye;");
+    const std::string end = "    fragColor = c;\n}\n";
+    s.replace(s.rfind(end), end.size(),
+              "    if (s < 0.0 || c.a < 0.5) discard;\n"
+              "    float b = -uProjection[2][2];\n"
+              "    gl_FragDepth = b + (gl_FragCoord.z - b) * uEye.z / (uEye.z + s);\n"
+              "    fragColor = c;\n}\n");
+    return s;
+}
+
 }  // namespace
 
 namespace {
@@ -215,34 +234,62 @@ DepthWallPass::DepthWallPass(walls::ReprojectSettings settings)
         throw Error("depth wall pass: maxSteps: expected [1, 1024], got " + std::to_string(settings.maxSteps));
     if (settings.refine < 0 || settings.refine > 16)
         throw Error("depth wall pass: refine: expected [0, 16], got " + std::to_string(settings.refine));
-    for (int n = 1; n <= walls::kMaxWallTextures; ++n) {
-        Program& p = _programs[n - 1];
-        p.program = buildProgram(kName, vertexSource(n), fragmentSource(n));
-        const GLuint id = p.program.id();
-        p.corners = uniformLocation(id, kName, "uCorners");
-        p.projection = uniformLocation(id, kName, "uProjection");
-        p.weights = uniformLocation(id, kName, "uWeights");
-        p.eye = uniformLocation(id, kName, "uEye");
-        p.size = uniformLocation(id, kName, "uSize");
-        p.samples = uniformLocation(id, kName, "uSample");
-        p.ranges = uniformLocation(id, kName, "uRange");
-        p.maxSteps = uniformLocation(id, kName, "uMaxSteps");
-        p.refine = uniformLocation(id, kName, "uRefine");
-        p.rect = uniformLocation(id, kName, "uRect");
-    }
+    for (int n = 1; n <= walls::kMaxWallTextures; ++n) _programs[n - 1] = build(n, fragmentSource(n));
+}
+
+DepthWallPass::Program DepthWallPass::build(int layers, const std::string& fragment) {
+    Program p;
+    p.program = buildProgram(kName, vertexSource(layers), fragment);
+    const GLuint id = p.program.id();
+    p.corners = uniformLocation(id, kName, "uCorners");
+    p.projection = uniformLocation(id, kName, "uProjection");
+    p.weights = uniformLocation(id, kName, "uWeights");
+    p.eye = uniformLocation(id, kName, "uEye");
+    p.size = uniformLocation(id, kName, "uSize");
+    p.samples = uniformLocation(id, kName, "uSample");
+    p.ranges = uniformLocation(id, kName, "uRange");
+    p.maxSteps = uniformLocation(id, kName, "uMaxSteps");
+    p.refine = uniformLocation(id, kName, "uRefine");
+    p.rect = uniformLocation(id, kName, "uRect");
+    return p;
 }
 
 void DepthWallPass::draw(const std::vector<DepthWallDraw>& walls, const display::OffAxisFrustum& frustum,
                          const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const {
     if (walls.empty()) return;
-    glBindVertexArray(_vertexArray.id());
-    const glm::mat4 projection(frustum.clipFromView);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
     glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    drawWith(_programs, walls, frustum, caveFromWorld, sampler, stats);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+}
+
+void DepthWallPass::drawDepth(const std::vector<DepthWallDraw>& walls, const display::OffAxisFrustum& frustum,
+                              const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const {
+    if (walls.empty()) return;
+    if (!_depthPrograms) {  // built on first use: only depth read-backs need them
+        _depthPrograms.emplace();
+        for (int n = 1; n <= walls::kMaxWallTextures; ++n) (*_depthPrograms)[n - 1] = build(n, depthFragmentSource(n));
+    }
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    drawWith(*_depthPrograms, walls, frustum, caveFromWorld, sampler, stats);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void DepthWallPass::drawWith(const Programs& programs, const std::vector<DepthWallDraw>& walls,
+                             const display::OffAxisFrustum& frustum, const glm::dmat4& caveFromWorld, GLuint sampler,
+                             FrameStats& stats) const {
+    glBindVertexArray(_vertexArray.id());
+    const glm::mat4 projection(frustum.clipFromView);
     const glm::dmat4 viewFromWorld = frustum.viewFromFrame * caveFromWorld;
     const glm::dvec3 eyeWorld = glm::dvec3(glm::inverse(caveFromWorld) * glm::dvec4(frustum.eye, 1.0));
     for (const DepthWallDraw& w : walls) {
@@ -278,7 +325,7 @@ void DepthWallPass::draw(const std::vector<DepthWallDraw>& walls, const display:
         const std::array<glm::dvec3, 4> corners = walls::stripCorners(w.quad, rect);
         glm::vec3 view[4];
         for (int i = 0; i < 4; ++i) view[i] = glm::vec3(viewFromWorld * glm::dvec4(corners[i], 1.0));
-        const Program& p = _programs[used - 1];
+        const Program& p = programs[used - 1];
         glUseProgram(p.program.id());
         glUniformMatrix4fv(p.projection, 1, GL_FALSE, glm::value_ptr(projection));
         glUniform3fv(p.corners, 4, glm::value_ptr(view[0]));
@@ -294,8 +341,6 @@ void DepthWallPass::draw(const std::vector<DepthWallDraw>& walls, const display:
         ++stats.drawCalls;
         stats.triangles += 2;
     }
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
 }
 
 }  // namespace cavewall::gl

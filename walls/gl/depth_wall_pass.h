@@ -54,6 +54,8 @@
 #include "walls/frame_select.h"
 
 #include <array>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace cavewall::gl {
@@ -99,14 +101,28 @@ public:
     void draw(const std::vector<DepthWallDraw>& walls, const display::OffAxisFrustum& frustum,
               const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const;
 
+    // The same walls, writing only depth: each pixel where a layer's march hits and the
+    // layers' summed alpha is at least 1/2 gets the depth of the hit (the point s behind the
+    // wall on the eye's ray) if it is nearer than what the buffer holds; colour is left as it is
+    // (the colour mask is all on afterwards). For reading back the depth a viewer sees
+    // (display/eye_distance.h) after a frame is drawn; the programs are built on the first call.
+    void drawDepth(const std::vector<DepthWallDraw>& walls, const display::OffAxisFrustum& frustum,
+                   const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const;
+
 private:
     struct Program {
         GlObject program;
         GLint corners = -1, projection = -1, weights = -1, eye = -1, size = -1, samples = -1, ranges = -1,
               maxSteps = -1, refine = -1, rect = -1;
     };
+    using Programs = std::array<Program, walls::kMaxWallTextures>;  // [n - 1] marches n layers
+    static Program build(int layers, const std::string& fragment);
+    void drawWith(const Programs& programs, const std::vector<DepthWallDraw>& walls,
+                  const display::OffAxisFrustum& frustum, const glm::dmat4& caveFromWorld, GLuint sampler,
+                  FrameStats& stats) const;
     walls::ReprojectSettings _settings;
-    std::array<Program, walls::kMaxWallTextures> _programs;  // [n - 1] marches n layers
+    Programs _programs;
+    mutable std::optional<Programs> _depthPrograms;
     GlObject _vertexArray;
     GlObject _noSkip;  // one texel of depth 0: a layer without skip blocks skips nothing
 };

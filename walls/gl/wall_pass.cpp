@@ -39,30 +39,66 @@ std::string fragmentSource(int textures) {
     return s + ";\n}\n";
 }
 
+// The depth-only variant: the same sum, and the pixel keeps the quad's depth where it covers
+// at least half (drawDepth).
+std::string depthFragmentSource(int textures) {
+    std::string s = fragmentSource(textures);
+    s.replace(s.rfind(";\n}\n"), 4, ";\n    if (fragColor.a < 0.5) discard;\n}\n");
+    return s;
+}
+
 }  // namespace
 
+WallPass::Program WallPass::build(const std::string& fragment) {
+    Program p;
+    p.program = buildProgram(kName, kVertex, fragment);
+    p.corners = uniformLocation(p.program.id(), kName, "uCorners");
+    p.projection = uniformLocation(p.program.id(), kName, "uProjection");
+    p.weights = uniformLocation(p.program.id(), kName, "uWeights");
+    p.rect = uniformLocation(p.program.id(), kName, "uRect");
+    return p;
+}
+
 WallPass::WallPass() : _vertexArray(createVertexArray()) {
-    for (int n = 1; n <= kMaxWallTextures; ++n) {
-        Program& p = _programs[n - 1];
-        p.program = buildProgram(kName, kVertex, fragmentSource(n));
-        p.corners = uniformLocation(p.program.id(), kName, "uCorners");
-        p.projection = uniformLocation(p.program.id(), kName, "uProjection");
-        p.weights = uniformLocation(p.program.id(), kName, "uWeights");
-        p.rect = uniformLocation(p.program.id(), kName, "uRect");
-    }
+    for (int n = 1; n <= kMaxWallTextures; ++n) _programs[n - 1] = build(fragmentSource(n));
 }
 
 void WallPass::draw(const std::vector<WallDraw>& walls, const display::OffAxisFrustum& frustum,
                     const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const {
     if (walls.empty()) return;
-    glBindVertexArray(_vertexArray.id());
-    const glm::mat4 projection(frustum.clipFromView);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
     glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    drawWith(_programs, walls, frustum, caveFromWorld, sampler, stats);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+}
+
+void WallPass::drawDepth(const std::vector<WallDraw>& walls, const display::OffAxisFrustum& frustum,
+                         const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const {
+    if (walls.empty()) return;
+    if (!_depthPrograms) {  // built on first use: only depth read-backs need them
+        _depthPrograms.emplace();
+        for (int n = 1; n <= kMaxWallTextures; ++n) (*_depthPrograms)[n - 1] = build(depthFragmentSource(n));
+    }
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    drawWith(*_depthPrograms, walls, frustum, caveFromWorld, sampler, stats);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void WallPass::drawWith(const Programs& programs, const std::vector<WallDraw>& walls,
+                        const display::OffAxisFrustum& frustum, const glm::dmat4& caveFromWorld, GLuint sampler,
+                        FrameStats& stats) const {
+    glBindVertexArray(_vertexArray.id());
+    const glm::mat4 projection(frustum.clipFromView);
     // Corners go to the view frame in double; only the eye-relative result is rounded to float.
     const glm::dmat4 viewFromWorld = frustum.viewFromFrame * caveFromWorld;
     for (const WallDraw& w : walls) {
@@ -81,7 +117,7 @@ void WallPass::draw(const std::vector<WallDraw>& walls, const display::OffAxisFr
         const std::array<glm::dvec3, 4> corners = walls::stripCorners(w.quad, rect);
         glm::vec3 view[4];
         for (int i = 0; i < 4; ++i) view[i] = glm::vec3(viewFromWorld * glm::dvec4(corners[i], 1.0));
-        const Program& p = _programs[used - 1];
+        const Program& p = programs[used - 1];
         glUseProgram(p.program.id());
         glUniformMatrix4fv(p.projection, 1, GL_FALSE, glm::value_ptr(projection));
         glUniform3fv(p.corners, 4, glm::value_ptr(view[0]));
@@ -91,8 +127,6 @@ void WallPass::draw(const std::vector<WallDraw>& walls, const display::OffAxisFr
         ++stats.drawCalls;
         stats.triangles += 2;
     }
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
 }
 
 }  // namespace cavewall::gl

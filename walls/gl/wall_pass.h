@@ -21,6 +21,8 @@
 #include "walls/texture_rect.h"
 
 #include <array>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace cavewall::gl {
@@ -48,12 +50,25 @@ public:
     void draw(const std::vector<WallDraw>& walls, const display::OffAxisFrustum& frustum,
               const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const;
 
+    // The same walls, writing only depth: each pixel where the weighted sum's alpha is at least
+    // 1/2 (the wall's texture covers it more than what lies behind shows) gets the quad's depth
+    // if it is nearer than what the buffer holds; colour is left as it is (the colour mask is
+    // all on afterwards). For reading back the depth a viewer sees (display/eye_distance.h)
+    // after a frame is drawn; the programs are built on the first call.
+    void drawDepth(const std::vector<WallDraw>& walls, const display::OffAxisFrustum& frustum,
+                   const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const;
+
 private:
     struct Program {
         GlObject program;
         GLint corners = -1, projection = -1, weights = -1, rect = -1;
     };
-    std::array<Program, kMaxWallTextures> _programs;  // [n - 1] samples n textures
+    using Programs = std::array<Program, kMaxWallTextures>;  // [n - 1] samples n textures
+    static Program build(const std::string& fragment);
+    void drawWith(const Programs& programs, const std::vector<WallDraw>& walls, const display::OffAxisFrustum& frustum,
+                  const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const;
+    Programs _programs;
+    mutable std::optional<Programs> _depthPrograms;
     GlObject _vertexArray;
 };
 

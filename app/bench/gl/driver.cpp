@@ -540,6 +540,13 @@ BenchReport runBenchmark(const BenchOptions& o) {
     const auto context = gl::createHeadlessContext();
     BenchReport report;
     report.header = headerLines(o, scene, *context, path);
+    if (measuresStereo(display))
+        report.header.push_back(
+            "stereo: both eyes drawn, every image metric computed per output image (per eye in separate mode); "
+            "stereo error (metrics/stereo_error.h) per eye and pixel against full geometry, eye separation " +
+            config::formatNumber(o.display.viewer.eyeSeparation) +
+            " m, threshold 1 arcmin; depth read back after each compared frame is timed, virtual walls drawn again "
+            "depth only (the depth each eye sees on them)");
     const auto& s0 = o.display.screens.front();
     report.resolution = std::to_string(s0.resolution.x) + "x" + std::to_string(s0.resolution.y) + " per screen, " +
                         std::string(config::toString(o.display.stereo));

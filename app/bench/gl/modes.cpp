@@ -3,6 +3,7 @@
 #include "display/frame_budget.h"
 
 #include <cmath>
+#include "display/eye_distance.h"
 #include "display/pixel_scale.h"
 #include "display/timing.h"
 #include "display/gl/render_targets.h"
@@ -58,7 +59,7 @@ FrameCost frameCost(const walkthrough::FrameResult& r) {
 ModeAccumulator::ModeAccumulator(ModeResult mode, const display::Display& display)
     : _mode(std::move(mode)), _display(display), _errors(display.screens().size()),
       _screenCpu(display.screens().size()), _screenTriangles(display.screens().size()),
-      _screenDrawCalls(display.screens().size()) {
+      _screenDrawCalls(display.screens().size()), _screenStereo(display.screens().size()) {
     _mode.screens.clear();
     for (const auto& s : display.screens()) {
         ScreenResult screen;
@@ -111,9 +112,47 @@ std::vector<ComparedImage> comparedImages(const display::Display& display, const
 }
 
 void ModeAccumulator::compare(long frame, const display::HeadPose& head, const std::vector<gl::ScreenImage>& images,
-                              const std::vector<gl::ScreenImage>& reference) {
-    _errors.addFrame(frame, comparedImages(_display, head, images, reference, modeLabel(_mode)));
+                              const std::vector<walkthrough::ViewDepth>& depths, const ReferenceFrame& reference) {
+    _errors.addFrame(frame, comparedImages(_display, head, images, reference.images, modeLabel(_mode)));
+    if (measuresStereo(_display)) compareDepths(depths, reference.depths);
 }
+
+namespace {
+
+metrics::DepthImage depthImage(const walkthrough::ViewDepth& d, const std::string& name) {
+    return {name, d.width, d.height, d.metres};
+}
+
+}  // namespace
+
+void ModeAccumulator::compareDepths(const std::vector<walkthrough::ViewDepth>& depths,
+                                    const std::vector<walkthrough::ViewDepth>& reference) {
+    const std::string mode = modeLabel(_mode);
+    if (depths.size() != reference.size())
+        throw Error("bench: mode " + mode + " read " + std::to_string(depths.size()) +
+                    " depth views, expected the reference's " + std::to_string(reference.size()));
+    const metrics::StereoErrorOptions options{.interocularMetres = _display.config().viewer.eyeSeparation};
+    for (std::size_t i = 0; i < depths.size(); ++i) {
+        const walkthrough::ViewDepth &d = depths[i], &r = reference[i];
+        if (d.screen != r.screen || d.image != r.image || d.eye != r.eye || d.screen < 0 ||
+            d.screen >= static_cast<int>(_screenStereo.size()))
+            throw Error("bench: mode " + mode + ": depth view " + std::to_string(i) + " is screen " +
+                        std::to_string(d.screen) + " eye " + display::toString(d.eye) +
+                        ", expected the reference's screen " + std::to_string(r.screen) + " eye " +
+                        display::toString(r.eye));
+        const std::string view = _display.screens()[d.screen].name + " " + display::toString(d.eye);
+        const metrics::StereoError e =
+            metrics::stereoError(depthImage(d, mode + " " + view), depthImage(r, "full " + view), options);
+        _stereo += e;
+        _screenStereo[d.screen] += e;
+    }
+}
+
+bool measuresStereo(const display::Display& display) {
+    return display.isStereo() && display.config().stereo != config::StereoMode::Anaglyph;
+}
+
+bool readsDepth(const ModeContext& c) { return measuresStereo(c.display); }
 
 ModeResult ModeAccumulator::finish(double fullP50) const {
     ModeResult m = _mode;
@@ -133,9 +172,13 @@ ModeResult ModeAccumulator::finish(double fullP50) const {
     for (const FrameSample& f : m.frames) uploads.push_back(f.uploadedMB);
     m.uploadedMB = timeStats(uploads);
     m.error = _errors.result();
+    m.error.stereoMeasured = measuresStereo(_display);
+    m.error.stereo = _stereo;
     m.flipWorst = _errors.worstFlip();
     for (std::size_t s = 0; s < m.screens.size(); ++s) {
         m.screens[s].error = _errors.screenResult(s);
+        m.screens[s].error.stereoMeasured = measuresStereo(_display);
+        m.screens[s].error.stereo = _screenStereo[s];
         m.screens[s].cpuMs = timeStats(_screenCpu[s]);
         m.screens[s].triangles = _screenTriangles[s] / n;
         m.screens[s].drawCalls = _screenDrawCalls[s] / n;
@@ -202,14 +245,15 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
     for (const walkthrough::FrameInput& frame : c.path.frames) {
         walkthrough::FrameInput in = frame;
         in.readImages = compared(c, in.frame);
+        in.readDepth = in.readImages && readsDepth(c);
         for (std::size_t i = 0; i < runs.size(); ++i) {
             walkthrough::FrameResult r = render(live[i], in);
             runs[i].acc->addFrame(frameCost(r));
             if (!in.readImages) continue;
             if (runs[i].storeReference)
-                reference[in.frame] = std::move(r.images);
+                reference[in.frame] = {std::move(r.images), std::move(r.depths)};
             else
-                runs[i].acc->compare(in.frame, in.head, r.images, reference.at(in.frame));
+                runs[i].acc->compare(in.frame, in.head, r.images, r.depths, reference.at(in.frame));
         }
     }
 }
@@ -226,9 +270,10 @@ double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, gl::Backgro
     for (const walkthrough::FrameInput& frame : c.path.frames) {
         walkthrough::FrameInput in = frame;
         in.readImages = compared(c, in.frame);
+        in.readDepth = in.readImages && readsDepth(c);
         walkthrough::FrameResult r = walkthrough.renderFrame(in);
         acc.addFrame(frameCost(r));
-        if (in.readImages) acc.compare(in.frame, in.head, r.images, reference.at(in.frame));
+        if (in.readImages) acc.compare(in.frame, in.head, r.images, r.depths, reference.at(in.frame));
     }
     return firstFrameSeconds;
 }
@@ -303,6 +348,25 @@ gl::GlObject wallSampler() {
 
 }  // namespace
 
+namespace {
+
+// Every view's depth as eye distances, after the frame: geometry only (each image keeps its own
+// depth buffer). The near limit's bare wall quads and the layer write no depth.
+std::vector<walkthrough::ViewDepth> readViewDepths(const std::vector<display::ScreenView>& views,
+                                                   const gl::RenderTargets& targets) {
+    std::vector<walkthrough::ViewDepth> depths;
+    for (const display::ScreenView& view : views) {
+        const int image = gl::RenderTargets::imageOf(view.pass);
+        const display::Viewport& v = view.pass.viewport;
+        depths.push_back(
+            {view.screen, image, view.pass.eye, v.width, v.height,
+             display::eyeDistances(view.frustum, {v.width, v.height}, targets.readDepth(view.screen, image, v))});
+    }
+    return depths;
+}
+
+}  // namespace
+
 void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std::vector<CellRun>& runs,
                   const ReferenceImages& reference) {
     assert(!runs.empty());
@@ -366,8 +430,11 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
             FrameCost cost;
             draw(in, r.draw, &cost);
             r.acc->addFrame(cost);
-            if (compared(c, in.frame))
-                r.acc->compare(in.frame, in.head, gl::readFrame(c.display, targets), reference.at(in.frame));
+            if (!compared(c, in.frame)) continue;
+            const std::vector<walkthrough::ViewDepth> depths = readsDepth(c)
+                                                                   ? readViewDepths(c.display.views(in.head), targets)
+                                                                   : std::vector<walkthrough::ViewDepth>{};
+            r.acc->compare(in.frame, in.head, gl::readFrame(c.display, targets), depths, reference.at(in.frame));
         }
 }
 

@@ -14,8 +14,14 @@
 
 namespace cavewall::gl {
 
-// Full-geometry images of the compared frames: frame index -> its screen images.
-using ReferenceImages = std::map<long, std::vector<gl::ScreenImage>>;
+// The full-geometry frame every mode's compared frame is compared with: its screen images and,
+// on a stereo display, every view's depth (walkthrough::ViewDepth, eye distances).
+struct ReferenceFrame {
+    std::vector<gl::ScreenImage> images;
+    std::vector<walkthrough::ViewDepth> depths;  // empty in mono
+};
+// Frame index -> the reference of that frame.
+using ReferenceImages = std::map<long, ReferenceFrame>;
 
 // What one timed frame cost.
 struct FrameCost {
@@ -53,9 +59,11 @@ public:
     const bench::ModeResult& mode() const { return _mode; }
     // Compares `images` of frame `frame`, seen from `head` (cave frame), with the reference of
     // the same frame (same screens and images); FLIP at each screen's minPixelsPerDegree from
-    // the head position (the cyclopean eye, also in stereo).
+    // the head position (the cyclopean eye, also in stereo). Where measuresStereo, also every
+    // view's `depths` with the reference's (the stereo error, at the viewer's eye separation);
+    // throws cavewall::Error naming the mode when the views differ from the reference's.
     void compare(long frame, const display::HeadPose& head, const std::vector<gl::ScreenImage>& images,
-                 const std::vector<gl::ScreenImage>& reference);
+                 const std::vector<walkthrough::ViewDepth>& depths, const ReferenceFrame& reference);
     // `fullP50`: the reference mode's median frame ms (0: this is the reference).
     bench::ModeResult finish(double fullP50) const;
     void setTriangleBudget(std::size_t budget) { _mode.triangleBudget = budget; }
@@ -66,6 +74,10 @@ private:
     std::vector<double> _frame, _cpu, _gpu;
     double _triangles = 0.0, _drawCalls = 0.0, _lodTolerance = 0.0;
     bench::ErrorPool _errors;
+    void compareDepths(const std::vector<walkthrough::ViewDepth>& depths,
+                       const std::vector<walkthrough::ViewDepth>& reference);
+    metrics::StereoError _stereo;                            // all screens (stereo displays only)
+    std::vector<metrics::StereoError> _screenStereo;         // per screen
     std::vector<std::vector<double>> _screenCpu;             // per screen, per frame
     std::vector<double> _screenTriangles, _screenDrawCalls;  // per screen, summed over frames
 };
@@ -107,6 +119,12 @@ struct WalkRun {
     // pass over the path (the same frames, drawn as its timed pass draws them), set on `acc`.
     int budgetFrom = -1;
 };
+
+// Whether a display's modes get the stereo error: stereo, with each eye's pixels apart (all
+// but anaglyph, whose eyes share one image and so one depth buffer).
+bool measuresStereo(const display::Display& display);
+// Whether compared frames read depth back: where the display's modes get the stereo error.
+bool readsDepth(const ModeContext& c);
 
 // Runs walkthrough modes over the path, interleaved: after every run's warm-up, each path frame
 // is drawn by every run in turn, so that their times share the machine's load of the same
