@@ -1,6 +1,7 @@
-// bench.csv columns, bench.md and the plot of `cavewall bench` (app/bench/report.h).
-#include "app/bench/plot.h"
+// bench.csv columns, bench.md and the plot of `cavewall bench` (app/bench/report.h,
+// app/bench/report_plot.h).
 #include "app/bench/report.h"
+#include "app/bench/report_plot.h"
 
 #include "scenes/image_io.h"
 #include "tests/support/csv_table.h"
@@ -32,6 +33,7 @@ ModeResult sample(Mode mode, double alpha, double p50, double rmse) {
     m.alphaDeg = alpha;
     if (alpha > 0) m.transition = app::Transition::Blend;
     m.frameMs = {p50, p50 * 1.1, p50 * 1.2, p50};
+    m.error.frames = 2;
     m.error.rmse = rmse;
     m.error.mse = rmse * rmse;
     m.error.psnrDb = rmse > 0 ? -20 * std::log10(rmse) : std::numeric_limits<double>::infinity();
@@ -413,28 +415,63 @@ TEST(BenchReport, WritesFilesAndMarksTheFrontInThePlot) {
     const test::CsvTable modes = test::readCsv(folder / "bench.csv");
     EXPECT_EQ(modes.column("mode"), (std::vector<std::string>{"full", "walls", "walls"}));
     EXPECT_EQ(modes.column("alpha_deg"), (std::vector<std::string>{"0", "10", "20"}));
+    // gnuplot drew it at the figure's size (its content: BenchPlot below and tests/bench/plot_test.cpp).
     const scenes::Image png = scenes::readImage(folder / "bench.png");
-    EXPECT_EQ(png.width, 640);
-    EXPECT_EQ(png.height, 420);
-    int red = 0, blue = 0;
-    for (std::size_t i = 0; i < png.rgba.size(); i += 4) {
-        red += png.rgba[i] == 210 && png.rgba[i + 1] == 30 && png.rgba[i + 2] == 30;
-        blue += png.rgba[i] == 40 && png.rgba[i + 1] == 90 && png.rgba[i + 2] == 200;
-    }
-    EXPECT_GT(red, 2 * 49);  // two front markers (7x7) plus the line joining them
-    EXPECT_GE(blue, 49);     // the dominated point
+    EXPECT_EQ(png.width, 1400);
+    EXPECT_EQ(png.height, 640);
 }
 
-TEST(BenchPlot, DigitsAreDrawn) {
-    scenes::Image image{"t", 20, 8, std::vector<std::uint8_t>(20 * 8 * 4, 0)};
-    const unsigned char white[3] = {255, 255, 255};
-    drawText(image, 0, 0, "18", 1, white);
-    auto lit = [&](int x, int y) { return image.rgba[(y * 20 + x) * 4] == 255; };
-    // '1' is 2,6,2,2,7: the middle column is lit on every row; '8' starts 4 pixels right and
-    // its centre row is full (7).
-    for (int y = 0; y < 5; ++y) EXPECT_TRUE(lit(1, y)) << y;
-    EXPECT_TRUE(lit(4, 2) && lit(5, 2) && lit(6, 2));
-    EXPECT_FALSE(lit(5, 1));  // the hole of the 8
+// Every mode is named in the legend as bench.md numbers it; the PSNR panel leaves out the
+// reference (infinite PSNR), the FLIP panel has it at 0; the front is flagged, and the control
+// and the best alternative are ringed.
+TEST(BenchPlot, NamesEveryModeAndFlagsTheFrontControlAndAlternative) {
+    BenchReport report;
+    report.resolution = "256x256 per screen, mono";
+    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), sample(Mode::Full, 0, 20.0, 0.01),
+                    sample(Mode::Cells, 0, 2.0, 0.08), sample(Mode::Walls, 10, 3.0, 0.02),
+                    sample(Mode::Walls, 20, 5.0, 0.05)};
+    report.modes[1].lodPixels = 1.0;  // full geometry with levels of detail: the alternative
+    const Figure figure = tradeOffFigure(report);
+    ASSERT_EQ(figure.panels.size(), 2u);
+    const PlotPanel& psnr = figure.panels[0];
+    const PlotPanel& flip = figure.panels[1];
+    EXPECT_EQ(axisLabel(psnr.y), "pooled PSNR against full geometry (dB)");
+    EXPECT_EQ(axisLabel(psnr.x), "median frame time, all screens (ms)");
+    EXPECT_THAT(psnr.title, HasSubstr("256x256 per screen, mono"));
+    std::vector<std::string> names;
+    for (const PlotSeries& s : flip.series) names.push_back(s.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"#1 full", "#2 full lod 1px", "#3 cells", "#4 walls a=10 blend",
+                                               "#5 walls a=20 blend"}));
+    ASSERT_EQ(psnr.series.size(), 4u);  // without #1, whose PSNR is infinite
+    EXPECT_EQ(psnr.series[0].name, "#2 full lod 1px");
+    // Front (lower time and error): cells (2 ms), walls a=10 (3 ms, less error), full lod
+    // (20 ms, less still); walls a=20 is slower and worse than a=10. FLIP adds full (0 error).
+    auto fronts = [](const PlotPanel& panel) {
+        std::vector<bool> out;
+        for (const PlotSeries& s : panel.series) out.push_back(s.points.at(0).front);
+        return out;
+    };
+    EXPECT_EQ(fronts(psnr), (std::vector<bool>{true, true, true, false}));
+    EXPECT_EQ(fronts(flip), (std::vector<bool>{true, true, true, true, false}));
+    EXPECT_TRUE(flip.series[2].points[0].control);
+    EXPECT_TRUE(flip.series[1].points[0].bestAlternative);
+    EXPECT_FALSE(flip.series[3].points[0].control || flip.series[3].points[0].bestAlternative);
+    EXPECT_EQ(flip.controlName, "control: cells without textures");
+    EXPECT_EQ(flip.alternativeName, "best alternative: full geometry with levels of detail");
+}
+
+// A mode that compared no frame has no error to show, and a NaN frame time no place on the axis:
+// both are left out rather than drawn as exact.
+TEST(BenchPlot, ModesWithoutFiguresAreLeftOut) {
+    BenchReport report;
+    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), sample(Mode::Walls, 10, 3.0, 0.02),
+                    sample(Mode::Walls, 20, std::numeric_limits<double>::quiet_NaN(), 0.05)};
+    report.modes[1].error.frames = 0;
+    const Figure figure = tradeOffFigure(report);
+    ASSERT_EQ(figure.panels[1].series.size(), 1u);
+    EXPECT_EQ(figure.panels[1].series[0].name, "#1 full");
+    EXPECT_TRUE(figure.panels[0].series.empty());
+    EXPECT_NO_THROW(checkFigure(figure, "bench.png"));
 }
 
 }  // namespace
