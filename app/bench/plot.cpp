@@ -56,16 +56,16 @@ struct PanelPlot {
 PanelPlot panelPlot(const PlotPanel& panel, std::size_t index) {
     PanelPlot out;
     const std::string prefix = "$p" + std::to_string(index) + "_";
-    int shown = 0;
+    // Styles follow the series' index, so that panels listing the same series in the same order
+    // draw each one alike even where one panel has no point of it.
     for (std::size_t i = 0; i < panel.series.size(); ++i) {
         const PlotSeries& s = panel.series[i];
         if (s.points.empty()) continue;
         const std::string block = prefix + "s" + std::to_string(i);
         out.blocks += dataBlock(block, s.line ? sortedByX(s.points) : s.points);
         out.items.push_back(block + " using 1:2 with " + (s.line ? "linespoints lw 2" : "points") + " pt " +
-                            std::to_string(kMarkers[shown % 6]) + " ps 1.4 lc rgb '" + kColours[shown % 8] +
-                            "' title " + gnuplotQuoted(s.name));
-        ++shown;
+                            std::to_string(kMarkers[i % 6]) + " ps 1.4 lc rgb '" + kColours[i % 8] + "' title " +
+                            gnuplotQuoted(s.name));
     }
     struct Overlay {
         bool PlotPoint::*flag;
@@ -75,9 +75,8 @@ PanelPlot panelPlot(const PlotPanel& panel, std::size_t index) {
     };
     const Overlay overlays[] = {
         {&PlotPoint::front, "front", "lines dt 2 lw 2 lc rgb '#404040'", &panel.frontName},
-        {&PlotPoint::control, "control", "points pt 6 ps 3.5 lw 2 lc rgb '#000000'", &panel.controlName},
-        {&PlotPoint::bestAlternative, "alternative", "points pt 4 ps 3.5 lw 2 lc rgb '#000000'",
-         &panel.alternativeName}};
+        {&PlotPoint::control, "control", "points pt 6 ps 3 lw 2 lc rgb '#000000'", &panel.controlName},
+        {&PlotPoint::bestAlternative, "alternative", "points pt 4 ps 3 lw 2 lc rgb '#000000'", &panel.alternativeName}};
     for (const Overlay& o : overlays) {
         const std::vector<PlotPoint> points = flagged(panel, o.flag);
         if (points.empty()) continue;
@@ -96,7 +95,8 @@ std::string axisRange(const PlotPanel& panel, const PlotAxis& axis, double PlotP
             lo = std::min(lo, p.*coordinate);
             hi = std::max(hi, p.*coordinate);
         }
-    if (lo > hi) return "[0:1]";
+    if (lo > hi) return axis.log ? "[0.1:1]" : "[0:1]";
+    if (axis.log) return "[" + number(lo / 1.25) + ":" + number(hi * 1.25) + "]";
     if (axis.fromZero) lo = std::min(lo, 0.0);
     double span = hi - lo;
     if (span <= 0.0) span = hi != 0.0 ? std::abs(hi) * 0.2 : 1.0;
@@ -104,17 +104,34 @@ std::string axisRange(const PlotPanel& panel, const PlotAxis& axis, double PlotP
     return "[" + number(axis.fromZero && lo >= 0.0 ? 0.0 : lo - margin) + ":" + number(hi + margin) + "]";
 }
 
-// Title, axes, grid and legend of one panel, then its plot command.
-std::string panelCommands(const PlotPanel& panel, const PanelPlot& plot) {
-    std::string out = "set title " + gnuplotQuoted(panel.title) + "\n";
-    out += "set xlabel " + gnuplotQuoted(axisLabel(panel.x)) + "\n";
-    out += "set ylabel " + gnuplotQuoted(axisLabel(panel.y)) + "\n";
-    out += "set xrange " + axisRange(panel, panel.x, &PlotPoint::x) + "\n";
-    out += "set yrange " + axisRange(panel, panel.y, &PlotPoint::y) + "\n";
+// The legend of panel `index`: its own below it, or the figure's shared one (the last panel's,
+// in the strip at the right), with the figure's note under it.
+std::string keyCommands(const Figure& figure, std::size_t index) {
     // The key's extra height keeps its box off the x axis title.
-    out += "set grid\nset key below left Left reverse maxrows 8 box height 1.5\n";
+    if (figure.legendWidth <= 0) return "set key below left Left reverse maxrows 8 box height 1.5\n";
+    if (index + 1 < figure.panels.size()) return "unset key\n";
+    const std::string left = number(1.0 - static_cast<double>(figure.legendWidth) / figure.width);  // strip start
+    std::string out = "set key at screen " + left + ", 0.92 left top Left reverse box\n";
+    if (!figure.note.empty())
+        out += "set label 1 " + gnuplotQuoted(figure.note) + " at screen " + left + ", 0.04 left\n";
+    return out;
+}
+
+// The range, scale and title of one axis ("x" or "y").
+std::string axisCommands(const PlotPanel& panel, const PlotAxis& axis, const char* name,
+                         double PlotPoint::*coordinate) {
+    return std::string(axis.log ? "set logscale " : "unset logscale ") + name + "\nset " + name + "label " +
+           gnuplotQuoted(axisLabel(axis)) + "\nset " + name + "range " + axisRange(panel, axis, coordinate) + "\n";
+}
+
+// Title, axes, grid and legend of one panel, then its plot command.
+std::string panelCommands(const Figure& figure, std::size_t index, const PanelPlot& plot) {
+    const PlotPanel& panel = figure.panels[index];
+    std::string out = "set title " + gnuplotQuoted(panel.title) + "\n";
+    out += axisCommands(panel, panel.x, "x", &PlotPoint::x) + axisCommands(panel, panel.y, "y", &PlotPoint::y);
+    out += "set grid\n" + keyCommands(figure, index);
     if (plot.items.empty())
-        return out + "set label 1 'no data' at graph 0.5, 0.5 center\nplot NaN notitle\nunset label 1\n";
+        return out + "set label 2 'no data' at graph 0.5, 0.5 center\nplot NaN notitle\nunset label 2\n";
     out += "plot ";
     for (std::size_t i = 0; i < plot.items.size(); ++i) out += (i ? ", \\\n     " : "") + plot.items[i];
     return out + "\n";
@@ -151,6 +168,18 @@ void checkFigure(const Figure& figure, const std::string& where) {
                     throw Error(where + ": panel " + std::to_string(p + 1) + " '" + figure.panels[p].title +
                                 "': series '" + s.name + "': point " + std::to_string(i + 1) +
                                 ": expected finite x and y, got " + pointText(s.points[i]));
+    for (std::size_t p = 0; p < figure.panels.size(); ++p) {
+        const PlotPanel& panel = figure.panels[p];
+        for (const PlotSeries& s : panel.series)
+            for (std::size_t i = 0; i < s.points.size(); ++i)
+                if ((panel.x.log && s.points[i].x <= 0.0) || (panel.y.log && s.points[i].y <= 0.0))
+                    throw Error(where + ": panel " + std::to_string(p + 1) + " '" + panel.title + "': series '" +
+                                s.name + "': point " + std::to_string(i + 1) +
+                                ": expected x and y > 0 on a logarithmic axis, got " + pointText(s.points[i]));
+    }
+    if (figure.legendWidth < 0 || figure.legendWidth > figure.width / 2)
+        throw Error(where + ": expected a legend strip of 0 to half the plot's width (" +
+                    std::to_string(figure.width / 2) + " pixels), got " + std::to_string(figure.legendWidth));
 }
 
 std::string gnuplotScript(const Figure& figure, const std::filesystem::path& output) {
@@ -164,8 +193,12 @@ std::string gnuplotScript(const Figure& figure, const std::filesystem::path& out
         plots.push_back(panelPlot(figure.panels[i], i));
         script << plots.back().blocks;
     }
-    script << "set multiplot layout 1," << figure.panels.size() << "\n";
-    for (std::size_t i = 0; i < figure.panels.size(); ++i) script << panelCommands(figure.panels[i], plots[i]);
+    script << "set multiplot layout 1," << figure.panels.size();
+    if (figure.legendWidth > 0)  // panels left of the legend's strip, in screen fractions
+        script << " margins 0.07, " << number(0.97 - static_cast<double>(figure.legendWidth) / figure.width)
+               << ", 0.12, 0.92 spacing 0.08";
+    script << "\n";
+    for (std::size_t i = 0; i < figure.panels.size(); ++i) script << panelCommands(figure, i, plots[i]);
     script << "unset multiplot\nset output\n";
     return script.str();
 }

@@ -28,7 +28,8 @@ struct PlotSeries {
 struct PlotAxis {
     std::string title;     // "median frame time"
     std::string unit;      // "ms"; shown as "median frame time (ms)"; empty: no unit (a ratio)
-    bool fromZero = true;  // the range starts at 0; else gnuplot fits it to the data
+    bool fromZero = true;  // the range starts at 0; else it spans the data (8 % margins)
+    bool log = false;      // logarithmic (every coordinate > 0; fromZero ignored)
 };
 
 struct PlotPanel {
@@ -43,14 +44,20 @@ struct PlotPanel {
 struct Figure {
     std::vector<PlotPanel> panels;   // at least one; side by side, left to right
     int width = 1280, height = 560;  // PNG pixels, at least 160 x 120
+    // > 0: one legend for all panels, the last panel's, in a strip this many pixels wide at the
+    // right (panels listing the same series in the same order draw them alike); 0: a legend
+    // below each panel. At most half the width.
+    int legendWidth = 0;
+    std::string note;  // a line under the shared legend (legendWidth > 0); empty: none
 };
 
 // "median frame time (ms)", or the title alone without a unit.
 std::string axisLabel(const PlotAxis& axis);
 
 // Throws cavewall::Error naming `where` (the PNG), the panel, the series and the point when
-// `figure` has no panel, a size under 160 x 120, or a non-finite coordinate: "bench.png: panel 1
-// 'error': series 'walls a=10': point 2: expected finite x and y, got x=3 y=nan".
+// `figure` has no panel, a size under 160 x 120, a legend strip over half the width, a
+// non-finite coordinate ("bench.png: panel 1 'error': series 'walls a=10': point 2: expected
+// finite x and y, got x=3 y=nan") or one <= 0 on a logarithmic axis.
 void checkFigure(const Figure& figure, const std::string& where);
 
 // The gnuplot script that draws `figure` (checked first) with the pngcairo terminal into

@@ -417,12 +417,12 @@ TEST(BenchReport, WritesFilesAndMarksTheFrontInThePlot) {
     EXPECT_EQ(modes.column("alpha_deg"), (std::vector<std::string>{"0", "10", "20"}));
     // gnuplot drew it at the figure's size (its content: BenchPlot below and tests/bench/plot_test.cpp).
     const scenes::Image png = scenes::readImage(folder / "bench.png");
-    EXPECT_EQ(png.width, 1400);
+    EXPECT_EQ(png.width, 1600);
     EXPECT_EQ(png.height, 640);
 }
 
-// Every mode is named in the legend as bench.md numbers it; the PSNR panel leaves out the
-// reference (infinite PSNR), the FLIP panel has it at 0; the front is flagged, and the control
+// Every mode is named in the legend as bench.md numbers it, in both panels alike; the
+// reference (exact: infinite PSNR, FLIP 0) has no point; the front is flagged, and the control
 // and the best alternative are ringed.
 TEST(BenchPlot, NamesEveryModeAndFlagsTheFrontControlAndAlternative) {
     BenchReport report;
@@ -433,44 +433,50 @@ TEST(BenchPlot, NamesEveryModeAndFlagsTheFrontControlAndAlternative) {
     report.modes[1].lodPixels = 1.0;  // full geometry with levels of detail: the alternative
     const Figure figure = tradeOffFigure(report);
     ASSERT_EQ(figure.panels.size(), 2u);
-    const PlotPanel& psnr = figure.panels[0];
-    const PlotPanel& flip = figure.panels[1];
-    EXPECT_EQ(axisLabel(psnr.y), "pooled PSNR against full geometry (dB)");
-    EXPECT_EQ(axisLabel(psnr.x), "median frame time, all screens (ms)");
-    EXPECT_THAT(psnr.title, HasSubstr("256x256 per screen, mono"));
-    std::vector<std::string> names;
-    for (const PlotSeries& s : flip.series) names.push_back(s.name);
-    EXPECT_EQ(names, (std::vector<std::string>{"#1 full", "#2 full lod 1px", "#3 cells", "#4 walls a=10 blend",
-                                               "#5 walls a=20 blend"}));
-    ASSERT_EQ(psnr.series.size(), 4u);  // without #1, whose PSNR is infinite
-    EXPECT_EQ(psnr.series[0].name, "#2 full lod 1px");
-    // Front (lower time and error): cells (2 ms), walls a=10 (3 ms, less error), full lod
-    // (20 ms, less still); walls a=20 is slower and worse than a=10. FLIP adds full (0 error).
-    auto fronts = [](const PlotPanel& panel) {
-        std::vector<bool> out;
-        for (const PlotSeries& s : panel.series) out.push_back(s.points.at(0).front);
-        return out;
-    };
-    EXPECT_EQ(fronts(psnr), (std::vector<bool>{true, true, true, false}));
-    EXPECT_EQ(fronts(flip), (std::vector<bool>{true, true, true, true, false}));
-    EXPECT_TRUE(flip.series[2].points[0].control);
-    EXPECT_TRUE(flip.series[1].points[0].bestAlternative);
-    EXPECT_FALSE(flip.series[3].points[0].control || flip.series[3].points[0].bestAlternative);
-    EXPECT_EQ(flip.controlName, "control: cells without textures");
-    EXPECT_EQ(flip.alternativeName, "best alternative: full geometry with levels of detail");
+    EXPECT_GT(figure.legendWidth, 0);  // one legend for both panels
+    EXPECT_EQ(figure.note, "#1 full is the reference: exact, not drawn");
+    const std::vector<std::string> names{"#1 full", "#2 full lod 1px", "#3 cells", "#4 walls a=10 blend",
+                                         "#5 walls a=20 blend"};
+    for (const PlotPanel& panel : figure.panels) {
+        SCOPED_TRACE(panel.title);
+        EXPECT_THAT(panel.title, HasSubstr("256x256 per screen, mono"));
+        EXPECT_EQ(axisLabel(panel.x), "median frame time, all screens (ms)");
+        std::vector<std::string> seriesNames;
+        for (const PlotSeries& s : panel.series) seriesNames.push_back(s.name);
+        EXPECT_EQ(seriesNames, names);
+        EXPECT_TRUE(panel.series[0].points.empty());  // the reference
+        // Front (lower time and error): cells (2 ms), walls a=10 (3 ms, less error), full lod
+        // (20 ms, less still); walls a=20 is slower and worse than a=10.
+        std::vector<bool> front;
+        for (std::size_t i = 1; i < panel.series.size(); ++i) front.push_back(panel.series[i].points.at(0).front);
+        EXPECT_EQ(front, (std::vector<bool>{true, true, true, false}));
+        EXPECT_TRUE(panel.series[2].points[0].control);
+        EXPECT_TRUE(panel.series[1].points[0].bestAlternative);
+        EXPECT_FALSE(panel.series[3].points[0].control || panel.series[3].points[0].bestAlternative);
+        EXPECT_EQ(panel.controlName, "control: cells without textures");
+        EXPECT_EQ(panel.alternativeName, "best alternative: full geometry with levels of detail");
+    }
+    EXPECT_EQ(axisLabel(figure.panels[0].y), "pooled PSNR (dB)");
+    EXPECT_TRUE(figure.panels[1].y.log);
+    EXPECT_NO_THROW(checkFigure(figure, "bench.png"));
 }
 
 // A mode that compared no frame has no error to show, and a NaN frame time no place on the axis:
-// both are left out rather than drawn as exact.
-TEST(BenchPlot, ModesWithoutFiguresAreLeftOut) {
+// both keep their legend entry without a point rather than being drawn as exact.
+TEST(BenchPlot, ModesWithoutFiguresHaveNoPoint) {
     BenchReport report;
     report.modes = {sample(Mode::Full, 0, 30.0, 0.0), sample(Mode::Walls, 10, 3.0, 0.02),
-                    sample(Mode::Walls, 20, std::numeric_limits<double>::quiet_NaN(), 0.05)};
+                    sample(Mode::Walls, 20, std::numeric_limits<double>::quiet_NaN(), 0.05),
+                    sample(Mode::Walls, 30, 4.0, 0.04)};
     report.modes[1].error.frames = 0;
     const Figure figure = tradeOffFigure(report);
-    ASSERT_EQ(figure.panels[1].series.size(), 1u);
-    EXPECT_EQ(figure.panels[1].series[0].name, "#1 full");
-    EXPECT_TRUE(figure.panels[0].series.empty());
+    for (const PlotPanel& panel : figure.panels) {
+        ASSERT_EQ(panel.series.size(), 4u);
+        EXPECT_TRUE(panel.series[1].points.empty());
+        EXPECT_TRUE(panel.series[2].points.empty());
+        ASSERT_EQ(panel.series[3].points.size(), 1u);
+        EXPECT_TRUE(panel.series[3].points[0].front);  // alone, so on the front
+    }
     EXPECT_NO_THROW(checkFigure(figure, "bench.png"));
 }
 

@@ -67,7 +67,7 @@ TEST(PlotScript, EverySeriesIsNamedInTheLegend) {
     const std::string script = gnuplotScript(sampleFigure(), "out.png");
     for (const char* name : {"walls a=10 blend", "cells", "full lod 1px"})
         EXPECT_EQ(count(script, std::string("title '") + name + "'"), 1u) << name;
-    // Markers only (size 1.4; the rings are 3.5): these series are not lines.
+    // Markers only (size 1.4; the rings are 3): these series are not lines.
     EXPECT_EQ(count(script, "with points pt"), 5u);
     EXPECT_EQ(count(script, "ps 1.4"), 3u);
     EXPECT_THAT(script, Not(HasSubstr("linespoints")));
@@ -85,7 +85,7 @@ TEST(PlotScript, ControlAndBestAlternativeAreRingedAndNamed) {
     const std::string script = gnuplotScript(sampleFigure(), "out.png");
     EXPECT_THAT(script, HasSubstr("$p0_control << EOD\n2 25\nEOD\n"));
     EXPECT_THAT(script, HasSubstr("$p0_alternative << EOD\n9 40\nEOD\n"));
-    EXPECT_THAT(script, HasSubstr("$p0_control using 1:2 with points pt 6 ps 3.5"));
+    EXPECT_THAT(script, HasSubstr("$p0_control using 1:2 with points pt 6 ps 3"));
     EXPECT_THAT(script, HasSubstr("title 'control: cells without textures'"));
     EXPECT_THAT(script, HasSubstr("title 'best alternative: full geometry with levels of detail'"));
 }
@@ -120,6 +120,36 @@ TEST(PlotScript, QuotesInNamesAreEscaped) {
     EXPECT_THAT(script, HasSubstr("title 'walls ''auto'''"));
     EXPECT_THAT(script, HasSubstr("set title 'it''s'"));
     EXPECT_THAT(script, HasSubstr("set output 'o''k.png'"));
+}
+
+TEST(PlotScript, LogarithmicAxesSpanTheirDataByAFactor) {
+    Figure figure = sampleFigure();
+    figure.panels[0].y.log = true;
+    const std::string script = gnuplotScript(figure, "out.png");
+    EXPECT_THAT(script, HasSubstr("set logscale y"));
+    EXPECT_THAT(script, HasSubstr("unset logscale x"));
+    EXPECT_THAT(script, HasSubstr("set yrange [20:50]"));  // 25 / 1.25 to 40 x 1.25
+    figure.panels[0].series[0].points[0].y = 0.0;
+    EXPECT_THAT([&] { checkFigure(figure, "f.png"); },
+                ::testing::ThrowsMessage<Error>(HasSubstr(
+                    "series 'walls a=10 blend': point 1: expected x and y > 0 on a logarithmic axis, got x=4 y=0")));
+}
+
+TEST(PlotScript, ASharedLegendSitsInAStripAtTheRight) {
+    Figure figure = sampleFigure();
+    figure.panels.push_back(figure.panels[0]);
+    figure.width = 1000;
+    figure.legendWidth = 300;
+    figure.note = "#1 is exact";
+    const std::string script = gnuplotScript(figure, "out.png");
+    // Panels end at 0.97 - 300 / 1000 of the width; the key starts at 1 - 0.3.
+    EXPECT_THAT(script, HasSubstr("set multiplot layout 1,2 margins 0.07, 0.67, 0.12, 0.92"));
+    EXPECT_EQ(count(script, "unset key"), 1u);  // the first panel
+    EXPECT_THAT(script, HasSubstr("set key at screen 0.7, 0.92"));
+    EXPECT_THAT(script, HasSubstr("set label 1 '#1 is exact' at screen 0.7, 0.04"));
+    figure.legendWidth = 600;
+    EXPECT_THAT([&] { checkFigure(figure, "f.png"); },
+                ::testing::ThrowsMessage<Error>(HasSubstr("expected a legend strip of 0 to half the plot's width")));
 }
 
 TEST(PlotScript, APanelWithoutPointsSaysSo) {
