@@ -25,10 +25,34 @@ std::string number(double v) {
 
 std::string pointText(const PlotPoint& p) { return "x=" + number(p.x) + " y=" + number(p.y); }
 
+bool drawsShapes(SeriesStyle style) {
+    return style == SeriesStyle::Paths || style == SeriesStyle::Outlines || style == SeriesStyle::Filled;
+}
+
+// Every point of a series, markers and shape vertices alike.
+std::vector<PlotPoint> allPoints(const PlotSeries& s) {
+    std::vector<PlotPoint> out = s.points;
+    for (const auto& shape : s.shapes) out.insert(out.end(), shape.begin(), shape.end());
+    return out;
+}
+
 // One inline data block, "$name << EOD", x y per line, "EOD".
 std::string dataBlock(const std::string& name, const std::vector<PlotPoint>& points) {
     std::string out = name + " << EOD\n";
     for (const PlotPoint& p : points) out += number(p.x) + " " + number(p.y) + "\n";
+    return out + "EOD\n";
+}
+
+// Shapes as one data block, a blank line between shapes (gnuplot draws each on its own);
+// closed shapes repeat their first vertex.
+std::string shapesBlock(const std::string& name, const PlotSeries& s) {
+    std::string out = name + " << EOD\n";
+    for (const auto& shape : s.shapes) {
+        if (shape.empty()) continue;
+        for (const PlotPoint& p : shape) out += number(p.x) + " " + number(p.y) + "\n";
+        if (s.style != SeriesStyle::Paths) out += number(shape[0].x) + " " + number(shape[0].y) + "\n";
+        out += "\n";
+    }
     return out + "EOD\n";
 }
 
@@ -47,26 +71,29 @@ std::vector<PlotPoint> flagged(const PlotPanel& panel, bool PlotPoint::*member) 
     return sortedByX(out);
 }
 
+// The "with ..." part of series `index`'s plot item: style, marker, size and colour.
+std::string seriesStyle(const PlotSeries& s, std::size_t index) {
+    const std::string colour = " lc rgb '" + (s.colour.empty() ? std::string(kColours[index % 8]) : s.colour) + "'";
+    const auto size = [&](double fallback) { return number(s.size > 0.0 ? s.size : fallback); };
+    const std::string marker = " pt " + std::to_string(kMarkers[index % 6]);
+    switch (s.style) {
+        case SeriesStyle::Markers: return "points" + marker + " ps " + size(1.4) + colour;
+        case SeriesStyle::Line: return "linespoints lw " + size(2) + marker + " ps 1.4" + colour;
+        case SeriesStyle::Paths:
+        case SeriesStyle::Outlines: return "lines lw " + size(1.5) + colour;
+        case SeriesStyle::Filled: return "filledcurves closed fs transparent solid 0.45 noborder" + colour;
+    }
+    return "points" + colour;
+}
+
 // Everything one panel's plot command needs: its data blocks and the comma-separated plot items.
 struct PanelPlot {
     std::string blocks;
     std::vector<std::string> items;
 };
 
-PanelPlot panelPlot(const PlotPanel& panel, std::size_t index) {
-    PanelPlot out;
-    const std::string prefix = "$p" + std::to_string(index) + "_";
-    // Styles follow the series' index, so that panels listing the same series in the same order
-    // draw each one alike even where one panel has no point of it.
-    for (std::size_t i = 0; i < panel.series.size(); ++i) {
-        const PlotSeries& s = panel.series[i];
-        if (s.points.empty()) continue;
-        const std::string block = prefix + "s" + std::to_string(i);
-        out.blocks += dataBlock(block, s.line ? sortedByX(s.points) : s.points);
-        out.items.push_back(block + " using 1:2 with " + (s.line ? "linespoints lw 2" : "points") + " pt " +
-                            std::to_string(kMarkers[i % 6]) + " ps 1.4 lc rgb '" + kColours[i % 8] + "' title " +
-                            gnuplotQuoted(s.name));
-    }
+// The large markers over the flagged points, and the front's line, with their legend entries.
+void addOverlays(const PlotPanel& panel, const std::string& prefix, PanelPlot& out) {
     struct Overlay {
         bool PlotPoint::*flag;
         const char* block;
@@ -83,25 +110,51 @@ PanelPlot panelPlot(const PlotPanel& panel, std::size_t index) {
         out.blocks += dataBlock(prefix + o.block, points);
         out.items.push_back(prefix + o.block + " using 1:2 with " + o.style + " title " + gnuplotQuoted(*o.name));
     }
+}
+
+PanelPlot panelPlot(const PlotPanel& panel, std::size_t index) {
+    PanelPlot out;
+    const std::string prefix = "$p" + std::to_string(index) + "_";
+    // Styles follow the series' index, so that panels listing the same series in the same order
+    // draw each one alike even where one panel has no point of it.
+    for (std::size_t i = 0; i < panel.series.size(); ++i) {
+        const PlotSeries& s = panel.series[i];
+        if (allPoints(s).empty()) continue;
+        const std::string block = prefix + "s" + std::to_string(i);
+        out.blocks += drawsShapes(s.style)           ? shapesBlock(block, s)
+                      : s.style == SeriesStyle::Line ? dataBlock(block, sortedByX(s.points))
+                                                     : dataBlock(block, s.points);
+        out.items.push_back(block + " using 1:2 with " + seriesStyle(s, i) + " title " + gnuplotQuoted(s.name));
+    }
+    addOverlays(panel, prefix, out);
     return out;
 }
 
 // The axis range of every point's `coordinate` with 8 % of the span as a margin beyond the
-// extremes, so that no marker sits on the frame; from 0 when `axis.fromZero`.
+// extremes, so that no marker sits on the frame; from 0 when `axis.fromZero`; a factor of 1.25
+// beyond them on a logarithmic axis. Reversed axes list the ends the other way round.
 std::string axisRange(const PlotPanel& panel, const PlotAxis& axis, double PlotPoint::*coordinate) {
     double lo = INFINITY, hi = -INFINITY;
     for (const PlotSeries& s : panel.series)
-        for (const PlotPoint& p : s.points) {
+        for (const PlotPoint& p : allPoints(s)) {
             lo = std::min(lo, p.*coordinate);
             hi = std::max(hi, p.*coordinate);
         }
-    if (lo > hi) return axis.log ? "[0.1:1]" : "[0:1]";
-    if (axis.log) return "[" + number(lo / 1.25) + ":" + number(hi * 1.25) + "]";
-    if (axis.fromZero) lo = std::min(lo, 0.0);
-    double span = hi - lo;
-    if (span <= 0.0) span = hi != 0.0 ? std::abs(hi) * 0.2 : 1.0;
-    const double margin = 0.08 * span;
-    return "[" + number(axis.fromZero && lo >= 0.0 ? 0.0 : lo - margin) + ":" + number(hi + margin) + "]";
+    if (lo > hi) {
+        lo = axis.log ? 0.1 : 0.0;
+        hi = 1.0;
+    } else if (axis.log) {
+        lo /= 1.25;
+        hi *= 1.25;
+    } else {
+        if (axis.fromZero) lo = std::min(lo, 0.0);
+        double span = hi - lo;
+        if (span <= 0.0) span = hi != 0.0 ? std::abs(hi) * 0.2 : 1.0;
+        const double margin = 0.08 * span;
+        lo = axis.fromZero && lo >= 0.0 ? 0.0 : lo - margin;
+        hi += margin;
+    }
+    return axis.reversed ? "[" + number(hi) + ":" + number(lo) + "]" : "[" + number(lo) + ":" + number(hi) + "]";
 }
 
 // The legend of panel `index`: its own below it, or the figure's shared one (the last panel's,
@@ -129,12 +182,48 @@ std::string panelCommands(const Figure& figure, std::size_t index, const PanelPl
     const PlotPanel& panel = figure.panels[index];
     std::string out = "set title " + gnuplotQuoted(panel.title) + "\n";
     out += axisCommands(panel, panel.x, "x", &PlotPoint::x) + axisCommands(panel, panel.y, "y", &PlotPoint::y);
+    out += panel.equalScale ? "set size ratio -1\n" : "set size noratio\n";
     out += "set grid\n" + keyCommands(figure, index);
     if (plot.items.empty())
         return out + "set label 2 'no data' at graph 0.5, 0.5 center\nplot NaN notitle\nunset label 2\n";
     out += "plot ";
     for (std::size_t i = 0; i < plot.items.size(); ++i) out += (i ? ", \\\n     " : "") + plot.items[i];
     return out + "\n";
+}
+
+// The multiplot layout: rows and columns, and with a shared legend the panels' area left of its
+// strip (screen fractions).
+std::string layoutCommand(const Figure& figure) {
+    const std::size_t panels = figure.panels.size();
+    const std::size_t columns = figure.columns > 0 ? std::min<std::size_t>(figure.columns, panels) : panels;
+    const std::size_t rows = (panels + columns - 1) / columns;
+    std::string out = "set multiplot layout " + std::to_string(rows) + "," + std::to_string(columns);
+    if (figure.legendWidth > 0)
+        out += " margins 0.07, " + number(0.97 - static_cast<double>(figure.legendWidth) / figure.width) +
+               ", 0.12, 0.92 spacing 0.08";
+    return out + "\n";
+}
+
+bool isColour(const std::string& text) {
+    return text.size() == 7 && text[0] == '#' &&
+           text.find_first_not_of("0123456789abcdefABCDEF", 1) == std::string::npos;
+}
+
+// Throws for the first bad point or colour of series `s` in panel `p` (1-based in messages).
+void checkSeries(const PlotPanel& panel, std::size_t p, const PlotSeries& s, const std::string& where) {
+    const std::string at =
+        where + ": panel " + std::to_string(p + 1) + " '" + panel.title + "': series '" + s.name + "'";
+    if (!s.colour.empty() && !isColour(s.colour))
+        throw Error(at + ": expected a colour \"#rrggbb\", got '" + s.colour + "'");
+    const std::vector<PlotPoint> points = allPoints(s);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const PlotPoint& q = points[i];
+        if (!std::isfinite(q.x) || !std::isfinite(q.y))
+            throw Error(at + ": point " + std::to_string(i + 1) + ": expected finite x and y, got " + pointText(q));
+        if ((panel.x.log && q.x <= 0.0) || (panel.y.log && q.y <= 0.0))
+            throw Error(at + ": point " + std::to_string(i + 1) + ": expected x and y > 0 on a logarithmic axis, got " +
+                        pointText(q));
+    }
 }
 
 }  // namespace
@@ -161,25 +250,11 @@ void checkFigure(const Figure& figure, const std::string& where) {
     if (figure.width < 160 || figure.height < 120)
         throw Error(where + ": expected a plot of at least 160 x 120 pixels, got " + std::to_string(figure.width) +
                     " x " + std::to_string(figure.height));
-    for (std::size_t p = 0; p < figure.panels.size(); ++p)
-        for (const PlotSeries& s : figure.panels[p].series)
-            for (std::size_t i = 0; i < s.points.size(); ++i)
-                if (!std::isfinite(s.points[i].x) || !std::isfinite(s.points[i].y))
-                    throw Error(where + ": panel " + std::to_string(p + 1) + " '" + figure.panels[p].title +
-                                "': series '" + s.name + "': point " + std::to_string(i + 1) +
-                                ": expected finite x and y, got " + pointText(s.points[i]));
-    for (std::size_t p = 0; p < figure.panels.size(); ++p) {
-        const PlotPanel& panel = figure.panels[p];
-        for (const PlotSeries& s : panel.series)
-            for (std::size_t i = 0; i < s.points.size(); ++i)
-                if ((panel.x.log && s.points[i].x <= 0.0) || (panel.y.log && s.points[i].y <= 0.0))
-                    throw Error(where + ": panel " + std::to_string(p + 1) + " '" + panel.title + "': series '" +
-                                s.name + "': point " + std::to_string(i + 1) +
-                                ": expected x and y > 0 on a logarithmic axis, got " + pointText(s.points[i]));
-    }
     if (figure.legendWidth < 0 || figure.legendWidth > figure.width / 2)
         throw Error(where + ": expected a legend strip of 0 to half the plot's width (" +
                     std::to_string(figure.width / 2) + " pixels), got " + std::to_string(figure.legendWidth));
+    for (std::size_t p = 0; p < figure.panels.size(); ++p)
+        for (const PlotSeries& s : figure.panels[p].series) checkSeries(figure.panels[p], p, s, where);
 }
 
 std::string gnuplotScript(const Figure& figure, const std::filesystem::path& output) {
@@ -193,11 +268,7 @@ std::string gnuplotScript(const Figure& figure, const std::filesystem::path& out
         plots.push_back(panelPlot(figure.panels[i], i));
         script << plots.back().blocks;
     }
-    script << "set multiplot layout 1," << figure.panels.size();
-    if (figure.legendWidth > 0)  // panels left of the legend's strip, in screen fractions
-        script << " margins 0.07, " << number(0.97 - static_cast<double>(figure.legendWidth) / figure.width)
-               << ", 0.12, 0.92 spacing 0.08";
-    script << "\n";
+    script << layoutCommand(figure);
     for (std::size_t i = 0; i < figure.panels.size(); ++i) script << panelCommands(figure, i, plots[i]);
     script << "unset multiplot\nset output\n";
     return script.str();

@@ -1,10 +1,11 @@
 #pragma once
 // Plots as plain data, and the gnuplot script that draws them. A Figure is one PNG of one or
-// more panels side by side; a Panel has a title, two titled axes with units and named series,
-// each named in the legend. Points may be flagged as on the Pareto front (joined by one line in
-// x order across all series of the panel), as the control or as the best alternative (each
-// ringed by a large marker with its own legend entry). No GL, no files: gnuplotScript() returns
-// the text; app/bench/gnuplot.h runs it.
+// more panels in a grid; a Panel has a title, two titled axes with units and named series,
+// each named in the legend: markers, lines, or shapes (open paths, polygon outlines, filled
+// polygons; for top views in metres). Points may be flagged as on the Pareto front (joined by
+// one line in x order across all series of the panel), as the control or as the best
+// alternative (each ringed by a large marker with its own legend entry). No GL, no files:
+// gnuplotScript() returns the text; app/bench/gnuplot.h runs it.
 
 #include <filesystem>
 #include <string>
@@ -19,17 +20,30 @@ struct PlotPoint {
     bool bestAlternative = false;  // the alternative a user would pick (full geometry with LOD)
 };
 
+// How a series is drawn.
+enum class SeriesStyle {
+    Markers,   // `points`, one marker each
+    Line,      // `points` joined in x order, with markers (a series over a sweep)
+    Paths,     // `shapes`, each an open polyline (a wall: its two ends)
+    Outlines,  // `shapes`, each a closed polygon's outline
+    Filled,    // `shapes`, each a closed polygon, filled half-transparent
+};
+
 struct PlotSeries {
-    std::string name;  // its legend entry; any text (quotes are escaped, line breaks become spaces)
-    std::vector<PlotPoint> points;
-    bool line = false;  // points joined in x order (a series over a sweep); else markers only
+    std::string name;               // its legend entry; any text (quotes are escaped, line breaks become spaces)
+    std::vector<PlotPoint> points;  // Markers, Line
+    SeriesStyle style = SeriesStyle::Markers;
+    std::vector<std::vector<PlotPoint>> shapes;  // Paths, Outlines, Filled (flags unused)
+    std::string colour;                          // "#rrggbb"; empty: a colour (and marker) chosen by the series' index
+    double size = 0.0;                           // marker size or line width, gnuplot units; 0: the style's default
 };
 
 struct PlotAxis {
-    std::string title;     // "median frame time"
-    std::string unit;      // "ms"; shown as "median frame time (ms)"; empty: no unit (a ratio)
-    bool fromZero = true;  // the range starts at 0; else it spans the data (8 % margins)
-    bool log = false;      // logarithmic (every coordinate > 0; fromZero ignored)
+    std::string title;      // "median frame time"
+    std::string unit;       // "ms"; shown as "median frame time (ms)"; empty: no unit (a ratio)
+    bool fromZero = true;   // the range starts at 0; else it spans the data (8 % margins)
+    bool log = false;       // logarithmic (every coordinate > 0; fromZero ignored)
+    bool reversed = false;  // values grow leftwards or downwards (a top view's +z is down)
 };
 
 struct PlotPanel {
@@ -39,10 +53,12 @@ struct PlotPanel {
     std::string frontName = "Pareto front";  // legend entries of the flagged points' markers
     std::string controlName = "control";
     std::string alternativeName = "best alternative";
+    bool equalScale = false;  // one unit as long on both axes (a floor plan in metres)
 };
 
 struct Figure {
-    std::vector<PlotPanel> panels;   // at least one; side by side, left to right
+    std::vector<PlotPanel> panels;   // at least one; left to right, then top to bottom
+    int columns = 0;                 // panels per row; 0: all in one row
     int width = 1280, height = 560;  // PNG pixels, at least 160 x 120
     // > 0: one legend for all panels, the last panel's, in a strip this many pixels wide at the
     // right (panels listing the same series in the same order draw them alike); 0: a legend
@@ -57,7 +73,8 @@ std::string axisLabel(const PlotAxis& axis);
 // Throws cavewall::Error naming `where` (the PNG), the panel, the series and the point when
 // `figure` has no panel, a size under 160 x 120, a legend strip over half the width, a
 // non-finite coordinate ("bench.png: panel 1 'error': series 'walls a=10': point 2: expected
-// finite x and y, got x=3 y=nan") or one <= 0 on a logarithmic axis.
+// finite x and y, got x=3 y=nan"), one <= 0 on a logarithmic axis, or a colour that is not
+// "#rrggbb".
 void checkFigure(const Figure& figure, const std::string& where);
 
 // The gnuplot script that draws `figure` (checked first) with the pngcairo terminal into

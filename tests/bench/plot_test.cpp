@@ -101,7 +101,7 @@ TEST(PlotScript, WithoutFlagsThereIsNoFrontControlOrAlternative) {
 
 TEST(PlotScript, LineSeriesAreJoinedInXOrder) {
     Figure figure = sampleFigure();
-    figure.panels[0].series = {{"walls", {{8.0, 3.0}, {2.0, 1.0}}, true}};
+    figure.panels[0].series = {{"walls", {{8.0, 3.0}, {2.0, 1.0}}, SeriesStyle::Line}};
     const std::string script = gnuplotScript(figure, "out.png");
     EXPECT_THAT(script, HasSubstr("$p0_s0 << EOD\n2 1\n8 3\nEOD\n"));
     EXPECT_THAT(script, HasSubstr("with linespoints"));
@@ -150,6 +150,48 @@ TEST(PlotScript, ASharedLegendSitsInAStripAtTheRight) {
     figure.legendWidth = 600;
     EXPECT_THAT([&] { checkFigure(figure, "f.png"); },
                 ::testing::ThrowsMessage<Error>(HasSubstr("expected a legend strip of 0 to half the plot's width")));
+}
+
+// A top view: two cells as filled polygons, a wall as an open path; metres equal on both axes
+// and +z (y here) growing downwards.
+TEST(PlotScript, ShapesAreDrawnOneByOneAndPolygonsClosed) {
+    PlotPanel panel;
+    panel.title = "plan";
+    panel.x = {"x", "m", false};
+    panel.y = {"z", "m", false, false, true};
+    panel.equalScale = true;
+    panel.series = {{"cells", {}, SeriesStyle::Filled, {{{0, 0}, {2, 0}, {2, 2}}, {{3, 3}, {5, 3}, {5, 5}}}, "#00a000"},
+                    {"walls", {}, SeriesStyle::Paths, {{{0, 0}, {0, 5}}}}};
+    Figure figure;
+    figure.panels = {panel};
+    const std::string script = gnuplotScript(figure, "plan.png");
+    // Each polygon repeats its first vertex and ends with a blank line; the path does not close.
+    EXPECT_THAT(script, HasSubstr("$p0_s0 << EOD\n0 0\n2 0\n2 2\n0 0\n\n3 3\n5 3\n5 5\n3 3\n\nEOD\n"));
+    EXPECT_THAT(script, HasSubstr("$p0_s1 << EOD\n0 0\n0 5\n\nEOD\n"));
+    EXPECT_THAT(script, HasSubstr("with filledcurves closed fs transparent solid 0.45 noborder lc rgb '#00a000'"));
+    EXPECT_THAT(script, HasSubstr("$p0_s1 using 1:2 with lines"));
+    EXPECT_THAT(script, HasSubstr("set size ratio -1"));
+    // z from 0 to 5 with 0.4 m margins, listed from the larger end: +z grows downwards.
+    EXPECT_THAT(script, HasSubstr("set yrange [5.4:-0.4]"));
+    EXPECT_THAT(script, HasSubstr("set xlabel 'x (m)'"));
+}
+
+TEST(PlotScript, PanelsFillAGridRowByRow) {
+    Figure figure = sampleFigure();
+    figure.panels = {figure.panels[0], figure.panels[0], figure.panels[0]};
+    figure.columns = 2;
+    EXPECT_THAT(gnuplotScript(figure, "out.png"), HasSubstr("set multiplot layout 2,2\n"));
+}
+
+TEST(PlotScript, ColoursMustBeHexTriples) {
+    Figure figure = sampleFigure();
+    figure.panels[0].series[0].colour = "red' lw 9";  // would break out of the quotes
+    EXPECT_THAT([&] { checkFigure(figure, "f.png"); },
+                ::testing::ThrowsMessage<Error>(HasSubstr(
+                    "f.png: panel 1 'Pooled PSNR against frame time': series 'walls a=10 blend': expected a colour "
+                    "\"#rrggbb\", got 'red' lw 9'")));
+    figure.panels[0].series[0].colour = "#A0b0C0";
+    EXPECT_NO_THROW(checkFigure(figure, "f.png"));
 }
 
 TEST(PlotScript, APanelWithoutPointsSaysSo) {
