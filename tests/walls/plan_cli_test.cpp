@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <fstream>
@@ -118,6 +119,26 @@ TEST(PlanCli, DepthWallsJsonKeepsTheirOwnBound) {
         }
     }
     EXPECT_GT(checked, 100);
+}
+
+// Without gnuplot on PATH, --png stops before planning with what to install and where it
+// looked, and writes nothing.
+TEST(PlanCli, PngWithoutGnuplotSaysWhatToInstall) {
+    const auto dir = outputDir() / "no-gnuplot";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir / "empty-bin");
+    const CliResult gen = runCavewall({"generate", "house", "--out", (dir / "house").string(), "--triangles", "2000"});
+    ASSERT_EQ(gen.exitCode, 0) << gen.err;
+    const char* oldPath = std::getenv("PATH");
+    const std::string saved = oldPath ? oldPath : "";
+    ::setenv("PATH", (dir / "empty-bin").c_str(), 1);  // the child inherits it
+    const CliResult r = runCavewall({"plan", (dir / "house").string(), "--png", (dir / "plan.png").string()});
+    ::setenv("PATH", saved.c_str(), 1);
+    EXPECT_EQ(r.exitCode, 1) << r.out;
+    EXPECT_THAT(
+        r.err,
+        HasSubstr("gnuplot not found: install gnuplot-nox (searched PATH: " + (dir / "empty-bin").string() + ")"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "plan.png"));
 }
 
 TEST(PlanCli, BadArgumentsFailClearly) {
