@@ -98,7 +98,6 @@ void writePlot(const std::filesystem::path& png, const Figure& figure, const Gnu
     const std::string where = png.string();
     checkFigure(figure, where);
     const std::filesystem::path gnuplot = requireGnuplot(options);
-    scenes::checkWriteTarget(png);
     scenes::writeAtomically(png, [&](const std::filesystem::path& temporary) {
         std::filesystem::path script = temporary, log = temporary;
         script.replace_extension(".gp");

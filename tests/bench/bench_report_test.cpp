@@ -388,10 +388,9 @@ TEST(BenchReport, EveryModeIsComparedWithTheCellsControl) {
     EXPECT_TRUE(std::isnan(parseCsv(csvHeader() + "\n" + csvRow(none.modes[1]) + "\n")[0].number("flip_ratio")));
 }
 
-TEST(BenchReport, WritesFilesAndMarksTheFrontInThePlot) {
+TEST(BenchReport, WritesFilesAndThePlot) {
     const test::TempFolder folder("bench_report");
     BenchReport report;
-    // full and the fast walls mode form the front; the slow, worse one is dominated.
     report.modes = {sample(Mode::Full, 0, 30.0, 0.0), sample(Mode::Walls, 10, 3.0, 0.02),
                     sample(Mode::Walls, 20, 5.0, 0.05)};
     report.modes[2].flipWorst.image = scenes::Image{"flip", 3, 2, std::vector<std::uint8_t>(3 * 2 * 4, 200)};
