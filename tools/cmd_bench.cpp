@@ -5,6 +5,7 @@
 #include "tools/args.h"
 #include "tools/commands.h"
 #ifdef CAVEWALL_HAVE_GL
+#include "app/bench/gnuplot.h"
 #include "app/bench/gl/driver.h"
 #include "app/bench/gl/scale_bench.h"
 #endif
@@ -274,6 +275,7 @@ int runSceneBench(const Args& args) {
     if (auto list = args.get("compare-scene"))
         for (const std::string& scene : sceneList(*list)) o.compareScenes.push_back({scene, compareTag(scene)});
     if (args.has("on-demand")) o.onDemandCache = out / "on-demand-cache";
+    bench::requireGnuplot();  // bench.png needs it: say so before the run, not after it
     const bench::BenchReport report = gl::runBenchmark(o);
     bench::writeReport(out, report);
     std::cout << "\n"
@@ -313,6 +315,7 @@ int runScaleBench(const Args& args) {
     }
     const std::filesystem::path out = args.path("out").value_or("bench-scale-out");
     o.afterSize = [&](const bench::ScaleReport& soFar) { bench::writeScaleReport(out, soFar); };
+    bench::requireGnuplot();  // the plots need it: say so before the run, not after it
     const bench::ScaleReport report = gl::runScaleBench(o);
     bench::writeScaleReport(out, report);
     std::cout << "\n"

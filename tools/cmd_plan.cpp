@@ -1,3 +1,5 @@
+#include "app/bench/gnuplot.h"
+#include "app/bench/plan_figure.h"
 #include "scenes/file_write.h"
 #include "scenes/image_io.h"
 #include "scenes/loader.h"
@@ -19,8 +21,8 @@
 namespace cavewall::tools {
 
 const char* const kPlanUsage =
-    "usage: cavewall plan SCENE [--alpha DEG] [--json FILE] [--png FILE] [--min-zone M] [--blend M]\n"
-    "                           [--ppd N] [--walls flat|depth]\n"
+    "usage: cavewall plan SCENE [--alpha DEG] [--json FILE] [--png FILE] [--png-walls FILE]\n"
+    "                           [--min-zone M] [--blend M] [--ppd N] [--walls flat|depth]\n"
     "\n"
     "Plans the zones of every virtual wall and portal of SCENE (a scene.json or a folder holding\n"
     "one): geometry, texture and blend zones per cell and wall, with the angular error of every\n"
@@ -29,7 +31,9 @@ const char* const kPlanUsage =
     "geometry zone and its blend strip) get zones of their own over those eyes, with the same\n"
     "bound, or are drawn as geometry there. Prints a summary table (zones by kind, textures,\n"
     "texels, memory estimates), writes the plan as JSON (--json, \"beyondZones\" for those far\n"
-    "walls) and a top-view diagram (--png).\n"
+    "walls) and a top-view diagram (--png: one panel per storey with cells, real and virtual\n"
+    "walls and zones by kind, axes in metres and a legend, drawn by gnuplot; --png-walls: one small\n"
+    "panel per wall with its zones, sampling points and object footprints).\n"
     "--min-zone: smallest zone width and depth in metres (default 1; nearer the wall than such a\n"
     "zone can be proven is geometry). --blend: blend strip width in metres (default 0.2).\n"
     "--ppd: texel density target in pixels per degree at each texture's nearest eye (default 10,\n"
@@ -46,11 +50,18 @@ namespace {
 
 void writeText(const std::filesystem::path& file, const std::string& text) { scenes::writeBytesAtomically(file, text); }
 
+// The scene's name, else the file's (a folder's own name for "DIR/scene.json").
+std::string sceneTitle(const std::filesystem::path& path, const scenes::SceneDescription& description) {
+    if (!description.name.empty()) return description.name;
+    const std::filesystem::path p = path.filename() == "scene.json" ? path.parent_path() : path;
+    return p.filename().empty() ? p.string() : p.filename().string();
+}
+
 }  // namespace
 
 int runPlan(const std::vector<std::string>& words) {
     const Args args(words, {});
-    args.expectFlags({"alpha", "json", "png", "min-zone", "blend", "ppd", "walls"});
+    args.expectFlags({"alpha", "json", "png", "png-walls", "min-zone", "blend", "ppd", "walls"});
     walls::PlanOptions options;
     options.alphaDeg = args.number("alpha", options.alphaDeg, 1e-6, 90.0);
     options.minZoneSize = args.number("min-zone", options.minZoneSize, 0.01, 1000.0);
@@ -61,13 +72,16 @@ int runPlan(const std::vector<std::string>& words) {
     const std::string& path = args.positional(0, "SCENE");
     if (args.positional().size() > 1)
         throw Error("plan: expected one SCENE, got " + std::to_string(args.positional().size()) + " words");
-    const std::optional<std::filesystem::path> json = args.path("json"), png = args.path("png");
-    for (const auto& [file, flag] : {std::pair{json, "--json"}, std::pair{png, "--png"}})
+    const std::optional<std::filesystem::path> json = args.path("json"), png = args.path("png"),
+                                               pngWalls = args.path("png-walls");
+    const auto outputs = {std::pair{json, "--json"}, std::pair{png, "--png"}, std::pair{pngWalls, "--png-walls"}};
+    for (const auto& [file, flag] : outputs)
         if (file) scenes::checkWriteTarget(*file, flag);  // before the work, not after it
+    if (png) bench::requireGnuplot();
     scenes::SceneDescription description;
     const scenes::Scene scene = scenes::loadSceneFile(path, &description);
     const std::vector<std::filesystem::path> inputs = scenes::sceneInputFiles(path, description);
-    for (const auto& [file, flag] : {std::pair{json, "--json"}, std::pair{png, "--png"}})
+    for (const auto& [file, flag] : outputs)
         if (file) scenes::checkNotAnInput(*file, flag, inputs);
     const walls::VisibilityTable table = walls::computeVisibility(description);
     const walls::Plan plan = walls::planZones(description, options, walls::wallDepthSpans(scene, description, table));
@@ -80,8 +94,12 @@ int runPlan(const std::vector<std::string>& words) {
         std::cout << "wrote " << json->string() << "\n";
     }
     if (png) {
-        scenes::writeImage(*png, walls::planDiagram(plan, description, &scene));
+        bench::writePlot(*png, bench::planFigure(plan, description, sceneTitle(path, description)));
         std::cout << "wrote " << png->string() << "\n";
+    }
+    if (pngWalls) {
+        scenes::writeImage(*pngWalls, walls::planDiagram(plan, description, &scene));
+        std::cout << "wrote " << pngWalls->string() << "\n";
     }
     return 0;
 }

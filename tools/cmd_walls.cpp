@@ -1,3 +1,5 @@
+#include "app/bench/gnuplot.h"
+#include "app/bench/plan_figure.h"
 #include "config/json_reader.h"
 #include "scenes/file_write.h"
 #include "scenes/image_io.h"
@@ -24,7 +26,7 @@ const char* const kWallsUsage =
     "usage: cavewall walls MODEL --out SCENE_JSON [--texture-budget MB] [--alpha DEG] [--max-res N]\n"
     "                      [--ppd N] [--min-cell M] [--max-cells N] [--ms-per-mtri MS]\n"
     "                      [--ms-per-wall MS] [--split M] [--rooms] [--keep-paths] [--walk-cost]\n"
-    "                      [--png FILE]\n"
+    "                      [--png FILE] [--png-walls FILE]\n"
     "\n"
     "Proposes cells and virtual walls for MODEL (a glTF/GLB nobody prepared, or a scene.json or\n"
     "its folder, whose cells and walls are replaced): finds structure (large planes, or the\n"
@@ -38,7 +40,8 @@ const char* const kWallsUsage =
     "--ms-per-wall per wall side the cell shows (default 5), among those whose textures fit\n"
     "--texture-budget MiB (default 4096; RGBA8 + MIP chain). Writes a valid scene.json (--out;\n"
     "model paths relative to its folder) and a top-view diagram of the proposal's zones\n"
-    "(--png). Prints every candidate. See walls/auto_walls.h for the rules.\n"
+    "(--png: one panel per storey, drawn by gnuplot; --png-walls: one small panel per wall).\n"
+    "Prints every candidate. See walls/auto_walls.h for the rules.\n"
     "A model exported as a few huge meshes (a game level, a merged CAD export) has nothing a\n"
     "cell could leave out: when content objects wider than twice --min-cell (with at least 1024\n"
     "triangles each) hold a quarter of the content triangles or more, content objects are first\n"
@@ -89,7 +92,7 @@ void printStoreys(const walls::AutoWallsResult& result) {
 int runWalls(const std::vector<std::string>& words) {
     const Args args(words, {"rooms", "keep-paths", "walk-cost"});
     args.expectFlags({"out", "texture-budget", "alpha", "max-res", "ppd", "min-cell", "max-cells", "ms-per-mtri",
-                      "ms-per-wall", "split", "rooms", "keep-paths", "walk-cost", "png"});
+                      "ms-per-wall", "split", "rooms", "keep-paths", "walk-cost", "png", "png-walls"});
     walls::AutoWallsOptions options;
     options.plan.alphaDeg = args.number("alpha", options.plan.alphaDeg, 1e-6, 90.0);
     options.plan.pixelsPerDegree = args.number("ppd", options.plan.pixelsPerDegree, 0.01, 1000.0);
@@ -106,9 +109,11 @@ int runWalls(const std::vector<std::string>& words) {
     if (args.positional().size() > 1)
         throw Error("walls: expected one MODEL, got " + std::to_string(args.positional().size()) + " words");
     const std::filesystem::path out = args.require("out");
-    const std::optional<std::filesystem::path> png = args.path("png");
+    const std::optional<std::filesystem::path> png = args.path("png"), pngWalls = args.path("png-walls");
     scenes::checkWriteTarget(out, "--out");  // before the work, not after it
     if (png) scenes::checkWriteTarget(*png, "--png");
+    if (pngWalls) scenes::checkWriteTarget(*pngWalls, "--png-walls");
+    if (png) bench::requireGnuplot();
 
     // The default, half of --min-cell, is held to the smallest chunk (a --min-cell of 0.1 m
     // cuts into 0.1 m chunks): only a --split the user gives can be refused for its size.
@@ -121,6 +126,7 @@ int runWalls(const std::vector<std::string>& words) {
     const std::vector<std::filesystem::path> inputs = scenes::sceneInputFiles(path, base);
     scenes::checkNotAnInput(out, "--out", inputs);
     if (png) scenes::checkNotAnInput(*png, "--png", inputs);
+    if (pngWalls) scenes::checkNotAnInput(*pngWalls, "--png-walls", inputs);
     if (split > 0.0) {
         // When content objects wider than two cells hold a quarter of the content triangles or
         // more, cells cannot leave much out: the models get cut and the scene is loaded again.
@@ -200,10 +206,17 @@ int runWalls(const std::vector<std::string>& words) {
     for (const scenes::VirtualWall& w : result.description.walls) portals += w.kind == scenes::WallKind::Portal;
     std::cout << "wrote " << out.string() << " (" << result.description.cells.size() << " cells, "
               << result.description.walls.size() - portals << " virtual walls, " << portals << " portals)\n";
-    if (png) {
+    if (png || pngWalls) {
         const walls::Plan plan = walls::planZones(result.description, options.plan);
-        scenes::writeImage(*png, walls::planDiagram(plan, result.description, &scene, 200));
-        std::cout << "wrote " << png->string() << "\n";
+        if (png) {
+            bench::writePlot(*png, bench::planFigure(plan, result.description,
+                                                     std::filesystem::path(path).stem().string() + ", proposed"));
+            std::cout << "wrote " << png->string() << "\n";
+        }
+        if (pngWalls) {
+            scenes::writeImage(*pngWalls, walls::planDiagram(plan, result.description, &scene, 200));
+            std::cout << "wrote " << pngWalls->string() << "\n";
+        }
     }
     return 0;
 }

@@ -4,6 +4,8 @@
 // panel's wall in dark blue), the zones of both sides of the panel's wall filled by kind
 // (texture: greens, one shade per texture; blend: yellow; geometry: red), sampling points
 // (black dots) and object footprints (grey outlines). Top view: +x to the right, +z downwards.
+// The per-wall detail of `plan --png-walls` and `walls --png-walls`; the overview of `--png`,
+// one panel per storey with axes and a legend, is app/bench/plan_figure.h.
 
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"

@@ -1,177 +1,277 @@
 #include "app/bench/plot.h"
 
+#include "config/error.h"
+
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 namespace cavewall::bench {
 
 namespace {
 
-// 3x5 glyphs, one row per 3 bits (bit 2 = left column), top row first.
-const unsigned char* glyph(char c) {
-    static const unsigned char kDigits[10][5] = {{7, 5, 5, 5, 7}, {2, 6, 2, 2, 7}, {7, 1, 7, 4, 7}, {7, 1, 7, 1, 7},
-                                                 {5, 5, 7, 1, 1}, {7, 4, 7, 1, 7}, {7, 4, 7, 5, 7}, {7, 1, 1, 1, 1},
-                                                 {7, 5, 7, 5, 7}, {7, 5, 7, 1, 7}};
-    static const unsigned char kDot[5] = {0, 0, 0, 0, 2}, kMinus[5] = {0, 0, 7, 0, 0}, kE[5] = {7, 4, 7, 4, 7},
-                               kPlus[5] = {0, 2, 7, 2, 0};
-    if (c >= '0' && c <= '9') return kDigits[c - '0'];
-    if (c == '.') return kDot;
-    if (c == '-') return kMinus;
-    if (c == 'e') return kE;
-    if (c == '+') return kPlus;
-    return nullptr;
-}
+// Eight colours that stay apart in print and for common colour blindness (Okabe & Ito 2008),
+// crossed with six filled marker shapes: 24 series before a pair repeats.
+constexpr const char* kColours[] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7",
+                                    "#e69f00", "#56b4e9", "#000000", "#999933"};
+constexpr int kMarkers[] = {7, 5, 9, 11, 13, 15};  // gnuplot: filled circle, square, triangles, diamond, pentagon
 
-void setPixel(scenes::Image& image, int x, int y, const unsigned char rgb[3]) {
-    if (x < 0 || y < 0 || x >= image.width || y >= image.height) return;
-    std::uint8_t* p = &image.rgba[(static_cast<std::size_t>(y) * image.width + x) * 4];
-    p[0] = rgb[0];
-    p[1] = rgb[1];
-    p[2] = rgb[2];
-    p[3] = 255;
-}
-
-void fillRect(scenes::Image& image, int x0, int y0, int w, int h, const unsigned char rgb[3]) {
-    for (int y = y0; y < y0 + h; ++y)
-        for (int x = x0; x < x0 + w; ++x) setPixel(image, x, y, rgb);
-}
-
-void drawLine(scenes::Image& image, int x0, int y0, int x1, int y1, const unsigned char rgb[3]) {
-    const int steps = std::max(std::abs(x1 - x0), std::abs(y1 - y0));
-    for (int i = 0; i <= steps; ++i) {
-        const double t = steps ? static_cast<double>(i) / steps : 0.0;
-        setPixel(image, static_cast<int>(std::lround(x0 + t * (x1 - x0))),
-                 static_cast<int>(std::lround(y0 + t * (y1 - y0))), rgb);
-    }
-}
-
-// A "nice" axis end: the smallest 1, 1.5, 2, 2.5, 3, 4, 5, 6 or 8 x 10^k at or above `value`
-// (> 0), so that five ticks have short labels and the points fill most of the axis.
-double niceCeil(double value) {
-    if (!(value > 0.0) || !std::isfinite(value)) return 1.0;
-    const double p = std::pow(10.0, std::floor(std::log10(value)));
-    for (double m : {1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0})
-        if (m * p >= value * (1 - 1e-12)) return m * p;
-    return 10.0 * p;
-}
-
-std::string tickText(double v) {
-    char buffer[32];
-    // Up to six digits in full ("2400", not "2.4e+03", which overflows the left margin).
-    std::snprintf(buffer, sizeof buffer, v >= 1000.0 && v < 1e6 ? "%.0f" : "%.3g", v);
+std::string number(double v) {
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "%.10g", v);
     return buffer;
 }
 
-}  // namespace
+std::string pointText(const PlotPoint& p) { return "x=" + number(p.x) + " y=" + number(p.y); }
 
-void drawText(scenes::Image& image, int x, int y, const std::string& text, int scale, const unsigned char rgb[3]) {
-    for (char c : text) {
-        if (const unsigned char* g = glyph(c))
-            for (int row = 0; row < 5; ++row)
-                for (int col = 0; col < 3; ++col)
-                    if (g[row] & (4 >> col)) fillRect(image, x + col * scale, y + row * scale, scale, scale, rgb);
-        x += 4 * scale;
-    }
+bool drawsShapes(SeriesStyle style) {
+    return style == SeriesStyle::Paths || style == SeriesStyle::Outlines || style == SeriesStyle::Filled;
 }
 
-namespace {
+// Every point of a series, markers and shape vertices alike.
+std::vector<PlotPoint> allPoints(const PlotSeries& s) {
+    std::vector<PlotPoint> out = s.points;
+    for (const auto& shape : s.shapes) out.insert(out.end(), shape.begin(), shape.end());
+    return out;
+}
 
-// The plot area [left, right] x [top, bottom] in pixels for data in [0, maxX] x [0, maxY]: grid
-// lines and tick labels at fifths, and the two axes.
-struct Axes {
-    int left, right, top, bottom;
-    double maxX, maxY;
-    int px(double x) const { return left + static_cast<int>(std::lround(x / maxX * (right - left))); }
-    int py(double y) const { return bottom - static_cast<int>(std::lround(y / maxY * (bottom - top))); }
+// One inline data block, "$name << EOD", x y per line, "EOD".
+std::string dataBlock(const std::string& name, const std::vector<PlotPoint>& points) {
+    std::string out = name + " << EOD\n";
+    for (const PlotPoint& p : points) out += number(p.x) + " " + number(p.y) + "\n";
+    return out + "EOD\n";
+}
+
+// Shapes as one data block, a blank line between shapes (gnuplot draws each on its own);
+// closed shapes repeat their first vertex.
+std::string shapesBlock(const std::string& name, const PlotSeries& s) {
+    std::string out = name + " << EOD\n";
+    for (const auto& shape : s.shapes) {
+        if (shape.empty()) continue;
+        for (const PlotPoint& p : shape) out += number(p.x) + " " + number(p.y) + "\n";
+        if (s.style != SeriesStyle::Paths) out += number(shape[0].x) + " " + number(shape[0].y) + "\n";
+        out += "\n";
+    }
+    return out + "EOD\n";
+}
+
+std::vector<PlotPoint> sortedByX(std::vector<PlotPoint> points) {
+    std::sort(points.begin(), points.end(),
+              [](const PlotPoint& a, const PlotPoint& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    return points;
+}
+
+// The panel's points whose flag `member` is set, from every series, in x order.
+std::vector<PlotPoint> flagged(const PlotPanel& panel, bool PlotPoint::*member) {
+    std::vector<PlotPoint> out;
+    for (const PlotSeries& s : panel.series)
+        for (const PlotPoint& p : s.points)
+            if (p.*member) out.push_back(p);
+    return sortedByX(out);
+}
+
+// The "with ..." part of series `index`'s plot item: style, marker, size and colour.
+std::string seriesStyle(const PlotSeries& s, std::size_t index) {
+    const std::string colour = " lc rgb '" + (s.colour.empty() ? std::string(kColours[index % 8]) : s.colour) + "'";
+    const auto size = [&](double fallback) { return number(s.size > 0.0 ? s.size : fallback); };
+    const std::string marker = " pt " + std::to_string(kMarkers[index % 6]);
+    switch (s.style) {
+        case SeriesStyle::Markers: return "points" + marker + " ps " + size(1.4) + colour;
+        case SeriesStyle::Line: return "linespoints lw " + size(2) + marker + " ps 1.4" + colour;
+        case SeriesStyle::Paths:
+        case SeriesStyle::Outlines: return "lines lw " + size(1.5) + colour;
+        case SeriesStyle::Filled: return "filledcurves closed fs transparent solid 0.45 noborder" + colour;
+    }
+    return "points" + colour;
+}
+
+// Everything one panel's plot command needs: its data blocks and the comma-separated plot items.
+struct PanelPlot {
+    std::string blocks;
+    std::vector<std::string> items;
 };
 
-Axes drawAxes(scenes::Image& image, int left, int right, int top, int bottom, double maxX, double maxY) {
-    static const unsigned char kAxis[3] = {40, 40, 40}, kGrid[3] = {225, 225, 225};
-    const Axes a{left, right, top, bottom, maxX, maxY};
-    constexpr int kTicks = 5;
-    for (int i = 0; i <= kTicks; ++i) {
-        const double fx = maxX * i / kTicks, fy = maxY * i / kTicks;
-        drawLine(image, a.px(fx), top, a.px(fx), bottom, kGrid);
-        drawLine(image, left, a.py(fy), right, a.py(fy), kGrid);
-        const std::string tx = tickText(fx), ty = tickText(fy);
-        drawText(image, a.px(fx) - static_cast<int>(tx.size()) * 4, bottom + 8, tx, 2, kAxis);
-        drawText(image, left - 6 - static_cast<int>(ty.size()) * 8, a.py(fy) - 5, ty, 2, kAxis);
+// The large markers over the flagged points, and the front's line, with their legend entries.
+void addOverlays(const PlotPanel& panel, const std::string& prefix, PanelPlot& out) {
+    struct Overlay {
+        bool PlotPoint::*flag;
+        const char* block;
+        const char* style;
+        const std::string* name;
+    };
+    const Overlay overlays[] = {
+        {&PlotPoint::front, "front", "lines dt 2 lw 2 lc rgb '#404040'", &panel.frontName},
+        {&PlotPoint::control, "control", "points pt 6 ps 3 lw 2 lc rgb '#000000'", &panel.controlName},
+        {&PlotPoint::bestAlternative, "alternative", "points pt 4 ps 3 lw 2 lc rgb '#000000'", &panel.alternativeName}};
+    for (const Overlay& o : overlays) {
+        const std::vector<PlotPoint> points = flagged(panel, o.flag);
+        if (points.empty()) continue;
+        out.blocks += dataBlock(prefix + o.block, points);
+        out.items.push_back(prefix + o.block + " using 1:2 with " + o.style + " title " + gnuplotQuoted(*o.name));
     }
-    drawLine(image, left, bottom, right, bottom, kAxis);
-    drawLine(image, left, top, left, bottom, kAxis);
-    return a;
+}
+
+PanelPlot panelPlot(const PlotPanel& panel, std::size_t index) {
+    PanelPlot out;
+    const std::string prefix = "$p" + std::to_string(index) + "_";
+    // Styles follow the series' index, so that panels listing the same series in the same order
+    // draw each one alike even where one panel has no point of it.
+    for (std::size_t i = 0; i < panel.series.size(); ++i) {
+        const PlotSeries& s = panel.series[i];
+        if (allPoints(s).empty()) continue;
+        const std::string block = prefix + "s" + std::to_string(i);
+        out.blocks += drawsShapes(s.style)           ? shapesBlock(block, s)
+                      : s.style == SeriesStyle::Line ? dataBlock(block, sortedByX(s.points))
+                                                     : dataBlock(block, s.points);
+        out.items.push_back(block + " using 1:2 with " + seriesStyle(s, i) + " title " + gnuplotQuoted(s.name));
+    }
+    addOverlays(panel, prefix, out);
+    return out;
+}
+
+// The axis range of every point's `coordinate` with 8 % of the span as a margin beyond the
+// extremes, so that no marker sits on the frame; from 0 when `axis.fromZero`; a factor of 1.25
+// beyond them on a logarithmic axis. Reversed axes list the ends the other way round.
+std::string axisRange(const PlotPanel& panel, const PlotAxis& axis, double PlotPoint::*coordinate) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const PlotSeries& s : panel.series)
+        for (const PlotPoint& p : allPoints(s)) {
+            lo = std::min(lo, p.*coordinate);
+            hi = std::max(hi, p.*coordinate);
+        }
+    if (lo > hi) {
+        lo = axis.log ? 0.1 : 0.0;
+        hi = 1.0;
+    } else if (axis.log) {
+        lo /= 1.25;
+        hi *= 1.25;
+    } else {
+        if (axis.fromZero) lo = std::min(lo, 0.0);
+        double span = hi - lo;
+        if (span <= 0.0) span = hi != 0.0 ? std::abs(hi) * 0.2 : 1.0;
+        const double margin = 0.08 * span;
+        lo = axis.fromZero && lo >= 0.0 ? 0.0 : lo - margin;
+        hi += margin;
+    }
+    return axis.reversed ? "[" + number(hi) + ":" + number(lo) + "]" : "[" + number(lo) + ":" + number(hi) + "]";
+}
+
+// The legend of panel `index`: its own below it, or the figure's shared one (the last panel's,
+// in the strip at the right), with the figure's note under it.
+std::string keyCommands(const Figure& figure, std::size_t index) {
+    // The key's extra height keeps its box off the x axis title.
+    if (figure.legendWidth <= 0) return "set key below left Left reverse maxrows 8 box height 1.5\n";
+    if (index + 1 < figure.panels.size()) return "unset key\n";
+    const std::string left = number(1.0 - static_cast<double>(figure.legendWidth) / figure.width);  // strip start
+    std::string out = "set key at screen " + left + ", 0.92 left top Left reverse box\n";
+    if (!figure.note.empty())
+        out += "set label 1 " + gnuplotQuoted(figure.note) + " at screen " + left + ", 0.04 left\n";
+    return out;
+}
+
+// The range, scale and title of one axis ("x" or "y").
+std::string axisCommands(const PlotPanel& panel, const PlotAxis& axis, const char* name,
+                         double PlotPoint::*coordinate) {
+    return std::string(axis.log ? "set logscale " : "unset logscale ") + name + "\nset " + name + "label " +
+           gnuplotQuoted(axisLabel(axis)) + "\nset " + name + "range " + axisRange(panel, axis, coordinate) + "\n";
+}
+
+// Title, axes, grid and legend of one panel, then its plot command.
+std::string panelCommands(const Figure& figure, std::size_t index, const PanelPlot& plot) {
+    const PlotPanel& panel = figure.panels[index];
+    std::string out = "set title " + gnuplotQuoted(panel.title) + "\n";
+    out += axisCommands(panel, panel.x, "x", &PlotPoint::x) + axisCommands(panel, panel.y, "y", &PlotPoint::y);
+    out += panel.equalScale ? "set size ratio -1\n" : "set size noratio\n";
+    out += "set grid\n" + keyCommands(figure, index);
+    if (plot.items.empty())
+        return out + "set label 2 'no data' at graph 0.5, 0.5 center\nplot NaN notitle\nunset label 2\n";
+    out += "plot ";
+    for (std::size_t i = 0; i < plot.items.size(); ++i) out += (i ? ", \\\n     " : "") + plot.items[i];
+    return out + "\n";
+}
+
+// The multiplot layout: rows and columns, and with a shared legend the panels' area left of its
+// strip (screen fractions).
+std::string layoutCommand(const Figure& figure) {
+    const std::size_t panels = figure.panels.size();
+    const std::size_t columns = figure.columns > 0 ? std::min<std::size_t>(figure.columns, panels) : panels;
+    const std::size_t rows = (panels + columns - 1) / columns;
+    std::string out = "set multiplot layout " + std::to_string(rows) + "," + std::to_string(columns);
+    if (figure.legendWidth > 0)
+        out += " margins 0.07, " + number(0.97 - static_cast<double>(figure.legendWidth) / figure.width) +
+               ", 0.12, 0.92 spacing 0.08";
+    return out + "\n";
+}
+
+bool isColour(const std::string& text) {
+    return text.size() == 7 && text[0] == '#' &&
+           text.find_first_not_of("0123456789abcdefABCDEF", 1) == std::string::npos;
+}
+
+// Throws for the first bad point or colour of series `s` in panel `p` (1-based in messages).
+void checkSeries(const PlotPanel& panel, std::size_t p, const PlotSeries& s, const std::string& where) {
+    const std::string at =
+        where + ": panel " + std::to_string(p + 1) + " '" + panel.title + "': series '" + s.name + "'";
+    if (!s.colour.empty() && !isColour(s.colour))
+        throw Error(at + ": expected a colour \"#rrggbb\", got '" + s.colour + "'");
+    const std::vector<PlotPoint> points = allPoints(s);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const PlotPoint& q = points[i];
+        if (!std::isfinite(q.x) || !std::isfinite(q.y))
+            throw Error(at + ": point " + std::to_string(i + 1) + ": expected finite x and y, got " + pointText(q));
+        if ((panel.x.log && q.x <= 0.0) || (panel.y.log && q.y <= 0.0))
+            throw Error(at + ": point " + std::to_string(i + 1) + ": expected x and y > 0 on a logarithmic axis, got " +
+                        pointText(q));
+    }
 }
 
 }  // namespace
 
-scenes::Image plotTradeOff(const std::vector<PlotPoint>& points, int width, int height) {
-    assert(width >= 160 && height >= 120);
-    static const unsigned char kWhite[3] = {255, 255, 255}, kBlue[3] = {40, 90, 200}, kRed[3] = {210, 30, 30};
-    scenes::Image image{"bench.png", width, height,
-                        std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4)};
-    fillRect(image, 0, 0, width, height, kWhite);
-    const int left = 56, right = width - 20, top = 16, bottom = height - 36;
-    double maxX = 0.0, maxY = 0.0;
-    for (const PlotPoint& p : points) {
-        maxX = std::max(maxX, p.x);
-        maxY = std::max(maxY, p.y);
-    }
-    maxX = niceCeil(maxX * 1.05);
-    maxY = niceCeil(maxY * 1.05);
-    const Axes axes = drawAxes(image, left, right, top, bottom, maxX, maxY);
-    const auto px = [&](double x) { return axes.px(x); };
-    const auto py = [&](double y) { return axes.py(y); };
-    const PlotPoint* previous = nullptr;
-    std::vector<const PlotPoint*> front;
-    for (const PlotPoint& p : points)
-        if (p.front) front.push_back(&p);
-    std::sort(front.begin(), front.end(), [](auto a, auto b) { return a->x < b->x; });
-    for (const PlotPoint* p : front) {
-        if (previous) drawLine(image, px(previous->x), py(previous->y), px(p->x), py(p->y), kRed);
-        previous = p;
-    }
-    for (const PlotPoint& p : points) {
-        const unsigned char* colour = p.front ? kRed : kBlue;
-        fillRect(image, px(p.x) - 3, py(p.y) - 3, 7, 7, colour);
-        drawText(image, px(p.x) + 6, py(p.y) - 12, std::to_string(p.label), 2, colour);
-    }
-    return image;
+std::string axisLabel(const PlotAxis& axis) {
+    return axis.unit.empty() ? axis.title : axis.title + " (" + axis.unit + ")";
 }
 
-scenes::Image plotSeries(const std::vector<PlotSeries>& series, int width, int height) {
-    assert(width >= 160 && height >= 120);
-    static const unsigned char kWhite[3] = {255, 255, 255};
-    static const unsigned char kColours[4][3] = {{40, 90, 200}, {210, 30, 30}, {30, 150, 60}, {230, 130, 20}};
-    scenes::Image image{"plot.png", width, height,
-                        std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4)};
-    fillRect(image, 0, 0, width, height, kWhite);
-    const int left = 64, right = width - 40, top = 16, bottom = height - 36;
-    double maxX = 0.0, maxY = 0.0;
-    for (const PlotSeries& s : series)
-        for (const PlotPoint& p : s.points) {
-            maxX = std::max(maxX, p.x);
-            maxY = std::max(maxY, p.y);
-        }
-    maxX = niceCeil(maxX * 1.05);
-    maxY = niceCeil(maxY * 1.05);
-    const Axes axes = drawAxes(image, left, right, top, bottom, maxX, maxY);
-    const auto px = [&](double x) { return axes.px(x); };
-    const auto py = [&](double y) { return axes.py(y); };
-    for (const PlotSeries& s : series) {
-        const unsigned char* colour = kColours[((s.label % 4) + 4) % 4];
-        std::vector<PlotPoint> points = s.points;
-        std::sort(points.begin(), points.end(), [](const PlotPoint& a, const PlotPoint& b) { return a.x < b.x; });
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            fillRect(image, px(points[i].x) - 3, py(points[i].y) - 3, 7, 7, colour);
-            if (i > 0)
-                drawLine(image, px(points[i - 1].x), py(points[i - 1].y), px(points[i].x), py(points[i].y), colour);
-        }
-        if (!points.empty())
-            drawText(image, px(points.back().x) + 6, py(points.back().y) - 12, std::to_string(s.label), 2, colour);
+std::string gnuplotQuoted(const std::string& text) {
+    std::string out = "'";
+    for (char c : text) {
+        if (c == '\'')
+            out += "''";
+        else if (c == '\n' || c == '\r')
+            out += ' ';
+        else
+            out += c;
     }
-    return image;
+    return out + "'";
+}
+
+void checkFigure(const Figure& figure, const std::string& where) {
+    if (figure.panels.empty()) throw Error(where + ": expected at least one plot panel, got none");
+    if (figure.width < 160 || figure.height < 120)
+        throw Error(where + ": expected a plot of at least 160 x 120 pixels, got " + std::to_string(figure.width) +
+                    " x " + std::to_string(figure.height));
+    if (figure.legendWidth < 0 || figure.legendWidth > figure.width / 2)
+        throw Error(where + ": expected a legend strip of 0 to half the plot's width (" +
+                    std::to_string(figure.width / 2) + " pixels), got " + std::to_string(figure.legendWidth));
+    for (std::size_t p = 0; p < figure.panels.size(); ++p)
+        for (const PlotSeries& s : figure.panels[p].series) checkSeries(figure.panels[p], p, s, where);
+}
+
+std::string gnuplotScript(const Figure& figure, const std::filesystem::path& output) {
+    checkFigure(figure, output.filename().string());
+    std::ostringstream script;
+    script << "set terminal pngcairo size " << figure.width << "," << figure.height
+           << " noenhanced font 'Sans,11' background rgb 'white'\n"
+           << "set encoding utf8\nset output " << gnuplotQuoted(output.string()) << "\n";
+    std::vector<PanelPlot> plots;
+    for (std::size_t i = 0; i < figure.panels.size(); ++i) {
+        plots.push_back(panelPlot(figure.panels[i], i));
+        script << plots.back().blocks;
+    }
+    script << layoutCommand(figure);
+    for (std::size_t i = 0; i < figure.panels.size(); ++i) script << panelCommands(figure, i, plots[i]);
+    script << "unset multiplot\nset output\n";
+    return script.str();
 }
 
 }  // namespace cavewall::bench

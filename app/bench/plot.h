@@ -1,38 +1,88 @@
 #pragma once
-// A small CPU-rasterised scatter plot for `cavewall bench`: error (RMSE, y) against frame time
-// (median ms, x), one numbered point per mode, the Pareto front (app/bench/metrics.h)
-// marked in red and joined by a line, axes with a few tick labels drawn in a built-in 3x5
-// digit font. No text beyond digits: point numbers match the "#" column of bench.md.
+// Plots as plain data, and the gnuplot script that draws them. A Figure is one PNG of one or
+// more panels in a grid; a Panel has a title, two titled axes with units and named series,
+// each named in the legend: markers, lines, or shapes (open paths, polygon outlines, filled
+// polygons; for top views in metres). Points may be flagged as on the Pareto front (joined by
+// one line in x order across all series of the panel), as the control or as the best
+// alternative (each ringed by a large marker with its own legend entry). No GL, no files:
+// gnuplotScript() returns the text; app/bench/gnuplot.h runs it.
 
-#include "scenes/scene.h"
-
+#include <filesystem>
 #include <string>
 #include <vector>
 
 namespace cavewall::bench {
 
 struct PlotPoint {
-    double x = 0.0, y = 0.0;  // finite; frame ms and RMSE
-    int label = 0;            // drawn next to the point
-    bool front = false;       // on the Pareto front
+    double x = 0.0, y = 0.0;       // finite (checkFigure refuses NaN and infinities)
+    bool front = false;            // on the Pareto front
+    bool control = false;          // the control (the "cells without textures" mode)
+    bool bestAlternative = false;  // the alternative a user would pick (full geometry with LOD)
 };
 
-// An opaque RGBA image of `width` x `height` pixels (at least 160 x 120).
-scenes::Image plotTradeOff(const std::vector<PlotPoint>& points, int width = 640, int height = 420);
+// How a series is drawn.
+enum class SeriesStyle {
+    Markers,   // `points`, one marker each
+    Line,      // `points` joined in x order, with markers (a series over a sweep)
+    Paths,     // `shapes`, each an open polyline (a wall: its two ends)
+    Outlines,  // `shapes`, each a closed polygon's outline
+    Filled,    // `shapes`, each a closed polygon, filled half-transparent
+};
 
-// One line of plotSeries: its points joined in x order, drawn in colour `label` % 4 (blue,
-// red, green, orange) with `label` beside its last point.
 struct PlotSeries {
-    std::vector<PlotPoint> points;  // x, y finite and >= 0; label and front unused
-    int label = 0;
+    std::string name;               // its legend entry; any text (quotes are escaped, line breaks become spaces)
+    std::vector<PlotPoint> points;  // Markers, Line
+    SeriesStyle style = SeriesStyle::Markers;
+    std::vector<std::vector<PlotPoint>> shapes;  // Paths, Outlines, Filled (flags unused)
+    std::string colour;                          // "#rrggbb"; empty: a colour (and marker) chosen by the series' index
+    double size = 0.0;                           // marker size or line width, gnuplot units; 0: the style's default
 };
 
-// A line chart of `series` from the origin, axes with tick labels (`cavewall bench --scale`:
-// frame time, memory or load time against triangles).
-scenes::Image plotSeries(const std::vector<PlotSeries>& series, int width = 640, int height = 420);
+struct PlotAxis {
+    std::string title;      // "median frame time"
+    std::string unit;       // "ms"; shown as "median frame time (ms)"; empty: no unit (a ratio)
+    bool fromZero = true;   // the range starts at 0; else it spans the data (8 % margins)
+    bool log = false;       // logarithmic (every coordinate > 0; fromZero ignored)
+    bool reversed = false;  // values grow leftwards or downwards (a top view's +z is down)
+};
 
-// Draws `text` (digits, '.', '-', 'e', '+'; other characters are blank) with its top-left at
-// (x, y), each glyph 3x5 cells of `scale` pixels. Exposed for tests.
-void drawText(scenes::Image& image, int x, int y, const std::string& text, int scale, const unsigned char rgb[3]);
+struct PlotPanel {
+    std::string title;
+    PlotAxis x, y;
+    std::vector<PlotSeries> series;          // in legend order; empty series are skipped
+    std::string frontName = "Pareto front";  // legend entries of the flagged points' markers
+    std::string controlName = "control";
+    std::string alternativeName = "best alternative";
+    bool equalScale = false;  // one unit as long on both axes (a floor plan in metres)
+};
+
+struct Figure {
+    std::vector<PlotPanel> panels;   // at least one; left to right, then top to bottom
+    int columns = 0;                 // panels per row; 0: all in one row
+    int width = 1280, height = 560;  // PNG pixels, at least 160 x 120
+    // > 0: one legend for all panels, the last panel's, in a strip this many pixels wide at the
+    // right (panels listing the same series in the same order draw them alike); 0: a legend
+    // below each panel. At most half the width.
+    int legendWidth = 0;
+    std::string note;  // a line under the shared legend (legendWidth > 0); empty: none
+};
+
+// "median frame time (ms)", or the title alone without a unit.
+std::string axisLabel(const PlotAxis& axis);
+
+// Throws cavewall::Error naming `where` (the PNG), the panel, the series and the point when
+// `figure` has no panel, a size under 160 x 120, a legend strip over half the width, a
+// non-finite coordinate ("bench.png: panel 1 'error': series 'walls a=10': point 2: expected
+// finite x and y, got x=3 y=nan"), one <= 0 on a logarithmic axis, or a colour that is not
+// "#rrggbb".
+void checkFigure(const Figure& figure, const std::string& where);
+
+// The gnuplot script that draws `figure` (checked first) with the pngcairo terminal into
+// `output`: the data as inline data blocks, one plot command per panel. Strings are
+// single-quoted with quotes doubled and enhanced-text markup off, so any name prints as given.
+std::string gnuplotScript(const Figure& figure, const std::filesystem::path& output);
+
+// `text` as a gnuplot single-quoted string: 'it''s'; line breaks become spaces.
+std::string gnuplotQuoted(const std::string& text);
 
 }  // namespace cavewall::bench

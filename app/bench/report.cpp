@@ -3,7 +3,8 @@
 #include "config/error.h"
 #include "scenes/file_write.h"
 #include "scenes/image_io.h"
-#include "app/bench/plot.h"
+#include "app/bench/gnuplot.h"
+#include "app/bench/report_plot.h"
 
 #include <algorithm>
 #include <cmath>
@@ -558,16 +559,10 @@ std::vector<std::filesystem::path> writeReport(const std::filesystem::path& fold
     writeText(files[1], screensCsv(report));
     writeText(files[4], framesCsv(report));
     writeText(files[2], "# cavewall bench\n\n" + markdownReport(report) +
-                            "\n![error (pooled RMSE, the pooled PSNR's, y) against median frame ms (x); red: Pareto "
-                            "front; numbers: # above]"
-                            "(bench.png)\n");
-    std::vector<TradeOff> points;
-    for (const ModeResult& m : report.modes) points.push_back({m.frameMs.p50, m.error.rmse});
-    std::vector<PlotPoint> plot;
-    for (std::size_t i = 0; i < points.size(); ++i)
-        plot.push_back({points[i].time, points[i].error, static_cast<int>(i + 1), false});
-    for (std::size_t i : paretoFront(points)) plot[i].front = true;
-    scenes::writeImage(files[3], plotTradeOff(plot));
+                            "\n![pooled PSNR and FLIP mean (y) against median frame time (x) of every mode, named "
+                            "\"#N label\" as the table; dashed: the Pareto front; ringed: the control and the best "
+                            "alternative](bench.png)\n");
+    writePlot(files[3], tradeOffFigure(report));
     std::vector<std::filesystem::path> written = files;
     for (std::size_t i = 0; i < report.modes.size(); ++i) {
         const FlipMap& map = report.modes[i].flipWorst;

@@ -1,6 +1,6 @@
 #pragma once
 // The results of `cavewall bench` and their writers: bench.csv, bench_screens.csv, bench.md
-// (also printed) and bench.png (app/bench/plot.h).
+// (also printed) and bench.png (app/bench/report_plot.h, drawn by gnuplot).
 //
 // One ModeResult per mode of the run. Times are milliseconds per frame (all screens), over the
 // timed frames. Errors are against the full-geometry image of the same frame, eye and screen

@@ -3,7 +3,7 @@
 #include "config/error.h"
 #include "config/json_depth.h"
 #include "config/json_reader.h"
-#include "app/bench/plot.h"
+#include "app/bench/gnuplot.h"
 #include "app/bench/report.h"
 #include "scenes/file_write.h"
 #include "scenes/generate.h"
@@ -194,6 +194,45 @@ std::string scaleMarkdown(const ScaleReport& report) {
     return out;
 }
 
+namespace {
+
+// One mode's legend entry in the scale plots.
+std::string seriesName(ScaleMode mode) {
+    const std::string name(toString(mode));
+    switch (mode) {
+        case ScaleMode::Full: return name + ": full geometry";
+        case ScaleMode::FullLod: return name + ": full geometry with levels of detail";
+        case ScaleMode::Near: return name + ": viewer's cell and structure (the limit)";
+        case ScaleMode::Cells: return name + ": cells without textures (the control)";
+        case ScaleMode::Walls: return name + ": textured virtual walls";
+        case ScaleMode::WallsBudget: return name + ": walls under a triangle budget";
+        case ScaleMode::DepthWalls: return name + ": depth walls";
+    }
+    return name;
+}
+
+// One line per mode that ran, over the plant sizes; rows whose figure is not finite are left out.
+Figure scaleFigure(const ScaleReport& report, const std::string& title, const PlotAxis& y,
+                   double (*value)(const ScaleRow&)) {
+    PlotPanel panel;
+    panel.title = title;
+    panel.x = {"triangles in the model", "millions", true};
+    panel.y = y;
+    for (ScaleMode m : kScaleModes) {
+        PlotSeries s{seriesName(m), {}, SeriesStyle::Line};
+        for (const ScaleRow* r : rowsOf(report, m))
+            if (std::isfinite(value(*r))) s.points.push_back({millions(r->triangles), value(*r)});
+        if (!s.points.empty()) panel.series.push_back(std::move(s));
+    }
+    Figure figure;
+    figure.panels = {std::move(panel)};
+    figure.width = 900;
+    figure.height = 640;
+    return figure;
+}
+
+}  // namespace
+
 std::vector<std::filesystem::path> writeScaleReport(const std::filesystem::path& folder, const ScaleReport& report) {
     std::filesystem::create_directories(folder);
     const std::vector<std::filesystem::path> files = {folder / "scale.csv", folder / "scale.md",
@@ -202,27 +241,18 @@ std::vector<std::filesystem::path> writeScaleReport(const std::filesystem::path&
     writeText(files[0], scaleCsv(report));
     writeText(files[1],
               "# cavewall bench --scale\n\n" + scaleMarkdown(report) +
-                  "\nPlots against millions of triangles (x); lines numbered 0 full, 1 near, 2 walls, "
-                  "3 walls-budget, 4 walls-depth, 5 cells (those run): "
+                  "\nPlots against millions of triangles (x), one named line per mode that ran: "
                   "median frame ms (scale_ms.png), resident geometry MB (scale_mb.png), seconds from the "
                   "loaded scene to the first frame plus the load (scale_load.png).\n\n"
                   "![frame ms](scale_ms.png) ![resident MB](scale_mb.png) ![first frame s](scale_load.png)\n");
-    auto plot = [&](double ScaleRow::*field, bool timeStat, bool plusLoad) {
-        std::vector<PlotSeries> series;
-        for (ScaleMode m : kScaleModes) {
-            PlotSeries s;
-            s.label = static_cast<int>(m);
-            for (const ScaleRow* r : rowsOf(report, m)) {
-                const double y = timeStat ? r->frameMs.p50 : r->*field + (plusLoad ? r->loadSeconds : 0.0);
-                s.points.push_back({millions(r->triangles), std::isfinite(y) ? y : 0.0, 0, false});
-            }
-            if (!s.points.empty()) series.push_back(std::move(s));
-        }
-        return plotSeries(series);
-    };
-    scenes::writeImage(files[2], plot(&ScaleRow::residentMB, true, false));
-    scenes::writeImage(files[3], plot(&ScaleRow::residentMB, false, false));
-    scenes::writeImage(files[4], plot(&ScaleRow::firstFrameSeconds, false, true));
+    writePlot(files[2], scaleFigure(report, "Frame time against model size", {"median frame time, all screens", "ms"},
+                                    [](const ScaleRow& r) { return r.frameMs.p50; }));
+    writePlot(files[3], scaleFigure(report, "GPU memory for geometry against model size",
+                                    {"resident geometry, the most at once", "MB"},
+                                    [](const ScaleRow& r) { return r.residentMB; }));
+    writePlot(files[4],
+              scaleFigure(report, "Time to the first frame against model size", {"load plus first frame", "s"},
+                          [](const ScaleRow& r) { return r.loadSeconds + r.firstFrameSeconds; }));
     return files;
 }
 

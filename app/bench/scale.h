@@ -27,8 +27,7 @@ namespace cavewall::bench {
 
 // DepthWalls: depth walls drawn in the same run as flat ones (`--walls flat,depth`), so that
 // their frame-time ratio shares the machine's load of the same seconds. Cells: the control,
-// cells without textures (the flat walls' geometry cells, no texture), numbered
-// last so that the plots' earlier line numbers stay.
+// cells without textures (the flat walls' geometry cells, no texture).
 // FullLod: full geometry with levels of detail at the walls' tolerance, the alternative a user
 // would pick (left out without levels of detail).
 enum class ScaleMode { Full, Near, Walls, WallsBudget, DepthWalls, Cells, FullLod };
@@ -79,7 +78,8 @@ double growth(const ScaleReport& report, ScaleMode mode);
 
 std::string scaleCsv(const ScaleReport& report);
 std::string scaleMarkdown(const ScaleReport& report);
-// Writes scale.csv, scale.md and the three plots into `folder` (created); returns the files.
+// Writes scale.csv, scale.md and the three plots (app/bench/gnuplot.h: one named line per mode)
+// into `folder` (created); returns the files.
 std::vector<std::filesystem::path> writeScaleReport(const std::filesystem::path& folder, const ScaleReport& report);
 
 // The stamp in a generated plant's folder (DIR/plant-N of --data): the --scale entry the plant

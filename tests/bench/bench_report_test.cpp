@@ -1,6 +1,7 @@
-// bench.csv columns, bench.md and the plot of `cavewall bench` (app/bench/report.h).
-#include "app/bench/plot.h"
+// bench.csv columns, bench.md and the plot of `cavewall bench` (app/bench/report.h,
+// app/bench/report_plot.h).
 #include "app/bench/report.h"
+#include "app/bench/report_plot.h"
 
 #include "scenes/image_io.h"
 #include "tests/support/csv_table.h"
@@ -32,6 +33,7 @@ ModeResult sample(Mode mode, double alpha, double p50, double rmse) {
     m.alphaDeg = alpha;
     if (alpha > 0) m.transition = app::Transition::Blend;
     m.frameMs = {p50, p50 * 1.1, p50 * 1.2, p50};
+    m.error.frames = 2;
     m.error.rmse = rmse;
     m.error.mse = rmse * rmse;
     m.error.psnrDb = rmse > 0 ? -20 * std::log10(rmse) : std::numeric_limits<double>::infinity();
@@ -406,10 +408,9 @@ TEST(BenchReport, StereoErrorColumnsOnlyWhenMeasured) {
     EXPECT_THAT(md, HasSubstr(" | 0.01 / 0.04 | - | "));  // the mono row: FLIP, then no stereo figure
 }
 
-TEST(BenchReport, WritesFilesAndMarksTheFrontInThePlot) {
+TEST(BenchReport, WritesFilesAndThePlot) {
     const test::TempFolder folder("bench_report");
     BenchReport report;
-    // full and the fast walls mode form the front; the slow, worse one is dominated.
     report.modes = {sample(Mode::Full, 0, 30.0, 0.0), sample(Mode::Walls, 10, 3.0, 0.02),
                     sample(Mode::Walls, 20, 5.0, 0.05)};
     report.modes[2].flipWorst.image = scenes::Image{"flip", 3, 2, std::vector<std::uint8_t>(3 * 2 * 4, 200)};
@@ -433,28 +434,69 @@ TEST(BenchReport, WritesFilesAndMarksTheFrontInThePlot) {
     const test::CsvTable modes = test::readCsv(folder / "bench.csv");
     EXPECT_EQ(modes.column("mode"), (std::vector<std::string>{"full", "walls", "walls"}));
     EXPECT_EQ(modes.column("alpha_deg"), (std::vector<std::string>{"0", "10", "20"}));
+    // gnuplot drew it at the figure's size (its content: BenchPlot below and tests/bench/plot_test.cpp).
     const scenes::Image png = scenes::readImage(folder / "bench.png");
-    EXPECT_EQ(png.width, 640);
-    EXPECT_EQ(png.height, 420);
-    int red = 0, blue = 0;
-    for (std::size_t i = 0; i < png.rgba.size(); i += 4) {
-        red += png.rgba[i] == 210 && png.rgba[i + 1] == 30 && png.rgba[i + 2] == 30;
-        blue += png.rgba[i] == 40 && png.rgba[i + 1] == 90 && png.rgba[i + 2] == 200;
-    }
-    EXPECT_GT(red, 2 * 49);  // two front markers (7x7) plus the line joining them
-    EXPECT_GE(blue, 49);     // the dominated point
+    EXPECT_EQ(png.width, 1600);
+    EXPECT_EQ(png.height, 640);
 }
 
-TEST(BenchPlot, DigitsAreDrawn) {
-    scenes::Image image{"t", 20, 8, std::vector<std::uint8_t>(20 * 8 * 4, 0)};
-    const unsigned char white[3] = {255, 255, 255};
-    drawText(image, 0, 0, "18", 1, white);
-    auto lit = [&](int x, int y) { return image.rgba[(y * 20 + x) * 4] == 255; };
-    // '1' is 2,6,2,2,7: the middle column is lit on every row; '8' starts 4 pixels right and
-    // its centre row is full (7).
-    for (int y = 0; y < 5; ++y) EXPECT_TRUE(lit(1, y)) << y;
-    EXPECT_TRUE(lit(4, 2) && lit(5, 2) && lit(6, 2));
-    EXPECT_FALSE(lit(5, 1));  // the hole of the 8
+// Every mode is named in the legend as bench.md numbers it, in both panels alike; the
+// reference (exact: infinite PSNR, FLIP 0) has no point; the front is flagged, and the control
+// and the best alternative are ringed.
+TEST(BenchPlot, NamesEveryModeAndFlagsTheFrontControlAndAlternative) {
+    BenchReport report;
+    report.resolution = "256x256 per screen, mono";
+    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), sample(Mode::Full, 0, 20.0, 0.01),
+                    sample(Mode::Cells, 0, 2.0, 0.08), sample(Mode::Walls, 10, 3.0, 0.02),
+                    sample(Mode::Walls, 20, 5.0, 0.05)};
+    report.modes[1].lodPixels = 1.0;  // full geometry with levels of detail: the alternative
+    const Figure figure = tradeOffFigure(report);
+    ASSERT_EQ(figure.panels.size(), 2u);
+    EXPECT_GT(figure.legendWidth, 0);  // one legend for both panels
+    EXPECT_EQ(figure.note, "#1 full is the reference: exact, not drawn");
+    const std::vector<std::string> names{"#1 full", "#2 full lod 1px", "#3 cells", "#4 walls a=10 blend",
+                                         "#5 walls a=20 blend"};
+    for (const PlotPanel& panel : figure.panels) {
+        SCOPED_TRACE(panel.title);
+        EXPECT_THAT(panel.title, HasSubstr("256x256 per screen, mono"));
+        EXPECT_EQ(axisLabel(panel.x), "median frame time, all screens (ms)");
+        std::vector<std::string> seriesNames;
+        for (const PlotSeries& s : panel.series) seriesNames.push_back(s.name);
+        EXPECT_EQ(seriesNames, names);
+        EXPECT_TRUE(panel.series[0].points.empty());  // the reference
+        // Front (lower time and error): cells (2 ms), walls a=10 (3 ms, less error), full lod
+        // (20 ms, less still); walls a=20 is slower and worse than a=10.
+        std::vector<bool> front;
+        for (std::size_t i = 1; i < panel.series.size(); ++i) front.push_back(panel.series[i].points.at(0).front);
+        EXPECT_EQ(front, (std::vector<bool>{true, true, true, false}));
+        EXPECT_TRUE(panel.series[2].points[0].control);
+        EXPECT_TRUE(panel.series[1].points[0].bestAlternative);
+        EXPECT_FALSE(panel.series[3].points[0].control || panel.series[3].points[0].bestAlternative);
+        EXPECT_EQ(panel.controlName, "control: cells without textures");
+        EXPECT_EQ(panel.alternativeName, "best alternative: full geometry with levels of detail");
+    }
+    EXPECT_EQ(axisLabel(figure.panels[0].y), "pooled PSNR (dB)");
+    EXPECT_TRUE(figure.panels[1].y.log);
+    EXPECT_NO_THROW(checkFigure(figure, "bench.png"));
+}
+
+// A mode that compared no frame has no error to show, and a NaN frame time no place on the axis:
+// both keep their legend entry without a point rather than being drawn as exact.
+TEST(BenchPlot, ModesWithoutFiguresHaveNoPoint) {
+    BenchReport report;
+    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), sample(Mode::Walls, 10, 3.0, 0.02),
+                    sample(Mode::Walls, 20, std::numeric_limits<double>::quiet_NaN(), 0.05),
+                    sample(Mode::Walls, 30, 4.0, 0.04)};
+    report.modes[1].error.frames = 0;
+    const Figure figure = tradeOffFigure(report);
+    for (const PlotPanel& panel : figure.panels) {
+        ASSERT_EQ(panel.series.size(), 4u);
+        EXPECT_TRUE(panel.series[1].points.empty());
+        EXPECT_TRUE(panel.series[2].points.empty());
+        ASSERT_EQ(panel.series[3].points.size(), 1u);
+        EXPECT_TRUE(panel.series[3].points[0].front);  // alone, so on the front
+    }
+    EXPECT_NO_THROW(checkFigure(figure, "bench.png"));
 }
 
 }  // namespace

@@ -1,3 +1,4 @@
+#include "scenes/image_io.h"
 #include "tests/cli/run_cli.h"
 #include "walls/angular_error.h"
 #include "walls/depth_wall.h"
@@ -8,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <fstream>
@@ -34,12 +36,15 @@ TEST(PlanCli, PlansAGeneratedHouseAndTheJsonKeepsTheBound) {
     const auto dir = outputDir();
     const CliResult gen = runCavewall({"generate", "house", "--out", (dir / "house").string(), "--triangles", "2000"});
     ASSERT_EQ(gen.exitCode, 0) << gen.err;
-    const CliResult r = runCavewall({"plan", (dir / "house").string(), "--alpha", "12", "--json",
-                                     (dir / "house.plan.json").string(), "--png", (dir / "house.plan.png").string()});
+    const CliResult r =
+        runCavewall({"plan", (dir / "house").string(), "--alpha", "12", "--json", (dir / "house.plan.json").string(),
+                     "--png", (dir / "house.plan.png").string(), "--png-walls", (dir / "house.walls.png").string()});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("alpha 12°"));
     EXPECT_THAT(r.out, HasSubstr("GPU"));
-    EXPECT_TRUE(std::filesystem::file_size(dir / "house.plan.png") > 100);
+    // The overview (gnuplot): one storey panel 760 pixels wide beside a 400-pixel legend strip.
+    EXPECT_EQ(scenes::readImage(dir / "house.plan.png").width, 760 + 400);
+    EXPECT_TRUE(std::filesystem::file_size(dir / "house.walls.png") > 100);  // the per-wall detail
     std::ifstream in(dir / "house.plan.json");
     const nlohmann::json j = nlohmann::json::parse(in);
     EXPECT_EQ(j["alphaDeg"], 12.0);
@@ -114,6 +119,26 @@ TEST(PlanCli, DepthWallsJsonKeepsTheirOwnBound) {
         }
     }
     EXPECT_GT(checked, 100);
+}
+
+// Without gnuplot on PATH, --png stops before planning with what to install and where it
+// looked, and writes nothing.
+TEST(PlanCli, PngWithoutGnuplotSaysWhatToInstall) {
+    const auto dir = outputDir() / "no-gnuplot";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir / "empty-bin");
+    const CliResult gen = runCavewall({"generate", "house", "--out", (dir / "house").string(), "--triangles", "2000"});
+    ASSERT_EQ(gen.exitCode, 0) << gen.err;
+    const char* oldPath = std::getenv("PATH");
+    const std::string saved = oldPath ? oldPath : "";
+    ::setenv("PATH", (dir / "empty-bin").c_str(), 1);  // the child inherits it
+    const CliResult r = runCavewall({"plan", (dir / "house").string(), "--png", (dir / "plan.png").string()});
+    ::setenv("PATH", saved.c_str(), 1);
+    EXPECT_EQ(r.exitCode, 1) << r.out;
+    EXPECT_THAT(
+        r.err,
+        HasSubstr("gnuplot not found: install gnuplot-nox (searched PATH: " + (dir / "empty-bin").string() + ")"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "plan.png"));
 }
 
 TEST(PlanCli, BadArgumentsFailClearly) {
@@ -270,6 +295,12 @@ TEST(WritersCli, OutputsThatAreNotRegularFilesOrInputsAreRefused) {
         {"plan --png link to a folder",
          {"plan", house.string(), "--png", link.string()},
          "--png " + link.string() + notRegular + "a directory"},
+        {"plan --png-walls link to a folder",
+         {"plan", house.string(), "--png-walls", link.string()},
+         "--png-walls " + link.string() + notRegular + "a directory"},
+        {"walls --png-walls MODEL",
+         {"walls", json.string(), "--out", (dir / "w.json").string(), "--png-walls", glb.string()},
+         "--png-walls " + glb.string() + anInput + glb.string()},
         {"plan --json its scene.json",
          {"plan", house.string(), "--json", json.string()},
          "--json " + json.string() + anInput + json.string()},
