@@ -106,6 +106,7 @@ void VrpnSource::disconnect(double now, const std::string& why) {
     _link = Link::Closed;
     _session.reset();
     _headTracked = _handTracked = false;
+    _latest.wand = {};  // a held button must not stay held while nothing can release it
     _nextAttempt = now + _config.retrySeconds;
     _problem = describe() + ": " + why + "; trying again every " + secondsText(_config.retrySeconds);
 }

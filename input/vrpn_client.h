@@ -12,7 +12,7 @@
 // The source connects on its first poll and never blocks: the connection is made, the cookies
 // exchanged and the messages read in non-blocking steps inside poll(). When the server goes
 // away (or sends bytes that cannot be framed) the source closes the connection, reports the
-// devices as not valid, says why in problem(), and connects again `retry` seconds later. UDP
+// devices as not valid and every button as released, says why in problem(), and connects again `retry` seconds later. UDP
 // is not used: the server sends everything over the TCP connection.
 
 #include "input/tracker_source.h"

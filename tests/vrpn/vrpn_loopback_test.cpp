@@ -139,10 +139,14 @@ TEST(VrpnLoopback, AServerThatStopsAndComesBackIsUsedAgain) {
     ASSERT_NO_FATAL_FAILURE(f.connect());
     Sample s = f.sendPose(0, {0.1, 1.6, 0.2}, glm::dquat(1.0, 0.0, 0.0, 0.0));
     EXPECT_TRUE(s.headValid);
+    f.server->send("button 0 1");
+    f.pollUntil([](const Sample& s) { return s.wand.pressed(0); });
+    EXPECT_EQ(f.server->answer(), "ok");
 
     ASSERT_TRUE(f.server->quit());
     s = f.pollUntil([&](const Sample&) { return !f.client->problem().empty(); });
-    EXPECT_FALSE(s.headValid);  // no server, no head: the drop-out policy takes over
+    EXPECT_FALSE(s.headValid);      // no server, no head: the drop-out policy takes over
+    EXPECT_EQ(s.wand.buttons, 0u);  // and no button stays held
     EXPECT_THAT(f.client->problem(), HasSubstr("the server closed the connection; trying again every 0.05 s"));
 
     ASSERT_NO_FATAL_FAILURE(f.startServer());  // the same port
