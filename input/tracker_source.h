@@ -8,7 +8,7 @@
 //   replay:PATH                        a recording made by `cavewall track --record` (recording.h)
 //   dtrack:udp://HOST:PORT[?body=1&hand=0&bind=ADDR&stale=0.1]   ART DTrack2 ASCII (network_source.h)
 //   opentrack:udp://HOST:PORT[?bind=ADDR&stale=0.1&invert=...]    opentrack UDP (network_source.h)
-//   vrpn:DEVICE@HOST[:PORT][?head=0&hand=1&buttons=NAME&stale=0.1&retry=1]   VRPN over TCP (vrpn_client.h)
+//   vrpn:DEVICE@HOST[:PORT][?head=0&hand=1&buttons=NAME&udp=0&stale=0.1&retry=1]   VRPN (vrpn_client.h)
 // For the UDP sources PORT is the local port to listen on (0 = any free port) and HOST the
 // address of the tracker PC; only datagrams from HOST are accepted ("*" or 0.0.0.0 = any sender).
 // The listener binds to 127.0.0.1 unless `bind` says otherwise, so a non-loopback HOST needs

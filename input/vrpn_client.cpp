@@ -22,6 +22,7 @@ namespace {
 
 constexpr double kHandshakeSeconds = 3.0;          // connect and cookie, before giving up
 constexpr std::size_t kMaxBytesPerPoll = 1 << 20;  // so that a flood cannot stall a frame
+constexpr int kMaxDatagramsPerPoll = 1024;
 
 std::string addressText(std::uint32_t address) {
     in_addr a{};
@@ -55,7 +56,8 @@ VrpnSource::VrpnSource(VrpnConfig config) : _config(std::move(config)), _address
 }
 
 VrpnSource::~VrpnSource() {
-    if (_fd >= 0) ::close(_fd);
+    for (int fd : {_fd, _udpFd, _listenFd})
+        if (fd >= 0) ::close(fd);
 }
 
 std::string VrpnSource::describe() const {
@@ -64,45 +66,117 @@ std::string VrpnSource::describe() const {
 
 bool VrpnSource::connected() const { return _link == Link::Open && _session && _session->cookieReceived(); }
 
-void VrpnSource::startConnect(double now) {
-    _fd = ::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
-    if (_fd < 0) return disconnect(now, std::string("cannot create a socket: ") + std::strerror(errno));
-    const int one = 1;
-    ::setsockopt(_fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+sockaddr_in VrpnSource::serverAddress() const {
     sockaddr_in a{};
     a.sin_family = AF_INET;
     a.sin_port = htons(static_cast<std::uint16_t>(_config.port));
     a.sin_addr.s_addr = htonl(_address);
+    return a;
+}
+
+void VrpnSource::startConnect(double now) {
     _link = Link::Connecting;
     _linkSince = now;
+    if (_config.udp) return startCallback(now);
+    _fd = ::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+    if (_fd < 0) return disconnect(now, std::string("cannot create a socket: ") + std::strerror(errno));
+    const sockaddr_in a = serverAddress();
     if (::connect(_fd, reinterpret_cast<const sockaddr*>(&a), sizeof a) != 0 && errno != EINPROGRESS)
         return disconnect(now, std::string("cannot connect: ") + std::strerror(errno));
     finishConnect(now);
 }
 
-// Once the non-blocking connect is done: send our cookie and start reading the server's.
+// VRPN's own way to a connection with a UDP channel: the client listens on a TCP port and asks
+// the server, in a datagram to the server's port ("IP PORT" and a NUL), to connect to it.
+void VrpnSource::startCallback(double now) {
+    _udpFd = ::socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+    const sockaddr_in server = serverAddress();
+    if (_udpFd < 0 || ::connect(_udpFd, reinterpret_cast<const sockaddr*>(&server), sizeof server) != 0)
+        return disconnect(now, std::string("cannot reach the server's UDP port: ") + std::strerror(errno));
+    sockaddr_in local{};
+    socklen_t len = sizeof local;
+    ::getsockname(_udpFd, reinterpret_cast<sockaddr*>(&local), &len);  // the address the server can reach
+    local.sin_port = 0;
+    _listenFd = ::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+    if (_listenFd < 0 || ::bind(_listenFd, reinterpret_cast<const sockaddr*>(&local), sizeof local) != 0 ||
+        ::listen(_listenFd, 1) != 0)
+        return disconnect(now, std::string("cannot listen for the server: ") + std::strerror(errno));
+    ::getsockname(_listenFd, reinterpret_cast<sockaddr*>(&local), &len);
+    _request = addressText(ntohl(local.sin_addr.s_addr)) + " " + std::to_string(ntohs(local.sin_port));
+    sendRequest(now);
+}
+
+// The request again every `retry` seconds until the server calls, as VRPN's clients do: a
+// server that is not up yet gets the next one. A send error is an ICMP "port unreachable" of
+// the last request: no server there yet.
+void VrpnSource::sendRequest(double now) {
+    ::send(_udpFd, _request.c_str(), _request.size() + 1, 0);
+    _lastRequest = now;
+}
+
+// Once the non-blocking connect is done (or the server has called back): send our cookie and
+// start reading the server's.
 void VrpnSource::finishConnect(double now) {
-    pollfd p{_fd, POLLOUT, 0};
-    if (::poll(&p, 1, 0) <= 0) {
-        if (now - _linkSince > kHandshakeSeconds)
-            disconnect(now, "cannot connect: no answer within " + secondsText(kHandshakeSeconds));
-        return;
+    if (_config.udp) {
+        _fd = ::accept4(_listenFd, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+        if (_fd < 0) {
+            if (now - _lastRequest >= _config.retrySeconds) sendRequest(now);
+            if (now - _linkSince > kHandshakeSeconds && _problem.empty())
+                _problem = describe() + ": the server has not connected back within " + secondsText(kHandshakeSeconds) +
+                           " (with udp=1 it connects to this host on a TCP port: is it running, and does a firewall "
+                           "block that?); asking again every " +
+                           secondsText(_config.retrySeconds);
+            return;
+        }
+        ::close(_listenFd);
+        _listenFd = -1;
+    } else {
+        pollfd p{_fd, POLLOUT, 0};
+        if (::poll(&p, 1, 0) <= 0) {
+            if (now - _linkSince > kHandshakeSeconds)
+                disconnect(now, "cannot connect: no answer within " + secondsText(kHandshakeSeconds));
+            return;
+        }
+        int error = 0;
+        socklen_t len = sizeof error;
+        ::getsockopt(_fd, SOL_SOCKET, SO_ERROR, &error, &len);
+        if (error != 0) return disconnect(now, std::string("cannot connect: ") + std::strerror(error));
     }
-    int error = 0;
-    socklen_t len = sizeof error;
-    ::getsockopt(_fd, SOL_SOCKET, SO_ERROR, &error, &len);
-    if (error != 0) return disconnect(now, std::string("cannot connect: ") + std::strerror(error));
+    const int one = 1;
+    ::setsockopt(_fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
     const std::string cookie = encodeVrpnCookie();
     if (::send(_fd, cookie.data(), cookie.size(), MSG_NOSIGNAL) != static_cast<ssize_t>(cookie.size()))
         return disconnect(now, std::string("cannot send the cookie: ") + std::strerror(errno));
     _link = Link::Open;
     _linkSince = now;
     _session.emplace(_config.device, _config.buttonDevice);
+    if (_config.udp) openUdp(now);
+}
+
+// A UDP socket on the TCP connection's local address (replacing the request's), and the
+// message that tells the server to send its low-latency messages there. Sent right after the
+// cookie: the server reads it once it has checked the cookie.
+void VrpnSource::openUdp(double now) {
+    ::close(_udpFd);
+    sockaddr_in local{};
+    socklen_t len = sizeof local;
+    ::getsockname(_fd, reinterpret_cast<sockaddr*>(&local), &len);
+    local.sin_port = 0;
+    _udpFd = ::socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+    if (_udpFd < 0 || ::bind(_udpFd, reinterpret_cast<const sockaddr*>(&local), sizeof local) != 0)
+        return disconnect(now, std::string("cannot open the UDP socket: ") + std::strerror(errno));
+    ::getsockname(_udpFd, reinterpret_cast<sockaddr*>(&local), &len);
+    const std::string message =
+        encodeVrpnUdpDescription(ntohs(local.sin_port), addressText(ntohl(local.sin_addr.s_addr)), 0.0);
+    if (::send(_fd, message.data(), message.size(), MSG_NOSIGNAL) != static_cast<ssize_t>(message.size()))
+        disconnect(now, std::string("cannot send the UDP description: ") + std::strerror(errno));
 }
 
 void VrpnSource::disconnect(double now, const std::string& why) {
-    if (_fd >= 0) ::close(_fd);
-    _fd = -1;
+    for (int* fd : {&_fd, &_udpFd, &_listenFd}) {
+        if (*fd >= 0) ::close(*fd);
+        *fd = -1;
+    }
     _link = Link::Closed;
     _session.reset();
     _headTracked = _handTracked = false;
@@ -139,6 +213,26 @@ void VrpnSource::receive(double now) {
         disconnect(now, "no VRPN cookie within " + secondsText(kHandshakeSeconds) + " (is this a VRPN server?)");
 }
 
+// Datagrams from the server's host only; each holds whole messages.
+void VrpnSource::receiveUdp(double now) {
+    char datagram[65536];
+    for (int i = 0; i < kMaxDatagramsPerPoll; ++i) {
+        sockaddr_in from{};
+        socklen_t len = sizeof from;
+        const ssize_t n = ::recvfrom(_udpFd, datagram, sizeof datagram, 0, reinterpret_cast<sockaddr*>(&from), &len);
+        if (n < 0) return;  // EAGAIN (nothing pending) or a transient error: try next poll
+        if (ntohl(from.sin_addr.s_addr) != _address) {
+            ++_stats.packets;
+            ++_stats.foreign;
+            continue;
+        }
+        VrpnUpdates updates;
+        _session->feedDatagram(std::string_view(datagram, static_cast<std::size_t>(n)), updates);
+        _udpMessages += updates.messages;
+        apply(updates, now);
+    }
+}
+
 bool VrpnSource::plausible(const Pose& pose) const {
     return _config.volume.contains(glm::dvec3(_config.caveFromTracker * glm::dvec4(pose.position, 1.0)));
 }
@@ -173,6 +267,7 @@ Sample VrpnSource::poll(double now) {
     if (_link == Link::Closed && now >= _nextAttempt) startConnect(now);
     if (_link == Link::Connecting) finishConnect(now);
     if (_link == Link::Open) receive(now);
+    if (_link == Link::Open && _udpFd >= 0) receiveUdp(now);
     Sample s = _latest;
     s.time = now;
     s.headValid = _headTracked && now - _headTime <= _config.staleSeconds;
@@ -186,12 +281,14 @@ void VrpnSource::wait(double now, double timeoutSeconds) const {
         std::this_thread::sleep_for(std::chrono::duration<double>(until));
         return;
     }
-    pollfd p{_fd, static_cast<short>(_link == Link::Connecting ? POLLOUT : POLLIN), 0};
-    ::poll(&p, 1, static_cast<int>(std::ceil(timeoutSeconds * 1000.0)));
+    pollfd p{_fd, POLLIN, 0};
+    if (_link == Link::Connecting) p = _config.udp ? pollfd{_listenFd, POLLIN, 0} : pollfd{_fd, POLLOUT, 0};
+    pollfd both[2] = {p, {_udpFd, POLLIN, 0}};
+    ::poll(both, _link == Link::Open && _udpFd >= 0 ? 2 : 1, static_cast<int>(std::ceil(timeoutSeconds * 1000.0)));
 }
 
 std::unique_ptr<TrackerSource> makeVrpnSource(const TrackerSpec& spec, const TrackerContext& context) {
-    spec.expectParams({"head", "hand", "buttons", "stale", "retry", "volume"});
+    spec.expectParams({"head", "hand", "buttons", "udp", "stale", "retry", "volume"});
     VrpnConfig c;
     c.caveFromTracker = context.caveFromTracker;
     c.volume = spec.has("volume") ? parseTrackingVolume(spec) : context.volume;
@@ -216,6 +313,7 @@ std::unique_ptr<TrackerSource> makeVrpnSource(const TrackerSpec& spec, const Tra
     if (c.headSensor >= 0 && c.headSensor == c.handSensor)
         spec.fail("head and hand: expected two different sensors, got " + std::to_string(c.headSensor) + " for both");
     c.buttonDevice = spec.get("buttons", c.device);
+    c.udp = spec.flag("udp", false);
     c.staleSeconds = spec.number("stale", 0.1, 0.001, 10.0);
     c.retrySeconds = spec.number("retry", 1.0, 0.01, 60.0);
     try {

@@ -113,6 +113,10 @@ std::string encodeVrpnMessage(std::int32_t sender, std::int32_t type, double tim
     return out;
 }
 
+std::string encodeVrpnUdpDescription(int port, const std::string& address, double time) {
+    return encodeVrpnMessage(port, kVrpnUdpDescription, time, std::string_view(address.c_str(), address.size() + 1));
+}
+
 std::string encodeVrpnName(std::string_view name) {
     std::string out;
     putU32(out, static_cast<std::uint32_t>(name.size() + 1));
@@ -209,6 +213,20 @@ bool VrpnSession::feed(std::string_view bytes, VrpnUpdates& out) {
     }
     _buffer.erase(0, at);
     return true;
+}
+
+void VrpnSession::feedDatagram(std::string_view datagram, VrpnUpdates& out) {
+    if (failed() || !_cookieReceived) return;
+    while (!datagram.empty()) {
+        const VrpnTaken t = takeVrpnMessage(datagram);
+        if (t.status != VrpnTake::Message) {
+            ++out.malformed;
+            return;
+        }
+        ++out.messages;
+        handle(t.message, out);
+        datagram.remove_prefix(t.consumed);
+    }
 }
 
 void VrpnSession::describe(const VrpnMessage& m, VrpnUpdates& out) {

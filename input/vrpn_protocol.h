@@ -9,9 +9,12 @@
 // bytes, then the payload padded with zeros to a multiple of 8 bytes. `length` is the header's
 // 24 bytes plus the unpadded payload length. Ids are the sender's own: a message of type -1
 // (sender description) or -2 (type description) names the id in its sender field, and its
-// payload is a big-endian int32 n = strlen(name) + 1 followed by the name and its NUL. Other
-// negative types (-3 UDP description, -4 log description) are system messages a TCP-only
-// client ignores. Device messages used here (all big-endian):
+// payload is a big-endian int32 n = strlen(name) + 1 followed by the name and its NUL. A UDP
+// description (type -3) carries a UDP port in its sender field and an IPv4 address with its NUL
+// as payload: a client that sends one gets the server's low-latency messages (tracker reports)
+// as UDP datagrams to that address and port, each datagram holding whole messages framed as on
+// TCP; the rest stays on TCP. Other negative types (-4 log description) are ignored here.
+// Device messages used here (all big-endian):
 //   "vrpn_Tracker Pos_Quat"  int32 sensor, int32 padding, 3 doubles position (metres),
 //                            4 doubles quaternion x, y, z, w                    (64 bytes)
 //   "vrpn_Button Change"     int32 button, int32 state (0 released, 1 pressed)  (8 bytes)
@@ -44,6 +47,7 @@ inline constexpr std::size_t kVrpnHeaderSize = 24;
 inline constexpr std::size_t kVrpnMaxPayload = 64000;
 inline constexpr std::int32_t kVrpnSenderDescription = -1;
 inline constexpr std::int32_t kVrpnTypeDescription = -2;
+inline constexpr std::int32_t kVrpnUdpDescription = -3;
 
 // The cookie this client sends: version 07.38, no remote logging.
 std::string encodeVrpnCookie();
@@ -74,6 +78,9 @@ VrpnTaken takeVrpnMessage(std::string_view bytes);
 
 // A whole message, header and padding, as sent on the wire (for tests and simulators).
 std::string encodeVrpnMessage(std::int32_t sender, std::int32_t type, double time, std::string_view payload);
+
+// The message asking the server to send low-latency messages to `address` (dotted IPv4) : port.
+std::string encodeVrpnUdpDescription(int port, const std::string& address, double time);
 
 // The payload of a sender or type description, and its parser (nullopt unless n fits the
 // payload, the name ends with its NUL, has no other NUL and is at most 99 characters).
@@ -116,6 +123,10 @@ public:
     // Appends `bytes` to what is buffered and handles every complete message. Returns false on a
     // framing error (error() says what); the session is then dead and ignores further bytes.
     bool feed(std::string_view bytes, VrpnUpdates& out);
+    // Handles the messages of one UDP datagram, with the names learnt on TCP (messages before
+    // the cookie are ignored). A datagram that ends inside a message, or whose header cannot be
+    // framed, counts as malformed from that point; the session goes on.
+    void feedDatagram(std::string_view datagram, VrpnUpdates& out);
 
     bool cookieReceived() const { return _cookieReceived; }
     bool failed() const { return !_error.empty(); }

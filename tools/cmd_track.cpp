@@ -29,7 +29,7 @@ const char* const kTrackUsage =
     "quaternion, dropped = 1 while the head is not tracked (held, easing or default pose).\n"
     "SPEC: sim:walk[?seed=N&dropouts=1], file:PATH[?loop=1], replay:PATH,\n"
     "      dtrack:udp://HOST:PORT[?body=1&hand=0&bind=ADDR], opentrack:udp://HOST:PORT[?bind=ADDR],\n"
-    "      vrpn:DEVICE@HOST[:PORT][?head=0&hand=1&buttons=NAME]\n"
+    "      vrpn:DEVICE@HOST[:PORT][?head=0&hand=1&buttons=NAME&udp=0]\n"
     "Simulated, file and replay sources run on a virtual clock (t = i / HZ, as fast as possible,\n"
     "reproducible); network sources run in real time. A replay without --seconds runs to the end\n"
     "of the recording. --record writes the raw samples and wand events as a replayable recording;\n"

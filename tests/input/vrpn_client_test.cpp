@@ -193,5 +193,20 @@ TEST(VrpnClient, ARefusedConnectionSaysSo) {
     EXPECT_FALSE(client.poll(now += 0.01).headValid);
 }
 
+TEST(VrpnClient, AServerThatNeverCallsBackSaysSo) {
+    int port = 0;
+    {
+        FakeServer closed;
+        port = closed.port();
+    }
+    VrpnConfig c = configFor(port);
+    c.udp = true;  // the server is asked to connect back; nobody does
+    VrpnSource client(c);
+    for (double now = 0.0; now < 4.0; now += 0.5) client.poll(now);  // the poll clock, not wall time
+    EXPECT_THAT(client.problem(), HasSubstr("the server has not connected back within 3 s"));
+    EXPECT_THAT(client.problem(), HasSubstr("asking again every 0.05 s"));
+    EXPECT_FALSE(client.connected());
+}
+
 }  // namespace
 }  // namespace cavewall::input

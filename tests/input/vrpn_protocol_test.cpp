@@ -224,6 +224,33 @@ TEST(VrpnSession, FramingErrorsStopTheSessionWithTheReason) {
     }
 }
 
+TEST(VrpnSession, DatagramsCarryWholeMessagesWithTheNamesLearntOnTcp) {
+    VrpnSession session("Tracker0", "Tracker0");
+    VrpnUpdates u;
+    session.feedDatagram(poseMessage(3, 0, {0.0, 1.7, 0.0}, {1.0, 0.0, 0.0, 0.0}), u);
+    EXPECT_EQ(u.messages, 0u);  // before the cookie nothing counts
+    ASSERT_TRUE(session.feed(serverGreeting(), u));
+    u = {};
+    const std::string two = poseMessage(3, 0, {0.0, 1.7, 0.0}, {1.0, 0.0, 0.0, 0.0}) +
+                            poseMessage(3, 1, {0.2, 1.1, 0.0}, {1.0, 0.0, 0.0, 0.0});
+    session.feedDatagram(two, u);
+    ASSERT_EQ(u.poses.size(), 2u);
+    EXPECT_EQ(u.poses[1].sensor, 1);
+    u = {};
+    session.feedDatagram(std::string_view(two).substr(0, two.size() - 8), u);  // the second one cut short
+    EXPECT_EQ(u.poses.size(), 1u);
+    EXPECT_EQ(u.malformed, 1u);
+    EXPECT_FALSE(session.failed());  // a bad datagram is dropped, the connection goes on
+}
+
+TEST(VrpnProtocol, UdpDescriptionNamesThePortAndAddress) {
+    const VrpnTaken t = takeVrpnMessage(encodeVrpnUdpDescription(40123, "127.0.0.1", 0.0));
+    ASSERT_EQ(t.status, VrpnTake::Message);
+    EXPECT_EQ(t.message.type, -3);
+    EXPECT_EQ(t.message.sender, 40123);  // the port travels in the sender field
+    EXPECT_EQ(t.message.payload, std::string("127.0.0.1\0", 10));
+}
+
 // Random bytes after a valid start never crash, never give a non-finite or non-unit pose.
 TEST(VrpnSession, RandomBytesNeverGiveABadPose) {
     std::mt19937 rng(7);
