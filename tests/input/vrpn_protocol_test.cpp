@@ -53,9 +53,10 @@ TEST(VrpnProtocol, CookieIsTwentyFourBytesAndChecksTheMajorVersion) {
 
 TEST(VrpnProtocol, MessageHeaderAndPaddingRoundTrip) {
     const std::string m = encodeVrpnMessage(4, 11, 1700000000.25, "abc");
-    ASSERT_EQ(m.size(), 24u + 8u);        // header padded to 24, 3 payload bytes padded to 8
-    EXPECT_EQ(m.substr(0, 4), be32(27));  // the length counts the unpadded payload
-    const VrpnTaken t = takeVrpnMessage(m + "next");
+    ASSERT_EQ(m.size(), 24u + 8u);          // header padded to 24, 3 payload bytes padded to 8
+    EXPECT_EQ(m.substr(0, 4), be32(27));    // the length counts the unpadded payload
+    const std::string stream = m + "next";  // the payload points into the bytes given
+    const VrpnTaken t = takeVrpnMessage(stream);
     ASSERT_EQ(t.status, VrpnTake::Message);
     EXPECT_EQ(t.consumed, m.size());
     EXPECT_EQ(t.message.sender, 4);
@@ -244,7 +245,8 @@ TEST(VrpnSession, DatagramsCarryWholeMessagesWithTheNamesLearntOnTcp) {
 }
 
 TEST(VrpnProtocol, UdpDescriptionNamesThePortAndAddress) {
-    const VrpnTaken t = takeVrpnMessage(encodeVrpnUdpDescription(40123, "127.0.0.1", 0.0));
+    const std::string message = encodeVrpnUdpDescription(40123, "127.0.0.1", 0.0);
+    const VrpnTaken t = takeVrpnMessage(message);
     ASSERT_EQ(t.status, VrpnTake::Message);
     EXPECT_EQ(t.message.type, -3);
     EXPECT_EQ(t.message.sender, 40123);  // the port travels in the sender field
