@@ -180,6 +180,16 @@ TEST(VrpnClient, GarbageIsAClearErrorAndTheClientConnectsAgain) {
     EXPECT_THAT(client.problem(), HasSubstr("bad data from the server: message length 4294967295"));
 }
 
+TEST(VrpnClient, ASilentServiceOnThePortSaysSo) {
+    FakeServer server;  // accepts, then sends nothing
+    VrpnSource client(configFor(server.port()));
+    double now = 0.0;
+    ASSERT_TRUE(server.accept(client, now));
+    for (int i = 0; i < 8 && client.problem().empty(); ++i) client.poll(now += 0.5);  // the poll clock
+    EXPECT_THAT(client.problem(), HasSubstr("no VRPN cookie within 3 s (is this a VRPN server?)"));
+    EXPECT_FALSE(client.connected());
+}
+
 TEST(VrpnClient, ARefusedConnectionSaysSo) {
     int port = 0;
     {
