@@ -172,8 +172,10 @@ walkthrough::FrameInput RunInput::trackedFrame(long i, double t, const std::vect
     input::Sample sample = _tracker->poll(t);
     if (_watch) {
         _watch->update(t, _tracker->stats());
-        if (const std::optional<std::string> warning = _watch->warning())
-            std::cerr << "run: warning: " << *warning << std::endl;
+        if (const std::optional<std::string> warning = _watch->warning()) {
+            const std::string problem = _tracker->problem();
+            std::cerr << "run: warning: " << *warning << (problem.empty() ? "" : "; " + problem) << std::endl;
+        }
     }
     std::vector<input::Event> events = _tracker->takeEvents();
     if (!_replay) input::appendWandEvents(_lastWand, sample.wand, t, events);

@@ -192,8 +192,9 @@ void parseInvert(const TrackerSpec& spec, OpenTrackInvert& inv) {
     }
 }
 
-// "x0,y0,z0,x1,y1,z1": the corners of a box in the cave frame, metres.
-config::TrackingVolume parseVolume(const TrackerSpec& spec) {
+}  // namespace
+
+config::TrackingVolume parseTrackingVolume(const TrackerSpec& spec) {
     const std::string text = spec.get("volume", "");
     double v[6];
     const char* p = text.c_str();
@@ -213,8 +214,6 @@ config::TrackingVolume parseVolume(const TrackerSpec& spec) {
     return volume;
 }
 
-}  // namespace
-
 std::unique_ptr<TrackerSource> makeNetworkSource(const TrackerSpec& spec, const TrackerContext& context) {
     NetworkConfig c;
     c.caveFromTracker = context.caveFromTracker;
@@ -224,7 +223,7 @@ std::unique_ptr<TrackerSource> makeNetworkSource(const TrackerSpec& spec, const 
         spec.expectParams({"body", "hand", "bind", "stale", "volume"});
     else
         spec.expectParams({"bind", "stale", "invert", "volume"});
-    if (spec.has("volume")) c.volume = parseVolume(spec);
+    if (spec.has("volume")) c.volume = parseTrackingVolume(spec);
     const std::string& target = spec.target();
     const auto colon = target.rfind(':');
     if (target.rfind("udp://", 0) != 0 || colon == std::string::npos || colon < 6)

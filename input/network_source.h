@@ -86,6 +86,10 @@ private:
     bool _headTracked = false, _handTracked = false;
 };
 
+// The spec's `volume=x0,y0,z0,x1,y1,z1` (the corners of a box in the cave frame, metres).
+// Throws Error naming the spec for anything else.
+config::TrackingVolume parseTrackingVolume(const TrackerSpec& spec);
+
 // "dtrack:udp://..." and "opentrack:udp://...".
 // The context gives the calibration and the tracking volume.
 std::unique_ptr<TrackerSource> makeNetworkSource(const TrackerSpec& spec, const TrackerContext& context = {});

@@ -5,6 +5,7 @@
 #include "input/path_file.h"
 #include "input/recording.h"
 #include "input/sim_walk.h"
+#include "input/vrpn_client.h"
 
 #include <algorithm>
 #include <charconv>
@@ -17,8 +18,8 @@ TrackerSpec TrackerSpec::parse(std::string_view spec) {
     const auto colon = spec.find(':');
     if (colon == std::string_view::npos || colon == 0)
         s.fail(
-            "expected SCHEME:TARGET such as sim:walk, file:PATH, replay:PATH, dtrack:udp://HOST:PORT or "
-            "opentrack:udp://HOST:PORT");
+            "expected SCHEME:TARGET such as sim:walk, file:PATH, replay:PATH, dtrack:udp://HOST:PORT, "
+            "opentrack:udp://HOST:PORT or vrpn:DEVICE@HOST");
     s._scheme = std::string(spec.substr(0, colon));
     std::string_view rest = spec.substr(colon + 1);
     const auto question = rest.find('?');
@@ -111,7 +112,8 @@ std::unique_ptr<TrackerSource> makeTracker(std::string_view text, const TrackerC
     if (spec.scheme() == "file") return makePathFileSource(spec);
     if (spec.scheme() == "replay") return makeReplaySource(spec);
     if (spec.scheme() == "dtrack" || spec.scheme() == "opentrack") return makeNetworkSource(spec, context);
-    spec.fail("unknown scheme '" + spec.scheme() + "' (expected one of: sim, file, replay, dtrack, opentrack)");
+    if (spec.scheme() == "vrpn") return makeVrpnSource(spec, context);
+    spec.fail("unknown scheme '" + spec.scheme() + "' (expected one of: sim, file, replay, dtrack, opentrack, vrpn)");
 }
 
 }  // namespace cavewall::input

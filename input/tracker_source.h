@@ -8,6 +8,7 @@
 //   replay:PATH                        a recording made by `cavewall track --record` (recording.h)
 //   dtrack:udp://HOST:PORT[?body=1&hand=0&bind=ADDR&stale=0.1]   ART DTrack2 ASCII (network_source.h)
 //   opentrack:udp://HOST:PORT[?bind=ADDR&stale=0.1&invert=...]    opentrack UDP (network_source.h)
+//   vrpn:DEVICE@HOST[:PORT][?head=0&hand=1&buttons=NAME&udp=0&stale=0.1&retry=1]   VRPN (vrpn_client.h)
 // For the UDP sources PORT is the local port to listen on (0 = any free port) and HOST the
 // address of the tracker PC; only datagrams from HOST are accepted ("*" or 0.0.0.0 = any sender).
 // The listener binds to 127.0.0.1 unless `bind` says otherwise, so a non-loopback HOST needs
@@ -58,6 +59,9 @@ public:
     virtual bool isLive() const { return false; }
     // One line for logs: "dtrack listening on 127.0.0.1:5000".
     virtual std::string describe() const = 0;
+    // The newest problem of a live source that is not a packet drop (a lost connection, a
+    // refused one), as a line for logs; empty while there is none.
+    virtual std::string problem() const { return {}; }
 };
 
 // What sources may need to know about the installation.

@@ -28,7 +28,8 @@ const char* const kTrackUsage =
     "t in seconds from the start, position in metres in the cave frame, orientation as a unit\n"
     "quaternion, dropped = 1 while the head is not tracked (held, easing or default pose).\n"
     "SPEC: sim:walk[?seed=N&dropouts=1], file:PATH[?loop=1], replay:PATH,\n"
-    "      dtrack:udp://HOST:PORT[?body=1&hand=0&bind=ADDR], opentrack:udp://HOST:PORT[?bind=ADDR]\n"
+    "      dtrack:udp://HOST:PORT[?body=1&hand=0&bind=ADDR], opentrack:udp://HOST:PORT[?bind=ADDR],\n"
+    "      vrpn:DEVICE@HOST[:PORT][?head=0&hand=1&buttons=NAME&udp=0]\n"
     "Simulated, file and replay sources run on a virtual clock (t = i / HZ, as fast as possible,\n"
     "reproducible); network sources run in real time. A replay without --seconds runs to the end\n"
     "of the recording. --record writes the raw samples and wand events as a replayable recording;\n"
@@ -114,6 +115,7 @@ void printSummary(const input::TrackerSource& source, const TrackLoop& loop) {
         std::cerr << "; packets " << s.packets << ", accepted " << s.accepted << ", dropped " << s.dropped()
                   << " (malformed " << s.malformed << ", non-finite " << s.nonFinite << ", foreign " << s.foreign
                   << ", outside the tracking volume " << s.outside << ")";
+    if (!source.problem().empty()) std::cerr << "; " << source.problem();
     std::cerr << "\n";
 }
 

@@ -1,8 +1,9 @@
 #!/bin/sh
 # Builds and runs the whole test suite in two builds, each test running once:
 # 1. A release build of the product with every test that needs more than the unit label gives:
-#    OpenGL contexts (gl), end-to-end runs of the cavewall executable (cli), windows under Xvfb
-#    and MPI ranks (mpi). The unit-labelled tests are left out of it (CAVEWALL_UNIT_TESTS=OFF).
+#    OpenGL contexts (gl), end-to-end runs of the cavewall executable (cli), windows under Xvfb,
+#    MPI ranks (mpi) and the VRPN client against the real VRPN server (net). The unit-labelled
+#    tests are left out of it (CAVEWALL_UNIT_TESTS=OFF).
 # 2. A headless-only build (no GLFW, no MPI) under AddressSanitizer + UndefinedBehaviorSanitizer,
 #    which also proves that such a build works, running every unit test and the fuzz corpora's
 #    replays. It compiles only what those run (the unit-tests target), at -O1 with line tables

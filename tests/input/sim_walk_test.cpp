@@ -102,7 +102,7 @@ TEST(TrackerSpec, BadSpecsAreErrors) {
         {"", "tracker '': expected SCHEME:TARGET"},
         {"walk", "tracker 'walk': expected SCHEME:TARGET"},
         {"usb:wand",
-         "tracker 'usb:wand': unknown scheme 'usb' (expected one of: sim, file, replay, dtrack, opentrack)"},
+         "tracker 'usb:wand': unknown scheme 'usb' (expected one of: sim, file, replay, dtrack, opentrack, vrpn)"},
         {"sim:run", "unknown simulation 'run' (expected: walk)"},
         {"sim:walk?seed=-1", "seed: expected an integer in [0, 9223372036854775807], got \"-1\""},
         {"sim:walk?seed=1.5", "seed: expected an integer in [0, 9223372036854775807], got \"1.5\""},
