@@ -30,7 +30,9 @@ PlotPanel errorPanel(const BenchReport& report, const std::string& title, const 
         const ModeResult& m = report.modes[i];
         const double x = m.frameMs.p50, y = error.value(m);
         const bool compared = m.error.frames > 0 || i == 0;  // the reference compares with itself
-        panel.series.push_back({"#" + std::to_string(i + 1) + " " + modeLabel(m), {}});
+        PlotSeries series;
+        series.name = "#" + std::to_string(i + 1) + " " + modeLabel(m);
+        panel.series.push_back(std::move(series));
         if (!compared || !std::isfinite(x) || !std::isfinite(y) || y <= 0.0) continue;
         panel.series.back().points = {{x, y, false, &m == control, &m == alternative}};
         tradeOffs.push_back({x, error.rank(m)});

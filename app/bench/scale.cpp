@@ -219,7 +219,7 @@ Figure scaleFigure(const ScaleReport& report, const std::string& title, const Pl
     panel.x = {"triangles in the model", "millions", true};
     panel.y = y;
     for (ScaleMode m : kScaleModes) {
-        PlotSeries s{seriesName(m), {}, SeriesStyle::Line};
+        PlotSeries s{.name = seriesName(m), .style = SeriesStyle::Line};
         for (const ScaleRow* r : rowsOf(report, m))
             if (std::isfinite(value(*r))) s.points.push_back({millions(r->triangles), value(*r)});
         if (!s.points.empty()) panel.series.push_back(std::move(s));

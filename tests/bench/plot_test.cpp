@@ -29,9 +29,9 @@ Figure sampleFigure() {
     panel.y = {"pooled PSNR", "dB", false};
     panel.controlName = "control: cells without textures";
     panel.alternativeName = "best alternative: full geometry with levels of detail";
-    panel.series = {{"walls a=10 blend", {{4.0, 30.0}}},
-                    {"cells", {{2.0, 25.0, true, true, false}}},
-                    {"full lod 1px", {{9.0, 40.0, true, false, true}}}};
+    panel.series = {{.name = "walls a=10 blend", .points = {{4.0, 30.0}}},
+                    {.name = "cells", .points = {{2.0, 25.0, true, true, false}}},
+                    {.name = "full lod 1px", .points = {{9.0, 40.0, true, false, true}}}};
     Figure figure;
     figure.panels = {panel};
     figure.width = 480;
@@ -101,7 +101,7 @@ TEST(PlotScript, WithoutFlagsThereIsNoFrontControlOrAlternative) {
 
 TEST(PlotScript, LineSeriesAreJoinedInXOrder) {
     Figure figure = sampleFigure();
-    figure.panels[0].series = {{"walls", {{8.0, 3.0}, {2.0, 1.0}}, SeriesStyle::Line}};
+    figure.panels[0].series = {{.name = "walls", .points = {{8.0, 3.0}, {2.0, 1.0}}, .style = SeriesStyle::Line}};
     const std::string script = gnuplotScript(figure, "out.png");
     EXPECT_THAT(script, HasSubstr("$p0_s0 << EOD\n2 1\n8 3\nEOD\n"));
     EXPECT_THAT(script, HasSubstr("with linespoints"));
@@ -161,7 +161,7 @@ TEST(PlotScript, ShapesAreDrawnOneByOneAndPolygonsClosed) {
     panel.y = {"z", "m", false, false, true};
     panel.equalScale = true;
     panel.series = {{"cells", {}, SeriesStyle::Filled, {{{0, 0}, {2, 0}, {2, 2}}, {{3, 3}, {5, 3}, {5, 5}}}, "#00a000"},
-                    {"walls", {}, SeriesStyle::Paths, {{{0, 0}, {0, 5}}}}};
+                    {.name = "walls", .style = SeriesStyle::Paths, .shapes = {{{0, 0}, {0, 5}}}}};
     Figure figure;
     figure.panels = {panel};
     const std::string script = gnuplotScript(figure, "plan.png");

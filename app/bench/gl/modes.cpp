@@ -58,8 +58,8 @@ FrameCost frameCost(const walkthrough::FrameResult& r) {
 
 ModeAccumulator::ModeAccumulator(ModeResult mode, const display::Display& display)
     : _mode(std::move(mode)), _display(display), _errors(display.screens().size()),
-      _screenCpu(display.screens().size()), _screenTriangles(display.screens().size()),
-      _screenDrawCalls(display.screens().size()), _screenStereo(display.screens().size()) {
+      _screenStereo(display.screens().size()), _screenCpu(display.screens().size()),
+      _screenTriangles(display.screens().size()), _screenDrawCalls(display.screens().size()) {
     _mode.screens.clear();
     for (const auto& s : display.screens()) {
         ScreenResult screen;
