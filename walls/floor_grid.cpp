@@ -1,12 +1,17 @@
 #include "walls/floor_grid.h"
 
+#include "config/error.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <string>
 
 namespace cavewall::walls {
 
 namespace {
+
+constexpr double kMaxCells = 16e6;  // a storey's grid, at most (coarser cells beyond)
 
 // The cell index range [first, last] whose centres lie in [lo, hi] along one axis.
 std::pair<int, int> centreRange(double lo, double hi, double origin, double cell, int n) {
@@ -179,8 +184,13 @@ void markFloorTriangle(FloorGrid& g, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
 
 StoreyGrid rasteriseStorey(const scenes::Scene& scene, double floorY, double ceilingY, glm::dvec2 lo, glm::dvec2 hi,
                            const FloorGridOptions& options) {
+    if (!(options.cellSize > 0.0) || !std::isfinite(options.cellSize))
+        throw Error("floor grid: cell size out of range (expected > 0 m, got " + std::to_string(options.cellSize) +
+                    ")");
     StoreyGrid out;
-    out.grid = makeFloorGrid(lo - options.margin, hi + options.margin, options.cellSize);
+    const glm::dvec2 size = glm::max(hi - lo + 2.0 * options.margin, glm::dvec2(0.0));
+    const double cellSize = std::max(options.cellSize, std::sqrt(size.x * size.y / kMaxCells));
+    out.grid = makeFloorGrid(lo - options.margin, hi + options.margin, cellSize);
     FloorGrid& g = out.grid;
     const double minUp = std::cos(glm::radians(10.0));
     floorY = walkingFloor(scene, g, floorY, options);

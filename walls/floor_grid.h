@@ -72,7 +72,9 @@ struct FloorGridOptions {
 };
 
 // The grid of storey [floorY, ceilingY) over its floor's (x, z) bounds [lo, hi] widened by
-// options.margin, how many objects were taken as wall elements and the walking floor.
+// options.margin, how many objects were taken as wall elements and the walking floor. Cells are
+// options.cellSize, coarser where the grid would exceed 16 million cells (400 m x 400 m at 0.1 m).
+// Throws cavewall::Error for a cell size that is not positive.
 struct StoreyGrid {
     FloorGrid grid;
     int wallElements = 0;

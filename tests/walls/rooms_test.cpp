@@ -152,6 +152,13 @@ TEST(Rooms, RejectsBadOptionsByName) {
     o.maxDoorWidth = 0.5;  // below the minimum door width
     EXPECT_THAT([&] { findRooms(threeRooms(), o); },
                 ::testing::ThrowsMessage<Error>(HasSubstr("maximum door width out of range")));
+    FloorGridOptions grid;
+    grid.cellSize = 0.0;
+    EXPECT_THAT(
+        [&] {
+            rasteriseStorey(scenes::Scene{}, 0.0, 3.0, {0.0, 0.0}, {1.0, 1.0}, grid);
+        },
+        ::testing::ThrowsMessage<Error>(HasSubstr("floor grid: cell size out of range")));
 }
 
 // Boxes with their bottom at y0: a floor slab, walls 3 m high with a 0.9 m gap, a door leaf
@@ -278,9 +285,15 @@ TEST(Rooms, TheClinicsStoreysHaveRoomsAndDoorways) {
         writePlanImage(rooms.grid.grid, rooms.plan,
                        describeRooms(base, rooms.grid.grid, rooms.plan, s.floorY, s.ceilingY, 1.7),
                        folder / ("storey" + std::to_string(i) + ".png"));
-        std::printf("storey %zu: %d wall elements, %zu rooms, %zu doorways, %d exits, %.1f s\n", i,
-                    rooms.grid.wallElements, rooms.plan.rooms.size(), rooms.plan.doorways.size(), rooms.plan.exits,
-                    seconds);
+        std::vector<double> widths;
+        for (const Doorway& d : rooms.plan.doorways) widths.push_back(d.width);
+        std::sort(widths.begin(), widths.end());
+        const double median = widths.empty() ? 0.0 : widths[widths.size() / 2];
+        std::printf(
+            "storey %zu: %d wall elements, %zu rooms, %zu doorways (median clear width %.2f m), %d exits, "
+            "%.1f s\n",
+            i, rooms.grid.wallElements, rooms.plan.rooms.size(), rooms.plan.doorways.size(), median, rooms.plan.exits,
+            seconds);
         EXPECT_GE(rooms.plan.rooms.size(), 20u);
         EXPECT_LE(rooms.plan.rooms.size(), 300u);
         EXPECT_GE(rooms.plan.doorways.size(), 20u);
