@@ -7,6 +7,7 @@
 #include "scenes/region.h"
 #include "scenes/scene_description_io.h"
 #include "tests/support/files.h"
+#include "walls/auto_walls.h"
 #include "walls/floor_grid.h"
 #include "walls/room_cells.h"
 #include "walls/storeys.h"
@@ -191,20 +192,65 @@ TEST(Rooms, SlicesWallElementsFoundByShapeButNotDoorLeavesOrTables) {
     EXPECT_NEAR(found.plan.doorways[0].position.y, 1.95, 0.1);
 }
 
+// A model file for descriptions to name (validation wants it to exist; the scene itself is
+// built in memory), in a folder of its own.
+scenes::SceneDescription bareDescription(const std::string& name) {
+    const test::TempFolder folder("rooms_" + name);  // left in place: it only holds the file
+    test::writeFile(folder / "plan.glb", "glTF");
+    scenes::SceneDescription base;
+    base.name = name;
+    base.folder = folder.path();
+    scenes::ModelFile model;
+    model.file = "plan.glb";
+    base.models.push_back(model);
+    return base;
+}
+
+// threeRooms() built of unnamed boxes on a slab: walls 3 m high, 0.2 m thick.
+scenes::Scene threeRoomScene() {
+    scenes::Scene s;
+    auto box = [&](glm::dvec3 size, glm::dvec3 lowCentre) {
+        s.meshes.push_back(scenes::makeBox(glm::vec3(size), glm::vec4(1.0f)));
+        scenes::addObject(s, static_cast<int>(s.meshes.size()) - 1,
+                          glm::translate(glm::dmat4(1.0), lowCentre + glm::dvec3(0.0, 0.5 * size.y, 0.0)), "box");
+    };
+    box({12.2, 0.2, 4.2}, {6.0, -0.2, 2.0});
+    box({0.2, 3.0, 4.2}, {0.0, 0.0, 2.0});
+    box({0.2, 3.0, 4.2}, {12.0, 0.0, 2.0});
+    box({12.2, 3.0, 0.2}, {6.0, 0.0, 0.0});
+    box({12.2, 3.0, 0.2}, {6.0, 0.0, 4.0});
+    box({0.2, 3.0, 1.5}, {4.0, 0.0, 0.75});
+    box({0.2, 3.0, 1.6}, {4.0, 0.0, 3.2});
+    box({0.2, 3.0, 2.5}, {8.0, 0.0, 1.25});
+    box({0.2, 3.0, 0.5}, {8.0, 0.0, 3.75});
+    return s;
+}
+
+// proposeWalls on the unnamed three rooms: no line of named wall pieces, so the rooms come from
+// the floor plan; the storey reports them and --rooms chooses them.
+TEST(Rooms, ProposeWallsOffersTheFloorPlansRoomsAndRoomsChoosesThem) {
+    AutoWallsOptions o;
+    o.plan.maxResolution = 64;  // small textures: a quick plan
+    o.preferRooms = true;
+    const AutoWallsResult r = proposeWalls(threeRoomScene(), bareDescription("propose"), o);
+    ASSERT_EQ(r.storeys.size(), 1u);
+    EXPECT_EQ(r.storeys[0].wallElements, 8);  // the slab is no wall element
+    EXPECT_EQ(r.storeys[0].rooms, 3);
+    EXPECT_EQ(r.storeys[0].doorways, 2);
+    const AutoWallsCandidate& chosen = r.candidates.at(r.chosen);
+    EXPECT_TRUE(chosen.rooms);
+    EXPECT_TRUE(chosen.floorPlan);
+    EXPECT_EQ(r.description.cells.size(), 3u);
+    EXPECT_EQ(chosen.portals, 2);
+    EXPECT_EQ(chosen.virtualWalls, 0);
+}
+
 // The three rooms as cells: one rectangle each, cut along the partitions, a portal at each
 // doorway, no virtual wall, and a walk through both doors.
 TEST(Rooms, RoomCellsAreRectanglesWithPortalsAtTheDoorways) {
     const FloorGrid g = threeRooms();
     const FloorPlan p = findRooms(g);
-    static const test::TempFolder folder("rooms_cells");
-    test::writeFile(folder / "plan.glb", "glTF");
-    scenes::SceneDescription base;
-    base.name = "plan";
-    base.folder = folder.path();
-    scenes::ModelFile model;
-    model.file = "plan.glb";
-    base.models.push_back(model);
-    const scenes::SceneDescription d = describeRooms(base, g, p, 0.0, 3.0, 1.7);
+    const scenes::SceneDescription d = describeRooms(bareDescription("cells"), g, p, 0.0, 3.0, 1.7);
     EXPECT_NO_THROW(scenes::validateSceneDescription(d, "rooms"));
     ASSERT_EQ(d.cells.size(), 3u);
     for (const scenes::Cell& c : d.cells) EXPECT_GT(std::abs(scenes::regionArea(c.region)), 3.8 * 3.8);
