@@ -517,8 +517,7 @@ void addGrids(Proposals& out, const CandidateInputs& in, const Rect& walkable) {
 }
 
 // 5. The rooms of the floor plan, when it has two or more: cells cut along them
-// (walls/room_cells.h).
-// Over the texture budget, the rooms are merged into half as many cells, down to 4.
+// (walls/room_cells.h), halved while over the texture budget, down to 4.
 void addPlanRooms(Proposals& out, const CandidateInputs& in) {
     if (!in.rooms || in.rooms->plan.rooms.size() < 2) return;
     RoomCellOptions cellOptions;
@@ -607,8 +606,7 @@ Rect storeyRect(const Storey& s, const Rect& hall) {
     return r;
 }
 
-// 7. Every storey of `found` (two or more) cut on its own; the proposal stacks the chosen ones.
-// The floor plan of storey [floorY, ceilingY) over `walkable`, its figures in `out`.
+// The floor plan of storey [floorY, ceilingY) over `walkable` (5.), its figures in `out`.
 StoreyRooms storeyRooms(const scenes::Scene& scene, double floorY, double ceilingY, const Rect& walkable,
                         AutoWallsStorey& out) {
     StoreyRooms rooms = findStoreyRooms(scene, floorY, ceilingY, walkable.lo, walkable.hi);
@@ -620,6 +618,7 @@ StoreyRooms storeyRooms(const scenes::Scene& scene, double floorY, double ceilin
     return rooms;
 }
 
+// 7. Every storey of `found` (two or more) cut on its own; the proposal stacks the chosen ones.
 void proposeStoreys(AutoWallsResult& result, const scenes::Scene& scene, const Storeys& found, const ModelParts& parts,
                     const scenes::SceneDescription& named, const scenes::SceneDescription& base,
                     const AutoWallsOptions& options, const Rect& hall) {
