@@ -51,7 +51,12 @@ const char* const kWallsUsage =
     "A building with real walls (thin vertical structure pieces) gets one more candidate, the\n"
     "rooms: cells cut along the lines of real walls, each doorway a portal (as high as its lintel)\n"
     "and every piece a real wall; --rooms chooses it whatever the cost model says (the model\n"
-    "does not count what real walls hide).\n"
+    "does not count what real walls hide). A building without such lines (walls modelled as many\n"
+    "small elements) gets its rooms from each storey's floor plan: wall elements found by their\n"
+    "shape, sliced at 0.5 m and 1.2 m above the floor into a 0.1 m grid, gaps up to 1.2 m closed;\n"
+    "the floor falls into rooms, the closed gaps between two rooms are doorways (portals) and the\n"
+    "rooms are cut into rectangular cells along their walls. Prints the wall elements, rooms,\n"
+    "doorways and exits found per storey.\n"
     "A building of several storeys gets cells for each storey on its own (named \"<storey>/<cell>\",\n"
     "with the storey's floorY, its walls from its floor to its ceiling, an equal share of\n"
     "--texture-budget each) and one walk path through every storey, up the stairs found.\n"
@@ -80,6 +85,8 @@ void printStoreys(const walls::AutoWallsResult& result) {
         std::printf(
             "storey %zu: floor y %.3f m, ceiling y %.3f m, walkable x [%.2f, %.2f] z [%.2f, %.2f] m, %d cells\n", i,
             s.storey.floorY, s.storey.ceilingY, s.floorMin.x, s.floorMax.x, s.floorMin.y, s.floorMax.y, s.cells);
+        std::printf("storey %zu floor plan: %d wall elements, %d rooms (%.0f m²), %d doorways, %d exits\n", i,
+                    s.wallElements, s.rooms, s.roomArea, s.doorways, s.exits);
     }
     if (n > 1 && result.stairs.empty()) std::printf("stairs: none found (the walk path rises straight up)\n");
     for (const walls::Stair& s : result.stairs)
@@ -189,8 +196,9 @@ int runWalls(const std::vector<std::string>& words) {
             std::any_of(result.storeys.begin(), result.storeys.end(),
                         [&](const walls::AutoWallsStorey& s) { return s.chosen == static_cast<int>(i); });
         const std::string grid = c.rooms ? "rooms" : std::to_string(c.nx) + "x" + std::to_string(c.nz);
-        const std::string rooms = c.rooms ? "  (" + std::to_string(c.nx) + " x " + std::to_string(c.nz) +
-                                                " along real walls: " + std::to_string(c.portals) + " portals, " +
+        const std::string cut = c.floorPlan ? std::to_string(c.nx) + " rectangles along the floor plan's rooms"
+                                            : std::to_string(c.nx) + " x " + std::to_string(c.nz) + " along real walls";
+        const std::string rooms = c.rooms ? "  (" + cut + ": " + std::to_string(c.portals) + " portals, " +
                                                 std::to_string(c.virtualWalls) + " virtual walls)"
                                           : "";
         std::printf("%-7s %6d %12.1f %16.0f %9d %12.1f %7s%s%s\n", grid.c_str(), c.nx * c.nz, c.expectedMs,

@@ -5,6 +5,7 @@
 #include "scenes/region.h"
 #include "scenes/scene_description_io.h"
 #include "walls/plan_io.h"
+#include "walls/room_cells.h"
 #include "walls/storeys.h"
 
 #include <algorithm>
@@ -482,6 +483,7 @@ struct CandidateInputs {
     const AutoWallsOptions& options;
     const std::vector<glm::dvec3>& eyes;  // the walk cost's (6.); empty: the floor cost (4.)
     double floorY = 0.0, ceilingY = 0.0, eyeHeight = 0.0;
+    const StoreyRooms* rooms = nullptr;  // the storey's floor plan (5.)
 };
 
 // The candidates in the order tried, with their descriptions (index for index).
@@ -514,6 +516,27 @@ void addGrids(Proposals& out, const CandidateInputs& in, const Rect& walkable) {
         }
 }
 
+// 5. The rooms of the floor plan, when it has two or more: cells cut along them
+// (walls/room_cells.h), halved while over the texture budget, down to 4.
+void addPlanRooms(Proposals& out, const CandidateInputs& in) {
+    if (!in.rooms || in.rooms->plan.rooms.size() < 2) return;
+    RoomCellOptions cellOptions;
+    scenes::SceneDescription d;
+    AutoWallsCandidate c;
+    for (;; cellOptions.maxCells /= 2) {
+        d = describeRooms(in.named, in.rooms->grid.grid, in.rooms->plan, in.floorY, in.ceilingY, in.eyeHeight,
+                          cellOptions);
+        scenes::validateSceneDescription(d, "auto walls (floor plan rooms)");
+        c = evaluate(d, in.parts.content, in.parts.contentTriangles, in.options, in.eyes);
+        if (c.withinBudget || cellOptions.maxCells / 2 < 4) break;
+    }
+    c.nx = static_cast<int>(d.cells.size());
+    c.rooms = c.floorPlan = true;
+    for (const scenes::VirtualWall& w : d.walls) ++(w.kind == scenes::WallKind::Portal ? c.portals : c.virtualWalls);
+    out.candidates.push_back(c);
+    out.descriptions.push_back(std::move(d));
+}
+
 // 5. The rooms: a grid cut along the lines of real walls, its boundaries on them portals; no
 // candidate when there are no such lines.
 void addRooms(Proposals& out, const CandidateInputs& in, const Rect& walkable) {
@@ -522,7 +545,7 @@ void addRooms(Proposals& out, const CandidateInputs& in, const Rect& walkable) {
         wallLines(pieces, 0, walkable.lo.x, walkable.hi.x, walkable.hi.y - walkable.lo.y, in.floorY);
     const std::vector<double> zLines =
         wallLines(pieces, 2, walkable.lo.y, walkable.hi.y, walkable.hi.x - walkable.lo.x, in.floorY);
-    if (xLines.empty() && zLines.empty()) return;
+    if (xLines.empty() && zLines.empty()) return addPlanRooms(out, in);
     Grid g{{walkable.lo.x}, {walkable.lo.y}};
     g.xs.insert(g.xs.end(), xLines.begin(), xLines.end());
     g.zs.insert(g.zs.end(), zLines.begin(), zLines.end());
@@ -583,8 +606,20 @@ Rect storeyRect(const Storey& s, const Rect& hall) {
     return r;
 }
 
+// The floor plan of storey [floorY, ceilingY) over `walkable` (5.), its figures in `out`.
+StoreyRooms storeyRooms(const scenes::Scene& scene, double floorY, double ceilingY, const Rect& walkable,
+                        AutoWallsStorey& out) {
+    StoreyRooms rooms = findStoreyRooms(scene, floorY, ceilingY, walkable.lo, walkable.hi);
+    out.wallElements = rooms.grid.wallElements;
+    out.rooms = static_cast<int>(rooms.plan.rooms.size());
+    out.doorways = static_cast<int>(rooms.plan.doorways.size());
+    out.exits = rooms.plan.exits;
+    for (const Room& r : rooms.plan.rooms) out.roomArea += r.area;
+    return rooms;
+}
+
 // 7. Every storey of `found` (two or more) cut on its own; the proposal stacks the chosen ones.
-void proposeStoreys(AutoWallsResult& result, const Storeys& found, const ModelParts& parts,
+void proposeStoreys(AutoWallsResult& result, const scenes::Scene& scene, const Storeys& found, const ModelParts& parts,
                     const scenes::SceneDescription& named, const scenes::SceneDescription& base,
                     const AutoWallsOptions& options, const Rect& hall) {
     AutoWallsOptions each = options;
@@ -603,7 +638,9 @@ void proposeStoreys(AutoWallsResult& result, const Storeys& found, const ModelPa
             });
             if (eyes.empty()) eyes = costEyes({}, walkable.lo, walkable.hi, eyeY);
         }
-        const CandidateInputs in{named, own, each, eyes, s.floorY, s.ceilingY, base.eyeHeight};
+        AutoWallsStorey figures{s, walkable.lo, walkable.hi};
+        const StoreyRooms rooms = storeyRooms(scene, s.floorY, s.ceilingY, walkable, figures);
+        const CandidateInputs in{named, own, each, eyes, s.floorY, s.ceilingY, base.eyeHeight, &rooms};
         Proposals proposals;
         addGrids(proposals, in, walkable);
         addRooms(proposals, in, walkable);
@@ -614,7 +651,9 @@ void proposeStoreys(AutoWallsResult& result, const Storeys& found, const ModelPa
             result.candidates.push_back(c);
         }
         const int cells = static_cast<int>(proposals.descriptions[pick].cells.size());
-        result.storeys.push_back({s, walkable.lo, walkable.hi, first + pick, cells});
+        figures.chosen = first + pick;
+        figures.cells = cells;
+        result.storeys.push_back(figures);
         chosen.push_back(std::move(proposals.descriptions[pick]));
     }
     result.description = stackStoreys(chosen, found, base.eyeHeight);
@@ -671,24 +710,26 @@ AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDesc
     const Storeys found = findStoreys(horizontalFacets(scene), all.min.y, all.max.y);
     result.stairs = found.stairs;
     if (found.storeys.size() > 1) {
-        proposeStoreys(result, found, parts, named, base, options, walkable);
+        proposeStoreys(result, scene, found, parts, named, base, options, walkable);
     } else {
         // 3-5. Candidates, cost and budget (6.: the walk cost's eyes).
         const std::vector<glm::dvec3> eyes =
             options.walkCost ? costEyes(base.walkPath, walkable.lo, walkable.hi, result.floorY + base.eyeHeight)
                              : std::vector<glm::dvec3>{};
-        const CandidateInputs in{named, parts, options, eyes, result.floorY, result.ceilingY, base.eyeHeight};
+        AutoWallsStorey figures{found.storeys.front(), walkable.lo, walkable.hi};
+        const StoreyRooms rooms = storeyRooms(scene, result.floorY, result.ceilingY, walkable, figures);
+        const CandidateInputs in{named, parts, options, eyes, result.floorY, result.ceilingY, base.eyeHeight, &rooms};
         Proposals proposals;
         addGrids(proposals, in, walkable);
         addRooms(proposals, in, walkable);
         result.candidates = std::move(proposals.candidates);
         result.chosen = chooseCandidate(result.candidates, options.preferRooms);
         result.description = std::move(proposals.descriptions[result.chosen]);
-        Storey one = found.storeys.front();
-        one.floorY = result.floorY;  // 1.'s structure planes, as before storeys were found
-        one.ceilingY = result.ceilingY;
-        result.storeys.push_back(
-            {one, walkable.lo, walkable.hi, result.chosen, static_cast<int>(result.description.cells.size())});
+        figures.storey.floorY = result.floorY;  // 1.'s structure planes, as before storeys were found
+        figures.storey.ceilingY = result.ceilingY;
+        figures.chosen = result.chosen;
+        figures.cells = static_cast<int>(result.description.cells.size());
+        result.storeys.push_back(figures);
     }
     const std::vector<glm::dvec3> eyes =
         options.walkCost ? costEyes(base.walkPath, walkable.lo, walkable.hi, result.floorY + base.eyeHeight)

@@ -30,6 +30,13 @@
 //    (as high as the lowest piece above the gap: a lintel, else the ceiling), nothing where they
 //    close it; a boundary on no line stays a virtual wall. Every piece becomes a real wall.
 //    The rooms are scored like every grid and chosen when they cost the least.
+//    Without such lines (a model whose walls are many small elements nobody named), the rooms
+//    come from the storey's floor plan instead: wall elements found by their shape are sliced
+//    into an occupancy grid, gaps up to a door's width close, the free floor falls into rooms
+//    and the closed gaps between two rooms are doorways (walls/floor_grid.h, walls/rooms.h).
+//    With two rooms or more, the candidate's cells are rectangles cut along the rooms' walls,
+//    its doorways portals, its open cuts virtual walls (walls/room_cells.h); at most 48 cells,
+//    halved while its textures are over the budget (down to 4).
 // 6. Walk cost (walkCost). 4. counts only the viewer's cell, but the walkthrough also draws the
 //    cell behind a wall as geometry while the eye is in that wall's geometry zone or its
 //    texture->geometry blend strip (walls/plan.h), and a walk follows aisles, where cuts
@@ -92,6 +99,7 @@ struct AutoWallsCandidate {
     double textureMB = 0.0;          // their MiB (RGBA8 + MIP chain)
     bool withinBudget = true;
     bool rooms = false;                 // cut along real walls (5. below), not a grid
+    bool floorPlan = false;             // rooms of the floor plan (5.): nx cells, nz = 1
     int portals = 0, virtualWalls = 0;  // rooms: its portals and virtual walls
     int storey = 0;                     // the storey it cuts (AutoWallsResult::storeys)
 };
@@ -103,6 +111,10 @@ struct AutoWallsStorey {
     glm::dvec2 floorMin{0.0}, floorMax{0.0};
     int chosen = 0;  // index into AutoWallsResult::candidates
     int cells = 0;
+    // Its floor plan (5., walls/rooms.h): wall elements sliced, rooms, their m², doorways
+    // between two rooms and exits (openings to the outside).
+    int wallElements = 0, rooms = 0, doorways = 0, exits = 0;
+    double roomArea = 0.0;
 };
 
 struct AutoWallsResult {
