@@ -101,7 +101,8 @@ std::vector<RecommendRow> recommendRows(const BenchReport& report) {
                        .kind = m.wallKind,
                        .frameMs = m.frameMs.p50,
                        .psnrDb = compared ? m.error.psnrDb : NAN,
-                       .flipMean = compared ? m.error.flipMean : NAN};
+                       .flipMean = compared ? m.error.flipMean : NAN,
+                       .stereoArcmin = std::nullopt};
         if (m.error.stereoMeasured) r.stereoArcmin = m.error.stereo.meanArcmin();
         rows.push_back(std::move(r));
     }
@@ -119,7 +120,8 @@ RecommendRow scaleRow(const ScaleRow& r) {
             .kind = r.mode == ScaleMode::DepthWalls ? walls::WallKind::Depth : walls::WallKind::Flat,
             .frameMs = r.frameMs.p50,
             .psnrDb = compared ? r.psnrDb : NAN,
-            .flipMean = compared ? r.flipMean : NAN};
+            .flipMean = compared ? r.flipMean : NAN,
+            .stereoArcmin = std::nullopt};
 }
 
 }  // namespace

@@ -377,8 +377,9 @@ std::string transitionLabel(const ModeResult& m) {
 }
 
 std::string modeLabel(const ModeResult& m) {
+    const std::string prefix = m.wallKind == walls::WallKind::Depth ? "walls depth a=" : "walls a=";
     std::string label =
-        m.mode == Mode::Walls ? (m.wallKind == walls::WallKind::Depth ? "walls depth a=" : "walls a=") + num(m.alphaDeg) + " " + transitionLabel(m) : std::string(toString(m.mode));
+        m.mode == Mode::Walls ? prefix + num(m.alphaDeg) + " " + transitionLabel(m) : std::string(toString(m.mode));
     if (m.lodPixels > 0.0) label += " lod " + num(m.lodPixels) + "px";
     if (m.triangleBudget > 0) label += " budget " + std::to_string(m.triangleBudget);
     if (m.frameBudgetMs > 0.0) label += " frame " + num(m.frameBudgetMs, 3) + "ms";
@@ -460,8 +461,8 @@ std::string csvRow(const ModeResult& m, bool recommended) {
     std::string row = std::string(toString(m.mode)) + "," + num(m.alphaDeg) + "," + transitionLabel(m);
     for (double v : values) row += "," + num(v);
     for (double v : onDemand) row += "," + num(v);
-    return row + "," + num(m.speedupLod) + "," + (m.sceneTag.empty() ? "bench" : m.sceneTag) + "," + stereoCsv(m.error) +
-           (recommended ? ",1" : ",0");
+    return row + "," + num(m.speedupLod) + "," + (m.sceneTag.empty() ? "bench" : m.sceneTag) + "," +
+           stereoCsv(m.error) + (recommended ? ",1" : ",0");
 }
 
 namespace {

@@ -68,13 +68,13 @@ std::string_view toString(Mode mode);
 
 struct ModeResult {
     Mode mode = Mode::Full;
-    double alphaDeg = 0.0;                      // walls modes; 0 otherwise
-    std::optional<app::Transition> transition;  // walls modes; none otherwise
+    double alphaDeg = 0.0;                             // walls modes; 0 otherwise
+    std::optional<app::Transition> transition;         // walls modes; none otherwise
     walls::WallKind wallKind = walls::WallKind::Flat;  // walls modes: flat or depth walls (--walls)
-    bool paged = false;                         // walls modes: paged from a cold start (`cavewall run`'s paging)
-    double lodPixels = 0.0;                     // level-of-detail tolerance in pixels; 0: full detail
-    std::size_t triangleBudget = 0;             // per frame (with levels of detail); 0: none
-    double frameBudgetMs = 0.0;                 // frame-time target of the budget controller; 0: none
+    bool paged = false;                                // walls modes: paged from a cold start (`cavewall run`'s paging)
+    double lodPixels = 0.0;                            // level-of-detail tolerance in pixels; 0: full detail
+    std::size_t triangleBudget = 0;                    // per frame (with levels of detail); 0: none
+    double frameBudgetMs = 0.0;                        // frame-time target of the budget controller; 0: none
     TimeStats frameMs, cpuMs, gpuMs;
     double speedup = 1.0;  // full-geometry frame_ms_p50 / this mode's
     // Against the alternative a user would pick, full geometry with levels of detail at the
