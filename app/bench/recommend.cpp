@@ -7,12 +7,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace cavewall::bench {
 
 namespace {
 
 using config::formatNumber;
+
+// Three significant digits: enough to read the reason, as bench.md's cells do.
+std::string short3(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", v);
+    return text;
+}
 
 bool takesPart(const RecommendRow& r) {
     return std::isfinite(r.frameMs) && r.frameMs > 0.0 && !std::isnan(r.psnrDb) && !std::isnan(r.flipMean);
@@ -82,12 +90,13 @@ Recommendation recommendWalls(const std::vector<RecommendRow>& rows, const Recom
         if (stereo ? better(a, b, *a.stereoArcmin, *b.stereoArcmin) : better(a, b, a.frameMs, b.frameMs)) pick = i;
     }
     const RecommendRow& r = rows[pick];
-    std::string reason = (stereo ? "lowest stereo error, " + formatNumber(*r.stereoArcmin) + " arcmin mean, of "
+    std::string reason = (stereo ? "lowest stereo error, " + short3(*r.stereoArcmin) + " arcmin mean, of "
                                  : std::string("fastest of ")) +
-                         std::to_string(eligible.size()) + " walls modes on the front within " +
-                         formatNumber(rule.psnrWithinDb) + " dB of the best pooled PSNR (" + formatNumber(bestPsnr) +
-                         " dB): " + formatNumber(r.frameMs) + " ms median, " + formatNumber(r.psnrDb) +
-                         " dB pooled, FLIP mean " + formatNumber(r.flipMean) + kindClause(rows, front);
+                         std::to_string(eligible.size()) + (eligible.size() == 1 ? " walls mode" : " walls modes") +
+                         std::string(" on the front within ") + formatNumber(rule.psnrWithinDb) +
+                         " dB of the best pooled PSNR (" + short3(bestPsnr) + " dB): " + short3(r.frameMs) +
+                         " ms median, " + short3(r.psnrDb) + " dB pooled, FLIP mean " + short3(r.flipMean) +
+                         kindClause(rows, front);
     return {pick, reason};
 }
 

@@ -65,14 +65,14 @@ TEST(Recommend, PicksByTheStatedRule) {
          {full, control, walls("a=10", WallKind::Flat, 12.0, 37.7, 0.0038),
           walls("a=20", WallKind::Flat, 10.0, 34.3, 0.0086)},
          2,
-         "fastest of 1 walls modes"},
+         "fastest of 1 walls mode on"},
         // Mono: depth a=10 is 2.7 dB better than flat a=10, so flat is not eligible although
         // 13 % faster (1.15x, as measured on the plant).
         {"depth better by more than 1 dB",
          {full, control, walls("flat a=10", WallKind::Flat, 10.0, 37.7, 0.0038),
           walls("depth a=10", WallKind::Depth, 11.5, 40.4, 0.0028)},
          3,
-         "fastest of 1 walls modes"},
+         "fastest of 1 walls mode on"},
         // Stereo: both within 1 dB; the lowest stereo error wins although slower.
         {"stereo error decides",
          {full, control, walls("flat a=10", WallKind::Flat, 10.0, 37.7, 0.0038, 0.032),
@@ -95,7 +95,7 @@ TEST(Recommend, PicksByTheStatedRule) {
         {"non-finite rows take no part",
          {full, walls("nan", WallKind::Flat, NAN, 50.0, 0.001), walls("ok", WallKind::Flat, 10.0, 37.0, 0.004)},
          2,
-         "fastest of 1"},
+         "fastest of 1 walls mode on"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
@@ -177,7 +177,7 @@ TEST(Recommend, PlantFiguresRecommendDepthWalls) {
         scaleRow(ScaleMode::WallsBudget, 38.11, 33.4, 0.0084), scaleRow(ScaleMode::DepthWalls, 53.33, 39.1, 0.0039)};
     const std::vector<std::string> lines = scaleRecommendedLines(report);
     ASSERT_EQ(lines.size(), 1u);
-    EXPECT_THAT(lines[0], HasSubstr("recommended (2.07 M triangles): walls-depth (fastest of 1 walls modes"));
+    EXPECT_THAT(lines[0], HasSubstr("recommended (2.07 M triangles): walls-depth (fastest of 1 walls mode on"));
     EXPECT_THAT(scaleMarkdown(report), HasSubstr("- recommended (2.07 M triangles): walls-depth"));
 }
 
