@@ -479,8 +479,9 @@ TEST(RunCli, DemoWritesTheReportWithAllFourRuns) {
     // The story's settings: resolution, stereo mode, walls and the machine's load at both ends.
     EXPECT_THAT(report, HasSubstr("- resolution: 32 x 32 pixels per screen; stereo mode: "));
     EXPECT_THAT(report, HasSubstr("- walls: depth walls (`--walls depth`"));
-    EXPECT_THAT(report, testing::ContainsRegex("machine load \\(/proc/loadavg, 1, 5 and 15 minutes\\): "
-                                               "[0-9.]+ [0-9.]+ [0-9.]+ at the start, [0-9.]+ [0-9.]+ [0-9.]+ at the end"));
+    EXPECT_THAT(report,
+                testing::ContainsRegex("machine load \\(/proc/loadavg, 1, 5 and 15 minutes\\): "
+                                       "[0-9.]+ [0-9.]+ [0-9.]+ at the start, [0-9.]+ [0-9.]+ [0-9.]+ at the end"));
     // The bench's rule over the four runs, and their plot beside the report.
     EXPECT_THAT(report, testing::ContainsRegex("recommended: (walls depth a=10 blend lod 1px \\(#4; |none \\()"));
     EXPECT_THAT(report, HasSubstr("![pooled PSNR and FLIP mean against median frame time"));
