@@ -87,7 +87,9 @@ struct RunOptions {
     bool wallTextures = true;                          // false: the control, the walls' cells without textures
                                                        // (gl::WalkthroughOptions::wallTextures; the demo's)
     walls::PlanOptions plan;                           // alpha etc. for planning and baking
-    walls::WallKind wallKind = walls::WallKind::Flat;  // --walls flat|depth (walls/depth_wall.h)
+    // --walls depth|flat (walls/depth_wall.h); depth: the bench's recommended walls mode on the
+    // plant (docs/benchmarking.md, "The recommended walls mode")
+    walls::WallKind wallKind = walls::WallKind::Depth;
     // --texture-format: storage of baked colour (walls/texture_blocks.h; keys the bake cache)
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
     std::optional<std::filesystem::path> cache;   // bake cache folder (default: the baker's)

@@ -5,6 +5,7 @@
 #include "display/timing.h"
 #include "tools/args.h"
 #include "tools/cmd_demo_compare.h"
+#include "tools/demo_front.h"
 #include "tools/commands.h"
 
 #include <cstdlib>
@@ -16,7 +17,7 @@ namespace cavewall::tools {
 
 const char* const kDemoUsage =
     "usage: cavewall demo [--out DIR] [--frames N] [--resolution PX] [--triangles N] [--lod PX]\n"
-    "                     [--texture-format rgba8|bc1|bc3]\n"
+    "                     [--texture-format rgba8|bc1|bc3] [--walls depth|flat]\n"
     "\n"
     "The main job: generates the default plant (into $CAVEWALL_CACHE or, without it, cache/\n"
     "beside the cavewall executable), plans and bakes its virtual walls (cached by content),\n"
@@ -37,7 +38,12 @@ const char* const kDemoUsage =
     "(Ebbesmeyer 1997 used 10 and advises at most 15), zones of at least 2 m and 2 texels per\n"
     "degree (2,142 textures: about 10 s to bake on 2 cores the first time).\n"
     "--texture-format: storage of the baked wall colour, as for `cavewall bake` (default\n" DEFAULT_TEXTURE_FORMAT
-    ").\n";
+    ").\n"
+    "--walls: depth walls by default, as `cavewall run` (the bench's recommended walls mode on\n"
+    "the plant, docs/benchmarking.md); --walls flat walks flat walls instead.\n"
+    "report.md states the resolution, the stereo mode and the machine's load average at the\n"
+    "start and the end, applies the bench's rule to the four runs (the recommended walls mode)\n"
+    "and embeds their trade-off plot, bench.png, when gnuplot is installed.\n";
 
 namespace {
 
@@ -84,12 +90,42 @@ std::string errorText(const bench::ImageError& e) {
 }
 
 struct DemoRuns {
+    std::string loadStart, loadEnd;  // /proc/loadavg before the first run and after the comparisons
     app::RunSummary walls, control;
     std::optional<app::RunSummary> lod;
     app::RunSummary geometry;
     DemoComparison wallsError, controlError;
     std::optional<DemoComparison> lodError;
 };
+
+std::string kindName(const app::RunOptions& o) { return std::string(walls::wallKindName(o.wallKind)) + " walls"; }
+
+// "32x32 per screen, mono", as the bench states its resolution.
+std::string benchResolution(const config::DisplayConfig& d) {
+    return std::to_string(d.screens[0].resolution.x) + "x" + std::to_string(d.screens[0].resolution.y) +
+           " per screen, " + std::string(config::toString(d.stereo));
+}
+
+// The four runs as the bench's modes: full geometry (the reference) first.
+bench::BenchReport frontReport(const app::RunOptions& o, const DemoRuns& d) {
+    std::vector<DemoMode> modes = {{.medianMs = display::median(d.geometry.frameMs)}};
+    if (d.lod && d.lodError)
+        modes.push_back({.mode = bench::Mode::Full,
+                         .lodPixels = o.lodPixels,
+                         .medianMs = display::median(d.lod->frameMs),
+                         .error = d.lodError->error});
+    modes.push_back({.mode = bench::Mode::Cells,
+                     .lodPixels = o.lodPixels,
+                     .medianMs = display::median(d.control.frameMs),
+                     .error = d.controlError.error});
+    modes.push_back({.mode = bench::Mode::Walls,
+                     .lodPixels = o.lodPixels,
+                     .wallKind = o.wallKind,
+                     .alphaDeg = o.plan.alphaDeg,
+                     .medianMs = display::median(d.walls.frameMs),
+                     .error = d.wallsError.error});
+    return demoReport(modes, benchResolution(o.display));
+}
 
 void writeReport(const std::filesystem::path& out, const app::RunOptions& o, const DemoRuns& d) {
     const double mw = display::median(d.walls.frameMs), mg = display::median(d.geometry.frameMs);
@@ -102,9 +138,15 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
     r << "# cavewall demo\n\nThe generated plant on cave4 (" << resolutionText(o.display)
       << "), guided along its walk path at " << o.guidePace << " m/s with `" << o.tracker << "`, " << o.frames
       << " frames at 1/60 s, rendered by " << d.walls.renderer << ". Image error: every " << o.saveEvery
-      << "th frame against the full geometry's (" << d.wallsError.error.frames << " frames, every screen).\n\n";
-    row(r, "", d.lod ? "walls + levels of detail" : "walls", "control: the same cells, no textures",
-        ifLod("full geometry + levels of detail"), "full geometry");
+      << "th frame against the full geometry's (" << d.wallsError.error.frames << " frames, every screen).\n\n"
+      << "- resolution: " << resolutionText(o.display) << "; stereo mode: " << config::toString(o.display.stereo)
+      << "\n- walls: " << kindName(o) << " (`--walls " << walls::wallKindName(o.wallKind)
+      << "`; the default is the bench's recommended walls mode on the plant, docs/benchmarking.md)"
+      << "\n- machine load (/proc/loadavg, 1, 5 and 15 minutes): " << d.loadStart << " at the start, " << d.loadEnd
+      << " at the end\n\n";
+    const std::string wallsColumn = kindName(o) + (d.lod ? " + levels of detail" : "");
+    row(r, "", wallsColumn, "control: the same cells, no textures", ifLod("full geometry + levels of detail"),
+        "full geometry");
     row(r, "---", "---", "---", ifLod("---"), "---");
     row(r, "median frame time (ms)", mw, mc, ifLod(ml), mg);
     row(r, "speed-up", mw > 0 ? mg / mw : 0.0, mc > 0 ? mg / mc : 0.0, ifLod(ml > 0 ? mg / ml : 0.0), 1);
@@ -128,9 +170,11 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
          "geometry included (their own beyond zones); `over_alpha` in `walls/frames.csv` counts any that is not "
          "(0 expected).\n\nPer-frame data: `walls/frames.csv`, "
          "`walls/walls.csv`, `cells/frames.csv`, "
-      << (d.lod ? "`lod/frames.csv`, " : "") << "`geometry/frames.csv`.\n\n## The worst frame\n\nFrame "
-      << d.wallsError.worstFrame << " (its worst screen's FLIP mean " << d.wallsError.worstFlipMean << ", "
-      << resolutionText(o.display) << "): walls | full geometry | FLIP map (black 0, pale yellow 1).\n\n![worst frame]("
+      << (d.lod ? "`lod/frames.csv`, " : "") << "`geometry/frames.csv`.\n\n## The trade-off\n\n";
+    for (const std::string& line : writeDemoFront(out, frontReport(o, d))) r << line << "\n\n";
+    r << "## The worst frame\n\nFrame " << d.wallsError.worstFrame << " (its worst screen's FLIP mean "
+      << d.wallsError.worstFlipMean << ", " << resolutionText(o.display)
+      << "): walls | full geometry | FLIP map (black 0, pale yellow 1).\n\n![worst frame]("
       << std::filesystem::relative(d.wallsError.foldout, out).string()
       << ")\n\n## Fold-outs (walls | full geometry)\n\n";
     for (std::size_t i = 0; i < d.walls.foldouts.size() && i < d.geometry.foldouts.size(); ++i)
@@ -143,7 +187,7 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
 
 int runDemo(const std::vector<std::string>& words) {
     const Args args(words, {});
-    args.expectFlags({"out", "frames", "resolution", "triangles", "lod", "texture-format"});
+    args.expectFlags({"out", "frames", "resolution", "triangles", "lod", "texture-format", "walls"});
     const std::filesystem::path out = args.getOr("out", "demo-out");
     const std::filesystem::path cache = cacheFolder();
     app::RunOptions o;
@@ -166,7 +210,10 @@ int runDemo(const std::vector<std::string>& words) {
     o.verbose = true;
     o.lodPixels = args.number("lod", 1.0, 0.0, 1e4);
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
-    std::cout << "demo: cave4 at " << resolutionText(o.display) << ", walls at alpha " << o.plan.alphaDeg << " deg\n";
+    o.wallKind = args.choice("walls", walls::kWallKindNames, o.wallKind);
+    const std::string loadStart = loadAverage();
+    std::cout << "demo: cave4 at " << resolutionText(o.display) << ", " << kindName(o) << " at alpha "
+              << o.plan.alphaDeg << " deg; load average " << loadStart << "\n";
 
     auto run = [&](const char* folder, bool walls, double lodPixels, bool textures = true) {
         app::RunOptions r = o;
@@ -176,7 +223,9 @@ int runDemo(const std::vector<std::string>& words) {
         r.lodPixels = lodPixels;
         return gl::runSession(r);
     };
-    DemoRuns d{run("walls", true, o.lodPixels),
+    DemoRuns d{loadStart,
+               {},
+               run("walls", true, o.lodPixels),
                run("cells", true, o.lodPixels, false),
                std::nullopt,
                {},
@@ -190,17 +239,19 @@ int runDemo(const std::vector<std::string>& words) {
     d.wallsError = compareRuns(display, d.walls, d.geometry, out);
     d.controlError = compareRuns(display, d.control, d.geometry, out / "cells");
     if (d.lod) d.lodError = compareRuns(display, *d.lod, d.geometry, out / "lod");
+    d.loadEnd = loadAverage();
     writeReport(out, o, d);
     const double mw = display::median(d.walls.frameMs), mg = display::median(d.geometry.frameMs);
-    std::cout << "demo (" << resolutionText(o.display) << "): median frame time " << mw << " ms with walls"
+    std::cout << "demo (" << resolutionText(o.display) << "): median frame time " << mw << " ms with " << kindName(o)
               << (d.lod ? " and levels of detail" : "") << ", ";
     if (d.lod) std::cout << display::median(d.lod->frameMs) << " ms full geometry with levels of detail, ";
     std::cout << mg << " ms full geometry, speed-up " << (mw > 0 ? mg / mw : 0.0) << "x at "
               << errorText(d.wallsError.error)
               << " (the control, the same cells without textures: " << errorText(d.controlError.error)
               << "); worst wall error " << d.walls.worstErrorDeg << " deg (" << d.walls.worstErrorPx
-              << " px), worst level-of-detail error " << d.walls.worstLodErrorPx
-              << " px\nGL_RENDERER: " << d.walls.renderer << "\nworst frame: " << d.wallsError.foldout.string()
+              << " px), worst level-of-detail error " << d.walls.worstLodErrorPx << " px\nload average " << d.loadStart
+              << " at the start, " << d.loadEnd << " at the end"
+              << "\nGL_RENDERER: " << d.walls.renderer << "\nworst frame: " << d.wallsError.foldout.string()
               << "\nreport: " << (out / "report.md").string() << "\n";
     return 0;
 }

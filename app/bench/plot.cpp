@@ -103,7 +103,8 @@ void addOverlays(const PlotPanel& panel, const std::string& prefix, PanelPlot& o
     const Overlay overlays[] = {
         {&PlotPoint::front, "front", "lines dt 2 lw 2 lc rgb '#404040'", &panel.frontName},
         {&PlotPoint::control, "control", "points pt 6 ps 3 lw 2 lc rgb '#000000'", &panel.controlName},
-        {&PlotPoint::bestAlternative, "alternative", "points pt 4 ps 3 lw 2 lc rgb '#000000'", &panel.alternativeName}};
+        {&PlotPoint::bestAlternative, "alternative", "points pt 4 ps 3 lw 2 lc rgb '#000000'", &panel.alternativeName},
+        {&PlotPoint::recommended, "recommended", "points pt 12 ps 3.5 lw 2 lc rgb '#c00000'", &panel.recommendedName}};
     for (const Overlay& o : overlays) {
         const std::vector<PlotPoint> points = flagged(panel, o.flag);
         if (points.empty()) continue;

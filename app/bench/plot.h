@@ -3,9 +3,9 @@
 // more panels in a grid; a Panel has a title, two titled axes with units and named series,
 // each named in the legend: markers, lines, or shapes (open paths, polygon outlines, filled
 // polygons; for top views in metres). Points may be flagged as on the Pareto front (joined by
-// one line in x order across all series of the panel), as the control or as the best
-// alternative (each ringed by a large marker with its own legend entry). No GL, no files:
-// gnuplotScript() returns the text; app/bench/gnuplot.h runs it.
+// one line in x order across all series of the panel), as the control, as the best
+// alternative or as recommended (each ringed by a large marker with its own legend entry). No
+// GL, no files: gnuplotScript() returns the text; app/bench/gnuplot.h runs it.
 
 #include <filesystem>
 #include <string>
@@ -18,6 +18,7 @@ struct PlotPoint {
     bool front = false;            // on the Pareto front
     bool control = false;          // the control (the "cells without textures" mode)
     bool bestAlternative = false;  // the alternative a user would pick (full geometry with LOD)
+    bool recommended = false;      // the recommended mode (app/bench/recommend.h)
 };
 
 // How a series is drawn.
@@ -53,6 +54,7 @@ struct PlotPanel {
     std::string frontName = "Pareto front";  // legend entries of the flagged points' markers
     std::string controlName = "control";
     std::string alternativeName = "best alternative";
+    std::string recommendedName = "recommended";
     bool equalScale = false;  // one unit as long on both axes (a floor plan in metres)
 };
 

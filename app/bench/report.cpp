@@ -377,8 +377,9 @@ std::string transitionLabel(const ModeResult& m) {
 }
 
 std::string modeLabel(const ModeResult& m) {
+    const std::string prefix = m.wallKind == walls::WallKind::Depth ? "walls depth a=" : "walls a=";
     std::string label =
-        m.mode == Mode::Walls ? "walls a=" + num(m.alphaDeg) + " " + transitionLabel(m) : std::string(toString(m.mode));
+        m.mode == Mode::Walls ? prefix + num(m.alphaDeg) + " " + transitionLabel(m) : std::string(toString(m.mode));
     if (m.lodPixels > 0.0) label += " lod " + num(m.lodPixels) + "px";
     if (m.triangleBudget > 0) label += " budget " + std::to_string(m.triangleBudget);
     if (m.frameBudgetMs > 0.0) label += " frame " + num(m.frameBudgetMs, 3) + "ms";
@@ -405,10 +406,10 @@ std::string csvHeader() {
            "popping_peak,popping_rms,psnr_gain_db,flip_ratio,over_alpha,uploaded_mb_p50,uploaded_mb_p99,uploaded_mb_"
            "mean,"
            "p95_over_budget,floor_ms,first_frame_s,geometry_fallbacks,fallback_frames,fallbacks_until_frame,textures_"
-           "baked,speedup_lod,scene,stereo_mean_arcmin,stereo_beyond_share";
+           "baked,speedup_lod,scene,stereo_mean_arcmin,stereo_beyond_share,recommended";
 }
 
-std::string csvRow(const ModeResult& m) {
+std::string csvRow(const ModeResult& m, bool recommended) {
     const double values[] = {m.frameMs.p50,
                              m.frameMs.p95,
                              m.frameMs.p99,
@@ -460,7 +461,8 @@ std::string csvRow(const ModeResult& m) {
     std::string row = std::string(toString(m.mode)) + "," + num(m.alphaDeg) + "," + transitionLabel(m);
     for (double v : values) row += "," + num(v);
     for (double v : onDemand) row += "," + num(v);
-    return row + "," + num(m.speedupLod) + "," + (m.sceneTag.empty() ? "bench" : m.sceneTag) + "," + stereoCsv(m.error);
+    return row + "," + num(m.speedupLod) + "," + (m.sceneTag.empty() ? "bench" : m.sceneTag) + "," +
+           stereoCsv(m.error) + (recommended ? ",1" : ",0");
 }
 
 namespace {
@@ -530,6 +532,7 @@ std::string markdownReport(const BenchReport& report) {
            << ", eye " << map.eye << ", FLIP mean " << num(map.mean, 3) << "\n";
     }
     for (const std::string& line : figureLines(report)) md << "- " << line << "\n";
+    md << "- " << recommendedLine(report) << "\n";
     return md.str();
 }
 
@@ -551,7 +554,8 @@ std::string framesCsv(const BenchReport& report) {
 std::vector<std::filesystem::path> writeReport(const std::filesystem::path& folder, const BenchReport& report) {
     std::filesystem::create_directories(folder);
     std::string csv = csvHeader() + "\n";
-    for (const ModeResult& m : report.modes) csv += csvRow(m) + "\n";
+    for (std::size_t i = 0; i < report.modes.size(); ++i)
+        csv += csvRow(report.modes[i], report.recommended == i) + "\n";
     const std::vector<std::filesystem::path> files = {folder / "bench.csv", folder / "bench_screens.csv",
                                                       folder / "bench.md", folder / "bench.png",
                                                       folder / "bench_frames.csv"};
@@ -561,7 +565,7 @@ std::vector<std::filesystem::path> writeReport(const std::filesystem::path& fold
     writeText(files[2], "# cavewall bench\n\n" + markdownReport(report) +
                             "\n![pooled PSNR and FLIP mean (y) against median frame time (x) of every mode, named "
                             "\"#N label\" as the table; dashed: the Pareto front; ringed: the control and the best "
-                            "alternative](bench.png)\n");
+                            "alternative; diamond: the recommended walls mode](bench.png)\n");
     writePlot(files[3], tradeOffFigure(report));
     std::vector<std::filesystem::path> written = files;
     for (std::size_t i = 0; i < report.modes.size(); ++i) {

@@ -68,12 +68,13 @@ std::string_view toString(Mode mode);
 
 struct ModeResult {
     Mode mode = Mode::Full;
-    double alphaDeg = 0.0;                      // walls modes; 0 otherwise
-    std::optional<app::Transition> transition;  // walls modes; none otherwise
-    bool paged = false;                         // walls modes: paged from a cold start (`cavewall run`'s paging)
-    double lodPixels = 0.0;                     // level-of-detail tolerance in pixels; 0: full detail
-    std::size_t triangleBudget = 0;             // per frame (with levels of detail); 0: none
-    double frameBudgetMs = 0.0;                 // frame-time target of the budget controller; 0: none
+    double alphaDeg = 0.0;                             // walls modes; 0 otherwise
+    std::optional<app::Transition> transition;         // walls modes; none otherwise
+    walls::WallKind wallKind = walls::WallKind::Flat;  // walls modes: flat or depth walls (--walls)
+    bool paged = false;                                // walls modes: paged from a cold start (`cavewall run`'s paging)
+    double lodPixels = 0.0;                            // level-of-detail tolerance in pixels; 0: full detail
+    std::size_t triangleBudget = 0;                    // per frame (with levels of detail); 0: none
+    double frameBudgetMs = 0.0;                        // frame-time target of the budget controller; 0: none
     TimeStats frameMs, cpuMs, gpuMs;
     double speedup = 1.0;  // full-geometry frame_ms_p50 / this mode's
     // Against the alternative a user would pick, full geometry with levels of detail at the
@@ -119,15 +120,28 @@ struct BenchReport {
     double noiseFloorRatio = 0.0;     // p99/p50 of one frame drawn again and again (0: not measured)
     double noiseFloorP95Ratio = 0.0;  // p95/p50 of the same (0: not measured)
     std::string resolution;           // "1024x1024 per screen, mono": stated with every figure line
+    // The recommended walls mode (app/bench/recommend.h; recommend() fills it): an index into
+    // `modes`, none when no walls mode is on the front, and the rule's reason.
+    std::optional<std::size_t> recommended;
+    std::string recommendedReason;
 };
+
+// Fills report.recommended and recommendedReason by app/bench/recommend.h's rule
+// (app/bench/recommend.cpp).
+void recommend(BenchReport& report);
+
+// "recommended: walls a=10 blend lod 1px (#7; fastest of ...; at 128x128 per screen, mono)", or
+// "recommended: none (no walls mode is on the front)" (app/bench/recommend.cpp).
+std::string recommendedLine(const BenchReport& report);
 
 // `v` with `decimals` digits after the point (no exponent); inf, -inf and nan spelled so.
 std::string fixed(double v, int decimals = 1);
 
-// The CSV header line (without newline): mode, alpha, transition and the frame times first.
+// The CSV header line (without newline): mode, alpha, transition and the frame times first;
+// the last column, "recommended", is 1 on the recommended walls mode's row and 0 elsewhere.
 std::string csvHeader();
 // One CSV line (without newline); numbers in C locale, "inf" for infinite PSNR.
-std::string csvRow(const ModeResult& m);
+std::string csvRow(const ModeResult& m, bool recommended = false);
 // Markdown: the header lines as a list, then one table row per mode.
 std::string markdownReport(const BenchReport& report);
 

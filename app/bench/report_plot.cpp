@@ -22,6 +22,7 @@ PlotPanel errorPanel(const BenchReport& report, const std::string& title, const 
     panel.y = error.axis;
     panel.controlName = "control: cells without textures";
     panel.alternativeName = "best alternative: full geometry with levels of detail";
+    panel.recommendedName = "recommended walls mode";
     const ModeResult* control = controlMode(report);
     const ModeResult* alternative = lodBaseline(report);
     std::vector<TradeOff> tradeOffs;
@@ -34,7 +35,7 @@ PlotPanel errorPanel(const BenchReport& report, const std::string& title, const 
         series.name = "#" + std::to_string(i + 1) + " " + modeLabel(m);
         panel.series.push_back(std::move(series));
         if (!compared || !std::isfinite(x) || !std::isfinite(y) || y <= 0.0) continue;
-        panel.series.back().points = {{x, y, false, &m == control, &m == alternative}};
+        panel.series.back().points = {{x, y, false, &m == control, &m == alternative, report.recommended == i}};
         tradeOffs.push_back({x, error.rank(m)});
         drawn.push_back(i);
     }

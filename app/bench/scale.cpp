@@ -4,6 +4,7 @@
 #include "config/json_depth.h"
 #include "config/json_reader.h"
 #include "app/bench/gnuplot.h"
+#include "app/bench/recommend.h"
 #include "app/bench/report.h"
 #include "scenes/file_write.h"
 #include "scenes/generate.h"
@@ -191,6 +192,8 @@ std::string scaleMarkdown(const ScaleReport& report) {
                            fixed(d->frameMs.p50 / f->frameMs.p50, 3) + " (" + fixed(d->frameMs.p50, 2) + " / " +
                            fixed(f->frameMs.p50, 2) + " ms)\n";
     }
+    out += "\nThe recommended walls mode at each size (app/bench/recommend.h, docs/benchmarking.md):\n\n";
+    for (const std::string& line : scaleRecommendedLines(report)) out += "- " + line + "\n";
     return out;
 }
 

@@ -58,6 +58,10 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     EXPECT_THAT(r.out, HasSubstr("x the budget; floor"));
     EXPECT_THAT(r.out, HasSubstr("clusters' measured frame ms against their predicted cost over 24 frames"));
     EXPECT_THAT(r.out, HasSubstr("bench: noise floor, walls a=30 blend lod 1px frame 16.7ms interleaved"));
+    // The recommended walls mode, by the rule of app/bench/recommend.h, on the console and in
+    // bench.md (which mode depends on the run's times).
+    EXPECT_THAT(r.out, testing::ContainsRegex("- recommended: (walls a=[23]0 [^(]*\\(#[0-9]+; |none \\()"));
+    EXPECT_THAT(readFile(out / "bench.md"), HasSubstr("- recommended: "));
     // The bound holds in every walls mode (frame by frame, also in bench_frames.csv).
     EXPECT_THAT(r.out, HasSubstr("figures (128x128 per screen, mono): textures drawn over alpha in"));
     EXPECT_THAT(r.out, HasSubstr("walls modes: 0\n"));

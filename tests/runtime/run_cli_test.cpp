@@ -473,8 +473,19 @@ TEST(RunCli, DemoWritesTheReportWithAllFourRuns) {
     const scenes::Image foldout = scenes::readImage(out / "walls" / "frames" / "00000" / "foldout.png");
     EXPECT_EQ(worst.width, 3 * foldout.width + 2 * 16);
     EXPECT_EQ(worst.height, foldout.height);
-    EXPECT_THAT(report, HasSubstr("| walls + levels of detail | control: the same cells, no textures | full geometry + "
-                                  "levels of detail | full geometry |"));
+    // Depth walls by default (the bench's recommendation on the plant), named in the table.
+    EXPECT_THAT(report, HasSubstr("| depth walls + levels of detail | control: the same cells, no textures | full "
+                                  "geometry + levels of detail | full geometry |"));
+    // The story's settings: resolution, stereo mode, walls and the machine's load at both ends.
+    EXPECT_THAT(report, HasSubstr("- resolution: 32 x 32 pixels per screen; stereo mode: "));
+    EXPECT_THAT(report, HasSubstr("- walls: depth walls (`--walls depth`"));
+    EXPECT_THAT(report,
+                testing::ContainsRegex("machine load \\(/proc/loadavg, 1, 5 and 15 minutes\\): "
+                                       "[0-9.]+ [0-9.]+ [0-9.]+ at the start, [0-9.]+ [0-9.]+ [0-9.]+ at the end"));
+    // The bench's rule over the four runs, and their plot beside the report.
+    EXPECT_THAT(report, testing::ContainsRegex("recommended: (walls depth a=10 blend lod 1px \\(#4; |none \\()"));
+    EXPECT_THAT(report, HasSubstr("![pooled PSNR and FLIP mean against median frame time"));
+    EXPECT_TRUE(fs::exists(out / "bench.png"));
     EXPECT_THAT(report, HasSubstr("| speed-up | "));
     EXPECT_THAT(report, HasSubstr("| worst level-of-detail error (px) | "));
     EXPECT_THAT(r.out, HasSubstr("(the control, the same cells without textures: "));

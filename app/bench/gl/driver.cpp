@@ -577,8 +577,11 @@ BenchReport runBenchmark(const BenchOptions& o) {
             "triangle budgets: per alpha, the median triangles of the same walls mode without a "
             "budget");
     addNoiseFloor(report, b);
+    for (ModeResult& m : report.modes)
+        if (m.mode == Mode::Walls) m.wallKind = o.wallKind;  // every walls mode draws --walls
     compareWithControl(report);
     compareWithLodBaseline(report);
+    recommend(report);
     report.header.push_back(
         "control: 'cells' (the cells the walls draw as geometry, no textures); 'vs control' is "
         "every walls mode's pooled PSNR gain over it and its FLIP mean as a fraction of its");
