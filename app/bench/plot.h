@@ -2,10 +2,10 @@
 // Plots as plain data, and the gnuplot script that draws them. A Figure is one PNG of one or
 // more panels in a grid; a Panel has a title, two titled axes with units and named series,
 // each named in the legend: markers, lines, shapes (open paths, polygon outlines, filled
-// polygons; for top views in metres) or arrows, and text labels at data coordinates. Points may be flagged as on the Pareto front (joined by
-// one line in x order across all series of the panel), as the control or as the best
-// alternative (each ringed by a large marker with its own legend entry). No GL, no files:
-// gnuplotScript() returns the text; app/bench/gnuplot.h runs it.
+// polygons; for top views in metres) or arrows, and text labels at data coordinates. Points
+// may be flagged as on the Pareto front (joined by one line in x order across all series of the
+// panel), as the control or as the best alternative (each ringed by a large marker with its own
+// legend entry). No GL, no files: gnuplotScript() returns the text; app/bench/gnuplot.h runs it.
 
 #include <filesystem>
 #include <string>
