@@ -122,8 +122,13 @@ void addScreens(std::vector<PlotSeries>& series, const Content& content, const P
     const std::size_t n = content.screens.size();
     const auto colour = [](std::size_t i) { return kScreenColours[i % std::size(kScreenColours)]; };
     for (std::size_t i = 0; i < n; ++i)
-        series.push_back(
-            {"", {}, SeriesStyle::Filled, {projected(display::outline(content.screens[i]), view)}, colour(i)});
+        series.push_back({"",
+                          {},
+                          SeriesStyle::Filled,
+                          {projected(display::outline(content.screens[i]), view)},
+                          colour(i),
+                          0.0,
+                          0.2});
     PlotSeries edges{kSharedEdgeSeries, {}, SeriesStyle::Paths, {}, "#a0a0a0", 9.0};
     for (const display::SharedEdge& e : content.edges) edges.shapes.push_back(projected({e.from, e.to}, view));
     series.push_back(edges);
@@ -137,7 +142,7 @@ void addScreens(std::vector<PlotSeries>& series, const Content& content, const P
 }
 
 void addMarks(std::vector<PlotSeries>& series, const Content& content, const Projection& view) {
-    PlotSeries overlaps{kOverlapSeries, {}, SeriesStyle::Filled, {}, "#e41a1c"};
+    PlotSeries overlaps{kOverlapSeries, {}, SeriesStyle::Filled, {}, "#e41a1c", 0.0, 0.6};
     for (const display::ScreenOverlap& o : content.overlaps) overlaps.shapes.push_back(projected(o.polygon, view));
     PlotSeries normals{kNormalSeries, {}, SeriesStyle::Arrows, {}, "#303030", 2.0};
     for (const display::ScreenFacts& s : content.screens)

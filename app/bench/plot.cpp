@@ -93,7 +93,8 @@ std::string seriesStyle(const PlotSeries& s, std::size_t index) {
         case SeriesStyle::Line: return "linespoints lw " + size(2) + marker + " ps 1.4" + colour;
         case SeriesStyle::Paths:
         case SeriesStyle::Outlines: return "lines lw " + size(1.5) + colour;
-        case SeriesStyle::Filled: return "filledcurves closed fs transparent solid 0.45 noborder" + colour;
+        case SeriesStyle::Filled:
+            return "filledcurves closed fs transparent solid " + number(s.opacity) + " noborder" + colour;
         case SeriesStyle::Arrows: return "vectors head filled size screen 0.012,25 lw " + size(1.5) + colour;
     }
     return "points" + colour;
@@ -264,6 +265,8 @@ void checkSeries(const PlotPanel& panel, std::size_t p, const PlotSeries& s, con
         where + ": panel " + std::to_string(p + 1) + " '" + panel.title + "': series '" + s.name + "'";
     if (!s.colour.empty() && !isColour(s.colour))
         throw Error(at + ": expected a colour \"#rrggbb\", got '" + s.colour + "'");
+    if (!(s.opacity > 0.0 && s.opacity <= 1.0))
+        throw Error(at + ": expected an opacity in (0, 1], got " + number(s.opacity));
     const std::vector<PlotPoint> points = allPoints(s);
     for (std::size_t i = 0; i < points.size(); ++i) {
         const PlotPoint& q = points[i];

@@ -26,7 +26,7 @@ enum class SeriesStyle {
     Line,      // `points` joined in x order, with markers (a series over a sweep)
     Paths,     // `shapes`, each an open polyline (a wall: its two ends)
     Outlines,  // `shapes`, each a closed polygon's outline
-    Filled,    // `shapes`, each a closed polygon, filled half-transparent
+    Filled,    // `shapes`, each a closed polygon, filled half-transparent (`opacity`)
     Arrows,    // `shapes`, each {tail, head}: an arrow with a filled head (other points ignored)
 };
 
@@ -37,6 +37,7 @@ struct PlotSeries {
     std::vector<std::vector<PlotPoint>> shapes;  // Paths, Outlines, Filled, Arrows (flags unused)
     std::string colour;                          // "#rrggbb"; empty: a colour (and marker) chosen by the series' index
     double size = 0.0;                           // marker size or line width, gnuplot units; 0: the style's default
+    double opacity = 0.45;                       // Filled: the fill's opacity, in (0, 1]
 };
 
 struct PlotAxis {

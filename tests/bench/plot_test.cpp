@@ -227,6 +227,12 @@ TEST(PlotScript, ArrowsAreTailAndStepAndLabelsSitAtTheirPoints) {
     EXPECT_THAT(script, HasSubstr("$p0_s0 << EOD\n1 2 0.5 -1\nEOD\n"));
     EXPECT_THAT(script, HasSubstr("$p0_s0 using 1:2:3:4 with vectors head filled"));
     EXPECT_THAT(script, HasSubstr("set label 100 'front' at 0.5, -1.5 center front\n"));
+    figure.panels[0].series.push_back({"fill", {}, SeriesStyle::Filled, {{{0, 0}, {1, 0}, {1, 1}}}, "", 0.0, 0.2});
+    EXPECT_THAT(gnuplotScript(figure, "display.png"), HasSubstr("fs transparent solid 0.2 noborder"));
+    figure.panels[0].series.back().opacity = 0.0;
+    EXPECT_THAT([&] { checkFigure(figure, "display.png"); },
+                ::testing::ThrowsMessage<Error>(HasSubstr("'fill': expected an opacity in (0, 1], got 0")));
+    figure.panels[0].series.pop_back();
     EXPECT_THAT(script, HasSubstr("set label 101 'it''s left' at -1, 0 left offset char 0.6, 0 front\n"));
     EXPECT_EQ(count(script, "unset label 100\n"), 2u);
     // The arrow's head counts in the range: x from 1 to 1.5 with 8 % margins.
