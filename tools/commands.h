@@ -29,6 +29,8 @@ int runBench(const std::vector<std::string>& args);
 extern const char* const kBenchUsage;
 int runGenerate(const std::vector<std::string>& args);
 extern const char* const kGenerateUsage;
+int runDisplay(const std::vector<std::string>& args);
+extern const char* const kDisplayUsage;
 int runPlan(const std::vector<std::string>& args);
 extern const char* const kPlanUsage;
 int runWalls(const std::vector<std::string>& args);

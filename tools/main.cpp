@@ -17,6 +17,8 @@ const Command kCommands[] = {
 #ifdef CAVEWALL_HAVE_GL
     {"view", "open a window on a model and look around with mouse and keys (F1: help)", kViewUsage, runView},
 #endif
+    {"display", "check a display configuration: screens, head, tracking (summary; --png: a picture)", kDisplayUsage,
+     runDisplay},
     {"frustum", "print every screen's and eye's off-axis view and projection", kFrustumUsage, runFrustum},
     {"track", "read a head tracker and print calibrated, filtered, predicted head poses", kTrackUsage, runTrack},
     {"calibrate", "fit tracking.caveFromTracker to tracked points paired with known cave points", kCalibrateUsage,

@@ -26,7 +26,8 @@ std::string number(double v) {
 std::string pointText(const PlotPoint& p) { return "x=" + number(p.x) + " y=" + number(p.y); }
 
 bool drawsShapes(SeriesStyle style) {
-    return style == SeriesStyle::Paths || style == SeriesStyle::Outlines || style == SeriesStyle::Filled;
+    return style == SeriesStyle::Paths || style == SeriesStyle::Outlines || style == SeriesStyle::Filled ||
+           style == SeriesStyle::Arrows;
 }
 
 // Every point of a series, markers and shape vertices alike.
@@ -56,6 +57,17 @@ std::string shapesBlock(const std::string& name, const PlotSeries& s) {
     return out + "EOD\n";
 }
 
+// Arrows as one data block of "x y dx dy" lines (gnuplot's `vectors`), tail to head.
+std::string arrowsBlock(const std::string& name, const PlotSeries& s) {
+    std::string out = name + " << EOD\n";
+    for (const auto& shape : s.shapes) {
+        if (shape.size() < 2) continue;
+        out += number(shape[0].x) + " " + number(shape[0].y) + " " + number(shape[1].x - shape[0].x) + " " +
+               number(shape[1].y - shape[0].y) + "\n";
+    }
+    return out + "EOD\n";
+}
+
 std::vector<PlotPoint> sortedByX(std::vector<PlotPoint> points) {
     std::sort(points.begin(), points.end(),
               [](const PlotPoint& a, const PlotPoint& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
@@ -81,7 +93,9 @@ std::string seriesStyle(const PlotSeries& s, std::size_t index) {
         case SeriesStyle::Line: return "linespoints lw " + size(2) + marker + " ps 1.4" + colour;
         case SeriesStyle::Paths:
         case SeriesStyle::Outlines: return "lines lw " + size(1.5) + colour;
-        case SeriesStyle::Filled: return "filledcurves closed fs transparent solid 0.45 noborder" + colour;
+        case SeriesStyle::Filled:
+            return "filledcurves closed fs transparent solid " + number(s.opacity) + " noborder" + colour;
+        case SeriesStyle::Arrows: return "vectors head filled size screen 0.012,25 lw " + size(1.5) + colour;
     }
     return "points" + colour;
 }
@@ -122,10 +136,12 @@ PanelPlot panelPlot(const PlotPanel& panel, std::size_t index) {
         const PlotSeries& s = panel.series[i];
         if (allPoints(s).empty()) continue;
         const std::string block = prefix + "s" + std::to_string(i);
-        out.blocks += drawsShapes(s.style)           ? shapesBlock(block, s)
+        out.blocks += s.style == SeriesStyle::Arrows ? arrowsBlock(block, s)
+                      : drawsShapes(s.style)         ? shapesBlock(block, s)
                       : s.style == SeriesStyle::Line ? dataBlock(block, sortedByX(s.points))
                                                      : dataBlock(block, s.points);
-        out.items.push_back(block + " using 1:2 with " + seriesStyle(s, i) + " title " + gnuplotQuoted(s.name));
+        const char* columns = s.style == SeriesStyle::Arrows ? " using 1:2:3:4" : " using 1:2";
+        out.items.push_back(block + columns + " with " + seriesStyle(s, i) + " title " + gnuplotQuoted(s.name));
     }
     addOverlays(panel, prefix, out);
     return out;
@@ -178,18 +194,52 @@ std::string axisCommands(const PlotPanel& panel, const PlotAxis& axis, const cha
            gnuplotQuoted(axisLabel(axis)) + "\nset " + name + "range " + axisRange(panel, axis, coordinate) + "\n";
 }
 
-// Title, axes, grid and legend of one panel, then its plot command.
+// The panel's text labels (tags from kFirstLabel on, so that they never replace the note's or
+// the "no data" label) and the commands that remove them after its plot.
+constexpr std::size_t kFirstLabel = 100;
+
+// gnuplot's justification and offset (in characters) for an anchor.
+const char* anchorPlacement(LabelAnchor anchor) {
+    switch (anchor) {
+        case LabelAnchor::Centre: return "center";
+        case LabelAnchor::Right: return "left offset char 0.6, 0";
+        case LabelAnchor::Left: return "right offset char -0.6, 0";
+        case LabelAnchor::Above: return "center offset char 0, 0.9";
+        case LabelAnchor::Below: return "center offset char 0, -0.9";
+    }
+    return "center";
+}
+
+std::string labelCommands(const PlotPanel& panel) {
+    std::string out;
+    for (std::size_t i = 0; i < panel.labels.size(); ++i) {
+        const PlotLabel& l = panel.labels[i];
+        out += "set label " + std::to_string(kFirstLabel + i) + " " + gnuplotQuoted(l.text) + " at " + number(l.x) +
+               ", " + number(l.y) + " " + anchorPlacement(l.anchor) + " front\n";
+    }
+    return out;
+}
+
+std::string unsetLabelCommands(const PlotPanel& panel) {
+    std::string out;
+    for (std::size_t i = 0; i < panel.labels.size(); ++i)
+        out += "unset label " + std::to_string(kFirstLabel + i) + "\n";
+    return out;
+}
+
+// Title, axes, grid, labels and legend of one panel, then its plot command.
 std::string panelCommands(const Figure& figure, std::size_t index, const PanelPlot& plot) {
     const PlotPanel& panel = figure.panels[index];
     std::string out = "set title " + gnuplotQuoted(panel.title) + "\n";
     out += axisCommands(panel, panel.x, "x", &PlotPoint::x) + axisCommands(panel, panel.y, "y", &PlotPoint::y);
     out += panel.equalScale ? "set size ratio -1\n" : "set size noratio\n";
-    out += "set grid\n" + keyCommands(figure, index);
+    out += "set grid\n" + keyCommands(figure, index) + labelCommands(panel);
     if (plot.items.empty())
-        return out + "set label 2 'no data' at graph 0.5, 0.5 center\nplot NaN notitle\nunset label 2\n";
+        return out + "set label 2 'no data' at graph 0.5, 0.5 center\nplot NaN notitle\nunset label 2\n" +
+               unsetLabelCommands(panel);
     out += "plot ";
     for (std::size_t i = 0; i < plot.items.size(); ++i) out += (i ? ", \\\n     " : "") + plot.items[i];
-    return out + "\n";
+    return out + "\n" + unsetLabelCommands(panel);
 }
 
 // The multiplot layout: rows and columns, and with a shared legend the panels' area left of its
@@ -216,6 +266,8 @@ void checkSeries(const PlotPanel& panel, std::size_t p, const PlotSeries& s, con
         where + ": panel " + std::to_string(p + 1) + " '" + panel.title + "': series '" + s.name + "'";
     if (!s.colour.empty() && !isColour(s.colour))
         throw Error(at + ": expected a colour \"#rrggbb\", got '" + s.colour + "'");
+    if (!(s.opacity > 0.0 && s.opacity <= 1.0))
+        throw Error(at + ": expected an opacity in (0, 1], got " + number(s.opacity));
     const std::vector<PlotPoint> points = allPoints(s);
     for (std::size_t i = 0; i < points.size(); ++i) {
         const PlotPoint& q = points[i];
@@ -225,6 +277,14 @@ void checkSeries(const PlotPanel& panel, std::size_t p, const PlotSeries& s, con
             throw Error(at + ": point " + std::to_string(i + 1) + ": expected x and y > 0 on a logarithmic axis, got " +
                         pointText(q));
     }
+}
+
+// Throws for the first label of panel `p` with a non-finite coordinate.
+void checkLabels(const PlotPanel& panel, std::size_t p, const std::string& where) {
+    for (const PlotLabel& l : panel.labels)
+        if (!std::isfinite(l.x) || !std::isfinite(l.y))
+            throw Error(where + ": panel " + std::to_string(p + 1) + " '" + panel.title + "': label '" + l.text +
+                        "': expected finite x and y, got " + pointText({l.x, l.y}));
 }
 
 }  // namespace
@@ -254,8 +314,10 @@ void checkFigure(const Figure& figure, const std::string& where) {
     if (figure.legendWidth < 0 || figure.legendWidth > figure.width / 2)
         throw Error(where + ": expected a legend strip of 0 to half the plot's width (" +
                     std::to_string(figure.width / 2) + " pixels), got " + std::to_string(figure.legendWidth));
-    for (std::size_t p = 0; p < figure.panels.size(); ++p)
+    for (std::size_t p = 0; p < figure.panels.size(); ++p) {
         for (const PlotSeries& s : figure.panels[p].series) checkSeries(figure.panels[p], p, s, where);
+        checkLabels(figure.panels[p], p, where);
+    }
 }
 
 std::string gnuplotScript(const Figure& figure, const std::filesystem::path& output) {

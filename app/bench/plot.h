@@ -1,11 +1,12 @@
 #pragma once
 // Plots as plain data, and the gnuplot script that draws them. A Figure is one PNG of one or
 // more panels in a grid; a Panel has a title, two titled axes with units and named series,
-// each named in the legend: markers, lines, or shapes (open paths, polygon outlines, filled
-// polygons; for top views in metres). Points may be flagged as on the Pareto front (joined by
-// one line in x order across all series of the panel), as the control, as the best
-// alternative or as recommended (each ringed by a large marker with its own legend entry). No
-// GL, no files: gnuplotScript() returns the text; app/bench/gnuplot.h runs it.
+// each named in the legend: markers, lines, shapes (open paths, polygon outlines, filled
+// polygons; for top views in metres) or arrows, and text labels at data coordinates. Points
+// may be flagged as on the Pareto front (joined by one line in x order across all series of the
+// panel), as the control, as the best alternative or as recommended (each ringed by a large
+// marker with its own legend entry). No GL, no files: gnuplotScript() returns the text;
+// app/bench/gnuplot.h runs it.
 
 #include <filesystem>
 #include <string>
@@ -27,16 +28,18 @@ enum class SeriesStyle {
     Line,      // `points` joined in x order, with markers (a series over a sweep)
     Paths,     // `shapes`, each an open polyline (a wall: its two ends)
     Outlines,  // `shapes`, each a closed polygon's outline
-    Filled,    // `shapes`, each a closed polygon, filled half-transparent
+    Filled,    // `shapes`, each a closed polygon, filled half-transparent (`opacity`)
+    Arrows,    // `shapes`, each {tail, head}: an arrow with a filled head (other points ignored)
 };
 
 struct PlotSeries {
     std::string name;               // its legend entry; any text (quotes are escaped, line breaks become spaces)
     std::vector<PlotPoint> points;  // Markers, Line
     SeriesStyle style = SeriesStyle::Markers;
-    std::vector<std::vector<PlotPoint>> shapes;  // Paths, Outlines, Filled (flags unused)
+    std::vector<std::vector<PlotPoint>> shapes;  // Paths, Outlines, Filled, Arrows (flags unused)
     std::string colour;                          // "#rrggbb"; empty: a colour (and marker) chosen by the series' index
     double size = 0.0;                           // marker size or line width, gnuplot units; 0: the style's default
+    double opacity = 0.45;                       // Filled: the fill's opacity, in (0, 1]
 };
 
 struct PlotAxis {
@@ -47,10 +50,23 @@ struct PlotAxis {
     bool reversed = false;  // values grow leftwards or downwards (a top view's +z is down)
 };
 
+// Where a label's text sits relative to its point, as seen on the page (a reversed axis does not
+// turn it round): on it, or half a character beside it on one side.
+enum class LabelAnchor { Centre, Right, Left, Above, Below };
+
+// Text drawn at a point of the panel, over the series; not in the legend and not counted in
+// the axis ranges.
+struct PlotLabel {
+    std::string text;  // any text, quoted as series names are
+    double x = 0.0, y = 0.0;
+    LabelAnchor anchor = LabelAnchor::Centre;
+};
+
 struct PlotPanel {
     std::string title;
     PlotAxis x, y;
     std::vector<PlotSeries> series;          // in legend order; empty series are skipped
+    std::vector<PlotLabel> labels;           // finite coordinates (checkFigure)
     std::string frontName = "Pareto front";  // legend entries of the flagged points' markers
     std::string controlName = "control";
     std::string alternativeName = "best alternative";
@@ -74,7 +90,7 @@ std::string axisLabel(const PlotAxis& axis);
 
 // Throws cavewall::Error naming `where` (the PNG), the panel, the series and the point when
 // `figure` has no panel, a size under 160 x 120, a legend strip over half the width, a
-// non-finite coordinate ("bench.png: panel 1 'error': series 'walls a=10': point 2: expected
+// non-finite coordinate of a point or label ("bench.png: panel 1 'error': series 'walls a=10': point 2: expected
 // finite x and y, got x=3 y=nan"), one <= 0 on a logarithmic axis, or a colour that is not
 // "#rrggbb".
 void checkFigure(const Figure& figure, const std::string& where);

@@ -212,6 +212,37 @@ TEST(PlotScript, SeveralPanelsSitSideBySide) {
     EXPECT_EQ(count(script, "\nplot "), 2u);
 }
 
+// Arrows go to gnuplot as tail and step ("x y dx dy"), labels as text at a point, placed by
+// their anchor, and removed after their panel so that the next panel does not show them.
+TEST(PlotScript, ArrowsAreTailAndStepAndLabelsSitAtTheirPoints) {
+    PlotPanel panel;
+    panel.title = "display";
+    panel.x = {"x", "m", false};
+    panel.y = {"z", "m", false};
+    panel.series = {{"normal", {}, SeriesStyle::Arrows, {{{1, 2}, {1.5, 1}}}, "#303030"}};
+    panel.labels = {{"front", 0.5, -1.5}, {"it's left", -1, 0, LabelAnchor::Right}};
+    Figure figure;
+    figure.panels = {panel, panel};
+    const std::string script = gnuplotScript(figure, "display.png");
+    EXPECT_THAT(script, HasSubstr("$p0_s0 << EOD\n1 2 0.5 -1\nEOD\n"));
+    EXPECT_THAT(script, HasSubstr("$p0_s0 using 1:2:3:4 with vectors head filled"));
+    EXPECT_THAT(script, HasSubstr("set label 100 'front' at 0.5, -1.5 center front\n"));
+    figure.panels[0].series.push_back({"fill", {}, SeriesStyle::Filled, {{{0, 0}, {1, 0}, {1, 1}}}, "", 0.0, 0.2});
+    EXPECT_THAT(gnuplotScript(figure, "display.png"), HasSubstr("fs transparent solid 0.2 noborder"));
+    figure.panels[0].series.back().opacity = 0.0;
+    EXPECT_THAT([&] { checkFigure(figure, "display.png"); },
+                ::testing::ThrowsMessage<Error>(HasSubstr("'fill': expected an opacity in (0, 1], got 0")));
+    figure.panels[0].series.pop_back();
+    EXPECT_THAT(script, HasSubstr("set label 101 'it''s left' at -1, 0 left offset char 0.6, 0 front\n"));
+    EXPECT_EQ(count(script, "unset label 100\n"), 2u);
+    // The arrow's head counts in the range: x from 1 to 1.5 with 8 % margins.
+    EXPECT_THAT(script, HasSubstr("set xrange [0.96:1.54]"));
+    figure.panels[1].labels[0].y = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THAT([&] { checkFigure(figure, "display.png"); },
+                ::testing::ThrowsMessage<Error>(HasSubstr(
+                    "display.png: panel 2 'display': label 'front': expected finite x and y, got x=0.5 y=nan")));
+}
+
 TEST(PlotScript, NonFinitePointsAreRefusedWithWhereAndWhat) {
     Figure figure = sampleFigure();
     figure.panels[0].series[2].points[0].y = std::numeric_limits<double>::quiet_NaN();
