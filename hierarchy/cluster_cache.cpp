@@ -98,8 +98,8 @@ std::string impostorLevelsProblem(const std::vector<scenes::Image>& levels, glm:
         expected = glm::max(glm::ivec2(1), expected / 2);
     }
     return "expected MIP levels down to 1 x 1, got " + std::to_string(levels.size()) + " ending at " +
-           (levels.empty() ? std::string("none") :
-                             std::to_string(levels.back().width) + " x " + std::to_string(levels.back().height));
+           (levels.empty() ? std::string("none")
+                           : std::to_string(levels.back().width) + " x " + std::to_string(levels.back().height));
 }
 
 }  // namespace cavewall::hierarchy

@@ -42,7 +42,10 @@ TEST(ClusterCache, ABadRecordIsRefusedByFileAndField) {
         {"a face missing", [](nlohmann::json& j) { j["averages"].erase(5); }, "c.json: averages"},
         {"accuracy below 0", [](nlohmann::json& j) { j["textured"][0] = -0.1; }, "c.json: textured[0]"},
         {"a file missing", [](nlohmann::json& j) { j["files"].erase("f5r4.tx"); }, "f5r4.tx"},
-        {"an extra file", [](nlohmann::json& j) { j["files"]["../x.tx"] = {{"bytes", 1}, {"hash", "0"}}; },
+        {"an extra file",
+         [](nlohmann::json& j) {
+             j["files"]["../x.tx"] = {{"bytes", 1}, {"hash", "0"}};
+         },
          "expected only the 30 files"},
         {"a bad hash", [](nlohmann::json& j) { j["files"]["f0r0.tx"]["hash"] = "xyz"; }, "expected 16 lowercase hex"},
         {"no bytes", [](nlohmann::json& j) { j["files"]["f0r0.tx"]["bytes"] = 0; }, "files.f0r0.tx.bytes"},
@@ -52,9 +55,11 @@ TEST(ClusterCache, ABadRecordIsRefusedByFileAndField) {
         SCOPED_TRACE(c.name);
         nlohmann::json j = good;
         c.edit(j);
-        EXPECT_THAT([&] { parseClusterRecord(j.dump(), "c.json"); }, ::testing::ThrowsMessage<Error>(HasSubstr(c.message)));
+        EXPECT_THAT([&] { parseClusterRecord(j.dump(), "c.json"); },
+                    ::testing::ThrowsMessage<Error>(HasSubstr(c.message)));
     }
-    EXPECT_THAT([] { parseClusterRecord("{\"version\": 2, ", "c.json"); }, ::testing::ThrowsMessage<Error>(HasSubstr("c.json")));
+    EXPECT_THAT([] { parseClusterRecord("{\"version\": 2, ", "c.json"); },
+                ::testing::ThrowsMessage<Error>(HasSubstr("c.json")));
 }
 
 std::vector<scenes::Image> chain(std::vector<glm::ivec2> sizes) {
