@@ -62,8 +62,8 @@ const char* const kWallsUsage =
     "floor the step widens to keep to 20000 eyes per storey.\n"
     "Planning takes time in proportion to the virtual walls' length (about 4 to 10 textures per\n"
     "metre of wall): grids are planned shortest walls first while their total stays within\n"
-    "--plan-limit metres (default 25000, shared among storeys); the rest are listed as not\n"
-    "planned. Each candidate is printed on stderr as it is planned.\n"
+    "--plan-limit metres (default 25000, shared among storeys), each within 40 % of it; the rest\n"
+    "are listed as not planned. Each candidate is printed on stderr as it is planned.\n"
     "A model with no triangles, with coordinates beyond 100 km of the origin, whose vertices all\n"
     "lie at one point or that has no extent along x or z (no floor) is refused up front.\n";
 
@@ -97,9 +97,10 @@ void printLimits(const walls::AutoWallsResult& result, const walls::AutoWallsOpt
     if (l.skipped > 0)
         std::printf(
             "planning limit: %d candidates planned (%.0f m of virtual wall); %d not planned, each with at least "
-            "%.0f m of virtual wall, over --plan-limit %.0f m: raise --plan-limit (about 4 to 10 textures per metre "
-            "to plan), or lower --max-cells, or raise --min-cell\n",
-            l.planned, l.plannedMetres, l.skipped, l.skippedMetres, options.planLimitMetres);
+            "%.0f m of virtual wall, over --plan-limit %.0f m (in all, and %.0f m per candidate): raise "
+            "--plan-limit (about 4 to 10 textures per metre to plan), or lower --max-cells, or raise --min-cell\n",
+            l.planned, l.plannedMetres, l.skipped, l.skippedMetres, options.planLimitMetres,
+            walls::kMostPerCandidate * options.planLimitMetres);
     if (l.eyesWidened)
         std::printf("walk cost: %zu eyes %.2f m apart (widened to keep to %zu per storey)\n", l.eyes, l.eyeStep,
                     walls::kMaxCostEyes);

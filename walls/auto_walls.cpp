@@ -1,5 +1,7 @@
 #include "walls/auto_walls.h"
 
+#include "walls/auto_rooms.h"
+
 #include "config/error.h"
 #include "scenes/loader.h"
 #include "scenes/region.h"
@@ -69,127 +71,9 @@ std::vector<double> chooseCuts(double lo, double hi, int count, const std::vecto
     return cuts;
 }
 
-// Wall quad on the segment a -> b (x, z) from y0 to y1 whose front faces `frontCentre`.
-scenes::VirtualWall wallBetween(glm::dvec2 a, glm::dvec2 b, double y0, double y1, glm::dvec2 frontCentre) {
-    scenes::VirtualWall w;
-    w.lowerLeft = {a.x, y0, a.y};
-    w.lowerRight = {b.x, y0, b.y};
-    w.upperLeft = {a.x, y1, a.y};
-    const glm::dvec3 normal = glm::cross(w.lowerRight - w.lowerLeft, w.upperLeft - w.lowerLeft);
-    const glm::dvec2 toFront = frontCentre - 0.5 * (a + b);
-    if (normal.x * toFront.x + normal.z * toFront.y < 0.0) {
-        std::swap(w.lowerLeft, w.lowerRight);
-        w.upperLeft = {b.x, y1, b.y};
-    }
-    return w;
-}
-
 struct Grid {
     std::vector<double> xs, zs;  // cut positions, first and last are the floor's edges
 };
-
-// A piece of real wall: a thin vertical structure box, as the plane through its middle.
-struct WallPiece {
-    int axis = 0;                 // its normal: 0 (x) or 2 (z)
-    double at = 0.0;              // its plane's position along the normal
-    double from = 0.0, to = 0.0;  // its extent along the other horizontal axis
-    double bottom = 0.0, top = 0.0;
-};
-
-// Gaps of at least `minGap` in [from, to] not covered by `spans`.
-std::vector<std::pair<double, double>> gapsIn(double from, double to, std::vector<std::pair<double, double>> spans,
-                                              double minGap) {
-    std::sort(spans.begin(), spans.end());
-    std::vector<std::pair<double, double>> gaps;
-    double x = from;
-    for (const auto& [a, b] : spans) {
-        if (b <= x) continue;
-        if (a >= to) break;
-        if (a - x >= minGap) gaps.push_back({x, std::min(a, to)});
-        x = std::max(x, b);
-    }
-    if (to - x >= minGap) gaps.push_back({x, to});
-    return gaps;
-}
-
-// Rooms: the grid's boundaries that lie on a line of real wall pieces become portals where
-// the pieces reaching the floor leave a gap (a doorway, as high as the lowest piece above the
-// gap, else the ceiling), nothing where they close it, and stay virtual walls where no piece
-// lies; every piece becomes a real wall (an occluder for the planner's visibility).
-void makeRooms(scenes::SceneDescription& d, const std::vector<WallPiece>& pieces, double floorY, double ceilingY) {
-    constexpr double kOnLine = 0.05, kMinDoor = 0.3, kFloorSlack = 0.1;
-    std::vector<scenes::VirtualWall> walls;
-    for (const scenes::VirtualWall& w : d.walls) {
-        const int axis = std::abs(w.lowerLeft.x - w.lowerRight.x) < 1e-9 ? 0 : 2;  // the boundary's normal
-        const int along = axis == 0 ? 2 : 0;
-        const double at = w.lowerLeft[axis];
-        const double from = std::min(w.lowerLeft[along], w.lowerRight[along]);
-        const double to = std::max(w.lowerLeft[along], w.lowerRight[along]);
-        std::vector<std::pair<double, double>> full;
-        std::vector<const WallPiece*> onLine;
-        for (const WallPiece& p : pieces) {
-            if (p.axis != axis || std::abs(p.at - at) > kOnLine || overlap1d(p.from, p.to, from, to) <= 0.0) continue;
-            onLine.push_back(&p);
-            if (p.bottom <= floorY + kFloorSlack) full.push_back({p.from, p.to});
-        }
-        if (onLine.empty()) {
-            walls.push_back(w);  // open floor: a virtual wall
-            continue;
-        }
-        const glm::dvec3 frontSide = w.lowerLeft + glm::cross(w.lowerRight - w.lowerLeft, w.upperLeft - w.lowerLeft);
-        const glm::dvec2 front{frontSide.x, frontSide.z};
-        int door = 0;
-        for (const auto& [a, b] : gapsIn(from, to, full, kMinDoor)) {
-            double top = ceilingY;
-            for (const WallPiece* p : onLine)
-                if (p->bottom > floorY + kFloorSlack && overlap1d(p->from, p->to, a, b) > 0.0)
-                    top = std::min(top, p->bottom);
-            const glm::dvec2 pa = axis == 0 ? glm::dvec2(at, a) : glm::dvec2(a, at);
-            const glm::dvec2 pb = axis == 0 ? glm::dvec2(at, b) : glm::dvec2(b, at);
-            scenes::VirtualWall portal = wallBetween(pa, pb, floorY, top, front);
-            portal.name = "door " + w.name + (door > 0 ? " " + std::to_string(door + 1) : "");
-            portal.cells = w.cells;
-            portal.kind = scenes::WallKind::Portal;
-            walls.push_back(portal);
-            ++door;
-        }
-    }
-    d.walls = std::move(walls);
-    for (const WallPiece& p : pieces) {
-        scenes::RealWall r;
-        r.name = "real " + std::to_string(d.realWalls.size());
-        const int along = p.axis == 0 ? 2 : 0;
-        r.lowerLeft[p.axis] = r.lowerRight[p.axis] = r.upperLeft[p.axis] = p.at;
-        r.lowerLeft[along] = r.upperLeft[along] = p.from;
-        r.lowerRight[along] = p.to;
-        r.lowerLeft.y = r.lowerRight.y = p.bottom;
-        r.upperLeft.y = p.top;
-        d.realWalls.push_back(r);
-    }
-}
-
-// Positions along `axis` of lines of wall pieces strictly inside (lo, hi) whose pieces reaching
-// the floor cover at least half of `extent`: where a building's rooms meet.
-std::vector<double> wallLines(const std::vector<WallPiece>& pieces, int axis, double lo, double hi, double extent,
-                              double floorY) {
-    std::vector<double> lines;
-    std::vector<const WallPiece*> sorted;
-    for (const WallPiece& p : pieces)
-        if (p.axis == axis && p.at > lo + 0.25 && p.at < hi - 0.25) sorted.push_back(&p);
-    std::sort(sorted.begin(), sorted.end(), [](const WallPiece* a, const WallPiece* b) { return a->at < b->at; });
-    for (std::size_t i = 0; i < sorted.size();) {
-        std::size_t j = i;
-        double covered = 0.0, sum = 0.0;
-        while (j < sorted.size() && sorted[j]->at - sorted[i]->at <= 0.05) {
-            if (sorted[j]->bottom <= floorY + 0.1) covered += sorted[j]->to - sorted[j]->from;
-            sum += sorted[j]->at;
-            ++j;
-        }
-        if (covered >= 0.5 * extent) lines.push_back(sum / static_cast<double>(j - i));
-        i = j;
-    }
-    return lines;
-}
 
 scenes::SceneDescription describe(const scenes::SceneDescription& base, const Grid& g, double floorY, double ceilingY,
                                   double eyeHeight) {
@@ -577,7 +461,7 @@ std::optional<Rooms> roomsOf(const CandidateInputs& in, const Rect& walkable) {
 void addCandidates(Proposals& out, const CandidateInputs& in, const Rect& walkable) {
     std::optional<Rooms> rooms = roomsOf(in, walkable);
     const double roomsMetres = rooms ? wallMetres(rooms->description) : 0.0;
-    const bool roomsFit = rooms && roomsMetres <= out.limitMetres;
+    const bool roomsFit = rooms && roomsMetres <= kMostPerCandidate * out.limitMetres;
     addGrids(out, in, walkable, out.limitMetres - (roomsFit ? roomsMetres : 0.0));
     if (!rooms) return;
     if (!roomsFit) {

@@ -54,7 +54,8 @@
 // 8. Limits (walls/auto_walls_limits.h). A model without triangles, beyond
 //    scenes::kMaxSceneCoordinate, of one point or without a floor is refused up front. Grids
 //    are planned shortest virtual walls first while their total length stays within
-//    planLimitMetres (shared equally among storeys; the rooms count too); the others are not
+//    planLimitMetres (shared equally among storeys; the rooms count too), each candidate
+//    within kMostPerCandidate of it; the others are not
 //    planned, and `limit` says how many and how long. The walk cost uses at most kMaxCostEyes
 //    eyes per storey: the 0.25 m path step or the 0.5 m grid widens to stay within it.
 // Deterministic: the same scene and options give the same description, byte for byte.

@@ -81,7 +81,7 @@ std::vector<bool> gridsWithinLimit(int maxX, int maxZ, glm::dvec2 size, double l
     std::vector<bool> planned(order.size(), false);
     double total = 0.0;
     for (int i : order) {
-        if (total + metres(i) > limitMetres && metres(i) > 0.0) break;
+        if (metres(i) > 0.0 && (total + metres(i) > limitMetres || metres(i) > kMostPerCandidate * limitMetres)) break;
         total += metres(i);
         planned[i] = true;
     }

@@ -12,7 +12,9 @@
 // per metre of wall at the defaults. A grid of nx x nz cells over a walkable rectangle of
 // width w (x) and depth d (z) has (nx - 1) walls of length d and (nz - 1) of length w. The
 // grids are taken in order of that length (shortest first; ties in the order tried, nx then
-// nz) while the total stays within the limit; the others are not planned and are reported.
+// nz) while the total stays within the limit and each within kMostPerCandidate of it (one
+// candidate does not take the whole limit: on a 10 km hall, one 10 km wall takes 15 s of CPU
+// here); the others are not planned and are reported.
 // The one-cell grid has no walls and is always planned.
 //
 // Walk cost eyes. Every 0.25 m along the walk path, or a 0.5 m grid over the walkable
@@ -29,6 +31,8 @@
 namespace cavewall::walls {
 
 inline constexpr std::size_t kMaxCostEyes = 20000;
+// The share of the planning limit one candidate's virtual walls may take, at most.
+inline constexpr double kMostPerCandidate = 0.4;
 
 // Throws cavewall::Error "<where>: ..." when automatic walls cannot cut `scene` (above).
 void checkWallsModel(const scenes::Scene& scene, const std::string& where);
@@ -37,7 +41,7 @@ void checkWallsModel(const scenes::Scene& scene, const std::string& where);
 double gridWallMetres(int nx, int nz, glm::dvec2 size);
 
 // Which grids of 1..maxX x 1..maxZ cells over `size` to plan within `limitMetres` of virtual
-// wall: planned[(nx - 1) * maxZ + (nz - 1)].
+// wall, each within kMostPerCandidate of it: planned[(nx - 1) * maxZ + (nz - 1)].
 std::vector<bool> gridsWithinLimit(int maxX, int maxZ, glm::dvec2 size, double limitMetres);
 
 // The walk cost's eyes: along `walkPath` when it has two points or more, else a grid over

@@ -47,12 +47,15 @@ TEST(AutoWallsLimits, RefusesModelsWithoutAFloorByWhatIsWrong) {
 }
 
 // Grids over 30 m x 10 m: an nx x nz grid has (nx - 1) walls 10 m long and (nz - 1) 30 m long.
-// Shortest first: 1x1 0 m, 2x1 10, 3x1 20, 1x2 30, 2x2 40, 3x2 50; within 60 m the first four.
+// Shortest first: 1x1 0 m, 2x1 10, 3x1 20, 1x2 30, 2x2 40, 3x2 50. Within 100 m, each within
+// 40 m, the first five (100 m in all); within 99 m the first four; within 60 m each is at most
+// 24 m: the first three.
 TEST(AutoWallsLimits, PlansTheGridsWithTheShortestWallsWithinTheLimit) {
     EXPECT_DOUBLE_EQ(gridWallMetres(2, 2, {30, 10}), 40.0);
     // planned[(nx - 1) * 2 + (nz - 1)]: 1x1 1x2 2x1 2x2 3x1 3x2
-    EXPECT_THAT(gridsWithinLimit(3, 2, {30, 10}, 60.0), ElementsAre(true, true, true, false, true, false));
-    EXPECT_THAT(gridsWithinLimit(3, 2, {30, 10}, 59.0), ElementsAre(true, false, true, false, true, false));
+    EXPECT_THAT(gridsWithinLimit(3, 2, {30, 10}, 100.0), ElementsAre(true, true, true, true, true, false));
+    EXPECT_THAT(gridsWithinLimit(3, 2, {30, 10}, 99.0), ElementsAre(true, true, true, false, true, false));
+    EXPECT_THAT(gridsWithinLimit(3, 2, {30, 10}, 60.0), ElementsAre(true, false, true, false, true, false));
     // The one-cell grid has no walls: always planned.
     EXPECT_THAT(gridsWithinLimit(3, 2, {30, 10}, 1e-3), ElementsAre(true, false, false, false, false, false));
 }

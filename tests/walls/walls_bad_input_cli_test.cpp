@@ -42,8 +42,8 @@ TEST(WallsBadInput, ATenKilometreHallIsPlannedWithinTheLimit) {
     ASSERT_EQ(t.result.exitCode, 0) << t.result.err;
     EXPECT_LT(t.seconds, 60.0);  // seconds here; it ran for more than 240 s before the limit
     EXPECT_THAT(t.result.out, HasSubstr("planning limit: 8 candidates planned (560 m of virtual wall); 32 not planned, "
-                                        "each with at least 10000 m of virtual wall, over --plan-limit 2000 m: raise "
-                                        "--plan-limit"));
+                                        "each with at least 10000 m of virtual wall, over --plan-limit 2000 m (in all, "
+                                        "and 800 m per candidate): raise --plan-limit"));
     EXPECT_THAT(t.result.err, HasSubstr("walls: planned storey 0: grid 8 x 1 (8 cells, 140 m of virtual wall): "));
     EXPECT_TRUE(std::filesystem::exists(out));
     // The walk cost's 0.5 m grid over 10 km x 20 m would be 800,000 eyes: it widens.
