@@ -26,7 +26,7 @@ const char* const kWallsUsage =
     "usage: cavewall walls MODEL --out SCENE_JSON [--texture-budget MB] [--alpha DEG] [--max-res N]\n"
     "                      [--ppd N] [--min-cell M] [--max-cells N] [--ms-per-mtri MS]\n"
     "                      [--ms-per-wall MS] [--split M] [--rooms] [--keep-paths] [--walk-cost]\n"
-    "                      [--png FILE] [--png-walls FILE]\n"
+    "                      [--plan-limit M] [--png FILE] [--png-walls FILE]\n"
     "\n"
     "Proposes cells and virtual walls for MODEL (a glTF/GLB nobody prepared, or a scene.json or\n"
     "its folder, whose cells and walls are replaced): finds structure (large planes, or the\n"
@@ -66,7 +66,14 @@ const char* const kWallsUsage =
     "--walk-cost scores every grid by eyes every 0.25 m along the input's walk path (without\n"
     "one, a 0.5 m grid over the floor), each drawing its cell plus every neighbour whose wall's\n"
     "geometry zone or texture->geometry blend strip holds it, as the walkthrough does (the\n"
-    "default counts the viewer's cell only, weighted by floor area).\n";
+    "default counts the viewer's cell only, weighted by floor area). On a long path or a large\n"
+    "floor the step widens to keep to 20000 eyes per storey.\n"
+    "Planning takes time in proportion to the virtual walls' length (about 4 to 10 textures per\n"
+    "metre of wall): grids are planned shortest walls first while their total stays within\n"
+    "--plan-limit metres (default 25000, shared among storeys), each within 40 % of it; the rest\n"
+    "are listed as not planned. Each candidate is printed on stderr as it is planned.\n"
+    "A model with no triangles, with coordinates beyond 100 km of the origin, whose vertices all\n"
+    "lie at one point or that has no extent along x or z (no floor) is refused up front.\n";
 
 namespace {
 
@@ -94,12 +101,27 @@ void printStoreys(const walls::AutoWallsResult& result) {
                     s.from, s.from + 1, s.lo.x, s.hi.x, s.lo.y, s.hi.y, s.bottom.x, s.bottom.y, s.top.x, s.top.y);
 }
 
+// What the planning limit and the walk cost's eye cap left out (walls/auto_walls_limits.h).
+void printLimits(const walls::AutoWallsResult& result, const walls::AutoWallsOptions& options) {
+    const walls::AutoWallsLimit& l = result.limit;
+    if (l.skipped > 0)
+        std::printf(
+            "planning limit: %d candidates planned (%.0f m of virtual wall); %d not planned, each with at least "
+            "%.0f m of virtual wall, over --plan-limit %.0f m (in all, and %.0f m per candidate): raise "
+            "--plan-limit (about 4 to 10 textures per metre to plan), or lower --max-cells, or raise --min-cell\n",
+            l.planned, l.plannedMetres, l.skipped, l.skippedMetres, options.planLimitMetres,
+            walls::kMostPerCandidate * options.planLimitMetres);
+    if (l.eyesWidened)
+        std::printf("walk cost: %zu eyes %.2f m apart (widened to keep to %zu per storey)\n", l.eyes, l.eyeStep,
+                    walls::kMaxCostEyes);
+}
+
 }  // namespace
 
 int runWalls(const std::vector<std::string>& words) {
     const Args args(words, {"rooms", "keep-paths", "walk-cost"});
     args.expectFlags({"out", "texture-budget", "alpha", "max-res", "ppd", "min-cell", "max-cells", "ms-per-mtri",
-                      "ms-per-wall", "split", "rooms", "keep-paths", "walk-cost", "png", "png-walls"});
+                      "ms-per-wall", "split", "rooms", "keep-paths", "walk-cost", "plan-limit", "png", "png-walls"});
     walls::AutoWallsOptions options;
     options.plan.alphaDeg = args.number("alpha", options.plan.alphaDeg, 1e-6, 90.0);
     options.plan.pixelsPerDegree = args.number("ppd", options.plan.pixelsPerDegree, 0.01, 1000.0);
@@ -111,6 +133,8 @@ int runWalls(const std::vector<std::string>& words) {
     options.msPerWallSide = args.number("ms-per-wall", options.msPerWallSide, 0.0, 1e9);
     options.preferRooms = args.has("rooms");
     options.walkCost = args.has("walk-cost");
+    options.planLimitMetres = args.number("plan-limit", options.planLimitMetres, 1.0, 1e9);
+    options.progress = [](const std::string& line) { std::cerr << "walls: planned " << line << std::endl; };
     walls::validateAutoWallsOptions(options);
     const std::string& path = args.positional(0, "MODEL");
     if (args.positional().size() > 1)
@@ -130,6 +154,7 @@ int runWalls(const std::vector<std::string>& words) {
 
     scenes::SceneDescription base;
     scenes::Scene scene = scenes::loadSceneFile(path, &base);
+    walls::checkWallsModel(scene, path);
     const std::vector<std::filesystem::path> inputs = scenes::sceneInputFiles(path, base);
     scenes::checkNotAnInput(out, "--out", inputs);
     if (png) scenes::checkNotAnInput(*png, "--png", inputs);
@@ -205,6 +230,7 @@ int runWalls(const std::vector<std::string>& words) {
                     c.meanCellTriangles, c.textures, c.textureMB, c.withinBudget ? "fits" : "over",
                     chosen ? "  <- chosen" : "", rooms.c_str());
     }
+    printLimits(result, options);
     if (const auto& g = result.given)
         std::printf("%-7s %6zu %12.1f %16.0f %9d %12.1f %7s  (the input's own cells and walls)\n", "given",
                     base.cells.size(), g->expectedMs, g->meanCellTriangles, g->textures, g->textureMB,

@@ -3,6 +3,7 @@
 # UndefinedBehaviorSanitizer (Debian's clang), one process. Usage:
 #   tools/fuzz.sh TARGET SECONDS      TARGET: display_config gltf scene_description dtrack
 #                                             opentrack vrpn bake_manifest texture_blocks depth_file
+#                                             cluster_impostor
 # The working corpus is build-fuzz/corpus/TARGET, seeded from tests/fuzz/corpus/TARGET (plus the
 # presets or the shared models); crashes go to build-fuzz/crashes/TARGET/. Copy a crash file
 # into tests/fuzz/corpus/TARGET/ once fixed: the replay tests (ctest -R fuzz_replay) keep it.

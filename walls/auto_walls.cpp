@@ -1,5 +1,7 @@
 #include "walls/auto_walls.h"
 
+#include "walls/auto_rooms.h"
+
 #include "config/error.h"
 #include "scenes/loader.h"
 #include "scenes/region.h"
@@ -7,9 +9,12 @@
 #include "walls/plan_io.h"
 #include "walls/room_cells.h"
 #include "walls/storeys.h"
+#include "walls/zone_index.h"
 
 #include <algorithm>
 #include <array>
+#include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -67,127 +72,9 @@ std::vector<double> chooseCuts(double lo, double hi, int count, const std::vecto
     return cuts;
 }
 
-// Wall quad on the segment a -> b (x, z) from y0 to y1 whose front faces `frontCentre`.
-scenes::VirtualWall wallBetween(glm::dvec2 a, glm::dvec2 b, double y0, double y1, glm::dvec2 frontCentre) {
-    scenes::VirtualWall w;
-    w.lowerLeft = {a.x, y0, a.y};
-    w.lowerRight = {b.x, y0, b.y};
-    w.upperLeft = {a.x, y1, a.y};
-    const glm::dvec3 normal = glm::cross(w.lowerRight - w.lowerLeft, w.upperLeft - w.lowerLeft);
-    const glm::dvec2 toFront = frontCentre - 0.5 * (a + b);
-    if (normal.x * toFront.x + normal.z * toFront.y < 0.0) {
-        std::swap(w.lowerLeft, w.lowerRight);
-        w.upperLeft = {b.x, y1, b.y};
-    }
-    return w;
-}
-
 struct Grid {
     std::vector<double> xs, zs;  // cut positions, first and last are the floor's edges
 };
-
-// A piece of real wall: a thin vertical structure box, as the plane through its middle.
-struct WallPiece {
-    int axis = 0;                 // its normal: 0 (x) or 2 (z)
-    double at = 0.0;              // its plane's position along the normal
-    double from = 0.0, to = 0.0;  // its extent along the other horizontal axis
-    double bottom = 0.0, top = 0.0;
-};
-
-// Gaps of at least `minGap` in [from, to] not covered by `spans`.
-std::vector<std::pair<double, double>> gapsIn(double from, double to, std::vector<std::pair<double, double>> spans,
-                                              double minGap) {
-    std::sort(spans.begin(), spans.end());
-    std::vector<std::pair<double, double>> gaps;
-    double x = from;
-    for (const auto& [a, b] : spans) {
-        if (b <= x) continue;
-        if (a >= to) break;
-        if (a - x >= minGap) gaps.push_back({x, std::min(a, to)});
-        x = std::max(x, b);
-    }
-    if (to - x >= minGap) gaps.push_back({x, to});
-    return gaps;
-}
-
-// Rooms: the grid's boundaries that lie on a line of real wall pieces become portals where
-// the pieces reaching the floor leave a gap (a doorway, as high as the lowest piece above the
-// gap, else the ceiling), nothing where they close it, and stay virtual walls where no piece
-// lies; every piece becomes a real wall (an occluder for the planner's visibility).
-void makeRooms(scenes::SceneDescription& d, const std::vector<WallPiece>& pieces, double floorY, double ceilingY) {
-    constexpr double kOnLine = 0.05, kMinDoor = 0.3, kFloorSlack = 0.1;
-    std::vector<scenes::VirtualWall> walls;
-    for (const scenes::VirtualWall& w : d.walls) {
-        const int axis = std::abs(w.lowerLeft.x - w.lowerRight.x) < 1e-9 ? 0 : 2;  // the boundary's normal
-        const int along = axis == 0 ? 2 : 0;
-        const double at = w.lowerLeft[axis];
-        const double from = std::min(w.lowerLeft[along], w.lowerRight[along]);
-        const double to = std::max(w.lowerLeft[along], w.lowerRight[along]);
-        std::vector<std::pair<double, double>> full;
-        std::vector<const WallPiece*> onLine;
-        for (const WallPiece& p : pieces) {
-            if (p.axis != axis || std::abs(p.at - at) > kOnLine || overlap1d(p.from, p.to, from, to) <= 0.0) continue;
-            onLine.push_back(&p);
-            if (p.bottom <= floorY + kFloorSlack) full.push_back({p.from, p.to});
-        }
-        if (onLine.empty()) {
-            walls.push_back(w);  // open floor: a virtual wall
-            continue;
-        }
-        const glm::dvec3 frontSide = w.lowerLeft + glm::cross(w.lowerRight - w.lowerLeft, w.upperLeft - w.lowerLeft);
-        const glm::dvec2 front{frontSide.x, frontSide.z};
-        int door = 0;
-        for (const auto& [a, b] : gapsIn(from, to, full, kMinDoor)) {
-            double top = ceilingY;
-            for (const WallPiece* p : onLine)
-                if (p->bottom > floorY + kFloorSlack && overlap1d(p->from, p->to, a, b) > 0.0)
-                    top = std::min(top, p->bottom);
-            const glm::dvec2 pa = axis == 0 ? glm::dvec2(at, a) : glm::dvec2(a, at);
-            const glm::dvec2 pb = axis == 0 ? glm::dvec2(at, b) : glm::dvec2(b, at);
-            scenes::VirtualWall portal = wallBetween(pa, pb, floorY, top, front);
-            portal.name = "door " + w.name + (door > 0 ? " " + std::to_string(door + 1) : "");
-            portal.cells = w.cells;
-            portal.kind = scenes::WallKind::Portal;
-            walls.push_back(portal);
-            ++door;
-        }
-    }
-    d.walls = std::move(walls);
-    for (const WallPiece& p : pieces) {
-        scenes::RealWall r;
-        r.name = "real " + std::to_string(d.realWalls.size());
-        const int along = p.axis == 0 ? 2 : 0;
-        r.lowerLeft[p.axis] = r.lowerRight[p.axis] = r.upperLeft[p.axis] = p.at;
-        r.lowerLeft[along] = r.upperLeft[along] = p.from;
-        r.lowerRight[along] = p.to;
-        r.lowerLeft.y = r.lowerRight.y = p.bottom;
-        r.upperLeft.y = p.top;
-        d.realWalls.push_back(r);
-    }
-}
-
-// Positions along `axis` of lines of wall pieces strictly inside (lo, hi) whose pieces reaching
-// the floor cover at least half of `extent`: where a building's rooms meet.
-std::vector<double> wallLines(const std::vector<WallPiece>& pieces, int axis, double lo, double hi, double extent,
-                              double floorY) {
-    std::vector<double> lines;
-    std::vector<const WallPiece*> sorted;
-    for (const WallPiece& p : pieces)
-        if (p.axis == axis && p.at > lo + 0.25 && p.at < hi - 0.25) sorted.push_back(&p);
-    std::sort(sorted.begin(), sorted.end(), [](const WallPiece* a, const WallPiece* b) { return a->at < b->at; });
-    for (std::size_t i = 0; i < sorted.size();) {
-        std::size_t j = i;
-        double covered = 0.0, sum = 0.0;
-        while (j < sorted.size() && sorted[j]->at - sorted[i]->at <= 0.05) {
-            if (sorted[j]->bottom <= floorY + 0.1) covered += sorted[j]->to - sorted[j]->from;
-            sum += sorted[j]->at;
-            ++j;
-        }
-        if (covered >= 0.5 * extent) lines.push_back(sum / static_cast<double>(j - i));
-        i = j;
-    }
-    return lines;
-}
 
 scenes::SceneDescription describe(const scenes::SceneDescription& base, const Grid& g, double floorY, double ceilingY,
                                   double eyeHeight) {
@@ -250,12 +137,12 @@ scenes::SceneDescription describe(const scenes::SceneDescription& base, const Gr
 // The triangles drawn from `eye` in `cell`: the cell's, plus those of every neighbour whose
 // zone holding the eye draws it as geometry (the planner's own zones).
 double drawnFrom(const glm::dvec3& eye, int cell, const std::optional<Plan>& plan,
-                 const std::vector<double>& cellTriangles) {
+                 const std::optional<ZoneIndex>& index, const std::vector<double>& cellTriangles) {
     double drawn = cellTriangles[cell];
-    if (plan)
+    if (plan && index)
         for (const WallSide& side : plan->sides) {
             if (side.cell != cell) continue;
-            const int z = findZone(*plan, cell, side.wall, {eye.x, eye.z});
+            const int z = index->find(cell, side.wall, {eye.x, eye.z});
             if (z < 0) continue;
             const Zone& zone = plan->zones[z];
             if (zone.kind != ZoneKind::Geometry && !(zone.kind == ZoneKind::Blend && zone.mixesGeometry)) continue;
@@ -273,10 +160,12 @@ void applyWalkCost(AutoWallsCandidate& c, const scenes::SceneDescription& d, con
                    const AutoWallsOptions& options, const std::vector<glm::dvec3>& eyes) {
     double ms = 0.0, triangles = 0.0;
     int counted = 0;
+    std::optional<ZoneIndex> index;
+    if (plan) index.emplace(*plan);
     for (const glm::dvec3& eye : eyes) {
         const int cell = scenes::findCell(d.cells, eye);
         if (cell < 0) continue;
-        const double drawn = drawnFrom(eye, cell, plan, cellTriangles);
+        const double drawn = drawnFrom(eye, cell, plan, index, cellTriangles);
         ms += options.msPerMillionTriangles * drawn / 1e6 + options.msPerWallSide * cellSides[cell];
         triangles += drawn;
         ++counted;
@@ -329,24 +218,6 @@ AutoWallsCandidate evaluate(const scenes::SceneDescription& d, const std::vector
     c.withinBudget = c.textureMB <= options.textureBudgetMB;
     if (!eyes.empty()) applyWalkCost(c, d, plan, cellTriangles, cellSides, options, eyes);
     return c;
-}
-
-// The walk cost's eyes (6.): every 0.25 m along `walkPath`, or a 0.5 m grid over [lo, hi] at
-// eye height when there is no path.
-std::vector<glm::dvec3> costEyes(const std::vector<glm::dvec3>& walkPath, glm::dvec2 lo, glm::dvec2 hi, double eyeY) {
-    std::vector<glm::dvec3> eyes;
-    if (walkPath.size() >= 2) {
-        for (std::size_t i = 0; i + 1 < walkPath.size(); ++i) {
-            const double length = glm::length(walkPath[i + 1] - walkPath[i]);
-            const int steps = std::max(1, static_cast<int>(std::ceil(length / 0.25)));
-            for (int k = 0; k < steps; ++k) eyes.push_back(glm::mix(walkPath[i], walkPath[i + 1], double(k) / steps));
-        }
-        eyes.push_back(walkPath.back());
-        return eyes;
-    }
-    for (double x = lo.x + 0.25; x < hi.x; x += 0.5)
-        for (double z = lo.y + 0.25; z < hi.y; z += 0.5) eyes.push_back({x, eyeY, z});
-    return eyes;
 }
 
 // 1.'s findings over the model's objects.
@@ -490,62 +361,110 @@ struct CandidateInputs {
 struct Proposals {
     std::vector<AutoWallsCandidate> candidates;
     std::vector<scenes::SceneDescription> descriptions;
+    double limitMetres = 0.0;  // 8.: virtual wall this storey may plan
+    AutoWallsLimit limit;      // what it planned and left out (eyes aside)
+    int storey = 0;            // for the progress lines
 };
 
-// 3.-4. Every grid of nx x nz cells over `walkable`, scored; a row of nz stops at its first
-// candidate over the budget.
-void addGrids(Proposals& out, const CandidateInputs& in, const Rect& walkable) {
+double wallMetres(const scenes::SceneDescription& d) {
+    double metres = 0.0;
+    for (const scenes::VirtualWall& w : d.walls) metres += glm::length(w.lowerRight - w.lowerLeft);
+    return metres;
+}
+
+// Not planned: over 8.'s limit.
+void skip(Proposals& out, double metres) {
+    out.limit.skippedMetres = out.limit.skipped == 0 ? metres : std::min(out.limit.skippedMetres, metres);
+    ++out.limit.skipped;
+}
+
+// Scores `d` (4.-6.), adds it to `out` and reports it to options.progress.
+AutoWallsCandidate& addCandidate(Proposals& out, const CandidateInputs& in, scenes::SceneDescription d,
+                                 AutoWallsCandidate shape) {
+    const auto start = std::chrono::steady_clock::now();
+    const double metres = wallMetres(d);
+    AutoWallsCandidate c = evaluate(d, in.parts.content, in.parts.contentTriangles, in.options, in.eyes);
+    c.nx = shape.nx;
+    c.nz = shape.nz;
+    c.rooms = shape.rooms;
+    c.floorPlan = shape.floorPlan;
+    for (const scenes::VirtualWall& w : d.walls) ++(w.kind == scenes::WallKind::Portal ? c.portals : c.virtualWalls);
+    if (!c.rooms) c.portals = c.virtualWalls = 0;
+    ++out.limit.planned;
+    out.limit.plannedMetres += metres;
+    if (in.options.progress) {
+        char line[200];
+        std::snprintf(line, sizeof line,
+                      "storey %d: %s %d x %d (%zu cells, %.0f m of virtual wall): %d textures, %.1f s", out.storey,
+                      c.rooms ? "rooms" : "grid", c.nx, c.nz, d.cells.size(), metres, c.textures,
+                      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        in.options.progress(line);
+    }
+    out.candidates.push_back(c);
+    out.descriptions.push_back(std::move(d));
+    return out.candidates.back();
+}
+
+// 3.-4. Every grid of nx x nz cells over `walkable` within 8.'s limit (`limitMetres`), scored;
+// a row of nz stops at its first candidate over the budget.
+void addGrids(Proposals& out, const CandidateInputs& in, const Rect& walkable, double limitMetres) {
     const AutoWallsOptions& options = in.options;
-    const int maxX =
-        std::clamp(static_cast<int>((walkable.hi.x - walkable.lo.x) / options.minCellSize), 1, options.maxCellsPerAxis);
-    const int maxZ =
-        std::clamp(static_cast<int>((walkable.hi.y - walkable.lo.y) / options.minCellSize), 1, options.maxCellsPerAxis);
+    const glm::dvec2 size = walkable.hi - walkable.lo;
+    const int maxX = std::clamp(static_cast<int>(size.x / options.minCellSize), 1, options.maxCellsPerAxis);
+    const int maxZ = std::clamp(static_cast<int>(size.y / options.minCellSize), 1, options.maxCellsPerAxis);
+    const std::vector<bool> planned = gridsWithinLimit(maxX, maxZ, size, limitMetres);
     for (int nx = 1; nx <= maxX; ++nx)
         for (int nz = 1; nz <= maxZ; ++nz) {
+            if (!planned[(nx - 1) * maxZ + (nz - 1)]) {
+                skip(out, gridWallMetres(nx, nz, size));
+                continue;
+            }
             Grid g{chooseCuts(walkable.lo.x, walkable.hi.x, nx, in.parts.content, 0),
                    chooseCuts(walkable.lo.y, walkable.hi.y, nz, in.parts.content, 2)};
             scenes::SceneDescription d = describe(in.named, g, in.floorY, in.ceilingY, in.eyeHeight);
             scenes::validateSceneDescription(d, "auto walls");
-            AutoWallsCandidate c = evaluate(d, in.parts.content, in.parts.contentTriangles, options, in.eyes);
-            c.nx = nx;
-            c.nz = nz;
-            out.candidates.push_back(c);
-            out.descriptions.push_back(std::move(d));
+            AutoWallsCandidate shape;
+            shape.nx = nx;
+            shape.nz = nz;
             // More cells along z only add walls and textures: the rest of this row is over too.
-            if (!c.withinBudget) break;
+            if (!addCandidate(out, in, std::move(d), shape).withinBudget) break;
         }
 }
 
+// 5. The rooms: a grid cut along the lines of real walls, its boundaries on them portals; none
+// when there are no such lines. nx and nz: its grid's.
+struct Rooms {
+    scenes::SceneDescription description;
+    AutoWallsCandidate shape;
+};
+
 // 5. The rooms of the floor plan, when it has two or more: cells cut along them
 // (walls/room_cells.h), halved while over the texture budget, down to 4.
-void addPlanRooms(Proposals& out, const CandidateInputs& in) {
-    if (!in.rooms || in.rooms->plan.rooms.size() < 2) return;
+std::optional<Rooms> floorPlanRoomsOf(const CandidateInputs& in) {
+    if (!in.rooms || in.rooms->plan.rooms.size() < 2) return std::nullopt;
     RoomCellOptions cellOptions;
     scenes::SceneDescription d;
-    AutoWallsCandidate c;
     for (;; cellOptions.maxCells /= 2) {
         d = describeRooms(in.named, in.rooms->grid.grid, in.rooms->plan, in.floorY, in.ceilingY, in.eyeHeight,
                           cellOptions);
         scenes::validateSceneDescription(d, "auto walls (floor plan rooms)");
-        c = evaluate(d, in.parts.content, in.parts.contentTriangles, in.options, in.eyes);
-        if (c.withinBudget || cellOptions.maxCells / 2 < 4) break;
+        if (cellOptions.maxCells / 2 < 4) break;
+        if (evaluate(d, in.parts.content, in.parts.contentTriangles, in.options, in.eyes).withinBudget) break;
     }
-    c.nx = static_cast<int>(d.cells.size());
-    c.rooms = c.floorPlan = true;
-    for (const scenes::VirtualWall& w : d.walls) ++(w.kind == scenes::WallKind::Portal ? c.portals : c.virtualWalls);
-    out.candidates.push_back(c);
-    out.descriptions.push_back(std::move(d));
+    AutoWallsCandidate shape;
+    shape.nx = static_cast<int>(d.cells.size());
+    shape.nz = 1;
+    shape.rooms = shape.floorPlan = true;
+    return Rooms{std::move(d), shape};
 }
 
-// 5. The rooms: a grid cut along the lines of real walls, its boundaries on them portals; no
-// candidate when there are no such lines.
-void addRooms(Proposals& out, const CandidateInputs& in, const Rect& walkable) {
+std::optional<Rooms> roomsOf(const CandidateInputs& in, const Rect& walkable) {
     const std::vector<WallPiece>& pieces = in.parts.pieces;
     const std::vector<double> xLines =
         wallLines(pieces, 0, walkable.lo.x, walkable.hi.x, walkable.hi.y - walkable.lo.y, in.floorY);
     const std::vector<double> zLines =
         wallLines(pieces, 2, walkable.lo.y, walkable.hi.y, walkable.hi.x - walkable.lo.x, in.floorY);
-    if (xLines.empty() && zLines.empty()) return addPlanRooms(out, in);
+    if (xLines.empty() && zLines.empty()) return floorPlanRoomsOf(in);
     Grid g{{walkable.lo.x}, {walkable.lo.y}};
     g.xs.insert(g.xs.end(), xLines.begin(), xLines.end());
     g.zs.insert(g.zs.end(), zLines.begin(), zLines.end());
@@ -554,13 +473,26 @@ void addRooms(Proposals& out, const CandidateInputs& in, const Rect& walkable) {
     scenes::SceneDescription d = describe(in.named, g, in.floorY, in.ceilingY, in.eyeHeight);
     makeRooms(d, pieces, in.floorY, in.ceilingY);
     scenes::validateSceneDescription(d, "auto walls (rooms)");
-    AutoWallsCandidate c = evaluate(d, in.parts.content, in.parts.contentTriangles, in.options, in.eyes);
-    c.nx = static_cast<int>(g.xs.size()) - 1;
-    c.nz = static_cast<int>(g.zs.size()) - 1;
-    c.rooms = true;
-    for (const scenes::VirtualWall& w : d.walls) ++(w.kind == scenes::WallKind::Portal ? c.portals : c.virtualWalls);
-    out.candidates.push_back(c);
-    out.descriptions.push_back(std::move(d));
+    AutoWallsCandidate shape;
+    shape.nx = static_cast<int>(g.xs.size()) - 1;
+    shape.nz = static_cast<int>(g.zs.size()) - 1;
+    shape.rooms = true;
+    return Rooms{std::move(d), shape};
+}
+
+// 3.-5. The grids and the rooms of one storey within out.limitMetres: the rooms' walls are
+// counted first, the grids get the rest; the rooms are scored last.
+void addCandidates(Proposals& out, const CandidateInputs& in, const Rect& walkable) {
+    std::optional<Rooms> rooms = roomsOf(in, walkable);
+    const double roomsMetres = rooms ? wallMetres(rooms->description) : 0.0;
+    const bool roomsFit = rooms && roomsMetres <= kMostPerCandidate * out.limitMetres;
+    addGrids(out, in, walkable, out.limitMetres - (roomsFit ? roomsMetres : 0.0));
+    if (!rooms) return;
+    if (!roomsFit) {
+        skip(out, roomsMetres);
+        return;
+    }
+    addCandidate(out, in, std::move(rooms->description), rooms->shape);
 }
 
 // The cheapest candidate within the budget (the first of equals; the first candidate, one cell,
@@ -618,32 +550,63 @@ StoreyRooms storeyRooms(const scenes::Scene& scene, double floorY, double ceilin
     return rooms;
 }
 
+// Adds one storey's limits and eyes to the result's.
+void addLimit(AutoWallsLimit& total, const AutoWallsLimit& one, const std::vector<glm::dvec3>& eyes, double eyeStep,
+              bool onPath) {
+    if (one.skipped > 0)
+        total.skippedMetres = total.skipped == 0 ? one.skippedMetres : std::min(total.skippedMetres, one.skippedMetres);
+    total.planned += one.planned;
+    total.skipped += one.skipped;
+    total.plannedMetres += one.plannedMetres;
+    total.eyes += eyes.size();
+    if (eyes.empty()) return;
+    total.eyeStep = std::max(total.eyeStep, eyeStep);
+    total.eyesWidened = total.eyesWidened || eyeStep > (onPath ? 0.25 : 0.5);
+}
+
+// The candidates of one storey (`in`) over `walkable` within `limitMetres`; the result gets
+// its limits and eyes.
+Proposals proposeStorey(AutoWallsResult& result, const CandidateInputs& in, const Rect& walkable, int storey,
+                        double limitMetres, double eyeStep, bool onPath) {
+    Proposals proposals;
+    proposals.limitMetres = limitMetres;
+    proposals.storey = storey;
+    addCandidates(proposals, in, walkable);
+    addLimit(result.limit, proposals.limit, in.eyes, eyeStep, onPath);
+    return proposals;
+}
+
 // 7. Every storey of `found` (two or more) cut on its own; the proposal stacks the chosen ones.
 void proposeStoreys(AutoWallsResult& result, const scenes::Scene& scene, const Storeys& found, const ModelParts& parts,
                     const scenes::SceneDescription& named, const scenes::SceneDescription& base,
                     const AutoWallsOptions& options, const Rect& hall) {
     AutoWallsOptions each = options;
-    each.textureBudgetMB = options.textureBudgetMB / static_cast<double>(found.storeys.size());
+    const auto storeys = static_cast<double>(found.storeys.size());
+    each.textureBudgetMB = options.textureBudgetMB / storeys;
     std::vector<scenes::SceneDescription> chosen;
     for (std::size_t i = 0; i < found.storeys.size(); ++i) {
         const Storey& s = found.storeys[i];
         const ModelParts own = storeyParts(parts, s.floorY, s.ceilingY);
         const Rect walkable = storeyRect(s, hall);
         std::vector<glm::dvec3> eyes;
+        double step = 0.0;
+        bool onPath = base.walkPath.size() >= 2;
         if (options.walkCost) {
             const double eyeY = s.floorY + base.eyeHeight;
-            eyes = costEyes(base.walkPath, walkable.lo, walkable.hi, eyeY);
+            eyes = costEyes(base.walkPath, walkable.lo, walkable.hi, eyeY, &step);
             std::erase_if(eyes, [&](const glm::dvec3& e) {
                 return storeyAt(found.storeys, e.y - base.eyeHeight) != static_cast<int>(i);
             });
-            if (eyes.empty()) eyes = costEyes({}, walkable.lo, walkable.hi, eyeY);
+            if (eyes.empty()) {
+                eyes = costEyes({}, walkable.lo, walkable.hi, eyeY, &step);
+                onPath = false;
+            }
         }
         AutoWallsStorey figures{s, walkable.lo, walkable.hi};
         const StoreyRooms rooms = storeyRooms(scene, s.floorY, s.ceilingY, walkable, figures);
         const CandidateInputs in{named, own, each, eyes, s.floorY, s.ceilingY, base.eyeHeight, &rooms};
-        Proposals proposals;
-        addGrids(proposals, in, walkable);
-        addRooms(proposals, in, walkable);
+        Proposals proposals =
+            proposeStorey(result, in, walkable, static_cast<int>(i), options.planLimitMetres / storeys, step, onPath);
         const int pick = chooseCandidate(proposals.candidates, options.preferRooms);
         const int first = static_cast<int>(result.candidates.size());
         for (AutoWallsCandidate& c : proposals.candidates) {
@@ -683,13 +646,13 @@ void validateAutoWallsOptions(const AutoWallsOptions& o) {
     check(o.maxCellsPerAxis >= 1 && o.maxCellsPerAxis <= 26, "cells per axis", "1 to 26", o.maxCellsPerAxis);
     check(o.planarThickness > 0.0 && o.planarThickness < 1.0, "planar thickness", "in (0, 1)", o.planarThickness);
     check(o.planarExtent > 0.0 && o.planarExtent <= 1.0, "planar extent", "in (0, 1]", o.planarExtent);
+    check(std::isfinite(o.planLimitMetres) && o.planLimitMetres > 0.0, "planning limit", "> 0 m", o.planLimitMetres);
 }
 
 AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDescription& base,
                              const AutoWallsOptions& options, std::vector<std::string>* warnings) {
     validateAutoWallsOptions(options);
-    if (scene.objects.empty())
-        throw Error("auto walls: scene '" + scene.name + "' has no objects (expected at least one)");
+    checkWallsModel(scene, "auto walls: scene '" + scene.name + "'");
     if (warnings && (!base.realWalls.empty() || !base.walls.empty()))
         warnings->push_back("auto walls: the description's " + std::to_string(base.walls.size()) + " walls and " +
                             std::to_string(base.realWalls.size()) + " real walls are replaced (by the proposal's own)");
@@ -713,15 +676,15 @@ AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDesc
         proposeStoreys(result, scene, found, parts, named, base, options, walkable);
     } else {
         // 3-5. Candidates, cost and budget (6.: the walk cost's eyes).
+        double step = 0.0;
         const std::vector<glm::dvec3> eyes =
-            options.walkCost ? costEyes(base.walkPath, walkable.lo, walkable.hi, result.floorY + base.eyeHeight)
+            options.walkCost ? costEyes(base.walkPath, walkable.lo, walkable.hi, result.floorY + base.eyeHeight, &step)
                              : std::vector<glm::dvec3>{};
         AutoWallsStorey figures{found.storeys.front(), walkable.lo, walkable.hi};
         const StoreyRooms rooms = storeyRooms(scene, result.floorY, result.ceilingY, walkable, figures);
         const CandidateInputs in{named, parts, options, eyes, result.floorY, result.ceilingY, base.eyeHeight, &rooms};
-        Proposals proposals;
-        addGrids(proposals, in, walkable);
-        addRooms(proposals, in, walkable);
+        Proposals proposals =
+            proposeStorey(result, in, walkable, 0, options.planLimitMetres, step, base.walkPath.size() >= 2);
         result.candidates = std::move(proposals.candidates);
         result.chosen = chooseCandidate(result.candidates, options.preferRooms);
         result.description = std::move(proposals.descriptions[result.chosen]);

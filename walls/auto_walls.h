@@ -58,13 +58,22 @@
 //    "<storey>/<cell>" with their storey's floorY (scenes::findCell picks a cell by height), one
 //    walk path visiting every storey in turn, up the stairs found (walls/storeys.h,
 //    stackStoreys).
+// 8. Limits (walls/auto_walls_limits.h). A model without triangles, beyond
+//    scenes::kMaxSceneCoordinate, of one point or without a floor is refused up front. Grids
+//    are planned shortest virtual walls first while their total length stays within
+//    planLimitMetres (shared equally among storeys; the rooms count too), each candidate
+//    within kMostPerCandidate of it; the others are not
+//    planned, and `limit` says how many and how long. The walk cost uses at most kMaxCostEyes
+//    eyes per storey: the 0.25 m path step or the 0.5 m grid widens to stay within it.
 // Deterministic: the same scene and options give the same description, byte for byte.
 
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
+#include "walls/auto_walls_limits.h"
 #include "walls/plan.h"
 #include "walls/storeys.h"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -86,6 +95,22 @@ struct AutoWallsOptions {
     // The walk cost (6.) instead of 4.'s floor cost: eyes along the input's walk path, each
     // also drawing the neighbours whose geometry zones hold it (`cavewall walls --walk-cost`).
     bool walkCost = false;
+    // Metres of virtual wall planned over all candidates, at most (8.; `--plan-limit`), > 0.
+    double planLimitMetres = 25000.0;
+    // Called with one line per candidate planned (its grid, walls, textures and seconds), as
+    // it is planned; may be empty.
+    std::function<void(const std::string&)> progress;
+};
+
+// What 8.'s limits left out, over all storeys.
+struct AutoWallsLimit {
+    int planned = 0;             // grids and rooms planned
+    int skipped = 0;             // grids and rooms over the limit, not planned
+    double plannedMetres = 0.0;  // virtual wall planned
+    double skippedMetres = 0.0;  // the shortest candidate not planned: its virtual wall
+    std::size_t eyes = 0;        // the walk cost's eyes, over all storeys
+    double eyeStep = 0.0;        // metres between them (largest over the storeys; 0: no walk cost)
+    bool eyesWidened = false;    // kMaxCostEyes widened the step
 };
 
 // Throws cavewall::Error naming the option when it is out of range.
@@ -133,12 +158,13 @@ struct AutoWallsResult {
     // The same figures for the input's own cells and walls (hand-placed), when it has walls;
     // nx = nz = 0. A cell's triangles are counted over its region's bounding rectangle.
     std::optional<AutoWallsCandidate> given;
+    AutoWallsLimit limit;
 };
 
 // Proposes cells and virtual walls for `scene`, loaded from `base` (whose cells, walls, real
 // walls and paths are replaced: real walls and portals are not proposed yet, and a warning in
-// `warnings` says so when `base` had any). Throws cavewall::Error for bad options or a scene
-// without objects.
+// `warnings` says so when `base` had any). Throws cavewall::Error for bad options or a model
+// checkWallsModel refuses (walls/auto_walls_limits.h; named "scene '<name>'").
 AutoWallsResult proposeWalls(const scenes::Scene& scene, const scenes::SceneDescription& base,
                              const AutoWallsOptions& options, std::vector<std::string>* warnings = nullptr);
 

@@ -1,8 +1,11 @@
 #include "hierarchy/gl/cluster_impostors.h"
 
 #include "config/error.h"
+#include "config/json_reader.h"
+#include "hierarchy/cluster_cache.h"
 #include "render/vertex_lighting.h"
 #include "metrics/flip.h"
+#include "scenes/file_write.h"
 #include "scenes/image_io.h"
 #include "walls/bake_key.h"
 #include "walls/bake_manifest.h"
@@ -27,10 +30,8 @@ namespace {
 using hierarchy::kBoxFaces;
 using hierarchy::kFaceRegions;
 
-// The cluster.json version written: 2 lists each file's size and content hash.
-constexpr int kClusterVersion = 2;
-
-std::string fileName(int face, int region) { return "f" + std::to_string(face) + "r" + std::to_string(region) + ".tx"; }
+using hierarchy::impostorFileName;
+using hierarchy::kClusterCacheVersion;
 
 // Premultiplied MIP levels as the wall pass samples them (walls/gl/wall_quad.h).
 GlObject upload(std::vector<scenes::Image> levels) { return uploadWallTexture(std::move(levels)); }
@@ -105,7 +106,7 @@ ClusterImpostors::ClusterImpostors(const scenes::Scene& scene, hierarchy::Cluste
     if (_stats.stale > 0)
         _stats.warnings.push_back((cache / "clusters").string() + ": " + std::to_string(_stats.stale) +
                                   " cluster folders of an older version without content checks (expected version " +
-                                  std::to_string(kClusterVersion) + "): made again");
+                                  std::to_string(kClusterCacheVersion) + "): made again");
     _stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -114,61 +115,71 @@ ClusterImpostors::~ClusterImpostors() = default;
 namespace {
 
 // Why `file` is not the one listed (size, content hash; walls/content_hash.h), else empty.
-std::string listedFileProblem(const std::filesystem::path& file, const nlohmann::json& listed) {
+std::string listedFileProblem(const std::filesystem::path& file, const hierarchy::ListedFile& listed) {
     const std::optional<std::string> bytes = walls::readFileBytes(file);
     if (!bytes) return file.string() + ": cannot be read";
-    const auto size = listed.at("bytes").get<std::uint64_t>();
-    if (bytes->size() != size)
-        return file.string() + ": expected " + std::to_string(size) + " bytes, got " + std::to_string(bytes->size());
-    const std::string expected = listed.at("hash").get<std::string>();
-    if (const std::string got = walls::hex64(walls::contentHash(*bytes)); got != expected)
-        return file.string() + ": content check failed (expected hash " + expected + ", got " + got + ")";
+    if (bytes->size() != listed.bytes)
+        return file.string() + ": expected " + std::to_string(listed.bytes) + " bytes, got " +
+               std::to_string(bytes->size());
+    if (const std::uint64_t got = walls::contentHash(*bytes); got != listed.hash)
+        return file.string() + ": content check failed (expected hash " + walls::hex64(listed.hash) + ", got " +
+               walls::hex64(got) + ")";
     return {};
 }
 
 }  // namespace
 
-// Each texture file is checked against cluster.json's size and hash before it is decoded and
-// again after (it is decoded from its path): a file that differs is never drawn, the cluster
+// cluster.json is parsed and checked (hierarchy/cluster_cache.h); each texture file is checked
+// against its size and hash before it is decoded and again after (it is decoded from its path),
+// and its levels against the face's resolution: a file that differs is never drawn, the cluster
 // is made again, and the file is named once in the warnings.
 bool ClusterImpostors::load(const std::filesystem::path& folder, Node& node, hierarchy::ClusterAccuracy& accuracy) {
+    const std::filesystem::path json = folder / "cluster.json";
+    hierarchy::ClusterRecord record;
     try {
-        std::ifstream in(folder / "cluster.json");
-        if (!in) return false;
-        const nlohmann::json j = nlohmann::json::parse(in);
-        if (j.at("version").get<int>() != kClusterVersion) {
-            ++_stats.stale;
-            return false;
-        }
-        for (int f = 0; f < kBoxFaces; ++f) {
-            const auto& a = j.at("averages").at(f);
-            node.faces[f] = {{a.at(0).get<float>(), a.at(1).get<float>(), a.at(2).get<float>()}, a.at(3).get<float>()};
-        }
-        for (int d = 0; d < hierarchy::kAccuracyDirections; ++d) {
-            accuracy.textured[d] = j.at("textured").at(d).get<double>();
-            accuracy.average[d] = j.at("average").at(d).get<double>();
-        }
-        for (int f = 0; f < kBoxFaces; ++f) {
-            for (int r = 0; r < kFaceRegions; ++r) {
-                const std::filesystem::path file = folder / fileName(f, r);
-                const nlohmann::json& listed = j.at("files").at(fileName(f, r));
-                std::string problem = listedFileProblem(file, listed);
-                std::vector<scenes::Image> levels;
-                if (problem.empty()) levels = scenes::readMipLevels(file);
-                if (problem.empty()) problem = listedFileProblem(file, listed);
-                if (!problem.empty()) {
-                    ++_stats.checkFailures;
-                    _stats.warnings.push_back(problem + " (making the cluster's impostors again)");
-                    return false;
-                }
-                node.textures[f][r] = upload(std::move(levels));
-            }
-            node.averages[f] = colourTexture(node.faces[f].linearColour);
-        }
-        return true;
+        if (!std::filesystem::exists(json)) return false;
+        record = hierarchy::parseClusterRecord(config::readTextFile(json), json.string());
+    } catch (const Error& e) {
+        ++_stats.checkFailures;
+        _stats.warnings.push_back(std::string(e.what()) + " (making the cluster's impostors again)");
+        return false;
     } catch (const std::exception&) {
-        return false;  // unreadable or incomplete: made again
+        return false;  // unreadable: made again
     }
+    if (record.version != kClusterCacheVersion) {
+        ++_stats.stale;
+        return false;
+    }
+    std::array<std::array<std::vector<scenes::Image>, kFaceRegions>, kBoxFaces> levels;
+    for (int f = 0; f < kBoxFaces; ++f)
+        for (int r = 0; r < kFaceRegions; ++r) {
+            const std::filesystem::path file = folder / impostorFileName(f, r);
+            const hierarchy::ListedFile& listed = record.files.at(impostorFileName(f, r));
+            std::string problem = listedFileProblem(file, listed);
+            try {
+                if (problem.empty()) levels[f][r] = scenes::readMipLevels(file);
+            } catch (const std::exception& e) {
+                problem = e.what();
+            }
+            if (problem.empty()) problem = listedFileProblem(file, listed);
+            if (problem.empty()) {
+                const glm::ivec2 size = hierarchy::faceResolution(node.box, f, _settings.resolution);
+                if (const std::string p = hierarchy::impostorLevelsProblem(levels[f][r], size); !p.empty())
+                    problem = file.string() + ": " + p;
+            }
+            if (!problem.empty()) {
+                ++_stats.checkFailures;
+                _stats.warnings.push_back(problem + " (making the cluster's impostors again)");
+                return false;
+            }
+        }
+    node.faces = record.faces;
+    accuracy = record.accuracy;
+    for (int f = 0; f < kBoxFaces; ++f) {
+        for (int r = 0; r < kFaceRegions; ++r) node.textures[f][r] = upload(std::move(levels[f][r]));
+        node.averages[f] = colourTexture(node.faces[f].linearColour);
+    }
+    return true;
 }
 
 void ClusterImpostors::make(const std::filesystem::path& folder, const hierarchy::ClusterNode& cluster, int index,
@@ -178,7 +189,7 @@ void ClusterImpostors::make(const std::filesystem::path& folder, const hierarchy
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
     if (ec) throw Error(folder.string() + ": cannot create the cluster cache folder (" + ec.message() + ")");
-    nlohmann::json files = nlohmann::json::object();
+    hierarchy::ClusterRecord record;
     for (int f = 0; f < kBoxFaces; ++f)
         for (int r = 0; r < kFaceRegions; ++r) {
             const scenes::Image straight =
@@ -186,28 +197,18 @@ void ClusterImpostors::make(const std::filesystem::path& folder, const hierarchy
                                   hierarchy::faceResolution(node.box, f, _settings.resolution), cluster.objects);
             if (r == 0) node.faces[f] = hierarchy::faceAverage(straight);
             std::vector<scenes::Image> levels = walls::premultipliedMipChain(straight);
-            const std::filesystem::path file = folder / fileName(f, r);
+            const std::filesystem::path file = folder / impostorFileName(f, r);
             walls::writeMipFile(file, levels, {16, "zip"});
             const std::optional<std::string> written = walls::readFileBytes(file);
             if (!written) throw Error(file.string() + ": cannot read the written file back to hash it");
-            files[fileName(f, r)] = {{"bytes", written->size()}, {"hash", walls::hex64(walls::contentHash(*written))}};
+            record.files[impostorFileName(f, r)] = {written->size(), walls::contentHash(*written)};
             node.textures[f][r] = upload(std::move(levels));
         }
     for (int f = 0; f < kBoxFaces; ++f) node.averages[f] = colourTexture(node.faces[f].linearColour);
     accuracy = measureAccuracy(index);
-    nlohmann::json j;
-    j["version"] = kClusterVersion;
-    j["files"] = files;
-    for (const hierarchy::FaceAverage& a : node.faces)
-        j["averages"].push_back({a.linearColour.r, a.linearColour.g, a.linearColour.b, a.coverage});
-    j["textured"] = accuracy.textured;
-    j["average"] = accuracy.average;
-    scenes::writeAtomically(folder / "cluster.json", [&](const std::filesystem::path& temporary) {
-        std::ofstream out(temporary);
-        out << j.dump(1) << "\n";
-        out.close();
-        if (!out) throw Error(temporary.string() + ": cannot write");
-    });
+    record.faces = node.faces;
+    record.accuracy = accuracy;
+    scenes::writeBytesAtomically(folder / "cluster.json", hierarchy::clusterRecordJson(record));
 }
 
 scenes::Image ClusterImpostors::image(int index, hierarchy::ClusterRep rep, const display::ScreenQuad& screen,

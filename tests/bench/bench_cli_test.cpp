@@ -12,6 +12,9 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -507,6 +510,60 @@ TEST(BenchSceneCli, ScaleRefusesAnotherModelInAPlantFolder) {
     EXPECT_THAT(r.err, HasSubstr(" drawn triangles; remove the folder to generate the plant again, or give another "
                                  "--data"));
     EXPECT_FALSE(fs::exists(folder / "cavewall-plant.json"));
+}
+
+// Runs cavewall through sh after `prefix` (a file size limit) and under `launcher` (another
+// user); stdout and stderr through files in `folder`.
+CliResult runThroughShell(const std::string& prefix, const std::string& launcher, const std::vector<std::string>& args,
+                          const fs::path& folder) {
+    std::string command = prefix + " exec " + launcher + " '" + std::string(CAVEWALL_EXE) + "'";
+    for (const std::string& a : args) command += " '" + a + "'";
+    const fs::path out = folder / "stdout.txt", err = folder / "stderr.txt";
+    const int status =
+        std::system(("sh -c \"" + command + "\" > '" + out.string() + "' 2> '" + err.string() + "'").c_str());
+    auto read = [](const fs::path& f) {
+        std::ifstream in(f);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(out), read(err)};
+}
+
+// The files under `folder`, by name.
+std::vector<std::string> filesUnder(const fs::path& folder) {
+    std::vector<std::string> names;
+    for (const auto& e : fs::recursive_directory_iterator(folder))
+        if (e.is_regular_file()) names.push_back(e.path().filename().string());
+    return names;
+}
+
+// `bench --scale`'s data folder on a full disk (a file size limit: the model's write fails as
+// on a full disk) and read-only: the error names the file or folder and why, and no plant is
+// left that a later run would reuse (a later run reuses a folder with a scene.json).
+TEST(BenchSceneCli, ScaleDataFolderThatCannotBeWrittenIsNamedAndLeftUntrusted) {
+    const test::TempFolder root("bench_cli_scale_unwritable");
+    fs::permissions(root.path(), fs::perms::all);  // another user writes its files here
+    const std::vector<std::string> args = {"bench", "--scale", "1k", "--resolution", "32", "--frames", "4", "--data"};
+    std::vector<std::string> full = args;
+    full.insert(full.end(), {(root / "full").string(), "--out", (root / "out-full").string()});
+    const CliResult r = runThroughShell("trap '' XFSZ; ulimit -f 8;", "", full, root.path());
+    EXPECT_EQ(r.exitCode, 1) << r.out;
+    const fs::path plant = root / "full" / "plant-1000";
+    EXPECT_THAT(r.err, HasSubstr(plant.string() + "/plant.glb: cannot write (File too large; "));
+    ASSERT_TRUE(fs::exists(plant));
+    EXPECT_TRUE(filesUnder(plant).empty());  // no scene.json, no stamp, no temporary file
+
+    fs::create_directories(root / "read-only");
+    fs::permissions(root / "read-only",
+                    fs::perms::owner_read | fs::perms::owner_exec | fs::perms::others_read | fs::perms::others_exec);
+    // Root writes whatever the mode: run as nobody then (setpriv, util-linux).
+    const std::string asUser = ::geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups" : "";
+    std::vector<std::string> readOnly = args;
+    readOnly.insert(readOnly.end(), {(root / "read-only").string(), "--out", (root / "out-read-only").string()});
+    const CliResult ro = runThroughShell("", asUser, readOnly, root.path());
+    EXPECT_EQ(ro.exitCode, 1) << ro.out;
+    EXPECT_THAT(ro.err, HasSubstr((root / "read-only" / "plant-1000").string() +
+                                  ": cannot create the output folder (Permission denied)"));
+    EXPECT_TRUE(fs::is_empty(root / "read-only"));
 }
 
 TEST(BenchSceneCli, BadInputIsAClearError) {

@@ -14,7 +14,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <filesystem>
+#include <sys/resource.h>
+#include <unistd.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -139,6 +142,74 @@ TEST_F(ClusterImpostorsTest, AFlippedOrStaleImpostorIsMadeAgainAndSaidOnce) {
     ASSERT_EQ(stale.stats().warnings.size(), 1u);
     EXPECT_THAT(stale.stats().warnings[0], ::testing::HasSubstr("1 cluster folders of an older version without "
                                                                 "content checks (expected version 2): made again"));
+}
+
+// The files of this folder and below whose names do not end in one of `kept`.
+std::vector<std::string> filesIn(const std::filesystem::path& folder) {
+    std::vector<std::string> names;
+    if (!std::filesystem::exists(folder)) return names;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(folder))
+        if (e.is_regular_file()) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+// A full disk while impostors are written (a file size limit: writes fail as they would on a
+// full disk): the error names the file, and what is left is no cluster.json and no temporary
+// file, so the next run makes the cluster again instead of trusting a torn file.
+TEST_F(ClusterImpostorsTest, AFullDiskLeavesNothingTheNextRunTrusts) {
+    const scenes::Scene scene = threeBoxes();
+    const std::filesystem::path cache = testOutputFolder("cluster-impostors-full") / "cache";
+    std::filesystem::remove_all(cache);
+    const gl::ClusterBakeSettings settings{64, 16, 0.35f};
+    rlimit before{};
+    ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &before), 0);
+    const auto handler = std::signal(SIGXFSZ, SIG_IGN);  // a write past the limit fails with EFBIG
+    rlimit small = before;
+    small.rlim_cur = 2048;  // bytes: a 64-texel face's MIP file is larger
+    ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+    hierarchy::ClusterModel first = modelOf(scene);
+    std::string message;
+    try {
+        gl::ClusterImpostors impostors(scene, first, settings, cache);
+    } catch (const Error& e) {
+        message = e.what();
+    }
+    ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &before), 0);
+    std::signal(SIGXFSZ, handler);
+    EXPECT_THAT(message, ::testing::HasSubstr((cache / "clusters").string()));
+    EXPECT_THAT(message, ::testing::HasSubstr("f0r0.tx"));
+    EXPECT_THAT(message, ::testing::HasSubstr("File too large"));
+    for (const std::string& name : filesIn(cache)) {
+        SCOPED_TRACE(name);
+        EXPECT_NE(name, "cluster.json");
+        EXPECT_EQ(name.find(".tmp"), std::string::npos);
+    }
+    hierarchy::ClusterModel second = modelOf(scene);
+    const gl::ClusterImpostors again(scene, second, settings, cache);
+    EXPECT_EQ(again.stats().made, 1);
+    EXPECT_TRUE(again.stats().warnings.empty());
+}
+
+// A cache folder the run may not write: the error names the folder and why.
+TEST_F(ClusterImpostorsTest, AReadOnlyCacheFolderIsNamed) {
+    const scenes::Scene scene = threeBoxes();
+    const std::filesystem::path cache = testOutputFolder("cluster-impostors-read-only") / "cache";
+    std::filesystem::remove_all(cache);
+    std::filesystem::create_directories(cache);
+    std::filesystem::permissions(cache, std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+    if (::access(cache.c_str(), W_OK) == 0) {  // root writes anyway
+        std::filesystem::permissions(cache, std::filesystem::perms::owner_all);
+        GTEST_SKIP() << "file modes are not enforced for this user (root): see the walls CLI tests";
+    }
+    hierarchy::ClusterModel model = modelOf(scene);
+    EXPECT_THAT(
+        [&] {
+            gl::ClusterImpostors(scene, model, {16, 16, 0.35f}, cache);
+        },
+        ::testing::ThrowsMessage<Error>(::testing::HasSubstr((cache / "clusters").string() + "/")));
+    std::filesystem::permissions(cache, std::filesystem::perms::owner_all);
+    EXPECT_TRUE(filesIn(cache).empty());
 }
 
 TEST_F(ClusterImpostorsTest, CostsAreMeasuredPositiveAndCachedPerRendererAndResolution) {

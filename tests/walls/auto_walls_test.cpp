@@ -338,7 +338,33 @@ TEST(AutoWalls, RejectsBadOptionsByName) {
         EXPECT_THAT([&] { proposeWalls(hall(), bare(), o); }, ::testing::ThrowsMessage<Error>(HasSubstr(c.message)));
     }
     EXPECT_THAT([] { proposeWalls(scenes::Scene{}, bare(), options()); },
-                ::testing::ThrowsMessage<Error>(HasSubstr("has no objects")));
+                ::testing::ThrowsMessage<Error>(HasSubstr("scene '': the model has no triangles")));
+    AutoWallsOptions noLimit = options();
+    noLimit.planLimitMetres = 0.0;
+    EXPECT_THAT([&] { proposeWalls(hall(), bare(), noLimit); },
+                ::testing::ThrowsMessage<Error>(HasSubstr("planning limit out of range (expected > 0 m")));
+}
+
+// The hall's grids (40 m x 9.9 m, up to 4 x 1) have 0, 9.9, 19.8 and 29.7 m of virtual wall:
+// within 30 m (each within 12 m) the first two are planned, each reported as it is, and the
+// rest are counted.
+TEST(AutoWalls, PlansOnlyTheGridsWithinThePlanningLimitAndSaysSo) {
+    AutoWallsOptions o = options();
+    o.planLimitMetres = 30.0;
+    std::vector<std::string> lines;
+    o.progress = [&](const std::string& line) { lines.push_back(line); };
+    const AutoWallsResult r = proposeWalls(hall(), bare(), o);
+    ASSERT_EQ(r.candidates.size(), 2u);
+    EXPECT_EQ(r.candidates[1].nx, 2);
+    EXPECT_EQ(r.limit.planned, 2);
+    EXPECT_EQ(r.limit.skipped, 2);
+    EXPECT_NEAR(r.limit.plannedMetres, 9.9, 1e-6);  // single-precision mesh bounds
+    EXPECT_NEAR(r.limit.skippedMetres, 19.8, 1e-6);
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_THAT(lines[0], HasSubstr("storey 0: grid 1 x 1 (1 cells, 0 m of virtual wall): 0 textures"));
+    EXPECT_THAT(lines[1], HasSubstr("storey 0: grid 2 x 1 (2 cells, 10 m of virtual wall)"));
+    // The default limit plans them all.
+    EXPECT_EQ(proposeWalls(hall(), bare(), options()).limit.skipped, 0);
 }
 
 }  // namespace
