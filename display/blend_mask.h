@@ -1,6 +1,6 @@
 #pragma once
 // Projector blend masks: per output pixel, the share of the wall's light this projector gives
-// where projectors overlap (edge blending). GL-free; display/gl/warp_pass.h applies them.
+// where projectors overlap (edge blending). GL-free; display/gl/projector_pass.h applies them.
 //
 // File: an 8- or 16-bit grey PNG (one channel, no alpha) over the projector's whole output,
 // top row first as PNG stores it; white = 1 (this projector alone), black = 0. The values are

@@ -1,7 +1,7 @@
 #pragma once
 // A screen's projector correction, read from the files its configuration names: the warp mesh
 // (display/warp_mesh.h), the blend mask (display/blend_mask.h) and the black level. GL-free;
-// display/gl/warp_pass.h applies it to the screen's rendered image:
+// display/gl/projector_pass.h applies it to the screen's rendered image:
 //
 //   out = image · blend + black · (1 − image) · [blend = 1]      (linear light, per channel)
 //

@@ -1,6 +1,6 @@
 #pragma once
 // Projector warp meshes: where each part of a screen's rendered image goes on the projector's
-// output, read from files. GL-free; display/gl/warp_pass.h draws them.
+// output, read from files. GL-free; display/gl/projector_pass.h draws them.
 //
 // Coordinates: both the texture coordinate `uv` (in the rendered image) and the output
 // position `xy` (in the projector's framebuffer) are normalised to [0, 1] with the origin at

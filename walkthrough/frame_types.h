@@ -161,6 +161,9 @@ struct FrameResult {
     // render stay zero.
     std::vector<display::ViewStats> perScreen;
     std::vector<scenes::ScreenImage> images;  // when FrameInput::readImages
+    // When FrameInput::readImages: the projector-corrected screens' images after their warp and
+    // blend pass (display/gl/projector_pass.h), stems ending in "-warped"; empty without any.
+    std::vector<scenes::ScreenImage> warpedImages;
     std::vector<ViewDepth> depths;            // when FrameInput::readDepth, views in drawing order
 };
 

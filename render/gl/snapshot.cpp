@@ -7,15 +7,15 @@ namespace cavewall::gl {
 Snapshotter::Snapshotter(const display::Display& display, const scenes::Scene& scene, Context& context,
                          RenderSettings settings)
     : _display(display), _context(context), _targets(display, context), _renderer(scene, settings),
-      _correction(display, _targets) {}
+      _projectors(display, _targets) {}
 
 Snapshot Snapshotter::render(const display::HeadPose& head, const glm::dmat4& worldFromCave,
                              double foldoutPixelsPerMetre) {
     Snapshot out;
     out.stats = _renderer.render(_display.views(head), _targets, worldFromCave);
-    if (_correction.any()) _correction.apply(_targets);
+    if (_projectors.any()) _projectors.apply(_targets);
     out.images = readFrame(_display, _targets);
-    out.warped = _correction.read(out.images);
+    out.warped = _projectors.read(out.images);
     out.stats.gpuMs = _renderer.waitGpuMs();  // the read-back has waited for the GPU already
     if (_context.windowCount() > 0) present(out);
     out.foldout = foldoutOf(_display, out.images, foldoutPixelsPerMetre);
@@ -25,7 +25,7 @@ Snapshot Snapshotter::render(const display::HeadPose& head, const glm::dmat4& wo
 void Snapshotter::present(Snapshot& snapshot) {
     const int windows = std::min(_context.windowCount(), _targets.screenCount());
     for (int s = 0; s < windows; ++s) {
-        const WarpPass* pass = _correction.pass(s);
+        const ProjectorPass* pass = _projectors.pass(s);
         PresentImage image{pass ? pass->colorTexture(0) : _targets.colorTexture(s, 0), 0, _targets.size(s)};
         if (_targets.imageCount(s) > 1 && _context.info().stereoWindows)
             image.right = pass ? pass->colorTexture(1) : _targets.colorTexture(s, 1);

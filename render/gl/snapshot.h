@@ -12,7 +12,7 @@
 #include "display/gl/context.h"
 #include "display/gl/frame_images.h"
 #include "display/gl/render_targets.h"
-#include "display/gl/warp_pass.h"
+#include "display/gl/projector_pass.h"
 #include "render/gl/scene_renderer.h"
 #include "scenes/scene.h"
 
@@ -20,7 +20,7 @@ namespace cavewall::gl {
 
 struct Snapshot {
     std::vector<ScreenImage> images;  // every output image (readFrame order), before correction
-    // The corrected screens' images after their warp and blend pass (display/gl/warp_pass.h), in
+    // The corrected screens' images after their warp and blend pass (display/gl/projector_pass.h), in
     // the order of `images`, stems ending in "-warped"; empty when no screen is corrected.
     std::vector<ScreenImage> warped;
     scenes::Image foldout;
@@ -46,7 +46,7 @@ private:
     Context& _context;
     RenderTargets _targets;
     SceneRenderer _renderer;
-    DisplayCorrection _correction;
+    ProjectorPasses _projectors;
 };
 
 }  // namespace cavewall::gl

@@ -1,5 +1,5 @@
 // The projector correction pass on llvmpipe: identity, complementary blends, a keystone.
-#include "display/gl/warp_pass.h"
+#include "display/gl/projector_pass.h"
 #include "display/gl/gl_object.h"
 #include "gl_test_support.h"
 
@@ -41,7 +41,7 @@ scenes::Image pattern(int size) {
 
 scenes::Image warped(const display::ScreenCorrection& c, const scenes::Image& image) {
     const gl::GlObject source = sourceTexture(image);
-    gl::WarpPass pass(c, {image.width, image.height});
+    gl::ProjectorPass pass(c, {image.width, image.height});
     pass.apply(source.id());
     return pass.read();
 }
@@ -53,9 +53,9 @@ double toSrgb(double linear) {
     return linear <= 0.0031308 ? linear * 12.92 : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
 }
 
-class WarpPassTest : public GlTest {};
+class ProjectorPassTest : public GlTest {};
 
-TEST_F(WarpPassTest, IdentityWarpLeavesTheImageByteIdentical) {
+TEST_F(ProjectorPassTest, IdentityWarpLeavesTheImageByteIdentical) {
     // Output pixel centres land on texel centres, so linear filtering reads one texel, and the
     // sRGB decode-encode round trip is exact for 8-bit codes.
     const scenes::Image image = pattern(kSize);
@@ -64,7 +64,7 @@ TEST_F(WarpPassTest, IdentityWarpLeavesTheImageByteIdentical) {
     EXPECT_EQ(warped(identity, image).rgba, image.rgba);
 }
 
-TEST_F(WarpPassTest, ComplementaryBlendsAddUpToOneProjector) {
+TEST_F(ProjectorPassTest, ComplementaryBlendsAddUpToOneProjector) {
     // Projector A fades out and B fades in over the middle half (16-bit ramps summing to exactly
     // 65535). Their light adds: decode both outputs, sum, encode. Each output is rounded to the
     // nearest code (0.5 level); as a half's code is below the full image's and the sRGB decode is
@@ -96,7 +96,7 @@ TEST_F(WarpPassTest, ComplementaryBlendsAddUpToOneProjector) {
     EXPECT_EQ(outA.rgba[4 * 2], image.rgba[4 * 2]);
 }
 
-TEST_F(WarpPassTest, BlackLevelIsAddedWhereTheProjectorIsAlone) {
+TEST_F(ProjectorPassTest, BlackLevelIsAddedWhereTheProjectorIsAlone) {
     scenes::Image black{"black", 4, 1, std::vector<std::uint8_t>(16, 0)};
     for (int x = 0; x < 4; ++x) black.rgba[x * 4 + 3] = 255;
     display::ScreenCorrection c;
@@ -112,7 +112,7 @@ TEST_F(WarpPassTest, BlackLevelIsAddedWhereTheProjectorIsAlone) {
     EXPECT_EQ(out.rgba[14], 0);
 }
 
-TEST_F(WarpPassTest, KeystoneMovesAMarkerWhereTheHomographySends) {
+TEST_F(ProjectorPassTest, KeystoneMovesAMarkerWhereTheHomographySends) {
     // A symmetric keystone: x' = 0.5 + (x - 0.5) / (1 + k y), y' = y / (1 + k y), a projective
     // map (numerators and denominator linear in x, y), sampled on a 17 x 17 grid.
     constexpr double k = 0.25;
@@ -148,7 +148,7 @@ TEST_F(WarpPassTest, KeystoneMovesAMarkerWhereTheHomographySends) {
     EXPECT_GT(glm::length(expected - glm::dvec2(kMarkerX + 0.5, kMarkerY + 0.5)), 5.0);
 }
 
-TEST_F(WarpPassTest, InvalidNodesLeaveTheirCellsBlack) {
+TEST_F(ProjectorPassTest, InvalidNodesLeaveTheirCellsBlack) {
     const scenes::Image image = pattern(kSize);
     display::ScreenCorrection c;
     c.warp = display::identityWarp(3, 3);

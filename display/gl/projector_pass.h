@@ -20,11 +20,11 @@
 
 namespace cavewall::gl {
 
-class WarpPass {
+class ProjectorPass {
 public:
     // Builds the program, mesh buffers, mask texture and `images` output images of `size` in the
     // current context.
-    WarpPass(const display::ScreenCorrection& correction, glm::ivec2 size, int images = 1);
+    ProjectorPass(const display::ScreenCorrection& correction, glm::ivec2 size, int images = 1);
 
     // Draws output image `image` from `sourceTexture` (an sRGB colour texture of any size).
     // Leaves the program, vertex array and framebuffer unbound and sRGB writes off.
@@ -48,22 +48,22 @@ private:
 };
 
 // The correction passes of a display: one per corrected screen, none for the others.
-class DisplayCorrection {
+class ProjectorPasses {
 public:
     // Reads the screens' files (throws Error naming them) and builds the passes in the current
     // context, for every image of each screen in `targets`.
-    DisplayCorrection(const display::Display& display, const RenderTargets& targets);
+    ProjectorPasses(const display::Display& display, const RenderTargets& targets);
 
     bool any() const;
     // The pass of `screen`, or nullptr when it is not corrected.
-    WarpPass* pass(int screen) const { return _passes[screen].get(); }
+    ProjectorPass* pass(int screen) const { return _passes[screen].get(); }
     // Runs every pass on every image of its screen.
     void apply(const RenderTargets& targets);
     // The warped images of the corrected screens, in `frame`'s order, each stem + "-warped".
     std::vector<scenes::ScreenImage> read(const std::vector<scenes::ScreenImage>& frame) const;
 
 private:
-    std::vector<std::unique_ptr<WarpPass>> _passes;
+    std::vector<std::unique_ptr<ProjectorPass>> _passes;
 };
 
 }  // namespace cavewall::gl

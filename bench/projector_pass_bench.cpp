@@ -1,11 +1,11 @@
-// The projector correction pass (display/gl/warp_pass.h) on one 1024 x 1024 screen image
+// The projector correction pass (display/gl/projector_pass.h) on one 1024 x 1024 screen image
 // (headless EGL; llvmpipe here). Each iteration runs the pass once and waits for the GPU
 // (glFinish), so the time per iteration is the pass's share of a frame. Cases: the identity
 // mesh without a mask (the cheapest pass), and a 33 x 33 keystone mesh with a 1024 x 1024 16-bit
 // blend mask and a black level (a calibrated projector). Counter: GPU ms (timer queries).
 #include "display/gl/context.h"
 #include "display/gl/gpu_timer.h"
-#include "display/gl/warp_pass.h"
+#include "display/gl/projector_pass.h"
 
 #include <benchmark/benchmark.h>
 
@@ -32,13 +32,13 @@ display::ScreenCorrection calibrated() {
     return c;
 }
 
-void warpPass(benchmark::State& state, bool calibratedMesh) {
+void projectorPass(benchmark::State& state, bool calibratedMesh) {
     const auto context = gl::createHeadlessContext();
     gl::GlObject source = gl::createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(source.id(), 1, GL_SRGB8_ALPHA8, kSize, kSize);
     const std::vector<std::uint8_t> grey(static_cast<std::size_t>(kSize) * kSize * 4, 128);
     glTextureSubImage2D(source.id(), 0, 0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, grey.data());
-    gl::WarpPass pass(calibratedMesh ? calibrated() : display::ScreenCorrection{}, {kSize, kSize});
+    gl::ProjectorPass pass(calibratedMesh ? calibrated() : display::ScreenCorrection{}, {kSize, kSize});
     gl::GpuTimer timer;
     double gpuMs = 0.0;
     for (auto _ : state) {
@@ -52,8 +52,8 @@ void warpPass(benchmark::State& state, bool calibratedMesh) {
     state.SetLabel(context->info().renderer);
 }
 
-BENCHMARK_CAPTURE(warpPass, identity, false)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(warpPass, keystone_blend_black, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(projectorPass, identity, false)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(projectorPass, keystone_blend_black, true)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

@@ -1,4 +1,4 @@
-#include "display/gl/warp_pass.h"
+#include "display/gl/projector_pass.h"
 
 #include "display/gl/shader.h"
 
@@ -7,7 +7,7 @@
 namespace cavewall::gl {
 namespace {
 
-constexpr const char* kName = "warp";
+constexpr const char* kName = "projector";
 
 constexpr const char* kVertex = R"(#version 450 core
 layout(location = 0) in vec2 aOutput;  // projector output, [0, 1]², origin lower-left
@@ -73,7 +73,7 @@ GlObject linearSampler() {
 
 }  // namespace
 
-WarpPass::WarpPass(const display::ScreenCorrection& correction, glm::ivec2 size, int images)
+ProjectorPass::ProjectorPass(const display::ScreenCorrection& correction, glm::ivec2 size, int images)
     : _program(buildProgram(kName, kVertex, kFragment)), _vertexArray(createVertexArray()), _vertices(createBuffer()),
       _indices(createBuffer()), _blend(blendTexture(correction.blend)), _sampler(linearSampler()), _size(size),
       _black(correction.blackLevel) {
@@ -103,7 +103,7 @@ WarpPass::WarpPass(const display::ScreenCorrection& correction, glm::ivec2 size,
     }
 }
 
-void WarpPass::apply(unsigned sourceTexture, int image) {
+void ProjectorPass::apply(unsigned sourceTexture, int image) {
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, _outputs[image].framebuffer.id());
     glViewport(0, 0, _size.x, _size.y);
     glDisable(GL_DEPTH_TEST);
@@ -127,34 +127,35 @@ void WarpPass::apply(unsigned sourceTexture, int image) {
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
 }
 
-scenes::Image WarpPass::read(int image, std::string name) const {
+scenes::Image ProjectorPass::read(int image, std::string name) const {
     return readFramebuffer(_outputs[image].framebuffer.id(), GL_COLOR_ATTACHMENT0, _size, std::move(name));
 }
 
-DisplayCorrection::DisplayCorrection(const display::Display& display, const RenderTargets& targets) {
+ProjectorPasses::ProjectorPasses(const display::Display& display, const RenderTargets& targets) {
     for (int s = 0; s < targets.screenCount(); ++s) {
         const auto correction = display::loadScreenCorrection(display.config(), s);
-        _passes.push_back(correction ? std::make_unique<WarpPass>(*correction, targets.size(s), targets.imageCount(s))
-                                     : nullptr);
+        _passes.push_back(correction
+                              ? std::make_unique<ProjectorPass>(*correction, targets.size(s), targets.imageCount(s))
+                              : nullptr);
     }
 }
 
-bool DisplayCorrection::any() const {
+bool ProjectorPasses::any() const {
     for (const auto& p : _passes)
         if (p) return true;
     return false;
 }
 
-void DisplayCorrection::apply(const RenderTargets& targets) {
+void ProjectorPasses::apply(const RenderTargets& targets) {
     for (int s = 0; s < static_cast<int>(_passes.size()); ++s)
         if (_passes[s])
             for (int i = 0; i < targets.imageCount(s); ++i) _passes[s]->apply(targets.colorTexture(s, i), i);
 }
 
-std::vector<scenes::ScreenImage> DisplayCorrection::read(const std::vector<scenes::ScreenImage>& frame) const {
+std::vector<scenes::ScreenImage> ProjectorPasses::read(const std::vector<scenes::ScreenImage>& frame) const {
     std::vector<scenes::ScreenImage> out;
     for (const scenes::ScreenImage& f : frame)
-        if (WarpPass* p = pass(f.screen))
+        if (ProjectorPass* p = pass(f.screen))
             out.push_back({f.screen, f.image, f.stem + "-warped", p->read(f.image, f.stem + "-warped")});
     return out;
 }
