@@ -80,8 +80,8 @@ glm::dvec3 blackLevel(const JsonNode& node) {
 }
 
 Screen parseScreen(const JsonNode& node) {
-    node.expectKeys(
-        {"name", "lowerLeft", "lowerRight", "upperLeft", "resolution", "output", "rank", "warp", "blend", "blackLevel"});
+    node.expectKeys({"name", "lowerLeft", "lowerRight", "upperLeft", "resolution", "output", "rank", "warp", "blend",
+                     "blackLevel"});
     Screen s;
     s.name = node.at("name").string();
     checkFileName(node.at("name"), s.name);

@@ -36,7 +36,7 @@ Json screenJson(const Screen& s) {
     if (!s.blend.empty()) j["blend"] = s.blend;
     if (s.blackLevel != glm::dvec3(0.0))
         j["blackLevel"] = s.blackLevel.x == s.blackLevel.y && s.blackLevel.y == s.blackLevel.z ? Json(s.blackLevel.x)
-                                                                                              : vec(s.blackLevel);
+                                                                                               : vec(s.blackLevel);
     return j;
 }
 

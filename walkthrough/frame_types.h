@@ -164,7 +164,7 @@ struct FrameResult {
     // When FrameInput::readImages: the projector-corrected screens' images after their warp and
     // blend pass (display/gl/projector_pass.h), stems ending in "-warped"; empty without any.
     std::vector<scenes::ScreenImage> warpedImages;
-    std::vector<ViewDepth> depths;            // when FrameInput::readDepth, views in drawing order
+    std::vector<ViewDepth> depths;  // when FrameInput::readDepth, views in drawing order
 };
 
 }  // namespace cavewall::walkthrough
