@@ -18,7 +18,7 @@
 //                                       "size": [1024, 1024], "fullscreen": false,
 //                                       "borderless": false}},
 //                 "rank": 0,                                     // cluster mode only; optional
-//                 "warp": "front.pfm", "blend": "front-blend.png",   // optional, beside this file
+//                 "warp": "front.pfm", "blend": "front-blend.png",   // optional; relative to this file
 //                 "blackLevel": 0.02 }],                         // or [r, g, b]; see docs/display.md
 //   "viewer": { "headPosition": [0, 1.7, 0], "headOrientation": {"yawDeg": 0},
 //               "eyeSeparation": 0.064, "near": 0.05, "far": 1000 },   // far: number or "infinite"
