@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <set>
+#include <utility>
 
 namespace cavewall::config {
 
@@ -65,8 +66,22 @@ void parseOutput(const JsonNode& node, Screen& screen) {
     screen.window = out;
 }
 
+std::string correctionFile(const JsonNode& node) {
+    const std::string file = node.string();
+    if (file.empty()) node.fail("expected a file path relative to the configuration, got an empty string");
+    return file;
+}
+
+// A number (grey) or [r, g, b], each in [0, 1].
+glm::dvec3 blackLevel(const JsonNode& node) {
+    if (node.raw().is_number()) return glm::dvec3(node.number(0.0, 1.0));
+    const std::vector<JsonNode> rgb = node.items(3, 3);
+    return {rgb[0].number(0.0, 1.0), rgb[1].number(0.0, 1.0), rgb[2].number(0.0, 1.0)};
+}
+
 Screen parseScreen(const JsonNode& node) {
-    node.expectKeys({"name", "lowerLeft", "lowerRight", "upperLeft", "resolution", "output", "rank"});
+    node.expectKeys({"name", "lowerLeft", "lowerRight", "upperLeft", "resolution", "output", "rank", "warp", "blend",
+                     "blackLevel"});
     Screen s;
     s.name = node.at("name").string();
     checkFileName(node.at("name"), s.name);
@@ -76,6 +91,9 @@ Screen parseScreen(const JsonNode& node) {
     s.resolution = node.at("resolution").ivec2(1, kMaxResolution);
     if (auto out = node.find("output")) parseOutput(*out, s);
     if (auto r = node.find("rank")) s.rank = r->integer(0, 4095);
+    if (auto n = node.find("warp")) s.warp = correctionFile(*n);
+    if (auto n = node.find("blend")) s.blend = correctionFile(*n);
+    if (auto n = node.find("blackLevel")) s.blackLevel = blackLevel(*n);
     return s;
 }
 
@@ -279,6 +297,25 @@ std::vector<int> screensOfRank(const DisplayConfig& config, int rank, int rankCo
     return out;
 }
 
+namespace {
+
+// The warp and blend files must exist; their contents are read by the display library.
+void checkCorrectionFiles(const DisplayConfig& config, const std::string& source) {
+    for (std::size_t i = 0; i < config.screens.size(); ++i) {
+        const Screen& s = config.screens[i];
+        const std::string where = source + ": screens[" + std::to_string(i) + "] '" + s.name + "'";
+        for (const auto& [key, file] : {std::pair{"warp", s.warp}, std::pair{"blend", s.blend}}) {
+            if (file.empty()) continue;
+            const std::filesystem::path p = screenFilePath(config, file);
+            if (!std::filesystem::is_regular_file(p))
+                throw Error(where + ": " + key + " file '" + file + "' not found (expected a file at " + p.string() +
+                            ", relative to the configuration's folder)");
+        }
+    }
+}
+
+}  // namespace
+
 std::filesystem::path presetDirectory() {
     if (const char* dir = std::getenv("CAVEWALL_CONFIG_DIR"); dir && *dir) return dir;
     return CAVEWALL_PRESET_DIR;
@@ -296,10 +333,16 @@ std::filesystem::path displayConfigPath(const std::string& nameOrPath) {
     return path;
 }
 
+std::filesystem::path screenFilePath(const DisplayConfig& config, const std::string& relative) {
+    return config.directory / relative;
+}
+
 DisplayConfig loadDisplayConfig(const std::string& nameOrPath) {
     const std::filesystem::path path = displayConfigPath(nameOrPath);
     DisplayConfig config = parseDisplayConfig(readTextFile(path), path.string());
+    config.directory = path.parent_path();
     validateDisplayConfig(config, path.string());
+    checkCorrectionFiles(config, path.string());
     for (const std::string& w : displayWarnings(config, path.string())) std::cerr << "warning: " << w << "\n";
     return config;
 }

@@ -17,7 +17,9 @@
 //                 "output": {"window": {"monitor": 0, "position": [0, 0],
 //                                       "size": [1024, 1024], "fullscreen": false,
 //                                       "borderless": false}},
-//                 "rank": 0 }],                                  // cluster mode only; optional
+//                 "rank": 0,                                     // cluster mode only; optional
+//                 "warp": "front.pfm", "blend": "front-blend.png",   // optional; relative to this file
+//                 "blackLevel": 0.02 }],                         // or [r, g, b]; see docs/display.md
 //   "viewer": { "headPosition": [0, 1.7, 0], "headOrientation": {"yawDeg": 0},
 //               "eyeSeparation": 0.064, "near": 0.05, "far": 1000 },   // far: number or "infinite"
 //   "stereo": "mono",        // mono | separate | side-by-side | top-bottom | anaglyph | quad-buffer
@@ -67,6 +69,12 @@ struct Screen {
     std::optional<WindowOutput> window;  // unset = headless
     HeadlessOutput headless;
     int rank = -1;  // cluster mode: MPI rank that renders it; -1 = round-robin
+    // Projector correction (display/warp_mesh.h, display/blend_mask.h), paths relative to the
+    // configuration file's folder; empty = none.
+    std::string warp;            // warp mesh: text (.warp) or MPCDI PFM file; empty = no warp
+    std::string blend;           // blend mask: 8- or 16-bit grey PNG; empty = no blend
+    glm::dvec3 blackLevel{0.0};  // linear-light RGB in [0, 1] added where this projector is alone
+    bool corrected() const { return !warp.empty() || !blend.empty() || blackLevel != glm::dvec3(0.0); }
     bool operator==(const Screen&) const = default;
 };
 
@@ -97,6 +105,9 @@ struct DisplayConfig {
     StereoMode stereo = StereoMode::Mono;
     double minEyeDistance = 1e-3;  // metres, in [1e-9, 1]; see display/off_axis.h
     Tracking tracking;
+    // The folder the configuration was read from (loadDisplayConfig); screens' warp and blend
+    // paths are relative to it. Not written back; empty for parsed text (the working folder).
+    std::filesystem::path directory;
     bool operator==(const DisplayConfig&) const = default;
 };
 
@@ -138,6 +149,10 @@ std::filesystem::path displayConfigPath(const std::string& nameOrPath);
 std::filesystem::path presetDirectory();
 
 std::string_view toString(StereoMode mode);
+
+// A screen's warp or blend file (`relative` as written in the configuration) resolved against
+// config.directory.
+std::filesystem::path screenFilePath(const DisplayConfig& config, const std::string& relative);
 
 // Cluster mode: the screens rank `rank` of `rankCount` renders, in configuration order. A screen
 // with an explicit rank goes to that rank; the others are dealt round-robin by their index.

@@ -32,6 +32,11 @@ Json screenJson(const Screen& s) {
         j["output"] = {{"headless", {{"file", s.headless.file}}}};
     }
     if (s.rank >= 0) j["rank"] = s.rank;
+    if (!s.warp.empty()) j["warp"] = s.warp;
+    if (!s.blend.empty()) j["blend"] = s.blend;
+    if (s.blackLevel != glm::dvec3(0.0))
+        j["blackLevel"] = s.blackLevel.x == s.blackLevel.y && s.blackLevel.y == s.blackLevel.z ? Json(s.blackLevel.x)
+                                                                                               : vec(s.blackLevel);
     return j;
 }
 

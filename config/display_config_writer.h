@@ -3,7 +3,7 @@
 //
 // The writer round-trips: parseDisplayConfig(displayConfigJson(c), source) == c for every
 // config parseDisplayConfig returns (numbers are written in the shortest form that reads back
-// to the same double; the head orientation as a unit quaternion [x, y, z, w]; caveFromTracker
+// to the same double; all but `directory`, which is where a file was read from; the head orientation as a unit quaternion [x, y, z, w]; caveFromTracker
 // as four rows). Keys are written in the order of the format's description; optional keys at
 // their default (rank -1, no window position, no volume, an empty headless file) are left out.
 

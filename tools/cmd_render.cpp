@@ -90,8 +90,9 @@ int runRender(const std::vector<std::string>& words) {
     const auto context = openContext(disp, args.has("window"));
     gl::Snapshotter snapshotter(disp, scene, *context);
     const gl::Snapshot frame = snapshotter.render(head, worldFromCave);
-    for (const auto& file : gl::writeFrame(out, frame.images, frame.foldout))
-        std::cout << "wrote " << file.string() << "\n";
+    std::vector<scenes::ScreenImage> images = frame.images;  // and then the warped ones, if any
+    images.insert(images.end(), frame.warped.begin(), frame.warped.end());
+    for (const auto& file : gl::writeFrame(out, images, frame.foldout)) std::cout << "wrote " << file.string() << "\n";
     std::cout << "GL_RENDERER: " << context->info().renderer << " (" << context->info().provider << ")\n"
               << frame.stats.objectsDrawn << " objects, " << frame.stats.triangles << " triangles, "
               << frame.stats.drawCalls << " draw calls in " << frame.stats.views << " views; CPU " << frame.stats.cpuMs

@@ -161,7 +161,10 @@ struct FrameResult {
     // render stay zero.
     std::vector<display::ViewStats> perScreen;
     std::vector<scenes::ScreenImage> images;  // when FrameInput::readImages
-    std::vector<ViewDepth> depths;            // when FrameInput::readDepth, views in drawing order
+    // When FrameInput::readImages: the projector-corrected screens' images after their warp and
+    // blend pass (display/gl/projector_pass.h), stems ending in "-warped"; empty without any.
+    std::vector<scenes::ScreenImage> warpedImages;
+    std::vector<ViewDepth> depths;  // when FrameInput::readDepth, views in drawing order
 };
 
 }  // namespace cavewall::walkthrough

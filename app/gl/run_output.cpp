@@ -2,6 +2,7 @@
 
 #include "config/error.h"
 #include "scenes/file_write.h"
+#include "scenes/image_io.h"
 
 #include <algorithm>
 #include <charconv>
@@ -106,12 +107,14 @@ void RunOutput::writeFrame(long frame, double t, glm::dvec3 head, const walkthro
         throw Error(_folder.string() + ": writing the CSV files failed (" + scenes::writeErrorText(errno) + ")");
 }
 
-std::filesystem::path RunOutput::saveImages(long frame, const std::vector<gl::ScreenImage>& images) {
+std::filesystem::path RunOutput::saveImages(long frame, const std::vector<gl::ScreenImage>& images,
+                                            const std::vector<gl::ScreenImage>& warped) {
     char name[16];
     std::snprintf(name, sizeof name, "%05ld", frame);
     const std::filesystem::path folder = _folder / "frames" / name;
     std::filesystem::create_directories(folder);
     const auto files = gl::writeFrame(folder, images, gl::foldoutOf(_display, images));
+    for (const gl::ScreenImage& w : warped) scenes::writeImage(folder / (w.stem + ".png"), w.pixels);
     return files.back();
 }
 

@@ -52,8 +52,10 @@ public:
     // are flushed after the frame, so a reader polling them sees whole rows.
     void writeFrame(long frame, double t, glm::dvec3 head, const walkthrough::FrameResult& result, double syncMs = 0.0,
                     glm::dvec3 viewWorld = {0.0, 0.0, -1.0});
-    // Writes the frame's images and fold-out; returns the fold-out's path.
-    std::filesystem::path saveImages(long frame, const std::vector<gl::ScreenImage>& images);
+    // Writes the frame's images, the fold-out and the projector-corrected images (`warped`,
+    // walkthrough::FrameResult::warpedImages); returns the fold-out's path.
+    std::filesystem::path saveImages(long frame, const std::vector<gl::ScreenImage>& images,
+                                     const std::vector<gl::ScreenImage>& warped = {});
     // Flushes, syncs and closes both CSV files; throws Error with the system's reason (a full
     // disk says so) when any of it did not reach the disk. Call once after the last frame.
     void close();

@@ -231,7 +231,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 // (Maciel & Shirley (1995), Figure D).
 void saveFrameImages(const Session& s, long i, const walkthrough::FrameInput& in, walkthrough::FrameResult& r,
                      RunSummary& summary) {
-    summary.foldouts.push_back(s.output->saveImages(i, r.images));
+    summary.foldouts.push_back(s.output->saveImages(i, r.images, r.warpedImages));
     if (s.walkthrough.hasClusters())
         scenes::writeImage(
             summary.foldouts.back().parent_path() / "clusters.png",

@@ -5,19 +5,24 @@
 // On a context with windows (one per screen, in screen order), each screen's image 0 is also
 // shown in its window, and the image returned for it is what the window showed (read from its
 // back buffer before the swap) whenever the window has the screen's resolution; otherwise the
-// offscreen image is returned. Either way the pixels are the same up to the driver's blit.
+// offscreen image is returned. Either way the pixels are the same up to the driver's blit. A
+// screen with a projector correction shows its warped image, which then stands in `warped`.
 
 #include "display/display.h"
 #include "display/gl/context.h"
 #include "display/gl/frame_images.h"
 #include "display/gl/render_targets.h"
+#include "display/gl/projector_pass.h"
 #include "render/gl/scene_renderer.h"
 #include "scenes/scene.h"
 
 namespace cavewall::gl {
 
 struct Snapshot {
-    std::vector<ScreenImage> images;  // every output image (readFrame order)
+    std::vector<ScreenImage> images;  // every output image (readFrame order), before correction
+    // The corrected screens' images after their warp and blend pass (display/gl/projector_pass.h), in
+    // the order of `images`, stems ending in "-warped"; empty when no screen is corrected.
+    std::vector<ScreenImage> warped;
     scenes::Image foldout;
     FrameStats stats;  // gpuMs of this frame (not an earlier one)
 };
@@ -35,12 +40,13 @@ public:
                     double foldoutPixelsPerMetre = 0.0);
 
 private:
-    void present(std::vector<ScreenImage>& images);
+    void present(Snapshot& snapshot);
 
     const display::Display& _display;
     Context& _context;
     RenderTargets _targets;
     SceneRenderer _renderer;
+    ProjectorPasses _projectors;
 };
 
 }  // namespace cavewall::gl

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <set>
 
 #include <stdlib.h>
@@ -86,6 +87,38 @@ TEST_F(RenderCli, SeparateStereoWritesBothEyes) {
     EXPECT_TRUE(std::filesystem::exists(out / "front-left.png"));
     EXPECT_TRUE(std::filesystem::exists(out / "front-right.png"));
     EXPECT_TRUE(std::filesystem::exists(out / "foldout.png"));  // from the left eye
+}
+
+// cave4_128's front and left screens in `folder`, the front one corrected with `warp`.
+std::string correctedDisplay(const std::filesystem::path& folder, const std::string& warp) {
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "front.warp") << warp;
+    std::ofstream(folder / "lab.json") << R"({"screens": [
+        {"name": "front", "lowerLeft": [-1.5, 0, -1.5], "lowerRight": [1.5, 0, -1.5], "upperLeft": [-1.5, 3, -1.5],
+         "resolution": [64, 64], "warp": "front.warp", "blackLevel": 0},
+        {"name": "left", "lowerLeft": [-1.5, 0, 1.5], "lowerRight": [-1.5, 0, -1.5], "upperLeft": [-1.5, 3, 1.5],
+         "resolution": [64, 64]}]})";
+    return (folder / "lab.json").string();
+}
+
+TEST_F(RenderCli, CorrectedScreensWriteTheImageBeforeAndAfterTheWarp) {
+    const auto out = freshFolder("render-cli-warp");
+    const std::string identity = "cavewall-warp 1\n2 2\n0 0 0 0\n1 0 1 0\n0 1 0 1\n1 1 1 1\n";
+    const CliResult r = runCavewall({"render", "--display", correctedDisplay(out, identity), "--out", out.string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("wrote " + (out / "front-warped.png").string()));
+    // The identity warp leaves the image as it is; the left screen has no pass at all.
+    EXPECT_EQ(scenes::readImage(out / "front-warped.png").rgba, scenes::readImage(out / "front.png").rgba);
+    EXPECT_TRUE(std::filesystem::exists(out / "left.png"));
+    EXPECT_FALSE(std::filesystem::exists(out / "left-warped.png"));
+}
+
+TEST_F(RenderCli, BadWarpFileNamesTheFileAndTheLine) {
+    const auto out = freshFolder("render-cli-bad-warp");
+    const std::string bad = "cavewall-warp 1\n2 2\n0 0 0 0\n1 0 1 0\n0 1 0 1\n1 1 1 nan\n";
+    const CliResult r = runCavewall({"render", "--display", correctedDisplay(out, bad), "--out", out.string()});
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_THAT(r.err, HasSubstr((out / "front.warp").string() + ":6: node 3: y: expected a finite number, got 'nan'"));
 }
 
 TEST_F(RenderCli, BadInputGivesAClearErrorAndNonZeroExit) {

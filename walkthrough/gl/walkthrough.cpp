@@ -148,7 +148,8 @@ Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescript
                          WalkthroughOptions options, std::vector<int> screens)
     : _scene(scene), _description(description), _display(display), _context(madeCurrent(context)),
       _options(withPaging(std::move(options), description, walls)), _screens(std::move(screens)),
-      _targets(display, context), _renderer(scene, _options.render) {
+      _targets(display, context), _renderer(scene, _options.render),
+      _projectors(std::make_unique<ProjectorPasses>(display, _targets)) {
     if (_screens.empty())
         for (int s = 0; s < static_cast<int>(display.screens().size()); ++s) _screens.push_back(s);
     if (walls && !walls->plan.walls.empty()) _walls = std::make_unique<WallRuntime>(std::move(*walls), _options);
@@ -466,6 +467,7 @@ walkthrough::FrameResult Walkthrough::renderFrame(const walkthrough::FrameInput&
     const WallDraws walls = allWallDraws(plan);
     drawViews(input, views, filter, plan, walls, result);
     _timer.end();
+    if (_projectors->any()) _projectors->apply(_targets);  // after the timer: GPU ms is the scene's
     result.cpuMs = msSince(start);
     glFinish();
     result.gpuMs = _timer.waitMs();  // the GPU has finished: no stall
@@ -476,6 +478,7 @@ walkthrough::FrameResult Walkthrough::renderFrame(const walkthrough::FrameInput&
         result.bakerBusy = bakeAtStart->busy || end.busy || end.started != bakeAtStart->started;
     }
     if (input.readImages) result.images = readFrame(_display, _targets);
+    if (input.readImages) result.warpedImages = _projectors->read(result.images);
     if (input.readDepth) result.depths = readDepths(input, views, walls);
     return result;
 }
@@ -483,8 +486,10 @@ walkthrough::FrameResult Walkthrough::renderFrame(const walkthrough::FrameInput&
 void Walkthrough::present() {
     const int windows = std::min(_context.windowCount(), _targets.screenCount());
     for (int s = 0; s < windows; ++s) {
-        PresentImage image{_targets.colorTexture(s, 0), 0, _targets.size(s)};
-        if (_targets.imageCount(s) > 1 && _context.info().stereoWindows) image.right = _targets.colorTexture(s, 1);
+        const ProjectorPass* pass = _projectors->pass(s);  // a projector shows the corrected image
+        PresentImage image{pass ? pass->colorTexture(0) : _targets.colorTexture(s, 0), 0, _targets.size(s)};
+        if (_targets.imageCount(s) > 1 && _context.info().stereoWindows)
+            image.right = pass ? pass->colorTexture(1) : _targets.colorTexture(s, 1);
         _context.present(s, image);
     }
 }

@@ -39,6 +39,7 @@
 #include "display/gl/context.h"
 #include "display/gl/frame_images.h"
 #include "display/gl/gpu_timer.h"
+#include "display/gl/projector_pass.h"
 #include "display/gl/render_targets.h"
 #include "render/gl/scene_renderer.h"
 #include "scenes/scene.h"
@@ -172,8 +173,10 @@ private:
     int _bakedNow = 0, _bakedTotal = 0;  // baking on demand: textures handed to the pager
     std::unique_ptr<walkthrough::FramePlanner> _planner;
     std::unique_ptr<HandCursorPass> _cursor;
-    std::unique_ptr<WarpPass> _warp;  // Transition::Warp with walls only
-    GpuTimer _timer;                  // timestamp pairs: llvmpipe's first GL_TIME_ELAPSED is garbage
+    std::unique_ptr<WarpPass> _warp;
+    std::unique_ptr<ProjectorPasses>
+        _projectors;  // per-screen projector warp and blend  // Transition::Warp with walls only
+    GpuTimer _timer;  // timestamp pairs: llvmpipe's first GL_TIME_ELAPSED is garbage
 };
 
 }  // namespace cavewall::gl

@@ -1,0 +1,64 @@
+#include "display/blend_mask.h"
+
+#include "config/error.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <stb_image_write.h>
+
+#include <cstdint>
+
+namespace cavewall::display {
+namespace {
+
+using ::testing::HasSubstr;
+
+void append(void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), size);
+}
+
+// An 8-bit PNG with `channels` channels, rows top first, from `bytes`.
+std::string png(int w, int h, int channels, const std::vector<std::uint8_t>& bytes) {
+    std::string out;
+    stbi_write_png_to_func(append, &out, w, h, channels, bytes.data(), w * channels);
+    return out;
+}
+
+TEST(BlendMask, EightBitGreyScalesToSixteenBitsAndFlipsRows) {
+    // 2 x 2, top row 0 and 255, bottom row 128 and 1.
+    const BlendMask m = parseBlendMask(png(2, 2, 1, {0, 255, 128, 1}), "m.png");
+    ASSERT_EQ(m.weights.size(), 4u);
+    EXPECT_EQ(m.weights[0], 128 * 257);  // (0, 0) is the bottom-left pixel: GL's row order
+    EXPECT_EQ(m.weights[1], 257);
+    EXPECT_EQ(m.weights[3], 65535);  // 255 is exactly 1
+    EXPECT_FLOAT_EQ(m.at(0, 1), 0.0f);
+}
+
+TEST(BlendMask, BadInputSaysWhatItExpected) {
+    struct Case {
+        const char* name;
+        std::string bytes;
+        const char* message;
+    };
+    const std::string valid = png(2, 1, 1, {1, 2});
+    const Case cases[] = {
+        {"empty", "", "m.png: not a PNG file (expected the PNG signature, got 0 bytes"},
+        {"text", "P5\n2 2\n255\n", "m.png: not a PNG file"},
+        {"rgb", png(2, 1, 3, {1, 2, 3, 4, 5, 6}), "m.png: expected a grey PNG (1 channel, no alpha), got 3 channels"},
+        {"grey and alpha", png(1, 1, 2, {1, 2}), "got 2 channels"},
+        {"truncated", valid.substr(0, 40), "m.png: cannot"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        EXPECT_THAT([&] { parseBlendMask(c.bytes, "m.png"); }, ThrowsMessage<Error>(HasSubstr(c.message)));
+    }
+}
+
+TEST(BlendMask, MissingFileNamesIt) {
+    EXPECT_THAT([] { loadBlendMask("/nonexistent/front.png"); },
+                ThrowsMessage<Error>(HasSubstr("/nonexistent/front.png: cannot open blend mask")));
+}
+
+}  // namespace
+}  // namespace cavewall::display
