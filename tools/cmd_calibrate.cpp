@@ -114,9 +114,17 @@ int runCalibrate(const std::vector<std::string>& words) {
 
     c.tracking.caveFromTracker = fit.caveFromTracker;
     placeScreens(file, fit, c, pairsPath.string(), displayPath.string());
+    // Warp and blend files stay where they are: relative to the new file's folder.
+    const std::filesystem::path outFolder = std::filesystem::absolute(out).parent_path();
+    for (config::Screen& screen : c.screens)
+        for (std::string* file : {&screen.warp, &screen.blend})
+            if (!file->empty())
+                *file = std::filesystem::absolute(c.directory / *file).lexically_relative(outFolder).string();
+    c.directory = outFolder;
     const std::string text = config::displayConfigJson(c);
     // What is written must load as what was meant (the parser's rules include the calibration's).
-    const config::DisplayConfig back = config::parseDisplayConfig(text, out.string());
+    config::DisplayConfig back = config::parseDisplayConfig(text, out.string());
+    back.directory = outFolder;
     config::validateDisplayConfig(back, out.string());
     if (!(back == c)) throw Error(out.string() + ": the written configuration does not read back the same");
     scenes::writeBytesAtomically(out, text);
