@@ -325,10 +325,13 @@ std::filesystem::path displayConfigPath(const std::string& nameOrPath) {
     std::filesystem::path path(nameOrPath);
     const bool bareName = !path.has_parent_path() && !path.has_extension();
     if (bareName) path = presetDirectory() / (nameOrPath + ".json");
-    if (bareName && !std::filesystem::exists(path))
-        throw Error(nameOrPath +
-                    ": no such display configuration (expected a file path or one of "
-                    "the presets cave4, cave6, powerwall, desktop in " +
+    if (!bareName) return path;
+    std::error_code error;
+    if (!std::filesystem::exists(path, error))
+        throw Error(nameOrPath + ": " +
+                    (error ? "cannot read the preset " + path.string() + " (" + error.message() + ")"
+                           : "no such display configuration") +
+                    " (expected a file path or one of the presets cave4, cave6, powerwall, desktop in " +
                     presetDirectory().string() + ")");
     return path;
 }

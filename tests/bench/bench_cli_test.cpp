@@ -552,18 +552,16 @@ TEST(BenchSceneCli, ScaleDataFolderThatCannotBeWrittenIsNamedAndLeftUntrusted) {
     ASSERT_TRUE(fs::exists(plant));
     EXPECT_TRUE(filesUnder(plant).empty());  // no scene.json, no stamp, no temporary file
 
-    fs::create_directories(root / "read-only");
-    fs::permissions(root / "read-only",
-                    fs::perms::owner_read | fs::perms::owner_exec | fs::perms::others_read | fs::perms::others_exec);
-    // Root writes whatever the mode: run as nobody then (setpriv, util-linux).
-    const std::string asUser = ::geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups" : "";
-    std::vector<std::string> readOnly = args;
-    readOnly.insert(readOnly.end(), {(root / "read-only").string(), "--out", (root / "out-read-only").string()});
-    const CliResult ro = runThroughShell("", asUser, readOnly, root.path());
+    // A data folder that cannot be made: its parent is a file (a read-only folder would need a
+    // user other than root, whom file modes do not stop).
+    test::writeFile(root / "a-file", "not a folder");
+    std::vector<std::string> blocked = args;
+    blocked.insert(blocked.end(), {(root / "a-file" / "data").string(), "--out", (root / "out-blocked").string()});
+    const CliResult ro = runThroughShell("", "", blocked, root.path());
     EXPECT_EQ(ro.exitCode, 1) << ro.out;
-    EXPECT_THAT(ro.err, HasSubstr((root / "read-only" / "plant-1000").string() +
-                                  ": cannot create the output folder (Permission denied)"));
-    EXPECT_TRUE(fs::is_empty(root / "read-only"));
+    EXPECT_THAT(ro.err, HasSubstr((root / "a-file" / "data").string()));
+    EXPECT_THAT(ro.err, HasSubstr("Not a directory"));
+    EXPECT_FALSE(fs::exists(root / "out-blocked" / "scale.csv"));
 }
 
 TEST(BenchSceneCli, BadInputIsAClearError) {
