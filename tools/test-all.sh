@@ -8,7 +8,8 @@
 #    which also proves that such a build works, running every unit test and the fuzz corpora's
 #    replays. It compiles only what those run (the unit-tests target), at -O1 with line tables
 #    only (-g1): asserts stay on, the sanitizers' reports keep file and line, and the tests run
-#    about twice as fast as at -O0.
+#    about twice as fast as at -O0. The test files themselves are compiled without the
+#    sanitizers (tests/CMakeLists.txt); the libraries they call are instrumented.
 # Tests run on every core: no two tests use the same port (each binds a free one), and the files
 # some share (a generated scene, a bake cache, the glTF files tests/scenes/gltf_builder.h
 # writes) are written atomically with the same content.
