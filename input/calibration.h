@@ -84,6 +84,50 @@ struct CalibrationFit {
 CalibrationFit fitCaveFromTracker(const std::vector<PointPair>& pairs, const CalibrationOptions& options,
                                   const std::string& source);
 
+// An axis-aligned box of the cave frame (metres): the volume a calibration is judged over.
+struct Box {
+    glm::dvec3 min{0.0}, max{0.0};
+    bool operator==(const Box&) const = default;
+};
+
+// How far a calibration maps points from where they belong, over a box: `rms` is the root mean
+// square over the box's volume (uniform density), `worstCorner` the largest over the box (an
+// affine error is largest at a corner). Metres.
+struct VolumeError {
+    double rms = 0.0;
+    double worstCorner = 0.0;
+};
+
+// How far `fitted` maps points from where `truth` maps them, over `box` of the cave frame: for
+// each cave point c in the box, the distance between fitted * truth^-1 * c and c (where the two
+// calibrations map the tracker point that truth puts at c). Exact: the difference of two affine
+// maps is affine, so its mean square over a box has a closed form and its largest value is at a
+// corner.
+VolumeError calibrationDifference(const glm::dmat4& fitted, const glm::dmat4& truth, const Box& box);
+
+// The error to expect over `box` from the rigid fit of points at `cave` (cave frame, metres)
+// whose tracker measurements carry Gaussian noise of `sigma` metres on every coordinate: the
+// first-order (small-noise) covariance of Horn's fit, Var(translation at the centroid) = sigma^2
+// / n per axis and Var(rotation) = sigma^2 S^-1 with S = sum(|a_i|^2 I - a_i a_i^T) over the
+// centred points, so E|e(p)|^2 = sigma^2 (3 / n + r^T (tr(S^-1) I - S^-1) r) at r = p - centroid.
+// `rms` is the root of that mean over the box, `worstCorner` its root at the worst corner (both
+// expectations over the noise, not one fit's error). Needs 3 or more non-collinear points.
+VolumeError predictedRigidError(const std::vector<glm::dvec3>& cave, double sigma, const Box& box);
+
+// The noise per coordinate that a fit's residuals imply: sqrt(sum r_i^2 / (3 n - k)), with k = 6
+// fitted parameters for a rigid fit and 7 with a scale (0 when 3 n <= k).
+double noiseFromResiduals(const CalibrationFit& fit, bool fitScale);
+
+// The expected error over `box` per metre of noise per coordinate (predictedRigidError's rms for
+// sigma = 1) above which the points are poorly spread: the eight corners of a cube give 0.71 over
+// the cube, the four corners of one of its walls 1.29, the corners of a cube a third its size
+// at its centre 1.22.
+inline constexpr double kPoorSpreadFactor = 1.0;
+
+// A line of advice when `cave` points (at least 3, not collinear) fix the calibration poorly
+// over `box`: their expected error there over kPoorSpreadFactor times the noise. Empty otherwise.
+std::string spreadAdvice(const std::vector<glm::dvec3>& cave, const Box& box, const std::string& source);
+
 // The rotation R that maximises sum(b_i . R a_i) for centred point sets a and b of one size
 // (Horn 1987, without the checks above): the unit quaternion that is the eigenvector of the
 // largest eigenvalue of Horn's matrix N, and that eigenvalue, which equals sum(b_i . R a_i).

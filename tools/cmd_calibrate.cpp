@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 
 namespace cavewall::tools {
 
@@ -23,7 +24,10 @@ const char* const kCalibrateUsage =
     "a regular file). The pairs file is JSON, metres in both frames:\n"
     "  {\"pairs\": [{\"tracker\": [x, y, z], \"cave\": [x, y, z], \"label\": \"front lowerLeft\"}, ...]}\n"
     "It prints each pair's residual, the RMS and the largest residual (mm), the rotation as yaw,\n"
-    "pitch and roll (degrees, as viewer.headOrientation) and the translation (metres).\n"
+    "pitch and roll (degrees, as viewer.headOrientation) and the translation (metres); then the\n"
+    "noise per coordinate the residuals imply and, for a rigid fit, the error that noise gives\n"
+    "over the box the screens enclose (RMS over it, and at its worst corner), with advice when the\n"
+    "points are spread too poorly to fix the transform over it.\n"
     "--scale fits a uniform scale too (refused outside [0.5, 2]). --noise is the expected noise\n"
     "of one measured point (default 2 mm): residuals above 5 times it are warned about.\n"
     "Screens whose corners were measured in the tracker frame (\"screens\": {\"front\":\n"
@@ -64,6 +68,29 @@ void printFit(const input::PairsFile& file, const input::CalibrationFit& fit) {
               << fixed(ypr.x, 3) << "\npitch_deg " << fixed(ypr.y, 3) << "\nroll_deg " << fixed(ypr.z, 3)
               << "\ntranslation_m " << fixed(t.x, 4) << " " << fixed(t.y, 4) << " " << fixed(t.z, 4) << "\nscale "
               << fixed(fit.scale, 6) << "\n";
+}
+
+// The box the display's screens enclose (cave frame): the volume the calibration serves.
+input::Box screensBox(const config::DisplayConfig& c) {
+    input::Box box{glm::dvec3(std::numeric_limits<double>::max()), glm::dvec3(std::numeric_limits<double>::lowest())};
+    for (const config::Screen& s : c.screens)
+        for (const glm::dvec3& p : {s.lowerLeft, s.lowerRight, s.upperLeft, s.lowerRight + s.upperLeft - s.lowerLeft}) {
+            box.min = glm::min(box.min, p);
+            box.max = glm::max(box.max, p);
+        }
+    return box;
+}
+
+// The noise the residuals imply and, for a rigid fit, the error it gives over the screens' box
+// (first order; a fitted scale adds error growing with the distance from the points).
+void printExpectedError(const std::vector<glm::dvec3>& cave, const input::CalibrationFit& fit, bool fitScale,
+                        const input::Box& box) {
+    const double sigma = input::noiseFromResiduals(fit, fitScale);
+    std::cout << "noise_mm " << fixed(sigma * 1000.0, 2) << "\n";
+    if (fitScale) return;
+    const input::VolumeError e = input::predictedRigidError(cave, sigma, box);
+    std::cout << "expected_error_rms_mm " << fixed(e.rms * 1000.0, 2) << "\nexpected_error_corner_mm "
+              << fixed(e.worstCorner * 1000.0, 2) << "\n";
 }
 
 // Places each tracked screen's corners by the fit, squared into a rectangle, and prints how far
@@ -110,7 +137,13 @@ int runCalibrate(const std::vector<std::string>& words) {
     config::DisplayConfig c = config::loadDisplayConfig(display);
     const input::CalibrationFit fit = input::fitCaveFromTracker(file.pairs, options, pairsPath.string());
     printFit(file, fit);
+    const input::Box box = screensBox(c);
+    std::vector<glm::dvec3> cave;
+    for (const input::PointPair& p : file.pairs) cave.push_back(p.cave);
+    printExpectedError(cave, fit, options.fitScale, box);
     for (const std::string& w : fit.warnings) std::cerr << "warning: " << w << "\n";
+    if (const std::string advice = input::spreadAdvice(cave, box, pairsPath.string()); !advice.empty())
+        std::cerr << "warning: " << advice << "\n";
 
     c.tracking.caveFromTracker = fit.caveFromTracker;
     placeScreens(file, fit, c, pairsPath.string(), displayPath.string());

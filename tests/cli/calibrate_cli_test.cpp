@@ -73,6 +73,28 @@ TEST(CalibrateCli, WritesAConfigThatLoadsAndMapsThePoints) {
     EXPECT_LT(glm::distance(glm::dvec3(c.tracking.caveFromTracker[3]), kTranslation), 0.001);
 }
 
+TEST(CalibrateCli, PrintsTheExpectedErrorAndAdvisesOnPoorlySpreadPoints) {
+    const fs::path dir = workFolder("spread");
+    // The eight corners of cave4: the best spread, no advice.
+    const fs::path eight = writeFile(dir / "eight.json", pairsJson(8).dump());
+    CliResult r = runCavewall(
+        {"calibrate", "--pairs", eight.string(), "--display", "cave4", "--out", (dir / "eight-out.json").string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("noise_mm "));
+    EXPECT_THAT(r.out, HasSubstr("expected_error_rms_mm "));
+    EXPECT_THAT(r.out, HasSubstr("expected_error_corner_mm "));
+    EXPECT_THAT(r.err, ::testing::Not(HasSubstr("poorly spread")));
+    // The four corners of the front wall fix the depth direction poorly: advice, and the file
+    // is still written.
+    const fs::path four = writeFile(dir / "four.json", pairsJson(4).dump());
+    r = runCavewall(
+        {"calibrate", "--pairs", four.string(), "--display", "cave4", "--out", (dir / "four-out.json").string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.err, HasSubstr("four.json: the points are poorly spread over the CAVE: the expected error over it is "
+                                 "1.29 times the noise per coordinate"));
+    EXPECT_TRUE(fs::exists(dir / "four-out.json"));
+}
+
 TEST(CalibrateCli, PlacesMeasuredScreens) {
     const fs::path dir = workFolder("screens");
     // The front wall really stands 5 cm further back than cave4 says; its corners are measured.

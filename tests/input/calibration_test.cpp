@@ -47,19 +47,8 @@ std::vector<PointPair> measure(const glm::dmat4& caveFromTracker, const std::vec
     return pairs;
 }
 
-// The largest distance, over a 7 x 7 x 7 grid filling the 3 x 3 x 3 m CAVE, between where the
-// true and the fitted calibration map the same tracker point.
-double volumeError(const glm::dmat4& truth, const glm::dmat4& fitted) {
-    const glm::dmat4 trackerFromCave = glm::inverse(truth);
-    double worst = 0.0;
-    for (int i = 0; i <= 6; ++i)
-        for (int j = 0; j <= 6; ++j)
-            for (int k = 0; k <= 6; ++k) {
-                const glm::dvec4 cave(-1.5 + 0.5 * i, 0.5 * j, -1.5 + 0.5 * k, 1.0);
-                worst = std::max(worst, glm::distance(glm::dvec3(fitted * (trackerFromCave * cave)), glm::dvec3(cave)));
-            }
-    return worst;
-}
+// The 3 x 3 x 3 m CAVE of caveCorners(): the volume a calibration is judged over.
+const Box kCave{{-1.5, 0.0, -1.5}, {1.5, 3.0, 1.5}};
 
 double matrixError(const glm::dmat4& a, const glm::dmat4& b) {
     double worst = 0.0;
@@ -110,17 +99,94 @@ TEST(Calibration, RecoversAnExactTransformWithoutNoise) {
 }
 
 TEST(Calibration, OneMillimetreOfNoiseGivesAtMostTwoMillimetresOverTheCave) {
-    // 8 corners 3 m apart with 1 mm of noise on every tracker coordinate: the centroid is known
-    // to about 1/sqrt(8) mm per axis and the rotation to about 1 mm / (sqrt(8) x 2.6 m), so the
-    // error anywhere in the CAVE is near 1 mm. 2 mm is the requirement, checked on 20 fixed noise
-    // draws; cavewall_bench_calibration gives the distribution (median 1.1 mm, about 1 % of
-    // draws above 2 mm: docs/input.md).
+    // The target: 8 points and 1 mm of tracked-point noise give at most 2 mm of error over the
+    // CAVE. Checked on 2000 fixed noise draws, with the eight corners of the CAVE (the best
+    // placement of 8 points in it: the largest spread) and the rigid fit (the default).
+    // - 1 mm on every coordinate (1.7 mm RMS per point), the error as the RMS over the volume
+    //   (the error at a point anywhere in it, averaged): expected 0.71 mm (PredictedErrorMatchesSimulatedFits),
+    //   so 2 mm is 2.8 times that; every draw meets it (cavewall_bench_calibration: largest of
+    //   10000 draws 1.85 mm).
+    // - 1 mm RMS per point (1 / sqrt(3) mm per coordinate), the error as the largest over the
+    //   volume (at its worst corner): every draw meets it too (largest of 10000: 1.63 mm).
     const glm::dmat4 truth = transformOf(yawPitchRoll(glm::radians(75.0), glm::radians(-3.0), 1.0), {1.0, -2.0, 0.3});
-    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    for (std::uint64_t seed = 1; seed <= 2000; ++seed) {
         SCOPED_TRACE(seed);
-        const CalibrationFit fit = fitCaveFromTracker(measure(truth, caveCorners(), 0.001, seed), {}, "t");
-        EXPECT_LE(volumeError(truth, fit.caveFromTracker), 0.002);
+        const CalibrationFit perCoordinate = fitCaveFromTracker(measure(truth, caveCorners(), 0.001, seed), {}, "t");
+        EXPECT_LE(calibrationDifference(perCoordinate.caveFromTracker, truth, kCave).rms, 0.002);
+        const CalibrationFit perPoint =
+            fitCaveFromTracker(measure(truth, caveCorners(), 0.001 / std::sqrt(3.0), seed), {}, "t");
+        EXPECT_LE(calibrationDifference(perPoint.caveFromTracker, truth, kCave).worstCorner, 0.002);
     }
+}
+
+TEST(Calibration, TheLargestErrorAtOneMillimetrePerCoordinateIsAboveTwoMillimetresInAFewDraws) {
+    // Both strict readings at once (1 mm on every coordinate, the largest error over the volume)
+    // miss 2 mm in about 1 % of draws with any fit: the rigid fit is the maximum-likelihood one
+    // for Gaussian noise, and the error at a corner of the CAVE has an expected RMS of 0.87 mm
+    // (sigma sqrt(3 / 8 + 6.75 / 12 - 6.75 / 36); PredictedErrorMatchesSimulatedFits), the largest of eight such
+    // corners more. This test keeps docs/input.md's statement of that limit true.
+    const glm::dmat4 truth = transformOf(yawPitchRoll(glm::radians(75.0), glm::radians(-3.0), 1.0), {1.0, -2.0, 0.3});
+    int above = 0;
+    for (std::uint64_t seed = 1; seed <= 2000; ++seed) {
+        const CalibrationFit fit = fitCaveFromTracker(measure(truth, caveCorners(), 0.001, seed), {}, "t");
+        above += calibrationDifference(fit.caveFromTracker, truth, kCave).worstCorner > 0.002;
+    }
+    EXPECT_GE(above, 5);   // 0.25 %
+    EXPECT_LE(above, 50);  // 2.5 %
+}
+
+TEST(Calibration, DifferenceOverABoxIsExact) {
+    // A shift of 3 mm moves every point by 3 mm.
+    glm::dmat4 shift(1.0);
+    shift[3] = glm::dvec4(0.0, 0.003, 0.0, 1.0);
+    EXPECT_NEAR(calibrationDifference(shift, glm::dmat4(1.0), kCave).rms, 0.003, 1e-12);
+    EXPECT_NEAR(calibrationDifference(shift, glm::dmat4(1.0), kCave).worstCorner, 0.003, 1e-12);
+    // A turn by theta about +Y moves a point at distance d from the axis by 2 d sin(theta / 2).
+    // Over the CAVE, the mean of d^2 = x^2 + z^2 is 0.75 + 0.75 (a uniform coordinate over
+    // [-1.5, 1.5] has a mean square of 1.5^2 / 3), and the corners are at d^2 = 4.5.
+    const double theta = 0.001;
+    const glm::dmat4 turn(glm::mat3_cast(glm::angleAxis(theta, glm::dvec3(0, 1, 0))));
+    const VolumeError e = calibrationDifference(turn, glm::dmat4(1.0), kCave);
+    EXPECT_NEAR(e.rms, 2.0 * std::sin(theta / 2.0) * std::sqrt(1.5), 1e-12);
+    EXPECT_NEAR(e.worstCorner, 2.0 * std::sin(theta / 2.0) * std::sqrt(4.5), 1e-12);
+    // Measured against the truth, not the identity: the same turn after any calibration.
+    const glm::dmat4 truth = transformOf(yawPitchRoll(1.0, 0.2, -0.1), {1.0, 2.0, 3.0});
+    EXPECT_NEAR(calibrationDifference(turn * truth, truth, kCave).rms, e.rms, 1e-12);
+}
+
+TEST(Calibration, PredictedErrorMatchesSimulatedFits) {
+    // For the eight corners of the CAVE, S = sum(|a|^2 I - a a^T) = 8 (6.75 - 2.25) I = 36 I, so
+    // E|e|^2 = sigma^2 (3 / 8 + |r|^2 (3 / 36 - 1 / 36)): over the volume, where the mean |r|^2
+    // is 3 x 0.75, that is sigma^2 (0.375 + 0.125) = 0.5 sigma^2; at a corner (|r|^2 = 6.75),
+    // 0.75 sigma^2.
+    const double sigma = 0.001;
+    const VolumeError corners = predictedRigidError(caveCorners(), sigma, kCave);
+    EXPECT_NEAR(corners.rms, sigma * std::sqrt(0.5), 1e-12);
+    EXPECT_NEAR(corners.worstCorner, sigma * std::sqrt(0.75), 1e-12);
+    // The mean square over 2000 simulated fits agrees within 5 % (the sampling error of a mean
+    // of 2000 such squares is about 2 %), for the CAVE's corners and for one wall's.
+    const std::vector<glm::dvec3> all = caveCorners(), wall(all.begin(), all.begin() + 4);  // x = -1.5
+    const glm::dmat4 truth = transformOf(yawPitchRoll(glm::radians(75.0), glm::radians(-3.0), 1.0), {1.0, -2.0, 0.3});
+    for (const std::vector<glm::dvec3>& points : {all, wall}) {
+        double sum = 0.0, noise = 0.0;
+        for (std::uint64_t seed = 1; seed <= 2000; ++seed) {
+            const CalibrationFit fit = fitCaveFromTracker(measure(truth, points, sigma, seed), {}, "t");
+            sum += std::pow(calibrationDifference(fit.caveFromTracker, truth, kCave).rms, 2.0);
+            noise += std::pow(noiseFromResiduals(fit, false), 2.0);
+        }
+        EXPECT_NEAR(sum / 2000.0, std::pow(predictedRigidError(points, sigma, kCave).rms, 2.0), 0.05 * sum / 2000.0);
+        EXPECT_NEAR(std::sqrt(noise / 2000.0), sigma, 0.05 * sigma);  // the residuals estimate sigma
+    }
+}
+
+TEST(Calibration, AdvisesWhenThePointsArePoorlySpread) {
+    EXPECT_EQ(spreadAdvice(caveCorners(), kCave, "p.json"), "");
+    // The four corners of the x = -1.5 wall: S = diag(18, 9, 9), whose expected error over the
+    // CAVE is 1.29 sigma, against 0.71 sigma for the eight corners.
+    const std::vector<glm::dvec3> all = caveCorners(), wall(all.begin(), all.begin() + 4);
+    EXPECT_THAT(
+        spreadAdvice(wall, kCave, "p.json"),
+        HasSubstr("p.json: the points are poorly spread over the CAVE: the expected error over it is 1.29 times"));
 }
 
 TEST(Calibration, FitsAUniformScaleWhenAsked) {
