@@ -191,7 +191,7 @@ WarpMesh parseWarpPfm(std::string_view bytes, const std::string& source) {
                         ") (column, row from the bottom): image position out of range (expected [0, 1], or NaN or "
                         "-1 outside the projection, got " +
                         formatNumber(x) + ", " + formatNumber(y) + ")");
-        n.uv = n.valid ? glm::vec2(x, 1.0f - y) : glm::vec2(0.0f);
+        n.uv = n.valid ? glm::vec2(x, y) : glm::vec2(0.0f);
         m.nodes.push_back(n);
     }
     return m;

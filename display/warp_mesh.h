@@ -24,8 +24,11 @@
 // tools write: "PF\n", "W H\n", a scale whose sign gives the byte order (negative: little
 // endian), then W*H nodes of three 32-bit floats, rows from the bottom row (PFM order). Node
 // (i, j) sits at output position (i / (W-1), j / (H-1)); its first two floats are the normalised
-// position in the rendered image that it shows, with MPCDI's origin at the upper left (so v = 1
-// - y); the third is ignored. A node with a NaN or a negative coordinate is invalid.
+// position in the rendered image that it shows, origin at the lower left (v grows upwards, so
+// an unwarped file holds (i / (W-1), j / (H-1)) at node (i, j)); the third is ignored. A node
+// with a NaN or a negative coordinate is invalid. (Tools that describe their files as rows from
+// the top with v growing downwards write the same bytes: both readings flip rows and v together
+// and give the same picture.)
 //
 // Both readers are pure functions on bytes; `source` names the file in messages. Bad input
 // throws cavewall::Error naming the source, the line or node, and expected against got.

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <string>
 
 namespace cavewall::display {
 namespace {
@@ -39,6 +40,27 @@ TEST(WarpMesh, TextFormatReadsNodesRowsFromTheBottom) {
     EXPECT_FALSE(m.nodes[3].valid);  // u = v = -1 marks a node outside the projection
 }
 
+TEST(WarpMesh, ReadsAnMpcdiPfmFileUpright) {
+    // tests/display/data/mpcdi_keystone_3x3.pfm, written for this test in the byte layout of the
+    // MPCDI reference library's PFM writer (header "PF\n3 3\n-1.000000\n", little-endian floats,
+    // rows from the bottom) with the orientation that open MPCDI readers take from calibration
+    // tools' files: an unwarped map holds v = 0 on the bottom row and v = 1 on the top one. Rows
+    // as written, bottom first, (u, v, 1) per node:
+    //   bottom (0, 0)     (0.5, 0)   NaN
+    //   middle (0, 0.5)   (0.5, 0.5) (1, 0.5)
+    //   top    (0.1, 1)   (0.5, 1)   (0.9, 1)       the image's top, narrowed: a keystone
+    const WarpMesh m = loadWarpMesh(std::string(CAVEWALL_SOURCE_DIR) + "/tests/display/data/mpcdi_keystone_3x3.pfm");
+    ASSERT_EQ(m.width, 3);
+    ASSERT_EQ(m.height, 3);
+    EXPECT_EQ(m.nodes[0].xy, glm::vec2(0.0f, 0.0f));  // the output's lower-left corner ...
+    EXPECT_EQ(m.nodes[0].uv, glm::vec2(0.0f, 0.0f));  // ... shows the image's lower-left one
+    EXPECT_FALSE(m.nodes[2].valid);                   // NaN: outside the projection
+    EXPECT_EQ(m.nodes[5].uv, glm::vec2(1.0f, 0.5f));  // right edge, halfway up
+    EXPECT_EQ(m.nodes[6].xy, glm::vec2(0.0f, 1.0f));  // the output's upper-left corner ...
+    EXPECT_EQ(m.nodes[6].uv, glm::vec2(0.1f, 1.0f));  // ... shows the image's top, not its bottom
+    EXPECT_EQ(m.nodes[8].uv, glm::vec2(0.9f, 1.0f));
+}
+
 TEST(WarpMesh, TextRoundTripsThroughWarpText) {
     WarpMesh m = identityWarp(3, 4);
     m.nodes[5].xy = {0.123456789f, 1.5f};
@@ -47,14 +69,14 @@ TEST(WarpMesh, TextRoundTripsThroughWarpText) {
     EXPECT_EQ(parseWarpText(warpText(m), "m.warp"), m);
 }
 
-TEST(WarpMesh, PfmNodesSitOnTheOutputGridAndFlipMpcdiY) {
+TEST(WarpMesh, PfmNodesSitOnTheOutputGridWithVUp) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
-    // 2 x 2, bottom row first; MPCDI's y runs down, so the image's top-left (0, 0) is v = 1.
-    const std::string bytes = pfm(2, 2, {{0.0f, 1.0f}, {1.0f, 1.0f}, {0.25f, 0.0f}, {nan, nan}});
+    // 2 x 2, bottom row first; v grows upwards, so the top row shows the image's top (v = 1).
+    const std::string bytes = pfm(2, 2, {{0.0f, 0.0f}, {1.0f, 0.0f}, {0.25f, 1.0f}, {nan, nan}});
     for (float scale : {-1.0f, 1.0f}) {
         SCOPED_TRACE(scale);
         const WarpMesh m =
-            parseWarpPfm(pfm(2, 2, {{0.0f, 1.0f}, {1.0f, 1.0f}, {0.25f, 0.0f}, {-1.0f, -1.0f}}, scale), "a.pfm");
+            parseWarpPfm(pfm(2, 2, {{0.0f, 0.0f}, {1.0f, 0.0f}, {0.25f, 1.0f}, {-1.0f, -1.0f}}, scale), "a.pfm");
         EXPECT_EQ(m.nodes[0].xy, glm::vec2(0.0f, 0.0f));
         EXPECT_EQ(m.nodes[0].uv, glm::vec2(0.0f, 0.0f));
         EXPECT_EQ(m.nodes[2].xy, glm::vec2(0.0f, 1.0f));  // node (0, 1): left, top row
