@@ -73,16 +73,68 @@ std::vector<std::uint8_t> statsBytes(const walkthrough::FrameResult& r, double s
 
 }  // namespace
 
+namespace {
+
+using ScreenImages = std::vector<scenes::ScreenImage>;
+
+bool ofScreens(const scenes::ScreenImage& i, const std::vector<int>& screens) {
+    return std::find(screens.begin(), screens.end(), i.screen) != screens.end();
+}
+
+// One rank's rendered and projector-corrected images in one message (one gather per frame):
+// the rendered images' encoded length (8 bytes), their encoding, then the corrected ones'.
+std::vector<std::uint8_t> encodeFrameImages(const ScreenImages& images, const ScreenImages& warped) {
+    const std::vector<std::uint8_t> a = images.empty() ? std::vector<std::uint8_t>{} : app::encodeImages(images);
+    const std::vector<std::uint8_t> b = warped.empty() ? std::vector<std::uint8_t>{} : app::encodeImages(warped);
+    if (a.empty() && b.empty()) return {};
+    std::vector<std::uint8_t> out(8);
+    const std::uint64_t length = a.size();
+    std::memcpy(out.data(), &length, 8);
+    out.insert(out.end(), a.begin(), a.end());
+    out.insert(out.end(), b.begin(), b.end());
+    return out;
+}
+
+bool decodeFrameImages(const std::vector<std::uint8_t>& bytes, ScreenImages& images, ScreenImages& warped) {
+    if (bytes.empty()) return true;
+    std::uint64_t length = 0;
+    if (bytes.size() < 8) return false;
+    std::memcpy(&length, bytes.data(), 8);
+    if (length > bytes.size() - 8) return false;
+    const std::vector<std::uint8_t> a(bytes.begin() + 8, bytes.begin() + 8 + static_cast<std::ptrdiff_t>(length));
+    const std::vector<std::uint8_t> b(bytes.begin() + 8 + static_cast<std::ptrdiff_t>(length), bytes.end());
+    return (a.empty() || app::decodeImages(a, images)) && (b.empty() || app::decodeImages(b, warped));
+}
+
+void sortByScreen(ScreenImages& images) {
+    std::sort(images.begin(), images.end(), [](const scenes::ScreenImage& a, const scenes::ScreenImage& b) {
+        return a.screen != b.screen ? a.screen < b.screen : a.image < b.image;
+    });
+}
+
+// Every rank's rendered and corrected images of its own screens, gathered on rank 0 in screen
+// and image order, as a single-process run has them. The read-back holds every screen's target,
+// of which only this rank's screens were drawn.
+void gatherImages(app::Cluster& cluster, walkthrough::FrameResult& r, const std::vector<int>& screens) {
+    std::erase_if(r.images, [&](const scenes::ScreenImage& i) { return !ofScreens(i, screens); });
+    std::erase_if(r.warpedImages, [&](const scenes::ScreenImage& i) { return !ofScreens(i, screens); });
+    const auto gathered = cluster.gatherBytes(encodeFrameImages(r.images, r.warpedImages));
+    if (cluster.rank() != 0) return;
+    r.images.clear();
+    r.warpedImages.clear();
+    for (const auto& bytes : gathered)
+        if (!decodeFrameImages(bytes, r.images, r.warpedImages)) cluster.abortAll("gathered malformed images");
+    sortByScreen(r.images);
+    sortByScreen(r.warpedImages);
+}
+
+}  // namespace
+
 double combineFrame(app::Cluster& cluster, walkthrough::FrameResult& r, double syncMs,
                     const std::vector<int>& screens) {
     syncMs += 1e3 * cluster.swapBarrier();
-    // Only this rank's screens were drawn; the read-back holds every screen's target.
-    std::erase_if(r.images, [&](const scenes::ScreenImage& i) {
-        return std::find(screens.begin(), screens.end(), i.screen) == screens.end();
-    });
     const auto stats = cluster.gatherBytes(statsBytes(r, syncMs));
-    const auto images =
-        cluster.gatherBytes(r.images.empty() ? std::vector<std::uint8_t>{} : app::encodeImages(r.images));
+    gatherImages(cluster, r, screens);
     if (cluster.rank() != 0) return syncMs;
     r.stats.triangles = 0;
     r.stats.drawCalls = 0;
@@ -108,12 +160,6 @@ double combineFrame(app::Cluster& cluster, walkthrough::FrameResult& r, double s
         // no rank drew one over alpha.
         r.texturesOverAlpha = std::max(r.texturesOverAlpha, static_cast<int>(v[10]));
     }
-    r.images.clear();
-    for (const auto& bytes : images)
-        if (!bytes.empty() && !app::decodeImages(bytes, r.images)) cluster.abortAll("gathered malformed images");
-    std::sort(r.images.begin(), r.images.end(), [](const scenes::ScreenImage& a, const scenes::ScreenImage& b) {
-        return a.screen != b.screen ? a.screen < b.screen : a.image < b.image;
-    });
     return slowestSync;
 }
 

@@ -30,10 +30,10 @@ std::string sessionFingerprint(const app::RunOptions& options, const scenes::Sce
 double receiveFrame(app::Cluster& cluster, walkthrough::FrameInput& input);
 
 // The swap lock, then rank 0 gathers: frame/CPU/GPU times (max over ranks), triangles and draw
-// calls (sums), warp fallbacks and angular errors (max: each rank counts the walls its screens show)
-// and the images of every rank's own `screens` (in screen order). Returns the
-// slowest rank's wait in milliseconds (broadcast + swap lock), `syncMs` being this rank's
-// broadcast wait.
+// calls (sums), warp fallbacks and angular errors (max: each rank counts the walls its screens
+// show) and the rendered and projector-corrected images of every rank's own `screens` (in
+// screen order), as a single-process run has them. Returns the slowest rank's wait in
+// milliseconds (broadcast + swap lock), `syncMs` being this rank's broadcast wait.
 double combineFrame(app::Cluster& cluster, walkthrough::FrameResult& result, double syncMs,
                     const std::vector<int>& screens);
 

@@ -126,16 +126,42 @@ std::vector<std::string> runArgs(const fs::path& out) {
             out.string()};
 }
 
+// cave4_128 with projector correction on the screens of ranks 0, 1 and 3 (screens are dealt
+// round-robin: front, left, right, floor to ranks 0 to 3): a keystone warp, and a black level
+// on the floor. Written once under the work folder.
+const fs::path& correctedDisplay() {
+    static const fs::path file = [] {
+        const fs::path dir = kWork / "corrected-display";
+        fs::create_directories(dir);
+        std::ofstream(dir / "keystone.warp") << "cavewall-warp 1\n2 2\n0 0 0 0\n1 0 1 0\n0 1 0.1 1\n1 1 0.9 1\n";
+        std::string json = readFile(CAVEWALL_SOURCE_DIR "/tests/gl/cave4_128.json");
+        for (const char* screen : {"\"front\"", "\"left\"", "\"floor\""}) {
+            const std::size_t at = json.find("\"resolution\": [128, 128]", json.find(screen));
+            json.insert(at, std::string("\"warp\": \"keystone.warp\", ") +
+                                (std::string(screen) == "\"floor\"" ? "\"blackLevel\": 0.02, " : ""));
+        }
+        std::ofstream(dir / "display.json") << json;
+        return dir / "display.json";
+    }();
+    return file;
+}
+
+// With projector correction on the screens of several ranks, each rank's corrected images
+// reach rank 0 too: the same files as a single-process run, warped ones included.
 TEST(ClusterRun, FourRanksRenderTheSameFramesAsOneProcess) {
     fs::remove_all(kWork / "single");
     fs::remove_all(kWork / "cluster");
+    auto withDisplay = [](std::vector<std::string> args) {
+        args[std::find(args.begin(), args.end(), "--display") - args.begin() + 1] = correctedDisplay().string();
+        return args;
+    };
     std::vector<std::string> single{CAVEWALL_EXE};
-    for (const auto& a : runArgs(kWork / "single")) single.push_back(a);
+    for (const auto& a : withDisplay(runArgs(kWork / "single"))) single.push_back(a);
     const Proc one = start(single, "single");
     ASSERT_EQ(finish(one, 600), 0) << readFile(one.err);
 
     std::vector<std::string> mpi{"mpirun", "--oversubscribe", "-np", "4", CAVEWALL_EXE};
-    auto clusterArgs = runArgs(kWork / "cluster");
+    auto clusterArgs = withDisplay(runArgs(kWork / "cluster"));
     clusterArgs[std::find(clusterArgs.begin(), clusterArgs.end(), "--cache") - clusterArgs.begin() + 1] =
         (kWork / "single-cache").string();  // the single run's bake, reused
     for (const auto& a : clusterArgs) mpi.push_back(a);
@@ -158,7 +184,10 @@ TEST(ClusterRun, FourRanksRenderTheSameFramesAsOneProcess) {
         EXPECT_TRUE(readFile(e.path()) == readFile(other)) << other << " differs";
         ++compared;
     }
-    EXPECT_EQ(compared, 2 * 5);  // 2 saved frames x (4 screens + fold-out)
+    EXPECT_EQ(compared, 2 * (4 + 1 + 3));  // 2 saved frames x (4 screens + fold-out + 3 corrected)
+    for (const auto& frame : fs::directory_iterator(kWork / "cluster" / "frames"))
+        for (const char* warped : {"front-warped.png", "left-warped.png", "floor-warped.png"})
+            EXPECT_TRUE(fs::exists(frame.path() / warped)) << frame.path() / warped;  // ranks 0, 1 and 3
     EXPECT_FALSE(fourCsv.column("sync_ms").empty());
 }
 
