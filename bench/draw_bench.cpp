@@ -1,14 +1,12 @@
 // The draw path on the generated plant (default: 2 M drawn triangles) at 1024 x 1024 pixels on
 // one screen, with and without CPU frustum culling (headless EGL; llvmpipe here).
 //
-// Scene: $CAVEWALL_BENCH_SCENE, else <build>/bench/plant/scene.json, written on first use as
-// `cavewall generate plant --out <build>/bench/plant` would (same generator, same bytes).
-// Views: the plant's walk-path points at eye height looking along +-X and +-Z; the screen is
-// a 2 m x 2 m square 1 m in front of the eye (90° x 90°), reversed-Z with an infinite far plane.
+// Scene and views: bench/plant_views.h (reversed-Z with an infinite far plane).
 // Each iteration renders one view (cycling) and waits for the GPU (glFinish), so the time per
 // iteration is the frame time. Counters per frame: objects, triangles and draw calls
 // submitted, CPU culling ms (BVH + filter), CPU submit ms, GPU ms (timer queries), and
 // triangles/s (submitted triangles over wall-clock frame time).
+#include "bench/plant_views.h"
 #include "display/gl/context.h"
 #include "display/gl/gpu_timer.h"
 #include "render/gl/scene_renderer.h"
@@ -29,21 +27,10 @@ using namespace cavewall;
 
 constexpr int kSize = 1024;
 
-std::filesystem::path scenePath() {
-    if (const char* given = std::getenv("CAVEWALL_BENCH_SCENE")) return given;
-    const std::filesystem::path folder = std::filesystem::path(CAVEWALL_BINARY_DIR) / "bench" / "plant";
-    if (!std::filesystem::exists(folder / "scene.json")) {
-        std::cerr << "generating the plant into " << folder.string() << " ...\n";
-        scenes::GeneratedScene plant = scenes::generatePlant({});
-        scenes::writeGenerated(plant, folder);
-    }
-    return folder / "scene.json";
-}
-
 struct Fixture {
     std::unique_ptr<gl::Context> context = gl::createHeadlessContext();
     scenes::SceneDescription description;
-    scenes::Scene scene = scenes::loadSceneFile(scenePath(), &description);
+    scenes::Scene scene = scenes::loadSceneFile(bench::plantScenePath(), &description);
     gl::SceneRenderer renderer{scene};
     gl::GpuTimer timer;
     gl::GlObject color = gl::createTexture(GL_TEXTURE_2D), depth = gl::createTexture(GL_TEXTURE_2D),
@@ -55,14 +42,7 @@ struct Fixture {
         glTextureStorage2D(depth.id(), 1, GL_DEPTH_COMPONENT32F, kSize, kSize);
         glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, color.id(), 0);
         glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
-        const glm::dvec3 up(0, 1, 0);
-        for (const glm::dvec3& eye : description.walkPath)
-            for (const glm::dvec3& forward :
-                 {glm::dvec3(0, 0, -1), glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1), glm::dvec3(-1, 0, 0)}) {
-                const glm::dvec3 right = glm::cross(forward, up), centre = eye + forward;
-                const display::ScreenQuad quad{centre - right - up, centre + right - up, centre - right + up};
-                views.push_back(display::offAxisFrustum(quad, eye, {0.05, INFINITY}));
-            }
+        views = bench::plantViews(description.walkPath);
         std::cerr << "plant: " << scene.objects.size() << " objects, " << scene.triangleCount() << " triangles; "
                   << views.size() << " views; GL_RENDERER " << context->info().renderer << "\n";
     }

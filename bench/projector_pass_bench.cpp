@@ -1,15 +1,32 @@
-// The projector correction pass (display/gl/projector_pass.h) on one 1024 x 1024 screen image
-// (headless EGL; llvmpipe here). Each iteration runs the pass once and waits for the GPU
-// (glFinish), so the time per iteration is the pass's share of a frame. Cases: the identity
-// mesh without a mask (the cheapest pass), and a 33 x 33 keystone mesh with a 1024 x 1024 16-bit
-// blend mask and a black level (a calibrated projector). Counter: GPU ms (timer queries).
+// The projector correction pass (display/gl/projector_pass.h) against the frame it corrects, in
+// one interleaved run (headless EGL). Each round renders one view of the generated plant at
+// 1024 x 1024 (bench/plant_views.h, frustum culling on, views cycling), then runs the pass on
+// that image twice: a 33 x 33 keystone mesh with a 1024 x 1024 16-bit blend mask and a black
+// level (a calibrated projector), and the identity mesh without a mask (the cheapest pass).
+// Every step is timed twice: by the wall clock from its first call until glFinish returns, and
+// by a GL_TIME_ELAPSED query around its commands (the GPU timer). Interleaving puts the pass
+// and the frame under the same load, so their ratio is comparable even on a busy machine.
+//
+// Prints per step the median and mean over the rounds, wall and GPU side by side, and the
+// pass's cost as a share of the frame by each clock (medians).
+// Usage: build/bench/cavewall_bench_projector_pass [--rounds N]   (default 30; a first, untimed
+// round warms up)
+#include "bench/plant_views.h"
 #include "display/gl/context.h"
 #include "display/gl/gpu_timer.h"
 #include "display/gl/projector_pass.h"
+#include "render/gl/scene_renderer.h"
+#include "scenes/loader.h"
 
-#include <benchmark/benchmark.h>
-
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -32,29 +49,92 @@ display::ScreenCorrection calibrated() {
     return c;
 }
 
-void projectorPass(benchmark::State& state, bool calibratedMesh) {
-    const auto context = gl::createHeadlessContext();
-    gl::GlObject source = gl::createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(source.id(), 1, GL_SRGB8_ALPHA8, kSize, kSize);
-    const std::vector<std::uint8_t> grey(static_cast<std::size_t>(kSize) * kSize * 4, 128);
-    glTextureSubImage2D(source.id(), 0, 0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, grey.data());
-    gl::ProjectorPass pass(calibratedMesh ? calibrated() : display::ScreenCorrection{}, {kSize, kSize});
-    gl::GpuTimer timer;
-    double gpuMs = 0.0;
-    for (auto _ : state) {
-        timer.begin();
-        pass.apply(source.id());
-        timer.end();
-        glFinish();
-        gpuMs += timer.waitMs();
-    }
-    state.counters["gpu_ms"] = benchmark::Counter(gpuMs, benchmark::Counter::kAvgIterations);
-    state.SetLabel(context->info().renderer);
+// One timed step's samples, milliseconds.
+struct Samples {
+    std::string name;
+    std::vector<double> wallMs, gpuMs;
+};
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-BENCHMARK_CAPTURE(projectorPass, identity, false)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(projectorPass, keystone_blend_black, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+double mean(const std::vector<double>& v) {
+    double sum = 0.0;
+    for (double x : v) sum += x;
+    return sum / static_cast<double>(v.size());
+}
+
+// Runs `step` between a GPU timer's begin and end, waits for the GPU, and records both clocks.
+void timeStep(gl::GpuTimer& timer, Samples& samples, const std::function<void()>& step, bool record) {
+    const auto start = std::chrono::steady_clock::now();
+    timer.begin();
+    step();
+    timer.end();
+    glFinish();
+    const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const double gpuMs = timer.waitMs();
+    if (!record) return;
+    samples.wallMs.push_back(wallMs);
+    samples.gpuMs.push_back(gpuMs);
+}
+
+void printTable(const std::vector<Samples>& steps, int rounds) {
+    std::printf(
+        "| step | rounds | wall median ms | wall mean ms | GPU timer median ms | GPU timer mean ms |\n"
+        "| --- | ---: | ---: | ---: | ---: | ---: |\n");
+    for (const Samples& s : steps)
+        std::printf("| %s | %d | %.2f | %.2f | %.2f | %.2f |\n", s.name.c_str(), rounds, median(s.wallMs),
+                    mean(s.wallMs), median(s.gpuMs), mean(s.gpuMs));
+    const Samples& frame = steps.front();
+    std::printf(
+        "\n| pass | share of the frame, wall (medians) | share of the frame, GPU timer (medians) |\n"
+        "| --- | ---: | ---: |\n");
+    for (std::size_t i = 1; i < steps.size(); ++i)
+        std::printf("| %s | %.1f %% | %.1f %% |\n", steps[i].name.c_str(),
+                    100.0 * median(steps[i].wallMs) / median(frame.wallMs),
+                    100.0 * median(steps[i].gpuMs) / median(frame.gpuMs));
+}
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+    int rounds = 30;
+    if (argc == 3 && !std::strcmp(argv[1], "--rounds")) rounds = std::max(1, std::atoi(argv[2]));
+    const auto context = gl::createHeadlessContext();
+    scenes::SceneDescription description;
+    const scenes::Scene scene = scenes::loadSceneFile(bench::plantScenePath(), &description);
+    gl::SceneRenderer renderer{scene};
+    const std::vector<display::OffAxisFrustum> views = bench::plantViews(description.walkPath);
+    gl::GlObject color = gl::createTexture(GL_TEXTURE_2D), depth = gl::createTexture(GL_TEXTURE_2D),
+                 framebuffer = gl::createFramebuffer();
+    glTextureStorage2D(color.id(), 1, GL_SRGB8_ALPHA8, kSize, kSize);
+    glTextureStorage2D(depth.id(), 1, GL_DEPTH_COMPONENT32F, kSize, kSize);
+    glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, color.id(), 0);
+    glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
+    gl::ProjectorPass keystone(calibrated(), {kSize, kSize}), identity(display::ScreenCorrection{}, {kSize, kSize});
+    std::fprintf(stderr, "plant: %zu triangles, %zu views, %d x %d; GL_RENDERER %s\n", scene.triangleCount(),
+                 views.size(), kSize, kSize, context->info().renderer.c_str());
+
+    render::DrawFilter filter;
+    filter.frustumCull = true;
+    const gl::ViewTarget target{framebuffer.id(), {0, 0, kSize, kSize}, glm::vec4(0.02f, 0.02f, 0.03f, 1.0f)};
+    std::vector<Samples> steps{{"plant frame (the control)", {}, {}},
+                               {"pass: 33 x 33 keystone mesh, 1024² 16-bit mask, black level", {}, {}},
+                               {"pass: identity mesh (2 x 2), no mask", {}, {}}};
+    gl::GpuTimer timer;
+    for (int round = 0; round <= rounds; ++round) {
+        const bool record = round > 0;  // round 0 warms up: shaders, first uploads
+        const display::OffAxisFrustum& view = views[static_cast<std::size_t>(round) % views.size()];
+        const auto frame = [&] { renderer.renderFrustum(view, glm::dmat4(1.0), target, filter); };
+        const auto correctCalibrated = [&] { keystone.apply(color.id()); };
+        const auto correctIdentity = [&] { identity.apply(color.id()); };
+        timeStep(timer, steps[0], frame, record);
+        timeStep(timer, steps[1], correctCalibrated, record);
+        timeStep(timer, steps[2], correctIdentity, record);
+    }
+    printTable(steps, rounds);
+    return 0;
+}
