@@ -125,7 +125,8 @@ double noiseFromResiduals(const CalibrationFit& fit, bool fitScale);
 inline constexpr double kPoorSpreadFactor = 1.0;
 
 // A line of advice when `cave` points (at least 3, not collinear) fix the calibration poorly
-// over `box`: their expected error there over kPoorSpreadFactor times the noise. Empty otherwise.
+// over `box` (the volume the display's screens enclose; the message says so): their expected
+// error there over kPoorSpreadFactor times the noise. Empty otherwise.
 std::string spreadAdvice(const std::vector<glm::dvec3>& cave, const Box& box, const std::string& source);
 
 // The rotation R that maximises sum(b_i . R a_i) for centred point sets a and b of one size

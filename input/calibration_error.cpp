@@ -80,9 +80,10 @@ std::string spreadAdvice(const std::vector<glm::dvec3>& cave, const Box& box, co
     if (factor <= kPoorSpreadFactor) return {};
     char text[400];
     std::snprintf(text, sizeof text,
-                  ": the points are poorly spread over the CAVE: the expected error over it is %.2f times the "
-                  "noise per coordinate (expected at most %.2f; the eight corners of the CAVE give 0.71). Mark points "
-                  "far apart in all three directions: floor and ceiling corners of opposite walls",
+                  ": the points are poorly spread over the volume the screens enclose: the expected error over it "
+                  "is %.2f times the noise per coordinate (expected at most %.2f; the eight corners of a cube give "
+                  "0.71 over it). Mark points far apart in all three directions: floor and ceiling corners of "
+                  "opposite walls",
                   factor, kPoorSpreadFactor);
     return source + text;
 }

@@ -90,8 +90,8 @@ TEST(CalibrateCli, PrintsTheExpectedErrorAndAdvisesOnPoorlySpreadPoints) {
     r = runCavewall(
         {"calibrate", "--pairs", four.string(), "--display", "cave4", "--out", (dir / "four-out.json").string()});
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_THAT(r.err, HasSubstr("four.json: the points are poorly spread over the CAVE: the expected error over it is "
-                                 "1.29 times the noise per coordinate"));
+    EXPECT_THAT(r.err, HasSubstr("four.json: the points are poorly spread over the volume the screens enclose: the "
+                                 "expected error over it is 1.29 times the noise per coordinate"));
     EXPECT_TRUE(fs::exists(dir / "four-out.json"));
 }
 

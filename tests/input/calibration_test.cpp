@@ -184,9 +184,9 @@ TEST(Calibration, AdvisesWhenThePointsArePoorlySpread) {
     // The four corners of the x = -1.5 wall: S = diag(18, 9, 9), whose expected error over the
     // CAVE is 1.29 sigma, against 0.71 sigma for the eight corners.
     const std::vector<glm::dvec3> all = caveCorners(), wall(all.begin(), all.begin() + 4);
-    EXPECT_THAT(
-        spreadAdvice(wall, kCave, "p.json"),
-        HasSubstr("p.json: the points are poorly spread over the CAVE: the expected error over it is 1.29 times"));
+    EXPECT_THAT(spreadAdvice(wall, kCave, "p.json"),
+                HasSubstr("p.json: the points are poorly spread over the volume the screens enclose: the expected "
+                          "error over it is 1.29 times"));
 }
 
 TEST(Calibration, FitsAUniformScaleWhenAsked) {
