@@ -33,13 +33,13 @@ display::ScreenCorrection calibrated() {
 }
 
 void projectorPass(benchmark::State& state, bool calibratedMesh) {
-    const auto context = gl::createHeadlessContext();
-    gl::GlObject source = gl::createTexture(GL_TEXTURE_2D);
+    const auto context = display::gl::createHeadlessContext();
+    display::gl::GlObject source = display::gl::createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(source.id(), 1, GL_SRGB8_ALPHA8, kSize, kSize);
     const std::vector<std::uint8_t> grey(static_cast<std::size_t>(kSize) * kSize * 4, 128);
     glTextureSubImage2D(source.id(), 0, 0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, grey.data());
-    gl::ProjectorPass pass(calibratedMesh ? calibrated() : display::ScreenCorrection{}, {kSize, kSize});
-    gl::GpuTimer timer;
+    display::gl::ProjectorPass pass(calibratedMesh ? calibrated() : display::ScreenCorrection{}, {kSize, kSize});
+    display::gl::GpuTimer timer;
     double gpuMs = 0.0;
     for (auto _ : state) {
         timer.begin();
