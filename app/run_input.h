@@ -7,7 +7,7 @@
 // 1-4 the modes; a session in windows until stopped flies by default.
 //
 // The tracker spec "desktop" is the desktop fallback: keyboard and mouse events of the windows
-// (gl::Context::takeInputEvents) drive an input::DesktopNavigator (mouse look, WASD; the head
+// (display::gl::Context::takeInputEvents) drive an input::DesktopNavigator (mouse look, WASD; the head
 // stays at the display's default head and the world turns). It needs windows. Its speed is
 // input::viewSpeed of the model's bounding-box diagonal (walking pace when it starts standing on
 // a floor inside), and without a walk path it starts

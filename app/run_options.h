@@ -85,7 +85,8 @@ struct RunOptions {
     Transition transition = Transition::Blend;
     bool walls = true;                                 // false: --no-walls, full (culled) geometry
     bool wallTextures = true;                          // false: the control, the walls' cells without textures
-                                                       // (gl::WalkthroughOptions::wallTextures; the demo's)
+                                                       // (walkthrough::gl::WalkthroughOptions::wallTextures;
+                                                       // the demo's)
     walls::PlanOptions plan;                           // alpha etc. for planning and baking
     // --walls depth|flat (walls/depth_wall.h); depth: the bench's recommended walls mode on the
     // plant (docs/benchmarking.md, "The recommended walls mode")
@@ -99,7 +100,7 @@ struct RunOptions {
     bool keepSavedImages = false;                 // also return the saved frames' images
                                                   // (RunSummary::savedFrames; the demo compares them)
     std::optional<std::filesystem::path> record;  // write the input stream for replay
-    bool synchronousPaging = false;               // see gl::WalkthroughOptions
+    bool synchronousPaging = false;               // see walkthrough::gl::WalkthroughOptions
     double textureBudgetMB = 256.0;
     scenes::TextureLimits sceneTextures;  // --texture-max, --texture-budget: the scene's own images
     int bakeResolution = 1024;            // --max-res: BakeSettings::maxResolution (bench, demo: 512)

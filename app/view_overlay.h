@@ -2,7 +2,7 @@
 // What a windowed session shows besides the scene: one status line over each window (the
 // navigation mode, the movement speed, the last frame's time, what the walls draw and how far
 // baking has come, the tracker's state and "F1: help"), or the help page while it is toggled
-// on, and each window's title. Plain text; gl::Context draws it
+// on, and each window's title. Plain text; display::gl::Context draws it
 // (display/overlay_text.h) and never into saved or compared images.
 
 #include "display/overlay_text.h"

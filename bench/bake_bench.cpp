@@ -51,8 +51,8 @@ const std::filesystem::path& plantScene() {
     return path;
 }
 
-gl::Context& context() {
-    static const std::unique_ptr<gl::Context> c = gl::createHeadlessContext();
+display::gl::Context& context() {
+    static const std::unique_ptr<display::gl::Context> c = display::gl::createHeadlessContext();
     c->makeCurrent();
     return *c;
 }
@@ -66,7 +66,7 @@ void BM_BakeTexture(benchmark::State& state) {
     const scenes::Scene scene = scenes::loadSceneFile(plantScene(), &d);
     const walls::Plan plan = walls::planZones(d);
     const walls::VisibilityTable table = walls::computeVisibility(d);
-    gl::WallTextureRenderer renderer(scene, 0.35f);
+    walls::gl::WallTextureRenderer renderer(scene, 0.35f);
     const int cap = static_cast<int>(state.range(0));
     double renderMs = 0, fileMs = 0, texels = 0;
     std::size_t i = 0;
@@ -115,11 +115,12 @@ void BM_BakeLodAgainstFullDetail(benchmark::State& state) {
     const walls::WallSetup setup =
         walls::prepareWalls(scene, d, walls::planOptionsFor(options, walls::WallKind::Flat, 512));
     const Clock::time_point built = Clock::now();
-    gl::WallTextureRenderer full(scene, 0.35f, 0.0);
+    walls::gl::WallTextureRenderer full(scene, 0.35f, 0.0);
     const Clock::time_point fullMade = Clock::now();
     const char* tolerance = std::getenv("CAVEWALL_BENCH_LOD_TEXELS");
-    const double lodTexels = tolerance && *tolerance ? std::strtod(tolerance, nullptr) : gl::BakeSettings{}.lodTexels;
-    gl::WallTextureRenderer lod(scene, 0.35f, lodTexels);
+    const double lodTexels =
+        tolerance && *tolerance ? std::strtod(tolerance, nullptr) : walls::gl::BakeSettings{}.lodTexels;
+    walls::gl::WallTextureRenderer lod(scene, 0.35f, lodTexels);
     const double lodBuildS = std::chrono::duration<double>(Clock::now() - fullMade).count() -
                              std::chrono::duration<double>(fullMade - built).count();
     const std::size_t count = std::min(envSize("CAVEWALL_BENCH_TEXTURES", 48), setup.plan.textures.size());
@@ -183,18 +184,18 @@ BENCHMARK(BM_BakeLodAgainstFullDetail)->Unit(benchmark::kSecond)->Iterations(1);
 
 // The whole plan into an empty cache, once; then the same bake again (cache hit, no work).
 void BM_BakeWholePlant(benchmark::State& state) {
-    gl::BakeRequest request;
+    walls::gl::BakeRequest request;
     request.scene = plantScene();
     request.cache = benchFolder() / "cache";
     request.settings.maxResolution = static_cast<int>(envSize("CAVEWALL_BENCH_MAX_RES", 256));
     request.settings.jobs = 2;
     request.context = &context();
-    gl::BakeResult result, again;
+    walls::gl::BakeResult result, again;
     for (auto _ : state) {
         std::filesystem::remove_all(request.cache);
-        result = gl::bakeScene(request);
+        result = walls::gl::bakeScene(request);
         const Clock::time_point a = Clock::now();
-        again = gl::bakeScene(request);
+        again = walls::gl::bakeScene(request);
         state.counters["rebake_unchanged_s"] = std::chrono::duration<double>(Clock::now() - a).count();
     }
     state.counters["textures"] = double(result.baked);

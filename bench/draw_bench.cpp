@@ -28,13 +28,14 @@ using namespace cavewall;
 constexpr int kSize = 1024;
 
 struct Fixture {
-    std::unique_ptr<gl::Context> context = gl::createHeadlessContext();
+    std::unique_ptr<display::gl::Context> context = display::gl::createHeadlessContext();
     scenes::SceneDescription description;
     scenes::Scene scene = scenes::loadSceneFile(bench::plantScenePath(), &description);
-    gl::SceneRenderer renderer{scene};
-    gl::GpuTimer timer;
-    gl::GlObject color = gl::createTexture(GL_TEXTURE_2D), depth = gl::createTexture(GL_TEXTURE_2D),
-                 framebuffer = gl::createFramebuffer();
+    render::gl::SceneRenderer renderer{scene};
+    display::gl::GpuTimer timer;
+    display::gl::GlObject color = display::gl::createTexture(GL_TEXTURE_2D),
+                          depth = display::gl::createTexture(GL_TEXTURE_2D),
+                          framebuffer = display::gl::createFramebuffer();
     std::vector<display::OffAxisFrustum> views;
 
     Fixture() {
@@ -51,12 +52,12 @@ struct Fixture {
 void plantFrame(benchmark::State& state, Fixture& f, bool culling) {
     render::DrawFilter filter;
     filter.frustumCull = culling;
-    const gl::ViewTarget target{f.framebuffer.id(), {0, 0, kSize, kSize}, glm::vec4(0.02f, 0.02f, 0.03f, 1.0f)};
+    const render::gl::ViewTarget target{f.framebuffer.id(), {0, 0, kSize, kSize}, glm::vec4(0.02f, 0.02f, 0.03f, 1.0f)};
     double objects = 0, triangles = 0, drawCalls = 0, cullMs = 0, cpuMs = 0, gpuMs = 0;
     std::size_t view = 0;
     for (auto _ : state) {
         f.timer.begin();
-        const gl::ViewStats s =
+        const display::ViewStats s =
             f.renderer.renderFrustum(f.views[view++ % f.views.size()], glm::dmat4(1.0), target, filter);
         f.timer.end();
         glFinish();

@@ -68,7 +68,7 @@ double mean(const std::vector<double>& v) {
 }
 
 // Runs `step` between a GPU timer's begin and end, waits for the GPU, and records both clocks.
-void timeStep(gl::GpuTimer& timer, Samples& samples, const std::function<void()>& step, bool record) {
+void timeStep(display::gl::GpuTimer& timer, Samples& samples, const std::function<void()>& step, bool record) {
     const auto start = std::chrono::steady_clock::now();
     timer.begin();
     step();
@@ -103,28 +103,28 @@ void printTable(const std::vector<Samples>& steps, int rounds) {
 int main(int argc, char** argv) {
     int rounds = 30;
     if (argc == 3 && !std::strcmp(argv[1], "--rounds")) rounds = std::max(1, std::atoi(argv[2]));
-    const auto context = gl::createHeadlessContext();
+    const auto context = display::gl::createHeadlessContext();
     scenes::SceneDescription description;
     const scenes::Scene scene = scenes::loadSceneFile(bench::plantScenePath(), &description);
-    gl::SceneRenderer renderer{scene};
+    render::gl::SceneRenderer renderer{scene};
     const std::vector<display::OffAxisFrustum> views = bench::plantViews(description.walkPath);
-    gl::GlObject color = gl::createTexture(GL_TEXTURE_2D), depth = gl::createTexture(GL_TEXTURE_2D),
-                 framebuffer = gl::createFramebuffer();
+    display::gl::GlObject color = display::gl::createTexture(GL_TEXTURE_2D), depth = display::gl::createTexture(GL_TEXTURE_2D),
+                 framebuffer = display::gl::createFramebuffer();
     glTextureStorage2D(color.id(), 1, GL_SRGB8_ALPHA8, kSize, kSize);
     glTextureStorage2D(depth.id(), 1, GL_DEPTH_COMPONENT32F, kSize, kSize);
     glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, color.id(), 0);
     glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
-    gl::ProjectorPass keystone(calibrated(), {kSize, kSize}), identity(display::ScreenCorrection{}, {kSize, kSize});
+    display::gl::ProjectorPass keystone(calibrated(), {kSize, kSize}), identity(display::ScreenCorrection{}, {kSize, kSize});
     std::fprintf(stderr, "plant: %zu triangles, %zu views, %d x %d; GL_RENDERER %s\n", scene.triangleCount(),
                  views.size(), kSize, kSize, context->info().renderer.c_str());
 
     render::DrawFilter filter;
     filter.frustumCull = true;
-    const gl::ViewTarget target{framebuffer.id(), {0, 0, kSize, kSize}, glm::vec4(0.02f, 0.02f, 0.03f, 1.0f)};
+    const render::gl::ViewTarget target{framebuffer.id(), {0, 0, kSize, kSize}, glm::vec4(0.02f, 0.02f, 0.03f, 1.0f)};
     std::vector<Samples> steps{{"plant frame (the control)", {}, {}},
                                {"pass: 33 x 33 keystone mesh, 1024² 16-bit mask, black level", {}, {}},
                                {"pass: identity mesh (2 x 2), no mask", {}, {}}};
-    gl::GpuTimer timer;
+    display::gl::GpuTimer timer;
     for (int round = 0; round <= rounds; ++round) {
         const bool record = round > 0;  // round 0 warms up: shaders, first uploads
         const display::OffAxisFrustum& view = views[static_cast<std::size_t>(round) % views.size()];

@@ -1,12 +1,12 @@
 // The wall pass's fill cost at a CAVE wall's 1024 x 1024 pixels (headless EGL; llvmpipe here):
-// one full-screen wall layer drawn through gl::WallPass over a cleared view, per texture kind
+// one full-screen wall layer drawn through walls::gl::WallPass over a cleared view, per texture kind
 // and sampler, against the clear alone. Each iteration clears colour and depth, draws `layers`
 // full-screen quads (each one WallDraw on a 4 m x 4 m quad 2 m in front of the eye, filling
 // the 2 m x 2 m screen 1 m away) and waits for the GPU (glFinish), so the time per iteration
 // is the frame's. Counter ms_per_layer: (iteration ms - clear-only ms) / layers, with the
 // clear-only time measured in the same run.
 //
-// Depth walls (gl::DepthWallPass): the same layer drawn by reprojecting a 512 x 512 colour +
+// Depth walls (walls::gl::DepthWallPass): the same layer drawn by reprojecting a 512 x 512 colour +
 // depth texture (a back plane 4 m behind the wall with 8 x 8 blocks 1-3 m behind it) baked from
 // a sampling point 0.37 m from the eye, at the pass's default 64 steps at most and capped at
 // 16; cases named depth_512/*. Their ms_per_layer beside the flat cases' is the cost of
@@ -92,9 +92,9 @@ void main() { fragColor = texture(uTexture, vUv); }
 )";
 
 // mipChain(512) in GL_RGBA8 (no sRGB decode when sampled).
-gl::GlObject unormTexture() {
+display::gl::GlObject unormTexture() {
     const std::vector<scenes::Image> levels = mipChain(512);
-    gl::GlObject t = gl::createTexture(GL_TEXTURE_2D);
+    display::gl::GlObject t = display::gl::createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(t.id(), static_cast<GLsizei>(levels.size()), GL_RGBA8, 512, 512);
     for (std::size_t l = 0; l < levels.size(); ++l)
         glTextureSubImage2D(t.id(), static_cast<GLint>(l), 0, 0, levels[l].width, levels[l].height, GL_RGBA,
@@ -107,21 +107,26 @@ struct FillCase {
 };
 
 struct Fixture {
-    std::unique_ptr<gl::Context> context = gl::createHeadlessContext();
-    gl::GlObject color = gl::createTexture(GL_TEXTURE_2D), depth = gl::createTexture(GL_TEXTURE_2D),
-                 framebuffer = gl::createFramebuffer();
-    gl::GlObject unormColor = gl::createTexture(GL_TEXTURE_2D), unormFramebuffer = gl::createFramebuffer();
-    gl::GlObject fillProgram = gl::buildProgram("fill", kFillVertex, kFillFragment);
-    gl::GlObject fillVertexArray = gl::createVertexArray();
-    gl::WallPass pass;
-    gl::GlObject bare = gl::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}});
-    gl::GlObject baked = gl::uploadWallTexture(mipChain(512));
-    gl::GlObject bakedUnorm = unormTexture();
-    gl::GlObject bakedBc1 = gl::uploadWallTexture(walls::encodeLevels(mipChain(512), walls::TextureFormat::Bc1));
-    gl::GlObject bakedBc3 = gl::uploadWallTexture(walls::encodeLevels(mipChain(512), walls::TextureFormat::Bc3));
-    gl::GlObject nearestMip = gl::createSampler(), linearMip = gl::createSampler(), bilinear = gl::createSampler();
-    gl::DepthTexture depthBlocks = gl::uploadDepthTexture(blockDepth(512));
-    gl::DepthWallPass depthPass, depthPass16{walls::ReprojectSettings{16, 6}};
+    std::unique_ptr<display::gl::Context> context = display::gl::createHeadlessContext();
+    display::gl::GlObject color = display::gl::createTexture(GL_TEXTURE_2D),
+                          depth = display::gl::createTexture(GL_TEXTURE_2D),
+                          framebuffer = display::gl::createFramebuffer();
+    display::gl::GlObject unormColor = display::gl::createTexture(GL_TEXTURE_2D),
+                          unormFramebuffer = display::gl::createFramebuffer();
+    display::gl::GlObject fillProgram = display::gl::buildProgram("fill", kFillVertex, kFillFragment);
+    display::gl::GlObject fillVertexArray = display::gl::createVertexArray();
+    walls::gl::WallPass pass;
+    display::gl::GlObject bare = walls::gl::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}});
+    display::gl::GlObject baked = walls::gl::uploadWallTexture(mipChain(512));
+    display::gl::GlObject bakedUnorm = unormTexture();
+    display::gl::GlObject bakedBc1 =
+        walls::gl::uploadWallTexture(walls::encodeLevels(mipChain(512), walls::TextureFormat::Bc1));
+    display::gl::GlObject bakedBc3 =
+        walls::gl::uploadWallTexture(walls::encodeLevels(mipChain(512), walls::TextureFormat::Bc3));
+    display::gl::GlObject nearestMip = display::gl::createSampler(), linearMip = display::gl::createSampler(),
+                          bilinear = display::gl::createSampler();
+    walls::gl::DepthTexture depthBlocks = walls::gl::uploadDepthTexture(blockDepth(512));
+    walls::gl::DepthWallPass depthPass, depthPass16{walls::ReprojectSettings{16, 6}};
     display::OffAxisFrustum frustum;
     display::ScreenQuad wall;
 
@@ -166,9 +171,9 @@ double frameMs(Fixture& f, int layers, GLuint texture, GLuint sampler, int textu
     const auto start = std::chrono::steady_clock::now();
     f.clear();
     if (depthSteps > 0) {
-        std::vector<gl::DepthWallDraw> draws;
+        std::vector<walls::gl::DepthWallDraw> draws;
         for (int i = 0; i < layers; ++i) {
-            gl::DepthWallDraw d{f.wall, {}, texturesPerLayer};
+            walls::gl::DepthWallDraw d{f.wall, {}, texturesPerLayer};
             for (int t = 0; t < texturesPerLayer; ++t)
                 d.layers[t] = {texture,
                                f.depthBlocks.depth.id(),
@@ -178,18 +183,18 @@ double frameMs(Fixture& f, int layers, GLuint texture, GLuint sampler, int textu
                                f.depthBlocks.skip.id()};
             draws.push_back(d);
         }
-        gl::FrameStats stats;
+        display::FrameStats stats;
         (depthSteps == 16 ? f.depthPass16 : f.depthPass).draw(draws, f.frustum, glm::dmat4(1.0), sampler, stats);
         glFinish();
         return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     }
-    std::vector<gl::WallDraw> draws;
+    std::vector<walls::gl::WallDraw> draws;
     for (int i = 0; i < layers; ++i) {
-        gl::WallDraw d{f.wall, {}, {}, texturesPerLayer};
+        walls::gl::WallDraw d{f.wall, {}, {}, texturesPerLayer};
         for (int t = 0; t < texturesPerLayer; ++t) d.textures[t] = texture, d.weights[t] = 1.0f / texturesPerLayer;
         draws.push_back(d);
     }
-    gl::FrameStats stats;
+    display::FrameStats stats;
     f.pass.draw(draws, f.frustum, glm::dmat4(1.0), sampler, stats);
     glFinish();
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -267,7 +272,7 @@ int main(int argc, char** argv) {
         const char* name;
         GLuint texture, sampler;
         int textures;
-        int depthSteps = 0;  // > 0: gl::DepthWallPass with this many steps at most
+        int depthSteps = 0;  // > 0: walls::gl::DepthWallPass with this many steps at most
     };
     const Case cases[] = {{"bare_1x1", f.bare.id(), 0, 1},
                           {"baked_512/linear_mipmap_nearest", f.baked.id(), f.nearestMip.id(), 1},

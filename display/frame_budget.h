@@ -3,7 +3,7 @@
 // that frames take about a target time whatever the load and however fast the machine runs at
 // the moment. Funkhouser & Séquin's feedback for time-critical rendering, applied to
 // Maciel & Shirley's (1995) frame budget (which the renderer meets by raising its
-// level-of-detail tolerance, gl::WalkthroughOptions): the budget is in time, the renderer's
+// level-of-detail tolerance, walkthrough::gl::WalkthroughOptions): the budget is in time, the renderer's
 // knob in triangles.
 //
 // Model: a frame of g triangles takes about a + b g milliseconds, a and b unknown and

@@ -12,7 +12,7 @@
 //                   * [rotateX(pitch) about the head].
 // (origin, yaw) is an input::Navigator's upright body, which walk, grab and guided move.
 //
-// Controls (events as gl::Context::takeInputEvents gives them):
+// Controls (events as display::gl::Context::takeInputEvents gives them):
 //   mouse motion     look: yaw -= dx * degreesPerPixel, pitch -= dy * degreesPerPixel, pitch
 //                    within ±maxPitchDeg (the window sends motion while the pointer is captured:
 //                    a click captures it, so dragging with the left button looks too). In grab

@@ -7,7 +7,7 @@
 //               pointer and the second one quits.
 //   Ctrl+Q      quit
 // PointerCapture events say whether a window holds the pointer; the window sends the Escape key
-// before the release it causes (gl::Context::takeInputEvents).
+// before the release it causes (display::gl::Context::takeInputEvents).
 
 #include "input/sample.h"
 

@@ -71,7 +71,7 @@ double megabytes(std::uint64_t bytes) { return double(bytes) / (1024.0 * 1024.0)
 class ProgressPrinter {
 public:
     explicit ProgressPrinter(bool terminal) : _terminal(terminal) {}
-    void operator()(const gl::BakeProgress& p);
+    void operator()(const walls::gl::BakeProgress& p);
     void end() {
         if (_terminal && _drawn) std::cerr << "\n";
     }
@@ -82,7 +82,7 @@ private:
     double _lastLine = -1.0;
 };
 
-void ProgressPrinter::operator()(const gl::BakeProgress& p) {
+void ProgressPrinter::operator()(const walls::gl::BakeProgress& p) {
     const bool last = p.done == p.total;
     const double eta = p.baked > 0 ? p.seconds / std::max(1, p.done) * (p.total - p.done) : 0.0;
     char line[200];
@@ -110,7 +110,7 @@ int runBake(const std::vector<std::string>& words) {
     const Args args(words, {});
     args.expectFlags({"alpha", "jobs", "draw-threads", "cache", "max-res", "min-zone", "blend", "ppd", "tile", "walls",
                       "lod-texels", "limit", "texture-format"});
-    gl::BakeRequest request;
+    walls::gl::BakeRequest request;
     request.plan.alphaDeg = args.number("alpha", request.plan.alphaDeg, 1e-6, 90.0);
     request.plan.minZoneSize = args.number("min-zone", request.plan.minZoneSize, 0.01, 1000.0);
     request.plan.blendWidth = args.number("blend", request.plan.blendWidth, 0.0, 100.0);
@@ -126,15 +126,15 @@ int runBake(const std::vector<std::string>& words) {
     request.settings.textureFormat =
         args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     request.limit = static_cast<int>(args.integer("limit", 0, 0, 1000000000));
-    gl::validateBakeSettings(request.settings);
+    walls::gl::validateBakeSettings(request.settings);
     request.scene = args.positional(0, "SCENE");
     if (args.positional().size() > 1)
         throw Error("bake: expected one SCENE, got " + std::to_string(args.positional().size()) + " words");
     if (auto cache = args.path("cache")) request.cache = *cache;
 
     ProgressPrinter printer(::isatty(STDERR_FILENO) == 1);
-    request.progress = [&printer](const gl::BakeProgress& p) { printer(p); };
-    const gl::BakeResult result = gl::bakeScene(request);
+    request.progress = [&printer](const walls::gl::BakeProgress& p) { printer(p); };
+    const walls::gl::BakeResult result = walls::gl::bakeScene(request);
     printer.end();
     for (const std::string& w : result.warnings) std::cerr << "cavewall: warning: " << w << "\n";
     const int total = static_cast<int>(result.manifest.textures.size());
@@ -142,7 +142,7 @@ int runBake(const std::vector<std::string>& words) {
         "bake: %d textures: %d baked, %d reused (%d from earlier bakes) in %s; wrote %.1f MB, folder holds %.1f MB\n",
         total, result.baked, result.reused, result.linked, formatSeconds(result.seconds).c_str(),
         megabytes(result.bytesWritten), megabytes(result.totalBytes));
-    const gl::BakeTimes& t = result.times;
+    const walls::gl::BakeTimes& t = result.times;
     if (result.baked > 0)
         std::printf(
             "bake: time: prepare %.2f, draw %.2f, read back %.2f, queue wait %.2f, MIP %.2f, encode+write %.2f, "

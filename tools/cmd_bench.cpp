@@ -224,14 +224,14 @@ std::vector<std::string> sceneList(const std::string& text) {
 
 int runSceneBench(const Args& args) {
     const bool quick = args.has("quick");
-    gl::BenchOptions o;
+    bench::gl::BenchOptions o;
     o.scene = args.positional(0, "SCENE");
     const config::DisplayConfig display = config::loadDisplayConfig(args.getOr("display", "cave4"));
     // The display's own resolution unless asked otherwise: smaller images flatter every mode.
     o.display = display;
     if (quick || args.has("resolution")) {
         const int pixels = static_cast<int>(args.integer("resolution", 128, 16, 4096));
-        o.display = gl::withResolution(display, pixels);
+        o.display = bench::gl::withResolution(display, pixels);
     }
     if (auto stereo = args.get("stereo")) {
         if (*stereo == "mono")
@@ -276,7 +276,7 @@ int runSceneBench(const Args& args) {
         for (const std::string& scene : sceneList(*list)) o.compareScenes.push_back({scene, compareTag(scene)});
     if (args.has("on-demand")) o.onDemandCache = out / "on-demand-cache";
     bench::requireGnuplot();  // bench.png needs it: say so before the run, not after it
-    const bench::BenchReport report = gl::runBenchmark(o);
+    const bench::BenchReport report = bench::gl::runBenchmark(o);
     bench::writeReport(out, report);
     std::cout << "\n"
               << bench::markdownReport(report) << "\n"
@@ -287,12 +287,12 @@ int runSceneBench(const Args& args) {
 }
 
 int runScaleBench(const Args& args) {
-    gl::ScaleOptions o;
+    bench::gl::ScaleOptions o;
     o.sizes = bench::parseScaleList(*args.get("scale"));
     o.data = args.path("data").value_or("bench-scale-data");
     o.display = config::loadDisplayConfig(args.getOr("display", "cave4"));
     if (args.has("resolution"))
-        o.display = gl::withResolution(o.display, static_cast<int>(args.integer("resolution", 1024, 16, 4096)));
+        o.display = bench::gl::withResolution(o.display, static_cast<int>(args.integer("resolution", 1024, 16, 4096)));
     o.pathMetres = args.number("scale-metres", o.pathMetres, 1.0, 1e5);
     o.frames = args.integer("frames", o.frames, 1, 100000);
     o.bakeResolution = static_cast<int>(args.integer("bake-resolution", o.bakeResolution, 16, 16384));
@@ -316,7 +316,7 @@ int runScaleBench(const Args& args) {
     const std::filesystem::path out = args.path("out").value_or("bench-scale-out");
     o.afterSize = [&](const bench::ScaleReport& soFar) { bench::writeScaleReport(out, soFar); };
     bench::requireGnuplot();  // the plots need it: say so before the run, not after it
-    const bench::ScaleReport report = gl::runScaleBench(o);
+    const bench::ScaleReport report = bench::gl::runScaleBench(o);
     bench::writeScaleReport(out, report);
     std::cout << "\n"
               << bench::scaleMarkdown(report) << "\n"

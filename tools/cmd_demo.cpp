@@ -221,7 +221,7 @@ int runDemo(const std::vector<std::string>& words) {
         r.walls = walls;
         r.wallTextures = textures;
         r.lodPixels = lodPixels;
-        return gl::runSession(r);
+        return app::gl::runSession(r);
     };
     DemoRuns d{loadStart,
                {},

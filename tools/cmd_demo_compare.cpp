@@ -82,8 +82,8 @@ DemoComparison compareRuns(const display::Display& display, const app::RunSummar
         maps.push_back(
             {s.screen, s.image, s.stem, metrics::flipErrorImage(metrics::flip(s.pixels, r.images[i].pixels, options))});
     }
-    const scenes::Image a = gl::foldoutOf(display, t.images), b = gl::foldoutOf(display, r.images),
-                        c = gl::foldoutOf(display, maps);
+    const scenes::Image a = display::gl::foldoutOf(display, t.images), b = display::gl::foldoutOf(display, r.images),
+                        c = display::gl::foldoutOf(display, maps);
     std::filesystem::create_directories(folder);
     out.foldout = folder / "worst_frame.png";
     scenes::writeImage(out.foldout, sideBySide({&a, &b, &c}));

@@ -42,12 +42,12 @@ std::string fixed(double v, int decimals) {
     return text;
 }
 
-std::string csvText(const gl::DrawBenchResult& r) {
+std::string csvText(const bench::gl::DrawBenchResult& r) {
     std::string csv =
         "culling,lighting,triangles,median_ms,p90_ms,cpu_median_ms,mtriangles_per_s,mpixels_per_s,vertex_bytes_per_"
         "triangle,"
         "index_bytes_per_triangle\n";
-    for (const gl::DrawBenchRow& row : r.rows)
+    for (const bench::gl::DrawBenchRow& row : r.rows)
         csv += std::string(row.cullBackFaces ? "on" : "off") + "," + (row.perPixelOnly ? "per-pixel" : "default") +
                "," + std::to_string(row.trianglesSubmitted) + "," + fixed(row.timing.medianMs, 3) + "," +
                fixed(row.timing.p90Ms, 3) + "," + fixed(row.timing.cpuMedianMs, 3) + "," +
@@ -56,7 +56,7 @@ std::string csvText(const gl::DrawBenchResult& r) {
     return csv;
 }
 
-void print(const gl::DrawBenchResult& r, const gl::DrawBenchOptions& o) {
+void print(const bench::gl::DrawBenchResult& r, const bench::gl::DrawBenchOptions& o) {
     const glm::dvec3 e = r.view.eye;
     std::cout << "draw-bench: " << r.triangles << " triangles, " << o.resolution << " x " << o.resolution << ", "
               << fixed(o.fovDeg, 3) << " deg vertical field of view, eye (" << fixed(e.x, 3) << ", " << fixed(e.y, 3)
@@ -68,7 +68,7 @@ void print(const gl::DrawBenchResult& r, const gl::DrawBenchOptions& o) {
               << "| back faces | lighting | triangles submitted | median ms | p90 ms | CPU ms (median) | Mtriangles/s "
                  "| Mpixels/s |\n"
               << "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
-    for (const gl::DrawBenchRow& row : r.rows)
+    for (const bench::gl::DrawBenchRow& row : r.rows)
         std::cout << "| " << (row.cullBackFaces ? "culled" : "drawn (culling off)") << " | "
                   << (row.perPixelOnly ? "per pixel only" : "default") << " | " << row.trianglesSubmitted << " | "
                   << fixed(row.timing.medianMs, 2) << " | " << fixed(row.timing.p90Ms, 2) << " | "
@@ -84,7 +84,7 @@ int runDrawBench(const std::vector<std::string>& words) {
     const std::string source = args.positional(0, "the scene (glTF/GLB, scene.json or its folder)");
     if (args.positional().size() > 1)
         throw Error("draw-bench: unexpected argument '" + args.positional()[1] + "' (expected one scene)");
-    gl::DrawBenchOptions options;
+    bench::gl::DrawBenchOptions options;
     options.frames = static_cast<int>(args.integer("frames", options.frames, 1, 100000));
     options.warmup = static_cast<int>(args.integer("warmup", options.warmup, 0, 100000));
     options.resolution = static_cast<int>(args.integer("resolution", options.resolution, 16, 8192));
@@ -94,7 +94,7 @@ int runDrawBench(const std::vector<std::string>& words) {
     const scenes::Scene scene = scenes::loadSceneFile(source);
     for (const std::string& warning : scene.warnings) std::cerr << "warning: " << warning << "\n";
     if (scene.objects.empty()) throw Error(source + ": no objects to draw (expected a scene with geometry)");
-    const gl::DrawBenchResult result = gl::runDrawBench(scene, options);
+    const bench::gl::DrawBenchResult result = bench::gl::runDrawBench(scene, options);
     print(result, options);
     if (auto csv = args.get("csv")) scenes::writeBytesAtomically(*csv, csvText(result));
     return 0;

@@ -60,11 +60,12 @@ config::StereoMode parseStereo(const std::string& text) {
     throw Error("--stereo: expected one of " + names + ", got '" + text + "'");
 }
 
-std::unique_ptr<gl::Context> openContext(const display::Display& disp, bool window) {
-    if (!window) return gl::createHeadlessContext();
-    if (const std::string reason = gl::windowsUnavailableReason(); !reason.empty())
+std::unique_ptr<display::gl::Context> openContext(const display::Display& disp, bool window) {
+    if (!window) return display::gl::createHeadlessContext();
+    if (const std::string reason = display::gl::windowsUnavailableReason(); !reason.empty())
         throw Error("--window: cannot open windows: " + reason + "; leave out --window to render headless");
-    return gl::createWindowedContext(gl::windowRequests(disp), disp.config().stereo == config::StereoMode::QuadBuffer);
+    return display::gl::createWindowedContext(display::gl::windowRequests(disp),
+                                              disp.config().stereo == config::StereoMode::QuadBuffer);
 }
 
 }  // namespace
@@ -88,11 +89,12 @@ int runRender(const std::vector<std::string>& words) {
     if (args.has("view-all")) worldFromCave = render::viewAll(disp, head, scene.bounds()).worldFromCave;
 
     const auto context = openContext(disp, args.has("window"));
-    gl::Snapshotter snapshotter(disp, scene, *context);
-    const gl::Snapshot frame = snapshotter.render(head, worldFromCave);
+    render::gl::Snapshotter snapshotter(disp, scene, *context);
+    const render::gl::Snapshot frame = snapshotter.render(head, worldFromCave);
     std::vector<scenes::ScreenImage> images = frame.images;  // and then the warped ones, if any
     images.insert(images.end(), frame.warped.begin(), frame.warped.end());
-    for (const auto& file : gl::writeFrame(out, images, frame.foldout)) std::cout << "wrote " << file.string() << "\n";
+    for (const auto& file : display::gl::writeFrame(out, images, frame.foldout))
+        std::cout << "wrote " << file.string() << "\n";
     std::cout << "GL_RENDERER: " << context->info().renderer << " (" << context->info().provider << ")\n"
               << frame.stats.objectsDrawn << " objects, " << frame.stats.triangles << " triangles, "
               << frame.stats.drawCalls << " draw calls in " << frame.stats.views << " views; CPU " << frame.stats.cpuMs

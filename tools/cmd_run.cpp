@@ -137,7 +137,7 @@ int runRun(const std::vector<std::string>& words) {
     defaults.window = app::WindowMode::Headless;
     const app::RunOptions o = parseSessionOptions(args, defaults);
     app::installInterruptHandler();
-    return reportSession("run", o, gl::runSession(o));
+    return reportSession("run", o, app::gl::runSession(o));
 }
 
 }  // namespace cavewall::tools

@@ -53,7 +53,7 @@ int runView(const std::vector<std::string>& words) {
     defaults.window = app::WindowMode::Window;
     const app::RunOptions o = parseSessionOptions(args, defaults);
     app::installInterruptHandler();
-    return reportSession("view", o, gl::runSession(o));
+    return reportSession("view", o, app::gl::runSession(o));
 }
 
 }  // namespace cavewall::tools

@@ -31,7 +31,7 @@ struct HandCursorPose {
     double rayLength = 2.0;                      // metres
 };
 
-// Everything about a walkthrough that is not GL (gl::WalkthroughOptions adds the renderer's).
+// Everything about a walkthrough that is not GL (walkthrough::gl::WalkthroughOptions adds the renderer's).
 struct WalkthroughSettings {
     double textureBudgetMB = 256.0;  // GPU budget of resident wall textures, MB, > 0
     double uploadMBPerFrame = 8.0;   // texture bytes uploaded per frame at most, MB
@@ -71,13 +71,13 @@ struct FrameInput {
     std::optional<HandCursorPose> hand;  // drawn when given
     bool readImages = false;             // read every rendered image back into FrameResult
     // Read every view's depth back into FrameResult::depths, after the frame is timed (walls
-    // redrawn depth-only: the depth a viewer sees, gl::Walkthrough). Not sent to cluster ranks.
+    // redrawn depth-only: the depth a viewer sees, walkthrough::gl::Walkthrough). Not sent to cluster ranks.
     bool readDepth = false;
     // This frame's triangle budget (with levels of detail), > 0 overrides
     // WalkthroughSettings::triangleBudget: a frame-time controller (display/frame_budget.h)
     // sets it frame by frame, the same on every cluster rank.
     std::size_t triangleBudget = 0;
-    // With clusters (gl::ClusterOptions): this frame's budget of predicted milliseconds, > 0
+    // With clusters (walkthrough::gl::ClusterOptions): this frame's budget of predicted milliseconds, > 0
     // overrides ClusterOptions::budgetMs (the frame-time controller sets it).
     double clusterBudgetMs = 0.0;
 };
@@ -126,7 +126,7 @@ struct FrameResult {
     // Walls drawn as geometry this frame because neither their wanted textures nor the previous
     // ones (within alpha) were resident (FramePlan::geometryFallbacks).
     int geometryFallbacks = 0;
-    // Baking on demand (WalkthroughSettings via gl::WalkthroughOptions::baker): textures baked
+    // Baking on demand (WalkthroughSettings via walkthrough::gl::WalkthroughOptions::baker): textures baked
     // by this run and handed to the pager, so far and this frame; textures still to bake.
     int texturesBaked = 0, texturesBakedNow = 0, texturesToBake = 0;
     bool bakerBusy = false;     // a background bake ran during some of the frame
@@ -145,7 +145,7 @@ struct FrameResult {
     int warpFallbacks = 0;              // Transition::Warp: walls drawn as geometry because
                                         // their warp was ill-conditioned (eye near the plane)
     std::vector<WallState> walls;
-    // Clusters (gl::ClusterOptions): nodes drawn by kind, the selection's predicted cost and
+    // Clusters (walkthrough::gl::ClusterOptions): nodes drawn by kind, the selection's predicted cost and
     // the budget it was held to, milliseconds. Zeros without clusters.
     int clusterObjects = 0, clusterTextured = 0, clusterAverage = 0;
     int clusterFades = 0;  // cross-fades under way (hierarchy/cluster_fades.h)

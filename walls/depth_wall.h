@@ -118,8 +118,8 @@ DepthImage marchDepths(DepthImage image);
 // The size marchDepths gives a width x height image.
 glm::ivec2 marchDepthSize(int width, int height);
 
-// The march's block (texels a side; gl::DepthTexture::skip holds depthBlockMinimum with
-// dilate 1, gl::uploadDepthTexture) and the most steps one skip test covers (each step
+// The march's block (texels a side; walls::gl::DepthTexture::skip holds depthBlockMinimum with
+// dilate 1, walls::gl::uploadDepthTexture) and the most steps one skip test covers (each step
 // crosses at most one texel per axis, so kSkipSteps steps stay within the 3 x 3 blocks).
 inline constexpr int kSkipBlock = 8;
 inline constexpr int kSkipSteps = kSkipBlock - 1;
@@ -138,19 +138,19 @@ TextureRect contentRect(const DepthImage& image);
 // projection from an eye in front of the plane keeps it convex, so the rectangle around the
 // eight corners' projections holds its whole image. Empty when content is, when the range is
 // not 0 <= near <= far < infinity, or when the eye or S is not in front of the plane. The
-// depth wall pass draws only this part of a wall (gl::DepthWallPass): the pixels it leaves out
+// depth wall pass draws only this part of a wall (walls::gl::DepthWallPass): the pixels it leaves out
 // are ones no march hits, which add nothing.
 TextureRect depthDrawRect(const WallFrame& frame, glm::dvec3 eye, glm::dvec3 samplingPoint, const TextureRect& content,
                           glm::dvec2 range, double margin);
 
-// A depth image as the GPU holds it (gl::uploadDepthTexture): the depths and, when the image has
+// A depth image as the GPU holds it (walls::gl::uploadDepthTexture): the depths and, when the image has
 // a whole skip block (kSkipBlock texels on both sides), their block minima (depthBlockMinimum
 // with dilate 1; empty otherwise). Made on the texture pager's thread, off the frame.
 struct DepthTextureData {
     DepthImage depth, blocks;
     // What the march needs beside the texels, from the texture's manifest entry: its sampling
     // point (world) and baked depth range (the range the depths are clamped to). They arrive and
-    // leave with the texels (gl::TextureStore::depthLayer).
+    // leave with the texels (walls::gl::TextureStore::depthLayer).
     glm::dvec3 samplingPoint{0.0};
     glm::dvec2 range{0.0};
     // contentRect of the depths: where the march can hit (depthDrawRect).

@@ -39,7 +39,7 @@
 namespace cavewall::walls {
 
 // The texels a flat texture's covered rectangle grows by (coveredRect). The store's sampler
-// filters bilinearly within the nearest MIP level (gl::TextureStore), so a pixel sampling level
+// filters bilinearly within the nearest MIP level (walls::gl::TextureStore), so a pixel sampling level
 // L reads level-0 texels at most 2^(L+1) away: exact up to level 2; of coarser levels a faint
 // fringe of blur beyond 8 texels is left out.
 inline constexpr int kCoveredMargin = 8;
@@ -111,7 +111,7 @@ public:
     // hash ..., got ...) (not drawn: the wall falls back)"), for the caller to print once.
     std::vector<std::string> takeWarnings();
     // The ids of textures refused by the content check since the last call (baking on demand
-    // bakes them again: gl::BackgroundBaker::rebake; addTexture then clears the failure).
+    // bakes them again: walls::gl::BackgroundBaker::rebake; addTexture then clears the failure).
     std::vector<int> takeRefused();
     // Blocks until the decoder is idle (nothing queued or decoding). For tests and for the
     // bench's warm-up; the runtime never calls it per frame.

@@ -6,7 +6,7 @@
 // kFirstWindow over a cold start's first frames, so the rate is known early), with kHeadroom so
 // a backlog drains, plus 1/kDrainFrames of what waits beyond that (a backlog that outgrows the
 // rate is not left behind), never more than the hard per-frame limit. It paces prefetches only:
-// a texture the frame wants now is uploaded at once (gl::TextureStore), since a miss costs the
+// a texture the frame wants now is uploaded at once (walls::gl::TextureStore), since a miss costs the
 // frame its fallback; so spikes are left only where prefetching came too late, and counted there.
 // The store spends the allowance in bands of rows (walls/upload_cursor.h), not whole textures,
 // so a frame's bytes follow the allowance rather than the textures' sizes.

@@ -2,7 +2,7 @@
 // One way to prepare a scene's virtual walls, used by the baker, run, bench, demo and tests
 // alike: plan the zones (walls/plan.h), compute cell visibility and classify the scene's objects
 // against every wall side (walls/visibility.h), and set every wall's depth behind it. GL-free.
-// Baking (walls/gl/baker.h, gl::bakeWalls) then fills in where the textures are.
+// Baking (walls/gl/baker.h, walls::gl::bakeWalls) then fills in where the textures are.
 
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
@@ -21,7 +21,7 @@ struct WallSetup {
     VisibilityTable table;
     // What each wall side shows, by (wall, side): every side with a cell in front of it.
     std::map<std::pair<int, int>, WallContents> contents;
-    // Set from the bake (gl::BakeResult): the folder holding the textures and its manifest.
+    // Set from the bake (walls::gl::BakeResult): the folder holding the textures and its manifest.
     // Empty until baked; the walkthrough pages textures from here.
     std::filesystem::path folder;
     BakeManifest manifest;

@@ -12,7 +12,7 @@
 #include <string>
 #include <unistd.h>
 
-namespace cavewall::gl {
+namespace cavewall::app::gl {
 
 namespace {
 
@@ -107,15 +107,15 @@ void RunOutput::writeFrame(long frame, double t, glm::dvec3 head, const walkthro
         throw Error(_folder.string() + ": writing the CSV files failed (" + scenes::writeErrorText(errno) + ")");
 }
 
-std::filesystem::path RunOutput::saveImages(long frame, const std::vector<gl::ScreenImage>& images,
-                                            const std::vector<gl::ScreenImage>& warped) {
+std::filesystem::path RunOutput::saveImages(long frame, const std::vector<scenes::ScreenImage>& images,
+                                            const std::vector<scenes::ScreenImage>& warped) {
     char name[16];
     std::snprintf(name, sizeof name, "%05ld", frame);
     const std::filesystem::path folder = _folder / "frames" / name;
     std::filesystem::create_directories(folder);
-    const auto files = gl::writeFrame(folder, images, gl::foldoutOf(_display, images));
-    for (const gl::ScreenImage& w : warped) scenes::writeImage(folder / (w.stem + ".png"), w.pixels);
+    const auto files = display::gl::writeFrame(folder, images, display::gl::foldoutOf(_display, images));
+    for (const scenes::ScreenImage& w : warped) scenes::writeImage(folder / (w.stem + ".png"), w.pixels);
     return files.back();
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::app::gl

@@ -35,7 +35,7 @@
 #include <filesystem>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::app::gl {
 
 class RunOutput {
 public:
@@ -54,8 +54,8 @@ public:
                     glm::dvec3 viewWorld = {0.0, 0.0, -1.0});
     // Writes the frame's images, the fold-out and the projector-corrected images (`warped`,
     // walkthrough::FrameResult::warpedImages); returns the fold-out's path.
-    std::filesystem::path saveImages(long frame, const std::vector<gl::ScreenImage>& images,
-                                     const std::vector<gl::ScreenImage>& warped = {});
+    std::filesystem::path saveImages(long frame, const std::vector<scenes::ScreenImage>& images,
+                                     const std::vector<scenes::ScreenImage>& warped = {});
     // Flushes, syncs and closes both CSV files; throws Error with the system's reason (a full
     // disk says so) when any of it did not reach the disk. Call once after the last frame.
     void close();
@@ -68,4 +68,4 @@ private:
     std::FILE* _walls = nullptr;
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::app::gl

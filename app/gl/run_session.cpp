@@ -31,7 +31,7 @@
 #include <iostream>
 #include <thread>
 
-namespace cavewall::gl {
+namespace cavewall::app::gl {
 
 using app::RunOptions;
 using app::RunSummary;
@@ -39,8 +39,8 @@ using app::WindowMode;
 
 namespace {
 
-gl::BakeRequest bakeRequest(const RunOptions& o, gl::Context* context) {
-    gl::BakeRequest request;
+walls::gl::BakeRequest bakeRequest(const RunOptions& o, display::gl::Context* context) {
+    walls::gl::BakeRequest request;
     request.scene = o.scene;
     request.context = context;
     request.trustStamps = true;  // the pager checks each file's content as it pages it in
@@ -54,12 +54,13 @@ gl::BakeRequest bakeRequest(const RunOptions& o, gl::Context* context) {
 // --bake-on-demand: plans the walls and takes what the cache holds; the baker bakes the rest in
 // the background with a context of its own.
 walls::WallSetup prepareWallsOnDemand(const RunOptions& o, const scenes::Scene& scene,
-                                      const scenes::SceneDescription& d, std::unique_ptr<gl::BackgroundBaker>& baker) {
+                                      const scenes::SceneDescription& d,
+                                      std::unique_ptr<walls::gl::BackgroundBaker>& baker) {
     walls::WallSetup setup = walls::prepareWalls(scene, d, walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution));
-    gl::BackgroundBakerOptions options;
+    walls::gl::BackgroundBakerOptions options;
     options.niceness = o.bakeNice;
     if (o.cacheBudgetMB > 0.0) options.cacheBudgetBytes = walls::cacheBudgetBytes(o.cacheBudgetMB, "--cache-budget");
-    baker = std::make_unique<gl::BackgroundBaker>(scene, d, setup, bakeRequest(o, nullptr), options);
+    baker = std::make_unique<walls::gl::BackgroundBaker>(scene, d, setup, bakeRequest(o, nullptr), options);
     for (const std::string& w : baker->startWarnings()) std::cerr << "run: warning: " << w << std::endl;
     setup.folder = baker->folder();
     setup.manifest = baker->manifest();
@@ -73,7 +74,7 @@ walls::WallSetup prepareWallsOnDemand(const RunOptions& o, const scenes::Scene& 
 // Why the session ends before drawing a frame, asked between stages and between textures of a
 // bake: a window closed, the quit keys (Escape twice, Ctrl+Q), Ctrl+C or SIGTERM.
 struct StopCheck {
-    gl::Context& context;
+    display::gl::Context& context;
     input::SessionKeys keys;
     std::optional<app::Ending> ending;
 
@@ -90,11 +91,11 @@ struct StopCheck {
 // Prepares the walls and bakes (or finds in the cache) their textures. Stops between textures
 // when `stop` says so (the finished textures stay in the cache).
 walls::WallSetup prepareWalls(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
-                              gl::Context& context, StopCheck* stop) {
+                              display::gl::Context& context, StopCheck* stop) {
     walls::WallSetup setup = walls::prepareWalls(scene, d, walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution));
-    gl::BakeRequest request = bakeRequest(o, &context);
+    walls::gl::BakeRequest request = bakeRequest(o, &context);
     if (stop) request.stop = [stop] { return (*stop)(); };
-    request.progress = [&o, &context](const gl::BakeProgress& p) {
+    request.progress = [&o, &context](const walls::gl::BakeProgress& p) {
         const int windows = std::min(context.windowCount(), static_cast<int>(o.display.screens.size()));
         for (int w = 0; w < windows && p.baked > 0; ++w)
             context.setTitle(w, "cavewall - " + o.display.screens[w].name + " - baking wall textures " +
@@ -104,7 +105,7 @@ walls::WallSetup prepareWalls(const RunOptions& o, const scenes::Scene& scene, c
                       << std::lround(p.seconds) << " s\n"
                       << std::flush;
     };
-    gl::BakeResult baked = gl::bakeWalls(scene, d, setup, request);
+    walls::gl::BakeResult baked = walls::gl::bakeWalls(scene, d, setup, request);
     for (const std::string& w : baked.warnings) std::cerr << "run: warning: " << w << std::endl;
     setup.folder = baked.folder;
     setup.manifest = std::move(baked.manifest);
@@ -115,15 +116,15 @@ walls::WallSetup prepareWalls(const RunOptions& o, const scenes::Scene& scene, c
     return setup;
 }
 
-std::unique_ptr<gl::Context> makeContext(const RunOptions& o, const display::Display& display) {
+std::unique_ptr<display::gl::Context> makeContext(const RunOptions& o, const display::Display& display) {
     bool windowed = o.window == WindowMode::Window;
-    if (o.window == WindowMode::Auto) windowed = gl::windowSystemAvailable();
+    if (o.window == WindowMode::Auto) windowed = display::gl::windowSystemAvailable();
     if (windowed) {
-        const std::string why = gl::windowsUnavailableReason();
+        const std::string why = display::gl::windowsUnavailableReason();
         if (!why.empty()) throw Error("--window: " + why);
-        return gl::createWindowedContext(gl::windowRequests(display), false);
+        return display::gl::createWindowedContext(display::gl::windowRequests(display), false);
     }
-    return gl::createHeadlessContext();
+    return display::gl::createHeadlessContext();
 }
 
 // In cluster mode rank 0 plans and bakes first and the others then find everything in the
@@ -132,7 +133,7 @@ std::unique_ptr<gl::Context> makeContext(const RunOptions& o, const display::Dis
 constexpr double kBakeWaitSeconds = 3600.0;
 
 walls::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d,
-                                  gl::Context& context, app::Cluster* cluster, StopCheck& stop) {
+                                  display::gl::Context& context, app::Cluster* cluster, StopCheck& stop) {
     if (!cluster) return prepareWalls(o, scene, d, context, &stop);
     std::optional<walls::WallSetup> setup;
     if (cluster->rank() == 0) setup = prepareWalls(o, scene, d, context, nullptr);
@@ -153,8 +154,8 @@ walls::WallSetup prepareWallsOnce(const RunOptions& o, const scenes::Scene& scen
 // the plan alone for the control (no textures, nothing baked); planned and baked while walking
 // by `baker` (--bake-on-demand); or planned and baked now, until `stop` says so.
 std::optional<walls::WallSetup> sessionWalls(const RunOptions& o, const scenes::Scene& scene,
-                                             const scenes::SceneDescription& d, gl::Context& context,
-                                             app::Cluster* cluster, std::unique_ptr<gl::BackgroundBaker>& baker,
+                                             const scenes::SceneDescription& d, display::gl::Context& context,
+                                             app::Cluster* cluster, std::unique_ptr<walls::gl::BackgroundBaker>& baker,
                                              StopCheck& stop) {
     if (!o.walls || o.clusters || d.walls.empty()) return std::nullopt;
     if (!o.wallTextures)  // the control draws no texture: the plan alone, nothing baked
@@ -163,8 +164,8 @@ std::optional<walls::WallSetup> sessionWalls(const RunOptions& o, const scenes::
     return prepareWallsOnce(o, scene, d, context, cluster, stop);
 }
 
-gl::WalkthroughOptions walkthroughOptions(const RunOptions& o, gl::BackgroundBaker* baker) {
-    gl::WalkthroughOptions options;
+walkthrough::gl::WalkthroughOptions walkthroughOptions(const RunOptions& o, walls::gl::BackgroundBaker* baker) {
+    walkthrough::gl::WalkthroughOptions options;
     options.synchronousPaging = o.synchronousPaging;
     options.wallTextures = o.wallTextures;
     options.textureBudgetMB = o.textureBudgetMB;
@@ -180,7 +181,7 @@ gl::WalkthroughOptions walkthroughOptions(const RunOptions& o, gl::BackgroundBak
         options.clusters.divisions = {o.clusterDivisions, std::max(1, o.clusterDivisions / 4), o.clusterDivisions};
         options.clusters.bake.resolution = o.clusterResolution;
         options.clusters.fadeFrames = o.clusterFadeFrames;
-        options.clusters.cache = o.cache ? *o.cache : gl::defaultCacheFolder();
+        options.clusters.cache = o.cache ? *o.cache : walls::gl::defaultCacheFolder();
         if (o.frameBudgetMs > 0.0) options.clusters.budgetMs = o.frameBudgetMs;
     }
     return options;
@@ -188,10 +189,10 @@ gl::WalkthroughOptions walkthroughOptions(const RunOptions& o, gl::BackgroundBak
 
 // What the walkthrough was made with: walls or not, the clusters' bake and costs, and the sizes
 // geometry paging is judged by (resident at most the largest three cells).
-void summarizeWalkthrough(const gl::Walkthrough& walkthrough, RunSummary& summary) {
+void summarizeWalkthrough(const walkthrough::gl::Walkthrough& walkthrough, RunSummary& summary) {
     summary.walls = walkthrough.hasWalls();
     if (const hierarchy::ClusterModel* m = walkthrough.clusterModel()) {
-        const gl::ClusterBakeStats& b = *walkthrough.clusterBakeStats();
+        const hierarchy::gl::ClusterBakeStats& b = *walkthrough.clusterBakeStats();
         summary.clusters = b.clusters;
         summary.clustersMade = b.made;
         summary.clustersReused = b.reused;
@@ -205,7 +206,7 @@ void summarizeWalkthrough(const gl::Walkthrough& walkthrough, RunSummary& summar
         summary.averageViewMs = m->costs.averageViewMs;
         summary.costResolution = walkthrough.clusterCostResolution();
     }
-    const gl::GeometryYardsticks yardsticks = walkthrough.geometryYardsticks();
+    const walkthrough::gl::GeometryYardsticks yardsticks = walkthrough.geometryYardsticks();
     summary.largestThreeCellsMB = yardsticks.largestThreeCellsMB;
     summary.modelGeometryMB = yardsticks.wholeModelMB;
 }
@@ -213,11 +214,11 @@ void summarizeWalkthrough(const gl::Walkthrough& walkthrough, RunSummary& summar
 // What the frame loop drives. Rank 0 alone has input and output.
 struct Session {
     const RunOptions& o;
-    gl::Context& context;
-    app::RunInput* input = nullptr;        // rank 0
-    app::Cluster* cluster = nullptr;       // cluster mode
-    gl::BackgroundBaker* baker = nullptr;  // --bake-on-demand
-    gl::Walkthrough& walkthrough;
+    display::gl::Context& context;
+    app::RunInput* input = nullptr;               // rank 0
+    app::Cluster* cluster = nullptr;              // cluster mode
+    walls::gl::BackgroundBaker* baker = nullptr;  // --bake-on-demand
+    walkthrough::gl::Walkthrough& walkthrough;
     RunOutput* output = nullptr;      // rank 0
     const std::vector<int>& screens;  // this rank's, cluster mode
     std::chrono::steady_clock::time_point start;
@@ -347,9 +348,9 @@ void runFrames(const Session& s, RunSummary& summary) {
 
 // --bake-on-demand: stops the baker (the bake in progress finishes and is counted) and adds
 // its figures to the summary.
-void summarizeBaker(gl::BackgroundBaker& baker, RunSummary& summary) {
+void summarizeBaker(walls::gl::BackgroundBaker& baker, RunSummary& summary) {
     baker.stop();
-    const gl::BackgroundBakeStats b = baker.stats();
+    const walls::gl::BackgroundBakeStats b = baker.stats();
     summary.texturesMissingAtStart = b.missingAtStart;
     summary.texturesBaked = b.baked;
     summary.texturesStillMissing = b.missing;
@@ -383,7 +384,7 @@ RunSummary runSession(const RunOptions& o) {
         rank == 0 && !o.out.empty() ? std::make_unique<RunOutput>(o.out, description, display) : nullptr;
     summary.renderer = context->info().renderer;
     StopCheck stop{.context = *context};
-    std::unique_ptr<gl::BackgroundBaker> baker;  // --bake-on-demand; outlives the walkthrough
+    std::unique_ptr<walls::gl::BackgroundBaker> baker;  // --bake-on-demand; outlives the walkthrough
     std::optional<walls::WallSetup> setup =
         stop() ? std::nullopt : sessionWalls(o, scene, description, *context, cluster.get(), baker, stop);
     summary.textures = setup ? static_cast<int>(setup->plan.textures.size()) : 0;
@@ -396,8 +397,8 @@ RunSummary runSession(const RunOptions& o) {
     }
     const std::vector<int> screens =
         cluster ? config::screensOfRank(o.display, rank, cluster->size()) : std::vector<int>{};
-    gl::Walkthrough walkthrough(scene, description, display, *context, std::move(setup),
-                                walkthroughOptions(o, baker.get()), screens);
+    walkthrough::gl::Walkthrough walkthrough(scene, description, display, *context, std::move(setup),
+                                             walkthroughOptions(o, baker.get()), screens);
 
     summary.readySeconds = secondsSince(start);
     summarizeWalkthrough(walkthrough, summary);
@@ -417,4 +418,4 @@ RunSummary runSession(const RunOptions& o) {
     return summary;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::app::gl

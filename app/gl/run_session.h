@@ -11,9 +11,9 @@
 #include "app/run_options.h"
 #include "walkthrough/gl/walkthrough.h"
 
-namespace cavewall::gl {
+namespace cavewall::app::gl {
 
 // Runs the session; throws cavewall::Error on bad input (options, scene, tracker spec...).
 app::RunSummary runSession(const app::RunOptions& options);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::app::gl

@@ -9,7 +9,7 @@
 #include <iostream>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 
 namespace {
 
@@ -126,4 +126,4 @@ std::unique_ptr<Context> createWindowedContext(const std::vector<WindowRequest>&
 }
 #endif
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

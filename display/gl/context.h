@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 
 // Which EGL platform a headless context uses; Auto tries them in the order above.
 enum class HeadlessPlatform { Auto, Surfaceless, Device, Default };
@@ -149,4 +149,4 @@ inline bool windowSystemAvailable() { return windowsUnavailableReason().empty();
 // KHR_debug callback. For providers.
 void initialiseCurrentContext(ContextInfo& info, const ContextOptions& options);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

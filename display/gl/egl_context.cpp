@@ -6,7 +6,7 @@
 
 #include <sstream>
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 
 namespace {
 
@@ -124,4 +124,4 @@ std::unique_ptr<Context> createHeadlessContext(const ContextOptions& options) {
     throw Error("headless OpenGL: expected an EGL display with an OpenGL 4.5 core context, got none (" + tried + ")");
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

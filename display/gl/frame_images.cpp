@@ -5,7 +5,7 @@
 #include <cassert>
 #include <cstring>
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 
 namespace {
 
@@ -67,4 +67,4 @@ std::vector<std::filesystem::path> writeFrame(const std::filesystem::path& folde
     return written;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 
 using scenes::ScreenImage;  // scenes/screen_image.h
 
@@ -34,4 +34,4 @@ scenes::Image foldoutOf(const display::Display& display, const std::vector<Scree
 std::vector<std::filesystem::path> writeFrame(const std::filesystem::path& folder,
                                               const std::vector<ScreenImage>& frame, const scenes::Image& foldout);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

@@ -1,6 +1,6 @@
 #include "display/gl/gl_object.h"
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 
 GlObject createBuffer() {
     GLuint id = 0;
@@ -40,4 +40,4 @@ GlObject createShader(GLenum stage) {
     return {glCreateShader(stage), [](GLuint i) { glDeleteShader(i); }};
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

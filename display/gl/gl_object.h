@@ -6,7 +6,7 @@
 
 #include <utility>
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 
 class GlObject {
 public:
@@ -48,4 +48,4 @@ GlObject createSampler();
 GlObject createProgram();
 GlObject createShader(GLenum stage);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

@@ -12,7 +12,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 
 namespace {
 
@@ -293,4 +293,4 @@ std::unique_ptr<Context> createWindowedContext(const std::vector<WindowRequest>&
     return std::make_unique<GlfwContext>(windows, stereo, options);
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

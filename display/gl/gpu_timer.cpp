@@ -1,6 +1,6 @@
 #include "display/gl/gpu_timer.h"
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 
 namespace {
 
@@ -73,4 +73,4 @@ double GpuTimer::waitMs() {
     return _issued > 0 ? _latestMs : -1.0;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

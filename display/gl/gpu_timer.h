@@ -16,7 +16,7 @@
 #include <array>
 #include <cstdint>
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 
 class GpuTimer {
 public:
@@ -47,4 +47,4 @@ private:
     double _latestMs = -1.0;
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

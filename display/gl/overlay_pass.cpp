@@ -4,7 +4,7 @@
 
 #include <cstddef>
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 namespace {
 
 constexpr const char* kName = "overlay";
@@ -63,4 +63,4 @@ void OverlayPass::draw(const std::vector<display::OverlayVertex>& vertices, glm:
     glUseProgram(0);
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

@@ -11,7 +11,7 @@
 
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 
 class OverlayPass {
 public:
@@ -29,4 +29,4 @@ private:
     std::size_t _capacity = 0;  // vertices the buffer holds
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

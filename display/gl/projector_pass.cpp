@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 namespace {
 
 constexpr const char* kName = "projector";
@@ -160,4 +160,4 @@ std::vector<scenes::ScreenImage> ProjectorPasses::read(const std::vector<scenes:
     return out;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

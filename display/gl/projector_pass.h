@@ -18,7 +18,7 @@
 #include <optional>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 
 class ProjectorPass {
 public:
@@ -66,4 +66,4 @@ private:
     std::vector<std::unique_ptr<ProjectorPass>> _passes;
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

@@ -6,7 +6,7 @@
 #include <cassert>
 #include <cstring>
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 
 namespace {
 
@@ -94,4 +94,4 @@ scenes::Image readFramebuffer(unsigned framebuffer, unsigned buffer, glm::ivec2 
     return image;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 
 class RenderTargets {
 public:
@@ -60,4 +60,4 @@ private:
 // 8-bit RGBA, rows top to bottom. `name` becomes Image::name.
 scenes::Image readFramebuffer(unsigned framebuffer, unsigned buffer, glm::ivec2 size, std::string name);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 
 namespace {
 
@@ -64,4 +64,4 @@ GLint uniformLocation(GLuint program, std::string_view programName, const char* 
     return location;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 
 // Builds a program from vertex and fragment source (with their #version lines). Needs a
 // current context; the program belongs to it (and to contexts sharing with it).
@@ -18,4 +18,4 @@ GlObject buildProgram(std::string_view name, std::string_view vertexSource, std:
 // (a misspelt name is a bug that should not silently draw black).
 GLint uniformLocation(GLuint program, std::string_view programName, const char* uniform);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

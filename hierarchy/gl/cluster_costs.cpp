@@ -17,7 +17,7 @@
 #include <limits>
 #include <numeric>
 
-namespace cavewall::gl {
+namespace cavewall::hierarchy::gl {
 
 namespace {
 
@@ -66,7 +66,7 @@ bool readCosts(const std::filesystem::path& file, hierarchy::ClusterCosts& costs
 
 }  // namespace
 
-MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostors& impostors,
+MeasuredCosts measureClusterCosts(render::gl::SceneRenderer& renderer, const ClusterImpostors& impostors,
                                   const hierarchy::ClusterModel& model, const scenes::Scene& scene,
                                   const std::string& rendererName, const std::filesystem::path& cache, int resolution) {
     if (resolution < 1 || resolution > 16384)
@@ -82,8 +82,8 @@ MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostor
     const hierarchy::BoxView view = hierarchy::viewOfBox(box, glm::normalize(glm::dvec3(0.4, 0.6, 0.7)));
     const display::OffAxisFrustum frustum =
         display::offAxisFrustum(view.screen, view.eye, {0.05, std::numeric_limits<double>::infinity()});
-    OffscreenTarget target{glm::ivec2(resolution)};
-    ViewTarget vt{target.framebuffer(), {0, 0, resolution, resolution}, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)};
+    walls::gl::OffscreenTarget target{glm::ivec2(resolution)};
+    render::gl::ViewTarget vt{target.framebuffer(), {0, 0, resolution, resolution}, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)};
     // One view of `objects`, drawn `times` times in one timed block and divided back: a small
     // scene's draws are far below the timer's and the machine's noise, so they repeat until a
     // set holds about kMinTimedTriangles.
@@ -151,7 +151,7 @@ MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostor
                                  render::DrawFilter filter;
                                  filter.objects = &none;
                                  renderer.renderFrustum(frustum, glm::dmat4(1.0), vt, filter);
-                                 FrameStats stats;
+                                 display::FrameStats stats;
                                  impostors.draw(boxes, view.eye, frustum, glm::dmat4(1.0), stats);
                              }) - empty);
     };
@@ -181,4 +181,4 @@ MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostor
     return result;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::hierarchy::gl

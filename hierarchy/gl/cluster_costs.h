@@ -26,7 +26,7 @@
 #include <filesystem>
 #include <string>
 
-namespace cavewall::gl {
+namespace cavewall::hierarchy::gl {
 
 inline constexpr int kCostResolution = 256;  // the default when a caller has no display
 
@@ -36,9 +36,9 @@ struct MeasuredCosts {
     std::filesystem::path file;
 };
 
-MeasuredCosts measureClusterCosts(SceneRenderer& renderer, const ClusterImpostors& impostors,
+MeasuredCosts measureClusterCosts(render::gl::SceneRenderer& renderer, const ClusterImpostors& impostors,
                                   const hierarchy::ClusterModel& model, const scenes::Scene& scene,
                                   const std::string& rendererName, const std::filesystem::path& cache,
                                   int resolution = kCostResolution);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::hierarchy::gl

@@ -23,7 +23,7 @@
 #include <limits>
 #include <utility>
 
-namespace cavewall::gl {
+namespace cavewall::hierarchy::gl {
 
 namespace {
 
@@ -34,10 +34,12 @@ using hierarchy::impostorFileName;
 using hierarchy::kClusterCacheVersion;
 
 // Premultiplied MIP levels as the wall pass samples them (walls/gl/wall_quad.h).
-GlObject upload(std::vector<scenes::Image> levels) { return uploadWallTexture(std::move(levels)); }
+display::gl::GlObject upload(std::vector<scenes::Image> levels) {
+    return walls::gl::uploadWallTexture(std::move(levels));
+}
 
 // An opaque 1 x 1 texture of a linear colour.
-GlObject colourTexture(glm::vec3 linear) {
+display::gl::GlObject colourTexture(glm::vec3 linear) {
     scenes::Image texel{"average", 1, 1, {0, 0, 0, 255}};
     for (int c = 0; c < 3; ++c)
         texel.rgba[c] =
@@ -75,7 +77,7 @@ void validateClusterBakeSettings(const ClusterBakeSettings& s) {
 
 ClusterImpostors::ClusterImpostors(const scenes::Scene& scene, hierarchy::ClusterModel& model,
                                    const ClusterBakeSettings& settings, const std::filesystem::path& cache)
-    : _scene(scene), _settings(settings), _sampler(createSampler()) {
+    : _scene(scene), _settings(settings), _sampler(display::gl::createSampler()) {
     validateClusterBakeSettings(settings);
     const auto start = std::chrono::steady_clock::now();
     glSamplerParameteri(_sampler.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
@@ -185,7 +187,7 @@ bool ClusterImpostors::load(const std::filesystem::path& folder, Node& node, hie
 void ClusterImpostors::make(const std::filesystem::path& folder, const hierarchy::ClusterNode& cluster, int index,
                             hierarchy::ClusterAccuracy& accuracy) {
     Node& node = _nodes.at(index);
-    if (!_renderer) _renderer = std::make_unique<WallTextureRenderer>(_scene, _settings.ambient);
+    if (!_renderer) _renderer = std::make_unique<walls::gl::WallTextureRenderer>(_scene, _settings.ambient);
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
     if (ec) throw Error(folder.string() + ": cannot create the cluster cache folder (" + ec.message() + ")");
@@ -213,16 +215,16 @@ void ClusterImpostors::make(const std::filesystem::path& folder, const hierarchy
 
 scenes::Image ClusterImpostors::image(int index, hierarchy::ClusterRep rep, const display::ScreenQuad& screen,
                                       glm::dvec3 eye, glm::ivec2 size) {
-    if (!_renderer) _renderer = std::make_unique<WallTextureRenderer>(_scene, _settings.ambient);
+    if (!_renderer) _renderer = std::make_unique<walls::gl::WallTextureRenderer>(_scene, _settings.ambient);
     const Node& node = _nodes.at(index);
     if (rep == hierarchy::ClusterRep::Full) return opaque(_renderer->render(screen, eye, size, node.objects));
-    if (!_target || _target->size() != size) _target = std::make_unique<OffscreenTarget>(size);
+    if (!_target || _target->size() != size) _target = std::make_unique<walls::gl::OffscreenTarget>(size);
     const display::OffAxisFrustum frustum =
         display::offAxisFrustum(screen, eye, {0.05, std::numeric_limits<double>::infinity()});
     _target->bindAndClear(glm::vec4(0.0f));
     glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    FrameStats ignored;
+    display::FrameStats ignored;
     draw({{index, rep}}, eye, frustum, glm::dmat4(1.0), ignored);
     return opaque(_target->read("cluster impostor"));
 }
@@ -246,8 +248,9 @@ hierarchy::ClusterAccuracy ClusterImpostors::measureAccuracy(int index) {
     return accuracy;
 }
 
-std::vector<WallDraw> ClusterImpostors::draws(const hierarchy::ClusterBoxDraw& box, glm::dvec3 eyeWorld) const {
-    std::vector<WallDraw> out;
+std::vector<walls::gl::WallDraw> ClusterImpostors::draws(const hierarchy::ClusterBoxDraw& box,
+                                                         glm::dvec3 eyeWorld) const {
+    std::vector<walls::gl::WallDraw> out;
     const auto it = _nodes.find(box.node);
     if (it == _nodes.end()) return out;
     const Node& node = it->second;
@@ -268,13 +271,13 @@ std::vector<WallDraw> ClusterImpostors::draws(const hierarchy::ClusterBoxDraw& b
 
 void ClusterImpostors::draw(const std::vector<hierarchy::ClusterBoxDraw>& boxes, glm::dvec3 eyeWorld,
                             const display::OffAxisFrustum& frustum, const glm::dmat4& caveFromWorld,
-                            FrameStats& stats) const {
-    std::vector<WallDraw> all;
+                            display::FrameStats& stats) const {
+    std::vector<walls::gl::WallDraw> all;
     for (const hierarchy::ClusterBoxDraw& b : boxes) {
-        std::vector<WallDraw> d = draws(b, eyeWorld);
+        std::vector<walls::gl::WallDraw> d = draws(b, eyeWorld);
         all.insert(all.end(), d.begin(), d.end());
     }
     _pass.draw(all, frustum, caveFromWorld, _sampler.id(), stats);
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::hierarchy::gl

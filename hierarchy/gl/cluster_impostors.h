@@ -5,7 +5,7 @@
 // premultiplied texture on a world quad, depth-tested against the geometry, blended over it).
 //
 // Textured boxes: each face's texture for each viewing region is rendered by
-// gl::WallTextureRenderer, exactly as a wall texture is baked: display::offAxisFrustum with the
+// walls::gl::WallTextureRenderer, exactly as a wall texture is baked: display::offAxisFrustum with the
 // face as the screen and the region's sampling eye as the eye, drawing only the cluster's own
 // objects (structure included: a bare glTF has no other), alpha 0 where nothing is drawn,
 // premultiplied MIP chains (walls/texture_mips.h). Average boxes: per face the mean colour and
@@ -40,10 +40,12 @@
 #include <string>
 #include <vector>
 
-namespace cavewall::gl {
-
+namespace cavewall::walls::gl {
 class OffscreenTarget;
 class WallTextureRenderer;
+}  // namespace cavewall::walls::gl
+
+namespace cavewall::hierarchy::gl {
 
 struct ClusterBakeSettings {
     int resolution = 64;          // texels along a face texture's longer side, [4, 2048]
@@ -73,10 +75,11 @@ public:
 
     // The wall-pass draws of one box seen from `eyeWorld`: its faces towards the eye, each with
     // the texture of the eye's region (Textured) or its average rectangle (Average).
-    std::vector<WallDraw> draws(const hierarchy::ClusterBoxDraw& box, glm::dvec3 eyeWorld) const;
+    std::vector<walls::gl::WallDraw> draws(const hierarchy::ClusterBoxDraw& box, glm::dvec3 eyeWorld) const;
     // Draws `boxes` in order (back to front) for one view (frustum in the cave frame).
     void draw(const std::vector<hierarchy::ClusterBoxDraw>& boxes, glm::dvec3 eyeWorld,
-              const display::OffAxisFrustum& frustum, const glm::dmat4& caveFromWorld, FrameStats& stats) const;
+              const display::OffAxisFrustum& frustum, const glm::dmat4& caveFromWorld,
+              display::FrameStats& stats) const;
 
     // One image of node `node`'s impostor `rep` (or its objects at full detail for Full) seen
     // from `eye` through `screen` (world) at `size` pixels, on black: 8-bit RGBA, sRGB colour,
@@ -88,8 +91,8 @@ public:
 
 private:
     struct Node {
-        std::array<std::array<GlObject, hierarchy::kFaceRegions>, hierarchy::kBoxFaces> textures;
-        std::array<GlObject, hierarchy::kBoxFaces> averages;  // 1 x 1, opaque
+        std::array<std::array<display::gl::GlObject, hierarchy::kFaceRegions>, hierarchy::kBoxFaces> textures;
+        std::array<display::gl::GlObject, hierarchy::kBoxFaces> averages;  // 1 x 1, opaque
         std::array<hierarchy::FaceAverage, hierarchy::kBoxFaces> faces;
         scenes::Bounds box;
         std::vector<int> objects;
@@ -101,12 +104,12 @@ private:
 
     const scenes::Scene& _scene;
     ClusterBakeSettings _settings;
-    std::map<int, Node> _nodes;                      // by tree node index
-    std::unique_ptr<WallTextureRenderer> _renderer;  // made when something is rendered
-    std::unique_ptr<OffscreenTarget> _target;        // image(): reallocated when the size changes
-    WallPass _pass;
-    GlObject _sampler;
+    std::map<int, Node> _nodes;                                 // by tree node index
+    std::unique_ptr<walls::gl::WallTextureRenderer> _renderer;  // made when something is rendered
+    std::unique_ptr<walls::gl::OffscreenTarget> _target;        // image(): reallocated when the size changes
+    walls::gl::WallPass _pass;
+    display::gl::GlObject _sampler;
     ClusterBakeStats _stats;
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::hierarchy::gl

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <utility>
 
-namespace cavewall::gl {
+namespace cavewall::render::gl {
 
 namespace {
 
@@ -83,8 +83,8 @@ void appendVertices(const scenes::Mesh& m, int texCoordSet, std::vector<GpuVerte
 
 // A buffer holding `bytes` bytes of `data` (zero-sized storage is an error in GL: an empty
 // set still gets a valid, tiny buffer).
-GlObject immutableBuffer(std::size_t bytes, const void* data) {
-    GlObject b = createBuffer();
+display::gl::GlObject immutableBuffer(std::size_t bytes, const void* data) {
+    display::gl::GlObject b = display::gl::createBuffer();
     glNamedBufferStorage(b.id(), std::max<std::size_t>(bytes, 1), bytes ? data : nullptr, 0);
     return b;
 }
@@ -115,11 +115,11 @@ void describeVertexArray(GLuint vao, GLuint vertices, GLuint indices) {
 // garbage, and make the problem visible.
 const scenes::Image kMissingImage{"missing", 1, 1, {255, 0, 255, 255}};
 
-GlObject uploadTexture(const scenes::Image& given) {
+display::gl::GlObject uploadTexture(const scenes::Image& given) {
     const bool valid =
         given.width > 0 && given.height > 0 && given.rgba.size() == std::size_t(given.width) * given.height * 4;
     const scenes::Image& image = valid ? given : kMissingImage;
-    GlObject t = createTexture(GL_TEXTURE_2D);
+    display::gl::GlObject t = display::gl::createTexture(GL_TEXTURE_2D);
     const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
     glTextureStorage2D(t.id(), levels, GL_SRGB8_ALPHA8, image.width, image.height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -165,7 +165,7 @@ PackedGeometry packMeshes(const scenes::Scene& scene, const std::vector<scenes::
 }
 
 GpuScene::GpuScene(const scenes::Scene& scene, const std::vector<scenes::MeshLod>* lods, int pagedCells)
-    : _vertexArray(createVertexArray()) {
+    : _vertexArray(display::gl::createVertexArray()) {
     std::vector<int> shared;
     if (pagedCells > 0) {
         // Set 0 holds what some always-resident object uses (the meshes in no group).
@@ -195,7 +195,7 @@ GpuScene::GpuScene(const scenes::Scene& scene, const std::vector<scenes::MeshLod
     describeVertexArray(_vertexArray.id(), _vertices.id(), _indices.id());
     for (const scenes::Image& image : scene.images) _textures.push_back(uploadTexture(image));
     for (int i = 0; i < 9; ++i) {
-        _samplers[i] = createSampler();
+        _samplers[i] = display::gl::createSampler();
         glSamplerParameteri(_samplers[i].id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glSamplerParameteri(_samplers[i].id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glSamplerParameteri(_samplers[i].id(), GL_TEXTURE_WRAP_S, wrapMode(i / 3));
@@ -242,4 +242,4 @@ void GpuScene::bindSet(int set) const {
     glVertexArrayElementBuffer(_vertexArray.id(), group ? group->indices.id() : _indices.id());
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::render::gl

@@ -40,7 +40,7 @@
 #include <utility>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::render::gl {
 
 // Interleaved vertex, 24 bytes (see above). Missing attributes get neutral values: normal 0
 // (drawn unlit), texture coordinates 0, colour white.
@@ -136,12 +136,12 @@ private:
     };
 
     struct GroupBuffers {
-        GlObject vertices, indices;
+        display::gl::GlObject vertices, indices;
         std::unordered_map<int, std::vector<GpuMeshRange>> meshes;
         std::size_t bytes = 0;
     };
 
-    GlObject _vertices, _indices, _vertexArray;
+    display::gl::GlObject _vertices, _indices, _vertexArray;
     bool _paging = false;
     scenes::PagedMeshGroups _groups;                           // with paging
     std::vector<int> _objectSets;                              // per object, with paging
@@ -149,9 +149,9 @@ private:
     std::size_t _residentPagedBytes = 0;
     std::vector<Decode> _decode;                     // per mesh
     std::vector<std::vector<GpuMeshRange>> _meshes;  // per mesh, its levels (finest first)
-    std::vector<GlObject> _textures;
-    std::array<GlObject, 9> _samplers;
+    std::vector<display::gl::GlObject> _textures;
+    std::array<display::gl::GlObject, 9> _samplers;
     std::size_t _vertexBytes = 0, _indexBytes = 0;
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::render::gl

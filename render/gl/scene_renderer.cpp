@@ -13,7 +13,7 @@
 #include <chrono>
 #include <limits>
 
-namespace cavewall::gl {
+namespace cavewall::render::gl {
 
 namespace {
 
@@ -44,8 +44,8 @@ shaders::MaterialRecord materialRecord(const scenes::Material& m, int textureCou
     return r;
 }
 
-GlObject storageBuffer(std::size_t bytes, const void* data) {
-    GlObject b = createBuffer();
+display::gl::GlObject storageBuffer(std::size_t bytes, const void* data) {
+    display::gl::GlObject b = display::gl::createBuffer();
     glNamedBufferStorage(b.id(), std::max<std::size_t>(bytes, 1), data, data ? 0 : GL_DYNAMIC_STORAGE_BIT);
     return b;
 }
@@ -74,10 +74,11 @@ SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings
         for (bool vertexLit : {false, true}) {
             Program& p = _programs[programIndex(alphaTest, vertexLit)];
             const std::string name = programName(alphaTest, vertexLit);
-            p.program = buildProgram(name, shaders::sceneShader(shaders::kSceneVertex, textured, alphaTest, vertexLit),
-                                     shaders::sceneShader(shaders::kSceneFragment, textured, alphaTest, vertexLit));
-            p.projection = uniformLocation(p.program.id(), name, "uProjection");
-            p.ambient = uniformLocation(p.program.id(), name, "uAmbient");
+            p.program = display::gl::buildProgram(
+                name, shaders::sceneShader(shaders::kSceneVertex, textured, alphaTest, vertexLit),
+                shaders::sceneShader(shaders::kSceneFragment, textured, alphaTest, vertexLit));
+            p.projection = display::gl::uniformLocation(p.program.id(), name, "uProjection");
+            p.ambient = display::gl::uniformLocation(p.program.id(), name, "uAmbient");
         }
     // One material record per mesh: its material (or the default one), with the mesh's own
     // texture-coordinate decoding folded into the texture transform.
@@ -97,8 +98,9 @@ SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings
     }
 }
 
-FrameStats SceneRenderer::render(const std::vector<display::ScreenView>& views, const RenderTargets& targets,
-                                 const glm::dmat4& worldFromCave, const render::DrawFilter& filter,
+FrameStats SceneRenderer::render(const std::vector<display::ScreenView>& views,
+                                 const display::gl::RenderTargets& targets, const glm::dmat4& worldFromCave,
+                                 const render::DrawFilter& filter,
                                  const std::function<void(const display::ScreenView&)>& afterView) {
     const auto start = Clock::now();
     const bool timed = _timer.begin();
@@ -141,7 +143,7 @@ void SceneRenderer::clearTo(glm::vec4 color) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
-void SceneRenderer::beginFrame(const RenderTargets& targets, const std::vector<int>& screens) {
+void SceneRenderer::beginFrame(const display::gl::RenderTargets& targets, const std::vector<int>& screens) {
     applyFrameState();
     glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -152,7 +154,7 @@ void SceneRenderer::beginFrame(const RenderTargets& targets, const std::vector<i
     }
 }
 
-void SceneRenderer::endFrame(const RenderTargets& targets) {
+void SceneRenderer::endFrame(const display::gl::RenderTargets& targets) {
     for (const glm::ivec2 image : _marked) {
         targets.bind(image.x, image.y);
         clearWholeImage();
@@ -179,7 +181,7 @@ ViewStats SceneRenderer::renderView(const display::ScreenView& view, const rende
     applyFrameState();
     // The frame's clear of the image, if it is still to come, goes with this view's drawing;
     // else each eye gets fresh depth: anaglyph eyes share one image, side-by-side eyes one target.
-    const bool cleared = clearIfMarked(view.screen, RenderTargets::imageOf(view.pass));
+    const bool cleared = clearIfMarked(view.screen, display::gl::RenderTargets::imageOf(view.pass));
     setViewport(view.pass.viewport, glm::bvec4(true));
     if (!cleared) glClear(GL_DEPTH_BUFFER_BIT);
     glColorMask(view.pass.colorMask.r, view.pass.colorMask.g, view.pass.colorMask.b, view.pass.colorMask.a);
@@ -349,4 +351,4 @@ void SceneRenderer::applyState(const render::BatchKey& state) {
     }
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::render::gl

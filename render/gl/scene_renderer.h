@@ -62,7 +62,7 @@
 #include <optional>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::render::gl {
 
 struct RenderSettings {
     glm::vec4 clearColor{0.02f, 0.02f, 0.03f, 1.0f};  // linear RGBA
@@ -115,7 +115,7 @@ public:
     // view is drawn, with that view's target bound and its viewport, scissor and colour mask
     // still set (a caller's own pass; it restores any other state it changes) and is timed
     // with the view.
-    FrameStats render(const std::vector<display::ScreenView>& views, const RenderTargets& targets,
+    FrameStats render(const std::vector<display::ScreenView>& views, const display::gl::RenderTargets& targets,
                       const glm::dmat4& worldFromCave = glm::dmat4(1.0), const render::DrawFilter& filter = {},
                       const std::function<void(const display::ScreenView&)>& afterView = {});
 
@@ -125,9 +125,9 @@ public:
     // view drew into. A clear of its own costs llvmpipe a pass over the image (a scene of its
     // own, ended by binding the next screen): on cave4 at 1024 x 1024 per screen that was
     // 3.5-4 ms of a 32-34 ms walls frame (docs/benchmarking.md).
-    void beginFrame(const RenderTargets& targets, const std::vector<int>& screens = {});
+    void beginFrame(const display::gl::RenderTargets& targets, const std::vector<int>& screens = {});
     // Clears the images that beginFrame marked and no view has drawn into since.
-    void endFrame(const RenderTargets& targets);
+    void endFrame(const display::gl::RenderTargets& targets);
     // Draws a prepared render list of `view` (built for view.frustum from this renderer's
     // renderScene()) into the currently bound draw framebuffer (bind it first, e.g.
     // targets.bind(view.screen, RenderTargets::imageOf(view.pass))): sets the GL state it needs,
@@ -169,7 +169,7 @@ private:
     // Per-view GPU buffers: draw records and indirect commands. Views cycle through a few sets
     // so that writing one view's data does not wait for the GPU to finish the previous view.
     struct ViewBuffers {
-        GlObject records, commands;
+        display::gl::GlObject records, commands;
         std::size_t capacity = 0;  // draws
     };
     static constexpr int kViewBufferSets = 4;
@@ -189,7 +189,7 @@ private:
 
     // A variant of the scene shader (scene_shaders.h) and its uniforms.
     struct Program {
-        GlObject program;
+        display::gl::GlObject program;
         GLint projection = -1, ambient = -1;
     };
 
@@ -200,7 +200,7 @@ private:
     GpuScene _gpu;
     // [alpha test (MASK batches) * 2 + lit per vertex]
     std::array<Program, 4> _programs;
-    GpuTimer _timer;
+    display::gl::GpuTimer _timer;
     // Images (screen, image) beginFrame marked and no view has cleared yet.
     std::vector<glm::ivec2> _marked;
     std::array<ViewBuffers, kViewBufferSets> _viewBuffers;
@@ -215,4 +215,4 @@ private:
     int _multiDraws = 0;  // by the last issueBatches
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::render::gl

@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <string>
 
-namespace cavewall::gl::shaders {
+namespace cavewall::render::gl::shaders {
 
 // A mesh's material as the shader sees it: its material (or the default one), with the
 // mesh's texture-coordinate decoding folded into the texture transform (GpuScene::uvFromStored).
@@ -198,4 +198,4 @@ inline std::string sceneShader(const char* source, bool textured, bool alphaTest
                                  (vertexLit ? "#define VERTEX_LIT 1\n" : "#define VERTEX_LIT 0\n"));
 }
 
-}  // namespace cavewall::gl::shaders
+}  // namespace cavewall::render::gl::shaders

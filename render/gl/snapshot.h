@@ -16,13 +16,13 @@
 #include "render/gl/scene_renderer.h"
 #include "scenes/scene.h"
 
-namespace cavewall::gl {
+namespace cavewall::render::gl {
 
 struct Snapshot {
-    std::vector<ScreenImage> images;  // every output image (readFrame order), before correction
+    std::vector<scenes::ScreenImage> images;  // every output image (readFrame order), before correction
     // The corrected screens' images after their warp and blend pass (display/gl/projector_pass.h), in
     // the order of `images`, stems ending in "-warped"; empty when no screen is corrected.
-    std::vector<ScreenImage> warped;
+    std::vector<scenes::ScreenImage> warped;
     scenes::Image foldout;
     FrameStats stats;  // gpuMs of this frame (not an earlier one)
 };
@@ -31,7 +31,7 @@ class Snapshotter {
 public:
     // Needs `context` current; keeps references to `display` and `context`, which must outlive
     // it. Throws Error as RenderTargets and SceneRenderer do.
-    Snapshotter(const display::Display& display, const scenes::Scene& scene, Context& context,
+    Snapshotter(const display::Display& display, const scenes::Scene& scene, display::gl::Context& context,
                 RenderSettings settings = {});
 
     // Renders the frame for `head` (cave frame) with the CAVE at `worldFromCave` in the world.
@@ -43,10 +43,10 @@ private:
     void present(Snapshot& snapshot);
 
     const display::Display& _display;
-    Context& _context;
-    RenderTargets _targets;
+    display::gl::Context& _context;
+    display::gl::RenderTargets _targets;
     SceneRenderer _renderer;
-    ProjectorPasses _projectors;
+    display::gl::ProjectorPasses _projectors;
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::render::gl

@@ -2,15 +2,15 @@
 
 #include <chrono>
 
-namespace cavewall::gl {
+namespace cavewall::render::gl {
 
-FrameStats forEachView(const std::vector<display::ScreenView>& views, const RenderTargets& targets,
+FrameStats forEachView(const std::vector<display::ScreenView>& views, const display::gl::RenderTargets& targets,
                        const ViewPass& pass) {
     using Clock = std::chrono::steady_clock;
     FrameStats frame;
     for (const display::ScreenView& view : views) {
         const auto start = Clock::now();
-        targets.bind(view.screen, RenderTargets::imageOf(view.pass));
+        targets.bind(view.screen, display::gl::RenderTargets::imageOf(view.pass));
         ViewStats stats = pass(view);
         stats.cpuMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
         frame.add(stats);
@@ -36,4 +36,4 @@ std::vector<ViewStats> statsPerScreen(const std::vector<display::ScreenView>& vi
     return out;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::render::gl

@@ -10,7 +10,7 @@
 #include <functional>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::render::gl {
 
 // What one view draws: everything a caller does with the view's target bound (scene geometry,
 // then its own passes), returning what it submitted. ViewStats::cpuMs is set by forEachView.
@@ -22,7 +22,7 @@ using ViewPass = std::function<ViewStats(const display::ScreenView&)>;
 // returned frame (FrameStats::add; cpuMs and gpuMs of the frame are left to the caller).
 // Afterwards the scissor test is off and the colour mask all on. Needs the targets' context
 // current; clearing the targets is the caller's (SceneRenderer::beginFrame).
-FrameStats forEachView(const std::vector<display::ScreenView>& views, const RenderTargets& targets,
+FrameStats forEachView(const std::vector<display::ScreenView>& views, const display::gl::RenderTargets& targets,
                        const ViewPass& pass);
 
 // Per display screen (index = screen, `screenCount` entries): the sum of every field of its
@@ -31,4 +31,4 @@ FrameStats forEachView(const std::vector<display::ScreenView>& views, const Rend
 std::vector<ViewStats> statsPerScreen(const std::vector<display::ScreenView>& views, const FrameStats& frame,
                                       std::size_t screenCount);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::render::gl

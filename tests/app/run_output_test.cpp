@@ -11,7 +11,7 @@
 
 #include <cstdlib>
 
-namespace cavewall::gl {
+namespace cavewall::app::gl {
 namespace {
 
 using walkthrough::FrameResult;
@@ -120,4 +120,4 @@ TEST(RunOutput, AnUnwritableFolderIsAClearError) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::app::gl

@@ -14,7 +14,7 @@
 #include <filesystem>
 #include <iostream>
 
-namespace cavewall::gl {
+namespace cavewall::render::gl {
 namespace {
 
 const std::filesystem::path kReal = CAVEWALL_REAL_SCENES;
@@ -77,4 +77,4 @@ TEST_F(CompressedScenes, RenderLikeTheOriginals) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::render::gl

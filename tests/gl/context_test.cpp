@@ -9,7 +9,7 @@
 
 #include <iostream>
 
-namespace cavewall::gl {
+namespace cavewall::display::gl {
 namespace {
 
 using ::testing::HasSubstr;
@@ -71,7 +71,7 @@ TEST_F(HeadlessContext, EveryOfferedPlatformDrawsTheSamePicture) {
     const display::Display cave(config::loadDisplayConfig((testing::testConfigFolder() / "cave4_128.json").string()));
     const scenes::Scene scene = scenes::builtinTestScene();
     const display::HeadPose head{{0.2, 1.5, -0.3}, glm::dquat(1, 0, 0, 0)};
-    const scenes::Image reference = Snapshotter(cave, scene, *context).render(head).foldout;
+    const scenes::Image reference = render::gl::Snapshotter(cave, scene, *context).render(head).foldout;
     context.reset();
     int offered = 0;
     for (auto [platform, name] :
@@ -91,7 +91,7 @@ TEST_F(HeadlessContext, EveryOfferedPlatformDrawsTheSamePicture) {
         }
         ++offered;
         std::cout << "offered: " << c->info().provider << "\n";
-        const scenes::Image image = Snapshotter(cave, scene, *c).render(head).foldout;
+        const scenes::Image image = render::gl::Snapshotter(cave, scene, *c).render(head).foldout;
         EXPECT_TRUE(metrics::compareImages(image, reference).passes());
     }
     EXPECT_GE(offered, 1);  // at least the one Auto picked
@@ -114,4 +114,4 @@ TEST(WindowRequests, OneWindowPerScreenSizedByItsOutput) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::display::gl

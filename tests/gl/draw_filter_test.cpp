@@ -14,7 +14,7 @@
 
 #include <cmath>
 
-namespace cavewall::gl {
+namespace cavewall::render::gl {
 namespace {
 
 const glm::ivec4 kRed{255, 0, 0, 255}, kGreen{0, 255, 0, 255}, kBlue{0, 0, 255, 255};
@@ -66,11 +66,11 @@ protected:
     // Renders the single view through beginFrame + renderView, the walkthrough's path.
     Result render(const scenes::Scene& scene, const render::DrawFilter& filter) {
         const display::Display d(oneScreen());
-        const RenderTargets targets(d, *context);
+        const display::gl::RenderTargets targets(d, *context);
         SceneRenderer renderer(scene, unlit());
         const display::ScreenView view = d.views({{0, 0, 0}, glm::dquat(1, 0, 0, 0)}).at(0);
         renderer.beginFrame(targets);
-        targets.bind(view.screen, RenderTargets::imageOf(view.pass));
+        targets.bind(view.screen, display::gl::RenderTargets::imageOf(view.pass));
         const ViewStats stats = renderer.renderView(view, glm::dmat4(1.0), filter);
         return {targets.read(0, 0), stats};
     }
@@ -151,11 +151,11 @@ protected:
     void SetUp() override {
         DrawFilterTest::SetUp();
         if (!context) return;
-        color = createTexture(GL_TEXTURE_2D);
+        color = display::gl::createTexture(GL_TEXTURE_2D);
         glTextureStorage2D(color.id(), 1, GL_SRGB8_ALPHA8, 64, 64);
-        depth = createTexture(GL_TEXTURE_2D);
+        depth = display::gl::createTexture(GL_TEXTURE_2D);
         glTextureStorage2D(depth.id(), 1, GL_DEPTH_COMPONENT32F, 64, 64);
-        framebuffer = createFramebuffer();
+        framebuffer = display::gl::createFramebuffer();
         glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, color.id(), 0);
         glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
     }
@@ -173,9 +173,9 @@ protected:
         SceneRenderer renderer(scene, unlit());
         ViewTarget target{framebuffer.id(), {0, 0, 64, 64}, glm::vec4(0.0f), glm::bvec4(true)};
         last = renderer.renderFrustum(frustum, worldFromFrame, target, filter);
-        return readFramebuffer(framebuffer.id(), GL_COLOR_ATTACHMENT0, {64, 64}, "bake");
+        return display::gl::readFramebuffer(framebuffer.id(), GL_COLOR_ATTACHMENT0, {64, 64}, "bake");
     }
-    GlObject color, depth, framebuffer;
+    display::gl::GlObject color, depth, framebuffer;
     ViewStats last;
 };
 
@@ -208,7 +208,7 @@ TEST_F(RenderFrustumTest, BlendedObjectsLeaveTheirCoverageInAlpha) {
 TEST_F(DrawFilterTest, RenderSumsViewsAndReportsGpuTimeOnceAvailable) {
     const scenes::Scene scene = threeSquares();
     const display::Display d(oneScreen());
-    const RenderTargets targets(d, *context);
+    const display::gl::RenderTargets targets(d, *context);
     SceneRenderer renderer(scene, unlit());
     const auto views = d.views({{0, 0, 0}, glm::dquat(1, 0, 0, 0)});
     FrameStats stats = renderer.render(views, targets);
@@ -232,4 +232,4 @@ TEST_F(DrawFilterTest, RenderSumsViewsAndReportsGpuTimeOnceAvailable) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::render::gl

@@ -31,7 +31,7 @@ bool ContextMark::current() const { return glIsTexture(_texture) == GL_TRUE; }
 
 void GlTest::SetUp() {
     try {
-        context = gl::createHeadlessContext();
+        context = display::gl::createHeadlessContext();
     } catch (const Error& e) {
         if (onCi()) FAIL() << "CI=true: a headless OpenGL context is required: " << e.what();
         GTEST_SKIP() << e.what();

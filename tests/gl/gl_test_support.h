@@ -27,7 +27,7 @@ bool onCi();
 
 // A texture made in the context current when the mark is made. Texture names of one context are
 // no textures in another (the contexts here share nothing), so current() tells whether that
-// context is current on this thread, whatever gl::Context::current() says. The texture goes with
+// context is current on this thread, whatever display::gl::Context::current() says. The texture goes with
 // its context.
 class ContextMark {
 public:
@@ -43,7 +43,7 @@ protected:
     void SetUp() override;
     void TearDown() override { context.reset(); }
 
-    std::unique_ptr<gl::Context> context;
+    std::unique_ptr<display::gl::Context> context;
 };
 
 // Where failure images go: $CAVEWALL_TEST_OUTPUT/<name> (or the system temp folder).

@@ -19,7 +19,7 @@
 
 #include <algorithm>
 
-namespace cavewall::gl {
+namespace cavewall::render::gl {
 namespace {
 
 constexpr int kPixels = 256;
@@ -75,7 +75,7 @@ class LodTest : public testing::GlTest {
 protected:
     Frame render(const scenes::Scene& scene, double lodPixels, std::size_t budget = 0) {
         const display::Display d(testing::oneScreenDisplay(kPixels));
-        const RenderTargets targets(d, *context);
+        const display::gl::RenderTargets targets(d, *context);
         SceneRenderer renderer(scene, flatWhite(lodPixels));
         const std::vector<display::ScreenView> views = d.views({{0, 0, 0}, glm::dquat(1, 0, 0, 0)});
         Frame f;
@@ -108,4 +108,4 @@ TEST_F(LodTest, SilhouettesMoveByAtMostTheTolerance) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::render::gl

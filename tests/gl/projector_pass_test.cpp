@@ -15,8 +15,8 @@ constexpr int kSize = 64;
 
 // An sRGB texture holding `image` (rows top first, as read back), so that reading the texture's
 // framebuffer gives `image` again.
-gl::GlObject sourceTexture(const scenes::Image& image) {
-    gl::GlObject t = gl::createTexture(GL_TEXTURE_2D);
+display::gl::GlObject sourceTexture(const scenes::Image& image) {
+    display::gl::GlObject t = display::gl::createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(t.id(), 1, GL_SRGB8_ALPHA8, image.width, image.height);
     for (int row = 0; row < image.height; ++row)  // GL's row 0 is the bottom
         glTextureSubImage2D(t.id(), 0, 0, image.height - 1 - row, image.width, 1, GL_RGBA, GL_UNSIGNED_BYTE,
@@ -40,8 +40,8 @@ scenes::Image pattern(int size) {
 }
 
 scenes::Image warped(const display::ScreenCorrection& c, const scenes::Image& image) {
-    const gl::GlObject source = sourceTexture(image);
-    gl::ProjectorPass pass(c, {image.width, image.height});
+    const display::gl::GlObject source = sourceTexture(image);
+    display::gl::ProjectorPass pass(c, {image.width, image.height});
     pass.apply(source.id());
     return pass.read();
 }

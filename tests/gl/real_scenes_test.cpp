@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <set>
 
-namespace cavewall::gl {
+namespace cavewall::render::gl {
 namespace {
 
 const std::filesystem::path kReal = std::filesystem::path(CAVEWALL_REAL_SCENES);
@@ -173,4 +173,4 @@ TEST_F(RealScenes, SponzaWithoutNormalsIsLitSensibly) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::render::gl

@@ -8,7 +8,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-namespace cavewall::gl {
+namespace cavewall::render::gl {
 namespace {
 
 using testing::expectMatchesGolden;
@@ -30,7 +30,7 @@ TEST_F(RenderGolden, Cave4ScreensAndFoldoutFromAnOffCentreEye) {
     Snapshotter snapshotter(cave, scenes::builtinTestScene(), *context);
     const Snapshot frame = snapshotter.render(offCentreHead());
     ASSERT_EQ(frame.images.size(), 4u);
-    for (const ScreenImage& image : frame.images) {
+    for (const scenes::ScreenImage& image : frame.images) {
         SCOPED_TRACE(image.stem);
         expectMatchesGolden(image.pixels, "cave4-" + image.stem);
     }
@@ -63,4 +63,4 @@ TEST_F(RenderGolden, SideBySidePutsTheEyesIntoTheTwoHalves) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::render::gl

@@ -18,7 +18,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace cavewall::gl {
+namespace cavewall::render::gl {
 namespace {
 
 using ::testing::HasSubstr;
@@ -159,7 +159,7 @@ TEST_F(SceneRendererTest, EveryFrameStartsFromTheClearColourWhicheverViewsAreDra
     scenes::Scene scene;
     addQuad(scene, {0, 0, -2}, 40.0f, addMaterial(scene, {1, 0, 0, 1}));  // fills the screen
     const display::Display d(oneScreen());
-    const RenderTargets targets(d, *context);
+    const display::gl::RenderTargets targets(d, *context);
     SceneRenderer renderer(scene, unlit());
     const std::vector<display::ScreenView> views = d.views(kEyeAtOrigin);
     const auto covered = [&](glm::ivec4 colour) {
@@ -264,23 +264,25 @@ TEST_F(SceneRendererTest, QuadBufferStereoWithoutStereoWindowsIsAClearError) {
     config::DisplayConfig c = oneScreen();
     c.stereo = config::StereoMode::QuadBuffer;
     const display::Display d(c);
-    EXPECT_THAT([&] { RenderTargets targets(d, *context); },
+    EXPECT_THAT([&] { display::gl::RenderTargets targets(d, *context); },
                 ThrowsMessage<Error>(HasSubstr("stereo mode quad-buffer needs windows with quad-buffer stereo")));
 }
 
 TEST_F(SceneRendererTest, ShaderErrorsNameTheStageAndCarryTheLog) {
     const char* vertex = "#version 450 core\nvoid main() { gl_Position = vec4(0.0); }\n";
-    EXPECT_THAT([&] { buildProgram("broken", vertex, "#version 450 core\nvoid main() { undefined_thing; }\n"); },
-                ThrowsMessage<Error>(HasSubstr("shader program 'broken': fragment stage failed to compile: ")));
+    EXPECT_THAT(
+        [&] { display::gl::buildProgram("broken", vertex, "#version 450 core\nvoid main() { undefined_thing; }\n"); },
+        ThrowsMessage<Error>(HasSubstr("shader program 'broken': fragment stage failed to compile: ")));
     EXPECT_THAT(
         [&] {
-            buildProgram("broken", "#version 450 core\nvoid main() { x }\n", "#version 450 core\nvoid main() {}\n");
+            display::gl::buildProgram("broken", "#version 450 core\nvoid main() { x }\n",
+                                      "#version 450 core\nvoid main() {}\n");
         },
         ThrowsMessage<Error>(HasSubstr("vertex stage failed to compile")));
-    const GlObject ok = buildProgram("empty", vertex, "#version 450 core\nvoid main() {}\n");
-    EXPECT_THAT([&] { uniformLocation(ok.id(), "empty", "uMissing"); },
+    const display::gl::GlObject ok = display::gl::buildProgram("empty", vertex, "#version 450 core\nvoid main() {}\n");
+    EXPECT_THAT([&] { display::gl::uniformLocation(ok.id(), "empty", "uMissing"); },
                 ThrowsMessage<Error>(HasSubstr("expected an active uniform 'uMissing'")));
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::render::gl

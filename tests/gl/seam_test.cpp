@@ -13,7 +13,7 @@
 #include <iostream>
 #include <optional>
 
-namespace cavewall::gl {
+namespace cavewall::render::gl {
 namespace {
 
 // A long thin white bar beyond the front-left corner, tilted about two axes so that it runs
@@ -78,4 +78,4 @@ TEST_F(Seam, BarMeetsItselfAtTheFrontLeftEdgeFromAnOffCentreEye) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::render::gl

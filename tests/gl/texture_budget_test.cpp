@@ -8,7 +8,7 @@
 #include "tests/gl/gl_test_support.h"
 #include "tests/scenes/texture_scene.h"
 
-namespace cavewall::gl {
+namespace cavewall::render::gl {
 namespace {
 
 const display::HeadPose kEye{{0, 0, 0}, glm::dquat(1, 0, 0, 0)};
@@ -53,4 +53,4 @@ TEST_F(TextureBudget, ReducedTexturesRenderCloseToFullSizeOnes) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::render::gl

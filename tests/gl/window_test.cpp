@@ -11,7 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-namespace cavewall::gl {
+namespace cavewall::test {
 namespace {
 
 // Needs an X server: skipped without one, except under CI.
@@ -61,4 +61,4 @@ TEST_F(Window, QuadBufferWithoutStereoVisualsIsAClearError) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::test

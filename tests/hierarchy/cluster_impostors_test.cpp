@@ -28,9 +28,9 @@ namespace {
 scenes::Scene threeBoxes() {
     scenes::Scene s;
     s.name = "three-boxes";
-    gl::testing::addBox(s, {1.0f, 1.5f, 1.0f}, {0.9f, 0.1f, 0.1f, 1}, {0.0, 0.75, 0.0}, "red");
-    gl::testing::addBox(s, {0.6f, 0.6f, 0.6f}, {0.1f, 0.8f, 0.2f, 1}, {1.5, 0.3, 0.5}, "green");
-    gl::testing::addBox(s, {0.5f, 1.0f, 0.5f}, {0.1f, 0.2f, 0.9f, 1}, {0.5, 0.5, -1.5}, "blue");
+    walls::gl::testing::addBox(s, {1.0f, 1.5f, 1.0f}, {0.9f, 0.1f, 0.1f, 1}, {0.0, 0.75, 0.0}, "red");
+    walls::gl::testing::addBox(s, {0.6f, 0.6f, 0.6f}, {0.1f, 0.8f, 0.2f, 1}, {1.5, 0.3, 0.5}, "green");
+    walls::gl::testing::addBox(s, {0.5f, 1.0f, 0.5f}, {0.1f, 0.2f, 0.9f, 1}, {0.5, 0.5, -1.5}, "blue");
     return s;
 }
 
@@ -54,8 +54,8 @@ TEST_F(ClusterImpostorsTest, ATexturedBoxShowsFullDetailAtItsSamplingEyeAndIsCac
     hierarchy::ClusterModel model = modelOf(scene);
     ASSERT_EQ(model.tree.root, 3);  // three leaves, then the cluster
     // Face textures of 64 texels along the longer side, as many as the 64-pixel image's face.
-    const gl::ClusterBakeSettings settings{64, 64, 0.35f};
-    gl::ClusterImpostors impostors(scene, model, settings, cache);
+    const hierarchy::gl::ClusterBakeSettings settings{64, 64, 0.35f};
+    hierarchy::gl::ClusterImpostors impostors(scene, model, settings, cache);
     EXPECT_EQ(impostors.stats().made, 1);
     ASSERT_TRUE(model.hasImpostors[3]);
     const scenes::Bounds box = hierarchy::impostorBox(model.tree.nodes[3].bounds);
@@ -83,7 +83,7 @@ TEST_F(ClusterImpostorsTest, ATexturedBoxShowsFullDetailAtItsSamplingEyeAndIsCac
     EXPECT_GT(sumTextured, sumAverage);
     // Again with the same cache: read, not made, the same accuracies.
     hierarchy::ClusterModel again = modelOf(scene);
-    gl::ClusterImpostors cached(scene, again, settings, cache);
+    hierarchy::gl::ClusterImpostors cached(scene, again, settings, cache);
     EXPECT_EQ(cached.stats().made, 0);
     EXPECT_EQ(cached.stats().reused, 1);
     EXPECT_EQ(again.accuracy[3], a);
@@ -92,7 +92,7 @@ TEST_F(ClusterImpostorsTest, ATexturedBoxShowsFullDetailAtItsSamplingEyeAndIsCac
     moved.objects[0].worldFromModel[3].x += 0.25;
     moved.updateObjectBounds();
     hierarchy::ClusterModel third = modelOf(moved);
-    gl::ClusterImpostors remade(moved, third, settings, cache);
+    hierarchy::gl::ClusterImpostors remade(moved, third, settings, cache);
     EXPECT_EQ(remade.stats().made, 1);
 }
 
@@ -103,9 +103,9 @@ TEST_F(ClusterImpostorsTest, AFlippedOrStaleImpostorIsMadeAgainAndSaidOnce) {
     const scenes::Scene scene = threeBoxes();
     const std::filesystem::path cache = testOutputFolder("cluster-impostors-check") / "cache";
     std::filesystem::remove_all(cache);
-    const gl::ClusterBakeSettings settings{16, 16, 0.35f};
+    const hierarchy::gl::ClusterBakeSettings settings{16, 16, 0.35f};
     hierarchy::ClusterModel first = modelOf(scene);
-    ASSERT_EQ(gl::ClusterImpostors(scene, first, settings, cache).stats().made, 1);
+    ASSERT_EQ(hierarchy::gl::ClusterImpostors(scene, first, settings, cache).stats().made, 1);
     const std::filesystem::path folder = std::filesystem::directory_iterator(cache / "clusters")->path();
     const std::filesystem::path file = folder / "f2r3.tx";
     const auto stamp = std::filesystem::last_write_time(file);
@@ -118,7 +118,7 @@ TEST_F(ClusterImpostorsTest, AFlippedOrStaleImpostorIsMadeAgainAndSaidOnce) {
     }
     std::filesystem::last_write_time(file, stamp);
     hierarchy::ClusterModel second = modelOf(scene);
-    const gl::ClusterImpostors flipped(scene, second, settings, cache);
+    const hierarchy::gl::ClusterImpostors flipped(scene, second, settings, cache);
     EXPECT_EQ(flipped.stats().made, 1);
     EXPECT_EQ(flipped.stats().checkFailures, 1);
     ASSERT_EQ(flipped.stats().warnings.size(), 1u);
@@ -126,7 +126,7 @@ TEST_F(ClusterImpostorsTest, AFlippedOrStaleImpostorIsMadeAgainAndSaidOnce) {
                 ::testing::StartsWith(file.string() + ": content check failed (expected hash "));
     EXPECT_THAT(flipped.stats().warnings[0], ::testing::EndsWith("(making the cluster's impostors again)"));
     hierarchy::ClusterModel third = modelOf(scene);
-    const gl::ClusterImpostors again(scene, third, settings, cache);
+    const hierarchy::gl::ClusterImpostors again(scene, third, settings, cache);
     EXPECT_EQ(again.stats().reused, 1);
     EXPECT_TRUE(again.stats().warnings.empty());
 
@@ -136,7 +136,7 @@ TEST_F(ClusterImpostorsTest, AFlippedOrStaleImpostorIsMadeAgainAndSaidOnce) {
     j.erase("files");
     std::ofstream(folder / "cluster.json") << j.dump();
     hierarchy::ClusterModel fourth = modelOf(scene);
-    const gl::ClusterImpostors stale(scene, fourth, settings, cache);
+    const hierarchy::gl::ClusterImpostors stale(scene, fourth, settings, cache);
     EXPECT_EQ(stale.stats().made, 1);
     EXPECT_EQ(stale.stats().stale, 1);
     ASSERT_EQ(stale.stats().warnings.size(), 1u);
@@ -161,7 +161,7 @@ TEST_F(ClusterImpostorsTest, AFullDiskLeavesNothingTheNextRunTrusts) {
     const scenes::Scene scene = threeBoxes();
     const std::filesystem::path cache = testOutputFolder("cluster-impostors-full") / "cache";
     std::filesystem::remove_all(cache);
-    const gl::ClusterBakeSettings settings{64, 16, 0.35f};
+    const hierarchy::gl::ClusterBakeSettings settings{64, 16, 0.35f};
     rlimit before{};
     ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &before), 0);
     const auto handler = std::signal(SIGXFSZ, SIG_IGN);  // a write past the limit fails with EFBIG
@@ -171,7 +171,7 @@ TEST_F(ClusterImpostorsTest, AFullDiskLeavesNothingTheNextRunTrusts) {
     hierarchy::ClusterModel first = modelOf(scene);
     std::string message;
     try {
-        gl::ClusterImpostors impostors(scene, first, settings, cache);
+        hierarchy::gl::ClusterImpostors impostors(scene, first, settings, cache);
     } catch (const Error& e) {
         message = e.what();
     }
@@ -186,7 +186,7 @@ TEST_F(ClusterImpostorsTest, AFullDiskLeavesNothingTheNextRunTrusts) {
         EXPECT_EQ(name.find(".tmp"), std::string::npos);
     }
     hierarchy::ClusterModel second = modelOf(scene);
-    const gl::ClusterImpostors again(scene, second, settings, cache);
+    const hierarchy::gl::ClusterImpostors again(scene, second, settings, cache);
     EXPECT_EQ(again.stats().made, 1);
     EXPECT_TRUE(again.stats().warnings.empty());
 }
@@ -205,7 +205,7 @@ TEST_F(ClusterImpostorsTest, AReadOnlyCacheFolderIsNamed) {
     hierarchy::ClusterModel model = modelOf(scene);
     EXPECT_THAT(
         [&] {
-            gl::ClusterImpostors(scene, model, {16, 16, 0.35f}, cache);
+            hierarchy::gl::ClusterImpostors(scene, model, {16, 16, 0.35f}, cache);
         },
         ::testing::ThrowsMessage<Error>(::testing::HasSubstr((cache / "clusters").string() + "/")));
     std::filesystem::permissions(cache, std::filesystem::perms::owner_all);
@@ -217,29 +217,34 @@ TEST_F(ClusterImpostorsTest, CostsAreMeasuredPositiveAndCachedPerRendererAndReso
     const std::filesystem::path cache = testOutputFolder("cluster-costs") / "cache";
     std::filesystem::remove_all(cache);
     hierarchy::ClusterModel model = modelOf(scene);
-    gl::ClusterImpostors impostors(scene, model, {16, 32, 0.35f}, cache);
-    gl::SceneRenderer renderer(scene);
-    const gl::MeasuredCosts first = gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache);
+    hierarchy::gl::ClusterImpostors impostors(scene, model, {16, 32, 0.35f}, cache);
+    render::gl::SceneRenderer renderer(scene);
+    const hierarchy::gl::MeasuredCosts first =
+        hierarchy::gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache);
     EXPECT_FALSE(first.cached);
     EXPECT_GT(first.costs.msPerTriangle, 0.0);
     EXPECT_GE(first.costs.msPerObject, 0.0);
     EXPECT_GT(first.costs.texturedBoxMs, 0.0);
     EXPECT_GT(first.costs.averageBoxMs, 0.0);
-    const gl::MeasuredCosts second = gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache);
+    const hierarchy::gl::MeasuredCosts second =
+        hierarchy::gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache);
     EXPECT_TRUE(second.cached);
     EXPECT_EQ(second.costs, first.costs);
     EXPECT_EQ(second.file, first.file);
     // Another renderer measures again.
-    EXPECT_FALSE(gl::measureClusterCosts(renderer, impostors, model, scene, "other renderer", cache).cached);
+    EXPECT_FALSE(hierarchy::gl::measureClusterCosts(renderer, impostors, model, scene, "other renderer", cache).cached);
     // So does another resolution (the display's own fill), into its own file; 256 is the default.
-    const gl::MeasuredCosts at64 =
-        gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache, 64);
+    const hierarchy::gl::MeasuredCosts at64 =
+        hierarchy::gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache, 64);
     EXPECT_FALSE(at64.cached);
     EXPECT_NE(at64.file, first.file);
-    EXPECT_TRUE(gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache, 64).cached);
-    EXPECT_TRUE(gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache, 256).cached);
-    EXPECT_THAT([&] { gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache, 0); },
-                ::testing::ThrowsMessage<Error>(::testing::HasSubstr("resolution: expected 1 to 16384 pixels, got 0")));
+    EXPECT_TRUE(
+        hierarchy::gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache, 64).cached);
+    EXPECT_TRUE(
+        hierarchy::gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache, 256).cached);
+    EXPECT_THAT(
+        [&] { hierarchy::gl::measureClusterCosts(renderer, impostors, model, scene, "test renderer", cache, 0); },
+        ::testing::ThrowsMessage<Error>(::testing::HasSubstr("resolution: expected 1 to 16384 pixels, got 0")));
 }
 
 }  // namespace

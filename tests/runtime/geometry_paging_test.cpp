@@ -34,15 +34,15 @@ class GeometryPagingTest : public GlTest {};
 TEST_F(GeometryPagingTest, UploadingAndFreeingAGroupMovesTheGpuBytesByItsSize) {
     const SmallPlant& scene = twoCells();
     const std::vector<std::size_t> cellBytes = walls::cellGeometryBytes(scene.scene, 2);
-    gl::RenderSettings settings;
+    render::gl::RenderSettings settings;
     settings.pagedCells = 2;
-    gl::SceneRenderer renderer(scene.scene, settings);
-    gl::GpuScene& gpu = renderer.gpu();
+    render::gl::SceneRenderer renderer(scene.scene, settings);
+    render::gl::GpuScene& gpu = renderer.gpu();
     EXPECT_EQ(gpu.residentPagedBytes(), 0u);
     const scenes::PagedMeshGroups& groups = gpu.meshGroups();
     ASSERT_EQ(groups.groupCount(), 2);
     const std::vector<std::size_t> groupBytes = walls::groupGeometryBytes(scene.scene, groups);
-    for (int g : {0, 1}) gpu.uploadGroup(g, gl::packMeshes(scene.scene, nullptr, groups.groupMeshes[g]));
+    for (int g : {0, 1}) gpu.uploadGroup(g, render::gl::packMeshes(scene.scene, nullptr, groups.groupMeshes[g]));
     EXPECT_TRUE(gpu.cellResident(0) && gpu.cellResident(1));
     EXPECT_EQ(gpu.residentPagedBytes(), cellBytes[0] + cellBytes[1]);
     int redBox = -1;
@@ -85,12 +85,13 @@ struct AisleWalk {
     double minMB = 1e30, peakMB = 0.0;
     long evictions = 0, drops = 0;
 };
-AisleWalk walkNorthAisle(const scenes::Scene& scene, const SmallPlant& plant, gl::Context& context, double budgetMB) {
+AisleWalk walkNorthAisle(const scenes::Scene& scene, const SmallPlant& plant, display::gl::Context& context,
+                         double budgetMB) {
     const display::Display display = testDisplay(32);
-    gl::WalkthroughOptions options;
+    walkthrough::gl::WalkthroughOptions options;
     options.synchronousPaging = true;
     options.geometryBudgetMB = budgetMB;
-    gl::Walkthrough walkthrough(scene, plant.description, display, context, plant.walls, options);
+    walkthrough::gl::Walkthrough walkthrough(scene, plant.description, display, context, plant.walls, options);
     AisleWalk w;
     double previousMB = 0.0;
     long previousEvictions = 0, previousPageIns = 0;
@@ -123,12 +124,12 @@ TEST_F(GeometryPagingTest, TheWalkthroughFreesEvictedGroupsOnTheGpu) {
     const SmallPlant& plant = smallPlant();
     const int cells = static_cast<int>(plant.description.cells.size());
     const scenes::Scene scene = unshared(plant.scene, cells);
-    ASSERT_EQ(gl::SceneRenderer(scene,
-                                [&] {
-                                    gl::RenderSettings s;
-                                    s.pagedCells = cells;
-                                    return s;
-                                }())
+    ASSERT_EQ(render::gl::SceneRenderer(scene,
+                                        [&] {
+                                            render::gl::RenderSettings s;
+                                            s.pagedCells = cells;
+                                            return s;
+                                        }())
                   .gpu()
                   .meshGroups()
                   .groupCount(),
@@ -165,11 +166,11 @@ TEST_F(GeometryPagingTest, AMeshSharedByCellsIsStoredOnce) {
 TEST_F(GeometryPagingTest, FramesEqualTheUnpagedOnesWhenTheNeededCellsAreResident) {
     const SmallPlant& plant = smallPlant();
     const display::Display display = testDisplay(64);
-    gl::WalkthroughOptions options;
+    walkthrough::gl::WalkthroughOptions options;
     options.synchronousPaging = true;
-    gl::Walkthrough whole(plant.scene, plant.description, display, *context, plant.walls, options);
+    walkthrough::gl::Walkthrough whole(plant.scene, plant.description, display, *context, plant.walls, options);
     options.geometryBudgetMB = 64.0;
-    gl::Walkthrough paged(plant.scene, plant.description, display, *context, plant.walls, options);
+    walkthrough::gl::Walkthrough paged(plant.scene, plant.description, display, *context, plant.walls, options);
     int frames = 0;
     for (double x = -29.5; x < -20.0; x += 1.5, ++frames) {
         SCOPED_TRACE(x);
@@ -180,8 +181,8 @@ TEST_F(GeometryPagingTest, FramesEqualTheUnpagedOnesWhenTheNeededCellsAreResiden
         EXPECT_EQ(b.geometryMisses, 0);
         EXPECT_GT(b.geometry.resident, 0);
         EXPECT_EQ(a.geometryTriangles, b.geometryTriangles);
-        const metrics::ImageComparison c =
-            metrics::compareImages(gl::foldoutOf(display, b.images), gl::foldoutOf(display, a.images));
+        const metrics::ImageComparison c = metrics::compareImages(display::gl::foldoutOf(display, b.images),
+                                                                  display::gl::foldoutOf(display, a.images));
         EXPECT_TRUE(c.passes()) << c.describe();
     }
     EXPECT_GE(frames, 6);
@@ -191,11 +192,14 @@ TEST_F(GeometryPagingTest, FramesEqualTheUnpagedOnesWhenTheNeededCellsAreResiden
 TEST_F(GeometryPagingTest, WarpTransitionWithPagingIsRefusedWithAMessage) {
     const SmallPlant& scene = twoCells();
     const display::Display display = testDisplay(16);
-    gl::WalkthroughOptions options;
+    walkthrough::gl::WalkthroughOptions options;
     options.geometryBudgetMB = 1.0;
     options.transition = walkthrough::Transition::Warp;
-    EXPECT_THAT([&] { gl::Walkthrough w(scene.scene, scene.description, display, *context, scene.walls, options); },
-                ::testing::ThrowsMessage<Error>(::testing::HasSubstr("expected transition blend, got warp")));
+    EXPECT_THAT(
+        [&] {
+            walkthrough::gl::Walkthrough w(scene.scene, scene.description, display, *context, scene.walls, options);
+        },
+        ::testing::ThrowsMessage<Error>(::testing::HasSubstr("expected transition blend, got warp")));
 }
 
 }  // namespace

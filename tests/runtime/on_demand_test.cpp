@@ -46,13 +46,14 @@ protected:
     }
 
     // A walkthrough drawing `baker`'s textures on cave4 at 32 x 32 per screen.
-    std::unique_ptr<gl::Walkthrough> walkthrough(gl::BackgroundBaker& baker) {
+    std::unique_ptr<walkthrough::gl::Walkthrough> walkthrough(walls::gl::BackgroundBaker& baker) {
         walls::WallSetup setup = scene.walls;
         setup.folder = baker.folder();
         setup.manifest = baker.manifest();
-        gl::WalkthroughOptions options;
+        walkthrough::gl::WalkthroughOptions options;
         options.baker = &baker;
-        return std::make_unique<gl::Walkthrough>(scene.scene, scene.description, display, *context, setup, options);
+        return std::make_unique<walkthrough::gl::Walkthrough>(scene.scene, scene.description, display, *context, setup,
+                                                              options);
     }
 
     const walkthrough::WallState* wallAB(const walkthrough::FrameResult& r) const {
@@ -64,7 +65,7 @@ protected:
     const SmallPlant& scene = twoCells();
     const display::Display display = testDisplay(32);
     std::filesystem::path root;
-    gl::BakeRequest request;
+    walls::gl::BakeRequest request;
     walkthrough::FrameInput in;
     std::optional<glm::dvec3> textured;
 };
@@ -73,10 +74,10 @@ TEST_F(OnDemandTest, FirstFrameBeforeTheBakeThenBakedTexturesThenNothingToBake) 
     const int total = static_cast<int>(scene.walls.plan.textures.size());
     ASSERT_GT(total, 1);
     std::latch open(1);
-    gl::BackgroundBakerOptions options;
+    walls::gl::BackgroundBakerOptions options;
     options.beforeBake = [&](int) { open.wait(); };
     {
-        gl::BackgroundBaker baker(scene.scene, scene.description, scene.walls, request, options);
+        walls::gl::BackgroundBaker baker(scene.scene, scene.description, scene.walls, request, options);
         EXPECT_TRUE(baker.manifest().textures.empty());
         EXPECT_EQ(baker.stats().missingAtStart, total);
         auto walk = walkthrough(baker);
@@ -120,7 +121,7 @@ TEST_F(OnDemandTest, FirstFrameBeforeTheBakeThenBakedTexturesThenNothingToBake) 
     }
 
     // A second run finds everything and bakes nothing.
-    gl::BackgroundBaker again(scene.scene, scene.description, scene.walls, request);
+    walls::gl::BackgroundBaker again(scene.scene, scene.description, scene.walls, request);
     EXPECT_EQ(static_cast<int>(again.manifest().textures.size()), total);
     EXPECT_EQ(again.stats().missingAtStart, 0);
     auto walk = walkthrough(again);
@@ -141,7 +142,7 @@ TEST_F(OnDemandTest, FirstFrameBeforeTheBakeThenBakedTexturesThenNothingToBake) 
 // back to the baker (rebake) and baked again, then drawn.
 TEST_F(OnDemandTest, AFileThatFailsItsContentCheckIsBakedAgain) {
     {
-        gl::BackgroundBaker first(scene.scene, scene.description, scene.walls, request);
+        walls::gl::BackgroundBaker first(scene.scene, scene.description, scene.walls, request);
         first.want({}, {}, *textured);
         first.waitIdle();
     }
@@ -159,7 +160,7 @@ TEST_F(OnDemandTest, AFileThatFailsItsContentCheckIsBakedAgain) {
         std::filesystem::last_write_time(folder / t.file, stamp);
     }
     request.trustStamps = true;
-    gl::BackgroundBaker baker(scene.scene, scene.description, scene.walls, request);
+    walls::gl::BackgroundBaker baker(scene.scene, scene.description, scene.walls, request);
     EXPECT_EQ(baker.stats().missingAtStart, 0);  // the stamps are unchanged: trusted at the start
     auto walk = walkthrough(baker);
     const walkthrough::FrameResult first = walk->renderFrame(in);
@@ -198,12 +199,12 @@ TEST_F(OnDemandTest, DepthWallsBakedOnDemandAreDrawnWithTheirDepths) {
     const walls::WallSetup depth =
         walls::prepareWalls(scene.scene, scene.description, walls::planOptionsFor(plan, walls::WallKind::Depth, 32));
     request.settings.kind = walls::WallKind::Depth;
-    gl::WalkthroughOptions options;
+    walkthrough::gl::WalkthroughOptions options;
     options.wallKind = walls::WallKind::Depth;
-    auto walkthrough = [&](walls::WallSetup setup, gl::BackgroundBaker* baker) {
+    auto walkthrough = [&](walls::WallSetup setup, walls::gl::BackgroundBaker* baker) {
         options.baker = baker;
-        return std::make_unique<gl::Walkthrough>(scene.scene, scene.description, display, *context, std::move(setup),
-                                                 options);
+        return std::make_unique<walkthrough::gl::Walkthrough>(scene.scene, scene.description, display, *context,
+                                                              std::move(setup), options);
     };
     // The eye off every texture's sampling point, where depth and flat walls differ.
     in.worldFromCave = cavePlacedAt(*textured + glm::dvec3(0.0, 0.0, 0.35));
@@ -211,7 +212,7 @@ TEST_F(OnDemandTest, DepthWallsBakedOnDemandAreDrawnWithTheirDepths) {
     std::vector<scenes::ScreenImage> onDemand;
     std::filesystem::path folder;
     {
-        gl::BackgroundBaker baker(scene.scene, scene.description, depth, request);
+        walls::gl::BackgroundBaker baker(scene.scene, scene.description, depth, request);
         walls::WallSetup setup = depth;
         setup.folder = folder = baker.folder();
         setup.manifest = baker.manifest();
@@ -265,9 +266,9 @@ TEST_F(OnDemandTest, DiskBudgetEvictsLeastRecentlyWantedFiles) {
     // Measure one texture's file on a first, unbudgeted bake of the same plan.
     std::uint64_t fileBytes = 0;
     {
-        gl::BakeRequest probe = request;
+        walls::gl::BakeRequest probe = request;
         probe.cache = root / "probe";
-        gl::BackgroundBaker baker(scene.scene, scene.description, scene.walls, probe);
+        walls::gl::BackgroundBaker baker(scene.scene, scene.description, scene.walls, probe);
         auto walk = walkthrough(baker);
         walk->renderFrame(in);
         baker.waitIdle();
@@ -275,9 +276,9 @@ TEST_F(OnDemandTest, DiskBudgetEvictsLeastRecentlyWantedFiles) {
             fileBytes = std::max(fileBytes, t.bytes);
     }
     ASSERT_GT(fileBytes, 0u);
-    gl::BackgroundBakerOptions options;
+    walls::gl::BackgroundBakerOptions options;
     options.cacheBudgetBytes = 5 * fileBytes;
-    gl::BackgroundBaker baker(scene.scene, scene.description, scene.walls, request, options);
+    walls::gl::BackgroundBaker baker(scene.scene, scene.description, scene.walls, request, options);
     auto walk = walkthrough(baker);
     // Walk over cell A facing A|B, row by row, then over cell B facing it back (the CAVE turned
     // by half a turn): the baker fills the budget with A's side first, so B's side must evict.
@@ -295,7 +296,7 @@ TEST_F(OnDemandTest, DiskBudgetEvictsLeastRecentlyWantedFiles) {
         for (const walkthrough::WallState& s : r.walls)
             EXPECT_TRUE(!s.textures.empty() || s.geometryWeight > 0.0) << "frame " << i << ", wall " << s.wall;
     }
-    const gl::BackgroundBakeStats stats = baker.stats();
+    const walls::gl::BackgroundBakeStats stats = baker.stats();
     EXPECT_GT(stats.evictions, 0) << "textures " << scene.walls.plan.textures.size() << ", baked " << stats.baked
                                   << ", cache MB " << stats.cacheMB << ", file " << fileBytes;
     const walls::BakeManifest listed = walls::readManifest(baker.folder());

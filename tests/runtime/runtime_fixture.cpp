@@ -58,10 +58,10 @@ std::unique_ptr<SmallPlant> makeBaked(const std::string& name, const walls::Plan
     p->sceneFile = folder / "scene.json";
     p->scene = scenes::loadSceneFile(p->sceneFile, &p->description);
     p->walls = walls::prepareWalls(p->scene, p->description, plan);
-    gl::BakeRequest request;
+    walls::gl::BakeRequest request;
     request.scene = p->sceneFile;
     request.cache = outputFolder() / "cache";
-    gl::BakeResult baked = gl::bakeWalls(p->scene, p->description, p->walls, request);
+    walls::gl::BakeResult baked = walls::gl::bakeWalls(p->scene, p->description, p->walls, request);
     p->walls.folder = baked.folder;
     p->walls.manifest = baked.manifest;
     return p;

@@ -61,9 +61,9 @@ TEST_F(WalkthroughTest, BothEyesAndAllScreensUseTheCyclopeanSelection) {
     }
     ASSERT_TRUE(head) << "no zone border along x = -26";
     const display::Display display = testDisplay(32, true, 0.2);
-    gl::WalkthroughOptions options;
+    walkthrough::gl::WalkthroughOptions options;
     options.synchronousPaging = true;
-    gl::Walkthrough walkthrough(plant.scene, plant.description, display, *context, plant.walls, options);
+    walkthrough::gl::Walkthrough walkthrough(plant.scene, plant.description, display, *context, plant.walls, options);
     walkthrough::FrameInput in;
     in.worldFromCave = cavePlacedAt(*head);
     const walkthrough::FrameResult r = walkthrough.renderFrame(in);
@@ -96,9 +96,9 @@ TEST_F(WalkthroughTest, GoldenFramesInTextureBlendAndGeometryZones) {
         {"runtime-geometry-zone", [](const Blend& b) { return b.geometryWeight == 1.0; }},
     };
     const display::Display display = testDisplay(96);
-    gl::WalkthroughOptions options;
+    walkthrough::gl::WalkthroughOptions options;
     options.synchronousPaging = true;
-    gl::Walkthrough walkthrough(plant.scene, plant.description, display, *context, plant.walls, options);
+    walkthrough::gl::Walkthrough walkthrough(plant.scene, plant.description, display, *context, plant.walls, options);
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
         const auto eye = findEye(c.want);
@@ -111,7 +111,7 @@ TEST_F(WalkthroughTest, GoldenFramesInTextureBlendAndGeometryZones) {
         ASSERT_NE(ab, nullptr);
         EXPECT_FALSE(ab->fallback);
         EXPECT_TRUE(c.want(Blend{wallAB, 0, -1, ab->textures, ab->geometryWeight}));
-        expectMatchesGolden(gl::foldoutOf(display, r.images), c.name);
+        expectMatchesGolden(display::gl::foldoutOf(display, r.images), c.name);
     }
 }
 
@@ -129,10 +129,10 @@ TEST_F(WalkthroughTest, ReadDepthGivesEachEyeWhatItSeesAndLeavesTheImages) {
     }
     ASSERT_TRUE(eye) << "no texture zone of A|B on z = 0";
     const display::Display display = testDisplay(32, true);
-    gl::WalkthroughOptions options;
+    walkthrough::gl::WalkthroughOptions options;
     options.synchronousPaging = true;
-    gl::Walkthrough walls(cells.scene, cells.description, display, *context, cells.walls, options);
-    gl::Walkthrough full(cells.scene, cells.description, display, *context, std::nullopt, options);
+    walkthrough::gl::Walkthrough walls(cells.scene, cells.description, display, *context, cells.walls, options);
+    walkthrough::gl::Walkthrough full(cells.scene, cells.description, display, *context, std::nullopt, options);
     walkthrough::FrameInput in;
     in.worldFromCave = cavePlacedAt(*eye);
     in.readImages = true;
@@ -162,11 +162,11 @@ TEST_F(WalkthroughTest, ReadDepthGivesEachEyeWhatItSeesAndLeavesTheImages) {
 
 TEST_F(WalkthroughTest, LevelsOfDetailKeepTheirToleranceAndTheTriangleBudget) {
     const display::Display display = testDisplay(64);
-    gl::WalkthroughOptions options;
+    walkthrough::gl::WalkthroughOptions options;
     options.synchronousPaging = true;
     options.render.lodPixels = 1.0;
-    gl::Walkthrough free(plant.scene, plant.description, display, *context, plant.walls, options);
-    gl::Walkthrough full(plant.scene, plant.description, display, *context, plant.walls);
+    walkthrough::gl::Walkthrough free(plant.scene, plant.description, display, *context, plant.walls, options);
+    walkthrough::gl::Walkthrough full(plant.scene, plant.description, display, *context, plant.walls);
     // Eyes along the north aisle, through texture, blend and geometry zones.
     std::vector<walkthrough::FrameInput> frames;
     for (double x = -36.0; x <= 36.0; x += 4.5) {
@@ -189,7 +189,7 @@ TEST_F(WalkthroughTest, LevelsOfDetailKeepTheirToleranceAndTheTriangleBudget) {
     }
     std::sort(loads.begin(), loads.end());
     options.triangleBudget = loads[loads.size() / 2];  // the median: the heavier half must coarsen
-    gl::Walkthrough capped(plant.scene, plant.description, display, *context, plant.walls, options);
+    walkthrough::gl::Walkthrough capped(plant.scene, plant.description, display, *context, plant.walls, options);
     int raised = 0;
     for (const walkthrough::FrameInput& in : frames) {
         const walkthrough::FrameResult r = capped.renderFrame(in);
@@ -232,25 +232,28 @@ double missingShare(const walkthrough::FrameResult& frame, const walkthrough::Fr
 // textures is a clear error, not a silent run without them.
 TEST_F(WalkthroughTest, TheControlRefusesTheWarpTransition) {
     const display::Display display = testDisplay(48);
-    gl::WalkthroughOptions options;
+    walkthrough::gl::WalkthroughOptions options;
     options.wallTextures = false;
     options.transition = walkthrough::Transition::Warp;
-    EXPECT_THAT([&] { gl::Walkthrough w(plant.scene, plant.description, display, *context, plant.walls, options); },
-                ::testing::ThrowsMessage<Error>(::testing::HasSubstr(
-                    "the control without wall textures draws no warp (expected transition blend, got warp)")));
+    EXPECT_THAT(
+        [&] {
+            walkthrough::gl::Walkthrough w(plant.scene, plant.description, display, *context, plant.walls, options);
+        },
+        ::testing::ThrowsMessage<Error>(::testing::HasSubstr(
+            "the control without wall textures draws no warp (expected transition blend, got warp)")));
 }
 
 TEST_F(WalkthroughTest, PagingUnderATinyBudgetNeverLeavesAWallMissing) {
     const SmallPlant& scene = twoCells();
     const display::Display display = testDisplay(48);
-    gl::WalkthroughOptions options;
+    walkthrough::gl::WalkthroughOptions options;
     options.textureBudgetMB = 1.0;                         // about 4 of its 10 textures: constant eviction
     options.uploadMBPerFrame = 0.001;                      // one texture per frame at most
     options.render.clearColor = {1.0f, 0.0f, 1.0f, 1.0f};  // magenta: nothing drawn
     GatedDecoder gate;
     options.decoder = [&gate](const std::filesystem::path& file) { return gate(file); };
-    gl::Walkthrough walls(scene.scene, scene.description, display, *context, scene.walls, options);
-    gl::Walkthrough geometry(scene.scene, scene.description, display, *context, std::nullopt, options);
+    walkthrough::gl::Walkthrough walls(scene.scene, scene.description, display, *context, scene.walls, options);
+    walkthrough::gl::Walkthrough geometry(scene.scene, scene.description, display, *context, std::nullopt, options);
     int fallbacks = 0, previous = 0, frames = 0;  // previous: walls that kept the last texture
     double worstMissing = 0.0;
     // Towards the wall through texture, blend and geometry zones, jumping 7 m along it every 8
@@ -288,7 +291,7 @@ TEST_F(WalkthroughTest, PagingUnderATinyBudgetNeverLeavesAWallMissing) {
 TEST_F(WalkthroughTest, TexturesSwappedOnDiskAfterTheCheckAreNeverDrawn) {
     const SmallPlant& scene = twoCells();
     const display::Display display = testDisplay(32);
-    gl::WalkthroughOptions options;
+    walkthrough::gl::WalkthroughOptions options;
     options.synchronousPaging = true;  // every wanted texture is paged in before the frame draws
     walls::WallSetup copy = scene.walls;
     copy.folder = testOutputFolder("walkthrough-swapped") / "bake";
@@ -299,7 +302,7 @@ TEST_F(WalkthroughTest, TexturesSwappedOnDiskAfterTheCheckAreNeverDrawn) {
     // The first place in A, facing the wall A|B, where the intact copy draws a texture on it.
     std::vector<int> drawn;
     {
-        gl::Walkthrough intact(scene.scene, scene.description, display, *context, copy, options);
+        walkthrough::gl::Walkthrough intact(scene.scene, scene.description, display, *context, copy, options);
         for (double x = -9.5; x < 0.0 && drawn.empty(); x += 0.5) {
             in.worldFromCave = cavePlacedAt({x, 1.7, 0.0});
             for (const walkthrough::WallState& s : intact.renderFrame(in).walls)
@@ -318,7 +321,7 @@ TEST_F(WalkthroughTest, TexturesSwappedOnDiskAfterTheCheckAreNeverDrawn) {
     std::filesystem::rename(copy.folder / a.file, copy.folder / "swap");
     std::filesystem::rename(copy.folder / b.file, copy.folder / a.file);
     std::filesystem::rename(copy.folder / "swap", copy.folder / b.file);
-    gl::Walkthrough swapped(scene.scene, scene.description, display, *context, copy, options);
+    walkthrough::gl::Walkthrough swapped(scene.scene, scene.description, display, *context, copy, options);
     std::vector<std::string> warnings;
     long refused = 0;
     for (int frame = 0; frame < 4; ++frame) {

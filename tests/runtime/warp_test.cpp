@@ -71,10 +71,10 @@ const SmallPlant& stripes(double alphaDeg) {
     plan.minZoneSize = 2.0;
     plan.pixelsPerDegree = 4.0;
     p->walls = walls::prepareWalls(p->scene, p->description, plan);
-    gl::BakeRequest request;
+    walls::gl::BakeRequest request;
     request.scene = p->sceneFile;
     request.cache = out / "cache";
-    const gl::BakeResult result = gl::bakeWalls(p->scene, p->description, p->walls, request);
+    const walls::gl::BakeResult result = walls::gl::bakeWalls(p->scene, p->description, p->walls, request);
     p->walls.folder = result.folder;
     p->walls.manifest = result.manifest;
     return *p;
@@ -139,17 +139,17 @@ protected:
     }
     walkthrough::FrameResult render(const SmallPlant& s, const walls::WallSetup& walls, glm::dvec3 eye,
                                     walkthrough::Transition transition) {
-        gl::WalkthroughOptions options;
+        walkthrough::gl::WalkthroughOptions options;
         options.synchronousPaging = true;
         options.transition = transition;
-        gl::Walkthrough walkthrough(s.scene, s.description, display, *context, walls, options);
+        walkthrough::gl::Walkthrough walkthrough(s.scene, s.description, display, *context, walls, options);
         walkthrough::FrameInput in;
         in.worldFromCave = cavePlacedAt(eye);
         in.readImages = true;
         return walkthrough.renderFrame(in);
     }
     const scenes::Image& front(const walkthrough::FrameResult& r) const {
-        for (const gl::ScreenImage& i : r.images)
+        for (const scenes::ScreenImage& i : r.images)
             if (i.screen == frontScreen()) return i.pixels;
         return r.images.front().pixels;
     }
@@ -241,7 +241,7 @@ TEST_F(WarpTest, AnEyeAtTheWallPlaneFallsBackToGeometryWithoutNaNOrBlackPixels) 
         EXPECT_EQ(r.walls[0].fallback, c.fallbacks > 0);
         // No NaN and nothing black anywhere: every pixel is at least as bright as the clear
         // colour (linear 0.02 is sRGB level 39).
-        for (const gl::ScreenImage& image : r.images) {
+        for (const scenes::ScreenImage& image : r.images) {
             int dark = 0;
             for (std::size_t i = 0; i < image.pixels.rgba.size(); i += 4)
                 dark += std::max({image.pixels.rgba[i], image.pixels.rgba[i + 1], image.pixels.rgba[i + 2]}) < 30;
@@ -276,11 +276,11 @@ TEST_F(WarpTest, WarpMorphMovesTheViewpointFromTheSamplingPointToTheEyeAndEndsEx
     // x = -2 on. Walking from x = -3 to x = -1.5 switches it to geometry at t = 0.1 s.
     const SmallPlant& s = stripes30;
     const glm::dvec3 textured(-3.0, 1.6, 1.5), geometry(-1.5, 1.6, 1.5);
-    gl::WalkthroughOptions options;
+    walkthrough::gl::WalkthroughOptions options;
     options.synchronousPaging = true;
     options.transition = walkthrough::Transition::Warp;
     options.morphSeconds = 0.5;
-    gl::Walkthrough walkthrough(s.scene, s.description, display, *context, s.walls, options);
+    walkthrough::gl::Walkthrough walkthrough(s.scene, s.description, display, *context, s.walls, options);
     auto frame = [&](double t, glm::dvec3 eye) {
         walkthrough::FrameInput in;
         in.time = t;

@@ -66,7 +66,7 @@ std::vector<DecodedTexture> takeAll(TexturePager& pager) {
     return out;
 }
 
-// Uploads everything ready, as gl::TextureStore::updateAll does.
+// Uploads everything ready, as walls::gl::TextureStore::updateAll does.
 void uploadAll(TexturePager& pager) {
     pager.waitIdle();
     for (const DecodedTexture& d : takeAll(pager)) pager.markResident(d.id, d.bytes);
@@ -215,7 +215,7 @@ TEST(TexturePager, ReadyBytesCountWhatWaitsForUpload) {
     EXPECT_EQ(pager.readyBytes(), 0u);
 }
 
-// An uploader that puts a texture up over frames (gl::TextureStore's bands) takes it with
+// An uploader that puts a texture up over frames (walls::gl::TextureStore's bands) takes it with
 // takeNext: wanted-now textures first, and a taken texture is not decoded again while it waits
 // for markResident, however often it is requested meanwhile.
 TEST(TexturePager, TakeNextGivesWantedNowFirstAndATakenTextureIsNotDecodedAgain) {
@@ -330,7 +330,7 @@ TEST(TexturePager, FlippedAndSwappedFilesAreRefusedCountedAndReportedOnce) {
     for (const std::string& w : warnings) EXPECT_THAT(w, ::testing::EndsWith("(not drawn: the wall falls back)"));
     EXPECT_THAT(warnings, ::testing::Contains(::testing::HasSubstr("tex_1.bct: expected ")));
     EXPECT_THAT(warnings, ::testing::Contains(::testing::HasSubstr("tex_2.bct: expected ")));
-    // Baking on demand bakes the refused ones again (gl::BackgroundBaker::rebake).
+    // Baking on demand bakes the refused ones again (walls::gl::BackgroundBaker::rebake).
     EXPECT_THAT(pager.takeRefused(), ::testing::UnorderedElementsAre(0, 1, 2));
     EXPECT_TRUE(pager.takeRefused().empty());
     // Wanted again: neither decoded again nor reported again.

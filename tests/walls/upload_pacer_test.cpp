@@ -13,7 +13,7 @@
 namespace cavewall::walls {
 namespace {
 
-// Drives the pacer as gl::TextureStore does: each frame `arrivals[f]` textures of `size` bytes
+// Drives the pacer as walls::gl::TextureStore does: each frame `arrivals[f]` textures of `size` bytes
 // become ready, and the store uploads what waits in bands of `band` bytes up to the allowance
 // (at least one band). Returns bytes per frame.
 std::vector<std::size_t> drive(UploadPacer& pacer, const std::vector<int>& arrivals, std::size_t size,

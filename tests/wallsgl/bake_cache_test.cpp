@@ -15,7 +15,7 @@
 #include <chrono>
 #include <fstream>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 namespace {
 
 using ::testing::HasSubstr;
@@ -105,7 +105,7 @@ TEST_F(BakeCacheTest, ABakeWithItsOwnContextLeavesTheCallersCurrent) {
     const cavewall::testing::ContextMark mark;
     const BakeResult baked = bakeScene(request);
     EXPECT_GT(baked.baked, 0);  // it rendered, so its own context was current for a while
-    EXPECT_EQ(Context::current(), context.get());
+    EXPECT_EQ(display::gl::Context::current(), context.get());
     EXPECT_TRUE(mark.current());
 }
 
@@ -417,4 +417,4 @@ TEST_F(BakeCacheTest, DepthBakesKeyTheirKindAndKeepDepthFilesValid) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

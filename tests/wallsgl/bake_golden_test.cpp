@@ -22,7 +22,7 @@
 
 #include <limits>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 namespace {
 
 int objectNamed(const scenes::Scene& scene, const std::string& name) {
@@ -61,7 +61,7 @@ TEST_F(BakeGoldenTest, BakedTextureMatchesGeometryFromItsSamplingPoint) {
     const std::vector<int> shown[2] = {
         {objectNamed(scene, "red"), objectNamed(scene, "green"), objectNamed(scene, "blue")},
         {objectNamed(scene, "yellow")}};
-    gl::SceneRenderer renderer(scene, gl::RenderSettings{kClear, BakeSettings{}.ambient});
+    render::gl::SceneRenderer renderer(scene, render::gl::RenderSettings{kClear, BakeSettings{}.ambient});
     WallQuadDrawer drawer;
     int checked[2] = {0, 0};
     for (const walls::BakedTexture& baked : result.manifest.textures) {
@@ -75,7 +75,7 @@ TEST_F(BakeGoldenTest, BakedTextureMatchesGeometryFromItsSamplingPoint) {
         ASSERT_EQ(frustum.guard, display::EyeGuard::None);  // the sampling point is in front of its side
 
         const OffscreenTarget target(baked.resolution);
-        gl::ViewTarget view{
+        render::gl::ViewTarget view{
             target.framebuffer(), {0, 0, baked.resolution.x, baked.resolution.y}, kClear, glm::bvec4(true)};
         render::DrawFilter filter;
         filter.objects = &shown[side];
@@ -85,7 +85,7 @@ TEST_F(BakeGoldenTest, BakedTextureMatchesGeometryFromItsSamplingPoint) {
         const std::vector<scenes::Image> levels =
             scenes::readMipLevels(request.cache / walls::hex64(result.key) / baked.file);
         ASSERT_EQ(levels[0].width, baked.resolution.x);
-        const gl::GlObject texture = uploadWallTexture(levels);
+        const display::gl::GlObject texture = uploadWallTexture(levels);
         target.bindAndClear(kClear);
         drawer.draw(frustum, quad, texture.id());
         const scenes::Image wall = target.read("baked wall");
@@ -113,4 +113,4 @@ TEST_F(BakeGoldenTest, BakedTextureMatchesGeometryFromItsSamplingPoint) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

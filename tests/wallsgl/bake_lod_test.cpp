@@ -20,7 +20,7 @@
 
 #include <iostream>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 namespace {
 
 constexpr glm::ivec2 kTexels{256, 192};
@@ -77,4 +77,4 @@ TEST_F(BakeLodTest, ALodTextureMatchesTheFullDetailOneWithinHalfATexel) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

@@ -15,7 +15,7 @@
 #include <filesystem>
 #include <string>
 
-namespace cavewall::gl::testing {
+namespace cavewall::walls::gl::testing {
 
 struct BakeTestObjects {
     int floor, red, green, blue, yellow, magenta;  // Scene::objects indices
@@ -68,4 +68,4 @@ inline std::filesystem::path writeBakeTestScene(const std::filesystem::path& dir
     return scenes::writeGenerated(g, dir);
 }
 
-}  // namespace cavewall::gl::testing
+}  // namespace cavewall::walls::gl::testing

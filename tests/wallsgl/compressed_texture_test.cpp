@@ -25,7 +25,7 @@
 #include <iostream>
 #include <limits>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 namespace {
 
 using walls::TextureFormat;
@@ -101,7 +101,7 @@ TEST_F(CompressedTextureTest, BlocksStayCompressedAndDecodeLikeRgba8) {
     for (TextureFormat format : {TextureFormat::Bc1, TextureFormat::Bc3}) {
         SCOPED_TRACE(std::string(walls::textureFormatName(format)));
         const walls::TextureLevels blocks = walls::encodeLevels(levels, format);
-        const GlObject compressed = uploadWallTexture(blocks);
+        const display::gl::GlObject compressed = uploadWallTexture(blocks);
         GLint isCompressed = 0, internal = 0, stored = 0;
         glGetTextureLevelParameteriv(compressed.id(), 0, GL_TEXTURE_COMPRESSED, &isCompressed);
         glGetTextureLevelParameteriv(compressed.id(), 0, GL_TEXTURE_INTERNAL_FORMAT, &internal);
@@ -115,7 +115,7 @@ TEST_F(CompressedTextureTest, BlocksStayCompressedAndDecodeLikeRgba8) {
         // decoding must give the same picture (one sample per texel, 64 x 64 target).
         std::vector<scenes::Image> decoded;
         for (const walls::BlockLevel& l : blocks.blocks) decoded.push_back(walls::decodeLevel(l, format));
-        const GlObject reference = uploadWallTexture(decoded);
+        const display::gl::GlObject reference = uploadWallTexture(decoded);
         const scenes::Image gpu = drawFilling(drawer, compressed.id(), 64),
                             cpu = drawFilling(drawer, reference.id(), 64);
         const metrics::ImageComparison c = metrics::compareImages(gpu, cpu);
@@ -142,8 +142,8 @@ TEST_F(CompressedTextureTest, BandByBandUploadsHoldTheSameTexelsAsAWholeUpload) 
             const std::vector<scenes::Image> rgba = walls::premultipliedMipChain(image);
             const walls::TextureLevels levels =
                 format == TextureFormat::Rgba8 ? walls::TextureLevels(rgba) : walls::encodeLevels(rgba, format);
-            const GlObject whole = uploadWallTexture(levels);
-            const GlObject banded = createWallTexture(levels);
+            const display::gl::GlObject whole = uploadWallTexture(levels);
+            const display::gl::GlObject banded = createWallTexture(levels);
             walls::UploadCursor cursor(levels);
             int bands = 0;
             while (!cursor.done()) {
@@ -172,7 +172,7 @@ TEST_F(CompressedTextureTest, BandByBandUploadsHoldTheSameTexelsAsAWholeUpload) 
 
 // Bakes the bake test scene in `format` (textures of at most 128 texels) into `cache`.
 BakeResult bakeIn(const std::filesystem::path& scene, const std::filesystem::path& cache, TextureFormat format,
-                  Context& context) {
+                  display::gl::Context& context) {
     BakeRequest request;
     request.scene = scene;
     request.cache = cache;
@@ -215,7 +215,7 @@ TEST_F(CompressedTextureTest, CompressedBakeRendersWithinToleranceOfRgba8) {
             const display::OffAxisFrustum frustum =
                 display::offAxisFrustum(quad, baked.samplingPoint, {0.05, std::numeric_limits<double>::infinity()});
             auto draw = [&](const BakeResult& r, const std::string& file) {
-                const GlObject t = uploadWallTexture(walls::readBakedTexture(r.folder / file));
+                const display::gl::GlObject t = uploadWallTexture(walls::readBakedTexture(r.folder / file));
                 const OffscreenTarget target(baked.resolution);
                 target.bindAndClear(kClear);
                 drawer.draw(frustum, quad, t.id());
@@ -234,4 +234,4 @@ TEST_F(CompressedTextureTest, CompressedBakeRendersWithinToleranceOfRgba8) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

@@ -1,4 +1,4 @@
-// gl::DepthWallPass against full geometry: a wall baked with depth from one sampling point and
+// walls::gl::DepthWallPass against full geometry: a wall baked with depth from one sampling point and
 // drawn from an eye 0.6 m to the side and 0.5 m closer matches the geometry rendered from that
 // eye, except on the pixels walls::depthWallErrorBound predicts (disocclusion at the depth
 // steps it opens, and the wall's border); and the widest wrong run is within the bound and at
@@ -84,7 +84,7 @@ protected:
     // `objects` of `scene` baked on kQuad from kSample at kWidth x kHeight: the colour, and the
     // depth into `depth`.
     static scenes::Image bake(const scenes::Scene& scene, const std::vector<int>& objects, walls::DepthImage& depth) {
-        gl::WallTextureRenderer baker(scene, 1.0f);
+        walls::gl::WallTextureRenderer baker(scene, 1.0f);
         return baker.render(kQuad, kSample, {kWidth, kHeight}, objects, depth);
     }
 };
@@ -115,11 +115,11 @@ void DepthWallPassTest::matchesGeometryExceptWherePredicted(bool halved) {
 
     // Full geometry from the eye, through the wall as its screen (pixels = wall points).
     const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, kEye, {0.05, kInf});
-    gl::OffscreenTarget target({kWidth, kHeight});
+    walls::gl::OffscreenTarget target({kWidth, kHeight});
     scenes::Image truth;
     {
-        gl::SceneRenderer renderer(scene, gl::RenderSettings{glm::vec4(0.0f), 1.0f});
-        gl::ViewTarget view;
+        render::gl::SceneRenderer renderer(scene, render::gl::RenderSettings{glm::vec4(0.0f), 1.0f});
+        render::gl::ViewTarget view;
         view.framebuffer = target.framebuffer();
         view.viewport = {0, 0, kWidth, kHeight};
         view.clearColor = glm::vec4(0.0f);
@@ -130,24 +130,25 @@ void DepthWallPassTest::matchesGeometryExceptWherePredicted(bool halved) {
     }
 
     // The depth wall and the flat wall from the same eye.
-    const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
-    const gl::DepthTexture depthTexture = gl::uploadDepthTexture(halved ? walls::marchDepths(depth) : depth);
+    const display::gl::GlObject colourTexture = walls::gl::uploadWallTexture({colour});
+    const walls::gl::DepthTexture depthTexture =
+        walls::gl::uploadDepthTexture(halved ? walls::marchDepths(depth) : depth);
     auto drawWith = [&](auto&& draw) {
         target.bindAndClear(glm::vec4(0.0f));
         glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-        gl::FrameStats stats;
+        display::FrameStats stats;
         draw(stats);
         EXPECT_EQ(stats.drawCalls, 1);
         return target.read("wall");
     };
-    const gl::DepthWallPass depthPass;
-    gl::DepthWallDraw d{kQuad, {}, 1};
+    const walls::gl::DepthWallPass depthPass;
+    walls::gl::DepthWallDraw d{kQuad, {}, 1};
     d.layers[0] = {colourTexture.id(), depthTexture.depth.id(), kSample, range, 1.0f, depthTexture.skip.id()};
     const scenes::Image depthWall =
-        drawWith([&](gl::FrameStats& s) { depthPass.draw({d}, frustum, glm::dmat4(1.0), 0, s); });
-    const gl::WallPass flatPass;
-    const scenes::Image flatWall = drawWith([&](gl::FrameStats& s) {
-        flatPass.draw({gl::WallDraw{kQuad, {colourTexture.id()}, {1.0f}, 1}}, frustum, glm::dmat4(1.0), 0, s);
+        drawWith([&](display::FrameStats& s) { depthPass.draw({d}, frustum, glm::dmat4(1.0), 0, s); });
+    const walls::gl::WallPass flatPass;
+    const scenes::Image flatWall = drawWith([&](display::FrameStats& s) {
+        flatPass.draw({walls::gl::WallDraw{kQuad, {colourTexture.id()}, {1.0f}, 1}}, frustum, glm::dmat4(1.0), 0, s);
     });
 
     // The predicted pixels: the interval each opening step exposes, and the border's.
@@ -267,18 +268,18 @@ TEST_F(DepthWallPassTest, GeometryInFrontOfTheWallHidesIt) {
 
     walls::DepthImage depth;
     const scenes::Image colour = bake(scene, behind, depth);
-    const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
-    const gl::DepthTexture depthTexture = gl::uploadDepthTexture(depth);
-    const gl::DepthWallPass pass;
-    gl::DepthWallDraw d{kQuad, {}, 1};
+    const display::gl::GlObject colourTexture = walls::gl::uploadWallTexture({colour});
+    const walls::gl::DepthTexture depthTexture = walls::gl::uploadDepthTexture(depth);
+    const walls::gl::DepthWallPass pass;
+    walls::gl::DepthWallDraw d{kQuad, {}, 1};
     d.layers[0] = {colourTexture.id(),    depthTexture.depth.id(), kSample, walls::depthRange(depth), 1.0f,
                    depthTexture.skip.id()};
 
     const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, kEye, {0.05, kInf});
-    gl::OffscreenTarget target({kWidth, kHeight});
+    walls::gl::OffscreenTarget target({kWidth, kHeight});
     auto drawWall = [&] {
         glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-        gl::FrameStats stats;
+        display::FrameStats stats;
         pass.draw({d}, frustum, glm::dmat4(1.0), 0, stats);
         EXPECT_EQ(stats.drawCalls, 1);
     };
@@ -286,8 +287,8 @@ TEST_F(DepthWallPassTest, GeometryInFrontOfTheWallHidesIt) {
     drawWall();
     const scenes::Image wallOnly = target.read("wall");
 
-    gl::SceneRenderer renderer(scene, gl::RenderSettings{glm::vec4(0.0f), 1.0f});
-    gl::ViewTarget view;
+    render::gl::SceneRenderer renderer(scene, render::gl::RenderSettings{glm::vec4(0.0f), 1.0f});
+    render::gl::ViewTarget view;
     view.framebuffer = target.framebuffer();
     view.viewport = {0, 0, kWidth, kHeight};
     view.clearColor = glm::vec4(0.0f);
@@ -313,7 +314,7 @@ TEST_F(DepthWallPassTest, GeometryInFrontOfTheWallHidesIt) {
     EXPECT_EQ(wrong, 0);
 }
 
-// Blended layers share one march (gl::DepthWallPass header): the heaviest layer's hit depth,
+// Blended layers share one march (walls::gl::DepthWallPass header): the heaviest layer's hit depth,
 // else the next layer's. Two layers of one texture therefore draw exactly what it draws alone,
 // and a heaviest layer with nothing in it (no depth anywhere) falls back to the next layer's
 // march: [empty 0.5, real 0.5] draws what [real 0.5] draws; a lighter layer is sampled where
@@ -327,7 +328,7 @@ TEST_F(DepthWallPassTest, BlendedLayersShareTheHeaviestLayersMarch) {
     scenes::Image colour, other;
     const glm::dvec3 otherSample(-0.8, 1.4, 2.6);
     {
-        gl::WallTextureRenderer baker(scene, 1.0f);
+        walls::gl::WallTextureRenderer baker(scene, 1.0f);
         colour = baker.render(kQuad, kSample, {kWidth, kHeight}, objects, depth);
         other = baker.render(kQuad, otherSample, {kWidth, kHeight}, objects, otherDepth);
     }
@@ -335,31 +336,32 @@ TEST_F(DepthWallPassTest, BlendedLayersShareTheHeaviestLayersMarch) {
     std::fill(emptyColour.rgba.begin(), emptyColour.rgba.end(), std::uint8_t(0));
     const walls::DepthImage emptyDepth{kWidth, kHeight,
                                        std::vector<float>(std::size_t(kWidth) * kHeight, walls::kNoSurface)};
-    const gl::GlObject colourTexture = gl::uploadWallTexture({colour}), otherColour = gl::uploadWallTexture({other});
-    const gl::GlObject emptyTexture = gl::uploadWallTexture({emptyColour});
-    const gl::DepthTexture depthTexture = gl::uploadDepthTexture(depth),
-                           otherDepthTexture = gl::uploadDepthTexture(otherDepth);
-    const gl::DepthTexture emptyDepthTexture = gl::uploadDepthTexture(emptyDepth);
-    const gl::DepthWallLayer real{
+    const display::gl::GlObject colourTexture = walls::gl::uploadWallTexture({colour}),
+                                otherColour = walls::gl::uploadWallTexture({other});
+    const display::gl::GlObject emptyTexture = walls::gl::uploadWallTexture({emptyColour});
+    const walls::gl::DepthTexture depthTexture = walls::gl::uploadDepthTexture(depth),
+                                  otherDepthTexture = walls::gl::uploadDepthTexture(otherDepth);
+    const walls::gl::DepthTexture emptyDepthTexture = walls::gl::uploadDepthTexture(emptyDepth);
+    const walls::gl::DepthWallLayer real{
         colourTexture.id(), depthTexture.depth.id(), kSample, walls::depthRange(depth), 1.0f, depthTexture.skip.id()};
-    const gl::DepthWallLayer second{
+    const walls::gl::DepthWallLayer second{
         otherColour.id(),           otherDepthTexture.depth.id(), otherSample, walls::depthRange(otherDepth), 1.0f,
         otherDepthTexture.skip.id()};
-    const gl::DepthWallLayer nothing{
+    const walls::gl::DepthWallLayer nothing{
         emptyTexture.id(), emptyDepthTexture.depth.id(), kSample, glm::dvec2(0.0), 1.0f, emptyDepthTexture.skip.id()};
 
     const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, kEye, {0.05, kInf});
-    gl::OffscreenTarget target({kWidth, kHeight});
-    const gl::DepthWallPass pass;
-    auto draw = [&](std::vector<std::pair<gl::DepthWallLayer, float>> layers) {
-        gl::DepthWallDraw d{kQuad, {}, 0};
+    walls::gl::OffscreenTarget target({kWidth, kHeight});
+    const walls::gl::DepthWallPass pass;
+    auto draw = [&](std::vector<std::pair<walls::gl::DepthWallLayer, float>> layers) {
+        walls::gl::DepthWallDraw d{kQuad, {}, 0};
         for (auto [layer, weight] : layers) {
             layer.weight = weight;
             d.layers[d.count++] = layer;
         }
         target.bindAndClear(glm::vec4(0.0f));
         glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-        gl::FrameStats stats;
+        display::FrameStats stats;
         pass.draw({d}, frustum, glm::dmat4(1.0), 0, stats);
         return target.read("wall");
     };
@@ -375,7 +377,7 @@ TEST_F(DepthWallPassTest, BlendedLayersShareTheHeaviestLayersMarch) {
     EXPECT_LE(largestDifference(draw({{nothing, 0.5f}, {real, 0.5f}}), half), 1);
     // Shared, not marched per layer: a lighter layer with the same colour and no depth at all
     // is sampled where the heaviest layer's ray landed (its own march would find nothing).
-    const gl::DepthWallLayer colourOnly{
+    const walls::gl::DepthWallLayer colourOnly{
         colourTexture.id(), emptyDepthTexture.depth.id(), kSample, glm::dvec2(0.0), 1.0f, emptyDepthTexture.skip.id()};
     const scenes::Image shared = draw({{real, 0.5f}, {colourOnly, 0.5f}});
     EXPECT_LE(largestDifference(shared, alone), 1);
@@ -445,29 +447,29 @@ void DepthWallPassTest::marchesAsItsReference(bool halved) {
             p[1] = static_cast<std::uint8_t>(idStep.y * j + idBase.y);
             p[2] = 128;
         }
-    const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
-    const gl::DepthTexture depthTexture = gl::uploadDepthTexture(depth);
-    const gl::GlObject nearest = gl::createSampler();
+    const display::gl::GlObject colourTexture = walls::gl::uploadWallTexture({colour});
+    const walls::gl::DepthTexture depthTexture = walls::gl::uploadDepthTexture(depth);
+    const display::gl::GlObject nearest = display::gl::createSampler();
     glSamplerParameteri(nearest.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glSamplerParameteri(nearest.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glSamplerParameteri(nearest.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(nearest.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    gl::OffscreenTarget target({vw, vh});
+    walls::gl::OffscreenTarget target({vw, vh});
 
     const glm::dvec3 sample(0.0, 1.5, 3.0);
     const glm::dvec3 eyes[] = {{0.6, 1.5, 2.5}, {-0.9, 2.4, 2.2}, {1.5, 0.4, 3.4}};
     // The default settings, and at most 3 steps: longer steps, bisected before the crossing.
     for (const walls::ReprojectSettings settings : {walls::ReprojectSettings{}, walls::ReprojectSettings{3, 6}})
         for (const glm::dvec3& eyeWorld : eyes) {
-            const gl::DepthWallPass pass(settings);
+            const walls::gl::DepthWallPass pass(settings);
             SCOPED_TRACE(::testing::Message() << "eye " << eyeWorld.x << ", " << eyeWorld.y << ", " << eyeWorld.z
                                               << ", at most " << settings.maxSteps << " steps");
             const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, eyeWorld, {0.05, kInf});
             target.bindAndClear(glm::vec4(0.0f));
             glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-            gl::DepthWallDraw d{kQuad, {}, 1};
+            walls::gl::DepthWallDraw d{kQuad, {}, 1};
             d.layers[0] = {colourTexture.id(), depthTexture.depth.id(), sample, range, 1.0f, depthTexture.skip.id()};
-            gl::FrameStats stats;
+            display::FrameStats stats;
             pass.draw({d}, frustum, glm::dmat4(1.0), nearest.id(), stats);
             const scenes::Image got = target.read("march");
             const glm::dvec3 eye = frame.toWall(eyeWorld), s = frame.toWall(sample);
@@ -518,8 +520,8 @@ TEST_F(DepthWallPassTest, DrawsOnlyWhereAMarchCanHit) {
     const std::vector<int> objects{1};  // the card, no back plane
     walls::DepthImage depth;
     const scenes::Image colour = bake(scene, objects, depth);
-    const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
-    const gl::DepthTexture depthTexture = gl::uploadDepthTexture(depth);
+    const display::gl::GlObject colourTexture = walls::gl::uploadWallTexture({colour});
+    const walls::gl::DepthTexture depthTexture = walls::gl::uploadDepthTexture(depth);
     const walls::TextureRect content = walls::contentRect(depth);
     const glm::dvec2 range = walls::depthRange(depth);
     const walls::WallFrame frame = walls::wallFrame(kQuad);
@@ -528,15 +530,15 @@ TEST_F(DepthWallPassTest, DrawsOnlyWhereAMarchCanHit) {
     EXPECT_LT((drawn.hi.x - drawn.lo.x) * (drawn.hi.y - drawn.lo.y), 0.1);
 
     const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, kEye, {0.05, kInf});
-    gl::OffscreenTarget target({kWidth, kHeight});
-    const gl::DepthWallPass pass;
+    walls::gl::OffscreenTarget target({kWidth, kHeight});
+    const walls::gl::DepthWallPass pass;
     auto draw = [&](walls::TextureRect rect, glm::ivec2 texels) {
-        gl::DepthWallDraw d{kQuad, {}, 1};
+        walls::gl::DepthWallDraw d{kQuad, {}, 1};
         d.layers[0] = {
             colourTexture.id(), depthTexture.depth.id(), kSample, range, 1.0f, depthTexture.skip.id(), rect, texels};
         target.bindAndClear(glm::vec4(0.0f));
         glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-        gl::FrameStats stats;
+        display::FrameStats stats;
         pass.draw({d}, frustum, glm::dmat4(1.0), 0, stats);
         return target.read("wall");
     };
@@ -571,18 +573,18 @@ TEST_F(DepthWallPassTest, FlatWallsDrawOnlyTheirCoveredRectangle) {
     const std::vector<int> objects{1};
     walls::DepthImage depth;
     const scenes::Image colour = bake(scene, objects, depth);
-    const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
+    const display::gl::GlObject colourTexture = walls::gl::uploadWallTexture({colour});
     const walls::TextureRect covered = walls::coveredRect(walls::TextureLevels({colour}), walls::kCoveredMargin);
     EXPECT_LT((covered.hi.x - covered.lo.x) * (covered.hi.y - covered.lo.y), 0.1);
     const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, kEye, {0.05, kInf});
-    gl::OffscreenTarget target({kWidth, kHeight});
-    const gl::WallPass pass;
+    walls::gl::OffscreenTarget target({kWidth, kHeight});
+    const walls::gl::WallPass pass;
     auto draw = [&](walls::TextureRect rect) {
-        gl::WallDraw d{kQuad, {colourTexture.id()}, {1.0f}, 1, {}};
+        walls::gl::WallDraw d{kQuad, {colourTexture.id()}, {1.0f}, 1, {}};
         d.contents[0] = rect;
         target.bindAndClear(glm::vec4(0.0f));
         glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-        gl::FrameStats stats;
+        display::FrameStats stats;
         pass.draw({d}, frustum, glm::dmat4(1.0), 0, stats);
         return target.read("wall");
     };

@@ -9,7 +9,7 @@
 
 #include <fstream>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 namespace {
 
 class TextureStoreTest : public cavewall::testing::GlTest {
@@ -82,4 +82,4 @@ TEST_F(TextureStoreTest, PrefetchesGoUpInBandsAndAreDrawnOnlyWhenComplete) {
 }
 
 }  // namespace
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

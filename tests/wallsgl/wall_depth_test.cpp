@@ -42,7 +42,7 @@ scenes::Scene cardScene() {
     return s;
 }
 
-metrics::DepthImage distances(const gl::OffscreenTarget& target, const display::OffAxisFrustum& frustum,
+metrics::DepthImage distances(const walls::gl::OffscreenTarget& target, const display::OffAxisFrustum& frustum,
                               const std::string& name) {
     return {name, kWidth, kHeight, display::eyeDistances(frustum, {kWidth, kHeight}, target.readDepth())};
 }
@@ -55,22 +55,22 @@ TEST_F(WallDepthTest, DepthWallsGiveTheDepthTheEyeSeesFlatWallsTheirOwn) {
     const std::vector<int> objects{0, 1};
     walls::DepthImage depth;
     const scenes::Image colour =
-        gl::WallTextureRenderer(scene, 1.0f).render(kQuad, kSample, {kWidth, kHeight}, objects, depth);
-    const gl::GlObject colourTexture = gl::uploadWallTexture({colour});
-    const gl::DepthTexture depthTexture = gl::uploadDepthTexture(depth);
-    gl::DepthWallDraw depthWall{kQuad, {}, 1};
+        walls::gl::WallTextureRenderer(scene, 1.0f).render(kQuad, kSample, {kWidth, kHeight}, objects, depth);
+    const display::gl::GlObject colourTexture = walls::gl::uploadWallTexture({colour});
+    const walls::gl::DepthTexture depthTexture = walls::gl::uploadDepthTexture(depth);
+    walls::gl::DepthWallDraw depthWall{kQuad, {}, 1};
     depthWall.layers[0] = {colourTexture.id(),    depthTexture.depth.id(), kSample, walls::depthRange(depth), 1.0f,
                            depthTexture.skip.id()};
-    const gl::WallDraw flatWall{kQuad, {colourTexture.id()}, {1.0f}, 1};
-    const gl::DepthWallPass depthPass;
-    const gl::WallPass flatPass;
-    gl::OffscreenTarget target({kWidth, kHeight});
+    const walls::gl::WallDraw flatWall{kQuad, {colourTexture.id()}, {1.0f}, 1};
+    const walls::gl::DepthWallPass depthPass;
+    const walls::gl::WallPass flatPass;
+    walls::gl::OffscreenTarget target({kWidth, kHeight});
     metrics::StereoError depthError, flatError;
     for (const glm::dvec3 eye : {kLeft, kRight}) {
         // Through the wall as the screen, so every pixel shows the wall or what is behind it.
         const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, eye, {0.05, 1000.0});
-        gl::SceneRenderer renderer(scene, gl::RenderSettings{glm::vec4(0.0f), 1.0f});
-        gl::ViewTarget view;
+        render::gl::SceneRenderer renderer(scene, render::gl::RenderSettings{glm::vec4(0.0f), 1.0f});
+        render::gl::ViewTarget view;
         view.framebuffer = target.framebuffer();
         view.viewport = {0, 0, kWidth, kHeight};
         view.clearColor = glm::vec4(0.0f);
@@ -81,17 +81,19 @@ TEST_F(WallDepthTest, DepthWallsGiveTheDepthTheEyeSeesFlatWallsTheirOwn) {
         auto depthOnly = [&](auto&& draw, const std::string& name) -> metrics::DepthImage {
             target.bindAndClear(glm::vec4(0.0f));
             glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-            gl::FrameStats stats;
+            display::FrameStats stats;
             draw(stats);
             EXPECT_EQ(stats.drawCalls, 1);
             const scenes::Image image = target.read(name);
             EXPECT_EQ(image.rgba, std::vector<std::uint8_t>(image.rgba.size(), 0)) << name << ": colour was written";
             return distances(target, frustum, name);
         };
-        const metrics::DepthImage fromDepthWall = depthOnly(
-            [&](gl::FrameStats& s) { depthPass.drawDepth({depthWall}, frustum, glm::dmat4(1.0), 0, s); }, "depth wall");
-        const metrics::DepthImage fromFlatWall = depthOnly(
-            [&](gl::FrameStats& s) { flatPass.drawDepth({flatWall}, frustum, glm::dmat4(1.0), 0, s); }, "flat wall");
+        const metrics::DepthImage fromDepthWall =
+            depthOnly([&](display::FrameStats& s) { depthPass.drawDepth({depthWall}, frustum, glm::dmat4(1.0), 0, s); },
+                      "depth wall");
+        const metrics::DepthImage fromFlatWall =
+            depthOnly([&](display::FrameStats& s) { flatPass.drawDepth({flatWall}, frustum, glm::dmat4(1.0), 0, s); },
+                      "flat wall");
         depthError += metrics::stereoError(fromDepthWall, truth);
         flatError += metrics::stereoError(fromFlatWall, truth);
     }

@@ -1,4 +1,4 @@
-// gl::WallPass mixes one to four textures (one program per count): every covered pixel is the
+// walls::gl::WallPass mixes one to four textures (one program per count): every covered pixel is the
 // weighted sum of the textures in linear light, blended premultiplied over what was there, and
 // a texture that is not there (id 0) is left out of the sum.
 #include "display/gl/gl_object.h"
@@ -31,20 +31,21 @@ int byteOf(double linear) {
 class WallPassTest : public GlTest {
 protected:
     // A 2 x 2 texture of one opaque colour (one MIP level below it, the same colour).
-    gl::GlObject solid(std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+    display::gl::GlObject solid(std::uint8_t r, std::uint8_t g, std::uint8_t b) {
         auto image = [&](int s) {
             scenes::Image i{"solid", s, s, {}};
             for (int p = 0; p < s * s; ++p) i.rgba.insert(i.rgba.end(), {r, g, b, 255});
             return i;
         };
-        return gl::uploadWallTexture({image(2), image(1)});
+        return walls::gl::uploadWallTexture({image(2), image(1)});
     }
 
     // The centre pixel (R, G, B) after drawing `draw` over an opaque black background: the wall
     // quad is the whole screen (2 m x 2 m at 1 m; the eye at the origin).
-    std::vector<int> drawCentre(const gl::WallDraw& draw) {
-        gl::GlObject color = gl::createTexture(GL_TEXTURE_2D), depth = gl::createTexture(GL_TEXTURE_2D),
-                     framebuffer = gl::createFramebuffer();
+    std::vector<int> drawCentre(const walls::gl::WallDraw& draw) {
+        display::gl::GlObject color = display::gl::createTexture(GL_TEXTURE_2D),
+                              depth = display::gl::createTexture(GL_TEXTURE_2D),
+                              framebuffer = display::gl::createFramebuffer();
         glTextureStorage2D(color.id(), 1, GL_SRGB8_ALPHA8, kSize, kSize);
         glTextureStorage2D(depth.id(), 1, GL_DEPTH_COMPONENT32F, kSize, kSize);
         glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, color.id(), 0);
@@ -59,9 +60,9 @@ protected:
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         const display::ScreenQuad screen{{-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}};
         const display::OffAxisFrustum frustum = display::offAxisFrustum(screen, glm::dvec3(0.0), {0.05, INFINITY});
-        gl::WallDraw d = draw;
+        walls::gl::WallDraw d = draw;
         d.quad = {{-2, -2, -2}, {2, -2, -2}, {-2, 2, -2}};  // fills the screen from behind it
-        gl::FrameStats stats;
+        display::FrameStats stats;
         pass->draw({d}, frustum, glm::dmat4(1.0), 0, stats);
         std::vector<std::uint8_t> pixel(4);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.id());
@@ -81,18 +82,18 @@ protected:
         GlTest::TearDown();
     }
 
-    std::optional<gl::WallPass> pass;  // built once the context is current
+    std::optional<walls::gl::WallPass> pass;  // built once the context is current
     int drawCalls = 0;
 };
 
 TEST_F(WallPassTest, EachCountOfTexturesSumsItsWeightedColours) {
     if (!context) GTEST_SKIP();
     const std::uint8_t colours[4][3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {200, 200, 200}};
-    std::vector<gl::GlObject> textures;
+    std::vector<display::gl::GlObject> textures;
     for (const auto& c : colours) textures.push_back(solid(c[0], c[1], c[2]));
-    for (int count = 1; count <= gl::kMaxWallTextures; ++count) {
+    for (int count = 1; count <= walls::kMaxWallTextures; ++count) {
         SCOPED_TRACE(count);
-        gl::WallDraw d{{}, {}, {}, count};
+        walls::gl::WallDraw d{{}, {}, {}, count};
         for (int i = 0; i < count; ++i) d.textures[i] = textures[i].id(), d.weights[i] = 1.0f / count;
         const std::vector<int> got = drawCentre(d);
         // Opaque textures, weights summing to 1, over black: the pixel is the weighted sum of
@@ -107,7 +108,7 @@ TEST_F(WallPassTest, EachCountOfTexturesSumsItsWeightedColours) {
 
 TEST_F(WallPassTest, AMissingTextureIsLeftOutAndAWallWithNoneIsNotDrawn) {
     if (!context) GTEST_SKIP();
-    const gl::GlObject red = solid(255, 0, 0);
+    const display::gl::GlObject red = solid(255, 0, 0);
     // The missing texture's weight goes nowhere: half the red over black.
     std::vector<int> got = drawCentre({{}, {0, red.id()}, {0.5f, 0.5f}, 2});
     EXPECT_NEAR(got[0], byteOf(0.5), 1);

@@ -9,7 +9,7 @@
 #include <array>
 #include <cmath>
 
-namespace cavewall::gl {
+namespace cavewall::walkthrough::gl {
 
 namespace {
 
@@ -44,9 +44,10 @@ const std::array<glm::dvec3, kIconVertices> kIcon = {{
 }  // namespace
 
 HandCursorPass::HandCursorPass()
-    : _program(buildProgram(kName, kVertex, kFragment)), _vertexArray(createVertexArray()), _buffer(createBuffer()) {
-    _projection = uniformLocation(_program.id(), kName, "uProjection");
-    _color = uniformLocation(_program.id(), kName, "uColor");
+    : _program(display::gl::buildProgram(kName, kVertex, kFragment)), _vertexArray(display::gl::createVertexArray()),
+      _buffer(display::gl::createBuffer()) {
+    _projection = display::gl::uniformLocation(_program.id(), kName, "uProjection");
+    _color = display::gl::uniformLocation(_program.id(), kName, "uColor");
     glNamedBufferData(_buffer.id(), (kIconVertices + 2) * sizeof(glm::vec3), nullptr, GL_DYNAMIC_DRAW);
     glVertexArrayVertexBuffer(_vertexArray.id(), 0, _buffer.id(), 0, sizeof(glm::vec3));
     glEnableVertexArrayAttrib(_vertexArray.id(), 0);
@@ -54,7 +55,8 @@ HandCursorPass::HandCursorPass()
     glVertexArrayAttribBinding(_vertexArray.id(), 0, 0);
 }
 
-void HandCursorPass::draw(const HandCursorPose& hand, const display::OffAxisFrustum& frustum, FrameStats& stats) {
+void HandCursorPass::draw(const HandCursorPose& hand, const display::OffAxisFrustum& frustum,
+                          display::FrameStats& stats) {
     const glm::dmat4 viewFromHand =
         frustum.viewFromFrame * glm::translate(glm::dmat4(1.0), hand.position) * glm::mat4_cast(hand.orientation);
     std::array<glm::vec3, kIconVertices + 2> vertices;
@@ -80,4 +82,4 @@ void HandCursorPass::draw(const HandCursorPose& hand, const display::OffAxisFrus
     stats.triangles += kIconVertices / 3;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walkthrough::gl

@@ -15,7 +15,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-namespace cavewall::gl {
+namespace cavewall::walkthrough::gl {
 
 using walkthrough::HandCursorPose;  // walkthrough/frame_types.h
 
@@ -24,11 +24,11 @@ public:
     // Builds the program; throws Error when the shaders do not build.
     HandCursorPass();
     // Draws the cursor for one view (cave frame frustum) into the bound framebuffer.
-    void draw(const HandCursorPose& hand, const display::OffAxisFrustum& frustum, FrameStats& stats);
+    void draw(const HandCursorPose& hand, const display::OffAxisFrustum& frustum, display::FrameStats& stats);
 
 private:
-    GlObject _program, _vertexArray, _buffer;
+    display::gl::GlObject _program, _vertexArray, _buffer;
     GLint _projection = -1, _color = -1;
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walkthrough::gl

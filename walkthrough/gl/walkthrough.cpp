@@ -16,7 +16,7 @@
 #include <map>
 #include <mutex>
 
-namespace cavewall::gl {
+namespace cavewall::walkthrough::gl {
 
 namespace {
 
@@ -26,7 +26,7 @@ using display::msSince;
 
 // Makes `context` current before any member touches GL: a bake that made (and dropped) its own
 // context, for one, leaves no context current on this thread.
-Context& madeCurrent(Context& context) {
+display::gl::Context& madeCurrent(display::gl::Context& context) {
     context.makeCurrent();
     return context;
 }
@@ -65,28 +65,28 @@ struct Walkthrough::CellPaging {
                 [this](int group) { stage(group); }) {}
 
     void stage(int group) {
-        PackedGeometry packed = packMeshes(scene, lods, groups.groupMeshes[group]);
+        render::gl::PackedGeometry packed = render::gl::packMeshes(scene, lods, groups.groupMeshes[group]);
         std::lock_guard lock(mutex);
         staged[group] = std::move(packed);
     }
     // The staged pack of `group`, or one packed now (a group drawn before its loader ran).
-    PackedGeometry take(int group) {
+    render::gl::PackedGeometry take(int group) {
         {
             std::lock_guard lock(mutex);
             if (auto found = staged.find(group); found != staged.end()) {
-                PackedGeometry packed = std::move(found->second);
+                render::gl::PackedGeometry packed = std::move(found->second);
                 staged.erase(found);
                 return packed;
             }
         }
-        return packMeshes(scene, lods, groups.groupMeshes[group]);
+        return render::gl::packMeshes(scene, lods, groups.groupMeshes[group]);
     }
 
     const scenes::Scene& scene;
     const std::vector<scenes::MeshLod>* lods;
     const scenes::PagedMeshGroups& groups;  // the renderer's GpuScene's
     std::mutex mutex;
-    std::map<int, PackedGeometry> staged;
+    std::map<int, render::gl::PackedGeometry> staged;
     walls::GeometryPager pager;  // last: its thread stops before the staging goes
 };
 
@@ -96,12 +96,12 @@ struct Walkthrough::WallRuntime {
         Textures(const walls::WallSetup& setup, const WalkthroughOptions& options)
             : pager(setup.folder, setup.manifest, options.textureBudgetMB, options.decoder),
               store(pager, static_cast<std::size_t>(options.uploadMBPerFrame * 1024 * 1024)) {
-            if (options.wallKind == walls::WallKind::Depth) depthPass = std::make_unique<DepthWallPass>();
+            if (options.wallKind == walls::WallKind::Depth) depthPass = std::make_unique<walls::gl::DepthWallPass>();
         }
         walls::TexturePager pager;
-        TextureStore store;
-        WallPass pass;
-        std::unique_ptr<DepthWallPass> depthPass;
+        walls::gl::TextureStore store;
+        walls::gl::WallPass pass;
+        std::unique_ptr<walls::gl::DepthWallPass> depthPass;
     };
 
     WallRuntime(walls::WallSetup s, const WalkthroughOptions& options) : setup(std::move(s)) {
@@ -118,7 +118,7 @@ struct Walkthrough::WallRuntime {
 struct Walkthrough::ClusterRuntime {
     hierarchy::ClusterModel model;
     std::vector<int> structure;  // always drawn
-    std::unique_ptr<ClusterImpostors> impostors;
+    std::unique_ptr<hierarchy::gl::ClusterImpostors> impostors;
     hierarchy::ClusterCoherence coherence;
     hierarchy::ClusterFades fades;
     hierarchy::ClusterFramePlan last;
@@ -131,8 +131,8 @@ namespace {
 // The hierarchy over the content objects (structure gets empty bounds: never clustered), its
 // impostors and measured costs.
 std::unique_ptr<Walkthrough::ClusterRuntime> makeClusters(const scenes::Scene& scene, const ClusterOptions& o,
-                                                          SceneRenderer& renderer, const std::string& rendererName,
-                                                          int costResolution);
+                                                          render::gl::SceneRenderer& renderer,
+                                                          const std::string& rendererName, int costResolution);
 
 // The display's largest screen side in pixels: what the cluster costs are measured at.
 int largestScreenSide(const display::Display& display) {
@@ -144,12 +144,12 @@ int largestScreenSide(const display::Display& display) {
 }  // namespace
 
 Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescription& description,
-                         const display::Display& display, Context& context, std::optional<walls::WallSetup> walls,
-                         WalkthroughOptions options, std::vector<int> screens)
+                         const display::Display& display, display::gl::Context& context,
+                         std::optional<walls::WallSetup> walls, WalkthroughOptions options, std::vector<int> screens)
     : _scene(scene), _description(description), _display(display), _context(madeCurrent(context)),
       _options(withPaging(std::move(options), description, walls)), _screens(std::move(screens)),
       _targets(display, context), _renderer(scene, _options.render),
-      _projectors(std::make_unique<ProjectorPasses>(display, _targets)) {
+      _projectors(std::make_unique<display::gl::ProjectorPasses>(display, _targets)) {
     if (_screens.empty())
         for (int s = 0; s < static_cast<int>(display.screens().size()); ++s) _screens.push_back(s);
     if (walls && !walls->plan.walls.empty()) _walls = std::make_unique<WallRuntime>(std::move(*walls), _options);
@@ -167,14 +167,15 @@ Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescript
             scene, _options.clusters, _renderer, context.info().renderer,
             _options.clusters.costResolution > 0 ? _options.clusters.costResolution : largestScreenSide(display));
     if (_walls && _options.transition == walkthrough::Transition::Warp)
-        _warp = std::make_unique<WarpPass>(scene, _renderer.gpu(), _options.render, display.depthRange().near);
+        _warp =
+            std::make_unique<walls::gl::WarpPass>(scene, _renderer.gpu(), _options.render, display.depthRange().near);
 }
 
 namespace {
 
 std::unique_ptr<Walkthrough::ClusterRuntime> makeClusters(const scenes::Scene& scene, const ClusterOptions& o,
-                                                          SceneRenderer& renderer, const std::string& rendererName,
-                                                          int costResolution) {
+                                                          render::gl::SceneRenderer& renderer,
+                                                          const std::string& rendererName, int costResolution) {
     auto c = std::make_unique<Walkthrough::ClusterRuntime>();
     c->coherence = hierarchy::ClusterCoherence(o.coherenceFrames);
     c->fades = hierarchy::ClusterFades(o.fadeFrames);
@@ -187,9 +188,10 @@ std::unique_ptr<Walkthrough::ClusterRuntime> makeClusters(const scenes::Scene& s
         c->model.objectTriangles.push_back(scene.meshes[object.mesh].triangleCount());
     }
     c->model.tree = hierarchy::buildClusterTree(bounds, o.divisions);
-    c->impostors = std::make_unique<ClusterImpostors>(scene, c->model, o.bake, o.cache);
-    c->model.costs =
-        measureClusterCosts(renderer, *c->impostors, c->model, scene, rendererName, o.cache, costResolution).costs;
+    c->impostors = std::make_unique<hierarchy::gl::ClusterImpostors>(scene, c->model, o.bake, o.cache);
+    c->model.costs = hierarchy::gl::measureClusterCosts(renderer, *c->impostors, c->model, scene, rendererName, o.cache,
+                                                        costResolution)
+                         .costs;
     c->costResolution = costResolution;
     return c;
 }
@@ -199,7 +201,7 @@ std::unique_ptr<Walkthrough::ClusterRuntime> makeClusters(const scenes::Scene& s
 Walkthrough::~Walkthrough() = default;
 
 const hierarchy::ClusterModel* Walkthrough::clusterModel() const { return _clusters ? &_clusters->model : nullptr; }
-const ClusterBakeStats* Walkthrough::clusterBakeStats() const {
+const hierarchy::gl::ClusterBakeStats* Walkthrough::clusterBakeStats() const {
     return _clusters ? &_clusters->impostors->stats() : nullptr;
 }
 const hierarchy::ClusterFramePlan* Walkthrough::lastClusterPlan() const {
@@ -268,7 +270,7 @@ walkthrough::FramePlan Walkthrough::planFrame(const walkthrough::FrameInput& inp
             _options.baker->want(wanted.now, wanted.soon,
                                  glm::dvec3(input.worldFromCave * glm::dvec4(input.head.position, 1.0)));
             _bakedNow = 0;
-            for (BakeEvent& e : _options.baker->take()) {
+            for (walls::gl::BakeEvent& e : _options.baker->take()) {
                 if (e.evicted) {
                     t.pager.removeTexture(e.texture.id);
                     continue;
@@ -303,10 +305,10 @@ void Walkthrough::makeResident(int group) {
     for (int evicted : g.pager.takeEvictions()) _renderer.gpu().freeGroup(evicted);
 }
 
-std::vector<WallDraw> Walkthrough::wallDraws(const walkthrough::FramePlan& plan) const {
-    std::vector<WallDraw> draws;
+std::vector<walls::gl::WallDraw> Walkthrough::wallDraws(const walkthrough::FramePlan& plan) const {
+    std::vector<walls::gl::WallDraw> draws;
     for (const walkthrough::WallDrawPlan& p : plan.wallDraws) {
-        WallDraw d{p.quad, {}, {}, 0, {}};
+        walls::gl::WallDraw d{p.quad, {}, {}, 0, {}};
         for (const auto& [id, weight] : p.textures) {
             d.textures[d.count] = _walls->textures->store.texture(id);
             d.contents[d.count] = _walls->textures->store.content(id);
@@ -317,19 +319,19 @@ std::vector<WallDraw> Walkthrough::wallDraws(const walkthrough::FramePlan& plan)
     return draws;
 }
 
-std::vector<DepthWallDraw> Walkthrough::depthWallDraws(const walkthrough::FramePlan& plan,
-                                                       std::vector<WallDraw>& flat) {
-    std::vector<DepthWallDraw> draws;
+std::vector<walls::gl::DepthWallDraw> Walkthrough::depthWallDraws(const walkthrough::FramePlan& plan,
+                                                                  std::vector<walls::gl::WallDraw>& flat) {
+    std::vector<walls::gl::DepthWallDraw> draws;
     if (!_walls || !_walls->textures || !_walls->textures->depthPass) return draws;
-    const TextureStore& store = _walls->textures->store;
-    std::vector<WallDraw> left;
+    const walls::gl::TextureStore& store = _walls->textures->store;
+    std::vector<walls::gl::WallDraw> left;
     for (std::size_t i = 0; i < plan.wallDraws.size() && i < flat.size(); ++i) {
-        DepthWallDraw d{flat[i].quad, {}, 0};
+        walls::gl::DepthWallDraw d{flat[i].quad, {}, 0};
         bool all = true;
         // A resident texture without depths (a flat one) draws the whole wall flat; textures
         // not resident are left out, as the flat pass leaves them.
         for (const auto& [id, weight] : plan.wallDraws[i].textures) {
-            std::optional<DepthWallLayer> layer = store.depthLayer(id);
+            std::optional<walls::gl::DepthWallLayer> layer = store.depthLayer(id);
             if (!layer) {
                 all = all && !store.resident(id);
                 continue;
@@ -360,13 +362,13 @@ std::vector<walkthrough::ViewDepth> Walkthrough::readDepths(const walkthrough::F
     const WallRuntime::Textures* textures = _walls ? _walls->textures.get() : nullptr;
     std::vector<walkthrough::ViewDepth> depths;
     for (const display::ScreenView& view : views) {
-        const int image = RenderTargets::imageOf(view.pass);
+        const int image = display::gl::RenderTargets::imageOf(view.pass);
         const display::Viewport& v = view.pass.viewport;
         _targets.bind(view.screen, image);
         glViewport(v.x, v.y, v.width, v.height);
         glEnable(GL_SCISSOR_TEST);
         glScissor(v.x, v.y, v.width, v.height);
-        FrameStats ignored;
+        display::FrameStats ignored;
         if (textures)
             textures->pass.drawDepth(walls.flat, view.frustum, caveFromWorld, textures->store.sampler(), ignored);
         if (textures && textures->depthPass)
@@ -385,14 +387,14 @@ void Walkthrough::drawViews(const walkthrough::FrameInput& input, const std::vec
                             const WallDraws& draws, walkthrough::FrameResult& result) {
     const glm::dmat4 caveFromWorld = glm::inverse(input.worldFromCave);
     const WallRuntime::Textures* textures = _walls ? _walls->textures.get() : nullptr;
-    const std::vector<WallDraw>& walls = draws.flat;
-    const std::vector<DepthWallDraw>& depthWalls = draws.depth;
+    const std::vector<walls::gl::WallDraw>& walls = draws.flat;
+    const std::vector<walls::gl::DepthWallDraw>& depthWalls = draws.depth;
     _renderer.beginFrame(_targets, _screens);
-    result.stats = forEachView(views, _targets, [&](const display::ScreenView& view) {
-        ViewStats stats = _renderer.renderView(view, input.worldFromCave, filter);
+    result.stats = render::gl::forEachView(views, _targets, [&](const display::ScreenView& view) {
+        display::ViewStats stats = _renderer.renderView(view, input.worldFromCave, filter);
         result.geometryTriangles += stats.triangles;
         // The warp, wall and cursor passes count into the view's triangles and draw calls.
-        FrameStats passes;
+        display::FrameStats passes;
         if (_warp) _warp->draw(plan.warpWalls, view, caveFromWorld, passes);
         // renderView leaves viewport, scissor and colour mask set for this view.
         if (_clusters) {
@@ -411,12 +413,12 @@ void Walkthrough::drawViews(const walkthrough::FrameInput& input, const std::vec
         return stats;
     });
     _renderer.endFrame(_targets);
-    result.perScreen = statsPerScreen(views, result.stats, _display.screens().size());
+    result.perScreen = render::gl::statsPerScreen(views, result.stats, _display.screens().size());
 }
 
 walkthrough::FrameResult Walkthrough::renderFrame(const walkthrough::FrameInput& input) {
     const auto start = Clock::now();
-    const std::optional<BackgroundBakeStats> bakeAtStart =
+    const std::optional<walls::gl::BackgroundBakeStats> bakeAtStart =
         _options.baker ? std::optional(_options.baker->stats()) : std::nullopt;
     _context.makeCurrent();  // callers may have used another context (a bake) in between
     const std::vector<display::ScreenView> views = renderedViews(input.head);
@@ -474,10 +476,10 @@ walkthrough::FrameResult Walkthrough::renderFrame(const walkthrough::FrameInput&
     result.frameMs = msSince(start);
     if (_context.windowCount() > 0) present();
     if (bakeAtStart) {  // the frame overlapped a bake: one ran at its start or end, or one began
-        const BackgroundBakeStats end = _options.baker->stats();
+        const walls::gl::BackgroundBakeStats end = _options.baker->stats();
         result.bakerBusy = bakeAtStart->busy || end.busy || end.started != bakeAtStart->started;
     }
-    if (input.readImages) result.images = readFrame(_display, _targets);
+    if (input.readImages) result.images = display::gl::readFrame(_display, _targets);
     if (input.readImages) result.warpedImages = _projectors->read(result.images);
     if (input.readDepth) result.depths = readDepths(input, views, walls);
     return result;
@@ -486,12 +488,13 @@ walkthrough::FrameResult Walkthrough::renderFrame(const walkthrough::FrameInput&
 void Walkthrough::present() {
     const int windows = std::min(_context.windowCount(), _targets.screenCount());
     for (int s = 0; s < windows; ++s) {
-        const ProjectorPass* pass = _projectors->pass(s);  // a projector shows the corrected image
-        PresentImage image{pass ? pass->colorTexture(0) : _targets.colorTexture(s, 0), 0, _targets.size(s)};
+        const display::gl::ProjectorPass* pass = _projectors->pass(s);  // a projector shows the corrected image
+        display::gl::PresentImage image{pass ? pass->colorTexture(0) : _targets.colorTexture(s, 0), 0,
+                                        _targets.size(s)};
         if (_targets.imageCount(s) > 1 && _context.info().stereoWindows)
             image.right = pass ? pass->colorTexture(1) : _targets.colorTexture(s, 1);
         _context.present(s, image);
     }
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walkthrough::gl

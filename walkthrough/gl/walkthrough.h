@@ -58,9 +58,11 @@
 #include <optional>
 #include <vector>
 
-namespace cavewall::gl {
-
+namespace cavewall::walls::gl {
 class BackgroundBaker;  // walls/gl/background_baker.h
+}  // namespace cavewall::walls::gl
+
+namespace cavewall::walkthrough::gl {
 
 // Maciel & Shirley's (1995) textured clusters (hierarchy/gl/cluster_impostors.h,
 // hierarchy/cluster_frame.h): the content objects are drawn as the frame's selection from the
@@ -70,7 +72,7 @@ class BackgroundBaker;  // walls/gl/background_baker.h
 struct ClusterOptions {
     bool enabled = false;
     glm::ivec3 divisions{8, 2, 8};  // the hierarchy's finest grid, cells per axis
-    ClusterBakeSettings bake;
+    hierarchy::gl::ClusterBakeSettings bake;
     std::filesystem::path cache;      // the bake cache folder (clusters/ inside it)
     double budgetMs = 1000.0 / 60.0;  // predicted cost per frame unless FrameInput's
     int coherenceFrames = 3;          // ClusterCoherence threshold
@@ -82,16 +84,16 @@ struct ClusterOptions {
 
 struct WalkthroughOptions : walkthrough::WalkthroughSettings {
     ClusterOptions clusters;
-    RenderSettings render;  // clear colour, ambient, levels of detail
-    // Depth: walls drawn by gl::DepthWallPass from a depth bake (BakeSettings::kind, the
+    render::gl::RenderSettings render;  // clear colour, ambient, levels of detail
+    // Depth: walls drawn by walls::gl::DepthWallPass from a depth bake (BakeSettings::kind, the
     // manifest's depth files, paged and budgeted with the colour by walls::TexturePager and
-    // gl::TextureStore); a texture without a depth file is drawn flat, one whose depth file is
+    // walls::gl::TextureStore); a texture without a depth file is drawn flat, one whose depth file is
     // bad fails like a bad colour file (the wall keeps its last texture or draws geometry).
     walls::WallKind wallKind = walls::WallKind::Flat;
     // Baking on demand (walls/gl/background_baker.h; flat or depth walls, not with synchronous paging):
     // each frame tells the baker what it wants and hands what it baked (or evicted from the
     // disk) to the texture pager. Not owned; must outlive the walkthrough. Null: none.
-    BackgroundBaker* baker = nullptr;
+    walls::gl::BackgroundBaker* baker = nullptr;
 };
 
 // What resident geometry is measured against, in MB (2^20 bytes) of GPU buffers, with the
@@ -111,20 +113,20 @@ public:
     // and when the control (WalkthroughSettings::wallTextures off, which pages, uploads and draws
     // no texture) is asked for with the warp transition or a background baker.
     Walkthrough(const scenes::Scene& scene, const scenes::SceneDescription& description,
-                const display::Display& display, Context& context, std::optional<walls::WallSetup> walls,
+                const display::Display& display, display::gl::Context& context, std::optional<walls::WallSetup> walls,
                 WalkthroughOptions options = {}, std::vector<int> screens = {});
     ~Walkthrough();
 
     walkthrough::FrameResult renderFrame(const walkthrough::FrameInput& input);
 
     const display::Display& display() const { return _display; }
-    const RenderTargets& targets() const { return _targets; }
+    const display::gl::RenderTargets& targets() const { return _targets; }
     bool hasWalls() const { return _walls != nullptr; }
     bool hasClusters() const { return _clusters != nullptr; }
     // With clusters: the hierarchy, measured costs and accuracies, and how the impostors were
     // made; the last frame's plan (what was drawn).
     const hierarchy::ClusterModel* clusterModel() const;
-    const ClusterBakeStats* clusterBakeStats() const;
+    const hierarchy::gl::ClusterBakeStats* clusterBakeStats() const;
     const hierarchy::ClusterFramePlan* lastClusterPlan() const;
     int clusterCostResolution() const;  // the cost view's side in pixels (0 without clusters)
     struct ClusterRuntime;              // walkthrough.cpp
@@ -141,12 +143,13 @@ private:
     void makeResident(int group);
     walkthrough::FramePlan planFrame(const walkthrough::FrameInput& input,
                                      const std::vector<display::ScreenView>& views);
-    std::vector<WallDraw> wallDraws(const walkthrough::FramePlan& plan) const;
+    std::vector<walls::gl::WallDraw> wallDraws(const walkthrough::FramePlan& plan) const;
     // Depth walls: the walls of `flat` whose every texture has its depth move to the result.
-    std::vector<DepthWallDraw> depthWallDraws(const walkthrough::FramePlan& plan, std::vector<WallDraw>& flat);
+    std::vector<walls::gl::DepthWallDraw> depthWallDraws(const walkthrough::FramePlan& plan,
+                                                         std::vector<walls::gl::WallDraw>& flat);
     struct WallDraws {
-        std::vector<WallDraw> flat;
-        std::vector<DepthWallDraw> depth;
+        std::vector<walls::gl::WallDraw> flat;
+        std::vector<walls::gl::DepthWallDraw> depth;
     };
     WallDraws allWallDraws(const walkthrough::FramePlan& plan);
     void drawViews(const walkthrough::FrameInput& input, const std::vector<display::ScreenView>& views,
@@ -162,21 +165,21 @@ private:
     const scenes::Scene& _scene;
     const scenes::SceneDescription& _description;
     const display::Display& _display;
-    Context& _context;
+    display::gl::Context& _context;
     WalkthroughOptions _options;
     std::vector<int> _screens;
-    RenderTargets _targets;
-    SceneRenderer _renderer;
+    display::gl::RenderTargets _targets;
+    render::gl::SceneRenderer _renderer;
     std::unique_ptr<WallRuntime> _walls;
     std::unique_ptr<ClusterRuntime> _clusters;
     std::size_t _uploadedBytes = 0;      // wall texture bytes uploaded by the last planFrame
     int _bakedNow = 0, _bakedTotal = 0;  // baking on demand: textures handed to the pager
     std::unique_ptr<walkthrough::FramePlanner> _planner;
     std::unique_ptr<HandCursorPass> _cursor;
-    std::unique_ptr<WarpPass> _warp;
-    std::unique_ptr<ProjectorPasses>
-        _projectors;  // per-screen projector warp and blend  // Transition::Warp with walls only
-    GpuTimer _timer;  // timestamp pairs: llvmpipe's first GL_TIME_ELAPSED is garbage
+    std::unique_ptr<walls::gl::WarpPass> _warp;
+    std::unique_ptr<display::gl::ProjectorPasses>
+        _projectors;               // per-screen projector warp and blend  // Transition::Warp with walls only
+    display::gl::GpuTimer _timer;  // timestamp pairs: llvmpipe's first GL_TIME_ELAPSED is garbage
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walkthrough::gl

@@ -6,7 +6,7 @@
 
 #include <utility>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 BackgroundBaker::BackgroundBaker(const scenes::Scene& scene, const scenes::SceneDescription& description,
                                  const walls::WallSetup& walls, BakeRequest request, BackgroundBakerOptions options)
@@ -206,4 +206,4 @@ void BackgroundBaker::evict(const std::vector<int>& ids) {
     }
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

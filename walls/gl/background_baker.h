@@ -41,7 +41,7 @@
 #include <thread>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 struct BackgroundBakerOptions {
     std::uint64_t cacheBudgetBytes = 0;  // 0: no disk budget (walls::cacheBudgetBytes)
@@ -142,4 +142,4 @@ private:
     std::thread _thread;  // last: started once the rest exists
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

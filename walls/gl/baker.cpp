@@ -23,7 +23,7 @@
 #include <thread>
 #include <utility>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 // The bake cache's GL-free parts (walls/bake_key.h, bake_cache.h, bake_writer.h).
 using walls::BakeWriter;
@@ -162,7 +162,7 @@ private:
     };
     void render(const std::vector<Item>& items);
     // The context this bake renders with: the caller's (BakeRequest::context) or its own.
-    gl::Context* renderContext() const { return _request.context ? _request.context : _ownContext.get(); }
+    display::gl::Context* renderContext() const { return _request.context ? _request.context : _ownContext.get(); }
     void renderOne(const Item& item, WallTextureRenderer& renderer, BakeWriter& writer, Drawn& drawn) const;
     void add(const Drawn& drawn);
     Item itemOf(const walls::Texture& t) const;
@@ -181,7 +181,7 @@ private:
     std::vector<Item> _pending;
     walls::BakeManifest _listed;  // what the folder's manifest.json lists
     // Made at the first render and kept (baking on demand renders one texture per call).
-    std::unique_ptr<gl::Context> _ownContext;
+    std::unique_ptr<display::gl::Context> _ownContext;
     std::unique_ptr<WallTextureRenderer> _renderer;
     std::unique_ptr<BakeWriter> _writer;
     std::vector<walls::BakedTexture> _fresh;                    // baked since the last bakeIds
@@ -262,7 +262,7 @@ void Bake::endRendering() {
         _writer.reset();
     }
     {
-        gl::CurrentContextScope callers;
+        display::gl::CurrentContextScope callers;
         if (_renderer) renderContext()->makeCurrent();  // its objects' context
         _renderer.reset();
         _ownContext.reset();
@@ -404,8 +404,8 @@ void Bake::sample() {
 // renders a few textures per call); endRendering ends them.
 void Bake::render(const std::vector<Item>& items) {
     const Clock::time_point start = Clock::now();
-    gl::CurrentContextScope callers;  // the caller's context is current again when this returns
-    if (!_request.context && !_ownContext) _ownContext = gl::createHeadlessContext();
+    display::gl::CurrentContextScope callers;  // the caller's context is current again when this returns
+    if (!_request.context && !_ownContext) _ownContext = display::gl::createHeadlessContext();
     renderContext()->makeCurrent();
     ensureFolder(_result.folder);
     if (!_renderer)
@@ -431,7 +431,7 @@ void Bake::render(const std::vector<Item>& items) {
     for (std::size_t h = 0; h < helped.size(); ++h)
         threads.emplace_back([&, h] {
             try {
-                std::unique_ptr<gl::Context> context = gl::createHeadlessContext();
+                std::unique_ptr<display::gl::Context> context = display::gl::createHeadlessContext();
                 context->makeCurrent();
                 WallTextureRenderer own(_scene, _request.settings.ambient, _request.settings.lodTexels);
                 for (std::size_t i; (i = next++) < items.size();) renderOne(items[i], own, writer, helped[h]);
@@ -573,4 +573,4 @@ BakeResult bakeScene(const BakeRequest& request) {
     return bakeWalls(scene, description, walls::prepareWalls(scene, description, plan), request);
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

@@ -48,7 +48,7 @@
 #include <string>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 struct BakeSettings {
     int maxResolution = 1024;  // texels per texture side at most, [16, 16384]; larger plan
@@ -106,7 +106,7 @@ struct BakeRequest {
     std::filesystem::path cache;  // empty: defaultCacheFolder()
     // A context to render with (made current before use); null: a headless one is created
     // only when something has to be rendered.
-    Context* context = nullptr;
+    display::gl::Context* context = nullptr;
     std::function<void(const BakeProgress&)> progress;  // after each texture (may be empty)
     // Asked on the calling thread before each texture it draws (may be empty): true stops the
     // bake there. The textures in hand are finished and listed, as after an interrupted bake,
@@ -145,7 +145,7 @@ struct BakeResult {
 // `description`, loaded from request.scene, whose files key the cache). Throws cavewall::Error
 // for bad settings or unwritable folders; the manifest then lists what was finished. Set the
 // setup's folder and manifest from the result to page its textures (walkthrough/gl/walkthrough.h).
-// The calling thread's current context (gl::Context::current) is current again on return.
+// The calling thread's current context (display::gl::Context::current) is current again on return.
 BakeResult bakeWalls(const scenes::Scene& scene, const scenes::SceneDescription& description,
                      const walls::WallSetup& walls, const BakeRequest& request);
 
@@ -160,7 +160,7 @@ BakeResult bakeScene(const BakeRequest& request);
 // bake() renders and writes the given textures with request.context, else with a headless
 // context it makes on the calling thread at the first bake; call bake(), forget() and
 // endRendering() on that one thread. Whichever context was current there before
-// (gl::Context::current) is current again when bake() and endRendering() return. The manifest is
+// (display::gl::Context::current) is current again when bake() and endRendering() return. The manifest is
 // rewritten atomically at most about once every 5 seconds while baking, at forget() and at
 // endRendering(), listing only finished files.
 class TextureBaker {
@@ -199,4 +199,4 @@ std::filesystem::path defaultCacheFolder();
 std::string textureFileName(int id, std::uint64_t textureKey,
                             walls::TextureFormat format = walls::TextureFormat::Rgba8);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

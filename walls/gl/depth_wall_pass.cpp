@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <string>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 namespace {
 
@@ -200,8 +200,8 @@ std::string depthFragmentSource(int layers) {
 namespace {
 
 // One level of GL_R32F, read with texelFetch.
-gl::GlObject uploadFloats(const walls::DepthImage& image) {
-    gl::GlObject t = gl::createTexture(GL_TEXTURE_2D);
+display::gl::GlObject uploadFloats(const walls::DepthImage& image) {
+    display::gl::GlObject t = display::gl::createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(t.id(), 1, GL_R32F, image.width, image.height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
@@ -229,7 +229,7 @@ DepthTexture uploadDepthTexture(const walls::DepthTextureData& data) {
 }
 
 DepthWallPass::DepthWallPass(walls::ReprojectSettings settings)
-    : _settings(settings), _vertexArray(createVertexArray()), _noSkip(uploadFloats({1, 1, {0.0f}})) {
+    : _settings(settings), _vertexArray(display::gl::createVertexArray()), _noSkip(uploadFloats({1, 1, {0.0f}})) {
     if (settings.maxSteps < 1 || settings.maxSteps > 1024)
         throw Error("depth wall pass: maxSteps: expected [1, 1024], got " + std::to_string(settings.maxSteps));
     if (settings.refine < 0 || settings.refine > 16)
@@ -239,23 +239,23 @@ DepthWallPass::DepthWallPass(walls::ReprojectSettings settings)
 
 DepthWallPass::Program DepthWallPass::build(int layers, const std::string& fragment) {
     Program p;
-    p.program = buildProgram(kName, vertexSource(layers), fragment);
+    p.program = display::gl::buildProgram(kName, vertexSource(layers), fragment);
     const GLuint id = p.program.id();
-    p.corners = uniformLocation(id, kName, "uCorners");
-    p.projection = uniformLocation(id, kName, "uProjection");
-    p.weights = uniformLocation(id, kName, "uWeights");
-    p.eye = uniformLocation(id, kName, "uEye");
-    p.size = uniformLocation(id, kName, "uSize");
-    p.samples = uniformLocation(id, kName, "uSample");
-    p.ranges = uniformLocation(id, kName, "uRange");
-    p.maxSteps = uniformLocation(id, kName, "uMaxSteps");
-    p.refine = uniformLocation(id, kName, "uRefine");
-    p.rect = uniformLocation(id, kName, "uRect");
+    p.corners = display::gl::uniformLocation(id, kName, "uCorners");
+    p.projection = display::gl::uniformLocation(id, kName, "uProjection");
+    p.weights = display::gl::uniformLocation(id, kName, "uWeights");
+    p.eye = display::gl::uniformLocation(id, kName, "uEye");
+    p.size = display::gl::uniformLocation(id, kName, "uSize");
+    p.samples = display::gl::uniformLocation(id, kName, "uSample");
+    p.ranges = display::gl::uniformLocation(id, kName, "uRange");
+    p.maxSteps = display::gl::uniformLocation(id, kName, "uMaxSteps");
+    p.refine = display::gl::uniformLocation(id, kName, "uRefine");
+    p.rect = display::gl::uniformLocation(id, kName, "uRect");
     return p;
 }
 
 void DepthWallPass::draw(const std::vector<DepthWallDraw>& walls, const display::OffAxisFrustum& frustum,
-                         const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const {
+                         const glm::dmat4& caveFromWorld, GLuint sampler, display::FrameStats& stats) const {
     if (walls.empty()) return;
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
@@ -269,7 +269,7 @@ void DepthWallPass::draw(const std::vector<DepthWallDraw>& walls, const display:
 }
 
 void DepthWallPass::drawDepth(const std::vector<DepthWallDraw>& walls, const display::OffAxisFrustum& frustum,
-                              const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const {
+                              const glm::dmat4& caveFromWorld, GLuint sampler, display::FrameStats& stats) const {
     if (walls.empty()) return;
     if (!_depthPrograms) {  // built on first use: only depth read-backs need them
         _depthPrograms.emplace();
@@ -287,7 +287,7 @@ void DepthWallPass::drawDepth(const std::vector<DepthWallDraw>& walls, const dis
 
 void DepthWallPass::drawWith(const Programs& programs, const std::vector<DepthWallDraw>& walls,
                              const display::OffAxisFrustum& frustum, const glm::dmat4& caveFromWorld, GLuint sampler,
-                             FrameStats& stats) const {
+                             display::FrameStats& stats) const {
     glBindVertexArray(_vertexArray.id());
     const glm::mat4 projection(frustum.clipFromView);
     const glm::dmat4 viewFromWorld = frustum.viewFromFrame * caveFromWorld;
@@ -343,4 +343,4 @@ void DepthWallPass::drawWith(const Programs& programs, const std::vector<DepthWa
     }
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

@@ -58,7 +58,7 @@
 #include <string>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 // One baked texture of a depth wall: colour (uploadWallTexture) and depth (uploadDepthTexture).
 struct DepthWallLayer {
@@ -82,7 +82,7 @@ struct DepthWallDraw {
 // of at least 8 x 8 texels, the march's skip blocks (walls::depthBlockMinimum with dilate 1) in
 // a GL_R32F texture of their own (empty otherwise).
 struct DepthTexture {
-    GlObject depth, skip;
+    display::gl::GlObject depth, skip;
 };
 // Needs a current context.
 DepthTexture uploadDepthTexture(const walls::DepthImage& image);
@@ -99,7 +99,7 @@ public:
     // As WallPass::draw: into the bound framebuffer for one view; `frustum` in the cave frame,
     // caveFromWorld places the world; `sampler` filters the colour (0: the texture's own).
     void draw(const std::vector<DepthWallDraw>& walls, const display::OffAxisFrustum& frustum,
-              const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const;
+              const glm::dmat4& caveFromWorld, GLuint sampler, display::FrameStats& stats) const;
 
     // The same walls, writing only depth: each pixel where a layer's march hits and the
     // layers' summed alpha is at least 1/2 gets the depth of the hit (the point s behind the
@@ -107,11 +107,11 @@ public:
     // (the colour mask is all on afterwards). For reading back the depth a viewer sees
     // (display/eye_distance.h) after a frame is drawn; the programs are built on the first call.
     void drawDepth(const std::vector<DepthWallDraw>& walls, const display::OffAxisFrustum& frustum,
-                   const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const;
+                   const glm::dmat4& caveFromWorld, GLuint sampler, display::FrameStats& stats) const;
 
 private:
     struct Program {
-        GlObject program;
+        display::gl::GlObject program;
         GLint corners = -1, projection = -1, weights = -1, eye = -1, size = -1, samples = -1, ranges = -1,
               maxSteps = -1, refine = -1, rect = -1;
     };
@@ -119,12 +119,12 @@ private:
     static Program build(int layers, const std::string& fragment);
     void drawWith(const Programs& programs, const std::vector<DepthWallDraw>& walls,
                   const display::OffAxisFrustum& frustum, const glm::dmat4& caveFromWorld, GLuint sampler,
-                  FrameStats& stats) const;
+                  display::FrameStats& stats) const;
     walls::ReprojectSettings _settings;
     Programs _programs;
     mutable std::optional<Programs> _depthPrograms;
-    GlObject _vertexArray;
-    GlObject _noSkip;  // one texel of depth 0: a layer without skip blocks skips nothing
+    display::gl::GlObject _vertexArray;
+    display::gl::GlObject _noSkip;  // one texel of depth 0: a layer without skip blocks skips nothing
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

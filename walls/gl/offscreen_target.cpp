@@ -6,11 +6,11 @@
 #include <algorithm>
 #include <string>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 OffscreenTarget::OffscreenTarget(glm::ivec2 size)
-    : _size(size), _color(gl::createTexture(GL_TEXTURE_2D)), _depth(gl::createTexture(GL_TEXTURE_2D)),
-      _framebuffer(gl::createFramebuffer()) {
+    : _size(size), _color(display::gl::createTexture(GL_TEXTURE_2D)), _depth(display::gl::createTexture(GL_TEXTURE_2D)),
+      _framebuffer(display::gl::createFramebuffer()) {
     glTextureStorage2D(_color.id(), 1, GL_SRGB8_ALPHA8, size.x, size.y);
     glTextureStorage2D(_depth.id(), 1, GL_DEPTH_COMPONENT32F, size.x, size.y);
     glNamedFramebufferTexture(_framebuffer.id(), GL_COLOR_ATTACHMENT0, _color.id(), 0);
@@ -34,7 +34,7 @@ void OffscreenTarget::bindAndClear(glm::vec4 c) const {
 }
 
 scenes::Image OffscreenTarget::read(const std::string& name) const {
-    return gl::readFramebuffer(_framebuffer.id(), GL_COLOR_ATTACHMENT0, _size, name);
+    return display::gl::readFramebuffer(_framebuffer.id(), GL_COLOR_ATTACHMENT0, _size, name);
 }
 
 std::vector<float> OffscreenTarget::readDepth() const {
@@ -49,4 +49,4 @@ std::vector<float> OffscreenTarget::readDepth() const {
     return rows;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

@@ -10,7 +10,7 @@
 
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 class OffscreenTarget {
 public:
@@ -30,7 +30,7 @@ public:
 
 private:
     glm::ivec2 _size;
-    gl::GlObject _color, _depth, _framebuffer;
+    display::gl::GlObject _color, _depth, _framebuffer;
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

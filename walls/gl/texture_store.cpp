@@ -5,11 +5,11 @@
 
 #include <algorithm>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 TextureStore::TextureStore(walls::TexturePager& pager, std::size_t uploadBytesPerFrame)
     : _pager(pager), _uploadBytes(std::max<std::size_t>(uploadBytesPerFrame, 1)), _pacer(_uploadBytes),
-      _sampler(createSampler()) {
+      _sampler(display::gl::createSampler()) {
     glSamplerParameteri(_sampler.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
     glSamplerParameteri(_sampler.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glSamplerParameteri(_sampler.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -32,7 +32,7 @@ std::size_t TextureStore::update() {
         if (!_inFlight) {
             std::optional<walls::DecodedTexture> d = _pager.takeNext(false);
             if (!d) break;
-            GlObject texture = createWallTexture(d->levels);
+            display::gl::GlObject texture = createWallTexture(d->levels);
             _inFlight.emplace(InFlight{std::move(*d), std::move(texture), nullptr});
             _inFlight->cursor = std::make_unique<walls::UploadCursor>(_inFlight->decoded.levels);
         }
@@ -55,7 +55,7 @@ std::size_t TextureStore::finishWhole(walls::DecodedTexture d) {
 }
 
 // Colour uploaded: the depth goes up at once, then both count as resident. Returns the depth's bytes.
-std::size_t TextureStore::makeResident(walls::DecodedTexture& d, GlObject colour) {
+std::size_t TextureStore::makeResident(walls::DecodedTexture& d, display::gl::GlObject colour) {
     std::size_t depthBytes = 0;
     if (d.depth) {
         _depthTextures[d.id] = {uploadDepthTexture(*d.depth),
@@ -109,4 +109,4 @@ std::optional<DepthWallLayer> TextureStore::depthLayer(int id) const {
                           0.0f,   d.texture.skip.id(),  d.content,       d.texels};
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

@@ -25,7 +25,7 @@
 #include <memory>
 #include <optional>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 class TextureStore {
 public:
@@ -53,19 +53,19 @@ private:
     // A prefetch partly uploaded: its levels, texture and where its next band starts.
     struct InFlight {
         walls::DecodedTexture decoded;
-        GlObject texture;
+        display::gl::GlObject texture;
         std::unique_ptr<walls::UploadCursor> cursor;  // points into decoded.levels
     };
     std::size_t finishWhole(walls::DecodedTexture d);  // uploads all of `d` and makes it resident
     std::size_t advance(std::size_t maxBytes);         // uploads the in-flight prefetch's next band
     std::size_t finishInFlight();
-    std::size_t makeResident(walls::DecodedTexture& d, GlObject colour);  // the depth uploaded here
+    std::size_t makeResident(walls::DecodedTexture& d, display::gl::GlObject colour);  // the depth uploaded here
 
     walls::TexturePager& _pager;
     std::size_t _uploadBytes;
     walls::UploadPacer _pacer;
     std::optional<InFlight> _inFlight;
-    std::map<int, GlObject> _textures;
+    std::map<int, display::gl::GlObject> _textures;
     std::map<int, walls::TextureRect> _contents;
     // A resident texture's depths, and the sampling point and range they were baked from.
     struct ResidentDepth {
@@ -76,7 +76,7 @@ private:
         glm::ivec2 texels{1, 1};
     };
     std::map<int, ResidentDepth> _depthTextures;
-    GlObject _sampler;
+    display::gl::GlObject _sampler;
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

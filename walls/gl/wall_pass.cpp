@@ -6,7 +6,7 @@
 
 #include <string>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 namespace {
 
@@ -51,20 +51,20 @@ std::string depthFragmentSource(int textures) {
 
 WallPass::Program WallPass::build(const std::string& fragment) {
     Program p;
-    p.program = buildProgram(kName, kVertex, fragment);
-    p.corners = uniformLocation(p.program.id(), kName, "uCorners");
-    p.projection = uniformLocation(p.program.id(), kName, "uProjection");
-    p.weights = uniformLocation(p.program.id(), kName, "uWeights");
-    p.rect = uniformLocation(p.program.id(), kName, "uRect");
+    p.program = display::gl::buildProgram(kName, kVertex, fragment);
+    p.corners = display::gl::uniformLocation(p.program.id(), kName, "uCorners");
+    p.projection = display::gl::uniformLocation(p.program.id(), kName, "uProjection");
+    p.weights = display::gl::uniformLocation(p.program.id(), kName, "uWeights");
+    p.rect = display::gl::uniformLocation(p.program.id(), kName, "uRect");
     return p;
 }
 
-WallPass::WallPass() : _vertexArray(createVertexArray()) {
+WallPass::WallPass() : _vertexArray(display::gl::createVertexArray()) {
     for (int n = 1; n <= kMaxWallTextures; ++n) _programs[n - 1] = build(fragmentSource(n));
 }
 
 void WallPass::draw(const std::vector<WallDraw>& walls, const display::OffAxisFrustum& frustum,
-                    const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const {
+                    const glm::dmat4& caveFromWorld, GLuint sampler, display::FrameStats& stats) const {
     if (walls.empty()) return;
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
@@ -78,7 +78,7 @@ void WallPass::draw(const std::vector<WallDraw>& walls, const display::OffAxisFr
 }
 
 void WallPass::drawDepth(const std::vector<WallDraw>& walls, const display::OffAxisFrustum& frustum,
-                         const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const {
+                         const glm::dmat4& caveFromWorld, GLuint sampler, display::FrameStats& stats) const {
     if (walls.empty()) return;
     if (!_depthPrograms) {  // built on first use: only depth read-backs need them
         _depthPrograms.emplace();
@@ -96,7 +96,7 @@ void WallPass::drawDepth(const std::vector<WallDraw>& walls, const display::OffA
 
 void WallPass::drawWith(const Programs& programs, const std::vector<WallDraw>& walls,
                         const display::OffAxisFrustum& frustum, const glm::dmat4& caveFromWorld, GLuint sampler,
-                        FrameStats& stats) const {
+                        display::FrameStats& stats) const {
     glBindVertexArray(_vertexArray.id());
     const glm::mat4 projection(frustum.clipFromView);
     // Corners go to the view frame in double; only the eye-relative result is rounded to float.
@@ -129,4 +129,4 @@ void WallPass::drawWith(const Programs& programs, const std::vector<WallDraw>& w
     }
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 using walls::kMaxWallTextures;  // walls/frame_select.h
 
@@ -48,7 +48,7 @@ public:
     // already set by the caller, depth holding the view's geometry). `frustum` is the view's
     // (cave frame); caveFromWorld places the world. Adds one draw call and 2 triangles per wall.
     void draw(const std::vector<WallDraw>& walls, const display::OffAxisFrustum& frustum,
-              const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const;
+              const glm::dmat4& caveFromWorld, GLuint sampler, display::FrameStats& stats) const;
 
     // The same walls, writing only depth: each pixel where the weighted sum's alpha is at least
     // 1/2 (the wall's texture covers it more than what lies behind shows) gets the quad's depth
@@ -56,20 +56,20 @@ public:
     // all on afterwards). For reading back the depth a viewer sees (display/eye_distance.h)
     // after a frame is drawn; the programs are built on the first call.
     void drawDepth(const std::vector<WallDraw>& walls, const display::OffAxisFrustum& frustum,
-                   const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const;
+                   const glm::dmat4& caveFromWorld, GLuint sampler, display::FrameStats& stats) const;
 
 private:
     struct Program {
-        GlObject program;
+        display::gl::GlObject program;
         GLint corners = -1, projection = -1, weights = -1, rect = -1;
     };
     using Programs = std::array<Program, kMaxWallTextures>;  // [n - 1] samples n textures
     static Program build(const std::string& fragment);
     void drawWith(const Programs& programs, const std::vector<WallDraw>& walls, const display::OffAxisFrustum& frustum,
-                  const glm::dmat4& caveFromWorld, GLuint sampler, FrameStats& stats) const;
+                  const glm::dmat4& caveFromWorld, GLuint sampler, display::FrameStats& stats) const;
     Programs _programs;
     mutable std::optional<Programs> _depthPrograms;
-    GlObject _vertexArray;
+    display::gl::GlObject _vertexArray;
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

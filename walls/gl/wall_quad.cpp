@@ -9,7 +9,7 @@
 #include <string>
 #include <utility>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 namespace {
 
@@ -77,13 +77,13 @@ void checkLevels(const walls::TextureLevels& levels) {
 
 }  // namespace
 
-gl::GlObject createWallTexture(const walls::TextureLevels& levels) {
+display::gl::GlObject createWallTexture(const walls::TextureLevels& levels) {
     if (levels.format != walls::TextureFormat::Rgba8 && !supportsTextureFormat(levels.format))
         throw Error(
             "wall texture: expected a context that samples " + std::string(walls::textureFormatName(levels.format)) +
             " (GL_EXT_texture_compression_s3tc with sRGB), got one without it; bake with --texture-format rgba8");
     checkLevels(levels);
-    gl::GlObject t = gl::createTexture(GL_TEXTURE_2D);
+    display::gl::GlObject t = display::gl::createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(t.id(), static_cast<GLsizei>(levels.count()), glInternalFormat(levels.format), levels.width(),
                        levels.height());
     glTextureParameteri(t.id(), GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(levels.count()) - 1);
@@ -110,22 +110,22 @@ void uploadWallTextureBand(GLuint texture, const walls::TextureLevels& levels, c
                                   l.blocks.data() + piece.offset);
 }
 
-gl::GlObject uploadWallTexture(const walls::TextureLevels& levels) {
-    gl::GlObject t = createWallTexture(levels);
+display::gl::GlObject uploadWallTexture(const walls::TextureLevels& levels) {
+    display::gl::GlObject t = createWallTexture(levels);
     walls::UploadCursor cursor(levels);
     while (!cursor.done()) uploadWallTextureBand(t.id(), levels, cursor.next(levels.bytes()));
     return t;
 }
 
-gl::GlObject uploadWallTexture(std::vector<scenes::Image> levels) {
+display::gl::GlObject uploadWallTexture(std::vector<scenes::Image> levels) {
     return uploadWallTexture(walls::TextureLevels(std::move(levels)));
 }
 
 WallQuadDrawer::WallQuadDrawer()
-    : _program(gl::buildProgram(kName, kVertex, kFragment)), _vertexArray(gl::createVertexArray()) {
-    _modelView = gl::uniformLocation(_program.id(), kName, "uModelView");
-    _projection = gl::uniformLocation(_program.id(), kName, "uProjection");
-    _weight = gl::uniformLocation(_program.id(), kName, "uWeight");
+    : _program(display::gl::buildProgram(kName, kVertex, kFragment)), _vertexArray(display::gl::createVertexArray()) {
+    _modelView = display::gl::uniformLocation(_program.id(), kName, "uModelView");
+    _projection = display::gl::uniformLocation(_program.id(), kName, "uProjection");
+    _weight = display::gl::uniformLocation(_program.id(), kName, "uWeight");
 }
 
 void WallQuadDrawer::draw(const display::OffAxisFrustum& frustum, const display::ScreenQuad& quad, unsigned texture,
@@ -155,4 +155,4 @@ void WallQuadDrawer::draw(const display::OffAxisFrustum& frustum, const display:
     glDepthMask(GL_TRUE);
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

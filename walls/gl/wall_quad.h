@@ -11,22 +11,22 @@
 
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 // Uploads MIP levels (largest first, each the next MIP size of the previous, premultiplied as
 // walls/texture_mips.h says) as one GL_SRGB8_ALPHA8 texture with trilinear filtering and
 // clamped edges. Needs a current context. Throws Error for inconsistent levels.
-gl::GlObject uploadWallTexture(std::vector<scenes::Image> levels);
+display::gl::GlObject uploadWallTexture(std::vector<scenes::Image> levels);
 // As above for any format of walls/texture_blocks.h: RGBA8 as above; Bc1 and Bc3 as
 // GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT / _DXT5_EXT with their blocks uploaded as they are
 // (glCompressedTextureSubImage2D), so the sampler decodes sRGB to linear as for RGBA8. Throws
 // Error when the context lacks S3TC with sRGB (supportsTextureFormat) or levels are inconsistent.
-gl::GlObject uploadWallTexture(const walls::TextureLevels& levels);
+display::gl::GlObject uploadWallTexture(const walls::TextureLevels& levels);
 // uploadWallTexture in steps, for an uploader that spreads a texture over frames
 // (walls/gl/texture_store.h): the texture with every level's storage and the sampling state but
 // no texels (same checks and errors), then each band of walls/upload_cursor.h from `levels`
 // (the same levels, unchanged). Sampling it before its last band is up reads undefined texels.
-gl::GlObject createWallTexture(const walls::TextureLevels& levels);
+display::gl::GlObject createWallTexture(const walls::TextureLevels& levels);
 void uploadWallTextureBand(GLuint texture, const walls::TextureLevels& levels, const walls::UploadPiece& piece);
 // Whether the current context can sample `format` (Rgba8 always; Bc1, Bc3 need
 // GL_EXT_texture_compression_s3tc and GL_EXT_texture_sRGB or ..._s3tc_srgb).
@@ -49,8 +49,8 @@ public:
               float weight = 1.0f);
 
 private:
-    gl::GlObject _program, _vertexArray;
+    display::gl::GlObject _program, _vertexArray;
     GLint _modelView = -1, _projection = -1, _weight = -1;
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

@@ -3,7 +3,7 @@
 #include <chrono>
 #include <limits>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 namespace {
 
@@ -16,7 +16,7 @@ double msSince(Clock::time_point start) {
 }  // namespace
 
 WallTextureRenderer::WallTextureRenderer(const scenes::Scene& scene, float ambient, double lodTexels)
-    : _lodTexels(lodTexels), _renderer(scene, gl::RenderSettings{glm::vec4(0.0f), ambient, true, lodTexels}) {}
+    : _lodTexels(lodTexels), _renderer(scene, render::gl::RenderSettings{glm::vec4(0.0f), ambient, true, lodTexels}) {}
 
 // Draws and waits for the GL (so that the timing splits drawing from reading back; the read
 // would wait for it anyway), then reads the colour back.
@@ -26,7 +26,7 @@ scenes::Image WallTextureRenderer::draw(const display::ScreenQuad& quad, glm::dv
     if (!_target || _target->size() != resolution) _target = std::make_unique<OffscreenTarget>(resolution);
     const display::OffAxisFrustum frustum =
         display::offAxisFrustum(quad, eye, {0.05, std::numeric_limits<double>::infinity()});
-    gl::ViewTarget target;
+    render::gl::ViewTarget target;
     target.framebuffer = _target->framebuffer();
     target.viewport = {0, 0, resolution.x, resolution.y};
     target.clearColor = glm::vec4(0.0f);  // alpha 0: nothing behind the wall here
@@ -63,4 +63,4 @@ scenes::Image WallTextureRenderer::render(const display::ScreenQuad& quad, glm::
     return colour;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

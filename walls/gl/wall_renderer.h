@@ -20,12 +20,12 @@
 #include <memory>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 class WallTextureRenderer {
 public:
     // Uploads `scene`; needs a current GL 4.5 context, in which every later call is made.
-    // `ambient` as gl::RenderSettings::ambient; `lodTexels` > 0: draw at levels of detail
+    // `ambient` as render::gl::RenderSettings::ambient; `lodTexels` > 0: draw at levels of detail
     // whose error covers at most that many texels (see above); 0: full detail.
     WallTextureRenderer(const scenes::Scene& scene, float ambient, double lodTexels = 0.0);
 
@@ -43,7 +43,7 @@ public:
     scenes::Image render(const display::ScreenQuad& quad, glm::dvec3 eye, glm::ivec2 resolution,
                          const std::vector<int>& objects, walls::DepthImage& depth);
 
-    const gl::ViewStats& lastStats() const { return _stats; }
+    const display::ViewStats& lastStats() const { return _stats; }
     // The levels the last render() drew (all 0, maxErrorPx 0 at full detail).
     const render::FrameLod& lastLod() const { return _lod; }
 
@@ -59,12 +59,12 @@ private:
                        const std::vector<int>& objects);
 
     double _lodTexels = 0.0;
-    gl::SceneRenderer _renderer;
+    render::gl::SceneRenderer _renderer;
     std::unique_ptr<OffscreenTarget> _target;  // reallocated when the resolution changes
-    gl::ViewStats _stats;
+    display::ViewStats _stats;
     display::OffAxisFrustum _lastFrustum;
     render::FrameLod _lod;
     Timing _timing;
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

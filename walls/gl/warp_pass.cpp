@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <limits>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 namespace {
 
@@ -110,10 +110,12 @@ bool meetsTextureView(const scenes::Bounds& b, glm::dvec3 n, double d, const glm
 
 }  // namespace
 
-WarpPass::WarpPass(const scenes::Scene& scene, const GpuScene& gpu, RenderSettings settings, double nearB)
+WarpPass::WarpPass(const scenes::Scene& scene, const render::gl::GpuScene& gpu, render::gl::RenderSettings settings,
+                   double nearB)
     : _scene(scene), _gpu(gpu), _settings(settings), _nearB(nearB),
-      _holeProgram(buildProgram("warp hole", kHoleVertex, kHoleFragment)),
-      _warpProgram(buildProgram("warp structure", kWarpVertex, kWarpFragment)), _emptyVertexArray(createVertexArray()) {
+      _holeProgram(display::gl::buildProgram("warp hole", kHoleVertex, kHoleFragment)),
+      _warpProgram(display::gl::buildProgram("warp structure", kWarpVertex, kWarpFragment)),
+      _emptyVertexArray(display::gl::createVertexArray()) {
     for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i)
         if (scene.objects[i].role == scenes::Role::Structure)
             _structure.push_back(i);
@@ -122,9 +124,9 @@ WarpPass::WarpPass(const scenes::Scene& scene, const GpuScene& gpu, RenderSettin
 }
 
 GLuint WarpPass::depthCopy(GLuint depth, glm::ivec2 size) {
-    GlObject& copy = _depthCopies[{size.x, size.y}];
+    display::gl::GlObject& copy = _depthCopies[{size.x, size.y}];
     if (copy.id() == 0) {
-        copy = createTexture(GL_TEXTURE_2D);
+        copy = display::gl::createTexture(GL_TEXTURE_2D);
         glTextureStorage2D(copy.id(), 1, GL_DEPTH_COMPONENT32F, size.x, size.y);
         glTextureParameteri(copy.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTextureParameteri(copy.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -164,7 +166,7 @@ void WarpPass::punch(const WarpWall& wall, const glm::dmat4& viewFromWorldB, con
 }
 
 void WarpPass::draw(const std::vector<WarpWall>& walls, const display::ScreenView& view,
-                    const glm::dmat4& caveFromWorld, FrameStats& stats) {
+                    const glm::dmat4& caveFromWorld, display::FrameStats& stats) {
     if (walls.empty()) return;
     const glm::dmat4 viewFromWorldB = view.frustum.viewFromFrame * caveFromWorld;
     const glm::mat4 projection(view.frustum.clipFromView);
@@ -180,7 +182,7 @@ void WarpPass::draw(const std::vector<WarpWall>& walls, const display::ScreenVie
 
 // Step 2 of the header: the structure reaching behind the wall plane, warped into B.
 void WarpPass::drawStructure(const WarpWall& wall, const display::ScreenView& view, const glm::dmat4& caveFromWorld,
-                             FrameStats& stats) {
+                             display::FrameStats& stats) {
     const display::OffAxisFrustum a = walls::warpTextureFrustum(wall);
     const glm::dmat4 warp = display::warpMatrix(a, wall.quad, walls::clipFromWorldOf(view, caveFromWorld), _nearB);
     const glm::dmat4 viewFromWorldB = view.frustum.viewFromFrame * caveFromWorld;
@@ -225,7 +227,7 @@ void WarpPass::drawStructure(const WarpWall& wall, const display::ScreenView& vi
         glUniform2f(10, material.alphaCutoff, _settings.ambient);
         glBindTextureUnit(0, textured ? _gpu.texture(t.image) : 0);
         glBindSampler(0, textured ? _gpu.sampler(t.wrapS, t.wrapT) : 0);
-        const GpuMeshRange& range = _gpu.mesh(o.mesh);
+        const render::gl::GpuMeshRange& range = _gpu.mesh(o.mesh);
         glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(range.indexCount), GL_UNSIGNED_INT,
                                  reinterpret_cast<const void*>(static_cast<std::uintptr_t>(range.firstIndex) * 4),
                                  range.baseVertex);
@@ -236,4 +238,4 @@ void WarpPass::drawStructure(const WarpWall& wall, const display::ScreenView& vi
     glBindSampler(0, 0);
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

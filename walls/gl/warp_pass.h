@@ -37,7 +37,7 @@
 #include <map>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::walls::gl {
 
 using walls::WarpWall;  // walls/warp_wall.h
 
@@ -45,28 +45,29 @@ class WarpPass {
 public:
     // Keeps a reference to `scene` and `gpu` (its upload), which must outlive the pass.
     // Throws Error when the shaders do not build.
-    WarpPass(const scenes::Scene& scene, const GpuScene& gpu, RenderSettings settings, double nearB);
+    WarpPass(const scenes::Scene& scene, const render::gl::GpuScene& gpu, render::gl::RenderSettings settings,
+             double nearB);
 
     // Steps 1 and 2 of the header for every wall of `walls`, into the bound framebuffer
     // (viewport, scissor and colour mask set by the caller, depth holding the view's geometry).
     // Adds the draw calls and triangles submitted to `stats`.
     void draw(const std::vector<WarpWall>& walls, const display::ScreenView& view, const glm::dmat4& caveFromWorld,
-              FrameStats& stats);
+              display::FrameStats& stats);
 
 private:
     void punch(const WarpWall& wall, const glm::dmat4& viewFromWorldB, const glm::mat4& projection);
     void drawStructure(const WarpWall& wall, const display::ScreenView& view, const glm::dmat4& caveFromWorld,
-                       FrameStats& stats);
+                       display::FrameStats& stats);
     GLuint depthCopy(GLuint depth, glm::ivec2 size);
 
     const scenes::Scene& _scene;
-    const GpuScene& _gpu;
-    RenderSettings _settings;
+    const render::gl::GpuScene& _gpu;
+    render::gl::RenderSettings _settings;
     double _nearB;
     std::vector<int> _structure;                   // structure object indices
     std::map<int, std::vector<int>> _cellObjects;  // non-structure object indices by cell
-    GlObject _holeProgram, _warpProgram, _emptyVertexArray;
-    std::map<std::pair<int, int>, GlObject> _depthCopies;  // by size
+    display::gl::GlObject _holeProgram, _warpProgram, _emptyVertexArray;
+    std::map<std::pair<int, int>, display::gl::GlObject> _depthCopies;  // by size
 };
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::walls::gl

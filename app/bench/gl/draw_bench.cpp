@@ -14,7 +14,7 @@
 #include <ctime>
 #include <memory>
 
-namespace cavewall::gl {
+namespace cavewall::bench::gl {
 namespace {
 
 // Milliseconds of CPU time of this process, all threads (llvmpipe's workers included).
@@ -45,30 +45,30 @@ config::DisplayConfig homeDisplay(const bench::HomeView& view, int resolution) {
 // culled, ...; with more, forward then reverse), so that neither gains from running first or second under a changing load and
 // both share the warm-up state of llvmpipe's threads and caches.
 std::vector<DrawBenchRow> timeConfigurations(const scenes::Scene& scene, const display::Display& disp,
-                                             const Context& context, const DrawBenchOptions& options,
+                                             const display::gl::Context& context, const DrawBenchOptions& options,
                                              DrawBenchResult& result) {
     struct Configuration {
-        std::unique_ptr<SceneRenderer> renderer;
+        std::unique_ptr<render::gl::SceneRenderer> renderer;
         DrawBenchRow row;
     };
     std::vector<Configuration> configurations;
     for (bool cull : {true, false})
         for (bool perPixel : {false, true}) {
             if (perPixel && !options.compareLighting) continue;
-            RenderSettings settings;
+            render::gl::RenderSettings settings;
             settings.cullBackFaces = cull;
             if (perPixel) settings.vertexLightingTolerance = 0.0;
-            Configuration c{std::make_unique<SceneRenderer>(scene, settings), {}};
+            Configuration c{std::make_unique<render::gl::SceneRenderer>(scene, settings), {}};
             c.row.cullBackFaces = cull;
             c.row.perPixelOnly = perPixel;
             configurations.push_back(std::move(c));
         }
-    const RenderTargets targets(disp, context);
+    const display::gl::RenderTargets targets(disp, context);
     const std::vector<display::ScreenView> views = disp.views(disp.defaultHead());
     auto frame = [&](Configuration& c, bool timed) {
         const double cpuStart = processCpuMs();
         const auto start = std::chrono::steady_clock::now();
-        const FrameStats stats = c.renderer->render(views, targets);
+        const display::FrameStats stats = c.renderer->render(views, targets);
         glFinish();
         const double ms = display::msSince(start);
         const double cpuMs = processCpuMs() - cpuStart;
@@ -83,7 +83,7 @@ std::vector<DrawBenchRow> timeConfigurations(const scenes::Scene& scene, const d
         for (std::size_t k = 0; k < n; ++k) frame(configurations[i % 2 == 0 ? k : n - 1 - k], timed);
     }
     const auto pixels = static_cast<std::size_t>(options.resolution) * static_cast<std::size_t>(options.resolution);
-    const SceneRenderer& any = *configurations[0].renderer;
+    const render::gl::SceneRenderer& any = *configurations[0].renderer;
     result.vertexBytesPerTriangle = static_cast<double>(any.gpu().vertexBytes()) / result.triangles;
     result.indexBytesPerTriangle = static_cast<double>(any.gpu().indexBytes()) / result.triangles;
     std::vector<DrawBenchRow> rows;
@@ -108,10 +108,10 @@ DrawBenchResult runDrawBench(const scenes::Scene& scene, const DrawBenchOptions&
     result.triangles = std::max<std::size_t>(scene.triangleCount(), 1);
     result.view = bench::osgHomeView(scene.bounds(), options.fovDeg, 1.0);
     const display::Display disp(homeDisplay(result.view, options.resolution));
-    const auto context = createHeadlessContext();
+    const auto context = display::gl::createHeadlessContext();
     result.glRenderer = context->info().renderer;
     result.rows = timeConfigurations(scene, disp, *context, options, result);
     return result;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::bench::gl

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::bench::gl {
 
 struct DrawBenchOptions {
     int frames = 40;                                // timed frames per configuration, >= 1
@@ -60,4 +60,4 @@ struct DrawBenchResult {
 // Throws cavewall::Error when no GL 4.5 context is available or an image cannot be written.
 DrawBenchResult runDrawBench(const scenes::Scene& scene, const DrawBenchOptions& options);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::bench::gl

@@ -20,7 +20,7 @@
 #include <sstream>
 #include <thread>
 
-namespace cavewall::gl {
+namespace cavewall::bench::gl {
 
 using namespace bench;
 
@@ -34,12 +34,12 @@ struct BakedWalls {
 
 // Plans and bakes (or finds in the cache) the walls of `sceneFile` at `alphaDeg`.
 BakedWalls bakeWalls(const BenchOptions& o, const std::filesystem::path& sceneFile, double alphaDeg,
-                     const scenes::Scene& scene, const scenes::SceneDescription& d, gl::Context& context) {
+                     const scenes::Scene& scene, const scenes::SceneDescription& d, display::gl::Context& context) {
     walls::PlanOptions plan = walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution);
     plan.alphaDeg = alphaDeg;
     BakedWalls out;
     out.setup = walls::prepareWalls(scene, d, plan);
-    gl::BakeRequest request;
+    walls::gl::BakeRequest request;
     request.scene = sceneFile;
     request.settings.maxResolution = o.bakeResolution;
     request.settings.jobs = 2;
@@ -48,7 +48,7 @@ BakedWalls bakeWalls(const BenchOptions& o, const std::filesystem::path& sceneFi
     request.settings.textureFormat = o.textureFormat;
     request.context = &context;
     if (o.cache) request.cache = *o.cache;
-    gl::BakeResult baked = gl::bakeWalls(scene, d, out.setup, request);
+    walls::gl::BakeResult baked = walls::gl::bakeWalls(scene, d, out.setup, request);
     out.setup.folder = baked.folder;
     for (const walls::BakedTexture& t : baked.manifest.textures)
         out.texels += static_cast<double>(t.resolution.x) * t.resolution.y;
@@ -125,7 +125,7 @@ std::unique_ptr<CompareScene> loadCompareScene(const BenchOptions& o, const Benc
 std::vector<std::vector<BakedWalls>> bakeCompareScenes(const BenchOptions& o,
                                                        const std::vector<std::unique_ptr<CompareScene>>& others,
                                                        const scenes::SceneDescription& description,
-                                                       gl::Context& context, BenchReport& report) {
+                                                       display::gl::Context& context, BenchReport& report) {
     std::vector<std::vector<BakedWalls>> otherBaked(others.size());
     for (std::size_t k = 0; k < others.size(); ++k) {
         const BenchOptions::CompareScene& which = o.compareScenes[k];
@@ -151,17 +151,17 @@ std::vector<std::vector<BakedWalls>> bakeCompareScenes(const BenchOptions& o,
 // private cache while the background baker bakes what the frames want.
 ModeResult onDemandMode(const BenchOptions& o, double alphaDeg, const ModeContext& c, const ReferenceImages& reference,
                         double fullP50) {
-    makeEmptyPrivateCache(*o.onDemandCache, o.cache ? *o.cache : defaultCacheFolder());
+    makeEmptyPrivateCache(*o.onDemandCache, o.cache ? *o.cache : walls::gl::defaultCacheFolder());
     const auto start = std::chrono::steady_clock::now();  // the scene is loaded: as `run` times it
     walls::PlanOptions plan = walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution);
     plan.alphaDeg = alphaDeg;
     walls::WallSetup setup = walls::prepareWalls(c.scene, c.description, plan);
-    gl::BakeRequest request;
+    walls::gl::BakeRequest request;
     request.scene = o.scene;
     request.settings.maxResolution = o.bakeResolution;
     request.settings.kind = o.wallKind;
     request.cache = *o.onDemandCache;
-    gl::BackgroundBaker baker(c.scene, c.description, setup, request);  // its own headless context
+    walls::gl::BackgroundBaker baker(c.scene, c.description, setup, request);  // its own headless context
     setup.folder = baker.folder();
     setup.manifest = baker.manifest();
     ModeResult mode;
@@ -182,8 +182,8 @@ ModeResult onDemandMode(const BenchOptions& o, double alphaDeg, const ModeContex
     return result;
 }
 
-std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene& scene, const gl::Context& context,
-                                     const bench::EyePath& path) {
+std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene& scene,
+                                     const display::gl::Context& context, const bench::EyePath& path) {
     const std::size_t triangles = triangleCount(scene);
     const auto& s0 = o.display.screens.front();
     return {"scene: " + o.scene.string() + " (" + std::to_string(scene.objects.size()) + " objects, " +
@@ -253,12 +253,12 @@ void checkOnDemand(const BenchOptions& o) {
     if (!o.onDemandCache) return;
     if (o.wallKind != walls::WallKind::Flat)
         throw Error("--on-demand: baking on demand draws flat walls only, got --walls depth");
-    checkPrivateCache(*o.onDemandCache, o.cache ? *o.cache : defaultCacheFolder());
+    checkPrivateCache(*o.onDemandCache, o.cache ? *o.cache : walls::gl::defaultCacheFolder());
 }
 
 // Plans and bakes the bench scene's walls at every alpha, with a header line for each.
 std::vector<BakedWalls> bakeOwnWalls(const BenchOptions& o, const scenes::Scene& scene,
-                                     const scenes::SceneDescription& description, gl::Context& context,
+                                     const scenes::SceneDescription& description, display::gl::Context& context,
                                      BenchReport& report) {
     std::vector<BakedWalls> baked;
     for (double alpha : o.alphasDeg) {
@@ -537,7 +537,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
     bench::EyePath path = bench::recordEyePath(scene, description, o.display, o.tracker, o.frames);
     if (o.route == app::Route::Wall)
         path.description += " (--route wall: the scene's wallPath, which hugs the virtual walls, as its walkPath)";
-    const auto context = gl::createHeadlessContext();
+    const auto context = display::gl::createHeadlessContext();
     BenchReport report;
     report.header = headerLines(o, scene, *context, path);
     if (measuresStereo(display))
@@ -558,7 +558,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
                         o.compareEvery,
                         o.lodMaxPixels,
                         o.wallKind,
-                        o.clusters ? (o.cache ? *o.cache : defaultCacheFolder()) : std::filesystem::path()};
+                        o.clusters ? (o.cache ? *o.cache : walls::gl::defaultCacheFolder()) : std::filesystem::path()};
 
     const std::vector<BakedWalls> baked = bakeOwnWalls(o, scene, description, *context, report);
     const std::vector<std::vector<BakedWalls>> otherBaked = bakeCompareScenes(o, others, description, *context, report);
@@ -590,4 +590,4 @@ BenchReport runBenchmark(const BenchOptions& o) {
     return report;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::bench::gl

@@ -8,7 +8,7 @@
 //           without a cell, the selection's geometry cells), without wall textures: what cell
 //           culling alone leaves out and what that costs in error.
 //  - cells + layer: the cells mode with one textured full-screen layer per view drawn through
-//           the wall pass (gl::WallPass, the walls' sampler, a 512 x 512 MIP-mapped sRGB
+//           the wall pass (walls::gl::WallPass, the walls' sampler, a 512 x 512 MIP-mapped sRGB
 //           texture, weight 0 so that the image is the control's): what one wall layer costs,
 //           the yardstick of the wall pass (its target: the limit no slower than this).
 //  - near:  the near-geometry limit: structure, objects without a cell and the viewer's cell
@@ -33,7 +33,7 @@
 //           turn with full geometry and the bench scene's walls modes (automatic against
 //           hand-placed walls, ratios from the same seconds).
 //  - with `onDemandCache`, after the paged mode and alone: walls at `transitionAlphaDeg`
-//           baked on demand from that empty, private cache (gl::BackgroundBaker, as
+//           baked on demand from that empty, private cache (walls::gl::BackgroundBaker, as
 //           `cavewall run --bake-on-demand`): first frame after the scene's load, geometry
 //           fallbacks per frame, textures baked, frame-time p99/p50.
 //  - last, the noise floor: the last mode again, each path frame followed by one fixed frame,
@@ -55,7 +55,7 @@
 #include <string>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::bench::gl {
 
 struct BenchOptions {
     std::filesystem::path scene;          // scene.json, its folder, or glTF/GLB
@@ -103,4 +103,4 @@ bench::BenchReport runBenchmark(const BenchOptions& options);
 // `display` with every screen's resolution scaled so that its longer side is `pixels`.
 config::DisplayConfig withResolution(config::DisplayConfig display, int pixels);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::bench::gl

@@ -23,7 +23,7 @@
 #include <memory>
 #include <chrono>
 
-namespace cavewall::gl {
+namespace cavewall::bench::gl {
 
 using namespace bench;
 
@@ -93,8 +93,8 @@ void ModeAccumulator::addFrame(const FrameCost& cost) {
 }
 
 std::vector<ComparedImage> comparedImages(const display::Display& display, const display::HeadPose& head,
-                                          const std::vector<gl::ScreenImage>& images,
-                                          const std::vector<gl::ScreenImage>& reference, const std::string& mode) {
+                                          const std::vector<scenes::ScreenImage>& images,
+                                          const std::vector<scenes::ScreenImage>& reference, const std::string& mode) {
     if (images.size() != reference.size())
         throw Error("bench: mode " + mode + " read " + std::to_string(images.size()) +
                     " images, expected the reference's " + std::to_string(reference.size()));
@@ -111,7 +111,7 @@ std::vector<ComparedImage> comparedImages(const display::Display& display, const
     return compared;
 }
 
-void ModeAccumulator::compare(long frame, const display::HeadPose& head, const std::vector<gl::ScreenImage>& images,
+void ModeAccumulator::compare(long frame, const display::HeadPose& head, const std::vector<scenes::ScreenImage>& images,
                               const std::vector<walkthrough::ViewDepth>& depths, const ReferenceFrame& reference) {
     _errors.addFrame(frame, comparedImages(_display, head, images, reference.images, modeLabel(_mode)));
     if (measuresStereo(_display)) compareDepths(depths, reference.depths);
@@ -188,7 +188,7 @@ ModeResult ModeAccumulator::finish(double fullP50) const {
 
 void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, ReferenceImages& reference) {
     struct Live {
-        std::unique_ptr<gl::Walkthrough> walkthrough;
+        std::unique_ptr<walkthrough::gl::Walkthrough> walkthrough;
         std::optional<display::FrameTimeBudget> frameBudget;    // levels of detail: triangles
         std::optional<hierarchy::ClusterBudget> clusterBudget;  // clusters: predicted ms
         std::vector<double> warmTriangles;
@@ -212,7 +212,7 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
                 std::max<std::size_t>(1, t.empty() ? 1 : static_cast<std::size_t>(display::median(t))));
         }
         const ModeResult& mode = run.acc->mode();
-        gl::WalkthroughOptions options;
+        walkthrough::gl::WalkthroughOptions options;
         options.transition = run.transition;
         options.render.lodPixels = mode.lodPixels;
         options.triangleBudget = mode.triangleBudget;
@@ -228,9 +228,9 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         }
         const bool hasWalls = run.walls.has_value();
         assert((run.scene == nullptr) == (run.description == nullptr));
-        l.walkthrough = std::make_unique<gl::Walkthrough>(run.scene ? *run.scene : c.scene,
-                                                          run.description ? *run.description : c.description, c.display,
-                                                          c.context, run.walls, options);
+        l.walkthrough = std::make_unique<walkthrough::gl::Walkthrough>(
+            run.scene ? *run.scene : c.scene, run.description ? *run.description : c.description, c.display, c.context,
+            run.walls, options);
         if (mode.frameBudgetMs > 0.0 && !run.clusters) l.frameBudget.emplace(mode.frameBudgetMs);
         if (mode.frameBudgetMs > 0.0 && run.clusters) l.clusterBudget.emplace(mode.frameBudgetMs);
         // Warm-up: shaders, buffers and (with walls, unless paged) every texture of the path made
@@ -258,12 +258,13 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
     }
 }
 
-double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, gl::BackgroundBaker& baker, ModeAccumulator& acc,
-                       const ReferenceImages& reference, std::chrono::steady_clock::time_point start) {
-    gl::WalkthroughOptions options;  // background paging at `cavewall run`'s defaults
+double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, walls::gl::BackgroundBaker& baker,
+                       ModeAccumulator& acc, const ReferenceImages& reference,
+                       std::chrono::steady_clock::time_point start) {
+    walkthrough::gl::WalkthroughOptions options;  // background paging at `cavewall run`'s defaults
     options.baker = &baker;
     options.wallKind = c.wallKind;
-    gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
+    walkthrough::gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
     if (c.path.frames.empty()) return display::msSince(start) / 1000.0;
     walkthrough.renderFrame(c.path.frames.front());
     const double firstFrameSeconds = display::msSince(start) / 1000.0;
@@ -280,7 +281,7 @@ double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, gl::Backgro
 
 NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::WallSetup> walls, const ModeResult& mode,
                                  long frameIndex) {
-    gl::WalkthroughOptions options;
+    walkthrough::gl::WalkthroughOptions options;
     options.synchronousPaging = true;
     options.textureBudgetMB = 4096.0;
     options.uploadMBPerFrame = 4096.0;
@@ -288,7 +289,7 @@ NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::Wall
     options.triangleBudget = mode.triangleBudget;
     options.lodMaxPixels = c.lodMaxPixels;
     options.wallKind = c.wallKind;
-    gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
+    walkthrough::gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
     const walkthrough::FrameInput fixed = c.path.frames.at(static_cast<std::size_t>(frameIndex));
     for (const walkthrough::FrameInput& in : c.path.frames) walkthrough.renderFrame(in);
     walkthrough.waitForTextures();
@@ -319,7 +320,7 @@ namespace {
 
 // The layer's texture: 512 x 512 (the bake's largest by default), a gradient under a
 // checkerboard so that every MIP level differs, with its MIP chain.
-gl::GlObject layerTexture() {
+display::gl::GlObject layerTexture() {
     constexpr int kSize = 512;
     std::vector<scenes::Image> levels;
     for (int s = kSize; s >= 1; s /= 2) {
@@ -333,12 +334,12 @@ gl::GlObject layerTexture() {
             }
         levels.push_back(std::move(l));
     }
-    return gl::uploadWallTexture(std::move(levels));
+    return walls::gl::uploadWallTexture(std::move(levels));
 }
 
 // The walls' sampler (walls/gl/texture_store.cpp): bilinear within the nearest MIP level.
-gl::GlObject wallSampler() {
-    gl::GlObject s = gl::createSampler();
+display::gl::GlObject wallSampler() {
+    display::gl::GlObject s = display::gl::createSampler();
     glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
     glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -353,10 +354,10 @@ namespace {
 // Every view's depth as eye distances, after the frame: geometry only (each image keeps its own
 // depth buffer). The near limit's bare wall quads and the layer write no depth.
 std::vector<walkthrough::ViewDepth> readViewDepths(const std::vector<display::ScreenView>& views,
-                                                   const gl::RenderTargets& targets) {
+                                                   const display::gl::RenderTargets& targets) {
     std::vector<walkthrough::ViewDepth> depths;
     for (const display::ScreenView& view : views) {
-        const int image = gl::RenderTargets::imageOf(view.pass);
+        const int image = display::gl::RenderTargets::imageOf(view.pass);
         const display::Viewport& v = view.pass.viewport;
         depths.push_back(
             {view.screen, image, view.pass.eye, v.width, v.height,
@@ -371,16 +372,17 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
                   const ReferenceImages& reference) {
     assert(!runs.empty());
     const walls::FrameSelector selector(setup.plan, setup.table, c.description);
-    const gl::RenderTargets targets(c.display, c.context);
-    gl::RenderSettings settings;
+    const display::gl::RenderTargets targets(c.display, c.context);
+    render::gl::RenderSettings settings;
     settings.lodPixels = runs.front().acc->mode().lodPixels;
     for ([[maybe_unused]] const CellRun& r : runs) assert(r.acc->mode().lodPixels == settings.lodPixels);
-    gl::SceneRenderer renderer(c.scene, settings);
+    render::gl::SceneRenderer renderer(c.scene, settings);
     // The limit draws every wall of the viewer's cell as a bare quad: one 1x1 texture through
     // the walls' own pass, so it pays the quads' fill but no texture blending or paging.
-    const gl::WallPass quadPass;
-    const gl::GlObject bare = gl::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}});
-    const gl::GlObject layer = layerTexture(), sampler = wallSampler();
+    const walls::gl::WallPass quadPass;
+    const display::gl::GlObject bare =
+        walls::gl::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}});
+    const display::gl::GlObject layer = layerTexture(), sampler = wallSampler();
     auto draw = [&](const walkthrough::FrameInput& in, CellDraw kind, FrameCost* cost) {
         const auto start = std::chrono::steady_clock::now();
         const glm::dvec3 eye(in.worldFromCave * glm::dvec4(in.head.position, 1.0));
@@ -389,12 +391,12 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
             c.scene, cellMask(selection, c.description.cells.size(), kind == CellDraw::Near));
         render::DrawFilter filter;
         filter.objects = &objects;
-        std::vector<gl::WallDraw> quads;
+        std::vector<walls::gl::WallDraw> quads;
         if (kind == CellDraw::Near)
             for (const walls::WallBlend& b : selection.walls)
                 quads.push_back({walls::quadSeenFrom(setup.plan.walls[b.wall].quad, b.side), {bare.id()}, {1.0f}, 1});
         const glm::dmat4 caveFromWorld = glm::inverse(in.worldFromCave);
-        gl::FrameStats quadStats;
+        display::FrameStats quadStats;
         auto afterView = [&](const display::ScreenView& view) {
             if (kind == CellDraw::Near)
                 quadPass.draw(quads, view.frustum, caveFromWorld, 0, quadStats);
@@ -408,8 +410,8 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
             lod = render::chooseLods(renderer.renderScene(), views, in.worldFromCave, filter, settings.lodPixels);
             filter.lodLevels = &lod.levels;
         }
-        const gl::FrameStats stats = renderer.render(views, targets, in.worldFromCave, filter,
-                                                     kind != CellDraw::Cells ? std::function(afterView) : nullptr);
+        const display::FrameStats stats = renderer.render(views, targets, in.worldFromCave, filter,
+                                                          kind != CellDraw::Cells ? std::function(afterView) : nullptr);
         const double gpu = renderer.waitGpuMs();
         if (!cost) return;
         *cost = FrameCost{};
@@ -420,7 +422,7 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
         cost->drawCalls = static_cast<double>(stats.drawCalls + quadStats.drawCalls);
         cost->lodErrorPx = lod.maxErrorPx;
         cost->lodTolerancePx = lod.tolerancePx;
-        cost->perScreen = gl::statsPerScreen(views, stats, c.display.screens().size());
+        cost->perScreen = render::gl::statsPerScreen(views, stats, c.display.screens().size());
     };
     for (long i = 0; i < std::min<long>(3, c.path.frames.size()); ++i)
         for (const CellRun& r : runs) draw(c.path.frames[i], r.draw, nullptr);
@@ -434,8 +436,9 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
             const std::vector<walkthrough::ViewDepth> depths = readsDepth(c)
                                                                    ? readViewDepths(c.display.views(in.head), targets)
                                                                    : std::vector<walkthrough::ViewDepth>{};
-            r.acc->compare(in.frame, in.head, gl::readFrame(c.display, targets), depths, reference.at(in.frame));
+            r.acc->compare(in.frame, in.head, display::gl::readFrame(c.display, targets), depths,
+                           reference.at(in.frame));
         }
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::bench::gl

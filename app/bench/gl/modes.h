@@ -12,12 +12,12 @@
 #include <optional>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::bench::gl {
 
 // The full-geometry frame every mode's compared frame is compared with: its screen images and,
 // on a stereo display, every view's depth (walkthrough::ViewDepth, eye distances).
 struct ReferenceFrame {
-    std::vector<gl::ScreenImage> images;
+    std::vector<scenes::ScreenImage> images;
     std::vector<walkthrough::ViewDepth> depths;  // empty in mono
 };
 // Frame index -> the reference of that frame.
@@ -30,7 +30,7 @@ struct FrameCost {
     double errorDeg = 0.0, errorPx = 0.0;
     double residentMB = 0.0;
     long misses = 0;                                // cumulative, as the pager counts
-    std::vector<gl::ViewStats> perScreen;           // per display screen: CPU ms, triangles, draw calls
+    std::vector<display::ViewStats> perScreen;      // per display screen: CPU ms, triangles, draw calls
     double lodErrorPx = 0.0, lodTolerancePx = 0.0;  // FrameResult's (0 without levels of detail)
     bool overBudget = false;
     int texturesOverAlpha = 0;  // FrameResult's: drawn textures whose exact error exceeds alpha
@@ -47,8 +47,8 @@ struct FrameCost {
 // position (cave frame; the cyclopean eye, also in stereo). Images of screens the display does
 // not have are left out. Throws cavewall::Error naming `mode` when the image counts differ.
 std::vector<bench::ComparedImage> comparedImages(const display::Display& display, const display::HeadPose& head,
-                                                 const std::vector<gl::ScreenImage>& images,
-                                                 const std::vector<gl::ScreenImage>& reference,
+                                                 const std::vector<scenes::ScreenImage>& images,
+                                                 const std::vector<scenes::ScreenImage>& reference,
                                                  const std::string& mode);
 
 // Collects one mode's frames and comparisons; finish() fills the bench::ModeResult.
@@ -62,7 +62,7 @@ public:
     // the head position (the cyclopean eye, also in stereo). Where measuresStereo, also every
     // view's `depths` with the reference's (the stereo error, at the viewer's eye separation);
     // throws cavewall::Error naming the mode when the views differ from the reference's.
-    void compare(long frame, const display::HeadPose& head, const std::vector<gl::ScreenImage>& images,
+    void compare(long frame, const display::HeadPose& head, const std::vector<scenes::ScreenImage>& images,
                  const std::vector<walkthrough::ViewDepth>& depths, const ReferenceFrame& reference);
     // `fullP50`: the reference mode's median frame ms (0: this is the reference).
     bench::ModeResult finish(double fullP50) const;
@@ -87,7 +87,7 @@ struct ModeContext {
     const scenes::Scene& scene;
     const scenes::SceneDescription& description;
     const display::Display& display;
-    gl::Context& context;
+    display::gl::Context& context;
     const bench::EyePath& path;
     int compareEvery = 4;
     double lodMaxPixels = 8.0;                         // WalkthroughOptions::lodMaxPixels of the budgeted modes
@@ -139,8 +139,9 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
 // first (its end, from `start`, is the first frame after the scene's load: `start` is taken
 // before planning the walls); then every path frame is timed into `acc` and compared with
 // `reference`. Returns the first frame's seconds.
-double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, gl::BackgroundBaker& baker, ModeAccumulator& acc,
-                       const ReferenceImages& reference, std::chrono::steady_clock::time_point start);
+double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, walls::gl::BackgroundBaker& baker,
+                       ModeAccumulator& acc, const ReferenceImages& reference,
+                       std::chrono::steady_clock::time_point start);
 
 // The machine's own frame-time noise beside a mode's: the path drawn as `mode` draws it (walls
 // or not, its levels of detail; every texture resident), each frame followed by frame
@@ -175,4 +176,4 @@ struct CellRun {
 void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std::vector<CellRun>& runs,
                   const ReferenceImages& reference);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::bench::gl

@@ -32,7 +32,7 @@
 #include <thread>
 #include <tuple>
 
-namespace cavewall::gl {
+namespace cavewall::bench::gl {
 
 namespace {
 
@@ -90,30 +90,31 @@ std::set<int> requestedTextures(const scenes::Scene& scene, const scenes::SceneD
 }
 
 // Bakes the `ids` of `setup`'s plan only (a copy of the plan without the others, ids kept).
-BakeResult bakeSubset(const scenes::Scene& scene, const scenes::SceneDescription& d, const walls::WallSetup& setup,
-                      const std::set<int>& ids, const std::filesystem::path& sceneFile, const ScaleOptions& o,
-                      walls::WallKind kind, Context& context) {
+walls::gl::BakeResult bakeSubset(const scenes::Scene& scene, const scenes::SceneDescription& d,
+                                 const walls::WallSetup& setup, const std::set<int>& ids,
+                                 const std::filesystem::path& sceneFile, const ScaleOptions& o, walls::WallKind kind,
+                                 display::gl::Context& context) {
     walls::WallSetup subset = setup;
     std::erase_if(subset.plan.textures, [&](const walls::Texture& t) { return !ids.count(t.id); });
-    BakeRequest request;
+    walls::gl::BakeRequest request;
     request.scene = sceneFile;
     request.settings.maxResolution = o.bakeResolution;
     request.settings.kind = kind;
     request.settings.jobs = 2;
     request.context = &context;
     request.cache = o.data / "bake-cache";
-    return bakeWalls(scene, d, subset, request);
+    return walls::gl::bakeWalls(scene, d, subset, request);
 }
 
 // The near limit's draw of one frame: the viewer's cell and the always-drawn objects.
 struct NearMode {
     NearMode(const scenes::Scene& scene, const scenes::SceneDescription& d, const display::Display& display,
-             Context& context, const walls::WallSetup& setup, double lodPixels)
+             display::gl::Context& context, const walls::WallSetup& setup, double lodPixels)
         : scene(scene), display(display), selector(setup.plan, setup.table, d), targets(display, context),
           renderer(scene, settingsWith(lodPixels)), cells(d.cells.size()), lodPixels(lodPixels) {}
 
-    static RenderSettings settingsWith(double lodPixels) {
-        RenderSettings s;
+    static render::gl::RenderSettings settingsWith(double lodPixels) {
+        render::gl::RenderSettings s;
         s.lodPixels = lodPixels;
         return s;
     }
@@ -134,7 +135,7 @@ struct NearMode {
             lod = render::chooseLods(renderer.renderScene(), views, in.worldFromCave, filter, lodPixels);
             filter.lodLevels = &lod.levels;
         }
-        const FrameStats stats = renderer.render(views, targets, in.worldFromCave, filter);
+        const display::FrameStats stats = renderer.render(views, targets, in.worldFromCave, filter);
         renderer.waitGpuMs();
         return {display::msSince(start), static_cast<double>(stats.triangles)};
     }
@@ -146,8 +147,8 @@ struct NearMode {
     const scenes::Scene& scene;
     const display::Display& display;
     walls::FrameSelector selector;
-    RenderTargets targets;
-    SceneRenderer renderer;
+    display::gl::RenderTargets targets;
+    render::gl::SceneRenderer renderer;
     std::size_t cells;
     double lodPixels;
 };
@@ -201,7 +202,7 @@ walls::PlanOptions scalePlanOptions(const ScaleOptions& o, walls::WallKind kind)
 }
 
 std::unique_ptr<PreparedSize> prepareSize(const ScaleOptions& o, std::size_t target, const display::Display& display,
-                                          Context& context) {
+                                          display::gl::Context& context) {
     auto p = std::make_unique<PreparedSize>();
     double generateSeconds = 0.0;
     const std::filesystem::path folder = o.data / ("plant-" + std::to_string(target));
@@ -221,7 +222,7 @@ std::unique_ptr<PreparedSize> prepareSize(const ScaleOptions& o, std::size_t tar
         setup = walls::prepareWalls(p->scene, d, scalePlanOptions(o, kind));
         planSeconds = secondsSince(planned);
         const std::set<int> ids = requestedTextures(p->scene, d, display, setup, p->path);
-        const BakeResult baked = bakeSubset(p->scene, d, setup, ids, sceneFile, o, kind, context);
+        const walls::gl::BakeResult baked = bakeSubset(p->scene, d, setup, ids, sceneFile, o, kind, context);
         setup.folder = baked.folder;
         setup.manifest = baked.manifest;
         return "walls planned (zones of at least " + fixed(setup.plan.options.minZoneSize, 2) + " m) in " +
@@ -248,9 +249,10 @@ using bench::ScaleMode;
 struct SizeMode {
     SizeMode(ScaleMode mode, std::size_t screens) : mode(mode), acc(screens) {}
     ScaleMode mode;
-    std::unique_ptr<Walkthrough> walk;  // full's and the walls modes' (cells, walls, walls-budget, walls-depth)
-    std::unique_ptr<NearMode> near;     // near's
-    double firstFrameSeconds = 0.0;     // made and the stretch's first frame drawn (walls modes: planning too)
+    std::unique_ptr<walkthrough::gl::Walkthrough>
+        walk;                        // full's and the walls modes' (cells, walls, walls-budget, walls-depth)
+    std::unique_ptr<NearMode> near;  // near's
+    double firstFrameSeconds = 0.0;  // made and the stretch's first frame drawn (walls modes: planning too)
     Accumulated acc;
 };
 
@@ -285,8 +287,8 @@ auto timeFirst(Make make, Frame frame) {
 }
 
 // The walls mode's walkthrough options; the other walls modes' start from them.
-WalkthroughOptions wallsOptionsFor(const ScaleOptions& o) {
-    WalkthroughOptions options;
+walkthrough::gl::WalkthroughOptions wallsOptionsFor(const ScaleOptions& o) {
+    walkthrough::gl::WalkthroughOptions options;
     options.render.lodPixels = o.lodPixels;
     options.geometryBudgetMB = o.geometryBudgetMB;
     options.wallKind = o.wallKind;
@@ -304,15 +306,18 @@ struct SizeSetting {
     const ScaleOptions& o;
     const PreparedSize& p;
     const display::Display& display;
-    Context& context;
+    display::gl::Context& context;
 };
 
 // A walkthrough of `walls` and the seconds to make it and draw the stretch's first frame.
-std::pair<std::unique_ptr<Walkthrough>, double> firstWalk(const SizeSetting& s, const walls::WallSetup& walls,
-                                                          const WalkthroughOptions& options) {
+std::pair<std::unique_ptr<walkthrough::gl::Walkthrough>, double> firstWalk(
+    const SizeSetting& s, const walls::WallSetup& walls, const walkthrough::gl::WalkthroughOptions& options) {
     return timeFirst(
-        [&] { return std::make_unique<Walkthrough>(s.p.scene, s.p.description, s.display, s.context, walls, options); },
-        [&](Walkthrough& w) { w.renderFrame(s.p.path.frames.front()); });
+        [&] {
+            return std::make_unique<walkthrough::gl::Walkthrough>(s.p.scene, s.p.description, s.display, s.context,
+                                                                  walls, options);
+        },
+        [&](walkthrough::gl::Walkthrough& w) { w.renderFrame(s.p.path.frames.front()); });
 }
 
 // The near limit over the whole stretch (its warm-up) and walls-budget's triangles a frame: the
@@ -328,7 +333,7 @@ std::size_t nearBudget(const ScaleOptions& o, NearMode& nearMode, const bench::E
 // Adds a walls mode made by firstWalk to `modes`; planning counts in its time to the first frame
 // (the bake does not: it is cached).
 void addWalk(std::vector<SizeMode>& modes, const SizeSetting& s, ScaleMode mode,
-             std::pair<std::unique_ptr<Walkthrough>, double> made, double planSeconds) {
+             std::pair<std::unique_ptr<walkthrough::gl::Walkthrough>, double> made, double planSeconds) {
     SizeMode& m = modes.emplace_back(mode, s.display.screens().size());
     m.walk = std::move(made.first);
     m.firstFrameSeconds = made.second + planSeconds;
@@ -343,42 +348,43 @@ SizeModes makeModes(const SizeSetting& s) {
     std::vector<SizeMode> made;
     made.reserve(std::size(bench::kScaleModes));  // no reallocation: `full` and `nearLimit` stay valid
     SizeMode& full = made.emplace_back(ScaleMode::Full, screens);
-    WalkthroughOptions fullOptions;
+    walkthrough::gl::WalkthroughOptions fullOptions;
     std::tie(full.walk, full.firstFrameSeconds) = timeFirst(
         [&] {
-            return std::make_unique<Walkthrough>(p.scene, p.description, s.display, s.context, std::nullopt,
-                                                 fullOptions);
+            return std::make_unique<walkthrough::gl::Walkthrough>(p.scene, p.description, s.display, s.context,
+                                                                  std::nullopt, fullOptions);
         },
-        [&](Walkthrough& w) { w.renderFrame(p.path.frames.front()); });
+        [&](walkthrough::gl::Walkthrough& w) { w.renderFrame(p.path.frames.front()); });
     if (o.lodPixels > 0.0) {  // full geometry with levels of detail at the walls' tolerance
         SizeMode& fullLod = made.emplace_back(ScaleMode::FullLod, screens);
-        WalkthroughOptions lodOptions;
+        walkthrough::gl::WalkthroughOptions lodOptions;
         lodOptions.render.lodPixels = o.lodPixels;
         std::tie(fullLod.walk, fullLod.firstFrameSeconds) = timeFirst(
             [&] {
-                return std::make_unique<Walkthrough>(p.scene, p.description, s.display, s.context, std::nullopt,
-                                                     lodOptions);
+                return std::make_unique<walkthrough::gl::Walkthrough>(p.scene, p.description, s.display, s.context,
+                                                                      std::nullopt, lodOptions);
             },
-            [&](Walkthrough& w) { w.renderFrame(p.path.frames.front()); });
+            [&](walkthrough::gl::Walkthrough& w) { w.renderFrame(p.path.frames.front()); });
     }
     SizeMode& nearLimit = made.emplace_back(ScaleMode::Near, screens);
     std::tie(nearLimit.near, nearLimit.firstFrameSeconds) = timeFirst(
         [&] { return std::make_unique<NearMode>(p.scene, p.description, s.display, s.context, p.setup, o.lodPixels); },
         [&](NearMode& n) { n.draw(p.path.frames.front()); });
-    const WalkthroughOptions wallsOptions = wallsOptionsFor(o);
+    const walkthrough::gl::WalkthroughOptions wallsOptions = wallsOptionsFor(o);
     addWalk(made, s, ScaleMode::Walls, firstWalk(s, p.setup, wallsOptions), p.planSeconds);
-    WalkthroughOptions cellsOptions = wallsOptions;  // the control: the flat walls' geometry cells, no texture
+    walkthrough::gl::WalkthroughOptions cellsOptions =
+        wallsOptions;  // the control: the flat walls' geometry cells, no texture
     cellsOptions.wallTextures = false;
     addWalk(made, s, ScaleMode::Cells, firstWalk(s, p.setup, cellsOptions), p.planSeconds);
     if (p.depthSetup) {  // depth walls beside the flat ones: the same options, their own plan and bake
-        WalkthroughOptions depthOptions = wallsOptions;
+        walkthrough::gl::WalkthroughOptions depthOptions = wallsOptions;
         depthOptions.wallKind = walls::WallKind::Depth;
         addWalk(made, s, ScaleMode::DepthWalls, firstWalk(s, *p.depthSetup, depthOptions), p.depthPlanSeconds);
     }
     SizeModes out;
     out.budget = nearBudget(o, *nearLimit.near, p.path);
     if (out.budget > 0) {
-        WalkthroughOptions budgetOptions = wallsOptions;
+        walkthrough::gl::WalkthroughOptions budgetOptions = wallsOptions;
         budgetOptions.triangleBudget = out.budget;
         budgetOptions.lodMaxPixels = std::max(o.lodMaxPixels, o.lodPixels);
         addWalk(made, s, ScaleMode::WallsBudget, firstWalk(s, p.setup, budgetOptions), p.planSeconds);
@@ -405,8 +411,8 @@ void warmUp(SizeModes& live, const bench::EyePath& path) {
 }
 
 // A walls mode's frame; its images (when `reference`) compared with full geometry's.
-void drawWalk(SizeMode& m, const walkthrough::FrameInput& in, long frame, const std::vector<ScreenImage>* reference,
-              const display::Display& display) {
+void drawWalk(SizeMode& m, const walkthrough::FrameInput& in, long frame,
+              const std::vector<scenes::ScreenImage>* reference, const display::Display& display) {
     const walkthrough::FrameResult w = m.walk->renderFrame(in);
     Accumulated& a = m.acc;
     a.ms.push_back(w.frameMs);
@@ -435,8 +441,9 @@ void drawFrame(SizeModes& live, walkthrough::FrameInput in, long frame, bool com
             m.acc.ms.push_back(nearMs);
             m.acc.triangles += nearTriangles;
             if (compare)
-                m.acc.errors.addFrame(frame, comparedImages(display, in.head, readFrame(display, m.near->targets),
-                                                            f.images, std::string(bench::toString(m.mode))));
+                m.acc.errors.addFrame(
+                    frame, comparedImages(display, in.head, display::gl::readFrame(display, m.near->targets), f.images,
+                                          std::string(bench::toString(m.mode))));
         } else if (hasWalls(m.mode) || m.mode == ScaleMode::FullLod) {
             drawWalk(m, in, frame, compare ? &f.images : nullptr, display);
         }
@@ -444,14 +451,15 @@ void drawFrame(SizeModes& live, walkthrough::FrameInput in, long frame, bool com
 }
 
 // The size's rows in kScaleModes' order (the table's), each said.
-void addRows(const SizeModes& live, const bench::ScaleRow& base, const GeometryYardsticks& yard,
-             const GeometryYardsticks& fullYard, const std::function<void(const std::string&)>& say,
+void addRows(const SizeModes& live, const bench::ScaleRow& base, const walkthrough::gl::GeometryYardsticks& yard,
+             const walkthrough::gl::GeometryYardsticks& fullYard, const std::function<void(const std::string&)>& say,
              const std::string& size, bench::ScaleReport& report) {
     for (const SizeMode& m : live.modes) {
         bench::ScaleRow r = rowOf(m.mode, m.acc, base);
         if (m.mode == ScaleMode::WallsBudget) r.triangleBudget = live.budget;
         r.firstFrameSeconds = m.firstFrameSeconds;
-        const GeometryYardsticks& y = m.mode == ScaleMode::Full || m.mode == ScaleMode::FullLod ? fullYard : yard;
+        const walkthrough::gl::GeometryYardsticks& y =
+            m.mode == ScaleMode::Full || m.mode == ScaleMode::FullLod ? fullYard : yard;
         r.wholeModelMB = y.wholeModelMB;
         r.largestThreeCellsMB = y.largestThreeCellsMB;
         report.rows.push_back(r);
@@ -463,7 +471,7 @@ void addRows(const SizeModes& live, const bench::ScaleRow& base, const GeometryY
 
 // One size: its modes made and timed to their first frame, warmed up, then drawn frame by frame
 // in turn.
-void runSize(const ScaleOptions& o, std::size_t target, const display::Display& display, Context& context,
+void runSize(const ScaleOptions& o, std::size_t target, const display::Display& display, display::gl::Context& context,
              bench::ScaleReport& report) {
     const std::function<void(const std::string&)> say = [&](const std::string& line) {
         if (o.verbose) std::cout << "bench --scale: " << line << "\n" << std::flush;
@@ -481,8 +489,8 @@ void runSize(const ScaleOptions& o, std::size_t target, const display::Display& 
     SizeModes live = makeModes({o, *prepared, display, context});
     // Yardsticks with each mode's own levels: full detail for full, the walls' levels (also the
     // near limit's) for the others.
-    const GeometryYardsticks yard = live.find(ScaleMode::Walls)->walk->geometryYardsticks();
-    const GeometryYardsticks fullYard = live.find(ScaleMode::Full)->walk->geometryYardsticks();
+    const walkthrough::gl::GeometryYardsticks yard = live.find(ScaleMode::Walls)->walk->geometryYardsticks();
+    const walkthrough::gl::GeometryYardsticks fullYard = live.find(ScaleMode::Full)->walk->geometryYardsticks();
     say(size + ": warm-up over the stretch");
     warmUp(live, prepared->path);
     const std::string budgetWords = live.find(ScaleMode::WallsBudget)
@@ -524,7 +532,7 @@ bench::ScaleReport runScaleBench(const ScaleOptions& o) {
     }
     const auto start = Clock::now();
     const display::Display display(o.display);
-    const auto context = createHeadlessContext();
+    const auto context = display::gl::createHeadlessContext();
     bench::ScaleReport report;
     const auto& s0 = o.display.screens.front();
     report.header = {
@@ -576,4 +584,4 @@ bench::ScaleReport runScaleBench(const ScaleOptions& o) {
     return report;
 }
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::bench::gl

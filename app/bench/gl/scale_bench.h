@@ -40,7 +40,7 @@
 #include <string>
 #include <vector>
 
-namespace cavewall::gl {
+namespace cavewall::bench::gl {
 
 struct ScaleOptions {
     std::vector<std::size_t> sizes;    // triangle targets (generatePlant), in order
@@ -74,4 +74,4 @@ struct ScaleOptions {
 // Throws cavewall::Error on bad input.
 bench::ScaleReport runScaleBench(const ScaleOptions& options);
 
-}  // namespace cavewall::gl
+}  // namespace cavewall::bench::gl
