@@ -16,16 +16,16 @@ namespace cavewall::app {
 
 struct ViewStatus {
     std::string_view navigation;    // "fly", "walk", "grab", "guided" or "none"
-    std::optional<double> speed;    // m/s of a movement key (the desktop), else none
+    std::optional<double> speed{};  // m/s of a movement key (the desktop), else none
     double frameMs = 0.0;           // the last frame's time
     bool help = false;              // the help page instead of the status line
     double degreesPerPixel = 0.15;  // mouse look, for the help page
     // What the walls draw: "geometry" (no walls), "control" (cells without textures), "walls"
     // (textures), "hierarchy" (Maciel & Shirley's clusters); empty: not shown.
-    std::string_view drawing;
-    int texturesToBake = 0;    // baking on demand: textures still to bake (0: none or done)
-    int texturesBaked = 0;     // baked so far by this session
-    std::string_view tracker;  // "" (desktop or simulated), "no data", "data"
+    std::string_view drawing{};
+    int texturesToBake = 0;      // baking on demand: textures still to bake (0: none or done)
+    int texturesBaked = 0;       // baked so far by this session
+    std::string_view tracker{};  // "" (desktop or simulated), "no data", "data"
 };
 
 // The status line, e.g. "fly | 2.50 m/s | 16.7 ms | walls | F1: help", then a second line while

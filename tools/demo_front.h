@@ -19,7 +19,7 @@ struct DemoMode {
     walls::WallKind wallKind = walls::WallKind::Flat;  // the walls run's
     double alphaDeg = 0.0;                             // the walls run's
     double medianMs = 0.0;
-    bench::ImageError error;
+    bench::ImageError error{};
 };
 
 // The runs as a report, the reference first (`modes[0]` must be full geometry at full

@@ -30,21 +30,6 @@ std::vector<std::pair<double, double>> gapsIn(double from, double to, std::vecto
 
 }  // namespace
 
-// Wall quad on the segment a -> b (x, z) from y0 to y1 whose front faces `frontCentre`.
-scenes::VirtualWall wallBetween(glm::dvec2 a, glm::dvec2 b, double y0, double y1, glm::dvec2 frontCentre) {
-    scenes::VirtualWall w;
-    w.lowerLeft = {a.x, y0, a.y};
-    w.lowerRight = {b.x, y0, b.y};
-    w.upperLeft = {a.x, y1, a.y};
-    const glm::dvec3 normal = glm::cross(w.lowerRight - w.lowerLeft, w.upperLeft - w.lowerLeft);
-    const glm::dvec2 toFront = frontCentre - 0.5 * (a + b);
-    if (normal.x * toFront.x + normal.z * toFront.y < 0.0) {
-        std::swap(w.lowerLeft, w.lowerRight);
-        w.upperLeft = {b.x, y1, b.y};
-    }
-    return w;
-}
-
 void makeRooms(scenes::SceneDescription& d, const std::vector<WallPiece>& pieces, double floorY, double ceilingY) {
     constexpr double kOnLine = 0.05, kMinDoor = 0.3, kFloorSlack = 0.1;
     std::vector<scenes::VirtualWall> walls;

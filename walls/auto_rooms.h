@@ -19,8 +19,22 @@ struct WallPiece {
     double bottom = 0.0, top = 0.0;
 };
 
-// Wall quad on the segment a -> b (x, z) from y0 to y1 whose front faces `frontCentre`.
-scenes::VirtualWall wallBetween(glm::dvec2 a, glm::dvec2 b, double y0, double y1, glm::dvec2 frontCentre);
+// Wall quad on the segment a -> b (x, z) from y0 to y1 whose front faces `frontCentre`: a
+// scenes::VirtualWall, or any quad with the same corners (scenes::RealWall).
+template <typename Quad = scenes::VirtualWall>
+Quad wallBetween(glm::dvec2 a, glm::dvec2 b, double y0, double y1, glm::dvec2 frontCentre) {
+    Quad w;
+    w.lowerLeft = {a.x, y0, a.y};
+    w.lowerRight = {b.x, y0, b.y};
+    w.upperLeft = {a.x, y1, a.y};
+    const glm::dvec3 normal = glm::cross(w.lowerRight - w.lowerLeft, w.upperLeft - w.lowerLeft);
+    const glm::dvec2 toFront = frontCentre - 0.5 * (a + b);
+    if (normal.x * toFront.x + normal.z * toFront.y < 0.0) {
+        std::swap(w.lowerLeft, w.lowerRight);
+        w.upperLeft = {b.x, y1, b.y};
+    }
+    return w;
+}
 
 // Rooms: the grid's boundaries (d.walls) that lie on a line of real wall pieces become portals
 // where the pieces reaching the floor leave a gap (a doorway, as high as the lowest piece above

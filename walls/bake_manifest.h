@@ -59,7 +59,7 @@ struct BakedTexture {
     std::uint64_t inode = 0;   // inode number then
     // Depth walls only (walls/depth_file.h): the depth file beside `file`, its size and hash,
     // and the range of its finite depths (metres behind the wall). Empty for flat walls.
-    std::string depthFile;
+    std::string depthFile{};
     std::uint64_t depthBytes = 0;
     std::uint64_t depthHash = 0;
     glm::dvec2 depthRange{0.0};
@@ -76,7 +76,7 @@ struct BakeManifest {
     int version = kManifestVersion;      // as read; < kManifestVersion: every texture is stale
     // Read only: one message per entry dropped because its checks failed ("<file>: textures[3]
     // ("tex_0003_....bct"): its check does not match its fields (expected ..., got ...)").
-    std::vector<std::string> rejected;
+    std::vector<std::string> rejected{};
     bool operator==(const BakeManifest&) const = default;
 };
 

@@ -1,5 +1,7 @@
 #include "walls/room_cells.h"
 
+#include "walls/auto_rooms.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -128,22 +130,6 @@ std::vector<Box> partition(const FloorGrid& g, const FloorPlan& plan, const Room
     return leaves;
 }
 
-// Wall quad on the segment a -> b (x, z) from y0 to y1 whose front faces `frontCentre`.
-template <typename W>
-W quadFacing(glm::dvec2 a, glm::dvec2 b, double y0, double y1, glm::dvec2 frontCentre) {
-    W w;
-    w.lowerLeft = {a.x, y0, a.y};
-    w.lowerRight = {b.x, y0, b.y};
-    w.upperLeft = {a.x, y1, a.y};
-    const glm::dvec3 normal = glm::cross(w.lowerRight - w.lowerLeft, w.upperLeft - w.lowerLeft);
-    const glm::dvec2 toFront = frontCentre - 0.5 * (a + b);
-    if (normal.x * toFront.x + normal.z * toFront.y < 0.0) {
-        std::swap(w.lowerLeft, w.lowerRight);
-        w.upperLeft = {b.x, y1, b.y};
-    }
-    return w;
-}
-
 // What a shared edge is at one step: a doorway's portal (its index), open floor or a wall.
 constexpr int kOpen = -1, kWall = -2, kNothing = -3;
 
@@ -174,13 +160,13 @@ struct Builder {
         const double length = glm::length(q - p);
         if (kind == kNothing || (kind == kWall && length < 0.3)) return;
         if (kind == kWall) {
-            auto r = quadFacing<scenes::RealWall>(p, q, floorY, ceilingY, centre(a));
+            auto r = wallBetween<scenes::RealWall>(p, q, floorY, ceilingY, centre(a));
             r.name = "real " + std::to_string(d.realWalls.size());
             d.realWalls.push_back(r);
             return;
         }
         const double top = kind == kOpen ? ceilingY : std::min(ceilingY, floorY + options.portalHeight);
-        auto w = quadFacing<scenes::VirtualWall>(p, q, floorY, top, centre(a));
+        auto w = wallBetween(p, q, floorY, top, centre(a));
         w.cells = {a, b};
         w.kind = kind == kOpen ? scenes::WallKind::Virtual : scenes::WallKind::Portal;
         w.name = d.cells[a].name + "|" + d.cells[b].name;

@@ -33,13 +33,13 @@ enum class SeriesStyle {
 };
 
 struct PlotSeries {
-    std::string name;               // its legend entry; any text (quotes are escaped, line breaks become spaces)
-    std::vector<PlotPoint> points;  // Markers, Line
+    std::string name;                 // its legend entry; any text (quotes are escaped, line breaks become spaces)
+    std::vector<PlotPoint> points{};  // Markers, Line
     SeriesStyle style = SeriesStyle::Markers;
-    std::vector<std::vector<PlotPoint>> shapes;  // Paths, Outlines, Filled, Arrows (flags unused)
-    std::string colour;                          // "#rrggbb"; empty: a colour (and marker) chosen by the series' index
-    double size = 0.0;                           // marker size or line width, gnuplot units; 0: the style's default
-    double opacity = 0.45;                       // Filled: the fill's opacity, in (0, 1]
+    std::vector<std::vector<PlotPoint>> shapes{};  // Paths, Outlines, Filled, Arrows (flags unused)
+    std::string colour{};   // "#rrggbb"; empty: a colour (and marker) chosen by the series' index
+    double size = 0.0;      // marker size or line width, gnuplot units; 0: the style's default
+    double opacity = 0.45;  // Filled: the fill's opacity, in (0, 1]
 };
 
 struct PlotAxis {

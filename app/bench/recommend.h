@@ -31,7 +31,7 @@ struct RecommendRow {
     double frameMs = 0.0;                          // median frame time, all screens
     double psnrDb = 0.0;                           // pooled PSNR against full geometry
     double flipMean = 0.0;                         // LDR-FLIP mean against full geometry
-    std::optional<double> stereoArcmin;            // mean stereo error; none in mono
+    std::optional<double> stereoArcmin{};          // mean stereo error; none in mono
 };
 
 struct RecommendRule {

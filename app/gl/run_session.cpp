@@ -75,8 +75,8 @@ walls::WallSetup prepareWallsOnDemand(const RunOptions& o, const scenes::Scene& 
 // bake: a window closed, the quit keys (Escape twice, Ctrl+Q), Ctrl+C or SIGTERM.
 struct StopCheck {
     display::gl::Context& context;
-    input::SessionKeys keys;
-    std::optional<app::Ending> ending;
+    input::SessionKeys keys{};
+    std::optional<app::Ending> ending{};
 
     bool operator()() {
         if (ending) return true;

@@ -2,6 +2,8 @@
 // normals, shared edges, overlaps.
 #include "app/bench/display_figure.h"
 
+#include "tests/display/cave_with_overlap.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -84,13 +86,7 @@ TEST(DisplayFigure, Cave4NormalsPointInwards) {
 }
 
 TEST(DisplayFigure, SharedEdgesOverlapsEyesAndTrackingVolumeAreDrawn) {
-    config::DisplayConfig c = config::loadDisplayConfig("cave4");
-    config::Screen extra = c.screens[0];
-    extra.name = "extra";
-    extra.lowerLeft = {1.0, 1.0, -1.5};
-    extra.lowerRight = {2.5, 1.0, -1.5};
-    extra.upperLeft = {1.0, 2.0, -1.5};
-    c.screens.push_back(extra);
+    config::DisplayConfig c = test::caveWithOverlap();
     c.stereo = config::StereoMode::Separate;
     c.tracking.volume = {glm::dvec3(-2, 0, -2), glm::dvec3(2, 2.5, 2)};
     const Figure figure = displayFigure(c);

@@ -1,6 +1,8 @@
 // What `cavewall display` reports about a configuration (display/display_summary.h).
 #include "display/display_summary.h"
 
+#include "tests/display/cave_with_overlap.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -11,18 +13,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-// cave4 with a 1.5 x 1 m screen in the front wall's plane, its left 0.5 m over the front wall
-// from 1 to 2 m up: the two cover 0.5 x 1 = 0.5 m² twice.
-config::DisplayConfig caveWithOverlap() {
-    config::DisplayConfig c = config::loadDisplayConfig("cave4");
-    config::Screen extra = c.screens[0];
-    extra.name = "extra";
-    extra.lowerLeft = {1.0, 1.0, -1.5};
-    extra.lowerRight = {2.5, 1.0, -1.5};
-    extra.upperLeft = {1.0, 2.0, -1.5};
-    c.screens.push_back(extra);
-    return c;
-}
+using test::caveWithOverlap;  // tests/display/cave_with_overlap.h
 
 TEST(DisplaySummary, Cave4NormalsPointInwardsAndPixelsPerDegreeComeFromTheHead) {
     const std::vector<ScreenFacts> screens = screenFacts(config::loadDisplayConfig("cave4"));

@@ -100,8 +100,9 @@ TEST(Foldout, PowerWallTilesByPositionOnTheWall) {
 
 TEST(Foldout, LooseParallelScreensKeepTheirGap) {
     // Two 1 m screens side by side with a 0.5 m bezel gap share no edge.
-    config::Screen a{"a", {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {100, 100}, std::nullopt, {}};
-    config::Screen b{"b", {1.5, 0, 0}, {2.5, 0, 0}, {1.5, 1, 0}, {100, 100}, std::nullopt, {}};
+    // Headless, any rank, no warp and no blend.
+    config::Screen a{"a", {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {100, 100}, std::nullopt, {}, -1, "", ""};
+    config::Screen b{"b", {1.5, 0, 0}, {2.5, 0, 0}, {1.5, 1, 0}, {100, 100}, std::nullopt, {}, -1, "", ""};
     const FoldoutLayout layout = foldoutLayout({a, b});
     EXPECT_EQ(layout.size, glm::ivec2(250, 100));  // 2.5 m at 100 px/m
     expectProbes(layout, {a, b},

@@ -72,7 +72,9 @@ void expectMatchesGolden(const scenes::Image& actual, const std::string& name, m
 config::DisplayConfig oneScreenDisplay(int pixels, double near) {
     config::DisplayConfig c;
     c.name = "one";
-    c.screens.push_back({"screen", {-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}, {pixels, pixels}, std::nullopt, {}});
+    // Headless, any rank, no warp and no blend.
+    c.screens.push_back(
+        {"screen", {-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}, {pixels, pixels}, std::nullopt, {}, -1, "", ""});
     c.viewer.near = near;
     c.viewer.far = INFINITY;
     config::validateDisplayConfig(c, "test");

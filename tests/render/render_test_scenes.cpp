@@ -11,7 +11,9 @@ namespace cavewall::render::testing {
 config::DisplayConfig oneScreen(int pixels) {
     config::DisplayConfig c;
     c.name = "one";
-    c.screens.push_back({"screen", {-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}, {pixels, pixels}, std::nullopt, {}});
+    // Headless, any rank, no warp and no blend.
+    c.screens.push_back(
+        {"screen", {-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}, {pixels, pixels}, std::nullopt, {}, -1, "", ""});
     c.viewer.near = 0.05;
     c.viewer.far = INFINITY;
     config::validateDisplayConfig(c, "test");

@@ -1,34 +1,28 @@
 // End to end: the scripted VRPN server (the real VRPN server code) streams a head pose while a
 // child `cavewall track --tracker vrpn:...` reads it; the child's CSV must show the pose.
 #include "tests/cli/run_cli.h"
+#include "tests/cli/track_run.h"
+#include "tests/support/csv_table.h"
+#include "tests/support/files.h"
 #include "tests/vrpn/server_process.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
+#include <cmath>
 #include <regex>
-#include <sstream>
-#include <thread>
+#include <string>
 
 namespace cavewall::input {
 namespace {
-
-std::filesystem::path outputDir() {
-    const char* dir = std::getenv("CAVEWALL_TEST_OUTPUT");
-    std::filesystem::path p = std::filesystem::path(dir ? dir : "/tmp") / "track_vrpn";
-    std::filesystem::create_directories(p);
-    return p;
-}
 
 TEST(TrackVrpnCli, TheServersHeadReachesTheCsv) {
     const int port = test::freeTcpPort();
     test::VrpnServerProcess server(VRPN_TEST_SERVER, port, "Tracker0", 2);
     ASSERT_TRUE(server.ready()) << server.firstLine();
-    const std::string csv = (outputDir() / "head.csv").string();
+    const test::TempFolder dir("track_vrpn");
+    const std::string csv = (dir / "head.csv").string();
     const std::string spec = "vrpn:Tracker0@127.0.0.1:" + std::to_string(port) + "?retry=0.05";
     test::CliProcess child(
         {"track", "--tracker", spec, "--seconds", "1.5", "--rate", "100", "--no-filter", "--csv", csv});
@@ -39,29 +33,19 @@ TEST(TrackVrpnCli, TheServersHeadReachesTheCsv) {
     ASSERT_EQ(server.answer(std::chrono::seconds(30)), "ok");
     // The head at (0.1, 1.6, -0.2) m, turned 90° about +Y, at about 100 Hz (a tracker's pace)
     // until the child ends.
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-    while (!child.exited() && std::chrono::steady_clock::now() < deadline) {
+    const test::CliResult r = test::sendUntilExit(child, std::chrono::seconds(60), [&](int) {
         ASSERT_EQ(server.command("pose 0 0.1 1.6 -0.2 0 0.70710678118654757 0 0.70710678118654757"), "ok");
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    const test::CliResult r = child.finish(std::chrono::seconds(5));
+    });
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    std::ifstream in(csv);
-    std::string line, lastTracked;
-    std::getline(in, line);
-    EXPECT_EQ(line, "t,head_x,head_y,head_z,qx,qy,qz,qw,dropped");
-    while (std::getline(in, line))
-        if (line.size() > 2 && line.substr(line.size() - 2) == ",0") lastTracked = line;
-    ASSERT_FALSE(lastTracked.empty()) << "no tracked head in " << csv << "\n" << r.err;
-    std::istringstream row(lastTracked);
-    double v[8];
-    char comma;
-    for (double& x : v) row >> x >> comma;
-    EXPECT_NEAR(v[1], 0.1, 1e-6);
-    EXPECT_NEAR(v[2], 1.6, 1e-6);
-    EXPECT_NEAR(v[3], -0.2, 1e-6);
-    EXPECT_NEAR(v[5], std::sqrt(0.5), 1e-6);  // qy
-    EXPECT_NEAR(v[7], std::sqrt(0.5), 1e-6);  // qw
+    const test::CsvTable table = test::readCsv(csv);
+    EXPECT_EQ(table.columns, test::kTrackColumns);
+    const std::optional<test::CsvRow> head = test::lastTrackedHead(table);
+    ASSERT_TRUE(head) << "no tracked head in " << csv << "\n" << r.err;
+    EXPECT_NEAR(head->number("head_x"), 0.1, 1e-6);
+    EXPECT_NEAR(head->number("head_y"), 1.6, 1e-6);
+    EXPECT_NEAR(head->number("head_z"), -0.2, 1e-6);
+    EXPECT_NEAR(head->number("qy"), std::sqrt(0.5), 1e-6);
+    EXPECT_NEAR(head->number("qw"), std::sqrt(0.5), 1e-6);
     EXPECT_THAT(r.err, ::testing::HasSubstr("dropped 0 "));
     EXPECT_TRUE(server.quit());
 }

@@ -202,15 +202,19 @@ TEST_F(FramePlannerTest, AMissingTextureKeepsThePreviousOneWithinAlphaElseTheGeo
 
     FramePlanner planner(scene, description, display, &walls, Transition::Blend, 0.5);
     const std::set<int> none, onlyFirst{t1};
+    // The one wall drawn as geometry for want of a texture: the cell behind drawn, no quad.
+    auto expectGeometry = [&](const FramePlan& plan, const char* name) {
+        SCOPED_TRACE(name);
+        EXPECT_TRUE(row(plan).fallback);
+        EXPECT_TRUE(row(plan).textures.empty());
+        EXPECT_EQ(row(plan).geometryWeight, 1.0);
+        EXPECT_TRUE(plan.geometryCells[1]);
+        EXPECT_TRUE(drawsObject(plan, kBackBox));
+        EXPECT_TRUE(plan.wallDraws.empty());
+        EXPECT_EQ(plan.geometryFallbacks, 1);
+    };
     // Cold: nothing resident and nothing drawn before: geometry, the cell behind drawn.
-    const FramePlan cold = frame(planner, at(*first), &none);
-    EXPECT_TRUE(row(cold).fallback);
-    EXPECT_TRUE(row(cold).textures.empty());
-    EXPECT_EQ(row(cold).geometryWeight, 1.0);
-    EXPECT_TRUE(cold.geometryCells[1]);
-    EXPECT_TRUE(drawsObject(cold, kBackBox));
-    EXPECT_TRUE(cold.wallDraws.empty());
-    EXPECT_EQ(cold.geometryFallbacks, 1);  // the one wall, drawn as geometry for want of a texture
+    expectGeometry(frame(planner, at(*first), &none), "cold");
     const FramePlan warm = frame(planner, at(*first), &onlyFirst);
     EXPECT_FALSE(row(warm).fallback);
     EXPECT_EQ(row(warm).textures, (TextureSet{{t1, 1.0}}));
@@ -227,13 +231,7 @@ TEST_F(FramePlannerTest, AMissingTextureKeepsThePreviousOneWithinAlphaElseTheGeo
     EXPECT_EQ(kept.geometryFallbacks, 0);  // a fallback, but to the previous texture
     // Far along the wall the old texture would be wrong by more than alpha: geometry instead.
     const FramePlan jumped = frame(planner, at(*far), &onlyFirst);
-    EXPECT_TRUE(row(jumped).fallback);
-    EXPECT_TRUE(row(jumped).textures.empty());
-    EXPECT_EQ(row(jumped).geometryWeight, 1.0);
-    EXPECT_TRUE(jumped.geometryCells[1]);
-    EXPECT_TRUE(drawsObject(jumped, kBackBox));
-    EXPECT_TRUE(jumped.wallDraws.empty());
-    EXPECT_EQ(jumped.geometryFallbacks, 1);
+    expectGeometry(jumped, "jumped");
     EXPECT_EQ(jumped.maxErrorDeg, 0.0);  // nothing textured, nothing wrong
 }
 

@@ -51,7 +51,9 @@ scenes::SceneDescription bare() {
     scenes::SceneDescription d;
     d.name = "hall";
     d.folder = folder.path();
-    d.models.push_back({"hall.glb"});
+    scenes::ModelFile hall;
+    hall.file = "hall.glb";
+    d.models.push_back(hall);
     return d;
 }
 

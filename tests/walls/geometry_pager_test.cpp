@@ -11,6 +11,15 @@ namespace {
 
 constexpr std::size_t kMB = 1024 * 1024;
 
+// Places mesh `mesh` of `s` in `cell` (-1: none) as a `role` object.
+void placeObject(scenes::Scene& s, int mesh, int cell, scenes::Role role = scenes::Role::Content) {
+    scenes::Object o;
+    o.mesh = mesh;
+    o.cell = cell;
+    o.role = role;
+    s.objects.push_back(o);
+}
+
 void uploadAll(GeometryPager& pager) {
     pager.waitIdle();
     for (int c : pager.takeReady()) pager.markResident(c);
@@ -26,20 +35,13 @@ TEST(GeometryPager, CellBytesCountEachMeshOncePerCell) {
     s.meshes[0].indices.resize(3);
     s.meshes[1].positions.resize(4);
     s.meshes[1].indices.resize(6);
-    auto add = [&](int mesh, int cell, scenes::Role role = scenes::Role::Content) {
-        scenes::Object o;
-        o.mesh = mesh;
-        o.cell = cell;
-        o.role = role;
-        s.objects.push_back(o);
-    };
-    add(0, 0);
-    add(1, 1);
-    add(1, 1);
-    add(1, 2);
-    add(0, 2);
-    add(0, -1);
-    add(1, 0, scenes::Role::Structure);
+    placeObject(s, 0, 0);
+    placeObject(s, 1, 1);
+    placeObject(s, 1, 1);
+    placeObject(s, 1, 2);
+    placeObject(s, 0, 2);
+    placeObject(s, 0, -1);
+    placeObject(s, 1, 0, scenes::Role::Structure);
     const std::size_t tri = 3 * kVertexBytes + 3 * kIndexBytes, quad = 4 * kVertexBytes + 6 * kIndexBytes;
     const std::vector<std::size_t> bytes = cellGeometryBytes(s, 3);
     ASSERT_EQ(bytes.size(), 3u);
@@ -136,20 +138,13 @@ scenes::Scene sharedMeshes() {
         s.meshes[m].positions.resize(static_cast<std::size_t>(10 * (m + 1)));  // distinct sizes
         s.meshes[m].indices.resize(3);
     }
-    auto add = [&](int mesh, int cell, scenes::Role role = scenes::Role::Content) {
-        scenes::Object o;
-        o.mesh = mesh;
-        o.cell = cell;
-        o.role = role;
-        s.objects.push_back(o);
-    };
-    for (int c : {0, 1, 2}) add(0, c);
-    add(1, 0);
-    add(2, 2);
-    add(2, 1);
-    add(0, 2);
-    add(3, 1);
-    add(3, -1, scenes::Role::Structure);
+    for (int c : {0, 1, 2}) placeObject(s, 0, c);
+    placeObject(s, 1, 0);
+    placeObject(s, 2, 2);
+    placeObject(s, 2, 1);
+    placeObject(s, 0, 2);
+    placeObject(s, 3, 1);
+    placeObject(s, 3, -1, scenes::Role::Structure);
     return s;
 }
 

@@ -12,6 +12,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace cavewall::test {
 namespace {
@@ -48,19 +50,28 @@ void swapFiles(const std::filesystem::path& a, const std::filesystem::path& b) {
     std::filesystem::rename(tmp, b);
 }
 
+// `out` emptied, a 20 k triangle plant generated into out/plant, and the arguments that bake it
+// into out/cache at alpha 30° with zones of at least 5 m, `flags` added; empty (and the test
+// failed) when the plant cannot be generated.
+std::vector<std::string> plantBake(const std::filesystem::path& out, const std::vector<std::string>& flags) {
+    std::filesystem::remove_all(out);
+    const CliResult gen = runCavewall({"generate", "plant", "--triangles", "20000", "--out", (out / "plant").string()});
+    if (gen.exitCode != 0) {
+        ADD_FAILURE() << gen.err;
+        return {};
+    }
+    std::vector<std::string> bake{
+        "bake", (out / "plant").string(), "--cache", (out / "cache").string(), "--alpha", "30", "--min-zone", "5"};
+    bake.insert(bake.end(), flags.begin(), flags.end());
+    return bake;
+}
+
 class BakeCli : public testing::GlTest {};
 
 TEST_F(BakeCli, BakesAGeneratedPlantAndReusesItsCache) {
     const std::filesystem::path out = testing::testOutputFolder("bake-cli");
-    std::filesystem::remove_all(out);
-    const CliResult gen = runCavewall({"generate", "plant", "--triangles", "20000", "--out", (out / "plant").string()});
-    ASSERT_EQ(gen.exitCode, 0) << gen.err;
-    const std::vector<std::string> bake{"bake",       (out / "plant").string(),
-                                        "--cache",    (out / "cache").string(),
-                                        "--alpha",    "30",
-                                        "--min-zone", "5",
-                                        "--max-res",  "64",
-                                        "--jobs",     "2"};
+    const std::vector<std::string> bake = plantBake(out, {"--max-res", "64", "--jobs", "2"});
+    ASSERT_FALSE(bake.empty());
     const CliResult first = runCavewall(bake);
     ASSERT_EQ(first.exitCode, 0) << first.err;
     // The last line is the bake folder, under the cache, holding a manifest of every texture.
@@ -120,16 +131,8 @@ TEST_F(BakeCli, BakesAGeneratedPlantAndReusesItsCache) {
 // reused. A sample of four textures (--limit) keeps it short.
 TEST_F(BakeCli, EditedDepthManifestEntriesAreRebaked) {
     const std::filesystem::path out = testing::testOutputFolder("bake-cli-depth");
-    std::filesystem::remove_all(out);
-    const CliResult gen = runCavewall({"generate", "plant", "--triangles", "20000", "--out", (out / "plant").string()});
-    ASSERT_EQ(gen.exitCode, 0) << gen.err;
-    const std::vector<std::string> bake{"bake",       (out / "plant").string(),
-                                        "--cache",    (out / "cache").string(),
-                                        "--alpha",    "30",
-                                        "--min-zone", "5",
-                                        "--max-res",  "32",
-                                        "--walls",    "depth",
-                                        "--limit",    "4"};
+    const std::vector<std::string> bake = plantBake(out, {"--max-res", "32", "--walls", "depth", "--limit", "4"});
+    ASSERT_FALSE(bake.empty());
     const CliResult first = runCavewall(bake);
     ASSERT_EQ(first.exitCode, 0) << first.err;
     const std::filesystem::path folder = lastLine(first.out);

@@ -9,6 +9,7 @@
 #include "scenes/image_io.h"
 #include "scenes/primitives.h"
 #include "tests/gl/gl_test_support.h"
+#include "tests/wallsgl/card_wall.h"
 #include "walls/depth_wall.h"
 #include "walls/gl/depth_wall_pass.h"
 #include "walls/gl/offscreen_target.h"
@@ -31,25 +32,12 @@
 namespace cavewall::testing {
 namespace {
 
-constexpr int kWidth = 512, kHeight = 384;  // texels of the bake and pixels of the views: 7.8 mm on the wall
-constexpr int kColourTolerance = 40;        // 8-bit sRGB levels per channel
-const display::ScreenQuad kQuad{{-2, 0, 0}, {2, 0, 0}, {-2, 3, 0}};  // 4 m x 3 m at z = 0, facing +z
-const glm::dvec3 kSample(0.0, 1.5, 3.0), kEye(0.6, 1.5, 2.5);
+constexpr int kWidth = 512, kHeight = 384;     // texels of the bake and pixels of the views: 7.8 mm on the wall
+constexpr int kColourTolerance = 40;           // 8-bit sRGB levels per channel
+const display::ScreenQuad& kQuad = kCardWall;  // tests/wallsgl/card_wall.h
+const glm::dvec3 kSample = kCardWallSample, kEye(0.6, 1.5, 2.5);
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// A checkerboard back plane 4 m behind the wall (2 m tiles, two greys) and a red card (a 1 m x
-// 1 m x 0.2 m box) whose front face is 1 m behind it, all content, lit by ambient light alone
-// (so colour does not depend on the eye).
-scenes::Scene cardScene() {
-    scenes::Scene s;
-    s.name = "depth-wall-test";
-    s.meshes.push_back(scenes::makeTiledQuad({-5, -1.5, -4}, {10, 0, 0}, {0, 6, 0}, 5, 3, {0.55f, 0.55f, 0.55f, 1},
-                                             {0.2f, 0.2f, 0.25f, 1}));
-    scenes::addObject(s, 0, glm::dmat4(1.0), "back");
-    s.meshes.push_back(scenes::makeBox({1.0f, 1.0f, 0.2f}, {0.9f, 0.1f, 0.1f, 1}));
-    scenes::addObject(s, 1, glm::translate(glm::dmat4(1.0), glm::dvec3(0.7, 1.9, -1.1)), "card");
-    return s;
-}
+constexpr double kCardX = 0.7;  // the card's centre, x (cardScene)
 
 bool differs(const scenes::Image& a, const scenes::Image& b, int x, int y, int slack = 2) {
     // Wrong unless some reference pixel within `slack` pixels has the same colour: an edge moves
@@ -100,7 +88,7 @@ TEST_F(DepthWallPassTest, HalvedDepthsMatchGeometryWithinADepthTexelOfThePredict
 void DepthWallPassTest::matchesGeometryExceptWherePredicted(bool halved) {
     if (!context) GTEST_SKIP();
     const int slack = halved ? 4 : 2;  // pixels: a depth texel and a pixel, as in differs()
-    const scenes::Scene scene = cardScene();
+    const scenes::Scene scene = cardScene("depth-wall-test", kCardX);
     const std::vector<int> objects{0, 1};
     const walls::WallFrame frame = walls::wallFrame(kQuad);
     const glm::dvec3 eye = frame.toWall(kEye), sample = frame.toWall(kSample);
@@ -116,29 +104,15 @@ void DepthWallPassTest::matchesGeometryExceptWherePredicted(bool halved) {
     // Full geometry from the eye, through the wall as its screen (pixels = wall points).
     const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, kEye, {0.05, kInf});
     walls::gl::OffscreenTarget target({kWidth, kHeight});
-    scenes::Image truth;
-    {
-        render::gl::SceneRenderer renderer(scene, render::gl::RenderSettings{glm::vec4(0.0f), 1.0f});
-        render::gl::ViewTarget view;
-        view.framebuffer = target.framebuffer();
-        view.viewport = {0, 0, kWidth, kHeight};
-        view.clearColor = glm::vec4(0.0f);
-        render::DrawFilter filter;
-        filter.objects = &objects;
-        renderer.renderFrustum(frustum, glm::dmat4(1.0), view, filter);
-        truth = target.read("truth");
-    }
+    renderGeometry(scene, objects, frustum, target);
+    const scenes::Image truth = target.read("truth");
 
     // The depth wall and the flat wall from the same eye.
     const display::gl::GlObject colourTexture = walls::gl::uploadWallTexture({colour});
     const walls::gl::DepthTexture depthTexture =
         walls::gl::uploadDepthTexture(halved ? walls::marchDepths(depth) : depth);
     auto drawWith = [&](auto&& draw) {
-        target.bindAndClear(glm::vec4(0.0f));
-        glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-        display::FrameStats stats;
-        draw(stats);
-        EXPECT_EQ(stats.drawCalls, 1);
+        EXPECT_EQ(drawOnCleared(target, draw).drawCalls, 1);
         return target.read("wall");
     };
     const walls::gl::DepthWallPass depthPass;
@@ -261,7 +235,7 @@ void DepthWallPassTest::matchesGeometryExceptWherePredicted(bool halved) {
 // an empty target.
 TEST_F(DepthWallPassTest, GeometryInFrontOfTheWallHidesIt) {
     if (!context) GTEST_SKIP();
-    scenes::Scene scene = cardScene();
+    scenes::Scene scene = cardScene("depth-wall-test", kCardX);
     scene.meshes.push_back(scenes::makeBox({1.0f, 0.8f, 0.2f}, {0.1f, 0.8f, 0.2f, 1}));
     scenes::addObject(scene, 2, glm::translate(glm::dmat4(1.0), glm::dvec3(0.2, 1.6, 0.8)), "front");
     const std::vector<int> behind{0, 1}, front{2};
@@ -287,14 +261,7 @@ TEST_F(DepthWallPassTest, GeometryInFrontOfTheWallHidesIt) {
     drawWall();
     const scenes::Image wallOnly = target.read("wall");
 
-    render::gl::SceneRenderer renderer(scene, render::gl::RenderSettings{glm::vec4(0.0f), 1.0f});
-    render::gl::ViewTarget view;
-    view.framebuffer = target.framebuffer();
-    view.viewport = {0, 0, kWidth, kHeight};
-    view.clearColor = glm::vec4(0.0f);
-    render::DrawFilter filter;
-    filter.objects = &front;
-    renderer.renderFrustum(frustum, glm::dmat4(1.0), view, filter);
+    renderGeometry(scene, front, frustum, target);
     const scenes::Image occluder = target.read("front");
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
     glViewport(0, 0, kWidth, kHeight);
@@ -322,7 +289,7 @@ TEST_F(DepthWallPassTest, GeometryInFrontOfTheWallHidesIt) {
 // sampling point, blended in, shows its own colours where the first layer's ray lands.
 TEST_F(DepthWallPassTest, BlendedLayersShareTheHeaviestLayersMarch) {
     if (!context) GTEST_SKIP();
-    const scenes::Scene scene = cardScene();
+    const scenes::Scene scene = cardScene("depth-wall-test", kCardX);
     const std::vector<int> objects{0, 1};
     walls::DepthImage depth, otherDepth;
     scenes::Image colour, other;
@@ -359,10 +326,7 @@ TEST_F(DepthWallPassTest, BlendedLayersShareTheHeaviestLayersMarch) {
             layer.weight = weight;
             d.layers[d.count++] = layer;
         }
-        target.bindAndClear(glm::vec4(0.0f));
-        glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-        display::FrameStats stats;
-        pass.draw({d}, frustum, glm::dmat4(1.0), 0, stats);
+        drawOnCleared(target, [&](display::FrameStats& stats) { pass.draw({d}, frustum, glm::dmat4(1.0), 0, stats); });
         return target.read("wall");
     };
     auto largestDifference = [](const scenes::Image& a, const scenes::Image& b) {
@@ -465,12 +429,10 @@ void DepthWallPassTest::marchesAsItsReference(bool halved) {
             SCOPED_TRACE(::testing::Message() << "eye " << eyeWorld.x << ", " << eyeWorld.y << ", " << eyeWorld.z
                                               << ", at most " << settings.maxSteps << " steps");
             const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, eyeWorld, {0.05, kInf});
-            target.bindAndClear(glm::vec4(0.0f));
-            glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
             walls::gl::DepthWallDraw d{kQuad, {}, 1};
             d.layers[0] = {colourTexture.id(), depthTexture.depth.id(), sample, range, 1.0f, depthTexture.skip.id()};
-            display::FrameStats stats;
-            pass.draw({d}, frustum, glm::dmat4(1.0), nearest.id(), stats);
+            drawOnCleared(
+                target, [&](display::FrameStats& stats) { pass.draw({d}, frustum, glm::dmat4(1.0), nearest.id(), stats); });
             const scenes::Image got = target.read("march");
             const glm::dvec3 eye = frame.toWall(eyeWorld), s = frame.toWall(sample);
             int hits = 0, wrong = 0, edges = 0;
@@ -516,7 +478,7 @@ void DepthWallPassTest::marchesAsItsReference(bool halved) {
 // none of it (so the rectangle is what the pass draws).
 TEST_F(DepthWallPassTest, DrawsOnlyWhereAMarchCanHit) {
     if (!context) GTEST_SKIP();
-    const scenes::Scene scene = cardScene();
+    const scenes::Scene scene = cardScene("depth-wall-test", kCardX);
     const std::vector<int> objects{1};  // the card, no back plane
     walls::DepthImage depth;
     const scenes::Image colour = bake(scene, objects, depth);
@@ -536,10 +498,7 @@ TEST_F(DepthWallPassTest, DrawsOnlyWhereAMarchCanHit) {
         walls::gl::DepthWallDraw d{kQuad, {}, 1};
         d.layers[0] = {
             colourTexture.id(), depthTexture.depth.id(), kSample, range, 1.0f, depthTexture.skip.id(), rect, texels};
-        target.bindAndClear(glm::vec4(0.0f));
-        glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-        display::FrameStats stats;
-        pass.draw({d}, frustum, glm::dmat4(1.0), 0, stats);
+        drawOnCleared(target, [&](display::FrameStats& stats) { pass.draw({d}, frustum, glm::dmat4(1.0), 0, stats); });
         return target.read("wall");
     };
     // The whole wall: the default content and a one-texel texture, whose margin is the wall.
@@ -569,7 +528,7 @@ TEST_F(DepthWallPassTest, DrawsOnlyWhereAMarchCanHit) {
 // eye draws exactly what the whole wall draws; a rectangle that misses the card draws nothing.
 TEST_F(DepthWallPassTest, FlatWallsDrawOnlyTheirCoveredRectangle) {
     if (!context) GTEST_SKIP();
-    const scenes::Scene scene = cardScene();
+    const scenes::Scene scene = cardScene("depth-wall-test", kCardX);
     const std::vector<int> objects{1};
     walls::DepthImage depth;
     const scenes::Image colour = bake(scene, objects, depth);
@@ -582,10 +541,7 @@ TEST_F(DepthWallPassTest, FlatWallsDrawOnlyTheirCoveredRectangle) {
     auto draw = [&](walls::TextureRect rect) {
         walls::gl::WallDraw d{kQuad, {colourTexture.id()}, {1.0f}, 1, {}};
         d.contents[0] = rect;
-        target.bindAndClear(glm::vec4(0.0f));
-        glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-        display::FrameStats stats;
-        pass.draw({d}, frustum, glm::dmat4(1.0), 0, stats);
+        drawOnCleared(target, [&](display::FrameStats& stats) { pass.draw({d}, frustum, glm::dmat4(1.0), 0, stats); });
         return target.read("wall");
     };
     const scenes::Image whole = draw({}), cropped = draw(covered), missing = draw({{0.0, 0.0}, {0.1, 0.1}});

@@ -8,6 +8,7 @@
 #include "render/gl/scene_renderer.h"
 #include "scenes/primitives.h"
 #include "tests/gl/gl_test_support.h"
+#include "tests/wallsgl/card_wall.h"
 #include "walls/depth_wall.h"
 #include "walls/gl/depth_wall_pass.h"
 #include "walls/gl/offscreen_target.h"
@@ -24,23 +25,11 @@
 namespace cavewall::testing {
 namespace {
 
-constexpr int kWidth = 256, kHeight = 192;                           // bake texels and view pixels
-const display::ScreenQuad kQuad{{-2, 0, 0}, {2, 0, 0}, {-2, 3, 0}};  // 4 m x 3 m at z = 0, facing +z
-const glm::dvec3 kSample(0.0, 1.5, 3.0);
+constexpr int kWidth = 256, kHeight = 192;     // bake texels and view pixels
+const display::ScreenQuad& kQuad = kCardWall;  // tests/wallsgl/card_wall.h
+const glm::dvec3 kSample = kCardWallSample;
 // The left and right eye 2.5 m in front of the wall, 0.3 m to the right of the sampling point.
 const glm::dvec3 kLeft(0.268, 1.5, 2.5), kRight(0.332, 1.5, 2.5);
-
-// A back plane 4 m behind the wall and a card (a 1 m box) whose front face is 1 m behind it.
-scenes::Scene cardScene() {
-    scenes::Scene s;
-    s.name = "wall-depth-test";
-    s.meshes.push_back(scenes::makeTiledQuad({-5, -1.5, -4}, {10, 0, 0}, {0, 6, 0}, 5, 3, {0.55f, 0.55f, 0.55f, 1},
-                                             {0.2f, 0.2f, 0.25f, 1}));
-    scenes::addObject(s, 0, glm::dmat4(1.0), "back");
-    s.meshes.push_back(scenes::makeBox({1.0f, 1.0f, 0.2f}, {0.9f, 0.1f, 0.1f, 1}));
-    scenes::addObject(s, 1, glm::translate(glm::dmat4(1.0), glm::dvec3(0.4, 1.9, -1.1)), "card");
-    return s;
-}
 
 metrics::DepthImage distances(const walls::gl::OffscreenTarget& target, const display::OffAxisFrustum& frustum,
                               const std::string& name) {
@@ -51,7 +40,7 @@ class WallDepthTest : public GlTest {};
 
 TEST_F(WallDepthTest, DepthWallsGiveTheDepthTheEyeSeesFlatWallsTheirOwn) {
     if (!context) GTEST_SKIP();
-    const scenes::Scene scene = cardScene();
+    const scenes::Scene scene = cardScene("wall-depth-test", 0.4);
     const std::vector<int> objects{0, 1};
     walls::DepthImage depth;
     const scenes::Image colour =
@@ -69,21 +58,10 @@ TEST_F(WallDepthTest, DepthWallsGiveTheDepthTheEyeSeesFlatWallsTheirOwn) {
     for (const glm::dvec3 eye : {kLeft, kRight}) {
         // Through the wall as the screen, so every pixel shows the wall or what is behind it.
         const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, eye, {0.05, 1000.0});
-        render::gl::SceneRenderer renderer(scene, render::gl::RenderSettings{glm::vec4(0.0f), 1.0f});
-        render::gl::ViewTarget view;
-        view.framebuffer = target.framebuffer();
-        view.viewport = {0, 0, kWidth, kHeight};
-        view.clearColor = glm::vec4(0.0f);
-        render::DrawFilter filter;
-        filter.objects = &objects;
-        renderer.renderFrustum(frustum, glm::dmat4(1.0), view, filter);
+        renderGeometry(scene, objects, frustum, target);
         const metrics::DepthImage truth = distances(target, frustum, "geometry");
         auto depthOnly = [&](auto&& draw, const std::string& name) -> metrics::DepthImage {
-            target.bindAndClear(glm::vec4(0.0f));
-            glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-            display::FrameStats stats;
-            draw(stats);
-            EXPECT_EQ(stats.drawCalls, 1);
+            EXPECT_EQ(drawOnCleared(target, draw).drawCalls, 1);
             const scenes::Image image = target.read(name);
             EXPECT_EQ(image.rgba, std::vector<std::uint8_t>(image.rgba.size(), 0)) << name << ": colour was written";
             return distances(target, frustum, name);

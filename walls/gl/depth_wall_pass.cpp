@@ -2,6 +2,7 @@
 
 #include "config/error.h"
 #include "display/gl/shader.h"
+#include "walls/gl/wall_pass_state.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -257,32 +258,15 @@ DepthWallPass::Program DepthWallPass::build(int layers, const std::string& fragm
 void DepthWallPass::draw(const std::vector<DepthWallDraw>& walls, const display::OffAxisFrustum& frustum,
                          const glm::dmat4& caveFromWorld, GLuint sampler, display::FrameStats& stats) const {
     if (walls.empty()) return;
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_GREATER);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-    drawWith(_programs, walls, frustum, caveFromWorld, sampler, stats);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
+    drawBlendedWalls([&] { drawWith(_programs, walls, frustum, caveFromWorld, sampler, stats); });
 }
 
 void DepthWallPass::drawDepth(const std::vector<DepthWallDraw>& walls, const display::OffAxisFrustum& frustum,
                               const glm::dmat4& caveFromWorld, GLuint sampler, display::FrameStats& stats) const {
     if (walls.empty()) return;
-    if (!_depthPrograms) {  // built on first use: only depth read-backs need them
-        _depthPrograms.emplace();
-        for (int n = 1; n <= walls::kMaxWallTextures; ++n) (*_depthPrograms)[n - 1] = build(n, depthFragmentSource(n));
-    }
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_GREATER);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    drawWith(*_depthPrograms, walls, frustum, caveFromWorld, sampler, stats);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    drawWallDepth(
+        _depthPrograms, [](int n) { return build(n, depthFragmentSource(n)); },
+        [&](const Programs& programs) { drawWith(programs, walls, frustum, caveFromWorld, sampler, stats); });
 }
 
 void DepthWallPass::drawWith(const Programs& programs, const std::vector<DepthWallDraw>& walls,

@@ -67,7 +67,7 @@ struct DepthWallLayer {
     glm::dvec2 range{0.0};          // walls::depthRange of the depth image, metres
     float weight = 0.0f;
     GLuint skip = 0;               // DepthTexture::skip; 0: none (the march skips nothing)
-    walls::TextureRect content;    // DepthTextureData::content; the whole texture by default
+    walls::TextureRect content{};  // DepthTextureData::content; the whole texture by default
     glm::ivec2 depthTexels{1, 1};  // the depth texture's size: the draw rectangle grows by a texel
 };
 

@@ -1,6 +1,7 @@
 #include "walls/gl/wall_pass.h"
 
 #include "display/gl/shader.h"
+#include "walls/gl/wall_pass_state.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -66,32 +67,15 @@ WallPass::WallPass() : _vertexArray(display::gl::createVertexArray()) {
 void WallPass::draw(const std::vector<WallDraw>& walls, const display::OffAxisFrustum& frustum,
                     const glm::dmat4& caveFromWorld, GLuint sampler, display::FrameStats& stats) const {
     if (walls.empty()) return;
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_GREATER);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-    drawWith(_programs, walls, frustum, caveFromWorld, sampler, stats);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
+    drawBlendedWalls([&] { drawWith(_programs, walls, frustum, caveFromWorld, sampler, stats); });
 }
 
 void WallPass::drawDepth(const std::vector<WallDraw>& walls, const display::OffAxisFrustum& frustum,
                          const glm::dmat4& caveFromWorld, GLuint sampler, display::FrameStats& stats) const {
     if (walls.empty()) return;
-    if (!_depthPrograms) {  // built on first use: only depth read-backs need them
-        _depthPrograms.emplace();
-        for (int n = 1; n <= kMaxWallTextures; ++n) (*_depthPrograms)[n - 1] = build(depthFragmentSource(n));
-    }
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_GREATER);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    drawWith(*_depthPrograms, walls, frustum, caveFromWorld, sampler, stats);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    drawWallDepth(
+        _depthPrograms, [](int n) { return build(depthFragmentSource(n)); },
+        [&](const Programs& programs) { drawWith(programs, walls, frustum, caveFromWorld, sampler, stats); });
 }
 
 void WallPass::drawWith(const Programs& programs, const std::vector<WallDraw>& walls,
