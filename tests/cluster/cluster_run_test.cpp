@@ -108,7 +108,7 @@ std::vector<std::string> runArgs(const fs::path& out) {
             "--scene",
             smallPlant().string(),
             "--display",
-            CAVEWALL_SOURCE_DIR "/tests/gl/cave4_128.json",
+            CAVEWALL_SOURCE_DIR "/tests/support/cave4_128.json",
             "--tracker",
             "sim:walk?seed=5",
             "--frames",

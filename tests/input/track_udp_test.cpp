@@ -1,7 +1,7 @@
 // End to end: this process sends DTrack packets over loopback UDP while a child
 // `cavewall track` listens; the child's CSV must show the sent head after calibration.
 #include "input/network_source.h"
-#include "tests/cli/run_cli.h"
+#include "tests/support/run_cli.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
