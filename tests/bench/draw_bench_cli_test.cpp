@@ -1,6 +1,6 @@
 // `cavewall draw-bench` end to end on a small generated box hall (headless GL): both culling
 // configurations are timed, the CSV holds consistent numbers, and bad input is an error.
-#include "tests/cli/run_cli.h"
+#include "tests/support/run_cli.h"
 #include "tests/support/csv_table.h"
 
 #include <gmock/gmock.h>

@@ -1,7 +1,7 @@
 // `cavewall bench --scale` end to end on tiny generated plants (headless GL): the modes per
 // size, depth walls, a plant folder holding another model, and data folders that cannot be
 // written.
-#include "tests/cli/run_cli.h"
+#include "tests/support/run_cli.h"
 #include "tests/support/csv_table.h"
 #include "tests/support/files.h"
 

@@ -108,7 +108,7 @@ std::vector<std::string> runArgs(const fs::path& out) {
             "--scene",
             smallPlant().string(),
             "--display",
-            CAVEWALL_SOURCE_DIR "/tests/gl/cave4_128.json",
+            CAVEWALL_SOURCE_DIR "/tests/support/cave4_128.json",
             "--tracker",
             "sim:walk?seed=5",
             "--frames",
@@ -134,7 +134,7 @@ const fs::path& correctedDisplay() {
         const fs::path dir = kWork / "corrected-display";
         fs::create_directories(dir);
         std::ofstream(dir / "keystone.warp") << "cavewall-warp 1\n2 2\n0 0 0 0\n1 0 1 0\n0 1 0.1 1\n1 1 0.9 1\n";
-        std::string json = readFile(CAVEWALL_SOURCE_DIR "/tests/gl/cave4_128.json");
+        std::string json = readFile(CAVEWALL_SOURCE_DIR "/tests/support/cave4_128.json");
         for (const char* screen : {"\"front\"", "\"left\"", "\"floor\""}) {
             const std::size_t at = json.find("\"resolution\": [128, 128]", json.find(screen));
             json.insert(at, std::string("\"warp\": \"keystone.warp\", ") +

@@ -1,10 +1,10 @@
 // End to end: this process sends DTrack packets over loopback UDP while a child
 // `cavewall track` listens; the child's CSV must show the sent head after calibration.
 #include "input/network_source.h"
-#include "tests/cli/run_cli.h"
-#include "tests/cli/track_run.h"
 #include "tests/support/csv_table.h"
 #include "tests/support/files.h"
+#include "tests/support/run_cli.h"
+#include "tests/tools/track_run.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

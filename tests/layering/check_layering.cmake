@@ -1,6 +1,6 @@
 # Fails when a source file includes against the layering of docs/architecture.md's layout table:
-#  - <GL/...>, <EGL/...>, <GLFW/...>, <epoxy/...> or <glad/...> outside */gl/ folders (in tests,
-#    outside tests/gl/);
+#  - <GL/...>, <EGL/...>, <GLFW/...>, <epoxy/...> or <glad/...> outside */gl/ folders (in tests
+#    too: tests/support/gl/ holds the GL test support);
 #  - a project include ("folder/file.h", "folder/sub/file.h") of a library the including folder
 #    may not depend on. No folder outside */gl/ may include a */gl/ folder (GL code is what
 #    includes GL headers, directly or through a */gl/ header), except tools/, the executable;
@@ -78,18 +78,19 @@ foreach(layer IN LISTS layers)
   endif()
 endforeach()
 
-# Tests: GL headers only in tests/gl, whose support (tests/gl/gl_test_support.h) the other GL
-# tests call instead, as they call the */gl/ libraries.
+# Tests: GL headers only in a gl/ folder of tests/ (tests/support/gl/, whose
+# tests/support/gl/gl_test_support.h the other GL tests call instead, as they call the */gl/
+# libraries).
 file(GLOB_RECURSE test_files LIST_DIRECTORIES false "${ROOT}/tests/*.h" "${ROOT}/tests/*.cpp")
 foreach(f IN LISTS test_files)
   file(RELATIVE_PATH rel "${ROOT}" "${f}")
-  if(rel MATCHES "^tests/gl/")
+  if(rel MATCHES "^tests/(.+/)?gl/")
     continue()
   endif()
   file(STRINGS "${f}" includes REGEX "^[ \t]*#[ \t]*include")
   foreach(line IN LISTS includes)
     if(line MATCHES "<(GL|EGL|GLFW|epoxy|glad)/")
-      list(APPEND violations "tests: ${rel}: ${line} (GL/EGL/GLFW headers only in tests/gl/)")
+      list(APPEND violations "tests: ${rel}: ${line} (GL/EGL/GLFW headers only in gl/ folders)")
     endif()
   endforeach()
 endforeach()

@@ -1,7 +1,7 @@
 // Compressed glTF: EXT_meshopt_compression files built here with meshoptimizer's encoders
 // (exact round trips, every rule's message), and files that Debian's gltfpack and
 // draco_transcoder write from shared models (the pack_compressed.cmake fixture), compared with
-// the originals. Images are compared in tests/gl/compressed_scenes_test.cpp.
+// the originals. Images are compared in tests/render/gl/compressed_scenes_gl_test.cpp.
 #include "config/error.h"
 #include "scenes/loader.h"
 #include "tests/scenes/gltf_builder.h"

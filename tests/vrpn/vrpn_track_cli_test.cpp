@@ -1,9 +1,9 @@
 // End to end: the scripted VRPN server (the real VRPN server code) streams a head pose while a
 // child `cavewall track --tracker vrpn:...` reads it; the child's CSV must show the pose.
-#include "tests/cli/run_cli.h"
-#include "tests/cli/track_run.h"
 #include "tests/support/csv_table.h"
 #include "tests/support/files.h"
+#include "tests/support/run_cli.h"
+#include "tests/tools/track_run.h"
 #include "tests/vrpn/server_process.h"
 
 #include <gmock/gmock.h>

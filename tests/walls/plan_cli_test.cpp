@@ -1,5 +1,5 @@
 #include "scenes/image_io.h"
-#include "tests/cli/run_cli.h"
+#include "tests/support/run_cli.h"
 #include "walls/angular_error.h"
 #include "walls/depth_wall.h"
 #include "walls/plan.h"

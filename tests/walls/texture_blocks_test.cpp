@@ -1,6 +1,6 @@
 // Block-compressed wall textures (walls/texture_blocks.h): the encoder's error on a wall-like
 // texture, exact transparency, the ".bct" file round trip and a clear error for every kind of
-// damaged file. GL-free; the GL side (upload, sRGB decode, drawing) is tests/wallsgl.
+// damaged file. GL-free; the GL side (upload, sRGB decode, drawing) is tests/walls/gl.
 #include "config/error.h"
 #include "metrics/image_error.h"
 #include "tests/support/files.h"

@@ -1,7 +1,7 @@
 // `cavewall walls` on models that once hung it or failed on its own proposal: a 10 km hall and
 // 200 boxes scattered over 2 km (bounded by the planning limit, progress on stderr), and
 // degenerate models refused up front with a message about the model, naming its file.
-#include "tests/cli/run_cli.h"
+#include "tests/support/run_cli.h"
 #include "tests/walls/walls_bad_models.h"
 
 #include <gmock/gmock.h>
