@@ -196,13 +196,17 @@ TexelCrossing texelCrossing(const DepthImage& image, glm::dvec2 ta, glm::dvec2 t
     return {hi, depthHi};
 }
 
+glm::dvec2 jumpRatio(double ds, double pitch) {
+    const double delta = pitch / ds;
+    if (!(delta < 0.5 * kMinGrazing)) return glm::dvec2(0.0);
+    const double rays = std::sin(kMinGrazing) / std::sin(kMinGrazing - delta);
+    return rays * glm::dvec2(std::cos(delta) + std::sin(delta) * pitch / ds, std::sin(delta) / ds);
+}
+
 bool depthJump(double dNear, double dFar, double ds, double pitch, double lateral) {
     if (!std::isfinite(dFar)) return true;
-    const double delta = pitch / ds;
-    if (delta >= 0.5 * kMinGrazing) return false;
-    const double rays = std::sin(kMinGrazing) / std::sin(kMinGrazing - delta);
-    const double cosines = std::cos(delta) + std::sin(delta) * (lateral + pitch) / ds;
-    return ds + dFar > rays * cosines * (ds + dNear);
+    const glm::dvec2 r = jumpRatio(ds, pitch);
+    return r.x > 0.0 && ds + dFar > (r.x + r.y * lateral) * (ds + dNear);
 }
 
 double jumpPitch(const WallFrame& f, int width, int height) {
@@ -300,7 +304,7 @@ ReprojectHit reproject(const DepthImage& image, const WallFrame& f, glm::dvec3 e
     const TexelCrossing c = hi > lo ? texelCrossing(image, ta, tb, ds, lo, hi, depthHi) : TexelCrossing{hi, depthHi};
     ReprojectHit hit{true, at(c.sigma), depthAt(c.sigma), double(c.depth)};
     const bool inside = c.from.x >= 0 && c.from.y >= 0 && c.from.x < image.width && c.from.y < image.height;
-    if (!inside) return hit;  // no sheet, or one from beyond the wall's edge: the hit stands
+    if (!inside || !settings.cutSheets) return hit;  // no sheet, or one from beyond the wall's edge
     const double lateral = glm::length(hit.texture - glm::dvec2(sample));
     if (!depthJump(c.depth, c.fromDepth, ds, jumpPitch(f, image.width, image.height), lateral)) return hit;
     if (!std::isfinite(c.fromDepth)) return {};  // a sheet over emptiness: nothing is there

@@ -172,9 +172,10 @@ float depthFromBuffer(float bufferValue, const glm::dmat4& clipFromView, double 
 glm::dvec2 texelCentre(const WallFrame& frame, int width, int height, int i, int j);
 
 struct ReprojectSettings {
-    int maxSteps = 64;  // linear steps at most (the pass's uniform); fewer when fewer texels are crossed
-    int refine = 6;     // bisections at most before the exact crossing, while the last step
-                        // spans more than one texel on an axis (only when maxSteps capped the march)
+    int maxSteps = 64;      // linear steps at most (the pass's uniform); fewer when fewer texels are crossed
+    int refine = 6;         // bisections at most before the exact crossing, while the last step
+                            // spans more than one texel on an axis (only when maxSteps capped the march)
+    bool cutSheets = true;  // cut rubber sheets (below); false keeps every hit, for measuring the cut
 };
 
 // The march's hit test at sigma: the stored depth d is reached at or before sigma, with a
@@ -252,6 +253,9 @@ inline constexpr double kFillBack = 0.25;
 // (D_S + dFar) / (D_S + dNear) beyond their product. False when delta >= g / 2 (the texels are
 // too coarse to tell); true for an empty dFar.
 bool depthJump(double dNear, double dFar, double samplingDistance, double pitch, double lateral);
+// The ratio depthJump compares with, as (a, b): a + b lateral; (0, 0) where it never cuts. The
+// depth wall pass computes it per layer and draw.
+glm::dvec2 jumpRatio(double samplingDistance, double pitch);
 // The `pitch` for march texels of an image of `frame` with width x height texels: 1.5 march
 // texel diagonals, the farthest two colour texels of neighbouring halved march texels can be.
 double jumpPitch(const WallFrame& frame, int width, int height);

@@ -282,8 +282,8 @@ TEST(DepthWall, DepthJumpTellsOneSurfaceFromTwo) {
 
 // The sheet is cut: from an eye 0.6 m to the side, the interval the card's right edge opens
 // (where the eye sees the back plane S did not) shows the back plane's texels, never the card's;
-// elsewhere on the row every pixel shows the surface the march hits, as before. With the card
-// alone (nothing behind it) the interval draws nothing.
+// with the cut turned off, the whole interval shows the card. With the card alone (nothing behind
+// it) the interval draws nothing.
 TEST(DepthWall, CutSheetsShowTheFarSideInTheGap) {
     const WallFrame f = wallFrame(kQuad);
     const glm::dvec3 s(2.0, 1.5, -3.0), e(2.6, 1.5, -2.5);
@@ -297,7 +297,9 @@ TEST(DepthWall, CutSheetsShowTheFarSideInTheGap) {
     const glm::dvec2 edge(2.0 + 0.5 * 3.0 / 4.0, 1.5);
     const double a = reprojectedPoint(e, s, edge, 1.0).x, b = reprojectedPoint(e, s, edge, 4.0).x;
     ASSERT_LT(a + 0.02, b);
-    int gap = 0, card = 0, filled = 0, drawnAlone = 0;
+    ReprojectSettings keep;
+    keep.cutSheets = false;
+    int gap = 0, card = 0, filled = 0, drawnAlone = 0, sheet = 0;
     for (double x = a + 0.01; x < b - 0.01; x += 0.001) {
         const glm::dvec2 w(x, 1.5);
         if (firstSurface(e, w).depth < 2.0) continue;  // the eye sees the card here
@@ -307,13 +309,17 @@ TEST(DepthWall, CutSheetsShowTheFarSideInTheGap) {
         card += hit.surface < 2.0;
         filled += hit.filled;
         drawnAlone += reproject(alone, f, e, s, w, depthRange(alone)).hit;
+        sheet += reproject(image, f, e, s, w, range, keep).surface < 2.0;
     }
-    std::printf("cut sheet: %d gap samples, %d filled, %d show the card, %d drawn with the card alone\n", gap, filled,
-                card, drawnAlone);
+    std::printf(
+        "cut sheet: %d gap samples, %d filled, %d show the card, %d drawn with the card alone; kept, %d show the "
+        "card\n",
+        gap, filled, card, drawnAlone, sheet);
     EXPECT_GT(gap, 50);
     EXPECT_EQ(card, 0);
     EXPECT_GT(filled, gap / 2);
     EXPECT_EQ(drawnAlone, 0);
+    EXPECT_EQ(sheet, gap);  // the sheet the cut removes (cutSheets false, for measuring)
 }
 
 // The march's skip level (depthBlockMinimum with dilate 1): from any point of a block (or beyond

@@ -47,8 +47,10 @@ in vec2 vUv;
 uniform vec4 uWeights;
 uniform vec3 uSample[4];     // per layer: x, y, distance in front of the plane
 uniform vec2 uRange[4];      // per layer: nearest and farthest baked depth
+uniform vec2 uJump[4];       // per layer: walls::jumpRatio
 uniform int uMaxSteps;
 uniform int uRefine;
+uniform bool uCutSheets;
 uniform vec2 uSize;          // wall width, height (metres)
 out vec4 fragColor;          // premultiplied, linear
 // The depth test runs before the shader, on the quad's own depth (gl::DepthWallPass header).
@@ -89,20 +91,16 @@ Crossing crossing(sampler2D depth, ivec2 size, vec2 ta, vec2 tb, float dS, float
     return Crossing(hi, dHi, none, 0.0);
 }
 
-// walls::depthJump: whether march texels at depths dNear <= dFar hold two surfaces.
-bool depthJump(float dNear, float dFar, float dS, float pitch, float lateral) {
-    if (isinf(dFar)) return true;
-    float delta = pitch / dS;
-    if (delta >= 0.5 * MIN_GRAZING) return false;
-    float rays = sin(MIN_GRAZING) / sin(MIN_GRAZING - delta);
-    float cosines = cos(delta) + sin(delta) * (lateral + pitch) / dS;
-    return dS + dFar > rays * cosines * (dS + dNear);
+// walls::depthJump: whether march texels at depths dNear <= dFar hold two surfaces; J is
+// walls::jumpRatio of the layer.
+bool depthJump(float dNear, float dFar, float dS, vec2 J, float lateral) {
+    return isinf(dFar) || (J.x > 0.0 && dS + dFar > (J.x + J.y * lateral) * (dS + dNear));
 }
 
 // The first hit of the eye's ray (ta -> tb, texel units) in layer S's depth, with rubber sheets
 // cut (walls::reproject): x the depth s behind the wall, or -1 for none; y the hit's sigma; z 1
-// where a cut sheet is filled with the far side's colour (fillColour), else -1.
-vec4 march(sampler2D depth, sampler2D skip, vec3 S, vec2 range, vec2 ta, vec2 tb) {
+// where a cut sheet is filled with the far side's colour (colourAt), else -1.
+vec4 march(sampler2D depth, sampler2D skip, vec3 S, vec2 range, vec2 J, vec2 ta, vec2 tb) {
     ivec2 size = textureSize(depth, 0);
     float s0 = range.x / (S.z + range.x), s1 = range.y / (S.z + range.y);
     vec2 span = abs(tb - ta) * (s1 - s0);
@@ -140,29 +138,26 @@ vec4 march(sampler2D depth, sampler2D skip, vec3 S, vec2 range, vec2 ta, vec2 tb
     if (hi > lo) c = crossing(depth, size, ta, tb, S.z, lo, hi, dHi);
     vec4 result = vec4(S.z * c.sigma / (1.0 - c.sigma), c.sigma, -1.0, -1.0);
     // A sheet from beyond the wall's edge (or none): the hit stands.
-    if (any(lessThan(c.from, ivec2(0))) || any(greaterThanEqual(c.from, size))) return result;
+    if (!uCutSheets || any(lessThan(c.from, ivec2(0))) || any(greaterThanEqual(c.from, size))) return result;
     vec2 metres = uSize / vec2(size);
     vec2 entry = mix(ta, tb, c.sigma) * metres;
     float lateral = length(vec2(entry.x, uSize.y - entry.y) - S.xy);
-    if (!depthJump(c.depth, c.fromDepth, S.z, 1.5 * length(metres), lateral)) return result;
+    if (!depthJump(c.depth, c.fromDepth, S.z, J, lateral)) return result;
     if (isinf(c.fromDepth)) return vec4(-1.0);  // a sheet over emptiness: nothing is there
     return vec4(result.xy, 1.0, 0.0);
 }
 
-// Layer S's colour where a cut sheet's ray is at depth s (walls::reproject): the colour texel
-// under the ray's point FILL_BACK depth texels (on the ray's longer axis) before it, at its centre.
-vec4 fillColour(sampler2D colour, sampler2D depth, vec3 S, float s, vec2 ta, vec2 tb, vec2 gx, vec2 gy) {
-    vec2 dir = abs(tb - ta);
-    float back = FILL_BACK / max(max(dir.x, dir.y), 1e-9);
-    vec2 size = vec2(textureSize(colour, 0));
-    vec2 uv = mix(ta, tb, s / (S.z + s) - back) / vec2(textureSize(depth, 0));
-    return textureGrad(colour, (floor(uv * size) + 0.5) / size, gx, gy);
-}
-
 // Layer S's colour where the eye's ray is at depth s behind the wall: its texture at the point
 // through which S sees the ray there (sigma = s / (D_S + s)), ta -> tb in texel units of `depth`.
-vec4 colourAt(sampler2D colour, sampler2D depth, vec3 S, float s, vec2 ta, vec2 tb, vec2 gx, vec2 gy) {
-    return textureGrad(colour, mix(ta, tb, s / (S.z + s)) / vec2(textureSize(depth, 0)), gx, gy);
+// Where the march cut a sheet (`fill`, walls::reproject), the colour texel under the ray's point
+// FILL_BACK depth texels (on the ray's longer axis) before that, at its centre. One sample either
+// way (llvmpipe would run both of two).
+vec4 colourAt(sampler2D colour, sampler2D depth, vec3 S, float s, vec2 ta, vec2 tb, bool fill, vec2 gx, vec2 gy) {
+    vec2 dir = abs(tb - ta);
+    float back = fill ? FILL_BACK / max(max(dir.x, dir.y), 1e-9) : 0.0;
+    vec2 uv = mix(ta, tb, s / (S.z + s) - back) / vec2(textureSize(depth, 0));
+    vec2 size = vec2(textureSize(colour, 0));
+    return textureGrad(colour, fill ? (floor(uv * size) + 0.5) / size : uv, gx, gy);
 }
 )";
 
@@ -206,19 +201,18 @@ std::string fragmentSource(int layers) {
     s += kMarch;
     // One march finds the ray's depth s (the heaviest layer's first hit; the next layer's when
     // it has none), and every layer shows its texture where the ray is at s.
-    // Where the march cut a sheet, every layer shows its far side's colour at s (fillColour).
+    // Where the march cut a sheet, every layer shows its far side's colour at s (colourAt).
     s += "void main() {\n    vec2 gx = dFdx(vUv), gy = dFdy(vUv);\n    vec4 h = vec4(-1.0);\n";
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
         s += "    if (h.x < 0.0) h = march(uDepth" + n + ", uSkip" + n + ", uSample[" + n + "], uRange[" + n +
-             "], vRay[" + n + "].xy, vRay[" + n + "].zw);\n";
+             "], uJump[" + n + "], vRay[" + n + "].xy, vRay[" + n + "].zw);\n";
     }
     s += "    float s = h.x;\n    vec4 c = vec4(0.0);\n    if (s >= 0.0) c = vec4(0.0)";
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
-        const std::string args = "(uColour" + n + ", uDepth" + n + ", uSample[" + n + "], s, vRay[" + n +
-                                 "].xy, vRay[" + n + "].zw, gx, gy)";
-        s += "\n        + uWeights[" + n + "] * (h.z > 0.0 ? fillColour" + args + " : colourAt" + args + ")";
+        s += "\n        + uWeights[" + n + "] * colourAt(uColour" + n + ", uDepth" + n + ", uSample[" + n +
+             "], s, vRay[" + n + "].xy, vRay[" + n + "].zw, h.z > 0.0, gx, gy)";
     }
     // Where no layer hits there is nothing behind the wall: the sum is 0 and leaves the pixel
     // as it was (premultiplied blending, no depth writes).
@@ -247,6 +241,13 @@ std::string depthFragmentSource(int layers) {
 }  // namespace
 
 namespace {
+
+// A texture's level-0 width or height (`which`), at least 1.
+int textureSide(GLuint texture, GLenum which) {
+    GLint side = 0;
+    glGetTextureLevelParameteriv(texture, 0, which, &side);
+    return std::max(side, 1);
+}
 
 // One level of GL_R32F, read with texelFetch.
 gl::GlObject uploadFloats(const walls::DepthImage& image) {
@@ -297,8 +298,10 @@ DepthWallPass::Program DepthWallPass::build(int layers, const std::string& fragm
     p.size = uniformLocation(id, kName, "uSize");
     p.samples = uniformLocation(id, kName, "uSample");
     p.ranges = uniformLocation(id, kName, "uRange");
+    p.jumps = uniformLocation(id, kName, "uJump");
     p.maxSteps = uniformLocation(id, kName, "uMaxSteps");
     p.refine = uniformLocation(id, kName, "uRefine");
+    p.cutSheets = uniformLocation(id, kName, "uCutSheets");
     p.rect = uniformLocation(id, kName, "uRect");
     return p;
 }
@@ -347,7 +350,7 @@ void DepthWallPass::drawWith(const Programs& programs, const std::vector<DepthWa
         if (!(eye.z < 0.0)) continue;  // the eye is behind (or on) the wall: this side is not seen
         glm::vec4 weights(0.0f);
         glm::vec3 samples[walls::kMaxWallTextures];
-        glm::vec2 ranges[walls::kMaxWallTextures];
+        glm::vec2 ranges[walls::kMaxWallTextures], jumps[walls::kMaxWallTextures];
         int used = 0;
         // The union of the layers' draw rectangles (walls::depthDrawRect), each grown by a depth
         // texel of its own, far more than the float march's rounding.
@@ -362,6 +365,9 @@ void DepthWallPass::drawWith(const Programs& programs, const std::vector<DepthWa
             weights[used] = l.weight;
             samples[used] = glm::vec3(s.x, s.y, -s.z);
             ranges[used] = glm::vec2(l.range);
+            jumps[used] =
+                glm::vec2(walls::jumpRatio(-s.z, walls::jumpPitch(frame, textureSide(l.depth, GL_TEXTURE_WIDTH),
+                                                                  textureSide(l.depth, GL_TEXTURE_HEIGHT))));
             glBindTextureUnit(2 * used, l.colour);
             glBindSampler(2 * used, sampler);
             glBindTextureUnit(2 * used + 1, l.depth);
@@ -383,8 +389,10 @@ void DepthWallPass::drawWith(const Programs& programs, const std::vector<DepthWa
         glUniform2f(p.size, float(frame.width), float(frame.height));
         glUniform3fv(p.samples, used, glm::value_ptr(samples[0]));
         glUniform2fv(p.ranges, used, glm::value_ptr(ranges[0]));
+        glUniform2fv(p.jumps, used, glm::value_ptr(jumps[0]));
         glUniform1i(p.maxSteps, _settings.maxSteps);
         glUniform1i(p.refine, _settings.refine);
+        glUniform1i(p.cutSheets, _settings.cutSheets ? 1 : 0);
         glUniform4f(p.rect, float(rect.lo.x), float(rect.lo.y), float(rect.hi.x), float(rect.hi.y));
         glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
         ++stats.drawCalls;

@@ -117,7 +117,7 @@ private:
     struct Program {
         GlObject program;
         GLint corners = -1, projection = -1, weights = -1, eye = -1, size = -1, samples = -1, ranges = -1,
-              maxSteps = -1, refine = -1, rect = -1;
+              maxSteps = -1, refine = -1, cutSheets = -1, jumps = -1, rect = -1;
     };
     using Programs = std::array<Program, walls::kMaxWallTextures>;  // [n - 1] marches n layers
     static Program build(int layers, const std::string& fragment);
