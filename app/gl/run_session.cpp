@@ -171,6 +171,7 @@ gl::WalkthroughOptions walkthroughOptions(const RunOptions& o, gl::BackgroundBak
     options.geometryBudgetMB = o.geometryBudgetMB;
     options.transition = o.transition;
     options.wallKind = o.wallKind;
+    options.depthMarch.cutSheets = !o.keepSheets;
     options.baker = baker;
     options.render.lodPixels = o.lodPixels;
     options.triangleBudget = o.triangleBudget;

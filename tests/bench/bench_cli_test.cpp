@@ -37,8 +37,8 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     ASSERT_EQ(g.exitCode, 0) << g.err;
     const fs::path out = root / "out";
     fs::remove_all(out);
-    const CliResult r = runCavewall({"bench", (plant / "scene.json").string(), "--quick", "--frames", "12", "--out",
-                                     out.string(), "--cache", (root / "cache").string(), "--alphas", "20,30",
+    const CliResult r = runCavewall({"bench", (plant / "scene.json").string(), "--quick", "--mono", "--frames", "12",
+                                     "--out", out.string(), "--cache", (root / "cache").string(), "--alphas", "20,30",
                                      "--warp-alpha", "30", "--clusters", "--cluster-budgets", "0.5,200"});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_THAT(r.out, HasSubstr("| 1 | full |"));
@@ -216,6 +216,7 @@ TEST(BenchSceneCli, ComparesAnotherSceneAndBakesOnDemandFromAnEmptyCache) {
     fs::remove_all(out);
     fs::remove_all(cache);
     const CliResult r = runCavewall({"bench",
+                                     "--mono",
                                      (plant / "scene.json").string(),
                                      "--quick",
                                      "--frames",
@@ -359,6 +360,7 @@ TEST(BenchSceneCli, BadCompareSceneOrOnDemandCacheIsAClearError) {
 CliResult runTinyScale(const fs::path& root, const std::string& sizes, std::vector<std::string> extra = {}) {
     fs::remove_all(root / "data");
     std::vector<std::string> args{"bench",
+                                  "--mono",
                                   "--scale",
                                   sizes,
                                   "--resolution",
@@ -502,8 +504,8 @@ TEST(BenchSceneCli, ScaleRefusesAnotherModelInAPlantFolder) {
     const fs::path folder = root / "data" / "plant-1000";
     const CliResult g = runCavewall({"generate", "house", "--triangles", "2000", "--out", folder.string()});
     ASSERT_EQ(g.exitCode, 0) << g.err;
-    const CliResult r = runCavewall({"bench", "--scale", "1k", "--resolution", "32", "--frames", "4", "--data",
-                                     (root / "data").string(), "--out", (root / "out").string()});
+    const CliResult r = runCavewall({"bench", "--mono", "--scale", "1k", "--resolution", "32", "--frames", "4",
+                                     "--data", (root / "data").string(), "--out", (root / "out").string()});
     EXPECT_EQ(r.exitCode, 1) << r.out;
     EXPECT_THAT(r.err,
                 HasSubstr("bench --scale: " + folder.string() + ": expected the plant generated for 1000 triangles ("));
@@ -542,7 +544,8 @@ std::vector<std::string> filesUnder(const fs::path& folder) {
 TEST(BenchSceneCli, ScaleDataFolderThatCannotBeWrittenIsNamedAndLeftUntrusted) {
     const test::TempFolder root("bench_cli_scale_unwritable");
     fs::permissions(root.path(), fs::perms::all);  // another user writes its files here
-    const std::vector<std::string> args = {"bench", "--scale", "1k", "--resolution", "32", "--frames", "4", "--data"};
+    const std::vector<std::string> args = {"bench", "--mono",   "--scale", "1k",    "--resolution",
+                                           "32",    "--frames", "4",       "--data"};
     std::vector<std::string> full = args;
     full.insert(full.end(), {(root / "full").string(), "--out", (root / "out-full").string()});
     const CliResult r = runThroughShell("trap '' XFSZ; ulimit -f 8;", "", full, root.path());
