@@ -300,6 +300,7 @@ int runScaleBench(const Args& args) {
     o.display = config::loadDisplayConfig(args.getOr("display", "cave4"));
     if (args.has("resolution"))
         o.display = gl::withResolution(o.display, static_cast<int>(args.integer("resolution", 1024, 16, 4096)));
+    applyMono(args, o.display);
     o.pathMetres = args.number("scale-metres", o.pathMetres, 1.0, 1e5);
     o.frames = args.integer("frames", o.frames, 1, 100000);
     o.bakeResolution = static_cast<int>(args.integer("bake-resolution", o.bakeResolution, 16, 16384));
