@@ -91,6 +91,7 @@ struct RunOptions {
     // --walls depth|flat (walls/depth_wall.h); depth: the bench's recommended walls mode on the
     // plant (docs/benchmarking.md, "The recommended walls mode")
     walls::WallKind wallKind = walls::WallKind::Depth;
+    bool keepSheets = false;  // --keep-sheets: depth walls keep their rubber sheets (to measure the cut)
     // --texture-format: storage of baked colour (walls/texture_blocks.h; keys the bake cache)
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
     std::optional<std::filesystem::path> cache;   // bake cache folder (default: the baker's)

@@ -10,7 +10,8 @@
 // depth texture (a back plane 4 m behind the wall with 8 x 8 blocks 1-3 m behind it) baked from
 // a sampling point 0.37 m from the eye, at the pass's default 64 steps at most and capped at
 // 16; cases named depth_512/*. Their ms_per_layer beside the flat cases' is the cost of
-// reprojection at 1024 x 1024.
+// reprojection at 1024 x 1024. depth_512/sheets draws the default pass (rubber sheets cut) and
+// one that keeps the sheets in turn within every iteration: cut_over_keep is the cut's cost.
 //
 // Fill cases (FillLayer/*, a profile of what a layer's pixels cost): the same full-screen layer
 // drawn by a one-texture shader with the formats and blending as variables: target
@@ -126,7 +127,8 @@ struct Fixture {
     display::gl::GlObject nearestMip = display::gl::createSampler(), linearMip = display::gl::createSampler(),
                           bilinear = display::gl::createSampler();
     walls::gl::DepthTexture depthBlocks = walls::gl::uploadDepthTexture(blockDepth(512));
-    walls::gl::DepthWallPass depthPass, depthPass16{walls::ReprojectSettings{16, 6}};
+    walls::gl::DepthWallPass depthPass, depthPass16{walls::ReprojectSettings{16, 6}},
+        depthPassKeep{walls::ReprojectSettings{.cutSheets = false}};
     display::OffAxisFrustum frustum;
     display::ScreenQuad wall;
 
@@ -167,7 +169,9 @@ struct Fixture {
     }
 };
 
-double frameMs(Fixture& f, int layers, GLuint texture, GLuint sampler, int texturesPerLayer, int depthSteps = 0) {
+// `keep`: depth walls that keep their rubber sheets (walls::ReprojectSettings::cutSheets false).
+double frameMs(Fixture& f, int layers, GLuint texture, GLuint sampler, int texturesPerLayer, int depthSteps = 0,
+               bool keep = false) {
     const auto start = std::chrono::steady_clock::now();
     f.clear();
     if (depthSteps > 0) {
@@ -184,7 +188,10 @@ double frameMs(Fixture& f, int layers, GLuint texture, GLuint sampler, int textu
             draws.push_back(d);
         }
         display::FrameStats stats;
-        (depthSteps == 16 ? f.depthPass16 : f.depthPass).draw(draws, f.frustum, glm::dmat4(1.0), sampler, stats);
+        (keep               ? f.depthPassKeep
+         : depthSteps == 16 ? f.depthPass16
+                            : f.depthPass)
+            .draw(draws, f.frustum, glm::dmat4(1.0), sampler, stats);
         glFinish();
         return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     }
@@ -263,6 +270,25 @@ void compressedFill(benchmark::State& state, Fixture& f) {
     state.counters["bc3_over_rgba8"] = perLayer[2] / perLayer[0];
 }
 
+// WallLayer/depth_512/sheets: the clear, the default depth pass (sheets cut) and one that keeps
+// them, in turn each iteration. Counters ms_per_layer_cut, ms_per_layer_keep and cut_over_keep.
+void sheetsCost(benchmark::State& state, Fixture& f) {
+    const int layers = static_cast<int>(state.range(0));
+    frameMs(f, layers, f.baked.id(), f.nearestMip.id(), 1, 64);  // untimed: shader variants compile
+    frameMs(f, layers, f.baked.id(), f.nearestMip.id(), 1, 64, true);
+    double clearMs = 0.0, cut = 0.0, keep = 0.0;
+    for (auto _ : state) {
+        clearMs += frameMs(f, 0, f.baked.id(), f.nearestMip.id(), 1);
+        cut += frameMs(f, layers, f.baked.id(), f.nearestMip.id(), 1, 64);
+        keep += frameMs(f, layers, f.baked.id(), f.nearestMip.id(), 1, 64, true);
+    }
+    const double n = static_cast<double>(state.iterations());
+    state.counters["clear_ms"] = clearMs / n;
+    state.counters["ms_per_layer_cut"] = (cut - clearMs) / n / layers;
+    state.counters["ms_per_layer_keep"] = (keep - clearMs) / n / layers;
+    state.counters["cut_over_keep"] = (cut - clearMs) / (keep - clearMs);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -295,6 +321,11 @@ int main(int argc, char** argv) {
             ->Iterations(10)
             ->UseRealTime()
             ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("WallLayer/depth_512/sheets", [&f](benchmark::State& s) { sheetsCost(s, f); })
+        ->Arg(4)
+        ->Iterations(10)
+        ->UseRealTime()
+        ->Unit(benchmark::kMillisecond);
     const std::pair<const char*, FillCase> fills[] = {{"srgb_target/blend/srgb_texture", {true, true, true}},
                                                       {"srgb_target/opaque/srgb_texture", {true, false, true}},
                                                       {"srgb_target/blend/unorm_texture", {true, true, false}},

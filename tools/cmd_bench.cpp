@@ -4,6 +4,7 @@
 #include "display/warp.h"
 #include "tools/args.h"
 #include "tools/commands.h"
+#include "tools/session_args.h"
 #ifdef CAVEWALL_HAVE_GL
 #include "app/bench/gnuplot.h"
 #include "app/bench/gl/driver.h"
@@ -23,7 +24,8 @@ namespace cavewall::tools {
 const char* const kBenchUsage =
     "usage: cavewall bench SCENE [--display D] [--path P] [--route walk|wall] [--out DIR] [--frames N] [--resolution "
     "N]\n"
-    "                      [--stereo mono|separate] [--quick] [--cache DIR] [--compare-every K] [--min-zone M] [--ppd "
+    "                      [--stereo mono|separate] [--mono] [--quick] [--cache DIR] [--compare-every K] [--min-zone "
+    "M] [--ppd "
     "N]\n"
     "                      [--bake-resolution N] [--alphas A,B,...] [--warp-alpha A]\n"
     "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
@@ -98,7 +100,8 @@ const char* const kBenchUsage =
     "         red) and flip_worst_N.png (FLIP map of mode N's worst image). Defaults:\n"
     "         display cave4, out bench-out, 120 frames at the display's own resolution (cave4:\n"
     "         1024 x 1024 per screen; --resolution N scales every screen so that its longer\n"
-    "         side is N pixels), the display's stereo mode (--stereo separate: one image per\n"
+    "         side is N pixels), the display's stereo mode (cave4 and cave6 are stereo; --mono\n"
+    "         or --stereo mono: one image per screen; --stereo separate: one image per\n"
     "         eye, every image metric per eye, and the stereo error: per eye and pixel the\n"
     "         disparity error in arc minutes of the eye's depth against full geometry's, mean\n"
     "         and share beyond 1 arcmin), images compared every 4 frames, min-zone 1 m, 10 pixels per degree, bake\n"
@@ -130,6 +133,8 @@ const char* const kBenchUsage =
     "         depth walls (planned with their own bound, baked with depth). --walls\n"
     "         flat,depth: flat walls as above and a fifth mode, walls-depth, the walls mode with\n"
     "         depth walls, drawn in turn with the others (depth / flat frame time in one run).\n"
+    "         --keep-sheets: depth walls keep the rubber sheets they cut by default (a near\n"
+    "         object's colour stretched over the gap beside it), to measure the cut.\n"
     "\n"
     "--stability  runs the stiff and extreme numerical cases (projection at eye distances\n"
     "             1e-9 ... 1e6 m, world offsets to 1e7 m, near/far ratios to 1e9 with reversed-Z,\n"
@@ -241,6 +246,7 @@ int runSceneBench(const Args& args) {
         else
             throw Error("bench: --stereo: expected mono or separate, got '" + *stereo + "'");
     }
+    applyMono(args, o.display);
     if (auto path = args.get("path")) o.tracker = std::filesystem::is_regular_file(*path) ? "replay:" + *path : *path;
     o.route = args.choice("route", app::kRouteNames, app::Route::Walk);
     o.frames = args.integer("frames", quick ? 24 : 120, 1, 100000);
@@ -255,6 +261,7 @@ int runSceneBench(const Args& args) {
     o.frameBudgetMs = args.number("frame-budget-ms", o.frameBudgetMs, 0.0, 1e5);
     o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);
     o.wallKind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
+    o.keepSheets = args.has("keep-sheets");
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.clusters = args.has(args.renamed("hierarchy", "clusters"));
     const std::string_view budgets = args.renamed("hierarchy-budgets", "cluster-budgets");
@@ -293,6 +300,7 @@ int runScaleBench(const Args& args) {
     o.display = config::loadDisplayConfig(args.getOr("display", "cave4"));
     if (args.has("resolution"))
         o.display = bench::gl::withResolution(o.display, static_cast<int>(args.integer("resolution", 1024, 16, 4096)));
+    applyMono(args, o.display);
     o.pathMetres = args.number("scale-metres", o.pathMetres, 1.0, 1e5);
     o.frames = args.integer("frames", o.frames, 1, 100000);
     o.bakeResolution = static_cast<int>(args.integer("bake-resolution", o.bakeResolution, 16, 16384));
@@ -329,11 +337,11 @@ int runScaleBench(const Args& args) {
 }  // namespace
 
 int runBench(const std::vector<std::string>& words) {
-    const Args args(words, {"stability", "quick", "hierarchy", "clusters", "on-demand"});
+    const Args args(words, {"stability", "quick", "hierarchy", "clusters", "on-demand", "keep-sheets", "mono"});
     // One flag list, packed.
     // clang-format off
     args.expectFlags({
-        "stability", "quick", "display", "path", "route", "out", "frames", "resolution", "stereo", "cache",
+        "stability", "quick", "keep-sheets", "mono", "display", "path", "route", "out", "frames", "resolution", "stereo", "cache",
         "compare-every", "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod",
         "triangle-budget", "frame-budget-ms", "lod-max", "walls", "hierarchy", "hierarchy-budgets", "clusters",
         "cluster-budgets", "compare-scene", "on-demand", "scale", "data", "scale-metres", "geometry-budget",

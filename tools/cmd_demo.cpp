@@ -7,6 +7,7 @@
 #include "tools/cmd_demo_compare.h"
 #include "tools/demo_front.h"
 #include "tools/commands.h"
+#include "tools/session_args.h"
 
 #include <cstdlib>
 #include <optional>
@@ -186,8 +187,8 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
 }  // namespace
 
 int runDemo(const std::vector<std::string>& words) {
-    const Args args(words, {});
-    args.expectFlags({"out", "frames", "resolution", "triangles", "lod", "texture-format", "walls"});
+    const Args args(words, {"mono"});
+    args.expectFlags({"out", "frames", "resolution", "triangles", "lod", "texture-format", "walls", "mono"});
     const std::filesystem::path out = args.getOr("out", "demo-out");
     const std::filesystem::path cache = cacheFolder();
     app::RunOptions o;
@@ -197,6 +198,7 @@ int runDemo(const std::vector<std::string>& words) {
         const int px = static_cast<int>(args.integer("resolution", 1024, 16, 4096));
         for (config::Screen& s : o.display.screens) s.resolution = {px, px};
     }
+    applyMono(args, o.display);
     o.tracker = "sim:walk?seed=1";
     o.frames = args.integer("frames", 240, 1, 1000000);
     o.guidePace = 5.0;
@@ -212,8 +214,9 @@ int runDemo(const std::vector<std::string>& words) {
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.wallKind = args.choice("walls", walls::kWallKindNames, o.wallKind);
     const std::string loadStart = loadAverage();
-    std::cout << "demo: cave4 at " << resolutionText(o.display) << ", " << kindName(o) << " at alpha "
-              << o.plan.alphaDeg << " deg; load average " << loadStart << "\n";
+    std::cout << "demo: cave4 at " << resolutionText(o.display) << ", stereo mode "
+              << config::toString(o.display.stereo) << ", " << kindName(o) << " at alpha " << o.plan.alphaDeg
+              << " deg; load average " << loadStart << "\n";
 
     auto run = [&](const char* folder, bool walls, double lodPixels, bool textures = true) {
         app::RunOptions r = o;

@@ -4,6 +4,7 @@
 #include "display/display.h"
 #include "tools/args.h"
 #include "tools/commands.h"
+#include "tools/session_args.h"
 
 #include <nlohmann/json.hpp>
 
@@ -14,19 +15,22 @@
 namespace cavewall::tools {
 
 const char* const kFrustumUsage =
-    "usage: cavewall frustum --display FILE|PRESET [--eye x,y,z] [--head-yaw DEG] [--json]\n"
+    "usage: cavewall frustum --display FILE|PRESET [--eye x,y,z] [--head-yaw DEG] [--mono] [--json]\n"
     "\n"
     "Prints, for every screen and eye, the off-axis view and projection matrices for a head at\n"
     "--eye (cave frame, metres; default: the display's default head position) turned by\n"
     "--head-yaw degrees about +Y (positive turns left). Matrices are column-major with\n"
     "clip = projection * view * cave, OpenGL NDC for x and y, reversed-Z depth in [0, 1].\n"
-    "Without --json a short table is printed.\n";
+    "--mono: one frustum per screen, from the head, whatever the display's stereo mode (cave4 and\n"
+    "cave6 are stereo). Without --json a short table is printed.\n";
 
 int runFrustum(const std::vector<std::string>& words) {
-    const Args args(words, {"json"});
-    args.expectFlags({"display", "eye", "head-yaw", "json"});
+    const Args args(words, {"json", "mono"});
+    args.expectFlags({"display", "eye", "head-yaw", "mono", "json"});
     args.expectNoPositional("frustum");
-    const display::Display disp(config::loadDisplayConfig(args.require("display")));
+    config::DisplayConfig config = config::loadDisplayConfig(args.require("display"));
+    applyMono(args, config);
+    const display::Display disp(std::move(config));
     display::HeadPose head = disp.defaultHead();
     if (auto eye = args.vec3("eye")) head.position = *eye;
     for (int a = 0; a < 3; ++a)

@@ -15,7 +15,7 @@ namespace cavewall::tools {
 
 const char* const kRenderUsage =
     "usage: cavewall render --display FILE|PRESET [--scene builtin|FILE] [--view-all] [--eye x,y,z]\n"
-    "                       [--head-yaw DEG] [--stereo MODE] [--window] [--texture-max PX]\n"
+    "                       [--head-yaw DEG] [--stereo MODE] [--mono] [--window] [--texture-max PX]\n"
     "                       [--texture-budget MB] --out DIR\n"
     "\n"
     "Renders one frame of --scene for a head at --eye (cave frame, metres; default: the display's\n"
@@ -28,6 +28,7 @@ const char* const kRenderUsage =
     "            scene is in view on the screen the head faces\n"
     "  --stereo  mono | separate | side-by-side | top-bottom | anaglyph | quad-buffer\n"
     "            (default: the display's; quad-buffer needs stereo windows)\n"
+    "  --mono    the same as --stereo mono (cave4 and cave6 are stereo)\n"
     "  --window  show the frame in one window per screen (needs $DISPLAY) and write what the\n"
     "            windows showed; without it rendering is headless (EGL)\n"
     "  --texture-max  reduce every texture at load to at most PX pixels a side (default 2048)\n"
@@ -71,11 +72,12 @@ std::unique_ptr<display::gl::Context> openContext(const display::Display& disp, 
 }  // namespace
 
 int runRender(const std::vector<std::string>& words) {
-    const Args args(words, {"window", "view-all"});
-    args.expectFlags({"display", "scene", "view-all", "eye", "head-yaw", "stereo", "window", "texture-max",
+    const Args args(words, {"window", "view-all", "mono"});
+    args.expectFlags({"display", "scene", "view-all", "eye", "head-yaw", "stereo", "mono", "window", "texture-max",
                       "texture-budget", "out"});
     config::DisplayConfig config = config::loadDisplayConfig(args.require("display"));
     if (auto stereo = args.get("stereo")) config.stereo = parseStereo(*stereo);
+    applyMono(args, config);
     const std::string out = args.require("out");
     const scenes::Scene scene = loadSceneSource(args.getOr("scene", "builtin"), parseTextureLimits(args));
     const display::Display disp(std::move(config));

@@ -115,7 +115,7 @@ void parseBakingAndClusters(const Args& args, app::RunOptions& o) {
 
 Args sessionArgs(const std::vector<std::string>& words) {
     return Args(words, {"headless", "window", "no-walls", "no-textures", "sync-paging", "cluster", "hierarchy",
-                        "clusters", "bake-on-demand", "bake-first", "save-window"});
+                        "clusters", "bake-on-demand", "bake-first", "save-window", "mono", "keep-sheets"});
 }
 
 std::vector<std::string_view> sessionFlags() {
@@ -128,8 +128,15 @@ std::vector<std::string_view> sessionFlags() {
         "triangle-budget", "frame-budget-ms", "lod-max", "walls", "hierarchy", "hierarchy-divisions",
         "hierarchy-res", "hierarchy-fade", "clusters", "cluster-divisions", "cluster-res", "cluster-fade",
         "bake-on-demand", "bake-first", "cache-budget", "bake-interleave", "bake-nice", "texture-format",
-        "texture-max", "texture-budget", "resolution"};
+        "texture-max", "texture-budget", "resolution", "mono", "keep-sheets"};
     // clang-format on
+}
+
+void applyMono(const Args& args, config::DisplayConfig& display) {
+    if (!args.has("mono")) return;
+    if (auto stereo = args.get("stereo"); stereo && *stereo != "mono")
+        throw Error("--mono and --stereo " + *stereo + ": expected one stereo mode, got both");
+    display.stereo = config::StereoMode::Mono;
 }
 
 scenes::TextureLimits parseTextureLimits(const Args& args) {
@@ -147,6 +154,8 @@ app::RunOptions parseSessionOptions(const Args& args, app::RunOptions o) {
     if (auto display = args.get("display")) o.display = config::loadDisplayConfig(*display);
     if (const std::optional<glm::ivec2> pixels = args.size("resolution", 1, 16384))
         for (config::Screen& screen : o.display.screens) screen.resolution = *pixels;
+    applyMono(args, o.display);
+    o.keepSheets = args.has("keep-sheets");
     o.tracker = args.getOr("tracker", o.tracker);
     o.frames = args.integer("frames", o.frames, 0, 10000000);
     o.out = args.getOr("out", o.out.string());

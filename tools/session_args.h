@@ -22,6 +22,11 @@ std::vector<std::string_view> sessionFlags();
 // --resolution WxH replaces every screen's resolution. Throws Error naming the flag.
 app::RunOptions parseSessionOptions(const Args& args, app::RunOptions defaults);
 
+// --mono (a switch: Args must list it among the switches): `display` drawn mono, one image per
+// screen from the head, whatever its stereo mode (the cave4 and cave6 presets are stereo).
+// Throws Error when --stereo names another mode. `run`, `view`, `bench`, `demo` and `render` take it.
+void applyMono(const Args& args, config::DisplayConfig& display);
+
 // --texture-max PX (default 2048, [1, 16384]) and --texture-budget MB (2^20 bytes, default 512,
 // [1, 1048576]): the sizes the scene's own textures (glTF images) are reduced to at load
 // (scenes/texture_budget.h). `render`, `run` and `view` take them.

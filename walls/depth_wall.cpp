@@ -181,12 +181,36 @@ TexelCrossing texelCrossing(const DepthImage& image, glm::dvec2 ta, glm::dvec2 t
     middle[first] = iHi[first];
     const std::array<double, 4> bounds{lo, c0, c1, hi};
     const std::array<glm::dvec2, 3> texels{iLo, middle, iHi};
+    float previous = kNoSurface;
     for (int k = 0; k < 3; ++k) {
         const float d = k == 2 ? depthHi : texelDepth(image, texels[k] + 0.5);
         const double sigma = std::max(bounds[k], hitSigma(d, ds));
-        if (sigma <= bounds[k + 1]) return {sigma, d};
+        if (sigma <= bounds[k + 1]) {
+            // Entered behind the surface: the ray came from the texel before, in front of it.
+            const bool entered = k > 0 && hitSigma(d, ds) < bounds[k] && texels[k - 1] != texels[k];
+            if (entered) return {sigma, d, glm::ivec2(texels[k - 1]), previous};
+            return {sigma, d};
+        }
+        previous = d;
     }
     return {hi, depthHi};
+}
+
+glm::dvec2 jumpRatio(double ds, double pitch) {
+    const double delta = pitch / ds;
+    if (!(delta < 0.5 * kMinGrazing)) return glm::dvec2(0.0);
+    const double rays = std::sin(kMinGrazing) / std::sin(kMinGrazing - delta);
+    return rays * glm::dvec2(std::cos(delta) + std::sin(delta) * pitch / ds, std::sin(delta) / ds);
+}
+
+bool depthJump(double dNear, double dFar, double ds, double pitch, double lateral) {
+    if (!std::isfinite(dFar)) return true;
+    const glm::dvec2 r = jumpRatio(ds, pitch);
+    return r.x > 0.0 && ds + dFar > (r.x + r.y * lateral) * (ds + dNear);
+}
+
+double jumpPitch(const WallFrame& f, int width, int height) {
+    return 1.5 * std::hypot(f.width / width, f.height / height);
 }
 
 glm::ivec2 marchDepthSize(int width, int height) {
@@ -278,7 +302,21 @@ ReprojectHit reproject(const DepthImage& image, const WallFrame& f, glm::dvec3 e
         }
     }
     const TexelCrossing c = hi > lo ? texelCrossing(image, ta, tb, ds, lo, hi, depthHi) : TexelCrossing{hi, depthHi};
-    return {true, at(c.sigma), depthAt(c.sigma), double(c.depth)};
+    ReprojectHit hit{true, at(c.sigma), depthAt(c.sigma), double(c.depth)};
+    const bool inside = c.from.x >= 0 && c.from.y >= 0 && c.from.x < image.width && c.from.y < image.height;
+    if (!inside || !settings.cutSheets) return hit;  // no sheet, or one from beyond the wall's edge
+    const double lateral = glm::length(hit.texture - glm::dvec2(sample));
+    if (!depthJump(c.depth, c.fromDepth, ds, jumpPitch(f, image.width, image.height), lateral)) return hit;
+    if (!std::isfinite(c.fromDepth)) return {};  // a sheet over emptiness: nothing is there
+    // The far side's colour: the ray's point a quarter texel (on its longer axis) before the
+    // entry, over a texel the ray passed in front of, next to the entry's (kFillBack).
+    const glm::dvec2 dir = tb - ta;
+    const double back = kFillBack / std::max(std::max(std::abs(dir.x), std::abs(dir.y)), 1e-9);
+    const glm::dvec2 t = ta + (c.sigma - back) * dir;
+    hit.texture = glm::dvec2(t.x / image.width * f.width, f.height - t.y / image.height * f.height);
+    hit.surface = texelDepth(image, t);
+    hit.filled = true;
+    return hit;
 }
 
 glm::dvec2 parallaxVector(glm::dvec3 eye, glm::dvec3 sample, glm::dvec2 t) {
@@ -362,21 +400,29 @@ MarchBound marchErrorBound(const DepthImage& full, const WallFrame& f, glm::dvec
         for (int bi = 0; bi < march.width; ++bi) {
             const double m = march.at(bi, bj);
             if (!std::isfinite(m)) continue;
-            // The deepest the ray can be on entering: the neighbour it comes from, missed.
-            double entry = m;
+            // The deepest the ray can be on entering: the neighbour it comes from, missed. And the
+            // nearest neighbour, whose sheet a cut fills with this texel's colour.
+            double entry = m, nearest = m;
             for (int dj = -1; dj <= 1; ++dj)
                 for (int di = -1; di <= 1; ++di) {
                     const int i = bi + di, j = bj + dj;
                     const bool inside = i >= 0 && j >= 0 && i < march.width && j < march.height;
                     const double a = inside ? march.at(i, j) : kNoSurface;
                     entry = std::max(entry, std::isfinite(a) ? a : range.y);
+                    if (inside && std::isfinite(a)) nearest = std::min(nearest, a);
                 }
-            // The shallowest ray depth the hit test accepts at m (its tolerance: hitSigma).
-            const double sg = hitSigma(m, ds), kEntry = kOf(entry, de), kHit = kOf(ds * sg / (1.0 - sg), de);
+            // The shallowest ray depth the hit test accepts at a depth (its tolerance: hitSigma).
+            auto kHitOf = [&](double d) {
+                const double sg = hitSigma(d, ds);
+                return kOf(ds * sg / (1.0 - sg), de);
+            };
+            const double kEntry = kOf(entry, de), kHit = kHitOf(nearest);
             for (int j = bj * b; j < bj * b + b; ++j)
                 for (int i = bi * b; i < bi * b + b; ++i) {
                     const double d = full.at(i, j);
                     if (!std::isfinite(d)) continue;
+                    // Below: a hit here (s >= m^-) or a filled cut from a nearer neighbour
+                    // (s >= its depth^-); nearest <= m covers both.
                     const double dk = std::max(kEntry - kOf(d, de), kOf(d, de) - kHit);
                     const glm::dvec2 t = texelCentre(f, full.width, full.height, i, j);
                     bound.depth = std::max(bound.depth, dk * glm::length(parallaxVector(eye, sample, t)) / de);

@@ -172,9 +172,10 @@ float depthFromBuffer(float bufferValue, const glm::dmat4& clipFromView, double 
 glm::dvec2 texelCentre(const WallFrame& frame, int width, int height, int i, int j);
 
 struct ReprojectSettings {
-    int maxSteps = 64;  // linear steps at most (the pass's uniform); fewer when fewer texels are crossed
-    int refine = 6;     // bisections at most before the exact crossing, while the last step
-                        // spans more than one texel on an axis (only when maxSteps capped the march)
+    int maxSteps = 64;      // linear steps at most (the pass's uniform); fewer when fewer texels are crossed
+    int refine = 6;         // bisections at most before the exact crossing, while the last step
+                            // spans more than one texel on an axis (only when maxSteps capped the march)
+    bool cutSheets = true;  // cut rubber sheets (below); false keeps every hit, for measuring the cut
 };
 
 // The march's hit test at sigma: the stored depth d is reached at or before sigma, with a
@@ -193,9 +194,14 @@ double hitSigma(double d, double samplingDistance);
 // texel). Depths are constant per texel, so the ray meets at most three texels between lo and hi,
 // and in each the first point that hits is the later of where it enters and hitSigma. Returns
 // that sigma and the texel's depth (hi and depthHi when rounding finds none in [lo, hi]).
+// `from` is the texel the ray came from when it entered the texel hit already behind its
+// surface (the hit is on the side of a depth step, where a rubber sheet would stretch), with its
+// depth `fromDepth`; (-1, -1) otherwise. It may lie outside the image (kNoSurface there).
 struct TexelCrossing {
     double sigma = 0.0;
     float depth = kNoSurface;
+    glm::ivec2 from{-1, -1};
+    float fromDepth = kNoSurface;
 };
 TexelCrossing texelCrossing(const DepthImage& image, glm::dvec2 ta, glm::dvec2 tb, double samplingDistance, double lo,
                             double hi, float depthHi);
@@ -206,10 +212,57 @@ struct ReprojectHit {
     double depth = 0.0;       // s at the hit, metres behind the plane (on the eye's ray)
     double surface = 0.0;     // the stored depth of the texel hit: S saw the point
                               // T + (surface / D_S)(T - S), whose colour the pixel shows
+    bool filled = false;      // a cut sheet: T lies just inside the far texel the ray came from
 };
 
+// ---- Cutting rubber sheets ----
+//
+// Where the ray enters a march texel B already behind B's surface, coming from a texel A that it
+// passed in front of (the crossing's `from`), the hit lies on the side of a depth step: a march
+// that keeps it stretches B's colour over whatever lies between the two surfaces (a rubber
+// sheet). If A and B can hold one surface (no depthJump), the hit stands: it is a staircase
+// step of that surface. Otherwise the sheet is cut:
+//  - A holds a surface: the pixel shows, at the ray's depth at the entry, the colour texel
+//    under the ray's point kFillBack texels (on the ray's longer texture axis) before the entry:
+//    a texel the ray passed in front of, next to B, so the far side's (its texels, stretched
+//    over the gap: the surface S saw next to what it could not see);
+//  - A is an empty texel inside the image: nothing is behind the sheet, and nothing is drawn;
+//  - A lies outside the image: content beyond the wall's edge is unknown, and the hit stands.
+// Bound: the entry's ray depth s lies behind B (s >= m_B^-), and the texel shown, a neighbour of
+// B, holds d_c >= s, so a filled pixel shows a colour texel c at a ray depth s >= m_B^- of a
+// neighbour B of c's march texel: the
+// per-image bound (marchErrorBound) counts k(d_c) - k(m_B^-); the planner's forms need only
+// that s and d_c lie in the span, which they do.
+
+// The smallest grazing angle (radians) at which one surface is assumed to be seen: two
+// neighbouring march texels whose depths differ by more than such a surface could give hold two
+// surfaces. A surface seen at a shallower angle is cut as if it were two; its fill shows a
+// neighbouring texel of the same surface, within the same bound.
+inline constexpr double kMinGrazing = 0.5235987755982988;  // 30 degrees
+// How far before a cut sheet's entry the fill is sampled, in march texels on the ray's longer
+// texture axis: well inside the texel before (float rounding), within one texel of the entry.
+inline constexpr double kFillBack = 0.25;
+
+// Whether march texels at depths dNear <= dFar (metres behind the plane; dFar may be
+// kNoSurface), whose colour texels' centres lie at most `pitch` metres apart on the wall and at
+// most `lateral` metres from S's foot on the wall, hold two surfaces (a depth jump). One plane
+// seen from S at a grazing angle of at least g through two rays delta apart (delta <=
+// pitch / D_S) lies at distances along the rays whose ratio is at most sin g / sin(g - delta)
+// (law of sines); distances from S's plane differ from those by at most the ratio of the rays'
+// cosines, cos delta + sin delta tan beta, tan beta <= (lateral + pitch) / D_S. A jump is a ratio
+// (D_S + dFar) / (D_S + dNear) beyond their product. False when delta >= g / 2 (the texels are
+// too coarse to tell); true for an empty dFar.
+bool depthJump(double dNear, double dFar, double samplingDistance, double pitch, double lateral);
+// The ratio depthJump compares with, as (a, b): a + b lateral; (0, 0) where it never cuts. The
+// depth wall pass computes it per layer and draw.
+glm::dvec2 jumpRatio(double samplingDistance, double pitch);
+// The `pitch` for march texels of an image of `frame` with width x height texels: 1.5 march
+// texel diagonals, the farthest two colour texels of neighbouring halved march texels can be.
+double jumpPitch(const WallFrame& frame, int width, int height);
+
 // The reference reprojection of one pixel: eye E and sampling point S in the wall frame (z < 0),
-// W the wall point (x, y) of the pixel. Exactly the shader's algorithm, in double.
+// W the wall point (x, y) of the pixel. Exactly the shader's algorithm, in double, with rubber
+// sheets cut (above).
 ReprojectHit reproject(const DepthImage& image, const WallFrame& frame, glm::dvec3 eye, glm::dvec3 samplingPoint,
                        glm::dvec2 wallPoint, glm::dvec2 range, const ReprojectSettings& settings = {});
 
@@ -264,6 +317,9 @@ DepthWallBound depthWallErrorBound(const DepthImage& image, const WallFrame& fra
 //   depth + texel,  depth = max over such (B, c) of  dk |v(T_c)| / D_E,
 //   dk = max(k(s_B) - k(d_c), k(d_c) - k(m_B^-)),  m_B^- = (m_B - 1e-5 D_S) / (1 + 1e-5),
 //   texel = 0.5 h max(1, D_E / D_S) / D_E, h the colour texel's diagonal.
+// A cut sheet's fill (reproject) shows a colour texel c at a ray depth of at least m_N^- of a
+// neighbour N of c's march texel, and d_c >= s: so the below term takes the nearest of m_B and
+// its eight neighbours' finite values in place of m_B.
 // Rigorous for marches whose last step crosses at most a texel per axis (maxSteps not
 // reached, or the bisections end within a texel); otherwise the planner's span bound still
 // holds. Pixels showing an empty colour texel (alpha 0) draw nothing and are not in the claim.

@@ -172,6 +172,7 @@ walkthrough::gl::WalkthroughOptions walkthroughOptions(const RunOptions& o, wall
     options.geometryBudgetMB = o.geometryBudgetMB;
     options.transition = o.transition;
     options.wallKind = o.wallKind;
+    options.depthMarch.cutSheets = !o.keepSheets;
     options.baker = baker;
     options.render.lodPixels = o.lodPixels;
     options.triangleBudget = o.triangleBudget;

@@ -34,8 +34,8 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     ASSERT_EQ(g.exitCode, 0) << g.err;
     const fs::path out = root / "out";
     fs::remove_all(out);
-    const CliResult r = runCavewall({"bench", (plant / "scene.json").string(), "--quick", "--frames", "12", "--out",
-                                     out.string(), "--cache", (root / "cache").string(), "--alphas", "20,30",
+    const CliResult r = runCavewall({"bench", (plant / "scene.json").string(), "--quick", "--mono", "--frames", "12",
+                                     "--out", out.string(), "--cache", (root / "cache").string(), "--alphas", "20,30",
                                      "--warp-alpha", "30", "--clusters", "--cluster-budgets", "0.5,200"});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_THAT(r.out, HasSubstr("| 1 | full |"));
@@ -213,6 +213,7 @@ TEST(BenchSceneCli, ComparesAnotherSceneAndBakesOnDemandFromAnEmptyCache) {
     fs::remove_all(out);
     fs::remove_all(cache);
     const CliResult r = runCavewall({"bench",
+                                     "--mono",
                                      (plant / "scene.json").string(),
                                      "--quick",
                                      "--frames",

@@ -32,7 +32,7 @@ namespace fs = std::filesystem;
 // over 10 m, 16-texel bakes, images compared every 2 frames; `sizes` and `extra` flags added.
 CliResult runTinyScale(const fs::path& root, const std::string& sizes, std::vector<std::string> extra = {}) {
     fs::remove_all(root / "data");
-    std::vector<std::string> args{"bench",
+    std::vector<std::string> args{"bench", "--mono",
                                   "--scale",
                                   sizes,
                                   "--resolution",
@@ -176,7 +176,7 @@ TEST(BenchSceneCli, ScaleRefusesAnotherModelInAPlantFolder) {
     const fs::path folder = root / "data" / "plant-1000";
     const CliResult g = runCavewall({"generate", "house", "--triangles", "2000", "--out", folder.string()});
     ASSERT_EQ(g.exitCode, 0) << g.err;
-    const CliResult r = runCavewall({"bench", "--scale", "1k", "--resolution", "32", "--frames", "4", "--data",
+    const CliResult r = runCavewall({"bench", "--mono", "--scale", "1k", "--resolution", "32", "--frames", "4", "--data",
                                      (root / "data").string(), "--out", (root / "out").string()});
     EXPECT_EQ(r.exitCode, 1) << r.out;
     EXPECT_THAT(r.err,
@@ -216,7 +216,7 @@ std::vector<std::string> filesUnder(const fs::path& folder) {
 TEST(BenchSceneCli, ScaleDataFolderThatCannotBeWrittenIsNamedAndLeftUntrusted) {
     const test::TempFolder root("bench_cli_scale_unwritable");
     fs::permissions(root.path(), fs::perms::all);  // another user writes its files here
-    const std::vector<std::string> args = {"bench", "--scale", "1k", "--resolution", "32", "--frames", "4", "--data"};
+    const std::vector<std::string> args = {"bench", "--mono", "--scale", "1k", "--resolution", "32", "--frames", "4", "--data"};
     std::vector<std::string> full = args;
     full.insert(full.end(), {(root / "full").string(), "--out", (root / "out-full").string()});
     const CliResult r = runThroughShell("trap '' XFSZ; ulimit -f 8;", "", full, root.path());

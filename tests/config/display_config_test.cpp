@@ -361,6 +361,10 @@ TEST(DisplayConfig, PresetsLoadWithTheDocumentedGeometry) {
         const glm::dvec3 n = glm::cross(s.lowerRight - s.lowerLeft, s.upperLeft - s.lowerLeft);
         EXPECT_GT(glm::dot(n, glm::dvec3(0, 1.5, 0) - s.lowerLeft), 0.0);
     }
+    // The CAVEs are stereo, one image per eye, at the eye separation of the stereo configs.
+    EXPECT_EQ(cave4.stereo, StereoMode::Separate);
+    EXPECT_EQ(cave4.viewer.eyeSeparation, 0.064);
+    EXPECT_EQ(loadDisplayConfig("cave6").stereo, StereoMode::Separate);
     EXPECT_EQ(loadDisplayConfig("cave6").screens.size(), 6u);
     EXPECT_EQ(loadDisplayConfig("powerwall").screens.size(), 4u);
     const DisplayConfig desk = loadDisplayConfig("desktop");

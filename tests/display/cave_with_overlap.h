@@ -6,7 +6,7 @@
 
 namespace cavewall::test {
 
-// cave4 with a 1.5 x 1 m screen "extra" in the front wall's plane, its left 0.5 m over the
+// cave4, mono, with a 1.5 x 1 m screen "extra" in the front wall's plane, its left 0.5 m over the
 // front wall from 1 to 2 m up: the two cover 0.5 x 1 = 0.5 m² twice.
 inline config::DisplayConfig caveWithOverlap() {
     config::DisplayConfig c = config::loadDisplayConfig("cave4");
@@ -16,6 +16,7 @@ inline config::DisplayConfig caveWithOverlap() {
     extra.lowerRight = {2.5, 1.0, -1.5};
     extra.upperLeft = {1.0, 2.0, -1.5};
     c.screens.push_back(extra);
+    c.stereo = config::StereoMode::Mono;  // the preset is stereo
     return c;
 }
 

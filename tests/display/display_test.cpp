@@ -6,8 +6,16 @@
 namespace cavewall::display {
 namespace {
 
+// cave4 drawn mono: one view per screen, from the head (the preset is stereo).
+config::DisplayConfig monoCave4() {
+    config::DisplayConfig c = config::loadDisplayConfig("cave4");
+    c.stereo = config::StereoMode::Mono;
+    return c;
+}
+
 TEST(Display, OneViewPerScreenAndEye) {
     config::DisplayConfig c = config::loadDisplayConfig("cave4");
+    c.stereo = config::StereoMode::Mono;  // the preset is stereo
     EXPECT_EQ(Display(c).views({}).size(), 4u);
     c.stereo = config::StereoMode::Separate;
     const Display stereo(c);
@@ -23,7 +31,7 @@ TEST(Display, NeighbouringScreensMeetAtTheSharedEdge) {
     // The front and left walls share the edge x = -1.5, z = -1.5. A point on that edge must land
     // on the left border of the front image and the right border of the left image, at the same
     // height, for any eye: that is a seamless corner.
-    const Display d(config::loadDisplayConfig("cave4"));
+    const Display d(monoCave4());
     const auto views = d.views({{0.7, 1.1, 0.9}, glm::dquat(1, 0, 0, 0)});
     for (double y : {0.1, 1.0, 2.9}) {
         const glm::dvec4 p(-1.5, y, -1.5, 1.0);
@@ -36,7 +44,7 @@ TEST(Display, NeighbouringScreensMeetAtTheSharedEdge) {
 }
 
 TEST(Display, FrustumJsonHasTheDocumentedFields) {
-    const Display d(config::loadDisplayConfig("cave4"));
+    const Display d(monoCave4());
     const nlohmann::json j = frustumJson(d, d.views(d.defaultHead()));
     ASSERT_EQ(j["screens"].size(), 4u);
     const auto& s = j["screens"][1];

@@ -17,6 +17,13 @@
 namespace cavewall::hierarchy {
 namespace {
 
+// cave4 drawn mono, one view per screen from the head (the preset is stereo).
+config::DisplayConfig monoCave4() {
+    config::DisplayConfig c = config::loadDisplayConfig("cave4");
+    c.stereo = config::StereoMode::Mono;
+    return c;
+}
+
 using render::testing::box;
 
 TEST(ClusterImpostor, FacesAreSeenFromOutsideAndCoverTheBox) {
@@ -94,7 +101,7 @@ ClusterModel twoObjects(double x) {
 }
 
 TEST(ClusterFrame, DrawsTheClusterAsATexturedBoxUnderASmallBudgetAndItsObjectsUnderALargeOne) {
-    const display::Display display(config::loadDisplayConfig("cave4"));
+    const display::Display display(monoCave4());
     const auto views = display.views(display.defaultHead());
     const ClusterModel m = twoObjects(-0.75);
     ASSERT_EQ(m.tree.root, 2);
@@ -115,7 +122,7 @@ TEST(ClusterFrame, DrawsTheClusterAsATexturedBoxUnderASmallBudgetAndItsObjectsUn
 }
 
 TEST(ClusterFrame, FullDetailIsTheMostAnySelectionCostsAndTheCheapestIsTheRootsBox) {
-    const display::Display display(config::loadDisplayConfig("cave4"));
+    const display::Display display(monoCave4());
     const auto views = display.views(display.defaultHead());
     const ClusterModel m = twoObjects(-0.75);
     // 0.01 + 1000 * 1e-4 and 0.01 + 3000 * 1e-4.
@@ -182,7 +189,7 @@ ClusterModel pairAt(double x0, double x1) {
 }
 
 TEST(ClusterFrame, ABoxCostsItsFillAndTheSelectionPaysIt) {
-    const display::Display display(config::loadDisplayConfig("cave4"));
+    const display::Display display(monoCave4());
     const auto views = display.views(display.defaultHead());
     const glm::dvec3 head = display.defaultHead().position;
     auto rootBox = [&](const ClusterModel& m, glm::dvec3 eye) {
@@ -222,7 +229,7 @@ TEST(ClusterFrame, ABackAndForthPathSwitchesAtMostOnce) {
     // between fitting its objects (0.42 ms) and not (0.3 ms) every other frame: the wish to
     // refine never lasts more than one frame, so the coherence counter (3 frames) keeps the box.
     // Then the budget stays large: the cluster is refined once, after 3 frames, and stays.
-    const display::Display display(config::loadDisplayConfig("cave4"));
+    const display::Display display(monoCave4());
     const ClusterModel m = twoObjects(-0.75);
     ClusterCoherence coherence(3);
     int switches = 0;
@@ -243,7 +250,7 @@ TEST(ClusterFrame, ABackAndForthPathSwitchesAtMostOnce) {
 }
 
 TEST(ClusterFrame, NothingOutsideEveryFrustumIsDrawn) {
-    const display::Display display(config::loadDisplayConfig("cave4"));
+    const display::Display display(monoCave4());
     // Above the head: cave4 has no ceiling, and its walls' frusta end below 2.6 m within 1 m of
     // the centre (top edges at 3 m, 1.5 m away, from an eye at 1.7 m).
     ClusterModel m = twoObjects(-0.75);

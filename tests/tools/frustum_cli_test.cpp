@@ -20,7 +20,7 @@ glm::dvec3 vec3From(const nlohmann::json& a) { return {a[0].get<double>(), a[1].
 
 TEST(FrustumCli, JsonMatricesMapEveryScreensCornersToNdcCorners) {
     const CliResult r =
-        runCavewall({"frustum", "--display", "cave4", "--eye", "0.4,1.5,-0.3", "--head-yaw", "30", "--json"});
+        runCavewall({"frustum", "--display", "cave4", "--mono", "--eye", "0.4,1.5,-0.3", "--head-yaw", "30", "--json"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     ASSERT_EQ(j["screens"].size(), 4u);
@@ -64,10 +64,26 @@ TEST(FrustumCli, BadInputGivesAClearErrorAndNonZeroExit) {
     }
 }
 
+// cave4 is a stereo CAVE: a frustum per screen and eye, the eyes 0.064 m apart; --mono gives one
+// per screen, from the head, and contradicting --stereo is an error.
+TEST(FrustumCli, Cave4IsStereoAndMonoIsOneFlagAway) {
+    const CliResult stereo = runCavewall({"frustum", "--display", "cave4", "--json"});
+    ASSERT_EQ(stereo.exitCode, 0) << stereo.err;
+    const auto s = nlohmann::json::parse(stereo.out)["screens"];
+    ASSERT_EQ(s.size(), 8u);
+    EXPECT_NEAR(glm::length(vec3From(s[0]["eyePosition"]) - vec3From(s[1]["eyePosition"])), 0.064, 1e-12);
+    const CliResult mono = runCavewall({"frustum", "--display", "cave4", "--mono", "--json"});
+    ASSERT_EQ(mono.exitCode, 0) << mono.err;
+    EXPECT_EQ(nlohmann::json::parse(mono.out)["screens"].size(), 4u);
+    const CliResult both = runCavewall({"bench", "x.json", "--mono", "--stereo", "separate"});
+    EXPECT_NE(both.exitCode, 0);
+    EXPECT_THAT(both.err, HasSubstr("--mono and --stereo separate: expected one stereo mode, got both"));
+}
+
 TEST(FrustumCli, EyeBehindAScreenIsGuardedAndFlagged) {
     // 2 m in front of the front wall is 0.5 m behind the back of cave4: fine for the front wall,
     // but z = -2 is behind the front wall itself.
-    const CliResult r = runCavewall({"frustum", "--display", "cave4", "--eye", "0,1.5,-2", "--json"});
+    const CliResult r = runCavewall({"frustum", "--display", "cave4", "--mono", "--eye", "0,1.5,-2", "--json"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["screens"][0]["eyeGuard"], "behind");

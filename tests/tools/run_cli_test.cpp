@@ -456,8 +456,8 @@ TEST(RunCli, DemoWritesTheReportWithAllFourRuns) {
     ::setenv("CAVEWALL_CACHE", (out / "cache").c_str(), 1);
     ::unsetenv("DISPLAY");
     ::unsetenv("WAYLAND_DISPLAY");
-    const CliResult r =
-        runCavewall({"demo", "--out", out.string(), "--frames", "6", "--resolution", "32", "--triangles", "20000"});
+    const CliResult r = runCavewall(
+        {"demo", "--mono", "--out", out.string(), "--frames", "6", "--resolution", "32", "--triangles", "20000"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("speed-up"));
     // Smaller than cave4's own 1024 x 1024 only when asked, and then printed with the figures.

@@ -50,7 +50,7 @@ TEST(WindowTiling, Cave4OnAFullHdMonitorGetsFourWindowsSideBySideAtItsOwnResolut
     const char* display = std::getenv("DISPLAY");
     ASSERT_TRUE(display && *display) << "no $DISPLAY (ctest runs this under xvfb-run)";
     const fs::path out = outputDir("window-tiling");
-    CliProcess view({"view", kRoom, "--display", "cave4", "--out", out.string(), "--save-frames", "every:2"});
+    CliProcess view({"view", kRoom, "--display", "cave4", "--mono", "--out", out.string(), "--save-frames", "every:2"});
     std::vector<Rect> windows;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
     while ((windows = sessionWindows()).size() < 4) {

@@ -23,6 +23,13 @@
 namespace cavewall::walkthrough {
 namespace {
 
+// cave4 drawn mono, one view per screen from the head (the preset is stereo).
+config::DisplayConfig monoCave4() {
+    config::DisplayConfig c = config::loadDisplayConfig("cave4");
+    c.stereo = config::StereoMode::Mono;
+    return c;
+}
+
 using namespace walls;
 
 scenes::Object object(const char* name, scenes::Role role, glm::dvec3 min, glm::dvec3 max, int cell) {
@@ -50,7 +57,7 @@ class FramePlannerTest : public ::testing::Test {
 protected:
     const scenes::SceneDescription description = testing::hall();
     const scenes::Scene scene = hallScene();
-    const display::Display display{config::loadDisplayConfig("cave4")};
+    const display::Display display{monoCave4()};
 
     WallSetup setup(double alphaDeg) const {
         PlanOptions options;

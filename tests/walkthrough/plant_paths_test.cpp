@@ -41,7 +41,9 @@ protected:
     // planner's promise covers 1.2-2 m) and turns once every 10 m, so every wall comes into
     // view of cave4's screens.
     Walked walk(const std::vector<glm::dvec3>& path) const {
-        const display::Display display(config::loadDisplayConfig("cave4"));
+        config::DisplayConfig cave4 = config::loadDisplayConfig("cave4");
+        cave4.stereo = config::StereoMode::Mono;  // one view per screen: the zones are the same per eye
+        const display::Display display(cave4);
         FramePlanner planner(generated->scene, generated->description, display, setup, Transition::Blend, 0.5);
         Walked w;
         double travelled = 0.0;

@@ -258,6 +258,70 @@ TEST(DepthWall, AtTheSamplingPointTheStepsCostNothing) {
     }
 }
 
+// One plane seen from S through neighbouring texels is no jump down to the grazing angle
+// kMinGrazing; a steeper change of depth, a card in front of a far plane, and a surface next to
+// an empty texel are; texels too coarse to tell a surface's slope are never a jump.
+TEST(DepthWall, DepthJumpTellsOneSurfaceFromTwo) {
+    const double ds = 3.0, pitch = 0.01;  // 1 cm texels 3 m from S: rays 1/300 rad apart
+    // A plane through the depth-1 point on S's axis, tilted so that S's axis meets it at a
+    // grazing angle g: the neighbouring ray, pitch further out on the wall, meets it at
+    // (D_S + d) = (D_S + 1) sin g / sin(g - delta) (law of sines), the farthest it can be.
+    auto planeFar = [&](double g) {
+        const double delta = std::atan(pitch / ds);
+        return (ds + 1.0) * std::sin(g) / std::sin(g - delta) - ds;
+    };
+    EXPECT_FALSE(depthJump(1.0, planeFar(kMinGrazing + 0.02), ds, pitch, 0.0));
+    EXPECT_FALSE(depthJump(1.0, planeFar(1.2), ds, pitch, 0.0));
+    EXPECT_TRUE(depthJump(1.0, planeFar(kMinGrazing - 0.1), ds, pitch, 0.0));
+    EXPECT_TRUE(depthJump(1.0, 4.0, ds, pitch, 0.0));  // the card and the back plane
+    EXPECT_TRUE(depthJump(1.0, kNoSurface, ds, pitch, 0.0));
+    EXPECT_FALSE(depthJump(1.0, 1.0, ds, pitch, 2.0));
+    EXPECT_FALSE(depthJump(1.0, 4.0, ds, 0.5 * kMinGrazing * ds, 0.0));  // rays too far apart to tell
+    EXPECT_DOUBLE_EQ(jumpPitch(wallFrame(kQuad), 400, 300), 1.5 * std::hypot(0.01, 0.01));
+}
+
+// The sheet is cut: from an eye 0.6 m to the side, the interval the card's right edge opens
+// (where the eye sees the back plane S did not) shows the back plane's texels, never the card's;
+// with the cut turned off, the whole interval shows the card. With the card alone (nothing behind
+// it) the interval draws nothing.
+TEST(DepthWall, CutSheetsShowTheFarSideInTheGap) {
+    const WallFrame f = wallFrame(kQuad);
+    const glm::dvec3 s(2.0, 1.5, -3.0), e(2.6, 1.5, -2.5);
+    const DepthImage image = bakeAnalytic(f, s, 512, 384);
+    DepthImage alone = image;
+    for (float& d : alone.depth)
+        if (d > 2.0f) d = kNoSurface;
+    const glm::dvec2 range = depthRange(image);
+    // Where S sees the card's right edge, and where the eye sees that edge on the card and on the
+    // back plane: the gap between.
+    const glm::dvec2 edge(2.0 + 0.5 * 3.0 / 4.0, 1.5);
+    const double a = reprojectedPoint(e, s, edge, 1.0).x, b = reprojectedPoint(e, s, edge, 4.0).x;
+    ASSERT_LT(a + 0.02, b);
+    ReprojectSettings keep;
+    keep.cutSheets = false;
+    int gap = 0, card = 0, filled = 0, drawnAlone = 0, sheet = 0;
+    for (double x = a + 0.01; x < b - 0.01; x += 0.001) {
+        const glm::dvec2 w(x, 1.5);
+        if (firstSurface(e, w).depth < 2.0) continue;  // the eye sees the card here
+        ++gap;
+        const ReprojectHit hit = reproject(image, f, e, s, w, range);
+        ASSERT_TRUE(hit.hit) << x;
+        card += hit.surface < 2.0;
+        filled += hit.filled;
+        drawnAlone += reproject(alone, f, e, s, w, depthRange(alone)).hit;
+        sheet += reproject(image, f, e, s, w, range, keep).surface < 2.0;
+    }
+    std::printf(
+        "cut sheet: %d gap samples, %d filled, %d show the card, %d drawn with the card alone; kept, %d show the "
+        "card\n",
+        gap, filled, card, drawnAlone, sheet);
+    EXPECT_GT(gap, 50);
+    EXPECT_EQ(card, 0);
+    EXPECT_GT(filled, gap / 2);
+    EXPECT_EQ(drawnAlone, 0);
+    EXPECT_EQ(sheet, gap);  // the sheet the cut removes (cutSheets false, for measuring)
+}
+
 // The march's skip level (depthBlockMinimum with dilate 1): from any point of a block (or beyond
 // the last whole block, clamped to it), every texel within kSkipSteps per axis is at least as far
 // as the block's value, and the value is reached (it is a minimum, not just a lower bound).

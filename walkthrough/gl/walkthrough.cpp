@@ -96,7 +96,7 @@ struct Walkthrough::WallRuntime {
         Textures(const walls::WallSetup& setup, const WalkthroughOptions& options)
             : pager(setup.folder, setup.manifest, options.textureBudgetMB, options.decoder),
               store(pager, static_cast<std::size_t>(options.uploadMBPerFrame * 1024 * 1024)) {
-            if (options.wallKind == walls::WallKind::Depth) depthPass = std::make_unique<walls::gl::DepthWallPass>();
+            if (options.wallKind == walls::WallKind::Depth) depthPass = std::make_unique<walls::gl::DepthWallPass>(options.depthMarch);
         }
         walls::TexturePager pager;
         walls::gl::TextureStore store;

@@ -90,6 +90,7 @@ struct WalkthroughOptions : walkthrough::WalkthroughSettings {
     // walls::gl::TextureStore); a texture without a depth file is drawn flat, one whose depth file is
     // bad fails like a bad colour file (the wall keeps its last texture or draws geometry).
     walls::WallKind wallKind = walls::WallKind::Flat;
+    walls::ReprojectSettings depthMarch;  // the depth wall pass's march (steps, cut sheets)
     // Baking on demand (walls/gl/background_baker.h; flat or depth walls, not with synchronous paging):
     // each frame tells the baker what it wants and hands what it baked (or evicted from the
     // disk) to the texture pager. Not owned; must outlive the walkthrough. Null: none.

@@ -7,6 +7,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 namespace cavewall::walls::gl {
@@ -47,8 +48,11 @@ in vec2 vUv;
 uniform vec4 uWeights;
 uniform vec3 uSample[4];     // per layer: x, y, distance in front of the plane
 uniform vec2 uRange[4];      // per layer: nearest and farthest baked depth
+uniform vec2 uJump[4];       // per layer: walls::jumpRatio
 uniform int uMaxSteps;
 uniform int uRefine;
+uniform bool uCutSheets;
+uniform vec2 uSize;          // wall width, height (metres)
 out vec4 fragColor;          // premultiplied, linear
 // The depth test runs before the shader, on the quad's own depth (gl::DepthWallPass header).
 layout(early_fragment_tests) in;
@@ -68,22 +72,36 @@ float hitSigma(float d, float dS) { return isinf(d) ? 2.0 : (d - 1e-5 * dS) / (d
 
 // The first crossing within the last step [lo, hi] (walls::texelCrossing): the step crosses at
 // most one texel edge per axis, so the ray meets at most three texels; in each the first point
-// that hits is the later of where it enters and hitSigma. dHi is hi's texel's depth.
-float crossing(sampler2D depth, ivec2 size, vec2 ta, vec2 tb, float dS, float lo, float hi, float dHi) {
+// that hits is the later of where it enters and hitSigma. dHi is hi's texel's depth. `from` is
+// the texel the ray came from when it entered the texel hit behind its surface, or (-1, -1).
+struct Crossing { float sigma; float depth; ivec2 from; float fromDepth; };
+Crossing crossing(sampler2D depth, ivec2 size, vec2 ta, vec2 tb, float dS, float lo, float hi, float dHi) {
     vec2 iLo = floor(mix(ta, tb, lo)), iHi = floor(mix(ta, tb, hi));
     vec2 edge = mix(vec2(hi), clamp((max(iLo, iHi) - ta) / (tb - ta), lo, hi), notEqual(iLo, iHi));
     bool xFirst = edge.x <= edge.y;
     float c0 = min(edge.x, edge.y), c1 = max(edge.x, edge.y);
     vec2 middle = xFirst ? vec2(iHi.x, iLo.y) : vec2(iLo.x, iHi.y);
-    float h0 = max(lo, hitSigma(depthAt(depth, size, iLo + 0.5), dS));
-    float h1 = max(c0, hitSigma(depthAt(depth, size, middle + 0.5), dS));
+    float d0 = depthAt(depth, size, iLo + 0.5), d1 = depthAt(depth, size, middle + 0.5);
+    float h0 = max(lo, hitSigma(d0, dS));
+    float h1 = max(c0, hitSigma(d1, dS));
     float h2 = max(c1, hitSigma(dHi, dS));
-    return h0 <= c0 ? h0 : h1 <= c1 ? h1 : min(h2, hi);
+    ivec2 none = ivec2(-1);
+    if (h0 <= c0) return Crossing(h0, d0, none, 0.0);
+    if (h1 <= c1) return Crossing(h1, d1, hitSigma(d1, dS) < c0 && middle != iLo ? ivec2(iLo) : none, d0);
+    if (h2 <= hi) return Crossing(h2, dHi, hitSigma(dHi, dS) < c1 && iHi != middle ? ivec2(middle) : none, d1);
+    return Crossing(hi, dHi, none, 0.0);
 }
 
-// The depth s behind the wall of the first hit of the eye's ray (ta -> tb, texel units) in
-// layer S's depth, or -1. Steps of at most one texel per axis.
-float march(sampler2D depth, sampler2D skip, vec3 S, vec2 range, vec2 ta, vec2 tb) {
+// walls::depthJump: whether march texels at depths dNear <= dFar hold two surfaces; J is
+// walls::jumpRatio of the layer.
+bool depthJump(float dNear, float dFar, float dS, vec2 J, float lateral) {
+    return isinf(dFar) || (J.x > 0.0 && dS + dFar > (J.x + J.y * lateral) * (dS + dNear));
+}
+
+// The first hit of the eye's ray (ta -> tb, texel units) in layer S's depth, with rubber sheets
+// cut (walls::reproject): x the depth s behind the wall, or -1 for none; y the hit's sigma; z 1
+// where a cut sheet is filled with the far side's colour (colourAt), else -1.
+vec4 march(sampler2D depth, sampler2D skip, vec3 S, vec2 range, vec2 J, vec2 ta, vec2 tb) {
     ivec2 size = textureSize(depth, 0);
     float s0 = range.x / (S.z + range.x), s1 = range.y / (S.z + range.y);
     vec2 span = abs(tb - ta) * (s1 - s0);
@@ -110,21 +128,37 @@ float march(sampler2D depth, sampler2D skip, vec3 S, vec2 range, vec2 ta, vec2 t
             lo = sg;
         }
     }
-    if (hi < 0.0) return -1.0;
+    if (hi < 0.0) return vec4(-1.0);
     // A step longer than a texel (uMaxSteps capped the march) is bisected first.
     for (int r = 0; r < uRefine && hi > lo && any(greaterThan(abs(floor(mix(ta, tb, hi)) - floor(mix(ta, tb, lo))), vec2(1.0))); ++r) {
         float mid = 0.5 * (lo + hi);
         float d = depthAt(depth, size, mix(ta, tb, mid));
         if (hits(d, S.z, mid)) { hi = mid; dHi = d; } else lo = mid;
     }
-    if (hi > lo) hi = crossing(depth, size, ta, tb, S.z, lo, hi, dHi);
-    return S.z * hi / (1.0 - hi);
+    Crossing c = Crossing(hi, dHi, ivec2(-1), 0.0);
+    if (hi > lo) c = crossing(depth, size, ta, tb, S.z, lo, hi, dHi);
+    vec4 result = vec4(S.z * c.sigma / (1.0 - c.sigma), c.sigma, -1.0, -1.0);
+    // A sheet from beyond the wall's edge (or none): the hit stands.
+    if (!uCutSheets || any(lessThan(c.from, ivec2(0))) || any(greaterThanEqual(c.from, size))) return result;
+    vec2 metres = uSize / vec2(size);
+    vec2 entry = mix(ta, tb, c.sigma) * metres;
+    float lateral = length(vec2(entry.x, uSize.y - entry.y) - S.xy);
+    if (!depthJump(c.depth, c.fromDepth, S.z, J, lateral)) return result;
+    if (isinf(c.fromDepth)) return vec4(-1.0);  // a sheet over emptiness: nothing is there
+    return vec4(result.xy, 1.0, 0.0);
 }
 
 // Layer S's colour where the eye's ray is at depth s behind the wall: its texture at the point
 // through which S sees the ray there (sigma = s / (D_S + s)), ta -> tb in texel units of `depth`.
-vec4 colourAt(sampler2D colour, sampler2D depth, vec3 S, float s, vec2 ta, vec2 tb, vec2 gx, vec2 gy) {
-    return textureGrad(colour, mix(ta, tb, s / (S.z + s)) / vec2(textureSize(depth, 0)), gx, gy);
+// Where the march cut a sheet (`fill`, walls::reproject), the colour texel under the ray's point
+// FILL_BACK depth texels (on the ray's longer axis) before that, at its centre. One sample either
+// way (llvmpipe would run both of two).
+vec4 colourAt(sampler2D colour, sampler2D depth, vec3 S, float s, vec2 ta, vec2 tb, bool fill, vec2 gx, vec2 gy) {
+    vec2 dir = abs(tb - ta);
+    float back = fill ? FILL_BACK / max(max(dir.x, dir.y), 1e-9) : 0.0;
+    vec2 uv = mix(ta, tb, s / (S.z + s) - back) / vec2(textureSize(depth, 0));
+    vec2 size = vec2(textureSize(colour, 0));
+    return textureGrad(colour, fill ? (floor(uv * size) + 0.5) / size : uv, gx, gy);
 }
 )";
 
@@ -153,24 +187,33 @@ std::string vertexSource(int layers) {
     return s + "}\n";
 }
 
+// A double as a GLSL literal, to all its digits (the threshold matches the reference's).
+std::string exactFloat(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
 std::string fragmentSource(int layers) {
-    std::string s = "#version 450 core\n#define SKIP_BLOCK " + std::to_string(walls::kSkipBlock) +
-                    "\n#define SKIP_STEPS " + std::to_string(walls::kSkipSteps) + "\n" + samplers(layers, true) +
-                    "in vec4 vRay[" + std::to_string(layers) + "];\n";
+    std::string s = "#version 450 core\n#define MIN_GRAZING " + exactFloat(walls::kMinGrazing) +
+                    "\n#define FILL_BACK " + exactFloat(walls::kFillBack) + "\n#define SKIP_BLOCK " +
+                    std::to_string(walls::kSkipBlock) + "\n#define SKIP_STEPS " + std::to_string(walls::kSkipSteps) +
+                    "\n" + samplers(layers, true) + "in vec4 vRay[" + std::to_string(layers) + "];\n";
     s += kMarch;
     // One march finds the ray's depth s (the heaviest layer's first hit; the next layer's when
     // it has none), and every layer shows its texture where the ray is at s.
-    s += "void main() {\n    vec2 gx = dFdx(vUv), gy = dFdy(vUv);\n    float s = -1.0;\n";
+    // Where the march cut a sheet, every layer shows its far side's colour at s (colourAt).
+    s += "void main() {\n    vec2 gx = dFdx(vUv), gy = dFdy(vUv);\n    vec4 h = vec4(-1.0);\n";
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
-        s += "    if (s < 0.0) s = march(uDepth" + n + ", uSkip" + n + ", uSample[" + n + "], uRange[" + n +
-             "], vRay[" + n + "].xy, vRay[" + n + "].zw);\n";
+        s += "    if (h.x < 0.0) h = march(uDepth" + n + ", uSkip" + n + ", uSample[" + n + "], uRange[" + n +
+             "], uJump[" + n + "], vRay[" + n + "].xy, vRay[" + n + "].zw);\n";
     }
-    s += "    vec4 c = vec4(0.0);\n    if (s >= 0.0) c = vec4(0.0)";
+    s += "    float s = h.x;\n    vec4 c = vec4(0.0);\n    if (s >= 0.0) c = vec4(0.0)";
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
         s += "\n        + uWeights[" + n + "] * colourAt(uColour" + n + ", uDepth" + n + ", uSample[" + n +
-             "], s, vRay[" + n + "].xy, vRay[" + n + "].zw, gx, gy)";
+             "], s, vRay[" + n + "].xy, vRay[" + n + "].zw, h.z > 0.0, gx, gy)";
     }
     // Where no layer hits there is nothing behind the wall: the sum is 0 and leaves the pixel
     // as it was (premultiplied blending, no depth writes).
@@ -199,6 +242,13 @@ std::string depthFragmentSource(int layers) {
 }  // namespace
 
 namespace {
+
+// A texture's level-0 width or height (`which`), at least 1.
+int textureSide(GLuint texture, GLenum which) {
+    GLint side = 0;
+    glGetTextureLevelParameteriv(texture, 0, which, &side);
+    return std::max(side, 1);
+}
 
 // One level of GL_R32F, read with texelFetch.
 display::gl::GlObject uploadFloats(const walls::DepthImage& image) {
@@ -249,8 +299,10 @@ DepthWallPass::Program DepthWallPass::build(int layers, const std::string& fragm
     p.size = display::gl::uniformLocation(id, kName, "uSize");
     p.samples = display::gl::uniformLocation(id, kName, "uSample");
     p.ranges = display::gl::uniformLocation(id, kName, "uRange");
+    p.jumps = display::gl::uniformLocation(id, kName, "uJump");
     p.maxSteps = display::gl::uniformLocation(id, kName, "uMaxSteps");
     p.refine = display::gl::uniformLocation(id, kName, "uRefine");
+    p.cutSheets = display::gl::uniformLocation(id, kName, "uCutSheets");
     p.rect = display::gl::uniformLocation(id, kName, "uRect");
     return p;
 }
@@ -282,7 +334,7 @@ void DepthWallPass::drawWith(const Programs& programs, const std::vector<DepthWa
         if (!(eye.z < 0.0)) continue;  // the eye is behind (or on) the wall: this side is not seen
         glm::vec4 weights(0.0f);
         glm::vec3 samples[walls::kMaxWallTextures];
-        glm::vec2 ranges[walls::kMaxWallTextures];
+        glm::vec2 ranges[walls::kMaxWallTextures], jumps[walls::kMaxWallTextures];
         int used = 0;
         // The union of the layers' draw rectangles (walls::depthDrawRect), each grown by a depth
         // texel of its own, far more than the float march's rounding.
@@ -297,6 +349,9 @@ void DepthWallPass::drawWith(const Programs& programs, const std::vector<DepthWa
             weights[used] = l.weight;
             samples[used] = glm::vec3(s.x, s.y, -s.z);
             ranges[used] = glm::vec2(l.range);
+            jumps[used] =
+                glm::vec2(walls::jumpRatio(-s.z, walls::jumpPitch(frame, textureSide(l.depth, GL_TEXTURE_WIDTH),
+                                                                  textureSide(l.depth, GL_TEXTURE_HEIGHT))));
             glBindTextureUnit(2 * used, l.colour);
             glBindSampler(2 * used, sampler);
             glBindTextureUnit(2 * used + 1, l.depth);
@@ -318,8 +373,10 @@ void DepthWallPass::drawWith(const Programs& programs, const std::vector<DepthWa
         glUniform2f(p.size, float(frame.width), float(frame.height));
         glUniform3fv(p.samples, used, glm::value_ptr(samples[0]));
         glUniform2fv(p.ranges, used, glm::value_ptr(ranges[0]));
+        glUniform2fv(p.jumps, used, glm::value_ptr(jumps[0]));
         glUniform1i(p.maxSteps, _settings.maxSteps);
         glUniform1i(p.refine, _settings.refine);
+        glUniform1i(p.cutSheets, _settings.cutSheets ? 1 : 0);
         glUniform4f(p.rect, float(rect.lo.x), float(rect.lo.y), float(rect.hi.x), float(rect.hi.y));
         glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
         ++stats.drawCalls;

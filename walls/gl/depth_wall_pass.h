@@ -14,7 +14,10 @@
 // (walls::texelCrossing: depths are constant per texel, so at most three texels, two fetches;
 // `refine` (6) bisections come first only where maxSteps left a step longer than a texel);
 // colour is sampled at the hit with the flat quad's gradients (the MIP level the flat wall
-// would use, without seams at depth steps). The march reads the bake's halved depths
+// would use, without seams at depth steps). Rubber sheets are cut: a hit where the ray entered
+// a texel behind its surface from a texel across a depth jump (walls::depthJump) shows the far
+// side's colour texel just before the entry instead, or nothing when the far side is empty
+// (walls::reproject, "Cutting rubber sheets"). The march reads the bake's halved depths
 // (walls::marchDepths). walls::reproject is the same algorithm in double and is what the unit
 // tests check against analytic truth.
 //
@@ -32,16 +35,17 @@
 // layer's content, for this view's eye, their union, grown by a texel). The layers share one
 // march: the heaviest layer's (the plan lists weights largest first) finds the depth s of the
 // ray's first hit, the next layer's only where it finds none, and every layer shows its texture
-// where the ray is at s behind the wall. Each layer stays within its own bound: both forms of
+// where the ray is at s behind the wall (where the march cut a sheet, every layer shows its
+// colour texel just before its own ray point at s). Each layer stays within its own bound: both forms of
 // walls::depthEyeBound's proof use only that the ray depth s and the depth of the surface the
 // texel shows lie in the wall's span, not that s is this layer's own hit, and every layer of a
 // wall shares its span. Images change where the layers disagree about depth (what a blend
 // mixes anyway).
 //
 // Why a march rather than a displaced grid mesh (textured depth meshes): it needs no mesh per
-// texture (a depth texture of the same size as the colour, paged the same way), it has no skins
-// to cut (the march never hits an empty texel, and disocclusions show a bounded stretch of the
-// step's near side, which walls::depthWallErrorBound predicts), and its cost is per pixel,
+// texture (a depth texture of the same size as the colour, paged the same way), its sheets are
+// cut per pixel where the depths jump (disocclusions show a bounded stretch of the step's far
+// side, which walls::depthWallErrorBound predicts), and its cost is per pixel,
 // bounded by maxSteps, not per texel. The exact crossing, the skip blocks, the halved depths,
 // the shared march, the early depth test and the draw rectangles each make the pass faster;
 // depths stay 32-bit floats because half floats draw no faster.
@@ -113,7 +117,7 @@ private:
     struct Program {
         display::gl::GlObject program;
         GLint corners = -1, projection = -1, weights = -1, eye = -1, size = -1, samples = -1, ranges = -1,
-              maxSteps = -1, refine = -1, rect = -1;
+              maxSteps = -1, refine = -1, cutSheets = -1, jumps = -1, rect = -1;
     };
     using Programs = std::array<Program, walls::kMaxWallTextures>;  // [n - 1] marches n layers
     static Program build(int layers, const std::string& fragment);

@@ -537,6 +537,10 @@ BenchReport runBenchmark(const BenchOptions& o) {
     bench::EyePath path = bench::recordEyePath(scene, description, o.display, o.tracker, o.frames);
     if (o.route == app::Route::Wall)
         path.description += " (--route wall: the scene's wallPath, which hugs the virtual walls, as its walkPath)";
+    const auto& first = o.display.screens.front();
+    say(o, "bench: " + o.display.name + " at " + std::to_string(first.resolution.x) + " x " +
+               std::to_string(first.resolution.y) + " per screen, stereo mode " +
+               std::string(config::toString(o.display.stereo)));
     const auto context = display::gl::createHeadlessContext();
     BenchReport report;
     report.header = headerLines(o, scene, *context, path);
@@ -558,7 +562,8 @@ BenchReport runBenchmark(const BenchOptions& o) {
                         o.compareEvery,
                         o.lodMaxPixels,
                         o.wallKind,
-                        o.clusters ? (o.cache ? *o.cache : walls::gl::defaultCacheFolder()) : std::filesystem::path()};
+                        o.clusters ? (o.cache ? *o.cache : walls::gl::defaultCacheFolder()) : std::filesystem::path(),
+                        walls::ReprojectSettings{.cutSheets = !o.keepSheets}};
 
     const std::vector<BakedWalls> baked = bakeOwnWalls(o, scene, description, *context, report);
     const std::vector<std::vector<BakedWalls>> otherBaked = bakeCompareScenes(o, others, description, *context, report);

@@ -74,6 +74,7 @@ struct BenchOptions {
     double frameBudgetMs = 1000.0 / 60.0;              // the frame-time modes' target; 0: none
     double lodMaxPixels = 8.0;                         // the most a budget may raise the tolerance to
     walls::WallKind wallKind = walls::WallKind::Flat;  // --walls: flat or depth walls (bake and draw)
+    bool keepSheets = false;  // --keep-sheets: depth walls keep their rubber sheets (to measure the cut)
     // --texture-format: storage of the baked colour (walls/texture_blocks.h), disk and GPU
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
     std::optional<std::filesystem::path> cache;  // bake cache (default: the baker's)

@@ -218,6 +218,8 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         options.triangleBudget = mode.triangleBudget;
         options.lodMaxPixels = c.lodMaxPixels;
         options.wallKind = c.wallKind;
+        options.depthMarch = c.depthMarch;
+        options.depthMarch = c.depthMarch;
         options.clusters.enabled = run.clusters;
         options.clusters.cache = c.clusterCache;
         if (mode.frameBudgetMs > 0.0) options.clusters.budgetMs = mode.frameBudgetMs;
@@ -264,6 +266,7 @@ double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, walls::gl::
     walkthrough::gl::WalkthroughOptions options;  // background paging at `cavewall run`'s defaults
     options.baker = &baker;
     options.wallKind = c.wallKind;
+    options.depthMarch = c.depthMarch;
     walkthrough::gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
     if (c.path.frames.empty()) return display::msSince(start) / 1000.0;
     walkthrough.renderFrame(c.path.frames.front());
@@ -289,6 +292,7 @@ NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::Wall
     options.triangleBudget = mode.triangleBudget;
     options.lodMaxPixels = c.lodMaxPixels;
     options.wallKind = c.wallKind;
+    options.depthMarch = c.depthMarch;
     walkthrough::gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
     const walkthrough::FrameInput fixed = c.path.frames.at(static_cast<std::size_t>(frameIndex));
     for (const walkthrough::FrameInput& in : c.path.frames) walkthrough.renderFrame(in);

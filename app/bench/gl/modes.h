@@ -93,6 +93,7 @@ struct ModeContext {
     double lodMaxPixels = 8.0;                         // WalkthroughOptions::lodMaxPixels of the budgeted modes
     walls::WallKind wallKind = walls::WallKind::Flat;  // WalkthroughOptions::wallKind of the walls modes
     std::filesystem::path clusterCache;                // ClusterOptions::cache of the clusters modes
+    walls::ReprojectSettings depthMarch;               // WalkthroughOptions::depthMarch
 };
 
 // One walkthrough mode of a runWalkthroughModes call.

@@ -90,7 +90,7 @@ const SmallPlant& twoCells() {
 display::Display testDisplay(int pixels, bool stereo, double eyeSeparation) {
     config::DisplayConfig c = config::loadDisplayConfig("cave4");
     for (config::Screen& s : c.screens) s.resolution = {pixels, pixels};
-    if (stereo) c.stereo = config::StereoMode::Separate;
+    c.stereo = stereo ? config::StereoMode::Separate : config::StereoMode::Mono;  // cave4 is stereo
     c.viewer.eyeSeparation = eyeSeparation;
     return display::Display(c);
 }

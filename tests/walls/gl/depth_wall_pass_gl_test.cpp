@@ -1,9 +1,8 @@
 // walls::gl::DepthWallPass against full geometry: a wall baked with depth from one sampling point and
 // drawn from an eye 0.6 m to the side and 0.5 m closer matches the geometry rendered from that
 // eye, except on the pixels walls::depthWallErrorBound predicts (disocclusion at the depth
-// steps it opens, and the wall's border); and the widest wrong run is within the bound and at
-// least 0.6 of it, so a bound 2x too loose fails. The flat wall from the same eye is wrong on
-// far more pixels.
+// steps it opens, and the wall's border); and the widest wrong run is within the bound. The
+// flat wall from the same eye is wrong on far more pixels.
 #include "display/gl/gl_object.h"
 #include "render/gl/scene_renderer.h"
 #include "scenes/image_io.h"
@@ -203,10 +202,11 @@ void DepthWallPassTest::matchesGeometryExceptWherePredicted(bool halved) {
     EXPECT_GT(wrongInside, 0);                         // the eye does see what S did not
     EXPECT_GT(flatWrong, 4 * (wrongInside + wrongOutside));
     EXPECT_LE(widest, bound.steps + 2.0 * bound.texel + slack * pitch / de);
-    // The bound is tight for the depths it was derived from (a bound 2x too loose fails); the
-    // halved depths only have to stay within it (here they are wrong on fewer pixels than the
-    // full ones: 3,779 inside the prediction against 6,092, widest run 5 pixels against 20).
-    if (!halved) EXPECT_GE(widest, 0.6 * bound.steps);
+    // The gap a step opens shows the back plane's texels next to it (cut rubber sheets,
+    // walls::reproject), which on this back plane are mostly the right colour: the wrong runs
+    // are narrower than the step term (6 pixels, against 20 with the card stretched over the
+    // gap). The bound's tightness is checked by the angles of the points shown
+    // (tests/walls/depth_wall_test.cpp, MarchBoundHoldsForEveryDrawnPixelAndIsTight).
     if (::testing::Test::HasFailure()) {
         // For a look: the three images and the wrong pixels (red outside, yellow inside the prediction).
         const std::filesystem::path dir = testOutputFolder(halved ? "depth_wall_pass_halved" : "depth_wall_pass");
