@@ -72,6 +72,10 @@ struct SceneDescription {
     double eyeHeight = 1.7;                // metres above the floor for a walking viewer
     glm::dvec2 headHeightRange{1.2, 2.0};  // absolute head heights (y) the walls must serve
     std::vector<glm::dvec3> walkPath;      // default walk path (eye positions, world frame)
+    // Indices into walkPath where a new piece of the walk starts: nothing is walked from the
+    // point before to this one (storeys joined by no stair the geometry shows). Increasing, in
+    // (0, walkPath.size()). Optional.
+    std::vector<int> walkBreaks;
     // A second path (same frame) that hugs the virtual walls, within about 0.3 m of them and
     // across their blend strips: where the walls' bound is hardest to keep. Optional.
     std::vector<glm::dvec3> wallPath;

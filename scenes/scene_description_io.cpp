@@ -22,6 +22,7 @@
 //              "lowerLeft": [x,y,z], "lowerRight": [x,y,z], "upperLeft": [x,y,z]}],
 //   "realWalls": [{"name": "w1", "lowerLeft": ..., "lowerRight": ..., "upperLeft": ...}],
 //   "walkPath": [[x,y,z], ...]                eye positions in the world frame
+//   "walkBreaks": [i, ...]                    optional: walkPath indices that start a new piece
 //   "wallPath": [[x,y,z], ...]                optional: a second path hugging the virtual walls
 // }
 // The placement maps file coordinates to the world: world = matrix * upAxis * metresPerUnit * p.
@@ -35,6 +36,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <map>
 
 namespace cavewall::scenes {
@@ -138,7 +140,7 @@ SceneDescription parseSceneDescription(std::string_view jsonText, const std::str
                                        const std::filesystem::path& folder) {
     const auto doc = config::JsonDocument::fromText(jsonText, source);
     const JsonNode root = doc.root();
-    root.expectKeys({"name", "models", "viewer", "cells", "walls", "realWalls", "walkPath", "wallPath"});
+    root.expectKeys({"name", "models", "viewer", "cells", "walls", "realWalls", "walkPath", "walkBreaks", "wallPath"});
     SceneDescription d;
     d.folder = folder;
     d.name = root.has("name") ? root.at("name").string() : folder.lexically_normal().filename().string();
@@ -164,6 +166,8 @@ SceneDescription parseSceneDescription(std::string_view jsonText, const std::str
         }
     if (auto v = root.find("walkPath"))
         for (const JsonNode& p : v->items()) d.walkPath.push_back(p.vec3());
+    if (auto v = root.find("walkBreaks"))
+        for (const JsonNode& i : v->items()) d.walkBreaks.push_back(i.integer(1, std::numeric_limits<int>::max()));
     if (auto v = root.find("wallPath"))
         for (const JsonNode& p : v->items()) d.wallPath.push_back(p.vec3());
     return d;
@@ -267,7 +271,8 @@ std::string writeSceneDescription(const SceneDescription& d) {
         j["realWalls"].push_back(quadJson(w.name, w.lowerLeft, w.lowerRight, w.upperLeft));
     j["walkPath"] = nlohmann::json::array();
     for (glm::dvec3 p : d.walkPath) j["walkPath"].push_back(vecJson(p));
-    if (!d.wallPath.empty()) {  // optional: scenes without one keep their bytes
+    if (!d.walkBreaks.empty()) j["walkBreaks"] = d.walkBreaks;  // optional, as wallPath
+    if (!d.wallPath.empty()) {                                  // optional: scenes without one keep their bytes
         j["wallPath"] = nlohmann::json::array();
         for (glm::dvec3 p : d.wallPath) j["wallPath"].push_back(vecJson(p));
     }

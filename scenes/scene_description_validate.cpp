@@ -177,6 +177,13 @@ void validateSceneDescription(const SceneDescription& d, const std::string& sour
     if (!(d.eyeHeight > 0.0))
         c.fail("viewer.eyeHeight", "expected a positive height, got " + formatNumber(d.eyeHeight));
     if (!(d.headHeightRange.x < d.headHeightRange.y)) c.fail("viewer.headHeightRange", "expected low < high");
+    for (std::size_t i = 0; i < d.walkBreaks.size(); ++i) {
+        const int at = d.walkBreaks[i], after = i > 0 ? d.walkBreaks[i - 1] : 0;
+        if (at <= after || at >= static_cast<int>(d.walkPath.size()))
+            c.fail("walkBreaks[" + std::to_string(i) + "]",
+                   "expected an index of walkPath above " + std::to_string(after) + " and below " +
+                       std::to_string(d.walkPath.size()) + ", got " + std::to_string(at));
+    }
     if (d.cells.empty()) return;
     for (const auto& [name, path] : {std::pair{"walkPath", &d.walkPath}, std::pair{"wallPath", &d.wallPath}})
         for (std::size_t i = 0; i < path->size(); ++i)

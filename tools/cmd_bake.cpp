@@ -139,8 +139,9 @@ int runBake(const std::vector<std::string>& words) {
     for (const std::string& w : result.warnings) std::cerr << "cavewall: warning: " << w << "\n";
     const int total = static_cast<int>(result.manifest.textures.size());
     std::printf(
-        "bake: %d textures: %d baked, %d reused (%d from earlier bakes) in %s; wrote %.1f MB, folder holds %.1f MB\n",
-        total, result.baked, result.reused, result.linked, formatSeconds(result.seconds).c_str(),
+        "bake: %d textures: %d baked, %d reused (%d from earlier bakes, %d sharing a texture of the same key) in %s; "
+        "wrote %.1f MB, folder holds %.1f MB\n",
+        total, result.baked, result.reused, result.linked, result.shared, formatSeconds(result.seconds).c_str(),
         megabytes(result.bytesWritten), megabytes(result.totalBytes));
     const walls::gl::BakeTimes& t = result.times;
     if (result.baked > 0)

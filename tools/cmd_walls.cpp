@@ -95,10 +95,14 @@ void printStoreys(const walls::AutoWallsResult& result) {
         std::printf("storey %zu floor plan: %d wall elements, %d rooms (%.0f m²), %d doorways, %d exits\n", i,
                     s.wallElements, s.rooms, s.roomArea, s.doorways, s.exits);
     }
-    if (n > 1 && result.stairs.empty()) std::printf("stairs: none found (the walk path rises straight up)\n");
+    if (n > 1 && result.stairs.empty())
+        std::printf("stairs: none found (the walk path walks each storey on its own)\n");
     for (const walls::Stair& s : result.stairs)
-        std::printf("stair: storey %d to %d at x [%.0f, %.0f] z [%.0f, %.0f] m, from (%.1f, %.1f) to (%.1f, %.1f)\n",
-                    s.from, s.from + 1, s.lo.x, s.hi.x, s.lo.y, s.hi.y, s.bottom.x, s.bottom.y, s.top.x, s.top.y);
+        std::printf(
+            "stair: storey %d to %d at x [%.2f, %.2f] z [%.2f, %.2f] m, from (%.2f, %.2f) to (%.2f, %.2f), "
+            "%zu turns\n",
+            s.from, s.from + 1, s.lo.x, s.hi.x, s.lo.y, s.hi.y, s.bottom.x, s.bottom.y, s.top.x, s.top.y,
+            s.path.size() - 2);
 }
 
 // What the planning limit and the walk cost's eye cap left out (walls/auto_walls_limits.h).

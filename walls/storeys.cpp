@@ -1,6 +1,7 @@
 #include "walls/storeys.h"
 
 #include "scenes/region.h"
+#include "walls/walk_grid.h"
 
 #include <algorithm>
 #include <cassert>
@@ -19,7 +20,8 @@ struct Level {
     double y = 0.0, area = 0.0;
 };
 
-// Levels of the facets facing `up` (true) or down: runs of adjacent non-empty bins.
+// Levels of the facets facing `up` (true) or down: runs of adjacent non-empty bins, each at the
+// area-weighted height of its bin with the most area.
 std::vector<Level> levelsOf(const std::vector<Facet>& facets, bool up, double bin) {
     std::map<long long, std::pair<double, double>> bins;  // bin -> (area, area x y)
     for (const Facet& f : facets) {
@@ -30,18 +32,19 @@ std::vector<Level> levelsOf(const std::vector<Facet>& facets, bool up, double bi
     }
     std::vector<Level> levels;
     long long previous = 0;
-    double moment = 0.0;
+    double peak = 0.0;  // the area of the run's heaviest bin so far
     for (const auto& [index, sums] : bins) {
         if (levels.empty() || index > previous + 1) {
-            if (!levels.empty()) levels.back().y = moment / levels.back().area;
             levels.push_back({});
-            moment = 0.0;
+            peak = 0.0;
         }
         levels.back().area += sums.first;
-        moment += sums.second;
+        if (sums.first > peak) {
+            peak = sums.first;
+            levels.back().y = sums.second / sums.first;
+        }
         previous = index;
     }
-    if (!levels.empty()) levels.back().y = moment / levels.back().area;
     return levels;
 }
 
@@ -82,71 +85,52 @@ double ceilingIn(const std::vector<Level>& ceilings, double lo, double hi, doubl
     return y;
 }
 
-// 1 m columns of (x, z).
-using Column = std::pair<long long, long long>;
-
-// True when `heights` (sorted) climb from `low` to `high` in steps no larger than `maxStep`.
-bool climbs(const std::vector<double>& heights, double low, double high, double maxStep) {
-    double at = low;
-    for (double y : heights) {
-        if (y - at > maxStep) return false;
-        at = std::max(at, y);
+// The stair between floors `from` and `from + 1` (the header's rule), if the walk finds one.
+void addStair(Storeys& out, int from) {
+    Stair s;
+    s.from = from;
+    s.path = out.walk->climb(out.storeys[from].floorY, out.storeys[from + 1].floorY);
+    if (s.path.empty()) return;
+    s.lo = s.hi = {s.path.front().x, s.path.front().z};
+    for (const glm::dvec3& p : s.path) {
+        s.lo = glm::min(s.lo, glm::dvec2(p.x, p.z));
+        s.hi = glm::max(s.hi, glm::dvec2(p.x, p.z));
     }
-    return high - at <= maxStep;
+    s.bottom = {s.path.front().x, s.path.front().z};
+    s.top = {s.path.back().x, s.path.back().z};
+    out.stairs.push_back(std::move(s));
 }
 
-// Stairs between floors `from` and `from + 1` (the header's rule).
-void addStairs(Storeys& out, const std::vector<Facet>& facets, int from, const StoreyOptions& options) {
-    const double low = out.storeys[from].floorY + options.minHeadroom / 4.0;
-    const double high = out.storeys[from + 1].floorY - options.minHeadroom / 4.0;
-    std::map<Column, std::vector<double>> heights;  // sorted once gathered
-    std::map<Column, double> columnArea;
-    for (const Facet& f : facets) {
-        if (!f.up || f.y <= low || f.y >= high) continue;
-        const Column c{static_cast<long long>(std::floor(f.centre.x)), static_cast<long long>(std::floor(f.centre.y))};
-        heights[c].push_back(f.y);
-        columnArea[c] += f.area;
-    }
-    std::set<Column> open;
-    for (const auto& [c, area] : columnArea)
-        if (area >= 0.05) open.insert(c);
-    for (auto& [c, ys] : heights) std::sort(ys.begin(), ys.end());
-    while (!open.empty()) {
-        std::vector<Column> stack{*open.begin()}, component;
-        open.erase(open.begin());
-        while (!stack.empty()) {
-            const Column c = stack.back();
-            stack.pop_back();
-            component.push_back(c);
-            for (long long dx = -1; dx <= 1; ++dx)
-                for (long long dz = -1; dz <= 1; ++dz)
-                    if (auto n = open.find({c.first + dx, c.second + dz}); n != open.end()) {
-                        stack.push_back(*n);
-                        open.erase(n);
-                    }
-        }
-        if (static_cast<double>(component.size()) > options.maxStairArea) continue;
-        std::vector<double> ys;
-        Stair s{from, glm::dvec2(1e300), glm::dvec2(-1e300)};
-        double lowest = high, highest = low;
-        for (const Column& c : component) {
-            const std::vector<double>& here = heights[c];
-            ys.insert(ys.end(), here.begin(), here.end());
-            const glm::dvec2 corner(c.first, c.second);
-            s.lo = glm::min(s.lo, corner);
-            s.hi = glm::max(s.hi, corner + 1.0);
-            if (here.front() < lowest) {
-                lowest = here.front();
-                s.bottom = corner + 0.5;
-            }
-            if (here.back() > highest) {
-                highest = here.back();
-                s.top = corner + 0.5;
+// Adds `p` unless it repeats the last point (no zero-length step).
+void append(std::vector<glm::dvec3>& path, glm::dvec3 p) {
+    if (path.empty() || path.back() != p) path.push_back(p);
+}
+
+// Walks from the path's end to the floor point `to` over the walkable levels (a straight line
+// where they find no walk), at eye height.
+void walkTo(std::vector<glm::dvec3>& path, const Storeys& found, glm::dvec3 to, double eyeHeight) {
+    const glm::dvec3 eye(0.0, eyeHeight, 0.0);
+    if (found.walk)
+        for (const glm::dvec3& p : found.walk->route(path.back() - eye, to)) append(path, p + eye);
+    append(path, to + eye);
+}
+
+// The stair from storey `from` to the next whose every point (and every metre between) puts
+// the eye in a cell; null when none does.
+const Stair* stairBetween(const Storeys& found, int from, const std::vector<scenes::Cell>& cells, double eyeHeight) {
+    for (const Stair& s : found.stairs) {
+        if (s.from != from) continue;
+        bool held = true;
+        for (std::size_t k = 0; held && k + 1 < s.path.size(); ++k) {
+            const int steps = std::max(1, static_cast<int>(std::ceil(glm::length(s.path[k + 1] - s.path[k]))));
+            for (int t = 0; held && t <= steps; ++t) {
+                const glm::dvec3 p = glm::mix(s.path[k], s.path[k + 1], double(t) / steps);
+                held = scenes::findCell(cells, p + glm::dvec3(0.0, eyeHeight, 0.0)) >= 0;
             }
         }
-        std::sort(ys.begin(), ys.end());
-        if (climbs(ys, low, high, options.maxRise)) out.stairs.push_back(s);
+        if (held && !s.path.empty()) return &s;
     }
+    return nullptr;
 }
 
 }  // namespace
@@ -167,7 +151,10 @@ std::vector<Facet> horizontalFacets(const scenes::Scene& scene, const StoreyOpti
             if (!(length > 0.0) || std::abs(n.y) < cosTilt * length) continue;
             const glm::dvec3 c = (p[0] + p[1] + p[2]) / 3.0;
             const glm::dvec3 lo = glm::min(p[0], glm::min(p[1], p[2])), hi = glm::max(p[0], glm::max(p[1], p[2]));
-            facets.push_back({c.y, 0.5 * std::abs(n.y), {c.x, c.z}, n.y > 0.0, {lo.x, lo.z}, {hi.x, hi.z}});
+            Facet f{c.y, 0.5 * std::abs(n.y), {c.x, c.z}, n.y > 0.0, {lo.x, lo.z}, {hi.x, hi.z}};
+            for (int k = 0; k < 3; ++k) f.corners[k] = {p[k].x, p[k].z};
+            f.slope = {-n.x / n.y, -n.z / n.y};  // the plane n . (q - c) = 0 solved for y
+            facets.push_back(f);
         }
     }
     return facets;
@@ -185,7 +172,7 @@ Storeys findStoreys(const std::vector<Facet>& facets, double bottomY, double top
         if (l.area >= options.minFloorShare * largest &&
             areaAbove(ceilings, l.y + 0.5 * options.minHeadroom) >= options.minFloorShare * l.area)
             out.storeys.push_back({l.y, topY, l.area});
-    if (out.storeys.empty()) return {{{bottomY, topY, 0.0}}, {}};
+    if (out.storeys.empty()) return {{{bottomY, topY, 0.0}}, {}, nullptr};
     for (Storey& s : out.storeys)
         for (const Facet& f : facets)
             if (f.up && std::abs(f.y - s.floorY) <= 0.25) {
@@ -200,16 +187,15 @@ Storeys findStoreys(const std::vector<Facet>& facets, double bottomY, double top
         s.ceilingY = ceilingIn(ceilings, s.floorY + options.minHeadroom, top ? topY + 1.0 : next,
                                options.minFloorShare * s.floorArea, next);
     }
-    for (std::size_t i = 0; i + 1 < out.storeys.size(); ++i) addStairs(out, facets, static_cast<int>(i), options);
-    std::sort(out.stairs.begin(), out.stairs.end(), [](const Stair& a, const Stair& b) {
-        return std::make_tuple(a.from, a.lo.x, a.lo.y) < std::make_tuple(b.from, b.lo.x, b.lo.y);
-    });
+    if (out.storeys.size() < 2) return out;
+    out.walk = std::make_shared<WalkGrid>(facets, out.storeys.front().floorY - 0.5, topY);
+    for (std::size_t i = 0; i + 1 < out.storeys.size(); ++i) addStair(out, static_cast<int>(i));
     return out;
 }
 
 Storeys findStoreys(const scenes::Scene& scene, const StoreyOptions& options) {
     const scenes::Bounds b = scene.bounds();
-    if (b.empty()) return {{{0.0, 0.0, 0.0}}, {}};
+    if (b.empty()) return {{{0.0, 0.0, 0.0}}, {}, nullptr};
     return findStoreys(horizontalFacets(scene, options), b.min.y, b.max.y, options);
 }
 
@@ -244,20 +230,16 @@ scenes::SceneDescription stackStoreys(const std::vector<scenes::SceneDescription
         const std::vector<glm::dvec3>& path = perStorey[i].walkPath;
         if (path.empty()) continue;
         if (i > 0 && !out.walkPath.empty()) {
-            const double below = found.storeys[i - 1].floorY + eyeHeight, above = found.storeys[i].floorY + eyeHeight;
-            const auto stair = std::find_if(found.stairs.begin(), found.stairs.end(), [&](const Stair& s) {
-                return s.from == static_cast<int>(i) - 1 &&
-                       scenes::findCell(out.cells, {s.bottom.x, below, s.bottom.y}) >= 0 &&
-                       scenes::findCell(out.cells, {s.top.x, above, s.top.y}) >= 0;
-            });
-            if (stair != found.stairs.end()) {
-                out.walkPath.push_back({stair->bottom.x, below, stair->bottom.y});
-                out.walkPath.push_back({stair->top.x, above, stair->top.y});
-            } else if (const glm::dvec3 foot{path.front().x, below, path.front().z}; out.walkPath.back() != foot) {
-                out.walkPath.push_back(foot);  // no zero-length step where the loops line up
+            const Stair* stair = stairBetween(found, static_cast<int>(i) - 1, out.cells, eyeHeight);
+            if (stair) {
+                walkTo(out.walkPath, found, stair->path.front(), eyeHeight);
+                for (const glm::dvec3& p : stair->path) append(out.walkPath, p + glm::dvec3(0.0, eyeHeight, 0.0));
+                walkTo(out.walkPath, found, path.front() - glm::dvec3(0.0, eyeHeight, 0.0), eyeHeight);
+            } else {
+                out.walkBreaks.push_back(static_cast<int>(out.walkPath.size()));  // no frame between the storeys
             }
         }
-        out.walkPath.insert(out.walkPath.end(), path.begin(), path.end());
+        for (const glm::dvec3& p : path) append(out.walkPath, p);
     }
     return out;
 }

@@ -4,7 +4,9 @@
 // Floors are where much walkable surface lies at one height: every upward-facing,
 // near-horizontal triangle (normal within `maxTiltDeg` of +Y) adds its area projected on (x, z)
 // to a histogram of heights (bins of `binMetres`, the triangle's mean y). Runs of adjacent
-// non-empty bins form levels (a level's height is its area-weighted mean); levels closer than
+// non-empty bins form levels; a level's height is that of its bin with the most area (the
+// area-weighted mean within that bin: a run can reach from a ceiling's top through the ducts
+// above it to the slab, and its mean is no walkable height). Levels closer than
 // `mergeMetres` merge into the one with more area (a slab's top and a floor finish, a raised
 // step). A level is a floor when its area is at least `minFloorShare` of the largest level's
 // (a mezzanine, a table top or a stair tread is not a floor) and downward-facing area of at
@@ -15,21 +17,22 @@
 // slab's underside), else the next floor; for the top storey the highest ceiling level above
 // it, else the model's top. A model without any floor has one storey from its bottom to its top.
 //
-// Stairs: upward area at heights strictly between two floors (more than `minHeadroom` / 4
-// from both) gathered in columns of 1 m x 1 m in (x, z), columns with at least 0.05 m² of it.
-// Adjacent columns (8-connected) make one group; a group of at most `maxStairArea` columns
-// whose heights climb from one end of that range to the other in steps of at most `maxRise`
-// is a stair (or a ramp), reported as its (x, z) rectangle. Furniture stops short of the
-// floor above; a large group is clutter, not a stair.
+// Stairs: the shortest walk over the walkable levels of walls/walk_grid.h from the lower floor's
+// height to the upper one's (treads of 0.15-0.2 m rise over 0.25-0.3 m going, or a sloped
+// walkable surface); furniture, ceiling tops and ducts are no step of it (covered, or too
+// high a step). A building without one has no stair.
 
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
 
 #include <glm/glm.hpp>
 
+#include <memory>
 #include <vector>
 
 namespace cavewall::walls {
+
+class WalkGrid;
 
 struct StoreyOptions {
     double binMetres = 0.05;     // histogram bin, > 0
@@ -37,8 +40,6 @@ struct StoreyOptions {
     double mergeMetres = 2.0;    // levels closer than this are one floor
     double minFloorShare = 0.3;  // a floor's area / the largest level's area
     double minHeadroom = 2.0;    // metres between a floor and its ceiling, at least
-    double maxRise = 0.5;        // metres, the largest step up a stair (a landing's too)
-    double maxStairArea = 60.0;  // m², the largest stair's footprint in 1 m columns
 };
 
 // One horizontal-ish triangle's contribution: its mean height (world y, metres) and its area
@@ -49,6 +50,8 @@ struct Facet {
     glm::dvec2 centre{0.0};       // (x, z)
     bool up = true;               // faces +Y (a floor); false: faces -Y (a ceiling)
     glm::dvec2 lo{0.0}, hi{0.0};  // (x, z)
+    glm::dvec2 corners[3]{};      // the triangle's (x, z)
+    glm::dvec2 slope{0.0};        // dy/dx, dy/dz of its plane: y + slope . ((x, z) - centre)
 };
 
 struct Storey {
@@ -59,17 +62,20 @@ struct Storey {
     glm::dvec2 floorMin{1.0}, floorMax{-1.0};
 };
 
-// A stair or ramp between storeys `from` and `from + 1`: its (x, z) rectangle, and the centres
-// of the 1 m columns holding its lowest and its highest step (where a walk enters and leaves).
+// A stair or ramp between storeys `from` and `from + 1`: its walk (floor points, the first on
+// the lower floor, the last on the upper), that walk's (x, z) bounds and its two ends.
 struct Stair {
     int from = 0;
     glm::dvec2 lo{0.0}, hi{0.0};
     glm::dvec2 bottom{0.0}, top{0.0};
+    std::vector<glm::dvec3> path;
 };
 
 struct Storeys {
     std::vector<Storey> storeys;  // bottom to top, at least one
-    std::vector<Stair> stairs;    // by `from`, then by lo.x, lo.y
+    std::vector<Stair> stairs;    // by `from`, at most one each
+    // The walkable levels of every storey (null for one storey): routes along the floors.
+    std::shared_ptr<const WalkGrid> walk;
 };
 
 // The facets of every triangle of `scene` (world frame) whose normal is within
@@ -88,11 +94,12 @@ int storeyAt(const std::vector<Storey>& storeys, double y);
 
 // One description of every storey's cells, walls and real walls (perStorey[i]: storey i's own,
 // all from one base), their names prefixed with the storey's number from 0 at the lowest
-// ("1/A1"), the walls' cell indices moved along, and one walk path: each storey's in turn,
-// going from one to the next up the first stair found between them whose ends lie in cells
-// (from its bottom at the lower floor's eye height to its top at the upper floor's), else
-// straight up at the upper path's start (as a lift would). Everything else (models, viewer) is perStorey[0]'s.
-// `perStorey` and `found.storeys` have the same size.
+// ("1/A1"), the walls' cell indices moved along, and one walk path: each storey's in turn. From
+// one to the next it walks over the walkable levels to the first stair found between them
+// whose every point holds the eye in a cell, climbs the stair's walk and walks on to the upper
+// path's start, at eye height above the levels it crosses. Without such a stair the upper path
+// starts a new piece (walkBreaks): nothing is walked between the storeys. Everything else
+// (models, viewer) is perStorey[0]'s. `perStorey` and `found.storeys` have the same size.
 scenes::SceneDescription stackStoreys(const std::vector<scenes::SceneDescription>& perStorey, const Storeys& found,
                                       double eyeHeight);
 

@@ -4,7 +4,9 @@
 // The head comes from a tracker (input::makeTracker spec; default "sim:walk", a simulated
 // walking head) through the display's tracking pipeline; the CAVE is moved along the scene's
 // walkPath by the guided navigator (input/navigator.h), starting at the path's first point
-// facing along it, at a pace chosen so that `frames` frames at 1/60 s cover the whole path.
+// facing along it, at a pace chosen so that `frames` frames at 1/60 s cover the whole path. A
+// walk cut by walkBreaks is walked piece by piece (frames in proportion to each piece's length,
+// at one pace), with no frame between the pieces.
 // Without a walkPath the CAVE stays at the world origin. Poses are polled at t = i / 60 s,
 // through the same input loop as `cavewall run` (app/run_input.h), live trackers without
 // waiting for that time.
@@ -27,6 +29,11 @@ struct EyePath {
 // Throws cavewall::Error for a bad tracker spec.
 EyePath recordEyePath(const scenes::Scene& scene, const scenes::SceneDescription& description,
                       const config::DisplayConfig& display, const std::string& trackerSpec, long frames);
+
+// How many of `frames` each piece of a walk of `lengths` (metres) gets: in proportion to its
+// length, at least one each (two for a piece that has a length) while frames last; the last
+// piece takes what is left.
+std::vector<long> framesPerPiece(const std::vector<double>& lengths, long frames);
 
 // Length of a polyline, metres.
 double pathLength(const std::vector<glm::dvec3>& points);

@@ -41,7 +41,8 @@ SceneDescription load(const std::string& text) {
 TEST(SceneDescription, ParsesEveryFieldAndRoundTrips) {
     const SceneDescription d = load(scene(R"(, "name": "two", "viewer": {"eyeHeight": 1.6, "headHeightRange": [1, 2.2]},
         "realWalls": [{"name": "north", "lowerLeft": [-4, 0, -2], "lowerRight": [4, 0, -2], "upperLeft": [-4, 3, -2]}],
-        "walkPath": [[-2, 1.6, 0], [2, 1.6, 0]], "wallPath": [[-0.3, 1.6, 1], [0.3, 1.6, 1], [0.3, 1.6, -1]])"));
+        "walkPath": [[-2, 1.6, 0], [2, 1.6, 0], [2, 1.6, 1]], "walkBreaks": [2],
+        "wallPath": [[-0.3, 1.6, 1], [0.3, 1.6, 1], [0.3, 1.6, -1]])"));
     EXPECT_EQ(d.name, "two");
     ASSERT_EQ(d.cells.size(), 2u);
     ASSERT_EQ(d.walls.size(), 1u);
@@ -49,7 +50,8 @@ TEST(SceneDescription, ParsesEveryFieldAndRoundTrips) {
     EXPECT_EQ(d.walls[0].kind, WallKind::Virtual);
     EXPECT_EQ(d.eyeHeight, 1.6);
     EXPECT_EQ(d.headHeightRange, glm::dvec2(1, 2.2));
-    EXPECT_EQ(d.walkPath.size(), 2u);
+    EXPECT_EQ(d.walkPath.size(), 3u);
+    EXPECT_EQ(d.walkBreaks, std::vector<int>{2});
     EXPECT_EQ(d.wallPath.size(), 3u);
     // The file lists A clockwise seen from above; it is stored counter-clockwise (positive area).
     EXPECT_EQ(regionArea(d.cells[0].region), 16.0);
@@ -152,6 +154,11 @@ TEST(SceneDescription, EveryRuleHasItsMessage) {
          "scene.json: cells[1].name: duplicate cell name 'A' (expected unique names)"},
         {"path leaves the cells", scene(R"(, "walkPath": [[0, 1.7, 0], [9, 1.7, 0]])"),
          "scene.json: walkPath[1]: point (9, 1.7, 0) is outside every cell (expected a point inside a cell's region)"},
+        {"walk break past the path", scene(R"(, "walkPath": [[0, 1.7, 0], [1, 1.7, 0]], "walkBreaks": [2])"),
+         "scene.json: walkBreaks[0]: expected an index of walkPath above 0 and below 2, got 2"},
+        {"walk breaks out of order",
+         scene(R"(, "walkPath": [[0, 1.7, 0], [1, 1.7, 0], [1, 1.7, 1]], "walkBreaks": [2, 1])"),
+         "scene.json: walkBreaks[1]: expected an index of walkPath above 2 and below 3, got 1"},
         {"wall path leaves the cells", scene(R"(, "wallPath": [[0, 1.7, 0], [0, 1.7, 9]])"),
          "scene.json: wallPath[1]: point (0, 1.7, 9) is outside every cell (expected a point inside a cell's region)"},
         {"bad head range", scene(R"(, "viewer": {"headHeightRange": [2, 1]})"),

@@ -182,18 +182,15 @@ TEST(AutoWalls, EveryStoreyGetsItsOwnCellsWallsAndWalk) {
     // A viewer at eye height above either floor is in that storey's cell.
     EXPECT_NEAR(d.cells[scenes::findCell(d.cells, {1.0, 1.7, 1.0})].floorY, 0.0, 1e-6);
     EXPECT_NEAR(d.cells[scenes::findCell(d.cells, {1.0, 5.7, 1.0})].floorY, 4.0, 1e-6);
-    // The walk visits both storeys and, without stairs, rises straight between them.
+    // The walk visits both storeys and, without stairs, walks each on its own: one break where
+    // the upper storey's piece starts, and every point at one floor's eye height.
     ASSERT_FALSE(d.walkPath.empty());
     EXPECT_NEAR(d.walkPath.front().y, 1.7, 1e-6);
     EXPECT_NEAR(d.walkPath.back().y, 5.7, 1e-6);
-    int rises = 0;
-    for (std::size_t i = 0; i + 1 < d.walkPath.size(); ++i)
-        if (d.walkPath[i + 1].y > d.walkPath[i].y + 1.0) {
-            ++rises;
-            EXPECT_EQ(d.walkPath[i].x, d.walkPath[i + 1].x);
-            EXPECT_EQ(d.walkPath[i].z, d.walkPath[i + 1].z);
-        }
-    EXPECT_EQ(rises, 1);
+    ASSERT_EQ(d.walkBreaks.size(), 1u);
+    const int upper = d.walkBreaks[0];
+    for (int i = 0; i < static_cast<int>(d.walkPath.size()); ++i)
+        EXPECT_NEAR(d.walkPath[i].y, i < upper ? 1.7 : 5.7, 1e-6) << i;
     for (std::size_t i = 0; i + 1 < d.walkPath.size(); ++i) EXPECT_NE(d.walkPath[i], d.walkPath[i + 1]) << i;
     // It plans: the storeys' walls do not see each other.
     EXPECT_NO_THROW(planZones(d, options().plan));
@@ -201,29 +198,41 @@ TEST(AutoWalls, EveryStoreyGetsItsOwnCellsWallsAndWalk) {
 
 TEST(AutoWalls, AStairCarriesTheWalkBetweenStoreys) {
     scenes::Scene s = twoStoreyHall();
-    // Treads 0.8 m wide (z -4.9 to -4.1, two metres clear of the crates: furniture next to a
-    // stair joins its group), 0.3 m deep along +x from x = 5.02, rising 0.2 m to 3.8 m.
-    for (int i = 0; i < 19; ++i) {
-        s.meshes.push_back(scenes::makeBox(glm::vec3(0.3f, 0.05f, 0.8f), glm::vec4(1.0f)));
-        scenes::addObject(s, static_cast<int>(s.meshes.size()) - 1,
-                          glm::translate(glm::dmat4(1.0), glm::dvec3(5.17 + 0.3 * i, 0.2 * (i + 1) - 0.025, -4.5)),
-                          "tread");
-    }
+    // Treads 0.8 m wide (z -4.9 to -4.1), 0.3 m deep along +x from x = 5.02, rising 0.2 m to
+    // 3.8 m, under a well cut in the slab (x 4.8 to 10.72, z -5 to -4).
+    std::erase_if(s.objects, [](const scenes::Object& o) { return o.name == "slab"; });
+    auto box = [&](glm::dvec3 size, glm::dvec3 centre, const std::string& name) {
+        s.meshes.push_back(scenes::makeBox(glm::vec3(size), glm::vec4(1.0f)));
+        scenes::addObject(s, static_cast<int>(s.meshes.size()) - 1, glm::translate(glm::dmat4(1.0), centre), name);
+    };
+    box({24.8, 0.2, 10}, {-7.6, 3.9, 0}, "slab west");
+    box({9.28, 0.2, 10}, {15.36, 3.9, 0}, "slab east");
+    box({5.92, 0.2, 9}, {7.76, 3.9, 0.5}, "slab beside the well");
+    for (int i = 0; i < 19; ++i) box({0.3, 0.05, 0.8}, {5.17 + 0.3 * i, 0.2 * (i + 1) - 0.025, -4.5}, "tread");
     const AutoWallsResult r = proposeWalls(s, bare(), options());
     ASSERT_EQ(r.storeys.size(), 2u);
     ASSERT_EQ(r.stairs.size(), 1u);
     const Stair& stair = r.stairs.front();
-    // The walk climbs from the stair's bottom at the ground floor's eye height to its top at
-    // the upper floor's.
-    const std::vector<glm::dvec3>& path = r.description.walkPath;
-    auto near = [](glm::dvec3 a, glm::dvec3 b) { return glm::length(a - b) < 1e-6; };
-    const auto at = std::find_if(path.begin(), path.end(), [&](const glm::dvec3& p) {
-        return near(p, {stair.bottom.x, 1.7, stair.bottom.y});
-    });
-    ASSERT_NE(at, path.end());
-    ASSERT_NE(at + 1, path.end());
-    EXPECT_TRUE(near(*(at + 1), {stair.top.x, 5.7, stair.top.y}));
     EXPECT_LT(stair.bottom.x, stair.top.x);  // the treads climb along +x
+    // The walk climbs the stair's walk at eye height, one piece with no break, and every point
+    // is at eye height above the ground floor, a tread or the upper floor.
+    const scenes::SceneDescription& d = r.description;
+    EXPECT_TRUE(d.walkBreaks.empty());
+    auto near = [](glm::dvec3 a, glm::dvec3 b) { return glm::length(a - b) < 1e-6; };
+    const auto at = std::find_if(d.walkPath.begin(), d.walkPath.end(), [&](const glm::dvec3& p) {
+        return near(p, stair.path.front() + glm::dvec3(0, 1.7, 0));
+    });
+    ASSERT_NE(at, d.walkPath.end());
+    ASSERT_GE(d.walkPath.end() - at, static_cast<long>(stair.path.size()));
+    for (std::size_t k = 0; k < stair.path.size(); ++k)
+        EXPECT_TRUE(near(*(at + k), stair.path[k] + glm::dvec3(0, 1.7, 0))) << k;
+    for (const glm::dvec3& p : d.walkPath) {
+        const double floor = p.y - 1.7;
+        const bool onFloor = std::abs(floor) < 1e-6 || std::abs(floor - 4.0) < 1e-6;
+        const bool onTread =
+            p.x > 5.02 && p.x < 10.72 && std::abs(floor - 0.2 * std::floor((p.x - 5.02) / 0.3 + 1.0)) < 1e-6;
+        EXPECT_TRUE(onFloor || onTread) << p.x << " " << p.y << " " << p.z;
+    }
 }
 
 TEST(AutoWalls, IsDeterministic) {

@@ -7,6 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -71,24 +72,68 @@ TEST(Storeys, AMezzanineIsNoStorey) {
     EXPECT_NEAR(found.storeys[1].floorY, 6.0, 1e-6);
 }
 
-TEST(Storeys, AStairIsNoStoreyAndIsFoundBetweenTheFloors) {
-    // 19 treads 1.2 m wide (x 5 to 6.2), 0.3 m deep, rising 0.2 m from 0.2 m to 3.8 m along +z
-    // from z = 0.02: each tread is small, so no tread height is a floor.
-    scenes::Scene s = building({0.0, 4.0}, 8.0);
+// building() with the upper slab (top at 4 m) cut around a stair well over x [4.8, 6.4],
+// z [-0.5, 5.72], and 19 treads 1.2 m wide (x 5 to 6.2), 0.3 m deep, rising 0.2 m from 0.2 m
+// to 3.8 m along +z from z = 0.02 to the upper floor's edge.
+scenes::Scene stairHouse() {
+    scenes::Scene s = building({0.0}, 8.0);
+    box(s, {14.8, 0.3, 20}, {-2.6, 3.85, 0}, "slab west");
+    box(s, {3.6, 0.3, 20}, {8.2, 3.85, 0}, "slab east");
+    box(s, {1.6, 0.3, 4.28}, {5.6, 3.85, 7.86}, "slab north of the well");
+    box(s, {1.6, 0.3, 9.5}, {5.6, 3.85, -5.25}, "slab south of the well");
     for (int i = 0; i < 19; ++i) box(s, {1.2, 0.05, 0.3}, {5.6, 0.2 * (i + 1) - 0.025, 0.17 + 0.3 * i}, "tread");
-    const Storeys found = findStoreys(s);
+    return s;
+}
+
+TEST(Storeys, AStairIsNoStoreyAndIsFoundBetweenTheFloors) {
+    const Storeys found = findStoreys(stairHouse());
     ASSERT_EQ(found.storeys.size(), 2u);
     EXPECT_NEAR(found.storeys[1].floorY, 4.0, 1e-6);
     ASSERT_EQ(found.stairs.size(), 1u);
     const Stair& stair = found.stairs[0];
     EXPECT_EQ(stair.from, 0);
-    // Treads strictly between 0.5 m and 3.5 m (a quarter of the 2 m headroom from each floor)
-    // are the 3rd to the 17th, their triangles' centres (a third of the way across a tread) at
-    // x 5.4 and 5.8 and z 0.72 to 5.02: the 1 m columns x 5 to 6, z 0 to 6.
-    EXPECT_EQ(stair.lo, glm::dvec2(5.0, 0.0));
-    EXPECT_EQ(stair.hi, glm::dvec2(6.0, 6.0));
-    EXPECT_EQ(stair.bottom, glm::dvec2(5.5, 0.5));  // the 3rd tread's column
-    EXPECT_EQ(stair.top, glm::dvec2(5.5, 4.5));     // the 17th's (the first of its two columns)
+    ASSERT_GE(stair.path.size(), 2u);
+    // It starts on the ground floor next to the first tread (0.2 m up: in front of it or
+    // beside it) and ends on the upper floor just past the last, climbing along +z.
+    EXPECT_NEAR(stair.path.front().y, 0.0, 1e-6);
+    EXPECT_NEAR(stair.path.back().y, 4.0, 1e-6);
+    EXPECT_GT(stair.bottom.y, -0.5);
+    EXPECT_LT(stair.bottom.y, 0.32);
+    EXPECT_GT(stair.bottom.x, 4.5);
+    EXPECT_LT(stair.bottom.x, 6.7);
+    EXPECT_GT(stair.top.y, 5.72);
+    EXPECT_LT(stair.top.y, 6.5);
+    // Every point between the ends stands on a tread: within its width, at its height over
+    // its depth.
+    for (std::size_t k = 1; k + 1 < stair.path.size(); ++k) {
+        const glm::dvec3 p = stair.path[k];
+        EXPECT_GT(p.x, 5.0) << k;
+        EXPECT_LT(p.x, 6.2) << k;
+        const int tread = static_cast<int>(std::floor((p.z - 0.02) / 0.3));
+        ASSERT_GE(tread, 0) << k;
+        EXPECT_NEAR(p.y, 0.2 * (tread + 1), 1e-6) << k;
+    }
+}
+
+TEST(Storeys, AStairUnderAClosedSlabIsNone) {
+    // The same treads under the whole slab: above 1.8 m they have no headroom.
+    scenes::Scene s = building({0.0, 4.0}, 8.0);
+    for (int i = 0; i < 19; ++i) box(s, {1.2, 0.05, 0.3}, {5.6, 0.2 * (i + 1) - 0.025, 0.17 + 0.3 * i}, "tread");
+    const Storeys found = findStoreys(s);
+    ASSERT_EQ(found.storeys.size(), 2u);
+    EXPECT_TRUE(found.stairs.empty());
+}
+
+TEST(Storeys, AFloorIsItsHeaviestHeightNotARunsMean) {
+    // Ceiling tiles' tops at 3.75 m and ducts' at 3.8 to 3.95 m make one run of 5 cm bins with
+    // the upper slab's top at 4 m (its mean about 3.88 m); the upper floor is the slab's top,
+    // where one walks.
+    scenes::Scene s = building({0.0, 4.0}, 8.0);
+    box(s, {18, 0.02, 18}, {0, 3.74, 0}, "ceiling tiles");
+    for (int i = 0; i < 4; ++i) box(s, {1, 0.05, 18}, {-6.0 + 3.0 * i, 3.775 + 0.05 * i, 0}, "duct");
+    const Storeys found = findStoreys(s);
+    ASSERT_EQ(found.storeys.size(), 2u);
+    EXPECT_NEAR(found.storeys[1].floorY, 4.0, 1e-6);
 }
 
 TEST(Storeys, TablesAreNoStairs) {
@@ -117,21 +162,25 @@ TEST(Storeys, StoreyAtPicksTheStoreyByHeight) {
     EXPECT_EQ(storeyAt(two, -2.0), 0);  // below everything: the lowest
 }
 
-TEST(Storeys, TheClinicHasTwoStoreys) {
+TEST(Storeys, TheClinicHasTwoStoreysAndAStair) {
     const std::filesystem::path file = std::filesystem::path(CAVEWALL_REAL_SCENES) / "clinic" / "clinic.gltf";
     ASSERT_TRUE(std::filesystem::exists(file)) << file;
     const Storeys found = findStoreys(scenes::loadSceneFile(file));
-    // As measured: the ground floor's finish at y 0.03 m under a ceiling at 3.43 m (the slab
-    // and ceiling void between them, 0.55 m), the upper floor at 3.98 m under the roof's
-    // underside at 9.22 m. The roof's top is covered by nothing and is no floor. No group of
-    // upward facets between the floors (within 60 m²) climbs in steps of 0.5 m or less: no
-    // stair is found in this model.
+    // As measured: the ground floor's finish at y -0.03 m under a ceiling at 4.3 m (the upper
+    // slab's underside), the upper floor at 4.57 m (where its walls start; the suspended
+    // ceilings' tops at 2.7 m and the ducts above them join its run of bins, whose mean was
+    // 3.98 m) under the roof's underside at 9.22 m. The roof's top is covered by nothing and is
+    // no floor. One stair joins them, a U-shaped one near x -37, z -52 to -56.
     ASSERT_EQ(found.storeys.size(), 2u);
-    EXPECT_NEAR(found.storeys[0].floorY, 0.03, 0.05);
-    EXPECT_NEAR(found.storeys[0].ceilingY, 3.43, 0.05);
-    EXPECT_NEAR(found.storeys[1].floorY, 3.98, 0.05);
+    EXPECT_NEAR(found.storeys[0].floorY, -0.03, 0.05);
+    EXPECT_NEAR(found.storeys[1].floorY, 4.57, 0.05);
     EXPECT_NEAR(found.storeys[1].ceilingY, 9.22, 0.05);
-    EXPECT_TRUE(found.stairs.empty());
+    ASSERT_EQ(found.stairs.size(), 1u);
+    const Stair& stair = found.stairs[0];
+    EXPECT_GT(stair.lo.x, -40.0);
+    EXPECT_LT(stair.hi.x, -34.0);
+    EXPECT_GT(stair.lo.y, -58.0);
+    EXPECT_LT(stair.hi.y, -50.0);
 }
 
 }  // namespace

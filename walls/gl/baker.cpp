@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <set>
 #include <optional>
 #include <thread>
 #include <utility>
@@ -154,6 +155,8 @@ private:
     void keyPending(std::uint64_t settings);
     void linkFromCache();
     void sample();
+    void setTwinsAside();
+    void linkTwins();
     // What one drawing thread adds to the result.
     struct Drawn {
         double draw = 0.0, read = 0.0, queue = 0.0;
@@ -186,16 +189,22 @@ private:
     std::unique_ptr<BakeWriter> _writer;
     std::vector<walls::BakedTexture> _fresh;                    // baked since the last bakeIds
     std::map<std::pair<int, int>, std::uint64_t> _contentKeys;  // by (wall, side), made by keyPending
+    std::vector<std::pair<Item, int>> _twins;                   // a pending item and the id of one with its key
 };
 
 BakeResult Bake::run() {
     prepare();
+    setTwinsAside();
     if (!_pending.empty()) render(_pending);
     endRendering();
+    linkTwins();
     writeManifestNow(true);  // only when it changed: an unchanged bake writes nothing
     removeUnlistedTextures(_result.folder, _result.manifest);
     _result.totalBytes = 0;
-    for (const walls::BakedTexture& t : _result.manifest.textures) _result.totalBytes += t.bytes + t.depthBytes;
+    std::set<std::uint64_t> keys;
+    for (const walls::BakedTexture& t : _result.manifest.textures)
+        if (keys.insert(walls::textureKeyOf(t.file).value_or(0)).second || t.file.empty())
+            _result.totalBytes += t.bytes + t.depthBytes;
     _result.seconds = std::chrono::duration<double>(Clock::now() - _start).count();  // progress reported done already
     return std::move(_result);
 }
@@ -389,6 +398,47 @@ void Bake::linkFromCache() {
         }
     }
     _pending = std::move(left);
+}
+
+// Textures of one key show the same pixels (zones of different eye regions can choose one
+// sampling point on one far wall): the first pending one of each key is rendered, the others
+// wait in _twins for linkTwins.
+void Bake::setTwinsAside() {
+    std::map<std::uint64_t, int> first;  // texture key -> id
+    std::vector<Item> kept;
+    for (Item& item : _pending) {
+        const std::uint64_t key = walls::textureKeyOf(item.entry.file).value_or(0);
+        const auto [at, added] = first.emplace(key, item.texture->id);
+        if (added || key == 0)
+            kept.push_back(std::move(item));
+        else
+            _twins.emplace_back(std::move(item), at->second);
+    }
+    _pending = std::move(kept);
+}
+
+// Each twin's file is a hard link to (else a copy of) the file baked for its key; a twin whose
+// link fails is rendered after all.
+void Bake::linkTwins() {
+    std::vector<Item> left;
+    for (const auto& [item, source] : _twins) {
+        const auto done = _done.find(source);
+        std::optional<walls::BakedTexture> got;
+        if (done != _done.end()) {
+            const walls::CacheIndex index{
+                {walls::textureKeyOf(item.entry.file).value_or(0), walls::CachedTexture{_result.folder, done->second}}};
+            got = walls::linkCachedTexture(index, _result.folder, item.entry);
+        }
+        if (got) {
+            finish(*got, false, 0);
+            ++_result.shared;
+        } else
+            left.push_back(item);
+    }
+    _twins.clear();
+    if (left.empty()) return;
+    render(left);
+    endRendering();
 }
 
 // BakeRequest::limit: every k-th pending texture, k = pending / limit (real-valued).

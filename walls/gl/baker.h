@@ -130,10 +130,12 @@ struct BakeResult {
     int baked = 0;   // rendered and written by this bake
     int reused = 0;  // valid already (in this folder or taken from another)
     int linked = 0;  // of `reused`: taken from another folder of the cache
+    int shared = 0;  // of `reused`: linked to a texture of the same key this bake rendered
     int hashed = 0;  // listed textures read in full to check them (size or time changed)
     double seconds = 0.0;
     std::uint64_t bytesWritten = 0;  // of files baked or linked by this bake
-    std::uint64_t totalBytes = 0;    // of all files in the manifest
+    std::uint64_t totalBytes = 0;    // of all files in the manifest (a texture key's once: its
+                                     // textures share one file through hard links)
     BakeTimes times;
     std::uint64_t trianglesDrawn = 0;  // summed over the textures rendered by this bake
     double maxLodErrorTexels = 0.0;    // the largest level-of-detail error drawn, texels

@@ -57,7 +57,8 @@ BakedWalls bakeWalls(const BenchOptions& o, const std::filesystem::path& sceneFi
     out.summary = "a=" + config::formatNumber(alphaDeg) + ": " + std::to_string(out.setup.plan.textures.size()) +
                   " textures (" + std::string(walls::textureFormatName(o.textureFormat)) + ", " + fixed(out.diskMB) +
                   " MB on disk), " + std::to_string(baked.baked) + " baked now in " + fixed(baked.seconds) + " s, " +
-                  std::to_string(baked.reused) + " from the cache";
+                  std::to_string(baked.reused) + " from the cache (" + std::to_string(baked.shared) +
+                  " sharing a texture of the same key)";
     return out;
 }
 

@@ -319,6 +319,32 @@ TEST_F(BakeCacheTest, OtherBakedListsGetANewFolder) {
     EXPECT_EQ(second.linked, static_cast<int>(first.manifest.textures.size()) - front);
 }
 
+// Two textures of one key (one far wall, one sampling point, one resolution) show the same
+// pixels: one is rendered, the other is a hard link to its file, and the folder counts it once.
+TEST_F(BakeCacheTest, TexturesOfOneKeyShareOneFile) {
+    scenes::SceneDescription description;
+    const scenes::Scene scene = scenes::loadSceneFile(request.scene, &description);
+    walls::WallSetup setup = walls::prepareWalls(scene, description, request.plan);
+    const int n = static_cast<int>(setup.plan.textures.size());
+    ASSERT_GT(n, 0);
+    walls::Texture twin = setup.plan.textures[0];
+    twin.id = n;
+    setup.plan.textures.push_back(twin);
+    const BakeResult result = bakeWalls(scene, description, setup, request);
+    EXPECT_EQ(result.baked, n);
+    EXPECT_EQ(result.shared, 1);
+    ASSERT_EQ(result.manifest.textures.size(), static_cast<std::size_t>(n + 1));
+    const walls::BakedTexture& first = result.manifest.textures[0];
+    const walls::BakedTexture& second = result.manifest.textures[n];
+    EXPECT_NE(first.file, second.file);
+    EXPECT_EQ(walls::textureKeyOf(first.file), walls::textureKeyOf(second.file));
+    EXPECT_TRUE(walls::textureFileValid(result.folder, second));
+    EXPECT_TRUE(std::filesystem::equivalent(result.folder / first.file, result.folder / second.file));
+    std::uint64_t bytes = 0;
+    for (int i = 0; i < n; ++i) bytes += result.manifest.textures[i].bytes;
+    EXPECT_EQ(result.totalBytes, bytes);
+}
+
 TEST_F(BakeCacheTest, CorruptManifestIsAWarningAndEverythingIsReBaked) {
     const BakeResult first = bakeScene(request);
     std::ofstream(first.folder / "manifest.json") << "{\"version\": 1, \"key\":";
