@@ -86,7 +86,8 @@ TEST(DisplayCli, ReadsEachScreensWarpAndBlendFiles) {
     r = runCavewall({"display", (folder / "blend.json").string()});
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.err, HasSubstr("blend.json: screens[0] 'front': "));
-    EXPECT_THAT(r.err, HasSubstr("mask.png: cannot read the PNG header"));
+    EXPECT_THAT(r.err, HasSubstr("mask.png: PNG chunk at byte 8: expected 12 bytes of length, type and CRC, got 10 "
+                                 "(the file is truncated)"));
 }
 
 TEST(DisplayCli, RefusesToWriteOverItsInputOrAFolder) {
