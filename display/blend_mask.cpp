@@ -77,7 +77,9 @@ BlendMask parseBlendMask(std::string_view pngBytes, const std::string& source) {
     std::unique_ptr<void, StbFree> pixels(
         sixteen ? static_cast<void*>(stbi_load_16_from_memory(data, size, &gotW, &gotH, &gotChannels, 1))
                 : static_cast<void*>(stbi_load_from_memory(data, size, &gotW, &gotH, &gotChannels, 1)));
-    if (!pixels) throw Error(source + ": cannot decode the PNG (" + stbi_failure_reason() + ")");
+    if (!pixels)
+        throw Error(source + ": cannot decode the PNG's " + std::to_string(w) + " x " + std::to_string(h) +
+                    " pixels (" + stbi_failure_reason() + "; the image data is damaged or short)");
     BlendMask m{w, h, std::vector<std::uint16_t>(static_cast<std::size_t>(w) * h)};
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {

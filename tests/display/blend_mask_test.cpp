@@ -51,6 +51,9 @@ TEST(BlendMask, BadInputSaysWhatItExpected) {
         {"truncated between chunks", valid.substr(0, valid.size() - 12),
          "m.png: PNG chunk at byte " + std::to_string(valid.size() - 12) +
              ": expected 12 bytes of length, type and CRC, got 0 (the file is truncated)"},
+        {"image data short of the header's size",
+         valid.substr(0, 16) + std::string("\0\0\x40\0\0\0\x40\0", 8) + valid.substr(24),
+         "m.png: cannot decode the PNG's 16384 x 16384 pixels ("},
         {"IHDR not first", valid.substr(0, 8) + valid.substr(33),
          "m.png: expected the PNG's first chunk to be 'IHDR', got 'IDAT'"},
     };
