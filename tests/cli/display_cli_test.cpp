@@ -70,11 +70,12 @@ TEST(DisplayCli, ReadsEachScreensWarpAndBlendFiles) {
     const TempFolder folder("display_cli_correction");
     const std::string screen = R"({"screens": [{"name": "front", "lowerLeft": [-1, 0, -1], "lowerRight": [1, 0, -1],
                                       "upperLeft": [-1, 2, -1], "resolution": [64, 64], )";
-    writeFile(folder / "good.warp", "cavewall-warp 1\n2 2\n0 0 0 0\n-1 -1 1 0\n0 1 0 1\n1 1 1 1\n");
+    writeFile(folder / "good.warp",
+              "cavewall-warp 1\n3 2\n0 0 0 0\n0.5 0 0.5 0\n1 0 1 0\n0 1 0 1\n0.5 1 0.5 1\n-1 -1 1 1\n");
     writeFile(folder / "good.json", screen + R"("warp": "good.warp"}]})");
     CliResult r = runCavewall({"display", (folder / "good.json").string()});
     EXPECT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_THAT(r.out, HasSubstr("screen front correction: warp 2 x 2 nodes (1 outside the projection)"));
+    EXPECT_THAT(r.out, HasSubstr("screen front correction: warp 3 x 2 nodes (1 outside the projection)"));
     writeFile(folder / "short.warp", "cavewall-warp 1\n3 3\n0 0 0 0\n");
     writeFile(folder / "short.json", screen + R"("warp": "short.warp"}]})");
     r = runCavewall({"display", (folder / "short.json").string()});
