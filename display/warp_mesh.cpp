@@ -135,6 +135,18 @@ float readFloat(const char* p, bool littleEndian) {
     return std::bit_cast<float>(bits);
 }
 
+// A mesh whose every grid cell touches an invalid node draws nothing: the projector would show
+// black, which no calibration means.
+void checkSomeCellDrawn(const WarpMesh& m, const std::string& source) {
+    const auto valid = [&](int i, int j) { return m.nodes[static_cast<std::size_t>(j) * m.width + i].valid; };
+    for (int j = 0; j + 1 < m.height; ++j)
+        for (int i = 0; i + 1 < m.width; ++i)
+            if (valid(i, j) && valid(i + 1, j) && valid(i, j + 1) && valid(i + 1, j + 1)) return;
+    throw Error(source + ": no grid cell has four valid nodes (expected at least one of the " +
+                std::to_string((m.width - 1) * (m.height - 1)) +
+                " cells inside the projection, got none; the projector would show black)");
+}
+
 }  // namespace
 
 WarpMesh identityWarp(int width, int height) {
@@ -166,6 +178,7 @@ WarpMesh parseWarpText(std::string_view text, const std::string& source) {
                     std::to_string(m.height) + "), got " + std::to_string(lines.size() - 2));
     m.nodes.reserve(count);
     for (std::size_t k = 0; k < count; ++k) m.nodes.push_back(parseTextNode(lines[k + 2], source, static_cast<int>(k)));
+    checkSomeCellDrawn(m, source);
     return m;
 }
 
@@ -194,6 +207,7 @@ WarpMesh parseWarpPfm(std::string_view bytes, const std::string& source) {
         n.uv = n.valid ? glm::vec2(x, y) : glm::vec2(0.0f);
         m.nodes.push_back(n);
     }
+    checkSomeCellDrawn(m, source);
     return m;
 }
 

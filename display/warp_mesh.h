@@ -30,6 +30,7 @@
 // the top with v growing downwards write the same bytes: both readings flip rows and v together
 // and give the same picture.)
 //
+// A mesh must have at least one grid cell whose four nodes are valid (else nothing is drawn).
 // Both readers are pure functions on bytes; `source` names the file in messages. Bad input
 // throws cavewall::Error naming the source, the line or node, and expected against got.
 

@@ -1,5 +1,6 @@
 #include "input/calibration.h"
 
+#include "config/display_limits.h"
 #include "config/json_reader.h"
 
 #include <algorithm>
@@ -105,6 +106,15 @@ void checkInput(const std::vector<PointPair>& pairs, const std::string& source) 
                             vecText(p));
 }
 
+// A point within the display's coordinate limit on each axis (metres, either frame): beyond it
+// the fit's sums of squares overflow, and no tracker or cave is that large.
+glm::dvec3 point(const config::JsonNode& node) {
+    const std::vector<config::JsonNode> v = node.items(3, 3);
+    return {v[0].number(-config::kMaxCoordinate, config::kMaxCoordinate),
+            v[1].number(-config::kMaxCoordinate, config::kMaxCoordinate),
+            v[2].number(-config::kMaxCoordinate, config::kMaxCoordinate)};
+}
+
 }  // namespace
 
 PairsFile parsePairsFile(std::string_view jsonText, const std::string& source) {
@@ -114,7 +124,7 @@ PairsFile parsePairsFile(std::string_view jsonText, const std::string& source) {
     PairsFile file;
     for (const config::JsonNode& item : root.at("pairs").items(0, 10000)) {
         item.expectKeys({"tracker", "cave", "label"});
-        file.pairs.push_back({item.at("tracker").vec3(), item.at("cave").vec3()});
+        file.pairs.push_back({point(item.at("tracker")), point(item.at("cave"))});
         file.labels.push_back(item.has("label") ? item.at("label").string() : std::string());
     }
     if (auto screens = root.find("screens")) {
@@ -123,7 +133,7 @@ PairsFile parsePairsFile(std::string_view jsonText, const std::string& source) {
             const config::JsonNode s = screens->at(name);
             s.expectKeys({"lowerLeft", "lowerRight", "upperLeft"});
             file.screens.push_back(
-                {name, s.at("lowerLeft").vec3(), s.at("lowerRight").vec3(), s.at("upperLeft").vec3()});
+                {name, point(s.at("lowerLeft")), point(s.at("lowerRight")), point(s.at("upperLeft"))});
         }
     }
     return file;
@@ -273,6 +283,15 @@ CalibrationFit fitCaveFromTracker(const std::vector<PointPair>& pairs, const Cal
         }
     }
     fit.rms = std::sqrt(sum / static_cast<double>(pairs.size()));
+    if (fit.rms > options.maxRmsFactor * options.noise) {
+        char limit[96];
+        std::snprintf(limit, sizeof limit, "%s (%g x the noise of %s)",
+                      mm(options.maxRmsFactor * options.noise).c_str(), options.maxRmsFactor,
+                      mm(options.noise).c_str());
+        throw Error(source + ": the fit's RMS residual is " + mm(fit.rms) + ", expected at most " + limit +
+                    ": no rotation and translation maps the tracker points onto the cave points (are the tracker "
+                    "points in metres, and each paired with its own cave point?)");
+    }
     return fit;
 }
 

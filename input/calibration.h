@@ -49,7 +49,8 @@ struct PairsFile {
     std::vector<std::string> labels;     // one per pair; empty when not given
     std::vector<TrackedScreen> screens;  // by name
 };
-// Parses a pairs file's text (types, finiteness, unknown keys; at most 10000 pairs). `source`
+// Parses a pairs file's text (types, finiteness, unknown keys, every coordinate within
+// config::kMaxCoordinate (1000 m) on each axis; at most 10000 pairs). `source`
 // names the file in messages. Throws Error. The geometric rules are fitCaveFromTracker's.
 PairsFile parsePairsFile(std::string_view jsonText, const std::string& source);
 
@@ -61,6 +62,7 @@ struct CalibrationOptions {
                                  // spread across their line (below: duplicate or collinear)
     double noise = 0.002;        // metres: the expected measurement noise of one point
     double outlierFactor = 5.0;  // warn about a residual above outlierFactor * noise
+    double maxRmsFactor = 50.0;  // refuse a fit whose RMS residual is above maxRmsFactor * noise
     bool operator==(const CalibrationOptions&) const = default;
 };
 
@@ -80,7 +82,9 @@ struct CalibrationFit {
 // expected at least 10.0 mm" (the spread: the largest distance of a point from the line).
 // Refuses fewer than 3 pairs, non-finite values, two points closer than minSpread, collinear
 // points, points that fit a mirror image better than a rotation, and (with fitScale) a scale
-// outside [minScale, maxScale]. Residuals above outlierFactor * noise come back as warnings.
+// outside [minScale, maxScale], and a fit whose RMS residual is above maxRmsFactor * noise (100 mm
+// at the defaults: tracker units mistaken without fitScale, pairs shuffled). Residuals above
+// outlierFactor * noise come back as warnings.
 CalibrationFit fitCaveFromTracker(const std::vector<PointPair>& pairs, const CalibrationOptions& options,
                                   const std::string& source);
 

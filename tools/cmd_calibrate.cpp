@@ -33,8 +33,9 @@ const char* const kCalibrateUsage =
     "Screens whose corners were measured in the tracker frame (\"screens\": {\"front\":\n"
     "{\"lowerLeft\": [x, y, z], \"lowerRight\": [...], \"upperLeft\": [...]}} in the pairs file) are\n"
     "placed by the fit, squared into a rectangle keeping lowerLeft and the edge lengths.\n"
-    "Refused: fewer than 3 pairs, non-finite values, points closer than 10 mm, collinear points,\n"
-    "and points that fit a mirror image better than a rotation.\n";
+    "Refused: fewer than 3 pairs, non-finite values, coordinates beyond 1000 m on an axis, points\n"
+    "closer than 10 mm, collinear points, points that fit a mirror image better than a rotation,\n"
+    "and a fit whose RMS residual is above 50 times --noise (100 mm by default).\n";
 
 namespace {
 

@@ -2,6 +2,7 @@
 #include "app/bench/gnuplot.h"
 #include "config/display_config.h"
 #include "display/display_summary.h"
+#include "display/screen_correction.h"
 #include "scenes/file_write.h"
 #include "tools/args.h"
 #include "tools/commands.h"
@@ -13,6 +14,37 @@
 
 namespace cavewall::tools {
 
+namespace {
+
+// Reads every screen's warp and blend files as a run would, so that a bad one is found before
+// the run: one line per corrected screen. Throws Error naming the screen and the file.
+void printCorrections(const config::DisplayConfig& display, const std::string& source) {
+    for (std::size_t i = 0; i < display.screens.size(); ++i) {
+        const config::Screen& s = display.screens[i];
+        const std::string where = source + ": screens[" + std::to_string(i) + "] '" + s.name + "'";
+        std::optional<display::ScreenCorrection> c;
+        try {
+            c = display::loadScreenCorrection(display, static_cast<int>(i));
+        } catch (const Error& e) {
+            throw Error(where + ": " + e.what());
+        }
+        if (!c) continue;
+        std::cout << "screen " << s.name << " correction:";
+        if (!s.warp.empty()) {
+            const auto outside = std::count_if(c->warp.nodes.begin(), c->warp.nodes.end(),
+                                               [](const display::WarpNode& n) { return !n.valid; });
+            std::cout << " warp " << c->warp.width << " x " << c->warp.height << " nodes (" << outside
+                      << " outside the projection)";
+        }
+        if (c->blend)
+            std::cout << (s.warp.empty() ? "" : ",") << " blend " << c->blend->width << " x " << c->blend->height
+                      << " px";
+        std::cout << "\n";
+    }
+}
+
+}  // namespace
+
 const char* const kDisplayUsage =
     "usage: cavewall display CONFIG [--png FILE] [--size WxH]\n"
     "\n"
@@ -21,7 +53,8 @@ const char* const kDisplayUsage =
     "its front side, where the viewer belongs) and the fewest pixels per degree anywhere on it\n"
     "seen from the default head; the stereo mode, near and far planes, the default head (and\n"
     "eyes), the tracking calibration and volume, the edges two screens share, and the area two\n"
-    "screens in one plane both cover (a mistake).\n"
+    "screens in one plane both cover (a mistake). Each screen's warp and blend files are read as a\n"
+    "run reads them, and their sizes printed.\n"
     "--png: also draws the configuration (gnuplot): from the front and from above at one scale,\n"
     "axes in metres, each screen's outline named at its centre with its normal as an arrow, the\n"
     "default head with its view direction, both eyes when stereo, the tracking volume when the\n"
@@ -45,6 +78,7 @@ int runDisplay(const std::vector<std::string>& words) {
     if (png) scenes::checkNotAnInput(*png, "--png", {source});
     const config::DisplayConfig display = config::loadDisplayConfig(config);
     display::printDisplaySummary(std::cout, display, source.string());
+    printCorrections(display, source.string());
     if (png) {
         options.legendWidth = std::min(options.legendWidth, options.width / 4);
         bench::writePlot(*png, bench::displayFigure(display, options));

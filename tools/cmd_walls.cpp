@@ -120,6 +120,21 @@ void printLimits(const walls::AutoWallsResult& result, const walls::AutoWallsOpt
                     walls::kMaxCostEyes);
 }
 
+// --rooms is a preference: a storey without rooms within the budget is cut by the cost model's
+// choice, and the user is told which and why.
+void warnRoomsNotChosen(const walls::AutoWallsResult& result) {
+    for (std::size_t i = 0; i < result.storeys.size(); ++i) {
+        const walls::AutoWallsStorey& s = result.storeys[i];
+        const walls::AutoWallsCandidate& c = result.candidates.at(static_cast<std::size_t>(s.chosen));
+        if (c.rooms) continue;
+        const bool any = std::any_of(result.candidates.begin(), result.candidates.end(),
+                                     [&](const auto& r) { return r.rooms && r.storey == c.storey; });
+        std::cerr << "cavewall: warning: --rooms: storey " << i << " is cut by grid " << c.nx << "x" << c.nz
+                  << " instead: " << (any ? "its rooms are over the budget" : "no rooms were found")
+                  << " (its floor plan: " << s.wallElements << " wall elements, " << s.rooms << " rooms)\n";
+    }
+}
+
 }  // namespace
 
 int runWalls(const std::vector<std::string>& words) {
@@ -235,6 +250,7 @@ int runWalls(const std::vector<std::string>& words) {
                     chosen ? "  <- chosen" : "", rooms.c_str());
     }
     printLimits(result, options);
+    if (options.preferRooms) warnRoomsNotChosen(result);
     if (const auto& g = result.given)
         std::printf("%-7s %6zu %12.1f %16.0f %9d %12.1f %7s  (the input's own cells and walls)\n", "given",
                     base.cells.size(), g->expectedMs, g->meanCellTriangles, g->textures, g->textureMB,

@@ -3,12 +3,14 @@
 # UndefinedBehaviorSanitizer (Debian's clang), one process. Usage:
 #   tools/fuzz.sh TARGET SECONDS      TARGET: display_config gltf scene_description dtrack
 #                                             opentrack vrpn bake_manifest texture_blocks depth_file
-#                                             cluster_impostor
+#                                             cluster_impostor warp_mesh blend_mask calibration_pairs
 # The working corpus is build-fuzz/corpus/TARGET, seeded from tests/fuzz/corpus/TARGET (plus the
 # presets or the shared models); crashes go to build-fuzz/crashes/TARGET/. Copy a crash file
 # into tests/fuzz/corpus/TARGET/ once fixed: the replay tests (ctest -R fuzz_replay) keep it.
 # FUZZ_TIMEOUT=SECONDS (default 10) is the time one input may take before it counts as a hang;
 # raise it on a loaded machine, where a starved process can pass 10 s on a 3 ms input.
+# FUZZ_RUNS=N stops after N executions (or SECONDS, whichever comes first); FUZZ_MAX_LEN=BYTES
+# (default 65536) is the longest input libFuzzer makes.
 set -eu
 cd "$(dirname "$0")/.."
 [ $# -eq 2 ] || { echo "usage: tools/fuzz.sh TARGET SECONDS" >&2; exit 2; }
@@ -30,4 +32,4 @@ case $target in
 esac
 ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1 \
   "build-fuzz/tests/fuzz/${target}_fuzz" -max_total_time="$seconds" -rss_limit_mb=4096 -timeout="${FUZZ_TIMEOUT:-10}" \
-  -max_len=65536 -print_final_stats=1 -artifact_prefix="$crashes/" "$corpus"
+  -runs="${FUZZ_RUNS:--1}" -max_len="${FUZZ_MAX_LEN:-65536}" -print_final_stats=1 -artifact_prefix="$crashes/" "$corpus"

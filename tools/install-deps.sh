@@ -11,6 +11,6 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libepoxy-dev libglfw3-dev \
   libgtest-dev libgmock-dev libbenchmark-dev \
   libopenmpi-dev openmpi-bin \
-  xvfb xauth xdotool openscenegraph gltfpack draco gnuplot-nox \
+  xvfb xauth xdotool openscenegraph gltfpack draco gnuplot-nox python3 \
   clang >/dev/null
 echo "install-deps: done"

@@ -39,7 +39,7 @@ TEST(BlendMask, BadInputSaysWhatItExpected) {
     struct Case {
         const char* name;
         std::string bytes;
-        const char* message;
+        std::string message;
     };
     const std::string valid = png(2, 1, 1, {1, 2});
     const Case cases[] = {
@@ -47,12 +47,27 @@ TEST(BlendMask, BadInputSaysWhatItExpected) {
         {"text", "P5\n2 2\n255\n", "m.png: not a PNG file"},
         {"rgb", png(2, 1, 3, {1, 2, 3, 4, 5, 6}), "m.png: expected a grey PNG (1 channel, no alpha), got 3 channels"},
         {"grey and alpha", png(1, 1, 2, {1, 2}), "got 2 channels"},
-        {"truncated", valid.substr(0, 40), "m.png: cannot"},
+        {"truncated in a chunk", valid.substr(0, 50), "m.png: PNG chunk 'IDAT' at byte 33: its length is "},
+        {"truncated between chunks", valid.substr(0, valid.size() - 12),
+         "m.png: PNG chunk at byte " + std::to_string(valid.size() - 12) +
+             ": expected 12 bytes of length, type and CRC, got 0 (the file is truncated)"},
+        {"image data short of the header's size",
+         valid.substr(0, 16) + std::string("\0\0\x40\0\0\0\x40\0", 8) + valid.substr(24),
+         "m.png: cannot decode the PNG's 16384 x 16384 pixels ("},
+        {"IHDR not first", valid.substr(0, 8) + valid.substr(33),
+         "m.png: expected the PNG's first chunk to be 'IHDR', got 'IDAT'"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
         EXPECT_THAT([&] { parseBlendMask(c.bytes, "m.png"); }, ThrowsMessage<Error>(HasSubstr(c.message)));
     }
+}
+
+// An empty IDAT chunk is valid PNG; it decodes as the file without it.
+TEST(BlendMask, AnEmptyDataChunkIsSkipped) {
+    const std::string valid = png(2, 1, 1, {1, 2});
+    const std::string withEmpty = valid.substr(0, 33) + std::string("\0\0\0\0IDAT\0\0\0\0", 12) + valid.substr(33);
+    EXPECT_EQ(parseBlendMask(withEmpty, "m.png"), parseBlendMask(valid, "m.png"));
 }
 
 TEST(BlendMask, MissingFileNamesIt) {

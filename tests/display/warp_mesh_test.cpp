@@ -32,12 +32,14 @@ std::string pfm(int w, int h, const std::vector<glm::vec2>& nodes, float scale =
 
 TEST(WarpMesh, TextFormatReadsNodesRowsFromTheBottom) {
     const WarpMesh m = parseWarpText(
-        "cavewall-warp 1  # magic\n2 2\n\n0 0 0.1 0.0\n1 0 0.9 0\n0 1 0 1\n-1 -1 1 1  # outside\n", "a.warp");
-    ASSERT_EQ(m.nodes.size(), 4u);
-    EXPECT_EQ(m.width, 2);
-    EXPECT_EQ(m.nodes[1].xy, glm::vec2(0.9f, 0.0f));
-    EXPECT_TRUE(m.nodes[2].valid);
-    EXPECT_FALSE(m.nodes[3].valid);  // u = v = -1 marks a node outside the projection
+        "cavewall-warp 1  # magic\n3 2\n\n0 0 0.1 0.0\n0.5 0 0.5 0\n1 0 0.9 0\n"
+        "0 1 0 1\n0.5 1 0.5 1\n-1 -1 1 1  # outside\n",
+        "a.warp");
+    ASSERT_EQ(m.nodes.size(), 6u);
+    EXPECT_EQ(m.width, 3);
+    EXPECT_EQ(m.nodes[2].xy, glm::vec2(0.9f, 0.0f));
+    EXPECT_TRUE(m.nodes[3].valid);
+    EXPECT_FALSE(m.nodes[5].valid);  // u = v = -1 marks a node outside the projection
 }
 
 TEST(WarpMesh, ReadsAnMpcdiPfmFileUpright) {
@@ -71,19 +73,22 @@ TEST(WarpMesh, TextRoundTripsThroughWarpText) {
 
 TEST(WarpMesh, PfmNodesSitOnTheOutputGridWithVUp) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
-    // 2 x 2, bottom row first; v grows upwards, so the top row shows the image's top (v = 1).
-    const std::string bytes = pfm(2, 2, {{0.0f, 0.0f}, {1.0f, 0.0f}, {0.25f, 1.0f}, {nan, nan}});
+    // 3 x 2, bottom row first; v grows upwards, so the top row shows the image's top (v = 1). The
+    // top-right node is outside; the left cell keeps its four nodes.
+    const auto nodes = [](glm::vec2 outside) {
+        return std::vector<glm::vec2>{{0.0f, 0.0f}, {0.5f, 0.0f}, {1.0f, 0.0f}, {0.25f, 1.0f}, {0.5f, 1.0f}, outside};
+    };
     for (float scale : {-1.0f, 1.0f}) {
         SCOPED_TRACE(scale);
-        const WarpMesh m =
-            parseWarpPfm(pfm(2, 2, {{0.0f, 0.0f}, {1.0f, 0.0f}, {0.25f, 1.0f}, {-1.0f, -1.0f}}, scale), "a.pfm");
+        const WarpMesh m = parseWarpPfm(pfm(3, 2, nodes({-1.0f, -1.0f}), scale), "a.pfm");
         EXPECT_EQ(m.nodes[0].xy, glm::vec2(0.0f, 0.0f));
         EXPECT_EQ(m.nodes[0].uv, glm::vec2(0.0f, 0.0f));
-        EXPECT_EQ(m.nodes[2].xy, glm::vec2(0.0f, 1.0f));  // node (0, 1): left, top row
-        EXPECT_EQ(m.nodes[2].uv, glm::vec2(0.25f, 1.0f));
-        EXPECT_FALSE(m.nodes[3].valid);  // -1 marks a node outside
+        EXPECT_EQ(m.nodes[1].xy, glm::vec2(0.5f, 0.0f));
+        EXPECT_EQ(m.nodes[3].xy, glm::vec2(0.0f, 1.0f));  // node (0, 1): left, top row
+        EXPECT_EQ(m.nodes[3].uv, glm::vec2(0.25f, 1.0f));
+        EXPECT_FALSE(m.nodes[5].valid);  // -1 marks a node outside
     }
-    EXPECT_FALSE(parseWarpPfm(bytes, "a.pfm").nodes[3].valid);  // so does NaN
+    EXPECT_FALSE(parseWarpPfm(pfm(3, 2, nodes({nan, nan})), "a.pfm").nodes[5].valid);  // so does NaN
 }
 
 TEST(WarpMesh, BadInputSaysWhereAndWhat) {
@@ -119,12 +124,20 @@ TEST(WarpMesh, BadInputSaysWhereAndWhat) {
         {"pfm out of range", pfm(2, 2, {{0, 0}, {1, 0}, {0, 1}, {1, 3}}), true,
          "a.pfm: node (1, 1) (column, row from the bottom): image position out of range (expected [0, 1], or NaN or "
          "-1 outside the projection, got 1, 3)"},
+        {"pfm: no cell inside", pfm(2, 2, {{0, 0}, {1, 0}, {0, 1}, {inf, 0}}), true,
+         "a.pfm: no grid cell has four valid nodes (expected at least one of the 1 cells inside the projection, got "
+         "none; the projector would show black)"},
+        {"text: no cell inside",
+         "cavewall-warp 1\n3 2\n0 0 0 0\n-1 -1 0.5 0\n1 0 1 0\n0 1 0 1\n0.5 1 0.5 1\n-1 -1 1 1\n", false,
+         "a.warp: no grid cell has four valid nodes (expected at least one of the 2 cells"},
         {"pfm infinity is outside, not an error", "", true, ""},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
         if (!*c.message) {
-            EXPECT_FALSE(parseWarpPfm(pfm(2, 2, {{0, 0}, {1, 0}, {0, 1}, {inf, 0}}), "a.pfm").nodes[3].valid);
+            EXPECT_FALSE(parseWarpPfm(pfm(3, 2, {{0, 0}, {0.5f, 0}, {1, 0}, {0, 1}, {0.5f, 1}, {inf, 0}}), "a.pfm")
+                             .nodes[5]
+                             .valid);
             continue;
         }
         if (c.isPfm)

@@ -286,6 +286,17 @@ TEST(Calibration, RefusesDegenerateInputNamingTheProblem) {
          }),
          scale, "lab.json: the fitted scale is 0.001 (expected within [0.5, 2]; are the tracker points in metres"},
         {"mirror", mirrored, {}, "lab.json: the points fit a mirror image, not a rotation: RMS"},
+        // Tracker in decimetres without a fitted scale: every residual is metres.
+        {"tracker in decimetres, no scale",
+         with([](auto& p) {
+             for (PointPair& q : p) q.tracker *= 10.0;
+         }),
+         {},
+         "lab.json: the fit's RMS residual is "},
+        {"pairs shuffled",
+         with([](auto& p) { std::swap(p[0].cave, p[3].cave); }),
+         {},
+         ", expected at most 100.0 mm (50 x the noise of 2.0 mm): no rotation and translation maps"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
@@ -348,6 +359,13 @@ TEST(Calibration, ParsesAPairsFile) {
         {R"({"pairs": [], "screens": {"front": {"lowerLeft": [0, 0, 0], "upperLeft": [0, 1, 0]}}})",
          "p.json: screens.front: missing required key 'lowerRight'"},
         {R"({"pairs": [], "screens": [1]})", "p.json: screens: expected an object"},
+        // Beyond 1000 m the fit's sums of squares overflow to infinity and NaN.
+        {R"({"pairs": [{"tracker": [1e300, 2, 3], "cave": [4, 5, 6]}]})",
+         "p.json: pairs[0].tracker[0]: expected a number in [-1000, 1000], got 1e+300"},
+        {R"({"pairs": [{"tracker": [1, 2, 3], "cave": [4, 5, -1000.5]}]})",
+         "p.json: pairs[0].cave[2]: expected a number in [-1000, 1000], got -1000.5"},
+        {R"({"pairs": [], "screens": {"front": {"lowerLeft": [0, 0, 0], "lowerRight": [0, 0, 2e3], "upperLeft": [0, 1, 0]}}})",
+         "p.json: screens.front.lowerRight[2]: expected a number in [-1000, 1000], got 2000"},
     };
     for (const auto& [text, message] : errors) {
         SCOPED_TRACE(text);

@@ -64,6 +64,33 @@ TEST(DisplayCli, BadConfigsGiveTheReadersErrorAndNonZeroExit) {
     EXPECT_THAT(r.err, HasSubstr("CONFIG"));
 }
 
+// The warp and blend files are read as a run reads them: sizes printed, a bad file refused
+// before the run, naming the screen and the file.
+TEST(DisplayCli, ReadsEachScreensWarpAndBlendFiles) {
+    const TempFolder folder("display_cli_correction");
+    const std::string screen = R"({"screens": [{"name": "front", "lowerLeft": [-1, 0, -1], "lowerRight": [1, 0, -1],
+                                      "upperLeft": [-1, 2, -1], "resolution": [64, 64], )";
+    writeFile(folder / "good.warp",
+              "cavewall-warp 1\n3 2\n0 0 0 0\n0.5 0 0.5 0\n1 0 1 0\n0 1 0 1\n0.5 1 0.5 1\n-1 -1 1 1\n");
+    writeFile(folder / "good.json", screen + R"("warp": "good.warp"}]})");
+    CliResult r = runCavewall({"display", (folder / "good.json").string()});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("screen front correction: warp 3 x 2 nodes (1 outside the projection)"));
+    writeFile(folder / "short.warp", "cavewall-warp 1\n3 3\n0 0 0 0\n");
+    writeFile(folder / "short.json", screen + R"("warp": "short.warp"}]})");
+    r = runCavewall({"display", (folder / "short.json").string()});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_THAT(r.err, HasSubstr("short.json: screens[0] 'front': "));
+    EXPECT_THAT(r.err, HasSubstr("short.warp: expected 9 node lines (3 x 3), got 1"));
+    writeFile(folder / "mask.png", "\x89PNG\r\n\x1a\n truncated");
+    writeFile(folder / "blend.json", screen + R"("blend": "mask.png"}]})");
+    r = runCavewall({"display", (folder / "blend.json").string()});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_THAT(r.err, HasSubstr("blend.json: screens[0] 'front': "));
+    EXPECT_THAT(r.err, HasSubstr("mask.png: PNG chunk at byte 8: expected 12 bytes of length, type and CRC, got 10 "
+                                 "(the file is truncated)"));
+}
+
 TEST(DisplayCli, RefusesToWriteOverItsInputOrAFolder) {
     const TempFolder folder("display_cli_refuse");
     const std::filesystem::path copy = folder / "cave4.json";

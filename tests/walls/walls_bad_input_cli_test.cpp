@@ -98,5 +98,19 @@ TEST(WallsBadInput, DegenerateModelsAreRefusedByWhatIsWrongWithTheModel) {
     }
 }
 
+// --rooms on a floor with one wall across it that closes no room: the storey is cut by the cost
+// model's grid, and the warning says so and why.
+TEST(WallsBadInput, RoomsThatCannotBeFoundAreReported) {
+    const std::filesystem::path model =
+        boxesFile({{-4, -0.1f, -4, 4, 0, 4}, {-0.1f, 0, -4, 0.1f, 3, 4}}).write("rooms-none.gltf");
+    const auto out = outputDir() / "rooms-none.json";
+    const CliResult r = runCavewall({"walls", model.string(), "--out", out.string(), "--rooms"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("floor plan: 1 wall elements, 0 rooms"));
+    EXPECT_THAT(r.err, HasSubstr("warning: --rooms: storey 0 is cut by grid "));
+    EXPECT_THAT(r.err, HasSubstr(" instead: no rooms were found (its floor plan: 1 wall elements, 0 rooms)"));
+    EXPECT_TRUE(std::filesystem::exists(out));
+}
+
 }  // namespace
 }  // namespace cavewall::test
