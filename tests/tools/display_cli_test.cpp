@@ -33,7 +33,7 @@ TEST(DisplayCli, PrintsEveryScreenAndTheModes) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     for (const char* name : {"front", "left", "right", "floor"})
         EXPECT_THAT(r.out, HasSubstr("\n  " + std::string(name)));
-    EXPECT_THAT(r.out, HasSubstr("4 screens, stereo mono, near 0.05 m, far infinite"));
+    EXPECT_THAT(r.out, HasSubstr("4 screens, stereo separate, near 0.05 m, far infinite"));
     EXPECT_THAT(r.out, HasSubstr("default head [0, 1.7, 0] m"));
     EXPECT_THAT(r.out, HasSubstr("shared edge: front and left"));
 }
