@@ -1,6 +1,6 @@
 #pragma once
 // A display with an overlap, for the tests of what `cavewall display` reports and draws
-// (tests/display/display_summary_test.cpp, tests/bench/display_figure_test.cpp).
+// (tests/display/display_summary_test.cpp, tests/app/bench/display_figure_test.cpp).
 
 #include "config/display_config.h"
 

@@ -1,6 +1,6 @@
 // `cavewall bench SCENE --quick` end to end on a small generated plant (headless GL): every mode
 // row is present with finite numbers, and bad input gives clear errors. `bench --scale`:
-// tests/bench/scale_bench_cli_test.cpp.
+// tests/app/bench/scale_bench_cli_test.cpp.
 #include "tests/support/run_cli.h"
 #include "tests/support/csv_table.h"
 #include "tests/support/files.h"

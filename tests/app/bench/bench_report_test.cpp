@@ -434,7 +434,7 @@ TEST(BenchReport, WritesFilesAndThePlot) {
     const test::CsvTable modes = test::readCsv(folder / "bench.csv");
     EXPECT_EQ(modes.column("mode"), (std::vector<std::string>{"full", "walls", "walls"}));
     EXPECT_EQ(modes.column("alpha_deg"), (std::vector<std::string>{"0", "10", "20"}));
-    // gnuplot drew it at the figure's size (its content: BenchPlot below and tests/bench/plot_test.cpp).
+    // gnuplot drew it at the figure's size (its content: BenchPlot below and tests/app/bench/plot_test.cpp).
     const scenes::Image png = scenes::readImage(folder / "bench.png");
     EXPECT_EQ(png.width, 1600);
     EXPECT_EQ(png.height, 640);
