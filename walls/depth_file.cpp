@@ -68,7 +68,7 @@ void writeDepthFile(const std::filesystem::path& file, const DepthImage& image) 
     });
 }
 
-DepthImage readDepthFile(const std::filesystem::path& file) {
+DepthImage readDepthFile(const std::filesystem::path& file, std::optional<glm::ivec2> expectedSize) {
     auto in = OIIO::ImageInput::open(file.string());
     if (!in) throw Error(file.string() + ": cannot read the depth file (" + OIIO::geterror() + ")");
     const OIIO::ImageSpec& spec = in->spec();
@@ -83,6 +83,10 @@ DepthImage readDepthFile(const std::filesystem::path& file) {
                     std::to_string(kMaxDepthFileSide) + " texels (the largest bake), got " +
                     std::to_string(spec.width) + " x " + std::to_string(spec.height) +
                     (spec.depth > 1 ? " x " + std::to_string(spec.depth) : std::string()));
+    if (expectedSize && glm::ivec2(spec.width, spec.height) != *expectedSize)
+        throw Error(file.string() + ": expected " + std::to_string(expectedSize->x) + " x " +
+                    std::to_string(expectedSize->y) + " texels (the march's depths of its colour), got " +
+                    std::to_string(spec.width) + " x " + std::to_string(spec.height));
     DepthImage image{spec.width, spec.height, std::vector<float>(std::size_t(spec.width) * spec.height)};
     if (spec.format == OIIO::TypeDesc::FLOAT) {  // a bake from before the 16-bit codes
         if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, image.depth.data()))

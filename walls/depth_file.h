@@ -17,6 +17,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace cavewall::walls {
@@ -38,7 +39,9 @@ double depthFileError(double d);
 void writeDepthFile(const std::filesystem::path& file, const DepthImage& image);
 // Throws cavewall::Error naming the file when it is unreadable, not one channel of 16-bit codes
 // or 32-bit floats, larger than kMaxDepthFileSide on a side, or (floats) holds a NaN or a
-// negative depth.
-DepthImage readDepthFile(const std::filesystem::path& file);
+// negative depth. With `expectedSize` (what the runtime always knows: the march's depths of the
+// colour texture) a file of another size is refused from its header, before anything is
+// allocated for its texels.
+DepthImage readDepthFile(const std::filesystem::path& file, std::optional<glm::ivec2> expectedSize = std::nullopt);
 
 }  // namespace cavewall::walls

@@ -98,13 +98,8 @@ std::optional<DecodedTexture> TexturePager::load(int id, const BakedTexture& tex
         const auto depthPath = _folder / texture.depthFile;
         const CheckedFile depthBytes = checkFile(depthPath, texture.depthBytes, texture.depthHash);
         if (!depthBytes.bytes) return refuse(depthPath, depthBytes.problem);
-        DepthImage depth = readDepthFile(depthPath);
         // The file holds the march's depths (marchDepths, done by the bake).
-        const glm::ivec2 march = marchDepthSize(d.levels.width(), d.levels.height());
-        if (glm::ivec2(depth.width, depth.height) != march)
-            throw Error(depthPath.string() + ": expected the march's depths of its colour, " + std::to_string(march.x) +
-                        " x " + std::to_string(march.y) + ", got " + std::to_string(depth.width) + " x " +
-                        std::to_string(depth.height));
+        DepthImage depth = readDepthFile(depthPath, marchDepthSize(d.levels.width(), d.levels.height()));
         const CheckedFile again = checkFile(depthPath, texture.depthBytes, texture.depthHash);
         if (!again.bytes) return refuse(depthPath, again.problem + " (while decoding)");
         clampDepths(depth, texture.depthRange);

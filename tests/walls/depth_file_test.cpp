@@ -83,6 +83,11 @@ TEST(DepthFile, DepthsRoundTripWithinTheCodesPrecision) {
     EXPECT_EQ(clamped.depth[0], kNoSurface);
     EXPECT_THROW(writeDepthFile(dir / "bad.depth.tif", DepthImage{3, 3, {1.0f}}), Error);
     EXPECT_THROW(readDepthFile(dir / "missing.depth.tif"), Error);
+    // The size the runtime expects: the same file read with it, and refused from its header with another.
+    EXPECT_EQ(readDepthFile(dir / "d.depth.tif", glm::ivec2(7, 5)).depth, back.depth);
+    EXPECT_THAT([&] { readDepthFile(dir / "d.depth.tif", glm::ivec2(8, 5)); },
+                ::testing::ThrowsMessage<Error>(HasSubstr("d.depth.tif: expected 8 x 5 texels (the march's depths of its "
+                                                          "colour), got 7 x 5")));
 }
 
 // Bakes from before the 16-bit codes stored 32-bit floats: still read, bit for bit.
