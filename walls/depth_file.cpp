@@ -69,8 +69,13 @@ void writeDepthFile(const std::filesystem::path& file, const DepthImage& image) 
 }
 
 DepthImage readDepthFile(const std::filesystem::path& file, std::optional<glm::ivec2> expectedSize) {
-    auto in = OIIO::ImageInput::open(file.string());
-    if (!in) throw Error(file.string() + ": cannot read the depth file (" + OIIO::geterror() + ")");
+    // Only the TIFF reader: ImageInput::open would try every other format's reader on a file
+    // that is not a TIFF, and some abort on a corrupt file.
+    auto in = OIIO::ImageInput::create("tiff");
+    OIIO::ImageSpec opened;
+    if (!in || !in->open(file.string(), opened))
+        throw Error(file.string() + ": cannot read the depth file, expected a TIFF (" +
+                    (in ? in->geterror() : OIIO::geterror()) + ")");
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.nchannels != 1 || spec.width <= 0 || spec.height <= 0)
         throw Error(file.string() + ": expected one depth channel, got " + std::to_string(spec.nchannels) +
