@@ -331,12 +331,18 @@ void addEveryCandidate(Proposals& out, const CandidateInputs& in, const Rect& wa
     addCandidate(out, in, std::move(rooms->description), rooms->shape, rooms->scored);
 }
 
-// The floor plan's room tour (walls/room_tour.h) becomes the walk of every candidate whose cells
-// hold each of its points, when the plan has doorways (a grid's loop crosses walls there).
-void walkTheRooms(Proposals& out, const CandidateInputs& in) {
+// The floor plan's room tour (walls/room_tour.h) becomes every grid candidate's walk when the
+// plan has doorways (a grid's loop crosses walls there): the rooms its cells hold (the grids
+// cover one rectangle, `walkable`), when that tour leaves its first room.
+void walkTheRooms(Proposals& out, const CandidateInputs& in, const Rect& walkable) {
     if (!in.rooms || in.rooms->plan.doorways.empty()) return;
-    const std::vector<glm::dvec3> tour = roomTour(in.rooms->grid.grid, in.rooms->plan, in.floorY + in.eyeHeight);
-    if (tour.size() < 2) return;
+    const auto holds = [&](glm::dvec2 p) {
+        return p.x >= walkable.lo.x && p.x <= walkable.hi.x && p.y >= walkable.lo.y && p.y <= walkable.hi.y;
+    };
+    const StoreyRooms& rooms = *in.rooms;
+    const std::vector<glm::dvec3> tour =
+        roomTour(rooms.grid.grid, rooms.plan, in.floorY + in.eyeHeight, RoomTourOptions{}, holds);
+    if (tour.size() < 2 || !holds({tour.front().x, tour.front().z})) return;
     for (std::size_t n = 0; n < out.descriptions.size(); ++n) {
         scenes::SceneDescription& d = out.descriptions[n];
         if (out.candidates[n].floorPlan) continue;  // its own tour already
@@ -350,7 +356,7 @@ void walkTheRooms(Proposals& out, const CandidateInputs& in) {
 
 void addCandidates(Proposals& out, const CandidateInputs& in, const Rect& walkable) {
     addEveryCandidate(out, in, walkable);
-    walkTheRooms(out, in);
+    walkTheRooms(out, in, walkable);
 }
 
 int chooseCandidate(const std::vector<AutoWallsCandidate>& candidates, bool preferRooms) {

@@ -17,7 +17,7 @@ constexpr int kSteps[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {1, -1},
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The cells one leg may use: those of `room` and of doorway `door` (-1: none); with `any`, every
-// room's and doorway's.
+// room's and doorway's and every other floor cell but a wall's.
 struct LegCells {
     int room = -1, door = -1;
     bool any = false;
@@ -46,11 +46,11 @@ public:
     }
 
     bool allowed(int c, LegCells leg) const {
-        if (leg.any) return plan_.room[c] >= 0 || plan_.opening[c] >= 0;
+        if (leg.any) return plan_.room[c] >= 0 || plan_.opening[c] >= 0 || (g_.floor[c] && !g_.wall[c]);
         return plan_.room[c] == leg.room || (leg.door >= 0 && plan_.opening[c] == leg.door);
     }
 
-    // The centre of the room or doorway cell nearest p within `reach` metres; nullopt when none.
+    // The centre of the `any` cell nearest p within `reach` metres; nullopt when none.
     std::optional<glm::dvec2> nearestAllowed(glm::dvec2 p, double reach) const {
         const int c = cellAt(p);
         if (c >= 0 && allowed(c, {-1, -1, true})) return p;
@@ -206,8 +206,8 @@ glm::dvec2 roomCellNear(const FloorGrid& g, const FloorPlan& plan, int r, glm::d
 
 }  // namespace
 
-std::vector<glm::dvec3> roomTour(const FloorGrid& g, const FloorPlan& plan, double eyeY,
-                                 const RoomTourOptions& options) {
+std::vector<glm::dvec3> roomTour(const FloorGrid& g, const FloorPlan& plan, double eyeY, const RoomTourOptions& options,
+                                 const std::function<bool(glm::dvec2)>& holds) {
     assert(!plan.rooms.empty() && options.clearance > 0.0 && options.nearWallCost >= 1.0);
     Router router(g, plan, options);
     const std::vector<glm::dvec2> doors = doorPoints(g, plan, router);
@@ -231,6 +231,8 @@ std::vector<glm::dvec3> roomTour(const FloorGrid& g, const FloorPlan& plan, doub
             std::vector<glm::dvec2> out = router.leg(plan.rooms[r].inner, doors[d], {r, through});
             std::vector<glm::dvec2> in = router.leg(doors[d], plan.rooms[next].inner, {next, through});
             if (out.empty() || in.empty()) continue;  // the doorway's cells do not join the rooms'
+            if (holds && !(std::all_of(out.begin(), out.end(), holds) && std::all_of(in.begin(), in.end(), holds)))
+                continue;
             add(out);
             add(in);
             visit(next);

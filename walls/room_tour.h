@@ -19,6 +19,7 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <vector>
 
 namespace cavewall::walls {
@@ -29,14 +30,17 @@ struct RoomTourOptions {
 };
 
 // The tour of `plan`'s rooms (at least one) found in `grid`, at height eyeY: (x, eyeY, z)
-// points, no two consecutive ones equal.
+// points, no two consecutive ones equal. With `holds`, a doorway whose legs have a point (x, z)
+// where it is false is not walked through (nor the rooms only it leads to).
 std::vector<glm::dvec3> roomTour(const FloorGrid& grid, const FloorPlan& plan, double eyeY,
-                                 const RoomTourOptions& options = {});
+                                 const RoomTourOptions& options = {},
+                                 const std::function<bool(glm::dvec2)>& holds = {});
 
-// The cheapest walk over the cells of every room and doorway of `plan`, costed and thinned as a
-// tour's leg, from `from` to `to` (x, z): `from`, the room or doorway cell nearest it (within
-// 1 m), the walk's turns, the cell nearest `to`, `to`. Empty when either point has no such cell
-// within 1 m or no walk joins them.
+// The cheapest walk from `from` to `to` (x, z) over the cells of every room and doorway of
+// `plan` and, where those do not join, over any other floor cell but a wall's (a closed
+// opening, a slit), costed and thinned as a tour's leg (such a cell counts as against a wall):
+// `from`, the cell nearest it (within 1 m), the walk's turns, the cell nearest `to`, `to`.
+// Empty when either point has no such cell within 1 m or no walk joins them.
 std::vector<glm::dvec2> roomRoute(const FloorGrid& grid, const FloorPlan& plan, glm::dvec2 from, glm::dvec2 to,
                                   const RoomTourOptions& options = {});
 

@@ -140,6 +140,16 @@ TEST(RoomTour, RoomCellsWalkItWithoutCrossingTheirRealWalls) {
     }
 }
 
+// A tour kept to x < 9 (a grid candidate's rectangle) leaves D, beyond its doorway at x = 9, out.
+TEST(RoomTour, KeepsToWhereItIsHeld) {
+    const FloorGrid g = gridOf(fourRooms());
+    const FloorPlan plan = findRooms(g);
+    const std::vector<glm::dvec3> tour = roomTour(g, plan, 1.7, {}, [](glm::dvec2 p) { return p.x < 9.0; });
+    ASSERT_GE(tour.size(), 2u);
+    for (const glm::dvec3& p : tour) EXPECT_LT(p.x, 9.0);
+    EXPECT_GT(roomTour(g, plan, 1.7).size(), tour.size());
+}
+
 // A route between two points walks over rooms and doorways: from B through C into A's upper
 // half, crossing no wall; a point 2 m outside the outline has no room cell within 1 m.
 TEST(RoomTour, RoutesKeepToRoomsAndDoorways) {
