@@ -244,8 +244,7 @@ void proposeStoreys(AutoWallsResult& result, const scenes::Scene& scene, const S
     const auto storeys = static_cast<double>(found.storeys.size());
     each.textureBudgetMB = options.textureBudgetMB / storeys;
     std::vector<scenes::SceneDescription> chosen;
-    std::vector<StoreyRooms> plans;
-    plans.reserve(found.storeys.size());  // `in` below points at its storey's
+    std::vector<StoreyRooms> plans;  // those with rooms; empty for the others (a grid can be large)
     for (std::size_t i = 0; i < found.storeys.size(); ++i) {
         const Storey& s = found.storeys[i];
         const ModelParts own = storeyParts(parts, s.floorY, s.ceilingY);
@@ -265,7 +264,7 @@ void proposeStoreys(AutoWallsResult& result, const scenes::Scene& scene, const S
             }
         }
         AutoWallsStorey figures{s, walkable.lo, walkable.hi};
-        const StoreyRooms& rooms = plans.emplace_back(storeyRooms(scene, s.floorY, s.ceilingY, walkable, figures));
+        StoreyRooms rooms = storeyRooms(scene, s.floorY, s.ceilingY, walkable, figures);
         const CandidateInputs in{named, own, each, eyes, s.floorY, s.ceilingY, base.eyeHeight, &rooms};
         Proposals proposals =
             proposeStorey(result, in, walkable, static_cast<int>(i), options.planLimitMetres / storeys, step, onPath);
@@ -280,6 +279,7 @@ void proposeStoreys(AutoWallsResult& result, const scenes::Scene& scene, const S
         figures.cells = cells;
         result.storeys.push_back(figures);
         chosen.push_back(std::move(proposals.descriptions[pick]));
+        plans.push_back(rooms.plan.rooms.empty() ? StoreyRooms{} : std::move(rooms));
     }
     result.description = stackStoreys(chosen, found, base.eyeHeight, roomsRoute(plans, chosen, base.eyeHeight));
     scenes::validateSceneDescription(result.description, "auto walls (storeys)");
