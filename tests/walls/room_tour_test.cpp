@@ -140,6 +140,22 @@ TEST(RoomTour, RoomCellsWalkItWithoutCrossingTheirRealWalls) {
     }
 }
 
+// Rooms no doorway joins are joined by other floor off the walls: A's door narrowed to a 0.5 m
+// slit (narrower than a door: no doorway) still lets a route from A into C through it.
+TEST(RoomTour, RoutesTakeOtherFloorWhereNoDoorwayJoins) {
+    std::vector<WallRect> walls = fourRooms();
+    walls[5] = {{5.9, 7.0}, {6.1, 8.0}};  // x = 6 above the slit, z 6.5 to 7.0
+    const FloorGrid g = gridOf(walls);
+    const FloorPlan plan = findRooms(g);
+    ASSERT_EQ(plan.rooms.size(), 4u);
+    ASSERT_EQ(plan.doorways.size(), 2u);  // B-C and C-D only
+    const std::vector<glm::dvec2> route = roomRoute(g, plan, {2.0, 6.0}, {7.5, 6.0});
+    ASSERT_GE(route.size(), 2u);
+    for (std::size_t n = 0; n + 1 < route.size(); ++n)
+        for (std::size_t w = 0; w < walls.size(); ++w)
+            EXPECT_FALSE(crosses(route[n], route[n + 1], walls[w])) << "segment " << n << ", wall " << w;
+}
+
 // A tour kept to x < 9 (a grid candidate's rectangle) leaves D, beyond its doorway at x = 9, out.
 TEST(RoomTour, KeepsToWhereItIsHeld) {
     const FloorGrid g = gridOf(fourRooms());
