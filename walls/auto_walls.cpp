@@ -2,10 +2,12 @@
 
 #include "config/error.h"
 #include "scenes/loader.h"
+#include "scenes/region.h"
 #include "scenes/scene_description_io.h"
 #include "walls/auto_rooms.h"
 #include "walls/auto_walls_candidates.h"
 #include "walls/room_cells.h"
+#include "walls/room_tour.h"
 #include "walls/storeys.h"
 
 #include <algorithm>
@@ -217,6 +219,23 @@ Proposals proposeStorey(AutoWallsResult& result, const CandidateInputs& in, cons
     return proposals;
 }
 
+// Walks between storeys over each storey's rooms and doorways (walls/room_tour.h), where the
+// storey has rooms and its chosen cells hold every point of the walk at eye height.
+FloorRoute roomsRoute(const std::vector<StoreyRooms>& plans, const std::vector<scenes::SceneDescription>& chosen,
+                      double eyeHeight) {
+    return [&plans, &chosen, eyeHeight](int storey, glm::dvec3 from, glm::dvec3 to) -> std::vector<glm::dvec3> {
+        const StoreyRooms& rooms = plans[storey];
+        std::vector<glm::dvec3> walk;
+        if (rooms.plan.rooms.empty()) return walk;
+        for (const glm::dvec2& p : roomRoute(rooms.grid.grid, rooms.plan, {from.x, from.z}, {to.x, to.z})) {
+            walk.push_back({p.x, from.y, p.y});
+            if (scenes::findCell(chosen[storey].cells, walk.back() + glm::dvec3(0.0, eyeHeight, 0.0)) < 0) return {};
+        }
+        if (!walk.empty()) walk.back() = to;
+        return walk;
+    };
+}
+
 // 7. Every storey of `found` (two or more) cut on its own; the proposal stacks the chosen ones.
 void proposeStoreys(AutoWallsResult& result, const scenes::Scene& scene, const Storeys& found, const ModelParts& parts,
                     const scenes::SceneDescription& named, const scenes::SceneDescription& base,
@@ -225,6 +244,7 @@ void proposeStoreys(AutoWallsResult& result, const scenes::Scene& scene, const S
     const auto storeys = static_cast<double>(found.storeys.size());
     each.textureBudgetMB = options.textureBudgetMB / storeys;
     std::vector<scenes::SceneDescription> chosen;
+    std::vector<StoreyRooms> plans;  // those with rooms; empty for the others (a grid can be large)
     for (std::size_t i = 0; i < found.storeys.size(); ++i) {
         const Storey& s = found.storeys[i];
         const ModelParts own = storeyParts(parts, s.floorY, s.ceilingY);
@@ -244,7 +264,7 @@ void proposeStoreys(AutoWallsResult& result, const scenes::Scene& scene, const S
             }
         }
         AutoWallsStorey figures{s, walkable.lo, walkable.hi};
-        const StoreyRooms rooms = storeyRooms(scene, s.floorY, s.ceilingY, walkable, figures);
+        StoreyRooms rooms = storeyRooms(scene, s.floorY, s.ceilingY, walkable, figures);
         const CandidateInputs in{named, own, each, eyes, s.floorY, s.ceilingY, base.eyeHeight, &rooms};
         Proposals proposals =
             proposeStorey(result, in, walkable, static_cast<int>(i), options.planLimitMetres / storeys, step, onPath);
@@ -259,8 +279,9 @@ void proposeStoreys(AutoWallsResult& result, const scenes::Scene& scene, const S
         figures.cells = cells;
         result.storeys.push_back(figures);
         chosen.push_back(std::move(proposals.descriptions[pick]));
+        plans.push_back(rooms.plan.rooms.empty() ? StoreyRooms{} : std::move(rooms));
     }
-    result.description = stackStoreys(chosen, found, base.eyeHeight);
+    result.description = stackStoreys(chosen, found, base.eyeHeight, roomsRoute(plans, chosen, base.eyeHeight));
     scenes::validateSceneDescription(result.description, "auto walls (storeys)");
     const AutoWallsStorey& lowest = result.storeys.front();
     result.floorY = lowest.storey.floorY;

@@ -57,7 +57,8 @@
 //    cheapest candidate of every storey is chosen, and the proposal stacks them: cells named
 //    "<storey>/<cell>" with their storey's floorY (scenes::findCell picks a cell by height), one
 //    walk path visiting every storey in turn, up the stairs found (walls/storeys.h,
-//    stackStoreys).
+//    stackStoreys), to and from them over the storeys' rooms and doorways (walls/room_tour.h)
+//    where their cells hold that walk.
 // 8. Limits (walls/auto_walls_limits.h). A model without triangles, beyond
 //    scenes::kMaxSceneCoordinate, of one point or without a floor is refused up front. Grids
 //    are planned shortest virtual walls first while their total length stays within

@@ -3,6 +3,7 @@
 #include "scenes/region.h"
 #include "scenes/scene_description_io.h"
 #include "walls/plan_io.h"
+#include "walls/room_tour.h"
 #include "walls/zone_index.h"
 
 #include <algorithm>
@@ -314,7 +315,10 @@ AutoWallsCandidate evaluate(const scenes::SceneDescription& d, const std::vector
     return c;
 }
 
-void addCandidates(Proposals& out, const CandidateInputs& in, const Rect& walkable) {
+namespace {
+
+// 3.-5. without the floor plan's walk.
+void addEveryCandidate(Proposals& out, const CandidateInputs& in, const Rect& walkable) {
     std::optional<Rooms> rooms = roomsOf(in, walkable);
     const double roomsMetres = rooms ? wallMetres(rooms->description) : 0.0;
     const bool roomsFit = rooms && roomsMetres <= kMostPerCandidate * out.limitMetres;
@@ -325,6 +329,34 @@ void addCandidates(Proposals& out, const CandidateInputs& in, const Rect& walkab
         return;
     }
     addCandidate(out, in, std::move(rooms->description), rooms->shape, rooms->scored);
+}
+
+// The floor plan's room tour (walls/room_tour.h) becomes every grid candidate's walk when the
+// plan has doorways (a grid's loop crosses walls there): the rooms its cells hold (the grids
+// cover one rectangle, `walkable`), when that tour leaves its first room.
+void walkTheRooms(Proposals& out, const CandidateInputs& in, const Rect& walkable) {
+    if (!in.rooms || in.rooms->plan.doorways.empty()) return;
+    const auto holds = [&](glm::dvec2 p) {
+        return p.x >= walkable.lo.x && p.x <= walkable.hi.x && p.y >= walkable.lo.y && p.y <= walkable.hi.y;
+    };
+    const StoreyRooms& rooms = *in.rooms;
+    const std::vector<glm::dvec3> tour =
+        roomTour(rooms.grid.grid, rooms.plan, in.floorY + in.eyeHeight, RoomTourOptions{}, holds);
+    if (tour.size() < 2 || !holds({tour.front().x, tour.front().z})) return;
+    for (std::size_t n = 0; n < out.descriptions.size(); ++n) {
+        scenes::SceneDescription& d = out.descriptions[n];
+        if (out.candidates[n].floorPlan) continue;  // its own tour already
+        const bool held = std::all_of(tour.begin(), tour.end(),
+                                      [&](const glm::dvec3& p) { return scenes::findCell(d.cells, p) >= 0; });
+        if (held) d.walkPath = tour;
+    }
+}
+
+}  // namespace
+
+void addCandidates(Proposals& out, const CandidateInputs& in, const Rect& walkable) {
+    addEveryCandidate(out, in, walkable);
+    walkTheRooms(out, in, walkable);
 }
 
 int chooseCandidate(const std::vector<AutoWallsCandidate>& candidates, bool preferRooms) {

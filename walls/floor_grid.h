@@ -58,6 +58,10 @@ void markFloorRect(FloorGrid& g, glm::dvec2 lo, glm::dvec2 hi);
 // Marks as floor every cell whose centre lies in the triangle (x, z), either winding.
 void markFloorTriangle(FloorGrid& g, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c);
 
+// The 3-4 chamfer distance, in cells, from every cell of `g` to the nearest cell where `source`
+// (nx * nz flags, as FloorGrid::wall) is set; 1e9 / 3 everywhere when none is.
+std::vector<float> chamferDistance(const FloorGrid& g, const std::vector<std::uint8_t>& source);
+
 struct FloorGridOptions {
     double cellSize = 0.1;                       // metres, > 0
     std::vector<double> sliceHeights{0.5, 1.2};  // metres above the floor

@@ -1,11 +1,11 @@
 #include "walls/room_cells.h"
 
 #include "walls/auto_rooms.h"
+#include "walls/room_tour.h"
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -194,37 +194,6 @@ struct Builder {
     }
 };
 
-// The walk path (see the header): depth first from the largest room through its doorways.
-std::vector<glm::dvec3> roomTour(const FloorPlan& plan, double eyeY) {
-    std::vector<glm::dvec3> path;
-    std::vector<bool> seen(plan.rooms.size(), false);
-    auto point = [&](glm::dvec2 p) { return glm::dvec3(p.x, eyeY, p.y); };
-    std::function<void(int)> visit = [&](int r) {
-        seen[r] = true;
-        path.push_back(point(plan.rooms[r].inner));
-        for (const Doorway& door : plan.doorways) {
-            if (door.rooms[0] != r && door.rooms[1] != r) continue;
-            const int next = door.rooms[0] == r ? door.rooms[1] : door.rooms[0];
-            if (seen[next]) continue;
-            path.push_back(point(door.position));
-            visit(next);
-            path.push_back(point(door.position));
-            path.push_back(point(plan.rooms[r].inner));
-        }
-    };
-    int largest = 0;
-    for (std::size_t r = 1; r < plan.rooms.size(); ++r)
-        if (plan.rooms[r].area > plan.rooms[largest].area) largest = static_cast<int>(r);
-    visit(largest);
-    if (path.size() < 2) {
-        // No doorway: from the room's inner point to its bounds' centre, when they differ.
-        const Room& room = plan.rooms[largest];
-        const glm::dvec2 middle = 0.5 * (room.lo + room.hi);
-        if (glm::length(middle - room.inner) > 1e-6) path.push_back(point(middle));
-    }
-    return path;
-}
-
 }  // namespace
 
 StoreyRooms findStoreyRooms(const scenes::Scene& scene, double floorY, double ceilingY, glm::dvec2 lo, glm::dvec2 hi,
@@ -265,7 +234,7 @@ scenes::SceneDescription describeRooms(const scenes::SceneDescription& base, con
             if (p.k1 == q.k0 && std::max(p.i0, q.i0) < std::min(p.i1, q.i1))
                 build.walkEdge(int(a), int(b), false, p.k1, std::max(p.i0, q.i0), std::min(p.i1, q.i1));
         }
-    d.walkPath = roomTour(plan, floorY + eyeHeight);
+    d.walkPath = roomTour(g, plan, floorY + eyeHeight);
     const double headLow = floorY + std::max(0.5, eyeHeight - 0.5),
                  headHigh = std::min(ceilingY, floorY + eyeHeight + 0.3);
     d.headHeightRange = {headLow, std::max(headLow, headHigh)};

@@ -15,8 +15,7 @@
 // Where two cells meet, the shared edge is walked cell by cell: along a doorway it is a portal
 // (from the floor to `portalHeight`, at most the ceiling), across room cells on both sides a
 // virtual wall (floor to ceiling), along walls a real wall (runs of at least 0.3 m).
-// The walk path tours the rooms through their doorways, depth first from the largest room:
-// each room's inner point, each doorway's centre, at eye height.
+// The walk path is the rooms' tour through their doorways (walls/room_tour.h) at eye height.
 
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"

@@ -13,33 +13,6 @@ namespace {
 
 constexpr int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
 
-// 3-4 chamfer distance (in cells) from every cell to the nearest cell where `source` is set.
-std::vector<float> chamferDistance(const FloorGrid& g, const std::vector<std::uint8_t>& source) {
-    constexpr float kFar = 1e9f;
-    std::vector<float> d(source.size(), kFar);
-    for (std::size_t c = 0; c < source.size(); ++c)
-        if (source[c]) d[c] = 0.0f;
-    auto relax = [&](int i, int k, int di, int dk, float w) {
-        if (g.inside(i + di, k + dk)) d[g.index(i, k)] = std::min(d[g.index(i, k)], d[g.index(i + di, k + dk)] + w);
-    };
-    for (int k = 0; k < g.nz; ++k)
-        for (int i = 0; i < g.nx; ++i) {
-            relax(i, k, -1, 0, 3.0f);
-            relax(i, k, 0, -1, 3.0f);
-            relax(i, k, -1, -1, 4.0f);
-            relax(i, k, 1, -1, 4.0f);
-        }
-    for (int k = g.nz - 1; k >= 0; --k)
-        for (int i = g.nx - 1; i >= 0; --i) {
-            relax(i, k, 1, 0, 3.0f);
-            relax(i, k, 0, 1, 3.0f);
-            relax(i, k, 1, 1, 4.0f);
-            relax(i, k, -1, 1, 4.0f);
-        }
-    for (float& v : d) v /= 3.0f;
-    return d;
-}
-
 // 4-connected components of the cells where `member` is set: per cell its component or -1,
 // and the cells of each component.
 struct Components {

@@ -106,12 +106,15 @@ void append(std::vector<glm::dvec3>& path, glm::dvec3 p) {
     if (path.empty() || path.back() != p) path.push_back(p);
 }
 
-// Walks from the path's end to the floor point `to` over the walkable levels (a straight line
-// where they find no walk), at eye height.
-void walkTo(std::vector<glm::dvec3>& path, const Storeys& found, glm::dvec3 to, double eyeHeight) {
+// Walks from the path's end to the floor point `to` on storey `storey`: by `route` where it finds
+// a walk, else over the walkable levels (a straight line where they find none), at eye height.
+void walkTo(std::vector<glm::dvec3>& path, const Storeys& found, glm::dvec3 to, double eyeHeight,
+            const FloorRoute& route, int storey) {
     const glm::dvec3 eye(0.0, eyeHeight, 0.0);
-    if (found.walk)
-        for (const glm::dvec3& p : found.walk->route(path.back() - eye, to)) append(path, p + eye);
+    std::vector<glm::dvec3> walk;
+    if (route) walk = route(storey, path.back() - eye, to);
+    if (walk.empty() && found.walk) walk = found.walk->route(path.back() - eye, to);
+    for (const glm::dvec3& p : walk) append(path, p + eye);
     append(path, to + eye);
 }
 
@@ -200,7 +203,7 @@ Storeys findStoreys(const scenes::Scene& scene, const StoreyOptions& options) {
 }
 
 scenes::SceneDescription stackStoreys(const std::vector<scenes::SceneDescription>& perStorey, const Storeys& found,
-                                      double eyeHeight) {
+                                      double eyeHeight, const FloorRoute& route) {
     assert(!perStorey.empty() && perStorey.size() == found.storeys.size());
     scenes::SceneDescription out = perStorey.front();
     out.cells.clear();
@@ -232,9 +235,11 @@ scenes::SceneDescription stackStoreys(const std::vector<scenes::SceneDescription
         if (i > 0 && !out.walkPath.empty()) {
             const Stair* stair = stairBetween(found, static_cast<int>(i) - 1, out.cells, eyeHeight);
             if (stair) {
-                walkTo(out.walkPath, found, stair->path.front(), eyeHeight);
+                const int below = static_cast<int>(i) - 1;
+                walkTo(out.walkPath, found, stair->path.front(), eyeHeight, route, below);
                 for (const glm::dvec3& p : stair->path) append(out.walkPath, p + glm::dvec3(0.0, eyeHeight, 0.0));
-                walkTo(out.walkPath, found, path.front() - glm::dvec3(0.0, eyeHeight, 0.0), eyeHeight);
+                walkTo(out.walkPath, found, path.front() - glm::dvec3(0.0, eyeHeight, 0.0), eyeHeight, route,
+                       below + 1);
             } else {
                 out.walkBreaks.push_back(static_cast<int>(out.walkPath.size()));  // no frame between the storeys
             }

@@ -27,6 +27,7 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -71,6 +72,10 @@ struct Stair {
     std::vector<glm::dvec3> path;
 };
 
+// A storey's own walk on its floor from `from` to `to` (floor points, x, floor y, z): its
+// points from `from` to `to`; empty when it has none.
+using FloorRoute = std::function<std::vector<glm::dvec3>(int storey, glm::dvec3 from, glm::dvec3 to)>;
+
 struct Storeys {
     std::vector<Storey> storeys;  // bottom to top, at least one
     std::vector<Stair> stairs;    // by `from`, at most one each
@@ -100,7 +105,9 @@ int storeyAt(const std::vector<Storey>& storeys, double y);
 // path's start, at eye height above the levels it crosses. Without such a stair the upper path
 // starts a new piece (walkBreaks): nothing is walked between the storeys. Everything else
 // (models, viewer) is perStorey[0]'s. `perStorey` and `found.storeys` have the same size.
+// `route`, when set, walks on a storey's floor first (its rooms and doorways); the walkable
+// levels take over where it returns nothing.
 scenes::SceneDescription stackStoreys(const std::vector<scenes::SceneDescription>& perStorey, const Storeys& found,
-                                      double eyeHeight);
+                                      double eyeHeight, const FloorRoute& route = {});
 
 }  // namespace cavewall::walls

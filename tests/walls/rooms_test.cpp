@@ -310,6 +310,22 @@ void writePlanImage(const FloorGrid& g, const FloorPlan& p, const scenes::SceneD
     scenes::writeImage(file, image);
 }
 
+// How many points every 5 cm along `walk` lie in cells of neither a room nor a doorway.
+int walkOnWalls(const FloorGrid& g, const FloorPlan& p, const std::vector<glm::dvec3>& walk) {
+    int count = 0;
+    for (std::size_t n = 0; n + 1 < walk.size(); ++n) {
+        const glm::dvec2 a(walk[n].x, walk[n].z), b(walk[n + 1].x, walk[n + 1].z);
+        const int steps = 1 + static_cast<int>(glm::length(b - a) / 0.05);
+        for (int t = 0; t <= steps; ++t) {
+            const glm::dvec2 q = (glm::mix(a, b, double(t) / steps) - g.origin) / g.cellSize;
+            const int i = static_cast<int>(std::floor(q.x)), k = static_cast<int>(std::floor(q.y));
+            const int c = g.inside(i, k) ? g.index(i, k) : -1;
+            count += c < 0 || (p.room[c] < 0 && p.opening[c] < 0) ? 1 : 0;
+        }
+    }
+    return count;
+}
+
 // The clinic (a real two-storey BIM building, 1,091 wall elements and 254 doors in the IFC
 // model): both storeys fall into rooms joined by doorways. The ranges are wide: the counts
 // depend on how the geometry meets the grid; the figures measured are in the results.
@@ -328,9 +344,13 @@ TEST(Rooms, TheClinicsStoreysHaveRoomsAndDoorways) {
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         scenes::SceneDescription base;
         base.name = "clinic";
-        writePlanImage(rooms.grid.grid, rooms.plan,
-                       describeRooms(base, rooms.grid.grid, rooms.plan, s.floorY, s.ceilingY, 1.7),
-                       folder / ("storey" + std::to_string(i) + ".png"));
+        const scenes::SceneDescription cells =
+            describeRooms(base, rooms.grid.grid, rooms.plan, s.floorY, s.ceilingY, 1.7);
+        writePlanImage(rooms.grid.grid, rooms.plan, cells, folder / ("storey" + std::to_string(i) + ".png"));
+        // The walk keeps to the rooms and their doorways: no point every 5 cm of it lies on a wall.
+        const int onWalls = walkOnWalls(rooms.grid.grid, rooms.plan, cells.walkPath);
+        std::printf("storey %zu: walk %zu points, %d samples on walls\n", i, cells.walkPath.size(), onWalls);
+        EXPECT_EQ(onWalls, 0);
         std::vector<double> widths;
         for (const Doorway& d : rooms.plan.doorways) widths.push_back(d.width);
         std::sort(widths.begin(), widths.end());
