@@ -99,7 +99,9 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
                 EXPECT_TRUE(std::isinf(v) && v > 0) << name;
             else
                 EXPECT_TRUE(std::isfinite(v)) << name << " = " << row.at(name);
-            if (name != "psnr_gain_db") EXPECT_GE(v, 0.0) << name;
+            if (name != "psnr_gain_db") {
+                EXPECT_GE(v, 0.0) << name;
+            }
         }
         EXPECT_LE(row.number("flip_p95"), 1.0);
         EXPECT_GE(row.number("psnr_db"), row.number("worst_frame_psnr_db"));  // pooled: never below the worst
@@ -107,9 +109,13 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
             EXPECT_EQ(row.number("psnr_gain_db"), 0.0);
             EXPECT_EQ(row.number("flip_ratio"), 1.0);
         }
-        if (mode == "walls" || mode == "cells" || mode == "near") EXPECT_GT(row.number("flip_mean"), 0.0);
+        if (mode == "walls" || mode == "cells" || mode == "near") {
+            EXPECT_GT(row.number("flip_mean"), 0.0);
+        }
         EXPECT_GT(row.number("frame_ms_p50"), 0.0);
-        if (mode == "walls") EXPECT_GT(row.number("textures"), 0.0);
+        if (mode == "walls") {
+            EXPECT_GT(row.number("textures"), 0.0);
+        }
         EXPECT_EQ(row.number("over_alpha"), 0.0);
         // Paged from a cold start, textures arrive during the timed frames; every other mode
         // made them resident before (and modes without walls have none).
@@ -269,7 +275,9 @@ TEST(BenchSceneCli, ComparesAnotherSceneAndBakesOnDemandFromAnEmptyCache) {
             EXPECT_EQ(row.number("first_frame_s"), 0.0);
             EXPECT_EQ(row.number("textures_baked"), 0.0);
         }
-        if (row.at("scene") == "auto") EXPECT_GT(row.number("speedup"), 0.0);
+        if (row.at("scene") == "auto") {
+            EXPECT_GT(row.number("speedup"), 0.0);
+        }
     }
     // bench_frames.csv: per frame, the on-demand mode's fallbacks (summing to bench.csv's) and
     // its running total of textures baked, which never falls.
@@ -285,7 +293,9 @@ TEST(BenchSceneCli, ComparesAnotherSceneAndBakesOnDemandFromAnEmptyCache) {
     }
     EXPECT_EQ(onDemandFrames, 12);
     for (const test::CsvRow& row : csv)
-        if (row.at("transition") == "blend on demand") EXPECT_EQ(row.number("geometry_fallbacks"), fallbacks);
+        if (row.at("transition") == "blend on demand") {
+            EXPECT_EQ(row.number("geometry_fallbacks"), fallbacks);
+        }
     // The on-demand bake went into the private cache (one bake folder beside the marker), the
     // two scenes' bakes into the shared one.
     auto folders = [](const fs::path& dir) {
