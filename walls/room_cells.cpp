@@ -200,7 +200,14 @@ StoreyRooms findStoreyRooms(const scenes::Scene& scene, double floorY, double ce
                             const FloorGridOptions& gridOptions, const RoomOptions& roomOptions) {
     StoreyRooms out;
     out.grid = rasteriseStorey(scene, floorY, ceilingY, lo, hi, gridOptions);
-    out.plan = findRooms(out.grid.grid, roomOptions);
+    if (out.grid.wallElements > 0) {
+        out.plan = findRooms(out.grid.grid, roomOptions);
+        return out;
+    }
+    const std::size_t cells = out.grid.grid.wall.size();
+    out.plan.room.assign(cells, -1);
+    out.plan.opening.assign(cells, -1);
+    out.plan.barrier = out.grid.grid.wall;
     return out;
 }
 

@@ -40,7 +40,9 @@ struct StoreyRooms {
     FloorPlan plan;
 };
 
-// Rasterises storey [floorY, ceilingY) over (x, z) [lo, hi] and finds its rooms.
+// Rasterises storey [floorY, ceilingY) over (x, z) [lo, hi] and finds its rooms. A storey
+// without wall elements has no rooms (nothing bounds one): its plan is left empty, every cell
+// of no room and no doorway, without the distance transforms the search would cost.
 StoreyRooms findStoreyRooms(const scenes::Scene& scene, double floorY, double ceilingY, glm::dvec2 lo, glm::dvec2 hi,
                             const FloorGridOptions& gridOptions = {}, const RoomOptions& roomOptions = {});
 
