@@ -5,6 +5,7 @@
 // Argument: the plant is tiled N x N (halls 100 m apart, meshes shared) to show how both
 // methods scale with the object count; the views stay in the hall at the origin.
 #include "scenes/bvh.h"
+#include "scenes/cell_assignment.h"
 #include "scenes/generate.h"
 #include "scenes/region.h"
 
@@ -34,7 +35,7 @@ struct Fixture {
                 for (const Object& o : hall) addObject(plant.scene, o.mesh, shift * o.worldFromModel, o.name, o.role);
             }
         // Cell assignment as loadScene does it, so the cell filter has something to filter.
-        for (Object& o : plant.scene.objects) o.cell = findCell(plant.description.cells, o.worldBounds.centre());
+        assignCells(plant.scene, plant.description.cells);
         bvh = Bvh(plant.scene);
         glm::dmat4 projection(0.0);  // 90° fov, aspect 1, near 0.05, infinite far, reversed-Z
         projection[0][0] = projection[1][1] = 1.0;

@@ -43,7 +43,7 @@ Bvh::Bvh(const Scene& scene) {
     std::vector<int> cells;
     for (const Object& o : scene.objects) {
         bounds.push_back(o.worldBounds);
-        cells.push_back(o.cell);
+        cells.push_back(o.moreCells.empty() ? o.cell : -1);  // several cells: kept with any mask
     }
     *this = Bvh(bounds, std::move(cells));
 }

@@ -32,7 +32,8 @@ private:
 class Bvh {
 public:
     Bvh() = default;
-    // Builds over every object's worldBounds (and remembers each object's cell). The scene is
+    // Builds over every object's worldBounds (and remembers each object's cell; an object of
+    // several cells, Object::moreCells, is kept as one without a cell). The scene is
     // not referenced afterwards; rebuild when objects move.
     explicit Bvh(const Scene& scene);
     explicit Bvh(const std::vector<Bounds>& bounds, std::vector<int> cells = {});

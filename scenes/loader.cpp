@@ -2,6 +2,7 @@
 #include "scenes/loader.h"
 
 #include "config/error.h"
+#include "scenes/cell_assignment.h"
 #include "scenes/load_limits.h"
 #include "scenes/mesh_optimize.h"
 #include "scenes/mesh_split.h"
@@ -102,7 +103,7 @@ Scene loadScene(const SceneDescription& description, const TextureLimits& textur
     if (const TextureReport report = fitTextures(scene.images, textures); report.images > 0)
         scene.notes.push_back(describe(report));
     prepareForDrawing(scene);
-    for (Object& o : scene.objects) o.cell = findCell(description.cells, o.worldBounds.centre());
+    assignCells(scene, description.cells);
     return scene;
 }
 

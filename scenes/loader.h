@@ -34,8 +34,8 @@ inline constexpr double kStructureChunkMetres = 10.0;
 // Loads every model of a validated description, applies units, up axis and placement, tags
 // structure objects (and cuts wide ones, kStructureChunkMetres), prepares the meshes for
 // drawing (vertices welded, triangles ordered for the vertex cache unless the material
-// blends: scenes/mesh_optimize.h; the shape and the triangle count stay) and assigns each
-// object to the cell containing its centre. Images are reduced to `textures`
+// blends: scenes/mesh_optimize.h; the shape and the triangle count stay) and gives each
+// object to every cell it overlaps (scenes/cell_assignment.h). Images are reduced to `textures`
 // (scenes/texture_budget.h) and the outcome is one line of Scene::notes
 // ("textures: 41 images, ... MB decoded at full size -> ... MB, ...").
 Scene loadScene(const SceneDescription& description, const TextureLimits& textures = {});

@@ -1,9 +1,9 @@
 #pragma once
 // Cutting large meshes into chunks, so that a model exported as one huge mesh (a game level, a
 // merged CAD export: the real SponzaLOD4 and zdm2 models are one mesh each) can be culled per
-// view and divided into cells: a cell owns the objects whose centre lies in it
-// (scenes/loader.h), so one object spanning the whole building defeats every cell and every
-// frustum test.
+// view and divided into cells: a cell draws every object it overlaps
+// (scenes/cell_assignment.h), so one object spanning the whole building is drawn by every cell
+// and defeats every frustum test.
 //
 // splitLargeObjects cuts each object of role `role` (content by default; the loader also cuts
 // wide structure, scenes/loader.h) of scene.objects[first, end) whose world bounds are wider

@@ -95,15 +95,33 @@ struct Object {
     glm::dmat4 worldFromModel{1.0};
     bool flipWinding = false;  // det(worldFromModel) < 0: front faces are clockwise
     Role role = Role::Content;
-    int cell = -1;  // cell containing the object's centre, -1 = none/unknown
+    int cell = -1;               // the cell holding the object's centre, -1 = none/unknown
+    std::vector<int> moreCells;  // the other cells it overlaps (scenes/cell_assignment.h), ascending
     Bounds worldBounds;
 };
 
+// The object's cells: Object::cell (when >= 0), then Object::moreCells.
+inline std::vector<int> cellsOf(const Object& o) {
+    std::vector<int> out;
+    if (o.cell >= 0) out.push_back(o.cell);
+    out.insert(out.end(), o.moreCells.begin(), o.moreCells.end());
+    return out;
+}
+
+// Whether `pred` holds for one of the object's cells (Object::cell, then Object::moreCells).
+template <class Pred>
+bool anyCellOf(const Object& o, Pred pred) {
+    if (o.cell >= 0 && pred(o.cell)) return true;
+    for (int c : o.moreCells)
+        if (pred(c)) return true;
+    return false;
+}
+
 // Geometry paging by cell (walls/geometry_pager.h, render/gl/scene_gpu.h): content objects of
-// one of the scene's `cellCount` cells are loaded and freed with their cell; structure and
-// objects without a (valid) cell are always resident.
+// one of the scene's `cellCount` cells are loaded and freed with their cell; structure, objects
+// without a (valid) cell and objects of several cells are always resident.
 inline bool pagedWithCell(const Object& o, int cellCount) {
-    return o.role != Role::Structure && o.cell >= 0 && o.cell < cellCount;
+    return o.role != Role::Structure && o.cell >= 0 && o.cell < cellCount && o.moreCells.empty();
 }
 
 struct Scene {

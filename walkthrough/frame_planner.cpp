@@ -434,8 +434,9 @@ std::vector<int> objectsOfCells(const scenes::Scene& scene, const std::vector<bo
     std::vector<int> out;
     for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
         const scenes::Object& o = scene.objects[i];
-        if (o.role == scenes::Role::Structure || o.cell < 0 || o.cell >= static_cast<int>(cells.size()) ||
-            cells[o.cell])
+        const int count = static_cast<int>(cells.size());
+        if (o.role == scenes::Role::Structure || o.cell < 0 || o.cell >= count ||
+            scenes::anyCellOf(o, [&](int c) { return c < count && cells[c]; }))
             out.push_back(i);
     }
     return out;

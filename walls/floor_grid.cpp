@@ -157,9 +157,7 @@ void markWallSegment(FloorGrid& g, glm::dvec2 a, glm::dvec2 b) {
     // Steps of a quarter cell meet every cell the segment crosses but for corners it only grazes.
     const int steps = std::max(1, static_cast<int>(std::ceil(glm::length(b - a) / (0.25 * g.cellSize))));
     for (int s = 0; s <= steps; ++s) {
-        const glm::dvec2 p = (glm::mix(a, b, static_cast<double>(s) / steps) - g.origin) / g.cellSize;
-        const int i = static_cast<int>(std::floor(p.x)), k = static_cast<int>(std::floor(p.y));
-        if (g.inside(i, k)) g.wall[g.index(i, k)] = 1;
+        if (const int c = g.cellAt(glm::mix(a, b, static_cast<double>(s) / steps)); c >= 0) g.wall[c] = 1;
     }
 }
 

@@ -43,6 +43,13 @@ struct FloorGrid {
     int index(int i, int k) const { return k * nx + i; }
     bool inside(int i, int k) const { return i >= 0 && k >= 0 && i < nx && k < nz; }
     glm::dvec2 centre(int i, int k) const { return origin + cellSize * glm::dvec2(i + 0.5, k + 0.5); }
+    glm::dvec2 centre(int c) const { return centre(c % nx, c / nx); }
+    // The index of the cell holding (x, z) point p, -1 off the grid (or not finite).
+    int cellAt(glm::dvec2 p) const {
+        const glm::dvec2 q = glm::floor((p - origin) / cellSize);
+        if (!(q.x >= 0.0 && q.y >= 0.0 && q.x < nx && q.y < nz)) return -1;
+        return index(static_cast<int>(q.x), static_cast<int>(q.y));
+    }
 };
 
 // An empty grid (no wall, no floor) covering [lo, hi] with cells of `cellSize` (> 0).

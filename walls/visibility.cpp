@@ -285,16 +285,18 @@ WallContents wallContents(const scenes::Scene& scene, const scenes::SceneDescrip
         if (o.role == scenes::Role::Structure || o.worldBounds.empty()) continue;
         // Classifying is the cost here (objects x wall sides); an object neither possibly shown
         // through this wall nor touching the rectangle's box is neither baked nor intersecting.
-        const bool mayBake = o.cell < 0 || viewer < 0 || o.cell >= table.cellCount || shownCells[o.cell];
+        const bool anyCell = o.cell < 0 || viewer < 0 || o.cell >= table.cellCount;
+        const bool mayBake =
+            anyCell || scenes::anyCellOf(o, [&](int c) { return c < table.cellCount && shownCells[c]; });
         if (!mayBake && !overlaps(o.worldBounds, rect)) continue;
         const Placement p = classify(o.worldBounds, q, side);
         if (p == Placement::Intersecting) out.intersecting.push_back(i);
         if (p != Placement::Behind) continue;
-        bool shown = o.cell < 0 || viewer < 0;
-        if (!shown && o.cell < table.cellCount) {
-            const auto& through = table.throughWalls(viewer, o.cell);
-            shown = std::find(through.begin(), through.end(), wall) != through.end();
-        }
+        const bool shown = o.cell < 0 || viewer < 0 || scenes::anyCellOf(o, [&](int c) {
+                               if (c >= table.cellCount) return false;
+                               const auto& through = table.throughWalls(viewer, c);
+                               return std::find(through.begin(), through.end(), wall) != through.end();
+                           });
         if (!shown) continue;
         out.baked.push_back(i);
         double nearest = std::numeric_limits<double>::infinity();

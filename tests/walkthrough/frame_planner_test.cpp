@@ -97,6 +97,20 @@ constexpr int kBackBox = 2;  // hallScene's object in the cell behind the wall
 // Geometry paging (walls/geometry_pager.h): while the back cell's geometry is not resident, a
 // wall blending into it shows its textures alone (renormalised, counted); in its geometry zone,
 // where no texture is proven, the cell is drawn anyway and reported as forced.
+// An object standing in several cells (a wall between two rooms, scenes/cell_assignment.h) is
+// drawn with each of them; structure and objects of no cell with any.
+TEST(ObjectsOfCells, AnObjectIsDrawnWithAnyOfItsCells) {
+    scenes::Scene s;
+    s.objects.push_back(object("room 0 chair", scenes::Role::Content, {0, 0, 0}, {1, 1, 1}, 0));
+    s.objects.push_back(object("wall of rooms 1 and 2", scenes::Role::Content, {0, 0, 0}, {1, 3, 1}, 1));
+    s.objects.back().moreCells = {2};
+    s.objects.push_back(object("room 2 desk", scenes::Role::Content, {0, 0, 0}, {1, 1, 1}, 2));
+    s.objects.push_back(object("nowhere", scenes::Role::Content, {0, 0, 0}, {1, 1, 1}, -1));
+    EXPECT_EQ(objectsOfCells(s, {false, false, true}), (std::vector<int>{1, 2, 3}));
+    EXPECT_EQ(objectsOfCells(s, {false, true, false}), (std::vector<int>{1, 3}));
+    EXPECT_EQ(objectsOfCells(s, {true, false, false}), (std::vector<int>{0, 3}));
+}
+
 TEST_F(FramePlannerTest, ACellNotResidentKeepsTheWallTexturesUnlessNoneIsProven) {
     const WallSetup walls = setup(10.0);
     const FrameSelector selector(walls.plan, walls.table, description);

@@ -115,6 +115,36 @@ TEST(FrameSelect, CellsAndGeometryFollowTheEye) {
     EXPECT_EQ(outside.geometryCells, (std::vector<int>{0, 1}));
 }
 
+// Two storeys of the hall, the upper one 4 m up over the same floor regions (listed after the
+// lower ones): an eye upstairs is in the upper cell over it, not the lower one that comes first.
+TEST(FrameSelect, TheEyesCellIsOnItsOwnStorey) {
+    scenes::SceneDescription d = testing::hall();
+    const int lower = static_cast<int>(d.cells.size());
+    for (int c = 0; c < lower; ++c) {
+        scenes::Cell up = d.cells[c];
+        up.name += " upstairs";
+        up.floorY = 4.0;
+        d.cells.push_back(up);
+    }
+    for (std::size_t w = 0, n = d.walls.size(); w < n; ++w) {
+        scenes::VirtualWall up = d.walls[w];
+        up.name += " upstairs";
+        for (glm::dvec3* p : {&up.lowerLeft, &up.lowerRight, &up.upperLeft}) p->y += 4.0;
+        up.cells = {up.cells[0] + lower, up.cells[1] + lower};
+        d.walls.push_back(up);
+    }
+    const Plan plan = planZones(d, {});
+    const VisibilityTable table = computeVisibility(d);
+    const FrameSelector selector(plan, table, d);
+    EXPECT_EQ(selector.select({0.0, 1.7, 9.0}).cell, 0);
+    const FrameSelection up = selector.select({0.0, 5.7, 9.0});
+    EXPECT_EQ(up.cell, lower);
+    EXPECT_EQ(up.geometryCells, std::vector<int>{lower});
+    EXPECT_EQ(selector.select({0.0, 5.7, -9.0}).cell, lower + 1);
+    // Below the lowest floor the lowest storey's cell.
+    EXPECT_EQ(selector.select({0.0, -3.0, 9.0}).cell, 0);
+}
+
 TEST(FrameSelect, ANeighbourDrawnAsGeometryShowsWhatLiesBeyondItsFarWalls) {
     const scenes::SceneDescription d = testing::threeInARow();
     PlanOptions o;

@@ -114,12 +114,56 @@ TEST(RoomTour, WalksThroughTheDoorwaysAroundWallsAndVisitsEveryRoom) {
     }
     // Every room holds a point of the walk.
     std::vector<bool> visited(plan.rooms.size(), false);
-    for (const glm::dvec3& p : tour) {
-        const int i = static_cast<int>(std::floor((p.x - g.origin.x) / g.cellSize));
-        const int k = static_cast<int>(std::floor((p.z - g.origin.y) / g.cellSize));
-        if (const int r = plan.room[g.index(i, k)]; r >= 0) visited[r] = true;
-    }
+    for (const glm::dvec3& p : tour)
+        if (const int r = plan.room[g.cellAt(xz(p))]; r >= 0) visited[r] = true;
     for (std::size_t r = 0; r < visited.size(); ++r) EXPECT_TRUE(visited[r]) << "room " << r;
+}
+
+// The rooms in the order the tour stands in them (a room again after another counts again;
+// doorway cells count for none).
+std::vector<int> roomsWalked(const FloorGrid& g, const FloorPlan& plan, const std::vector<glm::dvec3>& tour) {
+    std::vector<int> rooms;
+    for (std::size_t n = 0; n + 1 < tour.size(); ++n)
+        for (int t = 0; t <= 20; ++t) {
+            const int r = plan.room[g.cellAt(glm::mix(xz(tour[n]), xz(tour[n + 1]), t / 20.0))];
+            if (r >= 0 && (rooms.empty() || rooms.back() != r)) rooms.push_back(r);
+        }
+    return rooms;
+}
+
+// From A the only doorway leads to C, from C to B and D: the tour goes A, C, then the nearer of
+// B and D, back through C to the other and stops there; a depth-first tour that walks every
+// way back would stand in A, C, B, C, D, C, A.
+TEST(RoomTour, GoesToTheNearestRoomNotSeenAndDoesNotWalkBack) {
+    const FloorGrid g = gridOf(fourRooms());
+    const FloorPlan plan = findRooms(g);
+    ASSERT_EQ(plan.rooms.size(), 4u);
+    const std::vector<int> rooms = roomsWalked(g, plan, roomTour(g, plan, 1.7));
+    ASSERT_EQ(rooms.size(), 5u);
+    const int a = rooms[0], c = rooms[1];
+    EXPECT_EQ(a, 0);  // the largest room
+    EXPECT_EQ(rooms[3], c);
+    EXPECT_NE(rooms[2], rooms[4]);
+    EXPECT_NE(rooms[4], a);
+}
+
+// A's door narrowed to a 0.5 m slit is no doorway, but a person walks through it: the tour
+// reaches C over the slit's floor and from there every room, crossing no wall.
+TEST(RoomTour, ReachesRoomsNoDoorwayJoinsOverOtherFloor) {
+    std::vector<WallRect> walls = fourRooms();
+    walls[5] = {{5.9, 7.0}, {6.1, 8.0}};  // x = 6 above the slit, z 6.5 to 7.0
+    const FloorGrid g = gridOf(walls);
+    const FloorPlan plan = findRooms(g);
+    ASSERT_EQ(plan.rooms.size(), 4u);
+    ASSERT_EQ(plan.doorways.size(), 2u);  // B-C and C-D only
+    const std::vector<glm::dvec3> tour = roomTour(g, plan, 1.7);
+    for (std::size_t n = 0; n + 1 < tour.size(); ++n)
+        for (std::size_t w = 0; w < walls.size(); ++w)
+            EXPECT_FALSE(crosses(xz(tour[n]), xz(tour[n + 1]), walls[w])) << "segment " << n << ", wall " << w;
+    std::vector<int> rooms = roomsWalked(g, plan, tour);
+    std::sort(rooms.begin(), rooms.end());
+    rooms.erase(std::unique(rooms.begin(), rooms.end()), rooms.end());
+    EXPECT_EQ(rooms, (std::vector<int>{0, 1, 2, 3}));
 }
 
 // The cells cut along the rooms walk the same tour, which crosses none of their real walls

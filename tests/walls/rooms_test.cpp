@@ -17,6 +17,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <chrono>
 
 namespace cavewall::walls {
@@ -54,6 +55,21 @@ FloorGrid threeRooms() {
     wallAtX(g, 8.0, 0.0, 2.5);
     wallAtX(g, 8.0, 3.5, 4.0);
     return g;
+}
+
+// cellAt: the cell whose square holds the point (lower edges inside, upper ones the next
+// cell's), -1 off the grid or for a point that is not a number.
+TEST(FloorGrid, CellAtIsTheCellWhoseSquareHoldsThePoint) {
+    const FloorGrid g = makeFloorGrid({-1.0, -1.0}, {1.0, 2.0}, 0.5);  // 4 x 6 cells
+    ASSERT_EQ(g.nx, 4);
+    ASSERT_EQ(g.nz, 6);
+    EXPECT_EQ(g.cellAt({-1.0, -1.0}), g.index(0, 0));
+    EXPECT_EQ(g.cellAt({-0.5, -0.75}), g.index(1, 0));  // on cell (1, 0)'s lower x edge
+    EXPECT_EQ(g.cellAt({0.9, 1.9}), g.index(3, 5));
+    EXPECT_EQ(g.centre(g.cellAt({0.2, 0.3})), g.centre(2, 2));
+    EXPECT_EQ(g.cellAt({1.0, 0.0}), -1);  // the grid's upper x edge
+    EXPECT_EQ(g.cellAt({-1.01, 0.0}), -1);
+    EXPECT_EQ(g.cellAt({0.0, std::nan("")}), -1);
 }
 
 TEST(Rooms, ThreeRoomsWithTwoDoors) {
@@ -310,20 +326,31 @@ void writePlanImage(const FloorGrid& g, const FloorPlan& p, const scenes::SceneD
     scenes::writeImage(file, image);
 }
 
-// How many points every 5 cm along `walk` lie in cells of neither a room nor a doorway.
-int walkOnWalls(const FloorGrid& g, const FloorPlan& p, const std::vector<glm::dvec3>& walk) {
-    int count = 0;
+// Where a walk goes, sampled every 5 cm: how many samples lie in wall cells, how many on floor
+// of neither a room nor a doorway (a closed opening, floor that is no room), and which rooms it
+// enters.
+struct WalkCount {
+    int onWalls = 0, offRooms = 0;
+    std::vector<bool> rooms;
+};
+
+WalkCount countWalk(const FloorGrid& g, const FloorPlan& p, const std::vector<glm::dvec3>& walk) {
+    WalkCount out;
+    out.rooms.assign(p.rooms.size(), false);
     for (std::size_t n = 0; n + 1 < walk.size(); ++n) {
         const glm::dvec2 a(walk[n].x, walk[n].z), b(walk[n + 1].x, walk[n + 1].z);
         const int steps = 1 + static_cast<int>(glm::length(b - a) / 0.05);
         for (int t = 0; t <= steps; ++t) {
-            const glm::dvec2 q = (glm::mix(a, b, double(t) / steps) - g.origin) / g.cellSize;
-            const int i = static_cast<int>(std::floor(q.x)), k = static_cast<int>(std::floor(q.y));
-            const int c = g.inside(i, k) ? g.index(i, k) : -1;
-            count += c < 0 || (p.room[c] < 0 && p.opening[c] < 0) ? 1 : 0;
+            const int c = g.cellAt(glm::mix(a, b, double(t) / steps));
+            if (c < 0 || g.wall[c]) {
+                ++out.onWalls;
+                continue;
+            }
+            if (p.room[c] >= 0) out.rooms[p.room[c]] = true;
+            out.offRooms += p.room[c] < 0 && p.opening[c] < 0 ? 1 : 0;
         }
     }
-    return count;
+    return out;
 }
 
 // The clinic (a real two-storey BIM building, 1,091 wall elements and 254 doors in the IFC
@@ -347,10 +374,15 @@ TEST(Rooms, TheClinicsStoreysHaveRoomsAndDoorways) {
         const scenes::SceneDescription cells =
             describeRooms(base, rooms.grid.grid, rooms.plan, s.floorY, s.ceilingY, 1.7);
         writePlanImage(rooms.grid.grid, rooms.plan, cells, folder / ("storey" + std::to_string(i) + ".png"));
-        // The walk keeps to the rooms and their doorways: no point every 5 cm of it lies on a wall.
-        const int onWalls = walkOnWalls(rooms.grid.grid, rooms.plan, cells.walkPath);
-        std::printf("storey %zu: walk %zu points, %d samples on walls\n", i, cells.walkPath.size(), onWalls);
-        EXPECT_EQ(onWalls, 0);
+        // The walk keeps off the walls (no point every 5 cm of it lies on one) and reaches
+        // nearly every room, over doorways or other floor.
+        const WalkCount walk = countWalk(rooms.grid.grid, rooms.plan, cells.walkPath);
+        const auto reached = std::count(walk.rooms.begin(), walk.rooms.end(), true);
+        std::printf("storey %zu: walk %zu points, %d samples on walls, %d off rooms and doorways, %ld of %zu rooms\n",
+                    i, cells.walkPath.size(), walk.onWalls, walk.offRooms, static_cast<long>(reached),
+                    walk.rooms.size());
+        EXPECT_EQ(walk.onWalls, 0);
+        EXPECT_GE(static_cast<double>(reached), 0.9 * static_cast<double>(walk.rooms.size()));
         std::vector<double> widths;
         for (const Doorway& d : rooms.plan.doorways) widths.push_back(d.width);
         std::sort(widths.begin(), widths.end());

@@ -149,13 +149,15 @@ WallContents everyObjectContents(const scenes::Scene& scene, const scenes::Scene
         if (o.role == scenes::Role::Structure || o.worldBounds.empty()) continue;
         const Placement p = classify(o.worldBounds, q, side);
         if (p == Placement::Intersecting) out.intersecting.push_back(i);
-        const bool known = o.cell >= 0 && viewer >= 0;
-        if (p != Placement::Behind || (known && o.cell >= t.cellCount)) continue;
-        if (known) {
-            const auto& through = t.throughWalls(viewer, o.cell);
-            if (std::find(through.begin(), through.end(), wall) == through.end()) continue;
+        if (p != Placement::Behind) continue;
+        // Shown through the wall from one of its cells (cells out of the table show nothing).
+        bool shown = o.cell < 0 || viewer < 0;
+        for (int c : scenes::cellsOf(o)) {
+            if (c >= t.cellCount) continue;
+            const auto& through = t.throughWalls(viewer, c);
+            shown = shown || std::find(through.begin(), through.end(), wall) != through.end();
         }
-        out.baked.push_back(i);
+        if (shown) out.baked.push_back(i);
     }
     return out;
 }
@@ -188,6 +190,7 @@ TEST(Visibility, WallContentsEqualsClassifyingEveryObject) {
             const glm::dvec3 half = glm::dvec3(u(rng), u(rng), u(rng)) * (i % 10 == 0 ? 4.0 : 0.6);
             o.worldBounds.add(centre - half), o.worldBounds.add(centre + half);
             o.cell = int(u(rng) * (d.cells.size() + 2)) - 1;  // -1 (unknown) .. cellCount (out of the table)
+            if (o.cell >= 0 && i % 4 == 1) o.moreCells = {int(u(rng) * (d.cells.size() + 1))};  // a second cell
             o.role = i % 17 == 0 ? scenes::Role::Structure : scenes::Role::Content;
             scene.objects.push_back(o);
         }

@@ -119,8 +119,13 @@ WarpPass::WarpPass(const scenes::Scene& scene, const render::gl::GpuScene& gpu, 
     for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i)
         if (scene.objects[i].role == scenes::Role::Structure)
             _structure.push_back(i);
-        else if (scene.objects[i].cell >= 0)
-            _cellObjects[scene.objects[i].cell].push_back(i);
+        else
+            addToCells(scene.objects[i], i);
+}
+
+void WarpPass::addToCells(const scenes::Object& o, int index) {
+    if (o.cell >= 0) _cellObjects[o.cell].push_back(index);
+    for (int c : o.moreCells) _cellObjects[c].push_back(index);
 }
 
 GLuint WarpPass::depthCopy(GLuint depth, glm::ivec2 size) {

@@ -64,7 +64,9 @@ private:
     const render::gl::GpuScene& _gpu;
     render::gl::RenderSettings _settings;
     double _nearB;
-    std::vector<int> _structure;                   // structure object indices
+    std::vector<int> _structure;  // structure object indices
+    // Lists object `index` under each of its cells (scenes/cell_assignment.h) in _cellObjects.
+    void addToCells(const scenes::Object& o, int index);
     std::map<int, std::vector<int>> _cellObjects;  // non-structure object indices by cell
     display::gl::GlObject _holeProgram, _warpProgram, _emptyVertexArray;
     std::map<std::pair<int, int>, display::gl::GlObject> _depthCopies;  // by size

@@ -1,0 +1,93 @@
+#include "scenes/cell_assignment.h"
+
+#include "scenes/region.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace cavewall::scenes {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// The (x, z) rectangle [lo, hi] as a counter-clockwise region (seen from +Y).
+std::vector<glm::dvec2> rectangle(glm::dvec2 lo, glm::dvec2 hi) {
+    return {{lo.x, hi.y}, {hi.x, hi.y}, {hi.x, lo.y}, {lo.x, lo.y}};
+}
+
+struct CellSpan {
+    glm::dvec2 lo{kInfinity}, hi{-kInfinity};  // the region's (x, z) bounds
+    double bottom = 0.0, top = kInfinity;      // heights an object must meet
+};
+
+std::vector<CellSpan> cellSpans(const std::vector<Cell>& cells) {
+    std::vector<CellSpan> spans(cells.size());
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+        for (const glm::dvec2& p : cells[c].region) {
+            spans[c].lo = glm::min(spans[c].lo, p);
+            spans[c].hi = glm::max(spans[c].hi, p);
+        }
+        spans[c].bottom = cells[c].floorY - kBelowFloor;
+    }
+    for (std::size_t c = 0; c < cells.size(); ++c)
+        for (std::size_t d = 0; d < cells.size(); ++d)
+            if (cells[d].floorY >= cells[c].floorY + kMinStoreyHeight && cells[d].floorY < spans[c].top &&
+                overlapArea(cells[c].region, cells[d].region) > 0.0)
+                spans[c].top = cells[d].floorY;
+    return spans;
+}
+
+bool meetsHeight(const CellSpan& s, const Bounds& box) {
+    return box.max.y >= s.bottom && box.min.y < s.top - kAboveTop;
+}
+
+CellsOfBox boxCells(const std::vector<Cell>& cells, const std::vector<CellSpan>& spans, const Bounds& box,
+                    double reach) {
+    CellsOfBox out;
+    if (box.empty()) return out;
+    const glm::dvec2 lo = glm::dvec2(box.min.x, box.min.z) - reach, hi = glm::dvec2(box.max.x, box.max.z) + reach;
+    const std::vector<glm::dvec2> footprint = rectangle(lo, hi);
+    const glm::dvec2 centre(box.centre().x, box.centre().z);
+    std::vector<int> overlapped;
+    int holding = -1, largest = -1;
+    double largestArea = 0.0;
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+        const CellSpan& s = spans[c];
+        if (!meetsHeight(s, box) || hi.x <= s.lo.x || lo.x >= s.hi.x || hi.y <= s.lo.y || lo.y >= s.hi.y) continue;
+        const double area = overlapArea(footprint, cells[c].region);
+        if (area <= 0.0) continue;
+        const int cell = static_cast<int>(c);
+        overlapped.push_back(cell);
+        if (holding < 0 && regionContains(cells[c].region, centre, 1e-6)) holding = cell;
+        if (area > largestArea) {
+            largestArea = area;
+            largest = cell;
+        }
+    }
+    if (overlapped.empty()) {
+        const int c = findCell(cells, box.centre());
+        if (c >= 0 && meetsHeight(spans[c], box)) out.cell = c;
+        return out;
+    }
+    out.cell = holding >= 0 ? holding : largest;
+    for (int c : overlapped)
+        if (c != out.cell) out.moreCells.push_back(c);
+    return out;
+}
+
+}  // namespace
+
+CellsOfBox cellsOfBox(const std::vector<Cell>& cells, const Bounds& box, double reach) {
+    return boxCells(cells, cellSpans(cells), box, reach);
+}
+
+void assignCells(Scene& scene, const std::vector<Cell>& cells, double reach) {
+    const std::vector<CellSpan> spans = cellSpans(cells);
+    for (Object& o : scene.objects) {
+        CellsOfBox c = boxCells(cells, spans, o.worldBounds, reach);
+        o.cell = c.cell;
+        o.moreCells = std::move(c.moreCells);
+    }
+}
+
+}  // namespace cavewall::scenes

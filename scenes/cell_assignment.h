@@ -1,0 +1,42 @@
+#pragma once
+// How a scene's objects are given to its cells (scene_description.h). GL-free.
+//
+// An object belongs to every cell it overlaps, so that a cell drawn as geometry draws all of
+// what stands in it: a long wall, a ceiling over several rooms or a duct through them is drawn
+// by each of those cells (objects are not cut at cell borders). It overlaps cell c when
+//   - in plan, its world box's (x, z) rectangle grown by `reach` on every side shares area with
+//     c's region (a room cell found in a floor plan stops at its walls' faces, so the walls
+//     themselves lie just outside it), and
+//   - in height, its box reaches above c's floor less kBelowFloor and starts below c's top
+//     less kAboveTop, c's top being the lowest floor of the cells over it in plan that lie at
+//     least kMinStoreyHeight higher (none: no top): the slab between two storeys belongs to
+//     both, a wall standing on the upper floor only to the upper storey.
+// Object::cell is the cell among them holding the box's centre in plan, else the one sharing
+// the most area; Object::moreCells the others. An object overlapping no cell keeps
+// findCell's cell of its centre (scenes/region.h) when its height range meets that cell's,
+// else none (-1: drawn with every cell).
+
+#include "scenes/scene.h"
+#include "scenes/scene_description.h"
+
+#include <vector>
+
+namespace cavewall::scenes {
+
+inline constexpr double kCellReachMetres = 0.3;  // metres an object's box is grown in plan
+inline constexpr double kMinStoreyHeight = 1.0;  // metres between floors of two storeys
+inline constexpr double kBelowFloor = 0.5;       // metres under a cell's floor it still holds
+inline constexpr double kAboveTop = 0.05;        // metres an object must reach under a cell's top
+
+struct CellsOfBox {
+    int cell = -1;               // -1: none
+    std::vector<int> moreCells;  // ascending, without `cell`
+};
+
+// The cells a world box belongs to (see the top of this file).
+CellsOfBox cellsOfBox(const std::vector<Cell>& cells, const Bounds& box, double reach = kCellReachMetres);
+
+// Sets Object::cell and Object::moreCells of every object of `scene` from its world bounds.
+void assignCells(Scene& scene, const std::vector<Cell>& cells, double reach = kCellReachMetres);
+
+}  // namespace cavewall::scenes
