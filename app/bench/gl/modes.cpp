@@ -217,8 +217,7 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         options.render.lodPixels = mode.lodPixels;
         options.triangleBudget = mode.triangleBudget;
         options.lodMaxPixels = c.lodMaxPixels;
-        options.wallKind = c.wallKind;
-        options.depthMarch = c.depthMarch;
+        options.wallKind = run.wallKind.value_or(c.wallKind);
         options.depthMarch = c.depthMarch;
         options.clusters.enabled = run.clusters;
         options.clusters.cache = c.clusterCache;

@@ -107,6 +107,7 @@ struct WalkRun {
     ModeAccumulator* acc = nullptr;  // not null; its mode's lodPixels, triangleBudget and
                                      // frameBudgetMs set the levels of detail and budgets
     walkthrough::Transition transition = walkthrough::Transition::Blend;
+    std::optional<walls::WallKind> wallKind;  // the walls' kind when not the context's (flat beside depth)
     // As `cavewall run` pages: in the background under the default texture budget and upload
     // limit, from a cold start (three warm-up frames), so the timed frames include every
     // page-in, upload and fallback. Otherwise every texture of the path is made resident in a
