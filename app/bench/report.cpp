@@ -541,7 +541,7 @@ std::string markdownReport(const BenchReport& report) {
 std::string framesCsv(const BenchReport& report) {
     std::string out =
         "mode,frame,frame_ms,triangles,draw_calls,uploaded_mb,over_alpha,predicted_ms,predicted_frame_ms,"
-        "floor_ms,geometry_fallbacks,textures_baked\n";
+        "floor_ms,geometry_fallbacks,textures_baked,kept_fallbacks\n";
     for (const ModeResult& m : report.modes)
         for (std::size_t i = 0; i < m.frames.size(); ++i)
             out += modeLabel(m) + "," + std::to_string(i) + "," + num(m.frames[i].frameMs, 6) + "," +
@@ -549,7 +549,7 @@ std::string framesCsv(const BenchReport& report) {
                    num(m.frames[i].uploadedMB, 6) + "," + std::to_string(m.frames[i].texturesOverAlpha) + "," +
                    num(m.frames[i].predictedMs, 6) + "," + num(m.frames[i].predictedFrameMs, 6) + "," +
                    num(m.frames[i].floorMs, 6) + "," + std::to_string(m.frames[i].geometryFallbacks) + "," +
-                   std::to_string(m.frames[i].texturesBaked) + "\n";
+                   std::to_string(m.frames[i].texturesBaked) + "," + std::to_string(m.frames[i].keptFallbacks) + "\n";
     return out;
 }
 

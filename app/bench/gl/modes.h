@@ -39,6 +39,7 @@ struct FrameCost {
     // frame time the controller predicted and the floor (0 without one).
     double clusterPredictedMs = 0.0, clusterPredictedFrameMs = 0.0, clusterFloorMs = 0.0;
     int geometryFallbacks = 0;  // FrameResult's: walls drawn as geometry for want of a texture
+    int keptFallbacks = 0;      // walls drawing the textures they drew last for want of the wanted ones
     int texturesBaked = 0;      // FrameResult's: baking on demand, baked so far
 };
 

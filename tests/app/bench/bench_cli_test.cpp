@@ -216,6 +216,14 @@ TEST(BenchSceneCli, StereoRunMeasuresTheStereoErrorPerEye) {
     }
     ASSERT_EQ(blendStereo.size(), 2u);
     EXPECT_GT(blendStereo.at("flat"), 3.0 * blendStereo.at("depth"));
+    // Walls with every texture resident never fall back; the paged mode may, to geometry or to
+    // the textures it drew last (bench_frames.csv counts both per frame).
+    for (const test::CsvRow& f : test::readCsv(out / "bench_frames.csv")) {
+        SCOPED_TRACE(f.at("mode") + " frame " + f.at("frame"));
+        const double kept = f.number("kept_fallbacks"), geometry = f.number("geometry_fallbacks");
+        EXPECT_TRUE(kept >= 0.0 && geometry >= 0.0);
+        if (f.at("mode").find("paged") == std::string::npos) EXPECT_EQ(kept + geometry, 0.0);
+    }
     for (const test::CsvRow& row : test::readCsv(out / "bench_screens.csv"))
         EXPECT_TRUE(std::isfinite(row.number("stereo_mean_arcmin"))) << row.at("screen");
 }
