@@ -58,8 +58,11 @@ const char* const kBenchUsage =
     "         noise floor: the last mode with each frame followed by one fixed frame, whose\n"
     "         p99/p50 is noise alone.\n"
     "         --walls depth: every walls mode bakes depth with colour and reprojects each wall\n"
-    "         pixel to the eye (walls/gl/depth_wall_pass.h); default flat. Run both\n"
-    "         into two --out folders to compare.\n"
+    "         pixel to the eye (walls/gl/depth_wall_pass.h); default flat. --walls\n"
+    "         flat,depth: depth walls as with --walls depth, and flat walls beside them at every\n"
+    "         alpha (blend, and with levels of detail), with their own plan and bake, drawn\n"
+    "         frame by frame in turn with the depth walls ('walls a=10 blend' beside 'walls\n"
+    "         depth a=10 blend'): both kinds' times, image and stereo errors in the same seconds.\n"
     "         --texture-format: storage of the baked colour (as `cavewall bake`, default\n"
     "         " DEFAULT_TEXTURE_FORMAT
     "); the disk and GPU MB columns and the image error include it.\n"
@@ -260,7 +263,12 @@ int runSceneBench(const Args& args) {
     o.triangleBudget = static_cast<std::size_t>(args.integer("triangle-budget", 0, 0, 1000000000));
     o.frameBudgetMs = args.number("frame-budget-ms", o.frameBudgetMs, 0.0, 1e5);
     o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);
-    o.wallKind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
+    const std::string kinds = args.getOr("walls", "flat");
+    if (kinds != "flat" && kinds != "depth" && kinds != "flat,depth")
+        throw Error("bench: --walls: expected flat, depth or flat,depth (flat walls beside depth walls), got '" +
+                    kinds + "'");
+    o.flatBeside = kinds == "flat,depth";
+    o.wallKind = kinds == "flat" ? walls::WallKind::Flat : walls::WallKind::Depth;
     o.keepSheets = args.has("keep-sheets");
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.clusters = args.has(args.renamed("hierarchy", "clusters"));

@@ -3,6 +3,7 @@
 #include "config/error.h"
 #include "scenes/file_write.h"
 #include "scenes/image_io.h"
+#include "walls/depth_wall.h"
 #include "app/bench/gnuplot.h"
 #include "app/bench/report_plot.h"
 
@@ -406,7 +407,7 @@ std::string csvHeader() {
            "popping_peak,popping_rms,psnr_gain_db,flip_ratio,over_alpha,uploaded_mb_p50,uploaded_mb_p99,uploaded_mb_"
            "mean,"
            "p95_over_budget,floor_ms,first_frame_s,geometry_fallbacks,fallback_frames,fallbacks_until_frame,textures_"
-           "baked,speedup_lod,scene,stereo_mean_arcmin,stereo_beyond_share,recommended";
+           "baked,speedup_lod,scene,stereo_mean_arcmin,stereo_beyond_share,wall_kind,recommended";
 }
 
 std::string csvRow(const ModeResult& m, bool recommended) {
@@ -462,7 +463,8 @@ std::string csvRow(const ModeResult& m, bool recommended) {
     for (double v : values) row += "," + num(v);
     for (double v : onDemand) row += "," + num(v);
     return row + "," + num(m.speedupLod) + "," + (m.sceneTag.empty() ? "bench" : m.sceneTag) + "," +
-           stereoCsv(m.error) + (recommended ? ",1" : ",0");
+           stereoCsv(m.error) + "," + std::string(m.mode == Mode::Walls ? walls::wallKindName(m.wallKind) : "") +
+           (recommended ? ",1" : ",0");
 }
 
 namespace {
@@ -539,7 +541,7 @@ std::string markdownReport(const BenchReport& report) {
 std::string framesCsv(const BenchReport& report) {
     std::string out =
         "mode,frame,frame_ms,triangles,draw_calls,uploaded_mb,over_alpha,predicted_ms,predicted_frame_ms,"
-        "floor_ms,geometry_fallbacks,textures_baked\n";
+        "floor_ms,geometry_fallbacks,textures_baked,kept_fallbacks\n";
     for (const ModeResult& m : report.modes)
         for (std::size_t i = 0; i < m.frames.size(); ++i)
             out += modeLabel(m) + "," + std::to_string(i) + "," + num(m.frames[i].frameMs, 6) + "," +
@@ -547,7 +549,7 @@ std::string framesCsv(const BenchReport& report) {
                    num(m.frames[i].uploadedMB, 6) + "," + std::to_string(m.frames[i].texturesOverAlpha) + "," +
                    num(m.frames[i].predictedMs, 6) + "," + num(m.frames[i].predictedFrameMs, 6) + "," +
                    num(m.frames[i].floorMs, 6) + "," + std::to_string(m.frames[i].geometryFallbacks) + "," +
-                   std::to_string(m.frames[i].texturesBaked) + "\n";
+                   std::to_string(m.frames[i].texturesBaked) + "," + std::to_string(m.frames[i].keptFallbacks) + "\n";
     return out;
 }
 

@@ -38,6 +38,8 @@ struct FrameSample {
     double predictedMs = 0.0, predictedFrameMs = 0.0, floorMs = 0.0;
     int geometryFallbacks = 0;  // walls drawn as geometry for want of a texture
                                 // (FrameResult::geometryFallbacks)
+    int keptFallbacks = 0;      // walls drawing the textures they drew last for want of the
+                                // wanted ones (paged modes)
     int texturesBaked = 0;      // baking on demand: textures baked so far (running total)
 };
 

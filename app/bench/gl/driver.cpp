@@ -5,6 +5,7 @@
 #include "display/timing.h"
 #include "display/gl/context.h"
 #include "scenes/loader.h"
+#include "app/bench/gl/baked_walls.h"
 #include "app/bench/gl/modes.h"
 #include "app/bench/private_cache.h"
 #include "app/gl/run_session.h"
@@ -26,42 +27,6 @@ using namespace bench;
 
 namespace {
 
-struct BakedWalls {
-    walls::WallSetup setup;
-    double texels = 0.0, diskMB = 0.0;
-    std::string summary;
-};
-
-// Plans and bakes (or finds in the cache) the walls of `sceneFile` at `alphaDeg`.
-BakedWalls bakeWalls(const BenchOptions& o, const std::filesystem::path& sceneFile, double alphaDeg,
-                     const scenes::Scene& scene, const scenes::SceneDescription& d, display::gl::Context& context) {
-    walls::PlanOptions plan = walls::planOptionsFor(o.plan, o.wallKind, o.bakeResolution);
-    plan.alphaDeg = alphaDeg;
-    BakedWalls out;
-    out.setup = walls::prepareWalls(scene, d, plan);
-    walls::gl::BakeRequest request;
-    request.scene = sceneFile;
-    request.settings.maxResolution = o.bakeResolution;
-    request.settings.jobs = 2;
-    request.settings.drawThreads = 2;
-    request.settings.kind = o.wallKind;
-    request.settings.textureFormat = o.textureFormat;
-    request.context = &context;
-    if (o.cache) request.cache = *o.cache;
-    walls::gl::BakeResult baked = walls::gl::bakeWalls(scene, d, out.setup, request);
-    out.setup.folder = baked.folder;
-    for (const walls::BakedTexture& t : baked.manifest.textures)
-        out.texels += static_cast<double>(t.resolution.x) * t.resolution.y;
-    out.diskMB = static_cast<double>(baked.totalBytes) / 1e6;
-    out.setup.manifest = std::move(baked.manifest);
-    out.summary = "a=" + config::formatNumber(alphaDeg) + ": " + std::to_string(out.setup.plan.textures.size()) +
-                  " textures (" + std::string(walls::textureFormatName(o.textureFormat)) + ", " + fixed(out.diskMB) +
-                  " MB on disk), " + std::to_string(baked.baked) + " baked now in " + fixed(baked.seconds) + " s, " +
-                  std::to_string(baked.reused) + " from the cache (" + std::to_string(baked.shared) +
-                  " sharing a texture of the same key)";
-    return out;
-}
-
 ModeResult namedMode(Mode mode, double lodPixels = 0.0) {
     ModeResult m;
     m.mode = mode;
@@ -76,6 +41,7 @@ struct WallsModeOptions {
     double lodPixels = 0.0;          // level-of-detail tolerance; 0: full detail
     std::size_t triangleBudget = 0;  // 0: none
     double frameBudgetMs = 0.0;      // the frame-time controller's target; 0: none
+    bool flat = false;               // the flat walls beside the depth walls
 };
 
 ModeResult wallsMode(double alphaDeg, const WallsModeOptions& options = {}) {
@@ -88,64 +54,6 @@ ModeResult wallsMode(double alphaDeg, const WallsModeOptions& options = {}) {
     m.lodPixels = options.lodPixels;
     m.triangleBudget = options.triangleBudget;
     return m;
-}
-
-void say(const BenchOptions& o, const std::string& line) {
-    if (o.verbose) std::cout << line << "\n" << std::flush;
-}
-
-std::size_t triangleCount(const scenes::Scene& scene) {
-    std::size_t triangles = 0;
-    for (const scenes::Object& object : scene.objects) triangles += scene.meshes[object.mesh].triangleCount();
-    return triangles;
-}
-
-// The compare scene (--compare-scene): the same model (objects and triangles) with walls.
-struct CompareScene {
-    scenes::SceneDescription description;
-    scenes::Scene scene;
-};
-
-std::unique_ptr<CompareScene> loadCompareScene(const BenchOptions& o, const BenchOptions::CompareScene& which,
-                                               const scenes::Scene& own) {
-    auto other = std::make_unique<CompareScene>();
-    const std::string name = which.scene.string();
-    other->scene = scenes::loadSceneFile(which.scene, &other->description);
-    if (other->description.walls.empty())
-        throw Error("--compare-scene " + name + ": expected virtual walls to bench, got none");
-    const std::size_t mine = triangleCount(own), theirs = triangleCount(other->scene);
-    if (other->scene.objects.size() != own.objects.size() || theirs != mine)
-        throw Error("--compare-scene " + name + ": expected the same model as " + o.scene.string() + " (" +
-                    std::to_string(own.objects.size()) + " objects, " + std::to_string(mine) + " triangles), got " +
-                    std::to_string(other->scene.objects.size()) + " objects, " + std::to_string(theirs) + " triangles");
-    return other;
-}
-
-// Plans and bakes every compare scene's walls at every alpha (per scene, per alpha), with a
-// header line for each.
-std::vector<std::vector<BakedWalls>> bakeCompareScenes(const BenchOptions& o,
-                                                       const std::vector<std::unique_ptr<CompareScene>>& others,
-                                                       const scenes::SceneDescription& description,
-                                                       display::gl::Context& context, BenchReport& report) {
-    std::vector<std::vector<BakedWalls>> otherBaked(others.size());
-    for (std::size_t k = 0; k < others.size(); ++k) {
-        const BenchOptions::CompareScene& which = o.compareScenes[k];
-        const CompareScene& other = *others[k];
-        report.header.push_back("compare scene [" + which.tag + "]: " + which.scene.string() + " (" +
-                                std::to_string(other.description.cells.size()) + " cells, " +
-                                std::to_string(other.description.walls.size()) +
-                                " walls; the bench scene: " + std::to_string(description.cells.size()) + " cells, " +
-                                std::to_string(description.walls.size()) +
-                                " walls), drawn on the bench scene's eye "
-                                "path, its own plan and bake at every alpha");
-        for (double alpha : o.alphasDeg) {
-            say(o, "bench: plan and bake [" + which.tag + "]'s walls at a=" + config::formatNumber(alpha) + " deg");
-            otherBaked[k].push_back(bakeWalls(o, which.scene, alpha, other.scene, other.description, context));
-            say(o, "bench: [" + which.tag + "] " + otherBaked[k].back().summary);
-            report.header.push_back("bake [" + which.tag + "] " + otherBaked[k].back().summary);
-        }
-    }
-    return otherBaked;
 }
 
 // The on-demand mode (--on-demand): plans the walls at `alphaDeg` and walks from an empty,
@@ -229,6 +137,9 @@ void checkOptions(const BenchOptions& o) {
         throw Error("bench: compareEvery: expected at least 1, got " + std::to_string(o.compareEvery));
     if (o.alphasDeg.empty()) throw Error("bench: expected at least one alpha for the walls modes, got none");
     if (o.frames < 1) throw Error("--frames: expected at least 1, got " + std::to_string(o.frames));
+    if (o.flatBeside && o.wallKind != walls::WallKind::Depth)
+        throw Error("bench: flat walls beside: expected depth walls to set them beside, got " +
+                    std::string(walls::wallKindName(o.wallKind)) + " walls");
     for (double budget : o.clusterBudgetsMs)
         if (!(budget > 0.0 && std::isfinite(budget)))
             throw Error("bench: cluster budgets: expected milliseconds > 0, got " + config::formatNumber(budget));
@@ -237,38 +148,11 @@ void checkOptions(const BenchOptions& o) {
                     " is not one of the planned alphas");
 }
 
-// The compare scenes, each checked against `scene` (the same model) and the others' labels.
-std::vector<std::unique_ptr<CompareScene>> loadCompareScenes(const BenchOptions& o, const scenes::Scene& scene) {
-    std::vector<std::unique_ptr<CompareScene>> others;
-    for (std::size_t i = 0; i < o.compareScenes.size(); ++i) {
-        for (std::size_t k = 0; k < i; ++k)
-            if (o.compareScenes[k].tag == o.compareScenes[i].tag)
-                throw Error("--compare-scene: expected scenes whose labels differ, got '" + o.compareScenes[i].tag +
-                            "' for " + o.compareScenes[k].scene.string() + " and " + o.compareScenes[i].scene.string());
-        others.push_back(loadCompareScene(o, o.compareScenes[i], scene));
-    }
-    return others;
-}
-
 void checkOnDemand(const BenchOptions& o) {
     if (!o.onDemandCache) return;
     if (o.wallKind != walls::WallKind::Flat)
         throw Error("--on-demand: baking on demand draws flat walls only, got --walls depth");
     checkPrivateCache(*o.onDemandCache, o.cache ? *o.cache : walls::gl::defaultCacheFolder());
-}
-
-// Plans and bakes the bench scene's walls at every alpha, with a header line for each.
-std::vector<BakedWalls> bakeOwnWalls(const BenchOptions& o, const scenes::Scene& scene,
-                                     const scenes::SceneDescription& description, display::gl::Context& context,
-                                     BenchReport& report) {
-    std::vector<BakedWalls> baked;
-    for (double alpha : o.alphasDeg) {
-        say(o, "bench: plan and bake walls at a=" + config::formatNumber(alpha) + " deg");
-        baked.push_back(bakeWalls(o, o.scene, alpha, scene, description, context));
-        say(o, "bench: " + baked.back().summary);
-        report.header.push_back("bake " + baked.back().summary);
-    }
-    return baked;
 }
 
 // How a mode is run. The phases run in this order, each mode of a phase in the report's order.
@@ -286,6 +170,7 @@ struct BenchMode {
     ModeResult mode{};                        // what it is: ModeAccumulator's mode (textures included)
     std::optional<std::size_t> alphaIndex{};  // walls modes: the walls baked at alphasDeg[*alphaIndex]
     std::optional<std::size_t> compare{};     // the compare scene it draws (index); none: the bench scene's
+    bool flat = false;                        // the flat walls beside the depth walls (flatBaked)
     std::optional<std::size_t> budgetFrom{};  // its triangle budget: that mode's median (index into the table)
     CellDraw draw = CellDraw::Cells;          // the cell phases'
     std::optional<ModeResult> result{};       // once its phase has run
@@ -297,6 +182,7 @@ struct Bench {
     const display::Display& display;
     const ModeContext& c;
     const std::vector<BakedWalls>& baked;                    // per alpha
+    const std::vector<BakedWalls>& flatBaked;                // per alpha: flat walls beside depth walls, or none
     const std::vector<std::vector<BakedWalls>>& otherBaked;  // per compare scene, per alpha
     const std::vector<std::unique_ptr<CompareScene>>& others;
     std::size_t transitionIndex = 0;  // of transitionAlphaDeg in alphasDeg
@@ -311,8 +197,12 @@ BenchMode wallsAt(const Bench& b, std::size_t alphaIndex, const WallsModeOptions
     BenchMode m{.phase = phase,
                 .mode = wallsMode(b.o.alphasDeg[alphaIndex], options),
                 .alphaIndex = alphaIndex,
-                .compare = compare};
-    const BakedWalls& walls = compare ? b.otherBaked[*compare][alphaIndex] : b.baked[alphaIndex];
+                .compare = compare,
+                .flat = options.flat};
+    m.mode.wallKind = options.flat ? walls::WallKind::Flat : b.o.wallKind;
+    const BakedWalls& walls = compare        ? b.otherBaked[*compare][alphaIndex]
+                              : options.flat ? b.flatBaked[alphaIndex]
+                                             : b.baked[alphaIndex];
     m.mode.textures = static_cast<int>(walls.setup.plan.textures.size());
     m.mode.texels = walls.texels;
     m.mode.diskMB = walls.diskMB;
@@ -373,6 +263,10 @@ std::vector<BenchMode> planModes(const Bench& b) {
     addWallsModes(table, b, {});
     const std::vector<std::size_t> lodModes =
         lod ? addWallsModes(table, b, {.lodPixels = o.lodPixels}) : std::vector<std::size_t>{};
+    if (o.flatBeside) {  // before the (depth) warp, paged and budget modes: the last gives the noise floor
+        addWallsModes(table, b, {.flat = true});
+        if (lod) addWallsModes(table, b, {.lodPixels = o.lodPixels, .flat = true});
+    }
     table.push_back(wallsAt(b, b.transitionIndex, {.transition = app::Transition::Warp}));
     table.push_back(wallsAt(b, b.transitionIndex, {.paged = true}, std::nullopt, Phase::Paged));
     if (o.onDemandCache) table.push_back({.phase = Phase::OnDemand, .mode = wallsMode(o.transitionAlphaDeg)});
@@ -388,8 +282,9 @@ std::vector<BenchMode> planModes(const Bench& b) {
 // The walkthrough run of walls, transition and paging that `m` says.
 WalkRun walkRunOf(const Bench& b, const BenchMode& m, ModeAccumulator* acc) {
     WalkRun run;
-    const std::vector<BakedWalls>& from = m.compare ? b.otherBaked[*m.compare] : b.baked;
+    const std::vector<BakedWalls>& from = m.compare ? b.otherBaked[*m.compare] : m.flat ? b.flatBaked : b.baked;
     if (m.alphaIndex) run.walls = from[*m.alphaIndex].setup;
+    if (m.flat) run.wallKind = walls::WallKind::Flat;
     if (m.compare) {
         run.scene = &b.others[*m.compare]->scene;
         run.description = &b.others[*m.compare]->description;
@@ -566,13 +461,17 @@ BenchReport runBenchmark(const BenchOptions& o) {
                         o.clusters ? (o.cache ? *o.cache : walls::gl::defaultCacheFolder()) : std::filesystem::path(),
                         walls::ReprojectSettings{.cutSheets = !o.keepSheets}};
 
-    const std::vector<BakedWalls> baked = bakeOwnWalls(o, scene, description, *context, report);
+    const std::vector<BakedWalls> baked = bakeOwnWalls(o, o.wallKind, scene, description, *context, report);
+    const std::vector<BakedWalls> flatBaked =
+        o.flatBeside ? bakeOwnWalls(o, walls::WallKind::Flat, scene, description, *context, report)
+                     : std::vector<BakedWalls>{};
     const std::vector<std::vector<BakedWalls>> otherBaked = bakeCompareScenes(o, others, description, *context, report);
     const auto listed = std::find(o.alphasDeg.begin(), o.alphasDeg.end(), o.transitionAlphaDeg);  // checked on entry
     Bench b{.o = o,
             .display = display,
             .c = c,
             .baked = baked,
+            .flatBaked = flatBaked,
             .otherBaked = otherBaked,
             .others = others,
             .transitionIndex = static_cast<std::size_t>(listed - o.alphasDeg.begin())};
@@ -583,8 +482,6 @@ BenchReport runBenchmark(const BenchOptions& o) {
             "triangle budgets: per alpha, the median triangles of the same walls mode without a "
             "budget");
     addNoiseFloor(report, b);
-    for (ModeResult& m : report.modes)
-        if (m.mode == Mode::Walls) m.wallKind = o.wallKind;  // every walls mode draws --walls
     compareWithControl(report);
     compareWithLodBaseline(report);
     recommend(report);

@@ -20,6 +20,8 @@
 //           measures drawing, not decoding).
 //  - walls at `transitionAlphaDeg` (or the first alpha when it is not listed), transition warp
 //           (walkthrough::Transition::Warp), on the same bake.
+//  - with `flatBeside` (wallKind depth): flat walls at every alpha, blend, with and without
+//           levels of detail, each alpha its own flat plan and bake, interleaved as above.
 //  - with `lodPixels` > 0, levels of detail (scenes/mesh_lod.h) at that pixel tolerance: full,
 //           near and every walls blend mode once more with them, then every walls blend mode
 //           with them under a triangle budget (`triangleBudget`, or the median triangles of
@@ -74,6 +76,10 @@ struct BenchOptions {
     double frameBudgetMs = 1000.0 / 60.0;              // the frame-time modes' target; 0: none
     double lodMaxPixels = 8.0;                         // the most a budget may raise the tolerance to
     walls::WallKind wallKind = walls::WallKind::Flat;  // --walls: flat or depth walls (bake and draw)
+    // --walls flat,depth: with wallKind depth, flat walls too at every alpha (blend, and with
+    // levels of detail), their own plan and bake, drawn frame by frame in turn with the depth
+    // walls (flat against depth walls in the same seconds, stereo error included)
+    bool flatBeside = false;
     bool keepSheets = false;  // --keep-sheets: depth walls keep their rubber sheets (to measure the cut)
     // --texture-format: storage of the baked colour (walls/texture_blocks.h), disk and GPU
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;

@@ -31,6 +31,14 @@ namespace {
 
 bool compared(const ModeContext& c, long frame) { return frame % c.compareEvery == 0; }
 
+// Walls that drew the textures they drew last because the wanted ones were not resident
+// (walkthrough/frame_planner.h, step 3): flagged fallback, with textures.
+int keptFallbacks(const walkthrough::FrameResult& r) {
+    int kept = 0;
+    for (const walkthrough::WallState& w : r.walls) kept += w.fallback && !w.textures.empty() ? 1 : 0;
+    return kept;
+}
+
 FrameCost frameCost(const walkthrough::FrameResult& r) {
     return {r.frameMs,
             r.cpuMs,
@@ -51,6 +59,7 @@ FrameCost frameCost(const walkthrough::FrameResult& r) {
             r.clusterPredictedFrameMs,
             r.clusterFloorMs,
             r.geometryFallbacks,
+            keptFallbacks(r),
             r.texturesBaked};
 }
 
@@ -71,7 +80,7 @@ ModeAccumulator::ModeAccumulator(ModeResult mode, const display::Display& displa
 void ModeAccumulator::addFrame(const FrameCost& cost) {
     _mode.frames.push_back({cost.frameMs, cost.triangles, cost.drawCalls, cost.uploadedMB, cost.texturesOverAlpha,
                             cost.clusterPredictedMs, cost.clusterPredictedFrameMs, cost.clusterFloorMs,
-                            cost.geometryFallbacks, cost.texturesBaked});
+                            cost.geometryFallbacks, cost.keptFallbacks, cost.texturesBaked});
     _mode.texturesOverAlpha += cost.texturesOverAlpha;
     _frame.push_back(cost.frameMs);
     _cpu.push_back(cost.cpuMs);
@@ -217,8 +226,7 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         options.render.lodPixels = mode.lodPixels;
         options.triangleBudget = mode.triangleBudget;
         options.lodMaxPixels = c.lodMaxPixels;
-        options.wallKind = c.wallKind;
-        options.depthMarch = c.depthMarch;
+        options.wallKind = run.wallKind.value_or(c.wallKind);
         options.depthMarch = c.depthMarch;
         options.clusters.enabled = run.clusters;
         options.clusters.cache = c.clusterCache;

@@ -39,6 +39,7 @@ struct FrameCost {
     // frame time the controller predicted and the floor (0 without one).
     double clusterPredictedMs = 0.0, clusterPredictedFrameMs = 0.0, clusterFloorMs = 0.0;
     int geometryFallbacks = 0;  // FrameResult's: walls drawn as geometry for want of a texture
+    int keptFallbacks = 0;      // walls drawing the textures they drew last for want of the wanted ones
     int texturesBaked = 0;      // FrameResult's: baking on demand, baked so far
 };
 
@@ -107,6 +108,7 @@ struct WalkRun {
     ModeAccumulator* acc = nullptr;  // not null; its mode's lodPixels, triangleBudget and
                                      // frameBudgetMs set the levels of detail and budgets
     walkthrough::Transition transition = walkthrough::Transition::Blend;
+    std::optional<walls::WallKind> wallKind;  // the walls' kind when not the context's (flat beside depth)
     // As `cavewall run` pages: in the background under the default texture budget and upload
     // limit, from a cold start (three warm-up frames), so the timed frames include every
     // page-in, upload and fallback. Otherwise every texture of the path is made resident in a

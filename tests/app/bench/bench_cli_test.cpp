@@ -166,25 +166,51 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
 
 // In stereo (--stereo separate) both eyes are drawn and compared, and every mode's stereo
 // error is measured from the depth read back for each eye: zero for the reference, finite and
-// non-zero where a mode leaves cells out or puts them on the walls.
+// non-zero where a mode leaves cells out or puts them on the walls. With --walls flat,depth the
+// flat walls are drawn in turn with the depth walls, each kind from its own bake, and show
+// everything behind them at the wall's depth: many times the depth walls' stereo error.
 TEST(BenchSceneCli, StereoRunMeasuresTheStereoErrorPerEye) {
     const test::TempFolder root("bench_cli_stereo");
     const fs::path plant = root / "plant20k";
     const CliResult g = runCavewall({"generate", "plant", "--triangles", "20000", "--out", plant.string()});
     ASSERT_EQ(g.exitCode, 0) << g.err;
     const fs::path out = root / "out";
-    const CliResult r =
-        runCavewall({"bench", (plant / "scene.json").string(), "--quick", "--frames", "6", "--stereo", "separate",
-                     "--lod", "0", "--frame-budget-ms", "0", "--alphas", "20", "--warp-alpha", "20", "--out",
-                     out.string(), "--cache", (root / "cache").string()});
+    const CliResult r = runCavewall({"bench",
+                                     (plant / "scene.json").string(),
+                                     "--quick",
+                                     "--frames",
+                                     "6",
+                                     "--stereo",
+                                     "separate",
+                                     "--lod",
+                                     "0",
+                                     "--frame-budget-ms",
+                                     "0",
+                                     "--alphas",
+                                     "20",
+                                     "--warp-alpha",
+                                     "20",
+                                     "--walls",
+                                     "flat,depth",
+                                     "--out",
+                                     out.string(),
+                                     "--cache",
+                                     (root / "cache").string()});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    EXPECT_THAT(r.out, HasSubstr("drawn frame by frame in turn (the same seconds): full, walls depth a=20 blend, "
+                                 "walls a=20 blend, walls depth a=20 warp;"));
+    EXPECT_THAT(r.out, HasSubstr("bake flat walls a=20: "));
+    EXPECT_THAT(r.out, HasSubstr("bake depth walls a=20: "));
     EXPECT_THAT(r.out, HasSubstr("4 screens at 128x128 pixels, separate stereo mode"));
     EXPECT_THAT(r.out, HasSubstr("stereo: both eyes drawn, every image metric computed per output image (per eye in "
                                  "separate mode); stereo error"));
     EXPECT_THAT(r.out, HasSubstr("figures (128x128 per screen, separate)"));
     const test::CsvTable csv = test::readCsv(out / "bench.csv");
-    ASSERT_EQ(csv.size(), 7u);  // full, cells, cells+layer, near, blend, warp, paged
+    ASSERT_EQ(csv.size(), 8u);                  // full, cells, cells+layer, near, depth blend, flat blend, warp, paged
+    std::map<std::string, double> blendStereo;  // by kind
     for (const test::CsvRow& row : csv) {
+        if (row.at("mode") == "walls" && row.at("transition") == "blend")
+            blendStereo[row.at("wall_kind")] = row.number("stereo_mean_arcmin");
         SCOPED_TRACE(row.at("mode") + " " + row.at("transition"));
         const double mean = row.number("stereo_mean_arcmin"), share = row.number("stereo_beyond_share");
         if (row.at("mode") == "full") {  // the reference against itself: nothing compared, no error
@@ -193,6 +219,16 @@ TEST(BenchSceneCli, StereoRunMeasuresTheStereoErrorPerEye) {
         }
         EXPECT_TRUE(std::isfinite(mean) && mean > 0.0) << mean;
         EXPECT_TRUE(share >= 0.0 && share <= 1.0) << share;
+    }
+    ASSERT_EQ(blendStereo.size(), 2u);
+    EXPECT_GT(blendStereo.at("flat"), 3.0 * blendStereo.at("depth"));
+    // Walls with every texture resident never fall back; the paged mode may, to geometry or to
+    // the textures it drew last (bench_frames.csv counts both per frame).
+    for (const test::CsvRow& f : test::readCsv(out / "bench_frames.csv")) {
+        SCOPED_TRACE(f.at("mode") + " frame " + f.at("frame"));
+        const double kept = f.number("kept_fallbacks"), geometry = f.number("geometry_fallbacks");
+        EXPECT_TRUE(kept >= 0.0 && geometry >= 0.0);
+        if (f.at("mode").find("paged") == std::string::npos) EXPECT_EQ(kept + geometry, 0.0);
     }
     for (const test::CsvRow& row : test::readCsv(out / "bench_screens.csv"))
         EXPECT_TRUE(std::isfinite(row.number("stereo_mean_arcmin"))) << row.at("screen");
@@ -372,6 +408,8 @@ TEST(BenchSceneCli, BadInputIsAClearError) {
          "--warp-alpha 20 is not one of the planned alphas (10,30); add it to --alphas"},
         {{"bench", (test::testOutputRoot() / "bench_cli_missing" / "scene.json").string(), "--quick"}, "missing"},
         {{"bench", "x.json", "--stereo", "quad-buffer"}, "--stereo: expected mono or separate, got 'quad-buffer'"},
+        {{"bench", "x.json", "--walls", "depth,flat"},
+         "bench: --walls: expected flat, depth or flat,depth (flat walls beside depth walls), got 'depth,flat'"},
         {{"bench", "x.json", "--cluster-budgets", "40"}, "bench: --cluster-budgets needs --clusters"},
         {{"bench", "x.json", "--clusters", "--cluster-budgets", "40,0"},
          "bench: --cluster-budgets: expected milliseconds in (0, 100000], got 0"},

@@ -425,7 +425,7 @@ TEST(BenchReport, WritesFilesAndThePlot) {
     EXPECT_EQ(frames.columns,
               (std::vector<std::string>{"mode", "frame", "frame_ms", "triangles", "draw_calls", "uploaded_mb",
                                         "over_alpha", "predicted_ms", "predicted_frame_ms", "floor_ms",
-                                        "geometry_fallbacks", "textures_baked"}));
+                                        "geometry_fallbacks", "textures_baked", "kept_fallbacks"}));
     // The second mode's second frame: 1.2 x its p50 of 3 ms.
     EXPECT_EQ(frames[3].at("mode"), "walls a=10 blend");
     EXPECT_EQ(frames[3].at("frame"), "1");
