@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 
 namespace cavewall::walls {
@@ -43,5 +44,9 @@ void writeDepthFile(const std::filesystem::path& file, const DepthImage& image);
 // colour texture) a file of another size is refused from its header, before anything is
 // allocated for its texels.
 DepthImage readDepthFile(const std::filesystem::path& file, std::optional<glm::ivec2> expectedSize = std::nullopt);
+// The same reader on a depth file's bytes in memory, named `name` in messages: the steps after
+// the open are the file's (the fuzz target reads this way, without a file per input).
+DepthImage readDepthFile(std::span<const std::uint8_t> bytes, const std::string& name,
+                         std::optional<glm::ivec2> expectedSize = std::nullopt);
 
 }  // namespace cavewall::walls

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <span>
 
 namespace cavewall::walls {
 namespace {
@@ -85,9 +86,10 @@ TEST(DepthFile, DepthsRoundTripWithinTheCodesPrecision) {
     EXPECT_THROW(readDepthFile(dir / "missing.depth.tif"), Error);
     // The size the runtime expects: the same file read with it, and refused from its header with another.
     EXPECT_EQ(readDepthFile(dir / "d.depth.tif", glm::ivec2(7, 5)).depth, back.depth);
-    EXPECT_THAT([&] { readDepthFile(dir / "d.depth.tif", glm::ivec2(8, 5)); },
-                ::testing::ThrowsMessage<Error>(HasSubstr("d.depth.tif: expected 8 x 5 texels (the march's depths of its "
-                                                          "colour), got 7 x 5")));
+    EXPECT_THAT(
+        [&] { readDepthFile(dir / "d.depth.tif", glm::ivec2(8, 5)); },
+        ::testing::ThrowsMessage<Error>(HasSubstr("d.depth.tif: expected 8 x 5 texels (the march's depths of its "
+                                                  "colour), got 7 x 5")));
 }
 
 // Bakes from before the 16-bit codes stored 32-bit floats: still read, bit for bit.
@@ -134,6 +136,40 @@ TEST(DepthFile, FloatDepthFilesAreStillReadBitForBit) {
     } catch (const Error& e) {
         EXPECT_THAT(e.what(), HasSubstr("expected 16-bit depth codes or 32-bit float depths, got uint8"));
     }
+}
+
+// The in-memory entry point (what the fuzz target reads) is the file's reader after the open:
+// the same depths and refusals, named as told. Bytes that are not a TIFF are refused by both,
+// never handed to another format's reader (the image library's RLA reader aborted the process
+// on these bytes; the fuzz corpus keeps them).
+TEST(DepthFile, BytesInMemoryReadAsTheFile) {
+    const auto dir = scratch("memory");
+    DepthImage image{7, 5, {}};
+    for (int i = 0; i < 35; ++i) image.depth.push_back(i % 4 == 0 ? kNoSurface : 0.01f * i);
+    writeDepthFile(dir / "d.depth.tif", image);
+    const std::string bytes = test::readFile(dir / "d.depth.tif");
+    const auto span = [](const std::string& b) {
+        return std::span(reinterpret_cast<const std::uint8_t*>(b.data()), b.size());
+    };
+    const DepthImage fromFile = readDepthFile(dir / "d.depth.tif", glm::ivec2(7, 5));
+    const DepthImage fromMemory = readDepthFile(span(bytes), "m.depth.tif", glm::ivec2(7, 5));
+    EXPECT_EQ(fromMemory.width, 7);
+    EXPECT_EQ(fromMemory.height, 5);
+    EXPECT_EQ(std::memcmp(fromMemory.depth.data(), fromFile.depth.data(), 35 * sizeof(float)), 0);
+    EXPECT_THAT([&] { readDepthFile(span(bytes), "m.depth.tif", glm::ivec2(8, 5)); },
+                ::testing::ThrowsMessage<Error>(HasSubstr("m.depth.tif: expected 8 x 5 texels")));
+    EXPECT_THAT([&] { readDepthFile(span(bytes.substr(0, 100)), "cut.depth.tif"); },
+                ::testing::ThrowsMessage<Error>(HasSubstr("cut.depth.tif: ")));
+    const std::string rla =
+        test::readFile(CAVEWALL_SOURCE_DIR "/tests/fuzz/corpus/depth_file/not_a_tiff_rla_abort.bin");
+    const std::string notTiff = rla.substr(4);  // the fuzz input's first 4 bytes are the expected size
+    test::writeFile(dir / "rla.depth.tif", notTiff);
+    EXPECT_THAT(
+        [&] { readDepthFile(dir / "rla.depth.tif"); },
+        ::testing::ThrowsMessage<Error>(HasSubstr("rla.depth.tif: cannot read the depth file, expected a TIFF")));
+    EXPECT_THAT(
+        [&] { readDepthFile(span(notTiff), "rla.depth.tif"); },
+        ::testing::ThrowsMessage<Error>(HasSubstr("rla.depth.tif: cannot read the depth file, expected a TIFF")));
 }
 
 // Float files holding what no bake writes, and sizes beyond any bake, are refused naming the

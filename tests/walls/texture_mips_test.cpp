@@ -3,6 +3,7 @@
 #include "config/error.h"
 #include "scenes/image_io.h"
 #include "walls/texture_mips.h"
+#include "tests/support/files.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gmock/gmock.h>
@@ -13,6 +14,8 @@
 #include <limits>
 #include <cstdlib>
 #include <random>
+#include <span>
+#include <string>
 
 namespace cavewall::walls {
 namespace {
@@ -174,6 +177,37 @@ TEST(TextureMips, FileRoundTripIsExactTiledAndMipMapped) {
     int files = 0;
     for ([[maybe_unused]] const auto& f : std::filesystem::directory_iterator(file.parent_path())) ++files;
     EXPECT_EQ(files, 1);
+}
+
+// The in-memory entry point (what the cluster_impostor fuzz target reads) is the file's reader
+// after the open: the same levels, named after the name given. Only the TIFF reader opens a MIP
+// file: bytes that are not a TIFF are refused, never handed to another format's reader (the
+// image library's RLA reader aborted the process on these bytes; the fuzz corpus keeps them).
+TEST(TextureMips, BytesInMemoryReadAsTheFileAndOnlyTiff) {
+    const auto levels = premultipliedMipChain(image(20, 12, std::vector<std::uint8_t>(20 * 12 * 4, 200)));
+    const test::TempFolder dir("texture-mips-memory");
+    writeMipFile(dir / "t.tx", levels, {16, "zip"});
+    const std::string bytes = test::readFile(dir / "t.tx");
+    const auto span = [](const std::string& b) {
+        return std::span(reinterpret_cast<const std::uint8_t*>(b.data()), b.size());
+    };
+    const auto fromFile = scenes::readMipLevels(dir / "t.tx");
+    const auto fromMemory = scenes::readMipLevels(span(bytes), "f0r0.tx");
+    ASSERT_EQ(fromMemory.size(), fromFile.size());
+    ASSERT_EQ(fromMemory.size(), levels.size());
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        EXPECT_EQ(fromMemory[i].rgba, fromFile[i].rgba) << "level " << i;
+        EXPECT_EQ(fromMemory[i].name, "f0r0.tx level " + std::to_string(i));
+    }
+    const std::string notTiff =
+        test::readFile(CAVEWALL_SOURCE_DIR "/tests/fuzz/corpus/cluster_impostor/not_a_tiff_rla_abort.tx");
+    test::writeFile(dir / "rla.tx", notTiff);
+    EXPECT_THAT([&] { scenes::readMipLevels(dir / "rla.tx"); },
+                ThrowsMessage<Error>(HasSubstr("rla.tx: cannot read image")));
+    EXPECT_THAT([&] { scenes::readMipLevels(span(notTiff), "rla.tx"); },
+                ThrowsMessage<Error>(HasSubstr("rla.tx: cannot read image")));
+    EXPECT_THAT([&] { scenes::readMipLevels(span(bytes.substr(0, 200)), "cut.tx"); },
+                ThrowsMessage<Error>(HasSubstr("cut.tx: ")));
 }
 
 TEST(TextureMips, WriteRejectsBadInput) {
