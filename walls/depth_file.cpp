@@ -71,12 +71,11 @@ void writeDepthFile(const std::filesystem::path& file, const DepthImage& image) 
 
 namespace {
 
-// The texels as stored (the caller checked that `type` is the file's format). A scanline file is
-// read natively: ImageInput::read_image would first allocate a 64 MB conversion buffer however
-// small the image, and the texels need no conversion.
-bool readTexels(OIIO::ImageInput& in, OIIO::TypeDesc type, void* data) {
+// The texels as stored (the caller checked that they are 16-bit codes or floats and that the
+// file is in scanlines). Read natively: ImageInput::read_image would first allocate a 64 MB
+// conversion buffer however small the image, and the texels need no conversion.
+bool readTexels(OIIO::ImageInput& in, void* data) {
     const OIIO::ImageSpec& spec = in.spec();
-    if (spec.tile_width > 0) return in.read_image(0, 0, 0, 1, type, data);
     return in.read_native_scanlines(0, 0, spec.y, spec.y + spec.height, spec.z, 0, 1, data);
 }
 
@@ -98,13 +97,18 @@ DepthImage readOpened(OIIO::ImageInput* in, bool opened, const std::string& name
                     std::to_string(kMaxDepthFileSide) + " texels (the largest bake), got " +
                     std::to_string(spec.width) + " x " + std::to_string(spec.height) +
                     (spec.depth > 1 ? " x " + std::to_string(spec.depth) : std::string()));
+    // Tiles would be read through a buffer of the size the header gives them (gigabytes for a
+    // corrupt one); every depth file cavewall writes is in scanlines.
+    if (spec.tile_width > 0 || spec.tile_height > 0)
+        throw Error(name + ": expected a TIFF in scanlines (as depth files are written), got tiles of " +
+                    std::to_string(spec.tile_width) + " x " + std::to_string(spec.tile_height) + " texels");
     if (expectedSize && glm::ivec2(spec.width, spec.height) != *expectedSize)
         throw Error(name + ": expected " + std::to_string(expectedSize->x) + " x " + std::to_string(expectedSize->y) +
                     " texels (the march's depths of its colour), got " + std::to_string(spec.width) + " x " +
                     std::to_string(spec.height));
     DepthImage image{spec.width, spec.height, std::vector<float>(std::size_t(spec.width) * spec.height)};
     if (spec.format == OIIO::TypeDesc::FLOAT) {  // a bake from before the 16-bit codes
-        if (!readTexels(*in, OIIO::TypeDesc::FLOAT, image.depth.data()))
+        if (!readTexels(*in, image.depth.data()))
             throw Error(name + ": cannot read the depths (" + in->geterror() + ")");
         for (std::size_t i = 0; i < image.depth.size(); ++i)
             if (std::isnan(image.depth[i]) || image.depth[i] < 0.0f)
@@ -115,8 +119,7 @@ DepthImage readOpened(OIIO::ImageInput* in, bool opened, const std::string& name
         return image;
     }
     std::vector<std::uint16_t> codes(image.depth.size());
-    if (!readTexels(*in, OIIO::TypeDesc::UINT16, codes.data()))
-        throw Error(name + ": cannot read the depths (" + in->geterror() + ")");
+    if (!readTexels(*in, codes.data())) throw Error(name + ": cannot read the depths (" + in->geterror() + ")");
     std::transform(codes.begin(), codes.end(), image.depth.begin(), decodeDepth);
     return image;
 }

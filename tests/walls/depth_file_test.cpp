@@ -196,6 +196,27 @@ TEST(DepthFile, NaNNegativeDepthsAndHugeSizesAreRefused) {
         const std::string file = writeFloats("bad.depth.tif", 2, 2, c.depths);
         EXPECT_THAT([&] { readDepthFile(file); }, ::testing::ThrowsMessage<Error>(HasSubstr(c.message)));
     }
+    // Tiles: no depth file is written in tiles, and the image library reads them through a buffer
+    // of the size the header gives a tile (17 GB for the fuzz corpus's tiled_huge_tile_oom.bin).
+    const std::string tiled = (dir / "tiled.depth.tif").string();
+    auto tiledOut = OIIO::ImageOutput::create(tiled);
+    OIIO::ImageSpec tiledSpec(2, 2, 1, OIIO::TypeDesc::UINT16);
+    tiledSpec.tile_width = tiledSpec.tile_height = 16;
+    const std::uint16_t codes[4] = {2, 3, 4, 5};
+    ASSERT_TRUE(tiledOut->open(tiled, tiledSpec) && tiledOut->write_image(OIIO::TypeDesc::UINT16, codes) &&
+                tiledOut->close());
+    EXPECT_THAT([&] { readDepthFile(tiled); },
+                ::testing::ThrowsMessage<Error>(HasSubstr("tiled.depth.tif: expected a TIFF in scanlines (as depth "
+                                                          "files are written), got tiles of 16 x 16 texels")));
+    const std::string huge =
+        test::readFile(CAVEWALL_SOURCE_DIR "/tests/fuzz/corpus/depth_file/tiled_huge_tile_oom.bin");
+    const std::string hugeTiff = huge.substr(4);  // the fuzz input's first 4 bytes are the expected size
+    EXPECT_THAT(
+        [&] {
+            readDepthFile(std::span(reinterpret_cast<const std::uint8_t*>(hugeTiff.data()), hugeTiff.size()),
+                          "huge.depth.tif");
+        },
+        ::testing::ThrowsMessage<Error>(HasSubstr("huge.depth.tif: expected a TIFF in scanlines")));
     const std::string wide =
         writeFloats("wide.depth.tif", kMaxDepthFileSide + 1, 1, std::vector<float>(kMaxDepthFileSide + 1, 1.0f));
     EXPECT_THAT([&] { readDepthFile(wide); },
