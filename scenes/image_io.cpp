@@ -96,6 +96,25 @@ Image readImage(const std::filesystem::path& file) {
 
 namespace {
 
+// What is wrong with a MIP level's header, or "" when it can be read: the image library
+// allocates what the header gives a tile, and the reader what it gives the level, before any
+// texel is decoded.
+std::string levelProblem(const OIIO::ImageSpec& spec) {
+    const auto size = [](int w, int h) { return std::to_string(w) + " x " + std::to_string(h); };
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+        return "expected a non-empty image, got " + size(spec.width, spec.height) + " x " +
+               std::to_string(spec.nchannels) + " channels";
+    if (spec.nchannels > 4) return "expected at most 4 channels (RGBA), got " + std::to_string(spec.nchannels);
+    if (spec.width > kMaxMipSide || spec.height > kMaxMipSide || spec.depth > 1)
+        return "expected at most " + size(kMaxMipSide, kMaxMipSide) + " texels, got " + size(spec.width, spec.height) +
+               (spec.depth > 1 ? " x " + std::to_string(spec.depth) : "");
+    if (spec.tile_width > kMaxMipTile || spec.tile_height > kMaxMipTile || spec.tile_depth > 1)
+        return "expected tiles of at most " + size(kMaxMipTile, kMaxMipTile) + " texels, got " +
+               size(spec.tile_width, spec.tile_height) +
+               (spec.tile_depth > 1 ? " x " + std::to_string(spec.tile_depth) : "");
+    return "";
+}
+
 // Every level after the open, the same for a file and for bytes in memory; `name` is the file.
 std::vector<Image> readOpenedLevels(OIIO::ImageInput* in, bool opened, const std::string& name) {
     if (!opened) throw Error(name + ": cannot read image (" + (in ? in->geterror() : OIIO::geterror()) + ")");
@@ -104,10 +123,8 @@ std::vector<Image> readOpenedLevels(OIIO::ImageInput* in, bool opened, const std
     for (int level = 0; in->seek_subimage(0, level); ++level) {
         const OIIO::ImageSpec& spec = in->spec();
         const int channels = spec.nchannels;
-        if (spec.width <= 0 || spec.height <= 0 || channels <= 0)
-            throw Error(name + ": MIP level " + std::to_string(level) + ": expected a non-empty image, got " +
-                        std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " +
-                        std::to_string(channels) + " channels");
+        if (const std::string problem = levelProblem(spec); !problem.empty())
+            throw Error(name + ": MIP level " + std::to_string(level) + ": " + problem);
         const std::size_t pixels = static_cast<std::size_t>(spec.width) * spec.height;
         std::vector<std::uint8_t> raw(pixels * channels);
         if (!in->read_image(0, level, 0, channels, OIIO::TypeDesc::UINT8, raw.data()))

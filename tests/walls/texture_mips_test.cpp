@@ -210,6 +210,36 @@ TEST(TextureMips, BytesInMemoryReadAsTheFileAndOnlyTiff) {
                 ThrowsMessage<Error>(HasSubstr("cut.tx: ")));
 }
 
+// Headers that would make the reader or the image library allocate gigabytes are refused
+// before any texel is read: tiles of 17 GB (the fuzz corpus's tiled_huge_tile_oom.tx), more
+// channels than RGBA, sides beyond the largest bake.
+TEST(TextureMips, HugeHeadersAreRefusedBeforeAllocating) {
+    const test::TempFolder dir("texture-mips-huge");
+    const std::string hugeTile =
+        test::readFile(CAVEWALL_SOURCE_DIR "/tests/fuzz/corpus/cluster_impostor/tiled_huge_tile_oom.tx");
+    EXPECT_THAT(
+        [&] {
+            scenes::readMipLevels(std::span(reinterpret_cast<const std::uint8_t*>(hugeTile.data()), hugeTile.size()),
+                                  "f0r0.tx");
+        },
+        ThrowsMessage<Error>(HasSubstr("f0r0.tx: MIP level 0: expected tiles of at most 4096 x 4096 texels, got ")));
+    const auto write = [&](const char* name, int w, int h, int channels) {
+        const std::filesystem::path file = dir / name;
+        auto out = OIIO::ImageOutput::create(file.string());
+        OIIO::ImageSpec spec(w, h, channels, OIIO::TypeDesc::UINT8);
+        const std::vector<std::uint8_t> texels(std::size_t(w) * h * channels, 7);
+        EXPECT_TRUE(out->open(file.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, texels.data()) &&
+                    out->close());
+        return file;
+    };
+    EXPECT_THAT([&] { scenes::readMipLevels(write("five.tx", 2, 2, 5)); },
+                ThrowsMessage<Error>(HasSubstr("five.tx: MIP level 0: expected at most 4 channels (RGBA), got 5")));
+    EXPECT_THAT(
+        [&] { scenes::readMipLevels(write("wide.tx", scenes::kMaxMipSide + 1, 1, 1)); },
+        ThrowsMessage<Error>(HasSubstr("wide.tx: MIP level 0: expected at most 16384 x 16384 texels, got 16385 x 1")));
+    EXPECT_EQ(scenes::readMipLevels(write("grey.tx", 3, 2, 1)).at(0).rgba.size(), 3u * 2u * 4u);  // within: read
+}
+
 TEST(TextureMips, WriteRejectsBadInput) {
     const auto levels = premultipliedMipChain(image(4, 4, std::vector<std::uint8_t>(64, 255)));
     const std::filesystem::path file = std::filesystem::temp_directory_path() / "cavewall-mips-test" / "bad.tx";
