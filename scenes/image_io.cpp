@@ -108,8 +108,10 @@ std::string levelProblem(const OIIO::ImageSpec& spec) {
     if (spec.width > kMaxMipSide || spec.height > kMaxMipSide || spec.depth > 1)
         return "expected at most " + size(kMaxMipSide, kMaxMipSide) + " texels, got " + size(spec.width, spec.height) +
                (spec.depth > 1 ? " x " + std::to_string(spec.depth) : "");
-    if (spec.tile_width > kMaxMipTile || spec.tile_height > kMaxMipTile || spec.tile_depth > 1)
-        return "expected tiles of at most " + size(kMaxMipTile, kMaxMipTile) + " texels, got " +
+    const bool tiled = spec.tile_width != 0 || spec.tile_height != 0 || spec.tile_depth > 1;
+    if (tiled && (spec.tile_width < 1 || spec.tile_width > kMaxMipTile || spec.tile_height < 1 ||
+                  spec.tile_height > kMaxMipTile || spec.tile_depth > 1))
+        return "expected tiles of 1 x 1 to " + size(kMaxMipTile, kMaxMipTile) + " texels, got " +
                size(spec.tile_width, spec.tile_height) +
                (spec.tile_depth > 1 ? " x " + std::to_string(spec.tile_depth) : "");
     return "";

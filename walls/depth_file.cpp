@@ -99,7 +99,7 @@ DepthImage readOpened(OIIO::ImageInput* in, bool opened, const std::string& name
                     (spec.depth > 1 ? " x " + std::to_string(spec.depth) : std::string()));
     // Tiles would be read through a buffer of the size the header gives them (gigabytes for a
     // corrupt one); every depth file cavewall writes is in scanlines.
-    if (spec.tile_width > 0 || spec.tile_height > 0)
+    if (spec.tile_width != 0 || spec.tile_height != 0 || spec.tile_depth > 1)
         throw Error(name + ": expected a TIFF in scanlines (as depth files are written), got tiles of " +
                     std::to_string(spec.tile_width) + " x " + std::to_string(spec.tile_height) + " texels");
     if (expectedSize && glm::ivec2(spec.width, spec.height) != *expectedSize)

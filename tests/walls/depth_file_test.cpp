@@ -208,15 +208,18 @@ TEST(DepthFile, NaNNegativeDepthsAndHugeSizesAreRefused) {
     EXPECT_THAT([&] { readDepthFile(tiled); },
                 ::testing::ThrowsMessage<Error>(HasSubstr("tiled.depth.tif: expected a TIFF in scanlines (as depth "
                                                           "files are written), got tiles of 16 x 16 texels")));
-    const std::string huge =
-        test::readFile(CAVEWALL_SOURCE_DIR "/tests/fuzz/corpus/depth_file/tiled_huge_tile_oom.bin");
-    const std::string hugeTiff = huge.substr(4);  // the fuzz input's first 4 bytes are the expected size
-    EXPECT_THAT(
-        [&] {
-            readDepthFile(std::span(reinterpret_cast<const std::uint8_t*>(hugeTiff.data()), hugeTiff.size()),
-                          "huge.depth.tif");
-        },
-        ::testing::ThrowsMessage<Error>(HasSubstr("huge.depth.tif: expected a TIFF in scanlines")));
+    // Tiles 17 GB in size, and 2^32 - 1 texels high (read as -1): both refused from the header.
+    for (const char* input : {"depth_file/tiled_huge_tile_oom.bin", "cluster_impostor/tiled_negative_tile_hang.tx"}) {
+        SCOPED_TRACE(input);
+        std::string bytes = test::readFile(std::string(CAVEWALL_SOURCE_DIR "/tests/fuzz/corpus/") + input);
+        if (bytes.rfind("II", 0) != 0) bytes.erase(0, 4);  // a depth_file input starts with the expected size
+        EXPECT_THAT(
+            [&] {
+                readDepthFile(std::span(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()),
+                              "huge.depth.tif");
+            },
+            ::testing::ThrowsMessage<Error>(HasSubstr("huge.depth.tif: expected a TIFF in scanlines")));
+    }
     const std::string wide =
         writeFloats("wide.depth.tif", kMaxDepthFileSide + 1, 1, std::vector<float>(kMaxDepthFileSide + 1, 1.0f));
     EXPECT_THAT([&] { readDepthFile(wide); },

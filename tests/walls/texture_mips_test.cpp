@@ -210,19 +210,24 @@ TEST(TextureMips, BytesInMemoryReadAsTheFileAndOnlyTiff) {
                 ThrowsMessage<Error>(HasSubstr("cut.tx: ")));
 }
 
-// Headers that would make the reader or the image library allocate gigabytes are refused
-// before any texel is read: tiles of 17 GB (the fuzz corpus's tiled_huge_tile_oom.tx), more
-// channels than RGBA, sides beyond the largest bake.
+// Headers that would make the reader or the image library allocate gigabytes or loop for
+// minutes are refused before any texel is read: tiles of 17 GB and tiles 2^32 - 1 texels high
+// (the fuzz corpus's tiled_huge_tile_oom.tx and tiled_negative_tile_hang.tx), more channels
+// than RGBA, sides beyond the largest bake.
 TEST(TextureMips, HugeHeadersAreRefusedBeforeAllocating) {
     const test::TempFolder dir("texture-mips-huge");
-    const std::string hugeTile =
-        test::readFile(CAVEWALL_SOURCE_DIR "/tests/fuzz/corpus/cluster_impostor/tiled_huge_tile_oom.tx");
-    EXPECT_THAT(
-        [&] {
-            scenes::readMipLevels(std::span(reinterpret_cast<const std::uint8_t*>(hugeTile.data()), hugeTile.size()),
-                                  "f0r0.tx");
-        },
-        ThrowsMessage<Error>(HasSubstr("f0r0.tx: MIP level 0: expected tiles of at most 4096 x 4096 texels, got ")));
+    for (const char* input : {"tiled_huge_tile_oom.tx", "tiled_negative_tile_hang.tx"}) {
+        SCOPED_TRACE(input);
+        const std::string bytes =
+            test::readFile(std::string(CAVEWALL_SOURCE_DIR "/tests/fuzz/corpus/cluster_impostor/") + input);
+        EXPECT_THAT(
+            [&] {
+                scenes::readMipLevels(std::span(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()),
+                                      "f0r0.tx");
+            },
+            ThrowsMessage<Error>(
+                HasSubstr("f0r0.tx: MIP level 0: expected tiles of 1 x 1 to 4096 x 4096 texels, got ")));
+    }
     const auto write = [&](const char* name, int w, int h, int channels) {
         const std::filesystem::path file = dir / name;
         auto out = OIIO::ImageOutput::create(file.string());
