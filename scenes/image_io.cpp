@@ -3,6 +3,7 @@
 #include "config/error.h"
 #include "scenes/file_write.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -93,28 +94,68 @@ Image readImage(const std::filesystem::path& file) {
     return image;
 }
 
-std::vector<Image> readMipLevels(const std::filesystem::path& file) {
-    auto in = OIIO::ImageInput::open(file.string());
-    if (!in) throw Error(file.string() + ": cannot read image (" + OIIO::geterror() + ")");
+namespace {
+
+// What is wrong with a MIP level's header, or "" when it can be read: the image library
+// allocates what the header gives a tile, and the reader what it gives the level, before any
+// texel is decoded.
+std::string levelProblem(const OIIO::ImageSpec& spec) {
+    const auto size = [](int w, int h) { return std::to_string(w) + " x " + std::to_string(h); };
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+        return "expected a non-empty image, got " + size(spec.width, spec.height) + " x " +
+               std::to_string(spec.nchannels) + " channels";
+    if (spec.nchannels > 4) return "expected at most 4 channels (RGBA), got " + std::to_string(spec.nchannels);
+    if (spec.width > kMaxMipSide || spec.height > kMaxMipSide || spec.depth > 1)
+        return "expected at most " + size(kMaxMipSide, kMaxMipSide) + " texels, got " + size(spec.width, spec.height) +
+               (spec.depth > 1 ? " x " + std::to_string(spec.depth) : "");
+    const bool tiled = spec.tile_width != 0 || spec.tile_height != 0 || spec.tile_depth > 1;
+    if (tiled && (spec.tile_width < 1 || spec.tile_width > kMaxMipTile || spec.tile_height < 1 ||
+                  spec.tile_height > kMaxMipTile || spec.tile_depth > 1))
+        return "expected tiles of 1 x 1 to " + size(kMaxMipTile, kMaxMipTile) + " texels, got " +
+               size(spec.tile_width, spec.tile_height) +
+               (spec.tile_depth > 1 ? " x " + std::to_string(spec.tile_depth) : "");
+    return "";
+}
+
+// Every level after the open, the same for a file and for bytes in memory; `name` is the file.
+std::vector<Image> readOpenedLevels(OIIO::ImageInput* in, bool opened, const std::string& name) {
+    if (!opened) throw Error(name + ": cannot read image (" + (in ? in->geterror() : OIIO::geterror()) + ")");
+    const std::string base = std::filesystem::path(name).filename().string();
     std::vector<Image> levels;
     for (int level = 0; in->seek_subimage(0, level); ++level) {
         const OIIO::ImageSpec& spec = in->spec();
         const int channels = spec.nchannels;
-        if (spec.width <= 0 || spec.height <= 0 || channels <= 0)
-            throw Error(file.string() + ": MIP level " + std::to_string(level) + ": expected a non-empty image, got " +
-                        std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " +
-                        std::to_string(channels) + " channels");
+        if (const std::string problem = levelProblem(spec); !problem.empty())
+            throw Error(name + ": MIP level " + std::to_string(level) + ": " + problem);
         const std::size_t pixels = static_cast<std::size_t>(spec.width) * spec.height;
         std::vector<std::uint8_t> raw(pixels * channels);
         if (!in->read_image(0, level, 0, channels, OIIO::TypeDesc::UINT8, raw.data()))
-            throw Error(file.string() + ": cannot decode MIP level " + std::to_string(level) + " (" + in->geterror() +
-                        ")");
-        levels.push_back({file.filename().string() + " level " + std::to_string(level), spec.width, spec.height,
-                          toRgba(raw, pixels, channels)});
+            throw Error(name + ": cannot decode MIP level " + std::to_string(level) + " (" + in->geterror() + ")");
+        levels.push_back(
+            {base + " level " + std::to_string(level), spec.width, spec.height, toRgba(raw, pixels, channels)});
     }
     in->geterror();  // seeking past the last level leaves an error message; it is the loop's end
-    if (levels.empty()) throw Error(file.string() + ": expected at least one image, got none");
+    if (levels.empty()) throw Error(name + ": expected at least one image, got none");
     return levels;
+}
+
+}  // namespace
+
+// Only the TIFF reader (MIP-mapped files are TIFF): ImageInput::open would try every other
+// format's reader on a file that is not a TIFF, and some abort on a corrupt file.
+std::vector<Image> readMipLevels(const std::filesystem::path& file) {
+    auto in = OIIO::ImageInput::create("tiff");
+    OIIO::ImageSpec opened;
+    const bool ok = in && in->open(file.string(), opened);
+    return readOpenedLevels(in.get(), ok, file.string());
+}
+
+std::vector<Image> readMipLevels(std::span<const std::uint8_t> bytes, const std::string& name) {
+    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+    auto in = OIIO::ImageInput::create("tiff");
+    OIIO::ImageSpec opened;
+    const bool ok = in && in->set_ioproxy(&memory) && in->open(name, opened);
+    return readOpenedLevels(in.get(), ok, name);
 }
 
 namespace {

@@ -5,7 +5,10 @@
 #include "scenes/scene.h"
 
 #include <filesystem>
+#include <cstdint>
 #include <functional>
+#include <span>
+#include <string>
 #include <vector>
 
 namespace cavewall::scenes {
@@ -24,10 +27,19 @@ void writeAtomically(const std::filesystem::path& file,
 // Reads any image OIIO can decode into 8-bit RGBA (grey and RGB are expanded, alpha = 255).
 Image readImage(const std::filesystem::path& file);
 
-// Reads every MIP level of a (tiled) MIP-mapped file such as a baked wall texture, largest
+inline constexpr int kMaxMipSide = 16384;  // texels per side of a MIP level at most (the largest bake)
+inline constexpr int kMaxMipTile = 4096;   // texels per side of a MIP file's tile at most
+
+// Reads every MIP level of a (tiled) MIP-mapped TIFF such as a baked wall texture, largest
 // first, each as 8-bit RGBA like readImage. The bytes are returned as stored: no alpha
 // conversion (baked textures store premultiplied alpha, walls/texture_mips.h). A file
-// without MIP levels gives one level. Throws Error naming the file and the level.
+// without MIP levels gives one level. Only the TIFF reader opens it: a file that is not a TIFF
+// is refused whatever its name, and so is a level with more than 4 channels, more than
+// kMaxMipSide texels on a side or tiles over kMaxMipTile, from its header. Throws Error naming
+// the file and the level.
 std::vector<Image> readMipLevels(const std::filesystem::path& file);
+// The same reader on a file's bytes in memory, named `name` in messages: the steps after the
+// open are the file's (the fuzz target reads this way, without a file per input).
+std::vector<Image> readMipLevels(std::span<const std::uint8_t> bytes, const std::string& name);
 
 }  // namespace cavewall::scenes

@@ -4,6 +4,7 @@
 #include "scenes/file_write.h"
 #include "scenes/image_io.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -68,47 +69,79 @@ void writeDepthFile(const std::filesystem::path& file, const DepthImage& image) 
     });
 }
 
-DepthImage readDepthFile(const std::filesystem::path& file, std::optional<glm::ivec2> expectedSize) {
-    // Only the TIFF reader: ImageInput::open would try every other format's reader on a file
-    // that is not a TIFF, and some abort on a corrupt file.
-    auto in = OIIO::ImageInput::create("tiff");
-    OIIO::ImageSpec opened;
-    if (!in || !in->open(file.string(), opened))
-        throw Error(file.string() + ": cannot read the depth file, expected a TIFF (" +
+namespace {
+
+// The texels as stored (the caller checked that they are 16-bit codes or floats and that the
+// file is in scanlines). Read natively: ImageInput::read_image would first allocate a 64 MB
+// conversion buffer however small the image, and the texels need no conversion.
+bool readTexels(OIIO::ImageInput& in, void* data) {
+    const OIIO::ImageSpec& spec = in.spec();
+    return in.read_native_scanlines(0, 0, spec.y, spec.y + spec.height, spec.z, 0, 1, data);
+}
+
+// Everything after the open, the same for a file and for bytes in memory; `name` is the file.
+DepthImage readOpened(OIIO::ImageInput* in, bool opened, const std::string& name,
+                      std::optional<glm::ivec2> expectedSize) {
+    if (!opened)
+        throw Error(name + ": cannot read the depth file, expected a TIFF (" +
                     (in ? in->geterror() : OIIO::geterror()) + ")");
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.nchannels != 1 || spec.width <= 0 || spec.height <= 0)
-        throw Error(file.string() + ": expected one depth channel, got " + std::to_string(spec.nchannels) +
-                    " channels of " + std::to_string(spec.width) + " x " + std::to_string(spec.height));
+        throw Error(name + ": expected one depth channel, got " + std::to_string(spec.nchannels) + " channels of " +
+                    std::to_string(spec.width) + " x " + std::to_string(spec.height));
     if (spec.format != OIIO::TypeDesc::UINT16 && spec.format != OIIO::TypeDesc::FLOAT)
-        throw Error(file.string() + ": expected 16-bit depth codes or 32-bit float depths, got " +
+        throw Error(name + ": expected 16-bit depth codes or 32-bit float depths, got " +
                     std::string(spec.format.c_str()));
     if (spec.width > kMaxDepthFileSide || spec.height > kMaxDepthFileSide || spec.depth > 1)
-        throw Error(file.string() + ": expected at most " + std::to_string(kMaxDepthFileSide) + " x " +
+        throw Error(name + ": expected at most " + std::to_string(kMaxDepthFileSide) + " x " +
                     std::to_string(kMaxDepthFileSide) + " texels (the largest bake), got " +
                     std::to_string(spec.width) + " x " + std::to_string(spec.height) +
                     (spec.depth > 1 ? " x " + std::to_string(spec.depth) : std::string()));
+    // Tiles would be read through a buffer of the size the header gives them (gigabytes for a
+    // corrupt one); every depth file cavewall writes is in scanlines.
+    if (spec.tile_width != 0 || spec.tile_height != 0 || spec.tile_depth > 1)
+        throw Error(name + ": expected a TIFF in scanlines (as depth files are written), got tiles of " +
+                    std::to_string(spec.tile_width) + " x " + std::to_string(spec.tile_height) + " texels");
     if (expectedSize && glm::ivec2(spec.width, spec.height) != *expectedSize)
-        throw Error(file.string() + ": expected " + std::to_string(expectedSize->x) + " x " +
-                    std::to_string(expectedSize->y) + " texels (the march's depths of its colour), got " +
-                    std::to_string(spec.width) + " x " + std::to_string(spec.height));
+        throw Error(name + ": expected " + std::to_string(expectedSize->x) + " x " + std::to_string(expectedSize->y) +
+                    " texels (the march's depths of its colour), got " + std::to_string(spec.width) + " x " +
+                    std::to_string(spec.height));
     DepthImage image{spec.width, spec.height, std::vector<float>(std::size_t(spec.width) * spec.height)};
     if (spec.format == OIIO::TypeDesc::FLOAT) {  // a bake from before the 16-bit codes
-        if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, image.depth.data()))
-            throw Error(file.string() + ": cannot read the depths (" + in->geterror() + ")");
+        if (!readTexels(*in, image.depth.data()))
+            throw Error(name + ": cannot read the depths (" + in->geterror() + ")");
         for (std::size_t i = 0; i < image.depth.size(); ++i)
             if (std::isnan(image.depth[i]) || image.depth[i] < 0.0f)
-                throw Error(file.string() + ": texel (" + std::to_string(i % std::size_t(spec.width)) + ", " +
+                throw Error(name + ": texel (" + std::to_string(i % std::size_t(spec.width)) + ", " +
                             std::to_string(i / std::size_t(spec.width)) +
                             "): expected a depth >= 0 m or +infinity (nothing drawn), got " +
                             std::to_string(image.depth[i]));
         return image;
     }
     std::vector<std::uint16_t> codes(image.depth.size());
-    if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT16, codes.data()))
-        throw Error(file.string() + ": cannot read the depths (" + in->geterror() + ")");
+    if (!readTexels(*in, codes.data())) throw Error(name + ": cannot read the depths (" + in->geterror() + ")");
     std::transform(codes.begin(), codes.end(), image.depth.begin(), decodeDepth);
     return image;
+}
+
+}  // namespace
+
+// Only the TIFF reader: ImageInput::open would try every other format's reader on a file that
+// is not a TIFF, and some abort on a corrupt file.
+DepthImage readDepthFile(const std::filesystem::path& file, std::optional<glm::ivec2> expectedSize) {
+    auto in = OIIO::ImageInput::create("tiff");
+    OIIO::ImageSpec opened;
+    const bool ok = in && in->open(file.string(), opened);
+    return readOpened(in.get(), ok, file.string(), expectedSize);
+}
+
+DepthImage readDepthFile(std::span<const std::uint8_t> bytes, const std::string& name,
+                         std::optional<glm::ivec2> expectedSize) {
+    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+    auto in = OIIO::ImageInput::create("tiff");
+    OIIO::ImageSpec opened;
+    const bool ok = in && in->set_ioproxy(&memory) && in->open(name, opened);
+    return readOpened(in.get(), ok, name, expectedSize);
 }
 
 }  // namespace cavewall::walls

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 
 namespace cavewall::walls {
@@ -38,10 +39,14 @@ double depthFileError(double d);
 // Throws cavewall::Error naming the file when it cannot be written or the image is inconsistent.
 void writeDepthFile(const std::filesystem::path& file, const DepthImage& image);
 // Throws cavewall::Error naming the file when it is unreadable, not one channel of 16-bit codes
-// or 32-bit floats, larger than kMaxDepthFileSide on a side, or (floats) holds a NaN or a
-// negative depth. With `expectedSize` (what the runtime always knows: the march's depths of the
-// colour texture) a file of another size is refused from its header, before anything is
-// allocated for its texels.
+// or 32-bit floats, in tiles instead of scanlines, larger than kMaxDepthFileSide on a side, or
+// (floats) holds a NaN or a negative depth. With `expectedSize` (what the runtime always knows:
+// the march's depths of the colour texture) a file of another size is refused from its header,
+// before anything is allocated for its texels.
 DepthImage readDepthFile(const std::filesystem::path& file, std::optional<glm::ivec2> expectedSize = std::nullopt);
+// The same reader on a depth file's bytes in memory, named `name` in messages: the steps after
+// the open are the file's (the fuzz target reads this way, without a file per input).
+DepthImage readDepthFile(std::span<const std::uint8_t> bytes, const std::string& name,
+                         std::optional<glm::ivec2> expectedSize = std::nullopt);
 
 }  // namespace cavewall::walls

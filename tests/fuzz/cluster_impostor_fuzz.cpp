@@ -1,17 +1,15 @@
 // Fuzz target: a cluster's impostor files in the cache (hierarchy/cluster_cache.h), read as
-// hierarchy/gl/cluster_impostors.cpp reads them: the bytes as cluster.json, and (written to a
-// file of this process first) as an f<face>r<region>.tx MIP file whose levels are checked.
+// hierarchy/gl/cluster_impostors.cpp reads them: the bytes as cluster.json, and as an
+// f<face>r<region>.tx MIP file whose levels are checked (read from memory by the reader's
+// in-memory entry point, which shares every step after the open with the file's).
 #include "config/error.h"
 #include "hierarchy/cluster_cache.h"
 #include "scenes/image_io.h"
 #include "tests/fuzz/fuzz_target.h"
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <string>
+#include <span>
 #include <string_view>
-#include <unistd.h>
 
 namespace {
 
@@ -29,14 +27,9 @@ void record(std::string_view text) {
 }
 
 void mipFile(const std::uint8_t* data, std::size_t size) {
-    static const std::filesystem::path file =
-        std::filesystem::temp_directory_path() / ("cavewall_fuzz_" + std::to_string(getpid()) + ".tx");
-    {
-        std::ofstream out(file, std::ios::binary | std::ios::trunc);
-        out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-    }
     try {
-        const std::vector<cavewall::scenes::Image> levels = cavewall::scenes::readMipLevels(file);
+        const std::vector<cavewall::scenes::Image> levels =
+            cavewall::scenes::readMipLevels(std::span(data, size), "f0r0.tx");
         // What is decoded is RGBA8, one texel per pixel; the chain check answers either way.
         for (const cavewall::scenes::Image& l : levels)
             if (l.rgba.size() != static_cast<std::size_t>(l.width) * static_cast<std::size_t>(l.height) * 4)

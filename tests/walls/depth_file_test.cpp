@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <span>
 
 namespace cavewall::walls {
 namespace {
@@ -85,9 +86,10 @@ TEST(DepthFile, DepthsRoundTripWithinTheCodesPrecision) {
     EXPECT_THROW(readDepthFile(dir / "missing.depth.tif"), Error);
     // The size the runtime expects: the same file read with it, and refused from its header with another.
     EXPECT_EQ(readDepthFile(dir / "d.depth.tif", glm::ivec2(7, 5)).depth, back.depth);
-    EXPECT_THAT([&] { readDepthFile(dir / "d.depth.tif", glm::ivec2(8, 5)); },
-                ::testing::ThrowsMessage<Error>(HasSubstr("d.depth.tif: expected 8 x 5 texels (the march's depths of its "
-                                                          "colour), got 7 x 5")));
+    EXPECT_THAT(
+        [&] { readDepthFile(dir / "d.depth.tif", glm::ivec2(8, 5)); },
+        ::testing::ThrowsMessage<Error>(HasSubstr("d.depth.tif: expected 8 x 5 texels (the march's depths of its "
+                                                  "colour), got 7 x 5")));
 }
 
 // Bakes from before the 16-bit codes stored 32-bit floats: still read, bit for bit.
@@ -136,6 +138,40 @@ TEST(DepthFile, FloatDepthFilesAreStillReadBitForBit) {
     }
 }
 
+// The in-memory entry point (what the fuzz target reads) is the file's reader after the open:
+// the same depths and refusals, named as told. Bytes that are not a TIFF are refused by both,
+// never handed to another format's reader (the image library's RLA reader aborted the process
+// on these bytes; the fuzz corpus keeps them).
+TEST(DepthFile, BytesInMemoryReadAsTheFile) {
+    const auto dir = scratch("memory");
+    DepthImage image{7, 5, {}};
+    for (int i = 0; i < 35; ++i) image.depth.push_back(i % 4 == 0 ? kNoSurface : 0.01f * i);
+    writeDepthFile(dir / "d.depth.tif", image);
+    const std::string bytes = test::readFile(dir / "d.depth.tif");
+    const auto span = [](const std::string& b) {
+        return std::span(reinterpret_cast<const std::uint8_t*>(b.data()), b.size());
+    };
+    const DepthImage fromFile = readDepthFile(dir / "d.depth.tif", glm::ivec2(7, 5));
+    const DepthImage fromMemory = readDepthFile(span(bytes), "m.depth.tif", glm::ivec2(7, 5));
+    EXPECT_EQ(fromMemory.width, 7);
+    EXPECT_EQ(fromMemory.height, 5);
+    EXPECT_EQ(std::memcmp(fromMemory.depth.data(), fromFile.depth.data(), 35 * sizeof(float)), 0);
+    EXPECT_THAT([&] { readDepthFile(span(bytes), "m.depth.tif", glm::ivec2(8, 5)); },
+                ::testing::ThrowsMessage<Error>(HasSubstr("m.depth.tif: expected 8 x 5 texels")));
+    EXPECT_THAT([&] { readDepthFile(span(bytes.substr(0, 100)), "cut.depth.tif"); },
+                ::testing::ThrowsMessage<Error>(HasSubstr("cut.depth.tif: ")));
+    const std::string rla =
+        test::readFile(CAVEWALL_SOURCE_DIR "/tests/fuzz/corpus/depth_file/not_a_tiff_rla_abort.bin");
+    const std::string notTiff = rla.substr(4);  // the fuzz input's first 4 bytes are the expected size
+    test::writeFile(dir / "rla.depth.tif", notTiff);
+    EXPECT_THAT(
+        [&] { readDepthFile(dir / "rla.depth.tif"); },
+        ::testing::ThrowsMessage<Error>(HasSubstr("rla.depth.tif: cannot read the depth file, expected a TIFF")));
+    EXPECT_THAT(
+        [&] { readDepthFile(span(notTiff), "rla.depth.tif"); },
+        ::testing::ThrowsMessage<Error>(HasSubstr("rla.depth.tif: cannot read the depth file, expected a TIFF")));
+}
+
 // Float files holding what no bake writes, and sizes beyond any bake, are refused naming the
 // texel or the size: a NaN would reach the screen, a huge header would allocate gigabytes.
 TEST(DepthFile, NaNNegativeDepthsAndHugeSizesAreRefused) {
@@ -159,6 +195,30 @@ TEST(DepthFile, NaNNegativeDepthsAndHugeSizesAreRefused) {
         SCOPED_TRACE(c.message);
         const std::string file = writeFloats("bad.depth.tif", 2, 2, c.depths);
         EXPECT_THAT([&] { readDepthFile(file); }, ::testing::ThrowsMessage<Error>(HasSubstr(c.message)));
+    }
+    // Tiles: no depth file is written in tiles, and the image library reads them through a buffer
+    // of the size the header gives a tile (17 GB for the fuzz corpus's tiled_huge_tile_oom.bin).
+    const std::string tiled = (dir / "tiled.depth.tif").string();
+    auto tiledOut = OIIO::ImageOutput::create(tiled);
+    OIIO::ImageSpec tiledSpec(2, 2, 1, OIIO::TypeDesc::UINT16);
+    tiledSpec.tile_width = tiledSpec.tile_height = 16;
+    const std::uint16_t codes[4] = {2, 3, 4, 5};
+    ASSERT_TRUE(tiledOut->open(tiled, tiledSpec) && tiledOut->write_image(OIIO::TypeDesc::UINT16, codes) &&
+                tiledOut->close());
+    EXPECT_THAT([&] { readDepthFile(tiled); },
+                ::testing::ThrowsMessage<Error>(HasSubstr("tiled.depth.tif: expected a TIFF in scanlines (as depth "
+                                                          "files are written), got tiles of 16 x 16 texels")));
+    // Tiles 17 GB in size, and 2^32 - 1 texels high (read as -1): both refused from the header.
+    for (const char* input : {"depth_file/tiled_huge_tile_oom.bin", "cluster_impostor/tiled_negative_tile_hang.tx"}) {
+        SCOPED_TRACE(input);
+        std::string bytes = test::readFile(std::string(CAVEWALL_SOURCE_DIR "/tests/fuzz/corpus/") + input);
+        if (bytes.rfind("II", 0) != 0) bytes.erase(0, 4);  // a depth_file input starts with the expected size
+        EXPECT_THAT(
+            [&] {
+                readDepthFile(std::span(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()),
+                              "huge.depth.tif");
+            },
+            ::testing::ThrowsMessage<Error>(HasSubstr("huge.depth.tif: expected a TIFF in scanlines")));
     }
     const std::string wide =
         writeFloats("wide.depth.tif", kMaxDepthFileSide + 1, 1, std::vector<float>(kMaxDepthFileSide + 1, 1.0f));

@@ -3,6 +3,7 @@
 #include "config/error.h"
 #include "scenes/image_io.h"
 #include "walls/texture_mips.h"
+#include "tests/support/files.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gmock/gmock.h>
@@ -13,6 +14,8 @@
 #include <limits>
 #include <cstdlib>
 #include <random>
+#include <span>
+#include <string>
 
 namespace cavewall::walls {
 namespace {
@@ -174,6 +177,72 @@ TEST(TextureMips, FileRoundTripIsExactTiledAndMipMapped) {
     int files = 0;
     for ([[maybe_unused]] const auto& f : std::filesystem::directory_iterator(file.parent_path())) ++files;
     EXPECT_EQ(files, 1);
+}
+
+// The in-memory entry point (what the cluster_impostor fuzz target reads) is the file's reader
+// after the open: the same levels, named after the name given. Only the TIFF reader opens a MIP
+// file: bytes that are not a TIFF are refused, never handed to another format's reader (the
+// image library's RLA reader aborted the process on these bytes; the fuzz corpus keeps them).
+TEST(TextureMips, BytesInMemoryReadAsTheFileAndOnlyTiff) {
+    const auto levels = premultipliedMipChain(image(20, 12, std::vector<std::uint8_t>(20 * 12 * 4, 200)));
+    const test::TempFolder dir("texture-mips-memory");
+    writeMipFile(dir / "t.tx", levels, {16, "zip"});
+    const std::string bytes = test::readFile(dir / "t.tx");
+    const auto span = [](const std::string& b) {
+        return std::span(reinterpret_cast<const std::uint8_t*>(b.data()), b.size());
+    };
+    const auto fromFile = scenes::readMipLevels(dir / "t.tx");
+    const auto fromMemory = scenes::readMipLevels(span(bytes), "f0r0.tx");
+    ASSERT_EQ(fromMemory.size(), fromFile.size());
+    ASSERT_EQ(fromMemory.size(), levels.size());
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        EXPECT_EQ(fromMemory[i].rgba, fromFile[i].rgba) << "level " << i;
+        EXPECT_EQ(fromMemory[i].name, "f0r0.tx level " + std::to_string(i));
+    }
+    const std::string notTiff =
+        test::readFile(CAVEWALL_SOURCE_DIR "/tests/fuzz/corpus/cluster_impostor/not_a_tiff_rla_abort.tx");
+    test::writeFile(dir / "rla.tx", notTiff);
+    EXPECT_THAT([&] { scenes::readMipLevels(dir / "rla.tx"); },
+                ThrowsMessage<Error>(HasSubstr("rla.tx: cannot read image")));
+    EXPECT_THAT([&] { scenes::readMipLevels(span(notTiff), "rla.tx"); },
+                ThrowsMessage<Error>(HasSubstr("rla.tx: cannot read image")));
+    EXPECT_THAT([&] { scenes::readMipLevels(span(bytes.substr(0, 200)), "cut.tx"); },
+                ThrowsMessage<Error>(HasSubstr("cut.tx: ")));
+}
+
+// Headers that would make the reader or the image library allocate gigabytes or loop for
+// minutes are refused before any texel is read: tiles of 17 GB and tiles 2^32 - 1 texels high
+// (the fuzz corpus's tiled_huge_tile_oom.tx and tiled_negative_tile_hang.tx), more channels
+// than RGBA, sides beyond the largest bake.
+TEST(TextureMips, HugeHeadersAreRefusedBeforeAllocating) {
+    const test::TempFolder dir("texture-mips-huge");
+    for (const char* input : {"tiled_huge_tile_oom.tx", "tiled_negative_tile_hang.tx"}) {
+        SCOPED_TRACE(input);
+        const std::string bytes =
+            test::readFile(std::string(CAVEWALL_SOURCE_DIR "/tests/fuzz/corpus/cluster_impostor/") + input);
+        EXPECT_THAT(
+            [&] {
+                scenes::readMipLevels(std::span(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()),
+                                      "f0r0.tx");
+            },
+            ThrowsMessage<Error>(
+                HasSubstr("f0r0.tx: MIP level 0: expected tiles of 1 x 1 to 4096 x 4096 texels, got ")));
+    }
+    const auto write = [&](const char* name, int w, int h, int channels) {
+        const std::filesystem::path file = dir / name;
+        auto out = OIIO::ImageOutput::create(file.string());
+        OIIO::ImageSpec spec(w, h, channels, OIIO::TypeDesc::UINT8);
+        const std::vector<std::uint8_t> texels(std::size_t(w) * h * channels, 7);
+        EXPECT_TRUE(out->open(file.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, texels.data()) &&
+                    out->close());
+        return file;
+    };
+    EXPECT_THAT([&] { scenes::readMipLevels(write("five.tx", 2, 2, 5)); },
+                ThrowsMessage<Error>(HasSubstr("five.tx: MIP level 0: expected at most 4 channels (RGBA), got 5")));
+    EXPECT_THAT(
+        [&] { scenes::readMipLevels(write("wide.tx", scenes::kMaxMipSide + 1, 1, 1)); },
+        ThrowsMessage<Error>(HasSubstr("wide.tx: MIP level 0: expected at most 16384 x 16384 texels, got 16385 x 1")));
+    EXPECT_EQ(scenes::readMipLevels(write("grey.tx", 3, 2, 1)).at(0).rgba.size(), 3u * 2u * 4u);  // within: read
 }
 
 TEST(TextureMips, WriteRejectsBadInput) {
