@@ -135,12 +135,8 @@ void warnRoomsNotChosen(const walls::AutoWallsResult& result) {
     }
 }
 
-}  // namespace
-
-int runWalls(const std::vector<std::string>& words) {
-    const Args args(words, {"rooms", "keep-paths", "walk-cost"});
-    args.expectFlags({"out", "texture-budget", "alpha", "max-res", "ppd", "min-cell", "max-cells", "ms-per-mtri",
-                      "ms-per-wall", "split", "rooms", "keep-paths", "walk-cost", "plan-limit", "png", "png-walls"});
+// The options of `cavewall walls` from its flags.
+walls::AutoWallsOptions autoWallsOptions(const Args& args) {
     walls::AutoWallsOptions options;
     options.plan.alphaDeg = args.number("alpha", options.plan.alphaDeg, 1e-6, 90.0);
     options.plan.pixelsPerDegree = args.number("ppd", options.plan.pixelsPerDegree, 0.01, 1000.0);
@@ -155,6 +151,98 @@ int runWalls(const std::vector<std::string>& words) {
     options.planLimitMetres = args.number("plan-limit", options.planLimitMetres, 1.0, 1e9);
     options.progress = [](const std::string& line) { std::cerr << "walls: planned " << line << std::endl; };
     walls::validateAutoWallsOptions(options);
+    return options;
+}
+
+// When content objects wider than two cells hold a quarter of the content triangles or more,
+// cells cannot leave much out: the models get cut into chunks of `split` metres and the scene
+// is loaded again.
+void splitWideModels(scenes::Scene& scene, scenes::SceneDescription& base, double minCellSize, double split) {
+    int widest = 0;
+    double wide = 0.0, all = 0.0;
+    for (const scenes::Object& o : scene.objects) {
+        if (o.role != scenes::Role::Content) continue;
+        const glm::dvec3 size = o.worldBounds.size();
+        const auto triangles = static_cast<double>(scene.meshes[o.mesh].triangleCount());
+        all += triangles;
+        if (std::max(size.x, size.z) > 2.0 * minCellSize && triangles >= 1024) {
+            ++widest;
+            wide += triangles;
+        }
+    }
+    if (widest > 0 && wide >= 0.25 * all) {
+        int models = 0;
+        for (scenes::ModelFile& m : base.models)
+            if (m.splitMetres <= 0.0) {
+                m.splitMetres = split;
+                ++models;
+            }
+        if (models > 0) {
+            const std::size_t before = scene.objects.size();
+            scene = scenes::loadScene(base);
+            std::printf(
+                "split: %d content object(s) wider than %.1f m hold %.0f %% of the content triangles; "
+                "models cut into chunks of %.2f m: %zu objects -> %zu (\"splitMetres\" in the proposal)\n",
+                widest, 2.0 * minCellSize, 100.0 * wide / all, split, before, scene.objects.size());
+        }
+    }
+}
+
+// The candidates' table, storey by storey, the chosen ones marked.
+void printCandidates(const walls::AutoWallsResult& result) {
+    std::printf("%-7s %6s %12s %16s %9s %12s %7s\n", "grid", "cells", "expected ms", "cell triangles", "textures",
+                "texture MiB", "budget");
+    for (std::size_t i = 0; i < result.candidates.size(); ++i) {
+        const walls::AutoWallsCandidate& c = result.candidates[i];
+        if (result.storeys.size() > 1 && (i == 0 || result.candidates[i - 1].storey != c.storey))
+            std::printf("storey %d:\n", c.storey);
+        const bool chosen =
+            std::any_of(result.storeys.begin(), result.storeys.end(),
+                        [&](const walls::AutoWallsStorey& s) { return s.chosen == static_cast<int>(i); });
+        const std::string grid = c.rooms ? "rooms" : std::to_string(c.nx) + "x" + std::to_string(c.nz);
+        const std::string cut = c.floorPlan ? std::to_string(c.nx) + " rectangles along the floor plan's rooms"
+                                            : std::to_string(c.nx) + " x " + std::to_string(c.nz) + " along real walls";
+        const std::string rooms = c.rooms ? "  (" + cut + ": " + std::to_string(c.portals) + " portals, " +
+                                                std::to_string(c.virtualWalls) + " virtual walls)"
+                                          : "";
+        std::printf("%-7s %6d %12.1f %16.0f %9d %12.1f %7s%s%s\n", grid.c_str(), c.nx * c.nz, c.expectedMs,
+                    c.meanCellTriangles, c.textures, c.textureMB, c.withinBudget ? "fits" : "over",
+                    chosen ? "  <- chosen" : "", rooms.c_str());
+    }
+}
+
+// Model paths relative to the folder of the scene.json written to `out`.
+void relocateModels(walls::AutoWallsResult& result, const scenes::SceneDescription& base,
+                    const std::filesystem::path& out) {
+    const std::filesystem::path outFolder = std::filesystem::absolute(out).parent_path();
+    for (scenes::ModelFile& m : result.description.models)
+        m.file = std::filesystem::relative(std::filesystem::absolute(base.folder / m.file), outFolder);
+    result.description.folder = outFolder;
+}
+
+// The proposal's plan figure (--png) and per-wall diagram (--png-walls).
+void writeFigures(const walls::AutoWallsResult& result, const scenes::Scene& scene, const std::string& model,
+                  const walls::PlanOptions& planOptions, const std::optional<std::filesystem::path>& png,
+                  const std::optional<std::filesystem::path>& pngWalls) {
+    const walls::Plan plan = walls::planZones(result.description, planOptions);
+    if (png) {
+        bench::writePlot(*png, bench::planFigure(plan, result.description,
+                                                 std::filesystem::path(model).stem().string() + ", proposed"));
+        std::cout << "wrote " << png->string() << "\n";
+    }
+    if (pngWalls) {
+        scenes::writeImage(*pngWalls, walls::planDiagram(plan, result.description, &scene, 200));
+        std::cout << "wrote " << pngWalls->string() << "\n";
+    }
+}
+
+}  // namespace
+
+int runWalls(const std::vector<std::string>& words) {
+    const Args args(words, {"rooms", "keep-paths", "walk-cost"});
+    args.expectFlags({"out", "texture-budget", "alpha", "max-res", "ppd", "min-cell", "max-cells", "ms-per-mtri",
+                      "ms-per-wall", "split", "rooms", "keep-paths", "walk-cost", "plan-limit", "png", "png-walls"});
+    const walls::AutoWallsOptions options = autoWallsOptions(args);
     const std::string& path = args.positional(0, "MODEL");
     if (args.positional().size() > 1)
         throw Error("walls: expected one MODEL, got " + std::to_string(args.positional().size()) + " words");
@@ -178,48 +266,13 @@ int runWalls(const std::vector<std::string>& words) {
     scenes::checkNotAnInput(out, "--out", inputs);
     if (png) scenes::checkNotAnInput(*png, "--png", inputs);
     if (pngWalls) scenes::checkNotAnInput(*pngWalls, "--png-walls", inputs);
-    if (split > 0.0) {
-        // When content objects wider than two cells hold a quarter of the content triangles or
-        // more, cells cannot leave much out: the models get cut and the scene is loaded again.
-        int widest = 0;
-        double wide = 0.0, all = 0.0;
-        for (const scenes::Object& o : scene.objects) {
-            if (o.role != scenes::Role::Content) continue;
-            const glm::dvec3 size = o.worldBounds.size();
-            const auto triangles = static_cast<double>(scene.meshes[o.mesh].triangleCount());
-            all += triangles;
-            if (std::max(size.x, size.z) > 2.0 * options.minCellSize && triangles >= 1024) {
-                ++widest;
-                wide += triangles;
-            }
-        }
-        if (widest > 0 && wide >= 0.25 * all) {
-            int models = 0;
-            for (scenes::ModelFile& m : base.models)
-                if (m.splitMetres <= 0.0) {
-                    m.splitMetres = split;
-                    ++models;
-                }
-            if (models > 0) {
-                const std::size_t before = scene.objects.size();
-                scene = scenes::loadScene(base);
-                std::printf(
-                    "split: %d content object(s) wider than %.1f m hold %.0f %% of the content triangles; "
-                    "models cut into chunks of %.2f m: %zu objects -> %zu (\"splitMetres\" in the proposal)\n",
-                    widest, 2.0 * options.minCellSize, 100.0 * wide / all, split, before, scene.objects.size());
-            }
-        }
-    }
+    if (split > 0.0) splitWideModels(scene, base, options.minCellSize, split);
     for (const std::string& w : scene.warnings) std::cerr << "cavewall: warning: " << w << "\n";
     std::vector<std::string> warnings;
     walls::AutoWallsResult result = walls::proposeWalls(scene, base, options, &warnings);
     for (const std::string& w : warnings) std::cerr << "cavewall: warning: " << w << "\n";
 
-    // Model paths relative to the new scene.json's folder.
-    const std::filesystem::path outFolder = std::filesystem::absolute(out).parent_path();
-    for (scenes::ModelFile& m : result.description.models)
-        m.file = std::filesystem::relative(std::filesystem::absolute(base.folder / m.file), outFolder);
-    result.description.folder = outFolder;
+    relocateModels(result, base, out);
     if (args.has("keep-paths")) {
         if (base.walkPath.empty()) throw Error("walls: --keep-paths: expected a walkPath in " + path + ", got none");
         result.description.walkPath = base.walkPath;
@@ -230,25 +283,7 @@ int runWalls(const std::vector<std::string>& words) {
 
     printStoreys(result);
     std::printf("%zu structure objects\n", result.structure.size());
-    std::printf("%-7s %6s %12s %16s %9s %12s %7s\n", "grid", "cells", "expected ms", "cell triangles", "textures",
-                "texture MiB", "budget");
-    for (std::size_t i = 0; i < result.candidates.size(); ++i) {
-        const walls::AutoWallsCandidate& c = result.candidates[i];
-        if (result.storeys.size() > 1 && (i == 0 || result.candidates[i - 1].storey != c.storey))
-            std::printf("storey %d:\n", c.storey);
-        const bool chosen =
-            std::any_of(result.storeys.begin(), result.storeys.end(),
-                        [&](const walls::AutoWallsStorey& s) { return s.chosen == static_cast<int>(i); });
-        const std::string grid = c.rooms ? "rooms" : std::to_string(c.nx) + "x" + std::to_string(c.nz);
-        const std::string cut = c.floorPlan ? std::to_string(c.nx) + " rectangles along the floor plan's rooms"
-                                            : std::to_string(c.nx) + " x " + std::to_string(c.nz) + " along real walls";
-        const std::string rooms = c.rooms ? "  (" + cut + ": " + std::to_string(c.portals) + " portals, " +
-                                                std::to_string(c.virtualWalls) + " virtual walls)"
-                                          : "";
-        std::printf("%-7s %6d %12.1f %16.0f %9d %12.1f %7s%s%s\n", grid.c_str(), c.nx * c.nz, c.expectedMs,
-                    c.meanCellTriangles, c.textures, c.textureMB, c.withinBudget ? "fits" : "over",
-                    chosen ? "  <- chosen" : "", rooms.c_str());
-    }
+    printCandidates(result);
     printLimits(result, options);
     if (options.preferRooms) warnRoomsNotChosen(result);
     if (const auto& g = result.given)
@@ -260,18 +295,7 @@ int runWalls(const std::vector<std::string>& words) {
     for (const scenes::VirtualWall& w : result.description.walls) portals += w.kind == scenes::WallKind::Portal;
     std::cout << "wrote " << out.string() << " (" << result.description.cells.size() << " cells, "
               << result.description.walls.size() - portals << " virtual walls, " << portals << " portals)\n";
-    if (png || pngWalls) {
-        const walls::Plan plan = walls::planZones(result.description, options.plan);
-        if (png) {
-            bench::writePlot(*png, bench::planFigure(plan, result.description,
-                                                     std::filesystem::path(path).stem().string() + ", proposed"));
-            std::cout << "wrote " << png->string() << "\n";
-        }
-        if (pngWalls) {
-            scenes::writeImage(*pngWalls, walls::planDiagram(plan, result.description, &scene, 200));
-            std::cout << "wrote " << pngWalls->string() << "\n";
-        }
-    }
+    if (png || pngWalls) writeFigures(result, scene, path, options.plan, png, pngWalls);
     return 0;
 }
 
