@@ -82,6 +82,29 @@ double distanceToRect(glm::dvec2 p, const WallRect& r) { return glm::length(p - 
 
 glm::dvec2 xz(const glm::dvec3& p) { return {p.x, p.z}; }
 
+// The four rooms with A's door narrowed to a 0.5 m slit: narrower than a door, so no doorway,
+// but a person walks through it.
+struct SlitRooms {
+    std::vector<WallRect> walls;
+    FloorGrid grid;
+    FloorPlan plan;
+};
+
+SlitRooms slitRooms() {
+    SlitRooms s{fourRooms(), {}, {}};
+    s.walls[5] = {{5.9, 7.0}, {6.1, 8.0}};  // x = 6 above the slit, z 6.5 to 7.0
+    s.grid = gridOf(s.walls);
+    s.plan = findRooms(s.grid);
+    return s;
+}
+
+// Each segment of the polyline `points` crosses none of `walls`.
+void expectCrossesNoWall(const std::vector<glm::dvec2>& points, const std::vector<WallRect>& walls) {
+    for (std::size_t n = 0; n + 1 < points.size(); ++n)
+        for (std::size_t w = 0; w < walls.size(); ++w)
+            EXPECT_FALSE(crosses(points[n], points[n + 1], walls[w])) << "segment " << n << ", wall " << w;
+}
+
 TEST(RoomTour, WalksThroughTheDoorwaysAroundWallsAndVisitsEveryRoom) {
     const std::vector<WallRect> walls = fourRooms();
     const FloorGrid g = gridOf(walls);
@@ -150,17 +173,14 @@ TEST(RoomTour, GoesToTheNearestRoomNotSeenAndDoesNotWalkBack) {
 // A's door narrowed to a 0.5 m slit is no doorway, but a person walks through it: the tour
 // reaches C over the slit's floor and from there every room, crossing no wall.
 TEST(RoomTour, ReachesRoomsNoDoorwayJoinsOverOtherFloor) {
-    std::vector<WallRect> walls = fourRooms();
-    walls[5] = {{5.9, 7.0}, {6.1, 8.0}};  // x = 6 above the slit, z 6.5 to 7.0
-    const FloorGrid g = gridOf(walls);
-    const FloorPlan plan = findRooms(g);
-    ASSERT_EQ(plan.rooms.size(), 4u);
-    ASSERT_EQ(plan.doorways.size(), 2u);  // B-C and C-D only
-    const std::vector<glm::dvec3> tour = roomTour(g, plan, 1.7);
-    for (std::size_t n = 0; n + 1 < tour.size(); ++n)
-        for (std::size_t w = 0; w < walls.size(); ++w)
-            EXPECT_FALSE(crosses(xz(tour[n]), xz(tour[n + 1]), walls[w])) << "segment " << n << ", wall " << w;
-    std::vector<int> rooms = roomsWalked(g, plan, tour);
+    const SlitRooms s = slitRooms();
+    ASSERT_EQ(s.plan.rooms.size(), 4u);
+    ASSERT_EQ(s.plan.doorways.size(), 2u);  // B-C and C-D only
+    const std::vector<glm::dvec3> tour = roomTour(s.grid, s.plan, 1.7);
+    std::vector<glm::dvec2> plan;
+    for (const glm::dvec3& p : tour) plan.push_back(xz(p));
+    expectCrossesNoWall(plan, s.walls);
+    std::vector<int> rooms = roomsWalked(s.grid, s.plan, tour);
     std::sort(rooms.begin(), rooms.end());
     rooms.erase(std::unique(rooms.begin(), rooms.end()), rooms.end());
     EXPECT_EQ(rooms, (std::vector<int>{0, 1, 2, 3}));
@@ -187,17 +207,12 @@ TEST(RoomTour, RoomCellsWalkItWithoutCrossingTheirRealWalls) {
 // Rooms no doorway joins are joined by other floor off the walls: A's door narrowed to a 0.5 m
 // slit (narrower than a door: no doorway) still lets a route from A into C through it.
 TEST(RoomTour, RoutesTakeOtherFloorWhereNoDoorwayJoins) {
-    std::vector<WallRect> walls = fourRooms();
-    walls[5] = {{5.9, 7.0}, {6.1, 8.0}};  // x = 6 above the slit, z 6.5 to 7.0
-    const FloorGrid g = gridOf(walls);
-    const FloorPlan plan = findRooms(g);
-    ASSERT_EQ(plan.rooms.size(), 4u);
-    ASSERT_EQ(plan.doorways.size(), 2u);  // B-C and C-D only
-    const std::vector<glm::dvec2> route = roomRoute(g, plan, {2.0, 6.0}, {7.5, 6.0});
+    const SlitRooms s = slitRooms();
+    ASSERT_EQ(s.plan.rooms.size(), 4u);
+    ASSERT_EQ(s.plan.doorways.size(), 2u);  // B-C and C-D only
+    const std::vector<glm::dvec2> route = roomRoute(s.grid, s.plan, {2.0, 6.0}, {7.5, 6.0});
     ASSERT_GE(route.size(), 2u);
-    for (std::size_t n = 0; n + 1 < route.size(); ++n)
-        for (std::size_t w = 0; w < walls.size(); ++w)
-            EXPECT_FALSE(crosses(route[n], route[n + 1], walls[w])) << "segment " << n << ", wall " << w;
+    expectCrossesNoWall(route, s.walls);
 }
 
 // A tour kept to x < 9 (a grid candidate's rectangle) leaves D, beyond its doorway at x = 9, out.
