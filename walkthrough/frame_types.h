@@ -132,8 +132,12 @@ struct FrameResult {
     bool bakerBusy = false;     // a background bake ran during some of the frame
     double maxErrorDeg = 0.0;   // max over drawn textures (0 without textures)
     int texturesOverAlpha = 0;  // sum of WallState::texturesOverAlpha (must be 0)
-    // maxErrorDeg converted to pixels on the screens this instance renders: error (rad) times
-    // the largest pixels per radian of each screen from the eye (display/pixel_scale.h).
+    // The walls' error in pixels on the screens this instance renders: over the walls, a wall's
+    // error (rad) times the most pixels per radian (display/pixel_scale.h) over the part of each
+    // view's screen where its quad appears (0 where it appears on none). The pixels a texel moves
+    // on the screen surface, at most: a wall seen head-on from 1.5 m on a 3 m, 1024-pixel screen
+    // converts 10 degrees to about 89 pixels; the same wall at the far, oblique corner of a
+    // screen to more (pixels there look smaller from the eye).
     double maxErrorPixels = 0.0;
     // Levels of detail (WalkthroughSettings): the pixel tolerance used this frame (raised above
     // render.lodPixels when the triangle budget needed it), the largest geometric error drawn

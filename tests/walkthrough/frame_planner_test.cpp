@@ -430,6 +430,25 @@ TEST_F(FramePlannerTest, DrawnWeightsSumToOneAndErrorsAreTheExactAngularError) {
     EXPECT_GT(blended, 5);
 }
 
+// The error in pixels converts each wall's angle where that wall appears. From (0, 1.7, 9)
+// facing -z, the wall (z = 0, x in [-6, 6], y in [0, 3]) shows on cave4's front screen only
+// (1.5 m ahead; the side screens see directions with |x| > |z|, the floor points below 1.7 m
+// within 1.5 m): scaled by 1.5 / 9 it spans x in [-1, 1], y in [-0.283, 0.217] from the eye's
+// foot point, far corner r^2 = 1 + 0.283^2 + 1.5^2, so a radian covers r^2 / (1.5 * 3 / 1024)
+// = 757.8 pixels there. Over the whole front screen (its corner 1.5 m aside and 1.7 m down) it
+// would be 1681.6.
+TEST_F(FramePlannerTest, ErrorInPixelsIsConvertedWhereTheWallAppears) {
+    const WallSetup walls = setup(10.0);
+    FramePlanner planner(scene, description, display, &walls, Transition::Blend, 0.5);
+    const FramePlan p = frame(planner, at({0.0, 1.7, 9.0}));
+    ASSERT_FALSE(row(p).textures.empty());
+    ASSERT_GT(p.maxErrorDeg, 0.0);
+    const double down = 1.7 * 1.5 / 9.0;
+    const double perRadian = (1.0 + down * down + 2.25) / (1.5 * 3.0 / 1024);
+    EXPECT_NEAR(perRadian, 757.8, 0.1);
+    EXPECT_NEAR(p.maxErrorPixels, glm::radians(p.maxErrorDeg) * perRadian, 1e-9 * p.maxErrorPixels);
+}
+
 // Depth walls (PlanOptions::wallKind): the error reported and counted over alpha is the depth
 // walls' own bound (the smaller of depthEyeBound and depthSegmentEyeBound over the wall's depth
 // span, from the boxes: 3 .. 7 m behind the plane), not the flat one.
