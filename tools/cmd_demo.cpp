@@ -30,8 +30,9 @@ const char* const kDemoUsage =
     "geometry at full detail (the reference). Each screen renders at cave4's own resolution, 1024 x 1024\n"
     "pixels (--resolution PX: PX x PX instead, printed with every figure). Every 30th frame (4\n"
     "frames by default) is saved and compared with the reference: pooled PSNR (all compared\n"
-    "pixels together), the worst frame's PSNR and LDR-FLIP (mean and p95, each screen at its own pixels per degree\n"
-    "from the head). Prints the median frame times, the speed-ups beside those errors and the\n"
+    "pixels together), the worst frame's PSNR and LDR-FLIP (mean and % of pixels above 0.1,\n"
+    "each screen at its own pixels per degree from the head). Prints the median frame times, the speed-ups beside "
+    "those errors and the\n"
     "worst wall and level-of-detail errors, and writes DIR (default demo-out): walls/, cells/,\n"
     "lod/ and geometry/ (CSV files, the saved frames), worst_frame.png (the frame with the worst\n"
     "FLIP image: walls | full geometry | FLIP map, each as a fold-out) and report.md.\n"
@@ -86,8 +87,8 @@ std::string resolutionText(const config::DisplayConfig& d) {
 
 std::string errorText(const bench::ImageError& e) {
     std::ostringstream s;
-    s << e.psnrDb << " dB pooled (worst frame " << e.worstFramePsnrDb << " dB), FLIP mean " << e.flipMean << " (p95 "
-      << e.flipP95 << ")";
+    s << e.psnrDb << " dB pooled (worst frame " << e.worstFramePsnrDb << " dB), FLIP mean " << e.flipMean << " ("
+      << 100.0 * e.flipOverThreshold << " % of pixels above " << bench::kFlipThreshold << ")";
     return s.str();
 }
 
@@ -119,7 +120,8 @@ bench::BenchReport frontReport(const app::RunOptions& o, const DemoRuns& d) {
     modes.push_back({.mode = bench::Mode::Cells,
                      .lodPixels = o.lodPixels,
                      .medianMs = display::median(d.control.frameMs),
-                     .error = d.controlError.error});
+                     .error = d.controlError.error,
+                     .control = true});
     modes.push_back({.mode = bench::Mode::Walls,
                      .lodPixels = o.lodPixels,
                      .wallKind = o.wallKind,
@@ -156,7 +158,9 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
     row(r, "worst frame PSNR (dB)", d.wallsError.error.worstFramePsnrDb, c.worstFramePsnrDb,
         lodError(&bench::ImageError::worstFramePsnrDb), "inf");
     row(r, "FLIP mean", d.wallsError.error.flipMean, c.flipMean, lodError(&bench::ImageError::flipMean), 0);
-    row(r, "FLIP p95", d.wallsError.error.flipP95, c.flipP95, lodError(&bench::ImageError::flipP95), 0);
+    auto percent = [](std::optional<double> share) { return share ? std::optional(100.0 * *share) : std::nullopt; };
+    row(r, "FLIP > 0.1 (% of pixels)", 100.0 * d.wallsError.error.flipOverThreshold, 100.0 * c.flipOverThreshold,
+        percent(lodError(&bench::ImageError::flipOverThreshold)), 0);
     row(r, "worst wall texture error (deg)", d.walls.worstErrorDeg, "-", ifLod("-"), "-");
     row(r, "worst wall texture error (px)", d.walls.worstErrorPx, "-", ifLod("-"), "-");
     row(r, "worst level-of-detail error (px)", d.walls.worstLodErrorPx, d.control.worstLodErrorPx,

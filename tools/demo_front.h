@@ -20,6 +20,7 @@ struct DemoMode {
     double alphaDeg = 0.0;                             // the walls run's
     double medianMs = 0.0;
     bench::ImageError error{};
+    bool control = false;  // the control (cells without textures), ringed in the plot as the bench's
 };
 
 // The runs as a report, the reference first (`modes[0]` must be full geometry at full
