@@ -1,3 +1,4 @@
+#include "app/bench/demo_front.h"
 #include "app/gl/run_session.h"
 #include "config/display_config.h"
 #include "scenes/file_write.h"
@@ -5,7 +6,6 @@
 #include "display/timing.h"
 #include "tools/args.h"
 #include "tools/cmd_demo_compare.h"
-#include "tools/demo_front.h"
 #include "tools/commands.h"
 #include "tools/session_args.h"
 
@@ -111,7 +111,7 @@ std::string benchResolution(const config::DisplayConfig& d) {
 
 // The four runs as the bench's modes: full geometry (the reference) first.
 bench::BenchReport frontReport(const app::RunOptions& o, const DemoRuns& d) {
-    std::vector<DemoMode> modes = {{.medianMs = display::median(d.geometry.frameMs)}};
+    std::vector<bench::DemoMode> modes = {{.medianMs = display::median(d.geometry.frameMs)}};
     if (d.lod && d.lodError)
         modes.push_back({.mode = bench::Mode::Full,
                          .lodPixels = o.lodPixels,
@@ -128,7 +128,7 @@ bench::BenchReport frontReport(const app::RunOptions& o, const DemoRuns& d) {
                      .alphaDeg = o.plan.alphaDeg,
                      .medianMs = display::median(d.walls.frameMs),
                      .error = d.wallsError.error});
-    return demoReport(modes, benchResolution(o.display));
+    return bench::demoReport(modes, benchResolution(o.display));
 }
 
 void writeReport(const std::filesystem::path& out, const app::RunOptions& o, const DemoRuns& d) {
@@ -177,7 +177,7 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
          "(0 expected).\n\nPer-frame data: `walls/frames.csv`, "
          "`walls/walls.csv`, `cells/frames.csv`, "
       << (d.lod ? "`lod/frames.csv`, " : "") << "`geometry/frames.csv`.\n\n## The trade-off\n\n";
-    for (const std::string& line : writeDemoFront(out, frontReport(o, d))) r << line << "\n\n";
+    for (const std::string& line : bench::writeDemoFront(out, frontReport(o, d))) r << line << "\n\n";
     r << "## The worst frame\n\nFrame " << d.wallsError.worstFrame << " (its worst screen's FLIP mean "
       << d.wallsError.worstFlipMean << ", " << resolutionText(o.display)
       << "): walls | full geometry | FLIP map (black 0, pale yellow 1).\n\n![worst frame]("
@@ -220,7 +220,7 @@ int runDemo(const std::vector<std::string>& words) {
     o.lodPixels = args.number("lod", 1.0, 0.0, 1e4);
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.wallKind = args.choice("walls", walls::kWallKindNames, o.wallKind);
-    const std::string loadStart = loadAverage();
+    const std::string loadStart = bench::loadAverage();
     std::cout << "demo: cave4 at " << resolutionText(o.display) << ", stereo mode "
               << config::toString(o.display.stereo) << ", " << kindName(o) << " at alpha " << o.plan.alphaDeg
               << " deg; load average " << loadStart << "\n";
@@ -249,7 +249,7 @@ int runDemo(const std::vector<std::string>& words) {
     d.wallsError = compareRuns(display, d.walls, d.geometry, out);
     d.controlError = compareRuns(display, d.control, d.geometry, out / "cells");
     if (d.lod) d.lodError = compareRuns(display, *d.lod, d.geometry, out / "lod");
-    d.loadEnd = loadAverage();
+    d.loadEnd = bench::loadAverage();
     writeReport(out, o, d);
     const double mw = display::median(d.walls.frameMs), mg = display::median(d.geometry.frameMs);
     std::cout << "demo (" << resolutionText(o.display) << "): median frame time " << mw << " ms with " << kindName(o)

@@ -1,5 +1,6 @@
 // bench.csv columns, bench.md and the plot of `cavewall bench` (app/bench/report.h,
 // app/bench/report_plot.h).
+#include "app/bench/demo_front.h"
 #include "app/bench/report.h"
 #include "app/bench/report_plot.h"
 
@@ -485,29 +486,49 @@ TEST(BenchPlot, NamesEveryModeAndFlagsTheFrontControlAndAlternative) {
 }
 
 // The demo's control is its cells run at the walls' level of detail, which the bench's rule
-// (cells at full detail) does not take: named in the report, it is the control all the same,
-// ringed in both panels and the yardstick of the walls' gain; walls modes name their kind.
-TEST(BenchPlot, RingsTheControlTheReportNames) {
-    BenchReport report;
-    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), sample(Mode::Full, 0, 20.0, 0.01),
-                    sample(Mode::Cells, 0, 2.0, 0.08), sample(Mode::Walls, 10, 3.0, 0.02),
-                    sample(Mode::Walls, 10, 3.5, 0.03)};
-    for (std::size_t i = 1; i < report.modes.size(); ++i) report.modes[i].lodPixels = 1.0;
-    report.modes[3].wallKind = walls::WallKind::Depth;
-    EXPECT_EQ(controlMode(report), nullptr);  // no cells mode at full detail
-    report.control = 2;
-    EXPECT_EQ(controlMode(report), &report.modes[2]);
-    compareWithControl(report);
-    EXPECT_NEAR(report.modes[3].flipRatio, 0.02 / 0.08, 1e-12);  // FLIP mean = rmse in sample()
+// (cells at full detail) does not take: the demo names it, and it is ringed in both panels as
+// the bench's control is and is the yardstick of the walls' gain. Walls modes name their kind.
+TEST(BenchPlot, RingsTheDemosControl) {
+    auto error = [](double flipMean) {
+        ImageError e;
+        e.frames = 4;
+        e.psnrDb = 30.0 - 100.0 * flipMean;
+        e.rmse = flipMean;
+        e.flipMean = flipMean;
+        return e;
+    };
+    // The demo's four runs: full geometry (the reference), with levels of detail, the control,
+    // the depth walls.
+    const std::vector<DemoMode> runs = {
+        {.medianMs = 900.0},
+        {.mode = Mode::Full, .lodPixels = 1.0, .medianMs = 500.0, .error = error(0.001)},
+        {.mode = Mode::Cells, .lodPixels = 1.0, .medianMs = 300.0, .error = error(0.008), .control = true},
+        {.mode = Mode::Walls,
+         .lodPixels = 1.0,
+         .wallKind = walls::WallKind::Depth,
+         .alphaDeg = 10.0,
+         .medianMs = 400.0,
+         .error = error(0.004)}};
+    const BenchReport report = demoReport(runs, "32x32 per screen, mono");
+    ASSERT_EQ(controlMode(report), &report.modes[2]);
+    EXPECT_NEAR(report.modes[3].flipRatio, 0.5, 1e-12);  // 0.004 against the control's 0.008
+    ModeResult flat = report.modes[3];
+    flat.wallKind = walls::WallKind::Flat;
+    EXPECT_EQ(modeLabel(flat), "walls flat a=10 blend lod 1px");
     const Figure figure = tradeOffFigure(report);
     for (const PlotPanel& panel : figure.panels) {
         SCOPED_TRACE(panel.title);
+        ASSERT_EQ(panel.series.size(), 4u);
         EXPECT_EQ(panel.series[2].name, "#3 cells lod 1px");
         EXPECT_EQ(panel.series[3].name, "#4 walls depth a=10 blend lod 1px");
-        EXPECT_EQ(panel.series[4].name, "#5 walls flat a=10 blend lod 1px");
-        for (std::size_t i = 1; i < panel.series.size(); ++i)
-            EXPECT_EQ(panel.series[i].points.at(0).control, i == 2) << panel.series[i].name;
+        EXPECT_TRUE(panel.series[2].points.at(0).control);
+        EXPECT_TRUE(panel.series[1].points.at(0).bestAlternative);
+        EXPECT_FALSE(panel.series[1].points.at(0).control || panel.series[3].points.at(0).control);
     }
+    // Without the demo's word the bench's rule finds no control there.
+    std::vector<DemoMode> unnamed = runs;
+    unnamed[2].control = false;
+    EXPECT_EQ(controlMode(demoReport(unnamed, "")), nullptr);
 }
 
 // A mode that compared no frame has no error to show, and a NaN frame time no place on the axis:
