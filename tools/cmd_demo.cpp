@@ -162,7 +162,8 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
     row(r, "FLIP > 0.1 (% of pixels)", 100.0 * d.wallsError.error.flipOverThreshold, 100.0 * c.flipOverThreshold,
         percent(lodError(&bench::ImageError::flipOverThreshold)), 0);
     row(r, "worst wall texture error (deg)", d.walls.worstErrorDeg, "-", ifLod("-"), "-");
-    row(r, "worst wall texture error (px)", d.walls.worstErrorPx, "-", ifLod("-"), "-");
+    row(r, "worst wall texture error (px at its screens' pixels per degree)", d.walls.worstErrorPx, "-", ifLod("-"),
+        "-");
     row(r, "worst level-of-detail error (px)", d.walls.worstLodErrorPx, d.control.worstLodErrorPx,
         ifLod(d.lod ? d.lod->worstLodErrorPx : 0.0), 0);
     row(r, "texture page-ins / misses", std::to_string(d.walls.pageIns) + " / " + std::to_string(d.walls.misses), "-",

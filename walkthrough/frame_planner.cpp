@@ -425,13 +425,12 @@ void FramePlanner::measureError(FramePlan& p) const {
     }
     p.maxErrorDeg = glm::degrees(worst);
     for (const WallState& s : p.walls)
-        if (s.errorDeg > 0.0)
-            p.maxErrorPixels = std::max(p.maxErrorPixels, glm::radians(s.errorDeg) * wallPixelsPerRadian(s.wall));
+        if (s.errorDeg > 0.0) p.maxErrorPixels = std::max(p.maxErrorPixels, s.errorDeg * wallPixelsPerDegree(s.wall));
 }
 
-// A texture is drawn on its wall's quad (walls/texture_rect.h), so its error shows only where
-// that quad appears: the most pixels per radian over the part of each view's screen it covers.
-double FramePlanner::wallPixelsPerRadian(int wall) const {
+// A texture is drawn on its wall's quad (walls/texture_rect.h), so its error shows only on the
+// screens where that quad appears: the most of their pixels per degree of visual angle.
+double FramePlanner::wallPixelsPerDegree(int wall) const {
     const display::ScreenQuad& q = _walls->plan.walls[wall].quad;
     const glm::dvec3 corners[4] = {q.lowerLeft, q.lowerRight, q.upperLeft, q.lowerRight + q.upperLeft - q.lowerLeft};
     const glm::dmat4 caveFromWorld = glm::inverse(_input.worldFromCave);
@@ -442,7 +441,8 @@ double FramePlanner::wallPixelsPerRadian(int wall) const {
         for (int c = 0; c < 4; ++c) inView[c] = glm::dvec3(viewFromWorld * glm::dvec4(corners[c], 1.0));
         const display::ViewScreen screen =
             display::viewScreen(view.frustum, {view.pass.viewport.width, view.pass.viewport.height});
-        most = std::max(most, display::maxPixelsPerRadianInFront(screen, inView));
+        if (display::maxPixelsPerRadianInFront(screen, inView) > 0.0)
+            most = std::max(most, display::minPixelsPerDegree(screen));
     }
     return most;
 }

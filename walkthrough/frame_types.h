@@ -132,12 +132,14 @@ struct FrameResult {
     bool bakerBusy = false;     // a background bake ran during some of the frame
     double maxErrorDeg = 0.0;   // max over drawn textures (0 without textures)
     int texturesOverAlpha = 0;  // sum of WallState::texturesOverAlpha (must be 0)
-    // The walls' error in pixels on the screens this instance renders: over the walls, a wall's
-    // error (rad) times the most pixels per radian (display/pixel_scale.h) over the part of each
-    // view's screen where its quad appears (0 where it appears on none). The pixels a texel moves
-    // on the screen surface, at most: a wall seen head-on from 1.5 m on a 3 m, 1024-pixel screen
-    // converts 10 degrees to about 89 pixels; the same wall at the far, oblique corner of a
-    // screen to more (pixels there look smaller from the eye).
+    // The walls' error in pixels as the viewer sees them, on the screens this instance renders:
+    // over the walls, a wall's error (degrees) times the pixels per degree of visual angle of the
+    // screens its quad appears on (display::minPixelsPerDegree of each view's screen, the scale
+    // the image metrics use; the most of them; 0 where it appears on none). cave4's walls seen
+    // from the centre, 1.5 m away, have 8.9 pixels per degree: 10 degrees are 89 pixels. Not the
+    // length on the screen's surface, which at a screen's oblique far corner is several times
+    // more pixels (3.3 times at cave4's front corners, the head at 1.7 m), each looking that
+    // much smaller from the eye (display/pixel_scale.h).
     double maxErrorPixels = 0.0;
     // Levels of detail (WalkthroughSettings): the pixel tolerance used this frame (raised above
     // render.lodPixels when the triangle budget needed it), the largest geometric error drawn

@@ -527,7 +527,9 @@ std::string markdownReport(const BenchReport& report) {
           "frame-to-frame change of the error "
           "image against the reference's own change between consecutive compared frames, peak and RMS over frame "
           "pairs; vs control: pooled PSNR minus that of 'cells' (cell culling without textures), and FLIP mean over "
-          "its; LOD err px: the largest geometric error of a drawn level of detail in pixels on its screen (sampled "
+          "its; max err deg / px: the worst angular error of a drawn wall texture, in pixels at the pixels per "
+          "degree of the screens showing the wall; LOD err px: the largest geometric error of a drawn level of detail "
+          "in pixels on its screen (sampled "
           "Hausdorff distance to the full mesh, scenes/mesh_lod.h), and the mean pixel tolerance the frames used\n";
     for (std::size_t i = 0; i < report.modes.size(); ++i) {
         const ModeResult& m = report.modes[i];

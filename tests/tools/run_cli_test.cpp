@@ -469,7 +469,7 @@ TEST(RunCli, DemoWritesTheReportWithAllFourRuns) {
     EXPECT_THAT(report, HasSubstr("| FLIP mean | "));
     EXPECT_THAT(report, HasSubstr("| FLIP > 0.1 (% of pixels) | "));  // not p95: most pixels match exactly
     EXPECT_THAT(report, testing::Not(HasSubstr("p95")));
-    EXPECT_THAT(report, HasSubstr("| worst wall texture error (px) | "));
+    EXPECT_THAT(report, HasSubstr("| worst wall texture error (px at its screens' pixels per degree) | "));
     EXPECT_THAT(report, HasSubstr("Walls planned at alpha 10 deg"));
     // The worst frame: walls | full geometry | FLIP map, three cave4 fold-outs side by side.
     const scenes::Image worst = scenes::readImage(out / "worst_frame.png");

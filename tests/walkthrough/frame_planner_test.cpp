@@ -430,23 +430,22 @@ TEST_F(FramePlannerTest, DrawnWeightsSumToOneAndErrorsAreTheExactAngularError) {
     EXPECT_GT(blended, 5);
 }
 
-// The error in pixels converts each wall's angle where that wall appears. From (0, 1.7, 9)
-// facing -z, the wall (z = 0, x in [-6, 6], y in [0, 3]) shows on cave4's front screen only
-// (1.5 m ahead; the side screens see directions with |x| > |z|, the floor points below 1.7 m
-// within 1.5 m): scaled by 1.5 / 9 it spans x in [-1, 1], y in [-0.283, 0.217] from the eye's
-// foot point, far corner r^2 = 1 + 0.283^2 + 1.5^2, so a radian covers r^2 / (1.5 * 3 / 1024)
-// = 757.8 pixels there. Over the whole front screen (its corner 1.5 m aside and 1.7 m down) it
-// would be 1681.6.
-TEST_F(FramePlannerTest, ErrorInPixelsIsConvertedWhereTheWallAppears) {
+// The error in pixels is each wall's angle at the pixels per degree of the screens it appears
+// on. From (0, 1.7, 9) facing -z, the wall (z = 0, x in [-6, 6], y in [0, 3]) shows on cave4's
+// front screen only: the side screens see directions with |x| > |z| and the floor what lies
+// within 1.5 m of the feet. The front screen, 1.5 m from the head with its foot point on it,
+// has 1.5 m / (3 m / 1024) = 512 pixels per radian there, 8.94 per degree: the floor's 1.7 m
+// would give 10.13, and the old figure, the most pixels per radian anywhere on any screen (the
+// front screen's corner 1.5 m aside and 1.7 m down: 7.39 / (1.5 * 3 / 1024)), 29.35.
+TEST_F(FramePlannerTest, ErrorInPixelsIsAtThePixelsPerDegreeOfTheScreensShowingTheWall) {
     const WallSetup walls = setup(10.0);
     FramePlanner planner(scene, description, display, &walls, Transition::Blend, 0.5);
     const FramePlan p = frame(planner, at({0.0, 1.7, 9.0}));
     ASSERT_FALSE(row(p).textures.empty());
     ASSERT_GT(p.maxErrorDeg, 0.0);
-    const double down = 1.7 * 1.5 / 9.0;
-    const double perRadian = (1.0 + down * down + 2.25) / (1.5 * 3.0 / 1024);
-    EXPECT_NEAR(perRadian, 757.8, 0.1);
-    EXPECT_NEAR(p.maxErrorPixels, glm::radians(p.maxErrorDeg) * perRadian, 1e-9 * p.maxErrorPixels);
+    const double perDegree = 512.0 * glm::pi<double>() / 180.0;
+    EXPECT_NEAR(perDegree, 8.936, 1e-3);
+    EXPECT_NEAR(p.maxErrorPixels, p.maxErrorDeg * perDegree, 1e-9 * p.maxErrorPixels);
 }
 
 // Depth walls (PlanOptions::wallKind): the error reported and counted over alpha is the depth
