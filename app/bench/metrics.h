@@ -44,7 +44,8 @@ using metrics::psnrFromMse;
 
 // FLIP 0.1 is a colour difference, after the contrast sensitivity filters, of about 2.2 HyAB
 // units (metrics/flip.h: 0.1 = 0.95 HyAB^0.7 / (0.4 * 41.3)), near CIELAB's just-noticeable
-// difference of about 2.3: a pixel above it is one a viewer flipping the images can see differ.
+// difference of about 2.3: a pixel above it likely differs visibly to a viewer flipping the
+// images (feature differences only raise FLIP).
 constexpr double kFlipThreshold = 0.1;
 
 // A set of comparisons, summarised.
