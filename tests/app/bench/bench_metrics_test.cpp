@@ -71,6 +71,26 @@ TEST(BenchMetrics, IdenticalFramesHaveNoError) {
     EXPECT_EQ(e.poppingPeak, 0.0);  // the error stays 0 while the picture changes
 }
 
+// Why a share and not a percentile: a small wrong patch (a 6 x 6 block of a flat 64 x 64 image
+// turned from grey to white: 36 of 4096 pixels, spread a little by FLIP's filters, still far
+// under 5 %) leaves FLIP's p95 at 0, while the share over 0.1 sees it.
+TEST(BenchMetrics, ASmallWrongPatchShowsInTheShareWhereP95ReadsZero) {
+    const scenes::Image ref = flat(64, 64, 100);
+    scenes::Image test = ref;
+    for (int y = 29; y < 35; ++y)
+        for (int x = 29; x < 35; ++x)
+            for (int c = 0; c < 3; ++c) test.rgba[(static_cast<std::size_t>(y) * 64 + x) * 4 + c] = 255;
+    metrics::FlipOptions options;
+    options.pixelsPerDegree = 9.0;
+    const metrics::FlipResult f = metrics::flip(test, ref, options);
+    ASSERT_EQ(f.p95, 0.0);
+    ErrorPool pool(1);
+    pool.addFrame(0, {compared(0, test, ref, 9.0)});
+    const double share = pool.result().flipOverThreshold;
+    EXPECT_GE(share, 36.0 / (64 * 64));  // at least the patch itself
+    EXPECT_LT(share, 0.05);
+}
+
 TEST(BenchMetrics, PsnrIsPooledOverPixelsWithWorstFrameAndCappedMeanApart) {
     // Two screens; frame 0 both exact, frame 1 screen 0 off by 10 levels everywhere.
     const scenes::Image ref = flat(32, 32, 100), off = signNoise(ref, 10, 7);
