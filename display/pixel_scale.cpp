@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <vector>
 
 namespace cavewall::display {
 
@@ -85,6 +86,20 @@ double maxPixelsPerRadian(const ViewScreen& screen, std::span<const glm::dvec3> 
     y1 = std::min(y1, screen.top);
     if (!(x0 <= x1 && y0 <= y1)) return 0.0;
     return farthestCorner(screen, x0, x1, y0, y1);
+}
+
+double maxPixelsPerRadianInFront(const ViewScreen& screen, std::span<const glm::dvec3> viewPoints) {
+    // The hull cut by the plane z = -e is the hull of the points in front and of the plane's
+    // crossings of every segment from a point in front to one behind.
+    constexpr double e = 1e-9;
+    std::vector<glm::dvec3> front;
+    for (const glm::dvec3& a : viewPoints) {
+        if (!(a.z <= -e)) continue;
+        front.push_back(a);
+        for (const glm::dvec3& b : viewPoints)
+            if (b.z > -e) front.push_back(a + (b - a) * ((-e - a.z) / (b.z - a.z)));
+    }
+    return front.empty() ? 0.0 : maxPixelsPerRadian(screen, front);
 }
 
 double nearestDistance(std::span<const glm::dvec3> points) {

@@ -57,6 +57,12 @@ double minPixelsPerDegree(const ViewScreen& screen);
 // entirely beside the screen.
 double maxPixelsPerRadian(const ViewScreen& screen, std::span<const glm::dvec3> viewPoints);
 
+// The same for the convex hull of `viewPoints` (a wall's corners, say) cut to the part in front
+// of the eye (view z <= -1e-9 m): a shape that crosses the eye's plane counts where its part in
+// front can appear, not on the whole screen. 0 when no part is in front or it projects beside
+// the screen.
+double maxPixelsPerRadianInFront(const ViewScreen& screen, std::span<const glm::dvec3> viewPoints);
+
 // Distance from the origin (the eye) to the axis-aligned box around `points`; 0 inside it.
 double nearestDistance(std::span<const glm::dvec3> points);
 

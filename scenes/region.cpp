@@ -40,12 +40,15 @@ int firstNonConvexCorner(const std::vector<glm::dvec2>& r) {
 
 bool regionContains(const std::vector<glm::dvec2>& r, glm::dvec2 p, double tolerance) {
     if (r.size() < 3) return false;
+    // Inside is left of every edge seen from above for a counter-clockwise region, right for a
+    // clockwise one.
+    const double inward = regionArea(r) >= 0.0 ? 1.0 : -1.0;
     for (std::size_t i = 0; i < r.size(); ++i) {
         const glm::dvec2 a = r[i], b = r[(i + 1) % r.size()];
         const double len = glm::length(b - a);
         if (len == 0.0) continue;
-        // Signed distance of p to the left of edge a->b (seen from above); inside is left.
-        if (turn(a, b, p) / len < -tolerance) return false;
+        // Signed distance of p to the inner side of edge a->b.
+        if (inward * turn(a, b, p) / len < -tolerance) return false;
     }
     return true;
 }

@@ -1,3 +1,4 @@
+#include "app/bench/demo_front.h"
 #include "app/gl/run_session.h"
 #include "config/display_config.h"
 #include "scenes/file_write.h"
@@ -5,7 +6,6 @@
 #include "display/timing.h"
 #include "tools/args.h"
 #include "tools/cmd_demo_compare.h"
-#include "tools/demo_front.h"
 #include "tools/commands.h"
 #include "tools/session_args.h"
 
@@ -30,8 +30,9 @@ const char* const kDemoUsage =
     "geometry at full detail (the reference). Each screen renders at cave4's own resolution, 1024 x 1024\n"
     "pixels (--resolution PX: PX x PX instead, printed with every figure). Every 30th frame (4\n"
     "frames by default) is saved and compared with the reference: pooled PSNR (all compared\n"
-    "pixels together), the worst frame's PSNR and LDR-FLIP (mean and p95, each screen at its own pixels per degree\n"
-    "from the head). Prints the median frame times, the speed-ups beside those errors and the\n"
+    "pixels together), the worst frame's PSNR and LDR-FLIP (mean and % of pixels above 0.1,\n"
+    "each screen at its own pixels per degree from the head). Prints the median frame times, the speed-ups beside "
+    "those errors and the\n"
     "worst wall and level-of-detail errors, and writes DIR (default demo-out): walls/, cells/,\n"
     "lod/ and geometry/ (CSV files, the saved frames), worst_frame.png (the frame with the worst\n"
     "FLIP image: walls | full geometry | FLIP map, each as a fold-out) and report.md.\n"
@@ -86,8 +87,8 @@ std::string resolutionText(const config::DisplayConfig& d) {
 
 std::string errorText(const bench::ImageError& e) {
     std::ostringstream s;
-    s << e.psnrDb << " dB pooled (worst frame " << e.worstFramePsnrDb << " dB), FLIP mean " << e.flipMean << " (p95 "
-      << e.flipP95 << ")";
+    s << e.psnrDb << " dB pooled (worst frame " << e.worstFramePsnrDb << " dB), FLIP mean " << e.flipMean << " ("
+      << 100.0 * e.flipOverThreshold << " % of pixels above " << bench::kFlipThreshold << ")";
     return s.str();
 }
 
@@ -110,7 +111,7 @@ std::string benchResolution(const config::DisplayConfig& d) {
 
 // The four runs as the bench's modes: full geometry (the reference) first.
 bench::BenchReport frontReport(const app::RunOptions& o, const DemoRuns& d) {
-    std::vector<DemoMode> modes = {{.medianMs = display::median(d.geometry.frameMs)}};
+    std::vector<bench::DemoMode> modes = {{.medianMs = display::median(d.geometry.frameMs)}};
     if (d.lod && d.lodError)
         modes.push_back({.mode = bench::Mode::Full,
                          .lodPixels = o.lodPixels,
@@ -119,14 +120,15 @@ bench::BenchReport frontReport(const app::RunOptions& o, const DemoRuns& d) {
     modes.push_back({.mode = bench::Mode::Cells,
                      .lodPixels = o.lodPixels,
                      .medianMs = display::median(d.control.frameMs),
-                     .error = d.controlError.error});
+                     .error = d.controlError.error,
+                     .control = true});
     modes.push_back({.mode = bench::Mode::Walls,
                      .lodPixels = o.lodPixels,
                      .wallKind = o.wallKind,
                      .alphaDeg = o.plan.alphaDeg,
                      .medianMs = display::median(d.walls.frameMs),
                      .error = d.wallsError.error});
-    return demoReport(modes, benchResolution(o.display));
+    return bench::demoReport(modes, benchResolution(o.display));
 }
 
 void writeReport(const std::filesystem::path& out, const app::RunOptions& o, const DemoRuns& d) {
@@ -156,9 +158,12 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
     row(r, "worst frame PSNR (dB)", d.wallsError.error.worstFramePsnrDb, c.worstFramePsnrDb,
         lodError(&bench::ImageError::worstFramePsnrDb), "inf");
     row(r, "FLIP mean", d.wallsError.error.flipMean, c.flipMean, lodError(&bench::ImageError::flipMean), 0);
-    row(r, "FLIP p95", d.wallsError.error.flipP95, c.flipP95, lodError(&bench::ImageError::flipP95), 0);
+    auto percent = [](std::optional<double> share) { return share ? std::optional(100.0 * *share) : std::nullopt; };
+    row(r, "FLIP > 0.1 (% of pixels)", 100.0 * d.wallsError.error.flipOverThreshold, 100.0 * c.flipOverThreshold,
+        percent(lodError(&bench::ImageError::flipOverThreshold)), 0);
     row(r, "worst wall texture error (deg)", d.walls.worstErrorDeg, "-", ifLod("-"), "-");
-    row(r, "worst wall texture error (px)", d.walls.worstErrorPx, "-", ifLod("-"), "-");
+    row(r, "worst wall texture error (px at its screens' pixels per degree)", d.walls.worstErrorPx, "-", ifLod("-"),
+        "-");
     row(r, "worst level-of-detail error (px)", d.walls.worstLodErrorPx, d.control.worstLodErrorPx,
         ifLod(d.lod ? d.lod->worstLodErrorPx : 0.0), 0);
     row(r, "texture page-ins / misses", std::to_string(d.walls.pageIns) + " / " + std::to_string(d.walls.misses), "-",
@@ -173,7 +178,7 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
          "(0 expected).\n\nPer-frame data: `walls/frames.csv`, "
          "`walls/walls.csv`, `cells/frames.csv`, "
       << (d.lod ? "`lod/frames.csv`, " : "") << "`geometry/frames.csv`.\n\n## The trade-off\n\n";
-    for (const std::string& line : writeDemoFront(out, frontReport(o, d))) r << line << "\n\n";
+    for (const std::string& line : bench::writeDemoFront(out, frontReport(o, d))) r << line << "\n\n";
     r << "## The worst frame\n\nFrame " << d.wallsError.worstFrame << " (its worst screen's FLIP mean "
       << d.wallsError.worstFlipMean << ", " << resolutionText(o.display)
       << "): walls | full geometry | FLIP map (black 0, pale yellow 1).\n\n![worst frame]("
@@ -216,7 +221,7 @@ int runDemo(const std::vector<std::string>& words) {
     o.lodPixels = args.number("lod", 1.0, 0.0, 1e4);
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.wallKind = args.choice("walls", walls::kWallKindNames, o.wallKind);
-    const std::string loadStart = loadAverage();
+    const std::string loadStart = bench::loadAverage();
     std::cout << "demo: cave4 at " << resolutionText(o.display) << ", stereo mode "
               << config::toString(o.display.stereo) << ", " << kindName(o) << " at alpha " << o.plan.alphaDeg
               << " deg; load average " << loadStart << "\n";
@@ -245,7 +250,7 @@ int runDemo(const std::vector<std::string>& words) {
     d.wallsError = compareRuns(display, d.walls, d.geometry, out);
     d.controlError = compareRuns(display, d.control, d.geometry, out / "cells");
     if (d.lod) d.lodError = compareRuns(display, *d.lod, d.geometry, out / "lod");
-    d.loadEnd = loadAverage();
+    d.loadEnd = bench::loadAverage();
     writeReport(out, o, d);
     const double mw = display::median(d.walls.frameMs), mg = display::median(d.geometry.frameMs);
     std::cout << "demo (" << resolutionText(o.display) << "): median frame time " << mw << " ms with " << kindName(o)

@@ -6,6 +6,7 @@
 #include "walls/angular_error.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 
 namespace cavewall::walkthrough {
@@ -423,11 +424,27 @@ void FramePlanner::measureError(FramePlan& p) const {
         worst = std::max(worst, wall);
     }
     p.maxErrorDeg = glm::degrees(worst);
-    for (int screen : _screens)
-        p.maxErrorPixels =
-            std::max(p.maxErrorPixels,
-                     worst * display::maxPixelsPerRadian(display::viewScreen(
-                                 _display.quad(screen), _input.head.position, _display.screens()[screen].resolution)));
+    for (const WallState& s : p.walls)
+        if (s.errorDeg > 0.0) p.maxErrorPixels = std::max(p.maxErrorPixels, s.errorDeg * wallPixelsPerDegree(s.wall));
+}
+
+// A texture is drawn on its wall's quad (walls/texture_rect.h), so its error shows only on the
+// screens where that quad appears: the most of their pixels per degree of visual angle.
+double FramePlanner::wallPixelsPerDegree(int wall) const {
+    const display::ScreenQuad& q = _walls->plan.walls[wall].quad;
+    const glm::dvec3 corners[4] = {q.lowerLeft, q.lowerRight, q.upperLeft, q.lowerRight + q.upperLeft - q.lowerLeft};
+    const glm::dmat4 caveFromWorld = glm::inverse(_input.worldFromCave);
+    double most = 0.0;
+    for (const display::ScreenView& view : _views) {
+        const glm::dmat4 viewFromWorld = view.frustum.viewFromFrame * caveFromWorld;
+        std::array<glm::dvec3, 4> inView;
+        for (int c = 0; c < 4; ++c) inView[c] = glm::dvec3(viewFromWorld * glm::dvec4(corners[c], 1.0));
+        const display::ViewScreen screen =
+            display::viewScreen(view.frustum, {view.pass.viewport.width, view.pass.viewport.height});
+        if (display::maxPixelsPerRadianInFront(screen, inView) > 0.0)
+            most = std::max(most, display::minPixelsPerDegree(screen));
+    }
+    return most;
 }
 
 std::vector<int> objectsOfCells(const scenes::Scene& scene, const std::vector<bool>& cells) {

@@ -30,8 +30,9 @@
 //      load it before drawing; prefetching the neighbours as `soon` makes this rare).
 //   5. the error: textureErrorAt (walls/plan.h: maxAngularError for flat walls, the smaller
 //      of depthEyeBound and depthSegmentEyeBound for depth walls) of every texture drawn
-//      with non-zero weight against the true eye, in degrees and in pixels (FrameResult::maxErrorPixels), and
-//      the count of those over the plan's alpha (+ kErrorTolerance): 0 while the bound holds.
+//      with non-zero weight against the true eye, in degrees and in pixels (FrameResult::maxErrorPixels:
+//      each wall's error at the pixels per degree of the screens its quad appears on), and the
+//      count of those over the plan's alpha (+ kErrorTolerance): 0 while the bound holds.
 // Transition::Warp: every wall drawn with textures and no geometry weight gets the structure
 // behind it warped into its texture's view (the texture of the largest weight when it mixes
 // several). When the warp of such a wall is ill-conditioned for any given view
@@ -165,6 +166,7 @@ private:
     bool warpConditioned(const walls::WarpWall& warp) const;
     bool wallInView(int wall) const;
     void measureError(FramePlan& plan) const;
+    double wallPixelsPerDegree(int wall) const;
     void addDraw(const walls::WallBlend& blend, const WallState& state, FramePlan& plan) const;
 
     const scenes::Scene& _scene;

@@ -132,8 +132,14 @@ struct FrameResult {
     bool bakerBusy = false;     // a background bake ran during some of the frame
     double maxErrorDeg = 0.0;   // max over drawn textures (0 without textures)
     int texturesOverAlpha = 0;  // sum of WallState::texturesOverAlpha (must be 0)
-    // maxErrorDeg converted to pixels on the screens this instance renders: error (rad) times
-    // the largest pixels per radian of each screen from the eye (display/pixel_scale.h).
+    // The walls' error in pixels as the viewer sees them, on the screens this instance renders:
+    // over the walls, a wall's error (degrees) times the pixels per degree of visual angle of the
+    // screens its quad appears on (display::minPixelsPerDegree of each view's screen, the scale
+    // the image metrics use; the most of them; 0 where it appears on none). cave4's walls seen
+    // from the centre, 1.5 m away, have 8.9 pixels per degree: 10 degrees are 89 pixels. Not the
+    // length on the screen's surface, which at a screen's oblique far corner is several times
+    // more pixels (3.3 times at cave4's front corners, the head at 1.7 m), each looking that
+    // much smaller from the eye (display/pixel_scale.h).
     double maxErrorPixels = 0.0;
     // Levels of detail (WalkthroughSettings): the pixel tolerance used this frame (raised above
     // render.lodPixels when the triangle budget needed it), the largest geometric error drawn

@@ -1,5 +1,6 @@
 #include "walls/frame_select.h"
 
+#include "scenes/region.h"
 #include "walls/polygon2d.h"
 
 #include <algorithm>
@@ -81,23 +82,9 @@ WallBlend FrameSelector::blend(const WallSide& side, const SideCores& sc, glm::d
     return out;
 }
 
-int FrameSelector::eyeCell(glm::dvec3 eye) const {
-    // Among the cells whose floor region holds the eye (either orientation; cells of one storey
-    // do not overlap), the one with the highest floor at most 0.5 m above the eye (the eye's
-    // storey, as scenes::findCell), else the lowest: an eye upstairs is not in the cell below.
-    int best = -1, lowest = -1;
-    for (int c = 0; c < int(_description.cells.size()); ++c) {
-        const scenes::Cell& cell = _description.cells[c];
-        if (!containsConvex(cell.region, {eye.x, eye.z})) continue;
-        if (lowest < 0 || cell.floorY < _description.cells[lowest].floorY) lowest = c;
-        if (cell.floorY <= eye.y + 0.5 && (best < 0 || cell.floorY > _description.cells[best].floorY)) best = c;
-    }
-    return best >= 0 ? best : lowest;
-}
-
 FrameSelection FrameSelector::select(glm::dvec3 eye) const {
     FrameSelection f;
-    f.cell = eyeCell(eye);
+    f.cell = scenes::findCell(_description.cells, eye);
     if (f.cell < 0) {
         for (int c = 0; c < int(_description.cells.size()); ++c) f.geometryCells.push_back(c);
         return f;

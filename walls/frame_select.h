@@ -40,7 +40,7 @@ struct WallBlend {
 };
 
 struct FrameSelection {
-    int cell = -1;                 // the viewer's cell (of the eye's storey), -1 outside every cell (all geometry)
+    int cell = -1;  // the viewer's cell, scenes::findCell of the eye; -1 outside every cell (all geometry)
     std::vector<WallBlend> walls;  // every wall bounding the cell
     // The far walls of the neighbours drawn as geometry (the cell behind a wall in its geometry
     // zone or texture->geometry blend strip, or a cell seen through an open boundary): what lies
@@ -77,7 +77,6 @@ private:
     SideCores buildSide(const WallSide& side) const;
     WallBlend blend(const WallSide& side, const SideCores& cores, glm::dvec2 floorPoint) const;
     void addBeyond(glm::dvec3 eye, FrameSelection& f) const;
-    int eyeCell(glm::dvec3 eye) const;  // see select()
 
     const Plan& _plan;
     const VisibilityTable& _table;

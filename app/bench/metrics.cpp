@@ -13,8 +13,6 @@ namespace cavewall::bench {
 
 namespace {
 
-constexpr std::size_t kFlipBins = 10000;
-
 void addPopping(metrics::PoppingSummary& s, double& squares, std::int64_t frame, double popping) {
     if (s.pairs == 0 || popping > s.peak) {
         s.peak = popping;
@@ -24,25 +22,9 @@ void addPopping(metrics::PoppingSummary& s, double& squares, std::int64_t frame,
     squares += popping * popping;
 }
 
-// Nearest rank: 0 when the rank falls among the exact zeros, else the upper edge of the smallest
-// bin whose cumulative count reaches ceil(q N).
-double histogramPercentile(const std::vector<std::uint64_t>& bins, std::uint64_t zeros, std::uint64_t total, double q) {
-    if (total == 0) return 0.0;
-    const auto rank = static_cast<std::uint64_t>(std::ceil(q * static_cast<double>(total)));
-    if (rank <= zeros) return 0.0;
-    std::uint64_t seen = zeros;
-    for (std::size_t b = 0; b < bins.size(); ++b)
-        if ((seen += bins[b]) >= std::max<std::uint64_t>(rank, 1))
-            return static_cast<double>(b + 1) / static_cast<double>(bins.size());
-    return 1.0;
-}
-
 }  // namespace
 
-ErrorPool::ErrorPool(std::size_t screens) : _screens(screens) {
-    _all.flipHistogram.assign(kFlipBins, 0);
-    for (Series& s : _screens) s.flipHistogram.assign(kFlipBins, 0);
-}
+ErrorPool::ErrorPool(std::size_t screens) : _screens(screens) {}
 
 void ErrorPool::addFrame(std::int64_t frame, const std::vector<ComparedImage>& images) {
     metrics::SquaredError all;
@@ -63,12 +45,8 @@ void ErrorPool::addFrame(std::int64_t frame, const std::vector<ComparedImage>& i
             ++s->images;
             s->pixels += flip.errors.size();
             s->flipSum += flip.mean * static_cast<double>(flip.errors.size());
-            for (float v : flip.errors) {
-                if (v <= 0.0f)
-                    ++s->flipZeros;
-                else
-                    ++s->flipHistogram[std::min(kFlipBins - 1, static_cast<std::size_t>(v * kFlipBins))];
-            }
+            s->flipOver += static_cast<std::uint64_t>(
+                std::count_if(flip.errors.begin(), flip.errors.end(), [](float v) { return v > kFlipThreshold; }));
         }
         if (_worst.frame < 0 || flip.mean > _worst.mean) {
             _worst = {metrics::flipErrorImage(flip), frame, c.screen, c.image, flip.mean};
@@ -97,7 +75,7 @@ ImageError ErrorPool::summarise(const Series& s) {
     e.meanPsnrDb = p.frames > 0 ? p.cappedMeanPsnrDb : kQuantisationPsnrDb;
     e.ssim = s.images > 0 ? s.ssimSum / static_cast<double>(s.images) : 1.0;
     e.flipMean = s.pixels > 0 ? s.flipSum / static_cast<double>(s.pixels) : 0.0;
-    e.flipP95 = histogramPercentile(s.flipHistogram, s.flipZeros, s.pixels, 0.95);
+    e.flipOverThreshold = s.pixels > 0 ? static_cast<double>(s.flipOver) / static_cast<double>(s.pixels) : 0.0;
     e.poppingPeak = s.popping.peak;
     e.poppingRms = s.popping.pairs > 0 ? std::sqrt(s.poppingSquares / static_cast<double>(s.popping.pairs)) : 0.0;
     return e;

@@ -126,13 +126,16 @@ struct BenchReport {
     // `modes`, none when no walls mode is on the front, and the rule's reason.
     std::optional<std::size_t> recommended;
     std::string recommendedReason;
+    // The control when the caller names it, an index into `modes` (the demo: its cells run at
+    // the walls' level of detail); none: controlMode's rule.
+    std::optional<std::size_t> control;
 };
 
 // Fills report.recommended and recommendedReason by app/bench/recommend.h's rule
 // (app/bench/recommend.cpp).
 void recommend(BenchReport& report);
 
-// "recommended: walls a=10 blend lod 1px (#7; fastest of ...; at 128x128 per screen, mono)", or
+// "recommended: walls flat a=10 blend lod 1px (#7; fastest of ...; at 128x128 per screen, mono)", or
 // "recommended: none (no walls mode is on the front)" (app/bench/recommend.cpp).
 std::string recommendedLine(const BenchReport& report);
 
@@ -147,8 +150,8 @@ std::string csvRow(const ModeResult& m, bool recommended = false);
 // Markdown: the header lines as a list, then one table row per mode.
 std::string markdownReport(const BenchReport& report);
 
-// The control of `report`: its first "cells" mode without levels of detail or budgets; null
-// when there is none.
+// The control of `report`: report.control when set, else its first "cells" mode without levels
+// of detail or budgets; null when there is none.
 const ModeResult* controlMode(const BenchReport& report);
 
 // The baseline a user would pick instead of walls: the first full-geometry mode with levels of
@@ -208,8 +211,9 @@ std::vector<std::filesystem::path> writeReport(const std::filesystem::path& fold
 // "blend on demand".
 std::string transitionLabel(const ModeResult& m);
 
-// "walls a=10 blend", "full", "walls a=30 blend lod 1px budget 40000", "walls a=10 blend [auto]"
-// (a --compare-scene mode), ...: the mode's label in tables and the plot legend.
+// "walls flat a=10 blend", "walls depth a=10 blend", "full", "walls flat a=30 blend lod 1px budget
+// 40000", "walls flat a=10 blend [auto]" (a --compare-scene mode), ...: the mode's label in tables
+// and the plot legend; walls modes name their kind (walls::wallKindName).
 std::string modeLabel(const ModeResult& m);
 
 }  // namespace cavewall::bench

@@ -207,8 +207,8 @@ std::string seriesName(ScaleMode mode) {
         case ScaleMode::FullLod: return name + ": full geometry with levels of detail";
         case ScaleMode::Near: return name + ": viewer's cell and structure (the limit)";
         case ScaleMode::Cells: return name + ": cells without textures (the control)";
-        case ScaleMode::Walls: return name + ": textured virtual walls";
-        case ScaleMode::WallsBudget: return name + ": walls under a triangle budget";
+        case ScaleMode::Walls: return name + ": flat walls (textured virtual walls)";
+        case ScaleMode::WallsBudget: return name + ": flat walls under a triangle budget";
         case ScaleMode::DepthWalls: return name + ": depth walls";
     }
     return name;

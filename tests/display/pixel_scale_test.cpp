@@ -239,6 +239,39 @@ TEST(PixelScale, BoxesBesideBehindAndAround) {
     EXPECT_EQ(maxPixelsPerRadian(s, mixed), whole);
 }
 
+// A wall's quad (the walls' error in pixels, walkthrough/frame_planner.h) counts only where its
+// part in front of the eye can appear.
+TEST(PixelScale, InFrontCountsOnlyThePartBeforeTheEye) {
+    // cave4's front screen from its centre axis at 1.5 m: x and y in [-1.5, 1.5], 3 / 1024 m pixels.
+    const ViewScreen centred{-1.5, 1.5, -1.5, 1.5, 1.5, 3.0 / kPixels};
+    // A wall seen head-on, small and 10 m away on the axis: it projects to [-0.015, 0.015]^2 by
+    // 1.5 / 10, so a radian covers r^2 / (h p) = (2.25 + 2 * 0.015^2) / (1.5 * 3 / 1024) = 512.15
+    // pixels (h / p = 512 at the foot point): 10 degrees are 89.38 pixels, 8.94 a degree.
+    const std::vector<glm::dvec3> headOn = {{-0.1, -0.1, -10}, {0.1, -0.1, -10}, {-0.1, 0.1, -10}, {0.1, 0.1, -10}};
+    const double perRadian = (2.25 + 2 * 0.015 * 0.015) / (1.5 * 3.0 / kPixels);
+    EXPECT_NEAR(maxPixelsPerRadianInFront(centred, headOn), perRadian, 1e-9 * perRadian);
+    EXPECT_NEAR(glm::radians(10.0) * perRadian, 89.38, 0.01);
+    // A wall crossing the eye's plane, eye 1 m right of the centre (x in [-2.5, 0.5]): its left
+    // edge (x = -1, z = -3) projects to x = -0.5, and it crosses z = 0 at x = 0.5 (t = 0.75
+    // from z = -3 to 1), whose rays point off to +x beyond the screen: x in [-0.5, 0.5], y all
+    // of [-1.5, 1.5]. Far corner (0.5, 1.5): r^2 = 0.25 + 2.25 + 2.25 = 4.75. The whole
+    // screen's far corner (-2.5, 1.5) gives 10.75, what maxPixelsPerRadian says of any point
+    // behind the eye.
+    const ViewScreen offCentre{-2.5, 0.5, -1.5, 1.5, 1.5, 3.0 / kPixels};
+    const std::vector<glm::dvec3> crossing = {{-1, -0.5, -3}, {-1, 0.5, -3}, {1, -0.5, 1}, {1, 0.5, 1}};
+    const double part = 4.75 / (1.5 * 3.0 / kPixels);
+    EXPECT_NEAR(maxPixelsPerRadianInFront(offCentre, crossing), part, 1e-9 * part);
+    EXPECT_NEAR(maxPixelsPerRadian(offCentre, crossing), 10.75 / (1.5 * 3.0 / kPixels), 1e-6);
+    // All behind the eye, or beside the screen: nothing of it shows.
+    const std::vector<glm::dvec3> behind = {{-1, -1, 0.5}, {1, -1, 0.5}, {-1, 1, 2}, {1, 1, 2}};
+    EXPECT_EQ(maxPixelsPerRadianInFront(centred, behind), 0.0);
+    const std::vector<glm::dvec3> beside = {{5, -0.5, -3}, {6, -0.5, -3}, {5, 0.5, -3}, {6, 0.5, 1}};
+    EXPECT_EQ(maxPixelsPerRadianInFront(centred, beside), 0.0);
+    // Wholly in front it is maxPixelsPerRadian's value.
+    const std::vector<glm::dvec3> inFront = {{0.45, 0.45, -1.5}, {0.9, 0.45, -1.5}, {0.45, 0.9, -2}, {0.9, 0.9, -2}};
+    EXPECT_EQ(maxPixelsPerRadianInFront(centred, inFront), maxPixelsPerRadian(centred, inFront));
+}
+
 TEST(PixelScale, NearestDistanceIsZeroInsideAndExactOutside) {
     struct Case {
         const char* name;

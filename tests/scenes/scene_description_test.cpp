@@ -221,5 +221,59 @@ TEST(Region, ContainsOverlapAndConvexity) {
     EXPECT_EQ(overlapArea(square, touching), 0.0);
 }
 
+// regionContains takes either orientation: the square walked clockwise holds the same points,
+// its edges included, and refuses the same ones; the tolerance widens both alike.
+TEST(Region, ContainsEitherOrientation) {
+    const std::vector<glm::dvec2> ccw = {{0, 0}, {2, 0}, {2, -2}, {0, -2}};
+    const std::vector<glm::dvec2> cw(ccw.rbegin(), ccw.rend());
+    ASSERT_LT(regionArea(cw), 0.0);
+    // A pentagon, clockwise seen from above, so that no edge is axis-aligned everywhere.
+    const std::vector<glm::dvec2> pentagon = {{0, 0}, {0, -2}, {1, -3}, {2, -2}, {2, 0}};
+    ASSERT_LT(regionArea(pentagon), 0.0);
+    struct Case {
+        const char* name;
+        glm::dvec2 p;
+        bool inSquare, inPentagon;
+    };
+    const Case cases[] = {
+        {"centre", {1, -1}, true, true},
+        {"on an edge", {2, -1}, true, true},
+        {"a corner", {0, 0}, true, true},
+        {"outside, +z", {1, 1}, false, false},
+        {"outside, +x", {2.5, -1}, false, false},
+        // Below the square but inside the pentagon's tip (x + z >= -2 holds it: 1 - 2.5 = -1.5).
+        {"the pentagon's tip", {1, -2.5}, false, true},
+        // Beside the tip, right of its edge from (1, -3) to (2, -2): x - z <= 4 fails (1.9 + 2.9).
+        {"beside the tip", {1.9, -2.9}, false, false},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        EXPECT_EQ(regionContains(ccw, c.p), c.inSquare);
+        EXPECT_EQ(regionContains(cw, c.p), c.inSquare);
+        EXPECT_EQ(regionContains(pentagon, c.p), c.inPentagon);
+    }
+    // 1 mm outside an edge: refused at the default 1e-9 m, held at 2 mm, either way round.
+    for (const auto* r : {&ccw, &cw}) {
+        EXPECT_FALSE(regionContains(*r, {2.001, -1}));
+        EXPECT_TRUE(regionContains(*r, {2.001, -1}, 2e-3));
+    }
+}
+
+// findCell holds a clockwise cell as it does a counter-clockwise one, and picks by storey.
+TEST(Cell, FindCellTakesClockwiseRegionsAndTheEyesStorey) {
+    const std::vector<glm::dvec2> ccw = {{0, 0}, {2, 0}, {2, -2}, {0, -2}};
+    Cell ground{.name = "ground", .region = std::vector<glm::dvec2>(ccw.rbegin(), ccw.rend()), .floorY = 0.0};
+    Cell upstairs{.name = "upstairs", .region = ccw, .floorY = 3.0};
+    Cell beside{.name = "beside", .region = {{2, 0}, {2, -2}, {4, -2}, {4, 0}}, .floorY = 0.0};  // clockwise
+    const std::vector<Cell> cells = {upstairs, ground, beside};
+    EXPECT_EQ(findCell(cells, {1, 1.7, -1}), 1);   // the ground floor: upstairs is 1.3 m above the eye
+    EXPECT_EQ(findCell(cells, {1, 4.7, -1}), 0);   // upstairs
+    EXPECT_EQ(findCell(cells, {1, 2.6, -1}), 0);   // the upper floor 0.4 m above the eye (within 0.5 m): upstairs
+    EXPECT_EQ(findCell(cells, {1, -2.0, -1}), 1);  // below every floor: the lowest
+    EXPECT_EQ(findCell(cells, {3, 1.7, -1}), 2);   // the clockwise neighbour
+    EXPECT_EQ(findCell(cells, {2, 1.7, -1}), 1);   // on the shared edge: the first of equal floors
+    EXPECT_EQ(findCell(cells, {5, 1.7, -1}), -1);  // outside every cell
+}
+
 }  // namespace
 }  // namespace cavewall::scenes

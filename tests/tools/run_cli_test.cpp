@@ -467,6 +467,9 @@ TEST(RunCli, DemoWritesTheReportWithAllFourRuns) {
     EXPECT_THAT(report, HasSubstr("(32 x 32 pixels per screen)"));
     EXPECT_THAT(report, HasSubstr("| pooled PSNR (dB) | "));
     EXPECT_THAT(report, HasSubstr("| FLIP mean | "));
+    EXPECT_THAT(report, HasSubstr("| FLIP > 0.1 (% of pixels) | "));  // not p95: most pixels match exactly
+    EXPECT_THAT(report, testing::Not(HasSubstr("p95")));
+    EXPECT_THAT(report, HasSubstr("| worst wall texture error (px at its screens' pixels per degree) | "));
     EXPECT_THAT(report, HasSubstr("Walls planned at alpha 10 deg"));
     // The worst frame: walls | full geometry | FLIP map, three cave4 fold-outs side by side.
     const scenes::Image worst = scenes::readImage(out / "worst_frame.png");
@@ -485,6 +488,7 @@ TEST(RunCli, DemoWritesTheReportWithAllFourRuns) {
     // The bench's rule over the four runs, and their plot beside the report.
     EXPECT_THAT(report, testing::ContainsRegex("recommended: (walls depth a=10 blend lod 1px \\(#4; |none \\()"));
     EXPECT_THAT(report, HasSubstr("![pooled PSNR and FLIP mean against median frame time"));
+    EXPECT_THAT(report, HasSubstr("circle: the control; square: the best alternative; diamond: the recommended"));
     EXPECT_TRUE(fs::exists(out / "bench.png"));
     EXPECT_THAT(report, HasSubstr("| speed-up | "));
     EXPECT_THAT(report, HasSubstr("| worst level-of-detail error (px) | "));

@@ -430,6 +430,24 @@ TEST_F(FramePlannerTest, DrawnWeightsSumToOneAndErrorsAreTheExactAngularError) {
     EXPECT_GT(blended, 5);
 }
 
+// The error in pixels is each wall's angle at the pixels per degree of the screens it appears
+// on. From (0, 1.7, 9) facing -z, the wall (z = 0, x in [-6, 6], y in [0, 3]) shows on cave4's
+// front screen only: the side screens see directions with |x| > |z| and the floor what lies
+// within 1.5 m of the feet. The front screen, 1.5 m from the head with its foot point on it,
+// has 1.5 m / (3 m / 1024) = 512 pixels per radian there, 8.94 per degree: the floor's 1.7 m
+// would give 10.13, and the old figure, the most pixels per radian anywhere on any screen (the
+// front screen's corner 1.5 m aside and 1.7 m down: 7.39 / (1.5 * 3 / 1024)), 29.35.
+TEST_F(FramePlannerTest, ErrorInPixelsIsAtThePixelsPerDegreeOfTheScreensShowingTheWall) {
+    const WallSetup walls = setup(10.0);
+    FramePlanner planner(scene, description, display, &walls, Transition::Blend, 0.5);
+    const FramePlan p = frame(planner, at({0.0, 1.7, 9.0}));
+    ASSERT_FALSE(row(p).textures.empty());
+    ASSERT_GT(p.maxErrorDeg, 0.0);
+    const double perDegree = 512.0 * glm::pi<double>() / 180.0;
+    EXPECT_NEAR(perDegree, 8.936, 1e-3);
+    EXPECT_NEAR(p.maxErrorPixels, p.maxErrorDeg * perDegree, 1e-9 * p.maxErrorPixels);
+}
+
 // Depth walls (PlanOptions::wallKind): the error reported and counted over alpha is the depth
 // walls' own bound (the smaller of depthEyeBound and depthSegmentEyeBound over the wall's depth
 // span, from the boxes: 3 .. 7 m behind the plane), not the flat one.

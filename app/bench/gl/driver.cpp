@@ -355,7 +355,7 @@ void runCellPhase(std::vector<BenchMode>& table, Phase phase, Bench& b) {
 void runOnDemandPhase(std::vector<BenchMode>& table, Bench& b, BenchReport& report) {
     const BenchOptions& o = b.o;
     for (std::size_t i : modesOf(table, Phase::OnDemand)) {
-        say(o, "bench: walls a=" + config::formatNumber(o.transitionAlphaDeg) +
+        say(o, "bench: walls flat a=" + config::formatNumber(o.transitionAlphaDeg) +
                    " blend on demand, from an empty cache " + o.onDemandCache->string());
         table[i].result = onDemandMode(o, o.transitionAlphaDeg, b.c, b.reference, b.fullP50);
         report.header.push_back(

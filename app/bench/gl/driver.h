@@ -92,7 +92,7 @@ struct BenchOptions {
                                                  // (hierarchy/cluster_budget.h) instead; each > 0
     // Other scene.json files of the same model (same objects and triangles), each with its own
     // cells and walls, benched beside the scene's walls on the scene's eye path; their modes are
-    // labelled with their tags ("walls a=10 blend [auto]"), which must differ.
+    // labelled with their tags ("walls flat a=10 blend [auto]"), which must differ.
     struct CompareScene {
         std::filesystem::path scene;
         std::string tag;
