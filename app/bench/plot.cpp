@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <utility>
 
 namespace cavewall::bench {
 
@@ -147,31 +148,43 @@ PanelPlot panelPlot(const PlotPanel& panel, std::size_t index) {
     return out;
 }
 
-// The axis range of every point's `coordinate` with 8 % of the span as a margin beyond the
-// extremes, so that no marker sits on the frame; from 0 when `axis.fromZero`; a factor of 1.25
-// beyond them on a logarithmic axis. Reversed axes list the ends the other way round.
-std::string axisRange(const PlotPanel& panel, const PlotAxis& axis, double PlotPoint::*coordinate) {
+// The ends of the axis range of every point's `coordinate` (low, high), with 8 % of the span
+// as a margin beyond the extremes, so that no marker sits on the frame; from 0 when
+// `axis.fromZero`; a factor of 1.25 beyond them on a logarithmic axis.
+std::pair<double, double> axisEnds(const PlotPanel& panel, const PlotAxis& axis, double PlotPoint::*coordinate) {
     double lo = INFINITY, hi = -INFINITY;
     for (const PlotSeries& s : panel.series)
         for (const PlotPoint& p : allPoints(s)) {
             lo = std::min(lo, p.*coordinate);
             hi = std::max(hi, p.*coordinate);
         }
-    if (lo > hi) {
-        lo = axis.log ? 0.1 : 0.0;
-        hi = 1.0;
-    } else if (axis.log) {
-        lo /= 1.25;
-        hi *= 1.25;
-    } else {
-        if (axis.fromZero) lo = std::min(lo, 0.0);
-        double span = hi - lo;
-        if (span <= 0.0) span = hi != 0.0 ? std::abs(hi) * 0.2 : 1.0;
-        const double margin = 0.08 * span;
-        lo = axis.fromZero && lo >= 0.0 ? 0.0 : lo - margin;
-        hi += margin;
-    }
+    if (lo > hi) return {axis.log ? 0.1 : 0.0, 1.0};
+    if (axis.log) return {lo / 1.25, hi * 1.25};
+    if (axis.fromZero) lo = std::min(lo, 0.0);
+    double span = hi - lo;
+    if (span <= 0.0) span = hi != 0.0 ? std::abs(hi) * 0.2 : 1.0;
+    const double margin = 0.08 * span;
+    return {axis.fromZero && lo >= 0.0 ? 0.0 : lo - margin, hi + margin};
+}
+
+// The range command's brackets; reversed axes list the ends the other way round.
+std::string axisRange(std::pair<double, double> ends, const PlotAxis& axis) {
+    const auto [lo, hi] = ends;
     return axis.reversed ? "[" + number(hi) + ":" + number(lo) + "]" : "[" + number(lo) + ":" + number(hi) + "]";
+}
+
+// The tick marks of one axis. gnuplot labels a logarithmic axis at powers of ten only, so a
+// range within one decade (FLIP means of 0.003 to 0.009) would carry no number at all: such an
+// axis gets its ticks at 1, 2 and 5 times a power of ten, or at finer steps where those give
+// fewer than three, written in %g. A linear axis keeps gnuplot's own.
+std::string ticCommands(std::pair<double, double> ends, const PlotAxis& axis, const char* name) {
+    const std::string automatic = std::string("set ") + name + "tics autofreq\nset format " + name + " '% h'\n";
+    if (!axis.log) return automatic;
+    const std::vector<double> ticks = logTicks(ends.first, ends.second);
+    if (ticks.size() < 2) return automatic;
+    std::string out = std::string("set ") + name + "tics (";
+    for (std::size_t i = 0; i < ticks.size(); ++i) out += (i ? ", " : "") + number(ticks[i]);
+    return out + ")\nset format " + name + " '%g'\n";
 }
 
 // The legend of panel `index`: its own below it, or the figure's shared one (the last panel's,
@@ -190,8 +203,10 @@ std::string keyCommands(const Figure& figure, std::size_t index) {
 // The range, scale and title of one axis ("x" or "y").
 std::string axisCommands(const PlotPanel& panel, const PlotAxis& axis, const char* name,
                          double PlotPoint::*coordinate) {
+    const std::pair<double, double> ends = axisEnds(panel, axis, coordinate);
     return std::string(axis.log ? "set logscale " : "unset logscale ") + name + "\nset " + name + "label " +
-           gnuplotQuoted(axisLabel(axis)) + "\nset " + name + "range " + axisRange(panel, axis, coordinate) + "\n";
+           gnuplotQuoted(axisLabel(axis)) + "\nset " + name + "range " + axisRange(ends, axis) + "\n" +
+           ticCommands(ends, axis, name);
 }
 
 // The panel's text labels (tags from kFirstLabel on, so that they never replace the note's or
@@ -288,6 +303,23 @@ void checkLabels(const PlotPanel& panel, std::size_t p, const std::string& where
 }
 
 }  // namespace
+
+std::vector<double> logTicks(double lo, double hi) {
+    std::vector<double> out;
+    if (!(lo > 0.0) || !(hi > lo) || !std::isfinite(hi)) return out;
+    for (const std::vector<double>& steps :
+         {std::vector<double>{1, 2, 5}, std::vector<double>{1, 1.5, 2, 3, 4, 5, 6, 8}}) {
+        out.clear();
+        for (int e = static_cast<int>(std::floor(std::log10(lo))); e <= static_cast<int>(std::ceil(std::log10(hi)));
+             ++e)
+            for (double m : steps) {
+                const double v = m * std::pow(10.0, e);
+                if (v >= lo && v <= hi) out.push_back(v);
+            }
+        if (out.size() >= 3) return out;
+    }
+    return out;
+}
 
 std::string axisLabel(const PlotAxis& axis) {
     return axis.unit.empty() ? axis.title : axis.title + " (" + axis.unit + ")";

@@ -88,6 +88,11 @@ struct Figure {
 // "median frame time (ms)", or the title alone without a unit.
 std::string axisLabel(const PlotAxis& axis);
 
+// The tick values of a logarithmic axis from lo to hi (both > 0): 1, 2 and 5 times the powers of
+// ten in the range, or 1, 1.5, 2, 3, 4, 5, 6 and 8 times them where that gives fewer than three
+// (a range within one decade); ascending. Empty for a range that is not positive and finite.
+std::vector<double> logTicks(double lo, double hi);
+
 // Throws cavewall::Error naming `where` (the PNG), the panel, the series and the point when
 // `figure` has no panel, a size under 160 x 120, a legend strip over half the width, a
 // non-finite coordinate of a point or label ("bench.png: panel 1 'error': series 'walls a=10': point 2: expected

@@ -136,6 +136,19 @@ TEST(PlotScript, LogarithmicAxesSpanTheirDataByAFactor) {
                     "series 'walls a=10 blend': point 1: expected x and y > 0 on a logarithmic axis, got x=4 y=0")));
 }
 
+TEST(PlotScript, ALogarithmicAxisWithinOneDecadeStillCarriesNumbers) {
+    // gnuplot labels powers of ten only: 0.0024 to 0.0075 would show no number at all.
+    EXPECT_EQ(logTicks(0.0024, 0.0075), (std::vector<double>{0.003, 0.004, 0.005, 0.006}));
+    EXPECT_EQ(logTicks(0.08, 30.0), (std::vector<double>{0.1, 0.2, 0.5, 1, 2, 5, 10, 20}));
+    EXPECT_TRUE(logTicks(0.0, 1.0).empty());
+    EXPECT_TRUE(logTicks(2.0, 1.0).empty());
+    Figure figure = sampleFigure();
+    figure.panels[0].y.log = true;  // 25 to 40: [20:50]
+    const std::string script = gnuplotScript(figure, "out.png");
+    EXPECT_THAT(script, HasSubstr("set ytics (20, 30, 40, 50)\nset format y '%g'"));
+    EXPECT_THAT(script, HasSubstr("set xtics autofreq"));
+}
+
 TEST(PlotScript, ASharedLegendSitsInAStripAtTheRight) {
     Figure figure = sampleFigure();
     figure.panels.push_back(figure.panels[0]);
