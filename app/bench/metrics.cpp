@@ -70,6 +70,7 @@ void ErrorPool::addFrame(std::int64_t frame, const std::vector<ComparedImage>& i
                     ++s->flipHistogram[std::min(kFlipBins - 1, static_cast<std::size_t>(v * kFlipBins))];
             }
         }
+        _images.push_back({frame, c.screen, c.image, e.psnrDb(), flip.mean});
         if (_worst.frame < 0 || flip.mean > _worst.mean) {
             _worst = {metrics::flipErrorImage(flip), frame, c.screen, c.image, flip.mean};
         }
