@@ -3,6 +3,7 @@
 #include "scenes/region.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -20,13 +21,13 @@ PlanMask::PlanMask(glm::dvec2 origin, double step, int nx, int nz, const std::ve
 }
 
 long PlanMask::count(glm::dvec2 lo, glm::dvec2 hi) const {
-    if (_sums.empty() || lo.x > hi.x || lo.y > hi.y) return 0;
+    if (_sums.empty() || !(lo.x <= hi.x && lo.y <= hi.y)) return 0;  // also NaN
     // Samples i with origin + step * (i + 0.5) in [lo, hi]: i in [ceil(a - 0.5), floor(b - 0.5)].
     auto first = [&](double v, double o, int n) {
-        return std::clamp(static_cast<int>(std::ceil((v - o) / _step - 0.5)), 0, n);
+        return static_cast<int>(std::clamp(std::ceil((v - o) / _step - 0.5), 0.0, static_cast<double>(n)));
     };
     auto last = [&](double v, double o, int n) {
-        return std::clamp(static_cast<int>(std::floor((v - o) / _step - 0.5)) + 1, 0, n);
+        return static_cast<int>(std::clamp(std::floor((v - o) / _step - 0.5) + 1.0, 0.0, static_cast<double>(n)));
     };
     const int i0 = first(lo.x, _origin.x, _nx), i1 = last(hi.x, _origin.x, _nx);
     const int j0 = first(lo.y, _origin.y, _nz), j1 = last(hi.y, _origin.y, _nz);
@@ -70,10 +71,16 @@ Grid planGrid(const std::vector<Cell>& cells, const VoidOptions& options) {
 // Marks the samples whose centres lie in the plan triangle a, b, c.
 void markTriangle(const Grid& g, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, std::vector<bool>& mask) {
     const glm::dvec2 lo = glm::min(a, glm::min(b, c)), hi = glm::max(a, glm::max(b, c));
-    const int i0 = std::max(0, static_cast<int>(std::ceil((lo.x - g.origin.x) / g.step - 0.5)));
-    const int i1 = std::min(g.nx - 1, static_cast<int>(std::floor((hi.x - g.origin.x) / g.step - 0.5)));
-    const int j0 = std::max(0, static_cast<int>(std::ceil((lo.y - g.origin.y) / g.step - 0.5)));
-    const int j1 = std::min(g.nz - 1, static_cast<int>(std::floor((hi.y - g.origin.y) / g.step - 0.5)));
+    if (!(std::isfinite(lo.x) && std::isfinite(lo.y) && std::isfinite(hi.x) && std::isfinite(hi.y))) return;
+    // The samples whose centres lie in [lo, hi], clamped to the grid before converting.
+    auto index = [&](double v, double o, int n, bool up) {
+        const double k = (v - o) / g.step - 0.5;
+        return static_cast<int>(std::clamp(up ? std::ceil(k) : std::floor(k), -1.0, static_cast<double>(n)));
+    };
+    const int i0 = std::max(0, index(lo.x, g.origin.x, g.nx, true));
+    const int i1 = std::min(g.nx - 1, index(hi.x, g.origin.x, g.nx, false));
+    const int j0 = std::max(0, index(lo.y, g.origin.y, g.nz, true));
+    const int j1 = std::min(g.nz - 1, index(hi.y, g.origin.y, g.nz, false));
     auto edge = [](glm::dvec2 p, glm::dvec2 q, glm::dvec2 r) {
         return (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
     };
@@ -123,38 +130,44 @@ struct Coverage {
     std::map<double, std::vector<bool>> slab, roof;
 };
 
+// Triangle `t` of `m` placed by `o` in the world; false when an index is out of range.
+bool worldTriangle(const Object& o, const Mesh& m, std::size_t t, std::array<glm::dvec3, 3>& p) {
+    for (std::size_t k = 0; k < 3; ++k) {
+        const std::uint32_t v = m.indices[t + k];
+        if (v >= m.positions.size()) return false;
+        p[k] = glm::dvec3(o.worldFromModel * glm::dvec4(glm::dvec3(m.positions[v]), 1.0));
+    }
+    return true;
+}
+
+// Marks one world triangle into the slabs it lies in and the coverings it lies over.
+void markCoverage(const Grid& g, const std::array<glm::dvec3, 3>& p, Coverage& out) {
+    static const double slabCos = std::cos(kSlabTiltDeg * kPi / 180.0);
+    static const double roofCos = std::cos(kRoofTiltDeg * kPi / 180.0);
+    const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
+    const double len = glm::length(n);
+    if (!(len > 0.0)) return;
+    const double up = std::abs(n.y) / len;
+    if (up < roofCos) return;
+    const double lowY = std::min({p[0].y, p[1].y, p[2].y}), highY = std::max({p[0].y, p[1].y, p[2].y});
+    const glm::dvec2 a(p[0].x, p[0].z), b(p[1].x, p[1].z), c(p[2].x, p[2].z);
+    for (auto& [y, mask] : out.slab)
+        if (up >= slabCos && lowY >= y - kSlabBelow && highY <= y + kSlabAbove) markTriangle(g, a, b, c, mask);
+    for (auto& [y, mask] : out.roof)
+        if (lowY > y + kCoverAbove) markTriangle(g, a, b, c, mask);
+}
+
 Coverage coverage(const Scene& scene, const Grid& g, const std::vector<double>& floors,
                   const std::vector<double>& tops) {
     Coverage out;
     for (double y : floors) out.slab[y] = g.blank();
     for (double y : tops) out.roof[y] = g.blank();
-    const double slabCos = std::cos(kSlabTiltDeg * kPi / 180.0), roofCos = std::cos(kRoofTiltDeg * kPi / 180.0);
+    std::array<glm::dvec3, 3> p{};
     for (const Object& o : scene.objects) {
         if (o.mesh < 0 || static_cast<std::size_t>(o.mesh) >= scene.meshes.size() || o.worldBounds.empty()) continue;
         const Mesh& m = scene.meshes[static_cast<std::size_t>(o.mesh)];
-        for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
-            glm::dvec3 p[3];
-            bool valid = true;
-            for (int k = 0; k < 3; ++k) {
-                const std::uint32_t v = m.indices[t + k];
-                if (v >= m.positions.size())
-                    valid = false;
-                else
-                    p[k] = glm::dvec3(o.worldFromModel * glm::dvec4(glm::dvec3(m.positions[v]), 1.0));
-            }
-            if (!valid) continue;
-            const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
-            const double len = glm::length(n);
-            if (!(len > 0.0)) continue;
-            const double up = std::abs(n.y) / len;
-            if (up < roofCos) continue;
-            const double lowY = std::min({p[0].y, p[1].y, p[2].y}), highY = std::max({p[0].y, p[1].y, p[2].y});
-            const glm::dvec2 a(p[0].x, p[0].z), b(p[1].x, p[1].z), c(p[2].x, p[2].z);
-            for (auto& [y, mask] : out.slab)
-                if (up >= slabCos && lowY >= y - kSlabBelow && highY <= y + kSlabAbove) markTriangle(g, a, b, c, mask);
-            for (auto& [y, mask] : out.roof)
-                if (lowY > y + kCoverAbove) markTriangle(g, a, b, c, mask);
-        }
+        for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3)
+            if (worldTriangle(o, m, t, p)) markCoverage(g, p, out);
     }
     return out;
 }
@@ -166,10 +179,13 @@ PlanMask cellVoid(const Grid& g, const Cell& cell, const std::vector<bool>& floo
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
-    const int i0 = std::max(0, static_cast<int>(std::floor((lo.x - g.origin.x) / g.step)));
-    const int i1 = std::min(g.nx, static_cast<int>(std::ceil((hi.x - g.origin.x) / g.step)));
-    const int j0 = std::max(0, static_cast<int>(std::floor((lo.y - g.origin.y) / g.step)));
-    const int j1 = std::min(g.nz, static_cast<int>(std::ceil((hi.y - g.origin.y) / g.step)));
+    // The grid covers every cell's region, so these stay within [0, n].
+    auto index = [&](double v, double o, int n, bool up) {
+        const double k = (v - o) / g.step;
+        return static_cast<int>(std::clamp(up ? std::ceil(k) : std::floor(k), 0.0, static_cast<double>(n)));
+    };
+    const int i0 = index(lo.x, g.origin.x, g.nx, false), i1 = index(hi.x, g.origin.x, g.nx, true);
+    const int j0 = index(lo.y, g.origin.y, g.nz, false), j1 = index(hi.y, g.origin.y, g.nz, true);
     if (i0 >= i1 || j0 >= j1) return {};
     std::vector<bool> open(static_cast<std::size_t>(i1 - i0) * (j1 - j0), false);
     for (int j = j0; j < j1; ++j)
