@@ -152,6 +152,7 @@ struct RunSummary {
     // geometry and the whole model's (walls/geometry_pager.h sizes), MB; cumulative misses and
     // page-ins; cells drawn though not resident, summed over frames.
     double geometryPeakMB = 0.0, largestThreeCellsMB = 0.0, modelGeometryMB = 0.0;
+    double sharedGeometryMB = 0.0;  // geometry paging: the always-resident buffers
     long geometryMisses = 0, geometryPageIns = 0, geometryForced = 0;
     std::vector<std::filesystem::path> foldouts;  // saved fold-outs, in frame order
     // With RunOptions::keepSavedImages: every saved frame's images and the head (cave frame,

@@ -40,16 +40,29 @@ bool Frustum::contains(const Bounds& b) const {
 
 Bvh::Bvh(const Scene& scene) {
     std::vector<Bounds> bounds;
-    std::vector<int> cells;
+    std::vector<std::vector<int>> cells;
     for (const Object& o : scene.objects) {
         bounds.push_back(o.worldBounds);
-        cells.push_back(o.moreCells.empty() ? o.cell : -1);  // several cells: kept with any mask
+        cells.push_back(cellsOf(o));
     }
     *this = Bvh(bounds, std::move(cells));
 }
 
-Bvh::Bvh(const std::vector<Bounds>& bounds, std::vector<int> cells) : _cells(std::move(cells)), _bounds(bounds) {
-    _cells.resize(bounds.size(), -1);
+namespace {
+
+std::vector<std::vector<int>> singleCells(const std::vector<int>& cells) {
+    std::vector<std::vector<int>> sets;
+    for (int c : cells) sets.push_back(c >= 0 ? std::vector<int>{c} : std::vector<int>{});
+    return sets;
+}
+
+}  // namespace
+
+Bvh::Bvh(const std::vector<Bounds>& bounds, std::vector<int> cells) : Bvh(bounds, singleCells(cells)) {}
+
+Bvh::Bvh(const std::vector<Bounds>& bounds, std::vector<std::vector<int>> cellSets)
+    : _cells(std::move(cellSets)), _bounds(bounds) {
+    _cells.resize(bounds.size());
     _order.resize(bounds.size());
     for (std::size_t i = 0; i < bounds.size(); ++i) _order[i] = static_cast<int>(i);
     _nodes.reserve(2 * bounds.size());
@@ -83,11 +96,17 @@ int Bvh::build(int first, int count, const std::vector<Bounds>& bounds) {
     return index;
 }
 
+bool Bvh::kept(int object, const std::vector<bool>* cells) const {
+    const std::vector<int>& own = _cells[object];
+    if (!cells || own.empty()) return true;
+    return std::any_of(own.begin(), own.end(),
+                       [&](int c) { return c >= 0 && c < static_cast<int>(cells->size()) && (*cells)[c]; });
+}
+
 void Bvh::addRange(const Node& node, std::vector<int>& out, const std::vector<bool>* cells) const {
     for (int i = node.first; i < node.first + node.count; ++i) {
-        const int o = _order[i], c = _cells[o];
-        if (_bounds[o].empty()) continue;
-        if (cells && c >= 0 && (c >= static_cast<int>(cells->size()) || !(*cells)[c])) continue;
+        const int o = _order[i];
+        if (_bounds[o].empty() || !kept(o, cells)) continue;
         out.push_back(o);
     }
 }
@@ -115,8 +134,8 @@ void Bvh::cull(const glm::dmat4& clipFromWorld, std::vector<int>& out, const std
                 continue;
             }
             for (int i = node.first; i < node.first + node.count; ++i) {
-                const int o = _order[i], c = _cells[o];
-                if (cells && c >= 0 && (c >= static_cast<int>(cells->size()) || !(*cells)[c])) continue;
+                const int o = _order[i];
+                if (!kept(o, cells)) continue;
                 if (frustum.intersects(_bounds[o])) out.push_back(o);
             }
             continue;

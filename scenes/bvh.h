@@ -32,15 +32,18 @@ private:
 class Bvh {
 public:
     Bvh() = default;
-    // Builds over every object's worldBounds (and remembers each object's cell; an object of
-    // several cells, Object::moreCells, is kept as one without a cell). The scene is
-    // not referenced afterwards; rebuild when objects move.
+    // Builds over every object's worldBounds (and remembers each object's cells, cellsOf). The
+    // scene is not referenced afterwards; rebuild when objects move.
     explicit Bvh(const Scene& scene);
+    // `cells`: per object its cell, -1 = none.
     explicit Bvh(const std::vector<Bounds>& bounds, std::vector<int> cells = {});
+    // `cellSets`: per object its cells, empty = none.
+    Bvh(const std::vector<Bounds>& bounds, std::vector<std::vector<int>> cellSets);
 
     // Indices of the objects whose bounds meet the frustum of `clipFromWorld`, in no particular
-    // order (tree order). `cells`, when given, is a per-cell mask: objects in a cell that is
-    // false (or beyond the mask) are left out; objects without a cell (cell -1) are always kept.
+    // order (tree order). `cells`, when given, is a per-cell mask: objects none of whose cells is
+    // true in it (cells beyond the mask count as false) are left out; objects without a cell are
+    // always kept.
     std::vector<int> cull(const glm::dmat4& clipFromWorld, const std::vector<bool>* cells = nullptr) const;
     // The same, appending to `out` (cleared first) to avoid allocating per frame.
     void cull(const glm::dmat4& clipFromWorld, std::vector<int>& out, const std::vector<bool>* cells = nullptr) const;
@@ -58,11 +61,12 @@ private:
     };
     int build(int first, int count, const std::vector<Bounds>& bounds);
     void addRange(const Node& node, std::vector<int>& out, const std::vector<bool>* cells) const;
+    bool kept(int object, const std::vector<bool>* cells) const;
 
     std::vector<Node> _nodes;
-    std::vector<int> _order;      // object indices, each node's objects contiguous
-    std::vector<int> _cells;      // per object (original index), -1 = none
-    std::vector<Bounds> _bounds;  // per object (original index)
+    std::vector<int> _order;               // object indices, each node's objects contiguous
+    std::vector<std::vector<int>> _cells;  // per object (original index), empty = none
+    std::vector<Bounds> _bounds;           // per object (original index)
 };
 
 }  // namespace cavewall::scenes

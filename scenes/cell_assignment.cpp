@@ -1,8 +1,10 @@
 #include "scenes/cell_assignment.h"
 
 #include "scenes/region.h"
+#include "scenes/storey_voids.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace cavewall::scenes {
@@ -18,7 +20,17 @@ std::vector<glm::dvec2> rectangle(glm::dvec2 lo, glm::dvec2 hi) {
 struct CellSpan {
     glm::dvec2 lo{kInfinity}, hi{-kInfinity};  // the region's (x, z) bounds
     double bottom = 0.0, top = kInfinity;      // heights an object must meet
+    double aboveTop = kInfinity;               // the storey above's top: objects seen over a void start below it
 };
+
+// The lowest floor of the cells over `region` in plan at least kMinStoreyHeight above `floorY`.
+double topOver(const std::vector<Cell>& cells, const std::vector<glm::dvec2>& region, double floorY) {
+    double top = kInfinity;
+    for (const Cell& d : cells)
+        if (d.floorY >= floorY + kMinStoreyHeight && d.floorY < top && overlapArea(region, d.region) > 0.0)
+            top = d.floorY;
+    return top;
+}
 
 std::vector<CellSpan> cellSpans(const std::vector<Cell>& cells) {
     std::vector<CellSpan> spans(cells.size());
@@ -29,30 +41,42 @@ std::vector<CellSpan> cellSpans(const std::vector<Cell>& cells) {
         }
         spans[c].bottom = cells[c].floorY - kBelowFloor;
     }
-    for (std::size_t c = 0; c < cells.size(); ++c)
-        for (std::size_t d = 0; d < cells.size(); ++d)
-            if (cells[d].floorY >= cells[c].floorY + kMinStoreyHeight && cells[d].floorY < spans[c].top &&
-                overlapArea(cells[c].region, cells[d].region) > 0.0)
-                spans[c].top = cells[d].floorY;
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+        spans[c].top = topOver(cells, cells[c].region, cells[c].floorY);
+        if (std::isfinite(spans[c].top)) spans[c].aboveTop = topOver(cells, cells[c].region, spans[c].top);
+    }
     return spans;
+}
+
+// Whether `box`, above cell `s`'s top and below the storey above's top, is seen from the cell
+// over its void: its plan rectangle grown by `reach` and by its height over the top (a 45°
+// sight line through the void's edge), at most kVoidSightMetres, meets the void.
+bool seenOverVoid(const CellSpan& s, const PlanMask& hole, const Bounds& box, double reach) {
+    if (hole.empty() || box.min.y < s.top - kAboveTop || box.min.y >= s.aboveTop - kAboveTop) return false;
+    const double grow = reach + std::clamp(box.max.y - s.top, 0.0, kVoidSightMetres);
+    return hole.count(glm::dvec2(box.min.x, box.min.z) - grow, glm::dvec2(box.max.x, box.max.z) + grow) > 0;
 }
 
 bool meetsHeight(const CellSpan& s, const Bounds& box) {
     return box.max.y >= s.bottom && box.min.y < s.top - kAboveTop;
 }
 
-CellsOfBox boxCells(const std::vector<Cell>& cells, const std::vector<CellSpan>& spans, const Bounds& box,
-                    double reach) {
+CellsOfBox boxCells(const std::vector<Cell>& cells, const std::vector<CellSpan>& spans,
+                    const std::vector<PlanMask>& voids, const Bounds& box, double reach) {
     CellsOfBox out;
     if (box.empty()) return out;
     const glm::dvec2 lo = glm::dvec2(box.min.x, box.min.z) - reach, hi = glm::dvec2(box.max.x, box.max.z) + reach;
     const std::vector<glm::dvec2> footprint = rectangle(lo, hi);
     const glm::dvec2 centre(box.centre().x, box.centre().z);
-    std::vector<int> overlapped;
+    std::vector<int> overlapped, overVoid;
     int holding = -1, largest = -1;
     double largestArea = 0.0;
     for (std::size_t c = 0; c < cells.size(); ++c) {
         const CellSpan& s = spans[c];
+        if (c < voids.size() && seenOverVoid(s, voids[c], box, reach)) {
+            overVoid.push_back(static_cast<int>(c));
+            continue;
+        }
         if (!meetsHeight(s, box) || hi.x <= s.lo.x || lo.x >= s.hi.x || hi.y <= s.lo.y || lo.y >= s.hi.y) continue;
         const double area = overlapArea(footprint, cells[c].region);
         if (area <= 0.0) continue;
@@ -67,24 +91,34 @@ CellsOfBox boxCells(const std::vector<Cell>& cells, const std::vector<CellSpan>&
     if (overlapped.empty()) {
         const int c = findCell(cells, box.centre());
         if (c >= 0 && meetsHeight(spans[c], box)) out.cell = c;
-        return out;
+    } else {
+        out.cell = holding >= 0 ? holding : largest;
     }
-    out.cell = holding >= 0 ? holding : largest;
     for (int c : overlapped)
         if (c != out.cell) out.moreCells.push_back(c);
+    for (int c : overVoid)
+        if (out.cell < 0)
+            out.cell = c;
+        else if (c != out.cell)
+            out.moreCells.push_back(c);
+    std::sort(out.moreCells.begin(), out.moreCells.end());
+    out.moreCells.erase(std::unique(out.moreCells.begin(), out.moreCells.end()), out.moreCells.end());
     return out;
 }
 
 }  // namespace
 
 CellsOfBox cellsOfBox(const std::vector<Cell>& cells, const Bounds& box, double reach) {
-    return boxCells(cells, cellSpans(cells), box, reach);
+    return boxCells(cells, cellSpans(cells), {}, box, reach);
 }
 
 void assignCells(Scene& scene, const std::vector<Cell>& cells, double reach) {
     const std::vector<CellSpan> spans = cellSpans(cells);
+    std::vector<double> tops;
+    for (const CellSpan& s : spans) tops.push_back(s.top);
+    const std::vector<PlanMask> voids = cellVoids(scene, cells, tops);
     for (Object& o : scene.objects) {
-        CellsOfBox c = boxCells(cells, spans, o.worldBounds, reach);
+        CellsOfBox c = boxCells(cells, spans, voids, o.worldBounds, reach);
         o.cell = c.cell;
         o.moreCells = std::move(c.moreCells);
     }

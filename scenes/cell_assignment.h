@@ -11,6 +11,13 @@
 //     less kAboveTop, c's top being the lowest floor of the cells over it in plan that lie at
 //     least kMinStoreyHeight higher (none: no top): the slab between two storeys belongs to
 //     both, a wall standing on the upper floor only to the upper storey.
+// A cell whose storey is open to the storey above (scenes/storey_voids.h: an atrium, a
+// double-height hall, a stair's opening; found from the floor slabs, so the gaps between the
+// upper storey's room cells are none) also holds the upper storey's objects seen over that void:
+// those whose box starts at or above the cell's top less kAboveTop and below the upper storey's
+// top less kAboveTop, and whose plan rectangle, grown by `reach` and by the box's height over the
+// cell's top (a sight line at 45° through the void's edge; at most kVoidSightMetres), meets the
+// void. A viewer under the void looking up at 45° or steeper sees no farther over the slab.
 // Object::cell is the cell among them holding the box's centre in plan, else the one sharing
 // the most area; Object::moreCells the others. An object overlapping no cell keeps
 // findCell's cell of its centre (scenes/region.h) when its height range meets that cell's,
@@ -27,16 +34,19 @@ inline constexpr double kCellReachMetres = 0.3;  // metres an object's box is gr
 inline constexpr double kMinStoreyHeight = 1.0;  // metres between floors of two storeys
 inline constexpr double kBelowFloor = 0.5;       // metres under a cell's floor it still holds
 inline constexpr double kAboveTop = 0.05;        // metres an object must reach under a cell's top
+inline constexpr double kVoidSightMetres = 6.0;  // most metres an object over a void is grown by
 
 struct CellsOfBox {
     int cell = -1;               // -1: none
     std::vector<int> moreCells;  // ascending, without `cell`
 };
 
-// The cells a world box belongs to (see the top of this file).
+// The cells a world box belongs to (see the top of this file), voids left out (they need the
+// scene's slabs: assignCells).
 CellsOfBox cellsOfBox(const std::vector<Cell>& cells, const Bounds& box, double reach = kCellReachMetres);
 
-// Sets Object::cell and Object::moreCells of every object of `scene` from its world bounds.
+// Sets Object::cell and Object::moreCells of every object of `scene` from its world bounds,
+// voids included.
 void assignCells(Scene& scene, const std::vector<Cell>& cells, double reach = kCellReachMetres);
 
 }  // namespace cavewall::scenes

@@ -14,7 +14,7 @@ PagedMeshGroups pagedMeshGroups(const Scene& scene, int cellCount) {
         if (!pagedWithCell(o, cellCount))
             alwaysResident[o.mesh] = true;
         else
-            cellsOfMesh[o.mesh].push_back(o.cell);
+            for (int c : cellsOf(o)) cellsOfMesh[o.mesh].push_back(c);
     }
     PagedMeshGroups g;
     g.groupOfMesh.assign(meshCount, -1);

@@ -3,7 +3,7 @@
 // (scenes::pagedWithCell), but a CAD export shares meshes between cells (one mesh per part
 // kind, placed in many bays): storing a mesh once per cell would make the paged model larger
 // than the whole one. So the paged meshes are grouped by the exact set of cells whose objects
-// use them, and a group is the unit that is uploaded, counted and freed: a cell's geometry is
+// use them (every cell of each object: a wall of two rooms pages with both), and a group is the unit that is uploaded, counted and freed: a cell's geometry is
 // the union of its groups, a group is stored once however many resident cells use it, and the
 // resident meshes are the union of the resident cells' meshes. A mesh used by one cell only
 // lands in that cell's own group (a model with unique meshes pages exactly by cell); a mesh

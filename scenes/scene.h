@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -117,11 +118,13 @@ bool anyCellOf(const Object& o, Pred pred) {
     return false;
 }
 
-// Geometry paging by cell (walls/geometry_pager.h, render/gl/scene_gpu.h): content objects of
-// one of the scene's `cellCount` cells are loaded and freed with their cell; structure, objects
-// without a (valid) cell and objects of several cells are always resident.
+// Geometry paging by cell (walls/geometry_pager.h, render/gl/scene_gpu.h): content objects
+// whose cells (cellsOf) are all among the scene's `cellCount` cells are loaded with any of their
+// cells and freed when none of them is resident (scenes/paged_meshes.h groups them by that
+// cell set); structure and objects without a (valid) cell are always resident.
 inline bool pagedWithCell(const Object& o, int cellCount) {
-    return o.role != Role::Structure && o.cell >= 0 && o.cell < cellCount && o.moreCells.empty();
+    if (o.role == Role::Structure || o.cell < 0 || o.cell >= cellCount) return false;
+    return std::all_of(o.moreCells.begin(), o.moreCells.end(), [&](int c) { return c >= 0 && c < cellCount; });
 }
 
 struct Scene {

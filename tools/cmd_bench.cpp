@@ -100,6 +100,7 @@ const char* const kBenchUsage =
     "         consecutive compared frames of each screen; and, against the control 'cells' (no\n"
     "         textures), the pooled PSNR gained and the FLIP mean as a fraction of the control's.\n"
     "         Writes DIR/bench.csv, bench_screens.csv, bench_frames.csv (every timed frame),\n"
+    "         bench_compared.csv (every compared image's PSNR and FLIP mean),\n"
     "         bench.md (also printed), bench.png (error against frame time, Pareto front in\n"
     "         red) and flip_worst_N.png (FLIP map of mode N's worst image). Defaults:\n"
     "         display cave4, out bench-out, 120 frames at the display's own resolution (cave4:\n"

@@ -23,7 +23,8 @@ std::vector<std::size_t> cellGeometryBytes(const scenes::Scene& scene, int cellC
     std::vector<std::set<int>> meshes(bytes.size());
     for (const scenes::Object& o : scene.objects) {
         if (!scenes::pagedWithCell(o, cellCount)) continue;
-        if (meshes[o.cell].insert(o.mesh).second) bytes[o.cell] += meshBytes(scene, o.mesh, lods);
+        for (int c : scenes::cellsOf(o))
+            if (meshes[c].insert(o.mesh).second) bytes[c] += meshBytes(scene, o.mesh, lods);
     }
     return bytes;
 }

@@ -48,6 +48,7 @@ void ErrorPool::addFrame(std::int64_t frame, const std::vector<ComparedImage>& i
             s->flipOver += static_cast<std::uint64_t>(
                 std::count_if(flip.errors.begin(), flip.errors.end(), [](float v) { return v > kFlipThreshold; }));
         }
+        _images.push_back({frame, c.screen, c.image, e.psnrDb(), flip.mean});
         if (_worst.frame < 0 || flip.mean > _worst.mean) {
             _worst = {metrics::flipErrorImage(flip), frame, c.screen, c.image, flip.mean};
         }

@@ -86,6 +86,13 @@ struct FlipMap {
     double mean = 0.0;  // that image's FLIP mean
 };
 
+// One compared image's error, as bench_compared.csv lists it.
+struct ImageErrorRecord {
+    std::int64_t frame = 0;
+    int screen = 0, eye = 0;
+    double psnrDb = 0.0, flipMean = 0.0;
+};
+
 // Accumulates a mode's compared frames (see the header comment).
 class ErrorPool {
 public:
@@ -98,6 +105,7 @@ public:
     ImageError result() const;  // all screens
     ImageError screenResult(std::size_t screen) const;
     const FlipMap& worstFlip() const { return _worst; }
+    const std::vector<ImageErrorRecord>& images() const { return _images; }  // every compared image, in order
 
 private:
     struct Series {
@@ -115,6 +123,7 @@ private:
     std::vector<Series> _screens;
     std::map<std::pair<int, int>, metrics::PoppingMeter> _meters;  // (screen, eye)
     FlipMap _worst;
+    std::vector<ImageErrorRecord> _images;
 };
 
 // Frame-time percentiles (milliseconds), nearest-rank (display/timing.h); 0 for none.

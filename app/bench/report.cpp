@@ -560,17 +560,28 @@ std::string framesCsv(const BenchReport& report) {
     return out;
 }
 
+std::string comparedCsv(const BenchReport& report) {
+    std::string out = "mode,frame,screen,eye,psnr_db,flip_mean\n";
+    for (const ModeResult& m : report.modes)
+        for (const ImageErrorRecord& r : m.comparedImages)
+            out += modeLabel(m) + "," + std::to_string(r.frame) + "," +
+                   (r.screen >= 0 && r.screen < static_cast<int>(m.screens.size()) ? m.screens[r.screen].screen : "?") +
+                   "," + std::to_string(r.eye) + "," + num(r.psnrDb, 6) + "," + num(r.flipMean, 6) + "\n";
+    return out;
+}
+
 std::vector<std::filesystem::path> writeReport(const std::filesystem::path& folder, const BenchReport& report) {
     std::filesystem::create_directories(folder);
     std::string csv = csvHeader() + "\n";
     for (std::size_t i = 0; i < report.modes.size(); ++i)
         csv += csvRow(report.modes[i], report.recommended == i) + "\n";
-    const std::vector<std::filesystem::path> files = {folder / "bench.csv", folder / "bench_screens.csv",
-                                                      folder / "bench.md", folder / "bench.png",
-                                                      folder / "bench_frames.csv"};
+    const std::vector<std::filesystem::path> files = {folder / "bench.csv",        folder / "bench_screens.csv",
+                                                      folder / "bench.md",         folder / "bench.png",
+                                                      folder / "bench_frames.csv", folder / "bench_compared.csv"};
     writeText(files[0], csv);
     writeText(files[1], screensCsv(report));
     writeText(files[4], framesCsv(report));
+    writeText(files[5], comparedCsv(report));
     writeText(files[2], "# cavewall bench\n\n" + markdownReport(report) +
                             "\n![pooled PSNR and FLIP mean (y) against median frame time (x) of every mode, named "
                             "\"#N label\" as the table; dashed: the Pareto front; ringed: the control and the best "

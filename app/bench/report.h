@@ -82,8 +82,9 @@ struct ModeResult {
     // Against the alternative a user would pick, full geometry with levels of detail at the
     // bench's tolerance (compareWithLodBaseline): its frame_ms_p50 / this mode's; NaN without it.
     double speedupLod = std::numeric_limits<double>::quiet_NaN();
-    ImageError error;   // all screens
-    FlipMap flipWorst;  // the FLIP map of the compared image with the highest mean
+    ImageError error;                              // all screens
+    FlipMap flipWorst;                             // the FLIP map of the compared image with the highest mean
+    std::vector<ImageErrorRecord> comparedImages;  // every compared image's PSNR and FLIP mean
     // Against the control (compareWithControl): pooled PSNR minus the control's (dB, > 0: less
     // error) and FLIP mean over the control's (< 1: less error). NaN without a control.
     double psnrGainDb = std::numeric_limits<double>::quiet_NaN();
@@ -202,6 +203,7 @@ double medianFloorMs(const ModeResult& m);
 std::vector<std::string> clusterBudgetLines(const BenchReport& report);
 
 // Writes bench.csv, bench_screens.csv, bench_frames.csv (every timed frame of every mode),
+// bench_compared.csv (every compared image of every mode: frame, screen, eye, PSNR, FLIP mean),
 // bench.md, bench.png and flip_worst_N.png (the FLIP map of mode N's worst image, N as the "#"
 // column of bench.md, for every mode that compared images) into `folder` (created).
 // Returns the files written.

@@ -210,6 +210,7 @@ void summarizeWalkthrough(const walkthrough::gl::Walkthrough& walkthrough, RunSu
     const walkthrough::gl::GeometryYardsticks yardsticks = walkthrough.geometryYardsticks();
     summary.largestThreeCellsMB = yardsticks.largestThreeCellsMB;
     summary.modelGeometryMB = yardsticks.wholeModelMB;
+    summary.sharedGeometryMB = yardsticks.sharedMB;
 }
 
 // What the frame loop drives. Rank 0 alone has input and output.

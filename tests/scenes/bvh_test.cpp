@@ -130,8 +130,11 @@ TEST(Bvh, EmptySceneAndSceneConstructor) {
     EXPECT_EQ(bvh.cull(clip), std::vector<int>{0});
     const std::vector<bool> onlyCell0 = {true, false};
     EXPECT_TRUE(bvh.cull(clip, &onlyCell0).empty());  // object 0 is in cell 1
-    s.objects[0].moreCells = {2};                     // and in cell 2: kept with any mask
-    EXPECT_EQ(Bvh(s).cull(clip, &onlyCell0), std::vector<int>{0});
+    s.objects[0].moreCells = {2};                     // and in cell 2: kept with either
+    EXPECT_TRUE(Bvh(s).cull(clip, &onlyCell0).empty());
+    const std::vector<bool> cell2 = {false, false, true}, cell1 = {false, true};
+    EXPECT_EQ(Bvh(s).cull(clip, &cell2), std::vector<int>{0});
+    EXPECT_EQ(Bvh(s).cull(clip, &cell1), std::vector<int>{0});
 }
 
 }  // namespace

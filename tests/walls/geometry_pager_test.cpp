@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <latch>
@@ -165,6 +166,31 @@ TEST(PagedMeshGroups, GroupsMeshesByTheCellsThatUseThem) {
     EXPECT_EQ(h.groupMeshes[1], (std::vector<int>{1, 4}));
     // An object whose cell is outside the description is always resident, and so is its mesh.
     s.objects.back().cell = 7;
+    EXPECT_EQ(scenes::pagedMeshGroups(s, 3).groupOfMesh[4], -1);
+}
+
+// An object of two cells (a wall between two rooms) pages with both: its mesh is in the group
+// of exactly those cells, loaded when either is wanted; one of its cells beyond the description
+// makes it always resident.
+TEST(PagedMeshGroups, AnObjectOfTwoCellsPagesWithItsCells) {
+    scenes::Scene s = sharedMeshes();
+    placeObject(s, 4, 0);
+    s.objects.back().moreCells = {2};
+    const scenes::PagedMeshGroups g = scenes::pagedMeshGroups(s, 3);
+    ASSERT_GE(g.groupOfMesh[4], 0);
+    EXPECT_EQ(g.groupCells[static_cast<std::size_t>(g.groupOfMesh[4])], (std::vector<int>{0, 2}));
+    for (int c : {0, 2}) {
+        const std::vector<int>& groups = g.cellGroups[static_cast<std::size_t>(c)];
+        EXPECT_NE(std::find(groups.begin(), groups.end(), g.groupOfMesh[4]), groups.end()) << "cell " << c;
+    }
+    const std::vector<int>& groups1 = g.cellGroups[1];
+    EXPECT_EQ(std::find(groups1.begin(), groups1.end(), g.groupOfMesh[4]), groups1.end());
+    const std::size_t mesh4 = s.meshes[4].positions.size() * kVertexBytes + 3 * kIndexBytes;
+    const std::vector<std::size_t> withWall = cellGeometryBytes(s, 3), without = cellGeometryBytes(sharedMeshes(), 3);
+    EXPECT_EQ(withWall[0], without[0] + mesh4);
+    EXPECT_EQ(withWall[1], without[1]);
+    EXPECT_EQ(withWall[2], without[2] + mesh4);
+    s.objects.back().moreCells = {5};
     EXPECT_EQ(scenes::pagedMeshGroups(s, 3).groupOfMesh[4], -1);
 }
 

@@ -184,6 +184,7 @@ ModeResult ModeAccumulator::finish(double fullP50) const {
     m.error.stereoMeasured = measuresStereo(_display);
     m.error.stereo = _stereo;
     m.flipWorst = _errors.worstFlip();
+    m.comparedImages = _errors.images();
     for (std::size_t s = 0; s < m.screens.size(); ++s) {
         m.screens[s].error = _errors.screenResult(s);
         m.screens[s].error.stereoMeasured = measuresStereo(_display);

@@ -420,10 +420,19 @@ TEST(BenchReport, WritesFilesAndThePlot) {
                     sample(Mode::Walls, 20, 5.0, 0.05)};
     report.modes[2].flipWorst.image = scenes::Image{"flip", 3, 2, std::vector<std::uint8_t>(3 * 2 * 4, 200)};
     report.modes[2].flipWorst.frame = 12;
+    report.modes[1].comparedImages = {{0, 0, 0, 31.5, 0.02}, {6, 0, 0, 24.25, 0.125}};
     const auto files = writeReport(folder.path(), report);
-    ASSERT_EQ(files.size(), 6u);  // the five reports and mode 3's FLIP map, the only one set
-    EXPECT_EQ(files[5], folder / "flip_worst_3.png");
-    EXPECT_EQ(scenes::readImage(files[5]).width, 3);
+    ASSERT_EQ(files.size(), 7u);  // the six reports and mode 3's FLIP map, the only one set
+    EXPECT_EQ(files[6], folder / "flip_worst_3.png");
+    EXPECT_EQ(scenes::readImage(files[6]).width, 3);
+    const test::CsvTable compared = test::readCsv(folder / "bench_compared.csv");
+    ASSERT_EQ(compared.size(), 2u);  // mode 2's two images, no others
+    EXPECT_EQ(compared.columns, (std::vector<std::string>{"mode", "frame", "screen", "eye", "psnr_db", "flip_mean"}));
+    EXPECT_EQ(compared[1].at("mode"), "walls a=10 blend");
+    EXPECT_EQ(compared[1].at("frame"), "6");
+    EXPECT_EQ(compared[1].at("screen"), "front");
+    EXPECT_EQ(compared[1].at("psnr_db"), "24.25");
+    EXPECT_EQ(compared[1].at("flip_mean"), "0.125");
     EXPECT_FALSE(std::filesystem::exists(folder / "flip_worst_2.png"));
     const test::CsvTable frames = test::readCsv(folder / "bench_frames.csv");
     ASSERT_EQ(frames.size(), 3u * 2);  // 2 frames per mode

@@ -1,0 +1,110 @@
+// Voids between storeys (scenes/storey_voids.h) and the objects a cell under a void holds
+// (scenes/cell_assignment.h), on a synthetic two-storey building.
+//
+// Ground floor: one cell G, x [-14, 10], z [-3, 3], its slab at y 0 all along. Upper floor
+// (y 4): rooms A, x [-10, -0.1], and B, x [0.1, 4], each stopping at the face of the 0.2 m
+// partition between them; the upper slab is two boards, x [-10, -0.1] and [0.1, 4] (a joint
+// under the partition), so x [4, 10] is a double-height hall: a void. A roof at y 8 covers
+// x [-10, 10]. x [-14, -10] is a one-storey wing with its roof at y 4.6: no void.
+#include "scenes/cell_assignment.h"
+#include "scenes/storey_voids.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace cavewall::scenes {
+namespace {
+
+using ::testing::Contains;
+using ::testing::Not;
+
+constexpr int kG = 0, kA = 1, kB = 2;
+
+std::vector<glm::dvec2> rect(double x0, double x1) { return {{x0, 3}, {x1, 3}, {x1, -3}, {x0, -3}}; }
+
+std::vector<Cell> building() {
+    return {{"G", rect(-14, 10), 0.0}, {"A", rect(-10, -0.1), 4.0}, {"B", rect(0.1, 4), 4.0}};
+}
+
+// A horizontal board x [x0, x1], z [-3, 3] at height y.
+void board(Scene& s, double x0, double x1, double y) {
+    Mesh m;
+    m.positions = {{x0, y, -3}, {x1, y, -3}, {x1, y, 3}, {x0, y, 3}};
+    m.indices = {0, 2, 1, 0, 3, 2};
+    for (const glm::vec3& p : m.positions) m.bounds.add(glm::dvec3(p));
+    s.meshes.push_back(m);
+    addObject(s, static_cast<int>(s.meshes.size()) - 1, glm::dmat4(1.0), "board");
+}
+
+// An object with the world box [min, max] and no triangles.
+int box(Scene& s, glm::dvec3 min, glm::dvec3 max) {
+    Object o;
+    o.mesh = 0;  // the empty mesh
+    o.worldBounds.add(min);
+    o.worldBounds.add(max);
+    s.objects.push_back(o);
+    return static_cast<int>(s.objects.size()) - 1;
+}
+
+Scene buildingScene() {
+    Scene s;
+    s.meshes.push_back({});  // 0: empty, for the boxes
+    board(s, -14, 10, 0.0);  // ground slab
+    board(s, -10, -0.1, 4.0);
+    board(s, 0.1, 4, 4.0);
+    board(s, -10, 10, 8.0);   // roof
+    board(s, -14, -10, 4.6);  // the wing's roof
+    return s;
+}
+
+std::vector<double> tops() { return {4.0, INFINITY, INFINITY}; }
+
+TEST(StoreyVoids, TheHallOpenToTheStoreyAboveIsAVoidTheJointUnderAPartitionIsNot) {
+    const Scene s = buildingScene();
+    const std::vector<PlanMask> voids = cellVoids(s, building(), tops());
+    ASSERT_EQ(voids.size(), 3u);
+    EXPECT_TRUE(voids[kA].empty()) << "A has nothing above it";
+    EXPECT_NEAR(voids[kG].area(), 6.0 * 6.0, 6.0 * 0.25 * 2) << "the hall x [4, 10]";
+    EXPECT_GT(voids[kG].count({5, -2}, {9, 2}), 0);
+    EXPECT_EQ(voids[kG].count({-0.2, -3}, {0.2, 3}), 0) << "the joint under the partition";
+    EXPECT_EQ(voids[kG].count({-8, -3}, {3.7, 3}), 0) << "under the upper slab";
+    EXPECT_EQ(voids[kG].count({-14, -3}, {-10.1, 3}), 0) << "the one-storey wing";
+}
+
+TEST(CellAssignment, ObjectsSeenOverAVoidJoinTheCellBelowObjectsOverTheSlabDoNot) {
+    Scene s = buildingScene();
+    const int rail = box(s, {3.8, 4, -3}, {4, 5, 3});          // the gallery's rail at the void's edge
+    const int lamp = box(s, {6, 6, -0.5}, {7, 6.5, 0.5});      // hangs in the hall
+    const int wall = box(s, {1.5, 4, 2.8}, {2, 8, 3.2});       // 2 m from the void, 4 m high: seen at 45°
+    const int desk = box(s, {-8, 4, -1}, {-7, 4.8, 0});        // in A, over the slab
+    const int partition = box(s, {-0.1, 4, -3}, {0.1, 7, 3});  // over the joint
+    const int roof = box(s, {-10, 8, -3}, {10, 8.2, 3});       // over the hall: in no upper storey's top
+    assignCells(s, building());
+    EXPECT_THAT(cellsOf(s.objects[rail]), Contains(kG));
+    EXPECT_THAT(cellsOf(s.objects[rail]), Contains(kB));
+    EXPECT_THAT(cellsOf(s.objects[lamp]), Contains(kG));
+    EXPECT_THAT(cellsOf(s.objects[wall]), Contains(kG));
+    EXPECT_THAT(cellsOf(s.objects[desk]), Not(Contains(kG)));
+    EXPECT_THAT(cellsOf(s.objects[desk]), Contains(kA));
+    EXPECT_THAT(cellsOf(s.objects[partition]), Not(Contains(kG)));
+    EXPECT_THAT(cellsOf(s.objects[roof]), Contains(kG));
+    // Without the upper slab's second board the whole of x [0.1, 10] is open: the partition joins.
+    Scene open = buildingScene();
+    open.objects.erase(open.objects.begin() + 2);
+    const int partition2 = box(open, {-0.1, 4, -3}, {0.1, 7, 3});
+    assignCells(open, building());
+    EXPECT_THAT(cellsOf(open.objects[partition2]), Contains(kG));
+}
+
+TEST(CellAssignment, ABuildingWithoutAVoidKeepsUpperObjectsUpstairs) {
+    Scene s = buildingScene();
+    board(s, 4, 10, 4.0);  // the hall floored over
+    const int lamp = box(s, {6, 6, -0.5}, {7, 6.5, 0.5});
+    assignCells(s, building());
+    EXPECT_THAT(cellsOf(s.objects[lamp]), Not(Contains(kG)));
+}
+
+}  // namespace
+}  // namespace cavewall::scenes
