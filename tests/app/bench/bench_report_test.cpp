@@ -428,7 +428,7 @@ TEST(BenchReport, WritesFilesAndThePlot) {
     const test::CsvTable compared = test::readCsv(folder / "bench_compared.csv");
     ASSERT_EQ(compared.size(), 2u);  // mode 2's two images, no others
     EXPECT_EQ(compared.columns, (std::vector<std::string>{"mode", "frame", "screen", "eye", "psnr_db", "flip_mean"}));
-    EXPECT_EQ(compared[1].at("mode"), "walls a=10 blend");
+    EXPECT_EQ(compared[1].at("mode"), "walls flat a=10 blend");
     EXPECT_EQ(compared[1].at("frame"), "6");
     EXPECT_EQ(compared[1].at("screen"), "front");
     EXPECT_EQ(compared[1].at("psnr_db"), "24.25");
