@@ -124,13 +124,15 @@ RecommendRow scaleRow(const ScaleRow& r) {
     const bool walls =
         r.mode == ScaleMode::Walls || r.mode == ScaleMode::WallsBudget || r.mode == ScaleMode::DepthWalls;
     const bool compared = r.comparedFrames > 0 || r.mode == ScaleMode::Full;
-    return {.label = std::string(toString(r.mode)),
-            .walls = walls,
-            .kind = r.mode == ScaleMode::DepthWalls ? walls::WallKind::Depth : walls::WallKind::Flat,
-            .frameMs = r.frameMs.p50,
-            .psnrDb = compared ? r.psnrDb : NAN,
-            .flipMean = compared ? r.flipMean : NAN,
-            .stereoArcmin = std::nullopt};
+    RecommendRow row{.label = std::string(toString(r.mode)),
+                     .walls = walls,
+                     .kind = r.mode == ScaleMode::DepthWalls ? walls::WallKind::Depth : walls::WallKind::Flat,
+                     .frameMs = r.frameMs.p50,
+                     .psnrDb = compared ? r.psnrDb : NAN,
+                     .flipMean = compared ? r.flipMean : NAN,
+                     .stereoArcmin = std::nullopt};
+    if (r.stereoMeasured) row.stereoArcmin = r.stereo.meanArcmin();
+    return row;
 }
 
 }  // namespace

@@ -48,6 +48,19 @@ bool mayBeLeftOut(ScaleMode mode) {
 
 void writeText(const std::filesystem::path& file, const std::string& text) { scenes::writeBytesAtomically(file, text); }
 
+// The stereo error's CSV cells: mean arc minutes and the share of pixels beyond 1 arcmin; nan
+// when not measured (mono, or full geometry, the reference).
+std::string stereoCsv(const ScaleRow& r) {
+    if (!r.stereoMeasured) return "nan,nan";
+    return fixed(r.stereo.meanArcmin(), 5) + "," + fixed(r.stereo.shareBeyond(), 5);
+}
+
+// The stereo error's scale.md cell: "mean (% beyond 1')"; "–" when not measured.
+std::string stereoCell(const ScaleRow& r) {
+    if (!r.stereoMeasured) return "–";
+    return fixed(r.stereo.meanArcmin(), 4) + " (" + fixed(100.0 * r.stereo.shareBeyond(), 2) + " %)";
+}
+
 }  // namespace
 
 std::string_view toString(ScaleMode mode) {
@@ -94,7 +107,7 @@ std::string scaleCsv(const ScaleReport& report) {
         "triangles_per_frame,"
         "resident_mb,paged_peak_mb,whole_model_mb,largest_three_cells_mb,load_s,first_frame_s,"
         "geometry_misses,geometry_page_ins,textures_over_alpha,compared_frames,psnr_db,"
-        "worst_frame_psnr_db,flip_mean\n";
+        "worst_frame_psnr_db,flip_mean,worst_image_flip,stereo_arcmin,stereo_beyond_1arcmin\n";
     for (const ScaleRow& r : report.rows)
         out += std::to_string(r.targetTriangles) + "," + std::to_string(r.triangles) + "," + std::to_string(r.cells) +
                "," + std::string(toString(r.mode)) + "," + std::to_string(r.triangleBudget) + "," +
@@ -104,7 +117,7 @@ std::string scaleCsv(const ScaleReport& report) {
                fixed(r.firstFrameSeconds, 3) + "," + std::to_string(r.geometryMisses) + "," +
                std::to_string(r.geometryPageIns) + "," + std::to_string(r.texturesOverAlpha) + "," +
                std::to_string(r.comparedFrames) + "," + fixed(r.psnrDb, 3) + "," + fixed(r.worstFramePsnrDb, 3) + "," +
-               fixed(r.flipMean, 5) + "\n";
+               fixed(r.flipMean, 5) + "," + fixed(r.worstImageFlip, 5) + "," + stereoCsv(r) + "\n";
     return out;
 }
 
@@ -114,9 +127,9 @@ std::string scaleMarkdown(const ScaleReport& report) {
     out +=
         "\n| triangles | cells | mode | frame ms p50 | p95 | triangles/frame | resident MB | paged peak MB | "
         "whole model MB | largest 3 cells MB | load s | first frame s | geometry misses | over alpha | "
-        "PSNR dB pooled (worst frame) | FLIP mean |\n"
+        "PSNR dB pooled (worst frame) | FLIP mean | worst image FLIP | stereo arcmin (% > 1') |\n"
         "| ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | "
-        "---: |\n";
+        "---: | ---: | ---: |\n";
     for (const ScaleRow& r : report.rows)
         out +=
             "| " + fixed(millions(r.triangles), 2) + " M | " + std::to_string(r.cells) + " | " +
@@ -127,7 +140,8 @@ std::string scaleMarkdown(const ScaleReport& report) {
             fixed(r.firstFrameSeconds, 2) + " | " + std::to_string(r.geometryMisses) + " | " +
             std::to_string(r.texturesOverAlpha) + " | " +
             (r.comparedFrames > 0 ? fixed(r.psnrDb, 1) + " (" + fixed(r.worstFramePsnrDb, 1) + ")" : std::string("–")) +
-            " | " + (r.comparedFrames > 0 ? fixed(r.flipMean, 4) : std::string("–")) + " |\n";
+            " | " + (r.comparedFrames > 0 ? fixed(r.flipMean, 4) : std::string("–")) + " | " +
+            (r.comparedFrames > 0 ? fixed(r.worstImageFlip, 4) : std::string("–")) + " | " + stereoCell(r) + " |\n";
     out +=
         "\nSlopes (least squares of the median frame ms against millions of triangles) and growth (median at the "
         "largest size over the smallest):\n\n";

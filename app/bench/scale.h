@@ -63,6 +63,11 @@ struct ScaleRow {
     double psnrDb = std::numeric_limits<double>::infinity();
     double worstFramePsnrDb = std::numeric_limits<double>::infinity();
     double flipMean = 0.0;
+    double worstImageFlip = 0.0;  // the FLIP mean of the worst compared image (one screen, one eye)
+    // On a stereo display: the stereo error of every compared eye's depth against full
+    // geometry's (metrics/stereo_error.h, pooled over the compared pixels). Not measured in mono.
+    bool stereoMeasured = false;
+    metrics::StereoError stereo;
 };
 
 struct ScaleReport {

@@ -134,27 +134,35 @@ metrics::DepthImage depthImage(const walkthrough::ViewDepth& d, const std::strin
 
 }  // namespace
 
-void ModeAccumulator::compareDepths(const std::vector<walkthrough::ViewDepth>& depths,
-                                    const std::vector<walkthrough::ViewDepth>& reference) {
-    const std::string mode = modeLabel(_mode);
+metrics::StereoError addStereoError(const display::Display& display, const std::string& mode,
+                                    const std::vector<walkthrough::ViewDepth>& depths,
+                                    const std::vector<walkthrough::ViewDepth>& reference,
+                                    std::vector<metrics::StereoError>& screens) {
     if (depths.size() != reference.size())
         throw Error("bench: mode " + mode + " read " + std::to_string(depths.size()) +
                     " depth views, expected the reference's " + std::to_string(reference.size()));
-    const metrics::StereoErrorOptions options{.interocularMetres = _display.config().viewer.eyeSeparation};
+    const metrics::StereoErrorOptions options{.interocularMetres = display.config().viewer.eyeSeparation};
+    metrics::StereoError sum;
     for (std::size_t i = 0; i < depths.size(); ++i) {
         const walkthrough::ViewDepth &d = depths[i], &r = reference[i];
         if (d.screen != r.screen || d.image != r.image || d.eye != r.eye || d.screen < 0 ||
-            d.screen >= static_cast<int>(_screenStereo.size()))
+            d.screen >= static_cast<int>(screens.size()))
             throw Error("bench: mode " + mode + ": depth view " + std::to_string(i) + " is screen " +
                         std::to_string(d.screen) + " eye " + display::toString(d.eye) +
                         ", expected the reference's screen " + std::to_string(r.screen) + " eye " +
                         display::toString(r.eye));
-        const std::string view = _display.screens()[d.screen].name + " " + display::toString(d.eye);
+        const std::string view = display.screens()[d.screen].name + " " + display::toString(d.eye);
         const metrics::StereoError e =
             metrics::stereoError(depthImage(d, mode + " " + view), depthImage(r, "full " + view), options);
-        _stereo += e;
-        _screenStereo[d.screen] += e;
+        sum += e;
+        screens[d.screen] += e;
     }
+    return sum;
+}
+
+void ModeAccumulator::compareDepths(const std::vector<walkthrough::ViewDepth>& depths,
+                                    const std::vector<walkthrough::ViewDepth>& reference) {
+    _stereo += addStereoError(_display, modeLabel(_mode), depths, reference, _screenStereo);
 }
 
 bool measuresStereo(const display::Display& display) {

@@ -52,6 +52,15 @@ std::vector<bench::ComparedImage> comparedImages(const display::Display& display
                                                  const std::vector<scenes::ScreenImage>& reference,
                                                  const std::string& mode);
 
+// The stereo error (metrics/stereo_error.h) of every view's `depths` against the reference's of
+// the same frame (same screens, images and eyes, in the same order) at the viewer's eye
+// separation, added per screen to `screens` (one entry per display screen). Returns their sum.
+// Throws cavewall::Error naming `mode` when the views differ from the reference's.
+metrics::StereoError addStereoError(const display::Display& display, const std::string& mode,
+                                    const std::vector<walkthrough::ViewDepth>& depths,
+                                    const std::vector<walkthrough::ViewDepth>& reference,
+                                    std::vector<metrics::StereoError>& screens);
+
 // Collects one mode's frames and comparisons; finish() fills the bench::ModeResult.
 class ModeAccumulator {
 public:

@@ -3,6 +3,7 @@
 #include "config/error.h"
 #include "config/json_reader.h"
 #include "display/display.h"
+#include "display/eye_distance.h"
 #include "display/timing.h"
 #include "display/gl/context.h"
 #include "display/gl/frame_images.h"
@@ -140,6 +141,20 @@ struct NearMode {
         return {display::msSince(start), static_cast<double>(stats.triangles)};
     }
 
+    // The last frame's depth per view as eye distances (after draw), in display.views' order, as
+    // the walkthrough reads it (FrameInput::readDepth).
+    std::vector<walkthrough::ViewDepth> readDepths(const display::HeadPose& head) const {
+        std::vector<walkthrough::ViewDepth> depths;
+        for (const display::ScreenView& view : display.views(head)) {
+            const int image = display::gl::RenderTargets::imageOf(view.pass);
+            const display::Viewport& v = view.pass.viewport;
+            const std::vector<float> depth = targets.readDepth(view.screen, image, v);
+            depths.push_back({view.screen, image, view.pass.eye, v.width, v.height,
+                              display::eyeDistances(view.frustum, {v.width, v.height}, depth)});
+        }
+        return depths;
+    }
+
     double residentMB() const {
         return static_cast<double>(renderer.gpu().vertexBytes() + renderer.gpu().indexBytes()) / kMB;
     }
@@ -154,12 +169,23 @@ struct NearMode {
 };
 
 struct Accumulated {
-    explicit Accumulated(std::size_t screens) : errors(screens) {}
+    explicit Accumulated(std::size_t screens) : errors(screens), screenStereo(screens) {}
     std::vector<double> ms;
     double triangles = 0.0, residentMB = 0.0, pagedMB = 0.0;
     int overAlpha = 0;
     long misses = 0, pageIns = 0;
-    bench::ErrorPool errors;  // against full geometry (near and walls)
+    bench::ErrorPool errors;      // against full geometry (near and walls)
+    bool stereoMeasured = false;  // stereo displays: every compared eye's depth against full geometry's
+    metrics::StereoError stereo;
+    std::vector<metrics::StereoError> screenStereo;
+
+    // Adds one compared frame's depths against full geometry's.
+    void addDepths(const display::Display& display, bench::ScaleMode mode,
+                   const std::vector<walkthrough::ViewDepth>& depths,
+                   const std::vector<walkthrough::ViewDepth>& reference) {
+        stereoMeasured = true;
+        stereo += addStereoError(display, std::string(bench::toString(mode)), depths, reference, screenStereo);
+    }
 };
 
 bench::ScaleRow rowOf(bench::ScaleMode mode, const Accumulated& a, const bench::ScaleRow& base) {
@@ -178,7 +204,10 @@ bench::ScaleRow rowOf(bench::ScaleMode mode, const Accumulated& a, const bench::
         r.psnrDb = e.psnrDb;
         r.worstFramePsnrDb = e.worstFramePsnrDb;
         r.flipMean = e.flipMean;
+        r.worstImageFlip = a.errors.worstFlip().mean;
     }
+    r.stereoMeasured = a.stereoMeasured;
+    r.stereo = a.stereo;
     return r;
 }
 
@@ -411,26 +440,28 @@ void warmUp(SizeModes& live, const bench::EyePath& path) {
 }
 
 // A walls mode's frame; its images (when `reference`) compared with full geometry's.
-void drawWalk(SizeMode& m, const walkthrough::FrameInput& in, long frame,
-              const std::vector<scenes::ScreenImage>* reference, const display::Display& display) {
+void drawWalk(SizeMode& m, const walkthrough::FrameInput& in, long frame, const walkthrough::FrameResult* reference,
+              const display::Display& display) {
     const walkthrough::FrameResult w = m.walk->renderFrame(in);
     Accumulated& a = m.acc;
     a.ms.push_back(w.frameMs);
     a.triangles += static_cast<double>(w.stats.triangles);
     if (reference)
-        a.errors.addFrame(frame,
-                          comparedImages(display, in.head, w.images, *reference, std::string(bench::toString(m.mode))));
+        a.errors.addFrame(
+            frame, comparedImages(display, in.head, w.images, reference->images, std::string(bench::toString(m.mode))));
+    if (reference && in.readDepth) a.addDepths(display, m.mode, w.depths, reference->depths);
     a.pagedMB = std::max(a.pagedMB, w.geometry.residentMB);
     a.overAlpha = std::max(a.overAlpha, w.texturesOverAlpha);
     a.misses = w.geometry.misses;
     a.pageIns = w.geometry.pageIns;
 }
 
-// One path frame drawn by every mode in kScaleModes' order, full geometry first: its images are
-// the others' reference. Images are read back after each mode's frame is timed (walkthrough.h;
-// NearMode::draw).
+// One path frame drawn by every mode in kScaleModes' order, full geometry first: its images (and,
+// on a stereo display, its depths) are the others' reference. Images and depths are read back
+// after each mode's frame is timed (walkthrough.h; NearMode::draw).
 void drawFrame(SizeModes& live, walkthrough::FrameInput in, long frame, bool compare, const display::Display& display) {
     in.readImages = compare;
+    in.readDepth = compare && measuresStereo(display);
     SizeMode& full = live.modes.front();
     const walkthrough::FrameResult f = full.walk->renderFrame(in);
     full.acc.ms.push_back(f.frameMs);
@@ -444,8 +475,9 @@ void drawFrame(SizeModes& live, walkthrough::FrameInput in, long frame, bool com
                 m.acc.errors.addFrame(
                     frame, comparedImages(display, in.head, display::gl::readFrame(display, m.near->targets), f.images,
                                           std::string(bench::toString(m.mode))));
+            if (in.readDepth) m.acc.addDepths(display, m.mode, m.near->readDepths(in.head), f.depths);
         } else if (hasWalls(m.mode) || m.mode == ScaleMode::FullLod) {
-            drawWalk(m, in, frame, compare ? &f.images : nullptr, display);
+            drawWalk(m, in, frame, compare ? &f : nullptr, display);
         }
     }
 }

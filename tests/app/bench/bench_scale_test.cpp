@@ -229,5 +229,30 @@ TEST(BenchScale, WritesCsvMarkdownAndPlots) {
     EXPECT_THAT(test::readFile(folder / "scale.md"), HasSubstr("one named line per mode that ran"));
 }
 
+// The worst compared image's FLIP and, where measured (stereo), the stereo error: mean arc
+// minutes and the share beyond 1 arcmin; nan in the CSV and a dash in the table where not.
+TEST(BenchScale, StereoErrorAndWorstImageFlipAreReported) {
+    ScaleReport report = sample();
+    ScaleRow& walls = report.rows[1];
+    walls.comparedFrames = 5;
+    walls.psnrDb = 34.4;
+    walls.worstFramePsnrDb = 32.5;
+    walls.flipMean = 0.0066;
+    walls.worstImageFlip = 0.0324;
+    walls.stereoMeasured = true;
+    walls.stereo.pixels = 1000;
+    walls.stereo.sumArcmin = 73.7;
+    walls.stereo.beyond = 11;
+    const test::CsvTable csv = test::parseCsv(scaleCsv(report));
+    ASSERT_EQ(csv.size(), 4u);
+    EXPECT_DOUBLE_EQ(csv[1].number("worst_image_flip"), 0.0324);
+    EXPECT_DOUBLE_EQ(csv[1].number("stereo_arcmin"), 0.0737);
+    EXPECT_DOUBLE_EQ(csv[1].number("stereo_beyond_1arcmin"), 0.011);
+    EXPECT_EQ(csv[0].at("stereo_arcmin"), "nan");  // full geometry: the reference
+    const std::string md = scaleMarkdown(report);
+    EXPECT_THAT(md, HasSubstr("| worst image FLIP | stereo arcmin (% > 1') |"));
+    EXPECT_THAT(md, HasSubstr("| 34.4 (32.5) | 0.0066 | 0.0324 | 0.0737 (1.10 %) |"));
+}
+
 }  // namespace
 }  // namespace cavewall::bench

@@ -181,5 +181,23 @@ TEST(Recommend, PlantFiguresRecommendDepthWalls) {
     EXPECT_THAT(scaleMarkdown(report), HasSubstr("- recommended (2.07 M triangles): walls-depth"));
 }
 
+// In stereo the scale bench's rows carry their stereo error, and the rule picks the eligible
+// walls mode with the lowest one, as `bench` does: walls-budget is within 1 dB of the walls'
+// pooled PSNR and faster, but the walls' stereo error is lower.
+TEST(Recommend, ScaleRowsInStereoPickTheLowestStereoError) {
+    ScaleReport report;
+    report.rows = {scaleRow(ScaleMode::Full, 600.0, kInf, 0.0), scaleRow(ScaleMode::Walls, 230.0, 34.4, 0.0066),
+                   scaleRow(ScaleMode::WallsBudget, 180.0, 33.9, 0.0070)};
+    for (ScaleRow& r : report.rows) {
+        if (r.mode == ScaleMode::Full) continue;
+        r.stereoMeasured = true;
+        r.stereo.pixels = 100;
+        r.stereo.sumArcmin = r.mode == ScaleMode::Walls ? 5.0 : 9.0;
+    }
+    const std::vector<std::string> lines = scaleRecommendedLines(report);
+    ASSERT_EQ(lines.size(), 1u);
+    EXPECT_THAT(lines[0], HasSubstr("): walls (lowest stereo error, 0.05 arcmin mean, of 2 walls modes on the front"));
+}
+
 }  // namespace
 }  // namespace cavewall::bench

@@ -28,27 +28,35 @@ namespace fs = std::filesystem;
 // the whole model (shared meshes stored once), only the requested textures baked, the second
 // size's bake found in the scale cache (the same scene bytes, plan and settings), and the
 // budgeted walls drawing no more triangles than the walls under the near limit's median.
-// A tiny scale run into `root` (data and out folders of its own): 32 x 32 screens, 4 frames
-// over 10 m, 16-texel bakes, images compared every 2 frames; `sizes` and `extra` flags added.
-CliResult runTinyScale(const fs::path& root, const std::string& sizes, std::vector<std::string> extra = {}) {
+
+// A tiny scale run's arguments into `root` (data and out folders of its own) at `sizes`: 32 x 32
+// screens, 4 frames over 10 m, 16-texel bakes, images compared every 2 frames, in the display's
+// own stereo mode (cave4: separate).
+std::vector<std::string> tinyScaleArgs(const fs::path& root, const std::string& sizes) {
     fs::remove_all(root / "data");
-    std::vector<std::string> args{"bench", "--mono",
-                                  "--scale",
-                                  sizes,
-                                  "--resolution",
-                                  "32",
-                                  "--frames",
-                                  "4",
-                                  "--bake-resolution",
-                                  "16",
-                                  "--scale-metres",
-                                  "10",
-                                  "--compare-every",
-                                  "2",
-                                  "--data",
-                                  (root / "data").string(),
-                                  "--out",
-                                  (root / "out").string()};
+    return {"bench",
+            "--scale",
+            sizes,
+            "--resolution",
+            "32",
+            "--frames",
+            "4",
+            "--bake-resolution",
+            "16",
+            "--scale-metres",
+            "10",
+            "--compare-every",
+            "2",
+            "--data",
+            (root / "data").string(),
+            "--out",
+            (root / "out").string()};
+}
+
+// A tiny scale run, mono (one image per screen), `extra` flags added.
+CliResult runTinyScale(const fs::path& root, const std::string& sizes, std::vector<std::string> extra = {}) {
+    std::vector<std::string> args = tinyScaleArgs(root, sizes);
+    args.push_back("--mono");
     args.insert(args.end(), extra.begin(), extra.end());
     return runCavewall(args);
 }
@@ -114,6 +122,35 @@ TEST(BenchSceneCli, ScaleRunHasFourModesPerSize) {
     EXPECT_THAT(r.out, HasSubstr("textures over alpha"));
 }
 
+// cave4 in stereo (its default, no --mono): every compared mode's stereo error against full
+// geometry's depth is reported, and the recommendation takes it into account. The near limit
+// leaves out every cell but the viewer's, so its depth differs from full geometry's somewhere.
+TEST(BenchSceneCli, ScaleRunInStereoReportsTheStereoError) {
+    const test::TempFolder root("bench_cli_scale_stereo");
+    const fs::path out = root / "out";
+    std::vector<std::string> args = tinyScaleArgs(root.path(), "20k");
+    args.insert(args.end(), {"--triangle-budget", "0"});
+    const CliResult r = runCavewall(args);
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    EXPECT_THAT(r.out, HasSubstr("4 screens at 32x32 pixels, separate"));
+    EXPECT_THAT(r.out, HasSubstr("stereo arcmin (% > 1')"));
+    EXPECT_THAT(r.out, HasSubstr("(lowest stereo error, "));
+    const test::CsvTable csv = test::readCsv(out / "scale.csv");
+    ASSERT_EQ(csv.size(), 5u);                     // full, full-lod, near, cells, walls
+    EXPECT_EQ(csv[0].at("stereo_arcmin"), "nan");  // the reference
+    for (std::size_t m = 1; m < csv.size(); ++m) {
+        SCOPED_TRACE(csv[m].at("mode"));
+        EXPECT_GE(csv[m].number("stereo_arcmin"), 0.0);
+        EXPECT_GE(csv[m].number("stereo_beyond_1arcmin"), 0.0);
+        EXPECT_LE(csv[m].number("stereo_beyond_1arcmin"), 1.0);
+        // The worst image's FLIP mean is at least the mean over all images (all of one size).
+        EXPECT_GE(csv[m].number("worst_image_flip"), csv[m].number("flip_mean") - 1e-5);
+        EXPECT_LE(csv[m].number("worst_image_flip"), 1.0);
+    }
+    EXPECT_GT(csv[2].number("stereo_arcmin"), 0.0);
+    EXPECT_GT(csv[2].number("worst_image_flip"), 0.0);
+}
+
 // The depth images (<texture>.depth.tif) anywhere under a bake cache.
 std::size_t depthImages(const fs::path& cache) {
     std::size_t n = 0;
@@ -176,8 +213,8 @@ TEST(BenchSceneCli, ScaleRefusesAnotherModelInAPlantFolder) {
     const fs::path folder = root / "data" / "plant-1000";
     const CliResult g = runCavewall({"generate", "house", "--triangles", "2000", "--out", folder.string()});
     ASSERT_EQ(g.exitCode, 0) << g.err;
-    const CliResult r = runCavewall({"bench", "--mono", "--scale", "1k", "--resolution", "32", "--frames", "4", "--data",
-                                     (root / "data").string(), "--out", (root / "out").string()});
+    const CliResult r = runCavewall({"bench", "--mono", "--scale", "1k", "--resolution", "32", "--frames", "4",
+                                     "--data", (root / "data").string(), "--out", (root / "out").string()});
     EXPECT_EQ(r.exitCode, 1) << r.out;
     EXPECT_THAT(r.err,
                 HasSubstr("bench --scale: " + folder.string() + ": expected the plant generated for 1000 triangles ("));
@@ -216,7 +253,8 @@ std::vector<std::string> filesUnder(const fs::path& folder) {
 TEST(BenchSceneCli, ScaleDataFolderThatCannotBeWrittenIsNamedAndLeftUntrusted) {
     const test::TempFolder root("bench_cli_scale_unwritable");
     fs::permissions(root.path(), fs::perms::all);  // another user writes its files here
-    const std::vector<std::string> args = {"bench", "--mono", "--scale", "1k", "--resolution", "32", "--frames", "4", "--data"};
+    const std::vector<std::string> args = {"bench", "--mono",   "--scale", "1k",    "--resolution",
+                                           "32",    "--frames", "4",       "--data"};
     std::vector<std::string> full = args;
     full.insert(full.end(), {(root / "full").string(), "--out", (root / "out-full").string()});
     const CliResult r = runThroughShell("trap '' XFSZ; ulimit -f 8;", "", full, root.path());
