@@ -61,8 +61,48 @@ bool meetsHeight(const CellSpan& s, const Bounds& box) {
     return box.max.y >= s.bottom && box.min.y < s.top - kAboveTop;
 }
 
-CellsOfBox boxCells(const std::vector<Cell>& cells, const std::vector<CellSpan>& spans,
-                    const std::vector<PlanMask>& voids, const Bounds& box, double reach) {
+// Whether `box`, in lower cell `s`'s storey, is seen from the storey above through the cell's
+// void: its plan rectangle grown by `reach` and by its depth under the cell's top (a 45° sight
+// line down through the void's edge), at most kVoidSightMetres, meets the void.
+bool seenThroughVoid(const CellSpan& s, const PlanMask& hole, const Bounds& box, double reach) {
+    if (hole.empty() || !meetsHeight(s, box)) return false;
+    const double grow = reach + std::clamp(s.top - box.min.y, 0.0, kVoidSightMetres);
+    return hole.count(glm::dvec2(box.min.x, box.min.z) - grow, glm::dvec2(box.max.x, box.max.z) + grow) > 0;
+}
+
+// Per cell, the lower cells whose void opens to the cell's storey (the lower cell's top lies
+// within the slab's span of the cell's floor) and lies within kDownReachMetres of the cell's
+// region's plan bounds.
+std::vector<std::vector<int>> voidsBelow(const std::vector<Cell>& cells, const std::vector<CellSpan>& spans,
+                                         const std::vector<PlanMask>& voids) {
+    std::vector<std::vector<int>> out(cells.size());
+    for (std::size_t u = 0; u < cells.size(); ++u)
+        for (std::size_t l = 0; l < voids.size() && l < spans.size(); ++l) {
+            const double top = spans[l].top, floorY = cells[u].floorY;
+            if (l == u || voids[l].empty() || !(floorY >= top - kSlabBelow && floorY <= top + kSlabAbove)) continue;
+            if (voids[l].count(spans[u].lo - kDownReachMetres, spans[u].hi + kDownReachMetres) > 0)
+                out[u].push_back(static_cast<int>(l));
+        }
+    return out;
+}
+
+// Whether `box` is seen from cell `c` down through a void of the storey below.
+bool seenFromAbove(const std::vector<CellSpan>& spans, const std::vector<PlanMask>& voids,
+                   const std::vector<int>& below, const Bounds& box, double reach) {
+    for (int l : below)
+        if (seenThroughVoid(spans[l], voids[l], box, reach)) return true;
+    return false;
+}
+
+// The storeys' voids: per cell, its void toward the storey above, and the lower cells whose
+// voids it looks down through.
+struct Voids {
+    std::vector<PlanMask> up;
+    std::vector<std::vector<int>> below;
+};
+
+CellsOfBox boxCells(const std::vector<Cell>& cells, const std::vector<CellSpan>& spans, const Voids& voids,
+                    const Bounds& box, double reach) {
     CellsOfBox out;
     if (box.empty()) return out;
     const glm::dvec2 lo = glm::dvec2(box.min.x, box.min.z) - reach, hi = glm::dvec2(box.max.x, box.max.z) + reach;
@@ -73,13 +113,17 @@ CellsOfBox boxCells(const std::vector<Cell>& cells, const std::vector<CellSpan>&
     double largestArea = 0.0;
     for (std::size_t c = 0; c < cells.size(); ++c) {
         const CellSpan& s = spans[c];
-        if (c < voids.size() && seenOverVoid(s, voids[c], box, reach)) {
+        if (c < voids.up.size() && seenOverVoid(s, voids.up[c], box, reach)) {
             overVoid.push_back(static_cast<int>(c));
             continue;
         }
-        if (!meetsHeight(s, box) || hi.x <= s.lo.x || lo.x >= s.hi.x || hi.y <= s.lo.y || lo.y >= s.hi.y) continue;
-        const double area = overlapArea(footprint, cells[c].region);
-        if (area <= 0.0) continue;
+        const bool inPlan = !(hi.x <= s.lo.x || lo.x >= s.hi.x || hi.y <= s.lo.y || lo.y >= s.hi.y);
+        const double area = meetsHeight(s, box) && inPlan ? overlapArea(footprint, cells[c].region) : 0.0;
+        if (area <= 0.0) {
+            if (c < voids.below.size() && seenFromAbove(spans, voids.up, voids.below[c], box, reach))
+                overVoid.push_back(static_cast<int>(c));
+            continue;
+        }
         const int cell = static_cast<int>(c);
         overlapped.push_back(cell);
         if (holding < 0 && regionContains(cells[c].region, centre, 1e-6)) holding = cell;
@@ -116,7 +160,9 @@ void assignCells(Scene& scene, const std::vector<Cell>& cells, double reach) {
     const std::vector<CellSpan> spans = cellSpans(cells);
     std::vector<double> tops;
     for (const CellSpan& s : spans) tops.push_back(s.top);
-    const std::vector<PlanMask> voids = cellVoids(scene, cells, tops);
+    Voids voids;
+    voids.up = cellVoids(scene, cells, tops);
+    voids.below = voidsBelow(cells, spans, voids.up);
     for (Object& o : scene.objects) {
         CellsOfBox c = boxCells(cells, spans, voids, o.worldBounds, reach);
         o.cell = c.cell;
