@@ -63,11 +63,15 @@ bool meetsHeight(const CellSpan& s, const Bounds& box) {
 
 // Whether `box`, in lower cell `s`'s storey, is seen from the storey above through the cell's
 // void: its plan rectangle grown by `reach` and by its depth under the cell's top (a 45° sight
-// line down through the void's edge), at most kVoidSightMetres, meets the void.
-bool seenThroughVoid(const CellSpan& s, const PlanMask& hole, const Bounds& box, double reach) {
+// line down through the void's edge reaches that far under the slab), at most kVoidSightMetres,
+// meets the void within the (x, z) rectangle [near.lo, near.hi] (where the sight line crosses
+// the upper floor's level: near the viewer's cell).
+bool seenThroughVoid(const CellSpan& s, const PlanMask& hole, const Bounds& box, double reach, const CellSpan& near) {
     if (hole.empty() || !meetsHeight(s, box)) return false;
     const double grow = reach + std::clamp(s.top - box.min.y, 0.0, kVoidSightMetres);
-    return hole.count(glm::dvec2(box.min.x, box.min.z) - grow, glm::dvec2(box.max.x, box.max.z) + grow) > 0;
+    const glm::dvec2 lo = glm::max(glm::dvec2(box.min.x, box.min.z) - grow, near.lo - kDownReachMetres);
+    const glm::dvec2 hi = glm::min(glm::dvec2(box.max.x, box.max.z) + grow, near.hi + kDownReachMetres);
+    return hole.count(lo, hi) > 0;
 }
 
 // Per cell, the lower cells whose void opens to the cell's storey (the lower cell's top lies
@@ -87,10 +91,10 @@ std::vector<std::vector<int>> voidsBelow(const std::vector<Cell>& cells, const s
 }
 
 // Whether `box` is seen from cell `c` down through a void of the storey below.
-bool seenFromAbove(const std::vector<CellSpan>& spans, const std::vector<PlanMask>& voids,
+bool seenFromAbove(const std::vector<CellSpan>& spans, const std::vector<PlanMask>& voids, std::size_t c,
                    const std::vector<int>& below, const Bounds& box, double reach) {
     for (int l : below)
-        if (seenThroughVoid(spans[l], voids[l], box, reach)) return true;
+        if (seenThroughVoid(spans[l], voids[l], box, reach, spans[c])) return true;
     return false;
 }
 
@@ -120,7 +124,7 @@ CellsOfBox boxCells(const std::vector<Cell>& cells, const std::vector<CellSpan>&
         const bool inPlan = !(hi.x <= s.lo.x || lo.x >= s.hi.x || hi.y <= s.lo.y || lo.y >= s.hi.y);
         const double area = meetsHeight(s, box) && inPlan ? overlapArea(footprint, cells[c].region) : 0.0;
         if (area <= 0.0) {
-            if (c < voids.below.size() && seenFromAbove(spans, voids.up, voids.below[c], box, reach))
+            if (c < voids.below.size() && seenFromAbove(spans, voids.up, c, voids.below[c], box, reach))
                 overVoid.push_back(static_cast<int>(c));
             continue;
         }

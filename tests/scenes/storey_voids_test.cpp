@@ -105,6 +105,7 @@ TEST(CellAssignment, ObjectsUnderAVoidJoinTheUpperCellBesideItObjectsUnderTheSla
     const int shelf = box(s, {2, 0, 2.5}, {2.5, 2, 3});        // under B's slab, 1.5 m from the void
     const int cabinet = box(s, {-8, 0, -1}, {-7, 2, 0});       // under A's slab, 11 m from the void
     const int bench = box(s, {-1.2, 0, -1}, {-0.5, 0.5, 0});   // 4.5 m from the void: out of 45° sight
+    const int lamp = box(s, {9.5, 3, -0.5}, {10, 3.5, 0.5});   // 1 m under the upper floor, 5.5 m out
     const int slabEdge = box(s, {3.9, 3.7, -3}, {4.1, 4, 3});  // the upper slab's edge, in B already
     assignCells(s, building());
     EXPECT_EQ(s.objects[sofa].cell, kG) << "the hall still holds its own objects";
@@ -116,6 +117,7 @@ TEST(CellAssignment, ObjectsUnderAVoidJoinTheUpperCellBesideItObjectsUnderTheSla
     EXPECT_THAT(cellsOf(s.objects[bench]), Not(Contains(kB)));
     EXPECT_THAT(cellsOf(s.objects[slabEdge]), Contains(kB));
     EXPECT_THAT(cellsOf(s.objects[slabEdge]), Contains(kG));
+    EXPECT_THAT(cellsOf(s.objects[lamp]), Not(Contains(kB))) << "B's eye at 2 m sees it only below 45°";
 }
 
 TEST(CellAssignment, ABuildingWithoutAVoidKeepsUpperObjectsUpstairs) {
