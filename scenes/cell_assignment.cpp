@@ -112,7 +112,7 @@ CellsOfBox boxCells(const std::vector<Cell>& cells, const std::vector<CellSpan>&
     const glm::dvec2 lo = glm::dvec2(box.min.x, box.min.z) - reach, hi = glm::dvec2(box.max.x, box.max.z) + reach;
     const std::vector<glm::dvec2> footprint = rectangle(lo, hi);
     const glm::dvec2 centre(box.centre().x, box.centre().z);
-    std::vector<int> overlapped, overVoid;
+    std::vector<int> overlapped, overVoid, underVoid;
     int holding = -1, largest = -1;
     double largestArea = 0.0;
     for (std::size_t c = 0; c < cells.size(); ++c) {
@@ -125,7 +125,7 @@ CellsOfBox boxCells(const std::vector<Cell>& cells, const std::vector<CellSpan>&
         const double area = meetsHeight(s, box) && inPlan ? overlapArea(footprint, cells[c].region) : 0.0;
         if (area <= 0.0) {
             if (c < voids.below.size() && seenFromAbove(spans, voids.up, c, voids.below[c], box, reach))
-                overVoid.push_back(static_cast<int>(c));
+                underVoid.push_back(static_cast<int>(c));
             continue;
         }
         const int cell = static_cast<int>(c);
@@ -149,6 +149,9 @@ CellsOfBox boxCells(const std::vector<Cell>& cells, const std::vector<CellSpan>&
             out.cell = c;
         else if (c != out.cell)
             out.moreCells.push_back(c);
+    // A lower object in no cell stays drawn with every cell (-1): it is given no upper cell.
+    for (int c : underVoid)
+        if (out.cell >= 0 && c != out.cell) out.moreCells.push_back(c);
     std::sort(out.moreCells.begin(), out.moreCells.end());
     out.moreCells.erase(std::unique(out.moreCells.begin(), out.moreCells.end()), out.moreCells.end());
     return out;

@@ -19,11 +19,13 @@
 // cell's top (a sight line at 45° through the void's edge; at most kVoidSightMetres), meets the
 // void. A viewer under the void looking up at 45° or steeper sees no farther over the slab.
 // The other way round, a cell of the upper storey whose region's plan bounds lie within
-// kDownReachMetres of the void (an eye at most 2 m over the upper floor looking down at 45° or
-// steeper over the void's edge) also holds the lower storey's objects seen through the void:
+// kDownReachMetres of the void also holds the lower storey's objects seen through the void:
 // those meeting the lower cell's height range whose plan rectangle, grown by `reach` and by the
-// box's depth under the upper floor (its lowest point; a 45° sight line down through the void's
-// edge reaches that far under the slab; at most kVoidSightMetres), meets the void.
+// depth of the box's lowest point under the upper floor (at most kVoidSightMetres), meets the
+// void within kDownReachMetres of the cell's plan bounds. An eye at most 2 m over the upper
+// floor looking down at 45° or steeper crosses the floor's level within 2 m of where it stands,
+// and its sight line then reaches under the slab beyond the void's edge as far as it descends.
+// A lower object in no cell (drawn with every cell) is given no upper cell.
 // Object::cell is the cell among them holding the box's centre in plan, else the one sharing
 // the most area; Object::moreCells the others. An object overlapping no cell keeps
 // findCell's cell of its centre (scenes/region.h) when its height range meets that cell's,

@@ -101,12 +101,13 @@ TEST(CellAssignment, ObjectsSeenOverAVoidJoinTheCellBelowObjectsOverTheSlabDoNot
 
 TEST(CellAssignment, ObjectsUnderAVoidJoinTheUpperCellBesideItObjectsUnderTheSlabDoNot) {
     Scene s = buildingScene();
-    const int sofa = box(s, {6, 0, -1}, {7, 0.8, 0});          // in the hall, under the void
-    const int shelf = box(s, {2, 0, 2.5}, {2.5, 2, 3});        // under B's slab, 1.5 m from the void
-    const int cabinet = box(s, {-8, 0, -1}, {-7, 2, 0});       // under A's slab, 11 m from the void
-    const int bench = box(s, {-1.2, 0, -1}, {-0.5, 0.5, 0});   // 4.5 m from the void: out of 45° sight
-    const int lamp = box(s, {9.5, 3, -0.5}, {10, 3.5, 0.5});   // 1 m under the upper floor, 5.5 m out
-    const int slabEdge = box(s, {3.9, 3.7, -3}, {4.1, 4, 3});  // the upper slab's edge, in B already
+    const int sofa = box(s, {6, 0, -1}, {7, 0.8, 0});             // in the hall, under the void
+    const int shelf = box(s, {2, 0, 2.5}, {2.5, 2, 3});           // under B's slab, 1.5 m from the void
+    const int cabinet = box(s, {-8, 0, -1}, {-7, 2, 0});          // under A's slab, 11 m from the void
+    const int bench = box(s, {-1.2, 0, -1}, {-0.5, 0.5, 0});      // 4.5 m from the void: out of 45° sight
+    const int lamp = box(s, {9.5, 3, -0.5}, {10, 3.5, 0.5});      // 1 m under the upper floor, 5.5 m out
+    const int outdoors = box(s, {10.5, -0.4, -1}, {11, 0.5, 0});  // beside the hall, in no cell
+    const int slabEdge = box(s, {3.9, 3.7, -3}, {4.1, 4, 3});     // the upper slab's edge, in B already
     assignCells(s, building());
     EXPECT_EQ(s.objects[sofa].cell, kG) << "the hall still holds its own objects";
     EXPECT_THAT(cellsOf(s.objects[sofa]), Contains(kB)) << "B borders the void";
@@ -118,6 +119,8 @@ TEST(CellAssignment, ObjectsUnderAVoidJoinTheUpperCellBesideItObjectsUnderTheSla
     EXPECT_THAT(cellsOf(s.objects[slabEdge]), Contains(kB));
     EXPECT_THAT(cellsOf(s.objects[slabEdge]), Contains(kG));
     EXPECT_THAT(cellsOf(s.objects[lamp]), Not(Contains(kB))) << "B's eye at 2 m sees it only below 45°";
+    EXPECT_EQ(s.objects[outdoors].cell, -1) << "still drawn with every cell";
+    EXPECT_TRUE(s.objects[outdoors].moreCells.empty());
 }
 
 TEST(CellAssignment, ABuildingWithoutAVoidKeepsUpperObjectsUpstairs) {
