@@ -61,25 +61,73 @@ bool meetsHeight(const CellSpan& s, const Bounds& box) {
     return box.max.y >= s.bottom && box.min.y < s.top - kAboveTop;
 }
 
-CellsOfBox boxCells(const std::vector<Cell>& cells, const std::vector<CellSpan>& spans,
-                    const std::vector<PlanMask>& voids, const Bounds& box, double reach) {
+// Whether `box`, in lower cell `s`'s storey, is seen from the storey above through the cell's
+// void: its plan rectangle grown by `reach` and by its depth under the cell's top (a 45° sight
+// line down through the void's edge reaches that far under the slab), at most kVoidSightMetres,
+// meets the void within the (x, z) rectangle [near.lo, near.hi] (where the sight line crosses
+// the upper floor's level: near the viewer's cell).
+bool seenThroughVoid(const CellSpan& s, const PlanMask& hole, const Bounds& box, double reach, const CellSpan& near) {
+    if (hole.empty() || !meetsHeight(s, box)) return false;
+    const double grow = reach + std::clamp(s.top - box.min.y, 0.0, kVoidSightMetres);
+    const glm::dvec2 lo = glm::max(glm::dvec2(box.min.x, box.min.z) - grow, near.lo - kDownReachMetres);
+    const glm::dvec2 hi = glm::min(glm::dvec2(box.max.x, box.max.z) + grow, near.hi + kDownReachMetres);
+    return hole.count(lo, hi) > 0;
+}
+
+// Per cell, the lower cells whose void opens to the cell's storey (the lower cell's top lies
+// within the slab's span of the cell's floor) and lies within kDownReachMetres of the cell's
+// region's plan bounds.
+std::vector<std::vector<int>> voidsBelow(const std::vector<Cell>& cells, const std::vector<CellSpan>& spans,
+                                         const std::vector<PlanMask>& voids) {
+    std::vector<std::vector<int>> out(cells.size());
+    for (std::size_t u = 0; u < cells.size(); ++u)
+        for (std::size_t l = 0; l < voids.size() && l < spans.size(); ++l) {
+            const double top = spans[l].top, floorY = cells[u].floorY;
+            if (l == u || voids[l].empty() || !(floorY >= top - kSlabBelow && floorY <= top + kSlabAbove)) continue;
+            if (voids[l].count(spans[u].lo - kDownReachMetres, spans[u].hi + kDownReachMetres) > 0)
+                out[u].push_back(static_cast<int>(l));
+        }
+    return out;
+}
+
+// Whether `box` is seen from cell `c` down through a void of the storey below.
+bool seenFromAbove(const std::vector<CellSpan>& spans, const std::vector<PlanMask>& voids, std::size_t c,
+                   const std::vector<int>& below, const Bounds& box, double reach) {
+    for (int l : below)
+        if (seenThroughVoid(spans[l], voids[l], box, reach, spans[c])) return true;
+    return false;
+}
+
+// The storeys' voids: per cell, its void toward the storey above, and the lower cells whose
+// voids it looks down through.
+struct Voids {
+    std::vector<PlanMask> up;
+    std::vector<std::vector<int>> below;
+};
+
+CellsOfBox boxCells(const std::vector<Cell>& cells, const std::vector<CellSpan>& spans, const Voids& voids,
+                    const Bounds& box, double reach) {
     CellsOfBox out;
     if (box.empty()) return out;
     const glm::dvec2 lo = glm::dvec2(box.min.x, box.min.z) - reach, hi = glm::dvec2(box.max.x, box.max.z) + reach;
     const std::vector<glm::dvec2> footprint = rectangle(lo, hi);
     const glm::dvec2 centre(box.centre().x, box.centre().z);
-    std::vector<int> overlapped, overVoid;
+    std::vector<int> overlapped, overVoid, underVoid;
     int holding = -1, largest = -1;
     double largestArea = 0.0;
     for (std::size_t c = 0; c < cells.size(); ++c) {
         const CellSpan& s = spans[c];
-        if (c < voids.size() && seenOverVoid(s, voids[c], box, reach)) {
+        if (c < voids.up.size() && seenOverVoid(s, voids.up[c], box, reach)) {
             overVoid.push_back(static_cast<int>(c));
             continue;
         }
-        if (!meetsHeight(s, box) || hi.x <= s.lo.x || lo.x >= s.hi.x || hi.y <= s.lo.y || lo.y >= s.hi.y) continue;
-        const double area = overlapArea(footprint, cells[c].region);
-        if (area <= 0.0) continue;
+        const bool inPlan = !(hi.x <= s.lo.x || lo.x >= s.hi.x || hi.y <= s.lo.y || lo.y >= s.hi.y);
+        const double area = meetsHeight(s, box) && inPlan ? overlapArea(footprint, cells[c].region) : 0.0;
+        if (area <= 0.0) {
+            if (c < voids.below.size() && seenFromAbove(spans, voids.up, c, voids.below[c], box, reach))
+                underVoid.push_back(static_cast<int>(c));
+            continue;
+        }
         const int cell = static_cast<int>(c);
         overlapped.push_back(cell);
         if (holding < 0 && regionContains(cells[c].region, centre, 1e-6)) holding = cell;
@@ -101,6 +149,9 @@ CellsOfBox boxCells(const std::vector<Cell>& cells, const std::vector<CellSpan>&
             out.cell = c;
         else if (c != out.cell)
             out.moreCells.push_back(c);
+    // A lower object in no cell stays drawn with every cell (-1): it is given no upper cell.
+    for (int c : underVoid)
+        if (out.cell >= 0 && c != out.cell) out.moreCells.push_back(c);
     std::sort(out.moreCells.begin(), out.moreCells.end());
     out.moreCells.erase(std::unique(out.moreCells.begin(), out.moreCells.end()), out.moreCells.end());
     return out;
@@ -116,7 +167,9 @@ void assignCells(Scene& scene, const std::vector<Cell>& cells, double reach) {
     const std::vector<CellSpan> spans = cellSpans(cells);
     std::vector<double> tops;
     for (const CellSpan& s : spans) tops.push_back(s.top);
-    const std::vector<PlanMask> voids = cellVoids(scene, cells, tops);
+    Voids voids;
+    voids.up = cellVoids(scene, cells, tops);
+    voids.below = voidsBelow(cells, spans, voids.up);
     for (Object& o : scene.objects) {
         CellsOfBox c = boxCells(cells, spans, voids, o.worldBounds, reach);
         o.cell = c.cell;

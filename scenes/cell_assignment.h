@@ -18,6 +18,14 @@
 // top less kAboveTop, and whose plan rectangle, grown by `reach` and by the box's height over the
 // cell's top (a sight line at 45° through the void's edge; at most kVoidSightMetres), meets the
 // void. A viewer under the void looking up at 45° or steeper sees no farther over the slab.
+// The other way round, a cell of the upper storey whose region's plan bounds lie within
+// kDownReachMetres of the void also holds the lower storey's objects seen through the void:
+// those meeting the lower cell's height range whose plan rectangle, grown by `reach` and by the
+// depth of the box's lowest point under the upper floor (at most kVoidSightMetres), meets the
+// void within kDownReachMetres of the cell's plan bounds. An eye at most 2 m over the upper
+// floor looking down at 45° or steeper crosses the floor's level within 2 m of where it stands,
+// and its sight line then reaches under the slab beyond the void's edge as far as it descends.
+// A lower object in no cell (drawn with every cell) is given no upper cell.
 // Object::cell is the cell among them holding the box's centre in plan, else the one sharing
 // the most area; Object::moreCells the others. An object overlapping no cell keeps
 // findCell's cell of its centre (scenes/region.h) when its height range meets that cell's,
@@ -35,6 +43,7 @@ inline constexpr double kMinStoreyHeight = 1.0;  // metres between floors of two
 inline constexpr double kBelowFloor = 0.5;       // metres under a cell's floor it still holds
 inline constexpr double kAboveTop = 0.05;        // metres an object must reach under a cell's top
 inline constexpr double kVoidSightMetres = 6.0;  // most metres an object over a void is grown by
+inline constexpr double kDownReachMetres = 2.0;  // metres from a void a cell looking down through it may lie
 
 struct CellsOfBox {
     int cell = -1;               // -1: none

@@ -1,5 +1,6 @@
 // Voids between storeys (scenes/storey_voids.h) and the objects a cell under a void holds
-// (scenes/cell_assignment.h), on a synthetic two-storey building.
+// and the upper cells beside a void (scenes/cell_assignment.h), on a synthetic two-storey
+// building.
 //
 // Ground floor: one cell G, x [-14, 10], z [-3, 3], its slab at y 0 all along. Upper floor
 // (y 4): rooms A, x [-10, -0.1], and B, x [0.1, 4], each stopping at the face of the 0.2 m
@@ -98,12 +99,38 @@ TEST(CellAssignment, ObjectsSeenOverAVoidJoinTheCellBelowObjectsOverTheSlabDoNot
     EXPECT_THAT(cellsOf(open.objects[partition2]), Contains(kG));
 }
 
+TEST(CellAssignment, ObjectsUnderAVoidJoinTheUpperCellBesideItObjectsUnderTheSlabDoNot) {
+    Scene s = buildingScene();
+    const int sofa = box(s, {6, 0, -1}, {7, 0.8, 0});             // in the hall, under the void
+    const int shelf = box(s, {2, 0, 2.5}, {2.5, 2, 3});           // under B's slab, 1.5 m from the void
+    const int cabinet = box(s, {-8, 0, -1}, {-7, 2, 0});          // under A's slab, 11 m from the void
+    const int bench = box(s, {-1.2, 0, -1}, {-0.5, 0.5, 0});      // 4.5 m from the void: out of 45° sight
+    const int lamp = box(s, {9.5, 3, -0.5}, {10, 3.5, 0.5});      // 1 m under the upper floor, 5.5 m out
+    const int outdoors = box(s, {10.5, -0.4, -1}, {11, 0.5, 0});  // beside the hall, in no cell
+    const int slabEdge = box(s, {3.9, 3.7, -3}, {4.1, 4, 3});     // the upper slab's edge, in B already
+    assignCells(s, building());
+    EXPECT_EQ(s.objects[sofa].cell, kG) << "the hall still holds its own objects";
+    EXPECT_THAT(cellsOf(s.objects[sofa]), Contains(kB)) << "B borders the void";
+    EXPECT_THAT(cellsOf(s.objects[sofa]), Not(Contains(kA))) << "A lies 4.1 m from the void";
+    EXPECT_THAT(cellsOf(s.objects[shelf]), Contains(kB)) << "seen at 45° under the slab's edge";
+    EXPECT_THAT(cellsOf(s.objects[cabinet]), Not(Contains(kA)));
+    EXPECT_THAT(cellsOf(s.objects[cabinet]), Not(Contains(kB)));
+    EXPECT_THAT(cellsOf(s.objects[bench]), Not(Contains(kB)));
+    EXPECT_THAT(cellsOf(s.objects[slabEdge]), Contains(kB));
+    EXPECT_THAT(cellsOf(s.objects[slabEdge]), Contains(kG));
+    EXPECT_THAT(cellsOf(s.objects[lamp]), Not(Contains(kB))) << "B's eye at 2 m sees it only below 45°";
+    EXPECT_EQ(s.objects[outdoors].cell, -1) << "still drawn with every cell";
+    EXPECT_TRUE(s.objects[outdoors].moreCells.empty());
+}
+
 TEST(CellAssignment, ABuildingWithoutAVoidKeepsUpperObjectsUpstairs) {
     Scene s = buildingScene();
     board(s, 4, 10, 4.0);  // the hall floored over
     const int lamp = box(s, {6, 6, -0.5}, {7, 6.5, 0.5});
+    const int sofa = box(s, {6, 0, -1}, {7, 0.8, 0});
     assignCells(s, building());
     EXPECT_THAT(cellsOf(s.objects[lamp]), Not(Contains(kG)));
+    EXPECT_THAT(cellsOf(s.objects[sofa]), ::testing::ElementsAre(kG)) << "no upper cell looks down on it";
 }
 
 }  // namespace
