@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <optional>
 #include <iostream>
+#include <iomanip>
 #include <sstream>
 
 namespace cavewall::tools {
@@ -149,6 +150,7 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
       << "\n- machine load (/proc/loadavg, 1, 5 and 15 minutes): " << d.loadStart << " at the start, " << d.loadEnd
       << " at the end\n\n";
     const std::string wallsColumn = kindName(o) + (d.lod ? " + levels of detail" : "");
+    r << std::setprecision(3);  // three significant digits: what two runs on this machine agree on
     row(r, "", wallsColumn, "control: the same cells, no textures", ifLod("full geometry + levels of detail"),
         "full geometry");
     row(r, "---", "---", "---", ifLod("---"), "---");

@@ -491,6 +491,9 @@ TEST(RunCli, DemoWritesTheReportWithAllFourRuns) {
     EXPECT_THAT(report, HasSubstr("circle: the control; square: the best alternative; diamond: the recommended"));
     EXPECT_TRUE(fs::exists(out / "bench.png"));
     EXPECT_THAT(report, HasSubstr("| speed-up | "));
+    // Three significant digits, not six: "| speed-up | 2.44 | 3 | 1.77 | 1 |" (0.951 below 1).
+    EXPECT_THAT(report,
+                testing::ContainsRegex("\\| speed-up \\| [0-9]+(\\.[0-9]{1,3})? \\| [0-9]+(\\.[0-9]{1,3})? \\|"));
     EXPECT_THAT(report, HasSubstr("| worst level-of-detail error (px) | "));
     EXPECT_THAT(r.out, HasSubstr("(the control, the same cells without textures: "));
     // Walls and levels of detail (default 1 px), the control, full geometry with them, full
