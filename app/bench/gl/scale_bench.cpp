@@ -13,6 +13,7 @@
 #include "app/bench/metrics.h"
 #include "app/bench/path.h"
 #include "app/bench/report.h"
+#include "app/bench/scale_plant.h"
 #include "render/lod_choice.h"
 #include "scenes/generate.h"
 #include "scenes/loader.h"
@@ -48,46 +49,6 @@ std::string loadAverage() {
     std::string one, five, fifteen;
     in >> one >> five >> fifteen;
     return in ? one + " " + five + " " + fifteen : std::string("unknown");
-}
-
-// The plant for `triangles`, generated into `folder` (and stamped, bench::kPlantStamp) unless
-// it is there already.
-std::filesystem::path plantFor(std::size_t triangles, const std::filesystem::path& folder, double& generateSeconds) {
-    const std::filesystem::path sceneFile = folder / "scene.json";
-    generateSeconds = 0.0;
-    if (std::filesystem::exists(sceneFile)) return sceneFile;
-    const auto start = Clock::now();
-    scenes::GenerateOptions g;
-    g.triangles = triangles;
-    scenes::GeneratedScene generated = scenes::generatePlant(g);
-    scenes::writeGenerated(generated, folder);
-    bench::writePlantStamp(folder, triangles, generated.scene.triangleCount());
-    generateSeconds = secondsSince(start);
-    return sceneFile;
-}
-
-// The drawn triangles of the plant generated for `triangles`, made again in memory (for a
-// folder without a stamp).
-std::size_t plantTriangles(std::size_t triangles) {
-    scenes::GenerateOptions g;
-    g.triangles = triangles;
-    return scenes::generatePlant(g).scene.triangleCount();
-}
-
-// The textures the path's frames request (now or soon) with every texture resident, in id order.
-std::set<int> requestedTextures(const scenes::Scene& scene, const scenes::SceneDescription& d,
-                                const display::Display& display, const walls::WallSetup& setup,
-                                const bench::EyePath& path) {
-    walkthrough::FramePlanner planner(scene, d, display, &setup, walkthrough::Transition::Blend, 0.5);
-    planner.requestCells(true);
-    std::set<int> ids;
-    for (const walkthrough::FrameInput& in : path.frames) {
-        const walkthrough::TextureRequests r = planner.requests(in, display.views(in.head));
-        ids.insert(r.now.begin(), r.now.end());
-        ids.insert(r.soon.begin(), r.soon.end());
-        planner.plan([](int) { return true; });
-    }
-    return ids;
 }
 
 // Bakes the `ids` of `setup`'s plan only (a copy of the plan without the others, ids kept).
