@@ -2,6 +2,7 @@
 
 #include "config/error.h"
 
+#include <initializer_list>
 #include <vector>
 
 namespace cavewall::display::gl {
@@ -24,6 +25,25 @@ std::string programLog(GLuint program) {
     return log.data();
 }
 
+const char* stageName(GLenum stage) {
+    switch (stage) {
+        case GL_VERTEX_SHADER: return "vertex";
+        case GL_COMPUTE_SHADER: return "compute";
+        default: return "fragment";
+    }
+}
+
+GlObject link(std::string_view name, std::initializer_list<GLuint> shaders) {
+    GlObject program = createProgram();
+    for (GLuint s : shaders) glAttachShader(program.id(), s);
+    glLinkProgram(program.id());
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+    if (!ok) throw Error("shader program '" + std::string(name) + "': link stage failed: " + programLog(program.id()));
+    for (GLuint s : shaders) glDetachShader(program.id(), s);
+    return program;
+}
+
 GlObject compile(std::string_view name, GLenum stage, std::string_view source) {
     GlObject shader = createShader(stage);
     const GLchar* text = source.data();
@@ -33,8 +53,7 @@ GlObject compile(std::string_view name, GLenum stage, std::string_view source) {
     GLint ok = GL_FALSE;
     glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
     if (!ok)
-        throw Error("shader program '" + std::string(name) +
-                    "': " + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
+        throw Error("shader program '" + std::string(name) + "': " + stageName(stage) +
                     " stage failed to compile: " + shaderLog(shader.id()));
     return shader;
 }
@@ -44,16 +63,12 @@ GlObject compile(std::string_view name, GLenum stage, std::string_view source) {
 GlObject buildProgram(std::string_view name, std::string_view vertexSource, std::string_view fragmentSource) {
     const GlObject vertex = compile(name, GL_VERTEX_SHADER, vertexSource);
     const GlObject fragment = compile(name, GL_FRAGMENT_SHADER, fragmentSource);
-    GlObject program = createProgram();
-    glAttachShader(program.id(), vertex.id());
-    glAttachShader(program.id(), fragment.id());
-    glLinkProgram(program.id());
-    GLint ok = GL_FALSE;
-    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
-    if (!ok) throw Error("shader program '" + std::string(name) + "': link stage failed: " + programLog(program.id()));
-    glDetachShader(program.id(), vertex.id());
-    glDetachShader(program.id(), fragment.id());
-    return program;
+    return link(name, {vertex.id(), fragment.id()});
+}
+
+GlObject buildComputeProgram(std::string_view name, std::string_view computeSource) {
+    const GlObject compute = compile(name, GL_COMPUTE_SHADER, computeSource);
+    return link(name, {compute.id()});
 }
 
 GLint uniformLocation(GLuint program, std::string_view programName, const char* uniform) {

@@ -14,6 +14,9 @@ namespace cavewall::display::gl {
 // current context; the program belongs to it (and to contexts sharing with it).
 GlObject buildProgram(std::string_view name, std::string_view vertexSource, std::string_view fragmentSource);
 
+// Builds a compute program from its source (with its #version line).
+GlObject buildComputeProgram(std::string_view name, std::string_view computeSource);
+
 // The location of a uniform; throws Error when the program has no active uniform of that name
 // (a misspelt name is a bug that should not silently draw black).
 GLint uniformLocation(GLuint program, std::string_view programName, const char* uniform);

@@ -88,6 +88,7 @@ SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings
         const scenes::Material& m = material >= 0 && material < count ? scene.materials[material] : scenes::Material{};
         _meshMaterials.push_back(materialRecord(m, _gpu.textureCount(), _gpu.uvFromStored(static_cast<int>(i))));
     }
+    if (settings.occlusionCulling) _culler = std::make_unique<OcclusionCuller>(_scene.objects().size());
     // Per-draw records arrive as instanced attributes from binding 1 (its buffer is set per view).
     const GLuint vao = _gpu.vertexArray();
     glVertexArrayBindingDivisor(vao, 1, 1);
@@ -185,7 +186,10 @@ ViewStats SceneRenderer::renderView(const display::ScreenView& view, const rende
     setViewport(view.pass.viewport, glm::bvec4(true));
     if (!cleared) glClear(GL_DEPTH_BUFFER_BIT);
     glColorMask(view.pass.colorMask.r, view.pass.colorMask.g, view.pass.colorMask.b, view.pass.colorMask.a);
+    _viewSlot = (std::uint64_t{_occlusionContext} << 32) | (static_cast<std::uint64_t>(view.screen) << 2) |
+                static_cast<std::uint64_t>(view.pass.eye);
     ViewStats stats = draw(list);
+    _viewSlot.reset();
     stats.cpuMs = msSince(start);
     return stats;
 }
@@ -224,6 +228,7 @@ ViewStats SceneRenderer::draw(const render::RenderList& list) {
     _records.clear();
     _commands.clear();
     _commandSets.clear();
+    _objectOf.clear();
     const display::OffAxisFrustum& frustum = list.frustum;
     int objectsDrawn = 0;
     for (const render::Draw& d : list.draws) {
@@ -246,15 +251,17 @@ ViewStats SceneRenderer::draw(const render::RenderList& list) {
             {drawn.indexCount, 1, drawn.firstIndex, drawn.baseVertex, static_cast<std::uint32_t>(_records.size())});
         _commandSets.push_back(set);
         _records.push_back(r);
+        _objectOf.push_back(static_cast<std::uint32_t>(d.object));
     }
     if (_gpu.paging()) groupBySet(list);
-    upload(_viewBuffers[_nextViewBuffers]);
+    ViewBuffers& buffers = _viewBuffers[_nextViewBuffers];
+    upload(buffers);
     _nextViewBuffers = (_nextViewBuffers + 1) % kViewBufferSets;
     const glm::mat4 projection(frustum.clipFromView);
     for (const Program& p : _programs)
         glProgramUniformMatrix4fv(p.program.id(), p.projection, 1, GL_FALSE, glm::value_ptr(projection));
-    issueBatches(list);
-    stats.drawCalls = _multiDraws;
+    const GLuint depth = _culler && _viewSlot ? boundDepthTexture() : 0;
+    stats.drawCalls = depth != 0 ? drawCulled(list, buffers, depth) : issueBatches(list);
     stats.objectsDrawn = objectsDrawn;
     stats.triangles = list.triangles;
     return stats;
@@ -282,11 +289,52 @@ void SceneRenderer::groupBySet(const render::RenderList& list) {
     }
 }
 
+GLuint SceneRenderer::boundDepthTexture() {
+    GLint framebuffer = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    if (framebuffer == 0) return 0;
+    GLint type = GL_NONE, name = 0;
+    const auto fb = static_cast<GLuint>(framebuffer);
+    glGetNamedFramebufferAttachmentParameteriv(fb, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    if (type != GL_TEXTURE) return 0;
+    glGetNamedFramebufferAttachmentParameteriv(fb, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &name);
+    return static_cast<GLuint>(name);
+}
+
+// Phase 1 draws the opaque draws this view saw last frame; the depth they leave becomes the
+// pyramid phase 2 tests every draw against (OcclusionCuller).
+int SceneRenderer::drawCulled(const render::RenderList& list, ViewBuffers& buffers, GLuint depthTexture) {
+    const auto count = static_cast<std::uint32_t>(_commands.size());
+    const std::uint32_t firstBlended = list.firstBlended < list.batches.size()
+                                           ? static_cast<std::uint32_t>(list.batches[list.firstBlended].first)
+                                           : count;
+    const CullBuffers cull{buffers.records.id(), buffers.commands.id(), buffers.objects.id(),
+                           buffers.phase1.id(),  buffers.phase2.id(),   count,
+                           firstBlended};
+    glNamedBufferSubData(buffers.objects.id(), 0, _objectOf.size() * sizeof(std::uint32_t), _objectOf.data());
+    _culler->selectSeen(*_viewSlot, cull);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, buffers.phase1.id());
+    int calls = issueBatches(list, true);
+    GLint viewport[4] = {0, 0, 0, 0};
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    _culler->buildPyramid(depthTexture, {viewport[0], viewport[1], viewport[2], viewport[3]});
+    _culler->selectRevealed(*_viewSlot, cull, glm::mat4(list.frustum.clipFromView));
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, buffers.phase2.id());
+    calls += issueBatches(list);
+    return calls;
+}
+
+std::optional<OcclusionCounts> SceneRenderer::readOcclusionCounts() {
+    if (!_culler) return std::nullopt;
+    return _culler->readCounts();
+}
+
 // One multi-draw per batch and buffer set; the list's blended batches come last.
-void SceneRenderer::issueBatches(const render::RenderList& list) {
+int SceneRenderer::issueBatches(const render::RenderList& list, bool opaqueOnly) {
     int boundSet = 0;
     int calls = 0;
-    for (std::size_t b = 0; b < list.batches.size(); ++b) {
+    const std::size_t end = opaqueOnly ? std::min(list.firstBlended, list.batches.size()) : list.batches.size();
+    for (std::size_t b = 0; b < end; ++b) {
         if (b == list.firstBlended) {
             glEnable(GL_BLEND);
             // Colour blends over; alpha accumulates coverage (stays 1 on an opaque screen).
@@ -314,7 +362,7 @@ void SceneRenderer::issueBatches(const render::RenderList& list) {
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
     glBindSampler(0, 0);
-    _multiDraws = calls;
+    return calls;
 }
 
 void SceneRenderer::upload(ViewBuffers& buffers) {
@@ -325,6 +373,11 @@ void SceneRenderer::upload(ViewBuffers& buffers) {
         capacity = std::min(capacity, std::max(objectCount(), _records.size()));
         buffers.records = storageBuffer(capacity * sizeof(shaders::DrawRecord), nullptr);
         buffers.commands = storageBuffer(capacity * sizeof(shaders::DrawCommand), nullptr);
+        if (_culler) {
+            buffers.objects = storageBuffer(capacity * sizeof(std::uint32_t), nullptr);
+            buffers.phase1 = storageBuffer(capacity * sizeof(shaders::DrawCommand), nullptr);
+            buffers.phase2 = storageBuffer(capacity * sizeof(shaders::DrawCommand), nullptr);
+        }
         buffers.capacity = capacity;
     }
     glNamedBufferSubData(buffers.records.id(), 0, _records.size() * sizeof(shaders::DrawRecord), _records.data());

@@ -45,6 +45,7 @@
 #include "display/gl/gl_object.h"
 #include "display/gl/gpu_timer.h"
 #include "display/gl/render_targets.h"
+#include "render/gl/occlusion_culler.h"
 #include "render/gl/scene_gpu.h"
 #include "render/gl/scene_shaders.h"
 #include "render/draw_filter.h"
@@ -59,6 +60,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -82,6 +84,12 @@ struct RenderSettings {
     // Draws whose per-vertex headlight provably differs from the per-pixel one by at most this
     // much of the light factor are lit per vertex (render/vertex_lighting.h); 0: all per pixel.
     double vertexLightingTolerance = render::kVertexLightingTolerance;
+    // Occlusion culling on the GPU (render/gl/occlusion_culler.h) for views drawn with
+    // renderView into a render target with a depth texture: each view first draws what it saw
+    // last frame, then only what the depth drawn so far does not hide. The image is the same;
+    // the saving depends on how much of the drawn list is hidden. Off: everything in the list
+    // is drawn.
+    bool occlusionCulling = false;
 };
 
 // ViewStats and FrameStats: display/frame_stats.h.
@@ -160,6 +168,14 @@ public:
     // one-shot renders; a frame loop reads FrameStats::gpuMs instead). -1 before any render().
     double waitGpuMs() { return _timer.waitMs(); }
 
+    // With occlusion culling: what renderView's views remember between frames is kept per
+    // context, so that callers interleaving several kinds of frame (the bench's modes) keep
+    // them apart. Default 0.
+    void setOcclusionContext(std::uint32_t context) { _occlusionContext = context; }
+    // With occlusion culling: the draws and triangles submitted and drawn since the last call
+    // (waits for the GPU); nullopt without it.
+    std::optional<OcclusionCounts> readOcclusionCounts();
+
     const GpuScene& gpu() const { return _gpu; }
     // For uploading and freeing cells with paging (between frames).
     GpuScene& gpu() { return _gpu; }
@@ -170,7 +186,8 @@ private:
     // so that writing one view's data does not wait for the GPU to finish the previous view.
     struct ViewBuffers {
         display::gl::GlObject records, commands;
-        std::size_t capacity = 0;  // draws
+        display::gl::GlObject objects, phase1, phase2;  // occlusion culling's (OcclusionCuller)
+        std::size_t capacity = 0;                       // draws
     };
     static constexpr int kViewBufferSets = 4;
 
@@ -184,7 +201,13 @@ private:
     ViewStats draw(const render::RenderList& list);
     void upload(ViewBuffers& buffers);
     void groupBySet(const render::RenderList& list);
-    void issueBatches(const render::RenderList& list);
+    // Multi-draws of the list's batches from the bound indirect buffer; opaqueOnly: the batches
+    // before the blended ones. Returns the multi-draw calls.
+    int issueBatches(const render::RenderList& list, bool opaqueOnly = false);
+    // The depth texture of the bound draw framebuffer, 0 if it has none (the default one).
+    static GLuint boundDepthTexture();
+    // Draws the uploaded list in occlusion culling's two phases; the multi-draw calls.
+    int drawCulled(const render::RenderList& list, ViewBuffers& buffers, GLuint depthTexture);
     void applyState(const render::BatchKey& key);
 
     // A variant of the scene shader (scene_shaders.h) and its uniforms.
@@ -212,7 +235,10 @@ private:
     std::vector<std::size_t> _sortOrder;  // groupBySet's scratch
     std::vector<shaders::DrawCommand> _sortCommands;
     std::vector<int> _sortSets;
-    int _multiDraws = 0;  // by the last issueBatches
+    std::vector<std::uint32_t> _objectOf;      // per record: its object (occlusion culling)
+    std::unique_ptr<OcclusionCuller> _culler;  // with RenderSettings::occlusionCulling
+    std::uint32_t _occlusionContext = 0;
+    std::optional<std::uint64_t> _viewSlot;  // set by renderView for its draw (culling's slot)
 };
 
 }  // namespace cavewall::render::gl

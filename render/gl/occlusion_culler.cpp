@@ -1,0 +1,238 @@
+#include "render/gl/occlusion_culler.h"
+
+#include "display/gl/shader.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <array>
+
+namespace cavewall::render::gl {
+
+namespace {
+
+// The layout both culling shaders share: GL's DrawElementsIndirectCommand and the records.
+constexpr const char* kCullCommon = R"(#version 450 core
+layout(local_size_x = 64) in;
+struct Command { uint count; uint instanceCount; uint firstIndex; int baseVertex; uint baseInstance; };
+layout(std430, binding = 0) readonly buffer Source { Command source[]; };
+layout(std430, binding = 1) buffer Phase1 { Command phase1[]; };
+layout(std430, binding = 2) writeonly buffer Phase2 { Command phase2[]; };
+layout(std430, binding = 3) readonly buffer Records { vec4 records[]; };  // 10 per DrawRecord
+layout(std430, binding = 4) readonly buffer Objects { uint objectOf[]; };  // per record
+layout(std430, binding = 5) buffer Seen { uint seen[]; };                  // per object
+layout(std430, binding = 6) buffer Counts { uint counts[4]; };
+uniform uint uCount;
+uniform uint uFirstBlended;
+
+void count(uint draw, bool drawn) {
+    uint triangles = source[draw].count / 3u;
+    atomicAdd(counts[1], drawn ? 1u : 0u);
+    atomicAdd(counts[3], drawn ? triangles : 0u);
+}
+)";
+
+// Phase 1: the opaque draws whose objects the slot saw last frame.
+constexpr const char* kSelectSeen = R"(
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= uCount) return;
+    Command c = source[i];
+    bool on = c.count > 0u && c.baseInstance < uFirstBlended && seen[objectOf[c.baseInstance]] != 0u;
+    c.instanceCount = on ? 1u : 0u;
+    phase1[i] = c;
+    atomicAdd(counts[0], c.count > 0u ? 1u : 0u);
+    atomicAdd(counts[2], c.count / 3u);
+    count(i, on);
+}
+)";
+
+// Phase 2: every draw's unit-cube box against the pyramid.
+constexpr const char* kSelectRevealed = R"(
+layout(binding = 7) uniform sampler2D uPyramid;
+uniform mat4 uProjection;
+uniform ivec2 uViewport;  // size in pixels
+uniform int uLevels;
+
+ivec2 levelSize(int level) { return (uViewport + (1 << (level + 1)) - 1) >> (level + 1); }
+
+bool visible(uint record) {
+    vec4 m0 = records[10u * record], m1 = records[10u * record + 1u], m2 = records[10u * record + 2u];
+    vec2 lo = vec2(1.0), hi = vec2(-1.0);
+    float nearest = 0.0;
+    for (int corner = 0; corner < 8; ++corner) {
+        vec4 p = vec4(float(corner & 1), float((corner >> 1) & 1), float((corner >> 2) & 1), 1.0);
+        vec4 clip = uProjection * vec4(dot(m0, p), dot(m1, p), dot(m2, p), 1.0);
+        if (clip.w <= 1e-6) return true;  // reaches the eye's plane
+        vec3 ndc = clip.xyz / clip.w;
+        lo = min(lo, ndc.xy);
+        hi = max(hi, ndc.xy);
+        nearest = max(nearest, ndc.z);
+    }
+    if (nearest >= 1.0) return true;  // reaches the near plane
+    if (any(greaterThan(lo, vec2(1.0))) || any(lessThan(hi, vec2(-1.0)))) return false;
+    vec2 a = (clamp(lo, -1.0, 1.0) * 0.5 + 0.5) * vec2(uViewport);
+    vec2 b = (clamp(hi, -1.0, 1.0) * 0.5 + 0.5) * vec2(uViewport);
+    ivec2 first = clamp(ivec2(floor(a)), ivec2(0), uViewport - 1);
+    ivec2 last = clamp(ivec2(ceil(b)) - 1, first, uViewport - 1);
+    ivec2 extent = last - first + 1;
+    // The level whose texels (2^(level+1) pixels) are at least the box's extent: 2 x 2 texels.
+    int level = clamp(int(ceil(log2(float(max(extent.x, extent.y))))) - 1, 0, uLevels - 1);
+    ivec2 top = levelSize(level) - 1;
+    ivec2 t0 = min(first >> (level + 1), top), t1 = min(last >> (level + 1), top);
+    float farthest = 1.0;
+    for (int y = t0.y; y <= t1.y; ++y)
+        for (int x = t0.x; x <= t1.x; ++x) farthest = min(farthest, texelFetch(uPyramid, ivec2(x, y), level).r);
+    // Reversed-Z: larger is nearer. The margin covers rounding between this and the rasteriser.
+    return nearest * (1.0 + 1e-5) >= farthest;
+}
+
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= uCount) return;
+    Command c = source[i];
+    bool earlier = phase1[i].instanceCount != 0u;
+    bool on = c.count > 0u && visible(c.baseInstance);
+    if (c.baseInstance < uFirstBlended && c.count > 0u) seen[objectOf[c.baseInstance]] = on ? 1u : 0u;
+    c.instanceCount = on && !earlier ? 1u : 0u;
+    phase2[i] = c;
+    count(i, c.instanceCount != 0u);
+}
+)";
+
+// One pyramid level from the level below (or from the depth texture's viewport).
+constexpr const char* kReduce = R"(#version 450 core
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 7) uniform sampler2D uSource;
+layout(r32f, binding = 0) uniform writeonly image2D uTarget;
+uniform ivec2 uOffset;      // of the source region
+uniform ivec2 uSourceSize;  // of the source region
+uniform ivec2 uTargetSize;
+uniform int uLevel;         // of the source
+float at(ivec2 p) { return texelFetch(uSource, uOffset + min(p, uSourceSize - 1), uLevel).r; }
+void main() {
+    ivec2 t = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(t, uTargetSize))) return;
+    ivec2 s = 2 * t;
+    float d = min(min(at(s), at(s + ivec2(1, 0))), min(at(s + ivec2(0, 1)), at(s + ivec2(1, 1))));
+    imageStore(uTarget, t, vec4(d));
+}
+)";
+
+// The texture unit the culler samples (the shaders' binding 7; the scene shader uses 0), with
+// a nearest-texel sampler of its own: the views' depth textures have one level and the
+// default (mipmapped) filter, which the sampler overrides.
+constexpr GLuint kPyramidUnit = 7;
+
+display::gl::GlObject storage(std::size_t bytes) {
+    display::gl::GlObject b = display::gl::createBuffer();
+    glNamedBufferStorage(b.id(), std::max<std::size_t>(bytes, 4), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+    glClearNamedBufferData(b.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+    return b;
+}
+
+GLuint groups(std::uint32_t count, std::uint32_t size) { return (count + size - 1) / size; }
+
+}  // namespace
+
+OcclusionCuller::OcclusionCuller(std::size_t objectCount) : _objects(objectCount), _counts(storage(16)) {
+    using display::gl::uniformLocation;
+    _selectProgram = display::gl::buildComputeProgram("occlusion: seen", std::string(kCullCommon) + kSelectSeen);
+    _testProgram = display::gl::buildComputeProgram("occlusion: revealed", std::string(kCullCommon) + kSelectRevealed);
+    _reduceProgram = display::gl::buildComputeProgram("occlusion: pyramid", kReduce);
+    _sampler = display::gl::createSampler();
+    glSamplerParameteri(_sampler.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    glSamplerParameteri(_sampler.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(_sampler.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    _selectCount = uniformLocation(_selectProgram.id(), "occlusion: seen", "uCount");
+    _selectFirstBlended = uniformLocation(_selectProgram.id(), "occlusion: seen", "uFirstBlended");
+    _testCount = uniformLocation(_testProgram.id(), "occlusion: revealed", "uCount");
+    _testFirstBlended = uniformLocation(_testProgram.id(), "occlusion: revealed", "uFirstBlended");
+    _testProjection = uniformLocation(_testProgram.id(), "occlusion: revealed", "uProjection");
+    _testViewport = uniformLocation(_testProgram.id(), "occlusion: revealed", "uViewport");
+    _testLevels = uniformLocation(_testProgram.id(), "occlusion: revealed", "uLevels");
+    _reduceOffset = uniformLocation(_reduceProgram.id(), "occlusion: pyramid", "uOffset");
+    _reduceSourceSize = uniformLocation(_reduceProgram.id(), "occlusion: pyramid", "uSourceSize");
+    _reduceTargetSize = uniformLocation(_reduceProgram.id(), "occlusion: pyramid", "uTargetSize");
+    _reduceLevel = uniformLocation(_reduceProgram.id(), "occlusion: pyramid", "uLevel");
+}
+
+GLuint OcclusionCuller::slotBuffer(std::uint64_t slot) {
+    auto found = _seen.find(slot);
+    if (found == _seen.end()) found = _seen.emplace(slot, storage(_objects * sizeof(std::uint32_t))).first;
+    return found->second.id();
+}
+
+void OcclusionCuller::bindCommon(const CullBuffers& buffers, GLuint seen) {
+    const std::array<GLuint, 7> bound{buffers.commands, buffers.phase1, buffers.phase2, buffers.records,
+                                      buffers.objects,  seen,           _counts.id()};
+    for (GLuint i = 0; i < bound.size(); ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, bound[i]);
+}
+
+void OcclusionCuller::selectSeen(std::uint64_t slot, const CullBuffers& buffers) {
+    glUseProgram(_selectProgram.id());
+    bindCommon(buffers, slotBuffer(slot));
+    glUniform1ui(_selectCount, buffers.count);
+    glUniform1ui(_selectFirstBlended, buffers.firstBlended);
+    glDispatchCompute(groups(buffers.count, 64), 1, 1);
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void OcclusionCuller::buildPyramid(GLuint depthTexture, glm::ivec4 viewport) {
+    const glm::ivec2 size(viewport.z, viewport.w);
+    const glm::ivec2 level0 = (size + 1) / 2;
+    if (level0.x > _pyramidSize.x || level0.y > _pyramidSize.y) {
+        _pyramidSize = glm::max(level0, _pyramidSize);
+        _pyramidLevels = 1;
+        for (int m = std::max(_pyramidSize.x, _pyramidSize.y); m > 1; m = (m + 1) / 2) ++_pyramidLevels;
+        _pyramid = display::gl::createTexture(GL_TEXTURE_2D);
+        glTextureStorage2D(_pyramid.id(), _pyramidLevels, GL_R32F, _pyramidSize.x, _pyramidSize.y);
+        glTextureParameteri(_pyramid.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+        glTextureParameteri(_pyramid.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    glUseProgram(_reduceProgram.id());
+    glBindSampler(kPyramidUnit, _sampler.id());
+    glm::ivec2 source = size;
+    _levels = 0;
+    for (int level = 0; level == 0 || source.x > 1 || source.y > 1; ++level) {
+        const glm::ivec2 target = (source + 1) / 2;
+        glBindTextureUnit(kPyramidUnit, level == 0 ? depthTexture : _pyramid.id());
+        glBindImageTexture(0, _pyramid.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+        glUniform2i(_reduceOffset, level == 0 ? viewport.x : 0, level == 0 ? viewport.y : 0);
+        glUniform2i(_reduceSourceSize, source.x, source.y);
+        glUniform2i(_reduceTargetSize, target.x, target.y);
+        glUniform1i(_reduceLevel, level == 0 ? 0 : level - 1);
+        glDispatchCompute(groups(static_cast<std::uint32_t>(target.x), 8),
+                          groups(static_cast<std::uint32_t>(target.y), 8), 1);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        source = target;
+        ++_levels;
+    }
+    _viewportSize = size;
+}
+
+void OcclusionCuller::selectRevealed(std::uint64_t slot, const CullBuffers& buffers, const glm::mat4& projection) {
+    glUseProgram(_testProgram.id());
+    bindCommon(buffers, slotBuffer(slot));
+    glBindTextureUnit(kPyramidUnit, _pyramid.id());
+    glBindSampler(kPyramidUnit, _sampler.id());
+    glUniform1ui(_testCount, buffers.count);
+    glUniform1ui(_testFirstBlended, buffers.firstBlended);
+    glUniformMatrix4fv(_testProjection, 1, GL_FALSE, glm::value_ptr(projection));
+    glUniform2i(_testViewport, _viewportSize.x, _viewportSize.y);
+    glUniform1i(_testLevels, _levels);
+    glDispatchCompute(groups(buffers.count, 64), 1, 1);
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    glBindTextureUnit(kPyramidUnit, 0);
+    glBindSampler(kPyramidUnit, 0);
+}
+
+OcclusionCounts OcclusionCuller::readCounts() {
+    std::array<std::uint32_t, 4> c{};
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(_counts.id(), 0, sizeof(c), c.data());
+    glClearNamedBufferData(_counts.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+    return {c[0], c[1], c[2], c[3]};
+}
+
+}  // namespace cavewall::render::gl

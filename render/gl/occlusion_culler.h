@@ -1,0 +1,86 @@
+#pragma once
+// Occlusion culling on the GPU, in two phases per view, with what each view saw in its last
+// frame (the scheme of GPU-driven renderers: Hill and Collin 2011's hierarchical-Z culling,
+// split in two so that nothing visible is ever left out):
+//   1. `selectSeen` turns on the draws of the objects this view's slot saw last frame (opaque
+//      draws only) and the caller draws them.
+//   2. `buildPyramid` reduces the depth drawn so far to a hierarchical-Z pyramid (each texel the
+//      farthest depth of the 2 x 2 below it; reversed-Z, so the minimum), and `selectRevealed`
+//      tests every draw's box against it: a draw whose box is nearer than the farthest depth
+//      under it somewhere is visible. The caller draws the visible draws phase 1 left out (and
+//      the visible blended draws), and the slot remembers what is visible for its next frame.
+// Every draw phase 1 leaves out is tested against depth that only drawn surfaces wrote, so the
+// image is the one drawing everything gives: culling saves work, it never changes a pixel
+// (beyond depth ties between coincident surfaces, which drawing order decides either way).
+//
+// A draw's box: the scene renderer's stored positions are normalised within the mesh's box, so
+// in stored coordinates every mesh (at every level of detail) lies in the unit cube, and its
+// record's model-view rows (shaders::DrawRecord) place that cube in the view.
+//
+// Everything runs in compute shaders on buffers the renderer already has (its draw records and
+// indirect commands): no read-back, no wait; the counts of what was drawn stay on the GPU until
+// a caller asks (readCounts, which waits).
+
+#include "display/gl/gl_object.h"
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <utility>
+
+namespace cavewall::render::gl {
+
+// Draws and triangles drawn through the culler since the last readCounts, and what the
+// commands asked for before culling.
+struct OcclusionCounts {
+    std::uint64_t drawsSubmitted = 0, drawsDrawn = 0;
+    std::uint64_t trianglesSubmitted = 0, trianglesDrawn = 0;
+};
+
+// One view's draw: its buffers on the GPU. `commands` (read) holds every draw with one
+// instance; phase 1 and 2 write their own copies. `objects` holds each record's object index.
+struct CullBuffers {
+    GLuint records = 0, commands = 0, objects = 0, phase1 = 0, phase2 = 0;
+    std::uint32_t count = 0;         // commands
+    std::uint32_t firstBlended = 0;  // records from this index on are blended (drawn in phase 2)
+};
+
+class OcclusionCuller {
+public:
+    // Needs a current GL 4.5 context. `objectCount`: the scene's objects (each slot's memory).
+    explicit OcclusionCuller(std::size_t objectCount);
+
+    // Phase 1: writes buffers.phase1 with the opaque draws `slot` saw last frame turned on.
+    // A slot is a view of a caller's frame loop (e.g. screen and eye); a new slot saw nothing.
+    void selectSeen(std::uint64_t slot, const CullBuffers& buffers);
+    // Reduces `depthTexture`'s `viewport` (pixels, origin lower-left) to the pyramid.
+    void buildPyramid(GLuint depthTexture, glm::ivec4 viewport);
+    // Phase 2: writes buffers.phase2 with the draws visible against the pyramid that phase 1
+    // did not draw; remembers the visible opaque draws' objects in `slot`. `projection` is the
+    // view's clip-from-view matrix (the records' model-view rows are eye-relative).
+    void selectRevealed(std::uint64_t slot, const CullBuffers& buffers, const glm::mat4& projection);
+    // Waits for the GPU and returns the counts since the last call (then zero).
+    OcclusionCounts readCounts();
+
+private:
+    GLuint slotBuffer(std::uint64_t slot);
+    void bindCommon(const CullBuffers& buffers, GLuint visible);
+
+    std::size_t _objects;
+    display::gl::GlObject _selectProgram, _reduceProgram, _testProgram;
+    GLint _selectCount = -1, _selectFirstBlended = -1;
+    GLint _reduceOffset = -1, _reduceSourceSize = -1, _reduceTargetSize = -1, _reduceLevel = -1;
+    GLint _testCount = -1, _testFirstBlended = -1, _testProjection = -1, _testViewport = -1, _testLevels = -1;
+    display::gl::GlObject _sampler;  // nearest texel, for the depth textures and the pyramid
+    display::gl::GlObject _pyramid;  // R32F, mip levels
+    glm::ivec2 _pyramidSize{0, 0};   // level 0's allocated size
+    int _pyramidLevels = 0;          // allocated
+    int _levels = 0;                 // used by the last buildPyramid
+    glm::ivec2 _viewportSize{0, 0};  // of the last buildPyramid
+    display::gl::GlObject _counts;   // uint[4]: draws submitted, drawn, triangles submitted, drawn
+    std::map<std::uint64_t, display::gl::GlObject> _seen;  // per slot: uint per object
+};
+
+}  // namespace cavewall::render::gl
