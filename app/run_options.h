@@ -83,15 +83,16 @@ struct RunOptions {
     Start start = Start::Origin;  // without a walk path: where the viewer starts
     WindowMode window = WindowMode::Headless;
     Transition transition = Transition::Blend;
-    bool walls = true;                                 // false: --no-walls, full (culled) geometry
-    bool wallTextures = true;                          // false: the control, the walls' cells without textures
-                                                       // (walkthrough::gl::WalkthroughOptions::wallTextures;
-                                                       // the demo's)
-    walls::PlanOptions plan;                           // alpha etc. for planning and baking
+    bool walls = true;         // false: --no-walls, full (culled) geometry
+    bool wallTextures = true;  // false: the control, the walls' cells without textures
+                               // (walkthrough::gl::WalkthroughOptions::wallTextures;
+                               // the demo's)
+    walls::PlanOptions plan;   // alpha etc. for planning and baking
     // --walls depth|flat (walls/depth_wall.h); depth: the bench's recommended walls mode on the
     // plant (docs/benchmarking.md, "The recommended walls mode")
     walls::WallKind wallKind = walls::WallKind::Depth;
     bool keepSheets = false;  // --keep-sheets: depth walls keep their rubber sheets (to measure the cut)
+    bool occlusion = false;   // --occlusion: RenderSettings::occlusionCulling
     // --texture-format: storage of baked colour (walls/texture_blocks.h; keys the bake cache)
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
     std::optional<std::filesystem::path> cache;   // bake cache folder (default: the baker's)

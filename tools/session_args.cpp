@@ -115,7 +115,7 @@ void parseBakingAndClusters(const Args& args, app::RunOptions& o) {
 
 Args sessionArgs(const std::vector<std::string>& words) {
     return Args(words, {"headless", "window", "no-walls", "no-textures", "sync-paging", "cluster", "hierarchy",
-                        "clusters", "bake-on-demand", "bake-first", "save-window", "mono", "keep-sheets"});
+                        "clusters", "bake-on-demand", "bake-first", "save-window", "mono", "keep-sheets", "occlusion"});
 }
 
 std::vector<std::string_view> sessionFlags() {
@@ -128,7 +128,7 @@ std::vector<std::string_view> sessionFlags() {
         "triangle-budget", "frame-budget-ms", "lod-max", "walls", "hierarchy", "hierarchy-divisions",
         "hierarchy-res", "hierarchy-fade", "clusters", "cluster-divisions", "cluster-res", "cluster-fade",
         "bake-on-demand", "bake-first", "cache-budget", "bake-interleave", "bake-nice", "texture-format",
-        "texture-max", "texture-budget", "resolution", "mono", "keep-sheets"};
+        "texture-max", "texture-budget", "resolution", "mono", "keep-sheets", "occlusion"};
     // clang-format on
 }
 
@@ -156,6 +156,7 @@ app::RunOptions parseSessionOptions(const Args& args, app::RunOptions o) {
         for (config::Screen& screen : o.display.screens) screen.resolution = *pixels;
     applyMono(args, o.display);
     o.keepSheets = args.has("keep-sheets");
+    o.occlusion = args.has("occlusion");
     o.tracker = args.getOr("tracker", o.tracker);
     o.frames = args.integer("frames", o.frames, 0, 10000000);
     o.out = args.getOr("out", o.out.string());

@@ -413,6 +413,26 @@ TEST(RunCli, ReplayReproducesPosesAndFramesExactly) {
         }
 }
 
+// Occlusion culling on the GPU changes what is drawn, never the image: the same walk with and
+// without --occlusion writes the same PNG files, byte for byte, walls and all.
+TEST(RunCli, OcclusionCullingDrawsTheSameFrames) {
+    const fs::path plain = outputDir("occlusion-off"), culled = outputDir("occlusion-on");
+    for (const fs::path& out : {plain, culled}) {
+        std::vector<std::string> args = wallRun(out, "sim:walk?seed=3", 21);
+        args.insert(args.end(), {"--save-frames", "every:10", "--sync-paging", "--pace", "3"});
+        if (out == culled) args.push_back("--occlusion");
+        const CliResult r = runCavewall(args);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+    }
+    for (const char* frame : {"00000", "00010", "00020"})
+        for (const char* image : {"front.png", "left.png", "right.png", "floor.png"}) {
+            SCOPED_TRACE(std::string(frame) + "/" + image);
+            const std::string a = readFile(plain / "frames" / frame / image);
+            EXPECT_FALSE(a.empty());
+            EXPECT_TRUE(a == readFile(culled / "frames" / frame / image));
+        }
+}
+
 TEST(RunCli, DTrackSenderOverLoopbackDrivesTheHead) {
     const fs::path out = outputDir("dtrack");
     // The tracker origin is 0.1 m above and 0.5 m in front of the cave origin.

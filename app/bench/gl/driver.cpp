@@ -128,7 +128,11 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                                     " px on every screen it appears on; budgets "
                                     "raise that tolerance to at most " +
                                     config::formatNumber(o.lodMaxPixels) + " px"
-                              : "lod: off (--lod 0)"};
+                              : "lod: off (--lod 0)",
+            o.occlusion ? "occlusion culling: on in every mode (GPU, two phases per view: what the view saw last "
+                          "frame, then what the depth drawn so far does not hide; the same images); triangles a "
+                          "frame are those drawn"
+                        : "occlusion culling: off (every mode draws what its frustum and cells keep)"};
 }
 
 // The checks that need no file: they fail before anything is loaded.
@@ -459,7 +463,8 @@ BenchReport runBenchmark(const BenchOptions& o) {
                         o.lodMaxPixels,
                         o.wallKind,
                         o.clusters ? (o.cache ? *o.cache : walls::gl::defaultCacheFolder()) : std::filesystem::path(),
-                        walls::ReprojectSettings{.cutSheets = !o.keepSheets}};
+                        walls::ReprojectSettings{.cutSheets = !o.keepSheets},
+                        o.occlusion};
 
     const std::vector<BakedWalls> baked = bakeOwnWalls(o, o.wallKind, scene, description, *context, report);
     const std::vector<BakedWalls> flatBaked =

@@ -39,6 +39,13 @@ int keptFallbacks(const walkthrough::FrameResult& r) {
     return kept;
 }
 
+// With occlusion culling, the frame's triangles are those drawn, not those submitted.
+void countDrawn(walkthrough::gl::Walkthrough& w, walkthrough::FrameResult& r) {
+    const std::optional<render::gl::OcclusionCounts> counts = w.readOcclusionCounts();
+    if (!counts) return;
+    r.stats.triangles -= std::min<std::size_t>(r.stats.triangles, counts->trianglesSubmitted - counts->trianglesDrawn);
+}
+
 FrameCost frameCost(const walkthrough::FrameResult& r) {
     return {r.frameMs,
             r.cpuMs,
@@ -216,6 +223,7 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         if (l.frameBudget) in.triangleBudget = l.frameBudget->budget();
         if (l.clusterBudget) in.clusterBudgetMs = walkthrough::clusterBudgetFor(*l.clusterBudget);
         walkthrough::FrameResult r = l.walkthrough->renderFrame(in);
+        countDrawn(*l.walkthrough, r);
         if (l.frameBudget) l.frameBudget->update(r.frameMs, r.geometryTriangles);
         if (l.clusterBudget) walkthrough::controlClusters(*l.clusterBudget, r);
         return r;
@@ -233,6 +241,7 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         walkthrough::gl::WalkthroughOptions options;
         options.transition = run.transition;
         options.render.lodPixels = mode.lodPixels;
+        options.render.occlusionCulling = c.occlusion;
         options.triangleBudget = mode.triangleBudget;
         options.lodMaxPixels = c.lodMaxPixels;
         options.wallKind = run.wallKind.value_or(c.wallKind);
@@ -284,6 +293,7 @@ double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, walls::gl::
     options.baker = &baker;
     options.wallKind = c.wallKind;
     options.depthMarch = c.depthMarch;
+    options.render.occlusionCulling = c.occlusion;
     walkthrough::gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
     if (c.path.frames.empty()) return display::msSince(start) / 1000.0;
     walkthrough.renderFrame(c.path.frames.front());
@@ -293,6 +303,7 @@ double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, walls::gl::
         in.readImages = compared(c, in.frame);
         in.readDepth = in.readImages && readsDepth(c);
         walkthrough::FrameResult r = walkthrough.renderFrame(in);
+        countDrawn(walkthrough, r);
         acc.addFrame(frameCost(r));
         if (in.readImages) acc.compare(in.frame, in.head, r.images, r.depths, reference.at(in.frame));
     }
@@ -306,6 +317,7 @@ NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::Wall
     options.textureBudgetMB = 4096.0;
     options.uploadMBPerFrame = 4096.0;
     options.render.lodPixels = mode.lodPixels;
+    options.render.occlusionCulling = c.occlusion;
     options.triangleBudget = mode.triangleBudget;
     options.lodMaxPixels = c.lodMaxPixels;
     options.wallKind = c.wallKind;
@@ -396,6 +408,7 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
     const display::gl::RenderTargets targets(c.display, c.context);
     render::gl::RenderSettings settings;
     settings.lodPixels = runs.front().acc->mode().lodPixels;
+    settings.occlusionCulling = c.occlusion;
     for ([[maybe_unused]] const CellRun& r : runs) assert(r.acc->mode().lodPixels == settings.lodPixels);
     render::gl::SceneRenderer renderer(c.scene, settings);
     // The limit draws every wall of the viewer's cell as a bare quad: one 1x1 texture through
@@ -412,6 +425,7 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
             c.scene, cellMask(selection, c.description.cells.size(), kind == CellDraw::Near));
         render::DrawFilter filter;
         filter.objects = &objects;
+        renderer.setOcclusionContext(static_cast<std::uint32_t>(kind));
         std::vector<walls::gl::WallDraw> quads;
         if (kind == CellDraw::Near)
             for (const walls::WallBlend& b : selection.walls)
@@ -434,12 +448,14 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
         const display::FrameStats stats = renderer.render(views, targets, in.worldFromCave, filter,
                                                           kind != CellDraw::Cells ? std::function(afterView) : nullptr);
         const double gpu = renderer.waitGpuMs();
+        const std::optional<render::gl::OcclusionCounts> counts = renderer.readOcclusionCounts();
         if (!cost) return;
         *cost = FrameCost{};
         cost->frameMs = display::msSince(start);
         cost->cpuMs = stats.cpuMs;
         cost->gpuMs = gpu;
         cost->triangles = static_cast<double>(stats.triangles + quadStats.triangles);
+        if (counts) cost->triangles -= static_cast<double>(counts->trianglesSubmitted - counts->trianglesDrawn);
         cost->drawCalls = static_cast<double>(stats.drawCalls + quadStats.drawCalls);
         cost->lodErrorPx = lod.maxErrorPx;
         cost->lodTolerancePx = lod.tolerancePx;

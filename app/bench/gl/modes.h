@@ -104,6 +104,7 @@ struct ModeContext {
     walls::WallKind wallKind = walls::WallKind::Flat;  // WalkthroughOptions::wallKind of the walls modes
     std::filesystem::path clusterCache;                // ClusterOptions::cache of the clusters modes
     walls::ReprojectSettings depthMarch;               // WalkthroughOptions::depthMarch
+    bool occlusion = false;                            // RenderSettings::occlusionCulling of every mode
 };
 
 // One walkthrough mode of a runWalkthroughModes call.
