@@ -44,13 +44,13 @@ constexpr double kPi = 3.14159265358979323846;
 // Centres an edge misses by rounding still count: a slab of abutting boards has no cracks.
 constexpr TriangleOptions kSlabEdges{1e-9};
 
-PlanGrid planGrid(const std::vector<Cell>& cells, const VoidOptions& options) {
+// A grid over the cells' regions' bounds.
+PlanGrid planGrid(const std::vector<PlanRect>& bounds, const VoidOptions& options) {
     glm::dvec2 lo(kInfinity), hi(-kInfinity);
-    for (const Cell& c : cells)
-        for (const glm::dvec2& p : c.region) {
-            lo = glm::min(lo, p);
-            hi = glm::max(hi, p);
-        }
+    for (const PlanRect& b : bounds) {
+        lo = glm::min(lo, b.lo);
+        hi = glm::max(hi, b.hi);
+    }
     PlanGrid g;
     if (!(lo.x <= hi.x && lo.y <= hi.y)) return g;
     const glm::dvec2 extent = hi - lo;
@@ -109,13 +109,10 @@ Coverage coverage(const Scene& scene, const PlanGrid& g, const std::vector<doubl
     return out;
 }
 
-PlanMask cellVoid(const PlanGrid& g, const Cell& cell, const PlanBits& floor, const PlanBits& upper,
-                  const PlanBits& roof) {
-    glm::dvec2 lo(kInfinity), hi(-kInfinity);
-    for (const glm::dvec2& p : cell.region) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
+// The samples of `cell` (its region's bounds: `bounds`) open from `floor` to `upper` under `roof`.
+PlanMask cellVoid(const PlanGrid& g, const Cell& cell, const PlanRect& bounds, const PlanBits& floor,
+                  const PlanBits& upper, const PlanBits& roof) {
+    const glm::dvec2 lo = bounds.lo, hi = bounds.hi;
     // The grid covers every cell's region, so these stay within [0, n].
     auto index = [&](double v, double o, int n, bool up) {
         const double k = (v - o) / g.cellSize;
@@ -137,25 +134,26 @@ PlanMask cellVoid(const PlanGrid& g, const Cell& cell, const PlanBits& floor, co
 }  // namespace
 
 std::vector<PlanMask> cellVoids(const Scene& scene, const std::vector<Cell>& cells, const std::vector<double>& tops,
-                                const VoidOptions& options) {
+                                const std::vector<PlanRect>& bounds, const VoidOptions& options) {
     std::vector<PlanMask> out(cells.size());
+    const std::size_t n = std::min({cells.size(), tops.size(), bounds.size()});
     std::vector<double> floors, roofs;
-    for (std::size_t c = 0; c < cells.size() && c < tops.size(); ++c)
+    for (std::size_t c = 0; c < n; ++c)
         if (std::isfinite(tops[c]) && std::isfinite(cells[c].floorY)) {
             floors.push_back(cells[c].floorY);
             floors.push_back(tops[c]);
             roofs.push_back(tops[c]);
         }
     if (roofs.empty()) return out;
-    const PlanGrid g = planGrid(cells, options);
+    const PlanGrid g = planGrid(bounds, options);
     if (g.nx <= 0 || g.nz <= 0) return out;
     Coverage cover = coverage(scene, g, floors, roofs);
     const int r = static_cast<int>(std::lround(options.closeMetres / g.cellSize));
     for (auto& [y, mask] : cover.slab) mask = closed(g, std::move(mask), r);
-    for (std::size_t c = 0; c < cells.size() && c < tops.size(); ++c)
+    for (std::size_t c = 0; c < n; ++c)
         if (std::isfinite(tops[c]) && std::isfinite(cells[c].floorY))
-            out[c] =
-                cellVoid(g, cells[c], cover.slab.at(cells[c].floorY), cover.slab.at(tops[c]), cover.roof.at(tops[c]));
+            out[c] = cellVoid(g, cells[c], bounds[c], cover.slab.at(cells[c].floorY), cover.slab.at(tops[c]),
+                              cover.roof.at(tops[c]));
     return out;
 }
 
