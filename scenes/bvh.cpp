@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace cavewall::scenes {
 
@@ -50,6 +51,15 @@ Bvh::Bvh(const Scene& scene) {
 
 namespace {
 
+constexpr int kNoCell = std::numeric_limits<int>::min();
+constexpr int kSeveralCells = kNoCell + 1;
+
+// Bvh::_soleCell of an object with the cells `own`.
+int soleCell(const std::vector<int>& own) {
+    if (own.empty()) return kNoCell;
+    return own.size() == 1 && own[0] > kSeveralCells ? own[0] : kSeveralCells;
+}
+
 std::vector<std::vector<int>> singleCells(const std::vector<int>& cells) {
     std::vector<std::vector<int>> sets;
     for (int c : cells) sets.push_back(c >= 0 ? std::vector<int>{c} : std::vector<int>{});
@@ -63,6 +73,11 @@ Bvh::Bvh(const std::vector<Bounds>& bounds, std::vector<int> cells) : Bvh(bounds
 Bvh::Bvh(const std::vector<Bounds>& bounds, std::vector<std::vector<int>> cellSets)
     : _cells(std::move(cellSets)), _bounds(bounds) {
     _cells.resize(bounds.size());
+    _soleCell.reserve(_cells.size());
+    for (std::vector<int>& own : _cells) {
+        _soleCell.push_back(soleCell(own));
+        if (_soleCell.back() != kSeveralCells) own = {};
+    }
     _order.resize(bounds.size());
     for (std::size_t i = 0; i < bounds.size(); ++i) _order[i] = static_cast<int>(i);
     _nodes.reserve(2 * bounds.size());
@@ -97,10 +112,12 @@ int Bvh::build(int first, int count, const std::vector<Bounds>& bounds) {
 }
 
 bool Bvh::kept(int object, const std::vector<bool>* cells) const {
+    const int sole = _soleCell[object];
+    if (!cells || sole == kNoCell) return true;
+    auto drawn = [&](int c) { return c >= 0 && c < static_cast<int>(cells->size()) && (*cells)[c]; };
+    if (sole != kSeveralCells) return drawn(sole);
     const std::vector<int>& own = _cells[object];
-    if (!cells || own.empty()) return true;
-    return std::any_of(own.begin(), own.end(),
-                       [&](int c) { return c >= 0 && c < static_cast<int>(cells->size()) && (*cells)[c]; });
+    return std::any_of(own.begin(), own.end(), drawn);
 }
 
 void Bvh::addRange(const Node& node, std::vector<int>& out, const std::vector<bool>* cells) const {

@@ -64,8 +64,11 @@ private:
     bool kept(int object, const std::vector<bool>* cells) const;
 
     std::vector<Node> _nodes;
-    std::vector<int> _order;               // object indices, each node's objects contiguous
-    std::vector<std::vector<int>> _cells;  // per object (original index), empty = none
+    std::vector<int> _order;  // object indices, each node's objects contiguous
+    // Per object (original index): its cell when it has exactly one (the common case, tested
+    // without touching _cells), else kNoCell (none) or kSeveralCells (listed in _cells).
+    std::vector<int> _soleCell;
+    std::vector<std::vector<int>> _cells;  // per object: its cells when several, else empty
     std::vector<Bounds> _bounds;           // per object (original index)
 };
 

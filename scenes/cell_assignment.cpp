@@ -35,10 +35,9 @@ double topOver(const std::vector<Cell>& cells, const std::vector<glm::dvec2>& re
 std::vector<CellSpan> cellSpans(const std::vector<Cell>& cells) {
     std::vector<CellSpan> spans(cells.size());
     for (std::size_t c = 0; c < cells.size(); ++c) {
-        for (const glm::dvec2& p : cells[c].region) {
-            spans[c].lo = glm::min(spans[c].lo, p);
-            spans[c].hi = glm::max(spans[c].hi, p);
-        }
+        const PlanRect bounds = regionBounds(cells[c].region);
+        spans[c].lo = bounds.lo;
+        spans[c].hi = bounds.hi;
         spans[c].bottom = cells[c].floorY - kBelowFloor;
     }
     for (std::size_t c = 0; c < cells.size(); ++c) {
@@ -166,9 +165,13 @@ CellsOfBox cellsOfBox(const std::vector<Cell>& cells, const Bounds& box, double 
 void assignCells(Scene& scene, const std::vector<Cell>& cells, double reach) {
     const std::vector<CellSpan> spans = cellSpans(cells);
     std::vector<double> tops;
-    for (const CellSpan& s : spans) tops.push_back(s.top);
+    std::vector<PlanRect> bounds;
+    for (const CellSpan& s : spans) {
+        tops.push_back(s.top);
+        bounds.push_back({s.lo, s.hi});
+    }
     Voids voids;
-    voids.up = cellVoids(scene, cells, tops);
+    voids.up = cellVoids(scene, cells, tops, bounds);
     voids.below = voidsBelow(cells, spans, voids.up);
     for (Object& o : scene.objects) {
         CellsOfBox c = boxCells(cells, spans, voids, o.worldBounds, reach);

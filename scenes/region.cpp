@@ -16,6 +16,15 @@ double turn(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
 
 }  // namespace
 
+PlanRect regionBounds(const std::vector<glm::dvec2>& region) {
+    PlanRect r;
+    for (const glm::dvec2& p : region) {
+        r.lo = glm::min(r.lo, p);
+        r.hi = glm::max(r.hi, p);
+    }
+    return r;
+}
+
 double regionArea(const std::vector<glm::dvec2>& r) {
     double s = 0.0;
     for (std::size_t i = 0; i < r.size(); ++i) {

@@ -6,9 +6,19 @@
 
 #include <glm/glm.hpp>
 
+#include <limits>
 #include <vector>
 
 namespace cavewall::scenes {
+
+// An (x, z) rectangle [lo, hi]; lo > hi (the defaults) when it holds nothing.
+struct PlanRect {
+    glm::dvec2 lo{std::numeric_limits<double>::infinity()};
+    glm::dvec2 hi{-std::numeric_limits<double>::infinity()};
+};
+
+// The bounds of a region's corners (none for no corners).
+PlanRect regionBounds(const std::vector<glm::dvec2>& region);
 
 // Signed area in m²: positive for counter-clockwise regions.
 double regionArea(const std::vector<glm::dvec2>& region);

@@ -1,5 +1,6 @@
 #include "scenes/storey_voids.h"
 
+#include "scenes/plan_raster.h"
 #include "scenes/region.h"
 
 #include <algorithm>
@@ -40,94 +41,29 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kPi = 3.14159265358979323846;
+// Centres an edge misses by rounding still count: a slab of abutting boards has no cracks.
+constexpr TriangleOptions kSlabEdges{1e-9};
 
-// One plan grid of booleans over the cells' extent.
-struct Grid {
-    glm::dvec2 origin{0.0};
-    double step = 1.0;
-    int nx = 0, nz = 0;
-
-    std::vector<bool> blank() const { return std::vector<bool>(static_cast<std::size_t>(nx) * nz, false); }
-    glm::dvec2 centre(int i, int j) const { return origin + step * glm::dvec2(i + 0.5, j + 0.5); }
-};
-
-Grid planGrid(const std::vector<Cell>& cells, const VoidOptions& options) {
+// A grid over the cells' regions' bounds.
+PlanGrid planGrid(const std::vector<PlanRect>& bounds, const VoidOptions& options) {
     glm::dvec2 lo(kInfinity), hi(-kInfinity);
-    for (const Cell& c : cells)
-        for (const glm::dvec2& p : c.region) {
-            lo = glm::min(lo, p);
-            hi = glm::max(hi, p);
-        }
-    Grid g;
+    for (const PlanRect& b : bounds) {
+        lo = glm::min(lo, b.lo);
+        hi = glm::max(hi, b.hi);
+    }
+    PlanGrid g;
     if (!(lo.x <= hi.x && lo.y <= hi.y)) return g;
     const glm::dvec2 extent = hi - lo;
-    g.step = std::max(options.sampleMetres, std::max(extent.x, extent.y) / 2048.0);
-    g.origin = lo - g.step;
-    g.nx = static_cast<int>(std::ceil(extent.x / g.step)) + 2;
-    g.nz = static_cast<int>(std::ceil(extent.y / g.step)) + 2;
+    g.cellSize = std::max(options.sampleMetres, std::max(extent.x, extent.y) / 2048.0);
+    g.origin = lo - g.cellSize;
+    g.nx = static_cast<int>(std::ceil(extent.x / g.cellSize)) + 2;
+    g.nz = static_cast<int>(std::ceil(extent.y / g.cellSize)) + 2;
     return g;
-}
-
-// Marks the samples whose centres lie in the plan triangle a, b, c.
-void markTriangle(const Grid& g, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, std::vector<bool>& mask) {
-    const glm::dvec2 lo = glm::min(a, glm::min(b, c)), hi = glm::max(a, glm::max(b, c));
-    if (!(std::isfinite(lo.x) && std::isfinite(lo.y) && std::isfinite(hi.x) && std::isfinite(hi.y))) return;
-    // The samples whose centres lie in [lo, hi], clamped to the grid before converting.
-    auto index = [&](double v, double o, int n, bool up) {
-        const double k = (v - o) / g.step - 0.5;
-        return static_cast<int>(std::clamp(up ? std::ceil(k) : std::floor(k), -1.0, static_cast<double>(n)));
-    };
-    const int i0 = std::max(0, index(lo.x, g.origin.x, g.nx, true));
-    const int i1 = std::min(g.nx - 1, index(hi.x, g.origin.x, g.nx, false));
-    const int j0 = std::max(0, index(lo.y, g.origin.y, g.nz, true));
-    const int j1 = std::min(g.nz - 1, index(hi.y, g.origin.y, g.nz, false));
-    auto edge = [](glm::dvec2 p, glm::dvec2 q, glm::dvec2 r) {
-        return (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
-    };
-    const double area = edge(a, b, c);
-    if (area == 0.0) return;
-    const double sign = area > 0.0 ? 1.0 : -1.0, tolerance = -1e-9 * std::abs(area);
-    for (int j = j0; j <= j1; ++j)
-        for (int i = i0; i <= i1; ++i) {
-            const glm::dvec2 p = g.centre(i, j);
-            if (sign * edge(a, b, p) >= tolerance && sign * edge(b, c, p) >= tolerance &&
-                sign * edge(c, a, p) >= tolerance)
-                mask[static_cast<std::size_t>(j) * g.nx + i] = true;
-        }
-}
-
-// One pass of a square (2r + 1) window along x (`alongX`) or z: any (dilate) or all (erode,
-// samples beyond the grid counting as set) of the window's samples.
-std::vector<bool> windowPass(const Grid& g, const std::vector<bool>& in, int r, bool alongX, bool dilate) {
-    std::vector<bool> out = g.blank();
-    const int n = alongX ? g.nx : g.nz, lines = alongX ? g.nz : g.nx;
-    std::vector<int> sums(static_cast<std::size_t>(n) + 1);
-    for (int line = 0; line < lines; ++line) {
-        auto at = [&](int k) {
-            return static_cast<std::size_t>(alongX ? line : k) * g.nx + static_cast<std::size_t>(alongX ? k : line);
-        };
-        for (int k = 0; k < n; ++k) sums[k + 1] = sums[k] + (in[at(k)] ? 1 : 0);
-        for (int k = 0; k < n; ++k) {
-            const int a = std::max(0, k - r), b = std::min(n, k + r + 1);
-            const int set = sums[b] - sums[a];
-            out[at(k)] = dilate ? set > 0 : set == b - a;
-        }
-    }
-    return out;
-}
-
-std::vector<bool> closed(const Grid& g, std::vector<bool> mask, int r) {
-    if (r <= 0) return mask;
-    for (bool dilate : {true, false}) {
-        mask = windowPass(g, mask, r, true, dilate);
-        mask = windowPass(g, mask, r, false, dilate);
-    }
-    return mask;
 }
 
 // The slab of every floor level and the covering over every top level.
 struct Coverage {
-    std::map<double, std::vector<bool>> slab, roof;
+    std::map<double, PlanBits> slab, roof;
 };
 
 // Triangle `t` of `m` placed by `o` in the world; false when an index is out of range.
@@ -141,7 +77,7 @@ bool worldTriangle(const Object& o, const Mesh& m, std::size_t t, std::array<glm
 }
 
 // Marks one world triangle into the slabs it lies in and the coverings it lies over.
-void markCoverage(const Grid& g, const std::array<glm::dvec3, 3>& p, Coverage& out) {
+void markCoverage(const PlanGrid& g, const std::array<glm::dvec3, 3>& p, Coverage& out) {
     static const double slabCos = std::cos(kSlabTiltDeg * kPi / 180.0);
     static const double roofCos = std::cos(kRoofTiltDeg * kPi / 180.0);
     const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
@@ -152,12 +88,13 @@ void markCoverage(const Grid& g, const std::array<glm::dvec3, 3>& p, Coverage& o
     const double lowY = std::min({p[0].y, p[1].y, p[2].y}), highY = std::max({p[0].y, p[1].y, p[2].y});
     const glm::dvec2 a(p[0].x, p[0].z), b(p[1].x, p[1].z), c(p[2].x, p[2].z);
     for (auto& [y, mask] : out.slab)
-        if (up >= slabCos && lowY >= y - kSlabBelow && highY <= y + kSlabAbove) markTriangle(g, a, b, c, mask);
+        if (up >= slabCos && lowY >= y - kSlabBelow && highY <= y + kSlabAbove)
+            markTriangle(g, a, b, c, mask, kSlabEdges);
     for (auto& [y, mask] : out.roof)
-        if (lowY > y + kCoverAbove) markTriangle(g, a, b, c, mask);
+        if (lowY > y + kCoverAbove) markTriangle(g, a, b, c, mask, kSlabEdges);
 }
 
-Coverage coverage(const Scene& scene, const Grid& g, const std::vector<double>& floors,
+Coverage coverage(const Scene& scene, const PlanGrid& g, const std::vector<double>& floors,
                   const std::vector<double>& tops) {
     Coverage out;
     for (double y : floors) out.slab[y] = g.blank();
@@ -172,16 +109,13 @@ Coverage coverage(const Scene& scene, const Grid& g, const std::vector<double>& 
     return out;
 }
 
-PlanMask cellVoid(const Grid& g, const Cell& cell, const std::vector<bool>& floor, const std::vector<bool>& upper,
-                  const std::vector<bool>& roof) {
-    glm::dvec2 lo(kInfinity), hi(-kInfinity);
-    for (const glm::dvec2& p : cell.region) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
+// The samples of `cell` (its region's bounds: `bounds`) open from `floor` to `upper` under `roof`.
+PlanMask cellVoid(const PlanGrid& g, const Cell& cell, const PlanRect& bounds, const PlanBits& floor,
+                  const PlanBits& upper, const PlanBits& roof) {
+    const glm::dvec2 lo = bounds.lo, hi = bounds.hi;
     // The grid covers every cell's region, so these stay within [0, n].
     auto index = [&](double v, double o, int n, bool up) {
-        const double k = (v - o) / g.step;
+        const double k = (v - o) / g.cellSize;
         return static_cast<int>(std::clamp(up ? std::ceil(k) : std::floor(k), 0.0, static_cast<double>(n)));
     };
     const int i0 = index(lo.x, g.origin.x, g.nx, false), i1 = index(hi.x, g.origin.x, g.nx, true);
@@ -194,31 +128,32 @@ PlanMask cellVoid(const Grid& g, const Cell& cell, const std::vector<bool>& floo
             if (floor[s] && !upper[s] && roof[s] && regionContains(cell.region, g.centre(i, j), 1e-9))
                 open[static_cast<std::size_t>(j - j0) * (i1 - i0) + (i - i0)] = true;
         }
-    return PlanMask(g.origin + g.step * glm::dvec2(i0, j0), g.step, i1 - i0, j1 - j0, open);
+    return PlanMask(g.origin + g.cellSize * glm::dvec2(i0, j0), g.cellSize, i1 - i0, j1 - j0, open);
 }
 
 }  // namespace
 
 std::vector<PlanMask> cellVoids(const Scene& scene, const std::vector<Cell>& cells, const std::vector<double>& tops,
-                                const VoidOptions& options) {
+                                const std::vector<PlanRect>& bounds, const VoidOptions& options) {
     std::vector<PlanMask> out(cells.size());
+    const std::size_t n = std::min({cells.size(), tops.size(), bounds.size()});
     std::vector<double> floors, roofs;
-    for (std::size_t c = 0; c < cells.size() && c < tops.size(); ++c)
+    for (std::size_t c = 0; c < n; ++c)
         if (std::isfinite(tops[c]) && std::isfinite(cells[c].floorY)) {
             floors.push_back(cells[c].floorY);
             floors.push_back(tops[c]);
             roofs.push_back(tops[c]);
         }
     if (roofs.empty()) return out;
-    const Grid g = planGrid(cells, options);
+    const PlanGrid g = planGrid(bounds, options);
     if (g.nx <= 0 || g.nz <= 0) return out;
     Coverage cover = coverage(scene, g, floors, roofs);
-    const int r = static_cast<int>(std::lround(options.closeMetres / g.step));
+    const int r = static_cast<int>(std::lround(options.closeMetres / g.cellSize));
     for (auto& [y, mask] : cover.slab) mask = closed(g, std::move(mask), r);
-    for (std::size_t c = 0; c < cells.size() && c < tops.size(); ++c)
+    for (std::size_t c = 0; c < n; ++c)
         if (std::isfinite(tops[c]) && std::isfinite(cells[c].floorY))
-            out[c] =
-                cellVoid(g, cells[c], cover.slab.at(cells[c].floorY), cover.slab.at(tops[c]), cover.roof.at(tops[c]));
+            out[c] = cellVoid(g, cells[c], bounds[c], cover.slab.at(cells[c].floorY), cover.slab.at(tops[c]),
+                              cover.roof.at(tops[c]));
     return out;
 }
 

@@ -14,6 +14,7 @@
 //     roof) lies wholly more than kCoverAbove above the upper level over it (the void is
 //     indoors: not the roof of a one-storey wing beside the upper storey, nor a courtyard).
 
+#include "scenes/region.h"
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
 
@@ -57,8 +58,9 @@ private:
 
 // Per cell, its void toward the floor at height tops[c] (cells' storey tops,
 // scenes/cell_assignment.h; an infinite top: none): the samples of the cell's region open from
-// its floor (Cell::floorY) to tops[c] (see the top of this file). `tops` has one entry per cell.
+// its floor (Cell::floorY) to tops[c] (see the top of this file). `tops` and `bounds` (each
+// cell's regionBounds, scenes/region.h) have one entry per cell.
 std::vector<PlanMask> cellVoids(const Scene& scene, const std::vector<Cell>& cells, const std::vector<double>& tops,
-                                const VoidOptions& options = {});
+                                const std::vector<PlanRect>& bounds, const VoidOptions& options = {});
 
 }  // namespace cavewall::scenes

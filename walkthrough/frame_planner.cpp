@@ -84,6 +84,7 @@ FramePlanner::~FramePlanner() = default;
 TextureRequests FramePlanner::requests(const FrameInput& input, const std::vector<display::ScreenView>& views) {
     _input = input;
     _views = views;
+    _caveFromWorld = glm::inverse(input.worldFromCave);
     _eye = glm::dvec3(input.worldFromCave * glm::dvec4(input.head.position, 1.0));
     _outOfView.clear();
     _planned = false;
@@ -376,9 +377,8 @@ void FramePlanner::applyWarp(const walls::WallBlend& b, const WarpOutcome& outco
 
 // True when the warp of `warp` is well-conditioned for every given view (display/warp.h).
 bool FramePlanner::warpConditioned(const walls::WarpWall& warp) const {
-    const glm::dmat4 caveFromWorld = glm::inverse(_input.worldFromCave);
     for (const display::ScreenView& view : _views)
-        if (!(display::warpCondition(walls::warpFor(warp, view, caveFromWorld, _display.depthRange().near)) <=
+        if (!(display::warpCondition(walls::warpFor(warp, view, _caveFromWorld, _display.depthRange().near)) <=
               display::kMaxWarpCondition))
             return false;
     return true;
@@ -389,9 +389,8 @@ bool FramePlanner::warpConditioned(const walls::WarpWall& warp) const {
 bool FramePlanner::wallInView(int wall) const {
     const display::ScreenQuad& q = _walls->plan.walls[wall].quad;
     const glm::dvec3 corners[4] = {q.lowerLeft, q.lowerRight, q.upperLeft, q.lowerRight + q.upperLeft - q.lowerLeft};
-    const glm::dmat4 caveFromWorld = glm::inverse(_input.worldFromCave);
     for (const display::ScreenView& view : _views) {
-        const glm::dmat4 clipFromWorld = view.frustum.clipFromFrame() * caveFromWorld;
+        const glm::dmat4 clipFromWorld = view.frustum.clipFromFrame() * _caveFromWorld;
         int outside[5] = {0, 0, 0, 0, 0};
         for (const glm::dvec3& c : corners) {
             const glm::dvec4 p = clipFromWorld * glm::dvec4(c, 1.0);
@@ -424,25 +423,43 @@ void FramePlanner::measureError(FramePlan& p) const {
         worst = std::max(worst, wall);
     }
     p.maxErrorDeg = glm::degrees(worst);
+    if (worst <= 0.0) return;
+    const std::vector<ViewScale> views = viewScales();
     for (const WallState& s : p.walls)
-        if (s.errorDeg > 0.0) p.maxErrorPixels = std::max(p.maxErrorPixels, s.errorDeg * wallPixelsPerDegree(s.wall));
+        if (s.errorDeg > 0.0)
+            p.maxErrorPixels = std::max(p.maxErrorPixels, s.errorDeg * wallPixelsPerDegree(s.wall, views));
+}
+
+// One view of the frame as wallPixelsPerDegree needs it; the same for every wall.
+struct FramePlanner::ViewScale {
+    glm::dmat4 viewFromWorld{1.0};
+    display::ViewScreen screen;
+    double pixelsPerDegree = 0.0;  // display::minPixelsPerDegree(screen)
+};
+
+std::vector<FramePlanner::ViewScale> FramePlanner::viewScales() const {
+    std::vector<ViewScale> out;
+    out.reserve(_views.size());
+    for (const display::ScreenView& view : _views) {
+        ViewScale v;
+        v.viewFromWorld = view.frustum.viewFromFrame * _caveFromWorld;
+        v.screen = display::viewScreen(view.frustum, {view.pass.viewport.width, view.pass.viewport.height});
+        v.pixelsPerDegree = display::minPixelsPerDegree(v.screen);
+        out.push_back(v);
+    }
+    return out;
 }
 
 // A texture is drawn on its wall's quad (walls/texture_rect.h), so its error shows only on the
 // screens where that quad appears: the most of their pixels per degree of visual angle.
-double FramePlanner::wallPixelsPerDegree(int wall) const {
+double FramePlanner::wallPixelsPerDegree(int wall, const std::vector<ViewScale>& views) const {
     const display::ScreenQuad& q = _walls->plan.walls[wall].quad;
     const glm::dvec3 corners[4] = {q.lowerLeft, q.lowerRight, q.upperLeft, q.lowerRight + q.upperLeft - q.lowerLeft};
-    const glm::dmat4 caveFromWorld = glm::inverse(_input.worldFromCave);
     double most = 0.0;
-    for (const display::ScreenView& view : _views) {
-        const glm::dmat4 viewFromWorld = view.frustum.viewFromFrame * caveFromWorld;
+    for (const ViewScale& v : views) {
         std::array<glm::dvec3, 4> inView;
-        for (int c = 0; c < 4; ++c) inView[c] = glm::dvec3(viewFromWorld * glm::dvec4(corners[c], 1.0));
-        const display::ViewScreen screen =
-            display::viewScreen(view.frustum, {view.pass.viewport.width, view.pass.viewport.height});
-        if (display::maxPixelsPerRadianInFront(screen, inView) > 0.0)
-            most = std::max(most, display::minPixelsPerDegree(screen));
+        for (int c = 0; c < 4; ++c) inView[c] = glm::dvec3(v.viewFromWorld * glm::dvec4(corners[c], 1.0));
+        if (display::maxPixelsPerRadianInFront(v.screen, inView) > 0.0) most = std::max(most, v.pixelsPerDegree);
     }
     return most;
 }

@@ -158,6 +158,7 @@ private:
     bool _drawTextures = true;
     struct Memory;
     struct WarpOutcome;
+    struct ViewScale;
     WallState chooseWall(const walls::WallBlend& blend, const Residency& resident, FramePlan& plan);
     void keepTexturesFor(const walls::WallBlend& blend, const Residency& resident, WallState& state, FramePlan& plan);
     WarpOutcome warpWall(const walls::WallBlend& blend, const WallState& state);
@@ -166,7 +167,8 @@ private:
     bool warpConditioned(const walls::WarpWall& warp) const;
     bool wallInView(int wall) const;
     void measureError(FramePlan& plan) const;
-    double wallPixelsPerDegree(int wall) const;
+    std::vector<ViewScale> viewScales() const;
+    double wallPixelsPerDegree(int wall, const std::vector<ViewScale>& views) const;
     void addDraw(const walls::WallBlend& blend, const WallState& state, FramePlan& plan) const;
 
     const scenes::Scene& _scene;
@@ -182,6 +184,7 @@ private:
     // The frame between requests() and plan().
     FrameInput _input;
     std::vector<display::ScreenView> _views;
+    glm::dmat4 _caveFromWorld{1.0};  // inverse(_input.worldFromCave), once per frame
     glm::dvec3 _eye{0.0};
     glm::dvec3 _lastEye{0.0};  // the last requests()' eye and time: the velocity
     double _lastTime = 0.0;

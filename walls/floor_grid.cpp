@@ -13,21 +13,11 @@ namespace {
 
 constexpr double kMaxCells = 16e6;  // a storey's grid, at most (coarser cells beyond)
 
-// The cell index range [first, last] whose centres lie in [lo, hi] along one axis.
-std::pair<int, int> centreRange(double lo, double hi, double origin, double cell, int n) {
-    const int first = std::max(0, static_cast<int>(std::ceil((lo - origin) / cell - 0.5)));
-    const int last = std::min(n - 1, static_cast<int>(std::floor((hi - origin) / cell - 0.5)));
-    return {first, last};
-}
-
 void markRect(FloorGrid& g, std::vector<std::uint8_t>& layer, glm::dvec2 lo, glm::dvec2 hi) {
-    const auto [i0, i1] = centreRange(lo.x, hi.x, g.origin.x, g.cellSize, g.nx);
-    const auto [k0, k1] = centreRange(lo.y, hi.y, g.origin.y, g.cellSize, g.nz);
-    for (int k = k0; k <= k1; ++k)
-        for (int i = i0; i <= i1; ++i) layer[g.index(i, k)] = 1;
+    const scenes::CellRange r = scenes::centresIn(g, lo, hi);
+    for (int k = r.k0; k <= r.k1; ++k)
+        for (int i = r.i0; i <= r.i1; ++i) layer[g.index(i, k)] = 1;
 }
-
-double cross2(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
 
 // An object's world triangles, one call per triangle.
 template <typename F>
@@ -165,19 +155,7 @@ void markWallRect(FloorGrid& g, glm::dvec2 lo, glm::dvec2 hi) { markRect(g, g.wa
 void markFloorRect(FloorGrid& g, glm::dvec2 lo, glm::dvec2 hi) { markRect(g, g.floor, lo, hi); }
 
 void markFloorTriangle(FloorGrid& g, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
-    const double area = cross2(b - a, c - a);
-    if (area == 0.0) return;
-    const glm::dvec2 lo = glm::min(a, glm::min(b, c)), hi = glm::max(a, glm::max(b, c));
-    const auto [i0, i1] = centreRange(lo.x, hi.x, g.origin.x, g.cellSize, g.nx);
-    const auto [k0, k1] = centreRange(lo.y, hi.y, g.origin.y, g.cellSize, g.nz);
-    const double sign = area > 0.0 ? 1.0 : -1.0;
-    for (int k = k0; k <= k1; ++k)
-        for (int i = i0; i <= i1; ++i) {
-            const glm::dvec2 p = g.centre(i, k);
-            if (sign * cross2(b - a, p - a) >= 0.0 && sign * cross2(c - b, p - b) >= 0.0 &&
-                sign * cross2(a - c, p - c) >= 0.0)
-                g.floor[g.index(i, k)] = 1;
-        }
+    scenes::markTriangle(g, a, b, c, g.floor);
 }
 
 StoreyGrid rasteriseStorey(const scenes::Scene& scene, double floorY, double ceilingY, glm::dvec2 lo, glm::dvec2 hi,

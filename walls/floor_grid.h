@@ -1,8 +1,9 @@
 #pragma once
 // A storey's floor plan as a 2D occupancy grid, rasterised from the geometry. GL-free.
 //
-// The grid covers an (x, z) rectangle in square cells of `cellSize` metres; cell (i, k) spans
-// x in [origin.x + i cellSize, + cellSize) and z likewise with k. Each cell holds two flags:
+// The grid covers an (x, z) rectangle in square cells of `cellSize` metres (a plan grid,
+// scenes/plan_raster.h: cell (i, k) spans x in [origin.x + i cellSize, + cellSize) and z likewise
+// with k). Each cell holds two flags:
 // wall (a slice through a wall element crosses it) and floor (walkable surface lies under it).
 //
 // The walking floor: a storey's floor found over a whole building can sit between a slab and
@@ -25,6 +26,7 @@
 // Floor cells: the upward triangles (normal within 10 degrees of +Y) whose mean height lies
 // within `floorTolerance` of floorY, filled at cell centres.
 
+#include "scenes/plan_raster.h"
 #include "scenes/scene.h"
 
 #include <glm/glm.hpp>
@@ -34,22 +36,9 @@
 
 namespace cavewall::walls {
 
-struct FloorGrid {
-    glm::dvec2 origin{0.0};  // (x, z) of cell (0, 0)'s lower corner
-    double cellSize = 0.1;   // metres
-    int nx = 0, nz = 0;
+// Cells and their (x, z) spans as scenes::PlanGrid (scenes/plan_raster.h).
+struct FloorGrid : scenes::PlanGrid {
     std::vector<std::uint8_t> wall, floor;  // nx * nz each, index k * nx + i, 0 or 1
-
-    int index(int i, int k) const { return k * nx + i; }
-    bool inside(int i, int k) const { return i >= 0 && k >= 0 && i < nx && k < nz; }
-    glm::dvec2 centre(int i, int k) const { return origin + cellSize * glm::dvec2(i + 0.5, k + 0.5); }
-    glm::dvec2 centre(int c) const { return centre(c % nx, c / nx); }
-    // The index of the cell holding (x, z) point p, -1 off the grid (or not finite).
-    int cellAt(glm::dvec2 p) const {
-        const glm::dvec2 q = glm::floor((p - origin) / cellSize);
-        if (!(q.x >= 0.0 && q.y >= 0.0 && q.x < nx && q.y < nz)) return -1;
-        return index(static_cast<int>(q.x), static_cast<int>(q.y));
-    }
 };
 
 // An empty grid (no wall, no floor) covering [lo, hi] with cells of `cellSize` (> 0).

@@ -137,5 +137,26 @@ TEST(Bvh, EmptySceneAndSceneConstructor) {
     EXPECT_EQ(Bvh(s).cull(clip, &cell1), std::vector<int>{0});
 }
 
+TEST(Bvh, CellSetsKeepAnObjectWhenAnyOfItsCellsIsDrawn) {
+    // Six boxes in view, each with its cell set: none (always kept), one cell, a negative
+    // cell, two cells, a cell beyond the mask, and the lowest int (as a negative cell).
+    const std::vector<std::vector<int>> sets = {{}, {1}, {-3}, {0, 2}, {5}, {std::numeric_limits<int>::min()}};
+    std::vector<Bounds> bounds;
+    for (std::size_t i = 0; i < sets.size(); ++i) {
+        const glm::dvec3 c(static_cast<double>(i) - 2.5, 0.0, -10.0);
+        bounds.push_back({c - 0.1, c + 0.1});
+    }
+    const Bvh bvh(bounds, sets);
+    const glm::dmat4 clip = reversedZ(90.0, 1.0, 0.1, std::numeric_limits<double>::infinity());
+    auto sorted = [](std::vector<int> v) {
+        std::sort(v.begin(), v.end());
+        return v;
+    };
+    EXPECT_EQ(sorted(bvh.cull(clip)), (std::vector<int>{0, 1, 2, 3, 4, 5}));
+    const std::vector<bool> cell1 = {false, true, false}, cells02 = {true, false, true};
+    EXPECT_EQ(sorted(bvh.cull(clip, &cell1)), (std::vector<int>{0, 1}));
+    EXPECT_EQ(sorted(bvh.cull(clip, &cells02)), (std::vector<int>{0, 3}));
+}
+
 }  // namespace
 }  // namespace cavewall::scenes

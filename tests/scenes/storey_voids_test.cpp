@@ -8,6 +8,7 @@
 // under the partition), so x [4, 10] is a double-height hall: a void. A roof at y 8 covers
 // x [-10, 10]. x [-14, -10] is a one-storey wing with its roof at y 4.6: no void.
 #include "scenes/cell_assignment.h"
+#include "scenes/region.h"
 #include "scenes/storey_voids.h"
 
 #include <gmock/gmock.h>
@@ -64,7 +65,9 @@ std::vector<double> tops() { return {4.0, INFINITY, INFINITY}; }
 
 TEST(StoreyVoids, TheHallOpenToTheStoreyAboveIsAVoidTheJointUnderAPartitionIsNot) {
     const Scene s = buildingScene();
-    const std::vector<PlanMask> voids = cellVoids(s, building(), tops());
+    std::vector<PlanRect> bounds;
+    for (const Cell& c : building()) bounds.push_back(regionBounds(c.region));
+    const std::vector<PlanMask> voids = cellVoids(s, building(), tops(), bounds);
     ASSERT_EQ(voids.size(), 3u);
     EXPECT_TRUE(voids[kA].empty()) << "A has nothing above it";
     EXPECT_NEAR(voids[kG].area(), 6.0 * 6.0, 6.0 * 0.25 * 2) << "the hall x [4, 10]";
