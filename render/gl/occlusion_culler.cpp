@@ -54,7 +54,8 @@ uniform mat4 uProjection;
 uniform ivec2 uViewport;  // size in pixels
 uniform int uLevels;
 
-ivec2 levelSize(int level) { return (uViewport + (1 << (level + 1)) - 1) >> (level + 1); }
+// Level k's texels cover 2^(k+2) pixels a side (level 0 reduces 4 x 4 pixels).
+ivec2 levelSize(int level) { return (uViewport + (1 << (level + 2)) - 1) >> (level + 2); }
 
 bool visible(uint record) {
     vec4 m0 = records[10u * record], m1 = records[10u * record + 1u], m2 = records[10u * record + 2u];
@@ -76,10 +77,10 @@ bool visible(uint record) {
     ivec2 first = clamp(ivec2(floor(a)), ivec2(0), uViewport - 1);
     ivec2 last = clamp(ivec2(ceil(b)) - 1, first, uViewport - 1);
     ivec2 extent = last - first + 1;
-    // The level whose texels (2^(level+1) pixels) are at least the box's extent: 2 x 2 texels.
-    int level = clamp(int(ceil(log2(float(max(extent.x, extent.y))))) - 1, 0, uLevels - 1);
+    // The level whose texels are at least the box's extent: it covers at most 2 x 2 of them.
+    int level = clamp(int(ceil(log2(float(max(extent.x, extent.y))))) - 2, 0, uLevels - 1);
     ivec2 top = levelSize(level) - 1;
-    ivec2 t0 = min(first >> (level + 1), top), t1 = min(last >> (level + 1), top);
+    ivec2 t0 = min(first >> (level + 2), top), t1 = min(last >> (level + 2), top);
     float farthest = 1.0;
     for (int y = t0.y; y <= t1.y; ++y)
         for (int x = t0.x; x <= t1.x; ++x) farthest = min(farthest, texelFetch(uPyramid, ivec2(x, y), level).r);
@@ -100,16 +101,41 @@ void main() {
 }
 )";
 
-// One pyramid level from the level below (or from the depth texture's viewport).
+// Level 0 from the depth texture's viewport: the farthest of each 4 x 4 pixels, four gathers of
+// 2 x 2 (a gather at the corner two texels share returns both rows of both). Quads are clamped
+// into the viewport, so only its pixels count.
+constexpr const char* kReduceFirst = R"(#version 450 core
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 7) uniform sampler2D uSource;
+layout(r32f, binding = 0) uniform writeonly image2D uTarget;
+uniform ivec2 uOffset;      // of the viewport in the depth texture
+uniform ivec2 uSourceSize;  // of the viewport
+uniform ivec2 uTargetSize;
+void main() {
+    ivec2 t = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(t, uTargetSize))) return;
+    vec2 texel = 1.0 / vec2(textureSize(uSource, 0));
+    ivec2 last = max(uSourceSize - 2, ivec2(0));
+    float d = 1.0;
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) {
+            ivec2 p = uOffset + min(4 * t + 2 * ivec2(i, j), last);
+            vec4 g = textureGather(uSource, (vec2(p) + 1.0) * texel, 0);
+            d = min(d, min(min(g.x, g.y), min(g.z, g.w)));
+        }
+    imageStore(uTarget, t, vec4(d));
+}
+)";
+
+// A pyramid level from the level below.
 constexpr const char* kReduce = R"(#version 450 core
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 7) uniform sampler2D uSource;
 layout(r32f, binding = 0) uniform writeonly image2D uTarget;
-uniform ivec2 uOffset;      // of the source region
-uniform ivec2 uSourceSize;  // of the source region
+uniform ivec2 uSourceSize;
 uniform ivec2 uTargetSize;
-uniform int uLevel;         // of the source
-float at(ivec2 p) { return texelFetch(uSource, uOffset + min(p, uSourceSize - 1), uLevel).r; }
+uniform int uLevel;  // of the source
+float at(ivec2 p) { return texelFetch(uSource, min(p, uSourceSize - 1), uLevel).r; }
 void main() {
     ivec2 t = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(t, uTargetSize))) return;
@@ -140,10 +166,16 @@ OcclusionCuller::OcclusionCuller(std::size_t objectCount) : _objects(objectCount
     _selectProgram = display::gl::buildComputeProgram("occlusion: seen", std::string(kCullCommon) + kSelectSeen);
     _testProgram = display::gl::buildComputeProgram("occlusion: revealed", std::string(kCullCommon) + kSelectRevealed);
     _reduceProgram = display::gl::buildComputeProgram("occlusion: pyramid", kReduce);
+    _reduceFirstProgram = display::gl::buildComputeProgram("occlusion: pyramid base", kReduceFirst);
+    _firstOffset = uniformLocation(_reduceFirstProgram.id(), "occlusion: pyramid base", "uOffset");
+    _firstSourceSize = uniformLocation(_reduceFirstProgram.id(), "occlusion: pyramid base", "uSourceSize");
+    _firstTargetSize = uniformLocation(_reduceFirstProgram.id(), "occlusion: pyramid base", "uTargetSize");
     _sampler = display::gl::createSampler();
     glSamplerParameteri(_sampler.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
     glSamplerParameteri(_sampler.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glSamplerParameteri(_sampler.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glSamplerParameteri(_sampler.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(_sampler.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     _selectCount = uniformLocation(_selectProgram.id(), "occlusion: seen", "uCount");
     _selectFirstBlended = uniformLocation(_selectProgram.id(), "occlusion: seen", "uFirstBlended");
     _testCount = uniformLocation(_testProgram.id(), "occlusion: revealed", "uCount");
@@ -151,7 +183,6 @@ OcclusionCuller::OcclusionCuller(std::size_t objectCount) : _objects(objectCount
     _testProjection = uniformLocation(_testProgram.id(), "occlusion: revealed", "uProjection");
     _testViewport = uniformLocation(_testProgram.id(), "occlusion: revealed", "uViewport");
     _testLevels = uniformLocation(_testProgram.id(), "occlusion: revealed", "uLevels");
-    _reduceOffset = uniformLocation(_reduceProgram.id(), "occlusion: pyramid", "uOffset");
     _reduceSourceSize = uniformLocation(_reduceProgram.id(), "occlusion: pyramid", "uSourceSize");
     _reduceTargetSize = uniformLocation(_reduceProgram.id(), "occlusion: pyramid", "uTargetSize");
     _reduceLevel = uniformLocation(_reduceProgram.id(), "occlusion: pyramid", "uLevel");
@@ -180,35 +211,45 @@ void OcclusionCuller::selectSeen(std::uint64_t slot, const CullBuffers& buffers)
 
 void OcclusionCuller::buildPyramid(GLuint depthTexture, glm::ivec4 viewport) {
     const glm::ivec2 size(viewport.z, viewport.w);
-    const glm::ivec2 level0 = (size + 1) / 2;
-    if (level0.x > _pyramidSize.x || level0.y > _pyramidSize.y) {
-        _pyramidSize = glm::max(level0, _pyramidSize);
-        _pyramidLevels = 1;
-        for (int m = std::max(_pyramidSize.x, _pyramidSize.y); m > 1; m = (m + 1) / 2) ++_pyramidLevels;
-        _pyramid = display::gl::createTexture(GL_TEXTURE_2D);
-        glTextureStorage2D(_pyramid.id(), _pyramidLevels, GL_R32F, _pyramidSize.x, _pyramidSize.y);
-        glTextureParameteri(_pyramid.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
-        glTextureParameteri(_pyramid.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    }
-    glUseProgram(_reduceProgram.id());
+    const glm::ivec2 level0 = (size + 3) / 4;
+    if (level0.x > _pyramidSize.x || level0.y > _pyramidSize.y) allocatePyramid(glm::max(level0, _pyramidSize));
     glBindSampler(kPyramidUnit, _sampler.id());
-    glm::ivec2 source = size;
-    _levels = 0;
-    for (int level = 0; level == 0 || source.x > 1 || source.y > 1; ++level) {
+    glUseProgram(_reduceFirstProgram.id());
+    glBindTextureUnit(kPyramidUnit, depthTexture);
+    glBindImageTexture(0, _pyramid.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glUniform2i(_firstOffset, viewport.x, viewport.y);
+    glUniform2i(_firstSourceSize, size.x, size.y);
+    glUniform2i(_firstTargetSize, level0.x, level0.y);
+    dispatch2d(level0);
+    glUseProgram(_reduceProgram.id());
+    glBindTextureUnit(kPyramidUnit, _pyramid.id());
+    glm::ivec2 source = level0;
+    _levels = 1;
+    for (int level = 1; source.x > 1 || source.y > 1; ++level) {
         const glm::ivec2 target = (source + 1) / 2;
-        glBindTextureUnit(kPyramidUnit, level == 0 ? depthTexture : _pyramid.id());
         glBindImageTexture(0, _pyramid.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-        glUniform2i(_reduceOffset, level == 0 ? viewport.x : 0, level == 0 ? viewport.y : 0);
         glUniform2i(_reduceSourceSize, source.x, source.y);
         glUniform2i(_reduceTargetSize, target.x, target.y);
-        glUniform1i(_reduceLevel, level == 0 ? 0 : level - 1);
-        glDispatchCompute(groups(static_cast<std::uint32_t>(target.x), 8),
-                          groups(static_cast<std::uint32_t>(target.y), 8), 1);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        glUniform1i(_reduceLevel, level - 1);
+        dispatch2d(target);
         source = target;
         ++_levels;
     }
     _viewportSize = size;
+}
+
+void OcclusionCuller::allocatePyramid(glm::ivec2 size) {
+    _pyramidSize = size;
+    _pyramidLevels = 1;
+    for (int m = std::max(size.x, size.y); m > 1; m = (m + 1) / 2) ++_pyramidLevels;
+    _pyramid = display::gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(_pyramid.id(), _pyramidLevels, GL_R32F, size.x, size.y);
+}
+
+// One 8 x 8 group per 8 x 8 texels of `size`, then a barrier for the next level's reads.
+void OcclusionCuller::dispatch2d(glm::ivec2 size) {
+    glDispatchCompute(groups(static_cast<std::uint32_t>(size.x), 8), groups(static_cast<std::uint32_t>(size.y), 8), 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
 void OcclusionCuller::selectRevealed(std::uint64_t slot, const CullBuffers& buffers, const glm::mat4& projection) {

@@ -4,8 +4,9 @@
 // split in two so that nothing visible is ever left out):
 //   1. `selectSeen` turns on the draws of the objects this view's slot saw last frame (opaque
 //      draws only) and the caller draws them.
-//   2. `buildPyramid` reduces the depth drawn so far to a hierarchical-Z pyramid (each texel the
-//      farthest depth of the 2 x 2 below it; reversed-Z, so the minimum), and `selectRevealed`
+//   2. `buildPyramid` reduces the depth drawn so far to a hierarchical-Z pyramid (level 0 the
+//      farthest depth of each 4 x 4 pixels, each level above the farthest of the 2 x 2 texels
+//      below it; reversed-Z, so the minimum), and `selectRevealed`
 //      tests every draw's box against it: a draw whose box is nearer than the farthest depth
 //      under it somewhere is visible. The caller draws the visible draws phase 1 left out (and
 //      the visible blended draws), and the slot remembers what is visible for its next frame.
@@ -66,12 +67,15 @@ public:
 
 private:
     GLuint slotBuffer(std::uint64_t slot);
+    void allocatePyramid(glm::ivec2 size);
+    static void dispatch2d(glm::ivec2 size);
     void bindCommon(const CullBuffers& buffers, GLuint visible);
 
     std::size_t _objects;
-    display::gl::GlObject _selectProgram, _reduceProgram, _testProgram;
+    display::gl::GlObject _selectProgram, _reduceFirstProgram, _reduceProgram, _testProgram;
+    GLint _firstOffset = -1, _firstSourceSize = -1, _firstTargetSize = -1;
     GLint _selectCount = -1, _selectFirstBlended = -1;
-    GLint _reduceOffset = -1, _reduceSourceSize = -1, _reduceTargetSize = -1, _reduceLevel = -1;
+    GLint _reduceSourceSize = -1, _reduceTargetSize = -1, _reduceLevel = -1;
     GLint _testCount = -1, _testFirstBlended = -1, _testProjection = -1, _testViewport = -1, _testLevels = -1;
     display::gl::GlObject _sampler;  // nearest texel, for the depth textures and the pyramid
     display::gl::GlObject _pyramid;  // R32F, mip levels
