@@ -31,7 +31,7 @@ const char* const kBenchUsage =
     "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
     "                      [--walls flat|depth] [--hierarchy [--hierarchy-budgets T1,T2,...]]\n"
     "                      [--compare-scene OTHER,...] [--on-demand] [--texture-format rgba8|bc1|bc3]\n"
-    "                      [--occlusion]\n"
+    "                      [--no-occlusion] [--occlusion-min N]\n"
     "       cavewall bench --scale 2M,8M,32M [--data DIR] [--scale-metres M] [--frames N] [--resolution N]\n"
     "                      [--triangle-budget N|near] [--lod-max PX] [--min-zone M] [--walls flat|depth|flat,depth]\n"
     "                      [--display D] [--bake-resolution N] [--geometry-budget MB] [--lod PX] [--compare-every K]\n"
@@ -64,9 +64,10 @@ const char* const kBenchUsage =
     "         alpha (blend, and with levels of detail), with their own plan and bake, drawn\n"
     "         frame by frame in turn with the depth walls ('walls flat a=10 blend' beside\n"
     "         'walls depth a=10 blend'): both kinds' times, image and stereo errors in the same seconds.\n"
-    "         --occlusion: every mode culls on the GPU what the depth it has drawn hides (each\n"
-    "         view draws what it saw last frame, then what that depth does not hide; the same\n"
-    "         images), full geometry included; triangles a frame are then those drawn.\n"
+    "         Every mode culls on the GPU what the depth it has drawn hides (each view draws what\n"
+    "         it saw last frame, then what that depth does not hide; the same images), full\n"
+    "         geometry included, in views whose list submits at least --occlusion-min N triangles\n"
+    "         (default 100000); triangles a frame are those drawn. --no-occlusion: none.\n"
     "         --texture-format: storage of the baked colour (as `cavewall bake`, default\n"
     "         " DEFAULT_TEXTURE_FORMAT
     "); the disk and GPU MB columns and the image error include it.\n"
@@ -277,7 +278,9 @@ int runSceneBench(const Args& args) {
     o.flatBeside = kinds == "flat,depth";
     o.wallKind = kinds == "flat" ? walls::WallKind::Flat : walls::WallKind::Depth;
     o.keepSheets = args.has("keep-sheets");
-    o.occlusion = args.has("occlusion");
+    const OcclusionFlags occlusion = parseOcclusion(args);
+    o.occlusion = occlusion.on;
+    o.occlusionMinTriangles = occlusion.minTriangles;
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.clusters = args.has(args.renamed("hierarchy", "clusters"));
     const std::string_view budgets = args.renamed("hierarchy-budgets", "cluster-budgets");
@@ -353,12 +356,12 @@ int runScaleBench(const Args& args) {
 }  // namespace
 
 int runBench(const std::vector<std::string>& words) {
-    const Args args(words,
-                    {"stability", "quick", "hierarchy", "clusters", "on-demand", "keep-sheets", "mono", "occlusion"});
+    const Args args(words, {"stability", "quick", "hierarchy", "clusters", "on-demand", "keep-sheets", "mono",
+                            "occlusion", "no-occlusion"});
     // One flag list, packed.
     // clang-format off
     args.expectFlags({
-        "stability", "quick", "keep-sheets", "mono", "occlusion", "display", "path", "route", "out", "frames", "resolution", "stereo", "cache",
+        "stability", "quick", "keep-sheets", "mono", "occlusion", "no-occlusion", "occlusion-min", "display", "path", "route", "out", "frames", "resolution", "stereo", "cache",
         "compare-every", "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod",
         "triangle-budget", "frame-budget-ms", "lod-max", "walls", "hierarchy", "hierarchy-budgets", "clusters",
         "cluster-budgets", "compare-scene", "on-demand", "scale", "data", "scale-metres", "geometry-budget",

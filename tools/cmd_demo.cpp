@@ -19,7 +19,7 @@ namespace cavewall::tools {
 
 const char* const kDemoUsage =
     "usage: cavewall demo [--out DIR] [--frames N] [--resolution PX] [--triangles N] [--lod PX]\n"
-    "                     [--texture-format rgba8|bc1|bc3] [--walls depth|flat]\n"
+    "                     [--texture-format rgba8|bc1|bc3] [--walls depth|flat] [--no-occlusion]\n"
     "\n"
     "The main job: generates the default plant (into $CAVEWALL_CACHE or, without it, cache/\n"
     "beside the cavewall executable), plans and bakes its virtual walls (cached by content),\n"
@@ -45,6 +45,8 @@ const char* const kDemoUsage =
     ").\n"
     "--walls: depth walls by default, as `cavewall run` (the bench's recommended walls mode on\n"
     "the plant, docs/benchmarking.md); --walls flat walks flat walls instead.\n"
+    "All four runs cull on the GPU what the depth drawn so far hides, as `cavewall run` does (the\n"
+    "same images); --no-occlusion: none.\n"
     "report.md states the resolution, the stereo mode and the machine's load average at the\n"
     "start and the end, applies the bench's rule to the four runs (the recommended walls mode)\n"
     "and embeds their trade-off plot, bench.png, when gnuplot is installed.\n";
@@ -147,6 +149,10 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
       << "- resolution: " << resolutionText(o.display) << "; stereo mode: " << config::toString(o.display.stereo)
       << "\n- walls: " << kindName(o) << " (`--walls " << walls::wallKindName(o.wallKind)
       << "`; the default is the bench's recommended walls mode on the plant, docs/benchmarking.md)"
+      << "\n- occlusion culling: "
+      << (o.occlusion ? "on in all four runs, in views whose list submits at least " +
+                            std::to_string(o.occlusionMinTriangles) + " triangles"
+                      : std::string("off (`--no-occlusion`)"))
       << "\n- machine load (/proc/loadavg, 1, 5 and 15 minutes): " << d.loadStart << " at the start, " << d.loadEnd
       << " at the end\n\n";
     const std::string wallsColumn = kindName(o) + (d.lod ? " + levels of detail" : "");
@@ -195,8 +201,9 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
 }  // namespace
 
 int runDemo(const std::vector<std::string>& words) {
-    const Args args(words, {"mono"});
-    args.expectFlags({"out", "frames", "resolution", "triangles", "lod", "texture-format", "walls", "mono"});
+    const Args args(words, {"mono", "occlusion", "no-occlusion"});
+    args.expectFlags({"out", "frames", "resolution", "triangles", "lod", "texture-format", "walls", "mono", "occlusion",
+                      "no-occlusion", "occlusion-min"});
     const std::filesystem::path out = args.getOr("out", "demo-out");
     const std::filesystem::path cache = cacheFolder();
     app::RunOptions o;
@@ -223,6 +230,9 @@ int runDemo(const std::vector<std::string>& words) {
     o.lodPixels = args.number("lod", 1.0, 0.0, 1e4);
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.wallKind = args.choice("walls", walls::kWallKindNames, o.wallKind);
+    const OcclusionFlags occlusion = parseOcclusion(args);
+    o.occlusion = occlusion.on;
+    o.occlusionMinTriangles = occlusion.minTriangles;
     const std::string loadStart = bench::loadAverage();
     std::cout << "demo: cave4 at " << resolutionText(o.display) << ", stereo mode "
               << config::toString(o.display.stereo) << ", " << kindName(o) << " at alpha " << o.plan.alphaDeg

@@ -114,8 +114,18 @@ void parseBakingAndClusters(const Args& args, app::RunOptions& o) {
 }  // namespace
 
 Args sessionArgs(const std::vector<std::string>& words) {
-    return Args(words, {"headless", "window", "no-walls", "no-textures", "sync-paging", "cluster", "hierarchy",
-                        "clusters", "bake-on-demand", "bake-first", "save-window", "mono", "keep-sheets", "occlusion"});
+    return Args(words,
+                {"headless", "window", "no-walls", "no-textures", "sync-paging", "cluster", "hierarchy", "clusters",
+                 "bake-on-demand", "bake-first", "save-window", "mono", "keep-sheets", "occlusion", "no-occlusion"});
+}
+
+OcclusionFlags parseOcclusion(const Args& args) {
+    if (args.has("occlusion") && args.has("no-occlusion"))
+        throw Error("--occlusion and --no-occlusion: expected one of them, got both");
+    OcclusionFlags f;
+    f.on = !args.has("no-occlusion");
+    f.minTriangles = static_cast<std::size_t>(args.integer("occlusion-min", 100000, 0, 1000000000));
+    return f;
 }
 
 std::vector<std::string_view> sessionFlags() {
@@ -128,7 +138,8 @@ std::vector<std::string_view> sessionFlags() {
         "triangle-budget", "frame-budget-ms", "lod-max", "walls", "hierarchy", "hierarchy-divisions",
         "hierarchy-res", "hierarchy-fade", "clusters", "cluster-divisions", "cluster-res", "cluster-fade",
         "bake-on-demand", "bake-first", "cache-budget", "bake-interleave", "bake-nice", "texture-format",
-        "texture-max", "texture-budget", "resolution", "mono", "keep-sheets", "occlusion"};
+        "texture-max", "texture-budget", "resolution", "mono", "keep-sheets", "occlusion", "no-occlusion",
+        "occlusion-min"};
     // clang-format on
 }
 
@@ -156,7 +167,9 @@ app::RunOptions parseSessionOptions(const Args& args, app::RunOptions o) {
         for (config::Screen& screen : o.display.screens) screen.resolution = *pixels;
     applyMono(args, o.display);
     o.keepSheets = args.has("keep-sheets");
-    o.occlusion = args.has("occlusion");
+    const OcclusionFlags occlusion = parseOcclusion(args);
+    o.occlusion = occlusion.on;
+    o.occlusionMinTriangles = occlusion.minTriangles;
     o.tracker = args.getOr("tracker", o.tracker);
     o.frames = args.integer("frames", o.frames, 0, 10000000);
     o.out = args.getOr("out", o.out.string());

@@ -90,6 +90,11 @@ struct RenderSettings {
     // the saving depends on how much of the drawn list is hidden. Off: everything in the list
     // is drawn.
     bool occlusionCulling = false;
+    // With occlusion culling, a view whose list submits fewer triangles than this is drawn
+    // whole: culling has a cost of its own per view (the pyramid, the second phase). 100,000 is
+    // where it paid on llvmpipe at 1024 x 1024 per view on the clinic (docs/benchmarking.md,
+    // "Occlusion culling"); a GPU's break-even differs. 0: every list is culled.
+    std::size_t occlusionMinTriangles = 100000;
 };
 
 // ViewStats and FrameStats: display/frame_stats.h.

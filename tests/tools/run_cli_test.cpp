@@ -280,6 +280,10 @@ TEST(RunCli, BadFlagsAndSpecsGiveClearErrors) {
         {"both budgets",
          {"--lod", "1", "--frame-budget-ms", "16.7", "--triangle-budget", "5000"},
          "--frame-budget-ms and --triangle-budget: expected one of them, got both"},
+        {"occlusion on and off",
+         {"--occlusion", "--no-occlusion"},
+         "--occlusion and --no-occlusion: expected one of them, got both"},
+        {"occlusion threshold", {"--occlusion-min", "-1"}, "--occlusion-min: expected an integer in [0, "},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
@@ -413,14 +417,18 @@ TEST(RunCli, ReplayReproducesPosesAndFramesExactly) {
         }
 }
 
-// Occlusion culling on the GPU changes what is drawn, never the image: the same walk with and
-// without --occlusion writes the same PNG files, byte for byte, walls and all.
+// Occlusion culling on the GPU changes what is drawn, never the image: the same walk with every
+// list culled and with none writes the same PNG files, byte for byte, walls and all.
 TEST(RunCli, OcclusionCullingDrawsTheSameFrames) {
     const fs::path plain = outputDir("occlusion-off"), culled = outputDir("occlusion-on");
     for (const fs::path& out : {plain, culled}) {
         std::vector<std::string> args = wallRun(out, "sim:walk?seed=3", 21);
         args.insert(args.end(), {"--save-frames", "every:10", "--sync-paging", "--pace", "3"});
-        if (out == culled) args.push_back("--occlusion");
+        // The small plant's lists are under the default threshold: cull them all, or none.
+        if (out == culled)
+            args.insert(args.end(), {"--occlusion-min", "0"});
+        else
+            args.push_back("--no-occlusion");
         const CliResult r = runCavewall(args);
         ASSERT_EQ(r.exitCode, 0) << r.err;
     }

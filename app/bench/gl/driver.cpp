@@ -129,10 +129,12 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                                     "raise that tolerance to at most " +
                                     config::formatNumber(o.lodMaxPixels) + " px"
                               : "lod: off (--lod 0)",
-            o.occlusion ? "occlusion culling: on in every mode (GPU, two phases per view: what the view saw last "
-                          "frame, then what the depth drawn so far does not hide; the same images); triangles a "
-                          "frame are those drawn"
-                        : "occlusion culling: off (every mode draws what its frustum and cells keep)"};
+            o.occlusion ? "occlusion culling: on in every mode, in views whose list submits at least " +
+                              std::to_string(o.occlusionMinTriangles) +
+                              " triangles (GPU, two phases per view: what the view saw last frame, then what the depth "
+                              "drawn so far does not hide; the same images); triangles a frame are those drawn"
+                        : std::string("occlusion culling: off (--no-occlusion; every mode draws what its frustum and "
+                                      "cells keep)")};
 }
 
 // The checks that need no file: they fail before anything is loaded.
@@ -464,7 +466,8 @@ BenchReport runBenchmark(const BenchOptions& o) {
                         o.wallKind,
                         o.clusters ? (o.cache ? *o.cache : walls::gl::defaultCacheFolder()) : std::filesystem::path(),
                         walls::ReprojectSettings{.cutSheets = !o.keepSheets},
-                        o.occlusion};
+                        o.occlusion,
+                        o.occlusionMinTriangles};
 
     const std::vector<BakedWalls> baked = bakeOwnWalls(o, o.wallKind, scene, description, *context, report);
     const std::vector<BakedWalls> flatBaked =

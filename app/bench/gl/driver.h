@@ -81,9 +81,11 @@ struct BenchOptions {
     // walls (flat against depth walls in the same seconds, stereo error included)
     bool flatBeside = false;
     bool keepSheets = false;  // --keep-sheets: depth walls keep their rubber sheets (to measure the cut)
-    // --occlusion: every mode's scene renderer culls what the depth drawn so far hides
-    // (RenderSettings::occlusionCulling); triangles a frame are then those drawn.
-    bool occlusion = false;
+    // Every mode's scene renderer culls what the depth drawn so far hides
+    // (RenderSettings::occlusionCulling, --no-occlusion: off), in views whose list submits at
+    // least occlusionMinTriangles (--occlusion-min); triangles a frame are then those drawn.
+    bool occlusion = true;
+    std::size_t occlusionMinTriangles = 100000;
     // --texture-format: storage of the baked colour (walls/texture_blocks.h), disk and GPU
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
     std::optional<std::filesystem::path> cache;  // bake cache (default: the baker's)

@@ -39,11 +39,11 @@ int keptFallbacks(const walkthrough::FrameResult& r) {
     return kept;
 }
 
-// With occlusion culling, the frame's triangles are those drawn, not those submitted.
-void countDrawn(walkthrough::gl::Walkthrough& w, walkthrough::FrameResult& r) {
+// With occlusion culling, the triangles of the last frame that were submitted but not drawn
+// (the mode's triangles a frame are those drawn); 0 without it.
+double trianglesCulled(walkthrough::gl::Walkthrough& w) {
     const std::optional<render::gl::OcclusionCounts> counts = w.readOcclusionCounts();
-    if (!counts) return;
-    r.stats.triangles -= std::min<std::size_t>(r.stats.triangles, counts->trianglesSubmitted - counts->trianglesDrawn);
+    return counts ? static_cast<double>(counts->trianglesSubmitted - counts->trianglesDrawn) : 0.0;
 }
 
 FrameCost frameCost(const walkthrough::FrameResult& r) {
@@ -216,14 +216,15 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         std::unique_ptr<walkthrough::gl::Walkthrough> walkthrough;
         std::optional<display::FrameTimeBudget> frameBudget;    // levels of detail: triangles
         std::optional<hierarchy::ClusterBudget> clusterBudget;  // clusters: predicted ms
-        std::vector<double> warmTriangles;
+        std::vector<double> warmTriangles;                      // submitted (what a triangle budget caps)
+        double culled = 0.0;  // by occlusion culling in the last frame (trianglesCulled)
     };
     std::vector<Live> live(runs.size());
     auto render = [](Live& l, walkthrough::FrameInput in) {  // as app/gl/run_session.cpp
         if (l.frameBudget) in.triangleBudget = l.frameBudget->budget();
         if (l.clusterBudget) in.clusterBudgetMs = walkthrough::clusterBudgetFor(*l.clusterBudget);
         walkthrough::FrameResult r = l.walkthrough->renderFrame(in);
-        countDrawn(*l.walkthrough, r);
+        l.culled = trianglesCulled(*l.walkthrough);
         if (l.frameBudget) l.frameBudget->update(r.frameMs, r.geometryTriangles);
         if (l.clusterBudget) walkthrough::controlClusters(*l.clusterBudget, r);
         return r;
@@ -242,6 +243,7 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         options.transition = run.transition;
         options.render.lodPixels = mode.lodPixels;
         options.render.occlusionCulling = c.occlusion;
+        options.render.occlusionMinTriangles = c.occlusionMinTriangles;
         options.triangleBudget = mode.triangleBudget;
         options.lodMaxPixels = c.lodMaxPixels;
         options.wallKind = run.wallKind.value_or(c.wallKind);
@@ -276,7 +278,9 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         in.readDepth = in.readImages && readsDepth(c);
         for (std::size_t i = 0; i < runs.size(); ++i) {
             walkthrough::FrameResult r = render(live[i], in);
-            runs[i].acc->addFrame(frameCost(r));
+            FrameCost cost = frameCost(r);
+            cost.triangles -= live[i].culled;
+            runs[i].acc->addFrame(cost);
             if (!in.readImages) continue;
             if (runs[i].storeReference)
                 reference[in.frame] = {std::move(r.images), std::move(r.depths)};
@@ -294,6 +298,7 @@ double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, walls::gl::
     options.wallKind = c.wallKind;
     options.depthMarch = c.depthMarch;
     options.render.occlusionCulling = c.occlusion;
+    options.render.occlusionMinTriangles = c.occlusionMinTriangles;
     walkthrough::gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
     if (c.path.frames.empty()) return display::msSince(start) / 1000.0;
     walkthrough.renderFrame(c.path.frames.front());
@@ -303,8 +308,9 @@ double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, walls::gl::
         in.readImages = compared(c, in.frame);
         in.readDepth = in.readImages && readsDepth(c);
         walkthrough::FrameResult r = walkthrough.renderFrame(in);
-        countDrawn(walkthrough, r);
-        acc.addFrame(frameCost(r));
+        FrameCost cost = frameCost(r);
+        cost.triangles -= trianglesCulled(walkthrough);
+        acc.addFrame(cost);
         if (in.readImages) acc.compare(in.frame, in.head, r.images, r.depths, reference.at(in.frame));
     }
     return firstFrameSeconds;
@@ -318,6 +324,7 @@ NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::Wall
     options.uploadMBPerFrame = 4096.0;
     options.render.lodPixels = mode.lodPixels;
     options.render.occlusionCulling = c.occlusion;
+    options.render.occlusionMinTriangles = c.occlusionMinTriangles;
     options.triangleBudget = mode.triangleBudget;
     options.lodMaxPixels = c.lodMaxPixels;
     options.wallKind = c.wallKind;
@@ -409,6 +416,7 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
     render::gl::RenderSettings settings;
     settings.lodPixels = runs.front().acc->mode().lodPixels;
     settings.occlusionCulling = c.occlusion;
+    settings.occlusionMinTriangles = c.occlusionMinTriangles;
     for ([[maybe_unused]] const CellRun& r : runs) assert(r.acc->mode().lodPixels == settings.lodPixels);
     render::gl::SceneRenderer renderer(c.scene, settings);
     // The limit draws every wall of the viewer's cell as a bare quad: one 1x1 texture through

@@ -105,6 +105,7 @@ struct ModeContext {
     std::filesystem::path clusterCache;                // ClusterOptions::cache of the clusters modes
     walls::ReprojectSettings depthMarch;               // WalkthroughOptions::depthMarch
     bool occlusion = false;                            // RenderSettings::occlusionCulling of every mode
+    std::size_t occlusionMinTriangles = 100000;        // RenderSettings::occlusionMinTriangles
 };
 
 // One walkthrough mode of a runWalkthroughModes call.

@@ -53,13 +53,14 @@ scenes::Scene wallAndBoxes() {
 class OcclusionTest : public testing::GlTest {
 protected:
     // Renders the eye positions in turn with and without culling; every image must be the same.
-    void expectSameImages(const std::vector<glm::dvec3>& eyes) {
+    void expectSameImages(const std::vector<glm::dvec3>& eyes, std::size_t minTriangles = 0) {
         const scenes::Scene scene = wallAndBoxes();
         const display::Display display(testing::oneScreenDisplay(128));
         const display::gl::RenderTargets plainTargets(display, *context), culledTargets(display, *context);
         SceneRenderer plain(scene);
         RenderSettings settings;
         settings.occlusionCulling = true;
+        settings.occlusionMinTriangles = minTriangles;
         SceneRenderer culled(scene, settings);
         for (std::size_t i = 0; i < eyes.size(); ++i) {
             const display::HeadPose head{eyes[i], glm::dquat(1, 0, 0, 0)};
@@ -101,6 +102,17 @@ TEST_F(OcclusionTest, ObjectsComingIntoViewAreDrawnInTheirFirstFrame) {
     auto share = [&](std::size_t i) { return double(counts[i].drawsDrawn) / double(counts[i].drawsSubmitted); };
     EXPECT_GT(share(6), 1.5 * share(2)) << counts[6].drawsDrawn << " of " << counts[6].drawsSubmitted << " against "
                                         << counts[2].drawsDrawn << " of " << counts[2].drawsSubmitted;
+}
+
+TEST_F(OcclusionTest, ListsBelowTheThresholdAreDrawnWhole) {
+    // The scene submits about 4,400 triangles: under a threshold of 5,000 nothing goes through
+    // the culler (no draws counted), at 4,000 everything does.
+    expectSameImages({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, 5000);
+    for (const OcclusionCounts& c : counts) EXPECT_EQ(c.drawsSubmitted, 0u);
+    counts.clear();
+    expectSameImages({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, 4000);
+    EXPECT_GT(counts.back().drawsSubmitted, 300u);
+    EXPECT_LT(counts.back().trianglesDrawn * 2, counts.back().trianglesSubmitted);
 }
 
 }  // namespace
