@@ -92,7 +92,7 @@ struct RunOptions {
     // plant (docs/benchmarking.md, "The recommended walls mode")
     walls::WallKind wallKind = walls::WallKind::Depth;
     bool keepSheets = false;  // --keep-sheets: depth walls keep their rubber sheets (to measure the cut)
-    bool occlusion = true;    // --no-occlusion turns RenderSettings::occlusionCulling off
+    bool occlusion = false;   // --occlusion: RenderSettings::occlusionCulling
     std::size_t occlusionMinTriangles = 100000;  // --occlusion-min: RenderSettings::occlusionMinTriangles
     // --texture-format: storage of baked colour (walls/texture_blocks.h; keys the bake cache)
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
