@@ -94,6 +94,7 @@ struct RunOptions {
     bool keepSheets = false;  // --keep-sheets: depth walls keep their rubber sheets (to measure the cut)
     bool occlusion = false;   // --occlusion: RenderSettings::occlusionCulling
     std::size_t occlusionMinTriangles = 100000;  // --occlusion-min: RenderSettings::occlusionMinTriangles
+    std::size_t occlusionMinDraws = 500;         // --occlusion-min-draws: RenderSettings::occlusionMinDraws
     // --texture-format: storage of baked colour (walls/texture_blocks.h; keys the bake cache)
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
     std::optional<std::filesystem::path> cache;   // bake cache folder (default: the baker's)

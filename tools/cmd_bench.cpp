@@ -31,7 +31,7 @@ const char* const kBenchUsage =
     "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
     "                      [--walls flat|depth] [--hierarchy [--hierarchy-budgets T1,T2,...]]\n"
     "                      [--compare-scene OTHER,...] [--on-demand] [--texture-format rgba8|bc1|bc3]\n"
-    "                      [--occlusion [--occlusion-min N]]\n"
+    "                      [--occlusion [--occlusion-min N] [--occlusion-min-draws D]]\n"
     "       cavewall bench --scale 2M,8M,32M [--data DIR] [--scale-metres M] [--frames N] [--resolution N]\n"
     "                      [--triangle-budget N|near] [--lod-max PX] [--min-zone M] [--walls flat|depth|flat,depth]\n"
     "                      [--display D] [--bake-resolution N] [--geometry-budget MB] [--lod PX] [--compare-every K]\n"
@@ -67,7 +67,8 @@ const char* const kBenchUsage =
     "         --occlusion: every mode culls on the GPU what the depth it has drawn hides (each\n"
     "         view draws what it saw last frame, then what that depth does not hide; the same\n"
     "         images), full geometry included, in views whose list submits at least\n"
-    "         --occlusion-min N triangles (default 100000); triangles a frame are those drawn.\n"
+    "         --occlusion-min N triangles (default 100000) in at least --occlusion-min-draws D\n"
+    "         draws (default 500); triangles a frame are those drawn.\n"
     "         --texture-format: storage of the baked colour (as `cavewall bake`, default\n"
     "         " DEFAULT_TEXTURE_FORMAT
     "); the disk and GPU MB columns and the image error include it.\n"
@@ -281,6 +282,7 @@ int runSceneBench(const Args& args) {
     const OcclusionFlags occlusion = parseOcclusion(args);
     o.occlusion = occlusion.on;
     o.occlusionMinTriangles = occlusion.minTriangles;
+    o.occlusionMinDraws = occlusion.minDraws;
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.clusters = args.has(args.renamed("hierarchy", "clusters"));
     const std::string_view budgets = args.renamed("hierarchy-budgets", "cluster-budgets");
@@ -361,7 +363,7 @@ int runBench(const std::vector<std::string>& words) {
     // One flag list, packed.
     // clang-format off
     args.expectFlags({
-        "stability", "quick", "keep-sheets", "mono", "occlusion", "no-occlusion", "occlusion-min", "display", "path", "route", "out", "frames", "resolution", "stereo", "cache",
+        "stability", "quick", "keep-sheets", "mono", "occlusion", "no-occlusion", "occlusion-min", "occlusion-min-draws", "display", "path", "route", "out", "frames", "resolution", "stereo", "cache",
         "compare-every", "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod",
         "triangle-budget", "frame-budget-ms", "lod-max", "walls", "hierarchy", "hierarchy-budgets", "clusters",
         "cluster-budgets", "compare-scene", "on-demand", "scale", "data", "scale-metres", "geometry-budget",

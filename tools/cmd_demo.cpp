@@ -150,9 +150,10 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
       << "\n- walls: " << kindName(o) << " (`--walls " << walls::wallKindName(o.wallKind)
       << "`; the default is the bench's recommended walls mode on the plant, docs/benchmarking.md)"
       << "\n- occlusion culling: "
-      << (o.occlusion ? "on in all four runs, in views whose list submits at least " +
-                            std::to_string(o.occlusionMinTriangles) + " triangles"
-                      : std::string("off"))
+      << (o.occlusion
+              ? "on in all four runs, in views whose list submits at least " + std::to_string(o.occlusionMinTriangles) +
+                    " triangles in at least " + std::to_string(o.occlusionMinDraws) + " draws"
+              : std::string("off"))
       << "\n- machine load (/proc/loadavg, 1, 5 and 15 minutes): " << d.loadStart << " at the start, " << d.loadEnd
       << " at the end\n\n";
     const std::string wallsColumn = kindName(o) + (d.lod ? " + levels of detail" : "");
@@ -203,7 +204,7 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
 int runDemo(const std::vector<std::string>& words) {
     const Args args(words, {"mono", "occlusion", "no-occlusion"});
     args.expectFlags({"out", "frames", "resolution", "triangles", "lod", "texture-format", "walls", "mono", "occlusion",
-                      "no-occlusion", "occlusion-min"});
+                      "no-occlusion", "occlusion-min", "occlusion-min-draws"});
     const std::filesystem::path out = args.getOr("out", "demo-out");
     const std::filesystem::path cache = cacheFolder();
     app::RunOptions o;
@@ -233,6 +234,7 @@ int runDemo(const std::vector<std::string>& words) {
     const OcclusionFlags occlusion = parseOcclusion(args);
     o.occlusion = occlusion.on;
     o.occlusionMinTriangles = occlusion.minTriangles;
+    o.occlusionMinDraws = occlusion.minDraws;
     const std::string loadStart = bench::loadAverage();
     std::cout << "demo: cave4 at " << resolutionText(o.display) << ", stereo mode "
               << config::toString(o.display.stereo) << ", " << kindName(o) << " at alpha " << o.plan.alphaDeg

@@ -124,7 +124,9 @@ OcclusionFlags parseOcclusion(const Args& args) {
         throw Error("--occlusion and --no-occlusion: expected one of them, got both");
     OcclusionFlags f;
     f.on = args.has("occlusion");
-    f.minTriangles = static_cast<std::size_t>(args.integer("occlusion-min", 100000, 0, 1000000000));
+    f.minTriangles =
+        static_cast<std::size_t>(args.integer("occlusion-min", 100000, 0, 1000000000));
+    f.minDraws = static_cast<std::size_t>(args.integer("occlusion-min-draws", 500, 0, 1000000000));
     return f;
 }
 
@@ -139,7 +141,7 @@ std::vector<std::string_view> sessionFlags() {
         "hierarchy-res", "hierarchy-fade", "clusters", "cluster-divisions", "cluster-res", "cluster-fade",
         "bake-on-demand", "bake-first", "cache-budget", "bake-interleave", "bake-nice", "texture-format",
         "texture-max", "texture-budget", "resolution", "mono", "keep-sheets", "occlusion", "no-occlusion",
-        "occlusion-min"};
+        "occlusion-min", "occlusion-min-draws"};
     // clang-format on
 }
 
@@ -170,6 +172,7 @@ app::RunOptions parseSessionOptions(const Args& args, app::RunOptions o) {
     const OcclusionFlags occlusion = parseOcclusion(args);
     o.occlusion = occlusion.on;
     o.occlusionMinTriangles = occlusion.minTriangles;
+    o.occlusionMinDraws = occlusion.minDraws;
     o.tracker = args.getOr("tracker", o.tracker);
     o.frames = args.integer("frames", o.frames, 0, 10000000);
     o.out = args.getOr("out", o.out.string());

@@ -39,6 +39,7 @@ scenes::TextureLimits parseTextureLimits(const Args& args);
 struct OcclusionFlags {
     bool on = false;
     std::size_t minTriangles = 100000;
+    std::size_t minDraws = 500;  // --occlusion-min-draws N (default 500, [0, 1e9])
 };
 OcclusionFlags parseOcclusion(const Args& args);
 

@@ -177,6 +177,7 @@ walkthrough::gl::WalkthroughOptions walkthroughOptions(const RunOptions& o, wall
     options.render.lodPixels = o.lodPixels;
     options.render.occlusionCulling = o.occlusion;
     options.render.occlusionMinTriangles = o.occlusionMinTriangles;
+    options.render.occlusionMinDraws = o.occlusionMinDraws;
     options.triangleBudget = o.triangleBudget;
     options.lodMaxPixels = std::max(o.lodMaxPixels, o.lodPixels);
     options.clusters.enabled = o.clusters;

@@ -90,11 +90,14 @@ struct RenderSettings {
     // the saving depends on how much of the drawn list is hidden. Off: everything in the list
     // is drawn.
     bool occlusionCulling = false;
-    // With occlusion culling, a view whose list submits fewer triangles than this is drawn
-    // whole: culling has a cost of its own per view (the pyramid, the second phase). 100,000 is
-    // where it paid on llvmpipe at 1024 x 1024 per view on the clinic (docs/benchmarking.md,
-    // "Occlusion culling"); a GPU's break-even differs. 0: every list is culled.
+    // With occlusion culling, a view whose list submits fewer triangles than this, or has fewer
+    // draws than occlusionMinDraws, is drawn whole: culling has a cost of its own per view (the
+    // pyramid, the second phase), and it culls whole draws, so a list of a few large draws has
+    // little to leave out. 100,000 triangles is where it paid on llvmpipe at 1024 x 1024 per
+    // view on the clinic (2,700 draws a view); the generated plant's 91 draws a view lost
+    // (docs/benchmarking.md, "Occlusion culling"). A GPU's break-even differs. 0: no limit.
     std::size_t occlusionMinTriangles = 100000;
+    std::size_t occlusionMinDraws = 500;
 };
 
 // ViewStats and FrameStats: display/frame_stats.h.

@@ -426,7 +426,7 @@ TEST(RunCli, OcclusionCullingDrawsTheSameFrames) {
         args.insert(args.end(), {"--save-frames", "every:10", "--sync-paging", "--pace", "3"});
         // The small plant's lists are under the default threshold: cull them all, or none.
         if (out == culled)
-            args.insert(args.end(), {"--occlusion", "--occlusion-min", "0"});
+            args.insert(args.end(), {"--occlusion", "--occlusion-min", "0", "--occlusion-min-draws", "0"});
         else
             args.push_back("--no-occlusion");
         const CliResult r = runCavewall(args);

@@ -130,8 +130,9 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                                     config::formatNumber(o.lodMaxPixels) + " px"
                               : "lod: off (--lod 0)",
             o.occlusion ? "occlusion culling: on in every mode, in views whose list submits at least " +
-                              std::to_string(o.occlusionMinTriangles) +
-                              " triangles (GPU, two phases per view: what the view saw last frame, then what the depth "
+                              std::to_string(o.occlusionMinTriangles) + " triangles in at least " +
+                              std::to_string(o.occlusionMinDraws) +
+                              " draws (GPU, two phases per view: what the view saw last frame, then what the depth "
                               "drawn so far does not hide; the same images); triangles a frame are those drawn"
                         : std::string("occlusion culling: off (every mode draws what its frustum and cells keep; "
                                       "--occlusion turns it on)")};
@@ -467,7 +468,8 @@ BenchReport runBenchmark(const BenchOptions& o) {
                         o.clusters ? (o.cache ? *o.cache : walls::gl::defaultCacheFolder()) : std::filesystem::path(),
                         walls::ReprojectSettings{.cutSheets = !o.keepSheets},
                         o.occlusion,
-                        o.occlusionMinTriangles};
+                        o.occlusionMinTriangles,
+                        o.occlusionMinDraws};
 
     const std::vector<BakedWalls> baked = bakeOwnWalls(o, o.wallKind, scene, description, *context, report);
     const std::vector<BakedWalls> flatBaked =

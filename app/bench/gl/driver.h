@@ -86,6 +86,7 @@ struct BenchOptions {
     // least occlusionMinTriangles (--occlusion-min); triangles a frame are then those drawn.
     bool occlusion = false;
     std::size_t occlusionMinTriangles = 100000;
+    std::size_t occlusionMinDraws = 500;  // --occlusion-min-draws
     // --texture-format: storage of the baked colour (walls/texture_blocks.h), disk and GPU
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
     std::optional<std::filesystem::path> cache;  // bake cache (default: the baker's)

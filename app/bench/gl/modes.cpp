@@ -244,6 +244,7 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         options.render.lodPixels = mode.lodPixels;
         options.render.occlusionCulling = c.occlusion;
         options.render.occlusionMinTriangles = c.occlusionMinTriangles;
+        options.render.occlusionMinDraws = c.occlusionMinDraws;
         options.triangleBudget = mode.triangleBudget;
         options.lodMaxPixels = c.lodMaxPixels;
         options.wallKind = run.wallKind.value_or(c.wallKind);
@@ -299,6 +300,7 @@ double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, walls::gl::
     options.depthMarch = c.depthMarch;
     options.render.occlusionCulling = c.occlusion;
     options.render.occlusionMinTriangles = c.occlusionMinTriangles;
+    options.render.occlusionMinDraws = c.occlusionMinDraws;
     walkthrough::gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
     if (c.path.frames.empty()) return display::msSince(start) / 1000.0;
     walkthrough.renderFrame(c.path.frames.front());
@@ -325,6 +327,7 @@ NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::Wall
     options.render.lodPixels = mode.lodPixels;
     options.render.occlusionCulling = c.occlusion;
     options.render.occlusionMinTriangles = c.occlusionMinTriangles;
+    options.render.occlusionMinDraws = c.occlusionMinDraws;
     options.triangleBudget = mode.triangleBudget;
     options.lodMaxPixels = c.lodMaxPixels;
     options.wallKind = c.wallKind;
@@ -417,6 +420,7 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
     settings.lodPixels = runs.front().acc->mode().lodPixels;
     settings.occlusionCulling = c.occlusion;
     settings.occlusionMinTriangles = c.occlusionMinTriangles;
+    settings.occlusionMinDraws = c.occlusionMinDraws;
     for ([[maybe_unused]] const CellRun& r : runs) assert(r.acc->mode().lodPixels == settings.lodPixels);
     render::gl::SceneRenderer renderer(c.scene, settings);
     // The limit draws every wall of the viewer's cell as a bare quad: one 1x1 texture through

@@ -106,6 +106,7 @@ struct ModeContext {
     walls::ReprojectSettings depthMarch;               // WalkthroughOptions::depthMarch
     bool occlusion = false;                            // RenderSettings::occlusionCulling of every mode
     std::size_t occlusionMinTriangles = 100000;        // RenderSettings::occlusionMinTriangles
+    std::size_t occlusionMinDraws = 500;               // RenderSettings::occlusionMinDraws
 };
 
 // One walkthrough mode of a runWalkthroughModes call.

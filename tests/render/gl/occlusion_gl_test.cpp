@@ -53,7 +53,7 @@ scenes::Scene wallAndBoxes() {
 class OcclusionTest : public testing::GlTest {
 protected:
     // Renders the eye positions in turn with and without culling; every image must be the same.
-    void expectSameImages(const std::vector<glm::dvec3>& eyes, std::size_t minTriangles = 0) {
+    void expectSameImages(const std::vector<glm::dvec3>& eyes, std::size_t minTriangles = 0, std::size_t minDraws = 0) {
         const scenes::Scene scene = wallAndBoxes();
         const display::Display display(testing::oneScreenDisplay(128));
         const display::gl::RenderTargets plainTargets(display, *context), culledTargets(display, *context);
@@ -61,6 +61,7 @@ protected:
         RenderSettings settings;
         settings.occlusionCulling = true;
         settings.occlusionMinTriangles = minTriangles;
+        settings.occlusionMinDraws = minDraws;
         SceneRenderer culled(scene, settings);
         for (std::size_t i = 0; i < eyes.size(); ++i) {
             const display::HeadPose head{eyes[i], glm::dquat(1, 0, 0, 0)};
@@ -104,7 +105,7 @@ TEST_F(OcclusionTest, ObjectsComingIntoViewAreDrawnInTheirFirstFrame) {
                                         << counts[2].drawsDrawn << " of " << counts[2].drawsSubmitted;
 }
 
-TEST_F(OcclusionTest, ListsBelowTheThresholdAreDrawnWhole) {
+TEST_F(OcclusionTest, ListsBelowTheThresholdsAreDrawnWhole) {
     // The scene submits about 4,400 triangles: under a threshold of 5,000 nothing goes through
     // the culler (no draws counted), at 4,000 everything does.
     expectSameImages({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, 5000);
@@ -113,6 +114,13 @@ TEST_F(OcclusionTest, ListsBelowTheThresholdAreDrawnWhole) {
     expectSameImages({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, 4000);
     EXPECT_GT(counts.back().drawsSubmitted, 300u);
     EXPECT_LT(counts.back().trianglesDrawn * 2, counts.back().trianglesSubmitted);
+    // Its 367 draws: under a threshold of 400 draws nothing is culled, at 300 everything is.
+    counts.clear();
+    expectSameImages({{0, 0, 0}, {0, 0, 0}}, 0, 400);
+    for (const OcclusionCounts& c : counts) EXPECT_EQ(c.drawsSubmitted, 0u);
+    counts.clear();
+    expectSameImages({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, 0, 300);
+    EXPECT_GT(counts.back().drawsSubmitted, 300u);
 }
 
 }  // namespace
