@@ -92,7 +92,7 @@ struct RunOptions {
     // plant (docs/benchmarking.md, "The recommended walls mode")
     walls::WallKind wallKind = walls::WallKind::Depth;
     bool keepSheets = false;  // --keep-sheets: depth walls keep their rubber sheets (to measure the cut)
-    bool occlusion = false;   // --occlusion: RenderSettings::occlusionCulling
+    bool occlusion = true;    // --no-occlusion turns RenderSettings::occlusionCulling off
     std::size_t occlusionMinTriangles = 100000;  // --occlusion-min: RenderSettings::occlusionMinTriangles
     std::size_t occlusionMinDraws = 500;         // --occlusion-min-draws: RenderSettings::occlusionMinDraws
     // --texture-format: storage of baked colour (walls/texture_blocks.h; keys the bake cache)

@@ -19,7 +19,7 @@ namespace cavewall::tools {
 
 const char* const kDemoUsage =
     "usage: cavewall demo [--out DIR] [--frames N] [--resolution PX] [--triangles N] [--lod PX]\n"
-    "                     [--texture-format rgba8|bc1|bc3] [--walls depth|flat] [--occlusion]\n"
+    "                     [--texture-format rgba8|bc1|bc3] [--walls depth|flat] [--no-occlusion]\n"
     "\n"
     "The main job: generates the default plant (into $CAVEWALL_CACHE or, without it, cache/\n"
     "beside the cavewall executable), plans and bakes its virtual walls (cached by content),\n"
@@ -45,8 +45,8 @@ const char* const kDemoUsage =
     ").\n"
     "--walls: depth walls by default, as `cavewall run` (the bench's recommended walls mode on\n"
     "the plant, docs/benchmarking.md); --walls flat walks flat walls instead.\n"
-    "--occlusion: all four runs cull on the GPU what the depth drawn so far hides, as `cavewall run\n"
-    "--occlusion` does (the same images).\n"
+    "All four runs cull on the GPU what the depth drawn so far hides, as `cavewall run` does (the\n"
+    "same images); --no-occlusion: none.\n"
     "report.md states the resolution, the stereo mode and the machine's load average at the\n"
     "start and the end, applies the bench's rule to the four runs (the recommended walls mode)\n"
     "and embeds their trade-off plot, bench.png, when gnuplot is installed.\n";
@@ -153,7 +153,7 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
       << (o.occlusion
               ? "on in all four runs, in views whose list submits at least " + std::to_string(o.occlusionMinTriangles) +
                     " triangles in at least " + std::to_string(o.occlusionMinDraws) + " draws"
-              : std::string("off"))
+              : std::string("off (`--no-occlusion`)"))
       << "\n- machine load (/proc/loadavg, 1, 5 and 15 minutes): " << d.loadStart << " at the start, " << d.loadEnd
       << " at the end\n\n";
     const std::string wallsColumn = kindName(o) + (d.lod ? " + levels of detail" : "");

@@ -123,9 +123,8 @@ OcclusionFlags parseOcclusion(const Args& args) {
     if (args.has("occlusion") && args.has("no-occlusion"))
         throw Error("--occlusion and --no-occlusion: expected one of them, got both");
     OcclusionFlags f;
-    f.on = args.has("occlusion");
-    f.minTriangles =
-        static_cast<std::size_t>(args.integer("occlusion-min", 100000, 0, 1000000000));
+    f.on = !args.has("no-occlusion");
+    f.minTriangles = static_cast<std::size_t>(args.integer("occlusion-min", 100000, 0, 1000000000));
     f.minDraws = static_cast<std::size_t>(args.integer("occlusion-min-draws", 500, 0, 1000000000));
     return f;
 }

@@ -32,12 +32,12 @@ void applyMono(const Args& args, config::DisplayConfig& display);
 // (scenes/texture_budget.h). `render`, `run` and `view` take them.
 scenes::TextureLimits parseTextureLimits(const Args& args);
 
-// Occlusion culling (render::gl::RenderSettings::occlusionCulling), off by default:
-// --occlusion turns it on (--no-occlusion, the default, may be given; not both), and
+// Occlusion culling (render::gl::RenderSettings::occlusionCulling), on by default:
+// --no-occlusion turns it off (--occlusion, the default, may be given; not both), and
 // --occlusion-min N (default 100000, [0, 1e9]) is the triangles a view's list must submit to
 // be culled. `run`, `view`, `bench` and `demo` take them (both switches listed in Args).
 struct OcclusionFlags {
-    bool on = false;
+    bool on = true;
     std::size_t minTriangles = 100000;
     std::size_t minDraws = 500;  // --occlusion-min-draws N (default 500, [0, 1e9])
 };

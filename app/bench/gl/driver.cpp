@@ -134,8 +134,8 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                               std::to_string(o.occlusionMinDraws) +
                               " draws (GPU, two phases per view: what the view saw last frame, then what the depth "
                               "drawn so far does not hide; the same images); triangles a frame are those drawn"
-                        : std::string("occlusion culling: off (every mode draws what its frustum and cells keep; "
-                                      "--occlusion turns it on)")};
+                        : std::string("occlusion culling: off (--no-occlusion: every mode draws what its frustum "
+                                      "and cells keep)")};
 }
 
 // The checks that need no file: they fail before anything is loaded.

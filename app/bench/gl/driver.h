@@ -82,9 +82,10 @@ struct BenchOptions {
     bool flatBeside = false;
     bool keepSheets = false;  // --keep-sheets: depth walls keep their rubber sheets (to measure the cut)
     // Every mode's scene renderer culls what the depth drawn so far hides
-    // (RenderSettings::occlusionCulling, with --occlusion), in views whose list submits at
-    // least occlusionMinTriangles (--occlusion-min); triangles a frame are then those drawn.
-    bool occlusion = false;
+    // (RenderSettings::occlusionCulling; --no-occlusion: off), in views whose list submits at
+    // least occlusionMinTriangles (--occlusion-min) in at least occlusionMinDraws draws;
+    // triangles a frame are then those drawn.
+    bool occlusion = true;
     std::size_t occlusionMinTriangles = 100000;
     std::size_t occlusionMinDraws = 500;  // --occlusion-min-draws
     // --texture-format: storage of the baked colour (walls/texture_blocks.h), disk and GPU
