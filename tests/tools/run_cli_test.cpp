@@ -388,6 +388,18 @@ TEST(RunCli, AFrameBudgetCoarsensLevelsUntilFramesFitIt) {
     EXPECT_GE(over, 3);  // the target stays infeasible: the floor is probed and raised again
 }
 
+// Frames 0, 10 and 20 that two runs saved (`--save-frames every:10`): every screen's PNG file
+// present and byte-identical.
+void expectSameSavedFrames(const fs::path& a, const fs::path& b) {
+    for (const char* frame : {"00000", "00010", "00020"})
+        for (const char* image : {"front.png", "left.png", "right.png", "floor.png"}) {
+            SCOPED_TRACE(std::string(frame) + "/" + image);
+            const std::string bytes = readFile(a / "frames" / frame / image);
+            EXPECT_FALSE(bytes.empty());
+            EXPECT_TRUE(bytes == readFile(b / "frames" / frame / image));
+        }
+}
+
 TEST(RunCli, ReplayReproducesPosesAndFramesExactly) {
     const fs::path first = outputDir("record"), second = outputDir("replay");
     const std::string recording = (first / "input.jsonl").string();
@@ -408,13 +420,7 @@ TEST(RunCli, ReplayReproducesPosesAndFramesExactly) {
             EXPECT_EQ(rowsA[i].at(column), rowsB[i].at(column));
         }
     EXPECT_EQ(readFile(first / "walls.csv"), readFile(second / "walls.csv"));
-    for (const char* frame : {"00000", "00010", "00020"})
-        for (const char* image : {"front.png", "left.png", "right.png", "floor.png"}) {
-            SCOPED_TRACE(std::string(frame) + "/" + image);
-            const std::string pa = readFile(first / "frames" / frame / image);
-            EXPECT_FALSE(pa.empty());
-            EXPECT_TRUE(pa == readFile(second / "frames" / frame / image));
-        }
+    expectSameSavedFrames(first, second);
 }
 
 // Occlusion culling on the GPU changes what is drawn, never the image: the same walk with every
@@ -432,13 +438,7 @@ TEST(RunCli, OcclusionCullingDrawsTheSameFrames) {
         const CliResult r = runCavewall(args);
         ASSERT_EQ(r.exitCode, 0) << r.err;
     }
-    for (const char* frame : {"00000", "00010", "00020"})
-        for (const char* image : {"front.png", "left.png", "right.png", "floor.png"}) {
-            SCOPED_TRACE(std::string(frame) + "/" + image);
-            const std::string a = readFile(plain / "frames" / frame / image);
-            EXPECT_FALSE(a.empty());
-            EXPECT_TRUE(a == readFile(culled / "frames" / frame / image));
-        }
+    expectSameSavedFrames(plain, culled);
 }
 
 TEST(RunCli, DTrackSenderOverLoopbackDrivesTheHead) {
