@@ -41,9 +41,15 @@ int keptFallbacks(const walkthrough::FrameResult& r) {
 
 // With occlusion culling, the triangles of the last frame that were submitted but not drawn
 // (the mode's triangles a frame are those drawn); 0 without it.
-double trianglesCulled(walkthrough::gl::Walkthrough& w) {
-    const std::optional<render::gl::OcclusionCounts> counts = w.readOcclusionCounts();
+double trianglesCulled(const std::optional<render::gl::OcclusionCounts>& counts) {
     return counts ? static_cast<double>(counts->trianglesSubmitted - counts->trianglesDrawn) : 0.0;
+}
+
+// Every mode's scene renderer culls occlusion as the context says.
+void setOcclusion(const ModeContext& c, render::gl::RenderSettings& s) {
+    s.occlusionCulling = c.occlusion;
+    s.occlusionMinTriangles = c.occlusionMinTriangles;
+    s.occlusionMinDraws = c.occlusionMinDraws;
 }
 
 FrameCost frameCost(const walkthrough::FrameResult& r) {
@@ -224,7 +230,7 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         if (l.frameBudget) in.triangleBudget = l.frameBudget->budget();
         if (l.clusterBudget) in.clusterBudgetMs = walkthrough::clusterBudgetFor(*l.clusterBudget);
         walkthrough::FrameResult r = l.walkthrough->renderFrame(in);
-        l.culled = trianglesCulled(*l.walkthrough);
+        l.culled = trianglesCulled(l.walkthrough->readOcclusionCounts());
         if (l.frameBudget) l.frameBudget->update(r.frameMs, r.geometryTriangles);
         if (l.clusterBudget) walkthrough::controlClusters(*l.clusterBudget, r);
         return r;
@@ -242,9 +248,7 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         walkthrough::gl::WalkthroughOptions options;
         options.transition = run.transition;
         options.render.lodPixels = mode.lodPixels;
-        options.render.occlusionCulling = c.occlusion;
-        options.render.occlusionMinTriangles = c.occlusionMinTriangles;
-        options.render.occlusionMinDraws = c.occlusionMinDraws;
+        setOcclusion(c, options.render);
         options.triangleBudget = mode.triangleBudget;
         options.lodMaxPixels = c.lodMaxPixels;
         options.wallKind = run.wallKind.value_or(c.wallKind);
@@ -298,9 +302,7 @@ double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, walls::gl::
     options.baker = &baker;
     options.wallKind = c.wallKind;
     options.depthMarch = c.depthMarch;
-    options.render.occlusionCulling = c.occlusion;
-    options.render.occlusionMinTriangles = c.occlusionMinTriangles;
-    options.render.occlusionMinDraws = c.occlusionMinDraws;
+    setOcclusion(c, options.render);
     walkthrough::gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
     if (c.path.frames.empty()) return display::msSince(start) / 1000.0;
     walkthrough.renderFrame(c.path.frames.front());
@@ -311,7 +313,7 @@ double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, walls::gl::
         in.readDepth = in.readImages && readsDepth(c);
         walkthrough::FrameResult r = walkthrough.renderFrame(in);
         FrameCost cost = frameCost(r);
-        cost.triangles -= trianglesCulled(walkthrough);
+        cost.triangles -= trianglesCulled(walkthrough.readOcclusionCounts());
         acc.addFrame(cost);
         if (in.readImages) acc.compare(in.frame, in.head, r.images, r.depths, reference.at(in.frame));
     }
@@ -325,9 +327,7 @@ NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::Wall
     options.textureBudgetMB = 4096.0;
     options.uploadMBPerFrame = 4096.0;
     options.render.lodPixels = mode.lodPixels;
-    options.render.occlusionCulling = c.occlusion;
-    options.render.occlusionMinTriangles = c.occlusionMinTriangles;
-    options.render.occlusionMinDraws = c.occlusionMinDraws;
+    setOcclusion(c, options.render);
     options.triangleBudget = mode.triangleBudget;
     options.lodMaxPixels = c.lodMaxPixels;
     options.wallKind = c.wallKind;
@@ -418,9 +418,7 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
     const display::gl::RenderTargets targets(c.display, c.context);
     render::gl::RenderSettings settings;
     settings.lodPixels = runs.front().acc->mode().lodPixels;
-    settings.occlusionCulling = c.occlusion;
-    settings.occlusionMinTriangles = c.occlusionMinTriangles;
-    settings.occlusionMinDraws = c.occlusionMinDraws;
+    setOcclusion(c, settings);
     for ([[maybe_unused]] const CellRun& r : runs) assert(r.acc->mode().lodPixels == settings.lodPixels);
     render::gl::SceneRenderer renderer(c.scene, settings);
     // The limit draws every wall of the viewer's cell as a bare quad: one 1x1 texture through
@@ -467,7 +465,7 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
         cost->cpuMs = stats.cpuMs;
         cost->gpuMs = gpu;
         cost->triangles = static_cast<double>(stats.triangles + quadStats.triangles);
-        if (counts) cost->triangles -= static_cast<double>(counts->trianglesSubmitted - counts->trianglesDrawn);
+        cost->triangles -= trianglesCulled(counts);
         cost->drawCalls = static_cast<double>(stats.drawCalls + quadStats.drawCalls);
         cost->lodErrorPx = lod.maxErrorPx;
         cost->lodTolerancePx = lod.tolerancePx;
