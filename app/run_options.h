@@ -5,6 +5,7 @@
 // several options together, so every caller of the session gets the same messages.
 
 #include "config/display_config.h"
+#include "render/occlusion_settings.h"
 #include "scenes/scene_description.h"
 #include "scenes/texture_budget.h"
 #include "walkthrough/frame_types.h"
@@ -92,9 +93,8 @@ struct RunOptions {
     // plant (docs/benchmarking.md, "The recommended walls mode")
     walls::WallKind wallKind = walls::WallKind::Depth;
     bool keepSheets = false;  // --keep-sheets: depth walls keep their rubber sheets (to measure the cut)
-    bool occlusion = true;    // --no-occlusion turns RenderSettings::occlusionCulling off
-    std::size_t occlusionMinTriangles = 100000;  // --occlusion-min: RenderSettings::occlusionMinTriangles
-    std::size_t occlusionMinDraws = 500;         // --occlusion-min-draws: RenderSettings::occlusionMinDraws
+    // --no-occlusion, --occlusion-min, --occlusion-min-draws: RenderSettings::occlusion
+    render::OcclusionSettings occlusion;
     // --texture-format: storage of baked colour (walls/texture_blocks.h; keys the bake cache)
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
     std::optional<std::filesystem::path> cache;   // bake cache folder (default: the baker's)

@@ -35,7 +35,7 @@ const char* const kBenchUsage =
     "       cavewall bench --scale 2M,8M,32M [--data DIR] [--scale-metres M] [--frames N] [--resolution N]\n"
     "                      [--triangle-budget N|near] [--lod-max PX] [--min-zone M] [--walls flat|depth|flat,depth]\n"
     "                      [--display D] [--bake-resolution N] [--geometry-budget MB] [--lod PX] [--compare-every K]\n"
-    "                      [--out DIR]\n"
+    "                      [--no-occlusion] [--occlusion-min N] [--occlusion-min-draws D] [--out DIR]\n"
     "       cavewall bench --stability (no other flags)\n"
     "\n"
     "SCENE    error against run time in one run (a scene.json, its folder, or glTF/GLB with\n"
@@ -147,6 +147,8 @@ const char* const kBenchUsage =
     "         depth walls, drawn in turn with the others (depth / flat frame time in one run).\n"
     "         --keep-sheets: depth walls keep the rubber sheets they cut by default (a near\n"
     "         object's colour stretched over the gap beside it), to measure the cut.\n"
+    "         Occlusion culling as in a scene's bench (on; --no-occlusion, --occlusion-min,\n"
+    "         --occlusion-min-draws): triangles a frame are those drawn.\n"
     "\n"
     "--stability  runs the stiff and extreme numerical cases (projection at eye distances\n"
     "             1e-9 ... 1e6 m, world offsets to 1e7 m, near/far ratios to 1e9 with reversed-Z,\n"
@@ -279,10 +281,7 @@ int runSceneBench(const Args& args) {
     o.flatBeside = kinds == "flat,depth";
     o.wallKind = kinds == "flat" ? walls::WallKind::Flat : walls::WallKind::Depth;
     o.keepSheets = args.has("keep-sheets");
-    const OcclusionFlags occlusion = parseOcclusion(args);
-    o.occlusion = occlusion.on;
-    o.occlusionMinTriangles = occlusion.minTriangles;
-    o.occlusionMinDraws = occlusion.minDraws;
+    o.occlusion = parseOcclusion(args);
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.clusters = args.has(args.renamed("hierarchy", "clusters"));
     const std::string_view budgets = args.renamed("hierarchy-budgets", "cluster-budgets");
@@ -331,6 +330,7 @@ int runScaleBench(const Args& args) {
         o.triangleBudget = args.integer("triangle-budget", 0, 0, 1000000000);
     o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);
     o.compareEvery = static_cast<int>(args.integer("compare-every", o.compareEvery, 0, 100000));
+    o.occlusion = parseOcclusion(args);
     o.plan.minZoneSize = args.number("min-zone", o.plan.minZoneSize, 1e-3, 1e4);
     // flat, depth, or both kinds in one run (walls-depth beside the flat walls).
     const std::string kinds = args.getOr("walls", "flat");

@@ -4,6 +4,7 @@
 #include "scenes/file_write.h"
 #include "scenes/generate.h"
 #include "display/timing.h"
+#include "render/occlusion_settings.h"
 #include "tools/args.h"
 #include "tools/cmd_demo_compare.h"
 #include "tools/commands.h"
@@ -150,10 +151,7 @@ void writeReport(const std::filesystem::path& out, const app::RunOptions& o, con
       << "\n- walls: " << kindName(o) << " (`--walls " << walls::wallKindName(o.wallKind)
       << "`; the default is the bench's recommended walls mode on the plant, docs/benchmarking.md)"
       << "\n- occlusion culling: "
-      << (o.occlusion
-              ? "on in all four runs, in views whose list submits at least " + std::to_string(o.occlusionMinTriangles) +
-                    " triangles in at least " + std::to_string(o.occlusionMinDraws) + " draws"
-              : std::string("off (`--no-occlusion`)"))
+      << (o.occlusion.on ? render::describe(o.occlusion) + " (all four runs)" : std::string("off (`--no-occlusion`)"))
       << "\n- machine load (/proc/loadavg, 1, 5 and 15 minutes): " << d.loadStart << " at the start, " << d.loadEnd
       << " at the end\n\n";
     const std::string wallsColumn = kindName(o) + (d.lod ? " + levels of detail" : "");
@@ -231,10 +229,7 @@ int runDemo(const std::vector<std::string>& words) {
     o.lodPixels = args.number("lod", 1.0, 0.0, 1e4);
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.wallKind = args.choice("walls", walls::kWallKindNames, o.wallKind);
-    const OcclusionFlags occlusion = parseOcclusion(args);
-    o.occlusion = occlusion.on;
-    o.occlusionMinTriangles = occlusion.minTriangles;
-    o.occlusionMinDraws = occlusion.minDraws;
+    o.occlusion = parseOcclusion(args);
     const std::string loadStart = bench::loadAverage();
     std::cout << "demo: cave4 at " << resolutionText(o.display) << ", stereo mode "
               << config::toString(o.display.stereo) << ", " << kindName(o) << " at alpha " << o.plan.alphaDeg

@@ -119,14 +119,16 @@ Args sessionArgs(const std::vector<std::string>& words) {
                  "bake-on-demand", "bake-first", "save-window", "mono", "keep-sheets", "occlusion", "no-occlusion"});
 }
 
-OcclusionFlags parseOcclusion(const Args& args) {
+render::OcclusionSettings parseOcclusion(const Args& args) {
     if (args.has("occlusion") && args.has("no-occlusion"))
         throw Error("--occlusion and --no-occlusion: expected one of them, got both");
-    OcclusionFlags f;
-    f.on = !args.has("no-occlusion");
-    f.minTriangles = static_cast<std::size_t>(args.integer("occlusion-min", 100000, 0, 1000000000));
-    f.minDraws = static_cast<std::size_t>(args.integer("occlusion-min-draws", 500, 0, 1000000000));
-    return f;
+    render::OcclusionSettings s;
+    s.on = !args.has("no-occlusion");
+    s.minTriangles =
+        static_cast<std::size_t>(args.integer("occlusion-min", static_cast<long>(s.minTriangles), 0, 1000000000));
+    s.minDraws =
+        static_cast<std::size_t>(args.integer("occlusion-min-draws", static_cast<long>(s.minDraws), 0, 1000000000));
+    return s;
 }
 
 std::vector<std::string_view> sessionFlags() {
@@ -168,10 +170,7 @@ app::RunOptions parseSessionOptions(const Args& args, app::RunOptions o) {
         for (config::Screen& screen : o.display.screens) screen.resolution = *pixels;
     applyMono(args, o.display);
     o.keepSheets = args.has("keep-sheets");
-    const OcclusionFlags occlusion = parseOcclusion(args);
-    o.occlusion = occlusion.on;
-    o.occlusionMinTriangles = occlusion.minTriangles;
-    o.occlusionMinDraws = occlusion.minDraws;
+    o.occlusion = parseOcclusion(args);
     o.tracker = args.getOr("tracker", o.tracker);
     o.frames = args.integer("frames", o.frames, 0, 10000000);
     o.out = args.getOr("out", o.out.string());

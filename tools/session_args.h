@@ -3,6 +3,7 @@
 // session's summary printed the same way for both.
 
 #include "app/run_options.h"
+#include "render/occlusion_settings.h"
 #include "scenes/texture_budget.h"
 #include "tools/args.h"
 
@@ -32,16 +33,12 @@ void applyMono(const Args& args, config::DisplayConfig& display);
 // (scenes/texture_budget.h). `render`, `run` and `view` take them.
 scenes::TextureLimits parseTextureLimits(const Args& args);
 
-// Occlusion culling (render::gl::RenderSettings::occlusionCulling), on by default:
-// --no-occlusion turns it off (--occlusion, the default, may be given; not both), and
-// --occlusion-min N (default 100000, [0, 1e9]) is the triangles a view's list must submit to
-// be culled. `run`, `view`, `bench` and `demo` take them (both switches listed in Args).
-struct OcclusionFlags {
-    bool on = true;
-    std::size_t minTriangles = 100000;
-    std::size_t minDraws = 500;  // --occlusion-min-draws N (default 500, [0, 1e9])
-};
-OcclusionFlags parseOcclusion(const Args& args);
+// Occlusion culling (render/occlusion_settings.h), on by default: --no-occlusion turns it off
+// (--occlusion, the default, may be given; not both); --occlusion-min N (default 100000,
+// [0, 1e9]) and --occlusion-min-draws D (default 500, [0, 1e9]) are the triangles and draws a
+// view's list must have to be culled. `run`, `view`, `bench` (with --scale too) and `demo` take
+// them (both switches listed in Args).
+render::OcclusionSettings parseOcclusion(const Args& args);
 
 // Prints the summary ("<command>: N frames on ...", start-up times, and how the session ended
 // when it was stopped) and returns the exit code: 0, or 128 + the signal when interrupted.

@@ -175,9 +175,7 @@ walkthrough::gl::WalkthroughOptions walkthroughOptions(const RunOptions& o, wall
     options.depthMarch.cutSheets = !o.keepSheets;
     options.baker = baker;
     options.render.lodPixels = o.lodPixels;
-    options.render.occlusionCulling = o.occlusion;
-    options.render.occlusionMinTriangles = o.occlusionMinTriangles;
-    options.render.occlusionMinDraws = o.occlusionMinDraws;
+    options.render.occlusion = o.occlusion;
     options.triangleBudget = o.triangleBudget;
     options.lodMaxPixels = std::max(o.lodMaxPixels, o.lodPixels);
     options.clusters.enabled = o.clusters;

@@ -88,7 +88,7 @@ SceneRenderer::SceneRenderer(const scenes::Scene& scene, RenderSettings settings
         const scenes::Material& m = material >= 0 && material < count ? scene.materials[material] : scenes::Material{};
         _meshMaterials.push_back(materialRecord(m, _gpu.textureCount(), _gpu.uvFromStored(static_cast<int>(i))));
     }
-    if (settings.occlusionCulling) _culler = std::make_unique<OcclusionCuller>(_scene.objects().size());
+    if (settings.occlusion.on) _culler = std::make_unique<OcclusionCuller>(_scene.objects().size());
     // Per-draw records arrive as instanced attributes from binding 1 (its buffer is set per view).
     const GLuint vao = _gpu.vertexArray();
     glVertexArrayBindingDivisor(vao, 1, 1);
@@ -260,8 +260,7 @@ ViewStats SceneRenderer::draw(const render::RenderList& list) {
     const glm::mat4 projection(frustum.clipFromView);
     for (const Program& p : _programs)
         glProgramUniformMatrix4fv(p.program.id(), p.projection, 1, GL_FALSE, glm::value_ptr(projection));
-    const bool cull = _culler && _viewSlot && list.triangles >= _settings.occlusionMinTriangles &&
-                      list.draws.size() >= _settings.occlusionMinDraws;
+    const bool cull = _culler && _viewSlot && _settings.occlusion.culls(list.triangles, list.draws.size());
     const GLuint depth = cull ? boundDepthTexture() : 0;
     stats.drawCalls = depth != 0 ? drawCulled(list, buffers, depth) : issueBatches(list);
     stats.objectsDrawn = objectsDrawn;

@@ -49,6 +49,7 @@
 #include "render/gl/scene_gpu.h"
 #include "render/gl/scene_shaders.h"
 #include "render/draw_filter.h"
+#include "render/occlusion_settings.h"
 #include "render/render_list.h"
 #include "render/render_scene.h"
 #include "render/vertex_lighting.h"
@@ -84,20 +85,10 @@ struct RenderSettings {
     // Draws whose per-vertex headlight provably differs from the per-pixel one by at most this
     // much of the light factor are lit per vertex (render/vertex_lighting.h); 0: all per pixel.
     double vertexLightingTolerance = render::kVertexLightingTolerance;
-    // Occlusion culling on the GPU (render/gl/occlusion_culler.h) for views drawn with
-    // renderView into a render target with a depth texture: each view first draws what it saw
-    // last frame, then only what the depth drawn so far does not hide. The image is the same;
-    // the saving depends on how much of the drawn list is hidden. Off: everything in the list
-    // is drawn.
-    bool occlusionCulling = false;
-    // With occlusion culling, a view whose list submits fewer triangles than this, or has fewer
-    // draws than occlusionMinDraws, is drawn whole: culling has a cost of its own per view (the
-    // pyramid, the second phase), and it culls whole draws, so a list of a few large draws has
-    // little to leave out. 100,000 triangles is where it paid on llvmpipe at 1024 x 1024 per
-    // view on the clinic (2,700 draws a view); the generated plant's 91 draws a view lost
-    // (docs/benchmarking.md, "Occlusion culling"). A GPU's break-even differs. 0: no limit.
-    std::size_t occlusionMinTriangles = 100000;
-    std::size_t occlusionMinDraws = 500;
+    // Occlusion culling on the GPU (render/occlusion_settings.h, render/gl/occlusion_culler.h)
+    // for views drawn with renderView into a render target with a depth texture. Off by
+    // default here (every list drawn whole); the commands turn it on.
+    render::OcclusionSettings occlusion{.on = false};
 };
 
 // ViewStats and FrameStats: display/frame_stats.h.
@@ -244,7 +235,7 @@ private:
     std::vector<shaders::DrawCommand> _sortCommands;
     std::vector<int> _sortSets;
     std::vector<std::uint32_t> _objectOf;      // per record: its object (occlusion culling)
-    std::unique_ptr<OcclusionCuller> _culler;  // with RenderSettings::occlusionCulling
+    std::unique_ptr<OcclusionCuller> _culler;  // with RenderSettings::occlusion on
     std::uint32_t _occlusionContext = 0;
     std::optional<std::uint64_t> _viewSlot;  // set by renderView for its draw (culling's slot)
 };

@@ -134,7 +134,7 @@ public:
     // Blocks until the pager has decoded everything requested (warm-up for tests and benches).
     void waitForTextures();
     GeometryYardsticks geometryYardsticks() const;
-    // With RenderSettings::occlusionCulling: the scene renderer's draws and triangles submitted
+    // With RenderSettings::occlusion on: the scene renderer's draws and triangles submitted
     // and drawn since the last call (waits for the GPU).
     std::optional<render::gl::OcclusionCounts> readOcclusionCounts() { return _renderer.readOcclusionCounts(); }
 

@@ -8,6 +8,7 @@
 #include "app/bench/gl/baked_walls.h"
 #include "app/bench/gl/modes.h"
 #include "app/bench/private_cache.h"
+#include "render/occlusion_settings.h"
 #include "app/gl/run_session.h"
 #include "walls/gl/background_baker.h"
 #include "walls/gl/baker.h"
@@ -129,13 +130,12 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                                     "raise that tolerance to at most " +
                                     config::formatNumber(o.lodMaxPixels) + " px"
                               : "lod: off (--lod 0)",
-            o.occlusion ? "occlusion culling: on in every mode, in views whose list submits at least " +
-                              std::to_string(o.occlusionMinTriangles) + " triangles in at least " +
-                              std::to_string(o.occlusionMinDraws) +
-                              " draws (GPU, two phases per view: what the view saw last frame, then what the depth "
-                              "drawn so far does not hide; the same images); triangles a frame are those drawn"
-                        : std::string("occlusion culling: off (--no-occlusion: every mode draws what its frustum "
-                                      "and cells keep)")};
+            o.occlusion.on ? "occlusion culling: " + render::describe(o.occlusion) +
+                                 " (every mode; GPU, two phases per view: what the view saw last frame, then what "
+                                 "the depth drawn so far does not hide; the same images); triangles a frame are those "
+                                 "drawn"
+                           : std::string("occlusion culling: off (--no-occlusion: every mode draws what its frustum "
+                                         "and cells keep)")};
 }
 
 // The checks that need no file: they fail before anything is loaded.
@@ -467,9 +467,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
                         o.wallKind,
                         o.clusters ? (o.cache ? *o.cache : walls::gl::defaultCacheFolder()) : std::filesystem::path(),
                         walls::ReprojectSettings{.cutSheets = !o.keepSheets},
-                        o.occlusion,
-                        o.occlusionMinTriangles,
-                        o.occlusionMinDraws};
+                        o.occlusion};
 
     const std::vector<BakedWalls> baked = bakeOwnWalls(o, o.wallKind, scene, description, *context, report);
     const std::vector<BakedWalls> flatBaked =

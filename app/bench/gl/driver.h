@@ -50,6 +50,7 @@
 #include "walls/depth_wall.h"
 #include "app/bench/report.h"
 #include "app/run_options.h"
+#include "render/occlusion_settings.h"
 #include "walls/plan.h"
 
 #include <filesystem>
@@ -82,12 +83,9 @@ struct BenchOptions {
     bool flatBeside = false;
     bool keepSheets = false;  // --keep-sheets: depth walls keep their rubber sheets (to measure the cut)
     // Every mode's scene renderer culls what the depth drawn so far hides
-    // (RenderSettings::occlusionCulling; --no-occlusion: off), in views whose list submits at
-    // least occlusionMinTriangles (--occlusion-min) in at least occlusionMinDraws draws;
+    // (RenderSettings::occlusion; --no-occlusion, --occlusion-min, --occlusion-min-draws);
     // triangles a frame are then those drawn.
-    bool occlusion = true;
-    std::size_t occlusionMinTriangles = 100000;
-    std::size_t occlusionMinDraws = 500;  // --occlusion-min-draws
+    render::OcclusionSettings occlusion;
     // --texture-format: storage of the baked colour (walls/texture_blocks.h), disk and GPU
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
     std::optional<std::filesystem::path> cache;  // bake cache (default: the baker's)

@@ -27,6 +27,10 @@ namespace cavewall::bench::gl {
 
 using namespace bench;
 
+double trianglesCulled(const std::optional<render::gl::OcclusionCounts>& counts) {
+    return counts ? static_cast<double>(counts->trianglesSubmitted - counts->trianglesDrawn) : 0.0;
+}
+
 namespace {
 
 bool compared(const ModeContext& c, long frame) { return frame % c.compareEvery == 0; }
@@ -37,19 +41,6 @@ int keptFallbacks(const walkthrough::FrameResult& r) {
     int kept = 0;
     for (const walkthrough::WallState& w : r.walls) kept += w.fallback && !w.textures.empty() ? 1 : 0;
     return kept;
-}
-
-// With occlusion culling, the triangles of the last frame that were submitted but not drawn
-// (the mode's triangles a frame are those drawn); 0 without it.
-double trianglesCulled(const std::optional<render::gl::OcclusionCounts>& counts) {
-    return counts ? static_cast<double>(counts->trianglesSubmitted - counts->trianglesDrawn) : 0.0;
-}
-
-// Every mode's scene renderer culls occlusion as the context says.
-void setOcclusion(const ModeContext& c, render::gl::RenderSettings& s) {
-    s.occlusionCulling = c.occlusion;
-    s.occlusionMinTriangles = c.occlusionMinTriangles;
-    s.occlusionMinDraws = c.occlusionMinDraws;
 }
 
 FrameCost frameCost(const walkthrough::FrameResult& r) {
@@ -248,7 +239,7 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         walkthrough::gl::WalkthroughOptions options;
         options.transition = run.transition;
         options.render.lodPixels = mode.lodPixels;
-        setOcclusion(c, options.render);
+        options.render.occlusion = c.occlusion;
         options.triangleBudget = mode.triangleBudget;
         options.lodMaxPixels = c.lodMaxPixels;
         options.wallKind = run.wallKind.value_or(c.wallKind);
@@ -302,7 +293,7 @@ double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, walls::gl::
     options.baker = &baker;
     options.wallKind = c.wallKind;
     options.depthMarch = c.depthMarch;
-    setOcclusion(c, options.render);
+    options.render.occlusion = c.occlusion;
     walkthrough::gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
     if (c.path.frames.empty()) return display::msSince(start) / 1000.0;
     walkthrough.renderFrame(c.path.frames.front());
@@ -327,7 +318,7 @@ NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::Wall
     options.textureBudgetMB = 4096.0;
     options.uploadMBPerFrame = 4096.0;
     options.render.lodPixels = mode.lodPixels;
-    setOcclusion(c, options.render);
+    options.render.occlusion = c.occlusion;
     options.triangleBudget = mode.triangleBudget;
     options.lodMaxPixels = c.lodMaxPixels;
     options.wallKind = c.wallKind;
@@ -418,7 +409,7 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
     const display::gl::RenderTargets targets(c.display, c.context);
     render::gl::RenderSettings settings;
     settings.lodPixels = runs.front().acc->mode().lodPixels;
-    setOcclusion(c, settings);
+    settings.occlusion = c.occlusion;
     for ([[maybe_unused]] const CellRun& r : runs) assert(r.acc->mode().lodPixels == settings.lodPixels);
     render::gl::SceneRenderer renderer(c.scene, settings);
     // The limit draws every wall of the viewer's cell as a bare quad: one 1x1 texture through

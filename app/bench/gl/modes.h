@@ -5,6 +5,7 @@
 #include "display/gl/frame_images.h"
 #include "app/bench/path.h"
 #include "app/bench/report.h"
+#include "render/occlusion_settings.h"
 #include "walkthrough/gl/walkthrough.h"
 
 #include <chrono>
@@ -104,10 +105,12 @@ struct ModeContext {
     walls::WallKind wallKind = walls::WallKind::Flat;  // WalkthroughOptions::wallKind of the walls modes
     std::filesystem::path clusterCache;                // ClusterOptions::cache of the clusters modes
     walls::ReprojectSettings depthMarch;               // WalkthroughOptions::depthMarch
-    bool occlusion = false;                            // RenderSettings::occlusionCulling of every mode
-    std::size_t occlusionMinTriangles = 100000;        // RenderSettings::occlusionMinTriangles
-    std::size_t occlusionMinDraws = 500;               // RenderSettings::occlusionMinDraws
+    render::OcclusionSettings occlusion{.on = false};  // RenderSettings::occlusion of every mode
 };
+
+// With occlusion culling, the triangles of the last frame that were submitted but not drawn
+// (a mode's triangles a frame are those drawn); 0 without it.
+double trianglesCulled(const std::optional<render::gl::OcclusionCounts>& counts);
 
 // One walkthrough mode of a runWalkthroughModes call.
 struct WalkRun {

@@ -71,18 +71,24 @@ walls::gl::BakeResult bakeSubset(const scenes::Scene& scene, const scenes::Scene
 // The near limit's draw of one frame: the viewer's cell and the always-drawn objects.
 struct NearMode {
     NearMode(const scenes::Scene& scene, const scenes::SceneDescription& d, const display::Display& display,
-             display::gl::Context& context, const walls::WallSetup& setup, double lodPixels)
+             display::gl::Context& context, const walls::WallSetup& setup, double lodPixels,
+             const render::OcclusionSettings& occlusion)
         : scene(scene), display(display), selector(setup.plan, setup.table, d), targets(display, context),
-          renderer(scene, settingsWith(lodPixels)), cells(d.cells.size()), lodPixels(lodPixels) {}
+          renderer(scene, settingsWith(lodPixels, occlusion)), cells(d.cells.size()), lodPixels(lodPixels) {}
 
-    static render::gl::RenderSettings settingsWith(double lodPixels) {
+    static render::gl::RenderSettings settingsWith(double lodPixels, const render::OcclusionSettings& occlusion) {
         render::gl::RenderSettings s;
         s.lodPixels = lodPixels;
+        s.occlusion = occlusion;
         return s;
     }
 
-    // Frame ms (submission and GPU) and triangles.
-    std::pair<double, double> draw(const walkthrough::FrameInput& in) {
+    // One frame's ms (submission and GPU), triangles submitted and triangles drawn (fewer with
+    // occlusion culling).
+    struct Frame {
+        double ms = 0.0, submitted = 0.0, drawn = 0.0;
+    };
+    Frame draw(const walkthrough::FrameInput& in) {
         const auto start = Clock::now();
         const glm::dvec3 eye(in.worldFromCave * glm::dvec4(in.head.position, 1.0));
         const walls::FrameSelection selection = selector.select(eye);
@@ -99,7 +105,9 @@ struct NearMode {
         }
         const display::FrameStats stats = renderer.render(views, targets, in.worldFromCave, filter);
         renderer.waitGpuMs();
-        return {display::msSince(start), static_cast<double>(stats.triangles)};
+        const double ms = display::msSince(start);
+        const auto submitted = static_cast<double>(stats.triangles);
+        return {ms, submitted, submitted - trianglesCulled(renderer.readOcclusionCounts())};
     }
 
     // The last frame's depth per view as eye distances (after draw), in display.views' order, as
@@ -280,6 +288,7 @@ auto timeFirst(Make make, Frame frame) {
 walkthrough::gl::WalkthroughOptions wallsOptionsFor(const ScaleOptions& o) {
     walkthrough::gl::WalkthroughOptions options;
     options.render.lodPixels = o.lodPixels;
+    options.render.occlusion = o.occlusion;
     options.geometryBudgetMB = o.geometryBudgetMB;
     options.wallKind = o.wallKind;
     // Synchronous paging: the first frame is complete (its textures and cells loaded), and after
@@ -314,7 +323,7 @@ std::pair<std::unique_ptr<walkthrough::gl::Walkthrough>, double> firstWalk(
 // option's, or the near limit's median.
 std::size_t nearBudget(const ScaleOptions& o, NearMode& nearMode, const bench::EyePath& path) {
     std::vector<double> nearTriangles;
-    for (const walkthrough::FrameInput& in : path.frames) nearTriangles.push_back(nearMode.draw(in).second);
+    for (const walkthrough::FrameInput& in : path.frames) nearTriangles.push_back(nearMode.draw(in).submitted);
     std::sort(nearTriangles.begin(), nearTriangles.end());
     return o.triangleBudget >= 0 ? static_cast<std::size_t>(o.triangleBudget)
                                  : static_cast<std::size_t>(nearTriangles[nearTriangles.size() / 2]);
@@ -339,6 +348,7 @@ SizeModes makeModes(const SizeSetting& s) {
     made.reserve(std::size(bench::kScaleModes));  // no reallocation: `full` and `nearLimit` stay valid
     SizeMode& full = made.emplace_back(ScaleMode::Full, screens);
     walkthrough::gl::WalkthroughOptions fullOptions;
+    fullOptions.render.occlusion = o.occlusion;
     std::tie(full.walk, full.firstFrameSeconds) = timeFirst(
         [&] {
             return std::make_unique<walkthrough::gl::Walkthrough>(p.scene, p.description, s.display, s.context,
@@ -349,6 +359,7 @@ SizeModes makeModes(const SizeSetting& s) {
         SizeMode& fullLod = made.emplace_back(ScaleMode::FullLod, screens);
         walkthrough::gl::WalkthroughOptions lodOptions;
         lodOptions.render.lodPixels = o.lodPixels;
+        lodOptions.render.occlusion = o.occlusion;
         std::tie(fullLod.walk, fullLod.firstFrameSeconds) = timeFirst(
             [&] {
                 return std::make_unique<walkthrough::gl::Walkthrough>(p.scene, p.description, s.display, s.context,
@@ -358,7 +369,10 @@ SizeModes makeModes(const SizeSetting& s) {
     }
     SizeMode& nearLimit = made.emplace_back(ScaleMode::Near, screens);
     std::tie(nearLimit.near, nearLimit.firstFrameSeconds) = timeFirst(
-        [&] { return std::make_unique<NearMode>(p.scene, p.description, s.display, s.context, p.setup, o.lodPixels); },
+        [&] {
+            return std::make_unique<NearMode>(p.scene, p.description, s.display, s.context, p.setup, o.lodPixels,
+                                              o.occlusion);
+        },
         [&](NearMode& n) { n.draw(p.path.frames.front()); });
     const walkthrough::gl::WalkthroughOptions wallsOptions = wallsOptionsFor(o);
     addWalk(made, s, ScaleMode::Walls, firstWalk(s, p.setup, wallsOptions), p.planSeconds);
@@ -398,6 +412,8 @@ void warmUp(SizeModes& live, const bench::EyePath& path) {
         if (SizeMode* m = live.find(mode))
             for (std::size_t i = 0; i < std::min<std::size_t>(3, path.frames.size()); ++i)
                 m->walk->renderFrame(path.frames[i]);
+    for (SizeMode& m : live.modes)  // the timed frames count only their own culled triangles
+        if (m.walk) m.walk->readOcclusionCounts();
 }
 
 // A walls mode's frame; its images (when `reference`) compared with full geometry's.
@@ -406,7 +422,7 @@ void drawWalk(SizeMode& m, const walkthrough::FrameInput& in, long frame, const 
     const walkthrough::FrameResult w = m.walk->renderFrame(in);
     Accumulated& a = m.acc;
     a.ms.push_back(w.frameMs);
-    a.triangles += static_cast<double>(w.stats.triangles);
+    a.triangles += static_cast<double>(w.stats.triangles) - trianglesCulled(m.walk->readOcclusionCounts());
     if (reference)
         a.errors.addFrame(
             frame, comparedImages(display, in.head, w.images, reference->images, std::string(bench::toString(m.mode))));
@@ -426,12 +442,12 @@ void drawFrame(SizeModes& live, walkthrough::FrameInput in, long frame, bool com
     SizeMode& full = live.modes.front();
     const walkthrough::FrameResult f = full.walk->renderFrame(in);
     full.acc.ms.push_back(f.frameMs);
-    full.acc.triangles += static_cast<double>(f.stats.triangles);
+    full.acc.triangles += static_cast<double>(f.stats.triangles) - trianglesCulled(full.walk->readOcclusionCounts());
     for (SizeMode& m : live.modes) {
         if (m.near) {
-            const auto [nearMs, nearTriangles] = m.near->draw(in);
-            m.acc.ms.push_back(nearMs);
-            m.acc.triangles += nearTriangles;
+            const NearMode::Frame near = m.near->draw(in);
+            m.acc.ms.push_back(near.ms);
+            m.acc.triangles += near.drawn;
             if (compare)
                 m.acc.errors.addFrame(
                     frame, comparedImages(display, in.head, display::gl::readFrame(display, m.near->targets), f.images,
@@ -567,6 +583,10 @@ bench::ScaleReport runScaleBench(const ScaleOptions& o) {
                   "pooled over all compared pixels, the worst frame's, LDR-FLIP mean at each screen's fewest pixels "
                   "per degree"
             : std::string("image error: not compared (--compare-every 0)"),
+        "occlusion culling: " + render::describe(o.occlusion) +
+            (o.occlusion.on ? " (every mode; triangles a frame are those drawn; walls-budget's budget counts those "
+                              "submitted)"
+                            : std::string(" (--no-occlusion)")),
         "load average at start: " + loadAverage()};
     for (std::size_t target : o.sizes) {
         runSize(o, target, display, *context, report);

@@ -33,6 +33,7 @@
 
 #include "app/bench/scale.h"
 #include "config/display_config.h"
+#include "render/occlusion_settings.h"
 #include "walls/plan.h"
 
 #include <filesystem>
@@ -62,6 +63,10 @@ struct ScaleOptions {
     // walls-budget's triangles per frame: < 0 the near limit's median, 0 no such mode.
     long triangleBudget = -1;
     double lodMaxPixels = 8.0;  // the most its budget may raise the tolerance to
+    // Every mode's scene renderer culls what the depth drawn so far hides, as `run` does by
+    // default (--no-occlusion, --occlusion-min, --occlusion-min-draws); triangles a frame are
+    // then those drawn.
+    render::OcclusionSettings occlusion;
     // Every compareEvery-th timed frame (0: none) the near and walls modes' images are compared
     // with full geometry's of the same frame (bench::ErrorPool: pooled PSNR, worst frame, FLIP),
     // read back after each mode's frame is timed.

@@ -133,6 +133,8 @@ TEST(BenchSceneCli, ScaleRunInStereoReportsTheStereoError) {
     const CliResult r = runCavewall(args);
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_THAT(r.out, HasSubstr("4 screens at 32x32 pixels, separate"));
+    EXPECT_THAT(r.out, HasSubstr("occlusion culling: on, in views whose list submits at least 100000 triangles in "
+                                 "at least 500 draws (every mode"));
     EXPECT_THAT(r.out, HasSubstr("stereo arcmin (% > 1')"));
     // Whether the walls are on the front at 32 x 32 pixels depends on their frame time against
     // full geometry with levels of detail (a few milliseconds apart): where they are, the rule
@@ -162,15 +164,16 @@ std::size_t depthImages(const fs::path& cache) {
     return n;
 }
 
-// --walls depth and --min-zone reach the scale bench's plan and bake (they were once accepted
-// and ignored there): the report names them, the bake holds depth images, and the depth walls'
+// --walls depth, --min-zone and --no-occlusion reach the scale bench's plan, bake and renderers
+// (they were once accepted and ignored there): the report names them, the bake holds depth images, and the depth walls'
 // own bound keeps every drawn texture within alpha.
 TEST(BenchSceneCli, ScaleRunDrawsDepthWallsWithTheZonesAsked) {
     const test::TempFolder root("bench_cli_scale_depth");
     const fs::path out = root / "out";
-    const CliResult r =
-        runTinyScale(root.path(), "20k", {"--walls", "depth", "--min-zone", "2", "--triangle-budget", "0"});
+    const CliResult r = runTinyScale(
+        root.path(), "20k", {"--walls", "depth", "--min-zone", "2", "--triangle-budget", "0", "--no-occlusion"});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    EXPECT_THAT(r.out, HasSubstr("occlusion culling: off (--no-occlusion)"));
     EXPECT_THAT(r.out, HasSubstr("walls: depth walls at alpha 10 deg"));
     EXPECT_THAT(r.out, HasSubstr("walls planned (zones of at least 2.00 m)"));
     EXPECT_GT(depthImages(root / "data" / "bake-cache"), 0u);
@@ -183,12 +186,16 @@ TEST(BenchSceneCli, ScaleRunDrawsDepthWallsWithTheZonesAsked) {
 
 // --walls flat,depth: the flat walls as usual and walls-depth beside them, planned with the
 // depth bound and baked with depth, drawn in turn with the other modes; the report gives their
-// frame-time ratio from this run.
+// frame-time ratio from this run. Every mode culls every list (--occlusion-min 0).
 TEST(BenchSceneCli, ScaleRunDrawsDepthWallsBesideFlatOnes) {
     const test::TempFolder root("bench_cli_scale_both");
     const fs::path out = root / "out";
-    const CliResult r = runTinyScale(root.path(), "20k", {"--walls", "flat,depth", "--triangle-budget", "0"});
+    const CliResult r = runTinyScale(
+        root.path(), "20k",
+        {"--walls", "flat,depth", "--triangle-budget", "0", "--occlusion-min", "0", "--occlusion-min-draws", "0"});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    EXPECT_THAT(r.out, HasSubstr("occlusion culling: on, in views whose list submits at least 0 triangles in at "
+                                 "least 0 draws"));
     EXPECT_THAT(r.out, HasSubstr("walls: flat walls at alpha 10 deg"));
     EXPECT_THAT(r.out, HasSubstr("; walls-depth: the walls mode with depth walls"));
     EXPECT_THAT(r.out, HasSubstr("; depth walls planned (zones of at least"));
@@ -197,6 +204,10 @@ TEST(BenchSceneCli, ScaleRunDrawsDepthWallsBesideFlatOnes) {
     ASSERT_EQ(csv.size(), 6u);
     EXPECT_EQ(csv.column("mode"),
               (std::vector<std::string>{"full", "full-lod", "near", "cells", "walls", "walls-depth"}));
+    for (const test::CsvRow& row : csv) {  // every list culled: what is in view is still drawn
+        SCOPED_TRACE(row.at("mode"));
+        EXPECT_GT(row.number("triangles_per_frame"), 0.0);
+    }
     for (std::size_t m : {4u, 5u}) {
         EXPECT_EQ(csv[m].number("textures_over_alpha"), 0.0);
         EXPECT_EQ(csv[m].number("compared_frames"), 2.0);

@@ -1,4 +1,4 @@
-// Occlusion culling (RenderSettings::occlusionCulling, render/gl/occlusion_culler.h): the same
+// Occlusion culling (RenderSettings::occlusion, render/gl/occlusion_culler.h): the same
 // images as drawing everything, frame after frame while the eye moves and hidden objects come
 // into view, with fewer triangles drawn where a wall hides most of the scene.
 //
@@ -59,9 +59,7 @@ protected:
         const display::gl::RenderTargets plainTargets(display, *context), culledTargets(display, *context);
         SceneRenderer plain(scene);
         RenderSettings settings;
-        settings.occlusionCulling = true;
-        settings.occlusionMinTriangles = minTriangles;
-        settings.occlusionMinDraws = minDraws;
+        settings.occlusion = {.on = true, .minTriangles = minTriangles, .minDraws = minDraws};
         SceneRenderer culled(scene, settings);
         for (std::size_t i = 0; i < eyes.size(); ++i) {
             const display::HeadPose head{eyes[i], glm::dquat(1, 0, 0, 0)};
