@@ -31,11 +31,12 @@ const char* const kBenchUsage =
     "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
     "                      [--walls flat|depth] [--hierarchy [--hierarchy-budgets T1,T2,...]]\n"
     "                      [--compare-scene OTHER,...] [--on-demand] [--texture-format rgba8|bc1|bc3]\n"
-    "                      [--no-occlusion] [--occlusion-min N] [--occlusion-min-draws D]\n"
+    "                      [--no-occlusion] [--occlusion-min N] [--occlusion-min-draws D] [--occlusion-min-saved S]\n"
     "       cavewall bench --scale 2M,8M,32M [--data DIR] [--scale-metres M] [--frames N] [--resolution N]\n"
     "                      [--triangle-budget N|near] [--lod-max PX] [--min-zone M] [--walls flat|depth|flat,depth]\n"
     "                      [--display D] [--bake-resolution N] [--geometry-budget MB] [--lod PX] [--compare-every K]\n"
-    "                      [--no-occlusion] [--occlusion-min N] [--occlusion-min-draws D] [--out DIR]\n"
+    "                      [--no-occlusion] [--occlusion-min N] [--occlusion-min-draws D]\n"
+    "                      [--occlusion-min-saved S] [--out DIR]\n"
     "       cavewall bench --stability (no other flags)\n"
     "\n"
     "SCENE    error against run time in one run (a scene.json, its folder, or glTF/GLB with\n"
@@ -68,7 +69,9 @@ const char* const kBenchUsage =
     "         (each view draws what it saw last frame, then what that depth does not hide; the\n"
     "         same images), full geometry included, in views whose list submits at least\n"
     "         --occlusion-min N triangles (default 100000) in at least --occlusion-min-draws D\n"
-    "         draws (default 500); triangles a frame are those drawn. --no-occlusion: none.\n"
+    "         draws (default 500), paused for 16 frames in a view where it saved less than\n"
+    "         --occlusion-min-saved S of the triangles (default 0.1); triangles a frame are those\n"
+    "         drawn. --no-occlusion: none.\n"
     "         --texture-format: storage of the baked colour (as `cavewall bake`, default\n"
     "         " DEFAULT_TEXTURE_FORMAT
     "); the disk and GPU MB columns and the image error include it.\n"
@@ -148,7 +151,7 @@ const char* const kBenchUsage =
     "         --keep-sheets: depth walls keep the rubber sheets they cut by default (a near\n"
     "         object's colour stretched over the gap beside it), to measure the cut.\n"
     "         Occlusion culling as in a scene's bench (on; --no-occlusion, --occlusion-min,\n"
-    "         --occlusion-min-draws): triangles a frame are those drawn.\n"
+    "         --occlusion-min-draws, --occlusion-min-saved): triangles a frame are those drawn.\n"
     "\n"
     "--stability  runs the stiff and extreme numerical cases (projection at eye distances\n"
     "             1e-9 ... 1e6 m, world offsets to 1e7 m, near/far ratios to 1e9 with reversed-Z,\n"
@@ -363,7 +366,7 @@ int runBench(const std::vector<std::string>& words) {
     // One flag list, packed.
     // clang-format off
     args.expectFlags({
-        "stability", "quick", "keep-sheets", "mono", "occlusion", "no-occlusion", "occlusion-min", "occlusion-min-draws", "display", "path", "route", "out", "frames", "resolution", "stereo", "cache",
+        "stability", "quick", "keep-sheets", "mono", "occlusion", "no-occlusion", "occlusion-min", "occlusion-min-draws", "occlusion-min-saved", "display", "path", "route", "out", "frames", "resolution", "stereo", "cache",
         "compare-every", "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod",
         "triangle-budget", "frame-budget-ms", "lod-max", "walls", "hierarchy", "hierarchy-budgets", "clusters",
         "cluster-budgets", "compare-scene", "on-demand", "scale", "data", "scale-metres", "geometry-budget",

@@ -128,6 +128,7 @@ render::OcclusionSettings parseOcclusion(const Args& args) {
         static_cast<std::size_t>(args.integer("occlusion-min", static_cast<long>(s.minTriangles), 0, 1000000000));
     s.minDraws =
         static_cast<std::size_t>(args.integer("occlusion-min-draws", static_cast<long>(s.minDraws), 0, 1000000000));
+    s.minSavedShare = args.number("occlusion-min-saved", s.minSavedShare, 0.0, 1.0);
     return s;
 }
 
@@ -142,7 +143,7 @@ std::vector<std::string_view> sessionFlags() {
         "hierarchy-res", "hierarchy-fade", "clusters", "cluster-divisions", "cluster-res", "cluster-fade",
         "bake-on-demand", "bake-first", "cache-budget", "bake-interleave", "bake-nice", "texture-format",
         "texture-max", "texture-budget", "resolution", "mono", "keep-sheets", "occlusion", "no-occlusion",
-        "occlusion-min", "occlusion-min-draws"};
+        "occlusion-min", "occlusion-min-draws", "occlusion-min-saved"};
     // clang-format on
 }
 

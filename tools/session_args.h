@@ -36,7 +36,8 @@ scenes::TextureLimits parseTextureLimits(const Args& args);
 // Occlusion culling (render/occlusion_settings.h), on by default: --no-occlusion turns it off
 // (--occlusion, the default, may be given; not both); --occlusion-min N (default 100000,
 // [0, 1e9]) and --occlusion-min-draws D (default 500, [0, 1e9]) are the triangles and draws a
-// view's list must have to be culled. `run`, `view`, `bench` (with --scale too) and `demo` take
+// view's list must have to be culled; --occlusion-min-saved S (default 0.1, [0, 1]) pauses it
+// in a view where it saves less than that share of the triangles. `run`, `view`, `bench` (with --scale too) and `demo` take
 // them (both switches listed in Args).
 render::OcclusionSettings parseOcclusion(const Args& args);
 

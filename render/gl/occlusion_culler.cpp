@@ -20,15 +20,18 @@ layout(std430, binding = 1) buffer Phase1 { Command phase1[]; };
 layout(std430, binding = 2) writeonly buffer Phase2 { Command phase2[]; };
 layout(std430, binding = 3) readonly buffer Records { vec4 records[]; };  // 10 per DrawRecord
 layout(std430, binding = 4) readonly buffer Objects { uint objectOf[]; };  // per record
-layout(std430, binding = 5) buffer Seen { uint seen[]; };                  // per object
+layout(std430, binding = 5) buffer Seen { uint seen[]; };  // per object, then the slot's 2 counts
 layout(std430, binding = 6) buffer Counts { uint counts[4]; };
 uniform uint uCount;
 uniform uint uFirstBlended;
+uniform uint uObjects;  // seen[uObjects]: triangles submitted, seen[uObjects + 1]: drawn
+uniform bool uMeasure;  // whether this frame counts in the slot's measure
 
 void count(uint draw, bool drawn) {
     uint triangles = source[draw].count / 3u;
     atomicAdd(counts[1], drawn ? 1u : 0u);
     atomicAdd(counts[3], drawn ? triangles : 0u);
+    if (uMeasure && drawn) atomicAdd(seen[uObjects + 1u], triangles);
 }
 )";
 
@@ -43,6 +46,7 @@ void main() {
     phase1[i] = c;
     atomicAdd(counts[0], c.count > 0u ? 1u : 0u);
     atomicAdd(counts[2], c.count / 3u);
+    if (uMeasure) atomicAdd(seen[uObjects], c.count / 3u);
     count(i, on);
 }
 )";
@@ -178,6 +182,10 @@ OcclusionCuller::OcclusionCuller(std::size_t objectCount) : _objects(objectCount
     glSamplerParameteri(_sampler.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     _selectCount = uniformLocation(_selectProgram.id(), "occlusion: seen", "uCount");
     _selectFirstBlended = uniformLocation(_selectProgram.id(), "occlusion: seen", "uFirstBlended");
+    _selectObjects = uniformLocation(_selectProgram.id(), "occlusion: seen", "uObjects");
+    _testObjects = uniformLocation(_testProgram.id(), "occlusion: revealed", "uObjects");
+    _selectMeasure = uniformLocation(_selectProgram.id(), "occlusion: seen", "uMeasure");
+    _testMeasure = uniformLocation(_testProgram.id(), "occlusion: revealed", "uMeasure");
     _testCount = uniformLocation(_testProgram.id(), "occlusion: revealed", "uCount");
     _testFirstBlended = uniformLocation(_testProgram.id(), "occlusion: revealed", "uFirstBlended");
     _testProjection = uniformLocation(_testProgram.id(), "occlusion: revealed", "uProjection");
@@ -188,10 +196,40 @@ OcclusionCuller::OcclusionCuller(std::size_t objectCount) : _objects(objectCount
     _reduceLevel = uniformLocation(_reduceProgram.id(), "occlusion: pyramid", "uLevel");
 }
 
-GLuint OcclusionCuller::slotBuffer(std::uint64_t slot) {
-    auto found = _seen.find(slot);
-    if (found == _seen.end()) found = _seen.emplace(slot, storage(_objects * sizeof(std::uint32_t))).first;
-    return found->second.id();
+OcclusionCuller::~OcclusionCuller() {
+    for (auto& [slot, s] : _slots)
+        if (s.fence) glDeleteSync(s.fence);
+}
+
+OcclusionCuller::Slot& OcclusionCuller::slotOf(std::uint64_t slot) {
+    auto found = _slots.find(slot);
+    if (found == _slots.end())
+        found = _slots.emplace(slot, Slot{storage((_objects + 2) * sizeof(std::uint32_t))}).first;
+    return found->second;
+}
+
+bool OcclusionCuller::worthCulling(std::uint64_t slot, double minSavedShare) {
+    Slot& s = slotOf(slot);
+    if (s.paused > 0) {
+        --s.paused;
+        s.streak = 0;
+        return false;
+    }
+    if (!s.fence || minSavedShare <= 0.0) return true;
+    const GLenum state = glClientWaitSync(s.fence, GL_SYNC_FLUSH_COMMANDS_BIT, 0);
+    if (state != GL_ALREADY_SIGNALED && state != GL_CONDITION_SATISFIED) return true;  // measured later
+    glDeleteSync(s.fence);
+    s.fence = nullptr;
+    std::array<std::uint32_t, 2> triangles{};  // submitted, drawn: every culled frame since the last read
+    const auto at = static_cast<GLintptr>(_objects * sizeof(std::uint32_t));
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(s.seen.id(), at, sizeof(triangles), triangles.data());
+    glClearNamedBufferSubData(s.seen.id(), GL_R32UI, at, sizeof(triangles), GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+    const double saved =
+        triangles[0] > 0 ? 1.0 - static_cast<double>(triangles[1]) / static_cast<double>(triangles[0]) : 1.0;
+    if (saved >= minSavedShare) return true;
+    s.paused = kOcclusionPausedFrames - 1;  // this frame is the first drawn whole
+    return false;
 }
 
 void OcclusionCuller::bindCommon(const CullBuffers& buffers, GLuint seen) {
@@ -205,6 +243,8 @@ void OcclusionCuller::selectSeen(std::uint64_t slot, const CullBuffers& buffers)
     bindCommon(buffers, slotBuffer(slot));
     glUniform1ui(_selectCount, buffers.count);
     glUniform1ui(_selectFirstBlended, buffers.firstBlended);
+    glUniform1ui(_selectObjects, static_cast<GLuint>(_objects));
+    glUniform1i(_selectMeasure, slotOf(slot).streak >= 2 ? 1 : 0);
     glDispatchCompute(groups(buffers.count, 64), 1, 1);
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
 }
@@ -259,6 +299,8 @@ void OcclusionCuller::selectRevealed(std::uint64_t slot, const CullBuffers& buff
     glBindSampler(kPyramidUnit, _sampler.id());
     glUniform1ui(_testCount, buffers.count);
     glUniform1ui(_testFirstBlended, buffers.firstBlended);
+    glUniform1ui(_testObjects, static_cast<GLuint>(_objects));
+    glUniform1i(_testMeasure, slotOf(slot).streak >= 2 ? 1 : 0);
     glUniformMatrix4fv(_testProjection, 1, GL_FALSE, glm::value_ptr(projection));
     glUniform2i(_testViewport, _viewportSize.x, _viewportSize.y);
     glUniform1i(_testLevels, _levels);
@@ -266,6 +308,12 @@ void OcclusionCuller::selectRevealed(std::uint64_t slot, const CullBuffers& buff
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glBindTextureUnit(kPyramidUnit, 0);
     glBindSampler(kPyramidUnit, 0);
+    Slot& s = slotOf(slot);
+    if (s.streak >= 2) {  // measured: the newest fence covers every measured frame not yet read
+        if (s.fence) glDeleteSync(s.fence);
+        s.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    }
+    s.streak = std::min(s.streak + 1, 2);
 }
 
 OcclusionCounts OcclusionCuller::readCounts() {

@@ -19,10 +19,13 @@
 // record's model-view rows (shaders::DrawRecord) place that cube in the view.
 //
 // Everything runs in compute shaders on buffers the renderer already has (its draw records and
-// indirect commands): no read-back, no wait; the counts of what was drawn stay on the GPU until
-// a caller asks (readCounts, which waits).
+// indirect commands): no wait; the counts of what was drawn stay on the GPU until a caller asks
+// (readCounts, which waits). What culling saves is measured per slot and read back only once
+// the GPU has finished that frame (worthCulling): a view where culling hides little is drawn
+// whole for a while instead of paying for a pyramid that saves nothing.
 
 #include "display/gl/gl_object.h"
+#include "render/occlusion_settings.h"
 
 #include <glm/glm.hpp>
 
@@ -52,6 +55,16 @@ class OcclusionCuller {
 public:
     // Needs a current GL 4.5 context. `objectCount`: the scene's objects (each slot's memory).
     explicit OcclusionCuller(std::size_t objectCount);
+    ~OcclusionCuller();
+    OcclusionCuller(const OcclusionCuller&) = delete;
+    OcclusionCuller& operator=(const OcclusionCuller&) = delete;
+
+    // Whether `slot` is culled this frame. A slot whose last measured culled frames (from the
+    // third in a row on) left out less than `minSavedShare` of the triangles they submitted is drawn whole for this frame and the
+    // next render::kOcclusionPausedFrames - 1, then measured again. The measure is read once a fence says the GPU
+    // has finished those frames (polled, never waited for); until then the slot is culled.
+    // minSavedShare 0: always culled.
+    bool worthCulling(std::uint64_t slot, double minSavedShare);
 
     // Phase 1: writes buffers.phase1 with the opaque draws `slot` saw last frame turned on.
     // A slot is a view of a caller's frame loop (e.g. screen and eye); a new slot saw nothing.
@@ -66,7 +79,18 @@ public:
     OcclusionCounts readCounts();
 
 private:
-    GLuint slotBuffer(std::uint64_t slot);
+    // One view's memory between frames.
+    struct Slot {
+        display::gl::GlObject seen;  // uint per object; then the triangles submitted and drawn
+        GLsync fence = nullptr;      // after the last culled frame's phase 2, until read
+        int paused = 0;              // frames still to draw whole
+        // Frames culled in a row before this one. A frame is measured from the third on: the
+        // first tests against the empty depth of a view that saw nothing (or long ago), so it
+        // finds everything visible and the second draws all that in phase 1.
+        int streak = 0;
+    };
+    Slot& slotOf(std::uint64_t slot);
+    GLuint slotBuffer(std::uint64_t slot) { return slotOf(slot).seen.id(); }
     void allocatePyramid(glm::ivec2 size);
     static void dispatch2d(glm::ivec2 size);
     void bindCommon(const CullBuffers& buffers, GLuint visible);
@@ -74,7 +98,8 @@ private:
     std::size_t _objects;
     display::gl::GlObject _selectProgram, _reduceFirstProgram, _reduceProgram, _testProgram;
     GLint _firstOffset = -1, _firstSourceSize = -1, _firstTargetSize = -1;
-    GLint _selectCount = -1, _selectFirstBlended = -1;
+    GLint _selectCount = -1, _selectFirstBlended = -1, _selectObjects = -1, _testObjects = -1;
+    GLint _selectMeasure = -1, _testMeasure = -1;
     GLint _reduceSourceSize = -1, _reduceTargetSize = -1, _reduceLevel = -1;
     GLint _testCount = -1, _testFirstBlended = -1, _testProjection = -1, _testViewport = -1, _testLevels = -1;
     display::gl::GlObject _sampler;  // nearest texel, for the depth textures and the pyramid
@@ -84,7 +109,7 @@ private:
     int _levels = 0;                 // used by the last buildPyramid
     glm::ivec2 _viewportSize{0, 0};  // of the last buildPyramid
     display::gl::GlObject _counts;   // uint[4]: draws submitted, drawn, triangles submitted, drawn
-    std::map<std::uint64_t, display::gl::GlObject> _seen;  // per slot: uint per object
+    std::map<std::uint64_t, Slot> _slots;
 };
 
 }  // namespace cavewall::render::gl

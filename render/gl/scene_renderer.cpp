@@ -260,7 +260,8 @@ ViewStats SceneRenderer::draw(const render::RenderList& list) {
     const glm::mat4 projection(frustum.clipFromView);
     for (const Program& p : _programs)
         glProgramUniformMatrix4fv(p.program.id(), p.projection, 1, GL_FALSE, glm::value_ptr(projection));
-    const bool cull = _culler && _viewSlot && _settings.occlusion.culls(list.triangles, list.draws.size());
+    const bool cull = _culler && _viewSlot && _settings.occlusion.culls(list.triangles, list.draws.size()) &&
+                      _culler->worthCulling(*_viewSlot, _settings.occlusion.minSavedShare);
     const GLuint depth = cull ? boundDepthTexture() : 0;
     stats.drawCalls = depth != 0 ? drawCulled(list, buffers, depth) : issueBatches(list);
     stats.objectsDrawn = objectsDrawn;

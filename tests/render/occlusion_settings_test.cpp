@@ -1,5 +1,5 @@
 // When a view's list is culled (render/occlusion_settings.h): both thresholds must be met, 0
-// means no limit, off culls nothing, and the description states the thresholds.
+// means no limit, off culls nothing, and the description states the thresholds and the pause.
 
 #include "render/occlusion_settings.h"
 
@@ -18,8 +18,11 @@ TEST(OcclusionSettings, CullsOnlyListsMeetingBothThresholds) {
 }
 
 TEST(OcclusionSettings, DescriptionNamesTheThresholdsOrOff) {
-    EXPECT_EQ(describe(OcclusionSettings{.on = true, .minTriangles = 1234, .minDraws = 56}),
-              "on, in views whose list submits at least 1234 triangles in at least 56 draws");
+    EXPECT_EQ(describe(OcclusionSettings{.on = true, .minTriangles = 1234, .minDraws = 56, .minSavedShare = 0.25}),
+              "on, in views whose list submits at least 1234 triangles in at least 56 draws, paused for 16 frames "
+              "in a view where it saved under 25 % of them");
+    EXPECT_EQ(describe(OcclusionSettings{.on = true, .minTriangles = 1, .minDraws = 2, .minSavedShare = 0.0}),
+              "on, in views whose list submits at least 1 triangles in at least 2 draws");
     EXPECT_EQ(describe(OcclusionSettings{.on = false}), "off");
 }
 

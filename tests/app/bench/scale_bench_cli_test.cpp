@@ -134,7 +134,8 @@ TEST(BenchSceneCli, ScaleRunInStereoReportsTheStereoError) {
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_THAT(r.out, HasSubstr("4 screens at 32x32 pixels, separate"));
     EXPECT_THAT(r.out, HasSubstr("occlusion culling: on, in views whose list submits at least 100000 triangles in "
-                                 "at least 500 draws (every mode"));
+                                 "at least 500 draws, paused for 16 frames in a view where it saved under 10 % of "
+                                 "them (every mode"));
     EXPECT_THAT(r.out, HasSubstr("stereo arcmin (% > 1')"));
     // Whether the walls are on the front at 32 x 32 pixels depends on their frame time against
     // full geometry with levels of detail (a few milliseconds apart): where they are, the rule

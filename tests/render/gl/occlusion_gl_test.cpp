@@ -25,13 +25,15 @@ int addMesh(scenes::Scene& scene, scenes::Mesh mesh, glm::dvec3 at, int material
                              "object");
 }
 
-scenes::Scene wallAndBoxes() {
+// `wall` false: the boxes alone, nothing hidden.
+scenes::Scene wallAndBoxes(bool wall = true) {
     scenes::Scene scene;
     // The wall: 3 m in front, from the view's left edge to x = 1.3 m (its edge crosses boxes behind).
-    addMesh(scene,
-            scenes::makeTiledQuad({-4.0f, -4.0f, 0.0f}, {5.3f, 0, 0}, {0, 8.0f, 0}, 1, 1,
-                                  glm::vec4(0.8f, 0.7f, 0.6f, 1), glm::vec4(0.8f, 0.7f, 0.6f, 1)),
-            {0, 0, -3});
+    if (wall)
+        addMesh(scene,
+                scenes::makeTiledQuad({-4.0f, -4.0f, 0.0f}, {5.3f, 0, 0}, {0, 8.0f, 0}, 1, 1,
+                                      glm::vec4(0.8f, 0.7f, 0.6f, 1), glm::vec4(0.8f, 0.7f, 0.6f, 1)),
+                {0, 0, -3});
     for (int z = 0; z < 4; ++z)
         for (int y = -3; y <= 3; ++y)
             for (int x = -6; x <= 6; ++x) {
@@ -54,12 +56,13 @@ class OcclusionTest : public testing::GlTest {
 protected:
     // Renders the eye positions in turn with and without culling; every image must be the same.
     void expectSameImages(const std::vector<glm::dvec3>& eyes, std::size_t minTriangles = 0, std::size_t minDraws = 0) {
-        const scenes::Scene scene = wallAndBoxes();
+        const scenes::Scene scene = wallAndBoxes(withWall);
         const display::Display display(testing::oneScreenDisplay(128));
         const display::gl::RenderTargets plainTargets(display, *context), culledTargets(display, *context);
         SceneRenderer plain(scene);
         RenderSettings settings;
-        settings.occlusion = {.on = true, .minTriangles = minTriangles, .minDraws = minDraws};
+        settings.occlusion = {
+            .on = true, .minTriangles = minTriangles, .minDraws = minDraws, .minSavedShare = minSavedShare};
         SceneRenderer culled(scene, settings);
         for (std::size_t i = 0; i < eyes.size(); ++i) {
             const display::HeadPose head{eyes[i], glm::dquat(1, 0, 0, 0)};
@@ -73,6 +76,8 @@ protected:
         EXPECT_FALSE(plain.readOcclusionCounts().has_value());
     }
     std::vector<OcclusionCounts> counts;
+    bool withWall = true;
+    double minSavedShare = 0.1;
 };
 
 TEST_F(OcclusionTest, DrawsTheSameImagesWithFewerTriangles) {
@@ -119,6 +124,34 @@ TEST_F(OcclusionTest, ListsBelowTheThresholdsAreDrawnWhole) {
     counts.clear();
     expectSameImages({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, 0, 300);
     EXPECT_GT(counts.back().drawsSubmitted, 300u);
+}
+
+TEST_F(OcclusionTest, ViewsWhereCullingSavesLittlePauseAndAreMeasuredAgain) {
+    // Without the wall nearly every box is in view: culling saves little. A view's first two culled
+    // frames are not measured (the first finds everything visible against empty depth, the
+    // second draws all that first), the third (2) is; frame 3 reads that measure and draws
+    // whole, as do the next 15; frames 19 and 20 cull again unmeasured, 21 is measured, 22
+    // pauses.
+    withWall = false;
+    expectSameImages(std::vector<glm::dvec3>(24, glm::dvec3(0.0)));
+    ASSERT_EQ(counts.size(), 24u);
+    auto culled = [&](std::size_t i) { return counts[i].drawsSubmitted > 0; };
+    for (std::size_t i : {0u, 1u, 2u, 19u, 20u, 21u}) EXPECT_TRUE(culled(i)) << "frame " << i << " is culled";
+    EXPECT_GT(counts[2].trianglesDrawn * 10, counts[2].trianglesSubmitted * 9) << "under a tenth is hidden";
+    for (std::size_t i = 3; i < 19; ++i) EXPECT_FALSE(culled(i)) << "frame " << i << " is paused";
+    EXPECT_FALSE(culled(22));
+    EXPECT_FALSE(culled(23));
+    // With no least share, culling never pauses.
+    counts.clear();
+    minSavedShare = 0.0;
+    expectSameImages(std::vector<glm::dvec3>(4, glm::dvec3(0.0)));
+    for (std::size_t i = 0; i < counts.size(); ++i) EXPECT_TRUE(culled(i)) << "frame " << i;
+    // Where the wall hides most boxes, every frame is culled.
+    counts.clear();
+    withWall = true;
+    minSavedShare = 0.1;
+    expectSameImages(std::vector<glm::dvec3>(20, glm::dvec3(0.0)));
+    for (std::size_t i = 0; i < counts.size(); ++i) EXPECT_TRUE(culled(i)) << "frame " << i;
 }
 
 }  // namespace
