@@ -20,18 +20,20 @@ layout(std430, binding = 1) buffer Phase1 { Command phase1[]; };
 layout(std430, binding = 2) writeonly buffer Phase2 { Command phase2[]; };
 layout(std430, binding = 3) readonly buffer Records { vec4 records[]; };  // 10 per DrawRecord
 layout(std430, binding = 4) readonly buffer Objects { uint objectOf[]; };  // per record
-layout(std430, binding = 5) buffer Seen { uint seen[]; };  // per object, then the slot's 2 counts
+layout(std430, binding = 5) buffer Seen { uint seen[]; };  // per object, then the slot's 3 counts
 layout(std430, binding = 6) buffer Counts { uint counts[4]; };
 uniform uint uCount;
 uniform uint uFirstBlended;
-uniform uint uObjects;  // seen[uObjects]: triangles submitted, seen[uObjects + 1]: drawn
+// seen[uObjects]: triangles submitted; seen[uObjects + 1], [uObjects + 2]: drawn in phase 1, 2
+uniform uint uObjects;
 uniform bool uMeasure;  // whether this frame counts in the slot's measure
 
-void count(uint draw, bool drawn) {
+// Counts a draw of phase 1 or 2 (`phase`) as drawn or not.
+void count(uint draw, bool drawn, uint phase) {
     uint triangles = source[draw].count / 3u;
     atomicAdd(counts[1], drawn ? 1u : 0u);
     atomicAdd(counts[3], drawn ? triangles : 0u);
-    if (uMeasure && drawn) atomicAdd(seen[uObjects + 1u], triangles);
+    if (uMeasure && drawn) atomicAdd(seen[uObjects + phase], triangles);
 }
 )";
 
@@ -47,7 +49,7 @@ void main() {
     atomicAdd(counts[0], c.count > 0u ? 1u : 0u);
     atomicAdd(counts[2], c.count / 3u);
     if (uMeasure) atomicAdd(seen[uObjects], c.count / 3u);
-    count(i, on);
+    count(i, on, 1u);
 }
 )";
 
@@ -101,7 +103,7 @@ void main() {
     if (c.baseInstance < uFirstBlended && c.count > 0u) seen[objectOf[c.baseInstance]] = on ? 1u : 0u;
     c.instanceCount = on && !earlier ? 1u : 0u;
     phase2[i] = c;
-    count(i, c.instanceCount != 0u);
+    count(i, c.instanceCount != 0u, 2u);
 }
 )";
 
@@ -204,7 +206,7 @@ OcclusionCuller::~OcclusionCuller() {
 OcclusionCuller::Slot& OcclusionCuller::slotOf(std::uint64_t slot) {
     auto found = _slots.find(slot);
     if (found == _slots.end())
-        found = _slots.emplace(slot, Slot{storage((_objects + 2) * sizeof(std::uint32_t))}).first;
+        found = _slots.emplace(slot, Slot{storage((_objects + 3) * sizeof(std::uint32_t))}).first;
     return found->second;
 }
 
@@ -220,13 +222,17 @@ bool OcclusionCuller::worthCulling(std::uint64_t slot, double minSavedShare) {
     if (state != GL_ALREADY_SIGNALED && state != GL_CONDITION_SATISFIED) return true;  // measured later
     glDeleteSync(s.fence);
     s.fence = nullptr;
-    std::array<std::uint32_t, 2> triangles{};  // submitted, drawn: every culled frame since the last read
+    // Submitted, drawn in phase 1, drawn in phase 2: every measured frame since the last read.
+    std::array<std::uint32_t, 3> triangles{};
     const auto at = static_cast<GLintptr>(_objects * sizeof(std::uint32_t));
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glGetNamedBufferSubData(s.seen.id(), at, sizeof(triangles), triangles.data());
     glClearNamedBufferSubData(s.seen.id(), GL_R32UI, at, sizeof(triangles), GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
-    const double saved =
-        triangles[0] > 0 ? 1.0 - static_cast<double>(triangles[1]) / static_cast<double>(triangles[0]) : 1.0;
+    // More revealed in phase 2 than redrawn in phase 1: what the view saw last frame was stale
+    // (the eye jumped), so little was hidden for want of depth, not for want of occluders.
+    if (triangles[2] > triangles[1]) return true;
+    const double drawn = static_cast<double>(triangles[1]) + static_cast<double>(triangles[2]);
+    const double saved = triangles[0] > 0 ? 1.0 - drawn / static_cast<double>(triangles[0]) : 1.0;
     if (saved >= minSavedShare) return true;
     s.paused = kOcclusionPausedFrames - 1;  // this frame is the first drawn whole
     return false;

@@ -60,7 +60,8 @@ public:
     OcclusionCuller& operator=(const OcclusionCuller&) = delete;
 
     // Whether `slot` is culled this frame. A slot whose last measured culled frames (from the
-    // third in a row on) left out less than `minSavedShare` of the triangles they submitted is drawn whole for this frame and the
+    // third in a row on, and only where phase 1 drew more than phase 2 revealed: else what the
+    // view saw last frame was stale, after a jump) left out less than `minSavedShare` of the triangles they submitted is drawn whole for this frame and the
     // next render::kOcclusionPausedFrames - 1, then measured again. The measure is read once a fence says the GPU
     // has finished those frames (polled, never waited for); until then the slot is culled.
     // minSavedShare 0: always culled.
@@ -81,7 +82,7 @@ public:
 private:
     // One view's memory between frames.
     struct Slot {
-        display::gl::GlObject seen;  // uint per object; then the triangles submitted and drawn
+        display::gl::GlObject seen;  // uint per object; then triangles submitted, drawn in phase 1, 2
         GLsync fence = nullptr;      // after the last culled frame's phase 2, until read
         int paused = 0;              // frames still to draw whole
         // Frames culled in a row before this one. A frame is measured from the third on: the
