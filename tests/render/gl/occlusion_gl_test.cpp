@@ -154,5 +154,26 @@ TEST_F(OcclusionTest, ViewsWhereCullingSavesLittlePauseAndAreMeasuredAgain) {
     for (std::size_t i = 0; i < counts.size(); ++i) EXPECT_TRUE(culled(i)) << "frame " << i;
 }
 
+TEST_F(OcclusionTest, AFrameAfterAJumpDecidesNothing) {
+    // From 1 m right of the centre the wall fills most of the view: culling leaves out over 90 %
+    // of the triangles, and the boxes right of the wall's edge are not even in the list. Frame 3
+    // jumps 2.6 m left, past the wall's edge: phase 1 redraws the wall, all this view saw of
+    // what it now draws, and phase 2 reveals the boxes, so that frame decides nothing although
+    // it leaves out only about 40 %. Frame 4, the same view steady, leaves out as much and
+    // decides: under a least share of 60 % frame 5 pauses.
+    minSavedShare = 0.6;
+    const glm::dvec3 right(1, 0, 0), left(-1.6, 0, 0);
+    expectSameImages({right, right, right, left, left, left});
+    ASSERT_EQ(counts.size(), 6u);
+    auto culled = [&](std::size_t i) { return counts[i].drawsSubmitted > 0; };
+    EXPECT_LT(counts[2].trianglesDrawn * 10, counts[2].trianglesSubmitted) << "over 90 % left out";
+    for (std::size_t i : {3u, 4u}) {
+        SCOPED_TRACE(i);
+        EXPECT_TRUE(culled(i));
+        EXPECT_GT(counts[i].trianglesDrawn * 10, counts[i].trianglesSubmitted * 4) << "under 60 % left out";
+    }
+    EXPECT_FALSE(culled(5)) << "the steady frame 4 pauses frame 5";
+}
+
 }  // namespace
 }  // namespace cavewall::render::gl
