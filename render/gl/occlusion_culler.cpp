@@ -184,8 +184,12 @@ OcclusionCuller::OcclusionCuller(std::size_t objectCount) : _objects(objectCount
     glSamplerParameteri(_sampler.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     _selectCount = uniformLocation(_selectProgram.id(), "occlusion: seen", "uCount");
     _selectFirstBlended = uniformLocation(_selectProgram.id(), "occlusion: seen", "uFirstBlended");
-    _selectObjects = uniformLocation(_selectProgram.id(), "occlusion: seen", "uObjects");
-    _testObjects = uniformLocation(_testProgram.id(), "occlusion: revealed", "uObjects");
+    // Where each slot's counts sit after its objects' flags: the same for every dispatch.
+    const auto objects = static_cast<GLuint>(_objects);
+    glProgramUniform1ui(_selectProgram.id(), uniformLocation(_selectProgram.id(), "occlusion: seen", "uObjects"),
+                        objects);
+    glProgramUniform1ui(_testProgram.id(), uniformLocation(_testProgram.id(), "occlusion: revealed", "uObjects"),
+                        objects);
     _selectMeasure = uniformLocation(_selectProgram.id(), "occlusion: seen", "uMeasure");
     _testMeasure = uniformLocation(_testProgram.id(), "occlusion: revealed", "uMeasure");
     _testCount = uniformLocation(_testProgram.id(), "occlusion: revealed", "uCount");
@@ -212,6 +216,7 @@ OcclusionCuller::Slot& OcclusionCuller::slotOf(std::uint64_t slot) {
 
 bool OcclusionCuller::worthCulling(std::uint64_t slot, double minSavedShare) {
     Slot& s = slotOf(slot);
+    s.measured = minSavedShare > 0.0 && s.streak >= 2;
     if (s.paused > 0) {
         --s.paused;
         s.streak = 0;
@@ -246,11 +251,11 @@ void OcclusionCuller::bindCommon(const CullBuffers& buffers, GLuint seen) {
 
 void OcclusionCuller::selectSeen(std::uint64_t slot, const CullBuffers& buffers) {
     glUseProgram(_selectProgram.id());
-    bindCommon(buffers, slotBuffer(slot));
+    const Slot& s = slotOf(slot);
+    bindCommon(buffers, s.seen.id());
     glUniform1ui(_selectCount, buffers.count);
     glUniform1ui(_selectFirstBlended, buffers.firstBlended);
-    glUniform1ui(_selectObjects, static_cast<GLuint>(_objects));
-    glUniform1i(_selectMeasure, slotOf(slot).streak >= 2 ? 1 : 0);
+    glUniform1i(_selectMeasure, s.measured ? 1 : 0);
     glDispatchCompute(groups(buffers.count, 64), 1, 1);
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
 }
@@ -300,13 +305,13 @@ void OcclusionCuller::dispatch2d(glm::ivec2 size) {
 
 void OcclusionCuller::selectRevealed(std::uint64_t slot, const CullBuffers& buffers, const glm::mat4& projection) {
     glUseProgram(_testProgram.id());
-    bindCommon(buffers, slotBuffer(slot));
+    Slot& s = slotOf(slot);
+    bindCommon(buffers, s.seen.id());
     glBindTextureUnit(kPyramidUnit, _pyramid.id());
     glBindSampler(kPyramidUnit, _sampler.id());
     glUniform1ui(_testCount, buffers.count);
     glUniform1ui(_testFirstBlended, buffers.firstBlended);
-    glUniform1ui(_testObjects, static_cast<GLuint>(_objects));
-    glUniform1i(_testMeasure, slotOf(slot).streak >= 2 ? 1 : 0);
+    glUniform1i(_testMeasure, s.measured ? 1 : 0);
     glUniformMatrix4fv(_testProjection, 1, GL_FALSE, glm::value_ptr(projection));
     glUniform2i(_testViewport, _viewportSize.x, _viewportSize.y);
     glUniform1i(_testLevels, _levels);
@@ -314,8 +319,7 @@ void OcclusionCuller::selectRevealed(std::uint64_t slot, const CullBuffers& buff
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glBindTextureUnit(kPyramidUnit, 0);
     glBindSampler(kPyramidUnit, 0);
-    Slot& s = slotOf(slot);
-    if (s.streak >= 2) {  // measured: the newest fence covers every measured frame not yet read
+    if (s.measured) {  // the newest fence covers every measured frame not yet read
         if (s.fence) glDeleteSync(s.fence);
         s.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     }

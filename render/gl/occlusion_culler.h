@@ -59,12 +59,15 @@ public:
     OcclusionCuller(const OcclusionCuller&) = delete;
     OcclusionCuller& operator=(const OcclusionCuller&) = delete;
 
-    // Whether `slot` is culled this frame. A slot whose last measured culled frames (from the
-    // third in a row on, and only where phase 1 drew more than phase 2 revealed: else what the
-    // view saw last frame was stale, after a jump) left out less than `minSavedShare` of the triangles they submitted is drawn whole for this frame and the
-    // next render::kOcclusionPausedFrames - 1, then measured again. The measure is read once a fence says the GPU
-    // has finished those frames (polled, never waited for); until then the slot is culled.
-    // minSavedShare 0: always culled.
+    // Whether `slot` is culled this frame (then selectSeen and selectRevealed follow). A slot
+    // whose last measured culled frames left out less than `minSavedShare` of the triangles
+    // they submitted is drawn whole for this frame and the next
+    // render::kOcclusionPausedFrames - 1, then measured again. Measured are the frames from
+    // the third culled in a row on; a measure in which phase 2 revealed more than phase 1
+    // redrew (what the view saw last frame was stale: the eye jumped) decides nothing. The
+    // measure is read once a fence says the GPU has finished those frames (polled, never
+    // waited for); until then the slot is culled. minSavedShare 0: always culled, nothing
+    // measured.
     bool worthCulling(std::uint64_t slot, double minSavedShare);
 
     // Phase 1: writes buffers.phase1 with the opaque draws `slot` saw last frame turned on.
@@ -89,9 +92,9 @@ private:
         // first tests against the empty depth of a view that saw nothing (or long ago), so it
         // finds everything visible and the second draws all that in phase 1.
         int streak = 0;
+        bool measured = false;  // this frame counts in the measure (set by worthCulling)
     };
     Slot& slotOf(std::uint64_t slot);
-    GLuint slotBuffer(std::uint64_t slot) { return slotOf(slot).seen.id(); }
     void allocatePyramid(glm::ivec2 size);
     static void dispatch2d(glm::ivec2 size);
     void bindCommon(const CullBuffers& buffers, GLuint visible);
@@ -99,8 +102,7 @@ private:
     std::size_t _objects;
     display::gl::GlObject _selectProgram, _reduceFirstProgram, _reduceProgram, _testProgram;
     GLint _firstOffset = -1, _firstSourceSize = -1, _firstTargetSize = -1;
-    GLint _selectCount = -1, _selectFirstBlended = -1, _selectObjects = -1, _testObjects = -1;
-    GLint _selectMeasure = -1, _testMeasure = -1;
+    GLint _selectCount = -1, _selectFirstBlended = -1, _selectMeasure = -1, _testMeasure = -1;
     GLint _reduceSourceSize = -1, _reduceTargetSize = -1, _reduceLevel = -1;
     GLint _testCount = -1, _testFirstBlended = -1, _testProjection = -1, _testViewport = -1, _testLevels = -1;
     display::gl::GlObject _sampler;  // nearest texel, for the depth textures and the pyramid

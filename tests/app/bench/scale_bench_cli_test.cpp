@@ -166,8 +166,8 @@ std::size_t depthImages(const fs::path& cache) {
 }
 
 // --walls depth, --min-zone and --no-occlusion reach the scale bench's plan, bake and renderers
-// (they were once accepted and ignored there): the report names them, the bake holds depth images, and the depth walls'
-// own bound keeps every drawn texture within alpha.
+// (they were once accepted and ignored there): the report names them, the bake holds depth
+// images, and the depth walls' own bound keeps every drawn texture within alpha.
 TEST(BenchSceneCli, ScaleRunDrawsDepthWallsWithTheZonesAsked) {
     const test::TempFolder root("bench_cli_scale_depth");
     const fs::path out = root / "out";
