@@ -162,8 +162,13 @@ const ModeResult* lodBaseline(const BenchReport& report);
 // Fills every mode's speedupLod against lodBaseline (NaN without one).
 void compareWithLodBaseline(BenchReport& report);
 
-// Fills every mode's psnrGainDb and flipRatio against the control (NaN without one; a control
-// FLIP mean of 0 gives a NaN or infinite ratio).
+// The control `m` is judged against: report.control when set, else the first "cells" mode of
+// the bench scene at m's level-of-detail tolerance without budgets (what the textures add at the
+// same tolerance), else controlMode; null when there is none.
+const ModeResult* controlFor(const BenchReport& report, const ModeResult& m);
+
+// Fills every mode's psnrGainDb and flipRatio against its control (controlFor; NaN without one;
+// a control FLIP mean of 0 gives a NaN or infinite ratio).
 void compareWithControl(BenchReport& report);
 
 // Figures read off the table, one line each, every line stating the report's resolution (no

@@ -25,6 +25,8 @@ PlotPanel errorPanel(const BenchReport& report, const std::string& title, const 
     panel.recommendedName = "recommended walls mode";
     const ModeResult* control = controlMode(report);
     const ModeResult* alternative = lodBaseline(report);
+    // The control at the alternative's tolerance too, where the bench ran one.
+    const ModeResult* lodControl = alternative ? controlFor(report, *alternative) : nullptr;
     std::vector<TradeOff> tradeOffs;
     std::vector<std::size_t> drawn;  // the series of each trade-off point
     for (std::size_t i = 0; i < report.modes.size(); ++i) {
@@ -35,7 +37,7 @@ PlotPanel errorPanel(const BenchReport& report, const std::string& title, const 
         series.name = "#" + std::to_string(i + 1) + " " + modeLabel(m);
         panel.series.push_back(std::move(series));
         if (!compared || !std::isfinite(x) || !std::isfinite(y) || y <= 0.0) continue;
-        panel.series.back().points = {{x, y, false, &m == control, &m == alternative, report.recommended == i}};
+        panel.series.back().points = {{x, y, false, &m == control || &m == lodControl, &m == alternative, report.recommended == i}};
         tradeOffs.push_back({x, error.rank(m)});
         drawn.push_back(i);
     }

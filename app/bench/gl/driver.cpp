@@ -166,7 +166,7 @@ void checkOnDemand(const BenchOptions& o) {
 enum class Phase {
     Interleaved,  // full geometry, the walls and clusters modes: frame by frame in turn (the same seconds)
     Cells,        // cells, cells+layer and near: frame by frame in turn
-    CellsLod,     // near with levels of detail, alone
+    CellsLod,     // the control and near with levels of detail, frame by frame in turn
     Paged,        // the walls paged as `cavewall run` pages, alone
     OnDemand,     // the walls baked on demand from an empty cache, alone
 };
@@ -266,7 +266,8 @@ std::vector<BenchMode> planModes(const Bench& b) {
     if (lod) table.push_back({.mode = namedMode(Mode::Full, o.lodPixels)});
     for (CellDraw draw : {CellDraw::Cells, CellDraw::CellsLayer, CellDraw::Near})
         table.push_back(cellMode(Phase::Cells, draw, 0.0));
-    if (lod) table.push_back(cellMode(Phase::CellsLod, CellDraw::Near, o.lodPixels));
+    if (lod)  // the control at the walls' tolerance, and the limit
+        for (CellDraw draw : {CellDraw::Cells, CellDraw::Near}) table.push_back(cellMode(Phase::CellsLod, draw, o.lodPixels));
     addWallsModes(table, b, {});
     const std::vector<std::size_t> lodModes =
         lod ? addWallsModes(table, b, {.lodPixels = o.lodPixels}) : std::vector<std::size_t>{};

@@ -391,6 +391,41 @@ TEST(BenchReport, EveryModeIsComparedWithTheCellsControl) {
     EXPECT_TRUE(std::isnan(parseCsv(csvHeader() + "\n" + csvRow(none.modes[1]) + "\n")[0].number("flip_ratio")));
 }
 
+TEST(BenchReport, ModesWithLevelsOfDetailAreJudgedAgainstTheControlAtTheSameTolerance) {
+    auto at = [](Mode mode, double alpha, double p50, double rmse, double lod) {
+        ModeResult m = sample(mode, alpha, p50, rmse);
+        m.lodPixels = lod;
+        return m;
+    };
+    BenchReport report;
+    report.modes = {sample(Mode::Full, 0, 30.0, 0.0), at(Mode::Full, 0, 20.0, 0.001, 1.0),
+                    at(Mode::Cells, 0, 5.0, 0.04, 0.0),  at(Mode::Cells, 0, 4.0, 0.05, 1.0),
+                    at(Mode::Walls, 10, 3.0, 0.01, 0.0), at(Mode::Walls, 10, 2.0, 0.02, 1.0)};
+    report.modes[5].speedup = 15.0;
+    ModeResult cellsElsewhere = at(Mode::Cells, 0, 4.0, 0.08, 2.0);  // another scene's: never a control
+    cellsElsewhere.sceneTag = "other";
+    report.modes.push_back(cellsElsewhere);
+    report.modes.push_back(at(Mode::Walls, 10, 2.0, 0.02, 2.0));  // no cells of its own at 2 px
+    EXPECT_EQ(controlFor(report, report.modes[4]), &report.modes[2]);
+    EXPECT_EQ(controlFor(report, report.modes[5]), &report.modes[3]);
+    EXPECT_EQ(controlFor(report, report.modes[7]), &report.modes[2]);  // falls back to full detail
+    compareWithControl(report);
+    EXPECT_NEAR(report.modes[4].flipRatio, 0.25, 1e-12);  // 0.01 / 0.04
+    EXPECT_NEAR(report.modes[5].flipRatio, 0.4, 1e-12);   // 0.02 / 0.05, not 0.02 / 0.04
+    EXPECT_NEAR(report.modes[5].psnrGainDb, 20 * std::log10(2.5), 1e-9);
+    EXPECT_NEAR(report.modes[7].flipRatio, 0.5, 1e-12);   // 0.02 / 0.04
+    EXPECT_NEAR(report.modes[3].psnrGainDb, 0.0, 1e-12);  // the control at 1 px against itself
+    const auto lines = figureLines(report);
+    const auto line = std::find_if(lines.begin(), lines.end(),
+                                   [](const std::string& l) { return l.find("FLIP mean is") != std::string::npos; });
+    ASSERT_NE(line, lines.end());
+    EXPECT_THAT(*line, HasSubstr("FLIP mean is 0.4x the control's at the same tolerance (cells, no textures, LOD 1 "
+                                 "px; 0.02 against 0.05), 0.5x the control's at full detail (0.04)"));
+    // A caller's named control is every mode's.
+    report.control = 2;
+    EXPECT_EQ(controlFor(report, report.modes[5]), &report.modes[2]);
+}
+
 TEST(BenchReport, StereoErrorColumnsOnlyWhenMeasured) {
     ModeResult mono = sample(Mode::Walls, 10, 3.0, 0.01);
     ModeResult stereo = mono;
