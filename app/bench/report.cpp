@@ -92,9 +92,9 @@ void compareWithControl(BenchReport& report) {
     std::vector<std::pair<double, double>> gains;  // computed first: a control compares with itself
     for (const ModeResult& m : report.modes) {
         const ModeResult* control = controlFor(report, m);
-        gains.emplace_back(control ? m.error.psnrDb - control->error.psnrDb : std::numeric_limits<double>::quiet_NaN(),
-                           control ? m.error.flipMean / control->error.flipMean
-                                   : std::numeric_limits<double>::quiet_NaN());
+        gains.emplace_back(
+            control ? m.error.psnrDb - control->error.psnrDb : std::numeric_limits<double>::quiet_NaN(),
+            control ? m.error.flipMean / control->error.flipMean : std::numeric_limits<double>::quiet_NaN());
     }
     for (std::size_t i = 0; i < report.modes.size(); ++i)
         std::tie(report.modes[i].psnrGainDb, report.modes[i].flipRatio) = gains[i];

@@ -37,7 +37,8 @@ PlotPanel errorPanel(const BenchReport& report, const std::string& title, const 
         series.name = "#" + std::to_string(i + 1) + " " + modeLabel(m);
         panel.series.push_back(std::move(series));
         if (!compared || !std::isfinite(x) || !std::isfinite(y) || y <= 0.0) continue;
-        panel.series.back().points = {{x, y, false, &m == control || &m == lodControl, &m == alternative, report.recommended == i}};
+        panel.series.back().points = {
+            {x, y, false, &m == control || &m == lodControl, &m == alternative, report.recommended == i}};
         tradeOffs.push_back({x, error.rank(m)});
         drawn.push_back(i);
     }

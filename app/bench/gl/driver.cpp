@@ -267,7 +267,8 @@ std::vector<BenchMode> planModes(const Bench& b) {
     for (CellDraw draw : {CellDraw::Cells, CellDraw::CellsLayer, CellDraw::Near})
         table.push_back(cellMode(Phase::Cells, draw, 0.0));
     if (lod)  // the control at the walls' tolerance, and the limit
-        for (CellDraw draw : {CellDraw::Cells, CellDraw::Near}) table.push_back(cellMode(Phase::CellsLod, draw, o.lodPixels));
+        for (CellDraw draw : {CellDraw::Cells, CellDraw::Near})
+            table.push_back(cellMode(Phase::CellsLod, draw, o.lodPixels));
     addWallsModes(table, b, {});
     const std::vector<std::size_t> lodModes =
         lod ? addWallsModes(table, b, {.lodPixels = o.lodPixels}) : std::vector<std::size_t>{};
@@ -496,7 +497,8 @@ BenchReport runBenchmark(const BenchOptions& o) {
     recommend(report);
     report.header.push_back(
         "control: 'cells' (the cells the walls draw as geometry, no textures); 'vs control' is "
-        "every walls mode's pooled PSNR gain over it and its FLIP mean as a fraction of its");
+        "every walls mode's pooled PSNR gain over it and its FLIP mean as a fraction of its, at the "
+        "mode's level-of-detail tolerance ('cells lod' for the modes with levels of detail)");
     report.header.push_back("bench time: " + fixed(display::msSince(start) / 1000.0, 0) +
                             " s in total (all modes, bakes included)");
     return report;

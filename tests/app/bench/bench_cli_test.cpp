@@ -126,14 +126,15 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
         else
             EXPECT_EQ(row.number("uploaded_mb_p99"), 0.0);
     }
-    // With levels of detail (--lod defaults to 1 px): full, near and every blend mode again,
-    // every blend mode with them under a triangle budget, and every blend mode with them held
-    // to 60 Hz by the frame-time controller.
+    // With levels of detail (--lod defaults to 1 px): full, the control, near and every blend
+    // mode again, every blend mode with them under a triangle budget, and every blend mode with
+    // them held to 60 Hz by the frame-time controller.
     const std::map<std::string, int> expected = {{"full", 1},
                                                  {"full lod", 1},
                                                  {"cells", 1},
                                                  {"cells+layer", 1},
                                                  {"near", 1},
+                                                 {"cells lod", 1},
                                                  {"near lod", 1},
                                                  {"walls 20 blend", 1},
                                                  {"walls 30 blend", 1},
@@ -160,10 +161,10 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
              {"flip_mean", "flip_share_over_0.1", "popping_peak", "popping_rms", "capped_mean_psnr_db"})
             EXPECT_TRUE(std::isfinite(row.number(name))) << row.at("screen") << " " << name;
     const std::size_t screenRows = screens.size();
-    EXPECT_EQ(screenRows, 18u * 4);
+    EXPECT_EQ(screenRows, 19u * 4);
     // A FLIP map of the worst image of every mode but the reference (mode 1).
     EXPECT_FALSE(fs::exists(out / "flip_worst_1.png"));
-    for (int mode = 2; mode <= 18; ++mode)
+    for (int mode = 2; mode <= 19; ++mode)
         EXPECT_TRUE(fs::is_regular_file(out / ("flip_worst_" + std::to_string(mode) + ".png")));
 }
 
