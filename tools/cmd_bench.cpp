@@ -31,12 +31,13 @@ const char* const kBenchUsage =
     "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
     "                      [--walls flat|depth] [--hierarchy [--hierarchy-budgets T1,T2,...]]\n"
     "                      [--compare-scene OTHER,...] [--on-demand] [--texture-format rgba8|bc1|bc3]\n"
+    "                      [--save-worst]\n"
     "                      [--no-occlusion] [--occlusion-min N] [--occlusion-min-draws D] [--occlusion-min-saved S]\n"
     "       cavewall bench --scale 2M,8M,32M [--data DIR] [--scale-metres M] [--frames N] [--resolution N]\n"
     "                      [--triangle-budget N|near] [--lod-max PX] [--min-zone M] [--walls flat|depth|flat,depth]\n"
     "                      [--display D] [--bake-resolution N] [--geometry-budget MB] [--lod PX] [--compare-every K]\n"
-    "                      [--no-occlusion] [--occlusion-min N] [--occlusion-min-draws D]\n"
-    "                      [--occlusion-min-saved S] [--out DIR]\n"
+    "                      [--stereo mono|separate] [--mono] [--no-occlusion] [--occlusion-min N]\n"
+    "                      [--occlusion-min-draws D] [--occlusion-min-saved S] [--out DIR]\n"
     "       cavewall bench --stability (no other flags)\n"
     "\n"
     "SCENE    error against run time in one run (a scene.json, its folder, or glTF/GLB with\n"
@@ -107,11 +108,13 @@ const char* const kBenchUsage =
     "         (a percentile reads 0: most pixels match exactly), each image at its screen's\n"
     "         pixels per degree from the frame's head position; popping (peak and RMS) between\n"
     "         consecutive compared frames of each screen; and, against the control 'cells' (no\n"
-    "         textures), the pooled PSNR gained and the FLIP mean as a fraction of the control's.\n"
+    "         textures; with levels of detail, the control at the same tolerance), the pooled\n"
+    "         PSNR gained and the FLIP mean as a fraction of the control's.\n"
     "         Writes DIR/bench.csv, bench_screens.csv, bench_frames.csv (every timed frame),\n"
     "         bench_compared.csv (every compared image's PSNR and FLIP mean),\n"
     "         bench.md (also printed), bench.png (error against frame time, Pareto front in\n"
-    "         red) and flip_worst_N.png (FLIP map of mode N's worst image). Defaults:\n"
+    "         red) and flip_worst_N.png (FLIP map of mode N's worst image; --save-worst adds\n"
+    "         worst_N.png and worst_N_full.png, that image and full geometry's). Defaults:\n"
     "         display cave4, out bench-out, 120 frames at the display's own resolution (cave4:\n"
     "         1024 x 1024 per screen; --resolution N scales every screen so that its longer\n"
     "         side is N pixels), the display's stereo mode (cave4 and cave6 are stereo; --mono\n"
@@ -244,6 +247,19 @@ std::vector<std::string> sceneList(const std::string& text) {
     return out;
 }
 
+// --stereo mono|separate, and --mono (the same as --stereo mono), on `display`.
+void applyStereo(const Args& args, config::DisplayConfig& display) {
+    if (auto stereo = args.get("stereo")) {
+        if (*stereo == "mono")
+            display.stereo = config::StereoMode::Mono;
+        else if (*stereo == "separate")
+            display.stereo = config::StereoMode::Separate;
+        else
+            throw Error("bench: --stereo: expected mono or separate, got '" + *stereo + "'");
+    }
+    applyMono(args, display);
+}
+
 int runSceneBench(const Args& args) {
     const bool quick = args.has("quick");
     bench::gl::BenchOptions o;
@@ -255,15 +271,7 @@ int runSceneBench(const Args& args) {
         const int pixels = static_cast<int>(args.integer("resolution", 128, 16, 4096));
         o.display = bench::gl::withResolution(display, pixels);
     }
-    if (auto stereo = args.get("stereo")) {
-        if (*stereo == "mono")
-            o.display.stereo = config::StereoMode::Mono;
-        else if (*stereo == "separate")
-            o.display.stereo = config::StereoMode::Separate;
-        else
-            throw Error("bench: --stereo: expected mono or separate, got '" + *stereo + "'");
-    }
-    applyMono(args, o.display);
+    applyStereo(args, o.display);
     if (auto path = args.get("path")) o.tracker = std::filesystem::is_regular_file(*path) ? "replay:" + *path : *path;
     o.route = args.choice("route", app::kRouteNames, app::Route::Walk);
     o.frames = args.integer("frames", quick ? 24 : 120, 1, 100000);
@@ -284,6 +292,7 @@ int runSceneBench(const Args& args) {
     o.flatBeside = kinds == "flat,depth";
     o.wallKind = kinds == "flat" ? walls::WallKind::Flat : walls::WallKind::Depth;
     o.keepSheets = args.has("keep-sheets");
+    o.saveWorst = args.has("save-worst");
     o.occlusion = parseOcclusion(args);
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.clusters = args.has(args.renamed("hierarchy", "clusters"));
@@ -317,13 +326,21 @@ int runSceneBench(const Args& args) {
 }
 
 int runScaleBench(const Args& args) {
+    // Flags of the scene bench that the scale bench has no use for: refused, not ignored.
+    for (const char* flag : {"quick", "path", "route", "cache", "ppd", "alphas", "warp-alpha", "frame-budget-ms",
+                             "keep-sheets", "save-worst", "hierarchy", "clusters", "hierarchy-budgets",
+                             "cluster-budgets", "compare-scene", "on-demand", "texture-format"})
+        if (args.has(flag))
+            throw Error(std::string("bench --scale: --") + flag +
+                        " is a flag of `bench SCENE` only (see cavewall "
+                        "bench --help), got it with --scale");
     bench::gl::ScaleOptions o;
     o.sizes = bench::parseScaleList(*args.get("scale"));
     o.data = args.path("data").value_or("bench-scale-data");
     o.display = config::loadDisplayConfig(args.getOr("display", "cave4"));
     if (args.has("resolution"))
         o.display = bench::gl::withResolution(o.display, static_cast<int>(args.integer("resolution", 1024, 16, 4096)));
-    applyMono(args, o.display);
+    applyStereo(args, o.display);
     o.pathMetres = args.number("scale-metres", o.pathMetres, 1.0, 1e5);
     o.frames = args.integer("frames", o.frames, 1, 100000);
     o.bakeResolution = static_cast<int>(args.integer("bake-resolution", o.bakeResolution, 16, 16384));
@@ -362,7 +379,7 @@ int runScaleBench(const Args& args) {
 
 int runBench(const std::vector<std::string>& words) {
     const Args args(words, {"stability", "quick", "hierarchy", "clusters", "on-demand", "keep-sheets", "mono",
-                            "occlusion", "no-occlusion"});
+                            "occlusion", "no-occlusion", "save-worst"});
     // One flag list, packed.
     // clang-format off
     args.expectFlags({
@@ -370,7 +387,7 @@ int runBench(const std::vector<std::string>& words) {
         "compare-every", "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod",
         "triangle-budget", "frame-budget-ms", "lod-max", "walls", "hierarchy", "hierarchy-budgets", "clusters",
         "cluster-budgets", "compare-scene", "on-demand", "scale", "data", "scale-metres", "geometry-budget",
-        "texture-format"});
+        "texture-format", "save-worst"});
     // clang-format on
     // --stability is a bench of its own: with --scale or a SCENE it would silently ignore them.
     args.expectAlone("stability", "bench");

@@ -50,7 +50,7 @@ void ErrorPool::addFrame(std::int64_t frame, const std::vector<ComparedImage>& i
         }
         _images.push_back({frame, c.screen, c.image, e.psnrDb(), flip.mean});
         if (_worst.frame < 0 || flip.mean > _worst.mean) {
-            _worst = {metrics::flipErrorImage(flip), frame, c.screen, c.image, flip.mean};
+            _worst = {metrics::flipErrorImage(flip), frame, c.screen, c.image, flip.mean, *c.test, *c.reference};
         }
         const auto [it, added] = _meters.try_emplace({c.screen, c.image});
         if (const std::optional<double> p = it->second.addFrame(frame, *c.test, *c.reference)) {

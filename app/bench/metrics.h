@@ -84,6 +84,9 @@ struct FlipMap {
     std::int64_t frame = -1;
     int screen = -1, eye = 0;
     double mean = 0.0;  // that image's FLIP mean
+    // The two images compared: the mode's and full geometry's (the bench writes them with
+    // --save-worst).
+    scenes::Image test, reference;
 };
 
 // One compared image's error, as bench_compared.csv lists it.

@@ -621,6 +621,11 @@ std::vector<std::filesystem::path> writeReport(const std::filesystem::path& fold
         if (map.image.width <= 0) continue;
         written.push_back(folder / ("flip_worst_" + std::to_string(i + 1) + ".png"));
         scenes::writeImage(written.back(), map.image);
+        if (!report.saveWorst) continue;
+        written.push_back(folder / ("worst_" + std::to_string(i + 1) + ".png"));
+        scenes::writeImage(written.back(), map.test);
+        written.push_back(folder / ("worst_" + std::to_string(i + 1) + "_full.png"));
+        scenes::writeImage(written.back(), map.reference);
     }
     return written;
 }

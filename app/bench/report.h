@@ -130,6 +130,9 @@ struct BenchReport {
     // The control when the caller names it, an index into `modes` (the demo: its cells run at
     // the walls' level of detail); none: controlMode's rule.
     std::optional<std::size_t> control;
+    // writeReport also writes each mode's worst image and full geometry's of the same view
+    // (worst_N.png, worst_N_full.png; --save-worst).
+    bool saveWorst = false;
 };
 
 // Fills report.recommended and recommendedReason by app/bench/recommend.h's rule
@@ -210,7 +213,8 @@ std::vector<std::string> clusterBudgetLines(const BenchReport& report);
 // Writes bench.csv, bench_screens.csv, bench_frames.csv (every timed frame of every mode),
 // bench_compared.csv (every compared image of every mode: frame, screen, eye, PSNR, FLIP mean),
 // bench.md, bench.png and flip_worst_N.png (the FLIP map of mode N's worst image, N as the "#"
-// column of bench.md, for every mode that compared images) into `folder` (created).
+// column of bench.md, for every mode that compared images; with report.saveWorst also
+// worst_N.png and worst_N_full.png, the two images that map compares) into `folder` (created).
 // Returns the files written.
 std::vector<std::filesystem::path> writeReport(const std::filesystem::path& folder, const BenchReport& report);
 

@@ -448,6 +448,7 @@ BenchReport runBenchmark(const BenchOptions& o) {
                std::string(config::toString(o.display.stereo)));
     const auto context = display::gl::createHeadlessContext();
     BenchReport report;
+    report.saveWorst = o.saveWorst;
     report.header = headerLines(o, scene, *context, path);
     if (measuresStereo(display))
         report.header.push_back(

@@ -106,7 +106,8 @@ struct BenchOptions {
     // The on-demand mode's private bake cache (bench::makeEmptyPrivateCache: emptied first,
     // never the shared cache); unset: no on-demand mode. Flat walls only.
     std::optional<std::filesystem::path> onDemandCache;
-    bool verbose = true;  // progress on stdout
+    bool saveWorst = false;  // --save-worst: BenchReport::saveWorst
+    bool verbose = true;     // progress on stdout
 };
 
 // Runs every mode; throws cavewall::Error on bad input (scene, tracker spec, options).

@@ -1,6 +1,8 @@
 // `cavewall bench SCENE --quick` end to end on a small generated plant (headless GL): every mode
 // row is present with finite numbers, and bad input gives clear errors. `bench --scale`:
 // tests/app/bench/scale_bench_cli_test.cpp.
+#include "metrics/image_error.h"
+#include "scenes/image_io.h"
 #include "tests/support/run_cli.h"
 #include "tests/support/csv_table.h"
 #include "tests/support/files.h"
@@ -15,6 +17,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -34,9 +38,10 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     ASSERT_EQ(g.exitCode, 0) << g.err;
     const fs::path out = root / "out";
     fs::remove_all(out);
-    const CliResult r = runCavewall({"bench", (plant / "scene.json").string(), "--quick", "--mono", "--frames", "12",
-                                     "--out", out.string(), "--cache", (root / "cache").string(), "--alphas", "20,30",
-                                     "--warp-alpha", "30", "--clusters", "--cluster-budgets", "0.5,200"});
+    const CliResult r =
+        runCavewall({"bench", (plant / "scene.json").string(), "--quick", "--mono", "--frames", "12", "--out",
+                     out.string(), "--cache", (root / "cache").string(), "--alphas", "20,30", "--warp-alpha", "30",
+                     "--clusters", "--cluster-budgets", "0.5,200", "--save-worst"});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_THAT(r.out, HasSubstr("| 1 | full |"));
     // --quick keeps its small images, and says so in the header and on every figure line.
@@ -162,10 +167,31 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
             EXPECT_TRUE(std::isfinite(row.number(name))) << row.at("screen") << " " << name;
     const std::size_t screenRows = screens.size();
     EXPECT_EQ(screenRows, 19u * 4);
-    // A FLIP map of the worst image of every mode but the reference (mode 1).
+    // A FLIP map of the worst image of every mode but the reference (mode 1), and with
+    // --save-worst the two images it compares.
     EXPECT_FALSE(fs::exists(out / "flip_worst_1.png"));
+    EXPECT_FALSE(fs::exists(out / "worst_1.png"));
     for (int mode = 2; mode <= 19; ++mode)
-        EXPECT_TRUE(fs::is_regular_file(out / ("flip_worst_" + std::to_string(mode) + ".png")));
+        for (const std::string name : {"flip_worst_", "worst_"})
+            EXPECT_TRUE(fs::is_regular_file(out / (name + std::to_string(mode) + ".png"))) << name << mode;
+    // The control's (mode 3) saved pair has the PSNR that bench_compared.csv lists for the image
+    // bench.md names as its worst.
+    std::smatch worst;
+    const std::string md = readFile(out / "bench.md");
+    ASSERT_TRUE(std::regex_search(md, worst,
+                                  std::regex("flip_worst_3.png: cells, frame ([0-9]+), screen ([a-z]+), eye "
+                                             "([0-9]+), FLIP mean")));
+    std::optional<double> listed;
+    for (const test::CsvRow& row : test::readCsv(out / "bench_compared.csv"))
+        if (row.at("mode") == "cells" && row.at("frame") == worst[1] && row.at("screen") == worst[2] &&
+            row.at("eye") == worst[3])
+            listed = row.number("psnr_db");
+    ASSERT_TRUE(listed.has_value());
+    const double saved =
+        metrics::squaredError(scenes::readImage(out / "worst_3.png"), scenes::readImage(out / "worst_3_full.png"))
+            .psnrDb();
+    EXPECT_GT(saved, 5.0);  // the cells leave geometry out: the images differ
+    EXPECT_NEAR(saved, *listed, 1e-3 * *listed);
 }
 
 // In stereo (--stereo separate) both eyes are drawn and compared, and every mode's stereo
@@ -435,6 +461,13 @@ TEST(BenchSceneCli, BadInputIsAClearError) {
         {{"bench", "--scale", "2M", "--walls", "curved"},
          "--walls: expected flat, depth or flat,depth (both kinds in one run), got 'curved'"},
         {{"bench", "--scale", "2M", "--walls", "depth,flat"}, "--walls: expected flat, depth or flat,depth"},
+        // The scene bench's own flags are refused with --scale, not ignored.
+        {{"bench", "--scale", "2M", "--save-worst"},
+         "bench --scale: --save-worst is a flag of `bench SCENE` only (see cavewall bench --help), got it with "
+         "--scale"},
+        {{"bench", "--scale", "2M", "--alphas", "10"}, "bench --scale: --alphas is a flag of `bench SCENE` only"},
+        {{"bench", "--scale", "2M", "--stereo", "sideways"},
+         "bench: --stereo: expected mono or separate, got 'sideways'"},
         {{"bench", "--scale", "2M", "--min-zone", "0.25"},
          "bench --scale: plan options: minZoneSize: expected more than twice blendWidth (0.4 m), got 0.25 m"},
         // An empty path is refused, not replaced by the default folder.

@@ -64,9 +64,11 @@ CliResult runTinyScale(const fs::path& root, const std::string& sizes, std::vect
 TEST(BenchSceneCli, ScaleRunHasFourModesPerSize) {
     const test::TempFolder root("bench_cli_scale");
     const fs::path out = root / "out";
-    const CliResult r = runTinyScale(root.path(), "20k,40k");
+    std::vector<std::string> args = tinyScaleArgs(root.path(), "20k,40k");
+    args.insert(args.end(), {"--stereo", "mono"});  // as --mono (cave4 is stereo)
+    const CliResult r = runCavewall(args);
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
-    EXPECT_THAT(r.out, HasSubstr("4 screens at 32x32 pixels"));
+    EXPECT_THAT(r.out, HasSubstr("4 screens at 32x32 pixels, mono"));
     EXPECT_THAT(r.out, HasSubstr("textures (those the stretch requests) at most 16 texels"));
     EXPECT_THAT(r.out, HasSubstr("texels: 0 rendered in"));  // the second size: all from the cache
     EXPECT_TRUE(fs::exists(root / "data" / "plant-20000" / "scene.json"));
