@@ -105,12 +105,12 @@ void BakeWriter::worker() {
         };
         try {
             const std::filesystem::path file = _folder / job.entry.file;
-            const std::vector<scenes::Image> levels = premultipliedMipChain(job.image);
+            const std::vector<scenes::Image> levels = mipChainOfPremultiplied(job.image);
             lap(spent.mips);
             if (_format == TextureFormat::Rgba8)
                 writeMipFile(file, levels, _options);
             else
-                writeBlockFile(file, encodeLevels(levels, _format));
+                writeBlockFile(file, encodeLevels(levels, storedFormat(levels.front(), _format)));
             lap(spent.encode);
             std::error_code ec;
             job.entry.bytes = std::filesystem::file_size(file, ec);

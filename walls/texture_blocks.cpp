@@ -257,6 +257,15 @@ TextureLevels encodeLevels(const std::vector<scenes::Image>& premultiplied, Text
     return out;
 }
 
+TextureFormat storedFormat(const scenes::Image& levelZero, TextureFormat asked) {
+    if (asked != TextureFormat::Bc1) return asked;
+    constexpr int kLeast = 16;
+    int translucent = 0;
+    for (std::size_t i = 3; i < levelZero.rgba.size() && translucent < kLeast; i += 4)
+        translucent += levelZero.rgba[i] >= 8 && levelZero.rgba[i] <= 247;
+    return translucent >= kLeast ? TextureFormat::Bc3 : TextureFormat::Bc1;
+}
+
 void writeBlockFile(const std::filesystem::path& file, const TextureLevels& levels) {
     requireBlocks(levels.format, file.string().c_str());
     const auto& l = levels.blocks;

@@ -112,6 +112,13 @@ scenes::Image decodeLevel(const BlockLevel& level, TextureFormat format);
 // encodeLevel of every level.
 TextureLevels encodeLevels(const std::vector<scenes::Image>& premultiplied, TextureFormat format);
 
+// The format a bake stores a texture in when `asked` is asked for: Bc1 keeps one bit of
+// alpha, so a texture with translucent texels (alpha in [8, 247] at level 0, in at least 16
+// texels: a window pane's, not a few rounded ones) is stored as Bc3, which keeps them; with
+// Bc1 a pane of glass over nothing would vanish (alpha < 0.5) or turn opaque. Every other
+// texture, and every other format, as asked. The file says which (readBlockFile).
+TextureFormat storedFormat(const scenes::Image& levelZero, TextureFormat asked);
+
 // Writes `levels` (Bc1 or Bc3, level i the next MIP size of level i - 1) as a ".bct" file,
 // atomically. Throws cavewall::Error naming the file (bad levels, write failures).
 void writeBlockFile(const std::filesystem::path& file, const TextureLevels& levels);

@@ -125,13 +125,15 @@ scenes::Image encode(const FloatImage& f, const std::string& name, const scenes:
     return image;
 }
 
-FloatImage premultiply(const scenes::Image& straight) {
+// Linear premultiplied floats of `image`: its decoded colour times its alpha when
+// `multiply` (straight colour), else as decoded (already premultiplied).
+FloatImage premultiply(const scenes::Image& image, bool multiply) {
     std::array<float, 256> decode{};
     for (int i = 0; i < 256; ++i) decode[i] = srgbToLinear(i / 255.0f);
-    FloatImage f{straight.width, straight.height, std::vector<float>(straight.rgba.size())};
-    for (std::size_t i = 0; i < straight.rgba.size(); i += 4) {
-        const float a = straight.rgba[i + 3] / 255.0f;
-        for (int c = 0; c < 3; ++c) f.rgba[i + c] = decode[straight.rgba[i + c]] * a;
+    FloatImage f{image.width, image.height, std::vector<float>(image.rgba.size())};
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+        const float a = image.rgba[i + 3] / 255.0f;
+        for (int c = 0; c < 3; ++c) f.rgba[i + c] = decode[image.rgba[i + c]] * (multiply ? a : 1.0f);
         f.rgba[i + 3] = a;
     }
     return f;
@@ -173,17 +175,32 @@ const std::array<std::uint8_t, 256>& srgbByteRoundTrip() {
     return table;
 }
 
+namespace {
+
+// `level` (level 0; `image`, its bytes, gives the exact bytes where alpha is 0 or 1), then each
+// next level.
+std::vector<scenes::Image> chainFrom(FloatImage level, const scenes::Image& image) {
+    std::vector<scenes::Image> levels;
+    levels.push_back(encode(level, image.name + " level 0", &image));
+    while (level.width > 1 || level.height > 1) {
+        level = downsample(level);
+        levels.push_back(encode(level, image.name + " level " + std::to_string(levels.size())));
+    }
+    return levels;
+}
+
+}  // namespace
+
 std::vector<scenes::Image> premultipliedMipChain(const scenes::Image& straight) {
     assert(straight.width > 0 && straight.height > 0 &&
            straight.rgba.size() == std::size_t(straight.width) * straight.height * 4);
-    std::vector<scenes::Image> levels;
-    FloatImage level = premultiply(straight);
-    levels.push_back(encode(level, straight.name + " level 0", &straight));
-    while (level.width > 1 || level.height > 1) {
-        level = downsample(level);
-        levels.push_back(encode(level, straight.name + " level " + std::to_string(levels.size())));
-    }
-    return levels;
+    return chainFrom(premultiply(straight, true), straight);
+}
+
+std::vector<scenes::Image> mipChainOfPremultiplied(const scenes::Image& premultiplied) {
+    assert(premultiplied.width > 0 && premultiplied.height > 0 &&
+           premultiplied.rgba.size() == std::size_t(premultiplied.width) * premultiplied.height * 4);
+    return chainFrom(premultiply(premultiplied, false), premultiplied);
 }
 
 namespace {

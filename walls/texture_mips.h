@@ -40,6 +40,12 @@ const std::array<std::uint8_t, 256>& srgbByteRoundTrip();
 // area-weighted box filter of the previous one (odd sizes included), down to 1 x 1. Every level
 // follows the pixel convention above. `straight` must be non-empty.
 std::vector<scenes::Image> premultipliedMipChain(const scenes::Image& straight);
+// The same chain of `premultiplied`, whose colour is already premultiplied by its alpha: what
+// an sRGB render target holds once blended surfaces are drawn over transparent black
+// (glBlendFuncSeparate(SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ONE, ONE_MINUS_SRC_ALPHA): a pane of
+// glass over nothing leaves its colour times its alpha). Where alpha is 0 or 1, as everywhere
+// but such panes, both chains are the same.
+std::vector<scenes::Image> mipChainOfPremultiplied(const scenes::Image& premultiplied);
 
 struct MipFileOptions {
     int tileSize = 64;                // tile edge in texels; a multiple of 16 in [16, 1024]

@@ -53,6 +53,7 @@ std::uint64_t clusterKey(const hierarchy::ClusterNode& cluster, const std::vecto
     // Bump the text when the impostors, their files or the accuracy measure change.
     h.text("cavewall cluster impostor v1").integer(s.resolution).integer(s.accuracyResolution).number(s.ambient);
     h.text("vertex lighting v1").number(render::kVertexLightingTolerance);  // baker.cpp, settingsKey
+    h.text("premultiplied render v1");  // walls::mipChainOfPremultiplied (glass kept its alpha once)
     h.integer(hierarchy::kFaceRegions).number(hierarchy::kRegionTiltDeg).number(hierarchy::kSamplingDistance);
     for (int o : cluster.objects) h.integer(static_cast<std::int64_t>(objects[o]));
     return h.value();
@@ -198,7 +199,7 @@ void ClusterImpostors::make(const std::filesystem::path& folder, const hierarchy
                 _renderer->render(hierarchy::boxFace(node.box, f), hierarchy::samplingEye(node.box, f, r),
                                   hierarchy::faceResolution(node.box, f, _settings.resolution), cluster.objects);
             if (r == 0) node.faces[f] = hierarchy::faceAverage(straight);
-            std::vector<scenes::Image> levels = walls::premultipliedMipChain(straight);
+            std::vector<scenes::Image> levels = walls::mipChainOfPremultiplied(straight);
             const std::filesystem::path file = folder / impostorFileName(f, r);
             walls::writeMipFile(file, levels, {16, "zip"});
             const std::optional<std::string> written = walls::readFileBytes(file);

@@ -215,7 +215,9 @@ ViewStats SceneRenderer::renderFrustum(const display::OffAxisFrustum& frustum, c
         glClearColor(c.r, c.g, c.b, c.a);
         glClear(GL_COLOR_BUFFER_BIT);
     }
+    _blendedWriteDepth = target.blendedWriteDepth;
     ViewStats stats = draw(list);
+    _blendedWriteDepth = false;
     stats.cpuMs = msSince(start);
     return stats;
 }
@@ -341,7 +343,7 @@ int SceneRenderer::issueBatches(const render::RenderList& list, bool opaqueOnly)
             glEnable(GL_BLEND);
             // Colour blends over; alpha accumulates coverage (stays 1 on an opaque screen).
             glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-            glDepthMask(GL_FALSE);
+            glDepthMask(_blendedWriteDepth ? GL_TRUE : GL_FALSE);
         }
         const render::Batch& batch = list.batches[b];
         applyState(batch.key);

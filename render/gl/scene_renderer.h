@@ -104,6 +104,9 @@ struct ViewTarget {
     display::Viewport viewport;           // pixels, origin lower-left
     std::optional<glm::vec4> clearColor;  // nullopt: keep the colour already there
     glm::bvec4 colorMask{true};
+    // Blended draws write depth too, so the depth is that of the nearest surface, translucent
+    // or not (the depth-wall bake's depth-only pass, with colorMask off).
+    bool blendedWriteDepth = false;
 };
 
 class SceneRenderer {
@@ -227,6 +230,7 @@ private:
     std::vector<glm::ivec2> _marked;
     std::array<ViewBuffers, kViewBufferSets> _viewBuffers;
     int _nextViewBuffers = 0;
+    bool _blendedWriteDepth = false;  // ViewTarget::blendedWriteDepth, during renderFrustum's draw
     // Per-view scratch, kept to avoid allocating per view.
     std::vector<shaders::DrawRecord> _records;
     std::vector<shaders::DrawCommand> _commands;

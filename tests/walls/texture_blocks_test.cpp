@@ -201,6 +201,34 @@ TEST(TextureBlocks, Bc1StoresOpaqueTexelsUnpremultiplied) {
     EXPECT_NEAR(decoded.rgba[0], encodeSrgbByte(grey), 4);  // 188 in sRGB; 565 steps are 8 and 4 levels
 }
 
+// Bc1 keeps one bit of alpha, so a texture with translucent texels (a window pane over nothing)
+// is stored as Bc3, which keeps them; a few texels, or alpha rounded off 0 or 1, do not count.
+TEST(TextureBlocks, TranslucentTexturesAreStoredAsBc3) {
+    scenes::Image image{"pane", 16, 16, std::vector<std::uint8_t>(16 * 16 * 4, 255)};
+    auto withAlpha = [&](int texels, std::uint8_t alpha) {
+        for (int i = 0; i < texels; ++i) image.rgba[std::size_t(i) * 4 + 3] = alpha;
+        return storedFormat(image, TextureFormat::Bc1);
+    };
+    EXPECT_EQ(withAlpha(0, 255), TextureFormat::Bc1);  // opaque
+    EXPECT_EQ(withAlpha(15, 25), TextureFormat::Bc1);  // fewer than a block's worth
+    EXPECT_EQ(withAlpha(16, 25), TextureFormat::Bc3);
+    EXPECT_EQ(storedFormat(image, TextureFormat::Bc3), TextureFormat::Bc3);
+    EXPECT_EQ(storedFormat(image, TextureFormat::Rgba8), TextureFormat::Rgba8);
+    EXPECT_EQ(withAlpha(256, 250), TextureFormat::Bc1);  // rounded off opaque
+    EXPECT_EQ(withAlpha(256, 5), TextureFormat::Bc1);    // rounded off transparent
+    EXPECT_EQ(withAlpha(256, 8), TextureFormat::Bc3);
+    EXPECT_EQ(withAlpha(256, 247), TextureFormat::Bc3);
+    // A pane of alpha 25 (premultiplied colour): Bc3 keeps it within a few levels, Bc1 drops it.
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+        image.rgba[i] = 0, image.rgba[i + 1] = 40, image.rgba[i + 2] = 60, image.rgba[i + 3] = 25;
+    }
+    const scenes::Image bc3 = decodeLevel(encodeLevel(image, TextureFormat::Bc3), TextureFormat::Bc3);
+    const scenes::Image bc1 = decodeLevel(encodeLevel(image, TextureFormat::Bc1), TextureFormat::Bc1);
+    EXPECT_NEAR(bc3.rgba[3], 25, 2);
+    EXPECT_NEAR(bc3.rgba[2], 60, 4);
+    EXPECT_EQ(bc1.rgba[3], 0);
+}
+
 TEST(TextureBlocks, FileRoundTripIsExactAndSmallerThanItsBlocks) {
     test::TempFolder folder("texture_blocks_round_trip");
     const std::vector<scenes::Image> levels = premultipliedMipChain(wallLike());

@@ -104,6 +104,24 @@ TEST(TextureMips, HalfTransparentEdgeDoesNotDarken) {
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(c[k], 1.0, 0.01) << "channel " << k;  // 8-bit rounding of 0.5
 }
 
+// A pane of glass over nothing, as the bake's render target holds it: colour already times
+// alpha. The premultiplied chain keeps level 0's bytes (the straight chain would multiply by
+// alpha again: a tenth of the tint), and where alpha is 0 or 1 both chains are the same.
+TEST(TextureMips, PremultipliedInputIsNotMultipliedAgain) {
+    const scenes::Image pane = image(2, 1, {0, 60, 90, 25, 200, 180, 160, 255});
+    const auto levels = mipChainOfPremultiplied(pane);
+    ASSERT_EQ(levels.size(), 2u);
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(texel(levels[0], 0, 0)[c], pane.rgba[std::size_t(c)], 1) << c;
+    EXPECT_LT(texel(premultipliedMipChain(pane)[0], 0, 0).g, 30);  // 60 decoded, times 25 / 255
+    // Level 1: the mean of the two premultiplied texels in linear light.
+    const double g = (srgbToLinear(60 / 255.0f) + srgbToLinear(180 / 255.0f)) / 2.0;
+    EXPECT_NEAR(srgbToLinear(float(texel(levels[1], 0, 0).g / 255.0)), g, 0.004);
+    EXPECT_NEAR(texel(levels[1], 0, 0).a, (25 + 255) / 2.0, 1);
+    const scenes::Image binary = image(2, 1, {10, 20, 30, 255, 0, 0, 0, 0});
+    const auto a = mipChainOfPremultiplied(binary), b = premultipliedMipChain(binary);
+    for (std::size_t l = 0; l < a.size(); ++l) EXPECT_EQ(a[l].rgba, b[l].rgba) << "level " << l;
+}
+
 TEST(TextureMips, TransparentTexelsDoNotBleedTheirColour) {
     // The transparent texel carries garbage red (straight alpha 0): premultiplying removes it, so
     // the mixed texel is pure blue at half coverage.

@@ -48,6 +48,11 @@ std::uint64_t settingsKey(const BakeSettings& s) {
     // Flat bakes keep their keys (and caches); depth bakes get others (their files differ).
     // Depth files hold the march's halved depths (walls::marchDepths), not full ones.
     if (s.kind == walls::WallKind::Depth) h.text("depth wall v1").text("march depths v1");
+    // Texels where only translucent surfaces were drawn have their depth (WallTextureRenderer).
+    if (s.kind == walls::WallKind::Depth) h.text("translucent depth v1");
+    // The rendered colour is premultiplied already (walls::mipChainOfPremultiplied): translucent
+    // texels are no longer multiplied by their alpha twice.
+    h.text("premultiplied render v1");
     // Full-detail bakes keep their keys; levels of detail draw other pixels.
     if (s.lodTexels > 0.0) h.text("lod texels v1").number(s.lodTexels);
     // RGBA8 bakes keep their keys; block formats store other files (walls/texture_blocks.h).
@@ -55,6 +60,8 @@ std::uint64_t settingsKey(const BakeSettings& s) {
         h.text("texture format v1").text(walls::textureFormatName(s.textureFormat));
     // BC1's opaque blocks come from stb_dxt, whose bytes differ from libsquish's blocks.
     if (s.textureFormat == walls::TextureFormat::Bc1) h.text("bc1 opaque blocks stb_dxt v1");
+    // ... and textures with translucent texels are stored as Bc3 (walls::storedFormat).
+    if (s.textureFormat == walls::TextureFormat::Bc1) h.text("bc3 where translucent v1");
     // The wall renderer lights per vertex where that is within this tolerance (RenderSettings
     // default; render/vertex_lighting.h): other pixels, by at most half a level.
     h.text("vertex lighting v1").number(render::kVertexLightingTolerance);

@@ -16,7 +16,23 @@ double msSince(Clock::time_point start) {
 }  // namespace
 
 WallTextureRenderer::WallTextureRenderer(const scenes::Scene& scene, float ambient, double lodTexels)
-    : _lodTexels(lodTexels), _renderer(scene, render::gl::RenderSettings{glm::vec4(0.0f), ambient, true, lodTexels}) {}
+    : _lodTexels(lodTexels), _renderer(scene, render::gl::RenderSettings{glm::vec4(0.0f), ambient, true, lodTexels}) {
+    for (const scenes::Object& o : scene.objects) {
+        const int material = o.mesh >= 0 && o.mesh < static_cast<int>(scene.meshes.size())
+                                 ? scene.meshes[static_cast<std::size_t>(o.mesh)].material
+                                 : -1;
+        _blended.push_back(material >= 0 && material < static_cast<int>(scene.materials.size()) &&
+                           scene.materials[static_cast<std::size_t>(material)].alphaMode == scenes::AlphaMode::Blend);
+    }
+}
+
+render::DrawFilter WallTextureRenderer::filterFor(const std::vector<int>& objects) const {
+    render::DrawFilter filter;
+    filter.objects = &objects;
+    filter.skipStructure = true;
+    if (!_lod.levels.empty()) filter.lodLevels = &_lod.levels;
+    return filter;
+}
 
 // Draws and waits for the GL (so that the timing splits drawing from reading back; the read
 // would wait for it anyway), then reads the colour back.
@@ -30,15 +46,10 @@ scenes::Image WallTextureRenderer::draw(const display::ScreenQuad& quad, glm::dv
     target.framebuffer = _target->framebuffer();
     target.viewport = {0, 0, resolution.x, resolution.y};
     target.clearColor = glm::vec4(0.0f);  // alpha 0: nothing behind the wall here
-    render::DrawFilter filter;
-    filter.objects = &objects;
-    filter.skipStructure = true;
     _lod = {};
-    if (_lodTexels > 0.0) {
-        _lod = render::chooseFrustumLods(_renderer.renderScene(), frustum, resolution, filter, _lodTexels);
-        filter.lodLevels = &_lod.levels;
-    }
-    _stats = _renderer.renderFrustum(frustum, glm::dmat4(1.0), target, filter);
+    if (_lodTexels > 0.0)
+        _lod = render::chooseFrustumLods(_renderer.renderScene(), frustum, resolution, filterFor(objects), _lodTexels);
+    _stats = _renderer.renderFrustum(frustum, glm::dmat4(1.0), target, filterFor(objects));
     _lastFrustum = frustum;
     glFinish();
     _timing.drawMs = msSince(start);
@@ -58,9 +69,37 @@ scenes::Image WallTextureRenderer::render(const display::ScreenQuad& quad, glm::
     scenes::Image colour = draw(quad, eye, resolution, objects);
     const Clock::time_point read = Clock::now();
     depth = {resolution.x, resolution.y, _target->readDepth()};
+    addTranslucentDepth(colour, objects, depth.depth);
     for (float& d : depth.depth) d = walls::depthFromBuffer(d, _lastFrustum.clipFromView, _lastFrustum.eyeDistance);
     _timing.readMs += msSince(read);
     return colour;
+}
+
+// Buffer depth 0 (cleared) where something was drawn (alpha > 0): only blended surfaces were,
+// since they write no depth. Those texels get the depth of the nearest blended surface from a
+// second pass over the blended objects alone, colour writes off and depth writes on (no opaque
+// surface is under those texels, so none is missing from that pass); every other texel keeps
+// the depth of its opaque surface (what shows through a pane in front of it is reprojected at
+// its own depth). Only textures with such texels pay for the pass.
+void WallTextureRenderer::addTranslucentDepth(const scenes::Image& colour, const std::vector<int>& objects,
+                                              std::vector<float>& bufferDepth) {
+    auto uncovered = [&](std::size_t i) { return bufferDepth[i] == 0.0f && colour.rgba[i * 4 + 3] > 0; };
+    bool any = false;
+    for (std::size_t i = 0; i < bufferDepth.size() && !any; ++i) any = uncovered(i);
+    if (!any) return;
+    std::vector<int> blended;
+    for (int o : objects)
+        if (o >= 0 && o < static_cast<int>(_blended.size()) && _blended[static_cast<std::size_t>(o)])
+            blended.push_back(o);
+    render::gl::ViewTarget target;
+    target.framebuffer = _target->framebuffer();
+    target.viewport = {0, 0, colour.width, colour.height};
+    target.colorMask = glm::bvec4(false);
+    target.blendedWriteDepth = true;
+    _renderer.renderFrustum(_lastFrustum, glm::dmat4(1.0), target, filterFor(blended));
+    const std::vector<float> nearest = _target->readDepth();
+    for (std::size_t i = 0; i < bufferDepth.size(); ++i)
+        if (uncovered(i)) bufferDepth[i] = nearest[i];
 }
 
 }  // namespace cavewall::walls::gl

@@ -31,15 +31,18 @@ public:
 
     // Draws `objects` (Scene::objects indices; structure is skipped even when listed) seen from
     // `eye` (world) through `quad` (world; its front side faces the eye) at `resolution` texels
-    // and reads the result back: 8-bit RGBA, sRGB-encoded straight colour, alpha 0 where
-    // nothing was drawn, rows top to bottom (row 0 along the quad's upper edge). Depth range
-    // 0.05 m to infinity, reversed-Z.
+    // and reads the result back: 8-bit RGBA, sRGB-encoded colour premultiplied by alpha (where a
+    // blended surface lies over nothing; straight and premultiplied agree where alpha is 0 or
+    // 1: walls::mipChainOfPremultiplied), alpha 0 where nothing was drawn, rows top to bottom
+    // (row 0 along the quad's upper edge). Depth range 0.05 m to infinity, reversed-Z.
     scenes::Image render(const display::ScreenQuad& quad, glm::dvec3 eye, glm::ivec2 resolution,
                          const std::vector<int>& objects);
 
     // As render(), and the depth of every texel behind the wall plane (walls/depth_wall.h:
     // metres along the wall's normal, kNoSurface where nothing was drawn), from the same frame's
-    // 32-bit float depth buffer.
+    // 32-bit float depth buffer. A texel where only translucent (blended) surfaces were drawn,
+    // such as a window with nothing behind it, has the depth of the nearest of them (a second,
+    // depth-only pass, drawn only for textures that have such texels).
     scenes::Image render(const display::ScreenQuad& quad, glm::dvec3 eye, glm::ivec2 resolution,
                          const std::vector<int>& objects, walls::DepthImage& depth);
 
@@ -57,8 +60,13 @@ public:
 private:
     scenes::Image draw(const display::ScreenQuad& quad, glm::dvec3 eye, glm::ivec2 resolution,
                        const std::vector<int>& objects);
+    // `objects` without structure, at the last render()'s levels of detail.
+    render::DrawFilter filterFor(const std::vector<int>& objects) const;
+    void addTranslucentDepth(const scenes::Image& colour, const std::vector<int>& objects,
+                             std::vector<float>& bufferDepth);
 
     double _lodTexels = 0.0;
+    std::vector<bool> _blended;  // per scene object: its material blends (glass)
     render::gl::SceneRenderer _renderer;
     std::unique_ptr<OffscreenTarget> _target;  // reallocated when the resolution changes
     display::ViewStats _stats;

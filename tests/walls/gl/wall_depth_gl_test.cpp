@@ -91,5 +91,45 @@ TEST_F(WallDepthTest, DepthWallsGiveTheDepthTheEyeSeesFlatWallsTheirOwn) {
     EXPECT_EQ(depthError.invalidPixels, 0u);
 }
 
+// A pane of glass 2 m behind the wall, across its whole width, in front of an opaque plane 4 m
+// behind it that covers only the left half: where the glass has nothing behind it, the texels
+// (drawn, alpha > 0) get the glass's depth, so a depth wall reprojects the pane; where the
+// plane shows through it, the plane's depth (what is seen is reprojected at its own depth);
+// above the pane and the plane, nothing.
+TEST_F(WallDepthTest, GlassWithNothingBehindItHasItsOwnDepth) {
+    if (!context) GTEST_SKIP();
+    scenes::Scene scene;
+    scene.name = "glass-depth-test";
+    scene.meshes.push_back(scenes::makeTiledQuad({-5, -1.5, -4}, {5, 0, 0}, {0, 3, 0}, 1, 1, {0.55f, 0.55f, 0.55f, 1},
+                                                 {0.55f, 0.55f, 0.55f, 1}));
+    scenes::addObject(scene, 0, glm::dmat4(1.0), "plane");
+    scenes::Material glass;
+    glass.baseColorFactor = {0.0f, 0.4f, 0.6f, 0.1f};
+    glass.alphaMode = scenes::AlphaMode::Blend;
+    scene.materials.push_back(glass);
+    scenes::Mesh pane =
+        scenes::makeTiledQuad({-5, 0, -2}, {10, 0, 0}, {0, 1.5, 0}, 1, 1, glm::vec4(1.0f), glm::vec4(1.0f));
+    pane.material = 0;
+    scene.meshes.push_back(pane);
+    scenes::addObject(scene, 1, glm::dmat4(1.0), "glass");
+    walls::DepthImage depth;
+    const scenes::Image colour =
+        walls::gl::WallTextureRenderer(scene, 1.0f).render(kQuad, kSample, {kWidth, kHeight}, {0, 1}, depth);
+    // Texels by their wall position: (x, y) in metres on the 4 m x 3 m wall, rows from the top.
+    auto at = [&](double x, double y) {
+        const int i = static_cast<int>((x + 2.0) / 4.0 * kWidth), j = static_cast<int>((3.0 - y) / 3.0 * kHeight);
+        return static_cast<std::size_t>(j) * kWidth + i;
+    };
+    // The sampling point (0, 1.5, 3) sees the pane (y 0 to 1.5 at z = -2) through wall rows 0.6
+    // to 1.5 m and the plane (y -1.5 to 1.5 at z = -4) through rows 0.21 to 1.5 m, on the left.
+    const std::size_t glassOnly = at(1.0, 1.2), glassOverPlane = at(-1.0, 1.2), nothing = at(1.0, 2.5);
+    EXPECT_GT(colour.rgba[glassOnly * 4 + 3], 0);
+    EXPECT_LT(colour.rgba[glassOnly * 4 + 3], 255);
+    EXPECT_NEAR(depth.depth[glassOnly], 2.0, 1e-3);
+    EXPECT_NEAR(depth.depth[glassOverPlane], 4.0, 1e-3);
+    EXPECT_EQ(colour.rgba[nothing * 4 + 3], 0);
+    EXPECT_EQ(depth.depth[nothing], walls::kNoSurface);
+}
+
 }  // namespace
 }  // namespace cavewall::testing
