@@ -90,15 +90,15 @@ glm::ivec2 faceResolution(const scenes::Bounds& box, int face, int maxResolution
             std::max(4, static_cast<int>(std::lround(maxResolution * h / longer)))};
 }
 
-FaceAverage faceAverage(const scenes::Image& straight) {
-    const std::size_t texels = static_cast<std::size_t>(straight.width) * straight.height;
+FaceAverage faceAverage(const scenes::Image& premultiplied) {
+    const std::size_t texels = static_cast<std::size_t>(premultiplied.width) * premultiplied.height;
     glm::dvec3 sum(0.0);
     double alpha = 0.0;
     for (std::size_t i = 0; i < texels; ++i) {
-        const std::uint8_t* p = &straight.rgba[4 * i];
+        const std::uint8_t* p = &premultiplied.rgba[4 * i];
         const double a = p[3] / 255.0;
         if (a <= 0.0) continue;
-        for (int c = 0; c < 3; ++c) sum[c] += a * srgbDecode(p[c] / 255.0f);
+        for (int c = 0; c < 3; ++c) sum[c] += srgbDecode(p[c] / 255.0f);
         alpha += a;
     }
     FaceAverage average;

@@ -70,9 +70,11 @@ struct FaceAverage {
     bool operator==(const FaceAverage&) const = default;
 };
 
-// The average of `straight`: 8-bit RGBA, sRGB-encoded straight colour (what an sRGB target
-// reads back), alpha as coverage. Colour is averaged in linear light, weighted by alpha.
-FaceAverage faceAverage(const scenes::Image& straight);
+// The average of `premultiplied`: 8-bit RGBA, sRGB-encoded colour premultiplied by alpha (what
+// the impostor's sRGB target reads back: walls::gl::WallTextureRenderer; straight and
+// premultiplied agree where alpha is 0 or 1), alpha as coverage. Colour is averaged in linear
+// light, weighted by alpha: the sum of premultiplied colours over the sum of alphas.
+FaceAverage faceAverage(const scenes::Image& premultiplied);
 
 // The rectangle an average face covers: the face's quad scaled about its centre by
 // sqrt(coverage) on both sides (Maciel & Shirley's "average area").

@@ -195,11 +195,11 @@ void ClusterImpostors::make(const std::filesystem::path& folder, const hierarchy
     hierarchy::ClusterRecord record;
     for (int f = 0; f < kBoxFaces; ++f)
         for (int r = 0; r < kFaceRegions; ++r) {
-            const scenes::Image straight =
+            const scenes::Image rendered =
                 _renderer->render(hierarchy::boxFace(node.box, f), hierarchy::samplingEye(node.box, f, r),
                                   hierarchy::faceResolution(node.box, f, _settings.resolution), cluster.objects);
-            if (r == 0) node.faces[f] = hierarchy::faceAverage(straight);
-            std::vector<scenes::Image> levels = walls::mipChainOfPremultiplied(straight);
+            if (r == 0) node.faces[f] = hierarchy::faceAverage(rendered);
+            std::vector<scenes::Image> levels = walls::mipChainOfPremultiplied(rendered);
             const std::filesystem::path file = folder / impostorFileName(f, r);
             walls::writeMipFile(file, levels, {16, "zip"});
             const std::optional<std::string> written = walls::readFileBytes(file);

@@ -62,14 +62,16 @@ TEST(ClusterImpostor, FlatBoundsGetAThicknessSoNoFaceIsDegenerate) {
 
 TEST(ClusterImpostor, AverageColourIsLinearAndAlphaWeighted) {
     scenes::Image image{"t", 2, 2, {}};
-    // One opaque texel of sRGB 188 (linear ~0.5), one half-covered sRGB 255 (linear 1), two empty.
-    image.rgba = {188, 188, 188, 255, 255, 255, 255, 128, 0, 0, 0, 0, 7, 7, 7, 0};
+    // One opaque texel of sRGB 188 (linear ~0.5), one half-covered white as the render target
+    // holds it, premultiplied (linear 0.502: sRGB 188 too), two empty.
+    image.rgba = {188, 188, 188, 255, 188, 188, 188, 128, 0, 0, 0, 0, 7, 7, 7, 0};
     const FaceAverage a = faceAverage(image);
-    // Coverage (1 + 128/255) / 4; colour (0.5029 * 1 + 1 * 0.502) / 1.502.
+    // Coverage (1 + 128/255) / 4; colour (0.5029 + 0.5029) / 1.502: the half-covered texel is
+    // white (0.5029 / 0.502), not multiplied by its alpha again.
     EXPECT_NEAR(a.coverage, (1.0 + 128.0 / 255.0) / 4.0, 1e-6);
     const double lin188 = std::pow((188.0 / 255.0 + 0.055) / 1.055, 2.4);
     const double w = 128.0 / 255.0;
-    EXPECT_NEAR(a.linearColour.r, (lin188 + w) / (1.0 + w), 1e-5);
+    EXPECT_NEAR(a.linearColour.r, (lin188 + lin188) / (1.0 + w), 1e-5);
     // An average quad of a quarter coverage is half as wide and tall, same centre.
     const display::ScreenQuad q = averageFaceQuad({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}, 0.25f);
     EXPECT_NEAR(glm::length(q.lowerRight - q.lowerLeft), 1.0, 1e-12);
