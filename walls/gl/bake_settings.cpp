@@ -1,7 +1,10 @@
-// The bake's settings check, its default cache folder and its texture file names (baker.h).
+// The bake's settings check and key, its default cache folder and its texture file names
+// (baker.h).
 #include "walls/gl/baker.h"
 
 #include "config/error.h"
+#include "render/vertex_lighting.h"
+#include "walls/bake_key.h"
 #include "walls/bake_manifest.h"
 #include "walls/texture_blocks.h"
 
@@ -23,6 +26,33 @@ void validateBakeSettings(const BakeSettings& s) {
     if (s.drawThreads < 1 || s.drawThreads > 8) fail("drawThreads", "[1, 8]", std::to_string(s.drawThreads));
     if (!(s.ambient >= 0.0f && s.ambient <= 1.0f)) fail("ambient", "[0, 1]", std::to_string(s.ambient));
     if (!(s.lodTexels >= 0.0 && s.lodTexels <= 4.0)) fail("lodTexels", "[0, 4]", std::to_string(s.lodTexels));
+}
+
+std::uint64_t bakeSettingsKey(const BakeSettings& s) {
+    KeyHasher h;
+    // Bump the text when the renderer, the MIP filter or the file layout changes.
+    h.text("cavewall bake settings v1");
+    h.integer(s.maxResolution).integer(s.tileSize).number(s.ambient);
+    // Flat bakes keep their keys (and caches); depth bakes get others (their files differ).
+    // Depth files hold the march's halved depths (walls::marchDepths), not full ones.
+    // Texels where only translucent surfaces were drawn have their depth (WallTextureRenderer).
+    if (s.kind == walls::WallKind::Depth) h.text("depth wall v1").text("march depths v1").text("translucent depth v1");
+    // The rendered colour is premultiplied already (walls::mipChainOfPremultiplied): translucent
+    // texels are no longer multiplied by their alpha twice.
+    h.text("premultiplied render v1");
+    // Full-detail bakes keep their keys; levels of detail draw other pixels.
+    if (s.lodTexels > 0.0) h.text("lod texels v1").number(s.lodTexels);
+    // RGBA8 bakes keep their keys; block formats store other files (walls/texture_blocks.h).
+    if (s.textureFormat != walls::TextureFormat::Rgba8)
+        h.text("texture format v1").text(walls::textureFormatName(s.textureFormat));
+    // BC1's opaque blocks come from stb_dxt, whose bytes differ from libsquish's blocks, and
+    // textures with translucent texels are stored as Bc3 (walls::storedFormat).
+    if (s.textureFormat == walls::TextureFormat::Bc1)
+        h.text("bc1 opaque blocks stb_dxt v1").text("bc3 where translucent v1");
+    // The wall renderer lights per vertex where that is within this tolerance (RenderSettings
+    // default; render/vertex_lighting.h): other pixels, by at most half a level.
+    h.text("vertex lighting v1").number(render::kVertexLightingTolerance);
+    return h.value();
 }
 
 std::filesystem::path defaultCacheFolder() {

@@ -1,7 +1,6 @@
 #include "walls/gl/baker.h"
 
 #include "config/error.h"
-#include "render/vertex_lighting.h"
 #include "scenes/loader.h"
 #include "scenes/scene_description_io.h"
 #include "walls/bake_cache.h"
@@ -39,34 +38,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-std::uint64_t settingsKey(const BakeSettings& s) {
-    KeyHasher h;
-    // Bump the text when the renderer, the MIP filter or the file layout changes.
-    h.text("cavewall bake settings v1");
-    h.integer(s.maxResolution).integer(s.tileSize).number(s.ambient);
-    // Flat bakes keep their keys (and caches); depth bakes get others (their files differ).
-    // Depth files hold the march's halved depths (walls::marchDepths), not full ones.
-    if (s.kind == walls::WallKind::Depth) h.text("depth wall v1").text("march depths v1");
-    // Texels where only translucent surfaces were drawn have their depth (WallTextureRenderer).
-    if (s.kind == walls::WallKind::Depth) h.text("translucent depth v1");
-    // The rendered colour is premultiplied already (walls::mipChainOfPremultiplied): translucent
-    // texels are no longer multiplied by their alpha twice.
-    h.text("premultiplied render v1");
-    // Full-detail bakes keep their keys; levels of detail draw other pixels.
-    if (s.lodTexels > 0.0) h.text("lod texels v1").number(s.lodTexels);
-    // RGBA8 bakes keep their keys; block formats store other files (walls/texture_blocks.h).
-    if (s.textureFormat != walls::TextureFormat::Rgba8)
-        h.text("texture format v1").text(walls::textureFormatName(s.textureFormat));
-    // BC1's opaque blocks come from stb_dxt, whose bytes differ from libsquish's blocks.
-    if (s.textureFormat == walls::TextureFormat::Bc1) h.text("bc1 opaque blocks stb_dxt v1");
-    // ... and textures with translucent texels are stored as Bc3 (walls::storedFormat).
-    if (s.textureFormat == walls::TextureFormat::Bc1) h.text("bc3 where translucent v1");
-    // The wall renderer lights per vertex where that is within this tolerance (RenderSettings
-    // default; render/vertex_lighting.h): other pixels, by at most half a level.
-    h.text("vertex lighting v1").number(render::kVertexLightingTolerance);
-    return h.value();
-}
 
 void ensureFolder(const std::filesystem::path& folder) {
     std::error_code ec;
@@ -198,7 +169,7 @@ void Bake::prepare() {
     reuseListed();
     if (!_pending.empty()) {
         _result.warnings.insert(_result.warnings.end(), _scene.warnings.begin(), _scene.warnings.end());
-        keyPending(settingsKey(_request.settings));
+        keyPending(bakeSettingsKey(_request.settings));
         linkFromCache();
         sample();
     }
@@ -235,7 +206,7 @@ std::vector<int> Bake::forget(const std::vector<int>& ids) {
         if (!pending && texture != _plan.textures.end()) _pending.push_back(itemOf(*texture));
     }
     if (forgotten.empty()) return forgotten;
-    keyPending(settingsKey(_request.settings));
+    keyPending(bakeSettingsKey(_request.settings));
     writeManifestNow(true);
     return forgotten;
 }
@@ -272,7 +243,7 @@ void Bake::key() {
         h.integer(at.first).integer(at.second).integer(static_cast<std::int64_t>(contents.baked.size()));
         for (int i : contents.baked) h.integer(i);
     }
-    _result.key = h.integer(static_cast<std::int64_t>(settingsKey(_request.settings))).value();
+    _result.key = h.integer(static_cast<std::int64_t>(bakeSettingsKey(_request.settings))).value();
     const std::filesystem::path cache = _request.cache.empty() ? defaultCacheFolder() : _request.cache;
     _result.folder = cache / walls::hex64(_result.key);
     _result.manifest.key = _result.key;

@@ -76,6 +76,8 @@ struct BakeSettings {
 
 // Throws cavewall::Error naming the setting when it is out of range.
 void validateBakeSettings(const BakeSettings& settings);
+// The part of every texture's cache key that the settings give (what changes the files).
+std::uint64_t bakeSettingsKey(const BakeSettings& settings);
 
 struct BakeProgress {
     int done = 0, total = 0;  // textures finished (baked or reused) of all in the plan
