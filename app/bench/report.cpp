@@ -12,8 +12,6 @@
 #include <cstdio>
 #include <limits>
 #include <sstream>
-#include <tuple>
-#include <utility>
 
 namespace cavewall::bench {
 
@@ -89,15 +87,11 @@ const ModeResult* controlFor(const BenchReport& report, const ModeResult& m) {
 }
 
 void compareWithControl(BenchReport& report) {
-    std::vector<std::pair<double, double>> gains;  // computed first: a control compares with itself
-    for (const ModeResult& m : report.modes) {
-        const ModeResult* control = controlFor(report, m);
-        gains.emplace_back(
-            control ? m.error.psnrDb - control->error.psnrDb : std::numeric_limits<double>::quiet_NaN(),
-            control ? m.error.flipMean / control->error.flipMean : std::numeric_limits<double>::quiet_NaN());
-    }
-    for (std::size_t i = 0; i < report.modes.size(); ++i)
-        std::tie(report.modes[i].psnrGainDb, report.modes[i].flipRatio) = gains[i];
+    for (ModeResult& m : report.modes)  // the controls' errors are read, never written here
+        if (const ModeResult* control = controlFor(report, m)) {
+            m.psnrGainDb = m.error.psnrDb - control->error.psnrDb;
+            m.flipRatio = m.error.flipMean / control->error.flipMean;
+        }
 }
 
 const ModeResult* lodBaseline(const BenchReport& report) {
