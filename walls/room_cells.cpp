@@ -130,7 +130,8 @@ std::vector<Box> partition(const FloorGrid& g, const FloorPlan& plan, const Room
     return leaves;
 }
 
-// What a shared edge is at one step: a doorway's portal (its index), open floor or a wall.
+// What a shared edge is at one step: a doorway's portal (its index), open floor, a wall, or
+// nothing (no floor or floor that is no room on a side: a void, a gallery's edge), left bare.
 constexpr int kOpen = -1, kWall = -2, kNothing = -3;
 
 int edgeClass(const FloorPlan& plan, int c0, int c1) {
@@ -157,8 +158,8 @@ struct Builder {
 
     // One run of the edge between cells a and b from p to q (x, z).
     void emit(int kind, int a, int b, glm::dvec2 p, glm::dvec2 q) {
-        const double length = glm::length(q - p);
-        if (kind == kNothing || (kind == kWall && length < 0.3)) return;
+        // A wall of any length (see the header).
+        if (kind == kNothing || glm::length(q - p) <= 0.0) return;
         if (kind == kWall) {
             auto r = wallBetween<scenes::RealWall>(p, q, floorY, ceilingY, centre(a));
             r.name = "real " + std::to_string(d.realWalls.size());

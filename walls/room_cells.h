@@ -14,7 +14,10 @@
 // no cut splits keeps its rooms together (merged rooms).
 // Where two cells meet, the shared edge is walked cell by cell: along a doorway it is a portal
 // (from the floor to `portalHeight`, at most the ceiling), across room cells on both sides a
-// virtual wall (floor to ceiling), along walls a real wall (runs of at least 0.3 m).
+// virtual wall (floor to ceiling), along walls a real wall (runs of any length: a stub left
+// out where a cut crosses a wall would join the two cells as if open). Elsewhere (no floor, as
+// over a void, or floor that is no room on a side) the edge stays bare: one sees across it, so
+// the two cells see each other directly (walls/visibility.h) and are drawn together.
 // The walk path is the rooms' tour through their doorways (walls/room_tour.h) at eye height.
 
 #include "scenes/scene.h"

@@ -11,6 +11,7 @@
 #include "walls/floor_grid.h"
 #include "walls/room_cells.h"
 #include "walls/storeys.h"
+#include "walls/visibility.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -283,6 +284,75 @@ TEST(Rooms, RoomCellsAreRectanglesWithPortalsAtTheDoorways) {
     for (const glm::dvec3& e : d.walkPath) EXPECT_GE(scenes::findCell(d.cells, e), 0);
 }
 
+// The metres of the edge between room cells a and b (rectangles on grid lines) that no wall,
+// portal or virtual wall covers, from the plan itself: steps with a wall or doorway on neither
+// side and room floor on at most one (a void, floor that is no room). Everything else is
+// covered: a doorway by a portal, room floor on both sides by a virtual wall, a wall by a real
+// wall however short its run.
+double bareMetres(const FloorGrid& g, const FloorPlan& p, const scenes::Cell& a, const scenes::Cell& b) {
+    auto box = [](const scenes::Cell& c) {
+        glm::dvec2 lo = c.region[0], hi = c.region[0];
+        for (const glm::dvec2& v : c.region) lo = glm::min(lo, v), hi = glm::max(hi, v);
+        return std::array<glm::dvec2, 2>{lo, hi};
+    };
+    const auto ba = box(a), bb = box(b);
+    double bare = 0.0;
+    for (int axis = 0; axis < 2; ++axis) {
+        const int other = 1 - axis;
+        double line = 0.0;
+        if (std::abs(ba[1][axis] - bb[0][axis]) < 1e-9)
+            line = ba[1][axis];
+        else if (std::abs(bb[1][axis] - ba[0][axis]) < 1e-9)
+            line = bb[1][axis];
+        else
+            continue;
+        const double from = std::max(ba[0][other], bb[0][other]), to = std::min(ba[1][other], bb[1][other]);
+        for (double t = from + 0.5 * g.cellSize; t < to; t += g.cellSize) {
+            glm::dvec2 before, after;
+            before[axis] = line - 0.5 * g.cellSize, after[axis] = line + 0.5 * g.cellSize;
+            before[other] = after[other] = t;
+            const int c0 = g.cellAt(before), c1 = g.cellAt(after);
+            if (c0 < 0 || c1 < 0) continue;
+            const bool covered = p.opening[c0] >= 0 || p.opening[c1] >= 0 || p.barrier[c0] || p.barrier[c1] ||
+                                 (p.room[c0] >= 0 && p.room[c1] >= 0);
+            bare += covered ? 0.0 : g.cellSize;
+        }
+    }
+    return bare;
+}
+
+// Every pair of `d`'s cells: the bare metres openBoundaryLength finds are those of bareMetres.
+void expectBareOnlyWhereNothingStands(const FloorGrid& g, const FloorPlan& p, const scenes::SceneDescription& d) {
+    for (int a = 0; a < static_cast<int>(d.cells.size()); ++a)
+        for (int b = a + 1; b < static_cast<int>(d.cells.size()); ++b)
+            EXPECT_NEAR(openBoundaryLength(d, a, b), bareMetres(g, p, d.cells[a], d.cells[b]), 1e-6)
+                << d.cells[a].name << " | " << d.cells[b].name;
+}
+
+// A gallery around a void (no floor) of 4 m x 4 m in a 10 m x 10 m outline, cut in two by
+// partitions from the outline to the void at x = 5. The cells' shared edge runs along the
+// partitions, covered by real walls, and across the void, left bare: one sees across a void, so
+// the two cells see each other directly (walls/visibility.h) and are drawn as geometry together.
+TEST(Rooms, RoomCellsLeaveAnEdgeOverAVoidBareAndCoverTheRest) {
+    FloorGrid g = makeFloorGrid({-1.0, -1.0}, {11.0, 11.0}, 0.1);
+    markFloorRect(g, {-0.1, -0.1}, {10.1, 3.0});
+    markFloorRect(g, {-0.1, 7.0}, {10.1, 10.1});
+    markFloorRect(g, {-0.1, 3.0}, {3.0, 7.0});
+    markFloorRect(g, {7.0, 3.0}, {10.1, 7.0});
+    outline(g, 10.0, 10.0);
+    wallAtX(g, 5.0, 0.0, 3.0);
+    wallAtX(g, 5.0, 7.0, 10.0);
+    const FloorPlan p = findRooms(g);
+    ASSERT_EQ(p.rooms.size(), 2u);
+    const scenes::SceneDescription d = describeRooms(bareDescription("gallery"), g, p, 0.0, 3.0, 1.7);
+    EXPECT_NO_THROW(scenes::validateSceneDescription(d, "gallery"));
+    ASSERT_EQ(d.cells.size(), 2u);
+    EXPECT_NEAR(openBoundaryLength(d, 0, 1), 4.0, 1e-6);
+    expectBareOnlyWhereNothingStands(g, p, d);
+    EXPECT_EQ(computeVisibility(d).at(0, 1), CellVisibility::Geometry);
+    EXPECT_TRUE(d.walls.empty());
+}
+
 // A grey picture of a floor plan for looking at it: walls black, rooms in greys, doorways
 // white, no floor mid grey; the cells over it (red edges, portals green, virtual walls blue).
 void writePlanImage(const FloorGrid& g, const FloorPlan& p, const scenes::SceneDescription& cells,
@@ -374,6 +444,9 @@ TEST(Rooms, TheClinicsStoreysHaveRoomsAndDoorways) {
         const scenes::SceneDescription cells =
             describeRooms(base, rooms.grid.grid, rooms.plan, s.floorY, s.ceilingY, 1.7);
         writePlanImage(rooms.grid.grid, rooms.plan, cells, folder / ("storey" + std::to_string(i) + ".png"));
+        // Cells share bare edges only where nothing stands (a void, floor that is no room),
+        // not where a cut crosses a wall for less than a metre.
+        expectBareOnlyWhereNothingStands(rooms.grid.grid, rooms.plan, cells);
         // The walk keeps off the walls (no point every 5 cm of it lies on one) and reaches
         // nearly every room, over doorways or other floor.
         const WalkCount walk = countWalk(rooms.grid.grid, rooms.plan, cells.walkPath);
