@@ -87,6 +87,8 @@ int runPlan(const std::vector<std::string>& words) {
     const walls::Plan plan = walls::planZones(description, options, walls::wallDepthSpans(scene, description, table));
     for (const std::string& w : scene.warnings) std::cerr << "cavewall: warning: " << w << "\n";
     walls::printPlanSummary(std::cout, plan, description);
+    if (const std::string direct = walls::describeDirectGroups(table, description); !direct.empty())
+        std::cout << direct << "\n";
     if (json) {
         std::ostringstream text;
         text << std::setprecision(17) << walls::planToJson(plan).dump(1) << "\n";

@@ -9,6 +9,7 @@
 #include "tools/commands.h"
 #include "walls/auto_walls.h"
 #include "walls/plan_diagram.h"
+#include "walls/visibility.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -295,6 +296,9 @@ int runWalls(const std::vector<std::string>& words) {
     for (const scenes::VirtualWall& w : result.description.walls) portals += w.kind == scenes::WallKind::Portal;
     std::cout << "wrote " << out.string() << " (" << result.description.cells.size() << " cells, "
               << result.description.walls.size() - portals << " virtual walls, " << portals << " portals)\n";
+    const std::string direct =
+        walls::describeDirectGroups(walls::computeVisibility(result.description), result.description);
+    if (!direct.empty()) std::cout << direct << "\n";
     if (png || pngWalls) writeFigures(result, scene, path, options.plan, png, pngWalls);
     return 0;
 }

@@ -183,6 +183,26 @@ std::vector<std::array<glm::dvec2, 2>> cellBoxes(const scenes::SceneDescription&
 
 }  // namespace
 
+DirectGroups directGroups(const VisibilityTable& t) {
+    DirectGroups g;
+    for (int a = 0; a < t.cellCount; ++a) {
+        int seen = 0;
+        for (int b = 0; b < t.cellCount; ++b) seen += b != a && t.at(a, b) == CellVisibility::Geometry ? 1 : 0;
+        g.pairs += seen;
+        if (seen > 0 && seen + 1 > g.largest) g.largest = seen + 1, g.largestCell = a;
+    }
+    g.pairs /= 2;
+    return g;
+}
+
+std::string describeDirectGroups(const VisibilityTable& table, const scenes::SceneDescription& d) {
+    const DirectGroups g = directGroups(table);
+    if (g.pairs == 0) return "";
+    return "pairs of cells that see each other directly (joined by edges no wall, portal or virtual wall covers): " +
+           std::to_string(g.pairs) + "; the largest group, " + std::to_string(g.largest) + " cells with " +
+           d.cells[static_cast<std::size_t>(g.largestCell)].name + ", is drawn whole from any of them";
+}
+
 double openBoundaryLength(const scenes::SceneDescription& d, int a, int b) {
     return openLength(d, allFootprints(d), a, b);
 }

@@ -13,6 +13,7 @@
 #include "walls/plan.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace cavewall::walls {
@@ -30,6 +31,19 @@ struct VisibilityTable {
 };
 
 VisibilityTable computeVisibility(const scenes::SceneDescription& description);
+
+// Cells that see each other directly (Geometry entries between two cells: joined, perhaps
+// through others, by edges no wall covers). A frame draws such a group whole from any of its
+// cells, so one large group costs what the cells were meant to save.
+struct DirectGroups {
+    int pairs = 0;         // unordered pairs of cells that see each other directly
+    int largest = 0;       // cells in the largest group (0 when there is no pair)
+    int largestCell = -1;  // its first cell by index
+};
+DirectGroups directGroups(const VisibilityTable& table);
+// One line for `plan` and `walls`: "pairs of cells that see each other directly (...): N; the
+// largest group, M cells with NAME, is drawn whole from any of them", or "" when there are none.
+std::string describeDirectGroups(const VisibilityTable& table, const scenes::SceneDescription& description);
 
 // Length (metres) of the boundary cells a and b share that no wall (virtual, portal or real)
 // reaching into the first metre above a's floor covers; 0 between cells whose floors differ by

@@ -42,6 +42,8 @@ TEST(PlanCli, PlansAGeneratedHouseAndTheJsonKeepsTheBound) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_THAT(r.out, HasSubstr("alpha 12°"));
     EXPECT_THAT(r.out, HasSubstr("GPU"));
+    // Every edge the house's cells share is covered: no cells see each other directly.
+    EXPECT_THAT(r.out, Not(HasSubstr("see each other directly")));
     // The overview (gnuplot): one storey panel 760 pixels wide beside a 400-pixel legend strip.
     EXPECT_EQ(scenes::readImage(dir / "house.plan.png").width, 760 + 400);
     EXPECT_TRUE(std::filesystem::file_size(dir / "house.walls.png") > 100);  // the per-wall detail

@@ -48,6 +48,24 @@ TEST(Visibility, OpenBoundariesAreWhatNoWallCovers) {
     EXPECT_NEAR(openBoundaryLength(d, kHall, kAnnex), 0.0, 1e-12);     // not neighbours
 }
 
+// The kitchen and the annex see each other over the open boundary: one pair, one group of two.
+TEST(Visibility, DirectGroupsAreTheCellsJoinedByOpenBoundaries) {
+    const DirectGroups g = directGroups(computeVisibility(house()));
+    EXPECT_EQ(g.pairs, 1);
+    EXPECT_EQ(g.largest, 2);
+    EXPECT_EQ(g.largestCell, kKitchen);
+    EXPECT_EQ(describeDirectGroups(computeVisibility(house()), house()),
+              "pairs of cells that see each other directly (joined by edges no wall, portal or virtual wall "
+              "covers): 1; the largest group, 2 cells with kitchen, is drawn whole from any of them");
+    scenes::SceneDescription closed = house();
+    closed.realWalls.push_back({"kitchen|annex", {8, 0, 0}, {8, 0, 4}, {8, 3, 0}});
+    const DirectGroups none = directGroups(computeVisibility(closed));
+    EXPECT_EQ(none.pairs, 0);
+    EXPECT_EQ(none.largest, 0);
+    EXPECT_EQ(none.largestCell, -1);
+    EXPECT_EQ(describeDirectGroups(computeVisibility(closed), closed), "");
+}
+
 TEST(Visibility, HouseTable) {
     const auto d = house();
     const VisibilityTable t = computeVisibility(d);
