@@ -158,8 +158,7 @@ struct Builder {
 
     // One run of the edge between cells a and b from p to q (x, z).
     void emit(int kind, int a, int b, glm::dvec2 p, glm::dvec2 q) {
-        // A wall of any length (see the header).
-        if (kind == kNothing || glm::length(q - p) <= 0.0) return;
+        if (kind == kNothing) return;  // a wall's run counts at any length (see the header)
         if (kind == kWall) {
             auto r = wallBetween<scenes::RealWall>(p, q, floorY, ceilingY, centre(a));
             r.name = "real " + std::to_string(d.realWalls.size());

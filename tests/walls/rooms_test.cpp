@@ -445,7 +445,7 @@ TEST(Rooms, TheClinicsStoreysHaveRoomsAndDoorways) {
             describeRooms(base, rooms.grid.grid, rooms.plan, s.floorY, s.ceilingY, 1.7);
         writePlanImage(rooms.grid.grid, rooms.plan, cells, folder / ("storey" + std::to_string(i) + ".png"));
         // Cells share bare edges only where nothing stands (a void, floor that is no room),
-        // not where a cut crosses a wall for less than a metre.
+        // not where a cut crosses a wall, however short the wall's run along the edge.
         expectBareOnlyWhereNothingStands(rooms.grid.grid, rooms.plan, cells);
         // The walk keeps off the walls (no point every 5 cm of it lies on one) and reaches
         // nearly every room, over doorways or other floor.
