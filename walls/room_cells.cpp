@@ -224,8 +224,7 @@ scenes::SceneDescription describeRooms(const scenes::SceneDescription& base, con
     const std::vector<Box> leaves = partition(g, plan, options);
     for (const Box& b : leaves) {
         scenes::Cell c;
-        c.name = std::to_string(d.cells.size() + 1);
-        c.name.insert(0, 1, 'R');  // not "R" + ...: GCC 12 warns of a memcpy overlap (-Wrestrict) there
+        c.name = "R" + std::to_string(d.cells.size() + 1);
         c.floorY = floorY;
         const glm::dvec2 lo = g.origin + g.cellSize * glm::dvec2(b.i0, b.k0);
         const glm::dvec2 hi = g.origin + g.cellSize * glm::dvec2(b.i1, b.k1);
