@@ -114,7 +114,9 @@ TEST(AutoWalls, ChoosesTheCheapestCandidateWithinTheBudget) {
     const AutoWallsCandidate& chosen = r.candidates[r.chosen];
     EXPECT_TRUE(chosen.withinBudget);
     for (const AutoWallsCandidate& c : r.candidates)
-        if (c.withinBudget) EXPECT_GE(c.expectedMs, chosen.expectedMs) << c.nx << "x" << c.nz;
+        if (c.withinBudget) {
+            EXPECT_GE(c.expectedMs, chosen.expectedMs) << c.nx << "x" << c.nz;
+        }
     EXPECT_EQ(static_cast<int>(r.description.cells.size()), chosen.nx * chosen.nz);
     // More cells draw fewer triangles: one cell draws every crate (41 x 12 triangles).
     EXPECT_DOUBLE_EQ(r.candidates.front().meanCellTriangles, 41.0 * 12.0);

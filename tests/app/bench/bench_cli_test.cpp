@@ -258,7 +258,9 @@ TEST(BenchSceneCli, StereoRunMeasuresTheStereoErrorPerEye) {
         SCOPED_TRACE(f.at("mode") + " frame " + f.at("frame"));
         const double kept = f.number("kept_fallbacks"), geometry = f.number("geometry_fallbacks");
         EXPECT_TRUE(kept >= 0.0 && geometry >= 0.0);
-        if (f.at("mode").find("paged") == std::string::npos) EXPECT_EQ(kept + geometry, 0.0);
+        if (f.at("mode").find("paged") == std::string::npos) {
+            EXPECT_EQ(kept + geometry, 0.0);
+        }
     }
     for (const test::CsvRow& row : test::readCsv(out / "bench_screens.csv"))
         EXPECT_TRUE(std::isfinite(row.number("stereo_mean_arcmin"))) << row.at("screen");
