@@ -132,7 +132,9 @@ TEST(FrameTimeBudget, AnInfeasibleTargetHoldsTheLoadSteadyInsteadOfFollowingTheC
     }
     for (std::size_t i = 0; i < g.size(); ++i) {
         EXPECT_GE(g[i], coarsest[i]);
-        if (i > 0) EXPECT_GE(static_cast<double>(g[i]), 0.98 * static_cast<double>(g[i - 1]) - 1.0) << i;
+        if (i > 0) {
+            EXPECT_GE(static_cast<double>(g[i]), 0.98 * static_cast<double>(g[i - 1]) - 1.0) << i;
+        }
     }
     // Without the floor every light frame would draw 100 k: p99/p50 1.3. With it the lightest
     // frame after a heavy stretch of 6 keeps 0.98^6 of 130 k.

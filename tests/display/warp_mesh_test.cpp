@@ -51,7 +51,7 @@ TEST(WarpMesh, ReadsAnMpcdiPfmFileUpright) {
     //   bottom (0, 0)     (0.5, 0)   NaN
     //   middle (0, 0.5)   (0.5, 0.5) (1, 0.5)
     //   top    (0.1, 1)   (0.5, 1)   (0.9, 1)       the image's top, narrowed: a keystone
-    const WarpMesh m = loadWarpMesh(std::string(CAVEWALL_SOURCE_DIR) + "/tests/display/data/mpcdi_keystone_3x3.pfm");
+    const WarpMesh m = loadWarpMesh(CAVEWALL_SOURCE_DIR "/tests/display/data/mpcdi_keystone_3x3.pfm");
     ASSERT_EQ(m.width, 3);
     ASSERT_EQ(m.height, 3);
     EXPECT_EQ(m.nodes[0].xy, glm::vec2(0.0f, 0.0f));  // the output's lower-left corner ...

@@ -58,8 +58,7 @@ TEST(ViewAll, FramesABoxFarFromTheOriginInTheSymmetricFrustum) {
 }
 
 TEST(ViewAll, PicksTheScreenTheHeadFaces) {
-    const display::Display d(
-        config::loadDisplayConfig(std::string(CAVEWALL_SOURCE_DIR) + "/tests/support/cave4_128.json"));
+    const display::Display d(config::loadDisplayConfig(CAVEWALL_SOURCE_DIR "/tests/support/cave4_128.json"));
     const scenes::Bounds b = box({-5, 0, -5}, {5, 3, 5});
     struct Case {
         const char* name;

@@ -104,8 +104,9 @@ TEST(Bvh, MatchesBruteForceOnRandomBoxesAndViews) {
         const std::vector<int> all = bvh.cull(clip);
         for (std::size_t i = 0; i + 1 < bounds.size(); ++i) {
             const glm::dvec4 p = clip * glm::dvec4(bounds[i].centre(), 1.0);
-            if (p.w > 0 && std::abs(p.x) < p.w && std::abs(p.y) < p.w && p.z > 0 && p.z < p.w)
+            if (p.w > 0 && std::abs(p.x) < p.w && std::abs(p.y) < p.w && p.z > 0 && p.z < p.w) {
                 ASSERT_NE(std::find(all.begin(), all.end(), static_cast<int>(i)), all.end()) << i;
+            }
         }
     }
     // Not a trivial pass: across the views some objects were kept and most were culled.

@@ -221,10 +221,11 @@ TEST(Generate, WrittenScenesValidateAndLoadBackWithTheirCells) {
         else
             EXPECT_GE(countRole(s, Role::Structure), countRole(g.scene, Role::Structure));
         for (const Object& o : s.objects)
-            if (o.role == Role::Structure && o.name.find(" [chunk ") == std::string::npos)
+            if (o.role == Role::Structure && o.name.find(" [chunk ") == std::string::npos) {
                 EXPECT_TRUE(std::max(o.worldBounds.size().x, o.worldBounds.size().z) <= kStructureChunkMetres ||
                             s.meshes[o.mesh].triangleCount() < 1024)
                     << o.name << " should have been cut";
+            }
         for (const Object& o : s.objects)
             if (o.role == Role::Content) {
                 EXPECT_GE(o.cell, 0) << o.name;

@@ -144,7 +144,9 @@ TEST(TextureBlocks, TransparencyIsExact) {
                 ++transparent;
                 ASSERT_EQ(std::memcmp(&decoded.rgba[i], "\0\0\0\0", 4), 0) << "texel " << i / 4;
             }
-            if (format == TextureFormat::Bc1 && a >= 128) ASSERT_EQ(decoded.rgba[i + 3], 255) << "texel " << i / 4;
+            if (format == TextureFormat::Bc1 && a >= 128) {
+                ASSERT_EQ(decoded.rgba[i + 3], 255) << "texel " << i / 4;
+            }
             if (format == TextureFormat::Bc3 && (a == 0 || a == 255)) {
                 transparent += a == 0;
                 ASSERT_EQ(decoded.rgba[i + 3], a) << "texel " << i / 4;
