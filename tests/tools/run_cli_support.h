@@ -42,7 +42,7 @@ inline std::string cacheDir() {
     return (std::filesystem::path(dir ? dir : "/tmp") / "run_cli" / "cache").string();
 }
 
-inline std::string testDisplay() { return std::string(CAVEWALL_SOURCE_DIR) + "/tests/support/cave4_128.json"; }
+inline std::string testDisplay() { return CAVEWALL_SOURCE_DIR "/tests/support/cave4_128.json"; }
 
 // `cavewall run` with walls on the small plant, into `out`.
 inline std::vector<std::string> wallRun(const std::filesystem::path& out, const std::string& tracker, long frames) {
