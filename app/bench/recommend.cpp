@@ -38,11 +38,6 @@ void markFront(const std::vector<RecommendRow>& rows, double (*error)(const Reco
     for (std::size_t k : paretoFront(points)) front[rowOf[k]] = true;
 }
 
-// Whether `a` beats `b` on `value` (lower is better), ties going to the faster.
-bool better(const RecommendRow& a, const RecommendRow& b, double va, double vb) {
-    return va < vb || (va == vb && a.frameMs < b.frameMs);
-}
-
 std::string kindClause(const std::vector<RecommendRow>& rows, const std::vector<bool>& front) {
     bool flatOnFront = false, depthOnFront = false, flatMeasured = false;
     for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -84,19 +79,28 @@ Recommendation recommendWalls(const std::vector<RecommendRow>& rows, const Recom
             eligible.push_back(i);
             stereo = stereo && rows[i].stereoArcmin.has_value();
         }
-    std::size_t pick = eligible.front();
-    for (std::size_t i : eligible) {
-        const RecommendRow &a = rows[i], &b = rows[pick];
-        if (stereo ? better(a, b, *a.stereoArcmin, *b.stereoArcmin) : better(a, b, a.frameMs, b.frameMs)) pick = i;
+    const std::size_t withinPsnr = eligible.size();
+    double lowestStereo = INFINITY;
+    if (stereo) {
+        for (std::size_t i : eligible) lowestStereo = std::min(lowestStereo, *rows[i].stereoArcmin);
+        std::erase_if(eligible,
+                      [&](std::size_t i) { return *rows[i].stereoArcmin > lowestStereo + rule.stereoWithinArcmin; });
     }
+    std::size_t pick = eligible.front();
+    for (std::size_t i : eligible)
+        if (rows[i].frameMs < rows[pick].frameMs) pick = i;
     const RecommendRow& r = rows[pick];
-    std::string reason = (stereo ? "lowest stereo error, " + short3(*r.stereoArcmin) + " arcmin mean, of "
-                                 : std::string("fastest of ")) +
-                         std::to_string(eligible.size()) + (eligible.size() == 1 ? " walls mode" : " walls modes") +
-                         std::string(" on the front within ") + formatNumber(rule.psnrWithinDb) +
-                         " dB of the best pooled PSNR (" + short3(bestPsnr) + " dB): " + short3(r.frameMs) +
-                         " ms median, " + short3(r.psnrDb) + " dB pooled, FLIP mean " + short3(r.flipMean) +
-                         kindClause(rows, front);
+    auto modes = [](std::size_t n) { return std::to_string(n) + (n == 1 ? " walls mode" : " walls modes"); };
+    const std::string psnrClause = " on the front within " + formatNumber(rule.psnrWithinDb) +
+                                   " dB of the best pooled PSNR (" + short3(bestPsnr) + " dB)";
+    std::string reason = stereo
+                             ? "fastest of " + modes(eligible.size()) + " within " +
+                                   formatNumber(rule.stereoWithinArcmin) + " arcmin of the lowest mean stereo error (" +
+                                   short3(lowestStereo) + " arcmin), among " + modes(withinPsnr) + psnrClause
+                             : "fastest of " + modes(withinPsnr) + psnrClause;
+    reason += ": " + short3(r.frameMs) + " ms median, " + short3(r.psnrDb) + " dB pooled, FLIP mean " +
+              short3(r.flipMean) + (stereo ? ", stereo error " + short3(*r.stereoArcmin) + " arcmin" : std::string()) +
+              kindClause(rows, front);
     return {pick, reason};
 }
 

@@ -9,9 +9,9 @@
 // no part. The rule, over the walls modes on the front:
 //  1. none on the front: no recommendation;
 //  2. eligible: those whose pooled PSNR is within `psnrWithinDb` of the best of them;
-//  3. when every eligible mode has a stereo error (stereo displays), the one with the lowest
-//     mean stereo error; otherwise the fastest (lowest median frame time); ties go to the
-//     faster, then to the earlier row.
+//  3. when every eligible mode has a stereo error (stereo displays), those whose mean stereo
+//     error is within `stereoWithinArcmin` of the lowest of them stay eligible;
+//  4. the fastest eligible mode (lowest median frame time); ties go to the earlier row.
 // So depth walls are recommended whenever they are on the front and flat walls are not.
 
 #include "walls/depth_wall.h"
@@ -36,6 +36,9 @@ struct RecommendRow {
 
 struct RecommendRule {
     double psnrWithinDb = 1.0;  // eligible: pooled PSNR at least the best's minus this, dB
+    // In stereo, still eligible: a mean stereo error at most the lowest's plus this, arc
+    // minutes; a thousandth of the 1' stereoacuity threshold the stereo error counts against.
+    double stereoWithinArcmin = 0.001;
 };
 
 struct Recommendation {

@@ -78,19 +78,33 @@ TEST(Recommend, PicksByTheStatedRule) {
          {full, control, walls("flat a=10", WallKind::Flat, 10.0, 37.7, 0.0038, 0.032),
           walls("depth a=10", WallKind::Depth, 11.5, 38.2, 0.0037, 0.0027)},
          3,
-         "lowest stereo error, 0.0027 arcmin mean, of 2 walls modes"},
+         "fastest of 1 walls mode within 0.001 arcmin of the lowest mean stereo error (0.0027 arcmin), among 2 walls "
+         "modes on the front"},
         // Depth walls dominate the flat walls (faster and better): flat is off the front.
         {"depth on the front, flat not",
          {full, control, walls("flat a=10", WallKind::Flat, 12.0, 37.7, 0.0038),
           walls("depth a=10", WallKind::Depth, 11.0, 40.4, 0.0028)},
          3,
          "depth walls are on the front and flat walls are not"},
-        // Equal stereo errors: the faster of the two.
+        // Equal errors, stereo too: the slower is off the front, the faster is picked.
         {"stereo tie goes to the faster",
          {full, walls("x", WallKind::Depth, 12.0, 38.0, 0.003, 0.01),
           walls("y", WallKind::Depth, 11.0, 38.0, 0.003, 0.01)},
          2,
-         "lowest stereo error"},
+         "fastest of 1 walls mode within 0.001 arcmin"},
+        // Stereo errors a millionth of an arc minute apart (the clinic's resident and paged
+        // walls): no difference a viewer sees, so the faster wins although its error is higher.
+        {"a negligible stereo difference goes to the faster",
+         {full, walls("resident", WallKind::Depth, 11.0, 45.0, 0.0005, 0.000610),
+          walls("paged", WallKind::Depth, 12.0, 45.0, 0.00049, 0.0006094)},
+         1,
+         "fastest of 2 walls modes within 0.001 arcmin of the lowest mean stereo error (0.000609 arcmin)"},
+        // Just over the tolerance: the lower stereo error wins although slower.
+        {"a stereo difference over the tolerance decides",
+         {full, walls("a", WallKind::Depth, 11.0, 45.0, 0.0005, 0.0031),
+          walls("b", WallKind::Depth, 12.0, 45.0, 0.00049, 0.0020)},
+         2,
+         "fastest of 1 walls mode within 0.001 arcmin"},
         // A NaN time takes no part; the other walls mode is picked.
         {"non-finite rows take no part",
          {full, walls("nan", WallKind::Flat, NAN, 50.0, 0.001), walls("ok", WallKind::Flat, 10.0, 37.0, 0.004)},
@@ -182,7 +196,7 @@ TEST(Recommend, PlantFiguresRecommendDepthWalls) {
 }
 
 // In stereo the scale bench's rows carry their stereo error, and the rule picks the eligible
-// walls mode with the lowest one, as `bench` does: walls-budget is within 1 dB of the walls'
+// walls mode with the lowest one (no other within 0.001 arcmin), as `bench` does: walls-budget is within 1 dB of the walls'
 // pooled PSNR and faster, but the walls' stereo error is lower.
 TEST(Recommend, ScaleRowsInStereoPickTheLowestStereoError) {
     ScaleReport report;
@@ -196,7 +210,8 @@ TEST(Recommend, ScaleRowsInStereoPickTheLowestStereoError) {
     }
     const std::vector<std::string> lines = scaleRecommendedLines(report);
     ASSERT_EQ(lines.size(), 1u);
-    EXPECT_THAT(lines[0], HasSubstr("): walls (lowest stereo error, 0.05 arcmin mean, of 2 walls modes on the front"));
+    EXPECT_THAT(lines[0], HasSubstr("): walls (fastest of 1 walls mode within 0.001 arcmin of the lowest mean stereo "
+                                    "error (0.05 arcmin), among 2 walls modes on the front"));
 }
 
 }  // namespace

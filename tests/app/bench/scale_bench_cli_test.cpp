@@ -142,8 +142,9 @@ TEST(BenchSceneCli, ScaleRunInStereoReportsTheStereoError) {
     // Whether the walls are on the front at 32 x 32 pixels depends on their frame time against
     // full geometry with levels of detail (a few milliseconds apart): where they are, the rule
     // names the stereo error (recommend_test checks the rule itself).
-    EXPECT_THAT(r.out, testing::ContainsRegex("recommended \\([0-9.]+ M triangles\\): (walls[-a-z]* \\(lowest stereo "
-                                              "error, |none \\(no walls mode is on the front\\))"));
+    EXPECT_THAT(r.out, testing::ContainsRegex("recommended \\([0-9.]+ M triangles\\): (walls[-a-z]* \\(fastest of [0-9]+ "
+                                              "walls modes? within 0.001 arcmin of the lowest mean stereo error|none "
+                                              "\\(no walls mode is on the front\\))"));
     const test::CsvTable csv = test::readCsv(out / "scale.csv");
     ASSERT_EQ(csv.size(), 5u);                     // full, full-lod, near, cells, walls
     EXPECT_EQ(csv[0].at("stereo_arcmin"), "nan");  // the reference
