@@ -3,9 +3,11 @@
 #include "app/start_pose.h"
 #include "display/display.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <thread>
+#include <utility>
 
 namespace cavewall::app {
 
@@ -109,13 +111,14 @@ std::string RunInput::liveTrackerLine() const {
     return _tracker && _tracker->isLive() ? _tracker->describe() : std::string();
 }
 
-RunInput::RunInput(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d, bool realTime)
+RunInput::RunInput(const RunOptions& o, const scenes::Scene& scene, const scenes::SceneDescription& d, bool realTime,
+                   LiveClock clock)
     : _tracker(trackerFor(o)), _pipeline(input::pipelineConfigFor(o.display)), _query(scene),
       _start(startFor(o, scene, d)), _desktop(desktopFor(o, scene, d, &_query, _start)),
       _navigator(navigatorConfig(o), &_query),
       _mode(navMode(o.nav, d, _desktop != nullptr || (o.window == WindowMode::Window && o.frames == 0))),
       _replay(dynamic_cast<input::ReplaySource*>(_tracker.get()) != nullptr), _realTime(realTime),
-      _clockStart(std::chrono::steady_clock::now()) {
+      _clock(std::move(clock)), _clockStart(_clock.now()) {
     placeAtPathStart(_navigator, d);
     placeTracked(_navigator, o, _start);
     if (_desktop) placeDesktop(*_desktop, _start, d);
@@ -138,11 +141,31 @@ std::string_view RunInput::navigationName() const {
 
 std::optional<double> RunInput::speed() const { return _desktop ? std::optional(_desktop->speed()) : std::nullopt; }
 
+bool RunInput::live() const { return _realTime && (_desktop || _tracker->isLive()); }
+
+// Frame `i`'s time (see run_input.h): the wall clock's in a live session, held to kRunStep
+// after the last frame at the earliest.
+double RunInput::frameTime(long i) {
+    if (!live()) return static_cast<double>(i) * kRunStep;
+    const LiveClock::TimePoint now = _clock.now();
+    if (i == 0) {
+        _clockStart = now;
+        return 0.0;
+    }
+    const double earliest = _lastTime + kRunStep;
+    const auto due = _clockStart + std::chrono::duration_cast<LiveClock::TimePoint::duration>(
+                                       std::chrono::duration<double>(earliest));
+    if (now >= due) return std::chrono::duration<double>(now - _clockStart).count();
+    _clock.sleepUntil(due);
+    return earliest;
+}
+
 walkthrough::FrameInput RunInput::next(long i, bool readImages, const std::vector<input::Event>& windowEvents) {
-    const double t = static_cast<double>(i) * kRunStep;
-    if (_realTime && (_desktop || _tracker->isLive()))
-        std::this_thread::sleep_until(_clockStart + std::chrono::duration<double>(t));
-    walkthrough::FrameInput in = _desktop ? desktopFrame(i, t, windowEvents) : trackedFrame(i, t, windowEvents);
+    const double t = frameTime(i);
+    const double step = live() ? std::min(t - _lastTime, kMaxLiveStep) : kRunStep;
+    _lastTime = t;
+    walkthrough::FrameInput in =
+        _desktop ? desktopFrame(i, t, step, windowEvents) : trackedFrame(i, t, step, windowEvents);
     in.frame = i;
     in.time = t;
     in.readImages = readImages;
@@ -150,13 +173,14 @@ walkthrough::FrameInput RunInput::next(long i, bool readImages, const std::vecto
 }
 
 // The desktop: window events drive the navigator; the head is the display's default head.
-walkthrough::FrameInput RunInput::desktopFrame(long i, double t, const std::vector<input::Event>& windowEvents) {
+walkthrough::FrameInput RunInput::desktopFrame(long i, double t, double step,
+                                               const std::vector<input::Event>& windowEvents) {
     if (_mode) {
         for (input::Event e : windowEvents) {
             e.time = t;
             _desktop->handle(e);
         }
-        if (i > 0) _desktop->update(kRunStep);
+        if (i > 0) _desktop->update(step);
     }
     const input::HandCursor cursor = _desktop->handCursor();
     walkthrough::FrameInput in;
@@ -168,7 +192,8 @@ walkthrough::FrameInput RunInput::desktopFrame(long i, double t, const std::vect
 
 // A tracker: sample -> pipeline -> navigator, recorded when asked; the windows' keys act as a
 // wand (input/keyboard_wand.h), unrecorded.
-walkthrough::FrameInput RunInput::trackedFrame(long i, double t, const std::vector<input::Event>& windowEvents) {
+walkthrough::FrameInput RunInput::trackedFrame(long i, double t, double step,
+                                               const std::vector<input::Event>& windowEvents) {
     input::Sample sample = _tracker->poll(t);
     if (_watch) {
         _watch->update(t, _tracker->stats());
@@ -193,7 +218,7 @@ walkthrough::FrameInput RunInput::trackedFrame(long i, double t, const std::vect
     _navigator.setTracking(tracked.head.pose, tracked.hand.pose, tracked.wand);
     if (_mode) {
         for (const input::Event& e : events) _navigator.handle(e);
-        if (i > 0) _navigator.update(kRunStep);
+        if (i > 0) _navigator.update(step);
     }
     const input::HandCursor cursor = _navigator.handCursor();
     walkthrough::FrameInput in;

@@ -1,7 +1,14 @@
 #pragma once
 // The input side of `cavewall run`: tracker -> tracking pipeline -> navigator (and the optional
-// recorder) turned into one walkthrough::FrameInput per frame at the fixed step kRunStep. In cluster mode
-// only rank 0 has one; the other ranks receive its FrameInput.
+// recorder) turned into one walkthrough::FrameInput per frame. In cluster mode only rank 0 has
+// one; the other ranks receive its FrameInput.
+//
+// Time: a live session (the desktop or a network tracker, realTime) runs on the wall clock: frame
+// 0 at t = 0, each later frame kRunStep after the last at the earliest (at most 60 frames a
+// second) or, when drawing took longer, at the time it starts; navigation moves by the time
+// that passed (at most kMaxLiveStep a frame), so a person moves at the stated speed whatever
+// the frame rate. Simulated, file and replayed trackers, and the bench, step kRunStep a frame:
+// their runs are reproducible.
 //
 // With a tracker, the windows' keys act as a wand (input/keyboard_wand.h): W/S/A/D the joystick,
 // 1-4 the modes; a session in windows until stopped flies by default.
@@ -28,8 +35,10 @@
 #include "walkthrough/frame_types.h"
 
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
+#include <thread>
 
 namespace cavewall::app {
 
@@ -39,17 +48,24 @@ namespace cavewall::app {
 std::optional<input::NavMode> navMode(app::Navigation nav, const scenes::SceneDescription& description,
                                       bool interactive = false);
 
+// The wall clock a live session runs on (RunInput); tests pass their own.
+struct LiveClock {
+    using TimePoint = std::chrono::steady_clock::time_point;
+    std::function<TimePoint()> now = [] { return std::chrono::steady_clock::now(); };
+    std::function<void(TimePoint)> sleepUntil = [](TimePoint t) { std::this_thread::sleep_until(t); };
+};
+
 class RunInput {
 public:
     // Creates the tracker from options.tracker; copies the structure of `scene` for walk
-    // collisions (app/scene_query.h). `realTime`: live trackers (network, desktop) are polled
-    // when frame i's time t = i * kRunStep has come; false polls them at once (the bench
+    // collisions (app/scene_query.h). `realTime`: live trackers (network, desktop) run on the
+    // wall clock (see the top); false steps kRunStep a frame and polls them at once (the bench
     // records its eye path ahead of drawing).
     RunInput(const app::RunOptions& options, const scenes::Scene& scene, const scenes::SceneDescription& description,
-             bool realTime = true);
+             bool realTime = true, LiveClock clock = {});
 
-    // The input of frame `frame` (t = frame * kRunStep); live trackers wait for that time when
-    // realTime.
+    // The input of frame `frame`, called for 0, 1, 2, ... in turn: t = frame * kRunStep, or
+    // the wall clock's time in a live session (which waits until kRunStep after the last).
     // `windowEvents`: the windows' keyboard and mouse events since the last frame (used by the
     // desktop fallback only).
     walkthrough::FrameInput next(long frame, bool readImages, const std::vector<input::Event>& windowEvents = {});
@@ -71,8 +87,12 @@ public:
     std::string liveTrackerLine() const;
 
 private:
-    walkthrough::FrameInput desktopFrame(long frame, double t, const std::vector<input::Event>& windowEvents);
-    walkthrough::FrameInput trackedFrame(long frame, double t, const std::vector<input::Event>& windowEvents);
+    bool live() const;
+    double frameTime(long frame);
+    walkthrough::FrameInput desktopFrame(long frame, double t, double step,
+                                         const std::vector<input::Event>& windowEvents);
+    walkthrough::FrameInput trackedFrame(long frame, double t, double step,
+                                         const std::vector<input::Event>& windowEvents);
 
     std::unique_ptr<input::TrackerSource> _tracker;  // null for the desktop fallback
     input::TrackingPipeline _pipeline;
@@ -87,7 +107,9 @@ private:
     std::optional<input::TrackerWatch> _watch;  // live trackers
     input::WandState _lastWand;
     input::KeyboardWand _keyboard;  // the windows' keys as a wand, with a tracker
-    std::chrono::steady_clock::time_point _clockStart;
+    LiveClock _clock;
+    LiveClock::TimePoint _clockStart;  // a live session's frame 0
+    double _lastTime = 0.0;            // the last frame's t
 };
 
 }  // namespace cavewall::app

@@ -23,7 +23,10 @@
 
 namespace cavewall::app {
 
-inline constexpr double kRunStep = 1.0 / 60.0;  // seconds per frame
+inline constexpr double kRunStep = 1.0 / 60.0;  // seconds per frame (a live session's shortest)
+// A live session's longest navigation step, seconds: after a frame that stalled (a shader
+// compiled, the window was dragged) the viewer moves this far at most, not the whole pause.
+inline constexpr double kMaxLiveStep = 0.25;
 
 enum class WindowMode { Auto, Headless, Window };
 
