@@ -73,4 +73,20 @@ std::vector<WindowPlacement> layoutWindows(const std::vector<WindowWish>& wishes
     return out;
 }
 
+glm::ivec4 fitImage(glm::ivec2 image, glm::ivec2 window) {
+    if (image.x <= 0 || image.y <= 0 || window.x <= 0 || window.y <= 0) return {0, 0, 0, 0};
+    // Products in 64 bits: the rectangle's width at the window's height, and its height at the
+    // window's width, rounded to the nearest pixel.
+    const auto along = [](long long a, long long b, long long c) { return static_cast<int>((a * b + c / 2) / c); };
+    glm::ivec2 size = window;
+    if (const int width = along(window.y, image.x, image.y); width < window.x)
+        size.x = width;
+    else if (const int height = along(window.x, image.y, image.x); height < window.y)
+        size.y = height;
+    if (window.x - size.x <= 1 && window.y - size.y <= 1) size = window;
+    size = glm::max(size, glm::ivec2(1));
+    const glm::ivec2 origin = (window - size) / 2;
+    return {origin.x, origin.y, origin.x + size.x, origin.y + size.y};
+}
+
 }  // namespace cavewall::display

@@ -3,7 +3,8 @@
 // positions are kept (relative to their monitor), fullscreen windows cover their monitor, and the
 // windows without a position are tiled over their monitor's work area in a grid, without
 // overlapping, scaled down (keeping their aspect) when they do not fit. The rendered images keep
-// the screens' resolution; a smaller window shows them scaled.
+// the screens' resolution; a smaller window shows them scaled, and a window of another shape
+// (resized by the user) shows them whole, undistorted, with black bars (fitImage).
 //
 // Pure: the monitors come from the window system (display/gl); tests give their own.
 
@@ -45,5 +46,11 @@ constexpr int kTitleBarPixels = 32;
 // to lose the least scale; a window is never scaled up.
 std::vector<WindowPlacement> layoutWindows(const std::vector<WindowWish>& wishes,
                                            const std::vector<MonitorArea>& monitors);
+
+// Where an image of `image` pixels goes in a window of `window` pixels (both origin lower-left):
+// the largest rectangle of the image's aspect that fits, centred, as (x0, y0, x1, y1); the whole
+// window when the aspects agree to within a pixel, an empty rectangle when either size is not
+// positive (a minimised window).
+glm::ivec4 fitImage(glm::ivec2 image, glm::ivec2 window);
 
 }  // namespace cavewall::display

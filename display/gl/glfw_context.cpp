@@ -200,8 +200,14 @@ void GlfwContext::blit(Window& w, unsigned texture, glm::ivec2 size, GLenum draw
     glBindFramebuffer(GL_READ_FRAMEBUFFER, w.readFramebuffer.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glDrawBuffer(drawBuffer);
-    const GLenum filter = size == windowSize ? GL_NEAREST : GL_LINEAR;
-    glBlitFramebuffer(0, 0, size.x, size.y, 0, 0, windowSize.x, windowSize.y, GL_COLOR_BUFFER_BIT, filter);
+    // The image whole and undistorted in a window of another shape: black bars beside it.
+    const glm::ivec4 to = fitImage(size, windowSize);
+    if (to != glm::ivec4(0, 0, windowSize.x, windowSize.y)) {
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
+    const GLenum filter = glm::ivec2(to.z - to.x, to.w - to.y) == size ? GL_NEAREST : GL_LINEAR;
+    glBlitFramebuffer(0, 0, size.x, size.y, to.x, to.y, to.z, to.w, GL_COLOR_BUFFER_BIT, filter);
 }
 
 void GlfwContext::present(int window, const PresentImage& image, scenes::Image* capture) {

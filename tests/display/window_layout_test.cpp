@@ -100,5 +100,33 @@ TEST(WindowLayout, AMonitorThatIsNotConnectedIsAnErrorNamingTheScreen) {
             HasSubstr("screen 'left': window.monitor: expected a monitor index in [0, 0] (1 monitor), got 3")));
 }
 
+// A window of another shape than its image (resized by the user) shows the image whole and
+// undistorted, centred between black bars.
+TEST(FitImage, KeepsTheImagesAspectCentredInAnyWindow) {
+    // The desktop's 1920 x 1080 image in its 1280 x 720 window: the whole window.
+    EXPECT_EQ(fitImage({1920, 1080}, {1280, 720}), glm::ivec4(0, 0, 1280, 720));
+    // A portrait window: bars above and below, 600 x 337.5 -> 338 rows centred in 800.
+    EXPECT_EQ(fitImage({1920, 1080}, {600, 800}), glm::ivec4(0, 231, 600, 569));
+    // A wide window: bars left and right, 400 x 300 centred in 1000.
+    EXPECT_EQ(fitImage({1024, 768}, {1000, 300}), glm::ivec4(300, 0, 700, 300));
+    // Aspects a pixel apart (an odd window size) fill the window: no one-pixel bar.
+    EXPECT_EQ(fitImage({1920, 1080}, {1281, 720}), glm::ivec4(0, 0, 1281, 720));
+    // Every rectangle keeps the image's aspect to within a pixel and lies in the window.
+    for (const glm::ivec2 window : {glm::ivec2(1, 1), glm::ivec2(3, 1000), glm::ivec2(1000, 3), glm::ivec2(777, 555)}) {
+        const glm::ivec4 r = fitImage({1920, 1080}, window);
+        SCOPED_TRACE(testing::Message() << window.x << " x " << window.y);
+        EXPECT_GE(r.x, 0);
+        EXPECT_GE(r.y, 0);
+        EXPECT_LE(r.z, window.x);
+        EXPECT_LE(r.w, window.y);
+        EXPECT_GE(r.z - r.x, 1);
+        EXPECT_GE(r.w - r.y, 1);
+        EXPECT_NEAR(double(r.z - r.x) * 1080.0, double(r.w - r.y) * 1920.0, 1920.0);
+    }
+    // A minimised window or an empty image: nothing to draw.
+    EXPECT_EQ(fitImage({1920, 1080}, {0, 0}), glm::ivec4(0));
+    EXPECT_EQ(fitImage({0, 1080}, {640, 480}), glm::ivec4(0));
+}
+
 }  // namespace
 }  // namespace cavewall::display

@@ -1,7 +1,8 @@
 // `cavewall view` in a real window under a virtual X server, driven through it by xdotool: the
 // first image shows the model, W moves the viewer along the view, a drag turns the view by the
 // stated degrees per pixel, F1 shows the help over the window and never in the saved frames,
-// Escape frees the pointer and a second Escape quits with exit 0 and complete files.
+// Escape frees the pointer and a second Escape quits with exit 0 and complete files; a window
+// resized to another shape shows the image undistorted between black bars.
 // ctest runs this executable through `xvfb-run`. There are no fixed sleeps: each step polls
 // frames.csv (flushed after every frame) for the frame or the pose it waits for.
 #include "tests/tools/run_cli_support.h"
@@ -189,6 +190,39 @@ TEST_F(ViewWindow, KeysAndMouseMoveTheViewF1ShowsHelpAndEscapeTwiceQuits) {
     std::smatch m;
     ASSERT_TRUE(std::regex_search(r.out, m, std::regex("view: stopped after ([0-9]+) frames: quit"))) << r.out;
     EXPECT_EQ(rows().size(), std::stoul(m[1]));  // every frame's row, complete
+}
+
+// Whether every pixel of image row `y` (top first) is black.
+bool blackRow(const scenes::Image& image, int y) {
+    for (int x = 0; x < image.width; ++x) {
+        const std::size_t i = 4 * (static_cast<std::size_t>(y) * image.width + x);
+        if (image.rgba[i] != 0 || image.rgba[i + 1] != 0 || image.rgba[i + 2] != 0) return false;
+    }
+    return true;
+}
+
+// A window resized to another shape shows the image whole and undistorted: the 16:9 image in a
+// square window of 360 x 360 is 360 x 203 pixels, centred between black bars (the status line
+// lies over the upper bar).
+TEST_F(ViewWindow, AWindowResizedToAnotherShapeShowsTheImageWholeBetweenBlackBars) {
+    CliProcess view({"view", kRoom, "--display", smallDesktop(_out).string(), "--out", _out.string(), "--save-frames",
+                     "every:" + std::to_string(kSaveEvery), "--save-window"});
+    ASSERT_NO_FATAL_FAILURE(openWindow(view));
+    CsvTable t = waitFor(view, "the first frames", [](const CsvTable& r) { return r.size() > kSaveEvery + 1; });
+    EXPECT_EQ(image(lastSaved(t), "window-monitor").width, 640);
+    EXPECT_FALSE(blackRow(image(lastSaved(t), "window-monitor"), 359));  // no bar at the window's shape
+    xdotool("windowsize " + _window + " 360 360");
+    t = waitFor(view, "a saved frame of the resized window",
+                [&](const CsvTable& r) { return image(lastSaved(r), "window-monitor").width == 360; });
+    const scenes::Image shown = image(lastSaved(t), "window-monitor");
+    ASSERT_EQ(shown.height, 360);
+    // Rows 0-78 and 282-359 are the bars (203 image rows from row 79); one row of rounding.
+    for (int y = 283; y < 360; ++y) EXPECT_TRUE(blackRow(shown, y)) << "row " << y;
+    for (int y = 80; y < 281; y += 20) EXPECT_FALSE(blackRow(shown, y)) << "row " << y;
+    EXPECT_FALSE(blackRow(shown, 180));
+    xdotool("key Escape");
+    const CliResult r = view.finish(std::chrono::seconds(60));
+    EXPECT_EQ(r.exitCode, 0) << r.err;
 }
 
 }  // namespace
