@@ -51,7 +51,9 @@ std::unique_ptr<input::DesktopNavigator> desktopFor(const RunOptions& o, const s
             "--record: expected a tracker to record, got --tracker desktop (the desktop's keys and mouse "
             "are not recorded)");
     input::DesktopNavigatorConfig c;
-    c.speed = input::viewSpeed(glm::length(scene.bounds().size()), start && start->onFloor);
+    // On a floor inside: the start found there, or the scene's walk path (floor points).
+    const bool standingInside = (start && start->onFloor) || d.walkPath.size() >= 2;
+    c.speed = input::viewSpeed(glm::length(scene.bounds().size()), standingInside);
     c.eyeHeight = d.eyeHeight;
     c.navigator = navigatorConfig(o);
     const config::Viewer& v = o.display.viewer;

@@ -17,7 +17,7 @@
 // (display::gl::Context::takeInputEvents) drive an input::DesktopNavigator (mouse look, WASD; the head
 // stays at the display's default head and the world turns). It needs windows. Its speed is
 // input::viewSpeed of the model's bounding-box diagonal (walking pace when it starts standing on
-// a floor inside), and without a walk path it starts
+// a floor inside, or on the scene's walk path), and without a walk path it starts
 // where RunOptions::start says (app/start_pose.h).
 
 #include "app/run_options.h"

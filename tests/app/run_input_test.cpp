@@ -112,5 +112,20 @@ TEST(RunInput, WithoutRealTimeEveryFrameIsOneSixtiethOfASecond) {
     EXPECT_TRUE(fake.sleeps.empty());
 }
 
+// A scene's walk path runs over its floors: the desktop walks it at walking pace, as it does
+// from a start found standing on a floor, not at the building's diagonal / 20.
+TEST(RunInput, AWalkPathIsWalkedAtWalkingPace) {
+    const scenes::Scene scene = hall();  // 56.6 m diagonal: 2.83 m/s in the air
+    RunInput air(desktopOptions(), scene, {}, false);
+    ASSERT_TRUE(air.speed());
+    EXPECT_NEAR(*air.speed(), glm::length(scene.bounds().size()) / 20.0, 1e-9);
+    EXPECT_GT(*air.speed(), input::kWalkingSpeed);
+    scenes::SceneDescription path;
+    path.walkPath = {{0.0, 1.7, 10.0}, {0.0, 1.7, -10.0}};
+    RunInput walk(desktopOptions(), scene, path, false);
+    ASSERT_TRUE(walk.speed());
+    EXPECT_DOUBLE_EQ(*walk.speed(), input::kWalkingSpeed);
+}
+
 }  // namespace
 }  // namespace cavewall::app
