@@ -264,6 +264,8 @@ int runSceneBench(const Args& args) {
     const bool quick = args.has("quick");
     bench::gl::BenchOptions o;
     o.scene = args.positional(0, "SCENE");
+    if (args.positional().size() > 1)
+        throw Error("bench: unexpected word '" + args.positional()[1] + "' (expected one SCENE, then --flags)");
     const config::DisplayConfig display = config::loadDisplayConfig(args.getOr("display", "cave4"));
     // The display's own resolution unless asked otherwise: smaller images flatter every mode.
     o.display = display;
@@ -334,6 +336,9 @@ int runScaleBench(const Args& args) {
             throw Error(std::string("bench --scale: --") + flag +
                         " is a flag of `bench SCENE` only (see cavewall "
                         "bench --help), got it with --scale");
+    if (!args.positional().empty())
+        throw Error("bench --scale: unexpected word '" + args.positional()[0] +
+                    "' (the scale bench walks the plants it generates; a SCENE of yours is `bench SCENE`)");
     bench::gl::ScaleOptions o;
     o.sizes = bench::parseScaleList(*args.get("scale"));
     o.data = args.path("data").value_or("bench-scale-data");

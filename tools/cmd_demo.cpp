@@ -203,6 +203,7 @@ int runDemo(const std::vector<std::string>& words) {
     const Args args(words, {"mono", "occlusion", "no-occlusion"});
     args.expectFlags({"out", "frames", "resolution", "triangles", "lod", "texture-format", "walls", "mono", "occlusion",
                       "no-occlusion", "occlusion-min", "occlusion-min-draws", "occlusion-min-saved"});
+    args.expectNoPositional("demo");
     const std::filesystem::path out = args.getOr("out", "demo-out");
     const std::filesystem::path cache = cacheFolder();
     app::RunOptions o;

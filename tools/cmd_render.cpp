@@ -14,7 +14,7 @@
 namespace cavewall::tools {
 
 const char* const kRenderUsage =
-    "usage: cavewall render --display FILE|PRESET [--scene builtin|FILE] [--view-all] [--eye x,y,z]\n"
+    "usage: cavewall render [MODEL] --display FILE|PRESET [--scene builtin|FILE] [--view-all] [--eye x,y,z]\n"
     "                       [--head-yaw DEG] [--stereo MODE] [--mono] [--window] [--texture-max PX]\n"
     "                       [--texture-budget MB] --out DIR\n"
     "\n"
@@ -23,7 +23,7 @@ const char* const kRenderUsage =
     "per screen and eye (DIR/<screen>.png, or <screen>-left/-right.png for separate stereo) plus\n"
     "DIR/foldout.png, all screens folded out flat around the floor.\n"
     "  --scene   'builtin' (the built-in test room; default), a glTF/GLB file, or a scene.json\n"
-    "            (or a folder holding one)\n"
+    "            (or a folder holding one); MODEL, the first word, is the same as --scene MODEL\n"
     "  --view-all  move the CAVE through the world (no rotation, no scaling) so that the whole\n"
     "            scene is in view on the screen the head faces\n"
     "  --stereo  mono | separate | side-by-side | top-bottom | anaglyph | quad-buffer\n"
@@ -69,6 +69,17 @@ std::unique_ptr<display::gl::Context> openContext(const display::Display& disp, 
                                               disp.config().stereo == config::StereoMode::QuadBuffer);
 }
 
+// The scene: MODEL (the one word) or --scene, default the built-in room.
+std::string sceneSource(const Args& args) {
+    const auto& words = args.positional();
+    if (words.size() > 1)
+        throw Error("render: unexpected word '" + words[1] + "' (expected at most one MODEL, then --flags)");
+    if (!words.empty() && args.has("scene"))
+        throw Error("render: expected the scene once, as MODEL or --scene, got both ('" + words[0] + "' and '" +
+                    *args.get("scene") + "')");
+    return words.empty() ? args.getOr("scene", "builtin") : words[0];
+}
+
 }  // namespace
 
 int runRender(const std::vector<std::string>& words) {
@@ -79,7 +90,7 @@ int runRender(const std::vector<std::string>& words) {
     if (auto stereo = args.get("stereo")) config.stereo = parseStereo(*stereo);
     applyMono(args, config);
     const std::string out = args.require("out");
-    const scenes::Scene scene = loadSceneSource(args.getOr("scene", "builtin"), parseTextureLimits(args));
+    const scenes::Scene scene = loadSceneSource(sceneSource(args), parseTextureLimits(args));
     const display::Display disp(std::move(config));
     display::HeadPose head = disp.defaultHead();
     if (auto eye = args.vec3("eye")) head.position = *eye;

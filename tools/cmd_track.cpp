@@ -125,6 +125,7 @@ int runTrack(const std::vector<std::string>& words) {
     const Args args(words, {"no-filter"});
     args.expectFlags({"tracker", "display", "seconds", "rate", "record", "csv", "min-cutoff", "beta", "angular-beta",
                       "d-cutoff", "no-filter"});
+    args.expectNoPositional("track");
     const std::string spec = args.require("tracker");
     input::TrackerContext context;
     input::PipelineConfig pipelineConfig;

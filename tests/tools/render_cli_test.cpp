@@ -121,6 +121,24 @@ TEST_F(RenderCli, BadWarpFileNamesTheFileAndTheLine) {
     EXPECT_THAT(r.err, HasSubstr((out / "front.warp").string() + ":6: node 3: y: expected a finite number, got 'nan'"));
 }
 
+// The model as the first word, as `view MODEL` takes it: the same frame as --scene MODEL, not
+// the built-in room.
+TEST_F(RenderCli, AModelAsTheFirstWordIsTheScene) {
+    const std::string model =
+        (std::filesystem::path(CAVEWALL_REAL_SCENES) / "BoxInterleaved/BoxInterleaved.glb").string();
+    const auto word = freshFolder("render-cli-model-word");
+    const auto flag = freshFolder("render-cli-model-flag");
+    const CliResult a =
+        runCavewall({"render", model, "--display", testDisplay(), "--view-all", "--out", word.string()});
+    const CliResult b =
+        runCavewall({"render", "--display", testDisplay(), "--scene", model, "--view-all", "--out", flag.string()});
+    ASSERT_EQ(a.exitCode, 0) << a.err;
+    ASSERT_EQ(b.exitCode, 0) << b.err;
+    EXPECT_THAT(a.out, HasSubstr("1 objects, 12 triangles, 1 draw calls in 4 views; CPU "));
+    EXPECT_EQ(scenes::readImage((word / "front.png").string()).rgba,
+              scenes::readImage((flag / "front.png").string()).rgba);
+}
+
 TEST_F(RenderCli, BadInputGivesAClearErrorAndNonZeroExit) {
     const struct {
         const char* name;
@@ -139,6 +157,10 @@ TEST_F(RenderCli, BadInputGivesAClearErrorAndNonZeroExit) {
         {"texture budget",
          {"--texture-budget", "-5"},
          "--texture-budget: expected an integer in [1, 1048576], got '-5'"},
+        {"model and --scene",
+         {"room.glb", "--scene", "hall.glb"},
+         "render: expected the scene once, as MODEL or --scene, got both ('room.glb' and 'hall.glb')"},
+        {"two models", {"room.glb", "hall.glb"}, "render: unexpected word 'hall.glb' (expected at most one MODEL"},
     };
     for (const auto& c : cases) {
         SCOPED_TRACE(c.name);

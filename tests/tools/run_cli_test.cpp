@@ -301,6 +301,25 @@ TEST(RunCli, BadFlagsAndSpecsGiveClearErrors) {
     }
 }
 
+// Commands that take no model refuse a stray word instead of ignoring it (`demo my.glb` would
+// otherwise walk the generated plant and say nothing of the model).
+TEST(RunCli, CommandsWithoutAModelRefuseAStrayWord) {
+    const struct {
+        std::vector<std::string> args;
+        const char* message;
+    } cases[] = {
+        {{"demo", "my.glb"}, "demo: unexpected word 'my.glb' (expected only --flags)"},
+        {{"track", "my.glb", "--tracker", "sim:walk"}, "track: unexpected word 'my.glb' (expected only --flags)"},
+        {{"run", "my.glb", "--tracker", "sim:walk"}, "run: unexpected word 'my.glb' (expected only --flags)"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.args[0]);
+        const CliResult r = runCavewall(c.args);
+        EXPECT_EQ(r.exitCode, 1);
+        EXPECT_THAT(r.err, HasSubstr(c.message));
+    }
+}
+
 TEST(RunCli, LevelsOfDetailReportTheirToleranceErrorAndBudget) {
     // The same walk with full detail, with levels of detail at 1 px, and with a triangle budget
     // of half the 1 px frames' median: frames.csv reports the tolerance used and the largest

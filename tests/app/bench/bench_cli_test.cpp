@@ -457,6 +457,10 @@ TEST(BenchSceneCli, BadInputIsAClearError) {
         {{"bench", "x.json", "--hierarchy", "--clusters"},
          "--hierarchy and --clusters: expected one of them, got both"},
         {{"bench", "--scale", "2M,x"}, "--scale: entry 2 'x': expected a triangle count"},
+        // A stray word is refused, not ignored.
+        {{"bench", "plant.glb", "--scale", "2M"},
+         "bench --scale: unexpected word 'plant.glb' (the scale bench walks the plants it generates"},
+        {{"bench", "x.json", "y.json"}, "bench: unexpected word 'y.json' (expected one SCENE, then --flags)"},
         {{"bench", "--scale", "2M", "--scale-metres", "0"}, "--scale-metres"},
         {{"bench", "--scale", "2M", "--lod", "0"}, "--triangle-budget: needs levels of detail (--lod PX with PX > 0)"},
         {{"bench", "--scale", "2M", "--triangle-budget", "lots"}, "--triangle-budget"},
