@@ -60,7 +60,8 @@ const char* const kWallsUsage =
     "rooms are cut into rectangular cells along their walls. Prints the wall elements, rooms,\n"
     "doorways and exits found per storey.\n"
     "A building of several storeys gets cells for each storey on its own (named \"<storey>/<cell>\",\n"
-    "with the storey's floorY, its walls from its floor to its ceiling, an equal share of\n"
+    "with the storey's floorY, its walls from its floor to its ceiling (a virtual wall under a\n"
+    "void, such as an atrium, to the ceiling of the storey above), an equal share of\n"
     "--texture-budget each) and one walk path through every storey, up the stairs found.\n"
     "--keep-paths keeps the input scene's walkPath and wallPath instead of the proposal's loop\n"
     "(so that `run` and `bench` walk the same path on both), each point checked to lie in a\n"
@@ -105,6 +106,8 @@ void printStoreys(const walls::AutoWallsResult& result) {
             "%zu turns\n",
             s.from, s.from + 1, s.lo.x, s.hi.x, s.lo.y, s.hi.y, s.bottom.x, s.bottom.y, s.top.x, s.top.y,
             s.path.size() - 2);
+    if (n > 1)
+        std::printf("virtual walls under a void, raised to the ceiling of the storey above: %d\n", result.wallsRaised);
 }
 
 // What the planning limit and the walk cost's eye cap left out (walls/auto_walls_limits.h).

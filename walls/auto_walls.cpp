@@ -9,6 +9,7 @@
 #include "walls/room_cells.h"
 #include "walls/room_tour.h"
 #include "walls/storeys.h"
+#include "walls/void_walls.h"
 
 #include <algorithm>
 #include <cmath>
@@ -282,6 +283,9 @@ void proposeStoreys(AutoWallsResult& result, const scenes::Scene& scene, const S
         plans.push_back(rooms.plan.rooms.empty() ? StoreyRooms{} : std::move(rooms));
     }
     result.description = stackStoreys(chosen, found, base.eyeHeight, roomsRoute(plans, chosen, base.eyeHeight));
+    std::vector<StoreySpan> spans;
+    for (const Storey& s : found.storeys) spans.push_back({s.floorY, s.ceilingY});
+    result.wallsRaised = raiseWallsUnderVoids(result.description, scene, spans);
     scenes::validateSceneDescription(result.description, "auto walls (storeys)");
     const AutoWallsStorey& lowest = result.storeys.front();
     result.floorY = lowest.storey.floorY;

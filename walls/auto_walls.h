@@ -156,6 +156,8 @@ struct AutoWallsResult {
     // chosen above are the lowest storey's.
     std::vector<AutoWallsStorey> storeys;
     std::vector<Stair> stairs;  // between the storeys (walls/storeys.h)
+    // Virtual walls under a void raised to the ceiling of the storey above (walls/void_walls.h).
+    int wallsRaised = 0;
     // The same figures for the input's own cells and walls (hand-placed), when it has walls;
     // nx = nz = 0. A cell's triangles are counted over its region's bounding rectangle.
     std::optional<AutoWallsCandidate> given;
