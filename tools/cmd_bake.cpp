@@ -65,7 +65,8 @@ std::string formatSeconds(double s) {
     return out.str();
 }
 
-double megabytes(std::uint64_t bytes) { return double(bytes) / (1024.0 * 1024.0); }
+// MB of 10^6 bytes, as the bench and the model's sizes count them.
+double megabytes(std::uint64_t bytes) { return double(bytes) / 1e6; }
 
 // Progress on stderr: a redrawn bar on a terminal, at most a line a second otherwise.
 class ProgressPrinter {

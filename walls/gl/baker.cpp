@@ -156,6 +156,9 @@ BakeResult Bake::run() {
     for (const walls::BakedTexture& t : _result.manifest.textures)
         if (keys.insert(walls::textureKeyOf(t.file).value_or(0)).second || t.file.empty())
             _result.totalBytes += t.bytes + t.depthBytes;
+    std::error_code error;  // the folder's own index counts too: it is on the disk beside them
+    const std::uintmax_t manifestBytes = std::filesystem::file_size(_result.folder / "manifest.json", error);
+    if (!error) _result.totalBytes += manifestBytes;
     _result.seconds = std::chrono::duration<double>(Clock::now() - _start).count();  // progress reported done already
     return std::move(_result);
 }

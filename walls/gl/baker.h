@@ -137,7 +137,8 @@ struct BakeResult {
     double seconds = 0.0;
     std::uint64_t bytesWritten = 0;  // of files baked or linked by this bake
     std::uint64_t totalBytes = 0;    // of all files in the manifest (a texture key's once: its
-                                     // textures share one file through hard links)
+                                     // textures share one file through hard links) and of the
+                                     // manifest itself: what the folder holds on disk
     BakeTimes times;
     std::uint64_t trianglesDrawn = 0;  // summed over the textures rendered by this bake
     double maxLodErrorTexels = 0.0;    // the largest level-of-detail error drawn, texels
