@@ -17,6 +17,14 @@ std::string formatNumber(double value) {
     return buffer;
 }
 
+std::string formatFixed(double value, int decimals) {
+    if (std::isnan(value)) return "nan";
+    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+    return buffer;
+}
+
 std::string describeJson(const nlohmann::json& value) {
     switch (value.type()) {
         case nlohmann::json::value_t::null: return "null";

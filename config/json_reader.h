@@ -105,5 +105,8 @@ std::string describeJson(const nlohmann::json& value);
 // Formats a double for messages: shortest form that reads back the same, at most 6 significant
 // digits for readability ("0.064", "1e-09", "inf").
 std::string formatNumber(double value);
+// Formats a double with `decimals` digits after the point ("59.6", "0.001"); "inf", "-inf" and
+// "nan" for those.
+std::string formatFixed(double value, int decimals);
 
 }  // namespace cavewall::config

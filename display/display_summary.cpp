@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 #include <utility>
 
@@ -16,12 +15,6 @@ namespace cavewall::display {
 namespace {
 
 using config::formatNumber;
-
-std::string fixed(double v, int decimals) {
-    char buffer[48];
-    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, v);
-    return buffer;
-}
 
 std::string vec(const glm::dvec3& v) {
     // Rounded to 0.1 mm, and -0 printed as 0: a normal reads [0, 0, 1], not [-0, 0, 1].
@@ -92,9 +85,9 @@ void printScreens(std::ostream& out, const std::vector<ScreenFacts>& screens) {
         << pad("normal (front side)", 24) << "  pixels/degree\n";
     for (const ScreenFacts& s : screens)
         out << "  " << pad(s.name, nameWidth) << "  "
-            << pad(fixed(s.basis.width, 2) + " x " + fixed(s.basis.height, 2), 13) << "  "
+            << pad(config::formatFixed(s.basis.width, 2) + " x " + config::formatFixed(s.basis.height, 2), 13) << "  "
             << pad(std::to_string(s.resolution.x) + " x " + std::to_string(s.resolution.y), 11) << "  "
-            << pad(vec(s.basis.normal), 24) << "  " << fixed(s.pixelsPerDegree, 1) << "\n";
+            << pad(vec(s.basis.normal), 24) << "  " << config::formatFixed(s.pixelsPerDegree, 1) << "\n";
 }
 
 void printViewer(std::ostream& out, const config::DisplayConfig& c) {
@@ -187,7 +180,7 @@ void printDisplaySummary(std::ostream& out, const config::DisplayConfig& c, cons
             << vec(e.to) << "\n";
     for (const ScreenOverlap& o : screenOverlaps(screens))
         out << "overlap: " << screens[o.a].name << " and " << screens[o.b].name << " cover the same "
-            << fixed(o.area, 3) << " m² (expected screens side by side, not on top of each other)\n";
+            << config::formatFixed(o.area, 3) << " m² (expected screens side by side, not on top of each other)\n";
 }
 
 }  // namespace cavewall::display

@@ -7,7 +7,6 @@
 #include "tools/commands.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -52,23 +51,18 @@ void checkOutput(const std::filesystem::path& out, const std::vector<std::filesy
                         "' (expected a new file; the input stays as it is)");
 }
 
-std::string fixed(double value, int decimals) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.*f", decimals, value);
-    return text;
-}
-
 void printFit(const input::PairsFile& file, const input::CalibrationFit& fit) {
     std::cout << "pair  residual_mm  label\n";
     for (std::size_t i = 0; i < fit.residuals.size(); ++i)
-        std::cout << i << std::string(i < 10 ? 5 : 4, ' ') << fixed(fit.residuals[i] * 1000.0, 2) << "        "
-                  << file.labels[i] << "\n";
+        std::cout << i << std::string(i < 10 ? 5 : 4, ' ') << config::formatFixed(fit.residuals[i] * 1000.0, 2)
+                  << "        " << file.labels[i] << "\n";
     const glm::dvec3 ypr = glm::degrees(input::yawPitchRollOf(fit.rotation));
     const glm::dvec3 t(fit.caveFromTracker[3]);
-    std::cout << "rms_mm " << fixed(fit.rms * 1000.0, 2) << "\nmax_mm " << fixed(fit.max * 1000.0, 2) << "\nyaw_deg "
-              << fixed(ypr.x, 3) << "\npitch_deg " << fixed(ypr.y, 3) << "\nroll_deg " << fixed(ypr.z, 3)
-              << "\ntranslation_m " << fixed(t.x, 4) << " " << fixed(t.y, 4) << " " << fixed(t.z, 4) << "\nscale "
-              << fixed(fit.scale, 6) << "\n";
+    std::cout << "rms_mm " << config::formatFixed(fit.rms * 1000.0, 2) << "\nmax_mm "
+              << config::formatFixed(fit.max * 1000.0, 2) << "\nyaw_deg " << config::formatFixed(ypr.x, 3)
+              << "\npitch_deg " << config::formatFixed(ypr.y, 3) << "\nroll_deg " << config::formatFixed(ypr.z, 3)
+              << "\ntranslation_m " << config::formatFixed(t.x, 4) << " " << config::formatFixed(t.y, 4) << " "
+              << config::formatFixed(t.z, 4) << "\nscale " << config::formatFixed(fit.scale, 6) << "\n";
 }
 
 // The box the display's screens enclose (cave frame): the volume the calibration serves.
@@ -87,11 +81,11 @@ input::Box screensBox(const config::DisplayConfig& c) {
 void printExpectedError(const std::vector<glm::dvec3>& cave, const input::CalibrationFit& fit, bool fitScale,
                         const input::Box& box) {
     const double sigma = input::noiseFromResiduals(fit, fitScale);
-    std::cout << "noise_mm " << fixed(sigma * 1000.0, 2) << "\n";
+    std::cout << "noise_mm " << config::formatFixed(sigma * 1000.0, 2) << "\n";
     if (fitScale) return;
     const input::VolumeError e = input::predictedRigidError(cave, sigma, box);
-    std::cout << "expected_error_rms_mm " << fixed(e.rms * 1000.0, 2) << "\nexpected_error_corner_mm "
-              << fixed(e.worstCorner * 1000.0, 2) << "\n";
+    std::cout << "expected_error_rms_mm " << config::formatFixed(e.rms * 1000.0, 2) << "\nexpected_error_corner_mm "
+              << config::formatFixed(e.worstCorner * 1000.0, 2) << "\n";
 }
 
 // Places each tracked screen's corners by the fit, squared into a rectangle, and prints how far
@@ -109,10 +103,13 @@ void placeScreens(const input::PairsFile& file, const input::CalibrationFit& fit
         }
         const input::ScreenCorners corners = input::fitScreenCorners(fit.caveFromTracker, tracked);
         std::cout << "screen " << tracked.name << ": lowerLeft moved "
-                  << fixed(glm::distance(screen->lowerLeft, corners.lowerLeft) * 1000.0, 1) << " mm, lowerRight "
-                  << fixed(glm::distance(screen->lowerRight, corners.lowerRight) * 1000.0, 1) << " mm, upperLeft "
-                  << fixed(glm::distance(screen->upperLeft, corners.upperLeft) * 1000.0, 1)
-                  << " mm; measured corner angle " << fixed(90.0 + corners.squaredByDeg, 3) << " deg, squared to 90\n";
+                  << config::formatFixed(glm::distance(screen->lowerLeft, corners.lowerLeft) * 1000.0, 1)
+                  << " mm, lowerRight "
+                  << config::formatFixed(glm::distance(screen->lowerRight, corners.lowerRight) * 1000.0, 1)
+                  << " mm, upperLeft "
+                  << config::formatFixed(glm::distance(screen->upperLeft, corners.upperLeft) * 1000.0, 1)
+                  << " mm; measured corner angle " << config::formatFixed(90.0 + corners.squaredByDeg, 3)
+                  << " deg, squared to 90\n";
         screen->lowerLeft = corners.lowerLeft;
         screen->lowerRight = corners.lowerRight;
         screen->upperLeft = corners.upperLeft;

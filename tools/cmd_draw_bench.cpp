@@ -1,11 +1,11 @@
 #include "app/bench/gl/draw_bench.h"
 #include "config/error.h"
+#include "config/json_reader.h"
 #include "scenes/file_write.h"
 #include "scenes/loader.h"
 #include "tools/args.h"
 #include "tools/commands.h"
 
-#include <cstdio>
 #include <iostream>
 #include <sstream>
 
@@ -36,12 +36,6 @@ const char* const kDrawBenchUsage =
 
 namespace {
 
-std::string fixed(double v, int decimals) {
-    char text[64];
-    std::snprintf(text, sizeof(text), "%.*f", decimals, v);
-    return text;
-}
-
 std::string csvText(const bench::gl::DrawBenchResult& r) {
     std::string csv =
         "culling,lighting,triangles,median_ms,p90_ms,cpu_median_ms,mtriangles_per_s,mpixels_per_s,vertex_bytes_per_"
@@ -49,31 +43,34 @@ std::string csvText(const bench::gl::DrawBenchResult& r) {
         "index_bytes_per_triangle\n";
     for (const bench::gl::DrawBenchRow& row : r.rows)
         csv += std::string(row.cullBackFaces ? "on" : "off") + "," + (row.perPixelOnly ? "per-pixel" : "default") +
-               "," + std::to_string(row.trianglesSubmitted) + "," + fixed(row.timing.medianMs, 3) + "," +
-               fixed(row.timing.p90Ms, 3) + "," + fixed(row.timing.cpuMedianMs, 3) + "," +
-               fixed(row.timing.mtrianglesPerS, 2) + "," + fixed(row.timing.mpixelsPerS, 2) + "," +
-               fixed(r.vertexBytesPerTriangle, 2) + "," + fixed(r.indexBytesPerTriangle, 2) + "\n";
+               "," + std::to_string(row.trianglesSubmitted) + "," + config::formatFixed(row.timing.medianMs, 3) + "," +
+               config::formatFixed(row.timing.p90Ms, 3) + "," + config::formatFixed(row.timing.cpuMedianMs, 3) + "," +
+               config::formatFixed(row.timing.mtrianglesPerS, 2) + "," +
+               config::formatFixed(row.timing.mpixelsPerS, 2) + "," + config::formatFixed(r.vertexBytesPerTriangle, 2) +
+               "," + config::formatFixed(r.indexBytesPerTriangle, 2) + "\n";
     return csv;
 }
 
 void print(const bench::gl::DrawBenchResult& r, const bench::gl::DrawBenchOptions& o) {
     const glm::dvec3 e = r.view.eye;
     std::cout << "draw-bench: " << r.triangles << " triangles, " << o.resolution << " x " << o.resolution << ", "
-              << fixed(o.fovDeg, 3) << " deg vertical field of view, eye (" << fixed(e.x, 3) << ", " << fixed(e.y, 3)
-              << ", " << fixed(e.z, 3) << ") m, " << fixed(r.view.distance, 3) << " m from the bounding sphere's centre"
-              << " (radius " << fixed(r.view.radius, 3) << " m)\n"
+              << config::formatFixed(o.fovDeg, 3) << " deg vertical field of view, eye (" << config::formatFixed(e.x, 3)
+              << ", " << config::formatFixed(e.y, 3) << ", " << config::formatFixed(e.z, 3) << ") m, "
+              << config::formatFixed(r.view.distance, 3) << " m from the bounding sphere's centre"
+              << " (radius " << config::formatFixed(r.view.radius, 3) << " m)\n"
               << "GL_RENDERER: " << r.glRenderer << "\n"
-              << "GPU memory per triangle: " << fixed(r.vertexBytesPerTriangle, 2) << " vertex bytes, "
-              << fixed(r.indexBytesPerTriangle, 2) << " index bytes\n\n"
+              << "GPU memory per triangle: " << config::formatFixed(r.vertexBytesPerTriangle, 2) << " vertex bytes, "
+              << config::formatFixed(r.indexBytesPerTriangle, 2) << " index bytes\n\n"
               << "| back faces | lighting | triangles submitted | median ms | p90 ms | CPU ms (median) | Mtriangles/s "
                  "| Mpixels/s |\n"
               << "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const bench::gl::DrawBenchRow& row : r.rows)
         std::cout << "| " << (row.cullBackFaces ? "culled" : "drawn (culling off)") << " | "
                   << (row.perPixelOnly ? "per pixel only" : "default") << " | " << row.trianglesSubmitted << " | "
-                  << fixed(row.timing.medianMs, 2) << " | " << fixed(row.timing.p90Ms, 2) << " | "
-                  << fixed(row.timing.cpuMedianMs, 2) << " | " << fixed(row.timing.mtrianglesPerS, 1) << " | "
-                  << fixed(row.timing.mpixelsPerS, 1) << " |\n";
+                  << config::formatFixed(row.timing.medianMs, 2) << " | " << config::formatFixed(row.timing.p90Ms, 2)
+                  << " | " << config::formatFixed(row.timing.cpuMedianMs, 2) << " | "
+                  << config::formatFixed(row.timing.mtrianglesPerS, 1) << " | "
+                  << config::formatFixed(row.timing.mpixelsPerS, 1) << " |\n";
 }
 
 }  // namespace

@@ -22,15 +22,7 @@ long saveEvery(const std::string& spec) {
     throw Error("--save-frames: expected none, all or every:K with an integer K >= 1, got '" + spec + "'");
 }
 
-// `v` with `digits` decimals: seconds to the millisecond, frame times to 0.1 ms, errors to
-// 0.01 degree and 0.1 px.
-std::string fixed(double v, int digits) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.*f", digits, v);
-    return text;
-}
-
-std::string seconds(double s) { return fixed(s, 3); }
+std::string seconds(double s) { return config::formatFixed(s, 3); }
 
 std::string geometryLine(std::string_view command, const app::RunSummary& s) {
     char text[256];
@@ -212,10 +204,10 @@ int reportSession(std::string_view command, const app::RunOptions& o, const app:
               << (!s.walls         ? ", geometry only"
                   : o.wallTextures ? ", walls"
                                    : ", the control (the walls' cells, no textures)")
-              << "; median frame " << fixed(display::median(s.frameMs), 1) << " ms, worst " << fixed(worst, 1)
-              << " ms (after the first " << fixed(worstAfterFirst, 1) << " ms); worst error "
-              << fixed(s.worstErrorDeg, 2) << " deg (" << fixed(s.worstErrorPx, 1) << " px); page-ins " << s.pageIns
-              << ", misses " << s.misses
+              << "; median frame " << config::formatFixed(display::median(s.frameMs), 1) << " ms, worst "
+              << config::formatFixed(worst, 1) << " ms (after the first " << config::formatFixed(worstAfterFirst, 1)
+              << " ms); worst error " << config::formatFixed(s.worstErrorDeg, 2) << " deg ("
+              << config::formatFixed(s.worstErrorPx, 1) << " px); page-ins " << s.pageIns << ", misses " << s.misses
               << (s.checkFailures > 0
                       ? ", " + std::to_string(s.checkFailures) + " textures refused by the content check"
                       : std::string())

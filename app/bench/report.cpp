@@ -2,6 +2,7 @@
 #include "app/bench/report_text.h"
 
 #include "config/error.h"
+#include "config/json_reader.h"
 #include "scenes/file_write.h"
 #include "scenes/image_io.h"
 #include "walls/depth_wall.h"
@@ -137,15 +138,8 @@ std::string modeLabel(const ModeResult& m) {
     return label;
 }
 
-std::string fixed(double v, int decimals) {
-    if (std::isinf(v)) return v > 0.0 ? "inf" : "-inf";  // e.g. the PSNR of identical images
-    if (std::isnan(v)) return "nan";
-    std::ostringstream s;
-    s.setf(std::ios::fixed);
-    s.precision(decimals);
-    s << v;
-    return s.str();
-}
+// "inf" for the PSNR of identical images.
+std::string fixed(double v, int decimals) { return config::formatFixed(v, decimals); }
 
 // Column names and labels spell the FLIP threshold out.
 static_assert(kFlipThreshold == 0.1, "rename flip_share_over_0.1 and the '% > 0.1' labels");

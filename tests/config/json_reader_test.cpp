@@ -3,6 +3,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 namespace cavewall::config {
 namespace {
 
@@ -40,4 +43,18 @@ TEST(JsonReader, LongStringsAreSummarised) {
 }
 
 }  // namespace
+// Numbers for messages and reports: the shortest form, or a fixed number of decimals.
+TEST(JsonReader, FormatsNumbersShortAndFixed) {
+    EXPECT_EQ(formatNumber(0.064), "0.064");
+    EXPECT_EQ(formatNumber(1e-9), "1e-09");
+    EXPECT_EQ(formatFixed(59.5714, 1), "59.6");
+    EXPECT_EQ(formatFixed(7.19701, 2), "7.20");
+    EXPECT_EQ(formatFixed(3.0, 0), "3");
+    EXPECT_EQ(formatFixed(-0.0004, 3), "-0.000");
+    EXPECT_EQ(formatFixed(std::numeric_limits<double>::infinity(), 1), "inf");
+    EXPECT_EQ(formatFixed(-std::numeric_limits<double>::infinity(), 1), "-inf");
+    EXPECT_EQ(formatFixed(std::nan(""), 2), "nan");
+    EXPECT_EQ(formatFixed(-std::nan(""), 2), "nan");  // not "-nan"
+}
+
 }  // namespace cavewall::config
