@@ -283,9 +283,7 @@ void proposeStoreys(AutoWallsResult& result, const scenes::Scene& scene, const S
         plans.push_back(rooms.plan.rooms.empty() ? StoreyRooms{} : std::move(rooms));
     }
     result.description = stackStoreys(chosen, found, base.eyeHeight, roomsRoute(plans, chosen, base.eyeHeight));
-    std::vector<StoreySpan> spans;
-    for (const Storey& s : found.storeys) spans.push_back({s.floorY, s.ceilingY});
-    result.wallsRaised = raiseWallsUnderVoids(result.description, scene, spans);
+    result.wallsRaised = raiseWallsUnderVoids(result.description, scene, found.storeys);
     scenes::validateSceneDescription(result.description, "auto walls (storeys)");
     const AutoWallsStorey& lowest = result.storeys.front();
     result.floorY = lowest.storey.floorY;

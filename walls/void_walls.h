@@ -7,6 +7,7 @@
 
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
+#include "walls/storeys.h"
 
 #include <vector>
 
@@ -14,17 +15,12 @@ namespace cavewall::walls {
 
 inline constexpr double kVoidWallReach = 1.0;  // metres beside a wall's footprint a void raises it
 
-// A storey's floor and ceiling, world y in metres (walls/storeys.h's Storey, bottom to top).
-struct StoreySpan {
-    double floorY = 0.0, ceilingY = 0.0;
-};
-
 // Raises to storeys[i + 1].ceilingY every virtual wall (not a portal: a doorway keeps its
-// lintel) standing on storey i's floor (its bottom within 0.5 m of it) below the top storey
-// whose cells' voids (scenes::cellVoids from their floor to the floor of the storey above: the
-// lower storey's slab there, the upper one's not, a ceiling or roof over it) have an open plan
-// sample within kVoidWallReach of its footprint. Returns how many were raised.
+// lintel) standing on storey i (storeyAt of its bottom; `storeys` bottom to top) below the top
+// storey whose cells' voids (scenes::cellVoids from their floor to the floor of the storey
+// above: the lower storey's slab there, the upper one's not, a ceiling or roof over it) have an
+// open plan sample within kVoidWallReach of its footprint. Returns how many were raised.
 int raiseWallsUnderVoids(scenes::SceneDescription& description, const scenes::Scene& scene,
-                         const std::vector<StoreySpan>& storeys);
+                         const std::vector<Storey>& storeys);
 
 }  // namespace cavewall::walls

@@ -12,8 +12,7 @@ namespace {
 
 void addBox(scenes::Scene& s, glm::dvec3 lo, glm::dvec3 hi, const char* name) {
     s.meshes.push_back(scenes::makeBox(glm::vec3(hi - lo), glm::vec4(0.5f, 0.5f, 0.5f, 1.0f)));
-    scenes::addObject(s, static_cast<int>(s.meshes.size()) - 1, glm::translate(glm::dmat4(1.0), (lo + hi) / 2.0),
-                      name);
+    scenes::addObject(s, static_cast<int>(s.meshes.size()) - 1, glm::translate(glm::dmat4(1.0), (lo + hi) / 2.0), name);
 }
 
 scenes::Cell cell(const char* name, double x0, double x1, double floorY) {
@@ -41,7 +40,7 @@ TEST(VoidWalls, AWallUnderTheAtriumReachesTheUpperCeilingAndTheOthersKeepTheirs)
                wall("B|D", 5.0, 0.0, 3.2, 1, 2),   // 5 m from it, under the upper floor
                wall("A|B door", -5.0, 0.0, 2.1, 0, 1, scenes::WallKind::Portal),
                wall("C upper", 10.0, 3.3, 6.5, 3, -1)};
-    const std::vector<StoreySpan> storeys = {{0.0, 3.2}, {3.3, 6.5}};
+    const std::vector<Storey> storeys = {{.floorY = 0.0, .ceilingY = 3.2}, {.floorY = 3.3, .ceilingY = 6.5}};
     EXPECT_EQ(raiseWallsUnderVoids(d, scene, storeys), 1);
     EXPECT_DOUBLE_EQ(d.walls[0].upperLeft.y, 6.5);  // the atrium's: to the upper ceiling
     EXPECT_DOUBLE_EQ(d.walls[1].upperLeft.y, 3.2);  // under the upper floor: its own ceiling
@@ -57,7 +56,7 @@ TEST(VoidWalls, AWallUnderTheAtriumReachesTheUpperCeilingAndTheOthersKeepTheirs)
     EXPECT_EQ(raiseWallsUnderVoids(d, closed, storeys), 0);
     EXPECT_DOUBLE_EQ(d.walls[0].upperLeft.y, 3.2);
     // One storey: nothing to reach.
-    EXPECT_EQ(raiseWallsUnderVoids(d, scene, {{0.0, 3.2}}), 0);
+    EXPECT_EQ(raiseWallsUnderVoids(d, scene, {{.floorY = 0.0, .ceilingY = 3.2}}), 0);
 }
 
 }  // namespace
