@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
-#include <thread>
 #include <utility>
 
 namespace cavewall::app {
@@ -120,7 +119,7 @@ RunInput::RunInput(const RunOptions& o, const scenes::Scene& scene, const scenes
       _navigator(navigatorConfig(o), &_query),
       _mode(navMode(o.nav, d, _desktop != nullptr || (o.window == WindowMode::Window && o.frames == 0))),
       _replay(dynamic_cast<input::ReplaySource*>(_tracker.get()) != nullptr), _realTime(realTime),
-      _clock(std::move(clock)), _clockStart(_clock.now()) {
+      _clock(std::move(clock)) {
     placeAtPathStart(_navigator, d);
     placeTracked(_navigator, o, _start);
     if (_desktop) placeDesktop(*_desktop, _start, d);

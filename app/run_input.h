@@ -108,8 +108,8 @@ private:
     input::WandState _lastWand;
     input::KeyboardWand _keyboard;  // the windows' keys as a wand, with a tracker
     LiveClock _clock;
-    LiveClock::TimePoint _clockStart;  // a live session's frame 0
-    double _lastTime = 0.0;            // the last frame's t
+    LiveClock::TimePoint _clockStart{};  // a live session's frame 0 (set by it)
+    double _lastTime = 0.0;              // the last frame's t
 };
 
 }  // namespace cavewall::app
