@@ -52,7 +52,7 @@ void writeDepthFile(const std::filesystem::path& file, const DepthImage& image) 
         if (!out) throw Error(file.string() + ": cannot write a depth file (" + OIIO::geterror() + ")");
         OIIO::ImageSpec spec(image.width, image.height, 1, OIIO::TypeDesc::UINT16);
         spec.channelnames = {"Z"};
-        spec.attribute("compression", "zip");
+        spec.attribute("compression", "zip:9");  // 4 % smaller than zlib's default on the clinic
         spec.attribute("ImageDescription",
                        "cavewall depth wall: q = 1 + 65534 / (1 + metres behind the wall plane), 0 = nothing");
         spec.attribute("DateTime", "2000:01:01 00:00:00");  // same depths, same bytes

@@ -8,23 +8,27 @@
 #include <squish.h>
 #include <stb_dxt.h>
 #include <zlib.h>
+#include <zstd.h>
 
 #include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <memory>
 
 namespace cavewall::walls {
 
 namespace {
 
 constexpr char kMagic[4] = {'C', 'W', 'B', 'C'};
-constexpr std::uint32_t kVersion = 1;
-constexpr std::uint32_t kHeaderBytes = 24;  // magic, version, format, width, height, levels
+constexpr std::uint32_t kVersion = 2;         // written: every level in one zstd frame
+constexpr std::uint32_t kDeflateVersion = 1;  // read: each level deflated on its own
+constexpr std::uint32_t kHeaderBytes = 24;    // magic, version, format, width, height, levels
 constexpr std::uint32_t kMaxSide = 16384;
-// zlib's default: on the plant's BC1 files 1.3 % larger than level 9 and about 5 ms less per
-// 512-texel texture (cavewall_bench_texture_blocks), a tenth of a cold bake's CPU time.
-constexpr int kDeflateLevel = Z_DEFAULT_COMPRESSION;
+// The clinic's cold bake (4,097 BC1 textures of up to 512 texels, 2 cores, llvmpipe): colour
+// files 9 % smaller than levels deflated one by one at zlib's default, the bake 69 s against
+// 56 s (level 17: 13 % smaller, 78 s); zstd decodes faster than zlib inflates.
+constexpr int kZstdLevel = 15;
 
 // Byte widths of a block's fields, stored field by field (the header's "rearranged").
 std::vector<int> blockFields(TextureFormat format) {
@@ -141,6 +145,22 @@ std::vector<std::uint8_t> joinFields(const std::vector<std::uint8_t>& fields, Te
     return out;
 }
 
+// One zstd frame of `fields` at kZstdLevel with its content size and a checksum of it (so a
+// damaged file is an error, not other blocks).
+std::string zstdFrame(const std::vector<std::uint8_t>& fields, const std::filesystem::path& file) {
+    const std::unique_ptr<ZSTD_CCtx, decltype(&ZSTD_freeCCtx)> context(ZSTD_createCCtx(), &ZSTD_freeCCtx);
+    if (!context) throw Error(file.string() + ": cannot compress the MIP levels (no memory for zstd)");
+    std::string packed(ZSTD_compressBound(fields.size()), '\0');
+    std::size_t size = ZSTD_CCtx_setParameter(context.get(), ZSTD_c_compressionLevel, kZstdLevel);
+    if (!ZSTD_isError(size)) size = ZSTD_CCtx_setParameter(context.get(), ZSTD_c_checksumFlag, 1);
+    if (!ZSTD_isError(size))
+        size = ZSTD_compress2(context.get(), packed.data(), packed.size(), fields.data(), fields.size());
+    if (ZSTD_isError(size))
+        throw Error(file.string() + ": cannot compress the MIP levels (" + ZSTD_getErrorName(size) + ")");
+    packed.resize(size);
+    return packed;
+}
+
 void putU32(std::string& out, std::uint32_t v) {
     for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
 }
@@ -166,6 +186,8 @@ std::string readAll(const std::filesystem::path& file) {
 // Deflate's largest expansion is about 1032:1 (258-byte matches of 2 bits at best): a level
 // whose stored size cannot hold its blocks is refused before anything is allocated for them.
 constexpr std::size_t kMaxInflation = 1100;
+// A zstd block of up to 128 KiB repeating one byte is stored in 4 bytes (an RLE block).
+constexpr std::size_t kMaxZstdInflation = 32768;
 
 }  // namespace
 
@@ -283,40 +305,45 @@ void writeBlockFile(const std::filesystem::path& file, const TextureLevels& leve
                         std::to_string(l[i].width) + " x " + std::to_string(l[i].height) + " in " +
                         std::to_string(l[i].blocks.size()));
     }
-    std::vector<std::string> packed;
+    std::vector<std::uint8_t> fields;
     for (const BlockLevel& level : l) {
-        const std::vector<std::uint8_t> fields = splitFields(level.blocks, levels.format);
-        uLongf size = compressBound(fields.size());
-        std::string out(size, '\0');
-        if (compress2(reinterpret_cast<Bytef*>(out.data()), &size, fields.data(), fields.size(), kDeflateLevel) != Z_OK)
-            throw Error(file.string() + ": cannot deflate a MIP level");
-        out.resize(size);
-        packed.push_back(std::move(out));
+        const std::vector<std::uint8_t> f = splitFields(level.blocks, levels.format);
+        fields.insert(fields.end(), f.begin(), f.end());
     }
+    std::string packed = zstdFrame(fields, file);
     std::string bytes(kMagic, 4);
     putU32(bytes, kVersion);
     putU32(bytes, formatCode(levels.format));
     putU32(bytes, std::uint32_t(l[0].width));
     putU32(bytes, std::uint32_t(l[0].height));
     putU32(bytes, std::uint32_t(l.size()));
-    for (const std::string& p : packed) putU32(bytes, std::uint32_t(p.size()));
-    for (const std::string& p : packed) bytes += p;
+    putU32(bytes, std::uint32_t(packed.size()));
+    bytes += packed;
     scenes::writeBytesAtomically(file, bytes);
 }
 
 TextureLevels readBlockFile(const std::filesystem::path& file) { return blocksFromBytes(readAll(file), file.string()); }
 
-TextureLevels blocksFromBytes(std::string_view view, const std::string& file) {
-    const std::string bytes(view);
+namespace {
+
+struct BlockHeader {
+    std::uint32_t version = 0;
+    TextureFormat format = TextureFormat::Bc1;
+    int width = 0, height = 0, levels = 0;
+};
+
+BlockHeader readHeader(const std::string& bytes, const std::string& file) {
     if (bytes.size() < kHeaderBytes)
         bad(file, "header",
             "expected at least " + std::to_string(kHeaderBytes) + " bytes, got " + std::to_string(bytes.size()));
     if (bytes.compare(0, 4, kMagic, 4) != 0) bad(file, "header", "expected the magic 'CWBC', got other bytes");
-    if (const std::uint32_t v = getU32(bytes, 4); v != kVersion)
-        bad(file, "header", "expected version 1, got " + std::to_string(v));
+    BlockHeader h;
+    h.version = getU32(bytes, 4);
+    if (h.version != kVersion && h.version != kDeflateVersion)
+        bad(file, "header", "expected version 1 or 2, got " + std::to_string(h.version));
     const std::uint32_t code = getU32(bytes, 8);
     if (code != 1 && code != 3) bad(file, "header", "expected format 1 (bc1) or 3 (bc3), got " + std::to_string(code));
-    const TextureFormat format = code == 1 ? TextureFormat::Bc1 : TextureFormat::Bc3;
+    h.format = code == 1 ? TextureFormat::Bc1 : TextureFormat::Bc3;
     const std::uint32_t width = getU32(bytes, 12), height = getU32(bytes, 16), count = getU32(bytes, 20);
     if (width < 1 || width > kMaxSide || height < 1 || height > kMaxSide)
         bad(file, "header",
@@ -324,20 +351,28 @@ TextureLevels blocksFromBytes(std::string_view view, const std::string& file) {
     const int chain = mipCount(int(width), int(height));
     if (count < 1 || count > std::uint32_t(chain))
         bad(file, "header", "expected 1 to " + std::to_string(chain) + " MIP levels, got " + std::to_string(count));
-    std::size_t at = kHeaderBytes + 4ull * count;
+    h.width = int(width);
+    h.height = int(height);
+    h.levels = int(count);
+    return h;
+}
+
+// Version 1: a stored size per level, then each level deflated on its own.
+TextureLevels readDeflatedLevels(const std::string& bytes, const BlockHeader& header, const std::string& file) {
+    std::size_t at = kHeaderBytes + 4ull * header.levels;
     if (bytes.size() < at)
         bad(file, "header",
             "expected " + std::to_string(at) + " bytes of level sizes, got a file of " + std::to_string(bytes.size()));
-    TextureLevels out(format, {});
-    int w = int(width), h = int(height);
-    for (std::uint32_t i = 0; i < count; ++i) {
+    TextureLevels out(header.format, {});
+    int w = header.width, h = header.height;
+    for (int i = 0; i < header.levels; ++i) {
         const std::string where = "MIP level " + std::to_string(i);
         const std::size_t stored = getU32(bytes, kHeaderBytes + 4ull * i);
         if (bytes.size() - at < stored)
             bad(file, where,
                 "expected " + std::to_string(stored) + " stored bytes, got " + std::to_string(bytes.size() - at) +
                     " (the file is truncated)");
-        const std::size_t expected = levelBytes(format, w, h);
+        const std::size_t expected = levelBytes(header.format, w, h);
         if (expected > stored * kMaxInflation + 64)
             bad(file, where,
                 "expected " + std::to_string(stored) + " deflated bytes to hold " + std::to_string(expected) +
@@ -348,9 +383,9 @@ TextureLevels blocksFromBytes(std::string_view view, const std::string& file) {
         if (z != Z_OK || size != expected)
             bad(file, where,
                 "expected " + std::to_string(stored) + " deflated bytes that inflate to " + std::to_string(expected) +
-                    " bytes of " + std::string(textureFormatName(format)) + " blocks, got " +
+                    " bytes of " + std::string(textureFormatName(header.format)) + " blocks, got " +
                     (z == Z_OK ? std::to_string(size) + " bytes" : std::string("corrupt data (") + zError(z) + ")"));
-        out.blocks.push_back({w, h, joinFields(fields, format)});
+        out.blocks.push_back({w, h, joinFields(fields, header.format)});
         at += stored;
         w = std::max(1, w / 2);
         h = std::max(1, h / 2);
@@ -359,6 +394,63 @@ TextureLevels blocksFromBytes(std::string_view view, const std::string& file) {
         bad(file, "end",
             "expected " + std::to_string(at) + " bytes, got " + std::to_string(bytes.size()) + " (extra bytes)");
     return out;
+}
+
+// Version 2: one stored size, then every level's fields in one zstd frame, level 0 first.
+TextureLevels readZstdLevels(const std::string& bytes, const BlockHeader& header, const std::string& file) {
+    const std::size_t at = kHeaderBytes + 4;
+    if (bytes.size() < at)
+        bad(file, "header",
+            "expected " + std::to_string(at) + " bytes with the stored size, got " + std::to_string(bytes.size()));
+    const std::size_t stored = getU32(bytes, kHeaderBytes);
+    if (bytes.size() - at != stored)
+        bad(file, "levels",
+            "expected " + std::to_string(stored) + " stored bytes, got " + std::to_string(bytes.size() - at) +
+                (bytes.size() - at < stored ? " (the file is truncated)" : " (extra bytes)"));
+    std::size_t expected = 0;
+    for (int i = 0, w = header.width, h = header.height; i < header.levels;
+         ++i, w = std::max(1, w / 2), h = std::max(1, h / 2))
+        expected += levelBytes(header.format, w, h);
+    const std::string what = "expected " + std::to_string(stored) + " compressed bytes that decompress to " +
+                             std::to_string(expected) + " bytes of " + std::string(textureFormatName(header.format)) +
+                             " blocks, got ";
+    if (expected > stored * kMaxZstdInflation + 64)
+        bad(file, "levels",
+            "expected " + std::to_string(stored) + " compressed bytes to hold " + std::to_string(expected) +
+                " bytes of blocks, got too few for that");
+    // The frame's own content size is checked before anything is allocated for it.
+    const unsigned long long declared = ZSTD_getFrameContentSize(bytes.data() + at, stored);
+    if (declared != expected)
+        bad(file, "levels",
+            what + (declared == ZSTD_CONTENTSIZE_ERROR     ? std::string("no zstd frame")
+                    : declared == ZSTD_CONTENTSIZE_UNKNOWN ? std::string("a frame of unstated size")
+                                                           : "a frame of " + std::to_string(declared) + " bytes"));
+    std::vector<std::uint8_t> fields(expected);
+    const std::size_t size = ZSTD_decompress(fields.data(), fields.size(), bytes.data() + at, stored);
+    if (ZSTD_isError(size) || size != expected)
+        bad(file, "levels",
+            what + (ZSTD_isError(size) ? std::string("corrupt data (") + ZSTD_getErrorName(size) + ")"
+                                       : std::to_string(size) + " bytes"));
+    TextureLevels out(header.format, {});
+    std::size_t from = 0;
+    for (int i = 0, w = header.width, h = header.height; i < header.levels;
+         ++i, w = std::max(1, w / 2), h = std::max(1, h / 2)) {
+        const std::size_t n = levelBytes(header.format, w, h);
+        const std::vector<std::uint8_t> level(fields.begin() + std::ptrdiff_t(from),
+                                              fields.begin() + std::ptrdiff_t(from + n));
+        out.blocks.push_back({w, h, joinFields(level, header.format)});
+        from += n;
+    }
+    return out;
+}
+
+}  // namespace
+
+TextureLevels blocksFromBytes(std::string_view view, const std::string& file) {
+    const std::string bytes(view);
+    const BlockHeader header = readHeader(bytes, file);
+    return header.version == kDeflateVersion ? readDeflatedLevels(bytes, header, file)
+                                             : readZstdLevels(bytes, header, file);
 }
 
 TextureLevels readBakedTexture(const std::filesystem::path& file) {

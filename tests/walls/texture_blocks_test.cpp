@@ -8,6 +8,7 @@
 #include "walls/texture_mips.h"
 
 #include <gmock/gmock.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cmath>
@@ -250,7 +251,7 @@ TEST(TextureBlocks, FileRoundTripIsExactAndSmallerThanItsBlocks) {
             EXPECT_EQ(back.blocks[i].blocks, encoded.blocks[i].blocks) << "level " << i;  // pure data: exact
         }
         EXPECT_EQ(back.bytes(), encoded.bytes());
-        // Deflate shrinks the transparent blocks to almost nothing.
+        // zstd shrinks the transparent blocks to almost nothing.
         EXPECT_LT(std::filesystem::file_size(file), encoded.bytes() / 2);
     }
     int files = 0;  // no temporary file is left behind
@@ -276,13 +277,59 @@ void putU32(std::string& bytes, std::size_t at, std::uint32_t v) {
     for (int i = 0; i < 4; ++i) bytes[at + i] = static_cast<char>((v >> (8 * i)) & 0xFF);
 }
 
+// A version 1 file as earlier bakes wrote it: a u32 size per level, each level's blocks
+// rearranged field by field (Bc1: the 4-byte endpoint pairs, then the 4-byte index words) and
+// deflated on its own.
+std::string deflatedFile(const TextureLevels& levels) {
+    std::string bytes = "CWBC";
+    auto put = [&](std::uint32_t v) {
+        for (int i = 0; i < 4; ++i) bytes.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
+    };
+    put(1), put(1), put(std::uint32_t(levels.blocks[0].width)), put(std::uint32_t(levels.blocks[0].height));
+    put(std::uint32_t(levels.count()));
+    std::vector<std::string> packed;
+    for (const BlockLevel& level : levels.blocks) {
+        std::vector<std::uint8_t> fields;
+        for (std::size_t start : {0u, 4u})
+            for (std::size_t b = 0; b < level.blocks.size(); b += 8)
+                fields.insert(fields.end(), level.blocks.begin() + std::ptrdiff_t(b + start),
+                              level.blocks.begin() + std::ptrdiff_t(b + start + 4));
+        uLongf size = compressBound(fields.size());
+        std::string out(size, '\0');
+        EXPECT_EQ(compress2(reinterpret_cast<Bytef*>(out.data()), &size, fields.data(), fields.size(), 6), Z_OK);
+        out.resize(size);
+        packed.push_back(out);
+    }
+    for (const std::string& p : packed) put(std::uint32_t(p.size()));
+    for (const std::string& p : packed) bytes += p;
+    return bytes;
+}
+
+TEST(TextureBlocks, ReadsVersionOneFilesAndWritesSmallerOnes) {
+    test::TempFolder folder("texture_blocks_version_one");
+    const TextureLevels encoded = encodeLevels(premultipliedMipChain(wallLike()), TextureFormat::Bc1);
+    const std::string old = deflatedFile(encoded);
+    test::writeFile(folder / "old.bct", old);
+    const TextureLevels back = readBakedTexture(folder / "old.bct");
+    ASSERT_EQ(back.count(), encoded.count());
+    for (std::size_t i = 0; i < back.count(); ++i) EXPECT_EQ(back.blocks[i].blocks, encoded.blocks[i].blocks);
+    writeBlockFile(folder / "new.bct", encoded);
+    EXPECT_LT(std::filesystem::file_size(folder / "new.bct"), old.size());
+    // A damaged version 1 level says so in the deflate reader's words.
+    std::string flipped = old;
+    flipped[24 + 7 * 4 + 20] = static_cast<char>(flipped[24 + 7 * 4 + 20] ^ 0x5A);
+    EXPECT_THAT([&] { blocksFromBytes(flipped, "old.bct"); },
+                ThrowsMessage<Error>(HasSubstr("old.bct: MIP level 0: expected")));
+}
+
 TEST(TextureBlocks, DamagedFilesGiveClearErrors) {
     test::TempFolder folder("texture_blocks_damaged");
     const std::filesystem::path good = folder / "good.bct";
     writeBlockFile(good, encodeLevels(premultipliedMipChain(wallLike()), TextureFormat::Bc1));
     const std::string bytes = test::readFile(good);
-    // Header: 24 bytes, then 7 level sizes (98 x 70 has 7 MIP levels), then level 0's data.
-    const std::size_t level0 = 24 + 7 * 4;
+    // Header: 24 bytes, the stored size, then one zstd frame of 7 levels' blocks (98 x 70 has 7
+    // MIP levels: 3600 + 936 + 240 + 48 + 16 + 8 + 8 = 4856 bytes of BC1 blocks).
+    const std::size_t frame = 24 + 4;
     struct Case {
         const char* name;
         std::string bytes;
@@ -295,22 +342,26 @@ TEST(TextureBlocks, DamagedFilesGiveClearErrors) {
         return b;
     };
     std::string flipped = bytes;
-    flipped[level0 + 20] = static_cast<char>(flipped[level0 + 20] ^ 0x5A);
+    flipped[bytes.size() - 30] = static_cast<char>(flipped[bytes.size() - 30] ^ 0x5A);
+    std::string headless = bytes;
+    headless[frame] = 'x';  // not a zstd frame's magic
     cases.push_back({"empty", "", "header: expected at least 24 bytes, got 0"});
     std::string magic = bytes;
     magic.replace(0, 4, "DDS ");
     cases.push_back({"magic", magic, "header: expected the magic 'CWBC', got other bytes"});
-    cases.push_back({"version", with(4, 2), "header: expected version 1, got 2"});
+    cases.push_back({"version", with(4, 3), "header: expected version 1 or 2, got 3"});
     cases.push_back({"format", with(8, 7), "header: expected format 1 (bc1) or 3 (bc3), got 7"});
     cases.push_back({"width", with(12, 0), "header: expected a size in [1, 16384], got 0 x 70"});
     cases.push_back({"levels", with(20, 99), "header: expected 1 to 7 MIP levels, got 99"});
-    cases.push_back({"sizes cut", bytes.substr(0, 30), "header: expected 52 bytes of level sizes, got a file of 30"});
+    cases.push_back({"size cut", bytes.substr(0, 26), "header: expected 28 bytes with the stored size, got 26"});
     cases.push_back({"data cut", bytes.substr(0, bytes.size() - 3), "(the file is truncated)"});
-    cases.push_back({"level size", with(24, 1'000'000), "MIP level 0: expected 1000000 stored bytes"});
-    cases.push_back({"corrupt", flipped, "MIP level 0: expected"});
+    cases.push_back({"stored size", with(24, 1'000'000), "levels: expected 1000000 stored bytes"});
+    cases.push_back({"too small", with(24, 0).substr(0, frame), "levels: expected 0 compressed bytes to hold 4856"});
+    cases.push_back({"no frame", headless, "decompress to 4856 bytes of bc1 blocks, got no zstd frame"});
+    cases.push_back({"corrupt", flipped, "decompress to 4856 bytes of bc1 blocks, got corrupt data"});
     cases.push_back({"extra", bytes + "xx",
-                     "end: expected " + std::to_string(bytes.size()) + " bytes, got " +
-                         std::to_string(bytes.size() + 2) + " (extra bytes)"});
+                     "levels: expected " + std::to_string(bytes.size() - frame) + " stored bytes, got " +
+                         std::to_string(bytes.size() - frame + 2) + " (extra bytes)"});
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
         const std::filesystem::path file = folder / (std::string(c.name) + ".bct");
@@ -318,10 +369,6 @@ TEST(TextureBlocks, DamagedFilesGiveClearErrors) {
         EXPECT_THAT([&] { readBlockFile(file); },
                     ThrowsMessage<Error>(AllOf(HasSubstr(file.string() + ": "), HasSubstr(c.expected))));
     }
-    // A corrupt level says what it expected and what it got.
-    test::writeFile(folder / "c.bct", flipped);
-    EXPECT_THAT([&] { readBakedTexture(folder / "c.bct"); },
-                ThrowsMessage<Error>(AllOf(HasSubstr("inflate to 3600 bytes of bc1 blocks, got"))));
     EXPECT_THAT([&] { readBlockFile(folder / "missing.bct"); },
                 ThrowsMessage<Error>(HasSubstr("missing.bct: cannot open")));
 }
