@@ -3,9 +3,9 @@
 // bake; at most $CAVEWALL_BENCH_TEXTURE_COUNT files, default all), one thread, as the texture
 // pager's loader thread does it (walls/texture_pager.h):
 //  - page_in: per file, read it whole (the page cache is warm after the first pass), check its
-//    content hash, decode its blocks (inflate) and find its covered rectangle. Counters:
-//    read_ms, check_ms, decode_ms per texture and check_share_pct = check / (read + check +
-//    decode) in per cent; file_kb, the mean file size.
+//    content hash, decode its blocks (zstd; inflate in version 1 files) and find its covered
+//    rectangle. Counters: read_ms, check_ms, decode_ms per texture and check_share_pct = check
+//    / (read + check + decode) in per cent; file_kb, the mean file size.
 //  - hash/<name>: the hashes the check could use over the same files' bytes, in memory:
 //    xxh64 (contentHash), fnv1a (byte-wise FNV-1a 64, the bake keys' hash) and zlib's crc32;
 //    bytes_per_second.
