@@ -56,13 +56,14 @@ void parseOutput(const JsonNode& node, Screen& screen) {
         return;
     }
     const JsonNode w = node.at("window");
-    w.expectKeys({"monitor", "position", "size", "fullscreen", "borderless"});
+    w.expectKeys({"monitor", "position", "size", "fullscreen", "borderless", "resize"});
     WindowOutput out;
     if (auto n = w.find("monitor")) out.monitor = n->integer(0, 64);
     if (auto n = w.find("position")) out.position = n->ivec2(-kMaxResolution * 4, kMaxResolution * 4);
     if (auto n = w.find("size")) out.size = n->ivec2(1, kMaxResolution);
     if (auto n = w.find("fullscreen")) out.fullscreen = n->boolean();
     if (auto n = w.find("borderless")) out.borderless = n->boolean();
+    if (auto n = w.find("resize")) out.reframe = n->oneOf({"letterbox", "reframe"}) == "reframe";
     screen.window = out;
 }
 

@@ -16,7 +16,8 @@
 //                 "output": {"headless": {"file": "front"}}       // or:
 //                 "output": {"window": {"monitor": 0, "position": [0, 0],
 //                                       "size": [1024, 1024], "fullscreen": false,
-//                                       "borderless": false}},
+//                                       "borderless": false,
+//                                       "resize": "letterbox"}},  // or "reframe"
 //                 "rank": 0,                                     // cluster mode only; optional
 //                 "warp": "front.pfm", "blend": "front-blend.png",   // optional; relative to this file
 //                 "blackLevel": 0.02 }],                         // or [r, g, b]; see docs/display.md
@@ -52,6 +53,10 @@ struct WindowOutput {
     glm::ivec2 size{0, 0};  // window size in pixels; {0, 0} = the screen's resolution
     bool fullscreen = false;
     bool borderless = false;  // no title bar or frame (a projector's window)
+    // A window resized to another shape: false ("letterbox") shows the image whole between
+    // black bars, as a projector's fixed screen needs; true ("reframe") widens or narrows the
+    // screen about its centre, keeping its height, to the window's shape (a desktop monitor).
+    bool reframe = false;
     bool operator==(const WindowOutput&) const = default;
 };
 

@@ -27,6 +27,7 @@ Json screenJson(const Screen& s) {
         if (s.window->size != glm::ivec2(0, 0)) w["size"] = ivec(s.window->size);
         w["fullscreen"] = s.window->fullscreen;
         w["borderless"] = s.window->borderless;
+        if (s.window->reframe) w["resize"] = "reframe";
         j["output"] = {{"window", w}};
     } else if (!s.headless.file.empty()) {
         j["output"] = {{"headless", {{"file", s.headless.file}}}};

@@ -21,6 +21,28 @@ std::vector<ScreenView> Display::views(const HeadPose& head) const {
     return out;
 }
 
+bool Display::reframes(int screen) const {
+    const auto& window = _config.screens[screen].window;
+    return window && window->reframe;
+}
+
+bool Display::reframe(int screen, glm::ivec2 window) {
+    if (!reframes(screen) || window.x <= 0 || window.y <= 0) return false;
+    const config::Screen& s = _config.screens[screen];
+    const ScreenQuad quad = reframedQuad({s.lowerLeft, s.lowerRight, s.upperLeft}, window);
+    if (quad == _quads[screen]) return false;
+    _quads[screen] = quad;
+    return true;
+}
+
+ScreenQuad reframedQuad(const ScreenQuad& quad, glm::ivec2 window) {
+    const ScreenBasis b = screenBasis(quad);
+    const glm::dvec3 centre = quad.lowerLeft + 0.5 * (b.width * b.right + b.height * b.up);
+    const double width = b.height * static_cast<double>(window.x) / static_cast<double>(window.y);
+    const glm::dvec3 lowerLeft = centre - 0.5 * (width * b.right + b.height * b.up);
+    return {lowerLeft, lowerLeft + width * b.right, lowerLeft + b.height * b.up};
+}
+
 std::string imageStem(const Display& display, const ScreenView& view) {
     const config::Screen& s = display.screens()[view.screen];
     std::string stem = s.headless.file.empty() ? s.name : s.headless.file;

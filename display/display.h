@@ -43,10 +43,24 @@ public:
     // Both eyes of a stereo pair share the head pose; a guarded eye is flagged per view.
     std::vector<ScreenView> views(const HeadPose& head) const;
 
+    // Whether `screen` shows in a window that reframes when resized (output.window.resize).
+    bool reframes(int screen) const;
+    // A reframing screen's quad takes the shape of a window of `window` pixels (reframedQuad,
+    // from the configured quad, so the shape never drifts); other screens, and a window without
+    // pixels (minimised), keep theirs. The resolution is kept: the image is stretched to the
+    // window. True when the quad changed.
+    bool reframe(int screen, glm::ivec2 window);
+
 private:
     config::DisplayConfig _config;
     std::vector<ScreenQuad> _quads;
 };
+
+// `quad` widened or narrowed about its centre, along its own right axis, to the width/height
+// ratio of `window` (pixels, both positive), keeping its height, plane and orientation: a
+// desktop window resized to another shape shows more or less of the scene to each side, not the
+// same view stretched or between black bars.
+ScreenQuad reframedQuad(const ScreenQuad& quad, glm::ivec2 window);
 
 // The file name (without extension) of a view's image: "<file>" for one image per screen,
 // "<file>-left" / "<file>-right" for separate stereo; <file> is the headless file stem or the

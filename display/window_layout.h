@@ -4,7 +4,8 @@
 // windows without a position are tiled over their monitor's work area in a grid, without
 // overlapping, scaled down (keeping their aspect) when they do not fit. The rendered images keep
 // the screens' resolution; a smaller window shows them scaled, and a window of another shape
-// (resized by the user) shows them whole, undistorted, with black bars (fitImage).
+// (resized by the user) shows them whole, undistorted, with black bars (fitImage), unless its
+// screen reframes to the window's shape (display/display.h reframedQuad).
 //
 // Pure: the monitors come from the window system (display/gl); tests give their own.
 

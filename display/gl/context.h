@@ -50,6 +50,8 @@ struct PresentImage {
     unsigned left = 0;   // GL texture name
     unsigned right = 0;  // GL texture name or 0
     glm::ivec2 size{0, 0};
+    bool fill = false;  // stretched over the whole window (its screen took the window's shape),
+                        // else whole and undistorted between black bars
 };
 
 class Context {
@@ -67,6 +69,8 @@ public:
 
     // Windows, in the order they were requested (none for headless contexts).
     virtual int windowCount() const { return 0; }
+    // Window `window`'s drawable size in pixels now; {0, 0} when minimised or headless.
+    virtual glm::ivec2 windowPixels(int /*window*/) const { return {0, 0}; }
     // Shows `image` in window `window`, scaled to the window, and swaps its buffers. When
     // `capture` is given it receives what the window's back buffer held just before the swap
     // (8-bit RGBA, rows top to bottom, the window's size). Leaves the rendering context current.

@@ -32,6 +32,7 @@ public:
 
     void makeCurrentOnThread() override { glfwMakeContextCurrent(_windows.front().handle); }
     int windowCount() const override { return static_cast<int>(_windows.size()); }
+    glm::ivec2 windowPixels(int window) const override;
     void present(int window, const PresentImage& image, scenes::Image* capture) override;
     bool pollCloseRequested() override;
     std::vector<input::Event> takeInputEvents() override;
@@ -67,7 +68,7 @@ private:
     void drawOverlay(Window& w, glm::ivec2 windowSize);
     void open(const WindowRequest& request, const display::WindowPlacement& place, GLFWmonitor* fullscreen, bool stereo,
               const ContextOptions& options);
-    void blit(Window& w, unsigned texture, glm::ivec2 size, GLenum drawBuffer, glm::ivec2 windowSize);
+    void blit(Window& w, unsigned texture, glm::ivec2 size, bool fill, GLenum drawBuffer, glm::ivec2 windowSize);
 
     std::vector<Window> _windows;
     std::vector<input::Event> _events;
@@ -167,6 +168,13 @@ GlfwContext::Window& GlfwContext::at(int window) {
     return _windows[window];
 }
 
+glm::ivec2 GlfwContext::windowPixels(int window) const {
+    if (window < 0 || window >= windowCount()) return {0, 0};
+    glm::ivec2 size{0, 0};
+    glfwGetFramebufferSize(_windows[window].handle, &size.x, &size.y);
+    return size;
+}
+
 void GlfwContext::setOverlay(int window, const display::OverlayText& overlay) {
     Window& w = at(window);
     if (overlay == w.overlay) return;
@@ -193,15 +201,17 @@ void GlfwContext::drawOverlay(Window& w, glm::ivec2 windowSize) {
     w.overlayPass->draw(w.overlayVertices, windowSize);
 }
 
-void GlfwContext::blit(Window& w, unsigned texture, glm::ivec2 size, GLenum drawBuffer, glm::ivec2 windowSize) {
+void GlfwContext::blit(Window& w, unsigned texture, glm::ivec2 size, bool fill, GLenum drawBuffer,
+                       glm::ivec2 windowSize) {
     glNamedFramebufferTexture(w.readFramebuffer.id(), GL_COLOR_ATTACHMENT0, texture, 0);
     glNamedFramebufferReadBuffer(w.readFramebuffer.id(), GL_COLOR_ATTACHMENT0);
     // Bind-to-edit for the window's framebuffer: Mesa 22 mishandles the DSA calls on framebuffer 0.
     glBindFramebuffer(GL_READ_FRAMEBUFFER, w.readFramebuffer.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glDrawBuffer(drawBuffer);
-    // The image whole and undistorted in a window of another shape: black bars beside it.
-    const glm::ivec4 to = fitImage(size, windowSize);
+    // The image whole and undistorted in a window of another shape: black bars beside it; or,
+    // when its screen took the window's shape, over the whole window.
+    const glm::ivec4 to = fill ? glm::ivec4(0, 0, windowSize.x, windowSize.y) : fitImage(size, windowSize);
     if (to != glm::ivec4(0, 0, windowSize.x, windowSize.y)) {
         glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
@@ -222,8 +232,8 @@ void GlfwContext::present(int window, const PresentImage& image, scenes::Image* 
     glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     const bool stereo = _info.stereoWindows;
-    blit(w, image.left, image.size, stereo ? GL_BACK_LEFT : GL_BACK, windowSize);
-    if (stereo && image.right) blit(w, image.right, image.size, GL_BACK_RIGHT, windowSize);
+    blit(w, image.left, image.size, image.fill, stereo ? GL_BACK_LEFT : GL_BACK, windowSize);
+    if (stereo && image.right) blit(w, image.right, image.size, image.fill, GL_BACK_RIGHT, windowSize);
     drawOverlay(w, windowSize);
     const GLenum shown = stereo ? GL_BACK_LEFT : GL_BACK;
     if (capture) *capture = readFramebuffer(0, shown, windowSize, "window " + std::to_string(window));

@@ -44,14 +44,14 @@ TEST(DisplayConfig, ParsesEveryField) {
         R"({"name": "w", "lowerLeft": [0,0,0], "lowerRight": [2,0,0], "upperLeft": [0,1,0],
             "resolution": [640, 320],
             "output": {"window": {"monitor": 1, "position": [10, 20], "size": [320, 160], "fullscreen": true,
-                                  "borderless": true}}})",
+                                  "borderless": true, "resize": "reframe"}}})",
         R"(, "viewer": {"headPosition": [0, 1.6, 1], "headOrientation": {"yawDeg": 90},
                         "eyeSeparation": 0.07, "near": 0.1, "far": "infinite"},
              "stereo": "side-by-side", "minEyeDistance": 0.01,
              "tracking": {"caveFromTracker": [[1,0,0,0.5],[0,1,0,0],[0,0,1,-2],[0,0,0,1]], "latencyMs": 20})"));
     const Screen& s = c.screens[0];
     ASSERT_TRUE(s.window.has_value());
-    EXPECT_EQ(*s.window, (WindowOutput{1, glm::ivec2(10, 20), {320, 160}, true, true}));
+    EXPECT_EQ(*s.window, (WindowOutput{1, glm::ivec2(10, 20), {320, 160}, true, true, true}));
     EXPECT_EQ(c.viewer.headPosition, glm::dvec3(0, 1.6, 1));
     // Yaw 90° turns -Z (forward) into -X.
     const glm::dvec3 forward = c.viewer.headOrientation * glm::dvec3(0, 0, -1);
@@ -118,6 +118,10 @@ TEST(DisplayConfig, EveryRuleHasItsMessage) {
          withScreens(
              R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1], "output": {"window": {"size": [0, 10]}}})"),
          "screens[0].output.window.size[0]: expected an integer in [1, 16384], got 0"},
+        {"unknown resize",
+         withScreens(
+             R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1], "output": {"window": {"resize": "stretch"}}})"),
+         "screens[0].output.window.resize: expected one of \"letterbox\", \"reframe\", got \"stretch\""},
         {"both outputs",
          withScreens(
              R"({"name": "a", "lowerLeft": [0,0,0], "lowerRight": [1,0,0], "upperLeft": [0,1,0], "resolution": [1,1], "output": {"window": {}, "headless": {}}})"),

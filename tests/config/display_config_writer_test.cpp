@@ -36,7 +36,7 @@ TEST(DisplayConfigWriter, EveryFieldRoundTrips) {
               {"name": "a", "lowerLeft": [-1.5, 0, -1.5], "lowerRight": [1.5, 0, -1.5], "upperLeft": [-1.5, 3, -1.5],
                "resolution": [1920, 1080], "rank": 2,
                "output": {"window": {"monitor": 1, "position": [-10, 20], "size": [800, 600], "fullscreen": true,
-                                     "borderless": true}}},
+                                     "borderless": true, "resize": "reframe"}}},
               {"name": "b", "lowerLeft": [0.1, 0.2, -2], "lowerRight": [0.30000000000000004, 0.2, -2],
                "upperLeft": [0.1, 0.4, -2], "resolution": [10, 10], "output": {"headless": {"file": "b-file"}},
                "warp": "warp/b.pfm", "blend": "b-blend.png", "blackLevel": [0.01, 0.02, 0.030000000000000002]},

@@ -43,6 +43,63 @@ TEST(Display, NeighbouringScreensMeetAtTheSharedEdge) {
     }
 }
 
+// A tilted, off-centre screen (a monitor leaning back, right of the viewer), 0.6 m x 0.34 m.
+ScreenQuad leaningMonitor() {
+    const glm::dvec3 right = glm::normalize(glm::dvec3(1.0, 0.0, 0.2));
+    const glm::dvec3 up = glm::normalize(glm::cross(glm::dvec3(0.1, 0.3, 1.0), right));
+    const glm::dvec3 lowerLeft(0.2, 1.0, -0.7);
+    return {lowerLeft, lowerLeft + 0.6 * right, lowerLeft + 0.34 * up};
+}
+
+TEST(Display, AReframedQuadKeepsItsHeightCentreAndPlane) {
+    const ScreenQuad q = leaningMonitor();
+    const ScreenBasis b = screenBasis(q);
+    const glm::dvec3 centre = q.lowerLeft + 0.5 * (b.width * b.right + b.height * b.up);
+    for (const glm::ivec2 window : {glm::ivec2(360, 360), glm::ivec2(1920, 600), glm::ivec2(300, 900)}) {
+        SCOPED_TRACE(window.x);
+        const ScreenQuad r = reframedQuad(q, window);
+        const ScreenBasis rb = screenBasis(r);
+        EXPECT_NEAR(rb.height, b.height, 1e-12);
+        EXPECT_NEAR(rb.width / rb.height, double(window.x) / window.y, 1e-12);  // the window's shape
+        EXPECT_LT(glm::distance(r.lowerLeft + 0.5 * (rb.width * rb.right + rb.height * rb.up), centre), 1e-12);
+        EXPECT_LT(glm::distance(rb.right, b.right), 1e-12);
+        EXPECT_LT(glm::distance(rb.normal, b.normal), 1e-12);
+    }
+    // The configured shape gives the configured quad back.
+    const ScreenQuad same = reframedQuad(q, {600, 340});
+    EXPECT_LT(glm::distance(same.lowerLeft, q.lowerLeft) + glm::distance(same.lowerRight, q.lowerRight) +
+                  glm::distance(same.upperLeft, q.upperLeft),
+              1e-12);
+}
+
+TEST(Display, OnlyAScreenWhoseWindowReframesTakesTheWindowsShape) {
+    config::DisplayConfig c = config::loadDisplayConfig("desktop");
+    ASSERT_TRUE(c.screens[0].window && c.screens[0].window->reframe);  // the desktop preset reframes
+    Display desktop(c);
+    const ScreenQuad configured = desktop.quad(0);
+    EXPECT_FALSE(desktop.reframe(0, {0, 0}));  // a minimised window keeps the quad
+    EXPECT_EQ(desktop.quad(0), configured);
+    EXPECT_TRUE(desktop.reframe(0, {500, 500}));
+    EXPECT_NEAR(screenBasis(desktop.quad(0)).width, screenBasis(configured).height, 1e-12);
+    EXPECT_FALSE(desktop.reframe(0, {500, 500}));  // unchanged
+    // The frustum follows: a square window's view is as wide as it is high.
+    const ScreenView v = desktop.views(desktop.defaultHead())[0];
+    const glm::dvec4 l = v.frustum.clipFromFrame() * glm::dvec4(desktop.quad(0).lowerLeft, 1.0);
+    const glm::dvec4 r = v.frustum.clipFromFrame() * glm::dvec4(desktop.quad(0).lowerRight, 1.0);
+    EXPECT_NEAR(l.x / l.w, -1.0, 1e-12);
+    EXPECT_NEAR(r.x / r.w, 1.0, 1e-12);
+    // Back to a wide window: from the configured quad, not the square one.
+    EXPECT_TRUE(desktop.reframe(0, {1280, 720}));
+    EXPECT_NEAR(screenBasis(desktop.quad(0)).width, screenBasis(configured).height * 1280.0 / 720.0, 1e-12);
+    // cave4's screens are headless, and a window without "resize" letterboxes: neither changes.
+    Display cave(monoCave4());
+    EXPECT_FALSE(cave.reframe(0, {500, 100}));
+    c.screens[0].window->reframe = false;
+    Display letterbox(c);
+    EXPECT_FALSE(letterbox.reframe(0, {500, 500}));
+    EXPECT_EQ(letterbox.quad(0), configured);
+}
+
 TEST(Display, FrustumJsonHasTheDocumentedFields) {
     const Display d(monoCave4());
     const nlohmann::json j = frustumJson(d, d.views(d.defaultHead()));

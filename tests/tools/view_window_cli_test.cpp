@@ -2,7 +2,8 @@
 // first image shows the model, W moves the viewer along the view, a drag turns the view by the
 // stated degrees per pixel, F1 shows the help over the window and never in the saved frames,
 // Escape frees the pointer and a second Escape quits with exit 0 and complete files; a window
-// resized to another shape shows the image undistorted between black bars.
+// resized to another shape shows the image undistorted between black bars, or, when it
+// reframes, more or less of the scene without bars.
 // ctest runs this executable through `xvfb-run`. There are no fixed sleeps: each step polls
 // frames.csv (flushed after every frame) for the frame or the pose it waits for.
 #include "tests/tools/run_cli_support.h"
@@ -30,13 +31,14 @@ const std::string kRoom = std::string(CAVEWALL_REAL_SCENES) + "/OcclusionRoom/ro
 constexpr int kSaveEvery = 5;              // frames between saved frames
 constexpr double kDegreesPerPixel = 0.15;  // view --help's mouse look
 
-// A desktop monitor drawn at 160 x 90 in a 640 x 360 window (the help page fits at scale 2).
-fs::path smallDesktop(const fs::path& folder) {
-    const fs::path file = folder / "small_desktop.json";
+// A desktop monitor drawn at 160 x 90 in a 640 x 360 window (the help page fits at scale 2);
+// `resize`: the window's "resize" ("letterbox", the default, or "reframe").
+fs::path smallDesktop(const fs::path& folder, const std::string& resize = "letterbox") {
+    const fs::path file = folder / ("small_desktop_" + resize + ".json");
     std::ofstream(file) << R"({"name": "small", "screens": [{"name": "monitor",
         "lowerLeft": [-0.3, 1.03, -0.6], "lowerRight": [0.3, 1.03, -0.6], "upperLeft": [-0.3, 1.37, -0.6],
-        "resolution": [160, 90], "output": {"window": {"position": [0, 0], "size": [640, 360]}}}],
-        "viewer": {"headPosition": [0, 1.2, 0]}})";
+        "resolution": [160, 90], "output": {"window": {"position": [0, 0], "size": [640, 360], "resize": ")"
+                        << resize << R"("}}}], "viewer": {"headPosition": [0, 1.2, 0]}})";
     return file;
 }
 
@@ -220,6 +222,51 @@ TEST_F(ViewWindow, AWindowResizedToAnotherShapeShowsTheImageWholeBetweenBlackBar
     for (int y = 283; y < 360; ++y) EXPECT_TRUE(blackRow(shown, y)) << "row " << y;
     for (int y = 80; y < 281; y += 20) EXPECT_FALSE(blackRow(shown, y)) << "row " << y;
     EXPECT_FALSE(blackRow(shown, 180));
+    xdotool("key Escape");
+    const CliResult r = view.finish(std::chrono::seconds(60));
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+}
+
+// A window that reframes takes its screen to the window's shape: the square window shows no
+// bars, and the scene image (still 160 x 90 pixels) holds a narrower view than before while the
+// viewer stands still: the same scene squeezed across, which the window stretches back.
+TEST_F(ViewWindow, AWindowThatReframesShowsMoreOrLessOfTheSceneWithoutBars) {
+    CliProcess view({"view", kRoom, "--display", smallDesktop(_out, "reframe").string(), "--out", _out.string(),
+                     "--save-frames", "every:" + std::to_string(kSaveEvery), "--save-window"});
+    ASSERT_NO_FATAL_FAILURE(openWindow(view));
+    CsvTable t = waitFor(view, "two saved frames", [](const CsvTable& r) { return r.size() > 2 * kSaveEvery + 1; });
+    const scenes::Image before = image(lastSaved(t), "monitor");
+    ASSERT_EQ(before.rgba, image(lastSaved(t) - kSaveEvery, "monitor").rgba);  // the viewer stands still
+    xdotool("windowsize " + _window + " 360 360");
+    t = waitFor(view, "a saved frame of the resized window",
+                [&](const CsvTable& r) { return image(lastSaved(r), "window-monitor").width == 360; });
+    const scenes::Image shown = image(lastSaved(t), "window-monitor");
+    ASSERT_EQ(shown.height, 360);
+    for (int y = 0; y < 360; y += 20) EXPECT_FALSE(blackRow(shown, y)) << "row " << y;
+    EXPECT_FALSE(blackRow(shown, 359));
+    const scenes::Image after = image(lastSaved(t), "monitor");
+    ASSERT_EQ(after.width, 160);
+    // Square, the screen is 0.34 m wide instead of 0.34 * 16 / 9: column x shows what column
+    // 79.5 + (x - 79.5) * 9 / 16 showed (rows unchanged). Compare the mapped columns, and the
+    // unmapped ones as the control: the mapped must match far better.
+    auto share = [&](bool mapped) {
+        int changed = 0, total = 0;
+        for (int x = 8; x < 152; x += 8) {
+            const int from = mapped ? static_cast<int>(std::lround(79.5 + (x - 79.5) * 9.0 / 16.0)) : x;
+            for (int y = 0; y < 90; ++y, ++total) {
+                const std::size_t a = 4 * (static_cast<std::size_t>(y) * 160 + x);
+                const std::size_t b = 4 * (static_cast<std::size_t>(y) * 160 + from);
+                for (int c = 0; c < 3; ++c)
+                    if (std::abs(after.rgba[a + c] - before.rgba[b + c]) > 24) {
+                        ++changed;
+                        break;
+                    }
+            }
+        }
+        return static_cast<double>(changed) / total;
+    };
+    EXPECT_LT(share(true), 0.1) << "unmapped: " << share(false);
+    EXPECT_GT(share(false), 2 * share(true));
     xdotool("key Escape");
     const CliResult r = view.finish(std::chrono::seconds(60));
     EXPECT_EQ(r.exitCode, 0) << r.err;

@@ -96,7 +96,8 @@ struct Walkthrough::WallRuntime {
         Textures(const walls::WallSetup& setup, const WalkthroughOptions& options)
             : pager(setup.folder, setup.manifest, options.textureBudgetMB, options.decoder),
               store(pager, static_cast<std::size_t>(options.uploadMBPerFrame * 1024 * 1024)) {
-            if (options.wallKind == walls::WallKind::Depth) depthPass = std::make_unique<walls::gl::DepthWallPass>(options.depthMarch);
+            if (options.wallKind == walls::WallKind::Depth)
+                depthPass = std::make_unique<walls::gl::DepthWallPass>(options.depthMarch);
         }
         walls::TexturePager pager;
         walls::gl::TextureStore store;
@@ -421,6 +422,7 @@ walkthrough::FrameResult Walkthrough::renderFrame(const walkthrough::FrameInput&
     const std::optional<walls::gl::BackgroundBakeStats> bakeAtStart =
         _options.baker ? std::optional(_options.baker->stats()) : std::nullopt;
     _context.makeCurrent();  // callers may have used another context (a bake) in between
+    reframeWindows();
     const std::vector<display::ScreenView> views = renderedViews(input.head);
     walkthrough::FramePlan plan = planFrame(input, views);
     walkthrough::FrameResult result;
@@ -485,12 +487,18 @@ walkthrough::FrameResult Walkthrough::renderFrame(const walkthrough::FrameInput&
     return result;
 }
 
+// Screens of windows that reframe take their windows' shapes before the frame's views.
+void Walkthrough::reframeWindows() {
+    const int windows = std::min(_context.windowCount(), _targets.screenCount());
+    for (int s = 0; s < windows; ++s) _display.reframe(s, _context.windowPixels(s));
+}
+
 void Walkthrough::present() {
     const int windows = std::min(_context.windowCount(), _targets.screenCount());
     for (int s = 0; s < windows; ++s) {
         const display::gl::ProjectorPass* pass = _projectors->pass(s);  // a projector shows the corrected image
-        display::gl::PresentImage image{pass ? pass->colorTexture(0) : _targets.colorTexture(s, 0), 0,
-                                        _targets.size(s)};
+        display::gl::PresentImage image{pass ? pass->colorTexture(0) : _targets.colorTexture(s, 0), 0, _targets.size(s),
+                                        _display.reframes(s)};
         if (_targets.imageCount(s) > 1 && _context.info().stereoWindows)
             image.right = pass ? pass->colorTexture(1) : _targets.colorTexture(s, 1);
         _context.present(s, image);

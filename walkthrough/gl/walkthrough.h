@@ -164,11 +164,12 @@ private:
                                                    const std::vector<display::ScreenView>& views,
                                                    const WallDraws& walls) const;
     std::vector<display::ScreenView> renderedViews(const display::HeadPose& head) const;
+    void reframeWindows();
     void present();
 
     const scenes::Scene& _scene;
     const scenes::SceneDescription& _description;
-    const display::Display& _display;
+    display::Display _display;  // a copy: its windowed screens may take their windows' shapes
     display::gl::Context& _context;
     WalkthroughOptions _options;
     std::vector<int> _screens;
