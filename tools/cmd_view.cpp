@@ -37,7 +37,8 @@ const char* const kViewUsage =
     "textures are still baking, a network tracker's state and \"F1: help\", and never appears in\n"
     "saved frames. A scene with virtual walls draws at once: textures the cache lacks are baked\n"
     "in the background, those wanted now first, and their walls show geometry until then\n"
-    "(--bake-first bakes them all before the first frame). Every other `cavewall run` flag works\n"
+    "(--bake-first bakes them all before the first frame). Objects are drawn at levels of detail\n"
+    "within 1 pixel (--lod 1; --lod 0 draws full detail). Every other `cavewall run` flag works\n"
     "the same (see `cavewall run --help`).\n";
 
 int runView(const std::vector<std::string>& words) {
@@ -52,6 +53,7 @@ int runView(const std::vector<std::string>& words) {
     defaults.frames = 0;
     defaults.start = app::Start::Inside;
     defaults.window = app::WindowMode::Window;
+    defaults.lodPixels = 1.0;
     const app::RunOptions o = parseSessionOptions(args, defaults);
     app::installInterruptHandler();
     return reportSession("view", o, app::gl::runSession(o));

@@ -76,7 +76,7 @@ void parseDrawing(const Args& args, app::RunOptions& o) {
     o.geometryBudgetMB = args.number("geometry-budget", 0.0, 0.0, 1e6);
     o.bakeResolution = static_cast<int>(args.integer("max-res", o.bakeResolution, 16, 16384));
     o.synchronousPaging = args.has("sync-paging");
-    o.lodPixels = args.number("lod", 0.0, 0.0, 1e4);
+    o.lodPixels = args.number("lod", o.lodPixels, 0.0, 1e4);
     o.triangleBudget = static_cast<std::size_t>(args.integer("triangle-budget", 0, 0, 1000000000));
     o.frameBudgetMs = args.number("frame-budget-ms", 0.0, 0.0, 1e5);
     o.lodMaxPixels = args.number("lod-max", o.lodMaxPixels, 0.0, 1e4);

@@ -235,6 +235,7 @@ TEST_F(ViewWindow, AWindowThatReframesShowsMoreOrLessOfTheSceneWithoutBars) {
                      "--save-frames", "every:" + std::to_string(kSaveEvery), "--save-window"});
     ASSERT_NO_FATAL_FAILURE(openWindow(view));
     CsvTable t = waitFor(view, "two saved frames", [](const CsvTable& r) { return r.size() > 2 * kSaveEvery + 1; });
+    EXPECT_EQ(t.back().number("lod_px"), 1.0);  // view draws levels of detail within a pixel
     const scenes::Image before = image(lastSaved(t), "monitor");
     ASSERT_EQ(before.rgba, image(lastSaved(t) - kSaveEvery, "monitor").rgba);  // the viewer stands still
     xdotool("windowsize " + _window + " 360 360");
