@@ -310,7 +310,7 @@ void writeBlockFile(const std::filesystem::path& file, const TextureLevels& leve
         const std::vector<std::uint8_t> f = splitFields(level.blocks, levels.format);
         fields.insert(fields.end(), f.begin(), f.end());
     }
-    std::string packed = zstdFrame(fields, file);
+    const std::string packed = zstdFrame(fields, file);
     std::string bytes(kMagic, 4);
     putU32(bytes, kVersion);
     putU32(bytes, formatCode(levels.format));

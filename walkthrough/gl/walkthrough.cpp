@@ -487,10 +487,18 @@ walkthrough::FrameResult Walkthrough::renderFrame(const walkthrough::FrameInput&
     return result;
 }
 
+// Whether `screen` takes its window's shape: a screen whose window reframes, unless this is a
+// cluster rank (it renders some screens but chooses levels of detail over all of them, as the
+// other ranks do, so it keeps the configured quads and its windows letterbox).
+bool Walkthrough::reframing(int screen) const {
+    return _display.reframes(screen) && _screens.size() == _display.screens().size();
+}
+
 // Screens of windows that reframe take their windows' shapes before the frame's views.
 void Walkthrough::reframeWindows() {
     const int windows = std::min(_context.windowCount(), _targets.screenCount());
-    for (int s = 0; s < windows; ++s) _display.reframe(s, _context.windowPixels(s));
+    for (int s = 0; s < windows; ++s)
+        if (reframing(s)) _display.reframe(s, _context.windowPixels(s));
 }
 
 void Walkthrough::present() {
@@ -498,7 +506,7 @@ void Walkthrough::present() {
     for (int s = 0; s < windows; ++s) {
         const display::gl::ProjectorPass* pass = _projectors->pass(s);  // a projector shows the corrected image
         display::gl::PresentImage image{pass ? pass->colorTexture(0) : _targets.colorTexture(s, 0), 0, _targets.size(s),
-                                        _display.reframes(s)};
+                                        reframing(s)};
         if (_targets.imageCount(s) > 1 && _context.info().stereoWindows)
             image.right = pass ? pass->colorTexture(1) : _targets.colorTexture(s, 1);
         _context.present(s, image);

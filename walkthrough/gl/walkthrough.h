@@ -164,6 +164,7 @@ private:
                                                    const std::vector<display::ScreenView>& views,
                                                    const WallDraws& walls) const;
     std::vector<display::ScreenView> renderedViews(const display::HeadPose& head) const;
+    bool reframing(int screen) const;
     void reframeWindows();
     void present();
 
