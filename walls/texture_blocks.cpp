@@ -15,6 +15,7 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <span>
 
 namespace cavewall::walls {
 
@@ -131,7 +132,7 @@ std::vector<std::uint8_t> splitFields(const std::vector<std::uint8_t>& blocks, T
     return out;
 }
 
-std::vector<std::uint8_t> joinFields(const std::vector<std::uint8_t>& fields, TextureFormat format) {
+std::vector<std::uint8_t> joinFields(std::span<const std::uint8_t> fields, TextureFormat format) {
     const int size = blockBytes(format);
     const std::size_t n = fields.size() / size;
     std::vector<std::uint8_t> out(fields.size());
@@ -407,10 +408,13 @@ TextureLevels readZstdLevels(const std::string& bytes, const BlockHeader& header
         bad(file, "levels",
             "expected " + std::to_string(stored) + " stored bytes, got " + std::to_string(bytes.size() - at) +
                 (bytes.size() - at < stored ? " (the file is truncated)" : " (extra bytes)"));
+    std::vector<glm::ivec2> sizes;  // of each level, level 0 first
     std::size_t expected = 0;
-    for (int i = 0, w = header.width, h = header.height; i < header.levels;
-         ++i, w = std::max(1, w / 2), h = std::max(1, h / 2))
-        expected += levelBytes(header.format, w, h);
+    for (glm::ivec2 size(header.width, header.height); int(sizes.size()) < header.levels;
+         size = glm::max(size / 2, glm::ivec2(1))) {
+        sizes.push_back(size);
+        expected += levelBytes(header.format, size.x, size.y);
+    }
     const std::string what = "expected " + std::to_string(stored) + " compressed bytes that decompress to " +
                              std::to_string(expected) + " bytes of " + std::string(textureFormatName(header.format)) +
                              " blocks, got ";
@@ -433,12 +437,9 @@ TextureLevels readZstdLevels(const std::string& bytes, const BlockHeader& header
                                        : std::to_string(size) + " bytes"));
     TextureLevels out(header.format, {});
     std::size_t from = 0;
-    for (int i = 0, w = header.width, h = header.height; i < header.levels;
-         ++i, w = std::max(1, w / 2), h = std::max(1, h / 2)) {
-        const std::size_t n = levelBytes(header.format, w, h);
-        const std::vector<std::uint8_t> level(fields.begin() + std::ptrdiff_t(from),
-                                              fields.begin() + std::ptrdiff_t(from + n));
-        out.blocks.push_back({w, h, joinFields(level, header.format)});
+    for (const glm::ivec2 size : sizes) {
+        const std::size_t n = levelBytes(header.format, size.x, size.y);
+        out.blocks.push_back({size.x, size.y, joinFields(std::span(fields).subspan(from, n), header.format)});
         from += n;
     }
     return out;
