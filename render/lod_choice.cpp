@@ -34,7 +34,8 @@ FrameLod chooseLods(const RenderScene& scene, const std::vector<display::ScreenV
     for (const display::ScreenView& view : views) {
         // The same products as the render lists, so that both cull alike to the last bit.
         const glm::dmat4 clipFromWorld = view.frustum.clipFromView * view.frustum.viewFromFrame * frameFromWorld;
-        const ListBuilder::Selection selected = builder.select(clipFromWorld, filter);
+        const ListBuilder::Selection selected =
+            builder.select(clipFromWorld, eyeInWorld(view.frustum, frameFromWorld), filter);
         const glm::dmat4 viewFromWorld = view.frustum.viewFromFrame * frameFromWorld;
         const display::ViewScreen screen =
             display::viewScreen(view.frustum, {view.pass.viewport.width, view.pass.viewport.height});

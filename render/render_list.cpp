@@ -1,10 +1,12 @@
 #include "render/render_list.h"
 
+#include "render/portal_cull.h"
 #include "render/vertex_lighting.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 namespace cavewall::render {
 
@@ -50,7 +52,12 @@ ListBuilder::ListBuilder(const RenderScene& scene)
     : _scene(scene), _sortKeys(scene.objectCount(), 0.0), _listStamp(scene.objectCount(), 0),
       _vertexLightingTolerance(kVertexLightingTolerance) {}
 
-ListBuilder::Selection ListBuilder::select(const glm::dmat4& clipFromWorld, const DrawFilter& filter) {
+glm::dvec3 eyeInWorld(const display::OffAxisFrustum& frustum, const glm::dmat4& frameFromWorld) {
+    return glm::dvec3(glm::inverse(frameFromWorld) * glm::dvec4(frustum.eye, 1.0));
+}
+
+ListBuilder::Selection ListBuilder::select(const glm::dmat4& clipFromWorld, glm::dvec3 eyeWorld,
+                                           const DrawFilter& filter) {
     const int count = _scene.objectCount();
     if (filter.objects) {
         if (++_stamp == 0) {  // wrapped: old stamps could collide
@@ -75,9 +82,12 @@ ListBuilder::Selection ListBuilder::select(const glm::dmat4& clipFromWorld, cons
     _opaque.clear();
     _blended.clear();
     const std::vector<scenes::Object>& objects = _scene.objects();
+    const std::optional<PortalView> portals =
+        filter.portals ? std::optional<PortalView>(std::in_place, *filter.portals, eyeWorld) : std::nullopt;
     for (int i : _visible) {
         if (filter.objects && _listStamp[i] != _stamp) continue;
         if (filter.skipStructure && objects[i].role == scenes::Role::Structure) continue;
+        if (portals && !portals->visible(i, objects[i].worldBounds)) continue;
         (_scene.blended(i) ? _blended : _opaque).push_back(i);
     }
     return {_opaque, _blended};
@@ -92,7 +102,8 @@ const RenderList& ListBuilder::build(const display::OffAxisFrustum& frustum, con
     list.batches.clear();
     list.triangles = 0;
     const auto cullStart = Clock::now();
-    select(frustum.clipFromView * frustum.viewFromFrame * frameFromWorld, filter);
+    const glm::dvec3 eye = eyeInWorld(frustum, frameFromWorld);
+    select(frustum.clipFromView * frustum.viewFromFrame * frameFromWorld, eye, filter);
     list.cullMs = msSince(cullStart);
     const std::vector<scenes::Object>& objects = _scene.objects();
     // Blended objects back to front by the view depth of their bounds centre.
@@ -100,7 +111,6 @@ const RenderList& ListBuilder::build(const display::OffAxisFrustum& frustum, con
     for (int i : _blended) _sortKeys[i] = (viewFromWorld * glm::dvec4(objects[i].worldBounds.centre(), 1.0)).z;
     std::stable_sort(_blended.begin(), _blended.end(), [&](int a, int b) { return _sortKeys[a] < _sortKeys[b]; });
     // Opaque objects front to back by the distance of their bounds from the eye.
-    const glm::dvec3 eye = glm::dvec3(glm::inverse(frameFromWorld) * glm::dvec4(frustum.eye, 1.0));
     for (int i : _opaque) _sortKeys[i] = squaredDistance(objects[i].worldBounds, eye);
     std::stable_sort(_opaque.begin(), _opaque.end(), [&](int a, int b) { return _sortKeys[a] < _sortKeys[b]; });
     addDraws(_opaque, filter, eye, true);

@@ -64,6 +64,9 @@ struct RenderList {
 void appendBatches(const RenderScene& scene, std::vector<Draw>& draws, bool byKey, int offset,
                    std::vector<Batch>& batches);
 
+// The eye of `frustum` (given in a frame) in the world, as every render list computes it.
+glm::dvec3 eyeInWorld(const display::OffAxisFrustum& frustum, const glm::dmat4& frameFromWorld);
+
 // Builds render lists for one RenderScene, keeping its scratch between views (not thread-safe;
 // one per thread). The scene must outlive it.
 class ListBuilder {
@@ -75,13 +78,14 @@ public:
     double vertexLightingTolerance() const { return _vertexLightingTolerance; }
 
     // The objects `filter` selects whose bounds meet the frustum of `clipFromWorld` (all
-    // selected ones when filter.frustumCull is false), in scene order, split into opaque
-    // (opaque and mask materials) and blended. The returned vectors live until the next call.
+    // selected ones when filter.frustumCull is false) and, with filter.portals, may be seen
+    // through their portals from `eyeWorld`, in scene order, split into opaque (opaque and mask
+    // materials) and blended. The returned vectors live until the next call.
     struct Selection {
         const std::vector<int>& opaque;
         const std::vector<int>& blended;
     };
-    Selection select(const glm::dmat4& clipFromWorld, const DrawFilter& filter);
+    Selection select(const glm::dmat4& clipFromWorld, glm::dvec3 eyeWorld, const DrawFilter& filter);
 
     // The render list of `frustum` (given in a frame; frameFromWorld maps the world into it).
     // The list lives until the next call of build.

@@ -75,6 +75,7 @@ FramePlanner::FramePlanner(const scenes::Scene& scene, const scenes::SceneDescri
         return;
     }
     _selector.emplace(_walls->plan, _walls->table, description);
+    _portals.emplace(_walls->plan, _walls->table);
     for (const walls::Texture& t : _walls->plan.textures) _textures[t.id] = &t;
     _memory.resize(_walls->plan.walls.size());
 }
@@ -226,6 +227,7 @@ FramePlan FramePlanner::plan(const Residency& resident, const Residency& cellRes
     // A morphing wall's cell behind is drawn by the warp pass only.
     for (const walls::WarpWall& w : p.warpWalls) setCell(p.geometryCells, w.cell, false);
     p.objects = objectsOfCells(_scene, p.geometryCells);
+    _portals->frameSets(p.cell, p.geometryCells, _scene, p.portals);
     measureError(p);
     return p;
 }

@@ -19,7 +19,8 @@
 //      same side) if they are still resident and still within the plan's alpha for this eye
 //      (maxAngularError), else it is drawn as geometry (its cell behind joins the geometry
 //      cells): a wall is never black or missing. Such walls are flagged `fallback`.
-//   4. geometry: all structure + objects without a cell + objects of the geometry cells.
+//   4. geometry: all structure + objects without a cell + objects of the geometry cells, each
+//      neighbour's objects with the chains of walls it is seen through (FramePlan::portals).
 //      Geometry paging (walls/geometry_pager.h, plan's `cellResident` given): a wall whose cell
 //      behind would be drawn as geometry while that cell's geometry is not resident keeps its
 //      textures instead (this frame's, renormalised without the geometry weight, or the last
@@ -55,6 +56,7 @@
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
 #include "walls/frame_select.h"
+#include "walls/portal_chains.h"
 #include "walkthrough/frame_types.h"
 #include "walls/wall_setup.h"
 #include "walls/warp_wall.h"
@@ -110,6 +112,9 @@ struct FramePlan {
     int cell = -1, zone = -1;         // as FrameResult
     std::vector<bool> geometryCells;  // per description cell: drawn as geometry
     std::vector<int> objects;         // Scene::objects drawn by the scene renderer
+    // Portal culling of the neighbours drawn as geometry (walls/portal_chains.h): per object, the
+    // chains of walls it is seen through; empty (no test) when the eye is outside every cell.
+    walls::PortalSets portals;
     std::vector<WallDrawPlan> wallDraws;
     std::vector<walls::WarpWall> warpWalls;  // Transition::Warp: walls drawn warped
     std::vector<WallMorph> morphs;           // walls in a warp-morph this frame
@@ -179,6 +184,7 @@ private:
     double _morphSeconds;
     std::vector<int> _screens;
     std::optional<walls::FrameSelector> _selector;
+    std::optional<walls::PortalChains> _portals;
     std::map<int, const walls::Texture*> _textures;  // by id
     std::vector<Memory> _memory;                     // per wall
     // The frame between requests() and plan().

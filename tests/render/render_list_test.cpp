@@ -1,5 +1,6 @@
 // Render lists (render/render_list.h): what a view draws, in which order and batches.
 #include "display/display.h"
+#include "render/portal_cull.h"
 #include "render/render_list.h"
 #include "scenes/bvh.h"
 #include "tests/render/render_test_scenes.h"
@@ -89,6 +90,35 @@ scenes::Scene threeCubes() {
     addCube(scene, {0, 0, -3}, 0.5, structure);
     addCube(scene, {1, 0, -3});
     return scene;
+}
+
+// Portal culling from the view's eye in the world: what the frustum keeps less what no chain
+// shows, the structure and unlisted objects untouched.
+TEST(RenderList, PortalsCullFromTheViewsEyeInTheWorld) {
+    const scenes::Scene scene = scattered();
+    const RenderScene rs(scene, false);
+    ListBuilder builder(rs);
+    const display::ScreenView view = frontView();
+    PortalSets portals;
+    portals.portals = {{{-2.0, -2.0, -5.0}, {2.0, -2.0, -5.0}, {-2.0, 2.0, -5.0}}};  // 4 m, 5 m ahead
+    portals.chains = {{0}};
+    portals.sets = {{0}};
+    portals.objectSet.assign(scene.objects.size(), 0);
+    portals.objectSet[0] = -1;
+    DrawFilter filter;
+    filter.portals = &portals;
+    for (const glm::dvec3 shift : {glm::dvec3(0.0), glm::dvec3(0.5, -0.3, 2.0)}) {
+        const glm::dmat4 frameFromWorld = glm::translate(glm::dmat4(1.0), -shift);  // the eye at `shift`
+        const std::vector<int> all = objectsOf(builder.build(view.frustum, frameFromWorld, {}));
+        const std::vector<int> drawn = objectsOf(builder.build(view.frustum, frameFromWorld, filter));
+        const PortalView portalView(portals, shift);
+        std::set<int> expected;
+        for (int i : all)
+            if (portalView.visible(i, scene.objects[i].worldBounds)) expected.insert(i);
+        EXPECT_EQ(std::set<int>(drawn.begin(), drawn.end()), expected);
+        EXPECT_LT(drawn.size(), all.size() / 2);  // a 4 m portal 5 m away hides most of the view
+        EXPECT_GT(drawn.size(), 3u);
+    }
 }
 
 TEST(RenderList, FilterSelectsByListAndRoleAndCullingCanBeTurnedOff) {

@@ -14,6 +14,7 @@
 #include "render/lod_choice.h"
 #include "walkthrough/frame_planner.h"
 #include "walls/frame_select.h"
+#include "walls/portal_chains.h"
 #include "walls/bake_key.h"
 #include "walls/gl/wall_pass.h"
 #include "walls/gl/wall_quad.h"
@@ -406,6 +407,8 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
                   const ReferenceImages& reference) {
     assert(!runs.empty());
     const walls::FrameSelector selector(setup.plan, setup.table, c.description);
+    const walls::PortalChains portalChains(setup.plan, setup.table);
+    walls::PortalSets portals;
     const display::gl::RenderTargets targets(c.display, c.context);
     render::gl::RenderSettings settings;
     settings.lodPixels = runs.front().acc->mode().lodPixels;
@@ -422,10 +425,12 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
         const auto start = std::chrono::steady_clock::now();
         const glm::dvec3 eye(in.worldFromCave * glm::dvec4(in.head.position, 1.0));
         const walls::FrameSelection selection = selector.select(eye);
-        const std::vector<int> objects = walkthrough::objectsOfCells(
-            c.scene, cellMask(selection, c.description.cells.size(), kind == CellDraw::Near));
+        const std::vector<bool> cells = cellMask(selection, c.description.cells.size(), kind == CellDraw::Near);
+        const std::vector<int> objects = walkthrough::objectsOfCells(c.scene, cells);
+        portalChains.frameSets(selection.cell, cells, c.scene, portals);
         render::DrawFilter filter;
         filter.objects = &objects;
+        if (!portals.objectSet.empty()) filter.portals = &portals;
         renderer.setOcclusionContext(static_cast<std::uint32_t>(kind));
         std::vector<walls::gl::WallDraw> quads;
         if (kind == CellDraw::Near)

@@ -1,0 +1,64 @@
+#pragma once
+// Portal culling (Luebke & Georges 1995, "Portals and mirrors"): an object that the viewer can
+// see only through openings is drawn in a view only when its world bounds may be seen through
+// them from that view's eye.
+//
+// An opening (a portal) is a planar parallelogram, display::ScreenQuad in world coordinates. A
+// chain is a run of portals, the viewer's side first: what lies behind the last one is seen
+// through all of them. An object's set lists the chains that may show it; the object is drawn
+// when one of them does.
+//
+// The test is conservative, never the other way: a box counts as unseen through a portal only
+// when the eye is at least kPortalEyeClearance from the portal's plane, the whole box lies
+// beyond that plane, and the box lies wholly outside one of the four planes through the eye
+// and an edge of the portal. A chain's portals are tested one by one, so a box seen through each
+// of them but not through all at once is still drawn. Plain data and a per-view test, no GL.
+
+#include "display/off_axis.h"
+#include "scenes/scene.h"
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <vector>
+
+namespace cavewall::render {
+
+// An eye closer than this to a portal's plane (metres) sees through it without test: the
+// pyramid through its edges degenerates there.
+inline constexpr double kPortalEyeClearance = 1e-3;
+
+struct PortalSets {
+    std::vector<display::ScreenQuad> portals;  // world
+    std::vector<std::vector<int>> chains;      // indices into portals, the viewer's side first
+    std::vector<std::vector<int>> sets;        // indices into chains
+    std::vector<int> objectSet;                // per scene object: index into sets; -1 or past the
+                                               // end: drawn without portal test
+};
+
+// Whether `box` may be seen from `eye` through `portal` (the test above).
+bool seenThrough(const scenes::Bounds& box, glm::dvec3 eye, const display::ScreenQuad& portal);
+
+// The portals' planes from one eye, built once per view; answers per object.
+class PortalView {
+public:
+    // Keeps a reference to `sets`, which must outlive the view.
+    PortalView(const PortalSets& sets, glm::dvec3 eye);
+
+    // Whether object `object` with world bounds `box` may be seen: true without a set, else
+    // true when every portal of one of its set's chains may show it.
+    bool visible(int object, const scenes::Bounds& box) const;
+
+private:
+    struct Pyramid {
+        bool open = true;                 // the eye is too close to the plane: no test
+        glm::dvec4 plane{0.0};            // the portal's plane, positive on the eye's side
+        std::array<glm::dvec4, 4> sides;  // through the eye and an edge, positive inside
+    };
+    bool seen(const Pyramid& p, const scenes::Bounds& box) const;
+
+    const PortalSets& _sets;
+    std::vector<Pyramid> _pyramids;  // parallel to PortalSets::portals
+};
+
+}  // namespace cavewall::render
