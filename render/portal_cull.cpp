@@ -28,10 +28,8 @@ PortalView::PortalView(const PortalSets& sets, glm::dvec3 eye) : _sets(sets) {
         const double length = glm::length(n);
         Pyramid& p = _pyramids[i];
         if (!(length > 0.0) || !std::isfinite(length)) continue;  // degenerate: open
-        glm::dvec4 plane = planeThrough(n / length, q.lowerLeft);
-        const double eyeSide = glm::dot(glm::dvec3(plane), eye) + plane.w;
-        if (!(std::abs(eyeSide) >= kPortalEyeClearance)) continue;
-        if (eyeSide < 0.0) plane = -plane;
+        const glm::dvec4 plane = planeThrough(n / length, q.lowerLeft);
+        if (!(glm::dot(glm::dvec3(plane), eye) + plane.w >= kPortalEyeClearance)) continue;
         const glm::dvec3 centre = q.lowerLeft + 0.5 * (u + v);
         const std::array<glm::dvec3, 4> corners = {q.lowerLeft, q.lowerRight, q.lowerRight + v, q.upperLeft};
         for (int k = 0; k < 4; ++k) {
@@ -47,8 +45,7 @@ PortalView::PortalView(const PortalSets& sets, glm::dvec3 eye) : _sets(sets) {
 
 bool PortalView::seen(const Pyramid& p, const scenes::Bounds& box) const {
     if (p.open || box.empty()) return true;
-    // A corner on the eye's side of the portal's plane (or on it) may be seen directly.
-    if (maxOver(p.plane, box) >= 0.0) return true;
+    if (-maxOver(-p.plane, box) > 0.0) return false;  // wholly in front of the portal
     for (const glm::dvec4& side : p.sides)
         if (maxOver(side, box) < 0.0) return false;
     return true;

@@ -3,16 +3,18 @@
 // see only through openings is drawn in a view only when its world bounds may be seen through
 // them from that view's eye.
 //
-// An opening (a portal) is a planar parallelogram, display::ScreenQuad in world coordinates. A
-// chain is a run of portals, the viewer's side first: what lies behind the last one is seen
+// An opening (a portal) is a planar parallelogram, display::ScreenQuad in world coordinates,
+// whose normal (the screen's, towards its viewer) points to the side it is looked through from.
+// A chain is a run of portals, the viewer's side first: what lies behind the last one is seen
 // through all of them. An object's set lists the chains that may show it; the object is drawn
 // when one of them does.
 //
-// The test is conservative, never the other way: a box counts as unseen through a portal only
-// when the eye is at least kPortalEyeClearance from the portal's plane, the whole box lies
-// beyond that plane, and the box lies wholly outside one of the four planes through the eye
-// and an edge of the portal. A chain's portals are tested one by one, so a box seen through each
-// of them but not through all at once is still drawn. Plain data and a per-view test, no GL.
+// The test is conservative, never the other way. From an eye at least kPortalEyeClearance on
+// the portal's front side, a box is unseen through it when it lies wholly in front of the
+// portal's plane (strictly) or wholly outside one of the four planes through the eye and an edge
+// of the portal. From any other eye the portal is open: everything is seen through it. A
+// chain's portals are tested one by one, so a box seen through each of them but not through all
+// at once is still drawn. Plain data and a per-view test, no GL.
 
 #include "display/off_axis.h"
 #include "scenes/scene.h"
@@ -24,8 +26,8 @@
 
 namespace cavewall::render {
 
-// An eye closer than this to a portal's plane (metres) sees through it without test: the
-// pyramid through its edges degenerates there.
+// An eye closer than this to a portal's plane (metres), or behind it, sees through it without
+// test: the pyramid through its edges degenerates there.
 inline constexpr double kPortalEyeClearance = 1e-3;
 
 struct PortalSets {
@@ -51,8 +53,8 @@ public:
 
 private:
     struct Pyramid {
-        bool open = true;                 // the eye is too close to the plane: no test
-        glm::dvec4 plane{0.0};            // the portal's plane, positive on the eye's side
+        bool open = true;                 // the eye is not clear in front of the portal: no test
+        glm::dvec4 plane{0.0};            // the portal's plane, positive in front
         std::array<glm::dvec4, 4> sides;  // through the eye and an edge, positive inside
     };
     bool seen(const Pyramid& p, const scenes::Bounds& box) const;

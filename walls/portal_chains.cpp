@@ -1,5 +1,7 @@
 #include "walls/portal_chains.h"
 
+#include "walls/visibility.h"
+
 #include <algorithm>
 #include <map>
 
@@ -7,43 +9,84 @@ namespace cavewall::walls {
 
 namespace {
 
+// How far an open boundary part reaches below and above its cell's floor, metres: far enough
+// that the pyramid through it is the wedge through its floor segment.
+constexpr double kOpeningReach = 1000.0;
+
+// The opening over the floor segment [a, b] of `cell`'s boundary, reaching kOpeningReach below
+// and above its floor, its normal into the cell.
+display::ScreenQuad openingQuad(const scenes::Cell& cell, glm::dvec2 a, glm::dvec2 b) {
+    glm::dvec2 inside(0.0);
+    for (const glm::dvec2& p : cell.region) inside += p / static_cast<double>(cell.region.size());
+    const glm::dvec2 along = b - a, into = inside - a;
+    if (along.x * into.y - along.y * into.x < 0.0) std::swap(a, b);  // the normal (-dz, dx) into the cell
+    const double y = cell.floorY;
+    return {{a.x, y - kOpeningReach, a.y}, {b.x, y - kOpeningReach, b.y}, {a.x, y + kOpeningReach, a.y}};
+}
+
 void addChain(std::vector<std::vector<int>>& chains, std::vector<int> chain) {
     if (std::find(chains.begin(), chains.end(), chain) == chains.end()) chains.push_back(std::move(chain));
 }
 
 }  // namespace
 
-PortalChains::PortalChains(const Plan& plan, const VisibilityTable& table) : _cellCount(table.cellCount) {
+PortalChains::PortalChains(const Plan& plan, const VisibilityTable& table, const scenes::SceneDescription& description)
+    : _cellCount(table.cellCount) {
     const int n = _cellCount;
     _chains.resize(static_cast<std::size_t>(n) * n);
-    for (const PlannedWall& w : plan.walls) _quads.push_back(w.quad);
+    // Wall w looked through from side s (its cells[s]) is portal 2w + s.
+    for (const PlannedWall& w : plan.walls) {
+        _quads.push_back(quadSeenFrom(w.quad, 0));
+        _quads.push_back(quadSeenFrom(w.quad, 1));
+    }
     auto at = [&](int eye, int cell) -> std::vector<std::vector<int>>& {
         return _chains[static_cast<std::size_t>(eye) * n + cell];
     };
     auto valid = [&](int c) { return c >= 0 && c < n; };
+    std::vector<std::vector<int>> openings(n);  // per cell: its walls and open boundary parts
     for (int w = 0; w < static_cast<int>(plan.walls.size()); ++w) {
         const auto& cells = plan.walls[w].cells;
-        for (int s = 0; s < 2; ++s)
-            if (valid(cells[s]) && valid(cells[1 - s]) && cells[s] != cells[1 - s])
-                addChain(at(cells[s], cells[1 - s]), {w});
+        for (int s = 0; s < 2; ++s) {
+            const int e = cells[s];
+            if (!valid(e)) continue;
+            openings[e].push_back(2 * w + s);
+            if (valid(cells[1 - s]) && cells[1 - s] != e) addChain(at(e, cells[1 - s]), {2 * w + s});
+            // The cells the wall's textures show from e may be drawn as geometry too.
+            for (int c = 0; c < n; ++c) {
+                const std::vector<int>& through = table.throughWalls(e, c);
+                if (c != e && std::find(through.begin(), through.end(), w) != through.end())
+                    addChain(at(e, c), {2 * w + s});
+            }
+        }
     }
-    // Beyond sides: parents precede their children (Plan::beyond).
+    // Beyond sides, looked through from the neighbour's side; parents precede their children.
     std::vector<std::vector<int>> beyondChain(plan.beyond.size());
     for (std::size_t i = 0; i < plan.beyond.size(); ++i) {
         const BeyondSide& b = plan.beyond[i];
         std::vector<int>& chain = beyondChain[i];
-        if (b.parent >= 0 && static_cast<std::size_t>(b.parent) < i)
+        if (b.parent >= 0 && static_cast<std::size_t>(b.parent) < i) {
             chain = beyondChain[static_cast<std::size_t>(b.parent)];
-        else if (b.viaWall >= 0)
-            chain = {b.viaWall};
-        chain.push_back(b.side.wall);
+        } else if (b.viaWall >= 0 && valid(b.eyeCell)) {
+            const auto& cells = plan.walls[b.viaWall].cells;
+            chain = {2 * b.viaWall + (cells[0] == b.eyeCell ? 0 : 1)};
+        }
+        chain.push_back(2 * b.side.wall + b.side.side);
         const int behind = plan.walls[b.side.wall].cells[1 - b.side.side];
         if (valid(b.eyeCell) && valid(behind) && behind != b.eyeCell) addChain(at(b.eyeCell, behind), chain);
     }
-    // Seen without test: the eye's own cell and cells seen through open boundaries.
+    for (int e = 0; e < n && e < static_cast<int>(description.cells.size()); ++e)
+        for (const auto& [a, b] : openBoundary(description, e)) {
+            openings[e].push_back(static_cast<int>(_quads.size()));
+            _quads.push_back(openingQuad(description.cells[e], a, b));
+        }
+    // The eye's own cell without test; cells seen directly through any one opening of it.
     for (int e = 0; e < n; ++e)
-        for (int c = 0; c < n; ++c)
-            if (c == e || table.at(e, c) == CellVisibility::Geometry) at(e, c).clear();
+        for (int c = 0; c < n; ++c) {
+            std::vector<std::vector<int>>& chains = at(e, c);
+            if (c == e || table.at(e, c) == CellVisibility::Geometry) chains.clear();
+            if (c != e && table.at(e, c) == CellVisibility::Geometry)
+                for (int o : openings[e]) chains.push_back({o});
+        }
 }
 
 const std::vector<std::vector<int>>& PortalChains::chains(int eyeCell, int cell) const {

@@ -8,15 +8,21 @@
 // neighbour (Plan::beyond) through the chain of walls that leads there (the wall of E, then the
 // far wall; three walls at the second level). So a view need not draw the parts of those cells
 // that no such chain shows. Every wall and every beyond side planned for E counts, whatever its
-// weight this frame, so the sets depend on E only and a view misses nothing a chain shows. E
-// itself, cells E sees through open boundaries (CellVisibility::Geometry), structure and objects
-// without a cell are drawn without test, as is an object one of whose drawn cells is.
+// weight this frame, so the sets depend on E only and a view misses nothing a chain shows.
 //
-// What this leaves out is what the textures leave out too: a neighbour seen past the virtual
-// walls (through a gap between a portal and the real wall around it) is drawn in no zone.
+// A cell E sees directly (CellVisibility::Geometry: joined through open boundaries) is on E's
+// storey, so a line of sight from E's eye to it leaves E's floor polygon through its side: through
+// one of E's walls or through E's open boundary (walls/visibility.h: openBoundary), each part of
+// which is an opening from 1 km below E's floor to 1 km above it. Such a cell is seen through any
+// one of those openings. E itself, structure and objects without a cell are drawn without test,
+// as is an object one of whose drawn cells is, and every cell when E has no opening at all.
+//
+// What this leaves out is what the textures leave out too: what real walls hide in the
+// visibility model (walls/visibility.h) and what lies past a virtual wall's top.
 
 #include "render/portal_cull.h"
 #include "scenes/scene.h"
+#include "scenes/scene_description.h"
 #include "walls/plan.h"
 #include "walls/visibility.h"
 
@@ -28,11 +34,12 @@ using PortalSets = render::PortalSets;
 
 class PortalChains {
 public:
-    // Keeps nothing of its arguments; `table` must be the plan's cells' visibility.
-    PortalChains(const Plan& plan, const VisibilityTable& table);
+    // Keeps nothing of its arguments; `table` must be the plan's cells' visibility of
+    // `description`.
+    PortalChains(const Plan& plan, const VisibilityTable& table, const scenes::SceneDescription& description);
 
-    // The chains (indices into Plan::walls) through which `cell` is seen from `eyeCell`; empty
-    // when it is seen without test (the eye's own cell, an open boundary, or no chain known).
+    // The chains through which `cell` is seen from `eyeCell`, as indices into portals(); empty
+    // when it is seen without test (the eye's own cell, or no chain known).
     const std::vector<std::vector<int>>& chains(int eyeCell, int cell) const;
 
     // The portal sets of a frame whose viewer is in `eyeCell` and which draws the cells marked
@@ -42,9 +49,13 @@ public:
     void frameSets(int eyeCell, const std::vector<bool>& drawn, const scenes::Scene& scene,
                    render::PortalSets& out) const;
 
+    // Every opening: the planned walls' quads (indexed as Plan::walls), then each cell's open
+    // boundary parts.
+    const std::vector<display::ScreenQuad>& portals() const { return _quads; }
+
 private:
     int _cellCount = 0;
-    std::vector<display::ScreenQuad> _quads;             // parallel to Plan::walls
+    std::vector<display::ScreenQuad> _quads;             // walls, then open boundary parts
     std::vector<std::vector<std::vector<int>>> _chains;  // [eyeCell * cellCount + cell]
 };
 

@@ -48,16 +48,35 @@ std::vector<Segment> allFootprints(const scenes::SceneDescription& d) {
     return out;
 }
 
-// Length of `shared` minus the union of `covers` (intervals on one line).
-double uncovered(glm::dvec2 shared, std::vector<glm::dvec2> covers) {
+// The parts of `shared` outside the union of `covers` (intervals on one line), in order.
+std::vector<glm::dvec2> uncoveredParts(glm::dvec2 shared, std::vector<glm::dvec2> covers) {
     std::sort(covers.begin(), covers.end(), [](glm::dvec2 x, glm::dvec2 y) { return x.x < y.x; });
-    double open = 0, at = shared.x;
+    std::vector<glm::dvec2> out;
+    double at = shared.x;
     for (const glm::dvec2& c : covers) {
-        if (c.x > at) open += std::min(c.x, shared.y) - at;
+        if (c.x > at) out.push_back({at, std::min(c.x, shared.y)});
         at = std::max(at, c.y);
         if (at >= shared.y) break;
     }
-    return open + std::max(0.0, shared.y - at);
+    if (shared.y > at) out.push_back({at, shared.y});
+    return out;
+}
+
+// The intervals along `e` of the walls that cover it for a cell whose floor is at floorY.
+std::vector<glm::dvec2> coversOf(const Segment& e, const std::vector<Segment>& walls, double floorY) {
+    std::vector<glm::dvec2> covers;
+    for (const Segment& w : walls) {
+        glm::dvec2 c;
+        if (w.top > floorY && w.bottom < floorY + kStoreyStep && onLine(e, w, c)) covers.push_back(c);
+    }
+    return covers;
+}
+
+// Length of `shared` minus the union of `covers`.
+double uncovered(glm::dvec2 shared, std::vector<glm::dvec2> covers) {
+    double open = 0.0;
+    for (const glm::dvec2& part : uncoveredParts(shared, std::move(covers))) open += part.y - part.x;
+    return open;
 }
 
 double signedDistance(glm::dvec3 p, const display::ScreenQuad& wall, const display::ScreenBasis& b, int side) {
@@ -155,12 +174,7 @@ double openLength(const scenes::SceneDescription& d, const std::vector<Segment>&
         for (std::size_t j = 0; j < rb.size(); ++j) {
             glm::dvec2 shared;
             if (!onLine(e, {rb[j], rb[(j + 1) % rb.size()]}, shared)) continue;
-            std::vector<glm::dvec2> covers;
-            for (const Segment& w : walls) {
-                glm::dvec2 c;
-                if (w.top > floorY && w.bottom < floorY + kStoreyStep && onLine(e, w, c)) covers.push_back(c);
-            }
-            open += uncovered(shared, covers);
+            open += uncovered(shared, coversOf(e, walls, floorY));
         }
     }
     return open;
@@ -205,6 +219,21 @@ std::string describeDirectGroups(const VisibilityTable& table, const scenes::Sce
 
 double openBoundaryLength(const scenes::SceneDescription& d, int a, int b) {
     return openLength(d, allFootprints(d), a, b);
+}
+
+std::vector<std::array<glm::dvec2, 2>> openBoundary(const scenes::SceneDescription& d, int a) {
+    const std::vector<Segment> walls = allFootprints(d);
+    const auto& region = d.cells[a].region;
+    std::vector<std::array<glm::dvec2, 2>> out;
+    for (std::size_t i = 0; i < region.size(); ++i) {
+        const Segment e{region[i], region[(i + 1) % region.size()]};
+        const double length = glm::length(e.b - e.a);
+        if (!(length > kMinOpening)) continue;
+        const glm::dvec2 u = (e.b - e.a) / length;
+        for (const glm::dvec2& part : uncoveredParts({0.0, length}, coversOf(e, walls, d.cells[a].floorY)))
+            if (part.y - part.x > kMinOpening) out.push_back({e.a + part.x * u, e.a + part.y * u});
+    }
+    return out;
 }
 
 VisibilityTable computeVisibility(const scenes::SceneDescription& d) {

@@ -12,6 +12,7 @@
 #include "scenes/scene_description.h"
 #include "walls/plan.h"
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -49,6 +50,11 @@ std::string describeDirectGroups(const VisibilityTable& table, const scenes::Sce
 // reaching into the first metre above a's floor covers; 0 between cells whose floors differ by
 // more than 1 m (different storeys, stacked or side by side).
 double openBoundaryLength(const scenes::SceneDescription& description, int a, int b);
+
+// The parts of cell a's boundary that no wall (virtual, portal or real) reaching into the first
+// metre above its floor covers, as floor segments (x, z), each longer than a millimetre: where
+// the cell is open to its neighbours and to floor no cell holds.
+std::vector<std::array<glm::dvec2, 2>> openBoundary(const scenes::SceneDescription& description, int a);
 
 // Where an axis-aligned box is relative to a wall seen from `side` (0: the front, i.e. the side
 // the wall's normal points to). Exact for the box.

@@ -9,13 +9,23 @@ namespace {
 
 using Chains = std::vector<std::vector<int>>;
 
-// Four cells in a row, 0 | 1 | 2 | 3 along x, walls w0 (0|1), w1 (1|2), w2 (2|3) at x = 1, 2, 3;
-// cell 3 also sees cell 0 through an open boundary (a Geometry entry). From cell 0, the far
-// wall w1 of neighbour 1 is a beyond side, and w2 one at the second level.
+// Four 1 m cells in a row, 0 | 1 | 2 | 3 along x (z in [0, 1]), walls w0 (0|1), w1 (1|2), w2
+// (2|3) at x = 1, 2, 3; cell 3 also sees cell 0 through an open boundary (a Geometry entry, as
+// if joined around the row). From cell 0, the far wall w1 of neighbour 1 is a beyond side, and
+// w2 one at the second level. Real walls close cell 0 but for z = 1, x in [0.5, 1]; the other
+// cells are open all round.
 struct Row {
+    scenes::SceneDescription description;
     Plan plan;
     VisibilityTable table;
     Row() {
+        for (int c = 0; c < 4; ++c) description.cells.push_back({"c", {{c, 0}, {c + 1, 0}, {c + 1, 1}, {c, 1}}, 0.0});
+        auto real = [&](glm::dvec2 a, glm::dvec2 b) {
+            description.realWalls.push_back({"r", {a.x, 0, a.y}, {b.x, 0, b.y}, {a.x, 3, a.y}});
+        };
+        real({0, 0}, {1, 0});
+        real({0, 0}, {0, 1});
+        real({0, 1}, {0.5, 1});
         for (int w = 0; w < 3; ++w) {
             PlannedWall p;
             p.id = w;
@@ -23,6 +33,7 @@ struct Row {
             p.quad = {{x, 0.0, 0.0}, {x, 0.0, 1.0}, {x, 2.0, 0.0}};
             p.cells = {w, w + 1};
             plan.walls.push_back(p);
+            description.walls.push_back({"w", p.quad.lowerLeft, p.quad.lowerRight, p.quad.upperLeft, p.cells});
         }
         BeyondSide first;
         first.eyeCell = 0;
@@ -41,20 +52,68 @@ struct Row {
     }
 };
 
+// Wall w looked through from its front (cells[0]) is portal 2w, from its back 2w + 1.
 TEST(PortalChains, NeighboursThroughTheirWallsAndCellsBeyondThroughTheChain) {
     const Row row;
-    const PortalChains chains(row.plan, row.table);
+    const PortalChains chains(row.plan, row.table, row.description);
     EXPECT_EQ(chains.chains(0, 1), (Chains{{0}}));
-    EXPECT_EQ(chains.chains(0, 2), (Chains{{0, 1}}));
-    EXPECT_EQ(chains.chains(1, 0), (Chains{{0}}));
-    EXPECT_EQ(chains.chains(1, 2), (Chains{{1}}));
-    EXPECT_EQ(chains.chains(2, 3), (Chains{{2}}));
-    // Without test: the eye's own cell, an open boundary, and out of range.
+    EXPECT_EQ(chains.chains(0, 2), (Chains{{0, 2}}));
+    EXPECT_EQ(chains.chains(1, 0), (Chains{{1}}));
+    EXPECT_EQ(chains.chains(1, 2), (Chains{{2}}));
+    EXPECT_EQ(chains.chains(2, 3), (Chains{{4}}));
+    // Each wall's portal faces the cell it is looked through from.
+    for (int w = 0; w < 3; ++w)
+        for (int s = 0; s < 2; ++s) {
+            const display::ScreenQuad& q = chains.portals().at(2 * w + s);
+            const glm::dvec3 normal = glm::cross(q.lowerRight - q.lowerLeft, q.upperLeft - q.lowerLeft);
+            const int cell = row.plan.walls[w].cells[s];
+            EXPECT_GT(glm::dot(normal, glm::dvec3(cell + 0.5, 1.0, 0.5) - q.lowerLeft), 0.0) << w << " " << s;
+        }
+    // Without test: the eye's own cell, and out of range.
     EXPECT_TRUE(chains.chains(1, 1).empty());
-    EXPECT_TRUE(chains.chains(0, 3).empty());
-    EXPECT_TRUE(chains.chains(3, 0).empty());
     EXPECT_TRUE(chains.chains(-1, 1).empty());
     EXPECT_TRUE(chains.chains(0, 4).empty());
+}
+
+TEST(PortalChains, CellsATextureShowsAreSeenThroughItsWall) {
+    Row row;
+    row.table.walls[0 * 4 + 3] = {0};  // cell 3 shows in w0's textures from cell 0
+    row.table.entries[3 * 4 + 0] = row.table.entries[0 * 4 + 3] = CellVisibility::Texture;
+    const PortalChains chains(row.plan, row.table, row.description);
+    EXPECT_EQ(chains.chains(0, 3), (Chains{{0}, {0, 2, 4}}));
+}
+
+TEST(PortalChains, ACellSeenDirectlyIsSeenThroughAnyOpeningOfTheEyesCell) {
+    const Row row;
+    const PortalChains chains(row.plan, row.table, row.description);
+    // Cell 0: its wall w0 and its one open part, z = 1 for x in [0.5, 1], reaching far up and down.
+    const Chains fromZero = chains.chains(0, 3);
+    ASSERT_EQ(fromZero.size(), 2u);
+    EXPECT_EQ(fromZero[0], std::vector<int>{0});
+    EXPECT_EQ(fromZero[1], std::vector<int>{6});  // after the walls' six
+    const display::ScreenQuad& open = chains.portals().at(fromZero[1].at(0));
+    // Its normal into cell 0 (towards -z): from (1, 1) to (0.5, 1).
+    EXPECT_EQ(glm::dvec2(open.lowerLeft.x, open.lowerLeft.z), glm::dvec2(1.0, 1.0));
+    EXPECT_EQ(glm::dvec2(open.lowerRight.x, open.lowerRight.z), glm::dvec2(0.5, 1.0));
+    EXPECT_LT(open.lowerLeft.y, -100.0);
+    EXPECT_GT(open.upperLeft.y, 100.0);
+    // Cell 3: its wall w2 and three open sides.
+    EXPECT_EQ(chains.chains(3, 0).size(), 4u);
+    // From (0.75, 1.7, 0.5): a box past the open part is seen through it; one past the real
+    // walls west of the cell is seen through neither opening.
+    PortalSets sets;
+    sets.portals = chains.portals();
+    sets.chains = fromZero;
+    sets.sets = {{0, 1}};
+    sets.objectSet = {0, 0};
+    const render::PortalView view(sets, {0.75, 1.7, 0.5});
+    scenes::Bounds north, west;
+    north.add({0.6, 0.0, 3.0});
+    north.add({1.0, 1.0, 3.5});
+    west.add({-3.0, 0.0, 0.2});
+    west.add({-2.5, 1.0, 0.8});
+    EXPECT_TRUE(view.visible(0, north));
+    EXPECT_FALSE(view.visible(1, west));
 }
 
 scenes::Object object(int cell, std::vector<int> more = {}, scenes::Role role = scenes::Role::Content) {
@@ -67,7 +126,7 @@ scenes::Object object(int cell, std::vector<int> more = {}, scenes::Role role = 
 
 TEST(PortalChains, FrameSetsGiveEachObjectTheChainsOfItsDrawnCells) {
     const Row row;
-    const PortalChains chains(row.plan, row.table);
+    const PortalChains chains(row.plan, row.table, row.description);
     scenes::Scene scene;
     scene.objects = {object(0),
                      object(1),
@@ -81,7 +140,7 @@ TEST(PortalChains, FrameSetsGiveEachObjectTheChainsOfItsDrawnCells) {
     PortalSets sets;
     chains.frameSets(0, {true, true, false, true}, scene, sets);
     ASSERT_EQ(sets.objectSet.size(), scene.objects.size());
-    EXPECT_EQ(sets.portals.size(), 3u);
+    EXPECT_EQ(sets.portals, chains.portals());
     auto chainsOf = [&](int object) {
         Chains out;
         const int set = sets.objectSet[object];
@@ -96,14 +155,14 @@ TEST(PortalChains, FrameSetsGiveEachObjectTheChainsOfItsDrawnCells) {
     EXPECT_EQ(sets.objectSet[4], -1);                 // reaches the eye's cell
     EXPECT_EQ(sets.objectSet[5], -1);                 // no cell
     EXPECT_EQ(sets.objectSet[6], -1);                 // structure
-    EXPECT_EQ(sets.objectSet[7], -1);                 // cell 3: open boundary
+    EXPECT_EQ(chainsOf(7), chains.chains(0, 3));      // cell 3: any opening of cell 0
     EXPECT_EQ(sets.objectSet[8], -1);                 // a cell the description does not have
     EXPECT_EQ(sets.objectSet[3], sets.objectSet[1]);  // one set per combination of cells
 
     chains.frameSets(0, {true, true, true, false}, scene, sets);
-    EXPECT_EQ(chainsOf(2), (Chains{{0, 1}}));
-    EXPECT_EQ(chainsOf(3), (Chains{{0}, {0, 1}}));
-    EXPECT_EQ(chainsOf(7), (Chains{{0, 1}}));
+    EXPECT_EQ(chainsOf(2), (Chains{{0, 2}}));
+    EXPECT_EQ(chainsOf(3), (Chains{{0}, {0, 2}}));
+    EXPECT_EQ(chainsOf(7), (Chains{{0, 2}}));
 
     chains.frameSets(-1, {true, true, true, true}, scene, sets);  // outside every cell
     EXPECT_TRUE(sets.portals.empty());

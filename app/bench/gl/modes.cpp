@@ -407,7 +407,7 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
                   const ReferenceImages& reference) {
     assert(!runs.empty());
     const walls::FrameSelector selector(setup.plan, setup.table, c.description);
-    const walls::PortalChains portalChains(setup.plan, setup.table);
+    const walls::PortalChains portalChains(setup.plan, setup.table, c.description);
     walls::PortalSets portals;
     const display::gl::RenderTargets targets(c.display, c.context);
     render::gl::RenderSettings settings;
