@@ -61,6 +61,9 @@ struct WalkthroughSettings {
     // zones and blend strips, structure) and no wall texture; none is requested or loaded
     // (walkthrough/frame_planner.h FramePlanner::drawTextures). Blend transition only.
     bool wallTextures = true;
+    // Neighbours drawn as geometry are drawn only where their objects may be seen through the
+    // openings of the viewer's cell (FramePlan::portals, render/portal_cull.h). False: whole.
+    bool portalCulling = true;
 };
 
 struct FrameInput {

@@ -451,7 +451,7 @@ walkthrough::FrameResult Walkthrough::renderFrame(const walkthrough::FrameInput&
     if (_options.baker) result.texturesToBake = _options.baker->stats().missing;
     render::DrawFilter filter;
     filter.objects = &plan.objects;
-    if (!plan.portals.objectSet.empty()) filter.portals = &plan.portals;
+    if (_options.portalCulling && !plan.portals.objectSet.empty()) filter.portals = &plan.portals;
     if (_clusters) {
         planClusters(input, plan.eyeWorld, _clusters->drawn, result);
         filter.objects = &_clusters->drawn;

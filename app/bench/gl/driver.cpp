@@ -135,7 +135,11 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                                  "the depth drawn so far does not hide; the same images); triangles a frame are those "
                                  "drawn"
                            : std::string("occlusion culling: off (--no-occlusion: every mode draws what its frustum "
-                                         "and cells keep)")};
+                                         "and cells keep)"),
+            o.portalCulling ? "portal culling: on (walls modes and the control: each view draws a neighbour's objects "
+                              "only where their boxes may be seen from its eye through the viewer cell's walls and "
+                              "open boundary, walls/portal_chains.h)"
+                            : "portal culling: off (--no-portal-culling: neighbours drawn as geometry are drawn whole)"};
 }
 
 // The checks that need no file: they fail before anything is loaded.
@@ -470,7 +474,8 @@ BenchReport runBenchmark(const BenchOptions& o) {
                         o.wallKind,
                         o.clusters ? (o.cache ? *o.cache : walls::gl::defaultCacheFolder()) : std::filesystem::path(),
                         walls::ReprojectSettings{.cutSheets = !o.keepSheets},
-                        o.occlusion};
+                        o.occlusion,
+                        o.portalCulling};
 
     const std::vector<BakedWalls> baked = bakeOwnWalls(o, o.wallKind, scene, description, *context, report);
     const std::vector<BakedWalls> flatBaked =

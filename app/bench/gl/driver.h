@@ -86,6 +86,8 @@ struct BenchOptions {
     // (RenderSettings::occlusion; --no-occlusion, --occlusion-min, --occlusion-min-draws);
     // triangles a frame are then those drawn.
     render::OcclusionSettings occlusion;
+    // --no-portal-culling: the neighbours drawn as geometry are drawn whole (walls and control).
+    bool portalCulling = true;
     // --texture-format: storage of the baked colour (walls/texture_blocks.h), disk and GPU
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
     std::optional<std::filesystem::path> cache;  // bake cache (default: the baker's)

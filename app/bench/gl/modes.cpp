@@ -241,6 +241,7 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         options.transition = run.transition;
         options.render.lodPixels = mode.lodPixels;
         options.render.occlusion = c.occlusion;
+        options.portalCulling = c.portalCulling;
         options.triangleBudget = mode.triangleBudget;
         options.lodMaxPixels = c.lodMaxPixels;
         options.wallKind = run.wallKind.value_or(c.wallKind);
@@ -295,6 +296,7 @@ double runOnDemandMode(const ModeContext& c, walls::WallSetup walls, walls::gl::
     options.wallKind = c.wallKind;
     options.depthMarch = c.depthMarch;
     options.render.occlusion = c.occlusion;
+    options.portalCulling = c.portalCulling;
     walkthrough::gl::Walkthrough walkthrough(c.scene, c.description, c.display, c.context, std::move(walls), options);
     if (c.path.frames.empty()) return display::msSince(start) / 1000.0;
     walkthrough.renderFrame(c.path.frames.front());
@@ -320,6 +322,7 @@ NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::Wall
     options.uploadMBPerFrame = 4096.0;
     options.render.lodPixels = mode.lodPixels;
     options.render.occlusion = c.occlusion;
+    options.portalCulling = c.portalCulling;
     options.triangleBudget = mode.triangleBudget;
     options.lodMaxPixels = c.lodMaxPixels;
     options.wallKind = c.wallKind;
@@ -430,7 +433,7 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
         portalChains.frameSets(selection.cell, cells, c.scene, portals);
         render::DrawFilter filter;
         filter.objects = &objects;
-        if (!portals.objectSet.empty()) filter.portals = &portals;
+        if (c.portalCulling && !portals.objectSet.empty()) filter.portals = &portals;
         renderer.setOcclusionContext(static_cast<std::uint32_t>(kind));
         std::vector<walls::gl::WallDraw> quads;
         if (kind == CellDraw::Near)
