@@ -32,18 +32,39 @@ void addChain(std::vector<std::vector<int>>& chains, std::vector<int> chain) {
 
 PortalChains::PortalChains(const Plan& plan, const VisibilityTable& table, const scenes::SceneDescription& description)
     : _cellCount(table.cellCount) {
-    const int n = _cellCount;
-    _chains.resize(static_cast<std::size_t>(n) * n);
-    // Wall w looked through from side s (its cells[s]) is portal 2w + s.
+    _chains.resize(static_cast<std::size_t>(_cellCount) * _cellCount);
     for (const PlannedWall& w : plan.walls) {
         _quads.push_back(quadSeenFrom(w.quad, 0));
         _quads.push_back(quadSeenFrom(w.quad, 1));
     }
-    auto at = [&](int eye, int cell) -> std::vector<std::vector<int>>& {
-        return _chains[static_cast<std::size_t>(eye) * n + cell];
-    };
-    auto valid = [&](int c) { return c >= 0 && c < n; };
-    std::vector<std::vector<int>> openings(n);  // per cell: its walls and open boundary parts
+    std::vector<std::vector<int>> openings(_cellCount);  // per cell: its walls and open boundary parts
+    addWallChains(plan, table, openings);
+    addBeyondChains(plan);
+    for (int e = 0; e < _cellCount && e < static_cast<int>(description.cells.size()); ++e)
+        for (const auto& [a, b] : openBoundary(description, e)) {
+            openings[e].push_back(static_cast<int>(_quads.size()));
+            _quads.push_back(openingQuad(description.cells[e], a, b));
+        }
+    // The eye's own cell without test; cells seen directly through any one opening of it.
+    for (int e = 0; e < _cellCount; ++e)
+        for (int c = 0; c < _cellCount; ++c) {
+            std::vector<std::vector<int>>& chains = at(e, c);
+            if (c == e || table.at(e, c) == CellVisibility::Geometry) chains.clear();
+            if (c != e && table.at(e, c) == CellVisibility::Geometry)
+                for (int o : openings[e]) chains.push_back({o});
+        }
+}
+
+std::vector<std::vector<int>>& PortalChains::at(int eyeCell, int cell) {
+    return _chains[static_cast<std::size_t>(eyeCell) * _cellCount + cell];
+}
+
+bool PortalChains::valid(int cell) const { return cell >= 0 && cell < _cellCount; }
+
+// Wall w seen from its side s is an opening of cells[s], the chain to the cell behind it and
+// to every cell its textures show from there.
+void PortalChains::addWallChains(const Plan& plan, const VisibilityTable& table,
+                                 std::vector<std::vector<int>>& openings) {
     for (int w = 0; w < static_cast<int>(plan.walls.size()); ++w) {
         const auto& cells = plan.walls[w].cells;
         for (int s = 0; s < 2; ++s) {
@@ -51,15 +72,18 @@ PortalChains::PortalChains(const Plan& plan, const VisibilityTable& table, const
             if (!valid(e)) continue;
             openings[e].push_back(2 * w + s);
             if (valid(cells[1 - s]) && cells[1 - s] != e) addChain(at(e, cells[1 - s]), {2 * w + s});
-            // The cells the wall's textures show from e may be drawn as geometry too.
-            for (int c = 0; c < n; ++c) {
+            for (int c = 0; c < _cellCount; ++c) {
                 const std::vector<int>& through = table.throughWalls(e, c);
                 if (c != e && std::find(through.begin(), through.end(), w) != through.end())
                     addChain(at(e, c), {2 * w + s});
             }
         }
     }
-    // Beyond sides, looked through from the neighbour's side; parents precede their children.
+}
+
+// A beyond side's chain: its parent's (or the eye cell's wall it is seen through), then the far
+// wall seen from the neighbour's side. Parents precede their children in Plan::beyond.
+void PortalChains::addBeyondChains(const Plan& plan) {
     std::vector<std::vector<int>> beyondChain(plan.beyond.size());
     for (std::size_t i = 0; i < plan.beyond.size(); ++i) {
         const BeyondSide& b = plan.beyond[i];
@@ -74,19 +98,6 @@ PortalChains::PortalChains(const Plan& plan, const VisibilityTable& table, const
         const int behind = plan.walls[b.side.wall].cells[1 - b.side.side];
         if (valid(b.eyeCell) && valid(behind) && behind != b.eyeCell) addChain(at(b.eyeCell, behind), chain);
     }
-    for (int e = 0; e < n && e < static_cast<int>(description.cells.size()); ++e)
-        for (const auto& [a, b] : openBoundary(description, e)) {
-            openings[e].push_back(static_cast<int>(_quads.size()));
-            _quads.push_back(openingQuad(description.cells[e], a, b));
-        }
-    // The eye's own cell without test; cells seen directly through any one opening of it.
-    for (int e = 0; e < n; ++e)
-        for (int c = 0; c < n; ++c) {
-            std::vector<std::vector<int>>& chains = at(e, c);
-            if (c == e || table.at(e, c) == CellVisibility::Geometry) chains.clear();
-            if (c != e && table.at(e, c) == CellVisibility::Geometry)
-                for (int o : openings[e]) chains.push_back({o});
-        }
 }
 
 const std::vector<std::vector<int>>& PortalChains::chains(int eyeCell, int cell) const {

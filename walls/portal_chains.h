@@ -1,10 +1,11 @@
 #pragma once
-// Which virtual walls each cell drawn as geometry is seen through, for portal culling
+// Which openings each cell drawn as geometry is seen through, for portal culling
 // (render/portal_cull.h; Luebke & Georges 1995).
 //
 // From the viewer's cell E, everything outside E that a walls frame shows is seen through E's
 // virtual walls: a neighbour drawn as geometry (its wall in a geometry zone or blend strip, or a
-// wall that fell back to geometry) through the walls between E and it, and a cell beyond such a
+// wall that fell back to geometry) through the walls between E and it and those of E whose
+// textures show it (VisibilityTable::throughWalls), and a cell beyond such a
 // neighbour (Plan::beyond) through the chain of walls that leads there (the wall of E, then the
 // far wall; three walls at the second level). So a view need not draw the parts of those cells
 // that no such chain shows. Every wall and every beyond side planned for E counts, whatever its
@@ -43,17 +44,23 @@ public:
     const std::vector<std::vector<int>>& chains(int eyeCell, int cell) const;
 
     // The portal sets of a frame whose viewer is in `eyeCell` and which draws the cells marked
-    // in `drawn` (per description cell): portals are the planned walls' quads, one set per
-    // drawn cell seen through chains, and objectSet over `scene`'s objects. No sets (every
-    // object drawn without test) when eyeCell is outside every cell.
+    // in `drawn` (per description cell): portals() as they are, one set per combination of
+    // drawn cells seen through chains that an object belongs to, and objectSet over `scene`'s
+    // objects. No sets (every object drawn without test) when eyeCell is outside every cell.
     void frameSets(int eyeCell, const std::vector<bool>& drawn, const scenes::Scene& scene,
                    render::PortalSets& out) const;
 
-    // Every opening: the planned walls' quads (indexed as Plan::walls), then each cell's open
-    // boundary parts.
+    // Every opening, its normal towards the side it is looked through from: Plan::walls[w]
+    // seen from side s (from its cells[s], walls::quadSeenFrom) is 2w + s; then each cell's open
+    // boundary parts, facing into the cell.
     const std::vector<display::ScreenQuad>& portals() const { return _quads; }
 
 private:
+    std::vector<std::vector<int>>& at(int eyeCell, int cell);
+    bool valid(int cell) const;
+    void addWallChains(const Plan& plan, const VisibilityTable& table, std::vector<std::vector<int>>& openings);
+    void addBeyondChains(const Plan& plan);
+
     int _cellCount = 0;
     std::vector<display::ScreenQuad> _quads;             // walls, then open boundary parts
     std::vector<std::vector<std::vector<int>>> _chains;  // [eyeCell * cellCount + cell]
