@@ -20,7 +20,7 @@
 //      (maxAngularError), else it is drawn as geometry (its cell behind joins the geometry
 //      cells): a wall is never black or missing. Such walls are flagged `fallback`.
 //   4. geometry: all structure + objects without a cell + objects of the geometry cells, each
-//      neighbour's objects with the chains of walls it is seen through (FramePlan::portals).
+//      neighbour's objects with the chains of openings it is seen through (FramePlan::portals).
 //      Geometry paging (walls/geometry_pager.h, plan's `cellResident` given): a wall whose cell
 //      behind would be drawn as geometry while that cell's geometry is not resident keeps its
 //      textures instead (this frame's, renormalised without the geometry weight, or the last
@@ -113,7 +113,7 @@ struct FramePlan {
     std::vector<bool> geometryCells;  // per description cell: drawn as geometry
     std::vector<int> objects;         // Scene::objects drawn by the scene renderer
     // Portal culling of the neighbours drawn as geometry (walls/portal_chains.h): per object, the
-    // chains of walls it is seen through; empty (no test) when the eye is outside every cell.
+    // chains of openings it is seen through; empty (no test) when the eye is outside every cell.
     walls::PortalSets portals;
     std::vector<WallDrawPlan> wallDraws;
     std::vector<walls::WarpWall> warpWalls;  // Transition::Warp: walls drawn warped
