@@ -114,9 +114,21 @@ void PortalChains::frameSets(int eyeCell, const std::vector<bool>& drawn, const 
     out.objectSet.assign(scene.objects.size(), -1);
     if (eyeCell < 0 || eyeCell >= _cellCount) return;
     out.portals = _quads;
-    // One set per combination of drawn cells seen through chains (most objects have one cell).
+    // One set per combination of drawn cells seen through chains: most objects have one cell,
+    // whose set is found by index; combinations by a map.
+    std::vector<int> setOfCell(static_cast<std::size_t>(_cellCount), -1);
     std::map<std::vector<int>, int> setOf;
     std::vector<int> cells;
+    auto newSet = [&](const std::vector<int>& of) {
+        std::vector<int> set;
+        for (int c : of)
+            for (const std::vector<int>& chain : chains(eyeCell, c)) {
+                set.push_back(static_cast<int>(out.chains.size()));
+                out.chains.push_back(chain);
+            }
+        out.sets.push_back(std::move(set));
+        return static_cast<int>(out.sets.size()) - 1;
+    };
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const scenes::Object& o = scene.objects[i];
         if (o.role == scenes::Role::Structure) continue;
@@ -129,18 +141,15 @@ void PortalChains::frameSets(int eyeCell, const std::vector<bool>& drawn, const 
             return free;
         });
         if (free || cells.empty()) continue;
-        std::sort(cells.begin(), cells.end());
-        auto [it, added] = setOf.try_emplace(cells, static_cast<int>(out.sets.size()));
-        if (added) {
-            std::vector<int> set;
-            for (int c : cells)
-                for (const std::vector<int>& chain : chains(eyeCell, c)) {
-                    set.push_back(static_cast<int>(out.chains.size()));
-                    out.chains.push_back(chain);
-                }
-            out.sets.push_back(std::move(set));
+        if (cells.size() == 1) {
+            int& set = setOfCell[static_cast<std::size_t>(cells[0])];
+            if (set < 0) set = newSet(cells);
+            out.objectSet[i] = set;
+            continue;
         }
-        out.objectSet[i] = it->second;
+        std::sort(cells.begin(), cells.end());
+        const auto found = setOf.find(cells);
+        out.objectSet[i] = found != setOf.end() ? found->second : setOf.emplace(cells, newSet(cells)).first->second;
     }
 }
 
