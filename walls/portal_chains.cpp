@@ -3,6 +3,8 @@
 #include "walls/visibility.h"
 
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <map>
 
 namespace cavewall::walls {
@@ -24,6 +26,22 @@ display::ScreenQuad openingQuad(const scenes::Cell& cell, glm::dvec2 a, glm::dve
     return {{a.x, y - kOpeningReach, a.y}, {b.x, y - kOpeningReach, b.y}, {a.x, y + kOpeningReach, a.y}};
 }
 
+// The floor box (x, z) of `cell`, shrunk by a centimetre so that a box only touching the
+// cell's edge does not overlap it.
+std::array<glm::dvec2, 2> floorBox(const scenes::Cell& cell) {
+    glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (const glm::dvec2& p : cell.region) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    return {lo + 0.01, hi - 0.01};
+}
+
+// Whether `b` overlaps the column over the floor box `column` (x, z), at any height.
+bool overlaps(const scenes::Bounds& b, const std::array<glm::dvec2, 2>& column) {
+    return b.min.x < column[1].x && b.max.x > column[0].x && b.min.z < column[1].y && b.max.z > column[0].y;
+}
+
 void addChain(std::vector<std::vector<int>>& chains, std::vector<int> chain) {
     if (std::find(chains.begin(), chains.end(), chain) == chains.end()) chains.push_back(std::move(chain));
 }
@@ -37,6 +55,9 @@ PortalChains::PortalChains(const Plan& plan, const VisibilityTable& table, const
         _quads.push_back(quadSeenFrom(w.quad, 0));
         _quads.push_back(quadSeenFrom(w.quad, 1));
     }
+    for (int e = 0; e < _cellCount; ++e)
+        _columns.push_back(e < static_cast<int>(description.cells.size()) ? floorBox(description.cells[e])
+                                                                          : std::array<glm::dvec2, 2>{});
     std::vector<std::vector<int>> openings(_cellCount);  // per cell: its walls and open boundary parts
     addWallChains(plan, table, openings);
     addBeyondChains(plan);
@@ -114,6 +135,7 @@ void PortalChains::frameSets(int eyeCell, const std::vector<bool>& drawn, const 
     out.objectSet.assign(scene.objects.size(), -1);
     if (eyeCell < 0 || eyeCell >= _cellCount) return;
     out.portals = _quads;
+    const std::array<glm::dvec2, 2> column = _columns[static_cast<std::size_t>(eyeCell)];
     // One set per combination of drawn cells seen through chains: most objects have one cell,
     // whose set is found by index; combinations by a map.
     std::vector<int> setOfCell(static_cast<std::size_t>(_cellCount), -1);
@@ -140,7 +162,7 @@ void PortalChains::frameSets(int eyeCell, const std::vector<bool>& drawn, const 
             cells.push_back(c);
             return free;
         });
-        if (free || cells.empty()) continue;
+        if (free || cells.empty() || overlaps(o.worldBounds, column)) continue;
         if (cells.size() == 1) {
             int& set = setOfCell[static_cast<std::size_t>(cells[0])];
             if (set < 0) set = newSet(cells);

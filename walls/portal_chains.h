@@ -17,6 +17,8 @@
 // which is an opening from 1 km below E's floor to 1 km above it. Such a cell is seen through any
 // one of those openings. E itself, structure and objects without a cell are drawn without test,
 // as is an object one of whose drawn cells is, and every cell when E has no opening at all.
+// So is an object over or under E's floor box, whatever its cells: a cell of another storey
+// stacked with E is seen within E's column, through a void or a stairwell, not through E's side.
 //
 // What this leaves out is what the textures leave out too: what real walls hide in the
 // visibility model (walls/visibility.h) and what lies past a virtual wall's top.
@@ -27,6 +29,7 @@
 #include "walls/plan.h"
 #include "walls/visibility.h"
 
+#include <array>
 #include <vector>
 
 namespace cavewall::walls {
@@ -64,6 +67,7 @@ private:
     int _cellCount = 0;
     std::vector<display::ScreenQuad> _quads;             // walls, then open boundary parts
     std::vector<std::vector<std::vector<int>>> _chains;  // [eyeCell * cellCount + cell]
+    std::vector<std::array<glm::dvec2, 2>> _columns;     // per cell: its floor box (x, z), shrunk
 };
 
 }  // namespace cavewall::walls

@@ -164,6 +164,19 @@ TEST(PortalChains, FrameSetsGiveEachObjectTheChainsOfItsDrawnCells) {
     EXPECT_EQ(chainsOf(3), (Chains{{0}, {0, 2}}));
     EXPECT_EQ(chainsOf(7), (Chains{{0, 2}}));
 
+    // Over or under the eye cell's floor (another storey, seen through a void): without test.
+    scenes::Object above = object(1), beside = object(1);
+    above.worldBounds.add({0.2, 5.0, 0.2});
+    above.worldBounds.add({0.4, 6.0, 0.4});
+    beside.worldBounds.add({1.2, 0.0, 0.2});
+    beside.worldBounds.add({1.4, 1.0, 0.4});
+    beside.worldBounds.add({0.995, 0.5, 0.3});  // touches cell 0's edge, within a centimetre
+    scene.objects.push_back(above);
+    scene.objects.push_back(beside);
+    chains.frameSets(0, {true, true, false, false}, scene, sets);
+    EXPECT_EQ(sets.objectSet[9], -1);
+    EXPECT_EQ(chainsOf(10), (Chains{{0}}));
+
     chains.frameSets(-1, {true, true, true, true}, scene, sets);  // outside every cell
     EXPECT_TRUE(sets.portals.empty());
     EXPECT_EQ(sets.objectSet, std::vector<int>(scene.objects.size(), -1));
