@@ -56,7 +56,7 @@
 #include "scenes/scene.h"
 #include "scenes/scene_description.h"
 #include "walls/frame_select.h"
-#include "walls/portal_chains.h"
+#include "walls/cell_openings.h"
 #include "walkthrough/frame_types.h"
 #include "walls/wall_setup.h"
 #include "walls/warp_wall.h"
@@ -112,7 +112,7 @@ struct FramePlan {
     int cell = -1, zone = -1;         // as FrameResult
     std::vector<bool> geometryCells;  // per description cell: drawn as geometry
     std::vector<int> objects;         // Scene::objects drawn by the scene renderer
-    // Portal culling of the neighbours drawn as geometry (walls/portal_chains.h): per object, the
+    // Portal culling of the neighbours drawn as geometry (walls/cell_openings.h): per object, the
     // chains of openings it is seen through; empty (no test) when the eye is outside every cell.
     walls::PortalSets portals;
     std::vector<WallDrawPlan> wallDraws;
@@ -184,7 +184,7 @@ private:
     double _morphSeconds;
     std::vector<int> _screens;
     std::optional<walls::FrameSelector> _selector;
-    std::optional<walls::PortalChains> _portals;
+    std::optional<walls::CellOpenings> _portals;
     std::map<int, const walls::Texture*> _textures;  // by id
     std::vector<Memory> _memory;                     // per wall
     // The frame between requests() and plan().

@@ -86,8 +86,9 @@ struct BenchOptions {
     // (RenderSettings::occlusion; --no-occlusion, --occlusion-min, --occlusion-min-draws);
     // triangles a frame are then those drawn.
     render::OcclusionSettings occlusion;
-    // --no-portal-culling: the neighbours drawn as geometry are drawn whole (walls and control).
-    bool portalCulling = true;
+    // --portal-culling: the walls modes and the control draw other cells' objects only where the
+    // viewer cell's openings show them (WalkthroughSettings::portalCulling).
+    bool portalCulling = false;
     // --texture-format: storage of the baked colour (walls/texture_blocks.h), disk and GPU
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
     std::optional<std::filesystem::path> cache;  // bake cache (default: the baker's)

@@ -14,7 +14,7 @@
 #include "render/lod_choice.h"
 #include "walkthrough/frame_planner.h"
 #include "walls/frame_select.h"
-#include "walls/portal_chains.h"
+#include "walls/cell_openings.h"
 #include "walls/bake_key.h"
 #include "walls/gl/wall_pass.h"
 #include "walls/gl/wall_quad.h"
@@ -410,7 +410,7 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
                   const ReferenceImages& reference) {
     assert(!runs.empty());
     const walls::FrameSelector selector(setup.plan, setup.table, c.description);
-    const walls::PortalChains portalChains(setup.plan, setup.table, c.description);
+    const walls::CellOpenings cellOpenings(setup.plan, c.description);
     walls::PortalSets portals;
     const display::gl::RenderTargets targets(c.display, c.context);
     render::gl::RenderSettings settings;
@@ -430,7 +430,7 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
         const walls::FrameSelection selection = selector.select(eye);
         const std::vector<bool> cells = cellMask(selection, c.description.cells.size(), kind == CellDraw::Near);
         const std::vector<int> objects = walkthrough::objectsOfCells(c.scene, cells);
-        portalChains.frameSets(selection.cell, cells, c.scene, portals);
+        cellOpenings.frameSets(selection.cell, cells, c.scene, portals);
         render::DrawFilter filter;
         filter.objects = &objects;
         if (c.portalCulling && !portals.objectSet.empty()) filter.portals = &portals;

@@ -46,7 +46,7 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     EXPECT_THAT(r.out, HasSubstr("| 1 | full |"));
     // --quick keeps its small images, and says so in the header and on every figure line.
     EXPECT_THAT(r.out, HasSubstr("4 screens at 128x128 pixels, mono stereo mode"));
-    EXPECT_THAT(r.out, HasSubstr("portal culling: on (walls modes and the control:"));
+    EXPECT_THAT(r.out, HasSubstr("portal culling: off (neighbours drawn as geometry are drawn whole)"));
     // Full geometry, the walls modes (but the paged one) and the clusters (--clusters, held to
     // 60 Hz by the controller) are timed in the same seconds.
     EXPECT_THAT(r.out,
@@ -227,10 +227,9 @@ TEST(BenchSceneCli, StereoRunMeasuresTheStereoErrorPerEye) {
                                      out.string(),
                                      "--cache",
                                      (root / "cache").string(),
-                                     "--no-portal-culling"});
+                                     "--portal-culling"});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
-    EXPECT_THAT(r.out, HasSubstr("portal culling: off (--no-portal-culling: neighbours drawn as geometry are drawn "
-                                 "whole)"));
+    EXPECT_THAT(r.out, HasSubstr("portal culling: on (--portal-culling; walls modes and the control:"));
     EXPECT_THAT(r.out, HasSubstr("drawn frame by frame in turn (the same seconds): full, walls depth a=20 blend, "
                                  "walls flat a=20 blend, walls depth a=20 warp;"));
     EXPECT_THAT(r.out, HasSubstr("bake flat walls a=20: "));
