@@ -227,7 +227,7 @@ FramePlan FramePlanner::plan(const Residency& resident, const Residency& cellRes
     // A morphing wall's cell behind is drawn by the warp pass only.
     for (const walls::WarpWall& w : p.warpWalls) setCell(p.geometryCells, w.cell, false);
     p.objects = objectsOfCells(_scene, p.geometryCells);
-    _portals->frameSets(p.cell, p.geometryCells, _scene, p.portals);
+    if (_portalCulling) _portals->frameSets(p.cell, p.geometryCells, _scene, p.portals);
     measureError(p);
     return p;
 }

@@ -112,8 +112,8 @@ struct FramePlan {
     int cell = -1, zone = -1;         // as FrameResult
     std::vector<bool> geometryCells;  // per description cell: drawn as geometry
     std::vector<int> objects;         // Scene::objects drawn by the scene renderer
-    // Portal culling of the neighbours drawn as geometry (walls/cell_openings.h): per object, the
-    // chains of openings it is seen through; empty (no test) when the eye is outside every cell.
+    // Portal culling (walls/cell_openings.h), when the planner's portalCulling is on: the
+    // viewer cell's openings and which objects are tested; empty (no test) otherwise.
     walls::PortalSets portals;
     std::vector<WallDrawPlan> wallDraws;
     std::vector<walls::WarpWall> warpWalls;  // Transition::Warp: walls drawn warped
@@ -151,6 +151,9 @@ public:
     // drawn as geometry where that weight is non-zero, and no texture's error is counted. On by
     // default. Blend transition only (the warp draws textures).
     void drawTextures(bool on) { _drawTextures = on; }
+    // On: plan() fills FramePlan::portals (WalkthroughSettings::portalCulling). Off by default:
+    // the sets cost a pass over the objects a frame.
+    void portalCulling(bool on) { _portalCulling = on; }
     // Steps 3-5 for the frame of the last requests() call, against `resident` textures and
     // `cellResident` cells (empty: every cell's geometry is resident).
     FramePlan plan(const Residency& resident, const Residency& cellResident = {});
@@ -161,6 +164,7 @@ public:
 private:
     bool _requestCells = false;
     bool _drawTextures = true;
+    bool _portalCulling = false;
     struct Memory;
     struct WarpOutcome;
     struct ViewScale;

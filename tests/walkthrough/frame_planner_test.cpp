@@ -222,6 +222,7 @@ TEST_F(FramePlannerTest, AMissingTextureKeepsThePreviousOneWithinAlphaElseTheGeo
     ASSERT_TRUE(far) << "no zone where the first texture is beyond alpha";
 
     FramePlanner planner(scene, description, display, &walls, Transition::Blend, 0.5);
+    planner.portalCulling(true);  // FramePlan::portals filled (checked in expectGeometry)
     const std::set<int> none, onlyFirst{t1};
     // The one wall drawn as geometry for want of a texture: the cell behind drawn, no quad.
     auto expectGeometry = [&](const FramePlan& plan, const char* name) {

@@ -163,6 +163,7 @@ Walkthrough::Walkthrough(const scenes::Scene& scene, const scenes::SceneDescript
                                                     _options.transition, _options.morphSeconds, _screens);
     _planner->requestCells(_walls && _walls->geometry);
     _planner->drawTextures(_options.wallTextures);
+    _planner->portalCulling(_options.portalCulling);
     if (_options.clusters.enabled)
         _clusters = makeClusters(
             scene, _options.clusters, _renderer, context.info().renderer,
@@ -451,7 +452,7 @@ walkthrough::FrameResult Walkthrough::renderFrame(const walkthrough::FrameInput&
     if (_options.baker) result.texturesToBake = _options.baker->stats().missing;
     render::DrawFilter filter;
     filter.objects = &plan.objects;
-    if (_options.portalCulling && !plan.portals.objectSet.empty()) filter.portals = &plan.portals;
+    if (!plan.portals.objectSet.empty()) filter.portals = &plan.portals;
     if (_clusters) {
         planClusters(input, plan.eyeWorld, _clusters->drawn, result);
         filter.objects = &_clusters->drawn;

@@ -430,10 +430,10 @@ void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std
         const walls::FrameSelection selection = selector.select(eye);
         const std::vector<bool> cells = cellMask(selection, c.description.cells.size(), kind == CellDraw::Near);
         const std::vector<int> objects = walkthrough::objectsOfCells(c.scene, cells);
-        cellOpenings.frameSets(selection.cell, cells, c.scene, portals);
+        if (c.portalCulling) cellOpenings.frameSets(selection.cell, cells, c.scene, portals);
         render::DrawFilter filter;
         filter.objects = &objects;
-        if (c.portalCulling && !portals.objectSet.empty()) filter.portals = &portals;
+        if (!portals.objectSet.empty()) filter.portals = &portals;
         renderer.setOcclusionContext(static_cast<std::uint32_t>(kind));
         std::vector<walls::gl::WallDraw> quads;
         if (kind == CellDraw::Near)
