@@ -12,7 +12,10 @@
 // The test is conservative, never the other way. From an eye at least kPortalEyeClearance on
 // the portal's front side, a box is unseen through it when it lies wholly in front of the
 // portal's plane (strictly) or wholly outside one of the four planes through the eye and an edge
-// of the portal. From any other eye the portal is open: everything is seen through it. A
+// of the portal. With a slack s, the portal is first grown by s past its edges and stood for by
+// the rectangle, in its plane moved s towards the front, that holds it and what the eye sees of
+// it moved s back: every line of sight through the slab so made crosses that rectangle. From
+// any other eye the portal is open: everything is seen through it. A
 // chain's portals are tested one by one, so a box seen through each of them but not through all
 // at once is still drawn. Plain data and a per-view test, no GL.
 
@@ -32,6 +35,10 @@ inline constexpr double kPortalEyeClearance = 1e-3;
 
 struct PortalSets {
     std::vector<display::ScreenQuad> portals;  // world
+    // Metres: each portal stands for an opening anywhere within this of it, across its plane and
+    // past its edges (where a portal is only known to that accuracy: a doorway drawn on a
+    // snapped cell boundary in the middle of a thick wall). 0: exactly the portal.
+    double slack = 0.0;
     std::vector<std::vector<int>> chains;      // indices into portals, the viewer's side first
     std::vector<std::vector<int>> sets;        // indices into chains
     std::vector<int> objectSet;                // per scene object: index into sets; -1 or past the

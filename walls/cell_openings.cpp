@@ -23,21 +23,66 @@ display::ScreenQuad openingQuad(const scenes::Cell& cell, glm::dvec2 a, glm::dve
     return {{a.x, y - kOpeningReach, a.y}, {b.x, y - kOpeningReach, b.y}, {a.x, y + kOpeningReach, a.y}};
 }
 
-// The floor box (x, z) of `cell`, shrunk by a centimetre so that a box only touching the
-// cell's edge does not overlap it.
-std::array<glm::dvec2, 2> floorBox(const scenes::Cell& cell) {
+// How far past a cell's floor box its own walls reach, metres: a wall's thickness and what is
+// mounted on it. A window pane in the wall or a switch on its face lies within this band.
+constexpr double kWallBand = 0.5;
+
+// How far a portal may lie from the doorway it stands for, metres (render::PortalSets::slack):
+// cell boundaries are snapped and run through the middle of walls, doorways are the doors'
+// boxes, so the opening a line of sight passes may lie half a wall's thickness off.
+constexpr double kPortalSlack = 0.3;
+
+// The floor box (x, z) of `cell`, grown by `margin` (negative: shrunk).
+std::array<glm::dvec2, 2> floorBox(const scenes::Cell& cell, double margin) {
     glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi = -lo;
     for (const glm::dvec2& p : cell.region) {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
-    return {lo + 0.01, hi - 0.01};
+    return {lo - margin, hi + margin};
 }
 
-// Whether `b` overlaps the column over the floor box `column` (x, z), at any height.
+// Whether `b` overlaps the column over the box `column` (x, z), at any height.
 bool overlaps(const scenes::Bounds& b, const std::array<glm::dvec2, 2>& column) {
     return b.min.x < column[1].x && b.max.x > column[0].x && b.min.z < column[1].y && b.max.z > column[0].y;
 }
+
+// Whether `o` is a pane of glass in the walls of the cell whose floor box is `floor` and wall
+// band `band`: its material blends; its box lies in the band, outside the floor box (not a lamp
+// or a glass table in the room), thin across (at most 10 cm) and at least 20 cm wide and high.
+bool paneInWalls(const scenes::Scene& scene, const scenes::Object& o, const std::array<glm::dvec2, 2>& floor,
+                 const std::array<glm::dvec2, 2>& band) {
+    const scenes::Bounds& b = o.worldBounds;
+    if (b.empty() || !overlaps(b, band) || overlaps(b, floor)) return false;
+    const glm::dvec3 size = b.max - b.min;
+    if (std::min(size.x, size.z) > 0.1 || std::max(size.x, size.z) < 0.2 || size.y < 0.2) return false;
+    if (o.mesh < 0 || o.mesh >= static_cast<int>(scene.meshes.size())) return false;
+    const int m = scene.meshes[o.mesh].material;
+    return m >= 0 && m < static_cast<int>(scene.materials.size()) &&
+           scene.materials[m].alphaMode == scenes::AlphaMode::Blend;
+}
+
+// A blended object in a cell's wall band as an opening: the vertical rectangle through the
+// middle of its box across its thinner horizontal side, grown by that side's thickness and
+// 2 cm all round, facing `inside` (x, z). A line of sight through the pane crosses it there.
+display::ScreenQuad paneQuad(const scenes::Bounds& b, glm::dvec2 inside) {
+    const glm::dvec3 size = b.max - b.min, mid = 0.5 * (b.min + b.max);
+    const bool thinX = size.x < size.z;
+    const double grow = std::min(size.x, size.z) + 0.02;
+    const double y0 = b.min.y - grow, y1 = b.max.y + grow;
+    glm::dvec3 a, c;
+    if (thinX) {
+        a = {mid.x, y0, b.min.z - grow};
+        c = {mid.x, y0, b.max.z + grow};
+    } else {
+        a = {b.min.x - grow, y0, mid.z};
+        c = {b.max.x + grow, y0, mid.z};
+    }
+    const glm::dvec2 along(c.x - a.x, c.z - a.z), into = inside - glm::dvec2(a.x, a.z);
+    if (along.x * into.y - along.y * into.x < 0.0) std::swap(a, c);  // the normal (-dz, dx) into the cell
+    return {a, c, {a.x, y1, a.z}};
+}
+
 
 }  // namespace
 
@@ -50,7 +95,12 @@ CellOpenings::CellOpenings(const Plan& plan, const scenes::SceneDescription& des
             if (cell >= 0 && cell < _cellCount) _openings[cell].push_back(2 * w + s);
         }
     for (int e = 0; e < _cellCount; ++e) {
-        _columns.push_back(floorBox(description.cells[e]));
+        _columns.push_back(floorBox(description.cells[e], kWallBand));
+        _floors.push_back(floorBox(description.cells[e], -0.01));
+        glm::dvec2 centre(0.0);
+        for (const glm::dvec2& p : description.cells[e].region)
+            centre += p / static_cast<double>(description.cells[e].region.size());
+        _centres.push_back(centre);
         for (const auto& [a, b] : openBoundary(description, e)) {
             _openings[e].push_back(static_cast<int>(_quads.size()));
             _quads.push_back(openingQuad(description.cells[e], a, b));
@@ -71,12 +121,20 @@ void CellOpenings::frameSets(int eyeCell, const std::vector<bool>& drawn, const 
     out.objectSet.assign(scene.objects.size(), -1);
     if (openings(eyeCell).empty()) return;
     out.portals = _quads;
+    out.slack = kPortalSlack;
     out.sets.emplace_back();
-    for (int o : openings(eyeCell)) {
+    auto open = [&](int portal) {
         out.sets[0].push_back(static_cast<int>(out.chains.size()));
-        out.chains.push_back({o});
-    }
+        out.chains.push_back({portal});
+    };
+    for (int o : openings(eyeCell)) open(o);
     const std::array<glm::dvec2, 2>& column = _columns[static_cast<std::size_t>(eyeCell)];
+    const std::array<glm::dvec2, 2>& floor = _floors[static_cast<std::size_t>(eyeCell)];
+    for (const scenes::Object& o : scene.objects)  // glass in the eye cell's walls: windows
+        if (paneInWalls(scene, o, floor, column)) {
+            open(static_cast<int>(out.portals.size()));
+            out.portals.push_back(paneQuad(o.worldBounds, _centres[static_cast<std::size_t>(eyeCell)]));
+        }
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const scenes::Object& o = scene.objects[i];
         if (o.role == scenes::Role::Structure || overlaps(o.worldBounds, column)) continue;

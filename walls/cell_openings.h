@@ -7,8 +7,11 @@
 // 1 km below E's floor to 1 km above it; real walls occlude, as in the visibility model. So each
 // view draws an object of another cell only where its box may be seen through one of E's
 // openings. E's own objects, structure, objects without a cell, objects one of whose drawn cells
-// is E, and objects over or under E's floor box (another storey, seen within E's column through
-// a void or a stairwell) are drawn without test, and everything when E has no opening.
+// is E, and objects over, under or within half a metre of E's floor box (another storey seen
+// within E's column through a void or a stairwell; what is in or on E's own walls: a window
+// pane, a switch) are drawn without test, and everything when E has no opening. A pane of glass
+// (a thin, blended object) within that half metre outside E's floor box is an opening too: a
+// window in a real wall.
 //
 // What this leaves out is what the textures leave out too: what real walls hide in the
 // visibility model and what lies past a virtual wall's top.
@@ -34,9 +37,9 @@ public:
     const std::vector<int>& openings(int cell) const;
 
     // The portal sets of a frame whose viewer is in `eyeCell` and which draws the cells marked
-    // in `drawn` (per description cell): portals() as they are, one chain per opening of
-    // eyeCell, one set of all of them, and objectSet over `scene`'s objects (the set for those
-    // tested, -1 for the others). No sets (every object drawn without test) when eyeCell is
+    // in `drawn` (per description cell): portals(), then one portal per pane of glass in
+    // eyeCell's walls; one chain per opening of eyeCell and per pane, one set of all of them,
+    // and objectSet over `scene`'s objects (the set for those tested, -1 for the others). No sets (every object drawn without test) when eyeCell is
     // outside every cell or has no opening.
     void frameSets(int eyeCell, const std::vector<bool>& drawn, const scenes::Scene& scene,
                    render::PortalSets& out) const;
@@ -50,7 +53,9 @@ private:
     int _cellCount = 0;
     std::vector<display::ScreenQuad> _quads;          // walls seen from each side, then open parts
     std::vector<std::vector<int>> _openings;          // per cell: indices into _quads
-    std::vector<std::array<glm::dvec2, 2>> _columns;  // per cell: its floor box (x, z), shrunk
+    std::vector<std::array<glm::dvec2, 2>> _columns;  // per cell: its floor box (x, z) and wall band
+    std::vector<std::array<glm::dvec2, 2>> _floors;   // per cell: its floor box, shrunk by 1 cm
+    std::vector<glm::dvec2> _centres;                 // per cell: its region's mean corner (x, z)
 };
 
 }  // namespace cavewall::walls

@@ -79,11 +79,46 @@ TEST(PortalCull, NeverCullsABoxARayThroughThePortalReaches) {
     EXPECT_EQ(reached, 0);
 }
 
+// With slack, a doorway stands for one anywhere within that distance of it: 3 m behind the
+// door, the cone through the door grown by 0.3 m and moved 0.3 m forward spans |x| < 2.35.
+TEST(PortalCull, SlackWidensTheDoorwayAcrossAndAlongItsPlane) {
+    const scenes::Bounds past = box({1.3, 0.0, -3.0}, {1.5, 1.0, -2.99});
+    PortalSets sets{{kDoor}, 0.3, {{0}}, {{0}}, {0}};
+    EXPECT_FALSE(seenThrough(past, kEye, kDoor));
+    EXPECT_TRUE(PortalView(sets, kEye).visible(0, past));
+    EXPECT_FALSE(PortalView(sets, kEye).visible(0, box({2.5, 0.0, -3.0}, {2.7, 1.0, -2.99})));
+    // An eye within the slack of the doorway's plane sees everything through it.
+    EXPECT_TRUE(PortalView(sets, {0.0, 1.6, 0.2}).visible(0, box({9.0, 0.0, -3.0}, {9.5, 1.0, -2.99})));
+}
+
+// Conservative with slack: no line of sight through the slab of the grown doorway, at any
+// depth within the slack, reaches a culled box.
+TEST(PortalCull, SlackNeverCullsWhatALineThroughTheSlabReaches) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const double slack = 0.3;
+    const PortalSets sets{{kDoor}, slack, {{0}}, {{0}}, {0}};
+    int culled = 0, reached = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        const glm::dvec3 eye(2.0 * u(rng), 1.6 + u(rng), 0.35 + 2.0 * std::abs(u(rng)));
+        const PortalView view(sets, eye);
+        // A point of the slab: x in the door grown by the slack, y likewise, z within it.
+        const glm::dvec3 through(0.8 * u(rng), 1.0 + 1.3 * u(rng), slack * u(rng));
+        const glm::dvec3 p = eye + (through - eye) * (1.0 + 4.0 * std::abs(u(rng)));
+        const scenes::Bounds bx = box(p - 0.01, p + 0.01);
+        const scenes::Bounds aside = box(glm::dvec3(u(rng) * 6.0, 1.0, -4.0), glm::dvec3(u(rng) * 6.0 + 0.1, 1.1, -3.9));
+        culled += view.visible(0, aside) ? 0 : 1;
+        reached += view.visible(0, bx) ? 0 : 1;
+    }
+    EXPECT_GT(culled, 200);  // the test did cull
+    EXPECT_EQ(reached, 0);
+}
+
 TEST(PortalCull, AChainShowsWhatEveryPortalShowsAndASetWhatAnyChainDoes) {
     // A second doorway 4 m behind the first, 3 m to the side: nothing is seen through both.
     const display::ScreenQuad side{{2.5, 0.0, -4.0}, {3.5, 0.0, -4.0}, {2.5, 2.0, -4.0}};
     const scenes::Bounds ahead = box({-0.2, 0.0, -8.0}, {0.2, 1.0, -7.0});
-    PortalSets sets{{kDoor, side}, {{0}, {0, 1}, {1}}, {{1}, {1, 2}, {}}, {0, 1, 2, -1}};
+    PortalSets sets{{kDoor, side}, 0.0, {{0}, {0, 1}, {1}}, {{1}, {1, 2}, {}}, {0, 1, 2, -1}};
     const PortalView view(sets, kEye);
     EXPECT_TRUE(seenThrough(ahead, kEye, kDoor));
     EXPECT_FALSE(seenThrough(ahead, kEye, side));

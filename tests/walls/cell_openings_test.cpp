@@ -106,14 +106,17 @@ TEST(CellOpenings, FrameSetsTestTheObjectsOfOtherDrawnCells) {
                      object(-1),
                      object(1, {}, scenes::Role::Structure),
                      object(7)};
-    // Over or under the eye cell's floor (another storey, seen through a void); beside it.
-    scenes::Object above = object(1), beside = object(1);
+    // Over or under the eye cell's floor (another storey, seen through a void); in its wall band
+    // (within half a metre of its floor box: in or on its walls); beside that.
+    scenes::Object above = object(1), inWall = object(1), beside = object(1);
     above.worldBounds.add({0.2, 5.0, 0.2});
     above.worldBounds.add({0.4, 6.0, 0.4});
-    beside.worldBounds.add({1.2, 0.0, 0.2});
-    beside.worldBounds.add({1.4, 1.0, 0.4});
-    beside.worldBounds.add({0.995, 0.5, 0.3});  // touches cell 0's edge, within a centimetre
+    inWall.worldBounds.add({1.3, 0.0, 0.2});
+    inWall.worldBounds.add({1.45, 1.0, 0.4});
+    beside.worldBounds.add({1.55, 0.0, 0.2});
+    beside.worldBounds.add({1.8, 1.0, 0.4});
     scene.objects.push_back(above);
+    scene.objects.push_back(inWall);
     scene.objects.push_back(beside);
     PortalSets sets;
     cells.frameSets(0, {true, true, false, true}, scene, sets);
@@ -121,13 +124,51 @@ TEST(CellOpenings, FrameSetsTestTheObjectsOfOtherDrawnCells) {
     EXPECT_EQ(sets.portals, cells.portals());
     EXPECT_EQ(sets.chains, (std::vector<std::vector<int>>{{0}, {6}}));
     EXPECT_EQ(sets.sets, (std::vector<std::vector<int>>{{0, 1}}));
-    EXPECT_EQ(sets.objectSet, (std::vector<int>{-1, 0, -1, 0, -1, -1, -1, -1, -1, 0}));
+    EXPECT_EQ(sets.objectSet, (std::vector<int>{-1, 0, -1, 0, -1, -1, -1, -1, -1, -1, 0}));
     // (the eye's cell, a neighbour, a cell not drawn, drawn through cell 1, reaching the eye's
-    // cell, no cell, structure, a cell the description does not have, above, beside)
+    // cell, no cell, structure, a cell the description does not have, above, in its wall, beside)
 
     cells.frameSets(-1, {true, true, true, true}, scene, sets);  // outside every cell
     EXPECT_TRUE(sets.portals.empty());
     EXPECT_EQ(sets.objectSet, std::vector<int>(scene.objects.size(), -1));
+}
+
+// A window: a pane of glass (a blended object) in cell 0's west wall, x in [-0.06, -0.04], is
+// an opening of cell 0 facing into it; a box west of the wall is seen through it, one far south
+// of it is not.
+TEST(CellOpenings, GlassInTheEyeCellsWallsIsAnOpening) {
+    const Row row;
+    const CellOpenings cells(row.plan, row.description);
+    scenes::Scene scene;
+    scene.materials.push_back({});
+    scene.materials.back().alphaMode = scenes::AlphaMode::Blend;
+    scene.meshes.emplace_back();
+    scene.meshes.back().material = 0;
+    scenes::Object pane = object(-1), west = object(1), south = object(1);
+    pane.worldBounds.add({-0.06, 1.0, 0.3});
+    pane.worldBounds.add({-0.04, 2.0, 0.7});
+    west.worldBounds.add({-3.0, 1.2, 0.4});
+    west.worldBounds.add({-2.8, 1.6, 0.6});
+    south.worldBounds.add({-3.0, 1.2, -12.2});
+    south.worldBounds.add({-2.8, 1.6, -12.0});
+    scene.objects = {pane, west, south};
+    PortalSets sets;
+    cells.frameSets(0, {true, true, true, true}, scene, sets);
+    ASSERT_EQ(sets.portals.size(), cells.portals().size() + 1);
+    EXPECT_EQ(sets.sets, (std::vector<std::vector<int>>{{0, 1, 2}}));
+    EXPECT_EQ(sets.chains.back(), std::vector<int>{static_cast<int>(cells.portals().size())});
+    const display::ScreenQuad& q = sets.portals.back();
+    const glm::dvec3 normal = glm::cross(q.lowerRight - q.lowerLeft, q.upperLeft - q.lowerLeft);
+    EXPECT_GT(normal.x, 0.0);  // into the cell
+    EXPECT_EQ(sets.objectSet, (std::vector<int>{-1, 0, 0}));
+    const render::PortalView view(sets, {0.5, 1.5, 0.5});
+    EXPECT_TRUE(view.visible(1, west.worldBounds));
+    EXPECT_FALSE(view.visible(2, south.worldBounds));
+    // Without glass the same box is hidden by the real wall.
+    scene.materials.back().alphaMode = scenes::AlphaMode::Opaque;
+    cells.frameSets(0, {true, true, true, true}, scene, sets);
+    EXPECT_EQ(sets.portals.size(), cells.portals().size());
+    EXPECT_FALSE(render::PortalView(sets, {0.5, 1.5, 0.5}).visible(1, west.worldBounds));
 }
 
 TEST(CellOpenings, ACellWithoutOpeningsTestsNothing) {
