@@ -6,6 +6,7 @@
 #include "display/gl/context.h"
 #include "scenes/loader.h"
 #include "app/bench/gl/baked_walls.h"
+#include "app/bench/gl/cell_modes.h"
 #include "app/bench/gl/modes.h"
 #include "app/bench/private_cache.h"
 #include "render/occlusion_settings.h"
@@ -15,6 +16,8 @@
 #include "walls/wall_setup.h"
 
 #include <algorithm>
+#include <functional>
+#include <optional>
 #include <memory>
 #include <chrono>
 #include <cmath>
@@ -170,7 +173,7 @@ void checkOnDemand(const BenchOptions& o) {
 enum class Phase {
     Interleaved,  // full geometry, the walls and clusters modes: frame by frame in turn (the same seconds)
     Cells,        // cells, cells+layer and near: frame by frame in turn
-    CellsLod,     // the control and near with levels of detail, frame by frame in turn
+    CellsLod,     // the control and near with levels of detail: after the Interleaved modes each frame
     Paged,        // the walls paged as `cavewall run` pages, alone
     OnDemand,     // the walls baked on demand from an empty cache, alone
 };
@@ -317,7 +320,32 @@ std::vector<std::size_t> modesOf(const std::vector<BenchMode>& table, Phase phas
     return modes;
 }
 
-// Runs the walkthrough modes of `phase` (Interleaved or Paged) frame by frame in turn; the
+// The cell modes of a phase and where their frames go (stable addresses: reserved).
+struct CellModeRuns {
+    std::vector<std::size_t> modes;  // in the table
+    std::vector<ModeAccumulator> accs;
+    std::vector<CellRun> runs;
+    std::string names;  // their labels
+};
+
+CellModeRuns cellRunsOf(const std::vector<BenchMode>& table, Phase phase, const Bench& b) {
+    CellModeRuns r;
+    r.modes = modesOf(table, phase);
+    r.accs.reserve(r.modes.size());
+    for (std::size_t i : r.modes) {
+        r.accs.emplace_back(table[i].mode, b.display);
+        r.runs.push_back({table[i].draw, &r.accs.back()});
+        r.names += (r.names.empty() ? "" : ", ") + modeLabel(r.accs.back().mode());
+    }
+    return r;
+}
+
+void finishCellRuns(std::vector<BenchMode>& table, const CellModeRuns& r, double fullP50) {
+    for (std::size_t k = 0; k < r.modes.size(); ++k) table[r.modes[k]].result = r.accs[k].finish(fullP50);
+}
+
+// Runs the walkthrough modes of `phase` (Interleaved or Paged) frame by frame in turn, and with
+// the Interleaved ones the CellsLod modes after them every frame (the same seconds); the
 // table's first mode (full geometry) is the reference of images and speed-ups. Returns their
 // labels.
 std::string runWalkPhase(std::vector<BenchMode>& table, Phase phase, Bench& b) {
@@ -335,33 +363,34 @@ std::string runWalkPhase(std::vector<BenchMode>& table, Phase phase, Bench& b) {
         runs.push_back(std::move(run));
         names += (names.empty() ? "" : ", ") + modeLabel(accs.back()->mode());
     }
-    say(b.o, "bench: " + names + (modes.size() > 1 ? ", frame by frame in turn" : ""));
-    runWalkthroughModes(b.c, runs, b.reference);
+    CellModeRuns cells = phase == Phase::Interleaved ? cellRunsOf(table, Phase::CellsLod, b) : CellModeRuns{};
+    if (!cells.names.empty()) names += ", " + cells.names;
+    say(b.o, "bench: " + names + (modes.size() + cells.modes.size() > 1 ? ", frame by frame in turn" : ""));
+    std::optional<CellModes> drawer;
+    std::function<void(const walkthrough::FrameInput&)> alsoEachFrame;
+    if (!cells.runs.empty()) {
+        drawer.emplace(b.c, b.baked[b.transitionIndex].setup, b.o.lodPixels);
+        drawer->warmUp(cells.runs);
+        alsoEachFrame = [&](const walkthrough::FrameInput& in) { drawer->drawFrame(in, cells.runs, b.reference); };
+    }
+    runWalkthroughModes(b.c, runs, b.reference, alsoEachFrame);
     for (std::size_t k = 0; k < modes.size(); ++k) {
         const bool reference = modes[k] == 0;  // no speed-up
         table[modes[k]].result = accs[k]->finish(reference ? 0.0 : b.fullP50);
         if (reference) b.fullP50 = table[modes[k]].result->frameMs.p50;
     }
+    finishCellRuns(table, cells, b.fullP50);
     return names;
 }
 
-// Runs the cell modes of `phase` (Cells or CellsLod) frame by frame in turn, with the selection
-// of the walls at transitionAlphaDeg.
+// Runs the cell modes of `phase` (Cells) frame by frame in turn, with the selection of the
+// walls at transitionAlphaDeg.
 void runCellPhase(std::vector<BenchMode>& table, Phase phase, Bench& b) {
-    const std::vector<std::size_t> modes = modesOf(table, phase);
-    if (modes.empty()) return;
-    std::vector<ModeAccumulator> accs;
-    accs.reserve(modes.size());
-    std::vector<CellRun> runs;
-    std::string names;
-    for (std::size_t i : modes) {
-        accs.emplace_back(table[i].mode, b.display);
-        runs.push_back({table[i].draw, &accs.back()});
-        names += (names.empty() ? "" : ", ") + modeLabel(accs.back().mode());
-    }
-    say(b.o, "bench: " + names + (modes.size() > 1 ? ", frame by frame in turn" : ""));
-    runCellModes(b.c, b.baked[b.transitionIndex].setup, runs, b.reference);
-    for (std::size_t k = 0; k < modes.size(); ++k) table[modes[k]].result = accs[k].finish(b.fullP50);
+    const CellModeRuns cells = cellRunsOf(table, phase, b);
+    if (cells.runs.empty()) return;
+    say(b.o, "bench: " + cells.names + (cells.runs.size() > 1 ? ", frame by frame in turn" : ""));
+    runCellModes(b.c, b.baked[b.transitionIndex].setup, cells.runs, b.reference);
+    finishCellRuns(table, cells, b.fullP50);
 }
 
 // Runs the on-demand mode (when there is one), with its header line.
@@ -414,7 +443,6 @@ void runModes(std::vector<BenchMode>& table, Bench& b, BenchReport& report) {
     // The control, the control plus one textured layer and the limit in the same seconds: the
     // wall pass's target compares them.
     runCellPhase(table, Phase::Cells, b);
-    runCellPhase(table, Phase::CellsLod, b);
     runWalkPhase(table, Phase::Paged, b);
     runOnDemandPhase(table, b, report);
     for (BenchMode& m : table) report.modes.push_back(std::move(*m.result));

@@ -3,21 +3,10 @@
 #include "display/frame_budget.h"
 
 #include <cmath>
-#include "display/eye_distance.h"
-#include "display/pixel_scale.h"
 #include "display/timing.h"
-#include "display/gl/render_targets.h"
-#include "render/gl/scene_renderer.h"
-#include "render/gl/view_loop.h"
 #include "walkthrough/cluster_control.h"
 #include "hierarchy/cluster_frame.h"
 #include "render/lod_choice.h"
-#include "walkthrough/frame_planner.h"
-#include "walls/frame_select.h"
-#include "walls/cell_openings.h"
-#include "walls/bake_key.h"
-#include "walls/gl/wall_pass.h"
-#include "walls/gl/wall_quad.h"
 
 #include <algorithm>
 #include <cassert>
@@ -32,9 +21,9 @@ double trianglesCulled(const std::optional<render::gl::OcclusionCounts>& counts)
     return counts ? static_cast<double>(counts->trianglesSubmitted - counts->trianglesDrawn) : 0.0;
 }
 
-namespace {
-
 bool compared(const ModeContext& c, long frame) { return frame % c.compareEvery == 0; }
+
+namespace {
 
 // Walls that drew the textures they drew last because the wanted ones were not resident
 // (walkthrough/frame_planner.h, step 3): flagged fallback, with textures.
@@ -209,7 +198,8 @@ ModeResult ModeAccumulator::finish(double fullP50) const {
     return m;
 }
 
-void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, ReferenceImages& reference) {
+void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, ReferenceImages& reference,
+                         const std::function<void(const walkthrough::FrameInput&)>& alsoEachFrame) {
     struct Live {
         std::unique_ptr<walkthrough::gl::Walkthrough> walkthrough;
         std::optional<display::FrameTimeBudget> frameBudget;    // levels of detail: triangles
@@ -285,6 +275,7 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
             else
                 runs[i].acc->compare(in.frame, in.head, r.images, r.depths, reference.at(in.frame));
         }
+        if (alsoEachFrame) alsoEachFrame(in);
     }
 }
 
@@ -339,152 +330,6 @@ NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::Wall
         repeated.push_back(walkthrough.renderFrame(again).frameMs);
     }
     return {timeStats(path), timeStats(repeated)};
-}
-
-namespace {
-
-std::vector<bool> cellMask(const walls::FrameSelection& s, std::size_t cellCount, bool nearOnly) {
-    std::vector<bool> cells(cellCount, s.allGeometry());
-    if (!nearOnly)
-        for (int c : s.geometryCells)
-            if (c >= 0 && c < static_cast<int>(cellCount)) cells[c] = true;
-    if (s.cell >= 0 && s.cell < static_cast<int>(cellCount)) cells[s.cell] = true;
-    return cells;
-}
-
-}  // namespace
-
-namespace {
-
-// The layer's texture: 512 x 512 (the bake's largest by default), a gradient under a
-// checkerboard so that every MIP level differs, with its MIP chain.
-display::gl::GlObject layerTexture() {
-    constexpr int kSize = 512;
-    std::vector<scenes::Image> levels;
-    for (int s = kSize; s >= 1; s /= 2) {
-        scenes::Image l{"layer", s, s, std::vector<std::uint8_t>(std::size_t(s) * s * 4, 255)};
-        for (int y = 0; y < s; ++y)
-            for (int x = 0; x < s; ++x) {
-                std::uint8_t* p = &l.rgba[(std::size_t(y) * s + x) * 4];
-                p[0] = static_cast<std::uint8_t>(x * 255 / s);
-                p[1] = ((x * 8 / s) + (y * 8 / s)) % 2 == 0 ? 200 : 60;
-                p[2] = static_cast<std::uint8_t>(y * 255 / s);
-            }
-        levels.push_back(std::move(l));
-    }
-    return walls::gl::uploadWallTexture(std::move(levels));
-}
-
-// The walls' sampler (walls/gl/texture_store.cpp): bilinear within the nearest MIP level.
-display::gl::GlObject wallSampler() {
-    display::gl::GlObject s = display::gl::createSampler();
-    glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
-    glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    return s;
-}
-
-}  // namespace
-
-namespace {
-
-// Every view's depth as eye distances, after the frame: geometry only (each image keeps its own
-// depth buffer). The near limit's bare wall quads and the layer write no depth.
-std::vector<walkthrough::ViewDepth> readViewDepths(const std::vector<display::ScreenView>& views,
-                                                   const display::gl::RenderTargets& targets) {
-    std::vector<walkthrough::ViewDepth> depths;
-    for (const display::ScreenView& view : views) {
-        const int image = display::gl::RenderTargets::imageOf(view.pass);
-        const display::Viewport& v = view.pass.viewport;
-        depths.push_back(
-            {view.screen, image, view.pass.eye, v.width, v.height,
-             display::eyeDistances(view.frustum, {v.width, v.height}, targets.readDepth(view.screen, image, v))});
-    }
-    return depths;
-}
-
-}  // namespace
-
-void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std::vector<CellRun>& runs,
-                  const ReferenceImages& reference) {
-    assert(!runs.empty());
-    const walls::FrameSelector selector(setup.plan, setup.table, c.description);
-    const walls::CellOpenings cellOpenings(setup.plan, c.description);
-    walls::PortalSets portals;
-    const display::gl::RenderTargets targets(c.display, c.context);
-    render::gl::RenderSettings settings;
-    settings.lodPixels = runs.front().acc->mode().lodPixels;
-    settings.occlusion = c.occlusion;
-    for ([[maybe_unused]] const CellRun& r : runs) assert(r.acc->mode().lodPixels == settings.lodPixels);
-    render::gl::SceneRenderer renderer(c.scene, settings);
-    // The limit draws every wall of the viewer's cell as a bare quad: one 1x1 texture through
-    // the walls' own pass, so it pays the quads' fill but no texture blending or paging.
-    const walls::gl::WallPass quadPass;
-    const display::gl::GlObject bare =
-        walls::gl::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}});
-    const display::gl::GlObject layer = layerTexture(), sampler = wallSampler();
-    auto draw = [&](const walkthrough::FrameInput& in, CellDraw kind, FrameCost* cost) {
-        const auto start = std::chrono::steady_clock::now();
-        const glm::dvec3 eye(in.worldFromCave * glm::dvec4(in.head.position, 1.0));
-        const walls::FrameSelection selection = selector.select(eye);
-        const std::vector<bool> cells = cellMask(selection, c.description.cells.size(), kind == CellDraw::Near);
-        const std::vector<int> objects = walkthrough::objectsOfCells(c.scene, cells);
-        if (c.portalCulling) cellOpenings.frameSets(selection.cell, cells, c.scene, portals);
-        render::DrawFilter filter;
-        filter.objects = &objects;
-        if (!portals.objectSet.empty()) filter.portals = &portals;
-        renderer.setOcclusionContext(static_cast<std::uint32_t>(kind));
-        std::vector<walls::gl::WallDraw> quads;
-        if (kind == CellDraw::Near)
-            for (const walls::WallBlend& b : selection.walls)
-                quads.push_back({walls::quadSeenFrom(setup.plan.walls[b.wall].quad, b.side), {bare.id()}, {1.0f}, 1});
-        const glm::dmat4 caveFromWorld = glm::inverse(in.worldFromCave);
-        display::FrameStats quadStats;
-        auto afterView = [&](const display::ScreenView& view) {
-            if (kind == CellDraw::Near)
-                quadPass.draw(quads, view.frustum, caveFromWorld, 0, quadStats);
-            else  // the view's screen, in the cave frame
-                quadPass.draw({{c.display.quad(view.screen), {layer.id()}, {0.0f}, 1}}, view.frustum, glm::dmat4(1.0),
-                              sampler.id(), quadStats);
-        };
-        const std::vector<display::ScreenView> views = c.display.views(in.head);
-        render::FrameLod lod;
-        if (renderer.hasLods()) {
-            lod = render::chooseLods(renderer.renderScene(), views, in.worldFromCave, filter, settings.lodPixels);
-            filter.lodLevels = &lod.levels;
-        }
-        const display::FrameStats stats = renderer.render(views, targets, in.worldFromCave, filter,
-                                                          kind != CellDraw::Cells ? std::function(afterView) : nullptr);
-        const double gpu = renderer.waitGpuMs();
-        const std::optional<render::gl::OcclusionCounts> counts = renderer.readOcclusionCounts();
-        if (!cost) return;
-        *cost = FrameCost{};
-        cost->frameMs = display::msSince(start);
-        cost->cpuMs = stats.cpuMs;
-        cost->gpuMs = gpu;
-        cost->triangles = static_cast<double>(stats.triangles + quadStats.triangles);
-        cost->triangles -= trianglesCulled(counts);
-        cost->drawCalls = static_cast<double>(stats.drawCalls + quadStats.drawCalls);
-        cost->lodErrorPx = lod.maxErrorPx;
-        cost->lodTolerancePx = lod.tolerancePx;
-        cost->perScreen = render::gl::statsPerScreen(views, stats, c.display.screens().size());
-    };
-    for (long i = 0; i < std::min<long>(3, c.path.frames.size()); ++i)
-        for (const CellRun& r : runs) draw(c.path.frames[i], r.draw, nullptr);
-    // Frame by frame, every run in turn: their times are taken in the same seconds.
-    for (const walkthrough::FrameInput& in : c.path.frames)
-        for (const CellRun& r : runs) {
-            FrameCost cost;
-            draw(in, r.draw, &cost);
-            r.acc->addFrame(cost);
-            if (!compared(c, in.frame)) continue;
-            const std::vector<walkthrough::ViewDepth> depths = readsDepth(c)
-                                                                   ? readViewDepths(c.display.views(in.head), targets)
-                                                                   : std::vector<walkthrough::ViewDepth>{};
-            r.acc->compare(in.frame, in.head, display::gl::readFrame(c.display, targets), depths,
-                           reference.at(in.frame));
-        }
 }
 
 }  // namespace cavewall::bench::gl

@@ -9,6 +9,7 @@
 #include "walkthrough/gl/walkthrough.h"
 
 #include <chrono>
+#include <functional>
 #include <map>
 #include <optional>
 #include <vector>
@@ -139,6 +140,9 @@ struct WalkRun {
     int budgetFrom = -1;
 };
 
+// Whether path frame `frame` is compared with full geometry (every --compare-every'th).
+bool compared(const ModeContext& c, long frame);
+
 // Whether a display's modes get the stereo error: stereo, with each eye's pixels apart (all
 // but anaglyph, whose eyes share one image and so one depth buffer).
 bool measuresStereo(const display::Display& display);
@@ -149,8 +153,11 @@ bool readsDepth(const ModeContext& c);
 // is drawn by every run in turn, so that their times share the machine's load of the same
 // seconds (a shared machine's load moves by 2x between minutes; ratios of times taken minutes
 // apart are not honest). Compared frames of the run with storeReference go to `reference`
-// (it comes first), the others' are compared with them.
-void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, ReferenceImages& reference);
+// (it comes first), the others' are compared with them. `alsoEachFrame`, when set, is called
+// with every path frame after the runs have drawn it (in.readImages: whether it is compared):
+// other modes drawn in the same seconds (the cell modes, app/bench/gl/cell_modes.h).
+void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, ReferenceImages& reference,
+                         const std::function<void(const walkthrough::FrameInput&)>& alsoEachFrame = {});
 
 // Baking on demand from a cold cache, alone: `walls` (planned, its folder and
 // manifest the baker's, whose cache is empty), drawn as `cavewall run --bake-on-demand` draws
@@ -171,28 +178,5 @@ struct NoiseComparison {
 };
 NoiseComparison interleavedNoise(const ModeContext& c, std::optional<walls::WallSetup> walls,
                                  const bench::ModeResult& mode, long frameIndex);
-
-// What a cell mode draws besides the geometry of its cells (app/bench/gl/driver.h).
-enum class CellDraw {
-    Cells,       // the selection's geometry cells, nothing else (the control)
-    CellsLayer,  // the same plus one textured full-screen layer per view through the wall pass:
-                 // each view's own screen quad, a 512 x 512 MIP-mapped sRGB texture sampled as
-                 // the walls' textures are, weight 0 (the image stays the control's; the cost
-                 // is the layer's: the shader, the samples and the blend run for every pixel
-                 // the layer covers, all but geometry nearer than the screen)
-    Near,        // the viewer's cell only, plus its walls as bare quads (one 1x1 texture)
-};
-
-// One cell mode of a runCellModes call and where its frames go.
-struct CellRun {
-    CellDraw draw = CellDraw::Cells;
-    ModeAccumulator* acc = nullptr;  // not null; its mode's lodPixels, the same for every run
-};
-
-// Runs cell modes with the selection of `setup`'s plan, at the modes' level-of-detail tolerance
-// (bench::ModeResult::lodPixels, the same for all; no budget), interleaved: every path frame is
-// drawn by each run in turn, so that their times share the machine's load of the same seconds.
-void runCellModes(const ModeContext& c, const walls::WallSetup& setup, const std::vector<CellRun>& runs,
-                  const ReferenceImages& reference);
 
 }  // namespace cavewall::bench::gl

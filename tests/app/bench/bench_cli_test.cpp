@@ -47,14 +47,15 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     // --quick keeps its small images, and says so in the header and on every figure line.
     EXPECT_THAT(r.out, HasSubstr("4 screens at 128x128 pixels, mono stereo mode"));
     EXPECT_THAT(r.out, HasSubstr("portal culling: off (neighbours drawn as geometry are drawn whole)"));
-    // Full geometry, the walls modes (but the paged one) and the clusters (--clusters, held to
-    // 60 Hz by the controller) are timed in the same seconds.
+    // Full geometry, the walls modes (but the paged one), the clusters (--clusters, held to
+    // 60 Hz by the controller), the control and the limit with levels of detail are timed in
+    // the same seconds.
     EXPECT_THAT(r.out,
                 HasSubstr("drawn frame by frame in turn (the same seconds): full, full lod 1px, walls flat a=20 blend, "
                           "walls flat a=30 blend, walls flat a=20 blend lod 1px"));
     EXPECT_THAT(r.out,
                 HasSubstr("walls flat a=30 blend lod 1px frame 16.7ms, clusters frame 0.5ms, clusters frame 200ms, "
-                          "frame by frame in turn"));
+                          "cells lod 1px, near lod 1px, frame by frame in turn"));
     // One clusters mode per --cluster-budgets entry, each with its budget line: no frame at
     // 128x128 takes as little as 0.5 ms (infeasible, said so with the floor), and 200 ms is
     // more than any takes (feasible: the line goes straight on to the floor).
