@@ -98,6 +98,7 @@ struct RunOptions {
     bool keepSheets = false;  // --keep-sheets: depth walls keep their rubber sheets (to measure the cut)
     // --no-occlusion, --occlusion-min, --occlusion-min-draws: RenderSettings::occlusion
     render::OcclusionSettings occlusion;
+    bool portalCulling = true;  // --no-portal-culling: WalkthroughSettings::portalCulling
     // --texture-format: storage of baked colour (walls/texture_blocks.h; keys the bake cache)
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
     std::optional<std::filesystem::path> cache;   // bake cache folder (default: the baker's)

@@ -31,7 +31,7 @@ const char* const kBenchUsage =
     "                      [--lod PX] [--triangle-budget N] [--frame-budget-ms T] [--lod-max PX]\n"
     "                      [--walls flat|depth] [--hierarchy [--hierarchy-budgets T1,T2,...]]\n"
     "                      [--compare-scene OTHER,...] [--on-demand] [--texture-format rgba8|bc1|bc3]\n"
-    "                      [--save-worst] [--portal-culling]\n"
+    "                      [--save-worst] [--no-portal-culling]\n"
     "                      [--no-occlusion] [--occlusion-min N] [--occlusion-min-draws D] [--occlusion-min-saved S]\n"
     "       cavewall bench --scale 2M,8M,32M [--data DIR] [--scale-metres M] [--frames N] [--resolution N]\n"
     "                      [--triangle-budget N|near] [--lod-max PX] [--min-zone M] [--walls flat|depth|flat,depth]\n"
@@ -73,9 +73,9 @@ const char* const kBenchUsage =
     "         draws (default 500), paused for 16 frames in a view where it saved less than\n"
     "         --occlusion-min-saved S of the triangles (default 0.1); triangles a frame are those\n"
     "         drawn. --no-occlusion: none.\n"
-    "         --portal-culling: the walls modes and the control draw other cells' objects only\n"
-    "         where they may be seen through the viewer cell's walls and open boundary (off by\n"
-    "         default: it is being checked against every image).\n"
+    "         Portal culling: the walls modes and the control draw other cells' objects only\n"
+    "         where they may be seen through the viewer cell's walls, open boundary and windows\n"
+    "         (walls/cell_openings.h); --no-portal-culling draws them whole.\n"
     "         --texture-format: storage of the baked colour (as `cavewall bake`, default\n"
     "         " DEFAULT_TEXTURE_FORMAT
     "); the disk and GPU MB columns and the image error include it.\n"
@@ -299,7 +299,9 @@ int runSceneBench(const Args& args) {
     o.keepSheets = args.has("keep-sheets");
     o.saveWorst = args.has("save-worst");
     o.occlusion = parseOcclusion(args);
-    o.portalCulling = args.has("portal-culling");
+    if (args.has("portal-culling") && args.has("no-portal-culling"))
+        throw Error("--portal-culling and --no-portal-culling: expected one of them, got both");
+    o.portalCulling = !args.has("no-portal-culling");
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.clusters = args.has(args.renamed("hierarchy", "clusters"));
     const std::string_view budgets = args.renamed("hierarchy-budgets", "cluster-budgets");
@@ -388,7 +390,7 @@ int runScaleBench(const Args& args) {
 
 int runBench(const std::vector<std::string>& words) {
     const Args args(words, {"stability", "quick", "hierarchy", "clusters", "on-demand", "keep-sheets", "mono",
-                            "occlusion", "no-occlusion", "save-worst", "portal-culling"});
+                            "occlusion", "no-occlusion", "save-worst", "portal-culling", "no-portal-culling"});
     // One flag list, packed.
     // clang-format off
     args.expectFlags({
@@ -396,7 +398,7 @@ int runBench(const std::vector<std::string>& words) {
         "compare-every", "min-zone", "ppd", "bake-resolution", "alphas", "warp-alpha", "lod",
         "triangle-budget", "frame-budget-ms", "lod-max", "walls", "hierarchy", "hierarchy-budgets", "clusters",
         "cluster-budgets", "compare-scene", "on-demand", "scale", "data", "scale-metres", "geometry-budget",
-        "texture-format", "save-worst", "portal-culling"});
+        "texture-format", "save-worst", "portal-culling", "no-portal-culling"});
     // clang-format on
     // --stability is a bench of its own: with --scale or a SCENE it would silently ignore them.
     args.expectAlone("stability", "bench");

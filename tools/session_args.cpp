@@ -66,6 +66,7 @@ void parseDrawing(const Args& args, app::RunOptions& o) {
     o.transition = args.choice("transition", app::kTransitionNames, o.transition);
     o.walls = !args.has("no-walls");
     o.wallTextures = !args.has("no-textures");
+    o.portalCulling = !args.has("no-portal-culling");
     o.wallKind = args.choice("walls", walls::kWallKindNames, o.wallKind);
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.plan.alphaDeg = args.number("alpha", o.plan.alphaDeg, 1e-3, 90.0);
@@ -112,7 +113,8 @@ void parseBakingAndClusters(const Args& args, app::RunOptions& o) {
 Args sessionArgs(const std::vector<std::string>& words) {
     return Args(words,
                 {"headless", "window", "no-walls", "no-textures", "sync-paging", "cluster", "hierarchy", "clusters",
-                 "bake-on-demand", "bake-first", "save-window", "mono", "keep-sheets", "occlusion", "no-occlusion"});
+                 "bake-on-demand", "bake-first", "save-window", "mono", "keep-sheets", "occlusion", "no-occlusion",
+                 "no-portal-culling"});
 }
 
 render::OcclusionSettings parseOcclusion(const Args& args) {
@@ -139,7 +141,7 @@ std::vector<std::string_view> sessionFlags() {
         "hierarchy-res", "hierarchy-fade", "clusters", "cluster-divisions", "cluster-res", "cluster-fade",
         "bake-on-demand", "bake-first", "cache-budget", "bake-interleave", "bake-nice", "texture-format",
         "texture-max", "texture-budget", "resolution", "mono", "keep-sheets", "occlusion", "no-occlusion",
-        "occlusion-min", "occlusion-min-draws", "occlusion-min-saved"};
+        "occlusion-min", "occlusion-min-draws", "occlusion-min-saved", "no-portal-culling"};
     // clang-format on
 }
 

@@ -151,8 +151,8 @@ public:
     // drawn as geometry where that weight is non-zero, and no texture's error is counted. On by
     // default. Blend transition only (the warp draws textures).
     void drawTextures(bool on) { _drawTextures = on; }
-    // On: plan() fills FramePlan::portals (WalkthroughSettings::portalCulling). Off by default:
-    // the sets cost a pass over the objects a frame.
+    // On: plan() fills FramePlan::portals (WalkthroughSettings::portalCulling, on by default).
+    // Off until called: the sets cost a pass over the objects a frame.
     void portalCulling(bool on) { _portalCulling = on; }
     // Steps 3-5 for the frame of the last requests() call, against `resident` textures and
     // `cellResident` cells (empty: every cell's geometry is resident).

@@ -61,10 +61,9 @@ struct WalkthroughSettings {
     // zones and blend strips, structure) and no wall texture; none is requested or loaded
     // (walkthrough/frame_planner.h FramePlanner::drawTextures). Blend transition only.
     bool wallTextures = true;
-    // True: objects of other cells are drawn only where they may be seen through the openings of
-    // the viewer's cell (FramePlan::portals, render/portal_cull.h). Off by default: on the
-    // clinic's walk it left out something one image of 192 showed, for a cause not yet found.
-    bool portalCulling = false;
+    // True (the default): objects of other cells are drawn only where they may be seen through
+    // the openings of the viewer's cell (FramePlan::portals, render/portal_cull.h).
+    bool portalCulling = true;
 };
 
 struct FrameInput {

@@ -176,6 +176,7 @@ walkthrough::gl::WalkthroughOptions walkthroughOptions(const RunOptions& o, wall
     options.baker = baker;
     options.render.lodPixels = o.lodPixels;
     options.render.occlusion = o.occlusion;
+    options.portalCulling = o.portalCulling;
     options.triangleBudget = o.triangleBudget;
     options.lodMaxPixels = std::max(o.lodMaxPixels, o.lodPixels);
     options.clusters.enabled = o.clusters;

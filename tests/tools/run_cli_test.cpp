@@ -460,6 +460,33 @@ TEST(RunCli, OcclusionCullingDrawsTheSameFrames) {
     expectSameSavedFrames(plain, culled);
 }
 
+// Portal culling (on by default) leaves out only what the openings of the viewer's cell hide:
+// the same walk through the rooms of a house (real walls, a portal at every doorway) with and
+// without it writes the same PNG files and draws fewer triangles.
+TEST(RunCli, PortalCullingDrawsTheSameFramesWithFewerTriangles) {
+    const fs::path house = outputDir("portals-house");
+    const CliResult gen = runCavewall({"generate", "house", "--out", house.string(), "--triangles", "20000"});
+    ASSERT_EQ(gen.exitCode, 0) << gen.err;
+    const fs::path whole = outputDir("portals-off"), culled = outputDir("portals-on");
+    for (const fs::path& out : {whole, culled}) {
+        std::vector<std::string> args = {"run",      "--scene",  (house / "scene.json").string(),
+                                         "--display", testDisplay(), "--tracker", "sim:walk?seed=3",
+                                         "--frames", "31",        "--cache",   cacheDir(),
+                                         "--out",    out.string(), "--save-frames", "every:10",
+                                         "--sync-paging", "--pace", "3"};
+        if (out == whole) args.push_back("--no-portal-culling");
+        const CliResult r = runCavewall(args);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+    }
+    expectSameSavedFrames(whole, culled);
+    auto triangles = [](const fs::path& out) {
+        double sum = 0.0;
+        for (const auto& row : readCsv(out / "frames.csv")) sum += std::stod(row.at("triangles"));
+        return sum;
+    };
+    EXPECT_LT(triangles(culled), triangles(whole));
+}
+
 TEST(RunCli, DTrackSenderOverLoopbackDrivesTheHead) {
     const fs::path out = outputDir("dtrack");
     // The tracker origin is 0.1 m above and 0.5 m in front of the cave origin.

@@ -139,10 +139,10 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                                  "drawn"
                            : std::string("occlusion culling: off (--no-occlusion: every mode draws what its frustum "
                                          "and cells keep)"),
-            o.portalCulling ? "portal culling: on (--portal-culling; walls modes and the control: each view draws other "
-                              "cells' objects only where their boxes may be seen from its eye through the viewer "
-                              "cell's walls and open boundary, walls/cell_openings.h)"
-                            : "portal culling: off (neighbours drawn as geometry are drawn whole)"};
+            o.portalCulling ? "portal culling: on (walls modes and the control: each view draws other cells' objects only "
+                              "where their boxes may be seen from its eye through the viewer cell's walls, open "
+                              "boundary and windows, walls/cell_openings.h; --no-portal-culling: off)"
+                            : "portal culling: off (--no-portal-culling: neighbours drawn as geometry are drawn whole)"};
 }
 
 // The checks that need no file: they fail before anything is loaded.

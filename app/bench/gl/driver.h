@@ -86,9 +86,9 @@ struct BenchOptions {
     // (RenderSettings::occlusion; --no-occlusion, --occlusion-min, --occlusion-min-draws);
     // triangles a frame are then those drawn.
     render::OcclusionSettings occlusion;
-    // --portal-culling: the walls modes and the control draw other cells' objects only where the
-    // viewer cell's openings show them (WalkthroughSettings::portalCulling).
-    bool portalCulling = false;
+    // The walls modes and the control draw other cells' objects only where the viewer cell's
+    // openings show them (WalkthroughSettings::portalCulling); --no-portal-culling: off.
+    bool portalCulling = true;
     // --texture-format: storage of the baked colour (walls/texture_blocks.h), disk and GPU
     walls::TextureFormat textureFormat = walls::TextureFormat::Rgba8;
     std::optional<std::filesystem::path> cache;  // bake cache (default: the baker's)

@@ -107,7 +107,7 @@ struct ModeContext {
     std::filesystem::path clusterCache;                // ClusterOptions::cache of the clusters modes
     walls::ReprojectSettings depthMarch;               // WalkthroughOptions::depthMarch
     render::OcclusionSettings occlusion{.on = false};  // RenderSettings::occlusion of every mode
-    bool portalCulling = false;                        // WalkthroughSettings::portalCulling of every mode
+    bool portalCulling = true;                         // WalkthroughSettings::portalCulling of every mode
 };
 
 // With occlusion culling, the triangles of the last frame that were submitted but not drawn

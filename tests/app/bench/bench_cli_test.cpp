@@ -46,7 +46,7 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     EXPECT_THAT(r.out, HasSubstr("| 1 | full |"));
     // --quick keeps its small images, and says so in the header and on every figure line.
     EXPECT_THAT(r.out, HasSubstr("4 screens at 128x128 pixels, mono stereo mode"));
-    EXPECT_THAT(r.out, HasSubstr("portal culling: off (neighbours drawn as geometry are drawn whole)"));
+    EXPECT_THAT(r.out, HasSubstr("portal culling: on (walls modes and the control: each view draws other cells'"));
     // Full geometry, the walls modes (but the paged one), the clusters (--clusters, held to
     // 60 Hz by the controller), the control and the limit with levels of detail are timed in
     // the same seconds.
@@ -228,9 +228,10 @@ TEST(BenchSceneCli, StereoRunMeasuresTheStereoErrorPerEye) {
                                      out.string(),
                                      "--cache",
                                      (root / "cache").string(),
-                                     "--portal-culling"});
+                                     "--no-portal-culling"});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
-    EXPECT_THAT(r.out, HasSubstr("portal culling: on (--portal-culling; walls modes and the control:"));
+    EXPECT_THAT(r.out, HasSubstr("portal culling: off (--no-portal-culling: neighbours drawn as geometry are drawn "
+                                 "whole)"));
     EXPECT_THAT(r.out, HasSubstr("drawn frame by frame in turn (the same seconds): full, walls depth a=20 blend, "
                                  "walls flat a=20 blend, walls depth a=20 warp;"));
     EXPECT_THAT(r.out, HasSubstr("bake flat walls a=20: "));
@@ -460,6 +461,8 @@ TEST(BenchSceneCli, BadInputIsAClearError) {
          "bench: --hierarchy-budgets: expected milliseconds in (0, 100000], got 0"},
         {{"bench", "x.json", "--hierarchy", "--clusters"},
          "--hierarchy and --clusters: expected one of them, got both"},
+        {{"bench", "x.json", "--portal-culling", "--no-portal-culling"},
+         "--portal-culling and --no-portal-culling: expected one of them, got both"},
         {{"bench", "--scale", "2M,x"}, "--scale: entry 2 'x': expected a triangle count"},
         // A stray word is refused, not ignored.
         {{"bench", "plant.glb", "--scale", "2M"},
