@@ -71,7 +71,7 @@ in vec2 vTexCoord;
 in vec4 vColor;
 layout(binding = 0) uniform sampler2D uBaseColorTexture;
 layout(location = 8) uniform vec4 uBaseColor;
-layout(location = 9) uniform ivec2 uFlags;       // x: textured, y: alpha mode (1: mask)
+layout(location = 9) uniform ivec2 uFlags;       // x: textured, y: alpha mode (1: mask, 2: blend)
 layout(location = 10) uniform vec2 uParams;       // x: alpha cutoff, y: ambient
 out vec4 fragColor;
 void main() {
@@ -84,7 +84,7 @@ void main() {
         vec3 n = normalize(vNormal);
         diffuse = abs(dot(n, toEye));   // the side facing B's eye, as the scene renderer lights it
     }
-    fragColor = vec4(color.rgb * (uParams.y + (1.0 - uParams.y) * diffuse), 1.0);
+    fragColor = vec4(color.rgb * (uParams.y + (1.0 - uParams.y) * diffuse), uFlags.y == 2 ? color.a : 1.0);
 }
 )";
 
@@ -210,9 +210,17 @@ void WarpPass::drawStructure(const WarpWall& wall, const display::ScreenView& vi
     std::vector<int> objects = _structure;
     if (auto c = _cellObjects.find(wall.cell); c != _cellObjects.end())
         objects.insert(objects.end(), c->second.begin(), c->second.end());
-    for (int index : objects) {
-        const scenes::Object& o = _scene.objects[index];
-        if (!meetsTextureView(o.worldBounds, behind, offset, a.clipFromFrame())) continue;
+    std::erase_if(objects, [&](int i) {
+        return !meetsTextureView(_scene.objects[i].worldBounds, behind, offset, a.clipFromFrame());
+    });
+    const std::size_t opaque = orderForBlending(objects, viewFromWorldB);
+    for (std::size_t k = 0; k < objects.size(); ++k) {
+        if (k == opaque) {  // glass and the like last, blended as the scene renderer blends them
+            glEnable(GL_BLEND);
+            glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+            glDepthMask(GL_FALSE);
+        }
+        const scenes::Object& o = _scene.objects[objects[k]];
         const glm::dmat4 bFromModel = viewFromWorldB * o.worldFromModel;
         // Stored positions decode into the model frame (GpuScene::modelFromStored).
         const glm::dmat4& modelFromStored = _gpu.modelFromStored(o.mesh);
@@ -228,7 +236,10 @@ void WarpPass::drawStructure(const WarpWall& wall, const display::ScreenView& vi
         const glm::mat3 uvTransform = t.transform * _gpu.uvFromStored(o.mesh);
         glUniformMatrix3fv(6, 1, GL_FALSE, glm::value_ptr(uvTransform));
         glUniform4fv(8, 1, glm::value_ptr(material.baseColorFactor));
-        glUniform2i(9, textured ? 1 : 0, material.alphaMode == scenes::AlphaMode::Mask ? 1 : 0);
+        glUniform2i(9, textured ? 1 : 0,
+                    static_cast<int>(material.alphaMode == scenes::AlphaMode::Mask    ? 1
+                                     : material.alphaMode == scenes::AlphaMode::Blend ? 2
+                                                                                      : 0));
         glUniform2f(10, material.alphaCutoff, _settings.ambient);
         glBindTextureUnit(0, textured ? _gpu.texture(t.image) : 0);
         glBindSampler(0, textured ? _gpu.sampler(t.wrapS, t.wrapT) : 0);
@@ -240,7 +251,26 @@ void WarpPass::drawStructure(const WarpWall& wall, const display::ScreenView& vi
         stats.triangles += range.indexCount / 3;
     }
     for (int i = 0; i < 5; ++i) glDisable(GL_CLIP_DISTANCE0 + i);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
     glBindSampler(0, 0);
+}
+
+// Puts `objects`' opaque ones first (in their order), then the blended ones from the farthest
+// to the nearest by the view depth of their bounds' centre from `viewFromWorld`'s eye; returns
+// where the blended ones start.
+std::size_t WarpPass::orderForBlending(std::vector<int>& objects, const glm::dmat4& viewFromWorld) const {
+    auto blends = [&](int i) {
+        const int m = _scene.meshes[_scene.objects[i].mesh].material;
+        return m >= 0 && _scene.materials[m].alphaMode == scenes::AlphaMode::Blend;
+    };
+    const auto firstBlended = std::stable_partition(objects.begin(), objects.end(), [&](int i) { return !blends(i); });
+    auto depth = [&](int i) {
+        const scenes::Bounds& b = _scene.objects[i].worldBounds;
+        return (viewFromWorld * glm::dvec4(0.5 * (b.min + b.max), 1.0)).z;  // negative in front
+    };
+    std::stable_sort(firstBlended, objects.end(), [&](int x, int y) { return depth(x) < depth(y); });
+    return static_cast<std::size_t>(firstBlended - objects.begin());
 }
 
 }  // namespace cavewall::walls::gl

@@ -20,7 +20,9 @@
 //     the scene renderer drew it, unwarped. Both parts agree on the plane (W leaves wall points
 //     in place), so structure crossing the wall is C0-continuous with itself and the texture.
 //     Lit as the scene renderer lights it (headlight at B's eye, same ambient), so shading is
-//     continuous too. No face culling (the warp may change which side A and B see).
+//     continuous too. No face culling (the warp may change which side A and B see). Blended
+//     materials (glass) are drawn last, farthest first, blended over what lies behind them
+//     without writing depth, as the scene renderer draws them.
 //     With WarpWall::cell set (a warp-morph, walkthrough.h), that cell's other objects are drawn
 //     the same way, through the frustum from WarpWall::samplingPoint (the morph's viewpoint).
 //  3. the caller then draws the wall quads (wall_pass.h) over it, as without the warp.
@@ -58,6 +60,7 @@ private:
     void punch(const WarpWall& wall, const glm::dmat4& viewFromWorldB, const glm::mat4& projection);
     void drawStructure(const WarpWall& wall, const display::ScreenView& view, const glm::dmat4& caveFromWorld,
                        display::FrameStats& stats);
+    std::size_t orderForBlending(std::vector<int>& objects, const glm::dmat4& viewFromWorld) const;
     GLuint depthCopy(GLuint depth, glm::ivec2 size);
 
     const scenes::Scene& _scene;
