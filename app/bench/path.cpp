@@ -71,6 +71,7 @@ EyePath recordEyePath(const scenes::Scene& scene, const scenes::SceneDescription
     options.guidePace = std::max(1.0, length / (static_cast<double>(steps) * app::kRunStep));
     const std::vector<long> counts = framesPerPiece(lengths, frames);
     EyePath path;
+    if (guided) path.pace = options.guidePace;
     for (std::size_t k = 0; k < walk.size(); ++k) {
         scenes::SceneDescription piece = d;
         piece.walkPath = walk[k];
@@ -94,6 +95,10 @@ EyePath recordEyePath(const scenes::Scene& scene, const scenes::SceneDescription
     text << "; " << frames << " frames at 1/60 s, the same poses for every mode";
     path.description = text.str();
     return path;
+}
+
+double morphSecondsOn(const EyePath& path, double morphSeconds, double walkingPace) {
+    return path.pace > walkingPace ? morphSeconds * walkingPace / path.pace : morphSeconds;
 }
 
 }  // namespace cavewall::bench

@@ -24,7 +24,13 @@ namespace cavewall::bench {
 struct EyePath {
     std::vector<walkthrough::FrameInput> frames;  // readImages false; no hand cursor
     std::string description;                      // one line for the report header
+    double pace = 1.0;                            // m/s along the walk path (1 without one)
 };
+
+// How long a warp-morph lasts on `path` (WalkthroughSettings::morphSeconds): the distance a
+// viewer covers during `morphSeconds` at `walkingPace` (m/s; `cavewall run`'s guided pace), at
+// the path's own pace, so that a morph spans the same stretch of the walk as it would walked.
+double morphSecondsOn(const EyePath& path, double morphSeconds, double walkingPace);
 
 // Throws cavewall::Error for a bad tracker spec.
 EyePath recordEyePath(const scenes::Scene& scene, const scenes::SceneDescription& description,

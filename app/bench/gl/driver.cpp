@@ -7,6 +7,7 @@
 #include "scenes/loader.h"
 #include "app/bench/gl/baked_walls.h"
 #include "app/bench/gl/cell_modes.h"
+#include "app/run_options.h"
 #include "app/bench/gl/modes.h"
 #include "app/bench/private_cache.h"
 #include "render/occlusion_settings.h"
@@ -121,7 +122,13 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
             "view) at alpha " +
                 config::formatNumber(o.transitionAlphaDeg) +
                 "; 'blend paged' at the same alpha pages "
-                "as `cavewall run` does (background decoding, default budget and upload limit, cold start)",
+                "as `cavewall run` does (background decoding, default budget and upload limit, cold start); a "
+                "warp-morph lasts " +
+                config::formatNumber(bench::morphSecondsOn(path, walkthrough::WalkthroughSettings{}.morphSeconds,
+                                                           app::RunOptions{}.guidePace)) +
+                " s of the path's time, the stretch a viewer walks at " +
+                config::formatNumber(app::RunOptions{}.guidePace) + " m/s in `cavewall run`'s " +
+                config::formatNumber(walkthrough::WalkthroughSettings{}.morphSeconds) + " s",
             "near: the near-geometry limit, the viewer's cell plus its walls as bare quads (one 1x1 texture); "
             "cells: the cells the walls mode draws as geometry, without textures; cells+layer: the same plus one "
             "textured full-screen layer per view through the wall pass (512x512 MIP-mapped sRGB, weight 0: the "

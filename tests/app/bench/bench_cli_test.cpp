@@ -46,6 +46,9 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     EXPECT_THAT(r.out, HasSubstr("| 1 | full |"));
     // --quick keeps its small images, and says so in the header and on every figure line.
     EXPECT_THAT(r.out, HasSubstr("4 screens at 128x128 pixels, mono stereo mode"));
+    // The quick path is walked at about 1000 m/s: a warp-morph spans its half metre in 0.5 ms.
+    EXPECT_THAT(r.out, HasSubstr("a warp-morph lasts 0.000"));
+    EXPECT_THAT(r.out, HasSubstr(" s of the path's time, the stretch a viewer walks at 1 m/s in `cavewall run`'s 0.5 s"));
     EXPECT_THAT(r.out, HasSubstr("portal culling: on (walls modes and the control: each view draws other cells'"));
     // Full geometry, the walls modes (but the paged one), the clusters (--clusters, held to
     // 60 Hz by the controller), the control and the limit with levels of detail are timed in

@@ -16,5 +16,17 @@ TEST(BenchPath, PiecesGetFramesInProportionToTheirLength) {
     EXPECT_EQ(framesPerPiece({5.0, 5.0, 5.0}, 2), (std::vector<long>{2, 0, 0}));
 }
 
+// A warp-morph spans the stretch of the walk it spans in `cavewall run`: 0.5 s at 1 m/s is half a
+// metre, which a path walked at 50 m/s covers in 0.01 s; a path walked slower keeps the 0.5 s.
+TEST(BenchPath, AWarpMorphSpansTheSameStretchOfTheWalkAtAnyPace) {
+    EyePath path;
+    path.pace = 50.0;
+    EXPECT_DOUBLE_EQ(morphSecondsOn(path, 0.5, 1.0), 0.01);
+    path.pace = 1.0;
+    EXPECT_DOUBLE_EQ(morphSecondsOn(path, 0.5, 1.0), 0.5);
+    path.pace = 0.5;
+    EXPECT_DOUBLE_EQ(morphSecondsOn(path, 0.5, 1.0), 0.5);
+}
+
 }  // namespace
 }  // namespace cavewall::bench
