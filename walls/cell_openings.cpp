@@ -47,13 +47,19 @@ bool overlaps(const scenes::Bounds& b, const std::array<glm::dvec2, 2>& column) 
     return b.min.x < column[1].x && b.max.x > column[0].x && b.min.z < column[1].y && b.max.z > column[0].y;
 }
 
-// Whether `o` is a pane of glass in the walls of the cell whose floor box is `floor` and wall
-// band `band`: its material blends; its box lies in the band, outside the floor box (not a lamp
-// or a glass table in the room), thin across (at most 10 cm) and at least 20 cm wide and high.
-bool paneInWalls(const scenes::Scene& scene, const scenes::Object& o, const std::array<glm::dvec2, 2>& floor,
+// Whether `b` lies within the box `inner` (x, z), at any height.
+bool within(const scenes::Bounds& b, const std::array<glm::dvec2, 2>& inner) {
+    return b.min.x >= inner[0].x && b.max.x <= inner[1].x && b.min.z >= inner[0].y && b.max.z <= inner[1].y;
+}
+
+// Whether `o` is a pane of glass in the walls of the cell whose floor box grown by kWallBand is
+// `band` and shrunk by it `inner`: its material blends; its box reaches into the band and not
+// only into the inner box (not a pane standing in the room), thin across (at most 10 cm) and
+// at least 20 cm wide and high.
+bool paneInWalls(const scenes::Scene& scene, const scenes::Object& o, const std::array<glm::dvec2, 2>& inner,
                  const std::array<glm::dvec2, 2>& band) {
     const scenes::Bounds& b = o.worldBounds;
-    if (b.empty() || !overlaps(b, band) || overlaps(b, floor)) return false;
+    if (b.empty() || !overlaps(b, band) || within(b, inner)) return false;
     const glm::dvec3 size = b.max - b.min;
     if (std::min(size.x, size.z) > 0.1 || std::max(size.x, size.z) < 0.2 || size.y < 0.2) return false;
     if (o.mesh < 0 || o.mesh >= static_cast<int>(scene.meshes.size())) return false;
@@ -83,7 +89,6 @@ display::ScreenQuad paneQuad(const scenes::Bounds& b, glm::dvec2 inside) {
     return {a, c, {a.x, y1, a.z}};
 }
 
-
 }  // namespace
 
 CellOpenings::CellOpenings(const Plan& plan, const scenes::SceneDescription& description)
@@ -96,7 +101,7 @@ CellOpenings::CellOpenings(const Plan& plan, const scenes::SceneDescription& des
         }
     for (int e = 0; e < _cellCount; ++e) {
         _columns.push_back(floorBox(description.cells[e], kWallBand));
-        _floors.push_back(floorBox(description.cells[e], -0.01));
+        _inners.push_back(floorBox(description.cells[e], -kWallBand));
         glm::dvec2 centre(0.0);
         for (const glm::dvec2& p : description.cells[e].region)
             centre += p / static_cast<double>(description.cells[e].region.size());
@@ -129,9 +134,9 @@ void CellOpenings::frameSets(int eyeCell, const std::vector<bool>& drawn, const 
     };
     for (int o : openings(eyeCell)) open(o);
     const std::array<glm::dvec2, 2>& column = _columns[static_cast<std::size_t>(eyeCell)];
-    const std::array<glm::dvec2, 2>& floor = _floors[static_cast<std::size_t>(eyeCell)];
+    const std::array<glm::dvec2, 2>& inner = _inners[static_cast<std::size_t>(eyeCell)];
     for (const scenes::Object& o : scene.objects)  // glass in the eye cell's walls: windows
-        if (paneInWalls(scene, o, floor, column)) {
+        if (paneInWalls(scene, o, inner, column)) {
             open(static_cast<int>(out.portals.size()));
             out.portals.push_back(paneQuad(o.worldBounds, _centres[static_cast<std::size_t>(eyeCell)]));
         }

@@ -10,8 +10,8 @@
 // is E, and objects over, under or within half a metre of E's floor box (another storey seen
 // within E's column through a void or a stairwell; what is in or on E's own walls: a window
 // pane, a switch) are drawn without test, and everything when E has no opening. A pane of glass
-// (a thin, blended object) within that half metre outside E's floor box is an opening too: a
-// window in a real wall.
+// (a thin, blended object) within half a metre of the edge of E's floor box is an opening too:
+// a window in a real wall.
 //
 // What this leaves out is what the textures leave out too: what real walls hide in the
 // visibility model and what lies past a virtual wall's top.
@@ -54,7 +54,7 @@ private:
     std::vector<display::ScreenQuad> _quads;          // walls seen from each side, then open parts
     std::vector<std::vector<int>> _openings;          // per cell: indices into _quads
     std::vector<std::array<glm::dvec2, 2>> _columns;  // per cell: its floor box (x, z) and wall band
-    std::vector<std::array<glm::dvec2, 2>> _floors;   // per cell: its floor box, shrunk by 1 cm
+    std::vector<std::array<glm::dvec2, 2>> _inners;   // per cell: its floor box shrunk by the band
     std::vector<glm::dvec2> _centres;                 // per cell: its region's mean corner (x, z)
 };
 

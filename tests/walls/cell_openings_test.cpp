@@ -164,6 +164,13 @@ TEST(CellOpenings, GlassInTheEyeCellsWallsIsAnOpening) {
     const render::PortalView view(sets, {0.5, 1.5, 0.5});
     EXPECT_TRUE(view.visible(1, west.worldBounds));
     EXPECT_FALSE(view.visible(2, south.worldBounds));
+    // A pane straddling the cell's edge (the boundary drawn through the middle of the wall) too.
+    scene.objects[0].worldBounds = {};
+    scene.objects[0].worldBounds.add({-0.01, 1.0, 0.3});
+    scene.objects[0].worldBounds.add({0.01, 2.0, 0.7});
+    cells.frameSets(0, {true, true, true, true}, scene, sets);
+    ASSERT_EQ(sets.portals.size(), cells.portals().size() + 1);
+    EXPECT_TRUE(render::PortalView(sets, {0.5, 1.5, 0.5}).visible(1, west.worldBounds));
     // Without glass the same box is hidden by the real wall.
     scene.materials.back().alphaMode = scenes::AlphaMode::Opaque;
     cells.frameSets(0, {true, true, true, true}, scene, sets);
