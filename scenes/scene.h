@@ -146,4 +146,13 @@ struct Scene {
 // and winding flag.
 int addObject(Scene& scene, int mesh, const glm::dmat4& worldFromModel, std::string name, Role role = Role::Content);
 
+// Whether `o`'s material blends (AlphaMode::Blend: glass and the like); false when its mesh or
+// material index is out of range.
+inline bool blends(const Scene& scene, const Object& o) {
+    if (o.mesh < 0 || o.mesh >= static_cast<int>(scene.meshes.size())) return false;
+    const int m = scene.meshes[static_cast<std::size_t>(o.mesh)].material;
+    return m >= 0 && m < static_cast<int>(scene.materials.size()) &&
+           scene.materials[static_cast<std::size_t>(m)].alphaMode == AlphaMode::Blend;
+}
+
 }  // namespace cavewall::scenes

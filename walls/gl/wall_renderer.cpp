@@ -17,13 +17,7 @@ double msSince(Clock::time_point start) {
 
 WallTextureRenderer::WallTextureRenderer(const scenes::Scene& scene, float ambient, double lodTexels)
     : _lodTexels(lodTexels), _renderer(scene, render::gl::RenderSettings{glm::vec4(0.0f), ambient, true, lodTexels}) {
-    for (const scenes::Object& o : scene.objects) {
-        const int material = o.mesh >= 0 && o.mesh < static_cast<int>(scene.meshes.size())
-                                 ? scene.meshes[static_cast<std::size_t>(o.mesh)].material
-                                 : -1;
-        _blended.push_back(material >= 0 && material < static_cast<int>(scene.materials.size()) &&
-                           scene.materials[static_cast<std::size_t>(material)].alphaMode == scenes::AlphaMode::Blend);
-    }
+    for (const scenes::Object& o : scene.objects) _blended.push_back(scenes::blends(scene, o));
 }
 
 render::DrawFilter WallTextureRenderer::filterFor(const std::vector<int>& objects) const {

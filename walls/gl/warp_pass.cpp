@@ -260,14 +260,10 @@ void WarpPass::drawStructure(const WarpWall& wall, const display::ScreenView& vi
 // to the nearest by the view depth of their bounds' centre from `viewFromWorld`'s eye; returns
 // where the blended ones start.
 std::size_t WarpPass::orderForBlending(std::vector<int>& objects, const glm::dmat4& viewFromWorld) const {
-    auto blends = [&](int i) {
-        const int m = _scene.meshes[_scene.objects[i].mesh].material;
-        return m >= 0 && _scene.materials[m].alphaMode == scenes::AlphaMode::Blend;
-    };
-    const auto firstBlended = std::stable_partition(objects.begin(), objects.end(), [&](int i) { return !blends(i); });
-    auto depth = [&](int i) {
-        const scenes::Bounds& b = _scene.objects[i].worldBounds;
-        return (viewFromWorld * glm::dvec4(0.5 * (b.min + b.max), 1.0)).z;  // negative in front
+    const auto firstBlended = std::stable_partition(
+        objects.begin(), objects.end(), [&](int i) { return !scenes::blends(_scene, _scene.objects[i]); });
+    auto depth = [&](int i) {  // negative in front
+        return (viewFromWorld * glm::dvec4(_scene.objects[i].worldBounds.centre(), 1.0)).z;
     };
     std::stable_sort(firstBlended, objects.end(), [&](int x, int y) { return depth(x) < depth(y); });
     return static_cast<std::size_t>(firstBlended - objects.begin());
