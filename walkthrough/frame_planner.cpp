@@ -75,7 +75,7 @@ FramePlanner::FramePlanner(const scenes::Scene& scene, const scenes::SceneDescri
         return;
     }
     _selector.emplace(_walls->plan, _walls->table, description);
-    _portals.emplace(_walls->plan, description);
+    _portals.emplace(_walls->plan, description, scene);
     for (const walls::Texture& t : _walls->plan.textures) _textures[t.id] = &t;
     _memory.resize(_walls->plan.walls.size());
 }

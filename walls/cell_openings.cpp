@@ -12,17 +12,6 @@ namespace {
 // that the pyramid through it is the wedge through its floor segment.
 constexpr double kOpeningReach = 1000.0;
 
-// The opening over the floor segment [a, b] of `cell`'s boundary, reaching kOpeningReach below
-// and above its floor, its normal into the cell.
-display::ScreenQuad openingQuad(const scenes::Cell& cell, glm::dvec2 a, glm::dvec2 b) {
-    glm::dvec2 inside(0.0);
-    for (const glm::dvec2& p : cell.region) inside += p / static_cast<double>(cell.region.size());
-    const glm::dvec2 along = b - a, into = inside - a;
-    if (along.x * into.y - along.y * into.x < 0.0) std::swap(a, b);  // the normal (-dz, dx) into the cell
-    const double y = cell.floorY;
-    return {{a.x, y - kOpeningReach, a.y}, {b.x, y - kOpeningReach, b.y}, {a.x, y + kOpeningReach, a.y}};
-}
-
 // How far past a cell's floor box its own walls reach, metres: a wall's thickness and what is
 // mounted on it. A window pane in the wall or a switch on its face lies within this band.
 constexpr double kWallBand = 0.5;
@@ -32,8 +21,25 @@ constexpr double kWallBand = 0.5;
 // boxes, so the opening a line of sight passes may lie half a wall's thickness off.
 constexpr double kPortalSlack = 0.3;
 
+using Box2 = std::array<glm::dvec2, 2>;  // (x, z) from, to
+
+// The vertical rectangle over the floor segment [a, b] (x, z) from height y0 to y1, its normal
+// (-dz, dx) facing `inside` (x, z).
+display::ScreenQuad verticalQuad(glm::dvec2 a, glm::dvec2 b, double y0, double y1, glm::dvec2 inside) {
+    const glm::dvec2 along = b - a, into = inside - a;
+    if (along.x * into.y - along.y * into.x < 0.0) std::swap(a, b);
+    return {{a.x, y0, a.y}, {b.x, y0, b.y}, {a.x, y1, a.y}};
+}
+
+// The mean of `cell`'s region corners (x, z): inside it for the convex regions cells have.
+glm::dvec2 regionCentre(const scenes::Cell& cell) {
+    glm::dvec2 centre(0.0);
+    for (const glm::dvec2& p : cell.region) centre += p / static_cast<double>(cell.region.size());
+    return centre;
+}
+
 // The floor box (x, z) of `cell`, grown by `margin` (negative: shrunk).
-std::array<glm::dvec2, 2> floorBox(const scenes::Cell& cell, double margin) {
+Box2 floorBox(const scenes::Cell& cell, double margin) {
     glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi = -lo;
     for (const glm::dvec2& p : cell.region) {
         lo = glm::min(lo, p);
@@ -43,12 +49,12 @@ std::array<glm::dvec2, 2> floorBox(const scenes::Cell& cell, double margin) {
 }
 
 // Whether `b` overlaps the column over the box `column` (x, z), at any height.
-bool overlaps(const scenes::Bounds& b, const std::array<glm::dvec2, 2>& column) {
+bool overlaps(const scenes::Bounds& b, const Box2& column) {
     return b.min.x < column[1].x && b.max.x > column[0].x && b.min.z < column[1].y && b.max.z > column[0].y;
 }
 
 // Whether `b` lies within the box `inner` (x, z), at any height.
-bool within(const scenes::Bounds& b, const std::array<glm::dvec2, 2>& inner) {
+bool within(const scenes::Bounds& b, const Box2& inner) {
     return b.min.x >= inner[0].x && b.max.x <= inner[1].x && b.min.z >= inner[0].y && b.max.z <= inner[1].y;
 }
 
@@ -56,42 +62,29 @@ bool within(const scenes::Bounds& b, const std::array<glm::dvec2, 2>& inner) {
 // `band` and shrunk by it `inner`: its material blends; its box reaches into the band and not
 // only into the inner box (not a pane standing in the room), thin across (at most 10 cm) and
 // at least 20 cm wide and high.
-bool paneInWalls(const scenes::Scene& scene, const scenes::Object& o, const std::array<glm::dvec2, 2>& inner,
-                 const std::array<glm::dvec2, 2>& band) {
+bool paneInWalls(const scenes::Scene& scene, const scenes::Object& o, const Box2& inner, const Box2& band) {
     const scenes::Bounds& b = o.worldBounds;
     if (b.empty() || !overlaps(b, band) || within(b, inner)) return false;
     const glm::dvec3 size = b.max - b.min;
     if (std::min(size.x, size.z) > 0.1 || std::max(size.x, size.z) < 0.2 || size.y < 0.2) return false;
-    if (o.mesh < 0 || o.mesh >= static_cast<int>(scene.meshes.size())) return false;
-    const int m = scene.meshes[o.mesh].material;
-    return m >= 0 && m < static_cast<int>(scene.materials.size()) &&
-           scene.materials[m].alphaMode == scenes::AlphaMode::Blend;
+    return scenes::blends(scene, o);
 }
 
-// A blended object in a cell's wall band as an opening: the vertical rectangle through the
-// middle of its box across its thinner horizontal side, grown by that side's thickness and
-// 2 cm all round, facing `inside` (x, z). A line of sight through the pane crosses it there.
+// A pane of glass in a cell's walls as an opening: the vertical rectangle through the middle of
+// its box across its thinner horizontal side, grown by that side's thickness and 2 cm all
+// round, facing `inside` (x, z). A line of sight through the pane crosses it there.
 display::ScreenQuad paneQuad(const scenes::Bounds& b, glm::dvec2 inside) {
-    const glm::dvec3 size = b.max - b.min, mid = 0.5 * (b.min + b.max);
-    const bool thinX = size.x < size.z;
+    const glm::dvec3 size = b.max - b.min, mid = b.centre();
     const double grow = std::min(size.x, size.z) + 0.02;
-    const double y0 = b.min.y - grow, y1 = b.max.y + grow;
-    glm::dvec3 a, c;
-    if (thinX) {
-        a = {mid.x, y0, b.min.z - grow};
-        c = {mid.x, y0, b.max.z + grow};
-    } else {
-        a = {b.min.x - grow, y0, mid.z};
-        c = {b.max.x + grow, y0, mid.z};
-    }
-    const glm::dvec2 along(c.x - a.x, c.z - a.z), into = inside - glm::dvec2(a.x, a.z);
-    if (along.x * into.y - along.y * into.x < 0.0) std::swap(a, c);  // the normal (-dz, dx) into the cell
-    return {a, c, {a.x, y1, a.z}};
+    const bool thinX = size.x < size.z;
+    const glm::dvec2 from = thinX ? glm::dvec2(mid.x, b.min.z - grow) : glm::dvec2(b.min.x - grow, mid.z);
+    const glm::dvec2 to = thinX ? glm::dvec2(mid.x, b.max.z + grow) : glm::dvec2(b.max.x + grow, mid.z);
+    return verticalQuad(from, to, b.min.y - grow, b.max.y + grow, inside);
 }
 
 }  // namespace
 
-CellOpenings::CellOpenings(const Plan& plan, const scenes::SceneDescription& description)
+CellOpenings::CellOpenings(const Plan& plan, const scenes::SceneDescription& description, const scenes::Scene& scene)
     : _cellCount(static_cast<int>(description.cells.size())), _openings(description.cells.size()) {
     for (int w = 0; w < static_cast<int>(plan.walls.size()); ++w)
         for (int s = 0; s < 2; ++s) {
@@ -99,17 +92,19 @@ CellOpenings::CellOpenings(const Plan& plan, const scenes::SceneDescription& des
             const int cell = plan.walls[w].cells[s];
             if (cell >= 0 && cell < _cellCount) _openings[cell].push_back(2 * w + s);
         }
+    auto add = [&](int cell, const display::ScreenQuad& q) {
+        _openings[cell].push_back(static_cast<int>(_quads.size()));
+        _quads.push_back(q);
+    };
     for (int e = 0; e < _cellCount; ++e) {
-        _columns.push_back(floorBox(description.cells[e], kWallBand));
-        _inners.push_back(floorBox(description.cells[e], -kWallBand));
-        glm::dvec2 centre(0.0);
-        for (const glm::dvec2& p : description.cells[e].region)
-            centre += p / static_cast<double>(description.cells[e].region.size());
-        _centres.push_back(centre);
-        for (const auto& [a, b] : openBoundary(description, e)) {
-            _openings[e].push_back(static_cast<int>(_quads.size()));
-            _quads.push_back(openingQuad(description.cells[e], a, b));
-        }
+        const scenes::Cell& cell = description.cells[e];
+        const glm::dvec2 centre = regionCentre(cell);
+        _columns.push_back(floorBox(cell, kWallBand));
+        for (const auto& [a, b] : openBoundary(description, e))
+            add(e, verticalQuad(a, b, cell.floorY - kOpeningReach, cell.floorY + kOpeningReach, centre));
+        const Box2 inner = floorBox(cell, -kWallBand);
+        for (const scenes::Object& o : scene.objects)  // windows
+            if (paneInWalls(scene, o, inner, _columns.back())) add(e, paneQuad(o.worldBounds, centre));
     }
 }
 
@@ -124,22 +119,16 @@ void CellOpenings::frameSets(int eyeCell, const std::vector<bool>& drawn, const 
     out.chains.clear();
     out.sets.clear();
     out.objectSet.assign(scene.objects.size(), -1);
-    if (openings(eyeCell).empty()) return;
-    out.portals = _quads;
+    const std::vector<int>& openings = this->openings(eyeCell);
+    if (openings.empty()) return;
     out.slack = kPortalSlack;
     out.sets.emplace_back();
-    auto open = [&](int portal) {
+    for (int o : openings) {
         out.sets[0].push_back(static_cast<int>(out.chains.size()));
-        out.chains.push_back({portal});
-    };
-    for (int o : openings(eyeCell)) open(o);
-    const std::array<glm::dvec2, 2>& column = _columns[static_cast<std::size_t>(eyeCell)];
-    const std::array<glm::dvec2, 2>& inner = _inners[static_cast<std::size_t>(eyeCell)];
-    for (const scenes::Object& o : scene.objects)  // glass in the eye cell's walls: windows
-        if (paneInWalls(scene, o, inner, column)) {
-            open(static_cast<int>(out.portals.size()));
-            out.portals.push_back(paneQuad(o.worldBounds, _centres[static_cast<std::size_t>(eyeCell)]));
-        }
+        out.chains.push_back({static_cast<int>(out.portals.size())});
+        out.portals.push_back(_quads[static_cast<std::size_t>(o)]);
+    }
+    const Box2& column = _columns[static_cast<std::size_t>(eyeCell)];
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const scenes::Object& o = scene.objects[i];
         if (o.role == scenes::Role::Structure || overlaps(o.worldBounds, column)) continue;

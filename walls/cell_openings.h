@@ -30,32 +30,32 @@ using PortalSets = render::PortalSets;
 
 class CellOpenings {
 public:
-    // Keeps nothing of its arguments; `plan` is planned for `description`.
-    CellOpenings(const Plan& plan, const scenes::SceneDescription& description);
+    // Keeps nothing of its arguments; `plan` is planned for `description`, whose cells hold
+    // `scene`'s objects.
+    CellOpenings(const Plan& plan, const scenes::SceneDescription& description, const scenes::Scene& scene);
 
     // The openings of `cell`, as indices into portals(); empty for a cell out of range.
     const std::vector<int>& openings(int cell) const;
 
     // The portal sets of a frame whose viewer is in `eyeCell` and which draws the cells marked
-    // in `drawn` (per description cell): portals(), then one portal per pane of glass in
-    // eyeCell's walls; one chain per opening of eyeCell and per pane, one set of all of them,
-    // and objectSet over `scene`'s objects (the set for those tested, -1 for the others). No sets (every object drawn without test) when eyeCell is
-    // outside every cell or has no opening.
+    // in `drawn` (per description cell): eyeCell's openings as the portals, in openings()'s
+    // order, one chain each, one set of all of them, and objectSet over `scene`'s objects (the
+    // constructor's scene; the set for those tested, -1 for the others). No portals and no
+    // sets (every object drawn without test) when eyeCell is outside every cell or has no
+    // opening.
     void frameSets(int eyeCell, const std::vector<bool>& drawn, const scenes::Scene& scene,
                    render::PortalSets& out) const;
 
     // Every opening, its normal towards the side it is looked through from: Plan::walls[w]
-    // seen from side s (from its cells[s], walls::quadSeenFrom) is 2w + s; then each cell's open
-    // boundary parts, facing into the cell.
+    // seen from side s (from its cells[s], walls::quadSeenFrom) is 2w + s; then per cell its
+    // open boundary parts and its windows, facing into the cell.
     const std::vector<display::ScreenQuad>& portals() const { return _quads; }
 
 private:
     int _cellCount = 0;
-    std::vector<display::ScreenQuad> _quads;          // walls seen from each side, then open parts
+    std::vector<display::ScreenQuad> _quads;          // walls seen from each side, then per cell
     std::vector<std::vector<int>> _openings;          // per cell: indices into _quads
     std::vector<std::array<glm::dvec2, 2>> _columns;  // per cell: its floor box (x, z) and wall band
-    std::vector<std::array<glm::dvec2, 2>> _inners;   // per cell: its floor box shrunk by the band
-    std::vector<glm::dvec2> _centres;                 // per cell: its region's mean corner (x, z)
 };
 
 }  // namespace cavewall::walls

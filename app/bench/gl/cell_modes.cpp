@@ -83,7 +83,7 @@ struct CellModes::State {
           setup(setup),
           lodPixels(lodPixels),
           selector(setup.plan, setup.table, c.description),
-          openings(setup.plan, c.description),
+          openings(setup.plan, c.description, c.scene),
           targets(c.display, c.context),
           renderer(c.scene, settingsOf(c, lodPixels)),
           bare(walls::gl::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}})),
