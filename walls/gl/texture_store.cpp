@@ -9,11 +9,15 @@ namespace cavewall::walls::gl {
 
 TextureStore::TextureStore(walls::TexturePager& pager, std::size_t uploadBytesPerFrame)
     : _pager(pager), _uploadBytes(std::max<std::size_t>(uploadBytesPerFrame, 1)), _pacer(_uploadBytes),
-      _sampler(display::gl::createSampler()) {
-    glSamplerParameteri(_sampler.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
-    glSamplerParameteri(_sampler.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glSamplerParameteri(_sampler.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(_sampler.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+      _sampler(wallSampler()) {}
+
+display::gl::GlObject wallSampler() {
+    display::gl::GlObject s = display::gl::createSampler();
+    glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+    glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return s;
 }
 
 std::size_t TextureStore::update() {

@@ -27,6 +27,9 @@
 
 namespace cavewall::walls::gl {
 
+// The walls' sampler: bilinear within the nearest MIP level, clamped to the edge.
+display::gl::GlObject wallSampler();
+
 class TextureStore {
 public:
     // Keeps a reference to `pager`, which must outlive the store.

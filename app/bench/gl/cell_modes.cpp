@@ -10,6 +10,7 @@
 #include "walls/cell_openings.h"
 #include "walls/frame_select.h"
 #include "walls/gl/wall_pass.h"
+#include "walls/gl/texture_store.h"
 #include "walls/gl/wall_quad.h"
 
 #include <cassert>
@@ -49,15 +50,6 @@ display::gl::GlObject layerTexture() {
     return walls::gl::uploadWallTexture(std::move(levels));
 }
 
-// The walls' sampler (walls/gl/texture_store.cpp): bilinear within the nearest MIP level.
-display::gl::GlObject wallSampler() {
-    display::gl::GlObject s = display::gl::createSampler();
-    glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
-    glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    return s;
-}
 
 
 // Every view's depth as eye distances, after the frame: geometry only (each image keeps its own
@@ -88,7 +80,7 @@ struct CellModes::State {
           renderer(c.scene, settingsOf(c, lodPixels)),
           bare(walls::gl::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}})),
           layer(layerTexture()),
-          sampler(wallSampler()) {}
+          sampler(walls::gl::wallSampler()) {}
     static render::gl::RenderSettings settingsOf(const ModeContext& c, double lodPixels) {
         render::gl::RenderSettings settings;
         settings.lodPixels = lodPixels;
