@@ -101,4 +101,8 @@ double morphSecondsOn(const EyePath& path, double morphSeconds, double walkingPa
     return path.pace > walkingPace ? morphSeconds * walkingPace / path.pace : morphSeconds;
 }
 
+double morphSecondsOn(const EyePath& path) {
+    return morphSecondsOn(path, walkthrough::WalkthroughSettings{}.morphSeconds, app::RunOptions{}.guidePace);
+}
+
 }  // namespace cavewall::bench

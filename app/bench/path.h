@@ -31,6 +31,8 @@ struct EyePath {
 // viewer covers during `morphSeconds` at `walkingPace` (m/s; `cavewall run`'s guided pace), at
 // the path's own pace, so that a morph spans the same stretch of the walk as it would walked.
 double morphSecondsOn(const EyePath& path, double morphSeconds, double walkingPace);
+// The same at `cavewall run`'s defaults: WalkthroughSettings::morphSeconds at RunOptions::guidePace.
+double morphSecondsOn(const EyePath& path);
 
 // Throws cavewall::Error for a bad tracker spec.
 EyePath recordEyePath(const scenes::Scene& scene, const scenes::SceneDescription& description,

@@ -124,8 +124,7 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                 "; 'blend paged' at the same alpha pages "
                 "as `cavewall run` does (background decoding, default budget and upload limit, cold start); a "
                 "warp-morph lasts " +
-                config::formatNumber(bench::morphSecondsOn(path, walkthrough::WalkthroughSettings{}.morphSeconds,
-                                                           app::RunOptions{}.guidePace)) +
+                config::formatNumber(bench::morphSecondsOn(path)) +
                 " s of the path's time, the stretch a viewer walks at " +
                 config::formatNumber(app::RunOptions{}.guidePace) + " m/s in `cavewall run`'s " +
                 config::formatNumber(walkthrough::WalkthroughSettings{}.morphSeconds) + " s",

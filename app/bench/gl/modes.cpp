@@ -1,6 +1,5 @@
 #include "app/bench/gl/modes.h"
 
-#include "app/run_options.h"
 #include "display/frame_budget.h"
 
 #include <cmath>
@@ -230,7 +229,7 @@ void runWalkthroughModes(const ModeContext& c, std::vector<WalkRun>& runs, Refer
         const ModeResult& mode = run.acc->mode();
         walkthrough::gl::WalkthroughOptions options;
         options.transition = run.transition;
-        options.morphSeconds = morphSecondsOn(c.path, options.morphSeconds, app::RunOptions{}.guidePace);
+        options.morphSeconds = morphSecondsOn(c.path);
         options.render.lodPixels = mode.lodPixels;
         options.render.occlusion = c.occlusion;
         options.portalCulling = c.portalCulling;
