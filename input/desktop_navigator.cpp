@@ -10,8 +10,6 @@
 namespace cavewall::input {
 namespace {
 
-glm::dvec3 rotateY(double yaw, const glm::dvec3& v) { return glm::angleAxis(yaw, glm::dvec3(0, 1, 0)) * v; }
-
 NavigatorConfig bodyConfig(const DesktopNavigatorConfig& c) {
     NavigatorConfig n = c.navigator;
     n.maxSpeed = c.speed;

@@ -10,8 +10,6 @@
 namespace cavewall::input {
 namespace {
 
-glm::dvec3 rotateY(double yaw, const glm::dvec3& v) { return glm::angleAxis(yaw, glm::dvec3(0, 1, 0)) * v; }
-
 glm::dvec3 horizontal(glm::dvec3 v) {
     v.y = 0.0;
     const double len = glm::length(v);

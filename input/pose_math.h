@@ -21,6 +21,9 @@ glm::dquat yawPitchRoll(double yaw, double pitch, double roll = 0.0);
 // The yaw (about +Y) of the direction `forward` projected onto the floor; 0 for -Z.
 double yawOf(const glm::dvec3& forward);
 
+// `v` turned by `yaw` about +Y (the floor's normal).
+inline glm::dvec3 rotateY(double yaw, const glm::dvec3& v) { return glm::angleAxis(yaw, glm::dvec3(0, 1, 0)) * v; }
+
 // Where a pose points: its -Z axis.
 inline glm::dvec3 forwardOf(const glm::dquat& q) { return q * glm::dvec3(0.0, 0.0, -1.0); }
 

@@ -22,7 +22,7 @@ namespace {
 
 constexpr double kHandshakeSeconds = 3.0;          // connect and cookie, before giving up
 constexpr std::size_t kMaxBytesPerPoll = 1 << 20;  // so that a flood cannot stall a frame
-constexpr int kMaxDatagramsPerPoll = 1024;
+constexpr int kMaxMessagesPerPoll = 1024;
 
 std::string addressText(std::uint32_t address) {
     in_addr a{};
@@ -216,7 +216,7 @@ void VrpnSource::receive(double now) {
 // Datagrams from the server's host only; each holds whole messages.
 void VrpnSource::receiveUdp(double now) {
     char datagram[65536];
-    for (int i = 0; i < kMaxDatagramsPerPoll; ++i) {
+    for (int i = 0; i < kMaxMessagesPerPoll; ++i) {
         sockaddr_in from{};
         socklen_t len = sizeof from;
         const ssize_t n = ::recvfrom(_udpFd, datagram, sizeof datagram, 0, reinterpret_cast<sockaddr*>(&from), &len);

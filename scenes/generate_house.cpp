@@ -12,9 +12,9 @@
 namespace cavewall::scenes {
 namespace {
 
-constexpr double kHeight = 2.8, kDoorWidth = 0.9, kDoorHeight = 2.1, kThickness = 0.15, kEye = 1.6;
+constexpr double kStoreyHeight = 2.8, kDoorWidth = 0.9, kDoorHeight = 2.1, kThickness = 0.15, kHouseEye = 1.6;
 
-enum Kind { TableKind, ChairKind, SofaKind, BedKind, ShelfKind, LampKind };
+enum HouseKind { TableKind, ChairKind, SofaKind, BedKind, ShelfKind, LampKind };
 
 std::vector<Mesh> houseKinds(int detail) {
     return {makeTable(detail), makeChair(detail), makeSofa(detail),
@@ -67,14 +67,14 @@ void addWalls(GeneratedScene& g) {
     const int box = static_cast<int>(g.scene.meshes.size()) - 1;
     for (const WallLine& w : wallLines()) {
         if (!w.door) {
-            addWallPiece(g, box, w.a, w.b, 0.0, kHeight, w.front < 0);
+            addWallPiece(g, box, w.a, w.b, 0.0, kStoreyHeight, w.front < 0);
             continue;
         }
         const glm::dvec2 dir = glm::normalize(w.b - w.a), mid = 0.5 * (w.a + w.b);
         const glm::dvec2 d0 = mid - 0.5 * kDoorWidth * dir, d1 = mid + 0.5 * kDoorWidth * dir;
-        addWallPiece(g, box, w.a, d0, 0.0, kHeight);
-        addWallPiece(g, box, d1, w.b, 0.0, kHeight);
-        addWallPiece(g, box, d0, d1, kDoorHeight, kHeight);  // lintel
+        addWallPiece(g, box, w.a, d0, 0.0, kStoreyHeight);
+        addWallPiece(g, box, d1, w.b, 0.0, kStoreyHeight);
+        addWallPiece(g, box, d0, d1, kDoorHeight, kStoreyHeight);  // lintel
         // The portal fills the doorway; its front faces cells[0] (w.front).
         const glm::dvec2 fc = roomCentre(w.front / 3, w.front % 3);
         const glm::dvec3 a(d0.x, 0, d0.y), b(d1.x, 0, d1.y);
@@ -95,7 +95,7 @@ void addRoomsStructure(GeneratedScene& g) {
     g.scene.meshes.push_back(makeTiledQuad({-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, 12, 12, floorA, floorB));
     const int floorMesh = static_cast<int>(g.scene.meshes.size()) - 1;
     g.scene.meshes.push_back(
-        makeTiledQuad({-3, static_cast<float>(kHeight), -3}, {6, 0, 0}, {0, 0, 6}, 2, 2, ceiling, ceiling));
+        makeTiledQuad({-3, static_cast<float>(kStoreyHeight), -3}, {6, 0, 0}, {0, 0, 6}, 2, 2, ceiling, ceiling));
     const int ceilingMesh = floorMesh + 1;
     for (int row = 0; row < 2; ++row)
         for (int col = 0; col < 3; ++col) {
@@ -169,16 +169,16 @@ GeneratedScene generateHouse(const GenerateOptions& options) {
     const int base = static_cast<int>(g.scene.meshes.size());
     for (Mesh& m : kinds) g.scene.meshes.push_back(std::move(m));
     for (const Placement& p : content) addObject(g.scene, base + p.kind, p.worldFromModel, p.name);
-    g.description.eyeHeight = kEye;
+    g.description.eyeHeight = kHouseEye;
     g.description.headHeightRange = {1.2, 2.0};
     const int order[][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 2}, {1, 1}, {1, 0}};
     for (int i = 0; i < 6; ++i) {
         const glm::dvec2 c = roomCentre(order[i][0], order[i][1]);
         if (i > 0) {  // through the doorway in the middle of the shared wall
             const glm::dvec2 prev = roomCentre(order[i - 1][0], order[i - 1][1]), door = 0.5 * (prev + c);
-            g.description.walkPath.push_back({door.x, kEye, door.y});
+            g.description.walkPath.push_back({door.x, kHouseEye, door.y});
         }
-        g.description.walkPath.push_back({c.x, kEye, c.y});
+        g.description.walkPath.push_back({c.x, kHouseEye, c.y});
     }
     return g;
 }

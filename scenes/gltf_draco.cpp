@@ -8,7 +8,7 @@
 namespace cavewall::scenes {
 namespace {
 
-constexpr const char* kExt = "KHR_draco_mesh_compression";
+constexpr const char* kDracoExt = "KHR_draco_mesh_compression";
 
 // The largest value of an integer type: what a normalized accessor maps to 1.
 double integerScale(draco::DataType t) {
@@ -71,13 +71,13 @@ AccessorValues convertAttribute(const GltfContext& ctx, const draco::Mesh& mesh,
 }  // namespace
 
 const tinygltf::Value* dracoExtension(const tinygltf::Primitive& p) {
-    const auto it = p.extensions.find(kExt);
+    const auto it = p.extensions.find(kDracoExt);
     return it == p.extensions.end() ? nullptr : &it->second;
 }
 
 DracoPrimitive decodeDracoPrimitive(const GltfContext& ctx, const tinygltf::Primitive& p, const std::string& where) {
     const tinygltf::Value* ext = dracoExtension(p);
-    const std::string ew = where + ".extensions." + kExt;
+    const std::string ew = where + ".extensions." + kDracoExt;
     if (!ext || !ext->IsObject()) ctx.fail(ew, "expected an object");
     const int view = intField(ctx, *ext, "bufferView", ew);
     if (!ext->Has("attributes") || !ext->Get("attributes").IsObject())

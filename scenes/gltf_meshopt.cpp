@@ -14,7 +14,7 @@ namespace cavewall::scenes {
 namespace {
 
 using Json = nlohmann::json;
-constexpr const char* kExt = "EXT_meshopt_compression";
+constexpr const char* kMeshoptExt = "EXT_meshopt_compression";
 
 // File text quoted in a message, cut short: a hostile file may put megabytes there.
 std::string quoted(std::string text) {
@@ -100,7 +100,7 @@ std::string decodeFailure(int rc, const unsigned char* src, std::uint64_t size) 
 std::uint64_t checkAgainstModel(const tinygltf::Model& model, const MeshoptView& v, const std::vector<int>& fallbacks,
                                 const std::string& file) {
     const std::string bw = "bufferViews[" + std::to_string(v.view) + "]";
-    const std::string where = bw + ".extensions." + kExt;
+    const std::string where = bw + ".extensions." + kMeshoptExt;
     if (static_cast<std::size_t>(v.view) >= model.bufferViews.size())
         fail(file, bw, "out of range (expected < " + std::to_string(model.bufferViews.size()) + " buffer views)");
     const tinygltf::BufferView& parent = model.bufferViews[v.view];
@@ -144,7 +144,8 @@ void decodeOne(const MeshoptView& v, const unsigned char* src, unsigned char* ds
         case MeshoptMode::Indices: rc = meshopt_decodeIndexSequence(dst, count, stride, src, size); break;
     }
     if (rc != 0)
-        fail(file, "bufferViews[" + std::to_string(v.view) + "].extensions." + kExt, decodeFailure(rc, src, size));
+        fail(file, "bufferViews[" + std::to_string(v.view) + "].extensions." + kMeshoptExt,
+             decodeFailure(rc, src, size));
     switch (v.filter) {
         case MeshoptFilter::None: break;
         case MeshoptFilter::Octahedral: meshopt_decodeFilterOct(dst, count, stride); break;
@@ -162,9 +163,9 @@ std::vector<MeshoptView> readMeshoptViews(const nlohmann::json& doc, const std::
     for (std::size_t i = 0; i < list->size() && i <= INT_MAX; ++i) {
         const Json& bv = (*list)[i];
         if (!bv.is_object() || !bv.contains("extensions") || !bv["extensions"].is_object()) continue;
-        const auto e = bv["extensions"].find(kExt);
+        const auto e = bv["extensions"].find(kMeshoptExt);
         if (e == bv["extensions"].end()) continue;
-        const std::string where = "bufferViews[" + std::to_string(i) + "].extensions." + kExt;
+        const std::string where = "bufferViews[" + std::to_string(i) + "].extensions." + kMeshoptExt;
         if (!e->is_object()) fail(file, where, "expected an object, got " + quoted(*e));
         MeshoptView v;
         v.view = static_cast<int>(i);
@@ -193,8 +194,8 @@ std::vector<int> standInFallbackBuffers(nlohmann::json& doc, bool glb) {
         Json& b = (*list)[i];
         if (!b.is_object()) continue;
         bool fallback = !b.contains("uri") && !(glb && i == 0);
-        if (b.contains("extensions") && b["extensions"].is_object() && b["extensions"].contains(kExt)) {
-            const Json& e = b["extensions"][kExt];
+        if (b.contains("extensions") && b["extensions"].is_object() && b["extensions"].contains(kMeshoptExt)) {
+            const Json& e = b["extensions"][kMeshoptExt];
             fallback = fallback || (e.is_object() && e.contains("fallback") && e["fallback"] == true);
         }
         if (!fallback) continue;
@@ -227,7 +228,7 @@ void decodeMeshoptViews(tinygltf::Model& model, const MeshoptLayout& layout, con
         if (sourceBuffers.insert(v.buffer).second) sources += model.buffers[v.buffer].data.size();
     }
     if (sources > 0 && total / kMaxMeshoptExpansion > sources)
-        fail(file, std::string("bufferViews (") + kExt + ")",
+        fail(file, std::string("bufferViews (") + kMeshoptExt + ")",
              "the compressed views decode to " + std::to_string(total) + " bytes from " + std::to_string(sources) +
                  " bytes of buffers (expected at most " + std::to_string(kMaxMeshoptExpansion) + " per byte)");
     for (const MeshoptView* v : toDecode) {

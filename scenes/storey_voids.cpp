@@ -39,14 +39,14 @@ long PlanMask::count(glm::dvec2 lo, glm::dvec2 hi) const {
 
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 constexpr double kPi = 3.14159265358979323846;
 // Centres an edge misses by rounding still count: a slab of abutting boards has no cracks.
 constexpr TriangleOptions kSlabEdges{1e-9};
 
 // A grid over the cells' regions' bounds.
 PlanGrid planGrid(const std::vector<PlanRect>& bounds, const VoidOptions& options) {
-    glm::dvec2 lo(kInfinity), hi(-kInfinity);
+    glm::dvec2 lo(kUnbounded), hi(-kUnbounded);
     for (const PlanRect& b : bounds) {
         lo = glm::min(lo, b.lo);
         hi = glm::max(hi, b.hi);

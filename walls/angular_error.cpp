@@ -28,19 +28,19 @@ constexpr double kHalfPi = 0.5 * kPi;
 
 // The wall rectangle with its lower-left corner at the origin (callers subtract it first, so
 // far-away worlds keep their precision).
-struct Rect {
+struct WallRect {
     glm::dvec3 right, up, normal;
     double width, height;
 };
 
-Rect rectOf(const ScreenQuad& q) {
+WallRect rectOf(const ScreenQuad& q) {
     const display::ScreenBasis b = display::screenBasis(q);
     return {b.right, b.up, b.normal, b.width, b.height};
 }
 
-glm::dvec3 rectPoint(const Rect& r, double s, double t) { return s * r.right + t * r.up; }
+glm::dvec3 rectPoint(const WallRect& r, double s, double t) { return s * r.right + t * r.up; }
 
-glm::dvec3 nearestOnRect(const Rect& r, glm::dvec3 p) {
+glm::dvec3 nearestOnRect(const WallRect& r, glm::dvec3 p) {
     return rectPoint(r, std::clamp(glm::dot(p, r.right), 0.0, r.width), std::clamp(glm::dot(p, r.up), 0.0, r.height));
 }
 
@@ -88,7 +88,7 @@ const HalfTable& halfTable() {
 }
 
 // Is the angle [a, b] subtends at every point of the rectangle at most t (t in (0, pi/2])?
-Witness decide(const Rect& r, glm::dvec3 a, glm::dvec3 b, double t) {
+Witness decide(const WallRect& r, glm::dvec3 a, glm::dvec3 b, double t) {
     const double len = glm::length(b - a);
     if (len <= 1e-300) return {Decision::Below, {}};
     const glm::dvec3 axis = (b - a) / len, mid = 0.5 * (a + b);
@@ -135,7 +135,7 @@ Witness decide(const Rect& r, glm::dvec3 a, glm::dvec3 b, double t) {
 }
 
 // A good lower bound: the best point of a grid, refined by pattern search.
-double sampledMaximum(const Rect& r, glm::dvec3 a, glm::dvec3 b) {
+double sampledMaximum(const WallRect& r, glm::dvec3 a, glm::dvec3 b) {
     constexpr int kGrid = 8;
     double best = -1, bs = 0, bt = 0;
     for (int i = 0; i <= kGrid; ++i)
@@ -170,7 +170,7 @@ double sampledMaximum(const Rect& r, glm::dvec3 a, glm::dvec3 b) {
 
 // First-order branch and bound over the rectangle, used only when the error reaches 90°,
 // where the circle characterisation no longer applies. Returns an upper bound (<= pi).
-double boundAbove90(const Rect& r, glm::dvec3 a, glm::dvec3 b, double lower) {
+double boundAbove90(const WallRect& r, glm::dvec3 a, glm::dvec3 b, double lower) {
     struct Cell {
         double s, t, hs, ht, bound;
     };
@@ -201,7 +201,7 @@ double boundAbove90(const Rect& r, glm::dvec3 a, glm::dvec3 b, double lower) {
 
 // The maximum over the rectangle of the angle [a, b] subtends (a proven upper bound within
 // kErrorTolerance of it).
-double maxSubtended(const Rect& r, glm::dvec3 a, glm::dvec3 b) {
+double maxSubtended(const WallRect& r, glm::dvec3 a, glm::dvec3 b) {
     if (glm::length(b - a) <= 1e-300) return 0.0;
     double lower = sampledMaximum(r, a, b);
     if (lower >= kHalfPi || decide(r, a, b, kHalfPi).decision != Decision::Below) return boundAbove90(r, a, b, lower);
@@ -221,7 +221,7 @@ double maxSubtended(const Rect& r, glm::dvec3 a, glm::dvec3 b) {
 }
 
 // The point M whose segment [eye, M] subtends the finite-depth error (header).
-glm::dvec3 depthPoint(glm::dvec3 eye, glm::dvec3 sampling, const Rect& r, double depth) {
+glm::dvec3 depthPoint(glm::dvec3 eye, glm::dvec3 sampling, const WallRect& r, double depth) {
     const double h = std::abs(glm::dot(sampling, r.normal));
     if (!std::isfinite(depth) || h < 1e-12) return sampling;
     const double k = depth / h;
@@ -242,7 +242,7 @@ double pointError(glm::dvec3 eye, glm::dvec3 samplingPoint, glm::dvec3 scenePoin
 double maxAngularError(glm::dvec3 eye, glm::dvec3 samplingPoint, const ScreenQuad& wall, double depthBehind) {
     if (!finite(eye) || !finite(samplingPoint) || std::isnan(depthBehind)) return kPi;
     if (depthBehind <= 0) return 0.0;
-    const Rect r = rectOf(wall);
+    const WallRect r = rectOf(wall);
     const glm::dvec3 e = eye - wall.lowerLeft, s = samplingPoint - wall.lowerLeft;
     return maxSubtended(r, e, depthPoint(e, s, r, depthBehind));
 }
@@ -250,7 +250,7 @@ double maxAngularError(glm::dvec3 eye, glm::dvec3 samplingPoint, const ScreenQua
 namespace {
 
 // errorWithin with the wall's rectangle r = rectOf(wall) computed by the caller.
-bool errorWithinRect(const Rect& r, glm::dvec3 eye, glm::dvec3 samplingPoint, const ScreenQuad& wall,
+bool errorWithinRect(const WallRect& r, glm::dvec3 eye, glm::dvec3 samplingPoint, const ScreenQuad& wall,
                      double depthBehind, double alpha) {
     if (!finite(eye) || !finite(samplingPoint) || !(alpha > 0) || std::isnan(depthBehind)) return false;
     if (depthBehind <= 0) return true;
@@ -351,7 +351,7 @@ bool zoneWithin(const ZoneVolume& zone, glm::dvec3 samplingPoint, const ScreenQu
     };
     std::vector<Eye> eyes;
     eyes.reserve(2 * zone.floor.size());
-    const Rect r = rectOf(wall);
+    const WallRect r = rectOf(wall);
     for (const glm::dvec2& p : zone.floor)
         for (double y : {zone.heightRange.x, zone.heightRange.y}) {
             const glm::dvec3 e{p.x, y, p.y};
@@ -415,7 +415,7 @@ bool zoneWithinDepth(const ZoneVolume& zone, glm::dvec3 samplingPoint, const Scr
     if (!std::isfinite(depthBehind) || zone.floor.empty()) return zoneWithin(zone, samplingPoint, wall, alpha);
     const std::vector<InflatedEye> eyes = inflatedEyes(zone, wall, depthBehind);
     if (eyes.empty() || !(alpha < kHalfPi)) return zoneWithin(zone, samplingPoint, wall, alpha);
-    const Rect r = rectOf(wall);
+    const WallRect r = rectOf(wall);
     // A vertex over alpha at its depth is over it at every larger depth: zoneWithin would fail too.
     for (const InflatedEye& e : eyes)
         if (!errorWithinRect(r, e.eye, samplingPoint, wall, e.depth, alpha)) return false;

@@ -11,7 +11,7 @@ namespace {
 constexpr double kMinRegionArea = 1e-6;  // m²; slivers left by clipping are no eye region
 // Neighbours drawn as geometry (level 1), and the cells behind their far walls where those are
 // drawn as geometry (level 2); the far walls of a third cell are not drawn.
-constexpr int kLevels = 2;
+constexpr int kBeyondLevels = 2;
 
 // Where the eye draws `neighbour` as geometry from `cell`.
 struct EyeRegion {
@@ -95,7 +95,7 @@ void planBeyond(Plan& plan, const scenes::SceneDescription& d) {
     const VisibilityTable table = computeVisibility(d);
     const std::size_t sideCount = plan.sides.size();
     std::vector<EyeRegion> regions = eyeRegions(plan, d, table);
-    for (int level = 0; level < kLevels && !regions.empty(); ++level) {
+    for (int level = 0; level < kBeyondLevels && !regions.empty(); ++level) {
         const int first = int(plan.beyond.size());
         planRegions(plan, d, table, regions, sideCount);
         regions = childRegions(plan, first, int(plan.beyond.size()));

@@ -46,8 +46,6 @@ std::string stereoCell(const ImageError& e) {
     return num(e.stereo.meanArcmin(), 3) + " / " + num(100.0 * e.stereo.shareBeyond(), 3);
 }
 
-void writeText(const std::filesystem::path& file, const std::string& text) { scenes::writeBytesAtomically(file, text); }
-
 std::string screensCsv(const BenchReport& report) {
     std::string out =
         "mode,alpha_deg,transition,screen,psnr_db,rmse,ssim,cpu_ms_p50,cpu_ms_p95,cpu_ms_p99,triangles,"
@@ -321,14 +319,15 @@ std::vector<std::filesystem::path> writeReport(const std::filesystem::path& fold
     const std::vector<std::filesystem::path> files = {folder / "bench.csv",        folder / "bench_screens.csv",
                                                       folder / "bench.md",         folder / "bench.png",
                                                       folder / "bench_frames.csv", folder / "bench_compared.csv"};
-    writeText(files[0], csv);
-    writeText(files[1], screensCsv(report));
-    writeText(files[4], framesCsv(report));
-    writeText(files[5], comparedCsv(report));
-    writeText(files[2], "# cavewall bench\n\n" + markdownReport(report) +
-                            "\n![pooled PSNR and FLIP mean (y) against median frame time (x) of every mode, named "
-                            "\"#N label\" as the table; dashed: the Pareto front; ringed: the control and the best "
-                            "alternative; diamond: the recommended walls mode](bench.png)\n");
+    scenes::writeBytesAtomically(files[0], csv);
+    scenes::writeBytesAtomically(files[1], screensCsv(report));
+    scenes::writeBytesAtomically(files[4], framesCsv(report));
+    scenes::writeBytesAtomically(files[5], comparedCsv(report));
+    scenes::writeBytesAtomically(
+        files[2], "# cavewall bench\n\n" + markdownReport(report) +
+                      "\n![pooled PSNR and FLIP mean (y) against median frame time (x) of every mode, named "
+                      "\"#N label\" as the table; dashed: the Pareto front; ringed: the control and the best "
+                      "alternative; diamond: the recommended walls mode](bench.png)\n");
     writePlot(files[3], tradeOffFigure(report));
     std::vector<std::filesystem::path> written = files;
     for (std::size_t i = 0; i < report.modes.size(); ++i) {

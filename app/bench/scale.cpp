@@ -46,8 +46,6 @@ bool mayBeLeftOut(ScaleMode mode) {
            mode == ScaleMode::FullLod;
 }
 
-void writeText(const std::filesystem::path& file, const std::string& text) { scenes::writeBytesAtomically(file, text); }
-
 // The stereo error's CSV cells: mean arc minutes and the share of pixels beyond 1 arcmin; nan
 // when not measured (mono, or full geometry, the reference).
 std::string stereoCsv(const ScaleRow& r) {
@@ -255,13 +253,13 @@ std::vector<std::filesystem::path> writeScaleReport(const std::filesystem::path&
     const std::vector<std::filesystem::path> files = {folder / "scale.csv", folder / "scale.md",
                                                       folder / "scale_ms.png", folder / "scale_mb.png",
                                                       folder / "scale_load.png"};
-    writeText(files[0], scaleCsv(report));
-    writeText(files[1],
-              "# cavewall bench --scale\n\n" + scaleMarkdown(report) +
-                  "\nPlots against millions of triangles (x), one named line per mode that ran: "
-                  "median frame ms (scale_ms.png), resident geometry MB (scale_mb.png), seconds from the "
-                  "loaded scene to the first frame plus the load (scale_load.png).\n\n"
-                  "![frame ms](scale_ms.png) ![resident MB](scale_mb.png) ![first frame s](scale_load.png)\n");
+    scenes::writeBytesAtomically(files[0], scaleCsv(report));
+    scenes::writeBytesAtomically(
+        files[1], "# cavewall bench --scale\n\n" + scaleMarkdown(report) +
+                      "\nPlots against millions of triangles (x), one named line per mode that ran: "
+                      "median frame ms (scale_ms.png), resident geometry MB (scale_mb.png), seconds from the "
+                      "loaded scene to the first frame plus the load (scale_load.png).\n\n"
+                      "![frame ms](scale_ms.png) ![resident MB](scale_mb.png) ![first frame s](scale_load.png)\n");
     writePlot(files[2], scaleFigure(report, "Frame time against model size", {"median frame time, all screens", "ms"},
                                     [](const ScaleRow& r) { return r.frameMs.p50; }));
     writePlot(files[3], scaleFigure(report, "GPU memory for geometry against model size",

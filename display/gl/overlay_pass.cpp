@@ -7,9 +7,9 @@
 namespace cavewall::display::gl {
 namespace {
 
-constexpr const char* kName = "overlay";
+constexpr const char* kOverlayName = "overlay";
 
-constexpr const char* kVertex = R"(#version 450 core
+constexpr const char* kOverlayVertex = R"(#version 450 core
 layout(location = 0) in vec2 aPosition;   // window pixels, y down
 layout(location = 1) in vec4 aColour;
 uniform vec2 uSize;                        // the framebuffer's pixels
@@ -20,7 +20,7 @@ void main() {
 }
 )";
 
-constexpr const char* kFragment = R"(#version 450 core
+constexpr const char* kOverlayFragment = R"(#version 450 core
 in vec4 vColour;
 out vec4 fragColor;
 void main() { fragColor = vColour; }
@@ -29,8 +29,9 @@ void main() { fragColor = vColour; }
 }  // namespace
 
 OverlayPass::OverlayPass()
-    : _program(buildProgram(kName, kVertex, kFragment)), _vertexArray(createVertexArray()), _buffer(createBuffer()) {
-    _size = uniformLocation(_program.id(), kName, "uSize");
+    : _program(buildProgram(kOverlayName, kOverlayVertex, kOverlayFragment)), _vertexArray(createVertexArray()),
+      _buffer(createBuffer()) {
+    _size = uniformLocation(_program.id(), kOverlayName, "uSize");
     const GLuint vao = _vertexArray.id();
     glEnableVertexArrayAttrib(vao, 0);
     glVertexArrayAttribFormat(vao, 0, 2, GL_FLOAT, GL_FALSE, offsetof(display::OverlayVertex, position));

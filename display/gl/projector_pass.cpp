@@ -7,9 +7,9 @@
 namespace cavewall::display::gl {
 namespace {
 
-constexpr const char* kName = "projector";
+constexpr const char* kProjectorName = "projector";
 
-constexpr const char* kVertex = R"(#version 450 core
+constexpr const char* kProjectorVertex = R"(#version 450 core
 layout(location = 0) in vec2 aOutput;  // projector output, [0, 1]², origin lower-left
 layout(location = 1) in vec2 aUv;      // rendered image
 out vec2 vUv;
@@ -23,7 +23,7 @@ void main() {
 // "alone" is any weight above the second-highest level. The shader encodes sRGB itself (sRGB
 // writes are off): llvmpipe's fixed-function encode is up to 0.9 levels off the exact value
 // (the shader's, 0.8), which puts two blended projectors more than a level off one.
-constexpr const char* kFragment = R"(#version 450 core
+constexpr const char* kProjectorFragment = R"(#version 450 core
 layout(binding = 0) uniform sampler2D uImage;  // sRGB: sampling decodes to linear light
 layout(binding = 1) uniform sampler2D uBlend;  // linear weights over the output
 uniform vec2 uOutputSize;
@@ -74,11 +74,11 @@ GlObject linearSampler() {
 }  // namespace
 
 ProjectorPass::ProjectorPass(const display::ScreenCorrection& correction, glm::ivec2 size, int images)
-    : _program(buildProgram(kName, kVertex, kFragment)), _vertexArray(createVertexArray()), _vertices(createBuffer()),
-      _indices(createBuffer()), _blend(blendTexture(correction.blend)), _sampler(linearSampler()), _size(size),
-      _black(correction.blackLevel) {
-    _outputSizeUniform = uniformLocation(_program.id(), kName, "uOutputSize");
-    _blackUniform = uniformLocation(_program.id(), kName, "uBlack");
+    : _program(buildProgram(kProjectorName, kProjectorVertex, kProjectorFragment)), _vertexArray(createVertexArray()),
+      _vertices(createBuffer()), _indices(createBuffer()), _blend(blendTexture(correction.blend)),
+      _sampler(linearSampler()), _size(size), _black(correction.blackLevel) {
+    _outputSizeUniform = uniformLocation(_program.id(), kProjectorName, "uOutputSize");
+    _blackUniform = uniformLocation(_program.id(), kProjectorName, "uBlack");
     std::vector<Vertex> vertices;
     for (const display::WarpNode& n : correction.warp.nodes) vertices.push_back({n.xy, n.uv});
     const std::vector<unsigned> indices = display::warpTriangles(correction.warp);

@@ -18,17 +18,17 @@ namespace {
 
 // cave4's front wall (3 m x 3 m at z = -1.5, floor to 3 m) and an eye off its centre: 1.8 m
 // in front, 0.4 m right of and 0.3 m below the centre.
-const ScreenQuad kFront{{-1.5, 0, -1.5}, {1.5, 0, -1.5}, {-1.5, 3, -1.5}};
+const ScreenQuad kFrontWall{{-1.5, 0, -1.5}, {1.5, 0, -1.5}, {-1.5, 3, -1.5}};
 const glm::dvec3 kEye{0.4, 1.2, 0.3};
-constexpr DepthRange kDepth{0.05, 1000.0};
-constexpr int kPixels = 1024;
+constexpr DepthRange kNearFar{0.05, 1000.0};
+constexpr int kSidePixels = 1024;
 
 // The same 3 m x 3 m screen turned and moved to a general position, so that no dot product
 // below is trivially a coordinate.
 ScreenQuad tilted() {
     const glm::dmat3 r = glm::mat3_cast(glm::angleAxis(0.7, glm::normalize(glm::dvec3(0.3, 1.0, -0.2))));
     const glm::dvec3 o(2.0, 0.5, -1.0);
-    return {o + r * (kFront.lowerLeft - kEye), o + r * (kFront.lowerRight - kEye), o + r * (kFront.upperLeft - kEye)};
+    return {o + r * (kFrontWall.lowerLeft - kEye), o + r * (kFrontWall.lowerRight - kEye), o + r * (kFrontWall.upperLeft - kEye)};
 }
 const glm::dvec3 kTiltedEye{2.0, 0.5, -1.0};  // where kEye went
 
@@ -37,14 +37,14 @@ std::array<glm::dvec3, 4> corners(const ScreenQuad& s) {
 }
 
 TEST(PixelScale, ViewScreenIsTheScreenInTheViewFrame) {
-    const ScreenQuad quads[] = {kFront, tilted()};
+    const ScreenQuad quads[] = {kFrontWall, tilted()};
     const glm::dvec3 eyes[] = {kEye, kTiltedEye};
     for (int i = 0; i < 2; ++i) {
         SCOPED_TRACE(i == 0 ? "front wall" : "tilted screen");
         const ScreenQuad& q = quads[i];
-        const OffAxisFrustum f = offAxisFrustum(q, eyes[i], kDepth);
+        const OffAxisFrustum f = offAxisFrustum(q, eyes[i], kNearFar);
         ASSERT_EQ(f.guard, EyeGuard::None);
-        const ViewScreen s = viewScreen(f, {kPixels, kPixels});
+        const ViewScreen s = viewScreen(f, {kSidePixels, kSidePixels});
         // The view frame has the eye at the origin and the screen's right, up and normal as its
         // axes: a corner's view coordinates are its offsets from the eye along them.
         const glm::dvec3 right = glm::normalize(q.lowerRight - q.lowerLeft);
@@ -57,11 +57,11 @@ TEST(PixelScale, ViewScreenIsTheScreenInTheViewFrame) {
         EXPECT_NEAR(s.top, glm::dot(upperRight - eyes[i], up), 1e-9);
         EXPECT_NEAR(s.distance, glm::dot(eyes[i] - q.lowerLeft, normal), 1e-9);
         // 3 m over 1024 pixels either way.
-        EXPECT_NEAR(s.pixelSize, 3.0 / kPixels, 1e-15);
+        EXPECT_NEAR(s.pixelSize, 3.0 / kSidePixels, 1e-15);
     }
     // For the front wall the numbers are plain: the eye is 1.9 m from the left edge, 1.1 m from
     // the right, 1.2 m above the floor, 1.8 m below the top and 1.8 m in front.
-    const ViewScreen s = viewScreen(offAxisFrustum(kFront, kEye, kDepth), {kPixels, kPixels});
+    const ViewScreen s = viewScreen(offAxisFrustum(kFrontWall, kEye, kNearFar), {kSidePixels, kSidePixels});
     EXPECT_NEAR(s.left, -1.9, 1e-9);
     EXPECT_NEAR(s.right, 1.1, 1e-9);
     EXPECT_NEAR(s.bottom, -1.2, 1e-9);
@@ -72,12 +72,12 @@ TEST(PixelScale, ViewScreenIsTheScreenInTheViewFrame) {
 TEST(PixelScale, AScreenRectangleAndItsFrustumGiveTheSameScreen) {
     // The rectangle-and-eye form (used for the walls' error in pixels) and the frustum form
     // (used by the renderer) describe one screen; within 1 mm of the plane both keep 1 mm.
-    const ScreenQuad quads[] = {kFront, tilted(), kFront};
+    const ScreenQuad quads[] = {kFrontWall, tilted(), kFrontWall};
     const glm::dvec3 eyes[] = {kEye, kTiltedEye, glm::dvec3(0.2, 1.4, -1.5 + 1e-4)};
     for (int i = 0; i < 3; ++i) {
         SCOPED_TRACE(i);
         const ViewScreen a = viewScreen(quads[i], eyes[i], {1920, 1080});
-        const ViewScreen b = viewScreen(offAxisFrustum(quads[i], eyes[i], kDepth), {1920, 1080});
+        const ViewScreen b = viewScreen(offAxisFrustum(quads[i], eyes[i], kNearFar), {1920, 1080});
         EXPECT_NEAR(a.left, b.left, 1e-9);
         EXPECT_NEAR(a.right, b.right, 1e-9);
         EXPECT_NEAR(a.bottom, b.bottom, 1e-9);
@@ -89,7 +89,7 @@ TEST(PixelScale, AScreenRectangleAndItsFrustumGiveTheSameScreen) {
 }
 
 TEST(PixelScale, PixelSizeIsTheSmallerOfWidthAndHeightPerPixel) {
-    const OffAxisFrustum f = offAxisFrustum(kFront, kEye, kDepth);
+    const OffAxisFrustum f = offAxisFrustum(kFrontWall, kEye, kNearFar);
     // 3 m over 1920 px across is finer than 3 m over 1080 px up: 1.5625 mm.
     EXPECT_NEAR(viewScreen(f, {1920, 1080}).pixelSize, 3.0 / 1920, 1e-15);
     EXPECT_NEAR(viewScreen(f, {800, 1200}).pixelSize, 3.0 / 1200, 1e-15);
@@ -97,21 +97,21 @@ TEST(PixelScale, PixelSizeIsTheSmallerOfWidthAndHeightPerPixel) {
 }
 
 TEST(PixelScale, WholeScreenMaximumIsAtTheFarthestCorner) {
-    const ScreenQuad quads[] = {kFront, tilted()};
+    const ScreenQuad quads[] = {kFrontWall, tilted()};
     const glm::dvec3 eyes[] = {kEye, kTiltedEye};
     for (int i = 0; i < 2; ++i) {
         SCOPED_TRACE(i == 0 ? "front wall" : "tilted screen");
-        const ViewScreen s = viewScreen(offAxisFrustum(quads[i], eyes[i], kDepth), {kPixels, kPixels});
+        const ViewScreen s = viewScreen(offAxisFrustum(quads[i], eyes[i], kNearFar), {kSidePixels, kSidePixels});
         // r_max: the eye's distance to its farthest corner, straight from the frame positions.
         double r2 = 0.0;
         for (const glm::dvec3& c : corners(quads[i])) r2 = std::max(r2, glm::dot(c - eyes[i], c - eyes[i]));
-        const double h = 1.8, p = 3.0 / kPixels;
+        const double h = 1.8, p = 3.0 / kSidePixels;
         EXPECT_NEAR(maxPixelsPerRadian(s), r2 / (h * p), 1e-9 * r2 / (h * p));
     }
     // Front wall: the farthest corner is the upper left, (-1.9, 1.8) from the eye's foot point:
     // r^2 = 1.9^2 + 1.8^2 + 1.8^2 = 10.09.
-    const ViewScreen s = viewScreen(offAxisFrustum(kFront, kEye, kDepth), {kPixels, kPixels});
-    EXPECT_NEAR(maxPixelsPerRadian(s), 10.09 / (1.8 * 3.0 / kPixels), 1e-6);
+    const ViewScreen s = viewScreen(offAxisFrustum(kFrontWall, kEye, kNearFar), {kSidePixels, kSidePixels});
+    EXPECT_NEAR(maxPixelsPerRadian(s), 10.09 / (1.8 * 3.0 / kSidePixels), 1e-6);
 }
 
 // Where the ray from the eye (view origin) along `d` meets the screen plane z = -h.
@@ -152,7 +152,7 @@ bool region(const ViewScreen& s, const std::vector<glm::dvec3>& points, double& 
 }
 
 TEST(PixelScale, NoTinyTurnMovesAHitFartherThanTheBoundAndTheFarCornerReachesIt) {
-    const ViewScreen s = viewScreen(offAxisFrustum(kFront, kEye, kDepth), {kPixels, kPixels});
+    const ViewScreen s = viewScreen(offAxisFrustum(kFrontWall, kEye, kNearFar), {kSidePixels, kSidePixels});
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> unit(0.0, 1.0), sym(-1.0, 1.0);
     // Small enough that the second-order growth of the movement (relative d tan(incidence),
@@ -205,7 +205,7 @@ TEST(PixelScale, NoTinyTurnMovesAHitFartherThanTheBoundAndTheFarCornerReachesIt)
 }
 
 TEST(PixelScale, BoxesBesideBehindAndAround) {
-    const ViewScreen s = viewScreen(offAxisFrustum(kFront, kEye, kDepth), {kPixels, kPixels});
+    const ViewScreen s = viewScreen(offAxisFrustum(kFrontWall, kEye, kNearFar), {kSidePixels, kSidePixels});
     const double whole = maxPixelsPerRadian(s);
     struct Case {
         const char* name;
@@ -243,12 +243,12 @@ TEST(PixelScale, BoxesBesideBehindAndAround) {
 // part in front of the eye can appear.
 TEST(PixelScale, InFrontCountsOnlyThePartBeforeTheEye) {
     // cave4's front screen from its centre axis at 1.5 m: x and y in [-1.5, 1.5], 3 / 1024 m pixels.
-    const ViewScreen centred{-1.5, 1.5, -1.5, 1.5, 1.5, 3.0 / kPixels};
+    const ViewScreen centred{-1.5, 1.5, -1.5, 1.5, 1.5, 3.0 / kSidePixels};
     // A wall seen head-on, small and 10 m away on the axis: it projects to [-0.015, 0.015]^2 by
     // 1.5 / 10, so a radian covers r^2 / (h p) = (2.25 + 2 * 0.015^2) / (1.5 * 3 / 1024) = 512.15
     // pixels (h / p = 512 at the foot point): 10 degrees are 89.38 pixels, 8.94 a degree.
     const std::vector<glm::dvec3> headOn = {{-0.1, -0.1, -10}, {0.1, -0.1, -10}, {-0.1, 0.1, -10}, {0.1, 0.1, -10}};
-    const double perRadian = (2.25 + 2 * 0.015 * 0.015) / (1.5 * 3.0 / kPixels);
+    const double perRadian = (2.25 + 2 * 0.015 * 0.015) / (1.5 * 3.0 / kSidePixels);
     EXPECT_NEAR(maxPixelsPerRadianInFront(centred, headOn), perRadian, 1e-9 * perRadian);
     EXPECT_NEAR(glm::radians(10.0) * perRadian, 89.38, 0.01);
     // A wall crossing the eye's plane, eye 1 m right of the centre (x in [-2.5, 0.5]): its left
@@ -257,11 +257,11 @@ TEST(PixelScale, InFrontCountsOnlyThePartBeforeTheEye) {
     // of [-1.5, 1.5]. Far corner (0.5, 1.5): r^2 = 0.25 + 2.25 + 2.25 = 4.75. The whole
     // screen's far corner (-2.5, 1.5) gives 10.75, what maxPixelsPerRadian says of any point
     // behind the eye.
-    const ViewScreen offCentre{-2.5, 0.5, -1.5, 1.5, 1.5, 3.0 / kPixels};
+    const ViewScreen offCentre{-2.5, 0.5, -1.5, 1.5, 1.5, 3.0 / kSidePixels};
     const std::vector<glm::dvec3> crossing = {{-1, -0.5, -3}, {-1, 0.5, -3}, {1, -0.5, 1}, {1, 0.5, 1}};
-    const double part = 4.75 / (1.5 * 3.0 / kPixels);
+    const double part = 4.75 / (1.5 * 3.0 / kSidePixels);
     EXPECT_NEAR(maxPixelsPerRadianInFront(offCentre, crossing), part, 1e-9 * part);
-    EXPECT_NEAR(maxPixelsPerRadian(offCentre, crossing), 10.75 / (1.5 * 3.0 / kPixels), 1e-6);
+    EXPECT_NEAR(maxPixelsPerRadian(offCentre, crossing), 10.75 / (1.5 * 3.0 / kSidePixels), 1e-6);
     // All behind the eye, or beside the screen: nothing of it shows.
     const std::vector<glm::dvec3> behind = {{-1, -1, 0.5}, {1, -1, 0.5}, {-1, 1, 2}, {1, 1, 2}};
     EXPECT_EQ(maxPixelsPerRadianInFront(centred, behind), 0.0);
@@ -415,10 +415,10 @@ TEST(PixelScale, PixelsPerDegreeOfACaveWallFromItsCentre) {
     // 1.5 / (3 / 1024) = 512 pixels: 512 * pi / 180 = 8.936 pixels per degree. At 1920 pixels,
     // 960 per radian, 16.755 per degree.
     const glm::dvec3 centre{0.0, 1.5, 0.0};
-    EXPECT_NEAR(minPixelsPerDegree(viewScreen(kFront, centre, {1024, 1024})), 8.936, 1e-3);
-    EXPECT_NEAR(minPixelsPerDegree(viewScreen(kFront, centre, {1920, 1920})), 16.755, 1e-3);
+    EXPECT_NEAR(minPixelsPerDegree(viewScreen(kFrontWall, centre, {1024, 1024})), 8.936, 1e-3);
+    EXPECT_NEAR(minPixelsPerDegree(viewScreen(kFrontWall, centre, {1920, 1920})), 16.755, 1e-3);
     // From the frustum's side the same.
-    const OffAxisFrustum f = offAxisFrustum(kFront, centre, kDepth);
+    const OffAxisFrustum f = offAxisFrustum(kFrontWall, centre, kNearFar);
     EXPECT_NEAR(minPixelsPerDegree(viewScreen(f, {1024, 1024})), 8.936, 1e-3);
 }
 
@@ -437,7 +437,7 @@ TEST(PixelScale, MinPixelsPerDegreeIsTheLeastAnywhereOnTheScreen) {
     const glm::dvec3 eyes[] = {kEye, {2.4, 3.5, 0.3}};  // in front; beside and above the wall
     for (const glm::dvec3& eye : eyes) {
         SCOPED_TRACE(eye.x);
-        const ViewScreen s = viewScreen(kFront, eye, {kPixels, kPixels});
+        const ViewScreen s = viewScreen(kFrontWall, eye, {kSidePixels, kSidePixels});
         const double bound = minPixelsPerDegree(s);
         double least = std::numeric_limits<double>::infinity();
         constexpr int kSteps = 60;

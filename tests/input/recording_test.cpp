@@ -15,7 +15,7 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
-std::filesystem::path outputDir() {
+std::filesystem::path recordingsDir() {
     const char* dir = std::getenv("CAVEWALL_TEST_OUTPUT");
     std::filesystem::path p = dir ? dir : std::filesystem::temp_directory_path();
     std::filesystem::create_directories(p);
@@ -52,7 +52,7 @@ std::vector<glm::dmat4> drive(TrackerSource& source, int steps, Recorder* record
 }
 
 TEST(Recording, ReplayIsBitIdentical) {
-    const auto file = outputDir() / "walk.jsonl";
+    const auto file = recordingsDir() / "walk.jsonl";
     auto live = makeTracker("sim:walk?seed=9&dropouts=1");
     std::vector<Sample> recorded, replayed;
     std::vector<glm::dmat4> original;

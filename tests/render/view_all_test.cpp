@@ -13,7 +13,7 @@ namespace {
 
 using testing::oneScreen;
 
-scenes::Bounds box(glm::dvec3 min, glm::dvec3 max) {
+scenes::Bounds boxOf(glm::dvec3 min, glm::dvec3 max) {
     scenes::Bounds b;
     b.add(min);
     b.add(max);
@@ -45,7 +45,7 @@ void expectCornersInside(const display::Display& d, const display::HeadPose& hea
 TEST(ViewAll, FramesABoxFarFromTheOriginInTheSymmetricFrustum) {
     const display::Display d(oneScreen());
     const display::HeadPose head{{0, 0, 0}, glm::dquat(1, 0, 0, 0)};
-    const scenes::Bounds b = box({1000, 50, -3000}, {1004, 52, -2990});
+    const scenes::Bounds b = boxOf({1000, 50, -3000}, {1004, 52, -2990});
     const ViewAll v = viewAll(d, head, b);
     ASSERT_EQ(v.screen, 0);
     // The 90° pyramid's side planes are 45° from the centre ray: the sphere of radius r
@@ -59,7 +59,7 @@ TEST(ViewAll, FramesABoxFarFromTheOriginInTheSymmetricFrustum) {
 
 TEST(ViewAll, PicksTheScreenTheHeadFaces) {
     const display::Display d(config::loadDisplayConfig(CAVEWALL_SOURCE_DIR "/tests/support/cave4_128.json"));
-    const scenes::Bounds b = box({-5, 0, -5}, {5, 3, 5});
+    const scenes::Bounds b = boxOf({-5, 0, -5}, {5, 3, 5});
     struct Case {
         const char* name;
         double yawDeg;  // positive turns left (about +Y)

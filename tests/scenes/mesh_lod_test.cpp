@@ -19,11 +19,11 @@
 namespace cavewall::scenes {
 namespace {
 
-constexpr glm::vec4 kGrey(0.5f, 0.5f, 0.5f, 1.0f);
+constexpr glm::vec4 kLodGrey(0.5f, 0.5f, 0.5f, 1.0f);
 constexpr double kPi = 3.14159265358979323846;
 
 Mesh weldedCylinder(float radius, float height, int segments) {
-    Mesh m = makeCylinder(radius, height, segments, kGrey);
+    Mesh m = makeCylinder(radius, height, segments, kLodGrey);
     weldVertices(m);
     return m;
 }
@@ -153,7 +153,7 @@ TEST(MeshLod, NoLevelExceedsTheMaximumRelativeError) {
 
 TEST(MeshLod, SmallMeshHasOneLevel) {
     // A box has 12 triangles, below the 64 worth simplifying.
-    const Mesh box = makeBox({1, 2, 3}, kGrey);
+    const Mesh box = makeBox({1, 2, 3}, kLodGrey);
     const MeshLod lod = buildMeshLod(box);
     ASSERT_EQ(lod.levels.size(), 1u);
     EXPECT_EQ(lod.indices, box.indices);
@@ -166,7 +166,7 @@ TEST(MeshLod, SmallMeshHasOneLevel) {
 
 TEST(MeshLod, SceneLodsAreEachMeshsLodInMeshOrder) {
     Scene scene;
-    scene.meshes = {weldedCylinder(0.5f, 1.0f, 96), makeBox({1, 1, 1}, kGrey), uvSphere(2.0f, 16, 32),
+    scene.meshes = {weldedCylinder(0.5f, 1.0f, 96), makeBox({1, 1, 1}, kLodGrey), uvSphere(2.0f, 16, 32),
                     weldedMachineTool()};
     const std::vector<MeshLod> lods = buildSceneLods(scene);
     ASSERT_EQ(lods.size(), scene.meshes.size());

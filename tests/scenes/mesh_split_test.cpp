@@ -136,7 +136,7 @@ TEST(MeshSplit, CutsOnlyObjectsOfTheRoleAsked) {
         triangles += s.meshes[o.mesh].triangleCount();
         if (o.role != Role::Structure) continue;
         ++structure;  // the chunks keep their role and name their source
-        EXPECT_THAT(o.name, testing::StartsWith("structure/floor [chunk "));
+        EXPECT_THAT(o.name, ::testing::StartsWith("structure/floor [chunk "));
         EXPECT_LE(std::max(o.worldBounds.size().x, o.worldBounds.size().z), 4.0 + 1.0) << o.name;
     }
     EXPECT_EQ(structure, 9u);

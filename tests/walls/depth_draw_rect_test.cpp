@@ -13,7 +13,7 @@
 namespace cavewall::walls {
 namespace {
 
-const display::ScreenQuad kQuad{{-2, 0, 0}, {2, 0, 0}, {-2, 3, 0}};  // 4 m x 3 m, facing +z
+const display::ScreenQuad kRectWall{{-2, 0, 0}, {2, 0, 0}, {-2, 3, 0}};  // 4 m x 3 m, facing +z
 
 // contentRect: whole texels around every finite depth, as fractions (t down from the top row).
 TEST(DepthDrawRect, ContentRectIsTheTexelsAroundEveryFiniteDepth) {
@@ -30,7 +30,7 @@ TEST(DepthDrawRect, ContentRectIsTheTexelsAroundEveryFiniteDepth) {
 // Seen from the sampling point itself, content at any depth lies on the rays through its own
 // texels: the draw rectangle is the content rectangle, whatever the range.
 TEST(DepthDrawRect, FromTheSamplingPointItIsTheContent) {
-    const WallFrame f = wallFrame(kQuad);
+    const WallFrame f = wallFrame(kRectWall);
     const glm::dvec3 s(1.1, 1.4, -2.5);
     const TextureRect content{{0.2, 0.3}, {0.45, 0.8}};
     const TextureRect r = depthDrawRect(f, s, s, content, {0.5, 30.0}, 0.0);
@@ -49,7 +49,7 @@ TEST(DepthDrawRect, FromTheSamplingPointItIsTheContent) {
 // Nothing to draw: no content, a range that is not finite and ordered, an eye or a sampling
 // point behind the wall.
 TEST(DepthDrawRect, EmptyWhereNothingCanBeHit) {
-    const WallFrame f = wallFrame(kQuad);
+    const WallFrame f = wallFrame(kRectWall);
     const glm::dvec3 s(1.0, 1.5, -2.0), e(2.5, 1.0, -1.5);
     const TextureRect content{{0.1, 0.1}, {0.4, 0.5}};
     EXPECT_FALSE(depthDrawRect(f, e, s, content, {1.0, 5.0}, 0.0).empty());
@@ -67,7 +67,7 @@ TEST(DepthDrawRect, EmptyWhereNothingCanBeHit) {
 // is the box of the eight corners' images, each of which a content point reaches, so each of
 // its sides inside the wall lies within a texel of some hit on a fine enough grid.
 TEST(DepthDrawRect, HoldsEveryPixelTheMarchHits) {
-    const WallFrame f = wallFrame(kQuad);
+    const WallFrame f = wallFrame(kRectWall);
     std::mt19937 rng(23);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     const int n = 32;
@@ -110,7 +110,7 @@ TEST(DepthDrawRect, HoldsEveryPixelTheMarchHits) {
 // near and far corners' images spread apart, and the rectangle is exactly their box: the far
 // corners alone (or the near ones alone) give a smaller box, which misses hits.
 TEST(DepthDrawRect, NeedsBothEndsOfTheRange) {
-    const WallFrame f = wallFrame(kQuad);
+    const WallFrame f = wallFrame(kRectWall);
     const int n = 64;
     DepthImage image{n, n, std::vector<float>(std::size_t(n) * n, kNoSurface)};
     for (int j = 20; j < 40; ++j)

@@ -48,18 +48,18 @@ DepthImage cardImage(const WallFrame& f, glm::dvec3 s, int width, int height) {
     return image;
 }
 
-const display::ScreenQuad kQuad{{-2, 0, 0}, {2, 0, 0}, {-2, 3, 0}};  // 4 m x 3 m, facing +z
+const display::ScreenQuad kPlanWall{{-2, 0, 0}, {2, 0, 0}, {-2, 3, 0}};  // 4 m x 3 m, facing +z
 
 // The skin the march stretches across the card's right edge shows the card's points at ray
 // depths up to 4: the widest error is the bound's step term. A bound 2x too loose fails.
 TEST(DepthPlan, EyeBoundHoldsForEveryDrawnPixelAndIsReached) {
-    const WallFrame f = wallFrame(kQuad);
+    const WallFrame f = wallFrame(kPlanWall);
     const glm::dvec3 s(2.0, 1.5, -3.0), e(2.6, 1.5, -3.0);  // the eye moved 0.6 m along +x
     const int n = 512;
     const DepthImage image = cardImage(f, s, n, n * 3 / 4);
     const glm::dvec2 span(1.0, 4.0);
     ASSERT_EQ(depthRange(image), span);
-    const double bound = depthEyeBound(f.toWorld(e), f.toWorld(s), kQuad, span, std::hypot(4.0 / n, 3.0 / (n * 3 / 4)));
+    const double bound = depthEyeBound(f.toWorld(e), f.toWorld(s), kPlanWall, span, std::hypot(4.0 / n, 3.0 / (n * 3 / 4)));
     // Equal distances: v = E - S at every texel, so the step term is (k(4) - k(1)) 0.6 / 3.
     const double k1 = 1.0 / 4.0, k4 = 4.0 / 7.0;
     EXPECT_NEAR(bound, (k4 - k1) * 0.6 / 3.0 + 0.5 * std::hypot(4.0 / n, 3.0 / (n * 3 / 4)) / 3.0, 1e-6);
@@ -81,7 +81,7 @@ TEST(DepthPlan, EyeBoundHoldsForEveryDrawnPixelAndIsReached) {
     // The segment form: the exact angle where the span form is linear in k, so at most it, and
     // reached as closely.
     const double segment =
-        depthSegmentEyeBound(f.toWorld(e), f.toWorld(s), kQuad, span, std::hypot(4.0 / n, 3.0 / (n * 3 / 4)));
+        depthSegmentEyeBound(f.toWorld(e), f.toWorld(s), kPlanWall, span, std::hypot(4.0 / n, 3.0 / (n * 3 / 4)));
     std::printf("segment form %.5f rad (ratio %.3f)\n", segment, worst / segment);
     EXPECT_LE(segment, bound);
     EXPECT_LE(worst, segment);
@@ -94,7 +94,7 @@ TEST(DepthPlan, EyeBoundHoldsForEveryDrawnPixelAndIsReached) {
 // ray's part from 0.02 to 4 m subtends, which is where the eye looks straight at the wall. A
 // form 25 % too loose fails.
 TEST(DepthPlan, SegmentFormHoldsForEveryDrawnPixelAndIsReached) {
-    const WallFrame f = wallFrame(kQuad);
+    const WallFrame f = wallFrame(kPlanWall);
     const glm::dvec3 s(2.0, 1.5, -3.0), e(2.6, 1.5, -3.0);
     const int n = 512, m = n * 3 / 4;
     DepthImage image{n, m, {}};
@@ -105,15 +105,15 @@ TEST(DepthPlan, SegmentFormHoldsForEveryDrawnPixelAndIsReached) {
         }
     const glm::dvec2 span = depthRange(image);
     const double h = std::hypot(4.0 / n, 3.0 / m);
-    const double form = depthSegmentEyeBound(f.toWorld(e), f.toWorld(s), kQuad, span, h);
+    const double form = depthSegmentEyeBound(f.toWorld(e), f.toWorld(s), kPlanWall, span, h);
     const double nearDepth = span.x - 1e-6 * (3.0 + span.x), farDepth = span.y + 1e-6 * (3.0 + span.y);  // widened
     EXPECT_NEAR(
         form,
-        maxAngularError(f.toWorld(e), f.toWorld(s), nearWall(kQuad, f.toWorld(s), nearDepth), farDepth - nearDepth) +
+        maxAngularError(f.toWorld(e), f.toWorld(s), nearWall(kPlanWall, f.toWorld(s), nearDepth), farDepth - nearDepth) +
             0.5 * h / 3.0,
         1e-9);
     // Below the flat texture's own error up to the far depth (the form with dNear = 0).
-    EXPECT_LT(form, depthSegmentEyeBound(f.toWorld(e), f.toWorld(s), kQuad, {0.0, span.y}, h));
+    EXPECT_LT(form, depthSegmentEyeBound(f.toWorld(e), f.toWorld(s), kPlanWall, {0.0, span.y}, h));
     double worst = 0.0;
     for (int row = 0; row < 9; ++row)
         for (int k = 0; k < 2000; ++k) {
@@ -130,14 +130,14 @@ TEST(DepthPlan, SegmentFormHoldsForEveryDrawnPixelAndIsReached) {
 // lie on the rays from S through the wall's corners, at that depth.
 TEST(DepthPlan, NearWallIsTheWallProjectedFromTheSamplingPoint) {
     const glm::dvec3 s(0.5, 1.5, 3.0);
-    const display::ScreenQuad w = nearWall(kQuad, s, 1.5);  // S is 3 m in front: scale 1.5
-    EXPECT_NEAR(glm::length(w.lowerLeft - (kQuad.lowerLeft + 0.5 * (kQuad.lowerLeft - s))), 0.0, 1e-12);
-    EXPECT_NEAR(glm::length(w.lowerRight - (kQuad.lowerRight + 0.5 * (kQuad.lowerRight - s))), 0.0, 1e-12);
-    EXPECT_NEAR(glm::length(w.upperLeft - (kQuad.upperLeft + 0.5 * (kQuad.upperLeft - s))), 0.0, 1e-12);
+    const display::ScreenQuad w = nearWall(kPlanWall, s, 1.5);  // S is 3 m in front: scale 1.5
+    EXPECT_NEAR(glm::length(w.lowerLeft - (kPlanWall.lowerLeft + 0.5 * (kPlanWall.lowerLeft - s))), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(w.lowerRight - (kPlanWall.lowerRight + 0.5 * (kPlanWall.lowerRight - s))), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(w.upperLeft - (kPlanWall.upperLeft + 0.5 * (kPlanWall.upperLeft - s))), 0.0, 1e-12);
     EXPECT_NEAR(w.lowerLeft.z, -1.5, 1e-12);
     // From behind the wall the plane moves the other way.
-    EXPECT_NEAR(nearWall(kQuad, {0.5, 1.5, -3.0}, 1.5).lowerLeft.z, 1.5, 1e-12);
-    EXPECT_THROW(nearWall(kQuad, {0.5, 1.5, 0.0}, 1.5), Error);
+    EXPECT_NEAR(nearWall(kPlanWall, {0.5, 1.5, -3.0}, 1.5).lowerLeft.z, 1.5, 1e-12);
+    EXPECT_THROW(nearWall(kPlanWall, {0.5, 1.5, 0.0}, 1.5), Error);
 }
 
 // The segment form per eye is the largest angle the part [dNear, dFar] of S's ray through a
@@ -146,13 +146,13 @@ TEST(DepthPlan, NearWallIsTheWallProjectedFromTheSamplingPoint) {
 TEST(DepthPlan, SegmentEyeFormIsTheLargestAngleOfTheRaysParts) {
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    const WallFrame f = wallFrame(kQuad);
+    const WallFrame f = wallFrame(kPlanWall);
     for (int i = 0; i < 40; ++i) {
         const glm::dvec3 s(-1.5 + 3.0 * u(rng), 1.0 + u(rng), 1.0 + 3.0 * u(rng));
         const glm::dvec3 e(-2.5 + 5.0 * u(rng), 1.0 + u(rng), 0.5 + 4.0 * u(rng));
         const double nearDepth = 3.0 * u(rng), farDepth = nearDepth + 0.5 + 20.0 * u(rng), h = 0.01 * u(rng);
         const glm::dvec2 span(nearDepth, farDepth);
-        const double form = depthSegmentEyeBound(e, s, kQuad, span, h);
+        const double form = depthSegmentEyeBound(e, s, kPlanWall, span, h);
         const double texel = 0.5 * h * std::max(1.0 / e.z, 1.0 / s.z);
         const glm::dvec3 sw = f.toWall(s);
         double sampled = 0.0;
@@ -165,9 +165,9 @@ TEST(DepthPlan, SegmentEyeFormIsTheLargestAngleOfTheRaysParts) {
             }
         EXPECT_LE(sampled, form - texel + 1e-9) << "case " << i;
         EXPECT_GE(sampled, 0.99 * (form - texel)) << "case " << i;
-        EXPECT_LE(form, depthEyeBound(e, s, kQuad, span, h) + 1e-12) << "case " << i;
-        EXPECT_LE(form, depthSegmentEyeBound(e, s, kQuad, {0.0, farDepth}, h) + 1e-12) << "case " << i;
-        EXPECT_LT(depthSegmentEyeBound(e, s, kQuad, {nearDepth + 1.0, farDepth + 1.0}, h), form) << "case " << i;
+        EXPECT_LE(form, depthEyeBound(e, s, kPlanWall, span, h) + 1e-12) << "case " << i;
+        EXPECT_LE(form, depthSegmentEyeBound(e, s, kPlanWall, {0.0, farDepth}, h) + 1e-12) << "case " << i;
+        EXPECT_LT(depthSegmentEyeBound(e, s, kPlanWall, {nearDepth + 1.0, farDepth + 1.0}, h), form) << "case " << i;
     }
 }
 
@@ -186,7 +186,7 @@ TEST(DepthPlan, SegmentZoneFormCoversEveryEyeOfTheZone) {
             for (double farDepth : {nearDepth + 0.5, nearDepth + 5.0, nearDepth + 1e6}) {
                 const ZoneVolume& zone = *z;
                 const glm::dvec2 span(nearDepth, farDepth);
-                const double bound = depthSegmentZoneBound(zone, s, kQuad, span, h);
+                const double bound = depthSegmentZoneBound(zone, s, kPlanWall, span, h);
                 double worst = 0.0;
                 std::mt19937 rng(3);
                 std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -205,7 +205,7 @@ TEST(DepthPlan, SegmentZoneFormCoversEveryEyeOfTheZone) {
                         p /= total;
                     }
                     const glm::dvec3 e(p.x, k < 8 ? (k < 4 ? 1.2 : 2.0) : 1.2 + 0.8 * u(rng), p.y);
-                    const double eye = depthSegmentEyeBound(e, s, kQuad, span, h);
+                    const double eye = depthSegmentEyeBound(e, s, kPlanWall, span, h);
                     EXPECT_LE(eye, bound + 1e-9) << "near " << nearDepth << " far " << farDepth;
                     worst = std::max(worst, eye);
                 }
@@ -214,25 +214,25 @@ TEST(DepthPlan, SegmentZoneFormCoversEveryEyeOfTheZone) {
                 if (z == &planned) {
                     EXPECT_GE(worst, 0.8 * bound) << "near " << nearDepth << " far " << farDepth;
                 }
-                EXPECT_LE(bound, depthSegmentZoneBound(zone, s, kQuad, {nearDepth, nearDepth + 1e6}, h) + 1e-12);
+                EXPECT_LE(bound, depthSegmentZoneBound(zone, s, kPlanWall, {nearDepth, nearDepth + 1e6}, h) + 1e-12);
                 if (nearDepth > 0.0) {
-                    EXPECT_LT(bound, depthSegmentZoneBound(zone, s, kQuad, {0.0, farDepth}, h));
+                    EXPECT_LT(bound, depthSegmentZoneBound(zone, s, kPlanWall, {0.0, farDepth}, h));
                 }
             }
 }
 
 TEST(DepthPlan, EyeBoundShrinksWithTheSpanAndIsSymmetricAcrossTheWall) {
     const glm::dvec3 s(0.5, 1.5, 3.0), e(1.5, 1.7, 2.0);
-    const double wide = depthEyeBound(e, s, kQuad, {0.0, 1e9}, 0.0),
-                 narrow = depthEyeBound(e, s, kQuad, {2.0, 3.0}, 0.0);
+    const double wide = depthEyeBound(e, s, kPlanWall, {0.0, 1e9}, 0.0),
+                 narrow = depthEyeBound(e, s, kPlanWall, {2.0, 3.0}, 0.0);
     EXPECT_GT(wide, 3.0 * narrow);
-    EXPECT_LT(depthEyeBound(e, s, kQuad, {2.0, 2.0}, 0.0), 1e-5);  // one depth: exact but for the widening
+    EXPECT_LT(depthEyeBound(e, s, kPlanWall, {2.0, 2.0}, 0.0), 1e-5);  // one depth: exact but for the widening
     // The same eye and sampling point mirrored behind the wall (a texture of the back side).
     const glm::dvec3 em(e.x, e.y, -e.z), sm(s.x, s.y, -s.z);
-    EXPECT_NEAR(depthEyeBound(em, sm, kQuad, {2.0, 3.0}, 0.01), depthEyeBound(e, s, kQuad, {2.0, 3.0}, 0.01), 1e-12);
+    EXPECT_NEAR(depthEyeBound(em, sm, kPlanWall, {2.0, 3.0}, 0.01), depthEyeBound(e, s, kPlanWall, {2.0, 3.0}, 0.01), 1e-12);
     // An eye on the other side of the plane, or on it, proves nothing.
-    EXPECT_GT(depthEyeBound(em, s, kQuad, {2.0, 3.0}, 0.0), 3.0);
-    EXPECT_GT(depthEyeBound({1, 1, 0}, s, kQuad, {2.0, 3.0}, 0.0), 3.0);
+    EXPECT_GT(depthEyeBound(em, s, kPlanWall, {2.0, 3.0}, 0.0), 3.0);
+    EXPECT_GT(depthEyeBound({1, 1, 0}, s, kPlanWall, {2.0, 3.0}, 0.0), 3.0);
 }
 
 // The zone bound is at least every eye's bound in the zone (sampled inside and on its border).
@@ -240,7 +240,7 @@ TEST(DepthPlan, ZoneBoundCoversEveryEyeOfTheZone) {
     const ZoneVolume zone{{{-1, 1}, {2, 1.5}, {2.5, 4}, {-1.5, 3}}, {1.2, 2.0}};
     const glm::dvec3 s(0.3, 1.6, 2.2);
     const glm::dvec2 span(0.7, 6.0);
-    const double bound = depthZoneBound(zone, s, kQuad, span, 0.004);
+    const double bound = depthZoneBound(zone, s, kPlanWall, span, 0.004);
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     double worst = 0.0;
@@ -251,7 +251,7 @@ TEST(DepthPlan, ZoneBoundCoversEveryEyeOfTheZone) {
         glm::dvec2 p(0.0);
         for (int k = 0; k < 4; ++k) p += (w[k] / sum) * zone.floor[k];
         const glm::dvec3 eye(p.x, 1.2 + 0.8 * u(rng), p.y);
-        worst = std::max(worst, depthEyeBound(eye, s, kQuad, span, 0.004));
+        worst = std::max(worst, depthEyeBound(eye, s, kPlanWall, span, 0.004));
     }
     std::printf("zone bound %.4f rad, largest per-eye bound of 4000 eyes %.4f rad (ratio %.3f)\n", bound, worst,
                 worst / bound);
@@ -277,15 +277,15 @@ TEST(DepthPlan, WithinPredicatesGiveTheBoundsAnswer) {
         const double nearDepth = 2.0 * u(rng);
         const glm::dvec2 span(nearDepth, u(rng) < 0.1 ? kInfiniteDepth : nearDepth + 8.0 * u(rng));
         const double h = 0.02 * u(rng);
-        const double spanBound = depthZoneBound(zone, s, kQuad, span, h),
-                     segmentBound = depthSegmentZoneBound(zone, s, kQuad, span, h);
+        const double spanBound = depthZoneBound(zone, s, kPlanWall, span, h),
+                     segmentBound = depthSegmentZoneBound(zone, s, kPlanWall, span, h);
         for (double f : {0.5, 0.9, 0.99, 1.0, 1.01, 1.1, 2.0}) {
             const double alpha = std::min(f * spanBound, 1.5);
-            const bool spanWithin = depthZoneWithin(zone, s, kQuad, span, h, alpha);
+            const bool spanWithin = depthZoneWithin(zone, s, kPlanWall, span, h, alpha);
             EXPECT_EQ(spanWithin, spanBound <= alpha) << "zone " << i << " alpha " << alpha << " bound " << spanBound;
             (spanWithin ? spanYes : spanNo) += 1;
             const double segmentAlpha = std::min(f * segmentBound, 1.5);
-            const bool segmentWithin = depthSegmentZoneWithin(zone, s, kQuad, span, h, segmentAlpha);
+            const bool segmentWithin = depthSegmentZoneWithin(zone, s, kPlanWall, span, h, segmentAlpha);
             if (std::abs(segmentBound - segmentAlpha) > 1e-8) {
                 EXPECT_EQ(segmentWithin, segmentBound <= segmentAlpha)
                     << "zone " << i << " alpha " << segmentAlpha << " bound " << segmentBound;
@@ -297,11 +297,11 @@ TEST(DepthPlan, WithinPredicatesGiveTheBoundsAnswer) {
     EXPECT_GT(std::min({spanYes, spanNo, segmentYes, segmentNo}), 300);
     // No zone, an eye on the other side: not within, whatever alpha.
     const glm::dvec3 s(0.0, 1.6, 2.0);
-    EXPECT_FALSE(depthZoneWithin({{}, {1.2, 2.0}}, s, kQuad, {0.5, 2.0}, 0.01, 1.5));
-    EXPECT_FALSE(depthSegmentZoneWithin({{}, {1.2, 2.0}}, s, kQuad, {0.5, 2.0}, 0.01, 1.5));
+    EXPECT_FALSE(depthZoneWithin({{}, {1.2, 2.0}}, s, kPlanWall, {0.5, 2.0}, 0.01, 1.5));
+    EXPECT_FALSE(depthSegmentZoneWithin({{}, {1.2, 2.0}}, s, kPlanWall, {0.5, 2.0}, 0.01, 1.5));
     const ZoneVolume across{{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}, {1.2, 2.0}};
-    EXPECT_FALSE(depthZoneWithin(across, s, kQuad, {0.5, 2.0}, 0.01, 1.5));
-    EXPECT_FALSE(depthSegmentZoneWithin(across, s, kQuad, {0.5, 2.0}, 0.01, 1.5));
+    EXPECT_FALSE(depthZoneWithin(across, s, kPlanWall, {0.5, 2.0}, 0.01, 1.5));
+    EXPECT_FALSE(depthSegmentZoneWithin(across, s, kPlanWall, {0.5, 2.0}, 0.01, 1.5));
 }
 
 // Depth images whose depths are anywhere in the wall's span: blocks of random depth.

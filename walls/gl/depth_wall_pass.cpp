@@ -14,14 +14,14 @@ namespace cavewall::walls::gl {
 
 namespace {
 
-constexpr const char* kName = "depth walls";
+constexpr const char* kDepthWallsName = "depth walls";
 
 // Per layer, the eye's ray through the pixel in the layer's texture (texel units, x right, y
 // down from the wall's upper edge, as the rows are stored): ta where it leaves the wall plane
 // (sigma 0) and tb where it would be at infinite depth (sigma 1), both affine in the wall point,
 // so the vertices' values interpolate to every pixel's exactly and the fragment shader does not
 // recompute them.
-constexpr const char* kVertex = R"(
+constexpr const char* kDepthWallsVertex = R"(
 uniform vec3 uCorners[4];    // lowerLeft, lowerRight, upperLeft, upperRight in the eye-relative view frame
 uniform mat4 uProjection;
 uniform vec2 uSize;          // wall width, height (metres)
@@ -178,8 +178,8 @@ std::string samplers(int layers, bool fragment) {
 }
 
 std::string vertexSource(int layers) {
-    std::string s =
-        "#version 450 core\n" + samplers(layers, false) + "out vec4 vRay[" + std::to_string(layers) + "];\n" + kVertex;
+    std::string s = "#version 450 core\n" + samplers(layers, false) + "out vec4 vRay[" + std::to_string(layers) +
+                    "];\n" + kDepthWallsVertex;
     for (int i = 0; i < layers; ++i) {
         const std::string n = std::to_string(i);
         s += "    vRay[" + n + "] = ray(uDepth" + n + ", uSample[" + n + "], wall);\n";
@@ -194,7 +194,7 @@ std::string exactFloat(double value) {
     return text;
 }
 
-std::string fragmentSource(int layers) {
+std::string marchFragmentSource(int layers) {
     std::string s = "#version 450 core\n#define MIN_GRAZING " + exactFloat(walls::kMinGrazing) +
                     "\n#define FILL_BACK " + exactFloat(walls::kFillBack) + "\n#define SKIP_BLOCK " +
                     std::to_string(walls::kSkipBlock) + "\n#define SKIP_STEPS " + std::to_string(walls::kSkipSteps) +
@@ -225,8 +225,8 @@ std::string fragmentSource(int layers) {
 // (D_E + s) / D_E times as far from the eye as the quad, and reversed-Z window depth is
 // B + A / distance along the view axis (B = -clipFromView[2][2]), so its depth is B plus the
 // quad's depth minus B over that ratio. It is never nearer than the quad (depth_less).
-std::string depthFragmentSource(int layers) {
-    std::string s = fragmentSource(layers);
+std::string marchDepthFragmentSource(int layers) {
+    std::string s = marchFragmentSource(layers);
     const std::string early = "layout(early_fragment_tests) in;";
     s.replace(s.find(early), early.size(),
               "layout(depth_less) out float gl_FragDepth;\nuniform mat4 uProjection;\nuniform vec3 uEye;");
@@ -285,25 +285,25 @@ DepthWallPass::DepthWallPass(walls::ReprojectSettings settings)
         throw Error("depth wall pass: maxSteps: expected [1, 1024], got " + std::to_string(settings.maxSteps));
     if (settings.refine < 0 || settings.refine > 16)
         throw Error("depth wall pass: refine: expected [0, 16], got " + std::to_string(settings.refine));
-    for (int n = 1; n <= walls::kMaxWallTextures; ++n) _programs[n - 1] = build(n, fragmentSource(n));
+    for (int n = 1; n <= walls::kMaxWallTextures; ++n) _programs[n - 1] = build(n, marchFragmentSource(n));
 }
 
 DepthWallPass::Program DepthWallPass::build(int layers, const std::string& fragment) {
     Program p;
-    p.program = display::gl::buildProgram(kName, vertexSource(layers), fragment);
+    p.program = display::gl::buildProgram(kDepthWallsName, vertexSource(layers), fragment);
     const GLuint id = p.program.id();
-    p.corners = display::gl::uniformLocation(id, kName, "uCorners");
-    p.projection = display::gl::uniformLocation(id, kName, "uProjection");
-    p.weights = display::gl::uniformLocation(id, kName, "uWeights");
-    p.eye = display::gl::uniformLocation(id, kName, "uEye");
-    p.size = display::gl::uniformLocation(id, kName, "uSize");
-    p.samples = display::gl::uniformLocation(id, kName, "uSample");
-    p.ranges = display::gl::uniformLocation(id, kName, "uRange");
-    p.jumps = display::gl::uniformLocation(id, kName, "uJump");
-    p.maxSteps = display::gl::uniformLocation(id, kName, "uMaxSteps");
-    p.refine = display::gl::uniformLocation(id, kName, "uRefine");
-    p.cutSheets = display::gl::uniformLocation(id, kName, "uCutSheets");
-    p.rect = display::gl::uniformLocation(id, kName, "uRect");
+    p.corners = display::gl::uniformLocation(id, kDepthWallsName, "uCorners");
+    p.projection = display::gl::uniformLocation(id, kDepthWallsName, "uProjection");
+    p.weights = display::gl::uniformLocation(id, kDepthWallsName, "uWeights");
+    p.eye = display::gl::uniformLocation(id, kDepthWallsName, "uEye");
+    p.size = display::gl::uniformLocation(id, kDepthWallsName, "uSize");
+    p.samples = display::gl::uniformLocation(id, kDepthWallsName, "uSample");
+    p.ranges = display::gl::uniformLocation(id, kDepthWallsName, "uRange");
+    p.jumps = display::gl::uniformLocation(id, kDepthWallsName, "uJump");
+    p.maxSteps = display::gl::uniformLocation(id, kDepthWallsName, "uMaxSteps");
+    p.refine = display::gl::uniformLocation(id, kDepthWallsName, "uRefine");
+    p.cutSheets = display::gl::uniformLocation(id, kDepthWallsName, "uCutSheets");
+    p.rect = display::gl::uniformLocation(id, kDepthWallsName, "uRect");
     return p;
 }
 
@@ -317,7 +317,7 @@ void DepthWallPass::drawDepth(const std::vector<DepthWallDraw>& walls, const dis
                               const glm::dmat4& caveFromWorld, GLuint sampler, display::FrameStats& stats) const {
     if (walls.empty()) return;
     drawWallDepth(
-        _depthPrograms, [](int n) { return build(n, depthFragmentSource(n)); },
+        _depthPrograms, [](int n) { return build(n, marchDepthFragmentSource(n)); },
         [&](const Programs& programs) { drawWith(programs, walls, frustum, caveFromWorld, sampler, stats); });
 }
 

@@ -11,9 +11,9 @@ namespace cavewall::walls::gl {
 
 namespace {
 
-constexpr const char* kName = "walls";
+constexpr const char* kWallsName = "walls";
 
-constexpr const char* kVertex = R"(#version 450 core
+constexpr const char* kWallsVertex = R"(#version 450 core
 uniform vec3 uCorners[4];    // lowerLeft, lowerRight, upperLeft, upperRight in the eye-relative view frame
 uniform mat4 uProjection;
 uniform vec4 uRect;          // the part of the wall drawn: u, t of its upper left and lower right corners
@@ -29,7 +29,7 @@ void main() {
 // of a uniform `if` for every fragment whatever the condition, so one shader with four
 // conditional samples paid for four samples on every wall (2.5x the fill time of one sample
 // at 1024 x 1024; bench/wall_pass_bench.cpp).
-std::string fragmentSource(int textures) {
+std::string wallsFragmentSource(int textures) {
     std::string s =
         "#version 450 core\nin vec2 vUv;\nuniform vec4 uWeights;\nout vec4 fragColor;  // premultiplied, linear\n";
     for (int i = 0; i < textures; ++i)
@@ -42,8 +42,8 @@ std::string fragmentSource(int textures) {
 
 // The depth-only variant: the same sum, and the pixel keeps the quad's depth where it covers
 // at least half (drawDepth).
-std::string depthFragmentSource(int textures) {
-    std::string s = fragmentSource(textures);
+std::string wallsDepthFragmentSource(int textures) {
+    std::string s = wallsFragmentSource(textures);
     s.replace(s.rfind(";\n}\n"), 4, ";\n    if (fragColor.a < 0.5) discard;\n}\n");
     return s;
 }
@@ -52,16 +52,16 @@ std::string depthFragmentSource(int textures) {
 
 WallPass::Program WallPass::build(const std::string& fragment) {
     Program p;
-    p.program = display::gl::buildProgram(kName, kVertex, fragment);
-    p.corners = display::gl::uniformLocation(p.program.id(), kName, "uCorners");
-    p.projection = display::gl::uniformLocation(p.program.id(), kName, "uProjection");
-    p.weights = display::gl::uniformLocation(p.program.id(), kName, "uWeights");
-    p.rect = display::gl::uniformLocation(p.program.id(), kName, "uRect");
+    p.program = display::gl::buildProgram(kWallsName, kWallsVertex, fragment);
+    p.corners = display::gl::uniformLocation(p.program.id(), kWallsName, "uCorners");
+    p.projection = display::gl::uniformLocation(p.program.id(), kWallsName, "uProjection");
+    p.weights = display::gl::uniformLocation(p.program.id(), kWallsName, "uWeights");
+    p.rect = display::gl::uniformLocation(p.program.id(), kWallsName, "uRect");
     return p;
 }
 
 WallPass::WallPass() : _vertexArray(display::gl::createVertexArray()) {
-    for (int n = 1; n <= kMaxWallTextures; ++n) _programs[n - 1] = build(fragmentSource(n));
+    for (int n = 1; n <= kMaxWallTextures; ++n) _programs[n - 1] = build(wallsFragmentSource(n));
 }
 
 void WallPass::draw(const std::vector<WallDraw>& walls, const display::OffAxisFrustum& frustum,
@@ -74,7 +74,7 @@ void WallPass::drawDepth(const std::vector<WallDraw>& walls, const display::OffA
                          const glm::dmat4& caveFromWorld, GLuint sampler, display::FrameStats& stats) const {
     if (walls.empty()) return;
     drawWallDepth(
-        _depthPrograms, [](int n) { return build(depthFragmentSource(n)); },
+        _depthPrograms, [](int n) { return build(wallsDepthFragmentSource(n)); },
         [&](const Programs& programs) { drawWith(programs, walls, frustum, caveFromWorld, sampler, stats); });
 }
 

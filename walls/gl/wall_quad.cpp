@@ -13,10 +13,10 @@ namespace cavewall::walls::gl {
 
 namespace {
 
-constexpr const char* kName = "wall quad";
+constexpr const char* kQuadName = "wall quad";
 
 // The quad is the unit square (u, v) of its model frame; no vertex buffer is needed.
-constexpr const char* kVertex = R"(#version 450 core
+constexpr const char* kQuadVertex = R"(#version 450 core
 uniform mat4 uModelView;   // eye-relative: model (u, v, 0) -> view
 uniform mat4 uProjection;
 out vec2 vTexCoord;
@@ -27,7 +27,7 @@ void main() {
 }
 )";
 
-constexpr const char* kFragment = R"(#version 450 core
+constexpr const char* kQuadFragment = R"(#version 450 core
 layout(binding = 0) uniform sampler2D uTexture;  // sRGB: sampled as linear premultiplied
 uniform float uWeight;
 in vec2 vTexCoord;
@@ -122,10 +122,11 @@ display::gl::GlObject uploadWallTexture(std::vector<scenes::Image> levels) {
 }
 
 WallQuadDrawer::WallQuadDrawer()
-    : _program(display::gl::buildProgram(kName, kVertex, kFragment)), _vertexArray(display::gl::createVertexArray()) {
-    _modelView = display::gl::uniformLocation(_program.id(), kName, "uModelView");
-    _projection = display::gl::uniformLocation(_program.id(), kName, "uProjection");
-    _weight = display::gl::uniformLocation(_program.id(), kName, "uWeight");
+    : _program(display::gl::buildProgram(kQuadName, kQuadVertex, kQuadFragment)),
+      _vertexArray(display::gl::createVertexArray()) {
+    _modelView = display::gl::uniformLocation(_program.id(), kQuadName, "uModelView");
+    _projection = display::gl::uniformLocation(_program.id(), kQuadName, "uProjection");
+    _weight = display::gl::uniformLocation(_program.id(), kQuadName, "uWeight");
 }
 
 void WallQuadDrawer::draw(const display::OffAxisFrustum& frustum, const display::ScreenQuad& quad, unsigned texture,

@@ -32,7 +32,7 @@ using walls::TextureFormat;
 
 class CompressedTextureTest : public cavewall::testing::GlTest {};
 
-constexpr glm::vec4 kClear{0.18f, 0.18f, 0.18f, 1.0f};  // linear grey, opaque
+constexpr glm::vec4 kClearColour{0.18f, 0.18f, 0.18f, 1.0f};  // linear grey, opaque
 
 TEST_F(CompressedTextureTest, ListsCompressedFormatsAndLlvmpipeHasS3tcSrgb) {
     GLint extensions = 0;
@@ -90,7 +90,7 @@ scenes::Image drawFilling(WallQuadDrawer& drawer, unsigned texture, int size) {
     const display::OffAxisFrustum frustum =
         display::offAxisFrustum(quad, glm::dvec3(0.0), {0.05, std::numeric_limits<double>::infinity()});
     const OffscreenTarget target({size, size});
-    target.bindAndClear(kClear);
+    target.bindAndClear(kClearColour);
     if (texture != 0) drawer.draw(frustum, quad, texture);
     return target.read("drawn");
 }
@@ -217,7 +217,7 @@ TEST_F(CompressedTextureTest, CompressedBakeRendersWithinToleranceOfRgba8) {
             auto draw = [&](const BakeResult& r, const std::string& file) {
                 const display::gl::GlObject t = uploadWallTexture(walls::readBakedTexture(r.folder / file));
                 const OffscreenTarget target(baked.resolution);
-                target.bindAndClear(kClear);
+                target.bindAndClear(kClearColour);
                 drawer.draw(frustum, quad, t.id());
                 return target.read(file);
             };

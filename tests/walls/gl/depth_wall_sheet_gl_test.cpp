@@ -27,10 +27,10 @@
 namespace cavewall::testing {
 namespace {
 
-constexpr int kWidth = 512, kHeight = 384;                           // texels of the bake and pixels of the views
-const display::ScreenQuad kQuad{{-2, 0, 0}, {2, 0, 0}, {-2, 3, 0}};  // 4 m x 3 m at z = 0, facing +z
-const glm::dvec3 kSample(0.0, 1.5, 3.0), kEye(0.6, 1.5, 2.5);
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr int kSheetWidth = 512, kSheetHeight = 384;                           // texels of the bake and pixels of the views
+const display::ScreenQuad kSheetQuad{{-2, 0, 0}, {2, 0, 0}, {-2, 3, 0}};  // 4 m x 3 m at z = 0, facing +z
+const glm::dvec3 kSheetSample(0.0, 1.5, 3.0), kSheetEye(0.6, 1.5, 2.5);
+constexpr double kSheetInf = std::numeric_limits<double>::infinity();
 
 // The near box: a red card (1 m x 1 m x 2 cm, thin, so that the eye sees no side of it) 1 m
 // behind the wall; a uniform grey back plane 4 m behind it. Ambient light alone.
@@ -77,17 +77,17 @@ void DepthWallSheetTest::noSheetInTheGap(bool halved) {
     const std::vector<int> objects{0, 1};
     walls::DepthImage depth;
     const scenes::Image colour =
-        walls::gl::WallTextureRenderer(scene, 1.0f).render(kQuad, kSample, {kWidth, kHeight}, objects, depth);
+        walls::gl::WallTextureRenderer(scene, 1.0f).render(kSheetQuad, kSheetSample, {kSheetWidth, kSheetHeight}, objects, depth);
     const glm::dvec2 range = walls::depthRange(depth);
 
-    const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, kEye, {0.05, kInf});
-    walls::gl::OffscreenTarget target({kWidth, kHeight});
+    const display::OffAxisFrustum frustum = display::offAxisFrustum(kSheetQuad, kSheetEye, {0.05, kSheetInf});
+    walls::gl::OffscreenTarget target({kSheetWidth, kSheetHeight});
     scenes::Image truth;
     {
         render::gl::SceneRenderer renderer(scene, render::gl::RenderSettings{glm::vec4(0.0f), 1.0f});
         render::gl::ViewTarget view;
         view.framebuffer = target.framebuffer();
-        view.viewport = {0, 0, kWidth, kHeight};
+        view.viewport = {0, 0, kSheetWidth, kSheetHeight};
         view.clearColor = glm::vec4(0.0f);
         render::DrawFilter filter;
         filter.objects = &objects;
@@ -99,23 +99,23 @@ void DepthWallSheetTest::noSheetInTheGap(bool halved) {
     const walls::gl::DepthTexture depthTexture = walls::gl::uploadDepthTexture(halved ? walls::marchDepths(depth) : depth);
     target.bindAndClear(glm::vec4(0.0f));
     glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-    walls::gl::DepthWallDraw d{kQuad, {}, 1};
+    walls::gl::DepthWallDraw d{kSheetQuad, {}, 1};
     d.layers[0].colour = colourTexture.id();
     d.layers[0].depth = depthTexture.depth.id();
-    d.layers[0].samplingPoint = kSample;
+    d.layers[0].samplingPoint = kSheetSample;
     d.layers[0].range = range;
     d.layers[0].weight = 1.0f;
     d.layers[0].skip = depthTexture.skip.id();
     d.layers[0].content = walls::contentRect(depth);
-    d.layers[0].depthTexels = halved ? glm::ivec2(kWidth / 2, kHeight / 2) : glm::ivec2(kWidth, kHeight);
+    d.layers[0].depthTexels = halved ? glm::ivec2(kSheetWidth / 2, kSheetHeight / 2) : glm::ivec2(kSheetWidth, kSheetHeight);
     display::FrameStats stats;
     walls::gl::DepthWallPass().draw({d}, frustum, glm::dmat4(1.0), 0, stats);
     const scenes::Image wall = target.read("wall");
 
     // Per row, the widest run of the card's colour where the reference shows the back plane.
     int redTruth = 0, redWall = 0, inGap = 0, widest = 0;
-    for (int y = 0; y < kHeight; ++y)
-        for (int x = 0, run = 0; x < kWidth; ++x) {
+    for (int y = 0; y < kSheetHeight; ++y)
+        for (int x = 0, run = 0; x < kSheetWidth; ++x) {
             redTruth += red(truth, x, y);
             const bool wallRed = red(wall, x, y), gap = wallRed && !redNear(truth, x, y, slack);
             redWall += wallRed;

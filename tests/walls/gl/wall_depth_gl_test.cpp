@@ -25,15 +25,15 @@
 namespace cavewall::testing {
 namespace {
 
-constexpr int kWidth = 256, kHeight = 192;     // bake texels and view pixels
-const display::ScreenQuad& kQuad = kCardWall;  // tests/walls/gl/card_wall.h
-const glm::dvec3 kSample = kCardWallSample;
+constexpr int kFlatWidth = 256, kFlatHeight = 192;     // bake texels and view pixels
+const display::ScreenQuad& kFlatQuad = kCardWall;  // tests/walls/gl/card_wall.h
+const glm::dvec3 kFlatSample = kCardWallSample;
 // The left and right eye 2.5 m in front of the wall, 0.3 m to the right of the sampling point.
 const glm::dvec3 kLeft(0.268, 1.5, 2.5), kRight(0.332, 1.5, 2.5);
 
 metrics::DepthImage distances(const walls::gl::OffscreenTarget& target, const display::OffAxisFrustum& frustum,
                               const std::string& name) {
-    return {name, kWidth, kHeight, display::eyeDistances(frustum, {kWidth, kHeight}, target.readDepth())};
+    return {name, kFlatWidth, kFlatHeight, display::eyeDistances(frustum, {kFlatWidth, kFlatHeight}, target.readDepth())};
 }
 
 class WallDepthTest : public GlTest {};
@@ -44,20 +44,20 @@ TEST_F(WallDepthTest, DepthWallsGiveTheDepthTheEyeSeesFlatWallsTheirOwn) {
     const std::vector<int> objects{0, 1};
     walls::DepthImage depth;
     const scenes::Image colour =
-        walls::gl::WallTextureRenderer(scene, 1.0f).render(kQuad, kSample, {kWidth, kHeight}, objects, depth);
+        walls::gl::WallTextureRenderer(scene, 1.0f).render(kFlatQuad, kFlatSample, {kFlatWidth, kFlatHeight}, objects, depth);
     const display::gl::GlObject colourTexture = walls::gl::uploadWallTexture({colour});
     const walls::gl::DepthTexture depthTexture = walls::gl::uploadDepthTexture(depth);
-    walls::gl::DepthWallDraw depthWall{kQuad, {}, 1};
-    depthWall.layers[0] = {colourTexture.id(),    depthTexture.depth.id(), kSample, walls::depthRange(depth), 1.0f,
+    walls::gl::DepthWallDraw depthWall{kFlatQuad, {}, 1};
+    depthWall.layers[0] = {colourTexture.id(),    depthTexture.depth.id(), kFlatSample, walls::depthRange(depth), 1.0f,
                            depthTexture.skip.id()};
-    const walls::gl::WallDraw flatWall{kQuad, {colourTexture.id()}, {1.0f}, 1};
+    const walls::gl::WallDraw flatWall{kFlatQuad, {colourTexture.id()}, {1.0f}, 1};
     const walls::gl::DepthWallPass depthPass;
     const walls::gl::WallPass flatPass;
-    walls::gl::OffscreenTarget target({kWidth, kHeight});
+    walls::gl::OffscreenTarget target({kFlatWidth, kFlatHeight});
     metrics::StereoError depthError, flatError;
     for (const glm::dvec3 eye : {kLeft, kRight}) {
         // Through the wall as the screen, so every pixel shows the wall or what is behind it.
-        const display::OffAxisFrustum frustum = display::offAxisFrustum(kQuad, eye, {0.05, 1000.0});
+        const display::OffAxisFrustum frustum = display::offAxisFrustum(kFlatQuad, eye, {0.05, 1000.0});
         renderGeometry(scene, objects, frustum, target);
         const metrics::DepthImage truth = distances(target, frustum, "geometry");
         auto depthOnly = [&](auto&& draw, const std::string& name) -> metrics::DepthImage {
@@ -114,11 +114,11 @@ TEST_F(WallDepthTest, GlassWithNothingBehindItHasItsOwnDepth) {
     scenes::addObject(scene, 1, glm::dmat4(1.0), "glass");
     walls::DepthImage depth;
     const scenes::Image colour =
-        walls::gl::WallTextureRenderer(scene, 1.0f).render(kQuad, kSample, {kWidth, kHeight}, {0, 1}, depth);
+        walls::gl::WallTextureRenderer(scene, 1.0f).render(kFlatQuad, kFlatSample, {kFlatWidth, kFlatHeight}, {0, 1}, depth);
     // Texels by their wall position: (x, y) in metres on the 4 m x 3 m wall, rows from the top.
     auto at = [&](double x, double y) {
-        const int i = static_cast<int>((x + 2.0) / 4.0 * kWidth), j = static_cast<int>((3.0 - y) / 3.0 * kHeight);
-        return static_cast<std::size_t>(j) * kWidth + i;
+        const int i = static_cast<int>((x + 2.0) / 4.0 * kFlatWidth), j = static_cast<int>((3.0 - y) / 3.0 * kFlatHeight);
+        return static_cast<std::size_t>(j) * kFlatWidth + i;
     };
     // The sampling point (0, 1.5, 3) sees the pane (y 0 to 1.5 at z = -2) through wall rows 0.6
     // to 1.5 m and the plane (y -1.5 to 1.5 at z = -4) through rows 0.21 to 1.5 m, on the left.
