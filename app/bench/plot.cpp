@@ -105,6 +105,14 @@ std::string seriesStyle(const PlotSeries& s, std::size_t index) {
 struct PanelPlot {
     std::string blocks;
     std::vector<std::string> items;
+    std::size_t longestTitle = 0;  // characters
+
+    void add(const std::string& item, const std::string& title) {
+        items.push_back(item + " title " + gnuplotQuoted(title));
+        // UTF-8: count the bytes that start a character.
+        const auto chars = std::count_if(title.begin(), title.end(), [](char c) { return (c & 0xC0) != 0x80; });
+        longestTitle = std::max(longestTitle, static_cast<std::size_t>(chars));
+    }
 };
 
 // The large markers over the flagged points, and the front's line, with their legend entries.
@@ -124,7 +132,7 @@ void addOverlays(const PlotPanel& panel, const std::string& prefix, PanelPlot& o
         const std::vector<PlotPoint> points = flagged(panel, o.flag);
         if (points.empty()) continue;
         out.blocks += dataBlock(prefix + o.block, points);
-        out.items.push_back(prefix + o.block + " using 1:2 with " + o.style + " title " + gnuplotQuoted(*o.name));
+        out.add(prefix + o.block + " using 1:2 with " + o.style, *o.name);
     }
 }
 
@@ -142,7 +150,7 @@ PanelPlot panelPlot(const PlotPanel& panel, std::size_t index) {
                       : s.style == SeriesStyle::Line ? dataBlock(block, sortedByX(s.points))
                                                      : dataBlock(block, s.points);
         const char* columns = s.style == SeriesStyle::Arrows ? " using 1:2:3:4" : " using 1:2";
-        out.items.push_back(block + columns + " with " + seriesStyle(s, i) + " title " + gnuplotQuoted(s.name));
+        out.add(block + columns + " with " + seriesStyle(s, i), s.name);
     }
     addOverlays(panel, prefix, out);
     return out;
@@ -187,14 +195,24 @@ std::string ticCommands(std::pair<double, double> ends, const PlotAxis& axis, co
     return out + ")\nset format " + name + " '%g'\n";
 }
 
+// gnuplot sizes a key's box in character cells, about 9 pixels each in the figure's font, for
+// the longest title plus about 7 cells of sample and spacing; the text itself is narrower
+// (about 8 pixels a character).
+constexpr int kKeyCellPixels = 9, kKeyExtraCells = 7;
+
 // The legend of panel `index`: its own below it, or the figure's shared one (the last panel's,
-// in the strip at the right), with the figure's note under it.
-std::string keyCommands(const Figure& figure, std::size_t index) {
+// in the strip at the right), with the figure's note under it. A shared legend's box is
+// narrowed to its strip where gnuplot's estimate of a long title would run past the figure's
+// right edge.
+std::string keyCommands(const Figure& figure, std::size_t index, std::size_t longestTitle) {
     // The key's extra height keeps its box off the x axis title.
     if (figure.legendWidth <= 0) return "set key below left Left reverse maxrows 8 box height 1.5\n";
     if (index + 1 < figure.panels.size()) return "unset key\n";
     const std::string left = number(1.0 - static_cast<double>(figure.legendWidth) / figure.width);  // strip start
-    std::string out = "set key at screen " + left + ", 0.92 left top Left reverse box\n";
+    const int cells = static_cast<int>(longestTitle) + kKeyExtraCells;
+    const int fits = (figure.legendWidth - 2 * kKeyCellPixels) / kKeyCellPixels;
+    const std::string width = cells > fits ? " width " + std::to_string(fits - cells) : "";
+    std::string out = "set key at screen " + left + ", 0.92 left top Left reverse box" + width + "\n";
     if (!figure.note.empty())
         out += "set label 1 " + gnuplotQuoted(figure.note) + " at screen " + left + ", 0.04 left\n";
     return out;
@@ -248,7 +266,7 @@ std::string panelCommands(const Figure& figure, std::size_t index, const PanelPl
     std::string out = "set title " + gnuplotQuoted(panel.title) + "\n";
     out += axisCommands(panel, panel.x, "x", &PlotPoint::x) + axisCommands(panel, panel.y, "y", &PlotPoint::y);
     out += panel.equalScale ? "set size ratio -1\n" : "set size noratio\n";
-    out += "set grid\n" + keyCommands(figure, index) + labelCommands(panel);
+    out += "set grid\n" + keyCommands(figure, index, plot.longestTitle) + labelCommands(panel);
     if (plot.items.empty())
         return out + "set label 2 'no data' at graph 0.5, 0.5 center\nplot NaN notitle\nunset label 2\n" +
                unsetLabelCommands(panel);

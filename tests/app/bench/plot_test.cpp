@@ -166,6 +166,21 @@ TEST(PlotScript, ASharedLegendSitsInAStripAtTheRight) {
                 ::testing::ThrowsMessage<Error>(HasSubstr("expected a legend strip of 0 to half the plot's width")));
 }
 
+// gnuplot sizes the key's box at about 9 pixels a character cell for the longest title plus 7
+// cells, wider than the text: the box is narrowed to the strip instead of running off the figure.
+TEST(PlotScript, ASharedLegendsBoxIsNarrowedToItsStrip) {
+    Figure figure = sampleFigure();
+    figure.panels.push_back(figure.panels[0]);
+    figure.width = 1600;
+    figure.legendWidth = 480;
+    // The longest title (the best alternative's) has 53 characters: 60 cells; the strip holds
+    // (480 - 18) / 9 = 51.
+    EXPECT_THAT(gnuplotScript(figure, "out.png"),
+                HasSubstr("set key at screen 0.7, 0.92 left top Left reverse box width -9\n"));
+    figure.legendWidth = 700;  // 75 cells
+    EXPECT_THAT(gnuplotScript(figure, "out.png"), Not(HasSubstr(" width ")));
+}
+
 // A top view: two cells as filled polygons, a wall as an open path; metres equal on both axes
 // and +z (y here) growing downwards.
 TEST(PlotScript, ShapesAreDrawnOneByOneAndPolygonsClosed) {
