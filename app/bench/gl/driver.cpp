@@ -145,10 +145,11 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                                  "drawn"
                            : std::string("occlusion culling: off (--no-occlusion: every mode draws what its frustum "
                                          "and cells keep)"),
-            o.portalCulling ? "portal culling: on (walls modes and the control: each view draws other cells' objects only "
-                              "where their boxes may be seen from its eye through the viewer cell's walls, open "
-                              "boundary and windows, walls/cell_openings.h; --no-portal-culling: off)"
-                            : "portal culling: off (--no-portal-culling: neighbours drawn as geometry are drawn whole)"};
+            o.portalCulling
+                ? "portal culling: on (walls modes and the control: each view draws other cells' objects only "
+                  "where their boxes may be seen from its eye through the viewer cell's walls, open "
+                  "boundary and windows, walls/cell_openings.h; --no-portal-culling: off)"
+                : "portal culling: off (--no-portal-culling: neighbours drawn as geometry are drawn whole)"};
 }
 
 // The checks that need no file: they fail before anything is loaded.
@@ -353,7 +354,7 @@ void finishCellRuns(std::vector<BenchMode>& table, const CellModeRuns& r, double
 // Runs the walkthrough modes of `phase` (Interleaved or Paged) frame by frame in turn, and with
 // the Interleaved ones the CellsLod modes after them every frame (the same seconds); the
 // table's first mode (full geometry) is the reference of images and speed-ups. Returns their
-// labels.
+// labels as the table shows them.
 std::string runWalkPhase(std::vector<BenchMode>& table, Phase phase, Bench& b) {
     const std::vector<std::size_t> modes = modesOf(table, phase);
     std::vector<std::unique_ptr<ModeAccumulator>> accs;  // stable addresses for the runs
@@ -386,7 +387,10 @@ std::string runWalkPhase(std::vector<BenchMode>& table, Phase phase, Bench& b) {
         if (reference) b.fullP50 = table[modes[k]].result->frameMs.p50;
     }
     finishCellRuns(table, cells, b.fullP50);
-    return names;
+    // The labels again from the results: a triangle budget is known only after the warm-up.
+    std::string labels;
+    for (std::size_t i : modes) labels += (labels.empty() ? "" : ", ") + modeLabel(*table[i].result);
+    return cells.names.empty() ? labels : labels + ", " + cells.names;
 }
 
 // Runs the cell modes of `phase` (Cells) frame by frame in turn, with the selection of the

@@ -48,7 +48,8 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     EXPECT_THAT(r.out, HasSubstr("4 screens at 128x128 pixels, mono stereo mode"));
     // The quick path is walked at about 1000 m/s: a warp-morph spans its half metre in 0.5 ms.
     EXPECT_THAT(r.out, HasSubstr("a warp-morph lasts 0.000"));
-    EXPECT_THAT(r.out, HasSubstr(" s of the path's time, the stretch a viewer walks at 1 m/s in `cavewall run`'s 0.5 s"));
+    EXPECT_THAT(r.out,
+                HasSubstr(" s of the path's time, the stretch a viewer walks at 1 m/s in `cavewall run`'s 0.5 s"));
     EXPECT_THAT(r.out, HasSubstr("portal culling: on (walls modes and the control: each view draws other cells'"));
     // Full geometry, the walls modes (but the paged one), the clusters (--clusters, held to
     // 60 Hz by the controller), the control and the limit with levels of detail are timed in
@@ -59,6 +60,12 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     EXPECT_THAT(r.out,
                 HasSubstr("walls flat a=30 blend lod 1px frame 16.7ms, clusters frame 0.5ms, clusters frame 200ms, "
                           "cells lod 1px, near lod 1px, frame by frame in turn"));
+    // The report's line names the triangle budgets the warm-up chose, as the table does.
+    const std::size_t drawn = r.out.find("drawn frame by frame in turn (the same seconds): ");
+    ASSERT_NE(drawn, std::string::npos);
+    EXPECT_THAT(r.out.substr(drawn, r.out.find('\n', drawn) - drawn),
+                ::testing::ContainsRegex("walls flat a=20 blend lod 1px budget [0-9]+, walls flat a=30 blend lod 1px "
+                                         "budget [0-9]+, "));
     // One clusters mode per --cluster-budgets entry, each with its budget line: no frame at
     // 128x128 takes as little as 0.5 ms (infeasible, said so with the floor), and 200 ms is
     // more than any takes (feasible: the line goes straight on to the floor).
