@@ -292,18 +292,19 @@ DepthWallPass::Program DepthWallPass::build(int layers, const std::string& fragm
     Program p;
     p.program = display::gl::buildProgram(kDepthWallsName, vertexSource(layers), fragment);
     const GLuint id = p.program.id();
-    p.corners = display::gl::uniformLocation(id, kDepthWallsName, "uCorners");
-    p.projection = display::gl::uniformLocation(id, kDepthWallsName, "uProjection");
-    p.weights = display::gl::uniformLocation(id, kDepthWallsName, "uWeights");
-    p.eye = display::gl::uniformLocation(id, kDepthWallsName, "uEye");
-    p.size = display::gl::uniformLocation(id, kDepthWallsName, "uSize");
-    p.samples = display::gl::uniformLocation(id, kDepthWallsName, "uSample");
-    p.ranges = display::gl::uniformLocation(id, kDepthWallsName, "uRange");
-    p.jumps = display::gl::uniformLocation(id, kDepthWallsName, "uJump");
-    p.maxSteps = display::gl::uniformLocation(id, kDepthWallsName, "uMaxSteps");
-    p.refine = display::gl::uniformLocation(id, kDepthWallsName, "uRefine");
-    p.cutSheets = display::gl::uniformLocation(id, kDepthWallsName, "uCutSheets");
-    p.rect = display::gl::uniformLocation(id, kDepthWallsName, "uRect");
+    const auto at = [&](const char* uniform) { return display::gl::uniformLocation(id, kDepthWallsName, uniform); };
+    p.corners = at("uCorners");
+    p.projection = at("uProjection");
+    p.weights = at("uWeights");
+    p.eye = at("uEye");
+    p.size = at("uSize");
+    p.samples = at("uSample");
+    p.ranges = at("uRange");
+    p.jumps = at("uJump");
+    p.maxSteps = at("uMaxSteps");
+    p.refine = at("uRefine");
+    p.cutSheets = at("uCutSheets");
+    p.rect = at("uRect");
     return p;
 }
 
