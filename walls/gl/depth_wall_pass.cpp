@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 namespace cavewall::walls::gl {
 
@@ -291,20 +292,16 @@ DepthWallPass::DepthWallPass(walls::ReprojectSettings settings)
 DepthWallPass::Program DepthWallPass::build(int layers, const std::string& fragment) {
     Program p;
     p.program = display::gl::buildProgram(kDepthWallsName, vertexSource(layers), fragment);
-    const GLuint id = p.program.id();
-    const auto at = [&](const char* uniform) { return display::gl::uniformLocation(id, kDepthWallsName, uniform); };
-    p.corners = at("uCorners");
-    p.projection = at("uProjection");
-    p.weights = at("uWeights");
-    p.eye = at("uEye");
-    p.size = at("uSize");
-    p.samples = at("uSample");
-    p.ranges = at("uRange");
-    p.jumps = at("uJump");
-    p.maxSteps = at("uMaxSteps");
-    p.refine = at("uRefine");
-    p.cutSheets = at("uCutSheets");
-    p.rect = at("uRect");
+    // Each location and the uniform it holds.
+    const std::pair<GLint Program::*, const char*> uniforms[] = {
+        {&Program::corners, "uCorners"},     {&Program::projection, "uProjection"},
+        {&Program::weights, "uWeights"},     {&Program::eye, "uEye"},
+        {&Program::size, "uSize"},           {&Program::samples, "uSample"},
+        {&Program::ranges, "uRange"},        {&Program::jumps, "uJump"},
+        {&Program::maxSteps, "uMaxSteps"},   {&Program::refine, "uRefine"},
+        {&Program::cutSheets, "uCutSheets"}, {&Program::rect, "uRect"}};
+    for (const auto& [member, name] : uniforms)
+        p.*member = display::gl::uniformLocation(p.program.id(), kDepthWallsName, name);
     return p;
 }
 
