@@ -58,16 +58,21 @@ bool within(const scenes::Bounds& b, const Box2& inner) {
     return b.min.x >= inner[0].x && b.max.x <= inner[1].x && b.min.z >= inner[0].y && b.max.z <= inner[1].y;
 }
 
-// Whether `o` is a pane of glass in the walls of the cell whose floor box grown by kWallBand is
-// `band` and shrunk by it `inner`: its material blends; its box reaches into the band and not
-// only into the inner box (not a pane standing in the room), thin across (at most 10 cm) and
-// at least 20 cm wide and high.
-bool paneInWalls(const scenes::Scene& scene, const scenes::Object& o, const Box2& inner, const Box2& band) {
+// Whether `o` is a pane of glass: its material blends, its box is thin across (at most 10 cm)
+// and at least 20 cm wide and high.
+bool isPane(const scenes::Scene& scene, const scenes::Object& o) {
     const scenes::Bounds& b = o.worldBounds;
-    if (b.empty() || !overlaps(b, band) || within(b, inner)) return false;
+    if (b.empty()) return false;
     const glm::dvec3 size = b.max - b.min;
     if (std::min(size.x, size.z) > 0.1 || std::max(size.x, size.z) < 0.2 || size.y < 0.2) return false;
     return scenes::blends(scene, o);
+}
+
+// Whether a pane with the box `b` is in the walls of the cell whose floor box grown by
+// kWallBand is `band` and shrunk by it `inner`: it reaches into the band and not only into the
+// inner box (not a pane standing in the room).
+bool inWalls(const scenes::Bounds& b, const Box2& inner, const Box2& band) {
+    return overlaps(b, band) && !within(b, inner);
 }
 
 // A pane of glass in a cell's walls as an opening: the vertical rectangle through the middle of
@@ -96,6 +101,9 @@ CellOpenings::CellOpenings(const Plan& plan, const scenes::SceneDescription& des
         _openings[cell].push_back(static_cast<int>(_quads.size()));
         _quads.push_back(q);
     };
+    std::vector<const scenes::Object*> panes;  // windows of some cell, in object order
+    for (const scenes::Object& o : scene.objects)
+        if (isPane(scene, o)) panes.push_back(&o);
     for (int e = 0; e < _cellCount; ++e) {
         const scenes::Cell& cell = description.cells[e];
         const glm::dvec2 centre = regionCentre(cell);
@@ -103,8 +111,8 @@ CellOpenings::CellOpenings(const Plan& plan, const scenes::SceneDescription& des
         for (const auto& [a, b] : openBoundary(description, e))
             add(e, verticalQuad(a, b, cell.floorY - kOpeningReach, cell.floorY + kOpeningReach, centre));
         const Box2 inner = floorBox(cell, -kWallBand);
-        for (const scenes::Object& o : scene.objects)  // windows
-            if (paneInWalls(scene, o, inner, _columns.back())) add(e, paneQuad(o.worldBounds, centre));
+        for (const scenes::Object* o : panes)
+            if (inWalls(o->worldBounds, inner, _columns.back())) add(e, paneQuad(o->worldBounds, centre));
     }
 }
 
