@@ -9,8 +9,8 @@
 #include "walkthrough/frame_planner.h"
 #include "walls/cell_openings.h"
 #include "walls/frame_select.h"
-#include "walls/gl/wall_pass.h"
 #include "walls/gl/texture_store.h"
+#include "walls/gl/wall_pass.h"
 #include "walls/gl/wall_quad.h"
 
 #include <cassert>
@@ -29,7 +29,6 @@ std::vector<bool> cellMask(const walls::FrameSelection& s, std::size_t cellCount
     if (s.cell >= 0 && s.cell < static_cast<int>(cellCount)) cells[s.cell] = true;
     return cells;
 }
-
 
 // The layer's texture: 512 x 512 (the bake's largest by default), a gradient under a
 // checkerboard so that every MIP level differs, with its MIP chain.
@@ -50,8 +49,6 @@ display::gl::GlObject layerTexture() {
     return walls::gl::uploadWallTexture(std::move(levels));
 }
 
-
-
 // Every view's depth as eye distances, after the frame: geometry only (each image keeps its own
 // depth buffer). The near limit's bare wall quads and the layer write no depth.
 std::vector<walkthrough::ViewDepth> readViewDepths(const std::vector<display::ScreenView>& views,
@@ -71,16 +68,11 @@ std::vector<walkthrough::ViewDepth> readViewDepths(const std::vector<display::Sc
 
 struct CellModes::State {
     State(const ModeContext& c, const walls::WallSetup& setup, double lodPixels)
-        : c(c),
-          setup(setup),
-          lodPixels(lodPixels),
-          selector(setup.plan, setup.table, c.description),
-          openings(setup.plan, c.description, c.scene),
-          targets(c.display, c.context),
+        : c(c), setup(setup), lodPixels(lodPixels), selector(setup.plan, setup.table, c.description),
+          openings(setup.plan, c.description, c.scene), targets(c.display, c.context),
           renderer(c.scene, settingsOf(c, lodPixels)),
           bare(walls::gl::uploadWallTexture({scenes::Image{"bare", 1, 1, {128, 128, 128, 255}}})),
-          layer(layerTexture()),
-          sampler(walls::gl::wallSampler()) {}
+          layer(layerTexture()), sampler(walls::gl::wallSampler()) {}
     static render::gl::RenderSettings settingsOf(const ModeContext& c, double lodPixels) {
         render::gl::RenderSettings settings;
         settings.lodPixels = lodPixels;
@@ -135,8 +127,7 @@ FrameCost CellModes::draw(const walkthrough::FrameInput& in, CellDraw kind) {
     const std::vector<display::ScreenView> views = c.display.views(in.head);
     render::FrameLod lod;
     if (s.renderer.hasLods()) {
-        lod = render::chooseLods(s.renderer.renderScene(), views, in.worldFromCave, filter,
-                                 s.lodPixels);
+        lod = render::chooseLods(s.renderer.renderScene(), views, in.worldFromCave, filter, s.lodPixels);
         filter.lodLevels = &lod.levels;
     }
     const display::FrameStats stats = s.renderer.render(views, s.targets, in.worldFromCave, filter,
@@ -166,8 +157,9 @@ void CellModes::drawFrame(const walkthrough::FrameInput& in, const std::vector<C
         assert(r.acc->mode().lodPixels == _s->lodPixels);
         r.acc->addFrame(draw(in, r.draw));
         if (!in.readImages) continue;
-        const std::vector<walkthrough::ViewDepth> depths =
-            readsDepth(c) ? readViewDepths(c.display.views(in.head), _s->targets) : std::vector<walkthrough::ViewDepth>{};
+        const std::vector<walkthrough::ViewDepth> depths = readsDepth(c)
+                                                               ? readViewDepths(c.display.views(in.head), _s->targets)
+                                                               : std::vector<walkthrough::ViewDepth>{};
         r.acc->compare(in.frame, in.head, display::gl::readFrame(c.display, _s->targets), depths,
                        reference.at(in.frame));
     }
