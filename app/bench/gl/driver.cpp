@@ -368,7 +368,10 @@ std::string runWalkPhase(std::vector<BenchMode>& table, Phase phase, Bench& b) {
         if (table[i].budgetFrom) run.budgetFrom = runOf[*table[i].budgetFrom];
         runOf[i] = static_cast<int>(runs.size());
         runs.push_back(std::move(run));
-        names += (names.empty() ? "" : ", ") + modeLabel(accs.back()->mode());
+        // A triangle budget is known only after the warm-up: say where it comes from.
+        names += (names.empty() ? "" : ", ") + modeLabel(accs.back()->mode()) +
+                 (table[i].budgetFrom ? " budget (the median triangles of the same mode without one, after its warm-up)"
+                                      : "");
     }
     CellModeRuns cells = phase == Phase::Interleaved ? cellRunsOf(table, Phase::CellsLod, b) : CellModeRuns{};
     if (!cells.names.empty()) names += ", " + cells.names;

@@ -60,7 +60,10 @@ TEST(BenchSceneCli, QuickRunHasEveryModeWithFiniteNumbers) {
     EXPECT_THAT(r.out,
                 HasSubstr("walls flat a=30 blend lod 1px frame 16.7ms, clusters frame 0.5ms, clusters frame 200ms, "
                           "cells lod 1px, near lod 1px, frame by frame in turn"));
-    // The report's line names the triangle budgets the warm-up chose, as the table does.
+    // Before the run the console says where the triangle budgets will come from; the report's
+    // line names the budgets the warm-up chose, as the table does.
+    EXPECT_THAT(r.out, HasSubstr("walls flat a=20 blend lod 1px budget (the median triangles of the same mode "
+                                 "without one, after its warm-up), walls flat a=30 blend lod 1px budget ("));
     const std::size_t drawn = r.out.find("drawn frame by frame in turn (the same seconds): ");
     ASSERT_NE(drawn, std::string::npos);
     EXPECT_THAT(r.out.substr(drawn, r.out.find('\n', drawn) - drawn),
