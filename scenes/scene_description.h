@@ -79,6 +79,10 @@ struct SceneDescription {
     // A second path (same frame) that hugs the virtual walls, within about 0.3 m of them and
     // across their blend strips: where the walls' bound is hardest to keep. Optional.
     std::vector<glm::dvec3> wallPath;
+    // The smallest zone size (metres) the walls of this scene are planned with when a command
+    // is not given --min-zone ("planning": {"minZone": M}, as `cavewall walls --min-zone M`
+    // writes it); 0: not given, the commands' own default (walls/plan.h PlanOptions).
+    double minZoneSize = 0.0;
 
     bool operator==(const SceneDescription&) const = default;
 };

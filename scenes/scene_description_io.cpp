@@ -16,6 +16,8 @@
 //                                             this size, one object each (scenes/mesh_split.h)
 //   }],
 //   "viewer": {"eyeHeight": 1.7, "headHeightRange": [1.2, 2.0]},   optional, metres
+//   "planning": {"minZone": 2},              optional: the smallest zone size (metres) the walls
+//                                             are planned with unless a command says --min-zone
 //   "cells": [{"name": "A", "floorY": 0, "region": [[x,z], ...]}],  convex floor polygons (x, z);
 //                                             either orientation in the file, stored counter-clockwise
 //   "walls": [{"name": "AB", "kind": "virtual", "cells": ["A", "B"],          kind: virtual|portal
@@ -140,13 +142,18 @@ SceneDescription parseSceneDescription(std::string_view jsonText, const std::str
                                        const std::filesystem::path& folder) {
     const auto doc = config::JsonDocument::fromText(jsonText, source);
     const JsonNode root = doc.root();
-    root.expectKeys({"name", "models", "viewer", "cells", "walls", "realWalls", "walkPath", "walkBreaks", "wallPath"});
+    root.expectKeys(
+        {"name", "models", "viewer", "planning", "cells", "walls", "realWalls", "walkPath", "walkBreaks", "wallPath"});
     SceneDescription d;
     d.folder = folder;
     d.name = root.has("name") ? root.at("name").string() : folder.lexically_normal().filename().string();
     if (d.name.empty() || d.name == ".") d.name = "scene";
     for (const JsonNode& m : root.at("models").items(1)) d.models.push_back(parseModel(m));
     if (auto v = root.find("viewer")) parseViewer(*v, d);
+    if (auto v = root.find("planning")) {
+        v->expectKeys({"minZone"});
+        d.minZoneSize = v->at("minZone").number(0.01, 1000.0);
+    }
     std::map<std::string, int> cellIndex;
     if (auto v = root.find("cells"))
         for (const JsonNode& c : v->items()) {
@@ -252,6 +259,7 @@ std::string writeSceneDescription(const SceneDescription& d) {
     j["name"] = d.name;
     for (const ModelFile& m : d.models) j["models"].push_back(modelJson(m));
     j["viewer"] = {{"eyeHeight", d.eyeHeight}, {"headHeightRange", {d.headHeightRange.x, d.headHeightRange.y}}};
+    if (d.minZoneSize > 0.0) j["planning"] = {{"minZone", d.minZoneSize}};  // optional: others keep their bytes
     j["cells"] = nlohmann::json::array();
     for (const Cell& c : d.cells) {
         nlohmann::json region = nlohmann::json::array();

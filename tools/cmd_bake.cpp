@@ -114,6 +114,7 @@ int runBake(const std::vector<std::string>& words) {
     walls::gl::BakeRequest request;
     request.plan.alphaDeg = args.number("alpha", request.plan.alphaDeg, 1e-6, 90.0);
     request.plan.minZoneSize = args.number("min-zone", request.plan.minZoneSize, 0.01, 1000.0);
+    request.minZoneGiven = args.has("min-zone");
     request.plan.blendWidth = args.number("blend", request.plan.blendWidth, 0.0, 100.0);
     request.plan.pixelsPerDegree = args.number("ppd", request.plan.pixelsPerDegree, 0.01, 1000.0);
     walls::validatePlanOptions(request.plan);

@@ -124,10 +124,10 @@ const char* const kBenchUsage =
     "         or --stereo mono: one image per screen; --stereo separate: one image per\n"
     "         eye, every image metric per eye, and the stereo error: per eye and pixel the\n"
     "         disparity error in arc minutes of the eye's depth against full geometry's, mean\n"
-    "         and share beyond 1 arcmin), images compared every 4 frames, min-zone 1 m, 10 pixels per degree, bake\n"
-    "         textures at most 512 texels. --quick: 24 frames at 128 pixels (unless\n"
-    "         --resolution says otherwise), compared every 3, min-zone 3 m, bakes at most\n"
-    "         128 texels. The resolution is printed with every figure.\n"
+    "         and share beyond 1 arcmin), images compared every 4 frames, min-zone 1 m (or the\n"
+    "         scene's \"planning\" minZone), 10 pixels per degree, bake textures at most 512\n"
+    "         texels. --quick: 24 frames at 128 pixels (unless --resolution says otherwise),\n"
+    "         compared every 3, min-zone 3 m, bakes at most 128 texels. The resolution is printed with every figure.\n"
     "\n"
     "--scale LIST  frame time, resident geometry and time to the first frame against the model's\n"
     "         size: per entry (2M, 500k or 8000000: decimal, k or M, at most 128M, the largest\n"
@@ -149,9 +149,10 @@ const char* const kBenchUsage =
     "         --triangle-budget N triangles a frame (default near: the near limit's median over the\n"
     "         stretch; 0 leaves the mode out), raising the level-of-detail tolerance to at most\n"
     "         --lod-max PX (default 8); its image error shows what the budget costs. --min-zone M\n"
-    "         (default 1) is the walls' smallest zone: a smaller one narrows the geometry zones\n"
-    "         near each wall at the cost of more textures. --walls depth: both walls modes draw\n"
-    "         depth walls (planned with their own bound, baked with depth). --walls\n"
+    "         (default: the scene's \"planning\" minZone, else 1) is the walls' smallest zone: a\n"
+    "         smaller one narrows the geometry zones near each wall at the cost of more textures.\n"
+    "         --walls depth: both walls modes draw depth walls (planned with their own bound,\n"
+    "         baked with depth). --walls\n"
     "         flat,depth: flat walls as above and a fifth mode, walls-depth, the walls mode with\n"
     "         depth walls, drawn in turn with the others (depth / flat frame time in one run).\n"
     "         --keep-sheets: depth walls keep the rubber sheets they cut by default (a near\n"
@@ -282,6 +283,7 @@ int runSceneBench(const Args& args) {
     o.frames = args.integer("frames", quick ? 24 : 120, 1, 100000);
     o.compareEvery = static_cast<int>(args.integer("compare-every", quick ? 3 : 4, 1, 100000));
     o.plan.minZoneSize = args.number("min-zone", quick ? 3.0 : o.plan.minZoneSize, 1e-3, 1e4);
+    o.minZoneGiven = quick || args.has("min-zone");
     o.plan.pixelsPerDegree = args.number("ppd", o.plan.pixelsPerDegree, 0.01, 1000.0);
     o.bakeResolution = static_cast<int>(args.integer("bake-resolution", quick ? 128 : 512, 16, 16384));
     if (auto list = args.get("alphas")) o.alphasDeg = alphaList(*list);

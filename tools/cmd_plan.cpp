@@ -36,8 +36,9 @@ const char* const kPlanUsage =
     "diagram (--png: one panel per storey with cells, real and virtual walls and zones by kind,\n"
     "axes in metres and a legend, drawn by gnuplot; --png-walls: one small panel per wall with\n"
     "its zones, sampling points and object footprints).\n"
-    "--min-zone: smallest zone width and depth in metres (default 1; nearer the wall than such a\n"
-    "zone can be proven is geometry). --blend: blend strip width in metres (default 0.2).\n"
+    "--min-zone: smallest zone width and depth in metres (default: the scene's \"planning\" minZone,\n"
+    "else 1; nearer the wall than such a zone can be proven is geometry). --blend: blend strip\n"
+    "width in metres (default 0.2).\n"
     "--ppd: texel density target in pixels per degree at each texture's nearest eye (default 10,\n"
     "at most 4096 texels per side), used for the texel and memory estimates.\n"
     "--walls depth: plans depth walls with the depth reprojection's own bound instead of\n"
@@ -85,6 +86,7 @@ int runPlan(const std::vector<std::string>& words) {
     const std::vector<std::filesystem::path> inputs = scenes::sceneInputFiles(path, description);
     for (const auto& [file, flag] : outputs)
         if (file) scenes::checkNotAnInput(*file, flag, inputs);
+    if (!args.has("min-zone")) options = walls::withScenePlanning(options, description);
     const walls::VisibilityTable table = walls::computeVisibility(description);
     const walls::Plan plan = walls::planZones(description, options, walls::wallDepthSpans(scene, description, table));
     for (const std::string& w : scene.warnings) std::cerr << "cavewall: warning: " << w << "\n";

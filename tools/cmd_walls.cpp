@@ -25,7 +25,7 @@ constexpr double kMinSplitMetres = 0.1;  // the smallest chunk --split cuts
 
 const char* const kWallsUsage =
     "usage: cavewall walls MODEL --out SCENE_JSON [--texture-budget MB] [--alpha DEG] [--max-res N]\n"
-    "                      [--ppd N] [--min-cell M] [--max-cells N] [--ms-per-mtri MS]\n"
+    "                      [--ppd N] [--min-zone M] [--min-cell M] [--max-cells N] [--ms-per-mtri MS]\n"
     "                      [--ms-per-wall MS] [--split M] [--rooms] [--keep-paths] [--walk-cost]\n"
     "                      [--plan-limit M] [--png FILE] [--png-walls FILE]\n"
     "\n"
@@ -35,10 +35,11 @@ const char* const kWallsUsage =
     "height, each up to the ceiling above it), the walkable rectangle, and tries every\n"
     "grid of cells at least --min-cell metres wide (default 4, at most --max-cells per axis,\n"
     "default 8; each cut moved to where the fewest objects straddle it). Each grid is planned\n"
-    "with the zone planner at --alpha (default 10 degrees), --ppd (default 10) and --max-res\n"
-    "(default 512 texels per side); the chosen grid has the least expected frame time of a walk\n"
-    "over the floor, --ms-per-mtri per million triangles of the viewer's cell (default 150) plus\n"
-    "--ms-per-wall per wall side the cell shows (default 5), among those whose textures fit\n"
+    "with the zone planner at --alpha (default 10 degrees), --ppd (default 10), --min-zone (metres,\n"
+    "default 1, or the input scene's) and --max-res (default 512 texels per side); the chosen grid\n"
+    "has the least expected frame time of a walk over the floor, --ms-per-mtri per million\n"
+    "triangles of the viewer's cell (default 150) plus --ms-per-wall per wall side the cell shows\n"
+    "(default 5), among those whose textures fit\n"
     "--texture-budget MiB (default 4096; RGBA8 + MIP chain). Writes a valid scene.json (--out;\n"
     "model paths relative to its folder) and a top-view diagram of the proposal's zones\n"
     "(--png: one panel per storey, drawn by gnuplot; --png-walls: one small panel per wall).\n"
@@ -66,6 +67,9 @@ const char* const kWallsUsage =
     "--keep-paths keeps the input scene's walkPath and wallPath instead of the proposal's loop\n"
     "(so that `run` and `bench` walk the same path on both), each point checked to lie in a\n"
     "proposed cell.\n"
+    "--min-zone M is written to the proposal (\"planning\": {\"minZone\": M}) so that `plan`, `bake`,\n"
+    "`run`, `view` and `bench` plan its walls with zones of at least M metres unless given their own\n"
+    "--min-zone: larger zones mean fewer textures and less disk, drawn as geometry nearer more walls.\n"
     "--walk-cost scores every grid by eyes every 0.25 m along the input's walk path (without\n"
     "one, a 0.5 m grid over the floor), each drawing its cell plus every neighbour whose wall's\n"
     "geometry zone or texture->geometry blend strip holds it, as the walkthrough does (the\n"
@@ -145,6 +149,7 @@ walls::AutoWallsOptions autoWallsOptions(const Args& args) {
     walls::AutoWallsOptions options;
     options.plan.alphaDeg = args.number("alpha", options.plan.alphaDeg, 1e-6, 90.0);
     options.plan.pixelsPerDegree = args.number("ppd", options.plan.pixelsPerDegree, 0.01, 1000.0);
+    options.plan.minZoneSize = args.number("min-zone", options.plan.minZoneSize, 0.01, 1000.0);
     options.plan.maxResolution = static_cast<int>(args.integer("max-res", 512, 1, 16384));
     options.textureBudgetMB = args.number("texture-budget", options.textureBudgetMB, 1e-6, 1e9);
     options.minCellSize = args.number("min-cell", options.minCellSize, 0.1, 1e6);
@@ -245,9 +250,10 @@ void writeFigures(const walls::AutoWallsResult& result, const scenes::Scene& sce
 
 int runWalls(const std::vector<std::string>& words) {
     const Args args(words, {"rooms", "keep-paths", "walk-cost"});
-    args.expectFlags({"out", "texture-budget", "alpha", "max-res", "ppd", "min-cell", "max-cells", "ms-per-mtri",
-                      "ms-per-wall", "split", "rooms", "keep-paths", "walk-cost", "plan-limit", "png", "png-walls"});
-    const walls::AutoWallsOptions options = autoWallsOptions(args);
+    args.expectFlags({"out", "texture-budget", "alpha", "max-res", "ppd", "min-zone", "min-cell", "max-cells",
+                      "ms-per-mtri", "ms-per-wall", "split", "rooms", "keep-paths", "walk-cost", "plan-limit", "png",
+                      "png-walls"});
+    walls::AutoWallsOptions options = autoWallsOptions(args);
     const std::string& path = args.positional(0, "MODEL");
     if (args.positional().size() > 1)
         throw Error("walls: expected one MODEL, got " + std::to_string(args.positional().size()) + " words");
@@ -267,6 +273,7 @@ int runWalls(const std::vector<std::string>& words) {
     scenes::SceneDescription base;
     scenes::Scene scene = scenes::loadSceneFile(path, &base);
     walls::checkWallsModel(scene, path);
+    if (!args.has("min-zone")) options.plan = walls::withScenePlanning(options.plan, base);
     const std::vector<std::filesystem::path> inputs = scenes::sceneInputFiles(path, base);
     scenes::checkNotAnInput(out, "--out", inputs);
     if (png) scenes::checkNotAnInput(*png, "--png", inputs);
@@ -278,6 +285,8 @@ int runWalls(const std::vector<std::string>& words) {
     for (const std::string& w : warnings) std::cerr << "cavewall: warning: " << w << "\n";
 
     relocateModels(result, base, out);
+    // The zone size the proposal was planned with, for every command that plans it later.
+    result.description.minZoneSize = args.has("min-zone") ? options.plan.minZoneSize : base.minZoneSize;
     if (args.has("keep-paths")) {
         if (base.walkPath.empty()) throw Error("walls: --keep-paths: expected a walkPath in " + path + ", got none");
         result.description.walkPath = base.walkPath;

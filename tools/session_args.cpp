@@ -71,6 +71,7 @@ void parseDrawing(const Args& args, app::RunOptions& o) {
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.plan.alphaDeg = args.number("alpha", o.plan.alphaDeg, 1e-3, 90.0);
     o.plan.minZoneSize = args.number("min-zone", o.plan.minZoneSize, 1e-3, 1e4);
+    o.minZoneGiven = args.has("min-zone");
     o.plan.pixelsPerDegree = args.number("ppd", o.plan.pixelsPerDegree, 0.01, 1000.0);
     if (auto c = args.path("cache")) o.cache = *c;
     o.textureBudgetMB = args.number("budget", o.textureBudgetMB, 1e-3, 1e6);

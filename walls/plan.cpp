@@ -58,6 +58,16 @@ const char* toString(ZoneKind kind) {
     return "?";
 }
 
+PlanOptions withScenePlanning(PlanOptions options, const scenes::SceneDescription& description) {
+    if (!(description.minZoneSize > 0.0)) return options;
+    if (!(description.minZoneSize > 2 * options.blendWidth))
+        throw Error("scene '" + description.name + "': planning.minZone: expected more than twice the blend width (" +
+                    formatNumber(2 * options.blendWidth) + " m), got " + formatNumber(description.minZoneSize) +
+                    " m (or give --min-zone)");
+    options.minZoneSize = description.minZoneSize;
+    return options;
+}
+
 void validatePlanOptions(const PlanOptions& o) {
     require(o.alphaDeg > 0 && o.alphaDeg <= 90,
             "alpha: expected an angle in (0, 90] degrees, got " + formatNumber(o.alphaDeg));

@@ -71,6 +71,10 @@ struct PlanOptions {
 // Throws cavewall::Error naming the option when it is out of range.
 void validatePlanOptions(const PlanOptions& options);
 
+// `options` with the scene's own planning choice (scene.json "planning", SceneDescription::
+// minZoneSize) where it has one: what a command uses when it is not given --min-zone.
+PlanOptions withScenePlanning(PlanOptions options, const scenes::SceneDescription& description);
+
 enum class ZoneKind { Texture, Blend, Geometry };
 const char* toString(ZoneKind kind);
 

@@ -363,14 +363,22 @@ void summarizeBaker(walls::gl::BackgroundBaker& baker, RunSummary& summary) {
     summary.bakeWarnings = b.warnings;
 }
 
+// `given` with the scene's own zone size (scene.json "planning") unless --min-zone gave one.
+RunOptions withScenePlanning(const RunOptions& given, const scenes::SceneDescription& description) {
+    RunOptions o = given;
+    if (!given.minZoneGiven) o.plan = walls::withScenePlanning(o.plan, description);
+    return o;
+}
+
 }  // namespace
 
-RunSummary runSession(const RunOptions& o) {
+RunSummary runSession(const RunOptions& given) {
     const auto start = std::chrono::steady_clock::now();
-    app::validate(o);
-    const display::Display display(o.display);
+    app::validate(given);
+    const display::Display display(given.display);
     scenes::SceneDescription description;
-    const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description, o.sceneTextures);
+    const scenes::Scene scene = scenes::loadSceneFile(given.scene, &description, given.sceneTextures);
+    const RunOptions o = withScenePlanning(given, description);
     for (const std::string& note : scene.notes) std::cerr << "run: " << note << std::endl;
     app::useRoute(description, o.route, o.scene.string());
     RunSummary summary;

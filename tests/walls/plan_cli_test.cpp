@@ -203,6 +203,53 @@ TEST(WallsCli, ProposesWallsThatPlanAccepts) {
     EXPECT_FALSE(std::filesystem::exists(dir / "auto-proposal" / "bare.json"));
 }
 
+// `walls --min-zone M` plans its candidates with zones of at least M metres and writes M to the
+// proposal ("planning"), so that `plan` without the flag plans the same zones and the flag
+// still wins; a proposal made from that scene keeps its zone size.
+TEST(WallsCli, MinZoneIsWrittenToTheProposalAndPlannedWith) {
+    const auto dir = outputDir();
+    const CliResult gen =
+        runCavewall({"generate", "house", "--out", (dir / "zone-house").string(), "--triangles", "2000"});
+    ASSERT_EQ(gen.exitCode, 0) << gen.err;
+    const auto scene = dir / "zone-house" / "proposal.json";
+    const CliResult r = runCavewall({"walls", (dir / "zone-house").string(), "--out", scene.string(), "--max-cells",
+                                     "3", "--max-res", "64", "--min-cell", "2", "--min-zone", "3"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto planning = [](const std::filesystem::path& file) {
+        std::ifstream in(file);
+        return nlohmann::json::parse(in).value("planning", nlohmann::json());
+    };
+    EXPECT_EQ(planning(scene), nlohmann::json({{"minZone", 3.0}}));
+    // The house's own cells and walls with a zone size of their own.
+    nlohmann::json house;
+    std::ifstream(dir / "zone-house" / "scene.json") >> house;
+    house["planning"] = {{"minZone", 3.0}};
+    const auto zoned = dir / "zone-house" / "zoned.json";
+    std::ofstream(zoned) << house.dump();
+    const CliResult own = runCavewall({"plan", zoned.string()});
+    const CliResult given = runCavewall({"plan", zoned.string(), "--min-zone", "3"});
+    const CliResult smaller = runCavewall({"plan", zoned.string(), "--min-zone", "1"});
+    ASSERT_EQ(own.exitCode, 0) << own.err;
+    ASSERT_EQ(smaller.exitCode, 0) << smaller.err;
+    EXPECT_THAT(own.out, HasSubstr("textures"));
+    EXPECT_EQ(own.out, given.out);
+    EXPECT_NE(own.out, smaller.out);
+    // A zone size the blend strips do not fit is named where it comes from.
+    house["planning"] = {{"minZone", 0.3}};
+    std::ofstream(zoned) << house.dump();
+    const CliResult narrow = runCavewall({"plan", zoned.string()});
+    EXPECT_NE(narrow.exitCode, 0);
+    EXPECT_THAT(narrow.err, HasSubstr("planning.minZone: expected more than twice the blend width (0.4 m), got 0.3 m "
+                                      "(or give --min-zone)"));
+    const auto again = dir / "zone-house" / "again.json";
+    const CliResult k = runCavewall(
+        {"walls", scene.string(), "--out", again.string(), "--max-cells", "3", "--max-res", "64", "--min-cell", "2"});
+    ASSERT_EQ(k.exitCode, 0) << k.err;
+    EXPECT_EQ(planning(again), nlohmann::json({{"minZone", 3.0}}));
+    // Without the flag and without a scene's own, nothing is written (the file's bytes as before).
+    EXPECT_TRUE(planning(dir / "zone-house" / "scene.json").is_null());
+}
+
 // A real model exported as one mesh (SponzaLOD4: 187 k triangles, one object) has nothing a
 // cell could leave out until it is cut into chunks: `walls` cuts it, proposes more than one
 // cell and writes "splitMetres" so that loading the proposal cuts it the same way.

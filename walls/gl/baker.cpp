@@ -573,7 +573,8 @@ BakeResult bakeScene(const BakeRequest& request) {
     scenes::SceneDescription description;
     const scenes::Scene scene = scenes::loadSceneFile(request.scene, &description);
     const walls::PlanOptions plan =
-        walls::planOptionsFor(request.plan, request.settings.kind, request.settings.maxResolution);
+        walls::planOptionsFor(request.minZoneGiven ? request.plan : walls::withScenePlanning(request.plan, description),
+                              request.settings.kind, request.settings.maxResolution);
     return bakeWalls(scene, description, walls::prepareWalls(scene, description, plan), request);
 }
 

@@ -104,6 +104,7 @@ struct BakeTimes {
 struct BakeRequest {
     std::filesystem::path scene;  // scene.json, a folder holding one, or a bare glTF/GLB
     walls::PlanOptions plan;      // bakeScene only (bakeWalls takes the setup's plan)
+    bool minZoneGiven = false;    // bakeScene: plan.minZoneSize, else the scene's own (walls::withScenePlanning)
     BakeSettings settings;
     std::filesystem::path cache;  // empty: defaultCacheFolder()
     // A context to render with (made current before use); null: a headless one is created

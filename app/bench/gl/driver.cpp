@@ -112,7 +112,8 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                 "(scenes/image_error.h), SSIM on luma (11x11 Gaussian window, sigma 1.5), LDR-FLIP at each screen's "
                 "fewest pixels per degree from the frame's head position (display::minPixelsPerDegree, clamped to "
                 "[1, 1000]), popping between consecutive compared frames of each screen (32-pixel tiles)",
-            "walls: plan minZoneSize " + config::formatNumber(o.plan.minZoneSize) + " m, pixelsPerDegree " +
+            "walls: plan minZoneSize " + config::formatNumber(o.plan.minZoneSize) + " m" +
+                (o.minZoneGiven ? "" : " (the scene's planning.minZone, else the default)") + ", pixelsPerDegree " +
                 config::formatNumber(o.plan.pixelsPerDegree) + ", blendWidth " +
                 config::formatNumber(o.plan.blendWidth) + " m; bake maxResolution " + std::to_string(o.bakeResolution) +
                 " texels; textures all resident (warm-up pass, synchronous paging) except in the paged mode",
@@ -153,6 +154,13 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
 }
 
 // The checks that need no file: they fail before anything is loaded.
+// `given` with the scene's own zone size (scene.json "planning") unless --min-zone gave one.
+BenchOptions withScenePlanning(const BenchOptions& given, const scenes::SceneDescription& description) {
+    BenchOptions o = given;
+    if (!given.minZoneGiven) o.plan = walls::withScenePlanning(o.plan, description);
+    return o;
+}
+
 void checkOptions(const BenchOptions& o) {
     if (o.compareEvery < 1)
         throw Error("bench: compareEvery: expected at least 1, got " + std::to_string(o.compareEvery));
@@ -472,12 +480,13 @@ config::DisplayConfig withResolution(config::DisplayConfig display, int pixels) 
     return display;
 }
 
-BenchReport runBenchmark(const BenchOptions& o) {
-    checkOptions(o);
+BenchReport runBenchmark(const BenchOptions& given) {
+    checkOptions(given);
     const auto start = std::chrono::steady_clock::now();
-    const display::Display display(o.display);
+    const display::Display display(given.display);
     scenes::SceneDescription description;
-    const scenes::Scene scene = scenes::loadSceneFile(o.scene, &description);
+    const scenes::Scene scene = scenes::loadSceneFile(given.scene, &description);
+    const BenchOptions o = withScenePlanning(given, description);
     app::useRoute(description, o.route, o.scene.string());
     if (description.walls.empty())
         throw Error(o.scene.string() + ": the scene has no virtual walls (expected at least 1 to bench)");
