@@ -1,3 +1,4 @@
+#include "app/run_options.h"
 #include "tools/args.h"
 #include "tools/commands.h"
 #include "walls/gl/baker.h"
@@ -43,10 +44,10 @@ const char* const kBakeUsage =
     "detail; keys the cache).\n"
     "--limit: render at most N of the textures that need it, every k-th of them (to time a bake on\n"
     "a sample; the manifest then lists only those).\n"
-    "--walls depth: also store per texel the depth behind the wall of the surface seen (a 16-bit\n"
-    "reciprocal code, within 0.9 mm at 10 m, <texture>.depth.tif beside each texture;\n"
-    "walls/depth_file.h), for depth walls reprojected to the eye; a separate bake folder (default\n"
-    "flat: colour only).\n"
+    "--walls depth (the default, as `cavewall run` draws them): also store per texel the depth\n"
+    "behind the wall of the surface seen (a 16-bit reciprocal code, within 0.9 mm at 10 m,\n"
+    "<texture>.depth.tif beside each texture; walls/depth_file.h), for depth walls reprojected to\n"
+    "the eye. --walls flat: colour only, for `run --walls flat`; a separate bake folder.\n"
     "--texture-format: how colour is stored on disk and on the GPU (walls/texture_blocks.h): rgba8,\n"
     "zip-compressed TIFF, 4 bytes per texel on the GPU; bc1 (S3TC DXT1, 0.5 byte per texel, 1-bit\n"
     "alpha) or bc3 (DXT5, 1 byte per texel, 8-bit alpha), deflated S3TC blocks in .bct files, uploaded\n"
@@ -123,7 +124,7 @@ int runBake(const std::vector<std::string>& words) {
     request.settings.maxResolution =
         static_cast<int>(args.integer("max-res", request.settings.maxResolution, 16, 16384));
     request.settings.tileSize = static_cast<int>(args.integer("tile", request.settings.tileSize, 16, 1024));
-    request.settings.kind = args.choice("walls", walls::kWallKindNames, walls::WallKind::Flat);
+    request.settings.kind = args.choice("walls", walls::kWallKindNames, app::RunOptions{}.wallKind);
     request.settings.lodTexels = args.number("lod-texels", request.settings.lodTexels, 0.0, 4.0);
     request.settings.textureFormat =
         args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);

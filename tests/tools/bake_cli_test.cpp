@@ -82,7 +82,11 @@ TEST_F(BakeCli, BakesAGeneratedPlantAndReusesItsCache) {
     // geometry (`cavewall plan` of this scene at these options).
     EXPECT_EQ(manifest.textures.size(), 500u);
     EXPECT_EQ(manifest.alphaDeg, 30.0);
-    for (const walls::BakedTexture& t : manifest.textures) EXPECT_TRUE(walls::textureFileValid(folder, t)) << t.file;
+    // Depth walls by default, the kind `run` draws by default: each texture has its depth file.
+    for (const walls::BakedTexture& t : manifest.textures) {
+        EXPECT_TRUE(walls::textureFileValid(folder, t)) << t.file;
+        EXPECT_FALSE(t.depthFile.empty()) << t.file;
+    }
     EXPECT_THAT(first.out, HasSubstr("bake: 500 textures: 500 baked, 0 reused"));
     // stderr is not a terminal here: plain progress lines, the last one complete.
     EXPECT_THAT(first.err, HasSubstr("bake: 500/500 textures (500 baked, 0 reused)"));
