@@ -153,7 +153,6 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                 : "portal culling: off (--no-portal-culling: neighbours drawn as geometry are drawn whole)"};
 }
 
-// The checks that need no file: they fail before anything is loaded.
 // `given` with the scene's own zone size (scene.json "planning") unless --min-zone gave one.
 BenchOptions withScenePlanning(const BenchOptions& given, const scenes::SceneDescription& description) {
     BenchOptions o = given;
@@ -161,6 +160,7 @@ BenchOptions withScenePlanning(const BenchOptions& given, const scenes::SceneDes
     return o;
 }
 
+// The checks that need no file: they fail before anything is loaded.
 void checkOptions(const BenchOptions& o) {
     if (o.compareEvery < 1)
         throw Error("bench: compareEvery: expected at least 1, got " + std::to_string(o.compareEvery));
