@@ -79,10 +79,14 @@ struct SceneDescription {
     // A second path (same frame) that hugs the virtual walls, within about 0.3 m of them and
     // across their blend strips: where the walls' bound is hardest to keep. Optional.
     std::vector<glm::dvec3> wallPath;
-    // The smallest zone size (metres) the walls of this scene are planned with when a command
-    // is not given --min-zone ("planning": {"minZone": M}, as `cavewall walls --min-zone M`
-    // writes it); 0: not given, the commands' own default (walls/plan.h PlanOptions).
-    double minZoneSize = 0.0;
+    // What the walls of this scene are planned and baked with when a command is not given its
+    // own flag ("planning" in scene.json, as `cavewall walls` writes it for its proposal).
+    // Optional: 0 is "not given", the commands' own defaults.
+    struct Planning {
+        double minZone = 0.0;  // smallest zone size, metres (--min-zone)
+        int maxRes = 0;        // largest baked texture side, texels (--max-res, bench --bake-resolution)
+        bool operator==(const Planning&) const = default;
+    } planning;
 
     bool operator==(const SceneDescription&) const = default;
 };

@@ -16,8 +16,9 @@
 //                                             this size, one object each (scenes/mesh_split.h)
 //   }],
 //   "viewer": {"eyeHeight": 1.7, "headHeightRange": [1.2, 2.0]},   optional, metres
-//   "planning": {"minZone": 2},              optional: the smallest zone size (metres) the walls
-//                                             are planned with unless a command says --min-zone
+//   "planning": {"minZone": 2, "maxRes": 512},   optional: the smallest zone size (metres) and
+//                                             largest baked texture side (texels) the walls are
+//                                             planned and baked with unless a command says otherwise
 //   "cells": [{"name": "A", "floorY": 0, "region": [[x,z], ...]}],  convex floor polygons (x, z);
 //                                             either orientation in the file, stored counter-clockwise
 //   "walls": [{"name": "AB", "kind": "virtual", "cells": ["A", "B"],          kind: virtual|portal
@@ -151,8 +152,9 @@ SceneDescription parseSceneDescription(std::string_view jsonText, const std::str
     for (const JsonNode& m : root.at("models").items(1)) d.models.push_back(parseModel(m));
     if (auto v = root.find("viewer")) parseViewer(*v, d);
     if (auto v = root.find("planning")) {
-        v->expectKeys({"minZone"});
-        d.minZoneSize = v->at("minZone").number(0.01, 1000.0);
+        v->expectKeys({"minZone", "maxRes"});
+        if (auto z = v->find("minZone")) d.planning.minZone = z->number(0.01, 1000.0);
+        if (auto r = v->find("maxRes")) d.planning.maxRes = static_cast<int>(r->integer(16, 16384));
     }
     std::map<std::string, int> cellIndex;
     if (auto v = root.find("cells"))
@@ -259,7 +261,8 @@ std::string writeSceneDescription(const SceneDescription& d) {
     j["name"] = d.name;
     for (const ModelFile& m : d.models) j["models"].push_back(modelJson(m));
     j["viewer"] = {{"eyeHeight", d.eyeHeight}, {"headHeightRange", {d.headHeightRange.x, d.headHeightRange.y}}};
-    if (d.minZoneSize > 0.0) j["planning"] = {{"minZone", d.minZoneSize}};  // optional: others keep their bytes
+    if (d.planning.minZone > 0.0) j["planning"]["minZone"] = d.planning.minZone;  // optional: others keep their bytes
+    if (d.planning.maxRes > 0) j["planning"]["maxRes"] = d.planning.maxRes;
     j["cells"] = nlohmann::json::array();
     for (const Cell& c : d.cells) {
         nlohmann::json region = nlohmann::json::array();

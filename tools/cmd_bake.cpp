@@ -36,8 +36,8 @@ const char* const kBakeUsage =
     "--jobs: threads encoding and writing files (default 1).\n"
     "--draw-threads: GL contexts drawing textures, each on its own thread with its own copy of the\n"
     "scene (default 2, in [1, 8]; the same files whatever the count).\n"
-    "--max-res: largest texture side in texels (default 1024; the plan's density target is\n"
-    "scaled down to fit). --tile: file tile size (default 64). --alpha, --min-zone, --blend, --ppd:\n"
+    "--max-res: largest texture side in texels (default: the scene's \"planning\" maxRes, else 1024;\n"
+    "the plan's density target is scaled down to fit). --tile: file tile size (default 64). --alpha, --min-zone, --blend, --ppd:\n"
     "as for `cavewall plan`.\n"
     "--lod-texels: draw each object at the coarsest level of detail whose sampled geometric error\n"
     "covers at most T texels of the texture seen from its sampling point (default 0.5; 0: full\n"
@@ -123,6 +123,7 @@ int runBake(const std::vector<std::string>& words) {
     request.settings.drawThreads = static_cast<int>(args.integer("draw-threads", 2, 1, 8));
     request.settings.maxResolution =
         static_cast<int>(args.integer("max-res", request.settings.maxResolution, 16, 16384));
+    request.maxResGiven = args.has("max-res");
     request.settings.tileSize = static_cast<int>(args.integer("tile", request.settings.tileSize, 16, 1024));
     request.settings.kind = args.choice("walls", walls::kWallKindNames, app::RunOptions{}.wallKind);
     request.settings.lodTexels = args.number("lod-texels", request.settings.lodTexels, 0.0, 4.0);

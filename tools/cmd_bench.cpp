@@ -126,7 +126,7 @@ const char* const kBenchUsage =
     "         disparity error in arc minutes of the eye's depth against full geometry's, mean\n"
     "         and share beyond 1 arcmin), images compared every 4 frames, min-zone 1 m (or the\n"
     "         scene's \"planning\" minZone), 10 pixels per degree, bake textures at most 512\n"
-    "         texels. --quick: 24 frames at 128 pixels (unless --resolution says otherwise),\n"
+    "         texels (--bake-resolution, or the scene's \"planning\" maxRes). --quick: 24 frames at 128 pixels (unless --resolution says otherwise),\n"
     "         compared every 3, min-zone 3 m, bakes at most 128 texels. The resolution is printed with every figure.\n"
     "\n"
     "--scale LIST  frame time, resident geometry and time to the first frame against the model's\n"
@@ -286,6 +286,7 @@ int runSceneBench(const Args& args) {
     o.minZoneGiven = quick || args.has("min-zone");
     o.plan.pixelsPerDegree = args.number("ppd", o.plan.pixelsPerDegree, 0.01, 1000.0);
     o.bakeResolution = static_cast<int>(args.integer("bake-resolution", quick ? 128 : 512, 16, 16384));
+    o.bakeResolutionGiven = quick || args.has("bake-resolution");
     if (auto list = args.get("alphas")) o.alphasDeg = alphaList(*list);
     o.transitionAlphaDeg = args.number("warp-alpha", o.transitionAlphaDeg, 0.1, 89.0);
     o.lodPixels = args.number("lod", o.lodPixels, 0.0, 1e4);

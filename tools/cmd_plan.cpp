@@ -87,6 +87,7 @@ int runPlan(const std::vector<std::string>& words) {
     for (const auto& [file, flag] : outputs)
         if (file) scenes::checkNotAnInput(*file, flag, inputs);
     if (!args.has("min-zone")) options = walls::withScenePlanning(options, description);
+    options.maxResolution = walls::sceneBakeResolution(options.maxResolution, description);
     const walls::VisibilityTable table = walls::computeVisibility(description);
     const walls::Plan plan = walls::planZones(description, options, walls::wallDepthSpans(scene, description, table));
     for (const std::string& w : scene.warnings) std::cerr << "cavewall: warning: " << w << "\n";

@@ -36,10 +36,10 @@ const char* const kWallsUsage =
     "grid of cells at least --min-cell metres wide (default 4, at most --max-cells per axis,\n"
     "default 8; each cut moved to where the fewest objects straddle it). Each grid is planned\n"
     "with the zone planner at --alpha (default 10 degrees), --ppd (default 10), --min-zone (metres,\n"
-    "default 1, or the input scene's) and --max-res (default 512 texels per side); the chosen grid\n"
-    "has the least expected frame time of a walk over the floor, --ms-per-mtri per million\n"
-    "triangles of the viewer's cell (default 150) plus --ms-per-wall per wall side the cell shows\n"
-    "(default 5), among those whose textures fit\n"
+    "default 1, or the input scene's) and --max-res (default 512 texels per side, or the input\n"
+    "scene's); the chosen grid has the least expected frame time of a walk over the floor,\n"
+    "--ms-per-mtri per million triangles of the viewer's cell (default 150) plus --ms-per-wall\n"
+    "per wall side the cell shows (default 5), among those whose textures fit\n"
     "--texture-budget MiB (default 4096; RGBA8 + MIP chain). Writes a valid scene.json (--out;\n"
     "model paths relative to its folder) and a top-view diagram of the proposal's zones\n"
     "(--png: one panel per storey, drawn by gnuplot; --png-walls: one small panel per wall).\n"
@@ -67,9 +67,10 @@ const char* const kWallsUsage =
     "--keep-paths keeps the input scene's walkPath and wallPath instead of the proposal's loop\n"
     "(so that `run` and `bench` walk the same path on both), each point checked to lie in a\n"
     "proposed cell.\n"
-    "--min-zone M is written to the proposal (\"planning\": {\"minZone\": M}) so that `plan`, `bake`,\n"
-    "`run`, `view` and `bench` plan its walls with zones of at least M metres unless given their own\n"
-    "--min-zone: larger zones mean fewer textures and less disk, drawn as geometry nearer more walls.\n"
+    "The proposal records what it was planned with (\"planning\": {\"minZone\": M, \"maxRes\": N}), so\n"
+    "that `plan`, `bake`, `run`, `view` and `bench` plan and bake its walls the same way unless\n"
+    "given their own --min-zone or --max-res (bench: --bake-resolution). Larger zones mean fewer\n"
+    "textures and less disk, drawn as geometry nearer more walls.\n"
     "--walk-cost scores every grid by eyes every 0.25 m along the input's walk path (without\n"
     "one, a 0.5 m grid over the floor), each drawing its cell plus every neighbour whose wall's\n"
     "geometry zone or texture->geometry blend strip holds it, as the walkthrough does (the\n"
@@ -150,7 +151,7 @@ walls::AutoWallsOptions autoWallsOptions(const Args& args) {
     options.plan.alphaDeg = args.number("alpha", options.plan.alphaDeg, 1e-6, 90.0);
     options.plan.pixelsPerDegree = args.number("ppd", options.plan.pixelsPerDegree, 0.01, 1000.0);
     options.plan.minZoneSize = args.number("min-zone", options.plan.minZoneSize, 0.01, 1000.0);
-    options.plan.maxResolution = static_cast<int>(args.integer("max-res", 512, 1, 16384));
+    options.plan.maxResolution = static_cast<int>(args.integer("max-res", 512, 16, 16384));
     options.textureBudgetMB = args.number("texture-budget", options.textureBudgetMB, 1e-6, 1e9);
     options.minCellSize = args.number("min-cell", options.minCellSize, 0.1, 1e6);
     options.maxCellsPerAxis = static_cast<int>(args.integer("max-cells", options.maxCellsPerAxis, 1, 26));
@@ -274,6 +275,8 @@ int runWalls(const std::vector<std::string>& words) {
     scenes::Scene scene = scenes::loadSceneFile(path, &base);
     walls::checkWallsModel(scene, path);
     if (!args.has("min-zone")) options.plan = walls::withScenePlanning(options.plan, base);
+    if (!args.has("max-res"))
+        options.plan.maxResolution = walls::sceneBakeResolution(options.plan.maxResolution, base);
     const std::vector<std::filesystem::path> inputs = scenes::sceneInputFiles(path, base);
     scenes::checkNotAnInput(out, "--out", inputs);
     if (png) scenes::checkNotAnInput(*png, "--png", inputs);
@@ -285,8 +288,8 @@ int runWalls(const std::vector<std::string>& words) {
     for (const std::string& w : warnings) std::cerr << "cavewall: warning: " << w << "\n";
 
     relocateModels(result, base, out);
-    // The zone size the proposal was planned with, for every command that plans it later.
-    result.description.minZoneSize = args.has("min-zone") ? options.plan.minZoneSize : base.minZoneSize;
+    // What the proposal was planned with, for every command that plans or bakes it later.
+    result.description.planning = {options.plan.minZoneSize, options.plan.maxResolution};
     if (args.has("keep-paths")) {
         if (base.walkPath.empty()) throw Error("walls: --keep-paths: expected a walkPath in " + path + ", got none");
         result.description.walkPath = base.walkPath;

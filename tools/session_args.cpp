@@ -77,6 +77,7 @@ void parseDrawing(const Args& args, app::RunOptions& o) {
     o.textureBudgetMB = args.number("budget", o.textureBudgetMB, 1e-3, 1e6);
     o.geometryBudgetMB = args.number("geometry-budget", 0.0, 0.0, 1e6);
     o.bakeResolution = static_cast<int>(args.integer("max-res", o.bakeResolution, 16, 16384));
+    o.maxResGiven = args.has("max-res");
     o.synchronousPaging = args.has("sync-paging");
     o.lodPixels = args.number("lod", o.lodPixels, 0.0, 1e4);
     o.triangleBudget = static_cast<std::size_t>(args.integer("triangle-budget", 0, 0, 1000000000));

@@ -59,13 +59,17 @@ const char* toString(ZoneKind kind) {
 }
 
 PlanOptions withScenePlanning(PlanOptions options, const scenes::SceneDescription& description) {
-    if (!(description.minZoneSize > 0.0)) return options;
-    if (!(description.minZoneSize > 2 * options.blendWidth))
+    const double zone = description.planning.minZone;
+    if (!(zone > 0.0)) return options;
+    if (!(zone > 2 * options.blendWidth))
         throw Error("scene '" + description.name + "': planning.minZone: expected more than twice the blend width (" +
-                    formatNumber(2 * options.blendWidth) + " m), got " + formatNumber(description.minZoneSize) +
-                    " m (or give --min-zone)");
-    options.minZoneSize = description.minZoneSize;
+                    formatNumber(2 * options.blendWidth) + " m), got " + formatNumber(zone) + " m (or give --min-zone)");
+    options.minZoneSize = zone;
     return options;
+}
+
+int sceneBakeResolution(int resolution, const scenes::SceneDescription& description) {
+    return description.planning.maxRes > 0 ? description.planning.maxRes : resolution;
 }
 
 void validatePlanOptions(const PlanOptions& o) {

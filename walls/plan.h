@@ -71,9 +71,13 @@ struct PlanOptions {
 // Throws cavewall::Error naming the option when it is out of range.
 void validatePlanOptions(const PlanOptions& options);
 
-// `options` with the scene's own planning choice (scene.json "planning", SceneDescription::
-// minZoneSize) where it has one: what a command uses when it is not given --min-zone.
+// `options` with the scene's own zone size (scene.json "planning": minZone) where it has one:
+// what a command uses when it is not given --min-zone.
 PlanOptions withScenePlanning(PlanOptions options, const scenes::SceneDescription& description);
+
+// The scene's own largest baked texture side (scene.json "planning": maxRes) where it has one,
+// else `resolution`: what a command bakes at when it is not given its resolution flag.
+int sceneBakeResolution(int resolution, const scenes::SceneDescription& description);
 
 enum class ZoneKind { Texture, Blend, Geometry };
 const char* toString(ZoneKind kind);

@@ -363,10 +363,12 @@ void summarizeBaker(walls::gl::BackgroundBaker& baker, RunSummary& summary) {
     summary.bakeWarnings = b.warnings;
 }
 
-// `given` with the scene's own zone size (scene.json "planning") unless --min-zone gave one.
+// `given` with the scene's own zone size and bake resolution (scene.json "planning") unless
+// --min-zone or --max-res gave them.
 RunOptions withScenePlanning(const RunOptions& given, const scenes::SceneDescription& description) {
     RunOptions o = given;
     if (!given.minZoneGiven) o.plan = walls::withScenePlanning(o.plan, description);
+    if (!given.maxResGiven) o.bakeResolution = walls::sceneBakeResolution(o.bakeResolution, description);
     return o;
 }
 

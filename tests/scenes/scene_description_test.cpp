@@ -40,7 +40,7 @@ SceneDescription load(const std::string& text) {
 
 TEST(SceneDescription, ParsesEveryFieldAndRoundTrips) {
     const SceneDescription d = load(scene(R"(, "name": "two", "viewer": {"eyeHeight": 1.6, "headHeightRange": [1, 2.2]},
-        "planning": {"minZone": 2.5},
+        "planning": {"minZone": 2.5, "maxRes": 256},
         "realWalls": [{"name": "north", "lowerLeft": [-4, 0, -2], "lowerRight": [4, 0, -2], "upperLeft": [-4, 3, -2]}],
         "walkPath": [[-2, 1.6, 0], [2, 1.6, 0], [2, 1.6, 1]], "walkBreaks": [2],
         "wallPath": [[-0.3, 1.6, 1], [0.3, 1.6, 1], [0.3, 1.6, -1]])"));
@@ -54,7 +54,7 @@ TEST(SceneDescription, ParsesEveryFieldAndRoundTrips) {
     EXPECT_EQ(d.walkPath.size(), 3u);
     EXPECT_EQ(d.walkBreaks, std::vector<int>{2});
     EXPECT_EQ(d.wallPath.size(), 3u);
-    EXPECT_EQ(d.minZoneSize, 2.5);
+    EXPECT_EQ(d.planning, (SceneDescription::Planning{2.5, 256}));
     // The file lists A clockwise seen from above; it is stored counter-clockwise (positive area).
     EXPECT_EQ(regionArea(d.cells[0].region), 16.0);
     const SceneDescription again = parseSceneDescription(writeSceneDescription(d), "again.json", d.folder);
@@ -113,7 +113,10 @@ TEST(SceneDescription, EveryRuleHasItsMessage) {
         {"unknown key", scene(R"(, "walkpath": [])"), "scene.json: unknown key 'walkpath'"},
         {"unknown wall key", scene("", R"({"name": "x", "cell": []})"), "scene.json: walls[0]: unknown key 'cell'"},
         {"unknown planning key", scene(R"(, "planning": {"alpha": 5})"), "scene.json: planning: unknown key 'alpha'"},
-        {"zone size out of range", scene(R"(, "planning": {"minZone": 0})"), "scene.json: planning.minZone: expected a number in [0.01, 1000], got 0"},
+        {"texture side out of range", scene(R"(, "planning": {"maxRes": 8})"),
+         "scene.json: planning.maxRes: expected an integer in [16, 16384], got 8"},
+        {"zone size out of range", scene(R"(, "planning": {"minZone": 0})"),
+         "scene.json: planning.minZone: expected a number in [0.01, 1000], got 0"},
         {"no models", R"({"models": []})", "scene.json: models: expected an array of at least 1 elements, got 0"},
         {"missing file", R"({"models": [{"file": "nope.glb"}]})",
          "scene.json: models[0].file: 'nope.glb' does not exist"},

@@ -129,15 +129,16 @@ TEST_F(BakeCli, BakesAGeneratedPlantAndReusesItsCache) {
     EXPECT_THAT(fourth.err, HasSubstr((folder / manifest.textures[21].file).string() + ": "));
 }
 
-// A scene with a zone size of its own ("planning": {"minZone"}) is baked with it: the same
-// plan as --min-zone with that size, where the default (1 m) plans more textures.
+// A scene with a zone size and texture side of its own ("planning") is baked with them: the
+// same plan as --min-zone with that size, where the default (1 m) plans more textures, and
+// textures no larger than its side.
 TEST_F(BakeCli, PlansWithTheScenesOwnZoneSize) {
     const std::filesystem::path out = testing::testOutputFolder("bake-cli-zone");
     const std::vector<std::string> given = plantBake(out, {"--max-res", "16", "--limit", "1"});
     ASSERT_FALSE(given.empty());
     nlohmann::json plant;
     std::ifstream(out / "plant" / "scene.json") >> plant;
-    plant["planning"] = {{"minZone", 5.0}};
+    plant["planning"] = {{"minZone", 5.0}, {"maxRes", 16}};
     std::ofstream(out / "plant" / "zoned.json") << plant.dump();
     // The plan's textures, from the first progress line ("bake: 0/N textures"; --limit 1 bakes one).
     auto textures = [](const CliResult& r) {
@@ -145,15 +146,17 @@ TEST_F(BakeCli, PlansWithTheScenesOwnZoneSize) {
         const std::size_t at = r.err.find("bake: 0/");
         return at == std::string::npos ? -1 : std::stoi(r.err.substr(at + 8));
     };
-    const std::vector<std::string> common{
-        "--cache", (out / "cache").string(), "--alpha", "30", "--max-res", "16", "--limit", "1"};
+    const std::vector<std::string> common{"--cache", (out / "cache").string(), "--alpha", "30", "--limit", "1"};
     std::vector<std::string> own{"bake", (out / "plant" / "zoned.json").string()},
-        bare{"bake", (out / "plant").string()};
+        bare{"bake", (out / "plant").string(), "--max-res", "16"};
     own.insert(own.end(), common.begin(), common.end());
     bare.insert(bare.end(), common.begin(), common.end());
     const int withFlag = textures(runCavewall(given));
     EXPECT_GT(withFlag, 0);
-    EXPECT_EQ(textures(runCavewall(own)), withFlag);
+    const CliResult ownBake = runCavewall(own);
+    EXPECT_EQ(textures(ownBake), withFlag);
+    for (const walls::BakedTexture& t : walls::readManifest(lastLine(ownBake.out)).textures)
+        EXPECT_LE(std::max(t.resolution.x, t.resolution.y), 16) << t.file;
     EXPECT_GT(textures(runCavewall(bare)), withFlag);
 }
 

@@ -203,10 +203,10 @@ TEST(WallsCli, ProposesWallsThatPlanAccepts) {
     EXPECT_FALSE(std::filesystem::exists(dir / "auto-proposal" / "bare.json"));
 }
 
-// `walls --min-zone M` plans its candidates with zones of at least M metres and writes M to the
-// proposal ("planning"), so that `plan` without the flag plans the same zones and the flag
-// still wins; a proposal made from that scene keeps its zone size.
-TEST(WallsCli, MinZoneIsWrittenToTheProposalAndPlannedWith) {
+// `walls` writes what it planned the proposal with ("planning": --min-zone and --max-res), so
+// that `plan` without the flags plans the same zones and textures, and a flag still wins; a
+// proposal made from that scene keeps them.
+TEST(WallsCli, ThePlanningOptionsAreWrittenToTheProposalAndPlannedWith) {
     const auto dir = outputDir();
     const CliResult gen =
         runCavewall({"generate", "house", "--out", (dir / "zone-house").string(), "--triangles", "2000"});
@@ -219,11 +219,11 @@ TEST(WallsCli, MinZoneIsWrittenToTheProposalAndPlannedWith) {
         std::ifstream in(file);
         return nlohmann::json::parse(in).value("planning", nlohmann::json());
     };
-    EXPECT_EQ(planning(scene), nlohmann::json({{"minZone", 3.0}}));
+    EXPECT_EQ(planning(scene), nlohmann::json({{"minZone", 3.0}, {"maxRes", 64}}));
     // The house's own cells and walls with a zone size of their own.
     nlohmann::json house;
     std::ifstream(dir / "zone-house" / "scene.json") >> house;
-    house["planning"] = {{"minZone", 3.0}};
+    house["planning"] = {{"minZone", 3.0}, {"maxRes", 64}};
     const auto zoned = dir / "zone-house" / "zoned.json";
     std::ofstream(zoned) << house.dump();
     const CliResult own = runCavewall({"plan", zoned.string()});
@@ -231,7 +231,7 @@ TEST(WallsCli, MinZoneIsWrittenToTheProposalAndPlannedWith) {
     const CliResult smaller = runCavewall({"plan", zoned.string(), "--min-zone", "1"});
     ASSERT_EQ(own.exitCode, 0) << own.err;
     ASSERT_EQ(smaller.exitCode, 0) << smaller.err;
-    EXPECT_THAT(own.out, HasSubstr("textures"));
+    EXPECT_THAT(own.out, HasSubstr("capped at 64 texels per side"));
     EXPECT_EQ(own.out, given.out);
     EXPECT_NE(own.out, smaller.out);
     // A zone size the blend strips do not fit is named where it comes from.
@@ -242,11 +242,11 @@ TEST(WallsCli, MinZoneIsWrittenToTheProposalAndPlannedWith) {
     EXPECT_THAT(narrow.err, HasSubstr("planning.minZone: expected more than twice the blend width (0.4 m), got 0.3 m "
                                       "(or give --min-zone)"));
     const auto again = dir / "zone-house" / "again.json";
-    const CliResult k = runCavewall(
-        {"walls", scene.string(), "--out", again.string(), "--max-cells", "3", "--max-res", "64", "--min-cell", "2"});
+    const CliResult k =
+        runCavewall({"walls", scene.string(), "--out", again.string(), "--max-cells", "3", "--min-cell", "2"});
     ASSERT_EQ(k.exitCode, 0) << k.err;
-    EXPECT_EQ(planning(again), nlohmann::json({{"minZone", 3.0}}));
-    // Without the flag and without a scene's own, nothing is written (the file's bytes as before).
+    EXPECT_EQ(planning(again), nlohmann::json({{"minZone", 3.0}, {"maxRes", 64}}));
+    // A scene not written by `walls` has none: the commands' own defaults.
     EXPECT_TRUE(planning(dir / "zone-house" / "scene.json").is_null());
 }
 

@@ -568,13 +568,16 @@ std::vector<int> TextureBaker::forget(const std::vector<int>& ids) { return _sta
 void TextureBaker::endRendering() { _state->bake.endRendering(); }
 void TextureBaker::writeManifest() { _state->bake.flushManifest(); }
 
-BakeResult bakeScene(const BakeRequest& request) {
-    validateBakeSettings(request.settings);
+BakeResult bakeScene(const BakeRequest& given) {
+    validateBakeSettings(given.settings);
     scenes::SceneDescription description;
-    const scenes::Scene scene = scenes::loadSceneFile(request.scene, &description);
+    const scenes::Scene scene = scenes::loadSceneFile(given.scene, &description);
+    BakeRequest request = given;  // with the scene's own planning where the command gave none
+    if (!given.minZoneGiven) request.plan = walls::withScenePlanning(request.plan, description);
+    if (!given.maxResGiven)
+        request.settings.maxResolution = walls::sceneBakeResolution(request.settings.maxResolution, description);
     const walls::PlanOptions plan =
-        walls::planOptionsFor(request.minZoneGiven ? request.plan : walls::withScenePlanning(request.plan, description),
-                              request.settings.kind, request.settings.maxResolution);
+        walls::planOptionsFor(request.plan, request.settings.kind, request.settings.maxResolution);
     return bakeWalls(scene, description, walls::prepareWalls(scene, description, plan), request);
 }
 

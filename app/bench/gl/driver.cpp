@@ -153,10 +153,12 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                 : "portal culling: off (--no-portal-culling: neighbours drawn as geometry are drawn whole)"};
 }
 
-// `given` with the scene's own zone size (scene.json "planning") unless --min-zone gave one.
+// `given` with the scene's own zone size and bake resolution (scene.json "planning") unless
+// --min-zone or --bake-resolution gave them.
 BenchOptions withScenePlanning(const BenchOptions& given, const scenes::SceneDescription& description) {
     BenchOptions o = given;
     if (!given.minZoneGiven) o.plan = walls::withScenePlanning(o.plan, description);
+    if (!given.bakeResolutionGiven) o.bakeResolution = walls::sceneBakeResolution(o.bakeResolution, description);
     return o;
 }
 

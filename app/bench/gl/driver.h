@@ -72,6 +72,7 @@ struct BenchOptions {
     walls::PlanOptions plan;                           // alphaDeg replaced per mode
     bool minZoneGiven = false;                         // else the scene's own (walls::withScenePlanning)
     int bakeResolution = 512;                          // BakeSettings::maxResolution
+    bool bakeResolutionGiven = false;                  // else the scene's own (walls::sceneBakeResolution)
     double lodPixels = 1.0;                            // level-of-detail modes' tolerance; 0: none
     std::size_t triangleBudget = 0;                    // the budget mode's; 0: the median of its mode
                                                        // without a budget
