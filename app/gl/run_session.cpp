@@ -1,5 +1,6 @@
 #include "app/gl/run_session.h"
 
+#include "config/json_reader.h"
 #include "display/display.h"
 #include "display/frame_budget.h"
 #include "display/gl/context.h"
@@ -51,6 +52,12 @@ walls::gl::BakeRequest bakeRequest(const RunOptions& o, display::gl::Context* co
     return request;
 }
 
+// What the walls were planned and baked with, for the "walls:" line.
+std::string planningNote(const RunOptions& o) {
+    return "; zones of at least " + config::formatNumber(o.plan.minZoneSize) + " m, textures of at most " +
+           std::to_string(o.bakeResolution) + " texels (--min-zone, --max-res, else the scene's \"planning\")";
+}
+
 // --bake-on-demand: plans the walls and takes what the cache holds; the baker bakes the rest in
 // the background with a context of its own.
 walls::WallSetup prepareWallsOnDemand(const RunOptions& o, const scenes::Scene& scene,
@@ -67,7 +74,7 @@ walls::WallSetup prepareWallsOnDemand(const RunOptions& o, const scenes::Scene& 
     if (o.verbose)
         std::cout << "walls: " << setup.plan.textures.size() << " textures in " << setup.folder.string() << " ("
                   << setup.manifest.textures.size() << " in the cache, " << baker->stats().missingAtStart
-                  << " to bake while walking)\n";
+                  << " to bake while walking)" << planningNote(o) << "\n";
     return setup;
 }
 
@@ -112,7 +119,7 @@ walls::WallSetup prepareWalls(const RunOptions& o, const scenes::Scene& scene, c
     if (o.verbose)
         std::cout << "walls: " << setup.plan.textures.size() << " textures in " << setup.folder.string() << " ("
                   << baked.baked << " baked now, " << baked.reused << " reused"
-                  << (baked.stopped ? "; stopped before the rest" : "") << ")\n";
+                  << (baked.stopped ? "; stopped before the rest" : "") << ")" << planningNote(o) << "\n";
     return setup;
 }
 

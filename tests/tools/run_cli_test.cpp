@@ -10,6 +10,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -90,6 +91,34 @@ TEST(RunCli, BakeOnDemandStartsColdAndLeavesItsBakesInTheCache) {
     std::smatch m2;
     ASSERT_TRUE(std::regex_search(second.out, m2, line)) << second.out;
     EXPECT_EQ(std::stoi(m2[1]), missing - baked);  // everything the first run baked is in the cache
+}
+
+// A scene's own "planning" (as `cavewall walls` writes it) sets the zone size and the texture
+// side when the run gives no --min-zone or --max-res; the flags still win. The "walls:" line
+// says what the walls were planned and baked with.
+TEST(RunCli, PlansWithTheScenesOwnZoneSizeAndTextureSide) {
+    const fs::path out = outputDir("scene-planning"), cache = outputDir("scene-planning-cache");
+    nlohmann::json plant;
+    std::ifstream(smallPlant()) >> plant;
+    plant["planning"] = {{"minZone", 3.0}, {"maxRes", 64}};
+    const fs::path planned = smallPlant().parent_path() / "planned.json";
+    std::ofstream(planned) << plant.dump();
+    auto run = [&](const std::vector<std::string>& flags) {
+        std::vector<std::string> args = wallRun(out, "sim:walk?seed=2", 1);
+        const auto at = [&](const char* flag) { return std::find(args.begin(), args.end(), flag) - args.begin(); };
+        args[at("--scene") + 1] = planned.string();
+        args[at("--cache") + 1] = cache.string();
+        args.erase(args.begin() + at("--min-zone"), args.begin() + at("--min-zone") + 2);  // wallRun's own
+        args.push_back("--bake-on-demand");
+        args.insert(args.end(), flags.begin(), flags.end());
+        return runCavewall(args);
+    };
+    const CliResult own = run({});
+    ASSERT_EQ(own.exitCode, 0) << own.err;
+    EXPECT_THAT(own.out, HasSubstr("to bake while walking); zones of at least 3 m, textures of at most 64 texels"));
+    const CliResult given = run({"--min-zone", "4", "--max-res", "32"});
+    ASSERT_EQ(given.exitCode, 0) << given.err;
+    EXPECT_THAT(given.out, HasSubstr("; zones of at least 4 m, textures of at most 32 texels"));
 }
 
 TEST(RunCli, BakeOnDemandRefusesBadCombinations) {

@@ -116,7 +116,8 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                 (o.minZoneGiven ? "" : " (the scene's planning.minZone, else the default)") + ", pixelsPerDegree " +
                 config::formatNumber(o.plan.pixelsPerDegree) + ", blendWidth " +
                 config::formatNumber(o.plan.blendWidth) + " m; bake maxResolution " + std::to_string(o.bakeResolution) +
-                " texels; textures all resident (warm-up pass, synchronous paging) except in the paged mode",
+                " texels" + (o.bakeResolutionGiven ? "" : " (the scene's planning.maxRes, else the default)") +
+                "; textures all resident (warm-up pass, synchronous paging) except in the paged mode",
             "machine: " + context.info().renderer + ", " + std::to_string(std::thread::hardware_concurrency()) +
                 " hardware threads",
             "transitions: blend at every alpha; warp (structure behind textured walls warped into the texture's "
