@@ -311,7 +311,10 @@ int runWalls(const std::vector<std::string>& words) {
     std::size_t portals = 0;
     for (const scenes::VirtualWall& w : result.description.walls) portals += w.kind == scenes::WallKind::Portal;
     std::cout << "wrote " << out.string() << " (" << result.description.cells.size() << " cells, "
-              << result.description.walls.size() - portals << " virtual walls, " << portals << " portals)\n";
+              << result.description.walls.size() - portals << " virtual walls, " << portals
+              << " portals), planned with zones of at least " << config::formatNumber(result.description.planning.minZone)
+              << " m and textures of at most " << result.description.planning.maxRes
+              << " texels (its \"planning\", which plan, bake, run, view and bench follow)\n";
     const std::string direct =
         walls::describeDirectGroups(walls::computeVisibility(result.description), result.description);
     if (!direct.empty()) std::cout << direct << "\n";

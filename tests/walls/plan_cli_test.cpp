@@ -220,6 +220,7 @@ TEST(WallsCli, ThePlanningOptionsAreWrittenToTheProposalAndPlannedWith) {
         return nlohmann::json::parse(in).value("planning", nlohmann::json());
     };
     EXPECT_EQ(planning(scene), nlohmann::json({{"minZone", 3.0}, {"maxRes", 64}}));
+    EXPECT_THAT(r.out, HasSubstr("planned with zones of at least 3 m and textures of at most 64 texels"));
     // The house's own cells and walls with a zone size of their own.
     nlohmann::json house;
     std::ifstream(dir / "zone-house" / "scene.json") >> house;
