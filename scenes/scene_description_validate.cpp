@@ -178,7 +178,8 @@ void validateSceneDescription(const SceneDescription& d, const std::string& sour
         c.fail("viewer.eyeHeight", "expected a positive height, got " + formatNumber(d.eyeHeight));
     if (!(d.headHeightRange.x < d.headHeightRange.y)) c.fail("viewer.headHeightRange", "expected low < high");
     if (!(d.planning.minZone == 0.0 || (d.planning.minZone >= 0.01 && d.planning.minZone <= 1000.0)))
-        c.fail("planning.minZone", "expected a zone size in [0.01, 1000] metres, got " + formatNumber(d.planning.minZone));
+        c.fail("planning.minZone",
+               "expected a zone size in [0.01, 1000] metres, got " + formatNumber(d.planning.minZone));
     if (!(d.planning.maxRes == 0 || (d.planning.maxRes >= 16 && d.planning.maxRes <= 16384)))
         c.fail("planning.maxRes",
                "expected a texture side in [16, 16384] texels, got " + std::to_string(d.planning.maxRes));

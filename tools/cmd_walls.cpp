@@ -275,8 +275,7 @@ int runWalls(const std::vector<std::string>& words) {
     scenes::Scene scene = scenes::loadSceneFile(path, &base);
     walls::checkWallsModel(scene, path);
     if (!args.has("min-zone")) options.plan = walls::withScenePlanning(options.plan, base);
-    if (!args.has("max-res"))
-        options.plan.maxResolution = walls::sceneBakeResolution(options.plan.maxResolution, base);
+    if (!args.has("max-res")) options.plan.maxResolution = walls::sceneBakeResolution(options.plan.maxResolution, base);
     const std::vector<std::filesystem::path> inputs = scenes::sceneInputFiles(path, base);
     scenes::checkNotAnInput(out, "--out", inputs);
     if (png) scenes::checkNotAnInput(*png, "--png", inputs);
@@ -312,8 +311,9 @@ int runWalls(const std::vector<std::string>& words) {
     for (const scenes::VirtualWall& w : result.description.walls) portals += w.kind == scenes::WallKind::Portal;
     std::cout << "wrote " << out.string() << " (" << result.description.cells.size() << " cells, "
               << result.description.walls.size() - portals << " virtual walls, " << portals
-              << " portals), planned with zones of at least " << config::formatNumber(result.description.planning.minZone)
-              << " m and textures of at most " << result.description.planning.maxRes
+              << " portals), planned with zones of at least "
+              << config::formatNumber(result.description.planning.minZone) << " m and textures of at most "
+              << result.description.planning.maxRes
               << " texels (its \"planning\", which plan, bake, run, view and bench follow)\n";
     const std::string direct =
         walls::describeDirectGroups(walls::computeVisibility(result.description), result.description);

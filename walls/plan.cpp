@@ -63,7 +63,8 @@ PlanOptions withScenePlanning(PlanOptions options, const scenes::SceneDescriptio
     if (!(zone > 0.0)) return options;
     if (!(zone > 2 * options.blendWidth))
         throw Error("scene '" + description.name + "': planning.minZone: expected more than twice the blend width (" +
-                    formatNumber(2 * options.blendWidth) + " m), got " + formatNumber(zone) + " m (or give --min-zone)");
+                    formatNumber(2 * options.blendWidth) + " m), got " + formatNumber(zone) +
+                    " m (or give --min-zone)");
     options.minZoneSize = zone;
     return options;
 }
