@@ -93,8 +93,8 @@ struct RunOptions {
                                // the demo's)
     walls::PlanOptions plan;   // alpha etc. for planning and baking
     // --min-zone and --max-res given (plan.minZoneSize, bakeResolution); else the scene's own
-    // (walls::withScenePlanning, walls::sceneBakeResolution)
-    bool minZoneGiven = false, maxResGiven = false;
+    // (walls::useScenePlanning)
+    walls::PlanningFlags planningGiven;
     // --walls depth|flat (walls/depth_wall.h); depth: the bench's recommended walls mode on the
     // plant (docs/benchmarking.md, "The recommended walls mode")
     walls::WallKind wallKind = walls::WallKind::Depth;

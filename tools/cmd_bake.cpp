@@ -115,7 +115,7 @@ int runBake(const std::vector<std::string>& words) {
     walls::gl::BakeRequest request;
     request.plan.alphaDeg = args.number("alpha", request.plan.alphaDeg, 1e-6, 90.0);
     request.plan.minZoneSize = args.number("min-zone", request.plan.minZoneSize, 0.01, 1000.0);
-    request.minZoneGiven = args.has("min-zone");
+    request.planningGiven.minZone = args.has("min-zone");
     request.plan.blendWidth = args.number("blend", request.plan.blendWidth, 0.0, 100.0);
     request.plan.pixelsPerDegree = args.number("ppd", request.plan.pixelsPerDegree, 0.01, 1000.0);
     walls::validatePlanOptions(request.plan);
@@ -123,7 +123,7 @@ int runBake(const std::vector<std::string>& words) {
     request.settings.drawThreads = static_cast<int>(args.integer("draw-threads", 2, 1, 8));
     request.settings.maxResolution =
         static_cast<int>(args.integer("max-res", request.settings.maxResolution, 16, 16384));
-    request.maxResGiven = args.has("max-res");
+    request.planningGiven.maxRes = args.has("max-res");
     request.settings.tileSize = static_cast<int>(args.integer("tile", request.settings.tileSize, 16, 1024));
     request.settings.kind = args.choice("walls", walls::kWallKindNames, app::RunOptions{}.wallKind);
     request.settings.lodTexels = args.number("lod-texels", request.settings.lodTexels, 0.0, 4.0);

@@ -284,10 +284,10 @@ int runSceneBench(const Args& args) {
     o.frames = args.integer("frames", quick ? 24 : 120, 1, 100000);
     o.compareEvery = static_cast<int>(args.integer("compare-every", quick ? 3 : 4, 1, 100000));
     o.plan.minZoneSize = args.number("min-zone", quick ? 3.0 : o.plan.minZoneSize, 1e-3, 1e4);
-    o.minZoneGiven = quick || args.has("min-zone");
+    o.planningGiven.minZone = quick || args.has("min-zone");
     o.plan.pixelsPerDegree = args.number("ppd", o.plan.pixelsPerDegree, 0.01, 1000.0);
     o.bakeResolution = static_cast<int>(args.integer("bake-resolution", quick ? 128 : 512, 16, 16384));
-    o.bakeResolutionGiven = quick || args.has("bake-resolution");
+    o.planningGiven.maxRes = quick || args.has("bake-resolution");
     if (auto list = args.get("alphas")) o.alphasDeg = alphaList(*list);
     o.transitionAlphaDeg = args.number("warp-alpha", o.transitionAlphaDeg, 0.1, 89.0);
     o.lodPixels = args.number("lod", o.lodPixels, 0.0, 1e4);

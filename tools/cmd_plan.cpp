@@ -86,8 +86,7 @@ int runPlan(const std::vector<std::string>& words) {
     const std::vector<std::filesystem::path> inputs = scenes::sceneInputFiles(path, description);
     for (const auto& [file, flag] : outputs)
         if (file) scenes::checkNotAnInput(*file, flag, inputs);
-    if (!args.has("min-zone")) options = walls::withScenePlanning(options, description);
-    options.maxResolution = walls::sceneBakeResolution(options.maxResolution, description);
+    walls::useScenePlanning(description, {args.has("min-zone"), false}, options, options.maxResolution);
     const walls::VisibilityTable table = walls::computeVisibility(description);
     const walls::Plan plan = walls::planZones(description, options, walls::wallDepthSpans(scene, description, table));
     for (const std::string& w : scene.warnings) std::cerr << "cavewall: warning: " << w << "\n";

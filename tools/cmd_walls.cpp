@@ -274,8 +274,8 @@ int runWalls(const std::vector<std::string>& words) {
     scenes::SceneDescription base;
     scenes::Scene scene = scenes::loadSceneFile(path, &base);
     walls::checkWallsModel(scene, path);
-    if (!args.has("min-zone")) options.plan = walls::withScenePlanning(options.plan, base);
-    if (!args.has("max-res")) options.plan.maxResolution = walls::sceneBakeResolution(options.plan.maxResolution, base);
+    walls::useScenePlanning(base, {args.has("min-zone"), args.has("max-res")}, options.plan,
+                            options.plan.maxResolution);
     const std::vector<std::filesystem::path> inputs = scenes::sceneInputFiles(path, base);
     scenes::checkNotAnInput(out, "--out", inputs);
     if (png) scenes::checkNotAnInput(*png, "--png", inputs);

@@ -71,13 +71,13 @@ void parseDrawing(const Args& args, app::RunOptions& o) {
     o.textureFormat = args.choice("texture-format", walls::kTextureFormatNames, walls::kDefaultTextureFormat);
     o.plan.alphaDeg = args.number("alpha", o.plan.alphaDeg, 1e-3, 90.0);
     o.plan.minZoneSize = args.number("min-zone", o.plan.minZoneSize, 1e-3, 1e4);
-    o.minZoneGiven = args.has("min-zone");
+    o.planningGiven.minZone = args.has("min-zone");
     o.plan.pixelsPerDegree = args.number("ppd", o.plan.pixelsPerDegree, 0.01, 1000.0);
     if (auto c = args.path("cache")) o.cache = *c;
     o.textureBudgetMB = args.number("budget", o.textureBudgetMB, 1e-3, 1e6);
     o.geometryBudgetMB = args.number("geometry-budget", 0.0, 0.0, 1e6);
     o.bakeResolution = static_cast<int>(args.integer("max-res", o.bakeResolution, 16, 16384));
-    o.maxResGiven = args.has("max-res");
+    o.planningGiven.maxRes = args.has("max-res");
     o.synchronousPaging = args.has("sync-paging");
     o.lodPixels = args.number("lod", o.lodPixels, 0.0, 1e4);
     o.triangleBudget = static_cast<std::size_t>(args.integer("triangle-budget", 0, 0, 1000000000));

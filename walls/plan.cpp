@@ -58,19 +58,17 @@ const char* toString(ZoneKind kind) {
     return "?";
 }
 
-PlanOptions withScenePlanning(PlanOptions options, const scenes::SceneDescription& description) {
-    const double zone = description.planning.minZone;
-    if (!(zone > 0.0)) return options;
-    if (!(zone > 2 * options.blendWidth))
-        throw Error("scene '" + description.name + "': planning.minZone: expected more than twice the blend width (" +
-                    formatNumber(2 * options.blendWidth) + " m), got " + formatNumber(zone) +
-                    " m (or give --min-zone)");
-    options.minZoneSize = zone;
-    return options;
-}
-
-int sceneBakeResolution(int resolution, const scenes::SceneDescription& description) {
-    return description.planning.maxRes > 0 ? description.planning.maxRes : resolution;
+void useScenePlanning(const scenes::SceneDescription& description, PlanningFlags given, PlanOptions& plan,
+                      int& maxResolution) {
+    const scenes::SceneDescription::Planning& own = description.planning;
+    if (!given.minZone && own.minZone > 0.0) {
+        if (!(own.minZone > 2 * plan.blendWidth))
+            throw Error("scene '" + description.name + "': planning.minZone: expected more than twice the blend " +
+                        "width (" + formatNumber(2 * plan.blendWidth) + " m), got " + formatNumber(own.minZone) +
+                        " m (or give --min-zone)");
+        plan.minZoneSize = own.minZone;
+    }
+    if (!given.maxRes && own.maxRes > 0) maxResolution = own.maxRes;
 }
 
 void validatePlanOptions(const PlanOptions& o) {

@@ -71,13 +71,18 @@ struct PlanOptions {
 // Throws cavewall::Error naming the option when it is out of range.
 void validatePlanOptions(const PlanOptions& options);
 
-// `options` with the scene's own zone size (scene.json "planning": minZone) where it has one:
-// what a command uses when it is not given --min-zone.
-PlanOptions withScenePlanning(PlanOptions options, const scenes::SceneDescription& description);
+// Which of a scene's own planning choices (scene.json "planning") a command's flags replace:
+// --min-zone, and --max-res (bench: --bake-resolution).
+struct PlanningFlags {
+    bool minZone = false, maxRes = false;
+};
 
-// The scene's own largest baked texture side (scene.json "planning": maxRes) where it has one,
-// else `resolution`: what a command bakes at when it is not given its resolution flag.
-int sceneBakeResolution(int resolution, const scenes::SceneDescription& description);
+// Where the command gave no flag for it, the scene's own zone size into `plan.minZoneSize` and
+// its largest baked texture side into `maxResolution` (a command's bake resolution, or
+// plan.maxResolution itself), when the scene has them. Throws, naming the scene's field, for a
+// zone size too small for plan.blendWidth.
+void useScenePlanning(const scenes::SceneDescription& description, PlanningFlags given, PlanOptions& plan,
+                      int& maxResolution);
 
 enum class ZoneKind { Texture, Blend, Geometry };
 const char* toString(ZoneKind kind);

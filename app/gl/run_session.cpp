@@ -374,8 +374,7 @@ void summarizeBaker(walls::gl::BackgroundBaker& baker, RunSummary& summary) {
 // --min-zone or --max-res gave them.
 RunOptions withScenePlanning(const RunOptions& given, const scenes::SceneDescription& description) {
     RunOptions o = given;
-    if (!given.minZoneGiven) o.plan = walls::withScenePlanning(o.plan, description);
-    if (!given.maxResGiven) o.bakeResolution = walls::sceneBakeResolution(o.bakeResolution, description);
+    walls::useScenePlanning(description, given.planningGiven, o.plan, o.bakeResolution);
     return o;
 }
 

@@ -573,9 +573,7 @@ BakeResult bakeScene(const BakeRequest& given) {
     scenes::SceneDescription description;
     const scenes::Scene scene = scenes::loadSceneFile(given.scene, &description);
     BakeRequest request = given;  // with the scene's own planning where the command gave none
-    if (!given.minZoneGiven) request.plan = walls::withScenePlanning(request.plan, description);
-    if (!given.maxResGiven)
-        request.settings.maxResolution = walls::sceneBakeResolution(request.settings.maxResolution, description);
+    walls::useScenePlanning(description, given.planningGiven, request.plan, request.settings.maxResolution);
     const walls::PlanOptions plan =
         walls::planOptionsFor(request.plan, request.settings.kind, request.settings.maxResolution);
     return bakeWalls(scene, description, walls::prepareWalls(scene, description, plan), request);

@@ -105,8 +105,8 @@ struct BakeRequest {
     std::filesystem::path scene;  // scene.json, a folder holding one, or a bare glTF/GLB
     walls::PlanOptions plan;      // bakeScene only (bakeWalls takes the setup's plan)
     // bakeScene: plan.minZoneSize and settings.maxResolution as given, else the scene's own
-    // (walls::withScenePlanning, walls::sceneBakeResolution)
-    bool minZoneGiven = false, maxResGiven = false;
+    // (walls::useScenePlanning)
+    walls::PlanningFlags planningGiven;
     BakeSettings settings;
     std::filesystem::path cache;  // empty: defaultCacheFolder()
     // A context to render with (made current before use); null: a headless one is created

@@ -113,10 +113,10 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
                 "fewest pixels per degree from the frame's head position (display::minPixelsPerDegree, clamped to "
                 "[1, 1000]), popping between consecutive compared frames of each screen (32-pixel tiles)",
             "walls: plan minZoneSize " + config::formatNumber(o.plan.minZoneSize) + " m" +
-                (o.minZoneGiven ? "" : " (the scene's planning.minZone, else the default)") + ", pixelsPerDegree " +
+                (o.planningGiven.minZone ? "" : " (the scene's planning.minZone, else the default)") + ", pixelsPerDegree " +
                 config::formatNumber(o.plan.pixelsPerDegree) + ", blendWidth " +
                 config::formatNumber(o.plan.blendWidth) + " m; bake maxResolution " + std::to_string(o.bakeResolution) +
-                " texels" + (o.bakeResolutionGiven ? "" : " (the scene's planning.maxRes, else the default)") +
+                " texels" + (o.planningGiven.maxRes ? "" : " (the scene's planning.maxRes, else the default)") +
                 "; textures all resident (warm-up pass, synchronous paging) except in the paged mode",
             "machine: " + context.info().renderer + ", " + std::to_string(std::thread::hardware_concurrency()) +
                 " hardware threads",
@@ -158,8 +158,7 @@ std::vector<std::string> headerLines(const BenchOptions& o, const scenes::Scene&
 // --min-zone or --bake-resolution gave them.
 BenchOptions withScenePlanning(const BenchOptions& given, const scenes::SceneDescription& description) {
     BenchOptions o = given;
-    if (!given.minZoneGiven) o.plan = walls::withScenePlanning(o.plan, description);
-    if (!given.bakeResolutionGiven) o.bakeResolution = walls::sceneBakeResolution(o.bakeResolution, description);
+    walls::useScenePlanning(description, given.planningGiven, o.plan, o.bakeResolution);
     return o;
 }
 

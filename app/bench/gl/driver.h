@@ -70,9 +70,8 @@ struct BenchOptions {
     std::vector<double> alphasDeg{10, 20, 30};
     double transitionAlphaDeg = 20.0;                  // warp and paged modes; plan of the cells modes
     walls::PlanOptions plan;                           // alphaDeg replaced per mode
-    bool minZoneGiven = false;                         // else the scene's own (walls::withScenePlanning)
     int bakeResolution = 512;                          // BakeSettings::maxResolution
-    bool bakeResolutionGiven = false;                  // else the scene's own (walls::sceneBakeResolution)
+    walls::PlanningFlags planningGiven;                // --min-zone, --bake-resolution given (useScenePlanning)
     double lodPixels = 1.0;                            // level-of-detail modes' tolerance; 0: none
     std::size_t triangleBudget = 0;                    // the budget mode's; 0: the median of its mode
                                                        // without a budget
